@@ -1,0 +1,3 @@
+export * from './sphericalCoords';
+export * from './uniformHemisphere';
+export * from './cosineHemisphere';
