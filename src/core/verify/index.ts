@@ -1,0 +1,3 @@
+export * from './chi2';
+export * from './quadrature';
+export * from './hemisphereChi2';
