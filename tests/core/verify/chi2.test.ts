@@ -108,7 +108,7 @@ describe('sidakAlpha', () => {
       [0.01, 7],
       [0.05, 1e6],
     ] as const) {
-      const ref = M.number(M.subtract(1, M.pow(M.subtract(1, big(a)), M.divide(1, big(m)))) as BigNumber) as number;
+      const ref = M.number(M.subtract(1, M.pow(M.subtract(1, big(a)) as BigNumber, M.divide(1, big(m)) as BigNumber) as BigNumber) as BigNumber) as number;
       expect(Math.abs(sidakAlpha(a, m) - ref) / ref).toBeLessThan(1e-13);
     }
   });
