@@ -1,0 +1,6 @@
+export * from './welford';
+export * from './estimate';
+export * from './convergence';
+export * from './rmse';
+export * from './slope';
+export * from './integrate1d';
