@@ -52,11 +52,11 @@ export function sphericalTheta(x: number, y: number, z: number): number {
 
 /**
  * Azimuth φ ∈ [0, 2π) of (x, y, ·), measured from +x towards +y. At the pole (x = y = 0) returns 0.
- * A tiny negative atan2 result would round to exactly 2π after adding 2π; it is clamped below 2π.
+ * NaN input gives NaN. A tiny negative atan2 result would round to exactly 2π after adding 2π; it is clamped below 2π.
  */
 export function sphericalPhi(x: number, y: number): number {
   const p = Math.atan2(y, x);
-  if (p >= 0) return p;
+  if (!(p < 0)) return p; // p ≥ 0, or NaN for NaN input (callers treat it as outside the support)
   const q = p + TWO_PI;
   return q < TWO_PI ? q : TWO_PI_BELOW;
 }

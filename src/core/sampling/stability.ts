@@ -1,0 +1,181 @@
+/**
+ * Floating-point stability of the exam's inversion formulas (Q1(d)). The forms are equal in exact
+ * arithmetic, not in doubles; this module evaluates each at chosen ξ and compares it with a
+ * high-precision reference, for the scene's numerical-stability panel and for the tests.
+ *
+ *  θ(ξ₁): ½ arccos(1 − 2ξ₁)  — loses everything for tiny ξ₁ (1 − 2ξ₁ rounds to 1 once ξ₁ < 2⁻⁵⁴,
+ *                               and keeps only ~half the digits above that), fine near ξ₁ → 1;
+ *         arcsin √ξ₁         — accurate for tiny ξ₁, but arcsin is ill-conditioned at 1, so for ξ₁
+ *                               near 1 the rounding of √ξ₁ is amplified;
+ *         atan2(√ξ₁, √(1−ξ₁)) — the stable form (sin θ = √ξ₁, cos θ = √(1−ξ₁); see examLobe.ts).
+ *  φ(ξ₂): ln((e^{2π} − 1) ξ₂ + 1) — relative precision lost for tiny ξ₂ (the +1 swamps c ξ₂);
+ *         log1p(expm1(2π) ξ₂)     — accurate everywhere.
+ *
+ * The reference is computed with mathjs BigNumber (64 significant digits) on the exact double ξ,
+ * loaded lazily (`import('mathjs')`) so the page only pays for it when the panel is opened.
+ * Source: Goldberg 1991, "What every computer scientist should know about floating-point
+ * arithmetic" (log1p/expm1, cancellation); Higham, "Accuracy and Stability of Numerical
+ * Algorithms", 2nd ed., ch. 1.
+ */
+import { EXAM_E2PI_M1 } from './examLobe';
+import { TWO_PI } from './sphericalCoords';
+
+/** ½ arccos(1 − 2ξ), the key's θ inversion. Domain ξ ∈ [0, 1]. */
+export function thetaFromXiAcos(xi: number): number {
+  return 0.5 * Math.acos(Math.min(1, Math.max(-1, 1 - 2 * xi)));
+}
+
+/** arcsin √ξ, the equivalent θ inversion. Domain ξ ∈ [0, 1]. */
+export function thetaFromXiAsin(xi: number): number {
+  return Math.asin(Math.min(1, Math.sqrt(Math.max(0, xi))));
+}
+
+/** atan2(√ξ, √(1 − ξ)): the stable θ inversion (sin θ = √ξ, cos θ = √(1 − ξ)). Domain ξ ∈ [0, 1]. */
+export function thetaFromXiStable(xi: number): number {
+  return Math.atan2(Math.sqrt(Math.max(0, xi)), Math.sqrt(Math.max(0, 1 - xi)));
+}
+
+/** ln((e^{2π} − 1) ξ + 1) with e^{2π} − 1 evaluated as written (exp(2π) − 1): the key's φ form. */
+export function phiFromXiLog(xi: number): number {
+  return Math.log((Math.exp(TWO_PI) - 1) * xi + 1);
+}
+
+/** log1p(expm1(2π) ξ): the stable φ form used by the sampler. Domain ξ ∈ [0, 1]. */
+export function phiFromXiLog1p(xi: number): number {
+  return Math.log1p(EXAM_E2PI_M1 * xi);
+}
+
+/** One named floating-point form of an inversion formula. */
+export interface StabilityForm {
+  id: string;
+  /** LaTeX of the formula as the panel shows it. */
+  tex: string;
+  quantity: 'theta' | 'phi';
+  fn: (xi: number) => number;
+}
+
+/** The forms the panel compares, θ first, then φ. */
+export const STABILITY_FORMS: readonly StabilityForm[] = [
+  { id: 'theta-acos', quantity: 'theta', tex: '\\tfrac12\\arccos(1-2\\xi_1)', fn: thetaFromXiAcos },
+  { id: 'theta-asin', quantity: 'theta', tex: '\\arcsin\\sqrt{\\xi_1}', fn: thetaFromXiAsin },
+  { id: 'theta-atan2', quantity: 'theta', tex: '\\operatorname{atan2}(\\sqrt{\\xi_1},\\sqrt{1-\\xi_1})', fn: thetaFromXiStable },
+  { id: 'phi-log', quantity: 'phi', tex: '\\ln\\big((e^{2\\pi}-1)\\xi_2+1\\big)', fn: phiFromXiLog },
+  { id: 'phi-log1p', quantity: 'phi', tex: '\\operatorname{log1p}\\big(\\operatorname{expm1}(2\\pi)\\,\\xi_2\\big)', fn: phiFromXiLog1p },
+];
+
+/** The ξ values the panel evaluates: tiny, moderate and near 1 (all exactly representable). */
+export const STABILITY_XIS: readonly number[] = [1e-300, 2 ** -53, 1e-12, 1e-6, 0.5, 1 - 1e-6, 1 - 1e-12, 1 - 2 ** -53];
+
+/** Size of one unit in the last place of x (ulp), for x finite; 2⁻¹⁰⁷⁴ at 0. */
+export function ulp(x: number): number {
+  const a = Math.abs(x);
+  if (!Number.isFinite(a)) return NaN;
+  if (a < 2 ** -1022) return 2 ** -1074;
+  const e = Math.floor(Math.log2(a));
+  // log2 may be off by one right at powers of two; correct it
+  const e2 = 2 ** e > a ? e - 1 : 2 ** (e + 1) <= a ? e + 1 : e;
+  return 2 ** (e2 - 52);
+}
+
+/** Error of one value against a reference: relative error and error in ulps of the reference. */
+export interface ErrorMeasure {
+  value: number;
+  reference: number;
+  relError: number;
+  ulps: number;
+}
+
+/** Relative error |v − ref|/|ref| (absolute if ref = 0) and |v − ref|/ulp(ref). */
+export function measureError(value: number, reference: number): ErrorMeasure {
+  const d = Math.abs(value - reference);
+  const relError = reference === 0 ? d : d / Math.abs(reference);
+  return { value, reference, relError, ulps: d / ulp(reference) };
+}
+
+/** References for θ(ξ) = arcsin √ξ and φ(ξ) = ln(1 + (e^{2π} − 1) ξ) at each ξ, rounded to doubles. */
+export interface StabilityReference {
+  xi: number[];
+  theta: number[];
+  phi: number[];
+}
+
+/**
+ * High-precision references via mathjs BigNumber (precision 64), on the exact binary value of each ξ.
+ * Async because mathjs is imported lazily. Domain: ξ ∈ [0, 1].
+ */
+export async function computeStabilityReference(xis: readonly number[]): Promise<StabilityReference> {
+  const { create, all } = await import('mathjs');
+  const m = create(all, { number: 'BigNumber', precision: 64 });
+  const bn = (x: number) => m.bignumber(exactDecimal(x));
+  const twoPi = m.multiply(m.bignumber(2), m.pi) as unknown as ReturnType<typeof bn>;
+  const c = m.subtract(m.exp(twoPi), m.bignumber(1)) as ReturnType<typeof bn>;
+  const theta: number[] = [];
+  const phi: number[] = [];
+  for (const xi of xis) {
+    const b = bn(xi);
+    theta.push(Number((m.asin(m.sqrt(b)) as ReturnType<typeof bn>).toString()));
+    // ln(1 + y): for tiny y, 1 + y would round at 64 digits, so use the series y − y²/2 + y³/3 − y⁴/4
+    // (truncation error < y⁵ < 1e-50 relative to y for y < 1e-10)
+    const y = m.multiply(c, b) as ReturnType<typeof bn>;
+    const lg = m.smaller(y, m.bignumber('1e-10'))
+      ? m.add(m.subtract(y, m.divide(m.pow(y, 2), 2)), m.subtract(m.divide(m.pow(y, 3), 3), m.divide(m.pow(y, 4), 4)))
+      : m.log(m.add(y, m.bignumber(1)));
+    phi.push(Number((lg as ReturnType<typeof bn>).toString()));
+  }
+  return { xi: [...xis], theta, phi };
+}
+
+/**
+ * The exact decimal expansion of a double (every binary fraction has a finite decimal one), so that
+ * BigNumber receives precisely the value the double holds, not its shortest round-trip string.
+ * Domain: finite x ≥ 0 (the ξ values used here).
+ */
+export function exactDecimal(x: number): string {
+  if (x === 0) return '0';
+  // x = mant · 2^exp with integer mant < 2^53
+  let exp = 0;
+  let mant = x;
+  while (!Number.isInteger(mant)) {
+    mant *= 2;
+    exp--;
+  }
+  let big = BigInt(mant);
+  if (exp >= 0) return (big << BigInt(exp)).toString();
+  const k = -exp;
+  // mant / 2^k = mant · 5^k / 10^k
+  big *= 5n ** BigInt(k);
+  const s = big.toString().padStart(k + 1, '0');
+  const intPart = s.slice(0, s.length - k);
+  const frac = s.slice(s.length - k).replace(/0+$/, '');
+  return frac ? `${intPart}.${frac}` : intPart;
+}
+
+/** One row of the stability table: ξ, the reference, and each form's value and error. */
+export interface StabilityRow {
+  xi: number;
+  quantity: 'theta' | 'phi';
+  reference: number;
+  forms: { id: string; value: number; relError: number; ulps: number }[];
+}
+
+/** Evaluate every form of {@link STABILITY_FORMS} at each ξ of the reference. Pure, synchronous. */
+export function stabilityTable(ref: StabilityReference, forms: readonly StabilityForm[] = STABILITY_FORMS): StabilityRow[] {
+  const rows: StabilityRow[] = [];
+  for (const quantity of ['theta', 'phi'] as const) {
+    ref.xi.forEach((xi, i) => {
+      const reference = quantity === 'theta' ? ref.theta[i] : ref.phi[i];
+      rows.push({
+        xi,
+        quantity,
+        reference,
+        forms: forms
+          .filter((f) => f.quantity === quantity)
+          .map((f) => {
+            const e = measureError(f.fn(xi), reference);
+            return { id: f.id, value: e.value, relError: e.relError, ulps: e.ulps };
+          }),
+      });
+    });
+  }
+  return rows;
+}
