@@ -1,0 +1,4 @@
+export * from './addressing';
+export * from './grid';
+export * from './lookup';
+export * from './spherical';
