@@ -1,0 +1,4 @@
+export * from './raySphere';
+export * from './raySphereReference';
+export * from './doubleDouble';
+export * from './ulp';
