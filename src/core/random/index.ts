@@ -1,1 +1,4 @@
 export * from './rng';
+export * from './owen';
+export * from './sobol';
+export * from './sequences';

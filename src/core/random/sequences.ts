@@ -1,0 +1,189 @@
+/**
+ * Point sets on the unit square (and interval) for Monte Carlo integration, all deterministic
+ * functions of (kind, seed, n, i), so any range [start, end) of a set can be generated on its own
+ * (in batches, in workers) and equals the same range of the whole set.
+ *
+ * - independent: i.i.d. uniform points from a counter-based hash of (seed, i, dimension).
+ * - stratified: jittered stratification with exactly one point per stratum (layout below).
+ * - halton: Halton in bases 2 and 3 with Owen (nested random-digit) scrambling seeded by `seed`.
+ * - sobol: Sobol' dimensions 0 and 1 (Joe–Kuo), Owen-scrambled and index-shuffled (Burley 2020).
+ *
+ * Every value is in [0, 1), never 1. Source: pbrt-v4 §8.2–8.7 (samplers); Owen (1995);
+ * Burley (2020) "Practical Hash-based Owen Scrambling", JCGT 9(4).
+ */
+import { mix32, ONE_MINUS_EPS, toSeed } from './rng';
+import { hashCombine, hashUniform, owenRadicalInverse3, owenScramble32, reverseBits32, TWO_POW_M32 } from './owen';
+import { shuffledSobol2Bits } from './sobol';
+
+/** The sample-sequence families offered by the scenes. */
+export type SequenceKind = 'independent' | 'stratified' | 'halton' | 'sobol';
+
+/** All sequence kinds, in the order the UI lists them. */
+export const SEQUENCE_KINDS: readonly SequenceKind[] = ['independent', 'stratified', 'halton', 'sobol'];
+
+/** Largest supported point count (indices are 32-bit for Halton/Sobol). */
+export const MAX_SEQUENCE_POINTS = 4294967296;
+
+/**
+ * Layout of the stratified 2D set of n points (pad-free, any n ≥ 1): the square is cut into
+ * a = round(√n) horizontal rows; the first n − a·⌊n/a⌋ rows hold ⌊n/a⌋ + 1 cells, the others ⌊n/a⌋.
+ * A row with k cells has height k/n and its cells width 1/k, so every cell has area exactly 1/n
+ * and is roughly square. When n = a·b (a ≈ √n) this is the ordinary a × b jittered grid; for a
+ * prime n it is still near-square cells rather than 1 × n slivers. Cells are numbered row by row,
+ * bottom to top (ξ2), left to right (ξ1); point i lies in cell i, jittered uniformly inside it.
+ *
+ * Returns the cell of point i: columns k of its row, column c, and the row's lower edge y0 = (i − c)/n.
+ * Domain: n ≥ 1, 0 ≤ i < n.
+ */
+export function stratifiedCell(n: number, i: number): { k: number; c: number; y0: number; height: number } {
+  const a = Math.max(1, Math.round(Math.sqrt(n)));
+  const base = Math.floor(n / a);
+  const extra = n - a * base; // rows with base + 1 cells
+  const bigRows = extra * (base + 1);
+  let k: number;
+  let c: number;
+  if (i < bigRows) {
+    k = base + 1;
+    c = i % k;
+  } else {
+    k = base;
+    c = (i - bigRows) % k;
+  }
+  return { k, c, y0: (i - c) / n, height: k / n };
+}
+
+function seedHashes(seed: number): [number, number, number, number] {
+  const s = mix32(toSeed(seed) ^ 0x3c6ef372);
+  return [s, mix32(s ^ 0x01000193), mix32(s ^ 0x7f4a7c15), mix32(s ^ 0x61c88647)];
+}
+
+function checkRange(n: number, out: Float64Array, dim: number, start: number, end: number, offset: number): void {
+  if (!(Number.isInteger(n) && n >= 0 && n <= MAX_SEQUENCE_POINTS)) {
+    throw new RangeError(`point count n must be an integer in [0, 2^32], got ${n}`);
+  }
+  if (!(Number.isInteger(start) && Number.isInteger(end) && 0 <= start && start <= end && end <= n)) {
+    throw new RangeError(`range [${start}, ${end}) must lie within [0, ${n})`);
+  }
+  if (!(Number.isInteger(offset) && offset >= 0 && out.length >= dim * (offset + end - start))) {
+    throw new RangeError(`output buffer of length ${out.length} is too short for ${end - start} points at offset ${offset}`);
+  }
+}
+
+/** Largest double strictly below hi (for hi > 0), used to keep jittered points inside their cell. */
+function below(x: number, hi: number): number {
+  return x < hi ? x : hi * (1 - 2.220446049250313e-16);
+}
+
+/**
+ * Fill points [start, end) of the n-point 2D set of the given kind into `out`, ξ1 and ξ2
+ * interleaved. Point i is written at out[2(i − start + outOffset)], out[2(i − start + outOffset) + 1];
+ * the default outOffset = start puts it at out[2i] (a buffer of length 2n for the whole set),
+ * outOffset = 0 fills a batch buffer of length 2(end − start).
+ *
+ * Domain: n integer in [0, 2^32]; 0 ≤ start ≤ end ≤ n; seed any number (coerced to uint32).
+ * Range: every coordinate in [0, 1), never 1. Measure: uniform on the unit square (each point's
+ * marginal distribution is uniform for every kind). Throws RangeError for an impossible range or a
+ * short buffer. Deterministic in (kind, seed, n, i); the `independent`, `halton` and `sobol`
+ * points do not depend on n (they are prefixes of one infinite sequence).
+ * Source: see the module comment.
+ */
+export function fillSequence2D(
+  kind: SequenceKind,
+  seed: number,
+  n: number,
+  out: Float64Array,
+  start = 0,
+  end = n,
+  outOffset = start,
+): Float64Array {
+  checkRange(n, out, 2, start, end, outOffset);
+  const [s0, s1, s2, s3] = seedHashes(seed);
+  let o = 2 * outOffset;
+  switch (kind) {
+    case 'independent':
+      for (let i = start; i < end; i++, o += 2) {
+        out[o] = hashUniform(s0, s1, i, 0);
+        out[o + 1] = hashUniform(s0, s1, i, 1);
+      }
+      break;
+    case 'stratified':
+      for (let i = start; i < end; i++, o += 2) {
+        const { k, c, y0, height } = stratifiedCell(n, i);
+        const ux = hashUniform(s2, s3, i, 0);
+        const uy = hashUniform(s2, s3, i, 1);
+        out[o] = Math.min(below((c + ux) / k, (c + 1) / k), ONE_MINUS_EPS);
+        out[o + 1] = Math.min(below(y0 + uy * height, y0 + height), ONE_MINUS_EPS);
+      }
+      break;
+    case 'halton': {
+      const hb2 = hashCombine(s0, 2);
+      const hb3 = hashCombine(s1, 3);
+      for (let i = start; i < end; i++, o += 2) {
+        out[o] = owenScramble32(reverseBits32(i >>> 0), hb2) * TWO_POW_M32;
+        out[o + 1] = owenRadicalInverse3(i, hb3);
+      }
+      break;
+    }
+    case 'sobol': {
+      const bits = new Uint32Array(2);
+      for (let i = start; i < end; i++, o += 2) {
+        shuffledSobol2Bits(i, s1, s2, s3, bits);
+        out[o] = bits[0]! * TWO_POW_M32;
+        out[o + 1] = bits[1]! * TWO_POW_M32;
+      }
+      break;
+    }
+    default:
+      throw new RangeError(`unknown sequence kind '${String(kind)}'`);
+  }
+  return out;
+}
+
+/**
+ * Fill values [start, end) of the n-value 1D set of the given kind into `out` (value i at
+ * out[i − start + outOffset]; default outOffset = start, i.e. out[i]).
+ * independent: hashed uniforms; stratified: (i + u_i)/n, one value per interval [i/n, (i+1)/n);
+ * halton: Owen-scrambled van der Corput (base 2); sobol: dimension 0 of the shuffled, scrambled
+ * Sobol' sequence (also a scrambled van der Corput sequence, in shuffled order).
+ * Domain, range and errors as for {@link fillSequence2D}; values in [0, 1).
+ */
+export function fillSequence1D(
+  kind: SequenceKind,
+  seed: number,
+  n: number,
+  out: Float64Array,
+  start = 0,
+  end = n,
+  outOffset = start,
+): Float64Array {
+  checkRange(n, out, 1, start, end, outOffset);
+  const [s0, s1, s2, s3] = seedHashes(seed);
+  let o = outOffset;
+  switch (kind) {
+    case 'independent':
+      for (let i = start; i < end; i++, o++) out[o] = hashUniform(s0, s1, i, 0);
+      break;
+    case 'stratified':
+      for (let i = start; i < end; i++, o++) {
+        const u = hashUniform(s2, s3, i, 0);
+        out[o] = Math.min(below((i + u) / n, (i + 1) / n), ONE_MINUS_EPS);
+      }
+      break;
+    case 'halton': {
+      const hb2 = hashCombine(s0, 2);
+      for (let i = start; i < end; i++, o++) out[o] = owenScramble32(reverseBits32(i >>> 0), hb2) * TWO_POW_M32;
+      break;
+    }
+    case 'sobol': {
+      const bits = new Uint32Array(2);
+      for (let i = start; i < end; i++, o++) {
+        shuffledSobol2Bits(i, s1, s2, s3, bits);
+        out[o] = bits[0]! * TWO_POW_M32;
+      }
+      break;
+    }
+    default:
+      throw new RangeError(`unknown sequence kind '${String(kind)}'`);
+  }
+  return out;
+}
