@@ -1,0 +1,87 @@
+import { useCallback, useEffect, useState } from 'react';
+import { useHashRoute } from './useHashRoute';
+import { parseShellFlags } from './route';
+import { useTheme } from './theme';
+import { usePostHeight } from './embedHeight';
+import { Home } from './Home';
+import { SceneHost } from './SceneHost';
+import { findScene } from '../scenes/registry';
+import { ShortcutProvider, SHORTCUTS } from '../ui/shortcuts';
+
+export function App() {
+  const route = useHashRoute();
+  const flags = parseShellFlags(route.query);
+  const theme = useTheme(flags.theme);
+  const [helpOpen, setHelpOpen] = useState(false);
+  const toggleHelp = useCallback(() => setHelpOpen((o) => !o), []);
+  usePostHeight(flags.embed);
+
+  useEffect(() => {
+    const cl = document.documentElement.classList;
+    cl.toggle('present', flags.present);
+    cl.toggle('embed', flags.embed);
+  }, [flags.present, flags.embed]);
+
+  const scene = findScene(route.path);
+  let body;
+  if (route.path === '/') body = <Home flags={flags} />;
+  else if (scene) body = <SceneHost key={scene.id} info={scene} query={route.query} flags={flags} theme={theme} />;
+  else
+    body = (
+      <main id="main" className="page">
+        <h1>Page not found</h1>
+        <p role="status">
+          There is no page at <code>#{route.path.slice(0, 80)}</code>. <a href="#/">Go to the list of scenes</a>.
+        </p>
+      </main>
+    );
+
+  return (
+    <ShortcutProvider active={flags.present} onHelp={toggleHelp}>
+      <a className="skip-link" href="#main" onClick={(e) => {
+        e.preventDefault();
+        document.getElementById('main')?.focus();
+      }}>
+        Skip to content
+      </a>
+      {flags.embed ? null : <SiteHeader present={flags.present} />}
+      {body}
+      {flags.embed ? null : (
+        <footer className="site-footer">
+          <p>
+            Render Math Lab — every figure is computed live in your browser. Works offline once loaded.
+            {flags.present ? ' Classroom mode: press ? for shortcuts.' : ''}
+          </p>
+        </footer>
+      )}
+      {helpOpen ? (
+        <div className="shortcut-help" role="dialog" aria-modal="false" aria-label="Keyboard shortcuts">
+          <h2>Keyboard shortcuts</h2>
+          <dl>
+            {SHORTCUTS.map((s) => (
+              <div key={s.key}>
+                <dt>
+                  <kbd>{s.key}</kbd>
+                </dt>
+                <dd>{s.label}</dd>
+              </div>
+            ))}
+          </dl>
+          <button type="button" onClick={toggleHelp} autoFocus>
+            Close
+          </button>
+        </div>
+      ) : null}
+    </ShortcutProvider>
+  );
+}
+
+function SiteHeader({ present }: { present: boolean }) {
+  return (
+    <header className="site-header">
+      <a href={present ? '#/?present=1' : '#/'} className="brand">
+        <span className="brand-mark" aria-hidden="true">◐</span> Render Math Lab
+      </a>
+    </header>
+  );
+}

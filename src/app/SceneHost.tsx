@@ -1,0 +1,199 @@
+import { Component, useCallback, useEffect, useMemo, useRef, useState, type ReactNode } from 'react';
+import type { SceneInfo } from '../scenes/registry';
+import { sceneLoader } from '../scenes/registry';
+import type { SceneModule } from './scene';
+import { parseParams, serializeParams, type ParamProblem, type ParamValues, type ParamSchema } from './params';
+import { shellExtras, type ShellFlags } from './route';
+
+interface Props {
+  info: SceneInfo;
+  query: string;
+  flags: ShellFlags;
+  theme: 'light' | 'dark';
+}
+
+type LoadState = { kind: 'loading' } | { kind: 'missing' } | { kind: 'failed'; message: string } | { kind: 'ready'; mod: SceneModule };
+
+/** Loads a scene's chunk, parses its URL parameters, and hosts it with the shared chrome. */
+export function SceneHost({ info, query, flags, theme }: Props) {
+  const [load, setLoad] = useState<LoadState>({ kind: 'loading' });
+  useEffect(() => {
+    document.title = `${info.title} — Render Math Lab`;
+    const loader = sceneLoader(info.id);
+    if (!loader) {
+      setLoad({ kind: 'missing' });
+      return;
+    }
+    let alive = true;
+    loader().then(
+      (mod) => alive && setLoad({ kind: 'ready', mod }),
+      (err) => alive && setLoad({ kind: 'failed', message: err instanceof Error ? err.message : String(err) }),
+    );
+    return () => {
+      alive = false;
+    };
+  }, [info]);
+
+  const header = (
+    <div className={flags.embed ? 'scene-header compact' : 'scene-header'}>
+      <h1>
+        <span className="question-tag">{info.questions}</span> {info.title}
+      </h1>
+      {flags.embed ? (
+        <a className="open-full" href={fullAppHref(info, query)} target="_blank" rel="noopener">
+          Open in Render Math Lab ↗
+        </a>
+      ) : (
+        <a className="back-link" href={flags.present ? '#/?present=1' : '#/'}>
+          ← All scenes
+        </a>
+      )}
+    </div>
+  );
+
+  return (
+    <main id="main" className={`page scene scene-${info.id}`} tabIndex={-1}>
+      {header}
+      {load.kind === 'loading' ? <p className="loading" role="status">Loading the scene…</p> : null}
+      {load.kind === 'missing' ? (
+        <p role="status" className="notice notice-info">
+          This scene is not built yet. <a href="#/">Back to the list of scenes</a>.
+        </p>
+      ) : null}
+      {load.kind === 'failed' ? (
+        <div role="alert" className="notice notice-error">
+          The scene could not be loaded ({load.message}). Check the connection and <button type="button" onClick={() => window.location.reload()}>reload</button>.
+        </div>
+      ) : null}
+      {load.kind === 'ready' ? <LoadedScene mod={load.mod} info={info} query={query} flags={flags} theme={theme} /> : null}
+    </main>
+  );
+}
+
+function fullAppHref(info: SceneInfo, query: string): string {
+  const sp = new URLSearchParams(query);
+  sp.delete('embed');
+  const q = sp.toString();
+  return `${window.location.pathname}#${info.path}${q ? `?${q}` : ''}`;
+}
+
+function LoadedScene({ mod, info, query, flags, theme }: { mod: SceneModule; info: SceneInfo; query: string; flags: ShellFlags; theme: 'light' | 'dark' }) {
+  const schema = mod.schema;
+  const parsed = useMemo(() => parseParams(schema, query), [schema, query]);
+  const [values, setValues] = useState(parsed.values);
+  const [problems, setProblems] = useState<ParamProblem[]>([...flags.problems, ...parsed.problems]);
+  const lastQuery = useRef(query);
+  // A hashchange (typed URL, back/forward) re-parses; our own replaceState does not trigger it.
+  useEffect(() => {
+    if (lastQuery.current === query) return;
+    lastQuery.current = query;
+    setValues(parsed.values);
+    setProblems([...flags.problems, ...parsed.problems]);
+  }, [query, parsed, flags.problems]);
+
+  const valuesRef = useRef(values);
+  valuesRef.current = values;
+  const setParams = useCallback(
+    (patch: Record<string, unknown>) => {
+      const next = { ...valuesRef.current, ...patch } as ParamValues<ParamSchema>;
+      valuesRef.current = next;
+      setValues(next);
+      const qs = serializeParams(schema, next, shellExtras(flags));
+      const hash = `#${info.path}${qs ? `?${qs}` : ''}`;
+      try {
+        window.history.replaceState(window.history.state, '', hash);
+      } catch {
+        /* some sandboxed iframes forbid it; the state still lives in the page */
+      }
+      lastQuery.current = qs;
+    },
+    [schema, flags, info.path],
+  );
+
+  const Scene = mod.default;
+  return (
+    <>
+      {problems.length ? (
+        <div className="notice notice-warn param-notice" role="status" data-testid="param-notice">
+          <p>
+            <strong>Some link parameters could not be used</strong>; the scene uses safe values instead:
+          </p>
+          <ul>
+            {problems.map((p, i) => (
+              <li key={`${p.name}-${i}`}>
+                <code>{p.name}</code> {p.message}
+              </li>
+            ))}
+          </ul>
+          <button type="button" className="link-button" onClick={() => setProblems([])}>
+            Dismiss
+          </button>
+        </div>
+      ) : null}
+      <ShareBar info={info} schema={schema} values={values} flags={flags} />
+      <SceneErrorBoundary>
+        <Scene params={values} setParams={setParams} mode={{ embed: flags.embed, present: flags.present, theme }} />
+      </SceneErrorBoundary>
+    </>
+  );
+}
+
+function ShareBar({ info, schema, values, flags }: { info: SceneInfo; schema: SceneModule['schema']; values: ParamValues<ParamSchema>; flags: ShellFlags }) {
+  const [copied, setCopied] = useState<'link' | 'embed' | null>(null);
+  const [shown, setShown] = useState<string | null>(null);
+  const base = `${window.location.origin}${window.location.pathname}`;
+  const qs = serializeParams(schema, values, { present: flags.present ? '1' : undefined, theme: flags.theme ?? undefined });
+  const link = `${base}#${info.path}${qs ? `?${qs}` : ''}`;
+  const embedQs = serializeParams(schema, values, { embed: '1', theme: flags.theme ?? undefined });
+  const embedSrc = `${base}#${info.path}?${embedQs}`;
+  const embedCode = `<iframe src="${embedSrc.replace(/&/g, '&amp;').replace(/"/g, '&quot;')}" title="${info.title} — Render Math Lab" width="100%" height="720" style="border:0" loading="lazy"></iframe>`;
+  const copy = async (what: 'link' | 'embed') => {
+    const text = what === 'link' ? link : embedCode;
+    setShown(text);
+    try {
+      await navigator.clipboard.writeText(text);
+      setCopied(what);
+    } catch {
+      setCopied(null);
+    }
+  };
+  return (
+    <div className="share-bar">
+      <button type="button" data-testid="copy-link" onClick={() => copy('link')}>
+        Copy link
+      </button>
+      <button type="button" data-testid="copy-embed" onClick={() => copy('embed')}>
+        Copy embed code
+      </button>
+      <span role="status" className="share-status">
+        {copied === 'link' ? 'Link copied.' : copied === 'embed' ? 'Embed code copied.' : shown ? 'Copy it from the box:' : ''}
+      </span>
+      {shown ? (
+        <input className="share-text" data-testid="share-text" aria-label="Text to copy" readOnly value={shown} onFocus={(e) => e.currentTarget.select()} />
+      ) : null}
+    </div>
+  );
+}
+
+class SceneErrorBoundary extends Component<{ children: ReactNode }, { error: string | null }> {
+  override state = { error: null as string | null };
+  static getDerivedStateFromError(err: unknown) {
+    return { error: err instanceof Error ? err.message : String(err) };
+  }
+  override render() {
+    if (this.state.error) {
+      return (
+        <div role="alert" className="notice notice-error">
+          <p>Something in this scene went wrong: {this.state.error}</p>
+          <p>
+            <button type="button" onClick={() => this.setState({ error: null })}>
+              Try again
+            </button>{' '}
+            or <a href={window.location.hash.split('?')[0]}>reset the scene to its defaults</a>.
+          </p>
+        </div>
+      );
+    }
+    return this.props.children;
+  }
+}

@@ -1,0 +1,262 @@
+/**
+ * URL parameter schemas: each scene declares its parameters; the shell parses, validates and clamps
+ * them and reports every parameter it could not use (by name) in a role="status" notice.
+ */
+
+export type ParamSpec =
+  | { kind: 'number'; default: number; min?: number; max?: number; integer?: boolean; label?: string }
+  | { kind: 'enum'; default: string; values: readonly string[]; aliases?: Readonly<Record<string, string>>; label?: string }
+  | { kind: 'string'; default: string; maxLength?: number; label?: string }
+  | { kind: 'bool'; default: boolean; label?: string }
+  | { kind: 'vec3'; default: readonly [number, number, number]; min?: number; max?: number; label?: string }
+  | { kind: 'list'; default: readonly number[] | null; maxItems: number; minItems?: number; min?: number; max?: number; label?: string };
+
+export type ParamSchema = Readonly<Record<string, ParamSpec>>;
+
+type ValueOf<P extends ParamSpec> = P extends { kind: 'number' }
+  ? number
+  : P extends { kind: 'enum' }
+    ? string
+    : P extends { kind: 'string' }
+      ? string
+      : P extends { kind: 'bool' }
+        ? boolean
+        : P extends { kind: 'vec3' }
+          ? [number, number, number]
+          : P extends { kind: 'list'; default: null }
+            ? number[] | null
+            : P extends { kind: 'list' }
+              ? number[] | null
+              : never;
+
+export type ParamValues<S extends ParamSchema> = { -readonly [K in keyof S]: ValueOf<S[K]> };
+
+/** One parameter the shell could not use as given, with what it did instead. */
+export interface ParamProblem {
+  name: string;
+  message: string;
+}
+
+export interface ParsedParams<S extends ParamSchema> {
+  values: ParamValues<S>;
+  problems: ParamProblem[];
+}
+
+/** Parameters owned by the shell itself, not by any scene. */
+export const SHELL_PARAMS = ['embed', 'present', 'theme'] as const;
+
+/** Longest raw value the parser looks at; longer ones are rejected, not truncated. */
+export const MAX_RAW_LENGTH = 4000;
+
+const NUMBER_RE = /^[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?$/;
+
+/** Strict number parsing: plain decimal/scientific only (no hex, no '', no 'Infinity'); finite only. */
+export function parseNumber(raw: string): number | null {
+  const s = raw.trim();
+  if (s.length === 0 || s.length > 64 || !NUMBER_RE.test(s)) return null;
+  const x = Number(s);
+  return Number.isFinite(x) ? x : null;
+}
+
+function fmt(x: number): string {
+  return String(x);
+}
+
+/** Split a comma list of numbers; null if any element is not a finite number. */
+function parseNumberList(raw: string): number[] | null {
+  const parts = raw.split(',');
+  const out: number[] = [];
+  for (const p of parts) {
+    const x = parseNumber(p);
+    if (x === null) return null;
+    out.push(x);
+  }
+  return out;
+}
+
+function clamp(x: number, min: number | undefined, max: number | undefined): number {
+  if (min !== undefined && x < min) return min;
+  if (max !== undefined && x > max) return max;
+  return x;
+}
+
+function rangeText(min: number | undefined, max: number | undefined): string {
+  if (min !== undefined && max !== undefined) return `[${fmt(min)}, ${fmt(max)}]`;
+  if (min !== undefined) return `≥ ${fmt(min)}`;
+  return `≤ ${fmt(max!)}`;
+}
+
+function short(raw: string): string {
+  const s = raw.length > 24 ? `${raw.slice(0, 24)}…` : raw;
+  return JSON.stringify(s);
+}
+
+type Parsed = { ok: true; value: unknown; problem?: string } | { ok: false; problem: string };
+
+function parseOne(spec: ParamSpec, raw: string): Parsed {
+  if (raw.length > MAX_RAW_LENGTH) return { ok: false, problem: `is too long (${raw.length} characters)` };
+  switch (spec.kind) {
+    case 'number': {
+      const x = parseNumber(raw);
+      if (x === null) return { ok: false, problem: `${short(raw)} is not a finite number` };
+      let v = spec.integer ? Math.round(x) : x;
+      const c = clamp(v, spec.min, spec.max);
+      if (c !== v) return { ok: true, value: c, problem: `${short(raw)} is outside ${rangeText(spec.min, spec.max)}; using ${fmt(c)}` };
+      v = c;
+      if (spec.integer && v !== x) return { ok: true, value: v, problem: `${short(raw)} is not a whole number; using ${fmt(v)}` };
+      return { ok: true, value: v };
+    }
+    case 'enum': {
+      const s = raw.trim();
+      const canonical = spec.values.includes(s) ? s : spec.aliases?.[s];
+      if (canonical === undefined) {
+        return { ok: false, problem: `${short(raw)} is not one of ${spec.values.join(', ')}` };
+      }
+      return { ok: true, value: canonical };
+    }
+    case 'string': {
+      const max = spec.maxLength ?? 400;
+      if (raw.length > max) return { ok: false, problem: `is longer than ${max} characters` };
+      return { ok: true, value: raw };
+    }
+    case 'bool': {
+      const s = raw.trim().toLowerCase();
+      if (s === '1' || s === 'true' || s === 'yes' || s === 'on') return { ok: true, value: true };
+      if (s === '0' || s === 'false' || s === 'no' || s === 'off') return { ok: true, value: false };
+      return { ok: false, problem: `${short(raw)} is not 0 or 1` };
+    }
+    case 'vec3': {
+      const xs = parseNumberList(raw);
+      if (xs === null || xs.length !== 3) return { ok: false, problem: `${short(raw)} is not three numbers x,y,z` };
+      const c = xs.map((x) => clamp(x, spec.min, spec.max)) as [number, number, number];
+      if (c.some((x, i) => x !== xs[i])) {
+        return { ok: true, value: c, problem: `has a component outside ${rangeText(spec.min, spec.max)}; using ${c.join(',')}` };
+      }
+      return { ok: true, value: c };
+    }
+    case 'list': {
+      if (raw.trim() === '') return { ok: true, value: spec.default === null ? null : [...spec.default] };
+      const count = raw.split(',').length;
+      if (count > spec.maxItems) return { ok: false, problem: `has ${count} items; at most ${spec.maxItems} are allowed` };
+      const xs = parseNumberList(raw);
+      if (xs === null) return { ok: false, problem: `${short(raw)} is not a comma-separated list of numbers` };
+      if (spec.minItems !== undefined && xs.length < spec.minItems) {
+        return { ok: false, problem: `needs at least ${spec.minItems} numbers` };
+      }
+      const c = xs.map((x) => clamp(x, spec.min, spec.max));
+      if (c.some((x, i) => x !== xs[i])) {
+        return { ok: true, value: c, problem: `has values outside ${rangeText(spec.min, spec.max)}; they were clamped` };
+      }
+      return { ok: true, value: c };
+    }
+  }
+}
+
+function cloneDefault(spec: ParamSpec): unknown {
+  const d = spec.default;
+  return Array.isArray(d) ? [...d] : d;
+}
+
+/** The schema's defaults as a fresh values object. */
+export function defaultValues<S extends ParamSchema>(schema: S): ParamValues<S> {
+  const out: Record<string, unknown> = {};
+  for (const [name, spec] of Object.entries(schema)) out[name] = cloneDefault(spec);
+  return out as ParamValues<S>;
+}
+
+/**
+ * Parse a query string (with or without leading '?') against a schema. Never throws. Every
+ * parameter that is unknown, malformed, repeated or out of range is reported by name in
+ * `problems`, and the value falls back to the default (or the clamped value). Shell parameters
+ * (embed, present, theme) are ignored here.
+ */
+export function parseParams<S extends ParamSchema>(schema: S, query: string | URLSearchParams): ParsedParams<S> {
+  const values = defaultValues(schema) as Record<string, unknown>;
+  const problems: ParamProblem[] = [];
+  let search: URLSearchParams;
+  try {
+    search = typeof query === 'string' ? new URLSearchParams(query.startsWith('?') ? query.slice(1) : query) : query;
+  } catch {
+    return { values: values as ParamValues<S>, problems: [{ name: '(query)', message: 'could not be read' }] };
+  }
+  const seen = new Set<string>();
+  let unknownCount = 0;
+  for (const [name, raw] of search) {
+    if ((SHELL_PARAMS as readonly string[]).includes(name)) continue;
+    if (!Object.prototype.hasOwnProperty.call(schema, name)) {
+      unknownCount++;
+      if (unknownCount <= 5) problems.push({ name: name.length > 24 ? `${name.slice(0, 24)}…` : name, message: 'is not a parameter of this scene; ignored' });
+      continue;
+    }
+    if (seen.has(name)) {
+      problems.push({ name, message: 'is given more than once; using the first' });
+      continue;
+    }
+    seen.add(name);
+    const spec = schema[name]!;
+    const r = parseOne(spec, raw);
+    if (r.ok) {
+      values[name] = r.value;
+      if (r.problem) problems.push({ name, message: r.problem });
+    } else {
+      problems.push({ name, message: `${r.problem}; using the default ${describeDefault(spec)}` });
+    }
+  }
+  if (unknownCount > 5) problems.push({ name: '(others)', message: `${unknownCount - 5} more unknown parameters ignored` });
+  return { values: values as ParamValues<S>, problems };
+}
+
+function describeDefault(spec: ParamSpec): string {
+  const d = spec.default;
+  if (d === null) return '(none)';
+  if (Array.isArray(d)) return d.join(',');
+  if (typeof d === 'boolean') return d ? '1' : '0';
+  if (typeof d === 'string') return d === '' ? '(empty)' : short(d);
+  return fmt(d as number);
+}
+
+function encodeValue(spec: ParamSpec, v: unknown): string | null {
+  if (v === null || v === undefined) return null;
+  switch (spec.kind) {
+    case 'bool':
+      return v ? '1' : '0';
+    case 'vec3':
+    case 'list':
+      return (v as number[]).map(fmt).join(',');
+    case 'number':
+      return fmt(v as number);
+    default:
+      return String(v);
+  }
+}
+
+function sameValue(a: unknown, b: unknown): boolean {
+  if (Array.isArray(a) && Array.isArray(b)) return a.length === b.length && a.every((x, i) => x === b[i]);
+  return a === b;
+}
+
+/**
+ * Serialise values to a query string (no leading '?'), omitting parameters equal to their
+ * default, in schema order. `extra` (e.g. shell flags) is appended as given.
+ */
+export function serializeParams<S extends ParamSchema>(
+  schema: S,
+  values: Partial<ParamValues<S>>,
+  extra: Record<string, string | undefined> = {},
+): string {
+  const parts: string[] = [];
+  for (const [name, spec] of Object.entries(schema)) {
+    const v = (values as Record<string, unknown>)[name];
+    if (v === undefined || sameValue(v, spec.default)) continue;
+    const enc = encodeValue(spec, v);
+    if (enc === null) continue;
+    parts.push(`${encodeURIComponent(name)}=${encodeComponent(enc)}`);
+  }
+  for (const [k, v] of Object.entries(extra)) if (v !== undefined) parts.push(`${k}=${encodeComponent(v)}`);
+  return parts.join('&');
+}
+
+/** encodeURIComponent, but keeping `,` `;` `(` `)` `*` readable in shared links. */
+function encodeComponent(s: string): string {
+  return encodeURIComponent(s).replace(/%2C/g, ',').replace(/%3B/g, ';').replace(/%28/g, '(').replace(/%29/g, ')');
+}

@@ -1,0 +1,59 @@
+/** Hash routing: `#/texture?u=0.4&v=0.24` → { path: '/texture', query: 'u=0.4&v=0.24' }. */
+export interface Route {
+  path: string;
+  query: string;
+}
+
+export function parseHash(hash: string): Route {
+  let h = hash.startsWith('#') ? hash.slice(1) : hash;
+  if (h === '') h = '/';
+  const q = h.indexOf('?');
+  let path = q >= 0 ? h.slice(0, q) : h;
+  const query = q >= 0 ? h.slice(q + 1) : '';
+  if (!path.startsWith('/')) path = `/${path}`;
+  if (path.length > 1 && path.endsWith('/')) path = path.slice(0, -1);
+  return { path, query };
+}
+
+export interface ShellFlags {
+  embed: boolean;
+  present: boolean;
+  theme: 'light' | 'dark' | null;
+  /** Shell parameters the shell could not use, with a message each. */
+  problems: { name: string; message: string }[];
+}
+
+/** Read the shell's own flags (embed, present, theme) from a query string. Never throws. */
+export function parseShellFlags(query: string): ShellFlags {
+  const flags: ShellFlags = { embed: false, present: false, theme: null, problems: [] };
+  let sp: URLSearchParams;
+  try {
+    sp = new URLSearchParams(query);
+  } catch {
+    return flags;
+  }
+  const bool = (name: 'embed' | 'present') => {
+    const v = sp.get(name);
+    if (v === null) return;
+    if (v === '1' || v === 'true') flags[name] = true;
+    else if (v === '0' || v === 'false') flags[name] = false;
+    else flags.problems.push({ name, message: `${JSON.stringify(v.slice(0, 24))} is not 0 or 1; ignored` });
+  };
+  bool('embed');
+  bool('present');
+  const t = sp.get('theme');
+  if (t !== null) {
+    if (t === 'light' || t === 'dark') flags.theme = t;
+    else flags.problems.push({ name: 'theme', message: `${JSON.stringify(t.slice(0, 24))} is not light or dark; using the system's` });
+  }
+  return flags;
+}
+
+/** The shell flags as query entries, for links that must keep the mode. */
+export function shellExtras(flags: Pick<ShellFlags, 'embed' | 'present' | 'theme'>): Record<string, string | undefined> {
+  return {
+    embed: flags.embed ? '1' : undefined,
+    present: flags.present ? '1' : undefined,
+    theme: flags.theme ?? undefined,
+  };
+}

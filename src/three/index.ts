@@ -1,0 +1,2 @@
+export { Viewport } from './Viewport';
+export type { ViewportContext, ViewportProps } from './Viewport';

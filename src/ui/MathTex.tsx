@@ -1,0 +1,45 @@
+import { useEffect, useState } from 'react';
+
+type Katex = typeof import('katex');
+let katexPromise: Promise<Katex> | null = null;
+
+/** Load KaTeX (and its stylesheet) once, on first use. */
+export function loadKatex(): Promise<Katex> {
+  if (!katexPromise) {
+    katexPromise = Promise.all([import('katex'), import('katex/dist/katex.min.css')]).then(([m]) => (m as unknown as { default?: Katex }).default ?? m);
+  }
+  return katexPromise;
+}
+
+/**
+ * TeX rendered by KaTeX (HTML + MathML for screen readers). KaTeX loads lazily; until then, and if
+ * the TeX is invalid, the source is shown as code. Never throws.
+ */
+export function MathTex({ tex, display = false, className }: { tex: string; display?: boolean; className?: string }) {
+  const [html, setHtml] = useState<string | null>(null);
+  useEffect(() => {
+    let alive = true;
+    loadKatex()
+      .then((k) => {
+        if (!alive) return;
+        try {
+          setHtml(k.renderToString(tex, { displayMode: display, throwOnError: false, strict: 'ignore', output: 'htmlAndMathml' }));
+        } catch {
+          setHtml(null);
+        }
+      })
+      .catch(() => {});
+    return () => {
+      alive = false;
+    };
+  }, [tex, display]);
+  const Tag = display ? 'div' : 'span';
+  if (html === null) {
+    return (
+      <Tag className={`math math-pending${display ? ' math-display' : ''}${className ? ` ${className}` : ''}`}>
+        <code>{tex}</code>
+      </Tag>
+    );
+  }
+  return <Tag className={`math${display ? ' math-display' : ''}${className ? ` ${className}` : ''}`} dangerouslySetInnerHTML={{ __html: html }} />;
+}

@@ -1,0 +1,43 @@
+import { useEffect, useState, type RefObject } from 'react';
+
+/**
+ * True once the element has come within `margin` of the viewport (sticky: stays true), so heavy
+ * modules (Plotly, three.js) load only when a view that needs them is about to be seen.
+ */
+export function useSeenOnce(ref: RefObject<Element | null>, margin = '200px'): boolean {
+  const [seen, setSeen] = useState(false);
+  useEffect(() => {
+    if (seen) return;
+    const el = ref.current;
+    if (!el) return;
+    if (typeof IntersectionObserver !== 'function') {
+      setSeen(true);
+      return;
+    }
+    const io = new IntersectionObserver(
+      (entries) => {
+        if (entries.some((e) => e.isIntersecting)) {
+          setSeen(true);
+          io.disconnect();
+        }
+      },
+      { rootMargin: margin },
+    );
+    io.observe(el);
+    return () => io.disconnect();
+  }, [ref, margin, seen]);
+  return seen;
+}
+
+/** Live visibility (not sticky): used to pause rendering while a view is off screen. */
+export function observeVisibility(el: Element, onChange: (visible: boolean) => void): () => void {
+  if (typeof IntersectionObserver !== 'function') {
+    onChange(true);
+    return () => {};
+  }
+  const io = new IntersectionObserver((entries) => {
+    for (const e of entries) onChange(e.isIntersecting);
+  });
+  io.observe(el);
+  return () => io.disconnect();
+}

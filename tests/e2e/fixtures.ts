@@ -1,0 +1,59 @@
+/**
+ * Shared browser-test fixtures: every test fails on any console error or uncaught page error;
+ * helpers open a scene and read readouts the way the contract defines them.
+ */
+import { test as base, expect, type Page } from '@playwright/test';
+
+export const test = base.extend<{ consoleErrors: string[] }>({
+  consoleErrors: [
+    async ({ page }, use) => {
+      const errors: string[] = [];
+      page.on('console', (m) => {
+        if (m.type() === 'error') errors.push(`console.error: ${m.text()}`);
+      });
+      page.on('pageerror', (e) => errors.push(`pageerror: ${e.message}`));
+      await use(errors);
+      expect(errors, 'console errors during the test').toEqual([]);
+    },
+    { auto: true },
+  ],
+});
+
+export { expect };
+
+/** Navigate to a hash route (e.g. '#/texture?u=0.4') and wait until the scene has loaded. */
+export async function openScene(page: Page, hash: string): Promise<void> {
+  await page.goto(`./${hash.startsWith('#') ? hash : `#${hash}`}`);
+  await page.waitForSelector('main#main');
+  await expect(page.locator('.loading')).toHaveCount(0);
+}
+
+/** The `data-value` of a readout (the contract's full-precision value, or "none"). */
+export async function readout(page: Page, id: string): Promise<string> {
+  const loc = page.getByTestId(id).first();
+  await expect(loc).toHaveAttribute('data-value', /.*/);
+  return (await loc.getAttribute('data-value')) ?? '';
+}
+
+/** A readout as a number (fails the test if it is "none" or not numeric). */
+export async function readoutNumber(page: Page, id: string): Promise<number> {
+  const v = await readout(page, id);
+  const x = Number(v);
+  expect(Number.isFinite(x), `readout ${id} = ${v} is a finite number`).toBe(true);
+  return x;
+}
+
+/** Wait until a readout's data-value satisfies a predicate (scenes compute asynchronously). */
+export async function waitForReadout(page: Page, id: string, pred: (v: string) => boolean, timeout = 15000): Promise<string> {
+  let last = '';
+  await expect
+    .poll(
+      async () => {
+        last = (await page.getByTestId(id).first().getAttribute('data-value')) ?? '';
+        return pred(last);
+      },
+      { timeout },
+    )
+    .toBe(true);
+  return last;
+}
