@@ -4,3 +4,4 @@ export * from './cosineHemisphere';
 export * from './examLobe';
 export * from './phongLobe';
 export * from './stability';
+export * from './pdf1d';

@@ -10,6 +10,7 @@
  * Source: pbrt-v4 `util/sampling.h` (SampleLinear / LinearPDF / InvertLinearSample) and §A.1
  * (the inversion method); pbrt-v4 §A.4.1 for tabulated piecewise-constant distributions.
  */
+import { integrate1D } from '../estimators/integrate1d';
 
 /** A 1D density on [a, b] with its sampler and inverse (the scene's strategies are these). */
 export interface Pdf1D {
@@ -199,4 +200,231 @@ export function squarePdf1D(a: number, b: number, c = 2): Pdf1D {
       }
     },
   };
+}
+
+// ---------------------------------------------------------------------------------------------
+// Typed densities: validation, numerical normalization, tabulated sampling
+
+/** Why a typed density cannot be used as a Monte Carlo pdf. */
+export type PdfProblemKind = 'not-finite' | 'negative' | 'not-normalizable' | 'zero' | 'zero-where-f-nonzero';
+
+/** A density that was rejected, with a plain-language message naming the place it fails. */
+export interface PdfProblem {
+  kind: PdfProblemKind;
+  /** Where it fails, if at a point. */
+  x?: number;
+  message: string;
+}
+
+/** 4-point Gauss–Legendre nodes on [−1, 1] and weights (exact for cubics; used per table bin). */
+const GL4_X = [-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526];
+const GL4_W = [0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538];
+
+/** Default number of bins of tabulated densities. */
+export const TABLE_BINS = 4096;
+
+const fmt = (x: number): string => (Number.isInteger(x) ? String(x) : x.toPrecision(6).replace(/\.?0+$/, ''));
+
+/** Result of {@link tabulatedPdf1D}, {@link customPdf1D} and {@link proportionalPdf1D}. */
+export type TypedPdfResult =
+  | {
+      ok: true;
+      /** Sampler over the tabulated density q (see {@link tabulatedPdf1D}); q is the density samples really have. */
+      pdf: Pdf1D;
+      /** The normalized typed density p(x)/Z, exact up to the quadrature of Z; 0 outside [a, b]. */
+      density: (x: number) => number;
+      /** Z = ∫ₐᵇ p dx of the unnormalized density (adaptive Gauss–Kronrod). */
+      norm: number;
+    }
+  | { ok: false; problem: PdfProblem };
+
+/**
+ * Sampler over a piecewise-constant density with the given bin masses on [a, b] (bins of equal
+ * width): inversion of the tabulated CDF by binary search, then linear inside the bin. Domain:
+ * masses ≥ 0 with a positive finite sum (normalized here). The density is q(x) = mass_k/(Σ · Δx) in
+ * bin k, w.r.t. dx; 0 outside [a, b]. Source: pbrt-v4 §A.4.1 `PiecewiseConstant1D` (Sample,
+ * Invert), written here over bin masses so that each bin carries exactly the mass of the typed
+ * density over it.
+ */
+export function piecewiseConstantPdf1D(masses: ArrayLike<number>, a: number, b: number, kind = 'tabulated'): Pdf1D {
+  const n = masses.length;
+  const cdf = new Float64Array(n + 1);
+  for (let k = 0; k < n; k++) cdf[k + 1] = cdf[k]! + masses[k]!;
+  const total = cdf[n]!;
+  if (!(total > 0 && total < Infinity)) throw new Error('tabulated density needs a positive, finite total mass');
+  for (let k = 1; k <= n; k++) cdf[k] = cdf[k]! / total;
+  cdf[n] = 1;
+  // trailing empty bins: their CDF is already 1, so no u < 1 can land in them
+  for (let k = n - 1; k > 0 && masses[k] === 0; k--) cdf[k] = 1;
+  const dx = (b - a) / n;
+  const dens = new Float64Array(n);
+  for (let k = 0; k < n; k++) dens[k] = masses[k]! / total / dx;
+  /** Largest k with cdf[k] ≤ u (and mass in bin k > 0 when u is inside). */
+  const find = (u: number): number => {
+    let lo = 0;
+    let hi = n;
+    while (hi - lo > 1) {
+      const mid = (lo + hi) >> 1;
+      if (cdf[mid]! <= u) lo = mid;
+      else hi = mid;
+    }
+    return lo;
+  };
+  const sampleOne = (u: number): number => {
+    const k = find(u);
+    const w = cdf[k + 1]! - cdf[k]!;
+    const t = w > 0 ? (u - cdf[k]!) / w : 0;
+    const x = a + (k + Math.min(t, 1)) * dx;
+    return x < a ? a : x > b ? b : x;
+  };
+  const pdfOne = (x: number): number => {
+    if (!(x >= a && x <= b)) return 0;
+    const s = (x - a) / dx;
+    const k = Math.min(n - 1, Math.floor(s));
+    // a point on the edge between a full bin and an empty one belongs to the full one (the sampler
+    // can return the right edge of bin k − 1 when rounding gives t = 1)
+    return dens[k]! === 0 && k > 0 && s === k ? dens[k - 1]! : dens[k]!;
+  };
+  return {
+    kind,
+    a,
+    b,
+    sample: sampleOne,
+    pdf: pdfOne,
+    invert(x) {
+      const xc = x < a ? a : x > b ? b : x;
+      const s = (xc - a) / dx;
+      const k = Math.min(n - 1, Math.floor(s));
+      return Math.min(1, cdf[k]! + (s - k) * (cdf[k + 1]! - cdf[k]!));
+    },
+    sampleBatch(u, x, p, start, end) {
+      for (let i = start; i < end; i++) {
+        const k = find(u[i]!);
+        const w = cdf[k + 1]! - cdf[k]!;
+        const t = w > 0 ? (u[i]! - cdf[k]!) / w : 0;
+        let xi = a + (k + (t > 1 ? 1 : t)) * dx;
+        xi = xi < a ? a : xi > b ? b : xi;
+        x[i] = xi;
+        // density of the bin the sample lies in (a sample on a bin edge belongs to bin k)
+        p[i] = dens[k]!;
+      }
+    },
+  };
+}
+
+/**
+ * Validate, normalize and tabulate a typed density p on [a, b] (p need not be normalized).
+ * Checks, in order, with a message naming the first failing x:
+ * - p is not a finite number somewhere on a fine grid (e.g. sqrt(x − 1) below 1) → 'not-finite';
+ * - p < 0 somewhere → 'negative' (a density cannot be negative);
+ * - ∫ₐᵇ p dx does not converge, or is infinite → 'not-normalizable'; is 0 → 'zero';
+ * - f is given and p = 0 where f ≠ 0 → 'zero-where-f-nonzero' (samples never land there, so the
+ *   estimator misses that part of the integral: biased, or with infinite variance).
+ * The grid is the 4 Gauss–Legendre nodes of each of `bins` equal bins plus both end points.
+ *
+ * Sampling: each bin receives exactly the mass of p over it (4-point Gauss–Legendre per bin,
+ * rescaled to Z); samples follow that piecewise-constant density q, and `pdf.pdf` returns q, the
+ * density the samples really have, so an estimator dividing by it stays unbiased. `density`
+ * returns the exact normalized p(x)/Z (for given samples and for drawing).
+ * Measure dx. Source: pbrt-v4 §A.4.1; QUADPACK for Z.
+ */
+export function tabulatedPdf1D(
+  p: (x: number) => number,
+  a: number,
+  b: number,
+  f?: (x: number) => number,
+  bins = TABLE_BINS,
+  integrate?: (g: (x: number) => number, a: number, b: number) => { value: number; converged: boolean },
+  kind = 'custom',
+): TypedPdfResult {
+  const fail = (k: PdfProblemKind, message: string, x?: number): TypedPdfResult => ({
+    ok: false,
+    problem: x === undefined ? { kind: k, message } : { kind: k, x, message },
+  });
+  if (!(Number.isFinite(a) && Number.isFinite(b) && a < b)) return fail('not-normalizable', `the interval [${a}, ${b}] is empty or not finite`);
+  const h = (b - a) / bins;
+  const masses = new Float64Array(bins);
+  const check = (x: number, v: number): TypedPdfResult | null => {
+    if (Number.isNaN(v)) return fail('not-finite', `p(x) is not a number at x = ${fmt(x)} (outside the domain of the expression?)`, x);
+    if (v < 0) return fail('negative', `p(x) = ${fmt(v)} < 0 at x = ${fmt(x)}: a density cannot be negative`, x);
+    if (v === Infinity) return fail('not-normalizable', `p(x) is infinite at x = ${fmt(x)}, so it cannot be normalized here`, x);
+    if (!Number.isFinite(v)) return fail('not-finite', `p(x) is not finite at x = ${fmt(x)}`, x);
+    return null;
+  };
+  let zeroWhereF: number | undefined;
+  for (let k = 0; k < bins; k++) {
+    const c = a + (k + 0.5) * h;
+    let m = 0;
+    for (let j = 0; j < 4; j++) {
+      const x = c + 0.5 * h * GL4_X[j]!;
+      const v = p(x);
+      const bad = check(x, v);
+      if (bad) return bad;
+      m += GL4_W[j]! * v;
+      if (v === 0 && f && zeroWhereF === undefined) {
+        const fv = f(x);
+        if (fv !== 0 && Number.isFinite(fv)) zeroWhereF = x;
+      }
+    }
+    masses[k] = 0.5 * h * m;
+  }
+  for (const x of [a, b]) {
+    const v = p(x);
+    if (Number.isNaN(v) || v < 0) {
+      const bad = check(x, v);
+      if (bad) return bad;
+    }
+    if (v === 0 && f && zeroWhereF === undefined) {
+      const fv = f(x);
+      if (fv !== 0 && Number.isFinite(fv)) zeroWhereF = x;
+    }
+  }
+  const integ = integrate ?? defaultIntegrate;
+  const Z = integ(p, a, b);
+  if (!Number.isFinite(Z.value) || !Z.converged) {
+    return fail('not-normalizable', `∫ p dx over [${fmt(a)}, ${fmt(b)}] does not converge: p cannot be normalized into a density`);
+  }
+  if (!(Z.value > 0)) return fail('zero', `p is zero on all of [${fmt(a)}, ${fmt(b)}]: there is nothing to sample from`);
+  if (zeroWhereF !== undefined) {
+    const x = zeroWhereF;
+    return fail(
+      'zero-where-f-nonzero',
+      `p(${fmt(x)}) = 0 but f(${fmt(x)}) ≠ 0: samples never land where p is zero, so the estimate would miss that part of the integral (biased, or with infinite variance)`,
+      x,
+    );
+  }
+  let total = 0;
+  for (let k = 0; k < bins; k++) total += masses[k]!;
+  if (!(total > 0)) return fail('zero', `p is zero on the sampling grid of [${fmt(a)}, ${fmt(b)}]`);
+  const Zv = Z.value;
+  return {
+    ok: true,
+    pdf: piecewiseConstantPdf1D(masses, a, b, kind),
+    density: (x) => (x >= a && x <= b ? p(x) / Zv : 0),
+    norm: Zv,
+  };
+}
+
+/**
+ * A user-typed pdf p on [a, b] (any positive multiple; normalized numerically), validated against
+ * the integrand f (see {@link tabulatedPdf1D}). Measure dx.
+ */
+export function customPdf1D(p: (x: number) => number, a: number, b: number, f?: (x: number) => number, bins = TABLE_BINS): TypedPdfResult {
+  return tabulatedPdf1D(p, a, b, f, bins, undefined, 'custom');
+}
+
+/**
+ * p ∝ |f| on [a, b], tabulated (the zero-variance choice when f does not change sign: f/p is then the
+ * constant ∫|f| up to the table's resolution). Fails with 'zero' when f vanishes on [a, b].
+ * Measure dx. Source: pbrt-v4 §2.2.2 (importance sampling, p ∝ f is optimal).
+ */
+export function proportionalPdf1D(f: (x: number) => number, a: number, b: number, bins = TABLE_BINS): TypedPdfResult {
+  const absf = (x: number) => Math.abs(f(x));
+  return tabulatedPdf1D(absf, a, b, undefined, bins, undefined, 'proportional');
+}
+
+/** Z by adaptive Gauss–Kronrod, to a relative 1e-12 (enough to tell a density from a divergent one). */
+function defaultIntegrate(g: (x: number) => number, a: number, b: number): { value: number; converged: boolean } {
+  const r = integrate1D(g, a, b, { relTol: 1e-12, maxIntervals: 4000 });
+  return { value: r.value, converged: r.converged };
 }

@@ -14,6 +14,9 @@ import {
   squarePdf1D,
   uniform1DPdf,
   uniformPdf1D,
+  customPdf1D,
+  piecewiseConstantPdf1D,
+  proportionalPdf1D,
   type Pdf1D,
 } from '../../../src/core/sampling/pdf1d';
 import { integrate1D } from '../../../src/core/estimators/integrate1d';
@@ -46,7 +49,15 @@ const cases: { name: string; pdf: Pdf1D }[] = [
   { name: 'linear 5→0', pdf: linearPdf1D(-2, 0.5, 5, 0) },
   { name: 'square c=2 (exam)', pdf: squarePdf1D(0, 2, 2) },
   { name: 'square across the zero of x + c', pdf: squarePdf1D(-3, 1, 2) },
+  { name: 'tabulated ∝ |sin x| on [0, 5] (sign change)', pdf: okPdf(proportionalPdf1D(Math.sin, 0, 5, 512)) },
+  { name: 'custom exp(x) on [-1, 2]', pdf: okPdf(customPdf1D(Math.exp, -1, 2, undefined, 256)) },
+  { name: 'piecewise with empty bins', pdf: piecewiseConstantPdf1D([0, 0, 1, 0, 3, 0, 0], 1, 8) },
 ];
+
+function okPdf(r: ReturnType<typeof customPdf1D>): Pdf1D {
+  if (!r.ok) throw new Error(r.problem.message);
+  return r.pdf;
+}
 
 describe('1D pdfs: shared properties', () => {
   for (const { name, pdf } of cases) {
@@ -64,8 +75,11 @@ describe('1D pdfs: shared properties', () => {
         expect(Number.isNaN(pdf.pdf(x))).toBe(false);
         expect(Math.abs(pdf.invert(x) - u)).toBeLessThan(1e-12);
       }
-      expect(pdf.sample(0)).toBeCloseTo(a, 14);
-      expect(pdf.sample(NEAR_ONE)).toBeCloseTo(b, 7);
+      // the ends of the support map to the ends of [0, 1) (empty end bins move the support inwards)
+      if (pdf.pdf(a) > 0) expect(pdf.sample(0)).toBeCloseTo(a, 14);
+      if (pdf.pdf(b) > 0) expect(pdf.sample(NEAR_ONE)).toBeCloseTo(b, 7);
+      expect(pdf.pdf(pdf.sample(TINY))).toBeGreaterThan(0);
+      expect(pdf.pdf(pdf.sample(NEAR_ONE))).toBeGreaterThan(0);
       fc.assert(
         fc.property(unit, (u) => {
           const x = pdf.sample(u);
@@ -140,5 +154,66 @@ describe('χ² rejects deliberately broken samplers', () => {
     const broken = (u: number) => Math.min(2, Math.max(0, Math.sqrt(4 + u * 12) - 2));
     const r = chi2Of(broken, (x) => square1DPdf(x, 0, 2, 2), 0, 2, 6);
     expect(r.pass).toBe(false);
+  });
+});
+
+describe('typed densities (custom, proportional to f)', () => {
+  it('normalizes numerically: Z and the exact normalized density', () => {
+    const r = customPdf1D((x) => (x + 2) ** 2, 0, 2);
+    expect(r.ok).toBe(true);
+    if (!r.ok) return;
+    expect(r.norm).toBeCloseTo(56 / 3, 12);
+    expect(r.density(1.16)).toBeCloseTo((3 / 56) * 3.16 ** 2, 14);
+    expect(r.density(-0.1)).toBe(0);
+    // every table bin carries the exact mass of p: the CDF at bin edges is exact
+    const edge = 0 + 2 * (1000 / 4096);
+    const exactCdf = ((edge + 2) ** 3 - 8) / 56;
+    expect(Math.abs(r.pdf.invert(edge) - exactCdf)).toBeLessThan(1e-13);
+    // the tabulated density is close to the true one (bin width 2/4096)
+    expect(Math.abs(r.pdf.pdf(1.16) / r.density(1.16) - 1)).toBeLessThan(2e-3);
+  });
+
+  it('proportional to f gives f/q ≈ ∫|f| for every sample (near-zero variance)', () => {
+    const f = (x: number) => Math.exp(-x) * (2 + Math.cos(3 * x));
+    const r = proportionalPdf1D(f, 0, 3);
+    if (!r.ok) throw new Error(r.problem.message);
+    const u = Float64Array.from({ length: 64 }, (_, i) => (i + 0.5) / 64);
+    const x = new Float64Array(64);
+    const p = new Float64Array(64);
+    r.pdf.sampleBatch(u, x, p, 0, 64);
+    for (let i = 0; i < 64; i++) expect(Math.abs(f(x[i]!) / p[i]! / r.norm - 1)).toBeLessThan(5e-3);
+  });
+
+  it('rejects bad pdfs with clear messages', () => {
+    const neg = customPdf1D((x) => x - 1, 0, 2);
+    expect(neg.ok).toBe(false);
+    if (!neg.ok) {
+      expect(neg.problem.kind).toBe('negative');
+      expect(neg.problem.message).toMatch(/cannot be negative/);
+      expect(neg.problem.x!).toBeLessThan(1);
+    }
+    const zero = customPdf1D((x) => (x < 1 ? 0 : 1), 0, 2, (x) => (x + 2) ** 2);
+    expect(zero.ok).toBe(false);
+    if (!zero.ok) {
+      expect(zero.problem.kind).toBe('zero-where-f-nonzero');
+      expect(zero.problem.message).toMatch(/biased/);
+    }
+    // zero where f is zero too is fine
+    expect(customPdf1D((x) => (x < 1 ? 0 : 1), 0, 2, (x) => (x < 1 ? 0 : x)).ok).toBe(true);
+    const div = customPdf1D((x) => 1 / x, 0, 1);
+    expect(div.ok).toBe(false);
+    if (!div.ok) expect(div.problem.kind).toBe('not-normalizable');
+    const nan = customPdf1D((x) => Math.sqrt(x - 1), 0, 2);
+    expect(nan.ok).toBe(false);
+    if (!nan.ok) expect(nan.problem.kind).toBe('not-finite');
+    const allZero = customPdf1D(() => 0, 0, 1);
+    expect(allZero.ok).toBe(false);
+    if (!allZero.ok) expect(allZero.problem.kind).toBe('zero');
+    const fzero = proportionalPdf1D(() => 0, 0, 1);
+    expect(fzero.ok).toBe(false);
+    // integrable singularity: 1/√x is a fine (unnormalized) density
+    const sing = customPdf1D((x) => 1 / Math.sqrt(x), 0, 1);
+    expect(sing.ok).toBe(true);
+    if (sing.ok) expect(sing.norm).toBeCloseTo(2, 8);
   });
 });
