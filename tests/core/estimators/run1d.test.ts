@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { ConvergenceRun1D, estimate1D, type Problem1D } from '../../../src/core/estimators/run1d';
+import { ConvergenceRun1D, estimate1D } from '../../../src/core/estimators/run1d';
 import { logSpacedCounts } from '../../../src/core/estimators/convergence';
 import { RmseAccumulator } from '../../../src/core/estimators/rmse';
 import { fitLogLogSlope } from '../../../src/core/estimators/slope';
