@@ -5,3 +5,5 @@ export * from './examLobe';
 export * from './phongLobe';
 export * from './stability';
 export * from './pdf1d';
+export * from './piecewise1D';
+export * from './piecewise2D';
