@@ -102,7 +102,10 @@ export function validateRaySphere(o: Vec3, d: Vec3, c: Vec3, r: number): RaySphe
   const fz = o[2] - c[2];
   const ff = fx * fx + fy * fy + fz * fz;
   const b = 2 * (fx * d[0] + fy * d[1] + fz * d[2]);
-  if (!Number.isFinite(a) || !Number.isFinite(ff) || !Number.isFinite(b * b) || !Number.isFinite(r * r) || !Number.isFinite(4 * a * ff)) {
+  // Keep every intermediate (b², 4a·|f|², 4a·r², and the double-double reference's Veltkamp
+  // splits, which need |x| ≤ 2^996) finite: refuse coefficients beyond 2^960 ≈ 1e289.
+  const LIMIT = 2 ** 960;
+  if (!(a <= LIMIT && b * b <= LIMIT && 4 * a * ff <= LIMIT && 4 * a * r * r <= LIMIT && ff <= LIMIT)) {
     return { ok: false, error: 'overflow', message: 'The numbers are too large: the quadratic’s coefficients overflow double precision.' };
   }
   return null;

@@ -1,0 +1,383 @@
+/**
+ * The ray–sphere scene's model: pure functions of the URL parameters, calling the core.
+ * Nothing here knows about React, SVG, three.js or Plotly.
+ */
+import {
+  intersectRaySphere,
+  intersectRaySphereBatch,
+  raySphereReference,
+  relativeError,
+  fillPinholeRays,
+  RAY_STRIDE,
+  NO_HIT,
+  type RaySphereCase,
+  type RaySphereHit,
+  type RaySphereMethod,
+  type RaySphereReference,
+  type Vec3,
+} from '../../core/geometry';
+import { schema, type RaySphereParams } from './params';
+
+export type V3 = [number, number, number];
+
+/** Plain-words explanation of each case, shown beside the case name. */
+export const CASE_TEXT: Record<RaySphereCase, string> = {
+  miss: 'Δ < 0: the quadratic has no real root, so the line never touches the sphere.',
+  tangent: 'Δ = 0: one double root; the ray just touches the sphere at t = −b / 2a.',
+  'two-hits': 'Δ > 0 and both roots ≥ 0: the ray enters at t₀ and leaves at t₁. The hit is the nearest root ≥ 0, t₀.',
+  inside: 'Δ > 0 with t₀ < 0 ≤ t₁: the origin is inside the sphere. t₀ lies behind the origin, so the hit is t₁ (the exit).',
+  behind: 'Δ ≥ 0 but every root is < 0: the line meets the sphere behind the origin. A ray only goes forward (t ≥ 0), so there is no hit.',
+};
+
+export interface InputCheck {
+  /** The values actually used (bad ones replaced by safe fallbacks). */
+  o: V3;
+  d: V3;
+  c: V3;
+  r: number;
+  /** Messages for the page; empty when the inputs are fine. */
+  problems: string[];
+}
+
+const DEFAULT_D = schema.d.default as unknown as V3;
+
+/**
+ * Replace inputs that do not describe a ray and a sphere by safe values, saying why:
+ * non-finite numbers → defaults; d = 0 (or too short to square) → the default direction;
+ * r ≤ 0 → |r| if positive, else 1.
+ */
+export function checkInputs(p: Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r'>): InputCheck {
+  const problems: string[] = [];
+  const fin = (v: readonly number[], name: string, fallback: readonly number[]): V3 => {
+    if (v.length === 3 && v.every(Number.isFinite)) return [v[0]!, v[1]!, v[2]!];
+    problems.push(`${name} has a value that is not a finite number; using ${fallback.join(', ')}.`);
+    return [fallback[0]!, fallback[1]!, fallback[2]!];
+  };
+  const o = fin(p.o, 'The origin o', schema.o.default);
+  let d = fin(p.d, 'The direction d', schema.d.default);
+  const c = fin(p.c, 'The centre c', schema.c.default);
+  let r = p.r;
+  if (!Number.isFinite(r)) {
+    problems.push(`The radius is not a finite number; using r = ${schema.r.default}.`);
+    r = schema.r.default;
+  } else if (r <= 0) {
+    const fb = r < 0 ? -r : schema.r.default;
+    problems.push(
+      r === 0
+        ? `A radius of 0 is a point, not a sphere; using r = ${fb}.`
+        : `A negative radius (r = ${r}) does not describe a sphere; using |r| = ${fb}.`,
+    );
+    r = fb;
+  }
+  const a = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  if (!(a > 0)) {
+    problems.push(
+      d.every((x) => x === 0)
+        ? `The direction d = (0, 0, 0) points nowhere, so the ray has no t; using d = (${DEFAULT_D.join(', ')}).`
+        : `The direction d is too short to square in double precision (d·d underflows to 0); using d = (${DEFAULT_D.join(', ')}).`,
+    );
+    d = [...DEFAULT_D] as V3;
+  }
+  return { o, d, c, r, problems };
+}
+
+export interface MethodRow {
+  method: RaySphereMethod;
+  res: RaySphereHit;
+  /** Relative errors against the double-double reference (Infinity = a root lost or invented). */
+  errT0: number | null;
+  errT1: number | null;
+  errHit: number | null;
+  errDisc: number | null;
+  /** Did the method get the case right? */
+  caseRight: boolean;
+}
+
+export interface RaySphereModel {
+  input: InputCheck;
+  /** Null only when even the fallback inputs overflow (then `fatal` says why). */
+  chosen: RaySphereHit | null;
+  rows: MethodRow[];
+  reference: RaySphereReference | null;
+  fatal: string | null;
+  /** |o − c| / r: how many radii away the sphere's centre is. */
+  distanceRatio: number;
+}
+
+function relDisc(x: number, ref: number): number {
+  if (ref === 0) return x === 0 ? 0 : Infinity;
+  return Math.abs(x - ref) / Math.abs(ref);
+}
+
+/** Everything the page shows, for one parameter set. */
+export function computeModel(p: RaySphereParams): RaySphereModel {
+  const input = checkInputs(p);
+  const { o, d, c, r } = input;
+  const ref = raySphereReference(o, d, c, r);
+  const distanceRatio = Math.hypot(o[0] - c[0], o[1] - c[1], o[2] - c[2]) / r;
+  if (!ref.ok) {
+    return { input, chosen: null, rows: [], reference: null, fatal: ref.message, distanceRatio };
+  }
+  const rows: MethodRow[] = [];
+  for (const method of ['naive', 'stable'] as const) {
+    const res = intersectRaySphere(o, d, c, r, method);
+    if (!res.ok) return { input, chosen: null, rows: [], reference: null, fatal: res.message, distanceRatio };
+    rows.push({
+      method,
+      res,
+      errT0: relativeError(res.t0, ref.t0),
+      errT1: relativeError(res.t1, ref.t1),
+      errHit: relativeError(res.tHit, ref.tHit),
+      errDisc: relDisc(res.discriminant, ref.discriminant),
+      caseRight: res.case === ref.case,
+    });
+  }
+  const chosen = rows.find((row) => row.method === (p.method === 'naive' ? 'naive' : 'stable'))!.res;
+  return { input, chosen, rows, reference: ref, fatal: null, distanceRatio };
+}
+
+/** g(t) = a t² + b t + c sampled for the plot, over a window that shows the vertex and the roots. */
+export function gCurve(res: RaySphereHit, samples = 161): { t: number[]; g: number[]; tMin: number; tMax: number } {
+  const { a, b, c } = res;
+  const tv = -b / (2 * a);
+  let half: number;
+  if (res.t0 !== null && res.t1 !== null && res.t1 > res.t0) half = 1.6 * (res.t1 - res.t0);
+  else half = Math.sqrt(Math.abs(res.discriminant)) / a;
+  // include t = 0 when it is not absurdly far from the action
+  if (!(half > 0) || !Number.isFinite(half)) half = 1;
+  let tMin = tv - half;
+  let tMax = tv + half;
+  if (Math.abs(tv) < 4 * half) {
+    tMin = Math.min(tMin, -0.15 * half);
+    tMax = Math.max(tMax, 0.15 * half);
+  }
+  const t: number[] = [];
+  const g: number[] = [];
+  for (let i = 0; i < samples; i++) {
+    const x = tMin + ((tMax - tMin) * i) / (samples - 1);
+    t.push(x);
+    // vertex form: a (t − t_v)² − Δ/4a, accurate where the expanded form would cancel
+    g.push(a * (x - tv) * (x - tv) - res.discriminant / (4 * a));
+  }
+  return { t, g, tMin, tMax };
+}
+
+// ---------------------------------------------------------------------------------------------
+// 2D cross-section through the ray and the centre.
+
+export interface Frame2D {
+  /** Anchor (the centre at the time the frame was made) and orthonormal in-plane axes. */
+  p: V3;
+  e1: V3;
+  e2: V3;
+}
+
+const dot = (x: readonly number[], y: readonly number[]) => x[0]! * y[0]! + x[1]! * y[1]! + x[2]! * y[2]!;
+const sub = (x: readonly number[], y: readonly number[]): V3 => [x[0]! - y[0]!, x[1]! - y[1]!, x[2]! - y[2]!];
+const scale = (x: readonly number[], s: number): V3 => [x[0]! * s, x[1]! * s, x[2]! * s];
+const norm = (x: readonly number[]) => Math.hypot(x[0]!, x[1]!, x[2]!);
+const cross = (x: readonly number[], y: readonly number[]): V3 => [x[1]! * y[2]! - x[2]! * y[1]!, x[2]! * y[0]! - x[0]! * y[2]!, x[0]! * y[1]! - x[1]! * y[0]!];
+
+/**
+ * The canonical frame: e1 along d, e2 from the centre towards the ray's line (the ray then runs
+ * horizontally above the centre), anchored at the centre. If the centre is on the line, e2 is the
+ * in-plane direction closest to world z (or y).
+ */
+export function canonicalFrame(o: Vec3, d: Vec3, c: Vec3): Frame2D {
+  const e1 = scale(d, 1 / norm(d));
+  const f = sub(o, c);
+  const l = sub(f, scale(e1, dot(f, e1)));
+  const ln = norm(l);
+  let e2: V3;
+  if (ln > 1e-12 * (norm(f) + 1e-300)) e2 = scale(l, 1 / ln);
+  else {
+    const up: V3 = Math.abs(e1[2]) < 0.9 ? [0, 0, 1] : [0, 1, 0];
+    const w = sub(up, scale(e1, dot(up, e1)));
+    e2 = scale(w, 1 / norm(w));
+  }
+  return { p: [c[0], c[1], c[2]], e1, e2 };
+}
+
+/** Is the ray's line and the centre (still) in the frame's plane, to a tolerance `tol` in length? */
+export function frameFits(fr: Frame2D, o: Vec3, d: Vec3, c: Vec3, tol: number): boolean {
+  const n = cross(fr.e1, fr.e2);
+  const dn = Math.abs(dot(d, n)) / norm(d);
+  return Math.abs(dot(sub(o, fr.p), n)) <= tol && Math.abs(dot(sub(c, fr.p), n)) <= tol && dn <= 1e-9;
+}
+
+/** World → frame coordinates (x along e1, y along e2). */
+export function toFrame(fr: Frame2D, q: Vec3): [number, number] {
+  const v = sub(q, fr.p);
+  return [dot(v, fr.e1), dot(v, fr.e2)];
+}
+
+/** Frame → world coordinates. */
+export function fromFrame(fr: Frame2D, x: number, y: number): V3 {
+  return [fr.p[0] + x * fr.e1[0] + y * fr.e2[0], fr.p[1] + x * fr.e1[1] + y * fr.e2[1], fr.p[2] + x * fr.e1[2] + y * fr.e2[2]];
+}
+
+/** In-plane direction → world direction. */
+export function dirFromFrame(fr: Frame2D, x: number, y: number): V3 {
+  return [x * fr.e1[0] + y * fr.e2[0], x * fr.e1[1] + y * fr.e2[1], x * fr.e1[2] + y * fr.e2[2]];
+}
+
+/** Round to a step chosen from the view size (keeps dragged values and URLs tidy). */
+export function tidy(x: number, step: number): number {
+  const y = Math.round(x / step) * step;
+  const digits = Math.max(0, Math.min(15, -Math.floor(Math.log10(step))));
+  return Number(y.toFixed(digits));
+}
+
+// ---------------------------------------------------------------------------------------------
+// The rendered image of a distant sphere, one ray per pixel, both methods.
+
+export interface DistantImage {
+  width: number;
+  height: number;
+  /** t-hit per pixel for each method (NO_HIT = ∞ for none). */
+  naive: Float64Array;
+  stable: Float64Array;
+  /** Pixel counts: hits by each method, and pixels where the two disagree. */
+  naiveHits: number;
+  stableHits: number;
+  disagree: number;
+  /** Milliseconds spent filling rays and running both batched kernels. */
+  ms: number;
+}
+
+/** The camera and sphere of the distant-sphere image: the sphere's centre is `dist` radii away. */
+export function distantSetup(dist: number): { eye: V3; centre: V3; r: number; forward: V3; right: V3; up: V3; halfWidth: number } {
+  const eye: V3 = [0.1, -0.2, 0.05];
+  const dir = [1, 0.3, 0.2];
+  const n = Math.hypot(dir[0]!, dir[1]!, dir[2]!);
+  const forward: V3 = [dir[0]! / n, dir[1]! / n, dir[2]! / n];
+  const centre: V3 = [eye[0] + dist * forward[0], eye[1] + dist * forward[1], eye[2] + dist * forward[2]];
+  const rightRaw = cross(forward, [0, 0, 1]);
+  const right = scale(rightRaw, 1 / norm(rightRaw));
+  const up = cross(right, forward);
+  // frame the sphere: it fills ~70% of the width
+  const halfWidth = 1.45 / Math.sqrt(dist * dist - 1);
+  return { eye, centre, r: 1, forward, right, up, halfWidth };
+}
+
+/** Scratch buffers reused between renders (caller-owned in spirit: one image size at a time). */
+let scratchRays: Float64Array | null = null;
+
+/**
+ * Render the distant sphere with both methods into fresh t buffers. `now` is a clock (injected so
+ * the model stays pure of the DOM; pass performance.now in the view).
+ */
+export function renderDistant(dist: number, width: number, height: number, now: () => number = () => 0): DistantImage {
+  const n = width * height;
+  if (!scratchRays || scratchRays.length < n * RAY_STRIDE) scratchRays = new Float64Array(n * RAY_STRIDE);
+  const s = distantSetup(dist);
+  const naive = new Float64Array(n);
+  const stable = new Float64Array(n);
+  const t0 = now();
+  fillPinholeRays(scratchRays, width, height, s.eye, s.forward, s.right, s.up, s.halfWidth);
+  const naiveHits = intersectRaySphereBatch(scratchRays, n, s.centre[0], s.centre[1], s.centre[2], s.r, 'naive', naive);
+  const stableHits = intersectRaySphereBatch(scratchRays, n, s.centre[0], s.centre[1], s.centre[2], s.r, 'stable', stable);
+  const ms = now() - t0;
+  let disagree = 0;
+  for (let i = 0; i < n; i++) if ((naive[i] === NO_HIT) !== (stable[i] === NO_HIT)) disagree++;
+  return { width, height, naive, stable, naiveHits, stableHits, disagree, ms };
+}
+
+/**
+ * Shade a t buffer into RGBA pixels (caller-owned `out`, length 4·n): hits get a Lambert-ish shade
+ * from the depth offset relative to the nearest hit (front of the sphere brighter), misses the
+ * background; `hole` pixels (hit by `other` but not by this method) are marked in `holeRGB`.
+ */
+export function shadeImage(t: Float64Array, other: Float64Array | null, r: number, out: Uint8ClampedArray, bg: V3, fg: V3, holeRGB: V3): void {
+  let tMin = Infinity;
+  for (let i = 0; i < t.length; i++) if (t[i]! < tMin) tMin = t[i]!;
+  for (let i = 0, j = 0; i < t.length; i++, j += 4) {
+    const ti = t[i]!;
+    let col: V3;
+    if (ti === NO_HIT) col = other && other[i] !== NO_HIT ? holeRGB : bg;
+    else {
+      // depth δ behind the nearest point: cos θ = 1 − δ/r between the normal and the view ray
+      const cosTheta = Math.min(1, Math.max(0, 1 - (ti - tMin) / r));
+      const shade = 0.3 + 0.7 * cosTheta;
+      col = [fg[0] * shade, fg[1] * shade, fg[2] * shade];
+    }
+    out[j] = col[0];
+    out[j + 1] = col[1];
+    out[j + 2] = col[2];
+    out[j + 3] = 255;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Error against distance.
+
+export interface ErrorSeries {
+  /** |o − c| / r for each point. */
+  dist: number[];
+  /** Median relative error of Δ (vs the double-double reference), per method. */
+  discNaive: number[];
+  discStable: number[];
+  /** Median relative error of t-hit (lost hits count as 1), per method. */
+  hitNaive: number[];
+  hitStable: number[];
+}
+
+/** Floor for plotting errors on a log axis (exact results plot at u = 2⁻⁵³ "or better"). */
+export const ERROR_FLOOR = 2 ** -53;
+
+function median(xs: number[]): number {
+  const s = [...xs].sort((x, y) => x - y);
+  const m = s.length >> 1;
+  return s.length % 2 ? s[m]! : 0.5 * (s[m - 1]! + s[m]!);
+}
+
+/**
+ * The error of each method against distance: for each distance D (in radii), 12 rays from a
+ * fixed eye aimed at points 0.1 … 0.9 r off the centre, errors against the double-double
+ * reference, medians. Deterministic (no randomness).
+ */
+export function errorVsDistance(exponents: number[] = range(0.5, 12, 0.25)): ErrorSeries {
+  const out: ErrorSeries = { dist: [], discNaive: [], discStable: [], hitNaive: [], hitStable: [] };
+  const offsets = [0.1, 0.3, 0.5, 0.7, 0.85, 0.95];
+  const angles = [0.3, 2.1];
+  for (const e of exponents) {
+    const D = 10 ** e;
+    const s = distantSetup(D);
+    const dn: number[] = [];
+    const ds: number[] = [];
+    const hn: number[] = [];
+    const hs: number[] = [];
+    for (const rho of offsets) {
+      for (const ang of angles) {
+        const aim: V3 = [
+          s.centre[0] + rho * (Math.cos(ang) * s.right[0] + Math.sin(ang) * s.up[0]),
+          s.centre[1] + rho * (Math.cos(ang) * s.right[1] + Math.sin(ang) * s.up[1]),
+          s.centre[2] + rho * (Math.cos(ang) * s.right[2] + Math.sin(ang) * s.up[2]),
+        ];
+        const d = sub(aim, s.eye);
+        const ref = raySphereReference(s.eye, d, s.centre, s.r);
+        if (!ref.ok) continue;
+        for (const method of ['naive', 'stable'] as const) {
+          const res = intersectRaySphere(s.eye, d, s.centre, s.r, method);
+          if (!res.ok) continue;
+          const eDisc = Math.min(1, relDisc(res.discriminant, ref.discriminant));
+          const eHit = Math.min(1, relativeError(res.tHit, ref.tHit) ?? 0);
+          (method === 'naive' ? dn : ds).push(eDisc);
+          (method === 'naive' ? hn : hs).push(eHit);
+        }
+      }
+    }
+    out.dist.push(D);
+    out.discNaive.push(Math.max(ERROR_FLOOR, median(dn)));
+    out.discStable.push(Math.max(ERROR_FLOOR, median(ds)));
+    out.hitNaive.push(Math.max(ERROR_FLOOR, median(hn)));
+    out.hitStable.push(Math.max(ERROR_FLOOR, median(hs)));
+  }
+  return out;
+}
+
+function range(a: number, b: number, step: number): number[] {
+  const xs: number[] = [];
+  for (let x = a; x <= b + 1e-9; x += step) xs.push(Math.round(x * 1000) / 1000);
+  return xs;
+}
