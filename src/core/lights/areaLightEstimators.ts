@@ -1,0 +1,204 @@
+/**
+ * Monte Carlo estimators of the radiance L_o leaving a Lambertian floor point p (normal +z,
+ * albedo ρ, BRDF f = ρ/π) lit by a one-sided rectangular emitter of radiance L, optionally
+ * shadowed by a rectangular occluder. Three strategies, each a batched kernel that writes one
+ * estimator term Yᵢ = f L V cos θ / p(ωᵢ) per sample into a caller-owned buffer:
+ *
+ * - 'area' (exam key Q6(c)): x uniform on the light, p_A = 1/|A|,
+ *   Yᵢ = |A| f L V cos θ cos θ_l / r²  (the rendering equation over area, Q6(b)).
+ * - 'solid-angle': ω uniform over the light's spherical rectangle (Ureña et al. 2013), p = 1/Ω,
+ *   Yᵢ = Ω f L V cos θ.
+ * - 'cosine': ω ~ cos θ/π over the hemisphere, Yᵢ = ρ L V if the ray hits the emitting side, else 0.
+ *
+ * All three are unbiased for the same integral, so their means agree with the analytic reference
+ * ({@link lambertianFloorRadiance}) within a few standard errors. Statistics by Welford's update
+ * (core/estimators `Welford`, mergeable).
+ * Source: pbrt-v4 sections 13.2–13.4 (direct lighting, light sampling vs BSDF sampling), the exam key.
+ */
+import { Rng } from '../random';
+import { sampleCosineHemisphere } from '../sampling/cosineHemisphere';
+import { Welford } from '../estimators/welford';
+import { ConvergenceSeries } from '../estimators/convergence';
+import { intersectRect, type RectLight } from './rectLight';
+import { makeSphericalRect, sampleSphericalRectangle, sphericalRectanglePdf, type SphericalRect } from './sphericalRectangle';
+
+/** The three sampling strategies. */
+export type LightStrategy = 'area' | 'solid-angle' | 'cosine';
+
+/** Everything an estimator needs: the light, an optional occluder, the shading point, L, ρ. */
+export interface AreaLightSetup {
+  light: RectLight;
+  occluder: RectLight | null;
+  px: number;
+  py: number;
+  pz: number;
+  /** Emitted radiance L ≥ 0. */
+  L: number;
+  /** Floor albedo ρ ∈ [0, 1]. */
+  rho: number;
+}
+
+/** Result of an estimate: the mean of the terms and its standard error s/√N. */
+export interface AreaLightEstimate {
+  estimate: number;
+  stderr: number;
+  n: number;
+  stats: Welford;
+}
+
+const INV_PI = 1 / Math.PI;
+/** A shadow ray hits the occluder only strictly before the light: t < 1 − this (t in units of x − p). */
+const SHADOW_EPS = 1e-9;
+
+/**
+ * Batched estimator kernel. Reads 2 uniforms per sample from u (u[2i], u[2i+1] ∈ [0, 1)), writes
+ * the term Yᵢ into terms[i] for i ∈ [0, n), and, if `points` is given, the sample into
+ * points[3i..3i+2]: the point on the light for 'area' and 'solid-angle', the unit direction for
+ * 'cosine'. Caller-owned buffers; no allocation per sample. `sph` may pass a prebuilt
+ * {@link SphericalRect} for p (else it is built once per call). Measure of every term: radiance.
+ */
+export function areaLightTerms(
+  setup: AreaLightSetup,
+  strategy: LightStrategy,
+  u: Float64Array,
+  n: number,
+  terms: Float64Array,
+  points?: Float64Array,
+  sph?: SphericalRect,
+): void {
+  const { light, occluder, px, py, pz, L, rho } = setup;
+  const nl = light.normal;
+  const f = rho * INV_PI;
+  const scratch = scratchBuf;
+  if (!(light.area > 0) || !(L > 0) || !(rho > 0)) {
+    for (let i = 0; i < n; i++) {
+      terms[i] = 0;
+      if (points) {
+        if (strategy === 'cosine') sampleCosineHemisphere(u[2 * i]!, u[2 * i + 1]!, points, 3 * i);
+        else {
+          points[3 * i] = light.center[0];
+          points[3 * i + 1] = light.center[1];
+          points[3 * i + 2] = light.center[2];
+        }
+      }
+    }
+    return;
+  }
+  if (strategy === 'cosine') {
+    for (let i = 0; i < n; i++) {
+      sampleCosineHemisphere(u[2 * i]!, u[2 * i + 1]!, scratch, 0);
+      const dx = scratch[0]!, dy = scratch[1]!, dz = scratch[2]!;
+      if (points) {
+        points[3 * i] = dx;
+        points[3 * i + 1] = dy;
+        points[3 * i + 2] = dz;
+      }
+      let y = 0;
+      // Front face only: the ray must travel against the emitting normal.
+      if (dz > 0 && dx * nl[0] + dy * nl[1] + dz * nl[2] < 0) {
+        const t = intersectRect(light, px, py, pz, dx, dy, dz, 0);
+        if (t < Infinity) {
+          y = rho * L;
+          if (occluder && intersectRect(occluder, px, py, pz, dx, dy, dz, 0) < t) y = 0;
+        }
+      }
+      terms[i] = y;
+    }
+    return;
+  }
+  const area = light.area;
+  const q = strategy === 'solid-angle' ? (sph ?? makeSphericalRect(light, px, py, pz)) : null;
+  const s = light.corner, ea = light.edgeX, eb = light.edgeY;
+  for (let i = 0; i < n; i++) {
+    const u1 = u[2 * i]!, u2 = u[2 * i + 1]!;
+    let x: number, yy: number, z: number;
+    if (q) {
+      sampleSphericalRectangle(q, u1, u2, scratch, 0);
+      x = scratch[0]!; yy = scratch[1]!; z = scratch[2]!;
+    } else {
+      x = s[0] + u1 * ea[0] + u2 * eb[0];
+      yy = s[1] + u1 * ea[1] + u2 * eb[1];
+      z = s[2] + u1 * ea[2] + u2 * eb[2];
+    }
+    if (points) {
+      points[3 * i] = x;
+      points[3 * i + 1] = yy;
+      points[3 * i + 2] = z;
+    }
+    const dx = x - px, dy = yy - py, dz = z - pz;
+    const r2 = dx * dx + dy * dy + dz * dz;
+    const r = Math.sqrt(r2);
+    let term = 0;
+    if (r > 0) {
+      const cosT = dz / r;
+      const cosL = -(dx * nl[0] + dy * nl[1] + dz * nl[2]) / r;
+      if (cosT > 0 && cosL > 0) {
+        let v = 1;
+        if (occluder && intersectRect(occluder, px, py, pz, dx, dy, dz, 0) < 1 - SHADOW_EPS) v = 0;
+        if (v) {
+          if (q) {
+            const pdf = sphericalRectanglePdf(q, x, yy, z);
+            term = pdf > 0 ? (f * L * cosT) / pdf : 0;
+          } else {
+            term = (area * f * L * cosT * cosL) / r2;
+          }
+        }
+      }
+    }
+    terms[i] = Number.isFinite(term) ? term : 0;
+  }
+}
+
+const scratchBuf = new Float64Array(3);
+const CHUNK = 4096;
+
+/**
+ * Estimate L_o with n samples of `strategy`, uniforms from `new Rng(seed, stream)`. Returns the
+ * mean, its standard error and the (mergeable) Welford accumulator. Deterministic for a given
+ * (setup, strategy, n, seed, stream). Domain: n ≥ 0 (n < 2 gives stderr NaN).
+ */
+export function estimateAreaLight(setup: AreaLightSetup, strategy: LightStrategy, n: number, seed: number, stream = 0): AreaLightEstimate {
+  const rng = new Rng(seed, stream);
+  const stats = new Welford();
+  const m = Math.min(CHUNK, Math.max(1, n));
+  const u = new Float64Array(2 * m);
+  const terms = new Float64Array(m);
+  const sph = strategy === 'solid-angle' ? makeSphericalRect(setup.light, setup.px, setup.py, setup.pz) : undefined;
+  for (let done = 0; done < n; ) {
+    const k = Math.min(m, n - done);
+    rng.fill(u, 0, 2 * k);
+    areaLightTerms(setup, strategy, u, k, terms, undefined, sph);
+    stats.addArray(terms, 0, k);
+    done += k;
+  }
+  return { estimate: stats.mean, stderr: stats.standardError(), n: stats.count, stats };
+}
+
+/**
+ * Convergence series of one strategy: estimate, |error| against `exact` and standard error at the
+ * given checkpoints (one pass, O(checkpoints) memory). Source: core/estimators ConvergenceSeries.
+ */
+export function areaLightConvergence(
+  setup: AreaLightSetup,
+  strategy: LightStrategy,
+  checkpoints: ArrayLike<number>,
+  exact: number,
+  seed: number,
+  stream = 0,
+): ConvergenceSeries {
+  const series = new ConvergenceSeries(checkpoints, exact);
+  const nMax = checkpoints.length ? checkpoints[checkpoints.length - 1]! : 0;
+  const rng = new Rng(seed, stream);
+  const m = Math.min(CHUNK, Math.max(1, nMax));
+  const u = new Float64Array(2 * m);
+  const terms = new Float64Array(m);
+  const sph = strategy === 'solid-angle' ? makeSphericalRect(setup.light, setup.px, setup.py, setup.pz) : undefined;
+  for (let done = 0; done < nMax; ) {
+    const k = Math.min(m, nMax - done);
+    rng.fill(u, 0, 2 * k);
+    areaLightTerms(setup, strategy, u, k, terms, undefined, sph);
+    series.push(terms, 0, k);
+    done += k;
+  }
+  return series;
+}

@@ -1,0 +1,56 @@
+/**
+ * Uniform sampling of a rectangle by area, the strategy of the exam key's Q6(c):
+ * x = s + ξ₁ w ex + ξ₂ h ey, with density p_A = 1/|A| per unit AREA. Converted to the solid-angle
+ * measure at a shading point p (the change of variables of Q6(a)):
+ * p_ω = p_A · r² / cos θ_l = r² / (|A| cos θ_l), r = |x − p|, cos θ_l = |n_l · (p − x)| / r.
+ * Source: pbrt-v4 section 6.5.4 (`Shape::Sample` by area, `PDF` converted with
+ * `DistanceSquared / AbsDot(n, -wi)`), and the exam key Q6(c).
+ */
+import type { RectLight } from './rectLight';
+
+/**
+ * Uniform point on the rectangle (area measure). Domain: u1, u2 ∈ [0, 1]. Writes (x, y, z) into
+ * out[o..o+2]. Pdf: {@link rectAreaPdf} (per unit area); inverse: {@link invertRectAreaSample}.
+ */
+export function sampleRectArea(light: RectLight, u1: number, u2: number, out: Float64Array | number[], o = 0): void {
+  const s = light.corner, a = light.edgeX, b = light.edgeY;
+  out[o] = s[0] + u1 * a[0] + u2 * b[0];
+  out[o + 1] = s[1] + u1 * a[1] + u2 * b[1];
+  out[o + 2] = s[2] + u1 * a[2] + u2 * b[2];
+}
+
+/**
+ * Density of {@link sampleRectArea} per unit AREA: 1/|A| on the rectangle, 0 for a degenerate
+ * rectangle. (Points off the rectangle have density 0; callers only evaluate it at samples.)
+ */
+export function rectAreaPdf(light: RectLight): number {
+  return light.area > 0 ? 1 / light.area : 0;
+}
+
+/**
+ * Inverse of {@link sampleRectArea}: the (u1, u2) ∈ [0, 1]² of a point on the rectangle (the
+ * point's local coordinates divided by w and h, clamped to [0, 1]). Degenerate sides give 0.
+ */
+export function invertRectAreaSample(light: RectLight, x: number, y: number, z: number): [number, number] {
+  const s = light.corner;
+  const dx = x - s[0], dy = y - s[1], dz = z - s[2];
+  const a = dx * light.ex[0] + dy * light.ex[1] + dz * light.ex[2];
+  const b = dx * light.ey[0] + dy * light.ey[1] + dz * light.ey[2];
+  const u1 = light.width > 0 ? a / light.width : 0;
+  const u2 = light.height > 0 ? b / light.height : 0;
+  return [Math.min(1, Math.max(0, u1)), Math.min(1, Math.max(0, u2))];
+}
+
+/**
+ * Convert an area density to a solid-angle density at the shading point p:
+ * p_ω = p_A r² / |cos θ_l| (the inverse Jacobian of Q6(a)). Domain: pA ≥ 0, r² ≥ 0, cosThetaL any.
+ * Returns 0 when cos θ_l = 0 (the light seen edge-on has no solid angle to spread the density over
+ * — the pbrt convention of returning 0 rather than Infinity) or for non-finite input.
+ * Source: pbrt-v4 section 4.2.3 eq. (4.9) and 6.5.4.
+ */
+export function areaToSolidAnglePdf(pA: number, r2: number, cosThetaL: number): number {
+  const c = Math.abs(cosThetaL);
+  if (!(c > 0) || !(pA >= 0) || !(r2 >= 0)) return 0;
+  const v = (pA * r2) / c;
+  return Number.isFinite(v) ? v : 0;
+}

@@ -1,0 +1,5 @@
+export * from './rectLight';
+export * from './areaSampling';
+export * from './sphericalRectangle';
+export * from './polygonIrradiance';
+export * from './areaLightEstimators';

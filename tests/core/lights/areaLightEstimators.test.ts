@@ -1,0 +1,138 @@
+import { describe, expect, it } from 'vitest';
+import { makeRectLight, type RectLight } from '../../../src/core/lights/rectLight';
+import { lambertianFloorRadiance } from '../../../src/core/lights/polygonIrradiance';
+import {
+  areaLightConvergence,
+  areaLightTerms,
+  estimateAreaLight,
+  type AreaLightSetup,
+  type LightStrategy,
+} from '../../../src/core/lights/areaLightEstimators';
+import { Welford } from '../../../src/core/estimators/welford';
+
+const STRATEGIES: LightStrategy[] = ['area', 'solid-angle', 'cosine'];
+
+function setup(light: RectLight, p: [number, number, number] = [0, 0, 0], occluder: RectLight | null = null): AreaLightSetup {
+  return { light, occluder, px: p[0], py: p[1], pz: p[2], L: 2, rho: 0.8 };
+}
+
+const placements: Array<[string, AreaLightSetup]> = [
+  ['overhead', setup(makeRectLight([0, 0, 2], 1, 1, 0))],
+  ['tilted', setup(makeRectLight([0.8, 0.3, 1.5], 1.5, 1, 40))],
+  ['partly below the horizon', setup(makeRectLight([0, 1, 0.2], 1, 1, -90))],
+  ['near', setup(makeRectLight([0, 0, 0.1], 1, 1, 0), [0.2, -0.1, 0])],
+  ['far', setup(makeRectLight([1, 0, 8], 1, 1, 0))],
+];
+
+describe('area-light estimators agree with the analytic reference', () => {
+  for (const [name, s] of placements) {
+    const ref = lambertianFloorRadiance(s.light, s.px, s.py, s.pz, s.L, s.rho);
+    for (const strategy of STRATEGIES) {
+      it(`${name}, ${strategy}: within 3σ of Lambert's formula`, () => {
+        const n = strategy === 'cosine' ? 400000 : 100000;
+        const r = estimateAreaLight(s, strategy, n, 1234, STRATEGIES.indexOf(strategy));
+        expect(ref).toBeGreaterThan(0);
+        expect(r.n).toBe(n);
+        expect(Number.isFinite(r.stderr)).toBe(true);
+        expect(Math.abs(r.estimate - ref)).toBeLessThan(3 * r.stderr + 1e-12 * ref);
+      });
+    }
+  }
+
+  it('solid-angle sampling of an overhead light has far less variance than cosine sampling of a far one', () => {
+    const s = placements[4]![1];
+    const sa = estimateAreaLight(s, 'solid-angle', 20000, 5);
+    const cos = estimateAreaLight(s, 'cosine', 20000, 5);
+    expect(sa.stderr * 10).toBeLessThan(cos.stderr);
+  });
+
+  it('tiny, distant lights (Ω from 1e-6 down to 1e-16): area and solid-angle estimates match to 1e-6', () => {
+    for (const d of [1e3, 1e5, 1e8]) {
+      const s = setup(makeRectLight([0.3 * d, 0, d], 1, 1, 20));
+      const ref = lambertianFloorRadiance(s.light, 0, 0, 0, s.L, s.rho);
+      expect(ref).toBeGreaterThan(0);
+      for (const strategy of ['area', 'solid-angle'] as const) {
+        const r = estimateAreaLight(s, strategy, 2000, 8);
+        // The integrand varies by O(size/d) over the light: the estimate is nearly exact, and the
+        // corners themselves are only representable to ~1e-16·d, hence the 1e-7 floor at d = 1e8.
+        expect(Math.abs(r.estimate - ref) / ref).toBeLessThan(d >= 1e5 ? 1e-6 : 1e-4);
+        expect(Math.abs(r.estimate - ref)).toBeLessThan(3 * r.stderr + 1e-7 * ref);
+      }
+    }
+  });
+
+  it('facing away: reference 0 and every estimator exactly 0', () => {
+    const s = setup(makeRectLight([0, 0, 2], 1, 1, 180));
+    expect(lambertianFloorRadiance(s.light, 0, 0, 0, s.L, s.rho)).toBe(0);
+    for (const strategy of STRATEGIES) {
+      const r = estimateAreaLight(s, strategy, 5000, 9);
+      expect(r.estimate).toBe(0);
+      expect(r.stderr).toBe(0);
+    }
+  });
+
+  it('zero-size light, L = 0, point on the light plane: all terms 0, finite', () => {
+    const cases = [
+      setup(makeRectLight([0, 0, 2], 0, 1, 0)),
+      { ...setup(makeRectLight([0, 0, 2], 1, 1, 0)), L: 0 },
+      setup(makeRectLight([0, 0, 0], 1, 1, 0)),
+    ];
+    for (const s of cases)
+      for (const strategy of STRATEGIES) {
+        const r = estimateAreaLight(s, strategy, 1000, 3);
+        expect(r.estimate).toBe(0);
+      }
+  });
+
+  it('stress ξ ∈ {0, 2⁻⁵³, ½, 1 − 2⁻⁵³}: finite terms and finite sample points', () => {
+    const xs = [0, 2 ** -53, 0.5, 1 - 2 ** -53];
+    const u = new Float64Array(32);
+    let k = 0;
+    for (const a of xs) for (const b of xs) { u[k++] = a; u[k++] = b; }
+    for (const [, s] of placements)
+      for (const strategy of STRATEGIES) {
+        const terms = new Float64Array(16);
+        const pts = new Float64Array(48);
+        areaLightTerms(s, strategy, u, 16, terms, pts);
+        for (const t of terms) expect(Number.isFinite(t) && t >= 0).toBe(true);
+        for (const t of pts) expect(Number.isFinite(t)).toBe(true);
+      }
+  });
+
+  it('an occluder between blocks light: estimators agree with each other and fall below the reference', () => {
+    const light = makeRectLight([0, 0, 2], 1, 1, 0);
+    const occ = makeRectLight([0, 0, 1], 0.4, 0.4, 0);
+    const s = setup(light, [0, 0, 0], occ);
+    const ref = lambertianFloorRadiance(light, 0, 0, 0, s.L, s.rho);
+    const rs = STRATEGIES.map((st, i) => estimateAreaLight(s, st, 200000, 77, i));
+    for (const r of rs) expect(r.estimate).toBeLessThan(ref - 5 * r.stderr);
+    // Pairwise agreement within 3σ of the difference.
+    for (let i = 0; i < 3; i++)
+      for (let j = i + 1; j < 3; j++) {
+        const a = rs[i]!, b = rs[j]!;
+        expect(Math.abs(a.estimate - b.estimate)).toBeLessThan(3 * Math.hypot(a.stderr, b.stderr));
+      }
+  });
+
+  it('Welford accumulators merge: two halves give the same mean as the whole', () => {
+    const s = placements[1]![1];
+    const a = estimateAreaLight(s, 'area', 3000, 42, 0).stats;
+    const b = estimateAreaLight(s, 'area', 5000, 42, 1).stats;
+    const m = new Welford();
+    m.merge(a);
+    m.merge(b);
+    expect(m.count).toBe(8000);
+    expect(m.mean).toBeCloseTo((a.mean * 3000 + b.mean * 5000) / 8000, 14);
+  });
+
+  it('convergence series: error shrinks roughly like N^-1/2 and the last point equals the estimate', () => {
+    const s = placements[0]![1];
+    const ref = lambertianFloorRadiance(s.light, 0, 0, 0, s.L, s.rho);
+    const cps = [100, 1000, 10000, 100000];
+    const series = areaLightConvergence(s, 'area', cps, ref, 99);
+    const direct = estimateAreaLight(s, 'area', 100000, 99);
+    expect(series.estimate[3]).toBeCloseTo(direct.estimate, 14);
+    expect(series.stderr[3]! / series.stderr[0]!).toBeGreaterThan(0.02);
+    expect(series.stderr[3]! / series.stderr[0]!).toBeLessThan(0.05); // √(1/1000) ≈ 0.032
+  });
+});
