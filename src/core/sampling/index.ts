@@ -7,3 +7,4 @@ export * from './stability';
 export * from './pdf1d';
 export * from './piecewise1D';
 export * from './piecewise2D';
+export * from './tabulatedHemisphere';
