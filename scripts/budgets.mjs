@@ -1,0 +1,75 @@
+#!/usr/bin/env node
+/**
+ * Bundle budgets for the production build (run after `npm run build`). Gzipped sizes:
+ *  - the entry (what `#/` downloads: index.html's module script and stylesheet, plus every chunk
+ *    the entry imports statically) ≤ 90 kB, and none of three.js, Plotly, mathjs, KaTeX in it;
+ *  - each heavy library and each scene chunk under its own ceiling.
+ * Exits 1 and says which budget broke.
+ */
+import { readFileSync, readdirSync, existsSync } from 'node:fs';
+import { gzipSync } from 'node:zlib';
+import { join } from 'node:path';
+
+const dist = process.argv[2] ?? 'dist';
+if (!existsSync(join(dist, 'index.html'))) {
+  console.error(`budgets: no ${dist}/index.html; run "npm run build" first`);
+  process.exit(1);
+}
+const kB = (n) => (n / 1000).toFixed(1);
+const gz = (file) => gzipSync(readFileSync(join(dist, file)), { level: 9 }).length;
+
+const html = readFileSync(join(dist, 'index.html'), 'utf8');
+const roots = [...html.matchAll(/<(?:script|link)[^>]+(?:src|href)="\.?\/?(assets\/[^"]+\.(?:js|css))"/g)].map((m) => m[1]);
+
+// Follow static imports (not dynamic import()) from the entry scripts.
+const entryFiles = new Set();
+const queue = [...roots];
+while (queue.length) {
+  const f = queue.shift();
+  if (entryFiles.has(f)) continue;
+  entryFiles.add(f);
+  if (!f.endsWith('.js')) continue;
+  const src = readFileSync(join(dist, f), 'utf8');
+  for (const m of src.matchAll(/(?:^|[;\n}])\s*import\s*(?:[\w*${}\s,]+from\s*)?["'](\.\/[^"']+\.js)["']/g)) {
+    queue.push(`assets/${m[1].slice(2)}`);
+  }
+  for (const m of src.matchAll(/\bfrom\s*["'](\.\/[^"']+\.js)["']/g)) queue.push(`assets/${m[1].slice(2)}`);
+}
+
+const failures = [];
+let entryTotal = 0;
+const rows = [];
+for (const f of entryFiles) {
+  const s = gz(f);
+  entryTotal += s;
+  rows.push(['entry', f, s]);
+  if (/vendor-(three|plotly|mathjs|katex)/.test(f)) failures.push(`the entry pulls in ${f}`);
+}
+const ENTRY_LIMIT = 90_000;
+if (entryTotal > ENTRY_LIMIT) failures.push(`entry is ${kB(entryTotal)} kB gzipped, over ${kB(ENTRY_LIMIT)} kB`);
+
+const LIMITS = [
+  [/^vendor-plotly-/, 520_000],
+  [/^vendor-three-/, 200_000],
+  [/^vendor-katex-/, 110_000],
+  [/^vendor-mathjs-/, 220_000],
+  [/^scene-/, 150_000],
+];
+for (const f of readdirSync(join(dist, 'assets'))) {
+  const rel = `assets/${f}`;
+  if (entryFiles.has(rel)) continue;
+  if (!/\.(js|css)$/.test(f)) continue;
+  const s = gz(rel);
+  const lim = LIMITS.find(([re]) => re.test(f));
+  rows.push([lim ? 'lazy (budget)' : 'lazy', rel, s, lim?.[1]]);
+  if (lim && s > lim[1]) failures.push(`${rel} is ${kB(s)} kB gzipped, over its ${kB(lim[1])} kB budget`);
+}
+
+rows.sort((a, b) => (a[0] === b[0] ? b[2] - a[2] : a[0] < b[0] ? -1 : 1));
+for (const [kind, f, s, lim] of rows) console.log(`${kind.padEnd(14)} ${kB(s).padStart(8)} kB  ${f}${lim ? `  (≤ ${kB(lim)} kB)` : ''}`);
+console.log(`entry total    ${kB(entryTotal).padStart(8)} kB  (≤ ${kB(ENTRY_LIMIT)} kB; no three.js, Plotly, mathjs or KaTeX)`);
+if (failures.length) {
+  console.error(`\nbudgets: FAILED\n  ${failures.join('\n  ')}`);
+  process.exit(1);
+}
+console.log('budgets: 1 passed, 0 failed');

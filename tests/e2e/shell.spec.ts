@@ -1,0 +1,139 @@
+/**
+ * Browser tests of the shell: home page, routes, the URL-parameter notice, embed and classroom
+ * modes, share links, accessibility, and what `#/` downloads. The app is served from a
+ * sub-folder (/app/) to prove the static build works from any folder.
+ */
+import AxeBuilder from '@axe-core/playwright';
+import { test, expect, openScene, readout } from './fixtures';
+
+const ROUTES = ['/hemisphere', '/monte-carlo', '/texture', '/ray-sphere', '/area-light'];
+
+test('home lists the six exam questions, each linking to its scene', async ({ page }) => {
+  await openScene(page, '#/');
+  await expect(page.getByRole('heading', { level: 1 })).toBeVisible();
+  const cards = page.locator('.question-card');
+  await expect(cards).toHaveCount(6);
+  for (let i = 1; i <= 6; i++) await expect(cards.nth(i - 1)).toContainText(`Q${i}`);
+  // every built scene's card links to its route; none is a dead link
+  const hrefs = await page.locator('.question-card h2 a').evaluateAll((as) => as.map((a) => a.getAttribute('href')));
+  for (const h of hrefs) expect(ROUTES.some((r) => h!.startsWith(`#${r}`)), h!).toBe(true);
+});
+
+test('#/ downloads no three.js, Plotly, mathjs, KaTeX or scene code', async ({ page }) => {
+  const requests: string[] = [];
+  page.on('request', (r) => requests.push(r.url()));
+  await openScene(page, '#/');
+  await page.waitForLoadState('networkidle');
+  const js = requests.filter((u) => u.endsWith('.js'));
+  expect(js.length).toBeGreaterThan(0);
+  for (const u of requests) {
+    expect(u, 'heavy library requested by #/').not.toMatch(/vendor-(three|plotly|mathjs|katex)/);
+    expect(u, 'scene chunk requested by #/').not.toMatch(/scene-/);
+  }
+});
+
+for (const route of ROUTES) {
+  test(`${route} loads with no console error and a working scene`, async ({ page }) => {
+    await openScene(page, `#${route}`);
+    await expect(page.locator('main#main h1')).toBeVisible();
+    await expect(page.locator('[role=alert]')).toHaveCount(0);
+    // a built scene shows readouts; the shell's share bar is there
+    await expect(page.locator('[data-testid][data-value]').first()).toBeAttached();
+    await expect(page.getByTestId('copy-link')).toBeVisible();
+  });
+
+  test(`${route} with garbage parameters shows the notice naming them and still works`, async ({ page }) => {
+    await openScene(page, `#${route}?n=NaN&seed=1e400&bogus=%F0%9F%98%80&theme=purple`);
+    const notice = page.getByTestId('param-notice');
+    await expect(notice).toBeVisible();
+    await expect(notice).toHaveAttribute('role', 'status');
+    await expect(notice).toContainText('bogus');
+    await expect(notice).toContainText('theme');
+    await expect(notice).toContainText('seed');
+    await expect(page.locator('[data-testid][data-value]').first()).toBeAttached();
+  });
+}
+
+test('an unknown route says so instead of showing a blank page', async ({ page }) => {
+  await openScene(page, '#/no-such-scene?x=1');
+  await expect(page.getByRole('heading', { name: 'Page not found' })).toBeVisible();
+  await expect(page.getByRole('link', { name: /list of scenes/ })).toBeVisible();
+});
+
+test('embed=1 hides the site chrome and links back to the full app', async ({ page }) => {
+  await openScene(page, '#/texture?embed=1');
+  await expect(page.locator('.site-header')).toHaveCount(0);
+  await expect(page.locator('.site-footer')).toHaveCount(0);
+  const back = page.getByRole('link', { name: /Open in Render Math Lab/ });
+  await expect(back).toBeVisible();
+  expect(await back.getAttribute('href')).not.toContain('embed=1');
+  await openScene(page, '#/texture');
+  await expect(page.locator('.site-header')).toBeVisible();
+});
+
+test('an embedded scene posts its height to the host page', async ({ page, baseURL }) => {
+  await page.setContent(
+    `<script>window.msgs = []; addEventListener('message', (e) => msgs.push(e.data));</script>
+     <iframe id="f" title="scene" src="${baseURL}#/texture?embed=1" style="width:800px;height:300px"></iframe>`,
+  );
+  await expect.poll(() => page.evaluate(() => (window as unknown as { msgs: { type: string; height: number }[] }).msgs.filter((m) => m && m.type === 'render-math-lab:height').length), { timeout: 20000 }).toBeGreaterThan(0);
+  const h = await page.evaluate(() => (window as unknown as { msgs: { type: string; height: number }[] }).msgs.filter((m) => m.type === 'render-math-lab:height').at(-1)!.height);
+  expect(h).toBeGreaterThan(300);
+});
+
+test('Copy link and Copy embed code produce URLs that restore the same state', async ({ page, context }) => {
+  await openScene(page, '#/texture?u=0.7&v=0.3&wrap=repeat');
+  const before = await readout(page, 'bilinear');
+  await page.getByTestId('copy-link').click();
+  const link = await page.getByTestId('share-text').inputValue();
+  expect(link).toMatch(/#\/texture\?/);
+  expect(link).toContain('u=0.7');
+  expect(await page.evaluate(() => navigator.clipboard.readText())).toBe(link);
+  const other = await context.newPage();
+  await other.goto(link);
+  await expect(other.getByTestId('bilinear')).toHaveAttribute('data-value', before);
+  await other.close();
+
+  await page.getByTestId('copy-embed').click();
+  const code = await page.getByTestId('share-text').inputValue();
+  const src = /src="([^"]+)"/.exec(code)![1]!.replace(/&amp;/g, '&');
+  expect(src).toContain('embed=1');
+  const embedded = await context.newPage();
+  await embedded.goto(src);
+  await expect(embedded.getByTestId('bilinear')).toHaveAttribute('data-value', before);
+  await expect(embedded.locator('.site-header')).toHaveCount(0);
+  await embedded.close();
+});
+
+test('present=1 enlarges type and offers keyboard shortcuts', async ({ page }) => {
+  await openScene(page, '#/?present=1');
+  await expect(page.locator('html')).toHaveClass(/present/);
+  const size = await page.evaluate(() => parseFloat(getComputedStyle(document.documentElement).fontSize));
+  expect(size).toBeGreaterThanOrEqual(20);
+  await page.keyboard.press('?');
+  const dialog = page.getByRole('dialog', { name: 'Keyboard shortcuts' });
+  await expect(dialog).toBeVisible();
+  await expect(dialog).toContainText('play / pause');
+  await dialog.getByRole('button', { name: 'Close' }).click();
+  await expect(dialog).toHaveCount(0);
+});
+
+test('theme=dark and theme=light override the system theme', async ({ page }) => {
+  await page.emulateMedia({ colorScheme: 'light' });
+  await openScene(page, '#/?theme=dark');
+  await expect(page.locator('html')).toHaveAttribute('data-theme', 'dark');
+  await page.emulateMedia({ colorScheme: 'dark' });
+  await openScene(page, '#/texture');
+  await expect(page.locator('html')).toHaveAttribute('data-theme', 'dark');
+  await page.goto('./#/texture?theme=light');
+  await expect(page.locator('html')).toHaveAttribute('data-theme', 'light');
+});
+
+test('axe finds no serious or critical violations on #/ (light and dark)', async ({ page }) => {
+  for (const theme of ['light', 'dark']) {
+    await openScene(page, `#/?theme=${theme}`);
+    const results = await new AxeBuilder({ page }).analyze();
+    const bad = results.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical');
+    expect(bad.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`), theme).toEqual([]);
+  }
+});
