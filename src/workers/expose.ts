@@ -14,8 +14,9 @@ export type Task = (args: never, progress: ProgressFn) => unknown;
 export const yieldToEventLoop = (): Promise<void> => new Promise((r) => setTimeout(r, 0));
 
 export function exposeTasks(tasks: Record<string, Task>): void {
-  const post = (msg: FromWorker, transfer: Transferable[] = []) => (self as unknown as Worker).postMessage(msg, transfer);
-  self.onmessage = async (e: MessageEvent<ToWorker>) => {
+  const scope = self as unknown as Worker;
+  const post = (msg: FromWorker, transfer: Transferable[] = []) => scope.postMessage(msg, transfer);
+  scope.onmessage = async (e: MessageEvent<ToWorker>) => {
     const { id, method, args } = e.data;
     const task = tasks[method];
     if (!task) {

@@ -1,0 +1,36 @@
+import { describe, expect, it } from 'vitest';
+import fc from 'fast-check';
+import { formatNumber, readoutValue } from '../../src/ui/Readout';
+
+describe('readoutValue (the contract’s data-value)', () => {
+  it('is String(x) for finite numbers and "none" otherwise', () => {
+    expect(readoutValue(17.8)).toBe('17.8');
+    expect(readoutValue(56 / 3)).toBe(String(56 / 3));
+    expect(readoutValue(NaN)).toBe('none');
+    expect(readoutValue(Infinity)).toBe('none');
+    expect(readoutValue(null)).toBe('none');
+    expect(readoutValue(undefined)).toBe('none');
+    expect(readoutValue('two-hits')).toBe('two-hits');
+  });
+  it('round-trips every finite double exactly (property)', () => {
+    fc.assert(fc.property(fc.double({ noNaN: true, noDefaultInfinity: true }), (x) => Object.is(Number(readoutValue(x)), x) || (x === 0 && Number(readoutValue(x)) === 0)));
+  });
+});
+
+describe('formatNumber (visible text)', () => {
+  it('rounds to the requested significant digits and trims zeros', () => {
+    expect(formatNumber(56 / 3, 6)).toBe('18.6667');
+    expect(formatNumber(17.8, 6)).toBe('17.8');
+    expect(formatNumber(2, 6)).toBe('2');
+    expect(formatNumber(0)).toBe('0');
+    expect(formatNumber(-0.000123456, 3)).toBe('-0.000123');
+  });
+  it('uses ×10ⁿ for very small and very large magnitudes', () => {
+    expect(formatNumber(1.5e-12, 3)).toBe('1.5×10⁻¹²');
+    expect(formatNumber(6.02e23, 3)).toBe('6.02×10²³');
+  });
+  it('never shows a non-finite number', () => {
+    expect(formatNumber(NaN)).toBe('—');
+    expect(formatNumber(-Infinity)).toBe('—');
+  });
+});
