@@ -147,3 +147,19 @@ export function patchSolidAngleApprox(dA: number, cosThetaL: number, r: number):
   if (!(r > 0) || !(dA >= 0) || !Number.isFinite(dA) || !Number.isFinite(cosThetaL)) return 0;
   return (dA * Math.abs(cosThetaL)) / (r * r);
 }
+
+/**
+ * Closed form for an axis-aligned rectangle [x₀, x₁] × [y₀, y₁] in a plane at distance d from the
+ * viewpoint (coordinates measured in that plane from the foot of the perpendicular), by
+ * inclusion–exclusion of the corner formula F(a, b) = atan(a b / (d √(a² + b² + d²))), the solid angle
+ * of [0, a] × [0, b]: Ω = F(x₁, y₁) − F(x₀, y₁) − F(x₁, y₀) + F(x₀, y₀). Domain: x₀ ≤ x₁, y₀ ≤ y₁,
+ * d ≠ 0 (sign ignored); d = 0 returns 0. Measure: steradians. Exact, but the four terms cancel
+ * for a small distant rectangle — use {@link parallelogramSolidAngle} there. Source: e.g.
+ * Mathar 2015, "Solid angle of a rectangular plate"; the corner formula is classical.
+ */
+export function alignedRectangleSolidAngle(x0: number, x1: number, y0: number, y1: number, d: number): number {
+  const ad = Math.abs(d);
+  if (!(ad > 0)) return 0;
+  const F = (a: number, b: number) => Math.atan((a * b) / (ad * Math.sqrt(a * a + b * b + ad * ad)));
+  return Math.abs(F(x1, y1) - F(x0, y1) - F(x1, y0) + F(x0, y0));
+}

@@ -96,3 +96,82 @@ export function rectProjectedSolidAngle(light: RectLight, px: number, py: number
 export function lambertianFloorRadiance(light: RectLight, px: number, py: number, pz: number, L: number, rho: number): number {
   return (rho / Math.PI) * L * rectProjectedSolidAngle(light, px, py, pz);
 }
+
+/**
+ * Sutherland–Hodgman clip of a 2D polygon (flat xy array) to the axis-aligned box
+ * [0, w] × [0, h]. Returns a new flat array (possibly empty). Source: Sutherland & Hodgman 1974.
+ */
+export function clipPolygonToBox(poly: readonly number[], w: number, h: number): number[] {
+  let cur = poly.slice();
+  // Each clip edge as (axis, bound, keepBelow).
+  const edges: Array<[0 | 1, number, boolean]> = [
+    [0, 0, false],
+    [0, w, true],
+    [1, 0, false],
+    [1, h, true],
+  ];
+  for (const [ax, bound, below] of edges) {
+    const inside = (x: number, y: number) => {
+      const v = ax === 0 ? x : y;
+      return below ? v <= bound : v >= bound;
+    };
+    const out: number[] = [];
+    const m = cur.length / 2;
+    for (let i = 0; i < m; i++) {
+      const j = (i + 1) % m;
+      const x1 = cur[2 * i]!, y1 = cur[2 * i + 1]!, x2 = cur[2 * j]!, y2 = cur[2 * j + 1]!;
+      const in1 = inside(x1, y1), in2 = inside(x2, y2);
+      if (in1) out.push(x1, y1);
+      if (in1 !== in2) {
+        const v1 = ax === 0 ? x1 : y1, v2 = ax === 0 ? x2 : y2;
+        const t = (bound - v1) / (v2 - v1);
+        if (ax === 0) out.push(bound, y1 + t * (y2 - y1));
+        else out.push(x1 + t * (x2 - x1), bound);
+      }
+    }
+    cur = out;
+    if (cur.length < 6) return [];
+  }
+  return cur;
+}
+
+/**
+ * ∫ max(0, cos θ) V dω over the rectangle light seen from p (normal +z) with a rectangular
+ * occluder: the occluder's shadow on the light's plane is its central projection from p (a convex
+ * quadrilateral); the visible part of the light is the light minus that quad clipped to the light,
+ * and by additivity ∫_visible = ∫_light − ∫_(light ∩ shadow), each by Lambert's formula.
+ * Domain: the occluder must lie wholly between p and the light's plane (every corner strictly in
+ * front of the plane as seen from p), or wholly beyond it (then it casts no shadow and the result
+ * is the unoccluded value); otherwise NaN (no closed form here). Measure: projected solid angle.
+ * Source: Lambert 1760 / Arvo 1995 (polygon irradiance), Sutherland–Hodgman clipping.
+ */
+export function rectProjectedSolidAngleOccluded(light: RectLight, occluder: RectLight, px: number, py: number, pz: number): number {
+  const base = rectProjectedSolidAngle(light, px, py, pz);
+  if (base === 0 || !(occluder.area > 0)) return base;
+  const n = light.normal;
+  const planeD = (light.center[0] - px) * n[0] + (light.center[1] - py) * n[1] + (light.center[2] - pz) * n[2];
+  let before = 0, beyond = 0;
+  const poly2: number[] = [];
+  for (const c of occluder.corners) {
+    const dx = c[0] - px, dy = c[1] - py, dz = c[2] - pz;
+    const dn = dx * n[0] + dy * n[1] + dz * n[2];
+    // t: where the ray p + t (c − p) meets the light's plane; t > 1 means c is in front of it.
+    const t = dn !== 0 ? planeD / dn : -Infinity;
+    if (t > 1) {
+      before++;
+      const hx = px + t * dx - light.corner[0], hy = py + t * dy - light.corner[1], hz = pz + t * dz - light.corner[2];
+      poly2.push(hx * light.ex[0] + hy * light.ex[1] + hz * light.ex[2], hx * light.ey[0] + hy * light.ey[1] + hz * light.ey[2]);
+    } else if (t > 0 && t <= 1) beyond++;
+    else return NaN;
+  }
+  if (beyond === 4) return base;
+  if (before !== 4) return NaN;
+  const clipped = clipPolygonToBox(poly2, light.width, light.height);
+  if (clipped.length < 6) return base;
+  const v: number[] = [];
+  for (let i = 0; i < clipped.length; i += 2) {
+    const a = clipped[i]!, b = clipped[i + 1]!;
+    for (let k = 0; k < 3; k++) v.push(light.corner[k]! + a * light.ex[k]! + b * light.ey[k]! - (k === 0 ? px : k === 1 ? py : pz));
+  }
+  return Math.max(0, base - polygonProjectedSolidAngle(v));
+}

@@ -141,3 +141,14 @@ describe('Q6(a): dω = dA cos θ_l / r² in the limit', () => {
     expect(patchSolidAngleApprox(1, Infinity, 1)).toBe(0);
   });
 });
+
+describe('aligned-rectangle closed form', () => {
+  it('agrees with Van Oosterom–Strackee for near, off-axis rectangles', async () => {
+    const { alignedRectangleSolidAngle } = await import('../../../src/core/geometry/solidAngle');
+    for (const [x0, x1, y0, y1, d] of [[-0.5, 0.5, -0.5, 0.5, 2], [0.3, 2, -1, 0.1, 0.4], [1, 3, 1, 2, -1]] as const) {
+      const ref = rectOmegaBig(x0, x1, y0, y1, d);
+      expect(Math.abs(alignedRectangleSolidAngle(x0, x1, y0, y1, d) - ref)).toBeLessThan(1e-14);
+    }
+    expect(alignedRectangleSolidAngle(0, 1, 0, 1, 0)).toBe(0);
+  });
+});

@@ -1,0 +1,88 @@
+/**
+ * URL parameters of #/area-light (see /shared/spec/contract.md): the shading point p on a floor
+ * (normal +z), a rectangular emitter (centre lc, size ls = w,h, tilt about its x axis, radiance L),
+ * the floor albedo rho, an optional occluder, the sampling strategy, n and seed. The Q6(a) patch
+ * (pu, pv, psize, ptilt) is an addition to the contract (it only grows).
+ */
+import type { ParamSchema, ParamValues } from '../../app/params';
+
+const BIG = 1e9;
+
+export const schema = {
+  p: { kind: 'vec3', default: [0, 0, 0], min: -BIG, max: BIG, label: 'shading point p' },
+  lc: { kind: 'vec3', default: [0, 0, 2], min: -BIG, max: BIG, label: 'light centre' },
+  ls: { kind: 'list', default: [1, 1], minItems: 2, maxItems: 2, min: 0, max: BIG, label: 'light size w,h' },
+  tilt: { kind: 'number', default: 0, min: -360, max: 360, label: 'light tilt (degrees)' },
+  L: { kind: 'number', default: 1, min: 0, max: 1e6, label: 'radiance L' },
+  rho: { kind: 'number', default: 0.8, min: 0, max: 1, label: 'albedo ρ' },
+  occluder: { kind: 'bool', default: false, label: 'occluder' },
+  strategy: {
+    kind: 'enum',
+    default: 'area',
+    values: ['area', 'solid-angle', 'cosine'],
+    aliases: { solid: 'solid-angle', solidangle: 'solid-angle', spherical: 'solid-angle', hemisphere: 'cosine', cos: 'cosine' },
+    label: 'strategy',
+  },
+  n: { kind: 'number', default: 1024, min: 1, max: 1000000, integer: true, label: 'samples n' },
+  seed: { kind: 'number', default: 1, min: 0, max: 4294967295, integer: true, label: 'seed' },
+  pu: { kind: 'number', default: 0.3, min: 0, max: 1, label: 'patch position u on the light' },
+  pv: { kind: 'number', default: 0.6, min: 0, max: 1, label: 'patch position v on the light' },
+  psize: { kind: 'number', default: 0.25, min: 1e-6, max: 2, label: 'patch side' },
+  ptilt: { kind: 'number', default: 0, min: -89, max: 89, label: 'patch tilt (degrees, relative to the light)' },
+} as const satisfies ParamSchema;
+
+export type AreaLightParams = ParamValues<typeof schema>;
+
+/** A named configuration; `params` is a patch applied to the URL. */
+export interface Preset {
+  id: string;
+  label: string;
+  /** One line: what the preset shows (who wins and why). */
+  what: string;
+  params: Partial<AreaLightParams>;
+}
+
+export const PRESETS: readonly Preset[] = [
+  {
+    id: 'overhead',
+    label: 'Overhead',
+    what: 'A 1 × 1 light 2 units above the point: all three strategies work; solid-angle sampling is nearly noise-free.',
+    params: { p: [0, 0, 0], lc: [0, 0, 2], ls: [1, 1], tilt: 0 },
+  },
+  {
+    id: 'near',
+    label: 'Near',
+    what: 'A big light just above the floor: r² varies wildly over it, so area sampling is noisy; cosine sampling is good.',
+    params: { p: [0, 0, 0], lc: [0, 0, 0.25], ls: [2, 2], tilt: 0 },
+  },
+  {
+    id: 'far',
+    label: 'Far',
+    what: 'A small, distant light: cosine sampling almost never hits it; area and solid-angle sampling are nearly exact.',
+    params: { p: [0, 0, 0], lc: [0, 0, 10], ls: [1, 1], tilt: 0 },
+  },
+  {
+    id: 'grazing',
+    label: 'Grazing',
+    what: 'A light low on the horizon: cos θ is tiny, and both light strategies spend samples where cos θ ≈ 0.',
+    params: { p: [0, 0, 0], lc: [0, 3, 0.6], ls: [2, 1], tilt: -80 },
+  },
+  {
+    id: 'tilted',
+    label: 'Tilted',
+    what: 'A light tilted 45° off to the side: cos θ_l varies over the light.',
+    params: { p: [0, 0, 0], lc: [0, 1, 1.5], ls: [1.5, 1], tilt: -45 },
+  },
+  {
+    id: 'horizon',
+    label: 'Partly below the horizon',
+    what: 'A vertical light whose lower part is below the floor: Lambert’s formula is clipped to z ≥ 0.',
+    params: { p: [0, 0, 0], lc: [0, 1, 0.2], ls: [1, 1], tilt: -90 },
+  },
+  {
+    id: 'away',
+    label: 'Facing away',
+    what: 'The light faces up: its back is black, so L_o = 0 exactly, and every estimator returns 0.',
+    params: { p: [0, 0, 0], lc: [0, 0, 2], ls: [1, 1], tilt: 180 },
+  },
+];
