@@ -1,0 +1,341 @@
+/**
+ * The hemisphere scene's model: pure functions of the parameters (and of compiled user
+ * expressions), calling the core. No DOM, React, three or Plotly here; the worker and the views
+ * both use these functions, so the numbers on screen are the ones the tests check.
+ */
+import {
+  EXAM_E2PI_M1,
+  TabulatedHemisphere,
+  cosineHemispherePdf,
+  examLobeK,
+  examLobePdf,
+  examPhiPdf,
+  examThetaPdf,
+  invertedJacobianPartialIntegral,
+  phongLobePdf,
+  phongThetaPdf,
+  sampleCosineHemisphere,
+  sampleCosineHemisphereBatch,
+  sampleExamLobe,
+  sampleExamLobeBatch,
+  samplePhongLobe,
+  samplePhongLobeBatch,
+  sampleUniformHemisphere,
+  sampleUniformHemisphereBatch,
+  sphericalPhi,
+  uniformHemispherePdf,
+} from '../../core/sampling';
+import { fillSequence2D, mix32, type SequenceKind } from '../../core/random';
+import { hemisphereChi2, adaptiveIntegrate2D, type HemisphereChi2Result } from '../../core/verify';
+import { estimateFromTerms, type McEstimate } from '../../core/estimators';
+import type { LobeId } from './params';
+
+const TWO_PI = 2 * Math.PI;
+const HALF_PI = Math.PI / 2;
+
+/** A sampling density on the hemisphere, as the scene uses it: sampler, pdf and marginals. */
+export interface Lobe {
+  id: LobeId;
+  /** Short name for legends. */
+  label: string;
+  /** Normalization constant of p(ω) as the derivation defines it (k of k·(shape)). */
+  k: number;
+  /** Batched sampler: (ξ₁, ξ₂) pairs in u → unit vectors in out, i ∈ [start, n). */
+  sampleBatch: (u: Float64Array, out: Float64Array, n: number, start?: number) => void;
+  /** One sample (for the warped grid). */
+  sample: (u1: number, u2: number, out: Float64Array | number[], o?: number) => void;
+  /** Density per steradian (0 outside the hemisphere). */
+  pdf: (x: number, y: number, z: number) => number;
+  /** Marginal density of θ (per unit θ). */
+  thetaPdf: (theta: number) => number;
+  /** Marginal density of φ (per unit φ). */
+  phiPdf: (phi: number) => number;
+  /** True when p(θ, φ) = p(θ) p(φ). */
+  separable: boolean;
+}
+
+/** The lobe of the given id. `exponent` is used by Phong; `custom` needs its tabulated density. */
+export function makeLobe(id: LobeId, exponent: number, custom?: TabulatedHemisphere | null): Lobe | null {
+  switch (id) {
+    case 'exam':
+      return {
+        id,
+        label: 'k cos θ e^φ',
+        k: examLobeK(),
+        sampleBatch: (u, out, n, start) => void sampleExamLobeBatch(u, out, n, start),
+        sample: (a, b, out, o) => void sampleExamLobe(a, b, out, o),
+        pdf: examLobePdf,
+        thetaPdf: examThetaPdf,
+        phiPdf: examPhiPdf,
+        separable: true,
+      };
+    case 'uniform':
+      return {
+        id,
+        label: 'uniform 1/(2π)',
+        k: 1 / TWO_PI,
+        sampleBatch: (u, out, n, start) => void sampleUniformHemisphereBatch(u, out, n, start),
+        sample: (a, b, out, o) => void sampleUniformHemisphere(a, b, out, o),
+        pdf: (_x, _y, z) => uniformHemispherePdf(z),
+        thetaPdf: (t) => phongThetaPdf(t, 0),
+        phiPdf: uniformPhiPdf,
+        separable: true,
+      };
+    case 'cosine':
+      return {
+        id,
+        label: 'cos θ / π',
+        k: 1 / Math.PI,
+        sampleBatch: (u, out, n, start) => void sampleCosineHemisphereBatch(u, out, n, start),
+        sample: (a, b, out, o) => void sampleCosineHemisphere(a, b, out, o),
+        pdf: (_x, _y, z) => cosineHemispherePdf(z),
+        thetaPdf: (t) => phongThetaPdf(t, 1),
+        phiPdf: uniformPhiPdf,
+        separable: true,
+      };
+    case 'phong':
+      return {
+        id,
+        label: `(n+1)/(2π) cos^${exponent} θ`,
+        k: (exponent + 1) / TWO_PI,
+        sampleBatch: (u, out, n, start) => void samplePhongLobeBatch(u, out, n, exponent, start),
+        sample: (a, b, out, o) => void samplePhongLobe(a, b, exponent, out, o),
+        pdf: (_x, _y, z) => phongLobePdf(z, exponent),
+        thetaPdf: (t) => phongThetaPdf(t, exponent),
+        phiPdf: uniformPhiPdf,
+        separable: true,
+      };
+    case 'custom':
+      if (!custom) return null;
+      return {
+        id,
+        label: 'typed p(θ, φ), tabulated',
+        k: custom.k,
+        sampleBatch: (u, out, n, start) => void custom.sampleBatch(u, out, n, start),
+        sample: (a, b, out, o) => void custom.sample(a, b, out, o),
+        pdf: (x, y, z) => custom.pdf(x, y, z),
+        thetaPdf: (t) => custom.thetaPdf(t),
+        phiPdf: (p) => custom.phiPdf(p),
+        separable: false,
+      };
+  }
+}
+
+function uniformPhiPdf(phi: number): number {
+  return phi >= 0 && phi < TWO_PI ? 1 / TWO_PI : 0;
+}
+
+/** Derive an independent seed for run r of many (hash; distinct runs give unrelated point sets). */
+export function runSeed(seed: number, r: number): number {
+  return mix32((seed >>> 0) ^ mix32(r + 0x5bd1e995));
+}
+
+/** The n points (ξ₁, ξ₂) of the chosen set, interleaved, into `out` (length ≥ 2n). */
+export function drawUniforms(kind: SequenceKind, seed: number, n: number, out = new Float64Array(2 * n)): Float64Array {
+  return fillSequence2D(kind, seed, n, out);
+}
+
+/** Directions of the lobe for the n points of the set: 3n numbers. */
+export function drawDirections(lobe: Lobe, kind: SequenceKind, seed: number, n: number): { u: Float64Array; dirs: Float64Array } {
+  const u = drawUniforms(kind, seed, n);
+  const dirs = new Float64Array(3 * n);
+  lobe.sampleBatch(u, dirs, n);
+  return { u, dirs };
+}
+
+/** θ ∈ [0, π] of a unit vector's z (clamped acos is fine for display binning). */
+function thetaOf(x: number, y: number, z: number): number {
+  return Math.atan2(Math.hypot(x, y), z);
+}
+
+/** A histogram normalized as a density (counts/(N·Δ)), with bin centres, beside the model density. */
+export interface DensityHistogram {
+  centers: Float64Array;
+  density: Float64Array;
+  /** Model density evaluated on a fine grid (for the curve). */
+  curveX: Float64Array;
+  curveY: Float64Array;
+  width: number;
+}
+
+/** Histograms of θ over [0, π/2] and of φ over [0, 2π) against the lobe's marginals. */
+export function marginalHistograms(lobe: Lobe, dirs: Float64Array, n: number, bins = 36): { theta: DensityHistogram; phi: DensityHistogram } {
+  const ct = new Float64Array(bins);
+  const cp = new Float64Array(bins);
+  const wt = HALF_PI / bins;
+  const wp = TWO_PI / bins;
+  for (let i = 0; i < n; i++) {
+    const x = dirs[3 * i]!;
+    const y = dirs[3 * i + 1]!;
+    const z = dirs[3 * i + 2]!;
+    const t = thetaOf(x, y, z);
+    const p = sphericalPhi(x, y);
+    if (t >= 0 && t <= HALF_PI) ct[Math.min(bins - 1, Math.floor(t / wt))]++;
+    if (p >= 0 && p < TWO_PI) cp[Math.min(bins - 1, Math.floor(p / wp))]++;
+  }
+  const make = (counts: Float64Array, w: number, lo: number, hi: number, f: (x: number) => number): DensityHistogram => {
+    const centers = new Float64Array(bins);
+    const density = new Float64Array(bins);
+    for (let b = 0; b < bins; b++) {
+      centers[b] = lo + (b + 0.5) * w;
+      density[b] = n > 0 ? counts[b]! / (n * w) : 0;
+    }
+    const m = 200;
+    const curveX = new Float64Array(m + 1);
+    const curveY = new Float64Array(m + 1);
+    for (let j = 0; j <= m; j++) {
+      const x = lo + ((hi - lo) * j) / m;
+      curveX[j] = x;
+      const xe = j === m ? hi * (1 - 1e-12) : x; // the half-open support of φ
+      curveY[j] = f(xe);
+    }
+    return { centers, density, curveX, curveY, width: w };
+  };
+  return { theta: make(ct, wt, 0, HALF_PI, lobe.thetaPdf), phi: make(cp, wp, 0, TWO_PI, lobe.phiPdf) };
+}
+
+/** χ² test of the drawn directions against the lobe's pdf (core/verify, as in the unit tests). */
+export function chi2OfDirections(lobe: Lobe, dirs: Float64Array, n: number): HemisphereChi2Result {
+  const custom = lobe.id === 'custom';
+  // bins of the typed lobe align with its 64 × 128 table (8 × 8 cells per bin), so the quadrature
+  // of a piecewise-constant pdf stays cheap and exact
+  return hemisphereChi2(dirs, n, lobe.pdf, custom ? { cosThetaBins: 8, phiBins: 16 } : { cosThetaBins: 10, phiBins: 20 });
+}
+
+/** An integrand of (θ, φ) (compiled user expression). */
+export type Integrand = (theta: number, phi: number) => number;
+
+/**
+ * ∫ f dω over the upper hemisphere = ∫₀^{2π} ∫₀^{π/2} f(θ, φ) sin θ dθ dφ, by adaptive
+ * Gauss–Legendre quadrature (core/verify). NaN when f is not finite somewhere it is evaluated.
+ */
+export function exactIntegral(f: Integrand): number {
+  const v = adaptiveIntegrate2D((t, p) => f(t, p) * Math.sin(t), 0, HALF_PI, 0, TWO_PI, { relTol: 1e-12, maxDepth: 6 });
+  return Number.isFinite(v) ? v : NaN;
+}
+
+/** The two Q2 estimators on the same point set: uniform (2π/N) Σ f and importance (1/N) Σ f/p. */
+export interface Q2Estimates {
+  uniform: McEstimate;
+  importance: McEstimate;
+}
+
+/**
+ * Q2 estimates from n points u (ξ pairs): the uniform estimator warps them with the uniform
+ * hemisphere map, the importance estimator with the lobe (its directions `dirs`).
+ * Terms: Yᵢ = 2π f(Xᵢ) and Yᵢ = f(Xᵢ)/p(Xᵢ) (0 when f = 0; invalid when p = 0 and f ≠ 0).
+ */
+export function q2Estimates(lobe: Lobe | null, f: Integrand, u: Float64Array, dirs: Float64Array | null, n: number, scratch?: { uni: Float64Array; terms: Float64Array }): Q2Estimates {
+  const uni = scratch?.uni ?? new Float64Array(3 * n);
+  const terms = scratch?.terms ?? new Float64Array(n);
+  sampleUniformHemisphereBatch(u, uni, n);
+  for (let i = 0; i < n; i++) {
+    const x = uni[3 * i]!;
+    const y = uni[3 * i + 1]!;
+    const z = uni[3 * i + 2]!;
+    terms[i] = TWO_PI * f(thetaOf(x, y, z), sphericalPhi(x, y));
+  }
+  const uniform = estimateFromTerms(terms, 0, n);
+  let importance: McEstimate = { n: 0, estimate: NaN, variance: NaN, stderr: NaN, invalid: 0 };
+  if (lobe && dirs) {
+    for (let i = 0; i < n; i++) {
+      const x = dirs[3 * i]!;
+      const y = dirs[3 * i + 1]!;
+      const z = dirs[3 * i + 2]!;
+      const fv = f(thetaOf(x, y, z), sphericalPhi(x, y));
+      const p = lobe.pdf(x, y, z);
+      terms[i] = fv === 0 ? 0 : p > 0 && Number.isFinite(p) && Number.isFinite(fv) ? fv / p : NaN;
+    }
+    importance = estimateFromTerms(terms, 0, n);
+  }
+  return { uniform, importance };
+}
+
+/**
+ * "Repeat many times": `runs` independent estimates with `perRun` samples each (point set of
+ * kind `kind`, seeds derived from `seed`), for the histogram of estimates (Q2(c): unbiasedness).
+ */
+export function repeatEstimates(
+  lobe: Lobe | null,
+  f: Integrand,
+  kind: SequenceKind,
+  seed: number,
+  runs: number,
+  perRun: number,
+  onProgress?: (fraction: number) => void,
+): { uniform: Float64Array; importance: Float64Array } {
+  const uniform = new Float64Array(runs);
+  const importance = new Float64Array(runs);
+  const u = new Float64Array(2 * perRun);
+  const dirs = new Float64Array(3 * perRun);
+  const scratch = { uni: new Float64Array(3 * perRun), terms: new Float64Array(perRun) };
+  for (let r = 0; r < runs; r++) {
+    fillSequence2D(kind, runSeed(seed, r), perRun, u);
+    if (lobe) lobe.sampleBatch(u, dirs, perRun);
+    const e = q2Estimates(lobe, f, u, lobe ? dirs : null, perRun, scratch);
+    uniform[r] = e.uniform.estimate;
+    importance[r] = e.importance.estimate;
+    if (onProgress && (r & 63) === 63) onProgress((r + 1) / runs);
+  }
+  return { uniform, importance };
+}
+
+/** Everything the scene shows about one draw of n samples (computed in the worker for big n). */
+export interface DrawStats {
+  n: number;
+  chi2: HemisphereChi2Result | null;
+  hist: { theta: DensityHistogram; phi: DensityHistogram } | null;
+  exact: number;
+  q2: Q2Estimates;
+}
+
+/** Draw n samples of the lobe from the point set and compute all statistics the scene shows. */
+export function computeDrawStats(lobe: Lobe | null, f: Integrand | null, kind: SequenceKind, seed: number, n: number): DrawStats {
+  const u = drawUniforms(kind, seed, n);
+  let dirs: Float64Array | null = null;
+  if (lobe) {
+    dirs = new Float64Array(3 * n);
+    lobe.sampleBatch(u, dirs, n);
+  }
+  const nan: McEstimate = { n: 0, estimate: NaN, variance: NaN, stderr: NaN, invalid: 0 };
+  return {
+    n,
+    chi2: lobe && dirs ? chi2OfDirections(lobe, dirs, n) : null,
+    hist: lobe && dirs ? marginalHistograms(lobe, dirs, n) : null,
+    exact: f ? exactIntegral(f) : NaN,
+    q2: f ? q2Estimates(lobe, f, u, dirs, n) : { uniform: nan, importance: nan },
+  };
+}
+
+/** The key's inverted-Jacobian variant: the partial θ-integral ∫_ε^{π/2} cot θ dθ for shrinking ε. */
+export function invertedJacobianSeries(points = 40): { eps: Float64Array; partial: Float64Array } {
+  const eps = new Float64Array(points);
+  const partial = new Float64Array(points);
+  for (let i = 0; i < points; i++) {
+    const e = 10 ** (-(i * 15) / (points - 1)); // 1 … 1e-15
+    eps[i] = e;
+    partial[i] = invertedJacobianPartialIntegral(e);
+  }
+  return { eps, partial };
+}
+
+/** Numbers the derivation panel shows for the exam lobe. */
+export interface ExamNumbers {
+  e2piMinus1: number;
+  k: number;
+  halfK: number;
+  /** Worked example: ξ = (ξ₁, ξ₂) ↦ θ, φ. */
+  example: { xi1: number; xi2: number; theta: number; phi: number; sinTheta: number; cosTheta: number };
+}
+
+/** Live numbers for the exam derivation, for a worked example ξ. */
+export function examNumbers(xi1 = 0.3, xi2 = 0.7): ExamNumbers {
+  const s = Math.sqrt(xi1);
+  const c = Math.sqrt(1 - xi1);
+  return {
+    e2piMinus1: EXAM_E2PI_M1,
+    k: examLobeK(),
+    halfK: examLobeK() / 2,
+    example: { xi1, xi2, theta: Math.atan2(s, c), phi: Math.log1p(EXAM_E2PI_M1 * xi2), sinTheta: s, cosTheta: c },
+  };
+}

@@ -1,0 +1,35 @@
+/**
+ * URL parameters of the hemisphere scene (contract: `../shared/spec/contract.md`, route `#/hemisphere`).
+ *
+ * Contract parameters: lobe, exponent, pdf, jacobian, f, n, seed.
+ * Added by this scene (the contract only grows): `points`, the point set fed to the warp.
+ */
+import type { ParamSchema, ParamValues } from '../../app/params';
+
+export const LOBES = ['exam', 'uniform', 'cosine', 'phong', 'custom'] as const;
+export type LobeId = (typeof LOBES)[number];
+
+export const POINT_SETS = ['independent', 'stratified', 'halton', 'sobol'] as const;
+
+/** Largest sample count: the 3D view animates up to this many points. */
+export const MAX_N = 1_000_000;
+
+export const schema = {
+  lobe: {
+    kind: 'enum',
+    default: 'exam',
+    values: LOBES,
+    aliases: { key: 'exam', q1: 'exam', cos: 'cosine', 'cosine-weighted': 'cosine', typed: 'custom', user: 'custom' },
+    label: 'sampling density',
+  },
+  exponent: { kind: 'number', default: 8, min: 0, max: 10000, label: 'Phong exponent n' },
+  pdf: { kind: 'string', default: 'cos(theta)^2 * (2 + cos(phi))', maxLength: 400, label: 'typed density p(θ, φ) per steradian' },
+  jacobian: { kind: 'enum', default: 'correct', values: ['correct', 'inverted'], aliases: { key: 'inverted', wrong: 'inverted', right: 'correct' } },
+  f: { kind: 'string', default: 'cos(theta)', maxLength: 400, label: 'integrand f(θ, φ)' },
+  n: { kind: 'number', default: 20000, min: 1, max: MAX_N, integer: true, label: 'sample count' },
+  seed: { kind: 'number', default: 1, min: 0, max: 4294967295, integer: true },
+  points: { kind: 'enum', default: 'independent', values: POINT_SETS, aliases: { random: 'independent', jittered: 'stratified' } },
+} as const satisfies ParamSchema;
+
+export type HemisphereSchema = typeof schema;
+export type HemisphereParams = ParamValues<HemisphereSchema>;
