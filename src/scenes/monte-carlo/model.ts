@@ -1,0 +1,347 @@
+/**
+ * Model of the Monte Carlo scene: pure functions of the parameters (and of the compiled integrand
+ * and pdf expressions), calling the core. Nothing here knows about React, Plotly or workers.
+ */
+import {
+  estimate1D,
+  importanceEstimate,
+  integrate1D,
+  uniformEstimate,
+  INTEGRATION_METHOD,
+  type McEstimate,
+} from '../../core/estimators';
+import {
+  customPdf1D,
+  linearPdf1D,
+  proportionalPdf1D,
+  squarePdf1D,
+  uniformPdf1D,
+  type Pdf1D,
+} from '../../core/sampling/pdf1d';
+import type { SequenceKind } from '../../core/random/sequences';
+import type { PdfKind, Strategy } from './params';
+
+/** The exam's four samples (Q4(b)). */
+export const EXAM_SAMPLES: readonly number[] = [1.16, 1.98, 0.54, 1.26];
+/** The exam's integrand and limits. */
+export const EXAM_F = '(x+2)^2';
+export const EXAM_A = 0;
+export const EXAM_B = 2;
+/**
+ * Figures as PRINTED in the answer key for Q4(b) (not used for any computation: only to say where
+ * the live computation differs from what the key prints).
+ */
+export const KEY_PRINTED = { f: [9.98, 18.84, 6.45, 10.26], estimate: 21.45 } as const;
+
+/** A real function of x (compiled user expression or closed form). */
+export type Fn1 = (x: number) => number;
+
+/** Default limits used when the URL's are unusable. */
+export function checkLimits(a: number, b: number): { a: number; b: number; message: string | null } {
+  if (Number.isFinite(a) && Number.isFinite(b) && a < b) return { a, b, message: null };
+  return { a: EXAM_A, b: EXAM_B, message: `The limits must satisfy a < b (got a = ${a}, b = ${b}); using [${EXAM_A}, ${EXAM_B}].` };
+}
+
+/**
+ * If the source is (x + c)^2 (spaces, ** and a leading + ignored), return c, else null: then p ∝ f
+ * has the closed form p = 3(x + c)²/((b + c)³ − (a + c)³) and the integral is exact.
+ */
+export function squareShift(src: string): number | null {
+  const s = src.replace(/\s+/g, '').replace(/\*\*/g, '^');
+  const m = /^\(x([+-])(\d+(?:\.\d*)?(?:e[+-]?\d+)?)\)\^2$/i.exec(s);
+  if (m) {
+    const c = Number(m[2]);
+    return Number.isFinite(c) ? (m[1] === '-' ? -c : c) : null;
+  }
+  if (s === 'x^2') return 0;
+  return null;
+}
+
+/** Reference value of ∫ₐᵇ f dx with the method that produced it. */
+export interface Exact {
+  value: number;
+  /** Method, named for the page. */
+  method: string;
+  /** Estimated absolute error of `value` (0 for closed forms). */
+  error: number;
+  /** Why there is no value (non-finite f, divergent integral). */
+  problem: string | null;
+}
+
+/**
+ * ∫ₐᵇ f dx: closed form ((b + c)³ − (a + c)³)/3 when f is (x + c)², else adaptive Gauss–Kronrod
+ * to full precision (core/estimators/integrate1d).
+ */
+export function exactIntegral(fSrc: string, f: Fn1, a: number, b: number): Exact {
+  const c = squareShift(fSrc);
+  if (c !== null) {
+    const A = a + c;
+    const B = b + c;
+    return { value: ((b - a) * (B * B + A * B + A * A)) / 3, method: 'closed form ((b + c)³ − (a + c)³)/3', error: 0, problem: null };
+  }
+  const r = integrate1D(f, a, b);
+  if (r.nonFiniteAt !== undefined) {
+    return { value: NaN, method: INTEGRATION_METHOD, error: Infinity, problem: `f is not finite at x = ${fmt(r.nonFiniteAt)}, so ∫ f dx has no value on [${fmt(a)}, ${fmt(b)}].` };
+  }
+  if (!r.converged) {
+    return {
+      value: NaN,
+      method: INTEGRATION_METHOD,
+      error: r.error,
+      problem: `∫ f dx over [${fmt(a)}, ${fmt(b)}] does not converge (the quadrature error does not shrink): the integral may diverge.`,
+    };
+  }
+  return { value: r.value, method: `${INTEGRATION_METHOD}, ${r.evaluations} evaluations, error ≤ ${r.error.toExponential(1)}`, error: r.error, problem: null };
+}
+
+/** A usable sampling density for the scene, or the reason it cannot be used. */
+export type PdfChoice =
+  | {
+      ok: true;
+      kind: PdfKind;
+      /** Sampler (for drawn samples): its pdf is the density the samples really have. */
+      sampler: Pdf1D;
+      /** The exact normalized density, used for given samples and the drawn curve. */
+      density: Fn1;
+      /** Human description, e.g. "p(x) = 3(x + 2)²/56 (closed form)". */
+      label: string;
+      /** A note (e.g. the tabulation, or a fallback). */
+      note: string | null;
+    }
+  | { ok: false; kind: PdfKind; message: string };
+
+const fmt = (x: number): string => (Number.isInteger(x) ? String(x) : Number(x.toPrecision(6)).toString());
+
+/**
+ * Build the chosen pdf on [a, b] for the integrand f:
+ * - uniform: 1/(b − a);
+ * - linear: the ramp through |f(a)| and |f(b)| (core `linearPdf1D`);
+ * - proportional: p ∝ f, in closed form when f is (x + c)², else tabulated p ∝ |f| (4096 bins);
+ * - custom: the typed pdf, validated and normalized (core `customPdf1D`).
+ */
+export function choosePdf(kind: PdfKind, fSrc: string, f: Fn1, a: number, b: number, custom: Fn1 | null): PdfChoice {
+  switch (kind) {
+    case 'uniform': {
+      const s = uniformPdf1D(a, b);
+      return { ok: true, kind, sampler: s, density: s.pdf, label: `p(x) = 1/(b − a) = ${fmt(1 / (b - a))}`, note: null };
+    }
+    case 'linear': {
+      const w0 = Math.abs(f(a));
+      const w1 = Math.abs(f(b));
+      if (!(Number.isFinite(w0) && Number.isFinite(w1) && w0 + w1 > 0)) {
+        return { ok: false, kind, message: `The linear pdf is the ramp through |f(a)| and |f(b)|, but these are ${fmt(w0)} and ${fmt(w1)}: no ramp to sample. Choose another pdf.` };
+      }
+      const s = linearPdf1D(a, b, w0, w1);
+      return { ok: true, kind, sampler: s, density: s.pdf, label: `p(x) ∝ ramp from |f(a)| = ${fmt(w0)} to |f(b)| = ${fmt(w1)}`, note: null };
+    }
+    case 'proportional': {
+      const c = squareShift(fSrc);
+      if (c !== null) {
+        const s = squarePdf1D(a, b, c);
+        const A = a + c;
+        const B = b + c;
+        const D = (b - a) * (B * B + A * B + A * A);
+        const cs = c === 0 ? 'x' : `x ${c > 0 ? '+' : '−'} ${fmt(Math.abs(c))}`;
+        return { ok: true, kind, sampler: s, density: s.pdf, label: `p(x) = 3(${cs})²/${fmt(D)} (closed form, inverted by a cube root)`, note: null };
+      }
+      const r = proportionalPdf1D(f, a, b);
+      if (!r.ok) return { ok: false, kind, message: `p ∝ |f| cannot be built: ${r.problem.message}` };
+      return {
+        ok: true,
+        kind,
+        sampler: r.pdf,
+        density: r.density,
+        label: `p(x) = |f(x)| / ${fmt(r.norm)}`,
+        note: 'Samples are drawn from a 4096-bin table of |f| (each bin holds the exact mass of |f| over it); the estimator divides by the tabulated density, which the samples really follow, so it stays unbiased.',
+      };
+    }
+    case 'custom': {
+      if (!custom) return { ok: false, kind, message: 'Type a pdf p(x) for the custom strategy.' };
+      const r = customPdf1D(custom, a, b, f);
+      if (!r.ok) return { ok: false, kind, message: `This pdf cannot be used: ${r.problem.message}` };
+      return {
+        ok: true,
+        kind,
+        sampler: r.pdf,
+        density: r.density,
+        label: `p(x) = your expression / ${fmt(r.norm)} (normalized numerically)`,
+        note: 'Samples are drawn from a 4096-bin table of your pdf (exact bin masses); the estimator divides by that tabulated density, so it stays unbiased.',
+      };
+    }
+  }
+}
+
+/** One row of the worked table. */
+export interface SampleRow {
+  x: number;
+  f: number;
+  p: number;
+  /** f/p (NaN when p = 0 and f ≠ 0). */
+  ratio: number;
+  /** Uniform term (b − a) f(x). */
+  uniformTerm: number;
+  /** Outside [a, b]? */
+  outside: boolean;
+}
+
+/** The worked Q4 table for given samples: rows and the three estimates. */
+export interface SampleTable {
+  rows: SampleRow[];
+  /** Estimator with the chosen pdf (importance; for the uniform pdf it is the uniform estimator). */
+  chosen: McEstimate | null;
+  /** Uniform estimator (b − a)/N Σ f(xᵢ). */
+  uniform: McEstimate;
+  /** Importance estimator with p ∝ |f| (exact density). */
+  proportional: McEstimate | null;
+  /** Problems with the given samples (outside [a, b], p = 0 where f ≠ 0). */
+  problems: string[];
+}
+
+/** Build the worked table for the samples xs (given, or the exam's four). */
+export function sampleTable(xs: readonly number[], f: Fn1, a: number, b: number, density: Fn1 | null, propDensity: Fn1 | null): SampleTable {
+  const problems: string[] = [];
+  const rows: SampleRow[] = xs.map((x) => {
+    const fx = f(x);
+    const outside = !(x >= a && x <= b);
+    const p = density ? density(x) : NaN;
+    return { x, f: fx, p, ratio: fx === 0 ? 0 : p > 0 ? fx / p : NaN, uniformTerm: (b - a) * fx, outside };
+  });
+  const outside = rows.filter((r) => r.outside).map((r) => fmt(r.x));
+  if (outside.length) {
+    problems.push(`Sample${outside.length > 1 ? 's' : ''} ${outside.join(', ')} lie${outside.length > 1 ? '' : 's'} outside [${fmt(a)}, ${fmt(b)}]: p = 0 there, so f/p is undefined and the estimate leaves ${outside.length > 1 ? 'them' : 'it'} out.`);
+  }
+  const fv = Float64Array.from(rows, (r) => (r.outside ? NaN : r.f));
+  const uniform = uniformEstimate(fv, a, b);
+  let chosen: McEstimate | null = null;
+  if (density) {
+    const pv = Float64Array.from(rows, (r) => r.p);
+    chosen = importanceEstimate(fv, pv);
+    const zero = rows.filter((r) => !r.outside && r.p === 0 && r.f !== 0).map((r) => fmt(r.x));
+    if (zero.length) problems.push(`p = 0 at x = ${zero.join(', ')} where f ≠ 0: such a sample could never be drawn from p.`);
+  }
+  let proportional: McEstimate | null = null;
+  if (propDensity) {
+    proportional = importanceEstimate(fv, Float64Array.from(rows, (r) => propDensity(r.x)));
+  }
+  return { rows, chosen, uniform, proportional, problems };
+}
+
+/** Round half away from zero to `d` decimals (how a student writes 9.9856 → 9.99). */
+export function roundTo(x: number, d: number): number {
+  const k = 10 ** d;
+  return Math.sign(x) * Math.round(Math.abs(x) * k) / k;
+}
+
+/** One comparison of a printed figure with the computed one. */
+export interface KeyNote {
+  what: string;
+  printed: number;
+  computed: number;
+  /** The computed value rounded the way the key prints (2 decimals). */
+  rounded: number;
+  agrees: boolean;
+}
+
+/**
+ * Compare the key's printed Q4(b) figures with the live computation (only when the scene shows the
+ * exam's own problem: f = (x + 2)², [0, 2], the exam's four samples in order). Returns [] otherwise.
+ */
+export function keyComparison(fSrc: string, a: number, b: number, xs: readonly number[], table: SampleTable): KeyNote[] {
+  const exam = squareShift(fSrc) === 2 && a === EXAM_A && b === EXAM_B && xs.length === EXAM_SAMPLES.length && xs.every((x, i) => x === EXAM_SAMPLES[i]);
+  if (!exam) return [];
+  const notes: KeyNote[] = table.rows.map((r, i) => {
+    const printed = KEY_PRINTED.f[i]!;
+    const rounded = roundTo(r.f, 2);
+    return { what: `f(${fmt(r.x)})`, printed, computed: r.f, rounded, agrees: rounded === printed };
+  });
+  const est = table.uniform.estimate;
+  notes.push({ what: '⟨I⟩ uniform', printed: KEY_PRINTED.estimate, computed: est, rounded: roundTo(est, 2), agrees: roundTo(est, 2) === KEY_PRINTED.estimate });
+  return notes;
+}
+
+/** Estimate with n drawn samples on the main thread (small n; larger n runs in the worker). */
+export function drawnEstimate(f: Fn1, sampler: Pdf1D, sequence: Strategy, seed: number, n: number): McEstimate {
+  return estimate1D({ f, pdf: sampler, sequence: sequence as SequenceKind, seed }, n);
+}
+
+/** Largest n estimated synchronously on the main thread. */
+export const SYNC_MAX_N = 100_000;
+
+/** Curves of f and of the pdf scaled to f's range, on a grid of m points over [a, b]. */
+export function curves(f: Fn1, density: Fn1 | null, a: number, b: number, m = 400): { x: Float64Array; f: Float64Array; p: Float64Array; scale: number } {
+  const x = new Float64Array(m);
+  const fy = new Float64Array(m);
+  const py = new Float64Array(m);
+  let fmax = 0;
+  let pmax = 0;
+  for (let i = 0; i < m; i++) {
+    const xi = a + ((b - a) * i) / (m - 1);
+    x[i] = xi;
+    const v = f(xi);
+    fy[i] = Number.isFinite(v) ? v : NaN;
+    if (Number.isFinite(v)) fmax = Math.max(fmax, Math.abs(v));
+    const p = density ? density(xi) : NaN;
+    py[i] = p;
+    if (Number.isFinite(p)) pmax = Math.max(pmax, p);
+  }
+  // scale the pdf to the height of f, rounded to a readable factor
+  const scale = pmax > 0 && fmax > 0 ? Number((fmax / pmax).toPrecision(3)) : 1;
+  for (let i = 0; i < m; i++) py[i] = py[i]! * scale;
+  return { x, f: fy, p: py, scale };
+}
+
+/** The strategies compared in the convergence plots: [pdf, sequence, label]. */
+export function comparedStrategies(selPdf: PdfKind, selSeq: Strategy, pdfOk: boolean): { pdf: PdfKind; seq: Strategy; label: string }[] {
+  const base: { pdf: PdfKind; seq: Strategy }[] = [
+    { pdf: 'uniform', seq: 'independent' },
+    { pdf: 'linear', seq: 'independent' },
+    { pdf: 'proportional', seq: 'independent' },
+    { pdf: 'uniform', seq: 'stratified' },
+    { pdf: 'uniform', seq: 'sobol' },
+  ];
+  if (pdfOk && !base.some((s) => s.pdf === selPdf && s.seq === selSeq)) base.push({ pdf: selPdf, seq: selSeq });
+  return base.map((s) => ({ ...s, label: strategyLabel(s.pdf, s.seq) }));
+}
+
+const PDF_LABEL: Record<PdfKind, string> = { uniform: 'uniform', linear: 'linear', proportional: 'p ∝ f', custom: 'custom p' };
+const SEQ_LABEL: Record<Strategy, string> = { independent: 'independent', stratified: 'stratified', halton: 'Halton', sobol: 'Sobol' };
+
+/** "uniform · Sobol" etc. */
+export function strategyLabel(pdf: PdfKind, seq: Strategy): string {
+  return `${PDF_LABEL[pdf]} · ${SEQ_LABEL[seq]}`;
+}
+
+/** Seed of independent run r of a base seed (distinct streams per run). */
+export function runSeed(seed: number, r: number): number {
+  return (seed + Math.imul(r + 1, 0x9e3779b9)) >>> 0;
+}
+
+/** Histogram of values into `bins` equal bins over [lo, hi]. */
+export function histogram(values: ArrayLike<number>, bins: number, lo?: number, hi?: number): { edges: Float64Array; counts: Float64Array } {
+  let mn = Infinity;
+  let mx = -Infinity;
+  for (let i = 0; i < values.length; i++) {
+    const v = values[i]!;
+    if (!Number.isFinite(v)) continue;
+    if (v < mn) mn = v;
+    if (v > mx) mx = v;
+  }
+  lo = lo ?? mn;
+  hi = hi ?? mx;
+  if (!(hi > lo)) {
+    const c = Number.isFinite(lo) ? lo : 0;
+    const w = Math.max(1e-12, Math.abs(c) * 1e-9);
+    lo = c - w;
+    hi = c + w;
+  }
+  const edges = new Float64Array(bins + 1);
+  for (let k = 0; k <= bins; k++) edges[k] = lo + ((hi - lo) * k) / bins;
+  const counts = new Float64Array(bins);
+  for (let i = 0; i < values.length; i++) {
+    const v = values[i]!;
+    if (!Number.isFinite(v)) continue;
+    const k = Math.min(bins - 1, Math.max(0, Math.floor(((v - lo) / (hi - lo)) * bins)));
+    counts[k]!++;
+  }
+  return { edges, counts };
+}

@@ -1,0 +1,41 @@
+/**
+ * URL parameters of the Monte Carlo scene (contract: `../shared/spec/contract.md`, route
+ * `#/monte-carlo`): f, a, b, pdf, pdfexpr, strategy, samples, n, seed.
+ * Added by this scene (the contract only grows): `hn` (samples per estimate in the unbiasedness
+ * histogram) and `runs` (independent runs behind the RMSE curves).
+ */
+import type { ParamSchema } from '../../app/params';
+
+export const PDF_KINDS = ['uniform', 'proportional', 'linear', 'custom'] as const;
+export type PdfKind = (typeof PDF_KINDS)[number];
+export const STRATEGIES = ['independent', 'stratified', 'halton', 'sobol'] as const;
+export type Strategy = (typeof STRATEGIES)[number];
+
+/** Largest sample count a run may ask for (worker, with progress and cancel). */
+export const MAX_N = 10_000_000;
+
+export const schema = {
+  f: { kind: 'string', default: '(x+2)^2', maxLength: 300, label: 'integrand f(x)' },
+  a: { kind: 'number', default: 0, min: -1000, max: 1000, label: 'lower limit a' },
+  b: { kind: 'number', default: 2, min: -1000, max: 1000, label: 'upper limit b' },
+  pdf: {
+    kind: 'enum',
+    default: 'uniform',
+    values: PDF_KINDS,
+    aliases: { importance: 'proportional', proportional_to_f: 'proportional', f: 'proportional', typed: 'custom', ramp: 'linear' },
+  },
+  pdfexpr: { kind: 'string', default: '1 + x', maxLength: 300, label: 'custom pdf p(x)' },
+  strategy: {
+    kind: 'enum',
+    default: 'independent',
+    values: STRATEGIES,
+    aliases: { random: 'independent', iid: 'independent', jittered: 'stratified', qmc: 'sobol' },
+  },
+  samples: { kind: 'list', default: null, maxItems: 32, min: -1e6, max: 1e6, label: 'given samples x' },
+  n: { kind: 'number', default: 10000, min: 1, max: MAX_N, integer: true, label: 'samples N' },
+  seed: { kind: 'number', default: 1, min: 0, max: 4294967295, integer: true },
+  hn: { kind: 'number', default: 16, min: 1, max: 100000, integer: true, label: 'samples per estimate (histogram)' },
+  runs: { kind: 'number', default: 32, min: 4, max: 1000, integer: true, label: 'independent runs (RMSE)' },
+} as const satisfies ParamSchema;
+
+export type McSchema = typeof schema;
