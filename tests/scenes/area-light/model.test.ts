@@ -1,0 +1,113 @@
+import { describe, expect, it } from 'vitest';
+import { defaultValues } from '../../../src/app/params';
+import { schema, PRESETS, type AreaLightParams } from '../../../src/scenes/area-light/params';
+import {
+  buildModel,
+  convergence,
+  drawSamples,
+  estimateAll,
+  floorJob,
+  floorPass,
+  imageRmse,
+  patchModel,
+  referenceImage,
+  targetValue,
+} from '../../../src/scenes/area-light/model';
+
+const base = (): AreaLightParams => defaultValues(schema);
+const withP = (patch: Partial<AreaLightParams>): AreaLightParams => ({ ...base(), ...patch });
+
+describe('area-light model', () => {
+  it('defaults: a positive reference, Ω equal to its closed form, no messages', () => {
+    const m = buildModel(base());
+    expect(m.reference).toBeGreaterThan(0);
+    expect(m.messages).toEqual([]);
+    expect(m.solidAngleClosed).not.toBeNull();
+    expect(Math.abs(m.solidAngle - m.solidAngleClosed!)).toBeLessThan(1e-14);
+    // 1×1 light at height 2, centred: Ω = 4 atan(1/(2·2·√(1+1+16))).
+    expect(m.solidAngle).toBeCloseTo(4 * Math.atan(1 / (4 * Math.sqrt(18))), 14);
+  });
+
+  for (const preset of PRESETS) {
+    it(`preset ${preset.id}: every strategy within 3σ of the reference (n = 20000)`, () => {
+      const m = buildModel(withP(preset.params));
+      const ests = estimateAll(m, 20000, 3);
+      for (const e of ests) {
+        expect(Number.isFinite(e.estimate)).toBe(true);
+        if (m.reference === 0) expect(e.estimate).toBe(0);
+        else expect(Math.abs(e.estimate - m.reference)).toBeLessThan(3 * e.stderr + 1e-12);
+      }
+    });
+  }
+
+  it('zero-size light: an error message and the 1 × 1 fallback', () => {
+    const m = buildModel(withP({ ls: [0, 1] }));
+    expect(m.messages.some((x) => x.kind === 'error' && /no area/.test(x.text))).toBe(true);
+    expect(m.w).toBe(1);
+    expect(m.reference).toBeGreaterThan(0);
+  });
+
+  it('shading point on the light: an error message, and the point moves off it', () => {
+    const m = buildModel(withP({ p: [0.1, 0.1, 2] }));
+    expect(m.messages.some((x) => x.kind === 'error' && /on the light/.test(x.text))).toBe(true);
+    expect(m.p).toEqual([0, 0, 0]);
+    expect(Number.isFinite(m.reference)).toBe(true);
+    const m2 = buildModel(withP({ p: [0, 0, 0], lc: [0, 0, 0] }));
+    expect(m2.lc).toEqual([0, 0, 2]);
+  });
+
+  it('non-finite values fall back to defaults with a message', () => {
+    const m = buildModel(withP({ p: [NaN, 0, 0] as [number, number, number], ls: [Infinity, 1] }));
+    expect(m.messages.filter((x) => x.kind === 'error').length).toBe(2);
+    expect(Number.isFinite(m.reference) && Number.isFinite(m.solidAngle)).toBe(true);
+  });
+
+  it('facing away and partly below the horizon are explained', () => {
+    expect(buildModel(withP({ tilt: 180 })).messages[0]!.text).toMatch(/faces away/);
+    const m = buildModel(withP({ lc: [0, 1, 0.2], tilt: -90 }));
+    expect(m.belowHorizon).toBeCloseTo(0.3, 2);
+    expect(m.messages[0]!.text).toMatch(/below the horizon/);
+  });
+
+  it('occluder: the estimators converge to the occluded analytic value', () => {
+    const m = buildModel(withP({ occluder: true }));
+    const t = targetValue(m);
+    expect(t).toBeLessThan(m.reference);
+    for (const e of estimateAll(m, 50000, 4)) expect(Math.abs(e.estimate - t)).toBeLessThan(3 * e.stderr);
+  });
+
+  it('drawn samples are the first samples of the estimate and lie on the light', () => {
+    const m = buildModel(withP({ tilt: 30 }));
+    const { points, terms } = drawSamples(m, 'solid-angle', 64, 1);
+    expect(points.length).toBe(192);
+    for (let i = 0; i < 64; i++) {
+      const d = [points[3 * i]! - m.lc[0], points[3 * i + 1]! - m.lc[1], points[3 * i + 2]! - m.lc[2]];
+      expect(Math.abs(d[0]! * m.light.normal[0] + d[1]! * m.light.normal[1] + d[2]! * m.light.normal[2])).toBeLessThan(1e-12);
+    }
+    const est = estimateAll(m, 64, 1).find((e) => e.strategy === 'solid-angle')!;
+    expect(terms.reduce((a, b) => a + b, 0) / 64).toBeCloseTo(est.estimate, 12);
+  });
+
+  it('Q6(a): the patch formula approaches the exact solid angle as the patch shrinks', () => {
+    const m = buildModel(withP({ tilt: 20 }));
+    const big = patchModel(m, 0.3, 0.6, 0.5, 15);
+    const small = patchModel(m, 0.3, 0.6, 0.005, 15);
+    expect(Math.abs(small.relError)).toBeLessThan(Math.abs(big.relError) / 1000);
+    expect(small.projected.every((q) => Math.abs(Math.hypot(q[0] - m.p[0], q[1] - m.p[1], q[2] - m.p[2]) - 1) < 1e-12)).toBe(true);
+    const rs = Array.from(small.series.relError).filter(Number.isFinite);
+    expect(rs[rs.length - 1]!).toBeLessThan(rs[0]!);
+  });
+
+  it('convergence series and a floor pass are finite, and the floor image approaches the reference', () => {
+    const m = buildModel(base());
+    const c = convergence(m, 4096, 1);
+    for (const s of c) expect(Number.isFinite(s.estimate[s.estimate.length - 1]!)).toBe(true);
+    const job = floorJob(m, 1, 16);
+    const ref = referenceImage(job);
+    const sum = new Float64Array(256);
+    floorPass(job, 'solid-angle', 64, 0, sum);
+    const rmse = imageRmse(sum, 64, ref);
+    const mean = ref.reduce((a, b) => a + b, 0) / ref.length;
+    expect(rmse).toBeLessThan(0.05 * mean);
+  });
+});
