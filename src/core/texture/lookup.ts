@@ -74,7 +74,11 @@ export interface NearestStencil {
   /** The query as used: after the v-flip and (corner) addressing. */
   u: number;
   v: number;
-  /** The chosen node's coordinates in the query's frame (before index addressing). */
+  /**
+   * The chosen node's coordinates in the query's frame: for texel centres under repeat / mirror,
+   * the periodic copy the query falls in (so u = 1 under repeat gives (N + ½)/N, a copy of texel 0);
+   * under clamp and for corner nodes, the node itself.
+   */
   nodeU: number;
   nodeV: number;
 }
@@ -85,7 +89,9 @@ function nearestIndex(p: AxisPos, t: number, n: number, align: Align, wrap: Wrap
     return { k, raw: k };
   }
   const raw = Math.floor(t * n);
-  return { k: addressIndex(raw, n, wrap), raw };
+  const k = addressIndex(raw, n, wrap);
+  // clamp has no periodic copies: report the edge texel itself (u = 1 gives ⌊N⌋ = N → N − 1)
+  return { k, raw: wrap === 'clamp' ? k : raw };
 }
 
 /**

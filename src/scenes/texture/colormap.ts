@@ -1,0 +1,53 @@
+/**
+ * A perceptually ordered colour scale for texel values (pure: no DOM). Stops sampled from
+ * matplotlib's "viridis" (van der Walt & Smith, 2015), linearly interpolated in sRGB; readable for
+ * the common colour-vision deficiencies and in greyscale.
+ */
+const STOPS: readonly (readonly [number, number, number])[] = [
+  [68, 1, 84],
+  [72, 40, 120],
+  [62, 74, 137],
+  [49, 104, 142],
+  [38, 130, 142],
+  [31, 158, 137],
+  [53, 183, 121],
+  [109, 205, 89],
+  [180, 222, 44],
+  [253, 231, 37],
+];
+
+/** RGB (0–255) of t ∈ [0, 1] (clamped; NaN → 0). Writes into out (length ≥ offset + 3). */
+export function colorInto(t: number, out: Uint8ClampedArray | Uint8Array | number[], offset = 0): void {
+  const x = Number.isFinite(t) ? Math.min(Math.max(t, 0), 1) : 0;
+  const s = x * (STOPS.length - 1);
+  const k = Math.min(Math.floor(s), STOPS.length - 2);
+  const f = s - k;
+  const a = STOPS[k];
+  const b = STOPS[k + 1];
+  out[offset] = Math.round(a[0] + (b[0] - a[0]) * f);
+  out[offset + 1] = Math.round(a[1] + (b[1] - a[1]) * f);
+  out[offset + 2] = Math.round(a[2] + (b[2] - a[2]) * f);
+}
+
+/** CSS colour of t ∈ [0, 1]. */
+export function colorCss(t: number): string {
+  const c = [0, 0, 0];
+  colorInto(t, c);
+  return `rgb(${c[0]},${c[1]},${c[2]})`;
+}
+
+/** True when dark text reads better than light text on the colour of t (relative luminance > 0.4). */
+export function darkTextOn(t: number): boolean {
+  const c = [0, 0, 0];
+  colorInto(t, c);
+  const lin = c.map((v) => {
+    const s = v / 255;
+    return s <= 0.04045 ? s / 12.92 : ((s + 0.055) / 1.055) ** 2.4;
+  });
+  return 0.2126 * lin[0] + 0.7152 * lin[1] + 0.0722 * lin[2] > 0.25;
+}
+
+/** Map value x to [0, 1] on the range [min, max] (a flat grid maps to ½). */
+export function normalizeValue(x: number, min: number, max: number): number {
+  return max > min ? (x - min) / (max - min) : 0.5;
+}

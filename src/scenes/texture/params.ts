@@ -1,0 +1,34 @@
+/**
+ * URL parameters of the texture scene (contract: `../shared/spec/contract.md`, route `#/texture`).
+ *
+ * Contract parameters: u, v, grid, align, vflip, wrap, x, y, z, normalize.
+ * Added by this scene (the contract only grows): `preset` (where the grid comes from), `size`
+ * and `seed` (for the generated presets). They exist because a 64 × 64 grid cannot be written in
+ * the `grid` parameter: the shell caps any parameter at 4000 characters.
+ */
+import type { ParamSchema } from '../../app/params';
+import { EXAM_GRID_TEXT } from '../../core/texture';
+
+/** Longest `grid` text the shell will accept in a URL (its MAX_RAW_LENGTH). */
+export const GRID_TEXT_MAX = 4000;
+
+export const PRESETS = ['grid', 'checker', 'gradient', 'random'] as const;
+export type Preset = (typeof PRESETS)[number];
+
+export const schema = {
+  u: { kind: 'number', default: 0.4, min: -4, max: 4, label: 'u' },
+  v: { kind: 'number', default: 0.24, min: -4, max: 4, label: 'v' },
+  grid: { kind: 'string', default: EXAM_GRID_TEXT, maxLength: GRID_TEXT_MAX, label: 'texel grid, rows top to bottom' },
+  align: { kind: 'enum', default: 'corner', values: ['corner', 'center'], aliases: { centre: 'center', centers: 'center', corners: 'corner' } },
+  vflip: { kind: 'bool', default: false },
+  wrap: { kind: 'enum', default: 'clamp', values: ['clamp', 'repeat', 'mirror'], aliases: { wrap: 'repeat', mirrored: 'mirror', 'clamp-to-edge': 'clamp' } },
+  x: { kind: 'number', default: 1, min: -1000, max: 1000 },
+  y: { kind: 'number', default: 1, min: -1000, max: 1000 },
+  z: { kind: 'number', default: Math.SQRT2, min: -1000, max: 1000 },
+  normalize: { kind: 'bool', default: true },
+  preset: { kind: 'enum', default: 'grid', values: PRESETS, aliases: { exam: 'grid', custom: 'grid', checkerboard: 'checker' } },
+  size: { kind: 'number', default: 8, min: 2, max: 64, integer: true },
+  seed: { kind: 'number', default: 1, min: 0, max: 4294967295, integer: true },
+} as const satisfies ParamSchema;
+
+export type TextureSchema = typeof schema;

@@ -1,0 +1,68 @@
+/**
+ * The whole texture reconstructed with nearest and with bilinear filtering, side by side and
+ * magnified, with the query marker. Canvases redraw only when the grid or the conventions change.
+ */
+import { memo, useEffect, useRef } from 'react';
+import type { Filter, LookupOptions, TextureGrid } from '../../../core/texture';
+import { textureImage } from '../model';
+
+const RES = 256;
+
+const FilterCanvas = memo(function FilterCanvas({
+  grid,
+  opts,
+  range,
+  filter,
+}: {
+  grid: TextureGrid;
+  opts: LookupOptions;
+  range: { min: number; max: number };
+  filter: Filter;
+}) {
+  const ref = useRef<HTMLCanvasElement>(null);
+  useEffect(() => {
+    const c = ref.current;
+    const g = c?.getContext('2d');
+    if (!c || !g) return;
+    c.width = RES;
+    c.height = RES;
+    const img = textureImage(grid, { ...opts, vflip: false }, filter, RES, RES, range);
+    g.putImageData(new ImageData(img as Uint8ClampedArray<ArrayBuffer>, RES, RES), 0, 0);
+  }, [grid, opts, range, filter]);
+  return <canvas ref={ref} className="tx-recon-canvas" data-testid={`recon-${filter}`} aria-hidden="true" />;
+});
+
+export function Reconstruction({
+  grid,
+  opts,
+  range,
+  qu,
+  qv,
+}: {
+  grid: TextureGrid;
+  opts: LookupOptions;
+  range: { min: number; max: number };
+  /** The drawn query in the texture frame, [0, 1]². */
+  qu: number;
+  qv: number;
+}) {
+  return (
+    <div className="tx-recon">
+      {(['nearest', 'bilinear'] as const).map((f) => (
+        <figure key={f} className="tx-recon-fig">
+          <div className="tx-recon-box" role="img" aria-label={`The texture reconstructed with ${f} filtering over [0, 1]²`}>
+            <FilterCanvas grid={grid} opts={opts} range={range} filter={f} />
+            <svg viewBox="0 0 100 100" className="tx-recon-svg" aria-hidden="true">
+              <g className="tx-query small" transform={`translate(${qu * 100} ${(1 - qv) * 100})`}>
+                <circle r={2.2} />
+                <line x1={-5} x2={5} y1={0} y2={0} />
+                <line y1={-5} y2={5} x1={0} x2={0} />
+              </g>
+            </svg>
+          </div>
+          <figcaption>{f === 'nearest' ? 'Nearest: piecewise constant, blocky' : 'Bilinear: continuous, piecewise bilinear'}</figcaption>
+        </figure>
+      ))}
+    </div>
+  );
+}
