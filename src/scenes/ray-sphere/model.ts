@@ -138,7 +138,7 @@ export function computeModel(p: RaySphereParams): RaySphereModel {
 
 /** g(t) = a t² + b t + c sampled for the plot, over a window that shows the vertex and the roots. */
 export function gCurve(res: RaySphereHit, samples = 161): { t: number[]; g: number[]; tMin: number; tMax: number } {
-  const { a, b, c } = res;
+  const { a, b } = res;
   const tv = -b / (2 * a);
   let half: number;
   if (res.t0 !== null && res.t1 !== null && res.t1 > res.t0) half = 1.6 * (res.t1 - res.t0);

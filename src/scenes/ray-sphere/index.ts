@@ -1,0 +1,3 @@
+/** #/ray-sphere (exam Q5): URL schema and the scene component. */
+export { schema } from './params';
+export { default } from './RaySphereScene';

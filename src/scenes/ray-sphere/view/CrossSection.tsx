@@ -1,0 +1,238 @@
+/**
+ * The 2D cross-section through the ray and the sphere's centre (an SVG): the great circle of the
+ * sphere, the ray (solid for t ≥ 0, dashed behind the origin), its roots, and draggable handles
+ * for the origin, the direction, the centre and the radius. The frame (plane and zoom) is kept
+ * while dragging so nothing jumps; it is recomputed only when typed values leave the plane.
+ */
+import { useRef, useState, type KeyboardEvent, type PointerEvent } from 'react';
+import type { RaySphereHit } from '../../../core/geometry';
+import { canonicalFrame, dirFromFrame, fromFrame, frameFits, tidy, toFrame, type Frame2D, type V3 } from '../model';
+
+export interface CrossSectionProps {
+  o: V3;
+  d: V3;
+  c: V3;
+  r: number;
+  res: RaySphereHit | null;
+  distanceRatio: number;
+  onChange: (patch: { o?: V3; d?: V3; c?: V3; r?: number }) => void;
+}
+
+const W = 640;
+const H = 400;
+/** Above this |o − c| / r the view centres on the sphere and leaves the origin off screen. */
+const FAR = 60;
+
+interface View {
+  cx: number;
+  cy: number;
+  /** world units per pixel */
+  s: number;
+  far?: boolean;
+}
+
+type Target = 'o' | 'tip' | 'c' | 'r';
+
+export function CrossSection({ o, d, c, r, res, distanceRatio, onChange }: CrossSectionProps) {
+  const svgRef = useRef<SVGSVGElement>(null);
+  const frameRef = useRef<Frame2D | null>(null);
+  const viewRef = useRef<View | null>(null);
+  const dragRef = useRef<{ target: Target; pointerId: number } | null>(null);
+  const [dragging, setDragging] = useState<Target | null>(null);
+
+  const far = distanceRatio > FAR;
+  // --- frame: keep it while it still contains the ray and the centre
+  const prevView = viewRef.current;
+  const tolLen = prevView ? prevView.s * 0.75 : 1e-9 * (Math.abs(r) + 1);
+  let fr = frameRef.current;
+  if (!dragging && (!fr || !frameFits(fr, o, d, c, tolLen))) fr = canonicalFrame(o, d, c);
+  if (!fr) fr = canonicalFrame(o, d, c);
+  frameRef.current = fr;
+
+  const O2 = toFrame(fr, o);
+  const C2 = toFrame(fr, c);
+  const dl = Math.hypot(d[0], d[1], d[2]);
+  const dir2: [number, number] = [(d[0] * fr.e1[0] + d[1] * fr.e1[1] + d[2] * fr.e1[2]) / dl, (d[0] * fr.e2[0] + d[1] * fr.e2[1] + d[2] * fr.e2[2]) / dl];
+  const roots = res && res.t0 !== null ? [res.t0, res.t1!] : [];
+  const rootPts = roots.map((t) => toFrame(fr!, [o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]]));
+
+  // --- view: fit the content, but keep the view while dragging or while it still fits well
+  let box: [number, number, number, number]; // xmin, xmax, ymin, ymax
+  if (far) {
+    // the closest point of the line to the centre, and the sphere
+    const tClose = -((O2[0] - C2[0]) * dir2[0] + (O2[1] - C2[1]) * dir2[1]);
+    const P: [number, number] = [O2[0] + tClose * dir2[0], O2[1] + tClose * dir2[1]];
+    box = [Math.min(C2[0] - r, P[0]), Math.max(C2[0] + r, P[0]), Math.min(C2[1] - r, P[1]), Math.max(C2[1] + r, P[1])];
+  } else {
+    const xs = [C2[0] - r, C2[0] + r, O2[0], ...rootPts.map((p) => p[0])];
+    const ys = [C2[1] - r, C2[1] + r, O2[1], ...rootPts.map((p) => p[1])];
+    box = [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)];
+  }
+  const bw = box[1] - box[0];
+  const bh = box[3] - box[2];
+  const fitS = (Math.max(bw / (W - 80), bh / (H - 80)) || 1) * 1.0;
+  const fit: View = { cx: (box[0] + box[1]) / 2, cy: (box[2] + box[3]) / 2, s: fitS };
+  let view = prevView;
+  const inside = (v: View) =>
+    box[0] >= v.cx - (v.s * W) / 2 + 10 * v.s && box[1] <= v.cx + (v.s * W) / 2 - 10 * v.s && box[2] >= v.cy - (v.s * H) / 2 + 10 * v.s && box[3] <= v.cy + (v.s * H) / 2 - 10 * v.s;
+  if (!dragging && (!view || !inside(view) || view.s > 2.5 * fitS || far !== prevView?.far)) view = fit;
+  viewRef.current = { ...view!, far };
+  const v = view!;
+  const X = (x: number) => W / 2 + (x - v.cx) / v.s;
+  const Y = (y: number) => H / 2 - (y - v.cy) / v.s;
+  const unX = (px: number) => v.cx + (px - W / 2) * v.s;
+  const unY = (py: number) => v.cy - (py - H / 2) * v.s;
+  const step = 10 ** Math.floor(Math.log10(v.s * 2));
+
+  const L = 90 * v.s; // direction arrow length: 90 px
+  const tip: [number, number] = [O2[0] + L * dir2[0], O2[1] + L * dir2[1]];
+  const rAngle = Math.PI / 4;
+  const rHandle: [number, number] = [C2[0] + r * Math.cos(rAngle), C2[1] + r * Math.sin(rAngle)];
+
+  // ray segment across the whole view: t from the origin to well past the view
+  const reach = (Math.hypot(W, H) * v.s + Math.hypot(O2[0] - v.cx, O2[1] - v.cy)) * 1.2;
+  const fwdEnd: [number, number] = [O2[0] + reach * dir2[0], O2[1] + reach * dir2[1]];
+  const backEnd: [number, number] = [O2[0] - reach * dir2[0], O2[1] - reach * dir2[1]];
+  // clamp huge coordinates (far mode) so the SVG stays well-behaved
+  const cl = (x: number) => Math.max(-1e5, Math.min(1e5, x));
+
+  const toWorld2 = (e: PointerEvent<SVGSVGElement>): [number, number] | null => {
+    const svg = svgRef.current;
+    const m = svg?.getScreenCTM();
+    if (!svg || !m) return null;
+    const p = new DOMPoint(e.clientX, e.clientY).matrixTransform(m.inverse());
+    return [unX(p.x), unY(p.y)];
+  };
+
+  const apply = (target: Target, x: number, y: number) => {
+    const t = (q: V3) => q.map((z) => tidy(z, step)) as V3;
+    if (target === 'o') onChange({ o: t(fromFrame(fr!, x, y)) });
+    else if (target === 'c') onChange({ c: t(fromFrame(fr!, x, y)) });
+    else if (target === 'r') {
+      const nr = Math.hypot(x - C2[0], y - C2[1]);
+      if (nr > step) onChange({ r: tidy(nr, step) });
+    } else {
+      const vx = x - O2[0];
+      const vy = y - O2[1];
+      const n = Math.hypot(vx, vy);
+      if (n < 4 * v.s) return;
+      const w = dirFromFrame(fr!, (vx / n) * dl, (vy / n) * dl);
+      const ds = 10 ** Math.floor(Math.log10(dl / 500));
+      const nd = w.map((z) => tidy(z, ds)) as V3;
+      if (nd.some((z) => z !== 0)) onChange({ d: nd });
+    }
+  };
+
+  const down = (target: Target) => (e: PointerEvent<SVGElement>) => {
+    e.preventDefault();
+    svgRef.current?.setPointerCapture(e.pointerId);
+    dragRef.current = { target, pointerId: e.pointerId };
+    setDragging(target);
+  };
+  const move = (e: PointerEvent<SVGSVGElement>) => {
+    const dr = dragRef.current;
+    if (!dr || dr.pointerId !== e.pointerId) return;
+    const p = toWorld2(e);
+    if (p) apply(dr.target, p[0], p[1]);
+  };
+  const up = (e: PointerEvent<SVGSVGElement>) => {
+    if (dragRef.current?.pointerId !== e.pointerId) return;
+    dragRef.current = null;
+    setDragging(null);
+  };
+  const key = (target: Target, at: [number, number]) => (e: KeyboardEvent<SVGElement>) => {
+    const k = 8 * v.s;
+    const dx = e.key === 'ArrowRight' ? k : e.key === 'ArrowLeft' ? -k : 0;
+    const dy = e.key === 'ArrowUp' ? k : e.key === 'ArrowDown' ? -k : 0;
+    if (!dx && !dy) return;
+    e.preventDefault();
+    apply(target, at[0] + dx, at[1] + dy);
+  };
+
+  const handle = (target: Target, at: [number, number], label: string, cls: string) => (
+    <g
+      className={`rs-handle ${cls}${dragging === target ? ' active' : ''}`}
+      transform={`translate(${cl(X(at[0]))} ${cl(Y(at[1]))})`}
+      onPointerDown={down(target)}
+      onKeyDown={key(target, at)}
+      tabIndex={0}
+      role="slider"
+      aria-label={`${label} (drag, or focus and use the arrow keys)`}
+      aria-valuetext={label}
+      data-testid={`handle-${target}`}
+    >
+      <circle r={16} className="rs-handle-hit" />
+      <circle r={7} />
+    </g>
+  );
+
+  const caseCls = res ? `case-${res.case}` : '';
+  const originOff = X(O2[0]) < 0 || X(O2[0]) > W || Y(O2[1]) < 0 || Y(O2[1]) > H;
+  return (
+    <figure className={`rs-section ${caseCls}`}>
+      <svg
+        ref={svgRef}
+        viewBox={`0 0 ${W} ${H}`}
+        className={`rs-svg${dragging ? ' dragging' : ''}`}
+        role="group"
+        aria-label="Cross-section through the ray and the sphere's centre"
+        onPointerMove={move}
+        onPointerUp={up}
+        onPointerCancel={up}
+        data-testid="cross-section"
+      >
+        <defs>
+          <marker id="rs-arrow" viewBox="0 0 10 10" refX="8" refY="5" markerWidth="7" markerHeight="7" orient="auto-start-reverse">
+            <path d="M0,0 L10,5 L0,10 z" className="rs-arrowhead" />
+          </marker>
+        </defs>
+        <circle cx={cl(X(C2[0]))} cy={cl(Y(C2[1]))} r={Math.min(1e5, r / v.s)} className="rs-circle" />
+        <line x1={cl(X(backEnd[0]))} y1={cl(Y(backEnd[1]))} x2={cl(X(O2[0]))} y2={cl(Y(O2[1]))} className="rs-ray-back" />
+        <line x1={cl(X(O2[0]))} y1={cl(Y(O2[1]))} x2={cl(X(fwdEnd[0]))} y2={cl(Y(fwdEnd[1]))} className="rs-ray" />
+        {!far ? (
+          <line x1={X(O2[0])} y1={Y(O2[1])} x2={X(tip[0])} y2={Y(tip[1])} className="rs-dir" markerEnd="url(#rs-arrow)" />
+        ) : null}
+        {rootPts.map((p, i) => {
+          const t = roots[i]!;
+          const isHit = res !== null && res.tHit !== null && res.tHit === t;
+          return (
+            <g key={i} transform={`translate(${cl(X(p[0]))} ${cl(Y(p[1]))})`} className={`rs-root${isHit ? ' hit' : ''}${t < 0 ? ' behind' : ''}`}>
+              <circle r={isHit ? 6.5 : 5} />
+              <text x={8} y={i === 0 ? -9 : 18} className="rs-label">
+                {`t${i === 0 ? '₀' : '₁'}`}
+                {isHit ? ' (hit)' : t < 0 ? ' < 0' : ''}
+              </text>
+            </g>
+          );
+        })}
+        {!far ? (
+          <text x={cl(X(O2[0])) - 10} y={cl(Y(O2[1])) - 12} className="rs-label" textAnchor="end">
+            o
+          </text>
+        ) : null}
+        <text x={cl(X(C2[0])) + 9} y={cl(Y(C2[1])) + 16} className="rs-label">
+          c
+        </text>
+        {!far ? handle('o', O2, 'ray origin o', 'h-o') : null}
+        {!far ? handle('tip', tip, 'ray direction d', 'h-d') : null}
+        {handle('c', C2, 'sphere centre c', 'h-c')}
+        {handle('r', rHandle, `radius r = ${r}`, 'h-r')}
+        <text x={X(rHandle[0]) + 12} y={Y(rHandle[1]) - 6} className="rs-label">
+          r
+        </text>
+        {far || originOff ? (
+          <text x={12} y={H - 12} className="rs-note">
+            {far
+              ? `Not to scale: the origin is ${distanceRatio.toPrecision(3)} radii away (off to the ${dir2[0] >= 0 ? 'left' : 'right'}). Type values to move it.`
+              : 'The origin is outside the view.'}
+          </text>
+        ) : null}
+      </svg>
+      <figcaption className="rs-caption">
+        Plane through the ray and the centre. Solid: the ray (t ≥ 0); dashed: the line behind the origin (t &lt; 0). Drag{' '}
+        <span className="key-o">o</span>, the <span className="key-d">arrow tip</span> (direction), <span className="key-c">c</span> and the{' '}
+        <span className="key-r">rim handle</span> (radius).
+      </figcaption>
+    </figure>
+  );
+}

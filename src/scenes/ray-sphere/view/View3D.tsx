@@ -1,0 +1,150 @@
+/**
+ * The 3D view: the sphere, the ray (solid ahead, dashed behind), its origin and direction, and the
+ * roots. Objects are built once; parameter changes only move them and request one render.
+ * Coordinates are shifted and scaled in double precision before they reach three.js (Float32), so
+ * a sphere 10⁸ radii away still draws cleanly (the view then centres on the sphere).
+ */
+import { useEffect, useRef } from 'react';
+import type * as THREE from 'three';
+import { Viewport, type ViewportContext } from '../../../three';
+import { intersectRaySphere, type RaySphereHit } from '../../../core/geometry';
+import type { V3 } from '../model';
+
+export interface View3DProps {
+  o: V3;
+  d: V3;
+  c: V3;
+  r: number;
+  res: RaySphereHit | null;
+  distanceRatio: number;
+  height?: number;
+}
+
+interface Objects {
+  ctx: ViewportContext;
+  sphere: THREE.Mesh;
+  wire: THREE.LineSegments;
+  ray: THREE.Line;
+  back: THREE.Line;
+  origin: THREE.Mesh;
+  arrow: THREE.ArrowHelper;
+  roots: THREE.Mesh[];
+}
+
+const FAR = 60;
+
+export function View3D({ o, d, c, r, res, distanceRatio, height = 320 }: View3DProps) {
+  const objs = useRef<Objects | null>(null);
+  const latest = useRef({ o, d, c, r, res, distanceRatio });
+  latest.current = { o, d, c, r, res, distanceRatio };
+
+  const update = () => {
+    const ob = objs.current;
+    if (!ob) return;
+    const { o, d, c, r, res, distanceRatio } = latest.current;
+    const far = distanceRatio > FAR;
+    // view centre and scale (in doubles)
+    let centre: V3;
+    let extent: number;
+    if (far) {
+      centre = c;
+      extent = 2.5 * r;
+    } else {
+      const pts: V3[] = [o, c];
+      if (res && res.t1 !== null) pts.push([o[0] + res.t1 * d[0], o[1] + res.t1 * d[1], o[2] + res.t1 * d[2]]);
+      const lo = [0, 1, 2].map((i) => Math.min(...pts.map((p) => p[i]!), c[i]! - r));
+      const hi = [0, 1, 2].map((i) => Math.max(...pts.map((p) => p[i]!), c[i]! + r));
+      centre = [(lo[0]! + hi[0]!) / 2, (lo[1]! + hi[1]!) / 2, (lo[2]! + hi[2]!) / 2];
+      extent = Math.max(hi[0]! - lo[0]!, hi[1]! - lo[1]!, hi[2]! - lo[2]!) / 2 || 1;
+    }
+    const s = 1.3 / extent;
+    const map = (p: readonly number[]): [number, number, number] => [(p[0]! - centre[0]) * s, (p[1]! - centre[1]) * s, (p[2]! - centre[2]) * s];
+    const dl = Math.hypot(d[0], d[1], d[2]);
+    const dh: V3 = [d[0] / dl, d[1] / dl, d[2] / dl];
+
+    ob.sphere.position.set(...map(c));
+    ob.sphere.scale.setScalar(r * s);
+    ob.wire.position.copy(ob.sphere.position);
+    ob.wire.scale.copy(ob.sphere.scale);
+
+    // the ray's line clipped to a ball of radius 6 around the view centre (robust intersection!)
+    const om = map(o);
+    const clip = intersectRaySphere(om, dh, [0, 0, 0], 6, 'stable');
+    const setLine = (line: THREE.Line, a: number, b: number) => {
+      const pos = line.geometry.getAttribute('position') as THREE.BufferAttribute;
+      pos.setXYZ(0, om[0] + a * dh[0], om[1] + a * dh[1], om[2] + a * dh[2]);
+      pos.setXYZ(1, om[0] + b * dh[0], om[1] + b * dh[1], om[2] + b * dh[2]);
+      pos.needsUpdate = true;
+      line.geometry.computeBoundingSphere();
+      line.computeLineDistances();
+      line.visible = b > a;
+    };
+    if (clip.ok && clip.t0 !== null) {
+      setLine(ob.ray, Math.max(0, clip.t0), Math.max(0, clip.t1!));
+      setLine(ob.back, Math.min(0, clip.t0), Math.min(0, clip.t1!));
+    } else {
+      ob.ray.visible = false;
+      ob.back.visible = false;
+    }
+    const inView = Math.hypot(...om) < 6;
+    ob.origin.visible = inView;
+    ob.origin.position.set(...om);
+    ob.arrow.visible = inView && !far;
+    ob.arrow.position.set(...om);
+    ob.arrow.setDirection(new ob.ctx.THREE.Vector3(...dh));
+    const roots = res && res.t0 !== null ? [res.t0, res.t1!] : [];
+    ob.roots.forEach((m, i) => {
+      const t = roots[i];
+      m.visible = t !== undefined;
+      if (t === undefined) return;
+      // root position relative to the view centre, formed in doubles
+      m.position.set(...map([o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]]));
+      const isHit = res!.tHit === t;
+      (m.material as THREE.MeshBasicMaterial).color.set(isHit ? 0xe8590c : t < 0 ? 0x888888 : 0x1f5fa8);
+      m.scale.setScalar(isHit ? 1.4 : 1);
+    });
+    ob.ctx.invalidate();
+  };
+
+  useEffect(update);
+
+  const setup = (ctx: ViewportContext) => {
+    const T = ctx.THREE;
+    const sphere = new T.Mesh(
+      new T.SphereGeometry(1, 48, 32),
+      new T.MeshStandardMaterial({ color: 0x6f9fd8, transparent: true, opacity: 0.42, roughness: 0.6, depthWrite: false }),
+    );
+    const wire = new T.LineSegments(new T.WireframeGeometry(new T.SphereGeometry(1, 18, 12)), new T.LineBasicMaterial({ color: 0x1f5fa8, transparent: true, opacity: 0.25 }));
+    const lineGeom = () => {
+      const g = new T.BufferGeometry();
+      g.setAttribute('position', new T.BufferAttribute(new Float32Array(6), 3));
+      return g;
+    };
+    const ray = new T.Line(lineGeom(), new T.LineBasicMaterial({ color: 0xe8590c }));
+    const back = new T.Line(lineGeom(), new T.LineDashedMaterial({ color: 0x888888, dashSize: 0.08, gapSize: 0.06 }));
+    const origin = new T.Mesh(new T.SphereGeometry(0.05, 16, 12), new T.MeshBasicMaterial({ color: 0x222222 }));
+    const arrow = new T.ArrowHelper(new T.Vector3(1, 0, 0), new T.Vector3(), 0.6, 0xe8590c, 0.14, 0.08);
+    const roots = [0, 1].map(() => new T.Mesh(new T.SphereGeometry(0.045, 16, 12), new T.MeshBasicMaterial({ color: 0x1f5fa8 })));
+    const axes = new T.AxesHelper(0.5);
+    axes.position.set(-1.6, -1.6, -1.2);
+    ctx.scene.add(sphere, wire, ray, back, origin, arrow, axes, ...roots);
+    objs.current = { ctx, sphere, wire, ray, back, origin, arrow, roots };
+    update();
+    return () => {
+      objs.current = null;
+      ctx.scene.remove(sphere, wire, ray, back, origin, arrow, axes, ...roots);
+      for (const m of [sphere, wire, ray, back, origin, ...roots]) {
+        m.geometry.dispose();
+        (m.material as THREE.Material).dispose();
+      }
+      arrow.dispose();
+      axes.dispose();
+    };
+  };
+
+  return (
+    <Viewport ariaLabel="3D view of the ray and the sphere" height={height} setup={setup} testId="view-3d">
+      {distanceRatio > FAR ? <p className="rs-3d-note">Centred on the sphere; the origin is {distanceRatio.toPrecision(3)} radii away.</p> : null}
+    </Viewport>
+  );
+}
