@@ -11,9 +11,9 @@
  * Every value is in [0, 1), never 1. Source: pbrt-v4 §8.2–8.7 (samplers); Owen (1995);
  * Burley (2020) "Practical Hash-based Owen Scrambling", JCGT 9(4).
  */
-import { mix32, ONE_MINUS_EPS, toSeed } from './rng';
-import { hashCombine, hashUniform, owenRadicalInverse3, owenScramble32, reverseBits32, TWO_POW_M32 } from './owen';
-import { shuffledSobol2Bits } from './sobol';
+import { ONE_MINUS_EPS, toSeed } from './rng';
+import { hash32I, hashCombine, hashUniform, owenHashReversedI, owenRadicalInverse3, reverseBits32I, TWO_POW_M32 } from './owen';
+import { SOBOL_DIM1_BYTES as DIM1_I } from './sobol';
 
 /** The sample-sequence families offered by the scenes. */
 export type SequenceKind = 'independent' | 'stratified' | 'halton' | 'sobol';
@@ -52,9 +52,10 @@ export function stratifiedCell(n: number, i: number): { k: number; c: number; y0
   return { k, c, y0: (i - c) / n, height: k / n };
 }
 
-function seedHashes(seed: number): [number, number, number, number] {
-  const s = mix32(toSeed(seed) ^ 0x3c6ef372);
-  return [s, mix32(s ^ 0x01000193), mix32(s ^ 0x7f4a7c15), mix32(s ^ 0x61c88647)];
+/** The four 32-bit hashes (int32) of a seed that drive the sequences (exported for tests). */
+export function sequenceSeedHashes(seed: number): [number, number, number, number] {
+  const s = hash32I(toSeed(seed) ^ 0x3c6ef372);
+  return [s, hash32I(s ^ 0x01000193), hash32I(s ^ 0x7f4a7c15), hash32I(s ^ 0x61c88647)];
 }
 
 function checkRange(n: number, out: Float64Array, dim: number, start: number, end: number, offset: number): void {
@@ -97,7 +98,7 @@ export function fillSequence2D(
   outOffset = start,
 ): Float64Array {
   checkRange(n, out, 2, start, end, outOffset);
-  const [s0, s1, s2, s3] = seedHashes(seed);
+  const [s0, s1, s2, s3] = sequenceSeedHashes(seed);
   let o = 2 * outOffset;
   switch (kind) {
     case 'independent':
@@ -107,8 +108,15 @@ export function fillSequence2D(
       }
       break;
     case 'stratified':
+      // the layout of stratifiedCell, hoisted out of the loop (no object per point)
+      const a = Math.max(1, Math.round(Math.sqrt(n)));
+      const base = Math.floor(n / a);
+      const bigRows = (n - a * base) * (base + 1);
       for (let i = start; i < end; i++, o += 2) {
-        const { k, c, y0, height } = stratifiedCell(n, i);
+        const k = i < bigRows ? base + 1 : base;
+        const c = i < bigRows ? i % k : (i - bigRows) % k;
+        const y0 = (i - c) / n;
+        const height = k / n;
         const ux = hashUniform(s2, s3, i, 0);
         const uy = hashUniform(s2, s3, i, 1);
         out[o] = Math.min(below((c + ux) / k, (c + 1) / k), ONE_MINUS_EPS);
@@ -116,23 +124,18 @@ export function fillSequence2D(
       }
       break;
     case 'halton': {
-      const hb2 = hashCombine(s0, 2);
-      const hb3 = hashCombine(s1, 3);
+      const hb2 = hashCombine(s0, 2) | 0;
+      const hb3 = hashCombine(s1, 3) | 0;
       for (let i = start; i < end; i++, o += 2) {
-        out[o] = owenScramble32(reverseBits32(i >>> 0), hb2) * TWO_POW_M32;
+        // Owen-scrambled van der Corput: owen(rev(i)) = rev(hash(i))
+        out[o] = (reverseBits32I(owenHashReversedI(i | 0, hb2)) >>> 0) * TWO_POW_M32;
         out[o + 1] = owenRadicalInverse3(i, hb3);
       }
       break;
     }
-    case 'sobol': {
-      const bits = new Uint32Array(2);
-      for (let i = start; i < end; i++, o += 2) {
-        shuffledSobol2Bits(i, s1, s2, s3, bits);
-        out[o] = bits[0]! * TWO_POW_M32;
-        out[o + 1] = bits[1]! * TWO_POW_M32;
-      }
+    case 'sobol':
+      sobolKernel(out, o, start, end, s1, s2, s3, 2);
       break;
-    }
     default:
       throw new RangeError(`unknown sequence kind '${String(kind)}'`);
   }
@@ -157,7 +160,7 @@ export function fillSequence1D(
   outOffset = start,
 ): Float64Array {
   checkRange(n, out, 1, start, end, outOffset);
-  const [s0, s1, s2, s3] = seedHashes(seed);
+  const [s0, s1, s2, s3] = sequenceSeedHashes(seed);
   let o = outOffset;
   switch (kind) {
     case 'independent':
@@ -170,20 +173,77 @@ export function fillSequence1D(
       }
       break;
     case 'halton': {
-      const hb2 = hashCombine(s0, 2);
-      for (let i = start; i < end; i++, o++) out[o] = owenScramble32(reverseBits32(i >>> 0), hb2) * TWO_POW_M32;
+      const hb2 = hashCombine(s0, 2) | 0;
+      for (let i = start; i < end; i++, o++) out[o] = (reverseBits32I(owenHashReversedI(i | 0, hb2)) >>> 0) * TWO_POW_M32;
       break;
     }
-    case 'sobol': {
-      const bits = new Uint32Array(2);
-      for (let i = start; i < end; i++, o++) {
-        shuffledSobol2Bits(i, s1, s2, s3, bits);
-        out[o] = bits[0]! * TWO_POW_M32;
-      }
+    case 'sobol':
+      sobolKernel(out, o, start, end, s1, s2, s3, 1);
       break;
-    }
     default:
       throw new RangeError(`unknown sequence kind '${String(kind)}'`);
   }
   return out;
+}
+
+/**
+ * Shuffled, Owen-scrambled Sobol' points [start, end) written from out[o] on, `dims` (1 or 2) values
+ * per point. The same arithmetic as `shuffledSobol2Bits` (sobol.ts): index j = owen(i), then
+ * x0 = owen(rev(j)) = rev(hash(j)), x1 = owen(sobol1(j)) = rev(hash(rev(sobol1(j)))). Written out by
+ * hand, without helper calls: engines stop inlining after a budget, and a non-inlined helper that
+ * returns a 32-bit value outside the small-integer range allocates, which made this 20× slower.
+ */
+function sobolKernel(out: Float64Array, o: number, start: number, end: number, s1: number, s2: number, s3: number, dims: 1 | 2): void {
+  const m1 = (s1 >>> 16) | 1;
+  const m2 = (s2 >>> 16) | 1;
+  const m3 = (s3 >>> 16) | 1;
+  for (let i = start; i < end; i++, o += dims) {
+    // j = rev(hash_s1(rev(i)))
+    let v = i | 0;
+    v = ((v >>> 1) & 0x55555555) | ((v & 0x55555555) << 1);
+    v = ((v >>> 2) & 0x33333333) | ((v & 0x33333333) << 2);
+    v = ((v >>> 4) & 0x0f0f0f0f) | ((v & 0x0f0f0f0f) << 4);
+    v = ((v >>> 8) & 0x00ff00ff) | ((v & 0x00ff00ff) << 8);
+    v = (v >>> 16) | (v << 16);
+    v ^= Math.imul(v, 0x3d20adea);
+    v = (v + s1) | 0;
+    v = Math.imul(v, m1);
+    v ^= Math.imul(v, 0x05526c56);
+    v ^= Math.imul(v, 0x53a22864);
+    v = ((v >>> 1) & 0x55555555) | ((v & 0x55555555) << 1);
+    v = ((v >>> 2) & 0x33333333) | ((v & 0x33333333) << 2);
+    v = ((v >>> 4) & 0x0f0f0f0f) | ((v & 0x0f0f0f0f) << 4);
+    v = ((v >>> 8) & 0x00ff00ff) | ((v & 0x00ff00ff) << 8);
+    const j = (v >>> 16) | (v << 16);
+    // x0 = rev(hash_s2(j))
+    let a = j;
+    a ^= Math.imul(a, 0x3d20adea);
+    a = (a + s2) | 0;
+    a = Math.imul(a, m2);
+    a ^= Math.imul(a, 0x05526c56);
+    a ^= Math.imul(a, 0x53a22864);
+    a = ((a >>> 1) & 0x55555555) | ((a & 0x55555555) << 1);
+    a = ((a >>> 2) & 0x33333333) | ((a & 0x33333333) << 2);
+    a = ((a >>> 4) & 0x0f0f0f0f) | ((a & 0x0f0f0f0f) << 4);
+    a = ((a >>> 8) & 0x00ff00ff) | ((a & 0x00ff00ff) << 8);
+    out[o] = (((a >>> 16) | (a << 16)) >>> 0) * TWO_POW_M32;
+    if (dims === 1) continue;
+    // x1 = rev(hash_s3(rev(sobol1(j))))
+    let b = DIM1_I[j & 255]! ^ DIM1_I[256 + ((j >>> 8) & 255)]! ^ DIM1_I[512 + ((j >>> 16) & 255)]! ^ DIM1_I[768 + (j >>> 24)]!;
+    b = ((b >>> 1) & 0x55555555) | ((b & 0x55555555) << 1);
+    b = ((b >>> 2) & 0x33333333) | ((b & 0x33333333) << 2);
+    b = ((b >>> 4) & 0x0f0f0f0f) | ((b & 0x0f0f0f0f) << 4);
+    b = ((b >>> 8) & 0x00ff00ff) | ((b & 0x00ff00ff) << 8);
+    b = (b >>> 16) | (b << 16);
+    b ^= Math.imul(b, 0x3d20adea);
+    b = (b + s3) | 0;
+    b = Math.imul(b, m3);
+    b ^= Math.imul(b, 0x05526c56);
+    b ^= Math.imul(b, 0x53a22864);
+    b = ((b >>> 1) & 0x55555555) | ((b & 0x55555555) << 1);
+    b = ((b >>> 2) & 0x33333333) | ((b & 0x33333333) << 2);
+    b = ((b >>> 4) & 0x0f0f0f0f) | ((b & 0x0f0f0f0f) << 4);
+    b = ((b >>> 8) & 0x00ff00ff) | ((b & 0x00ff00ff) << 8);
+    out[o + 1] = (((b >>> 16) | (b << 16)) >>> 0) * TWO_POW_M32;
+  }
 }

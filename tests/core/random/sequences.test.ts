@@ -9,6 +9,8 @@ import {
   SEQUENCE_KINDS,
   sobolDim0Bits,
   sobolDim1Bits,
+  shuffledSobol2Bits,
+  sequenceSeedHashes,
   stratifiedCell,
   TWO_POW_M32,
   type SequenceKind,
@@ -37,6 +39,19 @@ describe('bit helpers', () => {
       [0.375, 0.375],
       [0.875, 0.875],
     ]);
+  });
+
+  it('the hand-inlined Sobol kernel equals the reference shuffledSobol2Bits', () => {
+    for (const seed of [0, 1, 0xffffffff, 123456789]) {
+      const n = 4096;
+      const p = gen2('sobol', seed, n);
+      const [, s1, s2, s3] = sequenceSeedHashes(seed);
+      const bits = new Uint32Array(2);
+      for (let i = 0; i < n; i += 7) {
+        shuffledSobol2Bits(i, s1, s2, s3, bits);
+        expect([p[2 * i], p[2 * i + 1]]).toEqual([bits[0]! * TWO_POW_M32, bits[1]! * TWO_POW_M32]);
+      }
+    }
   });
 
   it('Owen scrambling keeps the top m bits a function of the top m bits (nested) and is bijective on blocks', () => {
