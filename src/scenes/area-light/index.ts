@@ -1,0 +1,2 @@
+export { schema } from './params';
+export { default } from './AreaLightScene';

@@ -1,0 +1,99 @@
+/**
+ * The floor under the light rendered progressively with each strategy, side by side with the
+ * analytic reference, so the noise each strategy leaves is seen. Rendering runs in a worker (with
+ * progress and cancel); the canvases are repainted only when a new pass arrives.
+ */
+import { useEffect, useRef } from 'react';
+import { useWorkerTask } from '../../../workers';
+import { Readout } from '../../../ui';
+import { STRATEGIES, STRATEGY_LABEL, type FloorJob } from '../model';
+import type { FloorFrame } from '../floor.worker';
+
+const makeWorker = () => new Worker(new URL('../floor.worker.ts', import.meta.url), { type: 'module' });
+
+/** Paint a radiance image: v / scale, gamma 1/2.2, warm white; NaN (no closed form) as a hatch colour. */
+function paint(canvas: HTMLCanvasElement | null, img: Float32Array | undefined, size: number, scale: number) {
+  if (!canvas || !img) return;
+  if (canvas.width !== size) canvas.width = canvas.height = size;
+  const ctx = canvas.getContext('2d');
+  if (!ctx) return;
+  const data = ctx.createImageData(size, size);
+  const d = data.data;
+  for (let k = 0; k < size * size; k++) {
+    const v = img[k]!;
+    if (!Number.isFinite(v)) {
+      d[4 * k] = 120; d[4 * k + 1] = 60; d[4 * k + 2] = 120; d[4 * k + 3] = 255;
+      continue;
+    }
+    const t = Math.pow(Math.min(1, Math.max(0, v / scale)), 1 / 2.2);
+    d[4 * k] = Math.round(255 * t);
+    d[4 * k + 1] = Math.round(240 * t);
+    d[4 * k + 2] = Math.round(205 * t);
+    d[4 * k + 3] = 255;
+  }
+  ctx.putImageData(data, 0, 0);
+}
+
+export function FloorImages({ job, jobKey }: { job: FloorJob; jobKey: string }) {
+  const task = useWorkerTask<FloorFrame, FloorFrame>(makeWorker, 'render');
+  const refs = useRef<(HTMLCanvasElement | null)[]>([]);
+  const { start } = task;
+
+  // Restart when the scene changes (debounced so dragging a slider does not queue renders).
+  useEffect(() => {
+    const t = setTimeout(() => start(job), 250);
+    return () => clearTimeout(t);
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+  }, [jobKey, start]);
+
+  const fr = task.result ?? task.partial;
+  useEffect(() => {
+    if (!fr) return;
+    let scale = 0;
+    for (const v of fr.reference) if (Number.isFinite(v) && v > scale) scale = v;
+    if (!(scale > 0)) scale = 1;
+    paint(refs.current[0] ?? null, fr.reference, fr.size, scale);
+    fr.images.forEach((img, i) => paint(refs.current[i + 1] ?? null, img, fr.size, scale));
+  }, [fr]);
+
+  const labels = ['reference (Lambert’s formula)', ...STRATEGIES.map((s) => STRATEGY_LABEL[s])];
+  return (
+    <div className="al-images">
+      <div className="al-progress" aria-live="polite">
+        {task.error ? (
+          <span className="field-error">Rendering failed: {task.error}</span>
+        ) : task.running ? (
+          <>
+            <progress max={1} value={task.progress} aria-label="Rendering progress" /> {fr ? `${fr.spp} samples per pixel so far…` : 'starting…'}
+          </>
+        ) : fr ? (
+          `${fr.spp} samples per pixel (done).`
+        ) : (
+          'Waiting…'
+        )}
+      </div>
+      <div className="al-image-row">
+        {labels.map((label, i) => (
+          <figure key={label} className="al-figure">
+            <canvas
+              ref={(el) => {
+                refs.current[i] = el;
+              }}
+              width={job.size}
+              height={job.size}
+              role="img"
+              aria-label={`Floor rendered with ${label}`}
+            />
+            <figcaption>
+              {label}
+              {i > 0 && fr ? (
+                <Readout id={`image-rmse-${STRATEGIES[i - 1]}`} label="RMSE vs reference" value={fr.rmse[i - 1] ?? null} digits={3} />
+              ) : null}
+              {i > 0 && fr ? <span className="al-ms">{(fr.ms[i - 1] ?? 0).toFixed(0)} ms</span> : null}
+            </figcaption>
+          </figure>
+        ))}
+      </div>
+    </div>
+  );
+}

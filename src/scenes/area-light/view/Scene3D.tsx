@@ -1,0 +1,243 @@
+/**
+ * The 3D view of #/area-light (z-up): the floor and shading point p with its normal, the unit
+ * hemisphere around p, the emitter (bright front, dark back), the optional occluder, the drawn
+ * samples (on the light and their directions on the hemisphere, or cosine directions), and the
+ * Q6(a) patch with its projection onto the unit sphere. Built once; objects are updated in place
+ * when the model changes (no React state per frame, renders on demand).
+ */
+import { useEffect, useRef } from 'react';
+import type * as THREE from 'three';
+import { Viewport, type ViewportContext } from '../../../three';
+import type { LightStrategy, Vec3 } from '../../../core/lights';
+import type { AreaLightModel, PatchModel } from '../model';
+
+export interface Scene3DProps {
+  model: AreaLightModel;
+  strategy: LightStrategy;
+  /** Sample points (on the light) or unit directions (cosine), xyz per sample. */
+  samples: Float64Array;
+  /** Estimator term per sample (0 = the sample contributes nothing). */
+  terms: Float64Array;
+  patch: PatchModel | null;
+  height: number;
+  dark: boolean;
+}
+
+const MAX_SAMPLES = 512;
+const RAYS = 24;
+
+interface Objects {
+  ctx: ViewportContext;
+  lightFront: THREE.Mesh;
+  lightBack: THREE.Mesh;
+  lightEdge: THREE.LineLoop;
+  occluder: THREE.Mesh;
+  point: THREE.Mesh;
+  normal: THREE.Line;
+  hemi: THREE.LineSegments;
+  floor: THREE.Mesh;
+  grid: THREE.GridHelper;
+  samplesOn: THREE.Points;
+  samplesDir: THREE.Points;
+  rays: THREE.LineSegments;
+  patch: THREE.Mesh;
+  patchRays: THREE.LineSegments;
+  patchProj: THREE.Mesh;
+}
+
+function setQuad(mesh: THREE.Mesh | THREE.LineLoop, c: readonly Vec3[], order: readonly number[]) {
+  const pos = mesh.geometry.getAttribute('position') as THREE.BufferAttribute;
+  order.forEach((k, i) => pos.setXYZ(i, c[k]![0], c[k]![1], c[k]![2]));
+  pos.needsUpdate = true;
+  mesh.geometry.computeBoundingSphere();
+}
+
+function frame(o: Objects, m: AreaLightModel) {
+  const [px, py, pz] = m.p;
+  const tx = (px + m.lc[0]) / 2, ty = (py + m.lc[1]) / 2, tz = (pz + m.lc[2]) / 2;
+  const span = Math.max(2.5, Math.hypot(m.lc[0] - px, m.lc[1] - py, m.lc[2] - pz) + Math.max(m.w, m.h));
+  const cam = o.ctx.camera;
+  cam.position.set(tx + 0.9 * span, ty - 1.25 * span, tz + 0.75 * span);
+  cam.far = Math.max(1000, span * 20);
+  cam.updateProjectionMatrix();
+  o.ctx.controls.target.set(tx, ty, tz);
+  o.ctx.controls.update();
+  o.ctx.invalidate();
+}
+
+export function Scene3D({ model, strategy, samples, terms, patch, height, dark }: Scene3DProps) {
+  const objs = useRef<Objects | null>(null);
+  const latest = useRef({ model, strategy, samples, terms, patch, dark });
+  latest.current = { model, strategy, samples, terms, patch, dark };
+  const framedFor = useRef('');
+
+  const apply = (o: Objects) => {
+    const { model: m, strategy: st, samples: smp, terms: tm, patch: pt, dark: dk } = latest.current;
+    const T = o.ctx.THREE;
+    const c = m.light.corners;
+    // Corners are counter-clockwise about ex × ey = −n_l; seen from the emitting side that is
+    // clockwise, so the front triangles use the reversed order.
+    setQuad(o.lightFront, c, [0, 2, 1, 0, 3, 2]);
+    setQuad(o.lightBack, c, [0, 2, 1, 0, 3, 2]);
+    setQuad(o.lightEdge, c, [0, 1, 2, 3]);
+    o.occluder.visible = !!m.occluder;
+    if (m.occluder) setQuad(o.occluder, m.occluder.corners, [0, 1, 2, 0, 2, 3]);
+    const [px, py, pz] = m.p;
+    o.point.position.set(px, py, pz);
+    o.normal.position.set(px, py, pz);
+    o.hemi.position.set(px, py, pz);
+    const span = Math.max(4, 2.5 * Math.hypot(m.lc[0] - px, m.lc[1] - py), Math.max(m.w, m.h) * 3);
+    o.floor.position.set(px, py, pz - 1e-3);
+    o.floor.scale.set(span, span, 1);
+    o.grid.position.set(Math.round(px), Math.round(py), pz);
+    const gs = Math.max(1, Math.ceil(span / 8));
+    o.grid.scale.set(gs, 1, gs);
+    (o.grid.material as THREE.Material).opacity = dk ? 0.35 : 0.5;
+
+    // Samples: points on the light (light strategies) and the unit directions from p.
+    const n = Math.min(MAX_SAMPLES, tm.length);
+    const onPos = o.samplesOn.geometry.getAttribute('position') as THREE.BufferAttribute;
+    const onCol = o.samplesOn.geometry.getAttribute('color') as THREE.BufferAttribute;
+    const dirPos = o.samplesDir.geometry.getAttribute('position') as THREE.BufferAttribute;
+    const dirCol = o.samplesDir.geometry.getAttribute('color') as THREE.BufferAttribute;
+    const rayPos = o.rays.geometry.getAttribute('position') as THREE.BufferAttribute;
+    const hit = new T.Color(dk ? 0x7ee787 : 0x1d7a3a);
+    const miss = new T.Color(dk ? 0xf47067 : 0xc0392b);
+    for (let i = 0; i < n; i++) {
+      let dx: number, dy: number, dz: number;
+      if (st === 'cosine') {
+        dx = smp[3 * i]!; dy = smp[3 * i + 1]!; dz = smp[3 * i + 2]!;
+      } else {
+        onPos.setXYZ(i, smp[3 * i]!, smp[3 * i + 1]!, smp[3 * i + 2]!);
+        const col = tm[i]! > 0 ? hit : miss;
+        onCol.setXYZ(i, col.r, col.g, col.b);
+        dx = smp[3 * i]! - px; dy = smp[3 * i + 1]! - py; dz = smp[3 * i + 2]! - pz;
+        const len = Math.hypot(dx, dy, dz) || 1;
+        dx /= len; dy /= len; dz /= len;
+      }
+      dirPos.setXYZ(i, px + dx, py + dy, pz + dz);
+      const col = tm[i]! > 0 ? hit : miss;
+      dirCol.setXYZ(i, col.r, col.g, col.b);
+      if (i < RAYS) {
+        const far = st === 'cosine' ? 1 : Math.hypot(smp[3 * i]! - px, smp[3 * i + 1]! - py, smp[3 * i + 2]! - pz);
+        rayPos.setXYZ(2 * i, px, py, pz);
+        rayPos.setXYZ(2 * i + 1, px + dx * far, py + dy * far, pz + dz * far);
+      }
+    }
+    o.samplesOn.visible = st !== 'cosine';
+    o.samplesOn.geometry.setDrawRange(0, st === 'cosine' ? 0 : n);
+    o.samplesDir.geometry.setDrawRange(0, n);
+    o.rays.geometry.setDrawRange(0, 2 * Math.min(RAYS, n));
+    for (const a of [onPos, onCol, dirPos, dirCol, rayPos]) a.needsUpdate = true;
+    for (const g of [o.samplesOn.geometry, o.samplesDir.geometry, o.rays.geometry]) g.computeBoundingSphere();
+
+    // Q6(a) patch and its projection onto the unit sphere around p.
+    o.patch.visible = o.patchRays.visible = o.patchProj.visible = !!pt;
+    if (pt) {
+      setQuad(o.patch, pt.corners, [0, 1, 2, 0, 2, 3]);
+      setQuad(o.patchProj, pt.projected, [0, 1, 2, 0, 2, 3]);
+      const rp = o.patchRays.geometry.getAttribute('position') as THREE.BufferAttribute;
+      pt.corners.forEach((q, i) => {
+        rp.setXYZ(2 * i, px, py, pz);
+        rp.setXYZ(2 * i + 1, q[0], q[1], q[2]);
+      });
+      rp.needsUpdate = true;
+      o.patchRays.geometry.computeBoundingSphere();
+    }
+    const key = `${m.p.join()}|${m.lc.join()}|${m.w},${m.h}`;
+    if (framedFor.current === '') {
+      framedFor.current = key;
+      frame(o, m);
+    }
+    o.ctx.invalidate();
+  };
+
+  useEffect(() => {
+    if (objs.current) apply(objs.current);
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+  }, [model, strategy, samples, terms, patch, dark]);
+
+  const setup = (ctx: ViewportContext) => {
+    const T = ctx.THREE;
+    const quadGeo = (verts: number) => {
+      const g = new T.BufferGeometry();
+      g.setAttribute('position', new T.BufferAttribute(new Float32Array(verts * 3), 3));
+      return g;
+    };
+    const lightGeo = quadGeo(6);
+    const lightFront = new T.Mesh(lightGeo, new T.MeshBasicMaterial({ color: 0xffd35a, side: T.FrontSide }));
+    const lightBack = new T.Mesh(lightGeo, new T.MeshBasicMaterial({ color: 0x3b3b3b, side: T.BackSide }));
+    const lightEdge = new T.LineLoop(quadGeo(4), new T.LineBasicMaterial({ color: 0xb34700 }));
+    const occluder = new T.Mesh(quadGeo(6), new T.MeshLambertMaterial({ color: 0x6b6f78, side: T.DoubleSide }));
+    const point = new T.Mesh(new T.SphereGeometry(0.035, 16, 12), new T.MeshBasicMaterial({ color: 0x1f5fa8 }));
+    const nGeo = new T.BufferGeometry();
+    nGeo.setAttribute('position', new T.Float32BufferAttribute([0, 0, 0, 0, 0, 0.5], 3));
+    const normal = new T.Line(nGeo, new T.LineBasicMaterial({ color: 0x1f5fa8 }));
+    // Unit hemisphere wireframe: 6 meridians and 3 parallels.
+    const hv: number[] = [];
+    const seg = 48;
+    for (let k = 0; k < 6; k++) {
+      const ph = (k * Math.PI) / 6;
+      for (let s = 0; s < seg; s++) {
+        const a = (s / seg) * Math.PI, b = ((s + 1) / seg) * Math.PI;
+        hv.push(Math.cos(a) * Math.cos(ph), Math.cos(a) * Math.sin(ph), Math.sin(a));
+        hv.push(Math.cos(b) * Math.cos(ph), Math.cos(b) * Math.sin(ph), Math.sin(b));
+      }
+    }
+    for (const th of [0, Math.PI / 6, Math.PI / 3]) {
+      for (let s = 0; s < 2 * seg; s++) {
+        const a = (s / (2 * seg)) * 2 * Math.PI, b = ((s + 1) / (2 * seg)) * 2 * Math.PI;
+        hv.push(Math.cos(th) * Math.cos(a), Math.cos(th) * Math.sin(a), Math.sin(th));
+        hv.push(Math.cos(th) * Math.cos(b), Math.cos(th) * Math.sin(b), Math.sin(th));
+      }
+    }
+    const hemiGeo = new T.BufferGeometry();
+    hemiGeo.setAttribute('position', new T.Float32BufferAttribute(hv, 3));
+    const hemi = new T.LineSegments(hemiGeo, new T.LineBasicMaterial({ color: 0x8a8f98, transparent: true, opacity: 0.45 }));
+    const floor = new T.Mesh(new T.PlaneGeometry(1, 1), new T.MeshLambertMaterial({ color: 0xcfc9b8, transparent: true, opacity: 0.55, side: T.DoubleSide }));
+    const grid = new T.GridHelper(8, 8, 0x888888, 0xaaaaaa);
+    grid.rotation.x = Math.PI / 2; // GridHelper lies in xz; make it the z = 0 floor
+    (grid.material as THREE.Material).transparent = true;
+
+    const pts = (size: number) => {
+      const g = new T.BufferGeometry();
+      g.setAttribute('position', new T.BufferAttribute(new Float32Array(MAX_SAMPLES * 3), 3));
+      g.setAttribute('color', new T.BufferAttribute(new Float32Array(MAX_SAMPLES * 3), 3));
+      return new T.Points(g, new T.PointsMaterial({ size, sizeAttenuation: false, vertexColors: true }));
+    };
+    const samplesOn = pts(4);
+    const samplesDir = pts(3);
+    const rayGeo = new T.BufferGeometry();
+    rayGeo.setAttribute('position', new T.BufferAttribute(new Float32Array(RAYS * 6), 3));
+    const rays = new T.LineSegments(rayGeo, new T.LineBasicMaterial({ color: 0x1f5fa8, transparent: true, opacity: 0.35 }));
+    const patch = new T.Mesh(quadGeo(6), new T.MeshBasicMaterial({ color: 0xe4572e, side: T.DoubleSide, polygonOffset: true, polygonOffsetFactor: -2, polygonOffsetUnits: -2 }));
+    const patchRays = new T.LineSegments(quadGeo(8), new T.LineBasicMaterial({ color: 0xe4572e }));
+    const patchProj = new T.Mesh(quadGeo(6), new T.MeshBasicMaterial({ color: 0xe4572e, side: T.DoubleSide }));
+    for (const obj of [floor, grid, lightFront, lightBack, lightEdge, occluder, point, normal, hemi, samplesOn, samplesDir, rays, patch, patchRays, patchProj]) {
+      obj.frustumCulled = false;
+      ctx.scene.add(obj);
+    }
+    const o: Objects = { ctx, lightFront, lightBack, lightEdge, occluder, point, normal, hemi, floor, grid, samplesOn, samplesDir, rays, patch, patchRays, patchProj };
+    objs.current = o;
+    framedFor.current = '';
+    apply(o);
+    return () => {
+      objs.current = null;
+    };
+  };
+
+  return (
+    <div className="al-viewport">
+      <Viewport ariaLabel="3D view: the floor, the shading point with its unit hemisphere, the rectangular light, the samples and the Q6(a) patch" height={height} setup={setup} testId="al-3d" />
+      <button
+        type="button"
+        className="al-frame"
+        onClick={() => {
+          if (objs.current) frame(objs.current, latest.current.model);
+        }}
+      >
+        Frame the scene
+      </button>
+    </div>
+  );
+}
