@@ -1,0 +1,70 @@
+/**
+ * Plotly views of one draw: the θ and φ histograms against the lobe's marginal densities, and the
+ * 2D histogram over (cos θ, φ) bins of equal solid angle against the integrated density (the χ²
+ * test's expected counts), with their standardized difference (O − E)/√E.
+ */
+import { useMemo } from 'react';
+import { Plot, type PlotTrace } from '../../../ui';
+import type { DrawStats } from '../model';
+
+const TWO_PI = 2 * Math.PI;
+
+function histTraces(h: NonNullable<DrawStats['hist']>['theta'], name: string): PlotTrace[] {
+  return [
+    { type: 'bar', x: Array.from(h.centers), y: Array.from(h.density), width: h.width, name: `samples (histogram of ${name})`, marker: { color: 'rgba(70,120,200,0.55)' } },
+    { type: 'scatter', mode: 'lines', x: Array.from(h.curveX), y: Array.from(h.curveY), name: `p(${name})`, line: { color: '#d0502a', width: 2.5 } },
+  ];
+}
+
+export function MarginalPlots({ stats }: { stats: DrawStats }) {
+  const hist = stats.hist;
+  const theta = useMemo(() => (hist ? histTraces(hist.theta, 'θ') : []), [hist]);
+  const phi = useMemo(() => (hist ? histTraces(hist.phi, 'φ') : []), [hist]);
+  if (!hist) return null;
+  return (
+    <div className="hemi-plot-grid">
+      <Plot
+        ariaLabel="Histogram of the sampled polar angles θ against the marginal density p(θ)"
+        data={theta}
+        layout={{ title: { text: 'θ: histogram vs p(θ)' }, xaxis: { title: { text: 'θ (rad)' }, range: [0, Math.PI / 2] }, yaxis: { title: { text: 'density' } }, bargap: 0 }}
+        testId="plot-theta"
+      />
+      <Plot
+        ariaLabel="Histogram of the sampled azimuths φ against the marginal density p(φ)"
+        data={phi}
+        layout={{ title: { text: 'φ: histogram vs p(φ)' }, xaxis: { title: { text: 'φ (rad)' }, range: [0, TWO_PI] }, yaxis: { title: { text: 'density' } }, bargap: 0 }}
+        testId="plot-phi"
+      />
+    </div>
+  );
+}
+
+export function Histogram2D({ stats }: { stats: DrawStats }) {
+  const chi2 = stats.chi2;
+  const data = useMemo(() => {
+    if (!chi2) return null;
+    const nc = chi2.cosThetaBins;
+    const np = chi2.phiBins;
+    const x = Array.from({ length: np }, (_, i) => ((i + 0.5) * TWO_PI) / np);
+    const y = Array.from({ length: nc }, (_, i) => (i + 0.5) / nc);
+    const rows = (f: (k: number) => number) => Array.from({ length: nc }, (_, i) => Array.from({ length: np }, (_, j) => f(i * np + j)));
+    const obs = rows((k) => chi2.observed[k]!);
+    const exp = rows((k) => chi2.expected[k]!);
+    const diff = rows((k) => {
+      const e = chi2.expected[k]!;
+      return e > 0 ? (chi2.observed[k]! - e) / Math.sqrt(e) : 0;
+    });
+    let zmax = 0;
+    for (let k = 0; k < nc * np; k++) zmax = Math.max(zmax, chi2.observed[k]!, chi2.expected[k]!);
+    return { x, y, obs, exp, diff, zmax };
+  }, [chi2]);
+  if (!data) return null;
+  const axes = { xaxis: { title: { text: 'φ' } }, yaxis: { title: { text: 'cos θ' } } };
+  return (
+    <div className="hemi-plot-grid three">
+      <Plot ariaLabel="Observed counts in bins of equal solid angle" height={240} data={[{ type: 'heatmap', x: data.x, y: data.y, z: data.obs, zmin: 0, zmax: data.zmax, colorscale: 'Viridis', showscale: false }]} layout={{ title: { text: 'observed' }, ...axes }} />
+      <Plot ariaLabel="Expected counts: the density integrated over each bin" height={240} data={[{ type: 'heatmap', x: data.x, y: data.y, z: data.exp, zmin: 0, zmax: data.zmax, colorscale: 'Viridis', showscale: false }]} layout={{ title: { text: 'expected N∫p dω' }, ...axes }} />
+      <Plot ariaLabel="Standardized difference (observed minus expected) over the square root of expected" height={240} data={[{ type: 'heatmap', x: data.x, y: data.y, z: data.diff, zmin: -4, zmax: 4, colorscale: 'RdBu', reversescale: true, showscale: true }]} layout={{ title: { text: '(O − E)/√E' }, ...axes }} />
+    </div>
+  );
+}

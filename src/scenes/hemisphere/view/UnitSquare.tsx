@@ -1,0 +1,81 @@
+/**
+ * The unit square of (ξ₁, ξ₂): the first points of the chosen set and the 8 × 8 grid whose image
+ * the 3D view draws on the hemisphere, in the same colours. Redrawn only when the inputs change.
+ */
+import { useEffect, useRef } from 'react';
+import { fillSequence2D, type SequenceKind } from '../../../core/random';
+import { xiCss } from './colors';
+
+const MAX_SHOWN = 4096;
+
+export function UnitSquare({ kind, seed, n, size = 220 }: { kind: SequenceKind; seed: number; n: number; size?: number }) {
+  const canvas = useRef<HTMLCanvasElement>(null);
+  const shown = Math.min(n, MAX_SHOWN);
+  useEffect(() => {
+    const c = canvas.current;
+    const g = c?.getContext('2d');
+    if (!c || !g) return;
+    const dpr = Math.min(window.devicePixelRatio || 1, 2);
+    const pad = 22;
+    const s = size - 2 * pad;
+    c.width = size * dpr;
+    c.height = size * dpr;
+    g.setTransform(dpr, 0, 0, dpr, 0, 0);
+    g.clearRect(0, 0, size, size);
+    const fg = getComputedStyle(document.documentElement).getPropertyValue('--fg').trim() || '#222';
+    const X = (a: number) => pad + a * s;
+    const Y = (b: number) => pad + (1 - b) * s;
+    // grid lines in the warp colours
+    g.lineWidth = 1.5;
+    for (let l = 0; l <= 8; l++) {
+      const f = l / 8;
+      for (let q = 0; q < 16; q++) {
+        const t0 = q / 16;
+        const t1 = (q + 1) / 16;
+        g.strokeStyle = xiCss(f, (t0 + t1) / 2);
+        g.beginPath();
+        g.moveTo(X(f), Y(t0));
+        g.lineTo(X(f), Y(t1));
+        g.stroke();
+        g.strokeStyle = xiCss((t0 + t1) / 2, f);
+        g.beginPath();
+        g.moveTo(X(t0), Y(f));
+        g.lineTo(X(t1), Y(f));
+        g.stroke();
+      }
+    }
+    const u = new Float64Array(2 * shown);
+    fillSequence2D(kind, seed, n, u, 0, shown, 0);
+    const r = shown > 1000 ? 1.2 : 2;
+    for (let i = 0; i < shown; i++) {
+      g.fillStyle = xiCss(u[2 * i]!, u[2 * i + 1]!);
+      g.fillRect(X(u[2 * i]!) - r, Y(u[2 * i + 1]!) - r, 2 * r, 2 * r);
+    }
+    g.strokeStyle = fg;
+    g.lineWidth = 1;
+    g.strokeRect(X(0), Y(1), s, s);
+    g.fillStyle = fg;
+    g.font = '12px sans-serif';
+    g.fillText('ξ₁ →', X(1) - 30, Y(0) + 16);
+    g.fillText('0', X(0) - 4, Y(0) + 16);
+    g.fillText('1', X(1) - 4, Y(0) + 16);
+    g.save();
+    g.translate(X(0) - 8, Y(0.5));
+    g.rotate(-Math.PI / 2);
+    g.fillText('ξ₂ →', 0, 0);
+    g.restore();
+  }, [kind, seed, n, shown, size]);
+  return (
+    <figure className="hemi-square">
+      <canvas
+        ref={canvas}
+        style={{ width: size, height: size }}
+        role="img"
+        aria-label={`The unit square of (ξ₁, ξ₂) with the first ${shown} points of the ${kind} set and the grid whose image is drawn on the hemisphere`}
+      />
+      <figcaption>
+        (ξ₁, ξ₂): first {shown.toLocaleString('en-US')} {kind} points; each colour lands where the same colour appears on the hemisphere.
+      </figcaption>
+    </figure>
+  );
+}
