@@ -56,7 +56,10 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
   const notes = addressingNotes(u, v, opts, q);
   const examQ = isExamQuery(src, opts, u, v);
   const examS = isExamSphere(src, opts, sphere);
-  const deferredQ = useDeferredValue(q);
+  // While dragging, only the marker, the stencil and the readouts follow the pointer; the worked
+  // panel (KaTeX) catches up on release.
+  const committedQ = useMemo(() => lookupAt(grid, params.u, params.v, opts), [grid, params.u, params.v, opts]);
+  const workedQ = useDeferredValue(committedQ);
 
   const dir = useMemo<[number, number, number] | null>(() => {
     if (!sphere.ok) return null;
@@ -223,7 +226,7 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
         </p>
       </Panel>
       <Panel title="Worked steps (the key’s form, live numbers)">
-        <QueryWorked grid={grid} opts={opts} q={deferredQ} isExamQuery={examQ} />
+        <QueryWorked grid={grid} opts={opts} q={workedQ} isExamQuery={isExamQuery(src, opts, params.u, params.v)} />
       </Panel>
       <Panel title="The whole texture, reconstructed">
         <Reconstruction grid={grid} opts={opts} range={range} qu={dq.bil.u} qv={dq.bil.v} />
