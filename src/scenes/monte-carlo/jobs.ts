@@ -121,7 +121,7 @@ export interface RmseData {
   rmse: Float64Array;
   lo: Float64Array;
   hi: Float64Array;
-  /** Mean wall-clock time (ms) of one estimate with n[k] samples, measured here. */
+  /** Wall-clock time (ms) of one estimate with n[k] samples: n[k] × the measured cost per sample. */
   timeMs: Float64Array;
   slope: number;
   runs: number;
@@ -129,20 +129,25 @@ export interface RmseData {
 
 /**
  * RMSE over `runs` independent runs (seeds runSeed(seed, r)) at log-spaced N up to nMax (4 per
- * decade), with the 10–90 % band of |error|, and the mean time of an N-sample estimate, measured
- * in this thread with performance.now() (setup such as tabulating a pdf is not counted).
+ * decade), with the 10–90 % band of |error|, and the time of an N-sample estimate = N × the cost
+ * per sample measured in this thread with performance.now() over all runs (the cost per sample of a
+ * run to N_max; setup such as tabulating a pdf is not counted).
  */
 export async function rmseJob(args: ProblemArgs & { nMax: number; runs: number }, compile: Compile, progress: Progress = () => {}, every = 150) {
   const prep = await prepare(args, compile);
   const cps = logSpacedCounts(args.nMax, 4, 10);
   const S = args.strategies.length;
   const accs = args.strategies.map(() => new RmseAccumulator(cps, prep.exact, args.runs));
-  const times = args.strategies.map(() => new Float64Array(cps.length));
+  // measured cost: total time and total samples per strategy (performance.now() is coarse, ~0.1 ms
+  // in browsers, so per-checkpoint timings of small N would be noise; the cost per sample is not)
+  const totalMs = new Float64Array(S);
+  const totalSamples = new Float64Array(S);
   const snapshot = (): RmseData[] =>
     args.strategies.map((s, i) => {
       const acc = accs[i]!;
       const sum = acc.summary(0.1, 0.9);
-      const t = times[i]!.map((v) => (acc.runs ? v / acc.runs : NaN));
+      const perSample = totalSamples[i]! > 0 ? totalMs[i]! / totalSamples[i]! : NaN;
+      const t = sum.n.map((n) => n * perSample);
       return { label: s.label, n: sum.n, rmse: sum.rmse, lo: sum.lo, hi: sum.hi, timeMs: t, slope: fitLogLogSlope(sum.n, sum.rmse).slope, runs: acc.runs };
     });
   let last = now();
@@ -156,19 +161,17 @@ export async function rmseJob(args: ProblemArgs & { nMax: number; runs: number }
       const seq = args.strategies[i]!.seq as SequenceKind;
       const run = new ConvergenceRun1D({ f: prep.f, pdf: sampler, sequence: seq, seed: runSeed(args.seed, r) }, cps, prep.exact);
       const t0 = now();
-      let tSet = t0;
       for (let k = 0; k < cps.length; k++) {
         // advance exactly to checkpoint k: progressive sequences continue, stratified starts a new set
         const budget = seq === 'stratified' ? cps[k]! : cps[k]! - (k ? cps[k - 1]! : 0);
         run.step(budget);
-        const t = now();
-        times[i]![k]! += seq === 'stratified' ? t - tSet : t - t0;
-        tSet = t;
-        if (t - last > every) {
-          progress(work / totalWork, { rmse: snapshot() });
-          last = now();
-          await tick();
-        }
+      }
+      totalMs[i] += now() - t0;
+      totalSamples[i] += run.total;
+      if (now() - last > every) {
+        progress(work / totalWork, { rmse: snapshot() });
+        last = now();
+        await tick();
       }
       accs[i]!.addRun(run.series);
     }

@@ -12,6 +12,12 @@ import type { ProblemArgs, RmseData, SeriesData } from '../jobs';
 
 const COLORS = ['#1f5fa8', '#a13f00', '#1d7a3a', '#7b3fa1', '#b8860b', '#d6336c', '#117a8b'];
 const arr = (a: ArrayLike<number>) => Array.from(a);
+/** Legend above the plot (below, it collides with the x-axis title on narrow screens). */
+const LEGEND = { orientation: 'h', x: 0, xanchor: 'left', y: 1.02, yanchor: 'bottom' };
+const M = { l: 60, r: 12, t: 12, b: 48 };
+function Heading({ children }: { children: ReactNode }) {
+  return <h3 className="mc-plot-title">{children}</h3>;
+}
 
 /** f and p × scale on the same axes, with the worked samples marked. */
 export function FunctionPlot({ curve, samples, a, b }: { curve: { x: Float64Array; f: Float64Array; p: Float64Array; scale: number }; samples: [number, number][]; a: number; b: number }) {
@@ -26,7 +32,7 @@ export function FunctionPlot({ curve, samples, a, b }: { curve: { x: Float64Arra
     }
     return t;
   }, [curve, samples, a, b]);
-  return <Plot data={data} height={260} ariaLabel="The integrand f(x) and the sampling pdf p(x), scaled to the same height, over [a, b]" layout={{ xaxis: { title: { text: 'x' } } }} />;
+  return <Plot data={data} height={260} ariaLabel="The integrand f(x) and the sampling pdf p(x), scaled to the same height, over [a, b]" layout={{ legend: LEGEND, margin: M, xaxis: { title: { text: 'x' } } }} />;
 }
 
 /** Start a worker task when the panel is first seen and whenever its key changes (debounced). */
@@ -86,17 +92,20 @@ export function ConvergencePanel({ args, nMax, exact, makeWorker, present }: { a
     return t;
   }, [series, ref, nMax]);
 
+  const isExact = (s: SeriesData) => s.recorded > 0 && Math.max(...arr(s.absError)) <= tiny * 100;
+  const exactLabels = series.filter(isExact).map((s) => s.label);
   const errData = useMemo<PlotTrace[]>(() => {
-    const t: PlotTrace[] = series.map((s, i) => {
-      const exactZero = s.recorded > 0 && Math.max(...arr(s.absError)) <= tiny * 100;
-      return {
+    const t: PlotTrace[] = [];
+    series.forEach((s, i) => {
+      if (isExact(s)) return; // error 0 (rounding level) at every N: no place on a log axis
+      t.push({
         type: 'scatter',
         mode: 'lines',
         x: arr(s.n),
-        y: arr(s.absError).map((e) => Math.max(e, tiny)),
-        name: exactZero ? `${s.label} (error at rounding level: zero variance)` : `${s.label} (slope ${Number.isFinite(s.slope) ? s.slope.toFixed(2) : '—'})`,
+        y: arr(s.absError).map((e) => (e > 0 ? e : null)),
+        name: `${s.label} (slope ${Number.isFinite(s.slope) ? s.slope.toFixed(2) : '—'})`,
         line: { color: COLORS[i % COLORS.length], width: 2 },
-      };
+      });
     });
     // guides anchored on the first strategy (uniform · independent): its median |error|·√N
     const s0 = series[0];
@@ -111,6 +120,7 @@ export function ConvergencePanel({ args, nMax, exact, makeWorker, present }: { a
       t.push({ type: 'scatter', mode: 'lines', x: [1, nm], y: [c, c / nm], name: 'N^−1 guide', line: { color: '#888', dash: 'dot', width: 1.5 } });
     }
     return t;
+    // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [series, tiny, nMax]);
 
   const h = present ? 380 : 300;
@@ -120,18 +130,26 @@ export function ConvergencePanel({ args, nMax, exact, makeWorker, present }: { a
         <RunBar running={task.running} progress={task.progress} onCancel={task.cancel} onRun={task.rerun} label={`Running up to N = ${nMax.toLocaleString('en')}…`} />
         {task.error ? <p className="field-error">The run failed: {task.error}</p> : null}
         {cur?.problems.length ? <p className="mc-note">Left out: {cur.problems.join('; ')}</p> : null}
+        <Heading>Running estimate</Heading>
         <Plot
           data={estData}
           height={h}
           ariaLabel="Running estimate against the number of samples N, on a log axis, for several strategies, with the exact value"
-          layout={{ xaxis: { type: 'log', title: { text: 'N (samples)' } }, yaxis: { title: { text: 'estimate' } }, title: { text: 'Running estimate', font: { size: 14 } } }}
+          layout={{ xaxis: { type: 'log', title: { text: 'N (samples)' } }, yaxis: { title: { text: 'estimate' } }, legend: LEGEND, margin: M }}
         />
+        <Heading>|error| of one run, log-log, with N^−½ and N^−1 guides</Heading>
         <Plot
           data={errData}
           height={h}
           ariaLabel="Absolute error against N on log-log axes, with N^-1/2 and N^-1 guide lines and fitted slopes"
-          layout={{ xaxis: { type: 'log', title: { text: 'N' } }, yaxis: { type: 'log', title: { text: '|estimate − exact|' }, exponentformat: 'power' }, title: { text: '|error| (one run each)', font: { size: 14 } } }}
+          layout={{ xaxis: { type: 'log', title: { text: 'N' } }, yaxis: { type: 'log', title: { text: '|estimate − exact|' }, exponentformat: 'power' }, legend: LEGEND, margin: M }}
         />
+        {exactLabels.length ? (
+          <p className="mc-note" data-testid="exact-strategies">
+            Not drawn on the log axis: {exactLabels.join(', ')} — its error is at rounding level (≤ 10⁻¹³ of the integral) at every N: f/p is the same number for every sample (zero
+            variance).
+          </p>
+        ) : null}
         <p className="mc-note">
           One run’s error jumps around its trend; the slope is fitted to log |error| against log N. Independent samples give about −½ (error ∝ N^−½); stratified and Sobol points
           do better on a smooth f; p ∝ f has no error at all.
@@ -150,11 +168,14 @@ export function RmsePanel({ args, nMax, runs, exact, makeWorker, onRuns }: { arg
   const cur = task.result ?? task.partial;
   const rm = cur?.rmse ?? [];
   const tiny = Math.abs(exact) * 1e-15 || 1e-300;
-  const clampArr = (a: Float64Array) => arr(a).map((v) => (Number.isFinite(v) ? Math.max(v, tiny) : null));
+  const clampArr = (a: Float64Array) => arr(a).map((v) => (Number.isFinite(v) && v > 0 ? v : null));
+  const rmExact = (s: RmseData) => s.runs > 0 && Math.max(...arr(s.rmse).filter(Number.isFinite)) <= tiny * 100;
+  const rmExactLabels = rm.filter(rmExact).map((s) => s.label);
 
   const rmseData = useMemo<PlotTrace[]>(() => {
     const t: PlotTrace[] = [];
     rm.forEach((s, i) => {
+      if (rmExact(s)) return;
       const c = COLORS[i % COLORS.length]!;
       const n = arr(s.n);
       t.push({ type: 'scatter', mode: 'lines', x: n, y: clampArr(s.hi), line: { width: 0, color: c }, hoverinfo: 'skip', showlegend: false, legendgroup: s.label });
@@ -164,7 +185,7 @@ export function RmsePanel({ args, nMax, runs, exact, makeWorker, onRuns }: { arg
         mode: 'lines+markers',
         x: n,
         y: clampArr(s.rmse),
-        name: `${s.label} (slope ${Number.isFinite(s.slope) && Math.max(...arr(s.rmse)) > tiny * 100 ? s.slope.toFixed(2) : '— exact'})`,
+        name: `${s.label} (slope ${Number.isFinite(s.slope) ? s.slope.toFixed(2) : '—'})`,
         line: { color: c, width: 2 },
         marker: { size: 5 },
         legendgroup: s.label,
@@ -176,13 +197,14 @@ export function RmsePanel({ args, nMax, runs, exact, makeWorker, onRuns }: { arg
 
   const timeData = useMemo<PlotTrace[]>(
     () =>
-      rm.map((s, i) => {
+      rm.flatMap((s, i) => {
+        if (rmExact(s)) return [];
         const keep = arr(s.n).map((_, k) => k).filter((k) => s.timeMs[k]! > 0 && Number.isFinite(s.rmse[k]!));
         return {
           type: 'scatter',
           mode: 'lines+markers',
           x: keep.map((k) => s.timeMs[k]),
-          y: keep.map((k) => Math.max(s.rmse[k]!, tiny)),
+          y: keep.map((k) => s.rmse[k]),
           text: keep.map((k) => `N = ${s.n[k]}`),
           name: s.label,
           line: { color: COLORS[i % COLORS.length], width: 2 },
@@ -204,21 +226,24 @@ export function RmsePanel({ args, nMax, runs, exact, makeWorker, onRuns }: { arg
         </div>
         <RunBar running={task.running} progress={task.progress} onCancel={task.cancel} onRun={task.rerun} label="Independent runs…" />
         {task.error ? <p className="field-error">The run failed: {task.error}</p> : null}
+        <Heading>RMSE over the runs (band: 10–90 % of |error|)</Heading>
         <Plot
           data={rmseData}
           height={300}
           ariaLabel="Root mean square error over independent runs against N, log-log, with bands from the 10th to the 90th percentile of the absolute error"
-          layout={{ xaxis: { type: 'log', title: { text: 'N' } }, yaxis: { type: 'log', title: { text: 'RMSE' }, exponentformat: 'power' }, title: { text: 'RMSE (band: 10–90 % of |error|)', font: { size: 14 } } }}
+          layout={{ xaxis: { type: 'log', title: { text: 'N' } }, yaxis: { type: 'log', title: { text: 'RMSE' }, exponentformat: 'power' }, legend: LEGEND, margin: M }}
         />
+        <Heading>Accuracy per millisecond: RMSE against run time</Heading>
         <Plot
           data={timeData}
           height={300}
           ariaLabel="RMSE against the measured wall-clock time of one estimate, log-log, per strategy"
-          layout={{ xaxis: { type: 'log', title: { text: 'time per estimate (ms, measured in this browser)' } }, yaxis: { type: 'log', title: { text: 'RMSE' }, exponentformat: 'power' }, title: { text: 'Accuracy per millisecond', font: { size: 14 } } }}
+          layout={{ xaxis: { type: 'log', title: { text: 'time per estimate (ms, measured in this browser)' } }, yaxis: { type: 'log', title: { text: 'RMSE' }, exponentformat: 'power' }, legend: LEGEND, margin: M }}
         />
+        {rmExactLabels.length ? <p className="mc-note">Not drawn: {rmExactLabels.join(', ')} (RMSE at rounding level: zero variance).</p> : null}
         <p className="mc-note">
-          Times are measured in a worker in your browser (set-up such as tabulating a pdf is not counted; times below ~0.1 ms are at the timer’s resolution). A curve further down
-          and to the left buys more accuracy per millisecond.
+          Run time of one N-sample estimate = N × the cost per sample measured over all runs in a worker in your browser (set-up such as tabulating a pdf is not
+          counted). A curve further down and to the left buys more accuracy per millisecond.
         </p>
       </div>
     </Panel>
@@ -273,7 +298,7 @@ export function HistogramPanel({ args, N, exact, makeWorker, onN }: { args: Prob
           data={data}
           height={280}
           ariaLabel="Histogram of many independent estimates at fixed N, with their mean and the exact integral"
-          layout={{ xaxis: { title: { text: 'estimate ⟨I⟩' } }, yaxis: { title: { text: 'count' } }, bargap: 0 }}
+          layout={{ xaxis: { title: { text: 'estimate ⟨I⟩' } }, yaxis: { title: { text: 'count' } }, bargap: 0, legend: LEGEND, margin: M }}
         />
         <p className="mc-note">
           E[⟨I⟩] = ∫ f dx for any valid p: each estimate misses, but their mean lands on the integral (within a few standard errors), whatever N is. Only the spread shrinks as N grows.
