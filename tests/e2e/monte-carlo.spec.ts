@@ -1,0 +1,132 @@
+/**
+ * Browser tests of #/monte-carlo (exam Q2, Q4). Every expected value is computed here from the
+ * formula (f(x) = (x + 2)², p = 1/(b − a), p = 3(x + 2)²/((b + 2)³ − (a + 2)³), ∫ eˣ dx = eᵇ − eᵃ),
+ * never pasted from the answer key or from the app.
+ */
+import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
+
+const EXAM_X = [1.16, 1.98, 0.54, 1.26];
+const f = (x: number) => (x + 2) ** 2;
+const cube = (x: number) => x * x * x;
+const exactSquare = (a: number, b: number) => (cube(b + 2) - cube(a + 2)) / 3;
+const close = (got: number, want: number, tol: number) => expect(Math.abs(got - want), `${got} ≈ ${want} (±${tol})`).toBeLessThanOrEqual(tol);
+
+function meanAndStderr(terms: number[]) {
+  const m = terms.reduce((s, t) => s + t, 0) / terms.length;
+  const s2 = terms.reduce((s, t) => s + (t - m) ** 2, 0) / (terms.length - 1);
+  return { m, se: Math.sqrt(s2 / terms.length) };
+}
+
+test.describe('exam Q4', () => {
+  test('default page: the worked table of the exam’s four samples, 56/3, and the key’s differing figures', async ({ page }) => {
+    await openScene(page, '#/monte-carlo');
+    close(await readoutNumber(page, 'exact'), exactSquare(0, 2), 1e-13);
+    for (const [i, x] of EXAM_X.entries()) {
+      close(await readoutNumber(page, `f-${i}`), f(x), 1e-12);
+      close(await readoutNumber(page, `p-${i}`), 1 / 2, 0);
+    }
+    const uniform = (2 / 4) * EXAM_X.reduce((s, x) => s + f(x), 0);
+    close(await readoutNumber(page, 'q4-uniform'), uniform, 1e-12);
+    close(await readoutNumber(page, 'q4-importance'), exactSquare(0, 2), 1e-12);
+    // the key prints 18.84 for f(1.98); the page says the computed value differs
+    const notes = page.getByTestId('key-notes');
+    await expect(notes).toContainText(String(f(1.98)));
+    await expect(notes).toContainText('18.84');
+    await expect(notes).toContainText('slip');
+    // no samples given: the estimate comes from N drawn samples and is within 5 standard errors
+    const est = await readoutNumber(page, 'estimate');
+    const se = await readoutNumber(page, 'stderr');
+    expect(se).toBeGreaterThan(0);
+    close(est, exactSquare(0, 2), 5 * se);
+  });
+
+  test('samples= the exam’s four: estimate and standard error of exactly these samples', async ({ page }) => {
+    await openScene(page, `#/monte-carlo?samples=${EXAM_X.join(',')}`);
+    const { m, se } = meanAndStderr(EXAM_X.map((x) => f(x) / 0.5));
+    close(await readoutNumber(page, 'estimate'), m, 1e-12);
+    close(await readoutNumber(page, 'stderr'), se, 1e-12);
+    expect(Math.round(m * 100) / 100).toBe(21.45);
+  });
+
+  test('pdf=proportional: every f/p is 56/3, given or drawn (zero variance)', async ({ page }) => {
+    await openScene(page, `#/monte-carlo?pdf=proportional&samples=${EXAM_X.join(',')}`);
+    const I = exactSquare(0, 2);
+    for (const [i, x] of EXAM_X.entries()) close(await readoutNumber(page, `p-${i}`), (3 * f(x)) / (cube(4) - cube(2)), 1e-15);
+    close(await readoutNumber(page, 'estimate'), I, 1e-12);
+    expect(await readoutNumber(page, 'stderr')).toBeLessThan(1e-12);
+
+    await openScene(page, '#/monte-carlo?pdf=proportional&n=5000&strategy=sobol');
+    close(await readoutNumber(page, 'estimate'), I, 1e-11);
+    expect(await readoutNumber(page, 'stderr')).toBeLessThan(1e-10);
+  });
+});
+
+test.describe('typed integrands and pdfs', () => {
+  test('exp(x) on [−1, 1.5]: exact by quadrature, given samples, and a custom pdf ∝ eˣ', async ({ page }) => {
+    const a = -1;
+    const b = 1.5;
+    const I = Math.exp(b) - Math.exp(a);
+    await openScene(page, `#/monte-carlo?f=exp(x)&a=${a}&b=${b}&samples=0.3,-0.5`);
+    close(await waitForReadout(page, 'exact', (v) => v !== 'none').then(Number), I, 1e-13);
+    close(await readoutNumber(page, 'f-0'), Math.exp(0.3), 1e-14);
+    close(await readoutNumber(page, 'p-1'), 1 / (b - a), 1e-15);
+    close(await readoutNumber(page, 'estimate'), ((Math.exp(0.3) + Math.exp(-0.5)) / 2) * (b - a), 1e-12);
+    await expect(page.getByText(/Gauss–Kronrod/).first()).toBeVisible();
+
+    await openScene(page, `#/monte-carlo?f=exp(x)&a=${a}&b=${b}&pdf=custom&pdfexpr=exp(x)&samples=0.3,-0.5`);
+    close(await waitForReadout(page, 'p-0', (v) => v !== 'none').then(Number), Math.exp(0.3) / I, 1e-12);
+    close(await readoutNumber(page, 'estimate'), I, 1e-11);
+
+    // drawn from the tabulated custom pdf: nearly zero variance, unbiased
+    await openScene(page, `#/monte-carlo?f=exp(x)&a=${a}&b=${b}&pdf=custom&pdfexpr=exp(x)&n=20000`);
+    const est = Number(await waitForReadout(page, 'estimate', (v) => v !== 'none'));
+    const se = await readoutNumber(page, 'stderr');
+    expect(se).toBeLessThan(1e-3);
+    close(est, I, 5 * se + 1e-12);
+  });
+
+  test('bad pdfs get a clear message and no estimate; a bad f falls back with a message', async ({ page }) => {
+    const cases: [string, RegExp][] = [
+      ['x-1', /negative/],
+      ['x', /biased/],
+      ['1/x', /normaliz/],
+      ['x+', /syntax|character|not valid/i],
+    ];
+    for (const [expr, msg] of cases) {
+      await openScene(page, `#/monte-carlo?pdf=custom&pdfexpr=${encodeURIComponent(expr)}`);
+      await expect(page.getByTestId('pdf-error')).toContainText(msg);
+      expect(await readout(page, 'estimate')).toBe('none');
+      expect(await readout(page, 'p-0')).toBe('none');
+      // the exact integral and f stay available
+      close(await readoutNumber(page, 'exact'), exactSquare(0, 2), 1e-13);
+    }
+    await openScene(page, '#/monte-carlo?f=y%2B1');
+    await expect(page.getByText(/using \(x\+2\)\^2/)).toBeVisible();
+    close(await readoutNumber(page, 'exact'), exactSquare(0, 2), 1e-13);
+    await openScene(page, '#/monte-carlo?a=3&b=1');
+    await expect(page.getByText(/must satisfy a < b/)).toBeVisible();
+  });
+});
+
+test.describe('long runs in the worker', () => {
+  test('n = 3·10⁶ runs off the main thread and finishes; the convergence plot notes the exact strategy', async ({ page }) => {
+    await openScene(page, '#/monte-carlo?pdf=proportional&n=3000000');
+    const est = Number(await waitForReadout(page, 'estimate', (v) => v !== 'none', 45000));
+    close(est, exactSquare(0, 2), 1e-10);
+    await page.getByRole('heading', { name: /Convergence as N grows/ }).scrollIntoViewIfNeeded();
+    await expect(page.getByTestId('exact-strategies')).toContainText('p ∝ f', { timeout: 45000 });
+    await expect(page.locator('.mc-plots .js-plotly-plot').first()).toBeVisible();
+  });
+
+  test('the unbiasedness histogram: the mean of 2000 estimates is within 4 standard errors of 56/3', async ({ page }) => {
+    await openScene(page, '#/monte-carlo?n=1000');
+    await page.getByRole('heading', { name: /Unbiasedness/ }).scrollIntoViewIfNeeded();
+    const mean = Number(await waitForReadout(page, 'hist-mean', (v) => v !== 'none', 45000));
+    const panel = page.getByRole('region', { name: /Unbiasedness/ });
+    await expect(panel.getByRole('button', { name: 'Run again' })).toBeVisible({ timeout: 45000 });
+    const sd = await readoutNumber(page, 'hist-sd');
+    const finalMean = await readoutNumber(page, 'hist-mean');
+    expect(Number.isFinite(mean)).toBe(true);
+    close(finalMean, exactSquare(0, 2), (4 * sd) / Math.sqrt(2000));
+  });
+});
