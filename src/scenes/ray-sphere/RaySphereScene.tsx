@@ -251,7 +251,8 @@ function Derivation({ model }: { model: RaySphereModel }) {
       <p>A point of the ray is p(t) = o + t d; it is on the sphere when its distance to c is r:</p>
       <MathTex display tex={`\\lVert \\mathbf o + t\\,\\mathbf d - \\mathbf c \\rVert^2 = r^2`} />
       <p>Expand with f = o − c (a dot product with itself is a squared length):</p>
-      <MathTex display tex={`(\\mathbf d\\cdot\\mathbf d)\\,t^2 + 2\\,(\\mathbf d\\cdot\\mathbf f)\\,t + (\\mathbf f\\cdot\\mathbf f - r^2) = 0 \\quad\\Longrightarrow\\quad a t^2 + b t + c = 0`} />
+      <MathTex display tex={`(\\mathbf d\\cdot\\mathbf d)\\,t^2 + 2\\,(\\mathbf d\\cdot\\mathbf f)\\,t + (\\mathbf f\\cdot\\mathbf f - r^2) = 0`} />
+      <MathTex display tex={`a t^2 + b t + c = 0,\\qquad a = \\mathbf d\\cdot\\mathbf d,\\; b = 2\\,\\mathbf d\\cdot\\mathbf f,\\; c = \\mathbf f\\cdot\\mathbf f - r^2`} />
       <p>
         With o = {v(o)}, d = {v(d)}, c = {v(c)}, r = {tx(r, 4)}:
       </p>
@@ -264,10 +265,8 @@ function Derivation({ model }: { model: RaySphereModel }) {
         smallest such root.
       </p>
       <p>The robust form (Ray Tracing Gems, ch. 7) computes the same Δ without subtracting two huge numbers, and picks the root formula that never cancels:</p>
-      <MathTex
-        display
-        tex={`\\Delta = 4a\\left(r^2 - \\left\\lVert \\mathbf f - \\tfrac{\\mathbf f\\cdot\\mathbf d}{a}\\,\\mathbf d \\right\\rVert^2\\right),\\qquad q = -\\left(\\tfrac b2 + \\operatorname{sign}(b)\\,\\tfrac{\\sqrt{\\Delta}}{2}\\right),\\qquad t = \\frac{c}{q},\\; \\frac{q}{a}`}
-      />
+      <MathTex display tex={`\\Delta = 4a\\left(r^2 - \\Bigl\\lVert \\mathbf f - \\tfrac{\\mathbf f\\cdot\\mathbf d}{a}\\,\\mathbf d \\Bigr\\rVert^2\\right)`} />
+      <MathTex display tex={`q = -\\left(\\tfrac b2 + \\operatorname{sign}(b)\\,\\tfrac{\\sqrt{\\Delta}}{2}\\right),\\qquad t = \\frac{c}{q},\\; \\frac{q}{a}`} />
     </div>
   );
 }
@@ -280,8 +279,9 @@ function PrecisionExplainer() {
         using Δ/4 = a r² − |d × f|² so that only the genuine cancellation is left. It is checked against 400-digit mathjs BigNumber arithmetic in the tests.
       </p>
       <p>
-        Why the textbook form fails: when the sphere is far (|f| ≫ r), b² and 4ac are both about 4a|f|², and their difference, about 4a r², is smaller than their rounding
-        error once |f|/r passes about 10⁸. The robust form first finds the point of the line closest to the centre, f − (f·d / a) d, whose length is comparable to r, so
+        Why the textbook form fails: when the sphere is far (|f| ≫ r), b² and 4ac are both about 4a|f|², and their difference, about 4a r², is what is left after
+        cancelling them. Each carries a rounding error of about u·4a|f|² (u = 2⁻⁵³), so Δ’s relative error is about u·(|f|/r)²: a millionth at |f| ≈ 10⁵ r, everything at
+        |f| ≈ 10⁸ r. The robust form first finds the point of the line closest to the centre, f − (f·d / a) d, whose length is comparable to r, so
         nothing large is subtracted.
       </p>
     </div>

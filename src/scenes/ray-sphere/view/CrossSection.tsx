@@ -45,16 +45,34 @@ export function CrossSection({ o, d, c, r, res, distanceRatio, onChange }: Cross
   const prevView = viewRef.current;
   const tolLen = prevView ? prevView.s * 0.75 : 1e-9 * (Math.abs(r) + 1);
   let fr = frameRef.current;
-  if (!dragging && (!fr || !frameFits(fr, o, d, c, tolLen))) fr = canonicalFrame(o, d, c);
+  if (far || (!dragging && (!fr || !frameFits(fr, o, d, c, tolLen)))) fr = canonicalFrame(o, d, c);
   if (!fr) fr = canonicalFrame(o, d, c);
   frameRef.current = fr;
 
-  const O2 = toFrame(fr, o);
-  const C2 = toFrame(fr, c);
   const dl = Math.hypot(d[0], d[1], d[2]);
-  const dir2: [number, number] = [(d[0] * fr.e1[0] + d[1] * fr.e1[1] + d[2] * fr.e1[2]) / dl, (d[0] * fr.e2[0] + d[1] * fr.e2[1] + d[2] * fr.e2[2]) / dl];
+  let O2: [number, number];
+  let C2: [number, number];
+  let dir2: [number, number];
+  if (far) {
+    // Projecting a point 10⁸ r away onto e2 would amplify e2's rounding (≈ε|f|/|l|) into a
+    // visible offset; in the canonical frame the exact answer is known: the ray runs along x at
+    // height |l| (the distance of the line from the centre), and the centre is the origin.
+    const f: V3 = [o[0] - c[0], o[1] - c[1], o[2] - c[2]];
+    const k = (f[0] * d[0] + f[1] * d[1] + f[2] * d[2]) / (dl * dl);
+    const lx = f[0] - k * d[0];
+    const ly = f[1] - k * d[1];
+    const lz = f[2] - k * d[2];
+    O2 = [k * dl, Math.hypot(lx, ly, lz)];
+    C2 = [0, 0];
+    dir2 = [1, 0];
+  } else {
+    O2 = toFrame(fr, o);
+    C2 = toFrame(fr, c);
+    dir2 = [(d[0] * fr.e1[0] + d[1] * fr.e1[1] + d[2] * fr.e1[2]) / dl, (d[0] * fr.e2[0] + d[1] * fr.e2[1] + d[2] * fr.e2[2]) / dl];
+  }
   const roots = res && res.t0 !== null ? [res.t0, res.t1!] : [];
-  const rootPts = roots.map((t) => toFrame(fr!, [o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]]));
+  // root points along the drawn line (t in units of |d|)
+  const rootPts = roots.map((t): [number, number] => [O2[0] + t * dl * dir2[0], O2[1] + t * dl * dir2[1]]);
 
   // --- view: fit the content, but keep the view while dragging or while it still fits well
   let box: [number, number, number, number]; // xmin, xmax, ymin, ymax
@@ -70,7 +88,7 @@ export function CrossSection({ o, d, c, r, res, distanceRatio, onChange }: Cross
   }
   const bw = box[1] - box[0];
   const bh = box[3] - box[2];
-  const fitS = (Math.max(bw / (W - 80), bh / (H - 80)) || 1) * 1.0;
+  const fitS = Math.max(bw / (W - 130), bh / (H - 110)) || 1;
   const fit: View = { cx: (box[0] + box[1]) / 2, cy: (box[2] + box[3]) / 2, s: fitS };
   let view = prevView;
   const inside = (v: View) =>
@@ -84,7 +102,7 @@ export function CrossSection({ o, d, c, r, res, distanceRatio, onChange }: Cross
   const unY = (py: number) => v.cy - (py - H / 2) * v.s;
   const step = 10 ** Math.floor(Math.log10(v.s * 2));
 
-  const L = 90 * v.s; // direction arrow length: 90 px
+  const L = 130 * v.s; // direction arrow length: 130 px
   const tip: [number, number] = [O2[0] + L * dir2[0], O2[1] + L * dir2[1]];
   const rAngle = Math.PI / 4;
   const rHandle: [number, number] = [C2[0] + r * Math.cos(rAngle), C2[1] + r * Math.sin(rAngle)];
