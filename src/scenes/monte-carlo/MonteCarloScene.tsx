@@ -187,10 +187,12 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
           </p>
         ) : null}
         {curve && f ? <FunctionPlot curve={curve} samples={table ? table.rows.map((r) => [r.x, r.f] as [number, number]) : []} a={a} b={b} /> : null}
-        <MathTex
-          display
-          tex={String.raw`\langle I\rangle = \frac{1}{N}\sum_{i=1}^{N}\frac{f(x_i)}{p(x_i)},\qquad x_i\sim p,\qquad \operatorname{SE} = \frac{s}{\sqrt N}`}
-        />
+        <div className="mc-math">
+          <MathTex
+            display
+            tex={String.raw`\begin{gathered}\langle I\rangle = \frac{1}{N}\sum_{i=1}^{N}\frac{f(x_i)}{p(x_i)},\quad x_i\sim p \\ \operatorname{SE} = \frac{s}{\sqrt N},\quad s^2 = \frac{1}{N-1}\sum_{i=1}^{N}\Big(\frac{f(x_i)}{p(x_i)} - \langle I\rangle\Big)^2\end{gathered}`}
+          />
+        </div>
       </Panel>
       {table && f ? (
         <WorkedTable table={table} keyNotes={keyNotes} given={!!given} pdfOk={chosenOk} pdfKind={pdfKind} a={a} b={b} onUseExam={() => setParams({ samples: [...EXAM_SAMPLES] })} onDraw={() => setParams({ samples: null })} />

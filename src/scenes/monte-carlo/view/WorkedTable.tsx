@@ -62,10 +62,12 @@ export function WorkedTable(props: {
           note={table.proportional && table.proportional.n > 1 ? `spread of f/p: s = ${formatNumber(Math.sqrt(table.proportional.variance), 3)} (zero variance)` : undefined}
         />
       </div>
-      <MathTex
-        display
-        tex={String.raw`\langle I\rangle_{\text{uniform}} = \frac{b-a}{N}\sum_i f(x_i),\qquad p\propto f \;\Rightarrow\; \frac{f(x_i)}{p(x_i)} = \int_a^b f\,dx \text{ for every } x_i`}
-      />
+      <div className="mc-math">
+        <MathTex
+          display
+          tex={String.raw`\begin{gathered}\langle I\rangle_{\text{uniform}} = \frac{b-a}{N}\sum_i f(x_i) \\ p = \frac{f}{\int_a^b f\,dx} \;\Rightarrow\; \frac{f(x_i)}{p(x_i)} = \int_a^b f\,dx \text{ for every } x_i\end{gathered}`}
+        />
+      </div>
       {table.problems.map((p, i) => (
         <Notice key={i} kind="warn">
           {p}
