@@ -11,16 +11,21 @@ export default defineConfig({
     chunkSizeWarningLimit: 5000,
     rolldownOptions: {
       output: {
-        // Heavy libraries get stable, recognisable chunk names (vendor-three-*.js, …) so the
-        // bundle budgets and the browser test of what `#/` downloads can name them.
+        // three.js, Plotly and KaTeX get recognisable chunk names (vendor-three-*.js, …) for the
+        // budgets. mathjs is left to the default splitting on purpose: the parse-only expression
+        // engine (src/core/expr) must not share a chunk with the full mathjs that the stability
+        // panel's BigNumber reference loads.
+        // Each scene's lazy chunk is named after it (scene-texture-*.js, …); naming only, so the
+        // default splitting (shared modules in shared chunks) is untouched.
+        chunkFileNames: (chunk: { facadeModuleId?: string | null }) => {
+          const m = /[\\/]src[\\/]scenes[\\/]([a-z0-9-]+)[\\/]index\.ts$/.exec(chunk.facadeModuleId ?? '');
+          return m ? `assets/scene-${m[1]}-[hash].js` : 'assets/[name]-[hash].js';
+        },
         codeSplitting: {
           groups: [
             { name: 'vendor-three', test: /[\\/]node_modules[\\/]three[\\/]/ },
             { name: 'vendor-plotly', test: /[\\/]node_modules[\\/]plotly\.js-cartesian-dist-min[\\/]/ },
-            { name: 'vendor-mathjs', test: /[\\/]node_modules[\\/](mathjs|decimal\.js|complex\.js|fraction\.js|typed-function|javascript-natural-sort|seedrandom|escape-latex|tiny-emitter)[\\/]/ },
             { name: 'vendor-katex', test: /[\\/]node_modules[\\/]katex[\\/]/ },
-            // each scene folder is one chunk, named after the scene (scene-texture-*.js, …)
-            { debugName: 'scenes', name: (id: string) => /[\\/]src[\\/]scenes[\\/]([a-z0-9-]+)[\\/]/.exec(id)?.[1]?.replace(/^/, 'scene-') ?? null },
           ],
         },
       },
