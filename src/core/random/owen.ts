@@ -6,7 +6,12 @@
  * Internally values are kept as signed int32 (the `…I` functions) so optimizing JS engines keep
  * them in registers; the exported uint32 forms convert with `>>> 0` only at the boundary.
  */
-import { ONE_MINUS_EPS, TWO_POW_M53 } from './rng';
+import { ONE_MINUS_EPS as ONE_MINUS_EPS_RNG, TWO_POW_M53 as TWO_POW_M53_RNG } from './rng';
+
+// Local copies (see the note on local aliases in sequences.ts: imported bindings are slow in
+// hot loops under Vite's module runner).
+const ONE_MINUS_EPS = ONE_MINUS_EPS_RNG;
+const TWO_POW_M53 = TWO_POW_M53_RNG;
 
 /** 2^-32: converts a uint32 to a double in [0, 1). */
 export const TWO_POW_M32 = 1 / 4294967296;

@@ -15,6 +15,17 @@ import { ONE_MINUS_EPS, toSeed } from './rng';
 import { hash32I, hashCombine, hashUniform, owenHashReversedI, owenRadicalInverse3, reverseBits32I, TWO_POW_M32 } from './owen';
 import { SOBOL_DIM1_BYTES as DIM1_I } from './sobol';
 
+// Local aliases of the per-point helpers. In the bundled app they change nothing; under Vite's
+// module runner (vitest, vitest bench) every use of an imported binding is a property read on the
+// module namespace, which blocks inlining and made these loops up to 100× slower there.
+const hashUniformL = hashUniform;
+const owenRadicalInverse3L = owenRadicalInverse3;
+const owenHashReversedIL = owenHashReversedI;
+const reverseBits32IL = reverseBits32I;
+const DIM1_L = DIM1_I;
+const TWO_POW_M32_L = TWO_POW_M32;
+const ONE_MINUS_EPS_L = ONE_MINUS_EPS;
+
 /** The sample-sequence families offered by the scenes. */
 export type SequenceKind = 'independent' | 'stratified' | 'halton' | 'sobol';
 
@@ -103,8 +114,8 @@ export function fillSequence2D(
   switch (kind) {
     case 'independent':
       for (let i = start; i < end; i++, o += 2) {
-        out[o] = hashUniform(s0, s1, i, 0);
-        out[o + 1] = hashUniform(s0, s1, i, 1);
+        out[o] = hashUniformL(s0, s1, i, 0);
+        out[o + 1] = hashUniformL(s0, s1, i, 1);
       }
       break;
     case 'stratified':
@@ -117,10 +128,10 @@ export function fillSequence2D(
         const c = i < bigRows ? i % k : (i - bigRows) % k;
         const y0 = (i - c) / n;
         const height = k / n;
-        const ux = hashUniform(s2, s3, i, 0);
-        const uy = hashUniform(s2, s3, i, 1);
-        out[o] = Math.min(below((c + ux) / k, (c + 1) / k), ONE_MINUS_EPS);
-        out[o + 1] = Math.min(below(y0 + uy * height, y0 + height), ONE_MINUS_EPS);
+        const ux = hashUniformL(s2, s3, i, 0);
+        const uy = hashUniformL(s2, s3, i, 1);
+        out[o] = Math.min(below((c + ux) / k, (c + 1) / k), ONE_MINUS_EPS_L);
+        out[o + 1] = Math.min(below(y0 + uy * height, y0 + height), ONE_MINUS_EPS_L);
       }
       break;
     case 'halton': {
@@ -128,8 +139,8 @@ export function fillSequence2D(
       const hb3 = hashCombine(s1, 3) | 0;
       for (let i = start; i < end; i++, o += 2) {
         // Owen-scrambled van der Corput: owen(rev(i)) = rev(hash(i))
-        out[o] = (reverseBits32I(owenHashReversedI(i | 0, hb2)) >>> 0) * TWO_POW_M32;
-        out[o + 1] = owenRadicalInverse3(i, hb3);
+        out[o] = (reverseBits32IL(owenHashReversedIL(i | 0, hb2)) >>> 0) * TWO_POW_M32_L;
+        out[o + 1] = owenRadicalInverse3L(i, hb3);
       }
       break;
     }
@@ -164,17 +175,17 @@ export function fillSequence1D(
   let o = outOffset;
   switch (kind) {
     case 'independent':
-      for (let i = start; i < end; i++, o++) out[o] = hashUniform(s0, s1, i, 0);
+      for (let i = start; i < end; i++, o++) out[o] = hashUniformL(s0, s1, i, 0);
       break;
     case 'stratified':
       for (let i = start; i < end; i++, o++) {
-        const u = hashUniform(s2, s3, i, 0);
-        out[o] = Math.min(below((i + u) / n, (i + 1) / n), ONE_MINUS_EPS);
+        const u = hashUniformL(s2, s3, i, 0);
+        out[o] = Math.min(below((i + u) / n, (i + 1) / n), ONE_MINUS_EPS_L);
       }
       break;
     case 'halton': {
       const hb2 = hashCombine(s0, 2) | 0;
-      for (let i = start; i < end; i++, o++) out[o] = (reverseBits32I(owenHashReversedI(i | 0, hb2)) >>> 0) * TWO_POW_M32;
+      for (let i = start; i < end; i++, o++) out[o] = (reverseBits32IL(owenHashReversedIL(i | 0, hb2)) >>> 0) * TWO_POW_M32_L;
       break;
     }
     case 'sobol':
@@ -226,10 +237,10 @@ function sobolKernel(out: Float64Array, o: number, start: number, end: number, s
     a = ((a >>> 2) & 0x33333333) | ((a & 0x33333333) << 2);
     a = ((a >>> 4) & 0x0f0f0f0f) | ((a & 0x0f0f0f0f) << 4);
     a = ((a >>> 8) & 0x00ff00ff) | ((a & 0x00ff00ff) << 8);
-    out[o] = (((a >>> 16) | (a << 16)) >>> 0) * TWO_POW_M32;
+    out[o] = (((a >>> 16) | (a << 16)) >>> 0) * TWO_POW_M32_L;
     if (dims === 1) continue;
     // x1 = rev(hash_s3(rev(sobol1(j))))
-    let b = DIM1_I[j & 255]! ^ DIM1_I[256 + ((j >>> 8) & 255)]! ^ DIM1_I[512 + ((j >>> 16) & 255)]! ^ DIM1_I[768 + (j >>> 24)]!;
+    let b = DIM1_L[j & 255]! ^ DIM1_L[256 + ((j >>> 8) & 255)]! ^ DIM1_L[512 + ((j >>> 16) & 255)]! ^ DIM1_L[768 + (j >>> 24)]!;
     b = ((b >>> 1) & 0x55555555) | ((b & 0x55555555) << 1);
     b = ((b >>> 2) & 0x33333333) | ((b & 0x33333333) << 2);
     b = ((b >>> 4) & 0x0f0f0f0f) | ((b & 0x0f0f0f0f) << 4);
@@ -244,6 +255,6 @@ function sobolKernel(out: Float64Array, o: number, start: number, end: number, s
     b = ((b >>> 2) & 0x33333333) | ((b & 0x33333333) << 2);
     b = ((b >>> 4) & 0x0f0f0f0f) | ((b & 0x0f0f0f0f) << 4);
     b = ((b >>> 8) & 0x00ff00ff) | ((b & 0x00ff00ff) << 8);
-    out[o + 1] = (((b >>> 16) | (b << 16)) >>> 0) * TWO_POW_M32;
+    out[o + 1] = (((b >>> 16) | (b << 16)) >>> 0) * TWO_POW_M32_L;
   }
 }
