@@ -333,6 +333,7 @@ function ExamSphereNote({ normalized, raw }: { normalized: number; raw: number }
   const closed = 21 - 4 * Math.PI;
   return (
     <Notice kind="info" testId="key-note">
+      <span className="tx-note-text">
       On the exam’s grid the texture is the linear function 21 + 4u − 20v, which bilinear filtering reproduces exactly. Normalized, (1/8, 1/4) gives{' '}
       {texPlain(normalized)} ({agreesWithKey(normalized, KEY_PRINTED.sphere) ? 'as the key prints' : `the key prints ${KEY_PRINTED.sphere.value}`}). Not
       normalized, (π/4, π/4) ≈ (0.785, 0.785) is still inside [0, 1], so no addressing is involved, and the value is 21 − 4π = {texPlain(closed)}; this
@@ -340,6 +341,7 @@ function ExamSphereNote({ normalized, raw }: { normalized: number; raw: number }
       {agreesWithKey(raw, KEY_PRINTED.sphereRaw)
         ? `The key’s ${KEY_PRINTED.sphereRaw.value} agrees.`
         : `The key prints ${KEY_PRINTED.sphereRaw.value}, which differs in the second decimal (the exact value rounds to ${raw.toFixed(2)}).`}
+      </span>
     </Notice>
   );
 }

@@ -153,7 +153,7 @@ export function GridView({ grid, opts, range, q, onMove, editing, selected, onSe
         ).map(([cls, i, j, t, w]) => (
           <li key={cls}>
             <span className={`tx-chip ${cls}`} />
-            T<sub>{i},{j}</sub> = {fmtShort(t)} · w = {fmtShort(w)}
+            T<sub>{i},{j}</sub>={fmtShort(t)}, w={fmtShort(w)}
           </li>
         ))}
       </ul>

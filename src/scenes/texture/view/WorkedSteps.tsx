@@ -36,19 +36,18 @@ export function nearestTex(grid: TextureGrid, q: Lookup, opts: LookupOptions, uN
   const vq = opts.vflip ? `${vName}'` : vName;
   if (opts.align === 'corner') {
     return [
-      `i = \\operatorname{round}\\big(${uName}\\,(N_u - 1)\\big) = \\operatorname{round}(${texNum(n.u)} \\cdot ${grid.width - 1}) = ${n.i}`,
-      `j = \\operatorname{round}\\big(${vq}\\,(N_v - 1)\\big) = \\operatorname{round}(${texNum(n.v)} \\cdot ${grid.height - 1}) = ${n.j}`,
-      `\\text{node } (${texNum(n.nodeU)},\\ ${texNum(n.nodeV)}),\\quad T_{${n.i},${n.j}} = ${texNum(n.value)}`,
+      `i &= \\operatorname{round}\\big(${uName}\\,(N_u - 1)\\big) = \\operatorname{round}(${texNum(n.u)} \\cdot ${grid.width - 1}) = ${n.i}`,
+      `j &= \\operatorname{round}\\big(${vq}\\,(N_v - 1)\\big) = \\operatorname{round}(${texNum(n.v)} \\cdot ${grid.height - 1}) = ${n.j}`,
+      `T_{${n.i},${n.j}} &= ${texNum(n.value)} \\quad \\text{(the node at } (${texNum(n.nodeU)},\\ ${texNum(n.nodeV)})\\text{)}`,
     ].join(' \\\\ ');
   }
   return [
-    `i = \\lfloor ${uName}\\,N_u \\rfloor = \\lfloor ${texNum(n.u)} \\cdot ${grid.width} \\rfloor \\to ${n.i}`,
-    `j = \\lfloor ${vq}\\,N_v \\rfloor = \\lfloor ${texNum(n.v)} \\cdot ${grid.height} \\rfloor \\to ${n.j}`,
-    `\\text{texel centre } (${texNum(n.nodeU)},\\ ${texNum(n.nodeV)}),\\quad T_{${n.i},${n.j}} = ${texNum(n.value)}`,
+    `i &= \\lfloor ${uName}\\,N_u \\rfloor = \\lfloor ${texNum(n.u)} \\cdot ${grid.width} \\rfloor \\to ${n.i}`,
+    `j &= \\lfloor ${vq}\\,N_v \\rfloor = \\lfloor ${texNum(n.v)} \\cdot ${grid.height} \\rfloor \\to ${n.j}`,
+    `T_{${n.i},${n.j}} &= ${texNum(n.value)} \\quad \\text{(the texel centred at } (${texNum(n.nodeU)},\\ ${texNum(n.nodeV)})\\text{)}`,
   ].join(' \\\\ ');
 }
 
-/** The key's three lines c_u, c_l, c, each with the division by the cell size. */
 export function bilinearTex(q: Lookup, opts: LookupOptions, uName = 'u', vName = 'v'): string {
   const b = q.bil;
   const s = q.steps;
@@ -73,7 +72,7 @@ export const QueryWorked = memo(function QueryWorked({ grid, opts, q, isExamQuer
   return (
     <div className="tx-worked" data-testid="worked-query">
       <h3>Nearest neighbour</h3>
-      <MathTex display tex={`\\begin{gathered}${nearestTex(grid, q, opts)}\\end{gathered}`} />
+      <MathTex display tex={`\\begin{aligned}${nearestTex(grid, q, opts)}\\end{aligned}`} />
       <h3>Bilinear, in the key’s steps</h3>
       <p className="tx-small">
         The cell’s nodes are u₀ = {texNum(b.u0)}, u₁ = {texNum(b.u1)}, v₀ = {texNum(b.v0)}, v₁ = {texNum(b.v1)}; the cell size is Δu ={' '}
