@@ -72,7 +72,7 @@ function evalChecked(p: ThetaPhiDensity, theta: number, phi: number): number {
     throw new Invalid({
       ok: false,
       reason: 'nonfinite',
-      message: `the density is not a finite number at θ = ${fmt(theta)}, φ = ${fmt(phi)} (got ${typeof v === 'number' ? String(v) : typeof v}); a pdf must be finite to be normalized`,
+      message: `the density is not a finite number at θ = ${fmt(theta)}, φ = ${fmt(phi)} (${typeof v !== 'number' ? `it gives a ${typeof v}` : Number.isNaN(v) ? 'it is undefined there' : 'it is infinite there'}); a pdf must be finite to be normalized`,
       at: { theta, phi },
     });
   }

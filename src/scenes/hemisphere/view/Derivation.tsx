@@ -37,7 +37,7 @@ export function Derivation({ lobe, exponent, custom, customTex, inverted }: { lo
           n={1}
           title="Normalize over solid angle (Q1a)"
           tex={[
-            `\\int_\\Omega p(\\omega)\\,d\\omega = k\\int_0^{\\pi/2}\\!\\cos\\theta\\sin\\theta\\,d\\theta\\int_0^{2\\pi}\\!e^{\\phi}\\,d\\phi = k\\cdot\\tfrac12\\cdot(e^{2\\pi}-1) = 1`,
+            `\\begin{aligned}\\int_\\Omega p(\\omega)\\,d\\omega &= k\\int_0^{\\pi/2}\\!\\cos\\theta\\sin\\theta\\,d\\theta\\int_0^{2\\pi}\\!e^{\\phi}\\,d\\phi \\\\ &= k\\cdot\\tfrac12\\cdot(e^{2\\pi}-1) = 1\\end{aligned}`,
             `k = \\frac{2}{e^{2\\pi}-1} = \\frac{2}{${n6(e.e2piMinus1)}} = ${n6(e.k)}`,
           ]}
         >
@@ -58,8 +58,8 @@ export function Derivation({ lobe, exponent, custom, customTex, inverted }: { lo
           n={3}
           title="Marginals"
           tex={[
-            `p(\\theta) = \\int_0^{2\\pi} p(\\theta,\\phi)\\,d\\phi = k\\sin\\theta\\cos\\theta\\,(e^{2\\pi}-1) = \\sin 2\\theta`,
-            `p(\\phi) = \\int_0^{\\pi/2} p(\\theta,\\phi)\\,d\\theta = \\frac{k}{2}e^{\\phi} = \\frac{e^{\\phi}}{e^{2\\pi}-1} \\qquad \\tfrac{k}{2} = ${n6(e.halfK)}`,
+            `\\begin{aligned}p(\\theta) &= \\int_0^{2\\pi} p(\\theta,\\phi)\\,d\\phi \\\\ &= k\\sin\\theta\\cos\\theta\\,(e^{2\\pi}-1) = \\sin 2\\theta\\end{aligned}`,
+            `\\begin{aligned}p(\\phi) &= \\int_0^{\\pi/2} p(\\theta,\\phi)\\,d\\theta = \\frac{k}{2}e^{\\phi} \\\\ &= \\frac{e^{\\phi}}{e^{2\\pi}-1}, \\qquad \\tfrac{k}{2} = ${n6(e.halfK)}\\end{aligned}`,
           ]}
         >
           The density is separable, p(θ, φ) = p(θ) p(φ), so θ and φ can be sampled independently. (The key's intermediate line for p(θ)
@@ -70,8 +70,10 @@ export function Derivation({ lobe, exponent, custom, customTex, inverted }: { lo
           n={5}
           title="Invert (Q1d)"
           tex={[
-            `\\theta = \\tfrac12\\arccos(1-2\\xi_1) = \\arcsin\\sqrt{\\xi_1},\\qquad \\phi = \\ln\\big((e^{2\\pi}-1)\\xi_2+1\\big)`,
-            `\\sin\\theta = \\sqrt{\\xi_1},\\quad \\cos\\theta = \\sqrt{1-\\xi_1},\\quad \\phi = \\operatorname{log1p}\\big(\\operatorname{expm1}(2\\pi)\\,\\xi_2\\big)`,
+            `\\theta = \\tfrac12\\arccos(1-2\\xi_1) = \\arcsin\\sqrt{\\xi_1}`,
+            `\\phi = \\ln\\big((e^{2\\pi}-1)\\xi_2+1\\big)`,
+            `\\sin\\theta = \\sqrt{\\xi_1},\\quad \\cos\\theta = \\sqrt{1-\\xi_1}`,
+            `\\phi = \\operatorname{log1p}\\big(\\operatorname{expm1}(2\\pi)\\,\\xi_2\\big)`,
           ]}
         >
           The second line is what the code runs: from cos 2θ = 1 − 2ξ₁ the half-angle identities give sin²θ = ξ₁ and cos²θ = 1 − ξ₁, so no
@@ -80,7 +82,10 @@ export function Derivation({ lobe, exponent, custom, customTex, inverted }: { lo
         <Step
           n={6}
           title="Worked example"
-          tex={`\\xi = (${ex.xi1}, ${ex.xi2})\\;\\mapsto\\; \\theta = ${n6(ex.theta)},\\ \\phi = ${n6(ex.phi)},\\ \\omega = (${n6(ex.sinTheta * Math.cos(ex.phi))},\\ ${n6(ex.sinTheta * Math.sin(ex.phi))},\\ ${n6(ex.cosTheta)})`}
+          tex={[
+            `\\xi = (${ex.xi1}, ${ex.xi2})\\;\\mapsto\\; \\theta = ${n6(ex.theta)},\\ \\phi = ${n6(ex.phi)}`,
+            `\\omega = (${n6(ex.sinTheta * Math.cos(ex.phi))},\\ ${n6(ex.sinTheta * Math.sin(ex.phi))},\\ ${n6(ex.cosTheta)})`,
+          ]}
         />
       </ol>
     );

@@ -71,6 +71,7 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
     const pos = o.pos.array as Float32Array;
     const col = o.col.array as Uint8Array;
     const start = a.shown;
+    const t0 = performance.now();
     for (let s = start; s < end; s += BATCH) {
       const e = Math.min(end, s + BATCH);
       const m = e - s;
@@ -85,6 +86,8 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
       }
     }
     if (end > start) {
+      // generation cost per batch, readable with performance.getEntriesByName('hemisphere-grow')
+      performance.measure('hemisphere-grow', { start: t0, end: performance.now(), detail: end - start });
       o.pos.clearUpdateRanges();
       o.pos.addUpdateRange(3 * start, 3 * (end - start));
       o.pos.needsUpdate = true;
@@ -102,6 +105,7 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
   const restart = () => {
     anim.current.shown = 0;
     anim.current.last = 0;
+    performance.clearMeasures('hemisphere-grow');
     const o = objs.current;
     if (o) o.geom.setDrawRange(0, 0);
     if (!anim.current.playing) grow(cfg.current.n);
@@ -228,7 +232,13 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
       a.last = now;
       const next = Math.max(a.shown + 1, Math.ceil(Math.max(1, a.shown) * Math.pow(10, dt / DECADE_SECONDS)));
       grow(next);
-      return a.shown < nn;
+      if (a.shown >= nn) {
+        a.playing = false;
+        a.last = 0;
+        setPlaying(false);
+        return false;
+      }
+      return true;
     });
     return () => {
       stop();

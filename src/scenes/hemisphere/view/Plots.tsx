@@ -8,10 +8,12 @@ import { Plot, type PlotTrace } from '../../../ui';
 import type { DrawStats } from '../model';
 
 const TWO_PI = 2 * Math.PI;
+/** Legend inside the plot's top-left corner (where both marginals are low), clear of the axis titles. */
+const LEGEND = { orientation: 'v', x: 0.02, y: 0.98, xanchor: 'left', yanchor: 'top', bgcolor: 'rgba(0,0,0,0)' };
 
 function histTraces(h: NonNullable<DrawStats['hist']>['theta'], name: string): PlotTrace[] {
   return [
-    { type: 'bar', x: Array.from(h.centers), y: Array.from(h.density), width: h.width, name: `samples (histogram of ${name})`, marker: { color: 'rgba(70,120,200,0.55)' } },
+    { type: 'bar', x: Array.from(h.centers), y: Array.from(h.density), width: h.width, name: `samples`, marker: { color: 'rgba(70,120,200,0.55)' } },
     { type: 'scatter', mode: 'lines', x: Array.from(h.curveX), y: Array.from(h.curveY), name: `p(${name})`, line: { color: '#d0502a', width: 2.5 } },
   ];
 }
@@ -26,13 +28,13 @@ export function MarginalPlots({ stats }: { stats: DrawStats }) {
       <Plot
         ariaLabel="Histogram of the sampled polar angles θ against the marginal density p(θ)"
         data={theta}
-        layout={{ title: { text: 'θ: histogram vs p(θ)' }, xaxis: { title: { text: 'θ (rad)' }, range: [0, Math.PI / 2] }, yaxis: { title: { text: 'density' } }, bargap: 0 }}
+        layout={{ title: { text: 'θ: histogram vs p(θ)' }, xaxis: { title: { text: 'θ (rad)' }, range: [0, Math.PI / 2] }, yaxis: { title: { text: 'density' } }, bargap: 0, legend: LEGEND }}
         testId="plot-theta"
       />
       <Plot
         ariaLabel="Histogram of the sampled azimuths φ against the marginal density p(φ)"
         data={phi}
-        layout={{ title: { text: 'φ: histogram vs p(φ)' }, xaxis: { title: { text: 'φ (rad)' }, range: [0, TWO_PI] }, yaxis: { title: { text: 'density' } }, bargap: 0 }}
+        layout={{ title: { text: 'φ: histogram vs p(φ)' }, xaxis: { title: { text: 'φ (rad)' }, range: [0, TWO_PI] }, yaxis: { title: { text: 'density' } }, bargap: 0, legend: LEGEND }}
         testId="plot-phi"
       />
     </div>

@@ -1,0 +1,224 @@
+/**
+ * Browser tests of #/hemisphere (exam Q1, Q2). Expected values come from closed forms
+ * (k = 2/(e^{2π} − 1), ∫ cos θ dω = π, …) and from the scene's own pure model run here in Node
+ * (same core code, same seed and point set), so "the readout equals the core's value" is checked
+ * directly. Nothing is copied from the answer key.
+ */
+import type { Page } from '@playwright/test';
+import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
+import { computeDrawStats, makeLobe } from '../../src/scenes/hemisphere/model';
+import { examLobeK, tabulateHemisphereDensity } from '../../src/core/sampling';
+import type { LobeId } from '../../src/scenes/hemisphere/params';
+
+const cosTheta = (t: number) => Math.cos(t);
+const rel = (a: number, b: number) => Math.abs(a - b) / Math.max(1e-300, Math.abs(b));
+
+/** Wait until the worker's statistics for the current parameters are on screen. */
+async function statsReady(page: Page) {
+  await expect(page.getByTestId('stats-status')).toHaveAttribute('data-state', 'ready', { timeout: 30_000 });
+}
+
+async function expectMatchesCore(page: Page, lobeId: LobeId, n: number, seed: number, exponent = 8, custom?: (t: number, p: number) => number) {
+  let tab = null;
+  if (custom) {
+    const r = tabulateHemisphereDensity(custom);
+    if (!r.ok) throw new Error(r.message);
+    tab = r.lobe;
+  }
+  const lobe = makeLobe(lobeId, exponent, tab)!;
+  const core = computeDrawStats(lobe, cosTheta, 'independent', seed, n);
+  expect(Number(await readout(page, 'k'))).toBe(lobe.k);
+  expect(Number(await readout(page, 'samples'))).toBe(n);
+  expect(rel(await readoutNumber(page, 'chi2-p'), core.chi2!.pValue)).toBeLessThan(1e-9);
+  expect(rel(await readoutNumber(page, 'mc-exact'), core.exact)).toBeLessThan(1e-12);
+  expect(rel(await readoutNumber(page, 'mc-uniform'), core.q2.uniform.estimate)).toBeLessThan(1e-12);
+  expect(rel(await readoutNumber(page, 'mc-importance'), core.q2.importance.estimate)).toBeLessThan(1e-12);
+  return core;
+}
+
+test.describe('Q1: the exam lobe', () => {
+  test('defaults: k = 2/(e^{2π} − 1), χ² accepts, readouts equal the core', async ({ page }) => {
+    await openScene(page, '#/hemisphere');
+    await statsReady(page);
+    const k = Number(await readout(page, 'k'));
+    expect(k).toBe(examLobeK());
+    expect(rel(k, 2 / (Math.exp(2 * Math.PI) - 1))).toBeLessThan(1e-15);
+    const core = await expectMatchesCore(page, 'exam', 20000, 1);
+    expect(core.chi2!.pass).toBe(true);
+    expect(rel(core.exact, Math.PI)).toBeLessThan(1e-12);
+    await expect(page.getByTestId('chi2-verdict')).toContainText('Accepted');
+    await expect(page.getByTestId('derivation')).toContainText('Normalize');
+  });
+
+  for (const [lobe, k] of [
+    ['uniform', 1 / (2 * Math.PI)],
+    ['cosine', 1 / Math.PI],
+    ['phong', 9 / (2 * Math.PI)],
+  ] as const) {
+    test(`lobe=${lobe}: k and every readout equal the core`, async ({ page }) => {
+      await openScene(page, `#/hemisphere?lobe=${lobe}&n=5000&seed=7`);
+      await statsReady(page);
+      expect(Number(await readout(page, 'k'))).toBeCloseTo(k, 15);
+      const core = await expectMatchesCore(page, lobe, 5000, 7);
+      expect(core.chi2!.pass).toBe(true);
+    });
+  }
+
+  test('the cosine lobe estimates ∫ cos θ dω with zero variance', async ({ page }) => {
+    await openScene(page, '#/hemisphere?lobe=cosine&n=1000');
+    await statsReady(page);
+    expect(rel(await readoutNumber(page, 'mc-importance'), Math.PI)).toBeLessThan(1e-12);
+  });
+
+  test('changing the lobe in the UI updates the URL and the readouts', async ({ page }) => {
+    await openScene(page, '#/hemisphere?n=2000');
+    await statsReady(page);
+    await page.getByTestId('lobe').selectOption('uniform');
+    await expect(page).toHaveURL(/lobe=uniform/);
+    await waitForReadout(page, 'k', (v) => Number(v) === 1 / (2 * Math.PI));
+    await statsReady(page);
+    await expectMatchesCore(page, 'uniform', 2000, 1);
+  });
+});
+
+test.describe("the key's inverted Jacobian", () => {
+  test('jacobian=inverted: a clear message, the divergence, and no garbage numbers', async ({ page }) => {
+    await openScene(page, '#/hemisphere?jacobian=inverted');
+    await expect(page.getByTestId('inverted-message')).toContainText('Not integrable');
+    await statsReady(page);
+    expect(await readout(page, 'samples')).toBe('none');
+    expect(await readout(page, 'chi2-p')).toBe('none');
+    expect(await readout(page, 'mc-importance')).toBe('none');
+    // part (a) is unaffected, and so is the uniform estimator
+    expect(Number(await readout(page, 'k'))).toBe(examLobeK());
+    expect(rel(await readoutNumber(page, 'mc-exact'), Math.PI)).toBeLessThan(1e-12);
+    // the partial integral −ln sin ε at the default ε = 1e-3
+    const partial = await readoutNumber(page, 'inverted-partial');
+    expect(rel(partial, -Math.log(Math.sin(1e-3)))).toBeLessThan(1e-12);
+    await expect(page.locator('main')).not.toContainText('NaN');
+    await expect(page.locator('main')).not.toContainText('Infinity');
+  });
+});
+
+test.describe('typed densities', () => {
+  test('lobe=custom with cos(theta): k ≈ 1/π and the readouts equal the core tabulation', async ({ page }) => {
+    await openScene(page, '#/hemisphere?lobe=custom&pdf=cos(theta)&n=4000&seed=3');
+    await statsReady(page);
+    const k = await readoutNumber(page, 'k');
+    expect(Math.abs(k * Math.PI - 1)).toBeLessThan(1e-3);
+    const core = await expectMatchesCore(page, 'custom', 4000, 3, 8, (t) => Math.cos(t));
+    expect(core.chi2!.pass).toBe(true);
+    await expect(page.getByTestId('derivation')).toContainText('Numerical steps');
+  });
+
+  test('typing a density in the field samples it', async ({ page }) => {
+    await openScene(page, '#/hemisphere?lobe=custom&n=3000');
+    await statsReady(page);
+    const input = page.getByTestId('pdf-input');
+    await input.fill('1');
+    await input.press('Enter');
+    await expect(page).toHaveURL(/pdf=1/);
+    await waitForReadout(page, 'k', (v) => Math.abs(Number(v) * 2 * Math.PI - 1) < 1e-9);
+    await statsReady(page);
+    expect(Number(await readout(page, 'samples'))).toBe(3000);
+  });
+
+  for (const [name, pdf, message] of [
+    ['negative', 'cos(theta) - 0.5', /negative/],
+    ['not integrable at the pole', 'cos(theta)/sin(theta)^2', /not integrable/],
+    ['not integrable at the horizon', '1/cos(theta)', /not integrable/],
+    ['not finite', 'sqrt(1 - 2*theta)', /not a finite number/],
+    ['a syntax error', 'cos(theta', /syntax|parenthesis|expected/i],
+    ['an unknown symbol', 'cos(x)', /unknown|x/],
+  ] as const) {
+    test(`a typed density that is ${name}: clear message, nothing breaks`, async ({ page }) => {
+      await openScene(page, `#/hemisphere?lobe=custom&n=2000&pdf=${encodeURIComponent(pdf)}`);
+      await expect(page.getByTestId('custom-error')).toContainText(message);
+      await statsReady(page);
+      expect(await readout(page, 'k')).toBe('none');
+      expect(await readout(page, 'samples')).toBe('none');
+      expect(await readout(page, 'chi2-p')).toBe('none');
+      expect(await readout(page, 'mc-importance')).toBe('none');
+      // Q2's exact value and the uniform estimate still work
+      expect(rel(await readoutNumber(page, 'mc-exact'), Math.PI)).toBeLessThan(1e-12);
+      await expect(page.locator('main')).not.toContainText('NaN');
+      // and fixing it recovers
+      await page.getByTestId('pdf-input').fill('cos(theta)');
+      await page.getByTestId('pdf-input').press('Enter');
+      await expect(page.getByTestId('custom-error')).toHaveCount(0);
+      await waitForReadout(page, 'k', (v) => Math.abs(Number(v) * Math.PI - 1) < 1e-3);
+    });
+  }
+
+  test('a bad integrand f: message, estimates off, the rest works', async ({ page }) => {
+    await openScene(page, '#/hemisphere?n=2000&f=' + encodeURIComponent('cos(theta'));
+    await statsReady(page);
+    await expect(page.locator('.expr-field [role=alert]').first()).toBeVisible();
+    expect(await readout(page, 'mc-uniform')).toBe('none');
+    expect(await readout(page, 'mc-importance')).toBe('none');
+    expect(Number(await readout(page, 'k'))).toBe(examLobeK());
+  });
+});
+
+test.describe('robustness and extras', () => {
+  test('malformed URL parameters fall back with a notice naming them', async ({ page }) => {
+    await openScene(page, '#/hemisphere?lobe=banana&n=abc&seed=-5');
+    await expect(page.getByTestId('param-notice')).toContainText('lobe');
+    await expect(page.getByTestId('param-notice')).toContainText('n');
+    await statsReady(page);
+    expect(Number(await readout(page, 'k'))).toBe(examLobeK());
+    expect(Number(await readout(page, 'samples'))).toBeGreaterThan(0);
+  });
+
+  test('repeat many times: the mean of 1000 estimates centres on ∫ f dω', async ({ page }) => {
+    await openScene(page, '#/hemisphere?n=256');
+    await statsReady(page);
+    await page.getByTestId('repeat-button').click();
+    await expect(page.getByTestId('repeat-summary')).toContainText('unbiased', { timeout: 30_000 });
+  });
+
+  test('the stability panel compares the forms against the 64-digit reference', async ({ page }) => {
+    await openScene(page, '#/hemisphere?n=100');
+    await page.getByTestId('stability-details').locator('summary').click();
+    await expect(page.getByTestId('stability')).toBeVisible({ timeout: 30_000 });
+    await expect(page.getByTestId('stability').locator('.err-bad').first()).toBeVisible();
+  });
+
+  test('10⁶ points: growth animates to a million, frame times recorded', async ({ page }) => {
+    test.setTimeout(120_000);
+    await openScene(page, '#/hemisphere?n=1000000');
+    const view = page.getByTestId('hemisphere-3d');
+    await view.scrollIntoViewIfNeeded();
+    await expect(view).toHaveAttribute('data-status', 'ready', { timeout: 30_000 });
+    // rAF deltas while the points grow (and a while after)
+    const frames = await page.evaluate(
+      () =>
+        new Promise<number[]>((resolve) => {
+          const d: number[] = [];
+          let last = performance.now();
+          const t0 = last;
+          const tick = (now: number) => {
+            d.push(now - last);
+            last = now;
+            if (now - t0 < 6000) requestAnimationFrame(tick);
+            else resolve(d);
+          };
+          requestAnimationFrame(tick);
+        }),
+    );
+    await expect(page.getByTestId('shown-count')).toHaveAttribute('data-value', '1000000', { timeout: 60_000 });
+    const sorted = [...frames].sort((a, b) => a - b);
+    const q = (p: number) => sorted[Math.min(sorted.length - 1, Math.floor(p * sorted.length))]!;
+    console.log(`frame times over 6 s with growth to 10⁶: ${frames.length} frames, median ${q(0.5).toFixed(1)} ms, p90 ${q(0.9).toFixed(1)} ms, max ${q(1).toFixed(1)} ms`);
+    // orbiting the full million re-renders on demand
+    const box = await view.boundingBox();
+    const t1 = await page.evaluate(() => performance.now());
+    await page.mouse.move(box!.x + box!.width / 2, box!.y + box!.height / 2);
+    await page.mouse.down();
+    for (let i = 0; i < 10; i++) await page.mouse.move(box!.x + box!.width / 2 + 10 * i, box!.y + box!.height / 2);
+    await page.mouse.up();
+    const t2 = await page.evaluate(() => performance.now());
+    console.log(`10 orbit drags with 10⁶ points: ${(t2 - t1).toFixed(0)} ms`);
+    expect(frames.length).toBeGreaterThan(5);
+  });
+});
