@@ -22,13 +22,13 @@ export function texNum(x: number, digits = 6): string {
 
 /** A factor in a product: negatives in parentheses. */
 function fac(x: number): string {
-  const s = texNum(x);
+  const s = texNum(x, 5);
   return x < 0 ? `(${s})` : s;
 }
 
 /** "(a − b)" with a sign-safe subtrahend. */
 function diff(a: number, b: number): string {
-  return `(${texNum(a)} - ${fac(b)})`;
+  return `(${texNum(a, 5)} - ${fac(b)})`;
 }
 
 export function nearestTex(grid: TextureGrid, q: Lookup, opts: LookupOptions, uName = 'u', vName = 'v'): string {
@@ -53,9 +53,9 @@ export function bilinearTex(q: Lookup, opts: LookupOptions, uName = 'u', vName =
   const s = q.steps;
   const vq = opts.vflip ? `${vName}'` : vName;
   return [
-    `c_u &= \\frac{(u_1 - ${uName})\\,T_{${b.i0},${b.j1}} + (${uName} - u_0)\\,T_{${b.i1},${b.j1}}}{\\Delta u} \\\\ &= \\frac{${diff(b.u1, b.u)} \\cdot ${fac(b.t01)} + ${diff(b.u, b.u0)} \\cdot ${fac(b.t11)}}{${texNum(b.du)}} = ${texNum(s.cu)}`,
-    `c_l &= \\frac{(u_1 - ${uName})\\,T_{${b.i0},${b.j0}} + (${uName} - u_0)\\,T_{${b.i1},${b.j0}}}{\\Delta u} \\\\ &= \\frac{${diff(b.u1, b.u)} \\cdot ${fac(b.t00)} + ${diff(b.u, b.u0)} \\cdot ${fac(b.t10)}}{${texNum(b.du)}} = ${texNum(s.cl)}`,
-    `c &= \\frac{(v_1 - ${vq})\\,c_l + (${vq} - v_0)\\,c_u}{\\Delta v} \\\\ &= \\frac{${diff(b.v1, b.v)} \\cdot ${fac(s.cl)} + ${diff(b.v, b.v0)} \\cdot ${fac(s.cu)}}{${texNum(b.dv)}} = ${texNum(s.c)}`,
+    `c_u &= \\frac{(u_1 - ${uName})\\,T_{${b.i0},${b.j1}} + (${uName} - u_0)\\,T_{${b.i1},${b.j1}}}{\\Delta u} \\\\ &= \\frac{${diff(b.u1, b.u)} \\cdot ${fac(b.t01)} + ${diff(b.u, b.u0)} \\cdot ${fac(b.t11)}}{${texNum(b.du, 5)}} = ${texNum(s.cu)}`,
+    `c_l &= \\frac{(u_1 - ${uName})\\,T_{${b.i0},${b.j0}} + (${uName} - u_0)\\,T_{${b.i1},${b.j0}}}{\\Delta u} \\\\ &= \\frac{${diff(b.u1, b.u)} \\cdot ${fac(b.t00)} + ${diff(b.u, b.u0)} \\cdot ${fac(b.t10)}}{${texNum(b.du, 5)}} = ${texNum(s.cl)}`,
+    `c &= \\frac{(v_1 - ${vq})\\,c_l + (${vq} - v_0)\\,c_u}{\\Delta v} \\\\ &= \\frac{${diff(b.v1, b.v)} \\cdot ${fac(s.cl)} + ${diff(b.v, b.v0)} \\cdot ${fac(s.cu)}}{${texNum(b.dv, 5)}} = ${texNum(s.c)}`,
   ].join(' \\\\[4pt] ');
 }
 
