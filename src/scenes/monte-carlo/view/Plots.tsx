@@ -4,7 +4,7 @@
  * histogram of independent estimates. Long runs happen in the worker; the plots redraw when a
  * partial result arrives (the worker posts every ~120–150 ms, the hook coalesces to one frame).
  */
-import { useEffect, useMemo, useRef, type ReactNode } from 'react';
+import { useEffect, useMemo, useRef, useState, type ReactNode } from 'react';
 import { formatNumber, NumberField, Panel, Plot, Readout, useSeenOnce, type PlotTrace } from '../../../ui';
 import { useWorkerTask } from '../../../workers';
 import { histogram } from '../model';
@@ -14,7 +14,21 @@ const COLORS = ['#1f5fa8', '#a13f00', '#1d7a3a', '#7b3fa1', '#b8860b', '#d6336c'
 const arr = (a: ArrayLike<number>) => Array.from(a);
 /** Legend above the plot (below, it collides with the x-axis title on narrow screens). */
 const LEGEND = { orientation: 'h', x: 0, xanchor: 'left', y: 1.02, yanchor: 'bottom' };
-const M = { l: 60, r: 12, t: 12, b: 48 };
+const MARGIN = { l: 60, r: 12, t: 12, b: 48 };
+/** Extra plot height on phones, where the legend above the plot takes several rows. */
+function useLegendRoom(): number {
+  const q = '(max-width: 600px)';
+  const [narrow, setNarrow] = useState(() => typeof window !== 'undefined' && typeof window.matchMedia === 'function' && window.matchMedia(q).matches);
+  useEffect(() => {
+    if (typeof window.matchMedia !== 'function') return;
+    const m = window.matchMedia(q);
+    const on = () => setNarrow(m.matches);
+    m.addEventListener('change', on);
+    return () => m.removeEventListener('change', on);
+  }, []);
+  return narrow ? 110 : 0;
+}
+
 function Heading({ children }: { children: ReactNode }) {
   return <h3 className="mc-plot-title">{children}</h3>;
 }
@@ -32,7 +46,7 @@ export function FunctionPlot({ curve, samples, a, b }: { curve: { x: Float64Arra
     }
     return t;
   }, [curve, samples, a, b]);
-  return <Plot data={data} height={260} ariaLabel="The integrand f(x) and the sampling pdf p(x), scaled to the same height, over [a, b]" layout={{ legend: LEGEND, margin: M, xaxis: { title: { text: 'x' } } }} />;
+  return <Plot data={data} height={260} ariaLabel="The integrand f(x) and the sampling pdf p(x), scaled to the same height, over [a, b]" layout={{ legend: LEGEND, margin: MARGIN, xaxis: { title: { text: 'x' } } }} />;
 }
 
 /** Start a worker task when the panel is first seen and whenever its key changes (debounced). */
@@ -123,7 +137,7 @@ export function ConvergencePanel({ args, nMax, exact, makeWorker, present }: { a
     // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [series, tiny, nMax]);
 
-  const h = present ? 380 : 300;
+  const h = (present ? 380 : 300) + useLegendRoom();
   return (
     <Panel title="Convergence as N grows (Q4 d)" className="mc-plots">
       <div ref={box}>
@@ -135,14 +149,14 @@ export function ConvergencePanel({ args, nMax, exact, makeWorker, present }: { a
           data={estData}
           height={h}
           ariaLabel="Running estimate against the number of samples N, on a log axis, for several strategies, with the exact value"
-          layout={{ xaxis: { type: 'log', title: { text: 'N (samples)' } }, yaxis: { title: { text: 'estimate' } }, legend: LEGEND, margin: M }}
+          layout={{ xaxis: { type: 'log', title: { text: 'N (samples)' } }, yaxis: { title: { text: 'estimate' } }, legend: LEGEND, margin: MARGIN }}
         />
         <Heading>|error| of one run, log-log, with N^−½ and N^−1 guides</Heading>
         <Plot
           data={errData}
           height={h}
           ariaLabel="Absolute error against N on log-log axes, with N^-1/2 and N^-1 guide lines and fitted slopes"
-          layout={{ xaxis: { type: 'log', title: { text: 'N' } }, yaxis: { type: 'log', title: { text: '|estimate − exact|' }, exponentformat: 'power' }, legend: LEGEND, margin: M }}
+          layout={{ xaxis: { type: 'log', title: { text: 'N' } }, yaxis: { type: 'log', title: { text: '|estimate − exact|' }, exponentformat: 'power' }, legend: LEGEND, margin: MARGIN }}
         />
         {exactLabels.length ? (
           <p className="mc-note" data-testid="exact-strategies">
@@ -215,6 +229,7 @@ export function RmsePanel({ args, nMax, runs, exact, makeWorker, onRuns }: { arg
   );
 
   const runsDone = rm[0]?.runs ?? 0;
+  const h = 300 + useLegendRoom();
   return (
     <Panel title="RMSE over independent runs, and against run time" className="mc-plots">
       <div ref={box}>
@@ -229,16 +244,16 @@ export function RmsePanel({ args, nMax, runs, exact, makeWorker, onRuns }: { arg
         <Heading>RMSE over the runs (band: 10–90 % of |error|)</Heading>
         <Plot
           data={rmseData}
-          height={300}
+          height={h}
           ariaLabel="Root mean square error over independent runs against N, log-log, with bands from the 10th to the 90th percentile of the absolute error"
-          layout={{ xaxis: { type: 'log', title: { text: 'N' } }, yaxis: { type: 'log', title: { text: 'RMSE' }, exponentformat: 'power' }, legend: LEGEND, margin: M }}
+          layout={{ xaxis: { type: 'log', title: { text: 'N' } }, yaxis: { type: 'log', title: { text: 'RMSE' }, exponentformat: 'power' }, legend: LEGEND, margin: MARGIN }}
         />
         <Heading>Accuracy per millisecond: RMSE against run time</Heading>
         <Plot
           data={timeData}
-          height={300}
+          height={h}
           ariaLabel="RMSE against the measured wall-clock time of one estimate, log-log, per strategy"
-          layout={{ xaxis: { type: 'log', title: { text: 'time per estimate (ms, measured in this browser)' } }, yaxis: { type: 'log', title: { text: 'RMSE' }, exponentformat: 'power' }, legend: LEGEND, margin: M }}
+          layout={{ xaxis: { type: 'log', title: { text: 'ms per estimate (measured here)' } }, yaxis: { type: 'log', title: { text: 'RMSE' }, exponentformat: 'power' }, legend: LEGEND, margin: MARGIN }}
         />
         {rmExactLabels.length ? <p className="mc-note">Not drawn: {rmExactLabels.join(', ')} (RMSE at rounding level: zero variance).</p> : null}
         <p className="mc-note">
@@ -255,6 +270,7 @@ type HistResult = { estimates: Float64Array; exact?: number };
 export function HistogramPanel({ args, N, exact, makeWorker, onN }: { args: ProblemArgs; N: number; exact: number; makeWorker: () => Worker; onN: (v: number) => void }) {
   const box = useRef<HTMLDivElement>(null);
   const M = 2000;
+  const room = useLegendRoom();
   const key = JSON.stringify([args, N]);
   const task = useAutoRun<HistResult, HistResult>('histogram', makeWorker, { ...args, N, M }, key, box);
   const est = (task.result ?? task.partial)?.estimates;
@@ -296,9 +312,9 @@ export function HistogramPanel({ args, N, exact, makeWorker, onN }: { args: Prob
         </div>
         <Plot
           data={data}
-          height={280}
+          height={280 + room / 2}
           ariaLabel="Histogram of many independent estimates at fixed N, with their mean and the exact integral"
-          layout={{ xaxis: { title: { text: 'estimate ⟨I⟩' } }, yaxis: { title: { text: 'count' } }, bargap: 0, legend: LEGEND, margin: M }}
+          layout={{ xaxis: { title: { text: 'estimate ⟨I⟩' } }, yaxis: { title: { text: 'count' } }, bargap: 0, legend: LEGEND, margin: MARGIN }}
         />
         <p className="mc-note">
           E[⟨I⟩] = ∫ f dx for any valid p: each estimate misses, but their mean lands on the integral (within a few standard errors), whatever N is. Only the spread shrinks as N grows.
