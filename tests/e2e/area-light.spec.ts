@@ -115,3 +115,16 @@ test('changing the strategy updates the URL and the estimate; the floor images f
   await expect(page.getByText(/64 samples per pixel \(done\)/)).toBeVisible({ timeout: 30000 });
   for (const s of ['area', 'solid-angle', 'cosine']) await readoutNumber(page, `image-rmse-${s}`);
 });
+
+test('large n is estimated in a worker without blocking; the result agrees within 3σ', async ({ page }) => {
+  await openScene(page, '#/area-light?n=300000&strategy=cosine&seed=5');
+  const { waitForReadout } = await import('./fixtures');
+  await waitForReadout(page, 'estimate', (v) => v !== 'none' && Number.isFinite(Number(v)), 30000);
+  // the page stays responsive meanwhile: a control reacts at once
+  await expect(page.getByTestId('strategy')).toBeEnabled();
+  const ref = await readoutNumber(page, 'reference');
+  const est = await readoutNumber(page, 'estimate');
+  const se = await readoutNumber(page, 'stderr');
+  expect(se).toBeGreaterThan(0);
+  expect(Math.abs(est - ref)).toBeLessThanOrEqual(3 * se);
+});

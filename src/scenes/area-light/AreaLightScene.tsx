@@ -10,7 +10,7 @@ import { MathTex, Notice, NumberField, Panel, Plot, Readout, SceneLayout, Select
 import type { PlotTrace } from '../../ui';
 import { useWorkerTask } from '../../workers';
 import type { LightStrategy } from '../../core/lights';
-import { STRATEGIES, STRATEGY_LABEL, buildModel, convergence, drawSamples, estimateAll, floorJob, patchModel, targetValue, type TimingPoint } from './model';
+import { STRATEGIES, STRATEGY_LABEL, STRATEGY_SHORT, buildModel, convergence, drawSamples, estimateAll, floorJob, patchModel, targetValue, type StrategyEstimate, type TimingPoint } from './model';
 import { PRESETS, schema, type AreaLightParams } from './params';
 import { Scene3D } from './view/Scene3D';
 import { FloorImages } from './view/FloorImages';
@@ -19,6 +19,8 @@ import './area-light.css';
 type Schema = typeof schema;
 
 const DRAWN = 256;
+/** Largest n per strategy estimated on the main thread. */
+const SYNC_MAX = 65536;
 const COLORS: Record<LightStrategy, string> = { area: '#b34700', 'solid-angle': '#1f5fa8', cosine: '#1d7a3a' };
 const makeWorker = () => new Worker(new URL('./floor.worker.ts', import.meta.url), { type: 'module' });
 
@@ -31,7 +33,24 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
   const n = params.n;
   const seed = params.seed;
 
-  const estimates = useMemo(() => estimateAll(model, n, seed), [model, n, seed]);
+  // Up to SYNC_MAX samples per strategy the estimates are computed here (a few ms); beyond, in a
+  // worker, so a slider drag never blocks the page. Same seeds and streams: the same numbers.
+  const big = n > SYNC_MAX;
+  const syncEstimates = useMemo(() => (big ? null : estimateAll(model, n, seed)), [big, model, n, seed]);
+  const estTask = useWorkerTask<StrategyEstimate[]>(makeWorker, 'estimates');
+  const estKey = JSON.stringify(params);
+  const { start: startEst, cancel: cancelEst } = estTask;
+  useEffect(() => {
+    if (!big) {
+      cancelEst();
+      return;
+    }
+    const t = setTimeout(() => startEst({ ...params }), 150);
+    return () => clearTimeout(t);
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+  }, [big, estKey, startEst, cancelEst]);
+  const estimates: StrategyEstimate[] = syncEstimates ?? (estTask.running ? null : estTask.result) ?? STRATEGIES.map((s) => ({ strategy: s, estimate: NaN, stderr: NaN, n }));
+  const pending = big && (estTask.running || !estTask.result);
   const chosen = estimates.find((e) => e.strategy === strategy)!;
   const target = targetValue(model);
   const drawn = useMemo(() => drawSamples(model, strategy, DRAWN, seed), [model, strategy, seed]);
@@ -169,6 +188,20 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
     </>
   );
 
+  const scenePanel = (
+    <>
+      <Panel title="The scene">
+        <Scene3D model={model} strategy={strategy} samples={drawn.points} terms={drawn.terms} patch={patch} height={vpHeight} dark={dark} />
+        <p className="al-legend">
+          Yellow: the emitting side of the light (its back is dark). Dots: the first {DRAWN} samples of the {STRATEGY_LABEL[strategy]} strategy
+          {strategy === 'cosine' ? ' as directions on the unit hemisphere' : ' on the light, and their directions on the unit hemisphere'} — green where the
+          sample contributes, red where it is wasted (below the horizon, blocked, or missing the light). Orange: the Q6(a) patch and its projection on the unit
+          sphere.
+        </p>
+      </Panel>
+    </>
+  );
+
   const main = (
     <>
       {model.messages.map((m, i) => (
@@ -176,6 +209,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
           {m.text}
         </Notice>
       ))}
+      {mode.present ? scenePanel : null}
       <Panel title="Reflected radiance L_o at p">
         <div className="al-readouts">
           <Readout id="reference" label="reference (Lambert, no occluder)" value={model.reference} digits={7} />
@@ -187,7 +221,11 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
           <Readout id="projected-solid-angle" label="∫ cos θ dω (clipped to the horizon)" value={model.projectedSolidAngle} digits={7} unit="sr" />
         </div>
         <p className="al-verdict" data-testid="al-verdict">
-          {zTarget === null
+          {pending ? (
+            <>
+              <progress aria-label="Estimating" /> Estimating with n = {n} samples per strategy in the background…
+            </>
+          ) : zTarget === null
             ? chosen.stderr === 0 && chosen.estimate === target
               ? 'Every sample gave the same value: the estimate is exact here.'
               : 'No standard error yet (n < 2), or no analytic value to compare with.'
@@ -199,19 +237,21 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
             <tr>
               <th scope="col">strategy</th>
               <th scope="col">estimate</th>
-              <th scope="col">± std. error</th>
-              <th scope="col">(estimate − reference)/σ</th>
+              <th scope="col">std. error σ</th>
+              <th scope="col">(est. − ref.)/σ</th>
             </tr>
           </thead>
           <tbody>
             {estimates.map((e) => (
               <tr key={e.strategy} className={e.strategy === strategy ? 'al-current' : undefined}>
-                <th scope="row">{STRATEGY_LABEL[e.strategy]}</th>
+                <th scope="row" title={STRATEGY_LABEL[e.strategy]}>
+                  {STRATEGY_SHORT[e.strategy]}
+                </th>
                 <td>
-                  <Readout id={`estimate-${e.strategy}`} label="" value={e.estimate} digits={6} />
+                  <Readout id={`estimate-${e.strategy}`} label="" value={e.estimate} digits={5} />
                 </td>
                 <td>
-                  <Readout id={`stderr-${e.strategy}`} label="" value={e.stderr} digits={3} />
+                  <Readout id={`stderr-${e.strategy}`} label="" value={e.stderr} digits={2} />
                 </td>
                 <td>{e.stderr > 0 && Number.isFinite(target) ? fmt((e.estimate - target) / e.stderr, 3) : '—'}</td>
               </tr>
@@ -219,15 +259,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
           </tbody>
         </table>
       </Panel>
-      <Panel title="The scene">
-        <Scene3D model={model} strategy={strategy} samples={drawn.points} terms={drawn.terms} patch={patch} height={vpHeight} dark={dark} />
-        <p className="al-legend">
-          Yellow: the emitting side of the light (its back is dark). Dots: the first {DRAWN} samples of the {STRATEGY_LABEL[strategy]} strategy
-          {strategy === 'cosine' ? ' as directions on the unit hemisphere' : ' on the light, and their directions on the unit hemisphere'} — green where the
-          sample contributes, red where it is wasted (below the horizon, blocked, or missing the light). Orange: the Q6(a) patch and its projection on the unit
-          sphere.
-        </p>
-      </Panel>
+      {mode.present ? null : scenePanel}
       <Panel title="Q6(a): why dω = dA cos θ_l / r²">
         <p>
           A small patch of area dA at distance r, turned by θ_l away from the direction to p, shows p only its foreshortened area dA cos θ_l; at distance r
@@ -285,7 +317,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
           height={mode.present ? 360 : 280}
           layout={{ xaxis: { type: 'log', title: { text: 'time per estimate (ms)' } }, yaxis: { type: 'log', title: { text: 'RMSE' } } }}
         />
-        <p className="al-note">Each point: N = 16 … 4096 samples, RMSE over 24 independent runs (measured in a worker on this machine). Lower-left wins.</p>
+        <p className="al-note">Each point: N = 16 … 4096 samples, RMSE over 24 independent runs, run time measured in a worker on this machine (best of three; noisy when the machine is busy). Lower-left wins.</p>
       </Panel>
       <Panel title="The floor, rendered with each strategy">
         <FloorImages job={job} jobKey={jobKey} />

@@ -29,6 +29,7 @@ import { Rng } from '../../core/random';
 import { schema, type AreaLightParams } from './params';
 
 export const STRATEGIES: readonly LightStrategy[] = ['area', 'solid-angle', 'cosine'];
+export const STRATEGY_SHORT: Record<LightStrategy, string> = { area: 'area (key)', 'solid-angle': 'solid angle', cosine: 'cosine' };
 export const STRATEGY_LABEL: Record<LightStrategy, string> = {
   area: 'uniform area (the key)',
   'solid-angle': 'solid angle (spherical rectangle)',

@@ -57,7 +57,8 @@ function frame(o: Objects, m: AreaLightModel) {
   const tx = (px + m.lc[0]) / 2, ty = (py + m.lc[1]) / 2, tz = (pz + m.lc[2]) / 2;
   const span = Math.max(2.5, Math.hypot(m.lc[0] - px, m.lc[1] - py, m.lc[2] - pz) + Math.max(m.w, m.h));
   const cam = o.ctx.camera;
-  cam.position.set(tx + 0.9 * span, ty - 1.25 * span, tz + 0.75 * span);
+  // Low, from the side: the emitting underside of a ceiling light is in view.
+  cam.position.set(tx + 0.8 * span, ty - 1.3 * span, pz + 0.25 * span);
   cam.far = Math.max(1000, span * 20);
   cam.updateProjectionMatrix();
   o.ctx.controls.target.set(tx, ty, tz);
