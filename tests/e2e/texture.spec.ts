@@ -4,6 +4,7 @@
  * corner-aligned nodes (i/4, j/4) is the linear function L(u, v) = 21 + 4u − 20v, which bilinear
  * filtering reproduces exactly.
  */
+import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
 
 const L = (u: number, v: number) => 21 + 4 * u - 20 * v;
@@ -317,4 +318,15 @@ test.describe('interaction', () => {
     expect(u).toBeGreaterThan(0);
     expect(u).toBeLessThan(0.1);
   });
+});
+
+test('axe finds no serious or critical violations (light, dark, present)', async ({ page }) => {
+  for (const q of ['theme=light', 'theme=dark', 'present=1&align=center&wrap=repeat&u=0.02']) {
+    await openScene(page, `#/texture?${q}`);
+    await page.getByTestId('sphere-view').scrollIntoViewIfNeeded();
+    await expect(page.getByTestId('sphere-view')).toHaveAttribute('data-status', 'ready');
+    const results = await new AxeBuilder({ page }).analyze();
+    const bad = results.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical');
+    expect(bad.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`), q).toEqual([]);
+  }
 });
