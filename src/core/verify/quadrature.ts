@@ -84,16 +84,23 @@ export interface AdaptiveOptions {
   relTol?: number;
   /** Absolute tolerance (default 1e-13 × cell area). */
   absTol?: number;
-  /** Maximum number of 2×2 subdivisions (default 5): bounds the work for discontinuous integrands. */
+  /** Maximum number of successive bisections of a cell (default 24). */
   maxDepth?: number;
+  /** Maximum number of integrand evaluations (default 400 000): bounds the work in every case. */
+  maxEvals?: number;
 }
 
 /**
- * ∫∫ f(x, y) dx dy over [x0,x1]×[y0,y1] by adaptive quadrature: a cell's Gauss–Legendre estimate is
- * compared with the sum over its four quarters; cells that disagree by more than the tolerance are
- * split, up to `maxDepth` times (so the cost is bounded even for a discontinuous f, such as a
- * tabulated piecewise-constant pdf). Measure: Lebesgue measure dx dy of the rectangle.
- * Source: standard adaptive cubature (e.g. Genz & Malik 1980, simplified to tensor Gauss rules).
+ * ∫∫ f(x, y) dx dy over [x0,x1]×[y0,y1] by globally adaptive quadrature. Each cell carries its
+ * Gauss–Legendre estimate and the two estimates from halving it along x and along y; the axis where
+ * halving changed the estimate most (where f is least smooth) is its split axis and that change its
+ * error estimate. The cell with the largest error is split first, until the summed error is within
+ * tolerance, every cell has been bisected `maxDepth` times, or the evaluation budget is spent (the
+ * best estimate so far is returned). Anisotropic bisection resolves edge singularities such as
+ * cos^n θ with n → 0 at cos θ = 0, and tabulated (discontinuous) densities, with bounded work.
+ * Measure: Lebesgue measure dx dy of the rectangle.
+ * Source: globally adaptive cubature after Genz & Malik (1980) / QUADPACK's error-ordered
+ * subdivision (Piessens et al. 1983), with tensor Gauss–Legendre rules.
  */
 export function adaptiveIntegrate2D(
   f: (x: number, y: number) => number,
@@ -105,38 +112,111 @@ export function adaptiveIntegrate2D(
 ): number {
   const order = opts.order ?? 7;
   const relTol = opts.relTol ?? 1e-10;
-  const maxDepth = opts.maxDepth ?? 5;
+  const maxDepth = opts.maxDepth ?? 24;
   const absTol = opts.absTol ?? 1e-13 * Math.abs((x1 - x0) * (y1 - y0));
+  const perCell = 4 * order * order;
+  let evalsLeft = (opts.maxEvals ?? 400000) - order * order;
   const whole = gaussLegendre2D(f, x0, x1, y0, y1, order);
-  return refine(f, x0, x1, y0, y1, whole, order, relTol, absTol, maxDepth);
+  if (!Number.isFinite(whole)) return whole;
+
+  const cells: Cell[] = [];
+  const heap: number[] = []; // indices into cells, max-heap on error
+  const push = (c: Cell) => {
+    cells.push(c);
+    heap.push(cells.length - 1);
+    let i = heap.length - 1;
+    while (i > 0) {
+      const p = (i - 1) >> 1;
+      if (cells[heap[p]!]!.err >= cells[heap[i]!]!.err) break;
+      [heap[p], heap[i]] = [heap[i]!, heap[p]!];
+      i = p;
+    }
+  };
+  const pop = (): Cell => {
+    const top = cells[heap[0]!]!;
+    const last = heap.pop()!;
+    if (heap.length > 0) {
+      heap[0] = last;
+      let i = 0;
+      for (;;) {
+        const l = 2 * i + 1;
+        const r = l + 1;
+        let m = i;
+        if (l < heap.length && cells[heap[l]!]!.err > cells[heap[m]!]!.err) m = l;
+        if (r < heap.length && cells[heap[r]!]!.err > cells[heap[m]!]!.err) m = r;
+        if (m === i) break;
+        [heap[m], heap[i]] = [heap[i]!, heap[m]!];
+        i = m;
+      }
+    }
+    return top;
+  };
+  const analyse = (ax: number, bx: number, ay: number, by: number, est: number, depth: number): Cell => {
+    evalsLeft -= perCell;
+    const xm = 0.5 * (ax + bx);
+    const ym = 0.5 * (ay + by);
+    const a = gaussLegendre2D(f, ax, xm, ay, by, order);
+    const b = gaussLegendre2D(f, xm, bx, ay, by, order);
+    const c = gaussLegendre2D(f, ax, bx, ay, ym, order);
+    const d = gaussLegendre2D(f, ax, bx, ym, by, order);
+    const ex = Math.abs(a + b - est);
+    const ey = Math.abs(c + d - est);
+    const splitX = ex >= ey;
+    return {
+      x0: ax,
+      x1: bx,
+      y0: ay,
+      y1: by,
+      depth,
+      splitX,
+      lo: splitX ? a : c,
+      hi: splitX ? b : d,
+      best: splitX ? a + b : c + d,
+      err: depth >= maxDepth ? 0 : Math.max(ex, ey),
+    };
+  };
+
+  let root = analyse(x0, x1, y0, y1, whole, 0);
+  if (!Number.isFinite(root.best)) return root.best;
+  push(root);
+  let total = root.best;
+  let errSum = root.err;
+  while (heap.length > 0 && evalsLeft >= 2 * perCell) {
+    if (errSum <= Math.max(absTol, relTol * Math.abs(total))) break;
+    const c = pop();
+    if (c.err === 0) {
+      push(c);
+      break;
+    }
+    const xm = 0.5 * (c.x0 + c.x1);
+    const ym = 0.5 * (c.y0 + c.y1);
+    const k1 = c.splitX ? analyse(c.x0, xm, c.y0, c.y1, c.lo, c.depth + 1) : analyse(c.x0, c.x1, c.y0, ym, c.lo, c.depth + 1);
+    const k2 = c.splitX ? analyse(xm, c.x1, c.y0, c.y1, c.hi, c.depth + 1) : analyse(c.x0, c.x1, ym, c.y1, c.hi, c.depth + 1);
+    if (!Number.isFinite(k1.best) || !Number.isFinite(k2.best)) return k1.best + k2.best;
+    total += k1.best + k2.best - c.best;
+    errSum += k1.err + k2.err - c.err;
+    push(k1);
+    push(k2);
+    c.err = -1; // retired (no longer a leaf)
+  }
+  // sum the leaves afresh (no drift from the running updates)
+  let sum = 0;
+  for (const i of heap) sum += cells[i]!.best;
+  root = cells[0]!;
+  return heap.length > 0 ? sum : root.best;
 }
 
-function refine(
-  f: (x: number, y: number) => number,
-  x0: number,
-  x1: number,
-  y0: number,
-  y1: number,
-  whole: number,
-  order: number,
-  relTol: number,
-  absTol: number,
-  depth: number,
-): number {
-  const xm = 0.5 * (x0 + x1);
-  const ym = 0.5 * (y0 + y1);
-  const a = gaussLegendre2D(f, x0, xm, y0, ym, order);
-  const b = gaussLegendre2D(f, xm, x1, y0, ym, order);
-  const c = gaussLegendre2D(f, x0, xm, ym, y1, order);
-  const d = gaussLegendre2D(f, xm, x1, ym, y1, order);
-  const parts = a + b + c + d;
-  if (!Number.isFinite(parts)) return parts;
-  if (depth <= 0 || Math.abs(parts - whole) <= Math.max(absTol, relTol * Math.abs(parts))) return parts;
-  const at = absTol / 4;
-  return (
-    refine(f, x0, xm, y0, ym, a, order, relTol, at, depth - 1) +
-    refine(f, xm, x1, y0, ym, b, order, relTol, at, depth - 1) +
-    refine(f, x0, xm, ym, y1, c, order, relTol, at, depth - 1) +
-    refine(f, xm, x1, ym, y1, d, order, relTol, at, depth - 1)
-  );
+interface Cell {
+  x0: number;
+  x1: number;
+  y0: number;
+  y1: number;
+  depth: number;
+  splitX: boolean;
+  /** estimates of the two halves along the split axis, and their sum */
+  lo: number;
+  hi: number;
+  best: number;
+  /** error estimate: |change of the estimate when halved along the split axis| (0 at max depth) */
+  err: number;
 }
