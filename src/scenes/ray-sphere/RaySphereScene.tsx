@@ -114,10 +114,10 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
       <Panel title="Result" className="rs-result">
         <CaseBanner res={res} />
         <div className="readouts">
-          <Readout id="a" label="a = d·d" value={res?.a ?? null} />
-          <Readout id="b" label="b = 2 d·(o − c)" value={res?.b ?? null} />
-          <Readout id="c" label="c = |o − c|² − r²" value={res?.c ?? null} />
-          <Readout id="discriminant" label={`Δ = b² − 4ac (${params.method === 'naive' ? 'textbook' : 'robust'})`} value={res?.discriminant ?? null} />
+          <Readout id="a" label="a = d·d" value={res?.a ?? null} digits={10} />
+          <Readout id="b" label="b = 2 d·(o − c)" value={res?.b ?? null} digits={10} />
+          <Readout id="c" label="c = |o − c|² − r²" value={res?.c ?? null} digits={10} />
+          <Readout id="discriminant" label={`Δ = b² − 4ac (${params.method === 'naive' ? 'textbook' : 'robust'})`} value={res?.discriminant ?? null} digits={10} />
           <Readout id="t0" label="t₀" value={res?.t0 ?? null} digits={10} />
           <Readout id="t1" label="t₁" value={res?.t1 ?? null} digits={10} />
           <Readout id="t-hit" label="t-hit (nearest t ≥ 0)" value={res?.tHit ?? null} digits={10} />
@@ -133,7 +133,7 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
         <CrossSection o={o} d={d} c={c} r={r} res={res} distanceRatio={model.distanceRatio} onChange={(patch) => setSoon(patch)} />
       </Panel>
       <Panel title="3D view">
-        <View3D o={o} d={d} c={c} r={r} res={res} distanceRatio={model.distanceRatio} height={mode.present ? 420 : 320} />
+        <View3D o={o} d={d} c={c} r={r} res={res} distanceRatio={model.distanceRatio} height={mode.present ? 420 : 320} dark={mode.theme === 'dark'} />
       </Panel>
       <Panel title="g(t) = a t² + b t + c and its roots">
         <GPlot model={slow} />
@@ -252,7 +252,8 @@ function Derivation({ model }: { model: RaySphereModel }) {
       <MathTex display tex={`\\lVert \\mathbf o + t\\,\\mathbf d - \\mathbf c \\rVert^2 = r^2`} />
       <p>Expand with f = o − c (a dot product with itself is a squared length):</p>
       <MathTex display tex={`(\\mathbf d\\cdot\\mathbf d)\\,t^2 + 2\\,(\\mathbf d\\cdot\\mathbf f)\\,t + (\\mathbf f\\cdot\\mathbf f - r^2) = 0`} />
-      <MathTex display tex={`a t^2 + b t + c = 0,\\qquad a = \\mathbf d\\cdot\\mathbf d,\\; b = 2\\,\\mathbf d\\cdot\\mathbf f,\\; c = \\mathbf f\\cdot\\mathbf f - r^2`} />
+      <MathTex display tex={`a t^2 + b t + c = 0`} />
+      <MathTex display tex={`a = \\mathbf d\\cdot\\mathbf d,\\quad b = 2\\,\\mathbf d\\cdot\\mathbf f,\\quad c = \\mathbf f\\cdot\\mathbf f - r^2`} />
       <p>
         With o = {v(o)}, d = {v(d)}, c = {v(c)}, r = {tx(r, 4)}:
       </p>

@@ -70,7 +70,8 @@ export function CrossSection({ o, d, c, r, res, distanceRatio, onChange }: Cross
     C2 = toFrame(fr, c);
     dir2 = [(d[0] * fr.e1[0] + d[1] * fr.e1[1] + d[2] * fr.e1[2]) / dl, (d[0] * fr.e2[0] + d[1] * fr.e2[1] + d[2] * fr.e2[2]) / dl];
   }
-  const roots = res && res.t0 !== null ? [res.t0, res.t1!] : [];
+  // a tangent's double root is drawn once
+  const roots = res && res.t0 !== null ? (res.t0 === res.t1 ? [res.t0] : [res.t0, res.t1!]) : [];
   // root points along the drawn line (t in units of |d|)
   const rootPts = roots.map((t): [number, number] => [O2[0] + t * dl * dir2[0], O2[1] + t * dl * dir2[1]]);
 
@@ -217,7 +218,7 @@ export function CrossSection({ o, d, c, r, res, distanceRatio, onChange }: Cross
             <g key={i} transform={`translate(${cl(X(p[0]))} ${cl(Y(p[1]))})`} className={`rs-root${isHit ? ' hit' : ''}${t < 0 ? ' behind' : ''}`}>
               <circle r={isHit ? 6.5 : 5} />
               <text x={8} y={i === 0 ? -9 : 18} className="rs-label">
-                {`t${i === 0 ? '₀' : '₁'}`}
+                {roots.length === 1 ? 't₀ = t₁' : `t${i === 0 ? '₀' : '₁'}`}
                 {isHit ? ' (hit)' : t < 0 ? ' < 0' : ''}
               </text>
             </g>

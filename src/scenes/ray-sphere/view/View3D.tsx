@@ -18,6 +18,7 @@ export interface View3DProps {
   res: RaySphereHit | null;
   distanceRatio: number;
   height?: number;
+  dark?: boolean;
 }
 
 interface Objects {
@@ -33,15 +34,15 @@ interface Objects {
 
 const FAR = 60;
 
-export function View3D({ o, d, c, r, res, distanceRatio, height = 320 }: View3DProps) {
+export function View3D({ o, d, c, r, res, distanceRatio, height = 320, dark = false }: View3DProps) {
   const objs = useRef<Objects | null>(null);
-  const latest = useRef({ o, d, c, r, res, distanceRatio });
-  latest.current = { o, d, c, r, res, distanceRatio };
+  const latest = useRef({ o, d, c, r, res, distanceRatio, dark });
+  latest.current = { o, d, c, r, res, distanceRatio, dark };
 
   const update = () => {
     const ob = objs.current;
     if (!ob) return;
-    const { o, d, c, r, res, distanceRatio } = latest.current;
+    const { o, d, c, r, res, distanceRatio, dark } = latest.current;
     const far = distanceRatio > FAR;
     // view centre and scale (in doubles)
     let centre: V3;
@@ -57,7 +58,7 @@ export function View3D({ o, d, c, r, res, distanceRatio, height = 320 }: View3DP
       centre = [(lo[0]! + hi[0]!) / 2, (lo[1]! + hi[1]!) / 2, (lo[2]! + hi[2]!) / 2];
       extent = Math.max(hi[0]! - lo[0]!, hi[1]! - lo[1]!, hi[2]! - lo[2]!) / 2 || 1;
     }
-    const s = 1.3 / extent;
+    const s = 1.05 / extent;
     const map = (p: readonly number[]): [number, number, number] => [(p[0]! - centre[0]) * s, (p[1]! - centre[1]) * s, (p[2]! - centre[2]) * s];
     const dl = Math.hypot(d[0], d[1], d[2]);
     const dh: V3 = [d[0] / dl, d[1] / dl, d[2] / dl];
@@ -89,6 +90,7 @@ export function View3D({ o, d, c, r, res, distanceRatio, height = 320 }: View3DP
     const inView = Math.hypot(...om) < 6;
     ob.origin.visible = inView;
     ob.origin.position.set(...om);
+    (ob.origin.material as THREE.MeshBasicMaterial).color.set(dark ? 0xf0f0f0 : 0x222222);
     ob.arrow.visible = inView && !far;
     ob.arrow.position.set(...om);
     ob.arrow.setDirection(new ob.ctx.THREE.Vector3(...dh));
