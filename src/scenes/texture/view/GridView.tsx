@@ -254,12 +254,12 @@ const StaticLayer = memo(function StaticLayer({
       {items}
       <rect x={x0} y={y0} width={x1 - x0} height={y1 - y0} className="tx-frame" />
       {ticks.map((t) => (
-        <text key={`ut${t}`} x={sx(t, win)} y={VB - 8} className="tx-tick" textAnchor="middle" fontSize={22}>
+        <text key={`ut${t}`} x={sx(t, win)} y={VB - 8} className="tx-tick" textAnchor="middle" fontSize={28}>
           {Number(t.toPrecision(3))}
         </text>
       ))}
       {vticks.map((t) => (
-        <text key={`vt${t}`} x={4} y={sy(t, win) + 8} className="tx-tick" fontSize={22}>
+        <text key={`vt${t}`} x={4} y={sy(t, win) + 8} className="tx-tick" fontSize={28}>
           {Number(t.toPrecision(3))}
         </text>
       ))}

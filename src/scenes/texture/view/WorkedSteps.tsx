@@ -36,15 +36,15 @@ export function nearestTex(grid: TextureGrid, q: Lookup, opts: LookupOptions, uN
   const vq = opts.vflip ? `${vName}'` : vName;
   if (opts.align === 'corner') {
     return [
-      `i &= \\operatorname{round}\\big(${uName}\\,(N_u - 1)\\big) = \\operatorname{round}(${texNum(n.u)} \\cdot ${grid.width - 1}) = ${n.i}`,
-      `j &= \\operatorname{round}\\big(${vq}\\,(N_v - 1)\\big) = \\operatorname{round}(${texNum(n.v)} \\cdot ${grid.height - 1}) = ${n.j}`,
-      `T_{${n.i},${n.j}} &= ${texNum(n.value)} \\quad \\text{(the node at } (${texNum(n.nodeU)},\\ ${texNum(n.nodeV)})\\text{)}`,
+      `i &= \\operatorname{round}\\big(${uName}\\,(N_u - 1)\\big) \\\\ &= \\operatorname{round}(${texNum(n.u)} \\cdot ${grid.width - 1}) = ${n.i}`,
+      `j &= \\operatorname{round}\\big(${vq}\\,(N_v - 1)\\big) \\\\ &= \\operatorname{round}(${texNum(n.v)} \\cdot ${grid.height - 1}) = ${n.j}`,
+      `T_{${n.i},${n.j}} &= ${texNum(n.value)} \\\\ &\\text{(the node at } (${texNum(n.nodeU)},\\ ${texNum(n.nodeV)})\\text{)}`,
     ].join(' \\\\ ');
   }
   return [
     `i &= \\lfloor ${uName}\\,N_u \\rfloor = \\lfloor ${texNum(n.u)} \\cdot ${grid.width} \\rfloor \\to ${n.i}`,
     `j &= \\lfloor ${vq}\\,N_v \\rfloor = \\lfloor ${texNum(n.v)} \\cdot ${grid.height} \\rfloor \\to ${n.j}`,
-    `T_{${n.i},${n.j}} &= ${texNum(n.value)} \\quad \\text{(the texel centred at } (${texNum(n.nodeU)},\\ ${texNum(n.nodeV)})\\text{)}`,
+    `T_{${n.i},${n.j}} &= ${texNum(n.value)} \\\\ &\\text{(the texel centred at } (${texNum(n.nodeU)},\\ ${texNum(n.nodeV)})\\text{)}`,
   ].join(' \\\\ ');
 }
 
