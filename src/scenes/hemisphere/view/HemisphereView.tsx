@@ -209,6 +209,10 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
     ctx.controls.update();
 
     objs.current = { geom, pos, col, points, material, grid: null };
+    if (!cfg.current.lobe) {
+      anim.current.playing = false;
+      setPlaying(false);
+    }
     buildGrid();
     restart();
 
@@ -251,8 +255,8 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
   useEffect(() => {
     if (!objs.current) return;
     buildGrid();
-    anim.current.playing = true;
-    setPlaying(true);
+    anim.current.playing = !!lobe;
+    setPlaying(!!lobe);
     restart();
     // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [lobe, kind, seed, n]);

@@ -8,6 +8,8 @@ import { MathTex, Notice, Plot, Slider, Readout, formatNumber } from '../../../u
 import { examLobeK, invertedJacobianDensity, invertedJacobianPartialIntegral } from '../../../core/sampling';
 import { invertedJacobianSeries } from '../model';
 
+const LEGEND = { orientation: 'v', x: 0.02, y: 0.98, xanchor: 'left', yanchor: 'top', bgcolor: 'rgba(0,0,0,0)' };
+
 export function InvertedJacobian() {
   const [eps, setEps] = useState(1e-3);
   const series = useMemo(() => invertedJacobianSeries(60), []);
@@ -41,7 +43,7 @@ export function InvertedJacobian() {
         <Plot
           ariaLabel="The density cot θ near θ = 0, on log axes: it grows like 1/θ"
           data={[{ type: 'scatter', mode: 'lines', x: dens.x, y: dens.y, name: 'cot θ', line: { color: '#c0392b', width: 2.5 } }]}
-          layout={{ title: { text: 'cot θ near θ = 0' }, xaxis: { type: 'log', title: { text: 'θ (rad)' } }, yaxis: { type: 'log', title: { text: 'cot θ' } } }}
+          layout={{ title: { text: 'cot θ near θ = 0' }, xaxis: { type: 'log', title: { text: 'θ (rad)' } }, yaxis: { type: 'log', title: { text: 'cot θ' } }, showlegend: false }}
         />
         <Plot
           ariaLabel="The partial integral minus ln sin epsilon against epsilon: it grows without bound as epsilon shrinks"
@@ -49,7 +51,7 @@ export function InvertedJacobian() {
             { type: 'scatter', mode: 'lines+markers', x: Array.from(series.eps), y: Array.from(series.partial), name: '−ln sin ε', line: { color: '#1f5fa8' }, marker: { size: 4 } },
             { type: 'scatter', mode: 'markers', x: [eps], y: [partial], name: 'ε chosen', marker: { size: 11, color: '#c0392b' } },
           ]}
-          layout={{ title: { text: 'partial integral: no limit' }, xaxis: { type: 'log', title: { text: 'ε (rad)' }, autorange: 'reversed' }, yaxis: { title: { text: '∫_ε^{π/2} cot θ dθ' } } }}
+          layout={{ title: { text: 'partial integral: no limit' }, xaxis: { type: 'log', title: { text: 'ε (rad)' }, autorange: 'reversed' }, yaxis: { title: { text: '−ln sin ε' } }, legend: LEGEND }}
         />
       </div>
     </div>

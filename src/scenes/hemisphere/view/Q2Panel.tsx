@@ -53,10 +53,21 @@ export function RepeatView({ result, exact, runs, perRun }: { result: RepeatResu
   const im = useMemo(() => meanSe(result.importance), [result]);
   const hasImp = Number.isFinite(im.mean);
   const data = useMemo(() => {
+    // one set of bins for both estimators, so their spreads compare at a glance
+    let lo = Infinity;
+    let hi = -Infinity;
+    for (const arr of hasImp ? [result.uniform, result.importance] : [result.uniform])
+      for (const x of arr)
+        if (Number.isFinite(x)) {
+          lo = Math.min(lo, x);
+          hi = Math.max(hi, x);
+        }
+    const size = hi > lo ? (hi - lo) / 60 : 1;
+    const xbins = { start: lo - size / 2, end: hi + size / 2, size };
     const traces: Record<string, unknown>[] = [
-      { type: 'histogram', x: Array.from(result.uniform), name: 'uniform', opacity: 0.55, marker: { color: '#1f5fa8' }, nbinsx: 40 },
+      { type: 'histogram', x: Array.from(result.uniform), name: 'uniform', opacity: 0.6, marker: { color: '#1f5fa8' }, xbins, autobinx: false },
     ];
-    if (hasImp) traces.push({ type: 'histogram', x: Array.from(result.importance), name: 'importance', opacity: 0.55, marker: { color: '#d0502a' }, nbinsx: 40 });
+    if (hasImp) traces.push({ type: 'histogram', x: Array.from(result.importance), name: 'importance', opacity: 0.55, marker: { color: '#d0502a' }, xbins, autobinx: false });
     return traces;
   }, [result, hasImp]);
   return (
@@ -77,6 +88,11 @@ export function RepeatView({ result, exact, runs, perRun }: { result: RepeatResu
         {hasImp ? `, of the importance estimates ${formatNumber(im.mean, 6)} ± ${formatNumber(im.se, 2)}` : ''}; the exact value is{' '}
         {formatNumber(exact, 6)} (dashed line). Spread of one estimate: {formatNumber(u.sd, 3)} uniform
         {hasImp ? `, ${formatNumber(im.sd, 3)} importance` : ''}. Both are unbiased: E[⟨I⟩] = ∫ f dω.
+        {hasImp && im.sd > 1.05 * u.sd
+          ? ' Here importance sampling is worse than uniform: p is not shaped like f, so f/p is large where p is small (for the exam lobe and f = cos θ, f/p = e^{−φ}/k, huge near φ = 0).'
+          : hasImp && im.sd < 0.95 * u.sd
+            ? ' Here importance sampling wins: p follows f more closely than the uniform density does.'
+            : ''}
       </p>
     </div>
   );

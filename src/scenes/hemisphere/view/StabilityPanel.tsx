@@ -64,7 +64,7 @@ export function StabilityPanel() {
                   .map((r) => (
                     <tr key={r.xi}>
                       <th scope="row">{xiLabel(r.xi)}</th>
-                      <td className="mono">{r.reference.toPrecision(10)}</td>
+                      <td className="mono">{r.reference !== 0 && Math.abs(r.reference) < 1e-3 ? r.reference.toExponential(9) : r.reference.toPrecision(10)}</td>
                       {r.forms.map((f) => (
                         <FragmentCell key={f.id} relError={f.relError} ulps={f.ulps} />
                       ))}
