@@ -20,25 +20,25 @@ import { rectFacesPoint } from './rectLight';
 
 /**
  * Clip a polygon (flat xyz array of vertices, relative to the shading point) to the half-space
- * n · v ≥ 0 (Sutherland–Hodgman against one plane through the origin). Returns a new flat array
- * (possibly empty). Domain: finite vertices, unit (or any nonzero) n. Source: Sutherland &
- * Hodgman, "Reentrant polygon clipping", CACM 17(1), 1974.
+ * n · v ≥ offset (Sutherland–Hodgman against one plane; offset 0: a plane through the origin).
+ * Returns a new flat array (possibly empty). Domain: finite vertices, nonzero n. Source:
+ * Sutherland & Hodgman, "Reentrant polygon clipping", CACM 17(1), 1974.
  */
-export function clipPolygonToHalfSpace(verts: readonly number[], nx: number, ny: number, nz: number): number[] {
+export function clipPolygonToHalfSpace(verts: readonly number[], nx: number, ny: number, nz: number, offset = 0): number[] {
   const out: number[] = [];
   const m = verts.length / 3;
   for (let i = 0; i < m; i++) {
     const j = (i + 1) % m;
     const ax = verts[3 * i]!, ay = verts[3 * i + 1]!, az = verts[3 * i + 2]!;
     const bx = verts[3 * j]!, by = verts[3 * j + 1]!, bz = verts[3 * j + 2]!;
-    const da = ax * nx + ay * ny + az * nz;
-    const db = bx * nx + by * ny + bz * nz;
+    const da = ax * nx + ay * ny + az * nz - offset;
+    const db = bx * nx + by * ny + bz * nz - offset;
     if (da >= 0) out.push(ax, ay, az);
     if ((da >= 0 && db < 0) || (da < 0 && db >= 0)) {
       const t = da / (da - db);
       // The point on the plane; snap its normal component to exactly 0.
       let cx = ax + t * (bx - ax), cy = ay + t * (by - ay), cz = az + t * (bz - az);
-      const dc = cx * nx + cy * ny + cz * nz;
+      const dc = cx * nx + cy * ny + cz * nz - offset;
       const nn = nx * nx + ny * ny + nz * nz;
       cx -= (dc * nx) / nn; cy -= (dc * ny) / nn; cz -= (dc * nz) / nn;
       if (db !== 0) out.push(cx, cy, cz); // db = 0: b itself lies on the plane and is pushed next
@@ -135,43 +135,45 @@ export function clipPolygonToBox(poly: readonly number[], w: number, h: number):
   return cur;
 }
 
+/** Rays parallel to the light's plane within this fraction of p's distance are not projected. */
+const SLAB_EPS = 1e-7;
+
 /**
  * ∫ max(0, cos θ) V dω over the rectangle light seen from p (normal +z) with a rectangular
- * occluder: the occluder's shadow on the light's plane is its central projection from p (a convex
- * quadrilateral); the visible part of the light is the light minus that quad clipped to the light,
- * and by additivity ∫_visible = ∫_light − ∫_(light ∩ shadow), each by Lambert's formula.
- * Domain: the occluder must lie wholly between p and the light's plane (every corner strictly in
- * front of the plane as seen from p), or wholly beyond it (then it casts no shadow and the result
- * is the unoccluded value); otherwise NaN (no closed form here). Measure: projected solid angle.
- * Source: Lambert 1760 / Arvo 1995 (polygon irradiance), Sutherland–Hodgman clipping.
+ * occluder. Only the part of the occluder between p and the light's plane can block it, so the
+ * occluder is first clipped to that slab (0 < distance towards the light ≤ p's distance to the
+ * plane; the near side is cut at a relative 1e-7 so no ray parallel to the plane is projected);
+ * the clipped polygon's shadow on the light's plane is its central projection from p (convex);
+ * the visible part of the light is the light minus that shadow clipped to the light, and by
+ * additivity ∫_visible = ∫_light − ∫_(light ∩ shadow), each by Lambert's formula (with the horizon
+ * clip). Domain: any placement (an occluder beyond the light or behind p casts no shadow).
+ * Measure: projected solid angle. Source: Lambert 1760 / Arvo 1995 (polygon irradiance),
+ * Sutherland–Hodgman clipping.
  */
 export function rectProjectedSolidAngleOccluded(light: RectLight, occluder: RectLight, px: number, py: number, pz: number): number {
   const base = rectProjectedSolidAngle(light, px, py, pz);
   if (base === 0 || !(occluder.area > 0)) return base;
-  const n = light.normal;
-  const planeD = (light.center[0] - px) * n[0] + (light.center[1] - py) * n[1] + (light.center[2] - pz) * n[2];
-  let before = 0, beyond = 0;
+  // m = −n_l points from p towards the light's plane; sigma = p's distance to the plane (> 0 here).
+  const mx = -light.normal[0], my = -light.normal[1], mz = -light.normal[2];
+  const sigma = (light.center[0] - px) * mx + (light.center[1] - py) * my + (light.center[2] - pz) * mz;
+  let v: number[] = [];
+  for (const c of occluder.corners) v.push(c[0] - px, c[1] - py, c[2] - pz);
+  v = clipPolygonToHalfSpace(v, mx, my, mz, SLAB_EPS * sigma);
+  v = clipPolygonToHalfSpace(v, -mx, -my, -mz, -sigma);
+  if (v.length < 9) return base;
   const poly2: number[] = [];
-  for (const c of occluder.corners) {
-    const dx = c[0] - px, dy = c[1] - py, dz = c[2] - pz;
-    const dn = dx * n[0] + dy * n[1] + dz * n[2];
-    // t: where the ray p + t (c − p) meets the light's plane; t > 1 means c is in front of it.
-    const t = dn !== 0 ? planeD / dn : -Infinity;
-    if (t > 1) {
-      before++;
-      const hx = px + t * dx - light.corner[0], hy = py + t * dy - light.corner[1], hz = pz + t * dz - light.corner[2];
-      poly2.push(hx * light.ex[0] + hy * light.ex[1] + hz * light.ex[2], hx * light.ey[0] + hy * light.ey[1] + hz * light.ey[2]);
-    } else if (t > 0 && t <= 1) beyond++;
-    else return NaN;
+  for (let i = 0; i < v.length; i += 3) {
+    const h = v[i]! * mx + v[i + 1]! * my + v[i + 2]! * mz;
+    const t = sigma / h; // ≥ 1: the ray through the occluder point meets the plane at p + t v
+    const hx = px + t * v[i]! - light.corner[0], hy = py + t * v[i + 1]! - light.corner[1], hz = pz + t * v[i + 2]! - light.corner[2];
+    poly2.push(hx * light.ex[0] + hy * light.ex[1] + hz * light.ex[2], hx * light.ey[0] + hy * light.ey[1] + hz * light.ey[2]);
   }
-  if (beyond === 4) return base;
-  if (before !== 4) return NaN;
   const clipped = clipPolygonToBox(poly2, light.width, light.height);
   if (clipped.length < 6) return base;
-  const v: number[] = [];
+  const w: number[] = [];
   for (let i = 0; i < clipped.length; i += 2) {
     const a = clipped[i]!, b = clipped[i + 1]!;
-    for (let k = 0; k < 3; k++) v.push(light.corner[k]! + a * light.ex[k]! + b * light.ey[k]! - (k === 0 ? px : k === 1 ? py : pz));
+    for (let k = 0; k < 3; k++) w.push(light.corner[k]! + a * light.ex[k]! + b * light.ey[k]! - (k === 0 ? px : k === 1 ? py : pz));
   }
-  return Math.max(0, base - polygonProjectedSolidAngle(v));
+  return Math.max(0, base - polygonProjectedSolidAngle(w));
 }

@@ -130,9 +130,28 @@ describe('area-light estimators agree with the analytic reference', () => {
       const r = estimateAreaLight(s, st, 200000, 31, i);
       expect(Math.abs(r.estimate - occRef)).toBeLessThan(3 * r.stderr);
     }
-    // An occluder beyond the light casts no shadow; one straddling p's level has no closed form here.
+    // An occluder beyond the light or wholly below p casts no shadow.
     expect(rectProjectedSolidAngleOccluded(light, makeRectLight([0, 0, 5], 1, 1, 0), 0, 0, 0)).toBeCloseTo(ref / (s.rho / Math.PI) / s.L, 14);
-    expect(rectProjectedSolidAngleOccluded(light, makeRectLight([0, 0, 0], 1, 1, 90), 0, 0, 0)).toBeNaN();
+    expect(rectProjectedSolidAngleOccluded(light, makeRectLight([0, 0, -1], 1, 1, 0), 0, 0, 0)).toBeCloseTo(ref / (s.rho / Math.PI) / s.L, 14);
+  });
+
+  it('occluded analytic value when the occluder straddles p’s level or pierces the light’s plane', () => {
+    const light = makeRectLight([0, 0.8, 1.2], 1.5, 1.2, -50);
+    const cases = [
+      makeRectLight([0.1, 0.4, 0.1], 0.6, 0.8, -90), // vertical plate standing through the floor beside p
+      makeRectLight([0.2, 0.7, 1.0], 0.8, 0.8, 30), // a plate that crosses the light's plane
+    ];
+    for (const occ of cases) {
+      const s = setup(light, [0, 0, 0], occ);
+      const ps = rectProjectedSolidAngleOccluded(light, occ, 0, 0, 0);
+      const occRef = (s.rho / Math.PI) * s.L * ps;
+      expect(Number.isFinite(occRef)).toBe(true);
+      expect(occRef).toBeLessThan(lambertianFloorRadiance(light, 0, 0, 0, s.L, s.rho));
+      for (const [i, st] of STRATEGIES.entries()) {
+        const r = estimateAreaLight(s, st, 200000, 57, i);
+        expect(Math.abs(r.estimate - occRef), st).toBeLessThan(3 * r.stderr);
+      }
+    }
   });
 
   it('Welford accumulators merge: two halves give the same mean as the whole', () => {
