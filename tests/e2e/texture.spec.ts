@@ -119,6 +119,28 @@ test.describe('edges: u and v exactly 0 and 1', () => {
   }
 });
 
+test.describe('texel centres at the edges and outside', () => {
+  // 2 × 2: top row 7, 10; bottom row 3, −1 (texel (i, j) with j = 0 at the bottom)
+  const T = (i: number, j: number) => [3, -1, 7, 10][j * 2 + i];
+  const cases: [string, number, number, number][] = [
+    // wrap, u, v, expected bilinear (from the GL rules: s = uN − ½, taps addressed per index)
+    ['clamp', 0, 0, T(0, 0)],
+    ['clamp', 1, 1, T(1, 1)],
+    ['clamp', -0.3, 1.7, T(0, 1)],
+    ['mirror', 0, 0, T(0, 0)], // mirrored tap −1 → 0: the edge texel meets itself
+    ['mirror', 1, 0, T(1, 0)],
+    ['mirror', -0.25, 0.25, T(0, 0)], // reflection of u = 0.25, the centre of texel 0
+    ['repeat', 0, 0, (T(0, 0) + T(1, 0) + T(0, 1) + T(1, 1)) / 4], // all four, half each way
+    ['repeat', 1.25, -0.75, T(0, 0)], // = (0.25, 0.25)
+  ];
+  for (const [wrap, u, v, want] of cases) {
+    test(`${wrap} at (${u}, ${v})`, async ({ page }) => {
+      await openScene(page, `#/texture?grid=7,10;3,-1&align=center&wrap=${wrap}&u=${u}&v=${v}`);
+      close(await readoutNumber(page, 'bilinear'), want, 1e-12);
+    });
+  }
+});
+
 test.describe('grid sizes', () => {
   test('2 × 2: the textbook bilinear formula of the four corners', async ({ page }) => {
     await openScene(page, '#/texture?grid=7,10;3,-1&u=0.25&v=0.75');
