@@ -7,7 +7,7 @@
 import { useEffect, useRef } from 'react';
 import type * as THREE from 'three';
 import { Viewport, type ViewportContext } from '../../../three';
-import type { LookupOptions, TextureGrid } from '../../../core/texture';
+import { nodeCoord, type LookupOptions, type TextureGrid } from '../../../core/texture';
 import { textureImage } from '../model';
 
 const TW = 256;
@@ -18,6 +18,7 @@ const SEG_V = 48;
 interface Objects {
   ctx: ViewportContext;
   tex: THREE.DataTexture;
+  nodeLines: THREE.LineSegments;
   marker: THREE.Mesh;
   ray: THREE.Line;
 }
@@ -38,6 +39,41 @@ function imageFor(grid: TextureGrid, opts: LookupOptions, range: { min: number; 
   // uses uv.y = 1 − θ/π, so uv.y = 0 is θ = π, i.e. v = vMax as well: no flip needed.
   const window = normalize ? { uMin: 0, uMax: 1, vMin: 0, vMax: 1 } : { uMin: 0, uMax: 2 * Math.PI, vMin: 0, vMax: Math.PI };
   return new Uint8Array(textureImage(grid, opts, 'bilinear', TW, TH, range, window).buffer);
+}
+
+/**
+ * The grid's node lines on the sphere (meridians at the nodes' u, parallels at their v), as line
+ * segments just above the surface; empty for grids larger than 16 per side.
+ */
+function nodeLinePositions(grid: TextureGrid, opts: LookupOptions, normalize: boolean): Float32Array {
+  if (Math.max(grid.width, grid.height) > 16) return new Float32Array(0);
+  const su = normalize ? 2 * Math.PI : 1; // φ = su · u
+  const sv = normalize ? Math.PI : 1; // θ = sv · v
+  const R = 1.004;
+  const pts: number[] = [];
+  const seg = 48;
+  for (let i = 0; i < grid.width; i++) {
+    const phi = su * nodeCoord(i, grid.width, opts.align);
+    if (phi >= 2 * Math.PI - 1e-9 && normalize) continue; // u = 1 is the seam again
+    for (let k = 0; k < seg; k++) {
+      for (const t of [k, k + 1]) {
+        const th = (Math.PI * t) / seg;
+        pts.push(R * Math.sin(th) * Math.cos(phi), R * Math.sin(th) * Math.sin(phi), R * Math.cos(th));
+      }
+    }
+  }
+  for (let j = 0; j < grid.height; j++) {
+    const vt = nodeCoord(j, grid.height, opts.align);
+    const th = sv * (opts.vflip ? 1 - vt : vt);
+    if (th <= 1e-9 || th >= Math.PI - 1e-9) continue; // a pole, not a circle
+    for (let k = 0; k < 2 * seg; k++) {
+      for (const t of [k, k + 1]) {
+        const ph = (2 * Math.PI * t) / (2 * seg);
+        pts.push(R * Math.sin(th) * Math.cos(ph), R * Math.sin(th) * Math.sin(ph), R * Math.cos(th));
+      }
+    }
+  }
+  return new Float32Array(pts);
 }
 
 export function SphereView({ grid, opts, range, normalize, dir, onPick, height }: SphereViewProps) {
@@ -62,6 +98,7 @@ export function SphereView({ grid, opts, range, normalize, dir, onPick, height }
     if (!o) return;
     o.tex.image.data = imageFor(grid, opts, range, normalize);
     o.tex.needsUpdate = true;
+    o.nodeLines.geometry.setAttribute('position', new o.ctx.THREE.Float32BufferAttribute(nodeLinePositions(grid, opts, normalize), 3));
     o.ctx.invalidate();
   }, [grid, opts, range, normalize]);
 
@@ -124,6 +161,11 @@ export function SphereView({ grid, opts, range, normalize, dir, onPick, height }
     const xAxis = new T.Line(xGeo, new T.LineBasicMaterial({ color: 0xe4572e }));
     ctx.scene.add(xAxis);
 
+    const nodeGeo = new T.BufferGeometry();
+    nodeGeo.setAttribute('position', new T.Float32BufferAttribute(nodeLinePositions(L.grid, L.opts, L.normalize), 3));
+    const nodeLines = new T.LineSegments(nodeGeo, new T.LineBasicMaterial({ color: 0xffffff, transparent: true, opacity: 0.45 }));
+    ctx.scene.add(nodeLines);
+
     const marker = new T.Mesh(new T.SphereGeometry(0.045, 16, 12), new T.MeshBasicMaterial({ color: 0xffffff }));
     const ring = new T.Mesh(new T.SphereGeometry(0.065, 16, 12), new T.MeshBasicMaterial({ color: 0x111111, side: T.BackSide }));
     marker.add(ring);
@@ -138,7 +180,7 @@ export function SphereView({ grid, opts, range, normalize, dir, onPick, height }
     ctx.controls.target.set(0, 0, 0);
     ctx.controls.update();
 
-    const o: Objects = { ctx, tex, marker, ray };
+    const o: Objects = { ctx, tex, nodeLines, marker, ray };
     objs.current = o;
     applyMarker(o, L.dir);
 
@@ -166,11 +208,13 @@ export function SphereView({ grid, opts, range, normalize, dir, onPick, height }
       el.removeEventListener('pointerdown', onDown);
       el.removeEventListener('pointerup', onUp);
       objs.current = null;
-      for (const obj of [mesh, seam, axis, xAxis, marker, ray]) ctx.scene.remove(obj);
+      for (const obj of [mesh, seam, axis, xAxis, nodeLines, marker, ray]) ctx.scene.remove(obj);
       geo.dispose();
       tex.dispose();
       (mesh.material as THREE.Material).dispose();
       seamGeo.dispose();
+      nodeLines.geometry.dispose();
+      (nodeLines.material as THREE.Material).dispose();
       axisGeo.dispose();
       xGeo.dispose();
       rayGeo.dispose();
@@ -182,7 +226,7 @@ export function SphereView({ grid, opts, range, normalize, dir, onPick, height }
   return (
     <Viewport ariaLabel="A sphere wearing the texture; click it to pick a point" height={height} setup={setup} testId="sphere-view">
       <div className="tx-sphere-legend" aria-hidden="true">
-        <span className="tx-seam-key" /> seam φ = 0 (u = 0 ≡ 1) · grey: pole axis
+        <span className="tx-seam-key" /> seam φ = 0 (u = 0 ≡ 1) · grey: pole axis · white: the grid’s node lines
       </div>
     </Viewport>
   );
