@@ -55,13 +55,21 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
   const target = targetValue(model);
   const drawn = useMemo(() => drawSamples(model, strategy, DRAWN, seed), [model, strategy, seed]);
   const patch = useMemo(() => patchModel(model, params.pu, params.pv, params.psize, params.ptilt), [model, params.pu, params.pv, params.psize, params.ptilt]);
-  const conv = useMemo(() => convergence(model, 1 << 15, seed), [model, seed]);
+  const timingKey = JSON.stringify([model.p, model.lc, model.w, model.h, model.tilt, model.L, model.rho, model.occluder ? 1 : 0, seed]);
+  // Convergence series (3 × 32768 samples) in the worker: ~0.1 s that a slider drag should not wait for.
+  const convTask = useWorkerTask<ReturnType<typeof convergence>>(makeWorker, 'convergence');
+  const startConv = convTask.start;
+  useEffect(() => {
+    const t = setTimeout(() => startConv({ params: { ...params }, nMax: 1 << 15 }), 120);
+    return () => clearTimeout(t);
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+  }, [timingKey, startConv]);
+  const conv = convTask.result;
 
   const job = useMemo(() => floorJob(model, seed), [model, seed]);
   const jobKey = JSON.stringify(job);
 
   const timing = useWorkerTask<TimingPoint[]>(makeWorker, 'timing');
-  const timingKey = JSON.stringify([model.p, model.lc, model.w, model.h, model.tilt, model.occluder ? 1 : 0, seed]);
   const startTiming = timing.start;
   useEffect(() => {
     const t = setTimeout(() => startTiming({ ...params }), 400);
@@ -88,7 +96,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
 
   const convTraces: PlotTrace[] = useMemo(() => {
     const out: PlotTrace[] = [];
-    for (const c of conv) {
+    for (const c of conv ?? []) {
       out.push({ x: Array.from(c.n), y: Array.from(c.absError), type: 'scatter', mode: 'lines', name: `|error|, ${c.strategy}`, line: { color: COLORS[c.strategy], width: 2 } });
       out.push({ x: Array.from(c.n), y: Array.from(c.stderr), type: 'scatter', mode: 'lines', name: `std. error, ${c.strategy}`, line: { color: COLORS[c.strategy], dash: 'dot', width: 1.5 } });
     }

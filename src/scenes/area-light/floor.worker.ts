@@ -10,6 +10,7 @@ import {
   TIMING_COUNTS,
   TIMING_RUNS,
   buildModel,
+  convergence,
   estimateAll,
   type StrategyEstimate,
   floorPass,
@@ -60,6 +61,12 @@ function timeOne(setup: AreaLightSetup, s: LightStrategy, n: number, seed: numbe
 }
 
 exposeTasks({
+  /** Convergence series of the three strategies (log-spaced checkpoints up to nMax). */
+  convergence: async (args: { params: AreaLightParams; nMax: number }, progress: ProgressFn) => {
+    progress(0);
+    return convergence(buildModel(args.params), args.nMax, args.params.seed);
+  },
+
   /** The three estimates for large n (the scene computes small n on the main thread; same numbers). */
   estimates: async (params: AreaLightParams, progress: ProgressFn): Promise<StrategyEstimate[]> => {
     progress(0);
