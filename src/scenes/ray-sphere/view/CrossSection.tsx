@@ -175,9 +175,9 @@ export function CrossSection({ o, d, c, r, res, distanceRatio, onChange }: Cross
       onPointerDown={down(target)}
       onKeyDown={key(target, at)}
       tabIndex={0}
-      role="slider"
+      role="button"
+      aria-roledescription="draggable handle"
       aria-label={`${label} (drag, or focus and use the arrow keys)`}
-      aria-valuetext={label}
       data-testid={`handle-${target}`}
     >
       <circle r={16} className="rs-handle-hit" />
