@@ -83,7 +83,7 @@ const tick = (): Promise<void> => new Promise((r) => setTimeout(r, 0));
  * One convergence run per strategy up to nMax samples, recorded at log-spaced N (10 per decade).
  * Strategies advance together (round robin), so every curve grows as the run proceeds.
  */
-export async function convergenceJob(args: ProblemArgs & { nMax: number }, compile: Compile, progress: Progress = () => {}, every = 120) {
+export async function convergenceJob(args: ProblemArgs & { nMax: number }, compile: Compile, progress: Progress = () => {}, every = 250) {
   const prep = await prepare(args, compile);
   const cps = logSpacedCounts(args.nMax, 10);
   const runs = args.strategies.map((s, i) =>
@@ -133,7 +133,7 @@ export interface RmseData {
  * per sample measured in this thread with performance.now() over all runs (the cost per sample of a
  * run to N_max; setup such as tabulating a pdf is not counted).
  */
-export async function rmseJob(args: ProblemArgs & { nMax: number; runs: number }, compile: Compile, progress: Progress = () => {}, every = 150) {
+export async function rmseJob(args: ProblemArgs & { nMax: number; runs: number }, compile: Compile, progress: Progress = () => {}, every = 250) {
   const prep = await prepare(args, compile);
   const cps = logSpacedCounts(args.nMax, 4, 10);
   const S = args.strategies.length;
@@ -183,7 +183,7 @@ export async function rmseJob(args: ProblemArgs & { nMax: number; runs: number }
  * Unbiasedness: M independent estimates, each with N samples, for one strategy. Returns the
  * estimates (Float64Array of length M, transferred).
  */
-export async function histogramJob(args: ProblemArgs & { N: number; M: number }, compile: Compile, progress: Progress = () => {}, every = 150) {
+export async function histogramJob(args: ProblemArgs & { N: number; M: number }, compile: Compile, progress: Progress = () => {}, every = 250) {
   const prep = await prepare(args, compile);
   const sampler = prep.samplers[0];
   if (!sampler) throw new Error(prep.problems[0] ?? 'no usable pdf');

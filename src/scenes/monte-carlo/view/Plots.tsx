@@ -4,7 +4,7 @@
  * histogram of independent estimates. Long runs happen in the worker; the plots redraw when a
  * partial result arrives (the worker posts every ~120–150 ms, the hook coalesces to one frame).
  */
-import { useEffect, useMemo, useRef, useState, type ReactNode } from 'react';
+import { useEffect, useId, useMemo, useRef, useState, useSyncExternalStore, type ReactNode } from 'react';
 import { formatNumber, NumberField, Panel, Plot, Readout, useSeenOnce, type PlotTrace } from '../../../ui';
 import { useWorkerTask } from '../../../workers';
 import { histogram } from '../model';
@@ -15,6 +15,15 @@ const arr = (a: ArrayLike<number>) => Array.from(a);
 /** Legend above the plot (below, it collides with the x-axis title on narrow screens). */
 const LEGEND = { orientation: 'h', x: 0, xanchor: 'left', y: 1.02, yanchor: 'bottom' };
 const MARGIN = { l: 60, r: 12, t: 12, b: 48 };
+
+// Layouts are module constants: Plot re-renders whenever its layout object changes identity.
+const L_FUNC = { legend: LEGEND, margin: MARGIN, xaxis: { title: { text: 'x' } } };
+const L_EST = { xaxis: { type: 'log', title: { text: 'N (samples)' } }, yaxis: { title: { text: 'estimate' } }, legend: LEGEND, margin: MARGIN };
+const L_ERR = { xaxis: { type: 'log', title: { text: 'N' } }, yaxis: { type: 'log', title: { text: '|estimate − exact|' }, exponentformat: 'power' }, legend: LEGEND, margin: MARGIN };
+const L_RMSE = { xaxis: { type: 'log', title: { text: 'N' } }, yaxis: { type: 'log', title: { text: 'RMSE' }, exponentformat: 'power' }, legend: LEGEND, margin: MARGIN };
+const L_TIME = { xaxis: { type: 'log', title: { text: 'ms per estimate (measured here)' } }, yaxis: { type: 'log', title: { text: 'RMSE' }, exponentformat: 'power' }, legend: LEGEND, margin: MARGIN };
+const L_HIST = { xaxis: { title: { text: 'estimate ⟨I⟩' } }, yaxis: { title: { text: 'count' } }, bargap: 0, legend: LEGEND, margin: MARGIN };
+
 /** Extra plot height on phones, where the legend above the plot takes several rows. */
 function useLegendRoom(): number {
   const q = '(max-width: 600px)';
@@ -46,28 +55,105 @@ export function FunctionPlot({ curve, samples, a, b }: { curve: { x: Float64Arra
     }
     return t;
   }, [curve, samples, a, b]);
-  return <Plot data={data} height={260} ariaLabel="The integrand f(x) and the sampling pdf p(x), scaled to the same height, over [a, b]" layout={{ legend: LEGEND, margin: MARGIN, xaxis: { title: { text: 'x' } } }} />;
+  return <Plot data={data} height={260} ariaLabel="The integrand f(x) and the sampling pdf p(x), scaled to the same height, over [a, b]" layout={L_FUNC} />;
 }
 
+/**
+ * The value, updated at most every `ms` (a steady redraw rate however fast partial results come),
+ * and at once when `immediate` (the final result).
+ */
+function useThrottled<T>(value: T, ms: number, immediate: boolean): T {
+  const [shown, setShown] = useState(value);
+  const last = useRef(0);
+  const timer = useRef<ReturnType<typeof setTimeout> | undefined>(undefined);
+  const latest = useRef(value);
+  latest.current = value;
+  useEffect(() => {
+    const now = performance.now();
+    if (immediate || now - last.current >= ms) {
+      if (timer.current !== undefined) clearTimeout(timer.current);
+      timer.current = undefined;
+      last.current = now;
+      setShown(value);
+    } else if (timer.current === undefined) {
+      timer.current = setTimeout(() => {
+        timer.current = undefined;
+        last.current = performance.now();
+        setShown(latest.current);
+      }, ms - (now - last.current));
+    }
+  }, [value, ms, immediate]);
+  useEffect(() => () => clearTimeout(timer.current), []);
+  return shown;
+}
+
+/** Redraw interval of the plots while a run is in progress (ms). */
+const REDRAW_MS = 400;
+
 /** Start a worker task when the panel is first seen and whenever its key changes (debounced). */
+/**
+ * One long run at a time: the panels' worker runs queue up (first come, first served), so the
+ * workers never take every core from the page that draws their results (2 cores are common).
+ */
+const slot = {
+  owner: null as string | null,
+  listeners: new Set<() => void>(),
+  set(owner: string | null) {
+    this.owner = owner;
+    for (const l of this.listeners) l();
+  },
+};
+const subscribeSlot = (l: () => void) => {
+  slot.listeners.add(l);
+  return () => slot.listeners.delete(l);
+};
+const getSlot = () => slot.owner;
+
+/**
+ * Start a worker task when the panel is first seen and whenever its key changes (debounced), once
+ * the shared slot is free; release the slot when the run ends, fails or is cancelled.
+ */
 function useAutoRun<R, P>(method: string, makeWorker: () => Worker, args: unknown, key: string, box: React.RefObject<HTMLElement | null>) {
   const task = useWorkerTask<R, P>(makeWorker, method);
   const seen = useSeenOnce(box, '100px');
   const argsRef = useRef(args);
   argsRef.current = args;
+  const id = useId();
+  const owner = useSyncExternalStore(subscribeSlot, getSlot, getSlot);
+  const [wanted, setWanted] = useState<string | null>(null);
   const start = task.start;
+  // a new key (or first sight) asks for a run, after a short debounce
   useEffect(() => {
     if (!seen) return;
-    const t = setTimeout(() => start(argsRef.current), 250);
+    const t = setTimeout(() => setWanted(key), 250);
     return () => clearTimeout(t);
-  }, [seen, key, start]);
-  return { ...task, rerun: () => start(argsRef.current) };
+  }, [seen, key]);
+  // run when the slot is free (or already ours)
+  useEffect(() => {
+    if (wanted === null || (owner !== null && owner !== id)) return;
+    slot.set(id);
+    setWanted(null);
+    start(argsRef.current);
+  }, [wanted, owner, id, start]);
+  // release the slot when our run is over
+  const running = task.running;
+  useEffect(() => {
+    if (!running && wanted === null && slot.owner === id) {
+      const t = setTimeout(() => slot.owner === id && slot.set(null), 0);
+      return () => clearTimeout(t);
+    }
+  }, [running, wanted, id]);
+  useEffect(() => () => void (slot.owner === id && slot.set(null)), [id]);
+  const waiting = wanted !== null && owner !== null && owner !== id;
+  return { ...task, waiting, rerun: () => setWanted(`rerun-${performance.now()}`) };
 }
 
-function RunBar({ running, progress, onCancel, onRun, label }: { running: boolean; progress: number; onCancel: () => void; onRun: () => void; label: ReactNode }) {
+function RunBar({ running, waiting, progress, onCancel, onRun, label }: { running: boolean; waiting: boolean; progress: number; onCancel: () => void; onRun: () => void; label: ReactNode }) {
   return (
     <div className="mc-runbar">
-      {running ? (
+      {waiting && !running ? (
+        <span role="status">Waiting for the run above to finish…</span>
+      ) : running ? (
         <>
           <progress max={1} value={progress} aria-label="progress" />
           <span role="status">
@@ -92,7 +178,7 @@ export function ConvergencePanel({ args, nMax, exact, makeWorker, present }: { a
   const box = useRef<HTMLDivElement>(null);
   const key = JSON.stringify([args, nMax]);
   const task = useAutoRun<ConvResult, ConvResult>('convergence', makeWorker, { ...args, nMax }, key, box);
-  const cur = task.result ?? task.partial;
+  const cur = useThrottled(task.result ?? task.partial, REDRAW_MS, !task.running);
   const series = cur?.series ?? [];
   const ref = cur?.exact ?? exact;
   const tiny = Math.abs(ref) * 1e-15 || 1e-300;
@@ -141,7 +227,7 @@ export function ConvergencePanel({ args, nMax, exact, makeWorker, present }: { a
   return (
     <Panel title="Convergence as N grows (Q4 d)" className="mc-plots">
       <div ref={box}>
-        <RunBar running={task.running} progress={task.progress} onCancel={task.cancel} onRun={task.rerun} label={`Running up to N = ${nMax.toLocaleString('en')}…`} />
+        <RunBar running={task.running} waiting={task.waiting} progress={task.progress} onCancel={task.cancel} onRun={task.rerun} label={`Running up to N = ${nMax.toLocaleString('en')}…`} />
         {task.error ? <p className="field-error">The run failed: {task.error}</p> : null}
         {cur?.problems.length ? <p className="mc-note">Left out: {cur.problems.join('; ')}</p> : null}
         <Heading>Running estimate</Heading>
@@ -149,14 +235,14 @@ export function ConvergencePanel({ args, nMax, exact, makeWorker, present }: { a
           data={estData}
           height={h}
           ariaLabel="Running estimate against the number of samples N, on a log axis, for several strategies, with the exact value"
-          layout={{ xaxis: { type: 'log', title: { text: 'N (samples)' } }, yaxis: { title: { text: 'estimate' } }, legend: LEGEND, margin: MARGIN }}
+          layout={L_EST}
         />
         <Heading>|error| of one run, log-log, with N^−½ and N^−1 guides</Heading>
         <Plot
           data={errData}
           height={h}
           ariaLabel="Absolute error against N on log-log axes, with N^-1/2 and N^-1 guide lines and fitted slopes"
-          layout={{ xaxis: { type: 'log', title: { text: 'N' } }, yaxis: { type: 'log', title: { text: '|estimate − exact|' }, exponentformat: 'power' }, legend: LEGEND, margin: MARGIN }}
+          layout={L_ERR}
         />
         {exactLabels.length ? (
           <p className="mc-note" data-testid="exact-strategies">
@@ -179,7 +265,7 @@ export function RmsePanel({ args, nMax, runs, exact, makeWorker, onRuns }: { arg
   const box = useRef<HTMLDivElement>(null);
   const key = JSON.stringify([args, nMax, runs]);
   const task = useAutoRun<RmseResult, RmseResult>('rmse', makeWorker, { ...args, nMax, runs }, key, box);
-  const cur = task.result ?? task.partial;
+  const cur = useThrottled(task.result ?? task.partial, REDRAW_MS, !task.running);
   const rm = cur?.rmse ?? [];
   const tiny = Math.abs(exact) * 1e-15 || 1e-300;
   const clampArr = (a: Float64Array) => arr(a).map((v) => (Number.isFinite(v) && v > 0 ? v : null));
@@ -239,21 +325,21 @@ export function RmsePanel({ args, nMax, runs, exact, makeWorker, onRuns }: { arg
             {runsDone} run{runsDone === 1 ? '' : 's'} per strategy so far, N up to {nMax.toLocaleString('en')}
           </span>
         </div>
-        <RunBar running={task.running} progress={task.progress} onCancel={task.cancel} onRun={task.rerun} label="Independent runs…" />
+        <RunBar running={task.running} waiting={task.waiting} progress={task.progress} onCancel={task.cancel} onRun={task.rerun} label="Independent runs…" />
         {task.error ? <p className="field-error">The run failed: {task.error}</p> : null}
         <Heading>RMSE over the runs (band: 10–90 % of |error|)</Heading>
         <Plot
           data={rmseData}
           height={h}
           ariaLabel="Root mean square error over independent runs against N, log-log, with bands from the 10th to the 90th percentile of the absolute error"
-          layout={{ xaxis: { type: 'log', title: { text: 'N' } }, yaxis: { type: 'log', title: { text: 'RMSE' }, exponentformat: 'power' }, legend: LEGEND, margin: MARGIN }}
+          layout={L_RMSE}
         />
         <Heading>Accuracy per millisecond: RMSE against run time</Heading>
         <Plot
           data={timeData}
           height={h}
           ariaLabel="RMSE against the measured wall-clock time of one estimate, log-log, per strategy"
-          layout={{ xaxis: { type: 'log', title: { text: 'ms per estimate (measured here)' } }, yaxis: { type: 'log', title: { text: 'RMSE' }, exponentformat: 'power' }, legend: LEGEND, margin: MARGIN }}
+          layout={L_TIME}
         />
         {rmExactLabels.length ? <p className="mc-note">Not drawn: {rmExactLabels.join(', ')} (RMSE at rounding level: zero variance).</p> : null}
         <p className="mc-note">
@@ -273,7 +359,7 @@ export function HistogramPanel({ args, N, exact, makeWorker, onN }: { args: Prob
   const room = useLegendRoom();
   const key = JSON.stringify([args, N]);
   const task = useAutoRun<HistResult, HistResult>('histogram', makeWorker, { ...args, N, M }, key, box);
-  const est = (task.result ?? task.partial)?.estimates;
+  const est = useThrottled(task.result ?? task.partial, REDRAW_MS, !task.running)?.estimates;
   const stats = useMemo(() => {
     if (!est || !est.length) return null;
     let s = 0;
@@ -303,7 +389,7 @@ export function HistogramPanel({ args, N, exact, makeWorker, onN }: { args: Prob
           <NumberField label="samples per estimate" value={N} min={1} max={100000} step={1} onChange={(v) => onN(Math.round(v))} testId="hn-input" />
           <span className="mc-note">{M} estimates, each from its own {N} sample{N === 1 ? '' : 's'} (selected pdf and sequence)</span>
         </div>
-        <RunBar running={task.running} progress={task.progress} onCancel={task.cancel} onRun={task.rerun} label="Estimating…" />
+        <RunBar running={task.running} waiting={task.waiting} progress={task.progress} onCancel={task.cancel} onRun={task.rerun} label="Estimating…" />
         {task.error ? <p className="field-error">The run failed: {task.error}</p> : null}
         <div className="readouts">
           <Readout id="hist-mean" label="mean of the estimates" value={stats?.mean ?? null} digits={8} note={stats ? `± ${formatNumber(stats.sem, 2)} (its standard error)` : undefined} />
@@ -314,7 +400,7 @@ export function HistogramPanel({ args, N, exact, makeWorker, onN }: { args: Prob
           data={data}
           height={280 + room / 2}
           ariaLabel="Histogram of many independent estimates at fixed N, with their mean and the exact integral"
-          layout={{ xaxis: { title: { text: 'estimate ⟨I⟩' } }, yaxis: { title: { text: 'count' } }, bargap: 0, legend: LEGEND, margin: MARGIN }}
+          layout={L_HIST}
         />
         <p className="mc-note">
           E[⟨I⟩] = ∫ f dx for any valid p: each estimate misses, but their mean lands on the integral (within a few standard errors), whatever N is. Only the spread shrinks as N grows.
