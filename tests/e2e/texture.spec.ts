@@ -304,6 +304,14 @@ test.describe('interaction', () => {
     await waitForReadout(page, 'bilinear', (x) => Math.abs(Number(x) - L(0.41, 0.24)) < 1e-9);
   });
 
+  test('with the v-flip, the picture is in the flipped frame: ArrowUp raises v′ and lowers v', async ({ page }) => {
+    await openScene(page, '#/texture?vflip=1');
+    await page.getByTestId('texel-grid').focus();
+    await page.keyboard.press('ArrowUp');
+    await expect(page).toHaveURL(/v=0\.23(&|$)/);
+    close(await readoutNumber(page, 'bilinear'), L(0.4, 0.77), 1e-9);
+  });
+
   test('editing a cell changes the lookups', async ({ page }) => {
     await openScene(page, '#/texture');
     await page.getByTestId('edit-toggle').check();
