@@ -48,8 +48,31 @@ export type CompileResult =
  * Accepts θ/φ for theta/phi, π/τ for pi/tau. Evaluation is real-valued (Math.*): outside a
  * function's domain the result is NaN, which callers must treat as invalid (see tabulate.ts).
  */
-export async function compileExpression(src: string, variables: readonly string[]): Promise<CompileResult> {
-  if (typeof src !== 'string') return { ok: false, error: 'the expression must be text' };
+export function compileExpression(src: string, variables: readonly string[]): Promise<CompileResult> {
+  if (typeof src !== 'string') return Promise.resolve({ ok: false, error: 'the expression must be text' });
+  // Results are immutable, so identical requests share one (re-renders, workers, URL round trips).
+  const key = variables.join(',') + '\u0000' + src;
+  const hit = cache.get(key);
+  if (hit) {
+    cache.delete(key); // refresh its recency
+    cache.set(key, hit);
+    return hit;
+  }
+  const p = compileUncached(src, variables);
+  cache.set(key, p);
+  // a failed engine load may succeed later: do not keep that answer
+  void p.then((r) => {
+    if (!r.ok && r.error === LOAD_ERROR && cache.get(key) === p) cache.delete(key);
+  });
+  if (cache.size > CACHE_SIZE) cache.delete(cache.keys().next().value!);
+  return p;
+}
+
+const CACHE_SIZE = 64;
+const LOAD_ERROR = 'the expression parser could not be loaded (check the connection and try again)';
+const cache = new Map<string, Promise<CompileResult>>();
+
+async function compileUncached(src: string, variables: readonly string[]): Promise<CompileResult> {
   const trimmed = src.trim();
   if (trimmed.length === 0) return { ok: false, error: 'the expression is empty' };
   if (src.length > MAX_EXPRESSION_LENGTH) {
@@ -59,7 +82,7 @@ export async function compileExpression(src: string, variables: readonly string[
   try {
     engine = await loadExpressionEngine();
   } catch {
-    return { ok: false, error: 'the expression parser could not be loaded (check the connection and try again)' };
+    return { ok: false, error: LOAD_ERROR };
   }
   let tree;
   try {

@@ -158,3 +158,16 @@ describe('tabulation helpers', () => {
     expect(scanTable([1, 2])).toEqual({ firstNonFinite: -1, firstNegative: -1, min: 1, max: 2 });
   });
 });
+
+describe('compileExpression cache', () => {
+  it('returns the same promise for the same source and variables, a different one otherwise', async () => {
+    const a = compileExpression('sin(theta) + phi', ['theta', 'phi']);
+    const b = compileExpression('sin(theta) + phi', ['theta', 'phi']);
+    const c = compileExpression('sin(theta) + phi', ['phi', 'theta']);
+    expect(a).toBe(b);
+    expect(c).not.toBe(a);
+    const [ra, rc] = await Promise.all([a, c]);
+    expect(ra.ok && rc.ok).toBe(true);
+    if (ra.ok && rc.ok) expect(ra.fn(1, 2)).not.toBe(rc.fn(1, 2));
+  });
+});
