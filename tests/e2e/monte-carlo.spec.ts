@@ -3,6 +3,7 @@
  * formula (f(x) = (x + 2)², p = 1/(b − a), p = 3(x + 2)²/((b + 2)³ − (a + 2)³), ∫ eˣ dx = eᵇ − eᵃ),
  * never pasted from the answer key or from the app.
  */
+import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
 
 const EXAM_X = [1.16, 1.98, 0.54, 1.26];
@@ -129,4 +130,29 @@ test.describe('long runs in the worker', () => {
     expect(Number.isFinite(mean)).toBe(true);
     close(finalMean, exactSquare(0, 2), (4 * sd) / Math.sqrt(2000));
   });
+});
+
+test('cancel stops a 10⁷-sample run; the page stays responsive and shows no estimate', async ({ page }) => {
+  // a slow-ish integrand and sequence, so that the run is still going when we cancel it
+  const f = encodeURIComponent('sin(x)^2 + cos(3*x)*exp(-x) + sqrt(x+1) + log(x+2) + atan(x)^3');
+  await openScene(page, `#/monte-carlo?n=10000000&strategy=halton&pdf=linear&f=${f}`);
+  await expect(page.getByText(/Estimating with 10,000,000 samples/)).toBeVisible();
+  // dispatchEvent: the progress text re-renders every frame, so do not wait for a "stable" box
+  await page.locator('.mc-progress button', { hasText: 'Cancel' }).dispatchEvent('click');
+  await expect(page.getByText(/Estimating with 10,000,000 samples/)).toHaveCount(0);
+  expect(await readout(page, 'estimate')).toBe('none');
+  // still responsive: a control change goes through at once
+  await page.getByTestId('pdf-select').selectOption('proportional');
+  await expect(page).toHaveURL(/pdf=proportional/);
+});
+
+test('axe finds no serious or critical violations (light, dark, present, bad pdf)', async ({ page }) => {
+  for (const qs of ['theme=light', 'theme=dark', 'present=1', 'pdf=custom&pdfexpr=x-1']) {
+    await openScene(page, `#/monte-carlo?${qs}`);
+    await page.getByRole('heading', { name: /Unbiasedness|RMSE over/ }).first().scrollIntoViewIfNeeded();
+    // Plotly's own modebar lives inside the shared Plot component (not this scene's code)
+    const results = await new AxeBuilder({ page }).exclude('.plot-canvas').exclude('.js-plotly-plot').analyze();
+    const bad = results.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical');
+    expect(bad.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`), qs).toEqual([]);
+  }
 });
