@@ -14,6 +14,7 @@ import { STRATEGIES, STRATEGY_LABEL, STRATEGY_SHORT, buildModel, convergence, dr
 import { PRESETS, schema, type AreaLightParams } from './params';
 import { Scene3D } from './view/Scene3D';
 import { FloorImages } from './view/FloorImages';
+import { PatchFigure } from './view/PatchFigure';
 import './area-light.css';
 
 type Schema = typeof schema;
@@ -274,7 +275,8 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
           that covers dA cos θ_l / r² of the unit sphere. The exact solid angle of the orange patch (Van Oosterom–Strackee) and the formula agree better
           and better as the patch shrinks — the error falls like the square of its size.
         </p>
-        <MathTex display tex={String.raw`d\omega = \frac{dA\,\cos\theta_l}{r^2}`} />
+        <PatchFigure patch={patch} />
+        <MathTex display tex={String.raw`d\omega = \frac{dA^{\perp}}{r^2} = \frac{dA\,\cos\theta_l}{r^2}`} />
         <div className="al-readouts">
           <Readout id="patch-exact" label="exact Ω of the patch" value={patch.exact} digits={8} unit="sr" />
           <Readout id="patch-approx" label="dA cos θ_l / r²" value={patch.approx} digits={8} unit="sr" />
