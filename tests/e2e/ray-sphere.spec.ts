@@ -127,7 +127,10 @@ test.describe('precision presets: robust roots match high-precision references',
       }
       // switching the readouts to the textbook method shows its (wrong) answer
       await page.getByTestId('method').selectOption('naive');
-      if (p.textbookCase) await waitForReadout(page, 'case', (v) => v === p.textbookCase);
+      if (p.textbookCase) {
+        await waitForReadout(page, 'case', (v) => v === p.textbookCase);
+        await expect(page.getByTestId('method-wrong')).toContainText(wantCase);
+      }
       await expect(page).toHaveURL(/method=naive/);
     });
   }

@@ -123,6 +123,12 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
           <Readout id="t-hit" label="t-hit (nearest t ≥ 0)" value={res?.tHit ?? null} digits={10} />
           <Readout id="case" label="case" value={res?.case ?? null} />
         </div>
+        {res && model.reference && res.case !== model.reference.case ? (
+          <Notice kind="warn" testId="method-wrong">
+            The {params.method === 'naive' ? 'textbook' : 'robust'} form says <strong>{res.case}</strong>, but the exact answer for these inputs (double-double
+            reference) is <strong>{model.reference.case}</strong>: rounding has changed the case. See the precision table below.
+          </Notice>
+        ) : null}
         {res?.nearTangent && res.case !== 'tangent' ? (
           <p className="rs-small rs-near">
             |Δ| is within this method’s rounding error of 0: the ray is tangent to within double precision, and whether it hits is decided by the last bits.
