@@ -73,6 +73,17 @@ export function hashCombine(a: number, b: number): number {
   return hash32I(a ^ Math.imul(hash32I(b), 0x9e3779b1)) >>> 0;
 }
 
+/** POW3_INV[j] = 3^-(j+1), exact to rounding (3^k is exact in a double for k ≤ 33). */
+const POW3_INV = (() => {
+  const t = new Float64Array(35);
+  let p = 1;
+  for (let j = 0; j < 35; j++) {
+    p *= 3;
+    t[j] = 1 / p;
+  }
+  return t;
+})();
+
 // The six permutations of {0, 1, 2}, flattened.
 const PERM3 = new Uint8Array([0, 1, 2, 0, 2, 1, 1, 0, 2, 1, 2, 0, 2, 0, 1, 2, 1, 0]);
 
@@ -87,7 +98,6 @@ const PERM3 = new Uint8Array([0, 1, 2, 0, 2, 1, 1, 0, 2, 1, 2, 0, 2, 0, 1, 2, 1,
 export function owenRadicalInverse3(index: number, seed: number): number {
   let a = index;
   let h = hash32I(seed | 0);
-  let scale = 1 / 3;
   let x = 0;
   let j = 0;
   // Scramble the first 20 digits (3^20 > 2^32, enough for every point count we support, so any
@@ -97,14 +107,13 @@ export function owenRadicalInverse3(index: number, seed: number): number {
   while ((a > 0 || j < 20) && j < 34) {
     const next = a < 2147483648 ? ((a / 3) | 0) : Math.floor(a / 3);
     const digit = a - 3 * next;
-    x += PERM3[3 * (((h >>> 16) * 6) >>> 16) + digit]! * scale;
+    x += PERM3[3 * (((h >>> 16) * 6) >>> 16) + digit]! * POW3_INV[j]!;
     h = hash32I(h ^ Math.imul(digit + 1 + 4 * j, 0x9e3779b1));
-    scale /= 3;
     a = next;
     j++;
   }
   const tail = ((hash32I(h ^ 0x68e31da4) >>> 5) * 67108864 + (hash32I(h ^ 0x1b56c4e9) >>> 6)) * TWO_POW_M53;
-  x += tail * 3 * scale;
+  x += tail * 3 * POW3_INV[j]!;
   return x < ONE_MINUS_EPS ? x : ONE_MINUS_EPS;
 }
 
