@@ -43,7 +43,7 @@ function log(...a) {
   console.log(...a);
 }
 
-const PER_ITER = /(\d[\d_.,]*(?:e[+-]?\d+)?)\s*(?:samples|points|rays|estimates|lookups)\s+per\s+iteration/i;
+const PER_ITER = /(\d[\d_.,]*(?:e[+-]?\d+)?)\s*(?:samples|points|rays|estimates|lookups|evaluations)\s+per\s+iteration/i;
 function perIteration(text) {
   const m = PER_ITER.exec(text);
   if (!m) return null;
