@@ -38,13 +38,34 @@ test('#/ downloads no three.js, Plotly, mathjs, KaTeX or scene code', async ({ p
 });
 
 for (const route of ROUTES) {
-  test(`${route} loads with no console error and a working scene`, async ({ page }) => {
+  test(`${route} loads with no console error and a working scene`, async ({ page, baseURL }) => {
+    const foreign: string[] = [];
+    page.on('request', (r) => {
+      const u = r.url();
+      if (!u.startsWith(new URL(baseURL!).origin) && !u.startsWith('data:') && !u.startsWith('blob:')) foreign.push(u);
+    });
     await openScene(page, `#${route}`);
     await expect(page.locator('main#main h1')).toBeVisible();
     await expect(page.locator('[role=alert]')).toHaveCount(0);
     // a built scene shows readouts; the shell's share bar is there
     await expect(page.locator('[data-testid][data-value]').first()).toBeAttached();
     await expect(page.getByTestId('copy-link')).toBeVisible();
+    // scroll through the whole scene so every lazy view (plots, 3D, KaTeX) loads
+    for (let y = 0; y < 12; y++) {
+      await page.mouse.wheel(0, 700);
+      await page.waitForTimeout(150);
+    }
+    await page.waitForLoadState('networkidle');
+    // everything comes from the app's own folder: the static build works offline
+    expect(foreign).toEqual([]);
+  });
+
+  test(`${route} has no serious or critical axe violations`, async ({ page }) => {
+    await openScene(page, `#${route}`);
+    await page.waitForLoadState('networkidle');
+    const results = await new AxeBuilder({ page }).exclude('.js-plotly-plot').analyze();
+    const bad = results.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical');
+    expect(bad.map((v) => `${v.id}: ${v.nodes.slice(0, 5).map((n) => n.target.join(' ')).join(', ')}`)).toEqual([]);
   });
 
   test(`${route} with garbage parameters shows the notice naming them and still works`, async ({ page }) => {
@@ -81,9 +102,17 @@ test('an embedded scene posts its height to the host page', async ({ page, baseU
     `<script>window.msgs = []; addEventListener('message', (e) => msgs.push(e.data));</script>
      <iframe id="f" title="scene" src="${baseURL}#/texture?embed=1" style="width:800px;height:300px"></iframe>`,
   );
-  await expect.poll(() => page.evaluate(() => (window as unknown as { msgs: { type: string; height: number }[] }).msgs.filter((m) => m && m.type === 'render-math-lab:height').length), { timeout: 20000 }).toBeGreaterThan(0);
-  const h = await page.evaluate(() => (window as unknown as { msgs: { type: string; height: number }[] }).msgs.filter((m) => m.type === 'render-math-lab:height').at(-1)!.height);
-  expect(h).toBeGreaterThan(300);
+  type Msg = { type: string; height: number };
+  const lastHeight = () =>
+    page.evaluate(() => (window as unknown as { msgs: Msg[] }).msgs.filter((m) => m && m.type === 'render-math-lab:height').at(-1)?.height ?? 0);
+  // the first message may come while the scene is still loading; the page posts again when its
+  // height changes, so the last height reported grows to the loaded scene's (well over 300 px)
+  await expect.poll(lastHeight, { timeout: 20000 }).toBeGreaterThan(300);
+  // and it matches the embedded document's real height
+  const frame = page.frameLocator('#f');
+  await expect(frame.getByTestId('copy-link')).toBeVisible();
+  const docHeight = await page.frames()[1]!.evaluate(() => document.documentElement.scrollHeight);
+  await expect.poll(lastHeight, { timeout: 10000 }).toBe(docHeight);
 });
 
 test('Copy link and Copy embed code produce URLs that restore the same state', async ({ page, context }) => {
