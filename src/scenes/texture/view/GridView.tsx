@@ -142,21 +142,24 @@ export function GridView({ grid, opts, range, q, onMove, editing, selected, onSe
           <QueryLayer grid={grid} opts={opts} win={win} q={q} selected={editing ? selected : null} />
         </svg>
       </div>
-      <ul className="tx-taps" aria-label="The four bilinear taps and their weights">
-        {(
-          [
-            ['w00', q.bil.i0, q.bil.j0, q.bil.t00, q.bil.w00],
-            ['w10', q.bil.i1, q.bil.j0, q.bil.t10, q.bil.w10],
-            ['w01', q.bil.i0, q.bil.j1, q.bil.t01, q.bil.w01],
-            ['w11', q.bil.i1, q.bil.j1, q.bil.t11, q.bil.w11],
-          ] as const
-        ).map(([cls, i, j, t, w]) => (
-          <li key={cls}>
-            <span className={`tx-chip ${cls}`} />
-            T<sub>{i},{j}</sub>={fmtShort(t)}, w={fmtShort(w)}
-          </li>
-        ))}
-      </ul>
+      <div className="tx-closeup-row">
+        <CellCloseUp q={q} />
+        <ul className="tx-taps" aria-label="The four bilinear taps and their weights">
+          {(
+            [
+              ['w00', q.bil.i0, q.bil.j0, q.bil.t00, q.bil.w00],
+              ['w10', q.bil.i1, q.bil.j0, q.bil.t10, q.bil.w10],
+              ['w01', q.bil.i0, q.bil.j1, q.bil.t01, q.bil.w01],
+              ['w11', q.bil.i1, q.bil.j1, q.bil.t11, q.bil.w11],
+            ] as const
+          ).map(([cls, i, j, t, w]) => (
+            <li key={cls}>
+              <span className={`tx-chip ${cls}`} />
+              T<sub>{i},{j}</sub>={fmtShort(t)}, w={fmtShort(w)}
+            </li>
+          ))}
+        </ul>
+      </div>
       <div className="tx-axis-note">
         u → right, {opts.vflip ? 'v′ = 1 − v' : 'v'} → up · {opts.align === 'corner' ? 'nodes at i/(N − 1)' : 'texel centres at (i + ½)/N'}
       </div>
@@ -343,4 +346,53 @@ export function fmtShort(x: number): string {
 /** CSS colour of a value on the grid's range (legend). */
 export function valueColor(x: number, range: { min: number; max: number }): string {
   return colorCss(normalizeValue(x, range.min, range.max));
+}
+
+/**
+ * The bilinear cell magnified: its four node values at the corners, the query at (fu, fv) inside,
+ * and each node's weight written in the sub-rectangle opposite to it (same colour).
+ */
+function CellCloseUp({ q }: { q: Lookup }) {
+  const b = q.bil;
+  const S = 200;
+  const P = 34; // padding for the corner labels
+  const C = S - 2 * P;
+  const x = P + b.fu * C;
+  const y = P + (1 - b.fv) * C;
+  const rects = [
+    { cls: 'w00', x0: x, y0: P, x1: P + C, y1: y, w: b.w00 },
+    { cls: 'w10', x0: P, y0: P, x1: x, y1: y, w: b.w10 },
+    { cls: 'w01', x0: x, y0: y, x1: P + C, y1: P + C, w: b.w01 },
+    { cls: 'w11', x0: P, y0: y, x1: x, y1: P + C, w: b.w11 },
+  ];
+  const corners = [
+    { cls: 'w00', cx: P, cy: P + C, t: b.t00, dy: 26 },
+    { cls: 'w10', cx: P + C, cy: P + C, t: b.t10, dy: 26 },
+    { cls: 'w01', cx: P, cy: P, t: b.t01, dy: -14 },
+    { cls: 'w11', cx: P + C, cy: P, t: b.t11, dy: -14 },
+  ];
+  return (
+    <svg className="tx-closeup" viewBox={`0 0 ${S} ${S}`} role="img" aria-label={`The bilinear cell magnified: the query sits at fu = ${fmtShort(b.fu)}, fv = ${fmtShort(b.fv)} inside it`} data-testid="cell-closeup">
+      {rects.map((r) => (
+        <g key={r.cls}>
+          <rect x={r.x0} y={r.y0} width={Math.max(0, r.x1 - r.x0)} height={Math.max(0, r.y1 - r.y0)} className={`tx-wrect ${r.cls}`} />
+          {r.x1 - r.x0 > 30 && r.y1 - r.y0 > 16 ? (
+            <text x={(r.x0 + r.x1) / 2} y={(r.y0 + r.y1) / 2 + 5} textAnchor="middle" className="tx-closeup-w">
+              {fmtShort(r.w)}
+            </text>
+          ) : null}
+        </g>
+      ))}
+      <rect x={P} y={P} width={C} height={C} className="tx-closeup-cell" />
+      {corners.map((c) => (
+        <g key={c.cls}>
+          <circle cx={c.cx} cy={c.cy} r={6} className={`tx-tap ${c.cls}`} />
+          <text x={c.cx} y={c.cy + c.dy} textAnchor="middle" className="tx-closeup-t">
+            {fmtShort(c.t)}
+          </text>
+        </g>
+      ))}
+      <circle cx={x} cy={y} r={5} className="tx-closeup-q" />
+    </svg>
+  );
 }
