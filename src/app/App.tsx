@@ -49,7 +49,7 @@ export function App() {
       {flags.embed ? null : (
         <footer className="site-footer">
           <p>
-            Render Math Lab — every figure is computed live in your browser. Works offline once loaded.
+            Render Math Lab — every figure is computed live in your browser, and nothing is fetched from anywhere but this site, so a copy of the build works offline.
             {flags.present ? ' Classroom mode: press ? for shortcuts.' : ''}
           </p>
         </footer>
