@@ -50,7 +50,7 @@ export const PRECISION_PRESETS: readonly Preset[] = [
   {
     id: 'grazing',
     label: 'Grazing ray at 10⁵',
-    what: 'The ray passes 10⁻⁵ r inside the rim from 10⁵ r away: b² and 4ac′ agree to 12 digits, so the textbook Δ keeps only a few.',
+    what: 'The ray passes 10⁻⁵ r inside the rim from 10⁵ r away: b² and 4ac′ (both ≈ 4·10¹⁰) agree to 15 digits, so the textbook Δ ≈ 8·10⁻⁵ is 5% off and its roots move by 10⁻⁴.',
     params: { o: [-1e5, 0.99999, 0], d: [1, 0, 0], c: [0, 0, 0], r: 1 },
   },
   {

@@ -137,7 +137,7 @@ export function DistantImages() {
 }
 
 /** The error of each method against distance, with the current configuration marked. */
-export function ErrorVsDistance({ current }: { current: number }) {
+export function ErrorVsDistance({ current, here }: { current: number; here?: { naive: number | null; stable: number | null } }) {
   const s = useMemo(() => errorVsDistance(), []);
   const u = ERROR_FLOOR;
   const data = useMemo<PlotTrace[]>(() => [
@@ -147,16 +147,27 @@ export function ErrorVsDistance({ current }: { current: number }) {
     { x: s.dist, y: s.hitStable, name: 'robust t-hit', mode: 'lines', line: { color: '#1f5fa8', dash: 'dot' } },
     { x: s.dist, y: s.dist.map((D) => Math.min(1, u * D * D)), name: 'u (D/r)²', mode: 'lines', line: { color: '#999', width: 1, dash: 'dash' } },
     { x: s.dist, y: s.dist.map((D) => Math.min(1, u * D)), name: 'u (D/r)', mode: 'lines', line: { color: '#bbb', width: 1, dash: 'dash' } },
-  ], [s, u]);
+    ...(here && current > 1 && Number.isFinite(current)
+      ? [
+          {
+            x: [current, current],
+            y: [here.naive, here.stable].map((e) => (e === null || !Number.isFinite(e) ? 1 : Math.min(1, Math.max(u, e)))),
+            name: 'this ray: Δ error (textbook, robust)',
+            mode: 'markers',
+            marker: { size: 12, symbol: 'x', color: ['#c0392b', '#1f5fa8'], line: { width: 1, color: '#222' } },
+          },
+        ]
+      : []),
+  ], [s, u, current, here]);
   const layout = useMemo(() => ({
     xaxis: { type: 'log', title: { text: 'distance |o − c| / r' }, exponentformat: 'power' },
     yaxis: { type: 'log', title: { text: 'median relative error' }, exponentformat: 'power', range: [-17, 0.3] },
-    legend: { orientation: 'h', y: -0.32 },
-    margin: { l: 60, r: 10, t: 10, b: 60 },
+    legend: { orientation: 'h', yanchor: 'top', y: -0.42, x: 0 },
+    margin: { l: 60, r: 10, t: 10, b: 10 },
     shapes:
       current > 1 && Number.isFinite(current)
-        ? [{ type: 'line', x0: current, x1: current, yref: 'paper', y0: 0, y1: 1, line: { color: '#e8590c', width: 1.5, dash: 'dot' } }]
+        ? [{ type: 'line', x0: current, x1: current, yref: 'paper', y0: 0, y1: 1, line: { color: '#888', width: 1 } }]
         : [],
   }), [current]);
-  return <Plot data={data} layout={layout} height={340} ariaLabel="Relative error of the discriminant and of t-hit against distance, textbook and robust" testId="error-plot" />;
+  return <Plot data={data} layout={layout} height={440} ariaLabel="Relative error of the discriminant and of t-hit against distance, textbook and robust" testId="error-plot" />;
 }
