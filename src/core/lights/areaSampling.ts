@@ -20,11 +20,18 @@ export function sampleRectArea(light: RectLight, u1: number, u2: number, out: Fl
 }
 
 /**
- * Density of {@link sampleRectArea} per unit AREA: 1/|A| on the rectangle, 0 for a degenerate
- * rectangle. (Points off the rectangle have density 0; callers only evaluate it at samples.)
+ * Density of {@link sampleRectArea} per unit AREA at the point x: 1/|A| on the rectangle; 0 off it
+ * (off its plane or outside its edges by more than a relative 1e-9) and for a degenerate rectangle.
  */
-export function rectAreaPdf(light: RectLight): number {
-  return light.area > 0 ? 1 / light.area : 0;
+export function rectAreaPdf(light: RectLight, x: number, y: number, z: number): number {
+  if (!(light.area > 0)) return 0;
+  const sx = x - light.corner[0], sy = y - light.corner[1], sz = z - light.corner[2];
+  const tol = 1e-9 * Math.max(1, light.width, light.height);
+  const a = sx * light.ex[0] + sy * light.ex[1] + sz * light.ex[2];
+  const b = sx * light.ey[0] + sy * light.ey[1] + sz * light.ey[2];
+  const c = sx * light.normal[0] + sy * light.normal[1] + sz * light.normal[2];
+  if (!(Math.abs(c) <= tol && a >= -tol && a <= light.width + tol && b >= -tol && b <= light.height + tol)) return 0;
+  return 1 / light.area;
 }
 
 /**

@@ -146,20 +146,28 @@ export function sampleSphericalRectangle(q: SphericalRect, u1: number, u2: numbe
 }
 
 /**
- * Density of {@link sampleSphericalRectangle} per unit SOLID ANGLE at the sampled point x:
- * 1/Ω normally; r²/(|A| cos θ_l) in the tiny-light fallback (uniform area, converted); 0 when
- * Ω = 0. (x matters only in the fallback; points off the rectangle are not checked.)
+ * Density of {@link sampleSphericalRectangle} per unit SOLID ANGLE (of the direction from p) at the
+ * point x: 1/Ω normally; r²/(|A| cos θ_l) in the tiny-light fallback (uniform area, converted);
+ * 0 when Ω = 0 or when x is not on the rectangle (off its plane or outside its edges by more than
+ * a relative 1e-9) — 0 outside the support, never NaN.
  */
-export function sphericalRectanglePdf(q: SphericalRect, x = 0, y = 0, z = 0): number {
+export function sphericalRectanglePdf(q: SphericalRect, x: number, y: number, z: number): number {
   if (!(q.solidAngle > 0)) return 0;
+  const l = q.light;
+  const sx = x - l.corner[0], sy = y - l.corner[1], sz = z - l.corner[2];
+  const tol = 1e-9 * Math.max(1, l.width, l.height, Math.abs(q.z0));
+  const a = sx * l.ex[0] + sy * l.ex[1] + sz * l.ex[2];
+  const b = sx * l.ey[0] + sy * l.ey[1] + sz * l.ey[2];
+  const c = sx * l.normal[0] + sy * l.normal[1] + sz * l.normal[2];
+  if (!(Math.abs(c) <= tol && a >= -tol && a <= l.width + tol && b >= -tol && b <= l.height + tol)) return 0;
   if (!q.areaFallback) return 1 / q.solidAngle;
   const dx = x - q.px, dy = y - q.py, dz = z - q.pz;
   const r2 = dx * dx + dy * dy + dz * dz;
-  const n = q.light.normal;
+  const n = l.normal;
   const r = Math.sqrt(r2);
   const cosL = r > 0 ? Math.abs(dx * n[0] + dy * n[1] + dz * n[2]) / r : 0;
   if (!(cosL > 0)) return 0;
-  const v = r2 / (q.light.area * cosL);
+  const v = r2 / (l.area * cosL);
   return Number.isFinite(v) ? v : 0;
 }
 

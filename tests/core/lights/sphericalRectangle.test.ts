@@ -10,6 +10,9 @@ import {
 } from '../../../src/core/lights/sphericalRectangle';
 import { triangleSolidAngle } from '../../../src/core/geometry/solidAngle';
 import { Rng } from '../../../src/core/random';
+import { chi2Test } from '../../../src/core/verify';
+import { rectAreaPdf, sampleRectArea } from '../../../src/core/lights/areaSampling';
+import { rectProjectedSolidAngle } from '../../../src/core/lights/polygonIrradiance';
 
 const STRESS = [0, 2 ** -53, 0.5, 1 - 2 ** -53];
 
@@ -36,7 +39,13 @@ describe('spherical rectangle sampling (Ureña et al. 2013)', () => {
       expect(q.solidAngle).toBeCloseTo(rectSolidAngle(l, ...p), 14);
       // The interior-angle form Σγ − 2π agrees where it is accurate.
       expect(q.g0 + q.g1 + q.g2 + q.g3 - 2 * Math.PI).toBeCloseTo(q.solidAngle, 9);
-      expect(sphericalRectanglePdf(q)).toBeCloseTo(1 / q.solidAngle, 9);
+      expect(sphericalRectanglePdf(q, ...l.center)).toBeCloseTo(1 / q.solidAngle, 9);
+      // 0 outside the support: off the plane, beyond an edge; never NaN.
+      const off = [l.center[0] + l.normal[0], l.center[1] + l.normal[1], l.center[2] + l.normal[2]] as const;
+      expect(sphericalRectanglePdf(q, ...off)).toBe(0);
+      const beyond = [0, 1, 2].map((k) => l.corner[k]! + 1.01 * l.edgeX[k]! + 0.5 * l.edgeY[k]!) as [number, number, number];
+      expect(sphericalRectanglePdf(q, ...beyond)).toBe(0);
+      expect(sphericalRectanglePdf(q, NaN, 0, 0)).toBe(0);
     });
     it(`${name}: samples lie on the rectangle for stress ξ and the inverse recovers ξ`, () => {
       const out = [0, 0, 0];
@@ -149,5 +158,126 @@ describe('spherical rectangle sampling (Ureña et al. 2013)', () => {
         expect(Math.abs(v1 - u1)).toBeLessThan(1e-6);
         expect(Math.abs(v2 - u2)).toBeLessThan(1e-6);
       }
+  });
+});
+
+describe('χ² goodness of fit on the light (8 × 8 cells, α = 0.01, Šidák over 6 tests)', () => {
+  const K = 8;
+  const N = 60000;
+  const cases: Array<[string, RectLight, [number, number, number]]> = [
+    ['near, tilted', makeRectLight([0.3, 0.4, 0.5], 2, 1.5, 35), [0, 0, 0]],
+    ['overhead', makeRectLight([0, 0, 1], 1, 1, 0), [0.2, 0, 0]],
+    ['grazing', makeRectLight([0, 3, 0.6], 2, 1, -80), [0, 0, 0]],
+  ];
+  /** Expected counts: N × Ω(cell)/Ω, each cell's Ω by Van Oosterom–Strackee. */
+  function expectedCounts(l: RectLight, p: [number, number, number], total: number): Float64Array {
+    const e = new Float64Array(K * K);
+    const q = makeSphericalRect(l, ...p);
+    for (let i = 0; i < K; i++)
+      for (let j = 0; j < K; j++) {
+        const cell = makeRectLight(
+          [0, 1, 2].map((k) => l.corner[k]! + ((i + 0.5) / K) * l.edgeX[k]! + ((j + 0.5) / K) * l.edgeY[k]!),
+          l.width / K, l.height / K, l.tiltDeg,
+        );
+        e[i * K + j] = (total * rectSolidAngle(cell, ...p)) / q.solidAngle;
+      }
+    return e;
+  }
+  function histogram(l: RectLight, sample: (u1: number, u2: number, out: number[]) => void, seed: number): Float64Array {
+    const h = new Float64Array(K * K);
+    const rng = new Rng(seed);
+    const out = [0, 0, 0];
+    for (let n = 0; n < N; n++) {
+      sample(rng.nextFloat(), rng.nextFloat(), out);
+      const [a, b] = local(l, out);
+      const i = Math.min(K - 1, Math.max(0, Math.floor((a / l.width) * K)));
+      const j = Math.min(K - 1, Math.max(0, Math.floor((b / l.height) * K)));
+      h[i * K + j]!++;
+    }
+    return h;
+  }
+  for (const [name, l, p] of cases) {
+    it(`${name}: the spherical-rectangle sampler passes`, () => {
+      const q = makeSphericalRect(l, ...p);
+      const r = chi2Test(histogram(l, (a, b, o) => sampleSphericalRectangle(q, a, b, o), 21), expectedCounts(l, p, N), { alpha: 0.01, tests: 6 });
+      expect(r.pass, `p = ${r.pValue}`).toBe(true);
+    });
+    it(`${name}: a deliberately broken sampler (uniform by area, or a missing square root) is rejected`, () => {
+      const q = makeSphericalRect(l, ...p);
+      const byArea = chi2Test(histogram(l, (a, b, o) => sampleRectArea(l, a, b, o), 22), expectedCounts(l, p, N), { alpha: 0.01, tests: 6 });
+      expect(byArea.pass).toBe(false);
+      // Broken y map: h interpolated in h² instead of h (a "missing square root").
+      const broken = (a: number, b: number, o: number[]) => sampleSphericalRectangle(q, a, b * b, o);
+      const r = chi2Test(histogram(l, broken, 23), expectedCounts(l, p, N), { alpha: 0.01, tests: 6 });
+      expect(r.pass).toBe(false);
+    });
+  }
+  it('uniform area sampling passes against area-proportional expected counts; pdf 1/|A| on, 0 off', () => {
+    const l = makeRectLight([0.3, 0.4, 0.5], 2, 1.5, 35);
+    const e = new Float64Array(K * K).fill(N / (K * K));
+    const r = chi2Test(histogram(l, (a, b, o) => sampleRectArea(l, a, b, o), 24), e, { alpha: 0.01 });
+    expect(r.pass).toBe(true);
+    expect(rectAreaPdf(l, ...l.center)).toBeCloseTo(1 / 3, 15);
+    expect(rectAreaPdf(l, l.center[0] + 5, l.center[1], l.center[2])).toBe(0);
+    expect(rectAreaPdf(makeRectLight([0, 0, 1], 0, 1), 0, 0, 1)).toBe(0);
+  });
+});
+
+describe('properties over whole input ranges (fast-check)', () => {
+  const vec = (lo: number, hi: number) => fc.tuple(fc.double({ min: lo, max: hi, noNaN: true }), fc.double({ min: lo, max: hi, noNaN: true }), fc.double({ min: lo, max: hi, noNaN: true }));
+  it('any light, any point off its plane: samples lie on the light, pdf = 1/Ω there, inverse recovers u', () => {
+    fc.assert(
+      fc.property(
+        vec(-5, 5), fc.double({ min: 0.01, max: 5, noNaN: true }), fc.double({ min: 0.01, max: 5, noNaN: true }), fc.double({ min: -180, max: 180, noNaN: true }),
+        vec(-5, 5), fc.double({ min: 0, max: 1, noNaN: true }), fc.double({ min: 0, max: 1, noNaN: true }),
+        (c, w, h, t, p, u1, u2) => {
+          const l = makeRectLight(c, w, h, t);
+          const q = makeSphericalRect(l, ...p);
+          // Away from the degenerate limit p → the light's plane (|z₀| → 0), where Ω → 2π and the map
+          // squeezes the whole light into grazing directions (round trips then need more than 53 bits).
+          fc.pre(q.solidAngle > 1e-4 && Math.abs(q.z0) > 1e-2 * Math.max(w, h));
+          const out = [0, 0, 0];
+          sampleSphericalRectangle(q, u1, u2, out);
+          expect(out.every(Number.isFinite)).toBe(true);
+          const pdf = sphericalRectanglePdf(q, out[0]!, out[1]!, out[2]!);
+          expect(pdf).toBeCloseTo(1 / q.solidAngle, 6);
+          expect(q.solidAngle).toBeLessThanOrEqual(2 * Math.PI);
+          const [v1, v2] = invertSphericalRectangleSample(q, out[0]!, out[1]!, out[2]!);
+          expect(Math.abs(v1 - u1)).toBeLessThan(1e-5);
+          expect(Math.abs(v2 - u2)).toBeLessThan(1e-5);
+        },
+      ),
+      { seed: 2024, numRuns: 400 },
+    );
+  });
+  it('any point, even 1e-12 from the plane: finite samples on the light with positive pdf; ∫cos θ dω ≤ min(Ω, π)', () => {
+    fc.assert(
+      fc.property(
+        vec(-5, 5), fc.double({ min: 0.01, max: 5, noNaN: true }), fc.double({ min: 0.01, max: 5, noNaN: true }), fc.double({ min: -180, max: 180, noNaN: true }),
+        vec(-5, 5), fc.double({ min: -12, max: 0, noNaN: true }), fc.constantFrom(0, 2 ** -53, 0.5, 1 - 2 ** -53), fc.constantFrom(0, 2 ** -53, 0.5, 1 - 2 ** -53),
+        (c, w, h, t, p0, logd, u1, u2) => {
+          const l = makeRectLight(c, w, h, t);
+          // Move p to distance 10^logd from the plane, in front of the light.
+          const dist = (p0[0] - l.center[0]) * l.normal[0] + (p0[1] - l.center[1]) * l.normal[1] + (p0[2] - l.center[2]) * l.normal[2];
+          const p = [0, 1, 2].map((k) => p0[k]! + (10 ** logd - dist) * l.normal[k]!) as [number, number, number];
+          const q = makeSphericalRect(l, ...p);
+          fc.pre(q.solidAngle > 0);
+          const out = [0, 0, 0];
+          sampleSphericalRectangle(q, u1, u2, out);
+          const [a, b, cc] = local(l, out);
+          expect(out.every(Number.isFinite)).toBe(true);
+          expect(a).toBeGreaterThanOrEqual(-1e-9 * w);
+          expect(a).toBeLessThanOrEqual(w * (1 + 1e-9));
+          expect(b).toBeGreaterThanOrEqual(-1e-9 * h);
+          expect(b).toBeLessThanOrEqual(h * (1 + 1e-9));
+          expect(Math.abs(cc)).toBeLessThan(1e-8);
+          expect(sphericalRectanglePdf(q, out[0]!, out[1]!, out[2]!)).toBeGreaterThan(0);
+          const proj = rectProjectedSolidAngle(l, ...p);
+          expect(proj).toBeGreaterThanOrEqual(0);
+          expect(proj).toBeLessThanOrEqual(Math.min(q.solidAngle, Math.PI) * (1 + 1e-12) + 1e-15);
+        },
+      ),
+      { seed: 77, numRuns: 400 },
+    );
   });
 });
