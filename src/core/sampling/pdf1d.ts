@@ -11,6 +11,7 @@
  * (the inversion method); pbrt-v4 §A.4.1 for tabulated piecewise-constant distributions.
  */
 import { integrate1D } from '../estimators/integrate1d';
+import { PiecewiseConstant1D } from './piecewise1D';
 
 /** A 1D density on [a, b] with its sampler and inverse (the scene's strategies are these). */
 export interface Pdf1D {
@@ -240,74 +241,36 @@ export type TypedPdfResult =
 
 /**
  * Sampler over a piecewise-constant density with the given bin masses on [a, b] (bins of equal
- * width): inversion of the tabulated CDF by binary search, then linear inside the bin. Domain:
- * masses ≥ 0 with a positive finite sum (normalized here). The density is q(x) = mass_k/(Σ · Δx) in
- * bin k, w.r.t. dx; 0 outside [a, b]. Source: pbrt-v4 §A.4.1 `PiecewiseConstant1D` (Sample,
- * Invert), written here over bin masses so that each bin carries exactly the mass of the typed
- * density over it.
+ * width), built on pbrt's PiecewiseConstant1D (./piecewise1D.ts: CDF table, binary search, linear
+ * inside the bin) with bin values mass_k/Δx. Domain: masses ≥ 0, finite, not all 0 (throws the
+ * table's DensityError otherwise). The density is q(x) = mass_k/(Σ · Δx) in bin k, w.r.t. dx; 0
+ * outside [a, b]. Source: pbrt-v4 §A.4.1 `PiecewiseConstant1D` (Sample, Invert), used over bin
+ * masses so that each bin carries exactly the mass of the typed density over it.
  */
 export function piecewiseConstantPdf1D(masses: ArrayLike<number>, a: number, b: number, kind = 'tabulated'): Pdf1D {
   const n = masses.length;
-  const cdf = new Float64Array(n + 1);
-  for (let k = 0; k < n; k++) cdf[k + 1] = cdf[k]! + masses[k]!;
-  const total = cdf[n]!;
-  if (!(total > 0 && total < Infinity)) throw new Error('tabulated density needs a positive, finite total mass');
-  for (let k = 1; k <= n; k++) cdf[k] = cdf[k]! / total;
-  cdf[n] = 1;
-  // trailing empty bins: their CDF is already 1, so no u < 1 can land in them
-  for (let k = n - 1; k > 0 && masses[k] === 0; k--) cdf[k] = 1;
   const dx = (b - a) / n;
-  const dens = new Float64Array(n);
-  for (let k = 0; k < n; k++) dens[k] = masses[k]! / total / dx;
-  /** Largest k with cdf[k] ≤ u (and mass in bin k > 0 when u is inside). */
-  const find = (u: number): number => {
-    let lo = 0;
-    let hi = n;
-    while (hi - lo > 1) {
-      const mid = (lo + hi) >> 1;
-      if (cdf[mid]! <= u) lo = mid;
-      else hi = mid;
-    }
-    return lo;
-  };
-  const sampleOne = (u: number): number => {
-    const k = find(u);
-    const w = cdf[k + 1]! - cdf[k]!;
-    const t = w > 0 ? (u - cdf[k]!) / w : 0;
-    const x = a + (k + Math.min(t, 1)) * dx;
-    return x < a ? a : x > b ? b : x;
-  };
-  const pdfOne = (x: number): number => {
-    if (!(x >= a && x <= b)) return 0;
-    const s = (x - a) / dx;
-    const k = Math.min(n - 1, Math.floor(s));
-    // a point on the edge between a full bin and an empty one belongs to the full one (the sampler
-    // can return the right edge of bin k − 1 when rounding gives t = 1)
-    return dens[k]! === 0 && k > 0 && s === k ? dens[k - 1]! : dens[k]!;
-  };
+  const values = new Float64Array(n);
+  for (let k = 0; k < n; k++) values[k] = masses[k]! / dx;
+  const table = new PiecewiseConstant1D(values, a, b);
+  const dens = table.pdfs;
   return {
     kind,
     a,
     b,
-    sample: sampleOne,
-    pdf: pdfOne,
-    invert(x) {
-      const xc = x < a ? a : x > b ? b : x;
-      const s = (xc - a) / dx;
+    sample: (u) => table.sample(u).x,
+    pdf(x) {
+      if (!(x >= a && x <= b)) return 0;
+      const s = (x - a) / dx;
       const k = Math.min(n - 1, Math.floor(s));
-      return Math.min(1, cdf[k]! + (s - k) * (cdf[k + 1]! - cdf[k]!));
+      // a point on the edge between a full bin and an empty one belongs to the full one (the
+      // sampler returns the right edge of bin k − 1 when rounding gives t = 1)
+      return dens[k]! === 0 && k > 0 && s === k ? dens[k - 1]! : dens[k]!;
     },
+    invert: (x) => table.invert(x),
     sampleBatch(u, x, p, start, end) {
-      for (let i = start; i < end; i++) {
-        const k = find(u[i]!);
-        const w = cdf[k + 1]! - cdf[k]!;
-        const t = w > 0 ? (u[i]! - cdf[k]!) / w : 0;
-        let xi = a + (k + (t > 1 ? 1 : t)) * dx;
-        xi = xi < a ? a : xi > b ? b : xi;
-        x[i] = xi;
-        // density of the bin the sample lies in (a sample on a bin edge belongs to bin k)
-        p[i] = dens[k]!;
-      }
+      if (start === 0) table.sampleMany(u, x, p, end);
+      else table.sampleMany(u.subarray(start, end), x.subarray(start, end), p.subarray(start, end), end - start);
     },
   };
 }
