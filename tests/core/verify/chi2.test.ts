@@ -68,6 +68,31 @@ describe('chi2UpperTail', () => {
     }
   });
 
+  it('keeps 1e-12 relative accuracy far in the tail for odd dof (erfc continued fraction, BigNumber)', () => {
+    // Q(1/2, y) = erfc(√y), erfc z = e^{-z²}/√π · 1/(z + (1/2)/(z + 1/(z + (3/2)/(z + …)))) (A&S 7.1.14),
+    // evaluated backwards in 80 digits; then Q(a + 1, y) = Q(a, y) + y^a e^{-y} / Γ(a + 1) (A&S 6.5.21).
+    for (const x of [200, 600, 1000, 1400]) {
+      const y = big(x / 2);
+      const z = M.sqrt(y) as BigNumber;
+      let t = z;
+      for (let k = 600; k >= 1; k--) t = M.add(z, M.divide(big(k / 2), t)) as BigNumber;
+      const pi = M.pi as unknown as BigNumber;
+      let q = M.divide(M.exp(M.unaryMinus(y)), M.multiply(M.sqrt(pi), t)) as BigNumber; // Q(1/2, y)
+      let a = big(0.5);
+      let gamma = M.sqrt(pi) as BigNumber; // Γ(1/2)
+      for (const dof of [1, 3, 5, 7]) {
+        const ref = M.number(q) as number;
+        const got = chi2UpperTail(x, dof);
+        expect(ref).toBeGreaterThan(0);
+        expect(Math.abs(got - ref) / ref, `dof=${dof} x=${x}`).toBeLessThan(1e-12);
+        // step a → a + 1
+        gamma = M.multiply(gamma, a) as BigNumber; // Γ(a + 1) = a Γ(a)
+        q = M.add(q, M.divide(M.multiply(M.pow(y, a) as BigNumber, M.exp(M.unaryMinus(y))), gamma)) as BigNumber;
+        a = M.add(a, 1) as BigNumber;
+      }
+    }
+  });
+
   it('reproduces textbook critical values', () => {
     // qchisq(0.95, 1) = 3.841458820694124, qchisq(0.99, 1) = 6.634896601021214 (R)
     expect(chi2UpperTail(3.841458820694124, 1)).toBeCloseTo(0.05, 12);
