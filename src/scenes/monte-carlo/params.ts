@@ -34,8 +34,8 @@ export const schema = {
   samples: { kind: 'list', default: null, maxItems: 32, min: -1e6, max: 1e6, label: 'given samples x' },
   n: { kind: 'number', default: 10000, min: 1, max: MAX_N, integer: true, label: 'samples N' },
   seed: { kind: 'number', default: 1, min: 0, max: 4294967295, integer: true },
-  hn: { kind: 'number', default: 16, min: 1, max: 100000, integer: true, label: 'samples per estimate (histogram)' },
-  runs: { kind: 'number', default: 32, min: 4, max: 1000, integer: true, label: 'independent runs (RMSE)' },
+  hn: { kind: 'number', default: 16, min: 1, max: 10000, integer: true, label: 'samples per estimate (histogram)' },
+  runs: { kind: 'number', default: 32, min: 4, max: 256, integer: true, label: 'independent runs (RMSE)' },
 } as const satisfies ParamSchema;
 
 export type McSchema = typeof schema;

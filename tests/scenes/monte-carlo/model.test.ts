@@ -157,3 +157,15 @@ describe('jobs (as run in the worker)', () => {
     await expect(estimateJob({ ...base, f: 'y + 1', strategies: [base.strategies[0]!], n: 10 }, compileX)).rejects.toThrow(/f:/);
   });
 });
+
+describe('samples field parsing', async () => {
+  const { parseSamples } = await import('../../../src/scenes/monte-carlo/view/Fields');
+  it('parses lists, empties and rejects garbage with a message', () => {
+    expect(parseSamples('1.16, 1.98 ,0.54;1.26')).toEqual({ ok: true, value: [1.16, 1.98, 0.54, 1.26] });
+    expect(parseSamples('  ')).toEqual({ ok: true, value: null });
+    const bad = parseSamples('1, abc');
+    expect(bad.ok).toBe(false);
+    if (!bad.ok) expect(bad.message).toMatch(/abc/);
+    expect(parseSamples(Array(40).fill(1).join(',')).ok).toBe(false);
+  });
+});

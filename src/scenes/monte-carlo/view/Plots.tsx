@@ -320,7 +320,7 @@ export function RmsePanel({ args, nMax, runs, exact, makeWorker, onRuns }: { arg
     <Panel title="RMSE over independent runs, and against run time" className="mc-plots">
       <div ref={box}>
         <div className="mc-inline">
-          <NumberField label="runs" value={runs} min={4} max={1000} step={1} onChange={(v) => onRuns(Math.round(v))} testId="runs-input" />
+          <NumberField label="runs" value={runs} min={4} max={256} step={1} onChange={(v) => onRuns(Math.round(v))} testId="runs-input" />
           <span className="mc-note">
             {runsDone} run{runsDone === 1 ? '' : 's'} per strategy so far, N up to {nMax.toLocaleString('en')}
           </span>
@@ -386,7 +386,7 @@ export function HistogramPanel({ args, N, exact, makeWorker, onN }: { args: Prob
     <Panel title="Unbiasedness: many independent estimates (Q2 c)" className="mc-plots">
       <div ref={box}>
         <div className="mc-inline">
-          <NumberField label="samples per estimate" value={N} min={1} max={100000} step={1} onChange={(v) => onN(Math.round(v))} testId="hn-input" />
+          <NumberField label="samples per estimate" value={N} min={1} max={10000} step={1} onChange={(v) => onN(Math.round(v))} testId="hn-input" />
           <span className="mc-note">{M} estimates, each from its own {N} sample{N === 1 ? '' : 's'} (selected pdf and sequence)</span>
         </div>
         <RunBar running={task.running} waiting={task.waiting} progress={task.progress} onCancel={task.cancel} onRun={task.rerun} label="Estimating…" />
