@@ -14,7 +14,11 @@ import type { Lobe } from '../model';
 import { MAX_N } from '../params';
 import { xiColor } from './colors';
 
-const BATCH = 1 << 16;
+const BATCH = 1 << 15;
+/** At most this many new points per animation frame, so no frame does more than a few ms of work. */
+const MAX_PER_FRAME = 1 << 16;
+/** While the camera is being dragged, draw at most this many points (level of detail). */
+const ORBIT_LOD = 200_000;
 /** Seconds per decade of growth. */
 const DECADE_SECONDS = 0.7;
 const GRID_LINES = 8;
@@ -26,6 +30,20 @@ interface Anim {
   target: number;
   /** Wall-clock time (ms) of the last growth step; growth follows real time, not frame count. */
   last: number;
+  /** When paused: fill up to this count, MAX_PER_FRAME points per frame (0 = nothing to fill). */
+  fillTo: number;
+  /** Measured generation speed (points per ms, running average) and the last frame's length (ms). */
+  pointsPerMs: number;
+  frameMs: number;
+}
+
+/**
+ * New points allowed this frame: MAX_PER_FRAME, or more when frames are slow anyway (software
+ * rendering): generation may take up to a quarter of the last frame's length.
+ */
+function perFrame(a: Anim): number {
+  if (!a.pointsPerMs) return MAX_PER_FRAME;
+  return Math.max(MAX_PER_FRAME, Math.floor(a.pointsPerMs * 0.25 * Math.min(a.frameMs, 4000)));
 }
 
 export interface HemisphereViewProps {
@@ -47,7 +65,7 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
     material: THREE.PointsMaterial;
     grid: THREE.LineSegments | null;
   } | null>(null);
-  const anim = useRef<Anim>({ playing: true, shown: 0, target: n, last: 0 });
+  const anim = useRef<Anim>({ playing: true, shown: 0, target: n, last: 0, fillTo: 0, pointsPerMs: 0, frameMs: 16 });
   const cfg = useRef({ lobe, kind, seed, n });
   cfg.current = { lobe, kind, seed, n };
   const label = useRef<HTMLSpanElement>(null);
@@ -87,7 +105,12 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
     }
     if (end > start) {
       // generation cost per batch, readable with performance.getEntriesByName('hemisphere-grow')
-      performance.measure('hemisphere-grow', { start: t0, end: performance.now(), detail: end - start });
+      const t1 = performance.now();
+      performance.measure('hemisphere-grow', { start: t0, end: t1, detail: end - start });
+      if (end - start >= 1024 && t1 > t0) {
+        const pps = (end - start) / (t1 - t0);
+        a.pointsPerMs = a.pointsPerMs ? 0.7 * a.pointsPerMs + 0.3 * pps : pps;
+      }
       o.pos.clearUpdateRanges();
       o.pos.addUpdateRange(3 * start, 3 * (end - start));
       o.pos.needsUpdate = true;
@@ -108,7 +131,7 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
     performance.clearMeasures('hemisphere-grow');
     const o = objs.current;
     if (o) o.geom.setDrawRange(0, 0);
-    if (!anim.current.playing) grow(cfg.current.n);
+    anim.current.fillTo = anim.current.playing ? 0 : cfg.current.n;
     updateLabel();
     ctxRef.current?.invalidate();
   };
@@ -209,6 +232,17 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
     ctx.controls.update();
 
     objs.current = { geom, pos, col, points, material, grid: null };
+    // level of detail while orbiting: the sets are prefixes of well-spread sequences (except the
+    // stratified set, whose prefix fills rows in order, so it is always drawn in full)
+    const onStart = () => {
+      if (cfg.current.kind !== 'stratified' && anim.current.shown > ORBIT_LOD) geom.setDrawRange(0, ORBIT_LOD);
+    };
+    const onEnd = () => {
+      geom.setDrawRange(0, anim.current.shown);
+      ctx.invalidate();
+    };
+    ctx.controls.addEventListener('start', onStart);
+    ctx.controls.addEventListener('end', onEnd);
     if (!cfg.current.lobe) {
       anim.current.playing = false;
       setPlaying(false);
@@ -219,6 +253,12 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
     const stop = ctx.onFrame(() => {
       const a = anim.current;
       const nn = cfg.current.n;
+      if (!a.playing && a.fillTo > a.shown && cfg.current.lobe) {
+        grow(Math.min(a.fillTo, a.shown + perFrame(a)));
+        if (a.shown < a.fillTo) return true;
+        a.fillTo = 0;
+        return false;
+      }
       if (!a.playing || !cfg.current.lobe) {
         a.last = 0;
         return false;
@@ -233,8 +273,9 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
       // growth); at most 0.25 s of growth per frame after a stall (tab hidden, off screen)
       const now = performance.now();
       const dt = a.last ? Math.min(0.25, (now - a.last) / 1000) : 1 / 60;
+      if (a.last) a.frameMs = now - a.last;
       a.last = now;
-      const next = Math.max(a.shown + 1, Math.ceil(Math.max(1, a.shown) * Math.pow(10, dt / DECADE_SECONDS)));
+      const next = Math.min(a.shown + perFrame(a), Math.max(a.shown + 1, Math.ceil(Math.max(1, a.shown) * Math.pow(10, dt / DECADE_SECONDS))));
       grow(next);
       if (a.shown >= nn) {
         a.playing = false;
@@ -246,6 +287,8 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
     });
     return () => {
       stop();
+      ctx.controls.removeEventListener('start', onStart);
+      ctx.controls.removeEventListener('end', onEnd);
       objs.current = null;
       ctxRef.current = null;
     };
@@ -273,6 +316,7 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
       objs.current?.geom.setDrawRange(0, 0);
     }
     a.playing = true;
+    a.fillTo = 0;
     setPlaying(true);
     ctxRef.current?.invalidate();
   };
@@ -280,11 +324,12 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
     const a = anim.current;
     a.playing = false;
     setPlaying(false);
-    grow(a.shown === 0 ? 1 : 2 * a.shown);
+    a.fillTo = Math.min(cfg.current.n, a.shown === 0 ? 1 : 2 * a.shown);
     ctxRef.current?.invalidate();
   };
   const reset = () => {
     anim.current.playing = false;
+    anim.current.fillTo = 0;
     setPlaying(false);
     anim.current.shown = 0;
     objs.current?.geom.setDrawRange(0, 0);

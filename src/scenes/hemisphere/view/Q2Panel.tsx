@@ -89,7 +89,7 @@ export function RepeatView({ result, exact, runs, perRun }: { result: RepeatResu
         {formatNumber(exact, 6)} (dashed line). Spread of one estimate: {formatNumber(u.sd, 3)} uniform
         {hasImp ? `, ${formatNumber(im.sd, 3)} importance` : ''}. Both are unbiased: E[⟨I⟩] = ∫ f dω.
         {hasImp && im.sd > 1.05 * u.sd
-          ? ' Here importance sampling is worse than uniform: p is not shaped like f, so f/p is large where p is small (for the exam lobe and f = cos θ, f/p = e^{−φ}/k, huge near φ = 0).'
+          ? ' Here importance sampling is worse than uniform: p is not shaped like f, so f/p is large where p is small (for the exam lobe and f = cos θ, f/p = e^(−φ)/k, huge near φ = 0).'
           : hasImp && im.sd < 0.95 * u.sd
             ? ' Here importance sampling wins: p follows f more closely than the uniform density does.'
             : ''}
