@@ -1,5 +1,5 @@
 import { chi2Test, type Chi2Result } from './chi2';
-import { adaptiveIntegrate2D } from './quadrature';
+import { adaptiveIntegrate2D, type AdaptiveOptions } from './quadrature';
 
 const TWO_PI = 2 * Math.PI;
 
@@ -17,6 +17,11 @@ export interface HemisphereChi2Options {
   tests?: number;
   /** Bin the whole sphere (cos θ ∈ [−1, 1]) instead of the upper hemisphere; default false. */
   sphere?: boolean;
+  /**
+   * Total pdf evaluations allowed for the expected counts (default 4 000 000, shared evenly by the
+   * bins): bounds the time even for a discontinuous or very peaked pdf (about 0.1–0.3 s).
+   */
+  maxEvals?: number;
 }
 
 /** Result of {@link hemisphereChi2}: the χ² result plus the histograms (row-major, cos θ rows). */
@@ -78,13 +83,14 @@ export function hemisphereChi2(
     const s = Math.sqrt(Math.max(0, 1 - c * c));
     return pdf(s * Math.cos(phi), s * Math.sin(phi), c);
   };
+  const quad = quadratureOptions(opts.maxEvals, nc * np);
   for (let ic = 0; ic < nc; ic++) {
     const c0 = zMin + ((1 - zMin) * ic) / nc;
     const c1 = zMin + ((1 - zMin) * (ic + 1)) / nc;
     for (let ip = 0; ip < np; ip++) {
       const p0 = (TWO_PI * ip) / np;
       const p1 = (TWO_PI * (ip + 1)) / np;
-      expected[ic * np + ip] = n * adaptiveIntegrate2D(integrand, c0, c1, p0, p1);
+      expected[ic * np + ip] = n * adaptiveIntegrate2D(integrand, c0, c1, p0, p1, quad);
     }
   }
   const res = withOutside(chi2Test(observed, expected, opts), outside);
@@ -95,6 +101,8 @@ export function hemisphereChi2(
 export interface PlanarChi2Options {
   /** Bins along x (default 20). */
   xBins?: number;
+  /** Total pdf evaluations allowed for the expected counts (default 4 000 000, shared by the bins). */
+  maxEvals?: number;
   /** Bins along y (default 20). */
   yBins?: number;
   /** The binned rectangle (default the unit square). */
@@ -148,17 +156,27 @@ export function planarChi2(
     const iy = Math.min(ny - 1, Math.floor((y - y0) * sy));
     observed[iy * nx + ix]++;
   }
+  const quad = quadratureOptions(opts.maxEvals, nx * ny);
   for (let iy = 0; iy < ny; iy++) {
     const b0 = y0 + ((y1 - y0) * iy) / ny;
     const b1 = y0 + ((y1 - y0) * (iy + 1)) / ny;
     for (let ix = 0; ix < nx; ix++) {
       const a0 = x0 + ((x1 - x0) * ix) / nx;
       const a1 = x0 + ((x1 - x0) * (ix + 1)) / nx;
-      expected[iy * nx + ix] = n * adaptiveIntegrate2D(pdf, a0, a1, b0, b1);
+      expected[iy * nx + ix] = n * adaptiveIntegrate2D(pdf, a0, a1, b0, b1, quad);
     }
   }
   const res = withOutside(chi2Test(observed, expected, opts), outside);
   return { ...res, observed, expected, xBins: nx, yBins: ny, outside };
+}
+
+/**
+ * Per-bin quadrature settings: relative accuracy 1e-9 (far below the χ² test's resolution, which is
+ * ~1/√(expected count)) and an equal share of the total evaluation budget.
+ */
+function quadratureOptions(maxEvals: number | undefined, bins: number): AdaptiveOptions {
+  const total = maxEvals !== undefined && maxEvals > 0 ? maxEvals : 4_000_000;
+  return { relTol: 1e-9, maxEvals: Math.max(500, Math.floor(total / bins)) };
 }
 
 function withOutside(res: Chi2Result, outside: number): Chi2Result {

@@ -173,3 +173,27 @@ describe('planarChi2', () => {
     expect(planarChi2(uni, n, pdf, { domain, xBins: 10, yBins: 10 }).pass).toBe(false);
   });
 });
+
+describe('χ² expected counts have bounded cost', () => {
+  it('a pdf that is discontinuous everywhere finishes quickly and stays accurate enough for χ²', () => {
+    // checkerboard in (cos θ, φ) at a resolution unrelated to the bins: 37 × 53 cells, mean 1/(2π)
+    const pdf = (x: number, y: number, z: number) => {
+      let phi = Math.atan2(y, x);
+      if (phi < 0) phi += 2 * Math.PI;
+      const a = Math.floor(z * 37) + Math.floor((phi / (2 * Math.PI)) * 53);
+      return a % 2 === 0 ? 1.5 / (2 * Math.PI) : 0.5 / (2 * Math.PI);
+    };
+    let evals = 0;
+    const counted = (x: number, y: number, z: number) => {
+      evals++;
+      return pdf(x, y, z);
+    };
+    const t0 = performance.now();
+    const r = hemisphereChi2(new Float64Array([0, 0, 1]), 1, counted, { maxEvals: 1_000_000 });
+    const ms = performance.now() - t0;
+    expect(evals).toBeLessThanOrEqual(1_000_000 + 200 * 49);
+    expect(ms).toBeLessThan(5000);
+    const total = r.expected.reduce((a, b) => a + b, 0);
+    expect(Math.abs(total - 1)).toBeLessThan(2e-3);
+  });
+});
