@@ -4,6 +4,7 @@
  * closed form computed here (the corner formula by inclusion–exclusion in the light's own frame,
  * independent of the app's Van Oosterom–Strackee code); bad input gives a message and a fallback.
  */
+import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, readout, readoutNumber } from './fixtures';
 
 type V3 = [number, number, number];
@@ -127,4 +128,12 @@ test('large n is estimated in a worker without blocking; the result agrees withi
   const se = await readoutNumber(page, 'stderr');
   expect(se).toBeGreaterThan(0);
   expect(Math.abs(est - ref)).toBeLessThanOrEqual(3 * se);
+});
+
+test('dark theme: no serious or critical axe violations (the highlighted KaTeX boxes keep dark text)', async ({ page }) => {
+  await openScene(page, '#/area-light?theme=dark&occluder=1');
+  await page.waitForTimeout(2000);
+  const r = await new AxeBuilder({ page }).analyze();
+  const bad = r.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => v.id);
+  expect(bad).toEqual([]);
 });

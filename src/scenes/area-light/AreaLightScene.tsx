@@ -295,7 +295,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
         <MathTex display tex={String.raw`L_o(x,\omega_o) = \int_{\Omega} f(x,\omega_o,\omega_i)\,L_i(x,\omega_i)\cos\theta\,d\omega_i`} />
         <MathTex
           display
-          tex={String.raw`L_o(x,\omega_o) = \int_{A} f\,L_e(y)\,\colorbox{#d7ecd9}{$V(x,y)$}\,\cos\theta\,\colorbox{#fde2c8}{$\dfrac{\cos\theta_l}{r^2}$}\,dA_y`}
+          tex={String.raw`L_o(x,\omega_o) = \int_{A} f\,L_e(y)\,\colorbox{#d7ecd9}{$\color{#1c1d21}V(x,y)$}\,\cos\theta\,\colorbox{#fde2c8}{$\color{#1c1d21}\dfrac{\cos\theta_l}{r^2}$}\,dA_y`}
         />
         <p>
           The <span className="al-hl-j">Jacobian cos θ_l / r²</span> is Q6(a)’s dω/dA; the <span className="al-hl-v">visibility V</span> appears because
