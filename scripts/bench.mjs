@@ -102,6 +102,7 @@ try {
     configFile: false,
     root,
     logLevel: 'error',
+    ssr: { noExternal: true }, // bundle dependencies too, so the output runs from a temp folder
     build: {
       ssr: join(root, 'bench/runtimeError.ts'),
       outDir: tmp,
