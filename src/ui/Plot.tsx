@@ -90,7 +90,7 @@ export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProp
     <figure className="plot" ref={box} style={{ minHeight: height }} aria-label={ariaLabel} data-testid={testId}>
       {failed ? <p className="plot-placeholder">The plot could not be drawn.</p> : null}
       {!plotly && !failed ? <p className="plot-placeholder">Loading plot…</p> : null}
-      <div ref={el} className="plot-canvas" aria-hidden="true" />
+      <div ref={el} className="plot-canvas" />
     </figure>
   );
 }

@@ -28,7 +28,8 @@ export function formatNumber(x: number, digits = 6): string {
   const ax = Math.abs(x);
   if (ax >= 1e-4 && ax < 1e9) {
     const s = x.toPrecision(digits);
-    return s.includes('e') ? s : s.includes('.') ? s.replace(/\.?0+$/, '') : s;
+    // toPrecision switches to "2.00000e+8" when the integer part has more digits than asked for
+    if (!s.includes('e')) return s.includes('.') ? s.replace(/\.?0+$/, '') : s;
   }
   const [m, e] = x.toExponential(Math.max(0, digits - 1)).split('e');
   const mt = m!.includes('.') ? m!.replace(/\.?0+$/, '') : m!;

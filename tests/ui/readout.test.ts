@@ -29,6 +29,12 @@ describe('formatNumber (visible text)', () => {
     expect(formatNumber(1.5e-12, 3)).toBe('1.5×10⁻¹²');
     expect(formatNumber(6.02e23, 3)).toBe('6.02×10²³');
   });
+  it('never leaks JavaScript’s e-notation, even when the integer part exceeds the digits', () => {
+    expect(formatNumber(-2e8, 6)).toBe('-2×10⁸');
+    expect(formatNumber(1234567, 3)).toBe('1.23×10⁶');
+    expect(formatNumber(123456, 6)).toBe('123456');
+    fc.assert(fc.property(fc.double({ noNaN: true, noDefaultInfinity: true }), fc.integer({ min: 1, max: 17 }), (x, d) => !/e/.test(formatNumber(x, d))));
+  });
   it('never shows a non-finite number', () => {
     expect(formatNumber(NaN)).toBe('—');
     expect(formatNumber(-Infinity)).toBe('—');
