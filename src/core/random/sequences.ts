@@ -43,8 +43,11 @@ export const MAX_SEQUENCE_POINTS = 4294967296;
  * prime n it is still near-square cells rather than 1 × n slivers. Cells are numbered row by row,
  * bottom to top (ξ2), left to right (ξ1); point i lies in cell i, jittered uniformly inside it.
  *
- * Returns the cell of point i: columns k of its row, column c, and the row's lower edge y0 = (i − c)/n.
+ * Returns the cell of point i: k = number of cells in its row, c = its column, y0 = (i − c)/n the
+ * row's lower edge and height = k/n; the cell is [c/k, (c+1)/k) × [y0, y0 + height).
  * Domain: n ≥ 1, 0 ≤ i < n.
+ * Note: because cells are numbered row by row, a prefix of a stratified set is not stratified
+ * (use a new n-point set per N, as the convergence runs do).
  */
 export function stratifiedCell(n: number, i: number): { k: number; c: number; y0: number; height: number } {
   const a = Math.max(1, Math.round(Math.sqrt(n)));
