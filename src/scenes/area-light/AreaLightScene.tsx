@@ -25,6 +25,8 @@ const SYNC_MAX = 65536;
 const COLORS: Record<LightStrategy, string> = { area: '#b34700', 'solid-angle': '#1f5fa8', cosine: '#1d7a3a' };
 const makeWorker = () => new Worker(new URL('./floor.worker.ts', import.meta.url), { type: 'module' });
 
+const LEGEND_TOP = { orientation: 'h', x: 0, y: 1.02, yanchor: 'bottom' };
+
 const fmt = (x: number, d = 4) => (Number.isFinite(x) ? Number(x.toPrecision(d)).toString() : '—');
 
 export default function AreaLightScene({ params, setParams, mode }: SceneProps<Schema>) {
@@ -98,8 +100,8 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
   const convTraces: PlotTrace[] = useMemo(() => {
     const out: PlotTrace[] = [];
     for (const c of conv ?? []) {
-      out.push({ x: Array.from(c.n), y: Array.from(c.absError), type: 'scatter', mode: 'lines', name: `|error|, ${c.strategy}`, line: { color: COLORS[c.strategy], width: 2 } });
-      out.push({ x: Array.from(c.n), y: Array.from(c.stderr), type: 'scatter', mode: 'lines', name: `std. error, ${c.strategy}`, line: { color: COLORS[c.strategy], dash: 'dot', width: 1.5 } });
+      out.push({ x: Array.from(c.n), y: Array.from(c.absError), type: 'scatter', mode: 'lines', name: STRATEGY_SHORT[c.strategy], legendgroup: c.strategy, line: { color: COLORS[c.strategy], width: 2 } });
+      out.push({ x: Array.from(c.n), y: Array.from(c.stderr), type: 'scatter', mode: 'lines', name: `std. error, ${STRATEGY_SHORT[c.strategy]}`, legendgroup: c.strategy, showlegend: false, line: { color: COLORS[c.strategy], dash: 'dot', width: 1.5 } });
     }
     return out;
   }, [conv]);
@@ -113,7 +115,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
         text: rows.map((r) => `N = ${r.n}`),
         type: 'scatter',
         mode: 'lines+markers',
-        name: s,
+        name: STRATEGY_SHORT[s],
         line: { color: COLORS[s] },
       };
     });
@@ -314,7 +316,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
           ariaLabel="Absolute error and standard error of the three estimators against the number of samples, log-log."
           data={convTraces}
           height={mode.present ? 380 : 300}
-          layout={{ xaxis: { type: 'log', title: { text: 'N (samples)' } }, yaxis: { type: 'log', title: { text: 'error' } } }}
+          layout={{ xaxis: { type: 'log', title: { text: 'N (samples)' } }, yaxis: { type: 'log', title: { text: 'error' } }, legend: LEGEND_TOP, margin: { l: 56, r: 16, t: 40, b: 44 } }}
         />
         <p className="al-note">Solid: |estimate − reference|. Dotted: the standard error s/√N the estimator reports. Both fall like N^−½; the strategies differ by a constant.</p>
       </Panel>
@@ -325,7 +327,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
           ariaLabel="RMSE over independent runs against the run time of one estimate, for the three strategies, log-log."
           data={timingTraces}
           height={mode.present ? 360 : 280}
-          layout={{ xaxis: { type: 'log', title: { text: 'time per estimate (ms)' } }, yaxis: { type: 'log', title: { text: 'RMSE' } } }}
+          layout={{ xaxis: { type: 'log', title: { text: 'time per estimate (ms)' } }, yaxis: { type: 'log', title: { text: 'RMSE' } }, legend: LEGEND_TOP, margin: { l: 56, r: 16, t: 40, b: 44 } }}
         />
         <p className="al-note">Each point: N = 16 … 4096 samples, RMSE over 24 independent runs, run time measured in a worker on this machine (best of three; noisy when the machine is busy). Lower-left wins.</p>
       </Panel>

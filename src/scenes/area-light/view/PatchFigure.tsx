@@ -79,7 +79,7 @@ export function PatchFigure({ patch }: { patch: PatchModel }) {
       ) : null}
       <circle cx={PX} cy={PY} r={4} className="al-fig-point" />
       <text x={PX - 6} y={PY + 22} className="al-fig-label">p</text>
-      <text x={12} y={H - 14} className="al-fig-label">
+      <text x={12} y={H - 14} className="al-fig-label al-fig-summary">
         dA = {fmt(patch.area)}, θ_l = {fmt((thetaL * 180) / Math.PI, 3)}°: dA cos θ_l / r² = {fmt(patch.approx)} sr, exact {fmt(patch.exact)} sr
       </text>
     </svg>
