@@ -170,6 +170,9 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
                   χ² = {formatNumber(chi2.statistic, 5)} with {chi2.dof} degrees of freedom ({chi2.bins} bins of equal solid angle over (cos θ, φ)
                   {chi2.pooledBins ? `, ${chi2.pooledBins} low-expectation bins pooled` : ''}): p = {formatNumber(chi2.pValue, 4)}.{' '}
                   {chi2.pass ? `Accepted at α = ${chi2.alpha}: the samples are consistent with p(ω).` : `Rejected at α = ${chi2.alpha}${chi2.note ? `: ${chi2.note}` : ''}.`}
+                  {kind !== 'independent'
+                    ? ' (The test assumes independent samples; stratified and low-discrepancy sets are more even than chance, so p-values near 1 are expected.)'
+                    : ''}
                 </p>
               ) : null}
             </>

@@ -8,7 +8,7 @@
 import { useEffect, useRef, useState } from 'react';
 import type * as THREE from 'three';
 import { Viewport, type ViewportContext } from '../../../three';
-import { Transport, useShortcuts } from '../../../ui';
+import { Toggle, Transport, useShortcuts } from '../../../ui';
 import { fillSequence2D, type SequenceKind } from '../../../core/random';
 import type { Lobe } from '../model';
 import { MAX_N } from '../params';
@@ -70,6 +70,10 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
   cfg.current = { lobe, kind, seed, n };
   const label = useRef<HTMLSpanElement>(null);
   const [playing, setPlaying] = useState(true);
+  const [showPoints, setShowPoints] = useState(true);
+  const [showGrid, setShowGrid] = useState(true);
+  const vis = useRef({ points: true, grid: true });
+  vis.current = { points: showPoints, grid: showGrid };
   const scratch = useRef<{ u: Float64Array; d: Float64Array; c: number[] } | null>(null);
 
   const updateLabel = () => {
@@ -181,7 +185,8 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
     const g = new T.BufferGeometry();
     g.setAttribute('position', new T.BufferAttribute(p, 3));
     g.setAttribute('color', new T.BufferAttribute(c, 3));
-    const lines = new T.LineSegments(g, new T.LineBasicMaterial({ vertexColors: true, transparent: true, opacity: 0.55 }));
+    const lines = new T.LineSegments(g, new T.LineBasicMaterial({ vertexColors: true, transparent: true, opacity: 0.9 }));
+    lines.visible = vis.current.grid;
     ctx.scene.add(lines);
     o.grid = lines;
   };
@@ -201,6 +206,7 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
     const material = new T.PointsMaterial({ size: 3, sizeAttenuation: false, vertexColors: true });
     const points = new T.Points(geom, material);
     points.frustumCulled = false;
+    points.visible = vis.current.points;
     ctx.scene.add(points);
 
     // the hemisphere shell, its rim, the base disk and the axes
@@ -304,6 +310,14 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
     // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [lobe, kind, seed, n]);
 
+  useEffect(() => {
+    const o = objs.current;
+    if (!o) return;
+    o.points.visible = showPoints;
+    if (o.grid) o.grid.visible = showGrid;
+    ctxRef.current?.invalidate();
+  }, [showPoints, showGrid]);
+
   const playPause = () => {
     const a = anim.current;
     if (a.playing) {
@@ -343,6 +357,8 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
       <Viewport ariaLabel="Samples of the chosen density on the upper hemisphere, coloured by their (ξ₁, ξ₂)" height={height} setup={setup} testId="hemisphere-3d" />
       <div className="hemi-transport">
         <Transport playing={playing} onPlayPause={playPause} onStep={step} onReset={reset} />
+        <Toggle label="points" checked={showPoints} onChange={setShowPoints} />
+        <Toggle label="warped (ξ₁, ξ₂) grid" checked={showGrid} onChange={setShowGrid} />
         <span className="hemi-shown">
           showing <span ref={label} data-testid="shown-count" data-value="0">0</span> of {n.toLocaleString('en-US')} points
         </span>
