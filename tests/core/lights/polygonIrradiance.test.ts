@@ -49,6 +49,15 @@ describe("Lambert's formula for a polygon", () => {
       expect(Math.abs(rectProjectedSolidAngle(l, 0, 0, 0) - ref) / ref).toBeLessThan(1e-12);
     }
   });
+  it('tiny, distant lights (up to 1e8 × their size): within 1e-13 of the BigNumber closed form', () => {
+    for (const D of [1e2, 1e4, 1e6, 1e8]) {
+      const l = makeRectLight([0.5, 0.25, D], 1, 0.5, 0);
+      const ref = cornerProjectedBig(1, 0.5, D);
+      const got = rectProjectedSolidAngle(l, 0, 0, 0);
+      expect(ref).toBeGreaterThan(0);
+      expect(Math.abs(got - ref) / ref).toBeLessThan(1e-13);
+    }
+  });
   it('by symmetry, a centred square is four corner rectangles', () => {
     const l = makeRectLight([0, 0, 2], 1.4, 0.6, 0);
     const ref = 4 * cornerProjectedBig(0.7, 0.3, 2);
