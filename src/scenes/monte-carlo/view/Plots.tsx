@@ -394,7 +394,13 @@ export function HistogramPanel({ args, N, exact, makeWorker, onN }: { args: Prob
         <div className="readouts">
           <Readout id="hist-mean" label="mean of the estimates" value={stats?.mean ?? null} digits={8} note={stats ? `± ${formatNumber(stats.sem, 2)} (its standard error)` : undefined} />
           <Readout id="hist-sd" label="spread of one estimate (sd)" value={stats?.sd ?? null} digits={4} />
-          <Readout id="hist-bias" label="mean − exact, in standard errors" value={stats && stats.sem > 0 ? (stats.mean - exact) / stats.sem : null} digits={3} />
+          <Readout
+            id="hist-bias"
+            label="mean − exact, in standard errors"
+            value={stats && stats.sd > 1e-12 * Math.abs(exact) ? (stats.mean - exact) / stats.sem : null}
+            digits={3}
+            note={stats && !(stats.sd > 1e-12 * Math.abs(exact)) ? 'no spread: every estimate is exact (zero variance)' : undefined}
+          />
         </div>
         <Plot
           data={data}

@@ -65,7 +65,7 @@ export function WorkedTable(props: {
       <div className="mc-math">
         <MathTex
           display
-          tex={String.raw`\begin{gathered}\langle I\rangle_{\text{uniform}} = \frac{b-a}{N}\sum_i f(x_i) \\ p = \frac{f}{\int_a^b f\,dx} \;\Rightarrow\; \frac{f(x_i)}{p(x_i)} = \int_a^b f\,dx \text{ for every } x_i\end{gathered}`}
+          tex={String.raw`\begin{gathered}\langle I\rangle_{\text{uniform}} = \frac{b-a}{N}\sum_i f(x_i) \\ p = \frac{f}{\int_a^b f\,dx} \\ \Rightarrow\; \frac{f(x_i)}{p(x_i)} = \int_a^b f\,dx \text{ for every } x_i\end{gathered}`}
         />
       </div>
       {table.problems.map((p, i) => (
