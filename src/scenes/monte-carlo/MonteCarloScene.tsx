@@ -2,7 +2,7 @@
  * Monte Carlo integration and convergence (exam Q2, Q4). All figures come from ./model (pure, over
  * the core) and from the worker jobs in ./jobs; this file only wires parameters to views.
  */
-import { useEffect, useMemo } from 'react';
+import { useEffect, useMemo, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
 import { formatNumber, MathTex, NumberField, Notice, Panel, Readout, SceneLayout, Select, Slider, useShortcuts } from '../../ui';
 import { useWorkerTask } from '../../workers';
@@ -123,7 +123,9 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
 
   const curve = useMemo(() => (f ? curves(f, choice && choice.ok ? choice.density : null, a, b) : null), [f, choice, a, b]);
 
+  const [runToken, setRunToken] = useState(0);
   useShortcuts({
+    playPause: () => setRunToken((t) => t + 1),
     step: () => setParams({ seed: (params.seed + 1) >>> 0 }),
     reset: () => setParams({ f: EXAM_F, a: EXAM_A, b: EXAM_B, pdf: 'uniform', strategy: 'independent', samples: null, seed: 1 }),
   });
@@ -199,7 +201,7 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
       ) : null}
       {baseArgs ? (
         <>
-          <ConvergencePanel args={baseArgs} nMax={n} exact={exact?.value ?? NaN} makeWorker={makeWorker} present={mode.present} />
+          <ConvergencePanel args={baseArgs} nMax={n} exact={exact?.value ?? NaN} makeWorker={makeWorker} present={mode.present} runToken={runToken} />
           <RmsePanel args={baseArgs} nMax={Math.min(n, 100_000)} runs={params.runs} exact={exact?.value ?? NaN} makeWorker={makeWorker} onRuns={(r) => setParams({ runs: r })} />
           {chosenOk ? (
             <HistogramPanel

@@ -174,10 +174,18 @@ function RunBar({ running, waiting, progress, onCancel, onRun, label }: { runnin
 
 type ConvResult = { series: SeriesData[]; exact: number; problems: string[] };
 
-export function ConvergencePanel({ args, nMax, exact, makeWorker, present }: { args: ProblemArgs; nMax: number; exact: number; makeWorker: () => Worker; present: boolean }) {
+export function ConvergencePanel({ args, nMax, exact, makeWorker, present, runToken = 0 }: { args: ProblemArgs; nMax: number; exact: number; makeWorker: () => Worker; present: boolean; runToken?: number }) {
   const box = useRef<HTMLDivElement>(null);
   const key = JSON.stringify([args, nMax]);
   const task = useAutoRun<ConvResult, ConvResult>('convergence', makeWorker, { ...args, nMax }, key, box);
+  // classroom shortcut (space): run the convergence again
+  const rerun = task.rerun;
+  const lastToken = useRef(runToken);
+  useEffect(() => {
+    if (runToken === lastToken.current) return;
+    lastToken.current = runToken;
+    rerun();
+  }, [runToken, rerun]);
   const cur = useThrottled(task.result ?? task.partial, REDRAW_MS, !task.running);
   const series = cur?.series ?? [];
   const ref = cur?.exact ?? exact;
