@@ -88,7 +88,7 @@ export function rectPlaneDistance(light: RectLight, px: number, py: number, pz: 
 }
 
 /**
- * Solid-angle-free emitted radiance test: true when the point p sees the emitting side
+ * True when the point p sees the emitting side
  * (signed plane distance > 0) and the light has positive area.
  */
 export function rectFacesPoint(light: RectLight, px: number, py: number, pz: number): boolean {

@@ -145,9 +145,14 @@ export function Scene3D({ model, strategy, samples, terms, patch, height, dark }
       rp.needsUpdate = true;
       o.patchRays.geometry.computeBoundingSphere();
     }
-    const key = `${m.p.join()}|${m.lc.join()}|${m.w},${m.h}`;
-    if (framedFor.current === '') {
-      framedFor.current = key;
+    // Re-frame on the first draw, and whenever the point or a corner of the light has left the
+    // view (e.g. after a preset moved the light far away); otherwise keep the user's camera.
+    const cam = o.ctx.camera;
+    cam.updateMatrixWorld();
+    const fr = new T.Frustum().setFromProjectionMatrix(new T.Matrix4().multiplyMatrices(cam.projectionMatrix, cam.matrixWorldInverse));
+    const visible = [m.p, ...c].every((q) => fr.containsPoint(new T.Vector3(q[0], q[1], q[2])));
+    if (framedFor.current === '' || !visible) {
+      framedFor.current = 'framed';
       frame(o, m);
     }
     o.ctx.invalidate();
