@@ -57,7 +57,10 @@ export interface Chi2Result {
   statistic: number;
   /** Degrees of freedom: number of bins used (after pooling) − 1. */
   dof: number;
-  /** P[χ²_dof ≥ statistic]; 0 when a sample fell where the pdf predicts none. */
+  /**
+   * P[χ²_dof ≥ statistic]; 0 when a sample fell where the pdf predicts none (or outside the
+   * domain); NaN when the test cannot be run (fewer than two usable bins after pooling).
+   */
   pValue: number;
   /** Requested overall significance. */
   alpha: number;
@@ -143,8 +146,10 @@ export function chi2Test(
   }
   dof -= 1;
   if (dof < 1) {
+    // Not a rejection: the test cannot be run. pValue is NaN ("does not apply"), pass is false.
     return {
       ...fail('too few bins with enough expected samples for a χ² test (use more samples or fewer bins)', statistic, Math.max(dof, 0), pooledBins),
+      pValue: NaN,
     };
   }
   const pValue = chi2UpperTail(statistic, dof);

@@ -183,7 +183,10 @@ describe('chi2Test', () => {
     expect(chi2Test([100, 0, 0], [33, 33, 34]).pass).toBe(false);
     expect(chi2Test([1, 2], [1]).note).toMatch(/bins/);
     expect(chi2Test([1, 2], [1, NaN]).note).toMatch(/not finite/);
-    expect(chi2Test([10], [10]).note).toMatch(/too few bins/);
+    const few = chi2Test([10], [10]);
+    expect(few.note).toMatch(/too few bins/);
+    expect(few.pValue).toBeNaN(); // not applicable, not a rejection
+    expect(few.pass).toBe(false);
   });
 
   it('uses the Šidák-corrected level', () => {
