@@ -137,3 +137,28 @@ test('dark theme: no serious or critical axe violations (the highlighted KaTeX b
   const bad = r.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => v.id);
   expect(bad).toEqual([]);
 });
+
+test('a tiny, distant light (10⁶ away): Ω matches A cos θ_l / r² (exact to O((size/d)²)) to 1e-11; estimates exact', async ({ page }) => {
+  await openScene(page, '#/area-light?lc=3,-2,1000000&ls=1,0.5&strategy=solid-angle&n=512');
+  const omega = await readoutNumber(page, 'solid-angle');
+  // The corner formula's four terms cancel at this distance, so the check is the small-patch limit,
+  // whose own error is O((size/d)²) ≈ 1e-12.
+  const d = 1e6, cx = 3, cy = -2, w = 1, h = 0.5;
+  const r = Math.hypot(cx, cy, d);
+  const approx = (w * h * (d / r)) / (r * r);
+  expect(Math.abs(omega - approx) / approx).toBeLessThan(1e-11);
+  const ref = await readoutNumber(page, 'reference');
+  const est = await readoutNumber(page, 'estimate');
+  expect(Math.abs(est - ref) / ref).toBeLessThan(1e-9);
+});
+
+test('Q6(a): as the patch shrinks, dA cos θ_l / r² meets the exact solid angle', async ({ page }) => {
+  await openScene(page, '#/area-light?psize=0.5&ptilt=30');
+  const big = Math.abs(await readoutNumber(page, 'patch-rel-error'));
+  await openScene(page, '#/area-light?psize=0.0005&ptilt=30');
+  const small = Math.abs(await readoutNumber(page, 'patch-rel-error'));
+  expect(small).toBeLessThan(big / 1e5); // second order: (0.0005/0.5)² = 1e-6
+  const exact = await readoutNumber(page, 'patch-exact');
+  const approx = await readoutNumber(page, 'patch-approx');
+  expect(Math.abs(exact - approx) / exact).toBeLessThan(1e-6);
+});
