@@ -5,6 +5,7 @@
  * directly. Nothing is copied from the answer key.
  */
 import type { Page } from '@playwright/test';
+import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
 import { computeDrawStats, makeLobe } from '../../src/scenes/hemisphere/model';
 import { examLobeK, tabulateHemisphereDensity } from '../../src/core/sampling';
@@ -161,6 +162,18 @@ test.describe('typed densities', () => {
 });
 
 test.describe('robustness and extras', () => {
+  for (const q of ['jacobian=inverted', 'lobe=custom&pdf=cos(theta)-1', 'lobe=phong&theme=dark&present=1']) {
+    test(`no serious axe violations with ${q} (stability panel open)`, async ({ page }) => {
+      await openScene(page, `#/hemisphere?n=500&${q}`);
+      await statsReady(page);
+      await page.getByTestId('stability-details').locator('summary').click();
+      await expect(page.getByTestId('stability')).toBeVisible({ timeout: 30_000 });
+      const results = await new AxeBuilder({ page }).exclude('.js-plotly-plot').analyze();
+      const bad = results.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical');
+      expect(bad.map((v) => `${v.id}: ${v.nodes.slice(0, 5).map((n) => n.target.join(' ')).join(', ')}`)).toEqual([]);
+    });
+  }
+
   test('malformed URL parameters fall back with a notice naming them', async ({ page }) => {
     await openScene(page, '#/hemisphere?lobe=banana&n=abc&seed=-5');
     await expect(page.getByTestId('param-notice')).toContainText('lobe');

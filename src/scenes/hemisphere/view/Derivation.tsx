@@ -20,7 +20,10 @@ function Step({ n, title, tex, children }: { n: number; title: string; tex: stri
         {n}. {title}
       </h3>
       {(Array.isArray(tex) ? tex : [tex]).map((t, i) => (
-        <MathTex key={i} tex={t} display />
+        // a focusable scroll box: a wide formula scrolls sideways on a phone, also from the keyboard
+        <div key={i} className="deriv-formula" tabIndex={0} role="group" aria-label={`${title}, formula ${i + 1}`}>
+          <MathTex tex={t} display />
+        </div>
       ))}
       {children ? <p>{children}</p> : null}
     </li>

@@ -44,7 +44,7 @@ export function StabilityPanel() {
       {(['theta', 'phi'] as const).map((q) => {
         const forms = STABILITY_FORMS.filter((f) => f.quantity === q);
         return (
-          <div key={q} className="table-scroll">
+          <div key={q} className="table-scroll" tabIndex={0} role="region" aria-label={q === 'theta' ? 'errors of the θ forms' : 'errors of the φ forms'}>
             <table className="stability-table">
               <caption>{q === 'theta' ? 'θ(ξ₁): relative error (and ulps) against the 64-digit reference' : 'φ(ξ₂): relative error (and ulps)'}</caption>
               <thead>
