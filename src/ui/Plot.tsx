@@ -58,8 +58,15 @@ export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProp
     };
   }, [seen]);
 
+  // Layouts are small: compare them by content, so an inline `layout={{…}}` does not make Plotly
+  // redraw on every render of the parent. Data is compared by identity (memoise it).
+  const layoutKey = layout ? JSON.stringify(layout) : '';
+  const layoutRef = useRef(layout);
+  layoutRef.current = layout;
+
   useEffect(() => {
     if (!plotly || !el.current) return;
+    const layout = layoutRef.current;
     const c = themeColors();
     const axis = { gridcolor: c.grid, zerolinecolor: c.grid, linecolor: c.grid, automargin: true };
     const base: PlotLayout = {
@@ -77,7 +84,7 @@ export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProp
       if (layout && layout[k]) merged[k] = { ...axis, ...(layout[k] as object) };
     }
     plotly.react(el.current, data, merged, { responsive: true, displaylogo: false, modeBarButtonsToRemove: ['lasso2d', 'select2d'] }).catch(() => setFailed(true));
-  }, [plotly, data, layout, height, themeKey]);
+  }, [plotly, data, layoutKey, height, themeKey]);
 
   useEffect(() => {
     const node = el.current;
