@@ -2,3 +2,4 @@ export * from './raySphere';
 export * from './raySphereReference';
 export * from './doubleDouble';
 export * from './ulp';
+export * from './solidAngle';
