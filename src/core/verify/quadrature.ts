@@ -84,7 +84,11 @@ export interface AdaptiveOptions {
   relTol?: number;
   /** Absolute tolerance (default 1e-13 × cell area). */
   absTol?: number;
-  /** Maximum number of successive bisections of a cell (default 24). */
+  /**
+   * Maximum refinement depth in levels of 2 × 2 subdivision (default 12): a cell may be bisected at
+   * most 2·maxDepth times in all (e.g. down to 2^-maxDepth of the domain along each axis, or
+   * further along one axis when only that one needs it).
+   */
   maxDepth?: number;
   /** Maximum number of integrand evaluations (default 400 000): bounds the work in every case. */
   maxEvals?: number;
@@ -95,7 +99,7 @@ export interface AdaptiveOptions {
  * Gauss–Legendre estimate and the two estimates from halving it along x and along y; the axis where
  * halving changed the estimate most (where f is least smooth) is its split axis and that change its
  * error estimate. The cell with the largest error is split first, until the summed error is within
- * tolerance, every cell has been bisected `maxDepth` times, or the evaluation budget is spent (the
+ * tolerance, every cell has reached the depth limit, or the evaluation budget is spent (the
  * best estimate so far is returned). Anisotropic bisection resolves edge singularities such as
  * cos^n θ with n → 0 at cos θ = 0, and tabulated (discontinuous) densities, with bounded work.
  * Measure: Lebesgue measure dx dy of the rectangle.
@@ -112,7 +116,7 @@ export function adaptiveIntegrate2D(
 ): number {
   const order = opts.order ?? 7;
   const relTol = opts.relTol ?? 1e-10;
-  const maxDepth = opts.maxDepth ?? 24;
+  const maxDepth = 2 * (opts.maxDepth ?? 12); // in bisections
   const absTol = opts.absTol ?? 1e-13 * Math.abs((x1 - x0) * (y1 - y0));
   const perCell = 4 * order * order;
   let evalsLeft = (opts.maxEvals ?? 400000) - order * order;
