@@ -109,8 +109,8 @@ exposeTasks({
     for (const n of TIMING_COUNTS)
       for (const s of STRATEGIES) {
         const rmse = rmseOfRuns(m, s, n, TIMING_RUNS, params.seed);
-        // Best of three timings (each ≥ 6 ms of repeated estimates, so timer resolution is moot).
-        const seconds = Math.min(timeOne(m.setup, s, n, params.seed, 6), timeOne(m.setup, s, n, params.seed, 6), timeOne(m.setup, s, n, params.seed, 6));
+        // Best of three timings (each ≥ 12 ms of repeated estimates, so timer resolution is moot).
+        const seconds = Math.min(timeOne(m.setup, s, n, params.seed, 12), timeOne(m.setup, s, n, params.seed, 12), timeOne(m.setup, s, n, params.seed, 12));
         out.push({ strategy: s, n, rmse, seconds });
         progress(0.1 + (0.9 * ++done) / steps);
         await yieldToEventLoop();
