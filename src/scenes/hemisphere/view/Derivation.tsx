@@ -97,8 +97,8 @@ export function Derivation({ lobe, exponent, custom, customTex, inverted }: { lo
     return (
       <ol className="derivation" data-testid="derivation">
         <Step n={1} title="Normalize" tex={`\\int_\\Omega k\\,d\\omega = 2\\pi k = 1 \\Rightarrow k = \\frac{1}{2\\pi} = ${n6(1 / (2 * Math.PI))}`} />
-        <Step n={2} title="Change of variables and marginals" tex={`p(\\theta,\\phi) = \\frac{\\sin\\theta}{2\\pi},\\quad p(\\theta) = \\sin\\theta,\\quad p(\\phi) = \\frac{1}{2\\pi}`} />
-        <Step n={3} title="CDFs and inversion" tex={`P(\\theta) = 1-\\cos\\theta \\;\\Rightarrow\\; \\cos\\theta = 1-\\xi_1 \\sim \\xi_1,\\qquad \\phi = 2\\pi\\xi_2`}>
+        <Step n={2} title="Change of variables and marginals" tex={[`p(\\theta,\\phi) = \\frac{\\sin\\theta}{2\\pi}`, `p(\\theta) = \\sin\\theta,\\quad p(\\phi) = \\frac{1}{2\\pi}`]} />
+        <Step n={3} title="CDFs and inversion" tex={[`P(\\theta) = 1-\\cos\\theta \\;\\Rightarrow\\; \\cos\\theta = 1-\\xi_1 \\sim \\xi_1`, `\\phi = 2\\pi\\xi_2`]}>
           1 − ξ₁ has the same distribution as ξ₁, so the code uses cos θ = ξ₁ (pbrt-v4 A.5.2).
         </Step>
       </ol>
@@ -106,11 +106,11 @@ export function Derivation({ lobe, exponent, custom, customTex, inverted }: { lo
   if (lobe === 'cosine')
     return (
       <ol className="derivation" data-testid="derivation">
-        <Step n={1} title="Normalize" tex={`k\\int_\\Omega \\cos\\theta\\,d\\omega = k\\pi = 1 \\Rightarrow k = \\frac1\\pi = ${n6(1 / Math.PI)}`} />
+        <Step n={1} title="Normalize" tex={[`k\\int_\\Omega \\cos\\theta\\,d\\omega = k\\pi = 1`, `k = \\frac1\\pi = ${n6(1 / Math.PI)}`]} />
         <Step n={2} title="Marginals" tex={`p(\\theta) = \\sin 2\\theta,\\quad p(\\phi) = \\frac{1}{2\\pi}`}>
           The same θ-marginal as the exam lobe: the exam lobe is the cosine lobe with φ reweighted by e^φ.
         </Step>
-        <Step n={3} title="Malley's method" tex={`(x, y) \\sim \\text{uniform on the unit disk},\\quad z = \\sqrt{1-x^2-y^2}`}>
+        <Step n={3} title="Malley's method" tex={[`(x, y) \\sim \\text{uniform on the unit disk}`, `z = \\sqrt{1-x^2-y^2}`]}>
           Projecting a uniform disk point up onto the hemisphere gives density cos θ/π. The disk is sampled with Shirley and Chiu&apos;s
           concentric map, which keeps the warped grid well shaped (pbrt-v4 A.5.3).
         </Step>
@@ -119,9 +119,9 @@ export function Derivation({ lobe, exponent, custom, customTex, inverted }: { lo
   if (lobe === 'phong')
     return (
       <ol className="derivation" data-testid="derivation">
-        <Step n={1} title="Normalize" tex={`k\\int_\\Omega \\cos^{n}\\theta\\,d\\omega = \\frac{2\\pi k}{n+1} = 1 \\Rightarrow k = \\frac{n+1}{2\\pi} = ${n6((exponent + 1) / (2 * Math.PI))}\\quad (n = ${exponent})`} />
-        <Step n={2} title="Marginal and CDF" tex={`p(\\theta) = (n+1)\\cos^{n}\\theta\\sin\\theta,\\qquad P(\\theta) = 1-\\cos^{n+1}\\theta`} />
-        <Step n={3} title="Inversion" tex={`\\cos\\theta = \\xi_1^{1/(n+1)} = \\exp\\!\\Big(\\frac{\\ln\\xi_1}{n+1}\\Big),\\quad \\sin\\theta = \\sqrt{-\\operatorname{expm1}\\!\\Big(\\frac{2\\ln\\xi_1}{n+1}\\Big)},\\quad \\phi = 2\\pi\\xi_2`}>
+        <Step n={1} title="Normalize" tex={[`k\\int_\\Omega \\cos^{n}\\theta\\,d\\omega = \\frac{2\\pi k}{n+1} = 1`, `k = \\frac{n+1}{2\\pi} = ${n6((exponent + 1) / (2 * Math.PI))}\\quad (n = ${exponent})`]} />
+        <Step n={2} title="Marginal and CDF" tex={[`p(\\theta) = (n+1)\\cos^{n}\\theta\\sin\\theta`, `P(\\theta) = 1-\\cos^{n+1}\\theta`]} />
+        <Step n={3} title="Inversion" tex={[`\\cos\\theta = \\xi_1^{1/(n+1)} = \\exp\\!\\Big(\\frac{\\ln\\xi_1}{n+1}\\Big)`, `\\sin\\theta = \\sqrt{-\\operatorname{expm1}\\!\\Big(\\frac{2\\ln\\xi_1}{n+1}\\Big)},\\quad \\phi = 2\\pi\\xi_2`]}>
           Computed in log space so a large exponent does not lose sin θ to cancellation.
         </Step>
       </ol>
@@ -139,17 +139,17 @@ export function Derivation({ lobe, exponent, custom, customTex, inverted }: { lo
         title="Normalize (numerically)"
         tex={
           custom
-            ? `\\int_\\Omega ${customTex ?? 'p'}\\,d\\omega \\approx ${n6(custom.integral)} \\;\\Rightarrow\\; k \\approx ${n6(custom.k)}`
+            ? [`p(\\theta,\\phi) = ${customTex ?? '\\text{(typed)}'}`, `\\int_\\Omega p\\,d\\omega \\approx ${n6(custom.integral)} \\;\\Rightarrow\\; k \\approx ${n6(custom.k)}`]
             : `\\int_\\Omega p\\,d\\omega = \\;?`
         }
       >
         The hemisphere is cut into {custom ? `${custom.nz} × ${custom.nphi}` : '64 × 128'} cells of equal solid angle (equal steps in cos θ and φ, since dω = d(cos θ) dφ);
         p is taken at each cell centre.
       </Step>
-      <Step n={2} title="Marginal of cos θ, conditional of φ" tex={`p(\\cos\\theta) = \\int_0^{2\\pi} p\\,d\\phi,\\qquad p(\\phi\\mid\\theta) = \\frac{p(\\theta,\\phi)}{p(\\cos\\theta)}`}>
+      <Step n={2} title="Marginal of cos θ, conditional of φ" tex={[`p(\\cos\\theta) = \\int_0^{2\\pi} p\\,d\\phi`, `p(\\phi\\mid\\theta) = \\frac{p(\\theta,\\phi)}{p(\\cos\\theta)}`]}>
         The density need not be separable, so φ is drawn from the conditional of the row that θ fell in (pbrt-v4 PiecewiseConstant2D).
       </Step>
-      <Step n={3} title="Invert the tabulated CDFs" tex={`\\cos\\theta = P_{\\cos\\theta}^{-1}(\\xi_1),\\qquad \\phi = P_{\\phi\\mid\\theta}^{-1}(\\xi_2)`}>
+      <Step n={3} title="Invert the tabulated CDFs" tex={[`\\cos\\theta = P_{\\cos\\theta}^{-1}(\\xi_1)`, `\\phi = P_{\\phi\\mid\\theta}^{-1}(\\xi_2)`]}>
         Each CDF is a running sum over the table, inverted by binary search and linear interpolation within the cell.
       </Step>
     </ol>
