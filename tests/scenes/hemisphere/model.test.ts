@@ -83,4 +83,22 @@ describe('hemisphere scene model', () => {
     }
     expect(partial[39]!).toBeGreaterThan(34); // −ln 1e-15 ≈ 34.5
   });
+
+  it('no lobe (inverted Jacobian or invalid typed density): no χ², importance estimate off, uniform still valid', () => {
+    const s = computeDrawStats(null, cosTheta, 'independent', 1, 5000);
+    expect(s.chi2).toBeNull();
+    expect(s.hist).toBeNull();
+    expect(Number.isNaN(s.q2.importance.estimate)).toBe(true);
+    expect(Math.abs(s.q2.uniform.estimate - Math.PI)).toBeLessThan(4 * s.q2.uniform.stderr);
+    expect(s.exact).toBeCloseTo(Math.PI, 12);
+  });
+
+  it('same (lobe, set, seed, n) → same numbers (reproducible links)', () => {
+    const a = computeDrawStats(makeLobe('exam', 8), cosTheta, 'halton', 42, 3000);
+    const b = computeDrawStats(makeLobe('exam', 8), cosTheta, 'halton', 42, 3000);
+    expect(a.chi2!.pValue).toBe(b.chi2!.pValue);
+    expect(a.q2.importance.estimate).toBe(b.q2.importance.estimate);
+    const c = computeDrawStats(makeLobe('exam', 8), cosTheta, 'halton', 43, 3000);
+    expect(c.q2.importance.estimate).not.toBe(a.q2.importance.estimate);
+  });
 });

@@ -110,7 +110,11 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
     if (end > start) {
       // generation cost per batch, readable with performance.getEntriesByName('hemisphere-grow')
       const t1 = performance.now();
-      performance.measure('hemisphere-grow', { start: t0, end: t1, detail: end - start });
+      try {
+        performance.measure('hemisphere-grow', { start: t0, end: t1, detail: end - start });
+      } catch {
+        /* older engines without measure options: the probe is optional */
+      }
       if (end - start >= 1024 && t1 > t0) {
         const pps = (end - start) / (t1 - t0);
         a.pointsPerMs = a.pointsPerMs ? 0.7 * a.pointsPerMs + 0.3 * pps : pps;
@@ -132,7 +136,7 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
   const restart = () => {
     anim.current.shown = 0;
     anim.current.last = 0;
-    performance.clearMeasures('hemisphere-grow');
+    performance.clearMeasures?.('hemisphere-grow');
     const o = objs.current;
     if (o) o.geom.setDrawRange(0, 0);
     anim.current.fillTo = anim.current.playing ? 0 : cfg.current.n;
