@@ -22,6 +22,7 @@
  * Source: the exam key (Q1); inversion method, pbrt-v4 section 2.3 ("Sampling using the inversion
  * method"); 2D sampling with separable densities, pbrt-v4 section 2.4.1.
  */
+import { writeScaledCosSin } from './sinCos';
 import {
   TWO_PI,
   TWO_PI_BELOW,
@@ -55,8 +56,7 @@ export function sampleExamLobe(u1: number, u2: number, out: VecOut, o = 0): VecO
   const c = Math.sqrt(1 - u1);
   let phi = Math.log1p(EXAM_E2PI_M1 * u2);
   if (phi >= TWO_PI) phi = TWO_PI_BELOW;
-  out[o] = s * Math.cos(phi);
-  out[o + 1] = s * Math.sin(phi);
+  writeScaledCosSin(phi, s, out, o);
   out[o + 2] = c;
   return out;
 }
@@ -75,8 +75,7 @@ export function sampleExamLobeBatch(u: Float64Array, out: Float64Array, n: numbe
     const s = Math.sqrt(u1);
     let phi = Math.log1p(c0 * u[i2 + 1]);
     if (phi >= TWO_PI) phi = TWO_PI_BELOW;
-    out[i3] = s * Math.cos(phi);
-    out[i3 + 1] = s * Math.sin(phi);
+    writeScaledCosSin(phi, s, out, i3); // one argument reduction for both (see sinCos.ts)
     out[i3 + 2] = Math.sqrt(1 - u1);
   }
   return out;
