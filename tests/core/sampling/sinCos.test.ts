@@ -5,22 +5,22 @@
  */
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import { create, all } from 'mathjs';
+import { create, all, type BigNumber } from 'mathjs';
 import { writeScaledCosSin } from '../../../src/core/sampling/sinCos';
 import { Rng } from '../../../src/core/random';
 
 const M = create(all, { number: 'BigNumber', precision: 50 });
 /** The double's exact value m·2^e as a BigNumber (its shortest decimal is not exact, and near
  * kπ/2 the difference is the whole answer). */
-function big(x: number) {
+function big(x: number): BigNumber {
   if (x === 0) return M.bignumber(0);
   const bits = new BigUint64Array(new Float64Array([Math.abs(x)]).buffer)[0]!;
   const e = Number((bits >> 52n) & 0x7ffn);
   const frac = bits & ((1n << 52n) - 1n);
   const mant = e === 0 ? frac : frac | (1n << 52n);
   const exp = (e === 0 ? 1 : e) - 1075;
-  const v = M.multiply(M.bignumber(mant.toString()), M.pow(M.bignumber(2), M.bignumber(exp))) as unknown as ReturnType<typeof M.bignumber>;
-  return x < 0 ? M.unaryMinus(v) : v;
+  const v = M.multiply(M.bignumber(mant.toString()), M.pow(M.bignumber(2), M.bignumber(exp))) as unknown as BigNumber;
+  return x < 0 ? (M.unaryMinus(v) as BigNumber) : v;
 }
 function ref(phi: number): [number, number] {
   const b = big(phi);
