@@ -158,8 +158,24 @@ const CHUNK = 4096;
  * (setup, strategy, n, seed, stream). Domain: n ≥ 0 (n < 2 gives stderr NaN).
  */
 export function estimateAreaLight(setup: AreaLightSetup, strategy: LightStrategy, n: number, seed: number, stream = 0): AreaLightEstimate {
-  const rng = new Rng(seed, stream);
   const stats = new Welford();
+  forEachTermChunk(setup, strategy, n, seed, stream, (terms, k) => stats.addArray(terms, 0, k));
+  return { estimate: stats.mean, stderr: stats.standardError(), n: stats.count, stats };
+}
+
+/**
+ * Draw n estimator terms of `strategy` in chunks of at most CHUNK (uniforms from
+ * `new Rng(seed, stream)`, buffers allocated once) and hand each chunk to `sink(terms, count)`.
+ */
+function forEachTermChunk(
+  setup: AreaLightSetup,
+  strategy: LightStrategy,
+  n: number,
+  seed: number,
+  stream: number,
+  sink: (terms: Float64Array, count: number) => void,
+): void {
+  const rng = new Rng(seed, stream);
   const m = Math.min(CHUNK, Math.max(1, n));
   const u = new Float64Array(2 * m);
   const terms = new Float64Array(m);
@@ -168,10 +184,9 @@ export function estimateAreaLight(setup: AreaLightSetup, strategy: LightStrategy
     const k = Math.min(m, n - done);
     rng.fill(u, 0, 2 * k);
     areaLightTerms(setup, strategy, u, k, terms, undefined, sph);
-    stats.addArray(terms, 0, k);
+    sink(terms, k);
     done += k;
   }
-  return { estimate: stats.mean, stderr: stats.standardError(), n: stats.count, stats };
 }
 
 /**
@@ -188,17 +203,6 @@ export function areaLightConvergence(
 ): ConvergenceSeries {
   const series = new ConvergenceSeries(checkpoints, exact);
   const nMax = checkpoints.length ? checkpoints[checkpoints.length - 1]! : 0;
-  const rng = new Rng(seed, stream);
-  const m = Math.min(CHUNK, Math.max(1, nMax));
-  const u = new Float64Array(2 * m);
-  const terms = new Float64Array(m);
-  const sph = strategy === 'solid-angle' ? makeSphericalRect(setup.light, setup.px, setup.py, setup.pz) : undefined;
-  for (let done = 0; done < nMax; ) {
-    const k = Math.min(m, nMax - done);
-    rng.fill(u, 0, 2 * k);
-    areaLightTerms(setup, strategy, u, k, terms, undefined, sph);
-    series.push(terms, 0, k);
-    done += k;
-  }
+  forEachTermChunk(setup, strategy, nMax, seed, stream, (terms, k) => series.push(terms, 0, k));
   return series;
 }

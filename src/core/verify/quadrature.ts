@@ -5,6 +5,18 @@
 
 const glCache = new Map<number, { x: Float64Array; w: Float64Array }>();
 
+/** P_n(z) and P_n′(z) by the three-term recurrence (|z| < 1). */
+function legendre(n: number, z: number): [number, number] {
+  let p1 = 1;
+  let p2 = 0;
+  for (let j = 0; j < n; j++) {
+    const p3 = p2;
+    p2 = p1;
+    p1 = ((2 * j + 1) * z * p2 - j * p3) / (j + 1);
+  }
+  return [p1, (n * (z * p1 - p2)) / (z * z - 1)];
+}
+
 /**
  * Gauss–Legendre nodes and weights on [−1, 1] for `order` points (1 ≤ order ≤ 64), computed by
  * Newton's iteration on the Legendre recurrence (exact for polynomials of degree ≤ 2·order − 1).
@@ -19,29 +31,14 @@ export function gaussLegendre(order: number): { x: Float64Array; w: Float64Array
   const m = (n + 1) >> 1;
   for (let i = 0; i < m; i++) {
     let z = Math.cos((Math.PI * (i + 0.75)) / (n + 0.5));
-    let pp = 0;
     for (let iter = 0; iter < 100; iter++) {
-      let p1 = 1;
-      let p2 = 0;
-      for (let j = 0; j < n; j++) {
-        const p3 = p2;
-        p2 = p1;
-        p1 = ((2 * j + 1) * z * p2 - j * p3) / (j + 1);
-      }
-      pp = (n * (z * p1 - p2)) / (z * z - 1);
       const z1 = z;
-      z = z1 - p1 / pp;
+      const [p, dp] = legendre(n, z1);
+      z = z1 - p / dp;
       if (Math.abs(z - z1) < 1e-15) break;
     }
-    // recompute the derivative at the converged node for the weight
-    let p1 = 1;
-    let p2 = 0;
-    for (let j = 0; j < n; j++) {
-      const p3 = p2;
-      p2 = p1;
-      p1 = ((2 * j + 1) * z * p2 - j * p3) / (j + 1);
-    }
-    pp = (n * (z * p1 - p2)) / (z * z - 1);
+    // the derivative at the converged node gives the weight
+    const pp = legendre(n, z)[1];
     x[i] = -z;
     x[n - 1 - i] = z;
     w[i] = w[n - 1 - i] = 2 / ((1 - z * z) * pp * pp);
