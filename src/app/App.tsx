@@ -1,4 +1,4 @@
-import { useCallback, useEffect, useState } from 'react';
+import { useCallback, useEffect, useMemo, useState } from 'react';
 import { useHashRoute } from './useHashRoute';
 import { parseShellFlags } from './route';
 import { useTheme } from './theme';
@@ -10,7 +10,8 @@ import { ShortcutProvider, SHORTCUTS } from '../ui/shortcuts';
 
 export function App() {
   const route = useHashRoute();
-  const flags = parseShellFlags(route.query);
+  // memoised: SceneHost's setParams and effects depend on it, so it must not change per render
+  const flags = useMemo(() => parseShellFlags(route.query), [route.query]);
   const theme = useTheme(flags.theme);
   const [helpOpen, setHelpOpen] = useState(false);
   const toggleHelp = useCallback(() => setHelpOpen((o) => !o), []);

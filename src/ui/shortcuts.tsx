@@ -39,7 +39,7 @@ function isTyping(target: EventTarget | null): boolean {
     const type = (target as HTMLInputElement).type;
     return type !== 'checkbox' && type !== 'radio' && type !== 'button' && type !== 'range';
   }
-  return tag === 'BUTTON' ? false : false;
+  return false;
 }
 
 /**
