@@ -3,21 +3,20 @@
  * or a typed density) by inversion, watch the samples land, test them by χ², derive the steps with
  * live numbers, and use them for the Q2 Monte Carlo estimators.
  */
-import { lazy, Suspense, useEffect, useMemo, useRef, useState } from 'react';
+import { lazy, Suspense, useMemo, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
 import { ExprField, NumberField, Notice, Panel, Readout, SceneLayout, Select, Slider, formatNumber } from '../../ui';
-import { useWorkerTask } from '../../workers';
-import { tabulateHemisphereDensity, type TabulateResult } from '../../core/sampling';
+import { useWorkerJob } from '../../workers';
 import type { SequenceKind } from '../../core/random';
-import { makeLobe, type DrawStats } from './model';
+import { lobeFromParams, type DrawStats } from './model';
 import { LOBES, MAX_N, POINT_SETS, type HemisphereSchema, type LobeId } from './params';
 import { useCompiled } from './useCompiled';
 import { UnitSquare } from './view/UnitSquare';
 import { Derivation } from './view/Derivation';
 import { MarginalPlots, Histogram2D } from './view/Plots';
-import { EstimateReadouts, RepeatView, type RepeatResult } from './view/Q2Panel';
+import { EstimateReadouts, RepeatView } from './view/Q2Panel';
 import { InvertedJacobian } from './view/InvertedJacobian';
-import type { RepeatArgs, StatsArgs } from './hemisphere.worker';
+import type { RepeatArgs, RepeatResult, StatsArgs } from './jobs';
 import './hemisphere.css';
 
 const HemisphereView = lazy(() => import('./view/HemisphereView').then((m) => ({ default: m.HemisphereView })));
@@ -43,47 +42,25 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
 
   const fc = useCompiled(params.f);
   const pc = useCompiled(params.pdf, isCustom);
-  const tab: TabulateResult | null = useMemo(() => (isCustom && pc.status === 'ok' ? tabulateHemisphereDensity(pc.fn) : null), [isCustom, pc]);
+  const customDensity = isCustom && pc.status === 'ok' ? pc.fn : null;
+  const { lobe: baseLobe, tab } = useMemo(() => lobeFromParams(lobeId, params.exponent, customDensity), [lobeId, params.exponent, customDensity]);
   const customLobe = tab && tab.ok ? tab.lobe : null;
-  const baseLobe = useMemo(() => makeLobe(lobeId, params.exponent, customLobe), [lobeId, params.exponent, customLobe]);
   const lobe = inverted ? null : baseLobe;
 
-  // ---- statistics of one draw, in a worker --------------------------------------------------
-  const stats = useWorkerTask<DrawStats>(makeWorker, 'stats');
+  // ---- statistics of one draw, in a worker (./jobs statsJob) -----------------------------------
   const ready = fc.status !== 'pending' && (!isCustom || pc.status !== 'pending');
   const args: StatsArgs = useMemo(
     () => ({ lobe: lobeId, exponent: params.exponent, pdf: params.pdf, f: params.f, points: kind, seed: params.seed, n: params.n, sampleLobe: !inverted && !!baseLobe }),
     [lobeId, params.exponent, params.pdf, params.f, kind, params.seed, params.n, inverted, baseLobe],
   );
-  const key = JSON.stringify(args);
-  const startedKey = useRef<string | null>(null);
-  useEffect(() => {
-    if (!ready) return;
-    const t = setTimeout(() => {
-      startedKey.current = key;
-      stats.start(args);
-    }, 60);
-    return () => clearTimeout(t);
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [key, ready]);
-  const current = !stats.running && startedKey.current === key && stats.result ? stats.result : null;
+  const stats = useWorkerJob<DrawStats>(makeWorker, 'stats', args, { enabled: ready, delayMs: 60 });
+  const current = stats.result ?? null;
 
-  // ---- repeat many times ----------------------------------------------------------------------
-  const repeat = useWorkerTask<RepeatResult>(makeWorker, 'repeat');
+  // ---- repeat many times (on request; a change of parameters cancels and clears it) -----------
   const perRun = Math.min(params.n, 256);
-  const [repeatKey, setRepeatKey] = useState<string | null>(null);
-  const runRepeat = () => {
-    const a: RepeatArgs = { ...args, runs: REPEAT_RUNS, perRun };
-    setRepeatKey(key);
-    repeat.start(a);
-  };
-  useEffect(() => {
-    if (repeatKey !== null && repeatKey !== key) {
-      repeat.cancel();
-      setRepeatKey(null);
-    }
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [key]);
+  const repeatArgs: RepeatArgs = useMemo(() => ({ ...args, runs: REPEAT_RUNS, perRun }), [args, perRun]);
+  const repeat = useWorkerJob<RepeatResult>(makeWorker, 'repeat', repeatArgs, { manual: true });
+  const runRepeat = repeat.run;
 
   // ---- readouts -------------------------------------------------------------------------------
   const k = baseLobe ? baseLobe.k : null;
@@ -205,7 +182,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
           {repeat.running ? <span role="status"> running… {Math.round(repeat.progress * 100)} %</span> : null}
           {repeat.error ? <Notice kind="error">{repeat.error}</Notice> : null}
         </div>
-        {repeat.result && repeatKey === key && exact !== null ? <RepeatView result={repeat.result} exact={exact} runs={REPEAT_RUNS} perRun={perRun} /> : null}
+        {repeat.result && exact !== null ? <RepeatView result={repeat.result} exact={exact} runs={REPEAT_RUNS} perRun={perRun} /> : null}
       </Panel>
       <Panel title="Numerical stability of the inversion formulas">
         <StabilityDetails />

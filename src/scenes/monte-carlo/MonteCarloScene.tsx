@@ -2,10 +2,10 @@
  * Monte Carlo integration and convergence (exam Q2, Q4). All figures come from ./model (pure, over
  * the core) and from the worker jobs in ./jobs; this file only wires parameters to views.
  */
-import { useEffect, useMemo, useState } from 'react';
+import { useMemo, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
 import { formatNumber, MathTex, NumberField, Notice, Panel, Readout, SceneLayout, Select, Slider, useShortcuts } from '../../ui';
-import { useWorkerTask } from '../../workers';
+import { useWorkerJob } from '../../workers';
 import {
   EXAM_A,
   EXAM_B,
@@ -90,7 +90,6 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
     if (given || !f || !choice || !choice.ok || n > SYNC_MAX_N) return null;
     return drawnEstimate(f, choice.sampler, seq, params.seed, n);
   }, [given, f, choice, seq, params.seed, n]);
-  const bigTask = useWorkerTask<McEstimate & { ms: number }>(makeWorker, 'estimate');
   const needBig = !given && !!f && !!choice && choice.ok && n > SYNC_MAX_N;
   const baseArgs: ProblemArgs | null = useMemo(
     () =>
@@ -107,14 +106,8 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
     [f, choice, fSrc, a, b, params.pdfexpr, params.seed, pdfKind, seq],
   );
   const bigKey = needBig ? `${fSrc}|${a}|${b}|${pdfKind}|${params.pdfexpr}|${seq}|${params.seed}|${n}` : '';
-  const bigStart = bigTask.start;
-  const bigCancel = bigTask.cancel;
-  useEffect(() => {
-    if (!bigKey || !baseArgs) return;
-    bigStart({ ...baseArgs, strategies: [{ pdf: pdfKind, seq, label: 'selected' }], n });
-    return () => bigCancel();
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [bigKey]);
+  const bigArgs = baseArgs ? { ...baseArgs, strategies: [{ pdf: pdfKind, seq, label: 'selected' }], n } : null;
+  const bigTask = useWorkerJob<McEstimate & { ms: number }>(makeWorker, 'estimate', bigArgs, { key: bigKey, enabled: !!bigKey && !!baseArgs });
 
   const chosenOk = !!choice && choice.ok;
   const est: McEstimate | null = given ? (chosenOk && table?.chosen && table.chosen.invalid === 0 ? table.chosen : null) : needBig ? (bigTask.result ?? null) : syncEstimate;
