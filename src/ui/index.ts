@@ -4,3 +4,4 @@ export { MathTex, loadKatex } from './MathTex';
 export { Plot, loadPlotly, type PlotTrace, type PlotLayout } from './Plot';
 export { useShortcuts, type ShortcutHandlers } from './shortcuts';
 export { useSeenOnce, observeVisibility } from './useInView';
+export { useCompiled, type Compiled, type CompileOutcome } from './useCompiled';

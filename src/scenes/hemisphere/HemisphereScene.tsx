@@ -5,12 +5,12 @@
  */
 import { lazy, Suspense, useMemo, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
-import { ExprField, NumberField, Notice, Panel, Readout, SceneLayout, Select, Slider, formatNumber } from '../../ui';
+import { useCompiled, ExprField, NumberField, Notice, Panel, Readout, SceneLayout, Select, Slider, formatNumber } from '../../ui';
 import { useWorkerJob } from '../../workers';
 import type { SequenceKind } from '../../core/random';
 import { lobeFromParams, type DrawStats } from './model';
 import { LOBES, MAX_N, POINT_SETS, type HemisphereSchema, type LobeId } from './params';
-import { useCompiled } from './useCompiled';
+import { compileThetaPhi } from './expr';
 import { UnitSquare } from './view/UnitSquare';
 import { Derivation } from './view/Derivation';
 import { MarginalPlots, Histogram2D } from './view/Plots';
@@ -40,8 +40,8 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
   const inverted = params.jacobian === 'inverted';
   const isCustom = lobeId === 'custom';
 
-  const fc = useCompiled(params.f);
-  const pc = useCompiled(params.pdf, isCustom);
+  const fc = useCompiled(params.f, compileThetaPhi);
+  const pc = useCompiled(params.pdf, compileThetaPhi, { enabled: isCustom });
   const customDensity = isCustom && pc.status === 'ok' ? pc.fn : null;
   const { lobe: baseLobe, tab } = useMemo(() => lobeFromParams(lobeId, params.exponent, customDensity), [lobeId, params.exponent, customDensity]);
   const customLobe = tab && tab.ok ? tab.lobe : null;
@@ -80,7 +80,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
           label="p(θ, φ) per steradian (need not be normalized)"
           value={params.pdf}
           onCommit={(s) => setParams({ pdf: s })}
-          error={pc.status === 'error' ? pc.error : tab && !tab.ok ? tab.message : null}
+          error={pc.status === 'error' ? pc.message : tab && !tab.ok ? tab.message : null}
           hint="mathjs syntax in theta, phi, e.g. cos(theta)^2 * (2 + cos(phi))"
           testId="pdf-input"
         />
@@ -118,7 +118,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
       ) : null}
       {isCustom && pc.status === 'error' ? (
         <Notice kind="error" testId="custom-error">
-          The typed density could not be used: {pc.error}. Nothing is sampled until it is fixed.
+          The typed density could not be used: {pc.message}. Nothing is sampled until it is fixed.
         </Notice>
       ) : null}
       {isCustom && tab && !tab.ok ? (
@@ -159,14 +159,14 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
         </Panel>
       ) : null}
       <Panel title="Derivation (Q1), with live numbers">
-        <Derivation lobe={lobeId} exponent={params.exponent} custom={customLobe} customTex={pc.status === 'ok' ? pc.tex : null} inverted={inverted} />
+        <Derivation lobe={lobeId} exponent={params.exponent} custom={customLobe} customTex={pc.status === 'ok' ? (pc.tex ?? null) : null} inverted={inverted} />
       </Panel>
       <Panel title="Q2: Monte Carlo estimators on the hemisphere">
         <ExprField
           label="Integrand f(θ, φ)"
           value={params.f}
           onCommit={(s) => setParams({ f: s })}
-          error={fc.status === 'error' ? fc.error : null}
+          error={fc.status === 'error' ? fc.message : null}
           hint="mathjs syntax in theta, phi; the default is cos(theta)"
           testId="f-input"
         />

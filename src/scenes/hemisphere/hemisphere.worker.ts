@@ -5,7 +5,7 @@ import { repeatJob, statsJob, type Compile2, type RepeatArgs, type StatsArgs } f
 
 const compile: Compile2 = async (src, vars) => {
   const r = await compileExpression(src, vars);
-  return r.ok ? { ok: true, fn: r.fn as (...args: number[]) => number } : { ok: false, message: r.error };
+  return r.ok ? { ok: true, fn: r.fn as (...args: number[]) => number } : r;
 };
 
 exposeTasks({

@@ -4,12 +4,13 @@
  * runs. They run in hemisphere.worker.ts and in unit tests alike; the user expressions are compiled
  * here again (closures cannot cross the worker boundary), by the `compile` the caller passes.
  */
+import type { Failure } from '../../core/failure';
 import type { SequenceKind } from '../../core/random';
 import { computeDrawStats, lobeFromParams, repeatEstimates, type DrawStats, type Integrand, type Lobe } from './model';
 import type { LobeId } from './params';
 
 /** Compiles a user expression in (theta, phi) (the worker passes core/expr's compiler). */
-export type Compile2 = (src: string, vars: string[]) => Promise<{ ok: true; fn: (...args: number[]) => number } | { ok: false; message: string }>;
+export type Compile2 = (src: string, vars: string[]) => Promise<{ ok: true; fn: (...args: number[]) => number } | Failure>;
 
 export interface StatsArgs {
   lobe: LobeId;

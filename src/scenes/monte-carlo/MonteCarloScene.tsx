@@ -4,7 +4,7 @@
  */
 import { useMemo, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
-import { formatNumber, MathTex, NumberField, Notice, Panel, Readout, SceneLayout, Select, Slider, useShortcuts } from '../../ui';
+import { formatNumber, MathTex, useCompiled, NumberField, Notice, Panel, Readout, SceneLayout, Select, Slider, useShortcuts } from '../../ui';
 import { useWorkerJob } from '../../workers';
 import {
   EXAM_A,
@@ -25,7 +25,7 @@ import {
 import { MAX_N, PDF_KINDS, STRATEGIES, type McSchema, type PdfKind, type Strategy } from './params';
 import type { McEstimate } from '../../core/estimators';
 import type { ProblemArgs } from './jobs';
-import { useCompiled } from './view/useCompiled';
+import { compileX, compileXFast } from './expr';
 import { FunctionPlot, ConvergencePanel, RmsePanel, HistogramPanel } from './view/Plots';
 import { WorkedTable } from './view/WorkedTable';
 import { SamplesField, FnField } from './view/Fields';
@@ -51,8 +51,8 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
   const seq = (STRATEGIES as readonly string[]).includes(params.strategy) ? (params.strategy as Strategy) : 'independent';
 
   // --- the integrand (typed; falls back to the exam's f with a message) -----------------------
-  const fc = useCompiled(params.f);
-  const fFallback = useCompiled(EXAM_F);
+  const fc = useCompiled(params.f, compileX, { fast: compileXFast });
+  const fFallback = useCompiled(EXAM_F, compileX, { fast: compileXFast });
   const fOk = fc.status === 'ok';
   const fSrc = fOk ? params.f : EXAM_F;
   const f: Fn1 | null = fc.status === 'ok' ? fc.fn : fc.status === 'error' && fFallback.status === 'ok' ? fFallback.fn : null;
@@ -61,7 +61,7 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
   const lim = checkLimits(params.a, params.b);
   const { a, b } = lim;
 
-  const pc = useCompiled(params.pdfexpr, pdfKind === 'custom');
+  const pc = useCompiled(params.pdfexpr, compileX, { enabled: pdfKind === 'custom', fast: compileXFast });
   const pdfExprError = pdfKind === 'custom' && pc.status === 'error' ? pc.message : null;
   const customFn = pdfKind === 'custom' && pc.status === 'ok' ? pc.fn : null;
 

@@ -5,7 +5,7 @@ import { computeDrawStats, lobeFromParams, repeatEstimates } from '../../../src/
 
 const compile: Compile2 = async (src, vars) => {
   const r = await compileExpression(src, vars);
-  return r.ok ? { ok: true, fn: r.fn as (...a: number[]) => number } : { ok: false, message: r.error };
+  return r.ok ? { ok: true, fn: r.fn as (...a: number[]) => number } : r;
 };
 const base: StatsArgs = { lobe: 'exam', exponent: 8, pdf: 'cos(theta)^2', f: 'cos(theta)', points: 'independent', seed: 7, n: 2000, sampleLobe: true };
 
