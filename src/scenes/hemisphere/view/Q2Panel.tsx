@@ -7,10 +7,7 @@ import { useMemo } from 'react';
 import { Notice, Plot, Readout, formatNumber } from '../../../ui';
 import type { McEstimate } from '../../../core/estimators';
 
-export interface RepeatResult {
-  uniform: Float64Array;
-  importance: Float64Array;
-}
+import type { RepeatResult } from '../jobs';
 
 function meanSe(a: Float64Array): { mean: number; se: number; sd: number } {
   let s = 0;
