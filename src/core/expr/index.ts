@@ -5,10 +5,12 @@
  *   const r = await compileExpression('cos(θ) * exp(phi)', ['theta', 'phi']);
  *   if (r.ok) r.fn(0.3, 1.2); else show(r.error);
  */
+import { treeToTex } from './tex';
 import { checkAndCompile, canonicalizeTree, ExpressionError, MAX_EXPRESSION_LENGTH, type CompiledFn } from './compile';
 
 export * from './compile';
 export * from './tabulate';
+export { treeToTex } from './tex';
 
 type Engine = typeof import('./engine');
 let enginePromise: Promise<Engine> | null = null;
@@ -95,7 +97,7 @@ async function compileUncached(src: string, variables: readonly string[]): Promi
     const canon = canonicalizeTree(tree);
     let tex: string;
     try {
-      tex = canon.toTex();
+      tex = treeToTex(canon);
     } catch {
       tex = '\\text{' + canon.toString().replace(/[\\{}$&#^_%~]/g, ' ') + '}';
     }
