@@ -12,6 +12,23 @@ export function loadPlotly(): Promise<PlotlyModule> {
   return plotlyPromise;
 }
 
+/**
+ * The one Plotly config of every plot. Nothing may leave the site: no "Edit in Chart Studio",
+ * "Share chart", "Send data to cloud" or "link to plotly" action (they upload the plot's data to
+ * Plotly's servers), and no Plotly logo link.
+ */
+export const PLOT_CONFIG = Object.freeze({
+  responsive: true,
+  displaylogo: false,
+  showLink: false,
+  showSendToCloud: false,
+  showEditInChartStudio: false,
+  sendData: false,
+  linkText: '',
+  plotlyServerURL: '',
+  modeBarButtonsToRemove: ['lasso2d', 'select2d', 'sendChartToCloud', 'sendDataToCloud', 'editInChartStudio'],
+});
+
 /** A Plotly trace: plain objects as Plotly takes them. */
 export type PlotTrace = Record<string, unknown>;
 export type PlotLayout = Record<string, unknown>;
@@ -83,7 +100,7 @@ export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProp
     for (const k of ['xaxis', 'yaxis', 'xaxis2', 'yaxis2']) {
       if (layout && layout[k]) merged[k] = { ...axis, ...(layout[k] as object) };
     }
-    plotly.react(el.current, data, merged, { responsive: true, displaylogo: false, modeBarButtonsToRemove: ['lasso2d', 'select2d'] }).catch(() => setFailed(true));
+    plotly.react(el.current, data, merged, PLOT_CONFIG).catch(() => setFailed(true));
   }, [plotly, data, layoutKey, height, themeKey]);
 
   useEffect(() => {
