@@ -50,3 +50,14 @@ describe('q2Estimates blames the right thing', () => {
     expect(q.pZero).toBe(0);
   });
 });
+
+describe('tabulated typed density', () => {
+  it('cos(theta)^10000 is integrable: at most a warning that the table cannot resolve the peak', async () => {
+    const { tabulateHemisphereDensity } = await import('../../../src/core/sampling');
+    const r = tabulateHemisphereDensity(await fnOf('cos(theta)^10000'));
+    expect(r.ok).toBe(true);
+    if (r.ok && r.warning) expect(r.warning).toMatch(/resolve/);
+    const d = tabulateHemisphereDensity(await fnOf('cos(theta)/sin(theta)^2'));
+    expect(d.ok).toBe(false);
+  });
+});
