@@ -170,7 +170,16 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
           hint="mathjs syntax in theta, phi; the default is cos(theta)"
           testId="f-input"
         />
-        <EstimateReadouts exact={exact} uniform={uniformEst} importance={importanceEst} importanceOff={importanceOff} />
+        <EstimateReadouts
+          exact={exact}
+          uniform={uniformEst}
+          importance={importanceEst}
+          importanceOff={importanceOff}
+          exactProblem={current && fc.status === 'ok' ? current.exactProblem : null}
+          exactNote={current?.exactNote}
+          fNonFinite={current && fc.status === 'ok' ? current.q2.fNonFinite : 0}
+          pZero={current && fc.status === 'ok' ? current.q2.pZero : 0}
+        />
         <p className="small">
           Both estimators use the same N points (ξ₁, ξ₂): the uniform one warps them to the hemisphere uniformly (p = 1/2π), the importance one
           with the chosen p{baseLobe ? ` (${baseLobe.label})` : ''}. With f = cos θ and the cosine lobe every term f/p equals π: zero variance.
