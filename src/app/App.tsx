@@ -1,4 +1,4 @@
-import { useCallback, useEffect, useMemo, useState } from 'react';
+import { useEffect, useMemo } from 'react';
 import { useHashRoute } from './useHashRoute';
 import { parseShellFlags } from './route';
 import { useTheme } from './theme';
@@ -6,15 +6,13 @@ import { usePostHeight } from './embedHeight';
 import { Home } from './Home';
 import { SceneHost } from './SceneHost';
 import { findScene } from '../scenes/registry';
-import { ShortcutProvider, SHORTCUTS } from '../ui/shortcuts';
+import { ShortcutProvider } from '../ui/shortcuts';
 
 export function App() {
   const route = useHashRoute();
   // memoised: SceneHost's setParams and effects depend on it, so it must not change per render
   const flags = useMemo(() => parseShellFlags(route.query), [route.query]);
   const theme = useTheme(flags.theme);
-  const [helpOpen, setHelpOpen] = useState(false);
-  const toggleHelp = useCallback(() => setHelpOpen((o) => !o), []);
   usePostHeight(flags.embed);
 
   useEffect(() => {
@@ -38,7 +36,7 @@ export function App() {
     );
 
   return (
-    <ShortcutProvider active={flags.present} onHelp={toggleHelp}>
+    <ShortcutProvider active={flags.present}>
       <a className="skip-link" href="#main" onClick={(e) => {
         e.preventDefault();
         document.getElementById('main')?.focus();
@@ -55,24 +53,6 @@ export function App() {
           </p>
         </footer>
       )}
-      {helpOpen ? (
-        <div className="shortcut-help" role="dialog" aria-modal="false" aria-label="Keyboard shortcuts">
-          <h2>Keyboard shortcuts</h2>
-          <dl>
-            {SHORTCUTS.map((s) => (
-              <div key={s.key}>
-                <dt>
-                  <kbd>{s.key}</kbd>
-                </dt>
-                <dd>{s.label}</dd>
-              </div>
-            ))}
-          </dl>
-          <button type="button" onClick={toggleHelp} autoFocus>
-            Close
-          </button>
-        </div>
-      ) : null}
     </ShortcutProvider>
   );
 }

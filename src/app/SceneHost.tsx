@@ -4,6 +4,8 @@ import { sceneLoader } from '../scenes/registry';
 import type { SceneModule } from './scene';
 import { parseParams, serializeParams, type ParamProblem, type ParamValues, type ParamSchema } from './params';
 import { shellExtras, type ShellFlags } from './route';
+import { useShortcuts } from '../ui/shortcuts';
+import { QuestionNav } from '../ui/exam';
 
 interface Props {
   info: SceneInfo;
@@ -84,15 +86,24 @@ function LoadedScene({ mod, info, query, flags, theme }: { mod: SceneModule; inf
   const schema = mod.schema;
   const parsed = useMemo(() => parseParams(schema, query), [schema, query]);
   const [values, setValues] = useState(parsed.values);
-  const [problems, setProblems] = useState<ParamProblem[]>([...flags.problems, ...parsed.problems]);
+  const partProblem = useMemo<ParamProblem[]>(
+    () => (flags.part && !info.parts.includes(flags.part) ? [{ name: 'part', message: `${flags.part} is not on this page (it has ${info.parts.join(', ')}); showing the top` }] : []),
+    [flags.part, info.parts],
+  );
+  const [problems, setProblems] = useState<ParamProblem[]>([...flags.problems, ...partProblem, ...parsed.problems]);
+  // the values the scene opened with: "r" (classroom shortcut) always goes back to them
+  const opening = useRef(parsed.values);
   const lastQuery = useRef(query);
   // A hashchange (typed URL, back/forward) re-parses; our own replaceState does not trigger it.
   useEffect(() => {
     if (lastQuery.current === query) return;
     lastQuery.current = query;
     setValues(parsed.values);
-    setProblems([...flags.problems, ...parsed.problems]);
-  }, [query, parsed, flags.problems]);
+    setProblems([...flags.problems, ...partProblem, ...parsed.problems]);
+  }, [query, parsed, flags.problems, partProblem]);
+
+  const part = flags.part && info.parts.includes(flags.part) ? flags.part : null;
+  useScrollToPart(part);
 
   const valuesRef = useRef(values);
   valuesRef.current = values;
@@ -112,6 +123,7 @@ function LoadedScene({ mod, info, query, flags, theme }: { mod: SceneModule; inf
     },
     [schema, flags, info.path],
   );
+  useShortcuts({ reset: () => setParams({ ...opening.current }) });
 
   const Scene = mod.default;
   return (
@@ -137,6 +149,7 @@ function LoadedScene({ mod, info, query, flags, theme }: { mod: SceneModule; inf
       <SceneErrorBoundary>
         <Scene params={values} setParams={setParams} mode={{ embed: flags.embed, present: flags.present, theme }} />
       </SceneErrorBoundary>
+      {flags.embed ? null : <QuestionNav info={info} flags={flags} />}
     </>
   );
 }
@@ -145,9 +158,9 @@ function ShareBar({ info, schema, values, flags }: { info: SceneInfo; schema: Sc
   const [copied, setCopied] = useState<'link' | 'embed' | null>(null);
   const [shown, setShown] = useState<string | null>(null);
   const base = `${window.location.origin}${window.location.pathname}`;
-  const qs = serializeParams(schema, values, { present: flags.present ? '1' : undefined, theme: flags.theme ?? undefined });
+  const qs = serializeParams(schema, values, { part: flags.part ?? undefined, present: flags.present ? '1' : undefined, theme: flags.theme ?? undefined });
   const link = `${base}#${info.path}${qs ? `?${qs}` : ''}`;
-  const embedQs = serializeParams(schema, values, { embed: '1', theme: flags.theme ?? undefined });
+  const embedQs = serializeParams(schema, values, { part: flags.part ?? undefined, embed: '1', theme: flags.theme ?? undefined });
   const embedSrc = `${base}#${info.path}?${embedQs}`;
   const embedCode = `<iframe src="${embedSrc.replace(/&/g, '&amp;').replace(/"/g, '&quot;')}" title="${info.title} — Render Math Lab" width="100%" height="720" style="border:0" loading="lazy"></iframe>`;
   const copy = async (what: 'link' | 'embed') => {
@@ -199,4 +212,37 @@ class SceneErrorBoundary extends Component<{ children: ReactNode }, { error: str
     }
     return this.props.children;
   }
+}
+
+/**
+ * Land on an exam part (`part=1c`): once the scene has drawn the element `#part-1c`, scroll it to
+ * the top and move focus there (screen readers start reading at the part). Gives up quietly after
+ * a few seconds if the scene never draws it.
+ */
+function useScrollToPart(part: string | null) {
+  useEffect(() => {
+    if (!part) return;
+    let done = false;
+    const tryLand = () => {
+      if (done) return true;
+      const el = document.getElementById(`part-${part}`);
+      if (!el) return false;
+      done = true;
+      el.scrollIntoView({ block: 'start' });
+      if (el.tabIndex < 0 && !el.hasAttribute('tabindex')) el.setAttribute('tabindex', '-1');
+      el.focus({ preventScroll: true });
+      return true;
+    };
+    if (tryLand()) return;
+    const mo = new MutationObserver(() => {
+      if (tryLand()) mo.disconnect();
+    });
+    mo.observe(document.body, { childList: true, subtree: true });
+    const timer = window.setTimeout(() => mo.disconnect(), 8000);
+    return () => {
+      done = true;
+      mo.disconnect();
+      window.clearTimeout(timer);
+    };
+  }, [part]);
 }

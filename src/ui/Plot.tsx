@@ -25,6 +25,10 @@ export interface PlotProps {
   testId?: string;
 }
 
+function touchOnly(): boolean {
+  return typeof window.matchMedia === 'function' && window.matchMedia('(hover: none) and (pointer: coarse)').matches;
+}
+
 function themeColors() {
   const cs = getComputedStyle(document.documentElement);
   return {
@@ -68,7 +72,8 @@ export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProp
     if (!plotly || !el.current) return;
     const layout = layoutRef.current;
     const c = themeColors();
-    const axis = { gridcolor: c.grid, zerolinecolor: c.grid, linecolor: c.grid, automargin: true };
+    // mathematical axes: powers of ten (1×10⁻⁶), never SI prefixes (1µ)
+    const axis = { gridcolor: c.grid, zerolinecolor: c.grid, linecolor: c.grid, automargin: true, exponentformat: 'power' };
     const base: PlotLayout = {
       height,
       margin: { l: 56, r: 16, t: 28, b: 44 },
@@ -83,7 +88,13 @@ export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProp
     for (const k of ['xaxis', 'yaxis', 'xaxis2', 'yaxis2']) {
       if (layout && layout[k]) merged[k] = { ...axis, ...(layout[k] as object) };
     }
-    plotly.react(el.current, data, merged, { responsive: true, displaylogo: false, modeBarButtonsToRemove: ['lasso2d', 'select2d'] }).catch(() => setFailed(true));
+    plotly.react(el.current, data, merged, {
+      responsive: true,
+      displaylogo: false,
+      // on touch screens the mode bar would sit over titles and legends with no hover to hide it
+      displayModeBar: touchOnly() ? false : 'hover',
+      modeBarButtonsToRemove: ['lasso2d', 'select2d'],
+    }).catch(() => setFailed(true));
   }, [plotly, data, layoutKey, height, themeKey]);
 
   useEffect(() => {

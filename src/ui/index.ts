@@ -4,3 +4,6 @@ export { MathTex, loadKatex } from './MathTex';
 export { Plot, loadPlotly, type PlotTrace, type PlotLayout } from './Plot';
 export { useShortcuts, type ShortcutHandlers } from './shortcuts';
 export { useSeenOnce, observeVisibility } from './useInView';
+export { useTimeline, timelineParams, advance, clampPosition, prefersReducedMotion, TIMELINE_SPEEDS, type Timeline, type TimelineOptions } from './timeline';
+export { TimelineTransport, type TimelineTransportProps } from './TimelineTransport';
+export { ExamQuestion, ExamPart, Derivation, LiveAnswer, KeyNote, ExploreFurther, QuestionNav, questionHref } from './exam';
