@@ -54,7 +54,10 @@ export function SceneHost({ info, query, flags, theme }: Props) {
   );
 
   return (
-    <main id="main" className={`page scene scene-${info.id}`} tabIndex={-1}>
+    // Outside embeds the page is at least one screen tall from the first paint, so the footer starts
+    // below the fold and does not jump down when the scene's chunk replaces "Loading the scene…"
+    // (that jump was a layout shift of ~0.17 on every scene, measured by Lighthouse mobile).
+    <main id="main" className={`page scene scene-${info.id}${flags.embed ? '' : ' scene-full'}`} tabIndex={-1}>
       {header}
       {load.kind === 'loading' ? <p className="loading" role="status">Loading the scene…</p> : null}
       {load.kind === 'missing' ? (

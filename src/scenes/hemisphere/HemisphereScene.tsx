@@ -17,9 +17,11 @@ import { MarginalPlots, Histogram2D } from './view/Plots';
 import { EstimateReadouts, RepeatView } from './view/Q2Panel';
 import { InvertedJacobian } from './view/InvertedJacobian';
 import type { RepeatArgs, RepeatResult, StatsArgs } from './jobs';
+// Static, not lazy: the 3D panel is on the first screen, and a Suspense fallback of another height
+// shifted the layout when it arrived (three.js itself still loads lazily, inside Viewport).
+import { HemisphereView } from './view/HemisphereView';
 import './hemisphere.css';
 
-const HemisphereView = lazy(() => import('./view/HemisphereView').then((m) => ({ default: m.HemisphereView })));
 const StabilityPanel = lazy(() => import('./view/StabilityPanel').then((m) => ({ default: m.StabilityPanel })));
 
 const makeWorker = () => new Worker(new URL('./hemisphere.worker.ts', import.meta.url), { type: 'module' });
@@ -103,7 +105,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
         <Readout id="samples" label="samples drawn" value={samples} />
         <Readout id="chi2-p" label="χ² p-value" value={chi2 ? chi2.pValue : null} digits={4} />
       </div>
-      <p className="small" data-testid="stats-status" data-state={current ? 'ready' : stats.running ? 'running' : 'idle'}>
+      <p className="small stats-status" data-testid="stats-status" data-state={current ? 'ready' : stats.running ? 'running' : 'idle'}>
         {stats.running ? `computing in a worker… ${Math.round(stats.progress * 100)} %` : current ? 'statistics up to date' : ''}
       </p>
     </div>
@@ -129,9 +131,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
       {isCustom && tab && tab.ok && tab.warning ? <Notice kind="warn">Approximate: {tab.warning}.</Notice> : null}
       <Panel title="Samples on the hemisphere">
         <div className="hemi-views">
-          <Suspense fallback={<p className="viewport-msg">Loading 3D view…</p>}>
-            <HemisphereView lobe={lobe} kind={kind} seed={params.seed} n={params.n} height={mode.present ? 460 : 380} />
-          </Suspense>
+          <HemisphereView lobe={lobe} kind={kind} seed={params.seed} n={params.n} height={mode.present ? 460 : 380} />
           <UnitSquare kind={kind} seed={params.seed} n={params.n} size={mode.present ? 280 : 220} />
         </div>
         {!lobe ? <p className="small">No samples: {inverted ? 'the inverted variant is not a density.' : 'the density is not valid yet.'}</p> : null}
