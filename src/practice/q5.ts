@@ -1,7 +1,7 @@
 /**
  * Q5 variants: a ray o + t d and a sphere (centre c, radius r) with small integer coordinates, drawn
  * so every case appears (two hits, origin inside, sphere behind, miss, tangent). Expected values come
- * from the core's intersectRaySphere (the ray–sphere scene's routine): a = d·d, b = 2 d·(o − c),
+ * from the core's intersectRaySphere (the ray–sphere scene's routine, textbook method): a = d·d, b = 2 d·(o − c),
  * c = |o − c|² − r², Δ = b² − 4ac, the roots t0 ≤ t1, t_hit (nearest root ≥ 0) and the case.
  * With integer inputs a, b, c and Δ are exact in double precision.
  * Classic mistakes: the sign slip in b (d·(c − o)), b without its 2, r not squared, Δ/4 (the half-b
@@ -25,8 +25,12 @@ function ivec(rng: Rng, lo: number, hi: number): [number, number, number] {
   return [intIn(rng, lo, hi), intIn(rng, lo, hi), intIn(rng, lo, hi)];
 }
 
+/**
+ * The textbook evaluation (the key's form): with these small integers a, b, c and b² − 4ac are
+ * exact, whereas the robust form's 4a(r² − |l|²) can be off by an ulp (16 → 15.999999999999996).
+ */
 function solve(p: Q5Params): RaySphereHit | null {
-  const res = intersectRaySphere(p.o, p.d, p.c, p.r, 'stable');
+  const res = intersectRaySphere(p.o, p.d, p.c, p.r, 'naive');
   return res.ok ? res : null;
 }
 
@@ -143,7 +147,7 @@ export function q5Variant(seed: number): Variant {
       { id: 'b', prompt: 'The roots (none on a miss), the hit (none if no root is ≥ 0), and the case: miss, tangent, two-hits, inside or behind.', answers: answers.slice(4) },
     ],
     solution,
-    sceneHref: `#/ray-sphere?${query({ o: vecValue(P.o), d: vecValue(P.d), c: vecValue(P.c), r: P.r })}`,
+    sceneHref: `#/ray-sphere?${query({ o: vecValue(P.o), d: vecValue(P.d), c: vecValue(P.c), r: P.r, method: 'naive' })}`,
     sceneLabel: 'Open this ray and sphere in the ray–sphere scene',
     notes: [],
   };
