@@ -1,6 +1,6 @@
 /**
  * Q2 variants: the two Monte Carlo estimators of ∫ f dω over the upper hemisphere, evaluated on four
- * given directions (θᵢ, φᵢ), with the density p(ω) = k cos^m θ e^{aφ} of Q1's family:
+ * given directions (θᵢ, φᵢ), with the density p(ω) = k cosᵐθ e^(aφ) of Q1's family:
  *
  *   uniform     ⟨I⟩ = (2π/N) Σ f(θᵢ, φᵢ)          (|D| = 2π, p = 1/2π)
  *   importance  ⟨I⟩ = (1/N) Σ f(θᵢ, φᵢ) / p(ωᵢ)    (p per steradian, not p(θ, φ))
@@ -22,7 +22,7 @@ export interface Q2Params {
   m: number;
   a: Rational;
   fKind: FKind;
-  /** Coefficient of f (constant value, or the multiple of cos^m θ e^{aφ}). */
+  /** Coefficient of f (constant value, or the multiple of cosᵐθ e^(aφ)). */
   C: number;
   dirs: [number, number][];
 }
@@ -119,7 +119,7 @@ export function q2Variant(seed: number): Variant {
   const impAns = numberAnswer('mc-importance', 'importance ⟨I⟩', importance, [], [
     { id: 'f-times-p', value: mean(fv.map((f, i) => f * pv[i]!)), message: 'The estimator divides by the density: (1/N) Σ f/p, not f·p.' },
     { id: 'theta-phi-density', value: mean(fv.map((f, i) => f / (pv[i]! * sinT[i]!))), message: 'You divided by p(θ, φ) = p(ω) sin θ. The integral is over solid angle (dω), so divide by p(ω), the density per steradian.' },
-    { id: 'pdf-without-k', value: mean(fv.map((f, i) => f / (pv[i]! / F.k))), message: 'The density lost its normalization constant k: divide by the full p(ω) = k cos^m θ e^{aφ}.' },
+    { id: 'pdf-without-k', value: mean(fv.map((f, i) => f / (pv[i]! / F.k))), message: 'The density lost its normalization constant k: divide by the full p(ω) = k cosᵐθ e^(aφ).' },
   ]);
   const zeroAns = choiceAnswer('zero-variance', 'zero variance', ['uniform', 'importance', 'neither'], zero, [], why);
   const rows = P.dirs.map(([t, ph], i) => `(${fmt(t)}, ${fmt(ph)}) & ${tn(fv[i]!)} & ${tn(pv[i]!)} & ${tn(fv[i]! / pv[i]!)}`);

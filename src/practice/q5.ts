@@ -123,12 +123,17 @@ export function q5Variant(seed: number): Variant {
   const dot = (u: Vec3, v: Vec3) => `${tp(u[0])}\\cdot${tp(v[0])} + ${tp(u[1])}\\cdot${tp(v[1])} + ${tp(u[2])}\\cdot${tp(v[2])}`;
   const solution: SolutionStep[] = [
     { text: 'Substitute p(t) = o + t d into |p − c|² = r², with f = o − c:' },
-    { tex: `f = o - c = ${vecDisplay(f)},\\quad a = d\\cdot d = ${dot(P.d, P.d)} = ${tn(a)}` },
-    { tex: `b = 2\\,d\\cdot f = 2\\,(${dot(P.d, f)}) = ${tn(b)},\\quad c = f\\cdot f - r^2 = ${tn(ff)} - ${tn(P.r * P.r)} = ${tn(cc)}` },
+    { tex: `f = o - c = ${vecDisplay(f)}` },
+    { tex: `a = d\\cdot d = ${dot(P.d, P.d)} = ${tn(a)}` },
+    { tex: `b = 2\\,d\\cdot f = 2\\,(${dot(P.d, f)}) = ${tn(b)}` },
+    { tex: `c = f\\cdot f - r^2 = ${tn(ff)} - ${tn(P.r * P.r)} = ${tn(cc)}` },
     { tex: `\\Delta = b^2 - 4ac = ${tp(b)}^2 - 4\\cdot${tp(a)}\\cdot${tp(cc)} = ${tn(D)}` },
-    hit
-      ? { tex: `t_{0,1} = \\frac{-b \\mp \\sqrt{\\Delta}}{2a} = \\frac{${tn(-b)} \\mp ${tn(Math.sqrt(Math.max(D, 0)))}}{${tn(2 * a)}} \\;\\Rightarrow\\; t_0 = ${tn(t0!)},\\ t_1 = ${tn(t1!)}` }
-      : { text: 'Δ < 0: no real root, the ray misses (t0, t1 and t_hit: none).' },
+    ...(hit
+      ? [
+          { tex: `t_{0,1} = \\frac{-b \\mp \\sqrt{\\Delta}}{2a} = \\frac{${tn(-b)} \\mp ${tn(Math.sqrt(Math.max(D, 0)))}}{${tn(2 * a)}}` },
+          { tex: `t_0 = ${tn(t0!)},\\quad t_1 = ${tn(t1!)}` },
+        ]
+      : [{ text: 'Δ < 0: no real root, the ray misses (t0, t1 and t_hit: none).' }]),
     { text: `${caseWhy(h)} ${tHit !== null ? `t_hit = ${fmt(tHit)}.` : 't_hit: none.'} A hit needs Δ ≥ 0 and t ≥ 0.` },
   ];
   return {

@@ -16,7 +16,7 @@ export interface QuestionInfo {
 }
 
 export const QUESTIONS: readonly QuestionInfo[] = [
-  { id: 'q1', n: 1, title: 'Sampling a hemisphere PDF by inversion', blurb: 'Normalize k cos^m θ e^{aφ}, its marginals, CDFs and inversion formulas.', generate: q1Variant },
+  { id: 'q1', n: 1, title: 'Sampling a hemisphere PDF by inversion', blurb: 'Normalize k cosᵐθ e^(aφ), its marginals, CDFs and inversion formulas.', generate: q1Variant },
   { id: 'q2', n: 2, title: 'Monte Carlo estimators on the hemisphere', blurb: 'Uniform and importance-sampled estimates from given directions; which has zero variance.', generate: q2Variant },
   { id: 'q3', n: 3, title: 'Texture lookup', blurb: 'Nearest and bilinear lookup on a texel grid, and the spherical (u, v) of a point.', generate: q3Variant },
   { id: 'q4', n: 4, title: 'Monte Carlo integration in 1D', blurb: 'The exact integral, the uniform and the importance-sampled estimate from given samples.', generate: q4Variant },
