@@ -65,8 +65,8 @@ function gcd(a: number, b: number): number {
   return b === 0 ? Math.abs(a) : gcd(b, a % b);
 }
 function reduce(p: number, q: number): Rational {
-  const g = gcd(p, q) || 1;
-  return { p: p / g, q: q / g };
+  const g = (gcd(p, q) || 1) * (q < 0 ? -1 : 1); // denominator positive
+  return { p: p / g + 0, q: q / g };
 }
 /** A rational as a coefficient in mathjs text: '' for 1, '-' for −1, '3*', '(1/2)*'. */
 function coefText(r: Rational): string {
