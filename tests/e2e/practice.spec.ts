@@ -20,8 +20,8 @@ function studentText(a: AnswerSpec): string {
   return a.expected;
 }
 
-async function openVariant(page: Page, q: QuestionId, seed: number): Promise<Variant> {
-  await page.goto(`./#/practice/${q}?seed=${seed}`);
+async function openVariant(page: Page, q: QuestionId, seed: number, extra = ''): Promise<Variant> {
+  await page.goto(`./#/practice/${q}?seed=${seed}${extra}`);
   await expect(page.getByTestId('variant-seed')).toHaveText(String(seed), { timeout: 30_000 });
   await page.evaluate(() => {
     const w = window as unknown as { __verdicts: unknown[]; __listening?: boolean };
@@ -198,8 +198,10 @@ test('progress is kept per question and can be reset; a bad seed is named and re
   await expect(page).toHaveURL(/#\/practice\/q2\?seed=\d+/);
 });
 
-test('no serious or critical axe violations on a checked question', async ({ page }) => {
-  const v = await openVariant(page, 'q3', 17);
+for (const theme of ['light', 'dark'] as const)
+test(`no serious or critical axe violations on a checked question (${theme} theme)`, async ({ page }) => {
+  const v = await openVariant(page, 'q3', 17, `&theme=${theme}`);
+  await expect(page.locator('html')).toHaveAttribute('data-theme', theme);
   await fillAndCheck(page, allAnswers(v).map((a, i) => [a.name, i % 2 ? studentText(a) : '1']));
   await expect(page.locator('.math-pending')).toHaveCount(0);
   const r = await new AxeBuilder({ page }).analyze();
@@ -220,4 +222,26 @@ test('the worksheet prints one question per page, then the answer key', async ({
   await expect(page.locator('.math-pending')).toHaveCount(0);
   const pdf2 = await page.pdf({ format: 'A4' });
   expect((pdf2.toString('latin1').match(/\/Type\s*\/Page(?![s\w])/g) ?? []).length).toBe(5);
+});
+
+test('each question’s scene link opens its scene in the variant’s configuration (no parameter notices; same numbers)', async ({ page }) => {
+  test.setTimeout(180_000);
+  for (const q of QUESTIONS) {
+    const v = q.generate(31);
+    await page.goto(`./${v.sceneHref}`);
+    await page.waitForSelector('main#main');
+    await expect(page.locator('.loading')).toHaveCount(0, { timeout: 60_000 });
+    await expect(page.getByTestId('param-notice'), `${q.id}: ${v.sceneHref}`).toHaveCount(0);
+    const same: Record<string, string[]> = { q3: ['nearest', 'bilinear', 'sphere-u', 'sphere-v', 'sphere-bilinear'], q4: ['exact'], q5: ['a', 'b', 'c', 'discriminant', 't-hit'] };
+    for (const name of same[q.id] ?? []) {
+      const a = allAnswers(v).find((x) => x.name === name) as Extract<AnswerSpec, { kind: 'number' }>;
+      let got = NaN;
+      await expect
+        .poll(async () => {
+          got = Number(await page.getByTestId(name).first().getAttribute('data-value'));
+          return Math.abs(got - a.expected!) <= 1e-12 * Math.max(1, Math.abs(a.expected!));
+        }, { timeout: 30_000, message: `${q.id} ${name}` })
+        .toBe(true);
+    }
+  }
 });
