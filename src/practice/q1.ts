@@ -79,16 +79,16 @@ function coefTex(r: Rational): string {
   return ratTex(r);
 }
 /** aφ as mathjs text: phi, -phi, 2*phi, phi/2, 3*phi/2, -phi/2. */
-function argText(a: Rational): string {
+export function argText(a: Rational): string {
   const head = a.p === 1 ? 'phi' : a.p === -1 ? '-phi' : `${a.p}*phi`;
   return a.q === 1 ? head : `${head}/${a.q}`;
 }
-function argTex(a: Rational): string {
+export function argTex(a: Rational): string {
   const head = a.p === 1 ? '\\phi' : a.p === -1 ? '-\\phi' : `${a.p}\\phi`;
   return a.q === 1 ? head : `${head}/${a.q}`;
 }
 /** e^(aφ) for people: e^φ, e^(−φ), e^(φ/2), … */
-function expPlain(a: Rational): string {
+export function expPlain(a: Rational): string {
   const t = argText(a).replace('phi', 'φ').replace('*', '').replace('-', '−');
   return a.p === 1 && a.q === 1 ? 'e^φ' : `e^(${t})`;
 }

@@ -13,8 +13,9 @@
  */
 import { Rng } from '../core/random';
 import { estimateFromTerms } from '../core/estimators';
-import { choiceAnswer, numberAnswer, pick, query, ratParen } from './build';
-import { fmt, ratTex, ratText, ratValue, roundTo, tn, tp, type Rational, type SolutionStep, type Variant } from './model';
+import { choiceAnswer, numberAnswer, pick, query } from './build';
+import { argTex, argText, expPlain } from './q1';
+import { fmt, ratValue, roundTo, tn, tp, type Rational, type SolutionStep, type Variant } from './model';
 
 type FKind = 'const' | 'prop' | 'cos' | 'cos2';
 
@@ -53,8 +54,9 @@ export function q2Functions({ m, a: ar, fKind, C }: Q2Params) {
   let fTex: string;
   const cosT = m === 1 ? 'cos(theta)' : `cos(theta)^${m}`;
   const cosX = m === 1 ? '\\cos\\theta' : `\\cos^{${m}}\\theta`;
-  const expT = ar.p === 1 && ar.q === 1 ? 'exp(phi)' : `exp(${ratParen(ar)}*phi)`;
-  const expX = ar.p === 1 && ar.q === 1 ? 'e^{\\phi}' : `e^{${ratTex(ar)}\\phi}`;
+  const expT = `exp(${argText(ar)})`;
+  const expX = `e^{${argTex(ar)}}`;
+  const cosPlain = m === 1 ? 'cos θ' : `cos^${m} θ`;
   switch (fKind) {
     case 'const':
       f = () => C;
@@ -76,7 +78,8 @@ export function q2Functions({ m, a: ar, fKind, C }: Q2Params) {
       fText = `${C === 1 ? '' : `${C} * `}cos(theta)^2`;
       fTex = `${C === 1 ? '' : C}\\cos^2\\theta`;
   }
-  return { a, k, p, f, fText, fTex, pText: `${cosT} * ${expT}`, pTex: `k\\,${cosX}\\,${expX}` };
+  const fPlain = fText.replace(/cos\(theta\)\^(\d)/g, 'cos^$1 θ').replace(/cos\(theta\)/g, 'cos θ').replace(/ \* /g, ' ').replace(/exp\([^)]*\)/, expPlain(ar));
+  return { a, k, p, f, fText, fTex, fPlain, pText: `${cosT} * ${expT}`, pPlain: `k ${cosPlain} ${expPlain(ar)}`, pTex: `k\\,${cosX}\\,${expX}` };
 }
 
 /** Both estimates from the given directions, by the core's estimator over per-direction terms. */
@@ -124,7 +127,7 @@ export function q2Variant(seed: number): Variant {
   const zeroAns = choiceAnswer('zero-variance', 'zero variance', ['uniform', 'importance', 'neither'], zero, [], why);
   const rows = P.dirs.map(([t, ph], i) => `(${fmt(t)}, ${fmt(ph)}) & ${tn(fv[i]!)} & ${tn(pv[i]!)} & ${tn(fv[i]! / pv[i]!)}`);
   const solution: SolutionStep[] = [
-    { text: `Per direction (θᵢ, φᵢ): f(ωᵢ), p(ωᵢ) = k cos^${P.m} θ e^{${ratText(P.a)} φ} with k = ${fmt(F.k, 6)}, and f/p:` },
+    { text: `Per direction (θᵢ, φᵢ): f(ωᵢ), p(ωᵢ) = ${F.pPlain} with k = ${fmt(F.k, 6)}, and f/p:` },
     { tex: `\\begin{array}{cccc} (\\theta_i,\\phi_i) & f & p & f/p \\\\ \\hline ${rows.join(' \\\\ ')} \\end{array}` },
     { text: '(a) Uniform sampling of the hemisphere, p = 1/|D| = 1/(2π):' },
     { tex: `\\langle I\\rangle = \\frac{2\\pi}{N}\\sum f(X_i) = \\frac{2\\pi}{${n}}\\,(${fv.map((x) => tn(x)).join(' + ')}) = ${tn(uniform)}` },
@@ -138,7 +141,7 @@ export function q2Variant(seed: number): Variant {
     question: 'q2',
     seed,
     title: 'Monte Carlo estimators on the hemisphere',
-    statement: `Estimate ∫ f dω over the upper hemisphere with f(θ, φ) = ${F.fText}, from the ${n} directions (θᵢ, φᵢ) below (radians). (a) Treat them as drawn uniformly over the hemisphere: the uniform estimate. (b) Treat them as drawn from p(ω) = k ${F.pText} with k = ${fmt(F.k, 6)}: the importance-sampled estimate. (c) Which estimator has zero variance for this f?`,
+    statement: `Estimate ∫ f dω over the upper hemisphere with f(θ, φ) = ${F.fPlain}, from the ${n} directions (θᵢ, φᵢ) below (radians). (a) Treat them as drawn uniformly over the hemisphere: the uniform estimate. (b) Treat them as drawn from p(ω) = ${F.pPlain} with k = ${fmt(F.k, 6)}: the importance-sampled estimate. (c) Which estimator has zero variance for this f?`,
     givens: [
       { name: 'f', label: 'f(θ, φ)', value: F.fText, display: F.fText, tex: `f(\\theta,\\phi) = ${F.fTex}` },
       { name: 'pdf', label: 'p(ω) per steradian', value: `k * ${F.pText}`, display: `k · ${F.pText}`, tex: `p(\\omega) = ${F.pTex}` },
