@@ -228,9 +228,15 @@ function QuestionPage({ variant, flags, problems }: { variant: Variant; flags: S
         <h1>
           <span className="question-tag">Practice Q{info.n}</span> {variant.title}
         </h1>
-        <a className="back-link" href={`#/practice${flags.present ? '?present=1' : ''}`}>
-          ← All practice questions
-        </a>
+        {flags.embed ? (
+          <a className="open-full" href={`${window.location.pathname}#/practice/${variant.question}?seed=${variant.seed}`} target="_blank" rel="noopener">
+            Open in Render Math Lab ↗
+          </a>
+        ) : (
+          <a className="back-link" href={`#/practice${flags.present ? '?present=1' : ''}`}>
+            ← All practice questions
+          </a>
+        )}
       </div>
       {problems.length ? (
         <div className="notice notice-warn" role="status" data-testid="param-notice">
@@ -364,10 +370,9 @@ function AnswerRow({ spec, value, onChange, verdict, revealed }: { spec: AnswerS
       {revealed ? (
         <p className="expected">
           Expected:{' '}
-          <output data-testid={`expected-${spec.name}`} data-value={exp}>
+          <output data-testid={`expected-${spec.name}`} data-value={exp} title={exp}>
             {spec.kind === 'number' && spec.expected !== null ? fmt(spec.expected, 6) : exp}
           </output>
-          {spec.kind === 'number' && spec.expected !== null && fmt(spec.expected, 6) !== exp ? <span className="muted"> (full precision {exp})</span> : null}
         </p>
       ) : null}
     </div>

@@ -130,9 +130,9 @@ export function q2Variant(seed: number): Variant {
     { text: `Per direction (θᵢ, φᵢ): f(ωᵢ), p(ωᵢ) = ${F.pPlain} with k = ${fmt(F.k, 6)}, and f/p:` },
     { tex: `\\begin{array}{cccc} (\\theta_i,\\phi_i) & f & p & f/p \\\\ \\hline ${rows.join(' \\\\ ')} \\end{array}` },
     { text: '(a) Uniform sampling of the hemisphere, p = 1/|D| = 1/(2π):' },
-    { tex: `\\langle I\\rangle = \\frac{2\\pi}{N}\\sum f(X_i) = \\frac{2\\pi}{${n}}\\,(${fv.map((x) => tn(x)).join(' + ')}) = ${tn(uniform)}` },
+    { tex: `\\begin{aligned} \\langle I\\rangle &= \\frac{2\\pi}{N}\\sum f(X_i) \\\\ &= \\frac{2\\pi}{${n}}\\,(${fv.map((x) => tn(x)).join(' + ')}) \\\\ &= ${tn(uniform)} \\end{aligned}` },
     { text: '(b) Importance sampling with p(ω), the density per steradian:' },
-    { tex: `\\langle I\\rangle = \\frac{1}{N}\\sum \\frac{f(X_i)}{p(X_i)} = \\frac{1}{${n}}\\,(${fv.map((x, i) => tp(x / pv[i]!)).join(' + ')}) = ${tn(importance)}` },
+    { tex: `\\begin{aligned} \\langle I\\rangle &= \\frac{1}{N}\\sum \\frac{f(X_i)}{p(X_i)} \\\\ &= \\frac{1}{${n}}\\,(${fv.map((x, i) => tp(x / pv[i]!)).join(' + ')}) \\\\ &= ${tn(importance)} \\end{aligned}` },
     { text: `(c) ${why}` },
     { text: 'Both estimators are unbiased: E[f(X)/p(X)] = ∫ (f/p) p dω = ∫ f dω for any p > 0 where f ≠ 0.' },
   ];

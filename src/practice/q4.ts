@@ -103,10 +103,11 @@ export function q4Variant(seed: number): Variant {
     { text: '(a) Exact integral by the antiderivative:' },
     { tex: `I = \\int_{${a}}^{${b}} ${fn.tex}\\,dx = \\Big[${fn.Ftex}\\Big]_{${a}}^{${b}} = ${tn(fn.F(b))} - ${tn(fn.F(a))} = ${tn(I)}` },
     { text: `(b) Uniform density p = 1/(b − a) = ${fmt(1 / L, 6)}; the samples give f(xᵢ):` },
-    { tex: P.samples.map((x, i) => `f(${x}) = ${tn(fv[i]!)}`).join(',\\quad ') },
-    { tex: `\\langle I\\rangle = \\frac{1}{${n}}\\sum \\frac{f(x_i)}{p} = \\frac{${L}}{${n}}\\,(${fv.map((x) => tn(x)).join(' + ')}) = ${tn(uniform)}` },
+    { tex: `\\begin{array}{l} ${P.samples.map((x, i) => `f(${x}) = ${tn(fv[i]!)}`).join(' \\\\ ')} \\end{array}` },
+    { tex: `\\begin{aligned} \\langle I\\rangle &= \\frac{1}{${n}}\\sum \\frac{f(x_i)}{p} = \\frac{${L}}{${n}}\\sum f(x_i) \\\\ &= \\frac{${L}}{${n}}\\,(${fv.map((x) => tn(x)).join(' + ')}) \\\\ &= ${tn(uniform)} \\end{aligned}` },
     { text: `(c) Importance sampling with p(x) = f(x)/I = ${fn.text.replace(/\^/g, '^')}/${fmt(I, 6)}, proportional to f:` },
-    { tex: `\\frac{f(x_i)}{p(x_i)} = I = ${tn(I)}\\ \\text{for every } i,\\quad \\langle I\\rangle = ${tn(importance)}\\ \\text{(zero variance)}` },
+    { tex: `\\frac{f(x_i)}{p(x_i)} = I = ${tn(I)}\\ \\text{for every } i` },
+    { tex: `\\langle I\\rangle = ${tn(importance)}\\ \\text{(zero variance)}` },
   ];
   return {
     question: 'q4',

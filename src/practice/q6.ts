@@ -125,11 +125,12 @@ export function q6Variant(seed: number): Variant {
   const rows = pts.map((q, i) => `${vecDisplay(q.x, 4)} & ${tn(q.cosT, 5)} & ${tn(q.cosL, 5)} & ${tn(q.r2, 5)} & ${tn(terms[i]!, 5)}`);
   const solution: SolutionStep[] = [
     { text: `(a) The patch centre is ${vecDisplay(g.centre, 5)} and its normal n_l = ${vecDisplay(g.patch.normal, 5)}; from p = ${vecDisplay(P.p)}:` },
-    { tex: `r = |x - p| = ${tn(g.r)},\\quad \\cos\\theta_l = \\frac{-n_l\\cdot(x - p)}{r} = ${tn(g.cosL)}` },
+    { tex: `r = |x - p| = ${tn(g.r)}` },
+    { tex: `\\cos\\theta_l = \\frac{-n_l\\cdot(x - p)}{r} = ${tn(g.cosL)}` },
     { tex: `d\\omega \\approx \\frac{dA\\,\\cos\\theta_l}{r^2} = \\frac{${tn(dA)}\\cdot ${tn(g.cosL)}}{${tn(g.r * g.r)}} = ${tn(g.dOmega)}\\ \\text{sr}` },
     { text: `(b) Uniform area sampling, p_A = 1/|A| with |A| = ${fmt(A)}, f = ρ/π = ${fmt(f, 6)}, L = ${P.L}. Per point: cos θ (floor normal +z), cos θ_l (light normal ${vecDisplay(g.light.normal, 4)}), r², and the term |A| f L cos θ cos θ_l / r²:` },
     { tex: `\\begin{array}{ccccc} x_i & \\cos\\theta & \\cos\\theta_l & r^2 & \\text{term} \\\\ \\hline ${rows.join(' \\\\ ')} \\end{array}` },
-    { tex: `\\langle L_o\\rangle = \\frac{|A|}{N}\\sum_i f L\\,\\cos\\theta_i\\,\\frac{\\cos\\theta_{l,i}}{r_i^2} = \\frac{1}{${n}}\\,(${Array.from(terms, (t) => tn(t, 5)).join(' + ')}) = ${tn(estimate)}` },
+    { tex: `\\begin{aligned} \\langle L_o\\rangle &= \\frac{|A|}{N}\\sum_i f L\\,\\cos\\theta_i\\,\\frac{\\cos\\theta_{l,i}}{r_i^2} \\\\ &= \\frac{1}{${n}}\\,(${Array.from(terms, (t) => tn(t, 5)).join(' + ')}) \\\\ &= ${tn(estimate)} \\end{aligned}` },
   ];
   const ptsValue = pts.map((q) => vecValue(q.x)).join(';');
   return {
