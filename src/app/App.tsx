@@ -1,12 +1,16 @@
-import { useCallback, useEffect, useMemo, useState } from 'react';
+import { lazy, Suspense, useCallback, useEffect, useMemo, useState } from 'react';
 import { useHashRoute } from './useHashRoute';
 import { parseShellFlags } from './route';
 import { useTheme } from './theme';
 import { usePostHeight } from './embedHeight';
+import { useHostApi } from './hostApi';
 import { Home } from './Home';
 import { SceneHost } from './SceneHost';
 import { findScene } from '../scenes/registry';
 import { ShortcutProvider, SHORTCUTS } from '../ui/shortcuts';
+
+// The teacher's guide (#/guide) is its own lazy chunk.
+const Guide = lazy(() => import('../guide/Guide'));
 
 export function App() {
   const route = useHashRoute();
@@ -15,7 +19,9 @@ export function App() {
   const theme = useTheme(flags.theme);
   const [helpOpen, setHelpOpen] = useState(false);
   const toggleHelp = useCallback(() => setHelpOpen((o) => !o), []);
-  usePostHeight(flags.embed);
+  const scene = findScene(route.path);
+  usePostHeight(flags.embed, scene?.id ?? null, flags.origins);
+  useHostApi(flags.origins);
 
   useEffect(() => {
     const cl = document.documentElement.classList;
@@ -23,9 +29,14 @@ export function App() {
     cl.toggle('embed', flags.embed);
   }, [flags.present, flags.embed]);
 
-  const scene = findScene(route.path);
   let body;
   if (route.path === '/') body = <Home flags={flags} />;
+  else if (route.path === '/guide')
+    body = (
+      <Suspense fallback={<main id="main" className="page"><p className="loading" role="status">Loading the teacher’s guide…</p></main>}>
+        <Guide flags={flags} />
+      </Suspense>
+    );
   else if (scene) body = <SceneHost key={scene.id} info={scene} query={route.query} flags={flags} theme={theme} />;
   else
     body = (

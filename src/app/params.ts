@@ -43,7 +43,7 @@ export interface ParsedParams<S extends ParamSchema> {
 }
 
 /** Parameters owned by the shell itself, not by any scene. */
-export const SHELL_PARAMS = ['embed', 'present', 'theme'] as const;
+export const SHELL_PARAMS = ['embed', 'present', 'theme', 'origin'] as const;
 
 /** Longest raw value the parser looks at; longer ones are rejected, not truncated. */
 export const MAX_RAW_LENGTH = 4000;
