@@ -11,8 +11,8 @@ import type { Frame, Page } from '@playwright/test';
 import { test, expect } from './fixtures';
 
 const appPort = Number(process.env.E2E_PORT ?? 4317);
-const hostPort = Number(process.env.E2E_HOST_PORT ?? appPort + 10);
-const hostOrigin = `http://127.0.0.1:${hostPort}`;
+let hostPort = 0; // an ephemeral port, chosen by the system (no clash with parallel runs)
+let hostOrigin = '';
 let server: Server;
 
 test.beforeAll(async () => {
@@ -26,7 +26,9 @@ test.beforeAll(async () => {
       res.end();
     }
   });
-  await new Promise<void>((ok) => server.listen(hostPort, '127.0.0.1', ok));
+  await new Promise<void>((ok) => server.listen(0, '127.0.0.1', ok));
+  hostPort = (server.address() as { port: number }).port;
+  hostOrigin = `http://127.0.0.1:${hostPort}`;
 });
 test.afterAll(async () => {
   await new Promise<void>((ok) => server.close(() => ok()));
