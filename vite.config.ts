@@ -97,8 +97,10 @@ export default defineConfig(({ mode }) => {
             },
           },
     },
-    // single: each inlined worker is one self-contained script (its lazy imports folded in)
-    worker: single ? { format: 'es' as const, rolldownOptions: { output: { codeSplitting: false } } } : { format: 'es' as const },
+    // single: each inlined worker is one self-contained classic script (its lazy imports folded in):
+    // a page opened from file:// has an opaque origin, and Chromium refuses module workers from its
+    // Blob URLs, but runs classic ones.
+    worker: single ? { format: 'iife' as const, rolldownOptions: { output: { codeSplitting: false } } } : { format: 'es' as const },
     publicDir: single ? false : 'public',
     server: { host: '127.0.0.1' },
   };
