@@ -94,6 +94,9 @@ function SiteHeader({ present }: { present: boolean }) {
       <a href={present ? '#/?present=1' : '#/'} className="brand">
         <span className="brand-mark" aria-hidden="true">◐</span> Render Math Lab
       </a>
+      <a href={present ? '#/guide?present=1' : '#/guide'} className="guide-link">
+        Teacher’s guide
+      </a>
     </header>
   );
 }
