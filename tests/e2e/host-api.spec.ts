@@ -183,3 +183,26 @@ test('the posted height follows the content both ways: it shrinks after the host
   await expect.poll(lastHeight).toBeGreaterThanOrEqual(content - 1);
   expect(await lastHeight()).toBeLessThanOrEqual(content + 1);
 });
+
+test('"Copy embed code" gives an iframe with an id and the listener that sizes it', async ({ page, context }) => {
+  const app = await context.newPage();
+  await app.goto(`http://127.0.0.1:${appPort}/app/#/texture?u=0.7`);
+  await app.getByTestId('copy-embed').click();
+  const code = await app.evaluate(() => navigator.clipboard.readText());
+  await app.close();
+  const id = /<iframe id="(rml-texture-[a-z0-9]+)"/.exec(code)?.[1];
+  expect(id, code).toBeTruthy();
+  expect(code).toContain('render-math-lab:height');
+  expect(code).toContain(`getElementById('${id}')`);
+  // pasted into a page as it is, the snippet sizes the iframe to the scene's content
+  await page.setContent(`<!doctype html><body style="margin:0">${code}</body>`);
+  const frame = page.frameLocator(`#${id}`);
+  await expect(frame.getByTestId('bilinear').first()).toBeVisible({ timeout: 30000 });
+  await expect(frame.getByTestId('u-slider')).toHaveValue('0.7');
+  const f = page.frames().find((x) => x.url().includes('/app/'))!;
+  const content = () => f.evaluate(() => Math.ceil(document.getElementById('root')!.getBoundingClientRect().bottom + window.scrollY));
+  await expect
+    .poll(async () => Math.abs((await page.locator(`#${id}`).evaluate((el) => el.getBoundingClientRect().height)) - (await content())), { timeout: 20000 })
+    .toBeLessThanOrEqual(1);
+  expect(await content()).toBeGreaterThan(720);
+});

@@ -15,6 +15,9 @@ import type { Page } from '@playwright/test';
 import { test, expect } from './fixtures';
 
 const dist = process.env.E2E_DIST ?? 'dist';
+
+// this file's tests need the service worker that the other specs block (playwright.config.ts)
+test.use({ serviceWorkers: 'allow' });
 const TYPES: Record<string, string> = {
   '.html': 'text/html; charset=utf-8', '.js': 'text/javascript; charset=utf-8', '.css': 'text/css; charset=utf-8',
   '.json': 'application/json', '.webmanifest': 'application/manifest+json', '.png': 'image/png', '.svg': 'image/svg+xml',
@@ -69,7 +72,7 @@ const SCENES: [string, string][] = [
 ];
 
 test('after one visit to #/, every scene opens and works with the server stopped', async ({ page, context }) => {
-  test.setTimeout(240_000);
+  test.setTimeout(360_000);
   const srv = await serveCopy();
   try {
     await page.goto(`${srv.base}#/`);
