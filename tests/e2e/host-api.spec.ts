@@ -112,6 +112,14 @@ test('the example host page sets, gets and subscribes; bad values answer an erro
   expect(last.state.scene).toBe('texture');
   expect(last.state.params.u).toBeCloseTo(-0.08 + 1.16 * 0.75, 1);
   expect((await api<Reply>(page, 'get')).state!.params.u).toBe(last.state.params.u);
+
+  // a practice verdict (the practice pages dispatch rml:practice-verdict) reaches the subscriber as
+  // plain data; only the four fields, strings capped
+  const f = page.frames().find((x) => x.url().startsWith(`http://127.0.0.1:${appPort}/`))!;
+  await f.evaluate(() =>
+    window.dispatchEvent(new CustomEvent('rml:practice-verdict', { detail: { question: 'Q3b', seed: 42, name: 'bilinear', verdict: 'correct', extra: '<img src=x>' } })),
+  );
+  await expect.poll(async () => (await events()).find((e) => e.event === 'practice-verdict')?.verdict ?? null).toEqual({ question: 'Q3b', seed: 42, name: 'bilinear', verdict: 'correct' });
 });
 
 test('requests from a window that is not the parent are ignored; height messages carry no URL', async ({ page }) => {
