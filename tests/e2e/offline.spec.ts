@@ -13,6 +13,7 @@ import { tmpdir } from 'node:os';
 import { extname, join, normalize } from 'node:path';
 import type { Page } from '@playwright/test';
 import { test, expect } from './fixtures';
+import { settleLazyViews } from './lazyViews';
 
 const dist = process.env.E2E_DIST ?? 'dist';
 
@@ -88,14 +89,12 @@ test('after one visit to #/, every scene opens and works with the server stopped
       p.on('console', (m) => m.type() === 'error' && errors.push(m.text()));
       p.on('pageerror', (e) => errors.push(e.message));
       await p.goto(`${srv.base}${hash}`);
-      await expect(p.locator('main#main')).toBeVisible({ timeout: 30000 });
-      await expect(p.locator('.loading')).toHaveCount(0, { timeout: 30000 });
-      if (id) await expect(p.getByTestId(id).first()).toHaveAttribute('data-value', /^-?\d/, { timeout: 30000 });
+      await expect(p.locator('main#main'), `${hash} offline`).toBeVisible({ timeout: 60000 });
+      await expect(p.locator('.loading'), `${hash} offline`).toHaveCount(0, { timeout: 60000 });
+      if (id) await expect(p.getByTestId(id).first(), `${hash} offline`).toHaveAttribute('data-value', /^-?\d/, { timeout: 60000 });
       else await expect(p.getByRole('heading', { level: 1 })).toContainText('guide');
-      // bring every lazy view (plots, 3D, formulas) on screen so their chunks load from the cache
-      const h = await p.evaluate(() => document.documentElement.scrollHeight);
-      for (let y = 0; y < h; y += 600) await p.evaluate((y) => window.scrollTo(0, y), y);
-      await expect(p.getByText(/Loading plot…|Loading 3D view…|Loading the scene…/)).toHaveCount(0, { timeout: 60000 });
+      // bring every lazy view (plots, 3D, formulas) on screen so their chunks load
+      await settleLazyViews(p);
       await expect(p.locator('.notice-error')).toHaveCount(0);
       await expect(p.getByText('could not be drawn')).toHaveCount(0);
       expect(errors, `console errors on ${hash} offline`).toEqual([]);

@@ -6,6 +6,7 @@ import { existsSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { test, expect } from './fixtures';
+import { settleLazyViews } from './lazyViews';
 
 const file = resolve(process.env.E2E_SINGLE ?? 'dist-single/index.html');
 
@@ -37,9 +38,8 @@ test('the single HTML file opens from file:// and every route works with no netw
     await expect(page.locator('main#main')).toBeVisible({ timeout: 30000 });
     await expect(page.locator('.loading')).toHaveCount(0, { timeout: 30000 });
     for (const id of ids) await expect(page.getByTestId(id).first()).toHaveAttribute('data-value', /^-?\d/, { timeout: 60000 });
-    const h = await page.evaluate(() => document.documentElement.scrollHeight);
-    for (let y = 0; y < h; y += 600) await page.evaluate((y) => window.scrollTo(0, y), y);
-    await expect(page.getByText(/Loading plot…|Loading 3D view…|Loading the scene…/)).toHaveCount(0, { timeout: 60000 });
+    // bring every lazy view (plots, 3D, formulas) on screen so their chunks load
+    await settleLazyViews(page);
     await expect(page.locator('.notice-error')).toHaveCount(0);
   }
   await page.goto(`${url}#/texture?u=0.7`);
