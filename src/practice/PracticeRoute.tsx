@@ -404,27 +404,31 @@ function GridTable({ text, testId }: { text: string; testId?: string }) {
   const rows = text.split(';').map((r) => r.split(','));
   const n = rows.length;
   return (
-    <table className="grid-table" data-testid={testId} data-value={text}>
-      <caption className="sr-only">Texel values, top row v = 1, bottom row v = 0</caption>
-      <tbody>
-        {rows.map((r, k) => (
-          <tr key={k}>
-            <th scope="row">v = {fmt(1 - k / (n - 1), 3)}</th>
-            {r.map((x, i) => (
-              <td key={i}>{x}</td>
+    <div className="grid-scroll">
+      <table className="grid-table" data-testid={testId} data-value={text}>
+        <caption className="sr-only">Texel values: rows from v = 1 (top) to v = 0 (bottom), columns from u = 0 to u = 1</caption>
+        <tbody>
+          {rows.map((r, k) => (
+            <tr key={k}>
+              <th scope="row">{fmt(1 - k / (n - 1), 3)}</th>
+              {r.map((x, i) => (
+                <td key={i}>{x}</td>
+              ))}
+            </tr>
+          ))}
+          <tr>
+            <th scope="row" className="axis-corner">
+              v ↑ u →
+            </th>
+            {rows[0]!.map((_, i) => (
+              <th key={i} scope="col">
+                {fmt(i / (n - 1), 3)}
+              </th>
             ))}
           </tr>
-        ))}
-        <tr>
-          <th scope="row" />
-          {rows[0]!.map((_, i) => (
-            <th key={i} scope="col">
-              u = {fmt(i / (n - 1), 3)}
-            </th>
-          ))}
-        </tr>
-      </tbody>
-    </table>
+        </tbody>
+      </table>
+    </div>
   );
 }
 

@@ -42,6 +42,7 @@ for (const q of QUESTIONS) {
   test(`${q.id}: right answers for several seeds are correct, and each verdict is announced`, async ({ page }) => {
     for (const seed of [3, 41, 1234]) {
       const v = await openVariant(page, q.id, seed);
+      for (const g of v.givens) await expect(page.getByTestId(`given-${g.name}`)).toHaveAttribute('data-value', g.value);
       const answers = allAnswers(v);
       await fillAndCheck(page, answers.map((a) => [a.name, studentText(a)]));
       for (const a of answers) await expect(page.getByTestId(`verdict-${a.name}`), `${q.id} seed ${seed} ${a.name}`).toHaveAttribute('data-value', 'correct');
