@@ -46,7 +46,7 @@ describe(`hemisphere warps, ${N.toExponential()} samples per iteration`, () => {
     sampleCosineHemisphereBatch(u, out, N);
   });
   bench('Phong n = 8, batched', () => {
-    samplePhongLobeBatch(u, out, N, 8);
+    samplePhongLobeBatch(u, 8, out, N);
   });
 });
 

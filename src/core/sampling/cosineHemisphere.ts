@@ -79,11 +79,11 @@ export function sampleCosineHemisphere(u1: number, u2: number, out: VecOut, o = 
 }
 
 /**
- * Density of {@link sampleCosineHemisphere} per unit solid angle: cos θ / π for cos θ ≥ 0, else 0
- * (NaN → 0). Domain: any cosTheta (the direction's z component).
+ * Density of {@link sampleCosineHemisphere} per unit solid angle at the unit direction (x, y, z):
+ * cos θ / π = z/π for z > 0, else 0 (NaN → 0). Only z (= cos θ) matters.
  */
-export function cosineHemispherePdf(cosTheta: number): number {
-  return cosTheta > 0 ? cosTheta * INV_PI : 0;
+export function cosineHemispherePdf(_x: number, _y: number, z: number): number {
+  return z > 0 ? z * INV_PI : 0;
 }
 
 /**
@@ -101,28 +101,6 @@ export function invertCosineHemisphereSample(x: number, y: number, _z?: number):
  * i ∈ [start, n). Caller-owned buffers, no allocation per sample.
  */
 export function sampleCosineHemisphereBatch(u: Float64Array, out: Float64Array, n: number, start = 0): Float64Array {
-  for (let i = start; i < n; i++) {
-    const ox = 2 * u[2 * i] - 1;
-    const oy = 2 * u[2 * i + 1] - 1;
-    let x = 0;
-    let y = 0;
-    if (ox !== 0 || oy !== 0) {
-      let r: number;
-      let theta: number;
-      if (Math.abs(ox) > Math.abs(oy)) {
-        r = ox;
-        theta = PI_OVER_4 * (oy / ox);
-      } else {
-        r = oy;
-        theta = PI_OVER_2 - PI_OVER_4 * (ox / oy);
-      }
-      x = r * Math.cos(theta);
-      y = r * Math.sin(theta);
-    }
-    const rr = Math.hypot(x, y);
-    out[3 * i] = x;
-    out[3 * i + 1] = y;
-    out[3 * i + 2] = Math.sqrt(Math.max(0, (1 - rr) * (1 + rr)));
-  }
+  for (let i = start; i < n; i++) sampleCosineHemisphere(u[2 * i], u[2 * i + 1], out, 3 * i);
   return out;
 }

@@ -67,17 +67,7 @@ export function sampleExamLobe(u1: number, u2: number, out: VecOut, o = 0): VecO
  * Measure: solid angle. This is the hot path the benchmark measures.
  */
 export function sampleExamLobeBatch(u: Float64Array, out: Float64Array, n: number, start = 0): Float64Array {
-  const c0 = EXAM_E2PI_M1;
-  for (let i = start; i < n; i++) {
-    const i2 = i << 1;
-    const i3 = i * 3;
-    const u1 = u[i2];
-    const s = Math.sqrt(u1);
-    let phi = Math.log1p(c0 * u[i2 + 1]);
-    if (phi >= TWO_PI) phi = TWO_PI_BELOW;
-    writeScaledCosSin(phi, s, out, i3); // one argument reduction for both (see sinCos.ts)
-    out[i3 + 2] = Math.sqrt(1 - u1);
-  }
+  for (let i = start; i < n; i++) sampleExamLobe(u[2 * i], u[2 * i + 1], out, 3 * i);
   return out;
 }
 

@@ -30,10 +30,10 @@ export function samplePhongLobe(u1: number, u2: number, exponent: number, out: V
 }
 
 /**
- * Density of {@link samplePhongLobe} per unit solid angle: (n+1)/(2π) cosⁿθ for cos θ ≥ 0,
- * 0 below the horizon and for NaN. Domain: cosTheta any number, exponent n ≥ 0.
+ * Density of {@link samplePhongLobe} per unit solid angle at the unit direction (x, y, z):
+ * (n+1)/(2π) cosⁿθ with cos θ = z for z ≥ 0, 0 below the horizon and for NaN. Exponent n ≥ 0.
  */
-export function phongLobePdf(cosTheta: number, exponent: number): number {
+export function phongLobePdf(_x: number, _y: number, cosTheta: number, exponent: number): number {
   if (!(cosTheta >= 0)) return 0;
   const n = exponent > 0 ? exponent : 0;
   return (n + 1) * INV_TWO_PI * Math.pow(cosTheta, n);
@@ -66,17 +66,11 @@ export function phongThetaCdf(theta: number, exponent: number): number {
   return -Math.expm1((n + 1) * Math.log(Math.cos(theta)));
 }
 
-/** Batched {@link samplePhongLobe}: reads u[2i], u[2i+1], writes out[3i..3i+2], i ∈ [start, n). */
-export function samplePhongLobeBatch(u: Float64Array, out: Float64Array, n: number, exponent: number, start = 0): Float64Array {
-  const inv = 1 / ((exponent > 0 ? exponent : 0) + 1);
-  for (let i = start; i < n; i++) {
-    const lc = Math.log(u[2 * i]) * inv;
-    const s = Math.sqrt(Math.max(0, -Math.expm1(2 * lc)));
-    let phi = TWO_PI * u[2 * i + 1];
-    if (phi >= TWO_PI) phi = TWO_PI_BELOW;
-    out[3 * i] = s * Math.cos(phi);
-    out[3 * i + 1] = s * Math.sin(phi);
-    out[3 * i + 2] = Math.exp(lc);
-  }
+/**
+ * Batched {@link samplePhongLobe}: reads u[2i], u[2i+1], writes out[3i..3i+2], i ∈ [start, n).
+ * Same order as the scalar sampler: inputs, the exponent, then the output.
+ */
+export function samplePhongLobeBatch(u: Float64Array, exponent: number, out: Float64Array, n: number, start = 0): Float64Array {
+  for (let i = start; i < n; i++) samplePhongLobe(u[2 * i], u[2 * i + 1], exponent, out, 3 * i);
   return out;
 }

@@ -36,10 +36,10 @@ export function sampleUniformHemisphere(u1: number, u2: number, out: VecOut, o =
 }
 
 /**
- * Density of {@link sampleUniformHemisphere} per unit solid angle: 1/(2π) for z ≥ 0, 0 otherwise
- * (and 0 for NaN). Domain: any z (the direction's cos θ).
+ * Density of {@link sampleUniformHemisphere} per unit solid angle at the unit direction (x, y, z):
+ * 1/(2π) for z ≥ 0, 0 otherwise (and 0 for NaN). Only z (= cos θ) matters.
  */
-export function uniformHemispherePdf(z: number): number {
+export function uniformHemispherePdf(_x: number, _y: number, z: number): number {
   return z >= 0 ? INV_TWO_PI : 0;
 }
 
@@ -56,14 +56,6 @@ export function invertUniformHemisphereSample(x: number, y: number, z: number): 
  * i ∈ [start, end). Caller-owned buffers, no allocation.
  */
 export function sampleUniformHemisphereBatch(u: Float64Array, out: Float64Array, n: number, start = 0): Float64Array {
-  for (let i = start; i < n; i++) {
-    const z = u[2 * i];
-    const r = Math.sqrt(Math.max(0, (1 - z) * (1 + z)));
-    let phi = TWO_PI * u[2 * i + 1];
-    if (phi >= TWO_PI) phi = TWO_PI_BELOW;
-    out[3 * i] = r * Math.cos(phi);
-    out[3 * i + 1] = r * Math.sin(phi);
-    out[3 * i + 2] = z;
-  }
+  for (let i = start; i < n; i++) sampleUniformHemisphere(u[2 * i], u[2 * i + 1], out, 3 * i);
   return out;
 }

@@ -69,71 +69,53 @@ export function lobeFromParams(id: LobeId, exponent: number, density?: Integrand
   return { lobe: tab.ok ? makeLobe('custom', exponent, tab.lobe) : null, tab };
 }
 
+/** A built-in lobe for the exponent n (only Phong reads it): every column is a core function. */
+type LobeRow = (n: number) => Omit<Lobe, 'id'>;
+
+/**
+ * The built-in lobes as a table. Every sampler takes (u1, u2, …params, out, o) and every pdf the
+ * direction (x, y, z), so the rows name core functions directly; only Phong binds its exponent.
+ */
+const LOBES: { readonly [K in Exclude<LobeId, 'custom'>]: LobeRow } = {
+  exam: () => ({
+    label: 'k cos θ e^φ', k: examLobeK(), separable: true,
+    sampleBatch: sampleExamLobeBatch, sample: sampleExamLobe, pdf: examLobePdf,
+    thetaPdf: examThetaPdf, phiPdf: examPhiPdf,
+  }),
+  uniform: () => ({
+    label: 'uniform 1/(2π)', k: 1 / TWO_PI, separable: true,
+    sampleBatch: sampleUniformHemisphereBatch, sample: sampleUniformHemisphere, pdf: uniformHemispherePdf,
+    thetaPdf: (t) => phongThetaPdf(t, 0), phiPdf: uniformPhiPdf,
+  }),
+  cosine: () => ({
+    label: 'cos θ / π', k: 1 / Math.PI, separable: true,
+    sampleBatch: sampleCosineHemisphereBatch, sample: sampleCosineHemisphere, pdf: cosineHemispherePdf,
+    thetaPdf: (t) => phongThetaPdf(t, 1), phiPdf: uniformPhiPdf,
+  }),
+  phong: (n) => ({
+    label: `(n+1)/(2π) cos^${n} θ`, k: (n + 1) / TWO_PI, separable: true,
+    sampleBatch: (u, out, count, start) => samplePhongLobeBatch(u, n, out, count, start),
+    sample: (a, b, out, o) => samplePhongLobe(a, b, n, out, o),
+    pdf: (x, y, z) => phongLobePdf(x, y, z, n),
+    thetaPdf: (t) => phongThetaPdf(t, n), phiPdf: uniformPhiPdf,
+  }),
+};
+
 /** The lobe of the given id. `exponent` is used by Phong; `custom` needs its tabulated density. */
 export function makeLobe(id: LobeId, exponent: number, custom?: TabulatedHemisphere | null): Lobe | null {
-  switch (id) {
-    case 'exam':
-      return {
-        id,
-        label: 'k cos θ e^φ',
-        k: examLobeK(),
-        sampleBatch: (u, out, n, start) => void sampleExamLobeBatch(u, out, n, start),
-        sample: (a, b, out, o) => void sampleExamLobe(a, b, out, o),
-        pdf: examLobePdf,
-        thetaPdf: examThetaPdf,
-        phiPdf: examPhiPdf,
-        separable: true,
-      };
-    case 'uniform':
-      return {
-        id,
-        label: 'uniform 1/(2π)',
-        k: 1 / TWO_PI,
-        sampleBatch: (u, out, n, start) => void sampleUniformHemisphereBatch(u, out, n, start),
-        sample: (a, b, out, o) => void sampleUniformHemisphere(a, b, out, o),
-        pdf: (_x, _y, z) => uniformHemispherePdf(z),
-        thetaPdf: (t) => phongThetaPdf(t, 0),
-        phiPdf: uniformPhiPdf,
-        separable: true,
-      };
-    case 'cosine':
-      return {
-        id,
-        label: 'cos θ / π',
-        k: 1 / Math.PI,
-        sampleBatch: (u, out, n, start) => void sampleCosineHemisphereBatch(u, out, n, start),
-        sample: (a, b, out, o) => void sampleCosineHemisphere(a, b, out, o),
-        pdf: (_x, _y, z) => cosineHemispherePdf(z),
-        thetaPdf: (t) => phongThetaPdf(t, 1),
-        phiPdf: uniformPhiPdf,
-        separable: true,
-      };
-    case 'phong':
-      return {
-        id,
-        label: `(n+1)/(2π) cos^${exponent} θ`,
-        k: (exponent + 1) / TWO_PI,
-        sampleBatch: (u, out, n, start) => void samplePhongLobeBatch(u, out, n, exponent, start),
-        sample: (a, b, out, o) => void samplePhongLobe(a, b, exponent, out, o),
-        pdf: (_x, _y, z) => phongLobePdf(z, exponent),
-        thetaPdf: (t) => phongThetaPdf(t, exponent),
-        phiPdf: uniformPhiPdf,
-        separable: true,
-      };
-    case 'custom':
-      if (!custom) return null;
-      return {
-        id,
-        label: 'typed p(θ, φ), tabulated',
-        k: custom.k,
-        sampleBatch: (u, out, n, start) => void custom.sampleBatch(u, out, n, start),
-        sample: (a, b, out, o) => void custom.sample(a, b, out, o),
-        pdf: (x, y, z) => custom.pdf(x, y, z),
-        thetaPdf: (t) => custom.thetaPdf(t),
-        phiPdf: (p) => custom.phiPdf(p),
-        separable: false,
-      };
-  }
+  if (id !== 'custom') return { id, ...LOBES[id](exponent) };
+  if (!custom) return null;
+  return {
+    id,
+    label: 'typed p(θ, φ), tabulated',
+    k: custom.k,
+    sampleBatch: (u, out, n, start) => custom.sampleBatch(u, out, n, start),
+    sample: (a, b, out, o) => custom.sample(a, b, out, o),
+    pdf: (x, y, z) => custom.pdf(x, y, z),
+    thetaPdf: (t) => custom.thetaPdf(t),
+    phiPdf: (p) => custom.phiPdf(p),
+    separable: false,
+  };
 }
 
 function uniformPhiPdf(phi: number): number {
