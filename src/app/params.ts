@@ -2,6 +2,7 @@
  * URL parameter schemas: each scene declares its parameters; the shell parses, validates and clamps
  * them and reports every parameter it could not use (by name) in a role="status" notice.
  */
+import { fail, type Failure } from '../core/failure';
 
 export type ParamSpec =
   | { kind: 'number'; default: number; min?: number; max?: number; integer?: boolean; label?: string }
@@ -102,14 +103,15 @@ function short(raw: string): string {
   return JSON.stringify(s);
 }
 
-type Parsed = { ok: true; value: unknown; problem?: string } | { ok: false; problem: string };
+/** One parameter's reading: the value (with a note when it was adjusted), or the one failure shape. */
+type Parsed = { ok: true; value: unknown; problem?: string } | Failure<'invalid'>;
 
 function parseOne(spec: ParamSpec, raw: string): Parsed {
-  if (raw.length > MAX_RAW_LENGTH) return { ok: false, problem: `is too long (${raw.length} characters)` };
+  if (raw.length > MAX_RAW_LENGTH) return fail('invalid', `is too long (${raw.length} characters)`);
   switch (spec.kind) {
     case 'number': {
       const x = parseNumber(raw);
-      if (x === null) return { ok: false, problem: `${short(raw)} is not a finite number` };
+      if (x === null) return fail('invalid', `${short(raw)} is not a finite number`);
       let v = spec.integer ? Math.round(x) : x;
       const c = clamp(v, spec.min, spec.max);
       if (c !== v) return { ok: true, value: c, problem: `${short(raw)} is outside ${rangeText(spec.min, spec.max)}; using ${fmt(c)}` };
@@ -122,24 +124,24 @@ function parseOne(spec: ParamSpec, raw: string): Parsed {
       // own keys only: 'toString', '__proto__', 'constructor' … are not aliases
       const canonical = spec.values.includes(s) ? s : spec.aliases && Object.hasOwn(spec.aliases, s) ? spec.aliases[s] : undefined;
       if (canonical === undefined) {
-        return { ok: false, problem: `${short(raw)} is not one of ${spec.values.join(', ')}` };
+        return fail('invalid', `${short(raw)} is not one of ${spec.values.join(', ')}`);
       }
       return { ok: true, value: canonical };
     }
     case 'string': {
       const max = spec.maxLength ?? 400;
-      if (raw.length > max) return { ok: false, problem: `is longer than ${max} characters` };
+      if (raw.length > max) return fail('invalid', `is longer than ${max} characters`);
       return { ok: true, value: raw };
     }
     case 'bool': {
       const s = raw.trim().toLowerCase();
       if (s === '1' || s === 'true' || s === 'yes' || s === 'on') return { ok: true, value: true };
       if (s === '0' || s === 'false' || s === 'no' || s === 'off') return { ok: true, value: false };
-      return { ok: false, problem: `${short(raw)} is not 0 or 1` };
+      return fail('invalid', `${short(raw)} is not 0 or 1`);
     }
     case 'vec3': {
       const xs = parseNumberList(raw);
-      if (xs === null || xs.length !== 3) return { ok: false, problem: `${short(raw)} is not three numbers x,y,z` };
+      if (xs === null || xs.length !== 3) return fail('invalid', `${short(raw)} is not three numbers x,y,z`);
       const c = xs.map((x) => clamp(x, spec.min, spec.max)) as [number, number, number];
       if (c.some((x, i) => x !== xs[i])) {
         return { ok: true, value: c, problem: `has a component outside ${rangeText(spec.min, spec.max)}; using ${c.join(',')}` };
@@ -149,11 +151,11 @@ function parseOne(spec: ParamSpec, raw: string): Parsed {
     case 'list': {
       if (raw.trim() === '') return { ok: true, value: spec.default === null ? null : [...spec.default] };
       const count = raw.split(',').length;
-      if (count > spec.maxItems) return { ok: false, problem: `has ${count} items; at most ${spec.maxItems} are allowed` };
+      if (count > spec.maxItems) return fail('invalid', `has ${count} items; at most ${spec.maxItems} are allowed`);
       const xs = parseNumberList(raw);
-      if (xs === null) return { ok: false, problem: `${short(raw)} is not a comma-separated list of numbers` };
+      if (xs === null) return fail('invalid', `${short(raw)} is not a comma-separated list of numbers`);
       if (spec.minItems !== undefined && xs.length < spec.minItems) {
-        return { ok: false, problem: `needs at least ${spec.minItems} numbers` };
+        return fail('invalid', `needs at least ${spec.minItems} numbers`);
       }
       const c = xs.map((x) => clamp(x, spec.min, spec.max));
       if (c.some((x, i) => x !== xs[i])) {
@@ -216,7 +218,7 @@ export function parseParams<S extends ParamSchema>(schema: S, query: string | UR
         problems.push({ name, message: 'contains "+", read as a plus sign (not as a space, as web forms would); write %2B for a plus to be unambiguous' });
       }
     } else {
-      problems.push({ name, message: `${r.problem}; using the default ${describeDefault(spec)}` });
+      problems.push({ name, message: `${r.message}; using the default ${describeDefault(spec)}` });
     }
   }
   if (unknownCount > 5) problems.push({ name: '(others)', message: `${unknownCount - 5} more unknown parameters ignored` });

@@ -76,7 +76,7 @@ export function q3Variant(seed: number): Variant {
   // weights swapped: (u − u0) on the left texel, (v − v0) on the lower row
   const swapped = st.fv * (st.fu * st.t00 + (1 - st.fu) * st.t10) + (1 - st.fv) * (st.fu * st.t01 + (1 - st.fu) * st.t11);
   const sp = sphericalUV(x, y, z);
-  if (!sp.ok) throw new Error(sp.error); // unreachable: the point is never the origin
+  if (!sp.ok) throw new Error(sp.message); // unreachable: the point is never the origin
   const sBil = bilinear(grid, sp.u, sp.v, EXAM_LOOKUP);
   const sBilF = bilinear(grid, sp.u, sp.v, FLIP);
   const sBilRaw = bilinear(grid, sp.phi, sp.theta, EXAM_LOOKUP);

@@ -12,7 +12,7 @@ import { q4Params, q4Variant } from '../../src/practice/q4';
 import { q5Params, q5Variant } from '../../src/practice/q5';
 import { q6Params, q6Variant } from '../../src/practice/q6';
 import { allAnswers, type NumberAnswer, type FormulaAnswer, type Variant } from '../../src/practice/model';
-import { integrate1D } from '../../src/core/estimators';
+import { integrate1D } from '../../src/core/verify';
 import { examLobeK, examPhiCdf, examPhiPdf, examThetaCdf, examThetaPdf } from '../../src/core/sampling';
 import { formatGrid } from '../../src/core/texture';
 

@@ -3,5 +3,4 @@ export * from './estimate';
 export * from './convergence';
 export * from './rmse';
 export * from './slope';
-export * from './integrate1d';
 export * from './run1d';

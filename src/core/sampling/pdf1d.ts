@@ -11,7 +11,7 @@
  * (the inversion method); pbrt-v4 §A.4.1 for tabulated piecewise-constant distributions.
  */
 import type { Failure } from '../failure';
-import { integrate1D } from '../estimators/integrate1d';
+import { integrate1D } from '../verify/integrate1d';
 import { gaussLegendre } from '../verify/quadrature';
 import { PiecewiseConstant1D } from './piecewise1D';
 

@@ -8,6 +8,7 @@
  * - The text form lists rows **top to bottom** (v = 1 first), the way the exam prints the grid and
  *   the way a person reads it: rows separated by `;`, values by `,`.
  */
+import { fail, type Failure } from '../failure';
 import { Rng } from '../random';
 
 /** A width × height grid of finite values; see the module comment for the layout. */
@@ -65,7 +66,7 @@ export function formatGrid(grid: TextureGrid): string {
 const NUMBER_RE = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
 
 /** Result of {@link parseGrid}: the grid, or a message naming the first problem. */
-export type ParseGridResult = { ok: true; grid: TextureGrid } | { ok: false; error: string };
+export type ParseGridResult = { ok: true; grid: TextureGrid } | Failure<'empty' | 'size' | 'ragged' | 'cell'>;
 
 /**
  * Parse the text form (rows top to bottom, `;` between rows, `,` between values; whitespace
@@ -77,13 +78,10 @@ export type ParseGridResult = { ok: true; grid: TextureGrid } | { ok: false; err
 export function parseGrid(text: string): ParseGridResult {
   let t = text.trim();
   if (t.endsWith(';')) t = t.slice(0, -1);
-  if (t.length === 0) return { ok: false, error: 'The grid is empty.' };
+  if (t.length === 0) return fail('empty', 'The grid is empty.');
   const rowTexts = t.split(';');
   if (rowTexts.length < MIN_GRID_SIZE || rowTexts.length > MAX_GRID_SIZE) {
-    return {
-      ok: false,
-      error: `The grid has ${rowTexts.length} row${rowTexts.length === 1 ? '' : 's'}; it needs ${MIN_GRID_SIZE} to ${MAX_GRID_SIZE}.`,
-    };
+    return fail('size', `The grid has ${rowTexts.length} row${rowTexts.length === 1 ? '' : 's'}; it needs ${MIN_GRID_SIZE} to ${MAX_GRID_SIZE}.`);
   }
   const rows: number[][] = [];
   let width = -1;
@@ -92,29 +90,20 @@ export function parseGrid(text: string): ParseGridResult {
     if (width < 0) {
       width = cells.length;
       if (width < MIN_GRID_SIZE || width > MAX_GRID_SIZE) {
-        return {
-          ok: false,
-          error: `Row 1 has ${width} value${width === 1 ? '' : 's'}; rows need ${MIN_GRID_SIZE} to ${MAX_GRID_SIZE}.`,
-        };
+        return fail('size', `Row 1 has ${width} value${width === 1 ? '' : 's'}; rows need ${MIN_GRID_SIZE} to ${MAX_GRID_SIZE}.`);
       }
     } else if (cells.length !== width) {
-      return {
-        ok: false,
-        error: `The grid is ragged: row ${r + 1} has ${cells.length} value${cells.length === 1 ? '' : 's'}, row 1 has ${width}.`,
-      };
+      return fail('ragged', `The grid is ragged: row ${r + 1} has ${cells.length} value${cells.length === 1 ? '' : 's'}, row 1 has ${width}.`);
     }
     const row: number[] = [];
     for (let c = 0; c < cells.length; c++) {
       const s = cells[c].trim();
       if (!NUMBER_RE.test(s)) {
         const shown = s.length > 12 ? `${s.slice(0, 12)}…` : s;
-        return {
-          ok: false,
-          error: s === '' ? `Row ${r + 1}, column ${c + 1} is empty.` : `Row ${r + 1}, column ${c + 1} is not a number: "${shown}".`,
-        };
+        return fail('cell', s === '' ? `Row ${r + 1}, column ${c + 1} is empty.` : `Row ${r + 1}, column ${c + 1} is not a number: "${shown}".`);
       }
       const x = Number(s);
-      if (!Number.isFinite(x)) return { ok: false, error: `Row ${r + 1}, column ${c + 1} is too large: "${s.slice(0, 12)}".` };
+      if (!Number.isFinite(x)) return fail('cell', `Row ${r + 1}, column ${c + 1} is too large: "${s.slice(0, 12)}".`);
       row.push(x);
     }
     rows.push(row);

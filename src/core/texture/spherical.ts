@@ -21,6 +21,7 @@
  * "add 2π to negative φ" rule and clamped arccos); Ray Tracing Gems ch. 6 on precision.
  */
 import { TWO_PI } from '../sampling/sphericalCoords';
+import { fail, type Failure } from '../failure';
 
 /** The result of {@link sphericalUV}: both the angles (the "forgot to normalize" variant) and (u, v). */
 export type SphericalUV =
@@ -39,7 +40,7 @@ export type SphericalUV =
       /** True when x = y = 0 (a pole), where u is defined as 0. */
       pole: boolean;
     }
-  | { ok: false; error: string };
+  | Failure<'nonfinite' | 'origin'>;
 
 
 /**
@@ -48,11 +49,11 @@ export type SphericalUV =
  */
 export function sphericalUV(x: number, y: number, z: number): SphericalUV {
   if (!Number.isFinite(x) || !Number.isFinite(y) || !Number.isFinite(z)) {
-    return { ok: false, error: 'The sphere point has a coordinate that is not a finite number.' };
+    return fail('nonfinite', 'The sphere point has a coordinate that is not a finite number.');
   }
   const r = Math.hypot(x, y, z);
   if (r === 0) {
-    return { ok: false, error: 'The point (0, 0, 0) is the sphere’s centre: it has no direction, so no (u, v).' };
+    return fail('origin', 'The point (0, 0, 0) is the sphere’s centre: it has no direction, so no (u, v).');
   }
   const rho = Math.hypot(x, y);
   const pole = x === 0 && y === 0;

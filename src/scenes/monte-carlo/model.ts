@@ -5,11 +5,10 @@
 import {
   estimate1D,
   importanceEstimate,
-  integrate1D,
   uniformEstimate,
-  INTEGRATION_METHOD,
   type McEstimate,
 } from '../../core/estimators';
+import { integrate1D, INTEGRATION_METHOD } from '../../core/verify/integrate1d';
 import {
   customPdf1D,
   linearPdf1D,
@@ -70,7 +69,7 @@ export interface Exact {
 
 /**
  * ∫ₐᵇ f dx: closed form ((b + c)³ − (a + c)³)/3 when f is (x + c)², else adaptive Gauss–Kronrod
- * to full precision (core/estimators/integrate1d).
+ * to full precision (core/verify/integrate1d).
  */
 export function exactIntegral(fSrc: string, f: Fn1, a: number, b: number): Exact {
   const c = squareShift(fSrc);

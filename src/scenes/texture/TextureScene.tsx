@@ -244,7 +244,7 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
       <SphereView grid={grid} opts={opts} range={range} normalize={params.normalize} dir={dir} onPick={onPick} height={mode.present ? 420 : 320} />
       {!sphere.ok ? (
         <Notice kind="warn" testId="sphere-error">
-          <strong>x, y, z</strong>: {sphere.error} The sphere readouts show “none” until you pick another point.
+          <strong>x, y, z</strong>: {sphere.message} The sphere readouts show “none” until you pick another point.
         </Notice>
       ) : null}
       <div className="readouts">
@@ -366,7 +366,7 @@ function GridText({ text, onApply }: { text: string; onApply: (t: string) => voi
     const t = draft.trim();
     const r = parseGrid(t);
     if (!r.ok) {
-      setError(r.error);
+      setError(r.message);
       return;
     }
     if (t.length > GRID_TEXT_MAX) {

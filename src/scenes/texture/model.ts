@@ -24,6 +24,7 @@ import {
   type TextureGrid,
   type WrapMode,
 } from '../../core/texture';
+import type { Failure } from '../../core/failure';
 import type { ParamValues } from '../../app/params';
 import { colorInto, normalizeValue } from './colormap';
 import { GRID_TEXT_MAX, type Preset, type TextureSchema } from './params';
@@ -51,7 +52,7 @@ export function resolveGrid(p: Pick<TextureParams, 'grid' | 'preset' | 'size' | 
     const r = parseGrid(p.grid);
     if (r.ok) grid = r.grid;
     else {
-      error = r.error;
+      error = r.message;
       grid = examGrid();
     }
   }
@@ -105,7 +106,7 @@ export function drawnLookup(grid: TextureGrid, u: number, v: number, opts: Looku
 
 /** The sphere part: (x, y, z) → (φ, θ) → (u, v), looked up normalized and not. */
 export type SphereModel =
-  | { ok: false; error: string }
+  | Failure
   | {
       ok: true;
       r: number;
@@ -122,7 +123,7 @@ export type SphereModel =
 
 export function sphereModel(grid: TextureGrid, p: Pick<TextureParams, 'x' | 'y' | 'z' | 'normalize'>, opts: LookupOptions): SphereModel {
   const s = sphericalUV(p.x, p.y, p.z);
-  if (!s.ok) return { ok: false, error: s.error };
+  if (!s.ok) return s;
   const normalized = lookupAt(grid, s.u, s.v, opts);
   const raw = lookupAt(grid, s.phi, s.theta, opts);
   return { ok: true, r: s.r, phi: s.phi, theta: s.theta, pole: s.pole, normalized, raw, chosen: p.normalize ? normalized : raw };

@@ -19,7 +19,7 @@ import {
   proportionalPdf1D,
   type Pdf1D,
 } from '../../../src/core/sampling/pdf1d';
-import { integrate1D } from '../../../src/core/estimators/integrate1d';
+import { integrate1D } from '../../../src/core/verify/integrate1d';
 import { chi2Test } from '../../../src/core/verify/chi2';
 import { Rng } from '../../../src/core/random';
 

@@ -72,7 +72,7 @@ describe('parseGrid', () => {
     for (const [text, re] of bad) {
       const p = parseGrid(text);
       expect(p.ok, text.slice(0, 20)).toBe(false);
-      if (!p.ok) expect(p.error).toMatch(re);
+      if (!p.ok) expect(p.message).toMatch(re);
     }
   });
 

@@ -27,7 +27,7 @@ describe('sphericalUV', () => {
     ];
     for (const [x, y, u] of cases) {
       const p = sphericalUV(x, y, 0);
-      if (!p.ok) throw new Error(p.error);
+      if (!p.ok) throw new Error(p.message);
       expect(p.u).toBeCloseTo(u, 15);
       expect(p.v).toBeCloseTo(0.5, 15);
     }
@@ -66,7 +66,7 @@ describe('sphericalUV', () => {
   it('keeps full precision near the poles (where arccos(z/r) would lose the angle)', () => {
     const e = 1e-10;
     const p = sphericalUV(e, 0, 1);
-    if (!p.ok) throw new Error(p.error);
+    if (!p.ok) throw new Error(p.message);
     expect(p.theta / e).toBeCloseTo(1, 12); // θ ≈ atan(e) = e − e³/3
     // the naive arccos(z/r) rounds z/r to 1 and returns 0 here
     expect(Math.acos(1 / Math.hypot(e, 0, 1))).toBe(0);
@@ -76,10 +76,10 @@ describe('sphericalUV', () => {
   it('rejects the origin and non-finite points with a clear message', () => {
     const o = sphericalUV(0, 0, 0);
     expect(o.ok).toBe(false);
-    if (!o.ok) expect(o.error).toMatch(/centre/);
+    if (!o.ok) expect(o.message).toMatch(/centre/);
     const n = sphericalUV(NaN, 1, 1);
     expect(n.ok).toBe(false);
-    if (!n.ok) expect(n.error).toMatch(/finite/);
+    if (!n.ok) expect(n.message).toMatch(/finite/);
     expect(sphericalUV(Infinity, 0, 0).ok).toBe(false);
   });
 

@@ -51,7 +51,7 @@ export interface HemisphereViewProps {
   kind: SequenceKind;
   seed: number;
   n: number;
-  /** Frame-time probe for tests and the report: last frame durations (ms). */
+  /** Height of the 3D viewport in CSS pixels (default 380; the scene passes a larger one in present mode). */
   height?: number;
 }
 

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { create, all } from 'mathjs';
-import { INTEGRATION_METHOD, integrate1D } from '../../../src/core/estimators/integrate1d';
+import { INTEGRATION_METHOD, integrate1D } from '../../../src/core/verify/integrate1d';
 
 const M = create(all, { number: 'BigNumber', precision: 50 });
 const big = (expr: string) => M.number(M.evaluate(expr) as never) as number;
