@@ -6,7 +6,7 @@
  * the poles). All figures come from ./model (pure, over the core); what is on screen at animation
  * position t is model.frameAt(grid, conventions, path, t).
  */
-import { useCallback, useDeferredValue, useMemo, useRef, useState } from 'react';
+import { useCallback, useDeferredValue, useEffect, useMemo, useRef, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
 import { EXAM_GRID_TEXT, examGrid, gridRange, gridToRows, parseGrid, texel } from '../../core/texture';
 import {
@@ -16,7 +16,6 @@ import {
   ExploreFurther,
   KeyNote,
   LiveAnswer,
-  MathTex,
   Notice,
   NumberField,
   Panel,
@@ -49,7 +48,7 @@ import {
 } from './model';
 import { GRID_TEXT_MAX, type PathKind, type Preset, type TextureSchema } from './params';
 import { GridView, StencilDetail, drawnLookup, fmtShort, type Grab } from './view/GridView';
-import { BilinearWorked, NearestWorked, bilinearTex, sphereTex } from './view/WorkedSteps';
+import { BilinearWorked, NearestWorked, WideMath, bilinearTex, sphereTex } from './view/WorkedSteps';
 import { PathPlot } from './view/PathPlot';
 import { Reconstruction } from './view/Reconstruction';
 import { SphereView } from './view/SphereView';
@@ -71,6 +70,11 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
   const [selected, setSelected] = useState<{ i: number; j: number } | null>(null);
   const [editError, setEditError] = useState<string | null>(null);
   const figRef = useRef<HTMLDivElement>(null);
+  // Enter on the grid while editing: focus the value field once it is rendered
+  const [focusCell, setFocusCell] = useState(0);
+  useEffect(() => {
+    if (focusCell) document.querySelector<HTMLInputElement>('[data-testid=cell-field]')?.focus();
+  }, [focusCell]);
 
   const au = drag?.grab === 'a' ? drag.u : params.u;
   const av = drag?.grab === 'a' ? drag.v : params.v;
@@ -257,13 +261,21 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
   );
 
   const figure = (
-    <Panel title="The texel grid and the query’s path" className="tx-figure">
+    <Panel className="tx-figure">
       {src.error ? (
         <Notice kind="warn" testId="grid-error">
           <strong>grid</strong>: {src.error} Using the exam’s 5 × 5 grid instead.
         </Notice>
       ) : null}
       <div className="tx-figure-cols" ref={figRef}>
+        <div className="exam-asks tx-gives">
+          <span className="exam-asks-label">The exam gives</span>
+          <p>
+            A 5 × 5 texture with values at the nodes (u, v) = (i/4, j/4), v upward. (a), (b): look it up at (u, v) = (0.4, 0.24); (c): at a point on a
+            sphere.
+          </p>
+          <ExamGridTable />
+        </div>
         <div className="tx-figure-main">
           <GridView
             grid={grid}
@@ -275,7 +287,7 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
             editing={editing}
             selected={selected}
             onSelect={(i, j) => setSelected({ i, j })}
-            onEditEnter={() => document.getElementById('tx-cell-field')?.querySelector('input')?.focus()}
+            onEditEnter={() => setFocusCell((k) => k + 1)}
             present={mode.present}
           />
           <Legend range={range} />
@@ -301,7 +313,7 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
               ))}
             </Notice>
           ) : null}
-          <div className="tx-edit" id="tx-cell-field">
+          <div className="tx-edit">
             <Toggle
               label="Edit cells (click a node, or arrow keys on the grid, then Enter)"
               checked={editing}
@@ -346,21 +358,7 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
       <ExamQuestion
         n={3}
         title="Texture lookup"
-        intro={
-          <div className="tx-intro">
-            <div className="exam-asks tx-gives">
-              <div>
-                <span className="exam-asks-label">The exam gives</span>
-                <p>
-                  A 5 × 5 texture with its values at the nodes (u, v) = (i/4, j/4), i, j = 0…4, v growing upward (printed with v = 1 on top). Parts (a) and
-                  (b) look it up at (u, v) = (0.4, 0.24); part (c) at a point of a sphere.
-                </p>
-              </div>
-              <ExamGridTable />
-            </div>
-            {figure}
-          </div>
-        }
+        intro={figure}
       >
         <ExamPart id="3a" title="Nearest neighbour" asks={<>What value does nearest-neighbour lookup return at (u, v) = (0.4, 0.24)?</>}>
           {notExam}
@@ -441,12 +439,12 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
                 finds the right quadrant when x ≤ 0 (negative angles get + 2π, so u ∈ [0, 2π)). Then normalize by the ranges (2π, π) of the two angles to
                 land in [0, 1]:
               </p>
-              <MathTex
-                display
+              <WideMath
+                label="Spherical coordinates, step by step"
                 tex={`\\begin{aligned}${sphereTex({ x: params.x, y: params.y, z: params.z, r: sphere.r, phi: sphere.phi, theta: sphere.theta, pole: sphere.pole, u: sphere.normalized.u, v: sphere.normalized.v })}\\end{aligned}`}
               />
               <p className="tx-small">Bilinear at the normalized (u, v), in the key’s form (each step divided by the cell size):</p>
-              <MathTex display tex={`\\begin{aligned}${bilinearTex(sphere.normalized, opts)}\\end{aligned}`} />
+              <WideMath label="Bilinear steps at the sphere point" tex={`\\begin{aligned}${bilinearTex(sphere.normalized, opts)}\\end{aligned}`} />
               {sphere.normalized.bil.fv === 0 || sphere.normalized.bil.fu === 0 ? (
                 <p className="tx-small">
                   The point lies on a node line ({sphere.normalized.bil.fv === 0 ? 'v = v₀' : 'u = u₀'}), so one of the two rows gets weight 0: that is the key’s
@@ -545,7 +543,7 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
           {sphere.ok ? (
             <details className="tx-details">
               <summary>Bilinear steps for the sphere point ({params.normalize ? 'normalized' : 'not normalized'})</summary>
-              <MathTex display tex={`\\begin{aligned}${bilinearTex(sphere.chosen, opts)}\\end{aligned}`} />
+              <WideMath label="Bilinear steps at the sphere point" tex={`\\begin{aligned}${bilinearTex(sphere.chosen, opts)}\\end{aligned}`} />
             </details>
           ) : null}
         </Panel>
@@ -568,21 +566,21 @@ function ExamGridTable() {
   const rows = gridToRows(examGrid());
   const n = rows.length;
   return (
-    <table className="tx-exam-grid" data-testid="exam-grid">
+    <table className="tx-exam-grid" data-testid="exam-grid" aria-label="The exam’s texture: rows from v = 1 (top) to v = 0, columns u = 0 to 1">
       <tbody>
         {rows.map((row, k) => (
           <tr key={k}>
-            <th scope="row">v = {((n - 1 - k) / (n - 1)).toFixed(2)}</th>
+            <th scope="row">{(n - 1 - k) / (n - 1)}</th>
             {row.map((x, i) => (
               <td key={i}>{x}</td>
             ))}
           </tr>
         ))}
         <tr>
-          <th scope="row" />
+          <th scope="row">v↑ u→</th>
           {rows[0].map((_, i) => (
             <th key={i} scope="col">
-              u = {(i / (rows[0].length - 1)).toFixed(2)}
+              {i / (rows[0].length - 1)}
             </th>
           ))}
         </tr>

@@ -59,6 +59,19 @@ export function bilinearTex(q: Lookup, opts: LookupOptions, uName = 'u', vName =
   ].join(' \\\\[4pt] ');
 }
 
+/**
+ * Display math that may be wider than its column (phones, classroom type): the box scrolls
+ * sideways and, being scrollable, is focusable (keyboard users can scroll it; axe
+ * scrollable-region-focusable).
+ */
+export function WideMath({ tex, label }: { tex: string; label: string }) {
+  return (
+    <div className="tx-math" tabIndex={0} role="group" aria-label={label}>
+      <MathTex display tex={tex} />
+    </div>
+  );
+}
+
 /** The nearest-neighbour steps (Q3a) for the current query. */
 export const NearestWorked = memo(function NearestWorked({ grid, opts, q }: { grid: TextureGrid; opts: LookupOptions; q: Lookup }) {
   return (
@@ -67,7 +80,7 @@ export const NearestWorked = memo(function NearestWorked({ grid, opts, q }: { gr
         The nodes sit at u = i/(N − 1), v = j/(N − 1) (corner nodes, the exam’s) or at the texel centres (i + ½)/N; nearest-neighbour lookup takes the value
         of the node closest to the query{opts.align === 'center' ? ' (the texel whose square holds it)' : ''}, without blending.
       </p>
-      <MathTex display tex={`\\begin{aligned}${nearestTex(grid, q, opts)}\\end{aligned}`} />
+      <WideMath label="Nearest-neighbour steps" tex={`\\begin{aligned}${nearestTex(grid, q, opts)}\\end{aligned}`} />
     </div>
   );
 });
@@ -82,7 +95,7 @@ export const BilinearWorked = memo(function BilinearWorked({ opts, q }: { opts: 
         {texNum(b.du)}, Δv = {texNum(b.dv)}. Interpolate along u on the upper row (c_u) and on the lower row (c_l), then along v between them; each step
         divides by the cell size.
       </p>
-      <MathTex display tex={`\\begin{aligned}${bilinearTex(q, opts)}\\end{aligned}`} />
+      <WideMath label="Bilinear steps" tex={`\\begin{aligned}${bilinearTex(q, opts)}\\end{aligned}`} />
       <p className="tx-small">
         The same as the weighted sum of the four nodes, each weighted by the area of the sub-rectangle opposite to it: w₀₀ = {texNum(b.w00, 4)}, w₁₀ ={' '}
         {texNum(b.w10, 4)}, w₀₁ = {texNum(b.w01, 4)}, w₁₁ = {texNum(b.w11, 4)} (sum 1).
@@ -97,7 +110,8 @@ export function sphereTex(p: { x: number; y: number; z: number; r: number; phi: 
     `\\frac{y}{x} &= \\frac{r \\sin u \\sin v}{r \\cos u \\sin v} = \\tan u`,
     `u &= \\operatorname{atan2}(y, x) = \\operatorname{atan2}(${texNum(p.y)},\\ ${texNum(p.x)}) = ${texNum(p.phi)}${p.pole ? '\\quad(\\text{a pole: defined as } 0)' : ''}`,
     `r &= \\sqrt{x^2 + y^2 + z^2} = ${texNum(p.r)}`,
-    `\\frac{z}{r} &= \\frac{r \\cos v}{r} = \\cos v \\;\\Rightarrow\\; v = \\arccos\\frac{z}{r} = \\arccos(${texNum(p.z / p.r)}) = ${texNum(p.theta)}`,
-    `(u, v)_{\\text{tex}} &= \\left(\\frac{u}{2\\pi},\\ \\frac{v}{\\pi}\\right) = \\left(\\frac{${texNum(p.phi)}}{${texNum(2 * Math.PI)}},\\ \\frac{${texNum(p.theta)}}{${texNum(Math.PI)}}\\right) = (${texNum(p.u)},\\ ${texNum(p.v)})`,
+    `\\frac{z}{r} &= \\frac{r \\cos v}{r} = \\cos v`,
+    `v &= \\arccos\\frac{z}{r} = \\arccos(${texNum(p.z / p.r)}) = ${texNum(p.theta)}`,
+    `(u, v)_{\\text{tex}} &= \\left(\\frac{u}{2\\pi},\\ \\frac{v}{\\pi}\\right) \\\\ &= \\left(\\frac{${texNum(p.phi)}}{${texNum(2 * Math.PI)}},\\ \\frac{${texNum(p.theta)}}{${texNum(Math.PI)}}\\right) = (${texNum(p.u)},\\ ${texNum(p.v)})`,
   ].join(' \\\\[3pt] ');
 }
