@@ -188,7 +188,10 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
 
   const atT = tl.t === 0 ? '' : ` at t = ${fmtShort(tl.t)} on its path`;
 
-  const controls = (
+  // Parts that do not depend on the animation position are memoized, so a frame only re-renders
+  // the figure's moving parts and the readouts.
+  const controls = useMemo(
+    () => (
     <>
       <Panel title="Query point and path" className="tx-panel-query">
         <Slider label="u (the query at t = 0)" value={params.u} min={-2} max={3} step={0.001} onChange={(x) => setParams({ u: x })} testId="u-slider" />
@@ -258,6 +261,9 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
         <GridText key={params.grid + params.preset} text={params.preset === 'grid' ? params.grid : (gridTextIfFits(grid) ?? '')} onApply={(t) => setParams({ preset: 'grid', grid: t })} />
       </Panel>
     </>
+    ),
+    // presetOptions follows presetChoice
+    [params, setParams, kind, opts.align, presetChoice, grid],
   );
 
   const figure = (
@@ -341,65 +347,8 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
     </Panel>
   );
 
-  const notExam = !workedExam ? (
-    <p className="tx-small tx-not-exam" data-testid="not-exam-query">
-      The steps use the current query (u, v) = ({fmtShort(workedFrame.u)}, {fmtShort(workedFrame.v)}){tWorked !== 0 ? `, at t = ${fmtShort(tWorked)} on its path` : ''}
-      {src.isExam ? '' : ', on a grid that is not the exam’s'}
-      {opts.align !== 'corner' ? ', with texel centres' : ''}
-      {opts.vflip ? ', with v flipped' : ''}.{' '}
-      <button type="button" onClick={toExam} data-testid="to-exam">
-        Back to the exam’s question
-      </button>
-    </p>
-  ) : null;
-
-  const main = (
-    <>
-      <ExamQuestion
-        n={3}
-        title="Texture lookup"
-        intro={figure}
-      >
-        <ExamPart id="3a" title="Nearest neighbour" asks={<>What value does nearest-neighbour lookup return at (u, v) = (0.4, 0.24)?</>}>
-          {notExam}
-          <Derivation testId="derivation-3a">
-            <NearestWorked grid={grid} opts={opts} q={workedQ} />
-          </Derivation>
-          <LiveAnswer testId="answer-3a">
-            <div className="readouts">
-              <Readout id="nearest" label="Nearest (Q3a)" value={ro.nearest} note={examQ ? keyNote(ro.nearest, KEY_PRINTED.nearest) : undefined} />
-              <Readout id="query-uv" label="(u, v) as used" value={`(${fmtShort(q.bil.u)}, ${fmtShort(q.bil.v)})`} />
-            </div>
-          </LiveAnswer>
-          <KeyNote testId="keynote-3a">
-            the key gives the node (0.5, 0.25) with the value 18 and also awards marks for a stated different convention, for example v′ = 1 − v (v measured
-            downward). With the flip {opts.vflip ? 'undone' : 'applied'} here, nearest gives {fmtShort(flipped.near.value)} (the node at ({fmtShort(flipped.near.nodeU)},{' '}
-            {fmtShort(flipped.near.nodeV)}) of the flipped frame) and bilinear {fmtShort(flipped.bil.value)}.
-          </KeyNote>
-        </ExamPart>
-        <ExamPart id="3b" title="Bilinear" asks={<>What value does bilinear interpolation give at (u, v) = (0.4, 0.24)?</>}>
-          {notExam}
-          <Derivation testId="derivation-3b">
-            <BilinearWorked opts={opts} q={workedQ} />
-          </Derivation>
-          <LiveAnswer testId="answer-3b">
-            <div className="readouts">
-              <Readout id="bilinear" label="Bilinear (Q3b)" value={ro.bilinear} note={examQ ? keyNote(ro.bilinear, KEY_PRINTED.bilinear) : undefined} />
-            </div>
-          </LiveAnswer>
-          <KeyNote testId="keynote-3b">
-            the key deducts 2.5 marks when the division by the cell size 0.25 is missing. Without it each step is scaled by Δ: c_u would be{' '}
-            {fmtShort(workedQ.steps.cu * workedQ.bil.du)}, c_l {fmtShort(workedQ.steps.cl * workedQ.bil.du)} and c {fmtShort(workedQ.steps.c * workedQ.bil.du * workedQ.bil.dv)}
-            {workedExam
-              ? `; with the divisions the computed c_u, c_l and c (${fmtShort(workedQ.steps.cu)}, ${fmtShort(workedQ.steps.cl)}, ${fmtShort(workedQ.steps.c)}) ${
-                  agreesWithKey(workedQ.steps.cu, KEY_PRINTED.cu) && agreesWithKey(workedQ.steps.cl, KEY_PRINTED.cl) && agreesWithKey(workedQ.steps.c, KEY_PRINTED.bilinear)
-                    ? `agree with the key’s printed ${KEY_PRINTED.cu.value}, ${KEY_PRINTED.cl.value} and ${KEY_PRINTED.bilinear.value}`
-                    : `differ from the key’s printed ${KEY_PRINTED.cu.value}, ${KEY_PRINTED.cl.value} and ${KEY_PRINTED.bilinear.value}`
-                }`
-              : ''}
-            .
-          </KeyNote>
-        </ExamPart>
+  const part3c = useMemo(
+    () => (
         <ExamPart
           id="3c"
           title="The spherical mapping"
@@ -512,6 +461,71 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
             </KeyNote>
           ) : null}
         </ExamPart>
+    ),
+    // setAngles reads only sphere and setParams
+    [params, setParams, sphere, examS, ro.sphereU, ro.sphereV, ro.sphereBilinear, grid, opts, range, dir, onPick, mode.present],
+  );
+
+  const notExam = !workedExam ? (
+    <p className="tx-small tx-not-exam" data-testid="not-exam-query">
+      The steps use the current query (u, v) = ({fmtShort(workedFrame.u)}, {fmtShort(workedFrame.v)}){tWorked !== 0 ? `, at t = ${fmtShort(tWorked)} on its path` : ''}
+      {src.isExam ? '' : ', on a grid that is not the exam’s'}
+      {opts.align !== 'corner' ? ', with texel centres' : ''}
+      {opts.vflip ? ', with v flipped' : ''}.{' '}
+      <button type="button" onClick={toExam} data-testid="to-exam">
+        Back to the exam’s question
+      </button>
+    </p>
+  ) : null;
+
+  const main = (
+    <>
+      <ExamQuestion
+        n={3}
+        title="Texture lookup"
+        intro={figure}
+      >
+        <ExamPart id="3a" title="Nearest neighbour" asks={<>What value does nearest-neighbour lookup return at (u, v) = (0.4, 0.24)?</>}>
+          {notExam}
+          <Derivation testId="derivation-3a">
+            <NearestWorked grid={grid} opts={opts} q={workedQ} />
+          </Derivation>
+          <LiveAnswer testId="answer-3a">
+            <div className="readouts">
+              <Readout id="nearest" label="Nearest (Q3a)" value={ro.nearest} note={examQ ? keyNote(ro.nearest, KEY_PRINTED.nearest) : undefined} />
+              <Readout id="query-uv" label="(u, v) as used" value={`(${fmtShort(q.bil.u)}, ${fmtShort(q.bil.v)})`} />
+            </div>
+          </LiveAnswer>
+          <KeyNote testId="keynote-3a">
+            the key gives the node (0.5, 0.25) with the value 18 and also awards marks for a stated different convention, for example v′ = 1 − v (v measured
+            downward). With the flip {opts.vflip ? 'undone' : 'applied'} here, nearest gives {fmtShort(flipped.near.value)} (the node at ({fmtShort(flipped.near.nodeU)},{' '}
+            {fmtShort(flipped.near.nodeV)}) of the flipped frame) and bilinear {fmtShort(flipped.bil.value)}.
+          </KeyNote>
+        </ExamPart>
+        <ExamPart id="3b" title="Bilinear" asks={<>What value does bilinear interpolation give at (u, v) = (0.4, 0.24)?</>}>
+          {notExam}
+          <Derivation testId="derivation-3b">
+            <BilinearWorked opts={opts} q={workedQ} />
+          </Derivation>
+          <LiveAnswer testId="answer-3b">
+            <div className="readouts">
+              <Readout id="bilinear" label="Bilinear (Q3b)" value={ro.bilinear} note={examQ ? keyNote(ro.bilinear, KEY_PRINTED.bilinear) : undefined} />
+            </div>
+          </LiveAnswer>
+          <KeyNote testId="keynote-3b">
+            the key deducts 2.5 marks when the division by the cell size 0.25 is missing. Without it each step is scaled by Δ: c_u would be{' '}
+            {fmtShort(workedQ.steps.cu * workedQ.bil.du)}, c_l {fmtShort(workedQ.steps.cl * workedQ.bil.du)} and c {fmtShort(workedQ.steps.c * workedQ.bil.du * workedQ.bil.dv)}
+            {workedExam
+              ? `; with the divisions the computed c_u, c_l and c (${fmtShort(workedQ.steps.cu)}, ${fmtShort(workedQ.steps.cl)}, ${fmtShort(workedQ.steps.c)}) ${
+                  agreesWithKey(workedQ.steps.cu, KEY_PRINTED.cu) && agreesWithKey(workedQ.steps.cl, KEY_PRINTED.cl) && agreesWithKey(workedQ.steps.c, KEY_PRINTED.bilinear)
+                    ? `agree with the key’s printed ${KEY_PRINTED.cu.value}, ${KEY_PRINTED.cl.value} and ${KEY_PRINTED.bilinear.value}`
+                    : `differ from the key’s printed ${KEY_PRINTED.cu.value}, ${KEY_PRINTED.cl.value} and ${KEY_PRINTED.bilinear.value}`
+                }`
+              : ''}
+            .
+          </KeyNote>
+        </ExamPart>
+        {part3c}
       </ExamQuestion>
       <ExploreFurther intro="Beyond the exam: the whole texture under both filters, where bilinear creases, and what the spherical mapping does at its seam and poles.">
         <Panel title="The whole texture, reconstructed">
