@@ -6,7 +6,7 @@
  * the poles). All figures come from ./model (pure, over the core); what is on screen at animation
  * position t is model.frameAt(grid, conventions, path, t).
  */
-import { useCallback, useDeferredValue, useEffect, useMemo, useRef, useState } from 'react';
+import { memo, useCallback, useDeferredValue, useEffect, useMemo, useRef, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
 import { EXAM_GRID_TEXT, examGrid, gridRange, gridToRows, parseGrid, texel } from '../../core/texture';
 import {
@@ -576,7 +576,7 @@ function creaseSentence(creased: number, lines: number, isExam: boolean): string
 }
 
 /** The exam's grid as the exam prints it (v = 1 on top). */
-function ExamGridTable() {
+const ExamGridTable = memo(function ExamGridTable() {
   const rows = gridToRows(examGrid());
   const n = rows.length;
   return (
@@ -601,7 +601,7 @@ function ExamGridTable() {
       </tbody>
     </table>
   );
-}
+});
 
 function texPlain(x: number): string {
   return Number.isFinite(x) ? String(Number(x.toPrecision(6))) : '—';
@@ -628,7 +628,7 @@ function ExamSphereNote({ normalized, raw }: { normalized: number; raw: number }
   );
 }
 
-function Legend({ range }: { range: { min: number; max: number } }) {
+const Legend = memo(function Legend({ range }: { range: { min: number; max: number } }) {
   const stops = Array.from({ length: 11 }, (_, k) => colorCss(k / 10)).join(', ');
   return (
     <div className="tx-legend" aria-hidden="true">
@@ -637,7 +637,7 @@ function Legend({ range }: { range: { min: number; max: number } }) {
       <span>{fmtShort(range.max)}</span>
     </div>
   );
-}
+});
 
 /** The grid as text (rows top to bottom); applies only text that parses, else says why. */
 function GridText({ text, onApply }: { text: string; onApply: (t: string) => void }) {

@@ -5,7 +5,7 @@
  * SVG is as wide as its box), so text stays at its stated size on phones. The curves are memoized
  * on the profile; only the position marker re-renders per animation frame.
  */
-import { memo, useLayoutEffect, useRef, useState } from 'react';
+import { memo, useLayoutEffect, useMemo, useRef, useState } from 'react';
 import type { PathProfile } from '../model';
 import { fmtShort } from './GridView';
 
@@ -95,10 +95,12 @@ export function PathPlot({ profile, t, near, bil, present }: { profile: PathProf
     return () => ro.disconnect();
   }, []);
   const h = present ? 230 : 180;
-  const pad = Math.max(1e-9, (profile.max - profile.min) * 0.08, Math.abs(profile.max) * 1e-9);
-  const s: Scale = { w, h, y0: profile.min - pad, y1: profile.max + pad };
-  const kinks = profile.borders.filter((b) => b.kink).length;
-  const jumps = profile.borders.filter((b) => b.jump).length;
+  const s = useMemo<Scale>(() => {
+    const pad = Math.max(1e-9, (profile.max - profile.min) * 0.08, Math.abs(profile.max) * 1e-9);
+    return { w, h, y0: profile.min - pad, y1: profile.max + pad };
+  }, [profile, w, h]);
+  const kinks = useMemo(() => profile.borders.filter((b) => b.kink).length, [profile]);
+  const jumps = useMemo(() => profile.borders.filter((b) => b.jump).length, [profile]);
   const label =
     `The looked-up value along the path. Bilinear: continuous${jumps ? ` except ${jumps} jump${jumps > 1 ? 's' : ''} from the addressing` : ''}, ` +
     `crossing ${profile.borders.length} cell border${profile.borders.length === 1 ? '' : 's'}, ${kinks} with a kink. ` +
