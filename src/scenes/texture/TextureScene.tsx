@@ -197,18 +197,6 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
         <Slider label="u (the query at t = 0)" value={params.u} min={-2} max={3} step={0.001} onChange={(x) => setParams({ u: x })} testId="u-slider" />
         <Slider label="v (the query at t = 0)" value={params.v} min={-2} max={3} step={0.001} onChange={(x) => setParams({ v: x })} testId="v-slider" />
         <p className="tx-small">Or click / drag on the grid; with the grid focused, arrow keys move the query (Shift: by 0.1).</p>
-        <Select
-          label="Path for the animation"
-          value={kind}
-          options={[
-            { value: 'line', label: 'Line from (u, v) to (u₂, v₂)' },
-            { value: 'circle', label: 'Circle through both ends' },
-          ]}
-          onChange={(x) => setParams({ path: x })}
-          testId="path-select"
-        />
-        <Slider label="u₂ (path end)" value={params.u2} min={-2} max={3} step={0.001} onChange={(x) => setParams({ u2: x })} testId="u2-slider" />
-        <Slider label="v₂ (path end)" value={params.v2} min={-2} max={3} step={0.001} onChange={(x) => setParams({ v2: x })} testId="v2-slider" />
       </Panel>
       <Panel title="Conventions" className="tx-panel-conventions">
         <Select
@@ -221,7 +209,6 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
           onChange={(x) => setParams({ align: x })}
           testId="align-select"
         />
-        <p className="tx-small">{opts.align === 'corner' ? 'Node i at u = i/(N − 1): the nodes cover [0, 1].' : 'Texel i centred at u = (i + ½)/N, as OpenGL and pbrt do.'}</p>
         <Toggle label="Flip v: v′ = 1 − v (the key accepts it)" checked={params.vflip} onChange={(x) => setParams({ vflip: x })} testId="vflip-toggle" />
         <Select
           label="Addressing outside [0, 1]"
@@ -263,7 +250,7 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
     </>
     ),
     // presetOptions follows presetChoice
-    [params, setParams, kind, opts.align, presetChoice, grid],
+    [params, setParams, opts.align, presetChoice, grid],
   );
 
   const figure = (
@@ -297,7 +284,20 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
             present={mode.present}
           />
           <Legend range={range} />
-          <TimelineTransport timeline={tl} label="Query path" format={(t) => `t = ${t.toFixed(2)}`} />
+          <TimelineTransport timeline={tl} label="Query path" format={(t) => `t = ${t.toFixed(2)}`}>
+            <label className="tx-path-kind">
+              <span>Path</span>
+              <select value={kind} onChange={(e) => setParams({ path: e.target.value === 'circle' ? 'circle' : 'line' })} data-testid="path-select">
+                <option value="line">line to (u₂, v₂)</option>
+                <option value="circle">circle through both</option>
+              </select>
+            </label>
+          </TimelineTransport>
+          <div className="tx-path-end">
+            <span>Path end</span>
+            <NumberField label="u₂" value={params.u2} min={-4} max={4} step={0.01} onChange={(x) => setParams({ u2: x })} testId="u2-field" />
+            <NumberField label="v₂" value={params.v2} min={-4} max={4} step={0.01} onChange={(x) => setParams({ v2: x })} testId="v2-field" />
+          </div>
           <PathPlot profile={profile} t={tl.t} near={q.near.value} bil={q.bil.value} present={mode.present} />
         </div>
         <div className="tx-figure-side">
