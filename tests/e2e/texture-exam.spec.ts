@@ -140,7 +140,7 @@ test.describe('legible (issue 11)', () => {
           ctx.font = `${cs.fontWeight} ${cs.fontSize} ${cs.fontFamily}`;
           for (const o of s.options) {
             const need = ctx.measureText(o.text).width + parseFloat(cs.paddingLeft) + parseFloat(cs.paddingRight) + 20; // + the arrow
-            if (need > s.clientWidth) out.push(`select "${o.text}": ${need.toFixed(0)} > ${s.clientWidth}`);
+            if (need > s.clientWidth + 2) out.push(`select "${o.text}": ${need.toFixed(0)} > ${s.clientWidth}`);
           }
         }
         for (const c of document.querySelectorAll<HTMLElement>('.scene-texture td, .scene-texture th')) {

@@ -355,7 +355,10 @@ const StaticLayer = memo(function StaticLayer({
   // ticks at the nodes while they fit (a label is about 2.2 em wide), else 0, ½, 1
   const fits = (n: number) => n <= 5 && (VB / (win.max - win.min)) / Math.max(1, n - 1) > tickFont * 2.4;
   const ticks = fits(W) ? Array.from({ length: W }, (_, i) => nodeCoord(i, W, opts.align)) : [0, 0.5, 1];
-  const vticks = fits(H) ? Array.from({ length: H }, (_, j) => nodeCoord(j, H, opts.align)) : [0, 0.5, 1];
+  // v ticks sit in the left margin: keep those whose text fits there (monospace ≈ 0.62 em a digit)
+  const vticks = (fits(H) ? Array.from({ length: H }, (_, j) => nodeCoord(j, H, opts.align)) : [0, 0.5, 1]).filter(
+    (t) => 0.62 * tickFont * String(Number(t.toPrecision(3))).length + 4 <= x0 + 4,
+  );
   return (
     <g>
       <path d={`M0 0H${VB}V${VB}H0Z M${x0} ${y0}V${y1}H${x1}V${y0}Z`} className="tx-outside" fillRule="evenodd" />
