@@ -90,7 +90,7 @@ test.describe('exam first (issue 11)', () => {
     await expect(page.locator('.tx-crease')).toHaveCount(0);
     await page.getByTestId('show-checker').click();
     await expect(page).toHaveURL(/preset=checker/);
-    await expect(cap).toContainText('12 of the 12');
+    await expect(cap).toContainText('all 12 of the 12 interior node lines are creases');
     await expect(page.locator('.tx-crease')).toHaveCount(12);
   });
 });

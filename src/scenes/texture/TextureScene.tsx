@@ -572,7 +572,8 @@ function creaseSentence(creased: number, lines: number, isExam: boolean): string
   if (lines === 0) return 'This grid has no interior node lines.';
   if (creased === 0)
     return `On this grid none of the ${lines} interior node lines is a crease: the values change linearly across every one${isExam ? ' (the exam’s grid is the linear function 21 + 4u − 20v)' : ''}, so bilinear reproduces a smooth (here planar) surface.`;
-  return `On this grid ${creased} of the ${lines} interior node lines ${creased === 1 ? 'is a crease' : 'are creases'} (dashed on the bilinear image); along the others the values continue linearly and the surface is smooth.`;
+  if (creased === lines) return `On this grid all ${lines} of the ${lines} interior node lines are creases (dashed on the bilinear image).`;
+  return `On this grid ${creased} of the ${lines} interior node lines ${creased === 1 ? 'is a crease' : 'are creases'} (dashed on the bilinear image); across the others the values continue linearly and the surface is smooth.`;
 }
 
 /** The exam's grid as the exam prints it (v = 1 on top). */

@@ -519,7 +519,7 @@ function CellCloseUp({ q }: { q: Lookup }) {
           <rect x={r.x0} y={r.y0} width={Math.max(0, r.x1 - r.x0)} height={Math.max(0, r.y1 - r.y0)} className={`tx-wrect ${r.cls}`} />
           {r.x1 - r.x0 > 30 && r.y1 - r.y0 > 16 ? (
             <text x={(r.x0 + r.x1) / 2} y={(r.y0 + r.y1) / 2 + 5} textAnchor="middle" className="tx-closeup-w">
-              {fmtShort(r.w)}
+              {String(Number(r.w.toPrecision(3)))}
             </text>
           ) : null}
         </g>
