@@ -1,4 +1,4 @@
-import { useEffect, useMemo } from 'react';
+import { lazy, Suspense, useEffect, useMemo } from 'react';
 import { useHashRoute } from './useHashRoute';
 import { parseShellFlags } from './route';
 import { useTheme } from './theme';
@@ -7,6 +7,20 @@ import { Home } from './Home';
 import { SceneHost } from './SceneHost';
 import { findScene } from '../scenes/registry';
 import { ShortcutProvider } from '../ui/shortcuts';
+
+// Practice mode is its own lazy chunk (src/practice): nothing of it loads on the other routes.
+// A failed load (offline, stale deploy) shows a message instead of throwing.
+const PracticeRoute = lazy(() =>
+  import('../practice/PracticeRoute').catch(() => ({
+    default: () => (
+      <main id="main" className="page" tabIndex={-1}>
+        <p role="alert" className="notice notice-error">
+          Practice could not be loaded. Check the connection and <a href={window.location.hash}>reload</a>.
+        </p>
+      </main>
+    ),
+  })),
+);
 
 export function App() {
   const route = useHashRoute();
@@ -24,6 +38,18 @@ export function App() {
   const scene = findScene(route.path);
   let body;
   if (route.path === '/') body = <Home flags={flags} />;
+  else if (route.path === '/practice' || route.path.startsWith('/practice/'))
+    body = (
+      <Suspense
+        fallback={
+          <main id="main" className="page" tabIndex={-1}>
+            <p className="loading" role="status">Loading practice…</p>
+          </main>
+        }
+      >
+        <PracticeRoute path={route.path} query={route.query} flags={flags} />
+      </Suspense>
+    );
   else if (scene) body = <SceneHost key={scene.id} info={scene} query={route.query} flags={flags} theme={theme} />;
   else
     body = (

@@ -32,6 +32,7 @@ import {
   addressingNotes,
   agreesWithKey,
   creases,
+  drawnLookup,
   frameAt,
   gridTextIfFits,
   isExamQuery,
@@ -47,7 +48,7 @@ import {
   type QueryPath,
 } from './model';
 import { GRID_TEXT_MAX, type PathKind, type Preset, type TextureSchema } from './params';
-import { GridView, StencilDetail, drawnLookup, fmtShort, type Grab } from './view/GridView';
+import { GridView, StencilDetail, fmtShort, type Grab } from './view/GridView';
 import { BilinearWorked, NearestWorked, WideMath, bilinearTex, sphereTex } from './view/WorkedSteps';
 import { PathPlot } from './view/PathPlot';
 import { Reconstruction } from './view/Reconstruction';

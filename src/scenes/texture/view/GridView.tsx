@@ -11,9 +11,9 @@
  * query brought into [0, 1]² by the wrap mode (an equivalent point: the lookup there is the same).
  */
 import { memo, useEffect, useLayoutEffect, useMemo, useRef, useState, type KeyboardEvent, type PointerEvent } from 'react';
-import { addressCoord, nodeCoord, type LookupOptions, type TextureGrid } from '../../../core/texture';
+import { nodeCoord, type LookupOptions, type TextureGrid } from '../../../core/texture';
 import { colorCss, darkTextOn, normalizeValue } from '../colormap';
-import { lookupAt, pathPoint, textureImage, type Lookup, type QueryPath } from '../model';
+import { pathPoint, textureImage, type Lookup, type QueryPath } from '../model';
 
 const VB = 1000; // viewBox size of the plotted window
 /** Smallest on-screen size of any text in the figure, in CSS pixels (issue 11: ≥ 12 px on phones). */
@@ -31,13 +31,6 @@ export function viewWindow(grid: TextureGrid, opts: LookupOptions): ViewWindow {
   const n = Math.min(grid.width, grid.height);
   const m = (opts.align === 'center' ? 0.5 / n : 0) + 0.08;
   return { min: -m, max: 1 + m };
-}
-
-/** The equivalent in-window point of a query, and the lookup drawn there (texture frame, no flip). */
-export function drawnLookup(grid: TextureGrid, u: number, v: number, opts: LookupOptions): Lookup {
-  const vt = opts.vflip ? 1 - v : v;
-  const o = { ...opts, vflip: false };
-  return lookupAt(grid, addressCoord(u, opts.wrap), addressCoord(vt, opts.wrap), o);
 }
 
 /** Which thing a pointer or key moves: the path's start (u, v), its end (u2, v2), or the query itself. */
