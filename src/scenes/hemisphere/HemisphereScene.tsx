@@ -16,10 +16,10 @@ import { Derivation } from './view/Derivation';
 import { MarginalPlots, Histogram2D } from './view/Plots';
 import { EstimateReadouts, RepeatView } from './view/Q2Panel';
 import { InvertedJacobian } from './view/InvertedJacobian';
+import type { RepeatArgs, RepeatResult, StatsArgs } from './jobs';
 // Static, not lazy: the 3D panel is on the first screen, and a Suspense fallback of another height
 // shifted the layout when it arrived (three.js itself still loads lazily, inside Viewport).
 import { HemisphereView } from './view/HemisphereView';
-import type { RepeatArgs, RepeatResult, StatsArgs } from './jobs';
 import './hemisphere.css';
 
 const StabilityPanel = lazy(() => import('./view/StabilityPanel').then((m) => ({ default: m.StabilityPanel })));

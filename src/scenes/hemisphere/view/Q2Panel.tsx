@@ -5,23 +5,14 @@
  */
 import { useMemo } from 'react';
 import { Notice, Plot, Readout, formatNumber } from '../../../ui';
-import type { McEstimate } from '../../../core/estimators';
+import { estimateFromTerms, type McEstimate } from '../../../core/estimators';
 
 import type { RepeatResult } from '../jobs';
 
+/** Mean, its standard error and the spread of the finite estimates (Welford, in the core). */
 function meanSe(a: Float64Array): { mean: number; se: number; sd: number } {
-  let s = 0;
-  let s2 = 0;
-  let m = 0;
-  for (const x of a) {
-    if (!Number.isFinite(x)) continue;
-    s += x;
-    s2 += x * x;
-    m++;
-  }
-  const mean = m ? s / m : NaN;
-  const v = m > 1 ? Math.max(0, (s2 - m * mean * mean) / (m - 1)) : NaN;
-  return { mean, se: Math.sqrt(v / m), sd: Math.sqrt(v) };
+  const e = estimateFromTerms(a);
+  return { mean: e.estimate, se: e.stderr, sd: e.n > 1 ? Math.sqrt(e.variance) : NaN };
 }
 
 export function EstimateReadouts({
