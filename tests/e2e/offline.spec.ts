@@ -133,8 +133,18 @@ test('a new build shows the "updated, reload" notice, and Reload switches to it 
     await expect(notice).toContainText('updated');
     // the old build keeps running meanwhile (no mix): the page is still the old index.html
     expect(await page.locator('meta[name="rml-build"]').count()).toBe(0);
+    // a second tab of the old build
+    const other = await page.context().newPage();
+    await other.goto(`${srv.base}#/ray-sphere?r=2`);
+    await expect(other.getByTestId('t-hit').first()).toHaveAttribute('data-value', /.+/);
+    expect(await other.locator('meta[name="rml-build"]').count()).toBe(0);
     await notice.getByRole('button', { name: 'Reload' }).click();
     await expect(page.locator('meta[name="rml-build"]')).toHaveAttribute('content', marker, { timeout: 60000 });
+    // the other tab switched whole to the new build too, keeping its state (it lives in the URL)
+    await expect(other.locator('meta[name="rml-build"]')).toHaveAttribute('content', marker, { timeout: 60000 });
+    await expect(other).toHaveURL(/#\/ray-sphere\?r=2/);
+    await expect(other.getByTestId('t-hit').first()).toHaveAttribute('data-value', /.+/);
+    await other.close();
     await expect(page.getByTestId('bilinear').first()).toHaveAttribute('data-value', /^-?\d/);
     await expect(page.getByTestId('update-notice')).toHaveCount(0);
   } finally {
