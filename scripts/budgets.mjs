@@ -65,6 +65,7 @@ const LIMITS = [
   [/^vendor-three-/, 200_000],
   [/^vendor-katex-/, 110_000],
   [/^scene-/, 150_000],
+  [/^PracticeRoute-/, 60_000], // practice mode (src/practice), its own lazy chunk
 ];
 for (const f of readdirSync(join(dist, 'assets'))) {
   const rel = `assets/${f}`;

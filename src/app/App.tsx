@@ -1,4 +1,4 @@
-import { lazy, Suspense, useCallback, useEffect, useMemo, useState } from 'react';
+import { lazy, Suspense, useEffect, useMemo } from 'react';
 import { useHashRoute } from './useHashRoute';
 import { parseShellFlags } from './route';
 import { useTheme } from './theme';
@@ -7,7 +7,21 @@ import { useHostApi } from './hostApi';
 import { Home } from './Home';
 import { SceneHost } from './SceneHost';
 import { findScene } from '../scenes/registry';
-import { ShortcutProvider, SHORTCUTS } from '../ui/shortcuts';
+import { ShortcutProvider } from '../ui/shortcuts';
+
+// Practice mode is its own lazy chunk (src/practice): nothing of it loads on the other routes.
+// A failed load (offline, stale deploy) shows a message instead of throwing.
+const PracticeRoute = lazy(() =>
+  import('../practice/PracticeRoute').catch(() => ({
+    default: () => (
+      <main id="main" className="page" tabIndex={-1}>
+        <p role="alert" className="notice notice-error">
+          Practice could not be loaded. Check the connection and <a href={window.location.hash}>reload</a>.
+        </p>
+      </main>
+    ),
+  })),
+);
 
 // The teacher's guide (#/guide) is its own lazy chunk.
 const Guide = lazy(() => import('../guide/Guide'));
@@ -17,8 +31,6 @@ export function App() {
   // memoised: SceneHost's setParams and effects depend on it, so it must not change per render
   const flags = useMemo(() => parseShellFlags(route.query), [route.query]);
   const theme = useTheme(flags.theme);
-  const [helpOpen, setHelpOpen] = useState(false);
-  const toggleHelp = useCallback(() => setHelpOpen((o) => !o), []);
   const scene = findScene(route.path);
   usePostHeight(flags.embed, scene?.id ?? null, flags.origins);
   useHostApi(flags.origins);
@@ -31,6 +43,18 @@ export function App() {
 
   let body;
   if (route.path === '/') body = <Home flags={flags} />;
+  else if (route.path === '/practice' || route.path.startsWith('/practice/'))
+    body = (
+      <Suspense
+        fallback={
+          <main id="main" className="page" tabIndex={-1}>
+            <p className="loading" role="status">Loading practice…</p>
+          </main>
+        }
+      >
+        <PracticeRoute path={route.path} query={route.query} flags={flags} />
+      </Suspense>
+    );
   else if (route.path === '/guide')
     body = (
       <Suspense fallback={<main id="main" className="page"><p className="loading" role="status">Loading the teacher’s guide…</p></main>}>
@@ -49,7 +73,7 @@ export function App() {
     );
 
   return (
-    <ShortcutProvider active={flags.present} onHelp={toggleHelp}>
+    <ShortcutProvider active={flags.present}>
       <a className="skip-link" href="#main" onClick={(e) => {
         e.preventDefault();
         document.getElementById('main')?.focus();
@@ -66,24 +90,6 @@ export function App() {
           </p>
         </footer>
       )}
-      {helpOpen ? (
-        <div className="shortcut-help" role="dialog" aria-modal="false" aria-label="Keyboard shortcuts">
-          <h2>Keyboard shortcuts</h2>
-          <dl>
-            {SHORTCUTS.map((s) => (
-              <div key={s.key}>
-                <dt>
-                  <kbd>{s.key}</kbd>
-                </dt>
-                <dd>{s.label}</dd>
-              </div>
-            ))}
-          </dl>
-          <button type="button" onClick={toggleHelp} autoFocus>
-            Close
-          </button>
-        </div>
-      ) : null}
     </ShortcutProvider>
   );
 }

@@ -22,11 +22,20 @@ export function Home({ flags }: { flags: ShellFlags }) {
         number and every figure, plot and picture is recomputed on the spot. Share or embed any configuration by its
         link.
       </p>
+      <p className="home-practice">
+        <a href={`#/practice${withFlags('', flags)}`} data-testid="practice-link">
+          Practice
+        </a>
+        : test yourself on fresh variants of every question — answers checked, classic mistakes named, worked solutions with your numbers.
+      </p>
       <ol className="question-list">
         {EXAM_QUESTIONS.map((q) => {
           const scene = SCENES.find((s) => s.id === q.scene)!;
           const built = sceneLoader(scene.id) !== null;
-          const href = `#${scene.path}${withFlags(q.query ?? scene.examQuery, flags)}`;
+          // land on the question's first part (Q2 opens the hemisphere page at 2a, not at Q1)
+          const part = scene.parts.find((p) => p.startsWith(String(q.n)));
+          const base = q.query ?? scene.examQuery;
+          const href = `#${scene.path}${withFlags([base, part ? `part=${part}` : ''].filter(Boolean).join('&'), flags)}`;
           return (
             <li key={q.n} className={`question-card${built ? '' : ' planned'}`}>
               <div className="question-head">

@@ -19,6 +19,11 @@ export interface ShellFlags {
   embed: boolean;
   present: boolean;
   theme: 'light' | 'dark' | null;
+  /**
+   * `part=1c`: the exam sub-question to land on (the scene checks it is one of its parts). Kept in
+   * links the scene writes, so a shared link lands on the same part.
+   */
+  part: string | null;
   /** `origin=`: the only host-page origins the host API answers (empty: any parent). */
   origins: string[];
   /** Shell parameters the shell could not use, with a message each. */
@@ -27,7 +32,7 @@ export interface ShellFlags {
 
 /** Read the shell's own flags (embed, present, theme) from a query string. Never throws. */
 export function parseShellFlags(query: string): ShellFlags {
-  const flags: ShellFlags = { embed: false, present: false, theme: null, origins: [], problems: [] };
+  const flags: ShellFlags = { embed: false, present: false, theme: null, part: null, origins: [], problems: [] };
   let sp: URLSearchParams;
   try {
     sp = new URLSearchParams(query);
@@ -47,6 +52,11 @@ export function parseShellFlags(query: string): ShellFlags {
   if (t !== null) {
     if (t === 'light' || t === 'dark') flags.theme = t;
     else flags.problems.push({ name: 'theme', message: `${JSON.stringify(t.slice(0, 24))} is not light or dark; using the system's` });
+  }
+  const part = sp.get('part');
+  if (part !== null) {
+    if (/^[1-6][a-d]?$/.test(part)) flags.part = part;
+    else flags.problems.push({ name: 'part', message: `${JSON.stringify(part.slice(0, 24))} is not an exam part like 1c; showing the top of the page` });
   }
   const o = parseOrigins(sp.get('origin'));
   flags.origins = o.origins;
@@ -82,8 +92,9 @@ function clip(s: string, n: number): string {
 }
 
 /** The shell flags as query entries, for links that must keep the mode. */
-export function shellExtras(flags: Pick<ShellFlags, 'embed' | 'present' | 'theme'> & { origins?: readonly string[] }): Record<string, string | undefined> {
+export function shellExtras(flags: Pick<ShellFlags, 'embed' | 'present' | 'theme'> & { part?: string | null; origins?: readonly string[] }): Record<string, string | undefined> {
   return {
+    part: flags.part ?? undefined,
     embed: flags.embed ? '1' : undefined,
     present: flags.present ? '1' : undefined,
     theme: flags.theme ?? undefined,

@@ -15,6 +15,11 @@ export interface SceneInfo {
   blurb: string;
   /** Query opening the scene in the exam question's configuration ('' = defaults). */
   examQuery: string;
+  /**
+   * The exam's sub-questions this scene teaches, in page order (`part=1c` in a link lands on the
+   * element with id `part-1c`).
+   */
+  parts: readonly string[];
 }
 
 export const SCENES: readonly SceneInfo[] = [
@@ -25,6 +30,7 @@ export const SCENES: readonly SceneInfo[] = [
     questions: 'Q1 · Q2',
     blurb: 'Normalize p(ω) = k cos θ e^φ, find its marginals and CDFs, invert them, and watch the samples land.',
     examQuery: 'lobe=exam',
+    parts: ['1a', '1b', '1c', '1d', '2a', '2b', '2c'],
   },
   {
     id: 'monte-carlo',
@@ -33,6 +39,7 @@ export const SCENES: readonly SceneInfo[] = [
     questions: 'Q2 · Q4',
     blurb: 'Estimate ∫₀² (x + 2)² dx with uniform and importance sampling, and see how fast each converges.',
     examQuery: 'samples=1.16,1.98,0.54,1.26',
+    parts: ['4a', '4b', '4c', '4d'],
   },
   {
     id: 'texture',
@@ -41,6 +48,7 @@ export const SCENES: readonly SceneInfo[] = [
     questions: 'Q3',
     blurb: 'Nearest-neighbour and bilinear lookup on a texel grid, and the spherical (u, v) mapping.',
     examQuery: 'u=0.4&v=0.24',
+    parts: ['3a', '3b', '3c'],
   },
   {
     id: 'ray-sphere',
@@ -49,6 +57,7 @@ export const SCENES: readonly SceneInfo[] = [
     questions: 'Q5',
     blurb: 'The quadratic, its discriminant, every hit case, and what floating point does to the textbook form.',
     examQuery: '',
+    parts: ['5'],
   },
   {
     id: 'area-light',
@@ -57,6 +66,7 @@ export const SCENES: readonly SceneInfo[] = [
     questions: 'Q6',
     blurb: 'dω = dA cos θ_l / r², the rendering equation over a light’s area, and three ways to sample it.',
     examQuery: '',
+    parts: ['6a', '6b', '6c'],
   },
 ];
 
@@ -69,4 +79,18 @@ export function sceneLoader(id: string): (() => Promise<SceneModule>) | null {
 
 export function findScene(path: string): SceneInfo | undefined {
   return SCENES.find((s) => s.path === path);
+}
+
+/** Where each exam question starts: its scene and its first part. */
+export function questionStart(q: number): { scene: SceneInfo; part: string } | null {
+  for (const scene of SCENES) {
+    const part = scene.parts.find((p) => p.startsWith(String(q)));
+    if (part) return { scene, part };
+  }
+  return null;
+}
+
+/** The scene that teaches a part (e.g. '2c'), if any. */
+export function sceneOfPart(part: string): SceneInfo | undefined {
+  return SCENES.find((s) => s.parts.includes(part));
 }

@@ -1,4 +1,4 @@
-import { createContext, useContext, useEffect, useRef, type ReactNode } from 'react';
+import { createContext, useCallback, useContext, useEffect, useRef, useState, type ReactNode } from 'react';
 
 /** Handlers a scene offers to the classroom keyboard shortcuts (space, r, s). */
 export interface ShortcutHandlers {
@@ -26,7 +26,7 @@ export function useShortcuts(handlers: ShortcutHandlers): void {
 
 export const SHORTCUTS: readonly { key: string; label: string; action: keyof ShortcutHandlers | 'help' }[] = [
   { key: 'Space', label: 'play / pause', action: 'playPause' },
-  { key: 'r', label: 'reset', action: 'reset' },
+  { key: 'r', label: 'back to this scene’s opening state', action: 'reset' },
   { key: 's', label: 'step', action: 'step' },
   { key: '?', label: 'show this list', action: 'help' },
 ];
@@ -46,7 +46,7 @@ function isTyping(target: EventTarget | null): boolean {
  * Provides the shortcut registry and, when `active`, listens for the keys. `onHelp` toggles the
  * list of shortcuts.
  */
-export function ShortcutProvider({ active, onHelp, children }: { active: boolean; onHelp: () => void; children: ReactNode }) {
+export function ShortcutProvider({ active, children }: { active: boolean; children: ReactNode }) {
   const handlersRef = useRef(new Set<{ current: ShortcutHandlers }>());
   const registry = useRef<Registry>({
     register: (h) => {
@@ -54,12 +54,34 @@ export function ShortcutProvider({ active, onHelp, children }: { active: boolean
       return () => handlersRef.current.delete(h);
     },
   });
-  const helpRef = useRef(onHelp);
-  helpRef.current = onHelp;
+  const [helpOpen, setHelpOpen] = useState(false);
+  const helpOpenRef = useRef(helpOpen);
+  helpOpenRef.current = helpOpen;
+  const toggleHelp = useCallback(() => setHelpOpen((o) => !o), []);
+  // Esc closes the list wherever focus is (also outside classroom mode, e.g. inside the dialog)
+  useEffect(() => {
+    if (!helpOpen) return;
+    const on = (e: KeyboardEvent) => {
+      if (e.key === 'Escape') {
+        e.preventDefault();
+        setHelpOpen(false);
+      }
+    };
+    window.addEventListener('keydown', on);
+    return () => window.removeEventListener('keydown', on);
+  }, [helpOpen]);
   useEffect(() => {
     if (!active) return;
     const on = (e: KeyboardEvent) => {
-      if (e.ctrlKey || e.metaKey || e.altKey || isTyping(e.target)) return;
+      // defaultPrevented: a focused control (e.g. the timeline transport) already handled the key
+      if (e.defaultPrevented || e.ctrlKey || e.metaKey || e.altKey || isTyping(e.target)) return;
+      if (e.key === 'Escape') {
+        if (helpOpenRef.current) {
+          e.preventDefault();
+          setHelpOpen(false);
+        }
+        return;
+      }
       let action: keyof ShortcutHandlers | 'help' | null = null;
       if (e.key === ' ' || e.code === 'Space') action = 'playPause';
       else if (e.key === 'r' || e.key === 'R') action = 'reset';
@@ -68,7 +90,7 @@ export function ShortcutProvider({ active, onHelp, children }: { active: boolean
       if (!action) return;
       if (action === 'help') {
         e.preventDefault();
-        helpRef.current();
+        toggleHelp();
         return;
       }
       let handled = false;
@@ -83,6 +105,38 @@ export function ShortcutProvider({ active, onHelp, children }: { active: boolean
     };
     window.addEventListener('keydown', on);
     return () => window.removeEventListener('keydown', on);
-  }, [active]);
-  return <ShortcutContext.Provider value={registry.current}>{children}</ShortcutContext.Provider>;
+  }, [active, toggleHelp]);
+  // the list shows only the keys that do something on this page
+  const available = helpOpen
+    ? SHORTCUTS.filter((s) => s.action === 'help' || [...handlersRef.current].some((h) => !!h.current[s.action as keyof ShortcutHandlers]))
+    : [];
+  return (
+    <ShortcutContext.Provider value={registry.current}>
+      {children}
+      {helpOpen ? (
+        <div className="shortcut-help" role="dialog" aria-modal="false" aria-label="Keyboard shortcuts" data-testid="shortcut-help">
+          <h2>Keyboard shortcuts</h2>
+          <dl>
+            {available.map((s) => (
+              <div key={s.key}>
+                <dt>
+                  <kbd>{s.key}</kbd>
+                </dt>
+                <dd>{s.label}</dd>
+              </div>
+            ))}
+            <div>
+              <dt>
+                <kbd>Esc</kbd>
+              </dt>
+              <dd>close this list</dd>
+            </div>
+          </dl>
+          <button type="button" onClick={() => setHelpOpen(false)} autoFocus>
+            Close
+          </button>
+        </div>
+      ) : null}
+    </ShortcutContext.Provider>
+  );
 }

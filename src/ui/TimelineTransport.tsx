@@ -1,0 +1,94 @@
+/**
+ * The transport of the shared timeline (src/ui/timeline.ts): play / pause, step, reset, speed,
+ * loop and a labelled, keyboard-operable scrubber. Space / s / r work while focus is inside it
+ * (and, in classroom mode, anywhere on the page through the shortcut registry).
+ */
+import { useId, type KeyboardEvent, type ReactNode } from 'react';
+import { TIMELINE_SPEEDS, type Timeline } from './timeline';
+
+export interface TimelineTransportProps {
+  timeline: Timeline;
+  /** What the animation shows, e.g. "Warp morph" (names the group and the scrubber). */
+  label: string;
+  /** How a position reads (scrubber text and aria-valuetext), e.g. `sample 12 of 64`. */
+  format?: (t: number) => string;
+  /** Extra controls shown after the built-in ones (e.g. a path preset). */
+  children?: ReactNode;
+  testId?: string;
+}
+
+function speedText(s: number): string {
+  return s === 0.25 ? '¼×' : s === 0.5 ? '½×' : `${s}×`;
+}
+
+export function TimelineTransport({ timeline: tl, label, format, children, testId = 'timeline' }: TimelineTransportProps) {
+  const id = useId();
+  const text = format ? format(tl.t) : tl.integer ? `${tl.t} of ${tl.max}` : `${Math.round((tl.t / (tl.max || 1)) * 100)} %`;
+  const onKeyDown = (e: KeyboardEvent<HTMLDivElement>) => {
+    if (e.ctrlKey || e.metaKey || e.altKey) return;
+    const target = e.target as HTMLElement;
+    if (target.tagName === 'SELECT') return;
+    let handled = true;
+    if (e.key === ' ' || e.code === 'Space') tl.toggle();
+    else if (e.key === 's' || e.key === 'S') tl.step();
+    else if (e.key === 'r' || e.key === 'R') tl.reset();
+    else handled = false;
+    if (handled) {
+      // preventDefault also stops a focused button's own Space click; the page-wide classroom
+      // shortcuts skip events that were already handled
+      e.preventDefault();
+      e.stopPropagation();
+    }
+  };
+  const onKeyUp = (e: KeyboardEvent<HTMLDivElement>) => {
+    if (e.key === ' ' || e.code === 'Space') e.preventDefault();
+  };
+  return (
+    <div className="timeline" role="group" aria-label={`${label}: animation`} data-testid={testId} data-t={String(tl.t)} data-playing={tl.playing ? '1' : '0'} onKeyDown={onKeyDown} onKeyUp={onKeyUp}>
+      <div className="timeline-buttons">
+        <button type="button" onClick={tl.toggle} aria-pressed={tl.playing} data-testid={`${testId}-play`} title="Play / pause (Space)">
+          {tl.playing ? '❚❚ Pause' : '▶ Play'}
+        </button>
+        <button type="button" onClick={tl.step} data-testid={`${testId}-step`} title="Step forward (s)">
+          Step ▸
+        </button>
+        <button type="button" onClick={tl.reset} data-testid={`${testId}-reset`} title="Back to the start (r)">
+          ⏮ Reset
+        </button>
+        <label className="timeline-speed">
+          <span>Speed</span>
+          <select value={tl.speed} onChange={(e) => tl.setSpeed(Number(e.target.value))} data-testid={`${testId}-speed`}>
+            {TIMELINE_SPEEDS.map((s) => (
+              <option key={s} value={s}>
+                {speedText(s)}
+              </option>
+            ))}
+          </select>
+        </label>
+        <label className="timeline-loop">
+          <input type="checkbox" checked={tl.loop} onChange={(e) => tl.setLoop(e.target.checked)} /> Loop
+        </label>
+        {children}
+      </div>
+      <div className="timeline-scrub">
+        <label htmlFor={`${id}-scrub`} className="sr-only">
+          {label}: position
+        </label>
+        <input
+          id={`${id}-scrub`}
+          type="range"
+          min={0}
+          max={tl.max}
+          step={tl.integer ? 1 : tl.max / 1000}
+          value={tl.t}
+          aria-valuetext={text}
+          data-testid={`${testId}-scrub`}
+          onChange={(e) => tl.seek(Number(e.target.value))}
+        />
+        <output htmlFor={`${id}-scrub`} className="timeline-pos" data-testid={`${testId}-pos`}>
+          {text}
+        </output>
+      </div>
+    </div>
+  );
+}

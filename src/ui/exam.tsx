@@ -1,0 +1,134 @@
+/**
+ * Exam-first page structure, shared by every scene (issue 11). A scene lays out each exam question
+ * in this order:
+ *
+ *   <ExamQuestion n={1} title="Sampling a hemisphere PDF">
+ *     <ExamPart id="1a" asks={<>Normalize p(ω) over the hemisphere …</>}>
+ *       <Derivation>…the steps the key awards marks for, with live numbers…</Derivation>
+ *       <LiveAnswer>…readouts computed by the core…</LiveAnswer>
+ *     </ExamPart>
+ *     …
+ *   </ExamQuestion>
+ *   <ExploreFurther>…stability, QMC, run time, robust forms…</ExploreFurther>
+ *
+ * `part=1a` in a link lands on `<ExamPart id="1a">` (the shell scrolls to `#part-1a`). The shell adds
+ * previous / next question links under the scene (QuestionNav).
+ */
+import type { ReactNode } from 'react';
+import { questionStart, type SceneInfo } from '../scenes/registry';
+import type { ShellFlags } from '../app/route';
+
+/** One exam question: its number and title, and its parts in order. */
+export function ExamQuestion({ n, title, intro, children }: { n: number; title: string; intro?: ReactNode; children: ReactNode }) {
+  return (
+    <section className="exam-question" id={`question-${n}`} aria-labelledby={`question-${n}-title`} data-testid={`question-${n}`}>
+      <h2 id={`question-${n}-title`} className="exam-question-title">
+        <span className="question-tag">Q{n}</span> {title}
+      </h2>
+      {intro ? <div className="exam-intro">{intro}</div> : null}
+      {children}
+    </section>
+  );
+}
+
+/**
+ * One sub-question: what the exam asks (quoted), then the scene's derivation and live answer
+ * (children). `id` is the part, e.g. '1a'; the element's id is `part-1a`.
+ */
+export function ExamPart({ id, title, asks, children }: { id: string; title?: string; asks: ReactNode; children: ReactNode }) {
+  const letter = id.replace(/^\d+/, '');
+  return (
+    <section className="exam-part" id={`part-${id}`} tabIndex={-1} aria-labelledby={`part-${id}-title`} data-testid={`part-${id}`}>
+      <h3 id={`part-${id}-title`} className="exam-part-title">
+        {letter ? `(${letter})` : `Q${id}`}
+        {title ? ` ${title}` : ''}
+      </h3>
+      <div className="exam-asks">
+        <span className="exam-asks-label">The exam asks</span>
+        <div className="exam-asks-text">{asks}</div>
+      </div>
+      {children}
+    </section>
+  );
+}
+
+/** The written derivation: the steps the key awards marks for (with live numbers where they have numbers). */
+export function Derivation({ title = 'Derivation', children, testId }: { title?: string; children: ReactNode; testId?: string }) {
+  return (
+    <div className="exam-derivation" data-testid={testId}>
+      <h4 className="exam-block-title">{title}</h4>
+      {children}
+    </div>
+  );
+}
+
+/** The answer, computed live by the math core (readouts go here). */
+export function LiveAnswer({ title = 'Answer, computed live', children, testId }: { title?: string; children: ReactNode; testId?: string }) {
+  return (
+    <div className="exam-answer" data-testid={testId}>
+      <h4 className="exam-block-title">{title}</h4>
+      {children}
+    </div>
+  );
+}
+
+/** A note on where the key's printed figure or wording differs from the computation. */
+export function KeyNote({ children, testId }: { children: ReactNode; testId?: string }) {
+  return (
+    <p className="exam-keynote" data-testid={testId}>
+      <span className="exam-keynote-label">About the answer key:</span> {children}
+    </p>
+  );
+}
+
+/** Everything beyond the exam, clearly marked as such (stability, QMC, run time, robust forms). */
+export function ExploreFurther({ children, intro }: { children: ReactNode; intro?: ReactNode }) {
+  return (
+    <section className="explore-further" aria-labelledby="explore-further-title" data-testid="explore-further">
+      <h2 id="explore-further-title">
+        Explore further <span className="explore-badge">beyond the exam</span>
+      </h2>
+      {intro ? <p className="explore-intro">{intro}</p> : null}
+      {children}
+    </section>
+  );
+}
+
+function flagQuery(flags: Pick<ShellFlags, 'present' | 'theme'>): string {
+  return `${flags.present ? '&present=1' : ''}${flags.theme ? `&theme=${flags.theme}` : ''}`;
+}
+
+/** Link to the start of exam question q (its scene, in the exam's configuration, at its first part). */
+export function questionHref(q: number, flags: Pick<ShellFlags, 'present' | 'theme'>): string | null {
+  const start = questionStart(q);
+  if (!start) return null;
+  const base = start.scene.examQuery ? `${start.scene.examQuery}&` : '';
+  return `#${start.scene.path}?${base}part=${start.part}${flagQuery(flags)}`;
+}
+
+/** Previous / next exam question links, under every scene (not in embeds). */
+export function QuestionNav({ info, flags }: { info: SceneInfo; flags: Pick<ShellFlags, 'present' | 'theme'> }) {
+  const qs = [...new Set(info.parts.map((p) => Number.parseInt(p, 10)))];
+  const first = Math.min(...qs);
+  const last = Math.max(...qs);
+  const prev = first > 1 ? questionHref(first - 1, flags) : null;
+  const next = last < 6 ? questionHref(last + 1, flags) : null;
+  return (
+    <nav className="question-nav" aria-label="Exam questions">
+      {prev ? (
+        <a href={prev} rel="prev" data-testid="prev-question">
+          ← Question {first - 1}
+        </a>
+      ) : (
+        <span />
+      )}
+      {next ? (
+        <a href={next} rel="next" data-testid="next-question">
+          Question {last + 1} →
+        </a>
+      ) : (
+        <span />
+      )}
+    </nav>
+  );
+}

@@ -1,0 +1,240 @@
+/**
+ * The shared animation timeline: one implementation of play / pause / step / reset / speed / loop /
+ * scrub for every scene (issue 12).
+ *
+ * The position `t` is state like any other scene parameter: it lives in the scene's URL parameters
+ * (`t`, and `play=1` while playing), so a link reopens the animation at the same moment. What a scene
+ * draws at position t must be a pure function of its parameters, its seed and t (the scene's model
+ * computes it; the view only draws it). While playing, the position advances once per animation
+ * frame in React state (keep the animated part of a scene in a small component that takes `t`);
+ * the URL is written when the animation pauses, is stepped, reset or scrubbed, not per frame.
+ *
+ * Nothing is requested from requestAnimationFrame while the timeline is paused, while its element
+ * is off screen, or while the tab is hidden. `prefers-reduced-motion: reduce` starts it paused and
+ * ignores `play=1` from a link (the Play button still works: that is the user's own choice).
+ */
+import { useCallback, useEffect, useMemo, useRef, useState, type RefObject } from 'react';
+import type { ParamSpec } from '../app/params';
+import { useShortcuts } from './shortcuts';
+
+/** Speeds offered by the transport (× the scene's natural speed). */
+export const TIMELINE_SPEEDS = [0.25, 0.5, 1, 2, 4] as const;
+
+/**
+ * URL parameters of a timeline, to spread into a scene's schema:
+ * `t` (position, 0…max) and `play` (0/1).
+ */
+export function timelineParams(opts: { max: number; default?: number; integer?: boolean }): { t: ParamSpec; play: ParamSpec } {
+  return {
+    t: { kind: 'number', default: opts.default ?? 0, min: 0, max: opts.max, integer: opts.integer, label: 'animation position' },
+    play: { kind: 'bool', default: false, label: 'animation playing' },
+  };
+}
+
+/** Position after `dtMs` milliseconds of playing at `speed` (pure; exported for tests). */
+export function advance(t: number, dtMs: number, opts: { max: number; duration: number; speed: number; loop: boolean }): { t: number; ended: boolean } {
+  const rate = opts.max / Math.max(opts.duration, 1e-3); // position units per second at 1×
+  let next = t + (dtMs / 1000) * rate * opts.speed;
+  if (!(next < opts.max)) {
+    if (opts.loop && opts.max > 0) {
+      next = next % opts.max;
+      return { t: next, ended: false };
+    }
+    return { t: opts.max, ended: true };
+  }
+  return { t: Math.max(0, next), ended: false };
+}
+
+/** Clamp (and round, for integer timelines) a position into [0, max]; NaN → 0. */
+export function clampPosition(t: number, max: number, integer: boolean): number {
+  if (!Number.isFinite(t)) return 0;
+  const c = Math.min(max, Math.max(0, t));
+  return integer ? Math.round(c) : c;
+}
+
+export function prefersReducedMotion(): boolean {
+  return typeof window !== 'undefined' && typeof window.matchMedia === 'function' && window.matchMedia('(prefers-reduced-motion: reduce)').matches;
+}
+
+export interface TimelineOptions {
+  /** The position from the URL (the scene's `t` parameter). */
+  t: number;
+  /** `play` from the URL. */
+  play: boolean;
+  /** The scene's setParams: the timeline writes `t` and `play` through it. */
+  setParams: (patch: { t?: number; play?: boolean }) => void;
+  /** End of the timeline: 1 for a 0…1 timeline, N for a sample index. */
+  max: number;
+  /** Positions are whole steps (e.g. a sample index); the visible position is floor(t). */
+  integer?: boolean;
+  /** Seconds from 0 to max at 1× speed. */
+  duration: number;
+  /** What "step" adds (default: 1 for integer timelines, max/100 otherwise). */
+  stepSize?: number;
+  /** Start over at 0 after the end (default false). The transport has a toggle. */
+  loop?: boolean;
+  /** The element whose visibility gates frames: no frames while it is off screen. */
+  visibleRef?: RefObject<Element | null>;
+  /** Register Space (play/pause) and s (step) as classroom shortcuts (default true). */
+  shortcuts?: boolean;
+}
+
+export interface Timeline {
+  /** Current position (integer timelines: a whole number). */
+  t: number;
+  max: number;
+  integer: boolean;
+  playing: boolean;
+  speed: number;
+  loop: boolean;
+  stepSize: number;
+  play: () => void;
+  pause: () => void;
+  toggle: () => void;
+  /** Pause and move one step forward. */
+  step: () => void;
+  /** Pause at position 0. */
+  reset: () => void;
+  /** Move to a position (keeps playing if playing). */
+  seek: (t: number) => void;
+  setSpeed: (s: number) => void;
+  setLoop: (loop: boolean) => void;
+}
+
+/** The timeline hook: see the module comment. */
+export function useTimeline(opts: TimelineOptions): Timeline {
+  const { max, duration, setParams } = opts;
+  const integer = !!opts.integer;
+  const stepSize = opts.stepSize ?? (integer ? 1 : max / 100);
+  const [exact, setExact] = useState(() => clampPosition(opts.t, max, integer));
+  const [playing, setPlaying] = useState(() => opts.play && !prefersReducedMotion());
+  const [speed, setSpeed] = useState(1);
+  const [loop, setLoop] = useState(!!opts.loop);
+
+  // live values for the frame loop and callbacks
+  const live = useRef({ exact, playing, speed, loop, max, integer, duration, setParams });
+  live.current = { ...live.current, playing, speed, loop, max, integer, duration, setParams };
+  live.current.exact = exact;
+
+  // what we last wrote to the URL, so external changes (hashchange, host API) can be told apart
+  const written = useRef({ t: clampPosition(opts.t, max, integer), play: opts.play });
+
+  // external change of `t` (hashchange, host API seek, the scene's "opening state" reset)
+  useEffect(() => {
+    const t = clampPosition(opts.t, max, integer);
+    if (t !== written.current.t) {
+      written.current.t = t;
+      setExact(t);
+    }
+  }, [opts.t, max, integer]);
+  // external change of `play`
+  useEffect(() => {
+    if (opts.play !== written.current.play) {
+      written.current.play = opts.play;
+      setPlaying(opts.play && !prefersReducedMotion());
+    }
+  }, [opts.play]);
+  // a shorter timeline (e.g. fewer samples) clamps the position
+  useEffect(() => {
+    setExact((e) => clampPosition(e, max, false));
+  }, [max]);
+
+  const write = useCallback((patch: { t?: number; play?: boolean }) => {
+    if (patch.t !== undefined) written.current.t = patch.t;
+    if (patch.play !== undefined) written.current.play = patch.play;
+    live.current.setParams(patch);
+  }, []);
+
+  const stepSizeRef = useRef(stepSize);
+  stepSizeRef.current = stepSize;
+
+  const shown = (e: number) => (live.current.integer ? Math.floor(e + 1e-9) : e);
+
+  const pause = useCallback(() => {
+    setPlaying(false);
+    write({ t: shown(live.current.exact), play: false });
+  }, [write]);
+  const play = useCallback(() => {
+    let start = live.current.exact;
+    if (start >= live.current.max) start = 0; // play from the start after the end
+    setExact(start);
+    setPlaying(true);
+    write({ t: shown(start), play: true });
+  }, [write]);
+  const toggle = useCallback(() => (live.current.playing ? pause() : play()), [pause, play]);
+  const seek = useCallback(
+    (t: number) => {
+      const c = clampPosition(t, live.current.max, live.current.integer);
+      setExact(c);
+      write({ t: c });
+    },
+    [write],
+  );
+  const step = useCallback(() => {
+    const l = live.current;
+    let next = (l.integer ? Math.floor(l.exact + 1e-9) : l.exact) + stepSizeRef.current;
+    if (next > l.max) next = l.loop ? 0 : l.max;
+    next = clampPosition(next, l.max, l.integer);
+    setPlaying(false);
+    setExact(next);
+    write({ t: next, play: false });
+  }, [write]);
+  const reset = useCallback(() => {
+    setPlaying(false);
+    setExact(0);
+    write({ t: 0, play: false });
+  }, [write]);
+
+  // the frame loop: only while playing, on screen and in a visible tab
+  const visibleRef = opts.visibleRef;
+  const [onScreen, setOnScreen] = useState(true);
+  const [tabVisible, setTabVisible] = useState(() => typeof document === 'undefined' || document.visibilityState !== 'hidden');
+  useEffect(() => {
+    const on = () => setTabVisible(document.visibilityState !== 'hidden');
+    document.addEventListener('visibilitychange', on);
+    return () => document.removeEventListener('visibilitychange', on);
+  }, []);
+  useEffect(() => {
+    const el = visibleRef?.current;
+    if (!el || typeof IntersectionObserver === 'undefined') return;
+    const io = new IntersectionObserver((entries) => {
+      for (const e of entries) setOnScreen(e.isIntersecting);
+    });
+    io.observe(el);
+    return () => io.disconnect();
+  }, [visibleRef]);
+
+  useEffect(() => {
+    if (!playing || !onScreen || !tabVisible) return;
+    let raf = 0;
+    let last = -1;
+    const frame = (now: number) => {
+      raf = 0;
+      const l = live.current;
+      if (!l.playing) return;
+      const dt = last < 0 ? 0 : Math.min(100, now - last); // a long gap (e.g. a stall) does not jump
+      last = now;
+      const { t, ended } = advance(l.exact, dt, { max: l.max, duration: l.duration, speed: l.speed, loop: l.loop });
+      l.exact = t;
+      setExact(t);
+      if (ended) {
+        setPlaying(false);
+        write({ t: shown(t), play: false });
+        return;
+      }
+      raf = requestAnimationFrame(frame);
+    };
+    raf = requestAnimationFrame(frame);
+    return () => {
+      if (raf) cancelAnimationFrame(raf);
+    };
+  }, [playing, onScreen, tabVisible, write]);
+
+  useShortcuts(opts.shortcuts === false ? {} : { playPause: toggle, step });
+
+  const t = integer ? Math.floor(exact + 1e-9) : exact;
+  return useMemo(
+    () => ({ t, max, integer, playing, speed, loop, stepSize, play, pause, toggle, step, reset, seek, setSpeed, setLoop }),
+    [t, max, integer, playing, speed, loop, stepSize, play, pause, toggle, step, reset, seek],
+  );
+}
