@@ -127,25 +127,22 @@ export function View3D({ o, d, c, r, res, distanceRatio, height = 320, dark = fa
     const origin = new T.Mesh(new T.SphereGeometry(0.05, 16, 12), new T.MeshBasicMaterial({ color: 0x222222 }));
     const arrow = new T.ArrowHelper(new T.Vector3(1, 0, 0), new T.Vector3(), 0.6, 0xe8590c, 0.14, 0.08);
     const roots = [0, 1].map(() => new T.Mesh(new T.SphereGeometry(0.045, 16, 12), new T.MeshBasicMaterial({ color: 0x1f5fa8 })));
-    const axes = new T.AxesHelper(0.5);
-    axes.position.set(-1.6, -1.6, -1.2);
-    ctx.scene.add(sphere, wire, ray, back, origin, arrow, axes, ...roots);
+    ctx.scene.add(sphere, wire, ray, back, origin, arrow, ...roots);
     objs.current = { ctx, sphere, wire, ray, back, origin, arrow, roots };
     update();
     return () => {
       objs.current = null;
-      ctx.scene.remove(sphere, wire, ray, back, origin, arrow, axes, ...roots);
+      ctx.scene.remove(sphere, wire, ray, back, origin, arrow, ...roots);
       for (const m of [sphere, wire, ray, back, origin, ...roots]) {
         m.geometry.dispose();
         (m.material as THREE.Material).dispose();
       }
       arrow.dispose();
-      axes.dispose();
     };
   };
 
   return (
-    <Viewport ariaLabel="3D view of the ray and the sphere" height={height} setup={setup} testId="view-3d">
+    <Viewport ariaLabel="3D view of the ray and the sphere" height={height} setup={setup} testId="view-3d" phiZero={false}>
       {distanceRatio > FAR ? <p className="rs-3d-note">Centred on the sphere; the origin is {distanceRatio.toPrecision(3)} radii away.</p> : null}
     </Viewport>
   );
