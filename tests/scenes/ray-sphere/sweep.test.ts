@@ -138,3 +138,33 @@ describe('sweepSeries', () => {
     expect(schema.sweep.values).toEqual(['offset', 'rotate']);
   });
 });
+
+describe('t_min: secondary rays leaving the surface', () => {
+  it('with t ≥ 0 many surface points hit themselves (a root t ≈ 0); with t > t_min none do', async () => {
+    const { selfIntersectionSurvey } = await import('../../../src/scenes/ray-sphere/model');
+    for (const [c, r] of [
+      [[0, 0, 0], 1],
+      [[0.3, -1.7, 2.9], 0.7],
+      [[1e8, 0, 0], 1],
+    ] as const) {
+      for (const method of ['naive', 'stable'] as const) {
+        const s = selfIntersectionSurvey(c as unknown as [number, number, number], r, method, 400);
+        expect(s.count).toBe(400);
+        expect(s.withZero, `${c} ${method}`).toBeGreaterThan(40);
+        expect(s.withTMin).toBe(0);
+      }
+    }
+  });
+  it('the secondary ray from the current hit: its small root is the starting point itself', async () => {
+    const { secondaryFromHit, tMinFor } = await import('../../../src/scenes/ray-sphere/model');
+    const p = { ...base } as RaySphereParams;
+    const m = computeModel(p);
+    const sec = secondaryFromHit(m.input, m.chosen, 'stable')!;
+    expect(Math.abs(sec.offSurface)).toBeLessThan(1e-15);
+    // roots: ≈ 0 (the point itself) and ≈ −2r (the far side, behind)
+    expect(Math.abs(sec.res.t1!)).toBeLessThan(1e-15);
+    expect(sec.res.t0!).toBeCloseTo(-2, 12);
+    expect(sec.hitWithTMin).toBeNull();
+    expect(tMinFor(2)).toBe(2e-4);
+  });
+});

@@ -19,6 +19,8 @@ export interface View3DProps {
   distanceRatio: number;
   height?: number;
   dark?: boolean;
+  /** More points to keep in view (the ends of a sweep), so the view does not rescale while animating. */
+  fitExtra?: readonly V3[];
 }
 
 interface Objects {
@@ -34,15 +36,15 @@ interface Objects {
 
 const FAR = 60;
 
-export function View3D({ o, d, c, r, res, distanceRatio, height = 320, dark = false }: View3DProps) {
+export function View3D({ o, d, c, r, res, distanceRatio, height = 320, dark = false, fitExtra = [] }: View3DProps) {
   const objs = useRef<Objects | null>(null);
-  const latest = useRef({ o, d, c, r, res, distanceRatio, dark });
-  latest.current = { o, d, c, r, res, distanceRatio, dark };
+  const latest = useRef({ o, d, c, r, res, distanceRatio, dark, fitExtra });
+  latest.current = { o, d, c, r, res, distanceRatio, dark, fitExtra };
 
   const update = () => {
     const ob = objs.current;
     if (!ob) return;
-    const { o, d, c, r, res, distanceRatio, dark } = latest.current;
+    const { o, d, c, r, res, distanceRatio, dark, fitExtra } = latest.current;
     const far = distanceRatio > FAR;
     // view centre and scale (in doubles)
     let centre: V3;
@@ -51,7 +53,7 @@ export function View3D({ o, d, c, r, res, distanceRatio, height = 320, dark = fa
       centre = c;
       extent = 2.5 * r;
     } else {
-      const pts: V3[] = [o, c];
+      const pts: V3[] = [o, c, ...fitExtra];
       if (res && res.t1 !== null) pts.push([o[0] + res.t1 * d[0], o[1] + res.t1 * d[1], o[2] + res.t1 * d[2]]);
       const lo = [0, 1, 2].map((i) => Math.min(...pts.map((p) => p[i]!), c[i]! - r));
       const hi = [0, 1, 2].map((i) => Math.max(...pts.map((p) => p[i]!), c[i]! + r));
