@@ -232,18 +232,18 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
           title="The quadratic, Δ ≥ 0 and t ≥ 0"
           asks={
             <>
-              <p>
+              <p className="rs-asks">
                 A ray p(t) = <b>o</b> + t <b>d</b> (origin <b>o</b>, direction <b>d</b>, t ≥ 0) is traced against a sphere with centre <b>C</b> and radius r. Substitute the ray into
-                the sphere’s equation |p − <b>C</b>|² = r² to get a quadratic in t, and state when the ray hits the sphere and which root is the hit.
+                the sphere’s equation |p − <b>C</b>|² = r² to get a quadratic in t, and state when the ray hits the sphere and which root is the hit.{' '}
+                <span className="rs-small">(The key awards 2 marks for stating Δ ≥ 0 and 2 marks for stating t ≥ 0.)</span>
               </p>
-              <p className="rs-small">The key awards 2 marks for stating Δ ≥ 0 and 2 marks for stating t ≥ 0.</p>
             </>
           }
         >
           <div className="rs-stage" ref={stageRef}>
             <div className="rs-stage-fig">
-              <CaseBanner res={res} />
               <CrossSection o={o} d={d} c={c} r={r} res={res} distanceRatio={model.distanceRatio} onChange={(patch) => setSoon(patch)} fitExtra={ends} />
+              <CaseBanner res={res} />
               <TimelineTransport timeline={tl} label="Ray sweep" format={fmtPos} testId="timeline">
                 {sweepControls}
               </TimelineTransport>

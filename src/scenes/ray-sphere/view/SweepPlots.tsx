@@ -91,7 +91,7 @@ function Axes({ f, xd, yd, title, xLabel, yLabel }: { f: Frame; xd: [number, num
       <text x={(f.x0 + f.x1) / 2} y={f.H - 8} textAnchor="middle" className="mp-label">
         {xLabel}
       </text>
-      <text x={14} y={(f.y0 + f.y1) / 2} textAnchor="middle" className="mp-label" transform={`rotate(-90 14 ${(f.y0 + f.y1) / 2})`}>
+      <text x={4} y={(f.y0 + f.y1) / 2} textAnchor="middle" dominantBaseline="hanging" className="mp-label" transform={`rotate(-90 4 ${(f.y0 + f.y1) / 2})`}>
         {yLabel}
       </text>
     </g>
