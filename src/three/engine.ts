@@ -3,16 +3,111 @@
  * controls, rendering on demand. Loaded lazily by {@link ../three/Viewport} only when a viewport
  * comes on screen, so three.js never sits in a chunk that does not draw 3D.
  */
-import * as THREE from 'three';
+import type * as Three from 'three';
+import {
+  AmbientLight,
+  ArrowHelper,
+  AxesHelper,
+  BackSide,
+  BufferAttribute,
+  BufferGeometry,
+  ClampToEdgeWrapping,
+  Color,
+  DataTexture,
+  DirectionalLight,
+  DoubleSide,
+  DynamicDrawUsage,
+  Float32BufferAttribute,
+  Frustum,
+  FrontSide,
+  GridHelper,
+  Line,
+  LineBasicMaterial,
+  LineDashedMaterial,
+  LineLoop,
+  LineSegments,
+  LinearFilter,
+  Material,
+  Matrix4,
+  Mesh,
+  MeshBasicMaterial,
+  MeshLambertMaterial,
+  MeshStandardMaterial,
+  PerspectiveCamera,
+  PlaneGeometry,
+  Points,
+  PointsMaterial,
+  RGBAFormat,
+  Raycaster,
+  SRGBColorSpace,
+  Scene,
+  Sphere,
+  SphereGeometry,
+  Vector2,
+  Vector3,
+  WebGLRenderer,
+  WireframeGeometry,
+} from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+
+/**
+ * The part of three.js the scenes' 3D views use, handed to them as `ctx.THREE` (they must not
+ * import three themselves, or it would load with the scene instead of with the first viewport).
+ * Named imports rather than `import * as THREE` let the bundler drop the rest of three.js
+ * (loaders, animation, most geometries and materials). A view that needs another class adds it here.
+ */
+const THREE = {
+  AmbientLight,
+  ArrowHelper,
+  AxesHelper,
+  BackSide,
+  BufferAttribute,
+  BufferGeometry,
+  ClampToEdgeWrapping,
+  Color,
+  DataTexture,
+  DirectionalLight,
+  DoubleSide,
+  DynamicDrawUsage,
+  Float32BufferAttribute,
+  Frustum,
+  FrontSide,
+  GridHelper,
+  Line,
+  LineBasicMaterial,
+  LineDashedMaterial,
+  LineLoop,
+  LineSegments,
+  LinearFilter,
+  Material,
+  Matrix4,
+  Mesh,
+  MeshBasicMaterial,
+  MeshLambertMaterial,
+  MeshStandardMaterial,
+  PerspectiveCamera,
+  PlaneGeometry,
+  Points,
+  PointsMaterial,
+  RGBAFormat,
+  Raycaster,
+  SRGBColorSpace,
+  Scene,
+  Sphere,
+  SphereGeometry,
+  Vector2,
+  Vector3,
+  WebGLRenderer,
+  WireframeGeometry,
+} as const;
 
 export type ThreeModule = typeof THREE;
 
 export interface ViewportContext {
   THREE: ThreeModule;
-  scene: THREE.Scene;
-  camera: THREE.PerspectiveCamera;
-  renderer: THREE.WebGLRenderer;
+  scene: Three.Scene;
+  camera: Three.PerspectiveCamera;
+  renderer: Three.WebGLRenderer;
   controls: OrbitControls;
   /** Request one render (coalesced into the next animation frame). */
   invalidate: () => void;
@@ -55,32 +150,60 @@ export interface Engine {
   dispose: () => void;
 }
 
-/** True when the browser can give a WebGL context (checked without three, so no console error). */
-export function webglAvailable(): boolean {
+/** Shortest time between two frames on a software WebGL (ms): 10 frames per second at most. */
+const SOFTWARE_FRAME_MS = 100;
+
+/** Renderer strings of WebGL implementations that run on the CPU (no GPU, or a blocklisted one). */
+const SOFTWARE_GL = /swiftshader|llvmpipe|softpipe|software|basic render/i;
+let probed: { available: boolean; software: boolean } | null = null;
+
+/**
+ * Can the browser give a WebGL context, and is it a software one (SwiftShader, llvmpipe …)?
+ * Checked once, without three (so no console error), and the probe context is released.
+ */
+export function probeWebGL(): { available: boolean; software: boolean } {
+  if (probed) return probed;
   try {
     const c = document.createElement('canvas');
-    return !!(c.getContext('webgl2') ?? c.getContext('webgl'));
+    const gl = (c.getContext('webgl2') ?? c.getContext('webgl')) as WebGLRenderingContext | null;
+    if (!gl) return (probed = { available: false, software: false });
+    // Chromium reports the real renderer in RENDERER; others through WEBGL_debug_renderer_info.
+    const dbg = gl.getExtension('WEBGL_debug_renderer_info');
+    const name = `${String(gl.getParameter(gl.RENDERER) ?? '')} ${dbg ? String(gl.getParameter(dbg.UNMASKED_RENDERER_WEBGL) ?? '') : ''}`;
+    gl.getExtension('WEBGL_lose_context')?.loseContext();
+    return (probed = { available: true, software: SOFTWARE_GL.test(name) });
   } catch {
-    return false;
+    return (probed = { available: false, software: false });
   }
 }
 
+/** True when the browser can give a WebGL context (checked without three, so no console error). */
+export function webglAvailable(): boolean {
+  return probeWebGL().available;
+}
+
 export function createEngine(container: HTMLElement, ariaLabel: string): Engine {
-  const renderer = new THREE.WebGLRenderer({ antialias: true, alpha: true, powerPreference: 'low-power' });
-  renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
+  // On a software WebGL (no usable GPU) every frame is drawn by the CPU and, with software
+  // compositing, read back synchronously on the main thread: at device pixel ratio 1.75–2 with 4×
+  // multisampling that is tens of ms per frame, and an animation of a few seconds blocks the page
+  // for seconds (measured: Lighthouse mobile, hemisphere). There, draw at 1 CSS px per pixel and
+  // without multisampling: several times fewer pixels to shade and read back.
+  const software = probeWebGL().software;
+  const renderer = new WebGLRenderer({ antialias: !software, alpha: true, powerPreference: 'low-power' });
+  renderer.setPixelRatio(software ? 1 : Math.min(window.devicePixelRatio || 1, 2));
   renderer.setClearColor(0x000000, 0);
   const canvas = renderer.domElement;
   canvas.setAttribute('role', 'img');
   canvas.setAttribute('aria-label', ariaLabel);
   container.appendChild(canvas);
 
-  const scene = new THREE.Scene();
-  const camera = new THREE.PerspectiveCamera(40, 1, 0.01, 1000);
+  const scene = new Scene();
+  const camera = new PerspectiveCamera(40, 1, 0.01, 1000);
   camera.up.set(0, 0, 1);
   camera.position.set(2.6, -3.2, 2.2);
   camera.lookAt(0, 0, 0);
-  scene.add(new THREE.AmbientLight(0xffffff, 0.6));
-  const sun = new THREE.DirectionalLight(0xffffff, 1.6);
+  scene.add(new AmbientLight(0xffffff, 0.6));
+  const sun = new DirectionalLight(0xffffff, 1.6);
   sun.position.set(2, -3, 5);
   scene.add(sun);
 
@@ -96,9 +219,16 @@ export function createEngine(container: HTMLElement, ariaLabel: string): Engine 
   const renderCbs = new Set<(axes: AxisDirs) => void>();
   let animating = false;
 
+  // Software WebGL: at most one frame per SOFTWARE_FRAME_MS, each followed by idle time (every
+  // frame there is a synchronous readback; an animation at 60 fps would leave no time for input).
+  const minFrameMs = software ? SOFTWARE_FRAME_MS : 0;
+  let lastFrame = -Infinity;
+  let timer = 0;
+
   const frame = (now: number) => {
     raf = 0;
     if (!visible) return;
+    lastFrame = performance.now();
     const dt = last ? Math.min((now - last) / 1000, 0.1) : 1 / 60;
     last = now;
     animating = false;
@@ -116,7 +246,14 @@ export function createEngine(container: HTMLElement, ariaLabel: string): Engine 
     else last = 0;
   };
   const schedule = () => {
-    if (!raf && visible) raf = requestAnimationFrame(frame);
+    if (raf || timer || !visible) return;
+    const wait = lastFrame + minFrameMs - performance.now();
+    if (wait > 0) {
+      timer = window.setTimeout(() => {
+        timer = 0;
+        if (!raf && visible) raf = requestAnimationFrame(frame);
+      }, wait);
+    } else raf = requestAnimationFrame(frame);
   };
   const invalidate = () => {
     needsRender = true;
@@ -203,20 +340,23 @@ export function createEngine(container: HTMLElement, ariaLabel: string): Engine 
     setVisible: (v) => {
       visible = v;
       if (v && (needsRender || frameCbs.size)) schedule();
-      if (!v && raf) {
+      if (!v && (raf || timer)) {
         cancelAnimationFrame(raf);
+        clearTimeout(timer);
         raf = 0;
+        timer = 0;
         last = 0;
       }
     },
     dispose: () => {
       if (raf) cancelAnimationFrame(raf);
+      clearTimeout(timer);
       ro.disconnect();
       controls.dispose();
       scene.traverse((o) => {
-        const m = o as THREE.Mesh;
+        const m = o as Three.Mesh;
         m.geometry?.dispose?.();
-        const mat = m.material as THREE.Material | THREE.Material[] | undefined;
+        const mat = m.material as Three.Material | Three.Material[] | undefined;
         if (Array.isArray(mat)) mat.forEach((x) => x.dispose());
         else mat?.dispose?.();
       });

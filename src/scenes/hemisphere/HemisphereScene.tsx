@@ -3,24 +3,25 @@
  * or a typed density) by inversion, watch the samples land, test them by χ², derive the steps with
  * live numbers, and use them for the Q2 Monte Carlo estimators.
  */
-import { lazy, Suspense, useEffect, useMemo, useRef, useState } from 'react';
+import { lazy, Suspense, useMemo, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
-import { ExprField, NumberField, Notice, Panel, Readout, SceneLayout, Select, Slider, formatNumber } from '../../ui';
-import { useWorkerTask } from '../../workers';
-import { tabulateHemisphereDensity, type TabulateResult } from '../../core/sampling';
+import { useCompiled, ExprField, NumberField, Notice, Panel, Readout, SceneLayout, Select, Slider, formatNumber } from '../../ui';
+import { useWorkerJob } from '../../workers';
 import type { SequenceKind } from '../../core/random';
-import { makeLobe, type DrawStats } from './model';
+import { lobeFromParams, type DrawStats } from './model';
 import { LOBES, MAX_N, POINT_SETS, type HemisphereSchema, type LobeId } from './params';
-import { useCompiled } from './useCompiled';
+import { compileThetaPhi } from './expr';
 import { UnitSquare } from './view/UnitSquare';
 import { Derivation } from './view/Derivation';
 import { MarginalPlots, Histogram2D } from './view/Plots';
-import { EstimateReadouts, RepeatView, type RepeatResult } from './view/Q2Panel';
+import { EstimateReadouts, RepeatView } from './view/Q2Panel';
 import { InvertedJacobian } from './view/InvertedJacobian';
-import type { RepeatArgs, StatsArgs } from './hemisphere.worker';
+import type { RepeatArgs, RepeatResult, StatsArgs } from './jobs';
+// Static, not lazy: the 3D panel is on the first screen, and a Suspense fallback of another height
+// shifted the layout when it arrived (three.js itself still loads lazily, inside Viewport).
+import { HemisphereView } from './view/HemisphereView';
 import './hemisphere.css';
 
-const HemisphereView = lazy(() => import('./view/HemisphereView').then((m) => ({ default: m.HemisphereView })));
 const StabilityPanel = lazy(() => import('./view/StabilityPanel').then((m) => ({ default: m.StabilityPanel })));
 
 const makeWorker = () => new Worker(new URL('./hemisphere.worker.ts', import.meta.url), { type: 'module' });
@@ -41,49 +42,27 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
   const inverted = params.jacobian === 'inverted';
   const isCustom = lobeId === 'custom';
 
-  const fc = useCompiled(params.f);
-  const pc = useCompiled(params.pdf, isCustom);
-  const tab: TabulateResult | null = useMemo(() => (isCustom && pc.status === 'ok' ? tabulateHemisphereDensity(pc.fn) : null), [isCustom, pc]);
+  const fc = useCompiled(params.f, compileThetaPhi);
+  const pc = useCompiled(params.pdf, compileThetaPhi, { enabled: isCustom });
+  const customDensity = isCustom && pc.status === 'ok' ? pc.fn : null;
+  const { lobe: baseLobe, tab } = useMemo(() => lobeFromParams(lobeId, params.exponent, customDensity), [lobeId, params.exponent, customDensity]);
   const customLobe = tab && tab.ok ? tab.lobe : null;
-  const baseLobe = useMemo(() => makeLobe(lobeId, params.exponent, customLobe), [lobeId, params.exponent, customLobe]);
   const lobe = inverted ? null : baseLobe;
 
-  // ---- statistics of one draw, in a worker --------------------------------------------------
-  const stats = useWorkerTask<DrawStats>(makeWorker, 'stats');
+  // ---- statistics of one draw, in a worker (./jobs statsJob) -----------------------------------
   const ready = fc.status !== 'pending' && (!isCustom || pc.status !== 'pending');
   const args: StatsArgs = useMemo(
     () => ({ lobe: lobeId, exponent: params.exponent, pdf: params.pdf, f: params.f, points: kind, seed: params.seed, n: params.n, sampleLobe: !inverted && !!baseLobe }),
     [lobeId, params.exponent, params.pdf, params.f, kind, params.seed, params.n, inverted, baseLobe],
   );
-  const key = JSON.stringify(args);
-  const startedKey = useRef<string | null>(null);
-  useEffect(() => {
-    if (!ready) return;
-    const t = setTimeout(() => {
-      startedKey.current = key;
-      stats.start(args);
-    }, 60);
-    return () => clearTimeout(t);
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [key, ready]);
-  const current = !stats.running && startedKey.current === key && stats.result ? stats.result : null;
+  const stats = useWorkerJob<DrawStats>(makeWorker, 'stats', args, { enabled: ready, delayMs: 60 });
+  const current = stats.result ?? null;
 
-  // ---- repeat many times ----------------------------------------------------------------------
-  const repeat = useWorkerTask<RepeatResult>(makeWorker, 'repeat');
+  // ---- repeat many times (on request; a change of parameters cancels and clears it) -----------
   const perRun = Math.min(params.n, 256);
-  const [repeatKey, setRepeatKey] = useState<string | null>(null);
-  const runRepeat = () => {
-    const a: RepeatArgs = { ...args, runs: REPEAT_RUNS, perRun };
-    setRepeatKey(key);
-    repeat.start(a);
-  };
-  useEffect(() => {
-    if (repeatKey !== null && repeatKey !== key) {
-      repeat.cancel();
-      setRepeatKey(null);
-    }
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [key]);
+  const repeatArgs: RepeatArgs = useMemo(() => ({ ...args, runs: REPEAT_RUNS, perRun }), [args, perRun]);
+  const repeat = useWorkerJob<RepeatResult>(makeWorker, 'repeat', repeatArgs, { manual: true });
+  const runRepeat = repeat.run;
 
   // ---- readouts -------------------------------------------------------------------------------
   const k = baseLobe ? baseLobe.k : null;
@@ -103,7 +82,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
           label="p(θ, φ) per steradian (need not be normalized)"
           value={params.pdf}
           onCommit={(s) => setParams({ pdf: s })}
-          error={pc.status === 'error' ? pc.error : tab && !tab.ok ? tab.message : null}
+          error={pc.status === 'error' ? pc.message : tab && !tab.ok ? tab.message : null}
           hint="mathjs syntax in theta, phi, e.g. cos(theta)^2 * (2 + cos(phi))"
           testId="pdf-input"
         />
@@ -126,7 +105,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
         <Readout id="samples" label="samples drawn" value={samples} />
         <Readout id="chi2-p" label="χ² p-value" value={chi2 ? chi2.pValue : null} digits={4} />
       </div>
-      <p className="small" data-testid="stats-status" data-state={current ? 'ready' : stats.running ? 'running' : 'idle'}>
+      <p className="small stats-status" data-testid="stats-status" data-state={current ? 'ready' : stats.running ? 'running' : 'idle'}>
         {stats.running ? `computing in a worker… ${Math.round(stats.progress * 100)} %` : current ? 'statistics up to date' : ''}
       </p>
     </div>
@@ -141,7 +120,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
       ) : null}
       {isCustom && pc.status === 'error' ? (
         <Notice kind="error" testId="custom-error">
-          The typed density could not be used: {pc.error}. Nothing is sampled until it is fixed.
+          The typed density could not be used: {pc.message}. Nothing is sampled until it is fixed.
         </Notice>
       ) : null}
       {isCustom && tab && !tab.ok ? (
@@ -152,9 +131,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
       {isCustom && tab && tab.ok && tab.warning ? <Notice kind="warn">Approximate: {tab.warning}.</Notice> : null}
       <Panel title="Samples on the hemisphere">
         <div className="hemi-views">
-          <Suspense fallback={<p className="viewport-msg">Loading 3D view…</p>}>
-            <HemisphereView lobe={lobe} kind={kind} seed={params.seed} n={params.n} height={mode.present ? 460 : 380} />
-          </Suspense>
+          <HemisphereView lobe={lobe} kind={kind} seed={params.seed} n={params.n} height={mode.present ? 460 : 380} />
           <UnitSquare kind={kind} seed={params.seed} n={params.n} size={mode.present ? 280 : 220} />
         </div>
         {!lobe ? <p className="small">No samples: {inverted ? 'the inverted variant is not a density.' : 'the density is not valid yet.'}</p> : null}
@@ -182,18 +159,27 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
         </Panel>
       ) : null}
       <Panel title="Derivation (Q1), with live numbers">
-        <Derivation lobe={lobeId} exponent={params.exponent} custom={customLobe} customTex={pc.status === 'ok' ? pc.tex : null} inverted={inverted} />
+        <Derivation lobe={lobeId} exponent={params.exponent} custom={customLobe} customTex={pc.status === 'ok' ? (pc.tex ?? null) : null} inverted={inverted} />
       </Panel>
       <Panel title="Q2: Monte Carlo estimators on the hemisphere">
         <ExprField
           label="Integrand f(θ, φ)"
           value={params.f}
           onCommit={(s) => setParams({ f: s })}
-          error={fc.status === 'error' ? fc.error : null}
+          error={fc.status === 'error' ? fc.message : null}
           hint="mathjs syntax in theta, phi; the default is cos(theta)"
           testId="f-input"
         />
-        <EstimateReadouts exact={exact} uniform={uniformEst} importance={importanceEst} importanceOff={importanceOff} />
+        <EstimateReadouts
+          exact={exact}
+          uniform={uniformEst}
+          importance={importanceEst}
+          importanceOff={importanceOff}
+          exactProblem={current && fc.status === 'ok' ? current.exactProblem : null}
+          exactNote={current?.exactNote}
+          fNonFinite={current && fc.status === 'ok' ? current.q2.fNonFinite : 0}
+          pZero={current && fc.status === 'ok' ? current.q2.pZero : 0}
+        />
         <p className="small">
           Both estimators use the same N points (ξ₁, ξ₂): the uniform one warps them to the hemisphere uniformly (p = 1/2π), the importance one
           with the chosen p{baseLobe ? ` (${baseLobe.label})` : ''}. With f = cos θ and the cosine lobe every term f/p equals π: zero variance.
@@ -205,7 +191,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
           {repeat.running ? <span role="status"> running… {Math.round(repeat.progress * 100)} %</span> : null}
           {repeat.error ? <Notice kind="error">{repeat.error}</Notice> : null}
         </div>
-        {repeat.result && repeatKey === key && exact !== null ? <RepeatView result={repeat.result} exact={exact} runs={REPEAT_RUNS} perRun={perRun} /> : null}
+        {repeat.result && exact !== null ? <RepeatView result={repeat.result} exact={exact} runs={REPEAT_RUNS} perRun={perRun} /> : null}
       </Panel>
       <Panel title="Numerical stability of the inversion formulas">
         <StabilityDetails />

@@ -22,16 +22,19 @@ import {
   samplePhongLobeBatch,
   sampleUniformHemisphere,
   sampleUniformHemisphereBatch,
+  HALF_PI,
+  TWO_PI,
   sphericalPhi,
+  sphericalTheta,
+  tabulateHemisphereDensity,
   uniformHemispherePdf,
+  type TabulateResult,
 } from '../../core/sampling';
-import { fillSequence2D, mix32, type SequenceKind } from '../../core/random';
+import { fillSequence2D, runSeed, type SequenceKind } from '../../core/random';
 import { hemisphereChi2, adaptiveIntegrate2D, type HemisphereChi2Result } from '../../core/verify';
 import { estimateFromTerms, type McEstimate } from '../../core/estimators';
 import type { LobeId } from './params';
 
-const TWO_PI = 2 * Math.PI;
-const HALF_PI = Math.PI / 2;
 
 /** A sampling density on the hemisphere, as the scene uses it: sampler, pdf and marginals. */
 export interface Lobe {
@@ -52,6 +55,18 @@ export interface Lobe {
   phiPdf: (phi: number) => number;
   /** True when p(θ, φ) = p(θ) p(φ). */
   separable: boolean;
+}
+
+/**
+ * The lobe the parameters ask for — the one builder the page, the worker and the tests share.
+ * Built-in ids directly; 'custom' by tabulating the typed density (`density`, null while it does
+ * not compile), with the tabulation's verdict in `tab` (null when nothing was tabulated).
+ */
+export function lobeFromParams(id: LobeId, exponent: number, density?: Integrand | null): { lobe: Lobe | null; tab: TabulateResult | null } {
+  if (id !== 'custom') return { lobe: makeLobe(id, exponent), tab: null };
+  if (!density) return { lobe: null, tab: null };
+  const tab = tabulateHemisphereDensity(density);
+  return { lobe: tab.ok ? makeLobe('custom', exponent, tab.lobe) : null, tab };
 }
 
 /** The lobe of the given id. `exponent` is used by Phong; `custom` needs its tabulated density. */
@@ -125,11 +140,6 @@ function uniformPhiPdf(phi: number): number {
   return phi >= 0 && phi < TWO_PI ? 1 / TWO_PI : 0;
 }
 
-/** Derive an independent seed for run r of many (hash; distinct runs give unrelated point sets). */
-export function runSeed(seed: number, r: number): number {
-  return mix32((seed >>> 0) ^ mix32(r + 0x5bd1e995));
-}
-
 /** The n points (ξ₁, ξ₂) of the chosen set, interleaved, into `out` (length ≥ 2n). */
 export function drawUniforms(kind: SequenceKind, seed: number, n: number, out = new Float64Array(2 * n)): Float64Array {
   return fillSequence2D(kind, seed, n, out);
@@ -141,11 +151,6 @@ export function drawDirections(lobe: Lobe, kind: SequenceKind, seed: number, n: 
   const dirs = new Float64Array(3 * n);
   lobe.sampleBatch(u, dirs, n);
   return { u, dirs };
-}
-
-/** θ ∈ [0, π] of a unit vector's z (clamped acos is fine for display binning). */
-function thetaOf(x: number, y: number, z: number): number {
-  return Math.atan2(Math.hypot(x, y), z);
 }
 
 /** A histogram normalized as a density (counts/(N·Δ)), with bin centres, beside the model density. */
@@ -168,7 +173,7 @@ export function marginalHistograms(lobe: Lobe, dirs: Float64Array, n: number, bi
     const x = dirs[3 * i]!;
     const y = dirs[3 * i + 1]!;
     const z = dirs[3 * i + 2]!;
-    const t = thetaOf(x, y, z);
+    const t = sphericalTheta(x, y, z);
     const p = sphericalPhi(x, y);
     if (t >= 0 && t <= HALF_PI) ct[Math.min(bins - 1, Math.floor(t / wt))]++;
     if (p >= 0 && p < TWO_PI) cp[Math.min(bins - 1, Math.floor(p / wp))]++;
@@ -210,14 +215,86 @@ export type Integrand = (theta: number, phi: number) => number;
  * Gauss–Legendre quadrature (core/verify). NaN when f is not finite somewhere it is evaluated.
  */
 export function exactIntegral(f: Integrand): number {
-  const v = adaptiveIntegrate2D((t, p) => f(t, p) * Math.sin(t), 0, HALF_PI, 0, TWO_PI, { relTol: 1e-12, maxDepth: 6 });
-  return Number.isFinite(v) ? v : NaN;
+  return checkedIntegral(f).value;
+}
+
+/** ∫ f dω, or NaN with the reason it has no value. */
+export interface CheckedIntegral {
+  value: number;
+  /** Why there is no value (f not finite somewhere, the quadrature does not converge); null if fine. */
+  problem: string | null;
+  /** The quadrature's own error estimate (summed over its final cells). */
+  error: number;
+  /** Set when the value is usable but less accurate than the readout's digits. */
+  note?: string;
+}
+
+/** Relative error above which the quadrature's value is not trusted (a divergent or unresolved integral). */
+const UNRESOLVED_REL = 1e-6;
+/** An unresolved error must shrink at least this much per level of refinement to count as converging. */
+const SHRINK_RATIO = 0.75;
+/** Relative error above which the value is not shown at all. */
+const UNTRUSTED_REL = 1e-2;
+
+function deg(x: number): string {
+  return `${(x * (180 / Math.PI)).toFixed(1)}°`;
+}
+
+/** A point (θ, φ) of a 64 × 128 grid (cell centres and edges) where f is not finite, or null. */
+export function findNonFinite(f: Integrand): { theta: number; phi: number } | null {
+  for (let i = 0; i <= 128; i++) {
+    const t = (i / 128) * HALF_PI;
+    for (let j = 0; j < 256; j++) {
+      const p = (j / 256) * TWO_PI;
+      if (!Number.isFinite(f(t, p))) return { theta: t, phi: p };
+    }
+  }
+  return null;
+}
+
+/**
+ * ∫ f dω with a verdict, like the monte-carlo scene's: NaN and a reason when f is not finite
+ * somewhere on the hemisphere, or when the adaptive quadrature's error does not shrink (at its
+ * depth limit a divergent integral, e.g. tan θ or 1/cos θ at the horizon, θ⁻² at the pole, or
+ * 1/(θ − 0.5) inside, keeps an error of the order of the integral itself).
+ */
+export function checkedIntegral(f: Integrand): CheckedIntegral {
+  const report = { error: NaN, resolved: false };
+  const v = adaptiveIntegrate2D((t, p) => f(t, p) * Math.sin(t), 0, HALF_PI, 0, TWO_PI, { relTol: 1e-12, maxDepth: 6, report });
+  if (!Number.isFinite(v)) {
+    const at = findNonFinite(f);
+    return {
+      value: NaN,
+      error: Infinity,
+      problem: at
+        ? `f is not finite (NaN or ±∞) at θ = ${deg(at.theta)}, φ = ${deg(at.phi)}, so ∫ f dω has no value`
+        : 'f is not finite (NaN or ±∞) somewhere on the hemisphere, so ∫ f dω has no value',
+    };
+  }
+  if (!(report.error <= UNRESOLVED_REL * Math.abs(v) + 1e-12)) {
+    // Not resolved to the tolerance: an integrable singularity's error still shrinks with depth
+    // (by 2^-1/2 per bisection for 1/√cos θ), a divergent one's does not (ln 2 · coefficient per
+    // bisection for a 1/x blow-up). Compare one level shallower.
+    const coarse = { error: NaN, resolved: false };
+    adaptiveIntegrate2D((t, p) => f(t, p) * Math.sin(t), 0, HALF_PI, 0, TWO_PI, { relTol: 1e-12, maxDepth: 5, report: coarse });
+    if (!(report.error < SHRINK_RATIO * coarse.error) || !(report.error <= UNTRUSTED_REL * Math.abs(v))) return {
+      value: NaN,
+      error: report.error,
+      problem: `the quadrature does not converge (its error estimate stays at ${report.error.toPrecision(2)} while refining): ∫ f dω diverges, or f has a singularity too strong to resolve`,
+    };
+    return { value: v, error: report.error, problem: null, note: `accurate to about ±${report.error.toPrecision(2)} only (f has a singularity the quadrature resolves slowly)` };
+  }
+  return { value: v, error: report.error, problem: null };
 }
 
 /** The two Q2 estimators on the same point set: uniform (2π/N) Σ f and importance (1/N) Σ f/p. */
 export interface Q2Estimates {
   uniform: McEstimate;
   importance: McEstimate;
+  /** Samples (of both point sets) where f itself is NaN or ±∞: the estimators have no value then. */
+  fNonFinite: number;
+  /** Importance samples where p = 0 (or is not finite) although f ≠ 0. */
+  pZero: number;
 }
 
 /**
@@ -229,11 +306,15 @@ export function q2Estimates(lobe: Lobe | null, f: Integrand, u: Float64Array, di
   const uni = scratch?.uni ?? new Float64Array(3 * n);
   const terms = scratch?.terms ?? new Float64Array(n);
   sampleUniformHemisphereBatch(u, uni, n);
+  let fNonFinite = 0;
+  let pZero = 0;
   for (let i = 0; i < n; i++) {
     const x = uni[3 * i]!;
     const y = uni[3 * i + 1]!;
     const z = uni[3 * i + 2]!;
-    terms[i] = TWO_PI * f(thetaOf(x, y, z), sphericalPhi(x, y));
+    const fv = f(sphericalTheta(x, y, z), sphericalPhi(x, y));
+    if (!Number.isFinite(fv)) fNonFinite++;
+    terms[i] = TWO_PI * fv;
   }
   const uniform = estimateFromTerms(terms, 0, n);
   let importance: McEstimate = { n: 0, estimate: NaN, variance: NaN, stderr: NaN, invalid: 0 };
@@ -242,13 +323,15 @@ export function q2Estimates(lobe: Lobe | null, f: Integrand, u: Float64Array, di
       const x = dirs[3 * i]!;
       const y = dirs[3 * i + 1]!;
       const z = dirs[3 * i + 2]!;
-      const fv = f(thetaOf(x, y, z), sphericalPhi(x, y));
+      const fv = f(sphericalTheta(x, y, z), sphericalPhi(x, y));
       const p = lobe.pdf(x, y, z);
+      if (!Number.isFinite(fv)) fNonFinite++;
+      else if (fv !== 0 && !(p > 0 && Number.isFinite(p))) pZero++;
       terms[i] = fv === 0 ? 0 : p > 0 && Number.isFinite(p) && Number.isFinite(fv) ? fv / p : NaN;
     }
     importance = estimateFromTerms(terms, 0, n);
   }
-  return { uniform, importance };
+  return { uniform, importance, fNonFinite, pZero };
 }
 
 /**
@@ -286,6 +369,10 @@ export interface DrawStats {
   chi2: HemisphereChi2Result | null;
   hist: { theta: DensityHistogram; phi: DensityHistogram } | null;
   exact: number;
+  /** Why ∫ f dω has no value (see {@link checkedIntegral}); null when it has one. */
+  exactProblem: string | null;
+  /** Set when the value is less accurate than its digits. */
+  exactNote?: string;
   q2: Q2Estimates;
 }
 
@@ -298,12 +385,15 @@ export function computeDrawStats(lobe: Lobe | null, f: Integrand | null, kind: S
     lobe.sampleBatch(u, dirs, n);
   }
   const nan: McEstimate = { n: 0, estimate: NaN, variance: NaN, stderr: NaN, invalid: 0 };
+  const exact = f ? checkedIntegral(f) : null;
   return {
     n,
     chi2: lobe && dirs ? chi2OfDirections(lobe, dirs, n) : null,
     hist: lobe && dirs ? marginalHistograms(lobe, dirs, n) : null,
-    exact: f ? exactIntegral(f) : NaN,
-    q2: f ? q2Estimates(lobe, f, u, dirs, n) : { uniform: nan, importance: nan },
+    exact: exact ? exact.value : NaN,
+    exactProblem: exact ? exact.problem : null,
+    ...(exact?.note ? { exactNote: exact.note } : {}),
+    q2: f ? q2Estimates(lobe, f, u, dirs, n) : { uniform: nan, importance: nan, fNonFinite: 0, pZero: 0 },
   };
 }
 

@@ -5,7 +5,7 @@
  * setDrawRange shows the first `shown` points. Nothing renders once the growth has finished
  * unless the camera moves. The warped (ξ₁, ξ₂) grid is drawn on the hemisphere.
  */
-import { useEffect, useRef, useState } from 'react';
+import { useEffect, useEffectEvent, useRef, useState } from 'react';
 import type * as THREE from 'three';
 import { Viewport, type ViewportContext } from '../../../three';
 import { Toggle, Transport, useShortcuts } from '../../../ui';
@@ -305,14 +305,14 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
   };
 
   // parameters changed: rebuild the grid, restart the growth (playing) or redraw at once (paused)
-  useEffect(() => {
+  const onParamsChange = useEffectEvent(() => {
     if (!objs.current) return;
     buildGrid();
     anim.current.playing = !!lobe;
     setPlaying(!!lobe);
     restart();
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [lobe, kind, seed, n]);
+  });
+  useEffect(() => onParamsChange(), [lobe, kind, seed, n]);
 
   useEffect(() => {
     const o = objs.current;

@@ -5,43 +5,71 @@
  */
 import { useMemo } from 'react';
 import { Notice, Plot, Readout, formatNumber } from '../../../ui';
-import type { McEstimate } from '../../../core/estimators';
+import { estimateFromTerms, type McEstimate } from '../../../core/estimators';
 
-export interface RepeatResult {
-  uniform: Float64Array;
-  importance: Float64Array;
-}
+import type { RepeatResult } from '../jobs';
 
+/** Mean, its standard error and the spread of the finite estimates (Welford, in the core). */
 function meanSe(a: Float64Array): { mean: number; se: number; sd: number } {
-  let s = 0;
-  let s2 = 0;
-  let m = 0;
-  for (const x of a) {
-    if (!Number.isFinite(x)) continue;
-    s += x;
-    s2 += x * x;
-    m++;
-  }
-  const mean = m ? s / m : NaN;
-  const v = m > 1 ? Math.max(0, (s2 - m * mean * mean) / (m - 1)) : NaN;
-  return { mean, se: Math.sqrt(v / m), sd: Math.sqrt(v) };
+  const e = estimateFromTerms(a);
+  return { mean: e.estimate, se: e.stderr, sd: e.n > 1 ? Math.sqrt(e.variance) : NaN };
 }
 
-export function EstimateReadouts({ exact, uniform, importance, importanceOff }: { exact: number | null; uniform: McEstimate | null; importance: McEstimate | null; importanceOff: string | null }) {
+export function EstimateReadouts({
+  exact,
+  uniform,
+  importance,
+  importanceOff,
+  exactProblem = null,
+  exactNote,
+  fNonFinite = 0,
+  pZero,
+}: {
+  exact: number | null;
+  uniform: McEstimate | null;
+  importance: McEstimate | null;
+  importanceOff: string | null;
+  /** Why ∫ f dω has no value (divergent, f not finite), shown instead of a number. */
+  exactProblem?: string | null;
+  exactNote?: string | undefined;
+  /** Samples where f itself is NaN or ±∞: then no estimate has a value. */
+  fNonFinite?: number;
+  /** Importance samples where p = 0 but f ≠ 0 (defaults to the estimate's invalid count). */
+  pZero?: number;
+}) {
+  const fBad = fNonFinite > 0;
+  const pBad = pZero ?? (fBad ? 0 : (importance?.invalid ?? 0));
   return (
     <div className="readouts">
-      <Readout id="mc-exact" label="∫ f dω (quadrature)" value={exact} digits={8} />
-      <Readout id="mc-uniform" label="uniform (2π/N) Σ f" value={uniform?.estimate ?? null} digits={8} note={uniform && Number.isFinite(uniform.stderr) ? `± ${formatNumber(uniform.stderr, 3)} (std. error)` : undefined} />
+      <Readout id="mc-exact" label="∫ f dω (quadrature)" value={exactProblem ? null : exact} digits={8} note={exactProblem ? 'no value' : exactNote} />
+      <Readout
+        id="mc-uniform"
+        label="uniform (2π/N) Σ f"
+        value={fBad ? null : (uniform?.estimate ?? null)}
+        digits={8}
+        note={fBad ? 'no value: f is not finite at some samples' : uniform && Number.isFinite(uniform.stderr) ? `± ${formatNumber(uniform.stderr, 3)} (std. error)` : undefined}
+      />
       <Readout
         id="mc-importance"
         label="importance (1/N) Σ f/p"
-        value={importanceOff ? null : (importance?.estimate ?? null)}
+        value={importanceOff || fBad ? null : (importance?.estimate ?? null)}
         digits={8}
-        note={importanceOff ?? (importance && Number.isFinite(importance.stderr) ? `± ${formatNumber(importance.stderr, 3)} (std. error)` : undefined)}
+        note={importanceOff ?? (fBad ? 'no value: f is not finite at some samples' : importance && Number.isFinite(importance.stderr) ? `± ${formatNumber(importance.stderr, 3)} (std. error)` : undefined)}
       />
-      {importance && importance.invalid > 0 ? (
+      {exactProblem ? (
+        <Notice kind="warn" testId="exact-problem">
+          ∫ f dω has no value here: {exactProblem}. The estimators below then have nothing to converge to.
+        </Notice>
+      ) : null}
+      {fBad ? (
+        <Notice kind="warn" testId="f-nonfinite">
+          f is not finite (NaN or ±∞) at {fNonFinite} of the sampled directions: f is undefined or overflows on part of the hemisphere, so the
+          estimates have no value (averaging only the finite terms would be biased). Change f so it is finite everywhere on the hemisphere.
+        </Notice>
+      ) : null}
+      {pBad > 0 ? (
         <Notice kind="warn">
-          {importance.invalid} sample(s) landed where p = 0 but f ≠ 0: importance sampling needs p &gt; 0 wherever f ≠ 0, so that estimate is biased.
+          {pBad} sample(s) landed where p = 0 but f ≠ 0: importance sampling needs p &gt; 0 wherever f ≠ 0, so that estimate is biased.
         </Notice>
       ) : null}
     </div>
