@@ -41,7 +41,7 @@ export function CrossSection({ o, d, c, r, res, distanceRatio, onChange, fitExtr
   // one SVG unit = one CSS pixel: labels and handles keep their size on small screens
   const figRef = useRef<HTMLElement>(null);
   const W = Math.max(280, useWidth(figRef, 640));
-  const H = Math.round(Math.min(460, Math.max(250, W * 0.62)));
+  const H = Math.round(Math.min(460, Math.max(280, W * 0.62)));
   const frameRef = useRef<Frame2D | null>(null);
   const viewRef = useRef<View | null>(null);
   const dragRef = useRef<{ target: Target; pointerId: number } | null>(null);
@@ -97,7 +97,8 @@ export function CrossSection({ o, d, c, r, res, distanceRatio, onChange, fitExtr
   }
   const bw = box[1] - box[0];
   const bh = box[3] - box[2];
-  const fitS = Math.max(bw / (W - 130), bh / (H - 110)) || 1;
+  // margins for labels and handles, smaller on a phone-sized figure
+  const fitS = Math.max(bw / (W - Math.min(130, 0.16 * W)), bh / (H - Math.min(110, 0.22 * H))) || 1;
   const fit: View = { cx: (box[0] + box[1]) / 2, cy: (box[2] + box[3]) / 2, s: fitS };
   let view = prevView;
   const inside = (v: View) =>
@@ -111,7 +112,7 @@ export function CrossSection({ o, d, c, r, res, distanceRatio, onChange, fitExtr
   const unY = (py: number) => v.cy - (py - H / 2) * v.s;
   const step = 10 ** Math.floor(Math.log10(v.s * 2));
 
-  const L = 130 * v.s; // direction arrow length: 130 px
+  const L = Math.min(130, 0.22 * W) * v.s; // direction arrow length: 130 px (less on a phone)
   const tip: [number, number] = [O2[0] + L * dir2[0], O2[1] + L * dir2[1]];
   const rAngle = Math.PI / 4;
   const rHandle: [number, number] = [C2[0] + r * Math.cos(rAngle), C2[1] + r * Math.sin(rAngle)];

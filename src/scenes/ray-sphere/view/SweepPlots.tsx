@@ -52,10 +52,10 @@ interface Frame {
   y1: number;
 }
 
-function makeFrame(W: number, H: number, xd: [number, number], yd: [number, number], padBottom = PAD.b): Frame {
+function makeFrame(W: number, H: number, xd: [number, number], yd: [number, number], padBottom = PAD.b, padTop = PAD.t): Frame {
   const x0 = PAD.l;
   const x1 = W - PAD.r;
-  const y0 = PAD.t;
+  const y0 = padTop;
   const y1 = H - padBottom;
   const X = (x: number) => x0 + ((x - xd[0]) / (xd[1] - xd[0])) * (x1 - x0);
   const Y = (y: number) => y1 - ((y - yd[0]) / (yd[1] - yd[0])) * (y1 - y0);
@@ -246,13 +246,13 @@ const DeltaStatic = memo(function DeltaStatic({ series: s, tangentX, f, xd, yd, 
         ))}
       </g>
       <g className="mp-legend">
-        <line x1={f.x1 - 196} x2={f.x1 - 176} y1={12} y2={12} className="mp-robust" />
-        <text x={f.x1 - 172} y={16} className="mp-tick">
+        <line x1={f.x0} x2={f.x0 + 20} y1={f.y0 - 12} y2={f.y0 - 12} className="mp-robust" />
+        <text x={f.x0 + 25} y={f.y0 - 7} className="mp-tick">
           robust
         </text>
-        <circle cx={f.x1 - 112} cy={12} r={2.6} className="mp-naive" />
-        <text x={f.x1 - 106} y={16} className="mp-tick">
-          textbook
+        <circle cx={f.x0 + 100} cy={f.y0 - 12} r={2.6} className="mp-naive" />
+        <text x={f.x0 + 107} y={f.y0 - 7} className="mp-tick">
+          textbook (dots)
         </text>
       </g>
     </g>
@@ -263,7 +263,7 @@ const DeltaStatic = memo(function DeltaStatic({ series: s, tangentX, f, xd, yd, 
 export function DeltaSweepPlot(p: DeltaPlotProps) {
   const box = useRef<HTMLDivElement>(null);
   const W = Math.max(260, useWidth(box, 520));
-  const H = Math.round(Math.min(320, Math.max(250, W * 0.55)));
+  const H = Math.round(Math.min(340, Math.max(270, W * 0.58)));
   const s = p.series;
   const xd = useMemo<[number, number]>(() => {
     const xs = s.x.filter(Number.isFinite);
@@ -279,7 +279,7 @@ export function DeltaSweepPlot(p: DeltaPlotProps) {
     return [lo - pad, hi + pad];
   }, [s]);
   // the case strip sits between the x tick labels and the axis label
-  const f = useMemo(() => makeFrame(W, H, xd, yd, 64), [W, H, xd, yd]);
+  const f = useMemo(() => makeFrame(W, H, xd, yd, 64, 50), [W, H, xd, yd]);
   const cx = Number.isFinite(p.x) ? f.X(Math.max(xd[0], Math.min(xd[1], p.x))) : f.x0;
   const dot = (v: number | null, cls: string) => (v === null || !Number.isFinite(v) ? null : <circle cx={cx} cy={Math.max(f.y0, Math.min(f.y1, f.Y(v)))} r={5.5} className={cls} />);
   return (
