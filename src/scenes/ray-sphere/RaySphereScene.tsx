@@ -59,6 +59,9 @@ const SWEEP_SECONDS = 10;
 const DistantImagesMemo = memo(DistantImages);
 const ErrorVsDistanceMemo = memo(ErrorVsDistance);
 const PrecisionTableMemo = memo(PrecisionTable);
+const PrecisionExplainerMemo = memo(function PrecisionExplainerMemo() {
+  return <PrecisionExplainer />;
+});
 
 export default function RaySphereScene({ params, setParams, mode }: SceneProps<typeof schema>) {
   const sweepMode: SweepMode = params.sweep === 'rotate' ? 'rotate' : 'offset';
@@ -105,7 +108,10 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
   // Heavy panels (KaTeX, the precision table) follow a throttled, deferred copy: the figure, the
   // plots and the readouts update every frame; the derivation at most every 200 ms (and always
   // with the final values).
-  const slow = useDeferredValue(useThrottled(model, 200));
+  // While the sweep plays they hold the numbers of the position where it started (a KaTeX
+  // re-render mid-animation costs more than a frame); they catch up when it pauses.
+  const held = useHeldWhile(model, tl.playing);
+  const slow = useDeferredValue(useThrottled(held, 200));
 
   const res = model.chosen;
   const { o, d, c, r } = model.input;
@@ -275,6 +281,11 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
             </div>
           </div>
           <DerivationBlock testId="derivation">
+            {tl.playing ? (
+              <p className="rs-small" data-testid="derivation-held">
+                The numbers below are those of the position where the sweep started; they follow the animation when you pause it.
+              </p>
+            ) : null}
             <DerivationSteps model={slow} />
           </DerivationBlock>
           <LiveAnswer testId="live-answer">
@@ -326,7 +337,7 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
         </Panel>
         <Panel title="Precision: textbook vs robust, against a double-double reference">
           <PrecisionTableMemo model={slow} />
-          <PrecisionExplainer />
+          <PrecisionExplainerMemo />
         </Panel>
         <div className="rs-explore-grid">
           <Panel title="A distant sphere, one ray per pixel">
@@ -345,6 +356,13 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
   );
 
   return <div className="rs-page">{main}</div>;
+}
+
+/** `value`, except while `hold` is true: then the value it had when holding began. */
+function useHeldWhile<T>(value: T, hold: boolean): T {
+  const ref = useRef(value);
+  if (!hold) ref.current = value;
+  return ref.current;
 }
 
 /** `value`, but changing at most once per `ms` (leading and trailing edges). */
@@ -421,9 +439,11 @@ function tx(x: number | null, digits = 6): string {
 /** Hit test for a root: a tick or a cross. */
 const yes = (b: boolean) => (b ? '\\;\\checkmark' : '\\;\\times');
 
-function DerivationSteps({ model }: { model: RaySphereModel }) {
+/** Memoised on the (throttled, held) model: a frame of the animation does not re-render it. */
+const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySphereModel }) {
   const res = model.chosen;
-  const survey = useMemo(() => selfIntersectionSurvey(model.input.c, model.input.r, res?.method ?? 'stable', 1000), [model.input.c, model.input.r, res?.method]);
+  const [cx, cy, cz] = model.input.c;
+  const survey = useMemo(() => selfIntersectionSurvey([cx, cy, cz], model.input.r, res?.method ?? 'stable', 1000), [cx, cy, cz, model.input.r, res?.method]);
   if (!res) return <p>No derivation: the inputs overflow.</p>;
   const { o, d, c, r } = model.input;
   const v = (p: readonly number[]) => `(${p.map((x) => tx(x, 4)).join(',\\, ')})`;
@@ -523,7 +543,7 @@ function DerivationSteps({ model }: { model: RaySphereModel }) {
       </ol>
     </div>
   );
-}
+});
 
 const SUP: Record<string, string> = { '-': '⁻', '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶', '7': '⁷', '8': '⁸', '9': '⁹' };
 
