@@ -47,7 +47,7 @@ export function ExamQ1({ c, xi, invertedShown, onShowInverted, answer1a, inverte
               { tex: `k\\cdot\\tfrac12\\int_0^{\\pi/2}\\sin 2\\theta\\,d\\theta\\;\\int_0^{2\\pi}e^{\\phi}\\,d\\phi = 1`, why: <>identity: sin 2θ = 2 sin θ cos θ, so sin θ cos θ = ½ sin 2θ</> },
               { tex: `k\\cdot\\tfrac12\\Big[-\\tfrac12\\cos 2\\theta\\Big]_0^{\\pi/2}\\int_0^{2\\pi}e^{\\phi}\\,d\\phi = 1`, why: 'integrate: an antiderivative of sin 2θ is −½ cos 2θ' },
               { tex: `\\Big[-\\tfrac12\\cos 2\\theta\\Big]_0^{\\pi/2} = -\\tfrac12(\\cos\\pi-\\cos 0) = -\\tfrac12(-1-1) = ${texNum(c.bracket, 10)}`, why: <>evaluate at the limits (computed: the θ-integral ½ · this = {texNumPlain(c.thetaIntegral)} by quadrature)</> },
-              { tex: `k\\cdot\\tfrac12\\,\\Big[e^{\\phi}\\Big]_0^{2\\pi} = k\\cdot\\tfrac12\\,(e^{2\\pi}-e^{0}) = k\\cdot\\tfrac12\\,(e^{2\\pi}-1) = 1`, why: <>the φ-integral: e^{'{2π}'} − 1 = {texNumPlain(c.phiIntegral, 10)} (quadrature)</> },
+              { tex: `k\\cdot\\tfrac12\\,\\Big[e^{\\phi}\\Big]_0^{2\\pi} = k\\cdot\\tfrac12\\,(e^{2\\pi}-e^{0}) = k\\cdot\\tfrac12\\,(e^{2\\pi}-1) = 1`, why: <>the φ-integral: e<sup>2π</sup> − 1 = {texNumPlain(c.phiIntegral, 10)} (quadrature)</> },
               { tex: `k = \\frac{2}{e^{2\\pi}-1} = \\frac{2}{${E}} = ${k}`, why: <>computed as 2/expm1(2π); check: ∫ p dω with this k = {texNumPlain(c.total, 12)} (quadrature)</> },
             ]}
           />
@@ -76,21 +76,21 @@ export function ExamQ1({ c, xi, invertedShown, onShowInverted, answer1a, inverte
             lines={[
               { tex: `p(\\theta,\\phi) = \\sin\\theta\\;k\\cos\\theta\\,e^{\\phi} = \\frac{2}{e^{2\\pi}-1}\\cos\\theta\\sin\\theta\\,e^{\\phi}`, why: 'the Jacobian sin θ times p(ω), with k from (a)' },
               { tex: `p(\\theta) = \\int_0^{2\\pi}p(\\theta,\\phi)\\,d\\phi = \\frac{2}{e^{2\\pi}-1}\\cos\\theta\\sin\\theta\\int_0^{2\\pi}e^{\\phi}\\,d\\phi`, why: 'marginalize φ: only e^φ depends on φ' },
-              { tex: `= \\frac{2}{e^{2\\pi}-1}\\cos\\theta\\sin\\theta\\,(e^{2\\pi}-1) = 2\\sin\\theta\\cos\\theta = \\sin 2\\theta`, why: <>the factor e^{'{2π}'} − 1 cancels; check: ∫₀^π/2 sin 2θ dθ = {texNumPlain(c.thetaMarginalTotal, 12)}</> },
+              { tex: `= \\frac{2}{e^{2\\pi}-1}\\cos\\theta\\sin\\theta\\,(e^{2\\pi}-1) = 2\\sin\\theta\\cos\\theta = \\sin 2\\theta`, why: <>the factor e<sup>2π</sup> − 1 cancels; check: ∫₀^π/2 sin 2θ dθ = {texNumPlain(c.thetaMarginalTotal, 12)}</> },
             ]}
           />
           <Steps
             label="Marginal of φ (Q1b)"
             testId="steps-1b-phi"
             lines={[
-              { tex: `p(\\phi) = \\int_0^{\\pi/2}p(\\theta,\\phi)\\,d\\theta = \\frac{1}{e^{2\\pi}-1}e^{\\phi}\\int_0^{\\pi/2}2\\cos\\theta\\sin\\theta\\,d\\theta`, why: 'marginalize θ: ½ · 2 = 1' },
+              { tex: `p(\\phi) = \\int_0^{\\pi/2}p(\\theta,\\phi)\\,d\\theta = \\frac{1}{e^{2\\pi}-1}e^{\\phi}\\int_0^{\\pi/2}2\\cos\\theta\\sin\\theta\\,d\\theta`, why: 'marginalize θ: only cos θ sin θ depends on θ; the 2 of k = 2/(e^(2π) − 1) moves inside the integral' },
               { tex: `= \\frac{e^{\\phi}}{e^{2\\pi}-1}\\Big[-\\tfrac12\\cos 2\\theta\\Big]_0^{\\pi/2} = \\frac{e^{\\phi}}{e^{2\\pi}-1}`, why: <>the bracket is {texNumPlain(c.bracket)}, as in (a); check: ∫₀^2π p(φ) dφ = {texNumPlain(c.phiMarginalTotal, 12)}</> },
               { tex: `p(\\theta,\\phi) = \\sin 2\\theta\\cdot\\frac{e^{\\phi}}{e^{2\\pi}-1} = p(\\theta)\\,p(\\phi)`, why: 'separable: θ and φ are independent, so each is sampled from its own CDF' },
             ]}
           />
           <KeyNote testId="keynote-stray-ephi">
-            in its p(θ) working (the version with the correct identity) the key pulls e^φ out in front of ∫₀^2π e^φ dφ while also keeping it inside: a stray e^φ
-            outside the integral. It survives one more line, p(θ) = 2 cos θ e^φ sin θ, and then disappears; the result p(θ) = sin 2θ is right.
+            in its p(θ) working (the version with the correct identity) the key pulls e<sup>φ</sup> out in front of ∫₀<sup>2π</sup> e<sup>φ</sup> dφ while also keeping it inside: a stray e<sup>φ</sup>
+            outside the integral. It survives one more line, p(θ) = 2 cos θ e<sup>φ</sup> sin θ, and then disappears; the result p(θ) = sin 2θ is right.
           </KeyNote>
           <h5 className="hemi-subhead">With the identity as printed on the paper</h5>
           <p data-testid="paper-identity">
@@ -119,7 +119,7 @@ export function ExamQ1({ c, xi, invertedShown, onShowInverted, answer1a, inverte
         </DerivationBlock>
         <LiveAnswer testId="answer-1b">
           <p>
-            p(θ) = sin 2θ on [0, π/2] and p(φ) = e^φ/(e^{'{2π}'} − 1) = {texNumPlain(c.k / 2, 8)} e^φ on [0, 2π); the histograms in (d) are drawn against these curves.
+            p(θ) = sin 2θ on [0, π/2] and p(φ) = e^φ/(e<sup>2π</sup> − 1) = {texNumPlain(c.k / 2, 8)} e^φ on [0, 2π); the histograms in (d) are drawn against these curves.
           </p>
         </LiveAnswer>
       </ExamPart>
