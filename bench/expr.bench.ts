@@ -17,7 +17,7 @@ for (let i = 0; i < N; i++) {
   u[2 * i + 1] = u[2 * i + 1]! * 2 * Math.PI;
 }
 const compiled = await compileExpression(SRC, ['theta', 'phi']);
-if (!compiled.ok) throw new Error(compiled.error);
+if (!compiled.ok) throw new Error(compiled.message);
 const fn = compiled.fn;
 const K = 2 / Math.expm1(2 * Math.PI);
 const native = (t: number, p: number) => K * Math.cos(t) * Math.exp(p);

@@ -7,3 +7,4 @@ export { useSeenOnce, observeVisibility } from './useInView';
 export { useTimeline, timelineParams, advance, clampPosition, prefersReducedMotion, TIMELINE_SPEEDS, type Timeline, type TimelineOptions } from './timeline';
 export { TimelineTransport, type TimelineTransportProps } from './TimelineTransport';
 export { ExamQuestion, ExamPart, Derivation, LiveAnswer, KeyNote, ExploreFurther, QuestionNav, questionHref } from './exam';
+export { useCompiled, type Compiled, type CompileOutcome } from './useCompiled';

@@ -1,2 +1,2 @@
 export { runWorkerTask, isCancelled, TaskCancelled, type RunOptions } from './run';
-export { useWorkerTask, type WorkerTaskState } from './useWorkerTask';
+export { useWorkerJob, type WorkerJob, type WorkerJobOptions } from './useWorkerJob';

@@ -7,8 +7,8 @@
 import type { Page } from '@playwright/test';
 import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
-import { computeDrawStats, makeLobe } from '../../src/scenes/hemisphere/model';
-import { examLobeK, tabulateHemisphereDensity } from '../../src/core/sampling';
+import { computeDrawStats, lobeFromParams } from '../../src/scenes/hemisphere/model';
+import { examLobeK } from '../../src/core/sampling';
 import type { LobeId } from '../../src/scenes/hemisphere/params';
 
 const cosTheta = (t: number) => Math.cos(t);
@@ -20,13 +20,9 @@ async function statsReady(page: Page) {
 }
 
 async function expectMatchesCore(page: Page, lobeId: LobeId, n: number, seed: number, exponent = 8, custom?: (t: number, p: number) => number) {
-  let tab = null;
-  if (custom) {
-    const r = tabulateHemisphereDensity(custom);
-    if (!r.ok) throw new Error(r.message);
-    tab = r.lobe;
-  }
-  const lobe = makeLobe(lobeId, exponent, tab)!;
+  const built = lobeFromParams(lobeId, exponent, custom);
+  if (built.tab && !built.tab.ok) throw new Error(built.tab.message);
+  const lobe = built.lobe!;
   const core = computeDrawStats(lobe, cosTheta, 'independent', seed, n);
   expect(Number(await readout(page, 'k'))).toBe(lobe.k);
   expect(Number(await readout(page, 'samples'))).toBe(n);

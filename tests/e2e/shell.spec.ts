@@ -147,9 +147,31 @@ test('present=1 enlarges type and offers keyboard shortcuts', async ({ page }) =
   await page.keyboard.press('?');
   const dialog = page.getByRole('dialog', { name: 'Keyboard shortcuts' });
   await expect(dialog).toBeVisible();
-  await expect(dialog).toContainText('play / pause');
+  // the home page has nothing to play: the list shows only the keys that do something here
+  await expect(dialog).toContainText('show this list');
+  await expect(dialog).not.toContainText('play / pause');
   await dialog.getByRole('button', { name: 'Close' }).click();
   await expect(dialog).toHaveCount(0);
+});
+
+test('present=1 on a scene lists its live keys; Esc closes the list', async ({ page }) => {
+  await openScene(page, '#/hemisphere?present=1');
+  await page.keyboard.press('?');
+  const dialog = page.getByRole('dialog', { name: 'Keyboard shortcuts' });
+  await expect(dialog).toBeVisible();
+  await expect(dialog).toContainText('play / pause');
+  await expect(dialog).toContainText('opening state');
+  await page.keyboard.press('Escape');
+  await expect(dialog).toHaveCount(0);
+});
+
+test('part= lands on the exam part and next/previous question links follow the exam', async ({ page }) => {
+  await openScene(page, '#/texture?part=3b');
+  // the scene may not have drawn its parts yet in older builds: the link must never break the page
+  await expect(page.getByTestId('next-question')).toHaveAttribute('href', /#\/monte-carlo\?.*part=4a/);
+  await expect(page.getByTestId('prev-question')).toHaveAttribute('href', /#\/hemisphere\?.*part=2a/);
+  await openScene(page, '#/texture?part=9z');
+  await expect(page.getByTestId('param-notice')).toContainText('part');
 });
 
 test('theme=dark and theme=light override the system theme', async ({ page }) => {

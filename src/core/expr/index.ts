@@ -3,8 +3,9 @@
  * when an expression is first used), check against a whitelist, compile to a closure tree.
  *
  *   const r = await compileExpression('cos(θ) * exp(phi)', ['theta', 'phi']);
- *   if (r.ok) r.fn(0.3, 1.2); else show(r.error);
+ *   if (r.ok) r.fn(0.3, 1.2); else show(r.message);
  */
+import type { Failure } from '../failure';
 import { checkAndCompile, canonicalizeTree, ExpressionError, MAX_EXPRESSION_LENGTH, type CompiledFn } from './compile';
 
 export * from './compile';
@@ -38,18 +39,21 @@ export type CompileResult =
       /** LaTeX for display with KaTeX. */
       tex: string;
     }
-  | { ok: false; error: string };
+  | Failure<CompileFailureKind>;
+
+/** Why an expression was refused: empty, too long, parser not loadable, syntax, not allowed (whitelist), nested too deeply. */
+export type CompileFailureKind = 'empty' | 'too-long' | 'unavailable' | 'syntax' | 'invalid' | 'too-deep';
 
 /**
  * Parse, check and compile a user expression in the given variables (e.g. ['theta', 'phi'] or
  * ['x']). Never throws and never evaluates anything unchecked: every failure is reported as
- * { ok: false, error } with a message for the person who typed it — syntax errors with the
+ * { ok: false, kind, message } with a message for the person who typed it — syntax errors with the
  * character position, "unknown symbol 'y' — use theta, phi", "function 'foo' is not allowed", …
  * Accepts θ/φ for theta/phi, π/τ for pi/tau. Evaluation is real-valued (Math.*): outside a
  * function's domain the result is NaN, which callers must treat as invalid (see tabulate.ts).
  */
 export function compileExpression(src: string, variables: readonly string[]): Promise<CompileResult> {
-  if (typeof src !== 'string') return Promise.resolve({ ok: false, error: 'the expression must be text' });
+  if (typeof src !== 'string') return Promise.resolve({ ok: false, kind: 'invalid', message: 'the expression must be text' });
   // Results are immutable, so identical requests share one (re-renders, workers, URL round trips).
   const key = variables.join(',') + '\u0000' + src;
   const hit = cache.get(key);
@@ -62,7 +66,7 @@ export function compileExpression(src: string, variables: readonly string[]): Pr
   cache.set(key, p);
   // a failed engine load may succeed later: do not keep that answer
   void p.then((r) => {
-    if (!r.ok && r.error === LOAD_ERROR && cache.get(key) === p) cache.delete(key);
+    if (!r.ok && r.kind === 'unavailable' && cache.get(key) === p) cache.delete(key);
   });
   if (cache.size > CACHE_SIZE) cache.delete(cache.keys().next().value!);
   return p;
@@ -74,21 +78,21 @@ const cache = new Map<string, Promise<CompileResult>>();
 
 async function compileUncached(src: string, variables: readonly string[]): Promise<CompileResult> {
   const trimmed = src.trim();
-  if (trimmed.length === 0) return { ok: false, error: 'the expression is empty' };
+  if (trimmed.length === 0) return { ok: false, kind: 'empty', message: 'the expression is empty' };
   if (src.length > MAX_EXPRESSION_LENGTH) {
-    return { ok: false, error: `the expression is too long (${src.length} characters; at most ${MAX_EXPRESSION_LENGTH})` };
+    return { ok: false, kind: 'too-long', message: `the expression is too long (${src.length} characters; at most ${MAX_EXPRESSION_LENGTH})` };
   }
   let engine: Engine;
   try {
     engine = await loadExpressionEngine();
   } catch {
-    return { ok: false, error: LOAD_ERROR };
+    return { ok: false, kind: 'unavailable', message: LOAD_ERROR };
   }
   let tree;
   try {
     tree = engine.parseToTree(src);
   } catch (e) {
-    return { ok: false, error: syntaxMessage(e) };
+    return { ok: false, kind: e instanceof RangeError ? 'too-deep' : 'syntax', message: syntaxMessage(e) };
   }
   try {
     const fn = checkAndCompile(tree, variables);
@@ -101,9 +105,9 @@ async function compileUncached(src: string, variables: readonly string[]): Promi
     }
     return { ok: true, fn, text: canon.toString(), tex };
   } catch (e) {
-    if (e instanceof ExpressionError) return { ok: false, error: e.message };
-    if (e instanceof RangeError) return { ok: false, error: 'the expression is nested too deeply' };
-    return { ok: false, error: `the expression could not be compiled: ${e instanceof Error ? e.message : String(e)}` };
+    if (e instanceof ExpressionError) return { ok: false, kind: 'invalid', message: e.message };
+    if (e instanceof RangeError) return { ok: false, kind: 'too-deep', message: 'the expression is nested too deeply' };
+    return { ok: false, kind: 'invalid', message: `the expression could not be compiled: ${e instanceof Error ? e.message : String(e)}` };
   }
 }
 

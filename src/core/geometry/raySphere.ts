@@ -36,6 +36,7 @@
  * A tangent point behind the origin (double root < 0) is 'behind'. The origin exactly on the
  * surface gives a root t = 0, which counts as a hit (t ≥ 0).
  */
+import type { Failure } from '../failure';
 
 /** A 3-vector as a tuple (x, y, z), z-up world space. */
 export type Vec3 = readonly [number, number, number];
@@ -70,11 +71,7 @@ export interface RaySphereHit {
 }
 
 /** Inputs that are not a ray and a sphere; `message` is written for the page. */
-export interface RaySphereError {
-  ok: false;
-  error: RaySphereErrorKind;
-  message: string;
-}
+export type RaySphereError = Failure<RaySphereErrorKind>;
 
 export type RaySphereResult = RaySphereHit | RaySphereError;
 
@@ -88,14 +85,14 @@ const EPS = Number.EPSILON / 2; // unit roundoff u = 2^-53
 export function validateRaySphere(o: Vec3, d: Vec3, c: Vec3, r: number): RaySphereError | null {
   const all = [o[0], o[1], o[2], d[0], d[1], d[2], c[0], c[1], c[2], r];
   if (!all.every(Number.isFinite)) {
-    return { ok: false, error: 'non-finite', message: 'Every coordinate and the radius must be finite numbers.' };
+    return { ok: false, kind: 'non-finite', message: 'Every coordinate and the radius must be finite numbers.' };
   }
   if (!(r > 0)) {
-    return { ok: false, error: 'bad-radius', message: `The radius must be positive (got r = ${r}); a sphere with r ≤ 0 has no surface.` };
+    return { ok: false, kind: 'bad-radius', message: `The radius must be positive (got r = ${r}); a sphere with r ≤ 0 has no surface.` };
   }
   const a = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
   if (!(a > 0)) {
-    return { ok: false, error: 'zero-direction', message: 'The direction d is zero (or too short to square in double precision): the ray points nowhere.' };
+    return { ok: false, kind: 'zero-direction', message: 'The direction d is zero (or too short to square in double precision): the ray points nowhere.' };
   }
   const fx = o[0] - c[0];
   const fy = o[1] - c[1];
@@ -106,7 +103,7 @@ export function validateRaySphere(o: Vec3, d: Vec3, c: Vec3, r: number): RaySphe
   // splits, which need |x| ≤ 2^996) finite: refuse coefficients beyond 2^960 ≈ 1e289.
   const LIMIT = 2 ** 960;
   if (!(a <= LIMIT && b * b <= LIMIT && 4 * a * ff <= LIMIT && 4 * a * r * r <= LIMIT && ff <= LIMIT)) {
-    return { ok: false, error: 'overflow', message: 'The numbers are too large: the quadratic’s coefficients overflow double precision.' };
+    return { ok: false, kind: 'overflow', message: 'The numbers are too large: the quadratic’s coefficients overflow double precision.' };
   }
   return null;
 }

@@ -10,6 +10,7 @@
  * Source: pbrt-v4 `util/sampling.h` (SampleLinear / LinearPDF / InvertLinearSample) and §A.1
  * (the inversion method); pbrt-v4 §A.4.1 for tabulated piecewise-constant distributions.
  */
+import type { Failure } from '../failure';
 import { integrate1D } from '../estimators/integrate1d';
 import { PiecewiseConstant1D } from './piecewise1D';
 
@@ -210,11 +211,9 @@ export function squarePdf1D(a: number, b: number, c = 2): Pdf1D {
 export type PdfProblemKind = 'not-finite' | 'negative' | 'not-normalizable' | 'zero' | 'zero-where-f-nonzero';
 
 /** A density that was rejected, with a plain-language message naming the place it fails. */
-export interface PdfProblem {
-  kind: PdfProblemKind;
+export interface PdfProblem extends Failure<PdfProblemKind> {
   /** Where it fails, if at a point. */
-  x?: number;
-  message: string;
+  readonly x?: number;
 }
 
 /** 4-point Gauss–Legendre nodes on [−1, 1] and weights (exact for cubics; used per table bin). */
@@ -237,7 +236,7 @@ export type TypedPdfResult =
       /** Z = ∫ₐᵇ p dx of the unnormalized density (adaptive Gauss–Kronrod). */
       norm: number;
     }
-  | { ok: false; problem: PdfProblem };
+  | PdfProblem;
 
 /**
  * Sampler over a piecewise-constant density with the given bin masses on [a, b] (bins of equal
@@ -300,10 +299,7 @@ export function tabulatedPdf1D(
   integrate?: (g: (x: number) => number, a: number, b: number) => { value: number; converged: boolean },
   kind = 'custom',
 ): TypedPdfResult {
-  const fail = (k: PdfProblemKind, message: string, x?: number): TypedPdfResult => ({
-    ok: false,
-    problem: x === undefined ? { kind: k, message } : { kind: k, x, message },
-  });
+  const fail = (k: PdfProblemKind, message: string, x?: number): TypedPdfResult => (x === undefined ? { ok: false, kind: k, message } : { ok: false, kind: k, x, message });
   if (!(Number.isFinite(a) && Number.isFinite(b) && a < b)) return fail('not-normalizable', `the interval [${a}, ${b}] is empty or not finite`);
   const h = (b - a) / bins;
   const masses = new Float64Array(bins);

@@ -20,6 +20,7 @@
  * Source: pbrt-v4 §A.4.2 (PiecewiseConstant2D) and §2.4.2 (sampling a tabulated environment map
  * by marginal and conditional); Gauss–Legendre probes after Numerical Recipes §4.6.
  */
+import type { Failure } from '../failure';
 import { DensityError, PiecewiseConstant1D } from './piecewise1D';
 import { PiecewiseConstant2D } from './piecewise2D';
 import { TWO_PI, TWO_PI_BELOW, clampUnit, sphericalPhi, type VecOut } from './sphericalCoords';
@@ -36,13 +37,10 @@ export interface TabulateOptions {
 }
 
 /** Why a typed density was rejected. */
-export type TabulateFailure = {
-  ok: false;
-  reason: 'negative' | 'nonfinite' | 'zero' | 'divergent' | 'error';
-  message: string;
+export interface TabulateFailure extends Failure<'negative' | 'nonfinite' | 'zero' | 'divergent' | 'error'> {
   /** Where the problem was found (θ, φ in radians), when it has a place. */
-  at?: { theta: number; phi: number };
-};
+  readonly at?: { theta: number; phi: number };
+}
 
 /** Result of {@link tabulateHemisphereDensity}. */
 export type TabulateResult = { ok: true; lobe: TabulatedHemisphere; warning?: string } | TabulateFailure;
@@ -66,12 +64,12 @@ function evalChecked(p: ThetaPhiDensity, theta: number, phi: number): number {
   try {
     v = p(theta, phi);
   } catch (e) {
-    throw new Invalid({ ok: false, reason: 'error', message: `evaluating the density failed at θ = ${fmt(theta)}, φ = ${fmt(phi)}: ${e instanceof Error ? e.message : String(e)}`, at: { theta, phi } });
+    throw new Invalid({ ok: false, kind: 'error', message: `evaluating the density failed at θ = ${fmt(theta)}, φ = ${fmt(phi)}: ${e instanceof Error ? e.message : String(e)}`, at: { theta, phi } });
   }
   if (typeof v !== 'number' || !Number.isFinite(v)) {
     throw new Invalid({
       ok: false,
-      reason: 'nonfinite',
+      kind: 'nonfinite',
       message: `the density is not a finite number at θ = ${fmt(theta)}, φ = ${fmt(phi)} (${typeof v !== 'number' ? `it gives a ${typeof v}` : Number.isNaN(v) ? 'it is undefined there' : 'it is infinite there'}); a pdf must be finite to be normalized`,
       at: { theta, phi },
     });
@@ -79,7 +77,7 @@ function evalChecked(p: ThetaPhiDensity, theta: number, phi: number): number {
   if (v < 0) {
     throw new Invalid({
       ok: false,
-      reason: 'negative',
+      kind: 'negative',
       message: `the density is negative (${fmt(v)}) at θ = ${fmt(theta)}, φ = ${fmt(phi)}; a pdf must be ≥ 0 everywhere`,
       at: { theta, phi },
     });
@@ -133,7 +131,7 @@ function probeDivergence(p: ThetaPhiDensity, total: number): TabulateFailure | n
       const [t0, , p0] = pr.region(scales[scales.length - 1]!);
       return {
         ok: false,
-        reason: 'divergent',
+        kind: 'divergent',
         message: `the density is not integrable at ${pr.name}: ${pr.explain} does not shrink as the region shrinks (mass ${fmt(masses[0]!)}, ${fmt(masses[1]!)}, ${fmt(masses[2]!)}, ${fmt(last)} in regions of size 2⁻¹⁰ … 2⁻⁴⁰), so ∫ p dω = ∞ and no k can normalize it`,
         at: { theta: t0, phi: p0 },
       };
@@ -165,7 +163,7 @@ export function tabulateHemisphereDensity(p: ThetaPhiDensity, opts: TabulateOpti
     const f = table(p, nz, nphi);
     let any = false;
     for (let i = 0; i < f.length; i++) if (f[i]! > 0) any = true;
-    if (!any) return { ok: false, reason: 'zero', message: 'the density is zero everywhere on the hemisphere, so it cannot be normalized' };
+    if (!any) return { ok: false, kind: 'zero', message: 'the density is zero everywhere on the hemisphere, so it cannot be normalized' };
     const lobe = new TabulatedHemisphere(f, nz, nphi);
     const div = probeDivergence(p, lobe.integral);
     if (div) return div;
@@ -182,8 +180,8 @@ export function tabulateHemisphereDensity(p: ThetaPhiDensity, opts: TabulateOpti
     return warning ? { ok: true, lobe, warning } : { ok: true, lobe };
   } catch (e) {
     if (e instanceof Invalid) return e.failure;
-    if (e instanceof DensityError) return { ok: false, reason: e.reason, message: e.message };
-    return { ok: false, reason: 'error', message: e instanceof Error ? e.message : String(e) };
+    if (e instanceof DensityError) return { ok: false, kind: e.reason, message: e.message };
+    return { ok: false, kind: 'error', message: e instanceof Error ? e.message : String(e) };
   }
 }
 

@@ -8,7 +8,7 @@ import { useEffect, useMemo, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
 import { MathTex, Notice, NumberField, Panel, Plot, Readout, SceneLayout, Select, Slider, Toggle, useShortcuts } from '../../ui';
 import type { PlotTrace } from '../../ui';
-import { useWorkerTask } from '../../workers';
+import { useWorkerJob } from '../../workers';
 import type { LightStrategy } from '../../core/lights';
 import { STRATEGIES, STRATEGY_LABEL, STRATEGY_SHORT, buildModel, convergence, drawSamples, estimateAll, floorJob, patchModel, targetValue, type StrategyEstimate, type TimingPoint } from './model';
 import { PRESETS, schema, type AreaLightParams } from './params';
@@ -40,45 +40,22 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
   // worker, so a slider drag never blocks the page. Same seeds and streams: the same numbers.
   const big = n > SYNC_MAX;
   const syncEstimates = useMemo(() => (big ? null : estimateAll(model, n, seed)), [big, model, n, seed]);
-  const estTask = useWorkerTask<StrategyEstimate[]>(makeWorker, 'estimates');
-  const estKey = JSON.stringify(params);
-  const { start: startEst, cancel: cancelEst } = estTask;
-  useEffect(() => {
-    if (!big) {
-      cancelEst();
-      return;
-    }
-    const t = setTimeout(() => startEst({ ...params }), 150);
-    return () => clearTimeout(t);
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [big, estKey, startEst, cancelEst]);
-  const estimates: StrategyEstimate[] = syncEstimates ?? (estTask.running ? null : estTask.result) ?? STRATEGIES.map((s) => ({ strategy: s, estimate: NaN, stderr: NaN, n }));
-  const pending = big && (estTask.running || !estTask.result);
+  const estTask = useWorkerJob<StrategyEstimate[]>(makeWorker, 'estimates', params, { enabled: big, delayMs: 150 });
+  const estimates: StrategyEstimate[] = syncEstimates ?? estTask.result ?? STRATEGIES.map((s) => ({ strategy: s, estimate: NaN, stderr: NaN, n }));
+  const pending = big && !estTask.result;
   const chosen = estimates.find((e) => e.strategy === strategy)!;
   const target = targetValue(model);
   const drawn = useMemo(() => drawSamples(model, strategy, DRAWN, seed), [model, strategy, seed]);
   const patch = useMemo(() => patchModel(model, params.pu, params.pv, params.psize, params.ptilt), [model, params.pu, params.pv, params.psize, params.ptilt]);
   const timingKey = JSON.stringify([model.p, model.lc, model.w, model.h, model.tilt, model.L, model.rho, model.occluder ? 1 : 0, seed]);
   // Convergence series (3 × 32768 samples) in the worker: ~0.1 s that a slider drag should not wait for.
-  const convTask = useWorkerTask<ReturnType<typeof convergence>>(makeWorker, 'convergence');
-  const startConv = convTask.start;
-  useEffect(() => {
-    const t = setTimeout(() => startConv({ params: { ...params }, nMax: 1 << 15 }), 120);
-    return () => clearTimeout(t);
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [timingKey, startConv]);
+  const convArgs = useMemo(() => ({ params, nMax: 1 << 15 }), [params]);
+  const convTask = useWorkerJob<ReturnType<typeof convergence>>(makeWorker, 'convergence', convArgs, { key: timingKey, delayMs: 120 });
   const conv = convTask.result;
 
   const job = useMemo(() => floorJob(model, seed), [model, seed]);
-  const jobKey = JSON.stringify(job);
 
-  const timing = useWorkerTask<TimingPoint[]>(makeWorker, 'timing');
-  const startTiming = timing.start;
-  useEffect(() => {
-    const t = setTimeout(() => startTiming({ ...params }), 400);
-    return () => clearTimeout(t);
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [timingKey, startTiming]);
+  const timing = useWorkerJob<TimingPoint[]>(makeWorker, 'timing', params, { key: timingKey, delayMs: 400 });
 
   const [playing, setPlaying] = useState(false);
   useShortcuts({
@@ -332,7 +309,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
         <p className="al-note">Each point: N = 16 … 4096 samples, RMSE over 24 independent runs, run time measured in a worker on this machine (best of three; noisy when the machine is busy). Lower-left wins.</p>
       </Panel>
       <Panel title="The floor, rendered with each strategy">
-        <FloorImages job={job} jobKey={jobKey} />
+        <FloorImages job={job} />
         <p className="al-note">
           {job.size} × {job.size} pixels of floor, {fmt(2 * job.half, 3)} units across, all at the same samples per pixel. The light’s footprint is brightest;
           the grain is each strategy’s variance.

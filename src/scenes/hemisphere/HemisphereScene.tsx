@@ -5,25 +5,24 @@
  * warp morph of the unit square onto the hemisphere, on the shared timeline (issue 12) — sits
  * right after the question. Samples, χ² and the Q2 estimators are computed in a worker.
  */
-import { lazy, memo, Suspense, useEffect, useMemo, useRef, useState } from 'react';
+import { lazy, memo, Suspense, useMemo, useRef, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
-import { ExprField, NumberField, Notice, Panel, Readout, Select, Slider, Toggle, TimelineTransport, useTimeline, formatNumber } from '../../ui';
+import { useCompiled, ExprField, NumberField, Notice, Panel, Readout, Select, Slider, Toggle, TimelineTransport, useTimeline, formatNumber } from '../../ui';
 import { ExamQuestion, ExploreFurther } from '../../ui/exam';
 import { MathTex } from '../../ui';
-import { useWorkerTask } from '../../workers';
-import { tabulateHemisphereDensity, type TabulateResult } from '../../core/sampling';
+import { useWorkerJob } from '../../workers';
 import { fillSequence2D, type SequenceKind } from '../../core/random';
-import { animDuration, animFrame, examChecks, examInversion, makeLobe, type AnimKind, type DrawStats, type Lobe } from './model';
+import { animDuration, animFrame, examChecks, examInversion, lobeFromParams, type AnimKind, type DrawStats, type Lobe } from './model';
 import { ANIMS, LOBES, MAX_N, POINT_SETS, type HemisphereSchema, type LobeId } from './params';
-import { useCompiled } from './useCompiled';
+import { compileThetaPhi } from './expr';
 import { UnitSquare } from './view/UnitSquare';
 import { Derivation } from './view/Derivation';
 import { MarginalPlots, Histogram2D } from './view/Plots';
-import { ImportanceReadouts, RepeatView, StderrNote, UniformReadouts, VarianceWarning, type RepeatResult } from './view/Q2Panel';
+import { ImportanceReadouts, RepeatView, StderrNote, UniformReadouts, VarianceWarning } from './view/Q2Panel';
 import { InvertedJacobian } from './view/InvertedJacobian';
 import { ExamQ1 } from './view/ExamQ1';
 import { ExamQ2, lobeTexOf } from './view/ExamQ2';
-import type { RepeatArgs, StatsArgs } from './hemisphere.worker';
+import type { RepeatArgs, RepeatResult, StatsArgs } from './jobs';
 import './hemisphere.css';
 
 const HemisphereView = lazy(() => import('./view/HemisphereView').then((m) => ({ default: m.HemisphereView })));
@@ -55,49 +54,27 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
   const isCustom = lobeId === 'custom';
   const fIsCos = params.f.replace(/\s+/g, '') === 'cos(theta)';
 
-  const fc = useCompiled(params.f);
-  const pc = useCompiled(params.pdf, isCustom);
-  const tab: TabulateResult | null = useMemo(() => (isCustom && pc.status === 'ok' ? tabulateHemisphereDensity(pc.fn) : null), [isCustom, pc]);
+  const fc = useCompiled(params.f, compileThetaPhi);
+  const pc = useCompiled(params.pdf, compileThetaPhi, { enabled: isCustom });
+  const customDensity = isCustom && pc.status === 'ok' ? pc.fn : null;
+  const { lobe: baseLobe, tab } = useMemo(() => lobeFromParams(lobeId, params.exponent, customDensity), [lobeId, params.exponent, customDensity]);
   const customLobe = tab && tab.ok ? tab.lobe : null;
-  const baseLobe = useMemo(() => makeLobe(lobeId, params.exponent, customLobe), [lobeId, params.exponent, customLobe]);
   const lobe = inverted ? null : baseLobe;
 
-  // ---- statistics of one draw, in a worker --------------------------------------------------
-  const stats = useWorkerTask<DrawStats>(makeWorker, 'stats');
+  // ---- statistics of one draw, in a worker (./jobs statsJob) -----------------------------------
   const ready = fc.status !== 'pending' && (!isCustom || pc.status !== 'pending');
   const args: StatsArgs = useMemo(
     () => ({ lobe: lobeId, exponent: params.exponent, pdf: params.pdf, f: params.f, points: kind, seed: params.seed, n: params.n, sampleLobe: !inverted && !!baseLobe }),
     [lobeId, params.exponent, params.pdf, params.f, kind, params.seed, params.n, inverted, baseLobe],
   );
-  const key = JSON.stringify(args);
-  const startedKey = useRef<string | null>(null);
-  useEffect(() => {
-    if (!ready) return;
-    const t = setTimeout(() => {
-      startedKey.current = key;
-      stats.start(args);
-    }, 60);
-    return () => clearTimeout(t);
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [key, ready]);
-  const current = !stats.running && startedKey.current === key && stats.result ? stats.result : null;
+  const stats = useWorkerJob<DrawStats>(makeWorker, 'stats', args, { enabled: ready, delayMs: 60 });
+  const current = stats.result ?? null;
 
-  // ---- repeat many times ----------------------------------------------------------------------
-  const repeat = useWorkerTask<RepeatResult>(makeWorker, 'repeat');
+  // ---- repeat many times (on request; a change of parameters cancels and clears it) -----------
   const perRun = Math.min(params.n, 256);
-  const [repeatKey, setRepeatKey] = useState<string | null>(null);
-  const runRepeat = () => {
-    const a: RepeatArgs = { ...args, runs: REPEAT_RUNS, perRun };
-    setRepeatKey(key);
-    repeat.start(a);
-  };
-  useEffect(() => {
-    if (repeatKey !== null && repeatKey !== key) {
-      repeat.cancel();
-      setRepeatKey(null);
-    }
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [key]);
+  const repeatArgs: RepeatArgs = useMemo(() => ({ ...args, runs: REPEAT_RUNS, perRun }), [args, perRun]);
+  const repeat = useWorkerJob<RepeatResult>(makeWorker, 'repeat', repeatArgs, { manual: true });
+  const runRepeat = repeat.run;
 
   // ---- readouts -------------------------------------------------------------------------------
   const k = baseLobe ? baseLobe.k : null;
@@ -120,7 +97,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
   const densityProblem =
     isCustom && pc.status === 'error' ? (
       <Notice kind="error" testId="custom-error">
-        The typed density could not be used: {pc.error}. Nothing is sampled until it is fixed.
+        The typed density could not be used: {pc.message}. Nothing is sampled until it is fixed.
       </Notice>
     ) : isCustom && tab && !tab.ok ? (
       <Notice kind="error" testId="custom-error">
@@ -137,7 +114,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
           label="p(θ, φ) per steradian (need not be normalized)"
           value={params.pdf}
           onCommit={(s) => setParams({ pdf: s })}
-          error={pc.status === 'error' ? pc.error : tab && !tab.ok ? tab.message : null}
+          error={pc.status === 'error' ? pc.message : tab && !tab.ok ? tab.message : null}
           hint="mathjs syntax in theta, phi, e.g. cos(theta)^2 * (2 + cos(phi))"
           testId="pdf-input"
         />
@@ -207,7 +184,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
       </Notice>
     ) : null;
 
-  const lobeTex = lobeTexOf(lobeId, params.exponent, k, pc.status === 'ok' ? pc.tex : null);
+  const lobeTex = lobeTexOf(lobeId, params.exponent, k, pc.status === 'ok' ? (pc.tex ?? null) : null);
   const repeatSection = (
     <>
       <div className="repeat-row">
@@ -217,7 +194,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
         {repeat.running ? <span role="status"> running… {Math.round(repeat.progress * 100)} %</span> : null}
         {repeat.error ? <Notice kind="error">{repeat.error}</Notice> : null}
       </div>
-      {repeat.result && repeatKey === key && exact !== null ? (
+      {repeat.result && exact !== null ? (
         <RepeatView result={repeat.result} exact={exact} runs={REPEAT_RUNS} perRun={perRun} lobe={lobeId} exponent={params.exponent} fIsCos={fIsCos} />
       ) : (
         <p className="small">Each run draws {perRun} fresh samples; the histogram of the {REPEAT_RUNS} estimates should centre on ∫ f dω.</p>
@@ -290,7 +267,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
               label="Integrand f(θ, φ)"
               value={params.f}
               onCommit={(s) => setParams({ f: s })}
-              error={fc.status === 'error' ? fc.error : null}
+              error={fc.status === 'error' ? fc.message : null}
               hint="mathjs syntax in theta, phi; the default is cos(theta)"
               testId="f-input"
             />
@@ -323,7 +300,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
       <ExploreFurther intro="Beyond the exam: other sampling densities, the numerical stability of the inversion formulas, and quasi-random point sets (chosen beside the figure).">
         {lobeId !== 'exam' ? (
           <Panel title={`Derivation for the chosen density (${baseLobe ? baseLobe.label : 'typed'})`}>
-            <Derivation lobe={lobeId} exponent={params.exponent} custom={customLobe} customTex={pc.status === 'ok' ? pc.tex : null} />
+            <Derivation lobe={lobeId} exponent={params.exponent} custom={customLobe} customTex={pc.status === 'ok' ? (pc.tex ?? null) : null} />
           </Panel>
         ) : null}
         <Panel title="Numerical stability of the inversion formulas">

@@ -25,7 +25,9 @@ import {
   sampleUniformHemisphere,
   sampleUniformHemisphereBatch,
   sphericalPhi,
+  tabulateHemisphereDensity,
   uniformHemispherePdf,
+  type TabulateResult,
 } from '../../core/sampling';
 import { fillSequence2D, mix32, type SequenceKind } from '../../core/random';
 import { hemisphereChi2, adaptiveIntegrate2D, type HemisphereChi2Result } from '../../core/verify';
@@ -54,6 +56,18 @@ export interface Lobe {
   phiPdf: (phi: number) => number;
   /** True when p(θ, φ) = p(θ) p(φ). */
   separable: boolean;
+}
+
+/**
+ * The lobe the parameters ask for — the one builder the page, the worker and the tests share.
+ * Built-in ids directly; 'custom' by tabulating the typed density (`density`, null while it does
+ * not compile), with the tabulation's verdict in `tab` (null when nothing was tabulated).
+ */
+export function lobeFromParams(id: LobeId, exponent: number, density?: Integrand | null): { lobe: Lobe | null; tab: TabulateResult | null } {
+  if (id !== 'custom') return { lobe: makeLobe(id, exponent), tab: null };
+  if (!density) return { lobe: null, tab: null };
+  const tab = tabulateHemisphereDensity(density);
+  return { lobe: tab.ok ? makeLobe('custom', exponent, tab.lobe) : null, tab };
 }
 
 /** The lobe of the given id. `exponent` is used by Phong; `custom` needs its tabulated density. */

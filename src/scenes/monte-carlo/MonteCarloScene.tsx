@@ -2,10 +2,10 @@
  * Monte Carlo integration and convergence (exam Q2, Q4). All figures come from ./model (pure, over
  * the core) and from the worker jobs in ./jobs; this file only wires parameters to views.
  */
-import { useEffect, useMemo, useState } from 'react';
+import { useMemo, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
-import { formatNumber, MathTex, NumberField, Notice, Panel, Readout, SceneLayout, Select, Slider, useShortcuts } from '../../ui';
-import { useWorkerTask } from '../../workers';
+import { formatNumber, MathTex, useCompiled, NumberField, Notice, Panel, Readout, SceneLayout, Select, Slider, useShortcuts } from '../../ui';
+import { useWorkerJob } from '../../workers';
 import {
   EXAM_A,
   EXAM_B,
@@ -25,7 +25,7 @@ import {
 import { MAX_N, PDF_KINDS, STRATEGIES, type McSchema, type PdfKind, type Strategy } from './params';
 import type { McEstimate } from '../../core/estimators';
 import type { ProblemArgs } from './jobs';
-import { useCompiled } from './view/useCompiled';
+import { compileX, compileXFast } from './expr';
 import { FunctionPlot, ConvergencePanel, RmsePanel, HistogramPanel } from './view/Plots';
 import { WorkedTable } from './view/WorkedTable';
 import { SamplesField, FnField } from './view/Fields';
@@ -51,8 +51,8 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
   const seq = (STRATEGIES as readonly string[]).includes(params.strategy) ? (params.strategy as Strategy) : 'independent';
 
   // --- the integrand (typed; falls back to the exam's f with a message) -----------------------
-  const fc = useCompiled(params.f);
-  const fFallback = useCompiled(EXAM_F);
+  const fc = useCompiled(params.f, compileX, { fast: compileXFast });
+  const fFallback = useCompiled(EXAM_F, compileX, { fast: compileXFast });
   const fOk = fc.status === 'ok';
   const fSrc = fOk ? params.f : EXAM_F;
   const f: Fn1 | null = fc.status === 'ok' ? fc.fn : fc.status === 'error' && fFallback.status === 'ok' ? fFallback.fn : null;
@@ -61,7 +61,7 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
   const lim = checkLimits(params.a, params.b);
   const { a, b } = lim;
 
-  const pc = useCompiled(params.pdfexpr, pdfKind === 'custom');
+  const pc = useCompiled(params.pdfexpr, compileX, { enabled: pdfKind === 'custom', fast: compileXFast });
   const pdfExprError = pdfKind === 'custom' && pc.status === 'error' ? pc.message : null;
   const customFn = pdfKind === 'custom' && pc.status === 'ok' ? pc.fn : null;
 
@@ -90,7 +90,6 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
     if (given || !f || !choice || !choice.ok || n > SYNC_MAX_N) return null;
     return drawnEstimate(f, choice.sampler, seq, params.seed, n);
   }, [given, f, choice, seq, params.seed, n]);
-  const bigTask = useWorkerTask<McEstimate & { ms: number }>(makeWorker, 'estimate');
   const needBig = !given && !!f && !!choice && choice.ok && n > SYNC_MAX_N;
   const baseArgs: ProblemArgs | null = useMemo(
     () =>
@@ -107,14 +106,8 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
     [f, choice, fSrc, a, b, params.pdfexpr, params.seed, pdfKind, seq],
   );
   const bigKey = needBig ? `${fSrc}|${a}|${b}|${pdfKind}|${params.pdfexpr}|${seq}|${params.seed}|${n}` : '';
-  const bigStart = bigTask.start;
-  const bigCancel = bigTask.cancel;
-  useEffect(() => {
-    if (!bigKey || !baseArgs) return;
-    bigStart({ ...baseArgs, strategies: [{ pdf: pdfKind, seq, label: 'selected' }], n });
-    return () => bigCancel();
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [bigKey]);
+  const bigArgs = baseArgs ? { ...baseArgs, strategies: [{ pdf: pdfKind, seq, label: 'selected' }], n } : null;
+  const bigTask = useWorkerJob<McEstimate & { ms: number }>(makeWorker, 'estimate', bigArgs, { key: bigKey, enabled: !!bigKey && !!baseArgs });
 
   const chosenOk = !!choice && choice.ok;
   const est: McEstimate | null = given ? (chosenOk && table?.chosen && table.chosen.invalid === 0 ? table.chosen : null) : needBig ? (bigTask.result ?? null) : syncEstimate;

@@ -11,13 +11,14 @@ import {
   fitLogLogSlope,
   type McEstimate,
 } from '../../core/estimators';
+import type { Failure } from '../../core/failure';
 import type { SequenceKind } from '../../core/random/sequences';
 import type { Pdf1D } from '../../core/sampling/pdf1d';
 import { checkLimits, choosePdf, exactIntegral, runSeed, type Fn1, type PdfChoice } from './model';
 import type { PdfKind, Strategy } from './params';
 
 /** Compiles a user expression in x (the worker passes core/expr's compiler). */
-export type Compile = (src: string) => Promise<{ ok: true; fn: Fn1; tex?: string } | { ok: false; message: string }>;
+export type Compile = (src: string) => Promise<{ ok: true; fn: Fn1; tex?: string } | Failure>;
 
 /** The problem as plain data (what the page sends to the worker). */
 export interface ProblemArgs {

@@ -145,7 +145,7 @@ export function choosePdf(kind: PdfKind, fSrc: string, f: Fn1, a: number, b: num
         return { ok: true, kind, sampler: s, density: s.pdf, label: `p(x) = 3(${cs})²/${fmt(D)} (closed form, inverted by a cube root)`, note: null };
       }
       const r = proportionalPdf1D(f, a, b);
-      if (!r.ok) return { ok: false, kind, message: `p ∝ |f| cannot be built: ${r.problem.message}` };
+      if (!r.ok) return { ok: false, kind, message: `p ∝ |f| cannot be built: ${r.message}` };
       return {
         ok: true,
         kind,
@@ -158,7 +158,7 @@ export function choosePdf(kind: PdfKind, fSrc: string, f: Fn1, a: number, b: num
     case 'custom': {
       if (!custom) return { ok: false, kind, message: 'Type a pdf p(x) for the custom strategy.' };
       const r = customPdf1D(custom, a, b, f);
-      if (!r.ok) return { ok: false, kind, message: `This pdf cannot be used: ${r.problem.message}` };
+      if (!r.ok) return { ok: false, kind, message: `This pdf cannot be used: ${r.message}` };
       return {
         ok: true,
         kind,

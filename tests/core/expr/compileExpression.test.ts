@@ -16,13 +16,13 @@ const TP = ['theta', 'phi'] as const;
 
 async function ok(src: string, vars: readonly string[] = TP) {
   const r = await compileExpression(src, vars);
-  if (!r.ok) throw new Error(`expected '${src}' to compile, got: ${r.error}`);
+  if (!r.ok) throw new Error(`expected '${src}' to compile, got: ${r.message}`);
   return r;
 }
 async function err(src: string, vars: readonly string[] = TP): Promise<string> {
   const r = await compileExpression(src, vars);
   if (r.ok) throw new Error(`expected '${src}' to be rejected`);
-  return r.error;
+  return r.message;
 }
 
 describe('compileExpression: whitelist rejections with clear messages', () => {

@@ -15,7 +15,7 @@ describe('compileExpression never throws and only compiles safe expressions (fuz
       fc.asyncProperty(fc.array(fc.constantFrom(...TOKENS), { maxLength: 40 }), async (parts) => {
         const src = parts.join('');
         const r = await compileExpression(src, ['theta', 'phi']);
-        if (!r.ok) return typeof r.error === 'string' && r.error.length > 0;
+        if (!r.ok) return typeof r.message === 'string' && r.message.length > 0;
         const v = r.fn(0.3, 1.7);
         return typeof v === 'number' && typeof r.tex === 'string' && typeof r.text === 'string';
       }),
@@ -27,7 +27,7 @@ describe('compileExpression never throws and only compiles safe expressions (fuz
     await fc.assert(
       fc.asyncProperty(fc.string({ unit: 'grapheme', maxLength: 80 }), async (src) => {
         const r = await compileExpression(src, ['x']);
-        return r.ok ? typeof r.fn(1) === 'number' : r.error.length > 0;
+        return r.ok ? typeof r.fn(1) === 'number' : r.message.length > 0;
       }),
       { numRuns: 300 },
     );
@@ -38,6 +38,6 @@ describe('compileExpression never throws and only compiles safe expressions (fuz
     const long = 'x+'.repeat(MAX_EXPRESSION_LENGTH) + 'x';
     const r = await compileExpression(long, ['x']);
     expect(r.ok).toBe(false);
-    if (!r.ok) expect(r.error).toMatch(/too long/);
+    if (!r.ok) expect(r.message).toMatch(/too long/);
   });
 });

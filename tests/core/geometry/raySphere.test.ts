@@ -74,11 +74,11 @@ function bigSolve(o: Vec3, d: Vec3, c: Vec3, r: number): BigSolution {
 }
 
 function hit(res: ReturnType<typeof intersectRaySphere>): RaySphereHit {
-  if (!res.ok) throw new Error(`expected a result, got error ${res.error}`);
+  if (!res.ok) throw new Error(`expected a result, got error ${res.kind}`);
   return res;
 }
 function ref(res: ReturnType<typeof raySphereReference>): RaySphereReference {
-  if (!res.ok) throw new Error(`expected a result, got error ${res.error}`);
+  if (!res.ok) throw new Error(`expected a result, got error ${res.kind}`);
   return res;
 }
 const rel = (x: number, y: number) => Math.abs(x - y) / Math.abs(y);
@@ -152,7 +152,7 @@ describe('bad input → error result, never NaN', () => {
         const res = intersectRaySphere(o, d, c, r, method);
         expect(res.ok).toBe(false);
         if (!res.ok) {
-          expect(res.error).toBe(kind);
+          expect(res.kind).toBe(kind);
           expect(res.message.length).toBeGreaterThan(10);
         }
       }

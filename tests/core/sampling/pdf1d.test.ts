@@ -55,7 +55,7 @@ const cases: { name: string; pdf: Pdf1D }[] = [
 ];
 
 function okPdf(r: ReturnType<typeof customPdf1D>): Pdf1D {
-  if (!r.ok) throw new Error(r.problem.message);
+  if (!r.ok) throw new Error(r.message);
   return r.pdf;
 }
 
@@ -176,7 +176,7 @@ describe('typed densities (custom, proportional to f)', () => {
   it('proportional to f gives f/q ≈ ∫|f| for every sample (near-zero variance)', () => {
     const f = (x: number) => Math.exp(-x) * (2 + Math.cos(3 * x));
     const r = proportionalPdf1D(f, 0, 3);
-    if (!r.ok) throw new Error(r.problem.message);
+    if (!r.ok) throw new Error(r.message);
     const u = Float64Array.from({ length: 64 }, (_, i) => (i + 0.5) / 64);
     const x = new Float64Array(64);
     const p = new Float64Array(64);
@@ -188,27 +188,27 @@ describe('typed densities (custom, proportional to f)', () => {
     const neg = customPdf1D((x) => x - 1, 0, 2);
     expect(neg.ok).toBe(false);
     if (!neg.ok) {
-      expect(neg.problem.kind).toBe('negative');
-      expect(neg.problem.message).toMatch(/cannot be negative/);
-      expect(neg.problem.x!).toBeLessThan(1);
+      expect(neg.kind).toBe('negative');
+      expect(neg.message).toMatch(/cannot be negative/);
+      expect(neg.x!).toBeLessThan(1);
     }
     const zero = customPdf1D((x) => (x < 1 ? 0 : 1), 0, 2, (x) => (x + 2) ** 2);
     expect(zero.ok).toBe(false);
     if (!zero.ok) {
-      expect(zero.problem.kind).toBe('zero-where-f-nonzero');
-      expect(zero.problem.message).toMatch(/biased/);
+      expect(zero.kind).toBe('zero-where-f-nonzero');
+      expect(zero.message).toMatch(/biased/);
     }
     // zero where f is zero too is fine
     expect(customPdf1D((x) => (x < 1 ? 0 : 1), 0, 2, (x) => (x < 1 ? 0 : x)).ok).toBe(true);
     const div = customPdf1D((x) => 1 / x, 0, 1);
     expect(div.ok).toBe(false);
-    if (!div.ok) expect(div.problem.kind).toBe('not-normalizable');
+    if (!div.ok) expect(div.kind).toBe('not-normalizable');
     const nan = customPdf1D((x) => Math.sqrt(x - 1), 0, 2);
     expect(nan.ok).toBe(false);
-    if (!nan.ok) expect(nan.problem.kind).toBe('not-finite');
+    if (!nan.ok) expect(nan.kind).toBe('not-finite');
     const allZero = customPdf1D(() => 0, 0, 1);
     expect(allZero.ok).toBe(false);
-    if (!allZero.ok) expect(allZero.problem.kind).toBe('zero');
+    if (!allZero.ok) expect(allZero.kind).toBe('zero');
     const fzero = proportionalPdf1D(() => 0, 0, 1);
     expect(fzero.ok).toBe(false);
     // integrable singularity: 1/√x is a fine (unnormalized) density

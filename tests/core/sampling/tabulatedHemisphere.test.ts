@@ -80,17 +80,17 @@ describe('tabulated hemisphere density (typed lobe)', () => {
     const neg = tabulateHemisphereDensity((t) => Math.cos(t) - 0.5);
     expect(neg.ok).toBe(false);
     if (!neg.ok) {
-      expect(neg.reason).toBe('negative');
+      expect(neg.kind).toBe('negative');
       expect(neg.message).toMatch(/negative/);
     }
     const nan = tabulateHemisphereDensity((t) => Math.sqrt(1 - 2 * t));
-    expect(nan.ok || nan.reason).toBe('nonfinite');
+    expect(nan.ok || nan.kind).toBe('nonfinite');
     const zero = tabulateHemisphereDensity(() => 0);
-    expect(zero.ok || zero.reason).toBe('zero');
+    expect(zero.ok || zero.kind).toBe('zero');
     const thrower = tabulateHemisphereDensity(() => {
       throw new Error('boom');
     });
-    expect(thrower.ok || thrower.reason).toBe('error');
+    expect(thrower.ok || thrower.kind).toBe('error');
   });
 
   it("rejects non-integrable densities: the key's cot θ variant per solid angle, 1/cos θ, 1/φ, 1/(2π−φ)", () => {
@@ -104,7 +104,7 @@ describe('tabulated hemisphere density (typed lobe)', () => {
       const r = tabulateHemisphereDensity(p);
       expect(r.ok).toBe(false);
       if (!r.ok) {
-        expect(r.reason).toBe('divergent');
+        expect(r.kind).toBe('divergent');
         expect(r.message).toContain(where);
       }
     }

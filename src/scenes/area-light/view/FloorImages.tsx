@@ -4,10 +4,10 @@
  * progress and cancel); the canvases are repainted only when a new pass arrives.
  */
 import { useEffect, useRef } from 'react';
-import { useWorkerTask } from '../../../workers';
+import { useWorkerJob } from '../../../workers';
 import { Readout } from '../../../ui';
 import { STRATEGIES, STRATEGY_LABEL, type FloorJob } from '../model';
-import type { FloorFrame } from '../floor.worker';
+import type { FloorFrame } from '../jobs';
 
 const makeWorker = () => new Worker(new URL('../floor.worker.ts', import.meta.url), { type: 'module' });
 
@@ -34,17 +34,10 @@ function paint(canvas: HTMLCanvasElement | null, img: Float32Array | undefined, 
   ctx.putImageData(data, 0, 0);
 }
 
-export function FloorImages({ job, jobKey }: { job: FloorJob; jobKey: string }) {
-  const task = useWorkerTask<FloorFrame, FloorFrame>(makeWorker, 'render');
+export function FloorImages({ job }: { job: FloorJob }) {
+  // Restarts when the scene changes (debounced so dragging a slider does not queue renders).
+  const task = useWorkerJob<FloorFrame, FloorFrame>(makeWorker, 'render', job, { delayMs: 250 });
   const refs = useRef<(HTMLCanvasElement | null)[]>([]);
-  const { start } = task;
-
-  // Restart when the scene changes (debounced so dragging a slider does not queue renders).
-  useEffect(() => {
-    const t = setTimeout(() => start(job), 250);
-    return () => clearTimeout(t);
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [jobKey, start]);
 
   const fr = task.result ?? task.partial;
   useEffect(() => {

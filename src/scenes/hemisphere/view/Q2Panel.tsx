@@ -12,10 +12,7 @@ import type { SequenceKind } from '../../../core/random';
 import type { RmseResult, VarianceCheck } from '../model';
 import type { LobeId } from '../params';
 
-export interface RepeatResult {
-  uniform: Float64Array;
-  importance: Float64Array;
-}
+import type { RepeatResult } from '../jobs';
 
 const KIND_NAME: Record<SequenceKind, string> = { independent: 'independent', stratified: 'stratified', halton: 'Halton', sobol: 'Sobol' };
 

@@ -4,9 +4,9 @@
  * histogram of independent estimates. Long runs happen in the worker; the plots redraw when a
  * partial result arrives (the worker posts every ~120–150 ms, the hook coalesces to one frame).
  */
-import { useEffect, useId, useMemo, useRef, useState, useSyncExternalStore, type ReactNode } from 'react';
+import { useEffect, useMemo, useRef, useState, type ReactNode } from 'react';
 import { formatNumber, NumberField, Panel, Plot, Readout, useSeenOnce, type PlotTrace } from '../../../ui';
-import { useWorkerTask } from '../../../workers';
+import { useWorkerJob } from '../../../workers';
 import { histogram } from '../model';
 import type { ProblemArgs, RmseData, SeriesData } from '../jobs';
 
@@ -90,62 +90,14 @@ function useThrottled<T>(value: T, ms: number, immediate: boolean): T {
 /** Redraw interval of the plots while a run is in progress (ms). */
 const REDRAW_MS = 400;
 
-/** Start a worker task when the panel is first seen and whenever its key changes (debounced). */
 /**
- * One long run at a time: the panels' worker runs queue up (first come, first served), so the
- * workers never take every core from the page that draws their results (2 cores are common).
- */
-const slot = {
-  owner: null as string | null,
-  listeners: new Set<() => void>(),
-  set(owner: string | null) {
-    this.owner = owner;
-    for (const l of this.listeners) l();
-  },
-};
-const subscribeSlot = (l: () => void) => {
-  slot.listeners.add(l);
-  return () => slot.listeners.delete(l);
-};
-const getSlot = () => slot.owner;
-
-/**
- * Start a worker task when the panel is first seen and whenever its key changes (debounced), once
- * the shared slot is free; release the slot when the run ends, fails or is cancelled.
+ * Start a worker job when the panel is first seen and whenever its key changes (debounced). The
+ * panels share one queue: their runs go one at a time (first come, first served), so the workers
+ * never take every core from the page that draws their results (2 cores are common).
  */
 function useAutoRun<R, P>(method: string, makeWorker: () => Worker, args: unknown, key: string, box: React.RefObject<HTMLElement | null>) {
-  const task = useWorkerTask<R, P>(makeWorker, method);
   const seen = useSeenOnce(box, '100px');
-  const argsRef = useRef(args);
-  argsRef.current = args;
-  const id = useId();
-  const owner = useSyncExternalStore(subscribeSlot, getSlot, getSlot);
-  const [wanted, setWanted] = useState<string | null>(null);
-  const start = task.start;
-  // a new key (or first sight) asks for a run, after a short debounce
-  useEffect(() => {
-    if (!seen) return;
-    const t = setTimeout(() => setWanted(key), 250);
-    return () => clearTimeout(t);
-  }, [seen, key]);
-  // run when the slot is free (or already ours)
-  useEffect(() => {
-    if (wanted === null || (owner !== null && owner !== id)) return;
-    slot.set(id);
-    setWanted(null);
-    start(argsRef.current);
-  }, [wanted, owner, id, start]);
-  // release the slot when our run is over
-  const running = task.running;
-  useEffect(() => {
-    if (!running && wanted === null && slot.owner === id) {
-      const t = setTimeout(() => slot.owner === id && slot.set(null), 0);
-      return () => clearTimeout(t);
-    }
-  }, [running, wanted, id]);
-  useEffect(() => () => void (slot.owner === id && slot.set(null)), [id]);
-  const waiting = wanted !== null && owner !== null && owner !== id;
-  return { ...task, waiting, rerun: () => setWanted(`rerun-${performance.now()}`) };
+  return useWorkerJob<R, P>(makeWorker, method, args, { key, enabled: seen, delayMs: 250, queue: 'monte-carlo' });
 }
 
 function RunBar({ running, waiting, progress, onCancel, onRun, label }: { running: boolean; waiting: boolean; progress: number; onCancel: () => void; onRun: () => void; label: ReactNode }) {
@@ -179,7 +131,7 @@ export function ConvergencePanel({ args, nMax, exact, makeWorker, present, runTo
   const key = JSON.stringify([args, nMax]);
   const task = useAutoRun<ConvResult, ConvResult>('convergence', makeWorker, { ...args, nMax }, key, box);
   // classroom shortcut (space): run the convergence again
-  const rerun = task.rerun;
+  const rerun = task.run;
   const lastToken = useRef(runToken);
   useEffect(() => {
     if (runToken === lastToken.current) return;
@@ -200,12 +152,12 @@ export function ConvergencePanel({ args, nMax, exact, makeWorker, present, runTo
     return t;
   }, [series, ref, nMax]);
 
-  const isExact = (s: SeriesData) => s.recorded > 0 && Math.max(...arr(s.absError)) <= tiny * 100;
+  const isExact = (s: SeriesData) => seriesIsExact(s, tiny);
   const exactLabels = series.filter(isExact).map((s) => s.label);
   const errData = useMemo<PlotTrace[]>(() => {
     const t: PlotTrace[] = [];
     series.forEach((s, i) => {
-      if (isExact(s)) return; // error 0 (rounding level) at every N: no place on a log axis
+      if (seriesIsExact(s, tiny)) return; // error 0 (rounding level) at every N: no place on a log axis
       t.push({
         type: 'scatter',
         mode: 'lines',
@@ -228,14 +180,13 @@ export function ConvergencePanel({ args, nMax, exact, makeWorker, present, runTo
       t.push({ type: 'scatter', mode: 'lines', x: [1, nm], y: [c, c / nm], name: 'N^−1 guide', line: { color: '#888', dash: 'dot', width: 1.5 } });
     }
     return t;
-    // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [series, tiny, nMax]);
 
   const h = (present ? 380 : 300) + useLegendRoom();
   return (
     <Panel title="Convergence as N grows (Q4 d)" className="mc-plots">
       <div ref={box}>
-        <RunBar running={task.running} waiting={task.waiting} progress={task.progress} onCancel={task.cancel} onRun={task.rerun} label={`Running up to N = ${nMax.toLocaleString('en')}…`} />
+        <RunBar running={task.running} waiting={task.waiting} progress={task.progress} onCancel={task.cancel} onRun={task.run} label={`Running up to N = ${nMax.toLocaleString('en')}…`} />
         {task.error ? <p className="field-error">The run failed: {task.error}</p> : null}
         {cur?.problems.length ? <p className="mc-note">Left out: {cur.problems.join('; ')}</p> : null}
         <Heading>Running estimate</Heading>
@@ -276,14 +227,12 @@ export function RmsePanel({ args, nMax, runs, exact, makeWorker, onRuns }: { arg
   const cur = useThrottled(task.result ?? task.partial, REDRAW_MS, !task.running);
   const rm = cur?.rmse ?? [];
   const tiny = Math.abs(exact) * 1e-15 || 1e-300;
-  const clampArr = (a: Float64Array) => arr(a).map((v) => (Number.isFinite(v) && v > 0 ? v : null));
-  const rmExact = (s: RmseData) => s.runs > 0 && Math.max(...arr(s.rmse).filter(Number.isFinite)) <= tiny * 100;
-  const rmExactLabels = rm.filter(rmExact).map((s) => s.label);
+  const rmExactLabels = rm.filter((s) => rmseIsExact(s, tiny)).map((s) => s.label);
 
   const rmseData = useMemo<PlotTrace[]>(() => {
     const t: PlotTrace[] = [];
     rm.forEach((s, i) => {
-      if (rmExact(s)) return;
+      if (rmseIsExact(s, tiny)) return;
       const c = COLORS[i % COLORS.length]!;
       const n = arr(s.n);
       t.push({ type: 'scatter', mode: 'lines', x: n, y: clampArr(s.hi), line: { width: 0, color: c }, hoverinfo: 'skip', showlegend: false, legendgroup: s.label });
@@ -300,13 +249,12 @@ export function RmsePanel({ args, nMax, runs, exact, makeWorker, onRuns }: { arg
       });
     });
     return t;
-    // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [rm, tiny]);
 
   const timeData = useMemo<PlotTrace[]>(
     () =>
       rm.flatMap((s, i) => {
-        if (rmExact(s)) return [];
+        if (rmseIsExact(s, tiny)) return [];
         const keep = arr(s.n).map((_, k) => k).filter((k) => s.timeMs[k]! > 0 && Number.isFinite(s.rmse[k]!));
         return {
           type: 'scatter',
@@ -333,7 +281,7 @@ export function RmsePanel({ args, nMax, runs, exact, makeWorker, onRuns }: { arg
             {runsDone} run{runsDone === 1 ? '' : 's'} per strategy so far, N up to {nMax.toLocaleString('en')}
           </span>
         </div>
-        <RunBar running={task.running} waiting={task.waiting} progress={task.progress} onCancel={task.cancel} onRun={task.rerun} label="Independent runs…" />
+        <RunBar running={task.running} waiting={task.waiting} progress={task.progress} onCancel={task.cancel} onRun={task.run} label="Independent runs…" />
         {task.error ? <p className="field-error">The run failed: {task.error}</p> : null}
         <Heading>RMSE over the runs (band: 10–90 % of |error|)</Heading>
         <Plot
@@ -397,7 +345,7 @@ export function HistogramPanel({ args, N, exact, makeWorker, onN }: { args: Prob
           <NumberField label="samples per estimate" value={N} min={1} max={10000} step={1} onChange={(v) => onN(Math.round(v))} testId="hn-input" />
           <span className="mc-note">{M} estimates, each from its own {N} sample{N === 1 ? '' : 's'} (selected pdf and sequence)</span>
         </div>
-        <RunBar running={task.running} waiting={task.waiting} progress={task.progress} onCancel={task.cancel} onRun={task.rerun} label="Estimating…" />
+        <RunBar running={task.running} waiting={task.waiting} progress={task.progress} onCancel={task.cancel} onRun={task.run} label="Estimating…" />
         {task.error ? <p className="field-error">The run failed: {task.error}</p> : null}
         <div className="readouts">
           <Readout id="hist-mean" label="mean of the estimates" value={stats?.mean ?? null} digits={8} note={stats ? `± ${formatNumber(stats.sem, 2)} (its standard error)` : undefined} />
@@ -423,6 +371,12 @@ export function HistogramPanel({ args, N, exact, makeWorker, onN }: { args: Prob
     </Panel>
   );
 }
+
+/** Positive finite values, null elsewhere (a gap on a log axis). */
+const clampArr = (a: Float64Array) => arr(a).map((v) => (Number.isFinite(v) && v > 0 ? v : null));
+/** Error at rounding level (≤ 100 × tiny) at every recorded N: f/p is constant (zero variance). */
+const seriesIsExact = (s: SeriesData, tiny: number) => s.recorded > 0 && Math.max(...arr(s.absError)) <= tiny * 100;
+const rmseIsExact = (s: RmseData, tiny: number) => s.runs > 0 && Math.max(...arr(s.rmse).filter(Number.isFinite)) <= tiny * 100;
 
 function hexA(hex: string, a: number): string {
   const v = parseInt(hex.slice(1), 16);

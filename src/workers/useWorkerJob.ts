@@ -1,0 +1,198 @@
+/**
+ * The one way a scene runs a long computation: `useWorkerJob(makeWorker, method, args, options)`.
+ *
+ *     const stats = useWorkerJob<DrawStats>(makeWorker, 'stats', args, { delayMs: 60 });
+ *     stats.result   // the result for THESE args, or undefined while it is computed (never a stale one)
+ *
+ * - When the arguments change (by `key`, default `JSON.stringify(args)`) the run in flight is
+ *   cancelled (its worker terminated) and, after `delayMs` of quiet (debounce), a new one starts.
+ * - `enabled: false` cancels and starts nothing; `manual: true` starts only on `run()`.
+ * - `queue: 'name'` runs the jobs of every hook on that queue one at a time, first come first
+ *   served (so background runs never take every core from the page that draws their results).
+ * - Progress (fraction and partial results) is coalesced to one React update per animation frame.
+ * - Unmounting cancels. `cancel()` stops the run; `run()` (re)starts it for the current args.
+ *
+ * The worker side is `exposeTasks` (./expose.ts) over plain-data job functions (a scene's jobs.ts).
+ */
+import { useCallback, useEffect, useId, useRef, useState, useSyncExternalStore } from 'react';
+import { isCancelled, runWorkerTask } from './run';
+
+export interface WorkerJobOptions {
+  /** Identity of the arguments (default JSON.stringify(args)). A new key cancels and restarts. */
+  key?: string;
+  /** false: cancel any run and start none (default true). */
+  enabled?: boolean;
+  /** Quiet time after the last change before a run starts, in ms (default 0). */
+  delayMs?: number;
+  /** Name of a queue: the jobs of all hooks on one queue run one at a time, in order of asking. */
+  queue?: string;
+  /** true: never start by itself, only on run() (a change still cancels and clears). */
+  manual?: boolean;
+}
+
+export interface WorkerJob<R, P> {
+  /** The result for the current arguments (undefined until it arrives). */
+  result: R | undefined;
+  /** The latest partial result of the run for the current arguments. */
+  partial: P | undefined;
+  running: boolean;
+  /** Asked for, but waiting for its turn on the queue. */
+  waiting: boolean;
+  progress: number;
+  error: string | null;
+  /** (Re)start now for the current arguments (after its turn on the queue). */
+  run: () => void;
+  cancel: () => void;
+}
+
+// ---- queues: one owner at a time, waiters in order -------------------------------------------
+interface Queue {
+  owner: string | null;
+  waiting: string[];
+  listeners: Set<() => void>;
+}
+const queues = new Map<string, Queue>();
+function queueOf(name: string): Queue {
+  let q = queues.get(name);
+  if (!q) {
+    q = { owner: null, waiting: [], listeners: new Set() };
+    queues.set(name, q);
+  }
+  return q;
+}
+const notify = (q: Queue) => {
+  for (const l of q.listeners) l();
+};
+/** Take the queue if it is free (or ours) and we are first in line; else join the line. */
+function acquire(q: Queue, id: string): boolean {
+  if (q.owner === id) return true;
+  if (q.owner === null && (q.waiting.length === 0 || q.waiting[0] === id)) {
+    q.owner = id;
+    q.waiting = q.waiting.filter((w) => w !== id);
+    notify(q);
+    return true;
+  }
+  if (!q.waiting.includes(id)) q.waiting.push(id);
+  return false;
+}
+function release(q: Queue, id: string): void {
+  const before = q.waiting.length;
+  q.waiting = q.waiting.filter((w) => w !== id);
+  if (q.owner === id) q.owner = null;
+  else if (q.waiting.length === before) return;
+  notify(q);
+}
+const NO_QUEUE = (): (() => void) => () => {};
+
+interface JobState<R, P> {
+  key: string | null;
+  running: boolean;
+  progress: number;
+  partial: P | undefined;
+  result: R | undefined;
+  error: string | null;
+}
+const IDLE: JobState<never, never> = { key: null, running: false, progress: 0, partial: undefined, result: undefined, error: null };
+
+export function useWorkerJob<R, P = unknown>(makeWorker: () => Worker, method: string, args: unknown, options: WorkerJobOptions = {}): WorkerJob<R, P> {
+  const { enabled = true, delayMs = 0, queue, manual = false } = options;
+  const key = options.key ?? JSON.stringify(args);
+  const id = useId();
+  const [state, setState] = useState<JobState<R, P>>(IDLE);
+  /** A run asked for (its key and a serial so run() can ask again for the same key). */
+  const [wanted, setWanted] = useState<{ key: string; serial: number } | null>(null);
+  const ctl = useRef<AbortController | null>(null);
+  const raf = useRef(0);
+  const latest = useRef({ args, key, makeWorker });
+  useEffect(() => {
+    latest.current = { args, key, makeWorker };
+  });
+  const serial = useRef(0);
+
+  const q = queue ? queueOf(queue) : null;
+  const subscribe = useCallback(
+    (l: () => void) => {
+      if (!q) return NO_QUEUE();
+      q.listeners.add(l);
+      return () => void q.listeners.delete(l);
+    },
+    [q],
+  );
+  const owner = useSyncExternalStore(subscribe, () => q?.owner ?? null, () => null);
+
+  const stop = useCallback(() => {
+    ctl.current?.abort();
+    ctl.current = null;
+    if (raf.current) cancelAnimationFrame(raf.current);
+    raf.current = 0;
+    if (q) release(q, id);
+    setState((s) => (s.running ? { ...s, running: false } : s));
+  }, [q, id]);
+
+  // a change of arguments cancels the run in flight, then asks for a new one after the delay
+  useEffect(() => {
+    stop();
+    setWanted(null);
+    if (!enabled || manual) return;
+    const t = setTimeout(() => setWanted({ key, serial: ++serial.current }), delayMs);
+    return () => clearTimeout(t);
+  }, [key, enabled, manual, delayMs, stop]);
+
+  // start what is asked for when its turn comes
+  useEffect(() => {
+    if (!wanted || wanted.key !== key) return;
+    if (q && !acquire(q, id)) return; // retried when the queue's owner changes
+    setWanted(null);
+    ctl.current?.abort();
+    const c = new AbortController();
+    ctl.current = c;
+    const runKey = key;
+    setState({ key: runKey, running: true, progress: 0, partial: undefined, result: undefined, error: null });
+    let pending: { fraction: number; partial?: P } | null = null;
+    const settle = (patch: Partial<JobState<R, P>>) => {
+      if (ctl.current !== c) return;
+      ctl.current = null;
+      if (q) release(q, id);
+      setState((s) => (s.key === runKey ? { ...s, ...patch, running: false } : s));
+    };
+    runWorkerTask<R, P>(latest.current.makeWorker, method, latest.current.args, {
+      signal: c.signal,
+      onProgress: (fraction, partial) => {
+        pending = { fraction, partial };
+        if (raf.current) return;
+        raf.current = requestAnimationFrame(() => {
+          raf.current = 0;
+          const p = pending;
+          pending = null;
+          if (p && ctl.current === c) setState((s) => (s.key === runKey ? { ...s, progress: p.fraction, partial: p.partial ?? s.partial } : s));
+        });
+      },
+    }).then(
+      (result) => settle({ progress: 1, result }),
+      (err) => {
+        if (!isCancelled(err)) settle({ error: err instanceof Error ? err.message : String(err) });
+      },
+    );
+  }, [wanted, key, owner, q, id, method]);
+
+  useEffect(() => stop, [stop]);
+
+  const run = useCallback(() => setWanted({ key: latest.current.key, serial: ++serial.current }), []);
+  const cancel = useCallback(() => {
+    stop();
+    setWanted(null);
+  }, [stop]);
+
+  const current = state.key === key;
+  const running = current && state.running;
+  return {
+    result: current ? state.result : undefined,
+    partial: current ? state.partial : undefined,
+    running,
+    waiting: !running && wanted !== null && wanted.key === key && !!q && owner !== null && owner !== id,
+    progress: current ? state.progress : 0,
+    error: current ? state.error : null,
+    run,
+    cancel,
+  };
+}

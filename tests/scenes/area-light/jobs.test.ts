@@ -1,0 +1,24 @@
+import { describe, expect, it } from 'vitest';
+import { PASS_SPP, estimatesJob, renderJob, type FloorFrame } from '../../../src/scenes/area-light/jobs';
+import { buildModel, estimateAll, floorJob } from '../../../src/scenes/area-light/model';
+import { defaultValues } from '../../../src/app/params';
+import { schema } from '../../../src/scenes/area-light/params';
+
+const defaults = defaultValues(schema);
+
+describe('area-light jobs (what the worker runs)', () => {
+  it('estimatesJob gives the main thread’s numbers', async () => {
+    const p = { ...defaults, n: 5000 };
+    expect(await estimatesJob(p)).toEqual(estimateAll(buildModel(p), 5000, p.seed));
+  });
+  it('renderJob reports one frame per pass and its samples per pixel double', async () => {
+    const job = floorJob(buildModel(defaults), 3, 8);
+    const frames: FloorFrame[] = [];
+    const last = await renderJob(job, (_f, partial) => frames.push(partial as FloorFrame));
+    expect(frames.length).toBe(PASS_SPP.length - 1);
+    expect(last.done).toBe(true);
+    expect(last.spp).toBe(PASS_SPP.reduce((a, b) => a + b, 0));
+    expect(last.images.length).toBe(3);
+    for (const r of last.rmse) expect(r).toBeLessThanOrEqual(frames[0]!.rmse[0]! * 10);
+  });
+});
