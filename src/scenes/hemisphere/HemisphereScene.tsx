@@ -106,7 +106,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
     ) : null;
 
   const settings = (
-    <div className="hemi-controls" aria-label="Settings">
+    <div className="hemi-controls">
       <Select label="Sampling density p(ω)" value={lobeId} options={LOBE_OPTIONS} onChange={(v) => setParams({ lobe: v })} testId="lobe" />
       {lobeId === 'phong' ? <Slider label="Phong exponent n" value={params.exponent} min={0} max={10000} step={1} onChange={(v) => setParams({ exponent: v })} /> : null}
       {isCustom ? (
@@ -209,13 +209,12 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
         title="Sampling a hemisphere PDF by inversion"
         intro={
           <p>
-            A density over the directions of the upper hemisphere is <MathTex tex={`p(\\omega) = k\\cos\\theta\\,e^{\\phi}`} />, with θ ∈ [0, π/2] measured from the
-            normal (+z) and φ ∈ [0, 2π) around it from +x. (a) Normalize it; (b) change variables to p(θ, φ) and find the marginals; (c) find the CDFs; (d) invert them to
-            sample directions.
+            <MathTex tex={`p(\\omega) = k\\cos\\theta\\,e^{\\phi}`} /> over the upper hemisphere (θ ∈ [0, π/2] from the normal +z, φ ∈ [0, 2π) from +x): (a) normalize
+            it; (b) change variables to p(θ, φ) and find the marginals; (c) find the CDFs; (d) invert them to sample directions.
           </p>
         }
       >
-        <Panel title="Inversion made visible" className="hemi-figure-panel">
+        <Panel className="hemi-figure-panel">
           <Figure
             lobe={lobe}
             kind={kind}

@@ -178,9 +178,10 @@ export function ExamQ1({ c, xi, invertedShown, onShowInverted, answer1a, inverte
               testId="steps-1d-example"
               lines={[
                 {
-                  tex: `\\xi_1 = ${texNum(xi.xi1, 8)}:\\quad \\tfrac12\\cos^{-1}(1-2\\xi_1) = ${texNum(ex.thetaAcos, 12)},\\quad \\sin^{-1}\\!\\sqrt{\\xi_1} = ${texNum(ex.thetaAsin, 12)}`,
-                  why: 'the first sample of the current point set; the 3D view tracks it',
+                  tex: `\\xi_1 = ${texNum(xi.xi1, 8)}:\\quad \\theta = \\tfrac12\\cos^{-1}(1-2\\xi_1) = ${texNum(ex.thetaAcos, 12)}`,
+                  why: 'the first sample of the current point set (ringed in the square; the 3D view tracks it)',
                 },
+                { tex: `\\theta = \\sin^{-1}\\!\\sqrt{\\xi_1} = ${texNum(ex.thetaAsin, 12)}`, why: 'the other form: the same to about 15 digits here' },
                 { tex: `\\xi_2 = ${texNum(xi.xi2, 8)}:\\quad \\phi = \\ln\\big(${E}\\,\\xi_2 + 1\\big) = ${texNum(ex.phiLn, 12)}` },
               ]}
             />

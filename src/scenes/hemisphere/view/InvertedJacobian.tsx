@@ -5,6 +5,7 @@
  */
 import { useMemo, useState } from 'react';
 import { MathTex, Notice, Plot, Slider, Readout, formatNumber } from '../../../ui';
+import { titled } from './plotTitle';
 import { examLobeK, invertedJacobianDensity, invertedJacobianPartialIntegral } from '../../../core/sampling';
 import { invertedJacobianSeries } from '../model';
 
@@ -44,7 +45,7 @@ export function InvertedJacobian() {
         <Plot
           ariaLabel="The key's marginal 2 cot θ near θ = 0, on log axes: it grows like 2/θ"
           data={[{ type: 'scatter', mode: 'lines', x: dens.x, y: dens.y, name: '2 cot θ', line: { color: '#c0392b', width: 2.5 } }]}
-          layout={{ title: { text: "key's p(θ) = 2 cot θ" }, xaxis: { type: 'log', title: { text: 'θ (rad)' } }, yaxis: { type: 'log', title: { text: '2 cot θ' } }, showlegend: false }}
+          layout={{ ...titled("key's p(θ) = 2 cot θ"), xaxis: { type: 'log', title: { text: 'θ (rad)' } }, yaxis: { type: 'log', title: { text: '2 cot θ' } }, showlegend: false }}
         />
         <Plot
           ariaLabel="The partial integral minus ln sin epsilon against epsilon: it grows without bound as epsilon shrinks"
@@ -52,7 +53,7 @@ export function InvertedJacobian() {
             { type: 'scatter', mode: 'lines+markers', x: Array.from(series.eps), y: Array.from(series.partial), name: '−ln sin ε', line: { color: '#1f5fa8' }, marker: { size: 4 } },
             { type: 'scatter', mode: 'markers', x: [eps], y: [partial], name: 'ε chosen', marker: { size: 11, color: '#c0392b' } },
           ]}
-          layout={{ title: { text: 'partial integral: no limit' }, xaxis: { type: 'log', title: { text: 'ε (rad)' }, autorange: 'reversed' }, yaxis: { title: { text: '−ln sin ε' } }, legend: LEGEND }}
+          layout={{ ...titled('partial integral: no limit'), xaxis: { type: 'log', title: { text: 'ε (rad)' }, autorange: 'reversed' }, yaxis: { title: { text: '−ln sin ε' } }, legend: LEGEND }}
         />
       </div>
     </div>

@@ -7,6 +7,7 @@
  */
 import { useMemo } from 'react';
 import { Notice, Plot, Readout, formatNumber } from '../../../ui';
+import { titled } from './plotTitle';
 import type { McEstimate } from '../../../core/estimators';
 import type { SequenceKind } from '../../../core/random';
 import type { RmseResult, VarianceCheck } from '../model';
@@ -150,7 +151,7 @@ export function RepeatView({ result, exact, runs, perRun, lobe, exponent, fIsCos
         data={data}
         layout={{
           barmode: 'overlay',
-          title: { text: `${runs} estimates, N = ${perRun} each` },
+          ...titled(`${runs} estimates, N = ${perRun} each`),
           xaxis: { title: { text: 'estimate' } },
           yaxis: { title: { text: 'runs' } },
           shapes: Number.isFinite(exact) ? [{ type: 'line', x0: exact, x1: exact, yref: 'paper', y0: 0, y1: 1, line: { color: '#888', width: 2, dash: 'dash' } }] : [],
