@@ -259,7 +259,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
         intro={
           <>
             <p>
-              Estimate I = ∫_Ω f(ω) dω over the upper hemisphere. The exam leaves f open; the scene uses the integrand below (default cos θ, whose integral is π) and the
+              Estimate I = ∫<sub>Ω</sub> f(ω) dω over the upper hemisphere. The exam leaves f open; the scene uses the integrand below (default cos θ, whose integral is π) and the
               same N points (ξ₁, ξ₂) for both estimators.
             </p>
             <ExprField

@@ -181,7 +181,7 @@ export function ExamQ1({ c, xi, invertedShown, onShowInverted, answer1a, inverte
                   tex: `\\xi_1 = ${texNum(xi.xi1, 8)}:\\quad \\theta = \\tfrac12\\cos^{-1}(1-2\\xi_1) = ${texNum(ex.thetaAcos, 12)}`,
                   why: 'the first sample of the current point set (ringed in the square; the 3D view tracks it)',
                 },
-                { tex: `\\theta = \\sin^{-1}\\!\\sqrt{\\xi_1} = ${texNum(ex.thetaAsin, 12)}`, why: 'the other form: the same to about 15 digits here' },
+                { tex: `\\theta = \\sin^{-1}\\!\\sqrt{\\xi_1} = ${texNum(ex.thetaAsin, 12)}`, why: <>the other form; the two differ here by {texNumPlain(Math.abs(ex.thetaAcos - ex.thetaAsin), 2)} (floating point; see the stability panel)</> },
                 { tex: `\\xi_2 = ${texNum(xi.xi2, 8)}:\\quad \\phi = \\ln\\big(${E}\\,\\xi_2 + 1\\big) = ${texNum(ex.phiLn, 12)}` },
               ]}
             />

@@ -13,7 +13,7 @@ const M = ({ t }: { t: string }) => <MathTex tex={t} />;
 export function ExamQ2({ solidAngle, lobeTex, answer2a, answer2b, answer2c }: { solidAngle: number; lobeTex: string; answer2a: ReactNode; answer2b: ReactNode; answer2c: ReactNode }) {
   return (
     <>
-      <ExamPart id="2a" title="Uniform sampling" asks={<>Write the Monte Carlo estimator of I = ∫_Ω f(ω) dω with directions sampled uniformly over the hemisphere.</>}>
+      <ExamPart id="2a" title="Uniform sampling" asks={<>Write the Monte Carlo estimator of I = ∫<sub>Ω</sub> f(ω) dω with directions sampled uniformly over the hemisphere.</>}>
         <DerivationBlock testId="derivation-2a">
           <Steps
             label="Uniform estimator (Q2a)"

@@ -44,7 +44,7 @@ export function StderrNote({ kind, rmse }: { kind: SequenceKind; rmse: RmseResul
   if (kind === 'independent') return null;
   return (
     <Notice kind="warn" testId="stderr-note">
-      {KIND_NAME[kind]} points are not independent, so the sample standard deviation over √N is not an error estimate for them (it ignores how evenly the points
+      {KIND_NAME[kind].charAt(0).toUpperCase() + KIND_NAME[kind].slice(1)} points are not independent, so the sample standard deviation over √N is not an error estimate for them (it ignores how evenly the points
       cover the square, and usually overstates the error). The error shown is measured instead: the root-mean-square error against ∫ f dω over{' '}
       {rmse ? rmse.runs : 16} independently randomized sets of the same N (fresh jitter or scrambling each run, seeds derived from the seed)
       {rmse ? `: ${formatNumber(rmse.uniform, 3)} uniform${Number.isFinite(rmse.importance) ? `, ${formatNumber(rmse.importance, 3)} importance` : ''}` : ''}.
