@@ -209,8 +209,8 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
         title="Sampling a hemisphere PDF by inversion"
         intro={
           <p>
-            <MathTex tex={`p(\\omega) = k\\cos\\theta\\,e^{\\phi}`} /> over the upper hemisphere (θ ∈ [0, π/2] from the normal +z, φ ∈ [0, 2π) from +x): (a) normalize
-            it; (b) change variables to p(θ, φ) and find the marginals; (c) find the CDFs; (d) invert them to sample directions.
+            <MathTex tex={`p(\\omega) = k\\cos\\theta\\,e^{\\phi}`} /> on the upper hemisphere (θ ∈ [0, π/2] from the normal +z, φ ∈ [0, 2π) from +x): (a) normalize it;
+            (b) change variables, find the marginals; (c) the CDFs; (d) invert them to sample.
           </p>
         }
       >
