@@ -54,7 +54,10 @@ export function SceneHost({ info, query, flags, theme }: Props) {
   );
 
   return (
-    <main id="main" className={`page scene scene-${info.id}`} tabIndex={-1}>
+    // Outside embeds the page is at least one screen tall from the first paint, so the footer starts
+    // below the fold and does not jump down when the scene's chunk replaces "Loading the scene…"
+    // (that jump was a layout shift of ~0.17 on every scene, measured by Lighthouse mobile).
+    <main id="main" className={`page scene scene-${info.id}${flags.embed ? '' : ' scene-full'}`} tabIndex={-1}>
       {header}
       {load.kind === 'loading' ? <p className="loading" role="status">Loading the scene…</p> : null}
       {load.kind === 'missing' ? (
@@ -104,19 +107,29 @@ function LoadedScene({ mod, info, query, flags, theme }: { mod: SceneModule; inf
 
   const valuesRef = useRef(values);
   valuesRef.current = values;
+  // The values the link carries: typed expressions enter it only once they have compiled (a link
+  // must never carry an expression that was not checked; see linkSafeValues).
+  const [linkValues, setLinkValues] = useState(values);
+  const writeSeq = useRef(0);
+  useEffect(() => setLinkValues(parsed.values), [parsed]);
   const setParams = useCallback(
     (patch: Record<string, unknown>) => {
       const next = { ...valuesRef.current, ...patch } as ParamValues<ParamSchema>;
       valuesRef.current = next;
       setValues(next);
-      const qs = serializeParams(schema, next, shellExtras(flags));
-      const hash = `#${info.path}${qs ? `?${qs}` : ''}`;
-      try {
-        window.history.replaceState(window.history.state, '', hash);
-      } catch {
-        /* some sandboxed iframes forbid it; the state still lives in the page */
-      }
-      lastQuery.current = qs;
+      const seq = ++writeSeq.current;
+      void linkSafeValues(schema, next).then((safe) => {
+        if (seq !== writeSeq.current) return; // a newer change will write the URL
+        setLinkValues(safe);
+        const qs = serializeParams(schema, safe, shellExtras(flags));
+        const hash = `#${info.path}${qs ? `?${qs}` : ''}`;
+        try {
+          window.history.replaceState(window.history.state, '', hash);
+        } catch {
+          /* some sandboxed iframes forbid it; the state still lives in the page */
+        }
+        lastQuery.current = qs;
+      });
     },
     [schema, flags, info.path],
   );
@@ -142,13 +155,41 @@ function LoadedScene({ mod, info, query, flags, theme }: { mod: SceneModule; inf
           </button>
         </div>
       ) : null}
-      <ShareBar info={info} schema={schema} values={values} flags={flags} />
-      <SceneErrorBoundary>
+      <ShareBar info={info} schema={schema} values={linkValues} flags={flags} />
+      <SceneErrorBoundary resetKey={query}>
         <Scene params={values} setParams={setParams} mode={{ embed: flags.embed, present: flags.present, theme }} />
       </SceneErrorBoundary>
       {flags.embed ? null : <QuestionNav info={info} flags={flags} />}
     </>
   );
+}
+
+/** Last expression per parameter that compiled, so a failing one falls back to it in the link. */
+const goodExpressions = new Map<string, string>();
+
+/**
+ * The values with every typed expression (string params with `expression`) replaced by its last
+ * successfully compiled text (or the default) unless it compiles now. The compiler (core/expr and
+ * its parser chunk) loads only when an expression differs from its default.
+ */
+async function linkSafeValues(schema: ParamSchema, values: ParamValues<ParamSchema>): Promise<ParamValues<ParamSchema>> {
+  const out = { ...values } as Record<string, unknown>;
+  for (const [name, spec] of Object.entries(schema)) {
+    if (spec.kind !== 'string' || spec.expression === undefined) continue;
+    const v = out[name];
+    if (typeof v !== 'string' || v === spec.default) continue;
+    let ok = false;
+    try {
+      const { compileExpression } = await import('../core/expr');
+      ok = (await compileExpression(v, spec.expression)).ok;
+    } catch {
+      ok = false;
+    }
+    const key = `${spec.expression.join(',')}\u0000${name}`;
+    if (ok) goodExpressions.set(key, v);
+    else out[name] = goodExpressions.get(key) ?? spec.default;
+  }
+  return out as ParamValues<ParamSchema>;
 }
 
 function ShareBar({ info, schema, values, flags }: { info: SceneInfo; schema: SceneModule['schema']; values: ParamValues<ParamSchema>; flags: ShellFlags }) {
@@ -188,10 +229,14 @@ function ShareBar({ info, schema, values, flags }: { info: SceneInfo; schema: Sc
   );
 }
 
-class SceneErrorBoundary extends Component<{ children: ReactNode }, { error: string | null }> {
+class SceneErrorBoundary extends Component<{ children: ReactNode; resetKey: string }, { error: string | null }> {
   override state = { error: null as string | null };
   static getDerivedStateFromError(err: unknown) {
     return { error: err instanceof Error ? err.message : String(err) };
+  }
+  // a new query (the "reset" link, a typed URL, back/forward) gives the scene a fresh start
+  override componentDidUpdate(prev: { resetKey: string }) {
+    if (prev.resetKey !== this.props.resetKey && this.state.error !== null) this.setState({ error: null });
   }
   override render() {
     if (this.state.error) {
@@ -202,7 +247,11 @@ class SceneErrorBoundary extends Component<{ children: ReactNode }, { error: str
             <button type="button" onClick={() => this.setState({ error: null })}>
               Try again
             </button>{' '}
-            or <a href={window.location.hash.split('?')[0]}>reset the scene to its defaults</a>.
+            or{' '}
+            <a href={window.location.hash.split('?')[0]} onClick={() => this.setState({ error: null })}>
+              reset the scene to its defaults
+            </a>
+            .
           </p>
         </div>
       );

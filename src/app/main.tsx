@@ -11,3 +11,21 @@ if (root) {
     </StrictMode>,
   );
 }
+
+// Fuzz mode (`?fuzz=1&seed=7`, optional `fuzzn=300`): load the self-driving fuzzer, lazily, only then.
+let fuzzing = false;
+function maybeFuzz() {
+  if (fuzzing) return;
+  const h = window.location.hash;
+  const q = h.indexOf('?');
+  if (q < 0) return;
+  const sp = new URLSearchParams(h.slice(q + 1));
+  if (sp.get('fuzz') !== '1') return;
+  fuzzing = true;
+  const int = (v: string | null) => (v !== null && /^\d{1,10}$/.test(v) ? Number(v) : null);
+  const seed = int(sp.get('fuzzseed')) ?? int(sp.get('seed')) ?? 1;
+  const limit = int(sp.get('fuzzn'));
+  void import('./fuzz').then((m) => m.startFuzz({ seed, limit: limit && limit > 0 ? limit : null }));
+}
+maybeFuzz();
+window.addEventListener('hashchange', maybeFuzz);

@@ -6,7 +6,18 @@
 export type ParamSpec =
   | { kind: 'number'; default: number; min?: number; max?: number; integer?: boolean; label?: string }
   | { kind: 'enum'; default: string; values: readonly string[]; aliases?: Readonly<Record<string, string>>; label?: string }
-  | { kind: 'string'; default: string; maxLength?: number; label?: string }
+  | {
+      kind: 'string';
+      default: string;
+      maxLength?: number;
+      label?: string;
+      /**
+       * Marks a typed math expression in these variables: in the link a literal `+` stays a plus (a
+       * hand-written `f=(x+3)^2` means plus, not the form-encoded space), and the shell writes a new
+       * value to the URL only once it has compiled.
+       */
+      expression?: readonly string[];
+    }
   | { kind: 'bool'; default: boolean; label?: string }
   | { kind: 'vec3'; default: readonly [number, number, number]; min?: number; max?: number; label?: string }
   | { kind: 'list'; default: readonly number[] | null; maxItems: number; minItems?: number; min?: number; max?: number; label?: string };
@@ -43,7 +54,7 @@ export interface ParsedParams<S extends ParamSchema> {
 }
 
 /** Parameters owned by the shell itself, not by any scene. */
-export const SHELL_PARAMS = ['embed', 'present', 'theme', 'part'] as const;
+export const SHELL_PARAMS = ['embed', 'present', 'theme', 'part', 'fuzz', 'fuzzn', 'fuzzseed'] as const;
 
 /** Longest raw value the parser looks at; longer ones are rejected, not truncated. */
 export const MAX_RAW_LENGTH = 4000;
@@ -108,7 +119,8 @@ function parseOne(spec: ParamSpec, raw: string): Parsed {
     }
     case 'enum': {
       const s = raw.trim();
-      const canonical = spec.values.includes(s) ? s : spec.aliases?.[s];
+      // own keys only: 'toString', '__proto__', 'constructor' … are not aliases
+      const canonical = spec.values.includes(s) ? s : spec.aliases && Object.hasOwn(spec.aliases, s) ? spec.aliases[s] : undefined;
       if (canonical === undefined) {
         return { ok: false, problem: `${short(raw)} is not one of ${spec.values.join(', ')}` };
       }
@@ -173,17 +185,17 @@ export function defaultValues<S extends ParamSchema>(schema: S): ParamValues<S> 
 export function parseParams<S extends ParamSchema>(schema: S, query: string | URLSearchParams): ParsedParams<S> {
   const values = defaultValues(schema) as Record<string, unknown>;
   const problems: ParamProblem[] = [];
-  let search: URLSearchParams;
+  let entries: [string, string, string][];
   try {
-    search = typeof query === 'string' ? new URLSearchParams(query.startsWith('?') ? query.slice(1) : query) : query;
+    entries = typeof query === 'string' ? splitQuery(query.startsWith('?') ? query.slice(1) : query) : [...query].map(([k, v]) => [k, v, v]);
   } catch {
     return { values: values as ParamValues<S>, problems: [{ name: '(query)', message: 'could not be read' }] };
   }
   const seen = new Set<string>();
   let unknownCount = 0;
-  for (const [name, raw] of search) {
+  for (const [name, formRaw, plusRaw] of entries) {
     if ((SHELL_PARAMS as readonly string[]).includes(name)) continue;
-    if (!Object.prototype.hasOwnProperty.call(schema, name)) {
+    if (!Object.hasOwn(schema, name)) {
       unknownCount++;
       if (unknownCount <= 5) problems.push({ name: name.length > 24 ? `${name.slice(0, 24)}…` : name, message: 'is not a parameter of this scene; ignored' });
       continue;
@@ -194,16 +206,43 @@ export function parseParams<S extends ParamSchema>(schema: S, query: string | UR
     }
     seen.add(name);
     const spec = schema[name]!;
+    const isExpr = spec.kind === 'string' && spec.expression !== undefined;
+    const raw = isExpr ? plusRaw : formRaw;
     const r = parseOne(spec, raw);
     if (r.ok) {
       values[name] = r.value;
       if (r.problem) problems.push({ name, message: r.problem });
+      else if (isExpr && plusRaw !== formRaw) {
+        problems.push({ name, message: 'contains "+", read as a plus sign (not as a space, as web forms would); write %2B for a plus to be unambiguous' });
+      }
     } else {
       problems.push({ name, message: `${r.problem}; using the default ${describeDefault(spec)}` });
     }
   }
   if (unknownCount > 5) problems.push({ name: '(others)', message: `${unknownCount - 5} more unknown parameters ignored` });
   return { values: values as ParamValues<S>, problems };
+}
+
+/**
+ * Split a query into [name, value as a form would read it ('+' = space), value with '+' kept].
+ * Percent-escapes are decoded as URLSearchParams does (a broken escape stays literal text).
+ */
+function splitQuery(query: string): [string, string, string][] {
+  const out: [string, string, string][] = [];
+  if (query === '') return out;
+  for (const piece of query.split('&')) {
+    if (piece === '') continue;
+    const eq = piece.indexOf('=');
+    const rawName = eq >= 0 ? piece.slice(0, eq) : piece;
+    const rawValue = eq >= 0 ? piece.slice(eq + 1) : '';
+    const name = formDecode(rawName);
+    out.push([name, formDecode(rawValue), formDecode(rawValue.replace(/\+/g, '%2B'))]);
+  }
+  return out;
+}
+
+function formDecode(s: string): string {
+  return new URLSearchParams(`v=${s.replace(/&/g, '%26')}`).get('v') ?? '';
 }
 
 function describeDefault(spec: ParamSpec): string {

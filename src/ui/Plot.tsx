@@ -1,4 +1,4 @@
-import { useEffect, useRef, useState } from 'react';
+import { useEffect, useMemo, useRef, useState } from 'react';
 import { useSeenOnce } from './useInView';
 
 type PlotlyModule = (typeof import('plotly.js-cartesian-dist-min'))['default'];
@@ -11,6 +11,23 @@ export function loadPlotly(): Promise<PlotlyModule> {
   }
   return plotlyPromise;
 }
+
+/**
+ * The one Plotly config of every plot. Nothing may leave the site: no "Edit in Chart Studio",
+ * "Share chart", "Send data to cloud" or "link to plotly" action (they upload the plot's data to
+ * Plotly's servers), and no Plotly logo link.
+ */
+export const PLOT_CONFIG = Object.freeze({
+  responsive: true,
+  displaylogo: false,
+  showLink: false,
+  showSendToCloud: false,
+  showEditInChartStudio: false,
+  sendData: false,
+  linkText: '',
+  plotlyServerURL: '',
+  modeBarButtonsToRemove: ['lasso2d', 'select2d', 'sendChartToCloud', 'sendDataToCloud', 'editInChartStudio'],
+});
 
 /** A Plotly trace: plain objects as Plotly takes them. */
 export type PlotTrace = Record<string, unknown>;
@@ -27,6 +44,39 @@ export interface PlotProps {
 
 function touchOnly(): boolean {
   return typeof window.matchMedia === 'function' && window.matchMedia('(hover: none) and (pointer: coarse)').matches;
+}
+
+/** Largest magnitude Plotly draws: beyond it its axis arithmetic overflows to NaN paths. */
+const PLOT_MAX_ABS = 1e100;
+
+/**
+ * Replace infinite or astronomically large numbers (NaN is already a gap to Plotly) in the traces' x / y / z arrays by null (a
+ * gap), so Plotly never draws a NaN path; returns the traces and how many values were left out.
+ */
+export function sanitizeTraces(data: PlotTrace[]): { data: PlotTrace[]; dropped: number } {
+  let dropped = 0;
+  const clean = (v: unknown): unknown => {
+    if (typeof v === 'number' && Math.abs(v) > PLOT_MAX_ABS) {
+      dropped++;
+      return null;
+    }
+    return v;
+  };
+  const out = data.map((t) => {
+    let copy: PlotTrace | null = null;
+    for (const k of ['x', 'y', 'z'] as const) {
+      const a = t[k];
+      if (!Array.isArray(a) && !ArrayBuffer.isView(a)) continue;
+      const arr = Array.from(a as ArrayLike<unknown>);
+      let bad = false;
+      for (const v of arr) if (typeof v === 'number' && Math.abs(v) > PLOT_MAX_ABS) bad = true;
+      if (!bad) continue;
+      copy ??= { ...t };
+      copy[k] = arr.map((v) => (Array.isArray(v) ? v.map(clean) : clean(v)));
+    }
+    return copy ?? t;
+  });
+  return { data: out, dropped };
 }
 
 function themeColors() {
@@ -65,6 +115,7 @@ export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProp
   // Layouts are small: compare them by content, so an inline `layout={{…}}` does not make Plotly
   // redraw on every render of the parent. Data is compared by identity (memoise it).
   const layoutKey = layout ? JSON.stringify(layout) : '';
+  const clean = useMemo(() => sanitizeTraces(data), [data]);
   const layoutRef = useRef(layout);
   layoutRef.current = layout;
 
@@ -88,14 +139,14 @@ export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProp
     for (const k of ['xaxis', 'yaxis', 'xaxis2', 'yaxis2']) {
       if (layout && layout[k]) merged[k] = { ...axis, ...(layout[k] as object) };
     }
-    plotly.react(el.current, data, merged, {
-      responsive: true,
-      displaylogo: false,
-      // on touch screens the mode bar would sit over titles and legends with no hover to hide it
-      displayModeBar: touchOnly() ? false : 'hover',
-      modeBarButtonsToRemove: ['lasso2d', 'select2d'],
-    }).catch(() => setFailed(true));
-  }, [plotly, data, layoutKey, height, themeKey]);
+    plotly
+      .react(el.current, clean.data, merged, {
+        ...PLOT_CONFIG,
+        // on touch screens the mode bar would sit over titles and legends with no hover to hide it
+        displayModeBar: touchOnly() ? false : 'hover',
+      })
+      .catch(() => setFailed(true));
+  }, [plotly, clean, layoutKey, height, themeKey]);
 
   useEffect(() => {
     const node = el.current;
@@ -109,6 +160,11 @@ export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProp
       {failed ? <p className="plot-placeholder">The plot could not be drawn.</p> : null}
       {!plotly && !failed ? <p className="plot-placeholder">Loading plot…</p> : null}
       <div ref={el} className="plot-canvas" />
+      {clean.dropped > 0 ? (
+        <figcaption className="small" data-testid="plot-dropped">
+          {clean.dropped} value{clean.dropped === 1 ? '' : 's'} too large to draw (±∞ or beyond ±10¹⁰⁰) left out of this plot.
+        </figcaption>
+      ) : null}
     </figure>
   );
 }

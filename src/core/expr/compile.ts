@@ -111,7 +111,7 @@ function describeVars(variables: readonly string[]): string {
 }
 
 function canonicalName(name: string): string {
-  return SYMBOL_ALIASES[name] ?? name;
+  return Object.hasOwn(SYMBOL_ALIASES, name) ? SYMBOL_ALIASES[name]! : name;
 }
 
 const KIND_NAMES: Readonly<Record<string, string>> = {
@@ -226,6 +226,7 @@ function compileNode(node: NodeLike, variables: readonly string[], depth: number
   switch (node.type) {
     case 'ConstantNode': {
       const v = node.value;
+      if (v === undefined) throw new ExpressionError('the expression is empty (everything after # is a comment)');
       if (typeof v !== 'number') {
         throw new ExpressionError(typeof v === 'string' ? 'text strings are not allowed' : `the constant '${String(v)}' is not a number`);
       }
@@ -244,7 +245,11 @@ function compileNode(node: NodeLike, variables: readonly string[], depth: number
       return compileNode(node.content as NodeLike, variables, depth + 1);
     case 'OperatorNode': {
       const fnName = String(node.fn);
-      const args = (node.args as NodeLike[]).map((a) => compileNode(a, variables, depth + 1));
+      // A left-associative chain (1 + 1 + … + 1, a * b * c) is flat to the reader: its left operand
+      // of the same operator does not count as a level of nesting.
+      const args = (node.args as NodeLike[]).map((a, i) =>
+        compileNode(a, variables, i === 0 && a.type === 'OperatorNode' && sameFamily(String(a.fn), fnName) && (node.args as NodeLike[]).length === 2 ? depth : depth + 1),
+      );
       if (args.length === 1 && (fnName === 'unaryMinus' || fnName === 'unaryPlus')) {
         const a = args[0]!;
         if (fnName === 'unaryPlus') return a;
@@ -274,9 +279,9 @@ function compileNode(node: NodeLike, variables: readonly string[], depth: number
       const fs = args.map((a) => a.fn);
       let fn: Fn4;
       if (fs.length === 1) {
-        const onVar = UNARY_ON_VAR[raw];
+        const onVar = Object.hasOwn(UNARY_ON_VAR, raw) ? UNARY_ON_VAR[raw] : undefined;
         const k = args[0]!.varIndex;
-        const make = UNARY_MAKERS[raw];
+        const make = Object.hasOwn(UNARY_MAKERS, raw) ? UNARY_MAKERS[raw] : undefined;
         if (onVar && (k === 0 || k === 1)) fn = onVar[k];
         else if (make) fn = make(fs[0]!);
         else {
@@ -299,10 +304,15 @@ function compileNode(node: NodeLike, variables: readonly string[], depth: number
       return fold({ fn, constant });
     }
     default: {
-      const msg = KIND_NAMES[node.type];
+      const msg = Object.hasOwn(KIND_NAMES, node.type) ? KIND_NAMES[node.type] : undefined;
       throw new ExpressionError(msg ?? `this kind of expression (${node.type}) is not allowed`);
     }
   }
+}
+
+const FAMILY: Readonly<Record<string, number>> = { add: 1, subtract: 1, multiply: 2, divide: 2 };
+function sameFamily(a: string, b: string): boolean {
+  return Object.hasOwn(FAMILY, a) && FAMILY[a] === FAMILY[b];
 }
 
 function fold(c: Compiled): Compiled {
@@ -328,7 +338,7 @@ export function canonicalizeTree(tree: MathNode): MathNode {
     const node = n as unknown as NodeLike;
     if (node.type === 'SymbolNode') {
       const name = String(node.name);
-      const canon = SYMBOL_ALIASES[name];
+      const canon = Object.hasOwn(SYMBOL_ALIASES, name) ? SYMBOL_ALIASES[name] : undefined;
       if (canon) {
         const copy = n.clone() as unknown as { name: string };
         copy.name = canon;

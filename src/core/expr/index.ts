@@ -6,10 +6,12 @@
  *   if (r.ok) r.fn(0.3, 1.2); else show(r.message);
  */
 import type { Failure } from '../failure';
+import { treeToTex } from './tex';
 import { checkAndCompile, canonicalizeTree, ExpressionError, MAX_EXPRESSION_LENGTH, type CompiledFn } from './compile';
 
 export * from './compile';
 export * from './tabulate';
+export { treeToTex } from './tex';
 
 type Engine = typeof import('./engine');
 let enginePromise: Promise<Engine> | null = null;
@@ -99,7 +101,7 @@ async function compileUncached(src: string, variables: readonly string[]): Promi
     const canon = canonicalizeTree(tree);
     let tex: string;
     try {
-      tex = canon.toTex();
+      tex = treeToTex(canon);
     } catch {
       tex = '\\text{' + canon.toString().replace(/[\\{}$&#^_%~]/g, ' ') + '}';
     }

@@ -89,6 +89,12 @@ export interface AdaptiveOptions {
   maxDepth?: number;
   /** Maximum number of integrand evaluations (default 400 000): bounds the work in every case. */
   maxEvals?: number;
+  /**
+   * Filled in on return (2D adaptive only): `error`, the summed |change under halving| over the final
+   * cells, those at the depth limit included (a divergent integral keeps a large error there), and
+   * `resolved`, whether that error met the tolerance. Not filled when the result is not finite.
+   */
+  report?: { error: number; resolved: boolean };
 }
 
 /**
@@ -174,6 +180,7 @@ export function adaptiveIntegrate2D(
       hi: splitX ? b : d,
       best: splitX ? a + b : c + d,
       err: depth >= maxDepth ? 0 : Math.max(ex, ey),
+      rawErr: Math.max(ex, ey),
     };
   };
 
@@ -202,8 +209,17 @@ export function adaptiveIntegrate2D(
   }
   // sum the leaves afresh (no drift from the running updates)
   let sum = 0;
-  for (const i of heap) sum += cells[i]!.best;
+  let rawErr = 0;
+  for (const i of heap) {
+    sum += cells[i]!.best;
+    rawErr += cells[i]!.rawErr;
+  }
   root = cells[0]!;
+  if (opts.report) {
+    const value = heap.length > 0 ? sum : root.best;
+    opts.report.error = rawErr;
+    opts.report.resolved = rawErr <= Math.max(absTol, relTol * Math.abs(value));
+  }
   return heap.length > 0 ? sum : root.best;
 }
 
@@ -220,4 +236,6 @@ interface Cell {
   best: number;
   /** error estimate: |change of the estimate when halved along the split axis| (0 at max depth) */
   err: number;
+  /** the same change, also at max depth */
+  rawErr: number;
 }

@@ -81,6 +81,9 @@ const ON_LIGHT_EPS = 1e-9;
  * shading point on the light, non-finite values are reported in `messages` and replaced by safe
  * values (the defaults).
  */
+/** Smallest light area the model computes with: below it, w·h and the r²-scaled terms underflow. */
+const MIN_AREA = 1e-200;
+
 export function buildModel(params: AreaLightParams): AreaLightModel {
   const messages: ModelMessage[] = [];
   const def = schema;
@@ -90,10 +93,13 @@ export function buildModel(params: AreaLightParams): AreaLightModel {
   if (!finite3(params.lc)) messages.push({ kind: 'error', text: 'The light centre is not three finite numbers; using 0,0,2.' });
   let w = params.ls?.[0] ?? NaN;
   let h = params.ls?.[1] ?? NaN;
-  if (!(Number.isFinite(w) && Number.isFinite(h) && w > 0 && h > 0)) {
+  if (!(Number.isFinite(w) && Number.isFinite(h) && w > 0 && h > 0 && w * h >= MIN_AREA)) {
     messages.push({
       kind: 'error',
-      text: `A light of size ${fmtSize(w)} × ${fmtSize(h)} has no area, so it emits nothing and has no solid angle to sample. Using 1 × 1 instead.`,
+      text:
+        w > 0 && h > 0 && Number.isFinite(w * h)
+          ? `A light of size ${fmtSize(w)} × ${fmtSize(h)} has an area of ${w * h === 0 ? 'less than the smallest double (it rounds to 0)' : (w * h).toExponential(1)}, too small to compute with (below ${MIN_AREA}). Using 1 × 1 instead.`
+          : `A light of size ${fmtSize(w)} × ${fmtSize(h)} has no area, so it emits nothing and has no solid angle to sample. Using 1 × 1 instead.`,
     });
     w = 1;
     h = 1;

@@ -23,9 +23,11 @@ import { InvertedJacobian } from './view/InvertedJacobian';
 import { ExamQ1 } from './view/ExamQ1';
 import { ExamQ2, lobeTexOf } from './view/ExamQ2';
 import type { RepeatArgs, RepeatResult, StatsArgs } from './jobs';
+// Static, not lazy: the 3D panel is on the first screen, and a Suspense fallback of another height
+// shifted the layout when it arrived (three.js itself still loads lazily, inside Viewport).
+import { HemisphereView } from './view/HemisphereView';
 import './hemisphere.css';
 
-const HemisphereView = lazy(() => import('./view/HemisphereView').then((m) => ({ default: m.HemisphereView })));
 const StabilityPanel = lazy(() => import('./view/StabilityPanel').then((m) => ({ default: m.StabilityPanel })));
 
 const makeWorker = () => new Worker(new URL('./hemisphere.worker.ts', import.meta.url), { type: 'module' });
@@ -132,7 +134,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
       <Select label="Point set (ξ₁, ξ₂)" value={kind} options={POINT_OPTIONS} onChange={(v) => setParams({ points: v })} testId="points" />
       <Slider label="Samples N" value={params.n} min={1} max={MAX_N} log step={1} onChange={(v) => setParams({ n: Math.round(v) })} testId="n" />
       <NumberField label="Seed" value={params.seed} min={0} max={4294967295} step={1} onChange={(v) => setParams({ seed: Math.round(v) })} />
-      <p className="small" data-testid="stats-status" data-state={current ? 'ready' : stats.running ? 'running' : 'idle'}>
+      <p className="small stats-status" data-testid="stats-status" data-state={current ? 'ready' : stats.running ? 'running' : 'idle'}>
         {stats.running ? `computing in a worker… ${Math.round(stats.progress * 100)} %` : current ? 'statistics up to date' : ''}
       </p>
     </div>
@@ -278,13 +280,28 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
           lobeTex={lobeTex}
           answer2a={
             <>
-              <UniformReadouts exact={exact} uniform={uniformEst} kind={kind} rmse={rmse} />
+              <UniformReadouts
+                exact={exact}
+                uniform={uniformEst}
+                kind={kind}
+                rmse={rmse}
+                exactProblem={current && fc.status === 'ok' ? current.exactProblem : null}
+                exactNote={current?.exactNote}
+                fNonFinite={current && fc.status === 'ok' ? current.q2.fNonFinite : 0}
+              />
               <StderrNote kind={kind} rmse={rmse} />
             </>
           }
           answer2b={
             <>
-              <ImportanceReadouts importance={importanceEst} importanceOff={importanceOff} kind={kind} rmse={rmse} />
+              <ImportanceReadouts
+                importance={importanceEst}
+                importanceOff={importanceOff}
+                kind={kind}
+                rmse={rmse}
+                fNonFinite={current && fc.status === 'ok' ? current.q2.fNonFinite : 0}
+                pZero={current && fc.status === 'ok' ? current.q2.pZero : 0}
+              />
               {lobe && fc.status === 'ok' && current ? <VarianceWarning v={current.variance} lobe={lobeId} exponent={params.exponent} fIsCos={fIsCos} /> : null}
               <p className="small">
                 Both estimators use the same N points (ξ₁, ξ₂): the uniform one warps them to the hemisphere uniformly (p = 1/2π), the importance one with the chosen p
@@ -342,9 +359,7 @@ function Figure({ lobe, lobeId, kind, seed, n, anim, t, play, setParams, present
     <div className="hemi-figure" ref={box}>
       <div className="hemi-figure-main">
         {lobe ? (
-          <Suspense fallback={<p className="viewport-msg">Loading 3D view…</p>}>
-            <HemisphereView lobe={lobe} kind={kind} seed={seed} n={n} frame={frame} showPoints={showPoints} showGrid={showGrid} height={present ? 520 : 400} />
-          </Suspense>
+          <HemisphereView lobe={lobe} kind={kind} seed={seed} n={n} frame={frame} showPoints={showPoints} showGrid={showGrid} height={present ? 520 : 400} />
         ) : (
           <div className="hemi-no-view">{problem}</div>
         )}

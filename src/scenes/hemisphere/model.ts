@@ -226,14 +226,86 @@ export type Integrand = (theta: number, phi: number) => number;
  * Gauss–Legendre quadrature (core/verify). NaN when f is not finite somewhere it is evaluated.
  */
 export function exactIntegral(f: Integrand): number {
-  const v = adaptiveIntegrate2D((t, p) => f(t, p) * Math.sin(t), 0, HALF_PI, 0, TWO_PI, { relTol: 1e-12, maxDepth: 6 });
-  return Number.isFinite(v) ? v : NaN;
+  return checkedIntegral(f).value;
+}
+
+/** ∫ f dω, or NaN with the reason it has no value. */
+export interface CheckedIntegral {
+  value: number;
+  /** Why there is no value (f not finite somewhere, the quadrature does not converge); null if fine. */
+  problem: string | null;
+  /** The quadrature's own error estimate (summed over its final cells). */
+  error: number;
+  /** Set when the value is usable but less accurate than the readout's digits. */
+  note?: string;
+}
+
+/** Relative error above which the quadrature's value is not trusted (a divergent or unresolved integral). */
+const UNRESOLVED_REL = 1e-6;
+/** An unresolved error must shrink at least this much per level of refinement to count as converging. */
+const SHRINK_RATIO = 0.75;
+/** Relative error above which the value is not shown at all. */
+const UNTRUSTED_REL = 1e-2;
+
+function deg(x: number): string {
+  return `${(x * (180 / Math.PI)).toFixed(1)}°`;
+}
+
+/** A point (θ, φ) of a 64 × 128 grid (cell centres and edges) where f is not finite, or null. */
+export function findNonFinite(f: Integrand): { theta: number; phi: number } | null {
+  for (let i = 0; i <= 128; i++) {
+    const t = (i / 128) * HALF_PI;
+    for (let j = 0; j < 256; j++) {
+      const p = (j / 256) * TWO_PI;
+      if (!Number.isFinite(f(t, p))) return { theta: t, phi: p };
+    }
+  }
+  return null;
+}
+
+/**
+ * ∫ f dω with a verdict, like the monte-carlo scene's: NaN and a reason when f is not finite
+ * somewhere on the hemisphere, or when the adaptive quadrature's error does not shrink (at its
+ * depth limit a divergent integral, e.g. tan θ or 1/cos θ at the horizon, θ⁻² at the pole, or
+ * 1/(θ − 0.5) inside, keeps an error of the order of the integral itself).
+ */
+export function checkedIntegral(f: Integrand): CheckedIntegral {
+  const report = { error: NaN, resolved: false };
+  const v = adaptiveIntegrate2D((t, p) => f(t, p) * Math.sin(t), 0, HALF_PI, 0, TWO_PI, { relTol: 1e-12, maxDepth: 6, report });
+  if (!Number.isFinite(v)) {
+    const at = findNonFinite(f);
+    return {
+      value: NaN,
+      error: Infinity,
+      problem: at
+        ? `f is not finite (NaN or ±∞) at θ = ${deg(at.theta)}, φ = ${deg(at.phi)}, so ∫ f dω has no value`
+        : 'f is not finite (NaN or ±∞) somewhere on the hemisphere, so ∫ f dω has no value',
+    };
+  }
+  if (!(report.error <= UNRESOLVED_REL * Math.abs(v) + 1e-12)) {
+    // Not resolved to the tolerance: an integrable singularity's error still shrinks with depth
+    // (by 2^-1/2 per bisection for 1/√cos θ), a divergent one's does not (ln 2 · coefficient per
+    // bisection for a 1/x blow-up). Compare one level shallower.
+    const coarse = { error: NaN, resolved: false };
+    adaptiveIntegrate2D((t, p) => f(t, p) * Math.sin(t), 0, HALF_PI, 0, TWO_PI, { relTol: 1e-12, maxDepth: 5, report: coarse });
+    if (!(report.error < SHRINK_RATIO * coarse.error) || !(report.error <= UNTRUSTED_REL * Math.abs(v))) return {
+      value: NaN,
+      error: report.error,
+      problem: `the quadrature does not converge (its error estimate stays at ${report.error.toPrecision(2)} while refining): ∫ f dω diverges, or f has a singularity too strong to resolve`,
+    };
+    return { value: v, error: report.error, problem: null, note: `accurate to about ±${report.error.toPrecision(2)} only (f has a singularity the quadrature resolves slowly)` };
+  }
+  return { value: v, error: report.error, problem: null };
 }
 
 /** The two Q2 estimators on the same point set: uniform (2π/N) Σ f and importance (1/N) Σ f/p. */
 export interface Q2Estimates {
   uniform: McEstimate;
   importance: McEstimate;
+  /** Samples (of both point sets) where f itself is NaN or ±∞: the estimators have no value then. */
+  fNonFinite: number;
+  /** Importance samples where p = 0 (or is not finite) although f ≠ 0. */
+  pZero: number;
 }
 
 /**
@@ -245,11 +317,15 @@ export function q2Estimates(lobe: Lobe | null, f: Integrand, u: Float64Array, di
   const uni = scratch?.uni ?? new Float64Array(3 * n);
   const terms = scratch?.terms ?? new Float64Array(n);
   sampleUniformHemisphereBatch(u, uni, n);
+  let fNonFinite = 0;
+  let pZero = 0;
   for (let i = 0; i < n; i++) {
     const x = uni[3 * i]!;
     const y = uni[3 * i + 1]!;
     const z = uni[3 * i + 2]!;
-    terms[i] = TWO_PI * f(thetaOf(x, y, z), sphericalPhi(x, y));
+    const fv = f(thetaOf(x, y, z), sphericalPhi(x, y));
+    if (!Number.isFinite(fv)) fNonFinite++;
+    terms[i] = TWO_PI * fv;
   }
   const uniform = estimateFromTerms(terms, 0, n);
   let importance: McEstimate = { n: 0, estimate: NaN, variance: NaN, stderr: NaN, invalid: 0 };
@@ -260,11 +336,13 @@ export function q2Estimates(lobe: Lobe | null, f: Integrand, u: Float64Array, di
       const z = dirs[3 * i + 2]!;
       const fv = f(thetaOf(x, y, z), sphericalPhi(x, y));
       const p = lobe.pdf(x, y, z);
+      if (!Number.isFinite(fv)) fNonFinite++;
+      else if (fv !== 0 && !(p > 0 && Number.isFinite(p))) pZero++;
       terms[i] = fv === 0 ? 0 : p > 0 && Number.isFinite(p) && Number.isFinite(fv) ? fv / p : NaN;
     }
     importance = estimateFromTerms(terms, 0, n);
   }
-  return { uniform, importance };
+  return { uniform, importance, fNonFinite, pZero };
 }
 
 /**
@@ -302,6 +380,10 @@ export interface DrawStats {
   chi2: HemisphereChi2Result | null;
   hist: { theta: DensityHistogram; phi: DensityHistogram } | null;
   exact: number;
+  /** Why ∫ f dω has no value (see {@link checkedIntegral}); null when it has one. */
+  exactProblem: string | null;
+  /** Set when the value is less accurate than its digits. */
+  exactNote?: string;
   q2: Q2Estimates;
   /** Variances of one term of each estimator, by quadrature (null without a lobe, f or a finite ∫ f). */
   variance: VarianceCheck | null;
@@ -318,16 +400,19 @@ export function computeDrawStats(lobe: Lobe | null, f: Integrand | null, kind: S
     lobe.sampleBatch(u, dirs, n);
   }
   const nan: McEstimate = { n: 0, estimate: NaN, variance: NaN, stderr: NaN, invalid: 0 };
-  const exact = f ? exactIntegral(f) : NaN;
-  const haveExact = !!f && Number.isFinite(exact);
+  const exact = f ? checkedIntegral(f) : null;
+  const ev = exact ? exact.value : NaN;
+  const haveExact = !!f && Number.isFinite(ev);
   return {
     n,
     chi2: lobe && dirs ? chi2OfDirections(lobe, dirs, n) : null,
     hist: lobe && dirs ? marginalHistograms(lobe, dirs, n) : null,
-    exact,
-    q2: f ? q2Estimates(lobe, f, u, dirs, n) : { uniform: nan, importance: nan },
-    variance: lobe && f && haveExact ? varianceCheck(lobe, f, exact) : null,
-    rmse: f && haveExact && kind !== 'independent' ? rmseOverRuns(lobe, f, kind, seed, n, exact) : null,
+    exact: ev,
+    exactProblem: exact ? exact.problem : null,
+    ...(exact?.note ? { exactNote: exact.note } : {}),
+    q2: f ? q2Estimates(lobe, f, u, dirs, n) : { uniform: nan, importance: nan, fNonFinite: 0, pZero: 0 },
+    variance: lobe && f && haveExact ? varianceCheck(lobe, f, ev) : null,
+    rmse: f && haveExact && kind !== 'independent' ? rmseOverRuns(lobe, f, kind, seed, n, ev) : null,
   };
 }
 

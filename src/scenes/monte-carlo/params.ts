@@ -15,7 +15,7 @@ export type Strategy = (typeof STRATEGIES)[number];
 export const MAX_N = 10_000_000;
 
 export const schema = {
-  f: { kind: 'string', default: '(x+2)^2', maxLength: 300, label: 'integrand f(x)' },
+  f: { kind: 'string', default: '(x+2)^2', maxLength: 400, label: 'integrand f(x)', expression: ['x'] },
   a: { kind: 'number', default: 0, min: -1000, max: 1000, label: 'lower limit a' },
   b: { kind: 'number', default: 2, min: -1000, max: 1000, label: 'upper limit b' },
   pdf: {
@@ -24,7 +24,7 @@ export const schema = {
     values: PDF_KINDS,
     aliases: { importance: 'proportional', proportional_to_f: 'proportional', f: 'proportional', typed: 'custom', ramp: 'linear' },
   },
-  pdfexpr: { kind: 'string', default: '1 + x', maxLength: 300, label: 'custom pdf p(x)' },
+  pdfexpr: { kind: 'string', default: '1 + x', maxLength: 400, label: 'custom pdf p(x)', expression: ['x'] },
   strategy: {
     kind: 'enum',
     default: 'independent',

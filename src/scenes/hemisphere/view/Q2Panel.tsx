@@ -52,28 +52,81 @@ export function StderrNote({ kind, rmse }: { kind: SequenceKind; rmse: RmseResul
   );
 }
 
-export function UniformReadouts({ exact, uniform, kind, rmse }: { exact: number | null; uniform: McEstimate | null; kind: SequenceKind; rmse: RmseResult | null }) {
+export function UniformReadouts({
+  exact,
+  uniform,
+  kind,
+  rmse,
+  exactProblem = null,
+  exactNote,
+  fNonFinite = 0,
+}: {
+  exact: number | null;
+  uniform: McEstimate | null;
+  kind: SequenceKind;
+  rmse: RmseResult | null;
+  /** Why ∫ f dω has no value (divergent, f not finite), shown instead of a number. */
+  exactProblem?: string | null;
+  exactNote?: string | undefined;
+  /** Samples where f itself is NaN or ±∞: then no estimate has a value. */
+  fNonFinite?: number;
+}) {
+  const fBad = fNonFinite > 0;
   return (
     <div className="readouts">
-      <Readout id="mc-exact" label="∫ f dω (quadrature)" value={exact} digits={8} />
-      <Readout id="mc-uniform" label="uniform (2π/N) Σ f" value={uniform?.estimate ?? null} digits={8} note={errorNote(uniform, kind, rmse ? rmse.uniform : null)} />
+      <Readout id="mc-exact" label="∫ f dω (quadrature)" value={exactProblem ? null : exact} digits={8} note={exactProblem ? 'no value' : exactNote} />
+      <Readout
+        id="mc-uniform"
+        label="uniform (2π/N) Σ f"
+        value={fBad ? null : (uniform?.estimate ?? null)}
+        digits={8}
+        note={fBad ? 'no value: f is not finite at some samples' : errorNote(uniform, kind, rmse ? rmse.uniform : null)}
+      />
+      {exactProblem ? (
+        <Notice kind="warn" testId="exact-problem">
+          ∫ f dω has no value here: {exactProblem}. The estimators then have nothing to converge to.
+        </Notice>
+      ) : null}
+      {fBad ? (
+        <Notice kind="warn" testId="f-nonfinite">
+          f is not finite (NaN or ±∞) at {fNonFinite} of the sampled directions: f is undefined or overflows on part of the hemisphere, so the
+          estimates have no value (averaging only the finite terms would be biased). Change f so it is finite everywhere on the hemisphere.
+        </Notice>
+      ) : null}
     </div>
   );
 }
 
-export function ImportanceReadouts({ importance, importanceOff, kind, rmse }: { importance: McEstimate | null; importanceOff: string | null; kind: SequenceKind; rmse: RmseResult | null }) {
+export function ImportanceReadouts({
+  importance,
+  importanceOff,
+  kind,
+  rmse,
+  fNonFinite = 0,
+  pZero,
+}: {
+  importance: McEstimate | null;
+  importanceOff: string | null;
+  kind: SequenceKind;
+  rmse: RmseResult | null;
+  fNonFinite?: number;
+  /** Importance samples where p = 0 but f ≠ 0 (defaults to the estimate's invalid count). */
+  pZero?: number;
+}) {
+  const fBad = fNonFinite > 0;
+  const pBad = pZero ?? (fBad ? 0 : (importance?.invalid ?? 0));
   return (
     <div className="readouts">
       <Readout
         id="mc-importance"
         label="importance (1/N) Σ f/p"
-        value={importanceOff ? null : (importance?.estimate ?? null)}
+        value={importanceOff || fBad ? null : (importance?.estimate ?? null)}
         digits={8}
-        note={importanceOff ?? errorNote(importance, kind, rmse ? rmse.importance : null)}
+        note={importanceOff ?? (fBad ? 'no value: f is not finite at some samples' : errorNote(importance, kind, rmse ? rmse.importance : null))}
       />
-      {importance && importance.invalid > 0 ? (
+      {pBad > 0 ? (
         <Notice kind="warn">
-          {importance.invalid} sample(s) landed where p = 0 but f ≠ 0: importance sampling needs p &gt; 0 wherever f ≠ 0, so that estimate is biased.
+          {pBad} sample(s) landed where p = 0 but f ≠ 0: importance sampling needs p &gt; 0 wherever f ≠ 0, so that estimate is biased.
         </Notice>
       ) : null}
     </div>

@@ -1,0 +1,164 @@
+/**
+ * Hostile input, kept fixed (issue 17):
+ *  - a URL corpus: every route × every parameter set to each hostile value (prototype names,
+ *    empty, NaN, ±Infinity, 1e400, 100k characters, unicode/RTL marks, broken percent-escapes,
+ *    wrong arity, deeply nested calls). Per value, all of a route's parameters get it at once
+ *    (one hash change, the scene stays loaded): zero console errors (fixture), a working scene, no
+ *    main-thread task over 1 s while the input is processed, and a notice naming every
+ *    non-text parameter whose value could not be used;
+ *  - the fuzz mode (`fuzz=1&seed=…&fuzzn=…`) on every route, fixed seed, a few hundred actions.
+ * Routes come from the scene registry (src/scenes/registry.ts) plus EXTRA_ROUTES, parameter names
+ * from each scene's params.ts, so new scenes are covered without editing this file.
+ */
+import { readFileSync, existsSync } from 'node:fs';
+import { test, expect, openScene } from './fixtures';
+import type { Page } from '@playwright/test';
+
+/** Routes that are not scenes of the registry (add '/practice', '/guide' … here when they exist). */
+const EXTRA_ROUTES: { path: string; id: string | null }[] = [];
+
+function registryRoutes(): { path: string; id: string | null }[] {
+  const src = readFileSync('src/scenes/registry.ts', 'utf8');
+  const out: { path: string; id: string | null }[] = [];
+  for (const m of src.matchAll(/id:\s*'([\w-]+)',\s*\n\s*path:\s*'(\/[\w/-]*)'/g)) out.push({ id: m[1]!, path: m[2]! });
+  return out;
+}
+
+/** Parameter names of a scene's URL schema (top-level keys of `schema = { … }` in its params.ts). */
+function paramNames(id: string | null): { name: string; kind: string }[] {
+  if (!id) return [];
+  const file = `src/scenes/${id}/params.ts`;
+  if (!existsSync(file)) return [];
+  const src = readFileSync(file, 'utf8');
+  const start = src.indexOf('export const schema = {');
+  if (start < 0) return [];
+  const body = src.slice(start);
+  const out: { name: string; kind: string }[] = [];
+  for (const m of body.matchAll(/^ {2}(\w+): \{(?:\s*kind: '(\w+)')?/gm)) {
+    let kind = m[2];
+    if (!kind) {
+      const after = body.slice(m.index!, m.index! + 200);
+      kind = /kind: '(\w+)'/.exec(after)?.[1] ?? 'unknown';
+    }
+    out.push({ name: m[1]!, kind });
+  }
+  return out;
+}
+
+const ROUTES = [...registryRoutes(), ...EXTRA_ROUTES];
+
+const NESTED = `${'exp('.repeat(60)}x${')'.repeat(60)}`;
+/** [label, raw text put into the query as is (already URL-encoded where needed)]. */
+const CORPUS: [string, string][] = [
+  ['__proto__', '__proto__'],
+  ['constructor', 'constructor'],
+  ['toString', 'toString'],
+  ['valueOf', 'valueOf'],
+  ['hasOwnProperty', 'hasOwnProperty'],
+  ['empty', ''],
+  ['NaN', 'NaN'],
+  ['Infinity', 'Infinity'],
+  ['-Infinity', '-Infinity'],
+  ['1e400', '1e400'],
+  ['100k characters', 'x'.repeat(100_000)],
+  ['unicode and RTL marks', encodeURIComponent('\u202Eθ\u200F😀\u200E')],
+  ['broken percent-escapes', '%E0%A4%A%ZZ%'],
+  ['wrong arity', '1,2'],
+  ['deeply nested calls', encodeURIComponent(NESTED)],
+];
+
+async function installLongTaskObserver(page: Page) {
+  await page.evaluate(() => {
+    const w = window as unknown as { __long: number[] };
+    w.__long = [];
+    new PerformanceObserver((list) => {
+      for (const e of list.getEntries()) w.__long.push(e.duration);
+    }).observe({ type: 'longtask', buffered: false });
+  });
+}
+
+/** Resolves once the main thread has rendered two frames and run a macrotask (it is free again). */
+async function settle(page: Page) {
+  await page.evaluate(
+    () =>
+      new Promise<void>((resolve) => {
+        requestAnimationFrame(() => requestAnimationFrame(() => setTimeout(resolve, 0)));
+      }),
+  );
+}
+
+async function expectWorkingScene(page: Page, label: string) {
+  await expect(page.locator('main#main')).toBeVisible();
+  await expect(page.locator('.loading')).toHaveCount(0);
+  await expect(page.getByText('Something in this scene went wrong'), `error panel after ${label}`).toHaveCount(0);
+}
+
+for (const route of ROUTES) {
+  test(`URL corpus on ${route.path}: every parameter × every hostile value`, async ({ page }) => {
+    test.setTimeout(240_000);
+    const params = paramNames(route.id);
+    await openScene(page, `#${route.path}`);
+    // let the first load (lazy libraries, first plots) finish before timing the input
+    for (let y = 0; y <= 4; y++) {
+      await page.evaluate((f) => window.scrollTo(0, f * document.body.scrollHeight), y / 4);
+      await settle(page);
+    }
+    await page.evaluate(() => window.scrollTo(0, 0));
+    await installLongTaskObserver(page);
+    for (const [label, raw] of CORPUS) {
+      const names = [...params.map((p) => p.name), 'embed', 'theme'];
+      const q = names.map((n) => `${n}=${raw}`).join('&');
+      await page.evaluate((h) => {
+        window.location.hash = h;
+      }, `#${route.path}?${q}`);
+      await settle(page);
+      await expectWorkingScene(page, label);
+      // every non-text parameter that cannot use the value is named in the notice
+      const mustName = params.filter((p) => p.kind !== 'string' && !(p.kind === 'list' && raw === ''));
+      if (mustName.length) {
+        const notice = page.getByTestId('param-notice');
+        await expect(notice, `notice for ${label}`).toBeVisible();
+        const named = await notice.locator('li code').allTextContents();
+        for (const p of mustName) expect(named, `${route.path}: ${p.name}=${label} is named`).toContain(p.name);
+      }
+      await settle(page);
+      const long = await page.evaluate(() => {
+        const w = window as unknown as { __long: number[] };
+        const l = w.__long.slice();
+        w.__long.length = 0;
+        return l;
+      });
+      expect(Math.max(0, ...long), `${route.path} with every parameter = ${label}: longest main-thread task (ms)`).toBeLessThan(1000);
+    }
+    // one prototype name per parameter on its own, then a control change: the URL never carries
+    // a function's source
+    for (const p of params) {
+      await page.evaluate((h) => {
+        window.location.hash = h;
+      }, `#${route.path}?${p.name}=toString`);
+      await settle(page);
+      await expectWorkingScene(page, `${p.name}=toString`);
+      expect(await page.evaluate(() => window.location.href)).not.toMatch(/native%20code|native code/);
+    }
+  });
+}
+
+const FUZZ_ACTIONS = 200;
+
+for (const route of ROUTES) {
+  test(`fuzz mode on ${route.path}: ${FUZZ_ACTIONS} seeded actions, no error`, async ({ page }) => {
+    test.setTimeout(120_000);
+    await openScene(page, `#${route.path}?fuzz=1&fuzzseed=17&fuzzn=${FUZZ_ACTIONS}`);
+    await expect(page.locator('.fuzz-panel')).toBeVisible();
+    await expect
+      .poll(async () => page.evaluate(() => (window as unknown as { __rmlFuzz?: { running: boolean } }).__rmlFuzz?.running ?? true), { timeout: 100_000, intervals: [500] })
+      .toBe(false);
+    const state = await page.evaluate(() => {
+      const f = (window as unknown as { __rmlFuzz: { actions: number; errors: string[]; log: string[] } }).__rmlFuzz;
+      return { actions: f.actions, errors: f.errors, log: f.log };
+    });
+    expect(state.actions).toBe(FUZZ_ACTIONS);
+    expect(state.errors, `errors while fuzzing (last actions: ${state.log.join(' | ')})`).toEqual([]);
+    await expectWorkingScene(page, 'fuzzing');
+  });
+}
