@@ -126,7 +126,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
         value={params.jacobian as 'correct' | 'inverted'}
         options={[
           { value: 'correct', label: 'sin θ · p(ω) (correct)' },
-          { value: 'inverted', label: 'p(ω) / sin θ (as printed on the paper)' },
+          { value: 'inverted', label: 'p(ω) / sin θ (as on the paper)' },
         ]}
         onChange={(v) => setParams({ jacobian: v })}
         testId="jacobian"

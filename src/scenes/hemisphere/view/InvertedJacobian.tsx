@@ -1,5 +1,5 @@
 /**
- * The key's upside-down Jacobian, p(θ, φ) = p(ω)/sin θ ∝ cot θ e^φ: why it is not a density.
+ * The identity as printed on the exam paper (Jacobian upside down), p(θ, φ) = p(ω)/sin θ ∝ cot θ e^φ, and the key's marginal 2 cot θ: why it is not a density.
  * The θ-integral ∫_ε^{π/2} cot θ dθ = −ln sin ε grows without bound as ε → 0; the scene shows the
  * density near θ = 0 and the partial integral, never a normalization constant or samples.
  */
