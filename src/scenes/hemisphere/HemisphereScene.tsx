@@ -223,7 +223,8 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
             seed={params.seed}
             n={params.n}
             anim={anim}
-            t={Number(params.t)}
+            // a link with play=1 and t at its default (the end) plays the animation from the start
+            t={params.play === true && Number(params.t) >= 1 ? 0 : Number(params.t)}
             play={params.play === true}
             setParams={setParams}
             present={mode.present}
