@@ -7,7 +7,7 @@
  */
 import { lazy, memo, Suspense, useMemo, useRef, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
-import { useCompiled, ExprField, NumberField, Notice, Panel, Readout, Select, Slider, Toggle, TimelineTransport, useTimeline, formatNumber } from '../../ui';
+import { useCompiled, ExprField, NumberField, Notice, Panel, Readout, Select, Slider, Toggle, TimelineTransport, useTimeline, prefersReducedMotion, formatNumber } from '../../ui';
 import { ExamQuestion, ExploreFurther } from '../../ui/exam';
 import { MathTex } from '../../ui';
 import { useWorkerJob } from '../../workers';
@@ -224,7 +224,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
             n={params.n}
             anim={anim}
             // a link with play=1 and t at its default (the end) plays the animation from the start
-            t={params.play === true && Number(params.t) >= 1 ? 0 : Number(params.t)}
+            t={params.play === true && !prefersReducedMotion() && Number(params.t) >= 1 ? 0 : Number(params.t)}
             play={params.play === true}
             setParams={setParams}
             present={mode.present}
