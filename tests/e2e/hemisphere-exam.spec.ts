@@ -104,6 +104,7 @@ test.describe('statements that must be true', () => {
     await statsReady(page);
     await expect(page.getByTestId('variance-warning')).toContainText('Infinite variance');
     await expect(page.getByTestId('variance-warning')).toContainText('cos^(2−n)');
+    await expect(page.getByTestId('answer-2b').locator('.readout-note')).toContainText('meaningless here (infinite variance)');
     await page.getByTestId('repeat-button').click();
     const summary = page.getByTestId('repeat-summary');
     await expect(summary).toContainText('unbiased', { timeout: 60_000 });

@@ -302,6 +302,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
                 rmse={rmse}
                 fNonFinite={current && fc.status === 'ok' ? current.q2.fNonFinite : 0}
                 pZero={current && fc.status === 'ok' ? current.q2.pZero : 0}
+                infiniteVariance={!!current?.variance?.infinite}
               />
               {lobe && fc.status === 'ok' && current ? <VarianceWarning v={current.variance} lobe={lobeId} exponent={params.exponent} fIsCos={fIsCos} /> : null}
               <p className="small">

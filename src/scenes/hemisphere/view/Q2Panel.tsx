@@ -104,6 +104,7 @@ export function ImportanceReadouts({
   rmse,
   fNonFinite = 0,
   pZero,
+  infiniteVariance = false,
 }: {
   importance: McEstimate | null;
   importanceOff: string | null;
@@ -112,8 +113,14 @@ export function ImportanceReadouts({
   fNonFinite?: number;
   /** Importance samples where p = 0 but f ≠ 0 (defaults to the estimate's invalid count). */
   pZero?: number;
+  /** ∫ f²/p dω diverges: s/√N is then no error estimate either. */
+  infiniteVariance?: boolean;
 }) {
   const fBad = fNonFinite > 0;
+  const seNote =
+    infiniteVariance && importance && Number.isFinite(importance.stderr) && kind === 'independent'
+      ? `s/√N = ${formatNumber(importance.stderr, 3)}, meaningless here (infinite variance)`
+      : errorNote(importance, kind, rmse ? rmse.importance : null);
   const pBad = pZero ?? (fBad ? 0 : (importance?.invalid ?? 0));
   return (
     <div className="readouts">
@@ -122,7 +129,7 @@ export function ImportanceReadouts({
         label="importance (1/N) Σ f/p"
         value={importanceOff || fBad ? null : (importance?.estimate ?? null)}
         digits={8}
-        note={importanceOff ?? (fBad ? 'no value: f is not finite at some samples' : errorNote(importance, kind, rmse ? rmse.importance : null))}
+        note={importanceOff ?? (fBad ? 'no value: f is not finite at some samples' : seNote)}
       />
       {pBad > 0 ? (
         <Notice kind="warn">
