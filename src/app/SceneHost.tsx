@@ -2,7 +2,7 @@ import { Component, useCallback, useEffect, useMemo, useRef, useState, type Reac
 import type { SceneInfo } from '../scenes/registry';
 import { sceneLoader } from '../scenes/registry';
 import type { SceneModule } from './scene';
-import { parseParams, serializeParams, type ParamProblem, type ParamValues, type ParamSchema } from './params';
+import { parseParams, sanitizePatch, serializeParams, type ParamProblem, type ParamValues, type ParamSchema } from './params';
 import { shellExtras, type ShellFlags } from './route';
 import { useShortcuts } from '../ui/shortcuts';
 import { QuestionNav } from '../ui/exam';
@@ -114,7 +114,9 @@ function LoadedScene({ mod, info, query, flags, theme }: { mod: SceneModule; inf
   useEffect(() => setLinkValues(parsed.values), [parsed]);
   const setParams = useCallback(
     (patch: Record<string, unknown>) => {
-      const next = { ...valuesRef.current, ...patch } as ParamValues<ParamSchema>;
+      // only values the schema allows reach the scene and the URL (a select set to a missing
+      // option, a NaN from a cleared number field, a key that is not a parameter: dropped)
+      const next = { ...valuesRef.current, ...sanitizePatch(schema, patch) } as ParamValues<ParamSchema>;
       valuesRef.current = next;
       setValues(next);
       const seq = ++writeSeq.current;

@@ -10,7 +10,6 @@ import { treeToTex } from './tex';
 import { checkAndCompile, canonicalizeTree, ExpressionError, MAX_EXPRESSION_LENGTH, type CompiledFn } from './compile';
 
 export * from './compile';
-export * from './tabulate';
 export { treeToTex } from './tex';
 
 type Engine = typeof import('./engine');
@@ -52,7 +51,7 @@ export type CompileFailureKind = 'empty' | 'too-long' | 'unavailable' | 'syntax'
  * { ok: false, kind, message } with a message for the person who typed it — syntax errors with the
  * character position, "unknown symbol 'y' — use theta, phi", "function 'foo' is not allowed", …
  * Accepts θ/φ for theta/phi, π/τ for pi/tau. Evaluation is real-valued (Math.*): outside a
- * function's domain the result is NaN, which callers must treat as invalid (see tabulate.ts).
+ * function's domain the result is NaN, which callers must treat as invalid.
  */
 export function compileExpression(src: string, variables: readonly string[]): Promise<CompileResult> {
   if (typeof src !== 'string') return Promise.resolve({ ok: false, kind: 'invalid', message: 'the expression must be text' });

@@ -21,13 +21,13 @@
  * (pbrt-v4 does the same below `MinSphericalSampleArea`).
  */
 import { parallelogramSolidAngle } from '../geometry/solidAngle';
+import { TWO_PI } from '../sampling/sphericalCoords';
 import type { RectLight } from './rectLight';
 
 /** Below this solid angle (sr) the sampler falls back to uniform area sampling (see file comment). */
 export const SPHERICAL_RECT_MIN_SOLID_ANGLE = 1e-6;
 
 const ONE_MINUS_EPS = 1 - 2 ** -53;
-const TWO_PI = 2 * Math.PI;
 
 /** Precomputed state for sampling one rectangle from one reference point (build once, sample many). */
 export interface SphericalRect {

@@ -28,6 +28,14 @@ export function mix32(x: number): number {
   return (x ^ (x >>> 16)) >>> 0;
 }
 
+/**
+ * The seed of independent run r of a base seed — the one derivation every scene uses (hash, so
+ * distinct runs give unrelated streams and point sets, and run r of seed s is not run r−1 of s+1).
+ */
+export function runSeed(seed: number, r: number): number {
+  return mix32((seed >>> 0) ^ mix32(r + 0x5bd1e995));
+}
+
 /** Coerce any number to an unsigned 32-bit seed (non-finite → 0, fractions truncated, mod 2^32). */
 export function toSeed(x: number): number {
   if (!Number.isFinite(x)) return 0;

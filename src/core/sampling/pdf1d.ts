@@ -12,6 +12,7 @@
  */
 import type { Failure } from '../failure';
 import { integrate1D } from '../estimators/integrate1d';
+import { gaussLegendre } from '../verify/quadrature';
 import { PiecewiseConstant1D } from './piecewise1D';
 
 /** A 1D density on [a, b] with its sampler and inverse (the scene's strategies are these). */
@@ -217,8 +218,7 @@ export interface PdfProblem extends Failure<PdfProblemKind> {
 }
 
 /** 4-point Gauss–Legendre nodes on [−1, 1] and weights (exact for cubics; used per table bin). */
-const GL4_X = [-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526];
-const GL4_W = [0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538];
+const { x: GL4_X, w: GL4_W } = gaussLegendre(4);
 
 /** Default number of bins of tabulated densities. */
 export const TABLE_BINS = 4096;

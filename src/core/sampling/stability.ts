@@ -19,6 +19,7 @@
  */
 import { EXAM_E2PI_M1 } from './examLobe';
 import { TWO_PI } from './sphericalCoords';
+import { ulp } from '../geometry/ulp';
 
 /** ½ arccos(1 − 2ξ), the key's θ inversion. Domain ξ ∈ [0, 1]. */
 export function thetaFromXiAcos(xi: number): number {
@@ -66,16 +67,7 @@ export const STABILITY_FORMS: readonly StabilityForm[] = [
 /** The ξ values the panel evaluates: tiny, moderate and near 1 (all exactly representable). */
 export const STABILITY_XIS: readonly number[] = [1e-300, 2 ** -53, 1e-12, 1e-6, 0.5, 1 - 1e-6, 1 - 1e-12, 1 - 2 ** -53];
 
-/** Size of one unit in the last place of x (ulp), for x finite; 2⁻¹⁰⁷⁴ at 0. */
-export function ulp(x: number): number {
-  const a = Math.abs(x);
-  if (!Number.isFinite(a)) return NaN;
-  if (a < 2 ** -1022) return 2 ** -1074;
-  const e = Math.floor(Math.log2(a));
-  // log2 may be off by one right at powers of two; correct it
-  const e2 = 2 ** e > a ? e - 1 : 2 ** (e + 1) <= a ? e + 1 : e;
-  return 2 ** (e2 - 52);
-}
+export { ulp };
 
 /** Error of one value against a reference: relative error and error in ulps of the reference. */
 export interface ErrorMeasure {

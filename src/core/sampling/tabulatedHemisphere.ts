@@ -21,9 +21,10 @@
  * by marginal and conditional); Gauss–Legendre probes after Numerical Recipes §4.6.
  */
 import type { Failure } from '../failure';
+import { gaussLegendre } from '../verify/quadrature';
 import { DensityError, PiecewiseConstant1D } from './piecewise1D';
 import { PiecewiseConstant2D } from './piecewise2D';
-import { TWO_PI, TWO_PI_BELOW, clampUnit, sphericalPhi, type VecOut } from './sphericalCoords';
+import { HALF_PI, TWO_PI, TWO_PI_BELOW, clampUnit, sphericalPhi, type VecOut } from './sphericalCoords';
 
 /** A density over solid angle in (θ, φ); may return anything (validated). */
 export type ThetaPhiDensity = (theta: number, phi: number) => number;
@@ -45,8 +46,7 @@ export interface TabulateFailure extends Failure<'negative' | 'nonfinite' | 'zer
 /** Result of {@link tabulateHemisphereDensity}. */
 export type TabulateResult = { ok: true; lobe: TabulatedHemisphere; warning?: string } | TabulateFailure;
 
-const GL4_X = [-0.8611363115940526, -0.3399810435848563, 0.3399810435848563, 0.8611363115940526];
-const GL4_W = [0.3478548451374538, 0.6521451548625461, 0.6521451548625461, 0.3478548451374538];
+const { x: GL4_X, w: GL4_W } = gaussLegendre(4);
 
 class Invalid extends Error {
   constructor(readonly failure: TabulateFailure) {
@@ -111,7 +111,7 @@ function massThetaPhi(p: ThetaPhiDensity, t0: number, t1: number, p0: number, p1
  * the integral diverges (e.g. ∫ dθ/θ). Returns a failure or null.
  */
 function probeDivergence(p: ThetaPhiDensity, total: number): TabulateFailure | null {
-  const H = Math.PI / 2;
+  const H = HALF_PI;
   const scales = [2 ** -10, 2 ** -20, 2 ** -30, 2 ** -40];
   const probes: { name: string; region: (e: number) => [number, number, number, number]; explain: string }[] = [
     { name: 'the pole θ → 0', region: (e) => [e / 2, e, 0, TWO_PI], explain: '∫ p sin θ dθ near θ = 0' },

@@ -20,6 +20,7 @@
  * Source: the exam's Q3(c); pbrt-v4 §3.8.3 (SphericalTheta / SphericalPhi, with the same
  * "add 2π to negative φ" rule and clamped arccos); Ray Tracing Gems ch. 6 on precision.
  */
+import { TWO_PI } from '../sampling/sphericalCoords';
 
 /** The result of {@link sphericalUV}: both the angles (the "forgot to normalize" variant) and (u, v). */
 export type SphericalUV =
@@ -40,7 +41,6 @@ export type SphericalUV =
     }
   | { ok: false; error: string };
 
-const TWO_PI = 2 * Math.PI;
 
 /**
  * Spherical (u, v) of the point (x, y, z) about the origin. Domain: finite, not all zero.

@@ -1,7 +1,7 @@
+import { TWO_PI } from '../sampling/sphericalCoords';
 import { chi2Test, type Chi2Result } from './chi2';
 import { adaptiveIntegrate2D, type AdaptiveOptions } from './quadrature';
 
-const TWO_PI = 2 * Math.PI;
 
 /** Options of {@link hemisphereChi2}. */
 export interface HemisphereChi2Options {

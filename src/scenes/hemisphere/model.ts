@@ -24,18 +24,19 @@ import {
   samplePhongLobeBatch,
   sampleUniformHemisphere,
   sampleUniformHemisphereBatch,
+  HALF_PI,
+  TWO_PI,
   sphericalPhi,
+  sphericalTheta,
   tabulateHemisphereDensity,
   uniformHemispherePdf,
   type TabulateResult,
 } from '../../core/sampling';
-import { fillSequence2D, mix32, type SequenceKind } from '../../core/random';
+import { fillSequence2D, runSeed, type SequenceKind } from '../../core/random';
 import { hemisphereChi2, adaptiveIntegrate2D, type HemisphereChi2Result } from '../../core/verify';
 import { estimateFromTerms, type McEstimate } from '../../core/estimators';
 import type { LobeId } from './params';
 
-const TWO_PI = 2 * Math.PI;
-const HALF_PI = Math.PI / 2;
 
 /** A sampling density on the hemisphere, as the scene uses it: sampler, pdf and marginals. */
 export interface Lobe {
@@ -141,11 +142,6 @@ function uniformPhiPdf(phi: number): number {
   return phi >= 0 && phi < TWO_PI ? 1 / TWO_PI : 0;
 }
 
-/** Derive an independent seed for run r of many (hash; distinct runs give unrelated point sets). */
-export function runSeed(seed: number, r: number): number {
-  return mix32((seed >>> 0) ^ mix32(r + 0x5bd1e995));
-}
-
 /** The n points (ξ₁, ξ₂) of the chosen set, interleaved, into `out` (length ≥ 2n). */
 export function drawUniforms(kind: SequenceKind, seed: number, n: number, out = new Float64Array(2 * n)): Float64Array {
   return fillSequence2D(kind, seed, n, out);
@@ -157,11 +153,6 @@ export function drawDirections(lobe: Lobe, kind: SequenceKind, seed: number, n: 
   const dirs = new Float64Array(3 * n);
   lobe.sampleBatch(u, dirs, n);
   return { u, dirs };
-}
-
-/** θ ∈ [0, π] of a unit vector's z (clamped acos is fine for display binning). */
-function thetaOf(x: number, y: number, z: number): number {
-  return Math.atan2(Math.hypot(x, y), z);
 }
 
 /** A histogram normalized as a density (counts/(N·Δ)), with bin centres, beside the model density. */
@@ -184,7 +175,7 @@ export function marginalHistograms(lobe: Lobe, dirs: Float64Array, n: number, bi
     const x = dirs[3 * i]!;
     const y = dirs[3 * i + 1]!;
     const z = dirs[3 * i + 2]!;
-    const t = thetaOf(x, y, z);
+    const t = sphericalTheta(x, y, z);
     const p = sphericalPhi(x, y);
     if (t >= 0 && t <= HALF_PI) ct[Math.min(bins - 1, Math.floor(t / wt))]++;
     if (p >= 0 && p < TWO_PI) cp[Math.min(bins - 1, Math.floor(p / wp))]++;
@@ -323,7 +314,7 @@ export function q2Estimates(lobe: Lobe | null, f: Integrand, u: Float64Array, di
     const x = uni[3 * i]!;
     const y = uni[3 * i + 1]!;
     const z = uni[3 * i + 2]!;
-    const fv = f(thetaOf(x, y, z), sphericalPhi(x, y));
+    const fv = f(sphericalTheta(x, y, z), sphericalPhi(x, y));
     if (!Number.isFinite(fv)) fNonFinite++;
     terms[i] = TWO_PI * fv;
   }
@@ -334,7 +325,7 @@ export function q2Estimates(lobe: Lobe | null, f: Integrand, u: Float64Array, di
       const x = dirs[3 * i]!;
       const y = dirs[3 * i + 1]!;
       const z = dirs[3 * i + 2]!;
-      const fv = f(thetaOf(x, y, z), sphericalPhi(x, y));
+      const fv = f(sphericalTheta(x, y, z), sphericalPhi(x, y));
       const p = lobe.pdf(x, y, z);
       if (!Number.isFinite(fv)) fNonFinite++;
       else if (fv !== 0 && !(p > 0 && Number.isFinite(p))) pZero++;
@@ -522,7 +513,7 @@ export function animFrame(lobe: Lobe | null, kind: SequenceKind, seed: number, n
     tracked = {
       xi1: u[0]!,
       xi2: u[1]!,
-      theta: thetaOf(d[0]!, d[1]!, d[2]!),
+      theta: sphericalTheta(d[0]!, d[1]!, d[2]!),
       phi: sphericalPhi(d[0]!, d[1]!),
       dir: [d[0]!, d[1]!, d[2]!],
       pos: [p[0]!, p[1]!, p[2]!],

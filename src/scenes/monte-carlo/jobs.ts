@@ -14,7 +14,8 @@ import {
 import type { Failure } from '../../core/failure';
 import type { SequenceKind } from '../../core/random/sequences';
 import type { Pdf1D } from '../../core/sampling/pdf1d';
-import { checkLimits, choosePdf, exactIntegral, runSeed, type Fn1, type PdfChoice } from './model';
+import { runSeed } from '../../core/random/rng';
+import { checkLimits, choosePdf, exactIntegral, type Fn1, type PdfChoice } from './model';
 import type { PdfKind, Strategy } from './params';
 
 /** Compiles a user expression in x (the worker passes core/expr's compiler). */

@@ -311,11 +311,6 @@ export function strategyLabel(pdf: PdfKind, seq: Strategy): string {
   return `${PDF_LABEL[pdf]} · ${SEQ_LABEL[seq]}`;
 }
 
-/** Seed of independent run r of a base seed (distinct streams per run). */
-export function runSeed(seed: number, r: number): number {
-  return (seed + Math.imul(r + 1, 0x9e3779b9)) >>> 0;
-}
-
 /** Histogram of values into `bins` equal bins over [lo, hi]. */
 export function histogram(values: ArrayLike<number>, bins: number, lo?: number, hi?: number): { edges: Float64Array; counts: Float64Array } {
   let mn = Infinity;

@@ -9,6 +9,7 @@ import { MathTex, NumberField, Notice, Panel, Readout, SceneLayout, Select, Slid
 import {
   KEY_PRINTED,
   addressingNotes,
+  drawnLookup,
   agreesWithKey,
   gridTextIfFits,
   isExamQuery,
@@ -21,7 +22,7 @@ import {
   withCell,
 } from './model';
 import { GRID_TEXT_MAX, type Preset, type TextureSchema } from './params';
-import { GridView, drawnLookup, fmtShort } from './view/GridView';
+import { GridView, fmtShort } from './view/GridView';
 import { QueryWorked, bilinearTex, texNum } from './view/WorkedSteps';
 import { Reconstruction } from './view/Reconstruction';
 import { SphereView } from './view/SphereView';

@@ -3,6 +3,7 @@
  * core (`src/core/texture`). The views only draw what these return.
  */
 import {
+  addressCoord,
   bilinearStencil,
   bilinearSteps,
   checkerGrid,
@@ -93,6 +94,13 @@ export interface Lookup {
 export function lookupAt(grid: TextureGrid, u: number, v: number, opts: LookupOptions): Lookup {
   const bil = bilinearStencil(grid, u, v, opts);
   return { u, v, near: nearestStencil(grid, u, v, opts), bil, steps: bilinearSteps(bil) };
+}
+
+/** The equivalent in-window point of a query, and the lookup drawn there (texture frame, no flip). */
+export function drawnLookup(grid: TextureGrid, u: number, v: number, opts: LookupOptions): Lookup {
+  const vt = opts.vflip ? 1 - v : v;
+  const o = { ...opts, vflip: false };
+  return lookupAt(grid, addressCoord(u, opts.wrap), addressCoord(vt, opts.wrap), o);
 }
 
 /** The sphere part: (x, y, z) → (φ, θ) → (u, v), looked up normalized and not. */

@@ -5,11 +5,6 @@ import {
   loadExpressionEngine,
   toTex,
   MAX_EXPRESSION_LENGTH,
-  tabulate1D,
-  tabulate2D,
-  tabulateExpression,
-  scanTable,
-  gridPoint,
 } from '../../../src/core/expr';
 
 const TP = ['theta', 'phi'] as const;
@@ -133,29 +128,6 @@ describe('compileExpression: values', () => {
   it('toTex renders accepted expressions and falls back to \\text for rejected ones', async () => {
     expect(await toTex('sqrt(theta)')).toContain('\\sqrt');
     expect(await toTex('x = 2', ['x'])).toMatch(/^\\text\{/);
-  });
-});
-
-describe('tabulation helpers', () => {
-  it('tabulates on centre and edge grids', async () => {
-    const { fn } = await ok('x^2', ['x']);
-    const c = tabulate1D(fn, { min: 0, max: 1, count: 4 });
-    expect(Array.from(c)).toEqual([0.125, 0.375, 0.625, 0.875].map((v) => v * v));
-    const e = tabulateExpression(fn, { min: 0, max: 1, count: 3, at: 'edge' });
-    expect(Array.from(e)).toEqual([0, 0.25, 1]);
-    expect(gridPoint({ min: 2, max: 3, count: 1, at: 'edge' }, 0)).toBe(2);
-  });
-
-  it('tabulates 2D row-major with y rows', async () => {
-    const { fn } = await ok('theta + 10 phi');
-    const t = tabulate2D(fn, { min: 0, max: 2, count: 2 }, { min: 0, max: 3, count: 3 });
-    // x centres 0.5, 1.5; y centres 0.5, 1.5, 2.5
-    expect(Array.from(t)).toEqual([5.5, 6.5, 15.5, 16.5, 25.5, 26.5]);
-  });
-
-  it('scanTable finds non-finite and negative entries', () => {
-    expect(scanTable([1, -2, NaN, 3])).toEqual({ firstNonFinite: 2, firstNegative: 1, min: -2, max: 3 });
-    expect(scanTable([1, 2])).toEqual({ firstNonFinite: -1, firstNegative: -1, min: 1, max: 2 });
   });
 });
 

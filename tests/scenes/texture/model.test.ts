@@ -5,6 +5,7 @@ import { schema } from '../../../src/scenes/texture/params';
 import {
   KEY_PRINTED,
   addressingNotes,
+  drawnLookup,
   agreesWithKey,
   gridTextIfFits,
   isExamQuery,
@@ -17,7 +18,6 @@ import {
   textureImage,
   withCell,
 } from '../../../src/scenes/texture/model';
-import { drawnLookup } from '../../../src/scenes/texture/view/GridView';
 import { EXAM_GRID_TEXT, WRAP_MODES, examGrid, formatGrid, randomGrid, texel, type LookupOptions } from '../../../src/core/texture';
 
 const L = (u: number, v: number) => 21 - 20 * v + 4 * u; // the exam grid as a function of (u, v)

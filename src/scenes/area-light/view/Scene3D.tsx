@@ -5,7 +5,7 @@
  * Q6(a) patch with its projection onto the unit sphere. Built once; objects are updated in place
  * when the model changes (no React state per frame, renders on demand).
  */
-import { useEffect, useRef } from 'react';
+import { useEffect, useEffectEvent, useRef } from 'react';
 import type * as THREE from 'three';
 import { Viewport, type ViewportContext } from '../../../three';
 import type { LightStrategy, Vec3 } from '../../../core/lights';
@@ -158,10 +158,10 @@ export function Scene3D({ model, strategy, samples, terms, patch, height, dark }
     o.ctx.invalidate();
   };
 
-  useEffect(() => {
+  const onChange = useEffectEvent(() => {
     if (objs.current) apply(objs.current);
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [model, strategy, samples, terms, patch, dark]);
+  });
+  useEffect(() => onChange(), [model, strategy, samples, terms, patch, dark]);
 
   const setup = (ctx: ViewportContext) => {
     const T = ctx.THREE;

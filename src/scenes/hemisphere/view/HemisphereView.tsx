@@ -14,7 +14,7 @@
  * filled points are kept, so scrubbing back and forth costs nothing. Nothing renders while the
  * timeline is paused and the buffers are filled, unless the camera moves.
  */
-import { useEffect, useRef } from 'react';
+import { useEffect, useEffectEvent, useRef } from 'react';
 import type * as THREE from 'three';
 import { Viewport, type ViewportContext } from '../../../three';
 import { fillSequence2D, type SequenceKind } from '../../../core/random';
@@ -309,22 +309,22 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
   };
 
   // the point set changed: the buffers start over, the grid is rebuilt
-  useEffect(() => {
+  const onPointsChange = useEffectEvent(() => {
     if (!objs.current) return;
     buildGrid();
     fill.current.filled = 0;
     performance.clearMeasures?.('hemisphere-grow');
     apply();
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [lobe, kind, seed, n]);
+  });
+  useEffect(() => onPointsChange(), [lobe, kind, seed, n]);
 
   // every timeline position: the new target and morph (the fill loop runs only if points are missing)
-  useEffect(() => {
+  const onFrameChange = useEffectEvent(() => {
     fill.current.target = frame.shown;
     if (!objs.current) return;
     apply();
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [frame]);
+  });
+  useEffect(() => onFrameChange(), [frame]);
 
   useEffect(() => {
     const o = objs.current;

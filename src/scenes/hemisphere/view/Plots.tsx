@@ -5,10 +5,10 @@
  */
 import { useMemo } from 'react';
 import { Plot, type PlotTrace } from '../../../ui';
+import { TWO_PI } from '../../../core/sampling';
 import { titled } from './plotTitle';
 import type { DrawStats } from '../model';
 
-const TWO_PI = 2 * Math.PI;
 /** Legend inside the plot's top-left corner (where both marginals are low), clear of the axis titles. */
 const LEGEND = { orientation: 'v', x: 0.02, y: 0.98, xanchor: 'left', yanchor: 'top', bgcolor: 'rgba(0,0,0,0)' };
 

@@ -8,7 +8,7 @@
 import { useMemo } from 'react';
 import { Notice, Plot, Readout, formatNumber } from '../../../ui';
 import { titled } from './plotTitle';
-import type { McEstimate } from '../../../core/estimators';
+import { estimateFromTerms, type McEstimate } from '../../../core/estimators';
 import type { SequenceKind } from '../../../core/random';
 import type { RmseResult, VarianceCheck } from '../model';
 import type { LobeId } from '../params';
@@ -17,19 +17,10 @@ import type { RepeatResult } from '../jobs';
 
 const KIND_NAME: Record<SequenceKind, string> = { independent: 'independent', stratified: 'stratified', halton: 'Halton', sobol: 'Sobol' };
 
+/** Mean, its standard error and the spread of the finite estimates (Welford, in the core). */
 function meanSe(a: Float64Array): { mean: number; se: number; sd: number } {
-  let s = 0;
-  let s2 = 0;
-  let m = 0;
-  for (const x of a) {
-    if (!Number.isFinite(x)) continue;
-    s += x;
-    s2 += x * x;
-    m++;
-  }
-  const mean = m ? s / m : NaN;
-  const v = m > 1 ? Math.max(0, (s2 - m * mean * mean) / (m - 1)) : NaN;
-  return { mean, se: Math.sqrt(v / m), sd: Math.sqrt(v) };
+  const e = estimateFromTerms(a);
+  return { mean: e.estimate, se: e.stderr, sd: e.n > 1 ? Math.sqrt(e.variance) : NaN };
 }
 
 /** The error note of one estimate: s/√N for independent points, the measured RMSE otherwise. */

@@ -7,6 +7,7 @@
 import { useEffect, useMemo, useRef, useState, type ReactNode } from 'react';
 import { formatNumber, NumberField, Panel, Plot, Readout, useSeenOnce, type PlotTrace } from '../../../ui';
 import { useWorkerJob } from '../../../workers';
+import { estimateFromTerms } from '../../../core/estimators';
 import { histogram } from '../model';
 import type { ProblemArgs, RmseData, SeriesData } from '../jobs';
 
@@ -318,14 +319,8 @@ export function HistogramPanel({ args, N, exact, makeWorker, onN }: { args: Prob
   const est = useThrottled(task.result ?? task.partial, REDRAW_MS, !task.running)?.estimates;
   const stats = useMemo(() => {
     if (!est || !est.length) return null;
-    let s = 0;
-    let c = 0;
-    for (const v of est) if (Number.isFinite(v)) (s += v), c++;
-    const mean = s / c;
-    let q = 0;
-    for (const v of est) if (Number.isFinite(v)) q += (v - mean) ** 2;
-    const sd = c > 1 ? Math.sqrt(q / (c - 1)) : NaN;
-    return { mean, sd, count: c, sem: sd / Math.sqrt(c) };
+    const e = estimateFromTerms(est); // Welford over the finite estimates
+    return { mean: e.estimate, sd: e.n > 1 ? Math.sqrt(e.variance) : NaN, count: e.n, sem: e.stderr };
   }, [est]);
   const data = useMemo<PlotTrace[]>(() => {
     if (!est || !stats) return [];

@@ -9,9 +9,9 @@
  * query brought into [0, 1]² by the wrap mode (an equivalent point: the lookup there is the same).
  */
 import { memo, useEffect, useMemo, useRef, type KeyboardEvent, type PointerEvent } from 'react';
-import { addressCoord, nodeCoord, type LookupOptions, type TextureGrid } from '../../../core/texture';
+import { nodeCoord, type LookupOptions, type TextureGrid } from '../../../core/texture';
 import { colorCss, darkTextOn, normalizeValue } from '../colormap';
-import { lookupAt, textureImage, type Lookup } from '../model';
+import { textureImage, type Lookup } from '../model';
 
 const VB = 1000; // viewBox size of the plotted window
 
@@ -25,13 +25,6 @@ export function viewWindow(grid: TextureGrid, opts: LookupOptions): ViewWindow {
   const n = Math.min(grid.width, grid.height);
   const m = (opts.align === 'center' ? 0.5 / n : 0) + 0.08;
   return { min: -m, max: 1 + m };
-}
-
-/** The equivalent in-window point of a query, and the lookup drawn there (texture frame, no flip). */
-export function drawnLookup(grid: TextureGrid, u: number, v: number, opts: LookupOptions): Lookup {
-  const vt = opts.vflip ? 1 - v : v;
-  const o = { ...opts, vflip: false };
-  return lookupAt(grid, addressCoord(u, opts.wrap), addressCoord(vt, opts.wrap), o);
 }
 
 interface Props {

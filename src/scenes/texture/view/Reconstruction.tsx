@@ -5,6 +5,7 @@
 import { memo, useEffect, useRef } from 'react';
 import type { Filter, LookupOptions, TextureGrid } from '../../../core/texture';
 import { textureImage } from '../model';
+import { useSeenOnce } from '../../../ui';
 
 const RES = 256;
 
@@ -20,16 +21,17 @@ const FilterCanvas = memo(function FilterCanvas({
   filter: Filter;
 }) {
   const ref = useRef<HTMLCanvasElement>(null);
+  // Drawn once the figure comes near the screen (RES² lookups per filter: not first-screen work).
+  const seen = useSeenOnce(ref);
   useEffect(() => {
+    if (!seen) return;
     const c = ref.current;
     const g = c?.getContext('2d');
     if (!c || !g) return;
-    c.width = RES;
-    c.height = RES;
     const img = textureImage(grid, { ...opts, vflip: false }, filter, RES, RES, range);
     g.putImageData(new ImageData(img as Uint8ClampedArray<ArrayBuffer>, RES, RES), 0, 0);
-  }, [grid, opts, range, filter]);
-  return <canvas ref={ref} className="tx-recon-canvas" data-testid={`recon-${filter}`} aria-hidden="true" />;
+  }, [seen, grid, opts, range, filter]);
+  return <canvas ref={ref} width={RES} height={RES} className="tx-recon-canvas" data-testid={`recon-${filter}`} aria-hidden="true" />;
 });
 
 export function Reconstruction({
