@@ -355,6 +355,7 @@ test.describe('interaction', () => {
 });
 
 test('axe finds no serious or critical violations (light, dark, present)', async ({ page }) => {
+  test.setTimeout(240_000); // three full-page scans of a long page on a shared machine
   for (const q of ['theme=light', 'theme=dark', 'present=1&align=center&wrap=repeat&u=0.02']) {
     await openScene(page, `#/texture?${q}`);
     await page.getByTestId('sphere-view').scrollIntoViewIfNeeded();
