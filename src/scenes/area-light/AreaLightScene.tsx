@@ -277,6 +277,39 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
             </>
           }
         >
+          <Derivation testId="derivation-6a">
+            <ol className="al-steps">
+              <li>
+                Project dA onto the plane perpendicular to the ray: a perpendicular element <MathTex tex={String.raw`dA^{\perp}`} /> with sides dl, so{' '}
+                <MathTex tex={String.raw`dA^{\perp} = dl\cdot dl = dA\cos\theta_l`} />
+                <span className="al-live" data-testid="step-6a-perp">
+                  {' '}
+                  (here dA = {fmt(patch.area)}, cos θ_l = {fmt(patch.cosThetaL)}, dA⊥ = {fmt(patch.area * patch.cosThetaL)}, dl = {fmt(Math.sqrt(patch.area * patch.cosThetaL))})
+                </span>
+                .
+              </li>
+              <li>
+                The solid-angle element is the patch dA⊥ casts on the unit sphere, with sides dω_l: <MathTex tex={String.raw`d\omega = d\omega_l\cdot d\omega_l`} />.
+              </li>
+              <li>
+                By similar triangles (shaded in the figure: legs 1 and dω_l/2 on the unit circle, legs r and dl/2 at the patch):{' '}
+                <MathTex tex={String.raw`\frac{d\omega_l/2}{1} = \frac{dl/2}{r}\;\Rightarrow\; d\omega_l = \frac{dl}{r}`} />
+                <span className="al-live" data-testid="step-6a-similar">
+                  {' '}
+                  (r = {fmt(patch.r)}: dω_l = {fmt(Math.sqrt(patch.area * patch.cosThetaL) / patch.r)})
+                </span>
+                .
+              </li>
+              <li>
+                Thus <MathTex tex={String.raw`d\omega = \frac{dl}{r}\cdot\frac{dl}{r} = \frac{dA^{\perp}}{r^2} = \frac{dA\cos\theta_l}{r^2}`} />
+                <span className="al-live" data-testid="step-6a-result">
+                  {' '}
+                  = {fmt(patch.approx, 6)} sr for this patch
+                </span>
+                .
+              </li>
+            </ol>
+          </Derivation>
           <div className="al-6a">
             <div className="al-6a-figure">
               <PatchFigure patch={patch} />
@@ -287,59 +320,26 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
                 <Slider label="Patch tilt θ_l (relative to the light)" value={params.ptilt} min={-89} max={89} step={1} unit="°" onChange={(x) => set({ ptilt: x })} />
               </div>
             </div>
-            <Derivation testId="derivation-6a">
-              <ol className="al-steps">
-                <li>
-                  Project dA onto the plane perpendicular to the ray: a perpendicular element <MathTex tex={String.raw`dA^{\perp}`} /> with sides dl, so{' '}
-                  <MathTex tex={String.raw`dA^{\perp} = dl\cdot dl = dA\cos\theta_l`} />
-                  <span className="al-live" data-testid="step-6a-perp">
-                    {' '}
-                    (here dA = {fmt(patch.area)}, cos θ_l = {fmt(patch.cosThetaL)}, dA⊥ = {fmt(patch.area * patch.cosThetaL)}, dl = {fmt(Math.sqrt(patch.area * patch.cosThetaL))})
-                  </span>
-                  .
-                </li>
-                <li>
-                  The solid-angle element is the patch dA⊥ casts on the unit sphere, with sides dω_l: <MathTex tex={String.raw`d\omega = d\omega_l\cdot d\omega_l`} />.
-                </li>
-                <li>
-                  By similar triangles (shaded in the figure: legs 1 and dω_l/2 on the unit circle, legs r and dl/2 at the patch):{' '}
-                  <MathTex tex={String.raw`\frac{d\omega_l/2}{1} = \frac{dl/2}{r}\;\Rightarrow\; d\omega_l = \frac{dl}{r}`} />
-                  <span className="al-live" data-testid="step-6a-similar">
-                    {' '}
-                    (r = {fmt(patch.r)}: dω_l = {fmt(Math.sqrt(patch.area * patch.cosThetaL) / patch.r)})
-                  </span>
-                  .
-                </li>
-                <li>
-                  Thus <MathTex tex={String.raw`d\omega = \frac{dl}{r}\cdot\frac{dl}{r} = \frac{dA^{\perp}}{r^2} = \frac{dA\cos\theta_l}{r^2}`} />
-                  <span className="al-live" data-testid="step-6a-result">
-                    {' '}
-                    = {fmt(patch.approx, 6)} sr for this patch
-                  </span>
-                  .
-                </li>
-              </ol>
-            </Derivation>
+            <LiveAnswer title="Check, computed live: the formula against the exact solid angle of the patch" testId="answer-6a">
+              <p className="al-note">
+                The formula is exact only in the limit of a small patch. The exact solid angle of the orange patch (Van Oosterom–Strackee) and dA cos θ_l / r²
+                agree better and better as the patch shrinks — the relative difference falls like the square of its size (slope 2 below).
+              </p>
+              <div className="al-readouts">
+                <Readout id="patch-exact" label="exact Ω of the patch" value={patch.exact} digits={8} unit="sr" />
+                <Readout id="patch-approx" label="dA cos θ_l / r²" value={patch.approx} digits={8} unit="sr" />
+                <Readout id="patch-rel-error" label="relative difference" value={patch.relError} digits={3} />
+                <Readout id="patch-r" label="r" value={patch.r} digits={5} />
+                <Readout id="patch-cos" label="cos θ_l" value={patch.cosThetaL} digits={5} />
+              </div>
+              <Plot
+                ariaLabel="Relative difference between dA cos θ_l / r² and the exact solid angle of the patch, against the patch side, log-log: a line of slope 2."
+                data={patchTraces}
+                height={240}
+                layout={{ xaxis: { type: 'log', title: { text: 'patch side' } }, yaxis: { type: 'log', title: { text: 'relative difference' } }, showlegend: false }}
+              />
+            </LiveAnswer>
           </div>
-          <LiveAnswer title="Check, computed live: the formula against the exact solid angle of the patch" testId="answer-6a">
-            <p className="al-note">
-              The formula is exact only in the limit of a small patch. The exact solid angle of the orange patch (Van Oosterom–Strackee) and dA cos θ_l / r²
-              agree better and better as the patch shrinks — the relative difference falls like the square of its size (slope 2 below).
-            </p>
-            <div className="al-readouts">
-              <Readout id="patch-exact" label="exact Ω of the patch" value={patch.exact} digits={8} unit="sr" />
-              <Readout id="patch-approx" label="dA cos θ_l / r²" value={patch.approx} digits={8} unit="sr" />
-              <Readout id="patch-rel-error" label="relative difference" value={patch.relError} digits={3} />
-              <Readout id="patch-r" label="r" value={patch.r} digits={5} />
-              <Readout id="patch-cos" label="cos θ_l" value={patch.cosThetaL} digits={5} />
-            </div>
-            <Plot
-              ariaLabel="Relative difference between dA cos θ_l / r² and the exact solid angle of the patch, against the patch side, log-log: a line of slope 2."
-              data={patchTraces}
-              height={240}
-              layout={{ xaxis: { type: 'log', title: { text: 'patch side' } }, yaxis: { type: 'log', title: { text: 'relative difference' } }, showlegend: false }}
-            />
-          </LiveAnswer>
         </ExamPart>
 
         <ExamPart

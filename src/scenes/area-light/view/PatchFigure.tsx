@@ -100,10 +100,10 @@ export function PatchFigure({ patch }: { patch: PatchModel }) {
       <line x1={PX} y1={PY} x2={ea.x} y2={ea.y} className="al-fig-cone" />
       <line x1={PX} y1={PY} x2={eb.x} y2={eb.y} className="al-fig-cone" />
       <line x1={PX} y1={PY} x2={cx} y2={cy} className="al-fig-ray" />
-      <text x={PX + Math.max(R + 8, (D + R) / 2)} y={PY + 20} textAnchor="middle" className="al-fig-label">
+      <text x={PX + Math.max(R + 14, R + 0.3 * (D - R))} y={PY + 22} textAnchor="middle" className="al-fig-label">
         r
       </text>
-      <text x={PX + R / 2} y={PY + 20} textAnchor="middle" className="al-fig-label">
+      <text x={PX + R / 2} y={PY + 22} textAnchor="middle" className="al-fig-label">
         1
       </text>
       {/* dω_l on the unit circle */}
@@ -114,7 +114,7 @@ export function PatchFigure({ patch }: { patch: PatchModel }) {
       {/* dA⊥ with side dl */}
       <line x1={pa.x} y1={pa.y} x2={pb.x} y2={pb.y} className="al-fig-perp" />
       <text x={cx - 8} y={Math.min(pa.y, a.y) - 10} textAnchor="end" className="al-fig-perp-label">
-        dA⊥, side dl
+        dA⊥ (side dl)
       </text>
       {/* the patch dA and its normal */}
       <line x1={a.x} y1={a.y} x2={b.x} y2={b.y} className="al-fig-patch" />
@@ -122,13 +122,13 @@ export function PatchFigure({ patch }: { patch: PatchModel }) {
         dA
       </text>
       <line x1={cx} y1={cy} x2={cx + nLen * nx} y2={cy + nLen * ny} className="al-fig-normal" markerEnd="url(#al-arrow)" />
-      <text x={cx + nLen * nx - 6} y={cy + nLen * ny + 18} textAnchor="end" className="al-fig-muted">
+      <text x={cx + nLen * nx - 4} y={cy + nLen * ny + 24} textAnchor="end" className="al-fig-muted">
         n_l
       </text>
       {thetaL > 0.02 ? (
         <>
           <path d={`M ${cx - arcR} ${cy} A ${arcR} ${arcR} 0 0 0 ${arcEnd.x} ${arcEnd.y}`} className="al-fig-theta" />
-          <text x={cx - arcR - 6} y={cy + 16} textAnchor="end" className="al-fig-label">
+          <text x={cx - (arcR + 14) * Math.cos(thetaL / 2)} y={cy + (arcR + 14) * Math.sin(thetaL / 2) + 6} textAnchor="end" className="al-fig-label">
             θ_l
           </text>
         </>

@@ -66,7 +66,8 @@ function geometry(run: SampleRun, reference: number): Geometry {
   const yTicks = [lo + pad, (lo + hi) / 2, hi - pad];
   const xTicks: number[] = [];
   for (let k = 1; k <= n; k *= 10) xTicks.push(k);
-  if (xTicks[xTicks.length - 1] !== n) xTicks.push(n);
+  // the end, unless it would crowd the last power of ten
+  if (n / xTicks[xTicks.length - 1]! >= 2.5) xTicks.push(n);
   return { xOf, yOf, line, band, yTicks, xTicks };
 }
 
