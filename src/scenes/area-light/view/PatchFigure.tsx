@@ -10,7 +10,7 @@
 import type { PatchModel } from '../model';
 
 const W = 560;
-const H = 290;
+const H = 260;
 const PX = 40;
 const PY = 150;
 /** Longest drawn distance p → patch and largest drawn unit radius (px). */
@@ -139,9 +139,6 @@ export function PatchFigure({ patch }: { patch: PatchModel }) {
       </text>
       <text x={W - 6} y={16} textAnchor="end" className="al-fig-muted" data-testid="al-patch-scale">
         {scaleNote}
-      </text>
-      <text x={12} y={H - 12} className="al-fig-label al-fig-summary">
-        dA = {fmt(patch.area)}, θ_l = {fmt((thetaL * 180) / Math.PI, 3)}°: dA cos θ_l / r² = {fmt(patch.approx)} sr, exact {fmt(patch.exact)} sr
       </text>
     </svg>
   );
