@@ -1,4 +1,4 @@
-import { Component, useCallback, useEffect, useMemo, useRef, useState, type ReactNode } from 'react';
+import { Component, startTransition, useCallback, useEffect, useMemo, useRef, useState, type ReactNode } from 'react';
 import type { SceneInfo } from '../scenes/registry';
 import { sceneLoader } from '../scenes/registry';
 import type { SceneModule } from './scene';
@@ -6,6 +6,9 @@ import { parseParams, sanitizePatch, serializeParams, type ParamProblem, type Pa
 import { shellExtras, type ShellFlags } from './route';
 import { useShortcuts } from '../ui/shortcuts';
 import { QuestionNav } from '../ui/exam';
+import { useHostScene } from './hostApi';
+import { embedSnippet } from './embedCode';
+import { QrButton } from './QrButton';
 
 interface Props {
   info: SceneInfo;
@@ -28,7 +31,9 @@ export function SceneHost({ info, query, flags, theme }: Props) {
     }
     let alive = true;
     loader().then(
-      (mod) => alive && setLoad({ kind: 'ready', mod }),
+      // A transition: React renders the scene's (large) first tree in slices of a few ms that yield
+      // to the browser, instead of one long task (Lighthouse: total blocking time on load).
+      (mod) => alive && startTransition(() => setLoad({ kind: 'ready', mod })),
       (err) => alive && setLoad({ kind: 'failed', message: err instanceof Error ? err.message : String(err) }),
     );
     return () => {
@@ -137,6 +142,9 @@ function LoadedScene({ mod, info, query, flags, theme }: { mod: SceneModule; inf
   );
   useShortcuts({ reset: () => setParams({ ...opening.current }) });
 
+  const getValues = useCallback(() => valuesRef.current, []);
+  useHostScene({ id: info.id, route: info.path, schema, getValues, setParams }, values);
+
   const Scene = mod.default;
   return (
     <>
@@ -197,12 +205,13 @@ async function linkSafeValues(schema: ParamSchema, values: ParamValues<ParamSche
 function ShareBar({ info, schema, values, flags }: { info: SceneInfo; schema: SceneModule['schema']; values: ParamValues<ParamSchema>; flags: ShellFlags }) {
   const [copied, setCopied] = useState<'link' | 'embed' | null>(null);
   const [shown, setShown] = useState<string | null>(null);
-  const base = `${window.location.origin}${window.location.pathname}`;
+  // (not location.origin + pathname: a copy opened from file:// has the origin "null")
+  const base = window.location.href.split('#')[0]!;
   const qs = serializeParams(schema, values, { part: flags.part ?? undefined, present: flags.present ? '1' : undefined, theme: flags.theme ?? undefined });
   const link = `${base}#${info.path}${qs ? `?${qs}` : ''}`;
   const embedQs = serializeParams(schema, values, { part: flags.part ?? undefined, embed: '1', theme: flags.theme ?? undefined });
   const embedSrc = `${base}#${info.path}?${embedQs}`;
-  const embedCode = `<iframe src="${embedSrc.replace(/&/g, '&amp;').replace(/"/g, '&quot;')}" title="${info.title} — Render Math Lab" width="100%" height="720" style="border:0" loading="lazy"></iframe>`;
+  const embedCode = embedSnippet(embedSrc, `${info.title} — Render Math Lab`, info.id);
   const copy = async (what: 'link' | 'embed') => {
     const text = what === 'link' ? link : embedCode;
     setShown(text);
@@ -218,6 +227,7 @@ function ShareBar({ info, schema, values, flags }: { info: SceneInfo; schema: Sc
       <button type="button" data-testid="copy-link" onClick={() => copy('link')}>
         Copy link
       </button>
+      <QrButton link={link} present={flags.present} />
       <button type="button" data-testid="copy-embed" onClick={() => copy('embed')}>
         Copy embed code
       </button>

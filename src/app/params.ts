@@ -54,7 +54,7 @@ export interface ParsedParams<S extends ParamSchema> {
 }
 
 /** Parameters owned by the shell itself, not by any scene. */
-export const SHELL_PARAMS = ['embed', 'present', 'theme', 'part', 'fuzz', 'fuzzn', 'fuzzseed'] as const;
+export const SHELL_PARAMS = ['embed', 'present', 'theme', 'part', 'origin', 'fuzz', 'fuzzn', 'fuzzseed'] as const;
 
 /** Longest raw value the parser looks at; longer ones are rejected, not truncated. */
 export const MAX_RAW_LENGTH = 4000;

@@ -24,6 +24,7 @@ import {
   Slider,
   TimelineTransport,
   Toggle,
+  useSeenOnce,
   useTimeline,
 } from '../../ui';
 import type { PlotTrace } from '../../ui';
@@ -95,13 +96,19 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
   const given = useMemo(() => givenSamples(model, seed, 4), [model, seed]);
   const timingKey = JSON.stringify([model.p, model.lc, model.w, model.h, model.tilt, model.L, model.rho, model.occluder ? 1 : 0, seed]);
   // Convergence series (3 × 32768 samples) in the worker: ~0.1 s that a slider drag should not wait for.
+  // The convergence and timing runs start when their panels come near the screen (not on load:
+  // their results re-render the scene while the first screen should be answering input).
+  const convBox = useRef<HTMLDivElement>(null);
+  const timingBox = useRef<HTMLDivElement>(null);
+  const convSeen = useSeenOnce(convBox);
+  const timingSeen = useSeenOnce(timingBox);
   const convArgs = useMemo(() => ({ params, nMax: 1 << 15 }), [params]);
-  const convTask = useWorkerJob<ReturnType<typeof convergence>>(makeWorker, 'convergence', convArgs, { key: timingKey, delayMs: 120 });
+  const convTask = useWorkerJob<ReturnType<typeof convergence>>(makeWorker, 'convergence', convArgs, { key: timingKey, delayMs: 120, enabled: convSeen });
   const conv = convTask.result;
 
   const job = useMemo(() => floorJob(model, seed), [model, seed]);
 
-  const timing = useWorkerJob<TimingPoint[]>(makeWorker, 'timing', params, { key: timingKey, delayMs: 400 });
+  const timing = useWorkerJob<TimingPoint[]>(makeWorker, 'timing', params, { key: timingKey, delayMs: 400, enabled: timingSeen });
 
   // The animation (issue 12): t = samples of the chosen strategy arrived so far, 0 … min(n, 1024).
   const animMax = animationLength(n);
@@ -504,6 +511,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
           </table>
         </Panel>
         <Panel title="Convergence">
+          <div ref={convBox} />
           <Plot
             ariaLabel="Absolute error and standard error of the three estimators against the number of samples, log-log."
             data={convTraces}
@@ -513,7 +521,9 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
           <p className="al-note">Solid: |estimate − reference|. Dotted: the standard error s/√N the estimator reports. Both fall like N^−½; the strategies differ by a constant.</p>
         </Panel>
         <Panel title="Run time against error">
-          {timing.running ? <progress max={1} value={timing.progress} aria-label="Timing progress" /> : null}
+          <div ref={timingBox} className="al-progress-slot">
+            {timing.running ? <progress max={1} value={timing.progress} aria-label="Timing progress" /> : null}
+          </div>
           {timing.error ? <Notice kind="warn">Timing failed: {timing.error}</Notice> : null}
           <Plot
             ariaLabel="RMSE over independent runs against the run time of one estimate, for the three strategies, log-log."

@@ -5,7 +5,7 @@
  */
 import { useEffect, useRef } from 'react';
 import { useWorkerJob } from '../../../workers';
-import { Readout } from '../../../ui';
+import { Readout, useSeenOnce } from '../../../ui';
 import { PASS_TOTAL, STRATEGIES, STRATEGY_LABEL, type FloorJob } from '../model';
 import type { FloorFrame } from '../jobs';
 
@@ -40,8 +40,11 @@ function paint(canvas: HTMLCanvasElement | null, img: Float32Array | undefined, 
  * the wanted one is shown; once done, exactly the wanted one (a function of the job and t).
  */
 export function FloorImages({ job, pass = PASS_TOTAL.length - 1 }: { job: FloorJob; pass?: number }) {
-  // Restarts when the scene changes (debounced so dragging a slider does not queue renders).
-  const task = useWorkerJob<FloorFrame, FloorFrame>(makeWorker, 'render', job, { delayMs: 250 });
+  // Starts when the images come near the screen (not on load), and restarts when the scene changes
+  // (debounced so dragging a slider does not queue renders).
+  const box = useRef<HTMLDivElement>(null);
+  const seenOnce = useSeenOnce(box);
+  const task = useWorkerJob<FloorFrame, FloorFrame>(makeWorker, 'render', job, { delayMs: 250, enabled: seenOnce });
   const refs = useRef<(HTMLCanvasElement | null)[]>([]);
   // Partials seen for the current job, by pass (a partial carries one pass; the result all of them).
   const seen = useRef<{ job: FloorJob | null; byPass: Map<number, FloorFrame> }>({ job: null, byPass: new Map() });
@@ -66,7 +69,7 @@ export function FloorImages({ job, pass = PASS_TOTAL.length - 1 }: { job: FloorJ
 
   const labels = ['reference (Lambert’s formula)', ...STRATEGIES.map((s) => STRATEGY_LABEL[s])];
   return (
-    <div className="al-images">
+    <div className="al-images" ref={box}>
       <div className="al-progress" aria-live="polite">
         {task.error ? (
           <span className="field-error">Rendering failed: {task.error}</span>
