@@ -544,6 +544,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
 
   const fmtPos = useCallback((t: number) => `${Math.floor(t)} of ${animMax} samples`, [animMax]);
   const stage = (
+    <div className="al-stage-wrap">
     <div className="al-stage" ref={stageRef}>
       <div className="al-stage-3d">
         <Scene3D model={model} strategy={strategy} samples={run.points} terms={run.terms} count={af.k} patch={patch} height={vpHeight} dark={dark} />
@@ -564,6 +565,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
         contributes, red where it is wasted (below the horizon, blocked, or missing the light); lines to the newest. Orange: the Q6(a) patch and its projection on
         the unit sphere. Right: the running estimate with ±2 standard errors, converging on the reference (dashed).
       </p>
+    </div>
     </div>
   );
 

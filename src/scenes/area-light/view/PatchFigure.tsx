@@ -113,7 +113,7 @@ export function PatchFigure({ patch }: { patch: PatchModel }) {
       </text>
       {/* dA⊥ with side dl */}
       <line x1={pa.x} y1={pa.y} x2={pb.x} y2={pb.y} className="al-fig-perp" />
-      <text x={cx - 8} y={Math.min(pa.y, a.y) - 10} textAnchor="end" className="al-fig-perp-label">
+      <text x={cx} y={Math.min(pa.y, a.y) - 12} textAnchor="middle" className="al-fig-perp-label">
         dA⊥ (side dl)
       </text>
       {/* the patch dA and its normal */}
