@@ -113,7 +113,7 @@ export function PatchFigure({ patch }: { patch: PatchModel }) {
       </text>
       {/* dA⊥ with side dl */}
       <line x1={pa.x} y1={pa.y} x2={pb.x} y2={pb.y} className="al-fig-perp" />
-      <text x={cx} y={Math.min(pa.y, a.y) - 12} textAnchor="middle" className="al-fig-perp-label">
+      <text x={cx} y={Math.min(pa.y, a.y) - 18} textAnchor="middle" className="al-fig-perp-label">
         dA⊥ (side dl)
       </text>
       {/* the patch dA and its normal */}
@@ -128,7 +128,13 @@ export function PatchFigure({ patch }: { patch: PatchModel }) {
       {thetaL > 0.02 ? (
         <>
           <path d={`M ${cx - arcR} ${cy} A ${arcR} ${arcR} 0 0 0 ${arcEnd.x} ${arcEnd.y}`} className="al-fig-theta" />
-          <text x={cx - (arcR + 14) * Math.cos(thetaL / 2)} y={cy + (arcR + 14) * Math.sin(thetaL / 2) + 6} textAnchor="end" className="al-fig-label">
+          {/* a small angle leaves no room inside it: the label goes below, clear of n_l */}
+          <text
+            x={thetaL < 0.35 ? cx - 14 : cx - (arcR + 14) * Math.cos(thetaL / 2)}
+            y={thetaL < 0.35 ? cy + 56 : cy + (arcR + 14) * Math.sin(thetaL / 2) + 6}
+            textAnchor="end"
+            className="al-fig-label"
+          >
             θ_l
           </text>
         </>
