@@ -26,7 +26,10 @@ import { MAX_N, PDF_KINDS, STRATEGIES, type McSchema, type PdfKind, type Strateg
 import type { McEstimate } from '../../core/estimators';
 import type { ProblemArgs } from './jobs';
 import { compileX, compileXFast } from './expr';
-import { FunctionPlot, ConvergencePanel, RmsePanel, HistogramPanel } from './view/Plots';
+import { FunctionPlot } from './view/FunctionPlot';
+import { ConvergencePanel } from './view/ConvergencePanel';
+import { RmsePanel } from './view/RmsePanel';
+import { HistogramPanel } from './view/HistogramPanel';
 import { WorkedTable } from './view/WorkedTable';
 import { SamplesField, FnField } from './view/Fields';
 import './monte-carlo.css';
