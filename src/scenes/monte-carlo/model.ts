@@ -181,6 +181,8 @@ export interface SampleRow {
   ratio: number;
   /** Uniform term (b − a) f(x). */
   uniformTerm: number;
+  /** Importance term f/p with p ∝ |f| (exact density); NaN when there is none. */
+  propRatio: number;
   /** Outside [a, b]? */
   outside: boolean;
 }
@@ -205,7 +207,8 @@ export function sampleTable(xs: readonly number[], f: Fn1, a: number, b: number,
     const fx = f(x);
     const outside = !(x >= a && x <= b);
     const p = density ? density(x) : NaN;
-    return { x, f: fx, p, ratio: fx === 0 ? 0 : p > 0 ? fx / p : NaN, uniformTerm: (b - a) * fx, outside };
+    const pp = propDensity && !outside ? propDensity(x) : NaN;
+    return { x, f: fx, p, ratio: fx === 0 ? 0 : p > 0 ? fx / p : NaN, uniformTerm: (b - a) * fx, propRatio: fx === 0 ? 0 : pp > 0 ? fx / pp : NaN, outside };
   });
   const outside = rows.filter((r) => r.outside).map((r) => fmt(r.x));
   if (outside.length) {
