@@ -19,6 +19,7 @@ import {
   drawnEstimate,
   exactIntegral,
   keyComparison,
+  roundTo,
   RACE_MAX,
   raceAt,
   raceTrack,
@@ -280,7 +281,7 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
             headline={
               <>
                 <div className="readouts mc-headline">
-                  <Readout id="q4-uniform" label="uniform ⟨I⟩ = (b − a)/N Σ f(xᵢ)" value={table.uniform.invalid ? null : table.uniform.estimate} digits={6} note={isExamConfig ? 'the exam’s answer: ≈ 21.45' : undefined} />
+                  <Readout id="q4-uniform" label="uniform ⟨I⟩ = (b − a)/N Σ f(xᵢ)" value={table.uniform.invalid ? null : table.uniform.estimate} digits={6} note={table.uniform.invalid ? undefined : `to 2 decimals, as the exam writes it: ${roundTo(table.uniform.estimate, 2).toFixed(2)}`} />
                 </div>
                 <SampleRows table={table} pdfOk={chosenOk} pdfKind={pdfKind} />
                 <div className="mc-buttons">

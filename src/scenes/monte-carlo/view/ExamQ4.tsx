@@ -106,7 +106,7 @@ export function Q4c({ table, c, a, b, isSquare, answer }: { table: SampleTable; 
             <div className="mc-math">
               <MathTex
                 display
-                tex={String.raw`\frac{f(x_i)}{p(x_i)} = \frac{(x_i ${c >= 0 ? '+' : '-'} ${n4(Math.abs(c))})^2}{\tfrac{3}{${n4(D)}}(x_i ${c >= 0 ? '+' : '-'} ${n4(Math.abs(c))})^2} = \frac{${n4(D)}}{3} = ${thirds(I)}`}
+                tex={String.raw`\frac{f(x_i)}{p(x_i)} = \frac{(x_i ${c >= 0 ? '+' : '-'} ${n4(Math.abs(c))})^2}{\tfrac{3}{${n4(D)}}(x_i ${c >= 0 ? '+' : '-'} ${n4(Math.abs(c))})^2} = \frac{${n4(D)}}{3} \approx ${n4(I)}`}
               />
               <MathTex
                 display
@@ -147,10 +147,17 @@ export function Q4d({ uErr, iErr, N, onWhole, importanceIsExam }: { uErr: number
           <Readout id="q4d-uniform-error" label={`uniform |error| after N = ${N.toLocaleString('en')}`} value={uErr} digits={3} />
           <Readout id="q4d-importance-error" label={`importance |error| after N = ${N.toLocaleString('en')}`} value={iErr} digits={3} />
         </div>
-        <p data-testid="answer-4d">
-          <strong>(c) converges faster</strong>: it has zero variance (every term f/p equals I), so its error is at rounding level for every N, while the uniform estimator’s error
-          only falls like N^−½.
-        </p>
+        {importanceIsExam ? (
+          <p data-testid="answer-4d">
+            <strong>(c) converges faster</strong>: it has zero variance (every term f/p equals I), so its error is at rounding level for every N, while the uniform estimator’s
+            error only falls like N^−½.
+          </p>
+        ) : (
+          <p data-testid="answer-4d">
+            With p ∝ f (the exam’s (c)) the importance estimate would be exact at every N (zero variance); your pdf only approximates f, so its error also falls like N^−½, with a
+            smaller constant when p follows f more closely.
+          </p>
+        )}
       </LiveAnswer>
     </ExamPart>
   );

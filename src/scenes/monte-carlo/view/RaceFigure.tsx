@@ -11,7 +11,7 @@ import { RACE_DURATION, RACE_MAX, raceAt, racePoints, type LaneState, type RaceT
 
 const W = 360;
 const H = 190;
-const M = { l: 46, r: 10, t: 10, b: 30 };
+const M = { l: 64, r: 10, t: 10, b: 30 };
 const PW = W - M.l - M.r;
 const PH = H - M.t - M.b;
 const C_U = 'var(--accent-2)';
@@ -127,7 +127,9 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
     const fPath = path(xs, Array.from(curve.f), sx, sy);
     const pPath = path(xs, Array.from(curve.p), sx, sy);
     const xt: [number, string][] = [0, 0.25, 0.5, 0.75, 1].map((q) => [sx(a + q * (b - a)), formatNumber(a + q * (b - a), 3)]);
-    const yt: [number, string][] = [0, 0.5, 1].map((q) => [sy(lo + q * (hi - lo) / 1.08), formatNumber(lo + (q * (hi - lo)) / 1.08, 3)]);
+    let fmax = 0;
+    for (const v of curve.f) if (Number.isFinite(v)) fmax = Math.max(fmax, v);
+    const yt: [number, string][] = (lo < 0 ? [lo, 0, fmax] : [0, fmax / 2, fmax]).map((v) => [sy(v), formatNumber(v, 3)]);
     // running estimate: the same y range for both lanes, around the exact value
     let R = 0;
     for (let k = 3; k < track.max; k++) R = Math.max(R, Math.abs(track.uniform.mean[k]! - I), Math.abs(track.importance.mean[k]! - I));
