@@ -5,6 +5,8 @@
  */
 import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
+import { raceAt, raceTrack } from '../../src/scenes/monte-carlo/model';
+import { squarePdf1D } from '../../src/core/sampling/pdf1d';
 
 const EXAM_X = [1.16, 1.98, 0.54, 1.26];
 const f = (x: number) => (x + 2) ** 2;
@@ -147,6 +149,7 @@ test('cancel stops a 10⁷-sample run; the page stays responsive and shows no es
 });
 
 test('axe finds no serious or critical violations (light, dark, present, bad pdf)', async ({ page }) => {
+  test.setTimeout(240_000); // four full-page scans of a long page on a busy 2-core machine
   for (const qs of ['theme=light', 'theme=dark', 'present=1', 'pdf=custom&pdfexpr=x-1']) {
     await openScene(page, `#/monte-carlo?${qs}`);
     await page.getByRole('heading', { name: /Unbiasedness|RMSE over/ }).first().scrollIntoViewIfNeeded();
@@ -160,8 +163,6 @@ test('axe finds no serious or critical violations (light, dark, present, bad pdf
 // ---------------------------------------------------------------------------------------------
 // Exam first (issue 11) and the animation (issue 12)
 // ---------------------------------------------------------------------------------------------
-import { raceAt, raceTrack } from '../../src/scenes/monte-carlo/model';
-import { squarePdf1D } from '../../src/core/sampling/pdf1d';
 
 /** The race as the model computes it, for the exam's f on [0, 2], p ∝ f, seed s. */
 const examTrack = (seed: number) => raceTrack(f, 0, 2, squarePdf1D(0, 2, 2), exactSquare(0, 2), seed);

@@ -246,11 +246,11 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
       ) : null}
       <ExamQuestion
         n={4}
-        title="Monte Carlo integration in 1D, and convergence"
+        title="Monte Carlo integration in 1D"
         intro={
           <>
             <p>
-              The integral I = ∫₀² (x + 2)² dx, computed (a) analytically, (b) by Monte Carlo with uniform samples, (c) with importance sampling, and (d) a convergence graph.
+              I = ∫₀² (x + 2)² dx: (a) analytically, (b) uniform Monte Carlo, (c) importance sampling, (d) convergence.
               {!isExamConfig ? (
                 <>
                   {' '}

@@ -190,7 +190,7 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
       </TimelineTransport>
       <div className="mc-race-grid">
         <figure className="mc-svg-fig">
-          <figcaption>Each xᵢ drops onto f (blue: uniform, orange: importance, same ξᵢ)</figcaption>
+          <figcaption>Each xᵢ drops onto f</figcaption>
           <svg viewBox={`0 0 ${W} ${H}`} role="img" aria-label={`The integrand f over [${a}, ${b}] with the ${fr.t} samples drawn so far, uniform and importance`}>
             <Axes xTicks={fig.xt} yTicks={fig.yt} xLabel="x" yLabel="f(x)" />
             <path d={fig.fPath} className="mc-svg-f" />
@@ -202,7 +202,7 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
           </svg>
         </figure>
         <figure className="mc-svg-fig">
-          <figcaption>|⟨I⟩ − I| against N, log-log (grey: s/√N trend ∝ N^−½)</figcaption>
+          <figcaption>|⟨I⟩ − I| against N, log-log</figcaption>
           <svg viewBox={`0 0 ${W} ${H}`} role="img" aria-label="Absolute error of the running estimate against the number of samples, log-log, uniform and importance">
             <Axes xTicks={fig.nt} yTicks={fig.lt} xLabel="N (samples)" yLabel="|error|" />
             <path d={fig.guide} className="mc-svg-guide" />
@@ -228,7 +228,7 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
         </Lane>
       </div>
       <p className="mc-note">
-        Dashed line: the exact I = {formatNumber(I, 8)}. Both estimators use the same random numbers ξᵢ (seeded): uniform puts xᵢ = a + (b − a)ξᵢ, importance xᵢ = P⁻¹(ξᵢ).
+        Blue: uniform; orange: importance (its pdf dashed on f). Dashed line: the exact I = {formatNumber(I, 8)}; grey: the N^−½ trend σ/√N. Both estimators use the same random numbers ξᵢ (seeded): uniform puts xᵢ = a + (b − a)ξᵢ, importance xᵢ = P⁻¹(ξᵢ).
         {' '}Errors below {pow10(Math.round(Math.log10(fig.floor)))} sit on the bottom line.
       </p>
     </div>
