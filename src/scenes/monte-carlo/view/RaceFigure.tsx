@@ -212,7 +212,7 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
         </figure>
         <Lane id="uniform" name="Uniform, p = 1/(b − a)" color={C_U} s={u}>
           <svg viewBox={`0 0 ${W} ${H}`} role="img" aria-label="Running estimate of the uniform estimator with its ± standard-error band, against N on a log axis">
-            <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="⟨I⟩" />
+            <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
             <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
             <path d={band(c.u, c.uSe)} style={{ fill: C_U }} className="mc-svg-band" />
             <path d={estPath(c.u)} style={{ stroke: C_U }} className="mc-svg-line" />
@@ -220,7 +220,7 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
         </Lane>
         <Lane id="importance" name={`Importance, ${importanceLabel}`} color={C_I} s={im}>
           <svg viewBox={`0 0 ${W} ${H}`} role="img" aria-label="Running estimate of the importance-sampling estimator with its ± standard-error band, against N on a log axis">
-            <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="⟨I⟩" />
+            <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
             <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
             <path d={band(c.i, c.iSe)} style={{ fill: C_I }} className="mc-svg-band" />
             <path d={estPath(c.i)} style={{ stroke: C_I }} className="mc-svg-line" />
