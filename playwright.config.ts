@@ -20,6 +20,9 @@ export default defineConfig({
     launchOptions: { executablePath: (findChromium() as string | null) ?? undefined, args: CHROMIUM_ARGS },
     viewport: { width: 1280, height: 900 },
     permissions: ['clipboard-read', 'clipboard-write'],
+    // The service worker precaches the whole build in the background; only the offline tests
+    // (tests/e2e/offline.spec.ts) need it, so the others do not pay for it.
+    serviceWorkers: 'block',
   },
   webServer: {
     command: `node scripts/serve.mjs ${dist} ${port}`,

@@ -1,36 +1,107 @@
-import { defineConfig } from 'vite';
+import { defineConfig, type Plugin } from 'vite';
 import react from '@vitejs/plugin-react';
+import { VitePWA } from 'vite-plugin-pwa';
+import { viteSingleFile } from 'vite-plugin-singlefile';
+
+/**
+ * `--mode single` (npm run build:single): one self-contained HTML file. Workers are written as
+ * `new Worker(new URL('./x.worker.ts', import.meta.url), { type: 'module' })` everywhere; in this
+ * mode that expression becomes Vite's inlined worker (`./x.worker.ts?worker&inline`, a Blob URL),
+ * so they run from file:// too.
+ */
+function inlineWorkers(): Plugin {
+  const re = /new Worker\(\s*new URL\(\s*(['"])([^'"]+)\1\s*,\s*import\.meta\.url\s*\)\s*(?:,\s*\{[^{}]*\}\s*)?\)/g;
+  return {
+    name: 'rml:inline-workers',
+    enforce: 'pre',
+    transform(code, id) {
+      if (!/[\\/]src[\\/].*\.tsx?$/.test(id) || !code.includes('new Worker(')) return null;
+      const imports: string[] = [];
+      const out = code.replace(re, (_m, _q, spec: string) => {
+        const name = `__rmlInlineWorker${imports.length}`;
+        imports.push(`import ${name} from ${JSON.stringify(`${spec}?worker&inline`)};`);
+        return `new ${name}()`;
+      });
+      return imports.length ? { code: `${imports.join('\n')}\n${out}`, map: null } : null;
+    },
+  };
+}
 
 // Relative base: the static build works from any folder of any static host (hash routing).
-export default defineConfig({
-  base: './',
-  plugins: [react()],
-  build: {
-    target: 'es2022',
-    sourcemap: false,
-    chunkSizeWarningLimit: 5000,
-    rolldownOptions: {
-      output: {
-        // three.js, Plotly and KaTeX get recognisable chunk names (vendor-three-*.js, …) for the
-        // budgets. mathjs is left to the default splitting on purpose: the parse-only expression
-        // engine (src/core/expr) must not share a chunk with the full mathjs that the stability
-        // panel's BigNumber reference loads.
-        // Each scene's lazy chunk is named after it (scene-texture-*.js, …); naming only, so the
-        // default splitting (shared modules in shared chunks) is untouched.
-        chunkFileNames: (chunk: { facadeModuleId?: string | null }) => {
-          const m = /[\\/]src[\\/]scenes[\\/]([a-z0-9-]+)[\\/]index\.ts$/.exec(chunk.facadeModuleId ?? '');
-          return m ? `assets/scene-${m[1]}-[hash].js` : 'assets/[name]-[hash].js';
-        },
-        codeSplitting: {
-          groups: [
-            { name: 'vendor-three', test: /[\\/]node_modules[\\/]three[\\/]/ },
-            { name: 'vendor-plotly', test: /[\\/]node_modules[\\/]plotly\.js-cartesian-dist-min[\\/]/ },
-            { name: 'vendor-katex', test: /[\\/]node_modules[\\/]katex[\\/]/ },
-          ],
-        },
-      },
+export default defineConfig(({ mode }) => {
+  const single = mode === 'single';
+  return {
+    base: './',
+    plugins: single
+      ? [react(), inlineWorkers(), viteSingleFile({ removeViteModuleLoader: true })]
+      : [
+          react(),
+          // Offline: a Workbox service worker precaches every file of the build (all chunks, workers,
+          // fonts), so after one visit every scene opens with no network. 'prompt': a new build waits
+          // until the reader accepts the "updated, reload" notice (src/app/pwa.ts), so a page never runs
+          // a mix of old and new chunks.
+          VitePWA({
+            registerType: 'prompt',
+            injectRegister: false,
+            includeAssets: [],
+            manifest: {
+              name: 'Render Math Lab',
+              short_name: 'Math Lab',
+              description: 'Interactive explorables for the mathematics of rendering, computed live in the browser.',
+              start_url: './',
+              scope: './',
+              display: 'standalone',
+              background_color: '#f7f6f2',
+              theme_color: '#1c1d21',
+              icons: [
+                { src: 'icon-192.png', sizes: '192x192', type: 'image/png' },
+                { src: 'icon-512.png', sizes: '512x512', type: 'image/png' },
+                { src: 'icon-maskable-512.png', sizes: '512x512', type: 'image/png', purpose: 'maskable' },
+              ],
+            },
+            workbox: {
+              globPatterns: ['**/*.{js,css,html,png,svg,ico,webmanifest,woff2,woff,ttf,wasm,json}'],
+              maximumFileSizeToCacheInBytes: 20 * 1024 * 1024,
+              cleanupOutdatedCaches: true,
+              clientsClaim: true,
+              navigateFallback: 'index.html',
+            },
+          }),
+        ],
+    build: {
+      target: 'es2022',
+      sourcemap: false,
+      chunkSizeWarningLimit: 5000,
+      outDir: single ? 'dist-single' : 'dist',
+      rolldownOptions: single
+        ? {}
+        : {
+            output: {
+              // three.js, Plotly and KaTeX get recognisable chunk names (vendor-three-*.js, …) for the
+              // budgets. mathjs is left to the default splitting on purpose: the parse-only expression
+              // engine (src/core/expr) must not share a chunk with the full mathjs that the stability
+              // panel's BigNumber reference loads.
+              // Each scene's lazy chunk is named after it (scene-texture-*.js, …); naming only, so the
+              // default splitting (shared modules in shared chunks) is untouched.
+              chunkFileNames: (chunk: { facadeModuleId?: string | null }) => {
+                const m = /[\\/]src[\\/]scenes[\\/]([a-z0-9-]+)[\\/]index\.ts$/.exec(chunk.facadeModuleId ?? '');
+                return m ? `assets/scene-${m[1]}-[hash].js` : 'assets/[name]-[hash].js';
+              },
+              codeSplitting: {
+                groups: [
+                  { name: 'vendor-three', test: /[\\/]node_modules[\\/]three[\\/]/ },
+                  { name: 'vendor-plotly', test: /[\\/]node_modules[\\/]plotly\.js-cartesian-dist-min[\\/]/ },
+                  { name: 'vendor-katex', test: /[\\/]node_modules[\\/]katex[\\/]/ },
+                ],
+              },
+            },
+          },
     },
-  },
-  worker: { format: 'es' },
-  server: { host: '127.0.0.1' },
+    // single: each inlined worker is one self-contained classic script (its lazy imports folded in):
+    // a page opened from file:// has an opaque origin, and Chromium refuses module workers from its
+    // Blob URLs, but runs classic ones.
+    worker: single ? { format: 'iife' as const, rolldownOptions: { output: { codeSplitting: false } } } : { format: 'es' as const },
+    publicDir: single ? false : 'public',
+    server: { host: '127.0.0.1' },
+  };
 });

@@ -3,7 +3,8 @@
  * Bundle budgets for the production build (run after `npm run build`). Gzipped sizes:
  *  - the entry (what `#/` downloads: index.html's module script and stylesheet, plus every chunk
  *    the entry imports statically) ≤ 90 kB, and none of three.js, Plotly, mathjs, KaTeX in it;
- *  - each heavy library and each scene chunk under its own ceiling.
+ *  - each heavy library and each scene chunk under its own ceiling;
+ *  - the single-file copy (dist-single/index.html, when built) under its own ceiling.
  * Exits 1 and says which budget broke.
  */
 import { readFileSync, readdirSync, existsSync } from 'node:fs';
@@ -64,6 +65,7 @@ const LIMITS = [
   [/^vendor-three-/, 200_000],
   [/^vendor-katex-/, 110_000],
   [/^scene-/, 150_000],
+  [/^PracticeRoute-/, 60_000], // practice mode (src/practice), its own lazy chunk
 ];
 for (const f of readdirSync(join(dist, 'assets'))) {
   const rel = `assets/${f}`;
@@ -75,9 +77,22 @@ for (const f of readdirSync(join(dist, 'assets'))) {
   if (lim && s > lim[1]) failures.push(`${rel} is ${kB(s)} kB gzipped, over its ${kB(lim[1])} kB budget`);
 }
 
+// The single-file copy (npm run build:single): one HTML with everything inlined, for LMS uploads
+// and USB sticks. Reported with its own ceiling; skipped (and said so) when it has not been built.
+const singleFile = process.argv[3] ?? 'dist-single/index.html';
+const SINGLE_LIMIT = 3_000_000;
+let singleLine = `single file    (not built: run "npm run build:single" to measure ${singleFile})`;
+if (existsSync(singleFile)) {
+  const raw = readFileSync(singleFile);
+  const g = gzipSync(raw, { level: 9 }).length;
+  singleLine = `single file  ${kB(g).padStart(8)} kB  ${singleFile} (${(raw.length / 1e6).toFixed(2)} MB uncompressed; ≤ ${kB(SINGLE_LIMIT)} kB gzipped)`;
+  if (g > SINGLE_LIMIT) failures.push(`${singleFile} is ${kB(g)} kB gzipped, over its ${kB(SINGLE_LIMIT)} kB budget`);
+}
+
 rows.sort((a, b) => (a[0] === b[0] ? b[2] - a[2] : a[0] < b[0] ? -1 : 1));
 for (const [kind, f, s, lim] of rows) console.log(`${kind.padEnd(14)} ${kB(s).padStart(8)} kB  ${f}${lim ? `  (≤ ${kB(lim)} kB)` : ''}`);
 console.log(`entry total    ${kB(entryTotal).padStart(8)} kB  (≤ ${kB(ENTRY_LIMIT)} kB; no three.js, Plotly, mathjs or KaTeX)`);
+console.log(singleLine);
 if (failures.length) {
   console.error(`\nbudgets: FAILED\n  ${failures.join('\n  ')}`);
   process.exit(1);

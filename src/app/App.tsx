@@ -1,19 +1,39 @@
-import { useEffect, useMemo } from 'react';
+import { lazy, Suspense, useEffect, useMemo } from 'react';
 import { useHashRoute } from './useHashRoute';
 import { parseShellFlags } from './route';
 import { useTheme } from './theme';
 import { usePostHeight } from './embedHeight';
+import { useHostApi } from './hostApi';
 import { Home } from './Home';
 import { SceneHost } from './SceneHost';
 import { findScene } from '../scenes/registry';
 import { ShortcutProvider } from '../ui/shortcuts';
+
+// Practice mode is its own lazy chunk (src/practice): nothing of it loads on the other routes.
+// A failed load (offline, stale deploy) shows a message instead of throwing.
+const PracticeRoute = lazy(() =>
+  import('../practice/PracticeRoute').catch(() => ({
+    default: () => (
+      <main id="main" className="page" tabIndex={-1}>
+        <p role="alert" className="notice notice-error">
+          Practice could not be loaded. Check the connection and <a href={window.location.hash}>reload</a>.
+        </p>
+      </main>
+    ),
+  })),
+);
+
+// The teacher's guide (#/guide) is its own lazy chunk.
+const Guide = lazy(() => import('../guide/Guide'));
 
 export function App() {
   const route = useHashRoute();
   // memoised: SceneHost's setParams and effects depend on it, so it must not change per render
   const flags = useMemo(() => parseShellFlags(route.query), [route.query]);
   const theme = useTheme(flags.theme);
-  usePostHeight(flags.embed);
+  const scene = findScene(route.path);
+  usePostHeight(flags.embed, scene?.id ?? null, flags.origins);
+  useHostApi(flags.origins);
 
   useEffect(() => {
     const cl = document.documentElement.classList;
@@ -21,9 +41,26 @@ export function App() {
     cl.toggle('embed', flags.embed);
   }, [flags.present, flags.embed]);
 
-  const scene = findScene(route.path);
   let body;
   if (route.path === '/') body = <Home flags={flags} />;
+  else if (route.path === '/practice' || route.path.startsWith('/practice/'))
+    body = (
+      <Suspense
+        fallback={
+          <main id="main" className="page" tabIndex={-1}>
+            <p className="loading" role="status">Loading practice…</p>
+          </main>
+        }
+      >
+        <PracticeRoute path={route.path} query={route.query} flags={flags} />
+      </Suspense>
+    );
+  else if (route.path === '/guide')
+    body = (
+      <Suspense fallback={<main id="main" className="page"><p className="loading" role="status">Loading the teacher’s guide…</p></main>}>
+        <Guide flags={flags} />
+      </Suspense>
+    );
   else if (scene) body = <SceneHost key={scene.id} info={scene} query={route.query} flags={flags} theme={theme} />;
   else
     body = (
@@ -62,6 +99,9 @@ function SiteHeader({ present }: { present: boolean }) {
     <header className="site-header">
       <a href={present ? '#/?present=1' : '#/'} className="brand">
         <span className="brand-mark" aria-hidden="true">◐</span> Render Math Lab
+      </a>
+      <a href={present ? '#/guide?present=1' : '#/guide'} className="guide-link">
+        Teacher’s guide
       </a>
     </header>
   );

@@ -22,6 +22,12 @@ export function Home({ flags }: { flags: ShellFlags }) {
         number and every figure, plot and picture is recomputed on the spot. Share or embed any configuration by its
         link.
       </p>
+      <p className="home-practice">
+        <a href={`#/practice${withFlags('', flags)}`} data-testid="practice-link">
+          Practice
+        </a>
+        : test yourself on fresh variants of every question — answers checked, classic mistakes named, worked solutions with your numbers.
+      </p>
       <ol className="question-list">
         {EXAM_QUESTIONS.map((q) => {
           const scene = SCENES.find((s) => s.id === q.scene)!;

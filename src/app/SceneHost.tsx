@@ -2,10 +2,13 @@ import { Component, useCallback, useEffect, useMemo, useRef, useState, type Reac
 import type { SceneInfo } from '../scenes/registry';
 import { sceneLoader } from '../scenes/registry';
 import type { SceneModule } from './scene';
-import { parseParams, serializeParams, type ParamProblem, type ParamValues, type ParamSchema } from './params';
+import { parseParams, sanitizePatch, serializeParams, type ParamProblem, type ParamValues, type ParamSchema } from './params';
 import { shellExtras, type ShellFlags } from './route';
 import { useShortcuts } from '../ui/shortcuts';
 import { QuestionNav } from '../ui/exam';
+import { useHostScene } from './hostApi';
+import { embedSnippet } from './embedCode';
+import { QrButton } from './QrButton';
 
 interface Props {
   info: SceneInfo;
@@ -114,7 +117,9 @@ function LoadedScene({ mod, info, query, flags, theme }: { mod: SceneModule; inf
   useEffect(() => setLinkValues(parsed.values), [parsed]);
   const setParams = useCallback(
     (patch: Record<string, unknown>) => {
-      const next = { ...valuesRef.current, ...patch } as ParamValues<ParamSchema>;
+      // only values the schema allows reach the scene and the URL (a select set to a missing
+      // option, a NaN from a cleared number field, a key that is not a parameter: dropped)
+      const next = { ...valuesRef.current, ...sanitizePatch(schema, patch) } as ParamValues<ParamSchema>;
       valuesRef.current = next;
       setValues(next);
       const seq = ++writeSeq.current;
@@ -134,6 +139,9 @@ function LoadedScene({ mod, info, query, flags, theme }: { mod: SceneModule; inf
     [schema, flags, info.path],
   );
   useShortcuts({ reset: () => setParams({ ...opening.current }) });
+
+  const getValues = useCallback(() => valuesRef.current, []);
+  useHostScene({ id: info.id, route: info.path, schema, getValues, setParams }, values);
 
   const Scene = mod.default;
   return (
@@ -195,12 +203,13 @@ async function linkSafeValues(schema: ParamSchema, values: ParamValues<ParamSche
 function ShareBar({ info, schema, values, flags }: { info: SceneInfo; schema: SceneModule['schema']; values: ParamValues<ParamSchema>; flags: ShellFlags }) {
   const [copied, setCopied] = useState<'link' | 'embed' | null>(null);
   const [shown, setShown] = useState<string | null>(null);
-  const base = `${window.location.origin}${window.location.pathname}`;
+  // (not location.origin + pathname: a copy opened from file:// has the origin "null")
+  const base = window.location.href.split('#')[0]!;
   const qs = serializeParams(schema, values, { part: flags.part ?? undefined, present: flags.present ? '1' : undefined, theme: flags.theme ?? undefined });
   const link = `${base}#${info.path}${qs ? `?${qs}` : ''}`;
   const embedQs = serializeParams(schema, values, { part: flags.part ?? undefined, embed: '1', theme: flags.theme ?? undefined });
   const embedSrc = `${base}#${info.path}?${embedQs}`;
-  const embedCode = `<iframe src="${embedSrc.replace(/&/g, '&amp;').replace(/"/g, '&quot;')}" title="${info.title} — Render Math Lab" width="100%" height="720" style="border:0" loading="lazy"></iframe>`;
+  const embedCode = embedSnippet(embedSrc, `${info.title} — Render Math Lab`, info.id);
   const copy = async (what: 'link' | 'embed') => {
     const text = what === 'link' ? link : embedCode;
     setShown(text);
@@ -216,6 +225,7 @@ function ShareBar({ info, schema, values, flags }: { info: SceneInfo; schema: Sc
       <button type="button" data-testid="copy-link" onClick={() => copy('link')}>
         Copy link
       </button>
+      <QrButton link={link} present={flags.present} />
       <button type="button" data-testid="copy-embed" onClick={() => copy('embed')}>
         Copy embed code
       </button>

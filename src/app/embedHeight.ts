@@ -1,33 +1,50 @@
 import { useEffect } from 'react';
 
-/** Message a host page receives from an embedded scene: `{ type: 'render-math-lab:height', height }`. */
+/**
+ * Message a host page receives from an embedded scene:
+ * `{ type: 'render-math-lab:height', height, scene }` (the scene id, or null off a scene). Nothing
+ * else: the page's URL and parameters go only to a host that asks through the host API.
+ */
 export const HEIGHT_MESSAGE = 'render-math-lab:height';
 
+/** The height of the page's content: the app root's bottom edge (not the viewport-filling document). */
+export function contentHeight(): number {
+  const root = document.getElementById('root') ?? document.body;
+  const rect = root.getBoundingClientRect();
+  const body = getComputedStyle(document.body);
+  return Math.ceil(rect.bottom + window.scrollY + (parseFloat(body.paddingBottom) || 0) + (parseFloat(body.marginBottom) || 0));
+}
+
 /**
- * In an iframe, post the document's height to the parent whenever it changes, so the host can
- * size the iframe (see README, "Embedding a scene").
+ * In an iframe, post the content's height to the parent whenever it changes (growing or
+ * shrinking), so the host can size the iframe (README, "Embed a scene"). With `origin=` the
+ * message goes only to those origins.
  */
-export function usePostHeight(active: boolean): void {
+export function usePostHeight(active: boolean, sceneId: string | null, origins: readonly string[] = []): void {
   useEffect(() => {
     if (!active || window.parent === window) return;
     let last = -1;
     let raf = 0;
     const post = () => {
       raf = 0;
-      const h = Math.ceil(document.documentElement.scrollHeight);
+      const h = contentHeight();
       if (h === last) return;
       last = h;
-      window.parent.postMessage({ type: HEIGHT_MESSAGE, height: h, href: window.location.href }, '*');
+      const msg = { type: HEIGHT_MESSAGE, height: h, scene: sceneId };
+      if (origins.length) for (const o of origins) window.parent.postMessage(msg, o);
+      else window.parent.postMessage(msg, '*');
     };
     const schedule = () => {
       if (!raf) raf = requestAnimationFrame(post);
     };
     const ro = new ResizeObserver(schedule);
+    const root = document.getElementById('root');
+    if (root) ro.observe(root);
     ro.observe(document.body);
     schedule();
     return () => {
       ro.disconnect();
       if (raf) cancelAnimationFrame(raf);
     };
-  }, [active]);
+  }, [active, sceneId, origins]);
 }

@@ -3,7 +3,8 @@
  * itself with seeded random clicks, drags, key presses and typing into its own controls (expression
  * fields included, with a corpus of hostile strings) and reports every error it sees in a small
  * panel and on `window.__rmlFuzz`. `fuzzn=300` stops after 300 actions (the browser test uses it);
- * without it the fuzzer runs until the panel's Stop button is pressed.
+ * without it the fuzzer runs until the panel's Stop button is pressed. Actions come in bursts of
+ * 1–4 per tick (every 25 ms plus the time the page takes to render).
  *
  * Loaded lazily (only when `fuzz` is in the URL), so it costs the entry bundle nothing.
  * It never leaves the page: links and buttons that navigate or reload are skipped.
@@ -240,12 +241,13 @@ export function startFuzz(opts: { seed: number; limit: number | null; intervalMs
       return `drag on ${what}`;
     }
     if (rand() < 0.25) {
-      el.focus();
+      el.focus?.();
       const k = pick(KEYS);
       key(el, k);
       return `key ${JSON.stringify(k)} on ${what}`;
     }
-    el.click();
+    if (typeof el.click === 'function') el.click();
+    else el.dispatchEvent(new MouseEvent('click', { bubbles: true, cancelable: true }));
     return `click ${what}`;
   };
 
@@ -261,16 +263,20 @@ export function startFuzz(opts: { seed: number; limit: number | null; intervalMs
   };
   const step = () => {
     if (!state.running) return;
-    let done: string;
-    try {
-      done = act();
-    } catch (e) {
-      done = `action threw: ${e instanceof Error ? e.message : String(e)}`;
-      state.errors.push(done);
+    // a burst of 1–4 actions per tick: as fast as a hurried user, and React renders once per burst
+    const burst = 1 + Math.floor(rand() * 4);
+    for (let b = 0; b < burst && (state.limit === null || state.actions < state.limit); b++) {
+      let done: string;
+      try {
+        done = act();
+      } catch (e) {
+        done = `action threw: ${e instanceof Error ? e.message : String(e)}`;
+        state.errors.push(done);
+      }
+      state.actions++;
+      state.log.push(done);
+      if (state.log.length > 20) state.log.shift();
     }
-    state.actions++;
-    state.log.push(done);
-    if (state.log.length > 20) state.log.shift();
     checkBoundary();
     render();
     if (state.limit !== null && state.actions >= state.limit) {

@@ -29,3 +29,11 @@ function maybeFuzz() {
 }
 maybeFuzz();
 window.addEventListener('hashchange', maybeFuzz);
+
+// Offline copy: register the service worker after the page has loaded, from a lazy chunk (not in
+// development, not in the single-file build, not from file://).
+if (import.meta.env.PROD && import.meta.env.MODE !== 'single' && 'serviceWorker' in navigator && /^https?:$/.test(window.location.protocol)) {
+  const start = () => void import('./pwa').then((m) => m.registerPwa(), () => undefined);
+  if (document.readyState === 'complete') start();
+  else window.addEventListener('load', start, { once: true });
+}

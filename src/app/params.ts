@@ -54,7 +54,7 @@ export interface ParsedParams<S extends ParamSchema> {
 }
 
 /** Parameters owned by the shell itself, not by any scene. */
-export const SHELL_PARAMS = ['embed', 'present', 'theme', 'part', 'fuzz', 'fuzzn', 'fuzzseed'] as const;
+export const SHELL_PARAMS = ['embed', 'present', 'theme', 'part', 'origin', 'fuzz', 'fuzzn', 'fuzzseed'] as const;
 
 /** Longest raw value the parser looks at; longer ones are rejected, not truncated. */
 export const MAX_RAW_LENGTH = 4000;
@@ -243,6 +243,48 @@ function splitQuery(query: string): [string, string, string][] {
 
 function formDecode(s: string): string {
   return new URLSearchParams(`v=${s.replace(/&/g, '%26')}`).get('v') ?? '';
+}
+
+/**
+ * Check one value a scene passes to setParams against its spec (the UI can be driven with
+ * anything: devtools, a fuzzer, a select whose value was set to a missing option). Returns the
+ * value to store (clamped where the parser would clamp), or undefined if it cannot be used.
+ */
+export function sanitizeValue(spec: ParamSpec, v: unknown): unknown {
+  switch (spec.kind) {
+    case 'number': {
+      if (typeof v !== 'number' || !Number.isFinite(v)) return undefined;
+      const x = spec.integer ? Math.round(v) : v;
+      return clamp(x, spec.min, spec.max);
+    }
+    case 'enum':
+      return typeof v === 'string' && spec.values.includes(v) ? v : undefined;
+    case 'string': {
+      if (typeof v !== 'string') return undefined;
+      return v.length <= (spec.maxLength ?? 400) ? v : undefined;
+    }
+    case 'bool':
+      return typeof v === 'boolean' ? v : undefined;
+    case 'vec3':
+      if (!Array.isArray(v) || v.length !== 3 || !v.every((x) => typeof x === 'number' && Number.isFinite(x))) return undefined;
+      return (v as number[]).map((x) => clamp(x, spec.min, spec.max));
+    case 'list':
+      if (v === null) return spec.default === null ? null : undefined;
+      if (!Array.isArray(v) || v.length > spec.maxItems || (spec.minItems !== undefined && v.length < spec.minItems)) return undefined;
+      if (!v.every((x) => typeof x === 'number' && Number.isFinite(x))) return undefined;
+      return (v as number[]).map((x) => clamp(x, spec.min, spec.max));
+  }
+}
+
+/** The own-schema keys of a setParams patch with usable values (others are dropped). */
+export function sanitizePatch(schema: ParamSchema, patch: Record<string, unknown>): Record<string, unknown> {
+  const out: Record<string, unknown> = {};
+  for (const [k, v] of Object.entries(patch)) {
+    if (!Object.hasOwn(schema, k)) continue;
+    const c = sanitizeValue(schema[k]!, v);
+    if (c !== undefined) out[k] = c;
+  }
+  return out;
 }
 
 function describeDefault(spec: ParamSpec): string {

@@ -24,13 +24,15 @@ export interface ShellFlags {
    * links the scene writes, so a shared link lands on the same part.
    */
   part: string | null;
+  /** `origin=`: the only host-page origins the host API answers (empty: any parent). */
+  origins: string[];
   /** Shell parameters the shell could not use, with a message each. */
   problems: { name: string; message: string }[];
 }
 
 /** Read the shell's own flags (embed, present, theme) from a query string. Never throws. */
 export function parseShellFlags(query: string): ShellFlags {
-  const flags: ShellFlags = { embed: false, present: false, theme: null, part: null, problems: [] };
+  const flags: ShellFlags = { embed: false, present: false, theme: null, part: null, origins: [], problems: [] };
   let sp: URLSearchParams;
   try {
     sp = new URLSearchParams(query);
@@ -56,15 +58,46 @@ export function parseShellFlags(query: string): ShellFlags {
     if (/^[1-6][a-d]?$/.test(part)) flags.part = part;
     else flags.problems.push({ name: 'part', message: `${JSON.stringify(part.slice(0, 24))} is not an exam part like 1c; showing the top of the page` });
   }
+  const o = parseOrigins(sp.get('origin'));
+  flags.origins = o.origins;
+  if (o.problem) flags.problems.push({ name: 'origin', message: o.problem });
   return flags;
 }
 
+/** Parses the `origin=` parameter: a comma list of exact origins (`https://lms.example.edu`). */
+export function parseOrigins(raw: string | null): { origins: string[]; problem: string | null } {
+  if (raw === null) return { origins: [], problem: null };
+  const origins: string[] = [];
+  const bad: string[] = [];
+  for (const part of raw.split(',')) {
+    const s = part.trim();
+    if (!s) continue;
+    let ok = false;
+    try {
+      const u = new URL(s);
+      ok = (u.protocol === 'https:' || u.protocol === 'http:') && u.origin === s.replace(/\/$/, '');
+      if (ok) origins.push(u.origin);
+    } catch {
+      ok = false;
+    }
+    if (!ok) bad.push(clip(s, 24));
+  }
+  const problem = bad.length ? `${bad.map((b) => JSON.stringify(b)).join(', ')} ${bad.length > 1 ? 'are not origins' : 'is not an origin'} like https://lms.example.edu; ignored` : null;
+  return { origins: origins.slice(0, 16), problem };
+}
+
+
+function clip(s: string, n: number): string {
+  return s.length > n ? `${s.slice(0, n)}…` : s;
+}
+
 /** The shell flags as query entries, for links that must keep the mode. */
-export function shellExtras(flags: Pick<ShellFlags, 'embed' | 'present' | 'theme'> & { part?: string | null }): Record<string, string | undefined> {
+export function shellExtras(flags: Pick<ShellFlags, 'embed' | 'present' | 'theme'> & { part?: string | null; origins?: readonly string[] }): Record<string, string | undefined> {
   return {
     part: flags.part ?? undefined,
     embed: flags.embed ? '1' : undefined,
     present: flags.present ? '1' : undefined,
     theme: flags.theme ?? undefined,
+    origin: flags.origins?.length ? flags.origins.join(',') : undefined,
   };
 }

@@ -125,19 +125,47 @@ export interface Engine {
   dispose: () => void;
 }
 
-/** True when the browser can give a WebGL context (checked without three, so no console error). */
-export function webglAvailable(): boolean {
+/** Shortest time between two frames on a software WebGL (ms): 10 frames per second at most. */
+const SOFTWARE_FRAME_MS = 100;
+
+/** Renderer strings of WebGL implementations that run on the CPU (no GPU, or a blocklisted one). */
+const SOFTWARE_GL = /swiftshader|llvmpipe|softpipe|software|basic render/i;
+let probed: { available: boolean; software: boolean } | null = null;
+
+/**
+ * Can the browser give a WebGL context, and is it a software one (SwiftShader, llvmpipe …)?
+ * Checked once, without three (so no console error), and the probe context is released.
+ */
+export function probeWebGL(): { available: boolean; software: boolean } {
+  if (probed) return probed;
   try {
     const c = document.createElement('canvas');
-    return !!(c.getContext('webgl2') ?? c.getContext('webgl'));
+    const gl = (c.getContext('webgl2') ?? c.getContext('webgl')) as WebGLRenderingContext | null;
+    if (!gl) return (probed = { available: false, software: false });
+    // Chromium reports the real renderer in RENDERER; others through WEBGL_debug_renderer_info.
+    const dbg = gl.getExtension('WEBGL_debug_renderer_info');
+    const name = `${String(gl.getParameter(gl.RENDERER) ?? '')} ${dbg ? String(gl.getParameter(dbg.UNMASKED_RENDERER_WEBGL) ?? '') : ''}`;
+    gl.getExtension('WEBGL_lose_context')?.loseContext();
+    return (probed = { available: true, software: SOFTWARE_GL.test(name) });
   } catch {
-    return false;
+    return (probed = { available: false, software: false });
   }
 }
 
+/** True when the browser can give a WebGL context (checked without three, so no console error). */
+export function webglAvailable(): boolean {
+  return probeWebGL().available;
+}
+
 export function createEngine(container: HTMLElement, ariaLabel: string): Engine {
-  const renderer = new WebGLRenderer({ antialias: true, alpha: true, powerPreference: 'low-power' });
-  renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
+  // On a software WebGL (no usable GPU) every frame is drawn by the CPU and, with software
+  // compositing, read back synchronously on the main thread: at device pixel ratio 1.75–2 with 4×
+  // multisampling that is tens of ms per frame, and an animation of a few seconds blocks the page
+  // for seconds (measured: Lighthouse mobile, hemisphere). There, draw at 1 CSS px per pixel and
+  // without multisampling: several times fewer pixels to shade and read back.
+  const software = probeWebGL().software;
+  const renderer = new WebGLRenderer({ antialias: !software, alpha: true, powerPreference: 'low-power' });
+  renderer.setPixelRatio(software ? 1 : Math.min(window.devicePixelRatio || 1, 2));
   renderer.setClearColor(0x000000, 0);
   const canvas = renderer.domElement;
   canvas.setAttribute('role', 'img');
@@ -165,9 +193,16 @@ export function createEngine(container: HTMLElement, ariaLabel: string): Engine 
   const frameCbs = new Set<(dt: number) => boolean>();
   let animating = false;
 
+  // Software WebGL: at most one frame per SOFTWARE_FRAME_MS, each followed by idle time (every
+  // frame there is a synchronous readback; an animation at 60 fps would leave no time for input).
+  const minFrameMs = software ? SOFTWARE_FRAME_MS : 0;
+  let lastFrame = -Infinity;
+  let timer = 0;
+
   const frame = (now: number) => {
     raf = 0;
     if (!visible) return;
+    lastFrame = performance.now();
     const dt = last ? Math.min((now - last) / 1000, 0.1) : 1 / 60;
     last = now;
     animating = false;
@@ -180,7 +215,14 @@ export function createEngine(container: HTMLElement, ariaLabel: string): Engine 
     else last = 0;
   };
   const schedule = () => {
-    if (!raf && visible) raf = requestAnimationFrame(frame);
+    if (raf || timer || !visible) return;
+    const wait = lastFrame + minFrameMs - performance.now();
+    if (wait > 0) {
+      timer = window.setTimeout(() => {
+        timer = 0;
+        if (!raf && visible) raf = requestAnimationFrame(frame);
+      }, wait);
+    } else raf = requestAnimationFrame(frame);
   };
   const invalidate = () => {
     needsRender = true;
@@ -219,14 +261,17 @@ export function createEngine(container: HTMLElement, ariaLabel: string): Engine 
     setVisible: (v) => {
       visible = v;
       if (v && (needsRender || frameCbs.size)) schedule();
-      if (!v && raf) {
+      if (!v && (raf || timer)) {
         cancelAnimationFrame(raf);
+        clearTimeout(timer);
         raf = 0;
+        timer = 0;
         last = 0;
       }
     },
     dispose: () => {
       if (raf) cancelAnimationFrame(raf);
+      clearTimeout(timer);
       ro.disconnect();
       controls.dispose();
       scene.traverse((o) => {

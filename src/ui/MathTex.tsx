@@ -1,4 +1,5 @@
 import { useEffect, useState } from 'react';
+import { runChunked } from './chunked';
 
 type Katex = typeof import('katex');
 let katexPromise: Promise<Katex> | null = null;
@@ -19,18 +20,25 @@ export function MathTex({ tex, display = false, className }: { tex: string; disp
   const [html, setHtml] = useState<string | null>(null);
   useEffect(() => {
     let alive = true;
+    let cancel = () => {};
     loadKatex()
       .then((k) => {
         if (!alive) return;
-        try {
-          setHtml(k.renderToString(tex, { displayMode: display, throwOnError: false, strict: 'ignore', output: 'htmlAndMathml' }));
-        } catch {
-          setHtml(null);
-        }
+        // Each formula renders in its own slot of the shared sliced queue: when KaTeX arrives, a
+        // scene's dozens of formulas would otherwise all render in one long task.
+        cancel = runChunked(() => {
+          if (!alive) return;
+          try {
+            setHtml(k.renderToString(tex, { displayMode: display, throwOnError: false, strict: 'ignore', output: 'htmlAndMathml' }));
+          } catch {
+            setHtml(null);
+          }
+        });
       })
       .catch(() => {});
     return () => {
       alive = false;
+      cancel();
     };
   }, [tex, display]);
   const Tag = display ? 'div' : 'span';

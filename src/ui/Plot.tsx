@@ -139,7 +139,7 @@ export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProp
     for (const k of ['xaxis', 'yaxis', 'xaxis2', 'yaxis2']) {
       if (layout && layout[k]) merged[k] = { ...axis, ...(layout[k] as object) };
     }
-    plotly
+    pending.current = plotly
       .react(el.current, clean.data, merged, {
         ...PLOT_CONFIG,
         // on touch screens the mode bar would sit over titles and legends with no hover to hide it
@@ -148,10 +148,17 @@ export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProp
       .catch(() => setFailed(true));
   }, [plotly, clean, layoutKey, height, themeKey]);
 
+  // Purge only after the last react() has settled and its follow-up redraws (Plotly's auto-margin
+  // pass) have run: purging a plot mid-update makes Plotly throw "e.emit is not a function" from
+  // an internal promise (seen when a control change unmounts a plot while it redraws).
+  const pending = useRef<Promise<unknown> | null>(null);
   useEffect(() => {
     const node = el.current;
     return () => {
-      if (node && plotly) plotly.purge(node);
+      if (!node || !plotly) return;
+      const purge = () => setTimeout(() => plotly.purge(node), 300);
+      if (pending.current) void pending.current.then(purge, purge);
+      else purge();
     };
   }, [plotly]);
 

@@ -1,6 +1,7 @@
 export { Readout, readoutValue, formatNumber, type ReadoutProps } from './Readout';
 export { NumberField, Slider, Select, Toggle, ExprField, Panel, Notice, SceneLayout, Transport } from './controls';
 export { MathTex, loadKatex } from './MathTex';
+export { runChunked, nextTask } from './chunked';
 export { Plot, loadPlotly, type PlotTrace, type PlotLayout } from './Plot';
 export { useShortcuts, type ShortcutHandlers } from './shortcuts';
 export { useSeenOnce, observeVisibility } from './useInView';

@@ -77,6 +77,27 @@ async function installLongTaskObserver(page: Page) {
   });
 }
 
+/**
+ * How much slower than a quiet machine this page's main thread runs now (≥ 1): a fixed loop that
+ * takes ~10 ms on a quiet desktop core, timed three times, the fastest kept. The 1 s long-task
+ * bound is scaled by it, so a machine shared by many test runs does not fail the test, while an
+ * input that costs exponential work (minutes) still does.
+ */
+async function slowdown(page: Page): Promise<number> {
+  const ms = await page.evaluate(() => {
+    let best = Infinity;
+    for (let r = 0; r < 3; r++) {
+      const t0 = performance.now();
+      let acc = 0;
+      for (let i = 0; i < 10_000_000; i++) acc += Math.sqrt(i);
+      const t = performance.now() - t0;
+      if (acc > 0) best = Math.min(best, t);
+    }
+    return best;
+  });
+  return Math.max(1, ms / 10);
+}
+
 /** Resolves once the main thread has rendered two frames and run a macrotask (it is free again). */
 async function settle(page: Page) {
   await page.evaluate(
@@ -105,6 +126,7 @@ for (const route of ROUTES) {
     }
     await page.evaluate(() => window.scrollTo(0, 0));
     await installLongTaskObserver(page);
+    const limitMs = 1000 * (await slowdown(page));
     for (const [label, raw] of CORPUS) {
       const names = [...params.map((p) => p.name), 'embed', 'theme'];
       const q = names.map((n) => `${n}=${raw}`).join('&');
@@ -114,7 +136,8 @@ for (const route of ROUTES) {
       await settle(page);
       await expectWorkingScene(page, label);
       // every non-text parameter that cannot use the value is named in the notice
-      const mustName = params.filter((p) => p.kind !== 'string' && !(p.kind === 'list' && raw === ''));
+      // (a list takes '' as its default and '1,2' as two numbers: those are usable)
+      const mustName = params.filter((p) => p.kind !== 'string' && !(p.kind === 'list' && (raw === '' || raw === '1,2')));
       if (mustName.length) {
         const notice = page.getByTestId('param-notice');
         await expect(notice, `notice for ${label}`).toBeVisible();
@@ -128,7 +151,7 @@ for (const route of ROUTES) {
         w.__long.length = 0;
         return l;
       });
-      expect(Math.max(0, ...long), `${route.path} with every parameter = ${label}: longest main-thread task (ms)`).toBeLessThan(1000);
+      expect(Math.max(0, ...long), `${route.path} with every parameter = ${label}: longest main-thread task (ms; 1 s × slowdown ${limitMs / 1000})`).toBeLessThan(limitMs);
     }
     // one prototype name per parameter on its own, then a control change: the URL never carries
     // a function's source
@@ -143,7 +166,9 @@ for (const route of ROUTES) {
   });
 }
 
-const FUZZ_ACTIONS = 200;
+// Sized for the whole spec's fuzz part to stay near 2 minutes on a loaded 2-core machine (~25 s a route);
+// run more by hand: #/<route>?fuzz=1&fuzzseed=N (unbounded) or &fuzzn=1000.
+const FUZZ_ACTIONS = 80;
 
 for (const route of ROUTES) {
   test(`fuzz mode on ${route.path}: ${FUZZ_ACTIONS} seeded actions, no error`, async ({ page }) => {

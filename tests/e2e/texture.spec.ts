@@ -247,6 +247,10 @@ test.describe('interaction', () => {
     await openScene(page, '#/texture?preset=random&size=32');
     const svg = page.getByTestId('texel-grid');
     await expect(svg).toBeVisible();
+    // the reconstructions are drawn when they come near the screen
+    await page.getByTestId('recon-bilinear').scrollIntoViewIfNeeded();
+    await expect.poll(() => page.evaluate(() => (window as unknown as { __puts: number }).__puts)).toBeGreaterThanOrEqual(3);
+    await svg.scrollIntoViewIfNeeded();
     await page.waitForTimeout(300);
     const putsBefore = await page.evaluate(() => (window as unknown as { __puts: number }).__puts);
     expect(putsBefore).toBeGreaterThanOrEqual(3);
@@ -351,6 +355,7 @@ test.describe('interaction', () => {
 });
 
 test('axe finds no serious or critical violations (light, dark, present)', async ({ page }) => {
+  test.setTimeout(240_000); // three full-page scans of a long page on a shared machine
   for (const q of ['theme=light', 'theme=dark', 'present=1&align=center&wrap=repeat&u=0.02']) {
     await openScene(page, `#/texture?${q}`);
     await page.getByTestId('sphere-view').scrollIntoViewIfNeeded();

@@ -4,9 +4,9 @@
  * uniform area (the key's), solid-angle (spherical rectangle) and cosine hemisphere sampling —
  * against the analytic reference (Lambert's formula). All figures come from ./model over the core.
  */
-import { useEffect, useMemo, useState } from 'react';
+import { useEffect, useMemo, useRef, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
-import { MathTex, Notice, NumberField, Panel, Plot, Readout, SceneLayout, Select, Slider, Toggle, useShortcuts } from '../../ui';
+import { MathTex, Notice, NumberField, Panel, Plot, Readout, SceneLayout, Select, Slider, Toggle, useSeenOnce, useShortcuts } from '../../ui';
 import type { PlotTrace } from '../../ui';
 import { useWorkerJob } from '../../workers';
 import type { LightStrategy } from '../../core/lights';
@@ -49,13 +49,19 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
   const patch = useMemo(() => patchModel(model, params.pu, params.pv, params.psize, params.ptilt), [model, params.pu, params.pv, params.psize, params.ptilt]);
   const timingKey = JSON.stringify([model.p, model.lc, model.w, model.h, model.tilt, model.L, model.rho, model.occluder ? 1 : 0, seed]);
   // Convergence series (3 × 32768 samples) in the worker: ~0.1 s that a slider drag should not wait for.
+  // The convergence and timing runs start when their panels come near the screen (not on load:
+  // their results re-render the scene while the first screen should be answering input).
+  const convBox = useRef<HTMLDivElement>(null);
+  const timingBox = useRef<HTMLDivElement>(null);
+  const convSeen = useSeenOnce(convBox);
+  const timingSeen = useSeenOnce(timingBox);
   const convArgs = useMemo(() => ({ params, nMax: 1 << 15 }), [params]);
-  const convTask = useWorkerJob<ReturnType<typeof convergence>>(makeWorker, 'convergence', convArgs, { key: timingKey, delayMs: 120 });
+  const convTask = useWorkerJob<ReturnType<typeof convergence>>(makeWorker, 'convergence', convArgs, { key: timingKey, delayMs: 120, enabled: convSeen });
   const conv = convTask.result;
 
   const job = useMemo(() => floorJob(model, seed), [model, seed]);
 
-  const timing = useWorkerJob<TimingPoint[]>(makeWorker, 'timing', params, { key: timingKey, delayMs: 400 });
+  const timing = useWorkerJob<TimingPoint[]>(makeWorker, 'timing', params, { key: timingKey, delayMs: 400, enabled: timingSeen });
 
   const [playing, setPlaying] = useState(false);
   useShortcuts({
@@ -289,6 +295,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
         </p>
       </Panel>
       <Panel title="Convergence">
+        <div ref={convBox} />
         <Plot
           ariaLabel="Absolute error and standard error of the three estimators against the number of samples, log-log."
           data={convTraces}
@@ -298,7 +305,9 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
         <p className="al-note">Solid: |estimate − reference|. Dotted: the standard error s/√N the estimator reports. Both fall like N^−½; the strategies differ by a constant.</p>
       </Panel>
       <Panel title="Run time against error">
-        {timing.running ? <progress max={1} value={timing.progress} aria-label="Timing progress" /> : null}
+        <div ref={timingBox} className="al-progress-slot">
+          {timing.running ? <progress max={1} value={timing.progress} aria-label="Timing progress" /> : null}
+        </div>
         {timing.error ? <Notice kind="warn">Timing failed: {timing.error}</Notice> : null}
         <Plot
           ariaLabel="RMSE over independent runs against the run time of one estimate, for the three strategies, log-log."

@@ -4,7 +4,9 @@
  */
 import {
   addressCoord,
+  bilinear,
   bilinearStencil,
+  cellSize,
   bilinearSteps,
   checkerGrid,
   examGrid,
@@ -12,6 +14,7 @@ import {
   gradientGrid,
   gridRange,
   nearestStencil,
+  nodeCoord,
   parseGrid,
   randomGrid,
   reconstructInto,
@@ -26,7 +29,7 @@ import {
 } from '../../core/texture';
 import type { ParamValues } from '../../app/params';
 import { colorInto, normalizeValue } from './colormap';
-import { GRID_TEXT_MAX, type Preset, type TextureSchema } from './params';
+import { GRID_TEXT_MAX, type PathKind, type Preset, type TextureSchema } from './params';
 
 export type TextureParams = ParamValues<TextureSchema>;
 
@@ -235,4 +238,267 @@ export function agreesWithKey(computed: number, printed: { value: number; decima
 /** True when the query is the exam's Q3 (a)/(b): the exam's grid and settings at (0.4, 0.24). */
 export function isExamQuery(src: GridSource, opts: LookupOptions, u: number, v: number): boolean {
   return src.isExam && opts.align === 'corner' && !opts.vflip && u === 0.4 && v === 0.24;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The animation (issue 12): the query point travels a path; everything on screen at position t is
+// a function of the parameters and t computed here.
+
+/** The query's path: a line from a to b, or the circle with a and b as the ends of a diameter. */
+export interface QueryPath {
+  kind: PathKind;
+  a: readonly [number, number];
+  b: readonly [number, number];
+}
+
+export function pathOf(p: Pick<TextureParams, 'u' | 'v' | 'u2' | 'v2' | 'path'>): QueryPath {
+  return { kind: p.path === 'circle' ? 'circle' : 'line', a: [p.u, p.v], b: [p.u2, p.v2] };
+}
+
+/**
+ * The query (u, v) at position t ∈ [0, 1] of the path (t outside is clamped; NaN → 0). Line:
+ * a + t (b − a), at constant speed. Circle: starts at a, runs once counter-clockwise (u right, v
+ * up) round the centre (a + b)/2 at constant speed and is back at a for t = 1. t = 0 gives a
+ * exactly (so the opening state is the exam's query), and t = 1 gives b (line) or a (circle).
+ */
+export function pathPoint(path: QueryPath, t: number): { u: number; v: number } {
+  const s = Number.isFinite(t) ? Math.min(1, Math.max(0, t)) : 0;
+  const [au, av] = path.a;
+  const [bu, bv] = path.b;
+  if (s === 0) return { u: au, v: av };
+  if (path.kind === 'line') {
+    if (s === 1) return { u: bu, v: bv };
+    return { u: au + s * (bu - au), v: av + s * (bv - av) };
+  }
+  if (s === 1) return { u: au, v: av };
+  const cu = (au + bu) / 2;
+  const cv = (av + bv) / 2;
+  const r = Math.hypot(au - cu, av - cv);
+  const a0 = Math.atan2(av - cv, au - cu);
+  const ang = a0 + 2 * Math.PI * s;
+  return { u: cu + r * Math.cos(ang), v: cv + r * Math.sin(ang) };
+}
+
+/** Length of the path in (u, v) units. */
+export function pathLength(path: QueryPath): number {
+  const d = Math.hypot(path.b[0] - path.a[0], path.b[1] - path.a[1]);
+  return path.kind === 'line' ? d : Math.PI * d;
+}
+
+/** A place on the path where the bilinear cell (or the addressing branch) changes. */
+export interface CellBorder {
+  t: number;
+  /** The value jumps there (possible only through addressing, e.g. repeat across the edge). */
+  jump: boolean;
+  /** The slope along the path changes there (a kink; never inside a cell). */
+  kink: boolean;
+}
+
+/** The looked-up values along the whole path (for the plot under the grid). */
+export interface PathProfile {
+  /** Bilinear values as a polyline (t ascending; samples plus both sides of every border). */
+  ts: number[];
+  bil: number[];
+  /** Indices k where the polyline breaks between k − 1 and k (a jump). */
+  breaks: number[];
+  /** Nearest as a step function: constant pieces [t0, t1). */
+  near: { t0: number; t1: number; value: number }[];
+  borders: CellBorder[];
+  /** Where the nearest node changes (the steps). */
+  nearSwitches: number[];
+  min: number;
+  max: number;
+}
+
+/** Which copy of [0, 1] a coordinate is in for addressing: 0 inside (0 and 1 included), else ⌊t⌋. */
+function region(t: number): number {
+  return t >= 0 && t <= 1 ? 0 : Math.floor(t);
+}
+
+function bilKey(grid: TextureGrid, u: number, v: number, opts: LookupOptions): string {
+  const b = bilinearStencil(grid, u, v, opts);
+  const vv = opts.vflip ? 1 - v : v;
+  return `${b.i0},${b.i1},${b.j0},${b.j1},${region(u)},${region(vv)}`;
+}
+function nearKey(grid: TextureGrid, u: number, v: number, opts: LookupOptions): string {
+  const n = nearestStencil(grid, u, v, opts);
+  return `${n.i},${n.j}`;
+}
+
+/** All t in (lo, hi] where key changes, each as a bracket [l, h] with h − l ≤ 1e-12 (bisection). */
+function findChanges(key: (t: number) => string, lo: number, hi: number, kLo: string, kHi: string, out: [number, number][], depth = 0): void {
+  if (kLo === kHi || depth > 64) return;
+  let l = lo;
+  let h = hi;
+  while (h - l > 1e-12) {
+    const m = (l + h) / 2;
+    if (m <= l || m >= h) break;
+    if (key(m) === kLo) l = m;
+    else h = m;
+  }
+  out.push([l, h]);
+  // more than one change inside (lo, hi]: continue from the first one
+  if (h < hi) findChanges(key, h, hi, key(h), kHi, out, depth + 1);
+}
+
+/**
+ * The nearest and bilinear values along the path, sampled at `samples` + 1 evenly spaced t and at
+ * both sides of every cell border (found by bisection), with each border classified: a kink where
+ * the slope along the path changes, a jump where the value does. Inside one cell bilinear is a
+ * smooth function of t (a quadratic along a line), so kinks can only sit at cell borders.
+ */
+export function pathProfile(grid: TextureGrid, opts: LookupOptions, path: QueryPath, samples = 400): PathProfile {
+  const at = (t: number) => pathPoint(path, t);
+  const bilAt = (t: number) => {
+    const p = at(t);
+    return bilinear(grid, p.u, p.v, opts);
+  };
+  const bk = (t: number) => {
+    const p = at(t);
+    return bilKey(grid, p.u, p.v, opts);
+  };
+  const nk = (t: number) => {
+    const p = at(t);
+    return nearKey(grid, p.u, p.v, opts);
+  };
+  const bEvents: [number, number][] = [];
+  const nEvents: [number, number][] = [];
+  let pb = bk(0);
+  let pn = nk(0);
+  for (let k = 1; k <= samples; k++) {
+    const t0 = (k - 1) / samples;
+    const t1 = k / samples;
+    const b = bk(t1);
+    const n = nk(t1);
+    findChanges(bk, t0, t1, pb, b, bEvents);
+    findChanges(nk, t0, t1, pn, n, nEvents);
+    pb = b;
+    pn = n;
+  }
+  const range = gridRange(grid);
+  const scale = Math.max(1, Math.abs(range.max), Math.abs(range.min), range.max - range.min);
+  const borders: CellBorder[] = bEvents.map(([l, r], i) => {
+    const fl = bilAt(l);
+    const fr = bilAt(r);
+    const jump = Math.abs(fl - fr) > 1e-9 * scale;
+    // room on each side before the neighbouring border, so the slopes are taken inside one cell
+    const roomL = l - (i > 0 ? bEvents[i - 1][1] : 0);
+    const roomR = (i + 1 < bEvents.length ? bEvents[i + 1][0] : 1) - r;
+    const h = Math.min(1e-4, roomL / 3, roomR / 3);
+    let kink = false;
+    if (!jump && h > 1e-9) {
+      // second-order one-sided slopes (exact for the quadratic a line traces inside a cell)
+      const sl = (3 * fl - 4 * bilAt(l - h) + bilAt(l - 2 * h)) / (2 * h);
+      const sr = (-3 * fr + 4 * bilAt(r + h) - bilAt(r + 2 * h)) / (2 * h);
+      kink = Math.abs(sl - sr) > 1e-6 * scale;
+    }
+    return { t: (l + r) / 2, jump, kink };
+  });
+  // bilinear polyline: samples plus both sides of each border
+  const pts: { t: number; brk: boolean }[] = [];
+  for (let k = 0; k <= samples; k++) pts.push({ t: k / samples, brk: false });
+  bEvents.forEach(([l, r], i) => {
+    pts.push({ t: l, brk: false });
+    pts.push({ t: r, brk: borders[i].jump });
+  });
+  pts.sort((x, y) => x.t - y.t);
+  const ts: number[] = [];
+  const bil: number[] = [];
+  const breaks: number[] = [];
+  let min = Infinity;
+  let max = -Infinity;
+  for (const p of pts) {
+    if (ts.length && p.t === ts[ts.length - 1]) continue;
+    if (p.brk) breaks.push(ts.length);
+    const y = bilAt(p.t);
+    ts.push(p.t);
+    bil.push(y);
+    if (y < min) min = y;
+    if (y > max) max = y;
+  }
+  // nearest: constant between switches
+  const cuts = [0, ...nEvents.map(([l, r]) => (l + r) / 2), 1];
+  const near: PathProfile['near'] = [];
+  for (let k = 0; k + 1 < cuts.length; k++) {
+    const t0 = cuts[k];
+    const t1 = cuts[k + 1];
+    const p = at((t0 + t1) / 2);
+    const value = nearestStencil(grid, p.u, p.v, opts).value;
+    near.push({ t0, t1, value });
+    if (value < min) min = value;
+    if (value > max) max = value;
+  }
+  return { ts, bil, breaks, near, borders, nearSwitches: cuts.slice(1, -1), min, max };
+}
+
+/** Everything the animated part of the scene shows at position t (a pure function of its inputs). */
+export interface Frame {
+  t: number;
+  u: number;
+  v: number;
+  lookup: Lookup;
+}
+
+export function frameAt(grid: TextureGrid, opts: LookupOptions, path: QueryPath, t: number): Frame {
+  const p = pathPoint(path, t);
+  return { t, u: p.u, v: p.v, lookup: lookupAt(grid, p.u, p.v, opts) };
+}
+
+/** A crease of the bilinear reconstruction: a piece of a node line across which the slope jumps. */
+export interface Crease {
+  /** 'u': the line u = const (slope in u jumps); 'v': the line v = const. In the texture frame. */
+  axis: 'u' | 'v';
+  at: number;
+  from: number;
+  to: number;
+}
+
+/**
+ * Where the bilinear reconstruction over [0, 1]² (texture frame, no flip) has creases: pieces of
+ * node lines across which the slope perpendicular to the line jumps. Bilinear is linear along u
+ * between node lines, so the jump across the line u = uᵢ is the second difference of the values
+ * (over Δ), interpolated linearly between rows: a grid whose values continue linearly across a
+ * node line (the exam's 21 − 5j + i everywhere) has no crease there.
+ */
+export function creases(grid: TextureGrid, opts: LookupOptions): { list: Crease[]; lines: number; creased: number } {
+  const o = { ...opts, vflip: false };
+  const range = gridRange(grid);
+  const scale = Math.max(1, Math.abs(range.max), Math.abs(range.min), range.max - range.min);
+  const list: Crease[] = [];
+  let lines = 0;
+  let creased = 0;
+  for (const axis of ['u', 'v'] as const) {
+    const n = axis === 'u' ? grid.width : grid.height; // node lines across this axis
+    const m = axis === 'u' ? grid.height : grid.width; // nodes along the line
+    const d = cellSize(n, o.align);
+    const h = d / 64;
+    const along = [0, ...Array.from({ length: m }, (_, k) => nodeCoord(k, m, o.align)).filter((x) => x > 0 && x < 1), 1];
+    const first = o.align === 'corner' ? 1 : 0;
+    const last = o.align === 'corner' ? n - 2 : n - 1;
+    for (let k = first; k <= last; k++) {
+      const c = nodeCoord(k, n, o.align);
+      if (c - 2 * h < 0 || c + 2 * h > 1) continue;
+      lines++;
+      const f = (x: number, y: number) => (axis === 'u' ? bilinear(grid, x, y, o) : bilinear(grid, y, x, o));
+      const jumpAt = (y: number) => {
+        const f0 = f(c, y);
+        const sl = (3 * f0 - 4 * f(c - h, y) + f(c - 2 * h, y)) / (2 * h);
+        const sr = (-3 * f0 + 4 * f(c + h, y) - f(c + 2 * h, y)) / (2 * h);
+        return Math.abs(sl - sr) > 1e-7 * (scale / d);
+      };
+      let any = false;
+      for (let s = 0; s + 1 < along.length; s++) {
+        const y0 = along[s];
+        const y1 = along[s + 1];
+        if (jumpAt(y0 + (y1 - y0) / 3) || jumpAt(y0 + (2 * (y1 - y0)) / 3)) {
+          any = true;
+          const prev = list[list.length - 1];
+          if (prev && prev.axis === axis && prev.at === c && prev.to === y0) prev.to = y1;
+          else list.push({ axis, at: c, from: y0, to: y1 });
+        }
+      }
+      if (any) creased++;
+    }
+  }
+  return { list, lines, creased };
 }

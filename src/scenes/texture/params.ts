@@ -8,9 +8,13 @@
  */
 import type { ParamSchema } from '../../app/params';
 import { EXAM_GRID_TEXT } from '../../core/texture';
+import { timelineParams } from '../../ui/timeline';
 
 /** Longest `grid` text the shell will accept in a URL (its MAX_RAW_LENGTH). */
 export const GRID_TEXT_MAX = 4000;
+
+export const PATHS = ['line', 'circle'] as const;
+export type PathKind = (typeof PATHS)[number];
 
 export const PRESETS = ['grid', 'checker', 'gradient', 'random'] as const;
 export type Preset = (typeof PRESETS)[number];
@@ -29,6 +33,12 @@ export const schema = {
   preset: { kind: 'enum', default: 'grid', values: PRESETS, aliases: { exam: 'grid', custom: 'grid', checkerboard: 'checker' } },
   size: { kind: 'number', default: 8, min: 2, max: 64, integer: true },
   seed: { kind: 'number', default: 1, min: 0, max: 4294967295, integer: true },
+  // the animation (issue 12): the query travels from (u, v) to (u2, v2) on a line, or round the
+  // circle that has them as the ends of a diameter; t ∈ [0, 1] is the position on the path
+  path: { kind: 'enum', default: 'line', values: PATHS, label: 'query path' },
+  u2: { kind: 'number', default: 0.85, min: -4, max: 4, label: 'path end u' },
+  v2: { kind: 'number', default: 0.8, min: -4, max: 4, label: 'path end v' },
+  ...timelineParams({ max: 1 }),
 } as const satisfies ParamSchema;
 
 export type TextureSchema = typeof schema;

@@ -5,7 +5,7 @@
  */
 import { useEffect, useRef } from 'react';
 import { useWorkerJob } from '../../../workers';
-import { Readout } from '../../../ui';
+import { Readout, useSeenOnce } from '../../../ui';
 import { STRATEGIES, STRATEGY_LABEL, type FloorJob } from '../model';
 import type { FloorFrame } from '../jobs';
 
@@ -35,8 +35,11 @@ function paint(canvas: HTMLCanvasElement | null, img: Float32Array | undefined, 
 }
 
 export function FloorImages({ job }: { job: FloorJob }) {
-  // Restarts when the scene changes (debounced so dragging a slider does not queue renders).
-  const task = useWorkerJob<FloorFrame, FloorFrame>(makeWorker, 'render', job, { delayMs: 250 });
+  // Starts when the images come near the screen (not on load), and restarts when the scene changes
+  // (debounced so dragging a slider does not queue renders).
+  const box = useRef<HTMLDivElement>(null);
+  const seen = useSeenOnce(box);
+  const task = useWorkerJob<FloorFrame, FloorFrame>(makeWorker, 'render', job, { delayMs: 250, enabled: seen });
   const refs = useRef<(HTMLCanvasElement | null)[]>([]);
 
   const fr = task.result ?? task.partial;
@@ -51,7 +54,7 @@ export function FloorImages({ job }: { job: FloorJob }) {
 
   const labels = ['reference (Lambert’s formula)', ...STRATEGIES.map((s) => STRATEGY_LABEL[s])];
   return (
-    <div className="al-images">
+    <div className="al-images" ref={box}>
       <div className="al-progress" aria-live="polite">
         {task.error ? (
           <span className="field-error">Rendering failed: {task.error}</span>

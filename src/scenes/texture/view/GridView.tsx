@@ -1,19 +1,25 @@
 /**
- * The texel grid with the query point. Three layers, so dragging stays cheap:
+ * The texel grid with the query point and its path. Layers, so dragging and playing stay cheap:
  * 1. a canvas with the nearest-neighbour regions coloured by value (redrawn only when the grid or
  *    the conventions change),
- * 2. a memoized SVG layer with the nodes, their values, the node lines and the axes,
- * 3. a small SVG layer with the query marker, the nearest node and the bilinear stencil — the only
- *    part that re-renders per pointer event.
+ * 2. memoized SVG layers with the nodes, node lines and axes (below the stencil) and the value
+ *    labels (above it, so the nearest-node highlight never covers a value),
+ * 3. a small SVG layer with the nearest node and the bilinear stencil, and the query marker — the
+ *    only parts that re-render per pointer event or animation frame,
+ * 4. the path (line or circle) with its two draggable ends.
  * Everything is drawn in the texture's own frame (u right, v′ up; v′ = 1 − v when flipped) with the
  * query brought into [0, 1]² by the wrap mode (an equivalent point: the lookup there is the same).
  */
-import { memo, useEffect, useMemo, useRef, type KeyboardEvent, type PointerEvent } from 'react';
+import { memo, useEffect, useLayoutEffect, useMemo, useRef, useState, type KeyboardEvent, type PointerEvent } from 'react';
 import { nodeCoord, type LookupOptions, type TextureGrid } from '../../../core/texture';
 import { colorCss, darkTextOn, normalizeValue } from '../colormap';
-import { textureImage, type Lookup } from '../model';
+import { pathPoint, textureImage, type Lookup, type QueryPath } from '../model';
 
 const VB = 1000; // viewBox size of the plotted window
+/** Smallest on-screen size of any text in the figure, in CSS pixels (issue 11: ≥ 12 px on phones). */
+const MIN_TEXT_PX = 12.5;
+/** Radius of a handle's hit area in CSS pixels (a ≥ 24 px target on touch screens). */
+const HANDLE_HIT_PX = 20;
 
 export interface ViewWindow {
   min: number;
@@ -27,29 +33,59 @@ export function viewWindow(grid: TextureGrid, opts: LookupOptions): ViewWindow {
   return { min: -m, max: 1 + m };
 }
 
+/** Which thing a pointer or key moves: the path's start (u, v), its end (u2, v2), or the query itself. */
+export type Grab = 'a' | 'b' | 'query';
+
 interface Props {
   grid: TextureGrid;
   opts: LookupOptions;
   range: { min: number; max: number };
   /** The lookup drawn (from {@link drawnLookup}). */
   q: Lookup;
-  /** Called with texture-frame (u, v′) in [0, 1]²; final = pointer released / key pressed. */
-  onMove: (u: number, vt: number, final: boolean) => void;
+  /** The query's path in the user's (u, v) (drawn in the texture frame). */
+  path: QueryPath;
+  /**
+   * Called with texture-frame (u, v′) in [0, 1]²; final = pointer released / key pressed. `grab`:
+   * 'b' moves the path's end, 'a' its start (the animation keeps its position), 'query' puts the
+   * query there (the scene rewinds the animation to t = 0, where the query is the start).
+   */
+  onMove: (grab: Grab, u: number, vt: number, final: boolean) => void;
   editing: boolean;
   selected: { i: number; j: number } | null;
   onSelect: (i: number, j: number) => void;
+  /** Enter on the grid while editing: go to the value field. */
+  onEditEnter: () => void;
   present: boolean;
 }
 
-export function GridView({ grid, opts, range, q, onMove, editing, selected, onSelect, present }: Props) {
+export function GridView({ grid, opts, range, q, path, onMove, editing, selected, onSelect, onEditEnter, present }: Props) {
   const win = useMemo(() => viewWindow(grid, opts), [grid, opts]);
   const svgRef = useRef<SVGSVGElement>(null);
-  const dragging = useRef(false);
+  const dragging = useRef<Grab | null>(null);
   const pending = useRef<{ u: number; v: number } | null>(null);
   const raf = useRef(0);
   const moveRef = useRef(onMove);
   moveRef.current = onMove;
   useEffect(() => () => cancelAnimationFrame(raf.current), []);
+  // viewBox units per CSS pixel, so text and handles keep a minimum on-screen size
+  const [unitsPerPx, setUnitsPerPx] = useState(VB / 520);
+  useLayoutEffect(() => {
+    const el = svgRef.current;
+    if (!el) return;
+    const measure = () => {
+      const w = el.getBoundingClientRect().width;
+      if (w > 0) setUnitsPerPx((prev) => (Math.abs(prev - VB / w) > 1e-3 ? VB / w : prev));
+    };
+    measure();
+    if (typeof ResizeObserver === 'undefined') return;
+    const ro = new ResizeObserver(measure);
+    ro.observe(el);
+    return () => ro.disconnect();
+  }, []);
+
+  const flip = (v: number) => (opts.vflip ? 1 - v : v);
+  const aT = { u: path.a[0], v: flip(path.a[1]) };
+  const bT = { u: path.b[0], v: flip(path.b[1]) };
 
   const toUV = (e: PointerEvent<SVGSVGElement>) => {
     const r = svgRef.current!.getBoundingClientRect();
@@ -57,7 +93,7 @@ export function GridView({ grid, opts, range, q, onMove, editing, selected, onSe
     const fy = (e.clientY - r.top) / r.height;
     const span = win.max - win.min;
     const clamp01 = (t: number) => Math.min(1, Math.max(0, t));
-    return { u: round4(clamp01(win.min + fx * span)), v: round4(clamp01(win.max - fy * span)) };
+    return { u: round4(clamp01(win.min + fx * span)), v: round4(clamp01(win.max - fy * span)), x: fx * VB, y: fy * VB };
   };
 
   const nodeAt = (u: number, v: number) => {
@@ -73,9 +109,12 @@ export function GridView({ grid, opts, range, q, onMove, editing, selected, onSe
       onSelect(n.i, n.j);
       return;
     }
+    const hit = HANDLE_HIT_PX * unitsPerPx;
+    const near = (h: { u: number; v: number }) => Math.hypot(sx(h.u, win) - p.x, sy(h.v, win) - p.y) <= hit;
+    const grab: Grab = near(bT) ? 'b' : near(aT) ? 'a' : 'query';
     e.currentTarget.setPointerCapture(e.pointerId);
-    dragging.current = true;
-    moveRef.current(p.u, p.v, false);
+    dragging.current = grab;
+    moveRef.current(grab, p.u, p.v, false);
   };
   const onPointerMove = (e: PointerEvent<SVGSVGElement>) => {
     if (!dragging.current) return;
@@ -84,30 +123,54 @@ export function GridView({ grid, opts, range, q, onMove, editing, selected, onSe
       raf.current = requestAnimationFrame(() => {
         raf.current = 0;
         const p = pending.current;
-        if (p) moveRef.current(p.u, p.v, false);
+        if (p && dragging.current) moveRef.current(dragging.current, p.u, p.v, false);
       });
     }
   };
   const end = (e: PointerEvent<SVGSVGElement>) => {
-    if (!dragging.current) return;
-    dragging.current = false;
+    const grab = dragging.current;
+    if (!grab) return;
+    dragging.current = null;
     cancelAnimationFrame(raf.current);
     raf.current = 0;
     const p = pending.current ?? toUV(e);
     pending.current = null;
-    moveRef.current(p.u, p.v, true);
+    moveRef.current(grab, p.u, p.v, true);
   };
-  const onKeyDown = (e: KeyboardEvent<SVGSVGElement>) => {
+  const arrow = (e: KeyboardEvent, from: { u: number; v: number }, grab: Grab) => {
     const step = e.shiftKey ? 0.1 : 0.01;
-    let { u, v } = q.bil;
+    let { u, v } = from;
     if (e.key === 'ArrowLeft') u -= step;
     else if (e.key === 'ArrowRight') u += step;
     else if (e.key === 'ArrowUp') v += step;
     else if (e.key === 'ArrowDown') v -= step;
     else return;
     e.preventDefault();
-    moveRef.current(round4(Math.min(1, Math.max(0, u))), round4(Math.min(1, Math.max(0, v))), true);
+    e.stopPropagation();
+    moveRef.current(grab, round4(Math.min(1, Math.max(0, u))), round4(Math.min(1, Math.max(0, v))), true);
   };
+  const onKeyDown = (e: KeyboardEvent<SVGSVGElement>) => {
+    if (e.target !== e.currentTarget) return; // the end handle has its own keys
+    if (editing) {
+      const cur = selected ?? { i: q.near.i, j: q.near.j };
+      let { i, j } = cur;
+      if (e.key === 'ArrowLeft') i--;
+      else if (e.key === 'ArrowRight') i++;
+      else if (e.key === 'ArrowUp') j++;
+      else if (e.key === 'ArrowDown') j--;
+      else if (e.key === 'Enter') {
+        e.preventDefault();
+        if (!selected) onSelect(i, j);
+        onEditEnter();
+        return;
+      } else return;
+      e.preventDefault();
+      onSelect(Math.min(grid.width - 1, Math.max(0, i)), Math.min(grid.height - 1, Math.max(0, j)));
+      return;
+    }
+    arrow(e, q.bil, 'query');
+  };
+  const bIn = inWindow(bT, win);
 
   return (
     <div className={`tx-grid${present ? ' present' : ''}`}>
@@ -118,10 +181,11 @@ export function GridView({ grid, opts, range, q, onMove, editing, selected, onSe
           className={`tx-grid-svg${editing ? ' editing' : ''}`}
           viewBox={`0 0 ${VB} ${VB}`}
           role="application"
+          aria-roledescription="texel grid"
           aria-label={
             editing
-              ? 'Texel grid: click a node to edit its value'
-              : 'Texel grid: click or drag to move the query point; arrow keys move it by 0.01 (Shift: 0.1)'
+              ? `Texel grid, editing: arrow keys choose a node${selected ? ` (now column ${selected.i}, row ${selected.j})` : ''}, Enter goes to its value; or click a node`
+              : `Texel grid: the query point is at (${fmtShort(q.bil.u)}, ${fmtShort(q.bil.v)}). Arrow keys move it by 0.01 (Shift: 0.1), back at the start of its path; click or drag to move it; drag the square to move the path's end`
           }
           tabIndex={0}
           data-testid="texel-grid"
@@ -131,33 +195,81 @@ export function GridView({ grid, opts, range, q, onMove, editing, selected, onSe
           onPointerCancel={end}
           onKeyDown={onKeyDown}
         >
-          <StaticLayer grid={grid} opts={opts} range={range} win={win} present={present} />
-          <QueryLayer grid={grid} opts={opts} win={win} q={q} selected={editing ? selected : null} />
+          <StaticLayer grid={grid} opts={opts} range={range} win={win} unitsPerPx={unitsPerPx} />
+          <QueryLayer grid={grid} win={win} q={q} />
+          <LabelLayer grid={grid} opts={opts} range={range} win={win} present={present} unitsPerPx={unitsPerPx} />
+          <PathLayer path={path} vflip={opts.vflip} win={win} />
+          <g className="tx-query" transform={`translate(${sx(q.bil.u, win)} ${sy(q.bil.v, win)})`} data-testid="query-marker">
+            <circle r={11} />
+            <line x1={-22} x2={22} y1={0} y2={0} />
+            <line y1={-22} y2={22} x1={0} x2={0} />
+          </g>
+          {inWindow(aT, win) ? (
+            <g className="tx-handle a" transform={`translate(${sx(aT.u, win)} ${sy(aT.v, win)})`} aria-hidden="true">
+              <circle className="tx-handle-focus" r={Math.max(30, 16 * unitsPerPx)} />
+              <circle className="tx-handle-mark" r={Math.max(14, 7 * unitsPerPx)} />
+            </g>
+          ) : null}
+          {bIn ? (
+            <g
+              className="tx-handle b"
+              transform={`translate(${sx(bT.u, win)} ${sy(bT.v, win)})`}
+              tabIndex={editing ? -1 : 0}
+              role="application"
+              aria-roledescription="draggable point"
+              aria-label={`End of the query's path at (u, v) = (${fmtShort(path.b[0])}, ${fmtShort(path.b[1])}): arrow keys move it by 0.01 (Shift: 0.1)`}
+              data-testid="path-end-handle"
+              onKeyDown={(e) => arrow(e, bT, 'b')}
+            >
+              <circle className="tx-handle-hit" r={HANDLE_HIT_PX * unitsPerPx} />
+              <circle className="tx-handle-focus" r={Math.max(30, 16 * unitsPerPx)} />
+              <rect className="tx-handle-mark" x={-Math.max(13, 7 * unitsPerPx)} y={-Math.max(13, 7 * unitsPerPx)} width={2 * Math.max(13, 7 * unitsPerPx)} height={2 * Math.max(13, 7 * unitsPerPx)} />
+            </g>
+          ) : null}
+          {editing && selected ? (
+            <circle
+              cx={sx(nodeCoord(selected.i, grid.width, opts.align), win)}
+              cy={sy(nodeCoord(selected.j, grid.height, opts.align), win)}
+              r={Math.max(6, Math.min(22, (VB / Math.max(grid.width, grid.height)) * 0.22)) + 10}
+              className="tx-selected"
+            />
+          ) : null}
         </svg>
       </div>
-      <div className="tx-closeup-row">
-        <CellCloseUp q={q} />
-        <ul className="tx-taps" aria-label="The four bilinear taps and their weights">
-          {(
-            [
-              ['w00', q.bil.i0, q.bil.j0, q.bil.t00, q.bil.w00],
-              ['w10', q.bil.i1, q.bil.j0, q.bil.t10, q.bil.w10],
-              ['w01', q.bil.i0, q.bil.j1, q.bil.t01, q.bil.w01],
-              ['w11', q.bil.i1, q.bil.j1, q.bil.t11, q.bil.w11],
-            ] as const
-          ).map(([cls, i, j, t, w]) => (
-            <li key={cls}>
-              <span className={`tx-chip ${cls}`} />
-              T<sub>{i},{j}</sub>={fmtShort(t)}, w={fmtShort(w)}
-            </li>
-          ))}
-        </ul>
-      </div>
       <div className="tx-axis-note">
-        u → right, {opts.vflip ? 'v′ = 1 − v' : 'v'} → up · {opts.align === 'corner' ? 'nodes at i/(N − 1)' : 'texel centres at (i + ½)/N'}
+        u → right, {opts.vflip ? 'v′ = 1 − v' : 'v'} → up · {opts.align === 'corner' ? 'nodes at i/(N − 1)' : 'texel centres at (i + ½)/N'} · ○ start (u, v) · □ end (u₂,
+        v₂)
       </div>
     </div>
   );
+}
+
+/** The four taps with their values and weights, and the magnified cell (follows the query). */
+export function StencilDetail({ q }: { q: Lookup }) {
+  return (
+    <div className="tx-closeup-row">
+      <CellCloseUp q={q} />
+      <ul className="tx-taps" aria-label="The four bilinear taps and their weights" data-testid="taps">
+        {(
+          [
+            ['w00', q.bil.i0, q.bil.j0, q.bil.t00, q.bil.w00],
+            ['w10', q.bil.i1, q.bil.j0, q.bil.t10, q.bil.w10],
+            ['w01', q.bil.i0, q.bil.j1, q.bil.t01, q.bil.w01],
+            ['w11', q.bil.i1, q.bil.j1, q.bil.t11, q.bil.w11],
+          ] as const
+        ).map(([cls, i, j, t, w]) => (
+          <li key={cls} data-testid={`tap-${cls}`} data-weight={String(w)}>
+            <span className={`tx-chip ${cls}`} />
+            T<sub>{i},{j}</sub>={fmtShort(t)}, w={fmtShort(w)}
+          </li>
+        ))}
+      </ul>
+    </div>
+  );
+}
+
+function inWindow(p: { u: number; v: number }, win: ViewWindow): boolean {
+  return p.u >= win.min && p.u <= win.max && p.v >= win.min && p.v <= win.max;
 }
 
 function round4(x: number): number {
@@ -193,20 +305,18 @@ const StaticLayer = memo(function StaticLayer({
   opts,
   range,
   win,
-  present,
+  unitsPerPx,
 }: {
   grid: TextureGrid;
   opts: LookupOptions;
   range: { min: number; max: number };
   win: ViewWindow;
-  present: boolean;
+  unitsPerPx: number;
 }) {
   const W = grid.width;
   const H = grid.height;
   const nmax = Math.max(W, H);
-  const showLabels = nmax <= 16;
   const showDots = nmax <= 32;
-  const fontSize = Math.min(present ? 44 : 38, (VB / (nmax + 0.5)) * 0.34);
   const items: React.ReactNode[] = [];
   // node lines (the bilinear cells' edges run through the nodes)
   if (nmax <= 32) {
@@ -224,16 +334,8 @@ const StaticLayer = memo(function StaticLayer({
       for (let i = 0; i < W; i++) {
         const x = sx(nodeCoord(i, W, opts.align), win);
         const y = sy(nodeCoord(j, H, opts.align), win);
-        const val = grid.values[j * W + i];
-        const t = normalizeValue(val, range.min, range.max);
-        items.push(<circle key={`d${i}-${j}`} cx={x} cy={y} r={showLabels ? 5 : 3} className={darkTextOn(t) ? 'tx-dot dark' : 'tx-dot'} />);
-        if (showLabels) {
-          items.push(
-            <text key={`t${i}-${j}`} x={x + 8} y={y - 8} fontSize={fontSize} className={darkTextOn(t) ? 'tx-val dark' : 'tx-val'}>
-              {fmtShort(val)}
-            </text>,
-          );
-        }
+        const t = normalizeValue(grid.values[j * W + i], range.min, range.max);
+        items.push(<circle key={`d${i}-${j}`} cx={x} cy={y} r={nmax <= 16 ? 5 : 3} className={darkTextOn(t) ? 'tx-dot dark' : 'tx-dot'} />);
       }
     }
   }
@@ -242,20 +344,26 @@ const StaticLayer = memo(function StaticLayer({
   const x1 = sx(1, win);
   const y0 = sy(1, win);
   const y1 = sy(0, win);
-  const ticks = nmax <= 8 ? Array.from({ length: W }, (_, i) => nodeCoord(i, W, opts.align)) : [0, 0.5, 1];
-  const vticks = nmax <= 8 ? Array.from({ length: H }, (_, j) => nodeCoord(j, H, opts.align)) : [0, 0.5, 1];
+  const tickFont = Math.max(28, MIN_TEXT_PX * unitsPerPx);
+  // ticks at the nodes while they fit (a label is about 2.2 em wide), else 0, ½, 1
+  const fits = (n: number) => n <= 5 && (VB / (win.max - win.min)) / Math.max(1, n - 1) > tickFont * 2.4;
+  const ticks = fits(W) ? Array.from({ length: W }, (_, i) => nodeCoord(i, W, opts.align)) : [0, 0.5, 1];
+  // v ticks sit in the left margin: keep those whose text fits there (monospace ≈ 0.62 em a digit)
+  const vticks = (fits(H) ? Array.from({ length: H }, (_, j) => nodeCoord(j, H, opts.align)) : [0, 0.5, 1]).filter(
+    (t) => 0.62 * tickFont * String(Number(t.toPrecision(3))).length + 4 <= x0 + 4,
+  );
   return (
     <g>
       <path d={`M0 0H${VB}V${VB}H0Z M${x0} ${y0}V${y1}H${x1}V${y0}Z`} className="tx-outside" fillRule="evenodd" />
       {items}
       <rect x={x0} y={y0} width={x1 - x0} height={y1 - y0} className="tx-frame" />
       {ticks.map((t) => (
-        <text key={`ut${t}`} x={sx(t, win)} y={VB - 8} className="tx-tick" textAnchor="middle" fontSize={28}>
+        <text key={`ut${t}`} x={sx(t, win)} y={VB - 6} className="tx-tick" textAnchor="middle" fontSize={tickFont}>
           {Number(t.toPrecision(3))}
         </text>
       ))}
       {vticks.map((t) => (
-        <text key={`vt${t}`} x={4} y={sy(t, win) + 8} className="tx-tick" fontSize={28}>
+        <text key={`vt${t}`} x={4} y={sy(t, win) + tickFont * 0.35} className="tx-tick" fontSize={tickFont}>
           {Number(t.toPrecision(3))}
         </text>
       ))}
@@ -263,22 +371,70 @@ const StaticLayer = memo(function StaticLayer({
   );
 });
 
-const TAP_CLASS = ['w00', 'w10', 'w01', 'w11'];
-
-/** The query marker, the nearest node and the bilinear stencil with its weight rectangles. */
-const QueryLayer = memo(function QueryLayer({
+/**
+ * The node values, above the stencil and the nearest-node highlight so neither covers them. Each
+ * label has a solid halo of the opposite colour, so it keeps its contrast on every cell colour and
+ * on the dimmed border; labels are left out when they would be smaller than 12 px on screen.
+ */
+const LabelLayer = memo(function LabelLayer({
   grid,
   opts,
+  range,
   win,
-  q,
-  selected,
+  present,
+  unitsPerPx,
 }: {
   grid: TextureGrid;
   opts: LookupOptions;
+  range: { min: number; max: number };
   win: ViewWindow;
-  q: Lookup;
-  selected: { i: number; j: number } | null;
+  present: boolean;
+  unitsPerPx: number;
 }) {
+  const W = grid.width;
+  const H = grid.height;
+  const nmax = Math.max(W, H);
+  const fontSize = Math.min(present ? 44 : 38, (VB / (nmax + 0.5)) * 0.34);
+  if (nmax > 16 || fontSize / unitsPerPx < 12) return null;
+  const items: React.ReactNode[] = [];
+  for (let j = 0; j < H; j++) {
+    for (let i = 0; i < W; i++) {
+      const x = sx(nodeCoord(i, W, opts.align), win);
+      const y = sy(nodeCoord(j, H, opts.align), win);
+      const val = grid.values[j * W + i];
+      const t = normalizeValue(val, range.min, range.max);
+      items.push(
+        <text key={`t${i}-${j}`} x={x + 8} y={y - 8} fontSize={fontSize} className={darkTextOn(t) ? 'tx-val dark' : 'tx-val'} data-testid="node-label">
+          {fmtShort(val)}
+        </text>,
+      );
+    }
+  }
+  return <g className="tx-labels">{items}</g>;
+});
+
+/** The query's path (clipped to the plotted window). */
+const PathLayer = memo(function PathLayer({ path, vflip, win }: { path: QueryPath; vflip: boolean; win: ViewWindow }) {
+  const n = path.kind === 'line' ? 1 : 96;
+  const pts: string[] = [];
+  for (let k = 0; k <= n; k++) {
+    const p = pathPoint(path, k / n);
+    pts.push(`${sx(p.u, win).toFixed(1)},${sy(vflip ? 1 - p.v : p.v, win).toFixed(1)}`);
+  }
+  return (
+    <g aria-hidden="true">
+      <clipPath id="tx-window">
+        <rect x={0} y={0} width={VB} height={VB} />
+      </clipPath>
+      <polyline points={pts.join(' ')} className="tx-path" clipPath="url(#tx-window)" />
+    </g>
+  );
+});
+
+const TAP_CLASS = ['w00', 'w10', 'w01', 'w11'];
+
+/** The nearest node and the bilinear stencil with its weight rectangles (below the labels). */
+const QueryLayer = memo(function QueryLayer({ grid, win, q }: { grid: TextureGrid; win: ViewWindow; q: Lookup }) {
   const b = q.bil;
   const X = (u: number) => sx(u, win);
   const Y = (v: number) => sy(v, win);
@@ -286,45 +442,30 @@ const QueryLayer = memo(function QueryLayer({
   const qy = Y(b.v);
   // sub-rectangles: each tap's weight is the area of the sub-rectangle opposite to it
   const rects = [
-    { cls: 'w00', x: qx, y: Y(b.v1), w: X(b.u1) - qx, h: qy - Y(b.v1), weight: b.w00 }, // opposite (u0, v0): upper right
-    { cls: 'w10', x: X(b.u0), y: Y(b.v1), w: qx - X(b.u0), h: qy - Y(b.v1), weight: b.w10 }, // opposite (u1, v0): upper left
-    { cls: 'w01', x: qx, y: qy, w: X(b.u1) - qx, h: Y(b.v0) - qy, weight: b.w01 }, // opposite (u0, v1): lower right
-    { cls: 'w11', x: X(b.u0), y: qy, w: qx - X(b.u0), h: Y(b.v0) - qy, weight: b.w11 }, // opposite (u1, v1): lower left
+    { cls: 'w00', x: qx, y: Y(b.v1), w: X(b.u1) - qx, h: qy - Y(b.v1) }, // opposite (u0, v0): upper right
+    { cls: 'w10', x: X(b.u0), y: Y(b.v1), w: qx - X(b.u0), h: qy - Y(b.v1) }, // opposite (u1, v0): upper left
+    { cls: 'w01', x: qx, y: qy, w: X(b.u1) - qx, h: Y(b.v0) - qy }, // opposite (u0, v1): lower right
+    { cls: 'w11', x: X(b.u0), y: qy, w: qx - X(b.u0), h: Y(b.v0) - qy }, // opposite (u1, v1): lower left
   ];
   const taps = [
-    { u: b.u0, v: b.v0, w: b.w00 },
-    { u: b.u1, v: b.v0, w: b.w10 },
-    { u: b.u0, v: b.v1, w: b.w01 },
-    { u: b.u1, v: b.v1, w: b.w11 },
+    { u: b.u0, v: b.v0 },
+    { u: b.u1, v: b.v0 },
+    { u: b.u0, v: b.v1 },
+    { u: b.u1, v: b.v1 },
   ];
   const n = q.near;
   const nmax = Math.max(grid.width, grid.height);
   const ringR = Math.max(6, Math.min(22, (VB / nmax) * 0.22));
   return (
-    <g>
+    <g data-testid="stencil">
       {rects.map((r) => (
         <rect key={r.cls} x={r.x} y={r.y} width={Math.max(0, r.w)} height={Math.max(0, r.h)} className={`tx-wrect ${r.cls}`} />
       ))}
       <rect x={X(b.u0)} y={Y(b.v1)} width={X(b.u1) - X(b.u0)} height={Y(b.v0) - Y(b.v1)} className="tx-cell" />
       {taps.map((t, k) => (
-        <g key={k}>
-          <circle cx={X(t.u)} cy={Y(t.v)} r={ringR} className={`tx-tap ${TAP_CLASS[k]}`} />
-        </g>
+        <circle key={k} cx={X(t.u)} cy={Y(t.v)} r={ringR} className={`tx-tap ${TAP_CLASS[k]}`} />
       ))}
-      <rect x={X(n.nodeU) - ringR - 6} y={Y(n.nodeV) - ringR - 6} width={2 * ringR + 12} height={2 * ringR + 12} className="tx-nearest" rx={4} />
-      <g className="tx-query" transform={`translate(${qx} ${qy})`}>
-        <circle r={11} />
-        <line x1={-22} x2={22} y1={0} y2={0} />
-        <line y1={-22} y2={22} x1={0} x2={0} />
-      </g>
-      {selected ? (
-        <circle
-          cx={X(nodeCoord(selected.i, grid.width, opts.align))}
-          cy={Y(nodeCoord(selected.j, grid.height, opts.align))}
-          r={ringR + 10}
-          className="tx-selected"
-        />
-      ) : null}
+      <rect x={X(n.nodeU) - ringR - 6} y={Y(n.nodeV) - ringR - 6} width={2 * ringR + 12} height={2 * ringR + 12} className="tx-nearest" rx={4} data-testid="nearest-highlight" />
     </g>
   );
 });
@@ -371,7 +512,7 @@ function CellCloseUp({ q }: { q: Lookup }) {
           <rect x={r.x0} y={r.y0} width={Math.max(0, r.x1 - r.x0)} height={Math.max(0, r.y1 - r.y0)} className={`tx-wrect ${r.cls}`} />
           {r.x1 - r.x0 > 30 && r.y1 - r.y0 > 16 ? (
             <text x={(r.x0 + r.x1) / 2} y={(r.y0 + r.y1) / 2 + 5} textAnchor="middle" className="tx-closeup-w">
-              {fmtShort(r.w)}
+              {String(Number(r.w.toPrecision(3)))}
             </text>
           ) : null}
         </g>

@@ -4,7 +4,8 @@
  */
 import { memo, useEffect, useRef } from 'react';
 import type { Filter, LookupOptions, TextureGrid } from '../../../core/texture';
-import { textureImage } from '../model';
+import { textureImage, type Crease } from '../model';
+import { useSeenOnce } from '../../../ui';
 
 const RES = 256;
 
@@ -20,24 +21,26 @@ const FilterCanvas = memo(function FilterCanvas({
   filter: Filter;
 }) {
   const ref = useRef<HTMLCanvasElement>(null);
+  // Drawn once the figure comes near the screen (RES² lookups per filter: not first-screen work).
+  const seen = useSeenOnce(ref);
   useEffect(() => {
+    if (!seen) return;
     const c = ref.current;
     const g = c?.getContext('2d');
     if (!c || !g) return;
-    c.width = RES;
-    c.height = RES;
     const img = textureImage(grid, { ...opts, vflip: false }, filter, RES, RES, range);
     g.putImageData(new ImageData(img as Uint8ClampedArray<ArrayBuffer>, RES, RES), 0, 0);
-  }, [grid, opts, range, filter]);
-  return <canvas ref={ref} className="tx-recon-canvas" data-testid={`recon-${filter}`} aria-hidden="true" />;
+  }, [seen, grid, opts, range, filter]);
+  return <canvas ref={ref} width={RES} height={RES} className="tx-recon-canvas" data-testid={`recon-${filter}`} aria-hidden="true" />;
 });
 
-export function Reconstruction({
+export const Reconstruction = memo(function Reconstruction({
   grid,
   opts,
   range,
   qu,
   qv,
+  creases,
 }: {
   grid: TextureGrid;
   opts: LookupOptions;
@@ -45,6 +48,8 @@ export function Reconstruction({
   /** The drawn query in the texture frame, [0, 1]². */
   qu: number;
   qv: number;
+  /** Creases of the bilinear image (texture frame), drawn over it. */
+  creases: Crease[];
 }) {
   return (
     <div className="tx-recon">
@@ -53,6 +58,15 @@ export function Reconstruction({
           <div className="tx-recon-box" role="img" aria-label={`The texture reconstructed with ${f} filtering over [0, 1]²`}>
             <FilterCanvas grid={grid} opts={opts} range={range} filter={f} />
             <svg viewBox="0 0 100 100" className="tx-recon-svg" aria-hidden="true">
+              {f === 'bilinear'
+                ? creases.map((c, k) =>
+                    c.axis === 'u' ? (
+                      <line key={k} x1={c.at * 100} x2={c.at * 100} y1={(1 - c.from) * 100} y2={(1 - c.to) * 100} className="tx-crease" />
+                    ) : (
+                      <line key={k} y1={(1 - c.at) * 100} y2={(1 - c.at) * 100} x1={c.from * 100} x2={c.to * 100} className="tx-crease" />
+                    ),
+                  )
+                : null}
               <g className="tx-query small" transform={`translate(${qu * 100} ${(1 - qv) * 100})`}>
                 <circle r={2.2} />
                 <line x1={-5} x2={5} y1={0} y2={0} />
@@ -60,9 +74,9 @@ export function Reconstruction({
               </g>
             </svg>
           </div>
-          <figcaption>{f === 'nearest' ? 'Nearest: piecewise constant, blocky' : 'Bilinear: continuous, piecewise bilinear'}</figcaption>
+          <figcaption>{f === 'nearest' ? 'Nearest: piecewise constant, blocky' : 'Bilinear: continuous; dashed: its creases'}</figcaption>
         </figure>
       ))}
     </div>
   );
-}
+});

@@ -59,32 +59,59 @@ export function bilinearTex(q: Lookup, opts: LookupOptions, uName = 'u', vName =
   ].join(' \\\\[4pt] ');
 }
 
-interface Props {
-  grid: TextureGrid;
-  opts: LookupOptions;
-  q: Lookup;
-  isExamQuery: boolean;
+/**
+ * Display math that may be wider than its column (phones, classroom type): the box scrolls
+ * sideways and, being scrollable, is focusable (keyboard users can scroll it; axe
+ * scrollable-region-focusable).
+ */
+export function WideMath({ tex, label }: { tex: string; label: string }) {
+  return (
+    <div className="tx-math" tabIndex={0} role="group" aria-label={label}>
+      <MathTex display tex={tex} />
+    </div>
+  );
 }
 
-/** Q3 (a) and (b) worked out for the current query. */
-export const QueryWorked = memo(function QueryWorked({ grid, opts, q, isExamQuery }: Props) {
+/** The nearest-neighbour steps (Q3a) for the current query. */
+export const NearestWorked = memo(function NearestWorked({ grid, opts, q }: { grid: TextureGrid; opts: LookupOptions; q: Lookup }) {
+  return (
+    <div className="tx-worked" data-testid="worked-nearest">
+      <p className="tx-small">
+        The nodes sit at u = i/(N − 1), v = j/(N − 1) (corner nodes, the exam’s) or at the texel centres (i + ½)/N; nearest-neighbour lookup takes the value
+        of the node closest to the query{opts.align === 'center' ? ' (the texel whose square holds it)' : ''}, without blending.
+      </p>
+      <WideMath label="Nearest-neighbour steps" tex={`\\begin{aligned}${nearestTex(grid, q, opts)}\\end{aligned}`} />
+    </div>
+  );
+});
+
+/** The key's bilinear steps (Q3b) for the current query: c_u, c_l, c, each divided by the cell size. */
+export const BilinearWorked = memo(function BilinearWorked({ opts, q }: { opts: LookupOptions; q: Lookup }) {
   const b = q.bil;
   return (
     <div className="tx-worked" data-testid="worked-query">
-      <h3>Nearest neighbour</h3>
-      <MathTex display tex={`\\begin{aligned}${nearestTex(grid, q, opts)}\\end{aligned}`} />
-      <h3>Bilinear, in the key’s steps</h3>
       <p className="tx-small">
-        The cell’s nodes are u₀ = {texNum(b.u0)}, u₁ = {texNum(b.u1)}, v₀ = {texNum(b.v0)}, v₁ = {texNum(b.v1)}; the cell size is Δu ={' '}
-        {texNum(b.du)}, Δv = {texNum(b.dv)}. Interpolate along u on the upper row (c_u) and the lower row (c_l), then along v. Leaving out the
-        division by the cell size (the key deducts marks for it) would scale each result by Δ.
+        The query lies in the cell u₀ = {texNum(b.u0)} ≤ u ≤ u₁ = {texNum(b.u1)}, v₀ = {texNum(b.v0)} ≤ {opts.vflip ? 'v′' : 'v'} ≤ v₁ = {texNum(b.v1)}, of size Δu ={' '}
+        {texNum(b.du)}, Δv = {texNum(b.dv)}. Interpolate along u on the upper row (c_u) and on the lower row (c_l), then along v between them; each step
+        divides by the cell size.
       </p>
-      <MathTex display tex={`\\begin{aligned}${bilinearTex(q, opts)}\\end{aligned}`} />
+      <WideMath label="Bilinear steps" tex={`\\begin{aligned}${bilinearTex(q, opts)}\\end{aligned}`} />
       <p className="tx-small">
-        Weights (areas of the opposite sub-rectangles): w₀₀ = {texNum(b.w00, 4)}, w₁₀ = {texNum(b.w10, 4)}, w₀₁ = {texNum(b.w01, 4)}, w₁₁ ={' '}
-        {texNum(b.w11, 4)} (sum 1).
-        {isExamQuery ? ' These are the exam’s inputs: the computed c_u, c_l and c agree with the key’s printed 17.6, 22.6 and 17.8.' : null}
+        The same as the weighted sum of the four nodes, each weighted by the area of the sub-rectangle opposite to it: w₀₀ = {texNum(b.w00, 4)}, w₁₀ ={' '}
+        {texNum(b.w10, 4)}, w₀₁ = {texNum(b.w01, 4)}, w₁₁ = {texNum(b.w11, 4)} (sum 1).
       </p>
     </div>
   );
 });
+
+/** The spherical (u, v) of Q3c, step by step with live numbers. */
+export function sphereTex(p: { x: number; y: number; z: number; r: number; phi: number; theta: number; pole: boolean; u: number; v: number }): string {
+  return [
+    `\\frac{y}{x} &= \\frac{r \\sin u \\sin v}{r \\cos u \\sin v} = \\tan u`,
+    `u &= \\operatorname{atan2}(y, x) = \\operatorname{atan2}(${texNum(p.y)},\\ ${texNum(p.x)}) = ${texNum(p.phi)}${p.pole ? '\\quad(\\text{a pole: defined as } 0)' : ''}`,
+    `r &= \\sqrt{x^2 + y^2 + z^2} = ${texNum(p.r)}`,
+    `\\frac{z}{r} &= \\frac{r \\cos v}{r} = \\cos v`,
+    `v &= \\arccos\\frac{z}{r} = \\arccos(${texNum(p.z / p.r)}) = ${texNum(p.theta)}`,
+    `(u, v)_{\\text{tex}} &= \\left(\\frac{u}{2\\pi},\\ \\frac{v}{\\pi}\\right) \\\\ &= \\left(\\frac{${texNum(p.phi)}}{${texNum(2 * Math.PI)}},\\ \\frac{${texNum(p.theta)}}{${texNum(Math.PI)}}\\right) = (${texNum(p.u)},\\ ${texNum(p.v)})`,
+  ].join(' \\\\[3pt] ');
+}

@@ -1,0 +1,92 @@
+import { useEffect, useRef, useState } from 'react';
+
+type Matrix = { size: number; dark: (x: number, y: number) => boolean };
+
+/** Encodes text as a QR code with the `qrcode` library, loaded only when a code is asked for. */
+async function encode(text: string): Promise<Matrix> {
+  const QR = await import('qrcode');
+  const create = (QR as unknown as { create?: typeof import('qrcode').create }).create ?? (QR as unknown as { default: typeof import('qrcode') }).default.create;
+  const code = create(text, { errorCorrectionLevel: 'M' });
+  const { size, data } = code.modules as unknown as { size: number; data: Uint8Array };
+  return { size, dark: (x, y) => data[y * size + x] === 1 };
+}
+
+/** One SVG path of the dark modules, with the four-module quiet zone the standard asks for. */
+function pathOf(m: Matrix): string {
+  let d = '';
+  for (let y = 0; y < m.size; y++) {
+    for (let x = 0; x < m.size; x++) if (m.dark(x, y)) d += `M${x + 4} ${y + 4}h1v1h-1z`;
+  }
+  return d;
+}
+
+/**
+ * "QR code" beside Copy link: shows the current link as a QR code (large in classroom mode), so
+ * students in the room open the lecturer's exact configuration on their phones.
+ */
+export function QrButton({ link, present }: { link: string; present: boolean }) {
+  const [open, setOpen] = useState(false);
+  const [state, setState] = useState<{ text: string; path: string; size: number } | { error: string } | null>(null);
+  const btn = useRef<HTMLButtonElement>(null);
+  const close = useRef<HTMLButtonElement>(null);
+
+  useEffect(() => {
+    if (!open) return;
+    let alive = true;
+    encode(link).then(
+      (m) => alive && setState({ text: link, path: pathOf(m), size: m.size + 8 }),
+      (e: unknown) => alive && setState({ error: e instanceof Error ? e.message : String(e) }),
+    );
+    return () => {
+      alive = false;
+    };
+  }, [open, link]);
+
+  useEffect(() => {
+    if (!open) return;
+    close.current?.focus();
+    const onKey = (e: KeyboardEvent) => {
+      if (e.key === 'Escape') {
+        e.stopPropagation();
+        setOpen(false);
+        btn.current?.focus();
+      }
+    };
+    window.addEventListener('keydown', onKey, true);
+    return () => window.removeEventListener('keydown', onKey, true);
+  }, [open]);
+
+  return (
+    <>
+      <button type="button" ref={btn} data-testid="show-qr" aria-expanded={open} onClick={() => setOpen((o) => !o)}>
+        QR code
+      </button>
+      {open ? (
+        <div className={present ? 'qr-panel qr-large' : 'qr-panel'} role="dialog" aria-modal="false" aria-label="QR code of this link" data-testid="qr-panel">
+          {state && 'path' in state ? (
+            <svg
+              className="qr-code"
+              data-testid="qr-code"
+              data-text={state.text}
+              viewBox={`0 0 ${state.size} ${state.size}`}
+              role="img"
+              aria-label="QR code of the link to this scene in its current configuration"
+              shapeRendering="crispEdges"
+            >
+              <rect width={state.size} height={state.size} fill="#fff" />
+              <path d={state.path} fill="#000" />
+            </svg>
+          ) : state && 'error' in state ? (
+            <p role="alert" className="notice notice-error">The QR code could not be made ({state.error}).</p>
+          ) : (
+            <p role="status">Making the QR code…</p>
+          )}
+          <p className="qr-caption">Scan to open this scene as configured here{present ? '' : ' (larger in classroom mode, present=1)'}.</p>
+          <button type="button" ref={close} onClick={() => { setOpen(false); btn.current?.focus(); }}>
+            Close
+          </button>
+        </div>
+      ) : null}
+    </>
+  );
+}

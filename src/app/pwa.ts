@@ -1,0 +1,58 @@
+/**
+ * Service-worker registration (loaded lazily from main.tsx after the page has loaded, so it adds
+ * nothing to the entry but one dynamic import). The worker precaches the whole build; when a new
+ * build is deployed, its worker waits and this shows an unobtrusive notice: reloading activates it
+ * and reloads the page, so a page never mixes chunks of two builds.
+ */
+import { registerSW } from 'virtual:pwa-register';
+
+let shown = false;
+
+function showUpdateNotice(update: () => void): void {
+  if (shown) return;
+  shown = true;
+  // built with DOM calls and textContent only (no HTML strings)
+  const box = document.createElement('div');
+  box.className = 'update-notice';
+  box.setAttribute('role', 'status');
+  box.dataset.testid = 'update-notice';
+  const p = document.createElement('p');
+  p.textContent = 'Render Math Lab was updated.';
+  const reload = document.createElement('button');
+  reload.type = 'button';
+  reload.textContent = 'Reload';
+  reload.addEventListener('click', () => {
+    reload.disabled = true;
+    update();
+  });
+  const later = document.createElement('button');
+  later.type = 'button';
+  later.className = 'link-button';
+  later.textContent = 'Later';
+  later.setAttribute('aria-label', 'Dismiss the update notice');
+  later.addEventListener('click', () => box.remove());
+  box.append(p, reload, later);
+  document.body.append(box);
+}
+
+export function registerPwa(): void {
+  // When a new build takes over (Reload pressed here or in another tab), every page still running
+  // the old build reloads at once: its lazy chunks are no longer in the cache, and the state lives
+  // in the URL, so nothing is lost. (Not on the first install, when there was no build before.)
+  const hadController = navigator.serviceWorker.controller !== null;
+  let reloading = false;
+  navigator.serviceWorker.addEventListener('controllerchange', () => {
+    if (!hadController || reloading) return;
+    reloading = true;
+    window.location.reload();
+  });
+  const updateSW = registerSW({
+    immediate: true,
+    onNeedRefresh() {
+      showUpdateNotice(() => void updateSW(true));
+    },
+    onRegisterError() {
+      /* offline use is a bonus: the app works without it */
+    },
+  });
+}

@@ -1,0 +1,526 @@
+/**
+ * Practice mode (its own lazy chunk): `#/practice` (the six questions with the student's progress),
+ * `#/practice/q1` … `#/practice/q6` with `seed` (one variant: givens, answer fields, "Check",
+ * mistake-aware verdicts, the worked solution and a link to the scene), and the printable worksheet
+ * `#/practice/sheet?seed=…&q=1,3,5&count=…`.
+ *
+ * Contract (README): givens `data-testid="given-NAME"` with full-precision `data-value`; inputs
+ * `answer-NAME`; verdicts `verdict-NAME` with `data-value` correct | incorrect | mistake:<id> |
+ * invalid; expected answers `expected-NAME` once shown. Every verdict is also announced to the page
+ * as `rml:practice-verdict` (a CustomEvent on window) for the host-page API.
+ */
+import { useCallback, useEffect, useMemo, useState, type FormEvent } from 'react';
+import { MathTex } from '../ui/MathTex';
+import { shellExtras, type ShellFlags } from '../app/route';
+import { checkAnswer, expectedText, FORMULA_POLICY, NUMERIC_POLICY, type Verdict } from './check';
+import { allAnswers, fmt, QUESTION_IDS, type AnswerSpec, type Given, type QuestionId, type Variant } from './model';
+import { QUESTIONS, isQuestionId, questionInfo, sheetSeed } from './questions';
+import { loadProgress, recordCheck, resetProgress, type Progress } from './progress';
+import './practice.css';
+
+interface Props {
+  path: string;
+  query: string;
+  flags: ShellFlags;
+}
+
+const MAX_SEED = 0xffffffff;
+
+function randomSeed(): number {
+  const a = new Uint32Array(1);
+  crypto.getRandomValues(a);
+  return a[0]! % 100000; // short numbers read well in a link ("variant 17")
+}
+
+function extras(flags: ShellFlags): string {
+  const e = shellExtras(flags);
+  return Object.entries(e)
+    .filter(([, v]) => v !== undefined)
+    .map(([k, v]) => `&${k}=${v}`)
+    .join('');
+}
+
+/** Parse a seed parameter: an integer in [0, 2³² − 1], else null with a message. */
+function parseSeed(raw: string | null): { seed: number | null; problem: string | null } {
+  if (raw === null) return { seed: null, problem: null };
+  const s = raw.trim();
+  if (/^\d{1,10}$/.test(s) && Number(s) <= MAX_SEED) return { seed: Number(s), problem: null };
+  return { seed: null, problem: `seed ${JSON.stringify(s.slice(0, 24))} is not a whole number from 0 to ${MAX_SEED}; a new variant was drawn instead.` };
+}
+
+export default function PracticeRoute({ path, query, flags }: Props) {
+  const sp = useMemo(() => new URLSearchParams(query), [query]);
+  const sub = path.slice('/practice'.length).replace(/^\//, '');
+  if (sub === '') return <PracticeHome flags={flags} />;
+  if (sub === 'sheet') return <Sheet sp={sp} flags={flags} />;
+  if (isQuestionId(sub)) return <QuestionRoute key={sub} q={sub} sp={sp} flags={flags} />;
+  return (
+    <main id="main" className="page practice" tabIndex={-1}>
+      <h1>Page not found</h1>
+      <p role="status">
+        There is no practice page <code>{sub.slice(0, 40)}</code>. <a href="#/practice">See the practice questions</a>.
+      </p>
+    </main>
+  );
+}
+
+// ---------------------------------------------------------------------------------------------
+// #/practice
+
+function PracticeHome({ flags }: { flags: ShellFlags }) {
+  const [progress, setProgress] = useState<Progress>(() => loadProgress());
+  const [status, setStatus] = useState('');
+  const [sheetQs, setSheetQs] = useState<Record<QuestionId, boolean>>(() => Object.fromEntries(QUESTION_IDS.map((q) => [q, true])) as Record<QuestionId, boolean>);
+  const [count, setCount] = useState(1);
+  const [sheetSeedText, setSheetSeedText] = useState('1');
+  useEffect(() => {
+    document.title = 'Practice — Render Math Lab';
+  }, []);
+  const chosen = QUESTION_IDS.filter((q) => sheetQs[q]).map((q) => q.slice(1));
+  const seedOk = /^\d{1,10}$/.test(sheetSeedText.trim()) && Number(sheetSeedText) <= MAX_SEED;
+  const sheetHref = `#/practice/sheet?seed=${seedOk ? Number(sheetSeedText) : 1}&q=${chosen.join(',') || '1'}&count=${count}${extras(flags)}`;
+  return (
+    <main id="main" className="page practice practice-home" tabIndex={-1}>
+      <div className="scene-header">
+        <h1>Practice: new variants of every exam question</h1>
+        <a className="back-link" href={flags.present ? '#/?present=1' : '#/'}>
+          ← All scenes
+        </a>
+      </div>
+      <p className="lead">
+        Each question draws fresh numbers from a seed, checks your answers the way the key grades them, names the classic mistakes, and then shows
+        the worked solution of your variant. The same seed always gives the same variant, so a link like <code>#/practice/q3?seed=17</code> is
+        “variant 17” for everyone.
+      </p>
+      <ol className="practice-list">
+        {QUESTIONS.map((q) => {
+          const p = progress[q.id];
+          return (
+            <li key={q.id} className="question-card">
+              <div className="question-head">
+                <span className="question-number">Q{q.n}</span>
+                <h2>
+                  <a href={`#/practice/${q.id}?seed=${randomSeed()}${extras(flags)}`}>{q.title}</a>
+                </h2>
+              </div>
+              <p>{q.blurb}</p>
+              <p className="practice-progress" data-testid={`progress-${q.id}`} data-attempted={p.attempted.length} data-correct={p.correct.length}>
+                {p.attempted.length === 0
+                  ? 'Not tried yet.'
+                  : `${p.attempted.length} variant${p.attempted.length === 1 ? '' : 's'} tried, ${p.correct.length} fully correct.`}
+              </p>
+            </li>
+          );
+        })}
+      </ol>
+      <p>
+        <button
+          type="button"
+          data-testid="reset-progress"
+          onClick={() => {
+            setProgress(resetProgress());
+            setStatus('Progress cleared.');
+          }}
+        >
+          Reset progress
+        </button>{' '}
+        <span role="status">{status}</span> <span className="muted">Progress is kept in this browser only.</span>
+      </p>
+      <section className="panel sheet-builder" aria-labelledby="sheet-title">
+        <h2 id="sheet-title">Worksheet for a class (printable)</h2>
+        <fieldset>
+          <legend>Questions</legend>
+          {QUESTIONS.map((q) => (
+            <label key={q.id} className="check-label">
+              <input type="checkbox" checked={sheetQs[q.id]} onChange={(e) => setSheetQs({ ...sheetQs, [q.id]: e.target.checked })} /> Q{q.n}
+            </label>
+          ))}
+        </fieldset>
+        <label>
+          Variants of each{' '}
+          <input type="number" min={1} max={10} value={count} onChange={(e) => setCount(Math.min(10, Math.max(1, Math.round(Number(e.target.value)) || 1)))} />
+        </label>{' '}
+        <label>
+          Seed <input type="text" inputMode="numeric" value={sheetSeedText} onChange={(e) => setSheetSeedText(e.target.value)} aria-invalid={!seedOk} size={10} />
+        </label>{' '}
+        <a href={sheetHref}>Open the worksheet</a>
+        {!seedOk ? <p className="notice notice-warn">The seed must be a whole number from 0 to {MAX_SEED}; the link uses 1.</p> : null}
+      </section>
+    </main>
+  );
+}
+
+// ---------------------------------------------------------------------------------------------
+// #/practice/qN
+
+function QuestionRoute({ q, sp, flags }: { q: QuestionId; sp: URLSearchParams; flags: ShellFlags }) {
+  const parsed = parseSeed(sp.get('seed'));
+  const [fallback] = useState(() => randomSeed());
+  const seed = parsed.seed ?? fallback;
+  const problems = [...flags.problems.map((p) => `${p.name} ${p.message}`), ...(parsed.problem ? [parsed.problem] : [])];
+  // a link without a (valid) seed gets one, so the page's URL names its variant
+  useEffect(() => {
+    if (parsed.seed !== null) return;
+    try {
+      const keep = new URLSearchParams(sp);
+      keep.set('seed', String(seed));
+      window.history.replaceState(window.history.state, '', `#/practice/${q}?${keep.toString()}`);
+    } catch {
+      /* sandboxed: the seed still lives in the page */
+    }
+  }, [parsed.seed, seed, q, sp]);
+  const variant = useMemo(() => questionInfo(q).generate(seed), [q, seed]);
+  return <QuestionPage key={`${q}-${seed}`} variant={variant} flags={flags} problems={problems} />;
+}
+
+function QuestionPage({ variant, flags, problems }: { variant: Variant; flags: ShellFlags; problems: string[] }) {
+  const info = questionInfo(variant.question);
+  const answers = allAnswers(variant);
+  const [inputs, setInputs] = useState<Record<string, string>>({});
+  const [verdicts, setVerdicts] = useState<Record<string, Verdict>>({});
+  const [checking, setChecking] = useState(false);
+  const [revealed, setRevealed] = useState(false);
+  const [summary, setSummary] = useState('');
+  useEffect(() => {
+    document.title = `Practice Q${info.n} (variant ${variant.seed}) — Render Math Lab`;
+  }, [info.n, variant.seed]);
+
+  const check = useCallback(
+    async (e?: FormEvent) => {
+      e?.preventDefault();
+      setChecking(true);
+      const out: Record<string, Verdict> = {};
+      for (const a of answers) {
+        const text = inputs[a.name] ?? '';
+        if (text.trim() === '') continue;
+        const v = await checkAnswer(a, text);
+        out[a.name] = v;
+        window.dispatchEvent(new CustomEvent('rml:practice-verdict', { detail: { question: variant.question, seed: variant.seed, name: a.name, verdict: v.value } }));
+      }
+      setVerdicts(out);
+      setChecking(false);
+      setRevealed(true);
+      const vals = Object.values(out);
+      const nCorrect = vals.filter((v) => v.value === 'correct').length;
+      const nMistake = vals.filter((v) => v.value.startsWith('mistake:')).length;
+      const nInvalid = vals.filter((v) => v.value === 'invalid').length;
+      const blank = answers.length - vals.length;
+      setSummary(
+        vals.length === 0
+          ? 'Nothing to check yet: type an answer first. (The worked solution is below.)'
+          : `${nCorrect} of ${answers.length} correct${nMistake ? `, ${nMistake} classic mistake${nMistake === 1 ? '' : 's'} named` : ''}${nInvalid ? `, ${nInvalid} not readable` : ''}${blank ? `, ${blank} not answered` : ''}.`,
+      );
+      if (vals.length > 0) recordCheck(variant.question, variant.seed, nCorrect === answers.length);
+    },
+    [answers, inputs, variant.question, variant.seed],
+  );
+
+  const newVariant = () => {
+    let s = randomSeed();
+    if (s === variant.seed) s = (s + 1) % 100000;
+    window.location.hash = `#/practice/${variant.question}?seed=${s}${extras(flags)}`;
+  };
+  const sceneHref = `${variant.sceneHref}${extras(flags)}`;
+
+  return (
+    <main id="main" className={`page practice practice-question practice-${variant.question}`} tabIndex={-1}>
+      <div className={flags.embed ? 'scene-header compact' : 'scene-header'}>
+        <h1>
+          <span className="question-tag">Practice Q{info.n}</span> {variant.title}
+        </h1>
+        {flags.embed ? (
+          <a className="open-full" href={`${window.location.pathname}#/practice/${variant.question}?seed=${variant.seed}`} target="_blank" rel="noopener">
+            Open in Render Math Lab ↗
+          </a>
+        ) : (
+          <a className="back-link" href={`#/practice${flags.present ? '?present=1' : ''}`}>
+            ← All practice questions
+          </a>
+        )}
+      </div>
+      {problems.length ? (
+        <div className="notice notice-warn" role="status" data-testid="param-notice">
+          <p>
+            <strong>Some link parameters could not be used:</strong>
+          </p>
+          <ul>
+            {problems.map((p) => (
+              <li key={p}>{p}</li>
+            ))}
+          </ul>
+        </div>
+      ) : null}
+      <div className="variant-bar">
+        <span>
+          Variant <strong data-testid="variant-seed">{variant.seed}</strong>
+        </span>
+        <button type="button" onClick={newVariant} data-testid="new-variant">
+          New variant
+        </button>
+        <a href={sceneHref}>{variant.sceneLabel} ↗</a>
+      </div>
+      <section className="panel practice-statement" aria-labelledby="statement-title">
+        <h2 id="statement-title">The question</h2>
+        <p>{variant.statement}</p>
+        <Givens givens={variant.givens} testIds />
+      </section>
+      <form className="panel practice-answers" onSubmit={check} noValidate aria-labelledby="answers-title">
+        <h2 id="answers-title">Your answers</h2>
+        <details className="policy">
+          <summary>How answers are checked</summary>
+          <p>{NUMERIC_POLICY.text}</p>
+          <p>{FORMULA_POLICY.text}</p>
+          <p>Classic mistakes the key deducts marks for are recognised and named. Where the key accepts another convention (v′ = 1 − v), it is accepted and said so.</p>
+        </details>
+        {variant.parts.map((part) => (
+          <fieldset key={part.id} className="practice-part">
+            <legend>{part.prompt}</legend>
+            {part.answers.map((a) => (
+              <AnswerRow
+                key={a.name}
+                spec={a}
+                value={inputs[a.name] ?? ''}
+                onChange={(t) => setInputs((s) => ({ ...s, [a.name]: t }))}
+                verdict={verdicts[a.name]}
+                revealed={revealed}
+              />
+            ))}
+          </fieldset>
+        ))}
+        <div className="practice-actions">
+          <button type="submit" className="primary" disabled={checking}>
+            Check
+          </button>
+          <button type="button" onClick={() => setRevealed(true)} data-testid="show-solution">
+            Show solution
+          </button>
+          <span role="status" className="practice-summary" data-testid="practice-summary">
+            {checking ? 'Checking…' : summary}
+          </span>
+        </div>
+      </form>
+      {revealed ? (
+        <section className="panel practice-solution" aria-labelledby="solution-title" data-testid="solution">
+          <h2 id="solution-title">Worked solution of variant {variant.seed}</h2>
+          {variant.solution.map((s, i) => (
+            <div key={i} className="solution-step">
+              {s.text ? <p>{s.text}</p> : null}
+              {s.tex ? <MathTex tex={s.tex} display /> : null}
+            </div>
+          ))}
+          {variant.notes.map((n) => (
+            <p key={n} className="muted">
+              {n}
+            </p>
+          ))}
+          <p>
+            <a href={sceneHref} data-testid="scene-link">
+              {variant.sceneLabel} ↗
+            </a>
+          </p>
+        </section>
+      ) : null}
+    </main>
+  );
+}
+
+function answerHint(spec: AnswerSpec): string {
+  if (spec.kind === 'formula') return `formula in ${spec.variables.join(', ')}`;
+  if (spec.kind === 'choice') return spec.options.join(' · ');
+  return 'number, expression or none';
+}
+
+function AnswerRow({ spec, value, onChange, verdict, revealed }: { spec: AnswerSpec; value: string; onChange: (t: string) => void; verdict: Verdict | undefined; revealed: boolean }) {
+  const id = `answer-${spec.name}`;
+  const listId = spec.kind === 'choice' ? `${id}-options` : undefined;
+  const exp = expectedText(spec);
+  const kind = verdict ? (verdict.value.startsWith('mistake:') ? 'mistake' : verdict.value) : null;
+  return (
+    <div className={`answer-row${kind ? ` is-${kind}` : ''}`}>
+      <label htmlFor={id} className="answer-label">
+        {spec.label}
+      </label>
+      <input
+        id={id}
+        data-testid={id}
+        type="text"
+        value={value}
+        onChange={(e) => onChange(e.target.value)}
+        autoComplete="off"
+        autoCapitalize="off"
+        spellCheck={false}
+        list={listId}
+        placeholder={answerHint(spec)}
+        aria-describedby={verdict ? `verdict-${spec.name}` : undefined}
+        aria-invalid={verdict && verdict.value !== 'correct' ? true : undefined}
+      />
+      {listId && spec.kind === 'choice' ? (
+        <datalist id={listId}>
+          {spec.options.map((o) => (
+            <option key={o} value={o} />
+          ))}
+        </datalist>
+      ) : null}
+      {verdict ? (
+        <p className={`verdict verdict-${kind}`} id={`verdict-${spec.name}`} data-testid={`verdict-${spec.name}`} data-value={verdict.value}>
+          <span className="verdict-tag">{kind === 'correct' ? '✓ correct' : kind === 'mistake' ? `✗ ${verdict.value}` : kind === 'invalid' ? '? not readable' : '✗ incorrect'}</span>{' '}
+          {verdict.message}
+        </p>
+      ) : null}
+      {revealed ? (
+        <p className="expected">
+          Expected:{' '}
+          <output data-testid={`expected-${spec.name}`} data-value={exp} title={exp}>
+            {spec.kind === 'number' && spec.expected !== null ? fmt(spec.expected, 6) : exp}
+          </output>
+        </p>
+      ) : null}
+    </div>
+  );
+}
+
+function Givens({ givens, testIds }: { givens: Given[]; testIds: boolean }) {
+  return (
+    <dl className="givens">
+      {givens.map((g) => (
+        <div key={g.name} className={`given given-${g.name}`}>
+          <dt>{g.label}</dt>
+          <dd>
+            {g.name === 'grid' ? (
+              <GridTable text={g.value} testId={testIds ? `given-${g.name}` : undefined} />
+            ) : (
+              <span data-testid={testIds ? `given-${g.name}` : undefined} data-value={g.value} className="given-value">
+                {g.tex ? <MathTex tex={g.tex} /> : g.display}
+              </span>
+            )}
+          </dd>
+        </div>
+      ))}
+    </dl>
+  );
+}
+
+function GridTable({ text, testId }: { text: string; testId?: string }) {
+  const rows = text.split(';').map((r) => r.split(','));
+  const n = rows.length;
+  return (
+    <div className="grid-scroll">
+      <table className="grid-table" data-testid={testId} data-value={text}>
+        <caption className="sr-only">Texel values: rows from v = 1 (top) to v = 0 (bottom), columns from u = 0 to u = 1</caption>
+        <tbody>
+          {rows.map((r, k) => (
+            <tr key={k}>
+              <th scope="row">{fmt(1 - k / (n - 1), 3)}</th>
+              {r.map((x, i) => (
+                <td key={i}>{x}</td>
+              ))}
+            </tr>
+          ))}
+          <tr>
+            <th scope="row" className="axis-corner">
+              v ↑ u →
+            </th>
+            {rows[0]!.map((_, i) => (
+              <th key={i} scope="col">
+                {fmt(i / (n - 1), 3)}
+              </th>
+            ))}
+          </tr>
+        </tbody>
+      </table>
+    </div>
+  );
+}
+
+// ---------------------------------------------------------------------------------------------
+// #/practice/sheet
+
+function Sheet({ sp, flags }: { sp: URLSearchParams; flags: ShellFlags }) {
+  const problems: string[] = flags.problems.map((p) => `${p.name} ${p.message}`);
+  const ps = parseSeed(sp.get('seed'));
+  let seed = 1;
+  if (ps.seed !== null) seed = ps.seed;
+  else if (ps.problem) problems.push(ps.problem.replace('a new variant was drawn instead', 'using 1'));
+  let qs: QuestionId[] = [...QUESTION_IDS];
+  const qRaw = sp.get('q');
+  if (qRaw !== null) {
+    const parts = qRaw.split(',').map((s) => `q${s.trim().replace(/^q/i, '')}`);
+    const ok = parts.filter(isQuestionId);
+    if (ok.length !== parts.length || ok.length === 0) problems.push(`q ${JSON.stringify(qRaw.slice(0, 24))} should list question numbers 1–6 (e.g. 1,3,5); ${ok.length ? 'unknown ones were left out' : 'using all six'}.`);
+    if (ok.length) qs = [...new Set(ok)];
+  }
+  let count = 1;
+  const cRaw = sp.get('count');
+  if (cRaw !== null) {
+    if (/^\d{1,3}$/.test(cRaw.trim()) && Number(cRaw) >= 1) {
+      count = Math.min(10, Number(cRaw));
+      if (Number(cRaw) > 10) problems.push(`count ${cRaw} is more than 10; using 10.`);
+    } else problems.push(`count ${JSON.stringify(cRaw.slice(0, 24))} is not a whole number from 1 to 10; using 1.`);
+  }
+  const variants = qs.flatMap((q) => Array.from({ length: count }, (_, k) => questionInfo(q).generate(sheetSeed(seed, k))));
+  useEffect(() => {
+    document.title = `Practice worksheet (seed ${seed}) — Render Math Lab`;
+  }, [seed]);
+  return (
+    <main id="main" className="page practice practice-sheet" tabIndex={-1}>
+      <div className="no-print">
+        <div className="scene-header">
+          <h1>Worksheet: seed {seed}</h1>
+          <a className="back-link" href="#/practice">
+            ← All practice questions
+          </a>
+        </div>
+        {problems.length ? (
+          <div className="notice notice-warn" role="status" data-testid="param-notice">
+            <ul>
+              {problems.map((p) => (
+                <li key={p}>{p}</li>
+              ))}
+            </ul>
+          </div>
+        ) : null}
+        <p>
+          {variants.length} question page{variants.length === 1 ? '' : 's'}, then the answer key. <button type="button" onClick={() => window.print()}>Print</button>{' '}
+          <span className="muted">Each question prints on its own page; the answer key follows on the last page.</span>
+        </p>
+      </div>
+      {variants.map((v, i) => (
+        <section key={`${v.question}-${v.seed}`} className="sheet-page" data-testid="sheet-page" aria-labelledby={`sheet-q-${i}`}>
+          <h2 id={`sheet-q-${i}`}>
+            {i + 1}. Question {questionInfo(v.question).n}: {v.title} <span className="muted">(variant {v.seed})</span>
+          </h2>
+          <p>{v.statement}</p>
+          <Givens givens={v.givens} testIds={false} />
+          {v.parts.map((p) => (
+            <div key={p.id} className="sheet-part">
+              <p className="sheet-prompt">{p.prompt}</p>
+              {p.answers.map((a) => (
+                <p key={a.name} className="sheet-blank">
+                  {a.label}: <span className="blank-line" aria-hidden="true" />
+                </p>
+              ))}
+            </div>
+          ))}
+          <p className="muted sheet-link">Check online: #/practice/{v.question}?seed={v.seed}</p>
+        </section>
+      ))}
+      <section className="sheet-key" data-testid="sheet-key" aria-labelledby="sheet-key-title">
+        <h2 id="sheet-key-title">Answer key (seed {seed})</h2>
+        {variants.map((v, i) => (
+          <div key={`${v.question}-${v.seed}`} className="key-block">
+            <h3>
+              {i + 1}. Q{questionInfo(v.question).n} variant {v.seed}
+            </h3>
+            <p className="key-answers">
+              {allAnswers(v).map((a) => (
+                <span key={a.name} className="key-answer">
+                  {a.label} = <strong>{a.kind === 'number' && a.expected !== null ? fmt(a.expected, 6) : expectedText(a)}</strong>
+                </span>
+              ))}
+            </p>
+          </div>
+        ))}
+      </section>
+    </main>
+  );
+}

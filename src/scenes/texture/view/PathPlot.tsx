@@ -1,0 +1,136 @@
+/**
+ * The looked-up value along the query's path (issue 12), under the grid: nearest as a step
+ * function, bilinear as a continuous curve with its cell borders marked (solid where the slope
+ * changes, a kink; dotted where it does not), and the current position. Drawn in CSS pixels (the
+ * SVG is as wide as its box), so text stays at its stated size on phones. The curves are memoized
+ * on the profile; only the position marker re-renders per animation frame.
+ */
+import { memo, useLayoutEffect, useMemo, useRef, useState } from 'react';
+import type { PathProfile } from '../model';
+import { fmtShort } from './GridView';
+
+const M = { l: 46, r: 12, t: 10, b: 34 };
+
+function niceTicks(min: number, max: number, count: number): number[] {
+  if (!(max > min)) return [min];
+  const raw = (max - min) / count;
+  const p = 10 ** Math.floor(Math.log10(raw));
+  const step = [1, 2, 2.5, 5, 10].map((m) => m * p).find((s) => s >= raw) ?? raw;
+  const out: number[] = [];
+  for (let x = Math.ceil(min / step) * step; x <= max + step * 1e-9; x += step) out.push(Number(x.toPrecision(12)));
+  return out;
+}
+
+interface Scale {
+  w: number;
+  h: number;
+  y0: number;
+  y1: number;
+}
+const X = (s: Scale, t: number) => M.l + t * (s.w - M.l - M.r);
+const Y = (s: Scale, y: number) => M.t + ((s.y1 - y) / (s.y1 - s.y0)) * (s.h - M.t - M.b);
+
+const Curves = memo(function Curves({ profile, s }: { profile: PathProfile; s: Scale }) {
+  // bilinear: one path, moving (M) where it breaks at a jump
+  let d = '';
+  const brk = new Set(profile.breaks);
+  profile.ts.forEach((t, k) => {
+    d += `${k === 0 || brk.has(k) ? 'M' : 'L'}${X(s, t).toFixed(1)} ${Y(s, profile.bil[k]).toFixed(1)}`;
+  });
+  // nearest: horizontal pieces joined by vertical risers at the switches
+  let n = '';
+  profile.near.forEach((p, k) => {
+    const y = Y(s, p.value).toFixed(1);
+    n += `${k === 0 ? 'M' : 'L'}${X(s, p.t0).toFixed(1)} ${y}L${X(s, p.t1).toFixed(1)} ${y}`;
+  });
+  const yt = niceTicks(s.y0, s.y1, 4);
+  const bottom = s.h - M.b;
+  return (
+    <g>
+      <rect x={M.l} y={M.t} width={s.w - M.l - M.r} height={bottom - M.t} className="tx-plot-bg" />
+      {profile.borders.map((b, k) => (
+        <line key={k} x1={X(s, b.t)} x2={X(s, b.t)} y1={M.t} y2={bottom} className={b.kink ? 'tx-plot-border kink' : b.jump ? 'tx-plot-border jump' : 'tx-plot-border'} />
+      ))}
+      {yt.map((y) => (
+        <g key={y}>
+          <line x1={M.l - 4} x2={M.l} y1={Y(s, y)} y2={Y(s, y)} className="tx-plot-axis" />
+          <text x={M.l - 6} y={Y(s, y) + 4} textAnchor="end" className="tx-plot-text">
+            {fmtShort(y)}
+          </text>
+        </g>
+      ))}
+      {[0, 0.25, 0.5, 0.75, 1].map((t) => (
+        <g key={t}>
+          <line x1={X(s, t)} x2={X(s, t)} y1={bottom} y2={bottom + 4} className="tx-plot-axis" />
+          <text x={X(s, t)} y={bottom + 17} textAnchor="middle" className="tx-plot-text">
+            {t}
+          </text>
+        </g>
+      ))}
+      <text x={s.w - M.r} y={s.h - 2} textAnchor="end" className="tx-plot-text">
+        position on the path, t
+      </text>
+      <path d={n} className="tx-plot-near" />
+      <path d={d} className="tx-plot-bil" />
+      <line x1={M.l} x2={M.l} y1={M.t} y2={bottom} className="tx-plot-axis" />
+      <line x1={M.l} x2={s.w - M.r} y1={bottom} y2={bottom} className="tx-plot-axis" />
+    </g>
+  );
+});
+
+export function PathPlot({ profile, t, near, bil, present }: { profile: PathProfile; t: number; near: number; bil: number; present: boolean }) {
+  const ref = useRef<HTMLDivElement>(null);
+  const [w, setW] = useState(480);
+  useLayoutEffect(() => {
+    const el = ref.current;
+    if (!el) return;
+    const measure = () => {
+      const x = Math.round(el.getBoundingClientRect().width);
+      if (x > 0) setW((prev) => (prev !== x ? x : prev));
+    };
+    measure();
+    if (typeof ResizeObserver === 'undefined') return;
+    const ro = new ResizeObserver(measure);
+    ro.observe(el);
+    return () => ro.disconnect();
+  }, []);
+  const h = present ? 230 : 180;
+  const s = useMemo<Scale>(() => {
+    const pad = Math.max(1e-9, (profile.max - profile.min) * 0.08, Math.abs(profile.max) * 1e-9);
+    return { w, h, y0: profile.min - pad, y1: profile.max + pad };
+  }, [profile, w, h]);
+  const kinks = useMemo(() => profile.borders.filter((b) => b.kink).length, [profile]);
+  const jumps = useMemo(() => profile.borders.filter((b) => b.jump).length, [profile]);
+  const label =
+    `The looked-up value along the path. Bilinear: continuous${jumps ? ` except ${jumps} jump${jumps > 1 ? 's' : ''} from the addressing` : ''}, ` +
+    `crossing ${profile.borders.length} cell border${profile.borders.length === 1 ? '' : 's'}, ${kinks} with a kink. ` +
+    `Nearest: a step function with ${profile.nearSwitches.length} step${profile.nearSwitches.length === 1 ? '' : 's'}. Now at t = ${fmtShort(t)}: nearest ${fmtShort(near)}, bilinear ${fmtShort(bil)}.`;
+  return (
+    <figure className="tx-plot" data-testid="path-plot" data-borders={profile.borders.length} data-kinks={kinks} data-jumps={jumps} data-steps={profile.nearSwitches.length}>
+      <div ref={ref} className="tx-plot-box">
+        <svg width={w} height={h} viewBox={`0 0 ${w} ${h}`} role="img" aria-label={label}>
+          <Curves profile={profile} s={s} />
+          <g data-testid="path-plot-marker">
+            <line x1={X(s, t)} x2={X(s, t)} y1={M.t} y2={h - M.b} className="tx-plot-now" />
+            <circle cx={X(s, t)} cy={Y(s, near)} r={5} className="tx-plot-near-dot" />
+            <circle cx={X(s, t)} cy={Y(s, bil)} r={5} className="tx-plot-bil-dot" />
+          </g>
+        </svg>
+      </div>
+      <figcaption className="tx-plot-legend">
+        <span>
+          <span className="tx-lg bil" /> bilinear
+        </span>
+        <span>
+          <span className="tx-lg near" /> nearest (steps)
+        </span>
+        <span>
+          <span className="tx-lg kink" /> cell border with a kink
+        </span>
+        <span>
+          <span className="tx-lg border" /> cell border, no kink
+        </span>
+      </figcaption>
+    </figure>
+  );
+}

@@ -1,0 +1,38 @@
+/**
+ * The teacher's guide (#/guide): a lazy chunk, axe clean, and every preset link opens its scene
+ * with every parameter used (no notice, no error) and the scene computing.
+ */
+import AxeBuilder from '@axe-core/playwright';
+import { test, expect, openScene } from './fixtures';
+
+test('the guide lists 3–5 presets per exam question, is reachable from the header, and is axe clean', async ({ page }) => {
+  await openScene(page, '#/');
+  await page.getByRole('link', { name: 'Teacher’s guide' }).click();
+  await expect(page.getByRole('heading', { level: 1 })).toHaveText('Teacher’s guide');
+  for (const q of ['Q1', 'Q2', 'Q3', 'Q4', 'Q5', 'Q6']) {
+    const section = page.locator('section.guide-lesson', { has: page.locator('h2', { hasText: q }) });
+    const n = await section.getByTestId('guide-preset').count();
+    expect(n, q).toBeGreaterThanOrEqual(3);
+    expect(n, q).toBeLessThanOrEqual(5);
+  }
+  await expect(page.getByRole('heading', { name: 'Misconceptions, scene by scene' })).toBeVisible();
+  await expect(page.getByRole('heading', { name: 'Embed, print and go offline' })).toBeVisible();
+  const results = await new AxeBuilder({ page }).analyze();
+  const bad = results.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical');
+  expect(bad.map((v) => `${v.id}: ${v.nodes.slice(0, 5).map((n) => n.target.join(' ')).join(', ')}`)).toEqual([]);
+});
+
+test('every preset link opens its scene with all its parameters used', async ({ page }) => {
+  test.setTimeout(300_000);
+  await openScene(page, '#/guide?present=1');
+  const hrefs = await page.locator('[data-testid="guide-preset"] h3 a').evaluateAll((as) => as.map((a) => a.getAttribute('href')!));
+  expect(hrefs.length).toBeGreaterThanOrEqual(18);
+  for (const href of hrefs) {
+    expect(href).toContain('present=1');
+    await openScene(page, href);
+    await expect(page.locator('main#main.scene')).toBeVisible();
+    await expect(page.getByTestId('param-notice'), href).toHaveCount(0);
+    await expect(page.locator('.notice-error'), href).toHaveCount(0);
+    await expect(page.getByTestId('copy-link')).toBeVisible();
+  }
+});

@@ -1,0 +1,216 @@
+/**
+ * The host-page API, driven from the README's example page (examples/host.html) served on a second
+ * local port, i.e. from another origin than the app: set → readouts change, get, change events on
+ * a drag, an error naming a bad value, requests from a window that is not the parent ignored, and
+ * the height message (only height and scene) following the content both ways.
+ */
+import { createServer, type Server } from 'node:http';
+import { readFile } from 'node:fs/promises';
+import { resolve } from 'node:path';
+import type { Frame, Page } from '@playwright/test';
+import { test, expect } from './fixtures';
+
+const appPort = Number(process.env.E2E_PORT ?? 4317);
+let hostPort = 0; // an ephemeral port, chosen by the system (no clash with parallel runs)
+let hostOrigin = '';
+let server: Server;
+
+test.beforeAll(async () => {
+  const file = resolve('examples/host.html');
+  server = createServer(async (req, res) => {
+    if ((req.url ?? '').split('?')[0] === '/host.html') {
+      res.writeHead(200, { 'content-type': 'text/html; charset=utf-8', 'cache-control': 'no-store' });
+      res.end(await readFile(file));
+    } else {
+      res.writeHead(404);
+      res.end();
+    }
+  });
+  await new Promise<void>((ok) => server.listen(0, '127.0.0.1', ok));
+  hostPort = (server.address() as { port: number }).port;
+  hostOrigin = `http://127.0.0.1:${hostPort}`;
+});
+test.afterAll(async () => {
+  await new Promise<void>((ok) => server.close(() => ok()));
+});
+
+type Reply = { protocol: string; version: number; id: unknown; type: string; ok: boolean; error?: string; state?: { scene: string; params: Record<string, unknown>; query: string } };
+type Msg = Record<string, unknown>;
+
+async function openHost(page: Page, sceneHash: string): Promise<Frame> {
+  const src = `http://127.0.0.1:${appPort}/app/${sceneHash}`;
+  await page.goto(`${hostOrigin}/host.html?src=${encodeURIComponent(src)}`);
+  const frame = page.frameLocator('#scene');
+  await expect(frame.getByTestId('copy-link')).toBeVisible({ timeout: 30000 });
+  const f = page.frames().find((x) => x.url().startsWith(`http://127.0.0.1:${appPort}/`));
+  expect(f).toBeTruthy();
+  return f!;
+}
+
+const api = <T,>(page: Page, fn: string, arg?: unknown) =>
+  page.evaluate(([fn, arg]) => (window as unknown as { rml: Record<string, (a?: unknown) => Promise<unknown>> }).rml[fn as string]!(arg), [fn, arg] as const) as Promise<T>;
+
+test('the example host page sets, gets and subscribes; bad values answer an error naming them', async ({ page }) => {
+  const frame = await openHost(page, '#/texture?embed=1');
+  const bilinear = () => frame.getByTestId('bilinear').first().getAttribute('data-value');
+  const before = await bilinear();
+
+  // get: the scene's parameters, typed
+  const got = await api<Reply>(page, 'get');
+  expect(got).toMatchObject({ protocol: 'render-math-lab', version: 1, type: 'reply', ok: true, id: expect.stringMatching(/^req-/) });
+  expect(got.state!.scene).toBe('texture');
+  expect(got.state!.params.u).toBe(0.4);
+  expect(got.state!.params.wrap).toBe('clamp');
+
+  // subscribe, then set: the readouts change, and get returns the new values
+  const sub = await api<Reply>(page, 'subscribe');
+  expect(sub.ok).toBe(true);
+  const set = await api<Reply>(page, 'set', { u: 0.7, v: 0.3, wrap: 'repeat' });
+  expect(set.ok, set.error).toBe(true);
+  expect(set.state!.params).toMatchObject({ u: 0.7, v: 0.3, wrap: 'repeat' });
+  await expect.poll(bilinear).not.toBe(before);
+  const after = await bilinear();
+  await expect(frame.getByTestId('u-slider')).toHaveValue('0.7');
+  const got2 = await api<Reply>(page, 'get');
+  expect(got2.state!.params).toMatchObject({ u: 0.7, v: 0.3, wrap: 'repeat' });
+  expect(got2.state!.query).toContain('u=0.7');
+  // the host's change was announced as an event caused by the host
+  const events = () => page.evaluate(() => (window as unknown as { rml: { received: Msg[] } }).rml.received.filter((m) => m.type === 'event'));
+  await expect.poll(async () => (await events()).some((e) => e.event === 'change' && e.cause === 'host')).toBe(true);
+
+  // a bad value: an error naming it, and nothing applied (not even the good value beside it)
+  const bad = await api<Reply>(page, 'set', { u: 0.1, wrap: 'sideways' });
+  expect(bad.ok).toBe(false);
+  expect(bad.error).toContain('wrap');
+  expect(bad.error).toContain('sideways');
+  const bad2 = await api<Reply>(page, 'set', { u: 'abc' });
+  expect(bad2.ok).toBe(false);
+  expect(bad2.error).toMatch(/u .*abc/);
+  const bad3 = await api<Reply>(page, 'set', { nonsense: 1, toString: 2 });
+  expect(bad3.ok).toBe(false);
+  expect(bad3.error).toContain('nonsense');
+  expect(bad3.error).toContain('toString');
+  expect((await api<Reply>(page, 'get')).state!.params.u).toBe(0.7);
+  expect(await bilinear()).toBe(after);
+
+  // play/pause/seek are sets of the animation's play/t: this scene has none, and says so by name
+  const play = await api<Reply>(page, 'play');
+  expect(play.ok).toBe(false);
+  expect(play.error).toContain('play');
+
+  // a user drag in the scene: change events carrying the new state
+  const n0 = (await events()).filter((e) => e.cause === 'user').length;
+  const grid = frame.getByTestId('texel-grid');
+  await grid.scrollIntoViewIfNeeded();
+  const box = (await grid.boundingBox())!;
+  await page.mouse.move(box.x + box.width * 0.5, box.y + box.height * 0.5);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width * 0.75, box.y + box.height * 0.25, { steps: 5 });
+  await page.mouse.up();
+  await expect.poll(async () => (await events()).filter((e) => e.cause === 'user').length).toBeGreaterThan(n0);
+  const last = (await events()).filter((e) => e.cause === 'user').at(-1) as { state: { scene: string; params: { u: number } } };
+  expect(last.state.scene).toBe('texture');
+  expect(last.state.params.u).toBeCloseTo(-0.08 + 1.16 * 0.75, 1);
+  expect((await api<Reply>(page, 'get')).state!.params.u).toBe(last.state.params.u);
+
+  // a practice verdict (the practice pages dispatch rml:practice-verdict) reaches the subscriber as
+  // plain data; only the four fields, strings capped
+  const f = page.frames().find((x) => x.url().startsWith(`http://127.0.0.1:${appPort}/`))!;
+  await f.evaluate(() =>
+    window.dispatchEvent(new CustomEvent('rml:practice-verdict', { detail: { question: 'Q3b', seed: 42, name: 'bilinear', verdict: 'correct', extra: '<img src=x>' } })),
+  );
+  await expect.poll(async () => (await events()).find((e) => e.event === 'practice-verdict')?.verdict ?? null).toEqual({ question: 'Q3b', seed: 42, name: 'bilinear', verdict: 'correct' });
+});
+
+test('requests from a window that is not the parent are ignored; height messages carry no URL', async ({ page }) => {
+  const frame = await openHost(page, '#/texture?embed=1&u=0.2');
+  // a sibling frame of the host's origin (not the scene's parent) sends a set
+  await page.evaluate(() => {
+    const sib = document.createElement('iframe');
+    sib.id = 'sibling';
+    sib.srcdoc = '<p>other</p>';
+    document.body.append(sib);
+    return new Promise((ok) => (sib.onload = ok));
+  });
+  await page.evaluate(() => {
+    const scene = (document.getElementById('scene') as HTMLIFrameElement).contentWindow!;
+    const sib = (document.getElementById('sibling') as HTMLIFrameElement).contentWindow as Window & { eval: (s: string) => unknown };
+    (sib as unknown as { target: Window }).target = scene;
+    sib.eval(`target.postMessage({ protocol: 'render-math-lab', version: 1, id: 'intruder', type: 'set', params: { u: 0.9 } }, '*')`);
+  });
+  // a later request from the parent is answered; the intruder's never was, and changed nothing
+  const got = await api<Reply>(page, 'get');
+  expect(got.state!.params.u).toBe(0.2);
+  const received = await page.evaluate(() => (window as unknown as { rml: { received: Msg[] } }).rml.received);
+  expect(received.some((m) => m.id === 'intruder')).toBe(false);
+  await expect(frame.getByTestId('u-slider')).toHaveValue('0.2');
+
+  // the height message: only type, height and scene
+  const heights = received.filter((m) => m.type === 'render-math-lab:height');
+  expect(heights.length).toBeGreaterThan(0);
+  for (const h of heights) expect(Object.keys(h).sort()).toEqual(['height', 'scene', 'type']);
+  expect(heights.at(-1)!.scene).toBe('texture');
+  expect(JSON.stringify(received.filter((m) => m.type === 'render-math-lab:height'))).not.toContain('http');
+});
+
+test('with origin= the scene answers only that origin', async ({ page }) => {
+  await openHost(page, `#/texture?embed=1&origin=${encodeURIComponent('https://lms.example.edu')}`);
+  // the host page's own origin is not the allowed one: its request times out unanswered
+  const r = await page.evaluate(() =>
+    Promise.race([
+      (window as unknown as { rml: { get: () => Promise<unknown> } }).rml.get().then(() => 'answered'),
+      new Promise((ok) => setTimeout(() => ok('ignored'), 2500)),
+    ]),
+  );
+  expect(r).toBe('ignored');
+  // and no height message reaches it either (they go to the allowed origin only)
+  const heights = await page.evaluate(() => (window as unknown as { rml: { received: Msg[] } }).rml.received.filter((m) => m.type === 'render-math-lab:height').length);
+  expect(heights).toBe(0);
+});
+
+test('the posted height follows the content both ways: it shrinks after the host widens the iframe', async ({ page }) => {
+  await page.setViewportSize({ width: 1400, height: 900 });
+  await openHost(page, '#/texture?embed=1');
+  const lastHeight = () =>
+    page.evaluate(() => (window as unknown as { rml: { received: Msg[] } }).rml.received.filter((m) => m.type === 'render-math-lab:height').at(-1)?.height as number | undefined ?? 0);
+  await page.evaluate(() => {
+    const f = document.getElementById('scene') as HTMLIFrameElement;
+    f.style.width = '380px';
+  });
+  await expect.poll(lastHeight, { timeout: 20000 }).toBeGreaterThan(1500);
+  const narrow = await lastHeight();
+  // the host page applies it: the iframe is as tall as the narrow layout
+  await expect.poll(() => page.evaluate(() => (document.getElementById('scene') as HTMLIFrameElement).getBoundingClientRect().height)).toBeGreaterThan(narrow - 5);
+  await page.evaluate(() => {
+    (document.getElementById('scene') as HTMLIFrameElement).style.width = '1300px';
+  });
+  await expect.poll(lastHeight, { timeout: 20000 }).toBeLessThan(narrow * 0.8);
+  // and it matches the content of the embedded page
+  const f = page.frames().find((x) => x.url().startsWith(`http://127.0.0.1:${appPort}/`))!;
+  const content = await f.evaluate(() => Math.ceil(document.getElementById('root')!.getBoundingClientRect().bottom + window.scrollY));
+  await expect.poll(lastHeight).toBeGreaterThanOrEqual(content - 1);
+  expect(await lastHeight()).toBeLessThanOrEqual(content + 1);
+});
+
+test('"Copy embed code" gives an iframe with an id and the listener that sizes it', async ({ page, context }) => {
+  const app = await context.newPage();
+  await app.goto(`http://127.0.0.1:${appPort}/app/#/texture?u=0.7`);
+  await app.getByTestId('copy-embed').click();
+  const code = await app.evaluate(() => navigator.clipboard.readText());
+  await app.close();
+  const id = /<iframe id="(rml-texture-[a-z0-9]+)"/.exec(code)?.[1];
+  expect(id, code).toBeTruthy();
+  expect(code).toContain('render-math-lab:height');
+  expect(code).toContain(`getElementById('${id}')`);
+  // pasted into a page as it is, the snippet sizes the iframe to the scene's content
+  await page.setContent(`<!doctype html><body style="margin:0">${code}</body>`);
+  const frame = page.frameLocator(`#${id}`);
+  await expect(frame.getByTestId('bilinear').first()).toBeVisible({ timeout: 30000 });
+  await expect(frame.getByTestId('u-slider')).toHaveValue('0.7');
+  const f = page.frames().find((x) => x.url().includes('/app/'))!;
+  const content = () => f.evaluate(() => Math.ceil(document.getElementById('root')!.getBoundingClientRect().bottom + window.scrollY));
+  await expect
+    .poll(async () => Math.abs((await page.locator(`#${id}`).evaluate((el) => el.getBoundingClientRect().height)) - (await content())), { timeout: 20000 })
+    .toBeLessThanOrEqual(1);
+  expect(await content()).toBeGreaterThan(720);
+});

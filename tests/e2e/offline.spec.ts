@@ -1,0 +1,144 @@
+/**
+ * Offline: after one visit to `#/`, the service worker has precached the whole build, so with the
+ * server stopped every scene (never opened before) loads and works, with zero console errors. A
+ * new build is picked up with the "updated, reload" notice, never a mix of chunks.
+ *
+ * Each test serves its own copy of the build on an ephemeral port, so it can stop the server and
+ * "deploy" a new build without touching the shared one.
+ */
+import { createServer, type Server } from 'node:http';
+import { cpSync, mkdtempSync, readFileSync, rmSync, writeFileSync, readdirSync } from 'node:fs';
+import { readFile, stat } from 'node:fs/promises';
+import { tmpdir } from 'node:os';
+import { extname, join, normalize } from 'node:path';
+import type { Page } from '@playwright/test';
+import { test, expect } from './fixtures';
+import { settleLazyViews } from './lazyViews';
+
+const dist = process.env.E2E_DIST ?? 'dist';
+
+// this file's tests need the service worker that the other specs block (playwright.config.ts)
+test.use({ serviceWorkers: 'allow' });
+const TYPES: Record<string, string> = {
+  '.html': 'text/html; charset=utf-8', '.js': 'text/javascript; charset=utf-8', '.css': 'text/css; charset=utf-8',
+  '.json': 'application/json', '.webmanifest': 'application/manifest+json', '.png': 'image/png', '.svg': 'image/svg+xml',
+  '.woff2': 'font/woff2', '.woff': 'font/woff', '.ttf': 'font/ttf',
+};
+
+/** A static server of a private copy of the build at /app/; `stop()` closes it and every connection. */
+async function serveCopy(): Promise<{ dir: string; base: string; stop: () => Promise<void> }> {
+  const dir = mkdtempSync(join(tmpdir(), 'rml-offline-'));
+  cpSync(dist, dir, { recursive: true });
+  const server: Server = createServer(async (req, res) => {
+    try {
+      let path = decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname);
+      if (!path.startsWith('/app/')) throw new Error('outside');
+      path = path.slice(4);
+      if (path.endsWith('/')) path += 'index.html';
+      const file = normalize(join(dir, path));
+      if (!file.startsWith(dir) || !(await stat(file)).isFile()) throw new Error('missing');
+      res.writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream', 'cache-control': 'no-store' });
+      res.end(await readFile(file));
+    } catch {
+      res.writeHead(404);
+      res.end();
+    }
+  });
+  await new Promise<void>((ok) => server.listen(0, '127.0.0.1', ok));
+  const port = (server.address() as { port: number }).port;
+  return {
+    dir,
+    base: `http://127.0.0.1:${port}/app/`,
+    stop: () =>
+      new Promise<void>((ok) => {
+        server.closeAllConnections();
+        server.close(() => ok());
+      }),
+  };
+}
+
+/** Wait until the service worker controls the page (it activates only after precaching everything). */
+async function waitForServiceWorker(page: Page): Promise<void> {
+  await page.evaluate(() => navigator.serviceWorker.ready.then(() => undefined));
+  await expect.poll(() => page.evaluate(() => navigator.serviceWorker.controller !== null), { timeout: 60000 }).toBe(true);
+}
+
+// A readout each scene computes (contract ids), to know the scene really works.
+const SCENES: [string, string][] = [
+  ['#/hemisphere', 'k'],
+  ['#/monte-carlo', 'exact'],
+  ['#/texture', 'bilinear'],
+  ['#/ray-sphere', 't-hit'],
+  ['#/area-light', 'reference'],
+];
+
+test('after one visit to #/, every scene opens and works with the server stopped', async ({ page, context }) => {
+  test.setTimeout(360_000);
+  const srv = await serveCopy();
+  try {
+    await page.goto(`${srv.base}#/`);
+    await expect(page.locator('main#main')).toBeVisible();
+    await waitForServiceWorker(page);
+    await srv.stop();
+    // the server is gone
+    expect(await fetch(srv.base).then(() => 'reached', () => 'failed')).toBe('failed');
+
+    for (const [hash, id] of [...SCENES, ['#/guide', ''] as [string, string]]) {
+      const p = await context.newPage();
+      const errors: string[] = [];
+      p.on('console', (m) => m.type() === 'error' && errors.push(m.text()));
+      p.on('pageerror', (e) => errors.push(e.message));
+      await p.goto(`${srv.base}${hash}`);
+      await expect(p.locator('main#main'), `${hash} offline`).toBeVisible({ timeout: 60000 });
+      await expect(p.locator('.loading'), `${hash} offline`).toHaveCount(0, { timeout: 60000 });
+      if (id) await expect(p.getByTestId(id).first(), `${hash} offline`).toHaveAttribute('data-value', /^-?\d/, { timeout: 60000 });
+      else await expect(p.getByRole('heading', { level: 1 })).toContainText('guide');
+      // bring every lazy view (plots, 3D, formulas) on screen so their chunks load
+      await settleLazyViews(p);
+      await expect(p.locator('.notice-error')).toHaveCount(0);
+      await expect(p.getByText('could not be drawn')).toHaveCount(0);
+      expect(errors, `console errors on ${hash} offline`).toEqual([]);
+      await p.close();
+    }
+  } finally {
+    await srv.stop().catch(() => undefined);
+    rmSync(srv.dir, { recursive: true, force: true });
+  }
+});
+
+test('a new build shows the "updated, reload" notice, and Reload switches to it whole', async ({ page }) => {
+  test.setTimeout(180_000);
+  const srv = await serveCopy();
+  try {
+    await page.goto(`${srv.base}#/texture`);
+    await waitForServiceWorker(page);
+    await expect(page.getByTestId('update-notice')).toHaveCount(0);
+
+    // "Deploy" a rebuild: a changed index.html, and the service worker of that build, whose
+    // precache manifest carries index.html's new revision (what `npm run build` writes).
+    const marker = `rebuilt-${Date.now()}`;
+    const html = readFileSync(join(srv.dir, 'index.html'), 'utf8').replace('</head>', `<meta name="rml-build" content="${marker}"></head>`);
+    writeFileSync(join(srv.dir, 'index.html'), html);
+    const swPath = join(srv.dir, 'sw.js');
+    const sw = readFileSync(swPath, 'utf8');
+    const sw2 = sw.replace(/(url:\s*"index\.html",\s*revision:\s*")[^"]+"/, `$1${marker}"`);
+    expect(sw2, 'the service worker precaches index.html with a revision').not.toBe(sw);
+    writeFileSync(swPath, sw2);
+    expect(readdirSync(srv.dir)).toContain('sw.js');
+
+    // the next visit finds the new worker: it waits, and the page says so unobtrusively
+    await page.reload();
+    const notice = page.getByTestId('update-notice');
+    await expect(notice).toBeVisible({ timeout: 60000 });
+    await expect(notice).toContainText('updated');
+    // the old build keeps running meanwhile (no mix): the page is still the old index.html
+    expect(await page.locator('meta[name="rml-build"]').count()).toBe(0);
+    await notice.getByRole('button', { name: 'Reload' }).click();
+    await expect(page.locator('meta[name="rml-build"]')).toHaveAttribute('content', marker, { timeout: 60000 });
+    await expect(page.getByTestId('bilinear').first()).toHaveAttribute('data-value', /^-?\d/);
+    await expect(page.getByTestId('update-notice')).toHaveCount(0);
+  } finally {
+    await srv.stop().catch(() => undefined);
+    rmSync(srv.dir, { recursive: true, force: true });
+  }
+});

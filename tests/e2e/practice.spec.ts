@@ -1,0 +1,248 @@
+/**
+ * Practice mode in the browser: right answers (as a student rounds them) are correct for several
+ * seeds of every question; each classic mistake is named by its id; garbage is "invalid" with a
+ * message; the worked solution shows the variant's own numbers; verdicts reach the page as
+ * `rml:practice-verdict` events; progress is kept and reset; the worksheet prints one question per
+ * page, then the answer key. Expected values come from the pure generators (src/practice), which
+ * the unit tests check against independent computations.
+ */
+import AxeBuilder from '@axe-core/playwright';
+import type { Page } from '@playwright/test';
+import { test, expect } from './fixtures';
+import { QUESTIONS, questionInfo } from '../../src/practice/questions';
+import { allAnswers, tn, type AnswerSpec, type QuestionId, type Variant } from '../../src/practice/model';
+import { q1Params } from '../../src/practice/q1';
+
+/** What a careful student types: numbers to 5 significant figures, formulas as expected, choices. */
+function studentText(a: AnswerSpec): string {
+  if (a.kind === 'number') return a.expected === null ? 'none' : String(Number(a.expected.toPrecision(5)));
+  if (a.kind === 'formula') return a.expectedText;
+  return a.expected;
+}
+
+async function openVariant(page: Page, q: QuestionId, seed: number, extra = ''): Promise<Variant> {
+  await page.goto(`./#/practice/${q}?seed=${seed}${extra}`);
+  await expect(page.getByTestId('variant-seed')).toHaveText(String(seed), { timeout: 30_000 });
+  await page.evaluate(() => {
+    const w = window as unknown as { __verdicts: unknown[]; __listening?: boolean };
+    w.__verdicts = [];
+    if (!w.__listening) window.addEventListener('rml:practice-verdict', (e) => w.__verdicts.push((e as CustomEvent).detail));
+    w.__listening = true;
+  });
+  return questionInfo(q).generate(seed);
+}
+
+async function fillAndCheck(page: Page, entries: [string, string][]): Promise<void> {
+  for (const [name, text] of entries) await page.getByTestId(`answer-${name}`).fill(text);
+  await page.getByRole('button', { name: 'Check', exact: true }).click();
+  for (const [name] of entries) await expect(page.getByTestId(`verdict-${name}`)).toHaveAttribute('data-value', /.+/);
+}
+
+for (const q of QUESTIONS) {
+  test(`${q.id}: right answers for several seeds are correct, and each verdict is announced`, async ({ page }) => {
+    for (const seed of [3, 41, 1234]) {
+      const v = await openVariant(page, q.id, seed);
+      for (const g of v.givens) await expect(page.getByTestId(`given-${g.name}`)).toHaveAttribute('data-value', g.value);
+      const answers = allAnswers(v);
+      await fillAndCheck(page, answers.map((a) => [a.name, studentText(a)]));
+      for (const a of answers) await expect(page.getByTestId(`verdict-${a.name}`), `${q.id} seed ${seed} ${a.name}`).toHaveAttribute('data-value', 'correct');
+      const events = await page.evaluate(() => (window as unknown as { __verdicts: { question: string; seed: number; name: string; verdict: string }[] }).__verdicts);
+      expect(events.map((e) => e.name).sort()).toEqual(answers.map((a) => a.name).sort());
+      expect(events.every((e) => e.question === q.id && e.seed === seed && e.verdict === 'correct')).toBe(true);
+      await expect(page.getByTestId('practice-summary')).toContainText(`${answers.length} of ${answers.length} correct`);
+    }
+  });
+
+  test(`${q.id}: every classic mistake of a variant is named by its id`, async ({ page }) => {
+    // a few seeds, so the mistakes that only some variants have are covered too
+    const ids = new Set<string>();
+    for (const seed of [5, 77]) {
+      const v = await openVariant(page, q.id, seed);
+      const nums = allAnswers(v).filter((a) => a.kind === 'number');
+      const rounds = Math.max(0, ...nums.map((a) => a.mistakes.length));
+      for (let r = 0; r < rounds; r++) {
+        const entries: [string, string][] = [];
+        const want = new Map<string, string>();
+        for (const a of nums) {
+          const m = a.mistakes[r];
+          if (!m) continue;
+          entries.push([a.name, String(Number(m.value.toPrecision(6)))]);
+          want.set(a.name, `mistake:${m.id}`);
+        }
+        await fillAndCheck(page, entries);
+        for (const [name, w] of want) {
+          await expect(page.getByTestId(`verdict-${name}`), `${q.id} seed ${seed} ${name}`).toHaveAttribute('data-value', w);
+          ids.add(w);
+        }
+        await expect(page.getByTestId(`verdict-${entries[0]![0]}`)).not.toHaveText(/^\s*$/);
+      }
+      for (const a of allAnswers(v)) {
+        if (a.kind !== 'choice') continue;
+        for (const m of a.mistakes) {
+          await fillAndCheck(page, [[a.name, m.value]]);
+          await expect(page.getByTestId(`verdict-${a.name}`)).toHaveAttribute('data-value', `mistake:${m.id}`);
+          ids.add(m.id);
+        }
+      }
+    }
+    if (q.id !== 'q1') expect(ids.size).toBeGreaterThan(2);
+  });
+}
+
+test('q1: formula mistakes (inverted Jacobian, lost lower limit, lost 1/a) and equivalent forms', async ({ page }) => {
+  // find a seed with m = 1 and a ≠ 1 among the first few
+  let seed = 0;
+  while (!(q1Params(seed).m === 1 && q1Params(seed).a.p !== q1Params(seed).a.q)) seed++;
+  const P = q1Params(seed);
+  const a = `(${P.a.p}/${P.a.q})`;
+  const E = `(e^(2*pi*${a}) - 1)`;
+  await openVariant(page, 'q1', seed);
+  await fillAndCheck(page, [
+    ['p-theta', '2*cos(θ)/sin(θ)'],
+    ['p-phi', `exp(${a}*phi)/${E}`],
+    ['cdf-theta', '-cos(theta)^2'],
+    ['cdf-phi', `exp(${a}*phi)/${E}`],
+    ['theta-of-xi', 'acos(1 - 2*xi)'],
+    ['phi-of-xi', `ln(1 + ${E}*ξ₂)`],
+  ]);
+  await expect(page.getByTestId('verdict-p-theta')).toHaveAttribute('data-value', 'mistake:inverted-jacobian');
+  await expect(page.getByTestId('verdict-p-phi')).toHaveAttribute('data-value', 'mistake:missing-1-over-a');
+  await expect(page.getByTestId('verdict-cdf-theta')).toHaveAttribute('data-value', 'mistake:no-lower-limit');
+  await expect(page.getByTestId('verdict-cdf-phi')).toHaveAttribute('data-value', 'mistake:no-lower-limit');
+  await expect(page.getByTestId('verdict-theta-of-xi')).toHaveAttribute('data-value', 'mistake:missing-half');
+  await expect(page.getByTestId('verdict-phi-of-xi')).toHaveAttribute('data-value', 'mistake:missing-1-over-a');
+  // equivalent forms of the right answers
+  await fillAndCheck(page, [
+    ['p-theta', '2 sin(theta) cos(theta)'.replace(' sin', '*sin').replace(') cos', ')*cos')],
+    ['cdf-theta', 'sin(theta)^2'],
+    ['theta-of-xi', 'asin(sqrt(ξ))'],
+    ['phi-of-xi', `log(1 + ${E}*(1 - xi))/${a}`],
+  ]);
+  for (const n of ['p-theta', 'cdf-theta', 'theta-of-xi', 'phi-of-xi']) await expect(page.getByTestId(`verdict-${n}`)).toHaveAttribute('data-value', 'correct');
+  await expect(page.getByTestId('verdict-phi-of-xi')).toContainText('same distribution');
+});
+
+test('q3: the flipped convention v′ = 1 − v is accepted and said so', async ({ page }) => {
+  let seed = 1;
+  let v = questionInfo('q3').generate(seed);
+  const flipOf = (x: Variant) => allAnswers(x).find((a) => a.name === 'bilinear')!;
+  while (!(flipOf(v).kind === 'number' && (flipOf(v) as { alternatives: unknown[] }).alternatives.length > 0)) v = questionInfo('q3').generate(++seed);
+  await openVariant(page, 'q3', seed);
+  const b = flipOf(v) as Extract<AnswerSpec, { kind: 'number' }>;
+  await fillAndCheck(page, [['bilinear', String(b.alternatives[0]!.value)]]);
+  await expect(page.getByTestId('verdict-bilinear')).toHaveAttribute('data-value', 'correct');
+  await expect(page.getByTestId('verdict-bilinear')).toContainText('1 − v');
+});
+
+test('garbage gives invalid with a message, never a crash', async ({ page }) => {
+  await openVariant(page, 'q1', 9);
+  await fillAndCheck(page, [
+    ['k', '2*(3'],
+    ['p-theta', 'sin(theta'],
+    ['p-phi', 'foo(phi)'],
+    ['cdf-theta', 'x^2'],
+  ]);
+  for (const n of ['k', 'p-theta', 'p-phi', 'cdf-theta']) {
+    await expect(page.getByTestId(`verdict-${n}`)).toHaveAttribute('data-value', 'invalid');
+    await expect(page.getByTestId(`verdict-${n}`)).toContainText(/\w{4,}/);
+  }
+  await expect(page.getByTestId('verdict-cdf-theta')).toContainText("unknown symbol 'x'");
+  await openVariant(page, 'q5', 9);
+  await fillAndCheck(page, [
+    ['case', 'sideways'],
+    ['a', 'abc'],
+  ]);
+  await expect(page.getByTestId('verdict-case')).toHaveAttribute('data-value', 'invalid');
+  await expect(page.getByTestId('verdict-case')).toContainText('two-hits');
+  await expect(page.getByTestId('verdict-a')).toHaveAttribute('data-value', 'invalid');
+});
+
+test('the worked solution shows the variant’s own numbers, the expected answers and the scene link', async ({ page }) => {
+  for (const [q, seed] of [['q5', 12], ['q4', 8], ['q6', 3]] as const) {
+    const v = await openVariant(page, q, seed);
+    await expect(page.getByTestId('solution')).toHaveCount(0);
+    await page.getByTestId('show-solution').click();
+    const sol = page.getByTestId('solution');
+    await expect(sol).toBeVisible();
+    await expect(page.locator('.practice-solution .math-pending')).toHaveCount(0);
+    for (const a of allAnswers(v)) {
+      if (a.kind !== 'number') continue;
+      await expect(page.getByTestId(`expected-${a.name}`)).toHaveAttribute('data-value', a.expected === null ? 'none' : String(a.expected));
+    }
+    const key = allAnswers(v).find((a) => a.kind === 'number' && a.expected !== null) as Extract<AnswerSpec, { kind: 'number' }>;
+    await expect(sol).toContainText(tn(key.expected!));
+    const href = await page.getByTestId('scene-link').getAttribute('href');
+    expect(href).toBe(v.sceneHref);
+  }
+  // the scene link opens the scene with the variant's numbers
+  const v = await openVariant(page, 'q5', 12);
+  await page.getByTestId('show-solution').click();
+  await page.getByTestId('scene-link').click();
+  const disc = allAnswers(v).find((a) => a.name === 'discriminant') as Extract<AnswerSpec, { kind: 'number' }>;
+  await expect(page.getByTestId('discriminant')).toHaveAttribute('data-value', String(disc.expected), { timeout: 30_000 });
+});
+
+test('progress is kept per question and can be reset; a bad seed is named and replaced', async ({ page }) => {
+  const v = await openVariant(page, 'q4', 21);
+  await fillAndCheck(page, allAnswers(v).map((a) => [a.name, studentText(a)]));
+  await page.goto('./#/');
+  await page.getByTestId('practice-link').click();
+  await expect(page.getByTestId('progress-q4')).toHaveAttribute('data-correct', '1');
+  await expect(page.getByTestId('progress-q4')).toContainText('1 variant tried, 1 fully correct');
+  await expect(page.getByTestId('progress-q1')).toHaveAttribute('data-attempted', '0');
+  await page.getByTestId('reset-progress').click();
+  await expect(page.getByTestId('progress-q4')).toHaveAttribute('data-attempted', '0');
+  await page.goto('./#/practice/q2?seed=banana');
+  await expect(page.getByTestId('param-notice')).toContainText('seed');
+  await expect(page.getByTestId('variant-seed')).toHaveText(/^\d+$/);
+  await page.getByTestId('new-variant').click();
+  await expect(page).toHaveURL(/#\/practice\/q2\?seed=\d+/);
+});
+
+for (const theme of ['light', 'dark'] as const)
+test(`no serious or critical axe violations on a checked question (${theme} theme)`, async ({ page }) => {
+  const v = await openVariant(page, 'q3', 17, `&theme=${theme}`);
+  await expect(page.locator('html')).toHaveAttribute('data-theme', theme);
+  await fillAndCheck(page, allAnswers(v).map((a, i) => [a.name, i % 2 ? studentText(a) : '1']));
+  await expect(page.locator('.math-pending')).toHaveCount(0);
+  const r = await new AxeBuilder({ page }).analyze();
+  const bad = r.violations.filter((x) => x.impact === 'serious' || x.impact === 'critical').map((x) => `${x.id}: ${x.nodes.map((n) => n.target.join(' ')).join(', ')}`);
+  expect(bad).toEqual([]);
+});
+
+test('the worksheet prints one question per page, then the answer key', async ({ page }) => {
+  await page.goto('./#/practice/sheet?seed=5&q=1,3,5&count=1');
+  await expect(page.getByTestId('sheet-page')).toHaveCount(3, { timeout: 30_000 });
+  await expect(page.locator('.math-pending')).toHaveCount(0);
+  await expect(page.getByTestId('sheet-key')).toContainText('Q5 variant 5');
+  const pdf = await page.pdf({ format: 'A4' });
+  const pages = (pdf.toString('latin1').match(/\/Type\s*\/Page(?![s\w])/g) ?? []).length;
+  expect(pages).toBe(4);
+  await page.goto('./#/practice/sheet?seed=9&q=2,4&count=2');
+  await expect(page.getByTestId('sheet-page')).toHaveCount(4);
+  await expect(page.locator('.math-pending')).toHaveCount(0);
+  const pdf2 = await page.pdf({ format: 'A4' });
+  expect((pdf2.toString('latin1').match(/\/Type\s*\/Page(?![s\w])/g) ?? []).length).toBe(5);
+});
+
+test('each question’s scene link opens its scene in the variant’s configuration (no parameter notices; same numbers)', async ({ page }) => {
+  test.setTimeout(180_000);
+  for (const q of QUESTIONS) {
+    const v = q.generate(31);
+    await page.goto(`./${v.sceneHref}`);
+    await page.waitForSelector('main#main');
+    await expect(page.locator('.loading')).toHaveCount(0, { timeout: 60_000 });
+    await expect(page.getByTestId('param-notice'), `${q.id}: ${v.sceneHref}`).toHaveCount(0);
+    const same: Record<string, string[]> = { q3: ['nearest', 'bilinear', 'sphere-u', 'sphere-v', 'sphere-bilinear'], q4: ['exact'], q5: ['a', 'b', 'c', 'discriminant', 't-hit'] };
+    for (const name of same[q.id] ?? []) {
+      const a = allAnswers(v).find((x) => x.name === name) as Extract<AnswerSpec, { kind: 'number' }>;
+      let got = NaN;
+      await expect
+        .poll(async () => {
+          got = Number(await page.getByTestId(name).first().getAttribute('data-value'));
+          return Math.abs(got - a.expected!) <= 1e-12 * Math.max(1, Math.abs(a.expected!));
+        }, { timeout: 30_000, message: `${q.id} ${name}` })
+        .toBe(true);
+    }
+  }
+});

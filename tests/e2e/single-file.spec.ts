@@ -1,0 +1,50 @@
+/**
+ * The single-file copy (`npm run build:single` → dist-single/index.html) opens from file:// with no
+ * server and no network, and every route works, workers included.
+ */
+import { existsSync } from 'node:fs';
+import { resolve } from 'node:path';
+import { pathToFileURL } from 'node:url';
+import { test, expect } from './fixtures';
+import { settleLazyViews } from './lazyViews';
+
+const file = resolve(process.env.E2E_SINGLE ?? 'dist-single/index.html');
+
+// A readout each scene computes; monte-carlo's `estimate` and hemisphere's `mc-uniform` come from
+// workers, so they prove the inlined workers run from file://.
+const ROUTES: [string, string[]][] = [
+  ['#/', []],
+  ['#/hemisphere', ['k', 'mc-uniform']],
+  ['#/monte-carlo', ['exact', 'estimate']],
+  ['#/texture', ['bilinear']],
+  ['#/ray-sphere', ['t-hit']],
+  ['#/area-light', ['reference', 'estimate']],
+  ['#/guide', []],
+];
+
+test('the single HTML file opens from file:// and every route works with no network', async ({ page, context }) => {
+  test.setTimeout(240_000);
+  expect(existsSync(file), `${file} exists (run "npm run build:single")`).toBe(true);
+  // nothing may leave the file: any http(s) request fails the test
+  const requests: string[] = [];
+  await context.route(/^https?:/, (route) => {
+    requests.push(route.request().url());
+    return route.abort();
+  });
+  await context.setOffline(true);
+  const url = pathToFileURL(file).href;
+  for (const [hash, ids] of ROUTES) {
+    await page.goto(`${url}${hash}`);
+    await expect(page.locator('main#main')).toBeVisible({ timeout: 30000 });
+    await expect(page.locator('.loading')).toHaveCount(0, { timeout: 30000 });
+    for (const id of ids) await expect(page.getByTestId(id).first()).toHaveAttribute('data-value', /^-?\d/, { timeout: 60000 });
+    // bring every lazy view (plots, 3D, formulas) on screen so their chunks load
+    await settleLazyViews(page);
+    await expect(page.locator('.notice-error')).toHaveCount(0);
+  }
+  await page.goto(`${url}#/texture?u=0.7`);
+  await page.getByTestId('copy-link').click();
+  // a link copied from the file is the file's own URL
+  await expect(page.getByTestId('share-text')).toHaveValue(new RegExp(`^${url.replace(/[.*+?^${}()|[\]\\]/g, '\\$&')}#/texture\\?u=0\\.7`));
+  expect(requests).toEqual([]);
+});

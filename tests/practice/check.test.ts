@@ -1,0 +1,85 @@
+/** The answer checker: numbers (tolerance, expressions, none), formulas (equivalence by the whitelisted compiler), choices. */
+import { describe, expect, it } from 'vitest';
+import { checkAnswer, checkFormula, classifyNumber, normaliseInput, parseNumberAnswer, tolerance } from '../../src/practice/check';
+import type { ChoiceAnswer, FormulaAnswer, NumberAnswer } from '../../src/practice/model';
+
+const numSpec: NumberAnswer = {
+  kind: 'number',
+  name: 'x',
+  label: 'x',
+  expected: 56 / 3,
+  alternatives: [{ value: 10, message: 'flipped' }],
+  mistakes: [{ id: 'no-div', value: 56 / 12, message: 'm' }],
+};
+
+describe('numbers', () => {
+  it('reads numbers, constant expressions and none; rejects garbage with a message', async () => {
+    expect(await parseNumberAnswer('18.67')).toEqual({ ok: true, value: 18.67 });
+    expect(await parseNumberAnswer(' none ')).toEqual({ ok: true, value: null });
+    const e = await parseNumberAnswer('56/3');
+    expect(e.ok && e.value).toBeCloseTo(56 / 3, 14);
+    const k = await parseNumberAnswer('2/(e^(2π) − 1)');
+    expect(k.ok && k.value).toBeCloseTo(2 / Math.expm1(2 * Math.PI), 15);
+    for (const bad of ['', 'abc', '2*(3', '1,5', 'x+1', '1/0']) {
+      const r = await parseNumberAnswer(bad);
+      expect(r.ok, bad).toBe(false);
+      if (!r.ok) expect(r.error.length).toBeGreaterThan(5);
+    }
+  });
+  it('tolerance: 3 significant figures pass, 2 do not; alternatives correct with a note; mistakes named', async () => {
+    expect(tolerance(0)).toBe(1e-6);
+    expect((await checkAnswer(numSpec, '18.7')).value).toBe('correct');
+    expect((await checkAnswer(numSpec, '18.6667')).value).toBe('correct');
+    expect((await checkAnswer(numSpec, '19')).value).toBe('incorrect');
+    expect((await checkAnswer(numSpec, '10')).message).toContain('flipped');
+    expect((await checkAnswer(numSpec, '4.667')).value).toBe('mistake:no-div');
+    expect((await checkAnswer(numSpec, 'none')).value).toBe('incorrect');
+    expect(classifyNumber({ ...numSpec, expected: null }, null).value).toBe('correct');
+    expect((await checkAnswer(numSpec, 'garbage')).value).toBe('invalid');
+  });
+});
+
+describe('formulas', () => {
+  const spec: FormulaAnswer = {
+    kind: 'formula',
+    name: 'p-theta',
+    label: 'p(θ)',
+    variables: ['theta'],
+    domain: [[0, Math.PI / 2]],
+    expected: (t) => Math.sin(2 * t),
+    expectedText: 'sin(2*theta)',
+    alternatives: [],
+    mistakes: [{ id: 'inverted-jacobian', fns: [(t) => (2 * Math.cos(t)) / Math.sin(t)], message: 'inverted' }],
+  };
+  it('accepts sin 2θ as 2 sin θ cos θ (and other equivalent forms), rejects near misses', async () => {
+    for (const ok of ['2*sin(theta)*cos(theta)', 'sin(2θ)'.replace('2θ', '2*θ'), '2 sin(θ) cos(θ)'.replace(/ /g, '*').replace('2*sin', '2*sin'), 'sin(theta + theta)', '2*tan(theta)*cos(theta)^2']) {
+      expect((await checkFormula(spec, ok)).value, ok).toBe('correct');
+    }
+    for (const bad of ['2.001*sin(theta)*cos(theta)', 'sin(2*theta) + 0.0001', 'sin(2.0001*theta)', 'sin(theta)*cos(theta)', 'cos(2*theta)']) {
+      expect((await checkFormula(spec, bad)).value, bad).toBe('incorrect');
+    }
+    expect((await checkFormula(spec, '2*cot(theta)'.replace('cot(theta)', 'cos(theta)/sin(theta)'))).value).toBe('mistake:inverted-jacobian');
+  });
+  it('bad syntax and unknown names are invalid with a message', async () => {
+    for (const bad of ['sin(theta', 'x^2', 'foo(theta)', 'theta = 1', '']) {
+      const r = await checkFormula(spec, bad);
+      expect(r.value, bad).toBe('invalid');
+      expect(r.message.length).toBeGreaterThan(10);
+    }
+  });
+  it('normalises what people type', () => {
+    expect(normaliseInput('ln(1 + ξ₂)')).toBe('log(1 + xi)');
+    expect(normaliseInput('arccos(1 − 2ξ1)/2')).toBe('acos(1 - 2xi)/2');
+    expect(normaliseInput('2·sin(θ)×cos(θ)')).toBe('2*sin(θ)*cos(θ)');
+  });
+});
+
+describe('choices', () => {
+  it('exact option names (spaces as hyphens), others invalid', async () => {
+    const c: ChoiceAnswer = { kind: 'choice', name: 'case', label: 'case', options: ['miss', 'two-hits', 'inside'], expected: 'inside', mistakes: [{ id: 'ignored-t-sign', value: 'two-hits', message: 'm' }], why: 'w' };
+    expect((await checkAnswer(c, 'Inside')).value).toBe('correct');
+    expect((await checkAnswer(c, 'two hits')).value).toBe('mistake:ignored-t-sign');
+    expect((await checkAnswer(c, 'miss')).value).toBe('incorrect');
+    expect((await checkAnswer(c, 'sideways')).value).toBe('invalid');
+  });
+});
