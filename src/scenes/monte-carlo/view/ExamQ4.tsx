@@ -36,7 +36,7 @@ export function Q4a({ c, a, b, exact, isSquare }: { c: number; a: number; b: num
       <Derivation testId="derivation-4a">
         {!isSquare ? <p className="mc-note">Your f is not of the form (x + c)²; this is the exam’s integrand. Your f’s exact integral (by quadrature) is the readout below.</p> : null}
         <p>Expand the square, integrate term by term, and evaluate the antiderivative at the limits:</p>
-        <div className="mc-math">
+        <div className="mc-math" tabIndex={0} role="group" aria-label="derivation (scrolls sideways when wider than the screen)">
           <MathTex
             display
             tex={String.raw`\begin{aligned} I &= \int_{${n4(a)}}^{${n4(b)}} (${sq(c)})^2\,dx = \int_{${n4(a)}}^{${n4(b)}} \big(x^2 + ${n4(r.twoC)}x + ${n4(r.c2)}\big)\,dx \\ &= \left[\frac{x^3}{3} + ${n4(c)}x^2 + ${n4(r.c2)}x\right]_{${n4(a)}}^{${n4(b)}} \\ &= \big(${F(r.Fb)}\big) - \big(${F(r.Fa)}\big) \\ &= ${n4(r.valueB)} - ${n4(r.valueA)} = ${thirds(r.value)} \approx ${formatNumber(r.value, 10)} \end{aligned}`}
@@ -64,14 +64,14 @@ export function Q4b({ table, c, a, b, headline, keyFigures, children }: { table:
         <p>
           The pdf is p = 1/(b − a) = {formatNumber(p, 6)}. Evaluate f at each sample, divide by p, and average over the N = {N} samples:
         </p>
-        <div className="mc-math">
+        <div className="mc-math" tabIndex={0} role="group" aria-label="derivation (scrolls sideways when wider than the screen)">
           <MathTex
             display
             tex={String.raw`\begin{aligned} ${rows.map((r, i) => `f(x_${i + 1}) &= ${c === null ? '' : `${sqAt(r.x, c)} = `}${n4(r.f)}`).join(' \\\\ ')} \end{aligned}`}
           />
           <MathTex
             display
-            tex={String.raw`\begin{aligned} \langle I\rangle &= \frac{1}{${N}}\sum_{i=1}^{${N}} \frac{f(x_i)}{p(x_i)} = \frac{1}{${N}}\cdot\frac{${rows.map((r) => n4(r.f)).join(' + ')}}{${n4(p)}} \\ &= \frac{1}{${N}}\cdot\frac{${n4(sum)}}{${n4(p)}} = ${formatNumber(est, 8)} \end{aligned}`}
+            tex={String.raw`\begin{aligned} \langle I\rangle &= \frac{1}{${N}}\sum_{i=1}^{${N}} \frac{f(x_i)}{p(x_i)} \\ &= \frac{1}{${N}}\cdot\frac{${rows.map((r) => n4(r.f)).join(' + ')}}{${n4(p)}} \\ &= \frac{1}{${N}}\cdot\frac{${n4(sum)}}{${n4(p)}} = ${formatNumber(est, 8)} \end{aligned}`}
           />
         </div>
         {children}
@@ -96,14 +96,14 @@ export function Q4c({ table, c, a, b, isSquare, answer }: { table: SampleTable; 
             <p>
               Normalise: p must integrate to 1 over [{formatNumber(a, 6)}, {formatNumber(b, 6)}], and ∫ f dx = I = {formatNumber(I, 8)} from (a), so
             </p>
-            <div className="mc-math" data-testid="pdf-4c">
+            <div className="mc-math" data-testid="pdf-4c" tabIndex={0} role="group" aria-label="the pdf p(x)">
               <MathTex
                 display
                 tex={String.raw`p(x) = \frac{(${sq(c)})^2}{\int_{${n4(a)}}^{${n4(b)}} (${sq(c)})^2\,dx} = \frac{(${sq(c)})^2}{${thirds(I)}} = \frac{3(${sq(c)})^2}{${n4(D)}}`}
               />
             </div>
             <p>Every term of the estimator is then the same number:</p>
-            <div className="mc-math">
+            <div className="mc-math" tabIndex={0} role="group" aria-label="derivation (scrolls sideways when wider than the screen)">
               <MathTex
                 display
                 tex={String.raw`\frac{f(x_i)}{p(x_i)} = \frac{(x_i ${c >= 0 ? '+' : '-'} ${n4(Math.abs(c))})^2}{\tfrac{3}{${n4(D)}}(x_i ${c >= 0 ? '+' : '-'} ${n4(Math.abs(c))})^2} = \frac{${n4(D)}}{3} \approx ${n4(I)}`}
