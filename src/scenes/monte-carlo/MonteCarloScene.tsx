@@ -341,7 +341,7 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
             </p>
           ) : null}
           {curve && f ? <FunctionPlot curve={curve} samples={table ? table.rows.map((r) => [r.x, r.f] as [number, number]) : []} a={a} b={b} /> : null}
-          <div className="mc-math">
+          <div className="mc-math" tabIndex={0} role="group" aria-label="formulas (scroll sideways when wider than the screen)">
             <MathTex
               display
               tex={String.raw`\begin{gathered}\langle I\rangle = \frac{1}{N}\sum_{i=1}^{N}\frac{f(x_i)}{p(x_i)},\quad x_i\sim p \\ \operatorname{SE} = \frac{s}{\sqrt N}\ \text{(independent } x_i \text{ only)} \\ s^2 = \frac{1}{N-1}\sum_{i=1}^{N}\Big(\frac{f(x_i)}{p(x_i)} - \langle I\rangle\Big)^2\end{gathered}`}
