@@ -53,7 +53,7 @@ export function TimelineTransport({ timeline: tl, label, format, children, testI
           Step ▸
         </button>
         <button type="button" onClick={tl.reset} data-testid={`${testId}-reset`} title="Back to the start (r)">
-          ⏮ Reset
+          ↺ Reset
         </button>
         <label className="timeline-speed">
           <span>Speed</span>

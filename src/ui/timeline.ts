@@ -24,7 +24,10 @@ export const TIMELINE_SPEEDS = [0.25, 0.5, 1, 2, 4] as const;
  * URL parameters of a timeline, to spread into a scene's schema:
  * `t` (position, 0…max) and `play` (0/1).
  */
-export function timelineParams(opts: { max: number; default?: number; integer?: boolean }): { t: ParamSpec; play: ParamSpec } {
+export function timelineParams(opts: { max: number; default?: number; integer?: boolean }): {
+  t: Extract<ParamSpec, { kind: 'number' }>;
+  play: Extract<ParamSpec, { kind: 'bool' }>;
+} {
   return {
     t: { kind: 'number', default: opts.default ?? 0, min: 0, max: opts.max, integer: opts.integer, label: 'animation position' },
     play: { kind: 'bool', default: false, label: 'animation playing' },
