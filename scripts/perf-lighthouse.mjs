@@ -33,7 +33,7 @@ import { CHROMIUM_ARGS, findChromium, NO_CHROMIUM_HELP } from './chromium.mjs';
  * The routes measured by default. Add new pages here (practice and guide routes, …); each entry is
  * the hash Lighthouse opens (query parameters allowed: '#/texture?u=0.4').
  */
-const ROUTES = ['#/', '#/hemisphere', '#/monte-carlo', '#/texture', '#/ray-sphere', '#/area-light'];
+const ROUTES = ['#/', '#/hemisphere', '#/monte-carlo', '#/texture', '#/ray-sphere', '#/area-light', '#/practice', '#/guide'];
 
 const args = process.argv.slice(2);
 const opt = (name, def) => {
