@@ -57,7 +57,7 @@ export function App() {
     );
   else if (route.path === '/guide')
     body = (
-      <Suspense fallback={<main id="main" className="page"><p className="loading" role="status">Loading the teacher’s guide…</p></main>}>
+      <Suspense key="guide" fallback={<main id="main" className="page"><p className="loading" role="status">Loading the teacher’s guide…</p></main>}>
         <Guide flags={flags} />
       </Suspense>
     );

@@ -36,16 +36,8 @@ function showUpdateNotice(update: () => void): void {
 }
 
 export function registerPwa(): void {
-  // When a new build takes over (Reload pressed here or in another tab), every page still running
-  // the old build reloads at once: its lazy chunks are no longer in the cache, and the state lives
-  // in the URL, so nothing is lost. (Not on the first install, when there was no build before.)
-  const hadController = navigator.serviceWorker.controller !== null;
-  let reloading = false;
-  navigator.serviceWorker.addEventListener('controllerchange', () => {
-    if (!hadController || reloading) return;
-    reloading = true;
-    window.location.reload();
-  });
+  // (Pages still running the old build in other tabs reload when the new build takes over:
+  // registerSW's own 'controlling' handler does it; tests/e2e/offline.spec.ts checks it.)
   const updateSW = registerSW({
     immediate: true,
     onNeedRefresh() {

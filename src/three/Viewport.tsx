@@ -1,5 +1,5 @@
-import { useEffect, useRef, useState } from 'react';
-import type { Engine, ViewportContext } from './engine';
+import { useEffect, useId, useRef, useState } from 'react';
+import type { AxisDirs, Engine, ViewportContext } from './engine';
 import { observeVisibility, useSeenOnce } from '../ui/useInView';
 
 export type { ViewportContext } from './engine';
@@ -16,15 +16,63 @@ export interface ViewportProps {
   /** Re-run setup (after cleanup) when these change. */
   deps?: readonly unknown[];
   testId?: string;
+  /**
+   * Mark +x as the azimuth origin (φ = 0) in the axis triad. On by default: every scene that uses
+   * spherical angles measures φ from +x with z up. Pass false where φ means nothing.
+   */
+  phiZero?: boolean;
   children?: React.ReactNode;
+}
+
+/** Keyboard steps: 10° per arrow press (2° with Shift), ×1.15 per +/− press. */
+const ORBIT_STEP = (10 * Math.PI) / 180;
+const FINE_STEP = (2 * Math.PI) / 180;
+const ZOOM_STEP = 1.15;
+
+/**
+ * Keyboard orbit and zoom for a focused viewport: arrows orbit about the target, + / − zoom,
+ * Home resets the view. Returns true when the key was handled.
+ */
+export function viewportKey(engine: Pick<Engine, 'orbitBy' | 'zoomBy' | 'resetView'>, e: Pick<KeyboardEvent, 'key' | 'shiftKey'>): boolean {
+  const step = e.shiftKey ? FINE_STEP : ORBIT_STEP;
+  switch (e.key) {
+    case 'ArrowLeft':
+      engine.orbitBy(-step, 0);
+      return true;
+    case 'ArrowRight':
+      engine.orbitBy(step, 0);
+      return true;
+    case 'ArrowUp':
+      engine.orbitBy(0, step);
+      return true;
+    case 'ArrowDown':
+      engine.orbitBy(0, -step);
+      return true;
+    case '+':
+    case '=':
+      engine.zoomBy(1 / ZOOM_STEP);
+      return true;
+    case '-':
+    case '_':
+      engine.zoomBy(ZOOM_STEP);
+      return true;
+    case 'Home':
+      engine.resetView();
+      return true;
+    default:
+      return false;
+  }
 }
 
 /**
  * A three.js viewport: three.js is imported only when the viewport scrolls near the screen;
  * renders on demand; pauses while off screen or while the tab is hidden. Drag to orbit, scroll
- * to zoom; focus it and use the arrow keys to pan.
+ * to zoom; focus it and use the arrow keys to orbit, + / − to zoom, Home (or "Reset view") to go
+ * back to the scene's opening camera. A small triad labels the world axes (and φ = 0).
  */
-export function Viewport({ ariaLabel, height = 360, setup, deps = [], testId, children }: ViewportProps) {
+export function Viewport({ ariaLabel, height = 360, setup, deps = [], testId, phiZero = true, children }: ViewportProps) {
+  const hintId = useId();
+  const triad = useRef<SVGSVGElement>(null);
   const box = useRef<HTMLDivElement>(null);
   const seen = useSeenOnce(box);
   const [engine, setEngine] = useState<Engine | null>(null);
@@ -78,9 +126,15 @@ export function Viewport({ ariaLabel, height = 360, setup, deps = [], testId, ch
     engine?.ctx.renderer.domElement.setAttribute('aria-label', ariaLabel);
   }, [engine, ariaLabel]);
 
+  // the first setup places the scene's camera: that is the home view "Reset view" returns to
+  const homeSaved = useRef<Engine | null>(null);
   useEffect(() => {
     if (!engine) return;
     const cleanup = setupRef.current(engine.ctx);
+    if (homeSaved.current !== engine) {
+      homeSaved.current = engine;
+      engine.saveHomeView();
+    }
     engine.ctx.invalidate();
     return () => {
       if (typeof cleanup === 'function') cleanup();
@@ -89,22 +143,101 @@ export function Viewport({ ariaLabel, height = 360, setup, deps = [], testId, ch
     // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [engine, ...deps]);
 
+  // the axis triad follows the camera after every render (direct DOM writes: no React render)
+  useEffect(() => {
+    if (!engine) return;
+    return engine.onAfterRender((axes) => drawTriad(triad.current, axes));
+  }, [engine]);
+
+  const onKeyDown = (e: React.KeyboardEvent<HTMLDivElement>) => {
+    if (!engine || e.ctrlKey || e.metaKey || e.altKey) return;
+    const tag = (e.target as HTMLElement).tagName;
+    if (tag === 'INPUT' || tag === 'SELECT' || tag === 'TEXTAREA') return;
+    if (viewportKey(engine, e)) e.preventDefault(); // no page scroll; classroom shortcuts skip handled keys
+  };
+
+  const ready = status === 'ready';
   return (
-    <div
-      className="viewport"
-      ref={box}
-      style={{ height }}
-      tabIndex={0}
-      data-testid={testId}
-      data-status={status}
-      aria-label={`${ariaLabel} (drag to orbit, scroll to zoom, arrow keys to pan)`}
-      role="group"
-    >
-      {status === 'loading' ? <p className="viewport-msg">Loading 3D view…</p> : null}
-      {status === 'no-webgl' ? (
-        <p className="viewport-msg">This browser cannot create a WebGL context, so the 3D view is off; every number on the page still works.</p>
-      ) : null}
-      {children}
+    <div className="viewport-wrap">
+      <div
+        className="viewport"
+        ref={box}
+        style={{ height }}
+        tabIndex={0}
+        data-testid={testId}
+        data-status={status}
+        aria-label={`${ariaLabel} (drag or arrow keys to orbit, scroll or + / − to zoom, Home to reset the view)`}
+        aria-describedby={hintId}
+        role="group"
+        onKeyDown={onKeyDown}
+      >
+        {status === 'loading' ? <p className="viewport-msg">Loading 3D view…</p> : null}
+        {status === 'no-webgl' ? (
+          <p className="viewport-msg">This browser cannot create a WebGL context, so the 3D view is off; every number on the page still works.</p>
+        ) : null}
+        {ready ? (
+          <svg className="viewport-triad" ref={triad} viewBox="-44 -44 88 88" aria-hidden="true" data-testid={testId ? `${testId}-axes` : undefined}>
+            {(['x', 'y', 'z'] as const).map((k) => (
+              <g key={k} className={`axis-${k}`} data-axis={k}>
+                <line x1="0" y1="0" x2="0" y2="0" />
+                <text x="0" y="0" textAnchor="middle" dominantBaseline="central">
+                  {k}
+                </text>
+                {k === 'x' && phiZero ? (
+                  <text className="phi0" x="0" y="0" textAnchor="middle" dominantBaseline="central">
+                    φ = 0
+                  </text>
+                ) : null}
+              </g>
+            ))}
+          </svg>
+        ) : null}
+        {ready ? (
+          <button type="button" className="viewport-reset" onClick={() => engine?.resetView()} data-testid={testId ? `${testId}-reset` : undefined}>
+            Reset view
+          </button>
+        ) : null}
+        {children}
+      </div>
+      <p className="viewport-hint" id={hintId}>
+        Drag to orbit, scroll to zoom. Keyboard: focus the view, then ← → ↑ ↓ orbit (Shift: finer), + / − zoom, Home resets.
+      </p>
     </div>
   );
+}
+
+/** Place the triad's three axes: world axis k seen from the camera is (axes[k][0], axes[k][1]) on screen. */
+function drawTriad(svg: SVGSVGElement | null, axes: AxisDirs) {
+  if (!svg) return;
+  const R = 25;
+  const order = (['x', 'y', 'z'] as const).map((k) => ({ k, v: axes[k] })).sort((a, b) => a.v[2] - b.v[2]);
+  for (const { k, v } of order) {
+    const g = svg.querySelector<SVGGElement>(`g[data-axis="${k}"]`);
+    if (!g) continue;
+    const sx = v[0] * R;
+    const sy = -v[1] * R;
+    const len = Math.hypot(v[0], v[1]);
+    const line = g.querySelector('line')!;
+    line.setAttribute('x2', sx.toFixed(2));
+    line.setAttribute('y2', sy.toFixed(2));
+    // an axis pointing away from the viewer is drawn dashed
+    line.setAttribute('stroke-dasharray', v[2] < -0.2 ? '3 2' : 'none');
+    // labels sit beyond the tip, pushed out further when the axis is seen end-on
+    const ux = len > 1e-6 ? v[0] / len : 0.7;
+    const uy = len > 1e-6 ? -v[1] / len : -0.7;
+    const lx = sx + ux * 8;
+    const ly = sy + uy * 8;
+    const texts = g.querySelectorAll('text');
+    texts[0]!.setAttribute('x', lx.toFixed(2));
+    texts[0]!.setAttribute('y', ly.toFixed(2));
+    if (texts[1]) {
+      // "φ = 0" under (or above, near the bottom edge) the x label
+      texts[1].setAttribute('x', Math.max(-22, Math.min(22, lx)).toFixed(2));
+      texts[1].setAttribute('y', (ly > 18 ? ly - 12 : ly + 12).toFixed(2));
+    }
+    svg.appendChild(g); // nearer axes on top
+  }
+  // for tests and tools: the camera's distance and the x axis direction, as drawn
+  svg.dataset.distance = axes.distance.toPrecision(6);
+  svg.dataset.xAxis = axes.x.map((c) => c.toFixed(4)).join(',');
 }

@@ -112,14 +112,39 @@ export interface ViewportContext {
   /** Request one render (coalesced into the next animation frame). */
   invalidate: () => void;
   /**
+   * Remember the current camera (position, target, zoom) as the home view that "Reset view" and
+   * the Home key return to. The viewport saves it after the scene's first setup; call this after
+   * re-fitting the camera (e.g. when a preset moves everything far away).
+   */
+  saveHomeView: () => void;
+  /**
    * Register a per-frame callback (dt in seconds, capped at 0.1). Frames keep coming while any
    * callback returns true; return false to stop asking. Returns an unregister function.
    */
   onFrame: (cb: (dt: number) => boolean) => () => void;
 }
 
+/** Screen directions of the world axes, for the axis triad (x right, y up; z towards the viewer). */
+export interface AxisDirs {
+  x: [number, number, number];
+  y: [number, number, number];
+  z: [number, number, number];
+  /** Distance from the camera to the orbit target. */
+  distance: number;
+}
+
 export interface Engine {
   ctx: ViewportContext;
+  /** Orbit the camera about the controls' target (radians; polar > 0 moves towards the top). */
+  orbitBy: (azimuth: number, polar: number) => void;
+  /** Move the camera towards (factor < 1) or away from (factor > 1) the target. */
+  zoomBy: (factor: number) => void;
+  /** Back to the saved home view (the camera after the scene's first setup, or the last saveHomeView). */
+  resetView: () => void;
+  /** Remember the current camera as the home view. */
+  saveHomeView: () => void;
+  /** Called after every render with the world axes' directions on screen. Returns an unregister function. */
+  onAfterRender: (cb: (axes: AxisDirs) => void) => () => void;
   /** Visible on screen and tab not hidden: frames run only then. */
   setVisible: (v: boolean) => void;
   dispose: () => void;
@@ -184,13 +209,14 @@ export function createEngine(container: HTMLElement, ariaLabel: string): Engine 
 
   const controls = new OrbitControls(camera, canvas);
   controls.enableDamping = false;
-  controls.listenToKeyEvents(container);
+  // keyboard orbit/zoom is handled by the Viewport (arrows orbit, +/− zoom), not OrbitControls' pan keys
 
   let visible = false;
   let needsRender = true;
   let raf = 0;
   let last = 0;
   const frameCbs = new Set<(dt: number) => boolean>();
+  const renderCbs = new Set<(axes: AxisDirs) => void>();
   let animating = false;
 
   // Software WebGL: at most one frame per SOFTWARE_FRAME_MS, each followed by idle time (every
@@ -211,6 +237,11 @@ export function createEngine(container: HTMLElement, ariaLabel: string): Engine 
     }
     renderer.render(scene, camera);
     needsRender = false;
+    if (renderCbs.size) {
+      const e = camera.matrixWorld.elements; // column j = camera axis j in world space; row i = world axis i in camera space
+      const axes: AxisDirs = { x: [e[0]!, e[4]!, e[8]!], y: [e[1]!, e[5]!, e[9]!], z: [e[2]!, e[6]!, e[10]!], distance: camera.position.distanceTo(controls.target) };
+      for (const cb of renderCbs) cb(axes);
+    }
     if (animating) schedule();
     else last = 0;
   };
@@ -242,6 +273,41 @@ export function createEngine(container: HTMLElement, ariaLabel: string): Engine 
   ro.observe(container);
   resize();
 
+  const saveHomeView = () => controls.saveState();
+  const tmp = new THREE.Vector3();
+  const orbitBy = (azimuth: number, polar: number) => {
+    // z is up: spherical coordinates of the camera about the target
+    const off = tmp.copy(camera.position).sub(controls.target);
+    const rho = off.length();
+    if (!(rho > 0)) return;
+    let az = Math.atan2(off.y, off.x) + azimuth;
+    const eps = 1e-3;
+    const minP = Math.max(eps, controls.minPolarAngle);
+    const maxP = Math.min(Math.PI - eps, controls.maxPolarAngle);
+    let pol = Math.acos(Math.max(-1, Math.min(1, off.z / rho))) - polar;
+    pol = Math.max(minP, Math.min(maxP, pol));
+    if (Number.isFinite(controls.minAzimuthAngle) || Number.isFinite(controls.maxAzimuthAngle)) {
+      az = Math.max(controls.minAzimuthAngle, Math.min(controls.maxAzimuthAngle, az));
+    }
+    camera.position.set(
+      controls.target.x + rho * Math.sin(pol) * Math.cos(az),
+      controls.target.y + rho * Math.sin(pol) * Math.sin(az),
+      controls.target.z + rho * Math.cos(pol),
+    );
+    camera.lookAt(controls.target);
+    controls.update();
+    invalidate();
+  };
+  const zoomBy = (factor: number) => {
+    const off = tmp.copy(camera.position).sub(controls.target);
+    const rho = off.length();
+    if (!(rho > 0) || !(factor > 0)) return;
+    const next = Math.max(controls.minDistance, Math.min(controls.maxDistance, rho * factor));
+    camera.position.copy(controls.target).addScaledVector(off, next / rho);
+    controls.update();
+    invalidate();
+  };
+
   const ctx: ViewportContext = {
     THREE,
     scene,
@@ -249,6 +315,7 @@ export function createEngine(container: HTMLElement, ariaLabel: string): Engine 
     renderer,
     controls,
     invalidate,
+    saveHomeView,
     onFrame: (cb) => {
       frameCbs.add(cb);
       invalidate();
@@ -258,6 +325,18 @@ export function createEngine(container: HTMLElement, ariaLabel: string): Engine 
 
   return {
     ctx,
+    orbitBy,
+    zoomBy,
+    saveHomeView,
+    resetView: () => {
+      controls.reset(); // restores the saved target/position/zoom and dispatches 'change'
+      invalidate();
+    },
+    onAfterRender: (cb) => {
+      renderCbs.add(cb);
+      invalidate();
+      return () => renderCbs.delete(cb);
+    },
     setVisible: (v) => {
       visible = v;
       if (v && (needsRender || frameCbs.size)) schedule();

@@ -160,6 +160,8 @@ test.describe('typed densities', () => {
 test.describe('robustness and extras', () => {
   for (const q of ['jacobian=inverted', 'lobe=custom&pdf=cos(theta)-1', 'lobe=phong&theme=dark&present=1']) {
     test(`no serious axe violations with ${q} (stability panel open)`, async ({ page }) => {
+      // the exam-first page carries every derivation (KaTeX): the scan is long on a busy 2-core machine
+      test.setTimeout(240_000);
       await openScene(page, `#/hemisphere?n=500&${q}`);
       await statsReady(page);
       await page.getByTestId('stability-details').locator('summary').click();

@@ -83,7 +83,7 @@ test('after one visit to #/, every scene opens and works with the server stopped
     // the server is gone
     expect(await fetch(srv.base).then(() => 'reached', () => 'failed')).toBe('failed');
 
-    for (const [hash, id] of [...SCENES, ['#/guide', ''] as [string, string]]) {
+    for (const [hash, id] of [...SCENES, ['#/guide', ''], ['#/practice/q3?seed=17', '']] as [string, string][]) {
       const p = await context.newPage();
       const errors: string[] = [];
       p.on('console', (m) => m.type() === 'error' && errors.push(m.text()));
@@ -92,7 +92,7 @@ test('after one visit to #/, every scene opens and works with the server stopped
       await expect(p.locator('main#main'), `${hash} offline`).toBeVisible({ timeout: 60000 });
       await expect(p.locator('.loading'), `${hash} offline`).toHaveCount(0, { timeout: 60000 });
       if (id) await expect(p.getByTestId(id).first(), `${hash} offline`).toHaveAttribute('data-value', /^-?\d/, { timeout: 60000 });
-      else await expect(p.getByRole('heading', { level: 1 })).toContainText('guide');
+      else await expect(p.getByRole('heading', { level: 1 }).first()).toBeVisible();
       // bring every lazy view (plots, 3D, formulas) on screen so their chunks load
       await settleLazyViews(p);
       await expect(p.locator('.notice-error')).toHaveCount(0);
@@ -133,8 +133,18 @@ test('a new build shows the "updated, reload" notice, and Reload switches to it 
     await expect(notice).toContainText('updated');
     // the old build keeps running meanwhile (no mix): the page is still the old index.html
     expect(await page.locator('meta[name="rml-build"]').count()).toBe(0);
+    // a second tab of the old build
+    const other = await page.context().newPage();
+    await other.goto(`${srv.base}#/ray-sphere?r=2`);
+    await expect(other.getByTestId('t-hit').first()).toHaveAttribute('data-value', /.+/);
+    expect(await other.locator('meta[name="rml-build"]').count()).toBe(0);
     await notice.getByRole('button', { name: 'Reload' }).click();
     await expect(page.locator('meta[name="rml-build"]')).toHaveAttribute('content', marker, { timeout: 60000 });
+    // the other tab switched whole to the new build too, keeping its state (it lives in the URL)
+    await expect(other.locator('meta[name="rml-build"]')).toHaveAttribute('content', marker, { timeout: 60000 });
+    await expect(other).toHaveURL(/#\/ray-sphere\?r=2/);
+    await expect(other.getByTestId('t-hit').first()).toHaveAttribute('data-value', /.+/);
+    await other.close();
     await expect(page.getByTestId('bilinear').first()).toHaveAttribute('data-value', /^-?\d/);
     await expect(page.getByTestId('update-notice')).toHaveCount(0);
   } finally {

@@ -262,6 +262,7 @@ test.describe('interaction', () => {
 });
 
 test('axe finds no serious or critical violations (light, dark, present, far preset)', async ({ page }) => {
+  test.setTimeout(240_000); // four full-page scans on a busy shared machine
   for (const qs of ['theme=light', 'theme=dark', 'present=1&o=0,0,0&d=1,5e-9,0&c=100000000,0,0&r=1', 'd=0,0,0&r=-1']) {
     await openScene(page, `#/ray-sphere?${qs}`);
     await page.getByTestId('view-3d').scrollIntoViewIfNeeded();

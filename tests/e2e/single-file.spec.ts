@@ -20,6 +20,9 @@ const ROUTES: [string, string[]][] = [
   ['#/ray-sphere', ['t-hit']],
   ['#/area-light', ['reference', 'estimate']],
   ['#/guide', []],
+  ['#/practice', []],
+  ...[1, 2, 3, 4, 5, 6].map((q): [string, string[]] => [`#/practice/q${q}?seed=17`, []]),
+  ['#/practice/sheet?seed=1&q=1,3,5', []],
 ];
 
 test('the single HTML file opens from file:// and every route works with no network', async ({ page, context }) => {
@@ -35,7 +38,7 @@ test('the single HTML file opens from file:// and every route works with no netw
   const url = pathToFileURL(file).href;
   for (const [hash, ids] of ROUTES) {
     await page.goto(`${url}${hash}`);
-    await expect(page.locator('main#main')).toBeVisible({ timeout: 30000 });
+    await expect(page.locator('main#main:visible')).toBeVisible({ timeout: 30000 });
     await expect(page.locator('.loading')).toHaveCount(0, { timeout: 30000 });
     for (const id of ids) await expect(page.getByTestId(id).first()).toHaveAttribute('data-value', /^-?\d/, { timeout: 60000 });
     // bring every lazy view (plots, 3D, formulas) on screen so their chunks load

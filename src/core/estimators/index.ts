@@ -5,3 +5,4 @@ export * from './rmse';
 export * from './slope';
 export * from './integrate1d';
 export * from './run1d';
+export * from './histogram';

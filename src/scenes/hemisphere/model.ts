@@ -9,7 +9,9 @@ import {
   cosineHemispherePdf,
   examLobeK,
   examLobePdf,
+  examPhiCdf,
   examPhiPdf,
+  examThetaCdf,
   examThetaPdf,
   invertedJacobianPartialIntegral,
   phongLobePdf,
@@ -374,6 +376,10 @@ export interface DrawStats {
   /** Set when the value is less accurate than its digits. */
   exactNote?: string;
   q2: Q2Estimates;
+  /** Variances of one term of each estimator, by quadrature (null without a lobe, f or a finite ∫ f). */
+  variance: VarianceCheck | null;
+  /** For stratified / Halton / Sobol points: the RMSE over randomized runs (s/√N does not apply). */
+  rmse: RmseResult | null;
 }
 
 /** Draw n samples of the lobe from the point set and compute all statistics the scene shows. */
@@ -386,14 +392,18 @@ export function computeDrawStats(lobe: Lobe | null, f: Integrand | null, kind: S
   }
   const nan: McEstimate = { n: 0, estimate: NaN, variance: NaN, stderr: NaN, invalid: 0 };
   const exact = f ? checkedIntegral(f) : null;
+  const ev = exact ? exact.value : NaN;
+  const haveExact = !!f && Number.isFinite(ev);
   return {
     n,
     chi2: lobe && dirs ? chi2OfDirections(lobe, dirs, n) : null,
     hist: lobe && dirs ? marginalHistograms(lobe, dirs, n) : null,
-    exact: exact ? exact.value : NaN,
+    exact: ev,
     exactProblem: exact ? exact.problem : null,
     ...(exact?.note ? { exactNote: exact.note } : {}),
     q2: f ? q2Estimates(lobe, f, u, dirs, n) : { uniform: nan, importance: nan, fNonFinite: 0, pZero: 0 },
+    variance: lobe && f && haveExact ? varianceCheck(lobe, f, ev) : null,
+    rmse: f && haveExact && kind !== 'independent' ? rmseOverRuns(lobe, f, kind, seed, n, ev) : null,
   };
 }
 
@@ -428,4 +438,255 @@ export function examNumbers(xi1 = 0.3, xi2 = 0.7): ExamNumbers {
     halfK: examLobeK() / 2,
     example: { xi1, xi2, theta: Math.atan2(s, c), phi: Math.log1p(EXAM_E2PI_M1 * xi2), sinTheta: s, cosTheta: c },
   };
+}
+
+// ---- the animation (issue 12): a pure function of (params, seed, t) ---------------------------
+
+/** Which animation the shared timeline plays: the warp morph (square → hemisphere) or the growth. */
+export type AnimKind = 'warp' | 'grow';
+
+/** Seconds from t = 0 to t = 1 at 1× speed. Growth keeps its old pace: 0.7 s per decade of N. */
+export function animDuration(anim: AnimKind, n: number): number {
+  return anim === 'warp' ? 4 : Math.max(1.5, 0.7 * Math.log10(Math.max(10, n)));
+}
+
+/** Growth: how many of the n samples are on screen at position t ∈ [0, 1] (geometric, 0 at t = 0, n at t = 1). */
+export function growCount(n: number, t: number): number {
+  if (!(t > 0) || n <= 0) return 0;
+  if (t >= 1) return n;
+  return Math.min(n, Math.max(1, Math.round(Math.pow(n, t))));
+}
+
+/** Warp morph: the eased fraction s(t) = t²(3 − 2t) of the way from the square to the hemisphere. */
+export function morphFraction(t: number): number {
+  const c = Math.min(1, Math.max(0, Number.isFinite(t) ? t : 0));
+  return c * c * (3 - 2 * c);
+}
+
+/**
+ * Where the point (ξ₁, ξ₂) sits in the unit square as drawn in 3D: the square [−1, 1]² in the base
+ * plane z = 0, ξ₁ along +x and ξ₂ along +y (so it frames the hemisphere's base disk).
+ */
+export function squarePoint(xi1: number, xi2: number, out: number[] | Float64Array = [0, 0, 0], o = 0): number[] | Float64Array {
+  out[o] = 2 * xi1 - 1;
+  out[o + 1] = 2 * xi2 - 1;
+  out[o + 2] = 0;
+  return out;
+}
+
+/** The morphed position: (1 − s)·square + s·direction (the view's shader evaluates the same mix). */
+export function morphPoint(sq: ArrayLike<number>, dir: ArrayLike<number>, s: number, out: number[] | Float64Array = [0, 0, 0], o = 0, so = 0, dOff = 0): number[] | Float64Array {
+  // GLSL's mix(x, y, s) = x(1 − s) + y s: exactly the square at s = 0 and the direction at s = 1
+  const r = 1 - s;
+  out[o] = sq[so]! * r + dir[dOff]! * s;
+  out[o + 1] = sq[so + 1]! * r + dir[dOff + 1]! * s;
+  out[o + 2] = sq[so + 2]! * r + dir[dOff + 2]! * s;
+  return out;
+}
+
+/** Number of grid lines per axis of the warped (ξ₁, ξ₂) grid (8 strata of each ξ). */
+export const GRID_LINES = 8;
+
+/** What the animation shows at position t (readouts the view prints and the tests recompute). */
+export interface AnimFrame {
+  anim: AnimKind;
+  /** Samples drawn (growth) or morphed (warp). */
+  shown: number;
+  /** Morph fraction s (1 for the growth animation: points sit on the hemisphere). */
+  s: number;
+  /** The tracked sample: the first of the set, its (ξ₁, ξ₂), its direction and where it is now. */
+  tracked: { xi1: number; xi2: number; theta: number; phi: number; dir: [number, number, number]; pos: [number, number, number] } | null;
+}
+
+/** The animation frame for (lobe, point set, seed, n) at position t. */
+export function animFrame(lobe: Lobe | null, kind: SequenceKind, seed: number, n: number, anim: AnimKind, t: number): AnimFrame {
+  const s = anim === 'warp' ? morphFraction(t) : 1;
+  const shown = !lobe ? 0 : anim === 'warp' ? n : growCount(n, t);
+  let tracked: AnimFrame['tracked'] = null;
+  if (lobe && n > 0 && shown > 0) {
+    const u = new Float64Array(2);
+    fillSequence2D(kind, seed, n, u, 0, 1, 0);
+    const d = new Float64Array(3);
+    lobe.sampleBatch(u, d, 1);
+    const sq = squarePoint(u[0]!, u[1]!);
+    const p = morphPoint(sq, d, s);
+    tracked = {
+      xi1: u[0]!,
+      xi2: u[1]!,
+      theta: sphericalTheta(d[0]!, d[1]!, d[2]!),
+      phi: sphericalPhi(d[0]!, d[1]!),
+      dir: [d[0]!, d[1]!, d[2]!],
+      pos: [p[0]!, p[1]!, p[2]!],
+    };
+  }
+  return { anim, shown, s, tracked };
+}
+
+/**
+ * The warped grid at morph fraction s: line segments (pairs of points, 3 numbers each) of the
+ * GRID_LINES + 1 lines of constant ξ₁ and of constant ξ₂, `segments` pieces each, morphed from
+ * the square to the lobe's image. `xi` receives the (ξ₁, ξ₂) of each vertex (for colours).
+ */
+export function warpedGrid(lobe: Lobe, s: number, segments = 48): { pos: Float64Array; xi: Float64Array } {
+  const verts = 2 * 2 * (GRID_LINES + 1) * segments;
+  const pos = new Float64Array(3 * verts);
+  const xi = new Float64Array(2 * verts);
+  const d = [0, 0, 0];
+  const sq = [0, 0, 0];
+  let k = 0;
+  const top = 1 - 2 ** -53;
+  const put = (a: number, b: number) => {
+    lobe.sample(Math.min(a, top), Math.min(b, top), d, 0);
+    squarePoint(a, b, sq);
+    morphPoint(sq, d, s, pos, 3 * k);
+    xi[2 * k] = a;
+    xi[2 * k + 1] = b;
+    k++;
+  };
+  for (let l = 0; l <= GRID_LINES; l++) {
+    const fixed = l / GRID_LINES;
+    for (let q = 0; q < segments; q++) {
+      const t0 = q / segments;
+      const t1 = (q + 1) / segments;
+      put(fixed, t0);
+      put(fixed, t1);
+      put(t0, fixed);
+      put(t1, fixed);
+    }
+  }
+  return { pos, xi };
+}
+
+// ---- variance of the Q2 estimators (warnings for infinite or huge variance) ---------------------
+
+/** Second moments and variances of one term of each Q2 estimator, by quadrature. */
+export interface VarianceCheck {
+  /** Var[2π f(X)], X uniform. */
+  uniformVar: number;
+  /** Var[f(X)/p(X)], X ~ p (over the region p > 0); Infinity when ∫ f²/p dω diverges. */
+  importanceVar: number;
+  /** true when ∫ f²/p dω diverges (the importance estimator has infinite variance). */
+  infinite: boolean;
+  /** importanceVar / uniformVar (Infinity when infinite; NaN when both are 0). */
+  ratio: number;
+}
+
+/**
+ * Var of the terms of both estimators: Var_u = 2π ∫ f² dω − I², Var_p = ∫ f²/p dω − I². The
+ * importance second moment is integrated over μ = cos θ (dω = dμ dφ) in decades towards the
+ * horizon μ → 0 and towards the pole μ → 1, where p may vanish; when the last decades stop
+ * shrinking (each contributes at least 0.9 of the one before, as for ∫ dμ/μ), the integral
+ * diverges and the variance is infinite.
+ */
+export function varianceCheck(lobe: Lobe, f: Integrand, exact: number): VarianceCheck {
+  const opts = { relTol: 1e-8, maxDepth: 5, maxEvals: 60000 };
+  const g = (mu: number, phi: number) => {
+    const theta = Math.acos(Math.min(1, Math.max(0, mu)));
+    const fv = f(theta, phi);
+    if (fv === 0) return 0;
+    const st = Math.sqrt(Math.max(0, 1 - mu * mu));
+    const p = lobe.pdf(st * Math.cos(phi), st * Math.sin(phi), mu);
+    return p > 0 && Number.isFinite(p) ? (fv * fv) / p : 0;
+  };
+  const f2 = adaptiveIntegrate2D((t, p) => f(t, p) ** 2 * Math.sin(t), 0, HALF_PI, 0, TWO_PI, opts);
+  const uniformVar = Math.max(0, TWO_PI * f2 - exact * exact);
+  const DEC = 12;
+  // decades near the horizon: [10^-(j+1), 10^-j] for j = 1…DEC, and the same towards the pole (1 − μ)
+  const horizon: number[] = [];
+  const pole: number[] = [];
+  for (let j = 1; j <= DEC; j++) {
+    horizon.push(adaptiveIntegrate2D(g, 10 ** -(j + 1), 10 ** -j, 0, TWO_PI, opts));
+    pole.push(adaptiveIntegrate2D(g, 1 - 10 ** -j, 1 - 10 ** -(j + 1), 0, TWO_PI, opts));
+  }
+  const middle = adaptiveIntegrate2D(g, 0.1, 0.9, 0, TWO_PI, opts);
+  const sum = (a: number[]) => a.reduce((x, y) => x + y, 0);
+  const m2 = middle + sum(horizon) + sum(pole);
+  const diverges = (a: number[]) => {
+    const last = a[a.length - 1]!;
+    const prev = a[a.length - 2]!;
+    return !Number.isFinite(last) || (last > 1e-9 * Math.max(1e-300, Math.abs(m2)) && last >= 0.9 * prev);
+  };
+  const infinite = !Number.isFinite(m2) || diverges(horizon) || diverges(pole);
+  const importanceVar = infinite ? Infinity : Math.max(0, m2 - exact * exact);
+  const ratio = infinite ? Infinity : uniformVar > 0 ? importanceVar / uniformVar : importanceVar > 0 ? Infinity : NaN;
+  return { uniformVar, importanceVar, infinite, ratio };
+}
+
+// ---- error of stratified / quasi-random estimates: RMSE over randomized runs ---------------------
+
+/** RMSE of both estimators over `runs` independently randomized point sets of n points each. */
+export interface RmseResult {
+  runs: number;
+  uniform: number;
+  importance: number;
+}
+
+/**
+ * s/√N assumes independent samples; for stratified, Halton and Sobol points it is not an error
+ * estimate. The error is measured instead: `runs` independent randomizations (jitter, Owen
+ * scrambling, seeds derived from `seed`), RMSE = √(mean (⟨I⟩ᵣ − I)²) against the quadrature value.
+ */
+export function rmseOverRuns(lobe: Lobe | null, f: Integrand, kind: SequenceKind, seed: number, n: number, exact: number, runs = 16): RmseResult {
+  const r = repeatEstimates(lobe, f, kind, seed, runs, n);
+  const rmse = (a: Float64Array) => {
+    let s = 0;
+    for (const x of a) s += (x - exact) ** 2;
+    return Math.sqrt(s / a.length);
+  };
+  return { runs, uniform: rmse(r.uniform), importance: lobe ? rmse(r.importance) : NaN };
+}
+
+// ---- live checks for the written exam derivations (Q1, Q2a) --------------------------------------
+
+/** ∫ g over [a, b] by adaptive Gauss–Legendre (the 2D routine with a dummy unit y range). */
+function integrate1D(g: (x: number) => number, a: number, b: number): number {
+  return adaptiveIntegrate2D((x) => g(x), a, b, 0, 1, { relTol: 1e-13, maxDepth: 8 });
+}
+
+/** Every number the exam-first derivations of Q1 and Q2(a) print, computed here (none from the key). */
+export interface ExamChecks {
+  e2piMinus1: number;
+  k: number;
+  /** ∫₀^{π/2} cos θ sin θ dθ = ½ ∫ sin 2θ dθ (quadrature). */
+  thetaIntegral: number;
+  /** [−½ cos 2θ] from 0 to π/2, evaluated: −½(cos π − cos 0). */
+  bracket: number;
+  /** ∫₀^{2π} e^φ dφ (quadrature). */
+  phiIntegral: number;
+  /** ∫_Ω p(ω) dω with the computed k (quadrature over θ, φ with sin θ): 1. */
+  total: number;
+  /** ∫ p(θ) dθ and ∫ p(φ) dφ (quadrature): both 1. */
+  thetaMarginalTotal: number;
+  phiMarginalTotal: number;
+  /** P(π/2) and P(2π) from the CDF code: both 1. */
+  thetaCdfEnd: number;
+  phiCdfEnd: number;
+  /** |D| = ∫_Ω dω = ∫₀^{2π} ∫₀^{π/2} sin θ dθ dφ (quadrature): 2π. */
+  solidAngle: number;
+}
+
+export function examChecks(): ExamChecks {
+  const k = examLobeK();
+  return {
+    e2piMinus1: EXAM_E2PI_M1,
+    k,
+    thetaIntegral: integrate1D((t) => Math.cos(t) * Math.sin(t), 0, HALF_PI),
+    bracket: -0.5 * (Math.cos(Math.PI) - Math.cos(0)),
+    phiIntegral: integrate1D(Math.exp, 0, TWO_PI),
+    total: adaptiveIntegrate2D((t, p) => examLobePdf(Math.sin(t) * Math.cos(p), Math.sin(t) * Math.sin(p), Math.cos(t)) * Math.sin(t), 0, HALF_PI, 0, TWO_PI, { relTol: 1e-12 }),
+    thetaMarginalTotal: integrate1D(examThetaPdf, 0, HALF_PI),
+    phiMarginalTotal: integrate1D(examPhiPdf, 0, TWO_PI * (1 - 1e-16)),
+    thetaCdfEnd: examThetaCdf(HALF_PI),
+    phiCdfEnd: examPhiCdf(TWO_PI),
+    solidAngle: adaptiveIntegrate2D((t) => Math.sin(t), 0, HALF_PI, 0, TWO_PI, { relTol: 1e-13 }),
+  };
+}
+
+/** Q1(d) at one (ξ₁, ξ₂): both θ forms, the φ form and its log1p twin, and the CDFs at the result. */
+export function examInversion(xi1: number, xi2: number): { thetaAcos: number; thetaAsin: number; phiLn: number; phiLog1p: number; cdfTheta: number; cdfPhi: number } {
+  const thetaAcos = 0.5 * Math.acos(1 - 2 * xi1);
+  const thetaAsin = Math.asin(Math.sqrt(xi1));
+  const phiLn = Math.log(EXAM_E2PI_M1 * xi2 + 1);
+  const phiLog1p = Math.log1p(EXAM_E2PI_M1 * xi2);
+  return { thetaAcos, thetaAsin, phiLn, phiLog1p, cdfTheta: examThetaCdf(thetaAsin), cdfPhi: examPhiCdf(phiLog1p) };
 }

@@ -2,12 +2,18 @@
  * URL parameters of the hemisphere scene (contract: `../shared/spec/contract.md`, route `#/hemisphere`).
  *
  * Contract parameters: lobe, exponent, pdf, jacobian, f, n, seed.
- * Added by this scene (the contract only grows): `points`, the point set fed to the warp.
+ * Added by this scene (the contract only grows): `points`, the point set fed to the warp; `anim`,
+ * which animation the shared timeline plays (`warp`: the (ξ₁, ξ₂) points and grid travel from the
+ * unit square to the hemisphere; `grow`: the samples appear, 1 → N); `t` ∈ [0, 1] (default 1, the
+ * finished figure) and `play` (shared timeline).
  */
 import type { ParamSchema, ParamValues } from '../../app/params';
+import { timelineParams } from '../../ui/timeline';
 
 export const LOBES = ['exam', 'uniform', 'cosine', 'phong', 'custom'] as const;
 export type LobeId = (typeof LOBES)[number];
+
+export const ANIMS = ['warp', 'grow'] as const;
 
 export const POINT_SETS = ['independent', 'stratified', 'halton', 'sobol'] as const;
 
@@ -29,6 +35,8 @@ export const schema = {
   n: { kind: 'number', default: 20000, min: 1, max: MAX_N, integer: true, label: 'sample count' },
   seed: { kind: 'number', default: 1, min: 0, max: 4294967295, integer: true },
   points: { kind: 'enum', default: 'independent', values: POINT_SETS, aliases: { random: 'independent', jittered: 'stratified' } },
+  anim: { kind: 'enum', default: 'warp', values: ANIMS, aliases: { morph: 'warp', growth: 'grow' }, label: 'animation' },
+  ...timelineParams({ max: 1, default: 1 }),
 } as const satisfies ParamSchema;
 
 export type HemisphereSchema = typeof schema;

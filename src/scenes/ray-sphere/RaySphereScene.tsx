@@ -1,16 +1,48 @@
 /**
- * #/ray-sphere — exam Q5: the quadratic of a ray and a sphere, its discriminant, every case, and
- * what floating point does to the textbook form (Ray Tracing Gems ch. 7).
+ * #/ray-sphere — exam Q5, exam first: the question, the figure with its sweep animation (the ray
+ * moves across the sphere on the shared timeline), the written derivation with live numbers, the
+ * live answer, and then, beyond the exam, the 3D view and what floating point does to the
+ * textbook form (Ray Tracing Gems ch. 7).
  */
-import { useCallback, useDeferredValue, useEffect, useMemo, useRef, useState } from 'react';
+import { memo, useCallback, useDeferredValue, useEffect, useMemo, useRef, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
-import { MathTex, Notice, NumberField, Panel, Plot, Readout, SceneLayout, Select, useShortcuts, type PlotTrace } from '../../ui';
+import {
+  Derivation as DerivationBlock,
+  ExamPart,
+  ExamQuestion,
+  ExploreFurther,
+  KeyNote,
+  LiveAnswer,
+  MathTex,
+  Notice,
+  NumberField,
+  Panel,
+  Readout,
+  Select,
+  TimelineTransport,
+  useTimeline,
+} from '../../ui';
 import type { RaySphereHit } from '../../core/geometry';
 import { CASE_PRESETS, PRECISION_PRESETS, schema, type Preset, type RaySphereParams } from './params';
-import { CASE_TEXT, computeModel, gCurve, type RaySphereModel, type V3 } from './model';
+import {
+  CASE_TEXT,
+  checkInputs,
+  computeModel,
+  makeSweep,
+  paramsAt,
+  secondaryFromHit,
+  selfIntersectionSurvey,
+  sweepAt,
+  sweepSeries,
+  tMinFor,
+  type RaySphereModel,
+  type SweepMode,
+  type V3,
+} from './model';
 import { CrossSection } from './view/CrossSection';
 import { View3D } from './view/View3D';
 import { DistantImages, ErrorVsDistance, PrecisionTable } from './view/Precision';
+import { DeltaSweepPlot, GSweepPlot } from './view/SweepPlots';
 import './ray-sphere.css';
 
 const CASE_NAME: Record<string, string> = {
@@ -21,7 +53,40 @@ const CASE_NAME: Record<string, string> = {
   behind: 'Sphere behind',
 };
 
+/** Seconds for one sweep (t from 0 to 1) at 1× speed. */
+const SWEEP_SECONDS = 10;
+
+const DistantImagesMemo = memo(DistantImages);
+const ErrorVsDistanceMemo = memo(ErrorVsDistance);
+const PrecisionTableMemo = memo(PrecisionTable);
+const PrecisionExplainerMemo = memo(function PrecisionExplainerMemo() {
+  return <PrecisionExplainer />;
+});
+
 export default function RaySphereScene({ params, setParams, mode }: SceneProps<typeof schema>) {
+  const sweepMode: SweepMode = params.sweep === 'rotate' ? 'rotate' : 'offset';
+  // the sweep is centred on the configuration typed in o, d (t = 0.5); it depends on params, not on t
+  const base = useMemo(() => checkInputs(params), [params]);
+  const sweep = useMemo(() => makeSweep(base, sweepMode, params.extent), [base, sweepMode, params.extent]);
+  const series = useMemo(() => sweepSeries(params, sweep), [params, sweep]);
+
+  const stageRef = useRef<HTMLDivElement>(null);
+  const tl = useTimeline({ t: params.t as number, play: params.play as boolean, setParams, max: 1, duration: SWEEP_SECONDS, stepSize: 1 / 120, loop: true, visibleRef: stageRef });
+  const t = tl.t;
+  const at = useMemo(() => sweepAt(sweep, t), [sweep, t]);
+  const model = useMemo(() => computeModel(paramsAt(params, sweep, t)), [params, sweep, t]);
+
+  // Edits (drags, typing, presets) describe the ray you see: they become the sweep's centre (t = 0.5).
+  const liveRef = useRef({ at, t });
+  liveRef.current = { at, t };
+  const edit = useCallback(
+    (patch: Partial<RaySphereParams>) => {
+      const { at: cur, t: tNow } = liveRef.current;
+      if (tNow === 0.5) setParams(patch);
+      else setParams({ o: cur.o, d: cur.d, ...patch, t: 0.5, play: false });
+    },
+    [setParams],
+  );
   // Drags fire pointer events faster than frames: coalesce parameter updates to one per frame.
   const pending = useRef<Partial<RaySphereParams> | null>(null);
   const raf = useRef(0);
@@ -33,53 +98,70 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
         raf.current = 0;
         const p = pending.current;
         pending.current = null;
-        if (p) setParams(p);
+        if (p) edit(p);
       });
     },
-    [setParams],
+    [edit],
   );
   useEffect(() => () => cancelAnimationFrame(raf.current), []);
 
-  const model = useMemo(() => computeModel(params), [params]);
-  // Heavy panels (KaTeX, Plotly, the precision table) follow a throttled, deferred copy: the
-  // cross-section, the 3D view and the readouts update every frame while dragging; the plots and
-  // the derivation at most every 150 ms (and always with the final values).
-  const slow = useDeferredValue(useThrottled(model, 150));
-  useShortcuts({ reset: () => setParams({ ...CASE_PRESETS[0]!.params, method: 'stable' }) });
+  // Heavy panels (KaTeX, the precision table) follow a throttled, deferred copy: the figure, the
+  // plots and the readouts update every frame; the derivation at most every 200 ms (and always
+  // with the final values).
+  // While the sweep plays they hold the numbers of the position where it started (a KaTeX
+  // re-render mid-animation costs more than a frame); they catch up when it pauses.
+  const held = useHeldWhile(model, tl.playing);
+  const slow = useDeferredValue(useThrottled(held, 200));
 
   const res = model.chosen;
-  const { o, d, c, r, problems } = model.input;
+  const { o, d, c, r } = model.input;
+  // problems are those of the typed inputs (the sweep only moves already-checked values)
+  const problems = base.problems;
+  const method = params.method === 'naive' ? 'naive' : 'stable';
+  const naiveRow = model.rows.find((x) => x.method === 'naive');
+  const stableRow = model.rows.find((x) => x.method === 'stable');
   const hereErrors = useMemo(
     () => ({ naive: slow.rows.find((x) => x.method === 'naive')?.errDisc ?? null, stable: slow.rows.find((x) => x.method === 'stable')?.errDisc ?? null }),
     [slow],
   );
   const activePreset = [...CASE_PRESETS, ...PRECISION_PRESETS].find((p) => samePreset(p, params));
+  const ends = useMemo(() => [sweepAt(sweep, 0).o, sweepAt(sweep, 1).o], [sweep]);
+  const tangentX = useMemo(() => series.tangents.map((tt) => sweepAt(sweep, tt).x), [series, sweep]);
+  const xLabel = sweepMode === 'offset' ? 'h / r: signed distance of the line from C, in radii' : 'ψ / α: angle between d and the direction to C, in angular radii α';
 
-  const controls = (
-    <>
-      <Panel title="Presets: the five cases">
+  const presets = useMemo(
+    () => (
+      <div className="rs-preset-groups">
         <div className="rs-presets" role="group" aria-label="Case presets">
+          <span className="rs-presets-label">Cases:</span>
           {CASE_PRESETS.map((p) => (
-            <button key={p.id} type="button" data-testid={`preset-${p.id}`} aria-pressed={activePreset?.id === p.id} onClick={() => setParams(p.params)}>
+            <button key={p.id} type="button" data-testid={`preset-${p.id}`} aria-pressed={activePreset?.id === p.id} onClick={() => setParams({ ...p.params, t: 0.5, play: false })}>
               {p.label}
             </button>
           ))}
         </div>
-      </Panel>
-      <Panel title="Presets that break the textbook form">
         <div className="rs-presets" role="group" aria-label="Precision presets">
+          <span className="rs-presets-label">Break the textbook form:</span>
           {PRECISION_PRESETS.map((p) => (
-            <button key={p.id} type="button" data-testid={`preset-${p.id}`} aria-pressed={activePreset?.id === p.id} onClick={() => setParams(p.params)}>
+            <button key={p.id} type="button" data-testid={`preset-${p.id}`} aria-pressed={activePreset?.id === p.id} onClick={() => setParams({ ...p.params, t: 0.5, play: false })}>
               {p.label}
             </button>
           ))}
         </div>
-        {activePreset ? <p className="rs-small">{activePreset.what}</p> : null}
-      </Panel>
-      <Panel title="Ray and sphere">
+        {activePreset ? <p className="rs-small rs-preset-what">{activePreset.what}</p> : null}
+      </div>
+    ),
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+    [activePreset?.id, setParams],
+  );
+
+  const fields = useMemo(
+    () => (
+      <details className="rs-fields" open={typeof window === 'undefined' || window.innerWidth > 820}>
+        <summary>Ray o + t d and sphere (centre C, radius r): type values</summary>
         <Select
           label="Method (for the readouts)"
-          value={params.method as 'stable' | 'naive'}
+          value={method}
           options={[
             { value: 'stable', label: 'robust (Ray Tracing Gems ch. 7)' },
             { value: 'naive', label: 'textbook (−b ± √Δ) / 2a' },
@@ -87,14 +169,49 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
           onChange={(m) => setParams({ method: m })}
           testId="method"
         />
-        <VecField label="Origin o" name="o" value={params.o} onChange={(v) => setParams({ o: v })} />
-        <VecField label="Direction d" name="d" value={params.d} onChange={(v) => setParams({ d: v })} />
-        <VecField label="Centre c" name="c" value={params.c} onChange={(v) => setParams({ c: v })} />
-        <NumberField label="Radius r" value={params.r} onChange={(x) => setParams({ r: x })} min={-1e12} max={1e12} step={0.1} testId="input-r" />
-        <p className="rs-small">d need not be unit length: t is then measured in units of |d|.</p>
-      </Panel>
-    </>
+        <VecField label="Origin o" name="o" value={params.o} onChange={(v) => edit({ o: v })} />
+        <VecField label="Direction d" name="d" value={params.d} onChange={(v) => edit({ d: v })} />
+        <VecField label="Centre C (URL parameter c)" name="c" value={params.c} onChange={(v) => edit({ c: v })} />
+        <NumberField label="Radius r" value={params.r} onChange={(x) => edit({ r: x })} min={-1e12} max={1e12} step={0.1} testId="input-r" />
+        <p className="rs-small">
+          d need not be unit length: t is then measured in units of |d|. These fields hold the ray at the centre of the sweep (t = 0.5); editing moves the sweep there.
+        </p>
+      </details>
+    ),
+    [params.o, params.d, params.c, params.r, method, setParams, edit],
   );
+
+  const sweepControls = (
+    <div className="rs-sweep-controls">
+      <Select
+        label="Sweep"
+        value={sweepMode}
+        options={[
+          { value: 'offset', label: 'origin moves across the ray' },
+          { value: 'rotate', label: 'direction turns about o' },
+        ]}
+        onChange={(m) => setParams({ sweep: m })}
+        testId="sweep-mode"
+      />
+      <NumberField
+        label={sweepMode === 'offset' ? 'extent (± radii)' : 'extent (± angular radii)'}
+        value={params.extent}
+        onChange={(x) => setParams({ extent: x })}
+        min={0.05}
+        max={1000}
+        step={0.5}
+        testId="sweep-extent"
+      />
+    </div>
+  );
+
+  const fmtPos = (tt: number) => {
+    const x = sweepAt(sweep, tt).x;
+    return `t = ${tt.toFixed(3)}, ${sweepMode === 'offset' ? 'h / r' : 'ψ / α'} = ${Number.isFinite(x) ? x.toFixed(3) : String(x)}`;
+  };
+
+  const discFromAbc = res ? res.b * res.b - 4 * res.a * res.c : null;
+  const robustDiffers = method === 'stable' && res !== null && naiveRow !== undefined && naiveRow.res.discriminant !== res.discriminant;
 
   const main = (
     <>
@@ -115,65 +232,137 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
           {model.fatal} Try smaller numbers, or pick a preset.
         </Notice>
       ) : null}
-      <Panel title="Result" className="rs-result">
-        <CaseBanner res={res} />
-        <div className="readouts">
-          <Readout id="a" label="a = d·d" value={res?.a ?? null} digits={10} />
-          <Readout id="b" label="b = 2 d·(o − c)" value={res?.b ?? null} digits={10} />
-          <Readout id="c" label="c = |o − c|² − r²" value={res?.c ?? null} digits={10} />
-          <Readout id="discriminant" label={`Δ = b² − 4ac (${params.method === 'naive' ? 'textbook' : 'robust'})`} value={res?.discriminant ?? null} digits={10} />
-          <Readout id="t0" label="t₀" value={res?.t0 ?? null} digits={10} />
-          <Readout id="t1" label="t₁" value={res?.t1 ?? null} digits={10} />
-          <Readout id="t-hit" label="t-hit (nearest t ≥ 0)" value={res?.tHit ?? null} digits={10} />
-          <Readout id="case" label="case" value={res?.case ?? null} />
+      <ExamQuestion n={5} title="Ray–sphere intersection">
+        <ExamPart
+          id="5"
+          title="The quadratic, Δ ≥ 0 and t ≥ 0"
+          asks={
+            <>
+              <p className="rs-asks">
+                A ray p(t) = <b>o</b> + t <b>d</b> (origin <b>o</b>, direction <b>d</b>, t ≥ 0) is traced against a sphere with centre <b>C</b> and radius r. Substitute the ray into
+                the sphere’s equation |p − <b>C</b>|² = r² to get a quadratic in t, and state when the ray hits the sphere and which root is the hit.{' '}
+                <span className="rs-small">(The key awards 2 marks for stating Δ ≥ 0 and 2 marks for stating t ≥ 0.)</span>
+              </p>
+            </>
+          }
+        >
+          <div className="rs-stage" ref={stageRef}>
+            <div className="rs-stage-fig">
+              <CrossSection o={o} d={d} c={c} r={r} res={res} distanceRatio={model.distanceRatio} onChange={(patch) => setSoon(patch)} fitExtra={ends} />
+              <CaseBanner res={res} />
+              <TimelineTransport timeline={tl} label="Ray sweep" format={fmtPos} testId="timeline">
+                {sweepControls}
+              </TimelineTransport>
+            </div>
+            <div className="rs-stage-ctl">
+              {presets}
+              {fields}
+            </div>
+            <div className="rs-stage-plots">
+              <GSweepPlot res={res} window={series.gWindow} />
+              <DeltaSweepPlot
+                series={series}
+                tangentX={tangentX}
+                x={at.x}
+                discStable={stableRow?.res.discriminant ?? null}
+                discNaive={naiveRow?.res.discriminant ?? null}
+                xLabel={xLabel}
+                method={method}
+              />
+              <p className="rs-small" data-testid="sweep-note">
+                Strip under the Δ plot: the {method === 'naive' ? 'textbook' : 'robust'} method’s case at each position (grey miss, green two hits, blue inside, red behind, gold
+                tangent). {series.tangents.length ? `Δ crosses 0 where the line touches the sphere (tangent, |${sweepMode === 'offset' ? 'h / r' : 'ψ / α'}| = 1).` : 'In this sweep the line never touches the sphere.'}{' '}
+                {series.naiveSignWrong > 0 ? (
+                  <strong data-testid="sweep-naive-wrong" data-value={series.naiveSignWrong}>
+                    The textbook Δ has the wrong sign (or is 0) at {series.naiveSignWrong} of {series.x.length} positions: rounding, not geometry.
+                  </strong>
+                ) : null}
+              </p>
+            </div>
+          </div>
+          <DerivationBlock testId="derivation">
+            {tl.playing ? (
+              <p className="rs-small" data-testid="derivation-held">
+                The numbers below are those of the position where the sweep started; they follow the animation when you pause it.
+              </p>
+            ) : null}
+            <DerivationSteps model={slow} />
+          </DerivationBlock>
+          <LiveAnswer testId="live-answer">
+            <div className="readouts">
+              <Readout id="a" label="a = d·d" value={res?.a ?? null} digits={10} />
+              <Readout id="b" label="b = 2 d·(o − C)" value={res?.b ?? null} digits={10} />
+              <Readout id="c" label="c = |o − C|² − r²" value={res?.c ?? null} digits={10} />
+              <Readout
+                id="discriminant"
+                label={method === 'naive' ? 'Δ = b² − 4ac (textbook: from a, b, c as shown)' : 'Δ, robust form 4a(r² − |ℓ|²)'}
+                value={res?.discriminant ?? null}
+                digits={10}
+              />
+              {method === 'stable' ? <Readout id="disc-abc" label="b² − 4ac from the a, b, c shown (textbook)" value={discFromAbc} digits={10} /> : null}
+              <Readout id="t0" label="t₀" value={res?.t0 ?? null} digits={10} />
+              <Readout id="t1" label="t₁" value={res?.t1 ?? null} digits={10} />
+              <Readout id="t-hit" label="t-hit (nearest t ≥ 0)" value={res?.tHit ?? null} digits={10} />
+              <Readout id="case" label="case" value={res?.case ?? null} />
+              <Readout id="sweep-x" label={sweepMode === 'offset' ? 'h / r (sweep)' : 'ψ / α (sweep)'} value={Number.isFinite(at.x) ? at.x : null} digits={6} />
+            </div>
+            <p className="rs-small" data-testid="disc-method-note">
+              {method === 'naive'
+                ? 'All of a, b, c, Δ and the roots are computed the textbook way: Δ is exactly b² − 4ac of the numbers shown (in double arithmetic).'
+                : robustDiffers && discFromAbc !== null && res
+                  ? `a, b, c are the textbook coefficients; Δ and the roots come from the robust form 4a(r² − |ℓ|²), which computes the same quantity without cancellation. Here it differs from b² − 4ac of the a, b, c shown (next readout) by ${fmt(Math.abs(res.discriminant - discFromAbc))}${res.discriminant !== 0 ? ` (relative ${fmt(Math.abs(res.discriminant - discFromAbc) / Math.abs(res.discriminant))})` : ''}: rounding in the textbook form.`
+                  : 'a, b, c are the textbook coefficients; Δ and the roots come from the robust form 4a(r² − |ℓ|²). Here it equals b² − 4ac of the a, b, c shown, to the last bit.'}
+            </p>
+            {res && model.reference && res.case !== model.reference.case ? (
+              <Notice kind="warn" testId="method-wrong">
+                The {method === 'naive' ? 'textbook' : 'robust'} form says <strong>{res.case}</strong>, but the exact answer for these inputs (double-double reference) is{' '}
+                <strong>{model.reference.case}</strong>: rounding has changed the case. See the precision table under “Explore further”.
+              </Notice>
+            ) : null}
+            {res?.nearTangent && res.case !== 'tangent' ? (
+              <p className="rs-small rs-near">
+                |Δ| is within this method’s rounding error of 0: the ray is tangent to within double precision, and whether it hits is decided by the last bits.
+              </p>
+            ) : null}
+          </LiveAnswer>
+          <KeyNote testId="q5-keynote">
+            the key prints no derivation; it refers to <em>Ray Tracing in One Weekend</em> and awards 2 marks for Δ ≥ 0 and 2 for t ≥ 0. That book (and this page) call the
+            centre <b>C</b> and the quadratic’s constant term c; later editions simplify with b = 2h, h = d·(o − C), giving t = (−h ± √(h² − ac)) / a: the same roots.
+          </KeyNote>
+        </ExamPart>
+      </ExamQuestion>
+      <ExploreFurther intro="Beyond the exam: the same ray in 3D, and what floating point does to the textbook formula when the sphere is far away or the ray grazes it.">
+        <Panel title="3D view">
+          <View3D o={o} d={d} c={c} r={r} res={res} distanceRatio={model.distanceRatio} height={mode.present ? 420 : 320} dark={mode.theme === 'dark'} fitExtra={ends} />
+        </Panel>
+        <Panel title="Precision: textbook vs robust, against a double-double reference">
+          <PrecisionTableMemo model={slow} />
+          <PrecisionExplainerMemo />
+        </Panel>
+        <div className="rs-explore-grid">
+          <Panel title="A distant sphere, one ray per pixel">
+            <DistantImagesMemo />
+          </Panel>
+          <Panel title="Error against distance">
+            <ErrorVsDistanceMemo current={Number(slow.distanceRatio.toPrecision(3))} here={hereErrors} />
+            <p className="rs-small">
+              Median over 12 rays per distance, aimed 0.1 r … 0.95 r off the centre; the crosses are the current ray’s Δ errors. The textbook Δ loses digits like u·(D/r)² (u =
+              2⁻⁵³): by D ≈ 10⁸ r nothing is left. The robust Δ grows only like u·(D/r), and its roots stay accurate to the last bits.
+            </p>
+          </Panel>
         </div>
-        {res && model.reference && res.case !== model.reference.case ? (
-          <Notice kind="warn" testId="method-wrong">
-            The {params.method === 'naive' ? 'textbook' : 'robust'} form says <strong>{res.case}</strong>, but the exact answer for these inputs (double-double
-            reference) is <strong>{model.reference.case}</strong>: rounding has changed the case. See the precision table below.
-          </Notice>
-        ) : null}
-        {res?.nearTangent && res.case !== 'tangent' ? (
-          <p className="rs-small rs-near">
-            |Δ| is within this method’s rounding error of 0: the ray is tangent to within double precision, and whether it hits is decided by the last bits.
-          </p>
-        ) : null}
-      </Panel>
-      <Panel title="Cross-section through the ray and the centre">
-        <CrossSection o={o} d={d} c={c} r={r} res={res} distanceRatio={model.distanceRatio} onChange={(patch) => setSoon(patch)} />
-      </Panel>
-      <Panel title="3D view">
-        <View3D o={o} d={d} c={c} r={r} res={res} distanceRatio={model.distanceRatio} height={mode.present ? 420 : 320} dark={mode.theme === 'dark'} />
-      </Panel>
-      <Panel title="g(t) = a t² + b t + c and its roots">
-        <GPlot model={slow} />
-      </Panel>
-      <Panel title="Derivation">
-        <Derivation model={slow} />
-      </Panel>
-      <Panel title="Precision: textbook vs robust, against a double-double reference">
-        <PrecisionTable model={slow} />
-        <PrecisionExplainer />
-      </Panel>
+      </ExploreFurther>
     </>
   );
 
-  const aside = (
-    <>
-      <Panel title="A distant sphere, one ray per pixel">
-        <DistantImages />
-      </Panel>
-      <Panel title="Error against distance">
-        <ErrorVsDistance current={Number(slow.distanceRatio.toPrecision(3))} here={hereErrors} />
-        <p className="rs-small">
-          Median over 12 rays per distance, aimed 0.1 r … 0.95 r off the centre; the crosses are the current ray’s Δ errors. The textbook Δ loses digits like u·(D/r)² (u = 2⁻⁵³): by D ≈ 10⁸ r
-          nothing is left. The robust Δ grows only like u·(D/r), and its roots stay accurate to the last bits.
-        </p>
-      </Panel>
-    </>
-  );
+  return <div className="rs-page">{main}</div>;
+}
 
-  return <SceneLayout controls={controls} main={main} aside={aside} />;
+/** `value`, except while `hold` is true: then the value it had when holding began. */
+function useHeldWhile<T>(value: T, hold: boolean): T {
+  const ref = useRef(value);
+  if (!hold) ref.current = value;
+  return ref.current;
 }
 
 /** `value`, but changing at most once per `ms` (leading and trailing edges). */
@@ -246,37 +435,139 @@ function tx(x: number | null, digits = 6): string {
   return `${Number(m)} \\times 10^{${Number(e)}}`;
 }
 
-function Derivation({ model }: { model: RaySphereModel }) {
+
+/** Hit test for a root: a tick or a cross. */
+const yes = (b: boolean) => (b ? '\\;\\checkmark' : '\\;\\times');
+
+/** Memoised on the (throttled, held) model: a frame of the animation does not re-render it. */
+const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySphereModel }) {
   const res = model.chosen;
+  const [cx, cy, cz] = model.input.c;
+  const survey = useMemo(() => selfIntersectionSurvey([cx, cy, cz], model.input.r, res?.method ?? 'stable', 1000), [cx, cy, cz, model.input.r, res?.method]);
   if (!res) return <p>No derivation: the inputs overflow.</p>;
   const { o, d, c, r } = model.input;
-  const v = (p: readonly number[]) => `(${p.map((x) => tx(x, 4)).join(', ')})`;
+  const v = (p: readonly number[]) => `(${p.map((x) => tx(x, 4)).join(',\\, ')})`;
+  const naive = model.rows.find((x) => x.method === 'naive')!.res;
+  const textbookDisc = naive.discriminant; // = b² − 4ac of the shown a, b, c, in double arithmetic
+  const robust = res.method === 'stable';
   const roots =
     res.t0 === null
-      ? `\\Delta < 0 \\;\\Rightarrow\\; \\text{no real root: miss}`
-      : `t_{0,1} = \\frac{-b \\mp \\sqrt{\\Delta}}{2a} = ${tx(res.t0, 8)},\\; ${tx(res.t1, 8)}`;
-  const hit = res.tHit === null ? `\\text{no root } t \\ge 0 \\;\\Rightarrow\\; \\text{no hit}` : `t_{\\text{hit}} = \\min\\{t_i \\ge 0\\} = ${tx(res.tHit, 8)}`;
+      ? `\\Delta < 0 \\;\\Rightarrow\\; \\text{no real root: the line misses the sphere}`
+      : res.t0 === res.t1
+        ? `t_0 = t_1 = -\\frac{b}{2a} = ${tx(res.t0, 8)}`
+        : `t_{0} = \\frac{-b - \\sqrt{\\Delta}}{2a} = ${tx(res.t0, 8)},\\qquad t_{1} = \\frac{-b + \\sqrt{\\Delta}}{2a} = ${tx(res.t1, 8)}`;
+  const condDisc = `\\Delta = ${tx(res.discriminant)} ${res.discriminant >= 0 ? '\\ge 0' : '< 0'}${yes(res.discriminant >= 0)}`;
+  const condT =
+    res.t0 === null
+      ? `\\text{(no roots to test)}`
+      : `t_0 = ${tx(res.t0, 6)} ${res.t0 >= 0 ? '\\ge 0' : '< 0'}${yes(res.t0 >= 0)},\\qquad t_1 = ${tx(res.t1, 6)} ${res.t1! >= 0 ? '\\ge 0' : '< 0'}${yes(res.t1! >= 0)}`;
+  const hit = res.tHit === null ? `\\text{no root } t \\ge 0 \\;\\Rightarrow\\; \\text{no hit}` : `t_{\\text{hit}} = \\min\\{\\, t_i : t_i \\ge 0 \\,\\} = ${tx(res.tHit, 8)}`;
+  const sec = secondaryFromHit(model.input, res, res.method);
+  const tMin = tMinFor(r);
+  return (
+    <div className="rs-derivation" data-testid="q5-derivation">
+      <ol className="rs-steps">
+        <li data-testid="step-substitute">
+          <p>
+            A point of the ray is p(t) = o + t d. It lies on the sphere when its distance to the centre C is r; square both sides and substitute the ray:
+          </p>
+          <MathTex display tex={`\\lVert \\mathbf p - \\mathbf C \\rVert^2 = r^2 \\quad\\Rightarrow\\quad \\lVert \\mathbf o + t\\,\\mathbf d - \\mathbf C \\rVert^2 = r^2`} />
+        </li>
+        <li data-testid="step-expand">
+          <p>Write f = o − C and expand the squared length as a dot product with itself:</p>
+          <MathTex display tex={`(\\mathbf f + t\\,\\mathbf d)\\cdot(\\mathbf f + t\\,\\mathbf d) = (\\mathbf d\\cdot\\mathbf d)\\,t^2 + 2\\,(\\mathbf d\\cdot\\mathbf f)\\,t + \\mathbf f\\cdot\\mathbf f = r^2`} />
+          <p>so t solves a quadratic:</p>
+          <MathTex display tex={`a t^2 + b t + c = 0,\\qquad a = \\mathbf d\\cdot\\mathbf d,\\quad b = 2\\,\\mathbf d\\cdot(\\mathbf o - \\mathbf C),\\quad c = \\lVert \\mathbf o - \\mathbf C\\rVert^2 - r^2`} />
+        </li>
+        <li data-testid="step-numbers">
+          <p>
+            With o = <MathTex tex={v(o)} />, d = <MathTex tex={v(d)} />, C = <MathTex tex={v(c)} />, r = <MathTex tex={tx(r, 6)} />:
+          </p>
+          <MathTex display tex={`a = ${tx(res.a)},\\qquad b = ${tx(res.b)},\\qquad c = ${tx(res.c)}`} />
+        </li>
+        <li data-testid="step-roots">
+          <p>The quadratic formula gives the roots, with the discriminant Δ:</p>
+          <MathTex display tex={`t = \\frac{-b \\pm \\sqrt{\\Delta}}{2a},\\qquad \\Delta = b^2 - 4ac = (${tx(res.b)})^2 - 4\\,(${tx(res.a)})(${tx(res.c)}) = ${tx(textbookDisc)}`} />
+          {robust ? (
+            <p className="rs-small" data-testid="step-robust-note">
+              {textbookDisc === res.discriminant
+                ? 'That is b² − 4ac of these numbers in double arithmetic; the robust form (used for the roots here, see “Explore further”) gives the same value.'
+                : `That is b² − 4ac of these numbers in double arithmetic (the textbook method). The roots below use the robust form, which computes Δ = 4a(r² − |ℓ|²) = ${fmt(res.discriminant)} without cancellation: the same quantity, different rounding.`}
+            </p>
+          ) : null}
+          <MathTex display tex={roots} />
+        </li>
+        <li data-testid="step-conditions">
+          <p>
+            <strong>Conditions for a hit</strong> (the marks):
+          </p>
+          <ul>
+            <li>
+              <strong>Δ ≥ 0</strong>: the quadratic has real roots, i.e. the <em>line</em> meets the sphere (Δ = 0: it touches it, a double root).{' '}
+              <MathTex tex={condDisc} />
+            </li>
+            <li>
+              <strong>t ≥ 0</strong>: a ray only goes forward from its origin, so a root with t &lt; 0 is a meeting point <em>behind</em> the origin and does not count. <MathTex tex={condT} />
+            </li>
+          </ul>
+        </li>
+        <li data-testid="step-hit">
+          <p>
+            The hit is the <strong>nearest non-negative root</strong>: t₀ if t₀ ≥ 0 (the ray enters there), otherwise t₁ if t₁ ≥ 0 (the origin is inside the sphere: the ray
+            leaves at t₁), otherwise none.
+          </p>
+          <MathTex display tex={hit} />
+        </li>
+        <li data-testid="step-tmin">
+          <p>
+            <strong>Why renderers test t &gt; t_min (a small positive number) instead of t ≥ 0.</strong> A shadow or reflection ray starts at a hit point on the surface. That
+            point is computed in floating point, so it lies a rounding error inside or outside the sphere, and the quadratic then has a root t ≈ 0 at the starting point itself.
+            With t ≥ 0 that root can count as a hit: the surface shadows itself (“shadow acne”, a speckle of dark dots). Testing t &gt; t_min, here t_min = 10⁻⁴ r ={' '}
+            {fmt(tMin)}, skips it.
+          </p>
+          {sec ? (
+            <p data-testid="tmin-example">
+              Here: the hit point p = o + t_hit d = <MathTex tex={v(sec.p)} /> lies |p − C| − r = {fmt(sec.offSurface)} off the surface. A ray leaving it along the outward
+              normal (towards a light straight above) has roots t = {fmt(sec.res.t0)} and {fmt(sec.res.t1)}: the first is the far side of the sphere behind it, the second is{' '}
+              <em>p itself</em>.{' '}
+              {sec.selfHit !== null
+                ? `With t ≥ 0 it counts as a hit at t = ${fmt(sec.selfHit)}: the point would be in its own shadow. With t > t_min: ${sec.hitWithTMin === null ? 'no hit, the point is lit' : `a hit at ${fmt(sec.hitWithTMin)}`}.`
+                : `Here rounding happened to put p just outside, so t ≥ 0 already rejects it; on other points it does not.`}
+            </p>
+          ) : null}
+          <p data-testid="tmin-survey" data-zero={survey.withZero} data-tmin={survey.withTMin} data-count={survey.count}>
+            Over {survey.count} points spread evenly over this sphere (each computed as C + r n in doubles), a ray leaving along the normal hits its own surface with t ≥ 0 at{' '}
+            <strong>{survey.withZero}</strong> points, and with t &gt; t_min at <strong>{survey.withTMin}</strong>.
+          </p>
+        </li>
+      </ol>
+    </div>
+  );
+});
+
+const SUP: Record<string, string> = { '-': '⁻', '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶', '7': '⁷', '8': '⁸', '9': '⁹' };
+
+/** A number for text: 6 significant digits, m × 10ⁿ for very large or small, a real minus sign. */
+function fmt(x: number | null): string {
+  if (x === null || !Number.isFinite(x)) return 'none';
+  if (x === 0) return '0';
+  const ax = Math.abs(x);
+  let out: string;
+  if (ax >= 1e-3 && ax < 1e7) out = String(Number(x.toPrecision(6)));
+  else {
+    const [m, e] = x.toExponential(5).split('e');
+    const ex = String(Number(e)).replace(/./g, (ch) => SUP[ch] ?? ch);
+    out = Number(m) === 1 ? `10${ex}` : `${Number(m)} × 10${ex}`;
+  }
+  return out.replace('-', '−');
+}
+
+
+function RobustForm() {
   return (
     <div className="rs-derivation">
-      <p>A point of the ray is p(t) = o + t d; it is on the sphere when its distance to c is r:</p>
-      <MathTex display tex={`\\lVert \\mathbf o + t\\,\\mathbf d - \\mathbf c \\rVert^2 = r^2`} />
-      <p>Expand with f = o − c (a dot product with itself is a squared length):</p>
-      <MathTex display tex={`(\\mathbf d\\cdot\\mathbf d)\\,t^2 + 2\\,(\\mathbf d\\cdot\\mathbf f)\\,t + (\\mathbf f\\cdot\\mathbf f - r^2) = 0`} />
-      <MathTex display tex={`a t^2 + b t + c = 0`} />
-      <MathTex display tex={`a = \\mathbf d\\cdot\\mathbf d,\\quad b = 2\\,\\mathbf d\\cdot\\mathbf f,\\quad c = \\mathbf f\\cdot\\mathbf f - r^2`} />
-      <p>
-        With o = {v(o)}, d = {v(d)}, c = {v(c)}, r = {tx(r, 4)}:
-      </p>
-      <MathTex display tex={`a = ${tx(res.a)},\\quad b = ${tx(res.b)},\\quad c = ${tx(res.c)}`} />
-      <MathTex display tex={`\\Delta = b^2 - 4ac = ${tx(res.discriminant)}`} />
-      <MathTex display tex={roots} />
-      <MathTex display tex={hit} />
-      <p>
-        Two conditions make a hit: <strong>Δ ≥ 0</strong> (the line meets the sphere) and <strong>a root t ≥ 0</strong> (the meeting point is in front of the origin). The hit is the
-        smallest such root.
-      </p>
       <p>The robust form (Ray Tracing Gems, ch. 7) computes the same Δ without subtracting two huge numbers, and picks the root formula that never cancels:</p>
-      <MathTex display tex={`\\Delta = 4a\\left(r^2 - \\Bigl\\lVert \\mathbf f - \\tfrac{\\mathbf f\\cdot\\mathbf d}{a}\\,\\mathbf d \\Bigr\\rVert^2\\right)`} />
+      <MathTex display tex={`\\Delta = 4a\\left(r^2 - \\lVert \\boldsymbol\\ell \\rVert^2\\right),\\qquad \\boldsymbol\\ell = \\mathbf f - \\tfrac{\\mathbf f\\cdot\\mathbf d}{a}\\,\\mathbf d\\quad(\\text{from C to the closest point of the line})`} />
       <MathTex display tex={`q = -\\left(\\tfrac b2 + \\operatorname{sign}(b)\\,\\tfrac{\\sqrt{\\Delta}}{2}\\right),\\qquad t = \\frac{c}{q},\\; \\frac{q}{a}`} />
     </div>
   );
@@ -285,6 +576,7 @@ function Derivation({ model }: { model: RaySphereModel }) {
 function PrecisionExplainer() {
   return (
     <div className="rs-small">
+      <RobustForm />
       <p>
         The reference solves the same quadratic with the inputs taken as exact doubles, in double-double arithmetic (about 106 bits: Dekker’s TwoProduct and Knuth’s TwoSum),
         using Δ/4 = a r² − |d × f|² so that only the genuine cancellation is left. It is checked against 400-digit mathjs BigNumber arithmetic in the tests.
@@ -299,44 +591,3 @@ function PrecisionExplainer() {
   );
 }
 
-function GPlot({ model }: { model: RaySphereModel }) {
-  const res = model.chosen;
-  const { data, layout } = useMemo(() => {
-    if (!res) return { data: [] as PlotTrace[], layout: {} };
-    const g = gCurve(res);
-    // When t is huge compared with the window, plot t − t_v so the axis stays readable.
-    const tv = -res.b / (2 * res.a);
-    const shift = Math.abs(tv) > 1e4 * (g.tMax - g.tMin) ? tv : 0;
-    const xs = g.t.map((t) => t - shift);
-    const roots = res.t0 === null ? [] : res.t0 === res.t1 ? [res.t0] : [res.t0, res.t1!];
-    const traces: PlotTrace[] = [
-      { x: xs, y: g.g, mode: 'lines', name: 'g(t)', line: { color: '#1f5fa8', width: 2 }, hovertemplate: 't=%{x}<br>g=%{y}<extra></extra>' },
-      {
-        x: roots.map((t) => t - shift),
-        y: roots.map(() => 0),
-        mode: 'markers+text',
-        name: 'roots',
-        text: roots.map((t) => (t === res.tHit ? 'hit' : t < 0 ? 't < 0' : '')),
-        textposition: 'top center',
-        marker: { size: 11, color: roots.map((t) => (t === res.tHit ? '#e8590c' : t < 0 ? '#888' : '#1f5fa8')), line: { width: 1, color: '#222' } },
-      },
-    ];
-    const shapes: Record<string, unknown>[] = [{ type: 'line', xref: 'x', yref: 'paper', x0: g.tMin - shift, x1: g.tMax - shift, y0: 0, y1: 0, line: { width: 0 } }];
-    if (shift === 0 && g.tMin < 0) {
-      shapes.push({ type: 'rect', xref: 'x', yref: 'paper', x0: g.tMin, x1: 0, y0: 0, y1: 1, fillcolor: 'rgba(136,136,136,0.15)', line: { width: 0 } });
-      shapes.push({ type: 'line', xref: 'x', yref: 'paper', x0: 0, x1: 0, y0: 0, y1: 1, line: { color: '#888', width: 1 } });
-    }
-    return {
-      data: traces,
-      layout: {
-        showlegend: false,
-        xaxis: { title: { text: shift ? `t − ${shift.toPrecision(12)}` : 't (grey: behind the origin, t < 0)' }, zeroline: false },
-        yaxis: { title: { text: 'g(t)' }, zeroline: true, zerolinewidth: 2 },
-        shapes,
-        margin: { l: 56, r: 16, t: 10, b: 50 },
-      },
-    };
-  }, [res]);
-  if (!res) return null;
-  return <Plot data={data} layout={layout} height={260} ariaLabel="The quadratic g(t) with its real roots marked on the t axis" testId="g-plot" />;
-}

@@ -55,7 +55,7 @@ export function checkInputs(p: Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r'>): In
   };
   const o = fin(p.o, 'The origin o', schema.o.default);
   let d = fin(p.d, 'The direction d', schema.d.default);
-  const c = fin(p.c, 'The centre c', schema.c.default);
+  const c = fin(p.c, 'The centre C', schema.c.default);
   let r = p.r;
   if (!Number.isFinite(r)) {
     problems.push(`The radius is not a finite number; using r = ${schema.r.default}.`);
@@ -110,7 +110,7 @@ function relDisc(x: number, ref: number): number {
 }
 
 /** Everything the page shows, for one parameter set. */
-export function computeModel(p: RaySphereParams): RaySphereModel {
+export function computeModel(p: Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r' | 'method'>): RaySphereModel {
   const input = checkInputs(p);
   const { o, d, c, r } = input;
   const ref = raySphereReference(o, d, c, r);
@@ -380,4 +380,285 @@ function range(a: number, b: number, step: number): number[] {
   const xs: number[] = [];
   for (let x = a; x <= b + 1e-9; x += step) xs.push(Math.round(x * 1000) / 1000);
   return xs;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The sweep animation (issue 12): the ray moves across the sphere as the timeline's t goes 0 → 1.
+// Everything on screen at position t is a pure function of the parameters and t.
+
+export type SweepMode = 'offset' | 'rotate';
+
+export interface Sweep {
+  mode: SweepMode;
+  /** Extent E: the origin moves ±E r (offset), or the direction turns ±E α (rotate). */
+  extent: number;
+  /** The configuration the sweep is centred on (t = 0.5): the checked inputs. */
+  base: InputCheck;
+  /** In-plane frame of the base configuration: e1 = d / |d|, e2 from C towards the line. */
+  e1: V3;
+  e2: V3;
+  /** Signed distance of the base line from C along e2 (= |l| ≥ 0). */
+  h0: number;
+  /** |d| and |o − C| of the base configuration. */
+  dl: number;
+  dist: number;
+  /** The sphere's angular radius seen from o: asin(min(1, r / |o − C|)); π/2 from inside. */
+  alpha: number;
+  /** Angle (in the e1, e2 plane) of the direction from o towards C. */
+  omega: number;
+}
+
+/** The sweep's frame and constants for one parameter set (t-independent). */
+export function makeSweep(input: InputCheck, mode: SweepMode, extent: number): Sweep {
+  const { o, d, c, r } = input;
+  const fr = canonicalFrame(o, d, c);
+  const f = sub(o, c);
+  const dist = norm(f);
+  // l = f − (f·d / d·d) d: from C to the closest point of the line (as in the robust form); its
+  // length is the line's distance from C. e2 = l / |l|, made exactly perpendicular to e1 again
+  // (for a far sphere l's direction carries the rounding of f·d, and f·e2 would cancel to 0).
+  const e1 = fr.e1;
+  const l = sub(f, scale(d, dot(f, d) / dot(d, d)));
+  const h0 = norm(l);
+  let e2: V3 = fr.e2;
+  if (h0 > 0 && Number.isFinite(h0)) {
+    let w = scale(l, 1 / h0);
+    w = sub(w, scale(e1, dot(w, e1)));
+    const wn = norm(w);
+    if (wn > 0.5) e2 = scale(w, 1 / wn);
+  }
+  const alpha = dist > r ? Math.asin(r / dist) : Math.PI / 2;
+  // direction from o to C in the (e1, e2) plane: −f = −(f·e1) e1 − h0 e2
+  const omega = Math.atan2(-h0, -dot(f, e1));
+  return { mode, extent: Number.isFinite(extent) && extent > 0 ? extent : 2.5, base: input, e1, e2, h0, dl: norm(d), dist, alpha, omega };
+}
+
+export interface SweepState {
+  t: number;
+  o: V3;
+  d: V3;
+  /**
+   * The sweep coordinate drawn on the Δ plot's x axis. Offset: the signed distance of the line
+   * from C in radii, h / r (tangent at ±1). Rotate: the angle between d and the direction to C in
+   * angular radii, ψ / α (tangent at ±1 when the origin is outside).
+   */
+  x: number;
+}
+
+/** Where the ray is at timeline position t ∈ [0, 1] (t = 0.5: the configuration typed in o, d). */
+export function sweepAt(sw: Sweep, t: number): SweepState {
+  const u = 2 * Math.min(1, Math.max(0, Number.isFinite(t) ? t : 0.5)) - 1;
+  const { o, d, r } = sw.base;
+  if (u === 0) {
+    // exactly the typed configuration (no rounding from adding zero offsets)
+    return { t, o: [o[0], o[1], o[2]], d: [d[0], d[1], d[2]], x: sw.mode === 'offset' ? sw.h0 / r : psi(sw, 0) };
+  }
+  if (sw.mode === 'offset') {
+    const s = u * sw.extent * r;
+    return { t, o: [o[0] + s * sw.e2[0], o[1] + s * sw.e2[1], o[2] + s * sw.e2[2]], d: [d[0], d[1], d[2]], x: (sw.h0 + s) / r };
+  }
+  const th = u * sw.extent * sw.alpha;
+  const cs = Math.cos(th) * sw.dl;
+  const sn = Math.sin(th) * sw.dl;
+  return { t, o: [o[0], o[1], o[2]], d: [cs * sw.e1[0] + sn * sw.e2[0], cs * sw.e1[1] + sn * sw.e2[1], cs * sw.e1[2] + sn * sw.e2[2]], x: psi(sw, th) };
+}
+
+/** Angle between the direction at in-plane angle θ and the direction to C, in angular radii, in (−π/α, π/α]. */
+function psi(sw: Sweep, theta: number): number {
+  let p = theta - sw.omega;
+  p = Math.atan2(Math.sin(p), Math.cos(p));
+  return p / sw.alpha;
+}
+
+/** The sweep range of x (the Δ plot's axis), from t = 0 to t = 1 (may decrease). */
+export function sweepXRange(sw: Sweep): [number, number] {
+  return [sweepAt(sw, 0).x, sweepAt(sw, 1).x];
+}
+
+/** The scene's parameters with the ray moved to timeline position t (for computeModel). */
+export function paramsAt(p: RaySphereParams, sw: Sweep, t: number): RaySphereParams {
+  const s = sweepAt(sw, t);
+  return { ...p, o: s.o, d: s.d };
+}
+
+export interface SweepSeries {
+  t: number[];
+  x: number[];
+  /** Δ by each method at each sample (in the meaning b² − 4ac). */
+  discNaive: number[];
+  discStable: number[];
+  /** The chosen method's case at each sample. */
+  cases: RaySphereCase[];
+  /** Positions t where the robust Δ changes sign (tangency), refined by bisection. */
+  tangents: number[];
+  /** Samples where the textbook Δ has the wrong sign (against the robust one, which is within its error bound). */
+  naiveSignWrong: number;
+  /** A fixed window for the g(t) plot over the whole sweep: t range (before the shift) and g range. */
+  gWindow: { tMin: number; tMax: number; gMin: number; gMax: number; shift: number };
+}
+
+/**
+ * Sample the sweep (n + 1 positions) for the Δ plot, the case strip and the g(t) plot's fixed
+ * window. Pure; t-independent (memoise on the parameters).
+ */
+export function sweepSeries(p: Pick<RaySphereParams, 'method'>, sw: Sweep, n = 240): SweepSeries {
+  const out: SweepSeries = { t: [], x: [], discNaive: [], discStable: [], cases: [], tangents: [], naiveSignWrong: 0, gWindow: { tMin: 0, tMax: 1, gMin: -1, gMax: 1, shift: 0 } };
+  const { c, r } = sw.base;
+  const method = p.method === 'naive' ? 'naive' : 'stable';
+  let lo = Infinity;
+  let hi = -Infinity;
+  const tvs: number[] = [];
+  const discs: number[] = [];
+  let a = 1;
+  for (let i = 0; i <= n; i++) {
+    const t = i / n;
+    const s = sweepAt(sw, t);
+    const rn = intersectRaySphere(s.o, s.d, c, r, 'naive');
+    const rs = intersectRaySphere(s.o, s.d, c, r, 'stable');
+    if (!rn.ok || !rs.ok) continue;
+    a = rs.a;
+    out.t.push(t);
+    out.x.push(s.x);
+    out.discNaive.push(rn.discriminant);
+    out.discStable.push(rs.discriminant);
+    const ch = method === 'naive' ? rn : rs;
+    out.cases.push(ch.case);
+    if (Math.sign(rn.discriminant) !== Math.sign(rs.discriminant) && !rs.nearTangent) out.naiveSignWrong++;
+    tvs.push(-ch.b / (2 * ch.a));
+    discs.push(ch.discriminant);
+    if (ch.t0 !== null) {
+      lo = Math.min(lo, ch.t0);
+      hi = Math.max(hi, ch.t1!);
+    }
+  }
+  // tangency: sign changes of the robust Δ between samples, bisected to the last bit of t
+  const sign = (t: number) => {
+    const s = sweepAt(sw, t);
+    const res = intersectRaySphere(s.o, s.d, c, r, 'stable');
+    return res.ok ? Math.sign(res.discriminant) : 0;
+  };
+  for (let i = 1; i < out.t.length; i++) {
+    const s0 = Math.sign(out.discStable[i - 1]!);
+    const s1 = Math.sign(out.discStable[i]!);
+    if (s0 === s1) continue;
+    if (s1 === 0) {
+      out.tangents.push(out.t[i]!);
+      continue;
+    }
+    if (s0 === 0) continue;
+    let a0 = out.t[i - 1]!;
+    let a1 = out.t[i]!;
+    for (let k = 0; k < 60 && a1 - a0 > 1e-15; k++) {
+      const m = 0.5 * (a0 + a1);
+      const sm = sign(m);
+      if (sm === 0) {
+        a0 = a1 = m;
+        break;
+      }
+      if (sm === s0) a0 = m;
+      else a1 = m;
+    }
+    out.tangents.push(0.5 * (a0 + a1));
+  }
+  // g(t) window: every root of the sweep, and the vertex; t = 0 when it is not far off
+  const tvMin = Math.min(...tvs);
+  const tvMax = Math.max(...tvs);
+  const spread = Number.isFinite(lo) ? hi - lo : 0;
+  const discMax = Math.max(...discs.map(Math.abs));
+  let half = Math.max(spread * 0.6, tvMax - tvMin, Math.sqrt(discMax) / a, 1e-300);
+  if (!Number.isFinite(half) || half <= 0) half = 1;
+  const mid = Number.isFinite(lo) ? 0.5 * (lo + hi) : 0.5 * (tvMin + tvMax);
+  // a window narrower than the spacing of doubles near mid would collapse
+  half = Math.max(half, Math.abs(mid) * 1e-12);
+  let tMin = Math.min(mid - half, tvMin - 0.25 * half);
+  let tMax = Math.max(mid + half, tvMax + 0.25 * half);
+  if (Math.abs(mid) < 3 * half) {
+    tMin = Math.min(tMin, -0.15 * half);
+    tMax = Math.max(tMax, 0.15 * half);
+  }
+  const shift = Math.abs(mid) > 1e4 * (tMax - tMin) ? mid : 0;
+  // g in vertex form a (t − t_v)² − Δ / 4a, over the window, for every sampled state
+  let gMin = Infinity;
+  let gMax = -Infinity;
+  for (let i = 0; i < tvs.length; i++) {
+    const tv = tvs[i]!;
+    const k = discs[i]! / (4 * a);
+    const far = Math.max((tMin - tv) ** 2, (tMax - tv) ** 2);
+    gMin = Math.min(gMin, -k);
+    gMax = Math.max(gMax, a * far - k);
+  }
+  if (!(gMax > gMin)) {
+    gMin -= 1;
+    gMax += 1;
+  }
+  const pad = 0.08 * (gMax - gMin);
+  out.gWindow = { tMin, tMax, gMin: Math.min(gMin - pad, -pad), gMax: gMax + pad, shift };
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Why renderers test t > t_min instead of t ≥ 0: a secondary ray that starts on the surface.
+
+export interface SecondaryRay {
+  /** The starting point, computed in doubles (so not exactly on the sphere). */
+  p: V3;
+  /** |p − C| − r: how far rounding has put p off the surface. */
+  offSurface: number;
+  /** The outward normal at p: the ray's direction (a light straight above the surface). */
+  n: V3;
+  /** The secondary ray's intersection with the same sphere. */
+  res: RaySphereHit;
+  /** The root a t ≥ 0 test accepts (the surface hitting itself), or null. */
+  selfHit: number | null;
+  /** The root a t > t_min test accepts, or null. */
+  hitWithTMin: number | null;
+}
+
+/** A renderer's t_min for this sphere: 10⁻⁴ r (scaled to the scene; t is a length along a unit direction here). */
+export const tMinFor = (r: number) => 1e-4 * r;
+
+/** The secondary ray leaving the point q (on the sphere up to rounding) along the outward normal. */
+export function secondaryRay(q: V3, c: V3, r: number, method: RaySphereMethod): SecondaryRay | null {
+  const f = sub(q, c);
+  const len = norm(f);
+  if (!(len > 0) || !Number.isFinite(len)) return null;
+  const n = scale(f, 1 / len);
+  const res = intersectRaySphere(q, n, c, r, method);
+  if (!res.ok) return null;
+  const tMin = tMinFor(r);
+  const roots = res.t0 === null ? [] : [res.t0, res.t1!];
+  const after = roots.filter((t) => t > tMin);
+  return { p: q, offSurface: len - r, n, res, selfHit: res.tHit, hitWithTMin: after.length ? Math.min(...after) : null };
+}
+
+/** The secondary ray from the current ray's hit point p = o + t_hit d, or null without a hit. */
+export function secondaryFromHit(input: InputCheck, hit: RaySphereHit | null, method: RaySphereMethod): SecondaryRay | null {
+  if (!hit || hit.tHit === null) return null;
+  const { o, d, c, r } = input;
+  const t = hit.tHit;
+  return secondaryRay([o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]], c, r, method);
+}
+
+/**
+ * Secondary rays from `count` points spread evenly over the sphere (a Fibonacci lattice), each
+ * point computed in doubles as C + r n: how many see their own surface with t ≥ 0, and with
+ * t > t_min. Deterministic.
+ */
+export function selfIntersectionSurvey(c: V3, r: number, method: RaySphereMethod, count = 1000): { count: number; withZero: number; withTMin: number } {
+  const golden = Math.PI * (3 - Math.sqrt(5));
+  let withZero = 0;
+  let withTMin = 0;
+  let n = 0;
+  for (let k = 0; k < count; k++) {
+    const z = 1 - (2 * (k + 0.5)) / count;
+    const s = Math.sqrt(Math.max(0, 1 - z * z));
+    const ph = k * golden;
+    const u: V3 = [s * Math.cos(ph), s * Math.sin(ph), z];
+    const sec = secondaryRay([c[0] + r * u[0], c[1] + r * u[1], c[2] + r * u[2]], c, r, method);
+    if (!sec) continue;
+    n++;
+    if (sec.selfHit !== null) withZero++;
+    if (sec.hitWithTMin !== null) withTMin++;
+  }
+  return { count: n, withZero, withTMin };
 }

@@ -1,19 +1,26 @@
 /**
  * URL parameters of #/ray-sphere (see /shared/spec/contract.md): the ray o + t d, the sphere
- * (centre c, radius r) and the evaluation method. Vectors are "x,y,z" in z-up world space.
+ * (centre C, radius r; the URL parameter for C is `c`) and the evaluation method. Vectors are
+ * "x,y,z" in z-up world space. The sweep animation: `sweep` (the origin moves across the ray, or
+ * the direction turns), `extent` (how far, in radii / angular radii either side) and the shared
+ * timeline's `t` ∈ [0, 1] (0.5, the default, is the configuration typed in o, d) and `play`.
  * The radius may be typed ≤ 0 (it is in range here so the scene itself can explain why that is
  * not a sphere and fall back); non-numbers are rejected by the shell with a notice.
  */
 import type { ParamSchema, ParamValues } from '../../app/params';
+import { timelineParams } from '../../ui/timeline';
 
 const BIG = 1e12;
 
 export const schema = {
   o: { kind: 'vec3', default: [-3, -1.2, 0.6], min: -BIG, max: BIG, label: 'ray origin o' },
   d: { kind: 'vec3', default: [1, 0.4, -0.15], min: -BIG, max: BIG, label: 'ray direction d' },
-  c: { kind: 'vec3', default: [0, 0, 0], min: -BIG, max: BIG, label: 'sphere centre c' },
+  c: { kind: 'vec3', default: [0, 0, 0], min: -BIG, max: BIG, label: 'sphere centre C' },
   r: { kind: 'number', default: 1, min: -BIG, max: BIG, label: 'sphere radius r' },
   method: { kind: 'enum', default: 'stable', values: ['stable', 'naive'], aliases: { robust: 'stable', textbook: 'naive' }, label: 'method' },
+  sweep: { kind: 'enum', default: 'offset', values: ['offset', 'rotate'], aliases: { shift: 'offset', move: 'offset', turn: 'rotate', rotation: 'rotate' }, label: 'sweep mode' },
+  extent: { kind: 'number', default: 2.5, min: 0.05, max: 1000, label: 'sweep extent (radii, or angular radii when rotating)' },
+  ...timelineParams({ max: 1, default: 0.5 }),
 } as const satisfies ParamSchema;
 
 export type RaySphereParams = ParamValues<typeof schema>;
@@ -44,19 +51,19 @@ export const PRECISION_PRESETS: readonly Preset[] = [
   {
     id: 'far',
     label: 'Small sphere 10⁸ r away',
-    what: 'c′ = 10¹⁶ − 1 rounds to 10¹⁶, so b² − 4ac′ = 0: the textbook form reports a tangent and misplaces the hit by 0.87 r.',
+    what: 'c = 10¹⁶ − 1 rounds to 10¹⁶, so b² − 4ac = 0: the textbook form reports a tangent and misplaces the hit by 0.87 r.',
     params: { o: [0, 0, 0], d: [1, 5e-9, 0], c: [1e8, 0, 0], r: 1 },
   },
   {
     id: 'grazing',
     label: 'Grazing ray at 10⁵',
-    what: 'The ray passes 10⁻⁵ r inside the rim from 10⁵ r away: b² and 4ac′ (both ≈ 4·10¹⁰) agree to 15 digits, so the textbook Δ ≈ 8·10⁻⁵ is 5% off and its roots move by 10⁻⁴.',
+    what: 'The ray passes 10⁻⁵ r inside the rim from 10⁵ r away: b² and 4ac (both ≈ 4·10¹⁰) agree to 15 digits, so the textbook Δ ≈ 8·10⁻⁵ is 5% off and its roots move by 10⁻⁴.',
     params: { o: [-1e5, 0.99999, 0], d: [1, 0, 0], c: [0, 0, 0], r: 1 },
   },
   {
     id: 'ulp-past',
     label: 'One ulp past tangent',
-    what: 'The ray passes at 1 + 2⁻⁵² from the centre: exactly a miss. The textbook form rounds c′ and reports a tangent hit.',
+    what: 'The ray passes at 1 + 2⁻⁵² from the centre: exactly a miss. The textbook form rounds c and reports a tangent hit.',
     params: { o: [-5, 1.0000000000000002, 0], d: [1, 0, 0], c: [0, 0, 0], r: 1 },
   },
   {

@@ -17,7 +17,7 @@ import {
 import { schema, CASE_PRESETS, PRECISION_PRESETS, type RaySphereParams } from '../../../src/scenes/ray-sphere/params';
 import type { Vec3 } from '../../../src/core/geometry';
 
-const base: RaySphereParams = { o: [-3, -1.2, 0.6], d: [1, 0.4, -0.15], c: [0, 0, 0], r: 1, method: 'stable' };
+const base: RaySphereParams = { o: [-3, -1.2, 0.6], d: [1, 0.4, -0.15], c: [0, 0, 0], r: 1, method: 'stable', sweep: 'offset', extent: 2.5, t: 0.5, play: false };
 
 describe('input checks: bad input → message + safe fallback', () => {
   it('zero direction falls back to the default direction', () => {

@@ -1,10 +1,10 @@
 /**
- * The derivation panel: Q1 step by step for the chosen lobe, with the live numbers from the core.
+ * The derivation of a lobe other than the exam's (whose derivation is the exam section, view/ExamQ1.tsx),
+ * with the live numbers from the core.
  * For a typed density the steps are numerical (tabulated) and say so.
  */
 import { MathTex, formatNumber } from '../../../ui';
 import type { TabulatedHemisphere } from '../../../core/sampling';
-import { examNumbers } from '../model';
 import type { LobeId } from '../params';
 
 const n6 = (x: number) => formatNumber(x, 6).replace('×10', '\\times 10^{').replace(/([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)/, (m) => `${fromSup(m)}}`);
@@ -30,69 +30,9 @@ function Step({ n, title, tex, children }: { n: number; title: string; tex: stri
   );
 }
 
-export function Derivation({ lobe, exponent, custom, customTex, inverted }: { lobe: LobeId; exponent: number; custom: TabulatedHemisphere | null; customTex: string | null; inverted: boolean }) {
-  if (lobe === 'exam') {
-    const e = examNumbers();
-    const ex = e.example;
-    return (
-      <ol className="derivation" data-testid="derivation">
-        <Step
-          n={1}
-          title="Normalize over solid angle (Q1a)"
-          tex={[
-            `\\begin{aligned}\\int_\\Omega p(\\omega)\\,d\\omega &= k\\int_0^{\\pi/2}\\!\\cos\\theta\\sin\\theta\\,d\\theta\\int_0^{2\\pi}\\!e^{\\phi}\\,d\\phi \\\\ &= k\\cdot\\tfrac12\\cdot(e^{2\\pi}-1) = 1\\end{aligned}`,
-            `k = \\frac{2}{e^{2\\pi}-1} = \\frac{2}{${n6(e.e2piMinus1)}} = ${n6(e.k)}`,
-          ]}
-        >
-          dω = sin θ dθ dφ: the extra sin θ is the area of a thin ring of directions. k is computed as 2/expm1(2π).
-        </Step>
-        <Step
-          n={2}
-          title="Change of variables (Q1b)"
-          tex={
-            inverted
-              ? [`p(\\theta,\\phi) = \\sin\\theta\\,p(\\omega) = k\\sin\\theta\\cos\\theta\\,e^{\\phi}`, `\\cancel{p(\\theta,\\phi) = p(\\omega)/\\sin\\theta = k\\cot\\theta\\,e^{\\phi}}\\quad\\text{(the key's upside-down variant: see below)}`]
-              : `p(\\theta,\\phi) = \\sin\\theta\\,p(\\omega) = k\\sin\\theta\\cos\\theta\\,e^{\\phi}`
-          }
-        >
-          Probability is conserved: p(θ, φ) dθ dφ = p(ω) dω, and dω = sin θ dθ dφ.
-        </Step>
-        <Step
-          n={3}
-          title="Marginals"
-          tex={[
-            `\\begin{aligned}p(\\theta) &= \\int_0^{2\\pi} p(\\theta,\\phi)\\,d\\phi \\\\ &= k\\sin\\theta\\cos\\theta\\,(e^{2\\pi}-1) = \\sin 2\\theta\\end{aligned}`,
-            `\\begin{aligned}p(\\phi) &= \\int_0^{\\pi/2} p(\\theta,\\phi)\\,d\\theta = \\frac{k}{2}e^{\\phi} \\\\ &= \\frac{e^{\\phi}}{e^{2\\pi}-1}, \\qquad \\tfrac{k}{2} = ${n6(e.halfK)}\\end{aligned}`,
-          ]}
-        >
-          The density is separable, p(θ, φ) = p(θ) p(φ), so θ and φ can be sampled independently. (The key's intermediate line for p(θ)
-          keeps a stray e^φ inside the integral over φ; its result, sin 2θ, is right.)
-        </Step>
-        <Step n={4} title="CDFs (Q1c)" tex={[`P(\\theta) = \\int_0^{\\theta}\\sin 2t\\,dt = \\frac{1-\\cos 2\\theta}{2} = \\sin^2\\theta`, `P(\\phi) = \\frac{e^{\\phi}-1}{e^{2\\pi}-1}`]} />
-        <Step
-          n={5}
-          title="Invert (Q1d)"
-          tex={[
-            `\\theta = \\tfrac12\\arccos(1-2\\xi_1) = \\arcsin\\sqrt{\\xi_1}`,
-            `\\phi = \\ln\\big((e^{2\\pi}-1)\\xi_2+1\\big)`,
-            `\\sin\\theta = \\sqrt{\\xi_1},\\quad \\cos\\theta = \\sqrt{1-\\xi_1}`,
-            `\\phi = \\operatorname{log1p}\\big(\\operatorname{expm1}(2\\pi)\\,\\xi_2\\big)`,
-          ]}
-        >
-          The second line is what the code runs: from cos 2θ = 1 − 2ξ₁ the half-angle identities give sin²θ = ξ₁ and cos²θ = 1 − ξ₁, so no
-          arccos is needed and both stay accurate for tiny and near-1 ξ (see the stability panel).
-        </Step>
-        <Step
-          n={6}
-          title="Worked example"
-          tex={[
-            `\\xi = (${ex.xi1}, ${ex.xi2})\\;\\mapsto\\; \\theta = ${n6(ex.theta)},\\ \\phi = ${n6(ex.phi)}`,
-            `\\omega = (${n6(ex.sinTheta * Math.cos(ex.phi))},\\ ${n6(ex.sinTheta * Math.sin(ex.phi))},\\ ${n6(ex.cosTheta)})`,
-          ]}
-        />
-      </ol>
-    );
-  }
+export function Derivation({ lobe, exponent, custom, customTex }: { lobe: LobeId; exponent: number; custom: TabulatedHemisphere | null; customTex: string | null }) {
+  // the exam lobe's derivation is written out part by part in the exam section (view/ExamQ1.tsx)
+  if (lobe === 'exam') return null;
   if (lobe === 'uniform')
     return (
       <ol className="derivation" data-testid="derivation">

@@ -1,16 +1,24 @@
 /**
- * The 3D hemisphere: samples appear, animated, from 1 up to n (≤ 10⁶), with play / pause / step /
- * reset (and the classroom shortcuts). One preallocated Float32Array position attribute (and one
- * Uint8 colour attribute) is filled in place, batch by batch, and only the new range is uploaded;
- * setDrawRange shows the first `shown` points. Nothing renders once the growth has finished
- * unless the camera moves. The warped (ξ₁, ξ₂) grid is drawn on the hemisphere.
+ * The 3D hemisphere, driven by the shared timeline (src/ui/timeline.ts): what it draws at position
+ * t is the model's `animFrame` (a pure function of the parameters, the seed and t), the view only
+ * draws it.
+ *
+ * - Warp morph (`anim=warp`): every sample and the (ξ₁, ξ₂) grid travel from the unit square (laid
+ *   in the base plane, [−1, 1]²) to their directions on the hemisphere as t goes 0 → 1. The points'
+ *   mix is done in the vertex shader (one uniform per frame, no per-point work on the CPU); the
+ *   grid is mixed on the CPU with the model's `morphPoint` (a few thousand vertices).
+ * - Growth (`anim=grow`): the first `growCount(n, t)` samples are drawn (geometric, 0 → n).
+ *
+ * One preallocated Float32 position attribute (the directions), one Uint8 colour attribute and one
+ * Float32 (ξ₁, ξ₂) attribute are filled in place, batch by batch, up to what the frame needs;
+ * filled points are kept, so scrubbing back and forth costs nothing. Nothing renders while the
+ * timeline is paused and the buffers are filled, unless the camera moves.
  */
-import { useEffect, useEffectEvent, useRef, useState } from 'react';
+import { useEffect, useEffectEvent, useRef } from 'react';
 import type * as THREE from 'three';
 import { Viewport, type ViewportContext } from '../../../three';
-import { Toggle, Transport, useShortcuts } from '../../../ui';
 import { fillSequence2D, type SequenceKind } from '../../../core/random';
-import type { Lobe } from '../model';
+import { squarePoint, warpedGrid, type AnimFrame, type Lobe } from '../model';
 import { MAX_N } from '../params';
 import { xiColor } from './colors';
 
@@ -19,80 +27,79 @@ const BATCH = 1 << 15;
 const MAX_PER_FRAME = 1 << 16;
 /** While the camera is being dragged, draw at most this many points (level of detail). */
 const ORBIT_LOD = 200_000;
-/** Seconds per decade of growth. */
-const DECADE_SECONDS = 0.7;
-const GRID_LINES = 8;
 const GRID_SEGMENTS = 48;
 
-interface Anim {
-  playing: boolean;
-  shown: number;
+interface Fill {
+  /** Points whose direction, colour and (ξ₁, ξ₂) are in the buffers: [0, filled). */
+  filled: number;
+  /** Points the current frame wants drawn. */
   target: number;
-  /** Wall-clock time (ms) of the last growth step; growth follows real time, not frame count. */
-  last: number;
-  /** When paused: fill up to this count, MAX_PER_FRAME points per frame (0 = nothing to fill). */
-  fillTo: number;
   /** Measured generation speed (points per ms, running average) and the last frame's length (ms). */
   pointsPerMs: number;
   frameMs: number;
+  last: number;
 }
 
-/**
- * New points allowed this frame: MAX_PER_FRAME, or more when frames are slow anyway (software
- * rendering): generation may take up to a quarter of the last frame's length.
- */
-function perFrame(a: Anim): number {
+/** New points allowed this frame: MAX_PER_FRAME, or more when frames are slow anyway (software rendering). */
+function perFrame(a: Fill): number {
   if (!a.pointsPerMs) return MAX_PER_FRAME;
   return Math.max(MAX_PER_FRAME, Math.floor(a.pointsPerMs * 0.25 * Math.min(a.frameMs, 4000)));
 }
 
 export interface HemisphereViewProps {
-  lobe: Lobe | null;
+  lobe: Lobe;
   kind: SequenceKind;
   seed: number;
   n: number;
-  /** Frame-time probe for tests and the report: last frame durations (ms). */
+  /** The model's frame at the timeline's position (how many points, how far the morph has gone). */
+  frame: AnimFrame;
+  showPoints: boolean;
+  showGrid: boolean;
   height?: number;
 }
 
-export function HemisphereView({ lobe, kind, seed, n, height = 380 }: HemisphereViewProps) {
+export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGrid, height = 380 }: HemisphereViewProps) {
   const ctxRef = useRef<ViewportContext | null>(null);
   const objs = useRef<{
     geom: THREE.BufferGeometry;
     pos: THREE.BufferAttribute;
     col: THREE.BufferAttribute;
+    xi: THREE.BufferAttribute;
     points: THREE.Points;
     material: THREE.PointsMaterial;
+    morph: { value: number };
     grid: THREE.LineSegments | null;
+    /** The grid's vertices in the square (s = 0) and on the hemisphere (s = 1). */
+    gridEnds: { a: Float64Array; b: Float64Array } | null;
   } | null>(null);
-  const anim = useRef<Anim>({ playing: true, shown: 0, target: n, last: 0, fillTo: 0, pointsPerMs: 0, frameMs: 16 });
-  const cfg = useRef({ lobe, kind, seed, n });
-  cfg.current = { lobe, kind, seed, n };
+  const fill = useRef<Fill>({ filled: 0, target: frame.shown, pointsPerMs: 0, frameMs: 16, last: 0 });
+  const cfg = useRef({ lobe, kind, seed, n, frame, showPoints, showGrid });
+  cfg.current = { lobe, kind, seed, n, frame, showPoints, showGrid };
   const label = useRef<HTMLSpanElement>(null);
-  const [playing, setPlaying] = useState(true);
-  const [showPoints, setShowPoints] = useState(true);
-  const [showGrid, setShowGrid] = useState(true);
-  const vis = useRef({ points: true, grid: true });
-  vis.current = { points: showPoints, grid: showGrid };
-  const scratch = useRef<{ u: Float64Array; d: Float64Array; c: number[] } | null>(null);
+  const scratch = useRef<{ u: Float64Array; d: Float64Array } | null>(null);
 
+  const drawn = () => Math.min(fill.current.filled, fill.current.target);
   const updateLabel = () => {
-    if (label.current) label.current.textContent = anim.current.shown.toLocaleString('en-US');
-    if (label.current) label.current.dataset.value = String(anim.current.shown);
+    const v = drawn();
+    if (label.current) {
+      label.current.textContent = v.toLocaleString('en-US');
+      label.current.dataset.value = String(v);
+    }
   };
 
-  /** Generate points [shown, upTo) into the buffers (in batches) and show them. */
-  const grow = (upTo: number) => {
+  /** Generate points [filled, upTo) into the buffers (in batches). */
+  const generate = (upTo: number) => {
     const o = objs.current;
     const { lobe: lb, kind: kd, seed: sd, n: nn } = cfg.current;
-    if (!o || !lb) return;
-    const a = anim.current;
+    if (!o) return;
+    const a = fill.current;
     const end = Math.min(nn, upTo);
-    if (!scratch.current) scratch.current = { u: new Float64Array(2 * BATCH), d: new Float64Array(3 * BATCH), c: [0, 0, 0] };
+    if (!scratch.current) scratch.current = { u: new Float64Array(2 * BATCH), d: new Float64Array(3 * BATCH) };
     const { u, d } = scratch.current;
     const pos = o.pos.array as Float32Array;
     const col = o.col.array as Uint8Array;
-    const start = a.shown;
+    const xi = o.xi.array as Float32Array;
+    const start = a.filled;
     const t0 = performance.now();
     for (let s = start; s < end; s += BATCH) {
       const e = Math.min(end, s + BATCH);
@@ -104,6 +111,8 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
         pos[j] = d[3 * i]!;
         pos[j + 1] = d[3 * i + 1]!;
         pos[j + 2] = d[3 * i + 2]!;
+        xi[2 * (s + i)] = u[2 * i]!;
+        xi[2 * (s + i) + 1] = u[2 * i + 1]!;
         xiColor(u[2 * i]!, u[2 * i + 1]!, col, j);
       }
     }
@@ -119,27 +128,37 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
         const pps = (end - start) / (t1 - t0);
         a.pointsPerMs = a.pointsPerMs ? 0.7 * a.pointsPerMs + 0.3 * pps : pps;
       }
-      o.pos.clearUpdateRanges();
-      o.pos.addUpdateRange(3 * start, 3 * (end - start));
-      o.pos.needsUpdate = true;
-      o.col.clearUpdateRanges();
-      o.col.addUpdateRange(3 * start, 3 * (end - start));
-      o.col.needsUpdate = true;
+      for (const [attr, w] of [
+        [o.pos, 3],
+        [o.col, 3],
+        [o.xi, 2],
+      ] as const) {
+        attr.clearUpdateRanges();
+        attr.addUpdateRange(w * start, w * (end - start));
+        attr.needsUpdate = true;
+      }
+      a.filled = end;
     }
-    a.shown = end;
-    o.geom.setDrawRange(0, end);
-    // bigger dots while there are few of them
-    o.material.size = Math.max(1.5, Math.min(7, 9 / Math.pow(Math.max(1, end), 0.18)));
-    updateLabel();
   };
 
-  const restart = () => {
-    anim.current.shown = 0;
-    anim.current.last = 0;
-    performance.clearMeasures?.('hemisphere-grow');
+  /** Show what the current frame asks for: the draw range, the point size, the morph. */
+  const apply = () => {
     const o = objs.current;
-    if (o) o.geom.setDrawRange(0, 0);
-    anim.current.fillTo = anim.current.playing ? 0 : cfg.current.n;
+    if (!o) return;
+    const v = drawn();
+    o.geom.setDrawRange(0, v);
+    // bigger dots while there are few of them
+    o.material.size = Math.max(1.5, Math.min(7, 9 / Math.pow(Math.max(1, v), 0.18)));
+    const s = cfg.current.frame.s;
+    o.morph.value = s;
+    if (o.grid && o.gridEnds) {
+      const p = o.grid.geometry.getAttribute('position') as THREE.BufferAttribute;
+      const arr = p.array as Float32Array;
+      const { a, b } = o.gridEnds;
+      const r = 1 - s;
+      for (let i = 0; i < arr.length; i++) arr[i] = a[i]! * r + b[i]! * s; // the model's morphPoint, unrolled
+      p.needsUpdate = true;
+    }
     updateLabel();
     ctxRef.current?.invalidate();
   };
@@ -154,45 +173,29 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
       (o.grid.material as THREE.Material).dispose();
       o.grid = null;
     }
-    const lb = cfg.current.lobe;
-    if (!lb) return;
     const T = ctx.THREE;
-    const segs = 2 * (GRID_LINES + 1) * GRID_SEGMENTS;
-    const p = new Float32Array(segs * 2 * 3);
-    const c = new Float32Array(segs * 2 * 3);
-    const v = [0, 0, 0];
+    const g0 = warpedGrid(cfg.current.lobe, 0, GRID_SEGMENTS);
+    const g1 = warpedGrid(cfg.current.lobe, 1, GRID_SEGMENTS);
+    const lift = 1.003; // just above the sphere so the lines are not hidden by the shell
+    for (let i = 0; i < g1.pos.length; i++) g1.pos[i]! *= lift;
+    const verts = g0.xi.length / 2;
+    const c = new Float32Array(3 * verts);
     const rgb = [0, 0, 0];
-    let k = 0;
-    const put = (a: number, b: number) => {
-      lb.sample(Math.min(a, 1 - 2 ** -53), Math.min(b, 1 - 2 ** -53), v, 0);
-      const s = 1.003; // just above the sphere so the lines are not hidden by the shell
-      p[3 * k] = v[0]! * s;
-      p[3 * k + 1] = v[1]! * s;
-      p[3 * k + 2] = v[2]! * s;
-      xiColor(a, b, rgb);
+    for (let k = 0; k < verts; k++) {
+      xiColor(g0.xi[2 * k]!, g0.xi[2 * k + 1]!, rgb);
       c[3 * k] = rgb[0]! / 255;
       c[3 * k + 1] = rgb[1]! / 255;
       c[3 * k + 2] = rgb[2]! / 255;
-      k++;
-    };
-    for (let l = 0; l <= GRID_LINES; l++) {
-      const fixed = l / GRID_LINES;
-      for (let s = 0; s < GRID_SEGMENTS; s++) {
-        const t0 = s / GRID_SEGMENTS;
-        const t1 = (s + 1) / GRID_SEGMENTS;
-        put(fixed, t0);
-        put(fixed, t1);
-        put(t0, fixed);
-        put(t1, fixed);
-      }
     }
     const g = new T.BufferGeometry();
-    g.setAttribute('position', new T.BufferAttribute(p, 3));
+    g.setAttribute('position', new T.BufferAttribute(new Float32Array(3 * verts), 3));
     g.setAttribute('color', new T.BufferAttribute(c, 3));
     const lines = new T.LineSegments(g, new T.LineBasicMaterial({ vertexColors: true, transparent: true, opacity: 0.9 }));
-    lines.visible = vis.current.grid;
+    lines.frustumCulled = false;
+    lines.visible = cfg.current.showGrid;
     ctx.scene.add(lines);
     o.grid = lines;
+    o.gridEnds = { a: g0.pos, b: g1.pos };
   };
 
   const setup = (ctx: ViewportContext) => {
@@ -203,21 +206,32 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
     pos.setUsage(T.DynamicDrawUsage);
     const col = new T.BufferAttribute(new Uint8Array(3 * MAX_N), 3, true);
     col.setUsage(T.DynamicDrawUsage);
+    const xi = new T.BufferAttribute(new Float32Array(2 * MAX_N), 2);
+    xi.setUsage(T.DynamicDrawUsage);
     geom.setAttribute('position', pos);
     geom.setAttribute('color', col);
+    geom.setAttribute('xi', xi);
     geom.setDrawRange(0, 0);
-    geom.boundingSphere = new T.Sphere(new T.Vector3(0, 0, 0.5), 1.2);
+    geom.boundingSphere = new T.Sphere(new T.Vector3(0, 0, 0.5), 1.6);
     const material = new T.PointsMaterial({ size: 3, sizeAttenuation: false, vertexColors: true });
+    const morph = { value: cfg.current.frame.s };
+    // the warp morph on the GPU: mix(square point of (ξ₁, ξ₂), direction, s), as the model's morphPoint
+    material.onBeforeCompile = (shader) => {
+      shader.uniforms.uMorph = morph;
+      shader.vertexShader = shader.vertexShader
+        .replace('#include <common>', '#include <common>\nattribute vec2 xi;\nuniform float uMorph;')
+        .replace('#include <begin_vertex>', 'vec3 transformed = mix(vec3(2.0 * xi.x - 1.0, 2.0 * xi.y - 1.0, 0.0), vec3(position), uMorph);');
+    };
+    material.customProgramCacheKey = () => 'hemisphere-morph';
     const points = new T.Points(geom, material);
     points.frustumCulled = false;
-    points.visible = vis.current.points;
+    points.visible = cfg.current.showPoints;
     ctx.scene.add(points);
 
-    // the hemisphere shell, its rim, the base disk and the axes
+    // the hemisphere shell, its rim, the outline of the unit square in the base plane, and the axes
     const shellGeom = new T.SphereGeometry(1, 48, 24, 0, 2 * Math.PI, 0, Math.PI / 2);
     shellGeom.rotateX(Math.PI / 2);
-    const shell = new T.Mesh(shellGeom, new T.MeshBasicMaterial({ color: 0x8899aa, transparent: true, opacity: 0.07, depthWrite: false, side: T.DoubleSide }));
-    ctx.scene.add(shell);
+    ctx.scene.add(new T.Mesh(shellGeom, new T.MeshBasicMaterial({ color: 0x8899aa, transparent: true, opacity: 0.07, depthWrite: false, side: T.DoubleSide })));
     const rimPts: number[] = [];
     for (let i = 0; i <= 96; i++) {
       const a = (i / 96) * 2 * Math.PI;
@@ -226,6 +240,18 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
     const rimGeom = new T.BufferGeometry();
     rimGeom.setAttribute('position', new T.Float32BufferAttribute(rimPts, 3));
     ctx.scene.add(new T.Line(rimGeom, new T.LineBasicMaterial({ color: 0x778899 })));
+    const sq: number[] = [];
+    for (const [a, b] of [
+      [0, 0],
+      [1, 0],
+      [1, 1],
+      [0, 1],
+      [0, 0],
+    ] as const)
+      sq.push(...(squarePoint(a, b) as number[]));
+    const sqGeom = new T.BufferGeometry();
+    sqGeom.setAttribute('position', new T.Float32BufferAttribute(sq, 3));
+    ctx.scene.add(new T.Line(sqGeom, new T.LineBasicMaterial({ color: 0x99a3ad, transparent: true, opacity: 0.6 })));
     const axes: [number[], number][] = [
       [[1.25, 0, 0], 0xd04040],
       [[0, 1.25, 0], 0x30a050],
@@ -241,59 +267,37 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
     ctx.controls.target.set(0, 0, 0.3);
     ctx.controls.update();
 
-    objs.current = { geom, pos, col, points, material, grid: null };
+    objs.current = { geom, pos, col, xi, points, material, morph, grid: null, gridEnds: null };
     // level of detail while orbiting: the sets are prefixes of well-spread sequences (except the
     // stratified set, whose prefix fills rows in order, so it is always drawn in full)
     const onStart = () => {
-      if (cfg.current.kind !== 'stratified' && anim.current.shown > ORBIT_LOD) geom.setDrawRange(0, ORBIT_LOD);
+      if (cfg.current.kind !== 'stratified' && drawn() > ORBIT_LOD) geom.setDrawRange(0, ORBIT_LOD);
     };
     const onEnd = () => {
-      geom.setDrawRange(0, anim.current.shown);
+      geom.setDrawRange(0, drawn());
       ctx.invalidate();
     };
     ctx.controls.addEventListener('start', onStart);
     ctx.controls.addEventListener('end', onEnd);
-    if (!cfg.current.lobe) {
-      anim.current.playing = false;
-      setPlaying(false);
-    }
     buildGrid();
-    restart();
+    fill.current.filled = 0;
+    fill.current.target = cfg.current.frame.shown;
+    apply();
 
+    // fill the buffers up to what the frame needs, at most perFrame points per frame; frames are
+    // requested only while there is something left to fill
     const stop = ctx.onFrame(() => {
-      const a = anim.current;
-      const nn = cfg.current.n;
-      if (!a.playing && a.fillTo > a.shown && cfg.current.lobe) {
-        grow(Math.min(a.fillTo, a.shown + perFrame(a)));
-        if (a.shown < a.fillTo) return true;
-        a.fillTo = 0;
-        return false;
-      }
-      if (!a.playing || !cfg.current.lobe) {
+      const a = fill.current;
+      if (a.filled >= a.target) {
         a.last = 0;
         return false;
       }
-      if (a.shown >= nn) {
-        a.playing = false;
-        a.last = 0;
-        setPlaying(false);
-        return false;
-      }
-      // one decade per DECADE_SECONDS of wall-clock time (so a slow GPU shows bigger steps, not a slower
-      // growth); at most 0.25 s of growth per frame after a stall (tab hidden, off screen)
       const now = performance.now();
-      const dt = a.last ? Math.min(0.25, (now - a.last) / 1000) : 1 / 60;
       if (a.last) a.frameMs = now - a.last;
       a.last = now;
-      const next = Math.min(a.shown + perFrame(a), Math.max(a.shown + 1, Math.ceil(Math.max(1, a.shown) * Math.pow(10, dt / DECADE_SECONDS))));
-      grow(next);
-      if (a.shown >= nn) {
-        a.playing = false;
-        a.last = 0;
-        setPlaying(false);
-        return false;
-      }
-      return true;
+      generate(Math.min(a.target, a.filled + perFrame(a)));
+      apply();
+      return a.filled < a.target;
     });
     return () => {
       stop();
@@ -304,15 +308,23 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
     };
   };
 
-  // parameters changed: rebuild the grid, restart the growth (playing) or redraw at once (paused)
-  const onParamsChange = useEffectEvent(() => {
+  // the point set changed: the buffers start over, the grid is rebuilt
+  const onPointsChange = useEffectEvent(() => {
     if (!objs.current) return;
     buildGrid();
-    anim.current.playing = !!lobe;
-    setPlaying(!!lobe);
-    restart();
+    fill.current.filled = 0;
+    performance.clearMeasures?.('hemisphere-grow');
+    apply();
   });
-  useEffect(() => onParamsChange(), [lobe, kind, seed, n]);
+  useEffect(() => onPointsChange(), [lobe, kind, seed, n]);
+
+  // every timeline position: the new target and morph (the fill loop runs only if points are missing)
+  const onFrameChange = useEffectEvent(() => {
+    fill.current.target = frame.shown;
+    if (!objs.current) return;
+    apply();
+  });
+  useEffect(() => onFrameChange(), [frame]);
 
   useEffect(() => {
     const o = objs.current;
@@ -322,51 +334,17 @@ export function HemisphereView({ lobe, kind, seed, n, height = 380 }: Hemisphere
     ctxRef.current?.invalidate();
   }, [showPoints, showGrid]);
 
-  const playPause = () => {
-    const a = anim.current;
-    if (a.playing) {
-      a.playing = false;
-      setPlaying(false);
-      return;
-    }
-    if (a.shown >= cfg.current.n) {
-      a.shown = 0;
-      objs.current?.geom.setDrawRange(0, 0);
-    }
-    a.playing = true;
-    a.fillTo = 0;
-    setPlaying(true);
-    ctxRef.current?.invalidate();
-  };
-  const step = () => {
-    const a = anim.current;
-    a.playing = false;
-    setPlaying(false);
-    a.fillTo = Math.min(cfg.current.n, a.shown === 0 ? 1 : 2 * a.shown);
-    ctxRef.current?.invalidate();
-  };
-  const reset = () => {
-    anim.current.playing = false;
-    anim.current.fillTo = 0;
-    setPlaying(false);
-    anim.current.shown = 0;
-    objs.current?.geom.setDrawRange(0, 0);
-    updateLabel();
-    ctxRef.current?.invalidate();
-  };
-  useShortcuts({ playPause, step, reset });
-
   return (
     <div className="hemi-3d">
-      <Viewport ariaLabel="Samples of the chosen density on the upper hemisphere, coloured by their (ξ₁, ξ₂)" height={height} setup={setup} testId="hemisphere-3d" />
-      <div className="hemi-transport">
-        <Transport playing={playing} onPlayPause={playPause} onStep={step} onReset={reset} />
-        <Toggle label="points" checked={showPoints} onChange={setShowPoints} />
-        <Toggle label="warped (ξ₁, ξ₂) grid" checked={showGrid} onChange={setShowGrid} />
-        <span className="hemi-shown">
-          showing <span ref={label} data-testid="shown-count" data-value="0">0</span> of {n.toLocaleString('en-US')} points
-        </span>
-      </div>
+      <Viewport
+        ariaLabel="Samples of the chosen density: (ξ₁, ξ₂) points and grid in the unit square travelling to their directions on the upper hemisphere, coloured by (ξ₁, ξ₂)"
+        height={height}
+        setup={setup}
+        testId="hemisphere-3d"
+      />
+      <p className="hemi-shown">
+        showing <span ref={label} data-testid="shown-count" data-value="0">0</span> of {n.toLocaleString('en-US')} points
+      </p>
     </div>
   );
 }

@@ -6,6 +6,7 @@
 import { useMemo } from 'react';
 import { Plot, type PlotTrace } from '../../../ui';
 import { TWO_PI } from '../../../core/sampling';
+import { titled } from './plotTitle';
 import type { DrawStats } from '../model';
 
 /** Legend inside the plot's top-left corner (where both marginals are low), clear of the axis titles. */
@@ -28,13 +29,13 @@ export function MarginalPlots({ stats }: { stats: DrawStats }) {
       <Plot
         ariaLabel="Histogram of the sampled polar angles θ against the marginal density p(θ)"
         data={theta}
-        layout={{ title: { text: 'θ: histogram vs p(θ)' }, xaxis: { title: { text: 'θ (rad)' }, range: [0, Math.PI / 2] }, yaxis: { title: { text: 'density' } }, bargap: 0, legend: LEGEND }}
+        layout={{ ...titled('θ: histogram vs p(θ)'), xaxis: { title: { text: 'θ (rad)' }, range: [0, Math.PI / 2] }, yaxis: { title: { text: 'density' } }, bargap: 0, legend: LEGEND }}
         testId="plot-theta"
       />
       <Plot
         ariaLabel="Histogram of the sampled azimuths φ against the marginal density p(φ)"
         data={phi}
-        layout={{ title: { text: 'φ: histogram vs p(φ)' }, xaxis: { title: { text: 'φ (rad)' }, range: [0, TWO_PI] }, yaxis: { title: { text: 'density' } }, bargap: 0, legend: LEGEND }}
+        layout={{ ...titled('φ: histogram vs p(φ)'), xaxis: { title: { text: 'φ (rad)' }, range: [0, TWO_PI] }, yaxis: { title: { text: 'density' } }, bargap: 0, legend: LEGEND }}
         testId="plot-phi"
       />
     </div>
@@ -64,9 +65,9 @@ export function Histogram2D({ stats }: { stats: DrawStats }) {
   const axes = { xaxis: { title: { text: 'φ' } }, yaxis: { title: { text: 'cos θ' } } };
   return (
     <div className="hemi-plot-grid three">
-      <Plot ariaLabel="Observed counts in bins of equal solid angle" height={240} data={[{ type: 'heatmap', x: data.x, y: data.y, z: data.obs, zmin: 0, zmax: data.zmax, colorscale: 'Viridis', showscale: false }]} layout={{ title: { text: 'observed' }, ...axes }} />
-      <Plot ariaLabel="Expected counts: the density integrated over each bin" height={240} data={[{ type: 'heatmap', x: data.x, y: data.y, z: data.exp, zmin: 0, zmax: data.zmax, colorscale: 'Viridis', showscale: false }]} layout={{ title: { text: 'expected N∫p dω' }, ...axes }} />
-      <Plot ariaLabel="Standardized difference (observed minus expected) over the square root of expected" height={240} data={[{ type: 'heatmap', x: data.x, y: data.y, z: data.diff, zmin: -4, zmax: 4, colorscale: 'RdBu', reversescale: true, showscale: true }]} layout={{ title: { text: '(O − E)/√E' }, ...axes }} />
+      <Plot ariaLabel="Observed counts in bins of equal solid angle" height={240} data={[{ type: 'heatmap', x: data.x, y: data.y, z: data.obs, zmin: 0, zmax: data.zmax, colorscale: 'Viridis', showscale: false }]} layout={{ ...titled('observed'), ...axes }} />
+      <Plot ariaLabel="Expected counts: the density integrated over each bin" height={240} data={[{ type: 'heatmap', x: data.x, y: data.y, z: data.exp, zmin: 0, zmax: data.zmax, colorscale: 'Viridis', showscale: false }]} layout={{ ...titled('expected N∫p dω'), ...axes }} />
+      <Plot ariaLabel="Standardized difference (observed minus expected) over the square root of expected" height={240} data={[{ type: 'heatmap', x: data.x, y: data.y, z: data.diff, zmin: -4, zmax: 4, colorscale: 'RdBu', reversescale: true, showscale: true }]} layout={{ ...titled('(O − E)/√E'), ...axes }} />
     </div>
   );
 }

@@ -54,6 +54,13 @@ export function UnitSquare({ kind, seed, n, size = 220 }: { kind: SequenceKind; 
     g.strokeStyle = fg;
     g.lineWidth = 1;
     g.strokeRect(X(0), Y(1), s, s);
+    // the first sample, which the 3D view and the worked example track
+    if (shown > 0) {
+      g.lineWidth = 2;
+      g.beginPath();
+      g.arc(X(u[0]!), Y(u[1]!), 6, 0, 2 * Math.PI);
+      g.stroke();
+    }
     g.fillStyle = fg;
     g.font = '12px sans-serif';
     g.fillText('ξ₁ →', X(1) - 30, Y(0) + 16);
@@ -74,7 +81,7 @@ export function UnitSquare({ kind, seed, n, size = 220 }: { kind: SequenceKind; 
         aria-label={`The unit square of (ξ₁, ξ₂) with the first ${shown} points of the ${kind} set and the grid whose image is drawn on the hemisphere`}
       />
       <figcaption>
-        (ξ₁, ξ₂): first {shown.toLocaleString('en-US')} {kind} points; each colour lands where the same colour appears on the hemisphere.
+        (ξ₁, ξ₂): first {shown.toLocaleString('en-US')} {kind} points; each colour lands where the same colour appears on the hemisphere; the ringed point is the first sample.
       </figcaption>
     </figure>
   );

@@ -5,6 +5,7 @@
  * while dragging so nothing jumps; it is recomputed only when typed values leave the plane.
  */
 import { useRef, useState, type KeyboardEvent, type PointerEvent } from 'react';
+import { useWidth } from './useWidth';
 import type { RaySphereHit } from '../../../core/geometry';
 import { canonicalFrame, dirFromFrame, fromFrame, frameFits, tidy, toFrame, type Frame2D, type V3 } from '../model';
 
@@ -16,10 +17,10 @@ export interface CrossSectionProps {
   res: RaySphereHit | null;
   distanceRatio: number;
   onChange: (patch: { o?: V3; d?: V3; c?: V3; r?: number }) => void;
+  /** More points to keep in view (e.g. the ends of a sweep), so the view does not jump while animating. */
+  fitExtra?: readonly V3[];
 }
 
-const W = 640;
-const H = 400;
 /** Above this |o − c| / r the view centres on the sphere and leaves the origin off screen. */
 const FAR = 60;
 
@@ -29,12 +30,18 @@ interface View {
   /** world units per pixel */
   s: number;
   far?: boolean;
+  /** The figure width the view was fitted for. */
+  W?: number;
 }
 
 type Target = 'o' | 'tip' | 'c' | 'r';
 
-export function CrossSection({ o, d, c, r, res, distanceRatio, onChange }: CrossSectionProps) {
+export function CrossSection({ o, d, c, r, res, distanceRatio, onChange, fitExtra = [] }: CrossSectionProps) {
   const svgRef = useRef<SVGSVGElement>(null);
+  // one SVG unit = one CSS pixel: labels and handles keep their size on small screens
+  const figRef = useRef<HTMLElement>(null);
+  const W = Math.max(280, useWidth(figRef, 640));
+  const H = Math.round(Math.min(460, Math.max(280, W * 0.62)));
   const frameRef = useRef<Frame2D | null>(null);
   const viewRef = useRef<View | null>(null);
   const dragRef = useRef<{ target: Target; pointerId: number } | null>(null);
@@ -83,19 +90,21 @@ export function CrossSection({ o, d, c, r, res, distanceRatio, onChange }: Cross
     const P: [number, number] = [O2[0] + tClose * dir2[0], O2[1] + tClose * dir2[1]];
     box = [Math.min(C2[0] - r, P[0]), Math.max(C2[0] + r, P[0]), Math.min(C2[1] - r, P[1]), Math.max(C2[1] + r, P[1])];
   } else {
-    const xs = [C2[0] - r, C2[0] + r, O2[0], ...rootPts.map((p) => p[0])];
-    const ys = [C2[1] - r, C2[1] + r, O2[1], ...rootPts.map((p) => p[1])];
+    const extra = fitExtra.map((q) => toFrame(fr!, q));
+    const xs = [C2[0] - r, C2[0] + r, O2[0], ...rootPts.map((p) => p[0]), ...extra.map((p) => p[0])];
+    const ys = [C2[1] - r, C2[1] + r, O2[1], ...rootPts.map((p) => p[1]), ...extra.map((p) => p[1])];
     box = [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)];
   }
   const bw = box[1] - box[0];
   const bh = box[3] - box[2];
-  const fitS = Math.max(bw / (W - 130), bh / (H - 110)) || 1;
+  // margins for labels and handles, smaller on a phone-sized figure
+  const fitS = Math.max(bw / (W - Math.min(130, 0.16 * W)), bh / (H - Math.min(110, 0.22 * H))) || 1;
   const fit: View = { cx: (box[0] + box[1]) / 2, cy: (box[2] + box[3]) / 2, s: fitS };
   let view = prevView;
   const inside = (v: View) =>
     box[0] >= v.cx - (v.s * W) / 2 + 10 * v.s && box[1] <= v.cx + (v.s * W) / 2 - 10 * v.s && box[2] >= v.cy - (v.s * H) / 2 + 10 * v.s && box[3] <= v.cy + (v.s * H) / 2 - 10 * v.s;
-  if (!dragging && (!view || !inside(view) || view.s > 2.5 * fitS || far !== prevView?.far)) view = fit;
-  viewRef.current = { ...view!, far };
+  if (!dragging && (!view || !inside(view) || view.s > 2.5 * fitS || far !== prevView?.far || view.W !== W)) view = fit;
+  viewRef.current = { ...view!, far, W };
   const v = view!;
   const X = (x: number) => W / 2 + (x - v.cx) / v.s;
   const Y = (y: number) => H / 2 - (y - v.cy) / v.s;
@@ -103,7 +112,7 @@ export function CrossSection({ o, d, c, r, res, distanceRatio, onChange }: Cross
   const unY = (py: number) => v.cy - (py - H / 2) * v.s;
   const step = 10 ** Math.floor(Math.log10(v.s * 2));
 
-  const L = 130 * v.s; // direction arrow length: 130 px
+  const L = Math.min(130, 0.22 * W) * v.s; // direction arrow length: 130 px (less on a phone)
   const tip: [number, number] = [O2[0] + L * dir2[0], O2[1] + L * dir2[1]];
   const rAngle = Math.PI / 4;
   const rHandle: [number, number] = [C2[0] + r * Math.cos(rAngle), C2[1] + r * Math.sin(rAngle)];
@@ -181,6 +190,7 @@ export function CrossSection({ o, d, c, r, res, distanceRatio, onChange }: Cross
       data-testid={`handle-${target}`}
     >
       <circle r={16} className="rs-handle-hit" />
+      <circle r={13} className="rs-handle-ring" />
       <circle r={7} />
     </g>
   );
@@ -188,11 +198,13 @@ export function CrossSection({ o, d, c, r, res, distanceRatio, onChange }: Cross
   const caseCls = res ? `case-${res.case}` : '';
   const originOff = X(O2[0]) < 0 || X(O2[0]) > W || Y(O2[1]) < 0 || Y(O2[1]) > H;
   return (
-    <figure className={`rs-section ${caseCls}`}>
+    <figure className={`rs-section ${caseCls}`} ref={figRef}>
       <svg
         ref={svgRef}
         viewBox={`0 0 ${W} ${H}`}
         className={`rs-svg${dragging ? ' dragging' : ''}`}
+        width="100%"
+        height={H}
         role="group"
         aria-label="Cross-section through the ray and the sphere's centre"
         onPointerMove={move}
@@ -230,11 +242,11 @@ export function CrossSection({ o, d, c, r, res, distanceRatio, onChange }: Cross
           </text>
         ) : null}
         <text x={cl(X(C2[0])) + 9} y={cl(Y(C2[1])) + 16} className="rs-label">
-          c
+          C
         </text>
         {!far ? handle('o', O2, 'ray origin o', 'h-o') : null}
         {!far ? handle('tip', tip, 'ray direction d', 'h-d') : null}
-        {handle('c', C2, 'sphere centre c', 'h-c')}
+        {handle('c', C2, 'sphere centre C', 'h-c')}
         {handle('r', rHandle, `radius r = ${r}`, 'h-r')}
         <text x={X(rHandle[0]) + 12} y={Y(rHandle[1]) - 6} className="rs-label">
           r
@@ -249,7 +261,7 @@ export function CrossSection({ o, d, c, r, res, distanceRatio, onChange }: Cross
       </svg>
       <figcaption className="rs-caption">
         Plane through the ray and the centre. Solid: the ray (t ≥ 0); dashed: the line behind the origin (t &lt; 0). Drag{' '}
-        <span className="key-o">o</span>, the <span className="key-d">arrow tip</span> (direction), <span className="key-c">c</span> and the{' '}
+        <span className="key-o">o</span>, the <span className="key-d">arrow tip</span> (direction), <span className="key-c">C</span> and the{' '}
         <span className="key-r">rim handle</span> (radius).
       </figcaption>
     </figure>

@@ -152,7 +152,7 @@ export function ErrorVsDistance({ current, here }: { current: number; here?: { n
           {
             x: [current, current],
             y: [here.naive, here.stable].map((e) => (e === null || !Number.isFinite(e) ? 1 : Math.min(1, Math.max(u, e)))),
-            name: 'this ray: Δ error (textbook, robust)',
+            name: 'this ray (Δ)',
             mode: 'markers',
             marker: { size: 12, symbol: 'x', color: ['#c0392b', '#1f5fa8'], line: { width: 1, color: '#222' } },
           },
@@ -160,10 +160,12 @@ export function ErrorVsDistance({ current, here }: { current: number; here?: { n
       : []),
   ], [s, u, current, here]);
   const layout = useMemo(() => ({
-    xaxis: { type: 'log', title: { text: 'distance |o − c| / r' }, exponentformat: 'power' },
-    yaxis: { type: 'log', title: { text: 'median relative error' }, exponentformat: 'power', range: [-17, 0.3] },
-    legend: { orientation: 'h', yanchor: 'top', y: -0.42, x: 0 },
-    margin: { l: 60, r: 10, t: 10, b: 10 },
+    xaxis: { type: 'log', title: { text: 'distance |o − C| / r' }, exponentformat: 'power' },
+    yaxis: { type: 'log', title: { text: 'relative error (median)' }, exponentformat: 'power', range: [-17, 0.3] },
+    // inside the plot, top left (the curves start low there): the plot keeps its height and the
+    // axis titles are not squeezed out of the figure in classroom mode
+    legend: { x: 0.01, y: 0.99, xanchor: 'left', yanchor: 'top', bgcolor: 'rgba(0,0,0,0)' },
+    margin: { l: 72, r: 12, t: 12, b: 60 },
     shapes:
       current > 1 && Number.isFinite(current)
         ? [{ type: 'line', x0: current, x1: current, yref: 'paper', y0: 0, y1: 1, line: { color: '#888', width: 1 } }]

@@ -19,6 +19,8 @@ export interface View3DProps {
   distanceRatio: number;
   height?: number;
   dark?: boolean;
+  /** More points to keep in view (the ends of a sweep), so the view does not rescale while animating. */
+  fitExtra?: readonly V3[];
 }
 
 interface Objects {
@@ -34,15 +36,15 @@ interface Objects {
 
 const FAR = 60;
 
-export function View3D({ o, d, c, r, res, distanceRatio, height = 320, dark = false }: View3DProps) {
+export function View3D({ o, d, c, r, res, distanceRatio, height = 320, dark = false, fitExtra = [] }: View3DProps) {
   const objs = useRef<Objects | null>(null);
-  const latest = useRef({ o, d, c, r, res, distanceRatio, dark });
-  latest.current = { o, d, c, r, res, distanceRatio, dark };
+  const latest = useRef({ o, d, c, r, res, distanceRatio, dark, fitExtra });
+  latest.current = { o, d, c, r, res, distanceRatio, dark, fitExtra };
 
   const update = () => {
     const ob = objs.current;
     if (!ob) return;
-    const { o, d, c, r, res, distanceRatio, dark } = latest.current;
+    const { o, d, c, r, res, distanceRatio, dark, fitExtra } = latest.current;
     const far = distanceRatio > FAR;
     // view centre and scale (in doubles)
     let centre: V3;
@@ -51,7 +53,7 @@ export function View3D({ o, d, c, r, res, distanceRatio, height = 320, dark = fa
       centre = c;
       extent = 2.5 * r;
     } else {
-      const pts: V3[] = [o, c];
+      const pts: V3[] = [o, c, ...fitExtra];
       if (res && res.t1 !== null) pts.push([o[0] + res.t1 * d[0], o[1] + res.t1 * d[1], o[2] + res.t1 * d[2]]);
       const lo = [0, 1, 2].map((i) => Math.min(...pts.map((p) => p[i]!), c[i]! - r));
       const hi = [0, 1, 2].map((i) => Math.max(...pts.map((p) => p[i]!), c[i]! + r));
@@ -127,25 +129,22 @@ export function View3D({ o, d, c, r, res, distanceRatio, height = 320, dark = fa
     const origin = new T.Mesh(new T.SphereGeometry(0.05, 16, 12), new T.MeshBasicMaterial({ color: 0x222222 }));
     const arrow = new T.ArrowHelper(new T.Vector3(1, 0, 0), new T.Vector3(), 0.6, 0xe8590c, 0.14, 0.08);
     const roots = [0, 1].map(() => new T.Mesh(new T.SphereGeometry(0.045, 16, 12), new T.MeshBasicMaterial({ color: 0x1f5fa8 })));
-    const axes = new T.AxesHelper(0.5);
-    axes.position.set(-1.6, -1.6, -1.2);
-    ctx.scene.add(sphere, wire, ray, back, origin, arrow, axes, ...roots);
+    ctx.scene.add(sphere, wire, ray, back, origin, arrow, ...roots);
     objs.current = { ctx, sphere, wire, ray, back, origin, arrow, roots };
     update();
     return () => {
       objs.current = null;
-      ctx.scene.remove(sphere, wire, ray, back, origin, arrow, axes, ...roots);
+      ctx.scene.remove(sphere, wire, ray, back, origin, arrow, ...roots);
       for (const m of [sphere, wire, ray, back, origin, ...roots]) {
         m.geometry.dispose();
         (m.material as THREE.Material).dispose();
       }
       arrow.dispose();
-      axes.dispose();
     };
   };
 
   return (
-    <Viewport ariaLabel="3D view of the ray and the sphere" height={height} setup={setup} testId="view-3d">
+    <Viewport ariaLabel="3D view of the ray and the sphere" height={height} setup={setup} testId="view-3d" phiZero={false}>
       {distanceRatio > FAR ? <p className="rs-3d-note">Centred on the sphere; the origin is {distanceRatio.toPrecision(3)} radii away.</p> : null}
     </Viewport>
   );

@@ -1,0 +1,25 @@
+/** Derivation steps: a list of formulas (KaTeX), each with the reason the step is allowed. */
+import type { ReactNode } from 'react';
+import { MathTex } from '../../../ui';
+
+export interface StepLine {
+  tex: string;
+  /** Why this line follows (shown beside it), e.g. "identity sin θ cos θ = ½ sin 2θ". */
+  why?: ReactNode;
+}
+
+export function Steps({ lines, label, testId }: { lines: StepLine[]; label: string; testId?: string }) {
+  return (
+    <ol className="hemi-steps" data-testid={testId} aria-label={label}>
+      {lines.map((l, i) => (
+        <li key={i} className="hemi-step">
+          {/* a focusable scroll box: a wide formula scrolls sideways on a phone, also from the keyboard */}
+          <div className="deriv-formula" tabIndex={0} role="group" aria-label={`${label}, step ${i + 1}`}>
+            <MathTex tex={l.tex} display />
+          </div>
+          {l.why ? <span className="hemi-why">{l.why}</span> : null}
+        </li>
+      ))}
+    </ol>
+  );
+}

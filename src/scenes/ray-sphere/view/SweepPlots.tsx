@@ -1,0 +1,298 @@
+/**
+ * The two animated plots of the sweep, drawn as light SVG (not Plotly) so a frame of the animation
+ * only moves a few elements: g(t) = a t² + b t + c on a window fixed for the whole sweep (the
+ * parabola slides, its roots move), and Δ against the sweep coordinate (robust and textbook), with
+ * the current position, the tangency crossings and the case of each position underneath.
+ * Sizes follow the element's width (one SVG unit = one CSS pixel), so labels stay ≥ 12 px.
+ */
+import { memo, useMemo, useRef, type ReactNode } from 'react';
+import type { RaySphereCase, RaySphereHit } from '../../../core/geometry';
+import type { SweepSeries } from '../model';
+import { useWidth } from './useWidth';
+
+const PAD = { l: 62, r: 14, t: 30, b: 44 };
+
+/** Round ticks (1, 2, 5 × 10ⁿ) covering [lo, hi]. */
+export function niceTicks(lo: number, hi: number, count = 5): { ticks: number[]; step: number } {
+  if (!(hi > lo) || !Number.isFinite(hi - lo)) return { ticks: [lo], step: 1 };
+  const raw = (hi - lo) / Math.max(1, count);
+  const p = 10 ** Math.floor(Math.log10(raw));
+  const m = raw / p;
+  const step = (m < 1.5 ? 1 : m < 3 ? 2 : m < 7 ? 5 : 10) * p;
+  const ticks: number[] = [];
+  for (let k = Math.ceil(lo / step); k * step <= hi + step * 1e-9; k++) ticks.push(k * step);
+  return { ticks, step };
+}
+
+const SUP: Record<string, string> = { '-': '⁻', '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶', '7': '⁷', '8': '⁸', '9': '⁹' };
+
+/** A tick label: plain decimals for ordinary sizes, m × 10ⁿ (never SI prefixes) otherwise. */
+export function fmtTick(v: number, step: number): string {
+  if (v === 0 || Math.abs(v) < step * 1e-9) return '0';
+  const av = Math.abs(v);
+  if (av >= 1e5 || step < 1e-3) {
+    const e = Math.floor(Math.log10(av));
+    const m = v / 10 ** e;
+    const ms = Number(m.toPrecision(3)).toString();
+    const ex = String(e).replace(/./g, (ch) => SUP[ch] ?? ch);
+    return ms === '1' ? `10${ex}` : ms === '-1' ? `−10${ex}` : `${ms.replace('-', '−')}×10${ex}`;
+  }
+  const digits = Math.max(0, Math.min(6, -Math.floor(Math.log10(step) + 1e-9)));
+  return v.toFixed(digits).replace('-', '−');
+}
+
+interface Frame {
+  W: number;
+  H: number;
+  X: (x: number) => number;
+  Y: (y: number) => number;
+  x0: number;
+  x1: number;
+  y0: number;
+  y1: number;
+}
+
+function makeFrame(W: number, H: number, xd: [number, number], yd: [number, number], padBottom = PAD.b, padTop = PAD.t): Frame {
+  const x0 = PAD.l;
+  const x1 = W - PAD.r;
+  const y0 = padTop;
+  const y1 = H - padBottom;
+  const X = (x: number) => x0 + ((x - xd[0]) / (xd[1] - xd[0])) * (x1 - x0);
+  const Y = (y: number) => y1 - ((y - yd[0]) / (yd[1] - yd[0])) * (y1 - y0);
+  return { W, H, X, Y, x0, x1, y0, y1 };
+}
+
+/** Axes, ticks, grid, title and axis labels (static for a given frame). */
+function Axes({ f, xd, yd, title, xLabel, yLabel }: { f: Frame; xd: [number, number]; yd: [number, number]; title: string; xLabel: string; yLabel: string }) {
+  const xt = niceTicks(xd[0], xd[1], Math.max(2, Math.floor((f.x1 - f.x0) / 80)));
+  const yt = niceTicks(yd[0], yd[1], Math.max(2, Math.floor((f.y1 - f.y0) / 45)));
+  return (
+    <g className="mp-axes">
+      <rect x={f.x0} y={f.y0} width={f.x1 - f.x0} height={f.y1 - f.y0} className="mp-bg" />
+      {xt.ticks.map((v) => (
+        <g key={`x${v}`}>
+          <line x1={f.X(v)} x2={f.X(v)} y1={f.y0} y2={f.y1} className="mp-grid" />
+          <text x={f.X(v)} y={f.y1 + 16} textAnchor="middle" className="mp-tick">
+            {fmtTick(v, xt.step)}
+          </text>
+        </g>
+      ))}
+      {yt.ticks.map((v) => (
+        <g key={`y${v}`}>
+          <line x1={f.x0} x2={f.x1} y1={f.Y(v)} y2={f.Y(v)} className={v === 0 ? 'mp-zero' : 'mp-grid'} />
+          <text x={f.x0 - 6} y={f.Y(v) + 4} textAnchor="end" className="mp-tick">
+            {fmtTick(v, yt.step)}
+          </text>
+        </g>
+      ))}
+      <text x={f.x0} y={18} className="mp-title">
+        {title}
+      </text>
+      <text x={(f.x0 + f.x1) / 2} y={f.H - 8} textAnchor="middle" className="mp-label">
+        {xLabel}
+      </text>
+      <text x={4} y={(f.y0 + f.y1) / 2} textAnchor="middle" dominantBaseline="hanging" className="mp-label" transform={`rotate(-90 4 ${(f.y0 + f.y1) / 2})`}>
+        {yLabel}
+      </text>
+    </g>
+  );
+}
+
+function SvgBox({ children, height, label, testId, W, boxRef }: { children: ReactNode; height: number; label: string; testId: string; W: number; boxRef: React.RefObject<HTMLDivElement | null> }) {
+  return (
+    <div ref={boxRef} className="mp-box">
+      <svg viewBox={`0 0 ${W} ${height}`} width="100%" height={height} role="img" aria-label={label} data-testid={testId} className="mp-svg">
+        {children}
+      </svg>
+    </div>
+  );
+}
+
+// ---------------------------------------------------------------------------------------------
+
+export interface GPlotProps {
+  res: RaySphereHit | null;
+  window: SweepSeries['gWindow'];
+}
+
+/** g(t) of the ray at the current position, on the sweep's fixed window. */
+export function GSweepPlot({ res, window: w }: GPlotProps) {
+  const box = useRef<HTMLDivElement>(null);
+  const W = Math.max(260, useWidth(box, 520));
+  const H = Math.round(Math.min(300, Math.max(220, W * 0.5)));
+  const xd: [number, number] = [w.tMin - w.shift, w.tMax - w.shift];
+  const yd: [number, number] = [w.gMin, w.gMax];
+  const f = makeFrame(W, H, xd, yd);
+  const xLabel = w.shift ? `t − ${w.shift.toPrecision(12)}` : 't (grey: behind the origin, t < 0)';
+  const axes = useMemo(() => <Axes f={f} xd={xd} yd={yd} title="g(t) = a t² + b t + c" xLabel={xLabel} yLabel="g(t)" />, [W, H, w.tMin, w.tMax, w.gMin, w.gMax, w.shift]); // eslint-disable-line react-hooks/exhaustive-deps
+  let path = '';
+  const marks: ReactNode[] = [];
+  if (res) {
+    const tv = -res.b / (2 * res.a);
+    const k = res.discriminant / (4 * res.a);
+    const n = 96;
+    for (let i = 0; i <= n; i++) {
+      const t = w.tMin + ((w.tMax - w.tMin) * i) / n;
+      // vertex form: accurate where the expanded form would cancel
+      const g = res.a * (t - tv) * (t - tv) - k;
+      const y = Math.max(-1e4, Math.min(1e4, f.Y(g)));
+      path += `${i ? 'L' : 'M'}${f.X(t - w.shift).toFixed(1)},${y.toFixed(1)}`;
+    }
+    const roots = res.t0 === null ? [] : res.t0 === res.t1 ? [res.t0] : [res.t0, res.t1!];
+    roots.forEach((t, i) => {
+      const isHit = t === res.tHit;
+      const x = f.X(t - w.shift);
+      const lbl = roots.length === 1 ? 't₀ = t₁' : i === 0 ? 't₀' : 't₁';
+      marks.push(
+        <g key={i} className={`mp-root${isHit ? ' hit' : ''}${t < 0 ? ' behind' : ''}`} transform={`translate(${x.toFixed(1)} ${f.Y(0).toFixed(1)})`}>
+          <circle r={isHit ? 6.5 : 5} />
+          <text y={i === 0 ? -10 : 20} x={i === 0 ? -4 : 4} textAnchor={i === 0 ? 'end' : 'start'} className="mp-rootlabel">
+            {lbl}
+            {isHit ? ' hit' : t < 0 ? ' < 0' : ''}
+          </text>
+        </g>,
+      );
+    });
+  }
+  const showBehind = w.shift === 0 && w.tMin < 0;
+  return (
+    <SvgBox boxRef={box} W={W} height={H} label="The quadratic g(t) for the ray at the current position, with its real roots on the t axis" testId="g-plot">
+      <defs>
+        <clipPath id="rs-gclip">
+          <rect x={f.x0} y={f.y0} width={f.x1 - f.x0} height={f.y1 - f.y0} />
+        </clipPath>
+      </defs>
+      {axes}
+      {showBehind ? <rect x={f.X(w.tMin)} y={f.y0} width={Math.max(0, f.X(0) - f.X(w.tMin))} height={f.y1 - f.y0} className="mp-behind" /> : null}
+      <g clipPath="url(#rs-gclip)">
+        <path d={path} className="mp-g" />
+      </g>
+      {marks}
+    </SvgBox>
+  );
+}
+
+// ---------------------------------------------------------------------------------------------
+
+export const CASE_COLOURS: Record<RaySphereCase, string> = {
+  miss: 'case-miss',
+  tangent: 'case-tangent',
+  'two-hits': 'case-two-hits',
+  inside: 'case-inside',
+  behind: 'case-behind',
+};
+const CASE_SHORT: Record<RaySphereCase, string> = { miss: 'miss', tangent: 'tangent', 'two-hits': 'two hits', inside: 'inside', behind: 'behind' };
+
+export interface DeltaPlotProps {
+  series: SweepSeries;
+  /** The sweep coordinate of each tangency. */
+  tangentX: number[];
+  /** Current position: sweep coordinate and each method's Δ there. */
+  x: number;
+  discStable: number | null;
+  discNaive: number | null;
+  xLabel: string;
+  method: 'naive' | 'stable';
+}
+
+/** The static layer of the Δ plot (curves, case strip, tangency marks): redrawn only when the sweep changes. */
+const DeltaStatic = memo(function DeltaStatic({ series: s, tangentX, f, xd, yd, xLabel }: Omit<DeltaPlotProps, 'x' | 'discStable' | 'discNaive'> & { f: Frame; xd: [number, number]; yd: [number, number] }) {
+  const clampY = (v: number) => Math.max(-1e4, Math.min(1e4, f.Y(v)));
+  let robust = '';
+  s.x.forEach((x, i) => {
+    if (!Number.isFinite(x)) return;
+    robust += `${robust ? 'L' : 'M'}${f.X(x).toFixed(1)},${clampY(s.discStable[i]!).toFixed(1)}`;
+  });
+  // the textbook Δ as dots: its rounding noise shows as scatter, its wrong signs as dots across 0
+  const dots = s.x.map((x, i) => {
+    const v = s.discNaive[i]!;
+    const wrong = Math.sign(v) !== Math.sign(s.discStable[i]!);
+    return Number.isFinite(x) ? <circle key={i} cx={f.X(x).toFixed(1)} cy={clampY(v).toFixed(1)} r={wrong ? 2.6 : 1.4} className={`mp-naive${wrong ? ' wrong' : ''}`} /> : null;
+  });
+  // case strip for the chosen method: merge equal neighbours into segments
+  const segs: { x0: number; x1: number; c: RaySphereCase }[] = [];
+  s.x.forEach((x, i) => {
+    const c = s.cases[i]!;
+    const prev = i > 0 ? s.x[i - 1]! : x;
+    const next = i < s.x.length - 1 ? s.x[i + 1]! : x;
+    const a = (prev + x) / 2;
+    const b = (x + next) / 2;
+    const last = segs[segs.length - 1];
+    if (last && last.c === c) last.x1 = b;
+    else segs.push({ x0: a, x1: b, c });
+  });
+  const stripY = f.y1 + 32;
+  const title = 'Δ against the sweep';
+  return (
+    <g>
+      <Axes f={f} xd={xd} yd={yd} title={title} xLabel={xLabel} yLabel="Δ = b² − 4ac" />
+      <g clipPath="url(#rs-dclip)">
+        {tangentX.map((x, i) => (
+          <line key={i} x1={f.X(x)} x2={f.X(x)} y1={f.y0} y2={f.y1} className="mp-tangent" />
+        ))}
+        {dots}
+        <path d={robust} className="mp-robust" />
+      </g>
+      {tangentX.map((x, i) => (
+        <text key={i} x={f.X(x) + 4} y={f.y0 + 14} textAnchor="start" className="mp-tick mp-tangent-label">
+          tangent
+        </text>
+      ))}
+      <g className="mp-strip" aria-hidden="true">
+        {segs.map((g, i) => (
+          <rect key={i} x={Math.min(f.X(g.x0), f.X(g.x1))} width={Math.max(0.5, Math.abs(f.X(g.x1) - f.X(g.x0)))} y={stripY - 8} height={8} className={`mp-case ${CASE_COLOURS[g.c]}`}>
+            <title>{CASE_SHORT[g.c]}</title>
+          </rect>
+        ))}
+      </g>
+      <g className="mp-legend">
+        <line x1={f.x0} x2={f.x0 + 20} y1={f.y0 - 12} y2={f.y0 - 12} className="mp-robust" />
+        <text x={f.x0 + 25} y={f.y0 - 7} className="mp-tick">
+          robust
+        </text>
+        <circle cx={f.x0 + 100} cy={f.y0 - 12} r={2.6} className="mp-naive" />
+        <text x={f.x0 + 107} y={f.y0 - 7} className="mp-tick">
+          textbook (dots)
+        </text>
+      </g>
+    </g>
+  );
+});
+
+/** Δ against the sweep coordinate; the current position moves along it. */
+export function DeltaSweepPlot(p: DeltaPlotProps) {
+  const box = useRef<HTMLDivElement>(null);
+  const W = Math.max(260, useWidth(box, 520));
+  const H = Math.round(Math.min(340, Math.max(270, W * 0.58)));
+  const s = p.series;
+  const xd = useMemo<[number, number]>(() => {
+    const xs = s.x.filter(Number.isFinite);
+    const lo = Math.min(...xs);
+    const hi = Math.max(...xs);
+    return hi > lo ? [lo, hi] : [lo - 1, lo + 1];
+  }, [s]);
+  const yd = useMemo<[number, number]>(() => {
+    const ys = [...s.discStable, ...s.discNaive, 0].filter(Number.isFinite);
+    const lo = Math.min(...ys);
+    const hi = Math.max(...ys);
+    const pad = 0.08 * (hi - lo || 1);
+    return [lo - pad, hi + pad];
+  }, [s]);
+  // the case strip sits between the x tick labels and the axis label
+  const f = useMemo(() => makeFrame(W, H, xd, yd, 64, 50), [W, H, xd, yd]);
+  const cx = Number.isFinite(p.x) ? f.X(Math.max(xd[0], Math.min(xd[1], p.x))) : f.x0;
+  const dot = (v: number | null, cls: string) => (v === null || !Number.isFinite(v) ? null : <circle cx={cx} cy={Math.max(f.y0, Math.min(f.y1, f.Y(v)))} r={5.5} className={cls} />);
+  return (
+    <SvgBox boxRef={box} W={W} height={H} label="The discriminant Δ against the sweep coordinate, robust and textbook, with the current position" testId="delta-plot">
+      <defs>
+        <clipPath id="rs-dclip">
+          <rect x={f.x0} y={f.y0} width={f.x1 - f.x0} height={f.y1 - f.y0} />
+        </clipPath>
+      </defs>
+      <DeltaStatic series={s} tangentX={p.tangentX} f={f} xd={xd} yd={yd} xLabel={p.xLabel} method={p.method} />
+      <line x1={cx} x2={cx} y1={f.y0} y2={f.y1 + 34} className="mp-now" />
+      {dot(p.discNaive, 'mp-now-naive')}
+      {dot(p.discStable, 'mp-now-robust')}
+    </SvgBox>
+  );
+}
