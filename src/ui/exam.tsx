@@ -23,7 +23,8 @@ export function ExamQuestion({ n, title, intro, children }: { n: number; title: 
   return (
     <section className="exam-question" id={`question-${n}`} aria-labelledby={`question-${n}-title`} data-testid={`question-${n}`}>
       <h2 id={`question-${n}-title`} className="exam-question-title">
-        <span className="question-tag">Q{n}</span> {title}
+        Exam question {n}
+        <span className="exam-question-sub"> · {title}</span>
       </h2>
       {intro ? <div className="exam-intro">{intro}</div> : null}
       {children}

@@ -6,6 +6,10 @@
  */
 import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, readout, readoutNumber } from './fixtures';
+import { defaultValues, parseParams } from '../../src/app/params';
+import { schema } from '../../src/scenes/area-light/params';
+import { animationFrame, animationLength, buildModel, givenSamples, patchModel, sampleRun } from '../../src/scenes/area-light/model';
+import type { LightStrategy } from '../../src/core/lights';
 
 type V3 = [number, number, number];
 
@@ -161,4 +165,194 @@ test('Q6(a): as the patch shrinks, dA cos θ_l / r² meets the exact solid angle
   const exact = await readoutNumber(page, 'patch-exact');
   const approx = await readoutNumber(page, 'patch-approx');
   expect(Math.abs(exact - approx) / exact).toBeLessThan(1e-6);
+});
+
+// ------------------------------------------------------------------------------------------------
+// Exam first (issue 11) and the animation (issue 12).
+
+/** The model computed here, in Node, from a query string (the same parser as the app). */
+function modelFor(query: string) {
+  const values = { ...defaultValues(schema), ...parseParams(schema, new URLSearchParams(query)).values };
+  return { values, model: buildModel(values) };
+}
+
+test('exam first: 6a, 6b, 6c in order before "Explore further", each with its derivation and live numbers', async ({ page }) => {
+  const q = 'psize=0.3&ptilt=40&seed=9&occluder=1';
+  await openScene(page, `#/area-light?${q}`);
+  const ids = ['part-6a', 'part-6b', 'part-6c', 'explore-further'];
+  const tops: number[] = [];
+  for (const id of ids) {
+    const el = id === 'explore-further' ? page.getByTestId(id) : page.locator(`#${id}`);
+    await expect(el).toBeVisible();
+    tops.push((await el.boundingBox())!.y);
+  }
+  expect([...tops].sort((a, b) => a - b)).toEqual(tops);
+  const { values, model } = modelFor(q);
+  const patch = patchModel(model, values.pu, values.pv, values.psize, values.ptilt);
+  // 6a: the similar-triangles steps, with dl, dω_l and the result for this patch
+  const d6a = page.getByTestId('derivation-6a');
+  await expect(d6a).toContainText('similar triangles');
+  const dl = Math.sqrt(patch.area * patch.cosThetaL);
+  await expect(page.getByTestId('step-6a-perp')).toContainText(`dl = ${Number(dl.toPrecision(4))}`);
+  await expect(page.getByTestId('step-6a-similar')).toContainText(`dω_l = ${Number((dl / patch.r).toPrecision(4))}`);
+  await expect(page.getByTestId('step-6a-result')).toContainText(String(Number(patch.approx.toPrecision(6))));
+  expect(await readoutNumber(page, 'patch-approx')).toBeCloseTo(patch.approx, 7);
+  // 6b: the four steps (Jacobian J_T, then V, then cos θ_l / r²) with the Jacobian's value
+  await expect(page.getByTestId('derivation-6b').locator('.katex')).toHaveCount(4);
+  await expect(page.getByTestId('step-6b-jacobian')).toContainText(String(Number((patch.cosThetaL / patch.r ** 2).toPrecision(4))));
+  // 6c: p_A = 1/|A| and the four given samples' terms, their mean as the N = 4 estimate
+  await expect(page.getByTestId('step-6c-pdf')).toContainText(`|A| = ${Number(model.light.area.toPrecision(4))}`);
+  const g = givenSamples(model, values.seed, 4);
+  for (let i = 0; i < 4; i++) {
+    const v = Number(await page.getByTestId(`given-term-${i + 1}`).getAttribute('data-value'));
+    expect(v).toBeCloseTo(g.samples[i]!.term, 12);
+  }
+  expect(await readoutNumber(page, 'given-estimate')).toBeCloseTo(g.estimate, 6);
+});
+
+test('Q6(a) figure: drawn to scale by default, and its labels never overlap (several tilts, 375 px labels ≥ 12 px)', async ({ page }) => {
+  await page.setViewportSize({ width: 375, height: 800 });
+  for (const ptilt of [0, 30, 60, 85, -45]) {
+    for (const psize of [0.25, 0.9]) {
+      await openScene(page, `#/area-light?ptilt=${ptilt}&psize=${psize}`);
+      const fig = page.getByTestId('al-patch-figure');
+      await fig.scrollIntoViewIfNeeded();
+      if (psize === 0.25 && ptilt === 0) await expect(fig).toHaveAttribute('data-to-scale', '1');
+      const boxes = await fig.locator('text').evaluateAll((els) =>
+        els
+          .filter((e) => getComputedStyle(e).display !== 'none')
+          .map((e) => {
+            const r = e.getBoundingClientRect();
+            return { t: e.textContent, x0: r.left, x1: r.right, y0: r.top, y1: r.bottom, fs: parseFloat(getComputedStyle(e).fontSize) * ((e as SVGTextElement).ownerSVGElement!.getBoundingClientRect().width / 560) };
+          }),
+      );
+      for (const b of boxes) expect(b.fs, `${b.t} font size`).toBeGreaterThanOrEqual(12);
+      for (let i = 0; i < boxes.length; i++)
+        for (let j = i + 1; j < boxes.length; j++) {
+          const a = boxes[i]!, b = boxes[j]!;
+          const overlap = Math.min(a.x1, b.x1) - Math.max(a.x0, b.x0) > 1 && Math.min(a.y1, b.y1) - Math.max(a.y0, b.y0) > 1;
+          expect(overlap, `tilt ${ptilt}, side ${psize}: "${a.t}" overlaps "${b.t}"`).toBe(false);
+        }
+    }
+  }
+});
+
+test('dark theme: the Q6(b) highlight boxes turn dark with light text', async ({ page }) => {
+  await openScene(page, '#/area-light?theme=dark');
+  const bg = await page.locator('.al-hl-j').evaluate((e) => getComputedStyle(e).backgroundColor);
+  const lum = (c: string) => {
+    const [r, g, b] = c.match(/\d+/g)!.map(Number);
+    return 0.2126 * r! + 0.7152 * g! + 0.0722 * b!;
+  };
+  expect(lum(bg)).toBeLessThan(110);
+  // the KaTeX colour boxes follow the theme too
+  const boxBg = await page.getByTestId('derivation-6b').locator('.colorbox').first().evaluate((e) => getComputedStyle(e).backgroundColor);
+  expect(lum(boxBg)).toBeLessThan(110);
+});
+
+for (const [w, h] of [[1920, 1080], [1280, 720]] as const) {
+  test(`present=1 at ${w}×${h}: the animation is on the first screen, and no plot's axis title is clipped`, async ({ page }) => {
+    await page.setViewportSize({ width: w, height: h });
+    await openScene(page, '#/area-light?present=1');
+    // the animation's figure (the 3D view with the samples) starts on the first screen
+    const stage = page.getByTestId('al-3d');
+    await expect(stage).toBeVisible();
+    expect((await stage.boundingBox())!.y).toBeLessThan(0.8 * h);
+    const plots = page.locator('.js-plotly-plot');
+    // plots mount when they come near the screen: walk down the page
+    await expect
+      .poll(
+        async () => {
+          await page.evaluate(() => window.scrollBy(0, window.innerHeight));
+          return plots.count();
+        },
+        { timeout: 60000 },
+      )
+      .toBeGreaterThanOrEqual(3);
+    for (let i = 0; i < (await plots.count()); i++) {
+      const p = plots.nth(i);
+      await p.scrollIntoViewIfNeeded();
+      await expect(p.locator('.g-xtitle text, .g-ytitle text').first()).toBeAttached({ timeout: 30000 });
+      const r = await p.evaluate((el) => {
+        const box = el.getBoundingClientRect();
+        return [...el.querySelectorAll('.g-xtitle text, .g-ytitle text, .gtitle')].map((t) => {
+          const b = t.getBoundingClientRect();
+          return { inside: b.left >= box.left - 1 && b.right <= box.right + 1 && b.top >= box.top - 1 && b.bottom <= box.bottom + 1, text: t.textContent };
+        });
+      });
+      for (const t of r) expect(t.inside, `plot ${i}: "${t.text}"`).toBe(true);
+    }
+  });
+}
+
+/** Readouts of the animation at position t, computed here. */
+function animAt(query: string, t: number) {
+  const { values, model } = modelFor(query);
+  const run = sampleRun(model, values.strategy as LightStrategy, animationLength(values.n), values.seed);
+  return animationFrame(run, t);
+}
+
+test('animation: play, pause, and the readouts equal the model at the paused position; a link restores them; step adds one', async ({ page }) => {
+  const q = 'strategy=solid-angle&n=512&seed=21&t=0';
+  await openScene(page, `#/area-light?${q}`);
+  await expect(page.getByTestId('anim-k')).toHaveAttribute('data-value', '0');
+  const tl = page.getByTestId('timeline');
+  await tl.getByRole('button', { name: /play/i }).click();
+  await expect.poll(async () => Number(await page.getByTestId('anim-k').getAttribute('data-value')), { timeout: 20000 }).toBeGreaterThan(20);
+  await tl.getByRole('button', { name: /pause/i }).click();
+  await expect(tl).toHaveAttribute('data-playing', '0');
+  await expect(page).toHaveURL(/[?&]t=\d+/);
+  const t = Number(/[?&]t=(\d+)/.exec(page.url())![1]);
+  const k = Number(await page.getByTestId('anim-k').getAttribute('data-value'));
+  expect(k).toBe(t);
+  const want = animAt(q.replace('t=0', `t=${t}`), t);
+  expect(await readoutNumber(page, 'anim-estimate')).toBeCloseTo(want.estimate, 6);
+  expect(await readoutNumber(page, 'anim-stderr')).toBeCloseTo(want.stderr, 2);
+  // the link with t and the seed reopens exactly there
+  const url = page.url();
+  const est = await readout(page, 'anim-estimate');
+  await page.goto('about:blank');
+  await openScene(page, url.slice(url.indexOf('#')));
+  await expect(page.getByTestId('anim-k')).toHaveAttribute('data-value', String(t));
+  expect(await readout(page, 'anim-estimate')).toBe(est);
+  // step: one more sample
+  await tl.getByRole('button', { name: /step/i }).click();
+  await expect(page.getByTestId('anim-k')).toHaveAttribute('data-value', String(t + 1));
+  expect(await readoutNumber(page, 'anim-estimate')).toBeCloseTo(animAt(q, t + 1).estimate, 6);
+});
+
+test('animation: at the end the running estimate is the n-sample estimate; the floor images follow the timeline', async ({ page }) => {
+  await openScene(page, '#/area-light?n=256&seed=4&strategy=area');
+  await expect(page.getByTestId('anim-k')).toHaveAttribute('data-value', '256');
+  expect(await readout(page, 'anim-estimate')).toBe(await readout(page, 'estimate'));
+  await page.locator('.al-images').scrollIntoViewIfNeeded();
+  await expect(page.getByText(/64 samples per pixel \(done\)/)).toBeVisible({ timeout: 30000 });
+  await openScene(page, '#/area-light?n=256&seed=4&strategy=area&t=64');
+  await page.locator('.al-images').scrollIntoViewIfNeeded();
+  await expect(page.getByTestId('floor-spp')).toHaveAttribute('data-value', '16', { timeout: 30000 });
+});
+
+test('reduced motion: play=1 in the link starts paused; and no animation frames are requested while paused', async ({ page }) => {
+  await page.addInitScript(() => {
+    const w = window as unknown as { __raf: number };
+    w.__raf = 0;
+    const orig = window.requestAnimationFrame.bind(window);
+    window.requestAnimationFrame = (cb) => {
+      w.__raf++;
+      return orig(cb);
+    };
+  });
+  await page.emulateMedia({ reducedMotion: 'reduce' });
+  await openScene(page, '#/area-light?play=1&t=10&n=512');
+  const tl = page.getByTestId('timeline');
+  await expect(tl).toHaveAttribute('data-playing', '0');
+  await expect(page.getByTestId('anim-k')).toHaveAttribute('data-value', '10');
+  // let the 3D view and plots settle, then count frames over a quiet second
+  await page.waitForLoadState('networkidle');
+  await expect.poll(async () => {
+    const a = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
+    await page.waitForTimeout(1000);
+    const b = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
+    return b - a;
+  }, { timeout: 30000 }).toBe(0);
 });

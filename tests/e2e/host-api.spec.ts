@@ -214,3 +214,35 @@ test('"Copy embed code" gives an iframe with an id and the listener that sizes i
     .toBeLessThanOrEqual(1);
   expect(await content()).toBeGreaterThan(720);
 });
+
+test('the host drives the shared animation timeline: seek, play and pause', async ({ page }) => {
+  const frame = await openHost(page, '#/texture?embed=1');
+  const timeline = frame.getByTestId('timeline').first();
+  await expect(timeline).toBeVisible({ timeout: 30000 });
+  const bilinear = () => frame.getByTestId('bilinear').first().getAttribute('data-value');
+  const atStart = await bilinear();
+
+  // seek: the timeline moves to t and the readouts follow the query's new position on the path
+  const seek = await api<Reply>(page, 'seek', 0.5);
+  expect(seek.ok, seek.error).toBe(true);
+  expect(seek.state!.params.t).toBe(0.5);
+  await expect(timeline).toHaveAttribute('data-t', '0.5');
+  await expect.poll(bilinear).not.toBe(atStart);
+
+  // play: the position advances; pause: it stops, and the paused position is the state's t
+  const play = await api<Reply>(page, 'play');
+  expect(play.ok, play.error).toBe(true);
+  await expect(timeline).toHaveAttribute('data-playing', '1');
+  await expect.poll(async () => Number(await timeline.getAttribute('data-t')), { timeout: 30000 }).not.toBe(0.5);
+  const pause = await api<Reply>(page, 'pause');
+  expect(pause.ok, pause.error).toBe(true);
+  await expect(timeline).toHaveAttribute('data-playing', '0');
+  const shown = Number(await timeline.getAttribute('data-t'));
+  await expect.poll(async () => (await api<Reply>(page, 'get')).state!.params.t).toBe(shown);
+
+  // a bad position is refused with a message naming t, and nothing moves
+  const bad = await api<Reply>(page, 'seek', 7);
+  expect(bad.ok).toBe(false);
+  expect(bad.error).toMatch(/\bt\b/);
+  await expect(timeline).toHaveAttribute('data-t', String(shown));
+});

@@ -5,6 +5,8 @@
  */
 import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
+import { raceAt, raceTrack } from '../../src/scenes/monte-carlo/model';
+import { squarePdf1D } from '../../src/core/sampling/pdf1d';
 
 const EXAM_X = [1.16, 1.98, 0.54, 1.26];
 const f = (x: number) => (x + 2) ** 2;
@@ -147,6 +149,7 @@ test('cancel stops a 10⁷-sample run; the page stays responsive and shows no es
 });
 
 test('axe finds no serious or critical violations (light, dark, present, bad pdf)', async ({ page }) => {
+  test.setTimeout(240_000); // four full-page scans of a long page on a busy 2-core machine
   for (const qs of ['theme=light', 'theme=dark', 'present=1', 'pdf=custom&pdfexpr=x-1']) {
     await openScene(page, `#/monte-carlo?${qs}`);
     await page.getByRole('heading', { name: /Unbiasedness|RMSE over/ }).first().scrollIntoViewIfNeeded();
@@ -155,4 +158,148 @@ test('axe finds no serious or critical violations (light, dark, present, bad pdf
     const bad = results.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical');
     expect(bad.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`), qs).toEqual([]);
   }
+});
+
+// ---------------------------------------------------------------------------------------------
+// Exam first (issue 11) and the animation (issue 12)
+// ---------------------------------------------------------------------------------------------
+
+/** The race as the model computes it, for the exam's f on [0, 2], p ∝ f, seed s. */
+const examTrack = (seed: number) => raceTrack(f, 0, 2, squarePdf1D(0, 2, 2), exactSquare(0, 2), seed);
+
+async function raceReadouts(page: import('@playwright/test').Page) {
+  const out: Record<string, string> = {};
+  for (const lane of ['uniform', 'importance'])
+    for (const k of ['x', 'term', 'estimate', 'stderr']) out[`${lane}-${k}`] = await readout(page, `race-${lane}-${k}`);
+  return out;
+}
+function expectFrame(r: Record<string, string>, fr: ReturnType<typeof raceAt>) {
+  close(Number(r['uniform-x']), fr.uniform.x, 1e-12);
+  close(Number(r['uniform-term']), fr.uniform.term, 1e-10);
+  close(Number(r['uniform-estimate']), fr.uniform.estimate, 1e-10);
+  close(Number(r['uniform-stderr']), fr.uniform.stderr, 1e-10);
+  close(Number(r['importance-x']), fr.importance.x, 1e-12);
+  close(Number(r['importance-estimate']), fr.importance.estimate, 1e-10);
+}
+
+test.describe('exam first: Q4 (a)–(d)', () => {
+  test('each part asks, derives with live numbers and answers; the key’s Σ from i = 0 is flagged', async ({ page }) => {
+    await openScene(page, '#/monte-carlo');
+    const I = exactSquare(0, 2);
+    // order: the question (with the animation) before the parts, the parts before "explore further"
+    const ys = await Promise.all(['question-4', 'race', 'part-4a', 'part-4b', 'part-4c', 'part-4d', 'explore-further'].map(async (id) => (await page.getByTestId(id).boundingBox())!.y));
+    expect([...ys].sort((p, q) => p - q)).toEqual(ys);
+    // (a): expansion, antiderivative, the evaluation F(2) = 8/3 + 8 + 8, and the exact readout
+    const a = page.getByTestId('derivation-4a');
+    await expect(a).toContainText('4x');
+    await expect(a).toContainText(String((8 / 3).toPrecision(6)));
+    await expect(a).toContainText('56');
+    close(await readoutNumber(page, 'exact'), I, 1e-13);
+    // (b): every f(xᵢ) and the average; the headline is the exam's answer, computed
+    const b = page.getByTestId('derivation-4b');
+    for (const x of EXAM_X) await expect(b).toContainText(String(Number(f(x).toPrecision(6))));
+    const uni = (2 / 4) * EXAM_X.reduce((s, x) => s + f(x), 0);
+    close(await readoutNumber(page, 'q4-uniform'), uni, 1e-12);
+    await expect(page.getByTestId('answer-4b')).toContainText(uni.toFixed(2));
+    await expect(page.getByTestId('key-sum-4b')).toContainText('i = 1 to 4');
+    await expect(page.getByTestId('key-sum-4c')).toBeVisible();
+    // (c): p(x) = 3(x + 2)²/56 stated in the default (uniform) configuration, each term = I
+    await expect(page.getByTestId('pdf-4c')).toContainText(String((cube(4) - cube(2))));
+    close(await readoutNumber(page, 'q4-importance'), I, 1e-12);
+    await expect(page.getByTestId('derivation-4c')).toContainText(I.toFixed(10).slice(0, 12));
+    // (d): the key's remark, with the errors after the whole run computed by the model
+    const end = raceAt(examTrack(1), 8192);
+    close(await readoutNumber(page, 'q4d-uniform-error'), end.uniform.absError, 1e-10);
+    expect(await readoutNumber(page, 'q4d-importance-error')).toBeLessThan(1e-12);
+    await expect(page.getByTestId('answer-4d')).toContainText('(c) converges faster');
+  });
+
+  test('s/√N is flagged for stratified/QMC points and the RMSE over randomized runs is shown; given samples with a non-uniform pdf are flagged', async ({ page }) => {
+    await openScene(page, '#/monte-carlo?strategy=sobol&n=1000&runs=8');
+    await expect(page.getByTestId('stderr-not-error')).toContainText('not an error estimate');
+    const rmse = Number(await waitForReadout(page, 'rmse-at-n', (v) => v !== 'none', 45000));
+    expect(rmse).toBeGreaterThan(0);
+    // the Sobol RMSE is far below what s/√N claims for these points
+    expect(rmse).toBeLessThan(await readoutNumber(page, 'stderr'));
+    for (const s of ['stratified', 'halton']) {
+      await openScene(page, `#/monte-carlo?strategy=${s}&n=1000&runs=8`);
+      await expect(page.getByTestId('stderr-not-error')).toBeVisible();
+    }
+    await openScene(page, '#/monte-carlo?strategy=independent');
+    await expect(page.getByTestId('stderr-not-error')).toHaveCount(0);
+    await expect(page.getByTestId('given-not-from-p')).toHaveCount(0);
+    await openScene(page, `#/monte-carlo?pdf=linear&samples=${EXAM_X.join(',')}`);
+    await expect(page.getByTestId('given-not-from-p')).toContainText('not drawn from');
+    await openScene(page, `#/monte-carlo?samples=${EXAM_X.join(',')}`);
+    await expect(page.getByTestId('given-not-from-p')).toHaveCount(0);
+  });
+
+  for (const [w, h] of [
+    [1920, 1080],
+    [1280, 720],
+  ] as const) {
+    test(`present=1 at ${w}×${h}: the animated figure is on the first screen, captions not clipped`, async ({ page }) => {
+      await page.setViewportSize({ width: w, height: h });
+      await openScene(page, '#/monte-carlo?present=1&t=200');
+      const svg = page.getByTestId('race').locator('svg').first();
+      const box = (await svg.boundingBox())!;
+      expect(box.y).toBeLessThan(h - 100);
+      for (const cap of await page.locator('.mc-svg-fig figcaption').all()) {
+        const c = (await cap.boundingBox())!;
+        const sw = await cap.evaluate((e) => e.scrollWidth - e.clientWidth);
+        expect(sw).toBeLessThanOrEqual(0);
+        expect(c.x).toBeGreaterThanOrEqual(0);
+        expect(c.x + c.width).toBeLessThanOrEqual(w);
+      }
+    });
+  }
+});
+
+test.describe('animation: samples arrive one by one', () => {
+  test('play, pause: readouts equal the model at the paused t; the link restores them; step adds one sample', async ({ page }) => {
+    await openScene(page, '#/monte-carlo?seed=5');
+    const tl = page.getByTestId('timeline');
+    await page.getByTestId('timeline-play').click();
+    await expect.poll(async () => Number(await tl.getAttribute('data-t')), { timeout: 20000 }).toBeGreaterThan(40);
+    await page.getByTestId('timeline-play').click();
+    await expect(tl).toHaveAttribute('data-playing', '0');
+    const t = Number(await tl.getAttribute('data-t'));
+    await expect(page).toHaveURL(new RegExp(`[?&]t=${t}(&|$)`));
+    const track = examTrack(5);
+    const r = await raceReadouts(page);
+    expectFrame(r, raceAt(track, t));
+
+    await openScene(page, `#/monte-carlo?seed=5&t=${t}`);
+    expect(await raceReadouts(page)).toEqual(r);
+
+    await page.getByTestId('timeline-step').click();
+    await expect(tl).toHaveAttribute('data-t', String(t + 1));
+    expectFrame(await raceReadouts(page), raceAt(track, t + 1));
+    // the term appears, and the uniform term is (b − a) f(xᵢ)
+    close(await readoutNumber(page, 'race-uniform-term'), 2 * f(await readoutNumber(page, 'race-uniform-x')), 1e-10);
+  });
+
+  test('reduced motion starts paused even with play=1; no animation frames while paused', async ({ page }) => {
+    await page.addInitScript(() => {
+      const w = window as unknown as { __raf: number };
+      w.__raf = 0;
+      const orig = window.requestAnimationFrame.bind(window);
+      window.requestAnimationFrame = (cb) => {
+        w.__raf++;
+        return orig(cb);
+      };
+    });
+    await page.emulateMedia({ reducedMotion: 'reduce' });
+    await openScene(page, '#/monte-carlo?play=1&t=120');
+    const tl = page.getByTestId('timeline');
+    await expect(tl).toHaveAttribute('data-playing', '0');
+    await expect(tl).toHaveAttribute('data-t', '120');
+    expectFrame(await raceReadouts(page), raceAt(examTrack(1), 120));
+    // settle (fonts, KaTeX, first layout), then count frames over a second of idling
+    await expect.poll(() => page.evaluate(() => document.fonts.status)).toBe('loaded');
+    await page.evaluate(() => ((window as unknown as { __raf: number }).__raf = 0));
+    await page.waitForTimeout(1000); // a measurement interval, not a wait for a state
+    expect(await page.evaluate(() => (window as unknown as { __raf: number }).__raf)).toBe(0);
+    await expect(tl).toHaveAttribute('data-t', '120');
+  });
 });

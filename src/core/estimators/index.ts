@@ -4,3 +4,4 @@ export * from './convergence';
 export * from './rmse';
 export * from './slope';
 export * from './run1d';
+export * from './histogram';

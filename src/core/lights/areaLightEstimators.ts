@@ -21,6 +21,7 @@ import { Welford } from '../estimators/welford';
 import { ConvergenceSeries } from '../estimators/convergence';
 import { intersectRect, type RectLight } from './rectLight';
 import { makeSphericalRect, sampleSphericalRectangle, sphericalRectanglePdf, type SphericalRect } from './sphericalRectangle';
+import { areaToSolidAnglePdf, rectAreaPdf, sampleRectArea } from './areaSampling';
 
 /** The three sampling strategies. */
 export type LightStrategy = 'area' | 'solid-angle' | 'cosine';
@@ -106,20 +107,42 @@ export function areaLightTerms(
     }
     return;
   }
-  const area = light.area;
-  const q = strategy === 'solid-angle' ? (sph ?? makeSphericalRect(light, px, py, pz)) : null;
-  const s = light.corner, ea = light.edgeX, eb = light.edgeY;
-  for (let i = 0; i < n; i++) {
-    const u1 = u[2 * i]!, u2 = u[2 * i + 1]!;
-    let x: number, yy: number, z: number;
-    if (q) {
-      sampleSphericalRectangle(q, u1, u2, scratch, 0);
-      x = scratch[0]!; yy = scratch[1]!; z = scratch[2]!;
-    } else {
-      x = s[0] + u1 * ea[0] + u2 * eb[0];
-      yy = s[1] + u1 * ea[1] + u2 * eb[1];
-      z = s[2] + u1 * ea[2] + u2 * eb[2];
+  if (strategy === 'area') {
+    // Uniform by area (the key's Q6(c)): the tested triple of ./areaSampling. p_A = 1/|A| is
+    // constant on the rectangle, so it is evaluated once (at the centre); every sample lies on the
+    // rectangle by construction. Per sample, p_A is converted to solid angle with Q6(a)'s
+    // Jacobian, p_ω = p_A r² / cos θ_l, so term = f L V cos θ / p_ω = f L V cos θ cos θ_l / (p_A r²).
+    const pA = rectAreaPdf(light, light.center[0], light.center[1], light.center[2]);
+    for (let i = 0; i < n; i++) {
+      sampleRectArea(light, u[2 * i]!, u[2 * i + 1]!, scratch, 0);
+      const x = scratch[0]!, yy = scratch[1]!, z = scratch[2]!;
+      if (points) {
+        points[3 * i] = x;
+        points[3 * i + 1] = yy;
+        points[3 * i + 2] = z;
+      }
+      const dx = x - px, dy = yy - py, dz = z - pz;
+      const r2 = dx * dx + dy * dy + dz * dz;
+      const r = Math.sqrt(r2);
+      let term = 0;
+      if (r > 0) {
+        const cosT = dz / r;
+        const cosL = -(dx * nl[0] + dy * nl[1] + dz * nl[2]) / r;
+        if (cosT > 0 && cosL > 0 && !(occluder && intersectRect(occluder, px, py, pz, dx, dy, dz, 0) < 1 - SHADOW_EPS)) {
+          const pw = areaToSolidAnglePdf(pA, r2, cosL);
+          term = pw > 0 ? (f * L * cosT) / pw : 0;
+        }
+      }
+      terms[i] = Number.isFinite(term) ? term : 0;
     }
+    return;
+  }
+  // Uniform by solid angle over the spherical rectangle: sampleSphericalRectangle +
+  // sphericalRectanglePdf (per unit solid angle), term = f L V cos θ / p_ω.
+  const q = sph ?? makeSphericalRect(light, px, py, pz);
+  for (let i = 0; i < n; i++) {
+    sampleSphericalRectangle(q, u[2 * i]!, u[2 * i + 1]!, scratch, 0);
+    const x = scratch[0]!, yy = scratch[1]!, z = scratch[2]!;
     if (points) {
       points[3 * i] = x;
       points[3 * i + 1] = yy;
@@ -132,17 +155,9 @@ export function areaLightTerms(
     if (r > 0) {
       const cosT = dz / r;
       const cosL = -(dx * nl[0] + dy * nl[1] + dz * nl[2]) / r;
-      if (cosT > 0 && cosL > 0) {
-        let v = 1;
-        if (occluder && intersectRect(occluder, px, py, pz, dx, dy, dz, 0) < 1 - SHADOW_EPS) v = 0;
-        if (v) {
-          if (q) {
-            const pdf = sphericalRectanglePdf(q, x, yy, z);
-            term = pdf > 0 ? (f * L * cosT) / pdf : 0;
-          } else {
-            term = (area * f * L * cosT * cosL) / r2;
-          }
-        }
+      if (cosT > 0 && cosL > 0 && !(occluder && intersectRect(occluder, px, py, pz, dx, dy, dz, 0) < 1 - SHADOW_EPS)) {
+        const pdf = sphericalRectanglePdf(q, x, yy, z);
+        term = pdf > 0 ? (f * L * cosT) / pdf : 0;
       }
     }
     terms[i] = Number.isFinite(term) ? term : 0;

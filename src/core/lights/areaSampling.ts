@@ -21,12 +21,16 @@ export function sampleRectArea(light: RectLight, u1: number, u2: number, out: Fl
 
 /**
  * Density of {@link sampleRectArea} per unit AREA at the point x: 1/|A| on the rectangle; 0 off it
- * (off its plane or outside its edges by more than a relative 1e-9) and for a degenerate rectangle.
+ * (off its plane or outside its edges by more than 1e-9 × max(1, w, h, |corner|)) and for a
+ * degenerate rectangle. The estimators of areaLightEstimators.ts call it for every area sample.
  */
 export function rectAreaPdf(light: RectLight, x: number, y: number, z: number): number {
   if (!(light.area > 0)) return 0;
   const sx = x - light.corner[0], sy = y - light.corner[1], sz = z - light.corner[2];
-  const tol = 1e-9 * Math.max(1, light.width, light.height);
+  // Relative to the rectangle's size AND its position: a sampled point far from the origin carries
+  // an absolute rounding error of ~|corner|·2⁻⁵³ that must not push it "off" the rectangle.
+  const s0 = light.corner;
+  const tol = 1e-9 * Math.max(1, light.width, light.height, Math.abs(s0[0]), Math.abs(s0[1]), Math.abs(s0[2]));
   const a = sx * light.ex[0] + sy * light.ex[1] + sz * light.ex[2];
   const b = sx * light.ey[0] + sy * light.ey[1] + sz * light.ey[2];
   const c = sx * light.normal[0] + sy * light.normal[1] + sz * light.normal[2];

@@ -4,14 +4,52 @@
  * uniform area (the key's), solid-angle (spherical rectangle) and cosine hemisphere sampling —
  * against the analytic reference (Lambert's formula). All figures come from ./model over the core.
  */
-import { useEffect, useMemo, useRef, useState } from 'react';
+import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
-import { MathTex, Notice, NumberField, Panel, Plot, Readout, SceneLayout, Select, Slider, Toggle, useSeenOnce, useShortcuts } from '../../ui';
+import {
+  Derivation,
+  ExamPart,
+  ExamQuestion,
+  ExploreFurther,
+  KeyNote,
+  LiveAnswer,
+  MathTex,
+  Notice,
+  NumberField,
+  Panel,
+  Plot,
+  Readout,
+  SceneLayout,
+  Select,
+  Slider,
+  TimelineTransport,
+  Toggle,
+  useSeenOnce,
+  useTimeline,
+} from '../../ui';
 import type { PlotTrace } from '../../ui';
 import { useWorkerJob } from '../../workers';
 import type { LightStrategy } from '../../core/lights';
-import { STRATEGIES, STRATEGY_LABEL, STRATEGY_SHORT, buildModel, convergence, drawSamples, estimateAll, floorJob, patchModel, targetValue, type StrategyEstimate, type TimingPoint } from './model';
+import {
+  STRATEGIES,
+  STRATEGY_LABEL,
+  STRATEGY_SHORT,
+  animationFrame,
+  animationLength,
+  buildModel,
+  convergence,
+  estimateAll,
+  floorJob,
+  floorPassAt,
+  givenSamples,
+  patchModel,
+  sampleRun,
+  targetValue,
+  type StrategyEstimate,
+  type TimingPoint,
+} from './model';
 import { PRESETS, schema, type AreaLightParams } from './params';
+import { RunningEstimate } from './view/RunningEstimate';
 import { Scene3D } from './view/Scene3D';
 import { FloorImages } from './view/FloorImages';
 import { PatchFigure } from './view/PatchFigure';
@@ -19,7 +57,6 @@ import './area-light.css';
 
 type Schema = typeof schema;
 
-const DRAWN = 256;
 /** Largest n per strategy estimated on the main thread. */
 const SYNC_MAX = 65536;
 const COLORS: Record<LightStrategy, string> = { area: '#b34700', 'solid-angle': '#1f5fa8', cosine: '#1d7a3a' };
@@ -29,8 +66,15 @@ const LEGEND_TOP = { orientation: 'h', x: 0, y: 1.02, yanchor: 'bottom' };
 
 const fmt = (x: number, d = 4) => (Number.isFinite(x) ? Number(x.toPrecision(d)).toString() : '—');
 
+/** Highlight colours of Q6(b)'s boxes (Jacobian, visibility): light boxes with dark text, or dark boxes with light text. */
+function highlight(dark: boolean) {
+  return dark
+    ? { jBg: '#5c3412', jFg: '#fde2c8', vBg: '#1e4628', vFg: '#d7ecd9' }
+    : { jBg: '#fde2c8', jFg: '#1c1d21', vBg: '#d7ecd9', vFg: '#1c1d21' };
+}
+
 export default function AreaLightScene({ params, setParams, mode }: SceneProps<Schema>) {
-  const set = (patch: Partial<AreaLightParams>) => setParams(patch);
+  const set = useCallback((patch: Partial<AreaLightParams>) => setParams(patch), [setParams]);
   const model = useMemo(() => buildModel(params), [params]);
   const strategy = params.strategy as LightStrategy;
   const n = params.n;
@@ -41,12 +85,15 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
   const big = n > SYNC_MAX;
   const syncEstimates = useMemo(() => (big ? null : estimateAll(model, n, seed)), [big, model, n, seed]);
   const estTask = useWorkerJob<StrategyEstimate[]>(makeWorker, 'estimates', params, { enabled: big, delayMs: 150 });
-  const estimates: StrategyEstimate[] = syncEstimates ?? estTask.result ?? STRATEGIES.map((s) => ({ strategy: s, estimate: NaN, stderr: NaN, n }));
+  const estimates: StrategyEstimate[] = useMemo(
+    () => syncEstimates ?? estTask.result ?? STRATEGIES.map((s) => ({ strategy: s, estimate: NaN, stderr: NaN, n })),
+    [syncEstimates, estTask.result, n],
+  );
   const pending = big && !estTask.result;
   const chosen = estimates.find((e) => e.strategy === strategy)!;
   const target = targetValue(model);
-  const drawn = useMemo(() => drawSamples(model, strategy, DRAWN, seed), [model, strategy, seed]);
   const patch = useMemo(() => patchModel(model, params.pu, params.pv, params.psize, params.ptilt), [model, params.pu, params.pv, params.psize, params.ptilt]);
+  const given = useMemo(() => givenSamples(model, seed, 4), [model, seed]);
   const timingKey = JSON.stringify([model.p, model.lc, model.w, model.h, model.tilt, model.L, model.rho, model.occluder ? 1 : 0, seed]);
   // Convergence series (3 × 32768 samples) in the worker: ~0.1 s that a slider drag should not wait for.
   // The convergence and timing runs start when their panels come near the screen (not on load:
@@ -63,21 +110,32 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
 
   const timing = useWorkerJob<TimingPoint[]>(makeWorker, 'timing', params, { key: timingKey, delayMs: 400, enabled: timingSeen });
 
-  const [playing, setPlaying] = useState(false);
-  useShortcuts({
-    step: () => set({ seed: (seed + 1) >>> 0 }),
-    reset: () => set({ ...PRESETS[0]!.params }),
-    playPause: () => setPlaying((p) => !p),
+  // The animation (issue 12): t = samples of the chosen strategy arrived so far, 0 … min(n, 1024).
+  const animMax = animationLength(n);
+  const run = useMemo(() => sampleRun(model, strategy, animMax, seed), [model, strategy, animMax, seed]);
+  const stageRef = useRef<HTMLDivElement>(null);
+  const tl = useTimeline({
+    t: Number(params.t),
+    play: !!params.play,
+    setParams: setParams as (p: { t?: number; play?: boolean }) => void,
+    max: animMax,
+    integer: true,
+    duration: Math.max(4, animMax / 64),
+    visibleRef: stageRef,
   });
-  // "Play" re-draws with a new seed once a second (to watch the estimate jitter within its error bar).
+  const af = animationFrame(run, tl.t);
+  const floorPass = floorPassAt(tl.t, animMax);
+
+  // "Reseed every second": a new seed each second, to watch the estimate jitter within its error bar.
+  const [reseeding, setReseeding] = useState(false);
   useEffect(() => {
-    if (!playing) return;
+    if (!reseeding) return;
     const t = setInterval(() => setParams({ seed: (Date.now() >>> 0) % 4294967295 }), 1000);
     return () => clearInterval(t);
-  }, [playing, setParams]);
+  }, [reseeding, setParams]);
 
   const dark = mode.theme === 'dark';
-  const vpHeight = mode.present ? 520 : 400;
+  const vpHeight = mode.present ? 480 : 380;
   const zTarget = Number.isFinite(target) && chosen.stderr > 0 ? (chosen.estimate - target) / chosen.stderr : null;
 
   const convTraces: PlotTrace[] = useMemo(() => {
@@ -91,7 +149,8 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
   const timingTraces: PlotTrace[] = useMemo(() => {
     const pts = timing.result ?? [];
     return STRATEGIES.map((s) => {
-      const rows = pts.filter((r) => r.strategy === s && r.rmse > 0 && r.seconds > 0);
+      // Sorted by run time, so the path never doubles back in x (a busy machine can time a larger N faster).
+      const rows = pts.filter((r) => r.strategy === s && r.rmse > 0 && r.seconds > 0).sort((a, b) => a.seconds - b.seconds);
       return {
         x: rows.map((r) => r.seconds * 1e3),
         y: rows.map((r) => r.rmse),
@@ -133,67 +192,381 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
     </fieldset>
   );
 
-  const controls = (
-    <>
-      <Panel title="Presets">
-        <div className="al-presets" role="group" aria-label="Presets">
-          {PRESETS.map((pr) => (
-            <button key={pr.id} type="button" title={pr.what} onClick={() => set({ ...pr.params })} data-testid={`preset-${pr.id}`}>
-              {pr.label}
+  // Everything below is memoised on the parameters (not on t), so an animation frame re-renders
+  // only the stage's animated bits and the floor images' pass choice.
+  const controls = useMemo(
+    () => (
+      <>
+        <Panel title="Presets">
+          <div className="al-presets" role="group" aria-label="Presets">
+            {PRESETS.map((pr) => (
+              <button key={pr.id} type="button" title={pr.what} onClick={() => set({ ...pr.params })} data-testid={`preset-${pr.id}`}>
+                {pr.label}
+              </button>
+            ))}
+          </div>
+        </Panel>
+        <Panel title="Sampling">
+          <Select
+            label="Strategy"
+            value={strategy}
+            options={STRATEGIES.map((s) => ({ value: s, label: STRATEGY_LABEL[s] }))}
+            onChange={(s) => set({ strategy: s })}
+            testId="strategy"
+          />
+          <Slider label="Samples n" value={n} min={1} max={1000000} step={1} log onChange={(x) => set({ n: Math.round(x) })} />
+          <NumberField label="Seed" value={seed} min={0} max={4294967295} step={1} onChange={(x) => set({ seed: Math.round(x) })} />
+          <div className="al-row">
+            <button type="button" onClick={() => set({ seed: (seed + 1) >>> 0 })}>
+              New seed
             </button>
-          ))}
-        </div>
-      </Panel>
-      <Panel title="Light and floor">
-        {vec('Light centre', 'lc', params.lc)}
-        <Slider label="Width w" value={params.ls?.[0] ?? 1} min={0} max={10} step={0.05} onChange={(x) => set({ ls: [x, params.ls?.[1] ?? 1] })} />
-        <Slider label="Height h" value={params.ls?.[1] ?? 1} min={0} max={10} step={0.05} onChange={(x) => set({ ls: [params.ls?.[0] ?? 1, x] })} />
-        <Slider label="Tilt about x" value={params.tilt} min={-180} max={180} step={1} unit="°" onChange={(x) => set({ tilt: x })} />
-        <Slider label="Radiance L" value={params.L} min={0} max={10} step={0.1} onChange={(x) => set({ L: x })} />
-        <Slider label="Albedo ρ" value={params.rho} min={0} max={1} step={0.01} onChange={(x) => set({ rho: x })} />
-        {vec('Shading point p (normal +z)', 'p', params.p)}
-        <Toggle label="Occluder between point and light" checked={params.occluder} onChange={(b) => set({ occluder: b })} />
-      </Panel>
-      <Panel title="Sampling">
-        <Select
-          label="Strategy"
-          value={strategy}
-          options={STRATEGIES.map((s) => ({ value: s, label: STRATEGY_LABEL[s] }))}
-          onChange={(s) => set({ strategy: s })}
-          testId="strategy"
-        />
-        <Slider label="Samples n" value={n} min={1} max={1000000} step={1} log onChange={(x) => set({ n: Math.round(x) })} />
-        <NumberField label="Seed" value={seed} min={0} max={4294967295} step={1} onChange={(x) => set({ seed: Math.round(x) })} />
-        <div className="al-row">
-          <button type="button" onClick={() => set({ seed: (seed + 1) >>> 0 })}>
-            New seed
-          </button>
-          <button type="button" aria-pressed={playing} onClick={() => setPlaying((p) => !p)}>
-            {playing ? '❚❚ Stop reseeding' : '▶ Reseed every second'}
-          </button>
-        </div>
-      </Panel>
-      <Panel title="Q6(a) patch">
-        <Slider label="Position u on the light" value={params.pu} min={0} max={1} step={0.01} onChange={(x) => set({ pu: x })} />
-        <Slider label="Position v on the light" value={params.pv} min={0} max={1} step={0.01} onChange={(x) => set({ pv: x })} />
-        <Slider label="Patch side" value={params.psize} min={0.001} max={2} log onChange={(x) => set({ psize: x })} />
-        <Slider label="Patch tilt (relative)" value={params.ptilt} min={-89} max={89} step={1} unit="°" onChange={(x) => set({ ptilt: x })} />
-      </Panel>
-    </>
+            <button type="button" aria-pressed={reseeding} onClick={() => setReseeding((p) => !p)}>
+              {reseeding ? '❚❚ Stop reseeding' : '↻ Reseed every second'}
+            </button>
+          </div>
+        </Panel>
+        <Panel title="Light and floor">
+          {vec('Light centre', 'lc', params.lc)}
+          <Slider label="Width w" value={params.ls?.[0] ?? 1} min={0} max={10} step={0.05} onChange={(x) => set({ ls: [x, params.ls?.[1] ?? 1] })} />
+          <Slider label="Height h" value={params.ls?.[1] ?? 1} min={0} max={10} step={0.05} onChange={(x) => set({ ls: [params.ls?.[0] ?? 1, x] })} />
+          <Slider label="Tilt about x" value={params.tilt} min={-180} max={180} step={1} unit="°" onChange={(x) => set({ tilt: x })} />
+          <Slider label="Radiance L" value={params.L} min={0} max={10} step={0.1} onChange={(x) => set({ L: x })} />
+          <Slider label="Albedo ρ" value={params.rho} min={0} max={1} step={0.01} onChange={(x) => set({ rho: x })} />
+          {vec('Shading point p (normal +z)', 'p', params.p)}
+          <Toggle label="Occluder between point and light" checked={params.occluder} onChange={(b) => set({ occluder: b })} />
+        </Panel>
+      </>
+    ),
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+    [params, strategy, n, seed, reseeding, set],
   );
 
-  const scenePanel = (
-    <>
-      <Panel title="The scene">
-        <Scene3D model={model} strategy={strategy} samples={drawn.points} terms={drawn.terms} patch={patch} height={vpHeight} dark={dark} />
-        <p className="al-legend">
-          Yellow: the emitting side of the light (its back is dark). Dots: the first {DRAWN} samples of the {STRATEGY_LABEL[strategy]} strategy
-          {strategy === 'cosine' ? ' as directions on the unit hemisphere' : ' on the light, and their directions on the unit hemisphere'} — green where the
-          sample contributes, red where it is wasted (below the horizon, blocked, or missing the light). Orange: the Q6(a) patch and its projection on the unit
-          sphere.
-        </p>
-      </Panel>
-    </>
+  const answer6c = useMemo(
+    () => (
+    <LiveAnswer testId="answer-6c">
+      <div className="al-readouts">
+        <Readout id="estimate" label={`estimate, ${STRATEGY_LABEL[strategy]}, n = ${n}`} value={chosen.estimate} digits={7} />
+        <Readout id="stderr" label="standard error" value={chosen.stderr} digits={3} />
+        <Readout id="reference-6c" label={model.occluder ? 'reference (with occluder)' : 'reference (Lambert)'} value={Number.isFinite(target) ? target : null} digits={7} />
+      </div>
+      <p className="al-verdict" data-testid="al-verdict">
+        {pending ? (
+          <>
+            <progress aria-label="Estimating" /> Estimating with n = {n} samples per strategy in the background…
+          </>
+        ) : zTarget === null ? (
+          chosen.stderr === 0 && chosen.estimate === target ? (
+            'Every sample gave the same value: the estimate is exact here.'
+          ) : (
+            'No standard error yet (n < 2), or no analytic value to compare with.'
+          )
+        ) : (
+          `The estimate is ${fmt(Math.abs(zTarget), 2)} standard errors ${zTarget >= 0 ? 'above' : 'below'} the ${model.occluder ? 'occluded ' : ''}reference${Math.abs(zTarget) <= 3 ? ' — within 3σ, as an unbiased estimator should be (about 997 times in 1000).' : ' — outside 3σ (happens about 3 times in 1000 for a correct estimator; try another seed).'}`
+        )}
+      </p>
+    </LiveAnswer>
+  ),
+    [strategy, n, chosen, target, model.occluder, pending, zTarget],
+  );
+
+  const hl = highlight(dark);
+  const fArea = given.f;
+  const exam = useMemo(
+    () => (
+      <>
+        <ExamPart
+          id="6a"
+          title="Solid angle of a small area element"
+          asks={
+            <>
+              A small area element dA of a light, at distance r from x, arbitrarily oriented (normal n_l at angle θ_l to the direction back to x), subtends a
+              solid angle dω. Show that <MathTex tex={String.raw`d\omega = \dfrac{dA\cos\theta_l}{r^2}`} />.
+            </>
+          }
+        >
+          <Derivation testId="derivation-6a">
+            <ol className="al-steps">
+              <li>
+                Project dA onto the plane perpendicular to the ray: a perpendicular element <MathTex tex={String.raw`dA^{\perp}`} /> with sides dl, so{' '}
+                <MathTex tex={String.raw`dA^{\perp} = dl\cdot dl = dA\cos\theta_l`} />
+                <span className="al-live" data-testid="step-6a-perp">
+                  {' '}
+                  (here dA = {fmt(patch.area)}, cos θ_l = {fmt(patch.cosThetaL)}, dA⊥ = {fmt(patch.area * patch.cosThetaL)}, dl = {fmt(Math.sqrt(patch.area * patch.cosThetaL))})
+                </span>
+                .
+              </li>
+              <li>
+                The solid-angle element is the patch dA⊥ casts on the unit sphere, with sides dω_l: <MathTex tex={String.raw`d\omega = d\omega_l\cdot d\omega_l`} />.
+              </li>
+              <li>
+                By similar triangles (shaded in the figure: legs 1 and dω_l/2 on the unit circle, legs r and dl/2 at the patch):{' '}
+                <MathTex tex={String.raw`\frac{d\omega_l/2}{1} = \frac{dl/2}{r}\;\Rightarrow\; d\omega_l = \frac{dl}{r}`} />
+                <span className="al-live" data-testid="step-6a-similar">
+                  {' '}
+                  (r = {fmt(patch.r)}: dω_l = {fmt(Math.sqrt(patch.area * patch.cosThetaL) / patch.r)})
+                </span>
+                .
+              </li>
+              <li>
+                Thus <MathTex tex={String.raw`d\omega = \frac{dl}{r}\cdot\frac{dl}{r} = \frac{dA^{\perp}}{r^2} = \frac{dA\cos\theta_l}{r^2}`} />
+                <span className="al-live" data-testid="step-6a-result">
+                  {' '}
+                  = {fmt(patch.approx, 6)} sr for this patch
+                </span>
+                .
+              </li>
+            </ol>
+          </Derivation>
+          <div className="al-6a">
+            <div className="al-6a-figure">
+              <PatchFigure patch={patch} />
+              <div className="al-patch-controls">
+                <Slider label="Patch position u on the light" value={params.pu} min={0} max={1} step={0.01} onChange={(x) => set({ pu: x })} />
+                <Slider label="Patch position v on the light" value={params.pv} min={0} max={1} step={0.01} onChange={(x) => set({ pv: x })} />
+                <Slider label="Patch side" value={params.psize} min={0.001} max={2} log onChange={(x) => set({ psize: x })} />
+                <Slider label="Patch tilt θ_l (relative to the light)" value={params.ptilt} min={-89} max={89} step={1} unit="°" onChange={(x) => set({ ptilt: x })} />
+              </div>
+            </div>
+            <LiveAnswer title="Check, computed live: the formula against the exact solid angle of the patch" testId="answer-6a">
+              <p className="al-note">
+                The formula is exact only in the limit of a small patch. The exact solid angle of the orange patch (Van Oosterom–Strackee) and dA cos θ_l / r²
+                agree better and better as the patch shrinks — the relative difference falls like the square of its size (slope 2 below).
+              </p>
+              <div className="al-readouts">
+                <Readout id="patch-exact" label="exact Ω of the patch" value={patch.exact} digits={8} unit="sr" />
+                <Readout id="patch-approx" label="dA cos θ_l / r²" value={patch.approx} digits={8} unit="sr" />
+                <Readout id="patch-rel-error" label="relative difference" value={patch.relError} digits={3} />
+                <Readout id="patch-r" label="r" value={patch.r} digits={5} />
+                <Readout id="patch-cos" label="cos θ_l" value={patch.cosThetaL} digits={5} />
+              </div>
+              <Plot
+                ariaLabel="Relative difference between dA cos θ_l / r² and the exact solid angle of the patch, against the patch side, log-log: a line of slope 2."
+                data={patchTraces}
+                height={240}
+                layout={{ xaxis: { type: 'log', title: { text: 'patch side' } }, yaxis: { type: 'log', title: { text: 'relative difference' } }, showlegend: false }}
+              />
+            </LiveAnswer>
+          </div>
+        </ExamPart>
+
+        <ExamPart
+          id="6b"
+          title="The rendering equation over the light’s area"
+          asks={<>Rewrite the rendering equation, an integral over solid angle, as an integral over the area A of the light.</>}
+        >
+          <Derivation testId="derivation-6b">
+            <ol className="al-steps">
+              <li>
+                Over directions: <MathTex display tex={String.raw`L_o(x,\omega_o) = \int_{\Omega} f(x,\omega_o,\omega_i)\,L_i(x,\omega_i)\cos\theta\,d\omega_i`} />
+              </li>
+              <li>
+                Change of variables from ω_i to the point y on the light: dω_i = J_T dA, which introduces a Jacobian:
+                <MathTex display tex={String.raw`L_o(x,\omega_o) = \int_{A} f\,L_i\cos\theta\,\colorbox{${hl.jBg}}{$\color{${hl.jFg}}J_T$}\,dA`} />
+              </li>
+              <li>
+                Over points of the light, nothing says whether the segment from x to y is blocked (over directions, L_i already included it), so visibility is
+                added explicitly:
+                <MathTex display tex={String.raw`L_o(x,\omega_o) = \int_{A} f\,L_i\,\colorbox{${hl.vBg}}{$\color{${hl.vFg}}V(x,y)$}\cos\theta\,J_T\,dA`} />
+              </li>
+              <li>
+                The Jacobian is Q6(a)’s dω/dA:
+                <MathTex
+                  display
+                  tex={String.raw`L_o(x,\omega_o) = \int_{A} f\,L_i\,\colorbox{${hl.vBg}}{$\color{${hl.vFg}}V(x,y)$}\,\cos\theta\,\colorbox{${hl.jBg}}{$\color{${hl.jFg}}\dfrac{\cos\theta_l}{r^2}$}\,dA_y`}
+                />
+                <span className="al-live" data-testid="step-6b-jacobian">
+                  For the patch of (a): J_T = cos θ_l / r² = {fmt(patch.cosThetaL / (patch.r * patch.r))} per unit area.
+                </span>
+              </li>
+            </ol>
+            <p>
+              The <span className="al-hl-j">Jacobian cos θ_l / r²</span> turns area into solid angle; the <span className="al-hl-v">visibility V</span> is 1 where
+              y is seen from x and 0 where it is blocked.
+            </p>
+            <KeyNote testId="keynote-6b">
+              the key writes L_i(x, ω_i) and V(x, ω_i) inside the area integral; over A they are functions of the point y on the light (ω_i is the direction from x
+              to y), as written here.
+            </KeyNote>
+          </Derivation>
+          <LiveAnswer testId="answer-6b">
+            <div className="al-readouts">
+              <Readout id="reference" label="reference (Lambert, no occluder)" value={model.reference} digits={7} />
+              <Readout id="reference-occluded" label="reference with occluder (V < 1)" value={model.occluder ? model.referenceOccluded : null} digits={7} />
+              <Readout id="projected-solid-angle" label="∫ cos θ dω (clipped to the horizon)" value={model.projectedSolidAngle} digits={7} unit="sr" />
+              <Readout id="solid-angle" label="solid angle Ω of the light" value={model.solidAngle} digits={7} unit="sr" />
+              <Readout id="solid-angle-closed" label="Ω, closed form (light parallel to floor)" value={model.solidAngleClosed} digits={7} unit="sr" />
+            </div>
+            <p className="al-note">For a Lambertian floor f = ρ/π, and the integral has a closed form: L_o = (ρ/π) L ∫ cos θ dω by Lambert’s formula.</p>
+          </LiveAnswer>
+        </ExamPart>
+
+        <ExamPart
+          id="6c"
+          title="Monte Carlo estimator with uniform area sampling"
+          asks={<>Sampling points uniformly on the light’s area, give the pdf and the Monte Carlo estimator of L_o.</>}
+        >
+          <Derivation testId="derivation-6c">
+            <ol className="al-steps">
+              <li>
+                The pdf is uniform over the light’s area: <MathTex tex={String.raw`p_A = \frac{1}{|A|}`} />
+                <span className="al-live" data-testid="step-6c-pdf">
+                  {' '}
+                  (|A| = {fmt(given.area)}, p_A = {fmt(1 / given.area)})
+                </span>
+                .
+              </li>
+              <li>
+                The MC estimator divides each term of the area integral by p_A:
+                <MathTex
+                  display
+                  tex={String.raw`\langle L_o\rangle = \frac{1}{N}\sum_{i=1}^{N}\frac{f\,L_i\,V\cos\theta_i\,\cos\theta_{l,i}/r_i^2}{p_A} = \frac{|A|}{N}\sum_{i=1}^{N} f\,L_i\,V_i\cos\theta_i\,\frac{\cos\theta_{l,i}}{r_i^2}`}
+                />
+              </li>
+              <li>
+                With numbers — the first four samples of seed {seed} (f = ρ/π = {fmt(fArea)}, L = {fmt(model.L)}):
+                <div className="al-table-wrap">
+                  <table className="al-table al-given" data-testid="given-samples">
+                    <thead>
+                      <tr>
+                        <th scope="col">i</th>
+                        <th scope="col">(ξ₁, ξ₂)</th>
+                        <th scope="col">y_i on the light</th>
+                        <th scope="col">r_i</th>
+                        <th scope="col">cos θ_i</th>
+                        <th scope="col">cos θ_l,i</th>
+                        <th scope="col">V_i</th>
+                        <th scope="col">|A| f L V cos θ cos θ_l / r²</th>
+                      </tr>
+                    </thead>
+                    <tbody>
+                      {given.samples.map((g, i) => (
+                        <tr key={i} data-testid={`given-${i + 1}`}>
+                          <th scope="row">{i + 1}</th>
+                          <td>
+                            {fmt(g.u1, 3)}, {fmt(g.u2, 3)}
+                          </td>
+                          <td>
+                            ({fmt(g.x[0], 3)}, {fmt(g.x[1], 3)}, {fmt(g.x[2], 3)})
+                          </td>
+                          <td>{fmt(g.r)}</td>
+                          <td>{fmt(g.cosTheta)}</td>
+                          <td>{fmt(g.cosThetaL)}</td>
+                          <td>{g.V}</td>
+                          <td data-testid={`given-term-${i + 1}`} data-value={String(g.term)}>
+                            {fmt(g.term, 5)}
+                          </td>
+                        </tr>
+                      ))}
+                    </tbody>
+                  </table>
+                </div>
+                <MathTex display tex={String.raw`\langle L_o\rangle_{N=4} = \tfrac{1}{4}\left(${given.samples.map((g) => fmt(g.term, 5)).join(' + ')}\right) = ${fmt(given.estimate, 5)}`} />
+                <Readout id="given-estimate" label="⟨L_o⟩ from these 4 samples" value={given.estimate} digits={7} />
+              </li>
+            </ol>
+          </Derivation>
+          {answer6c}
+        </ExamPart>
+      </>
+    ),
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+    [patch, patchTraces, params.pu, params.pv, params.psize, params.ptilt, model, given, seed, dark, set, answer6c],
+  );
+
+  const explore = useMemo(
+    () => (
+      <>
+        <Panel title="Three strategies for the same integral">
+          <p>
+            Solid-angle sampling draws ω uniformly over the light’s spherical rectangle (pdf 1/Ω), so each term is Ω f L V cos θ; cosine sampling draws ω with pdf
+            cos θ / π, so each term is ρ L V when the ray hits the light and 0 when it misses. All three are unbiased; they differ in variance. All samples are
+            independent pseudo-random draws, so the standard error s/√N is a valid error estimate for each.
+          </p>
+          <table className="al-table">
+            <caption>All three strategies, n = {n} each, seed {seed}</caption>
+            <thead>
+              <tr>
+                <th scope="col">strategy</th>
+                <th scope="col">estimate</th>
+                <th scope="col">std. error σ</th>
+                <th scope="col">(est. − ref.)/σ</th>
+              </tr>
+            </thead>
+            <tbody>
+              {estimates.map((e) => (
+                <tr key={e.strategy} className={e.strategy === strategy ? 'al-current' : undefined}>
+                  <th scope="row" title={STRATEGY_LABEL[e.strategy]}>
+                    {STRATEGY_SHORT[e.strategy]}
+                  </th>
+                  <td>
+                    <Readout id={`estimate-${e.strategy}`} label="" value={e.estimate} digits={5} />
+                  </td>
+                  <td>
+                    <Readout id={`stderr-${e.strategy}`} label="" value={e.stderr} digits={2} />
+                  </td>
+                  <td>{e.stderr > 0 && Number.isFinite(target) ? fmt((e.estimate - target) / e.stderr, 3) : '—'}</td>
+                </tr>
+              ))}
+            </tbody>
+          </table>
+        </Panel>
+        <Panel title="Convergence">
+          <div ref={convBox} />
+          <Plot
+            ariaLabel="Absolute error and standard error of the three estimators against the number of samples, log-log."
+            data={convTraces}
+            height={mode.present ? 380 : 300}
+            layout={{ xaxis: { type: 'log', title: { text: 'N (samples)' } }, yaxis: { type: 'log', title: { text: 'error' } }, legend: LEGEND_TOP, margin: { l: 56, r: 16, t: 40, b: 44 } }}
+          />
+          <p className="al-note">Solid: |estimate − reference|. Dotted: the standard error s/√N the estimator reports. Both fall like N^−½; the strategies differ by a constant.</p>
+        </Panel>
+        <Panel title="Run time against error">
+          <div ref={timingBox} className="al-progress-slot">
+            {timing.running ? <progress max={1} value={timing.progress} aria-label="Timing progress" /> : null}
+          </div>
+          {timing.error ? <Notice kind="warn">Timing failed: {timing.error}</Notice> : null}
+          <Plot
+            ariaLabel="RMSE over independent runs against the run time of one estimate, for the three strategies, log-log."
+            data={timingTraces}
+            height={mode.present ? 360 : 280}
+            layout={{ xaxis: { type: 'log', title: { text: 'time per estimate (ms)' } }, yaxis: { type: 'log', title: { text: 'RMSE' } }, legend: LEGEND_TOP, margin: { l: 56, r: 16, t: 40, b: 44 } }}
+          />
+          <p className="al-note">
+            Each point: N = 16 … 4096 samples, RMSE over 24 independent runs, run time measured in a worker on this machine (best of three; noisy when the machine
+            is busy). Points are joined in order of run time, so the line never doubles back. Lower-left wins.
+          </p>
+        </Panel>
+      </>
+    ),
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+    [estimates, strategy, n, seed, target, convTraces, timingTraces, timing.running, timing.progress, timing.error, mode.present],
+  );
+
+  const fmtPos = useCallback((t: number) => `${Math.floor(t)} of ${animMax} samples`, [animMax]);
+  const stage = (
+    <div className="al-stage-wrap">
+    <div className="al-stage" ref={stageRef}>
+      <div className="al-stage-3d">
+        <Scene3D model={model} strategy={strategy} samples={run.points} terms={run.terms} count={af.k} patch={patch} height={vpHeight} dark={dark} />
+      </div>
+      <div className="al-stage-side">
+        <TimelineTransport timeline={tl} label={`Samples arriving (${STRATEGY_SHORT[strategy]})`} format={fmtPos} />
+        <div className="al-readouts al-anim-readouts">
+          <Readout id="anim-k" label="samples arrived k" value={af.k} digits={7} />
+          <Readout id="anim-estimate" label={`running estimate, ${STRATEGY_SHORT[strategy]}`} value={af.k > 0 ? af.estimate : null} digits={7} />
+          <Readout id="anim-stderr" label="its standard error" value={af.k > 1 ? af.stderr : null} digits={3} />
+          <Readout id="anim-term" label="newest sample’s term" value={af.k > 0 ? af.newestTerm : null} digits={5} />
+        </div>
+        <RunningEstimate run={run} reference={target} k={af.k} />
+      </div>
+      <p className="al-legend">
+        Yellow: the emitting side of the light (its back is dark). Dots: the samples of the {STRATEGY_LABEL[strategy]} strategy arrived so far
+        {strategy === 'cosine' ? ', as directions on the unit hemisphere' : ' on the light, and their directions on the unit hemisphere'} — green where the sample
+        contributes, red where it is wasted (below the horizon, blocked, or missing the light); lines to the newest. Orange: the Q6(a) patch and its projection on
+        the unit sphere. Right: the running estimate with ±2 standard errors, converging on the reference (dashed).
+      </p>
+    </div>
+    </div>
   );
 
   const main = (
@@ -203,127 +576,29 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
           {m.text}
         </Notice>
       ))}
-      {mode.present ? scenePanel : null}
-      <Panel title="Reflected radiance L_o at p">
-        <div className="al-readouts">
-          <Readout id="reference" label="reference (Lambert, no occluder)" value={model.reference} digits={7} />
-          <Readout id="estimate" label={`estimate, ${STRATEGY_LABEL[strategy]}, n = ${n}`} value={chosen.estimate} digits={7} />
-          <Readout id="stderr" label="standard error" value={chosen.stderr} digits={3} />
-          <Readout id="solid-angle" label="solid angle Ω of the light" value={model.solidAngle} digits={7} unit="sr" />
-          <Readout id="solid-angle-closed" label="Ω, closed form (light parallel to floor)" value={model.solidAngleClosed} digits={7} unit="sr" />
-          <Readout id="reference-occluded" label="reference with occluder" value={model.occluder ? model.referenceOccluded : null} digits={7} />
-          <Readout id="projected-solid-angle" label="∫ cos θ dω (clipped to the horizon)" value={model.projectedSolidAngle} digits={7} unit="sr" />
-        </div>
-        <p className="al-verdict" data-testid="al-verdict">
-          {pending ? (
-            <>
-              <progress aria-label="Estimating" /> Estimating with n = {n} samples per strategy in the background…
-            </>
-          ) : zTarget === null
-            ? chosen.stderr === 0 && chosen.estimate === target
-              ? 'Every sample gave the same value: the estimate is exact here.'
-              : 'No standard error yet (n < 2), or no analytic value to compare with.'
-            : `The estimate is ${fmt(Math.abs(zTarget), 2)} standard errors ${zTarget >= 0 ? 'above' : 'below'} the ${model.occluder ? 'occluded ' : ''}reference${Math.abs(zTarget) <= 3 ? ' — within 3σ, as an unbiased estimator should be (about 997 times in 1000).' : ' — outside 3σ (happens about 3 times in 1000 for a correct estimator; try another seed).'}`}
-        </p>
-        <table className="al-table">
-          <caption>All three strategies, n = {n} each, seed {seed}</caption>
-          <thead>
-            <tr>
-              <th scope="col">strategy</th>
-              <th scope="col">estimate</th>
-              <th scope="col">std. error σ</th>
-              <th scope="col">(est. − ref.)/σ</th>
-            </tr>
-          </thead>
-          <tbody>
-            {estimates.map((e) => (
-              <tr key={e.strategy} className={e.strategy === strategy ? 'al-current' : undefined}>
-                <th scope="row" title={STRATEGY_LABEL[e.strategy]}>
-                  {STRATEGY_SHORT[e.strategy]}
-                </th>
-                <td>
-                  <Readout id={`estimate-${e.strategy}`} label="" value={e.estimate} digits={5} />
-                </td>
-                <td>
-                  <Readout id={`stderr-${e.strategy}`} label="" value={e.stderr} digits={2} />
-                </td>
-                <td>{e.stderr > 0 && Number.isFinite(target) ? fmt((e.estimate - target) / e.stderr, 3) : '—'}</td>
-              </tr>
-            ))}
-          </tbody>
-        </table>
-      </Panel>
-      {mode.present ? null : scenePanel}
-      <Panel title="Q6(a): why dω = dA cos θ_l / r²">
-        <p>
-          A small patch of area dA at distance r, turned by θ_l away from the direction to p, shows p only its foreshortened area dA cos θ_l; at distance r
-          that covers dA cos θ_l / r² of the unit sphere. The exact solid angle of the orange patch (Van Oosterom–Strackee) and the formula agree better
-          and better as the patch shrinks — the error falls like the square of its size.
-        </p>
-        <PatchFigure patch={patch} />
-        <MathTex display tex={String.raw`d\omega = \frac{dA^{\perp}}{r^2} = \frac{dA\,\cos\theta_l}{r^2}`} />
-        <div className="al-readouts">
-          <Readout id="patch-exact" label="exact Ω of the patch" value={patch.exact} digits={8} unit="sr" />
-          <Readout id="patch-approx" label="dA cos θ_l / r²" value={patch.approx} digits={8} unit="sr" />
-          <Readout id="patch-rel-error" label="relative difference" value={patch.relError} digits={3} />
-          <Readout id="patch-r" label="r" value={patch.r} digits={5} />
-          <Readout id="patch-cos" label="cos θ_l" value={patch.cosThetaL} digits={5} />
-        </div>
-        <Plot
-          ariaLabel="Relative difference between dA cos θ_l / r² and the exact solid angle of the patch, against the patch side, log-log: a line of slope 2."
-          data={patchTraces}
-          height={240}
-          layout={{ xaxis: { type: 'log', title: { text: 'patch side' } }, yaxis: { type: 'log', title: { text: 'relative difference' } }, showlegend: false }}
-        />
-      </Panel>
-      <Panel title="Q6(b): the rendering equation over solid angle and over area">
-        <MathTex display tex={String.raw`L_o(x,\omega_o) = \int_{\Omega} f(x,\omega_o,\omega_i)\,L_i(x,\omega_i)\cos\theta\,d\omega_i`} />
-        <MathTex
-          display
-          tex={String.raw`L_o(x,\omega_o) = \int_{A} f\,L_e(y)\,\colorbox{#d7ecd9}{$\color{#1c1d21}V(x,y)$}\,\cos\theta\,\colorbox{#fde2c8}{$\color{#1c1d21}\dfrac{\cos\theta_l}{r^2}$}\,dA_y`}
-        />
-        <p>
-          The <span className="al-hl-j">Jacobian cos θ_l / r²</span> is Q6(a)’s dω/dA; the <span className="al-hl-v">visibility V</span> appears because
-          over the light’s area nothing tells us whether the segment from x to y is blocked (over directions, L_i already includes it). With p_A = 1/|A|,
-          the key’s estimator (Q6(c)) is
-        </p>
-        <MathTex display tex={String.raw`\langle L_o\rangle = \frac{|A|}{N}\sum_{i=1}^{N} f\,L\,V\,\cos\theta_i\,\frac{\cos\theta_{l,i}}{r_i^2}`} />
-        <p>
-          Solid-angle sampling draws ω uniformly over the light’s spherical rectangle (pdf 1/Ω), so each term is Ω f L V cos θ; cosine sampling draws ω
-          with pdf cos θ / π, so each term is ρ L V when the ray hits the light and 0 when it misses. Here f = ρ/π, and the reference is
-          (ρ/π) L ∫ cos θ dω by Lambert’s formula.
-        </p>
-      </Panel>
-      <Panel title="Convergence">
-        <div ref={convBox} />
-        <Plot
-          ariaLabel="Absolute error and standard error of the three estimators against the number of samples, log-log."
-          data={convTraces}
-          height={mode.present ? 380 : 300}
-          layout={{ xaxis: { type: 'log', title: { text: 'N (samples)' } }, yaxis: { type: 'log', title: { text: 'error' } }, legend: LEGEND_TOP, margin: { l: 56, r: 16, t: 40, b: 44 } }}
-        />
-        <p className="al-note">Solid: |estimate − reference|. Dotted: the standard error s/√N the estimator reports. Both fall like N^−½; the strategies differ by a constant.</p>
-      </Panel>
-      <Panel title="Run time against error">
-        <div ref={timingBox} className="al-progress-slot">
-          {timing.running ? <progress max={1} value={timing.progress} aria-label="Timing progress" /> : null}
-        </div>
-        {timing.error ? <Notice kind="warn">Timing failed: {timing.error}</Notice> : null}
-        <Plot
-          ariaLabel="RMSE over independent runs against the run time of one estimate, for the three strategies, log-log."
-          data={timingTraces}
-          height={mode.present ? 360 : 280}
-          layout={{ xaxis: { type: 'log', title: { text: 'time per estimate (ms)' } }, yaxis: { type: 'log', title: { text: 'RMSE' } }, legend: LEGEND_TOP, margin: { l: 56, r: 16, t: 40, b: 44 } }}
-        />
-        <p className="al-note">Each point: N = 16 … 4096 samples, RMSE over 24 independent runs, run time measured in a worker on this machine (best of three; noisy when the machine is busy). Lower-left wins.</p>
-      </Panel>
-      <Panel title="The floor, rendered with each strategy">
-        <FloorImages job={job} />
-        <p className="al-note">
-          {job.size} × {job.size} pixels of floor, {fmt(2 * job.half, 3)} units across, all at the same samples per pixel. The light’s footprint is brightest;
-          the grain is each strategy’s variance.
-        </p>
-      </Panel>
+      <ExamQuestion
+        n={6}
+        title="Solid angle and area lights"
+        intro={
+          <p>
+            A rectangular area light of radiance L shines on a floor point x (normal +z, Lambertian, albedo ρ). (a) Derive dω = dA cos θ_l / r² by similar
+            triangles; (b) write the rendering equation over the light’s area; (c) give the Monte Carlo estimator with uniform area sampling.
+          </p>
+        }
+      >
+        {stage}
+        {exam}
+      </ExamQuestion>
+      <ExploreFurther intro="Beyond the exam: two other ways to sample the same integral, how fast each converges, what it costs, and what its noise looks like on a whole floor.">
+        {explore}
+        <Panel title="The floor, rendered with each strategy">
+          <FloorImages job={job} pass={floorPass} />
+          <p className="al-note">
+            {job.size} × {job.size} pixels of floor, {fmt(2 * job.half, 3)} units across, all at the same samples per pixel, which grow with the timeline (at
+            its end: 64). The light’s footprint is brightest; the grain is each strategy’s variance.
+          </p>
+        </Panel>
+      </ExploreFurther>
     </>
   );
 

@@ -6,6 +6,7 @@
  */
 import { estimateAreaLight, type AreaLightSetup, type LightStrategy } from '../../core/lights';
 import {
+  PASS_SPP,
   STRATEGIES,
   TIMING_COUNTS,
   TIMING_RUNS,
@@ -26,8 +27,7 @@ import { yieldToEventLoop as tick, type ProgressFn as Progress } from '../../wor
 
 const now = (): number => performance.now();
 
-/** Samples per pixel added by each pass: 1, 1, 2, 4, … (total doubles every pass). */
-export const PASS_SPP = [1, 1, 2, 4, 8, 16, 32] as const;
+export { PASS_SPP };
 
 /** What the render job reports after each pass (and returns at the end). */
 export interface FloorFrame {
@@ -40,6 +40,8 @@ export interface FloorFrame {
   /** Milliseconds spent per strategy so far. */
   ms: number[];
   done: boolean;
+  /** In the final result: every pass in order (passes[i] has PASS_TOTAL[i] samples per pixel; their own `passes` is empty). Empty in partials. */
+  passes: FloorFrame[];
 }
 
 function frame(job: FloorJob, sums: Float64Array[], spp: number, ref: Float32Array, ms: number[], done: boolean): FloorFrame {
@@ -48,7 +50,7 @@ function frame(job: FloorJob, sums: Float64Array[], spp: number, ref: Float32Arr
     for (let k = 0; k < s.length; k++) img[k] = s[k]! / spp;
     return img;
   });
-  return { size: job.size, spp, images, reference: ref.slice(), rmse: sums.map((s) => imageRmse(s, spp, ref)), ms: ms.slice(), done };
+  return { size: job.size, spp, images, reference: ref.slice(), rmse: sums.map((s) => imageRmse(s, spp, ref)), ms: ms.slice(), done, passes: [] };
 }
 
 /** Seconds per estimate of n samples: repeat until ≥ budgetMs has passed, divide by the count. */
@@ -81,6 +83,7 @@ export async function renderJob(job: FloorJob, progress: Progress = () => {}): P
   const ref = referenceImage(job);
   const sums = STRATEGIES.map(() => new Float64Array(job.size * job.size));
   const ms = STRATEGIES.map(() => 0);
+  const passes: FloorFrame[] = [];
   let spp = 0;
   const total = PASS_SPP.reduce((a, b) => a + b, 0);
   for (let pass = 0; pass < PASS_SPP.length; pass++) {
@@ -91,12 +94,15 @@ export async function renderJob(job: FloorJob, progress: Progress = () => {}): P
       ms[i]! += now() - t0;
     });
     spp += k;
+    passes.push(frame(job, sums, spp, ref, ms, pass === PASS_SPP.length - 1));
     if (pass < PASS_SPP.length - 1) {
-      progress(spp / total, frame(job, sums, spp, ref, ms, false));
+      // A copy: the partial's buffers are transferred, and `passes` keeps its own.
+      const p = passes[pass]!;
+      progress(spp / total, { ...p, images: p.images.map((im) => im.slice()), reference: p.reference.slice() });
       await tick();
     }
   }
-  return frame(job, sums, spp, ref, ms, true);
+  return { ...passes[passes.length - 1]!, passes };
 }
 
 /** RMSE over TIMING_RUNS runs and the measured time of one estimate, per strategy and N. */

@@ -9,6 +9,10 @@
 import {
   areaLightConvergence,
   areaLightTerms,
+  areaToSolidAnglePdf,
+  intersectRect,
+  rectAreaPdf,
+  sampleRectArea,
   estimateAreaLight,
   lambertianFloorRadiance,
   makeRectLight,
@@ -26,6 +30,7 @@ import {
 import { alignedRectangleSolidAngle, patchSolidAngleApprox, parallelogramSolidAngle } from '../../core/geometry/solidAngle';
 import { logSpacedCounts } from '../../core/estimators/convergence';
 import { Rng } from '../../core/random';
+import { Welford } from '../../core/estimators/welford';
 import { schema, type AreaLightParams } from './params';
 
 export const STRATEGIES: readonly LightStrategy[] = ['area', 'solid-angle', 'cosine'];
@@ -436,4 +441,137 @@ export function rmseOfRuns(m: AreaLightModel, strategy: LightStrategy, n: number
     s += (e - target) ** 2;
   }
   return Math.sqrt(s / runs);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Q6(c) with numbers: the first few samples of the key's estimator, term by term.
+
+/** One sample of uniform area sampling, every factor of the key's estimator term. */
+export interface GivenSample {
+  u1: number;
+  u2: number;
+  /** The point on the light. */
+  x: Vec3;
+  r: number;
+  cosTheta: number;
+  cosThetaL: number;
+  /** Visibility: 1, or 0 when the occluder blocks the segment (or the sample faces away / is below the horizon). */
+  V: number;
+  /** p_A (per unit area). */
+  pA: number;
+  /** f L V cos θ cos θ_l / (r² p_A) — the estimator's term. */
+  term: number;
+}
+
+/**
+ * The first `k` samples of the area strategy for this seed (the same stream as the estimate, so
+ * they are its first terms), each factor computed with the core's sample/pdf pair, and their mean
+ * ⟨L_o⟩ = (|A|/k) Σ f L V cos θ cos θ_l / r².
+ */
+export function givenSamples(m: AreaLightModel, seed: number, k = 4): { samples: GivenSample[]; f: number; area: number; estimate: number } {
+  const u = new Float64Array(2 * k);
+  new Rng(seed, STRATEGIES.indexOf('area')).fill(u);
+  const f = m.rho / Math.PI;
+  const [px, py, pz] = m.p;
+  const nl = m.light.normal;
+  const out: GivenSample[] = [];
+  const x = [0, 0, 0];
+  let sum = 0;
+  for (let i = 0; i < k; i++) {
+    sampleRectArea(m.light, u[2 * i]!, u[2 * i + 1]!, x);
+    const dx = x[0]! - px, dy = x[1]! - py, dz = x[2]! - pz;
+    const r2 = dx * dx + dy * dy + dz * dz;
+    const r = Math.sqrt(r2);
+    const cosTheta = r > 0 ? dz / r : 0;
+    const cosThetaL = r > 0 ? -(dx * nl[0] + dy * nl[1] + dz * nl[2]) / r : 0;
+    const blocked = !!m.occluder && intersectRect(m.occluder, px, py, pz, dx, dy, dz, 0) < 1 - 1e-9;
+    const V = cosTheta > 0 && cosThetaL > 0 && !blocked ? 1 : 0;
+    const pA = rectAreaPdf(m.light, x[0]!, x[1]!, x[2]!);
+    const pw = areaToSolidAnglePdf(pA, r2, cosThetaL);
+    const term = V && pw > 0 ? (f * m.L * cosTheta) / pw : 0;
+    sum += term;
+    out.push({ u1: u[2 * i]!, u2: u[2 * i + 1]!, x: [x[0]!, x[1]!, x[2]!], r, cosTheta, cosThetaL, V, pA, term });
+  }
+  return { samples: out, f, area: m.light.area, estimate: k ? sum / k : NaN };
+}
+
+// ---------------------------------------------------------------------------------------------
+// The animation (issue 12): samples of the chosen strategy arrive one by one; position t on the
+// shared timeline = the number of samples that have arrived. Everything shown at t is a function
+// of (params, seed, t) computed here.
+
+/** Most samples the animation shows (the timeline runs 0 … min(n, ANIM_MAX)). */
+export const ANIM_MAX = 1024;
+
+/** Length of the timeline for n samples. */
+export function animationLength(n: number): number {
+  return Math.max(1, Math.min(ANIM_MAX, Math.floor(n) || 1));
+}
+
+/** The samples of one strategy with the running estimate and standard error after each. */
+export interface SampleRun {
+  strategy: LightStrategy;
+  count: number;
+  points: Float64Array;
+  terms: Float64Array;
+  /** mean[i] = estimate after i + 1 samples. */
+  mean: Float64Array;
+  /** stderr[i] = s/√(i+1) after i + 1 samples (NaN for one sample). */
+  stderr: Float64Array;
+}
+
+/** The first `count` samples of `strategy` (the estimate's own stream) and their running statistics (core Welford). */
+export function sampleRun(m: AreaLightModel, strategy: LightStrategy, count: number, seed: number): SampleRun {
+  const { points, terms } = drawSamples(m, strategy, count, seed);
+  const mean = new Float64Array(count);
+  const stderr = new Float64Array(count);
+  const w = new Welford();
+  for (let i = 0; i < count; i++) {
+    w.add(terms[i]!);
+    mean[i] = w.mean;
+    stderr[i] = w.standardError();
+  }
+  return { strategy, count, points, terms, mean, stderr };
+}
+
+/** What the animation shows at position t. */
+export interface AnimationFrame {
+  /** Samples arrived: floor(t) clamped to [0, count]. */
+  k: number;
+  /** Running estimate after k samples (NaN for k = 0). */
+  estimate: number;
+  /** Its standard error (NaN for k < 2). */
+  stderr: number;
+  /** Index of the newest sample (k − 1), or −1. */
+  newest: number;
+  /** The newest sample's term (NaN for k = 0). */
+  newestTerm: number;
+}
+
+export function animationFrame(run: SampleRun, t: number): AnimationFrame {
+  const k = Math.max(0, Math.min(run.count, Math.floor(Number.isFinite(t) ? t + 1e-9 : 0)));
+  return {
+    k,
+    estimate: k > 0 ? run.mean[k - 1]! : NaN,
+    stderr: k > 1 ? run.stderr[k - 1]! : NaN,
+    newest: k - 1,
+    newestTerm: k > 0 ? run.terms[k - 1]! : NaN,
+  };
+}
+
+/** Samples per pixel added by each progressive pass of the floor images: 1, 1, 2, 4, … (the total doubles). */
+export const PASS_SPP = [1, 1, 2, 4, 8, 16, 32] as const;
+/** Total samples per pixel after each pass: 1, 2, 4, …, 64. */
+export const PASS_TOTAL: readonly number[] = PASS_SPP.map((_, i) => PASS_SPP.slice(0, i + 1).reduce((a, b) => a + b, 0));
+
+/**
+ * The floor images refine in step with the timeline: at position t of max, show the pass whose
+ * samples per pixel are the largest not above the same fraction of the full 64 (at least pass 0).
+ */
+export function floorPassAt(t: number, max: number): number {
+  const total = PASS_TOTAL[PASS_TOTAL.length - 1]!;
+  const want = max > 0 ? (total * Math.max(0, Math.min(max, t))) / max : total;
+  let k = 0;
+  for (let i = 0; i < PASS_TOTAL.length; i++) if (PASS_TOTAL[i]! <= want + 1e-9) k = i;
+  return k;
 }

@@ -5,6 +5,10 @@
  * (pu, pv, psize, ptilt) is an addition to the contract (it only grows).
  */
 import type { ParamSchema, ParamValues } from '../../app/params';
+import { timelineParams } from '../../ui/timeline';
+
+/** Longest animation (samples); the same constant as model.ANIM_MAX (kept here: params must not import the model). */
+const ANIM_SAMPLES = 1024;
 
 const BIG = 1e9;
 
@@ -29,6 +33,8 @@ export const schema = {
   pv: { kind: 'number', default: 0.6, min: 0, max: 1, label: 'patch position v on the light' },
   psize: { kind: 'number', default: 0.25, min: 1e-6, max: 2, label: 'patch side' },
   ptilt: { kind: 'number', default: 0, min: -89, max: 89, label: 'patch tilt (degrees, relative to the light)' },
+  // The animation: t = samples arrived (0 … min(n, 1024)); the default shows them all.
+  ...timelineParams({ max: ANIM_SAMPLES, default: ANIM_SAMPLES, integer: true }),
 } as const satisfies ParamSchema;
 
 export type AreaLightParams = ParamValues<typeof schema>;

@@ -2,9 +2,9 @@
  * Monte Carlo integration and convergence (exam Q2, Q4). All figures come from ./model (pure, over
  * the core) and from the worker jobs in ./jobs; this file only wires parameters to views.
  */
-import { useMemo, useState } from 'react';
+import { useCallback, useMemo } from 'react';
 import type { SceneProps } from '../../app/scene';
-import { formatNumber, MathTex, useCompiled, NumberField, Notice, Panel, Readout, SceneLayout, Select, Slider, useShortcuts } from '../../ui';
+import { ExamQuestion, ExploreFurther, formatNumber, MathTex, useCompiled, NumberField, Notice, Panel, Readout, SceneLayout, Select, Slider } from '../../ui';
 import { useWorkerJob } from '../../workers';
 import {
   EXAM_A,
@@ -19,15 +19,27 @@ import {
   drawnEstimate,
   exactIntegral,
   keyComparison,
+  roundTo,
+  RACE_MAX,
+  raceAt,
+  raceTrack,
   sampleTable,
+  squareShift,
+  stderrIsValid,
   type Fn1,
 } from './model';
 import { MAX_N, PDF_KINDS, STRATEGIES, type McSchema, type PdfKind, type Strategy } from './params';
 import type { McEstimate } from '../../core/estimators';
 import type { ProblemArgs } from './jobs';
 import { compileX, compileXFast } from './expr';
-import { FunctionPlot, ConvergencePanel, RmsePanel, HistogramPanel } from './view/Plots';
-import { WorkedTable } from './view/WorkedTable';
+import { FunctionPlot } from './view/FunctionPlot';
+import { ConvergencePanel } from './view/ConvergencePanel';
+import { RmsePanel } from './view/RmsePanel';
+import { HistogramPanel } from './view/HistogramPanel';
+import { KeyFigures, SampleRows } from './view/WorkedTable';
+import { RaceFigure } from './view/RaceFigure';
+import { Q4a, Q4b, Q4c, Q4d } from './view/ExamQ4';
+import type { RmseData } from './jobs';
 import { SamplesField, FnField } from './view/Fields';
 import './monte-carlo.css';
 
@@ -116,12 +128,36 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
 
   const curve = useMemo(() => (f ? curves(f, choice && choice.ok ? choice.density : null, a, b) : null), [f, choice, a, b]);
 
-  const [runToken, setRunToken] = useState(0);
-  useShortcuts({
-    playPause: () => setRunToken((t) => t + 1),
-    step: () => setParams({ seed: (params.seed + 1) >>> 0 }),
-    reset: () => setParams({ f: EXAM_F, a: EXAM_A, b: EXAM_B, pdf: 'uniform', strategy: 'independent', samples: null, seed: 1 }),
-  });
+  // --- the animation: uniform against importance on the same ξᵢ (model.raceTrack / raceAt) -------
+  const raceImp = choice && choice.ok && choice.kind !== 'uniform' ? choice : propChoice && propChoice.ok ? propChoice : null;
+  const track = useMemo(
+    () => (f && raceImp && exact && Number.isFinite(exact.value) ? raceTrack(f, a, b, raceImp.sampler, exact.value, params.seed) : null),
+    [f, raceImp, exact, a, b, params.seed],
+  );
+  const raceCurve = useMemo(() => (f && raceImp ? curves(f, raceImp.density, a, b, 200) : null), [f, raceImp, a, b]);
+  const raceEnd = useMemo(() => (track ? raceAt(track, track.max, []) : null), [track]);
+  const importanceLabel = raceImp ? (raceImp.kind === 'proportional' ? raceImp.label.replace(/ \(closed form.*\)$/, '').replace(/^/, 'p ∝ f: ') : raceImp.label) : '';
+  const setRace = useCallback((patch: { t?: number; play?: boolean }) => setParams(patch), [setParams]);
+
+  // --- s/√N is no error estimate for stratified / QMC points: RMSE over randomized runs instead ---
+  const qmc = !given && !stderrIsValid(seq) && chosenOk && !!baseArgs;
+  const rmseN = Math.min(n, 100_000);
+  const rmseTask = useWorkerJob<{ rmse: RmseData[] }>(
+    makeWorker,
+    'rmse',
+    qmc && baseArgs ? { ...baseArgs, strategies: [{ pdf: pdfKind, seq, label: 'selected' }], nMax: rmseN, runs: params.runs } : null,
+    { key: qmc ? `${fSrc}|${a}|${b}|${pdfKind}|${params.pdfexpr}|${seq}|${params.seed}|${rmseN}|${params.runs}` : '', enabled: qmc, delayMs: 250, queue: 'monte-carlo' },
+  );
+  const rmseAtN = (() => {
+    const r = rmseTask.result?.rmse[0];
+    if (!r || r.n.length === 0) return null;
+    const k = r.n.length - 1;
+    return r.n[k] === rmseN ? r.rmse[k]! : null;
+  })();
+
+  const sq = squareShift(fSrc);
+  const examSq = sq !== null;
+  const isExamConfig = sq === 2 && a === EXAM_A && b === EXAM_B && tableXs.length === EXAM_SAMPLES.length && tableXs.every((x, i) => x === EXAM_SAMPLES[i]);
 
   const controls = (
     <>
@@ -146,6 +182,61 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
     </>
   );
 
+  const c = sq ?? 2;
+  const ca = examSq ? a : EXAM_A;
+  const cb = examSq ? b : EXAM_B;
+  const exactReadout = (
+    <Readout id="exact" label="exact ∫ f dx" value={exact?.value ?? null} digits={12} note={exact ? (exact.problem ?? exact.method) : 'compiling f…'} />
+  );
+  const givenNotFromP = given && chosenOk && pdfKind !== 'uniform';
+  const estimateBlock = (
+    <>
+      <div className="readouts">
+        <Readout id="estimate" label={given ? `estimate from the ${given.length} given samples` : `estimate, N = ${n.toLocaleString('en')}`} value={estValue} digits={10} />
+        <Readout id="stderr" label={qmc ? 's/√N (not an error estimate for these points)' : 'standard error s/√N'} value={stderrValue} digits={4} />
+        <Readout id="abs-error" label="|estimate − exact|" value={estValue !== null && exact && Number.isFinite(exact.value) ? Math.abs(estValue - exact.value) : null} digits={3} />
+        {qmc ? (
+          <Readout
+            id="rmse-at-n"
+            label={`RMSE over ${params.runs} randomized runs, N = ${rmseN.toLocaleString('en')}`}
+            value={rmseAtN}
+            digits={4}
+            note={rmseTask.running ? `running… ${Math.round(rmseTask.progress * 100)} %` : rmseTask.error ? `failed: ${rmseTask.error}` : undefined}
+          />
+        ) : null}
+      </div>
+      {qmc ? (
+        <Notice kind="warn" testId="stderr-not-error">
+          {seq === 'stratified' ? 'Stratified (jittered)' : seq === 'halton' ? 'Halton' : 'Sobol'} points are not independent, so the standard error s/√N is not an error estimate for
+          them (it treats the points as i.i.d. and usually overstates the error by far). The error of this method is measured instead as the RMSE over {params.runs} independently
+          randomized runs{rmseN < n ? ` (at N = ${rmseN.toLocaleString('en')})` : ''}.
+        </Notice>
+      ) : null}
+      {givenNotFromP ? (
+        <Notice kind="warn" testId="given-not-from-p">
+          These samples were typed in, not drawn from {choice && choice.ok ? choice.label.replace(/ \(.*\)$/, '') : 'p'}. The estimator (1/N) Σ f(xᵢ)/p(xᵢ) is unbiased only for xᵢ drawn from p;
+          with given samples the numbers above are only arithmetic on them{pdfKind === 'proportional' ? ' (for p ∝ f every term still equals ∫ f dx, whatever the xᵢ)' : ''}, and s/√N
+          is not an error estimate.
+        </Notice>
+      ) : null}
+      {needBig && bigTask.running ? (
+        <p className="mc-progress" role="status">
+          Estimating with {n.toLocaleString('en')} samples in a worker… {Math.round(bigTask.progress * 100)} %{' '}
+          <button type="button" onClick={bigTask.cancel}>
+            Cancel
+          </button>
+        </p>
+      ) : null}
+      {needBig && bigTask.result ? <p className="mc-note">{n.toLocaleString('en')} samples took {formatNumber(bigTask.result.ms, 3)} ms in the worker.</p> : null}
+      {needBig && bigTask.error ? <Notice kind="error">The run failed: {bigTask.error}</Notice> : null}
+      {est && est.invalid > 0 ? (
+        <Notice kind="error">
+          {est.invalid} of the samples have p = 0 where f ≠ 0 (or f is not finite there): no estimate is shown, because it would be biased.
+        </Notice>
+      ) : null}
+    </>
+  );
+
   const main = (
     <>
       {choice && !choice.ok ? (
@@ -153,60 +244,126 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
           {choice.message}
         </Notice>
       ) : null}
-      <Panel title="The integral and the pdf">
-        <div className="readouts">
-          <Readout id="exact" label="exact ∫ f dx" value={exact?.value ?? null} digits={12} note={exact ? (exact.problem ?? exact.method) : 'compiling f…'} />
-          <Readout id="estimate" label={given ? `estimate from the ${given.length} given samples` : `estimate, N = ${n.toLocaleString('en')}`} value={estValue} digits={10} />
-          <Readout id="stderr" label="standard error s/√N" value={stderrValue} digits={4} />
-          <Readout id="abs-error" label="|estimate − exact|" value={estValue !== null && exact && Number.isFinite(exact.value) ? Math.abs(estValue - exact.value) : null} digits={3} />
-        </div>
-        {needBig && bigTask.running ? (
-          <p className="mc-progress" role="status">
-            Estimating with {n.toLocaleString('en')} samples in a worker… {Math.round(bigTask.progress * 100)} %{' '}
-            <button type="button" onClick={bigTask.cancel}>
-              Cancel
-            </button>
-          </p>
-        ) : null}
-        {needBig && bigTask.result ? <p className="mc-note">{n.toLocaleString('en')} samples took {formatNumber(bigTask.result.ms, 3)} ms in the worker.</p> : null}
-        {needBig && bigTask.error ? <Notice kind="error">The run failed: {bigTask.error}</Notice> : null}
-        {est && est.invalid > 0 ? (
-          <Notice kind="error">
-            {est.invalid} of the samples have p = 0 where f ≠ 0 (or f is not finite there): no estimate is shown, because it would be biased.
-          </Notice>
-        ) : null}
-        {choice && choice.ok ? (
-          <p className="mc-pdf-label">
-            {choice.label}
-            {choice.note ? <span className="mc-note"> {choice.note}</span> : null}
-          </p>
-        ) : null}
-        {curve && f ? <FunctionPlot curve={curve} samples={table ? table.rows.map((r) => [r.x, r.f] as [number, number]) : []} a={a} b={b} /> : null}
-        <div className="mc-math">
-          <MathTex
-            display
-            tex={String.raw`\begin{gathered}\langle I\rangle = \frac{1}{N}\sum_{i=1}^{N}\frac{f(x_i)}{p(x_i)},\quad x_i\sim p \\ \operatorname{SE} = \frac{s}{\sqrt N} \\ s^2 = \frac{1}{N-1}\sum_{i=1}^{N}\Big(\frac{f(x_i)}{p(x_i)} - \langle I\rangle\Big)^2\end{gathered}`}
+      <ExamQuestion
+        n={4}
+        title="Monte Carlo integration in 1D"
+        intro={
+          <>
+            <p>
+              I = ∫₀² (x + 2)² dx: (a) analytically, (b) uniform Monte Carlo, (c) importance sampling, (d) convergence.
+              {!isExamConfig ? (
+                <>
+                  {' '}
+                  <span className="mc-note" data-testid="not-exam-config">
+                    Your settings differ from the exam’s; the numbers below are for yours.{' '}
+                    <button type="button" onClick={() => setParams({ f: EXAM_F, a: EXAM_A, b: EXAM_B, samples: [...EXAM_SAMPLES] })}>
+                      Exam configuration
+                    </button>
+                  </span>
+                </>
+              ) : null}
+            </p>
+            {track && raceCurve ? (
+              <RaceFigure track={track} curve={raceCurve} a={a} b={b} importanceLabel={importanceLabel} t={Number(params.t)} play={params.play === true} setParams={setRace} />
+            ) : (
+              <p className="mc-note">The animation needs a finite integral and a usable importance pdf.</p>
+            )}
+          </>
+        }
+      >
+        <Q4a c={c} a={ca} b={cb} isSquare={examSq} exact={exactReadout} />
+        {table && f ? (
+          <Q4b
+            table={table}
+            c={sq}
+            a={a}
+            b={b}
+            headline={
+              <>
+                <div className="readouts mc-headline">
+                  <Readout id="q4-uniform" label="uniform ⟨I⟩ = (b − a)/N Σ f(xᵢ)" value={table.uniform.invalid ? null : table.uniform.estimate} digits={6} note={table.uniform.invalid ? undefined : `to 2 decimals, as the exam writes it: ${roundTo(table.uniform.estimate, 2).toFixed(2)}`} />
+                </div>
+                <SampleRows table={table} pdfOk={chosenOk} pdfKind={pdfKind} />
+                <div className="mc-buttons">
+                  {given ? (
+                    <button type="button" onClick={() => setParams({ samples: null })}>
+                      Draw N samples instead
+                    </button>
+                  ) : (
+                    <button type="button" onClick={() => setParams({ samples: [...EXAM_SAMPLES] })}>
+                      Use these four samples for the estimate
+                    </button>
+                  )}
+                </div>
+                <h5 className="mc-subhead">With the page’s settings ({given ? 'the given samples' : `N = ${n.toLocaleString('en')} drawn samples`}, pdf {pdfKind}, {seq})</h5>
+                {estimateBlock}
+              </>
+            }
+            keyFigures={<KeyFigures keyNotes={keyNotes} a={a} b={b} />}
           />
-        </div>
-      </Panel>
-      {table && f ? (
-        <WorkedTable table={table} keyNotes={keyNotes} given={!!given} pdfOk={chosenOk} pdfKind={pdfKind} a={a} b={b} onUseExam={() => setParams({ samples: [...EXAM_SAMPLES] })} onDraw={() => setParams({ samples: null })} />
-      ) : null}
-      {baseArgs ? (
-        <>
-          <ConvergencePanel args={baseArgs} nMax={n} exact={exact?.value ?? NaN} makeWorker={makeWorker} present={mode.present} runToken={runToken} />
-          <RmsePanel args={baseArgs} nMax={Math.min(n, 100_000)} runs={params.runs} exact={exact?.value ?? NaN} makeWorker={makeWorker} onRuns={(r) => setParams({ runs: r })} />
-          {chosenOk ? (
-            <HistogramPanel
-              args={{ ...baseArgs, strategies: [{ pdf: pdfKind, seq, label: 'selected' }] }}
-              N={params.hn}
-              exact={exact?.value ?? NaN}
-              makeWorker={makeWorker}
-              onN={(v) => setParams({ hn: v })}
-            />
+        ) : null}
+        {table && f ? (
+          <Q4c
+            table={table}
+            c={c}
+            a={ca}
+            b={cb}
+            isSquare={examSq}
+            answer={
+              <div className="readouts mc-headline">
+                <Readout
+                  id="q4-importance"
+                  label="importance ⟨I⟩ with p ∝ f"
+                  value={table.proportional && !table.proportional.invalid ? table.proportional.estimate : null}
+                  digits={10}
+                  note={table.proportional && table.proportional.n > 1 ? `spread of f/p: s = ${formatNumber(Math.sqrt(table.proportional.variance), 3)} (zero variance)` : undefined}
+                />
+              </div>
+            }
+          />
+        ) : null}
+        {raceEnd ? (
+          <Q4d
+            uErr={raceEnd.uniform.absError}
+            iErr={raceEnd.importance.absError}
+            N={RACE_MAX}
+            importanceIsExam={raceImp?.kind === 'proportional'}
+            onWhole={() => setParams({ t: RACE_MAX, play: false })}
+          />
+        ) : null}
+      </ExamQuestion>
+      <ExploreFurther intro="Other integrands and pdfs, stratified and quasi-Monte Carlo points, many runs, run time, and unbiasedness (exam Q2 c).">
+        <Panel title="The integrand and the pdf">
+          {choice && choice.ok ? (
+            <p className="mc-pdf-label">
+              {choice.label}
+              {choice.note ? <span className="mc-note"> {choice.note}</span> : null}
+            </p>
           ) : null}
-        </>
-      ) : null}
+          {curve && f ? <FunctionPlot curve={curve} samples={table ? table.rows.map((r) => [r.x, r.f] as [number, number]) : []} a={a} b={b} /> : null}
+          <div className="mc-math" tabIndex={0} role="group" aria-label="formulas (scroll sideways when wider than the screen)">
+            <MathTex
+              display
+              tex={String.raw`\begin{gathered}\langle I\rangle = \frac{1}{N}\sum_{i=1}^{N}\frac{f(x_i)}{p(x_i)},\quad x_i\sim p \\ \operatorname{SE} = \frac{s}{\sqrt N}\ \text{(independent } x_i \text{ only)} \\ s^2 = \frac{1}{N-1}\sum_{i=1}^{N}\Big(\frac{f(x_i)}{p(x_i)} - \langle I\rangle\Big)^2\end{gathered}`}
+            />
+          </div>
+        </Panel>
+        {baseArgs ? (
+          <>
+            <ConvergencePanel args={baseArgs} nMax={n} exact={exact?.value ?? NaN} makeWorker={makeWorker} present={mode.present} />
+            <RmsePanel args={baseArgs} nMax={Math.min(n, 100_000)} runs={params.runs} exact={exact?.value ?? NaN} makeWorker={makeWorker} onRuns={(r) => setParams({ runs: r })} />
+            {chosenOk ? (
+              <HistogramPanel
+                args={{ ...baseArgs, strategies: [{ pdf: pdfKind, seq, label: 'selected' }] }}
+                N={params.hn}
+                exact={exact?.value ?? NaN}
+                makeWorker={makeWorker}
+                onN={(v) => setParams({ hn: v })}
+              />
+            ) : null}
+          </>
+        ) : null}
+      </ExploreFurther>
     </>
   );
 

@@ -18,7 +18,8 @@ import {
   type Pdf1D,
 } from '../../core/sampling/pdf1d';
 import type { SequenceKind } from '../../core/random/sequences';
-import type { PdfKind, Strategy } from './params';
+import { Rng } from '../../core/random/rng';
+import { RACE_SAMPLES, type PdfKind, type Strategy } from './params';
 
 /** The exam's four samples (Q4(b)). */
 export const EXAM_SAMPLES: readonly number[] = [1.16, 1.98, 0.54, 1.26];
@@ -179,6 +180,8 @@ export interface SampleRow {
   ratio: number;
   /** Uniform term (b − a) f(x). */
   uniformTerm: number;
+  /** Importance term f/p with p ∝ |f| (exact density); NaN when there is none. */
+  propRatio: number;
   /** Outside [a, b]? */
   outside: boolean;
 }
@@ -203,7 +206,8 @@ export function sampleTable(xs: readonly number[], f: Fn1, a: number, b: number,
     const fx = f(x);
     const outside = !(x >= a && x <= b);
     const p = density ? density(x) : NaN;
-    return { x, f: fx, p, ratio: fx === 0 ? 0 : p > 0 ? fx / p : NaN, uniformTerm: (b - a) * fx, outside };
+    const pp = propDensity && !outside ? propDensity(x) : NaN;
+    return { x, f: fx, p, ratio: fx === 0 ? 0 : p > 0 ? fx / p : NaN, uniformTerm: (b - a) * fx, propRatio: fx === 0 ? 0 : pp > 0 ? fx / pp : NaN, outside };
   });
   const outside = rows.filter((r) => r.outside).map((r) => fmt(r.x));
   if (outside.length) {
@@ -310,32 +314,208 @@ export function strategyLabel(pdf: PdfKind, seq: Strategy): string {
   return `${PDF_LABEL[pdf]} · ${SEQ_LABEL[seq]}`;
 }
 
-/** Histogram of values into `bins` equal bins over [lo, hi]. */
-export function histogram(values: ArrayLike<number>, bins: number, lo?: number, hi?: number): { edges: Float64Array; counts: Float64Array } {
-  let mn = Infinity;
-  let mx = -Infinity;
+/** Histogram of values (now in the core, re-exported for the scene's callers). */
+export { histogram } from '../../core/estimators';
+
+// ---------------------------------------------------------------------------------------------
+// The animation (issue 12): uniform against importance sampling, one sample at a time, on the
+// same random numbers. Position t of the shared timeline = the number of samples drawn so far.
+// ---------------------------------------------------------------------------------------------
+
+/** Samples in one animation (the timeline's max). */
+export const RACE_MAX = RACE_SAMPLES;
+/** Seconds from 0 to RACE_MAX at 1× (= 250 samples per second; ¼× 62.5/s, 4× 1000/s). */
+export const RACE_DURATION = 32.768;
+/** Stream of the seeded generator the animation draws its ξᵢ from (independent of other runs). */
+export const RACE_STREAM = 0x4d43;
+
+/** One lane of the race: every sample and the running statistics after each, over the whole track. */
+export interface RaceLane {
+  /** xᵢ, i = 0 … max − 1. */
+  x: Float64Array;
+  /** The term f(xᵢ)/p(xᵢ). */
+  term: Float64Array;
+  /** Running mean of the first k + 1 terms (the estimate after k + 1 samples). */
+  mean: Float64Array;
+  /** Running Σ (term − mean)² of the first k + 1 terms (Welford's M₂). */
+  m2: Float64Array;
+}
+
+/** The whole precomputed race for (f, [a, b], importance pdf, seed): what every t reads from. */
+export interface RaceTrack {
+  max: number;
+  exact: number;
+  /** ξᵢ ∈ [0, 1): the shared random numbers. */
+  xi: Float64Array;
+  uniform: RaceLane;
+  importance: RaceLane;
+}
+
+function lane(n: number): RaceLane {
+  return { x: new Float64Array(n), term: new Float64Array(n), mean: new Float64Array(n), m2: new Float64Array(n) };
+}
+
+/**
+ * Precompute the race: ξᵢ is the i-th draw of the seeded generator (Rng(seed, RACE_STREAM)), so a
+ * track of `max` samples is a prefix of any longer one. The uniform lane uses xᵢ = a + (b − a)ξᵢ
+ * and term (b − a) f(xᵢ); the importance lane xᵢ = P⁻¹(ξᵢ) and term f(xᵢ)/p(xᵢ). Running means and
+ * M₂ by Welford's update. O(max) once per parameter change; raceAt(track, t) is then O(points).
+ */
+export function raceTrack(f: Fn1, a: number, b: number, importance: Pdf1D, exact: number, seed: number, max = RACE_MAX): RaceTrack {
+  const rng = new Rng(seed, RACE_STREAM);
+  const xi = new Float64Array(max);
+  for (let i = 0; i < max; i++) xi[i] = rng.nextFloat();
+  const U = lane(max);
+  const I = lane(max);
+  const fill = (L: RaceLane, pick: (u: number) => [number, number]) => {
+    let mean = 0;
+    let m2 = 0;
+    for (let i = 0; i < max; i++) {
+      const [x, y] = pick(xi[i]!);
+      L.x[i] = x;
+      L.term[i] = y;
+      const d = y - mean;
+      mean += d / (i + 1);
+      m2 += d * (y - mean);
+      L.mean[i] = mean;
+      L.m2[i] = m2;
+    }
+  };
+  const w = b - a;
+  fill(U, (u) => {
+    const x = a + w * u;
+    return [x, w * f(x)];
+  });
+  fill(I, (u) => {
+    const x = importance.sample(u);
+    const p = importance.pdf(x);
+    const fx = f(x);
+    return [x, fx === 0 ? 0 : fx / p];
+  });
+  return { max, exact, xi, uniform: U, importance: I };
+}
+
+/** The state of one lane after t samples. */
+export interface LaneState {
+  n: number;
+  /** The newest sample (index t − 1) and its term; NaN before the first. */
+  x: number;
+  term: number;
+  estimate: number;
+  /** s/√N with s² the unbiased sample variance; NaN for N < 2. */
+  stderr: number;
+  absError: number;
+}
+
+/** Sample counts at which the growing curves are drawn: 1 … 32 each, then 48 per decade up to max. */
+export function racePoints(max: number): number[] {
+  const out: number[] = [];
+  for (let n = 1; n <= Math.min(32, max); n++) out.push(n);
+  const perDecade = 48;
+  for (let k = Math.ceil(Math.log10(33) * perDecade); ; k++) {
+    const n = Math.round(10 ** (k / perDecade));
+    if (n > max) break;
+    if (n > out[out.length - 1]!) out.push(n);
+  }
+  return out;
+}
+
+function laneAt(L: RaceLane, t: number, exact: number): LaneState {
+  if (t < 1) return { n: 0, x: NaN, term: NaN, estimate: NaN, stderr: NaN, absError: NaN };
+  const k = t - 1;
+  const est = L.mean[k]!;
+  return {
+    n: t,
+    x: L.x[k]!,
+    term: L.term[k]!,
+    estimate: est,
+    stderr: t > 1 ? Math.sqrt(L.m2[k]! / (t - 1) / t) : NaN,
+    absError: Math.abs(est - exact),
+  };
+}
+
+/** What the animation shows at position t (a pure function of the track, i.e. of params and seed, and t). */
+export interface RaceFrame {
+  t: number;
+  uniform: LaneState;
+  importance: LaneState;
+  /** Curves up to t: sample counts (racePoints ≤ t, and t itself) with each lane's estimate, ±SE and |error|. */
+  curve: { n: number[]; u: number[]; uSe: number[]; uErr: number[]; i: number[]; iSe: number[]; iErr: number[] };
+  /** The most recent samples (up to `recent`), oldest first, for the rug under the integrand. */
+  recentU: number[];
+  recentI: number[];
+}
+
+export function raceAt(track: RaceTrack, t: number, points: readonly number[] = racePoints(track.max), recent = 40): RaceFrame {
+  t = Math.max(0, Math.min(track.max, Math.floor(t)));
+  const curve: RaceFrame['curve'] = { n: [], u: [], uSe: [], uErr: [], i: [], iSe: [], iErr: [] };
+  const push = (n: number) => {
+    const u = laneAt(track.uniform, n, track.exact);
+    const i = laneAt(track.importance, n, track.exact);
+    curve.n.push(n);
+    curve.u.push(u.estimate);
+    curve.uSe.push(u.stderr);
+    curve.uErr.push(u.absError);
+    curve.i.push(i.estimate);
+    curve.iSe.push(i.stderr);
+    curve.iErr.push(i.absError);
+  };
+  for (const n of points) {
+    if (n >= t) break;
+    push(n);
+  }
+  if (t >= 1) push(t);
+  const from = Math.max(0, t - recent);
+  return {
+    t,
+    uniform: laneAt(track.uniform, t, track.exact),
+    importance: laneAt(track.importance, t, track.exact),
+    curve,
+    recentU: Array.from(track.uniform.x.subarray(from, t)),
+    recentI: Array.from(track.importance.x.subarray(from, t)),
+  };
+}
+
+// ---------------------------------------------------------------------------------------------
+// The exam's Q4 worked out (live numbers for the derivations)
+// ---------------------------------------------------------------------------------------------
+
+/**
+ * Q4(a) for f = (x + c)² on [a, b]: expansion x² + 2c x + c², antiderivative
+ * F(x) = x³/3 + c x² + c² x, and F(b) − F(a) term by term.
+ */
+export function squareAntiderivative(c: number, a: number, b: number) {
+  const F = (x: number) => ({ cube: (x * x * x) / 3, lin2: c * x * x, lin: c * c * x });
+  const Fb = F(b);
+  const Fa = F(a);
+  const total = (v: { cube: number; lin2: number; lin: number }) => v.cube + v.lin2 + v.lin;
+  return { twoC: 2 * c, c2: c * c, Fb, Fa, valueB: total(Fb), valueA: total(Fa), value: total(Fb) - total(Fa) };
+}
+
+/** Q4(c): the normalization of p ∝ (x + c)² on [a, b]: p = 3(x + c)² / D with D = 3∫f = (b + c)³ − (a + c)³. */
+export function squareNormalizer(c: number, a: number, b: number): number {
+  return (b + c) ** 3 - (a + c) ** 3;
+}
+
+/** Values of a strategy's convergence-series error at rounding level at every N (zero variance). */
+export function atRoundingLevel(values: ArrayLike<number>, reference: number): boolean {
+  const tiny = Math.abs(reference) * 1e-15 || 1e-300;
+  let any = false;
   for (let i = 0; i < values.length; i++) {
     const v = values[i]!;
     if (!Number.isFinite(v)) continue;
-    if (v < mn) mn = v;
-    if (v > mx) mx = v;
+    any = true;
+    if (v > tiny * 100) return false;
   }
-  lo = lo ?? mn;
-  hi = hi ?? mx;
-  if (!(hi > lo)) {
-    const c = Number.isFinite(lo) ? lo : 0;
-    const w = Math.max(1e-12, Math.abs(c) * 1e-9);
-    lo = c - w;
-    hi = c + w;
-  }
-  const edges = new Float64Array(bins + 1);
-  for (let k = 0; k <= bins; k++) edges[k] = lo + ((hi - lo) * k) / bins;
-  const counts = new Float64Array(bins);
-  for (let i = 0; i < values.length; i++) {
-    const v = values[i]!;
-    if (!Number.isFinite(v)) continue;
-    const k = Math.min(bins - 1, Math.max(0, Math.floor(((v - lo) / (hi - lo)) * bins)));
-    counts[k]!++;
-  }
-  return { edges, counts };
+  return any;
+}
+
+/** Order (x, y) points by x, so a curve against measured time never doubles back. */
+export function sortedByX<T extends { x: number }>(pts: readonly T[]): T[] {
+  return [...pts].sort((p, q) => p.x - q.x);
+}
+
+/** Stratified and low-discrepancy points are not independent: s/√N is no error estimate for them. */
+export function stderrIsValid(seq: Strategy): boolean {
+  return seq === 'independent';
 }

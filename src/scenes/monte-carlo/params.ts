@@ -2,9 +2,14 @@
  * URL parameters of the Monte Carlo scene (contract: `../shared/spec/contract.md`, route
  * `#/monte-carlo`): f, a, b, pdf, pdfexpr, strategy, samples, n, seed.
  * Added by this scene (the contract only grows): `hn` (samples per estimate in the unbiasedness
- * histogram) and `runs` (independent runs behind the RMSE curves).
+ * histogram), `runs` (independent runs behind the RMSE curves), and the animation's `t` (samples
+ * drawn so far) and `play`.
  */
 import type { ParamSchema } from '../../app/params';
+import { timelineParams } from '../../ui/timeline';
+
+/** Samples in the animation (the timeline's t is the sample index 0…RACE_MAX). Mirrors model.RACE_MAX. */
+export const RACE_SAMPLES = 8192;
 
 export const PDF_KINDS = ['uniform', 'proportional', 'linear', 'custom'] as const;
 export type PdfKind = (typeof PDF_KINDS)[number];
@@ -36,6 +41,8 @@ export const schema = {
   seed: { kind: 'number', default: 1, min: 0, max: 4294967295, integer: true },
   hn: { kind: 'number', default: 16, min: 1, max: 10000, integer: true, label: 'samples per estimate (histogram)' },
   runs: { kind: 'number', default: 32, min: 4, max: 256, integer: true, label: 'independent runs (RMSE)' },
+  // the animation: t = samples drawn so far (0…RACE_SAMPLES), play = 1 while playing
+  ...timelineParams({ max: RACE_SAMPLES, integer: true }),
 } as const satisfies ParamSchema;
 
 export type McSchema = typeof schema;

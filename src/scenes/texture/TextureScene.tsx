@@ -6,7 +6,7 @@
  * the poles). All figures come from ./model (pure, over the core); what is on screen at animation
  * position t is model.frameAt(grid, conventions, path, t).
  */
-import { memo, useCallback, useDeferredValue, useEffect, useMemo, useRef, useState } from 'react';
+import { memo, useCallback, useDeferredValue, useEffect, useMemo, useRef, useState, type ComponentProps } from 'react';
 import type { SceneProps } from '../../app/scene';
 import { EXAM_GRID_TEXT, examGrid, gridRange, gridToRows, parseGrid, texel } from '../../core/texture';
 import {
@@ -23,17 +23,13 @@ import {
   SceneLayout,
   Select,
   Slider,
-  TimelineTransport,
   Toggle,
-  useTimeline,
 } from '../../ui';
 import {
   KEY_PRINTED,
   addressingNotes,
   agreesWithKey,
   creases,
-  drawnLookup,
-  frameAt,
   gridTextIfFits,
   isExamQuery,
   isExamSphere,
@@ -41,12 +37,15 @@ import {
   lookupOptions,
   pathOf,
   pathProfile,
-  readouts,
+  queryReadouts,
   resolveGrid,
+  sphereReadouts,
   sphereModel,
   withCell,
+  type PathProfile,
   type QueryPath,
 } from './model';
+import { TimelineDriver, animContext, createTimelineStore, useAnimT, useWorkedT, type AnimContext } from './anim';
 import { GRID_TEXT_MAX, type PathKind, type Preset, type TextureSchema } from './params';
 import { GridView, StencilDetail, fmtShort, type Grab } from './view/GridView';
 import { BilinearWorked, NearestWorked, WideMath, bilinearTex, sphereTex } from './view/WorkedSteps';
@@ -57,11 +56,6 @@ import { colorCss } from './colormap';
 import './texture.css';
 
 type PresetChoice = 'exam' | 'custom' | Exclude<Preset, 'grid'>;
-
-/** Seconds for one pass along the path at 1×. */
-const DURATION = 8;
-/** Step size of the timeline; while playing, the worked steps (KaTeX) follow at this resolution. */
-const STEP = 0.05;
 
 const r4 = (x: number) => Math.round(x * 10000) / 10000 + 0;
 
@@ -96,29 +90,18 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
   const opts = useMemo(() => lookupOptions({ align: params.align, vflip: params.vflip, wrap: params.wrap }), [params.align, params.vflip, params.wrap]);
   const range = useMemo(() => gridRange(grid), [grid]);
 
-  // (timelineParams types t and play as any ParamSpec, hence the conversions)
-  const tl = useTimeline({ t: Number(params.t), play: params.play === true, setParams, max: 1, duration: DURATION, stepSize: STEP, visibleRef: figRef });
-
-  // the animated part: the query at position t of its path
-  const frame = useMemo(() => frameAt(grid, opts, path, tl.t), [grid, opts, path, tl.t]);
-  const q = frame.lookup;
-  const dq = useMemo(() => drawnLookup(grid, frame.u, frame.v, opts), [grid, frame.u, frame.v, opts]);
+  // The timeline lives in <TimelineDriver>, which publishes its position to this store; only the
+  // components that draw the moving query subscribe to it (see ./anim), so a frame does not
+  // re-render the scene.
+  const [store] = useState(() => createTimelineStore(Number(params.t)));
+  const ctx = useMemo(() => animContext(store, grid, opts, src, path, committedPath), [store, grid, opts, src, path, committedPath]);
   const profile = useMemo(() => pathProfile(grid, opts, path), [grid, opts, path]);
   const sphere = useMemo(
     () => sphereModel(grid, { x: params.x, y: params.y, z: params.z, normalize: params.normalize }, opts),
     [grid, params.x, params.y, params.z, params.normalize, opts],
   );
-  const ro = readouts(q, sphere);
-  const notes = addressingNotes(frame.u, frame.v, opts, q);
-  const examQ = isExamQuery(src, opts, frame.u, frame.v);
+  const ro = useMemo(() => sphereReadouts(sphere), [sphere]);
   const examS = isExamSphere(src, opts, sphere);
-  // The worked steps (KaTeX) follow the committed path; while playing they follow at the
-  // timeline's step resolution (exact again as soon as it pauses), so a frame stays cheap.
-  const tWorked = tl.playing ? Math.floor(tl.t / STEP + 1e-9) * STEP : tl.t;
-  const workedFrame = useMemo(() => frameAt(grid, opts, committedPath, tWorked), [grid, opts, committedPath, tWorked]);
-  const workedQ = useDeferredValue(workedFrame.lookup);
-  const workedExam = isExamQuery(src, opts, workedFrame.u, workedFrame.v);
-  const flipped = useMemo(() => lookupAt(grid, workedFrame.u, workedFrame.v, { ...opts, vflip: !opts.vflip }), [grid, workedFrame.u, workedFrame.v, opts]);
   const crease = useMemo(() => creases(grid, opts), [grid, opts]);
 
   const dir = useMemo<[number, number, number] | null>(() => {
@@ -126,15 +109,13 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
     return [params.x / sphere.r, params.y / sphere.r, params.z / sphere.r];
   }, [sphere, params.x, params.y, params.z]);
 
-  const tlRef = useRef(tl);
-  tlRef.current = tl;
   const onMove = useCallback(
     (grab: Grab, ut: number, vt: number, final: boolean) => {
       const nv = opts.vflip ? Math.round((1 - vt) * 10000) / 10000 : vt;
       if (grab === 'query') {
         // the query goes where the pointer / keys put it: back to the start of the path (t = 0)
-        const t = tlRef.current;
-        if (t.t !== 0 || t.playing) t.reset();
+        const t = store.timeline();
+        if (t && (t.t !== 0 || t.playing)) t.reset();
       }
       const which = grab === 'b' ? 'b' : 'a';
       if (final) {
@@ -142,7 +123,7 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
         setParams(which === 'b' ? { u2: ut, v2: nv } : { u: ut, v: nv });
       } else setDrag({ grab: which, u: ut, v: nv });
     },
-    [opts.vflip, setParams],
+    [opts.vflip, setParams, store],
   );
   const onPick = useCallback(
     (p: [number, number, number]) => {
@@ -186,8 +167,6 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
     const th = (thDeg * Math.PI) / 180;
     setParams({ x: r4(r * Math.cos(ph) * Math.sin(th)), y: r4(r * Math.sin(ph) * Math.sin(th)), z: r4(r * Math.cos(th)) });
   };
-
-  const atT = tl.t === 0 ? '' : ` at t = ${fmtShort(tl.t)} on its path`;
 
   // Parts that do not depend on the animation position are memoized, so a frame only re-renders
   // the figure's moving parts and the readouts.
@@ -271,12 +250,11 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
           <ExamGridTable />
         </div>
         <div className="tx-figure-main">
-          <GridView
+          <AnimGrid
+            ctx={ctx}
             grid={grid}
             opts={opts}
             range={range}
-            q={dq}
-            path={path}
             onMove={onMove}
             editing={editing}
             selected={selected}
@@ -285,7 +263,7 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
             present={mode.present}
           />
           <Legend range={range} />
-          <TimelineTransport timeline={tl} label="Query path" format={(t) => `t = ${t.toFixed(2)}`}>
+          <TimelineDriver store={store} t={Number(params.t)} play={params.play === true} setParams={setParams} visibleRef={figRef}>
             <label className="tx-path-kind">
               <span>Path</span>
               <select value={kind} onChange={(e) => setParams({ path: e.target.value === 'circle' ? 'circle' : 'line' })} data-testid="path-select">
@@ -293,33 +271,16 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
                 <option value="circle">circle through both</option>
               </select>
             </label>
-          </TimelineTransport>
+          </TimelineDriver>
           <div className="tx-path-end">
             <span>Path end</span>
             <NumberField label="u₂" value={params.u2} min={-4} max={4} step={0.01} onChange={(x) => setParams({ u2: x })} testId="u2-field" />
             <NumberField label="v₂" value={params.v2} min={-4} max={4} step={0.01} onChange={(x) => setParams({ v2: x })} testId="v2-field" />
           </div>
-          <PathPlot profile={profile} t={tl.t} near={q.near.value} bil={q.bil.value} present={mode.present} />
+          <AnimPathPlot ctx={ctx} profile={profile} present={mode.present} />
         </div>
         <div className="tx-figure-side">
-          <p className="tx-now" data-testid="query-now">
-            Query{atT}: (u, v) = ({fmtShort(frame.u)}, {fmtShort(frame.v)}) → nearest <strong>{fmtShort(q.near.value)}</strong>, bilinear{' '}
-            <strong>{fmtShort(q.bil.value)}</strong>
-          </p>
-          <StencilDetail q={dq} />
-          <p className="tx-small">
-            <span className="tx-key nearest" /> nearest node · <span className="tx-key cell" /> the bilinear cell: each of its four nodes is weighted by the area of
-            the sub-rectangle opposite to it (same colour).
-          </p>
-          {notes.length ? (
-            <Notice kind="info" testId="addressing-note">
-              {notes.map((n) => (
-                <span key={n} className="tx-note-line">
-                  {n}
-                </span>
-              ))}
-            </Notice>
-          ) : null}
+          <AnimSide ctx={ctx} />
           <div className="tx-edit">
             <Toggle
               label="Edit cells (click a node, or arrow keys on the grid, then Enter)"
@@ -464,20 +425,8 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
         </ExamPart>
     ),
     // setAngles reads only sphere and setParams
-    [params, setParams, sphere, examS, ro.sphereU, ro.sphereV, ro.sphereBilinear, grid, opts, range, dir, onPick, mode.present],
+    [params, setParams, sphere, examS, ro, grid, opts, range, dir, onPick, mode.present],
   );
-
-  const notExam = !workedExam ? (
-    <p className="tx-small tx-not-exam" data-testid="not-exam-query">
-      The steps use the current query (u, v) = ({fmtShort(workedFrame.u)}, {fmtShort(workedFrame.v)}){tWorked !== 0 ? `, at t = ${fmtShort(tWorked)} on its path` : ''}
-      {src.isExam ? '' : ', on a grid that is not the exam’s'}
-      {opts.align !== 'corner' ? ', with texel centres' : ''}
-      {opts.vflip ? ', with v flipped' : ''}.{' '}
-      <button type="button" onClick={toExam} data-testid="to-exam">
-        Back to the exam’s question
-      </button>
-    </p>
-  ) : null;
 
   const main = (
     <>
@@ -487,50 +436,34 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
         intro={figure}
       >
         <ExamPart id="3a" title="Nearest neighbour" asks={<>What value does nearest-neighbour lookup return at (u, v) = (0.4, 0.24)?</>}>
-          {notExam}
+          <NotExam ctx={ctx} toExam={toExam} />
           <Derivation testId="derivation-3a">
-            <NearestWorked grid={grid} opts={opts} q={workedQ} />
+            <WorkedNearest ctx={ctx} />
           </Derivation>
           <LiveAnswer testId="answer-3a">
-            <div className="readouts">
-              <Readout id="nearest" label="Nearest (Q3a)" value={ro.nearest} note={examQ ? keyNote(ro.nearest, KEY_PRINTED.nearest) : undefined} />
-              <Readout id="query-uv" label="(u, v) as used" value={`(${fmtShort(q.bil.u)}, ${fmtShort(q.bil.v)})`} />
-            </div>
+            <Readouts3a ctx={ctx} />
           </LiveAnswer>
           <KeyNote testId="keynote-3a">
-            the key gives the node (0.5, 0.25) with the value 18 and also awards marks for a stated different convention, for example v′ = 1 − v (v measured
-            downward). With the flip {opts.vflip ? 'undone' : 'applied'} here, nearest gives {fmtShort(flipped.near.value)} (the node at ({fmtShort(flipped.near.nodeU)},{' '}
-            {fmtShort(flipped.near.nodeV)}) of the flipped frame) and bilinear {fmtShort(flipped.bil.value)}.
+            <KeyNote3a ctx={ctx} />
           </KeyNote>
         </ExamPart>
         <ExamPart id="3b" title="Bilinear" asks={<>What value does bilinear interpolation give at (u, v) = (0.4, 0.24)?</>}>
-          {notExam}
+          <NotExam ctx={ctx} toExam={toExam} />
           <Derivation testId="derivation-3b">
-            <BilinearWorked opts={opts} q={workedQ} />
+            <WorkedBilinear ctx={ctx} />
           </Derivation>
           <LiveAnswer testId="answer-3b">
-            <div className="readouts">
-              <Readout id="bilinear" label="Bilinear (Q3b)" value={ro.bilinear} note={examQ ? keyNote(ro.bilinear, KEY_PRINTED.bilinear) : undefined} />
-            </div>
+            <Readouts3b ctx={ctx} />
           </LiveAnswer>
           <KeyNote testId="keynote-3b">
-            the key deducts 2.5 marks when the division by the cell size 0.25 is missing. Without it each step is scaled by Δ: c_u would be{' '}
-            {fmtShort(workedQ.steps.cu * workedQ.bil.du)}, c_l {fmtShort(workedQ.steps.cl * workedQ.bil.du)} and c {fmtShort(workedQ.steps.c * workedQ.bil.du * workedQ.bil.dv)}
-            {workedExam
-              ? `; with the divisions the computed c_u, c_l and c (${fmtShort(workedQ.steps.cu)}, ${fmtShort(workedQ.steps.cl)}, ${fmtShort(workedQ.steps.c)}) ${
-                  agreesWithKey(workedQ.steps.cu, KEY_PRINTED.cu) && agreesWithKey(workedQ.steps.cl, KEY_PRINTED.cl) && agreesWithKey(workedQ.steps.c, KEY_PRINTED.bilinear)
-                    ? `agree with the key’s printed ${KEY_PRINTED.cu.value}, ${KEY_PRINTED.cl.value} and ${KEY_PRINTED.bilinear.value}`
-                    : `differ from the key’s printed ${KEY_PRINTED.cu.value}, ${KEY_PRINTED.cl.value} and ${KEY_PRINTED.bilinear.value}`
-                }`
-              : ''}
-            .
+            <KeyNote3b ctx={ctx} />
           </KeyNote>
         </ExamPart>
         {part3c}
       </ExamQuestion>
       <ExploreFurther intro="Beyond the exam: the whole texture under both filters, where bilinear creases, and what the spherical mapping does at its seam and poles.">
         <Panel title="The whole texture, reconstructed">
-          <Reconstruction grid={grid} opts={opts} range={range} qu={dq.bil.u} qv={dq.bil.v} creases={crease.list} />
+          <AnimReconstruction ctx={ctx} range={range} creases={crease.list} />
           <p className="tx-small" data-testid="crease-caption">
             Both images show [0, 1]² {opts.vflip ? '(in the flipped frame v′) ' : ''}magnified; the cross is the query. Nearest copies the closest value, so it is
             blocky. Bilinear is continuous, and linear along u and along v inside each cell, so its slope can change only across node lines — and only where the
@@ -683,5 +616,156 @@ function GridText({ text, onApply }: { text: string; onApply: (t: string) => voi
         </span>
       ) : null}
     </div>
+  );
+}
+
+// ---- The animated parts: each subscribes to the timeline's position (./anim), so a frame
+// re-renders only these, not the scene.
+
+/** The grid figure with the query at position t (the grid's layers are memoized inside). */
+function AnimGrid({ ctx, ...rest }: { ctx: AnimContext } & Omit<ComponentProps<typeof GridView>, 'q' | 'path'>) {
+  const t = useAnimT(ctx.store);
+  return <GridView {...rest} q={ctx.frame(t).dq} path={ctx.path} />;
+}
+
+/** The value along the path with the marker at t (its curves are memoized inside). */
+function AnimPathPlot({ ctx, profile, present }: { ctx: AnimContext; profile: PathProfile; present: boolean }) {
+  const t = useAnimT(ctx.store);
+  const q = ctx.frame(t).frame.lookup;
+  return <PathPlot profile={profile} t={t} near={q.near.value} bil={q.bil.value} present={present} />;
+}
+
+/** The query now, its stencil and the addressing notes, beside the grid. */
+function AnimSide({ ctx }: { ctx: AnimContext }) {
+  const t = useAnimT(ctx.store);
+  const { frame, dq } = ctx.frame(t);
+  const q = frame.lookup;
+  const notes = useMemo(() => addressingNotes(frame.u, frame.v, ctx.opts, q), [frame, ctx.opts, q]);
+  const atT = t === 0 ? '' : ` at t = ${fmtShort(t)} on its path`;
+  return (
+    <>
+      <p className="tx-now" data-testid="query-now">
+        Query{atT}: (u, v) = ({fmtShort(frame.u)}, {fmtShort(frame.v)}) → nearest <strong>{fmtShort(q.near.value)}</strong>, bilinear{' '}
+        <strong>{fmtShort(q.bil.value)}</strong>
+      </p>
+      <StencilDetail q={dq} />
+      <p className="tx-small">
+        <span className="tx-key nearest" /> nearest node · <span className="tx-key cell" /> the bilinear cell: each of its four nodes is weighted by the area of the
+        sub-rectangle opposite to it (same colour).
+      </p>
+      {notes.length ? (
+        <Notice kind="info" testId="addressing-note">
+          {notes.map((n) => (
+            <span key={n} className="tx-note-line">
+              {n}
+            </span>
+          ))}
+        </Notice>
+      ) : null}
+    </>
+  );
+}
+
+/** Q3(a)'s live answer at position t. */
+function Readouts3a({ ctx }: { ctx: AnimContext }) {
+  const t = useAnimT(ctx.store);
+  const { frame } = ctx.frame(t);
+  const q = frame.lookup;
+  const ro = queryReadouts(q);
+  const examQ = isExamQuery(ctx.src, ctx.opts, frame.u, frame.v);
+  return (
+    <div className="readouts">
+      <Readout id="nearest" label="Nearest (Q3a)" value={ro.nearest} note={examQ ? keyNote(ro.nearest, KEY_PRINTED.nearest) : undefined} />
+      <Readout id="query-uv" label="(u, v) as used" value={`(${fmtShort(q.bil.u)}, ${fmtShort(q.bil.v)})`} />
+    </div>
+  );
+}
+
+/** Q3(b)'s live answer at position t. */
+function Readouts3b({ ctx }: { ctx: AnimContext }) {
+  const t = useAnimT(ctx.store);
+  const { frame } = ctx.frame(t);
+  const ro = queryReadouts(frame.lookup);
+  const examQ = isExamQuery(ctx.src, ctx.opts, frame.u, frame.v);
+  return (
+    <div className="readouts">
+      <Readout id="bilinear" label="Bilinear (Q3b)" value={ro.bilinear} note={examQ ? keyNote(ro.bilinear, KEY_PRINTED.bilinear) : undefined} />
+    </div>
+  );
+}
+
+/** The reconstructions with the query's cross at position t (the images are memoized inside). */
+function AnimReconstruction({ ctx, range, creases }: { ctx: AnimContext; range: { min: number; max: number }; creases: ComponentProps<typeof Reconstruction>['creases'] }) {
+  const t = useAnimT(ctx.store);
+  const { dq } = ctx.frame(t);
+  return <Reconstruction grid={ctx.grid} opts={ctx.opts} range={range} qu={dq.bil.u} qv={dq.bil.v} creases={creases} />;
+}
+
+/**
+ * The worked steps follow the committed path; while playing they follow at the timeline's step
+ * resolution (exact again as soon as it pauses), so a frame stays cheap.
+ */
+function useWorked(ctx: AnimContext) {
+  const tWorked = useWorkedT(ctx.store);
+  return { tWorked, frame: ctx.worked(tWorked) };
+}
+
+function NotExam({ ctx, toExam }: { ctx: AnimContext; toExam: () => void }) {
+  const { tWorked, frame } = useWorked(ctx);
+  const { src, opts } = ctx;
+  if (isExamQuery(src, opts, frame.u, frame.v)) return null;
+  return (
+    <p className="tx-small tx-not-exam" data-testid="not-exam-query">
+      The steps use the current query (u, v) = ({fmtShort(frame.u)}, {fmtShort(frame.v)}){tWorked !== 0 ? `, at t = ${fmtShort(tWorked)} on its path` : ''}
+      {src.isExam ? '' : ', on a grid that is not the exam’s'}
+      {opts.align !== 'corner' ? ', with texel centres' : ''}
+      {opts.vflip ? ', with v flipped' : ''}.{' '}
+      <button type="button" onClick={toExam} data-testid="to-exam">
+        Back to the exam’s question
+      </button>
+    </p>
+  );
+}
+
+function WorkedNearest({ ctx }: { ctx: AnimContext }) {
+  const q = useDeferredValue(useWorked(ctx).frame.lookup);
+  return <NearestWorked grid={ctx.grid} opts={ctx.opts} q={q} />;
+}
+
+function WorkedBilinear({ ctx }: { ctx: AnimContext }) {
+  const q = useDeferredValue(useWorked(ctx).frame.lookup);
+  return <BilinearWorked opts={ctx.opts} q={q} />;
+}
+
+function KeyNote3a({ ctx }: { ctx: AnimContext }) {
+  const { frame } = useWorked(ctx);
+  const { grid, opts } = ctx;
+  const flipped = useMemo(() => lookupAt(grid, frame.u, frame.v, { ...opts, vflip: !opts.vflip }), [grid, frame.u, frame.v, opts]);
+  return (
+    <>
+      the key gives the node (0.5, 0.25) with the value 18 and also awards marks for a stated different convention, for example v′ = 1 − v (v measured downward).
+      With the flip {opts.vflip ? 'undone' : 'applied'} here, nearest gives {fmtShort(flipped.near.value)} (the node at ({fmtShort(flipped.near.nodeU)},{' '}
+      {fmtShort(flipped.near.nodeV)}) of the flipped frame) and bilinear {fmtShort(flipped.bil.value)}.
+    </>
+  );
+}
+
+function KeyNote3b({ ctx }: { ctx: AnimContext }) {
+  const { frame } = useWorked(ctx);
+  const workedQ = useDeferredValue(frame.lookup);
+  const workedExam = isExamQuery(ctx.src, ctx.opts, frame.u, frame.v);
+  return (
+    <>
+      the key deducts 2.5 marks when the division by the cell size 0.25 is missing. Without it each step is scaled by Δ: c_u would be{' '}
+      {fmtShort(workedQ.steps.cu * workedQ.bil.du)}, c_l {fmtShort(workedQ.steps.cl * workedQ.bil.du)} and c {fmtShort(workedQ.steps.c * workedQ.bil.du * workedQ.bil.dv)}
+      {workedExam
+        ? `; with the divisions the computed c_u, c_l and c (${fmtShort(workedQ.steps.cu)}, ${fmtShort(workedQ.steps.cl)}, ${fmtShort(workedQ.steps.c)}) ${
+            agreesWithKey(workedQ.steps.cu, KEY_PRINTED.cu) && agreesWithKey(workedQ.steps.cl, KEY_PRINTED.cl) && agreesWithKey(workedQ.steps.c, KEY_PRINTED.bilinear)
+              ? `agree with the key’s printed ${KEY_PRINTED.cu.value}, ${KEY_PRINTED.cl.value} and ${KEY_PRINTED.bilinear.value}`
+              : `differ from the key’s printed ${KEY_PRINTED.cu.value}, ${KEY_PRINTED.cl.value} and ${KEY_PRINTED.bilinear.value}`
+          }`
+        : ''}
+      .
+    </>
   );
 }

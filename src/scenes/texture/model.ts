@@ -141,14 +141,22 @@ export interface TextureReadouts {
   sphereBilinear: number | null;
 }
 
-export function readouts(q: Lookup, sphere: SphereModel): TextureReadouts {
+/** The query's part of the readouts (nearest, bilinear). */
+export function queryReadouts(q: Lookup): Pick<TextureReadouts, 'nearest' | 'bilinear'> {
+  return { nearest: q.near.value, bilinear: q.bil.value };
+}
+
+/** The sphere's part of the readouts (u, v and the bilinear value there; null without a point). */
+export function sphereReadouts(sphere: SphereModel): Pick<TextureReadouts, 'sphereU' | 'sphereV' | 'sphereBilinear'> {
   return {
-    nearest: q.near.value,
-    bilinear: q.bil.value,
     sphereU: sphere.ok ? sphere.chosen.u : null,
     sphereV: sphere.ok ? sphere.chosen.v : null,
     sphereBilinear: sphere.ok ? sphere.chosen.bil.value : null,
   };
+}
+
+export function readouts(q: Lookup, sphere: SphereModel): TextureReadouts {
+  return { ...queryReadouts(q), ...sphereReadouts(sphere) };
 }
 
 /**

@@ -176,3 +176,41 @@ describe('area-light estimators agree with the analytic reference', () => {
     expect(series.stderr[3]! / series.stderr[0]!).toBeLessThan(0.05); // √(1/1000) ≈ 0.032
   });
 });
+
+describe('area sampling goes through the tested sample / pdf pair (core/lights/areaSampling)', () => {
+  it('each area term equals f L cos θ / p_ω with p_ω = rectAreaPdf · r² / cos θ_l, computed here from sampleRectArea', async () => {
+    const { sampleRectArea, rectAreaPdf } = await import('../../../src/core/lights/areaSampling');
+    const s = setup(makeRectLight([0.4, -0.2, 1.7], 1.3, 0.9, 25), [0.1, 0.05, 0]);
+    const u = new Float64Array([0.1, 0.9, 0.5, 0.5, 0.93, 0.02, 0.37, 0.61]);
+    const terms = new Float64Array(4);
+    areaLightTerms(s, 'area', u, 4, terms);
+    for (let i = 0; i < 4; i++) {
+      const x = [0, 0, 0];
+      sampleRectArea(s.light, u[2 * i]!, u[2 * i + 1]!, x);
+      const d = [x[0]! - s.px, x[1]! - s.py, x[2]! - s.pz];
+      const r2 = d[0]! ** 2 + d[1]! ** 2 + d[2]! ** 2, r = Math.sqrt(r2);
+      const cosT = d[2]! / r;
+      const cosL = -(d[0]! * s.light.normal[0] + d[1]! * s.light.normal[1] + d[2]! * s.light.normal[2]) / r;
+      const pA = rectAreaPdf(s.light, x[0]!, x[1]!, x[2]!);
+      expect(pA).toBeCloseTo(1 / (1.3 * 0.9), 12);
+      const expected = cosT > 0 && cosL > 0 ? ((s.rho / Math.PI) * s.L * cosT * cosL) / (pA * r2) : 0;
+      expect(terms[i]).toBeCloseTo(expected, 12);
+    }
+  });
+
+  it('a tilted light 10⁹ away: sampled points are not rejected by the pdf’s on-rectangle test (rounding at that distance)', async () => {
+    const { sampleRectArea, rectAreaPdf } = await import('../../../src/core/lights/areaSampling');
+    const s = setup(makeRectLight([3e8, -2e8, 1e9], 2, 1, 30), [0, 0, 0]);
+    const x = [0, 0, 0];
+    for (const [a, b] of [[0.123, 0.877], [0.5, 0.25], [0.999, 0.001]] as const) {
+      sampleRectArea(s.light, a, b, x);
+      expect(rectAreaPdf(s.light, x[0]!, x[1]!, x[2]!)).toBeCloseTo(1 / 2, 12);
+    }
+    const r = estimateAreaLight(s, 'area', 2000, 9, 0);
+    // Small-patch limit f L |A| cos θ cos θ_l / r² at the centre: exact to O((size/r)²) ≈ 1e-18 here.
+    const c = s.light.center, rr = Math.hypot(...c);
+    const ref = ((s.rho / Math.PI) * s.L * s.light.area * (c[2] / rr) * (-(c[0] * s.light.normal[0] + c[1] * s.light.normal[1] + c[2] * s.light.normal[2]) / rr)) / (rr * rr);
+    expect(ref).toBeGreaterThan(0);
+    expect(Math.abs(r.estimate - ref) / ref).toBeLessThan(1e-3);
+  });
+});

@@ -22,3 +22,17 @@ describe('area-light jobs (what the worker runs)', () => {
     for (const r of last.rmse) expect(r).toBeLessThanOrEqual(frames[0]!.rmse[0]! * 10);
   });
 });
+
+describe('renderJob keeps every pass for the timeline', () => {
+  it('the result carries all passes, their spp are 1, 2, 4, …, 64 and the last equals the result', async () => {
+    const { buildModel, floorJob, PASS_TOTAL } = await import('../../../src/scenes/area-light/model');
+    const { defaultValues } = await import('../../../src/app/params');
+    const { schema } = await import('../../../src/scenes/area-light/params');
+    const job = floorJob(buildModel(defaultValues(schema)), 3, 8);
+    const last = await renderJob(job);
+    expect(last.passes.map((p) => p.spp)).toEqual([...PASS_TOTAL]);
+    expect(Array.from(last.passes.at(-1)!.images[0]!)).toEqual(Array.from(last.images[0]!));
+    // earlier passes are noisier on average than the last (RMSE against the reference)
+    expect(last.passes[0]!.rmse[0]!).toBeGreaterThan(last.rmse[0]!);
+  });
+});

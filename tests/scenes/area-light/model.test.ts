@@ -111,3 +111,63 @@ describe('area-light model', () => {
     expect(rmse).toBeLessThan(0.05 * mean);
   });
 });
+
+describe('Q6(c) given samples and the animation (pure functions of params, seed, t)', () => {
+  it('givenSamples: the first four area terms equal the estimator kernel’s, and their mean is (|A|/4) Σ …', async () => {
+    const { givenSamples, drawSamples: draw } = await import('../../../src/scenes/area-light/model');
+    for (const preset of PRESETS) {
+      const m = buildModel(withP({ ...preset.params, occluder: preset.id === 'overhead' }));
+      const g = givenSamples(m, 11, 4);
+      const d = draw(m, 'area', 4, 11);
+      let sum = 0;
+      g.samples.forEach((s, i) => {
+        expect(s.term).toBeCloseTo(d.terms[i]!, 12);
+        expect(s.pA).toBeCloseTo(1 / m.light.area, 12);
+        for (let c = 0; c < 3; c++) expect(s.x[c]).toBeCloseTo(d.points[3 * i + c]!, 12);
+        // the key's form of the term, recomputed from the printed factors
+        const keyTerm = s.V ? (m.light.area * (m.rho / Math.PI) * m.L * s.cosTheta * s.cosThetaL) / (s.r * s.r) : 0;
+        expect(s.term).toBeCloseTo(keyTerm, 12);
+        sum += s.term;
+      });
+      expect(g.estimate).toBeCloseTo(sum / 4, 14);
+      // the first four samples are the first four of the n-sample estimate (same stream)
+      expect(g.estimate).toBeCloseTo(estimateAll(m, 4, 11)[0]!.estimate, 14);
+    }
+  });
+
+  it('animationFrame at t = n reproduces the estimate readout; at t = k the mean of the first k terms', async () => {
+    const { sampleRun, animationFrame, animationLength } = await import('../../../src/scenes/area-light/model');
+    const m = buildModel(withP({ occluder: true }));
+    for (const s of ['area', 'solid-angle', 'cosine'] as const) {
+      const n = 300;
+      const run = sampleRun(m, s, animationLength(n), 5);
+      const full = estimateAll(m, n, 5).find((e) => e.strategy === s)!;
+      const f = animationFrame(run, n);
+      expect(f.k).toBe(n);
+      expect(f.estimate).toBeCloseTo(full.estimate, 13);
+      expect(f.stderr).toBeCloseTo(full.stderr, 13);
+      const k = 37;
+      let mean = 0;
+      for (let i = 0; i < k; i++) mean += run.terms[i]!;
+      expect(animationFrame(run, k + 0.6).estimate).toBeCloseTo(mean / k, 13);
+      expect(animationFrame(run, 0).k).toBe(0);
+      expect(Number.isNaN(animationFrame(run, 1).stderr)).toBe(true);
+      expect(animationFrame(run, 1e9).k).toBe(n);
+    }
+    expect(animationLength(5)).toBe(5);
+    expect(animationLength(1e6)).toBe(1024);
+  });
+
+  it('floorPassAt: pass grows with t, 0 at the start, the last pass (64 spp) at the end', async () => {
+    const { floorPassAt, PASS_TOTAL } = await import('../../../src/scenes/area-light/model');
+    expect(floorPassAt(0, 1024)).toBe(0);
+    expect(PASS_TOTAL[floorPassAt(1024, 1024)]).toBe(64);
+    expect(PASS_TOTAL[floorPassAt(512, 1024)]).toBe(32);
+    let prev = 0;
+    for (let t = 0; t <= 1024; t += 7) {
+      const k = floorPassAt(t, 1024);
+      expect(k).toBeGreaterThanOrEqual(prev);
+      prev = k;
+    }
+  });
+});

@@ -6,7 +6,7 @@
 import { useEffect, useRef } from 'react';
 import { useWorkerJob } from '../../../workers';
 import { Readout, useSeenOnce } from '../../../ui';
-import { STRATEGIES, STRATEGY_LABEL, type FloorJob } from '../model';
+import { PASS_TOTAL, STRATEGIES, STRATEGY_LABEL, type FloorJob } from '../model';
 import type { FloorFrame } from '../jobs';
 
 const makeWorker = () => new Worker(new URL('../floor.worker.ts', import.meta.url), { type: 'module' });
@@ -34,15 +34,30 @@ function paint(canvas: HTMLCanvasElement | null, img: Float32Array | undefined, 
   ctx.putImageData(data, 0, 0);
 }
 
-export function FloorImages({ job }: { job: FloorJob }) {
+/**
+ * `pass` (from the timeline, model.floorPassAt) picks which progressive pass is shown: the images
+ * refine in step with the animation. While the render is still running, the newest pass not beyond
+ * the wanted one is shown; once done, exactly the wanted one (a function of the job and t).
+ */
+export function FloorImages({ job, pass = PASS_TOTAL.length - 1 }: { job: FloorJob; pass?: number }) {
   // Starts when the images come near the screen (not on load), and restarts when the scene changes
   // (debounced so dragging a slider does not queue renders).
   const box = useRef<HTMLDivElement>(null);
-  const seen = useSeenOnce(box);
-  const task = useWorkerJob<FloorFrame, FloorFrame>(makeWorker, 'render', job, { delayMs: 250, enabled: seen });
+  const seenOnce = useSeenOnce(box);
+  const task = useWorkerJob<FloorFrame, FloorFrame>(makeWorker, 'render', job, { delayMs: 250, enabled: seenOnce });
   const refs = useRef<(HTMLCanvasElement | null)[]>([]);
+  // Partials seen for the current job, by pass (a partial carries one pass; the result all of them).
+  const seen = useRef<{ job: FloorJob | null; byPass: Map<number, FloorFrame> }>({ job: null, byPass: new Map() });
+  if (seen.current.job !== job) seen.current = { job, byPass: new Map() };
+  if (task.partial) seen.current.byPass.set(PASS_TOTAL.indexOf(task.partial.spp), task.partial);
 
-  const fr = task.result ?? task.partial;
+  let fr: FloorFrame | undefined;
+  if (task.result?.passes.length) fr = task.result.passes[Math.min(pass, task.result.passes.length - 1)];
+  else {
+    for (const [k, f] of seen.current.byPass) if (k <= pass && (!fr || f.spp > fr.spp)) fr = f;
+    fr ??= task.partial ?? undefined;
+  }
+  const full = task.result ?? task.partial;
   useEffect(() => {
     if (!fr) return;
     let scale = 0;
@@ -62,8 +77,10 @@ export function FloorImages({ job }: { job: FloorJob }) {
           <>
             <progress max={1} value={task.progress} aria-label="Rendering progress" /> {fr ? `${fr.spp} samples per pixel so far…` : 'starting…'}
           </>
-        ) : fr ? (
-          `${fr.spp} samples per pixel (done).`
+        ) : fr && full ? (
+          <span data-testid="floor-spp" data-value={fr.spp}>
+            {fr.spp === full.spp ? `${fr.spp} samples per pixel (done).` : `Showing ${fr.spp} of ${full.spp} samples per pixel, in step with the timeline (done).`}
+          </span>
         ) : (
           'Waiting…'
         )}

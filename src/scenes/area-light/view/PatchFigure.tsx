@@ -1,20 +1,21 @@
 /**
- * Q6(a) drawn in cross-section (after the key's Figure 1): the shading point p, the unit circle
- * around it, the patch dA at distance r tilted by θ_l (its normal n_l against the direction back
- * to p), its foreshortened projection dA cos θ_l perpendicular to the ray, and the arc dω it
- * subtends on the unit circle. The tilt is drawn at the patch's real θ_l and the patch at its real
- * angular size (clamped to stay visible); the numbers come from the model.
+ * Q6(a) in cross-section, after the key's Figure 1 and its similar-triangles argument: the shading
+ * point p, the unit circle around it, the patch dA at distance r tilted by θ_l (normal n_l), its
+ * perpendicular projection dA⊥ (side dl), and the arc dω_l that dA⊥ subtends on the unit circle.
+ * The two shaded half-triangles are similar: (dω_l/2)/1 = (dl/2)/r.
+ *
+ * Drawn to scale (one scale for r, the unit radius and the patch) whenever that fits; otherwise the
+ * figure says which length is not to scale. The numbers come from the model (PatchModel).
  */
 import type { PatchModel } from '../model';
 
 const W = 560;
-const H = 250;
-const PX = 46;
-const PY = 135;
-const D = 390; // drawn distance p → patch centre
-const R = 120; // drawn unit circle radius
-const C70 = Math.cos((70 * Math.PI) / 180);
-const S70 = Math.sin((70 * Math.PI) / 180);
+const H = 260;
+const PX = 40;
+const PY = 150;
+/** Longest drawn distance p → patch and largest drawn unit radius (px). */
+const DMAX = 400;
+const RMAX = 150;
 
 function fmt(x: number, d = 4): string {
   if (!Number.isFinite(x)) return '—';
@@ -22,66 +23,133 @@ function fmt(x: number, d = 4): string {
   return Number(x.toPrecision(d)).toString();
 }
 
-export function PatchFigure({ patch }: { patch: PatchModel }) {
+/** Layout of the figure in SVG units: pure, so tests can check it (scale, clamps, label boxes). */
+export function patchFigureLayout(patch: PatchModel) {
   const thetaL = Math.acos(Math.min(1, Math.max(0, patch.cosThetaL)));
-  const ang = patch.r > 0 ? Math.sqrt(patch.area) / patch.r : 0; // angular size, radians
-  const s = Math.min(170, Math.max(6, D * ang));
+  const r = patch.r > 0 ? patch.r : 1;
+  // One scale k (px per unit) for r and the unit radius when both fit.
+  let k = Math.min(DMAX / r, RMAX);
+  let distanceToScale = true;
+  if (k * r < 90 || k < 40) {
+    // r ≫ 1 or r ≪ 1: the unit circle and r cannot share a legible scale.
+    distanceToScale = false;
+    k = RMAX * 0.6;
+  }
+  const D = distanceToScale ? k * r : DMAX;
+  const R = distanceToScale ? k : RMAX * 0.6;
+  // The patch's side at the same scale as r (its angular size is what matters), clamped to stay visible.
+  const sideTrue = (Math.sqrt(patch.area) / r) * D;
+  const s = Math.min(180, Math.max(10, sideTrue));
+  const patchToScale = Math.abs(s - sideTrue) < 1e-6;
+  return { thetaL, k, D, R, s, distanceToScale, patchToScale };
+}
+
+export function PatchFigure({ patch }: { patch: PatchModel }) {
+  const { thetaL, D, R, s, distanceToScale, patchToScale } = patchFigureLayout(patch);
   const cx = PX + D, cy = PY;
-  // The patch: a segment through the centre, turned θ_l from the perpendicular to the ray.
+  // The patch: a segment through its centre, turned θ_l from the perpendicular to the ray.
   const ux = Math.sin(thetaL), uy = Math.cos(thetaL);
   const a = { x: cx - (s / 2) * ux, y: cy - (s / 2) * uy };
   const b = { x: cx + (s / 2) * ux, y: cy + (s / 2) * uy };
-  // Its projection perpendicular to the ray: length s cos θ_l, centred on the ray.
-  const sp = s * Math.cos(thetaL);
-  const pa = { x: cx, y: cy - sp / 2 }, pb = { x: cx, y: cy + sp / 2 };
-  // Where the cone p → patch meets the unit circle.
+  // dA⊥: perpendicular to the ray, side dl = s cos θ_l (in this cross-section).
+  const dl = s * Math.cos(thetaL);
+  const pa = { x: cx, y: cy - dl / 2 }, pb = { x: cx, y: cy + dl / 2 };
+  // Where the cone p → dA⊥ meets the unit circle (the ends of dω_l).
   const onCircle = (q: { x: number; y: number }) => {
     const dx = q.x - PX, dy = q.y - PY, l = Math.hypot(dx, dy) || 1;
     return { x: PX + (R * dx) / l, y: PY + (R * dy) / l };
   };
-  const ca = onCircle(a), cb = onCircle(b);
-  // Patch normal n_l (pointing back towards p's side) and the θ_l arc between n_l and −ray.
+  const ca = onCircle(pa), cbb = onCircle(pb);
+  const far = Math.max(D, R) + 24;
+  const ext = (q: { x: number; y: number }) => {
+    const dx = q.x - PX, dy = q.y - PY, l = Math.hypot(dx, dy) || 1;
+    return { x: PX + (far * dx) / l, y: PY + (far * dy) / l };
+  };
+  const ea = ext(pa), eb = ext(pb);
+  // Patch normal n_l (towards p's side) and the θ_l arc between n_l and the direction back to p.
   const nx = -Math.cos(thetaL), ny = Math.sin(thetaL);
-  const nLen = 58;
-  const arcR = 34;
+  const nLen = 56;
+  const arcR = 30;
   const arcEnd = { x: cx + arcR * nx, y: cy + arcR * ny };
+  const C70 = Math.cos((62 * Math.PI) / 180), S70 = Math.sin((62 * Math.PI) / 180);
+  const scaleNote = !distanceToScale
+    ? `r = ${fmt(patch.r, 3)} and the unit radius are not to scale here`
+    : !patchToScale
+      ? `to scale, except the patch (${sideTrueWord(s, patch)})`
+      : 'drawn to scale';
   return (
-    <svg className="al-patch-fig" viewBox={`0 0 ${W} ${H}`} role="img" aria-label={`Cross-section of Q6(a): the patch of area ${fmt(patch.area)} at distance r = ${fmt(patch.r)}, tilted by θ_l = ${fmt((thetaL * 180) / Math.PI, 3)} degrees, subtends dω ≈ dA cos θ_l / r² = ${fmt(patch.approx)} sr; exactly ${fmt(patch.exact)} sr.`}>
+    <svg
+      className="al-patch-fig"
+      viewBox={`0 0 ${W} ${H}`}
+      role="img"
+      data-testid="al-patch-figure"
+      data-to-scale={distanceToScale && patchToScale ? '1' : '0'}
+      aria-label={`Cross-section of Q6(a), ${scaleNote}: the patch of area ${fmt(patch.area)} at distance r = ${fmt(patch.r)}, tilted by θ_l = ${fmt((thetaL * 180) / Math.PI, 3)} degrees. Its perpendicular projection dA⊥ has side dl; the similar triangles give dω_l = dl / r, so dω = dA cos θ_l / r² = ${fmt(patch.approx)} sr (exactly ${fmt(patch.exact)} sr).`}
+    >
       <defs>
         <marker id="al-arrow" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="6" markerHeight="6" orient="auto-start-reverse">
           <path d="M0,0 L10,5 L0,10 z" fill="currentColor" />
         </marker>
       </defs>
+      {/* the two similar half-triangles: (p, C, top of dA⊥) and (p, axis ∩ circle, top of dω_l) */}
+      <path d={`M ${PX} ${PY} L ${cx} ${cy} L ${pa.x} ${pa.y} Z`} className="al-fig-tri-big" />
+      <path d={`M ${PX} ${PY} L ${PX + R} ${PY} L ${ca.x} ${ca.y} Z`} className="al-fig-tri-small" />
       {/* unit circle (arc) around p */}
       <path d={`M ${PX + R * C70} ${PY - R * S70} A ${R} ${R} 0 0 1 ${PX + R * C70} ${PY + R * S70}`} className="al-fig-circle" />
-      <text x={PX + R * 0.5} y={PY - R * 0.9} className="al-fig-muted">unit sphere around p</text>
-      {/* the cone from p to the patch ends */}
-      <line x1={PX} y1={PY} x2={a.x} y2={a.y} className="al-fig-cone" />
-      <line x1={PX} y1={PY} x2={b.x} y2={b.y} className="al-fig-cone" />
+      {/* the cone from p through the ends of dA⊥ */}
+      <line x1={PX} y1={PY} x2={ea.x} y2={ea.y} className="al-fig-cone" />
+      <line x1={PX} y1={PY} x2={eb.x} y2={eb.y} className="al-fig-cone" />
       <line x1={PX} y1={PY} x2={cx} y2={cy} className="al-fig-ray" />
-      <text x={(PX + cx) / 2} y={PY + 16} className="al-fig-label">r = {fmt(patch.r)}</text>
-      {/* dω on the unit circle */}
-      <path d={`M ${ca.x} ${ca.y} A ${R} ${R} 0 0 1 ${cb.x} ${cb.y}`} className="al-fig-domega" />
-      <text x={Math.max(ca.x, cb.x) + 6} y={PY - 8} className="al-fig-accent">dω</text>
-      {/* projection dA cos θ_l */}
+      <text x={PX + Math.max(R + 14, R + 0.3 * (D - R))} y={PY + 22} textAnchor="middle" className="al-fig-label">
+        r
+      </text>
+      <text x={PX + R / 2} y={PY + 22} textAnchor="middle" className="al-fig-label">
+        1
+      </text>
+      {/* dω_l on the unit circle */}
+      <path d={`M ${ca.x} ${ca.y} A ${R} ${R} 0 0 1 ${cbb.x} ${cbb.y}`} className="al-fig-domega" />
+      <text x={ca.x - 6} y={Math.min(ca.y, PY - 12) - 8} textAnchor="end" className="al-fig-accent">
+        dω_l
+      </text>
+      {/* dA⊥ with side dl */}
       <line x1={pa.x} y1={pa.y} x2={pb.x} y2={pb.y} className="al-fig-perp" />
-      <text x={cx - 8} y={Math.min(pa.y, a.y) - 10} textAnchor="end" className="al-fig-muted">dA cos θ_l</text>
-      {/* the patch and its normal */}
+      <text x={cx} y={Math.min(pa.y, a.y) - 18} textAnchor="middle" className="al-fig-perp-label">
+        dA⊥ (side dl)
+      </text>
+      {/* the patch dA and its normal */}
       <line x1={a.x} y1={a.y} x2={b.x} y2={b.y} className="al-fig-patch" />
-      <text x={Math.max(a.x, b.x) + 8} y={Math.max(a.y, b.y) + 4} className="al-fig-accent">dA</text>
+      <text x={Math.max(a.x, b.x) + 8} y={Math.max(a.y, b.y) + 6} className="al-fig-accent">
+        dA
+      </text>
       <line x1={cx} y1={cy} x2={cx + nLen * nx} y2={cy + nLen * ny} className="al-fig-normal" markerEnd="url(#al-arrow)" />
-      <text x={cx + nLen * nx - 4} y={cy + nLen * ny + 16} className="al-fig-muted">n_l</text>
+      <text x={cx + nLen * nx - 4} y={cy + nLen * ny + 24} textAnchor="end" className="al-fig-muted">
+        n_l
+      </text>
       {thetaL > 0.02 ? (
         <>
           <path d={`M ${cx - arcR} ${cy} A ${arcR} ${arcR} 0 0 0 ${arcEnd.x} ${arcEnd.y}`} className="al-fig-theta" />
-          <text x={cx - arcR - 30} y={cy + 22} className="al-fig-label">θ_l</text>
+          {/* a small angle leaves no room inside it: the label goes below, clear of n_l */}
+          <text
+            x={thetaL < 0.35 ? cx - 14 : cx - (arcR + 14) * Math.cos(thetaL / 2)}
+            y={thetaL < 0.35 ? cy + 56 : cy + (arcR + 14) * Math.sin(thetaL / 2) + 6}
+            textAnchor="end"
+            className="al-fig-label"
+          >
+            θ_l
+          </text>
         </>
       ) : null}
       <circle cx={PX} cy={PY} r={4} className="al-fig-point" />
-      <text x={PX - 6} y={PY + 22} className="al-fig-label">p</text>
-      <text x={12} y={H - 14} className="al-fig-label al-fig-summary">
-        dA = {fmt(patch.area)}, θ_l = {fmt((thetaL * 180) / Math.PI, 3)}°: dA cos θ_l / r² = {fmt(patch.approx)} sr, exact {fmt(patch.exact)} sr
+      <text x={PX - 8} y={PY + 5} textAnchor="end" className="al-fig-label">
+        p
+      </text>
+      <text x={W - 6} y={16} textAnchor="end" className="al-fig-muted" data-testid="al-patch-scale">
+        {scaleNote}
       </text>
     </svg>
   );
+}
+
+function sideTrueWord(s: number, patch: PatchModel): string {
+  return s <= 10 ? `drawn larger than its ${fmt(Math.sqrt(patch.area), 2)}` : `drawn smaller than its ${fmt(Math.sqrt(patch.area), 2)}`;
 }

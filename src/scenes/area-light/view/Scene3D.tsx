@@ -21,9 +21,11 @@ export interface Scene3DProps {
   patch: PatchModel | null;
   height: number;
   dark: boolean;
+  /** Samples arrived so far (the animation's position): the first `count` are drawn, rays to the newest. */
+  count?: number;
 }
 
-const MAX_SAMPLES = 512;
+const MAX_SAMPLES = 1024;
 const RAYS = 24;
 
 interface Objects {
@@ -66,11 +68,34 @@ function frame(o: Objects, m: AreaLightModel) {
   o.ctx.invalidate();
 }
 
-export function Scene3D({ model, strategy, samples, terms, patch, height, dark }: Scene3DProps) {
+export function Scene3D({ model, strategy, samples, terms, patch, height, dark, count }: Scene3DProps) {
   const objs = useRef<Objects | null>(null);
-  const latest = useRef({ model, strategy, samples, terms, patch, dark });
-  latest.current = { model, strategy, samples, terms, patch, dark };
+  const latest = useRef({ model, strategy, samples, terms, patch, dark, count });
+  latest.current = { model, strategy, samples, terms, patch, dark, count };
   const framedFor = useRef('');
+
+  /** The animated part: how many samples are drawn, and rays from p to the RAYS newest. Cheap (per frame). */
+  const applyCount = (o: Objects) => {
+    const { model: m, strategy: st, samples: smp, terms: tm, count: cnt } = latest.current;
+    const n = Math.min(MAX_SAMPLES, tm.length, cnt ?? tm.length);
+    const [px, py, pz] = m.p;
+    const rayPos = o.rays.geometry.getAttribute('position') as THREE.BufferAttribute;
+    const first = Math.max(0, n - RAYS);
+    for (let i = first; i < n; i++) {
+      const j = i - first;
+      const ex = st === 'cosine' ? px + smp[3 * i]! : smp[3 * i]!;
+      const ey = st === 'cosine' ? py + smp[3 * i + 1]! : smp[3 * i + 1]!;
+      const ez = st === 'cosine' ? pz + smp[3 * i + 2]! : smp[3 * i + 2]!;
+      rayPos.setXYZ(2 * j, px, py, pz);
+      rayPos.setXYZ(2 * j + 1, ex, ey, ez);
+    }
+    rayPos.needsUpdate = true;
+    o.samplesOn.geometry.setDrawRange(0, st === 'cosine' ? 0 : n);
+    o.samplesDir.geometry.setDrawRange(0, n);
+    o.rays.geometry.setDrawRange(0, 2 * (n - first));
+    o.rays.geometry.computeBoundingSphere();
+    o.ctx.invalidate();
+  };
 
   const apply = (o: Objects) => {
     const { model: m, strategy: st, samples: smp, terms: tm, patch: pt, dark: dk } = latest.current;
@@ -101,7 +126,6 @@ export function Scene3D({ model, strategy, samples, terms, patch, height, dark }
     const onCol = o.samplesOn.geometry.getAttribute('color') as THREE.BufferAttribute;
     const dirPos = o.samplesDir.geometry.getAttribute('position') as THREE.BufferAttribute;
     const dirCol = o.samplesDir.geometry.getAttribute('color') as THREE.BufferAttribute;
-    const rayPos = o.rays.geometry.getAttribute('position') as THREE.BufferAttribute;
     const hit = new T.Color(dk ? 0x7ee787 : 0x1d7a3a);
     const miss = new T.Color(dk ? 0xf47067 : 0xc0392b);
     for (let i = 0; i < n; i++) {
@@ -119,18 +143,11 @@ export function Scene3D({ model, strategy, samples, terms, patch, height, dark }
       dirPos.setXYZ(i, px + dx, py + dy, pz + dz);
       const col = tm[i]! > 0 ? hit : miss;
       dirCol.setXYZ(i, col.r, col.g, col.b);
-      if (i < RAYS) {
-        const far = st === 'cosine' ? 1 : Math.hypot(smp[3 * i]! - px, smp[3 * i + 1]! - py, smp[3 * i + 2]! - pz);
-        rayPos.setXYZ(2 * i, px, py, pz);
-        rayPos.setXYZ(2 * i + 1, px + dx * far, py + dy * far, pz + dz * far);
-      }
     }
     o.samplesOn.visible = st !== 'cosine';
-    o.samplesOn.geometry.setDrawRange(0, st === 'cosine' ? 0 : n);
-    o.samplesDir.geometry.setDrawRange(0, n);
-    o.rays.geometry.setDrawRange(0, 2 * Math.min(RAYS, n));
-    for (const a of [onPos, onCol, dirPos, dirCol, rayPos]) a.needsUpdate = true;
-    for (const g of [o.samplesOn.geometry, o.samplesDir.geometry, o.rays.geometry]) g.computeBoundingSphere();
+    for (const a of [onPos, onCol, dirPos, dirCol]) a.needsUpdate = true;
+    for (const g of [o.samplesOn.geometry, o.samplesDir.geometry]) g.computeBoundingSphere();
+    applyCount(o);
 
     // Q6(a) patch and its projection onto the unit sphere around p.
     o.patch.visible = o.patchRays.visible = o.patchProj.visible = !!pt;
@@ -162,6 +179,10 @@ export function Scene3D({ model, strategy, samples, terms, patch, height, dark }
     if (objs.current) apply(objs.current);
   });
   useEffect(() => onChange(), [model, strategy, samples, terms, patch, dark]);
+  const onCount = useEffectEvent(() => {
+    if (objs.current) applyCount(objs.current);
+  });
+  useEffect(() => onCount(), [count]);
 
   const setup = (ctx: ViewportContext) => {
     const T = ctx.THREE;

@@ -1,0 +1,114 @@
+/**
+ * The animation's convergence figure: the running estimate after k samples with its ±2σ band
+ * (σ = s/√k, the standard error the estimator reports), against k on a log axis, and the reference
+ * as a dashed line. The curve and band for all samples are built once per run (memoised on the
+ * run); at position t only a clip rectangle and the marker move, so a frame costs next to nothing.
+ */
+import { memo, useId, useMemo } from 'react';
+import type { SampleRun } from '../model';
+
+const W = 420;
+const H = 230;
+const M = { l: 62, r: 12, t: 14, b: 40 };
+
+function fmt(x: number): string {
+  if (!Number.isFinite(x)) return '—';
+  if (x !== 0 && (Math.abs(x) < 1e-3 || Math.abs(x) >= 1e5)) return x.toExponential(2);
+  return Number(x.toPrecision(3)).toString();
+}
+
+interface Geometry {
+  xOf: (k: number) => number;
+  yOf: (v: number) => number;
+  line: string;
+  band: string;
+  yTicks: number[];
+  xTicks: number[];
+}
+
+function geometry(run: SampleRun, reference: number): Geometry {
+  const n = run.count;
+  const xOf = (k: number) => M.l + ((W - M.l - M.r) * Math.log(Math.max(1, k))) / Math.log(Math.max(2, n));
+  // y range: the band from 8 samples on (earlier σ is too rough to set a scale), and the reference.
+  let lo = Infinity, hi = -Infinity;
+  const from = Math.min(n, 8) - 1;
+  for (let i = Math.max(0, from); i < n; i++) {
+    const m = run.mean[i]!, s = Number.isFinite(run.stderr[i]!) ? run.stderr[i]! : 0;
+    lo = Math.min(lo, m - 2 * s);
+    hi = Math.max(hi, m + 2 * s);
+  }
+  if (Number.isFinite(reference)) {
+    lo = Math.min(lo, reference);
+    hi = Math.max(hi, reference);
+  }
+  if (!(hi > lo)) {
+    const c = Number.isFinite(lo) ? lo : 0;
+    lo = c - Math.max(1e-12, Math.abs(c) * 0.1);
+    hi = c + Math.max(1e-12, Math.abs(c) * 0.1);
+  }
+  const pad = 0.08 * (hi - lo);
+  lo -= pad;
+  hi += pad;
+  const yOf = (v: number) => M.t + ((H - M.t - M.b) * (hi - Math.min(hi, Math.max(lo, v)))) / (hi - lo);
+  let line = '';
+  let upper = '';
+  let lower = '';
+  for (let i = 0; i < n; i++) {
+    const x = xOf(i + 1).toFixed(1);
+    line += `${i ? 'L' : 'M'}${x},${yOf(run.mean[i]!).toFixed(1)}`;
+    const s = run.stderr[i]!;
+    if (i >= 1 && Number.isFinite(s)) {
+      upper += `${upper ? 'L' : 'M'}${x},${yOf(run.mean[i]! + 2 * s).toFixed(1)}`;
+      lower = `L${x},${yOf(run.mean[i]! - 2 * s).toFixed(1)}` + lower;
+    }
+  }
+  const band = upper ? `${upper}${lower}Z` : '';
+  const yTicks = [lo + pad, (lo + hi) / 2, hi - pad];
+  const xTicks: number[] = [];
+  for (let k = 1; k <= n; k *= 10) xTicks.push(k);
+  // the end, unless it would crowd the last power of ten
+  if (n / xTicks[xTicks.length - 1]! >= 2.5) xTicks.push(n);
+  return { xOf, yOf, line, band, yTicks, xTicks };
+}
+
+export const RunningEstimate = memo(function RunningEstimate({ run, reference, k }: { run: SampleRun; reference: number; k: number }) {
+  const g = useMemo(() => geometry(run, reference), [run, reference]);
+  const clip = useId().replace(/:/g, '');
+  const xk = g.xOf(Math.max(1, k));
+  const est = k > 0 ? run.mean[k - 1]! : NaN;
+  return (
+    <svg className="al-running" viewBox={`0 0 ${W} ${H}`} role="img" aria-label={`Running estimate after ${k} of ${run.count} samples: ${fmt(est)}; reference ${fmt(reference)}. The shaded band is ±2 standard errors.`} data-testid="al-running">
+      <defs>
+        <clipPath id={clip}>
+          <rect x={0} y={0} width={k > 0 ? xk + 0.5 : 0} height={H} />
+        </clipPath>
+      </defs>
+      <rect x={M.l} y={M.t} width={W - M.l - M.r} height={H - M.t - M.b} className="al-run-frame" />
+      {g.yTicks.map((v) => (
+        <g key={`y${v}`}>
+          <line x1={M.l - 4} x2={M.l} y1={g.yOf(v)} y2={g.yOf(v)} className="al-run-axis" />
+          <text x={M.l - 6} y={g.yOf(v) + 4} textAnchor="end" className="al-run-tick">
+            {fmt(v)}
+          </text>
+        </g>
+      ))}
+      {g.xTicks.map((v) => (
+        <g key={`x${v}`}>
+          <line x1={g.xOf(v)} x2={g.xOf(v)} y1={H - M.b} y2={H - M.b + 4} className="al-run-axis" />
+          <text x={g.xOf(v)} y={H - M.b + 17} textAnchor="middle" className="al-run-tick">
+            {v}
+          </text>
+        </g>
+      ))}
+      <text x={(M.l + W - M.r) / 2} y={H - 4} textAnchor="middle" className="al-run-tick">
+        samples k (log scale)
+      </text>
+      {Number.isFinite(reference) ? <line x1={M.l} x2={W - M.r} y1={g.yOf(reference)} y2={g.yOf(reference)} className="al-run-ref" /> : null}
+      <g clipPath={`url(#${clip})`}>
+        {g.band ? <path d={g.band} className="al-run-band" /> : null}
+        <path d={g.line} className="al-run-line" />
+      </g>
+      {k > 0 ? <circle cx={xk} cy={g.yOf(est)} r={4} className="al-run-dot" /> : null}
+    </svg>
+  );
+});

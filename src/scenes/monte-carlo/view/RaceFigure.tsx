@@ -1,0 +1,247 @@
+/**
+ * The animation of Q4 (issue 12): samples arrive one by one on the shared timeline (t = samples
+ * drawn so far). Each xᵢ drops onto the integrand, its term f(xᵢ)/p(xᵢ) appears, and the running
+ * estimate with its ± standard-error band and the |error| log-log curve grow with it — uniform and
+ * importance sampling side by side, on the same random numbers ξᵢ. Everything at position t comes
+ * from model.raceAt(track, t); this file only draws it (light SVG, so a frame stays cheap).
+ */
+import { memo, useMemo, useRef, type ReactNode } from 'react';
+import { formatNumber, Readout, TimelineTransport, useTimeline } from '../../../ui';
+import { RACE_DURATION, RACE_MAX, raceAt, racePoints, type LaneState, type RaceTrack } from '../model';
+
+const W = 360;
+const H = 190;
+const M = { l: 64, r: 10, t: 10, b: 30 };
+const PW = W - M.l - M.r;
+const PH = H - M.t - M.b;
+const C_U = 'var(--accent-2)';
+const C_I = 'var(--accent)';
+
+const SUP: Record<string, string> = { '-': '⁻', '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶', '7': '⁷', '8': '⁸', '9': '⁹' };
+const pow10 = (e: number) => `10${String(e).replace(/./g, (c) => SUP[c] ?? c)}`;
+
+type Scale = (v: number) => number;
+const lin = (d0: number, d1: number, r0: number, r1: number): Scale => (v) => r0 + ((v - d0) / (d1 - d0 || 1)) * (r1 - r0);
+const logS = (d0: number, d1: number, r0: number, r1: number): Scale => {
+  const l0 = Math.log10(d0);
+  const l1 = Math.log10(d1);
+  return (v) => r0 + ((Math.log10(v) - l0) / (l1 - l0 || 1)) * (r1 - r0);
+};
+
+function path(xs: readonly number[], ys: readonly number[], sx: Scale, sy: Scale, from = 0): string {
+  let d = '';
+  for (let k = from; k < xs.length; k++) {
+    const y = ys[k]!;
+    if (!Number.isFinite(y)) continue;
+    d += `${d ? 'L' : 'M'}${sx(xs[k]!).toFixed(1)},${sy(y).toFixed(1)}`;
+  }
+  return d;
+}
+
+function Axes({ xTicks, yTicks, xLabel, yLabel }: { xTicks: [number, string][]; yTicks: [number, string][]; xLabel: string; yLabel: string }) {
+  return (
+    <g className="mc-svg-axes">
+      <rect x={M.l} y={M.t} width={PW} height={PH} className="mc-svg-frame" />
+      {xTicks.map(([x, s]) => (
+        <text key={`x${s}`} x={x} y={M.t + PH + 14} textAnchor="middle">
+          {s}
+        </text>
+      ))}
+      {yTicks.map(([y, s]) => (
+        <g key={`y${s}`}>
+          <line x1={M.l} x2={M.l + PW} y1={y} y2={y} className="mc-svg-grid" />
+          <text x={M.l - 4} y={y + 4} textAnchor="end">
+            {s}
+          </text>
+        </g>
+      ))}
+      <text x={M.l + PW / 2} y={H - 2} textAnchor="middle" className="mc-svg-axis-title">
+        {xLabel}
+      </text>
+      <text x={11} y={M.t + PH / 2} textAnchor="middle" transform={`rotate(-90 11 ${M.t + PH / 2})`} className="mc-svg-axis-title">
+        {yLabel}
+      </text>
+    </g>
+  );
+}
+
+const N_TICKS: number[] = [1, 10, 100, 1000].filter((n) => n <= RACE_MAX);
+
+export interface RaceProps {
+  track: RaceTrack;
+  /** f and the importance pdf scaled to f's height, on a grid over [a, b]. */
+  curve: { x: Float64Array; f: Float64Array; p: Float64Array; scale: number };
+  a: number;
+  b: number;
+  /** e.g. "p ∝ f, p = 3(x + 2)²/56". */
+  importanceLabel: string;
+  t: number;
+  play: boolean;
+  setParams: (patch: { t?: number; play?: boolean }) => void;
+}
+
+function Lane({ id, name, color, s, children }: { id: string; name: ReactNode; color: string; s: LaneState; children: ReactNode }) {
+  return (
+    <div className="mc-lane" style={{ borderTopColor: color }}>
+      <h4 className="mc-lane-title" style={{ color }}>
+        {name}
+      </h4>
+      <div className="readouts mc-lane-readouts">
+        <Readout id={`race-${id}-x`} label={<>x<sub>{s.n || 'i'}</sub></>} value={s.n ? s.x : null} digits={6} />
+        <Readout id={`race-${id}-term`} label="its term f/p" value={s.n ? s.term : null} digits={6} />
+        <Readout id={`race-${id}-estimate`} label={`⟨I⟩ after ${s.n}`} value={s.n ? s.estimate : null} digits={7} />
+        <Readout id={`race-${id}-stderr`} label="± s/√N" value={s.n > 1 ? s.stderr : null} digits={3} />
+      </div>
+      {children}
+    </div>
+  );
+}
+
+/** The race figure with its transport. Memoised: only a change of track or position redraws it. */
+export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importanceLabel, t, play, setParams }: RaceProps) {
+  const box = useRef<HTMLDivElement>(null);
+  const tl = useTimeline({ t, play, setParams, max: RACE_MAX, integer: true, duration: RACE_DURATION, visibleRef: box });
+  const points = useMemo(() => racePoints(track.max), [track.max]);
+  const fr = useMemo(() => raceAt(track, tl.t, points), [track, tl.t, points]);
+  const I = track.exact;
+  const s = Math.abs(I) || 1;
+
+  // --- static parts (keyed on the track and the curve, not on t) ----------------------------
+  const fig = useMemo(() => {
+    let lo = 0;
+    let hi = 0;
+    for (let k = 0; k < curve.f.length; k++) {
+      const v = curve.f[k]!;
+      const p = curve.p[k]!;
+      if (Number.isFinite(v)) {
+        lo = Math.min(lo, v);
+        hi = Math.max(hi, v);
+      }
+      if (Number.isFinite(p)) hi = Math.max(hi, p);
+    }
+    if (!(hi > lo)) hi = lo + 1;
+    hi += 0.08 * (hi - lo);
+    const sx = lin(a, b, M.l, M.l + PW);
+    const sy = lin(lo, hi, M.t + PH - 22, M.t);
+    const xs = Array.from(curve.x);
+    const fPath = path(xs, Array.from(curve.f), sx, sy);
+    const pPath = path(xs, Array.from(curve.p), sx, sy);
+    const xt: [number, string][] = [0, 0.25, 0.5, 0.75, 1].map((q) => [sx(a + q * (b - a)), formatNumber(a + q * (b - a), 3)]);
+    let fmax = 0;
+    for (const v of curve.f) if (Number.isFinite(v)) fmax = Math.max(fmax, v);
+    const yt: [number, string][] = (lo < 0 ? [lo, 0, fmax] : [0, fmax / 2, fmax]).map((v) => [sy(v), formatNumber(v, 3)]);
+    // running estimate: the same y range for both lanes, around the exact value
+    let R = 0;
+    for (let k = 3; k < track.max; k++) R = Math.max(R, Math.abs(track.uniform.mean[k]! - I), Math.abs(track.importance.mean[k]! - I));
+    R = Math.max(R * 1.1, 1e-6 * s);
+    const ex = logS(1, track.max, M.l, M.l + PW);
+    const ey = lin(I - R, I + R, M.t + PH, M.t);
+    const nt: [number, string][] = N_TICKS.map((n) => [ex(n), String(n)]);
+    const et: [number, string][] = [-1, 0, 1].map((q) => [ey(I + q * R), formatNumber(I + q * R, 4)]);
+    // |error| log-log: from 10⁻⁵·|I| to |I| (smaller errors sit on the floor line)
+    const e0 = Math.floor(Math.log10(s)) - 5;
+    const e1 = Math.ceil(Math.log10(s)) + 0;
+    const ly = logS(10 ** e0, 10 ** e1, M.t + PH, M.t);
+    const lt: [number, string][] = [];
+    for (let e = e0; e <= e1; e += e1 - e0 > 4 ? 2 : 1) lt.push([ly(10 ** e), pow10(e)]);
+    // N^−½ guide through the uniform lane's final standard deviation: sd/√N is the expected error scale
+    const last = track.max - 1;
+    const sd = Math.sqrt(track.uniform.m2[last]! / Math.max(1, last));
+    const guide = `M${ex(1).toFixed(1)},${ly(Math.max(sd, 10 ** e0)).toFixed(1)}L${ex(track.max).toFixed(1)},${ly(Math.max(sd / Math.sqrt(track.max), 10 ** e0)).toFixed(1)}`;
+    return { sx, sy, fPath, pPath, xt, yt, ex, ey, nt, et, ly, lt, floor: 10 ** e0, guide, R };
+  }, [track, curve, a, b, I, s]);
+
+  const { sx, sy, ex, ey, ly } = fig;
+  const c = fr.curve;
+  const clampE = (v: number) => (Number.isFinite(v) ? Math.max(v, fig.floor) : NaN);
+  const uErr = path(c.n, c.uErr.map(clampE), ex, ly);
+  const iErr = path(c.n, c.iErr.map(clampE), ex, ly);
+  const clampY = (v: number) => Math.max(I - fig.R, Math.min(I + fig.R, v));
+  const band = (est: number[], se: number[]) => {
+    const up: string[] = [];
+    const dn: string[] = [];
+    for (let k = 0; k < c.n.length; k++) {
+      if (!Number.isFinite(se[k]!)) continue;
+      up.push(`${ex(c.n[k]!).toFixed(1)},${ey(clampY(est[k]! + se[k]!)).toFixed(1)}`);
+      dn.push(`${ex(c.n[k]!).toFixed(1)},${ey(clampY(est[k]! - se[k]!)).toFixed(1)}`);
+    }
+    return up.length ? `M${up.join('L')}L${dn.reverse().join('L')}Z` : '';
+  };
+  const estPath = (est: number[]) => path(c.n, est.map(clampY), ex, ey);
+  const u = fr.uniform;
+  const im = fr.importance;
+  const rate = (RACE_MAX / RACE_DURATION) * tl.speed;
+  const newestDot = (x: number, fx: number, color: string, row: number) => (
+    <g key={`${row}-${fr.t}`} className="mc-drop">
+      <line x1={sx(x)} x2={sx(x)} y1={M.t} y2={sy(fx)} style={{ stroke: color }} strokeDasharray="2 3" />
+      <circle cx={sx(x)} cy={sy(fx)} r={5} style={{ fill: color }} />
+    </g>
+  );
+  const rugY = (row: number) => M.t + PH - 16 + row * 9;
+  const rug = (xs: number[], color: string, row: number) =>
+    xs.map((x, k) => <line key={k} x1={sx(x)} x2={sx(x)} y1={rugY(row)} y2={rugY(row) + 7} style={{ stroke: color, strokeOpacity: 0.25 + (0.75 * (k + 1)) / xs.length }} />);
+
+  return (
+    <div className="mc-race" ref={box} data-testid="race">
+      <TimelineTransport timeline={tl} label="Samples arriving" format={(n) => `${n} of ${RACE_MAX} samples`} testId="timeline">
+        <span className="mc-note" data-testid="race-rate">
+          {formatNumber(rate, 4)} samples/s
+        </span>
+      </TimelineTransport>
+      <div className="mc-race-grid">
+        <figure className="mc-svg-fig">
+          <figcaption>Each xᵢ drops onto f</figcaption>
+          <svg viewBox={`0 0 ${W} ${H}`} role="img" aria-label={`The integrand f over [${a}, ${b}] with the ${fr.t} samples drawn so far, uniform and importance`}>
+            <Axes xTicks={fig.xt} yTicks={fig.yt} xLabel="x" yLabel="f(x)" />
+            <path d={fig.fPath} className="mc-svg-f" />
+            <path d={fig.pPath} style={{ stroke: C_I }} className="mc-svg-p" />
+            {rug(fr.recentU, C_U, 0)}
+            {rug(fr.recentI, C_I, 1)}
+            {u.n ? newestDot(u.x, u.term / (b - a), C_U, 0) : null}
+            {im.n ? newestDot(im.x, curveAt(curve, im.x), C_I, 1) : null}
+          </svg>
+        </figure>
+        <figure className="mc-svg-fig">
+          <figcaption>|⟨I⟩ − I| against N, log-log</figcaption>
+          <svg viewBox={`0 0 ${W} ${H}`} role="img" aria-label="Absolute error of the running estimate against the number of samples, log-log, uniform and importance">
+            <Axes xTicks={fig.nt} yTicks={fig.lt} xLabel="N (samples)" yLabel="|error|" />
+            <path d={fig.guide} className="mc-svg-guide" />
+            <path d={uErr} style={{ stroke: C_U }} className="mc-svg-line" />
+            <path d={iErr} style={{ stroke: C_I }} className="mc-svg-line" />
+          </svg>
+        </figure>
+        <Lane id="uniform" name="Uniform, p = 1/(b − a)" color={C_U} s={u}>
+          <svg viewBox={`0 0 ${W} ${H}`} role="img" aria-label="Running estimate of the uniform estimator with its ± standard-error band, against N on a log axis">
+            <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
+            <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
+            <path d={band(c.u, c.uSe)} style={{ fill: C_U }} className="mc-svg-band" />
+            <path d={estPath(c.u)} style={{ stroke: C_U }} className="mc-svg-line" />
+          </svg>
+        </Lane>
+        <Lane id="importance" name={`Importance, ${importanceLabel}`} color={C_I} s={im}>
+          <svg viewBox={`0 0 ${W} ${H}`} role="img" aria-label="Running estimate of the importance-sampling estimator with its ± standard-error band, against N on a log axis">
+            <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
+            <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
+            <path d={band(c.i, c.iSe)} style={{ fill: C_I }} className="mc-svg-band" />
+            <path d={estPath(c.i)} style={{ stroke: C_I }} className="mc-svg-line" />
+          </svg>
+        </Lane>
+      </div>
+      <p className="mc-note">
+        Blue: uniform; orange: importance (its pdf dashed on f). Dashed line: the exact I = {formatNumber(I, 8)}; grey: the N^−½ trend σ/√N. Both estimators use the same random numbers ξᵢ (seeded): uniform puts xᵢ = a + (b − a)ξᵢ, importance xᵢ = P⁻¹(ξᵢ).
+        {' '}Errors below {pow10(Math.round(Math.log10(fig.floor)))} sit on the bottom line.
+      </p>
+    </div>
+  );
+});
+
+/** f at x, interpolated on the drawn grid (for placing the importance sample's dot on the curve). */
+function curveAt(curve: { x: Float64Array; f: Float64Array }, x: number): number {
+  const n = curve.x.length;
+  const x0 = curve.x[0]!;
+  const x1 = curve.x[n - 1]!;
+  const q = ((x - x0) / (x1 - x0 || 1)) * (n - 1);
+  const k = Math.max(0, Math.min(n - 2, Math.floor(q)));
+  const w = q - k;
+  return curve.f[k]! * (1 - w) + curve.f[k + 1]! * w;
+}

@@ -1,0 +1,98 @@
+/** RMSE over independent (randomized) runs against N, and against the measured run time. */
+import { useMemo, useRef } from 'react';
+import { NumberField, Panel, Plot, type PlotTrace } from '../../../ui';
+import { atRoundingLevel, sortedByX } from '../model';
+import type { ProblemArgs, RmseData } from '../jobs';
+import { REDRAW_MS, useAutoRun, useLegendRoom, useThrottled } from './hooks';
+import { arr, clampArr, COLORS, Heading, hexA, L_RMSE, L_TIME, RunBar } from './plotStyle';
+
+type RmseResult = { rmse: RmseData[]; exact?: number; problems?: string[] };
+
+export function RmsePanel({ args, nMax, runs, exact, makeWorker, onRuns }: { args: ProblemArgs; nMax: number; runs: number; exact: number; makeWorker: () => Worker; onRuns: (r: number) => void }) {
+  const box = useRef<HTMLDivElement>(null);
+  const key = JSON.stringify([args, nMax, runs]);
+  const task = useAutoRun<RmseResult, RmseResult>('rmse', makeWorker, { ...args, nMax, runs }, key, box);
+  const cur = useThrottled(task.result ?? task.partial, REDRAW_MS, !task.running);
+  const rm = cur?.rmse ?? [];
+  const rmExactLabels = rm.filter((s) => atRoundingLevel(s.rmse, exact)).map((s) => s.label);
+
+  const rmseData = useMemo<PlotTrace[]>(() => {
+    const t: PlotTrace[] = [];
+    rm.forEach((s, i) => {
+      if (atRoundingLevel(s.rmse, exact)) return;
+      const c = COLORS[i % COLORS.length]!;
+      const n = arr(s.n);
+      t.push({ type: 'scatter', mode: 'lines', x: n, y: clampArr(s.hi), line: { width: 0, color: c }, hoverinfo: 'skip', showlegend: false, legendgroup: s.label });
+      t.push({ type: 'scatter', mode: 'lines', x: n, y: clampArr(s.lo), line: { width: 0, color: c }, fill: 'tonexty', fillcolor: hexA(c, 0.15), hoverinfo: 'skip', showlegend: false, legendgroup: s.label });
+      t.push({
+        type: 'scatter',
+        mode: 'lines+markers',
+        x: n,
+        y: clampArr(s.rmse),
+        name: `${s.label} (slope ${Number.isFinite(s.slope) ? s.slope.toFixed(2) : '—'})`,
+        line: { color: c, width: 2 },
+        marker: { size: 5 },
+        legendgroup: s.label,
+      });
+    });
+    return t;
+  }, [rm, exact]);
+
+  const timeData = useMemo<PlotTrace[]>(
+    () =>
+      rm.flatMap((s, i) => {
+        if (atRoundingLevel(s.rmse, exact)) return [];
+        // x = measured time: sorted, so the curve never doubles back (n × cost per sample is
+        // already increasing, but a curve against time must not depend on that)
+        const pts = sortedByX(arr(s.n).flatMap((n, k) => (s.timeMs[k]! > 0 && Number.isFinite(s.rmse[k]!) && s.rmse[k]! > 0 ? [{ x: s.timeMs[k]!, y: s.rmse[k]!, n }] : [])));
+        return {
+          type: 'scatter',
+          mode: 'lines+markers',
+          x: pts.map((p) => p.x),
+          y: pts.map((p) => p.y),
+          text: pts.map((p) => `N = ${p.n}`),
+          name: s.label,
+          line: { color: COLORS[i % COLORS.length], width: 2 },
+          marker: { size: 5 },
+        };
+      }),
+    [rm, exact],
+  );
+
+  const runsDone = rm[0]?.runs ?? 0;
+  const h = 300 + useLegendRoom();
+  return (
+    <Panel title="RMSE over independent runs, and against run time" className="mc-plots">
+      <div ref={box}>
+        <div className="mc-inline">
+          <NumberField label="runs" value={runs} min={4} max={256} step={1} onChange={(v) => onRuns(Math.round(v))} testId="runs-input" />
+          <span className="mc-note">
+            {runsDone} run{runsDone === 1 ? '' : 's'} per strategy so far, N up to {nMax.toLocaleString('en')}
+          </span>
+        </div>
+        <RunBar running={task.running} waiting={task.waiting} progress={task.progress} onCancel={task.cancel} onRun={task.run} label="Independent runs…" />
+        {task.error ? <p className="field-error">The run failed: {task.error}</p> : null}
+        <Heading>RMSE over the runs (band: 10–90 % of |error|)</Heading>
+        <Plot
+          data={rmseData}
+          height={h}
+          ariaLabel="Root mean square error over independent runs against N, log-log, with bands from the 10th to the 90th percentile of the absolute error"
+          layout={L_RMSE}
+        />
+        <Heading>Accuracy per millisecond: RMSE against run time</Heading>
+        <Plot
+          data={timeData}
+          height={h}
+          ariaLabel="RMSE against the measured wall-clock time of one estimate, log-log, per strategy"
+          layout={L_TIME}
+        />
+        {rmExactLabels.length ? <p className="mc-note">Not drawn: {rmExactLabels.join(', ')} (RMSE at rounding level: zero variance).</p> : null}
+        <p className="mc-note">
+          Run time of one N-sample estimate = N × the cost per sample measured over all runs in a worker in your browser (set-up such as tabulating a pdf is not
+          counted). A curve further down and to the left buys more accuracy per millisecond.
+        </p>
+      </div>
+    </Panel>
+  );
+}
+

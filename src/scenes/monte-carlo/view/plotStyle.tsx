@@ -1,0 +1,52 @@
+/** Shared look of the scene's Plotly views: colours, legend and margins, layouts, the run bar. */
+import type { ReactNode } from 'react';
+
+export const COLORS = ['#1f5fa8', '#a13f00', '#1d7a3a', '#7b3fa1', '#b8860b', '#d6336c', '#117a8b'];
+export const arr = (a: ArrayLike<number>) => Array.from(a);
+/** Legend above the plot (below, it collides with the x-axis title on narrow screens). */
+export const LEGEND = { orientation: 'h', x: 0, xanchor: 'left', y: 1.02, yanchor: 'bottom' };
+export const MARGIN = { l: 60, r: 12, t: 12, b: 48 };
+
+// Layouts are module constants: Plot re-renders whenever its layout object changes identity.
+export const L_FUNC = { legend: LEGEND, margin: MARGIN, xaxis: { title: { text: 'x' } } };
+export const L_EST = { xaxis: { type: 'log', title: { text: 'N (samples)' } }, yaxis: { title: { text: 'estimate' } }, legend: LEGEND, margin: MARGIN };
+export const L_ERR = { xaxis: { type: 'log', title: { text: 'N' } }, yaxis: { type: 'log', title: { text: '|estimate − exact|' }, exponentformat: 'power' }, legend: LEGEND, margin: MARGIN };
+export const L_RMSE = { xaxis: { type: 'log', title: { text: 'N' } }, yaxis: { type: 'log', title: { text: 'RMSE' }, exponentformat: 'power' }, legend: LEGEND, margin: MARGIN };
+export const L_TIME = { xaxis: { type: 'log', title: { text: 'ms per estimate (measured here)' } }, yaxis: { type: 'log', title: { text: 'RMSE' }, exponentformat: 'power' }, legend: LEGEND, margin: MARGIN };
+export const L_HIST = { xaxis: { title: { text: 'estimate ⟨I⟩' } }, yaxis: { title: { text: 'count' } }, bargap: 0, legend: LEGEND, margin: MARGIN };
+
+export function Heading({ children }: { children: ReactNode }) {
+  return <h3 className="mc-plot-title">{children}</h3>;
+}
+
+export function RunBar({ running, waiting, progress, onCancel, onRun, label }: { running: boolean; waiting: boolean; progress: number; onCancel: () => void; onRun: () => void; label: ReactNode }) {
+  return (
+    <div className="mc-runbar">
+      {waiting && !running ? (
+        <span role="status">Waiting for the run above to finish…</span>
+      ) : running ? (
+        <>
+          <progress max={1} value={progress} aria-label="progress" />
+          <span role="status">
+            {label} {Math.round(progress * 100)} %
+          </span>
+          <button type="button" onClick={onCancel}>
+            Cancel
+          </button>
+        </>
+      ) : (
+        <button type="button" onClick={onRun}>
+          Run again
+        </button>
+      )}
+    </div>
+  );
+}
+
+/** Positive finite values, null elsewhere (a gap on a log axis). */
+export const clampArr = (a: Float64Array) => arr(a).map((v) => (Number.isFinite(v) && v > 0 ? v : null));
+
+export function hexA(hex: string, a: number): string {
+  const v = parseInt(hex.slice(1), 16);
+  return `rgba(${(v >> 16) & 255}, ${(v >> 8) & 255}, ${v & 255}, ${a})`;
+}

@@ -1,0 +1,68 @@
+/**
+ * The texture scene's animation plumbing (src/scenes/texture/anim.tsx): the timeline store that
+ * lets only the animated parts re-render per frame, the worked steps' position, and the frame
+ * cache that the animated parts share (it must return exactly the model's frame at t).
+ */
+import { describe, expect, it } from 'vitest';
+import { STEP, animContext, createTimelineStore, workedPosition } from '../../../src/scenes/texture/anim';
+import { drawnLookup, frameAt, lookupOptions, pathOf, resolveGrid } from '../../../src/scenes/texture/model';
+import type { Timeline } from '../../../src/ui';
+
+const tl = (t: number, playing: boolean) => ({ t, playing }) as Timeline;
+
+describe('timeline store', () => {
+  it('starts at the link position (clamped), notifies only on a change of position or playing', () => {
+    expect(createTimelineStore(Number.NaN).t()).toBe(0);
+    expect(createTimelineStore(7).t()).toBe(1);
+    const s = createTimelineStore(0.3);
+    expect(s.t()).toBe(0.3);
+    expect(s.timeline()).toBeNull();
+    let calls = 0;
+    const off = s.subscribe(() => calls++);
+    const a = tl(0.3, false);
+    s.publish(a);
+    expect(calls).toBe(0);
+    expect(s.timeline()).toBe(a);
+    s.publish(tl(0.3, true));
+    expect(calls).toBe(1);
+    expect(s.playing()).toBe(true);
+    s.publish(tl(0.41, true));
+    expect(calls).toBe(2);
+    expect(s.t()).toBe(0.41);
+    off();
+    s.publish(tl(0.5, true));
+    expect(calls).toBe(2);
+    expect(s.t()).toBe(0.5);
+  });
+
+  it('worked steps: the last whole step while playing, the exact position when paused', () => {
+    expect(workedPosition(0.437, false)).toBe(0.437);
+    expect(workedPosition(0.437, true)).toBeCloseTo(0.4, 12);
+    // a position that is a whole step stays on it despite rounding (0.15 / 0.05 = 2.9999…)
+    expect(workedPosition(0.15, true)).toBeCloseTo(0.15, 12);
+    const s = createTimelineStore(0);
+    s.publish(tl(0.437, true));
+    expect(s.tWorked()).toBeCloseTo(Math.floor(0.437 / STEP) * STEP, 12);
+    s.publish(tl(0.437, false));
+    expect(s.tWorked()).toBe(0.437);
+  });
+});
+
+describe('frame cache', () => {
+  it('returns the model frame at t (and its drawn lookup), the same object for the same t', () => {
+    const src = resolveGrid({ grid: '', preset: 'random', size: 6, seed: 3 });
+    const opts = lookupOptions({ align: 'center', vflip: true, wrap: 'mirror' });
+    const path = pathOf({ u: -0.3, v: 0.2, u2: 1.4, v2: 0.9, path: 'circle' });
+    const committed = pathOf({ u: 0.1, v: 0.2, u2: 0.8, v2: 0.7, path: 'line' });
+    const ctx = animContext(createTimelineStore(0), src.grid, opts, src, path, committed);
+    for (const t of [0, 0.13, 0.5, 0.97, 1]) {
+      const f = ctx.frame(t);
+      const want = frameAt(src.grid, opts, path, t);
+      expect(f.frame).toEqual(want);
+      expect(f.dq).toEqual(drawnLookup(src.grid, want.u, want.v, opts));
+      expect(ctx.frame(t)).toBe(f);
+      expect(ctx.worked(t)).toEqual(frameAt(src.grid, opts, committed, t));
+      expect(ctx.worked(t)).toBe(ctx.worked(t));
+    }
+  });
+});
