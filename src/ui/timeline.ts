@@ -131,10 +131,20 @@ export function useTimeline(opts: TimelineOptions): Timeline {
     }
   }, [opts.t, max, integer]);
   // external change of `play`
+  // (a host page's pause must also leave the paused position in the URL, as the Pause button does)
   useEffect(() => {
-    if (opts.play !== written.current.play) {
-      written.current.play = opts.play;
-      setPlaying(opts.play && !prefersReducedMotion());
+    if (opts.play === written.current.play) return;
+    written.current.play = opts.play;
+    const l = live.current;
+    if (opts.play) {
+      if (prefersReducedMotion()) return;
+      if (l.exact >= l.max) setExact(0); // play from the start after the end
+      setPlaying(true);
+    } else if (l.playing) {
+      setPlaying(false);
+      const t = l.integer ? Math.floor(l.exact + 1e-9) : l.exact;
+      written.current.t = t;
+      l.setParams({ t });
     }
   }, [opts.play]);
   // a shorter timeline (e.g. fewer samples) clamps the position
