@@ -5,7 +5,7 @@
  * independent of the app's Van Oosterom–Strackee code); bad input gives a message and a fallback.
  */
 import AxeBuilder from '@axe-core/playwright';
-import { test, expect, openScene, readout, readoutNumber } from './fixtures';
+import { test, expect, openScene, readout, readoutNumber, countAnimationFrames } from './fixtures';
 import { defaultValues, parseParams } from '../../src/app/params';
 import { schema } from '../../src/scenes/area-light/params';
 import { animationFrame, animationLength, buildModel, givenSamples, patchModel, sampleRun } from '../../src/scenes/area-light/model';
@@ -333,15 +333,7 @@ test('animation: at the end the running estimate is the n-sample estimate; the f
 });
 
 test('reduced motion: play=1 in the link starts paused; and no animation frames are requested while paused', async ({ page }) => {
-  await page.addInitScript(() => {
-    const w = window as unknown as { __raf: number };
-    w.__raf = 0;
-    const orig = window.requestAnimationFrame.bind(window);
-    window.requestAnimationFrame = (cb) => {
-      w.__raf++;
-      return orig(cb);
-    };
-  });
+  await countAnimationFrames(page);
   await page.emulateMedia({ reducedMotion: 'reduce' });
   await openScene(page, '#/area-light?play=1&t=10&n=512');
   const tl = page.getByTestId('timeline');

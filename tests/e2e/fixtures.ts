@@ -57,3 +57,19 @@ export async function waitForReadout(page: Page, id: string, pred: (v: string) =
     .toBe(true);
   return last;
 }
+
+/**
+ * Count requestAnimationFrame calls from the page's first script on, in `window.__raf` (call before
+ * the page loads): "nothing renders while paused / idle" is then `__raf` not growing.
+ */
+export async function countAnimationFrames(page: Page): Promise<void> {
+  await page.addInitScript(() => {
+    const w = window as unknown as { __raf: number };
+    w.__raf = 0;
+    const orig = window.requestAnimationFrame.bind(window);
+    window.requestAnimationFrame = (cb) => {
+      w.__raf++;
+      return orig(cb);
+    };
+  });
+}

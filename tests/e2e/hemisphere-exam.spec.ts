@@ -4,7 +4,7 @@
  * code, same seed), never from the answer key.
  */
 import type { Page } from '@playwright/test';
-import { test, expect, openScene, readout, readoutNumber } from './fixtures';
+import { test, expect, openScene, readout, readoutNumber, countAnimationFrames } from './fixtures';
 import { animFrame, computeDrawStats, growCount, makeLobe, rmseOverRuns } from '../../src/scenes/hemisphere/model';
 import { examLobeK } from '../../src/core/sampling';
 import { formatNumber } from '../../src/ui/Readout';
@@ -191,15 +191,7 @@ test.describe('the warp morph on the shared timeline', () => {
   });
 
   test('zero animation frames while paused and idle', async ({ page }) => {
-    await page.addInitScript(() => {
-      const w = window as unknown as { __raf: number };
-      w.__raf = 0;
-      const orig = window.requestAnimationFrame.bind(window);
-      window.requestAnimationFrame = (cb) => {
-        w.__raf++;
-        return orig(cb);
-      };
-    });
+    await countAnimationFrames(page);
     await openScene(page, '#/hemisphere?n=5000');
     await statsReady(page);
     await expect(page.getByTestId('hemisphere-3d')).toHaveAttribute('data-status', 'ready', { timeout: 30_000 });

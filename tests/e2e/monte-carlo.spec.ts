@@ -4,7 +4,7 @@
  * never pasted from the answer key or from the app.
  */
 import AxeBuilder from '@axe-core/playwright';
-import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
+import { test, expect, openScene, readout, readoutNumber, waitForReadout, countAnimationFrames } from './fixtures';
 import { raceAt, raceTrack } from '../../src/scenes/monte-carlo/model';
 import { squarePdf1D } from '../../src/core/sampling/pdf1d';
 
@@ -280,15 +280,7 @@ test.describe('animation: samples arrive one by one', () => {
   });
 
   test('reduced motion starts paused even with play=1; no animation frames while paused', async ({ page }) => {
-    await page.addInitScript(() => {
-      const w = window as unknown as { __raf: number };
-      w.__raf = 0;
-      const orig = window.requestAnimationFrame.bind(window);
-      window.requestAnimationFrame = (cb) => {
-        w.__raf++;
-        return orig(cb);
-      };
-    });
+    await countAnimationFrames(page);
     await page.emulateMedia({ reducedMotion: 'reduce' });
     await openScene(page, '#/monte-carlo?play=1&t=120');
     const tl = page.getByTestId('timeline');

@@ -1,6 +1,6 @@
 // #/ray-sphere, exam first (issue 11) and the sweep animation on the shared timeline (issue 12).
 // Expected values are computed here, by the scene's own pure model or by plain arithmetic.
-import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
+import { test, expect, openScene, readout, readoutNumber, waitForReadout, countAnimationFrames } from './fixtures';
 import { checkInputs, computeModel, makeSweep, paramsAt, sweepAt } from '../../src/scenes/ray-sphere/model';
 import type { RaySphereParams } from '../../src/scenes/ray-sphere/params';
 
@@ -145,15 +145,7 @@ test.describe('sweep animation on the shared timeline', () => {
   });
 
   test('no animation frames while paused; frames while playing', async ({ page }) => {
-    await page.addInitScript(() => {
-      const w = window as unknown as { __raf: number };
-      w.__raf = 0;
-      const orig = window.requestAnimationFrame.bind(window);
-      window.requestAnimationFrame = (cb) => {
-        w.__raf++;
-        return orig(cb);
-      };
-    });
+    await countAnimationFrames(page);
     await openScene(page, P([-3, 0.3, 0.2], [1, 0, 0]));
     const count = () => page.evaluate(() => (window as unknown as { __raf: number }).__raf);
     const quiet = async () => {

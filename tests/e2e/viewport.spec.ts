@@ -1,6 +1,6 @@
 // The shared 3D viewport (src/three): keyboard orbit and zoom, a visible focus ring, "Reset view",
 // a labelled axis triad, and no animation frames while idle. Checked on #/ray-sphere and #/hemisphere.
-import { test, expect, openScene } from './fixtures';
+import { test, expect, openScene, countAnimationFrames } from './fixtures';
 
 test.describe('shared 3D viewport', () => {
   test('arrows orbit, + / − zoom, Reset view and Home restore; focus is visible; axes are labelled', async ({ page }) => {
@@ -64,15 +64,7 @@ test.describe('shared 3D viewport', () => {
   });
 
   test('an idle 3D view requests no animation frames', async ({ page }) => {
-    await page.addInitScript(() => {
-      const w = window as unknown as { __raf: number };
-      w.__raf = 0;
-      const orig = window.requestAnimationFrame.bind(window);
-      window.requestAnimationFrame = (cb) => {
-        w.__raf++;
-        return orig(cb);
-      };
-    });
+    await countAnimationFrames(page);
     await openScene(page, '#/ray-sphere');
     const vp = page.getByTestId('view-3d');
     await vp.scrollIntoViewIfNeeded();
