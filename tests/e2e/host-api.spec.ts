@@ -172,28 +172,36 @@ test('with origin= the scene answers only that origin', async ({ page }) => {
   expect(heights).toBe(0);
 });
 
-test('the posted height follows the content both ways: it shrinks after the host widens the iframe', async ({ page }) => {
+test('the posted height follows the content both ways: it shrinks as well as grows when the host resizes the iframe', async ({ page }) => {
   await page.setViewportSize({ width: 1400, height: 900 });
   await openHost(page, '#/texture?embed=1');
   const lastHeight = () =>
     page.evaluate(() => (window as unknown as { rml: { received: Msg[] } }).rml.received.filter((m) => m.type === 'render-math-lab:height').at(-1)?.height as number | undefined ?? 0);
-  await page.evaluate(() => {
-    const f = document.getElementById('scene') as HTMLIFrameElement;
-    f.style.width = '380px';
-  });
-  await expect.poll(lastHeight, { timeout: 20000 }).toBeGreaterThan(1500);
-  const narrow = await lastHeight();
+  const f = page.frames().find((x) => x.url().startsWith(`http://127.0.0.1:${appPort}/`))!;
+  // the embedded page's content height (what the posted height must follow)
+  const content = () => f.evaluate(() => Math.ceil(document.getElementById('root')!.getBoundingClientRect().bottom + window.scrollY));
+  const setWidth = (w: number) =>
+    page.evaluate((w) => {
+      (document.getElementById('scene') as HTMLIFrameElement).style.width = `${w}px`;
+    }, w);
+  // settle at a width: the posted height equals the content's height there
+  const settle = async () => {
+    await expect.poll(async () => Math.abs((await lastHeight()) - (await content())), { timeout: 20000 }).toBeLessThanOrEqual(1);
+    return lastHeight();
+  };
+  await setWidth(380);
+  const narrow = await settle();
+  expect(narrow).toBeGreaterThan(1500);
   // the host page applies it: the iframe is as tall as the narrow layout
   await expect.poll(() => page.evaluate(() => (document.getElementById('scene') as HTMLIFrameElement).getBoundingClientRect().height)).toBeGreaterThan(narrow - 5);
-  await page.evaluate(() => {
-    (document.getElementById('scene') as HTMLIFrameElement).style.width = '1300px';
-  });
-  await expect.poll(lastHeight, { timeout: 20000 }).toBeLessThan(narrow * 0.8);
-  // and it matches the content of the embedded page
-  const f = page.frames().find((x) => x.url().startsWith(`http://127.0.0.1:${appPort}/`))!;
-  const content = await f.evaluate(() => Math.ceil(document.getElementById('root')!.getBoundingClientRect().bottom + window.scrollY));
-  await expect.poll(lastHeight).toBeGreaterThanOrEqual(content - 1);
-  expect(await lastHeight()).toBeLessThanOrEqual(content + 1);
+  await setWidth(1300);
+  const wide = await settle();
+  expect(Math.abs(wide - narrow), 'the two layouts differ in height').toBeGreaterThan(50);
+  // and back: one of the two steps made the content shorter, and the posted height followed it down
+  await setWidth(380);
+  const again = await settle();
+  expect(again).toBeLessThanOrEqual(narrow + 1);
+  expect(again).toBeGreaterThanOrEqual(narrow - 1);
 });
 
 test('"Copy embed code" gives an iframe with an id and the listener that sizes it', async ({ page, context }) => {
