@@ -75,10 +75,11 @@ try {
     for (const [k, v] of [...byUrl].sort((a, b) => b[1] - a[1]).slice(0, 12)) console.log(`${v.toFixed(0).padStart(7)} ms  ${k}`);
     console.log('-- by function (self)');
     for (const [k, v] of [...byFn].sort((a, b) => b[1] - a[1]).slice(0, top)) console.log(`${v.toFixed(0).padStart(7)} ms  ${k}`);
-    // the longest busy stretches (no idle sample for > 4 ms): what ran in each, by inclusive time
+    // the longest busy stretches (no idle sample for > GAP_MS, default 30 ms: CPU throttling itself shows as idle samples): what ran in each, by inclusive time
     const parent = new Map();
     for (const n of profile.nodes) for (const c of n.children ?? []) parent.set(c, n.id);
     const stretches = [];
+    const GAP_US = Number(process.env.GAP_MS ?? 30) * 1000;
     let cur = null;
     let clock = profile.startTime;
     for (let i = 0; i < profile.samples.length; i++) {
@@ -86,7 +87,7 @@ try {
       const n = nodes.get(profile.samples[i]);
       const idle = n.callFrame.functionName === '(idle)';
       if (!idle) {
-        if (!cur || clock - cur.end > 4000) {
+        if (!cur || clock - cur.end > GAP_US) {
           cur = { start: clock, end: clock, samples: [] };
           stretches.push(cur);
         }
