@@ -151,8 +151,8 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
         {activePreset ? <p className="rs-small rs-preset-what">{activePreset.what}</p> : null}
       </div>
     ),
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-    [activePreset?.id, setParams],
+    // activePreset is one of the module-level preset objects (or undefined): a stable identity
+    [activePreset, setParams],
   );
 
   const fields = useMemo(
