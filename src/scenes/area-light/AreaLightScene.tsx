@@ -6,27 +6,7 @@
  */
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
-import {
-  Derivation,
-  ExamPart,
-  ExamQuestion,
-  ExploreFurther,
-  KeyNote,
-  LiveAnswer,
-  MathTex,
-  Notice,
-  NumberField,
-  Panel,
-  Plot,
-  Readout,
-  SceneLayout,
-  Select,
-  Slider,
-  TimelineTransport,
-  Toggle,
-  useSeenOnce,
-  useTimeline,
-} from '../../ui';
+import { Derivation, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Plot, Readout, SceneLayout, Select, Slider, TimelineTransport, Toggle, useSeenOnce, useTimeline } from '../../ui';
 import type { PlotTrace } from '../../ui';
 import { useWorkerJob } from '../../workers';
 import type { LightStrategy } from '../../core/lights';

@@ -6,22 +6,7 @@
  */
 import { memo, useCallback, useDeferredValue, useEffect, useMemo, useRef, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
-import {
-  Derivation as DerivationBlock,
-  ExamPart,
-  ExamQuestion,
-  ExploreFurther,
-  KeyNote,
-  LiveAnswer,
-  MathTex,
-  Notice,
-  NumberField,
-  Panel,
-  Readout,
-  Select,
-  TimelineTransport,
-  useTimeline,
-} from '../../ui';
+import { Derivation as DerivationBlock, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Readout, Select, TimelineTransport, useTimeline } from '../../ui';
 import type { RaySphereHit } from '../../core/geometry';
 import { CASE_PRESETS, PRECISION_PRESETS, schema, type Preset, type RaySphereParams } from './params';
 import {
