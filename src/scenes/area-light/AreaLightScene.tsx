@@ -460,7 +460,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
                     </tbody>
                   </table>
                 </div>
-                <MathTex display tex={String.raw`\langle L_o\rangle_{N=4} = \tfrac{1}{4}\left(${given.samples.map((g) => fmt(g.term, 5)).join(' + ')}\right) = ${fmt(given.estimate, 5)}`} />
+                <MathTex display tex={String.raw`\langle L_o\rangle_{N=4} = \tfrac{1}{4}\big(${given.samples.map((g) => fmt(g.term, 5)).join(' + ')}\big) = ${fmt(given.estimate, 5)}`} />
                 <Readout id="given-estimate" label="⟨L_o⟩ from these 4 samples" value={given.estimate} digits={7} />
               </li>
             </ol>
