@@ -424,7 +424,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
               </li>
               <li>
                 With numbers — the first four samples of seed {seed} (f = ρ/π = {fmt(fArea)}, L = {fmt(model.L)}):
-                <div className="al-table-wrap">
+                <div className="al-table-wrap" tabIndex={0} role="group" aria-label="The first four samples (the table scrolls sideways on narrow screens)">
                   <table className="al-table al-given" data-testid="given-samples">
                     <thead>
                       <tr>
