@@ -563,7 +563,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
         Yellow: the emitting side of the light (its back is dark). Dots: the samples of the {STRATEGY_LABEL[strategy]} strategy arrived so far
         {strategy === 'cosine' ? ', as directions on the unit hemisphere' : ' on the light, and their directions on the unit hemisphere'} — green where the sample
         contributes, red where it is wasted (below the horizon, blocked, or missing the light); lines to the newest. Orange: the Q6(a) patch and its projection on
-        the unit sphere. Right: the running estimate with ±2 standard errors, converging on the reference (dashed).
+        the unit sphere. The small plot (beside the view, or below it on narrow screens): the running estimate with ±2 standard errors, converging on the reference (dashed).
       </p>
     </div>
     </div>
