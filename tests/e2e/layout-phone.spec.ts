@@ -8,6 +8,7 @@
  *   never scrolls sideways.
  */
 import type { Page } from '@playwright/test';
+import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene } from './fixtures';
 
 /** Each scene: its first exam question's heading, the box that holds its inputs. */
@@ -152,5 +153,17 @@ test.describe('375 px: derivations', () => {
       }
       expect(await page.evaluate(() => document.documentElement.scrollWidth)).toBeLessThanOrEqual(375);
     });
+  }
+});
+
+test('375 px: the dissolved one-column layout stays accessible (axe: no serious or critical violations)', async ({ page }) => {
+  test.setTimeout(180_000);
+  await page.setViewportSize({ width: 375, height: 800 });
+  for (const path of ['area-light', 'texture']) {
+    await openScene(page, `#/${path}`);
+    await typesetAll(page);
+    const r = await new AxeBuilder({ page }).analyze();
+    const bad = r.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
+    expect(bad, path).toEqual([]);
   }
 });
