@@ -157,9 +157,9 @@ test.describe('375 px: derivations', () => {
 });
 
 test('375 px: the dissolved one-column layout stays accessible (axe: no serious or critical violations)', async ({ page }) => {
-  test.setTimeout(180_000);
+  test.setTimeout(420_000);
   await page.setViewportSize({ width: 375, height: 800 });
-  for (const path of ['area-light', 'texture']) {
+  for (const path of ['area-light', 'texture', 'monte-carlo', 'hemisphere', 'ray-sphere']) {
     await openScene(page, `#/${path}`);
     await typesetAll(page);
     const r = await new AxeBuilder({ page }).analyze();
