@@ -403,7 +403,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
               </li>
               <li>
                 With numbers — the first four samples of seed {seed} (f = ρ/π = {fmt(fArea)}, L = {fmt(model.L)}):
-                <div className="al-table-wrap">
+                <div className="al-table-wrap" tabIndex={0} role="group" aria-label="The first four samples (the table scrolls sideways on narrow screens)">
                   <table className="al-table al-given" data-testid="given-samples">
                     <thead>
                       <tr>
@@ -439,7 +439,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
                     </tbody>
                   </table>
                 </div>
-                <MathTex display tex={String.raw`\langle L_o\rangle_{N=4} = \tfrac{1}{4}\left(${given.samples.map((g) => fmt(g.term, 5)).join(' + ')}\right) = ${fmt(given.estimate, 5)}`} />
+                <MathTex display tex={String.raw`\langle L_o\rangle_{N=4} = \tfrac{1}{4}\big(${given.samples.map((g) => fmt(g.term, 5)).join(' + ')}\big) = ${fmt(given.estimate, 5)}`} />
                 <Readout id="given-estimate" label="⟨L_o⟩ from these 4 samples" value={given.estimate} digits={7} />
               </li>
             </ol>
@@ -540,7 +540,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
         Yellow: the emitting side of the light (its back is dark). Dots: the samples of the {STRATEGY_LABEL[strategy]} strategy arrived so far
         {strategy === 'cosine' ? ', as directions on the unit hemisphere' : ' on the light, and their directions on the unit hemisphere'} — green where the sample
         contributes, red where it is wasted (below the horizon, blocked, or missing the light); lines to the newest. Orange: the Q6(a) patch and its projection on
-        the unit sphere. Right: the running estimate with ±2 standard errors, converging on the reference (dashed).
+        the unit sphere. The small plot (beside the view, or below it on narrow screens): the running estimate with ±2 standard errors, converging on the reference (dashed).
       </p>
     </div>
     </div>

@@ -440,12 +440,12 @@ const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySph
       ? `\\Delta < 0 \\;\\Rightarrow\\; \\text{no real root: the line misses the sphere}`
       : res.t0 === res.t1
         ? `t_0 = t_1 = -\\frac{b}{2a} = ${tx(res.t0, 8)}`
-        : `t_{0} = \\frac{-b - \\sqrt{\\Delta}}{2a} = ${tx(res.t0, 8)},\\qquad t_{1} = \\frac{-b + \\sqrt{\\Delta}}{2a} = ${tx(res.t1, 8)}`;
+        : `{t_{0} = \\frac{-b - \\sqrt{\\Delta}}{2a} = ${tx(res.t0, 8)}},\\allowbreak\\qquad {t_{1} = \\frac{-b + \\sqrt{\\Delta}}{2a} = ${tx(res.t1, 8)}}`;
   const condDisc = `\\Delta = ${tx(res.discriminant)} ${res.discriminant >= 0 ? '\\ge 0' : '< 0'}${yes(res.discriminant >= 0)}`;
   const condT =
     res.t0 === null
       ? `\\text{(no roots to test)}`
-      : `t_0 = ${tx(res.t0, 6)} ${res.t0 >= 0 ? '\\ge 0' : '< 0'}${yes(res.t0 >= 0)},\\qquad t_1 = ${tx(res.t1, 6)} ${res.t1! >= 0 ? '\\ge 0' : '< 0'}${yes(res.t1! >= 0)}`;
+      : `{t_0 = ${tx(res.t0, 6)} ${res.t0 >= 0 ? '\\ge 0' : '< 0'}${yes(res.t0 >= 0)}},\\allowbreak\\qquad {t_1 = ${tx(res.t1, 6)} ${res.t1! >= 0 ? '\\ge 0' : '< 0'}${yes(res.t1! >= 0)}}`;
   const hit = res.tHit === null ? `\\text{no root } t \\ge 0 \\;\\Rightarrow\\; \\text{no hit}` : `t_{\\text{hit}} = \\min\\{\\, t_i : t_i \\ge 0 \\,\\} = ${tx(res.tHit, 8)}`;
   const sec = secondaryFromHit(model.input, res, res.method);
   const tMin = tMinFor(r);
@@ -462,17 +462,17 @@ const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySph
           <p>Write f = o − C and expand the squared length as a dot product with itself:</p>
           <MathTex display tex={`(\\mathbf f + t\\,\\mathbf d)\\cdot(\\mathbf f + t\\,\\mathbf d) = (\\mathbf d\\cdot\\mathbf d)\\,t^2 + 2\\,(\\mathbf d\\cdot\\mathbf f)\\,t + \\mathbf f\\cdot\\mathbf f = r^2`} />
           <p>so t solves a quadratic:</p>
-          <MathTex display tex={`a t^2 + b t + c = 0,\\qquad a = \\mathbf d\\cdot\\mathbf d,\\quad b = 2\\,\\mathbf d\\cdot(\\mathbf o - \\mathbf C),\\quad c = \\lVert \\mathbf o - \\mathbf C\\rVert^2 - r^2`} />
+          <MathTex display tex={`{a t^2 + b t + c = 0},\\allowbreak\\qquad {a = \\mathbf d\\cdot\\mathbf d},\\allowbreak\\quad {b = 2\\,\\mathbf d\\cdot(\\mathbf o - \\mathbf C)},\\allowbreak\\quad {c = \\lVert \\mathbf o - \\mathbf C\\rVert^2 - r^2}`} />
         </li>
         <li data-testid="step-numbers">
           <p>
             With o = <MathTex tex={v(o)} />, d = <MathTex tex={v(d)} />, C = <MathTex tex={v(c)} />, r = <MathTex tex={tx(r, 6)} />:
           </p>
-          <MathTex display tex={`a = ${tx(res.a)},\\qquad b = ${tx(res.b)},\\qquad c = ${tx(res.c)}`} />
+          <MathTex display tex={`{a = ${tx(res.a)}},\\allowbreak\\qquad {b = ${tx(res.b)}},\\allowbreak\\qquad {c = ${tx(res.c)}}`} />
         </li>
         <li data-testid="step-roots">
           <p>The quadratic formula gives the roots, with the discriminant Δ:</p>
-          <MathTex display tex={`t = \\frac{-b \\pm \\sqrt{\\Delta}}{2a},\\qquad \\Delta = b^2 - 4ac = (${tx(res.b)})^2 - 4\\,(${tx(res.a)})(${tx(res.c)}) = ${tx(textbookDisc)}`} />
+          <MathTex display tex={`{t = \\frac{-b \\pm \\sqrt{\\Delta}}{2a}},\\allowbreak\\qquad \\Delta = b^2 - 4ac = (${tx(res.b)})^2 - 4\\,(${tx(res.a)})(${tx(res.c)}) = ${tx(textbookDisc)}`} />
           {robust ? (
             <p className="rs-small" data-testid="step-robust-note">
               {textbookDisc === res.discriminant
@@ -552,8 +552,8 @@ function RobustForm() {
   return (
     <div className="rs-derivation">
       <p>The robust form (Ray Tracing Gems, ch. 7) computes the same Δ without subtracting two huge numbers, and picks the root formula that never cancels:</p>
-      <MathTex display tex={`\\Delta = 4a\\left(r^2 - \\lVert \\boldsymbol\\ell \\rVert^2\\right),\\qquad \\boldsymbol\\ell = \\mathbf f - \\tfrac{\\mathbf f\\cdot\\mathbf d}{a}\\,\\mathbf d\\quad(\\text{from C to the closest point of the line})`} />
-      <MathTex display tex={`q = -\\left(\\tfrac b2 + \\operatorname{sign}(b)\\,\\tfrac{\\sqrt{\\Delta}}{2}\\right),\\qquad t = \\frac{c}{q},\\; \\frac{q}{a}`} />
+      <MathTex display tex={`{\\Delta = 4a\\left(r^2 - \\lVert \\boldsymbol\\ell \\rVert^2\\right)},\\allowbreak\\qquad {\\boldsymbol\\ell = \\mathbf f - \\tfrac{\\mathbf f\\cdot\\mathbf d}{a}\\,\\mathbf d}\\allowbreak\\quad(\\text{from C to the closest point of the line})`} />
+      <MathTex display tex={`{q = -\\left(\\tfrac b2 + \\operatorname{sign}(b)\\,\\tfrac{\\sqrt{\\Delta}}{2}\\right)},\\allowbreak\\qquad {t = \\frac{c}{q},\\; \\frac{q}{a}}`} />
     </div>
   );
 }

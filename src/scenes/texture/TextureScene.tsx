@@ -376,7 +376,7 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
               />
             </div>
             {sphere.ok ? (
-              <div className="tx-table-wrap">
+              <div className="tx-table-wrap" tabIndex={0} role="group" aria-label="The sphere point, normalized and not (the table scrolls sideways on narrow screens)">
                 <table className="worked tx-compare" data-testid="sphere-compare">
                   <thead>
                     <tr>

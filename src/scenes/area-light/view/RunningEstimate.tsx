@@ -9,7 +9,8 @@ import type { SampleRun } from '../model';
 
 const W = 420;
 const H = 230;
-const M = { l: 62, r: 12, t: 14, b: 40 };
+// room for the tick labels at the larger phone type (19 px): "0.0602" on the left, half of "1000" on the right
+const M = { l: 78, r: 24, t: 14, b: 40 };
 
 function fmt(x: number): string {
   if (!Number.isFinite(x)) return '—';

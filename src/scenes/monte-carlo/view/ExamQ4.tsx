@@ -28,6 +28,13 @@ function SumIndexNote({ part }: { part: string }) {
   );
 }
 
+/** Terms of a sum for an aligned block, two per row (a long sum would not fit a phone's width). */
+function sumRows(terms: string[]): string {
+  const rows: string[] = [];
+  for (let i = 0; i < terms.length; i += 2) rows.push(terms.slice(i, i + 2).join(' + '));
+  return rows.join(String.raw` \\ &\qquad + `);
+}
+
 export function Q4a({ c, a, b, exact, isSquare }: { c: number; a: number; b: number; exact: ReactNode; isSquare: boolean }) {
   const r = squareAntiderivative(c, a, b);
   const F = (v: { cube: number; lin2: number; lin: number }) => `${n4(v.cube)} + ${n4(v.lin2)} + ${n4(v.lin)}`;
@@ -39,7 +46,7 @@ export function Q4a({ c, a, b, exact, isSquare }: { c: number; a: number; b: num
         <div className="mc-math" tabIndex={0} role="group" aria-label="derivation (scrolls sideways when wider than the screen)">
           <MathTex
             display
-            tex={String.raw`\begin{aligned} I &= \int_{${n4(a)}}^{${n4(b)}} (${sq(c)})^2\,dx = \int_{${n4(a)}}^{${n4(b)}} \big(x^2 + ${n4(r.twoC)}x + ${n4(r.c2)}\big)\,dx \\ &= \left[\frac{x^3}{3} + ${n4(c)}x^2 + ${n4(r.c2)}x\right]_{${n4(a)}}^{${n4(b)}} \\ &= \big(${F(r.Fb)}\big) - \big(${F(r.Fa)}\big) \\ &= ${n4(r.valueB)} - ${n4(r.valueA)} = ${thirds(r.value)} \approx ${formatNumber(r.value, 10)} \end{aligned}`}
+            tex={String.raw`\begin{aligned} I &= \int_{${n4(a)}}^{${n4(b)}} (${sq(c)})^2\,dx \\ &= \int_{${n4(a)}}^{${n4(b)}} \big(x^2 + ${n4(r.twoC)}x + ${n4(r.c2)}\big)\,dx \\ &= \left[\frac{x^3}{3} + ${n4(c)}x^2 + ${n4(r.c2)}x\right]_{${n4(a)}}^{${n4(b)}} \\ &= \big(${F(r.Fb)}\big) - \big(${F(r.Fa)}\big) \\ &= ${n4(r.valueB)} - ${n4(r.valueA)} = ${thirds(r.value)} \approx ${formatNumber(r.value, 10)} \end{aligned}`}
           />
         </div>
       </Derivation>
@@ -71,7 +78,7 @@ export function Q4b({ table, c, a, b, headline, keyFigures, children }: { table:
           />
           <MathTex
             display
-            tex={String.raw`\begin{aligned} \langle I\rangle &= \frac{1}{${N}}\sum_{i=1}^{${N}} \frac{f(x_i)}{p(x_i)} \\ &= \frac{1}{${N}}\cdot\frac{${rows.map((r) => n4(r.f)).join(' + ')}}{${n4(p)}} \\ &= \frac{1}{${N}}\cdot\frac{${n4(sum)}}{${n4(p)}} = ${formatNumber(est, 8)} \end{aligned}`}
+            tex={String.raw`\begin{aligned} \langle I\rangle &= \frac{1}{${N}}\sum_{i=1}^{${N}} \frac{f(x_i)}{p(x_i)} \\ &= \frac{1}{${N}\cdot ${n4(p)}}\,\big(${sumRows(rows.map((r) => n4(r.f)))}\big) \\ &= \frac{${n4(sum)}}{${N}\cdot ${n4(p)}} = ${formatNumber(est, 8)} \end{aligned}`}
           />
         </div>
         {children}
@@ -112,7 +119,7 @@ export function Q4c({ table, c, a, b, isSquare, answer }: { table: SampleTable; 
                 display
                 tex={String.raw`\begin{aligned} ${rows.map((r, i) => `\\frac{f(x_${i + 1})}{p(x_${i + 1})} &= ${formatNumber(r.propRatio, 12)}`).join(' \\\\ ')} \end{aligned}`}
               />
-              <MathTex display tex={String.raw`\langle I\rangle = \frac{1}{${N}}\sum_{i=1}^{${N}} \frac{f(x_i)}{p(x_i)} = ${thirds(table.proportional?.estimate ?? NaN)}, \qquad s^2 = 0`} />
+              <MathTex display tex={String.raw`{\langle I\rangle = \frac{1}{${N}}\sum_{i=1}^{${N}} \frac{f(x_i)}{p(x_i)} = ${thirds(table.proportional?.estimate ?? NaN)}},\allowbreak\qquad {s^2 = 0}`} />
             </div>
           </>
         ) : (

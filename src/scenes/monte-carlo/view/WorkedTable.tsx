@@ -10,7 +10,7 @@ const num = (x: number, d = 6) => (Number.isFinite(x) ? formatNumber(x, d) : 'â€
 
 export function SampleRows({ table, pdfOk, pdfKind }: { table: SampleTable; pdfOk: boolean; pdfKind: PdfKind }) {
   return (
-    <div className="mc-table-wrap">
+    <div className="mc-table-wrap" tabIndex={0} role="group" aria-label="The samples (the table scrolls sideways on narrow screens)">
       <table className="mc-table">
         <caption className="sr-only">Samples, integrand, pdf and their ratio</caption>
         <thead>

@@ -43,7 +43,7 @@ export function PrecisionTable({ model }: { model: RaySphereModel }) {
     );
   };
   return (
-    <div className="rs-table-wrap">
+    <div className="rs-table-wrap" tabIndex={0} role="group" aria-label="Precision of the two methods (the table scrolls sideways on narrow screens)">
       <table className="rs-precision" data-testid="precision-table">
         <thead>
           <tr>

@@ -52,10 +52,13 @@ export function bilinearTex(q: Lookup, opts: LookupOptions, uName = 'u', vName =
   const b = q.bil;
   const s = q.steps;
   const vq = opts.vflip ? `${vName}'` : vName;
+  // each step on rows short enough for a phone: the formula, the numbers (one product per row), the value
+  const step = (lhs: string, formula: string, d1: string, f1: number, d2: string, f2: number, den: number, value: number) =>
+    `${lhs} &= ${formula} \\\\ &= \\tfrac{1}{${texNum(den, 5)}}\\big(${d1} \\cdot ${fac(f1)} \\\\ &\\qquad + ${d2} \\cdot ${fac(f2)}\\big) \\\\ &= ${texNum(value)}`;
   return [
-    `c_u &= \\frac{(u_1 - ${uName})\\,T_{${b.i0},${b.j1}} + (${uName} - u_0)\\,T_{${b.i1},${b.j1}}}{\\Delta u} \\\\ &= \\frac{${diff(b.u1, b.u)} \\cdot ${fac(b.t01)} + ${diff(b.u, b.u0)} \\cdot ${fac(b.t11)}}{${texNum(b.du, 5)}} = ${texNum(s.cu)}`,
-    `c_l &= \\frac{(u_1 - ${uName})\\,T_{${b.i0},${b.j0}} + (${uName} - u_0)\\,T_{${b.i1},${b.j0}}}{\\Delta u} \\\\ &= \\frac{${diff(b.u1, b.u)} \\cdot ${fac(b.t00)} + ${diff(b.u, b.u0)} \\cdot ${fac(b.t10)}}{${texNum(b.du, 5)}} = ${texNum(s.cl)}`,
-    `c &= \\frac{(v_1 - ${vq})\\,c_l + (${vq} - v_0)\\,c_u}{\\Delta v} \\\\ &= \\frac{${diff(b.v1, b.v)} \\cdot ${fac(s.cl)} + ${diff(b.v, b.v0)} \\cdot ${fac(s.cu)}}{${texNum(b.dv, 5)}} = ${texNum(s.c)}`,
+    step('c_u', `\\frac{(u_1 - ${uName})\\,T_{${b.i0},${b.j1}} + (${uName} - u_0)\\,T_{${b.i1},${b.j1}}}{\\Delta u}`, diff(b.u1, b.u), b.t01, diff(b.u, b.u0), b.t11, b.du, s.cu),
+    step('c_l', `\\frac{(u_1 - ${uName})\\,T_{${b.i0},${b.j0}} + (${uName} - u_0)\\,T_{${b.i1},${b.j0}}}{\\Delta u}`, diff(b.u1, b.u), b.t00, diff(b.u, b.u0), b.t10, b.du, s.cl),
+    step('c', `\\frac{(v_1 - ${vq})\\,c_l + (${vq} - v_0)\\,c_u}{\\Delta v}`, diff(b.v1, b.v), s.cl, diff(b.v, b.v0), s.cu, b.dv, s.c),
   ].join(' \\\\[4pt] ');
 }
 
@@ -108,10 +111,10 @@ export const BilinearWorked = memo(function BilinearWorked({ opts, q }: { opts: 
 export function sphereTex(p: { x: number; y: number; z: number; r: number; phi: number; theta: number; pole: boolean; u: number; v: number }): string {
   return [
     `\\frac{y}{x} &= \\frac{r \\sin u \\sin v}{r \\cos u \\sin v} = \\tan u`,
-    `u &= \\operatorname{atan2}(y, x) = \\operatorname{atan2}(${texNum(p.y)},\\ ${texNum(p.x)}) = ${texNum(p.phi)}${p.pole ? '\\quad(\\text{a pole: defined as } 0)' : ''}`,
+    `u &= \\operatorname{atan2}(y, x) \\\\ &= \\operatorname{atan2}(${texNum(p.y)},\\ ${texNum(p.x)}) \\\\ &= ${texNum(p.phi)}${p.pole ? '\\quad(\\text{a pole: defined as } 0)' : ''}`,
     `r &= \\sqrt{x^2 + y^2 + z^2} = ${texNum(p.r)}`,
     `\\frac{z}{r} &= \\frac{r \\cos v}{r} = \\cos v`,
-    `v &= \\arccos\\frac{z}{r} = \\arccos(${texNum(p.z / p.r)}) = ${texNum(p.theta)}`,
-    `(u, v)_{\\text{tex}} &= \\left(\\frac{u}{2\\pi},\\ \\frac{v}{\\pi}\\right) \\\\ &= \\left(\\frac{${texNum(p.phi)}}{${texNum(2 * Math.PI)}},\\ \\frac{${texNum(p.theta)}}{${texNum(Math.PI)}}\\right) = (${texNum(p.u)},\\ ${texNum(p.v)})`,
+    `v &= \\arccos\\frac{z}{r} = \\arccos(${texNum(p.z / p.r)}) \\\\ &= ${texNum(p.theta)}`,
+    `(u, v)_{\\text{tex}} &= \\left(\\frac{u}{2\\pi},\\ \\frac{v}{\\pi}\\right) \\\\ &= \\left(\\frac{${texNum(p.phi)}}{${texNum(2 * Math.PI)}},\\ \\frac{${texNum(p.theta)}}{${texNum(Math.PI)}}\\right) \\\\ &= (${texNum(p.u)},\\ ${texNum(p.v)})`,
   ].join(' \\\\[3pt] ');
 }
