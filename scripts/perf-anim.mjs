@@ -115,6 +115,7 @@ function analyse(events) {
     frameIntervalMsMedian: quantile(si, 0.5),
     frameIntervalMsP95: quantile(si, 0.95),
     droppedFrames: dropped,
+    ...(process.argv.includes('--frames') ? { perFrameMs: perFrame.map((x) => Math.round(x * 10) / 10), perFrameCpuMs: perFrameCpu.map((x) => Math.round(x * 10) / 10) } : {}),
   };
 }
 

@@ -22,6 +22,9 @@ import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState, typ
 import type { ParamSpec } from '../app/params';
 import { useShortcuts } from './shortcuts';
 
+/** With `renderHz`, React re-renders at most every this many frames while playing. */
+const RENDER_MIN_FRAMES = 6;
+
 /** Speeds offered by the transport (× the scene's natural speed). */
 export const TIMELINE_SPEEDS = [0.25, 0.5, 1, 2, 4] as const;
 
@@ -290,6 +293,7 @@ export function useTimeline(opts: TimelineOptions): Timeline {
     let raf = 0;
     let last = -1;
     let rendered = -Infinity;
+    let sinceRender = Infinity;
     const frame = (now: number) => {
       raf = 0;
       const l = live.current;
@@ -304,8 +308,12 @@ export function useTimeline(opts: TimelineOptions): Timeline {
         return;
       }
       const hz = l.renderHz;
-      if (hz === undefined || now - rendered >= 1000 / hz - 1) {
+      sinceRender++;
+      // coarse React renders: at most renderHz a second, and (on a slow machine, where frames are
+      // far apart) at most every RENDER_MIN_FRAMES frames, so most frames stay free of React
+      if (hz === undefined || (now - rendered >= 1000 / hz - 1 && sinceRender >= RENDER_MIN_FRAMES)) {
         rendered = now;
+        sinceRender = 0;
         setExact(t); // the layout effect tells the subscribers after React committed
       } else {
         l.exact = t;
