@@ -129,6 +129,16 @@ export interface Timeline {
 }
 
 /**
+ * The live position, re-rendering only the calling component on every frame (for a small figure
+ * that moves every frame while the component owning the timeline re-renders at `renderHz`).
+ */
+export function useTimelinePosition(tl: Pick<Timeline, 'subscribe' | 'now'>): number {
+  const [t, setT] = useState(tl.now);
+  useTimelineFrame(tl, setT);
+  return t;
+}
+
+/**
  * Run `draw(t, playing)` on every frame of the timeline and whenever its position or state changes
  * (subscribed in a layout effect, so the first draw happens before paint). `draw` may change
  * identity between renders; the latest one is used. Keep it cheap: direct DOM / canvas writes.

@@ -21,7 +21,7 @@ import {
   Select,
   TimelineTransport,
   useTimeline,
-  useTimelineFrame,
+  useTimelinePosition,
   type Timeline,
 } from '../../ui';
 import type { RaySphereHit } from '../../core/geometry';
@@ -440,13 +440,6 @@ function lastValue<T>(f: (t: number) => T): (t: number) => T {
   };
 }
 
-/** The timeline's live position, re-rendering only the caller on every frame. */
-function useLiveT(tl: Timeline): number {
-  const [t, setT] = useState(tl.now);
-  useTimelineFrame(tl, setT);
-  return t;
-}
-
 /** The cross-section at the live position (re-renders every frame while playing, alone). */
 function LiveCrossSection({
   tl,
@@ -459,7 +452,7 @@ function LiveCrossSection({
   onChange: (patch: Partial<RaySphereParams>) => void;
   fitExtra: readonly V3[];
 }) {
-  const m = modelAt(useLiveT(tl));
+  const m = modelAt(useTimelinePosition(tl));
   const { o, d, c, r } = m.input;
   return <CrossSection o={o} d={d} c={c} r={r} res={m.chosen} distanceRatio={m.distanceRatio} onChange={onChange} fitExtra={fitExtra} />;
 }
@@ -482,7 +475,7 @@ function LivePlots({
   xLabel: string;
   method: 'naive' | 'stable';
 }) {
-  const t = useLiveT(tl);
+  const t = useTimelinePosition(tl);
   const m = modelAt(t);
   const naiveRow = m.rows.find((x) => x.method === 'naive');
   const stableRow = m.rows.find((x) => x.method === 'stable');

@@ -59,6 +59,8 @@ export interface HemisphereViewProps {
   height?: number;
 }
 
+const COUNT_FORMAT = new Intl.NumberFormat('en-US');
+
 export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGrid, height = 380 }: HemisphereViewProps) {
   const ctxRef = useRef<ViewportContext | null>(null);
   const objs = useRef<{
@@ -82,8 +84,9 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
   const drawn = () => Math.min(fill.current.filled, fill.current.target);
   const updateLabel = () => {
     const v = drawn();
-    if (label.current) {
-      label.current.textContent = v.toLocaleString('en-US');
+    // per frame while the warp morph plays: write only on a change (toLocaleString is slow)
+    if (label.current && label.current.dataset.value !== String(v)) {
+      label.current.textContent = COUNT_FORMAT.format(v);
       label.current.dataset.value = String(v);
     }
   };
