@@ -21,10 +21,10 @@ export const STEP = 0.05;
 
 /** How often React re-renders the text readouts while playing (the figures move every frame without React). */
 export const RENDER_HZ = 4;
-/** While playing, the worked steps (KaTeX) follow the position in steps of this size (1 s at 1×); exact when paused. */
-export const WORKED_STEP = 0.125;
+/** While playing, the worked steps (KaTeX) follow the position in steps of this size (2 s at 1×); exact when paused. */
+export const WORKED_STEP = 0.25;
 
-/** The worked steps' position: coarse while playing (so KaTeX is redrawn about once a second, not per frame), exact when paused. */
+/** The worked steps' position: coarse while playing (so KaTeX is redrawn every 2 s at 1×, not per frame), exact when paused. */
 export function workedPosition(t: number, playing: boolean): number {
   return playing ? Math.floor(t / WORKED_STEP + 1e-9) * WORKED_STEP : t;
 }

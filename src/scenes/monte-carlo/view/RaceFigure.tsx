@@ -205,8 +205,8 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
     for (const k of ['uErr', 'iErr', 'uBand', 'iBand', 'uEst', 'iEst'] as const) pathRefs.current[k]?.setAttribute('d', gg[k]);
     const svg = svgF.current;
     if (!svg) return;
-    drawRug(svg.querySelector('[data-rug="0"]'), gg.rugU);
-    drawRug(svg.querySelector('[data-rug="1"]'), gg.rugI);
+    drawRug(svg.querySelector('[data-rug="0"]'), gg.rugU, rugY(0));
+    drawRug(svg.querySelector('[data-rug="1"]'), gg.rugI, rugY(1));
     drawDot(svg.querySelector('[data-dot="0"]'), gg.dotU);
     drawDot(svg.querySelector('[data-dot="1"]'), gg.dotI);
   });
@@ -221,17 +221,17 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
       <circle cx={d?.x ?? 0} cy={d?.y ?? 0} r={5} style={{ fill: color }} />
     </g>
   );
-  const rugY = (row: number) => M.t + PH - 16 + row * 9;
-  // RECENT slots per row, the unused ones hidden, so a frame only moves them
-  const rug = (xs: number[], color: string, row: number) => (
-    <g data-rug={row}>
-      {Array.from({ length: RECENT }, (_, k) => {
-        const j = k - (RECENT - xs.length);
-        const x = j >= 0 ? xs[j]! : 0;
-        return <line key={k} x1={x} x2={x} y1={rugY(row)} y2={rugY(row) + 7} style={{ stroke: color, strokeOpacity: 0.25 + (0.75 * (k + 1)) / RECENT, display: j >= 0 ? undefined : 'none' }} />;
-      })}
-    </g>
-  );
+  // the rug: RUG_BUCKETS paths per row, older samples fainter, so a frame writes a few `d`s
+  const rug = (xs: number[], color: string, row: number) => {
+    const d = rugPaths(xs, rugY(row));
+    return (
+      <g data-rug={row}>
+        {d.map((p, k) => (
+          <path key={k} d={p} style={{ stroke: color, strokeOpacity: 0.25 + (0.75 * (k + 1)) / RUG_BUCKETS }} />
+        ))}
+      </g>
+    );
+  };
 
   return (
     <div className="mc-race" ref={box} data-testid="race">
@@ -301,23 +301,27 @@ interface RaceGeom {
   dotI: { x: number; y: number } | null;
 }
 
-/** Moves a rug's RECENT lines to the latest samples (the older slots hidden). */
-function drawRug(g: Element | null, xs: number[]): void {
-  if (!g) return;
-  const lines = g.children;
-  const off = lines.length - xs.length;
-  for (let k = 0; k < lines.length; k++) {
-    const el = lines[k] as SVGLineElement;
-    const j = k - off;
-    if (j < 0) {
-      if (el.style.display !== 'none') el.style.display = 'none';
-      continue;
-    }
-    if (el.style.display) el.style.display = '';
-    const x = String(xs[j]);
-    el.setAttribute('x1', x);
-    el.setAttribute('x2', x);
+const rugY = (row: number) => M.t + PH - 16 + row * 9;
+/** Opacity steps of a rug (the latest RECENT samples, in age order). */
+const RUG_BUCKETS = 4;
+
+/** A rug's tick marks as RUG_BUCKETS paths, oldest first: sample j of the RECENT slots goes to bucket ⌊j·B/RECENT⌋. */
+function rugPaths(xs: number[], y: number): string[] {
+  const out: string[] = Array.from({ length: RUG_BUCKETS }, () => '');
+  const off = RECENT - xs.length;
+  for (let j = 0; j < xs.length; j++) {
+    const b = Math.min(RUG_BUCKETS - 1, Math.floor(((j + off) * RUG_BUCKETS) / RECENT));
+    out[b] += `M${xs[j]!.toFixed(1)},${y}v7`;
   }
+  return out;
+}
+
+/** Moves a rug to the latest samples. */
+function drawRug(g: Element | null, xs: number[], y: number): void {
+  if (!g) return;
+  const d = rugPaths(xs, y);
+  const kids = g.children;
+  for (let k = 0; k < kids.length && k < d.length; k++) kids[k]!.setAttribute('d', d[k]!);
 }
 
 /** Moves a newest-sample marker (a dashed drop line and a dot). */
