@@ -1,5 +1,6 @@
-import { useEffect, useState } from 'react';
-import { runChunked } from './chunked';
+import { useEffect, useRef, useState } from 'react';
+import { flushSync } from 'react-dom';
+import { flushMathForPrint, scheduleMath } from './mathQueue';
 
 type Katex = typeof import('katex');
 let katexPromise: Promise<Katex> | null = null;
@@ -31,6 +32,14 @@ function remember(key: string, html: string): void {
   if (CACHE.size > CACHE_MAX) CACHE.delete(CACHE.keys().next().value!);
 }
 
+let printHooked = false;
+/** Before printing, every formula still waiting for idle time is typeset (and committed) at once. */
+function hookPrint(): void {
+  if (printHooked || typeof window === 'undefined') return;
+  printHooked = true;
+  window.addEventListener('beforeprint', () => flushSync(() => flushMathForPrint()));
+}
+
 /**
  * TeX rendered by KaTeX (HTML + MathML for screen readers). KaTeX loads lazily; until then, and if
  * the TeX is invalid, the source is shown as code. Never throws.
@@ -38,6 +47,7 @@ function remember(key: string, html: string): void {
 export function MathTex({ tex, display = false, className }: { tex: string; display?: boolean; className?: string }) {
   const key = `${display ? 'D' : 'I'}${tex}`;
   const [html, setHtml] = useState<string | null>(() => cached(key) ?? null);
+  const ref = useRef<HTMLElement>(null);
   useEffect(() => {
     const hit = cached(key);
     if (hit !== undefined) {
@@ -46,12 +56,14 @@ export function MathTex({ tex, display = false, className }: { tex: string; disp
     }
     let alive = true;
     let cancel = () => {};
+    hookPrint();
     loadKatex()
       .then((k) => {
         if (!alive) return;
-        // Each formula renders in its own slot of the shared sliced queue: when KaTeX arrives, a
-        // scene's dozens of formulas would otherwise all render in one long task.
-        cancel = runChunked(() => {
+        // Each formula renders in its own slot: at once (sliced with the others) when it is near
+        // the screen, else in idle time (./mathQueue). When KaTeX arrives, a scene's dozens of
+        // formulas would otherwise all render in one long task.
+        cancel = scheduleMath(ref.current, () => {
           if (!alive) return;
           try {
             const out = k.renderToString(tex, { displayMode: display, throwOnError: false, strict: 'ignore', output: 'htmlAndMathml' });
@@ -71,10 +83,10 @@ export function MathTex({ tex, display = false, className }: { tex: string; disp
   const Tag = display ? 'div' : 'span';
   if (html === null) {
     return (
-      <Tag className={`math math-pending${display ? ' math-display' : ''}${className ? ` ${className}` : ''}`}>
+      <Tag ref={ref as React.RefObject<HTMLDivElement>} className={`math math-pending${display ? ' math-display' : ''}${className ? ` ${className}` : ''}`}>
         <code>{tex}</code>
       </Tag>
     );
   }
-  return <Tag className={`math${display ? ' math-display' : ''}${className ? ` ${className}` : ''}`} dangerouslySetInnerHTML={{ __html: html }} />;
+  return <Tag ref={ref as React.RefObject<HTMLDivElement>} className={`math${display ? ' math-display' : ''}${className ? ` ${className}` : ''}`} dangerouslySetInnerHTML={{ __html: html }} />;
 }

@@ -135,6 +135,7 @@ test('large n is estimated in a worker without blocking; the result agrees withi
 });
 
 test('dark theme: no serious or critical axe violations (the highlighted KaTeX boxes keep dark text)', async ({ page }) => {
+  test.setTimeout(240_000); // a full-page axe scan of a long page on a busy 2-core machine
   await openScene(page, '#/area-light?theme=dark&occluder=1');
   await page.waitForTimeout(2000);
   const r = await new AxeBuilder({ page }).analyze();

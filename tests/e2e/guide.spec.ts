@@ -6,6 +6,7 @@ import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene } from './fixtures';
 
 test('the guide lists 3–5 presets per exam question, is reachable from the header, and is axe clean', async ({ page }) => {
+  test.setTimeout(240_000); // a full-page axe scan of a long page on a busy 2-core machine
   await openScene(page, '#/');
   await page.getByRole('link', { name: 'Teacher’s guide' }).click();
   await expect(page.getByRole('heading', { level: 1 })).toHaveText('Teacher’s guide');

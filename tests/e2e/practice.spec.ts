@@ -201,6 +201,7 @@ test('progress is kept per question and can be reset; a bad seed is named and re
 
 for (const theme of ['light', 'dark'] as const)
 test(`no serious or critical axe violations on a checked question (${theme} theme)`, async ({ page }) => {
+  test.setTimeout(180_000); // an axe scan on a busy 2-core machine
   const v = await openVariant(page, 'q3', 17, `&theme=${theme}`);
   await expect(page.locator('html')).toHaveAttribute('data-theme', theme);
   await fillAndCheck(page, allAnswers(v).map((a, i) => [a.name, i % 2 ? studentText(a) : '1']));

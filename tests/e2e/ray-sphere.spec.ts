@@ -139,6 +139,8 @@ test.describe('precision presets: robust roots match high-precision references',
     await openScene(page, '#/ray-sphere');
     const summary = page.getByTestId('distant-summary');
     await summary.scrollIntoViewIfNeeded();
+    // (computed once the panel is in view)
+    await expect(summary).toHaveAttribute('data-disagree', /^\d+$/, { timeout: 30_000 });
     expect(Number(await summary.getAttribute('data-disagree'))).toBeGreaterThan(50);
     const box = page.getByTestId('distant-exp').locator('xpath=..').getByRole('textbox');
     await box.fill('2');

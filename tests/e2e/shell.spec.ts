@@ -64,6 +64,7 @@ for (const route of ROUTES) {
   });
 
   test(`${route} has no serious or critical axe violations`, async ({ page }) => {
+    test.setTimeout(240_000); // a full-page axe scan of a long page on a busy 2-core machine
     await openScene(page, `#${route}`);
     await page.waitForLoadState('networkidle');
     const results = await new AxeBuilder({ page }).exclude('.js-plotly-plot').analyze();

@@ -14,7 +14,7 @@ import { useWorkerJob } from '../../workers';
 import { fillSequence2D, type SequenceKind } from '../../core/random';
 import { animDuration, animFrame, examChecks, examInversion, lobeFromParams, type AnimKind, type DrawStats, type Lobe } from './model';
 import { ANIMS, LOBES, MAX_N, POINT_SETS, type HemisphereSchema, type LobeId } from './params';
-import { compileThetaPhi } from './expr';
+import { compileThetaPhi, compileThetaPhiFast } from './expr';
 import { UnitSquare } from './view/UnitSquare';
 import { Derivation } from './view/Derivation';
 import { MarginalPlots, Histogram2D } from './view/Plots';
@@ -56,7 +56,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
   const isCustom = lobeId === 'custom';
   const fIsCos = params.f.replace(/\s+/g, '') === 'cos(theta)';
 
-  const fc = useCompiled(params.f, compileThetaPhi);
+  const fc = useCompiled(params.f, compileThetaPhi, { fast: compileThetaPhiFast });
   const pc = useCompiled(params.pdf, compileThetaPhi, { enabled: isCustom });
   const customDensity = isCustom && pc.status === 'ok' ? pc.fn : null;
   const { lobe: baseLobe, tab } = useMemo(() => lobeFromParams(lobeId, params.exponent, customDensity), [lobeId, params.exponent, customDensity]);

@@ -23,8 +23,11 @@ import { MAX_N } from '../params';
 import { xiColor } from './colors';
 
 const BATCH = 1 << 15;
-/** At most this many new points per animation frame, so no frame does more than a few ms of work. */
-const MAX_PER_FRAME = 1 << 16;
+/** New points of the first frame, before the generation speed is known (cold code runs slowly). */
+const FIRST_FRAME = 2048;
+/** Bounds on new points per frame once the speed is measured. */
+const MIN_PER_FRAME = 1024;
+const MAX_PER_FRAME = 1 << 18;
 /** While the camera is being dragged, draw at most this many points (level of detail). */
 const ORBIT_LOD = 200_000;
 const GRID_SEGMENTS = 48;
@@ -40,10 +43,16 @@ interface Fill {
   last: number;
 }
 
-/** New points allowed this frame: MAX_PER_FRAME, or more when frames are slow anyway (software rendering). */
+/**
+ * New points allowed this frame: what the measured speed generates in a quarter of the last frame's
+ * length, kept between 4 and 40 ms of work. Time-sliced so that the first fill on load (cold code,
+ * a phone's CPU) never makes one long task (issue 15: 20 000 points in one frame took ~450 ms at 4×
+ * CPU throttling), while slow software-GL frames still take big batches for 10⁶ points.
+ */
 function perFrame(a: Fill): number {
-  if (!a.pointsPerMs) return MAX_PER_FRAME;
-  return Math.max(MAX_PER_FRAME, Math.floor(a.pointsPerMs * 0.25 * Math.min(a.frameMs, 4000)));
+  if (!a.pointsPerMs) return FIRST_FRAME;
+  const budgetMs = Math.min(40, Math.max(4, 0.25 * a.frameMs));
+  return Math.min(MAX_PER_FRAME, Math.max(MIN_PER_FRAME, Math.floor(a.pointsPerMs * budgetMs)));
 }
 
 export interface HemisphereViewProps {
@@ -60,6 +69,33 @@ export interface HemisphereViewProps {
 }
 
 const COUNT_FORMAT = new Intl.NumberFormat('en-US');
+
+/**
+ * Buffers sized for n points, rounded up to a power of two (at least 4096, at most MAX_N): sized
+ * for 10⁶ from the start, the first upload of ~23 MB cost a phone's main thread hundreds of ms on
+ * load (issue 15), though the exam's default shows 512 points.
+ */
+function capacityFor(n: number): number {
+  let c = 4096;
+  while (c < n && c < MAX_N) c *= 2;
+  return Math.min(c, MAX_N);
+}
+
+function pointBuffers(T: ViewportContext['THREE'], cap: number) {
+  const geom = new T.BufferGeometry();
+  const pos = new T.BufferAttribute(new Float32Array(3 * cap), 3);
+  pos.setUsage(T.DynamicDrawUsage);
+  const col = new T.BufferAttribute(new Uint8Array(3 * cap), 3, true);
+  col.setUsage(T.DynamicDrawUsage);
+  const xi = new T.BufferAttribute(new Float32Array(2 * cap), 2);
+  xi.setUsage(T.DynamicDrawUsage);
+  geom.setAttribute('position', pos);
+  geom.setAttribute('color', col);
+  geom.setAttribute('xi', xi);
+  geom.setDrawRange(0, 0);
+  geom.boundingSphere = new T.Sphere(new T.Vector3(0, 0, 0.5), 1.6);
+  return { geom, pos, col, xi };
+}
 
 export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGrid, height = 380 }: HemisphereViewProps) {
   const ctxRef = useRef<ViewportContext | null>(null);
@@ -128,7 +164,7 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
       } catch {
         /* older engines without measure options: the probe is optional */
       }
-      if (end - start >= 1024 && t1 > t0) {
+      if (end - start >= MIN_PER_FRAME && t1 > t0) {
         const pps = (end - start) / (t1 - t0);
         a.pointsPerMs = a.pointsPerMs ? 0.7 * a.pointsPerMs + 0.3 * pps : pps;
       }
@@ -205,18 +241,7 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
   const setup = (ctx: ViewportContext) => {
     ctxRef.current = ctx;
     const T = ctx.THREE;
-    const geom = new T.BufferGeometry();
-    const pos = new T.BufferAttribute(new Float32Array(3 * MAX_N), 3);
-    pos.setUsage(T.DynamicDrawUsage);
-    const col = new T.BufferAttribute(new Uint8Array(3 * MAX_N), 3, true);
-    col.setUsage(T.DynamicDrawUsage);
-    const xi = new T.BufferAttribute(new Float32Array(2 * MAX_N), 2);
-    xi.setUsage(T.DynamicDrawUsage);
-    geom.setAttribute('position', pos);
-    geom.setAttribute('color', col);
-    geom.setAttribute('xi', xi);
-    geom.setDrawRange(0, 0);
-    geom.boundingSphere = new T.Sphere(new T.Vector3(0, 0, 0.5), 1.6);
+    const { geom, pos, col, xi } = pointBuffers(T, capacityFor(cfg.current.n));
     const material = new T.PointsMaterial({ size: 3, sizeAttenuation: false, vertexColors: true });
     const morph = { value: cfg.current.frame.s };
     // the warp morph on the GPU: mix(square point of (ξ₁, ξ₂), direction, s), as the model's morphPoint
@@ -275,10 +300,10 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
     // level of detail while orbiting: the sets are prefixes of well-spread sequences (except the
     // stratified set, whose prefix fills rows in order, so it is always drawn in full)
     const onStart = () => {
-      if (cfg.current.kind !== 'stratified' && drawn() > ORBIT_LOD) geom.setDrawRange(0, ORBIT_LOD);
+      if (cfg.current.kind !== 'stratified' && drawn() > ORBIT_LOD) objs.current?.geom.setDrawRange(0, ORBIT_LOD);
     };
     const onEnd = () => {
-      geom.setDrawRange(0, drawn());
+      objs.current?.geom.setDrawRange(0, drawn());
       ctx.invalidate();
     };
     ctx.controls.addEventListener('start', onStart);
@@ -314,7 +339,17 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
 
   // the point set changed: the buffers start over, the grid is rebuilt
   const onPointsChange = useEffectEvent(() => {
-    if (!objs.current) return;
+    const o = objs.current;
+    const ctx = ctxRef.current;
+    if (!o || !ctx) return;
+    // the buffers hold n points (rounded up to a power of two): a new geometry when that changes
+    const cap = capacityFor(n);
+    if (cap !== o.pos.count) {
+      const b = pointBuffers(ctx.THREE, cap);
+      o.points.geometry = b.geom;
+      o.geom.dispose();
+      Object.assign(o, b);
+    }
     buildGrid();
     fill.current.filled = 0;
     performance.clearMeasures?.('hemisphere-grow');

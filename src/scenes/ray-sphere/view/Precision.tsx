@@ -3,7 +3,7 @@
  * of a distant sphere by each method, and the error against distance.
  */
 import { useEffect, useMemo, useRef, useState } from 'react';
-import { Plot, Slider, type PlotTrace } from '../../../ui';
+import { Plot, Slider, useSeenOnce, type PlotTrace } from '../../../ui';
 import { ERROR_FLOOR, errorVsDistance, renderDistant, shadeImage, type RaySphereModel } from '../model';
 
 function fmtErr(e: number | null): { text: string; cls: string } {
@@ -95,10 +95,14 @@ const HOLE: [number, number, number] = [255, 45, 149];
 export function DistantImages() {
   const [exp, setExp] = useState(7.5);
   const dist = 10 ** exp;
-  const img = useMemo(() => renderDistant(dist, IMG, IMG, () => performance.now()), [dist]);
+  // computed once the panel comes near the screen (it is under "explore further"; issue 15)
+  const box = useRef<HTMLDivElement>(null);
+  const seen = useSeenOnce(box);
+  const img = useMemo(() => (seen ? renderDistant(dist, IMG, IMG, () => performance.now()) : null), [dist, seen]);
   const naiveRef = useRef<HTMLCanvasElement>(null);
   const stableRef = useRef<HTMLCanvasElement>(null);
   useEffect(() => {
+    if (!img) return;
     const draw = (cv: HTMLCanvasElement | null, t: Float64Array, other: Float64Array | null) => {
       const g = cv?.getContext('2d');
       if (!g) return;
@@ -110,37 +114,46 @@ export function DistantImages() {
     draw(stableRef.current, img.stable, null);
   }, [img]);
   return (
-    <div className="rs-distant">
+    <div className="rs-distant" ref={box}>
       <Slider label="Distance to the sphere, log₁₀(|o − c| / r)" value={exp} min={0.5} max={10} step={0.25} onChange={setExp} testId="distant-exp" />
       <div className="rs-images">
         <figure>
-          <canvas ref={naiveRef} width={IMG} height={IMG} className="rs-canvas" aria-label="Textbook render of the distant sphere" data-testid="img-naive" data-hits={img.naiveHits} />
+          <canvas ref={naiveRef} width={IMG} height={IMG} className="rs-canvas" aria-label="Textbook render of the distant sphere" data-testid="img-naive" data-hits={img?.naiveHits} />
           <figcaption>
-            Textbook: {img.naiveHits} px hit
+            Textbook: {img ? img.naiveHits : '…'} px hit
           </figcaption>
         </figure>
         <figure>
-          <canvas ref={stableRef} width={IMG} height={IMG} className="rs-canvas" aria-label="Robust render of the distant sphere" data-testid="img-stable" data-hits={img.stableHits} />
+          <canvas ref={stableRef} width={IMG} height={IMG} className="rs-canvas" aria-label="Robust render of the distant sphere" data-testid="img-stable" data-hits={img?.stableHits} />
           <figcaption>
-            Robust: {img.stableHits} px hit
+            Robust: {img ? img.stableHits : '…'} px hit
           </figcaption>
         </figure>
       </div>
-      <p className="rs-small" data-testid="distant-summary" data-disagree={img.disagree}>
-        Sphere {dist.toPrecision(2)} radii away, {IMG}×{IMG} rays per method. The methods disagree on <strong>{img.disagree}</strong> pixels
-        {img.disagree ? <> (<span className="rs-hole">pink</span>: the textbook form misses where the exact answer hits; grey specks outside the disc are hits it invents)</> : null}.
-        Both images ({2 * IMG * IMG} rays) were computed on the main thread by the batched kernel in{' '}
-        <span data-testid="distant-ms">{img.ms.toFixed(1)} ms</span> (the first render includes the JavaScript engine’s warm-up; later ones take about a millisecond).
-      </p>
+      {img ? (
+        <p className="rs-small" data-testid="distant-summary" data-disagree={img.disagree}>
+          Sphere {dist.toPrecision(2)} radii away, {IMG}×{IMG} rays per method. The methods disagree on <strong>{img.disagree}</strong> pixels
+          {img.disagree ? <> (<span className="rs-hole">pink</span>: the textbook form misses where the exact answer hits; grey specks outside the disc are hits it invents)</> : null}.
+          Both images ({2 * IMG * IMG} rays) were computed on the main thread by the batched kernel in{' '}
+          <span data-testid="distant-ms">{img.ms.toFixed(1)} ms</span> (the first render includes the JavaScript engine’s warm-up; later ones take about a millisecond).
+        </p>
+      ) : (
+        <p className="rs-small" data-testid="distant-summary">
+          Sphere {dist.toPrecision(2)} radii away, {IMG}×{IMG} rays per method: computed when this panel comes into view.
+        </p>
+      )}
     </div>
   );
 }
 
 /** The error of each method against distance, with the current configuration marked. */
 export function ErrorVsDistance({ current, here }: { current: number; here?: { naive: number | null; stable: number | null } }) {
-  const s = useMemo(() => errorVsDistance(), []);
+  // computed once the plot comes near the screen (it is under "explore further"; issue 15)
+  const box = useRef<HTMLDivElement>(null);
+  const seen = useSeenOnce(box);
+  const s = useMemo(() => (seen ? errorVsDistance() : null), [seen]);
   const u = ERROR_FLOOR;
-  const data = useMemo<PlotTrace[]>(() => [
+  const data = useMemo<PlotTrace[]>(() => !s ? [] : [
     { x: s.dist, y: s.discNaive, name: 'textbook Δ', mode: 'lines+markers', line: { color: '#c0392b' }, marker: { size: 4 } },
     { x: s.dist, y: s.discStable, name: 'robust Δ', mode: 'lines+markers', line: { color: '#1f5fa8' }, marker: { size: 4 } },
     { x: s.dist, y: s.hitNaive, name: 'textbook t-hit', mode: 'lines', line: { color: '#c0392b', dash: 'dot' } },
@@ -171,5 +184,13 @@ export function ErrorVsDistance({ current, here }: { current: number; here?: { n
         ? [{ type: 'line', x0: current, x1: current, yref: 'paper', y0: 0, y1: 1, line: { color: '#888', width: 1 } }]
         : [],
   }), [current]);
-  return <Plot data={data} layout={layout} height={440} ariaLabel="Relative error of the discriminant and of t-hit against distance, textbook and robust" testId="error-plot" />;
+  return (
+    <div ref={box} style={{ minHeight: 440 }}>
+      {s ? (
+        <Plot data={data} layout={layout} height={440} ariaLabel="Relative error of the discriminant and of t-hit against distance, textbook and robust" testId="error-plot" />
+      ) : (
+        <div data-testid="error-plot" style={{ height: 440 }} aria-busy="true" />
+      )}
+    </div>
+  );
 }

@@ -1,0 +1,96 @@
+import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
+
+/** A controllable IntersectionObserver: the test says which elements are near the screen. */
+class FakeIO {
+  static all: FakeIO[] = [];
+  observed = new Set<object>();
+  constructor(private cb: (entries: { target: object; isIntersecting: boolean }[]) => void) {
+    FakeIO.all.push(this);
+  }
+  observe(el: object) {
+    this.observed.add(el);
+  }
+  unobserve(el: object) {
+    this.observed.delete(el);
+  }
+  disconnect() {
+    this.observed.clear();
+  }
+  report(el: object, isIntersecting: boolean) {
+    if (this.observed.has(el)) this.cb([{ target: el, isIntersecting }]);
+  }
+}
+
+const idleCbs: ((d: { timeRemaining: () => number; didTimeout: boolean }) => void)[] = [];
+const runIdle = () => {
+  const cbs = idleCbs.splice(0);
+  for (const cb of cbs) cb({ timeRemaining: () => 50, didTimeout: false });
+};
+const settle = () => new Promise((r) => setTimeout(r, 30));
+
+beforeAll(() => {
+  vi.stubGlobal('IntersectionObserver', FakeIO);
+  vi.stubGlobal('requestIdleCallback', (cb: (typeof idleCbs)[number]) => idleCbs.push(cb));
+});
+afterAll(() => vi.unstubAllGlobals());
+
+describe('scheduleMath: formulas near the screen first, the rest in idle time', () => {
+  it('near ones run soon; far ones only in idle time, a few per idle period, in order; a far one that scrolls near is promoted', async () => {
+    const { scheduleMath } = await import('../../src/ui/mathQueue');
+    const seen: string[] = [];
+    const els = Array.from({ length: 8 }, () => ({}) as Element);
+    els.forEach((el, i) => scheduleMath(el, () => seen.push(`f${i}`)));
+    const io = FakeIO.all[0]!;
+    // nothing runs before the observer has said where each formula is
+    await settle();
+    expect(seen).toEqual([]);
+    io.report(els[0]!, true);
+    for (let i = 1; i < 8; i++) io.report(els[i]!, false);
+    await settle();
+    expect(seen).toEqual(['f0']); // the near one, without waiting for idle time
+    io.report(els[6]!, true); // scrolled near: promoted
+    await settle();
+    expect(seen).toEqual(['f0', 'f6']);
+    runIdle();
+    expect(seen).toEqual(['f0', 'f6', 'f1', 'f2', 'f3']); // three per idle period, in page order
+    runIdle();
+    runIdle();
+    expect(seen).toEqual(['f0', 'f6', 'f1', 'f2', 'f3', 'f4', 'f5', 'f7']);
+    expect(io.observed.size).toBe(0); // done formulas are no longer observed
+  });
+
+  it('a cancelled formula never runs; an element known to be near runs its next formula at once', async () => {
+    const { scheduleMath } = await import('../../src/ui/mathQueue');
+    const io = FakeIO.all[0]!;
+    const seen: string[] = [];
+    const a = {} as Element;
+    const b = {} as Element;
+    scheduleMath(a, () => seen.push('a1'));
+    const cancelB = scheduleMath(b, () => seen.push('b1'));
+    io.report(a, true);
+    io.report(b, false);
+    cancelB();
+    runIdle();
+    await settle();
+    expect(seen).toEqual(['a1']);
+    scheduleMath(a, () => seen.push('a2')); // live numbers changed on screen
+    await settle();
+    expect(seen).toEqual(['a1', 'a2']);
+  });
+
+  it('flushMathForPrint runs everything still waiting, synchronously', async () => {
+    const { scheduleMath, flushMathForPrint } = await import('../../src/ui/mathQueue');
+    const io = FakeIO.all[0]!;
+    const seen: string[] = [];
+    const a = {} as Element;
+    const b = {} as Element;
+    scheduleMath(a, () => seen.push('a'));
+    scheduleMath(b, () => seen.push('b'));
+    io.report(b, false); // b waits for idle time, a has no report yet
+    flushMathForPrint();
+    expect(seen.sort()).toEqual(['a', 'b']);
+    runIdle();
+    await settle();
+    expect(seen.length).toBe(2); // nothing runs twice
+  });
+});
