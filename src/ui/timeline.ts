@@ -22,8 +22,12 @@ import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState, typ
 import type { ParamSpec } from '../app/params';
 import { useShortcuts } from './shortcuts';
 
-/** With `renderHz`, React re-renders at most every this many frames while playing. */
-const RENDER_MIN_FRAMES = 6;
+/**
+ * With `renderHz`, React re-renders at most every this many frames while playing: at 60 frames a
+ * second that is 3 Hz; on a slow or throttled machine (10–20 frames a second) the text then updates
+ * every 1–2 s and at most one frame in 20 carries React's work (the goal is on the 95th percentile).
+ */
+const RENDER_MIN_FRAMES = 20;
 
 /** Speeds offered by the transport (× the scene's natural speed). */
 export const TIMELINE_SPEEDS = [0.25, 0.5, 1, 2, 4] as const;
