@@ -5,6 +5,7 @@
  * solution in the key's form with the variant's own numbers, and a link to the matching scene.
  * Nothing here touches the DOM; the page (PracticeRoute.tsx) only renders and checks it.
  */
+import { formatSignificant } from '../ui/format';
 
 export const QUESTION_IDS = ['q1', 'q2', 'q3', 'q4', 'q5', 'q6'] as const;
 export type QuestionId = (typeof QUESTION_IDS)[number];
@@ -129,18 +130,12 @@ export function allAnswers(v: Variant): AnswerSpec[] {
 // ---------------------------------------------------------------------------------------------
 // Number formatting for the page and the worked solution.
 
-/** `digits` significant digits, trailing zeros trimmed, no exponent for 1e-4 ≤ |x| < 1e9. */
+/**
+ * `digits` significant digits, trailing zeros trimmed, no exponent for 1e-4 ≤ |x| < 1e9, "e-5"
+ * style beyond (ui/format.ts); non-finite values as String(x).
+ */
 export function fmt(x: number, digits = 6): string {
-  if (!Number.isFinite(x)) return String(x);
-  if (x === 0) return '0';
-  const ax = Math.abs(x);
-  if (ax >= 1e-4 && ax < 1e9) {
-    const s = x.toPrecision(digits);
-    if (!s.includes('e')) return s.includes('.') ? s.replace(/\.?0+$/, '') : s;
-  }
-  const [m, e] = x.toExponential(Math.max(0, digits - 1)).split('e');
-  const mt = m!.includes('.') ? m!.replace(/\.?0+$/, '') : m!;
-  return `${mt}e${e!.replace('+', '')}`;
+  return formatSignificant(x, digits, 'e');
 }
 
 /** A number for TeX: 6 significant digits, × 10^{e} for exponents. */

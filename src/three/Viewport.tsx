@@ -1,4 +1,4 @@
-import { useEffect, useId, useRef, useState } from 'react';
+import { useEffect, useEffectEvent, useId, useRef, useState } from 'react';
 import type { AxisDirs, Engine, ViewportContext } from './engine';
 import { observeVisibility, useSeenOnce } from '../ui/useInView';
 
@@ -13,8 +13,6 @@ export interface ViewportProps {
    * objects later and call ctx.invalidate() after each change.
    */
   setup: (ctx: ViewportContext) => (() => void) | void;
-  /** Re-run setup (after cleanup) when these change. */
-  deps?: readonly unknown[];
   testId?: string;
   /**
    * Mark +x as the azimuth origin (φ = 0) in the axis triad. On by default: every scene that uses
@@ -70,7 +68,7 @@ export function viewportKey(engine: Pick<Engine, 'orbitBy' | 'zoomBy' | 'resetVi
  * to zoom; focus it and use the arrow keys to orbit, + / − to zoom, Home (or "Reset view") to go
  * back to the scene's opening camera. A small triad labels the world axes (and φ = 0).
  */
-export function Viewport({ ariaLabel, height = 360, setup, deps = [], testId, phiZero = true, children }: ViewportProps) {
+export function Viewport({ ariaLabel, height = 360, setup, testId, phiZero = true, children }: ViewportProps) {
   const hintId = useId();
   const triad = useRef<SVGSVGElement>(null);
   const box = useRef<HTMLDivElement>(null);
@@ -79,6 +77,8 @@ export function Viewport({ ariaLabel, height = 360, setup, deps = [], testId, ph
   const [status, setStatus] = useState<'loading' | 'ready' | 'no-webgl'>('loading');
   const setupRef = useRef(setup);
   setupRef.current = setup;
+  // ariaLabel is applied at creation (the latest one); later changes are applied by the effect below
+  const labelNow = useEffectEvent(() => ariaLabel);
 
   useEffect(() => {
     if (!seen || !box.current) return;
@@ -93,7 +93,7 @@ export function Viewport({ ariaLabel, height = 360, setup, deps = [], testId, ph
         return;
       }
       try {
-        eng = m.createEngine(container, ariaLabel);
+        eng = m.createEngine(container, labelNow());
       } catch {
         setStatus('no-webgl');
         return;
@@ -118,15 +118,14 @@ export function Viewport({ ariaLabel, height = 360, setup, deps = [], testId, ph
       eng?.dispose();
       setEngine(null);
     };
-    // ariaLabel is applied at creation; later changes are applied below
-    // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [seen]);
 
   useEffect(() => {
     engine?.ctx.renderer.domElement.setAttribute('aria-label', ariaLabel);
   }, [engine, ariaLabel]);
 
-  // the first setup places the scene's camera: that is the home view "Reset view" returns to
+  // setup runs once per engine; a scene changes its objects later through the ctx (kept in a ref).
+  // The first setup places the scene's camera: that is the home view "Reset view" returns to
   const homeSaved = useRef<Engine | null>(null);
   useEffect(() => {
     if (!engine) return;
@@ -140,8 +139,7 @@ export function Viewport({ ariaLabel, height = 360, setup, deps = [], testId, ph
       if (typeof cleanup === 'function') cleanup();
       engine.ctx.invalidate();
     };
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [engine, ...deps]);
+  }, [engine]);
 
   // the axis triad follows the camera after every render (direct DOM writes: no React render)
   useEffect(() => {

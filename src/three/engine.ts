@@ -4,103 +4,14 @@
  * comes on screen, so three.js never sits in a chunk that does not draw 3D.
  */
 import type * as Three from 'three';
-import {
-  AmbientLight,
-  ArrowHelper,
-  AxesHelper,
-  BackSide,
-  BufferAttribute,
-  BufferGeometry,
-  ClampToEdgeWrapping,
-  Color,
-  DataTexture,
-  DirectionalLight,
-  DoubleSide,
-  DynamicDrawUsage,
-  Float32BufferAttribute,
-  Frustum,
-  FrontSide,
-  GridHelper,
-  Line,
-  LineBasicMaterial,
-  LineDashedMaterial,
-  LineLoop,
-  LineSegments,
-  LinearFilter,
-  Material,
-  Matrix4,
-  Mesh,
-  MeshBasicMaterial,
-  MeshLambertMaterial,
-  MeshStandardMaterial,
-  PerspectiveCamera,
-  PlaneGeometry,
-  Points,
-  PointsMaterial,
-  RGBAFormat,
-  Raycaster,
-  SRGBColorSpace,
-  Scene,
-  Sphere,
-  SphereGeometry,
-  Vector2,
-  Vector3,
-  WebGLRenderer,
-  WireframeGeometry,
-} from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import * as THREE from './threeSubset';
 
 /**
- * The part of three.js the scenes' 3D views use, handed to them as `ctx.THREE` (they must not
- * import three themselves, or it would load with the scene instead of with the first viewport).
- * Named imports rather than `import * as THREE` let the bundler drop the rest of three.js
- * (loaders, animation, most geometries and materials). A view that needs another class adds it here.
+ * The part of three.js the scenes' 3D views use (./threeSubset.ts), handed to them as `ctx.THREE`
+ * (they must not import three themselves, or it would load with the scene instead of with the
+ * first viewport).
  */
-const THREE = {
-  AmbientLight,
-  ArrowHelper,
-  AxesHelper,
-  BackSide,
-  BufferAttribute,
-  BufferGeometry,
-  ClampToEdgeWrapping,
-  Color,
-  DataTexture,
-  DirectionalLight,
-  DoubleSide,
-  DynamicDrawUsage,
-  Float32BufferAttribute,
-  Frustum,
-  FrontSide,
-  GridHelper,
-  Line,
-  LineBasicMaterial,
-  LineDashedMaterial,
-  LineLoop,
-  LineSegments,
-  LinearFilter,
-  Material,
-  Matrix4,
-  Mesh,
-  MeshBasicMaterial,
-  MeshLambertMaterial,
-  MeshStandardMaterial,
-  PerspectiveCamera,
-  PlaneGeometry,
-  Points,
-  PointsMaterial,
-  RGBAFormat,
-  Raycaster,
-  SRGBColorSpace,
-  Scene,
-  Sphere,
-  SphereGeometry,
-  Vector2,
-  Vector3,
-  WebGLRenderer,
-  WireframeGeometry,
-} as const;
-
 export type ThreeModule = typeof THREE;
 
 export interface ViewportContext {
@@ -189,7 +100,7 @@ export function createEngine(container: HTMLElement, ariaLabel: string): Engine 
   // for seconds (measured: Lighthouse mobile, hemisphere). There, draw at 1 CSS px per pixel and
   // without multisampling: several times fewer pixels to shade and read back.
   const software = probeWebGL().software;
-  const renderer = new WebGLRenderer({ antialias: !software, alpha: true, powerPreference: 'low-power' });
+  const renderer = new THREE.WebGLRenderer({ antialias: !software, alpha: true, powerPreference: 'low-power' });
   renderer.setPixelRatio(software ? 1 : Math.min(window.devicePixelRatio || 1, 2));
   renderer.setClearColor(0x000000, 0);
   const canvas = renderer.domElement;
@@ -197,13 +108,13 @@ export function createEngine(container: HTMLElement, ariaLabel: string): Engine 
   canvas.setAttribute('aria-label', ariaLabel);
   container.appendChild(canvas);
 
-  const scene = new Scene();
-  const camera = new PerspectiveCamera(40, 1, 0.01, 1000);
+  const scene = new THREE.Scene();
+  const camera = new THREE.PerspectiveCamera(40, 1, 0.01, 1000);
   camera.up.set(0, 0, 1);
   camera.position.set(2.6, -3.2, 2.2);
   camera.lookAt(0, 0, 0);
-  scene.add(new AmbientLight(0xffffff, 0.6));
-  const sun = new DirectionalLight(0xffffff, 1.6);
+  scene.add(new THREE.AmbientLight(0xffffff, 0.6));
+  const sun = new THREE.DirectionalLight(0xffffff, 1.6);
   sun.position.set(2, -3, 5);
   scene.add(sun);
 

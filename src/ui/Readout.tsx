@@ -1,3 +1,5 @@
+import { formatSignificant } from './format';
+
 /**
  * A number the scene shows, readable by people and by tests: `data-testid` names it and
  * `data-value` holds the full-precision value as `String(x)` prints it (the contract), or "none"
@@ -21,24 +23,9 @@ export function readoutValue(value: number | string | null | undefined): string 
   return value;
 }
 
-/** Visible text of a number: `digits` significant digits, trailing zeros trimmed. */
+/** Visible text of a number: `digits` significant digits, trailing zeros trimmed, "×10⁻⁵" style; "—" when not finite. */
 export function formatNumber(x: number, digits = 6): string {
-  if (!Number.isFinite(x)) return '—';
-  if (x === 0) return '0';
-  const ax = Math.abs(x);
-  if (ax >= 1e-4 && ax < 1e9) {
-    const s = x.toPrecision(digits);
-    // toPrecision switches to "2.00000e+8" when the integer part has more digits than asked for
-    if (!s.includes('e')) return s.includes('.') ? s.replace(/\.?0+$/, '') : s;
-  }
-  const [m, e] = x.toExponential(Math.max(0, digits - 1)).split('e');
-  const mt = m!.includes('.') ? m!.replace(/\.?0+$/, '') : m!;
-  return `${mt}×10${superscript(e!)}`;
-}
-
-function superscript(e: string): string {
-  const map: Record<string, string> = { '-': '⁻', '+': '', '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶', '7': '⁷', '8': '⁸', '9': '⁹' };
-  return [...e].map((c) => map[c] ?? c).join('');
+  return Number.isFinite(x) ? formatSignificant(x, digits, 'times') : '—';
 }
 
 export function Readout({ id, label, value, digits = 6, unit, note }: ReadoutProps) {

@@ -6,29 +6,7 @@
  */
 import { useCallback, useEffect, useMemo, useRef, useState, type ComponentProps } from 'react';
 import type { SceneProps } from '../../app/scene';
-import {
-  Derivation,
-  ExamPart,
-  ExamQuestion,
-  ExploreFurther,
-  KeyNote,
-  LiveAnswer,
-  MathTex,
-  Notice,
-  NumberField,
-  Panel,
-  Plot,
-  Readout,
-  SceneLayout,
-  Select,
-  Slider,
-  TimelineTransport,
-  Toggle,
-  useSeenOnce,
-  useTimeline,
-  useTimelinePosition,
-  type Timeline,
-} from '../../ui';
+import { Derivation, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Plot, Readout, SceneLayout, Select, Slider, TimelineTransport, Toggle, useSeenOnce, useTimeline, useTimelinePosition, type Timeline } from '../../ui';
 import type { PlotTrace } from '../../ui';
 import { useWorkerJob } from '../../workers';
 import type { LightStrategy } from '../../core/lights';
@@ -175,7 +153,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
     [patch],
   );
 
-  const vec = (label: string, key: 'p' | 'lc', v: [number, number, number]) => (
+  const vec = useCallback((label: string, key: 'p' | 'lc', v: [number, number, number]) => (
     <fieldset className="al-vec">
       <legend>{label}</legend>
       {(['x', 'y', 'z'] as const).map((axis, k) => (
@@ -195,7 +173,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
         />
       ))}
     </fieldset>
-  );
+  ), [set]);
 
   // Everything below is memoised on the parameters (not on t), so an animation frame re-renders
   // only the stage's animated bits and the floor images' pass choice.
@@ -242,8 +220,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
         </Panel>
       </>
     ),
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-    [params, strategy, n, seed, reseeding, set],
+    [params, strategy, n, seed, reseeding, set, vec],
   );
 
   const answer6c = useMemo(
@@ -274,7 +251,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
     [strategy, n, chosen, target, model.occluder, pending, zTarget],
   );
 
-  const hl = highlight(dark);
+  const hl = useMemo(() => highlight(dark), [dark]);
   const fArea = given.f;
   const exam = useMemo(
     () => (
@@ -474,8 +451,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
         </ExamPart>
       </>
     ),
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-    [patch, patchTraces, params.pu, params.pv, params.psize, params.ptilt, model, given, seed, dark, set, answer6c],
+    [patch, patchTraces, params.pu, params.pv, params.psize, params.ptilt, model, given, fArea, seed, hl, set, answer6c],
   );
 
   const explore = useMemo(
@@ -543,7 +519,6 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
         </Panel>
       </>
     ),
-    // eslint-disable-next-line react-hooks/exhaustive-deps
     [estimates, strategy, n, seed, target, convTraces, timingTraces, timing.running, timing.progress, timing.error, mode.present],
   );
 

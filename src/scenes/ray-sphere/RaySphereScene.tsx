@@ -6,24 +6,7 @@
  */
 import { memo, useCallback, useDeferredValue, useEffect, useMemo, useRef, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
-import {
-  Derivation as DerivationBlock,
-  ExamPart,
-  ExamQuestion,
-  ExploreFurther,
-  KeyNote,
-  LiveAnswer,
-  MathTex,
-  Notice,
-  NumberField,
-  Panel,
-  Readout,
-  Select,
-  TimelineTransport,
-  useTimeline,
-  useTimelinePosition,
-  type Timeline,
-} from '../../ui';
+import { Derivation as DerivationBlock, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Readout, Select, TimelineTransport, useTimeline, useTimelinePosition, type Timeline } from '../../ui';
 import type { RaySphereHit } from '../../core/geometry';
 import { CASE_PRESETS, PRECISION_PRESETS, schema, type Preset, type RaySphereParams } from './params';
 import {
@@ -169,8 +152,8 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
         {activePreset ? <p className="rs-small rs-preset-what">{activePreset.what}</p> : null}
       </div>
     ),
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-    [activePreset?.id, setParams],
+    // activePreset is one of the module-level preset objects (or undefined): a stable identity
+    [activePreset, setParams],
   );
 
   const fields = useMemo(

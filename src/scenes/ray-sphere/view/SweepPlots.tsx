@@ -120,11 +120,11 @@ export function GSweepPlot({ res, window: w }: GPlotProps) {
   const box = useRef<HTMLDivElement>(null);
   const W = Math.max(260, useWidth(box, 520));
   const H = Math.round(Math.min(300, Math.max(220, W * 0.5)));
-  const xd: [number, number] = [w.tMin - w.shift, w.tMax - w.shift];
-  const yd: [number, number] = [w.gMin, w.gMax];
-  const f = makeFrame(W, H, xd, yd);
+  const xd = useMemo<[number, number]>(() => [w.tMin - w.shift, w.tMax - w.shift], [w.tMin, w.tMax, w.shift]);
+  const yd = useMemo<[number, number]>(() => [w.gMin, w.gMax], [w.gMin, w.gMax]);
+  const f = useMemo(() => makeFrame(W, H, xd, yd), [W, H, xd, yd]);
   const xLabel = w.shift ? `t − ${w.shift.toPrecision(12)}` : 't (grey: behind the origin, t < 0)';
-  const axes = useMemo(() => <Axes f={f} xd={xd} yd={yd} title="g(t) = a t² + b t + c" xLabel={xLabel} yLabel="g(t)" />, [W, H, w.tMin, w.tMax, w.gMin, w.gMax, w.shift]); // eslint-disable-line react-hooks/exhaustive-deps
+  const axes = useMemo(() => <Axes f={f} xd={xd} yd={yd} title="g(t) = a t² + b t + c" xLabel={xLabel} yLabel="g(t)" />, [f, xd, yd, xLabel]);
   let path = '';
   const marks: ReactNode[] = [];
   if (res) {

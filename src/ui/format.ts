@@ -1,0 +1,30 @@
+/**
+ * Numbers as text for people, shared by the readouts (ui/Readout.tsx `formatNumber`) and the
+ * practice pages (practice/model.ts `fmt`): pure, no DOM.
+ */
+
+/** How an exponent is written: 'e' → "1.5e-5" (plain text), 'times' → "1.5×10⁻⁵" (typeset). */
+export type ExponentStyle = 'e' | 'times';
+
+const SUPERSCRIPT: Readonly<Record<string, string>> = Object.assign(Object.create(null) as Record<string, string>, {
+  '-': '⁻', '+': '', '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶', '7': '⁷', '8': '⁸', '9': '⁹',
+});
+
+/**
+ * `digits` significant digits, trailing zeros trimmed, no exponent for 1e-4 ≤ |x| < 1e9; outside
+ * that range a trimmed mantissa and the exponent in `style`. Domain: finite x (callers choose
+ * what a non-finite value reads as; here it is String(x)); digits 1 … 100.
+ */
+export function formatSignificant(x: number, digits: number, style: ExponentStyle): string {
+  if (!Number.isFinite(x)) return String(x);
+  if (x === 0) return '0';
+  const ax = Math.abs(x);
+  if (ax >= 1e-4 && ax < 1e9) {
+    const s = x.toPrecision(digits);
+    // toPrecision switches to "2.00000e+8" when the integer part has more digits than asked for
+    if (!s.includes('e')) return s.includes('.') ? s.replace(/\.?0+$/, '') : s;
+  }
+  const [m, e] = x.toExponential(Math.max(0, digits - 1)).split('e');
+  const mt = m!.includes('.') ? m!.replace(/\.?0+$/, '') : m!;
+  return style === 'e' ? `${mt}e${e!.replace('+', '')}` : `${mt}×10${[...e!].map((c) => SUPERSCRIPT[c] ?? c).join('')}`;
+}
