@@ -14,9 +14,24 @@ export function loadKatex(): Promise<Katex> {
 }
 
 /**
- * TeX rendered by KaTeX (HTML + MathML for screen readers). KaTeX loads lazily; until then, and if
- * the TeX is invalid, the source is shown as code. Never throws.
+ * Rendered formulas, most recently used last: an animation that loops (or steps back and forth)
+ * shows the same formulas again, and KaTeX costs far more than a frame.
  */
+const CACHE = new Map<string, string>();
+const CACHE_MAX = 256;
+function cached(key: string): string | undefined {
+  const v = CACHE.get(key);
+  if (v !== undefined) {
+    CACHE.delete(key);
+    CACHE.set(key, v);
+  }
+  return v;
+}
+function remember(key: string, html: string): void {
+  CACHE.set(key, html);
+  if (CACHE.size > CACHE_MAX) CACHE.delete(CACHE.keys().next().value!);
+}
+
 let printHooked = false;
 /** Before printing, every formula still waiting for idle time is typeset (and committed) at once. */
 function hookPrint(): void {
@@ -25,10 +40,20 @@ function hookPrint(): void {
   window.addEventListener('beforeprint', () => flushSync(() => flushMathForPrint()));
 }
 
+/**
+ * TeX rendered by KaTeX (HTML + MathML for screen readers). KaTeX loads lazily; until then, and if
+ * the TeX is invalid, the source is shown as code. Never throws.
+ */
 export function MathTex({ tex, display = false, className }: { tex: string; display?: boolean; className?: string }) {
-  const [html, setHtml] = useState<string | null>(null);
+  const key = `${display ? 'D' : 'I'}${tex}`;
+  const [html, setHtml] = useState<string | null>(() => cached(key) ?? null);
   const ref = useRef<HTMLElement>(null);
   useEffect(() => {
+    const hit = cached(key);
+    if (hit !== undefined) {
+      setHtml(hit);
+      return;
+    }
     let alive = true;
     let cancel = () => {};
     hookPrint();
@@ -41,7 +66,9 @@ export function MathTex({ tex, display = false, className }: { tex: string; disp
         cancel = scheduleMath(ref.current, () => {
           if (!alive) return;
           try {
-            setHtml(k.renderToString(tex, { displayMode: display, throwOnError: false, strict: 'ignore', output: 'htmlAndMathml' }));
+            const out = k.renderToString(tex, { displayMode: display, throwOnError: false, strict: 'ignore', output: 'htmlAndMathml' });
+            remember(key, out);
+            setHtml(out);
           } catch {
             setHtml(null);
           }
@@ -52,7 +79,7 @@ export function MathTex({ tex, display = false, className }: { tex: string; disp
       alive = false;
       cancel();
     };
-  }, [tex, display]);
+  }, [key, tex, display]);
   const Tag = display ? 'div' : 'span';
   if (html === null) {
     return (

@@ -3,8 +3,8 @@
  * loop and a labelled, keyboard-operable scrubber. Space / s / r work while focus is inside it
  * (and, in classroom mode, anywhere on the page through the shortcut registry).
  */
-import { useId, type KeyboardEvent, type ReactNode } from 'react';
-import { TIMELINE_SPEEDS, type Timeline } from './timeline';
+import { useId, useRef, type KeyboardEvent, type ReactNode } from 'react';
+import { TIMELINE_SPEEDS, useTimelineFrame, type Timeline } from './timeline';
 
 export interface TimelineTransportProps {
   timeline: Timeline;
@@ -23,6 +23,13 @@ function speedText(s: number): string {
 
 export function TimelineTransport({ timeline: tl, label, format, children, testId = 'timeline' }: TimelineTransportProps) {
   const id = useId();
+  // the scrubber's thumb follows every frame (a direct write; React re-renders the transport, its
+  // position text and aria-valuetext only as often as the timeline's renderHz lets it)
+  const scrub = useRef<HTMLInputElement>(null);
+  useTimelineFrame(tl, (t) => {
+    const el = scrub.current;
+    if (el && Number(el.value) !== t) el.value = String(t);
+  });
   const text = format ? format(tl.t) : tl.integer ? `${tl.t} of ${tl.max}` : `${Math.round((tl.t / (tl.max || 1)) * 100)} %`;
   const onKeyDown = (e: KeyboardEvent<HTMLDivElement>) => {
     if (e.ctrlKey || e.metaKey || e.altKey) return;
@@ -76,6 +83,7 @@ export function TimelineTransport({ timeline: tl, label, format, children, testI
         </label>
         <input
           id={`${id}-scrub`}
+          ref={scrub}
           type="range"
           min={0}
           max={tl.max}

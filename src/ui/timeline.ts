@@ -6,16 +6,28 @@
  * (`t`, and `play=1` while playing), so a link reopens the animation at the same moment. What a scene
  * draws at position t must be a pure function of its parameters, its seed and t (the scene's model
  * computes it; the view only draws it). While playing, the position advances once per animation
- * frame in React state (keep the animated part of a scene in a small component that takes `t`);
- * the URL is written when the animation pauses, is stepped, reset or scrubbed, not per frame.
+ * frame; subscribers (`timeline.subscribe`, `useTimelineFrame`) get every frame's position, and
+ * React state (`timeline.t`) follows every frame too unless the scene passes `renderHz`: then React
+ * re-renders at most that often while playing (and exactly on pause, step, reset and seek), and
+ * the scene draws the moving parts itself from a frame subscription (direct DOM / canvas writes),
+ * which keeps React's reconciliation out of the per-frame path. The transport's scrubber and
+ * position text follow every frame through such a subscription. The URL is written when the
+ * animation pauses, is stepped, reset or scrubbed, not per frame.
  *
  * Nothing is requested from requestAnimationFrame while the timeline is paused, while its element
  * is off screen, or while the tab is hidden. `prefers-reduced-motion: reduce` starts it paused and
  * ignores `play=1` from a link (the Play button still works: that is the user's own choice).
  */
-import { useCallback, useEffect, useMemo, useRef, useState, type RefObject } from 'react';
+import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState, type RefObject } from 'react';
 import type { ParamSpec } from '../app/params';
 import { useShortcuts } from './shortcuts';
+
+/**
+ * With `renderHz`, React re-renders at most every this many frames while playing: at 60 frames a
+ * second that is 3 Hz; on a slow or throttled machine (10–20 frames a second) the text then updates
+ * every 1–2 s and at most one frame in 20 carries React's work (the goal is on the 95th percentile).
+ */
+const RENDER_MIN_FRAMES = 20;
 
 /** Speeds offered by the transport (× the scene's natural speed). */
 export const TIMELINE_SPEEDS = [0.25, 0.5, 1, 2, 4] as const;
@@ -80,7 +92,15 @@ export interface TimelineOptions {
   visibleRef?: RefObject<Element | null>;
   /** Register Space (play/pause) and s (step) as classroom shortcuts (default true). */
   shortcuts?: boolean;
+  /**
+   * While playing, update React state (`t`) at most this many times a second (subscribers still get
+   * every frame); exact on pause / step / reset / seek. Default: every frame.
+   */
+  renderHz?: number;
 }
+
+/** A frame subscriber: the visible position (integer timelines: floored) and whether it is playing. */
+export type TimelineListener = (t: number, playing: boolean) => void;
 
 export interface Timeline {
   /** Current position (integer timelines: a whole number). */
@@ -102,6 +122,36 @@ export interface Timeline {
   seek: (t: number) => void;
   setSpeed: (s: number) => void;
   setLoop: (loop: boolean) => void;
+  /**
+   * Called with the position on every animation frame while playing and on every change of the
+   * position or of playing (after React committed it); returns the unsubscribe function. Listeners
+   * are called once on subscribe too.
+   */
+  subscribe: (fn: TimelineListener) => () => void;
+  /** The live position (ahead of `t` between React renders when `renderHz` is set). */
+  now: () => number;
+}
+
+/**
+ * The live position, re-rendering only the calling component on every frame (for a small figure
+ * that moves every frame while the component owning the timeline re-renders at `renderHz`).
+ */
+export function useTimelinePosition(tl: Pick<Timeline, 'subscribe' | 'now'>): number {
+  const [t, setT] = useState(tl.now);
+  useTimelineFrame(tl, setT);
+  return t;
+}
+
+/**
+ * Run `draw(t, playing)` on every frame of the timeline and whenever its position or state changes
+ * (subscribed in a layout effect, so the first draw happens before paint). `draw` may change
+ * identity between renders; the latest one is used. Keep it cheap: direct DOM / canvas writes.
+ */
+export function useTimelineFrame(tl: Pick<Timeline, 'subscribe'> | null, draw: TimelineListener): void {
+  const ref = useRef(draw);
+  ref.current = draw;
+  const sub = tl?.subscribe;
+  useLayoutEffect(() => (sub ? sub((t, p) => ref.current(t, p)) : undefined), [sub]);
 }
 
 /** The timeline hook: see the module comment. */
@@ -109,15 +159,48 @@ export function useTimeline(opts: TimelineOptions): Timeline {
   const { max, duration, setParams } = opts;
   const integer = !!opts.integer;
   const stepSize = opts.stepSize ?? (integer ? 1 : max / 100);
-  const [exact, setExact] = useState(() => clampPosition(opts.t, max, integer));
+  const [exact, setExactState] = useState(() => clampPosition(opts.t, max, integer));
   const [playing, setPlaying] = useState(() => opts.play && !prefersReducedMotion());
   const [speed, setSpeed] = useState(1);
   const [loop, setLoop] = useState(!!opts.loop);
 
-  // live values for the frame loop and callbacks
-  const live = useRef({ exact, playing, speed, loop, max, integer, duration, setParams });
-  live.current = { ...live.current, playing, speed, loop, max, integer, duration, setParams };
-  live.current.exact = exact;
+  // live values for the frame loop and callbacks (`exact` runs ahead of React state while playing
+  // with renderHz; setExact keeps both in step)
+  const live = useRef({ exact, playing, speed, loop, max, integer, duration, setParams, renderHz: opts.renderHz });
+  live.current = { ...live.current, playing, speed, loop, max, integer, duration, setParams, renderHz: opts.renderHz };
+  const setExact = useCallback((next: number | ((e: number) => number)) => {
+    const v = typeof next === 'function' ? next(live.current.exact) : next;
+    live.current.exact = v;
+    setExactState(v);
+  }, []);
+
+  // frame subscribers
+  const listeners = useRef(new Set<TimelineListener>());
+  const notify = useCallback(() => {
+    const l = live.current;
+    const t = l.integer ? Math.floor(l.exact + 1e-9) : l.exact;
+    for (const fn of listeners.current) fn(t, l.playing);
+  }, []);
+  const subscribe = useCallback(
+    (fn: TimelineListener) => {
+      listeners.current.add(fn);
+      const l = live.current;
+      fn(l.integer ? Math.floor(l.exact + 1e-9) : l.exact, l.playing);
+      return () => {
+        listeners.current.delete(fn);
+      };
+    },
+    [],
+  );
+  const now = useCallback(() => {
+    const l = live.current;
+    return l.integer ? Math.floor(l.exact + 1e-9) : l.exact;
+  }, []);
+  // every committed change (pause, step, seek, a coarse render while playing) reaches the subscribers
+  useLayoutEffect(() => {
+    live.current.playing = playing;
+    notify();
+  }, [exact, playing, max, integer, notify]);
 
   // what we last wrote to the URL, so external changes (hashchange, host API) can be told apart
   const written = useRef({ t: clampPosition(opts.t, max, integer), play: opts.play });
@@ -142,6 +225,7 @@ export function useTimeline(opts: TimelineOptions): Timeline {
       setPlaying(true);
     } else if (l.playing) {
       setPlaying(false);
+      setExact(l.exact);
       const t = l.integer ? Math.floor(l.exact + 1e-9) : l.exact;
       written.current.t = t;
       l.setParams({ t });
@@ -165,15 +249,16 @@ export function useTimeline(opts: TimelineOptions): Timeline {
 
   const pause = useCallback(() => {
     setPlaying(false);
+    setExact(live.current.exact); // React state catches up with a position that ran ahead (renderHz)
     write({ t: shown(live.current.exact), play: false });
-  }, [write]);
+  }, [write, setExact]);
   const play = useCallback(() => {
     let start = live.current.exact;
     if (start >= live.current.max) start = 0; // play from the start after the end
     setExact(start);
     setPlaying(true);
     write({ t: shown(start), play: true });
-  }, [write]);
+  }, [write, setExact]);
   const toggle = useCallback(() => (live.current.playing ? pause() : play()), [pause, play]);
   const seek = useCallback(
     (t: number) => {
@@ -181,7 +266,7 @@ export function useTimeline(opts: TimelineOptions): Timeline {
       setExact(c);
       write({ t: c });
     },
-    [write],
+    [write, setExact],
   );
   const step = useCallback(() => {
     const l = live.current;
@@ -191,12 +276,12 @@ export function useTimeline(opts: TimelineOptions): Timeline {
     setPlaying(false);
     setExact(next);
     write({ t: next, play: false });
-  }, [write]);
+  }, [write, setExact]);
   const reset = useCallback(() => {
     setPlaying(false);
     setExact(0);
     write({ t: 0, play: false });
-  }, [write]);
+  }, [write, setExact]);
 
   // the frame loop: only while playing, on screen and in a visible tab
   const visibleRef = opts.visibleRef;
@@ -221,6 +306,8 @@ export function useTimeline(opts: TimelineOptions): Timeline {
     if (!playing || !onScreen || !tabVisible) return;
     let raf = 0;
     let last = -1;
+    let rendered = -Infinity;
+    let sinceRender = Infinity;
     const frame = (now: number) => {
       raf = 0;
       const l = live.current;
@@ -228,12 +315,23 @@ export function useTimeline(opts: TimelineOptions): Timeline {
       const dt = last < 0 ? 0 : Math.min(100, now - last); // a long gap (e.g. a stall) does not jump
       last = now;
       const { t, ended } = advance(l.exact, dt, { max: l.max, duration: l.duration, speed: l.speed, loop: l.loop });
-      l.exact = t;
-      setExact(t);
       if (ended) {
+        setExact(t);
         setPlaying(false);
         write({ t: shown(t), play: false });
         return;
+      }
+      const hz = l.renderHz;
+      sinceRender++;
+      // coarse React renders: at most renderHz a second, and (on a slow machine, where frames are
+      // far apart) at most every RENDER_MIN_FRAMES frames, so most frames stay free of React
+      if (hz === undefined || (now - rendered >= 1000 / hz - 1 && sinceRender >= RENDER_MIN_FRAMES)) {
+        rendered = now;
+        sinceRender = 0;
+        setExact(t); // the layout effect tells the subscribers after React committed
+      } else {
+        l.exact = t;
+        notify();
       }
       raf = requestAnimationFrame(frame);
     };
@@ -241,13 +339,13 @@ export function useTimeline(opts: TimelineOptions): Timeline {
     return () => {
       if (raf) cancelAnimationFrame(raf);
     };
-  }, [playing, onScreen, tabVisible, write]);
+  }, [playing, onScreen, tabVisible, write, setExact, notify]);
 
   useShortcuts(opts.shortcuts === false ? {} : { playPause: toggle, step });
 
   const t = integer ? Math.floor(exact + 1e-9) : exact;
   return useMemo(
-    () => ({ t, max, integer, playing, speed, loop, stepSize, play, pause, toggle, step, reset, seek, setSpeed, setLoop }),
-    [t, max, integer, playing, speed, loop, stepSize, play, pause, toggle, step, reset, seek],
+    () => ({ t, max, integer, playing, speed, loop, stepSize, play, pause, toggle, step, reset, seek, setSpeed, setLoop, subscribe, now }),
+    [t, max, integer, playing, speed, loop, stepSize, play, pause, toggle, step, reset, seek, subscribe, now],
   );
 }

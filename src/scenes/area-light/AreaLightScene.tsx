@@ -4,9 +4,9 @@
  * uniform area (the key's), solid-angle (spherical rectangle) and cosine hemisphere sampling —
  * against the analytic reference (Lambert's formula). All figures come from ./model over the core.
  */
-import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
+import { useCallback, useEffect, useMemo, useRef, useState, type ComponentProps } from 'react';
 import type { SceneProps } from '../../app/scene';
-import { Derivation, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Plot, Readout, SceneLayout, Select, Slider, TimelineTransport, Toggle, useSeenOnce, useTimeline } from '../../ui';
+import { Derivation, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Plot, Readout, SceneLayout, Select, Slider, TimelineTransport, Toggle, useSeenOnce, useTimeline, useTimelinePosition, type Timeline } from '../../ui';
 import type { PlotTrace } from '../../ui';
 import { useWorkerJob } from '../../workers';
 import type { LightStrategy } from '../../core/lights';
@@ -102,6 +102,9 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
     integer: true,
     duration: Math.max(4, animMax / 64),
     visibleRef: stageRef,
+    // while playing, the scene (readouts, floor pass) re-renders 4 times a second; the 3D samples
+    // and the running-estimate plot follow every frame in their own components (LiveScene3D, LiveRunning)
+    renderHz: 4,
   });
   const af = animationFrame(run, tl.t);
   const floorPass = floorPassAt(tl.t, animMax);
@@ -524,7 +527,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
     <div className="al-stage-wrap">
     <div className="al-stage" ref={stageRef}>
       <div className="al-stage-3d">
-        <Scene3D model={model} strategy={strategy} samples={run.points} terms={run.terms} count={af.k} patch={patch} height={vpHeight} dark={dark} />
+        <LiveScene3D tl={tl} run={run} model={model} strategy={strategy} samples={run.points} terms={run.terms} patch={patch} height={vpHeight} dark={dark} />
       </div>
       <div className="al-stage-side">
         <TimelineTransport timeline={tl} label={`Samples arriving (${STRATEGY_SHORT[strategy]})`} format={fmtPos} />
@@ -534,7 +537,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
           <Readout id="anim-stderr" label="its standard error" value={af.k > 1 ? af.stderr : null} digits={3} />
           <Readout id="anim-term" label="newest sample’s term" value={af.k > 0 ? af.newestTerm : null} digits={5} />
         </div>
-        <RunningEstimate run={run} reference={target} k={af.k} />
+        <LiveRunning tl={tl} run={run} reference={target} />
       </div>
       <p className="al-legend">
         Yellow: the emitting side of the light (its back is dark). Dots: the samples of the {STRATEGY_LABEL[strategy]} strategy arrived so far
@@ -580,4 +583,14 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
   );
 
   return <SceneLayout controls={controls} main={main} />;
+}
+
+/** The 3D view with the samples arrived at the timeline's live position (re-renders alone, every frame). */
+function LiveScene3D({ tl, run, ...rest }: { tl: Timeline; run: ComponentProps<typeof RunningEstimate>['run'] } & Omit<ComponentProps<typeof Scene3D>, 'count'>) {
+  return <Scene3D {...rest} count={animationFrame(run, useTimelinePosition(tl)).k} />;
+}
+
+/** The running-estimate plot at the timeline's live position (re-renders alone, every frame). */
+function LiveRunning({ tl, run, reference }: { tl: Timeline; run: ComponentProps<typeof RunningEstimate>['run']; reference: number }) {
+  return <RunningEstimate run={run} reference={reference} k={animationFrame(run, useTimelinePosition(tl)).k} />;
 }

@@ -5,9 +5,9 @@
  * warp morph of the unit square onto the hemisphere, on the shared timeline (issue 12) — sits
  * right after the question. Samples, χ² and the Q2 estimators are computed in a worker.
  */
-import { lazy, memo, Suspense, useMemo, useRef, useState } from 'react';
+import { lazy, memo, Suspense, useMemo, useRef, useState, type ComponentProps } from 'react';
 import type { SceneProps } from '../../app/scene';
-import { useCompiled, ExprField, NumberField, Notice, Panel, Readout, Select, Slider, Toggle, TimelineTransport, useTimeline, prefersReducedMotion, formatNumber } from '../../ui';
+import { useCompiled, ExprField, NumberField, Notice, Panel, Readout, Select, Slider, Toggle, TimelineTransport, useTimeline, useTimelinePosition, prefersReducedMotion, formatNumber, type Timeline } from '../../ui';
 import { ExamQuestion, ExploreFurther } from '../../ui/exam';
 import { MathTex } from '../../ui';
 import { useWorkerJob } from '../../workers';
@@ -351,7 +351,9 @@ interface FigureProps {
  */
 function Figure({ lobe, lobeId, kind, seed, n, anim, t, play, setParams, present, problem, settings }: FigureProps) {
   const box = useRef<HTMLDivElement>(null);
-  const tl = useTimeline({ t, play, setParams, max: 1, duration: animDuration(anim, n), visibleRef: box });
+  // while playing, this component (readouts, caption, transport) re-renders 4 times a second; the 3D
+  // view follows every frame alone (LiveHemisphereView)
+  const tl = useTimeline({ t, play, setParams, max: 1, duration: animDuration(anim, n), visibleRef: box, renderHz: 4 });
   const frame = useMemo(() => animFrame(lobe, kind, seed, n, anim, tl.t), [lobe, kind, seed, n, anim, tl.t]);
   const [showPoints, setShowPoints] = useState(true);
   const [showGrid, setShowGrid] = useState(true);
@@ -361,7 +363,7 @@ function Figure({ lobe, lobeId, kind, seed, n, anim, t, play, setParams, present
     <div className="hemi-figure" ref={box}>
       <div className="hemi-figure-main">
         {lobe ? (
-          <HemisphereView lobe={lobe} kind={kind} seed={seed} n={n} frame={frame} showPoints={showPoints} showGrid={showGrid} height={present ? 520 : 400} />
+          <LiveHemisphereView tl={tl} lobe={lobe} kind={kind} seed={seed} n={n} anim={anim} showPoints={showPoints} showGrid={showGrid} height={present ? 520 : 400} />
         ) : (
           <div className="hemi-no-view">{problem}</div>
         )}
@@ -398,6 +400,18 @@ function Figure({ lobe, lobeId, kind, seed, n, anim, t, play, setParams, present
       </div>
     </div>
   );
+}
+
+/** The 3D view at the timeline's live position: re-renders alone on every frame while playing. */
+function LiveHemisphereView({
+  tl,
+  anim,
+  ...rest
+}: { tl: Timeline; anim: AnimKind } & Omit<ComponentProps<typeof HemisphereView>, 'frame'>) {
+  const t = useTimelinePosition(tl);
+  const { lobe, kind, seed, n } = rest;
+  const frame = useMemo(() => animFrame(lobe, kind, seed, n, anim, t), [lobe, kind, seed, n, anim, t]);
+  return <HemisphereView {...rest} frame={frame} />;
 }
 
 function StabilityDetails() {

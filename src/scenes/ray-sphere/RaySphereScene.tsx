@@ -6,7 +6,7 @@
  */
 import { memo, useCallback, useDeferredValue, useEffect, useMemo, useRef, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
-import { Derivation as DerivationBlock, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Readout, Select, TimelineTransport, useTimeline } from '../../ui';
+import { Derivation as DerivationBlock, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Readout, Select, TimelineTransport, useTimeline, useTimelinePosition, type Timeline } from '../../ui';
 import type { RaySphereHit } from '../../core/geometry';
 import { CASE_PRESETS, PRECISION_PRESETS, schema, type Preset, type RaySphereParams } from './params';
 import {
@@ -21,7 +21,9 @@ import {
   sweepSeries,
   tMinFor,
   type RaySphereModel,
+  type Sweep,
   type SweepMode,
+  type SweepSeries,
   type V3,
 } from './model';
 import { CrossSection } from './view/CrossSection';
@@ -56,17 +58,32 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
   const series = useMemo(() => sweepSeries(params, sweep), [params, sweep]);
 
   const stageRef = useRef<HTMLDivElement>(null);
-  const tl = useTimeline({ t: params.t as number, play: params.play as boolean, setParams, max: 1, duration: SWEEP_SECONDS, stepSize: 1 / 120, loop: true, visibleRef: stageRef });
+  // While playing, this component (readouts, case banner, notes) re-renders only RENDER_HZ times a
+  // second; the figures that move every frame (the cross-section and the two plots) follow the
+  // timeline's frames in their own small components (<LiveCrossSection>, <LivePlots>).
+  const tl = useTimeline({
+    t: params.t as number,
+    play: params.play as boolean,
+    setParams,
+    max: 1,
+    duration: SWEEP_SECONDS,
+    stepSize: 1 / 120,
+    loop: true,
+    visibleRef: stageRef,
+    renderHz: RENDER_HZ,
+  });
   const t = tl.t;
+  const modelAt = useMemo(() => lastValue((tt: number) => computeModel(paramsAt(params, sweep, tt))), [params, sweep]);
   const at = useMemo(() => sweepAt(sweep, t), [sweep, t]);
-  const model = useMemo(() => computeModel(paramsAt(params, sweep, t)), [params, sweep, t]);
+  const model = modelAt(t);
 
-  // Edits (drags, typing, presets) describe the ray you see: they become the sweep's centre (t = 0.5).
-  const liveRef = useRef({ at, t });
-  liveRef.current = { at, t };
+  // Edits (drags, typing, presets) describe the ray you see (at the live position): they become the sweep's centre (t = 0.5).
+  const liveRef = useRef({ sweep, now: tl.now });
+  liveRef.current = { sweep, now: tl.now };
   const edit = useCallback(
     (patch: Partial<RaySphereParams>) => {
-      const { at: cur, t: tNow } = liveRef.current;
+      const tNow = liveRef.current.now();
+      const cur = sweepAt(liveRef.current.sweep, tNow);
       if (tNow === 0.5) setParams(patch);
       else setParams({ o: cur.o, d: cur.d, ...patch, t: 0.5, play: false });
     },
@@ -104,7 +121,6 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
   const problems = base.problems;
   const method = params.method === 'naive' ? 'naive' : 'stable';
   const naiveRow = model.rows.find((x) => x.method === 'naive');
-  const stableRow = model.rows.find((x) => x.method === 'stable');
   const hereErrors = useMemo(
     () => ({ naive: slow.rows.find((x) => x.method === 'naive')?.errDisc ?? null, stable: slow.rows.find((x) => x.method === 'stable')?.errDisc ?? null }),
     [slow],
@@ -233,7 +249,7 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
         >
           <div className="rs-stage" ref={stageRef}>
             <div className="rs-stage-fig">
-              <CrossSection o={o} d={d} c={c} r={r} res={res} distanceRatio={model.distanceRatio} onChange={(patch) => setSoon(patch)} fitExtra={ends} />
+              <LiveCrossSection tl={tl} modelAt={modelAt} onChange={setSoon} fitExtra={ends} />
               <CaseBanner res={res} />
               <TimelineTransport timeline={tl} label="Ray sweep" format={fmtPos} testId="timeline">
                 {sweepControls}
@@ -244,16 +260,7 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
               {fields}
             </div>
             <div className="rs-stage-plots">
-              <GSweepPlot res={res} window={series.gWindow} />
-              <DeltaSweepPlot
-                series={series}
-                tangentX={tangentX}
-                x={at.x}
-                discStable={stableRow?.res.discriminant ?? null}
-                discNaive={naiveRow?.res.discriminant ?? null}
-                xLabel={xLabel}
-                method={method}
-              />
+              <LivePlots tl={tl} modelAt={modelAt} sweep={sweep} series={series} tangentX={tangentX} xLabel={xLabel} method={method} />
               <p className="rs-small" data-testid="sweep-note">
                 Strip under the Δ plot: the {method === 'naive' ? 'textbook' : 'robust'} method’s case at each position (grey miss, green two hits, blue inside, red behind, gold
                 tangent). {series.tangents.length ? `Δ crosses 0 where the line touches the sphere (tangent, |${sweepMode === 'offset' ? 'h / r' : 'ψ / α'}| = 1).` : 'In this sweep the line never touches the sphere.'}{' '}
@@ -397,6 +404,77 @@ function VecField({ label, name, value, onChange }: { label: string; name: strin
         />
       ))}
     </fieldset>
+  );
+}
+
+/** How often the scene's text (readouts, case, notes) re-renders while the sweep plays. */
+const RENDER_HZ = 4;
+
+/** `f`, remembering its last argument and result (the figures and the scene often ask for the same t). */
+function lastValue<T>(f: (t: number) => T): (t: number) => T {
+  let at = NaN;
+  let v: T | undefined;
+  return (t) => {
+    if (v === undefined || t !== at) {
+      v = f(t);
+      at = t;
+    }
+    return v;
+  };
+}
+
+/** The cross-section at the live position (re-renders every frame while playing, alone). */
+function LiveCrossSection({
+  tl,
+  modelAt,
+  onChange,
+  fitExtra,
+}: {
+  tl: Timeline;
+  modelAt: (t: number) => RaySphereModel;
+  onChange: (patch: Partial<RaySphereParams>) => void;
+  fitExtra: readonly V3[];
+}) {
+  const m = modelAt(useTimelinePosition(tl));
+  const { o, d, c, r } = m.input;
+  return <CrossSection o={o} d={d} c={c} r={r} res={m.chosen} distanceRatio={m.distanceRatio} onChange={onChange} fitExtra={fitExtra} />;
+}
+
+/** g(t) and Δ against the sweep at the live position (re-render every frame while playing, alone). */
+function LivePlots({
+  tl,
+  modelAt,
+  sweep,
+  series,
+  tangentX,
+  xLabel,
+  method,
+}: {
+  tl: Timeline;
+  modelAt: (t: number) => RaySphereModel;
+  sweep: Sweep;
+  series: SweepSeries;
+  tangentX: number[];
+  xLabel: string;
+  method: 'naive' | 'stable';
+}) {
+  const t = useTimelinePosition(tl);
+  const m = modelAt(t);
+  const naiveRow = m.rows.find((x) => x.method === 'naive');
+  const stableRow = m.rows.find((x) => x.method === 'stable');
+  return (
+    <>
+      <GSweepPlot res={m.chosen} window={series.gWindow} />
+      <DeltaSweepPlot
+        series={series}
+        tangentX={tangentX}
+        x={sweepAt(sweep, t).x}
+        discStable={stableRow?.res.discriminant ?? null}
+        discNaive={naiveRow?.res.discriminant ?? null}
+        xLabel={xLabel}
+        method={method}
+      />
+    </>
   );
 }
 

@@ -45,7 +45,7 @@ import {
   type PathProfile,
   type QueryPath,
 } from './model';
-import { TimelineDriver, animContext, createTimelineStore, useAnimT, useWorkedT, type AnimContext } from './anim';
+import { TimelineDriver, animContext, createTimelineStore, useAnimFrame, useAnimT, useStillT, useWorkedT, type AnimContext } from './anim';
 import { GRID_TEXT_MAX, type PathKind, type Preset, type TextureSchema } from './params';
 import { GridView, StencilDetail, fmtShort, type Grab } from './view/GridView';
 import { BilinearWorked, NearestWorked, WideMath, bilinearTex, sphereTex } from './view/WorkedSteps';
@@ -619,20 +619,27 @@ function GridText({ text, onApply }: { text: string; onApply: (t: string) => voi
   );
 }
 
-// ---- The animated parts: each subscribes to the timeline's position (./anim), so a frame
-// re-renders only these, not the scene.
+// ---- The animated parts (./anim): the figures render at the paused position and their moving
+// nodes are written per frame without React; the text parts follow the timeline's coarse position.
 
 /** The grid figure with the query at position t (the grid's layers are memoized inside). */
-function AnimGrid({ ctx, ...rest }: { ctx: AnimContext } & Omit<ComponentProps<typeof GridView>, 'q' | 'path'>) {
-  const t = useAnimT(ctx.store);
-  return <GridView {...rest} q={ctx.frame(t).dq} path={ctx.path} />;
+function AnimGrid({ ctx, ...rest }: { ctx: AnimContext } & Omit<ComponentProps<typeof GridView>, 'q' | 'path' | 'drawRef'>) {
+  const t = useStillT(ctx.store);
+  const draw = useRef<((q: ReturnType<AnimContext['frame']>['dq']) => void) | null>(null);
+  useAnimFrame(ctx.store, (x) => draw.current?.(ctx.frame(x).dq));
+  return <GridView {...rest} q={ctx.frame(t).dq} path={ctx.path} drawRef={draw} />;
 }
 
 /** The value along the path with the marker at t (its curves are memoized inside). */
 function AnimPathPlot({ ctx, profile, present }: { ctx: AnimContext; profile: PathProfile; present: boolean }) {
-  const t = useAnimT(ctx.store);
+  const t = useStillT(ctx.store);
   const q = ctx.frame(t).frame.lookup;
-  return <PathPlot profile={profile} t={t} near={q.near.value} bil={q.bil.value} present={present} />;
+  const draw = useRef<((t: number, near: number, bil: number) => void) | null>(null);
+  useAnimFrame(ctx.store, (x) => {
+    const l = ctx.frame(x).frame.lookup;
+    draw.current?.(x, l.near.value, l.bil.value);
+  });
+  return <PathPlot profile={profile} t={t} near={q.near.value} bil={q.bil.value} present={present} drawRef={draw} />;
 }
 
 /** The query now, its stencil and the addressing notes, beside the grid. */
@@ -696,9 +703,14 @@ function Readouts3b({ ctx }: { ctx: AnimContext }) {
 
 /** The reconstructions with the query's cross at position t (the images are memoized inside). */
 function AnimReconstruction({ ctx, range, creases }: { ctx: AnimContext; range: { min: number; max: number }; creases: ComponentProps<typeof Reconstruction>['creases'] }) {
-  const t = useAnimT(ctx.store);
+  const t = useStillT(ctx.store);
   const { dq } = ctx.frame(t);
-  return <Reconstruction grid={ctx.grid} opts={ctx.opts} range={range} qu={dq.bil.u} qv={dq.bil.v} creases={creases} />;
+  const draw = useRef<((qu: number, qv: number) => void) | null>(null);
+  useAnimFrame(ctx.store, (x) => {
+    const d = ctx.frame(x).dq;
+    draw.current?.(d.bil.u, d.bil.v);
+  });
+  return <Reconstruction grid={ctx.grid} opts={ctx.opts} range={range} qu={dq.bil.u} qv={dq.bil.v} creases={creases} drawRef={draw} />;
 }
 
 /**

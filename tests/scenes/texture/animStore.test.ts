@@ -4,7 +4,7 @@
  * cache that the animated parts share (it must return exactly the model's frame at t).
  */
 import { describe, expect, it } from 'vitest';
-import { STEP, animContext, createTimelineStore, workedPosition } from '../../../src/scenes/texture/anim';
+import { WORKED_STEP, animContext, createTimelineStore, workedPosition } from '../../../src/scenes/texture/anim';
 import { drawnLookup, frameAt, lookupOptions, pathOf, resolveGrid } from '../../../src/scenes/texture/model';
 import type { Timeline } from '../../../src/ui';
 
@@ -35,16 +35,37 @@ describe('timeline store', () => {
     expect(s.t()).toBe(0.5);
   });
 
-  it('worked steps: the last whole step while playing, the exact position when paused', () => {
+  it('worked steps: the last whole worked step while playing, the exact position when paused', () => {
     expect(workedPosition(0.437, false)).toBe(0.437);
-    expect(workedPosition(0.437, true)).toBeCloseTo(0.4, 12);
-    // a position that is a whole step stays on it despite rounding (0.15 / 0.05 = 2.9999…)
-    expect(workedPosition(0.15, true)).toBeCloseTo(0.15, 12);
+    expect(workedPosition(0.437, true)).toBeCloseTo(Math.floor(0.437 / WORKED_STEP) * WORKED_STEP, 12);
+    expect(workedPosition(0.437, true)).toBeLessThanOrEqual(0.437);
+    // a position that is a whole step stays on it despite rounding
+    expect(workedPosition(3 * WORKED_STEP, true)).toBeCloseTo(3 * WORKED_STEP, 12);
     const s = createTimelineStore(0);
     s.publish(tl(0.437, true));
-    expect(s.tWorked()).toBeCloseTo(Math.floor(0.437 / STEP) * STEP, 12);
+    expect(s.tWorked()).toBeCloseTo(Math.floor(0.437 / WORKED_STEP) * WORKED_STEP, 12);
     s.publish(tl(0.437, false));
     expect(s.tWorked()).toBe(0.437);
+  });
+
+  it('the figures hold the paused position while playing; frames reach the frame listeners with the live position', () => {
+    const s = createTimelineStore(0.2);
+    expect(s.tStill()).toBe(0.2);
+    s.publish(tl(0.2, true));
+    s.publish(tl(0.35, true));
+    expect(s.tStill()).toBe(0.2); // held: the figures move by per-frame writes, not by React
+    const seen: number[] = [];
+    const off = s.subscribeFrame((x) => seen.push(x));
+    s.frame(0.36);
+    s.frame(0.37);
+    expect(seen).toEqual([0.36, 0.37]);
+    expect(s.tLive()).toBe(0.37);
+    off();
+    s.frame(0.38);
+    expect(seen).toEqual([0.36, 0.37]);
+    s.publish(tl(0.38, false)); // paused: the figures render the exact position
+    expect(s.tStill()).toBe(0.38);
+    expect(s.t()).toBe(0.38);
   });
 });
 

@@ -68,6 +68,8 @@ export interface HemisphereViewProps {
   height?: number;
 }
 
+const COUNT_FORMAT = new Intl.NumberFormat('en-US');
+
 /**
  * Buffers sized for n points, rounded up to a power of two (at least 4096, at most MAX_N): sized
  * for 10⁶ from the start, the first upload of ~23 MB cost a phone's main thread hundreds of ms on
@@ -118,8 +120,9 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
   const drawn = () => Math.min(fill.current.filled, fill.current.target);
   const updateLabel = () => {
     const v = drawn();
-    if (label.current) {
-      label.current.textContent = v.toLocaleString('en-US');
+    // per frame while the warp morph plays: write only on a change (toLocaleString is slow)
+    if (label.current && label.current.dataset.value !== String(v)) {
+      label.current.textContent = COUNT_FORMAT.format(v);
       label.current.dataset.value = String(v);
     }
   };

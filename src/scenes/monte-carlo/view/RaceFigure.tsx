@@ -3,11 +3,13 @@
  * drawn so far). Each xᵢ drops onto the integrand, its term f(xᵢ)/p(xᵢ) appears, and the running
  * estimate with its ± standard-error band and the |error| log-log curve grow with it — uniform and
  * importance sampling side by side, on the same random numbers ξᵢ. Everything at position t comes
- * from model.raceAt(track, t); this file only draws it (light SVG, so a frame stays cheap).
+ * from model.raceAt(track, t); this file only draws it. While playing, React re-renders the figure
+ * (readouts, labels) only RENDER_HZ times a second; every frame, a timeline subscription writes the
+ * moving SVG nodes (the rugs, the newest samples, the curves and bands) directly.
  */
 import { memo, useMemo, useRef, type ReactNode } from 'react';
-import { formatNumber, Readout, TimelineTransport, useTimeline } from '../../../ui';
-import { RACE_DURATION, RACE_MAX, raceAt, racePoints, type LaneState, type RaceTrack } from '../model';
+import { formatNumber, Readout, TimelineTransport, useTimeline, useTimelineFrame } from '../../../ui';
+import { RACE_DURATION, RACE_MAX, raceAt, racePoints, type LaneState, type RaceFrame, type RaceTrack } from '../model';
 
 const W = 360;
 const H = 190;
@@ -66,6 +68,10 @@ function Axes({ xTicks, yTicks, xLabel, yLabel }: { xTicks: [number, string][]; 
 }
 
 const N_TICKS: number[] = [1, 10, 100, 1000].filter((n) => n <= RACE_MAX);
+/** Samples shown in each rug (the latest ones). */
+const RECENT = 40;
+/** How often React re-renders the race while it plays (the SVG moves every frame without React). */
+const RENDER_HZ = 4;
 
 export interface RaceProps {
   track: RaceTrack;
@@ -100,9 +106,9 @@ function Lane({ id, name, color, s, children }: { id: string; name: ReactNode; c
 /** The race figure with its transport. Memoised: only a change of track or position redraws it. */
 export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importanceLabel, t, play, setParams }: RaceProps) {
   const box = useRef<HTMLDivElement>(null);
-  const tl = useTimeline({ t, play, setParams, max: RACE_MAX, integer: true, duration: RACE_DURATION, visibleRef: box });
+  const tl = useTimeline({ t, play, setParams, max: RACE_MAX, integer: true, duration: RACE_DURATION, visibleRef: box, renderHz: RENDER_HZ });
   const points = useMemo(() => racePoints(track.max), [track.max]);
-  const fr = useMemo(() => raceAt(track, tl.t, points), [track, tl.t, points]);
+  const fr = useMemo(() => raceAt(track, tl.t, points, RECENT), [track, tl.t, points]);
   const I = track.exact;
   const s = Math.abs(I) || 1;
 
@@ -151,35 +157,81 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
     return { sx, sy, fPath, pPath, xt, yt, ex, ey, nt, et, ly, lt, floor: 10 ** e0, guide, R };
   }, [track, curve, a, b, I, s]);
 
-  const { sx, sy, ex, ey, ly } = fig;
-  const c = fr.curve;
-  const clampE = (v: number) => (Number.isFinite(v) ? Math.max(v, fig.floor) : NaN);
-  const uErr = path(c.n, c.uErr.map(clampE), ex, ly);
-  const iErr = path(c.n, c.iErr.map(clampE), ex, ly);
-  const clampY = (v: number) => Math.max(I - fig.R, Math.min(I + fig.R, v));
-  const band = (est: number[], se: number[]) => {
-    const up: string[] = [];
-    const dn: string[] = [];
-    for (let k = 0; k < c.n.length; k++) {
-      if (!Number.isFinite(se[k]!)) continue;
-      up.push(`${ex(c.n[k]!).toFixed(1)},${ey(clampY(est[k]! + se[k]!)).toFixed(1)}`);
-      dn.push(`${ex(c.n[k]!).toFixed(1)},${ey(clampY(est[k]! - se[k]!)).toFixed(1)}`);
-    }
-    return up.length ? `M${up.join('L')}L${dn.reverse().join('L')}Z` : '';
+  const { sx, sy, ey } = fig;
+  // what moves, as a function of the frame (shared by the React render and the per-frame writes)
+  const geomOf = (f: RaceFrame): RaceGeom => {
+    const { ex, ey, ly } = fig;
+    const c = f.curve;
+    const clampE = (v: number) => (Number.isFinite(v) ? Math.max(v, fig.floor) : NaN);
+    const clampY = (v: number) => Math.max(I - fig.R, Math.min(I + fig.R, v));
+    const band = (est: number[], se: number[]) => {
+      const up: string[] = [];
+      const dn: string[] = [];
+      for (let k = 0; k < c.n.length; k++) {
+        if (!Number.isFinite(se[k]!)) continue;
+        up.push(`${ex(c.n[k]!).toFixed(1)},${ey(clampY(est[k]! + se[k]!)).toFixed(1)}`);
+        dn.push(`${ex(c.n[k]!).toFixed(1)},${ey(clampY(est[k]! - se[k]!)).toFixed(1)}`);
+      }
+      return up.length ? `M${up.join('L')}L${dn.reverse().join('L')}Z` : '';
+    };
+    const estPath = (est: number[]) => path(c.n, est.map(clampY), ex, ey);
+    const dot = (n: number, x: number, fx: number) => (n ? { x: sx(x), y: sy(fx) } : null);
+    return {
+      uErr: path(c.n, c.uErr.map(clampE), ex, ly),
+      iErr: path(c.n, c.iErr.map(clampE), ex, ly),
+      uBand: band(c.u, c.uSe),
+      iBand: band(c.i, c.iSe),
+      uEst: estPath(c.u),
+      iEst: estPath(c.i),
+      rugU: f.recentU.map(sx),
+      rugI: f.recentI.map(sx),
+      dotU: dot(f.uniform.n, f.uniform.x, f.uniform.term / (b - a)),
+      dotI: dot(f.importance.n, f.importance.x, curveAt(curve, f.importance.x)),
+    };
   };
-  const estPath = (est: number[]) => path(c.n, est.map(clampY), ex, ey);
+  const g = geomOf(fr);
   const u = fr.uniform;
   const im = fr.importance;
   const rate = (RACE_MAX / RACE_DURATION) * tl.speed;
-  const newestDot = (x: number, fx: number, color: string, row: number) => (
-    <g key={`${row}-${fr.t}`} className="mc-drop">
-      <line x1={sx(x)} x2={sx(x)} y1={M.t} y2={sy(fx)} style={{ stroke: color }} strokeDasharray="2 3" />
-      <circle cx={sx(x)} cy={sy(fx)} r={5} style={{ fill: color }} />
+
+  // per-frame writes (see the module comment); React's render above is the same geometry at tl.t
+  const svgF = useRef<SVGSVGElement>(null);
+  const pathRefs = useRef<Record<keyof Pick<RaceGeom, 'uErr' | 'iErr' | 'uBand' | 'iBand' | 'uEst' | 'iEst'>, SVGPathElement | null>>({ uErr: null, iErr: null, uBand: null, iBand: null, uEst: null, iEst: null });
+  const geomRef = useRef(geomOf);
+  geomRef.current = geomOf;
+  useTimelineFrame(tl, (tt, playing) => {
+    if (!playing) return; // paused: React has drawn the exact position
+    const gg = geomRef.current(raceAt(track, tt, points, RECENT));
+    for (const k of ['uErr', 'iErr', 'uBand', 'iBand', 'uEst', 'iEst'] as const) pathRefs.current[k]?.setAttribute('d', gg[k]);
+    const svg = svgF.current;
+    if (!svg) return;
+    drawRug(svg.querySelector('[data-rug="0"]'), gg.rugU, rugY(0));
+    drawRug(svg.querySelector('[data-rug="1"]'), gg.rugI, rugY(1));
+    drawDot(svg.querySelector('[data-dot="0"]'), gg.dotU);
+    drawDot(svg.querySelector('[data-dot="1"]'), gg.dotI);
+  });
+  const setPath = (k: keyof typeof pathRefs.current) => (el: SVGPathElement | null) => {
+    pathRefs.current[k] = el;
+  };
+
+  // while playing the newest dot keeps its element (no drop animation per frame); stepped, it drops in
+  const newestDot = (d: { x: number; y: number } | null, color: string, row: number) => (
+    <g key={tl.playing ? `${row}` : `${row}-${fr.t}`} className="mc-drop" data-dot={row} style={d ? undefined : { display: 'none' }}>
+      <line x1={d?.x ?? 0} x2={d?.x ?? 0} y1={M.t} y2={d?.y ?? 0} style={{ stroke: color }} strokeDasharray="2 3" />
+      <circle cx={d?.x ?? 0} cy={d?.y ?? 0} r={5} style={{ fill: color }} />
     </g>
   );
-  const rugY = (row: number) => M.t + PH - 16 + row * 9;
-  const rug = (xs: number[], color: string, row: number) =>
-    xs.map((x, k) => <line key={k} x1={sx(x)} x2={sx(x)} y1={rugY(row)} y2={rugY(row) + 7} style={{ stroke: color, strokeOpacity: 0.25 + (0.75 * (k + 1)) / xs.length }} />);
+  // the rug: RUG_BUCKETS paths per row, older samples fainter, so a frame writes a few `d`s
+  const rug = (xs: number[], color: string, row: number) => {
+    const d = rugPaths(xs, rugY(row));
+    return (
+      <g data-rug={row}>
+        {d.map((p, k) => (
+          <path key={k} d={p} style={{ stroke: color, strokeOpacity: 0.25 + (0.75 * (k + 1)) / RUG_BUCKETS }} />
+        ))}
+      </g>
+    );
+  };
 
   return (
     <div className="mc-race" ref={box} data-testid="race">
@@ -191,14 +243,14 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
       <div className="mc-race-grid">
         <figure className="mc-svg-fig">
           <figcaption>Each xᵢ drops onto f</figcaption>
-          <svg viewBox={`0 0 ${W} ${H}`} role="img" aria-label={`The integrand f over [${a}, ${b}] with the ${fr.t} samples drawn so far, uniform and importance`}>
+          <svg ref={svgF} viewBox={`0 0 ${W} ${H}`} role="img" aria-label={`The integrand f over [${a}, ${b}] with the ${fr.t} samples drawn so far, uniform and importance`}>
             <Axes xTicks={fig.xt} yTicks={fig.yt} xLabel="x" yLabel="f(x)" />
             <path d={fig.fPath} className="mc-svg-f" />
             <path d={fig.pPath} style={{ stroke: C_I }} className="mc-svg-p" />
-            {rug(fr.recentU, C_U, 0)}
-            {rug(fr.recentI, C_I, 1)}
-            {u.n ? newestDot(u.x, u.term / (b - a), C_U, 0) : null}
-            {im.n ? newestDot(im.x, curveAt(curve, im.x), C_I, 1) : null}
+            {rug(g.rugU, C_U, 0)}
+            {rug(g.rugI, C_I, 1)}
+            {newestDot(g.dotU, C_U, 0)}
+            {newestDot(g.dotI, C_I, 1)}
           </svg>
         </figure>
         <figure className="mc-svg-fig">
@@ -206,24 +258,24 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
           <svg viewBox={`0 0 ${W} ${H}`} role="img" aria-label="Absolute error of the running estimate against the number of samples, log-log, uniform and importance">
             <Axes xTicks={fig.nt} yTicks={fig.lt} xLabel="N (samples)" yLabel="|error|" />
             <path d={fig.guide} className="mc-svg-guide" />
-            <path d={uErr} style={{ stroke: C_U }} className="mc-svg-line" />
-            <path d={iErr} style={{ stroke: C_I }} className="mc-svg-line" />
+            <path ref={setPath('uErr')} d={g.uErr} style={{ stroke: C_U }} className="mc-svg-line" />
+            <path ref={setPath('iErr')} d={g.iErr} style={{ stroke: C_I }} className="mc-svg-line" />
           </svg>
         </figure>
         <Lane id="uniform" name="Uniform, p = 1/(b − a)" color={C_U} s={u}>
           <svg viewBox={`0 0 ${W} ${H}`} role="img" aria-label="Running estimate of the uniform estimator with its ± standard-error band, against N on a log axis">
             <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
             <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
-            <path d={band(c.u, c.uSe)} style={{ fill: C_U }} className="mc-svg-band" />
-            <path d={estPath(c.u)} style={{ stroke: C_U }} className="mc-svg-line" />
+            <path ref={setPath('uBand')} d={g.uBand} style={{ fill: C_U }} className="mc-svg-band" />
+            <path ref={setPath('uEst')} d={g.uEst} style={{ stroke: C_U }} className="mc-svg-line" />
           </svg>
         </Lane>
         <Lane id="importance" name={`Importance, ${importanceLabel}`} color={C_I} s={im}>
           <svg viewBox={`0 0 ${W} ${H}`} role="img" aria-label="Running estimate of the importance-sampling estimator with its ± standard-error band, against N on a log axis">
             <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
             <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
-            <path d={band(c.i, c.iSe)} style={{ fill: C_I }} className="mc-svg-band" />
-            <path d={estPath(c.i)} style={{ stroke: C_I }} className="mc-svg-line" />
+            <path ref={setPath('iBand')} d={g.iBand} style={{ fill: C_I }} className="mc-svg-band" />
+            <path ref={setPath('iEst')} d={g.iEst} style={{ stroke: C_I }} className="mc-svg-line" />
           </svg>
         </Lane>
       </div>
@@ -234,6 +286,61 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
     </div>
   );
 });
+
+interface RaceGeom {
+  uErr: string;
+  iErr: string;
+  uBand: string;
+  iBand: string;
+  uEst: string;
+  iEst: string;
+  /** Screen x of the latest samples, oldest first. */
+  rugU: number[];
+  rugI: number[];
+  dotU: { x: number; y: number } | null;
+  dotI: { x: number; y: number } | null;
+}
+
+const rugY = (row: number) => M.t + PH - 16 + row * 9;
+/** Opacity steps of a rug (the latest RECENT samples, in age order). */
+const RUG_BUCKETS = 4;
+
+/** A rug's tick marks as RUG_BUCKETS paths, oldest first: sample j of the RECENT slots goes to bucket ⌊j·B/RECENT⌋. */
+function rugPaths(xs: number[], y: number): string[] {
+  const out: string[] = Array.from({ length: RUG_BUCKETS }, () => '');
+  const off = RECENT - xs.length;
+  for (let j = 0; j < xs.length; j++) {
+    const b = Math.min(RUG_BUCKETS - 1, Math.floor(((j + off) * RUG_BUCKETS) / RECENT));
+    out[b] += `M${xs[j]!.toFixed(1)},${y}v7`;
+  }
+  return out;
+}
+
+/** Moves a rug to the latest samples. */
+function drawRug(g: Element | null, xs: number[], y: number): void {
+  if (!g) return;
+  const d = rugPaths(xs, y);
+  const kids = g.children;
+  for (let k = 0; k < kids.length && k < d.length; k++) kids[k]!.setAttribute('d', d[k]!);
+}
+
+/** Moves a newest-sample marker (a dashed drop line and a dot). */
+function drawDot(g: Element | null, d: { x: number; y: number } | null): void {
+  if (!g) return;
+  const el = g as SVGGElement;
+  if (!d) {
+    el.style.display = 'none';
+    return;
+  }
+  if (el.style.display) el.style.display = '';
+  const [line, dot] = g.children;
+  const x = String(d.x);
+  line?.setAttribute('x1', x);
+  line?.setAttribute('x2', x);
+  line?.setAttribute('y2', String(d.y));
+  dot?.setAttribute('cx', x);
+  dot?.setAttribute('cy', String(d.y));
+}
 
 /** f at x, interpolated on the drawn grid (for placing the importance sample's dot on the curve). */
 function curveAt(curve: { x: Float64Array; f: Float64Array }, x: number): number {

@@ -10,7 +10,7 @@
  * Everything is drawn in the texture's own frame (u right, v′ up; v′ = 1 − v when flipped) with the
  * query brought into [0, 1]² by the wrap mode (an equivalent point: the lookup there is the same).
  */
-import { memo, useEffect, useLayoutEffect, useMemo, useRef, useState, type KeyboardEvent, type PointerEvent } from 'react';
+import { memo, useEffect, useLayoutEffect, useMemo, useRef, useState, type KeyboardEvent, type PointerEvent, type RefObject } from 'react';
 import { nodeCoord, type LookupOptions, type TextureGrid } from '../../../core/texture';
 import { colorCss, darkTextOn, normalizeValue } from '../colormap';
 import { pathPoint, textureImage, type Lookup, type QueryPath } from '../model';
@@ -56,11 +56,24 @@ interface Props {
   /** Enter on the grid while editing: go to the value field. */
   onEditEnter: () => void;
   present: boolean;
+  /** Set to a function that moves the query marker and the stencil to a lookup directly (per animation frame). */
+  drawRef?: { current: ((q: Lookup) => void) | null };
 }
 
-export function GridView({ grid, opts, range, q, path, onMove, editing, selected, onSelect, onEditEnter, present }: Props) {
+export function GridView({ grid, opts, range, q, path, onMove, editing, selected, onSelect, onEditEnter, present, drawRef }: Props) {
   const win = useMemo(() => viewWindow(grid, opts), [grid, opts]);
   const svgRef = useRef<SVGSVGElement>(null);
+  const markerRef = useRef<SVGGElement>(null);
+  const stencilRef = useRef<SVGGElement>(null);
+  if (drawRef) {
+    // per-frame drawing of the moving query without React (see ../anim.tsx)
+    drawRef.current = (dq: Lookup) => {
+      const m = markerRef.current;
+      if (m) m.setAttribute('transform', `translate(${sx(dq.bil.u, win)} ${sy(dq.bil.v, win)})`);
+      const st = stencilRef.current;
+      if (st) drawStencil(st, queryGeometry(grid, win, dq));
+    };
+  }
   const dragging = useRef<Grab | null>(null);
   const pending = useRef<{ u: number; v: number } | null>(null);
   const raf = useRef(0);
@@ -196,10 +209,10 @@ export function GridView({ grid, opts, range, q, path, onMove, editing, selected
           onKeyDown={onKeyDown}
         >
           <StaticLayer grid={grid} opts={opts} range={range} win={win} unitsPerPx={unitsPerPx} />
-          <QueryLayer grid={grid} win={win} q={q} />
+          <QueryLayer grid={grid} win={win} q={q} gRef={stencilRef} />
           <LabelLayer grid={grid} opts={opts} range={range} win={win} present={present} unitsPerPx={unitsPerPx} />
           <PathLayer path={path} vflip={opts.vflip} win={win} />
-          <g className="tx-query" transform={`translate(${sx(q.bil.u, win)} ${sy(q.bil.v, win)})`} data-testid="query-marker">
+          <g ref={markerRef} className="tx-query" transform={`translate(${sx(q.bil.u, win)} ${sy(q.bil.v, win)})`} data-testid="query-marker">
             <circle r={11} />
             <line x1={-22} x2={22} y1={0} y2={0} />
             <line y1={-22} y2={22} x1={0} x2={0} />
@@ -433,8 +446,16 @@ const PathLayer = memo(function PathLayer({ path, vflip, win }: { path: QueryPat
 
 const TAP_CLASS = ['w00', 'w10', 'w01', 'w11'];
 
-/** The nearest node and the bilinear stencil with its weight rectangles (below the labels). */
-const QueryLayer = memo(function QueryLayer({ grid, win, q }: { grid: TextureGrid; win: ViewWindow; q: Lookup }) {
+interface QueryGeometry {
+  rects: { cls: string; x: number; y: number; w: number; h: number }[];
+  cell: { x: number; y: number; w: number; h: number };
+  taps: { x: number; y: number }[];
+  ringR: number;
+  nearest: { x: number; y: number; size: number };
+}
+
+/** Where the stencil's shapes go for a lookup (shared by the React layer and the per-frame drawer). */
+function queryGeometry(grid: TextureGrid, win: ViewWindow, q: Lookup): QueryGeometry {
   const b = q.bil;
   const X = (u: number) => sx(u, win);
   const Y = (v: number) => sy(v, win);
@@ -442,30 +463,65 @@ const QueryLayer = memo(function QueryLayer({ grid, win, q }: { grid: TextureGri
   const qy = Y(b.v);
   // sub-rectangles: each tap's weight is the area of the sub-rectangle opposite to it
   const rects = [
-    { cls: 'w00', x: qx, y: Y(b.v1), w: X(b.u1) - qx, h: qy - Y(b.v1) }, // opposite (u0, v0): upper right
-    { cls: 'w10', x: X(b.u0), y: Y(b.v1), w: qx - X(b.u0), h: qy - Y(b.v1) }, // opposite (u1, v0): upper left
-    { cls: 'w01', x: qx, y: qy, w: X(b.u1) - qx, h: Y(b.v0) - qy }, // opposite (u0, v1): lower right
-    { cls: 'w11', x: X(b.u0), y: qy, w: qx - X(b.u0), h: Y(b.v0) - qy }, // opposite (u1, v1): lower left
+    { cls: 'w00', x: qx, y: Y(b.v1), w: Math.max(0, X(b.u1) - qx), h: Math.max(0, qy - Y(b.v1)) }, // opposite (u0, v0): upper right
+    { cls: 'w10', x: X(b.u0), y: Y(b.v1), w: Math.max(0, qx - X(b.u0)), h: Math.max(0, qy - Y(b.v1)) }, // opposite (u1, v0): upper left
+    { cls: 'w01', x: qx, y: qy, w: Math.max(0, X(b.u1) - qx), h: Math.max(0, Y(b.v0) - qy) }, // opposite (u0, v1): lower right
+    { cls: 'w11', x: X(b.u0), y: qy, w: Math.max(0, qx - X(b.u0)), h: Math.max(0, Y(b.v0) - qy) }, // opposite (u1, v1): lower left
   ];
   const taps = [
-    { u: b.u0, v: b.v0 },
-    { u: b.u1, v: b.v0 },
-    { u: b.u0, v: b.v1 },
-    { u: b.u1, v: b.v1 },
+    { x: X(b.u0), y: Y(b.v0) },
+    { x: X(b.u1), y: Y(b.v0) },
+    { x: X(b.u0), y: Y(b.v1) },
+    { x: X(b.u1), y: Y(b.v1) },
   ];
-  const n = q.near;
   const nmax = Math.max(grid.width, grid.height);
   const ringR = Math.max(6, Math.min(22, (VB / nmax) * 0.22));
+  return {
+    rects,
+    cell: { x: X(b.u0), y: Y(b.v1), w: X(b.u1) - X(b.u0), h: Y(b.v0) - Y(b.v1) },
+    taps,
+    ringR,
+    nearest: { x: X(q.near.nodeU) - ringR - 6, y: Y(q.near.nodeV) - ringR - 6, size: 2 * ringR + 12 },
+  };
+}
+
+/** Writes a geometry into the children QueryLayer rendered (4 weight rects, the cell, 4 taps, the nearest box). */
+function drawStencil(g: SVGGElement, geo: QueryGeometry): void {
+  const kids = g.children;
+  if (kids.length !== 10) return;
+  const set = (el: Element, a: string, v: number) => el.setAttribute(a, String(v));
+  for (let k = 0; k < 4; k++) {
+    const r = geo.rects[k];
+    set(kids[k], 'x', r.x);
+    set(kids[k], 'y', r.y);
+    set(kids[k], 'width', r.w);
+    set(kids[k], 'height', r.h);
+  }
+  set(kids[4], 'x', geo.cell.x);
+  set(kids[4], 'y', geo.cell.y);
+  set(kids[4], 'width', geo.cell.w);
+  set(kids[4], 'height', geo.cell.h);
+  for (let k = 0; k < 4; k++) {
+    set(kids[5 + k], 'cx', geo.taps[k].x);
+    set(kids[5 + k], 'cy', geo.taps[k].y);
+  }
+  set(kids[9], 'x', geo.nearest.x);
+  set(kids[9], 'y', geo.nearest.y);
+}
+
+/** The nearest node and the bilinear stencil with its weight rectangles (below the labels). */
+const QueryLayer = memo(function QueryLayer({ grid, win, q, gRef }: { grid: TextureGrid; win: ViewWindow; q: Lookup; gRef?: RefObject<SVGGElement | null> }) {
+  const geo = queryGeometry(grid, win, q);
   return (
-    <g data-testid="stencil">
-      {rects.map((r) => (
-        <rect key={r.cls} x={r.x} y={r.y} width={Math.max(0, r.w)} height={Math.max(0, r.h)} className={`tx-wrect ${r.cls}`} />
+    <g data-testid="stencil" ref={gRef}>
+      {geo.rects.map((r) => (
+        <rect key={r.cls} x={r.x} y={r.y} width={r.w} height={r.h} className={`tx-wrect ${r.cls}`} />
       ))}
-      <rect x={X(b.u0)} y={Y(b.v1)} width={X(b.u1) - X(b.u0)} height={Y(b.v0) - Y(b.v1)} className="tx-cell" />
-      {taps.map((t, k) => (
-        <circle key={k} cx={X(t.u)} cy={Y(t.v)} r={ringR} className={`tx-tap ${TAP_CLASS[k]}`} />
+      <rect x={geo.cell.x} y={geo.cell.y} width={geo.cell.w} height={geo.cell.h} className="tx-cell" />
+      {geo.taps.map((t, k) => (
+        <circle key={k} cx={t.x} cy={t.y} r={geo.ringR} className={`tx-tap ${TAP_CLASS[k]}`} />
       ))}
-      <rect x={X(n.nodeU) - ringR - 6} y={Y(n.nodeV) - ringR - 6} width={2 * ringR + 12} height={2 * ringR + 12} className="tx-nearest" rx={4} data-testid="nearest-highlight" />
+      <rect x={geo.nearest.x} y={geo.nearest.y} width={geo.nearest.size} height={geo.nearest.size} className="tx-nearest" rx={4} data-testid="nearest-highlight" />
     </g>
   );
 });

@@ -78,8 +78,24 @@ const Curves = memo(function Curves({ profile, s }: { profile: PathProfile; s: S
   );
 });
 
-export function PathPlot({ profile, t, near, bil, present }: { profile: PathProfile; t: number; near: number; bil: number; present: boolean }) {
+export function PathPlot({
+  profile,
+  t,
+  near,
+  bil,
+  present,
+  drawRef,
+}: {
+  profile: PathProfile;
+  t: number;
+  near: number;
+  bil: number;
+  present: boolean;
+  /** Set to a function that moves the marker directly (per animation frame; the label follows on pause). */
+  drawRef?: { current: ((t: number, near: number, bil: number) => void) | null };
+}) {
   const ref = useRef<HTMLDivElement>(null);
+  const markerRef = useRef<SVGGElement>(null);
   const [w, setW] = useState(480);
   useLayoutEffect(() => {
     const el = ref.current;
@@ -99,6 +115,20 @@ export function PathPlot({ profile, t, near, bil, present }: { profile: PathProf
     const pad = Math.max(1e-9, (profile.max - profile.min) * 0.08, Math.abs(profile.max) * 1e-9);
     return { w, h, y0: profile.min - pad, y1: profile.max + pad };
   }, [profile, w, h]);
+  if (drawRef) {
+    drawRef.current = (tt, n, b) => {
+      const g = markerRef.current;
+      if (!g || g.children.length !== 3) return;
+      const [line, nd, bd] = g.children;
+      const x = String(X(s, tt));
+      line.setAttribute('x1', x);
+      line.setAttribute('x2', x);
+      nd.setAttribute('cx', x);
+      nd.setAttribute('cy', String(Y(s, n)));
+      bd.setAttribute('cx', x);
+      bd.setAttribute('cy', String(Y(s, b)));
+    };
+  }
   const kinks = useMemo(() => profile.borders.filter((b) => b.kink).length, [profile]);
   const jumps = useMemo(() => profile.borders.filter((b) => b.jump).length, [profile]);
   const label =
@@ -110,7 +140,7 @@ export function PathPlot({ profile, t, near, bil, present }: { profile: PathProf
       <div ref={ref} className="tx-plot-box">
         <svg width={w} height={h} viewBox={`0 0 ${w} ${h}`} role="img" aria-label={label}>
           <Curves profile={profile} s={s} />
-          <g data-testid="path-plot-marker">
+          <g data-testid="path-plot-marker" ref={markerRef}>
             <line x1={X(s, t)} x2={X(s, t)} y1={M.t} y2={h - M.b} className="tx-plot-now" />
             <circle cx={X(s, t)} cy={Y(s, near)} r={5} className="tx-plot-near-dot" />
             <circle cx={X(s, t)} cy={Y(s, bil)} r={5} className="tx-plot-bil-dot" />

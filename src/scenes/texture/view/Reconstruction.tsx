@@ -41,6 +41,7 @@ export const Reconstruction = memo(function Reconstruction({
   qu,
   qv,
   creases,
+  drawRef,
 }: {
   grid: TextureGrid;
   opts: LookupOptions;
@@ -50,9 +51,18 @@ export const Reconstruction = memo(function Reconstruction({
   qv: number;
   /** Creases of the bilinear image (texture frame), drawn over it. */
   creases: Crease[];
+  /** Set to a function that moves the query's crosses directly (per animation frame). */
+  drawRef?: { current: ((qu: number, qv: number) => void) | null };
 }) {
+  const box = useRef<HTMLDivElement>(null);
+  if (drawRef) {
+    drawRef.current = (u, v) => {
+      const tr = `translate(${u * 100} ${(1 - v) * 100})`;
+      box.current?.querySelectorAll('.tx-query').forEach((g) => g.setAttribute('transform', tr));
+    };
+  }
   return (
-    <div className="tx-recon">
+    <div className="tx-recon" ref={box}>
       {(['nearest', 'bilinear'] as const).map((f) => (
         <figure key={f} className="tx-recon-fig">
           <div className="tx-recon-box" role="img" aria-label={`The texture reconstructed with ${f} filtering over [0, 1]²`}>
