@@ -47,7 +47,7 @@ export function App() {
     body = (
       <Suspense
         fallback={
-          <main id="main" className="page" tabIndex={-1}>
+          <main id="main" className="page route-pending" tabIndex={-1}>
             <p className="loading" role="status">Loading practice…</p>
           </main>
         }
@@ -57,7 +57,7 @@ export function App() {
     );
   else if (route.path === '/guide')
     body = (
-      <Suspense key="guide" fallback={<main id="main" className="page"><p className="loading" role="status">Loading the teacher’s guide…</p></main>}>
+      <Suspense key="guide" fallback={<main id="main" className="page route-pending"><p className="loading" role="status">Loading the teacher’s guide…</p></main>}>
         <Guide flags={flags} />
       </Suspense>
     );
