@@ -8,26 +8,19 @@
  *
  *   node scripts/profile-anim.mjs [--dist dist-prof] [--port 4432] [--ms 4000] [--top 30] '#/texture?play=1' …
  */
-import { spawn } from 'node:child_process';
 import { chromium } from 'playwright-core';
 import { CHROMIUM_ARGS, findChromium } from './chromium.mjs';
+import { serveDist, summarize, takeOpt } from './cpuprofile.mjs';
 
 const args = process.argv.slice(2);
-const opt = (n, d) => {
-  const i = args.indexOf(n);
-  if (i < 0) return d;
-  const v = args[i + 1];
-  args.splice(i, 2);
-  return v;
-};
+const opt = (n, d) => takeOpt(args, n, d);
 const dist = opt('--dist', 'dist-prof');
 const port = Number(opt('--port', '4432'));
 const ms = Number(opt('--ms', '4000'));
 const top = Number(opt('--top', '30'));
 const routes = args.length ? args : ['#/texture?play=1'];
 
-const server = spawn(process.execPath, ['scripts/serve.mjs', dist, String(port)], { stdio: ['ignore', 'pipe', 'inherit'] });
-await new Promise((r) => server.stdout.once('data', r));
+const server = await serveDist(dist, port);
 const browser = await chromium.launch({ executablePath: findChromium(), args: CHROMIUM_ARGS });
 try {
   for (const route of routes) {
@@ -49,40 +42,9 @@ try {
     await page.waitForTimeout(ms);
     const { profile } = await cdp.send('Profiler.stop');
     const frames = await page.evaluate(() => document.querySelector('[data-testid=timeline]')?.getAttribute('data-t'));
-    const nodes = new Map(profile.nodes.map((n) => [n.id, n]));
-    const parent = new Map();
-    for (const n of profile.nodes) for (const c of n.children ?? []) parent.set(c, n.id);
-    const byFn = new Map();
-    const incl = new Map();
-    const byUrl = new Map();
-    let total = 0;
-    for (let i = 0; i < profile.samples.length; i++) {
-      const id = profile.samples[i];
-      const t = (profile.timeDeltas[i + 1] ?? 0) / 1000;
-      const cf = nodes.get(id).callFrame;
-      if (cf.functionName === '(idle)' || cf.functionName === '(program)') continue;
-      total += t;
-      const url = cf.url.replace(/^.*\/assets\//, '');
-      const k = `${cf.functionName || '(anon)'}  ${url}:${cf.lineNumber + 1}`;
-      byFn.set(k, (byFn.get(k) ?? 0) + t);
-      byUrl.set(url || cf.functionName, (byUrl.get(url || cf.functionName) ?? 0) + t);
-      const seen = new Set();
-      for (let x = id; x !== undefined; x = parent.get(x)) {
-        const c = nodes.get(x).callFrame;
-        if (!c.url.includes('/assets/')) continue;
-        const kk = `${c.functionName || '(anon)'}  ${c.url.replace(/^.*\/assets\//, '')}:${c.lineNumber + 1}`;
-        if (seen.has(kk)) continue;
-        seen.add(kk);
-        incl.set(kk, (incl.get(kk) ?? 0) + t);
-      }
-    }
-    console.log(`\n== ${route}: busy ${total.toFixed(0)} ms of ${ms} ms (t now ${frames})`);
-    console.log('-- by script');
-    for (const [k, v] of [...byUrl].sort((a, b) => b[1] - a[1]).slice(0, 10)) console.log(`${v.toFixed(0).padStart(7)} ms  ${k}`);
-    console.log('-- by function (self)');
-    for (const [k, v] of [...byFn].sort((a, b) => b[1] - a[1]).slice(0, top)) console.log(`${v.toFixed(0).padStart(7)} ms  ${k}`);
-    console.log('-- inclusive (app scripts)');
-    for (const [k, v] of [...incl].sort((a, b) => b[1] - a[1]).slice(0, top)) console.log(`${v.toFixed(0).padStart(7)} ms  ${k}`);
+    const sum = summarize(profile, { top, withInclusive: true });
+    console.log(`\n== ${route}: busy ${sum.total.toFixed(0)} ms of ${ms} ms (t now ${frames})`);
+    sum.print();
     await ctx.close();
   }
 } finally {
