@@ -14,7 +14,7 @@ import { useWorkerJob } from '../../workers';
 import { fillSequence2D, type SequenceKind } from '../../core/random';
 import { animDuration, animFrame, examChecks, examInversion, lobeFromParams, type AnimKind, type DrawStats, type Lobe } from './model';
 import { ANIMS, LOBES, MAX_N, POINT_SETS, type HemisphereSchema, type LobeId } from './params';
-import { compileThetaPhi, compileThetaPhiFast } from './expr';
+import { compileThetaPhi, compileThetaPhiFast, isCosTheta } from './expr';
 import { UnitSquare } from './view/UnitSquare';
 import { Derivation } from './view/Derivation';
 import { MarginalPlots, Histogram2D } from './view/Plots';
@@ -54,7 +54,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
   const anim: AnimKind = (ANIMS as readonly string[]).includes(params.anim) ? (params.anim as AnimKind) : 'warp';
   const inverted = params.jacobian === 'inverted';
   const isCustom = lobeId === 'custom';
-  const fIsCos = params.f.replace(/\s+/g, '') === 'cos(theta)';
+  const fIsCos = isCosTheta(params.f);
 
   const fc = useCompiled(params.f, compileThetaPhi, { fast: compileThetaPhiFast });
   const pc = useCompiled(params.pdf, compileThetaPhi, { enabled: isCustom });

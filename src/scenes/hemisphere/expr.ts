@@ -11,9 +11,14 @@ import type { Integrand } from './model';
 /** The default integrand written as the compiler writes it (its TeX is the compiler's, checked by a unit test). */
 const COS_THETA = { src: 'cos(theta)', tex: '\\cos\\left(\\theta\\right)' };
 
+/** Is the integrand cos(theta) (any spacing)? The page's zero-variance remarks depend on it too. */
+export function isCosTheta(src: string): boolean {
+  return src.replace(/\s+/g, '') === COS_THETA.src;
+}
+
 /** cos(theta) (any spacing) without the parser; null for anything else. */
 export function compileThetaPhiFast(src: string): CompileOutcome<Integrand> | null {
-  if (src.replace(/\s+/g, '') !== COS_THETA.src) return null;
+  if (!isCosTheta(src)) return null;
   return { ok: true, fn: (t) => Math.cos(t), tex: COS_THETA.tex };
 }
 
