@@ -28,6 +28,8 @@ export const NEAR_MARGIN = '600px';
 const PER_IDLE = 3;
 const IDLE_TIMEOUT_MS = 1500;
 
+/** Every formula not typeset yet, however it waits (for the observer, idle time or its slice). */
+const pending = new Set<Entry>();
 const byEl = new Map<Element, Entry>();
 const idle: Entry[] = [];
 let idleScheduled = false;
@@ -38,6 +40,7 @@ const near = new WeakSet<Element>();
 function run(e: Entry): void {
   if (e.state === 'done') return;
   e.state = 'done';
+  pending.delete(e);
   if (e.el) {
     byEl.delete(e.el);
     io?.unobserve(e.el);
@@ -105,6 +108,7 @@ function observer(): IntersectionObserver | null {
 export function scheduleMath(el: Element | null, job: Job): () => void {
   const obs = el ? observer() : null;
   const e: Entry = { job, el, state: 'waiting', cancelChunk: () => {} };
+  pending.add(e);
   if (!el || !obs) {
     queueNow(e);
   } else if (near.has(el)) {
@@ -127,6 +131,7 @@ function cancelEntry(e: Entry): void {
     if (i >= 0) idle.splice(i, 1);
   }
   e.state = 'done';
+  pending.delete(e);
   if (e.el && byEl.get(e.el) === e) {
     byEl.delete(e.el);
     io?.unobserve(e.el);
@@ -135,7 +140,7 @@ function cancelEntry(e: Entry): void {
 
 /** Typeset everything still waiting, now (before printing). */
 export function flushMathForPrint(): void {
-  for (const e of [...byEl.values(), ...idle]) {
+  for (const e of [...pending]) {
     e.cancelChunk();
     run(e);
   }

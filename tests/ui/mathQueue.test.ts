@@ -84,13 +84,19 @@ describe('scheduleMath: formulas near the screen first, the rest in idle time', 
     const seen: string[] = [];
     const a = {} as Element;
     const b = {} as Element;
+    const c = {} as Element;
+    scheduleMath(c, () => seen.push('c1'));
+    io.report(c, true);
+    await settle();
+    seen.length = 0;
     scheduleMath(a, () => seen.push('a'));
     scheduleMath(b, () => seen.push('b'));
+    scheduleMath(c, () => seen.push('c2')); // c is known to be near: queued in its slice at once
     io.report(b, false); // b waits for idle time, a has no report yet
     flushMathForPrint();
-    expect(seen.sort()).toEqual(['a', 'b']);
+    expect(seen.sort()).toEqual(['a', 'b', 'c2']);
     runIdle();
     await settle();
-    expect(seen.length).toBe(2); // nothing runs twice
+    expect(seen.length).toBe(3); // nothing runs twice
   });
 });
