@@ -29,6 +29,11 @@ import { useShortcuts } from './shortcuts';
  */
 const RENDER_MIN_FRAMES = 20;
 
+/** The position a timeline shows: integer timelines show whole steps (floored, allowing for rounding). */
+function positionShown(exact: number, integer: boolean): number {
+  return integer ? Math.floor(exact + 1e-9) : exact;
+}
+
 /** Speeds offered by the transport (× the scene's natural speed). */
 export const TIMELINE_SPEEDS = [0.25, 0.5, 1, 2, 4] as const;
 
@@ -178,14 +183,14 @@ export function useTimeline(opts: TimelineOptions): Timeline {
   const listeners = useRef(new Set<TimelineListener>());
   const notify = useCallback(() => {
     const l = live.current;
-    const t = l.integer ? Math.floor(l.exact + 1e-9) : l.exact;
+    const t = positionShown(l.exact, l.integer);
     for (const fn of listeners.current) fn(t, l.playing);
   }, []);
   const subscribe = useCallback(
     (fn: TimelineListener) => {
       listeners.current.add(fn);
       const l = live.current;
-      fn(l.integer ? Math.floor(l.exact + 1e-9) : l.exact, l.playing);
+      fn(positionShown(l.exact, l.integer), l.playing);
       return () => {
         listeners.current.delete(fn);
       };
@@ -194,7 +199,7 @@ export function useTimeline(opts: TimelineOptions): Timeline {
   );
   const now = useCallback(() => {
     const l = live.current;
-    return l.integer ? Math.floor(l.exact + 1e-9) : l.exact;
+    return positionShown(l.exact, l.integer);
   }, []);
   // every committed change (pause, step, seek, a coarse render while playing) reaches the subscribers
   useLayoutEffect(() => {
@@ -226,7 +231,7 @@ export function useTimeline(opts: TimelineOptions): Timeline {
     } else if (l.playing) {
       setPlaying(false);
       setExact(l.exact);
-      const t = l.integer ? Math.floor(l.exact + 1e-9) : l.exact;
+      const t = positionShown(l.exact, l.integer);
       written.current.t = t;
       l.setParams({ t });
     }
@@ -245,7 +250,7 @@ export function useTimeline(opts: TimelineOptions): Timeline {
   const stepSizeRef = useRef(stepSize);
   stepSizeRef.current = stepSize;
 
-  const shown = (e: number) => (live.current.integer ? Math.floor(e + 1e-9) : e);
+  const shown = (e: number) => positionShown(e, live.current.integer);
 
   const pause = useCallback(() => {
     setPlaying(false);
@@ -270,7 +275,7 @@ export function useTimeline(opts: TimelineOptions): Timeline {
   );
   const step = useCallback(() => {
     const l = live.current;
-    let next = (l.integer ? Math.floor(l.exact + 1e-9) : l.exact) + stepSizeRef.current;
+    let next = positionShown(l.exact, l.integer) + stepSizeRef.current;
     if (next > l.max) next = l.loop ? 0 : l.max;
     next = clampPosition(next, l.max, l.integer);
     setPlaying(false);
@@ -343,7 +348,7 @@ export function useTimeline(opts: TimelineOptions): Timeline {
 
   useShortcuts(opts.shortcuts === false ? {} : { playPause: toggle, step });
 
-  const t = integer ? Math.floor(exact + 1e-9) : exact;
+  const t = positionShown(exact, integer);
   return useMemo(
     () => ({ t, max, integer, playing, speed, loop, stepSize, play, pause, toggle, step, reset, seek, setSpeed, setLoop, subscribe, now }),
     [t, max, integer, playing, speed, loop, stepSize, play, pause, toggle, step, reset, seek, subscribe, now],
