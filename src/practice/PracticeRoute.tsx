@@ -173,6 +173,25 @@ function QuestionRoute({ q, sp, flags }: { q: QuestionId; sp: URLSearchParams; f
   return <QuestionPage key={`${q}-${seed}`} variant={variant} flags={flags} problems={problems} />;
 }
 
+/** The link parameters a practice page could not use (nothing when there are none). */
+function ParamNotice({ problems, heading = false }: { problems: string[]; heading?: boolean }) {
+  if (!problems.length) return null;
+  return (
+    <div className="notice notice-warn" role="status" data-testid="param-notice">
+      {heading ? (
+        <p>
+          <strong>Some link parameters could not be used:</strong>
+        </p>
+      ) : null}
+      <ul>
+        {problems.map((p) => (
+          <li key={p}>{p}</li>
+        ))}
+      </ul>
+    </div>
+  );
+}
+
 function QuestionPage({ variant, flags, problems }: { variant: Variant; flags: ShellFlags; problems: string[] }) {
   const info = questionInfo(variant.question);
   const answers = allAnswers(variant);
@@ -238,18 +257,7 @@ function QuestionPage({ variant, flags, problems }: { variant: Variant; flags: S
           </a>
         )}
       </div>
-      {problems.length ? (
-        <div className="notice notice-warn" role="status" data-testid="param-notice">
-          <p>
-            <strong>Some link parameters could not be used:</strong>
-          </p>
-          <ul>
-            {problems.map((p) => (
-              <li key={p}>{p}</li>
-            ))}
-          </ul>
-        </div>
-      ) : null}
+      <ParamNotice problems={problems} heading />
       <div className="variant-bar">
         <span>
           Variant <strong data-testid="variant-seed">{variant.seed}</strong>
@@ -470,15 +478,7 @@ function Sheet({ sp, flags }: { sp: URLSearchParams; flags: ShellFlags }) {
             ← All practice questions
           </a>
         </div>
-        {problems.length ? (
-          <div className="notice notice-warn" role="status" data-testid="param-notice">
-            <ul>
-              {problems.map((p) => (
-                <li key={p}>{p}</li>
-              ))}
-            </ul>
-          </div>
-        ) : null}
+        <ParamNotice problems={problems} />
         <p>
           {variants.length} question page{variants.length === 1 ? '' : 's'}, then the answer key. <button type="button" onClick={() => window.print()}>Print</button>{' '}
           <span className="muted">Each question prints on its own page; the answer key follows on the last page.</span>
