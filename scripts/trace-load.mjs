@@ -30,19 +30,13 @@ try {
     await page.waitForTimeout(ms);
     const buf = await browser.stopTracing();
     const events = JSON.parse(buf.toString()).traceEvents;
-    // the renderer main thread: the thread with the most RunTask time among CrRendererMain threads
+    // the page's renderer main thread: the CrRendererMain thread that parsed our page's HTML
     const names = new Map();
     for (const e of events) if (e.name === 'thread_name') names.set(`${e.pid}:${e.tid}`, e.args.name);
-    const main = [...names].filter(([, n]) => n === 'CrRendererMain').map(([k]) => k);
-    const byThread = new Map();
-    for (const e of events) {
-      const k = `${e.pid}:${e.tid}`;
-      if (!main.includes(k) || e.ph !== 'X' || e.dur === undefined) continue;
-      if (!byThread.has(k)) byThread.set(k, []);
-      byThread.get(k).push(e);
-    }
-    let evs = [];
-    for (const list of byThread.values()) if (list.length > evs.length) evs = list;
+    const ours = events.find((e) => e.name === 'ParseHTML' && String(e.args?.beginData?.url ?? '').includes(`127.0.0.1:${port}`) && names.get(`${e.pid}:${e.tid}`) === 'CrRendererMain');
+    if (!ours) throw new Error(`${route}: no trace of the page's main thread`);
+    const key = `${ours.pid}:${ours.tid}`;
+    const evs = events.filter((e) => `${e.pid}:${e.tid}` === key && e.ph === 'X' && e.dur !== undefined);
     evs.sort((a, b) => a.ts - b.ts || b.dur - a.dur);
     const nav = evs.find((e) => e.name === 'RunTask')?.ts ?? 0;
     const tasks = evs.filter((e) => e.name === 'RunTask' || e.name === 'ThreadControllerImpl::RunTask');
