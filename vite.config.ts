@@ -27,7 +27,6 @@ function inlineWorkers(): Plugin {
   };
 }
 
-// Relative base: the static build works from any folder of any static host (hash routing).
 /**
  * @stdlib's packages are CommonJS without a `sideEffects` field, so a bundler keeps them (and runs
  * their module code, tens of ms on a phone) in every chunk that imports them, even unused: the
@@ -36,6 +35,7 @@ function inlineWorkers(): Plugin {
  */
 const treeshake = { moduleSideEffects: [{ test: /[\\/]node_modules[\\/]@stdlib[\\/]/, sideEffects: false }] };
 
+// Relative base: the static build works from any folder of any static host (hash routing).
 export default defineConfig(({ mode }) => {
   const single = mode === 'single';
   return {

@@ -120,7 +120,16 @@ try {
           }
         }
         const pct = (list) => [...list].sort((a, b) => b[1] - a[1]).slice(0, 6).map(([k, c]) => `${k} ${Math.round((100 * c) / n)}%`).join(' | ');
-        if (n) js = `\n${' '.repeat(26)}app code: ${pct(inc)}\n${' '.repeat(26)}React: ${pct(phases)}`;
+        // and the functions with the most self time, any script (the shell lives in the entry chunk)
+        const self = new Map();
+        for (const [time, id] of samples) {
+          if (time < t.ts || time > end) continue;
+          const node = nodes.get(id);
+          if (!node || /^\((idle|program|garbage collector|root)\)$/.test(node.callFrame.functionName)) continue;
+          const k = frameName(node);
+          self.set(k, (self.get(k) ?? 0) + 1);
+        }
+        if (n) js = `\n${' '.repeat(26)}app code: ${pct(inc)}\n${' '.repeat(26)}React: ${pct(phases)}\n${' '.repeat(26)}self: ${pct(self)}`;
       }
       long.push({ start: (t.ts - nav) / 1000, dur: t.dur / 1000, top: [...agg].sort((a, b) => b[1] - a[1]).slice(0, 6), js });
     }
