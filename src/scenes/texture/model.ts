@@ -17,6 +17,7 @@ import {
   nodeCoord,
   parseGrid,
   randomGrid,
+  nearestPixelTaps,
   reconstructInto,
   sphericalUV,
   type BilinearStencil,
@@ -29,7 +30,7 @@ import {
 } from '../../core/texture';
 import type { Failure } from '../../core/failure';
 import type { ParamValues } from '../../app/params';
-import { colorInto, normalizeValue } from './colormap';
+import { colorizeInto } from './colormap';
 import { GRID_TEXT_MAX, type PathKind, type Preset, type TextureSchema } from './params';
 
 export type TextureParams = ParamValues<TextureSchema>;
@@ -215,12 +216,29 @@ export function textureImage(
   window?: { uMin: number; uMax: number; vMin: number; vMax: number },
   scratch: Float64Array = new Float64Array(w * h),
 ): Uint8ClampedArray {
-  reconstructInto(grid, opts, filter, w, h, scratch, window);
   const img = new Uint8ClampedArray(w * h * 4);
-  for (let k = 0; k < w * h; k++) {
-    colorInto(normalizeValue(scratch[k], range.min, range.max), img, 4 * k);
-    img[4 * k + 3] = 255;
+  if (filter === 'nearest') {
+    // every pixel shows one texel's value: colour the texels once (colorizeInto, so the same
+    // bytes as colouring each pixel's value), then copy each pixel's texel colour as one word
+    const n = grid.values.length;
+    const lut = new Uint8ClampedArray(4 * n);
+    colorizeInto(grid.values, n, range.min, range.max, lut);
+    const lut32 = new Uint32Array(lut.buffer);
+    const img32 = new Uint32Array(img.buffer);
+    const { col, rowOff } = nearestPixelTaps(grid, opts, w, h, window);
+    for (let py = 0; py < h; py++) {
+      const row = py * w;
+      if (py > 0 && rowOff[py] === rowOff[py - 1]) {
+        img32.copyWithin(row, row - w, row);
+        continue;
+      }
+      const off = rowOff[py];
+      for (let px = 0; px < w; px++) img32[row + px] = lut32[off + col[px]];
+    }
+    return img;
   }
+  reconstructInto(grid, opts, filter, w, h, scratch, window);
+  colorizeInto(scratch, w * h, range.min, range.max, img);
   return img;
 }
 
