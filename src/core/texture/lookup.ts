@@ -264,6 +264,43 @@ export function bilinear(grid: TextureGrid, u: number, v: number, opts: LookupOp
 }
 
 /**
+ * The four taps of a bilinear lookup without its stencil object, for code that only asks which
+ * cell a query falls in (many times, e.g. along a path): writes i0, i1, j0, j1 (as in
+ * {@link bilinearStencil}, by the same arithmetic as {@link bilinear}) to out[at … at + 3].
+ */
+export function bilinearTapsInto(grid: TextureGrid, u: number, v: number, opts: LookupOptions, out: Float64Array, at = 0): void {
+  const w = grid.width;
+  const h = grid.height;
+  const vv = opts.vflip ? 1 - v : v;
+  if (opts.align === 'corner') {
+    const i0 = Math.min(Math.floor(addressCoord(u, opts.wrap) * (w - 1)), w - 2);
+    const j0 = Math.min(Math.floor(addressCoord(vv, opts.wrap) * (h - 1)), h - 2);
+    out[at] = i0;
+    out[at + 1] = i0 + 1;
+    out[at + 2] = j0;
+    out[at + 3] = j0 + 1;
+    return;
+  }
+  const ri = Math.floor((Number.isFinite(u) ? u : 0) * w - 0.5);
+  const rj = Math.floor((Number.isFinite(vv) ? vv : 0) * h - 0.5);
+  out[at] = addressIndex(ri, w, opts.wrap);
+  out[at + 1] = addressIndex(ri + 1, w, opts.wrap);
+  out[at + 2] = addressIndex(rj, h, opts.wrap);
+  out[at + 3] = addressIndex(rj + 1, h, opts.wrap);
+}
+
+/** The index j · width + i into grid.values of the node a nearest lookup returns ({@link nearestStencil}'s i, j), without allocation. */
+export function nearestTapIndex(grid: TextureGrid, u: number, v: number, opts: LookupOptions): number {
+  const w = grid.width;
+  const h = grid.height;
+  const vv = opts.vflip ? 1 - v : v;
+  if (opts.align === 'corner') return Math.round(addressCoord(vv, opts.wrap) * (h - 1)) * w + Math.round(addressCoord(u, opts.wrap) * (w - 1));
+  const i = addressIndex(Math.floor((Number.isFinite(u) ? u : 0) * w), w, opts.wrap);
+  const j = addressIndex(Math.floor((Number.isFinite(vv) ? vv : 0) * h), h, opts.wrap);
+  return j * w + i;
+}
+
+/**
  * The exam key's step form of a bilinear lookup: interpolate along u on the upper row (c_u) and
  * on the lower row (c_l), each with the division by the cell size, then along v:
  *
