@@ -7,6 +7,7 @@ import {
   importanceEstimate,
   uniformEstimate,
   type McEstimate,
+  type Problem1D,
 } from '../../core/estimators';
 import { integrate1D, INTEGRATION_METHOD } from '../../core/verify/integrate1d';
 import {
@@ -35,6 +36,23 @@ export const KEY_PRINTED = { f: [9.98, 18.84, 6.45, 10.26], estimate: 21.45 } as
 
 /** A real function of x (compiled user expression or closed form). */
 export type Fn1 = (x: number) => number;
+
+/**
+ * A sample count with comma thousands separators, as `n.toLocaleString('en')` writes a
+ * non-negative integer, without Intl: the page's first toLocaleString loads ICU's number
+ * formatting, ~25–40 ms of main-thread time in the scene's first render (issue 15). Anything else
+ * (negative, fractional, unsafe integers) goes to toLocaleString.
+ */
+export function formatCount(n: number): string {
+  if (!Number.isSafeInteger(n) || n < 0 || Object.is(n, -0)) return n.toLocaleString('en');
+  const s = String(n);
+  let out = '';
+  for (let i = 0; i < s.length; i++) {
+    if (i > 0 && (s.length - i) % 3 === 0) out += ',';
+    out += s[i];
+  }
+  return out;
+}
 
 /** Default limits used when the URL's are unusable. */
 export function checkLimits(a: number, b: number): { a: number; b: number; message: string | null } {
@@ -262,9 +280,14 @@ export function keyComparison(fSrc: string, a: number, b: number, xs: readonly n
   return notes;
 }
 
+/** The problem of an estimate with drawn samples (what estimate1D and EstimateRun1D take). */
+export function drawnProblem(f: Fn1, sampler: Pdf1D, sequence: Strategy, seed: number): Problem1D {
+  return { f, pdf: sampler, sequence: sequence as SequenceKind, seed };
+}
+
 /** Estimate with n drawn samples on the main thread (small n; larger n runs in the worker). */
 export function drawnEstimate(f: Fn1, sampler: Pdf1D, sequence: Strategy, seed: number, n: number): McEstimate {
-  return estimate1D({ f, pdf: sampler, sequence: sequence as SequenceKind, seed }, n);
+  return estimate1D(drawnProblem(f, sampler, sequence, seed), n);
 }
 
 /** Largest n estimated synchronously on the main thread. */
