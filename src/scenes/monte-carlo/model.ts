@@ -374,21 +374,6 @@ export interface RaceTrack {
   importance: RaceLane;
 }
 
-/** Running mean and M₂ of a lane's terms (Welford's update). */
-function welford(L: RaceLane): void {
-  const { term, mean: ms, m2: m2s } = L;
-  let mean = 0;
-  let m2 = 0;
-  for (let i = 0; i < term.length; i++) {
-    const y = term[i]!;
-    const d = y - mean;
-    mean += d / (i + 1);
-    m2 += d * (y - mean);
-    ms[i] = mean;
-    m2s[i] = m2;
-  }
-}
-
 function lane(n: number): RaceLane {
   return { x: new Float64Array(n), term: new Float64Array(n), mean: new Float64Array(n), m2: new Float64Array(n) };
 }
@@ -398,30 +383,45 @@ function lane(n: number): RaceLane {
  * track of `max` samples is a prefix of any longer one. The uniform lane uses xᵢ = a + (b − a)ξᵢ
  * and term (b − a) f(xᵢ); the importance lane xᵢ = P⁻¹(ξᵢ) and term f(xᵢ)/p(xᵢ). Running means and
  * M₂ by Welford's update. O(max) once per parameter change; raceAt(track, t) is then O(points).
+ *
+ * It runs while the scene first renders, on code the JIT has not warmed up yet, where a function
+ * call per sample costs many times the arithmetic (issue 15): ξ comes from Rng.fill (no call per
+ * draw) and each lane's terms, mean and M₂ are written in one loop. The arithmetic is the plain
+ * per-sample one's (tests/scenes/monte-carlo/race.test.ts compares them exactly).
  */
 export function raceTrack(f: Fn1, a: number, b: number, importance: Pdf1D, exact: number, seed: number, max = RACE_MAX): RaceTrack {
-  const rng = new Rng(seed, RACE_STREAM);
-  const xi = new Float64Array(max);
-  for (let i = 0; i < max; i++) xi[i] = rng.nextFloat();
+  const xi = new Rng(seed, RACE_STREAM).fill(new Float64Array(max));
   const U = lane(max);
   const I = lane(max);
-  // Two plain loops over typed arrays (no per-sample closure or array): this runs in the scene's
-  // first render, on code the JIT has not warmed up yet (issue 15). Same arithmetic as before.
   const w = b - a;
+  let mean = 0;
+  let m2 = 0;
   for (let i = 0; i < max; i++) {
     const x = a + w * xi[i]!;
+    const y = w * f(x);
     U.x[i] = x;
-    U.term[i] = w * f(x);
+    U.term[i] = y;
+    const d = y - mean;
+    mean += d / (i + 1);
+    m2 += d * (y - mean);
+    U.mean[i] = mean;
+    U.m2[i] = m2;
   }
+  // per sample, not the batched sampler: a pdf's batch may round differently in the last bit
+  mean = 0;
+  m2 = 0;
   for (let i = 0; i < max; i++) {
     const x = importance.sample(xi[i]!);
-    const p = importance.pdf(x);
-    const fx = f(x);
     I.x[i] = x;
-    I.term[i] = fx === 0 ? 0 : fx / p;
+    const fx = f(x);
+    const y = fx === 0 ? 0 : fx / importance.pdf(x);
+    I.term[i] = y;
+    const d = y - mean;
+    mean += d / (i + 1);
+    m2 += d * (y - mean);
+    I.mean[i] = mean;
+    I.m2[i] = m2;
   }
-  welford(U);
-  welford(I);
   return { max, exact, xi, uniform: U, importance: I };
 }
 
