@@ -22,8 +22,6 @@ import {
   keyComparison,
   roundTo,
   RACE_MAX,
-  raceAt,
-  raceTrack,
   sampleTable,
   squareShift,
   stderrIsValid,
@@ -38,8 +36,8 @@ import { ConvergencePanel } from './view/ConvergencePanel';
 import { RmsePanel } from './view/RmsePanel';
 import { HistogramPanel } from './view/HistogramPanel';
 import { KeyFigures, SampleRows } from './view/WorkedTable';
-import { RaceFigure } from './view/RaceFigure';
-import { Q4a, Q4b, Q4c, Q4d } from './view/ExamQ4';
+import { RaceSection, Q4dRace, type RaceInput } from './view/RaceSection';
+import { Q4a, Q4b, Q4c } from './view/ExamQ4';
 import type { RmseData } from './jobs';
 import { SamplesField, FnField } from './view/Fields';
 import { useSlicedEstimate } from './view/hooks';
@@ -135,12 +133,11 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
 
   // --- the animation: uniform against importance on the same ξᵢ (model.raceTrack / raceAt) -------
   const raceImp = choice && choice.ok && choice.kind !== 'uniform' ? choice : propChoice && propChoice.ok ? propChoice : null;
-  const track = useMemo(
-    () => (f && raceImp && exact && Number.isFinite(exact.value) ? raceTrack(f, a, b, raceImp.sampler, exact.value, params.seed) : null),
+  // the track itself is computed by the race's components (./view/RaceSection), not in this render
+  const raceInput = useMemo<RaceInput | null>(
+    () => (f && raceImp && exact && Number.isFinite(exact.value) ? { f, a, b, sampler: raceImp.sampler, density: raceImp.density, exact: exact.value, seed: params.seed } : null),
     [f, raceImp, exact, a, b, params.seed],
   );
-  const raceCurve = useMemo(() => (f && raceImp ? curves(f, raceImp.density, a, b, 200) : null), [f, raceImp, a, b]);
-  const raceEnd = useMemo(() => (track ? raceAt(track, track.max, []) : null), [track]);
   const importanceLabel = raceImp ? (raceImp.kind === 'proportional' ? raceImp.label.replace(/ \(closed form.*\)$/, '').replace(/^/, 'p ∝ f: ') : raceImp.label) : '';
   const setRace = useCallback((patch: { t?: number; play?: boolean }) => setParams(patch), [setParams]);
 
@@ -268,11 +265,14 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
                 </>
               ) : null}
             </p>
-            {track && raceCurve ? (
-              <RaceFigure track={track} curve={raceCurve} a={a} b={b} importanceLabel={importanceLabel} t={Number(params.t)} play={params.play === true} setParams={setRace} />
-            ) : (
-              <p className="mc-note">The animation needs a finite integral and a usable importance pdf.</p>
-            )}
+            <RaceSection
+              input={raceInput}
+              importanceLabel={importanceLabel}
+              t={Number(params.t)}
+              play={params.play === true}
+              setParams={setRace}
+              fallback={<p className="mc-note">The animation needs a finite integral and a usable importance pdf.</p>}
+            />
           </>
         }
       >
@@ -327,15 +327,7 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
             }
           />
         ) : null}
-        {raceEnd ? (
-          <Q4d
-            uErr={raceEnd.uniform.absError}
-            iErr={raceEnd.importance.absError}
-            N={RACE_MAX}
-            importanceIsExam={raceImp?.kind === 'proportional'}
-            onWhole={() => setParams({ t: RACE_MAX, play: false })}
-          />
-        ) : null}
+        <Q4dRace input={raceInput} importanceIsExam={raceImp?.kind === 'proportional'} onWhole={() => setParams({ t: RACE_MAX, play: false })} />
       </ExamQuestion>
       <ExploreFurther intro="Other integrands and pdfs, stratified and quasi-Monte Carlo points, many runs, run time, and unbiasedness (exam Q2 c).">
         <Panel title="The integrand and the pdf">
