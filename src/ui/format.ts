@@ -1,6 +1,6 @@
 /**
- * Numbers as text for people, shared by the readouts (ui/Readout.tsx `formatNumber`) and the
- * practice pages (practice/model.ts `fmt`): pure, no DOM.
+ * Numbers as text for people, shared by the readouts (ui/Readout.tsx `formatNumber`), the
+ * practice pages (practice/model.ts `fmt`) and the scenes' counts (`formatCount`): pure, no DOM.
  */
 
 /** How an exponent is written: 'e' → "1.5e-5" (plain text), 'times' → "1.5×10⁻⁵" (typeset). */
@@ -27,4 +27,21 @@ export function formatSignificant(x: number, digits: number, style: ExponentStyl
   const [m, e] = x.toExponential(Math.max(0, digits - 1)).split('e');
   const mt = m!.includes('.') ? m!.replace(/\.?0+$/, '') : m!;
   return style === 'e' ? `${mt}e${e!.replace('+', '')}` : `${mt}×10${[...e!].map((c) => SUPERSCRIPT[c] ?? c).join('')}`;
+}
+
+/**
+ * A sample count with comma thousands separators, as `n.toLocaleString('en')` writes a
+ * non-negative integer, without Intl: the page's first toLocaleString loads ICU's number
+ * formatting, ~25–40 ms of main-thread time in the scene's first render (issue 15). Anything else
+ * (negative, fractional, unsafe integers) goes to toLocaleString.
+ */
+export function formatCount(n: number): string {
+  if (!Number.isSafeInteger(n) || n < 0 || Object.is(n, -0)) return n.toLocaleString('en');
+  const s = String(n);
+  let out = '';
+  for (let i = 0; i < s.length; i++) {
+    if (i > 0 && (s.length - i) % 3 === 0) out += ',';
+    out += s[i];
+  }
+  return out;
 }

@@ -5,6 +5,7 @@
  * warp morph of the unit square onto the hemisphere, on the shared timeline (issue 12) — sits
  * right after the question. Samples, χ² and the Q2 estimators are computed in a worker.
  */
+import { formatCount } from '../../ui/format';
 import { lazy, memo, Suspense, useMemo, useRef, useState, type ComponentProps } from 'react';
 import type { SceneProps } from '../../app/scene';
 import { useCompiled, ExprField, NumberField, Notice, Panel, Readout, Select, Slider, Toggle, TimelineTransport, useTimeline, useTimelinePosition, prefersReducedMotion, formatNumber, type Timeline } from '../../ui';
@@ -170,7 +171,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
             ) : null}
           </>
         ) : (
-          <p role="status">Drawing {params.n.toLocaleString('en-US')} samples…</p>
+          <p role="status">Drawing {formatCount(params.n)} samples…</p>
         )
       ) : (
         <p className="small">No samples: {inverted ? "the paper's identity gives no density (see (b))." : 'the density is not valid yet.'}</p>
@@ -370,7 +371,7 @@ function Figure({ lobe, lobeId, kind, seed, n, anim, t, play, setParams, present
         <TimelineTransport
           timeline={tl}
           label={anim === 'warp' ? 'Warp morph' : 'Samples appearing'}
-          format={(x) => (anim === 'warp' ? `t = ${x.toFixed(2)}, s = ${frame.s.toFixed(2)}` : `t = ${x.toFixed(2)}: ${frame.shown.toLocaleString('en-US')} of ${n.toLocaleString('en-US')}`)}
+          format={(x) => (anim === 'warp' ? `t = ${x.toFixed(2)}, s = ${frame.s.toFixed(2)}` : `t = ${x.toFixed(2)}: ${formatCount(frame.shown)} of ${formatCount(n)}`)}
           testId="timeline"
         >
           <Select label="Animation" value={anim} options={ANIM_OPTIONS} onChange={(v) => setParams({ anim: v })} testId="anim" />

@@ -2,6 +2,7 @@
  * Monte Carlo integration and convergence (exam Q2, Q4). All figures come from ./model (pure, over
  * the core) and from the worker jobs in ./jobs; this file only wires parameters to views.
  */
+import { formatCount } from '../../ui/format';
 import { useCallback, useMemo } from 'react';
 import type { SceneProps } from '../../app/scene';
 import { ExamQuestion, ExploreFurther, formatNumber, MathTex, useCompiled, NumberField, Notice, Panel, Readout, SceneLayout, Select, Slider } from '../../ui';
@@ -18,7 +19,6 @@ import {
   curves,
   drawnProblem,
   exactIntegral,
-  formatCount,
   keyComparison,
   roundTo,
   RACE_MAX,

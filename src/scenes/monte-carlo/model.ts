@@ -37,23 +37,6 @@ export const KEY_PRINTED = { f: [9.98, 18.84, 6.45, 10.26], estimate: 21.45 } as
 /** A real function of x (compiled user expression or closed form). */
 export type Fn1 = (x: number) => number;
 
-/**
- * A sample count with comma thousands separators, as `n.toLocaleString('en')` writes a
- * non-negative integer, without Intl: the page's first toLocaleString loads ICU's number
- * formatting, ~25–40 ms of main-thread time in the scene's first render (issue 15). Anything else
- * (negative, fractional, unsafe integers) goes to toLocaleString.
- */
-export function formatCount(n: number): string {
-  if (!Number.isSafeInteger(n) || n < 0 || Object.is(n, -0)) return n.toLocaleString('en');
-  const s = String(n);
-  let out = '';
-  for (let i = 0; i < s.length; i++) {
-    if (i > 0 && (s.length - i) % 3 === 0) out += ',';
-    out += s[i];
-  }
-  return out;
-}
-
 /** Default limits used when the URL's are unusable. */
 export function checkLimits(a: number, b: number): { a: number; b: number; message: string | null } {
   if (Number.isFinite(a) && Number.isFinite(b) && a < b) return { a, b, message: null };

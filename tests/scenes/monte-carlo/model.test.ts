@@ -1,3 +1,4 @@
+import { formatCount } from '../../../src/ui/format';
 import { describe, expect, it } from 'vitest';
 import {
   EXAM_SAMPLES,
@@ -6,7 +7,6 @@ import {
   choosePdf,
   curves,
   exactIntegral,
-  formatCount,
   histogram,
   keyComparison,
   roundTo,

@@ -14,6 +14,7 @@
  * filled points are kept, so scrubbing back and forth costs nothing. Nothing renders while the
  * timeline is paused and the buffers are filled, unless the camera moves.
  */
+import { formatCount } from '../../../ui/format';
 import { useEffect, useEffectEvent, useRef } from 'react';
 import type * as THREE from 'three';
 import { Viewport, type ViewportContext } from '../../../three';
@@ -382,7 +383,7 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
         testId="hemisphere-3d"
       />
       <p className="hemi-shown">
-        showing <span ref={label} data-testid="shown-count" data-value="0">0</span> of {n.toLocaleString('en-US')} points
+        showing <span ref={label} data-testid="shown-count" data-value="0">0</span> of {formatCount(n)} points
       </p>
     </div>
   );

@@ -2,6 +2,7 @@
  * The unit square of (ξ₁, ξ₂): the first points of the chosen set and the 8 × 8 grid whose image
  * the 3D view draws on the hemisphere, in the same colours. Redrawn only when the inputs change.
  */
+import { formatCount } from '../../../ui/format';
 import { useEffect, useRef } from 'react';
 import { fillSequence2D, type SequenceKind } from '../../../core/random';
 import { xiColor, xiCss } from './colors';
@@ -102,7 +103,7 @@ export function UnitSquare({ kind, seed, n, size = 220 }: { kind: SequenceKind; 
         aria-label={`The unit square of (ξ₁, ξ₂) with the first ${shown} points of the ${kind} set and the grid whose image is drawn on the hemisphere`}
       />
       <figcaption>
-        (ξ₁, ξ₂): first {shown.toLocaleString('en-US')} {kind} points; each colour lands where the same colour appears on the hemisphere; the ringed point is the first sample.
+        (ξ₁, ξ₂): first {formatCount(shown)} {kind} points; each colour lands where the same colour appears on the hemisphere; the ringed point is the first sample.
       </figcaption>
     </figure>
   );

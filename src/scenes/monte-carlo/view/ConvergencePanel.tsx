@@ -1,7 +1,8 @@
 /** Convergence as N grows: running estimate and |error| log-log with guides and fitted slopes (one run per strategy, in the worker). */
 import { useEffect, useMemo, useRef } from 'react';
 import { formatNumber, Panel, Plot, type PlotTrace } from '../../../ui';
-import { atRoundingLevel, formatCount } from '../model';
+import { atRoundingLevel } from '../model';
+import { formatCount } from '../../../ui/format';
 import type { ProblemArgs, SeriesData } from '../jobs';
 import { REDRAW_MS, useAutoRun, useLegendRoom, useThrottled } from './hooks';
 import { arr, COLORS, Heading, L_ERR, L_EST, RunBar } from './plotStyle';

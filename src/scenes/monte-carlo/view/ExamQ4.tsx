@@ -6,7 +6,8 @@
  */
 import type { ReactNode } from 'react';
 import { Derivation, ExamPart, formatNumber, KeyNote, LiveAnswer, MathTex, Readout } from '../../../ui';
-import { formatCount, squareAntiderivative, squareNormalizer, type SampleTable } from '../model';
+import { squareAntiderivative, squareNormalizer, type SampleTable } from '../model';
+import { formatCount } from '../../../ui/format';
 
 const n4 = (x: number) => (Number.isFinite(x) ? formatNumber(x, 6) : '\\text{—}');
 /** v as "p/3" when 3v is (nearly) an integer, else its decimal. */

@@ -1,7 +1,8 @@
 /** RMSE over independent (randomized) runs against N, and against the measured run time. */
 import { useMemo, useRef } from 'react';
 import { NumberField, Panel, Plot, type PlotTrace } from '../../../ui';
-import { atRoundingLevel, formatCount, sortedByX } from '../model';
+import { atRoundingLevel, sortedByX } from '../model';
+import { formatCount } from '../../../ui/format';
 import type { ProblemArgs, RmseData } from '../jobs';
 import { REDRAW_MS, useAutoRun, useLegendRoom, useThrottled } from './hooks';
 import { arr, clampArr, COLORS, Heading, hexA, L_RMSE, L_TIME, RunBar } from './plotStyle';
