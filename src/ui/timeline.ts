@@ -29,6 +29,13 @@ import { useShortcuts } from './shortcuts';
  */
 const RENDER_MIN_FRAMES = 20;
 
+/**
+ * How often text that follows a playing timeline by direct writes (the transport's position text,
+ * a scene's readouts) changes, at most: numbers that change every frame cannot be read, and
+ * readouts are live regions. Exact whenever the timeline is paused.
+ */
+export const TEXT_HZ = 4;
+
 /** The position a timeline shows: integer timelines show whole steps (floored, allowing for rounding). */
 function positionShown(exact: number, integer: boolean): number {
   return integer ? Math.floor(exact + 1e-9) : exact;
@@ -99,7 +106,8 @@ export interface TimelineOptions {
   shortcuts?: boolean;
   /**
    * While playing, update React state (`t`) at most this many times a second (subscribers still get
-   * every frame); exact on pause / step / reset / seek. Default: every frame.
+   * every frame); exact on pause / step / reset / seek. 0: not at all while playing (everything
+   * that moves is drawn by frame subscribers). Default: every frame.
    */
   renderHz?: number;
 }
@@ -330,7 +338,7 @@ export function useTimeline(opts: TimelineOptions): Timeline {
       sinceRender++;
       // coarse React renders: at most renderHz a second, and (on a slow machine, where frames are
       // far apart) at most every RENDER_MIN_FRAMES frames, so most frames stay free of React
-      if (hz === undefined || (now - rendered >= 1000 / hz - 1 && sinceRender >= RENDER_MIN_FRAMES)) {
+      if (hz === undefined || (hz > 0 && now - rendered >= 1000 / hz - 1 && sinceRender >= RENDER_MIN_FRAMES)) {
         rendered = now;
         sinceRender = 0;
         setExact(t); // the layout effect tells the subscribers after React committed

@@ -4,9 +4,9 @@
  * live answer, and then, beyond the exam, the 3D view and what floating point does to the
  * textbook form (Ray Tracing Gems ch. 7).
  */
-import { memo, useCallback, useDeferredValue, useEffect, useMemo, useRef, useState } from 'react';
+import { memo, useCallback, useDeferredValue, useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
-import { Derivation as DerivationBlock, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Readout, Select, TimelineTransport, useTimeline, useTimelinePosition, type Timeline } from '../../ui';
+import { Derivation as DerivationBlock, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Readout, Select, TimelineTransport, useTimeline, useTimelineFrame, useTimelinePosition, type Timeline } from '../../ui';
 import type { RaySphereHit } from '../../core/geometry';
 import { CASE_PRESETS, PRECISION_PRESETS, schema, type Preset, type RaySphereParams } from './params';
 import {
@@ -440,7 +440,10 @@ function LiveCrossSection({
   return <CrossSection o={o} d={d} c={c} r={r} res={m.chosen} distanceRatio={m.distanceRatio} onChange={onChange} fitExtra={fitExtra} />;
 }
 
-/** g(t) and Δ against the sweep at the live position (re-render every frame while playing, alone). */
+/**
+ * g(t) and Δ against the sweep at the live position: React renders the plots when the sweep or the
+ * sizes change; every frame (and after each render) the moving parts are written directly.
+ */
 function LivePlots({
   tl,
   modelAt,
@@ -458,22 +461,31 @@ function LivePlots({
   xLabel: string;
   method: 'naive' | 'stable';
 }) {
-  const t = useTimelinePosition(tl);
-  const m = modelAt(t);
-  const naiveRow = m.rows.find((x) => x.method === 'naive');
-  const stableRow = m.rows.find((x) => x.method === 'stable');
+  const g = useRef<((res: RaySphereHit | null) => void) | null>(null);
+  const delta = useRef<((x: number, discStable: number | null, discNaive: number | null) => void) | null>(null);
+  const at = (t: number) => {
+    const m = modelAt(t);
+    return {
+      res: m.chosen,
+      x: sweepAt(sweep, t).x,
+      stable: m.rows.find((x) => x.method === 'stable')?.res.discriminant ?? null,
+      naive: m.rows.find((x) => x.method === 'naive')?.res.discriminant ?? null,
+    };
+  };
+  const draw = (t: number) => {
+    const a = at(t);
+    g.current?.(a.res);
+    delta.current?.(a.x, a.stable, a.naive);
+  };
+  const drawRef = useRef(draw);
+  drawRef.current = draw;
+  useTimelineFrame(tl, (t) => drawRef.current(t));
+  useLayoutEffect(() => drawRef.current(tl.now()));
+  const first = at(tl.now());
   return (
     <>
-      <GSweepPlot res={m.chosen} window={series.gWindow} />
-      <DeltaSweepPlot
-        series={series}
-        tangentX={tangentX}
-        x={sweepAt(sweep, t).x}
-        discStable={stableRow?.res.discriminant ?? null}
-        discNaive={naiveRow?.res.discriminant ?? null}
-        xLabel={xLabel}
-        method={method}
-      />
+      <GSweepPlot res={first.res} window={series.gWindow} drawRef={g} />
+      <DeltaSweepPlot series={series} tangentX={tangentX} x={first.x} discStable={first.stable} discNaive={first.naive} xLabel={xLabel} method={method} drawRef={delta} />
     </>
   );
 }
