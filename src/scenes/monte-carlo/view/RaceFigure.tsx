@@ -320,7 +320,7 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
  * sample counts `points` below t, plus the point at t itself: the segments at `points` are formatted
  * once; `at(t)` joins those below t, reusing the previous call's joined prefix when t grew.
  */
-function raceCurves(track: RaceTrack, points: readonly number[], fig: { ex: Scale; ey: Scale; ly: Scale; floor: number; R: number }, I: number) {
+export function raceCurves(track: RaceTrack, points: readonly number[], fig: { ex: Scale; ey: Scale; ly: Scale; floor: number; R: number }, I: number) {
   const { ex, ey, ly, floor, R } = fig;
   const clampY = (v: number) => Math.max(I - R, Math.min(I + R, v));
   const xy = (n: number, y: number) => `${ex(n).toFixed(1)},${y.toFixed(1)}`;
