@@ -6,7 +6,7 @@
  */
 import { memo, useCallback, useDeferredValue, useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
-import { Derivation as DerivationBlock, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Readout, Select, TimelineTransport, useTimeline, useTimelineFrame, useTimelinePosition, type Timeline } from '../../ui';
+import { Derivation as DerivationBlock, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Readout, Select, TimelineTransport, useTimeline, useTimelineFrame, type Timeline } from '../../ui';
 import type { RaySphereHit } from '../../core/geometry';
 import { CASE_PRESETS, PRECISION_PRESETS, schema, type Preset, type RaySphereParams } from './params';
 import {
@@ -26,7 +26,7 @@ import {
   type SweepSeries,
   type V3,
 } from './model';
-import { CrossSection } from './view/CrossSection';
+import { CrossSection, type CrossRay } from './view/CrossSection';
 import { View3D } from './view/View3D';
 import { DistantImages, ErrorVsDistance, PrecisionTable } from './view/Precision';
 import { DeltaSweepPlot, GSweepPlot } from './view/SweepPlots';
@@ -423,7 +423,10 @@ function lastValue<T>(f: (t: number) => T): (t: number) => T {
   };
 }
 
-/** The cross-section at the live position (re-renders every frame while playing, alone). */
+/**
+ * The cross-section at the live position: React renders it when the inputs change; every frame
+ * (and after each render) the ray is drawn directly (CrossSection's drawRef).
+ */
 function LiveCrossSection({
   tl,
   modelAt,
@@ -435,9 +438,18 @@ function LiveCrossSection({
   onChange: (patch: Partial<RaySphereParams>) => void;
   fitExtra: readonly V3[];
 }) {
-  const m = modelAt(useTimelinePosition(tl));
-  const { o, d, c, r } = m.input;
-  return <CrossSection o={o} d={d} c={c} r={r} res={m.chosen} distanceRatio={m.distanceRatio} onChange={onChange} fitExtra={fitExtra} />;
+  const drawRef = useRef<((ray: CrossRay) => void) | null>(null);
+  const rayAt = (t: number): CrossRay => {
+    const m = modelAt(t);
+    return { ...m.input, res: m.chosen, distanceRatio: m.distanceRatio };
+  };
+  const draw = (t: number) => drawRef.current?.(rayAt(t));
+  const latest = useRef(draw);
+  latest.current = draw;
+  useTimelineFrame(tl, (t) => latest.current(t));
+  useLayoutEffect(() => latest.current(tl.now()));
+  const first = rayAt(tl.now());
+  return <CrossSection {...first} onChange={onChange} fitExtra={fitExtra} drawRef={drawRef} />;
 }
 
 /**
