@@ -156,6 +156,28 @@ export function useTimelinePosition(tl: Pick<Timeline, 'subscribe' | 'now'>): nu
 }
 
 /**
+ * The position at a coarse rate: re-renders only the calling component, at most `hz` times a
+ * second (and at most every RENDER_MIN_FRAMES frames) while playing, and on every change while
+ * paused (exact on pause, step, seek, reset). For text that follows an animation whose owner does
+ * not re-render while playing (`renderHz: 0`).
+ */
+export function useCoarsePosition(tl: Pick<Timeline, 'subscribe' | 'now'>, hz: number): number {
+  const [t, setT] = useState(tl.now);
+  const last = useRef({ at: -Infinity, frames: Infinity });
+  useTimelineFrame(tl, (x, playing) => {
+    const l = last.current;
+    l.frames++;
+    const now = typeof performance === 'undefined' ? Date.now() : performance.now();
+    if (!playing || (now - l.at >= 1000 / hz - 1 && l.frames >= RENDER_MIN_FRAMES)) {
+      l.at = now;
+      l.frames = 0;
+      setT(x);
+    }
+  });
+  return t;
+}
+
+/**
  * Run `draw(t, playing)` on every frame of the timeline and whenever its position or state changes
  * (subscribed in a layout effect, so the first draw happens before paint). `draw` may change
  * identity between renders; the latest one is used. Keep it cheap: direct DOM / canvas writes.
