@@ -351,6 +351,21 @@ export interface RaceTrack {
   importance: RaceLane;
 }
 
+/** Running mean and M₂ of a lane's terms (Welford's update). */
+function welford(L: RaceLane): void {
+  const { term, mean: ms, m2: m2s } = L;
+  let mean = 0;
+  let m2 = 0;
+  for (let i = 0; i < term.length; i++) {
+    const y = term[i]!;
+    const d = y - mean;
+    mean += d / (i + 1);
+    m2 += d * (y - mean);
+    ms[i] = mean;
+    m2s[i] = m2;
+  }
+}
+
 function lane(n: number): RaceLane {
   return { x: new Float64Array(n), term: new Float64Array(n), mean: new Float64Array(n), m2: new Float64Array(n) };
 }
@@ -367,31 +382,23 @@ export function raceTrack(f: Fn1, a: number, b: number, importance: Pdf1D, exact
   for (let i = 0; i < max; i++) xi[i] = rng.nextFloat();
   const U = lane(max);
   const I = lane(max);
-  const fill = (L: RaceLane, pick: (u: number) => [number, number]) => {
-    let mean = 0;
-    let m2 = 0;
-    for (let i = 0; i < max; i++) {
-      const [x, y] = pick(xi[i]!);
-      L.x[i] = x;
-      L.term[i] = y;
-      const d = y - mean;
-      mean += d / (i + 1);
-      m2 += d * (y - mean);
-      L.mean[i] = mean;
-      L.m2[i] = m2;
-    }
-  };
+  // Two plain loops over typed arrays (no per-sample closure or array): this runs in the scene's
+  // first render, on code the JIT has not warmed up yet (issue 15). Same arithmetic as before.
   const w = b - a;
-  fill(U, (u) => {
-    const x = a + w * u;
-    return [x, w * f(x)];
-  });
-  fill(I, (u) => {
-    const x = importance.sample(u);
+  for (let i = 0; i < max; i++) {
+    const x = a + w * xi[i]!;
+    U.x[i] = x;
+    U.term[i] = w * f(x);
+  }
+  for (let i = 0; i < max; i++) {
+    const x = importance.sample(xi[i]!);
     const p = importance.pdf(x);
     const fx = f(x);
-    return [x, fx === 0 ? 0 : fx / p];
-  });
+    I.x[i] = x;
+    I.term[i] = fx === 0 ? 0 : fx / p;
+  }
+  welford(U);
+  welford(I);
   return { max, exact, xi, uniform: U, importance: I };
 }
 

@@ -7,7 +7,7 @@
  * render, and per animation frame through `drawRef` without React, while a sweep plays).
  */
 import { useLayoutEffect, useRef, useState, type KeyboardEvent, type PointerEvent } from 'react';
-import { useWidth } from './useWidth';
+import { useWidth } from '../../../ui/useWidth';
 import type { RaySphereHit } from '../../../core/geometry';
 import { canonicalFrame, dirFromFrame, fromFrame, frameFits, tidy, toFrame, type Frame2D, type V3 } from '../model';
 

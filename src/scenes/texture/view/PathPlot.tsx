@@ -5,7 +5,8 @@
  * SVG is as wide as its box), so text stays at its stated size on phones. The curves are memoized
  * on the profile; only the position marker re-renders per animation frame.
  */
-import { memo, useLayoutEffect, useMemo, useRef, useState } from 'react';
+import { memo, useMemo, useRef } from 'react';
+import { useWidth } from '../../../ui/useWidth';
 import type { PathProfile } from '../model';
 import { fmtShort } from './GridView';
 
@@ -96,20 +97,7 @@ export function PathPlot({
 }) {
   const ref = useRef<HTMLDivElement>(null);
   const markerRef = useRef<SVGGElement>(null);
-  const [w, setW] = useState(480);
-  useLayoutEffect(() => {
-    const el = ref.current;
-    if (!el) return;
-    const measure = () => {
-      const x = Math.round(el.getBoundingClientRect().width);
-      if (x > 0) setW((prev) => (prev !== x ? x : prev));
-    };
-    measure();
-    if (typeof ResizeObserver === 'undefined') return;
-    const ro = new ResizeObserver(measure);
-    ro.observe(el);
-    return () => ro.disconnect();
-  }, []);
+  const w = useWidth(ref, 480);
   const h = present ? 230 : 180;
   const s = useMemo<Scale>(() => {
     const pad = Math.max(1e-9, (profile.max - profile.min) * 0.08, Math.abs(profile.max) * 1e-9);
