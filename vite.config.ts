@@ -100,7 +100,9 @@ export default defineConfig(({ mode }) => {
                 groups: [
                   { name: 'vendor-three', test: /[\\/]node_modules[\\/]three[\\/]/ },
                   { name: 'vendor-plotly', test: /[\\/]node_modules[\\/]plotly\.js-cartesian-dist-min[\\/]/ },
-                  { name: 'vendor-katex', test: /[\\/]node_modules[\\/]katex[\\/]/ },
+                  // KaTeX's JavaScript only: its stylesheet's module must not pull the typesetter into
+                  // the page (KaTeX runs in a worker, src/ui/katex.worker.ts)
+                  { name: 'vendor-katex', test: /[\\/]node_modules[\\/]katex[\\/].*\.m?js$/ },
                 ],
               },
             },
