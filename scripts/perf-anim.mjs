@@ -6,6 +6,11 @@
  * bench/anim-perf.json and prints a table. A benchmark, not a test: it is not part of `npm test`.
  *
  *   npm run build && node scripts/perf-anim.mjs [--dist dist] [--port 4391] [--seconds 4] [--rate 4] [--routes hemisphere,texture]
+ *     [--settle 20] [--frames] [--detail]
+ *
+ * --frames adds each frame's script time to the results file; --detail prints, for every frame
+ * over 8 ms and for the last frame of each recording, its top-level script events (what ran, where,
+ * for how long), e.g. to tell a frame's own work from a timer, an idle callback or a worker message.
  *
  * Each route opens paused; once its start-up work is done (1.5 s without a long task, at most
  * `--settle` s) it switches loop on, presses Play, throttles the CPU, waits 1 s, records
