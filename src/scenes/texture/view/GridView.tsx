@@ -289,6 +289,12 @@ export function StencilDetail({ q, drawRef }: { q: Lookup; drawRef?: { current: 
   );
 }
 
+/** Sets an attribute if it changed (an unchanged write still invalidates style; per frame that adds up). */
+function setAttr(el: Element, a: string, v: number): void {
+  const s = String(v);
+  if (el.getAttribute(a) !== s) el.setAttribute(a, s);
+}
+
 /** Sets an element's text if it changed (the element's children are not React's). */
 function setText(el: Element | undefined | null, text: string): void {
   if (el && el.textContent !== text) el.textContent = text;
@@ -502,7 +508,7 @@ function queryGeometry(grid: TextureGrid, win: ViewWindow, q: Lookup): QueryGeom
 function drawStencil(g: SVGGElement, geo: QueryGeometry): void {
   const kids = g.children;
   if (kids.length !== 10) return;
-  const set = (el: Element, a: string, v: number) => el.setAttribute(a, String(v));
+  const set = setAttr;
   for (let k = 0; k < 4; k++) {
     const r = geo.rects[k];
     set(kids[k], 'x', r.x);
@@ -601,7 +607,7 @@ function drawCloseUp(svg: SVGSVGElement, q: Lookup, text: boolean): void {
     { x0: x, y0: y, x1: CU_P + CU_C, y1: CU_P + CU_C, w: b.w01 },
     { x0: CU_P, y0: y, x1: x, y1: CU_P + CU_C, w: b.w11 },
   ];
-  const set = (el: Element, a: string, v: number) => el.setAttribute(a, String(v));
+  const set = setAttr;
   for (let k = 0; k < 4; k++) {
     const r = rects[k]!;
     const [rect, label] = kids[k]!.children;
@@ -613,7 +619,8 @@ function drawCloseUp(svg: SVGSVGElement, q: Lookup, text: boolean): void {
     const room = r.x1 - r.x0 > 30 && r.y1 - r.y0 > 16;
     set(label!, 'x', (r.x0 + r.x1) / 2);
     set(label!, 'y', (r.y0 + r.y1) / 2 + 5);
-    label!.setAttribute('visibility', room ? 'visible' : 'hidden');
+    const vis = room ? 'visible' : 'hidden';
+    if (label!.getAttribute('visibility') !== vis) label!.setAttribute('visibility', vis);
     if (text) setText(label, String(Number(r.w.toPrecision(3))));
   }
   const values = [b.t00, b.t10, b.t01, b.t11];
