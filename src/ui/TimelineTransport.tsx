@@ -23,8 +23,8 @@ function speedText(s: number): string {
 
 export function TimelineTransport({ timeline: tl, label, format, children, testId = 'timeline' }: TimelineTransportProps) {
   const id = useId();
-  // The scrubber's thumb and data-t follow every frame, the position text and aria-valuetext at
-  // most TEXT_HZ times a second while playing (exact when paused): direct writes, so a timeline
+  // The scrubber's thumb follows every frame; data-t, the position text and aria-valuetext at most
+  // TEXT_HZ times a second while playing (exact when paused): direct writes, so a timeline
   // with a low renderHz (or none) needs no React render of the transport while it plays.
   const scrub = useRef<HTMLInputElement>(null);
   const root = useRef<HTMLDivElement>(null);
@@ -34,11 +34,11 @@ export function TimelineTransport({ timeline: tl, label, format, children, testI
   useTimelineFrame(tl, (t, playing) => {
     const el = scrub.current;
     if (el && Number(el.value) !== t) el.value = String(t);
-    const st = String(t);
-    if (root.current && root.current.getAttribute('data-t') !== st) root.current.setAttribute('data-t', st);
     const now = performance.now();
     if (playing && now - lastText.current < 1000 / TEXT_HZ - 1) return;
     lastText.current = now;
+    const st = String(t);
+    if (root.current && root.current.getAttribute('data-t') !== st) root.current.setAttribute('data-t', st);
     const text = textOf(t);
     if (el && el.getAttribute('aria-valuetext') !== text) el.setAttribute('aria-valuetext', text);
     // the output's text node is React's: change its value in place (React re-renders it on pause)

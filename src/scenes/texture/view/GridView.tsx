@@ -270,7 +270,8 @@ export function StencilDetail({ q, drawRef }: { q: Lookup; drawRef?: { current: 
         setText(li.children[2], `=${fmtShort(t)}, w=${fmtShort(w)}`);
       }
     }
-    if (closeRef.current) drawCloseUp(closeRef.current, dq, text);
+    // the close-up follows at the text's rate too (the grid's stencil moves every frame)
+    if (closeRef.current && text) drawCloseUp(closeRef.current, dq, text);
   };
   if (drawRef) drawRef.current = draw;
   useLayoutEffect(() => draw(q, true));
