@@ -6,9 +6,15 @@
  * bench/anim-perf.json and prints a table. A benchmark, not a test: it is not part of `npm test`.
  *
  *   npm run build && node scripts/perf-anim.mjs [--dist dist] [--port 4391] [--seconds 4] [--rate 4] [--routes hemisphere,texture]
+ *     [--settle 20] [--frames] [--detail]
  *
- * Each route opens with `play=1` (the shared timeline's URL parameter) and loop switched on, waits
- * for the timeline to be playing, records `--seconds` of trace, and splits the main thread's script
+ * --frames adds each frame's script time to the results file; --detail prints, for every frame
+ * over 8 ms and for the last frame of each recording, its top-level script events (what ran, where,
+ * for how long), e.g. to tell a frame's own work from a timer, an idle callback or a worker message.
+ *
+ * Each route opens paused; once its start-up work is done (1.5 s without a long task, at most
+ * `--settle` s) it switches loop on, presses Play, throttles the CPU, waits 1 s, records
+ * `--seconds` of trace, and splits the main thread's script
  * events (function calls, timers, animation-frame callbacks, event dispatch, microtasks, parsing,
  * GC is excluded) into frames at each animation-frame callback.
  */
@@ -28,13 +34,15 @@ const port = Number(opt('--port', '4391'));
 const seconds = Number(opt('--seconds', '4'));
 const rate = Number(opt('--rate', '4'));
 const ROUTES = {
-  hemisphere: '#/hemisphere?play=1',
-  'monte-carlo': '#/monte-carlo?play=1',
-  texture: '#/texture?play=1',
-  'ray-sphere': '#/ray-sphere?play=1',
-  'area-light': '#/area-light?play=1',
+  hemisphere: '#/hemisphere',
+  'monte-carlo': '#/monte-carlo',
+  texture: '#/texture',
+  'ray-sphere': '#/ray-sphere',
+  'area-light': '#/area-light',
 };
 const only = opt('--routes', '');
+const detail = args.includes('--detail');
+const settleMax = Number(opt('--settle', '20'));
 const routes = Object.entries(ROUTES).filter(([id]) => !only || only.split(',').includes(id));
 
 const exe = findChromium();
@@ -97,6 +105,18 @@ function analyse(events) {
     }
     perFrame.push(sum / 1000);
     perFrameCpu.push(cpu / 1000);
+    if (detail && (sum / 1000 > 8 || i + 2 >= frames.length)) {
+      const what = script
+        .slice(j, k)
+        .filter((e) => e.dur > 1000)
+        .map((e) => {
+          const d = e.args?.data ?? {};
+          const where = d.functionName || d.url?.split('/').pop() || d.type || d.timerId || '';
+          return `${e.name}${where ? `(${where}${d.lineNumber ? `:${d.lineNumber}` : ''})` : ''} ${(e.dur / 1000).toFixed(1)}`;
+        });
+      const all = script.slice(j, k).map((e) => `${e.name}@${((e.ts - frames[i]) / 1000).toFixed(1)}+${(e.dur / 1000).toFixed(1)}`);
+      console.log(`  frame ${i}/${frames.length - 1}: ${(sum / 1000).toFixed(1)} ms: ${what.join(', ')}${i + 2 >= frames.length ? ` | all: ${all.join(' ')}` : ''}`);
+    }
   }
   const intervals = [];
   for (let i = 0; i + 1 < frames.length; i++) intervals.push((frames[i + 1] - frames[i]) / 1000);
@@ -139,6 +159,33 @@ try {
       continue;
     }
     await tl.scrollIntoViewIfNeeded();
+    // The page's own start-up work (lazy chunks, formulas typeset in idle time below the fold)
+    // is not the animation's: the page opens paused, unthrottled, and plays only once 1.5 s
+    // passed without a long task (or after --settle s; recorded as `settle`).
+    const settle = await page.evaluate(
+      (maxMs) =>
+        new Promise((resolve) => {
+          const t0 = performance.now();
+          let last = t0;
+          let n = 0;
+          const po = new PerformanceObserver((list) => {
+            for (const e of list.getEntries()) {
+              last = Math.max(last, e.startTime + e.duration);
+              n++;
+            }
+          });
+          po.observe({ type: 'longtask', buffered: false });
+          const check = () => {
+            const now = performance.now();
+            if (now - last >= 1500 || now - t0 >= maxMs) {
+              po.disconnect();
+              resolve({ ms: Math.round(now - t0), longTasks: n, quiet: now - last >= 1500 });
+            } else setTimeout(check, 250);
+          };
+          setTimeout(check, 250);
+        }),
+      settleMax * 1000,
+    );
     // loop, so the animation keeps playing for the whole recording
     const loop = tl.getByRole('checkbox', { name: /loop/i });
     if (!(await loop.isChecked())) await loop.check();
@@ -150,7 +197,7 @@ try {
     await page.waitForTimeout(seconds * 1000);
     const events = await readTrace(cdp);
     await cdp.send('Emulation.setCPUThrottlingRate', { rate: 1 });
-    const r = { route: id, ...analyse(events), errors: errors.length ? errors : undefined };
+    const r = { route: id, settle, ...analyse(events), errors: errors.length ? errors : undefined };
     results.push(r);
     await context.close();
   }

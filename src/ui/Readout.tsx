@@ -28,9 +28,42 @@ export function formatNumber(x: number, digits = 6): string {
   return Number.isFinite(x) ? formatSignificant(x, digits, 'times') : '—';
 }
 
+/** The visible text of a readout's value (as {@link Readout} shows it). */
+export function readoutText(value: number | string | null | undefined, digits = 6): string {
+  return typeof value === 'number' ? formatNumber(value, digits) : value === null || value === undefined ? '—' : value;
+}
+
+/**
+ * Writes a readout's value into the `<output>` of a {@link LiveReadout} directly (no React render):
+ * for figures that follow an animation frame by frame. Writes only what changed.
+ */
+export function writeReadout(el: HTMLElement | null, value: number | string | null | undefined, digits = 6): void {
+  if (!el) return;
+  const dv = readoutValue(value);
+  if (el.getAttribute('data-value') === dv && el.firstChild) return;
+  el.setAttribute('data-value', dv);
+  el.title = dv === 'none' ? 'not applicable' : dv;
+  el.textContent = readoutText(value, digits);
+}
+
+/**
+ * A readout whose value React does not render: the owner writes it with {@link writeReadout}
+ * (from an animation frame subscription, and after each of its renders), so a playing animation
+ * updates the number without re-rendering. Same markup and test hooks as {@link Readout}.
+ */
+export function LiveReadout({ id, label, note, outRef }: Omit<ReadoutProps, 'value' | 'digits' | 'unit'> & { outRef: React.RefObject<HTMLOutputElement | null> }) {
+  return (
+    <div className="readout">
+      <span className="readout-label">{label}</span>
+      <output ref={outRef} className="readout-value" data-testid={id} />
+      {note ? <span className="readout-note">{note}</span> : null}
+    </div>
+  );
+}
+
 export function Readout({ id, label, value, digits = 6, unit, note }: ReadoutProps) {
   const dv = readoutValue(value);
-  const text = typeof value === 'number' ? formatNumber(value, digits) : value === null || value === undefined ? '—' : value;
+  const text = readoutText(value, digits);
   return (
     <div className="readout">
       <span className="readout-label">{label}</span>

@@ -4,7 +4,7 @@
  * (and, in classroom mode, anywhere on the page through the shortcut registry).
  */
 import { useId, useRef, type KeyboardEvent, type ReactNode } from 'react';
-import { TIMELINE_SPEEDS, useTimelineFrame, type Timeline } from './timeline';
+import { TEXT_HZ, TIMELINE_SPEEDS, useTimelineFrame, type Timeline } from './timeline';
 
 export interface TimelineTransportProps {
   timeline: Timeline;
@@ -23,14 +23,29 @@ function speedText(s: number): string {
 
 export function TimelineTransport({ timeline: tl, label, format, children, testId = 'timeline' }: TimelineTransportProps) {
   const id = useId();
-  // the scrubber's thumb follows every frame (a direct write; React re-renders the transport, its
-  // position text and aria-valuetext only as often as the timeline's renderHz lets it)
+  // The scrubber's thumb follows every frame; data-t, the position text and aria-valuetext at most
+  // TEXT_HZ times a second while playing (exact when paused): direct writes, so a timeline
+  // with a low renderHz (or none) needs no React render of the transport while it plays.
   const scrub = useRef<HTMLInputElement>(null);
-  useTimelineFrame(tl, (t) => {
+  const root = useRef<HTMLDivElement>(null);
+  const pos = useRef<HTMLOutputElement>(null);
+  const lastText = useRef(-Infinity);
+  const textOf = (t: number) => (format ? format(t) : tl.integer ? `${t} of ${tl.max}` : `${Math.round((t / (tl.max || 1)) * 100)} %`);
+  useTimelineFrame(tl, (t, playing) => {
     const el = scrub.current;
     if (el && Number(el.value) !== t) el.value = String(t);
+    const now = performance.now();
+    if (playing && now - lastText.current < 1000 / TEXT_HZ - 1) return;
+    lastText.current = now;
+    const st = String(t);
+    if (root.current && root.current.getAttribute('data-t') !== st) root.current.setAttribute('data-t', st);
+    const text = textOf(t);
+    if (el && el.getAttribute('aria-valuetext') !== text) el.setAttribute('aria-valuetext', text);
+    // the output's text node is React's: change its value in place (React re-renders it on pause)
+    const node = pos.current?.firstChild;
+    if (node && node.nodeType === 3 && node.nodeValue !== text) node.nodeValue = text;
   });
-  const text = format ? format(tl.t) : tl.integer ? `${tl.t} of ${tl.max}` : `${Math.round((tl.t / (tl.max || 1)) * 100)} %`;
+  const text = textOf(tl.t);
   const onKeyDown = (e: KeyboardEvent<HTMLDivElement>) => {
     if (e.ctrlKey || e.metaKey || e.altKey) return;
     const target = e.target as HTMLElement;
@@ -51,7 +66,7 @@ export function TimelineTransport({ timeline: tl, label, format, children, testI
     if (e.key === ' ' || e.code === 'Space') e.preventDefault();
   };
   return (
-    <div className="timeline" role="group" aria-label={`${label}: animation`} data-testid={testId} data-t={String(tl.t)} data-playing={tl.playing ? '1' : '0'} onKeyDown={onKeyDown} onKeyUp={onKeyUp}>
+    <div ref={root} className="timeline" role="group" aria-label={`${label}: animation`} data-testid={testId} data-t={String(tl.t)} data-playing={tl.playing ? '1' : '0'} onKeyDown={onKeyDown} onKeyUp={onKeyUp}>
       <div className="timeline-buttons">
         <button type="button" onClick={tl.toggle} aria-pressed={tl.playing} data-testid={`${testId}-play`} title="Play / pause (Space)">
           {tl.playing ? '❚❚ Pause' : '▶ Play'}
@@ -93,7 +108,7 @@ export function TimelineTransport({ timeline: tl, label, format, children, testI
           data-testid={`${testId}-scrub`}
           onChange={(e) => tl.seek(Number(e.target.value))}
         />
-        <output htmlFor={`${id}-scrub`} className="timeline-pos" data-testid={`${testId}-pos`}>
+        <output ref={pos} htmlFor={`${id}-scrub`} className="timeline-pos" data-testid={`${testId}-pos`}>
           {text}
         </output>
       </div>

@@ -29,6 +29,13 @@ import { useShortcuts } from './shortcuts';
  */
 const RENDER_MIN_FRAMES = 20;
 
+/**
+ * How often text that follows a playing timeline by direct writes (the transport's position text,
+ * a scene's readouts) changes, at most: numbers that change every frame cannot be read, and
+ * readouts are live regions. Exact whenever the timeline is paused.
+ */
+export const TEXT_HZ = 4;
+
 /** The position a timeline shows: integer timelines show whole steps (floored, allowing for rounding). */
 function positionShown(exact: number, integer: boolean): number {
   return integer ? Math.floor(exact + 1e-9) : exact;
@@ -99,7 +106,8 @@ export interface TimelineOptions {
   shortcuts?: boolean;
   /**
    * While playing, update React state (`t`) at most this many times a second (subscribers still get
-   * every frame); exact on pause / step / reset / seek. Default: every frame.
+   * every frame); exact on pause / step / reset / seek. 0: not at all while playing (everything
+   * that moves is drawn by frame subscribers). Default: every frame.
    */
   renderHz?: number;
 }
@@ -144,6 +152,28 @@ export interface Timeline {
 export function useTimelinePosition(tl: Pick<Timeline, 'subscribe' | 'now'>): number {
   const [t, setT] = useState(tl.now);
   useTimelineFrame(tl, setT);
+  return t;
+}
+
+/**
+ * The position at a coarse rate: re-renders only the calling component, at most `hz` times a
+ * second (and at most every RENDER_MIN_FRAMES frames) while playing, and on every change while
+ * paused (exact on pause, step, seek, reset). For text that follows an animation whose owner does
+ * not re-render while playing (`renderHz: 0`).
+ */
+export function useCoarsePosition(tl: Pick<Timeline, 'subscribe' | 'now'>, hz: number): number {
+  const [t, setT] = useState(tl.now);
+  const last = useRef({ at: -Infinity, frames: Infinity });
+  useTimelineFrame(tl, (x, playing) => {
+    const l = last.current;
+    l.frames++;
+    const now = typeof performance === 'undefined' ? Date.now() : performance.now();
+    if (!playing || (now - l.at >= 1000 / hz - 1 && l.frames >= RENDER_MIN_FRAMES)) {
+      l.at = now;
+      l.frames = 0;
+      setT(x);
+    }
+  });
   return t;
 }
 
@@ -330,7 +360,7 @@ export function useTimeline(opts: TimelineOptions): Timeline {
       sinceRender++;
       // coarse React renders: at most renderHz a second, and (on a slow machine, where frames are
       // far apart) at most every RENDER_MIN_FRAMES frames, so most frames stay free of React
-      if (hz === undefined || (now - rendered >= 1000 / hz - 1 && sinceRender >= RENDER_MIN_FRAMES)) {
+      if (hz === undefined || (hz > 0 && now - rendered >= 1000 / hz - 1 && sinceRender >= RENDER_MIN_FRAMES)) {
         rendered = now;
         sinceRender = 0;
         setExact(t); // the layout effect tells the subscribers after React committed

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import { formatNumber, readoutValue } from '../../src/ui/Readout';
+import { formatNumber, readoutText, readoutValue, writeReadout } from '../../src/ui/Readout';
 
 describe('readoutValue (the contract’s data-value)', () => {
   it('is String(x) for finite numbers and "none" otherwise', () => {
@@ -38,5 +38,44 @@ describe('formatNumber (visible text)', () => {
   it('never shows a non-finite number', () => {
     expect(formatNumber(NaN)).toBe('—');
     expect(formatNumber(-Infinity)).toBe('—');
+  });
+});
+
+describe('writeReadout (a LiveReadout written without React)', () => {
+  /** A minimal element: attributes, title, text. */
+  function fakeOutput() {
+    const attrs = new Map<string, string>();
+    let writes = 0;
+    const el = {
+      title: '',
+      textContent: '' as string | null,
+      get firstChild() {
+        return el.textContent ? {} : null;
+      },
+      getAttribute: (k: string) => attrs.get(k) ?? null,
+      setAttribute: (k: string, v: string) => {
+        writes++;
+        attrs.set(k, v);
+      },
+      writes: () => writes,
+    };
+    return el;
+  }
+  it('writes what Readout renders: data-value, title and the rounded text; nothing when unchanged', () => {
+    const el = fakeOutput();
+    writeReadout(el as unknown as HTMLElement, 56 / 3, 6);
+    expect(el.getAttribute('data-value')).toBe(String(56 / 3));
+    expect(el.title).toBe(String(56 / 3));
+    expect(el.textContent).toBe('18.6667');
+    const n = el.writes();
+    writeReadout(el as unknown as HTMLElement, 56 / 3, 6);
+    expect(el.writes()).toBe(n);
+    writeReadout(el as unknown as HTMLElement, null);
+    expect(el.getAttribute('data-value')).toBe('none');
+    expect(el.title).toBe('not applicable');
+    expect(el.textContent).toBe('—');
+    writeReadout(el as unknown as HTMLElement, 'two-hits');
+    expect(el.textContent).toBe('two-hits');
+    expect(readoutText(1.5e-12, 3)).toBe('1.5×10⁻¹²');
   });
 });

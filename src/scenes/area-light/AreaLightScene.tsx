@@ -6,7 +6,7 @@
  */
 import { useCallback, useEffect, useMemo, useRef, useState, type ComponentProps } from 'react';
 import type { SceneProps } from '../../app/scene';
-import { Derivation, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Plot, Readout, SceneLayout, Select, Slider, TimelineTransport, Toggle, useSeenOnce, useTimeline, useTimelinePosition, type Timeline } from '../../ui';
+import { Derivation, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Plot, Readout, SceneLayout, Select, Slider, TEXT_HZ, TimelineTransport, Toggle, useSeenOnce, useTimeline, useTimelineFrame, type Timeline } from '../../ui';
 import type { PlotTrace } from '../../ui';
 import { useWorkerJob } from '../../workers';
 import type { LightStrategy } from '../../core/lights';
@@ -103,7 +103,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
     duration: Math.max(4, animMax / 64),
     visibleRef: stageRef,
     // while playing, the scene (readouts, floor pass) re-renders 4 times a second; the 3D samples
-    // and the running-estimate plot follow every frame in their own components (LiveScene3D, LiveRunning)
+    // and the running-estimate plot follow every frame by direct writes (LiveScene3D, LiveRunning)
     renderHz: 4,
   });
   const af = animationFrame(run, tl.t);
@@ -585,12 +585,26 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
   return <SceneLayout controls={controls} main={main} />;
 }
 
-/** The 3D view with the samples arrived at the timeline's live position (re-renders alone, every frame). */
-function LiveScene3D({ tl, run, ...rest }: { tl: Timeline; run: ComponentProps<typeof RunningEstimate>['run'] } & Omit<ComponentProps<typeof Scene3D>, 'count'>) {
-  return <Scene3D {...rest} count={animationFrame(run, useTimelinePosition(tl)).k} />;
+/** The 3D view with the samples arrived at the timeline's live position (drawn per frame without a React render). */
+function LiveScene3D({ tl, run, ...rest }: { tl: Timeline; run: ComponentProps<typeof RunningEstimate>['run'] } & Omit<ComponentProps<typeof Scene3D>, 'count' | 'countRef'>) {
+  const countRef = useRef<((k: number) => void) | null>(null);
+  const latest = useRef(run);
+  latest.current = run;
+  useTimelineFrame(tl, (t) => countRef.current?.(animationFrame(latest.current, t).k));
+  return <Scene3D {...rest} count={animationFrame(run, tl.now()).k} countRef={countRef} />;
 }
 
-/** The running-estimate plot at the timeline's live position (re-renders alone, every frame). */
+/** The running-estimate plot at the timeline's live position (drawn per frame without a React render; its label ≤ TEXT_HZ). */
 function LiveRunning({ tl, run, reference }: { tl: Timeline; run: ComponentProps<typeof RunningEstimate>['run']; reference: number }) {
-  return <RunningEstimate run={run} reference={reference} k={animationFrame(run, useTimelinePosition(tl)).k} />;
+  const drawRef = useRef<((k: number, text: boolean) => void) | null>(null);
+  const latest = useRef(run);
+  latest.current = run;
+  const lastText = useRef(-Infinity);
+  useTimelineFrame(tl, (t, playing) => {
+    const now = performance.now();
+    const text = !playing || now - lastText.current >= 1000 / TEXT_HZ - 1;
+    if (text) lastText.current = now;
+    drawRef.current?.(animationFrame(latest.current, t).k, text);
+  });
+  return <RunningEstimate run={run} reference={reference} k={animationFrame(run, tl.now()).k} drawRef={drawRef} />;
 }

@@ -433,6 +433,11 @@ export function racePoints(max: number): number[] {
   return out;
 }
 
+/** One lane's state after t samples (exported for the per-frame drawing of the race). */
+export function raceLaneAt(L: RaceLane, t: number, exact: number): LaneState {
+  return laneAt(L, t, exact);
+}
+
 function laneAt(L: RaceLane, t: number, exact: number): LaneState {
   if (t < 1) return { n: 0, x: NaN, term: NaN, estimate: NaN, stderr: NaN, absError: NaN };
   const k = t - 1;
@@ -478,12 +483,17 @@ export function raceAt(track: RaceTrack, t: number, points: readonly number[] = 
     push(n);
   }
   if (t >= 1) push(t);
+  return { ...raceHeadAt(track, t, recent), curve };
+}
+
+/** The part of {@link raceAt} that is not the growing curves: both lanes at t and the latest samples, O(recent). */
+export function raceHeadAt(track: RaceTrack, t: number, recent = 40): Omit<RaceFrame, 'curve'> {
+  t = Math.max(0, Math.min(track.max, Math.floor(t)));
   const from = Math.max(0, t - recent);
   return {
     t,
     uniform: laneAt(track.uniform, t, track.exact),
     importance: laneAt(track.importance, t, track.exact),
-    curve,
     recentU: Array.from(track.uniform.x.subarray(from, t)),
     recentI: Array.from(track.importance.x.subarray(from, t)),
   };

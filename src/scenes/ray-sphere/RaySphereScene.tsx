@@ -4,9 +4,9 @@
  * live answer, and then, beyond the exam, the 3D view and what floating point does to the
  * textbook form (Ray Tracing Gems ch. 7).
  */
-import { memo, useCallback, useDeferredValue, useEffect, useMemo, useRef, useState } from 'react';
+import { memo, useCallback, useDeferredValue, useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
-import { Derivation as DerivationBlock, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Readout, Select, TimelineTransport, useTimeline, useTimelinePosition, type Timeline } from '../../ui';
+import { Derivation as DerivationBlock, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Readout, Select, TimelineTransport, useCoarsePosition, useTimeline, useTimelineFrame, type Timeline } from '../../ui';
 import type { RaySphereHit } from '../../core/geometry';
 import { CASE_PRESETS, PRECISION_PRESETS, schema, type Preset, type RaySphereParams } from './params';
 import {
@@ -26,8 +26,8 @@ import {
   type SweepSeries,
   type V3,
 } from './model';
-import { CrossSection } from './view/CrossSection';
-import { View3D } from './view/View3D';
+import { CrossSection, type CrossRay } from './view/CrossSection';
+import { View3D, type View3DProps } from './view/View3D';
 import { DistantImages, ErrorVsDistance, PrecisionTable } from './view/Precision';
 import { DeltaSweepPlot, GSweepPlot } from './view/SweepPlots';
 import './ray-sphere.css';
@@ -70,11 +70,10 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
     stepSize: 1 / 120,
     loop: true,
     visibleRef: stageRef,
-    renderHz: RENDER_HZ,
+    renderHz: 0,
   });
   const t = tl.t;
   const modelAt = useMemo(() => lastValue((tt: number) => computeModel(paramsAt(params, sweep, tt))), [params, sweep]);
-  const at = useMemo(() => sweepAt(sweep, t), [sweep, t]);
   const model = modelAt(t);
 
   // Edits (drags, typing, presets) describe the ray you see (at the live position): they become the sweep's centre (t = 0.5).
@@ -115,12 +114,9 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
   const held = useHeldWhile(model, tl.playing);
   const slow = useDeferredValue(useThrottled(held, 200));
 
-  const res = model.chosen;
-  const { o, d, c, r } = model.input;
   // problems are those of the typed inputs (the sweep only moves already-checked values)
   const problems = base.problems;
   const method = params.method === 'naive' ? 'naive' : 'stable';
-  const naiveRow = model.rows.find((x) => x.method === 'naive');
   const hereErrors = useMemo(
     () => ({ naive: slow.rows.find((x) => x.method === 'naive')?.errDisc ?? null, stable: slow.rows.find((x) => x.method === 'stable')?.errDisc ?? null }),
     [slow],
@@ -211,9 +207,6 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
     return `t = ${tt.toFixed(3)}, ${sweepMode === 'offset' ? 'h / r' : 'ψ / α'} = ${Number.isFinite(x) ? x.toFixed(3) : String(x)}`;
   };
 
-  const discFromAbc = res ? res.b * res.b - 4 * res.a * res.c : null;
-  const robustDiffers = method === 'stable' && res !== null && naiveRow !== undefined && naiveRow.res.discriminant !== res.discriminant;
-
   const main = (
     <>
       {problems.length ? (
@@ -250,7 +243,7 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
           <div className="rs-stage" ref={stageRef}>
             <div className="rs-stage-fig">
               <LiveCrossSection tl={tl} modelAt={modelAt} onChange={setSoon} fitExtra={ends} />
-              <CaseBanner res={res} />
+              <LiveCaseBanner tl={tl} modelAt={modelAt} />
               <TimelineTransport timeline={tl} label="Ray sweep" format={fmtPos} testId="timeline">
                 {sweepControls}
               </TimelineTransport>
@@ -281,41 +274,7 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
             <DerivationSteps model={slow} />
           </DerivationBlock>
           <LiveAnswer testId="live-answer">
-            <div className="readouts">
-              <Readout id="a" label="a = d·d" value={res?.a ?? null} digits={10} />
-              <Readout id="b" label="b = 2 d·(o − C)" value={res?.b ?? null} digits={10} />
-              <Readout id="c" label="c = |o − C|² − r²" value={res?.c ?? null} digits={10} />
-              <Readout
-                id="discriminant"
-                label={method === 'naive' ? 'Δ = b² − 4ac (textbook: from a, b, c as shown)' : 'Δ, robust form 4a(r² − |ℓ|²)'}
-                value={res?.discriminant ?? null}
-                digits={10}
-              />
-              {method === 'stable' ? <Readout id="disc-abc" label="b² − 4ac from the a, b, c shown (textbook)" value={discFromAbc} digits={10} /> : null}
-              <Readout id="t0" label="t₀" value={res?.t0 ?? null} digits={10} />
-              <Readout id="t1" label="t₁" value={res?.t1 ?? null} digits={10} />
-              <Readout id="t-hit" label="t-hit (nearest t ≥ 0)" value={res?.tHit ?? null} digits={10} />
-              <Readout id="case" label="case" value={res?.case ?? null} />
-              <Readout id="sweep-x" label={sweepMode === 'offset' ? 'h / r (sweep)' : 'ψ / α (sweep)'} value={Number.isFinite(at.x) ? at.x : null} digits={6} />
-            </div>
-            <p className="rs-small" data-testid="disc-method-note">
-              {method === 'naive'
-                ? 'All of a, b, c, Δ and the roots are computed the textbook way: Δ is exactly b² − 4ac of the numbers shown (in double arithmetic).'
-                : robustDiffers && discFromAbc !== null && res
-                  ? `a, b, c are the textbook coefficients; Δ and the roots come from the robust form 4a(r² − |ℓ|²), which computes the same quantity without cancellation. Here it differs from b² − 4ac of the a, b, c shown (next readout) by ${fmt(Math.abs(res.discriminant - discFromAbc))}${res.discriminant !== 0 ? ` (relative ${fmt(Math.abs(res.discriminant - discFromAbc) / Math.abs(res.discriminant))})` : ''}: rounding in the textbook form.`
-                  : 'a, b, c are the textbook coefficients; Δ and the roots come from the robust form 4a(r² − |ℓ|²). Here it equals b² − 4ac of the a, b, c shown, to the last bit.'}
-            </p>
-            {res && model.reference && res.case !== model.reference.case ? (
-              <Notice kind="warn" testId="method-wrong">
-                The {method === 'naive' ? 'textbook' : 'robust'} form says <strong>{res.case}</strong>, but the exact answer for these inputs (double-double reference) is{' '}
-                <strong>{model.reference.case}</strong>: rounding has changed the case. See the precision table under “Explore further”.
-              </Notice>
-            ) : null}
-            {res?.nearTangent && res.case !== 'tangent' ? (
-              <p className="rs-small rs-near">
-                |Δ| is within this method’s rounding error of 0: the ray is tangent to within double precision, and whether it hits is decided by the last bits.
-              </p>
-            ) : null}
+            <LiveAnswerBody tl={tl} modelAt={modelAt} sweep={sweep} sweepMode={sweepMode} method={method} />
           </LiveAnswer>
           <KeyNote testId="q5-keynote">
             the key prints no derivation; it refers to <em>Ray Tracing in One Weekend</em> and awards 2 marks for Δ ≥ 0 and 2 for t ≥ 0. That book (and this page) call the
@@ -325,7 +284,7 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
       </ExamQuestion>
       <ExploreFurther intro="Beyond the exam: the same ray in 3D, and what floating point does to the textbook formula when the sphere is far away or the ray grazes it.">
         <Panel title="3D view">
-          <View3D o={o} d={d} c={c} r={r} res={res} distanceRatio={model.distanceRatio} height={mode.present ? 420 : 320} dark={mode.theme === 'dark'} fitExtra={ends} />
+          <LiveView3D tl={tl} modelAt={modelAt} height={mode.present ? 420 : 320} dark={mode.theme === 'dark'} fitExtra={ends} />
         </Panel>
         <Panel title="Precision: textbook vs robust, against a double-double reference">
           <PrecisionTableMemo model={slow} />
@@ -348,6 +307,71 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
   );
 
   return <div className="rs-page">{main}</div>;
+}
+
+/**
+ * Q5's live answer at the coarse position (the scene does not re-render while the sweep plays:
+ * this part re-renders at most RENDER_HZ times a second then, and exactly when paused).
+ */
+function LiveAnswerBody({ tl, modelAt, sweep, sweepMode, method }: { tl: Timeline; modelAt: (t: number) => RaySphereModel; sweep: Sweep; sweepMode: SweepMode; method: 'naive' | 'stable' }) {
+  const t = useCoarsePosition(tl, RENDER_HZ);
+  const model = modelAt(t);
+  const at = sweepAt(sweep, t);
+  const res = model.chosen;
+  const naiveRow = model.rows.find((x) => x.method === 'naive');
+  const discFromAbc = res ? res.b * res.b - 4 * res.a * res.c : null;
+  const robustDiffers = method === 'stable' && res !== null && naiveRow !== undefined && naiveRow.res.discriminant !== res.discriminant;
+  return (
+    <>
+      <div className="readouts">
+        <Readout id="a" label="a = d·d" value={res?.a ?? null} digits={10} />
+        <Readout id="b" label="b = 2 d·(o − C)" value={res?.b ?? null} digits={10} />
+        <Readout id="c" label="c = |o − C|² − r²" value={res?.c ?? null} digits={10} />
+        <Readout
+          id="discriminant"
+          label={method === 'naive' ? 'Δ = b² − 4ac (textbook: from a, b, c as shown)' : 'Δ, robust form 4a(r² − |ℓ|²)'}
+          value={res?.discriminant ?? null}
+          digits={10}
+        />
+        {method === 'stable' ? <Readout id="disc-abc" label="b² − 4ac from the a, b, c shown (textbook)" value={discFromAbc} digits={10} /> : null}
+        <Readout id="t0" label="t₀" value={res?.t0 ?? null} digits={10} />
+        <Readout id="t1" label="t₁" value={res?.t1 ?? null} digits={10} />
+        <Readout id="t-hit" label="t-hit (nearest t ≥ 0)" value={res?.tHit ?? null} digits={10} />
+        <Readout id="case" label="case" value={res?.case ?? null} />
+        <Readout id="sweep-x" label={sweepMode === 'offset' ? 'h / r (sweep)' : 'ψ / α (sweep)'} value={Number.isFinite(at.x) ? at.x : null} digits={6} />
+      </div>
+      <p className="rs-small" data-testid="disc-method-note">
+        {method === 'naive'
+          ? 'All of a, b, c, Δ and the roots are computed the textbook way: Δ is exactly b² − 4ac of the numbers shown (in double arithmetic).'
+          : robustDiffers && discFromAbc !== null && res
+            ? `a, b, c are the textbook coefficients; Δ and the roots come from the robust form 4a(r² − |ℓ|²), which computes the same quantity without cancellation. Here it differs from b² − 4ac of the a, b, c shown (next readout) by ${fmt(Math.abs(res.discriminant - discFromAbc))}${res.discriminant !== 0 ? ` (relative ${fmt(Math.abs(res.discriminant - discFromAbc) / Math.abs(res.discriminant))})` : ''}: rounding in the textbook form.`
+            : 'a, b, c are the textbook coefficients; Δ and the roots come from the robust form 4a(r² − |ℓ|²). Here it equals b² − 4ac of the a, b, c shown, to the last bit.'}
+      </p>
+      {res && model.reference && res.case !== model.reference.case ? (
+        <Notice kind="warn" testId="method-wrong">
+          The {method === 'naive' ? 'textbook' : 'robust'} form says <strong>{res.case}</strong>, but the exact answer for these inputs (double-double reference) is{' '}
+          <strong>{model.reference.case}</strong>: rounding has changed the case. See the precision table under “Explore further”.
+        </Notice>
+      ) : null}
+      {res?.nearTangent && res.case !== 'tangent' ? (
+        <p className="rs-small rs-near">
+          |Δ| is within this method’s rounding error of 0: the ray is tangent to within double precision, and whether it hits is decided by the last bits.
+        </p>
+      ) : null}
+    </>
+  );
+}
+
+/** The case banner at the coarse position (see LiveAnswerBody). */
+function LiveCaseBanner({ tl, modelAt }: { tl: Timeline; modelAt: (t: number) => RaySphereModel }) {
+  return <CaseBanner res={modelAt(useCoarsePosition(tl, RENDER_HZ)).chosen} />;
+}
+
+/** The 3D view at the coarse position (below the fold; see LiveAnswerBody). */
+function LiveView3D({ tl, modelAt, ...rest }: { tl: Timeline; modelAt: (t: number) => RaySphereModel } & Pick<View3DProps, 'height' | 'dark' | 'fitExtra'>) {
+  const m = modelAt(useCoarsePosition(tl, RENDER_HZ));
+  const { o, d, c, r } = m.input;
+  return <View3D o={o} d={d} c={c} r={r} res={m.chosen} distanceRatio={m.distanceRatio} {...rest} />;
 }
 
 /** `value`, except while `hold` is true: then the value it had when holding began. */
@@ -407,7 +431,11 @@ function VecField({ label, name, value, onChange }: { label: string; name: strin
   );
 }
 
-/** How often the scene's text (readouts, case, notes) re-renders while the sweep plays. */
+/**
+ * How often the scene's text (readouts, case, notes, the 3D view) re-renders while the sweep plays:
+ * those parts subscribe to the timeline themselves (useCoarsePosition); the scene itself does not
+ * re-render while playing (renderHz 0), and the figures move every frame by direct writes.
+ */
 const RENDER_HZ = 4;
 
 /** `f`, remembering its last argument and result (the figures and the scene often ask for the same t). */
@@ -423,7 +451,10 @@ function lastValue<T>(f: (t: number) => T): (t: number) => T {
   };
 }
 
-/** The cross-section at the live position (re-renders every frame while playing, alone). */
+/**
+ * The cross-section at the live position: React renders it when the inputs change; every frame
+ * (and after each render) the ray is drawn directly (CrossSection's drawRef).
+ */
 function LiveCrossSection({
   tl,
   modelAt,
@@ -435,12 +466,24 @@ function LiveCrossSection({
   onChange: (patch: Partial<RaySphereParams>) => void;
   fitExtra: readonly V3[];
 }) {
-  const m = modelAt(useTimelinePosition(tl));
-  const { o, d, c, r } = m.input;
-  return <CrossSection o={o} d={d} c={c} r={r} res={m.chosen} distanceRatio={m.distanceRatio} onChange={onChange} fitExtra={fitExtra} />;
+  const drawRef = useRef<((ray: CrossRay) => void) | null>(null);
+  const rayAt = (t: number): CrossRay => {
+    const m = modelAt(t);
+    return { ...m.input, res: m.chosen, distanceRatio: m.distanceRatio };
+  };
+  const draw = (t: number) => drawRef.current?.(rayAt(t));
+  const latest = useRef(draw);
+  latest.current = draw;
+  useTimelineFrame(tl, (t) => latest.current(t));
+  useLayoutEffect(() => latest.current(tl.now()));
+  const first = rayAt(tl.now());
+  return <CrossSection {...first} onChange={onChange} fitExtra={fitExtra} drawRef={drawRef} />;
 }
 
-/** g(t) and Δ against the sweep at the live position (re-render every frame while playing, alone). */
+/**
+ * g(t) and Δ against the sweep at the live position: React renders the plots when the sweep or the
+ * sizes change; every frame (and after each render) the moving parts are written directly.
+ */
 function LivePlots({
   tl,
   modelAt,
@@ -458,22 +501,31 @@ function LivePlots({
   xLabel: string;
   method: 'naive' | 'stable';
 }) {
-  const t = useTimelinePosition(tl);
-  const m = modelAt(t);
-  const naiveRow = m.rows.find((x) => x.method === 'naive');
-  const stableRow = m.rows.find((x) => x.method === 'stable');
+  const g = useRef<((res: RaySphereHit | null) => void) | null>(null);
+  const delta = useRef<((x: number, discStable: number | null, discNaive: number | null) => void) | null>(null);
+  const at = (t: number) => {
+    const m = modelAt(t);
+    return {
+      res: m.chosen,
+      x: sweepAt(sweep, t).x,
+      stable: m.rows.find((x) => x.method === 'stable')?.res.discriminant ?? null,
+      naive: m.rows.find((x) => x.method === 'naive')?.res.discriminant ?? null,
+    };
+  };
+  const draw = (t: number) => {
+    const a = at(t);
+    g.current?.(a.res);
+    delta.current?.(a.x, a.stable, a.naive);
+  };
+  const drawRef = useRef(draw);
+  drawRef.current = draw;
+  useTimelineFrame(tl, (t) => drawRef.current(t));
+  useLayoutEffect(() => drawRef.current(tl.now()));
+  const first = at(tl.now());
   return (
     <>
-      <GSweepPlot res={m.chosen} window={series.gWindow} />
-      <DeltaSweepPlot
-        series={series}
-        tangentX={tangentX}
-        x={sweepAt(sweep, t).x}
-        discStable={stableRow?.res.discriminant ?? null}
-        discNaive={naiveRow?.res.discriminant ?? null}
-        xLabel={xLabel}
-        method={method}
-      />
+      <GSweepPlot res={first.res} window={series.gWindow} drawRef={g} />
+      <DeltaSweepPlot series={series} tangentX={tangentX} x={first.x} discStable={first.stable} discNaive={first.naive} xLabel={xLabel} method={method} drawRef={delta} />
     </>
   );
 }

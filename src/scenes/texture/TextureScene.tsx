@@ -16,6 +16,7 @@ import {
   ExploreFurther,
   KeyNote,
   LiveAnswer,
+  LiveReadout,
   Notice,
   NumberField,
   Panel,
@@ -25,6 +26,7 @@ import {
   Select,
   Slider,
   Toggle,
+  writeReadout,
 } from '../../ui';
 import {
   KEY_PRINTED,
@@ -43,9 +45,10 @@ import {
   sphereReadouts,
   sphereModel,
   withCell,
+  type Lookup,
   type QueryPath,
 } from './model';
-import { TimelineDriver, animContext, createTimelineStore, useAnimFrame, useAnimT, useStillT, useWorkedT, type AnimContext } from './anim';
+import { TimelineDriver, animContext, createTimelineStore, useAnimFrame, usePlaying, useStillT, useWorkedT, type AnimContext } from './anim';
 import { GRID_TEXT_MAX, type PathKind, type Preset, type TextureSchema } from './params';
 import { GridView, StencilDetail, fmtShort, type Grab } from './view/GridView';
 import { BilinearWorked, NearestWorked, WideMath, bilinearTex, sphereTex } from './view/WorkedSteps';
@@ -680,20 +683,37 @@ function AnimPathPlot({ ctx, present }: { ctx: AnimContext; present: boolean }) 
   return <PathPlot profile={profile} t={t} near={q.near.value} bil={q.bil.value} present={present} drawRef={draw} />;
 }
 
-/** The query now, its stencil and the addressing notes, beside the grid. */
+/**
+ * The query now, its stencil and the addressing notes, beside the grid. The numbers are written per
+ * frame without React (text at most TEXT_HZ times a second while playing); the addressing notes
+ * render while paused only (exact at the paused position).
+ */
 function AnimSide({ ctx }: { ctx: AnimContext }) {
-  const t = useAnimT(ctx.store);
+  const t = useStillT(ctx.store);
+  const playing = usePlaying(ctx.store);
   const { frame, dq } = ctx.frame(t);
   const q = frame.lookup;
-  const notes = useMemo(() => addressingNotes(frame.u, frame.v, ctx.opts, q), [frame, ctx.opts, q]);
-  const atT = t === 0 ? '' : ` at t = ${fmtShort(t)} on its path`;
+  const notes = useMemo(() => (playing ? [] : addressingNotes(frame.u, frame.v, ctx.opts, q)), [playing, frame, ctx.opts, q]);
+  const nowRef = useRef<HTMLParagraphElement>(null);
+  const stencil = useRef<((q: Lookup, text: boolean) => void) | null>(null);
+  useAnimFrame(ctx.store, (x, text) => {
+    const f = ctx.frame(x);
+    stencil.current?.(f.dq, text);
+    const p = nowRef.current;
+    if (!p || !text) return;
+    const l = f.frame.lookup;
+    const parts = [x === 0 ? '' : ` at t = ${fmtShort(x)} on its path`, fmtShort(f.frame.u), fmtShort(f.frame.v), fmtShort(l.near.value), fmtShort(l.bil.value)];
+    for (let k = 0; k < parts.length; k++) {
+      const el = p.children[k];
+      if (el && el.textContent !== parts[k]) el.textContent = parts[k]!;
+    }
+  });
   return (
     <>
-      <p className="tx-now" data-testid="query-now">
-        Query{atT}: (u, v) = ({fmtShort(frame.u)}, {fmtShort(frame.v)}) → nearest <strong>{fmtShort(q.near.value)}</strong>, bilinear{' '}
-        <strong>{fmtShort(q.bil.value)}</strong>
+      <p className="tx-now" data-testid="query-now" ref={nowRef}>
+        Query<span />: (u, v) = (<span />, <span />) → nearest <strong />, bilinear <strong />
       </p>
-      <StencilDetail q={dq} />
+      <StencilDetail q={dq} drawRef={stencil} />
       <p className="tx-small">
         <span className="tx-key nearest" /> nearest node · <span className="tx-key cell" /> the bilinear cell: each of its four nodes is weighted by the area of the
         sub-rectangle opposite to it (same colour).
@@ -711,30 +731,43 @@ function AnimSide({ ctx }: { ctx: AnimContext }) {
   );
 }
 
-/** Q3(a)'s live answer at position t. */
+/** Q3(a)'s live answer at position t (written per frame; the key note only while paused). */
 function Readouts3a({ ctx }: { ctx: AnimContext }) {
-  const t = useAnimT(ctx.store);
+  const t = useStillT(ctx.store);
+  const playing = usePlaying(ctx.store);
   const { frame } = ctx.frame(t);
-  const q = frame.lookup;
-  const ro = queryReadouts(q);
-  const examQ = isExamQuery(ctx.src, ctx.opts, frame.u, frame.v);
+  const ro = queryReadouts(frame.lookup);
+  const examQ = !playing && isExamQuery(ctx.src, ctx.opts, frame.u, frame.v);
+  const near = useRef<HTMLOutputElement>(null);
+  const uv = useRef<HTMLOutputElement>(null);
+  useAnimFrame(ctx.store, (x, text) => {
+    if (!text) return;
+    const q = ctx.frame(x).frame.lookup;
+    writeReadout(near.current, queryReadouts(q).nearest);
+    writeReadout(uv.current, `(${fmtShort(q.bil.u)}, ${fmtShort(q.bil.v)})`);
+  });
   return (
     <div className="readouts">
-      <Readout id="nearest" label="Nearest (Q3a)" value={ro.nearest} note={examQ ? keyNote(ro.nearest, KEY_PRINTED.nearest) : undefined} />
-      <Readout id="query-uv" label="(u, v) as used" value={`(${fmtShort(q.bil.u)}, ${fmtShort(q.bil.v)})`} />
+      <LiveReadout id="nearest" label="Nearest (Q3a)" outRef={near} note={examQ ? keyNote(ro.nearest, KEY_PRINTED.nearest) : undefined} />
+      <LiveReadout id="query-uv" label="(u, v) as used" outRef={uv} />
     </div>
   );
 }
 
-/** Q3(b)'s live answer at position t. */
+/** Q3(b)'s live answer at position t (written per frame; the key note only while paused). */
 function Readouts3b({ ctx }: { ctx: AnimContext }) {
-  const t = useAnimT(ctx.store);
+  const t = useStillT(ctx.store);
+  const playing = usePlaying(ctx.store);
   const { frame } = ctx.frame(t);
   const ro = queryReadouts(frame.lookup);
-  const examQ = isExamQuery(ctx.src, ctx.opts, frame.u, frame.v);
+  const examQ = !playing && isExamQuery(ctx.src, ctx.opts, frame.u, frame.v);
+  const bil = useRef<HTMLOutputElement>(null);
+  useAnimFrame(ctx.store, (x, text) => {
+    if (text) writeReadout(bil.current, queryReadouts(ctx.frame(x).frame.lookup).bilinear);
+  });
   return (
     <div className="readouts">
-      <Readout id="bilinear" label="Bilinear (Q3b)" value={ro.bilinear} note={examQ ? keyNote(ro.bilinear, KEY_PRINTED.bilinear) : undefined} />
+      <LiveReadout id="bilinear" label="Bilinear (Q3b)" outRef={bil} note={examQ ? keyNote(ro.bilinear, KEY_PRINTED.bilinear) : undefined} />
     </div>
   );
 }
@@ -752,8 +785,8 @@ function AnimReconstruction({ ctx, range, creases }: { ctx: AnimContext; range: 
 }
 
 /**
- * The worked steps follow the committed path; while playing they follow at the timeline's step
- * resolution (exact again as soon as it pauses), so a frame stays cheap.
+ * The worked steps follow the committed path; while playing they hold the position where it
+ * started (exact again as soon as it pauses, steps or seeks), so no frame carries a KaTeX typeset.
  */
 function useWorked(ctx: AnimContext) {
   const tWorked = useWorkedT(ctx.store);

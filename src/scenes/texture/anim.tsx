@@ -4,29 +4,35 @@
  * Per animation frame nothing re-renders in React: the moving SVG nodes (the grid's query and
  * stencil, the value-along-path marker, the reconstruction's crosses) are written directly by
  * frame listeners (`useAnimFrame`), while the figures themselves re-render only when the position
- * changes while paused (`useStillT`: pause, step, seek). The text readouts follow the timeline's
- * coarse position (`useAnimT`, RENDER_HZ times a second while playing, exact on pause) and the
- * worked steps (KaTeX) a coarser one still (`useWorkedT`).
+ * changes while paused (`useStillT`: pause, step, seek). The text readouts beside the grid are
+ * written the same way (their text at most TEXT_HZ times a second while playing, so a screen reader
+ * is not flooded; exact on pause), and their notes render only while paused; the
+ * worked steps (KaTeX) hold the position where playing started and catch up on pause (`useWorkedT`):
+ * typesetting them costs several frames' worth of time at once, so none of it happens mid-play.
  */
 import { useLayoutEffect, useRef, useSyncExternalStore, type ReactNode, type RefObject } from 'react';
-import { TimelineTransport, useTimeline, useTimelineFrame, type Timeline } from '../../ui';
+import { TEXT_HZ, TimelineTransport, useTimeline, useTimelineFrame, type Timeline } from '../../ui';
 import { drawnLookup, frameAt, type Frame, type Lookup, type QueryPath } from './model';
 import type { GridSource } from './model';
 import type { LookupOptions, TextureGrid } from '../../core/texture';
 
 /** Seconds for one pass along the path at 1×. */
 export const DURATION = 8;
-/** Step size of the timeline; while playing, the worked steps (KaTeX) follow at this resolution. */
+/** Step size of the timeline. */
 export const STEP = 0.05;
 
-/** How often React re-renders the text readouts while playing (the figures move every frame without React). */
-export const RENDER_HZ = 4;
-/** While playing, the worked steps (KaTeX) follow the position in steps of this size (2 s at 1×); exact when paused. */
-export const WORKED_STEP = 0.25;
-
-/** The worked steps' position: coarse while playing (so KaTeX is redrawn every 2 s at 1×, not per frame), exact when paused. */
-export function workedPosition(t: number, playing: boolean): number {
-  return playing ? Math.floor(t / WORKED_STEP + 1e-9) * WORKED_STEP : t;
+/**
+ * React renders while playing: none (renderHz 0). Everything that moves (the figures, the readouts
+ * beside the grid, the transport's position) is written by frame subscribers; React renders again
+ * on pause, step, seek and reset, at the exact position.
+ */
+export const RENDER_HZ = 0;
+/**
+ * The worked steps' position: while playing, the position where it started (`still`: KaTeX is not
+ * re-typeset mid-play, a typeset costs more than a frame); exact when paused.
+ */
+export function workedPosition(t: number, playing: boolean, still: number): number {
+  return playing ? still : t;
 }
 
 export interface TimelineStore {
@@ -39,10 +45,12 @@ export interface TimelineStore {
   readonly tStill: () => number;
   /** The live position (every frame). */
   readonly tLive: () => number;
+  /** Whether the timeline is playing, as of its latest frame. */
+  readonly livePlaying: () => boolean;
   readonly publish: (tl: Timeline) => void;
   readonly subscribe: (fn: () => void) => () => void;
   /** Per-frame position from the timeline (the driver calls it). */
-  readonly frame: (t: number) => void;
+  readonly frame: (t: number, playing?: boolean) => void;
   readonly subscribeFrame: (fn: (t: number) => void) => () => void;
 }
 
@@ -52,15 +60,17 @@ export function createTimelineStore(t0: number): TimelineStore {
   let playing = false;
   let still = t;
   let live = t;
+  let livePlaying = false;
   const listeners = new Set<() => void>();
   const frameListeners = new Set<(t: number) => void>();
   return {
     timeline: () => tl,
     t: () => t,
     playing: () => playing,
-    tWorked: () => workedPosition(t, playing),
+    tWorked: () => workedPosition(t, playing, still),
     tStill: () => still,
     tLive: () => live,
+    livePlaying: () => livePlaying,
     publish: (next) => {
       tl = next;
       if (next.t === t && next.playing === playing) return;
@@ -73,8 +83,9 @@ export function createTimelineStore(t0: number): TimelineStore {
       listeners.add(fn);
       return () => listeners.delete(fn);
     },
-    frame: (x) => {
+    frame: (x, p) => {
       live = x;
+      if (p !== undefined) livePlaying = p;
       for (const fn of frameListeners) fn(x);
     },
     subscribeFrame: (fn) => {
@@ -130,11 +141,6 @@ export function animContext(store: TimelineStore, grid: TextureGrid, opts: Looku
   };
 }
 
-/** The coarse position (re-renders the caller RENDER_HZ times a second while playing; exact when paused). */
-export function useAnimT(store: TimelineStore): number {
-  return useSyncExternalStore(store.subscribe, store.t);
-}
-
 /** The figures' position: changes only while paused (pause, step, seek, a link); frames draw through useAnimFrame. */
 export function useStillT(store: TimelineStore): number {
   return useSyncExternalStore(store.subscribe, store.tStill);
@@ -143,18 +149,35 @@ export function useStillT(store: TimelineStore): number {
 /**
  * Draw the moving parts at the live position: on every frame, and after each render of the caller
  * (so a parameter change while playing does not show the held position for a frame). `draw` should
- * write the DOM directly.
+ * write the DOM directly. Its second argument says whether text should be written too: always
+ * while paused, at most TEXT_HZ times a second while playing (numbers that change every frame are
+ * unreadable, and readouts are live regions).
  */
-export function useAnimFrame(store: TimelineStore, draw: (t: number) => void): void {
+export function useAnimFrame(store: TimelineStore, draw: (t: number, text: boolean) => void): void {
   const ref = useRef(draw);
   ref.current = draw;
-  useLayoutEffect(() => store.subscribeFrame((t) => ref.current(t)), [store]);
+  const lastText = useRef(-Infinity);
+  useLayoutEffect(
+    () =>
+      store.subscribeFrame((t) => {
+        const now = performance.now();
+        const text = !store.livePlaying() || now - lastText.current >= 1000 / TEXT_HZ - 1;
+        if (text) lastText.current = now;
+        ref.current(t, text);
+      }),
+    [store],
+  );
   useLayoutEffect(() => {
-    ref.current(store.tLive());
+    ref.current(store.tLive(), true);
   });
 }
 
-/** The worked steps' position (re-renders the caller once per timeline step while playing). */
+/** Whether the timeline plays (re-renders the caller on play and pause only). */
+export function usePlaying(store: TimelineStore): boolean {
+  return useSyncExternalStore(store.subscribe, store.playing);
+}
+
+/** The worked steps' position (held while playing: re-renders the caller on pause, step, seek). */
 export function useWorkedT(store: TimelineStore): number {
   return useSyncExternalStore(store.subscribe, store.tWorked);
 }

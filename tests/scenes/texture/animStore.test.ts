@@ -4,7 +4,7 @@
  * cache that the animated parts share (it must return exactly the model's frame at t).
  */
 import { describe, expect, it } from 'vitest';
-import { WORKED_STEP, animContext, createTimelineStore, workedPosition } from '../../../src/scenes/texture/anim';
+import { animContext, createTimelineStore, workedPosition } from '../../../src/scenes/texture/anim';
 import { drawnLookup, frameAt, lookupOptions, pathOf, resolveGrid } from '../../../src/scenes/texture/model';
 import type { Timeline } from '../../../src/ui';
 
@@ -35,17 +35,17 @@ describe('timeline store', () => {
     expect(s.t()).toBe(0.5);
   });
 
-  it('worked steps: the last whole worked step while playing, the exact position when paused', () => {
-    expect(workedPosition(0.437, false)).toBe(0.437);
-    expect(workedPosition(0.437, true)).toBeCloseTo(Math.floor(0.437 / WORKED_STEP) * WORKED_STEP, 12);
-    expect(workedPosition(0.437, true)).toBeLessThanOrEqual(0.437);
-    // a position that is a whole step stays on it despite rounding
-    expect(workedPosition(3 * WORKED_STEP, true)).toBeCloseTo(3 * WORKED_STEP, 12);
-    const s = createTimelineStore(0);
+  it('worked steps: held at the position where playing started, the exact position when paused', () => {
+    expect(workedPosition(0.437, false, 0.1)).toBe(0.437);
+    expect(workedPosition(0.437, true, 0.1)).toBe(0.1);
+    const s = createTimelineStore(0.2);
+    s.publish(tl(0.2, true));
     s.publish(tl(0.437, true));
-    expect(s.tWorked()).toBeCloseTo(Math.floor(0.437 / WORKED_STEP) * WORKED_STEP, 12);
-    s.publish(tl(0.437, false));
-    expect(s.tWorked()).toBe(0.437);
+    expect(s.tWorked()).toBe(0.2);
+    s.publish(tl(0.6, true));
+    expect(s.tWorked()).toBe(0.2);
+    s.publish(tl(0.61, false));
+    expect(s.tWorked()).toBe(0.61);
   });
 
   it('the figures hold the paused position while playing; frames reach the frame listeners with the live position', () => {

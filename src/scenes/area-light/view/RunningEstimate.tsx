@@ -2,9 +2,10 @@
  * The animation's convergence figure: the running estimate after k samples with its ±2σ band
  * (σ = s/√k, the standard error the estimator reports), against k on a log axis, and the reference
  * as a dashed line. The curve and band for all samples are built once per run (memoised on the
- * run); at position t only a clip rectangle and the marker move, so a frame costs next to nothing.
+ * run); at position t only a clip rectangle and the marker move (written directly, see drawRef),
+ * so a frame costs next to nothing.
  */
-import { memo, useId, useMemo } from 'react';
+import { memo, useId, useLayoutEffect, useMemo, useRef } from 'react';
 import type { SampleRun } from '../model';
 
 const W = 420;
@@ -72,16 +73,55 @@ function geometry(run: SampleRun, reference: number): Geometry {
   return { xOf, yOf, line, band, yTicks, xTicks };
 }
 
-export const RunningEstimate = memo(function RunningEstimate({ run, reference, k }: { run: SampleRun; reference: number; k: number }) {
+/**
+ * The running estimate at k samples. With `drawRef`, the moving parts (the clip, the marker, the
+ * label) are written directly for another k (per animation frame, without a React render); `k` is
+ * then the position of the component's last render.
+ */
+export const RunningEstimate = memo(function RunningEstimate({
+  run,
+  reference,
+  k,
+  drawRef,
+}: {
+  run: SampleRun;
+  reference: number;
+  k: number;
+  drawRef?: { current: ((k: number, text: boolean) => void) | null };
+}) {
   const g = useMemo(() => geometry(run, reference), [run, reference]);
   const clip = useId().replace(/:/g, '');
-  const xk = g.xOf(Math.max(1, k));
-  const est = k > 0 ? run.mean[k - 1]! : NaN;
+  const svg = useRef<SVGSVGElement>(null);
+  const shown = useRef(k);
+  const label = (kk: number) => {
+    const est = kk > 0 ? run.mean[kk - 1]! : NaN;
+    return `Running estimate after ${kk} of ${run.count} samples: ${fmt(est)}; reference ${fmt(reference)}. The shaded band is ±2 standard errors.`;
+  };
+  const draw = (kk: number, text: boolean) => {
+    shown.current = kk;
+    const el = svg.current;
+    if (!el) return;
+    const xk = g.xOf(Math.max(1, kk));
+    const est = kk > 0 ? run.mean[kk - 1]! : NaN;
+    el.querySelector('clipPath rect')?.setAttribute('width', String(kk > 0 ? xk + 0.5 : 0));
+    const dot = el.querySelector('circle.al-run-dot');
+    if (dot) {
+      if (kk > 0) {
+        dot.removeAttribute('display');
+        dot.setAttribute('cx', String(xk));
+        dot.setAttribute('cy', String(g.yOf(est)));
+      } else dot.setAttribute('display', 'none');
+    }
+    if (text) el.setAttribute('aria-label', label(kk));
+  };
+  if (drawRef) drawRef.current = draw;
+  else shown.current = k;
+  useLayoutEffect(() => draw(shown.current, true));
   return (
-    <svg className="al-running" viewBox={`0 0 ${W} ${H}`} role="img" aria-label={`Running estimate after ${k} of ${run.count} samples: ${fmt(est)}; reference ${fmt(reference)}. The shaded band is ±2 standard errors.`} data-testid="al-running">
+    <svg ref={svg} className="al-running" viewBox={`0 0 ${W} ${H}`} role="img" aria-label={label(k)} data-testid="al-running">
       <defs>
         <clipPath id={clip}>
-          <rect x={0} y={0} width={k > 0 ? xk + 0.5 : 0} height={H} />
+          <rect x={0} y={0} height={H} />
         </clipPath>
       </defs>
       <rect x={M.l} y={M.t} width={W - M.l - M.r} height={H - M.t - M.b} className="al-run-frame" />
@@ -109,7 +149,7 @@ export const RunningEstimate = memo(function RunningEstimate({ run, reference, k
         {g.band ? <path d={g.band} className="al-run-band" /> : null}
         <path d={g.line} className="al-run-line" />
       </g>
-      {k > 0 ? <circle cx={xk} cy={g.yOf(est)} r={4} className="al-run-dot" /> : null}
+      <circle r={4} className="al-run-dot" display="none" />
     </svg>
   );
 });

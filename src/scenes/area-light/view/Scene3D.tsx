@@ -23,6 +23,8 @@ export interface Scene3DProps {
   dark: boolean;
   /** Samples arrived so far (the animation's position): the first `count` are drawn, rays to the newest. */
   count?: number;
+  /** Set to a function that shows another count directly (per animation frame, without a React render). */
+  countRef?: { current: ((count: number) => void) | null };
 }
 
 const MAX_SAMPLES = 1024;
@@ -68,7 +70,7 @@ function frame(o: Objects, m: AreaLightModel) {
   o.ctx.invalidate();
 }
 
-export function Scene3D({ model, strategy, samples, terms, patch, height, dark, count }: Scene3DProps) {
+export function Scene3D({ model, strategy, samples, terms, patch, height, dark, count, countRef }: Scene3DProps) {
   const objs = useRef<Objects | null>(null);
   const latest = useRef({ model, strategy, samples, terms, patch, dark, count });
   latest.current = { model, strategy, samples, terms, patch, dark, count };
@@ -183,6 +185,14 @@ export function Scene3D({ model, strategy, samples, terms, patch, height, dark, 
     if (objs.current) applyCount(objs.current);
   });
   useEffect(() => onCount(), [count]);
+  if (countRef) {
+    // per animation frame, without a React render: a new count moves the draw ranges and rays
+    countRef.current = (k: number) => {
+      if (latest.current.count === k) return;
+      latest.current.count = k;
+      if (objs.current) applyCount(objs.current);
+    };
+  }
 
   const setup = (ctx: ViewportContext) => {
     const T = ctx.THREE;

@@ -67,6 +67,11 @@ export interface HemisphereViewProps {
   showGrid: boolean;
   /** Height of the 3D viewport in CSS pixels (default 380; the scene passes a larger one in present mode). */
   height?: number;
+  /**
+   * Set to a function that shows another frame directly (per animation frame, without a React
+   * render); `frame` is then the frame of the component's last render.
+   */
+  drawRef?: { current: ((frame: AnimFrame) => void) | null };
 }
 
 const COUNT_FORMAT = new Intl.NumberFormat('en-US');
@@ -98,7 +103,7 @@ function pointBuffers(T: ViewportContext['THREE'], cap: number) {
   return { geom, pos, col, xi };
 }
 
-export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGrid, height = 380 }: HemisphereViewProps) {
+export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGrid, height = 380, drawRef }: HemisphereViewProps) {
   const ctxRef = useRef<ViewportContext | null>(null);
   const objs = useRef<{
     geom: THREE.BufferGeometry;
@@ -365,6 +370,13 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
     apply();
   });
   useEffect(() => onFrameChange(), [frame]);
+  if (drawRef) {
+    drawRef.current = (f: AnimFrame) => {
+      cfg.current.frame = f;
+      fill.current.target = f.shown;
+      if (objs.current) apply();
+    };
+  }
 
   useEffect(() => {
     const o = objs.current;

@@ -3,13 +3,17 @@
  * drawn so far). Each xᵢ drops onto the integrand, its term f(xᵢ)/p(xᵢ) appears, and the running
  * estimate with its ± standard-error band and the |error| log-log curve grow with it — uniform and
  * importance sampling side by side, on the same random numbers ξᵢ. Everything at position t comes
- * from model.raceAt(track, t); this file only draws it. While playing, React re-renders the figure
- * (readouts, labels) only RENDER_HZ times a second; every frame, a timeline subscription writes the
- * moving SVG nodes (the rugs, the newest samples, the curves and bands) directly.
+ * from the model (raceAt / raceHeadAt at t); this file only draws it. While playing, React does not
+ * re-render the figure at all: every frame, a timeline subscription writes the moving SVG nodes (the
+ * rugs, the newest samples, the curves and bands) directly, and the readouts and their labels at most
+ * TEXT_HZ times a second. The growing curves are polylines over fixed sample counts
+ * (model.racePoints): their segments are formatted once per track, and a frame only joins the
+ * segments up to t (appending to the previous frame's string) and adds the point at t itself.
+ * React renders the exact position on pause, step, seek and reset.
  */
-import { memo, useMemo, useRef, type ReactNode } from 'react';
-import { formatNumber, Readout, TimelineTransport, useTimeline, useTimelineFrame } from '../../../ui';
-import { RACE_DURATION, RACE_MAX, raceAt, racePoints, type LaneState, type RaceFrame, type RaceTrack } from '../model';
+import { memo, useLayoutEffect, useMemo, useRef, type ReactNode } from 'react';
+import { formatNumber, LiveReadout, TEXT_HZ, TimelineTransport, useTimeline, useTimelineFrame, writeReadout } from '../../../ui';
+import { RACE_DURATION, RACE_MAX, raceHeadAt, raceLaneAt, racePoints, type LaneState, type RaceTrack } from '../model';
 
 const W = 360;
 const H = 190;
@@ -70,8 +74,8 @@ function Axes({ xTicks, yTicks, xLabel, yLabel }: { xTicks: [number, string][]; 
 const N_TICKS: number[] = [1, 10, 100, 1000].filter((n) => n <= RACE_MAX);
 /** Samples shown in each rug (the latest ones). */
 const RECENT = 40;
-/** How often React re-renders the race while it plays (the SVG moves every frame without React). */
-const RENDER_HZ = 4;
+/** React renders of the race while it plays: none (everything that moves is written per frame). */
+const RENDER_HZ = 0;
 
 export interface RaceProps {
   track: RaceTrack;
@@ -86,17 +90,43 @@ export interface RaceProps {
   setParams: (patch: { t?: number; play?: boolean }) => void;
 }
 
-function Lane({ id, name, color, s, children }: { id: string; name: ReactNode; color: string; s: LaneState; children: ReactNode }) {
+/** The readouts of a lane: written directly (see drawLane), not rendered by React. */
+interface LaneRefs {
+  x: React.RefObject<HTMLOutputElement | null>;
+  term: React.RefObject<HTMLOutputElement | null>;
+  estimate: React.RefObject<HTMLOutputElement | null>;
+  stderr: React.RefObject<HTMLOutputElement | null>;
+  /** The label's sample index (x<sub>n</sub>) and count (⟨I⟩ after n). */
+  sub: React.RefObject<HTMLElement | null>;
+  after: React.RefObject<HTMLSpanElement | null>;
+}
+
+function useLaneRefs(): LaneRefs {
+  return { x: useRef(null), term: useRef(null), estimate: useRef(null), stderr: useRef(null), sub: useRef(null), after: useRef(null) };
+}
+
+function drawLane(r: LaneRefs, s: LaneState): void {
+  writeReadout(r.x.current, s.n ? s.x : null, 6);
+  writeReadout(r.term.current, s.n ? s.term : null, 6);
+  writeReadout(r.estimate.current, s.n ? s.estimate : null, 7);
+  writeReadout(r.stderr.current, s.n > 1 ? s.stderr : null, 3);
+  const sub = String(s.n || 'i');
+  if (r.sub.current && r.sub.current.textContent !== sub) r.sub.current.textContent = sub;
+  const after = String(s.n);
+  if (r.after.current && r.after.current.textContent !== after) r.after.current.textContent = after;
+}
+
+function Lane({ id, name, color, r, children }: { id: string; name: ReactNode; color: string; r: LaneRefs; children: ReactNode }) {
   return (
     <div className="mc-lane" style={{ borderTopColor: color }}>
       <h4 className="mc-lane-title" style={{ color }}>
         {name}
       </h4>
       <div className="readouts mc-lane-readouts">
-        <Readout id={`race-${id}-x`} label={<>x<sub>{s.n || 'i'}</sub></>} value={s.n ? s.x : null} digits={6} />
-        <Readout id={`race-${id}-term`} label="its term f/p" value={s.n ? s.term : null} digits={6} />
-        <Readout id={`race-${id}-estimate`} label={`⟨I⟩ after ${s.n}`} value={s.n ? s.estimate : null} digits={7} />
-        <Readout id={`race-${id}-stderr`} label="± s/√N" value={s.n > 1 ? s.stderr : null} digits={3} />
+        <LiveReadout id={`race-${id}-x`} label={<>x<sub ref={r.sub} /></>} outRef={r.x} />
+        <LiveReadout id={`race-${id}-term`} label="its term f/p" outRef={r.term} />
+        <LiveReadout id={`race-${id}-estimate`} label={<>⟨I⟩ after <span ref={r.after} /></>} outRef={r.estimate} />
+        <LiveReadout id={`race-${id}-stderr`} label="± s/√N" outRef={r.stderr} />
       </div>
       {children}
     </div>
@@ -108,7 +138,7 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
   const box = useRef<HTMLDivElement>(null);
   const tl = useTimeline({ t, play, setParams, max: RACE_MAX, integer: true, duration: RACE_DURATION, visibleRef: box, renderHz: RENDER_HZ });
   const points = useMemo(() => racePoints(track.max), [track.max]);
-  const fr = useMemo(() => raceAt(track, tl.t, points, RECENT), [track, tl.t, points]);
+  const fr = useMemo(() => raceHeadAt(track, tl.t, RECENT), [track, tl.t]);
   const I = track.exact;
   const s = Math.abs(I) || 1;
 
@@ -158,58 +188,56 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
   }, [track, curve, a, b, I, s]);
 
   const { sx, sy, ey } = fig;
-  // what moves, as a function of the frame (shared by the React render and the per-frame writes)
-  const geomOf = (f: RaceFrame): RaceGeom => {
-    const { ex, ey, ly } = fig;
-    const c = f.curve;
-    const clampE = (v: number) => (Number.isFinite(v) ? Math.max(v, fig.floor) : NaN);
-    const clampY = (v: number) => Math.max(I - fig.R, Math.min(I + fig.R, v));
-    const band = (est: number[], se: number[]) => {
-      const up: string[] = [];
-      const dn: string[] = [];
-      for (let k = 0; k < c.n.length; k++) {
-        if (!Number.isFinite(se[k]!)) continue;
-        up.push(`${ex(c.n[k]!).toFixed(1)},${ey(clampY(est[k]! + se[k]!)).toFixed(1)}`);
-        dn.push(`${ex(c.n[k]!).toFixed(1)},${ey(clampY(est[k]! - se[k]!)).toFixed(1)}`);
-      }
-      return up.length ? `M${up.join('L')}L${dn.reverse().join('L')}Z` : '';
-    };
-    const estPath = (est: number[]) => path(c.n, est.map(clampY), ex, ey);
+  // the growing curves' segments, formatted once per track (see the module comment)
+  const curves = useMemo(() => raceCurves(track, points, fig, I), [track, points, fig, I]);
+  // what moves, as a function of t (shared by the React render and the per-frame writes)
+  const geomAt = (t: number): RaceGeom => {
+    const f = raceHeadAt(track, t, RECENT);
     const dot = (n: number, x: number, fx: number) => (n ? { x: sx(x), y: sy(fx) } : null);
     return {
-      uErr: path(c.n, c.uErr.map(clampE), ex, ly),
-      iErr: path(c.n, c.iErr.map(clampE), ex, ly),
-      uBand: band(c.u, c.uSe),
-      iBand: band(c.i, c.iSe),
-      uEst: estPath(c.u),
-      iEst: estPath(c.i),
+      ...curves.at(f.t),
       rugU: f.recentU.map(sx),
       rugI: f.recentI.map(sx),
       dotU: dot(f.uniform.n, f.uniform.x, f.uniform.term / (b - a)),
       dotI: dot(f.importance.n, f.importance.x, curveAt(curve, f.importance.x)),
     };
   };
-  const g = geomOf(fr);
-  const u = fr.uniform;
-  const im = fr.importance;
+  const g = geomAt(fr.t);
   const rate = (RACE_MAX / RACE_DURATION) * tl.speed;
 
-  // per-frame writes (see the module comment); React's render above is the same geometry at tl.t
+  // per-frame writes (see the module comment); React's render below is the same geometry at tl.t
   const svgF = useRef<SVGSVGElement>(null);
   const pathRefs = useRef<Record<keyof Pick<RaceGeom, 'uErr' | 'iErr' | 'uBand' | 'iBand' | 'uEst' | 'iEst'>, SVGPathElement | null>>({ uErr: null, iErr: null, uBand: null, iBand: null, uEst: null, iEst: null });
-  const geomRef = useRef(geomOf);
-  geomRef.current = geomOf;
-  useTimelineFrame(tl, (tt, playing) => {
-    if (!playing) return; // paused: React has drawn the exact position
-    const gg = geomRef.current(raceAt(track, tt, points, RECENT));
-    for (const k of ['uErr', 'iErr', 'uBand', 'iBand', 'uEst', 'iEst'] as const) pathRefs.current[k]?.setAttribute('d', gg[k]);
+  const laneU = useLaneRefs();
+  const laneI = useLaneRefs();
+  const lastText = useRef(-Infinity);
+  const draw = (tt: number, playing: boolean) => {
+    const gg = geomAt(tt);
+    for (const k of ['uErr', 'iErr', 'uBand', 'iBand', 'uEst', 'iEst'] as const) {
+      const el = pathRefs.current[k];
+      if (el && el.getAttribute('d') !== gg[k]) el.setAttribute('d', gg[k]);
+    }
     const svg = svgF.current;
-    if (!svg) return;
-    drawRug(svg.querySelector('[data-rug="0"]'), gg.rugU, rugY(0));
-    drawRug(svg.querySelector('[data-rug="1"]'), gg.rugI, rugY(1));
-    drawDot(svg.querySelector('[data-dot="0"]'), gg.dotU);
-    drawDot(svg.querySelector('[data-dot="1"]'), gg.dotI);
-  });
+    if (svg) {
+      drawRug(svg.querySelector('[data-rug="0"]'), gg.rugU, rugY(0));
+      drawRug(svg.querySelector('[data-rug="1"]'), gg.rugI, rugY(1));
+      drawDot(svg.querySelector('[data-dot="0"]'), gg.dotU);
+      drawDot(svg.querySelector('[data-dot="1"]'), gg.dotI);
+    }
+    // text: at most TEXT_HZ times a second while playing, exact when paused
+    const now = performance.now();
+    if (playing && now - lastText.current < 1000 / TEXT_HZ - 1) return;
+    lastText.current = now;
+    const h = raceHeadAt(track, tt, 0);
+    drawLane(laneU, h.uniform);
+    drawLane(laneI, h.importance);
+    svg?.setAttribute('aria-label', `The integrand f over [${a}, ${b}] with the ${h.t} samples drawn so far, uniform and importance`);
+  };
+  const drawRef = useRef(draw);
+  drawRef.current = draw;
+  useTimelineFrame(tl, (tt, playing) => drawRef.current(tt, playing));
+  // after every render too (a new track at the same position changes the numbers React does not render)
+  useLayoutEffect(() => drawRef.current(tl.now(), tl.playing));
   const setPath = (k: keyof typeof pathRefs.current) => (el: SVGPathElement | null) => {
     pathRefs.current[k] = el;
   };
@@ -243,7 +271,7 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
       <div className="mc-race-grid">
         <figure className="mc-svg-fig">
           <figcaption>Each xᵢ drops onto f</figcaption>
-          <svg ref={svgF} viewBox={`0 0 ${W} ${H}`} role="img" aria-label={`The integrand f over [${a}, ${b}] with the ${fr.t} samples drawn so far, uniform and importance`}>
+          <svg ref={svgF} viewBox={`0 0 ${W} ${H}`} role="img">
             <Axes xTicks={fig.xt} yTicks={fig.yt} xLabel="x" yLabel="f(x)" />
             <path d={fig.fPath} className="mc-svg-f" />
             <path d={fig.pPath} style={{ stroke: C_I }} className="mc-svg-p" />
@@ -262,7 +290,7 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
             <path ref={setPath('iErr')} d={g.iErr} style={{ stroke: C_I }} className="mc-svg-line" />
           </svg>
         </figure>
-        <Lane id="uniform" name="Uniform, p = 1/(b − a)" color={C_U} s={u}>
+        <Lane id="uniform" name="Uniform, p = 1/(b − a)" color={C_U} r={laneU}>
           <svg viewBox={`0 0 ${W} ${H}`} role="img" aria-label="Running estimate of the uniform estimator with its ± standard-error band, against N on a log axis">
             <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
             <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
@@ -270,7 +298,7 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
             <path ref={setPath('uEst')} d={g.uEst} style={{ stroke: C_U }} className="mc-svg-line" />
           </svg>
         </Lane>
-        <Lane id="importance" name={`Importance, ${importanceLabel}`} color={C_I} s={im}>
+        <Lane id="importance" name={`Importance, ${importanceLabel}`} color={C_I} r={laneI}>
           <svg viewBox={`0 0 ${W} ${H}`} role="img" aria-label="Running estimate of the importance-sampling estimator with its ± standard-error band, against N on a log axis">
             <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
             <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
@@ -286,6 +314,81 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
     </div>
   );
 });
+
+/**
+ * The growing curves (|error|, estimate, ± standard-error band of each lane) as polylines over the
+ * sample counts `points` below t, plus the point at t itself: the segments at `points` are formatted
+ * once; `at(t)` joins those below t, reusing the previous call's joined prefix when t grew.
+ */
+export function raceCurves(track: RaceTrack, points: readonly number[], fig: { ex: Scale; ey: Scale; ly: Scale; floor: number; R: number }, I: number) {
+  const { ex, ey, ly, floor, R } = fig;
+  const clampY = (v: number) => Math.max(I - R, Math.min(I + R, v));
+  const xy = (n: number, y: number) => `${ex(n).toFixed(1)},${y.toFixed(1)}`;
+  type Seg = { err: string | null; est: string | null; up: string | null; dn: string | null };
+  const seg = (s: LaneState): Seg => {
+    const n = s.n;
+    const est = clampY(s.estimate);
+    const ok = Number.isFinite(s.stderr);
+    return {
+      err: Number.isFinite(s.absError) ? xy(n, ly(Math.max(s.absError, floor))) : null,
+      est: Number.isFinite(est) ? xy(n, ey(est)) : null,
+      up: ok ? xy(n, ey(clampY(s.estimate + s.stderr))) : null,
+      dn: ok ? xy(n, ey(clampY(s.estimate - s.stderr))) : null,
+    };
+  };
+  const segU = points.map((n) => seg(raceLaneAt(track.uniform, n, I)));
+  const segI = points.map((n) => seg(raceLaneAt(track.importance, n, I)));
+  /** A polyline's joined prefix over the first k points (forward, or reversed for a band's lower edge). */
+  const prefix = (segs: Seg[], key: keyof Seg, reversed: boolean) => {
+    let k = 0;
+    let s = '';
+    return (upTo: number) => {
+      if (upTo < k) {
+        k = 0;
+        s = '';
+      }
+      for (; k < upTo; k++) {
+        const g = segs[k]![key];
+        if (g) s = s ? (reversed ? `${g}L${s}` : `${s}L${g}`) : g;
+      }
+      return s;
+    };
+  };
+  const lanes = ([segU, segI] as const).map((segs) => ({
+    err: prefix(segs, 'err', false),
+    est: prefix(segs, 'est', false),
+    up: prefix(segs, 'up', false),
+    dn: prefix(segs, 'dn', true),
+  }));
+  const join = (...parts: (string | null)[]) => parts.filter((p) => p).join('L');
+  return {
+    at(t: number): Pick<RaceGeom, 'uErr' | 'iErr' | 'uBand' | 'iBand' | 'uEst' | 'iEst'> {
+      t = Math.max(0, Math.min(track.max, Math.floor(t)));
+      // the points below t (points is increasing)
+      let lo = 0;
+      let hi = points.length;
+      while (lo < hi) {
+        const mid = (lo + hi) >> 1;
+        if (points[mid]! < t) lo = mid + 1;
+        else hi = mid;
+      }
+      const k = lo;
+      const out = [] as string[][];
+      for (const [L, lane] of [
+        [lanes[0]!, track.uniform],
+        [lanes[1]!, track.importance],
+      ] as const) {
+        const tail: Seg = t >= 1 ? seg(raceLaneAt(lane, t, I)) : { err: null, est: null, up: null, dn: null };
+        const err = join(L.err(k), tail.err);
+        const est = join(L.est(k), tail.est);
+        const up = join(L.up(k), tail.up);
+        const dn = join(tail.dn, L.dn(k));
+        out.push([err ? `M${err}` : '', est ? `M${est}` : '', up ? `M${up}L${dn}Z` : '']);
+      }
+      return { uErr: out[0]![0]!, uEst: out[0]![1]!, uBand: out[0]![2]!, iErr: out[1]![0]!, iEst: out[1]![1]!, iBand: out[1]![2]! };
+    },
+  };
+}
 
 interface RaceGeom {
   uErr: string;

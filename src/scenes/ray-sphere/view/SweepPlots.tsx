@@ -5,7 +5,7 @@
  * the current position, the tangency crossings and the case of each position underneath.
  * Sizes follow the element's width (one SVG unit = one CSS pixel), so labels stay ≥ 12 px.
  */
-import { memo, useMemo, useRef, type ReactNode } from 'react';
+import { memo, useLayoutEffect, useMemo, useRef, type ReactNode } from 'react';
 import type { RaySphereCase, RaySphereHit } from '../../../core/geometry';
 import type { SweepSeries } from '../model';
 import { useWidth } from '../../../ui/useWidth';
@@ -98,10 +98,26 @@ function Axes({ f, xd, yd, title, xLabel, yLabel }: { f: Frame; xd: [number, num
   );
 }
 
-function SvgBox({ children, height, label, testId, W, boxRef }: { children: ReactNode; height: number; label: string; testId: string; W: number; boxRef: React.RefObject<HTMLDivElement | null> }) {
+function SvgBox({
+  children,
+  height,
+  label,
+  testId,
+  W,
+  boxRef,
+  svgRef,
+}: {
+  children: ReactNode;
+  height: number;
+  label: string;
+  testId: string;
+  W: number;
+  boxRef: React.RefObject<HTMLDivElement | null>;
+  svgRef?: React.RefObject<SVGSVGElement | null>;
+}) {
   return (
     <div ref={boxRef} className="mp-box">
-      <svg viewBox={`0 0 ${W} ${height}`} width="100%" height={height} role="img" aria-label={label} data-testid={testId} className="mp-svg">
+      <svg ref={svgRef} viewBox={`0 0 ${W} ${height}`} width="100%" height={height} role="img" aria-label={label} data-testid={testId} className="mp-svg">
         {children}
       </svg>
     </div>
@@ -113,20 +129,19 @@ function SvgBox({ children, height, label, testId, W, boxRef }: { children: Reac
 export interface GPlotProps {
   res: RaySphereHit | null;
   window: SweepSeries['gWindow'];
+  /**
+   * Set to a function that redraws the parabola and its roots for another ray directly (per
+   * animation frame, without React); `res` is then only the first drawing.
+   */
+  drawRef?: { current: ((res: RaySphereHit | null) => void) | null };
 }
 
-/** g(t) of the ray at the current position, on the sweep's fixed window. */
-export function GSweepPlot({ res, window: w }: GPlotProps) {
-  const box = useRef<HTMLDivElement>(null);
-  const W = Math.max(260, useWidth(box, 520));
-  const H = Math.round(Math.min(300, Math.max(220, W * 0.5)));
-  const xd = useMemo<[number, number]>(() => [w.tMin - w.shift, w.tMax - w.shift], [w.tMin, w.tMax, w.shift]);
-  const yd = useMemo<[number, number]>(() => [w.gMin, w.gMax], [w.gMin, w.gMax]);
-  const f = useMemo(() => makeFrame(W, H, xd, yd), [W, H, xd, yd]);
-  const xLabel = w.shift ? `t − ${w.shift.toPrecision(12)}` : 't (grey: behind the origin, t < 0)';
-  const axes = useMemo(() => <Axes f={f} xd={xd} yd={yd} title="g(t) = a t² + b t + c" xLabel={xLabel} yLabel="g(t)" />, [f, xd, yd, xLabel]);
+/** Writes g(t) and its root marks (two groups rendered by GSweepPlot) for `res`. */
+function drawG(svg: SVGSVGElement, f: Frame, w: SweepSeries['gWindow'], res: RaySphereHit | null): void {
+  const pathEl = svg.querySelector<SVGPathElement>('path.mp-g');
+  const marks = svg.querySelectorAll<SVGGElement>('g[data-root]');
   let path = '';
-  const marks: ReactNode[] = [];
+  const roots = !res || res.t0 === null ? [] : res.t0 === res.t1 ? [res.t0] : [res.t0, res.t1!];
   if (res) {
     const tv = -res.b / (2 * res.a);
     const k = res.discriminant / (4 * res.a);
@@ -138,25 +153,48 @@ export function GSweepPlot({ res, window: w }: GPlotProps) {
       const y = Math.max(-1e4, Math.min(1e4, f.Y(g)));
       path += `${i ? 'L' : 'M'}${f.X(t - w.shift).toFixed(1)},${y.toFixed(1)}`;
     }
-    const roots = res.t0 === null ? [] : res.t0 === res.t1 ? [res.t0] : [res.t0, res.t1!];
-    roots.forEach((t, i) => {
-      const isHit = t === res.tHit;
-      const x = f.X(t - w.shift);
-      const lbl = roots.length === 1 ? 't₀ = t₁' : i === 0 ? 't₀' : 't₁';
-      marks.push(
-        <g key={i} className={`mp-root${isHit ? ' hit' : ''}${t < 0 ? ' behind' : ''}`} transform={`translate(${x.toFixed(1)} ${f.Y(0).toFixed(1)})`}>
-          <circle r={isHit ? 6.5 : 5} />
-          <text y={i === 0 ? -10 : 20} x={i === 0 ? -4 : 4} textAnchor={i === 0 ? 'end' : 'start'} className="mp-rootlabel">
-            {lbl}
-            {isHit ? ' hit' : t < 0 ? ' < 0' : ''}
-          </text>
-        </g>,
-      );
-    });
   }
+  if (pathEl && pathEl.getAttribute('d') !== path) pathEl.setAttribute('d', path);
+  marks.forEach((g, i) => {
+    const t = roots[i];
+    if (t === undefined || !res) {
+      g.setAttribute('display', 'none');
+      return;
+    }
+    g.removeAttribute('display');
+    const isHit = t === res.tHit;
+    g.setAttribute('class', `mp-root${isHit ? ' hit' : ''}${t < 0 ? ' behind' : ''}`);
+    g.setAttribute('transform', `translate(${f.X(t - w.shift).toFixed(1)} ${f.Y(0).toFixed(1)})`);
+    g.firstElementChild?.setAttribute('r', isHit ? '6.5' : '5');
+    const text = `${roots.length === 1 ? 't₀ = t₁' : i === 0 ? 't₀' : 't₁'}${isHit ? ' hit' : t < 0 ? ' < 0' : ''}`;
+    const label = g.lastElementChild;
+    if (label && label.textContent !== text) label.textContent = text;
+  });
+}
+
+/** g(t) of the ray at the current position, on the sweep's fixed window. */
+export function GSweepPlot({ res, window: w, drawRef }: GPlotProps) {
+  const box = useRef<HTMLDivElement>(null);
+  const svg = useRef<SVGSVGElement>(null);
+  const W = Math.max(260, useWidth(box, 520));
+  const H = Math.round(Math.min(300, Math.max(220, W * 0.5)));
+  const xd = useMemo<[number, number]>(() => [w.tMin - w.shift, w.tMax - w.shift], [w.tMin, w.tMax, w.shift]);
+  const yd = useMemo<[number, number]>(() => [w.gMin, w.gMax], [w.gMin, w.gMax]);
+  const f = useMemo(() => makeFrame(W, H, xd, yd), [W, H, xd, yd]);
+  const xLabel = w.shift ? `t − ${w.shift.toPrecision(12)}` : 't (grey: behind the origin, t < 0)';
+  const axes = useMemo(() => <Axes f={f} xd={xd} yd={yd} title="g(t) = a t² + b t + c" xLabel={xLabel} yLabel="g(t)" />, [f, xd, yd, xLabel]);
+  // the last ray drawn (from a render or a frame), so a re-render (resize, new window) redraws it
+  const last = useRef(res);
+  const draw = (r: RaySphereHit | null) => {
+    last.current = r;
+    if (svg.current) drawG(svg.current, f, w, r);
+  };
+  if (drawRef) drawRef.current = draw;
+  else last.current = res;
+  useLayoutEffect(() => draw(last.current));
   const showBehind = w.shift === 0 && w.tMin < 0;
   return (
-    <SvgBox boxRef={box} W={W} height={H} label="The quadratic g(t) for the ray at the current position, with its real roots on the t axis" testId="g-plot">
+    <SvgBox boxRef={box} svgRef={svg} W={W} height={H} label="The quadratic g(t) for the ray at the current position, with its real roots on the t axis" testId="g-plot">
       <defs>
         <clipPath id="rs-gclip">
           <rect x={f.x0} y={f.y0} width={f.x1 - f.x0} height={f.y1 - f.y0} />
@@ -165,9 +203,14 @@ export function GSweepPlot({ res, window: w }: GPlotProps) {
       {axes}
       {showBehind ? <rect x={f.X(w.tMin)} y={f.y0} width={Math.max(0, f.X(0) - f.X(w.tMin))} height={f.y1 - f.y0} className="mp-behind" /> : null}
       <g clipPath="url(#rs-gclip)">
-        <path d={path} className="mp-g" />
+        <path className="mp-g" />
       </g>
-      {marks}
+      {[0, 1].map((i) => (
+        <g key={i} data-root={i} className="mp-root" display="none">
+          <circle r={5} />
+          <text y={i === 0 ? -10 : 20} x={i === 0 ? -4 : 4} textAnchor={i === 0 ? 'end' : 'start'} className="mp-rootlabel" />
+        </g>
+      ))}
     </SvgBox>
   );
 }
@@ -260,8 +303,9 @@ const DeltaStatic = memo(function DeltaStatic({ series: s, tangentX, f, xd, yd, 
 });
 
 /** Δ against the sweep coordinate; the current position moves along it. */
-export function DeltaSweepPlot(p: DeltaPlotProps) {
+export function DeltaSweepPlot(p: DeltaPlotProps & { drawRef?: { current: ((x: number, discStable: number | null, discNaive: number | null) => void) | null } }) {
   const box = useRef<HTMLDivElement>(null);
+  const svg = useRef<SVGSVGElement>(null);
   const W = Math.max(260, useWidth(box, 520));
   const H = Math.round(Math.min(340, Math.max(270, W * 0.58)));
   const s = p.series;
@@ -280,19 +324,44 @@ export function DeltaSweepPlot(p: DeltaPlotProps) {
   }, [s]);
   // the case strip sits between the x tick labels and the axis label
   const f = useMemo(() => makeFrame(W, H, xd, yd, 64, 50), [W, H, xd, yd]);
-  const cx = Number.isFinite(p.x) ? f.X(Math.max(xd[0], Math.min(xd[1], p.x))) : f.x0;
-  const dot = (v: number | null, cls: string) => (v === null || !Number.isFinite(v) ? null : <circle cx={cx} cy={Math.max(f.y0, Math.min(f.y1, f.Y(v)))} r={5.5} className={cls} />);
+  // the current position (line and two dots) is written directly: after each render, and per
+  // animation frame through drawRef (the last position drawn is kept for the next render)
+  const last = useRef<[number, number | null, number | null]>([p.x, p.discStable, p.discNaive]);
+  const draw = (x: number, discStable: number | null, discNaive: number | null) => {
+    last.current = [x, discStable, discNaive];
+    const el = svg.current;
+    if (!el) return;
+    const cx = (Number.isFinite(x) ? f.X(Math.max(xd[0], Math.min(xd[1], x))) : f.x0).toFixed(1);
+    const [line, dn, ds] = [el.querySelector('line.mp-now'), el.querySelector('circle.mp-now-naive'), el.querySelector('circle.mp-now-robust')];
+    line?.setAttribute('x1', cx);
+    line?.setAttribute('x2', cx);
+    const dot = (c: Element | null, v: number | null) => {
+      if (!c) return;
+      if (v === null || !Number.isFinite(v)) {
+        c.setAttribute('display', 'none');
+        return;
+      }
+      c.removeAttribute('display');
+      c.setAttribute('cx', cx);
+      c.setAttribute('cy', Math.max(f.y0, Math.min(f.y1, f.Y(v))).toFixed(1));
+    };
+    dot(dn, discNaive);
+    dot(ds, discStable);
+  };
+  if (p.drawRef) p.drawRef.current = draw;
+  else last.current = [p.x, p.discStable, p.discNaive];
+  useLayoutEffect(() => draw(...last.current));
   return (
-    <SvgBox boxRef={box} W={W} height={H} label="The discriminant Δ against the sweep coordinate, robust and textbook, with the current position" testId="delta-plot">
+    <SvgBox boxRef={box} svgRef={svg} W={W} height={H} label="The discriminant Δ against the sweep coordinate, robust and textbook, with the current position" testId="delta-plot">
       <defs>
         <clipPath id="rs-dclip">
           <rect x={f.x0} y={f.y0} width={f.x1 - f.x0} height={f.y1 - f.y0} />
         </clipPath>
       </defs>
       <DeltaStatic series={s} tangentX={p.tangentX} f={f} xd={xd} yd={yd} xLabel={p.xLabel} method={p.method} />
-      <line x1={cx} x2={cx} y1={f.y0} y2={f.y1 + 34} className="mp-now" />
-      {dot(p.discNaive, 'mp-now-naive')}
-      {dot(p.discStable, 'mp-now-robust')}
+      <line y1={f.y0} y2={f.y1 + 34} className="mp-now" />
+      <circle r={5.5} className="mp-now-naive" display="none" />
+      <circle r={5.5} className="mp-now-robust" display="none" />
     </SvgBox>
   );
 }

@@ -11,7 +11,7 @@
  * query brought into [0, 1]² by the wrap mode (an equivalent point: the lookup there is the same).
  */
 import { useWidth } from '../../../ui/useWidth';
-import { memo, useEffect, useMemo, useRef, type KeyboardEvent, type PointerEvent, type RefObject } from 'react';
+import { memo, useEffect, useLayoutEffect, useMemo, useRef, type KeyboardEvent, type PointerEvent, type RefObject } from 'react';
 import { nodeCoord, type LookupOptions, type TextureGrid } from '../../../core/texture';
 import { colorCss, darkTextOn, normalizeValue } from '../colormap';
 import { pathPoint, textureImage, type Lookup, type QueryPath } from '../model';
@@ -246,27 +246,59 @@ export function GridView({ grid, opts, range, q, path, onMove, editing, selected
 }
 
 /** The four taps with their values and weights, and the magnified cell (follows the query). */
-export function StencilDetail({ q }: { q: Lookup }) {
+export function StencilDetail({ q, drawRef }: { q: Lookup; drawRef?: { current: ((q: Lookup, text: boolean) => void) | null } }) {
+  const listRef = useRef<HTMLUListElement>(null);
+  const closeRef = useRef<SVGSVGElement>(null);
+  // The numbers are written directly (here after each render, and per animation frame through
+  // drawRef without React): React renders the elements, not their changing text.
+  const draw = (dq: Lookup, text: boolean) => {
+    const ul = listRef.current;
+    if (ul && text) {
+      const b = dq.bil;
+      const taps: [number, number, number, number][] = [
+        [b.i0, b.j0, b.t00, b.w00],
+        [b.i1, b.j0, b.t10, b.w10],
+        [b.i0, b.j1, b.t01, b.w01],
+        [b.i1, b.j1, b.t11, b.w11],
+      ];
+      const items = ul.children;
+      for (let k = 0; k < 4 && k < items.length; k++) {
+        const [i, j, t, w] = taps[k]!;
+        const li = items[k] as HTMLElement;
+        li.setAttribute('data-weight', String(w));
+        setText(li.children[1], `${i},${j}`);
+        setText(li.children[2], `=${fmtShort(t)}, w=${fmtShort(w)}`);
+      }
+    }
+    // the close-up follows at the text's rate too (the grid's stencil moves every frame)
+    if (closeRef.current && text) drawCloseUp(closeRef.current, dq, text);
+  };
+  if (drawRef) drawRef.current = draw;
+  useLayoutEffect(() => draw(q, true));
   return (
     <div className="tx-closeup-row">
-      <CellCloseUp q={q} />
-      <ul className="tx-taps" aria-label="The four bilinear taps and their weights" data-testid="taps">
-        {(
-          [
-            ['w00', q.bil.i0, q.bil.j0, q.bil.t00, q.bil.w00],
-            ['w10', q.bil.i1, q.bil.j0, q.bil.t10, q.bil.w10],
-            ['w01', q.bil.i0, q.bil.j1, q.bil.t01, q.bil.w01],
-            ['w11', q.bil.i1, q.bil.j1, q.bil.t11, q.bil.w11],
-          ] as const
-        ).map(([cls, i, j, t, w]) => (
-          <li key={cls} data-testid={`tap-${cls}`} data-weight={String(w)}>
-            <span className={`tx-chip ${cls}`} />
-            T<sub>{i},{j}</sub>={fmtShort(t)}, w={fmtShort(w)}
+      <CellCloseUp svgRef={closeRef} />
+      <ul className="tx-taps" aria-label="The four bilinear taps and their weights" data-testid="taps" ref={listRef}>
+        {TAP_CLASS.map((cls) => (
+          <li key={cls} data-testid={`tap-${cls}`}>
+            <span className={`tx-chip ${cls}`} />T<sub />
+            <span />
           </li>
         ))}
       </ul>
     </div>
   );
+}
+
+/** Sets an attribute if it changed (an unchanged write still invalidates style; per frame that adds up). */
+function setAttr(el: Element, a: string, v: number): void {
+  const s = String(v);
+  if (el.getAttribute(a) !== s) el.setAttribute(a, s);
+}
+
+/** Sets an element's text if it changed (the element's children are not React's). */
+function setText(el: Element | undefined | null, text: string): void {
+  if (el && el.textContent !== text) el.textContent = text;
 }
 
 function inWindow(p: { u: number; v: number }, win: ViewWindow): boolean {
@@ -477,7 +509,7 @@ function queryGeometry(grid: TextureGrid, win: ViewWindow, q: Lookup): QueryGeom
 function drawStencil(g: SVGGElement, geo: QueryGeometry): void {
   const kids = g.children;
   if (kids.length !== 10) return;
-  const set = (el: Element, a: string, v: number) => el.setAttribute(a, String(v));
+  const set = setAttr;
   for (let k = 0; k < 4; k++) {
     const r = geo.rects[k];
     set(kids[k], 'x', r.x);
@@ -526,51 +558,77 @@ export function valueColor(x: number, range: { min: number; max: number }): stri
   return colorCss(normalizeValue(x, range.min, range.max));
 }
 
+const CU_S = 200;
+const CU_P = 34; // padding for the corner labels
+const CU_C = CU_S - 2 * CU_P;
+/** Corner nodes of the close-up (order of TAP_CLASS: w00, w10, w01, w11) and their label offsets. */
+const CU_CORNERS = [
+  { cx: CU_P, cy: CU_P + CU_C, dy: 26 },
+  { cx: CU_P + CU_C, cy: CU_P + CU_C, dy: 26 },
+  { cx: CU_P, cy: CU_P, dy: -14 },
+  { cx: CU_P + CU_C, cy: CU_P, dy: -14 },
+];
+
 /**
  * The bilinear cell magnified: its four node values at the corners, the query at (fu, fv) inside,
- * and each node's weight written in the sub-rectangle opposite to it (same colour).
+ * and each node's weight written in the sub-rectangle opposite to it (same colour). React renders
+ * the elements; {@link drawCloseUp} places them for a lookup (after each render and per frame).
  */
-function CellCloseUp({ q }: { q: Lookup }) {
-  const b = q.bil;
-  const S = 200;
-  const P = 34; // padding for the corner labels
-  const C = S - 2 * P;
-  const x = P + b.fu * C;
-  const y = P + (1 - b.fv) * C;
-  const rects = [
-    { cls: 'w00', x0: x, y0: P, x1: P + C, y1: y, w: b.w00 },
-    { cls: 'w10', x0: P, y0: P, x1: x, y1: y, w: b.w10 },
-    { cls: 'w01', x0: x, y0: y, x1: P + C, y1: P + C, w: b.w01 },
-    { cls: 'w11', x0: P, y0: y, x1: x, y1: P + C, w: b.w11 },
-  ];
-  const corners = [
-    { cls: 'w00', cx: P, cy: P + C, t: b.t00, dy: 26 },
-    { cls: 'w10', cx: P + C, cy: P + C, t: b.t10, dy: 26 },
-    { cls: 'w01', cx: P, cy: P, t: b.t01, dy: -14 },
-    { cls: 'w11', cx: P + C, cy: P, t: b.t11, dy: -14 },
-  ];
+function CellCloseUp({ svgRef }: { svgRef: RefObject<SVGSVGElement | null> }) {
   return (
-    <svg className="tx-closeup" viewBox={`0 0 ${S} ${S}`} role="img" aria-label={`The bilinear cell magnified: the query sits at fu = ${fmtShort(b.fu)}, fv = ${fmtShort(b.fv)} inside it`} data-testid="cell-closeup">
-      {rects.map((r) => (
-        <g key={r.cls}>
-          <rect x={r.x0} y={r.y0} width={Math.max(0, r.x1 - r.x0)} height={Math.max(0, r.y1 - r.y0)} className={`tx-wrect ${r.cls}`} />
-          {r.x1 - r.x0 > 30 && r.y1 - r.y0 > 16 ? (
-            <text x={(r.x0 + r.x1) / 2} y={(r.y0 + r.y1) / 2 + 5} textAnchor="middle" className="tx-closeup-w">
-              {String(Number(r.w.toPrecision(3)))}
-            </text>
-          ) : null}
+    <svg ref={svgRef} className="tx-closeup" viewBox={`0 0 ${CU_S} ${CU_S}`} role="img" data-testid="cell-closeup">
+      {TAP_CLASS.map((cls) => (
+        <g key={cls}>
+          <rect className={`tx-wrect ${cls}`} />
+          <text textAnchor="middle" className="tx-closeup-w" />
         </g>
       ))}
-      <rect x={P} y={P} width={C} height={C} className="tx-closeup-cell" />
-      {corners.map((c) => (
-        <g key={c.cls}>
-          <circle cx={c.cx} cy={c.cy} r={6} className={`tx-tap ${c.cls}`} />
-          <text x={c.cx} y={c.cy + c.dy} textAnchor="middle" className="tx-closeup-t">
-            {fmtShort(c.t)}
-          </text>
+      <rect x={CU_P} y={CU_P} width={CU_C} height={CU_C} className="tx-closeup-cell" />
+      {TAP_CLASS.map((cls, k) => (
+        <g key={cls}>
+          <circle cx={CU_CORNERS[k]!.cx} cy={CU_CORNERS[k]!.cy} r={6} className={`tx-tap ${cls}`} />
+          <text x={CU_CORNERS[k]!.cx} y={CU_CORNERS[k]!.cy + CU_CORNERS[k]!.dy} textAnchor="middle" className="tx-closeup-t" />
         </g>
       ))}
-      <circle cx={x} cy={y} r={5} className="tx-closeup-q" />
+      <circle r={5} className="tx-closeup-q" />
     </svg>
   );
+}
+
+/** Places the close-up's weight rectangles and query for a lookup; with `text`, its numbers and label too. */
+function drawCloseUp(svg: SVGSVGElement, q: Lookup, text: boolean): void {
+  const kids = svg.children;
+  if (kids.length !== 10) return;
+  const b = q.bil;
+  const x = CU_P + b.fu * CU_C;
+  const y = CU_P + (1 - b.fv) * CU_C;
+  const rects = [
+    { x0: x, y0: CU_P, x1: CU_P + CU_C, y1: y, w: b.w00 },
+    { x0: CU_P, y0: CU_P, x1: x, y1: y, w: b.w10 },
+    { x0: x, y0: y, x1: CU_P + CU_C, y1: CU_P + CU_C, w: b.w01 },
+    { x0: CU_P, y0: y, x1: x, y1: CU_P + CU_C, w: b.w11 },
+  ];
+  const set = setAttr;
+  for (let k = 0; k < 4; k++) {
+    const r = rects[k]!;
+    const [rect, label] = kids[k]!.children;
+    set(rect!, 'x', r.x0);
+    set(rect!, 'y', r.y0);
+    set(rect!, 'width', Math.max(0, r.x1 - r.x0));
+    set(rect!, 'height', Math.max(0, r.y1 - r.y0));
+    // a weight is written only where its rectangle has room for it
+    const room = r.x1 - r.x0 > 30 && r.y1 - r.y0 > 16;
+    set(label!, 'x', (r.x0 + r.x1) / 2);
+    set(label!, 'y', (r.y0 + r.y1) / 2 + 5);
+    const vis = room ? 'visible' : 'hidden';
+    if (label!.getAttribute('visibility') !== vis) label!.setAttribute('visibility', vis);
+    if (text) setText(label, String(Number(r.w.toPrecision(3))));
+  }
+  const values = [b.t00, b.t10, b.t01, b.t11];
+  for (let k = 0; k < 4; k++) setText(kids[5 + k]!.children[1], fmtShort(values[k]!));
+  if (text) {
+    svg.setAttribute('aria-label', `The bilinear cell magnified: the query sits at fu = ${fmtShort(b.fu)}, fv = ${fmtShort(b.fv)} inside it`);
+  }
+  set(kids[9]!, 'cx', x);
+  set(kids[9]!, 'cy', y);
 }
