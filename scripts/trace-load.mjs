@@ -84,8 +84,9 @@ try {
           const d = e.args?.data ?? {};
           const url = String(d.url ?? '').replace(/^.*\/assets\//, '');
           if (e.name !== 'v8.callFunction') add(`js ${d.functionName || '(anon)'} ${url}`, e.dur);
-        } else if (['Layout', 'UpdateLayoutTree', 'Paint', 'ParseHTML', 'ParseAuthorStyleSheet', 'MajorGC', 'MinorGC', 'CompositeLayers', 'PrePaint', 'Layerize', 'HitTest', 'FireAnimationFrame', 'TimerFire', 'FireIdleCallback', 'IntersectionObserverController::computeIntersections', 'ResizeObserverController::Notify'].includes(e.name)) {
-          add(e.name, e.dur);
+        } else if (e.args?.data?.stackTrace === undefined && !/^(ThreadControllerImpl|RunTask|ScheduledAction|v8\.|V8\.)/.test(e.name)) {
+          // direct children of the task only for the rest (nested ones are inside those)
+          if (!inside.some((o) => o !== e && o.name !== 'FunctionCall' && o.ts <= e.ts && o.ts + o.wall >= e.ts + e.wall && o.wall > e.wall)) add(e.name, e.dur);
         }
       }
       let js = '';
@@ -106,7 +107,29 @@ try {
             inc.set(k, (inc.get(k) ?? 0) + 1);
           }
         }
-        if (n) js = `\n${' '.repeat(26)}app code (share of the task's samples): ${[...inc].sort((a, b) => b[1] - a[1]).slice(0, 6).map(([k, c]) => `${k} ${Math.round((100 * c) / n)}%`).join(' | ')}`;
+        // and React's own phases (render, commit, effects) by inclusive share
+        const phases = new Map();
+        for (const [time, id] of samples) {
+          if (time < t.ts || time > end) continue;
+          const seen = new Set();
+          for (let node = nodes.get(id); node; node = nodes.get(node.parent)) {
+            const fn = node.callFrame.functionName;
+            if (!/^(renderRootSync|renderRootConcurrent|commitRoot|flushPassiveEffects|commitLayoutEffects|flushLayoutEffects|commitMutationEffects|flushMutationEffects|recursivelyTraversePassiveMountEffects)$/.test(fn) || seen.has(fn)) continue;
+            seen.add(fn);
+            phases.set(fn, (phases.get(fn) ?? 0) + 1);
+          }
+        }
+        const pct = (list) => [...list].sort((a, b) => b[1] - a[1]).slice(0, 6).map(([k, c]) => `${k} ${Math.round((100 * c) / n)}%`).join(' | ');
+        // and the functions with the most self time, any script (the shell lives in the entry chunk)
+        const self = new Map();
+        for (const [time, id] of samples) {
+          if (time < t.ts || time > end) continue;
+          const node = nodes.get(id);
+          if (!node || /^\((idle|program|garbage collector|root)\)$/.test(node.callFrame.functionName)) continue;
+          const k = frameName(node);
+          self.set(k, (self.get(k) ?? 0) + 1);
+        }
+        if (n) js = `\n${' '.repeat(26)}app code: ${pct(inc)}\n${' '.repeat(26)}React: ${pct(phases)}\n${' '.repeat(26)}self: ${pct(self)}`;
       }
       long.push({ start: (t.ts - nav) / 1000, dur: t.dur / 1000, top: [...agg].sort((a, b) => b[1] - a[1]).slice(0, 6), js });
     }

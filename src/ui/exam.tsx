@@ -18,7 +18,7 @@
  * and the body of Explore further, mount when they come near the screen or in idle time
  * (./Deferred): the first screen of a phone is interactive before the rest of the page exists.
  */
-import type { ReactNode } from 'react';
+import { Children, type ReactNode } from 'react';
 import { Deferred } from './Deferred';
 import { questionStart, type SceneInfo } from '../scenes/registry';
 import type { ShellFlags } from '../app/route';
@@ -95,7 +95,12 @@ export function ExploreFurther({ children, intro }: { children: ReactNode; intro
         Explore further <span className="explore-badge">beyond the exam</span>
       </h2>
       {intro ? <p className="explore-intro">{intro}</p> : null}
-      <Deferred estimate={900}>{children}</Deferred>
+      {/* each panel mounts on its own: one panel's plots and tables are enough for one task */}
+      {Children.toArray(children).map((c, i) => (
+        <Deferred key={i} estimate={400}>
+          {c}
+        </Deferred>
+      ))}
     </section>
   );
 }

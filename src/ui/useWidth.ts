@@ -1,5 +1,4 @@
 import { useEffect, useState, type RefObject } from 'react';
-import { flushSync } from 'react-dom';
 
 /**
  * The element's width in CSS pixels (border box, rounded), `fallback` until the first
@@ -8,8 +7,10 @@ import { flushSync } from 'react-dom';
  *
  * Measured only by a ResizeObserver, never by reading the layout in an effect: on a page's first
  * commit such a read forced the layout of the whole page inside React's commit, one long task on a
- * phone (issue 15). The observer reports after the browser's own layout and before paint, and the
- * new width is applied there at once (flushSync), so the first painted frame already has it.
+ * phone (issue 15). The observer reports after the browser's own layout; the new width is drawn in
+ * the next frame (applying it inside the observer's callback would resize observed boxes in the
+ * same frame: "ResizeObserver loop completed with undelivered notifications"). The figures that
+ * use it have a fixed height, so that first frame shifts nothing.
  */
 export function useWidth(ref: RefObject<Element | null>, fallback: number): number {
   const [w, setW] = useState(fallback);
@@ -19,7 +20,7 @@ export function useWidth(ref: RefObject<Element | null>, fallback: number): numb
     const ro = new ResizeObserver((entries) => {
       const e = entries[entries.length - 1]!;
       const x = Math.round(e.borderBoxSize?.[0]?.inlineSize ?? e.contentRect.width);
-      if (x > 0) flushSync(() => setW((old) => (Math.abs(old - x) >= 1 ? x : old)));
+      if (x > 0) setW((old) => (Math.abs(old - x) >= 1 ? x : old));
     });
     ro.observe(el);
     return () => ro.disconnect();
