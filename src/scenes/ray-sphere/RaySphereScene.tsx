@@ -55,7 +55,6 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
   // the sweep is centred on the configuration typed in o, d (t = 0.5); it depends on params, not on t
   const base = useMemo(() => checkInputs(params), [params]);
   const sweep = useMemo(() => makeSweep(base, sweepMode, params.extent), [base, sweepMode, params.extent]);
-  const series = useMemo(() => sweepSeries(params, sweep), [params, sweep]);
 
   const stageRef = useRef<HTMLDivElement>(null);
   // While playing, this component (readouts, case banner, notes) re-renders only RENDER_HZ times a
@@ -123,7 +122,6 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
   );
   const activePreset = [...CASE_PRESETS, ...PRECISION_PRESETS].find((p) => samePreset(p, params));
   const ends = useMemo(() => [sweepAt(sweep, 0).o, sweepAt(sweep, 1).o], [sweep]);
-  const tangentX = useMemo(() => series.tangents.map((tt) => sweepAt(sweep, tt).x), [series, sweep]);
   const xLabel = sweepMode === 'offset' ? 'h / r: signed distance of the line from C, in radii' : 'ψ / α: angle between d and the direction to C, in angular radii α';
 
   const presets = useMemo(
@@ -253,16 +251,7 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
               {fields}
             </div>
             <div className="rs-stage-plots">
-              <LivePlots tl={tl} modelAt={modelAt} sweep={sweep} series={series} tangentX={tangentX} xLabel={xLabel} method={method} />
-              <p className="rs-small" data-testid="sweep-note">
-                Strip under the Δ plot: the {method === 'naive' ? 'textbook' : 'robust'} method’s case at each position (grey miss, green two hits, blue inside, red behind, gold
-                tangent). {series.tangents.length ? `Δ crosses 0 where the line touches the sphere (tangent, |${sweepMode === 'offset' ? 'h / r' : 'ψ / α'}| = 1).` : 'In this sweep the line never touches the sphere.'}{' '}
-                {series.naiveSignWrong > 0 ? (
-                  <strong data-testid="sweep-naive-wrong" data-value={series.naiveSignWrong}>
-                    The textbook Δ has the wrong sign (or is 0) at {series.naiveSignWrong} of {series.x.length} positions: rounding, not geometry.
-                  </strong>
-                ) : null}
-              </p>
+              <SweepPlotsBlock tl={tl} modelAt={modelAt} sweep={sweep} sweepMode={sweepMode} xLabel={xLabel} method={method} />
             </div>
           </div>
           <DerivationBlock testId="derivation">
@@ -478,6 +467,45 @@ function LiveCrossSection({
   useLayoutEffect(() => latest.current(tl.now()));
   const first = rayAt(tl.now());
   return <CrossSection {...first} onChange={onChange} fitExtra={fitExtra} drawRef={drawRef} />;
+}
+
+/**
+ * The two sweep plots and their note. The sweep's samples are computed here, in the exam part's
+ * body, which mounts after the page's first render in a time-sliced transition (ui/Deferred), so
+ * they are not part of one long first task (issue 15).
+ */
+function SweepPlotsBlock({
+  tl,
+  modelAt,
+  sweep,
+  sweepMode,
+  xLabel,
+  method,
+}: {
+  tl: Timeline;
+  modelAt: (t: number) => RaySphereModel;
+  sweep: Sweep;
+  sweepMode: SweepMode;
+  xLabel: string;
+  method: 'naive' | 'stable';
+}) {
+  // sweepSeries reads only the method of the parameters
+  const series = useMemo(() => sweepSeries({ method }, sweep), [method, sweep]);
+  const tangentX = useMemo(() => series.tangents.map((tt) => sweepAt(sweep, tt).x), [series, sweep]);
+  return (
+    <>
+      <LivePlots tl={tl} modelAt={modelAt} sweep={sweep} series={series} tangentX={tangentX} xLabel={xLabel} method={method} />
+      <p className="rs-small" data-testid="sweep-note">
+        Strip under the Δ plot: the {method === 'naive' ? 'textbook' : 'robust'} method’s case at each position (grey miss, green two hits, blue inside, red behind, gold
+        tangent). {series.tangents.length ? `Δ crosses 0 where the line touches the sphere (tangent, |${sweepMode === 'offset' ? 'h / r' : 'ψ / α'}| = 1).` : 'In this sweep the line never touches the sphere.'}{' '}
+        {series.naiveSignWrong > 0 ? (
+          <strong data-testid="sweep-naive-wrong" data-value={series.naiveSignWrong}>
+            The textbook Δ has the wrong sign (or is 0) at {series.naiveSignWrong} of {series.x.length} positions: rounding, not geometry.
+          </strong>
+        ) : null}
+      </p>
+    </>
+  );
 }
 
 /**
