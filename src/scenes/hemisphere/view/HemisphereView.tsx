@@ -74,7 +74,6 @@ export interface HemisphereViewProps {
   drawRef?: { current: ((frame: AnimFrame) => void) | null };
 }
 
-const COUNT_FORMAT = new Intl.NumberFormat('en-US');
 
 /**
  * Buffers sized for n points, rounded up to a power of two (at least 4096, at most MAX_N): sized
@@ -128,7 +127,7 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
     const v = drawn();
     // per frame while the warp morph plays: write only on a change (toLocaleString is slow)
     if (label.current && label.current.dataset.value !== String(v)) {
-      label.current.textContent = COUNT_FORMAT.format(v);
+      label.current.textContent = formatCount(v);
       label.current.dataset.value = String(v);
     }
   };
