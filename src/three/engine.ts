@@ -148,7 +148,7 @@ const yieldTask = () => new Promise<void>((resolve) => nextTask(resolve));
 
 /**
  * Start an engine in separate tasks, yielding in between (a phone counts every task over 50 ms
- * as blocking): the WebGL probe (its context creation), then the renderer, camera and controls.
+ * as blocking): the WebGL probe (its context creation), the renderer, then camera and controls.
  * Resolves to null when WebGL is missing, or when `alive()` turns false meanwhile (nothing is left
  * behind then). Throws what three.js throws when the renderer cannot be created.
  */
@@ -158,10 +158,21 @@ export async function startEngine(container: HTMLElement, ariaLabel: string, ali
   if (!webglAvailable()) return null;
   await yieldTask();
   if (!alive()) return null;
-  return createEngine(container, ariaLabel);
+  const made = createRenderer();
+  await yieldTask();
+  if (!alive()) {
+    made.renderer.dispose();
+    return null;
+  }
+  return createEngine(container, ariaLabel, made);
 }
 
-export function createEngine(container: HTMLElement, ariaLabel: string): Engine {
+/**
+ * The renderer: on a software WebGL the probe's context if still unused (see {@link spare}).
+ * Its own task at start: three's context set-up (extensions, capabilities, state) alone is tens
+ * of ms on a phone.
+ */
+function createRenderer(): { renderer: Three.WebGLRenderer; software: boolean } {
   // On a software WebGL (no usable GPU) every frame is drawn by the CPU and, with software
   // compositing, read back synchronously on the main thread: at device pixel ratio 1.75–2 with 4×
   // multisampling that is tens of ms per frame, and an animation of a few seconds blocks the page
@@ -174,6 +185,11 @@ export function createEngine(container: HTMLElement, ariaLabel: string): Engine 
     : new THREE.WebGLRenderer({ antialias: !software, alpha: true, powerPreference: 'low-power' });
   renderer.setPixelRatio(software ? 1 : Math.min(window.devicePixelRatio || 1, 2));
   renderer.setClearColor(0x000000, 0);
+  return { renderer, software };
+}
+
+export function createEngine(container: HTMLElement, ariaLabel: string, made: { renderer: Three.WebGLRenderer; software: boolean } = createRenderer()): Engine {
+  const { renderer, software } = made;
   const canvas = renderer.domElement;
   canvas.setAttribute('role', 'img');
   canvas.setAttribute('aria-label', ariaLabel);
