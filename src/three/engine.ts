@@ -108,7 +108,7 @@ const SOFTWARE_ATTRS: WebGLContextAttributes = {
 let spare: { canvas: HTMLCanvasElement; gl: WebGL2RenderingContext } | null = null;
 
 /**
- * Can the browser give a WebGL context, and is it a software one (SwiftShader, llvmpipe …)?
+ * Can the browser give a WebGL 2 context, and is it a software one (SwiftShader, llvmpipe …)?
  * Checked once, without three (so no console error). The probe context is released, except on a
  * software WebGL, where the first engine adopts it.
  */
@@ -116,14 +116,14 @@ export function probeWebGL(): { available: boolean; software: boolean } {
   if (probed) return probed;
   try {
     const c = document.createElement('canvas');
-    const gl2 = c.getContext('webgl2', SOFTWARE_ATTRS) as WebGL2RenderingContext | null;
-    const gl = gl2 ?? (c.getContext('webgl') as WebGLRenderingContext | null);
+    // three.js (r163 on) draws with WebGL 2 only: without it the view is off (and three's error unlogged)
+    const gl = c.getContext('webgl2', SOFTWARE_ATTRS) as WebGL2RenderingContext | null;
     if (!gl) return (probed = { available: false, software: false });
     // Chromium reports the real renderer in RENDERER; others through WEBGL_debug_renderer_info.
     const dbg = gl.getExtension('WEBGL_debug_renderer_info');
     const name = `${String(gl.getParameter(gl.RENDERER) ?? '')} ${dbg ? String(gl.getParameter(dbg.UNMASKED_RENDERER_WEBGL) ?? '') : ''}`;
     const software = SOFTWARE_GL.test(name);
-    if (gl2 && software) spare = { canvas: c, gl: gl2 };
+    if (software) spare = { canvas: c, gl };
     else gl.getExtension('WEBGL_lose_context')?.loseContext();
     return (probed = { available: true, software });
   } catch {
@@ -131,7 +131,7 @@ export function probeWebGL(): { available: boolean; software: boolean } {
   }
 }
 
-/** True when the browser can give a WebGL context (checked without three, so no console error). */
+/** True when the browser can give a WebGL 2 context (checked without three, so no console error). */
 export function webglAvailable(): boolean {
   return probeWebGL().available;
 }
