@@ -420,7 +420,7 @@ export function createEngine(container: HTMLElement, ariaLabel: string, made: { 
     start: () => {
       if (started || disposed) return;
       started = true;
-      container.appendChild(canvas);
+      container.prepend(canvas); // under the triad and the buttons, as when it was added at creation
       needsRender = true;
       schedule();
     },
