@@ -5,8 +5,11 @@
 import { useEffect, useRef } from 'react';
 import { fillSequence2D, type SequenceKind } from '../../../core/random';
 import { xiCss } from './colors';
+import { nextTask } from '../../../ui/chunked';
 
 const MAX_SHOWN = 4096;
+/** Dots drawn per task (each is a CSS colour parse and a fill). */
+const POINTS_PER_TASK = 1024;
 
 export function UnitSquare({ kind, seed, n, size = 220 }: { kind: SequenceKind; seed: number; n: number; size?: number }) {
   const canvas = useRef<HTMLCanvasElement>(null);
@@ -47,30 +50,45 @@ export function UnitSquare({ kind, seed, n, size = 220 }: { kind: SequenceKind; 
     const u = new Float64Array(2 * shown);
     fillSequence2D(kind, seed, n, u, 0, shown, 0);
     const r = shown > 1000 ? 1.2 : 2;
-    for (let i = 0; i < shown; i++) {
-      g.fillStyle = xiCss(u[2 * i]!, u[2 * i + 1]!);
-      g.fillRect(X(u[2 * i]!) - r, Y(u[2 * i + 1]!) - r, 2 * r, 2 * r);
-    }
-    g.strokeStyle = fg;
-    g.lineWidth = 1;
-    g.strokeRect(X(0), Y(1), s, s);
-    // the first sample, which the 3D view and the worked example track
-    if (shown > 0) {
-      g.lineWidth = 2;
-      g.beginPath();
-      g.arc(X(u[0]!), Y(u[1]!), 6, 0, 2 * Math.PI);
-      g.stroke();
-    }
-    g.fillStyle = fg;
-    g.font = '12px sans-serif';
-    g.fillText('ξ₁ →', X(1) - 30, Y(0) + 16);
-    g.fillText('0', X(0) - 4, Y(0) + 16);
-    g.fillText('1', X(1) - 4, Y(0) + 16);
-    g.save();
-    g.translate(X(0) - 8, Y(0.5));
-    g.rotate(-Math.PI / 2);
-    g.fillText('ξ₂ →', 0, 0);
-    g.restore();
+    // the points POINTS_PER_TASK at a time, one task each (issue 15: 4096 coloured dots were one
+    // task of ~150 ms at a phone's 4× CPU slowdown, on the scene's first screen); same picture
+    let cancelled = false;
+    let i = 0;
+    const drawPoints = () => {
+      if (cancelled) return;
+      for (const end = Math.min(shown, i + POINTS_PER_TASK); i < end; i++) {
+        g.fillStyle = xiCss(u[2 * i]!, u[2 * i + 1]!);
+        g.fillRect(X(u[2 * i]!) - r, Y(u[2 * i + 1]!) - r, 2 * r, 2 * r);
+      }
+      if (i < shown) nextTask(drawPoints);
+      else drawFrame();
+    };
+    const drawFrame = () => {
+      g.strokeStyle = fg;
+      g.lineWidth = 1;
+      g.strokeRect(X(0), Y(1), s, s);
+      // the first sample, which the 3D view and the worked example track
+      if (shown > 0) {
+        g.lineWidth = 2;
+        g.beginPath();
+        g.arc(X(u[0]!), Y(u[1]!), 6, 0, 2 * Math.PI);
+        g.stroke();
+      }
+      g.fillStyle = fg;
+      g.font = '12px sans-serif';
+      g.fillText('ξ₁ →', X(1) - 30, Y(0) + 16);
+      g.fillText('0', X(0) - 4, Y(0) + 16);
+      g.fillText('1', X(1) - 4, Y(0) + 16);
+      g.save();
+      g.translate(X(0) - 8, Y(0.5));
+      g.rotate(-Math.PI / 2);
+      g.fillText('ξ₂ →', 0, 0);
+      g.restore();
+    };
+    drawPoints();
+    return () => {
+      cancelled = true;
+    };
   }, [kind, seed, n, shown, size]);
   return (
     <figure className="hemi-square">
