@@ -27,6 +27,14 @@ function inlineWorkers(): Plugin {
   };
 }
 
+/**
+ * @stdlib's packages are CommonJS without a `sideEffects` field, so a bundler keeps them (and runs
+ * their module code, tens of ms on a phone) in every chunk that imports them, even unused: the
+ * χ² test's gammainc ended up in the hemisphere page's chunk, though only its worker runs the test
+ * (issue 15). They have no side effects on import.
+ */
+const treeshake = { moduleSideEffects: [{ test: /[\\/]node_modules[\\/]@stdlib[\\/]/, sideEffects: false }] };
+
 // Relative base: the static build works from any folder of any static host (hash routing).
 export default defineConfig(({ mode }) => {
   const single = mode === 'single';
@@ -74,8 +82,9 @@ export default defineConfig(({ mode }) => {
       chunkSizeWarningLimit: 5000,
       outDir: single ? 'dist-single' : 'dist',
       rolldownOptions: single
-        ? {}
+        ? { treeshake }
         : {
+            treeshake,
             output: {
               // three.js, Plotly and KaTeX get recognisable chunk names (vendor-three-*.js, …) for the
               // budgets. mathjs is left to the default splitting on purpose: the parse-only expression
@@ -91,7 +100,9 @@ export default defineConfig(({ mode }) => {
                 groups: [
                   { name: 'vendor-three', test: /[\\/]node_modules[\\/]three[\\/]/ },
                   { name: 'vendor-plotly', test: /[\\/]node_modules[\\/]plotly\.js-cartesian-dist-min[\\/]/ },
-                  { name: 'vendor-katex', test: /[\\/]node_modules[\\/]katex[\\/]/ },
+                  // KaTeX's JavaScript only: its stylesheet's module must not pull the typesetter into
+                  // the page (KaTeX runs in a worker, src/ui/katex.worker.ts)
+                  { name: 'vendor-katex', test: /[\\/]node_modules[\\/]katex[\\/].*\.m?js$/ },
                 ],
               },
             },

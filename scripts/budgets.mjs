@@ -64,6 +64,8 @@ const LIMITS = [
   [/^vendor-plotly-/, 520_000],
   [/^vendor-three-/, 200_000],
   [/^vendor-katex-/, 110_000],
+  [/^katex\.worker-/, 110_000], // KaTeX typesets in a worker (src/ui/katex.worker.ts)
+  [/^katex-.*\.css$/, 20_000],
   [/^scene-/, 150_000],
   [/^PracticeRoute-/, 60_000], // practice mode (src/practice), its own lazy chunk
 ];

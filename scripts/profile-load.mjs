@@ -5,7 +5,7 @@
  * (self time) and by script, plus the long tasks (> 50 ms) seen by a PerformanceObserver. A
  * diagnostic for issue 15 (Lighthouse TBT), not a test.
  *
- *   node scripts/profile-load.mjs [--dist dist] [--port 4336] [--ms 8000] [--top 25] '#/hemisphere' …
+ *   node scripts/profile-load.mjs [--dist dist] [--port 4336] [--ms 8000] [--top 25] [--rate 4] '#/hemisphere' …
  */
 import { chromium } from 'playwright-core';
 import { CHROMIUM_ARGS, findChromium } from './chromium.mjs';
@@ -17,6 +17,8 @@ const dist = opt('--dist', 'dist');
 const port = Number(opt('--port', '4336'));
 const ms = Number(opt('--ms', '8000'));
 const top = Number(opt('--top', '25'));
+// CPU slowdown (1 = none: then each busy stretch is about one task, as in Lighthouse's unthrottled trace)
+const rate = Number(opt('--rate', '4'));
 const routes = args.length ? args : ['#/hemisphere'];
 
 const server = await serveDist(dist, port);
@@ -26,7 +28,7 @@ try {
     const ctx = await browser.newContext({ viewport: { width: 412, height: 823 }, deviceScaleFactor: 1.75, isMobile: true, hasTouch: true, serviceWorkers: 'block' });
     const page = await ctx.newPage();
     const cdp = await ctx.newCDPSession(page);
-    await cdp.send('Emulation.setCPUThrottlingRate', { rate: 4 });
+    await cdp.send('Emulation.setCPUThrottlingRate', { rate });
     await cdp.send('Profiler.enable');
     await cdp.send('Profiler.setSamplingInterval', { interval: 200 });
     await page.addInitScript(() => {

@@ -33,7 +33,7 @@ export function SceneHost({ info, query, flags, theme }: Props) {
     // Every scene's first screen is its exam question, typeset by KaTeX: fetch KaTeX alongside the
     // scene's chunk instead of after the scene's first render (one network round trip less before
     // the largest paint on a phone; issue 15).
-    void import('../ui/MathTex').then((m) => m.loadKatex()).catch(() => undefined);
+    void import('../ui/MathTex').then((m) => m.prepareMath()).catch(() => undefined);
     loader().then(
       // A transition: React renders the scene's (large) first tree in slices of a few ms that yield
       // to the browser, instead of one long task (Lighthouse: total blocking time on load).

@@ -1,14 +1,19 @@
-import { StrictMode } from 'react';
+import { StrictMode, startTransition } from 'react';
 import { createRoot } from 'react-dom/client';
 import { App } from './App';
 import '../ui/styles.css';
 
 const root = document.getElementById('root');
 if (root) {
-  createRoot(root).render(
-    <StrictMode>
-      <App />
-    </StrictMode>,
+  const r = createRoot(root);
+  // A transition: React renders the shell's first tree in slices that yield to the browser, not in
+  // one task (on a phone, code that has never run yet is slow; issue 15).
+  startTransition(() =>
+    r.render(
+      <StrictMode>
+        <App />
+      </StrictMode>,
+    ),
   );
 }
 

@@ -1,16 +1,81 @@
 import { useEffect, useRef, useState } from 'react';
-import { flushSync } from 'react-dom';
 import { flushMathForPrint, scheduleMath } from './mathQueue';
+
+import type { TypesetReply, TypesetRequest } from './katex.worker';
 
 type Katex = typeof import('katex');
 let katexPromise: Promise<Katex> | null = null;
+let cssPromise: Promise<unknown> | null = null;
 
-/** Load KaTeX (and its stylesheet) once, on first use. */
+/** KaTeX's stylesheet (loaded once, on first use: every typeset formula needs it). */
+function loadKatexCss(): Promise<unknown> {
+  if (!cssPromise) cssPromise = import('katex/dist/katex.min.css');
+  return cssPromise;
+}
+
+/** KaTeX itself on the main thread (and its stylesheet): only where no worker can be started. */
 export function loadKatex(): Promise<Katex> {
   if (!katexPromise) {
-    katexPromise = Promise.all([import('katex'), import('katex/dist/katex.min.css')]).then(([m]) => (m as unknown as { default?: Katex }).default ?? m);
+    katexPromise = Promise.all([import('katex'), loadKatexCss()]).then(([m]) => (m as unknown as { default?: Katex }).default ?? m);
   }
   return katexPromise;
+}
+
+/**
+ * Typesetting happens in a worker (./katex.worker): one aligned derivation is tens of ms of
+ * KaTeX on a phone, a long task each on the main thread (issue 15). Where a worker cannot be
+ * started, KaTeX runs on the main thread instead.
+ */
+let worker: Worker | null | undefined;
+let nextId = 1;
+const waiting = new Map<number, { resolve: (html: string | null) => void; reject: (e: unknown) => void }>();
+
+function katexWorker(): Worker | null {
+  if (worker !== undefined) return worker;
+  try {
+    worker = new Worker(new URL('./katex.worker.ts', import.meta.url), { type: 'module' });
+    worker.onmessage = (e: MessageEvent<TypesetReply>) => {
+      const w = waiting.get(e.data.id);
+      waiting.delete(e.data.id);
+      w?.resolve(e.data.html);
+    };
+    worker.onerror = (e) => {
+      // the worker could not load: the rest is typeset on the main thread
+      e.preventDefault();
+      worker?.terminate();
+      worker = null;
+      const left = [...waiting.values()];
+      waiting.clear();
+      for (const w of left) w.reject(new Error('the KaTeX worker could not start'));
+    };
+  } catch {
+    worker = null;
+  }
+  return worker;
+}
+
+/** Start the worker and the stylesheet early (a scene page is about to show formulas). */
+export function prepareMath(): void {
+  void loadKatexCss().catch(() => undefined);
+  katexWorker();
+}
+
+const OPTIONS = { throwOnError: false, strict: 'ignore', output: 'htmlAndMathml' } as const;
+
+/** HTML for `tex` (null if KaTeX fails on it), typeset in the worker when there is one. */
+function typeset(tex: string, display: boolean): Promise<string | null> {
+  const w = katexWorker();
+  const onMain = () => loadKatex().then((k) => k.renderToString(tex, { ...OPTIONS, displayMode: display }));
+  if (!w) return onMain();
+  return new Promise<string | null>((resolve, reject) => {
+    const id = nextId++;
+    waiting.set(id, { resolve, reject });
+    w.postMessage({ id, tex, display } satisfies TypesetRequest);
+  }).then(
+    // the HTML goes in only with its stylesheet
+    (html) => loadKatexCss().then(() => html),
+    () => onMain(),
+  );
 }
 
 /**
@@ -33,16 +98,20 @@ function remember(key: string, html: string): void {
 }
 
 let printHooked = false;
-/** Before printing, every formula still waiting for idle time is typeset (and committed) at once. */
+/**
+ * Before printing, every formula still waiting for idle time is sent to be typeset at once. The
+ * worker answers within moments, but a print started in the first seconds after opening a page
+ * can still show some formulas as TeX source.
+ */
 function hookPrint(): void {
   if (printHooked || typeof window === 'undefined') return;
   printHooked = true;
-  window.addEventListener('beforeprint', () => flushSync(() => flushMathForPrint()));
+  window.addEventListener('beforeprint', () => flushMathForPrint());
 }
 
 /**
- * TeX rendered by KaTeX (HTML + MathML for screen readers). KaTeX loads lazily; until then, and if
- * the TeX is invalid, the source is shown as code. Never throws.
+ * TeX rendered by KaTeX (HTML + MathML for screen readers), typeset in a worker; until then, and
+ * if the TeX is invalid, the source is shown as code. Never throws.
  */
 export function MathTex({ tex, display = false, className }: { tex: string; display?: boolean; className?: string }) {
   const key = `${display ? 'D' : 'I'}${tex}`;
@@ -55,26 +124,20 @@ export function MathTex({ tex, display = false, className }: { tex: string; disp
       return;
     }
     let alive = true;
-    let cancel = () => {};
     hookPrint();
-    loadKatex()
-      .then((k) => {
-        if (!alive) return;
-        // Each formula renders in its own slot: at once (sliced with the others) when it is near
-        // the screen, else in idle time (./mathQueue). When KaTeX arrives, a scene's dozens of
-        // formulas would otherwise all render in one long task.
-        cancel = scheduleMath(ref.current, () => {
-          if (!alive) return;
-          try {
-            const out = k.renderToString(tex, { displayMode: display, throwOnError: false, strict: 'ignore', output: 'htmlAndMathml' });
-            remember(key, out);
-            setHtml(out);
-          } catch {
-            setHtml(null);
-          }
+    // Each formula is typeset in its own slot: at once when it is near the screen, else in idle
+    // time (./mathQueue), so the formulas on screen come first and the HTML of a whole page is
+    // never inserted in one go.
+    const cancel = scheduleMath(ref.current, () => {
+      typeset(tex, display)
+        .then((out) => {
+          if (out !== null) remember(key, out);
+          if (alive) setHtml(out);
+        })
+        .catch(() => {
+          if (alive) setHtml(null);
         });
-      })
-      .catch(() => {});
+    });
     return () => {
       alive = false;
       cancel();

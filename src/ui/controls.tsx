@@ -1,3 +1,4 @@
+import { Deferred } from './Deferred';
 import { useEffect, useId, useState, type ReactNode } from 'react';
 import { formatNumber } from './Readout';
 
@@ -275,7 +276,9 @@ export function Notice({ kind = 'info', children, testId }: { kind?: 'info' | 'w
 export function SceneLayout({ controls, main, aside }: { controls: ReactNode; main: ReactNode; aside?: ReactNode }) {
   return (
     <div className={`scene-layout${aside ? ' has-aside' : ''}`}>
-      <div className="scene-controls">{controls}</div>
+      <div className="scene-controls">
+        <Deferred estimate={600}>{controls}</Deferred>
+      </div>
       <div className="scene-main">{main}</div>
       {aside ? <div className="scene-aside">{aside}</div> : null}
     </div>

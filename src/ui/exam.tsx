@@ -13,8 +13,13 @@
  *
  * `part=1a` in a link lands on `<ExamPart id="1a">` (the shell scrolls to `#part-1a`). The shell adds
  * previous / next question links under the scene (QuestionNav).
+ *
+ * A part's heading and question are drawn with the page; its body (derivation, answer, figures),
+ * and the body of Explore further, mount when they come near the screen or in idle time
+ * (./Deferred): the first screen of a phone is interactive before the rest of the page exists.
  */
-import type { ReactNode } from 'react';
+import { Children, type ReactNode } from 'react';
+import { Deferred } from './Deferred';
 import { questionStart, type SceneInfo } from '../scenes/registry';
 import type { ShellFlags } from '../app/route';
 
@@ -48,7 +53,7 @@ export function ExamPart({ id, title, asks, children }: { id: string; title?: st
         <span className="exam-asks-label">The exam asks</span>
         <div className="exam-asks-text">{asks}</div>
       </div>
-      {children}
+      <Deferred>{children}</Deferred>
     </section>
   );
 }
@@ -90,7 +95,12 @@ export function ExploreFurther({ children, intro }: { children: ReactNode; intro
         Explore further <span className="explore-badge">beyond the exam</span>
       </h2>
       {intro ? <p className="explore-intro">{intro}</p> : null}
-      {children}
+      {/* each panel mounts on its own: one panel's plots and tables are enough for one task */}
+      {Children.toArray(children).map((c, i) => (
+        <Deferred key={i} estimate={400}>
+          {c}
+        </Deferred>
+      ))}
     </section>
   );
 }

@@ -26,6 +26,8 @@ export async function openScene(page: Page, hash: string): Promise<void> {
   await page.goto(`./${hash.startsWith('#') ? hash : `#${hash}`}`);
   await page.waitForSelector('main#main');
   await expect(page.locator('.loading')).toHaveCount(0);
+  // the exam page's sections below the first screen mount in idle time (src/ui/Deferred.tsx)
+  await expect(page.locator('[data-deferred="pending"]')).toHaveCount(0, { timeout: 30_000 });
 }
 
 /** The `data-value` of a readout (the contract's full-precision value, or "none"). */

@@ -5,8 +5,9 @@
  */
 import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, readout, readoutNumber, waitForReadout, countAnimationFrames } from './fixtures';
-import { raceAt, raceTrack } from '../../src/scenes/monte-carlo/model';
-import { squarePdf1D } from '../../src/core/sampling/pdf1d';
+import { drawnEstimate, raceAt, raceTrack } from '../../src/scenes/monte-carlo/model';
+import { squarePdf1D, uniformPdf1D } from '../../src/core/sampling/pdf1d';
+import { compileXFast } from '../../src/scenes/monte-carlo/expr';
 
 const EXAM_X = [1.16, 1.98, 0.54, 1.26];
 const f = (x: number) => (x + 2) ** 2;
@@ -36,11 +37,16 @@ test.describe('exam Q4', () => {
     await expect(notes).toContainText(String(f(1.98)));
     await expect(notes).toContainText('18.84');
     await expect(notes).toContainText('slip');
-    // no samples given: the estimate comes from N drawn samples and is within 5 standard errors
-    const est = await readoutNumber(page, 'estimate');
+    // no samples given: the estimate comes from N drawn samples (in short tasks after the first
+    // render) and is within 5 standard errors
+    const est = Number(await waitForReadout(page, 'estimate', (v) => v !== 'none'));
     const se = await readoutNumber(page, 'stderr');
     expect(se).toBeGreaterThan(0);
     close(est, exactSquare(0, 2), 5 * se);
+    // exactly the model's estimate with these settings (N = 10000 i.i.d. uniform points, seed 1)
+    const want = drawnEstimate(compileXFast('(x+2)^2')!.fn, uniformPdf1D(0, 2), 'independent', 1, 10000);
+    expect(est).toBe(want.estimate);
+    expect(se).toBe(want.stderr);
   });
 
   test('samples= the exam’s four: estimate and standard error of exactly these samples', async ({ page }) => {
@@ -59,7 +65,7 @@ test.describe('exam Q4', () => {
     expect(await readoutNumber(page, 'stderr')).toBeLessThan(1e-12);
 
     await openScene(page, '#/monte-carlo?pdf=proportional&n=5000&strategy=sobol');
-    close(await readoutNumber(page, 'estimate'), I, 1e-11);
+    close(Number(await waitForReadout(page, 'estimate', (v) => v !== 'none')), I, 1e-11);
     expect(await readoutNumber(page, 'stderr')).toBeLessThan(1e-10);
   });
 });

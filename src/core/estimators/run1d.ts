@@ -72,6 +72,46 @@ export function estimate1D(prob: Problem1D, n: number, buf = new Batch1D()): McE
 }
 
 /**
+ * {@link estimate1D} in steps of one batch (BATCH points), so a page can spread it over several
+ * short tasks; the same arithmetic in the same order, so `result()` equals estimate1D(prob, n)
+ * exactly once `step()` has returned true.
+ */
+export class EstimateRun1D {
+  private w = new Welford();
+  private invalid = 0;
+  private s = 0;
+
+  constructor(
+    readonly prob: Problem1D,
+    readonly n: number,
+    private buf = new Batch1D(),
+  ) {}
+
+  /** Process the next batch; returns true when all n points are in. */
+  step(): boolean {
+    const { n, buf, w } = this;
+    if (this.s < n) {
+      const s = this.s;
+      const e = Math.min(n, s + BATCH);
+      fillTerms(this.prob, n, s, e, buf);
+      for (let i = 0; i < e - s; i++) {
+        const y = buf.y[i]!;
+        if (Number.isFinite(y)) w.add(y);
+        else this.invalid++;
+      }
+      this.s = e;
+    }
+    return this.s >= n;
+  }
+
+  /** The estimate of the points processed so far (all n once step() has returned true). */
+  result(): McEstimate {
+    const w = this.w;
+    return { n: w.count, estimate: w.count > 0 ? w.mean : NaN, variance: w.variance(), stderr: w.standardError(), invalid: this.invalid };
+  }
+}
+
+/**
  * A resumable convergence run: call `step(budget)` until it returns true; `series` fills in as the
  * checkpoints are passed. `done` counts the samples drawn so far, `total` the samples needed.
  */

@@ -98,9 +98,43 @@ export class Rng {
     return x % n;
   }
 
-  /** Fill `out` with uniform doubles in [0, 1); returns `out` (caller-owned buffer, no allocation). */
+  /**
+   * Fill `out` with uniform doubles in [0, 1): exactly the values of successive {@link nextFloat}
+   * calls; returns `out` (caller-owned buffer, no allocation). The two draws of each value are
+   * written out in one loop over local state (no call per draw): pages call this on load, before
+   * the JIT has warmed up, where a call per draw costs many times the arithmetic (issue 15).
+   */
   fill(out: Float64Array, start = 0, end = out.length): Float64Array {
-    for (let i = start; i < end; i++) out[i] = this.nextFloat();
+    let s0 = this.s0;
+    let s1 = this.s1;
+    let s2 = this.s2;
+    let s3 = this.s3;
+    for (let i = start; i < end; i++) {
+      // nextUint32, twice (rotl written out)
+      let r = Math.imul(s1, 5);
+      const a = Math.imul((r << 7) | (r >>> 25), 9) >>> 5;
+      let t = s1 << 9;
+      s2 ^= s0;
+      s3 ^= s1;
+      s1 ^= s2;
+      s0 ^= s3;
+      s2 ^= t;
+      s3 = (s3 << 11) | (s3 >>> 21);
+      r = Math.imul(s1, 5);
+      const b = Math.imul((r << 7) | (r >>> 25), 9) >>> 6;
+      t = s1 << 9;
+      s2 ^= s0;
+      s3 ^= s1;
+      s1 ^= s2;
+      s0 ^= s3;
+      s2 ^= t;
+      s3 = (s3 << 11) | (s3 >>> 21);
+      out[i] = (a * 67108864 + b) * TWO_POW_M53;
+    }
+    this.s0 = s0;
+    this.s1 = s1;
+    this.s2 = s2;
+    this.s3 = s3;
     return out;
   }
 }

@@ -264,6 +264,43 @@ export function bilinear(grid: TextureGrid, u: number, v: number, opts: LookupOp
 }
 
 /**
+ * The four taps of a bilinear lookup without its stencil object, for code that only asks which
+ * cell a query falls in (many times, e.g. along a path): writes i0, i1, j0, j1 (as in
+ * {@link bilinearStencil}, by the same arithmetic as {@link bilinear}) to out[at … at + 3].
+ */
+export function bilinearTapsInto(grid: TextureGrid, u: number, v: number, opts: LookupOptions, out: Float64Array, at = 0): void {
+  const w = grid.width;
+  const h = grid.height;
+  const vv = opts.vflip ? 1 - v : v;
+  if (opts.align === 'corner') {
+    const i0 = Math.min(Math.floor(addressCoord(u, opts.wrap) * (w - 1)), w - 2);
+    const j0 = Math.min(Math.floor(addressCoord(vv, opts.wrap) * (h - 1)), h - 2);
+    out[at] = i0;
+    out[at + 1] = i0 + 1;
+    out[at + 2] = j0;
+    out[at + 3] = j0 + 1;
+    return;
+  }
+  const ri = Math.floor((Number.isFinite(u) ? u : 0) * w - 0.5);
+  const rj = Math.floor((Number.isFinite(vv) ? vv : 0) * h - 0.5);
+  out[at] = addressIndex(ri, w, opts.wrap);
+  out[at + 1] = addressIndex(ri + 1, w, opts.wrap);
+  out[at + 2] = addressIndex(rj, h, opts.wrap);
+  out[at + 3] = addressIndex(rj + 1, h, opts.wrap);
+}
+
+/** The index j · width + i into grid.values of the node a nearest lookup returns ({@link nearestStencil}'s i, j), without allocation. */
+export function nearestTapIndex(grid: TextureGrid, u: number, v: number, opts: LookupOptions): number {
+  const w = grid.width;
+  const h = grid.height;
+  const vv = opts.vflip ? 1 - v : v;
+  if (opts.align === 'corner') return Math.round(addressCoord(vv, opts.wrap) * (h - 1)) * w + Math.round(addressCoord(u, opts.wrap) * (w - 1));
+  const i = addressIndex(Math.floor((Number.isFinite(u) ? u : 0) * w), w, opts.wrap);
+  const j = addressIndex(Math.floor((Number.isFinite(vv) ? vv : 0) * h), h, opts.wrap);
+  return j * w + i;
+}
+
+/**
  * The exam key's step form of a bilinear lookup: interpolate along u on the upper row (c_u) and
  * on the lower row (c_l), each with the division by the cell size, then along v:
  *
@@ -291,11 +328,70 @@ export function bilinearSteps(s: BilinearStencil): BilinearSteps {
 /** Which reconstruction filter. */
 export type Filter = 'nearest' | 'bilinear';
 
+type PixelWindow = { uMin: number; uMax: number; vMin: number; vMax: number };
+
+/** The u of each pixel column's centre and the v (flipped when opts.vflip) of each row's, as {@link reconstructInto} samples them. */
+function pixelCoords(opts: LookupOptions, width: number, height: number, window: PixelWindow): { us: Float64Array; vs: Float64Array } {
+  const su = (window.uMax - window.uMin) / width;
+  const sv = (window.vMax - window.vMin) / height;
+  const us = new Float64Array(width);
+  for (let px = 0; px < width; px++) us[px] = window.uMin + (px + 0.5) * su;
+  const vs = new Float64Array(height);
+  for (let py = 0; py < height; py++) {
+    const v = window.vMax - (py + 0.5) * sv;
+    vs[py] = opts.vflip ? 1 - v : v;
+  }
+  return { us, vs };
+}
+
+/** Per pixel column the texel column, per row the texel row's offset j · width, of nearestValueFast at those coordinates. */
+function nearestTaps(grid: TextureGrid, opts: LookupOptions, us: Float64Array, vs: Float64Array): { col: Int32Array; rowOff: Int32Array } {
+  const w = grid.width;
+  const h = grid.height;
+  const col = new Int32Array(us.length);
+  const rowOff = new Int32Array(vs.length);
+  if (opts.align === 'corner') {
+    for (let px = 0; px < us.length; px++) col[px] = Math.round(addressCoord(us[px], opts.wrap) * (w - 1));
+    for (let py = 0; py < vs.length; py++) rowOff[py] = Math.round(addressCoord(vs[py], opts.wrap) * (h - 1)) * w;
+  } else {
+    for (let px = 0; px < us.length; px++) {
+      const u = us[px];
+      col[px] = addressIndex(Math.floor((Number.isFinite(u) ? u : 0) * w), w, opts.wrap);
+    }
+    for (let py = 0; py < vs.length; py++) {
+      const vv = vs[py];
+      rowOff[py] = addressIndex(Math.floor((Number.isFinite(vv) ? vv : 0) * h), h, opts.wrap) * w;
+    }
+  }
+  return { col, rowOff };
+}
+
+/**
+ * Where each pixel of a nearest reconstruction ({@link reconstructInto}) reads the grid: the pixel
+ * (px, py) is grid.values[rowOff[py] + col[px]]. For images coloured per texel instead of per pixel.
+ */
+export function nearestPixelTaps(
+  grid: TextureGrid,
+  opts: LookupOptions,
+  width: number,
+  height: number,
+  window: PixelWindow = { uMin: 0, uMax: 1, vMin: 0, vMax: 1 },
+): { col: Int32Array; rowOff: Int32Array } {
+  const { us, vs } = pixelCoords(opts, width, height, window);
+  return nearestTaps(grid, opts, us, vs);
+}
+
 /**
  * Reconstruct the whole texture as an image: out[py · width + px] = lookup at the pixel centre
  * u = (px + ½)/width, v = 1 − (py + ½)/height (image rows top to bottom, v = 1 on top), over the
- * window [uMin, uMax] × [vMin, vMax] of (u, v) (default [0, 1]²). Batched, allocation-free,
- * writes into the caller's buffer (length ≥ width · height). Returns out.
+ * window [uMin, uMax] × [vMin, vMax] of (u, v) (default [0, 1]²). Batched, writes into the
+ * caller's buffer (length ≥ width · height). Returns out.
+ *
+ * A lookup is separable: its column part (taps and weight) depends on u only and its row part on
+ * v only. So each column's and each row's part is computed once, with exactly the arithmetic of
+ * {@link bilinear} / {@link nearestValueFast} for that coordinate, and the pixels combine them in
+ * the same order: every pixel is bit for bit the lookup at its centre, in a plain loop over typed
+ * arrays (fast even on its first run, when the page loads).
  */
 export function reconstructInto(
   grid: TextureGrid,
@@ -306,14 +402,73 @@ export function reconstructInto(
   out: Float64Array,
   window: { uMin: number; uMax: number; vMin: number; vMax: number } = { uMin: 0, uMax: 1, vMin: 0, vMax: 1 },
 ): Float64Array {
-  const su = (window.uMax - window.uMin) / width;
-  const sv = (window.vMax - window.vMin) / height;
-  for (let py = 0; py < height; py++) {
-    const v = window.vMax - (py + 0.5) * sv;
-    const row = py * width;
+  const w = grid.width;
+  const h = grid.height;
+  const vals = grid.values;
+  const { us, vs } = pixelCoords(opts, width, height, window);
+  if (filter === 'nearest') {
+    const { col, rowOff } = nearestTaps(grid, opts, us, vs);
+    for (let py = 0; py < height; py++) {
+      const row = py * width;
+      const off = rowOff[py];
+      for (let px = 0; px < width; px++) out[row + px] = vals[off + col[px]];
+    }
+    return out;
+  }
+  // bilinear: per column i0, i1, fu; per row j0, j1, fv (as in bilinear)
+  const i0s = new Int32Array(width);
+  const i1s = new Int32Array(width);
+  const fus = new Float64Array(width);
+  const j0s = new Int32Array(height);
+  const j1s = new Int32Array(height);
+  const fvs = new Float64Array(height);
+  if (opts.align === 'corner') {
     for (let px = 0; px < width; px++) {
-      const u = window.uMin + (px + 0.5) * su;
-      out[row + px] = filter === 'bilinear' ? bilinear(grid, u, v, opts) : nearestValueFast(grid, u, v, opts);
+      const s = addressCoord(us[px], opts.wrap) * (w - 1);
+      const i0 = Math.min(Math.floor(s), w - 2);
+      i0s[px] = i0;
+      i1s[px] = i0 + 1;
+      fus[px] = s - i0;
+    }
+    for (let py = 0; py < height; py++) {
+      const s = addressCoord(vs[py], opts.wrap) * (h - 1);
+      const j0 = Math.min(Math.floor(s), h - 2);
+      j0s[py] = j0;
+      j1s[py] = j0 + 1;
+      fvs[py] = s - j0;
+    }
+  } else {
+    for (let px = 0; px < width; px++) {
+      const u = us[px];
+      const s = (Number.isFinite(u) ? u : 0) * w - 0.5;
+      const r = Math.floor(s);
+      fus[px] = s - r;
+      i0s[px] = addressIndex(r, w, opts.wrap);
+      i1s[px] = addressIndex(r + 1, w, opts.wrap);
+    }
+    for (let py = 0; py < height; py++) {
+      const vv = vs[py];
+      const s = (Number.isFinite(vv) ? vv : 0) * h - 0.5;
+      const r = Math.floor(s);
+      fvs[py] = s - r;
+      j0s[py] = addressIndex(r, h, opts.wrap);
+      j1s[py] = addressIndex(r + 1, h, opts.wrap);
+    }
+  }
+  for (let py = 0; py < height; py++) {
+    const row = py * width;
+    const o0 = j0s[py] * w;
+    const o1 = j1s[py] * w;
+    const fv = fvs[py];
+    const gv = 1 - fv;
+    for (let px = 0; px < width; px++) {
+      const i0 = i0s[px];
+      const i1 = i1s[px];
+      const fu = fus[px];
+      const gu = 1 - fu;
+      const lower = gu * vals[o0 + i0] + fu * vals[o0 + i1];
+      const upper = gu * vals[o1 + i0] + fu * vals[o1 + i1];
+      out[row + px] = gv * lower + fv * upper;
     }
   }
   return out;

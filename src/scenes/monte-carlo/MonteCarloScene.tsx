@@ -16,8 +16,9 @@ import {
   choosePdf,
   comparedStrategies,
   curves,
-  drawnEstimate,
+  drawnProblem,
   exactIntegral,
+  formatCount,
   keyComparison,
   roundTo,
   RACE_MAX,
@@ -29,7 +30,7 @@ import {
   type Fn1,
 } from './model';
 import { MAX_N, PDF_KINDS, STRATEGIES, type McSchema, type PdfKind, type Strategy } from './params';
-import type { McEstimate } from '../../core/estimators';
+import type { McEstimate, Problem1D } from '../../core/estimators';
 import type { ProblemArgs } from './jobs';
 import { compileX, compileXFast } from './expr';
 import { FunctionPlot } from './view/FunctionPlot';
@@ -41,6 +42,7 @@ import { RaceFigure } from './view/RaceFigure';
 import { Q4a, Q4b, Q4c, Q4d } from './view/ExamQ4';
 import type { RmseData } from './jobs';
 import { SamplesField, FnField } from './view/Fields';
+import { useSlicedEstimate } from './view/hooks';
 import './monte-carlo.css';
 
 const PDF_OPTIONS: { value: PdfKind; label: string }[] = [
@@ -98,10 +100,13 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
 
   // --- the estimate: given samples → exactly these; else n drawn samples ----------------------
   const n = Math.max(1, Math.min(MAX_N, Math.round(params.n)));
-  const syncEstimate = useMemo<McEstimate | null>(() => {
+  // drawn on the main thread (n ≤ SYNC_MAX_N) in short tasks after the first render: the same
+  // numbers as model.drawnEstimate, without one long task on load (issue 15)
+  const syncProblem = useMemo<Problem1D | null>(() => {
     if (given || !f || !choice || !choice.ok || n > SYNC_MAX_N) return null;
-    return drawnEstimate(f, choice.sampler, seq, params.seed, n);
+    return drawnProblem(f, choice.sampler, seq, params.seed);
   }, [given, f, choice, seq, params.seed, n]);
+  const syncEstimate = useSlicedEstimate(syncProblem, n);
   const needBig = !given && !!f && !!choice && choice.ok && n > SYNC_MAX_N;
   const baseArgs: ProblemArgs | null = useMemo(
     () =>
@@ -192,13 +197,13 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
   const estimateBlock = (
     <>
       <div className="readouts">
-        <Readout id="estimate" label={given ? `estimate from the ${given.length} given samples` : `estimate, N = ${n.toLocaleString('en')}`} value={estValue} digits={10} />
+        <Readout id="estimate" label={given ? `estimate from the ${given.length} given samples` : `estimate, N = ${formatCount(n)}`} value={estValue} digits={10} />
         <Readout id="stderr" label={qmc ? 's/√N (not an error estimate for these points)' : 'standard error s/√N'} value={stderrValue} digits={4} />
         <Readout id="abs-error" label="|estimate − exact|" value={estValue !== null && exact && Number.isFinite(exact.value) ? Math.abs(estValue - exact.value) : null} digits={3} />
         {qmc ? (
           <Readout
             id="rmse-at-n"
-            label={`RMSE over ${params.runs} randomized runs, N = ${rmseN.toLocaleString('en')}`}
+            label={`RMSE over ${params.runs} randomized runs, N = ${formatCount(rmseN)}`}
             value={rmseAtN}
             digits={4}
             note={rmseTask.running ? `running… ${Math.round(rmseTask.progress * 100)} %` : rmseTask.error ? `failed: ${rmseTask.error}` : undefined}
@@ -209,7 +214,7 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
         <Notice kind="warn" testId="stderr-not-error">
           {seq === 'stratified' ? 'Stratified (jittered)' : seq === 'halton' ? 'Halton' : 'Sobol'} points are not independent, so the standard error s/√N is not an error estimate for
           them (it treats the points as i.i.d. and usually overstates the error by far). The error of this method is measured instead as the RMSE over {params.runs} independently
-          randomized runs{rmseN < n ? ` (at N = ${rmseN.toLocaleString('en')})` : ''}.
+          randomized runs{rmseN < n ? ` (at N = ${formatCount(rmseN)})` : ''}.
         </Notice>
       ) : null}
       {givenNotFromP ? (
@@ -221,13 +226,13 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
       ) : null}
       {needBig && bigTask.running ? (
         <p className="mc-progress" role="status">
-          Estimating with {n.toLocaleString('en')} samples in a worker… {Math.round(bigTask.progress * 100)} %{' '}
+          Estimating with {formatCount(n)} samples in a worker… {Math.round(bigTask.progress * 100)} %{' '}
           <button type="button" onClick={bigTask.cancel}>
             Cancel
           </button>
         </p>
       ) : null}
-      {needBig && bigTask.result ? <p className="mc-note">{n.toLocaleString('en')} samples took {formatNumber(bigTask.result.ms, 3)} ms in the worker.</p> : null}
+      {needBig && bigTask.result ? <p className="mc-note">{formatCount(n)} samples took {formatNumber(bigTask.result.ms, 3)} ms in the worker.</p> : null}
       {needBig && bigTask.error ? <Notice kind="error">The run failed: {bigTask.error}</Notice> : null}
       {est && est.invalid > 0 ? (
         <Notice kind="error">
@@ -295,7 +300,7 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
                     </button>
                   )}
                 </div>
-                <h5 className="mc-subhead">With the page’s settings ({given ? 'the given samples' : `N = ${n.toLocaleString('en')} drawn samples`}, pdf {pdfKind}, {seq})</h5>
+                <h5 className="mc-subhead">With the page’s settings ({given ? 'the given samples' : `N = ${formatCount(n)} drawn samples`}, pdf {pdfKind}, {seq})</h5>
                 {estimateBlock}
               </>
             }

@@ -7,6 +7,7 @@ import {
   importanceEstimate,
   uniformEstimate,
   type McEstimate,
+  type Problem1D,
 } from '../../core/estimators';
 import { integrate1D, INTEGRATION_METHOD } from '../../core/verify/integrate1d';
 import {
@@ -35,6 +36,23 @@ export const KEY_PRINTED = { f: [9.98, 18.84, 6.45, 10.26], estimate: 21.45 } as
 
 /** A real function of x (compiled user expression or closed form). */
 export type Fn1 = (x: number) => number;
+
+/**
+ * A sample count with comma thousands separators, as `n.toLocaleString('en')` writes a
+ * non-negative integer, without Intl: the page's first toLocaleString loads ICU's number
+ * formatting, ~25–40 ms of main-thread time in the scene's first render (issue 15). Anything else
+ * (negative, fractional, unsafe integers) goes to toLocaleString.
+ */
+export function formatCount(n: number): string {
+  if (!Number.isSafeInteger(n) || n < 0 || Object.is(n, -0)) return n.toLocaleString('en');
+  const s = String(n);
+  let out = '';
+  for (let i = 0; i < s.length; i++) {
+    if (i > 0 && (s.length - i) % 3 === 0) out += ',';
+    out += s[i];
+  }
+  return out;
+}
 
 /** Default limits used when the URL's are unusable. */
 export function checkLimits(a: number, b: number): { a: number; b: number; message: string | null } {
@@ -262,9 +280,14 @@ export function keyComparison(fSrc: string, a: number, b: number, xs: readonly n
   return notes;
 }
 
+/** The problem of an estimate with drawn samples (what estimate1D and EstimateRun1D take). */
+export function drawnProblem(f: Fn1, sampler: Pdf1D, sequence: Strategy, seed: number): Problem1D {
+  return { f, pdf: sampler, sequence: sequence as SequenceKind, seed };
+}
+
 /** Estimate with n drawn samples on the main thread (small n; larger n runs in the worker). */
 export function drawnEstimate(f: Fn1, sampler: Pdf1D, sequence: Strategy, seed: number, n: number): McEstimate {
-  return estimate1D({ f, pdf: sampler, sequence: sequence as SequenceKind, seed }, n);
+  return estimate1D(drawnProblem(f, sampler, sequence, seed), n);
 }
 
 /** Largest n estimated synchronously on the main thread. */
@@ -360,38 +383,45 @@ function lane(n: number): RaceLane {
  * track of `max` samples is a prefix of any longer one. The uniform lane uses xᵢ = a + (b − a)ξᵢ
  * and term (b − a) f(xᵢ); the importance lane xᵢ = P⁻¹(ξᵢ) and term f(xᵢ)/p(xᵢ). Running means and
  * M₂ by Welford's update. O(max) once per parameter change; raceAt(track, t) is then O(points).
+ *
+ * It runs while the scene first renders, on code the JIT has not warmed up yet, where a function
+ * call per sample costs many times the arithmetic (issue 15): ξ comes from Rng.fill (no call per
+ * draw) and each lane's terms, mean and M₂ are written in one loop. The arithmetic is the plain
+ * per-sample one's (tests/scenes/monte-carlo/race.test.ts compares them exactly).
  */
 export function raceTrack(f: Fn1, a: number, b: number, importance: Pdf1D, exact: number, seed: number, max = RACE_MAX): RaceTrack {
-  const rng = new Rng(seed, RACE_STREAM);
-  const xi = new Float64Array(max);
-  for (let i = 0; i < max; i++) xi[i] = rng.nextFloat();
+  const xi = new Rng(seed, RACE_STREAM).fill(new Float64Array(max));
   const U = lane(max);
   const I = lane(max);
-  const fill = (L: RaceLane, pick: (u: number) => [number, number]) => {
-    let mean = 0;
-    let m2 = 0;
-    for (let i = 0; i < max; i++) {
-      const [x, y] = pick(xi[i]!);
-      L.x[i] = x;
-      L.term[i] = y;
-      const d = y - mean;
-      mean += d / (i + 1);
-      m2 += d * (y - mean);
-      L.mean[i] = mean;
-      L.m2[i] = m2;
-    }
-  };
   const w = b - a;
-  fill(U, (u) => {
-    const x = a + w * u;
-    return [x, w * f(x)];
-  });
-  fill(I, (u) => {
-    const x = importance.sample(u);
-    const p = importance.pdf(x);
+  let mean = 0;
+  let m2 = 0;
+  for (let i = 0; i < max; i++) {
+    const x = a + w * xi[i]!;
+    const y = w * f(x);
+    U.x[i] = x;
+    U.term[i] = y;
+    const d = y - mean;
+    mean += d / (i + 1);
+    m2 += d * (y - mean);
+    U.mean[i] = mean;
+    U.m2[i] = m2;
+  }
+  // per sample, not the batched sampler: a pdf's batch may round differently in the last bit
+  mean = 0;
+  m2 = 0;
+  for (let i = 0; i < max; i++) {
+    const x = importance.sample(xi[i]!);
+    I.x[i] = x;
     const fx = f(x);
-    return [x, fx === 0 ? 0 : fx / p];
-  });
+    const y = fx === 0 ? 0 : fx / importance.pdf(x);
+    I.term[i] = y;
+    const d = y - mean;
+    mean += d / (i + 1);
+    m2 += d * (y - mean);
+    I.mean[i] = mean;
+    I.m2[i] = m2;
+  }
   return { max, exact, xi, uniform: U, importance: I };
 }
 

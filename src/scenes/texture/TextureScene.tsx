@@ -6,7 +6,7 @@
  * the poles). All figures come from ./model (pure, over the core); what is on screen at animation
  * position t is model.frameAt(grid, conventions, path, t).
  */
-import { memo, useCallback, useDeferredValue, useEffect, useMemo, useRef, useState, type ComponentProps } from 'react';
+import { memo, startTransition, useCallback, useDeferredValue, useEffect, useMemo, useRef, useState, type ComponentProps } from 'react';
 import type { SceneProps } from '../../app/scene';
 import { EXAM_GRID_TEXT, examGrid, gridRange, gridToRows, parseGrid, texel } from '../../core/texture';
 import {
@@ -19,6 +19,7 @@ import {
   Notice,
   NumberField,
   Panel,
+  nextTask,
   Readout,
   SceneLayout,
   Select,
@@ -42,7 +43,6 @@ import {
   sphereReadouts,
   sphereModel,
   withCell,
-  type PathProfile,
   type QueryPath,
 } from './model';
 import { TimelineDriver, animContext, createTimelineStore, useAnimFrame, useAnimT, useStillT, useWorkedT, type AnimContext } from './anim';
@@ -95,14 +95,12 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
   // re-render the scene.
   const [store] = useState(() => createTimelineStore(Number(params.t)));
   const ctx = useMemo(() => animContext(store, grid, opts, src, path, committedPath), [store, grid, opts, src, path, committedPath]);
-  const profile = useMemo(() => pathProfile(grid, opts, path), [grid, opts, path]);
   const sphere = useMemo(
     () => sphereModel(grid, { x: params.x, y: params.y, z: params.z, normalize: params.normalize }, opts),
     [grid, params.x, params.y, params.z, params.normalize, opts],
   );
   const ro = useMemo(() => sphereReadouts(sphere), [sphere]);
   const examS = isExamSphere(src, opts, sphere);
-  const crease = useMemo(() => creases(grid, opts), [grid, opts]);
 
   const dir = useMemo<[number, number, number] | null>(() => {
     if (!sphere.ok) return null;
@@ -277,7 +275,7 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
             <NumberField label="u₂" value={params.u2} min={-4} max={4} step={0.01} onChange={(x) => setParams({ u2: x })} testId="u2-field" />
             <NumberField label="v₂" value={params.v2} min={-4} max={4} step={0.01} onChange={(x) => setParams({ v2: x })} testId="v2-field" />
           </div>
-          <AnimPathPlot ctx={ctx} profile={profile} present={mode.present} />
+          <AnimPathPlot ctx={ctx} present={mode.present} />
         </div>
         <div className="tx-figure-side">
           <AnimSide ctx={ctx} />
@@ -462,22 +460,7 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
         {part3c}
       </ExamQuestion>
       <ExploreFurther intro="Beyond the exam: the whole texture under both filters, where bilinear creases, and what the spherical mapping does at its seam and poles.">
-        <Panel title="The whole texture, reconstructed">
-          <AnimReconstruction ctx={ctx} range={range} creases={crease.list} />
-          <p className="tx-small" data-testid="crease-caption">
-            Both images show [0, 1]² {opts.vflip ? '(in the flipped frame v′) ' : ''}magnified; the cross is the query. Nearest copies the closest value, so it is
-            blocky. Bilinear is continuous, and linear along u and along v inside each cell, so its slope can change only across node lines — and only where the
-            values do not continue linearly across the line (a non-zero second difference). {creaseSentence(crease.creased, crease.lines, src.isExam)}
-            {crease.creased === 0 && params.preset !== 'checker' ? (
-              <>
-                {' '}
-                <button type="button" onClick={showChecker} data-testid="show-checker">
-                  Show the checkerboard
-                </button>
-              </>
-            ) : null}
-          </p>
-        </Panel>
+        <ReconstructionPanel ctx={ctx} range={range} isExam={src.isExam} showChecker={params.preset !== 'checker' ? showChecker : null} />
         <Panel title="The sphere’s seam and poles">
           <p className="tx-small">
             <strong>Seam.</strong> atan2 returns angles in (−π, π]; adding 2π to the negative ones puts φ in [0, 2π), so u runs from 0 at +x all the way round
@@ -500,6 +483,41 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
   );
 
   return <SceneLayout controls={controls} main={main} />;
+}
+
+/** Explore further: the whole texture under both filters, with the bilinear creases (computed when this part mounts). */
+function ReconstructionPanel({
+  ctx,
+  range,
+  isExam,
+  showChecker,
+}: {
+  ctx: AnimContext;
+  range: { min: number; max: number };
+  isExam: boolean;
+  /** Offered when the grid has no crease (null: the checkerboard is already shown). */
+  showChecker: (() => void) | null;
+}) {
+  const { grid, opts } = ctx;
+  const crease = useMemo(() => creases(grid, opts), [grid, opts]);
+  return (
+    <Panel title="The whole texture, reconstructed">
+      <AnimReconstruction ctx={ctx} range={range} creases={crease.list} />
+      <p className="tx-small" data-testid="crease-caption">
+        Both images show [0, 1]² {opts.vflip ? '(in the flipped frame v′) ' : ''}magnified; the cross is the query. Nearest copies the closest value, so it is
+        blocky. Bilinear is continuous, and linear along u and along v inside each cell, so its slope can change only across node lines — and only where the
+        values do not continue linearly across the line (a non-zero second difference). {creaseSentence(crease.creased, crease.lines, isExam)}
+        {crease.creased === 0 && showChecker ? (
+          <>
+            {' '}
+            <button type="button" onClick={showChecker} data-testid="show-checker">
+              Show the checkerboard
+            </button>
+          </>
+        ) : null}
+      </p>
+    </Panel>
+  );
 }
 
 function creaseSentence(creased: number, lines: number, isExam: boolean): string {
@@ -630,8 +648,28 @@ function AnimGrid({ ctx, ...rest }: { ctx: AnimContext } & Omit<ComponentProps<t
   return <GridView {...rest} q={ctx.frame(t).dq} path={ctx.path} drawRef={draw} />;
 }
 
+/**
+ * True from one task after the component mounted: work that can wait for it (a figure below the
+ * first screen of a phone) is not part of the page's first render (issue 15: no long task on load).
+ */
+function useAfterMount(): boolean {
+  const [on, setOn] = useState(false);
+  useEffect(() => {
+    let live = true;
+    nextTask(() => {
+      if (live) startTransition(() => setOn(true));
+    });
+    return () => {
+      live = false;
+    };
+  }, []);
+  return on;
+}
+
 /** The value along the path with the marker at t (its curves are memoized inside). */
-function AnimPathPlot({ ctx, profile, present }: { ctx: AnimContext; profile: PathProfile; present: boolean }) {
+function AnimPathPlot({ ctx, present }: { ctx: AnimContext; present: boolean }) {
+  const ready = useAfterMount();
+  const profile = useMemo(() => (ready ? pathProfile(ctx.grid, ctx.opts, ctx.path) : null), [ready, ctx.grid, ctx.opts, ctx.path]);
   const t = useStillT(ctx.store);
   const q = ctx.frame(t).frame.lookup;
   const draw = useRef<((t: number, near: number, bil: number) => void) | null>(null);

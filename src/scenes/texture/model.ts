@@ -6,6 +6,7 @@ import {
   addressCoord,
   bilinear,
   bilinearStencil,
+  bilinearTapsInto,
   cellSize,
   bilinearSteps,
   checkerGrid,
@@ -14,9 +15,11 @@ import {
   gradientGrid,
   gridRange,
   nearestStencil,
+  nearestTapIndex,
   nodeCoord,
   parseGrid,
   randomGrid,
+  nearestPixelTaps,
   reconstructInto,
   sphericalUV,
   type BilinearStencil,
@@ -29,7 +32,7 @@ import {
 } from '../../core/texture';
 import type { Failure } from '../../core/failure';
 import type { ParamValues } from '../../app/params';
-import { colorInto, normalizeValue } from './colormap';
+import { colorizeInto } from './colormap';
 import { GRID_TEXT_MAX, type PathKind, type Preset, type TextureSchema } from './params';
 
 export type TextureParams = ParamValues<TextureSchema>;
@@ -215,12 +218,29 @@ export function textureImage(
   window?: { uMin: number; uMax: number; vMin: number; vMax: number },
   scratch: Float64Array = new Float64Array(w * h),
 ): Uint8ClampedArray {
-  reconstructInto(grid, opts, filter, w, h, scratch, window);
   const img = new Uint8ClampedArray(w * h * 4);
-  for (let k = 0; k < w * h; k++) {
-    colorInto(normalizeValue(scratch[k], range.min, range.max), img, 4 * k);
-    img[4 * k + 3] = 255;
+  if (filter === 'nearest') {
+    // every pixel shows one texel's value: colour the texels once (colorizeInto, so the same
+    // bytes as colouring each pixel's value), then copy each pixel's texel colour as one word
+    const n = grid.values.length;
+    const lut = new Uint8ClampedArray(4 * n);
+    colorizeInto(grid.values, n, range.min, range.max, lut);
+    const lut32 = new Uint32Array(lut.buffer);
+    const img32 = new Uint32Array(img.buffer);
+    const { col, rowOff } = nearestPixelTaps(grid, opts, w, h, window);
+    for (let py = 0; py < h; py++) {
+      const row = py * w;
+      if (py > 0 && rowOff[py] === rowOff[py - 1]) {
+        img32.copyWithin(row, row - w, row);
+        continue;
+      }
+      const off = rowOff[py];
+      for (let px = 0; px < w; px++) img32[row + px] = lut32[off + col[px]];
+    }
+    return img;
   }
+  reconstructInto(grid, opts, filter, w, h, scratch, window);
+  colorizeInto(scratch, w * h, range.min, range.max, img);
   return img;
 }
 
@@ -288,6 +308,28 @@ export function pathPoint(path: QueryPath, t: number): { u: number; v: number } 
   return { u: cu + r * Math.cos(ang), v: cv + r * Math.sin(ang) };
 }
 
+/** {@link pathPoint} written to out[0] (u) and out[1] (v) instead of a new object: the same arithmetic, the same numbers. */
+export function pathPointInto(path: QueryPath, t: number, out: Float64Array): void {
+  const s = Number.isFinite(t) ? Math.min(1, Math.max(0, t)) : 0;
+  const [au, av] = path.a;
+  const [bu, bv] = path.b;
+  if (s === 0 || (s === 1 && path.kind !== 'line')) {
+    out[0] = au;
+    out[1] = av;
+  } else if (path.kind === 'line') {
+    out[0] = s === 1 ? bu : au + s * (bu - au);
+    out[1] = s === 1 ? bv : av + s * (bv - av);
+  } else {
+    const cu = (au + bu) / 2;
+    const cv = (av + bv) / 2;
+    const r = Math.hypot(au - cu, av - cv);
+    const a0 = Math.atan2(av - cv, au - cu);
+    const ang = a0 + 2 * Math.PI * s;
+    out[0] = cu + r * Math.cos(ang);
+    out[1] = cv + r * Math.sin(ang);
+  }
+}
+
 /** Length of the path in (u, v) units. */
 export function pathLength(path: QueryPath): number {
   const d = Math.hypot(path.b[0] - path.a[0], path.b[1] - path.a[1]);
@@ -324,30 +366,40 @@ function region(t: number): number {
   return t >= 0 && t <= 1 ? 0 : Math.floor(t);
 }
 
-function bilKey(grid: TextureGrid, u: number, v: number, opts: LookupOptions): string {
-  const b = bilinearStencil(grid, u, v, opts);
-  const vv = opts.vflip ? 1 - v : v;
-  return `${b.i0},${b.i1},${b.j0},${b.j1},${region(u)},${region(vv)}`;
-}
-function nearKey(grid: TextureGrid, u: number, v: number, opts: LookupOptions): string {
-  const n = nearestStencil(grid, u, v, opts);
-  return `${n.i},${n.j}`;
+/** A place on the path as numbers (which cell, which addressing branch): equal keys, same piece. */
+type KeyInto = (t: number, out: Float64Array) => void;
+
+function sameKey(a: Float64Array, b: Float64Array): boolean {
+  for (let i = 0; i < a.length; i++) {
+    const x = a[i];
+    const y = b[i];
+    if (x !== y && !(x !== x && y !== y)) return false; // NaN equals NaN, as a key
+  }
+  return true;
 }
 
-/** All t in (lo, hi] where key changes, each as a bracket [l, h] with h − l ≤ 1e-12 (bisection). */
-function findChanges(key: (t: number) => string, lo: number, hi: number, kLo: string, kHi: string, out: [number, number][], depth = 0): void {
-  if (kLo === kHi || depth > 64) return;
+/**
+ * All t in (lo, hi] where key changes, each as a bracket [l, h] with h − l ≤ 1e-12 (bisection).
+ * `scratch` is a key-sized buffer for the probes.
+ */
+function findChanges(key: KeyInto, lo: number, hi: number, kLo: Float64Array, kHi: Float64Array, out: [number, number][], scratch: Float64Array, depth = 0): void {
+  if (sameKey(kLo, kHi) || depth > 64) return;
   let l = lo;
   let h = hi;
   while (h - l > 1e-12) {
     const m = (l + h) / 2;
     if (m <= l || m >= h) break;
-    if (key(m) === kLo) l = m;
+    key(m, scratch);
+    if (sameKey(scratch, kLo)) l = m;
     else h = m;
   }
   out.push([l, h]);
   // more than one change inside (lo, hi]: continue from the first one
-  if (h < hi) findChanges(key, h, hi, key(h), kHi, out, depth + 1);
+  if (h < hi) {
+    const kh = new Float64Array(kLo.length);
+    key(h, kh);
+    findChanges(key, h, hi, kh, kHi, out, scratch, depth + 1);
+  }
 }
 
 /**
@@ -357,32 +409,47 @@ function findChanges(key: (t: number) => string, lo: number, hi: number, kLo: st
  * smooth function of t (a quadratic along a line), so kinks can only sit at cell borders.
  */
 export function pathProfile(grid: TextureGrid, opts: LookupOptions, path: QueryPath, samples = 400): PathProfile {
-  const at = (t: number) => pathPoint(path, t);
+  // numbers in typed buffers rather than objects and strings: this runs as the page loads, when
+  // the code is still cold, so every allocation and conversion per probe counts
+  const pt = new Float64Array(2);
   const bilAt = (t: number) => {
-    const p = at(t);
-    return bilinear(grid, p.u, p.v, opts);
+    pathPointInto(path, t, pt);
+    return bilinear(grid, pt[0], pt[1], opts);
   };
-  const bk = (t: number) => {
-    const p = at(t);
-    return bilKey(grid, p.u, p.v, opts);
+  /** The bilinear cell (i0, i1, j0, j1) and which copy of [0, 1] u and v′ are in (0 inside, else ⌊t⌋). */
+  const bk: KeyInto = (t, out) => {
+    pathPointInto(path, t, pt);
+    const u = pt[0];
+    const v = pt[1];
+    bilinearTapsInto(grid, u, v, opts, out);
+    const vv = opts.vflip ? 1 - v : v;
+    out[4] = region(u);
+    out[5] = region(vv);
   };
-  const nk = (t: number) => {
-    const p = at(t);
-    return nearKey(grid, p.u, p.v, opts);
+  /** The nearest node. */
+  const nk: KeyInto = (t, out) => {
+    pathPointInto(path, t, pt);
+    out[0] = nearestTapIndex(grid, pt[0], pt[1], opts);
   };
   const bEvents: [number, number][] = [];
   const nEvents: [number, number][] = [];
-  let pb = bk(0);
-  let pn = nk(0);
+  let pb = new Float64Array(6);
+  let b = new Float64Array(6);
+  let pn = new Float64Array(1);
+  let n = new Float64Array(1);
+  const bScratch = new Float64Array(6);
+  const nScratch = new Float64Array(1);
+  bk(0, pb);
+  nk(0, pn);
   for (let k = 1; k <= samples; k++) {
     const t0 = (k - 1) / samples;
     const t1 = k / samples;
-    const b = bk(t1);
-    const n = nk(t1);
-    findChanges(bk, t0, t1, pb, b, bEvents);
-    findChanges(nk, t0, t1, pn, n, nEvents);
-    pb = b;
-    pn = n;
+    bk(t1, b);
+    nk(t1, n);
+    findChanges(bk, t0, t1, pb, b, bEvents, bScratch);
+    findChanges(nk, t0, t1, pn, n, nEvents, nScratch);
+    [pb, b] = [b, pb];
+    [pn, n] = [n, pn];
   }
   const range = gridRange(grid);
   const scale = Math.max(1, Math.abs(range.max), Math.abs(range.min), range.max - range.min);
@@ -431,8 +498,8 @@ export function pathProfile(grid: TextureGrid, opts: LookupOptions, path: QueryP
   for (let k = 0; k + 1 < cuts.length; k++) {
     const t0 = cuts[k];
     const t1 = cuts[k + 1];
-    const p = at((t0 + t1) / 2);
-    const value = nearestStencil(grid, p.u, p.v, opts).value;
+    pathPointInto(path, (t0 + t1) / 2, pt);
+    const value = grid.values[nearestTapIndex(grid, pt[0], pt[1], opts)];
     near.push({ t0, t1, value });
     if (value < min) min = value;
     if (value > max) max = value;

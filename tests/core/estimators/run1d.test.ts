@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { ConvergenceRun1D, estimate1D } from '../../../src/core/estimators/run1d';
+import { ConvergenceRun1D, estimate1D, EstimateRun1D, BATCH } from '../../../src/core/estimators/run1d';
 import { logSpacedCounts } from '../../../src/core/estimators/convergence';
 import { RmseAccumulator } from '../../../src/core/estimators/rmse';
 import { fitLogLogSlope } from '../../../src/core/estimators/slope';
@@ -32,6 +32,35 @@ describe('estimate1D', () => {
     const r = estimate1D({ f, pdf: broken, sequence: 'independent', seed: 1 }, 100);
     expect(r.invalid).toBe(100);
     expect(Number.isNaN(r.estimate)).toBe(true);
+  });
+});
+
+describe('EstimateRun1D', () => {
+  it('one batch per step; the result equals estimate1D exactly, for every sequence and pdf', () => {
+    const n = 2 * BATCH + 17;
+    for (const sequence of SEQUENCE_KINDS) {
+      for (const pdf of [uniformPdf1D(0, 2), squarePdf1D(0, 2, 2)]) {
+        const prob = { f: (x: number) => Math.exp(x) * (x + 2), pdf, sequence, seed: 11 };
+        const run = new EstimateRun1D(prob, n);
+        let steps = 1;
+        while (!run.step()) steps++;
+        expect(steps).toBe(3);
+        expect(run.step()).toBe(true); // nothing left: no change
+        expect(run.result()).toEqual(estimate1D(prob, n));
+      }
+    }
+  });
+
+  it('partial results cover the points processed so far; p = 0 terms count as invalid', () => {
+    const pdf = uniformPdf1D(0, 2);
+    const run = new EstimateRun1D({ f, pdf, sequence: 'independent', seed: 3 }, BATCH + 5);
+    expect(run.step()).toBe(false);
+    expect(run.result().n).toBe(BATCH);
+    const broken = { ...pdf, sampleBatch: (u: Float64Array, x: Float64Array, p: Float64Array, s: number, e: number) => { pdf.sampleBatch(u, x, p, s, e); p.fill(0, s, e); } };
+    const bad = new EstimateRun1D({ f, pdf: broken, sequence: 'sobol', seed: 1 }, 10);
+    expect(bad.step()).toBe(true);
+    expect(bad.result().invalid).toBe(10);
+    expect(Number.isNaN(bad.result().estimate)).toBe(true);
   });
 });
 

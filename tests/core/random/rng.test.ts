@@ -93,6 +93,21 @@ describe('Rng (xoshiro128**)', () => {
     for (let i = 0; i < 16; i++) expect(buf[i]).toBe(again.nextFloat());
   });
 
+  it('fill gives exactly the nextFloat stream, in any ranges, and leaves the generator where nextFloat would', () => {
+    for (const [seed, stream] of [[0, 0], [1, 7], [0xffffffff, 3], [123456789, 0x4d43]] as const) {
+      const want = new Rng(seed, stream);
+      const got = new Rng(seed, stream);
+      const buf = new Float64Array(3000).fill(-1);
+      got.fill(buf, 0, 1000);
+      got.fill(buf, 1000, 1001);
+      got.fill(buf, 1001, 1001); // empty range: no draw
+      got.fill(buf, 1001);
+      for (let i = 0; i < buf.length; i++) expect(buf[i]).toBe(want.nextFloat());
+      expect(got.nextUint32()).toBe(want.nextUint32());
+      expect(got.nextFloat()).toBe(want.nextFloat());
+    }
+  });
+
   it('toSeed coerces garbage to a valid uint32 and mix32 avalanches', () => {
     expect(toSeed(NaN)).toBe(0);
     expect(toSeed(Infinity)).toBe(0);

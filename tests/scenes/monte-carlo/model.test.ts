@@ -6,6 +6,7 @@ import {
   choosePdf,
   curves,
   exactIntegral,
+  formatCount,
   histogram,
   keyComparison,
   roundTo,
@@ -167,5 +168,13 @@ describe('samples field parsing', async () => {
     expect(bad.ok).toBe(false);
     if (!bad.ok) expect(bad.message).toMatch(/abc/);
     expect(parseSamples(Array(40).fill(1).join(',')).ok).toBe(false);
+  });
+});
+
+describe('formatCount', () => {
+  it('writes what toLocaleString("en") writes, for counts of every length and the odd cases', () => {
+    const xs = [0, 1, 9, 10, 99, 100, 999, 1000, 1001, 9999, 10000, 12345, 99999, 100000, 999999, 1000000, 1234567, 10000000, 2 ** 31, 2 ** 32 + 7, Number.MAX_SAFE_INTEGER, -0, -1234, 1.5, 1234.5678, NaN, Infinity];
+    for (let k = 0; k < 2000; k++) xs.push(Math.floor((k * 7919) ** 1.7) % 123456789);
+    for (const x of xs) expect(formatCount(x), String(x)).toBe(x.toLocaleString('en'));
   });
 });

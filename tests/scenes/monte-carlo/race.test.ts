@@ -4,7 +4,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { Rng } from '../../../src/core/random/rng';
-import { squarePdf1D, uniformPdf1D } from '../../../src/core/sampling/pdf1d';
+import { customPdf1D, linearPdf1D, proportionalPdf1D, squarePdf1D, uniformPdf1D, type Pdf1D } from '../../../src/core/sampling/pdf1d';
 import { atRoundingLevel, RACE_STREAM, raceAt, racePoints, raceTrack, sortedByX, squareAntiderivative, squareNormalizer, stderrIsValid } from '../../../src/scenes/monte-carlo/model';
 
 const f = (x: number) => (x + 2) ** 2;
@@ -77,6 +77,65 @@ describe('race model', () => {
     const t2 = raceTrack(f, 0, 2, uniformPdf1D(0, 2), I, 3, 100);
     for (let k = 0; k < 100; k++) expect(Math.abs(t2.importance.mean[k]! - t2.uniform.mean[k]!)).toBeLessThan(1e-11);
   });
+});
+
+/** The track computed sample by sample (nextFloat, sample, pdf, Welford), the plain way. */
+function plainTrack(g: (x: number) => number, a: number, b: number, imp: Pdf1D, seed: number, max: number) {
+  const rng = new Rng(seed, RACE_STREAM);
+  const xi = Array.from({ length: max }, () => rng.nextFloat());
+  const lane = (xs: number[], terms: number[]) => {
+    let mean = 0;
+    let m2 = 0;
+    const means: number[] = [];
+    const m2s: number[] = [];
+    terms.forEach((y, i) => {
+      const d = y - mean;
+      mean += d / (i + 1);
+      m2 += d * (y - mean);
+      means.push(mean);
+      m2s.push(m2);
+    });
+    return { x: xs, term: terms, mean: means, m2: m2s };
+  };
+  const xu = xi.map((u) => a + (b - a) * u);
+  const xs = xi.map((u) => imp.sample(u));
+  return {
+    xi,
+    uniform: lane(xu, xu.map((x) => (b - a) * g(x))),
+    importance: lane(
+      xs,
+      xs.map((x) => {
+        const fx = g(x);
+        return fx === 0 ? 0 : fx / imp.pdf(x);
+      }),
+    ),
+  };
+}
+
+describe('raceTrack equals the plain per-sample computation exactly', () => {
+  const g = (x: number) => Math.exp(x) * Math.sin(3 * x) + 1.5;
+  const custom = customPdf1D((x) => 1 + x * x, -1, 2, g);
+  const prop = proportionalPdf1D(g, -1, 2);
+  if (!custom.ok || !prop.ok) throw new Error('test pdfs');
+  const cases: [string, (x: number) => number, number, number, Pdf1D][] = [
+    ['square', f, 0, 2, squarePdf1D(0, 2, 2)],
+    ['square, shifted', (x) => (x - 1) * (x - 1), -1, 3, squarePdf1D(-1, 3, -1)],
+    ['linear', g, -1, 2, linearPdf1D(-1, 2, 0.5, 3)],
+    ['linear from 0', g, -1, 2, linearPdf1D(-1, 2, 0, 3)],
+    ['tabulated p ∝ |f|', g, -1, 2, prop.pdf],
+    ['custom', g, -1, 2, custom.pdf],
+    ['uniform', g, -1, 2, uniformPdf1D(-1, 2)],
+  ];
+  for (const [name, g1, a, b, imp] of cases) {
+    it(name, () => {
+      const want = plainTrack(g1, a, b, imp, 5, 3000);
+      const got = raceTrack(g1, a, b, imp, 1, 5, 3000);
+      expect(Array.from(got.xi)).toEqual(want.xi);
+      for (const lane of ['uniform', 'importance'] as const) {
+        for (const k of ['x', 'term', 'mean', 'm2'] as const) expect(Array.from(got[lane][k]), `${lane}.${k}`).toEqual(want[lane][k]);
+      }
+    });
+  }
 });
 
 describe('Q4 helpers', () => {

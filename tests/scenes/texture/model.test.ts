@@ -18,7 +18,8 @@ import {
   textureImage,
   withCell,
 } from '../../../src/scenes/texture/model';
-import { EXAM_GRID_TEXT, WRAP_MODES, examGrid, formatGrid, randomGrid, texel, type LookupOptions } from '../../../src/core/texture';
+import { EXAM_GRID_TEXT, WRAP_MODES, examGrid, formatGrid, randomGrid, reconstructInto, texel, type LookupOptions } from '../../../src/core/texture';
+import { colorInto, normalizeValue } from '../../../src/scenes/texture/colormap';
 
 const L = (u: number, v: number) => 21 - 20 * v + 4 * u; // the exam grid as a function of (u, v)
 
@@ -120,5 +121,23 @@ describe('texture scene model', () => {
     // top-left is the smallest value (1, darkest), bottom-right the largest (25, brightest)
     const lum = (k: number) => img[4 * k] + img[4 * k + 1] + img[4 * k + 2];
     expect(lum(0)).toBeLessThan(lum(24));
+  });
+
+  it('textureImage colours each pixel exactly as colorInto does on its normalized value (flat and NaN ranges included)', () => {
+    const g = randomGrid(6, 5, 3);
+    const W = 31;
+    const H = 19;
+    for (const filter of ['nearest', 'bilinear'] as const)
+      for (const range of [{ min: -0.2, max: 0.7 }, { min: 0.3, max: 0.3 }, { min: NaN, max: 1 }, { min: 0.4, max: 0.5 }]) {
+        const opts = lookupOptions({ align: 'center', vflip: true, wrap: 'mirror' });
+        const win = { uMin: -0.3, uMax: 1.2, vMin: -0.1, vMax: 1.4 };
+        const img = textureImage(g, opts, filter, W, H, range, win);
+        const vals = reconstructInto(g, opts, filter, W, H, new Float64Array(W * H), win);
+        const c = [0, 0, 0];
+        for (let k = 0; k < W * H; k++) {
+          colorInto(normalizeValue(vals[k], range.min, range.max), c);
+          expect([img[4 * k], img[4 * k + 1], img[4 * k + 2], img[4 * k + 3]]).toEqual([c[0], c[1], c[2], 255]);
+        }
+      }
   });
 });

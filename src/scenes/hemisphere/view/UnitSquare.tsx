@@ -4,19 +4,16 @@
  */
 import { useEffect, useRef } from 'react';
 import { fillSequence2D, type SequenceKind } from '../../../core/random';
-import { xiCss } from './colors';
-import { nextTask } from '../../../ui/chunked';
+import { xiColor, xiCss } from './colors';
 
 const MAX_SHOWN = 4096;
-/** Dots drawn per task (each is a CSS colour parse and a fill). */
-const POINTS_PER_TASK = 1024;
 
 export function UnitSquare({ kind, seed, n, size = 220 }: { kind: SequenceKind; seed: number; n: number; size?: number }) {
   const canvas = useRef<HTMLCanvasElement>(null);
   const shown = Math.min(n, MAX_SHOWN);
   useEffect(() => {
     const c = canvas.current;
-    const g = c?.getContext('2d');
+    const g = c?.getContext('2d', { willReadFrequently: true });
     if (!c || !g) return;
     const dpr = Math.min(window.devicePixelRatio || 1, 2);
     const pad = 22;
@@ -50,45 +47,51 @@ export function UnitSquare({ kind, seed, n, size = 220 }: { kind: SequenceKind; 
     const u = new Float64Array(2 * shown);
     fillSequence2D(kind, seed, n, u, 0, shown, 0);
     const r = shown > 1000 ? 1.2 : 2;
-    // the points POINTS_PER_TASK at a time, one task each (issue 15: 4096 coloured dots were one
-    // task of ~150 ms at a phone's 4× CPU slowdown, on the scene's first screen); same picture
-    let cancelled = false;
-    let i = 0;
-    const drawPoints = () => {
-      if (cancelled) return;
-      for (const end = Math.min(shown, i + POINTS_PER_TASK); i < end; i++) {
-        g.fillStyle = xiCss(u[2 * i]!, u[2 * i + 1]!);
-        g.fillRect(X(u[2 * i]!) - r, Y(u[2 * i + 1]!) - r, 2 * r, 2 * r);
+    // The points go straight into the pixels (one colour per point): a fillStyle string per point
+    // for thousands of points was tens of ms of the page's load on a phone (issue 15).
+    const W = c.width;
+    const H = c.height;
+    const img = g.getImageData(0, 0, W, H);
+    const px = img.data;
+    const rgb = new Uint8Array(3);
+    for (let i = 0; i < shown; i++) {
+      const a = u[2 * i]!;
+      const b = u[2 * i + 1]!;
+      xiColor(a, b, rgb);
+      const x0 = Math.max(0, Math.round((X(a) - r) * dpr));
+      const x1 = Math.min(W, Math.round((X(a) + r) * dpr));
+      const y0 = Math.max(0, Math.round((Y(b) - r) * dpr));
+      const y1 = Math.min(H, Math.round((Y(b) + r) * dpr));
+      for (let y = y0; y < y1; y++) {
+        for (let x = x0, k = (y * W + x0) * 4; x < x1; x++, k += 4) {
+          px[k] = rgb[0]!;
+          px[k + 1] = rgb[1]!;
+          px[k + 2] = rgb[2]!;
+          px[k + 3] = 255;
+        }
       }
-      if (i < shown) nextTask(drawPoints);
-      else drawFrame();
-    };
-    const drawFrame = () => {
-      g.strokeStyle = fg;
-      g.lineWidth = 1;
-      g.strokeRect(X(0), Y(1), s, s);
-      // the first sample, which the 3D view and the worked example track
-      if (shown > 0) {
-        g.lineWidth = 2;
-        g.beginPath();
-        g.arc(X(u[0]!), Y(u[1]!), 6, 0, 2 * Math.PI);
-        g.stroke();
-      }
-      g.fillStyle = fg;
-      g.font = '12px sans-serif';
-      g.fillText('ξ₁ →', X(1) - 30, Y(0) + 16);
-      g.fillText('0', X(0) - 4, Y(0) + 16);
-      g.fillText('1', X(1) - 4, Y(0) + 16);
-      g.save();
-      g.translate(X(0) - 8, Y(0.5));
-      g.rotate(-Math.PI / 2);
-      g.fillText('ξ₂ →', 0, 0);
-      g.restore();
-    };
-    drawPoints();
-    return () => {
-      cancelled = true;
-    };
+    }
+    g.putImageData(img, 0, 0);
+    g.strokeStyle = fg;
+    g.lineWidth = 1;
+    g.strokeRect(X(0), Y(1), s, s);
+    // the first sample, which the 3D view and the worked example track
+    if (shown > 0) {
+      g.lineWidth = 2;
+      g.beginPath();
+      g.arc(X(u[0]!), Y(u[1]!), 6, 0, 2 * Math.PI);
+      g.stroke();
+    }
+    g.fillStyle = fg;
+    g.font = '12px sans-serif';
+    g.fillText('ξ₁ →', X(1) - 30, Y(0) + 16);
+    g.fillText('0', X(0) - 4, Y(0) + 16);
+    g.fillText('1', X(1) - 4, Y(0) + 16);
+    g.save();
+    g.translate(X(0) - 8, Y(0.5));
+    g.rotate(-Math.PI / 2);
+    g.fillText('ξ₂ →', 0, 0);
+    g.restore();
   }, [kind, seed, n, shown, size]);
   return (
     <figure className="hemi-square">

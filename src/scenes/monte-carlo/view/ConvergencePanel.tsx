@@ -1,7 +1,7 @@
 /** Convergence as N grows: running estimate and |error| log-log with guides and fitted slopes (one run per strategy, in the worker). */
 import { useEffect, useMemo, useRef } from 'react';
 import { formatNumber, Panel, Plot, type PlotTrace } from '../../../ui';
-import { atRoundingLevel } from '../model';
+import { atRoundingLevel, formatCount } from '../model';
 import type { ProblemArgs, SeriesData } from '../jobs';
 import { REDRAW_MS, useAutoRun, useLegendRoom, useThrottled } from './hooks';
 import { arr, COLORS, Heading, L_ERR, L_EST, RunBar } from './plotStyle';
@@ -67,7 +67,7 @@ export function ConvergencePanel({ args, nMax, exact, makeWorker, present, runTo
   return (
     <Panel title="Convergence as N grows (Q4 d)" className="mc-plots">
       <div ref={box}>
-        <RunBar running={task.running} waiting={task.waiting} progress={task.progress} onCancel={task.cancel} onRun={task.run} label={`Running up to N = ${nMax.toLocaleString('en')}…`} />
+        <RunBar running={task.running} waiting={task.waiting} progress={task.progress} onCancel={task.cancel} onRun={task.run} label={`Running up to N = ${formatCount(nMax)}…`} />
         {task.error ? <p className="field-error">The run failed: {task.error}</p> : null}
         {cur?.problems.length ? <p className="mc-note">Left out: {cur.problems.join('; ')}</p> : null}
         <Heading>Running estimate</Heading>

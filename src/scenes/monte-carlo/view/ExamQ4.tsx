@@ -6,7 +6,7 @@
  */
 import type { ReactNode } from 'react';
 import { Derivation, ExamPart, formatNumber, KeyNote, LiveAnswer, MathTex, Readout } from '../../../ui';
-import { squareAntiderivative, squareNormalizer, type SampleTable } from '../model';
+import { formatCount, squareAntiderivative, squareNormalizer, type SampleTable } from '../model';
 
 const n4 = (x: number) => (Number.isFinite(x) ? formatNumber(x, 6) : '\\text{—}');
 /** v as "p/3" when 3v is (nearly) an integer, else its decimal. */
@@ -146,13 +146,13 @@ export function Q4d({ uErr, iErr, N, onWhole, importanceIsExam }: { uErr: number
           {importanceIsExam ? ' importance sampling with p ∝ f sits on I from the first sample.' : ' the importance lane uses your chosen pdf.'}
         </p>
         <button type="button" onClick={onWhole} data-testid="race-whole">
-          Show the whole run ({N.toLocaleString('en')} samples)
+          Show the whole run ({formatCount(N)} samples)
         </button>
       </Derivation>
       <LiveAnswer>
         <div className="readouts">
-          <Readout id="q4d-uniform-error" label={`uniform |error| after N = ${N.toLocaleString('en')}`} value={uErr} digits={3} />
-          <Readout id="q4d-importance-error" label={`importance |error| after N = ${N.toLocaleString('en')}`} value={iErr} digits={3} />
+          <Readout id="q4d-uniform-error" label={`uniform |error| after N = ${formatCount(N)}`} value={uErr} digits={3} />
+          <Readout id="q4d-importance-error" label={`importance |error| after N = ${formatCount(N)}`} value={iErr} digits={3} />
         </div>
         {importanceIsExam ? (
           <p data-testid="answer-4d">

@@ -1,7 +1,7 @@
 /** RMSE over independent (randomized) runs against N, and against the measured run time. */
 import { useMemo, useRef } from 'react';
 import { NumberField, Panel, Plot, type PlotTrace } from '../../../ui';
-import { atRoundingLevel, sortedByX } from '../model';
+import { atRoundingLevel, formatCount, sortedByX } from '../model';
 import type { ProblemArgs, RmseData } from '../jobs';
 import { REDRAW_MS, useAutoRun, useLegendRoom, useThrottled } from './hooks';
 import { arr, clampArr, COLORS, Heading, hexA, L_RMSE, L_TIME, RunBar } from './plotStyle';
@@ -67,7 +67,7 @@ export function RmsePanel({ args, nMax, runs, exact, makeWorker, onRuns }: { arg
         <div className="mc-inline">
           <NumberField label="runs" value={runs} min={4} max={256} step={1} onChange={(v) => onRuns(Math.round(v))} testId="runs-input" />
           <span className="mc-note">
-            {runsDone} run{runsDone === 1 ? '' : 's'} per strategy so far, N up to {nMax.toLocaleString('en')}
+            {runsDone} run{runsDone === 1 ? '' : 's'} per strategy so far, N up to {formatCount(nMax)}
           </span>
         </div>
         <RunBar running={task.running} waiting={task.waiting} progress={task.progress} onCancel={task.cancel} onRun={task.run} label="Independent runs…" />

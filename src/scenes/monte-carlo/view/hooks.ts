@@ -1,7 +1,11 @@
-/** The scene's view hooks: plot height on phones, throttled redraws, worker runs started when first seen. */
+/**
+ * The scene's view hooks: plot height on phones, throttled redraws, worker runs started when first
+ * seen, and the page's own estimate spread over short tasks.
+ */
 import { useEffect, useRef, useState } from 'react';
-import { useSeenOnce } from '../../../ui';
+import { runChunked, useSeenOnce } from '../../../ui';
 import { useWorkerJob } from '../../../workers';
+import { EstimateRun1D, type McEstimate, type Problem1D } from '../../../core/estimators';
 
 export /** Extra plot height on phones, where the legend above the plot takes several rows. */
 function useLegendRoom(): number {
@@ -59,3 +63,25 @@ function useAutoRun<R, P>(method: string, makeWorker: () => Worker, args: unknow
   return useWorkerJob<R, P>(makeWorker, method, args, { key, enabled: seen, delayMs: 250, queue: 'monte-carlo' });
 }
 
+
+export /**
+ * estimate1D(problem, n) on the main thread, one batch of points per short task (ui/chunked), so
+ * neither the scene's first render nor a parameter change runs it in one long task (issue 15).
+ * Null while it runs (and when `problem` is null); the result is exactly estimate1D's. A new
+ * problem or n cancels the run in progress. `problem` is compared by identity (memoise it).
+ */
+function useSlicedEstimate(problem: Problem1D | null, n: number): McEstimate | null {
+  const [done, setDone] = useState<{ problem: Problem1D; n: number; est: McEstimate } | null>(null);
+  useEffect(() => {
+    if (!problem) return;
+    const run = new EstimateRun1D(problem, n);
+    let cancel = () => {};
+    const step = () => {
+      if (run.step()) setDone({ problem, n, est: run.result() });
+      else cancel = runChunked(step);
+    };
+    cancel = runChunked(step);
+    return () => cancel();
+  }, [problem, n]);
+  return problem && done && done.problem === problem && done.n === n ? done.est : null;
+}

@@ -5,7 +5,7 @@
  * while dragging so nothing jumps; it is recomputed only when typed values leave the plane.
  */
 import { useRef, useState, type KeyboardEvent, type PointerEvent } from 'react';
-import { useWidth } from './useWidth';
+import { useWidth } from '../../../ui/useWidth';
 import type { RaySphereHit } from '../../../core/geometry';
 import { canonicalFrame, dirFromFrame, fromFrame, frameFits, tidy, toFrame, type Frame2D, type V3 } from '../model';
 

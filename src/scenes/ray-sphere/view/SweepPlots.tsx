@@ -8,7 +8,7 @@
 import { memo, useMemo, useRef, type ReactNode } from 'react';
 import type { RaySphereCase, RaySphereHit } from '../../../core/geometry';
 import type { SweepSeries } from '../model';
-import { useWidth } from './useWidth';
+import { useWidth } from '../../../ui/useWidth';
 
 const PAD = { l: 62, r: 14, t: 30, b: 44 };
 

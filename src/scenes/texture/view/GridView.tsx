@@ -10,7 +10,8 @@
  * Everything is drawn in the texture's own frame (u right, v′ up; v′ = 1 − v when flipped) with the
  * query brought into [0, 1]² by the wrap mode (an equivalent point: the lookup there is the same).
  */
-import { memo, useEffect, useLayoutEffect, useMemo, useRef, useState, type KeyboardEvent, type PointerEvent, type RefObject } from 'react';
+import { useWidth } from '../../../ui/useWidth';
+import { memo, useEffect, useMemo, useRef, type KeyboardEvent, type PointerEvent, type RefObject } from 'react';
 import { nodeCoord, type LookupOptions, type TextureGrid } from '../../../core/texture';
 import { colorCss, darkTextOn, normalizeValue } from '../colormap';
 import { pathPoint, textureImage, type Lookup, type QueryPath } from '../model';
@@ -81,20 +82,7 @@ export function GridView({ grid, opts, range, q, path, onMove, editing, selected
   moveRef.current = onMove;
   useEffect(() => () => cancelAnimationFrame(raf.current), []);
   // viewBox units per CSS pixel, so text and handles keep a minimum on-screen size
-  const [unitsPerPx, setUnitsPerPx] = useState(VB / 520);
-  useLayoutEffect(() => {
-    const el = svgRef.current;
-    if (!el) return;
-    const measure = () => {
-      const w = el.getBoundingClientRect().width;
-      if (w > 0) setUnitsPerPx((prev) => (Math.abs(prev - VB / w) > 1e-3 ? VB / w : prev));
-    };
-    measure();
-    if (typeof ResizeObserver === 'undefined') return;
-    const ro = new ResizeObserver(measure);
-    ro.observe(el);
-    return () => ro.disconnect();
-  }, []);
+  const unitsPerPx = VB / useWidth(svgRef, 520);
 
   const flip = (v: number) => (opts.vflip ? 1 - v : v);
   const aT = { u: path.a[0], v: flip(path.a[1]) };

@@ -3,9 +3,11 @@
  * function, bilinear as a continuous curve with its cell borders marked (solid where the slope
  * changes, a kink; dotted where it does not), and the current position. Drawn in CSS pixels (the
  * SVG is as wide as its box), so text stays at its stated size on phones. The curves are memoized
- * on the profile; only the position marker re-renders per animation frame.
+ * on the profile; only the position marker re-renders per animation frame. Until the profile is
+ * computed (a task after the page's first render, issue 15) the figure keeps its size, empty.
  */
-import { memo, useLayoutEffect, useMemo, useRef, useState } from 'react';
+import { memo, useMemo, useRef } from 'react';
+import { useWidth } from '../../../ui/useWidth';
 import type { PathProfile } from '../model';
 import { fmtShort } from './GridView';
 
@@ -86,7 +88,8 @@ export function PathPlot({
   present,
   drawRef,
 }: {
-  profile: PathProfile;
+  /** null while it is computed: the figure keeps its box (no layout shift), without curves. */
+  profile: PathProfile | null;
   t: number;
   near: number;
   bil: number;
@@ -96,29 +99,17 @@ export function PathPlot({
 }) {
   const ref = useRef<HTMLDivElement>(null);
   const markerRef = useRef<SVGGElement>(null);
-  const [w, setW] = useState(480);
-  useLayoutEffect(() => {
-    const el = ref.current;
-    if (!el) return;
-    const measure = () => {
-      const x = Math.round(el.getBoundingClientRect().width);
-      if (x > 0) setW((prev) => (prev !== x ? x : prev));
-    };
-    measure();
-    if (typeof ResizeObserver === 'undefined') return;
-    const ro = new ResizeObserver(measure);
-    ro.observe(el);
-    return () => ro.disconnect();
-  }, []);
+  const w = useWidth(ref, 480);
   const h = present ? 230 : 180;
-  const s = useMemo<Scale>(() => {
+  const s = useMemo<Scale | null>(() => {
+    if (!profile) return null;
     const pad = Math.max(1e-9, (profile.max - profile.min) * 0.08, Math.abs(profile.max) * 1e-9);
     return { w, h, y0: profile.min - pad, y1: profile.max + pad };
   }, [profile, w, h]);
   if (drawRef) {
     drawRef.current = (tt, n, b) => {
       const g = markerRef.current;
-      if (!g || g.children.length !== 3) return;
+      if (!s || !g || g.children.length !== 3) return;
       const [line, nd, bd] = g.children;
       const x = String(X(s, tt));
       line.setAttribute('x1', x);
@@ -129,22 +120,34 @@ export function PathPlot({
       bd.setAttribute('cy', String(Y(s, b)));
     };
   }
-  const kinks = useMemo(() => profile.borders.filter((b) => b.kink).length, [profile]);
-  const jumps = useMemo(() => profile.borders.filter((b) => b.jump).length, [profile]);
-  const label =
-    `The looked-up value along the path. Bilinear: continuous${jumps ? ` except ${jumps} jump${jumps > 1 ? 's' : ''} from the addressing` : ''}, ` +
-    `crossing ${profile.borders.length} cell border${profile.borders.length === 1 ? '' : 's'}, ${kinks} with a kink. ` +
-    `Nearest: a step function with ${profile.nearSwitches.length} step${profile.nearSwitches.length === 1 ? '' : 's'}. Now at t = ${fmtShort(t)}: nearest ${fmtShort(near)}, bilinear ${fmtShort(bil)}.`;
+  const kinks = useMemo(() => (profile ? profile.borders.filter((b) => b.kink).length : 0), [profile]);
+  const jumps = useMemo(() => (profile ? profile.borders.filter((b) => b.jump).length : 0), [profile]);
+  const label = !profile
+    ? 'The looked-up value along the path (being computed).'
+    : `The looked-up value along the path. Bilinear: continuous${jumps ? ` except ${jumps} jump${jumps > 1 ? 's' : ''} from the addressing` : ''}, ` +
+      `crossing ${profile.borders.length} cell border${profile.borders.length === 1 ? '' : 's'}, ${kinks} with a kink. ` +
+      `Nearest: a step function with ${profile.nearSwitches.length} step${profile.nearSwitches.length === 1 ? '' : 's'}. Now at t = ${fmtShort(t)}: nearest ${fmtShort(near)}, bilinear ${fmtShort(bil)}.`;
   return (
-    <figure className="tx-plot" data-testid="path-plot" data-borders={profile.borders.length} data-kinks={kinks} data-jumps={jumps} data-steps={profile.nearSwitches.length}>
+    <figure
+      className="tx-plot"
+      data-testid="path-plot"
+      data-borders={profile?.borders.length}
+      data-kinks={profile ? kinks : undefined}
+      data-jumps={profile ? jumps : undefined}
+      data-steps={profile?.nearSwitches.length}
+    >
       <div ref={ref} className="tx-plot-box">
         <svg width={w} height={h} viewBox={`0 0 ${w} ${h}`} role="img" aria-label={label}>
-          <Curves profile={profile} s={s} />
-          <g data-testid="path-plot-marker" ref={markerRef}>
-            <line x1={X(s, t)} x2={X(s, t)} y1={M.t} y2={h - M.b} className="tx-plot-now" />
-            <circle cx={X(s, t)} cy={Y(s, near)} r={5} className="tx-plot-near-dot" />
-            <circle cx={X(s, t)} cy={Y(s, bil)} r={5} className="tx-plot-bil-dot" />
-          </g>
+          {profile && s ? (
+            <>
+              <Curves profile={profile} s={s} />
+              <g data-testid="path-plot-marker" ref={markerRef}>
+                <line x1={X(s, t)} x2={X(s, t)} y1={M.t} y2={h - M.b} className="tx-plot-now" />
+                <circle cx={X(s, t)} cy={Y(s, near)} r={5} className="tx-plot-near-dot" />
+                <circle cx={X(s, t)} cy={Y(s, bil)} r={5} className="tx-plot-bil-dot" />
+              </g>
+            </>
+          ) : null}
         </svg>
       </div>
       <figcaption className="tx-plot-legend">

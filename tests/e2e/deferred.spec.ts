@@ -1,0 +1,61 @@
+/**
+ * Issue 15: a scene's exam page mounts its first screen first. The bodies of the exam parts, the
+ * controls column and Explore further mount when they come near the screen or in idle time
+ * (src/ui/Deferred.tsx); formulas are typeset by KaTeX in a worker. Here idle time is switched off
+ * (requestIdleCallback never calls back), so only what is near the screen may mount: the test can
+ * tell "mounted because near" from "mounted in idle time".
+ */
+import { test, expect } from './fixtures';
+
+test.use({ viewport: { width: 412, height: 823 } });
+
+test.beforeEach(async ({ page }) => {
+  await page.addInitScript(() => {
+    (window as unknown as { requestIdleCallback: () => number }).requestIdleCallback = () => 0;
+  });
+});
+
+const pending = '[data-deferred="pending"]';
+
+test('far sections wait; scrolling mounts them; printing mounts everything at once', async ({ page }) => {
+  await page.goto('./#/texture');
+  await page.waitForSelector('main#main');
+  // the first screen: the question and its figure
+  await expect(page.locator('#question-3-title')).toBeVisible({ timeout: 60_000 });
+  await expect(page.locator('.tx-figure svg').first()).toBeVisible({ timeout: 60_000 });
+  // far below: still placeholders (each keeps an estimated height)
+  await expect(page.locator(pending).first()).toBeAttached();
+  const far = await page.locator(pending).count();
+  expect(far).toBeGreaterThan(0);
+  expect(await page.locator(pending).first().evaluate((el) => el.getBoundingClientRect().height)).toBeGreaterThan(100);
+  // scrolling to a part mounts it
+  await page.locator('#part-3c').scrollIntoViewIfNeeded();
+  await expect(page.getByTestId('answer-3c')).toHaveCount(1, { timeout: 30_000 });
+  // before printing, everything mounts synchronously (within the beforeprint event)
+  const left = await page.evaluate((sel) => {
+    window.dispatchEvent(new Event('beforeprint'));
+    return document.querySelectorAll(sel).length;
+  }, pending);
+  expect(left).toBe(0);
+  await expect(page.getByTestId('explore-further').locator('.panel').first()).toBeAttached();
+});
+
+test('formulas are typeset (in a worker) and the page never loads KaTeX itself', async ({ page }) => {
+  const scripts: string[] = [];
+  page.on('request', (r) => {
+    let fromPage = false;
+    try {
+      fromPage = r.frame() === page.mainFrame();
+    } catch {
+      // a worker's request has no frame
+    }
+    if (fromPage && r.resourceType() === 'script') scripts.push(r.url());
+  });
+  await page.goto('./#/hemisphere');
+  await page.waitForSelector('main#main');
+  // the question's statement on the first screen is typeset
+  await expect(page.locator('#question-1 .katex').first()).toBeAttached({ timeout: 60_000 });
+  const html = await page.locator('#question-1 .katex').first().innerHTML();
+  expect(html).toContain('katex-mathml'); // HTML + MathML for screen readers
+  expect(scripts.filter((u) => /vendor-katex/.test(u)), 'KaTeX is not loaded on the main thread').toEqual([]);
+});
