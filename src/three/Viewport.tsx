@@ -86,32 +86,38 @@ export function Viewport({ ariaLabel, height = 360, setup, testId, phiZero = tru
     let eng: Engine | null = null;
     let stopVis = () => {};
     const container = box.current;
-    import('./engine').then((m) => {
-      if (!alive) return;
-      if (!m.webglAvailable()) {
-        setStatus('no-webgl');
-        return;
-      }
-      try {
-        eng = m.createEngine(container, labelNow());
-      } catch {
-        setStatus('no-webgl');
-        return;
-      }
-      let onScreen = false;
-      const update = () => eng?.setVisible(onScreen && !document.hidden);
-      const stopIO = observeVisibility(container, (v) => {
-        onScreen = v;
-        update();
-      });
-      document.addEventListener('visibilitychange', update);
-      stopVis = () => {
-        stopIO();
-        document.removeEventListener('visibilitychange', update);
-      };
-      setEngine(eng);
-      setStatus('ready');
-    });
+    // The start is split into tasks that yield (issue 15: on a phone each was a long task): the
+    // probe, the renderer, the scene's setup (effect below), the shaders (warmUp), the first frame.
+    import('./engine')
+      .then((m) => m.startEngine(container, labelNow(), () => alive))
+      .then(
+        (created) => {
+          if (!alive) {
+            created?.dispose();
+            return;
+          }
+          if (!created) {
+            setStatus('no-webgl');
+            return;
+          }
+          eng = created;
+          let onScreen = false;
+          const update = () => eng?.setVisible(onScreen && !document.hidden);
+          const stopIO = observeVisibility(container, (v) => {
+            onScreen = v;
+            update();
+          });
+          document.addEventListener('visibilitychange', update);
+          stopVis = () => {
+            stopIO();
+            document.removeEventListener('visibilitychange', update);
+          };
+          setEngine(created);
+        },
+        () => {
+          if (alive) setStatus('no-webgl');
+        },
+      );
     return () => {
       alive = false;
       stopVis();
@@ -140,6 +146,28 @@ export function Viewport({ ariaLabel, height = 360, setup, testId, phiZero = tru
       engine.ctx.invalidate();
     };
   }, [engine]);
+
+  // after the first setup: the shaders, compiled in short tasks; until then the placeholder stays
+  useEffect(() => {
+    if (!engine) return;
+    let alive = true;
+    engine.warmUp().then(
+      () => {
+        if (alive) setStatus('ready');
+      },
+      () => {
+        if (alive) setStatus('ready'); // the first frame compiles what is left (and reports any error)
+      },
+    );
+    return () => {
+      alive = false;
+    };
+  }, [engine]);
+
+  // the first frame once ready (the triad and the reset button are in the DOM by then)
+  useEffect(() => {
+    if (engine && status === 'ready') engine.start();
+  }, [engine, status]);
 
   // the axis triad follows the camera after every render (direct DOM writes: no React render)
   useEffect(() => {

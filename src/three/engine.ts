@@ -6,6 +6,7 @@
 import type * as Three from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import * as THREE from './threeSubset';
+import { nextTask, SLICE_MS } from '../ui/chunked';
 
 /**
  * The part of three.js the scenes' 3D views use (./threeSubset.ts), handed to them as `ctx.THREE`
@@ -58,55 +59,143 @@ export interface Engine {
   onAfterRender: (cb: (axes: AxisDirs) => void) => () => void;
   /** Visible on screen and tab not hidden: frames run only then. */
   setVisible: (v: boolean) => void;
+  /**
+   * Compile the shaders of everything in the scene now, in short tasks that yield (call it after
+   * the scene's setup). Resolves when every program is linked and checked, or when the engine is
+   * disposed. No frame is drawn before {@link Engine.start}.
+   */
+  warmUp: () => Promise<void>;
+  /** Allow frames: the first one is drawn as soon as the view is on screen. */
+  start: () => void;
   dispose: () => void;
 }
 
 /** Shortest time between two frames on a software WebGL (ms): 10 frames per second at most. */
 const SOFTWARE_FRAME_MS = 100;
 
+/**
+ * Wait before checking each compiled program (ms): the GPU side compiles meanwhile, and the check
+ * (a synchronous round trip) then finds it done instead of blocking the page.
+ */
+const COMPILE_WAIT_MS = 16;
+
+/** Longest wait for the GPU side to finish the warm-up's draws before the first frame (ms). */
+const FENCE_MAX_MS = 3000;
+
 /** Renderer strings of WebGL implementations that run on the CPU (no GPU, or a blocklisted one). */
 const SOFTWARE_GL = /swiftshader|llvmpipe|softpipe|software|basic render/i;
 let probed: { available: boolean; software: boolean } | null = null;
 
 /**
- * Can the browser give a WebGL context, and is it a software one (SwiftShader, llvmpipe …)?
- * Checked once, without three (so no console error), and the probe context is released.
+ * The context attributes of a renderer on a software WebGL (three.js's defaults, without
+ * multisampling): the probe asks for these, so that its context can become the first renderer's.
+ */
+const SOFTWARE_ATTRS: WebGLContextAttributes = {
+  alpha: true,
+  depth: true,
+  stencil: false,
+  antialias: false,
+  premultipliedAlpha: true,
+  preserveDrawingBuffer: false,
+  powerPreference: 'low-power',
+  failIfMajorPerformanceCaveat: false,
+};
+
+/**
+ * The probe's WebGL2 context on a software WebGL, kept for the first engine: creating a context
+ * there costs tens of ms of main thread (×4 on a phone), so the page creates one, not two.
+ */
+let spare: { canvas: HTMLCanvasElement; gl: WebGL2RenderingContext } | null = null;
+
+/**
+ * Can the browser give a WebGL 2 context, and is it a software one (SwiftShader, llvmpipe …)?
+ * Checked once, without three (so no console error). The probe context is released, except on a
+ * software WebGL, where the first engine adopts it.
  */
 export function probeWebGL(): { available: boolean; software: boolean } {
   if (probed) return probed;
   try {
     const c = document.createElement('canvas');
-    const gl = (c.getContext('webgl2') ?? c.getContext('webgl')) as WebGLRenderingContext | null;
+    // three.js (r163 on) draws with WebGL 2 only: without it the view is off (and three's error unlogged)
+    const gl = c.getContext('webgl2', SOFTWARE_ATTRS) as WebGL2RenderingContext | null;
     if (!gl) return (probed = { available: false, software: false });
     // Chromium reports the real renderer in RENDERER; others through WEBGL_debug_renderer_info.
     const dbg = gl.getExtension('WEBGL_debug_renderer_info');
     const name = `${String(gl.getParameter(gl.RENDERER) ?? '')} ${dbg ? String(gl.getParameter(dbg.UNMASKED_RENDERER_WEBGL) ?? '') : ''}`;
-    gl.getExtension('WEBGL_lose_context')?.loseContext();
-    return (probed = { available: true, software: SOFTWARE_GL.test(name) });
+    const software = SOFTWARE_GL.test(name);
+    if (software) spare = { canvas: c, gl };
+    else gl.getExtension('WEBGL_lose_context')?.loseContext();
+    return (probed = { available: true, software });
   } catch {
     return (probed = { available: false, software: false });
   }
 }
 
-/** True when the browser can give a WebGL context (checked without three, so no console error). */
+/** True when the browser can give a WebGL 2 context (checked without three, so no console error). */
 export function webglAvailable(): boolean {
   return probeWebGL().available;
 }
 
-export function createEngine(container: HTMLElement, ariaLabel: string): Engine {
+/** The probe's context if it is still unused and alive (once). */
+function takeSpare(): { canvas: HTMLCanvasElement; gl: WebGL2RenderingContext } | null {
+  const s = spare;
+  spare = null;
+  return s && !s.gl.isContextLost() ? s : null;
+}
+
+/** A promise of the next task (so that the work after it is a task of its own). */
+const yieldTask = () => new Promise<void>((resolve) => nextTask(resolve));
+
+/**
+ * Start an engine in separate tasks, yielding in between (a phone counts every task over 50 ms
+ * as blocking): the WebGL probe (its context creation), the renderer, then camera and controls.
+ * Resolves to null when WebGL is missing, or when `alive()` turns false meanwhile (nothing is left
+ * behind then). Throws what three.js throws when the renderer cannot be created.
+ */
+export async function startEngine(container: HTMLElement, ariaLabel: string, alive: () => boolean): Promise<Engine | null> {
+  await yieldTask();
+  if (!alive()) return null;
+  if (!webglAvailable()) return null;
+  await yieldTask();
+  if (!alive()) return null;
+  const made = createRenderer();
+  await yieldTask();
+  if (!alive()) {
+    made.renderer.dispose();
+    return null;
+  }
+  return createEngine(container, ariaLabel, made);
+}
+
+/**
+ * The renderer: on a software WebGL the probe's context if still unused (see {@link spare}).
+ * Its own task at start: three's context set-up (extensions, capabilities, state) alone is tens
+ * of ms on a phone.
+ */
+function createRenderer(): { renderer: Three.WebGLRenderer; software: boolean } {
   // On a software WebGL (no usable GPU) every frame is drawn by the CPU and, with software
   // compositing, read back synchronously on the main thread: at device pixel ratio 1.75–2 with 4×
   // multisampling that is tens of ms per frame, and an animation of a few seconds blocks the page
   // for seconds (measured: Lighthouse mobile, hemisphere). There, draw at 1 CSS px per pixel and
   // without multisampling: several times fewer pixels to shade and read back.
   const software = probeWebGL().software;
-  const renderer = new THREE.WebGLRenderer({ antialias: !software, alpha: true, powerPreference: 'low-power' });
+  const adopted = software ? takeSpare() : null;
+  const renderer = adopted
+    ? new THREE.WebGLRenderer({ canvas: adopted.canvas, context: adopted.gl, antialias: false, alpha: true, powerPreference: 'low-power' })
+    : new THREE.WebGLRenderer({ antialias: !software, alpha: true, powerPreference: 'low-power' });
   renderer.setPixelRatio(software ? 1 : Math.min(window.devicePixelRatio || 1, 2));
   renderer.setClearColor(0x000000, 0);
+  return { renderer, software };
+}
+
+export function createEngine(container: HTMLElement, ariaLabel: string, made: { renderer: Three.WebGLRenderer; software: boolean } = createRenderer()): Engine {
+  const { renderer, software } = made;
   const canvas = renderer.domElement;
   canvas.setAttribute('role', 'img');
   canvas.setAttribute('aria-label', ariaLabel);
-  container.appendChild(canvas);
+  // the canvas joins the page in start(): a canvas outside the document is never composited, so the
+  // warm-up's draws cost no synchronous read-back (with software compositing, every presented
+  // WebGL frame is read back on the main thread, waiting for the GPU side to finish it)
 
   const scene = new THREE.Scene();
   const camera = new THREE.PerspectiveCamera(40, 1, 0.01, 1000);
@@ -123,6 +212,9 @@ export function createEngine(container: HTMLElement, ariaLabel: string): Engine 
   // keyboard orbit/zoom is handled by the Viewport (arrows orbit, +/− zoom), not OrbitControls' pan keys
 
   let visible = false;
+  /** No frame before start() (after warmUp): the first render would compile every shader in one task. */
+  let started = false;
+  let disposed = false;
   let needsRender = true;
   let raf = 0;
   let last = 0;
@@ -157,7 +249,7 @@ export function createEngine(container: HTMLElement, ariaLabel: string): Engine 
     else last = 0;
   };
   const schedule = () => {
-    if (raf || timer || !visible) return;
+    if (raf || timer || !visible || !started) return;
     const wait = lastFrame + minFrameMs - performance.now();
     if (wait > 0) {
       timer = window.setTimeout(() => {
@@ -219,6 +311,82 @@ export function createEngine(container: HTMLElement, ariaLabel: string): Engine 
     invalidate();
   };
 
+  // Shader programs are compiled and linked by the GPU process (or thread) while the page goes on;
+  // only checking them (three does that on a program's first use) waits for it. The GPU pipelines
+  // (SwiftShader compiles each at its first draw) are built when a draw is executed, and waited for
+  // when the frame is presented. Without KHR_parallel_shader_compile (SwiftShader has none) all of
+  // that fell into the first frame: one long task of hundreds of ms on a phone. Here, each step is a
+  // task of its own: the programs issued a few objects at a time; each program checked after a short
+  // wait (the GPU side compiles meanwhile); each object drawn alone into the canvas while it is not
+  // in the document (buffers uploaded, pipelines built, nothing presented); then a fence, polled
+  // (never waited on), until the GPU side has done it all.
+  const renderables = () => {
+    const out: Three.Object3D[] = [];
+    scene.traverse((o) => {
+      const m = o as Three.Object3D & { isMesh?: boolean; isPoints?: boolean; isLine?: boolean; isSprite?: boolean };
+      if (m.isMesh || m.isPoints || m.isLine || m.isSprite) out.push(o);
+    });
+    return out;
+  };
+  /** Render the scene with only `o` (and its ancestors) visible; the visibilities are restored. */
+  const drawAlone = (o: Three.Object3D, all: Three.Object3D[]) => {
+    const was = new Map<Three.Object3D, boolean>();
+    for (const x of all) {
+      was.set(x, x.visible);
+      x.visible = false;
+    }
+    for (let a: Three.Object3D | null = o; a && a !== scene; a = a.parent) {
+      if (!was.has(a)) was.set(a, a.visible);
+      a.visible = true;
+    }
+    try {
+      renderer.render(scene, camera);
+    } finally {
+      for (const [x, v] of was) x.visible = v;
+    }
+  };
+  const pause = (ms: number) => new Promise((r) => setTimeout(r, ms));
+  const warmUp = async () => {
+    await yieldTask();
+    if (disposed) return;
+    const objects = renderables();
+    const gl = renderer.getContext();
+    let t0 = performance.now();
+    for (const o of objects) {
+      renderer.compile(o, camera, scene);
+      if (performance.now() - t0 >= SLICE_MS) {
+        gl.flush();
+        await yieldTask();
+        if (disposed) return;
+        t0 = performance.now();
+      }
+    }
+    gl.flush();
+    for (const program of renderer.info.programs ?? []) {
+      await pause(COMPILE_WAIT_MS);
+      if (disposed) return;
+      program.getUniforms(); // the first use: link status, uniforms and attributes
+    }
+    if (canvas.isConnected) return; // started already: frames do the rest
+    for (const o of objects) {
+      await yieldTask();
+      if (disposed || canvas.isConnected) return;
+      if (o.parent) drawAlone(o, objects);
+    }
+    if (!(gl instanceof WebGL2RenderingContext)) return;
+    const sync = gl.fenceSync(gl.SYNC_GPU_COMMANDS_COMPLETE, 0);
+    gl.flush();
+    const until = performance.now() + FENCE_MAX_MS;
+    try {
+      while (sync && gl.getSyncParameter(sync, gl.SYNC_STATUS) !== gl.SIGNALED && performance.now() < until) {
+        await pause(COMPILE_WAIT_MS);
+        if (disposed) return;
+      }
+    } finally {
+      if (!disposed && sync) gl.deleteSync(sync);
+    }
+  };
+
   const ctx: ViewportContext = {
     THREE,
     scene,
@@ -248,6 +416,14 @@ export function createEngine(container: HTMLElement, ariaLabel: string): Engine 
       invalidate();
       return () => renderCbs.delete(cb);
     },
+    warmUp,
+    start: () => {
+      if (started || disposed) return;
+      started = true;
+      container.prepend(canvas); // under the triad and the buttons, as when it was added at creation
+      needsRender = true;
+      schedule();
+    },
     setVisible: (v) => {
       visible = v;
       if (v && (needsRender || frameCbs.size)) schedule();
@@ -260,6 +436,7 @@ export function createEngine(container: HTMLElement, ariaLabel: string): Engine 
       }
     },
     dispose: () => {
+      disposed = true;
       if (raf) cancelAnimationFrame(raf);
       clearTimeout(timer);
       ro.disconnect();

@@ -9,6 +9,7 @@ import type { SceneProps } from '../../app/scene';
 import { Derivation, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Plot, Readout, SceneLayout, Select, Slider, TEXT_HZ, TimelineTransport, Toggle, useSeenOnce, useTimeline, useTimelineFrame, type Timeline } from '../../ui';
 import type { PlotTrace } from '../../ui';
 import { useWorkerJob } from '../../workers';
+import { runChunked } from '../../ui/chunked';
 import type { LightStrategy } from '../../core/lights';
 import {
   STRATEGIES,
@@ -18,7 +19,7 @@ import {
   animationLength,
   buildModel,
   convergence,
-  estimateAll,
+  estimateOne,
   floorJob,
   floorPassAt,
   givenSamples,
@@ -62,19 +63,44 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
 
   // Up to SYNC_MAX samples per strategy the estimates are computed here (a few ms); beyond, in a
   // worker, so a slider drag never blocks the page. Same seeds and streams: the same numbers.
+  // In the render, only the chosen strategy's (the readouts at the top); the table's three in
+  // tasks after it, one strategy per task (issue 15: all three in the first render were one long
+  // task on a phone, cold code at 4× CPU slowdown).
   const big = n > SYNC_MAX;
-  const syncEstimates = useMemo(() => (big ? null : estimateAll(model, n, seed)), [big, model, n, seed]);
+  // what the estimates depend on (the model object is rebuilt on any parameter change, t included)
+  const timingKey = JSON.stringify([model.p, model.lc, model.w, model.h, model.tilt, model.L, model.rho, model.occluder ? 1 : 0, seed]);
+  const chosenSync = useMemo(() => (big ? null : estimateOne(model, strategy, n, seed)), [big, model, strategy, n, seed]);
+  const [later, setLater] = useState<{ key: string; list: StrategyEstimate[] } | null>(null);
+  const estKey = `${timingKey}|${n}`;
+  const latestModel = useRef(model);
+  latestModel.current = model;
+  useEffect(() => {
+    if (big) return;
+    const m = latestModel.current;
+    const list: StrategyEstimate[] = [];
+    const cancels = STRATEGIES.map((s) =>
+      runChunked(() => {
+        list.push(estimateOne(m, s, n, seed));
+        if (list.length === STRATEGIES.length) setLater({ key: estKey, list });
+      }),
+    );
+    return () => cancels.forEach((c) => c());
+  }, [big, estKey, n, seed]);
   const estTask = useWorkerJob<StrategyEstimate[]>(makeWorker, 'estimates', params, { enabled: big, delayMs: 150 });
-  const estimates: StrategyEstimate[] = useMemo(
-    () => syncEstimates ?? estTask.result ?? STRATEGIES.map((s) => ({ strategy: s, estimate: NaN, stderr: NaN, n })),
-    [syncEstimates, estTask.result, n],
-  );
+  /** The table's estimates, null until they are computed. */
+  const estimates: StrategyEstimate[] | null = big
+    ? (estTask.result ?? null)
+    : later?.key === estKey
+      ? later.list
+      : null;
   const pending = big && !estTask.result;
-  const chosen = estimates.find((e) => e.strategy === strategy)!;
+  const chosen: StrategyEstimate = useMemo(
+    () => chosenSync ?? estimates?.find((e) => e.strategy === strategy) ?? { strategy, estimate: NaN, stderr: NaN, n },
+    [chosenSync, estimates, strategy, n],
+  );
   const target = targetValue(model);
   const patch = useMemo(() => patchModel(model, params.pu, params.pv, params.psize, params.ptilt), [model, params.pu, params.pv, params.psize, params.ptilt]);
   const given = useMemo(() => givenSamples(model, seed, 4), [model, seed]);
-  const timingKey = JSON.stringify([model.p, model.lc, model.w, model.h, model.tilt, model.L, model.rho, model.occluder ? 1 : 0, seed]);
   // Convergence series (3 × 32768 samples) in the worker: ~0.1 s that a slider drag should not wait for.
   // The convergence and timing runs start when their panels come near the screen (not on load:
   // their results re-render the scene while the first screen should be answering input).
@@ -474,7 +500,14 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
               </tr>
             </thead>
             <tbody>
-              {estimates.map((e) => (
+              {estimates === null ? (
+                <tr>
+                  <td colSpan={4}>
+                    <progress aria-label="Estimating the three strategies" /> Estimating…
+                  </td>
+                </tr>
+              ) : null}
+              {(estimates ?? []).map((e) => (
                 <tr key={e.strategy} className={e.strategy === strategy ? 'al-current' : undefined}>
                   <th scope="row" title={STRATEGY_LABEL[e.strategy]}>
                     {STRATEGY_SHORT[e.strategy]}

@@ -214,12 +214,15 @@ export interface StrategyEstimate {
   n: number;
 }
 
+/** One strategy with n samples (stream = the strategy's index in STRATEGIES: the numbers of estimateAll). */
+export function estimateOne(m: AreaLightModel, strategy: LightStrategy, n: number, seed: number): StrategyEstimate {
+  const r = estimateAreaLight(m.setup, strategy, n, seed, STRATEGIES.indexOf(strategy));
+  return { strategy, estimate: r.estimate, stderr: r.stderr, n: r.n };
+}
+
 /** All three strategies with n samples each (streams 0, 1, 2 of the seed). */
 export function estimateAll(m: AreaLightModel, n: number, seed: number): StrategyEstimate[] {
-  return STRATEGIES.map((s, i) => {
-    const r = estimateAreaLight(m.setup, s, n, seed, i);
-    return { strategy: s, estimate: r.estimate, stderr: r.stderr, n: r.n };
-  });
+  return STRATEGIES.map((s) => estimateOne(m, s, n, seed));
 }
 
 /** The value the estimators converge to: the occluded reference when an occluder is on and known. */

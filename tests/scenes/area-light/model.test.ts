@@ -6,6 +6,7 @@ import {
   convergence,
   drawSamples,
   estimateAll,
+  estimateOne,
   floorJob,
   floorPass,
   imageRmse,
@@ -39,6 +40,20 @@ describe('area-light model', () => {
       }
     });
   }
+
+  it('one strategy alone (the readout at the top) gives the numbers of the three together (the table, the worker)', () => {
+    const m = buildModel(withP({ tilt: 25, occluder: true }));
+    for (const [n, seed] of [
+      [1, 9],
+      [1000, 2],
+      [4097, 5],
+    ] as const) {
+      const all = estimateAll(m, n, seed);
+      for (const e of all) expect(estimateOne(m, e.strategy, n, seed)).toEqual(e);
+      // and the strategies differ (each its own stream), so the comparison above can fail
+      if (n > 1) expect(new Set(all.map((e) => e.estimate)).size).toBe(3);
+    }
+  });
 
   it('zero-size light: an error message and the 1 × 1 fallback', () => {
     const m = buildModel(withP({ ls: [0, 1] }));

@@ -22,6 +22,7 @@ import { fillSequence2D, type SequenceKind } from '../../../core/random';
 import { squarePoint, warpedGrid, type AnimFrame, type Lobe } from '../model';
 import { MAX_N } from '../params';
 import { xiColor } from './colors';
+import { nextTask, SLICE_MS } from '../../../ui/chunked';
 
 const BATCH = 1 << 15;
 /** New points of the first frame, before the generation speed is known (cold code runs slowly). */
@@ -178,7 +179,8 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
         [o.col, 3],
         [o.xi, 2],
       ] as const) {
-        attr.clearUpdateRanges();
+        // ranges add up until the next render uploads them (three merges and clears them then):
+        // the start-up fill generates several batches between two renders
         attr.addUpdateRange(w * start, w * (end - start));
         attr.needsUpdate = true;
       }
@@ -264,8 +266,9 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
 
     // the hemisphere shell, its rim, the outline of the unit square in the base plane, and the axes
     const shellGeom = new T.SphereGeometry(1, 48, 24, 0, 2 * Math.PI, 0, Math.PI / 2);
-    shellGeom.rotateX(Math.PI / 2);
-    ctx.scene.add(new T.Mesh(shellGeom, new T.MeshBasicMaterial({ color: 0x8899aa, transparent: true, opacity: 0.07, depthWrite: false, side: T.DoubleSide })));
+    const shell = new T.Mesh(shellGeom, new T.MeshBasicMaterial({ color: 0x8899aa, transparent: true, opacity: 0.07, depthWrite: false, side: T.DoubleSide }));
+    shell.rotation.x = Math.PI / 2; // the cap from y up to z up (on the object: rotating the geometry's vertices cost a phone ~30 ms)
+    ctx.scene.add(shell);
     const rimPts: number[] = [];
     for (let i = 0; i <= 96; i++) {
       const a = (i / 96) * 2 * Math.PI;
@@ -313,10 +316,32 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
     };
     ctx.controls.addEventListener('start', onStart);
     ctx.controls.addEventListener('end', onEnd);
-    buildGrid();
     fill.current.filled = 0;
     fill.current.target = cfg.current.frame.shown;
     apply();
+    // the grid in a task of its own (before the engine's shader warm-up, which queues after it)
+    nextTask(() => {
+      if (objs.current === null || ctxRef.current !== ctx) return;
+      buildGrid();
+      apply();
+    });
+
+    // The first fill, before the first frame (the engine draws none until its shaders are ready):
+    // in tasks of about SLICE_MS each, not in frames (issue 15: on a software WebGL every frame is
+    // a synchronous read-back of tens of ms on a phone, and the fill took one frame per batch).
+    let filling = true;
+    const fillTask = () => {
+      const a = fill.current;
+      if (!filling || objs.current === null) return;
+      if (a.filled >= a.target) {
+        filling = false;
+        return;
+      }
+      generate(Math.min(a.target, a.filled + (a.pointsPerMs ? Math.max(MIN_PER_FRAME, Math.floor(a.pointsPerMs * SLICE_MS)) : FIRST_FRAME)));
+      apply();
+      nextTask(fillTask);
+    };
+    nextTask(fillTask);
 
     // fill the buffers up to what the frame needs, at most perFrame points per frame; frames are
     // requested only while there is something left to fill
@@ -334,6 +359,7 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
       return a.filled < a.target;
     });
     return () => {
+      filling = false;
       stop();
       ctx.controls.removeEventListener('start', onStart);
       ctx.controls.removeEventListener('end', onEnd);
