@@ -259,6 +259,7 @@ export function useTimeline(opts: TimelineOptions): Timeline {
       if (l.exact >= l.max) setExact(0); // play from the start after the end
       setPlaying(true);
     } else if (l.playing) {
+      l.playing = false; // at once: no frame may move past the position written below
       setPlaying(false);
       setExact(l.exact);
       const t = positionShown(l.exact, l.integer);
@@ -283,6 +284,9 @@ export function useTimeline(opts: TimelineOptions): Timeline {
   const shown = (e: number) => positionShown(e, live.current.integer);
 
   const pause = useCallback(() => {
+    // at once, not at React's next render: a frame that runs before that render must not move
+    // the position past the one paused at (and written to the link)
+    live.current.playing = false;
     setPlaying(false);
     setExact(live.current.exact); // React state catches up with a position that ran ahead (renderHz)
     write({ t: shown(live.current.exact), play: false });
@@ -308,11 +312,13 @@ export function useTimeline(opts: TimelineOptions): Timeline {
     let next = positionShown(l.exact, l.integer) + stepSizeRef.current;
     if (next > l.max) next = l.loop ? 0 : l.max;
     next = clampPosition(next, l.max, l.integer);
+    live.current.playing = false;
     setPlaying(false);
     setExact(next);
     write({ t: next, play: false });
   }, [write, setExact]);
   const reset = useCallback(() => {
+    live.current.playing = false;
     setPlaying(false);
     setExact(0);
     write({ t: 0, play: false });
