@@ -44,7 +44,7 @@ function hookPrint(): void {
   if (printHooked || typeof window === 'undefined') return;
   printHooked = true;
   // capture: before MathTex's own beforeprint listener (on window, capture listeners run first),
-  // so the formulas of the sections mounted here are typeset by that flush too
+  // so the formulas of the sections mounted here are sent to the typesetter by that flush too
   window.addEventListener('beforeprint', flushDeferred, { capture: true });
 }
 
