@@ -83,3 +83,6 @@ export function summarize(profile, { top = 25, withInclusive = false } = {}) {
 }
 
 export { print as printTop };
+
+/** The phone the load diagnostics emulate (Lighthouse's mobile screen; no service worker). */
+export const PHONE_CONTEXT = { viewport: { width: 412, height: 823 }, deviceScaleFactor: 1.75, isMobile: true, hasTouch: true, serviceWorkers: 'block' };

@@ -9,7 +9,7 @@
  */
 import { chromium } from 'playwright-core';
 import { CHROMIUM_ARGS, findChromium } from './chromium.mjs';
-import { inclusive, printTop, serveDist, summarize, takeOpt } from './cpuprofile.mjs';
+import { inclusive, printTop, serveDist, summarize, takeOpt, PHONE_CONTEXT } from './cpuprofile.mjs';
 
 const args = process.argv.slice(2);
 const opt = (n, d) => takeOpt(args, n, d);
@@ -25,7 +25,7 @@ const server = await serveDist(dist, port);
 const browser = await chromium.launch({ executablePath: findChromium(), args: CHROMIUM_ARGS });
 try {
   for (const route of routes) {
-    const ctx = await browser.newContext({ viewport: { width: 412, height: 823 }, deviceScaleFactor: 1.75, isMobile: true, hasTouch: true, serviceWorkers: 'block' });
+    const ctx = await browser.newContext(PHONE_CONTEXT);
     const page = await ctx.newPage();
     const cdp = await ctx.newCDPSession(page);
     await cdp.send('Emulation.setCPUThrottlingRate', { rate });

@@ -13,7 +13,7 @@
  */
 import { chromium } from 'playwright-core';
 import { CHROMIUM_ARGS, findChromium } from './chromium.mjs';
-import { serveDist, takeOpt } from './cpuprofile.mjs';
+import { serveDist, takeOpt, PHONE_CONTEXT } from './cpuprofile.mjs';
 
 function takeFlag(list, name) {
   const i = list.indexOf(name);
@@ -36,7 +36,7 @@ const server = await serveDist(dist, port);
 const browser = await chromium.launch({ executablePath: findChromium(), args: CHROMIUM_ARGS });
 try {
   for (const route of routes) {
-    const ctx = await browser.newContext({ viewport: { width: 412, height: 823 }, deviceScaleFactor: 1.75, isMobile: true, hasTouch: true, serviceWorkers: 'block' });
+    const ctx = await browser.newContext(PHONE_CONTEXT);
     const page = await ctx.newPage();
     await browser.startTracing(page, { categories: ['devtools.timeline', 'disabled-by-default-devtools.timeline', 'v8.execute', 'blink.user_timing', ...(withJs ? ['disabled-by-default-v8.cpu_profiler'] : [])] });
     await page.goto(`http://127.0.0.1:${port}/app/${route}`);
