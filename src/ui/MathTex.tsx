@@ -1,6 +1,6 @@
 import { useEffect, useRef, useState } from 'react';
+import { KATEX_OPTIONS } from './katexOptions';
 import { flushMathForPrint, scheduleMath } from './mathQueue';
-
 import type { TypesetReply, TypesetRequest } from './katex.worker';
 
 type Katex = typeof import('katex');
@@ -60,12 +60,10 @@ export function prepareMath(): void {
   katexWorker();
 }
 
-const OPTIONS = { throwOnError: false, strict: 'ignore', output: 'htmlAndMathml' } as const;
-
 /** HTML for `tex` (null if KaTeX fails on it), typeset in the worker when there is one. */
 function typeset(tex: string, display: boolean): Promise<string | null> {
   const w = katexWorker();
-  const onMain = () => loadKatex().then((k) => k.renderToString(tex, { ...OPTIONS, displayMode: display }));
+  const onMain = () => loadKatex().then((k) => k.renderToString(tex, { ...KATEX_OPTIONS, displayMode: display }));
   if (!w) return onMain();
   return new Promise<string | null>((resolve, reject) => {
     const id = nextId++;

@@ -6,6 +6,7 @@
  * first).
  */
 import katex from 'katex';
+import { KATEX_OPTIONS } from './katexOptions';
 
 export interface TypesetRequest {
   id: number;
@@ -22,7 +23,7 @@ self.onmessage = (e: MessageEvent<TypesetRequest>) => {
   const { id, tex, display } = e.data;
   let html: string | null = null;
   try {
-    html = katex.renderToString(tex, { displayMode: display, throwOnError: false, strict: 'ignore', output: 'htmlAndMathml' });
+    html = katex.renderToString(tex, { ...KATEX_OPTIONS, displayMode: display });
   } catch {
     html = null;
   }
