@@ -44,6 +44,9 @@ async function openHost(page: Page, sceneHash: string): Promise<Frame> {
   await expect(frame.getByTestId('copy-link')).toBeVisible({ timeout: 30000 });
   const f = page.frames().find((x) => x.url().startsWith(`http://127.0.0.1:${appPort}/`));
   expect(f).toBeTruthy();
+  // the scene's later sections mount, and its formulas are typeset, in idle time: wait for both
+  // (src/ui/Deferred.tsx, src/ui/MathTex.tsx), so heights measured from here on are final
+  await expect(frame.locator('[data-deferred="pending"], .math-pending')).toHaveCount(0, { timeout: 30000 });
   return f!;
 }
 
