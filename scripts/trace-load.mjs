@@ -5,11 +5,11 @@
  * a "long task" there), each task listed with what ran inside it (script by function, style,
  * layout, paint, HTML parsing). A diagnostic for issue 15, not a test.
  *
- * Durations are the main thread's CPU time (the trace's thread duration), not wall time, so that
+ * Durations are (unless --wall) the main thread's CPU time (the trace's thread duration), not wall time, so that
  * a machine busy with other work still shows what the page itself costs; on a quiet machine the
  * two agree (Lighthouse uses wall time).
  *
- *   node scripts/trace-load.mjs [--dist dist] [--port 4338] [--ms 8000] [--min 12.5] [--js] '#/texture' …
+ *   node scripts/trace-load.mjs [--dist dist] [--port 4338] [--ms 8000] [--min 12.5] [--js] [--wall] '#/texture' …
  */
 import { chromium } from 'playwright-core';
 import { CHROMIUM_ARGS, findChromium } from './chromium.mjs';
@@ -30,6 +30,9 @@ const ms = Number(opt('--ms', '8000'));
 const min = Number(opt('--min', '12.5'));
 // --js: also sample the JavaScript stacks and list, per long task, the functions that took its time
 const withJs = takeFlag(args, '--js');
+// --wall: wall time instead of CPU time (what Lighthouse measures: it includes the main thread's
+// waits, e.g. on a software WebGL frame read back from the GPU process; only meaningful when quiet)
+const useWall = takeFlag(args, '--wall');
 const routes = args.length ? args : ['#/hemisphere'];
 
 const server = await serveDist(dist, port);
@@ -49,7 +52,7 @@ try {
     const ours = events.find((e) => e.name === 'ParseHTML' && String(e.args?.beginData?.url ?? '').includes(`127.0.0.1:${port}`) && names.get(`${e.pid}:${e.tid}`) === 'CrRendererMain');
     if (!ours) throw new Error(`${route}: no trace of the page's main thread`);
     const key = `${ours.pid}:${ours.tid}`;
-    const evs = events.filter((e) => `${e.pid}:${e.tid}` === key && e.ph === 'X' && e.dur !== undefined).map((e) => ({ ...e, wall: e.dur, dur: e.tdur ?? e.dur }));
+    const evs = events.filter((e) => `${e.pid}:${e.tid}` === key && e.ph === 'X' && e.dur !== undefined).map((e) => ({ ...e, wall: e.dur, dur: useWall ? e.dur : e.tdur ?? e.dur }));
     // JS samples of our thread (ProfileChunk events), as [time µs, node id], with the node tree
     const nodes = new Map();
     const samples = [];
