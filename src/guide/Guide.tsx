@@ -111,7 +111,8 @@ export default function Guide({ flags }: { flags: ShellFlags }) {
         <p>
           Add <code>present=1</code> to any link (or open this guide with it): larger type, keyboard shortcuts (press <kbd>?</kbd>). The{' '}
           <strong>QR code</strong> button beside Copy link shows the current configuration as a large code that students scan to get the same
-          scene on their phones.
+          scene on their phones. On phones and tablets a 3D view starts when the student taps <strong>Show the 3D view</strong> (it is the
+          heaviest part of a page on a phone, and until then swipes over it scroll the page); every number and plot works without it.
         </p>
         <h3>Print</h3>
         <p>

@@ -1,6 +1,6 @@
 import { useEffect, useEffectEvent, useId, useRef, useState } from 'react';
 import type { AxisDirs, Engine, ViewportContext } from './engine';
-import { observeVisibility, useSeenOnce } from '../ui/useInView';
+import { observeVisibility, touchOnly, useSeenOnce } from '../ui/useInView';
 
 export type { ViewportContext } from './engine';
 
@@ -73,15 +73,20 @@ export function Viewport({ ariaLabel, height = 360, setup, testId, phiZero = tru
   const triad = useRef<SVGSVGElement>(null);
   const box = useRef<HTMLDivElement>(null);
   const seen = useSeenOnce(box);
+  // On a phone or tablet the 3D view starts when asked (a tap on its button, or Enter on the
+  // focused view): three.js on a phone's CPU is the heaviest part of a scene's load (issue 15), and
+  // an idle view does not capture the swipes that scroll the page. Elsewhere it starts on sight.
+  const [wanted, setWanted] = useState(() => !touchOnly());
   const [engine, setEngine] = useState<Engine | null>(null);
   const [status, setStatus] = useState<'loading' | 'ready' | 'no-webgl'>('loading');
+  const idle = !wanted;
   const setupRef = useRef(setup);
   setupRef.current = setup;
   // ariaLabel is applied at creation (the latest one); later changes are applied by the effect below
   const labelNow = useEffectEvent(() => ariaLabel);
 
   useEffect(() => {
-    if (!seen || !box.current) return;
+    if (!seen || !wanted || !box.current) return;
     let alive = true;
     let eng: Engine | null = null;
     let stopVis = () => {};
@@ -124,7 +129,7 @@ export function Viewport({ ariaLabel, height = 360, setup, testId, phiZero = tru
       eng?.dispose();
       setEngine(null);
     };
-  }, [seen]);
+  }, [seen, wanted]);
 
   useEffect(() => {
     engine?.ctx.renderer.domElement.setAttribute('aria-label', ariaLabel);
@@ -176,6 +181,11 @@ export function Viewport({ ariaLabel, height = 360, setup, testId, phiZero = tru
   }, [engine]);
 
   const onKeyDown = (e: React.KeyboardEvent<HTMLDivElement>) => {
+    if (idle && e.target === e.currentTarget && (e.key === 'Enter' || e.key === ' ')) {
+      e.preventDefault();
+      setWanted(true);
+      return;
+    }
     if (!engine || e.ctrlKey || e.metaKey || e.altKey) return;
     const tag = (e.target as HTMLElement).tagName;
     if (tag === 'INPUT' || tag === 'SELECT' || tag === 'TEXTAREA') return;
@@ -186,18 +196,31 @@ export function Viewport({ ariaLabel, height = 360, setup, testId, phiZero = tru
   return (
     <div className="viewport-wrap">
       <div
-        className="viewport"
+        className={idle ? 'viewport viewport-idle' : 'viewport'}
         ref={box}
         style={{ height }}
         tabIndex={0}
         data-testid={testId}
-        data-status={status}
-        aria-label={`${ariaLabel} (drag or arrow keys to orbit, scroll or + / − to zoom, Home to reset the view)`}
+        data-status={idle ? 'idle' : status}
+        aria-label={idle ? `${ariaLabel} (3D view not started: press Enter to start it)` : `${ariaLabel} (drag or arrow keys to orbit, scroll or + / − to zoom, Home to reset the view)`}
         aria-describedby={hintId}
         role="group"
         onKeyDown={onKeyDown}
       >
-        {status === 'loading' ? <p className="viewport-msg">Loading 3D view…</p> : null}
+        {idle ? (
+          <div className="viewport-msg viewport-poster">
+            <p>{ariaLabel}</p>
+            <button type="button" className="viewport-start" onClick={() => {
+                setWanted(true);
+                box.current?.focus(); // the button goes away: keep the keyboard's place on the view
+              }} data-testid={testId ? `${testId}-start` : undefined}>
+              Show the 3D view
+            </button>
+            <p className="viewport-poster-note">On phones and tablets the 3D view starts when you ask for it.</p>
+          </div>
+        ) : status === 'loading' ? (
+          <p className="viewport-msg">Loading 3D view…</p>
+        ) : null}
         {status === 'no-webgl' ? (
           <p className="viewport-msg">This browser cannot create a WebGL context, so the 3D view is off; every number on the page still works.</p>
         ) : null}

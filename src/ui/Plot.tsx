@@ -1,5 +1,5 @@
 import { useEffect, useMemo, useRef, useState } from 'react';
-import { useSeenOnce } from './useInView';
+import { touchOnly, useSeenOnce } from './useInView';
 
 type PlotlyModule = (typeof import('plotly.js-cartesian-dist-min'))['default'];
 let plotlyPromise: Promise<PlotlyModule> | null = null;
@@ -40,10 +40,6 @@ export interface PlotProps {
   /** What the plot shows, for screen readers (the plot itself is not accessible). */
   ariaLabel: string;
   testId?: string;
-}
-
-function touchOnly(): boolean {
-  return typeof window.matchMedia === 'function' && window.matchMedia('(hover: none) and (pointer: coarse)').matches;
 }
 
 /** Largest magnitude Plotly draws: beyond it its axis arithmetic overflows to NaN paths. */

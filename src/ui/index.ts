@@ -4,7 +4,7 @@ export { MathTex, loadKatex } from './MathTex';
 export { runChunked, nextTask } from './chunked';
 export { Plot, loadPlotly, type PlotTrace, type PlotLayout } from './Plot';
 export { useShortcuts, type ShortcutHandlers } from './shortcuts';
-export { useSeenOnce, observeVisibility } from './useInView';
+export { useSeenOnce, observeVisibility, touchOnly } from './useInView';
 export { useTimeline, useTimelineFrame, useTimelinePosition, useCoarsePosition, timelineParams, advance, clampPosition, prefersReducedMotion, TIMELINE_SPEEDS, TEXT_HZ, type Timeline, type TimelineOptions, type TimelineListener } from './timeline';
 export { TimelineTransport, type TimelineTransportProps } from './TimelineTransport';
 export { ExamQuestion, ExamPart, Derivation, LiveAnswer, KeyNote, ExploreFurther, QuestionNav, questionHref } from './exam';

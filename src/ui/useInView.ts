@@ -41,3 +41,11 @@ export function observeVisibility(el: Element, onChange: (visible: boolean) => v
   io.observe(el);
   return () => io.disconnect();
 }
+
+/**
+ * True on a touch-only device (a phone or tablet: no hover, a coarse pointer). Such devices get
+ * lighter defaults: no Plotly mode bar, and 3D views that start when asked (src/three/Viewport).
+ */
+export function touchOnly(): boolean {
+  return typeof window !== 'undefined' && typeof window.matchMedia === 'function' && window.matchMedia('(hover: none) and (pointer: coarse)').matches;
+}

@@ -91,4 +91,40 @@ test.describe('shared 3D viewport', () => {
     expect(after - before).toBeGreaterThanOrEqual(1);
     expect(after - before).toBeLessThanOrEqual(3);
   });
+
+  test.describe('on a touch screen', () => {
+    test.use({ viewport: { width: 412, height: 823 }, isMobile: true, hasTouch: true });
+
+    test('the 3D view waits to be asked: no three.js until a tap; the page scrolls through it; Enter starts it too', async ({ page }) => {
+      const threeRequests: string[] = [];
+      page.on('request', (r) => {
+        if (/vendor-three/.test(r.url())) threeRequests.push(r.url());
+      });
+      await openScene(page, '#/hemisphere?n=64');
+      const vp = page.getByTestId('hemisphere-3d');
+      await vp.scrollIntoViewIfNeeded();
+      await expect(vp).toHaveAttribute('data-status', 'idle');
+      await expect(vp).toHaveAttribute('aria-label', /press Enter to start/);
+      // it says what it would show, and swipes over it scroll the page (no touch capture)
+      await expect(vp.locator('.viewport-poster')).toContainText('upper hemisphere');
+      expect(await vp.evaluate((el) => getComputedStyle(el).touchAction)).toBe('auto');
+      expect(threeRequests, 'three.js is not loaded before it is asked for').toEqual([]);
+      await page.getByTestId('hemisphere-3d-start').tap();
+      await expect(vp).toHaveAttribute('data-status', 'ready', { timeout: 30_000 });
+      expect(threeRequests.length).toBeGreaterThan(0);
+      // the keyboard's place is kept on the view, which now orbits
+      await expect(vp).toBeFocused();
+      await expect(page.getByTestId('hemisphere-3d-axes')).toHaveAttribute('data-distance', /\d/);
+      expect(await vp.evaluate((el) => getComputedStyle(el).touchAction)).toBe('none');
+
+      // another scene: focusing the idle view and pressing Enter starts it (no pointer needed)
+      await openScene(page, '#/area-light');
+      const al = page.locator('.viewport').first();
+      await al.scrollIntoViewIfNeeded();
+      await expect(al).toHaveAttribute('data-status', 'idle');
+      await al.focus();
+      await page.keyboard.press('Enter');
+      await expect(al).toHaveAttribute('data-status', 'ready', { timeout: 30_000 });
+    });
+  });
 });
