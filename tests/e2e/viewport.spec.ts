@@ -1,5 +1,6 @@
 // The shared 3D viewport (src/three): keyboard orbit and zoom, a visible focus ring, "Reset view",
 // a labelled axis triad, and no animation frames while idle. Checked on #/ray-sphere and #/hemisphere.
+import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, countAnimationFrames } from './fixtures';
 
 test.describe('shared 3D viewport', () => {
@@ -96,6 +97,7 @@ test.describe('shared 3D viewport', () => {
     test.use({ viewport: { width: 412, height: 823 }, isMobile: true, hasTouch: true });
 
     test('the 3D view waits to be asked: no three.js until a tap; the page scrolls through it; Enter starts it too', async ({ page }) => {
+      test.setTimeout(120_000);
       const threeRequests: string[] = [];
       page.on('request', (r) => {
         if (/vendor-three/.test(r.url())) threeRequests.push(r.url());
@@ -109,6 +111,9 @@ test.describe('shared 3D viewport', () => {
       await expect(vp.locator('.viewport-poster')).toContainText('upper hemisphere');
       expect(await vp.evaluate((el) => getComputedStyle(el).touchAction)).toBe('auto');
       expect(threeRequests, 'three.js is not loaded before it is asked for').toEqual([]);
+      // the waiting view is accessible (its button, its text's contrast)
+      const axe = await new AxeBuilder({ page }).include('[data-testid="hemisphere-3d"]').analyze();
+      expect(axe.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => v.id)).toEqual([]);
       await page.getByTestId('hemisphere-3d-start').tap();
       await expect(vp).toHaveAttribute('data-status', 'ready', { timeout: 30_000 });
       expect(threeRequests.length).toBeGreaterThan(0);
