@@ -9,7 +9,7 @@
  * a machine busy with other work still shows what the page itself costs; on a quiet machine the
  * two agree (Lighthouse uses wall time).
  *
- *   node scripts/trace-load.mjs [--dist dist] [--port 4338] [--ms 8000] [--min 12.5] [--js] [--wall] '#/texture' …
+ *   node scripts/trace-load.mjs [--dist dist] [--port 4338] [--ms 8000] [--min 12.5] [--js] [--wall] [--threads] '#/texture' …
  */
 import { chromium } from 'playwright-core';
 import { CHROMIUM_ARGS, findChromium } from './chromium.mjs';
@@ -33,6 +33,8 @@ const withJs = takeFlag(args, '--js');
 // --wall: wall time instead of CPU time (what Lighthouse measures: it includes the main thread's
 // waits, e.g. on a software WebGL frame read back from the GPU process; only meaningful when quiet)
 const useWall = takeFlag(args, '--wall');
+// --threads: also the busy CPU time of every thread of the browser (what competes for the cores)
+const withThreads = takeFlag(args, '--threads');
 const routes = args.length ? args : ['#/hemisphere'];
 
 const server = await serveDist(dist, port);
@@ -41,7 +43,7 @@ try {
   for (const route of routes) {
     const ctx = await browser.newContext(PHONE_CONTEXT);
     const page = await ctx.newPage();
-    await browser.startTracing(page, { categories: ['devtools.timeline', 'disabled-by-default-devtools.timeline', 'v8.execute', 'blink.user_timing', ...(withJs ? ['disabled-by-default-v8.cpu_profiler'] : [])] });
+    await browser.startTracing(page, { categories: ['devtools.timeline', 'disabled-by-default-devtools.timeline', 'v8.execute', 'blink.user_timing', ...(withJs ? ['disabled-by-default-v8.cpu_profiler'] : []), ...(withThreads ? ['toplevel'] : [])] });
     await page.goto(`http://127.0.0.1:${port}/app/${route}`);
     await page.waitForTimeout(ms);
     const buf = await browser.stopTracing();
@@ -74,7 +76,14 @@ try {
     const frameName = (n) => `${n.callFrame.functionName || '(anon)'} ${String(n.callFrame.url).replace(/^.*\/assets\//, '')}`;
     evs.sort((a, b) => a.ts - b.ts || b.dur - a.dur);
     const nav = evs.find((e) => e.name === 'RunTask')?.ts ?? 0;
-    const tasks = evs.filter((e) => e.name === 'RunTask' || e.name === 'ThreadControllerImpl::RunTask');
+    // top-level tasks only (with --threads the 'toplevel' category nests one task event in another)
+    let until = -Infinity;
+    const tasks = evs.filter((e) => {
+      if (e.name !== 'RunTask' && e.name !== 'ThreadControllerImpl::RunTask') return false;
+      if (e.ts < until) return false;
+      until = e.ts + e.wall;
+      return true;
+    });
     const long = [];
     for (const t of tasks) {
       if (t.dur / 1000 < min) continue;
@@ -135,6 +144,19 @@ try {
         if (n) js = `\n${' '.repeat(26)}app code: ${pct(inc)}\n${' '.repeat(26)}React: ${pct(phases)}\n${' '.repeat(26)}self: ${pct(self)}`;
       }
       long.push({ start: (t.ts - nav) / 1000, dur: t.dur / 1000, top: [...agg].sort((a, b) => b[1] - a[1]).slice(0, 6), js });
+    }
+    if (withThreads) {
+      // every thread's busy CPU time in the first --ms: what competes with the main thread for the
+      // machine's cores (workers, the GPU process's rasterizer, the compositor…)
+      const busy = new Map();
+      for (const e of events) {
+        if (e.ph !== 'X' || (e.name !== 'RunTask' && e.name !== 'ThreadControllerImpl::RunTask' && e.name !== 'ThreadPool_RunTask')) continue;
+        const k = `${e.pid}:${e.tid}`;
+        busy.set(k, (busy.get(k) ?? 0) + (e.tdur ?? e.dur) / 1000);
+      }
+      const rows = [...busy].sort((a, b) => b[1] - a[1]).slice(0, 12);
+      console.log(`\n${route}: CPU per thread (ms), the page's main thread is ${key}`);
+      for (const [k, v] of rows) console.log(`  ${v.toFixed(0).padStart(6)}  ${names.get(k) ?? '?'} (${k})`);
     }
     const tbt = long.reduce((s, t) => s + Math.max(0, t.dur * 4 - 50), 0);
     console.log(`\n== ${route}: ${long.length} tasks over ${min} ms of main-thread CPU; simulated TBT-like (×4, −50) ${tbt.toFixed(0)} ms`);
