@@ -168,6 +168,8 @@ async function measure(url) {
     if (!result) throw new Error('Lighthouse returned nothing');
     const { lhr } = result;
     if (process.env.PERF_DUMP) writeFileSync(process.env.PERF_DUMP, JSON.stringify(lhr));
+    // the observed trace Lighthouse simulated from (for a look at its long tasks' contents)
+    if (process.env.PERF_TRACE && result.artifacts?.Trace) writeFileSync(process.env.PERF_TRACE, JSON.stringify(result.artifacts.Trace));
     if (lhr.runtimeError) throw new Error(`${lhr.runtimeError.code}: ${lhr.runtimeError.message}`);
     const a = lhr.audits;
     const num = (id) => (typeof a[id]?.numericValue === 'number' ? a[id].numericValue : null);
