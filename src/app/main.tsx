@@ -2,6 +2,7 @@ import { StrictMode, startTransition } from 'react';
 import { createRoot } from 'react-dom/client';
 import { App } from './App';
 import '../ui/styles.css';
+import { whenQuiet } from './whenQuiet';
 
 const root = document.getElementById('root');
 if (root) {
@@ -35,10 +36,22 @@ function maybeFuzz() {
 maybeFuzz();
 window.addEventListener('hashchange', maybeFuzz);
 
-// Offline copy: register the service worker after the page has loaded, from a lazy chunk (not in
-// development, not in the single-file build, not from file://).
+// Offline copy: register the service worker from a lazy chunk (not in development, not in the
+// single-file build, not from file://) once the page has loaded and then been idle for 2 s: its
+// install precaches the whole build, about a second of CPU that competed with a scene's load on a
+// phone (./whenQuiet; issue 15).
 if (import.meta.env.PROD && import.meta.env.MODE !== 'single' && 'serviceWorker' in navigator && /^https?:$/.test(window.location.protocol)) {
-  const start = () => void import('./pwa').then((m) => m.registerPwa(), () => undefined);
+  // A page of the old build reloads, whole, as soon as a new build's worker takes over (another
+  // tab's "Reload"), even before this page has registered (it waits for quiet): its lazy chunks
+  // would otherwise be looked up in the new build's cache. Not on the first install's claim.
+  const hadController = navigator.serviceWorker.controller !== null;
+  navigator.serviceWorker.addEventListener('controllerchange', () => {
+    if (hadController) window.location.reload();
+  });
+  const start = () =>
+    void whenQuiet()
+      .then(() => import('./pwa'))
+      .then((m) => m.registerPwa(), () => undefined);
   if (document.readyState === 'complete') start();
   else window.addEventListener('load', start, { once: true });
 }

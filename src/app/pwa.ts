@@ -37,7 +37,8 @@ function showUpdateNotice(update: () => void): void {
 
 export function registerPwa(): void {
   // (Pages still running the old build in other tabs reload when the new build takes over:
-  // registerSW's own 'controlling' handler does it; tests/e2e/offline.spec.ts checks it.)
+  // main.tsx's controllerchange listener does it from the start, before this registration, and
+  // registerSW's own 'controlling' handler too; tests/e2e/offline.spec.ts checks it.)
   const updateSW = registerSW({
     immediate: true,
     onNeedRefresh() {

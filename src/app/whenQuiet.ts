@@ -1,0 +1,61 @@
+/**
+ * Resolves once the page has been idle for a while: `quietMs` of idle periods in a row, each a
+ * whole one (requestIdleCallback's deadline has ≥ {@link FULL_IDLE_MS} ms left, so nothing else was
+ * queued), or after `maxMs` whatever happens. A gap between idle callbacks (a task ran) starts the
+ * count again.
+ *
+ * Used to register the service worker (issue 15): its install downloads and stores the whole build
+ * (every scene, Plotly, three.js, KaTeX's fonts), about a second of CPU on a worker thread. Started
+ * while a scene is still mounting its sections, it took the second core from the page on a phone
+ * and stretched the page's own tasks several times over.
+ */
+
+/** An idle period with at least this much time left is a whole one (the browser caps them at 50 ms). */
+export const FULL_IDLE_MS = 40;
+
+export interface IdleApi {
+  request: (cb: (deadline: { timeRemaining: () => number; didTimeout: boolean }) => void, opts: { timeout: number }) => unknown;
+  now: () => number;
+  setTimeout: (cb: () => void, ms: number) => unknown;
+}
+
+function browserIdle(): IdleApi {
+  const ric = typeof requestIdleCallback === 'function' ? requestIdleCallback : null;
+  return {
+    request: (cb, opts) =>
+      ric
+        ? ric(cb, opts)
+        : setTimeout(() => cb({ timeRemaining: () => 50, didTimeout: false }), 100),
+    now: () => performance.now(),
+    setTimeout: (cb, ms) => setTimeout(cb, ms),
+  };
+}
+
+export function whenQuiet({ quietMs = 2000, maxMs = 30_000, api = browserIdle() }: { quietMs?: number; maxMs?: number; api?: IdleApi } = {}): Promise<void> {
+  return new Promise((resolve) => {
+    let done = false;
+    const finish = () => {
+      if (done) return;
+      done = true;
+      resolve();
+    };
+    api.setTimeout(finish, maxMs);
+    let since: number | null = null; // start of the current run of whole idle periods
+    let last = api.now();
+    const tick = (deadline: { timeRemaining: () => number; didTimeout: boolean }) => {
+      if (done) return;
+      const now = api.now();
+      const whole = !deadline.didTimeout && deadline.timeRemaining() >= FULL_IDLE_MS;
+      // consecutive idle periods follow each other closely; a long gap means a task ran in between
+      if (!whole || now - last > 120) since = null;
+      else if (since === null) since = now;
+      last = now;
+      if (since !== null && now - since >= quietMs) {
+        finish();
+        return;
+      }
+      api.request(tick, { timeout: 1000 });
+    };
+    api.request(tick, { timeout: 1000 });
+  });
+}

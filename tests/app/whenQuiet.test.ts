@@ -1,0 +1,59 @@
+import { describe, expect, it } from 'vitest';
+import { whenQuiet, type IdleApi } from '../../src/app/whenQuiet';
+
+/** A fake clock and idle scheduler: `busy(from, to)` marks spans where no idle period is whole. */
+function fakeIdle(busySpans: Array<[number, number]>) {
+  let t = 0;
+  const timers: Array<{ at: number; cb: () => void }> = [];
+  let pendingIdle: ((d: { timeRemaining: () => number; didTimeout: boolean }) => void) | null = null;
+  const api: IdleApi = {
+    request: (cb) => {
+      pendingIdle = cb;
+    },
+    now: () => t,
+    setTimeout: (cb, ms) => timers.push({ at: t + ms, cb }),
+  };
+  /** Advance in 50 ms idle periods until `until`; returns the time the promise settled (or null). */
+  const run = async (p: Promise<void>, until: number) => {
+    let settled: number | null = null;
+    void p.then(() => {
+      settled = t;
+    });
+    while (t < until && settled === null) {
+      t += 50;
+      for (const tm of timers.splice(0)) if (tm.at <= t) tm.cb(); else timers.push(tm);
+      const busy = busySpans.some(([a, b]) => t >= a && t < b);
+      const cb = pendingIdle;
+      pendingIdle = null;
+      if (cb) cb({ timeRemaining: () => (busy ? 3 : 49), didTimeout: false });
+      await Promise.resolve();
+      await Promise.resolve();
+    }
+    return settled;
+  };
+  return { api, run };
+}
+
+describe('whenQuiet', () => {
+  it('resolves after quietMs of whole idle periods in a row', async () => {
+    const { api, run } = fakeIdle([]);
+    const at = await run(whenQuiet({ quietMs: 1000, maxMs: 30_000, api }), 10_000);
+    expect(at).not.toBeNull();
+    expect(at!).toBeGreaterThanOrEqual(1000);
+    expect(at!).toBeLessThan(1300);
+  });
+
+  it('a busy stretch starts the count again', async () => {
+    const { api, run } = fakeIdle([[0, 2000], [2600, 3000]]);
+    const at = await run(whenQuiet({ quietMs: 1000, maxMs: 30_000, api }), 10_000);
+    expect(at!).toBeGreaterThanOrEqual(4000);
+    expect(at!).toBeLessThan(4300);
+  });
+
+  it('a page that is never quiet still gets it after maxMs', async () => {
+    const { api, run } = fakeIdle([[0, 1e9]]);
+    const at = await run(whenQuiet({ quietMs: 1000, maxMs: 5000, api }), 10_000);
+    expect(at!).toBeGreaterThanOrEqual(5000);
+    expect(at!).toBeLessThan(5200);
+  });
+});
