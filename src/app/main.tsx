@@ -2,6 +2,16 @@ import { StrictMode, startTransition } from 'react';
 import { createRoot } from 'react-dom/client';
 import { App } from './App';
 import '../ui/styles.css';
+import { findScene, sceneLoader } from '../scenes/registry';
+import { parseHash } from './route';
+import { firstScreen } from './firstScreen';
+import { afterPaint } from '../ui/afterPaint';
+
+// The opened scene's chunk is requested now, while React mounts the shell, not once the shell has
+// rendered (index.html has already started downloading it: scripts/routePreload.ts; issue 15). The
+// scene host's own import gets the same module; it also reports a failure.
+const opened = findScene(parseHash(window.location.hash).path);
+if (opened) void sceneLoader(opened.id)?.().catch(() => undefined);
 
 const root = document.getElementById('root');
 if (root) {
@@ -35,10 +45,18 @@ function maybeFuzz() {
 maybeFuzz();
 window.addEventListener('hashchange', maybeFuzz);
 
-// Offline copy: register the service worker after the page has loaded, from a lazy chunk (not in
-// development, not in the single-file build, not from file://).
+// Offline copy: register the service worker from a lazy chunk (not in development, not in the
+// single-file build, not from file://) once the page has loaded, the opened scene's first screen
+// has been painted (10 s at most) and the browser is idle: registering at 'load' put its chunks and
+// the worker's start before a scene's first paint on a phone (issue 15).
 if (import.meta.env.PROD && import.meta.env.MODE !== 'single' && 'serviceWorker' in navigator && /^https?:$/.test(window.location.protocol)) {
-  const start = () => void import('./pwa').then((m) => m.registerPwa(), () => undefined);
+  const register = () => void import('./pwa').then((m) => m.registerPwa(), () => undefined);
+  const idle = () => (typeof requestIdleCallback === 'function' ? requestIdleCallback(register, { timeout: 3000 }) : setTimeout(register, 200));
+  const start = () => {
+    void (opened ? firstScreen(10_000) : Promise.resolve())
+      .then(afterPaint)
+      .then(idle);
+  };
   if (document.readyState === 'complete') start();
   else window.addEventListener('load', start, { once: true });
 }
