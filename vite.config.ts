@@ -2,7 +2,7 @@ import { defineConfig, type Plugin } from 'vite';
 import react from '@vitejs/plugin-react';
 import { VitePWA } from 'vite-plugin-pwa';
 import { viteSingleFile } from 'vite-plugin-singlefile';
-import { routePreload } from './scripts/routePreload';
+import { lateManifestLink, routePreload } from './scripts/routePreload';
 
 /**
  * `--mode single` (npm run build:single): one self-contained HTML file. Workers are written as
@@ -78,6 +78,8 @@ export default defineConfig(({ mode }) => {
               navigateFallback: 'index.html',
             },
           }),
+          // after VitePWA: its manifest link leaves index.html; src/app/pwa.ts adds it later (issue 15)
+          lateManifestLink(),
         ],
     build: {
       target: 'es2022',

@@ -108,3 +108,22 @@ export function routePreload(): Plugin {
     },
   };
 }
+
+/**
+ * Takes vite-plugin-pwa's `<link rel="manifest">` out of index.html (list this plugin after VitePWA):
+ * Chromium fetched the manifest and its icon at once, two requests beside the entry's on a phone's
+ * first load; src/app/pwa.ts adds the link when it registers the service worker (issue 15).
+ */
+export function lateManifestLink(): Plugin {
+  return {
+    name: 'rml:late-manifest-link',
+    apply: 'build',
+    enforce: 'post',
+    transformIndexHtml: {
+      order: 'post',
+      handler(html) {
+        return html.replace(/\s*<link rel="manifest"[^>]*>/, '');
+      },
+    },
+  };
+}

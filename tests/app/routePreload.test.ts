@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { runInNewContext } from 'node:vm';
-import { preloadScript, scenePreloadMap } from '../../scripts/routePreload';
+import { lateManifestLink, preloadScript, scenePreloadMap } from '../../scripts/routePreload';
 
 type Chunk = Parameters<typeof scenePreloadMap>[0][string];
 const chunk = (fileName: string, o: Partial<{ imports: string[]; isEntry: boolean; isDynamicEntry: boolean; facadeModuleId: string; css: string[] }> = {}): Chunk => ({
@@ -73,5 +73,13 @@ describe('the inline preload script', () => {
   it('cannot be broken out of by file names (no raw "<" in the script)', () => {
     const s = preloadScript({ x: { js: ['a</script><script>alert(1)</script>.js'], css: [] } }, './');
     expect(s).not.toContain('<');
+  });
+});
+
+describe('lateManifestLink', () => {
+  it("takes the PWA plugin's manifest link out of index.html and leaves the rest", () => {
+    const hook = lateManifestLink().transformIndexHtml as { handler: (html: string) => string };
+    const html = '<head>\n  <link rel="stylesheet" href="./a.css">\n  <link rel="manifest" href="./manifest.webmanifest"></head><body></body>';
+    expect(hook.handler(html)).toBe('<head>\n  <link rel="stylesheet" href="./a.css"></head><body></body>');
   });
 });
