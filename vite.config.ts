@@ -2,6 +2,7 @@ import { defineConfig, type Plugin } from 'vite';
 import react from '@vitejs/plugin-react';
 import { VitePWA } from 'vite-plugin-pwa';
 import { viteSingleFile } from 'vite-plugin-singlefile';
+import { lateManifestLink, routePreload } from './scripts/routePreload';
 
 /**
  * `--mode single` (npm run build:single): one self-contained HTML file. Workers are written as
@@ -44,6 +45,8 @@ export default defineConfig(({ mode }) => {
       ? [react(), inlineWorkers(), viteSingleFile({ removeViteModuleLoader: true })]
       : [
           react(),
+          // index.html starts the opened scene's chunks downloading with the entry (issue 15)
+          routePreload(),
           // Offline: a Workbox service worker precaches every file of the build (all chunks, workers,
           // fonts), so after one visit every scene opens with no network. 'prompt': a new build waits
           // until the reader accepts the "updated, reload" notice (src/app/pwa.ts), so a page never runs
@@ -75,6 +78,8 @@ export default defineConfig(({ mode }) => {
               navigateFallback: 'index.html',
             },
           }),
+          // after VitePWA: its manifest link leaves index.html; src/app/pwa.ts adds it later (issue 15)
+          lateManifestLink(),
         ],
     build: {
       target: 'es2022',

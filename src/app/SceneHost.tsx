@@ -9,6 +9,7 @@ import { QuestionNav } from '../ui/exam';
 import { useHostScene } from './hostApi';
 import { embedSnippet } from './embedCode';
 import { QrButton } from './QrButton';
+import { markFirstScreen } from './firstScreen';
 
 interface Props {
   info: SceneInfo;
@@ -30,10 +31,8 @@ export function SceneHost({ info, query, flags, theme }: Props) {
       return;
     }
     let alive = true;
-    // Every scene's first screen is its exam question, typeset by KaTeX: fetch KaTeX alongside the
-    // scene's chunk instead of after the scene's first render (one network round trip less before
-    // the largest paint on a phone; issue 15).
-    void import('../ui/MathTex').then((m) => m.prepareMath()).catch(() => undefined);
+    // (KaTeX's worker and stylesheet start once the scene's first screen has been painted, with its
+    // formulas as TeX source for a moment: fetched earlier, they delayed that paint on a phone; issue 15.)
     loader().then(
       // A transition: React renders the scene's (large) first tree in slices of a few ms that yield
       // to the browser, instead of one long task (Lighthouse: total blocking time on load).
@@ -44,6 +43,10 @@ export function SceneHost({ info, query, flags, theme }: Props) {
       alive = false;
     };
   }, [info]);
+  // the first screen is up (or the scene failed): work kept out of it may start (main.tsx)
+  useEffect(() => {
+    if (load.kind !== 'loading') markFirstScreen();
+  }, [load.kind]);
 
   const header = (
     <div className={flags.embed ? 'scene-header compact' : 'scene-header'}>

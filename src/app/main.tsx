@@ -3,6 +3,16 @@ import { createRoot } from 'react-dom/client';
 import { App } from './App';
 import '../ui/styles.css';
 import { whenQuiet } from './whenQuiet';
+import { findScene, sceneLoader } from '../scenes/registry';
+import { parseHash } from './route';
+import { firstScreen } from './firstScreen';
+import { afterPaint } from '../ui/afterPaint';
+
+// The opened scene's chunk is requested now, while React mounts the shell, not once the shell has
+// rendered (index.html has already started downloading it: scripts/routePreload.ts; issue 15). The
+// scene host's own import gets the same module; it also reports a failure.
+const opened = findScene(parseHash(window.location.hash).path);
+if (opened) void sceneLoader(opened.id)?.().catch(() => undefined);
 
 const root = document.getElementById('root');
 if (root) {
@@ -37,9 +47,10 @@ maybeFuzz();
 window.addEventListener('hashchange', maybeFuzz);
 
 // Offline copy: register the service worker from a lazy chunk (not in development, not in the
-// single-file build, not from file://) once the page has loaded and then been idle for 2 s: its
-// install precaches the whole build, about a second of CPU that competed with a scene's load on a
-// phone (./whenQuiet; issue 15).
+// single-file build, not from file://) once the page has loaded, the opened scene's first screen
+// has been painted (10 s at most), and the page has then been idle for 2 s: its install precaches
+// the whole build, about a second of CPU on a worker thread that competed with a scene's load on a
+// phone, and registering at 'load' put its chunks before a scene's first paint (./whenQuiet; issue 15).
 if (import.meta.env.PROD && import.meta.env.MODE !== 'single' && 'serviceWorker' in navigator && /^https?:$/.test(window.location.protocol)) {
   // A page of the old build reloads, whole, as soon as a new build's worker takes over (another
   // tab's "Reload"), even before this page has registered (it waits for quiet): its lazy chunks
@@ -49,7 +60,9 @@ if (import.meta.env.PROD && import.meta.env.MODE !== 'single' && 'serviceWorker'
     if (hadController) window.location.reload();
   });
   const start = () =>
-    void whenQuiet()
+    void (opened ? firstScreen(10_000) : Promise.resolve())
+      .then(afterPaint)
+      .then(() => whenQuiet())
       .then(() => import('./pwa'))
       .then((m) => m.registerPwa(), () => undefined);
   if (document.readyState === 'complete') start();

@@ -35,7 +35,21 @@ function showUpdateNotice(update: () => void): void {
   document.body.append(box);
 }
 
+/**
+ * The web app manifest's link (name, icons, standalone display) is added here, not in index.html:
+ * browsers fetch the manifest and an icon as soon as they see it, which on a phone's first load
+ * competed with the page's own scripts (issue 15).
+ */
+function linkManifest(): void {
+  if (document.querySelector('link[rel="manifest"]')) return;
+  const link = document.createElement('link');
+  link.rel = 'manifest';
+  link.href = new URL('manifest.webmanifest', document.baseURI).href;
+  document.head.append(link);
+}
+
 export function registerPwa(): void {
+  linkManifest();
   // (Pages still running the old build in other tabs reload when the new build takes over:
   // main.tsx's controllerchange listener does it from the start, before this registration, and
   // registerSW's own 'controlling' handler too; tests/e2e/offline.spec.ts checks it.)

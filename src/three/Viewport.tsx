@@ -1,6 +1,7 @@
 import { useEffect, useEffectEvent, useId, useRef, useState } from 'react';
 import type { AxisDirs, Engine, ViewportContext } from './engine';
 import { observeVisibility, touchOnly, useSeenOnce } from '../ui/useInView';
+import { afterPaint } from '../ui/afterPaint';
 
 export type { ViewportContext } from './engine';
 
@@ -93,7 +94,9 @@ export function Viewport({ ariaLabel, height = 360, setup, testId, phiZero = tru
     const container = box.current;
     // The start is split into tasks that yield (issue 15: on a phone each was a long task): the
     // probe, the renderer, the scene's setup (effect below), the shaders (warmUp), the first frame.
-    import('./engine')
+    // after the frame in progress has painted: the page's first content does not wait for three.js
+    afterPaint()
+      .then(() => import('./engine'))
       .then((m) => m.startEngine(container, labelNow(), () => alive))
       .then(
         (created) => {

@@ -1,6 +1,7 @@
 import { useEffect, useRef, useState } from 'react';
 import { KATEX_OPTIONS } from './katexOptions';
 import { flushMathForPrint, scheduleMath } from './mathQueue';
+import { afterPaint } from './afterPaint';
 import type { TypesetReply, TypesetRequest } from './katex.worker';
 
 type Katex = typeof import('katex');
@@ -54,14 +55,29 @@ function katexWorker(): Worker | null {
   return worker;
 }
 
-/** Start the worker and the stylesheet early (a scene page is about to show formulas). */
+/** Start the worker and the stylesheet together (a page is about to show formulas). */
 export function prepareMath(): void {
   void loadKatexCss().catch(() => undefined);
   katexWorker();
 }
 
+let started: Promise<void> | null = null;
+/**
+ * The first formula to typeset starts the worker and the stylesheet, but only once the frame that
+ * shows the page's text (formulas still as TeX source) has been painted: on a phone, downloading
+ * them earlier delays that first paint (Lighthouse's LCP; issue 15). Later formulas go at once.
+ */
+function mathStarted(): Promise<void> {
+  if (!started) started = afterPaint().then(prepareMath);
+  return started;
+}
+
 /** HTML for `tex` (null if KaTeX fails on it), typeset in the worker when there is one. */
 function typeset(tex: string, display: boolean): Promise<string | null> {
+  return mathStarted().then(() => typesetNow(tex, display));
+}
+
+function typesetNow(tex: string, display: boolean): Promise<string | null> {
   const w = katexWorker();
   const onMain = () => loadKatex().then((k) => k.renderToString(tex, { ...KATEX_OPTIONS, displayMode: display }));
   if (!w) return onMain();
