@@ -6,7 +6,7 @@
  */
 import { memo, useCallback, useDeferredValue, useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
-import { Derivation as DerivationBlock, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Readout, Select, TimelineTransport, useCoarsePosition, useTimeline, useTimelineFrame, type Timeline } from '../../ui';
+import { Deferred, Derivation as DerivationBlock, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Readout, Select, TimelineTransport, useCoarsePosition, useTimeline, useTimelineFrame, type Timeline } from '../../ui';
 import type { RaySphereHit } from '../../core/geometry';
 import { CASE_PRESETS, PRECISION_PRESETS, schema, type Preset, type RaySphereParams } from './params';
 import {
@@ -39,6 +39,9 @@ const CASE_NAME: Record<string, string> = {
   inside: 'Origin inside',
   behind: 'Sphere behind',
 };
+
+/** The figure block's placeholder height (px): the cross-section, the case banner and the transport. */
+const STAGE_FIG_ESTIMATE = 720;
 
 /** Seconds for one sweep (t from 0 to 1) at 1× speed. */
 const SWEEP_SECONDS = 10;
@@ -238,49 +241,62 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
             </>
           }
         >
+          {/* Each block of the part mounts on its own (ui/Deferred: one at a time, a frame each, the
+              figure first), so opening the page is several short commits and layouts instead of
+              one long one (issue 15). The placeholders hold the blocks' places in the stage grid. */}
           <div className="rs-stage" ref={stageRef}>
             <div className="rs-stage-fig">
-              <LiveCrossSection tl={tl} modelAt={modelAt} onChange={setSoon} fitExtra={ends} />
-              <LiveCaseBanner tl={tl} modelAt={modelAt} />
-              <TimelineTransport timeline={tl} label="Ray sweep" format={fmtPos} testId="timeline">
-                {sweepControls}
-              </TimelineTransport>
+              <Deferred estimate={STAGE_FIG_ESTIMATE}>
+                <LiveCrossSection tl={tl} modelAt={modelAt} onChange={setSoon} fitExtra={ends} />
+                <LiveCaseBanner tl={tl} modelAt={modelAt} />
+                <TimelineTransport timeline={tl} label="Ray sweep" format={fmtPos} testId="timeline">
+                  {sweepControls}
+                </TimelineTransport>
+              </Deferred>
             </div>
             <div className="rs-stage-ctl">
-              {presets}
-              {fields}
+              <Deferred estimate={360}>
+                {presets}
+                {fields}
+              </Deferred>
             </div>
             <div className="rs-stage-plots">
-              <SweepPlotsBlock tl={tl} modelAt={modelAt} sweep={sweep} sweepMode={sweepMode} xLabel={xLabel} method={method} />
+              <Deferred estimate={640}>
+                <SweepPlotsBlock tl={tl} modelAt={modelAt} sweep={sweep} sweepMode={sweepMode} xLabel={xLabel} method={method} />
+              </Deferred>
             </div>
           </div>
-          <DerivationBlock testId="derivation">
-            {tl.playing ? (
-              <p className="rs-small" data-testid="derivation-held">
-                The numbers below are those of the position where the sweep started; they follow the animation when you pause it.
-              </p>
-            ) : null}
-            <DerivationSteps model={slow} />
-          </DerivationBlock>
-          <LiveAnswer testId="live-answer">
-            <LiveAnswerBody tl={tl} modelAt={modelAt} sweep={sweep} sweepMode={sweepMode} method={method} />
-          </LiveAnswer>
-          <KeyNote testId="q5-keynote">
-            the key prints no derivation; it refers to <em>Ray Tracing in One Weekend</em> and awards 2 marks for Δ ≥ 0 and 2 for t ≥ 0. That book (and this page) call the
-            centre <b>C</b> and the quadratic’s constant term c; later editions simplify with b = 2h, h = d·(o − C), giving t = (−h ± √(h² − ac)) / a: the same roots.
-          </KeyNote>
+          <Deferred estimate={600}>
+            <DerivationBlock testId="derivation">
+              {tl.playing ? (
+                <p className="rs-small" data-testid="derivation-held">
+                  The numbers below are those of the position where the sweep started; they follow the animation when you pause it.
+                </p>
+              ) : null}
+              <DerivationSteps model={slow} />
+            </DerivationBlock>
+          </Deferred>
+          <Deferred estimate={480}>
+            <LiveAnswer testId="live-answer">
+              <LiveAnswerBody tl={tl} modelAt={modelAt} sweep={sweep} sweepMode={sweepMode} method={method} />
+            </LiveAnswer>
+            <KeyNote testId="q5-keynote">
+              the key prints no derivation; it refers to <em>Ray Tracing in One Weekend</em> and awards 2 marks for Δ ≥ 0 and 2 for t ≥ 0. That book (and this page) call the
+              centre <b>C</b> and the quadratic’s constant term c; later editions simplify with b = 2h, h = d·(o − C), giving t = (−h ± √(h² − ac)) / a: the same roots.
+            </KeyNote>
+          </Deferred>
         </ExamPart>
       </ExamQuestion>
       <ExploreFurther intro="Beyond the exam: the same ray in 3D, and what floating point does to the textbook formula when the sphere is far away or the ray grazes it.">
         <Panel title="3D view">
           <LiveView3D tl={tl} modelAt={modelAt} height={mode.present ? 420 : 320} dark={mode.theme === 'dark'} fitExtra={ends} />
         </Panel>
-        <Panel title="Precision: textbook vs robust, against a double-double reference">
+        <Panel title="Precision: textbook vs robust, against a double-double reference" className="rs-offscreen-skip">
           <PrecisionTableMemo model={slow} />
           <PrecisionExplainerMemo />
         </Panel>
         <div className="rs-explore-grid">
-          <Panel title="A distant sphere, one ray per pixel">
+          <Panel title="A distant sphere, one ray per pixel" className="rs-offscreen-skip">
             <DistantImagesMemo />
           </Panel>
           <Panel title="Error against distance">
