@@ -15,7 +15,7 @@
  * renders the subtree in slices that yield to input. Where IntersectionObserver is missing
  * everything mounts at once.
  */
-import { createContext, startTransition, useContext, useEffect, useLayoutEffect, useRef, useState, type CSSProperties, type ReactNode } from 'react';
+import { createContext, startTransition, useContext, useEffect, useLayoutEffect, useRef, useState, type ReactNode } from 'react';
 import { flushSync } from 'react-dom';
 import { nextTask } from './chunked';
 import { createViewQueue } from './viewQueue';
@@ -31,12 +31,16 @@ const slots: { owner: object; mount: () => void; near: boolean }[] = [];
 /** The section mounting now (its commit has not been painted yet), or null. */
 let holder: { owner: object; timer: ReturnType<typeof setTimeout> } | null = null;
 
+/** Sections whose mounting has started (a transition) and not committed yet, with their mount. */
+const mounting = new Map<object, () => void>();
+
 /** Give the mounting slot to the next waiting section. */
 function pump(): void {
   if (holder) return;
   const next = slots.shift();
   if (!next) return;
   holder = { owner: next.owner, timer: setTimeout(() => release(next.owner), SLOT_TIMEOUT_MS) };
+  mounting.set(next.owner, next.mount);
   next.mount();
 }
 
@@ -112,8 +116,9 @@ export function flushDeferred(): void {
   try {
     flushSync(() => {
       queue.flush();
-      // and those already waiting for the mounting slot
+      // and those waiting for the mounting slot, or mounting in a transition not committed yet
       for (const s of slots.splice(0)) s.mount();
+      for (const m of [...mounting.values()]) m();
     });
   } finally {
     flushing = false;
@@ -129,19 +134,7 @@ function hookPrint(): void {
   window.addEventListener('beforeprint', flushDeferred, { capture: true });
 }
 
-export function Deferred({
-  children,
-  estimate = 480,
-  className,
-  style,
-}: {
-  children: ReactNode;
-  /** the placeholder's height (px) */
-  estimate?: number;
-  /** class and style of the placeholder (e.g. to give it the place of the section in a grid) */
-  className?: string;
-  style?: CSSProperties;
-}) {
+export function Deferred({ children, estimate = 480 }: { children: ReactNode; /** the placeholder's height (px) */ estimate?: number }) {
   const [on, setOn] = useState(() => typeof IntersectionObserver !== 'function');
   const [width, setWidth] = useState<number | null>(null);
   const ref = useRef<HTMLDivElement>(null);
@@ -164,15 +157,19 @@ export function Deferred({
     return () => {
       cancel();
       // unmounted (or flushed) before its commit: the slot goes to the next section now
-      if (!committed.current) cancelSlot();
+      if (!committed.current) {
+        mounting.delete(owner);
+        cancelSlot();
+      }
     };
   }, [on, owner]);
   // committed: the next section may start once this one is laid out and painted
   useLayoutEffect(() => {
     if (!on) return;
     committed.current = true;
+    mounting.delete(owner);
     releaseAfterFrame(owner);
   }, [on, owner]);
   if (on) return <SectionWidth.Provider value={width}>{children}</SectionWidth.Provider>;
-  return <div ref={ref} className={`deferred-pending${className ? ` ${className}` : ''}`} data-deferred="pending" style={{ minHeight: estimate, ...style }} />;
+  return <div ref={ref} className="deferred-pending" data-deferred="pending" style={{ minHeight: estimate }} />;
 }
