@@ -135,7 +135,9 @@ function hookPrint(): void {
 }
 
 export function Deferred({ children, estimate = 480 }: { children: ReactNode; /** the placeholder's height (px) */ estimate?: number }) {
-  const [on, setOn] = useState(() => typeof IntersectionObserver !== 'function');
+  // mounted at once where nothing can tell when it is near, and when first rendered by the print
+  // flush (a section nested in one that the flush mounts)
+  const [on, setOn] = useState(() => typeof IntersectionObserver !== 'function' || flushing);
   const [width, setWidth] = useState<number | null>(null);
   const ref = useRef<HTMLDivElement>(null);
   const owner = useRef({}).current;
