@@ -6,7 +6,7 @@
  */
 import { memo, useCallback, useDeferredValue, useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
-import { Deferred, Derivation as DerivationBlock, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Readout, Select, TimelineTransport, useCoarsePosition, useTimeline, useTimelineFrame, type Timeline } from '../../ui';
+import { Deferred, Derivation as DerivationBlock, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, nextTask, Notice, NumberField, Panel, Readout, Select, TimelineTransport, useCoarsePosition, useTimeline, useTimelineFrame, type Timeline } from '../../ui';
 import type { RaySphereHit } from '../../core/geometry';
 import { CASE_PRESETS, PRECISION_PRESETS, schema, type Preset, type RaySphereParams } from './params';
 import {
@@ -16,7 +16,8 @@ import {
   makeSweep,
   paramsAt,
   secondaryFromHit,
-  selfIntersectionSurvey,
+  selfIntersectionSurveyRange,
+  type SurveyCounts,
   sweepAt,
   sweepSeries,
   tMinFor,
@@ -602,7 +603,6 @@ const yes = (b: boolean) => (b ? '\\;\\checkmark' : '\\;\\times');
 const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySphereModel }) {
   const res = model.chosen;
   const [cx, cy, cz] = model.input.c;
-  const survey = useMemo(() => selfIntersectionSurvey([cx, cy, cz], model.input.r, res?.method ?? 'stable', 1000), [cx, cy, cz, model.input.r, res?.method]);
   if (!res) return <p>No derivation: the inputs overflow.</p>;
   const { o, d, c, r } = model.input;
   const v = (p: readonly number[]) => `(${p.map((x) => tx(x, 4)).join(',\\, ')})`;
@@ -694,15 +694,67 @@ const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySph
                 : `Here rounding happened to put p just outside, so t ≥ 0 already rejects it; on other points it does not.`}
             </p>
           ) : null}
-          <p data-testid="tmin-survey" data-zero={survey.withZero} data-tmin={survey.withTMin} data-count={survey.count}>
-            Over {survey.count} points spread evenly over this sphere (each computed as C + r n in doubles), a ray leaving along the normal hits its own surface with t ≥ 0 at{' '}
-            <strong>{survey.withZero}</strong> points, and with t &gt; t_min at <strong>{survey.withTMin}</strong>.
-          </p>
+          <TMinSurvey cx={cx} cy={cy} cz={cz} r={model.input.r} method={res.method} />
         </li>
       </ol>
     </div>
   );
 });
+
+/** Points of the t_min survey, and how many are cast per task. */
+const SURVEY_POINTS = 1000;
+const SURVEY_CHUNK = 200;
+
+/**
+ * Secondary rays from 1000 points of the sphere: how many hit their own surface with t ≥ 0 and with
+ * t > t_min. The rays are cast in short tasks after the derivation has mounted (a few ms of cold
+ * code in one piece otherwise: issue 15); the paragraph shows the counts once all are cast.
+ */
+const TMinSurvey = memo(function TMinSurvey({ cx, cy, cz, r, method }: { cx: number; cy: number; cz: number; r: number; method: RaySphereHit['method'] }) {
+  const key = `${cx},${cy},${cz},${r},${method}`;
+  const [done, setDone] = useState<{ key: string; survey: SurveyCounts } | null>(null);
+  useEffect(() => {
+    const acc: SurveyCounts = { count: 0, withZero: 0, withTMin: 0 };
+    let k = 0;
+    let cancel = () => {};
+    const step = () => {
+      const part = selfIntersectionSurveyRange([cx, cy, cz], r, method, SURVEY_POINTS, k, k + SURVEY_CHUNK);
+      acc.count += part.count;
+      acc.withZero += part.withZero;
+      acc.withTMin += part.withTMin;
+      k += SURVEY_CHUNK;
+      if (k < SURVEY_POINTS) cancel = later(step);
+      else setDone({ key: `${cx},${cy},${cz},${r},${method}`, survey: acc });
+    };
+    cancel = later(step);
+    return () => cancel();
+  }, [cx, cy, cz, r, method]);
+  const survey = done?.key === key ? done.survey : null;
+  if (!survey) {
+    return (
+      <p data-testid="tmin-survey" aria-busy="true">
+        Casting a ray from each of {SURVEY_POINTS} points spread evenly over this sphere…
+      </p>
+    );
+  }
+  return (
+    <p data-testid="tmin-survey" data-zero={survey.withZero} data-tmin={survey.withTMin} data-count={survey.count}>
+      Over {survey.count} points spread evenly over this sphere (each computed as C + r n in doubles), a ray leaving along the normal hits its own surface with t ≥ 0 at{' '}
+      <strong>{survey.withZero}</strong> points, and with t &gt; t_min at <strong>{survey.withTMin}</strong>.
+    </p>
+  );
+});
+
+/** Run `fn` in a task of its own soon; returns a cancel function. */
+function later(fn: () => void): () => void {
+  let live = true;
+  nextTask(() => {
+    if (live) fn();
+  });
+  return () => {
+    live = false;
+  };
+}
 
 const SUP: Record<string, string> = { '-': '⁻', '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶', '7': '⁷', '8': '⁸', '9': '⁹' };
 
