@@ -8,4 +8,5 @@ export { useSeenOnce, observeVisibility, touchOnly } from './useInView';
 export { useTimeline, useTimelineFrame, useTimelinePosition, useCoarsePosition, timelineParams, advance, clampPosition, prefersReducedMotion, TIMELINE_SPEEDS, TEXT_HZ, type Timeline, type TimelineOptions, type TimelineListener } from './timeline';
 export { TimelineTransport, type TimelineTransportProps } from './TimelineTransport';
 export { ExamQuestion, ExamPart, Derivation, LiveAnswer, KeyNote, ExploreFurther, QuestionNav, questionHref } from './exam';
+export { Deferred, useSectionWidth } from './Deferred';
 export { useCompiled, type Compiled, type CompileOutcome } from './useCompiled';

@@ -13,11 +13,13 @@
  * Every job runs within a few seconds of load either way: tests and find-in-page see the whole page.
  */
 
-type Job = () => void;
+/** A job; `rect` is the element's box as the observer last reported it (read without a layout), if it did. */
+type Job = (rect?: DOMRectReadOnly) => void;
 
 interface Entry {
   job: Job;
   el: Element | null;
+  rect?: DOMRectReadOnly;
   state: 'waiting' | 'idle' | 'queued' | 'done';
   cancelNear: () => void;
 }
@@ -30,7 +32,7 @@ export interface ViewQueueOptions {
   /** The idle callback's timeout (ms): a page that is never idle still gets its jobs. */
   idleTimeoutMs: number;
   /** How a near job runs: given the job, starts it (now or soon) and returns a cancel function. */
-  runNear: (job: Job) => () => void;
+  runNear: (job: () => void) => () => void;
 }
 
 export interface ViewQueue {
@@ -61,7 +63,7 @@ export function createViewQueue({ margin, perIdle, idleTimeoutMs, runNear }: Vie
       byEl.delete(e.el);
       io?.unobserve(e.el);
     }
-    e.job();
+    e.job(e.rect);
   }
 
   function queueNow(e: Entry): void {
@@ -101,6 +103,7 @@ export function createViewQueue({ margin, perIdle, idleTimeoutMs, runNear }: Vie
           else near.delete(x.target);
           const e = byEl.get(x.target);
           if (!e) continue;
+          e.rect = x.boundingClientRect;
           if (x.isIntersecting) queueNow(e);
           else if (e.state === 'waiting') {
             e.state = 'idle';

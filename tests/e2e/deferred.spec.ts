@@ -40,6 +40,31 @@ test('far sections wait; scrolling mounts them; printing mounts everything at on
   await expect(page.getByTestId('explore-further').locator('.panel').first()).toBeAttached();
 });
 
+test('printing also mounts the sections nested in the sections it mounts (the ray-sphere exam part\'s blocks)', async ({ page }) => {
+  // an observer that never reports: no section comes near the screen, so only printing mounts them
+  await page.addInitScript(() => {
+    (window as unknown as { IntersectionObserver: unknown }).IntersectionObserver = class {
+      observe() {}
+      unobserve() {}
+      disconnect() {}
+      takeRecords() {
+        return [];
+      }
+    };
+  });
+  await page.goto('./#/ray-sphere');
+  await page.waitForSelector('main#main');
+  await expect(page.locator('#question-5-title')).toBeVisible({ timeout: 60_000 });
+  await expect(page.locator(pending).first()).toBeAttached();
+  await expect(page.getByTestId('cross-section')).toHaveCount(0);
+  const left = await page.evaluate((sel) => {
+    window.dispatchEvent(new Event('beforeprint'));
+    return document.querySelectorAll(sel).length;
+  }, pending);
+  expect(left).toBe(0);
+  for (const id of ['cross-section', 'g-plot', 'derivation', 'live-answer', 'precision-table']) await expect(page.getByTestId(id)).toHaveCount(1);
+});
+
 test('formulas are typeset (in a worker) and the page never loads KaTeX itself', async ({ page }) => {
   const scripts: string[] = [];
   page.on('request', (r) => {

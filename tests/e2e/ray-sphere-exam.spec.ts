@@ -43,6 +43,8 @@ test.describe('exam first', () => {
     // t_min: the live example and the survey say self-intersection happens with t ≥ 0, never with t > t_min
     await expect(page.getByTestId('step-tmin')).toContainText('shadow acne');
     const survey = page.getByTestId('tmin-survey');
+    // its rays are cast in short tasks after the derivation mounts: wait for the counts
+    await expect(survey).toHaveAttribute('data-count', /^[1-9]\d*$/, { timeout: 30_000 });
     expect(Number(await survey.getAttribute('data-zero'))).toBeGreaterThan(0);
     expect(Number(await survey.getAttribute('data-tmin'))).toBe(0);
     await expect(page.getByTestId('tmin-example')).toContainText('p itself');

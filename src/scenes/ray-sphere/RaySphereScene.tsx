@@ -6,7 +6,7 @@
  */
 import { memo, useCallback, useDeferredValue, useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
 import type { SceneProps } from '../../app/scene';
-import { Derivation as DerivationBlock, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, Notice, NumberField, Panel, Readout, Select, TimelineTransport, useCoarsePosition, useTimeline, useTimelineFrame, type Timeline } from '../../ui';
+import { Deferred, Derivation as DerivationBlock, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, nextTask, Notice, NumberField, Panel, Readout, Select, TimelineTransport, useCoarsePosition, useTimeline, useTimelineFrame, type Timeline } from '../../ui';
 import type { RaySphereHit } from '../../core/geometry';
 import { CASE_PRESETS, PRECISION_PRESETS, schema, type Preset, type RaySphereParams } from './params';
 import {
@@ -16,7 +16,8 @@ import {
   makeSweep,
   paramsAt,
   secondaryFromHit,
-  selfIntersectionSurvey,
+  selfIntersectionSurveyRange,
+  type SurveyCounts,
   sweepAt,
   sweepSeries,
   tMinFor,
@@ -39,6 +40,9 @@ const CASE_NAME: Record<string, string> = {
   inside: 'Origin inside',
   behind: 'Sphere behind',
 };
+
+/** The figure block's placeholder height (px): the cross-section, the case banner and the transport. */
+const STAGE_FIG_ESTIMATE = 720;
 
 /** Seconds for one sweep (t from 0 to 1) at 1× speed. */
 const SWEEP_SECONDS = 10;
@@ -238,49 +242,62 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
             </>
           }
         >
+          {/* Each block of the part mounts on its own (ui/Deferred: one at a time, a frame each, the
+              figure first), so opening the page is several short commits and layouts instead of
+              one long one (issue 15). The placeholders hold the blocks' places in the stage grid. */}
           <div className="rs-stage" ref={stageRef}>
             <div className="rs-stage-fig">
-              <LiveCrossSection tl={tl} modelAt={modelAt} onChange={setSoon} fitExtra={ends} />
-              <LiveCaseBanner tl={tl} modelAt={modelAt} />
-              <TimelineTransport timeline={tl} label="Ray sweep" format={fmtPos} testId="timeline">
-                {sweepControls}
-              </TimelineTransport>
+              <Deferred estimate={STAGE_FIG_ESTIMATE}>
+                <LiveCrossSection tl={tl} modelAt={modelAt} onChange={setSoon} fitExtra={ends} />
+                <LiveCaseBanner tl={tl} modelAt={modelAt} />
+                <TimelineTransport timeline={tl} label="Ray sweep" format={fmtPos} testId="timeline">
+                  {sweepControls}
+                </TimelineTransport>
+              </Deferred>
             </div>
             <div className="rs-stage-ctl">
-              {presets}
-              {fields}
+              <Deferred estimate={360}>
+                {presets}
+                {fields}
+              </Deferred>
             </div>
             <div className="rs-stage-plots">
-              <SweepPlotsBlock tl={tl} modelAt={modelAt} sweep={sweep} sweepMode={sweepMode} xLabel={xLabel} method={method} />
+              <Deferred estimate={640}>
+                <SweepPlotsBlock tl={tl} modelAt={modelAt} sweep={sweep} sweepMode={sweepMode} xLabel={xLabel} method={method} />
+              </Deferred>
             </div>
           </div>
-          <DerivationBlock testId="derivation">
-            {tl.playing ? (
-              <p className="rs-small" data-testid="derivation-held">
-                The numbers below are those of the position where the sweep started; they follow the animation when you pause it.
-              </p>
-            ) : null}
-            <DerivationSteps model={slow} />
-          </DerivationBlock>
-          <LiveAnswer testId="live-answer">
-            <LiveAnswerBody tl={tl} modelAt={modelAt} sweep={sweep} sweepMode={sweepMode} method={method} />
-          </LiveAnswer>
-          <KeyNote testId="q5-keynote">
-            the key prints no derivation; it refers to <em>Ray Tracing in One Weekend</em> and awards 2 marks for Δ ≥ 0 and 2 for t ≥ 0. That book (and this page) call the
-            centre <b>C</b> and the quadratic’s constant term c; later editions simplify with b = 2h, h = d·(o − C), giving t = (−h ± √(h² − ac)) / a: the same roots.
-          </KeyNote>
+          <Deferred estimate={600}>
+            <DerivationBlock testId="derivation">
+              {tl.playing ? (
+                <p className="rs-small" data-testid="derivation-held">
+                  The numbers below are those of the position where the sweep started; they follow the animation when you pause it.
+                </p>
+              ) : null}
+              <DerivationSteps model={slow} />
+            </DerivationBlock>
+          </Deferred>
+          <Deferred estimate={480}>
+            <LiveAnswer testId="live-answer">
+              <LiveAnswerBody tl={tl} modelAt={modelAt} sweep={sweep} sweepMode={sweepMode} method={method} />
+            </LiveAnswer>
+            <KeyNote testId="q5-keynote">
+              the key prints no derivation; it refers to <em>Ray Tracing in One Weekend</em> and awards 2 marks for Δ ≥ 0 and 2 for t ≥ 0. That book (and this page) call the
+              centre <b>C</b> and the quadratic’s constant term c; later editions simplify with b = 2h, h = d·(o − C), giving t = (−h ± √(h² − ac)) / a: the same roots.
+            </KeyNote>
+          </Deferred>
         </ExamPart>
       </ExamQuestion>
       <ExploreFurther intro="Beyond the exam: the same ray in 3D, and what floating point does to the textbook formula when the sphere is far away or the ray grazes it.">
         <Panel title="3D view">
           <LiveView3D tl={tl} modelAt={modelAt} height={mode.present ? 420 : 320} dark={mode.theme === 'dark'} fitExtra={ends} />
         </Panel>
-        <Panel title="Precision: textbook vs robust, against a double-double reference">
+        <Panel title="Precision: textbook vs robust, against a double-double reference" className="rs-offscreen-skip">
           <PrecisionTableMemo model={slow} />
           <PrecisionExplainerMemo />
         </Panel>
         <div className="rs-explore-grid">
-          <Panel title="A distant sphere, one ray per pixel">
+          <Panel title="A distant sphere, one ray per pixel" className="rs-offscreen-skip">
             <DistantImagesMemo />
           </Panel>
           <Panel title="Error against distance">
@@ -586,7 +603,6 @@ const yes = (b: boolean) => (b ? '\\;\\checkmark' : '\\;\\times');
 const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySphereModel }) {
   const res = model.chosen;
   const [cx, cy, cz] = model.input.c;
-  const survey = useMemo(() => selfIntersectionSurvey([cx, cy, cz], model.input.r, res?.method ?? 'stable', 1000), [cx, cy, cz, model.input.r, res?.method]);
   if (!res) return <p>No derivation: the inputs overflow.</p>;
   const { o, d, c, r } = model.input;
   const v = (p: readonly number[]) => `(${p.map((x) => tx(x, 4)).join(',\\, ')})`;
@@ -678,15 +694,67 @@ const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySph
                 : `Here rounding happened to put p just outside, so t ≥ 0 already rejects it; on other points it does not.`}
             </p>
           ) : null}
-          <p data-testid="tmin-survey" data-zero={survey.withZero} data-tmin={survey.withTMin} data-count={survey.count}>
-            Over {survey.count} points spread evenly over this sphere (each computed as C + r n in doubles), a ray leaving along the normal hits its own surface with t ≥ 0 at{' '}
-            <strong>{survey.withZero}</strong> points, and with t &gt; t_min at <strong>{survey.withTMin}</strong>.
-          </p>
+          <TMinSurvey cx={cx} cy={cy} cz={cz} r={model.input.r} method={res.method} />
         </li>
       </ol>
     </div>
   );
 });
+
+/** Points of the t_min survey, and how many are cast per task. */
+const SURVEY_POINTS = 1000;
+const SURVEY_CHUNK = 200;
+
+/**
+ * Secondary rays from 1000 points of the sphere: how many hit their own surface with t ≥ 0 and with
+ * t > t_min. The rays are cast in short tasks after the derivation has mounted (a few ms of cold
+ * code in one piece otherwise: issue 15); the paragraph shows the counts once all are cast.
+ */
+const TMinSurvey = memo(function TMinSurvey({ cx, cy, cz, r, method }: { cx: number; cy: number; cz: number; r: number; method: RaySphereHit['method'] }) {
+  const key = `${cx},${cy},${cz},${r},${method}`;
+  const [done, setDone] = useState<{ key: string; survey: SurveyCounts } | null>(null);
+  useEffect(() => {
+    const acc: SurveyCounts = { count: 0, withZero: 0, withTMin: 0 };
+    let k = 0;
+    let cancel = () => {};
+    const step = () => {
+      const part = selfIntersectionSurveyRange([cx, cy, cz], r, method, SURVEY_POINTS, k, k + SURVEY_CHUNK);
+      acc.count += part.count;
+      acc.withZero += part.withZero;
+      acc.withTMin += part.withTMin;
+      k += SURVEY_CHUNK;
+      if (k < SURVEY_POINTS) cancel = later(step);
+      else setDone({ key: `${cx},${cy},${cz},${r},${method}`, survey: acc });
+    };
+    cancel = later(step);
+    return () => cancel();
+  }, [cx, cy, cz, r, method]);
+  const survey = done?.key === key ? done.survey : null;
+  if (!survey) {
+    return (
+      <p data-testid="tmin-survey" aria-busy="true">
+        Casting a ray from each of {SURVEY_POINTS} points spread evenly over this sphere…
+      </p>
+    );
+  }
+  return (
+    <p data-testid="tmin-survey" data-zero={survey.withZero} data-tmin={survey.withTMin} data-count={survey.count}>
+      Over {survey.count} points spread evenly over this sphere (each computed as C + r n in doubles), a ray leaving along the normal hits its own surface with t ≥ 0 at{' '}
+      <strong>{survey.withZero}</strong> points, and with t &gt; t_min at <strong>{survey.withTMin}</strong>.
+    </p>
+  );
+});
+
+/** Run `fn` in a task of its own soon; returns a cancel function. */
+function later(fn: () => void): () => void {
+  let live = true;
+  nextTask(() => {
+    if (live) fn();
+  });
+  return () => {
+    live = false;
+  };
+}
 
 const SUP: Record<string, string> = { '-': '⁻', '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶', '7': '⁷', '8': '⁸', '9': '⁹' };
 

@@ -644,12 +644,28 @@ export function secondaryFromHit(input: InputCheck, hit: RaySphereHit | null, me
  * point computed in doubles as C + r n: how many see their own surface with t ≥ 0, and with
  * t > t_min. Deterministic.
  */
-export function selfIntersectionSurvey(c: V3, r: number, method: RaySphereMethod, count = 1000): { count: number; withZero: number; withTMin: number } {
+export function selfIntersectionSurvey(c: V3, r: number, method: RaySphereMethod, count = 1000): SurveyCounts {
+  return selfIntersectionSurveyRange(c, r, method, count, 0, count);
+}
+
+export interface SurveyCounts {
+  /** Points whose secondary ray could be cast. */
+  count: number;
+  /** Of those, rays that hit their own surface with t ≥ 0, and with t > t_min. */
+  withZero: number;
+  withTMin: number;
+}
+
+/**
+ * The survey's points k0 … k1 − 1 of `count` only (the counts of consecutive ranges add up to the
+ * whole survey's): lets a page cast the rays in short tasks.
+ */
+export function selfIntersectionSurveyRange(c: V3, r: number, method: RaySphereMethod, count: number, k0: number, k1: number): SurveyCounts {
   const golden = Math.PI * (3 - Math.sqrt(5));
   let withZero = 0;
   let withTMin = 0;
   let n = 0;
-  for (let k = 0; k < count; k++) {
+  for (let k = Math.max(0, k0); k < Math.min(count, k1); k++) {
     const z = 1 - (2 * (k + 0.5)) / count;
     const s = Math.sqrt(Math.max(0, 1 - z * z));
     const ph = k * golden;

@@ -155,6 +155,24 @@ describe('t_min: secondary rays leaving the surface', () => {
       }
     }
   });
+  it('the survey cast in ranges (as the page does, in short tasks) adds up to the whole survey', async () => {
+    const { selfIntersectionSurvey, selfIntersectionSurveyRange } = await import('../../../src/scenes/ray-sphere/model');
+    const c: [number, number, number] = [0.3, -1.7, 2.9];
+    for (const method of ['naive', 'stable'] as const) {
+      const whole = selfIntersectionSurvey(c, 0.7, method, 1000);
+      const sum = { count: 0, withZero: 0, withTMin: 0 };
+      for (let k = 0; k < 1000; k += 200) {
+        const part = selfIntersectionSurveyRange(c, 0.7, method, 1000, k, k + 200);
+        expect(part.count).toBe(200);
+        sum.count += part.count;
+        sum.withZero += part.withZero;
+        sum.withTMin += part.withTMin;
+      }
+      expect(sum).toEqual(whole);
+      // a range past the end is empty
+      expect(selfIntersectionSurveyRange(c, 0.7, method, 1000, 1000, 1200).count).toBe(0);
+    }
+  });
   it('the secondary ray from the current hit: its small root is the starting point itself', async () => {
     const { secondaryFromHit, tMinFor } = await import('../../../src/scenes/ray-sphere/model');
     const p = { ...base } as RaySphereParams;

@@ -8,6 +8,7 @@
  */
 import { useLayoutEffect, useRef, useState, type KeyboardEvent, type PointerEvent } from 'react';
 import { useWidth } from '../../../ui/useWidth';
+import { useSectionWidth } from '../../../ui/Deferred';
 import type { RaySphereHit } from '../../../core/geometry';
 import { canonicalFrame, dirFromFrame, fromFrame, frameFits, tidy, toFrame, type Frame2D, type V3 } from '../model';
 
@@ -225,7 +226,8 @@ export function CrossSection({ o, d, c, r, res, distanceRatio, onChange, fitExtr
   const svgRef = useRef<SVGSVGElement>(null);
   // one SVG unit = one CSS pixel: labels and handles keep their size on small screens
   const figRef = useRef<HTMLElement>(null);
-  const W = Math.max(280, useWidth(figRef, 640));
+  // first drawn at the width of the placeholder it replaced (the figure fills its section), else a guess
+  const W = Math.max(280, useWidth(figRef, useSectionWidth() ?? 640));
   const H = Math.round(Math.min(460, Math.max(280, W * 0.62)));
   const keep = useRef<{ frame: Frame2D | null; view: View | null }>({ frame: null, view: null });
   const dragRef = useRef<{ target: Target; pointerId: number } | null>(null);

@@ -9,6 +9,7 @@ import { memo, useLayoutEffect, useMemo, useRef, type ReactNode } from 'react';
 import type { RaySphereCase, RaySphereHit } from '../../../core/geometry';
 import type { SweepSeries } from '../model';
 import { useWidth } from '../../../ui/useWidth';
+import { useSectionWidth } from '../../../ui/Deferred';
 
 const PAD = { l: 62, r: 14, t: 30, b: 44 };
 
@@ -176,7 +177,7 @@ function drawG(svg: SVGSVGElement, f: Frame, w: SweepSeries['gWindow'], res: Ray
 export function GSweepPlot({ res, window: w, drawRef }: GPlotProps) {
   const box = useRef<HTMLDivElement>(null);
   const svg = useRef<SVGSVGElement>(null);
-  const W = Math.max(260, useWidth(box, 520));
+  const W = Math.max(260, useWidth(box, useSectionWidth() ?? 520));
   const H = Math.round(Math.min(300, Math.max(220, W * 0.5)));
   const xd = useMemo<[number, number]>(() => [w.tMin - w.shift, w.tMax - w.shift], [w.tMin, w.tMax, w.shift]);
   const yd = useMemo<[number, number]>(() => [w.gMin, w.gMax], [w.gMin, w.gMax]);
@@ -319,7 +320,7 @@ const DeltaStatic = memo(function DeltaStatic({ series: s, tangentX, f, xd, yd, 
 export function DeltaSweepPlot(p: DeltaPlotProps & { drawRef?: { current: ((x: number, discStable: number | null, discNaive: number | null) => void) | null } }) {
   const box = useRef<HTMLDivElement>(null);
   const svg = useRef<SVGSVGElement>(null);
-  const W = Math.max(260, useWidth(box, 520));
+  const W = Math.max(260, useWidth(box, useSectionWidth() ?? 520));
   const H = Math.round(Math.min(340, Math.max(270, W * 0.58)));
   const s = p.series;
   const xd = useMemo<[number, number]>(() => {
