@@ -333,15 +333,35 @@ export function useTimeline(opts: TimelineOptions): Timeline {
     document.addEventListener('visibilitychange', on);
     return () => document.removeEventListener('visibilitychange', on);
   }, []);
-  useEffect(() => {
-    const el = visibleRef?.current;
-    if (!el || typeof IntersectionObserver === 'undefined') return;
-    const io = new IntersectionObserver((entries) => {
+  // The element may mount after the timeline (inside a section that mounts late, ui/Deferred), so
+  // it is looked for again after each render and on each frame, and observed once it is there.
+  const observed = useRef<{ el: Element | null; io: IntersectionObserver | null }>({ el: null, io: null });
+  const ensureObserved = useCallback(() => {
+    const o = observed.current;
+    const el = visibleRef?.current ?? null;
+    if (el === o.el || typeof IntersectionObserver === 'undefined') return;
+    o.io?.disconnect();
+    o.el = el;
+    o.io = null;
+    if (!el) {
+      setOnScreen(true); // nothing to watch: the timeline runs
+      return;
+    }
+    o.io = new IntersectionObserver((entries) => {
       for (const e of entries) setOnScreen(e.isIntersecting);
     });
-    io.observe(el);
-    return () => io.disconnect();
+    o.io.observe(el);
   }, [visibleRef]);
+  useEffect(() => {
+    ensureObserved();
+  });
+  useEffect(
+    () => () => {
+      observed.current.io?.disconnect();
+      observed.current = { el: null, io: null };
+    },
+    [ensureObserved],
+  );
 
   useEffect(() => {
     if (!playing || !onScreen || !tabVisible) return;
@@ -353,6 +373,7 @@ export function useTimeline(opts: TimelineOptions): Timeline {
       raf = 0;
       const l = live.current;
       if (!l.playing) return;
+      ensureObserved();
       const dt = last < 0 ? 0 : Math.min(100, now - last); // a long gap (e.g. a stall) does not jump
       last = now;
       const { t, ended } = advance(l.exact, dt, { max: l.max, duration: l.duration, speed: l.speed, loop: l.loop });
@@ -380,7 +401,7 @@ export function useTimeline(opts: TimelineOptions): Timeline {
     return () => {
       if (raf) cancelAnimationFrame(raf);
     };
-  }, [playing, onScreen, tabVisible, write, setExact, notify]);
+  }, [playing, onScreen, tabVisible, write, setExact, notify, ensureObserved]);
 
   useShortcuts(opts.shortcuts === false ? {} : { playPause: toggle, step });
 

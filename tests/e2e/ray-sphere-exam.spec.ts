@@ -82,6 +82,33 @@ test.describe('exam first', () => {
 });
 
 test.describe('sweep animation on the shared timeline', () => {
+  test('playing, it stops requesting frames while its figure is off screen and goes on when it is back', async ({ page }) => {
+    await countAnimationFrames(page);
+    await openScene(page, P([-3, 0.3, 0.2], [1, 0, 0], '&t=0'));
+    const tl = page.getByTestId('timeline');
+    await page.locator('.timeline-loop input').check();
+    await page.getByTestId('timeline-play').click();
+    await expect.poll(async () => Number(await tl.getAttribute('data-t')), { timeout: 20_000 }).toBeGreaterThan(0.02);
+    // the figure (in a section that mounts after the timeline) leaves the screen
+    await page.evaluate(() => window.scrollTo(0, document.documentElement.scrollHeight));
+    await expect(page.locator('.rs-stage')).not.toBeInViewport();
+    const frames = () => page.evaluate(() => (window as unknown as { __raf: number }).__raf);
+    await expect
+      .poll(
+        async () => {
+          const a = await frames();
+          await page.evaluate(() => new Promise((r) => setTimeout(r, 700)));
+          return (await frames()) - a;
+        },
+        { timeout: 30_000, intervals: [0] },
+      )
+      .toBe(0);
+    await expect(tl).toHaveAttribute('data-playing', '1'); // paused by being off screen, not stopped
+    await page.locator('.rs-stage').scrollIntoViewIfNeeded();
+    const t0 = Number(await tl.getAttribute('data-t'));
+    await expect.poll(async () => Number(await tl.getAttribute('data-t')), { timeout: 20_000 }).not.toBe(t0);
+  });
+
   test('play, pause: readouts equal the model at the paused t; the link restores them; step advances by 1/120', async ({ page }) => {
     const cfg = { o: [-3, 0.3, 0.2] as V, d: [1, 0, 0] as V, extent: 2 };
     await openScene(page, P(cfg.o, cfg.d, '&extent=2'));
