@@ -5,7 +5,7 @@
  * download waited for the entry's download, evaluation and first render (a chain of round trips
  * before the scene's first paint, Lighthouse's LCP). This writes into index.html a tiny inline
  * script that reads the hash route and adds `<link rel="modulepreload">` for the route's scene
- * chunk and every chunk it imports statically (and `<link rel="preload" as="style">` for its CSS),
+ * chunk (or the practice page's, or the teacher's guide's) and every chunk it imports statically (and `<link rel="preload" as="style">` for its CSS),
  * so they download alongside the entry. When the shell then imports the scene, the browser has the
  * modules already (Vite's preload helper sees the links and does not add them again).
  *
@@ -27,8 +27,24 @@ interface ChunkLike {
 type BundleLike = Record<string, ChunkLike | { type: 'asset'; fileName: string }>;
 
 const SCENE_ENTRY = /[\\/]src[\\/]scenes[\\/]([a-z0-9-]+)[\\/]index\.ts$/;
+/** The other lazily loaded routes: `#/practice` and `#/guide` (their chunks' entry modules). */
+const OTHER_ROUTES: Array<[RegExp, string]> = [
+  [/[\\/]src[\\/]practice[\\/]PracticeRoute\.tsx$/, 'practice'],
+  [/[\\/]src[\\/]guide[\\/]Guide\.tsx$/, 'guide'],
+];
 
-/** Scene id → the files to preload for it (scripts first, then stylesheets). Exported for tests. */
+/** The route id a lazy chunk's entry module serves ('alpha' for src/scenes/alpha/index.ts), or null. */
+function routeOf(facade: string | null): string | null {
+  const m = SCENE_ENTRY.exec(facade ?? '');
+  if (m) return m[1]!;
+  for (const [re, id] of OTHER_ROUTES) if (re.test(facade ?? '')) return id;
+  return null;
+}
+
+/**
+ * Route id (a scene's id, 'practice', 'guide') → the files to preload for it (scripts, then
+ * stylesheets). Exported for tests.
+ */
 export function scenePreloadMap(bundle: BundleLike): Record<string, { js: string[]; css: string[] }> {
   const chunk = (f: string): ChunkLike | null => {
     const c = bundle[f];
@@ -59,10 +75,10 @@ export function scenePreloadMap(bundle: BundleLike): Record<string, { js: string
   const out: Record<string, { js: string[]; css: string[] }> = {};
   for (const c of Object.values(bundle)) {
     if (c.type !== 'chunk' || !c.isDynamicEntry) continue;
-    const m = SCENE_ENTRY.exec(c.facadeModuleId ?? '');
-    if (!m) continue;
+    const id = routeOf(c.facadeModuleId);
+    if (id === null) continue;
     const cl = closure(c.fileName);
-    out[m[1]!] = { js: [...cl.js].filter((f) => !entry.js.has(f)), css: [...cl.css].filter((f) => !entry.css.has(f)) };
+    out[id] = { js: [...cl.js].filter((f) => !entry.js.has(f)), css: [...cl.css].filter((f) => !entry.css.has(f)) };
   }
   return out;
 }

@@ -32,7 +32,8 @@ const bundle = Object.fromEntries(
 describe('scenePreloadMap: the files to start with the entry, per scene', () => {
   it('maps each scene to its chunk and static import closure (scripts and CSS), minus what the entry loads', () => {
     const map = scenePreloadMap(bundle);
-    expect(Object.keys(map).sort()).toEqual(['alpha', 'beta-2']); // practice is not a scene
+    expect(Object.keys(map).sort()).toEqual(['alpha', 'beta-2', 'practice']); // the practice page too (#/practice)
+    expect(map.practice).toEqual({ js: ['assets/practice.js', 'assets/shared.js'], css: ['assets/shared.css'] });
     expect(map.alpha).toEqual({ js: ['assets/scene-a.js', 'assets/shared.js'], css: ['assets/a.css', 'assets/shared.css'] });
     expect(map['beta-2']!.js.sort()).toEqual(['assets/deep1.js', 'assets/deep2.js', 'assets/scene-b.js', 'assets/shared.js']);
     expect(map['beta-2']!.css).toEqual(['assets/shared.css']);
@@ -64,8 +65,12 @@ describe('the inline preload script', () => {
     expect(run('#/alpha', '/sub/')[0]!.href).toBe('/sub/assets/scene-a.js');
   });
 
+  it('preloads the practice page on #/practice (with or without a query)', () => {
+    for (const h of ['#/practice', '#/practice?q=3']) expect(run(h).map((l) => l.href).sort(), h).toEqual(['./assets/practice.js', './assets/shared.css', './assets/shared.js']);
+  });
+
   it('adds nothing for the home page, other routes, and hostile hashes (own keys only, never throws)', () => {
-    for (const h of ['', '#/', '#/practice', '#/guide', '#/nope', '#/__proto__', '#/constructor', '#/toString', '#/hasOwnProperty', '#/alpha/extra', '#/%61lpha', `#/${'x'.repeat(5000)}`]) {
+    for (const h of ['', '#/', '#/guide', '#/practice/alpha', '#/nope', '#/__proto__', '#/constructor', '#/toString', '#/hasOwnProperty', '#/alpha/extra', '#/%61lpha', `#/${'x'.repeat(5000)}`]) {
       expect(run(h), h).toEqual([]);
     }
   });
