@@ -14,7 +14,7 @@
  *
  * The worker side is `exposeTasks` (./expose.ts) over plain-data job functions (a scene's jobs.ts).
  */
-import { useCallback, useEffect, useId, useRef, useState, useSyncExternalStore } from 'react';
+import { startTransition, useCallback, useEffect, useId, useRef, useState, useSyncExternalStore } from 'react';
 import { isCancelled, runWorkerTask } from './run';
 
 export interface WorkerJobOptions {
@@ -153,7 +153,9 @@ export function useWorkerJob<R, P = unknown>(makeWorker: () => Worker, method: s
       if (ctl.current !== c) return;
       ctl.current = null;
       if (q) release(q, id);
-      setState((s) => (s.key === runKey ? { ...s, ...patch, running: false } : s));
+      // a transition: a result re-renders most of a scene, which React then does in slices that
+      // yield instead of one long task (issue 15)
+      startTransition(() => setState((s) => (s.key === runKey ? { ...s, ...patch, running: false } : s)));
     };
     runWorkerTask<R, P>(latest.current.makeWorker, method, latest.current.args, {
       signal: c.signal,
@@ -164,7 +166,7 @@ export function useWorkerJob<R, P = unknown>(makeWorker: () => Worker, method: s
           raf.current = 0;
           const p = pending;
           pending = null;
-          if (p && ctl.current === c) setState((s) => (s.key === runKey ? { ...s, progress: p.fraction, partial: p.partial ?? s.partial } : s));
+          if (p && ctl.current === c) startTransition(() => setState((s) => (s.key === runKey ? { ...s, progress: p.fraction, partial: p.partial ?? s.partial } : s)));
         });
       },
     }).then(

@@ -12,8 +12,9 @@ import { useCompiled, ExprField, NumberField, Notice, Panel, Readout, Select, Sl
 import { ExamQuestion, ExploreFurther } from '../../ui/exam';
 import { MathTex } from '../../ui';
 import { useWorkerJob } from '../../workers';
+import { nextTask } from '../../ui/chunked';
 import { fillSequence2D, type SequenceKind } from '../../core/random';
-import { animDuration, animFrame, examChecks, examInversion, lobeFromParams, type AnimFrame, type AnimKind, type DrawStats, type Lobe } from './model';
+import { animDuration, animFrame, examChecksCached, examInversion, lobeFromParams, type AnimFrame, type AnimKind, type DrawStats, type Lobe } from './model';
 import { ANIMS, LOBES, MAX_N, POINT_SETS, type HemisphereSchema, type LobeId } from './params';
 import { compileThetaPhi, compileThetaPhiFast, isCosTheta } from './expr';
 import { UnitSquare } from './view/UnitSquare';
@@ -48,6 +49,10 @@ const ANIM_OPTIONS: { value: AnimKind; label: string }[] = [
 const REPEAT_RUNS = 1000;
 
 const SquareMemo = memo(UnitSquare);
+
+// The exam's quadrature checks (a few ms of adaptive 2D integration) in a task of their own as the
+// scene's code arrives, not inside its first render (issue 15); the render reads the cached result.
+nextTask(() => void examChecksCached());
 
 export default function HemisphereScene({ params, setParams, mode }: SceneProps<HemisphereSchema>) {
   const lobeId = (LOBES as readonly string[]).includes(params.lobe) ? (params.lobe as LobeId) : 'exam';
@@ -89,7 +94,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
   const importanceOff = inverted ? "off: the paper's identity gives no density to sample" : !lobe ? 'off: no valid density to sample' : null;
   const rmse = current && fc.status === 'ok' ? current.rmse : null;
 
-  const checks = useMemo(() => examChecks(), []);
+  const checks = useMemo(() => examChecksCached(), []);
   const firstXi = useMemo(() => {
     if (params.n < 1) return null;
     const u = new Float64Array(2);

@@ -664,6 +664,12 @@ export function examChecks(): ExamChecks {
   };
 }
 
+let checksCache: ExamChecks | null = null;
+/** examChecks(), computed once per page (it depends on nothing: quadratures of the exam's density). */
+export function examChecksCached(): ExamChecks {
+  return (checksCache ??= examChecks());
+}
+
 /** Q1(d) at one (ξ₁, ξ₂): both θ forms, the φ form and its log1p twin, and the CDFs at the result. */
 export function examInversion(xi1: number, xi2: number): { thetaAcos: number; thetaAsin: number; phiLn: number; phiLog1p: number; cdfTheta: number; cdfPhi: number } {
   const thetaAcos = 0.5 * Math.acos(1 - 2 * xi1);

@@ -5,8 +5,8 @@
 import { formatCount } from '../../../ui/format';
 import { useEffect, useRef } from 'react';
 import { fillSequence2D, type SequenceKind } from '../../../core/random';
-import { runChunked } from '../../../ui/chunked';
-import { xiColor, xiCss } from './colors';
+import { nextTask, runChunked } from '../../../ui/chunked';
+import { xiColor } from './colors';
 
 const MAX_SHOWN = 4096;
 
@@ -23,61 +23,59 @@ export function UnitSquare({ kind, seed, n, size = 220 }: { kind: SequenceKind; 
     const fg = getComputedStyle(document.documentElement).getPropertyValue('--fg').trim() || '#222';
     const X = (a: number) => pad + a * s;
     const Y = (b: number) => pad + (1 - b) * s;
-    // Drawn in two short tasks (the grid's 288 coloured strokes, then the points), each well under
-    // a long task on a phone (issue 15).
+    const W = Math.round(size * dpr);
+    const H = W;
+    // Everything coloured goes straight into the pixels (grid segments and points, one colour each):
+    // a stroke and a colour string per segment and per point was tens of ms of a phone's load
+    // (issue 15). Two short tasks: the grid and the first half of the points, then the rest.
+    const img = new ImageData(W, H);
+    const px = img.data;
+    const rgb = new Uint8Array(3);
+    const fill = (x0: number, x1: number, y0: number, y1: number) => {
+      const xa = Math.max(0, Math.round(x0 * dpr));
+      const xb = Math.min(W, Math.round(x1 * dpr));
+      const ya = Math.max(0, Math.round(y0 * dpr));
+      const yb = Math.min(H, Math.round(y1 * dpr));
+      for (let y = ya; y < yb; y++) {
+        for (let x = xa, k = (y * W + xa) * 4; x < xb; x++, k += 4) {
+          px[k] = rgb[0]!;
+          px[k + 1] = rgb[1]!;
+          px[k + 2] = rgb[2]!;
+          px[k + 3] = 255;
+        }
+      }
+    };
     const drawGrid = () => {
-      c.width = size * dpr; // (clears the canvas)
-      c.height = size * dpr;
-      g.setTransform(dpr, 0, 0, dpr, 0, 0);
-      // grid lines in the warp colours
-      g.lineWidth = 1.5;
+      // the 8 × 8 grid in the warp colours, 1.5 px wide, each line in 16 segments
+      const half = 0.75;
       for (let l = 0; l <= 8; l++) {
         const f = l / 8;
         for (let q = 0; q < 16; q++) {
           const t0 = q / 16;
           const t1 = (q + 1) / 16;
-          g.strokeStyle = xiCss(f, (t0 + t1) / 2);
-          g.beginPath();
-          g.moveTo(X(f), Y(t0));
-          g.lineTo(X(f), Y(t1));
-          g.stroke();
-          g.strokeStyle = xiCss((t0 + t1) / 2, f);
-          g.beginPath();
-          g.moveTo(X(t0), Y(f));
-          g.lineTo(X(t1), Y(f));
-          g.stroke();
+          xiColor(f, (t0 + t1) / 2, rgb);
+          fill(X(f) - half, X(f) + half, Y(t1), Y(t0));
+          xiColor((t0 + t1) / 2, f, rgb);
+          fill(X(t0), X(t1), Y(f) - half, Y(f) + half);
         }
       }
     };
-    const drawPoints = () => {
-      const u = new Float64Array(2 * shown);
-      fillSequence2D(kind, seed, n, u, 0, shown, 0);
-      const r = shown > 1000 ? 1.2 : 2;
-      // The points go straight into the pixels (one colour per point): a fillStyle string per point
-      // for thousands of points was tens of ms of the page's load on a phone (issue 15).
-      const W = c.width;
-      const H = c.height;
-      const img = g.getImageData(0, 0, W, H);
-      const px = img.data;
-      const rgb = new Uint8Array(3);
-      for (let i = 0; i < shown; i++) {
+    const u = new Float64Array(2 * shown);
+    const r = shown > 1000 ? 1.2 : 2;
+    const drawPoints = (from: number, to: number) => {
+      if (from === 0) fillSequence2D(kind, seed, n, u, 0, shown, 0);
+      for (let i = from; i < to; i++) {
         const a = u[2 * i]!;
         const b = u[2 * i + 1]!;
         xiColor(a, b, rgb);
-        const x0 = Math.max(0, Math.round((X(a) - r) * dpr));
-        const x1 = Math.min(W, Math.round((X(a) + r) * dpr));
-        const y0 = Math.max(0, Math.round((Y(b) - r) * dpr));
-        const y1 = Math.min(H, Math.round((Y(b) + r) * dpr));
-        for (let y = y0; y < y1; y++) {
-          for (let x = x0, k = (y * W + x0) * 4; x < x1; x++, k += 4) {
-            px[k] = rgb[0]!;
-            px[k + 1] = rgb[1]!;
-            px[k + 2] = rgb[2]!;
-            px[k + 3] = 255;
-          }
-        }
+        fill(X(a) - r, X(a) + r, Y(b) - r, Y(b) + r);
       }
+    };
+    const finish = () => {
+      c.width = W; // (clears the canvas)
+      c.height = H;
       g.putImageData(img, 0, 0);
+      g.setTransform(dpr, 0, 0, dpr, 0, 0);
       g.strokeStyle = fg;
       g.lineWidth = 1;
       g.strokeRect(X(0), Y(1), s, s);
@@ -99,11 +97,20 @@ export function UnitSquare({ kind, seed, n, size = 220 }: { kind: SequenceKind; 
       g.fillText('ξ₂ →', 0, 0);
       g.restore();
     };
-    const cancelGrid = runChunked(drawGrid);
-    const cancelPoints = runChunked(drawPoints);
+    let alive = true;
+    const mid = shown >> 1;
+    const cancel = runChunked(() => {
+      drawGrid();
+      drawPoints(0, mid);
+      nextTask(() => {
+        if (!alive) return;
+        drawPoints(mid, shown);
+        finish();
+      });
+    });
     return () => {
-      cancelGrid();
-      cancelPoints();
+      alive = false;
+      cancel();
     };
   }, [kind, seed, n, shown, size]);
   return (
