@@ -1,6 +1,4 @@
 import { useEffect, useRef, useState } from 'react';
-import { flushSync } from 'react-dom';
-import { runChunked } from './chunked';
 import { KATEX_OPTIONS } from './katexOptions';
 import { flushMathForPrint, scheduleMath } from './mathQueue';
 import { afterPaint } from './afterPaint';
@@ -144,19 +142,11 @@ export function MathTex({ tex, display = false, className }: { tex: string; disp
     // Each formula is typeset in its own slot: at once when it is near the screen, else in idle
     // time (./mathQueue), so the formulas on screen come first and the HTML of a whole page is
     // never inserted in one go.
-    // The HTML goes in through the shared sliced queue, each formula committed on its own: the
-    // worker's answers arrive in bursts, and React would otherwise batch them into one commit
-    // whose HTML parsing alone was a long task on a phone.
-    let cancelInsert = () => {};
     const cancel = scheduleMath(ref.current, () => {
       typeset(tex, display)
         .then((out) => {
           if (out !== null) remember(key, out);
-          if (alive) {
-            cancelInsert = runChunked(() => {
-              if (alive) flushSync(() => setHtml(out));
-            });
-          }
+          if (alive) setHtml(out);
         })
         .catch(() => {
           if (alive) setHtml(null);
@@ -165,7 +155,6 @@ export function MathTex({ tex, display = false, className }: { tex: string; disp
     return () => {
       alive = false;
       cancel();
-      cancelInsert();
     };
   }, [key, tex, display]);
   const Tag = display ? 'div' : 'span';
