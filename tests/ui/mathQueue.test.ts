@@ -1,25 +1,5 @@
 import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
-
-/** A controllable IntersectionObserver: the test says which elements are near the screen. */
-class FakeIO {
-  static all: FakeIO[] = [];
-  observed = new Set<object>();
-  constructor(private cb: (entries: { target: object; isIntersecting: boolean }[]) => void) {
-    FakeIO.all.push(this);
-  }
-  observe(el: object) {
-    this.observed.add(el);
-  }
-  unobserve(el: object) {
-    this.observed.delete(el);
-  }
-  disconnect() {
-    this.observed.clear();
-  }
-  report(el: object, isIntersecting: boolean) {
-    if (this.observed.has(el)) this.cb([{ target: el, isIntersecting }]);
-  }
-}
+import { FakeIO } from './fakeIO';
 
 const idleCbs: ((d: { timeRemaining: () => number; didTimeout: boolean }) => void)[] = [];
 const runIdle = () => {

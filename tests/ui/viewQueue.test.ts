@@ -1,28 +1,6 @@
 import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
 import { createViewQueue } from '../../src/ui/viewQueue';
-
-type Entry = { target: object; isIntersecting: boolean; boundingClientRect: { width: number } };
-
-/** A controllable IntersectionObserver that reports a box with each entry. */
-class FakeIO {
-  static all: FakeIO[] = [];
-  observed = new Set<object>();
-  constructor(private cb: (entries: Entry[]) => void) {
-    FakeIO.all.push(this);
-  }
-  observe(el: object) {
-    this.observed.add(el);
-  }
-  unobserve(el: object) {
-    this.observed.delete(el);
-  }
-  disconnect() {
-    this.observed.clear();
-  }
-  report(el: object, isIntersecting: boolean, width: number) {
-    if (this.observed.has(el)) this.cb([{ target: el, isIntersecting, boundingClientRect: { width } }]);
-  }
-}
+import { FakeIO } from './fakeIO';
 
 const idleCbs: ((d: { timeRemaining: () => number; didTimeout: boolean }) => void)[] = [];
 
