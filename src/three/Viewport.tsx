@@ -249,7 +249,8 @@ export function Viewport({ ariaLabel, height = 360, setup, testId, phiZero = tru
             Reset view
           </button>
         ) : null}
-        {children}
+        {/* the scene's overlays act on the view: not shown before it starts */}
+        {idle ? null : children}
       </div>
       <p className="viewport-hint" id={hintId}>
         Drag to orbit, scroll to zoom. Keyboard: focus the view, then ← → ↑ ↓ orbit (Shift: finer), + / − zoom, Home resets.

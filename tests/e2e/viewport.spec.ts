@@ -127,9 +127,12 @@ test.describe('shared 3D viewport', () => {
       const al = page.locator('.viewport').first();
       await al.scrollIntoViewIfNeeded();
       await expect(al).toHaveAttribute('data-status', 'idle');
+      // the scene's overlays act on the view: none is offered before it starts
+      await expect(page.locator('.al-frame')).toHaveCount(0);
       await al.focus();
       await page.keyboard.press('Enter');
       await expect(al).toHaveAttribute('data-status', 'ready', { timeout: 30_000 });
+      await expect(page.locator('.al-frame')).toHaveCount(1);
     });
   });
 });
