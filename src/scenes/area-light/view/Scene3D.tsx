@@ -265,16 +265,17 @@ export function Scene3D({ model, strategy, samples, terms, patch, height, dark, 
 
   return (
     <div className="al-viewport">
-      <Viewport ariaLabel="3D view: the floor, the shading point with its unit hemisphere, the rectangular light, the samples and the Q6(a) patch" height={height} setup={setup} testId="al-3d" />
-      <button
-        type="button"
-        className="al-frame"
-        onClick={() => {
-          if (objs.current) frame(objs.current, latest.current.model);
-        }}
-      >
-        Frame the scene
-      </button>
+      <Viewport ariaLabel="3D view: the floor, the shading point with its unit hemisphere, the rectangular light, the samples and the Q6(a) patch" height={height} setup={setup} testId="al-3d">
+        <button
+          type="button"
+          className="al-frame"
+          onClick={() => {
+            if (objs.current) frame(objs.current, latest.current.model);
+          }}
+        >
+          Frame the scene
+        </button>
+      </Viewport>
     </div>
   );
 }
