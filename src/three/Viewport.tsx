@@ -213,10 +213,15 @@ export function Viewport({ ariaLabel, height = 360, setup, testId, phiZero = tru
         {idle ? (
           <div className="viewport-msg viewport-poster">
             <p>{ariaLabel}</p>
-            <button type="button" className="viewport-start" onClick={() => {
+            <button
+              type="button"
+              className="viewport-start"
+              onClick={() => {
                 setWanted(true);
                 box.current?.focus(); // the button goes away: keep the keyboard's place on the view
-              }} data-testid={testId ? `${testId}-start` : undefined}>
+              }}
+              data-testid={testId ? `${testId}-start` : undefined}
+            >
               Show the 3D view
             </button>
             <p className="viewport-poster-note">On phones and tablets the 3D view starts when you ask for it.</p>
