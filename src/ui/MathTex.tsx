@@ -56,7 +56,7 @@ function katexWorker(): Worker | null {
 }
 
 /** Start the worker and the stylesheet together (a page is about to show formulas). */
-export function prepareMath(): void {
+function prepareMath(): void {
   void loadKatexCss().catch(() => undefined);
   katexWorker();
 }

@@ -22,10 +22,3 @@ export function xiColor(a: number, b: number, out: Uint8Array | number[], o = 0)
   out[o + 1] = Math.floor(G0 + GA * a + GB * b + GAB * ab + 0.5);
   out[o + 2] = Math.floor(B0 + BA * a + BB * b + BAB * ab + 0.5);
 }
-
-/** CSS colour string of (a, b). */
-export function xiCss(a: number, b: number): string {
-  const c = [0, 0, 0];
-  xiColor(a, b, c);
-  return `rgb(${c[0]},${c[1]},${c[2]})`;
-}
