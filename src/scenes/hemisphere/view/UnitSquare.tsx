@@ -3,7 +3,7 @@
  * the 3D view draws on the hemisphere, in the same colours. Redrawn only when the inputs change.
  */
 import { formatCount } from '../../../ui/format';
-import { useEffect, useRef } from 'react';
+import { useEffect, useMemo, useRef } from 'react';
 import { fillSequence2D, type SequenceKind } from '../../../core/random';
 import { nextTask, runChunked } from '../../../ui/chunked';
 import { xiColor } from './colors';
@@ -13,16 +13,17 @@ const MAX_SHOWN = 4096;
 export function UnitSquare({ kind, seed, n, size = 220 }: { kind: SequenceKind; seed: number; n: number; size?: number }) {
   const canvas = useRef<HTMLCanvasElement>(null);
   const shown = Math.min(n, MAX_SHOWN);
+  const pad = 22;
+  const s = size - 2 * pad;
+  const X = (a: number) => pad + a * s;
+  const Y = (b: number) => pad + (1 - b) * s;
+  // the first sample, which the 3D view and the worked example track (ringed)
+  const first = useMemo(() => (shown > 0 ? fillSequence2D(kind, seed, n, new Float64Array(2), 0, 1, 0) : null), [kind, seed, n, shown]);
   useEffect(() => {
     const c = canvas.current;
     const g = c?.getContext('2d', { willReadFrequently: true });
     if (!c || !g) return;
     const dpr = Math.min(window.devicePixelRatio || 1, 2);
-    const pad = 22;
-    const s = size - 2 * pad;
-    const fg = getComputedStyle(document.documentElement).getPropertyValue('--fg').trim() || '#222';
-    const X = (a: number) => pad + a * s;
-    const Y = (b: number) => pad + (1 - b) * s;
     const W = Math.round(size * dpr);
     const H = W;
     // Everything coloured goes straight into the pixels (grid segments and points, one colour each):
@@ -75,27 +76,6 @@ export function UnitSquare({ kind, seed, n, size = 220 }: { kind: SequenceKind; 
       c.width = W; // (clears the canvas)
       c.height = H;
       g.putImageData(img, 0, 0);
-      g.setTransform(dpr, 0, 0, dpr, 0, 0);
-      g.strokeStyle = fg;
-      g.lineWidth = 1;
-      g.strokeRect(X(0), Y(1), s, s);
-      // the first sample, which the 3D view and the worked example track
-      if (shown > 0) {
-        g.lineWidth = 2;
-        g.beginPath();
-        g.arc(X(u[0]!), Y(u[1]!), 6, 0, 2 * Math.PI);
-        g.stroke();
-      }
-      g.fillStyle = fg;
-      g.font = '12px sans-serif';
-      g.fillText('ξ₁ →', X(1) - 30, Y(0) + 16);
-      g.fillText('0', X(0) - 4, Y(0) + 16);
-      g.fillText('1', X(1) - 4, Y(0) + 16);
-      g.save();
-      g.translate(X(0) - 8, Y(0.5));
-      g.rotate(-Math.PI / 2);
-      g.fillText('ξ₂ →', 0, 0);
-      g.restore();
     };
     let alive = true;
     const mid = shown >> 1;
@@ -112,15 +92,32 @@ export function UnitSquare({ kind, seed, n, size = 220 }: { kind: SequenceKind; 
       alive = false;
       cancel();
     };
+    // (X and Y are functions of size, which is listed)
   }, [kind, seed, n, shown, size]);
+  // The frame, the axis labels and the ring are drawn over the pixels in the text colour
+  // (currentColor): reading the theme's colour for the canvas forced a style recalculation of the
+  // whole page while it loaded (42 ms on the Lighthouse trace, issue 15), and a theme switch now
+  // recolours them without a redraw.
   return (
     <figure className="hemi-square">
-      <canvas
-        ref={canvas}
-        style={{ width: size, height: size }}
-        role="img"
-        aria-label={`The unit square of (ξ₁, ξ₂) with the first ${shown} points of the ${kind} set and the grid whose image is drawn on the hemisphere`}
-      />
+      <div className="hemi-square-plot" style={{ width: size, height: size }}>
+        <canvas
+          ref={canvas}
+          style={{ width: size, height: size }}
+          role="img"
+          aria-label={`The unit square of (ξ₁, ξ₂) with the first ${shown} points of the ${kind} set and the grid whose image is drawn on the hemisphere`}
+        />
+        <svg viewBox={`0 0 ${size} ${size}`} width={size} height={size} aria-hidden="true" focusable="false">
+          <rect x={X(0)} y={Y(1)} width={s} height={s} fill="none" stroke="currentColor" strokeWidth={1} />
+          {first && <circle cx={X(first[0]!)} cy={Y(first[1]!)} r={6} fill="none" stroke="currentColor" strokeWidth={2} />}
+          <g fill="currentColor" fontSize={12} fontFamily="sans-serif">
+            <text x={X(1) - 30} y={Y(0) + 16}>ξ₁ →</text>
+            <text x={X(0) - 4} y={Y(0) + 16}>0</text>
+            <text x={X(1) - 4} y={Y(0) + 16}>1</text>
+            <text transform={`translate(${X(0) - 8} ${Y(0.5)}) rotate(-90)`}>ξ₂ →</text>
+          </g>
+        </svg>
+      </div>
       <figcaption>
         (ξ₁, ξ₂): first {formatCount(shown)} {kind} points; each colour lands where the same colour appears on the hemisphere; the ringed point is the first sample.
       </figcaption>
