@@ -2,7 +2,7 @@ import { StrictMode, startTransition } from 'react';
 import { createRoot } from 'react-dom/client';
 import { App } from './App';
 import '../ui/styles.css';
-import { whenQuiet } from './whenQuiet';
+import { whenQuiet } from '../ui/whenQuiet';
 import { findScene, sceneLoader } from '../scenes/registry';
 import { parseHash } from './route';
 import { firstScreen } from './firstScreen';
@@ -50,7 +50,7 @@ window.addEventListener('hashchange', maybeFuzz);
 // single-file build, not from file://) once the page has loaded, the opened scene's first screen
 // has been painted (10 s at most), and the page has then been idle for 2 s: its install precaches
 // the whole build, about a second of CPU on a worker thread that competed with a scene's load on a
-// phone, and registering at 'load' put its chunks before a scene's first paint (./whenQuiet; issue 15).
+// phone, and registering at 'load' put its chunks before a scene's first paint (../ui/whenQuiet; issue 15).
 if (import.meta.env.PROD && import.meta.env.MODE !== 'single' && 'serviceWorker' in navigator && /^https?:$/.test(window.location.protocol)) {
   // A page of the old build reloads, whole, as soon as a new build's worker takes over (another
   // tab's "Reload"), even before this page has registered (it waits for quiet): its lazy chunks

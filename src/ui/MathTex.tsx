@@ -1,6 +1,6 @@
 import { useEffect, useRef, useState } from 'react';
 import { KATEX_OPTIONS } from './katexOptions';
-import { flushMathForPrint, scheduleMath } from './mathQueue';
+import { flushMathForPrint, insertTypeset, scheduleMath } from './mathQueue';
 import { afterPaint } from './afterPaint';
 import type { TypesetReply, TypesetRequest } from './katex.worker';
 
@@ -140,13 +140,15 @@ export function MathTex({ tex, display = false, className }: { tex: string; disp
     let alive = true;
     hookPrint();
     // Each formula is typeset in its own slot: at once when it is near the screen, else in idle
-    // time (./mathQueue), so the formulas on screen come first and the HTML of a whole page is
-    // never inserted in one go.
+    // time (./mathQueue), so the formulas on screen come first; its HTML goes in with at most a few
+    // others per frame (insertTypeset), so the HTML of a screenful is never inserted in one go.
     const cancel = scheduleMath(ref.current, () => {
       typeset(tex, display)
         .then((out) => {
           if (out !== null) remember(key, out);
-          if (alive) setHtml(out);
+          insertTypeset(out?.length ?? 0, () => {
+            if (alive) setHtml(out);
+          });
         })
         .catch(() => {
           if (alive) setHtml(null);

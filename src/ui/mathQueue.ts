@@ -4,7 +4,8 @@
  * others in idle time, a few per idle period, in page order; everything still waiting before
  * printing (`flushMathForPrint`). The scheduling is ./viewQueue's.
  */
-import { runChunked } from './chunked';
+import { afterPaint } from './afterPaint';
+import { nextTask, runChunked } from './chunked';
 import { createViewQueue } from './viewQueue';
 
 /** How far off screen a formula still counts as "near" (typeset at once). */
@@ -20,3 +21,47 @@ export const scheduleMath: (el: Element | null, job: () => void) => () => void =
 
 /** Typeset everything still waiting, now (before printing). */
 export const flushMathForPrint: () => void = queue.flush;
+
+/** Characters of typeset HTML put into the page per frame, at most (one formula always goes). */
+export const HTML_PER_FRAME = 16_000;
+
+const arrivals: { cost: number; insert: () => void }[] = [];
+let inserting = false;
+
+function insertBatch(): void {
+  let spent = 0;
+  while (arrivals.length && (spent === 0 || spent + arrivals[0]!.cost <= HTML_PER_FRAME)) {
+    const a = arrivals.shift()!;
+    spent += a.cost;
+    try {
+      a.insert();
+    } catch (e) {
+      setTimeout(() => {
+        throw e;
+      });
+    }
+  }
+  // the next batch after this one has been rendered and painted
+  void afterPaint().then(() => {
+    inserting = false;
+    pumpInserts();
+  });
+}
+
+function pumpInserts(): void {
+  if (inserting || !arrivals.length) return;
+  inserting = true;
+  nextTask(insertBatch);
+}
+
+/**
+ * Put a typeset formula (`cost`: its HTML's length) into the page soon: a few per frame. The
+ * worker answers a whole screen of formulas at once, and React would commit them together (tens
+ * of ms of HTML parsing and layout in one task on a phone; issue 15), so `insert` (which sets the
+ * formula's state) runs in batches of at most {@link HTML_PER_FRAME} characters, one batch per
+ * painted frame.
+ */
+export function insertTypeset(cost: number, insert: () => void): void {
+  arrivals.push({ cost, insert });
+  pumpInserts();
+}

@@ -6,7 +6,8 @@
  *
  * - When the arguments change (by `key`, default `JSON.stringify(args)`) the run in flight is
  *   cancelled (its worker terminated) and, after `delayMs` of quiet (debounce), a new one starts.
- * - `enabled: false` cancels and starts nothing; `manual: true` starts only on `run()`.
+ * - `enabled: false` cancels and starts nothing; `manual: true` starts only on `run()`;
+ *   `afterSettle: true` holds the opening run until the page has loaded (`waiting` meanwhile).
  * - `queue: 'name'` runs the jobs of every hook on that queue one at a time, first come first
  *   served (so background runs never take every core from the page that draws their results).
  * - Progress (fraction and partial results) is coalesced to one React update per animation frame.
@@ -16,6 +17,7 @@
  */
 import { startTransition, useCallback, useEffect, useId, useRef, useState, useSyncExternalStore } from 'react';
 import { isCancelled, runWorkerTask } from './run';
+import { isPageSettled, pageSettled } from '../ui/whenQuiet';
 
 export interface WorkerJobOptions {
   /** Identity of the arguments (default JSON.stringify(args)). A new key cancels and restarts. */
@@ -28,6 +30,12 @@ export interface WorkerJobOptions {
   queue?: string;
   /** true: never start by itself, only on run() (a change still cancels and clears). */
   manual?: boolean;
+  /**
+   * true: the run for the arguments the scene opened with waits until the page has settled
+   * (../ui/whenQuiet pageSettled: first screen painted, then quiet; 3 s at most), for a result
+   * that is not on the first screen. A change of arguments before then runs as usual.
+   */
+  afterSettle?: boolean;
 }
 
 export interface WorkerJob<R, P> {
@@ -95,8 +103,21 @@ interface JobState<R, P> {
 const IDLE: JobState<never, never> = { key: null, running: false, progress: 0, partial: undefined, result: undefined, error: null };
 
 export function useWorkerJob<R, P = unknown>(makeWorker: () => Worker, method: string, args: unknown, options: WorkerJobOptions = {}): WorkerJob<R, P> {
-  const { enabled = true, delayMs = 0, queue, manual = false } = options;
+  const { enabled = true, delayMs = 0, queue, manual = false, afterSettle = false } = options;
   const key = options.key ?? JSON.stringify(args);
+  const openingKey = useRef(key);
+  const [settled, setSettled] = useState(() => !afterSettle || isPageSettled());
+  useEffect(() => {
+    if (settled) return;
+    let alive = true;
+    void pageSettled().then(() => {
+      if (alive) setSettled(true);
+    });
+    return () => {
+      alive = false;
+    };
+  }, [settled]);
+  const held = !settled && key === openingKey.current;
   const id = useId();
   const [state, setState] = useState<JobState<R, P>>(IDLE);
   /** A run asked for (its key and a serial so run() can ask again for the same key). */
@@ -133,10 +154,10 @@ export function useWorkerJob<R, P = unknown>(makeWorker: () => Worker, method: s
   useEffect(() => {
     stop();
     setWanted(null);
-    if (!enabled || manual) return;
+    if (!enabled || manual || held) return;
     const t = setTimeout(() => setWanted({ key, serial: ++serial.current }), delayMs);
     return () => clearTimeout(t);
-  }, [key, enabled, manual, delayMs, stop]);
+  }, [key, enabled, manual, held, delayMs, stop]);
 
   // start what is asked for when its turn comes
   useEffect(() => {
@@ -191,7 +212,7 @@ export function useWorkerJob<R, P = unknown>(makeWorker: () => Worker, method: s
     result: current ? state.result : undefined,
     partial: current ? state.partial : undefined,
     running,
-    waiting: !running && wanted !== null && wanted.key === key && !!q && owner !== null && owner !== id,
+    waiting: (!running && wanted !== null && wanted.key === key && !!q && owner !== null && owner !== id) || (held && enabled && !manual),
     progress: current ? state.progress : 0,
     error: current ? state.error : null,
     run,

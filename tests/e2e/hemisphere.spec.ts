@@ -14,6 +14,12 @@ import type { LobeId } from '../../src/scenes/hemisphere/params';
 const cosTheta = (t: number) => Math.cos(t);
 const rel = (a: number, b: number) => Math.abs(a - b) / Math.max(1e-300, Math.abs(b));
 
+/** Open a scene without waiting for its deferred sections (the page is still loading). */
+async function openSceneNoWait(page: Page, hash: string) {
+  await page.goto(`./${hash}`);
+  await page.waitForSelector('[data-testid="stats-status"]');
+}
+
 /** Wait until the worker's statistics for the current parameters are on screen. */
 async function statsReady(page: Page) {
   await expect(page.getByTestId('stats-status')).toHaveAttribute('data-state', 'ready', { timeout: 30_000 });
@@ -171,6 +177,46 @@ test.describe('robustness and extras', () => {
       expect(bad.map((v) => `${v.id}: ${v.nodes.slice(0, 5).map((n) => n.target.join(' ')).join(', ')}`)).toEqual([]);
     });
   }
+
+  test('the opening statistics wait for the page to load; a change before then runs at once', async ({ page }) => {
+    // every state the status line shows, and when the scene's worker is created, from the start
+    await page.addInitScript(() => {
+      const w = window as unknown as { __log: string[] };
+      w.__log = [];
+      const Orig = window.Worker;
+      window.Worker = class extends Orig {
+        constructor(url: string | URL, opts?: WorkerOptions) {
+          if (String(url).includes('hemisphere')) w.__log.push(document.documentElement.hasAttribute('data-settled') ? 'worker settled' : 'worker');
+          super(url, opts);
+        }
+      };
+      new MutationObserver(() => {
+        const s = document.querySelector('[data-testid="stats-status"]')?.getAttribute('data-state');
+        const settled = document.documentElement.hasAttribute('data-settled') ? ' settled' : '';
+        if (s && w.__log.at(-1) !== s + settled) w.__log.push(s + settled);
+      }).observe(document, { subtree: true, childList: true, attributes: true, attributeFilter: ['data-state'] });
+    });
+    await openScene(page, '#/hemisphere?n=500');
+    await statsReady(page);
+    const log = await page.evaluate(() => (window as unknown as { __log: string[] }).__log);
+    // first waiting (no worker yet), then, once the page has settled, the run and its result
+    expect(log[0]).toBe('waiting');
+    const w = log.findIndex((s) => s.startsWith('worker'));
+    expect(log[w]).toBe('worker settled');
+    expect(log.slice(0, w).filter((s) => s.startsWith('running'))).toEqual([]);
+    expect(log.slice(w)).toContain('ready settled');
+    await expect(page.getByTestId('stats-status')).toHaveText('statistics up to date');
+
+    // a change while the page is still loading is not held back
+    await page.goto('about:blank');
+    await openSceneNoWait(page, '#/hemisphere?n=400');
+    await expect(page.getByTestId('stats-status')).toHaveAttribute('data-state', 'waiting');
+    await page.evaluate(() => (location.hash = '#/hemisphere?n=300'));
+    await statsReady(page);
+    expect(Number(await readout(page, 'samples'))).toBe(300);
+    const log2 = await page.evaluate(() => (window as unknown as { __log: string[] }).__log);
+    expect(log2.find((s) => s.startsWith('running'))).toBe('running'); // before the page settled
+  });
 
   test('malformed URL parameters fall back with a notice naming them', async ({ page }) => {
     await openScene(page, '#/hemisphere?lobe=banana&n=abc&seed=-5');

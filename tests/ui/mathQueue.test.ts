@@ -79,3 +79,49 @@ describe('scheduleMath: formulas near the screen first, the rest in idle time', 
     expect(seen.length).toBe(3); // nothing runs twice
   });
 });
+
+describe('insertTypeset: typeset formulas go into the page a few per painted frame', () => {
+  it('batches by HTML length, one batch per frame; one formula over the limit still goes alone; a failing insert does not stop the rest', async () => {
+    const frames: (() => void)[] = [];
+    vi.stubGlobal('requestAnimationFrame', (cb: () => void) => frames.push(cb));
+    const paint = async () => {
+      for (const cb of frames.splice(0)) cb();
+      await settle();
+    };
+    const { insertTypeset, HTML_PER_FRAME } = await import('../../src/ui/mathQueue');
+    const seen: string[] = [];
+    const third = Math.floor(HTML_PER_FRAME / 3);
+    const thrown: unknown[] = [];
+    const onErr = (e: unknown) => thrown.push(e);
+    process.on('uncaughtException', onErr);
+    try {
+      insertTypeset(third, () => seen.push('a'));
+      insertTypeset(third, () => seen.push('b'));
+      insertTypeset(third, () => {
+        seen.push('c');
+        throw new Error('boom');
+      });
+      insertTypeset(third, () => seen.push('d'));
+      insertTypeset(3 * HTML_PER_FRAME, () => seen.push('big'));
+      insertTypeset(1, () => seen.push('e'));
+      expect(seen).toEqual([]); // never inside the caller's task
+      await settle();
+      expect(seen).toEqual(['a', 'b', 'c']); // the first three fit; the fourth would pass the limit
+      await settle();
+      expect(seen).toEqual(['a', 'b', 'c']); // nothing more before a frame is painted
+      await paint();
+      expect(seen).toEqual(['a', 'b', 'c', 'd']); // d, then big would pass the limit
+      await paint();
+      expect(seen).toEqual(['a', 'b', 'c', 'd', 'big']); // alone, though over the limit
+      await paint();
+      expect(seen).toEqual(['a', 'b', 'c', 'd', 'big', 'e']);
+      await paint();
+      expect(thrown.map((e) => (e as Error).message)).toEqual(['boom']);
+      insertTypeset(1, () => seen.push('f')); // an idle queue takes the next one after a task
+      await settle();
+      expect(seen.at(-1)).toBe('f');
+    } finally {
+      process.off('uncaughtException', onErr);
+    }
+  });
+});

@@ -75,7 +75,8 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
     () => ({ lobe: lobeId, exponent: params.exponent, pdf: params.pdf, f: params.f, points: kind, seed: params.seed, n: params.n, sampleLobe: !inverted && !!baseLobe }),
     [lobeId, params.exponent, params.pdf, params.f, kind, params.seed, params.n, inverted, baseLobe],
   );
-  const stats = useWorkerJob<DrawStats>(makeWorker, 'stats', args, { enabled: ready, delayMs: 60 });
+  // its readouts and plots are below the first screen: the opening run waits for the page to load
+  const stats = useWorkerJob<DrawStats>(makeWorker, 'stats', args, { enabled: ready, delayMs: 60, afterSettle: true });
   const current = stats.result ?? null;
 
   // ---- repeat many times (on request; a change of parameters cancels and clears it) -----------
@@ -140,8 +141,8 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
       <Select label="Point set (ξ₁, ξ₂)" value={kind} options={POINT_OPTIONS} onChange={(v) => setParams({ points: v })} testId="points" />
       <Slider label="Samples N" value={params.n} min={1} max={MAX_N} log step={1} onChange={(v) => setParams({ n: Math.round(v) })} testId="n" />
       <NumberField label="Seed" value={params.seed} min={0} max={4294967295} step={1} onChange={(v) => setParams({ seed: Math.round(v) })} />
-      <p className="small stats-status" data-testid="stats-status" data-state={current ? 'ready' : stats.running ? 'running' : 'idle'}>
-        {stats.running ? `computing in a worker… ${Math.round(stats.progress * 100)} %` : current ? 'statistics up to date' : ''}
+      <p className="small stats-status" data-testid="stats-status" data-state={current ? 'ready' : stats.running ? 'running' : stats.waiting ? 'waiting' : 'idle'}>
+        {stats.running ? `computing in a worker… ${Math.round(stats.progress * 100)} %` : current ? 'statistics up to date' : stats.waiting ? 'statistics start once the page has loaded…' : ''}
       </p>
     </div>
   );

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { whenQuiet, type IdleApi } from '../../src/app/whenQuiet';
+import { whenQuiet, type IdleApi } from '../../src/ui/whenQuiet';
 
 /** A fake clock and idle scheduler: `busy(from, to)` marks spans where no idle period is whole. */
 function fakeIdle(busySpans: Array<[number, number]>) {

@@ -10,6 +10,8 @@
  * and stretched the page's own tasks several times over.
  */
 
+import { afterPaint } from './afterPaint';
+
 /** An idle period with at least this much time left is a whole one (the browser caps them at 50 ms). */
 export const FULL_IDLE_MS = 40;
 
@@ -58,4 +60,31 @@ export function whenQuiet({ quietMs = 2000, maxMs = 30_000, api = browserIdle() 
     };
     api.request(tick, { timeout: 1000 });
   });
+}
+
+let settled: Promise<void> | null = null;
+let settledNow = false;
+
+/**
+ * Once per page: resolves when the first screen has been painted and the page has then been quiet
+ * for half a second (3 s at most). A scene's opening computation whose result is not on the first
+ * screen waits for it (useWorkerJob's `afterSettle`): started while the page mounts its sections
+ * and typesets its formulas, a worker takes a core from it and stretches every task (issue 15).
+ */
+export function pageSettled(): Promise<void> {
+  if (!settled) {
+    settled = afterPaint()
+      .then(() => whenQuiet({ quietMs: 500, maxMs: 3000 }))
+      .then(() => {
+        settledNow = true;
+        // for tests and tools that measure a loaded page
+        if (typeof document !== 'undefined') document.documentElement.setAttribute('data-settled', '');
+      });
+  }
+  return settled;
+}
+
+/** Whether {@link pageSettled} has resolved. */
+export function isPageSettled(): boolean {
+  return settledNow;
 }
