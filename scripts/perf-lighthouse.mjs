@@ -130,7 +130,20 @@ async function launchChromium() {
       child.kill('SIGTERM');
       await Promise.race([new Promise((r) => child.once('exit', r)), sleep(5000)]);
       if (child.exitCode === null) child.kill('SIGKILL');
-      rmSync(profile, { recursive: true, force: true, maxRetries: 5, retryDelay: 200 });
+      // Chromium's helper processes can still be writing to the profile as the browser exits: the
+      // removal may need a later try, and failing it must not cost the run that was just measured
+      for (let tries = 0; ; tries++) {
+        try {
+          rmSync(profile, { recursive: true, force: true, maxRetries: 5, retryDelay: 200 });
+          break;
+        } catch (e) {
+          if (tries >= 3) {
+            console.error(`  (could not remove ${profile}: ${e instanceof Error ? e.message : e})`);
+            break;
+          }
+          await sleep(1000);
+        }
+      }
     },
   };
 }
@@ -160,6 +173,8 @@ const CONFIG = {
 const nodeOf = (item) => item?.node ?? item?.items?.[0]?.node ?? null;
 const describeNode = (n) => (n ? { label: n.nodeLabel ?? null, selector: n.selector ?? null, snippet: (n.snippet ?? '').slice(0, 200) } : null);
 
+let traceRun = 0;
+
 /** One Lighthouse run of one URL; returns the numbers and the evidence of what was measured. */
 async function measure(url) {
   const chrome = await launchChromium();
@@ -169,7 +184,9 @@ async function measure(url) {
     const { lhr } = result;
     if (process.env.PERF_DUMP) writeFileSync(process.env.PERF_DUMP, JSON.stringify(lhr));
     // the observed trace Lighthouse simulated from (for a look at its long tasks' contents)
-    if (process.env.PERF_TRACE && result.artifacts?.Trace) writeFileSync(process.env.PERF_TRACE, JSON.stringify(result.artifacts.Trace));
+    // ({run} in the name: one file per run, numbered in order)
+    traceRun++;
+    if (process.env.PERF_TRACE && result.artifacts?.Trace) writeFileSync(process.env.PERF_TRACE.replaceAll('{run}', String(traceRun)), JSON.stringify(result.artifacts.Trace));
     if (lhr.runtimeError) throw new Error(`${lhr.runtimeError.code}: ${lhr.runtimeError.message}`);
     const a = lhr.audits;
     const num = (id) => (typeof a[id]?.numericValue === 'number' ? a[id].numericValue : null);
