@@ -1,7 +1,8 @@
-import { useEffect, useRef, useState } from 'react';
+import { useEffect, useMemo, useRef, useState } from 'react';
 import { KATEX_OPTIONS } from './katexOptions';
 import { flushMathForPrint, insertTypeset, scheduleMath } from './mathQueue';
 import { afterPaint } from './afterPaint';
+import { texPreview } from './texPreview';
 import type { TypesetReply, TypesetRequest } from './katex.worker';
 
 type Katex = typeof import('katex');
@@ -124,12 +125,14 @@ function hookPrint(): void {
 }
 
 /**
- * TeX rendered by KaTeX (HTML + MathML for screen readers), typeset in a worker; until then, and
- * if the TeX is invalid, the source is shown as code. Never throws.
+ * TeX rendered by KaTeX (HTML + MathML for screen readers), typeset in a worker. Until then it is
+ * shown as plain text (./texPreview: "p(ω) = k cos θ e^φ"); if KaTeX cannot be run, the source is
+ * shown as code. Never throws.
  */
 export function MathTex({ tex, display = false, className }: { tex: string; display?: boolean; className?: string }) {
   const key = `${display ? 'D' : 'I'}${tex}`;
-  const [html, setHtml] = useState<string | null>(() => cached(key) ?? null);
+  // undefined: not typeset yet; null: KaTeX could not be run
+  const [html, setHtml] = useState<string | null | undefined>(() => cached(key));
   const ref = useRef<HTMLElement>(null);
   useEffect(() => {
     const hit = cached(key);
@@ -137,6 +140,7 @@ export function MathTex({ tex, display = false, className }: { tex: string; disp
       setHtml(hit);
       return;
     }
+    // (a formula that changes keeps showing the old one until the new one is typeset)
     let alive = true;
     hookPrint();
     // Each formula is typeset in its own slot: at once when it is near the screen, else in idle
@@ -159,13 +163,22 @@ export function MathTex({ tex, display = false, className }: { tex: string; disp
       cancel();
     };
   }, [key, tex, display]);
+  const preview = useMemo(() => (html === undefined ? texPreview(tex, display) : ''), [html, tex, display]);
   const Tag = display ? 'div' : 'span';
+  const cls = `math${display ? ' math-display' : ''}${className ? ` ${className}` : ''}`;
+  if (html === undefined) {
+    return (
+      <Tag ref={ref as React.RefObject<HTMLDivElement>} className={`${cls} math-pending`}>
+        <span className="math-preview">{preview}</span>
+      </Tag>
+    );
+  }
   if (html === null) {
     return (
-      <Tag ref={ref as React.RefObject<HTMLDivElement>} className={`math math-pending${display ? ' math-display' : ''}${className ? ` ${className}` : ''}`}>
+      <Tag ref={ref as React.RefObject<HTMLDivElement>} className={`${cls} math-failed`}>
         <code>{tex}</code>
       </Tag>
     );
   }
-  return <Tag ref={ref as React.RefObject<HTMLDivElement>} className={`math${display ? ' math-display' : ''}${className ? ` ${className}` : ''}`} dangerouslySetInnerHTML={{ __html: html }} />;
+  return <Tag ref={ref as React.RefObject<HTMLDivElement>} className={cls} dangerouslySetInnerHTML={{ __html: html }} />;
 }

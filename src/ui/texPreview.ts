@@ -1,0 +1,195 @@
+/**
+ * A plain-text reading of TeX, shown while a formula waits for KaTeX (./MathTex): "p(ω) = k cos θ
+ * e^φ" instead of the source "p(\omega) = k\cos\theta\,e^{\phi}". It reads better on a slow phone
+ * and to a screen reader, and, being about as wide as the typeset formula, the text around it
+ * moves less when the formula arrives (Lighthouse's layout shift, issue 15).
+ *
+ * One pass over the characters (no backtracking), never throws; what it does not know it keeps.
+ */
+
+const SYMBOL: Record<string, string> = {
+  alpha: 'α', beta: 'β', gamma: 'γ', delta: 'δ', epsilon: 'ε', varepsilon: 'ε', zeta: 'ζ', eta: 'η',
+  theta: 'θ', vartheta: 'ϑ', iota: 'ι', kappa: 'κ', lambda: 'λ', mu: 'μ', nu: 'ν', xi: 'ξ', pi: 'π',
+  rho: 'ρ', sigma: 'σ', tau: 'τ', upsilon: 'υ', phi: 'φ', varphi: 'φ', chi: 'χ', psi: 'ψ', omega: 'ω',
+  Gamma: 'Γ', Delta: 'Δ', Theta: 'Θ', Lambda: 'Λ', Xi: 'Ξ', Pi: 'Π', Sigma: 'Σ', Phi: 'Φ', Psi: 'Ψ',
+  Omega: 'Ω', ell: 'ℓ',
+  int: '∫', iint: '∬', oint: '∮', sum: '∑', prod: '∏', infty: '∞', partial: '∂', nabla: '∇',
+  cdot: '·', times: '×', div: '÷', pm: '±', mp: '∓', ast: '∗', star: '⋆', circ: '∘', bullet: '•',
+  le: '≤', leq: '≤', ge: '≥', geq: '≥', ne: '≠', neq: '≠', approx: '≈', sim: '∼', simeq: '≃',
+  equiv: '≡', propto: '∝', ll: '≪', gg: '≫', in: '∈', notin: '∉', subset: '⊂', subseteq: '⊆',
+  cup: '∪', cap: '∩', setminus: '∖', emptyset: '∅', forall: '∀', exists: '∃', neg: '¬',
+  to: '→', rightarrow: '→', leftarrow: '←', Rightarrow: '⇒', Leftarrow: '⇐', Leftrightarrow: '⇔',
+  iff: '⇔', implies: '⇒', mapsto: '↦', uparrow: '↑', downarrow: '↓',
+  ldots: '…', cdots: '⋯', dots: '…', vdots: '⋮', prime: '′', angle: '∠', perp: '⊥', parallel: '∥',
+  langle: '⟨', rangle: '⟩', lfloor: '⌊', rfloor: '⌋', lceil: '⌈', rceil: '⌉', vert: '|', Vert: '‖',
+  lvert: '|', rvert: '|', lVert: '‖', rVert: '‖', mid: '|', sqrt: '√', surd: '√', deg: '°',
+  quad: '  ', qquad: '    ', ',': ' ', ':': ' ', ';': ' ', '>': ' ', ' ': ' ', '!': '', '/': '',
+  '{': '{', '}': '}', '%': '%', '&': '&', _: '_', '#': '#', $: '$', '|': '‖',
+};
+/** Written as their names (upright in TeX). */
+const NAMED = new Set(['sin', 'cos', 'tan', 'cot', 'sec', 'csc', 'arcsin', 'arccos', 'arctan', 'sinh', 'cosh', 'tanh', 'exp', 'log', 'ln', 'lg', 'max', 'min', 'sup', 'inf', 'lim', 'det', 'dim', 'arg', 'gcd', 'Pr']);
+/** Commands dropped, leaving their argument (fonts, sizes, accents, delimiters' sizing). */
+const DROP = new Set([
+  'left', 'right', 'big', 'Big', 'bigg', 'Bigg', 'bigl', 'bigr', 'Bigl', 'Bigr', 'biggl', 'biggr', 'Biggl', 'Biggr', 'middle',
+  'displaystyle', 'textstyle', 'scriptstyle', 'limits', 'nolimits', 'nonumber', 'notag',
+  'mathrm', 'mathit', 'mathbf', 'mathsf', 'mathtt', 'mathcal', 'mathbb', 'mathfrak', 'boldsymbol', 'bm', 'mathnormal',
+  'text', 'textrm', 'textit', 'textbf', 'textsf', 'texttt', 'mbox', 'operatorname', 'hbox',
+  'underline',
+  'color', 'htmlClass', 'htmlId',
+]);
+/** Accents, as combining marks on a one-letter argument (dropped on a longer one). */
+const ACCENT: Record<string, string> = { hat: '\u0302', widehat: '\u0302', bar: '\u0304', overline: '\u0305', vec: '\u20d7', tilde: '\u0303', widetilde: '\u0303', dot: '\u0307', ddot: '\u0308', mathring: '\u030a' };
+/** Large operators, set apart from what precedes them. */
+const BIG_OP = new Set(['int', 'iint', 'oint', 'sum', 'prod']);
+/** Superscript and subscript characters, where Unicode has them all for a script. */
+const SUP: Record<string, string> = { '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶', '7': '⁷', '8': '⁸', '9': '⁹', '+': '⁺', '-': '⁻', '−': '⁻', '=': '⁼', '(': '⁽', ')': '⁾', n: 'ⁿ', i: 'ⁱ', T: 'ᵀ' };
+const SUB: Record<string, string> = { '0': '₀', '1': '₁', '2': '₂', '3': '₃', '4': '₄', '5': '₅', '6': '₆', '7': '₇', '8': '₈', '9': '₉', '+': '₊', '-': '₋', '−': '₋', '=': '₌', '(': '₍', ')': '₎', i: 'ᵢ', j: 'ⱼ', k: 'ₖ', n: 'ₙ', m: 'ₘ', x: 'ₓ', a: 'ₐ', e: 'ₑ', o: 'ₒ', r: 'ᵣ', u: 'ᵤ', v: 'ᵥ', t: 'ₜ', s: 'ₛ', p: 'ₚ', l: 'ₗ', h: 'ₕ' };
+
+/** Longest input read; the rest is cut (a formula on a page is far shorter). */
+const MAX_CHARS = 20_000;
+
+export function texPreview(tex: string, display = false): string {
+  const s = tex.length > MAX_CHARS ? tex.slice(0, MAX_CHARS) : tex;
+  let i = 0;
+
+  /** The group or single token starting at i (after spaces), read to plain text. */
+  function argument(): string {
+    while (s[i] === ' ') i++;
+    if (i >= s.length) return '';
+    if (s[i] === '{') {
+      i++;
+      return until('}');
+    }
+    if (s[i] === '\\') return command();
+    return s[i++]!;
+  }
+
+  /** A backslash command at i, read to plain text (consumes its arguments where it has some). */
+  function command(): string {
+    i++; // the backslash
+    if (i >= s.length) return '';
+    const c = s[i]!;
+    if (!/[A-Za-z]/.test(c)) {
+      i++;
+      if (c === '\\') {
+        // a row break, with its optional spacing ([4pt])
+        if (s[i] === '[') {
+          const k = s.indexOf(']', i);
+          i = k < 0 ? s.length : k + 1;
+        }
+        return display ? '\n' : ' ';
+      }
+      return SYMBOL[c] ?? c;
+    }
+    let j = i;
+    while (j < s.length && /[A-Za-z]/.test(s[j]!)) j++;
+    const name = s.slice(i, j);
+    i = j;
+    if (name === 'frac' || name === 'dfrac' || name === 'tfrac' || name === 'cfrac') {
+      const a = argument();
+      const b = argument();
+      return `${wrap(a)}/${wrap(b)}`;
+    }
+    if (name === 'sqrt') {
+      while (s[i] === ' ') i++;
+      if (s[i] === '[') {
+        const k = s.indexOf(']', i);
+        i = k < 0 ? s.length : k + 1;
+      }
+      return `√${wrap(argument())}`;
+    }
+    if (name === 'begin' || name === 'end') {
+      argument(); // the environment's name
+      while (s[i] === ' ') i++;
+      if (name === 'begin' && s[i] === '{') argument(); // a column spec ({array}{cc})
+      return '';
+    }
+    if (name === 'color' || name === 'htmlClass' || name === 'htmlId') {
+      argument(); // the colour or name; the next group is read as usual
+      return '';
+    }
+    if (name === 'hspace' || name === 'vspace' || name === 'kern' || name === 'mkern' || name === 'mskip' || name === 'hskip') {
+      argument();
+      return ' ';
+    }
+    if (NAMED.has(name)) return ` ${name} `;
+    if (name in ACCENT) {
+      const a = argument();
+      return [...a].length === 1 ? a + ACCENT[name]! : a;
+    }
+    if (BIG_OP.has(name)) return ` ${SYMBOL[name]!}`;
+    if (name in SYMBOL) return SYMBOL[name]!;
+    if (DROP.has(name)) return '';
+    return name;
+  }
+
+  /** Read to plain text up to `end` (a closing brace) or the end of the input. */
+  function until(end: '}' | null): string {
+    let out = '';
+    let depth = 0;
+    while (i < s.length) {
+      const c = s[i]!;
+      if (c === '\\') out += command();
+      else if (c === '{') {
+        // a plain group: its braces go, without a call per level (hostile nesting)
+        depth++;
+        i++;
+      } else if (c === '}') {
+        i++;
+        if (depth > 0) depth--;
+        else if (end !== null) return out;
+        // else unbalanced: dropped
+      }
+      else if (c === '^' || c === '_') {
+        i++;
+        const arg = argument();
+        out += script(arg, c === '^' ? SUP : SUB, c);
+      } else if (c === '&') {
+        i++;
+        out += ' ';
+      } else if (c === '~') {
+        i++;
+        out += ' ';
+      } else {
+        i++;
+        out += c === '-' ? '−' : c;
+      }
+    }
+    return out;
+  }
+
+  let text: string;
+  try {
+    text = until(null);
+  } catch {
+    // commands nested thousands deep ran out of stack: the source it is
+    return s;
+  }
+  // tidy the spacing: no runs of spaces, none around line breaks, named operators not padded at
+  // the ends or before punctuation
+  return text
+    .replace(/[ \t]+/g, ' ')
+    .replace(/ ?\n ?/g, '\n')
+    .replace(/ ([,.;)\]}|])/g, '$1')
+    .replace(/([([{|]) /g, '$1')
+    .trim()
+    .normalize('NFC');
+}
+
+function wrap(t: string): string {
+  const x = t.trim();
+  return x.length <= 1 || /^[\w.′]+$/u.test(x) ? x : `(${x})`;
+}
+
+function script(arg: string, map: Record<string, string>, mark: string): string {
+  const x = arg.trim();
+  if (x === '') return '';
+  if (x === '′' || x === '′′') return x;
+  let out = '';
+  for (const ch of x) {
+    const m = map[ch];
+    if (m === undefined) return `${mark}${wrap(x)}`;
+    out += m;
+  }
+  return out;
+}

@@ -1,0 +1,65 @@
+import { describe, expect, it } from 'vitest';
+import fc from 'fast-check';
+import { texPreview } from '../../src/ui/texPreview';
+
+describe('texPreview: TeX read as plain text while KaTeX is on its way', () => {
+  it('reads the formulas of the exam as a person would write them', () => {
+    expect(texPreview(String.raw`p(\omega) = k\cos\theta\,e^{\phi}`)).toBe('p(ω) = k cos θ e^φ');
+    expect(texPreview(String.raw`k = \frac{2}{e^{2\pi} - 1}`)).toBe('k = 2/(e^(2π) − 1)');
+    expect(texPreview(String.raw`\xi_1, \xi_2 \in [0, 1)`)).toBe('ξ₁, ξ₂ ∈ [0, 1)');
+    expect(texPreview(String.raw`\theta = \arccos\sqrt{1 - \xi_1}`)).toBe('θ = arccos √(1 − ξ₁)');
+    expect(texPreview(String.raw`\left(x + 2\right)^2`)).toBe('(x + 2)²');
+    expect(texPreview(String.raw`\text{Var}[\hat I] \approx 1.23\times10^{-4}`)).toBe('Var[Î] ≈ 1.23×10⁻⁴');
+    expect(texPreview(String.raw`t = \frac{-b \pm \sqrt{b^2 - 4ac}}{2a}`)).toBe('t = (−b ± √(b² − 4ac))/2a');
+  });
+
+  it('an aligned derivation: one line per row when displayed, spaces inline; environments and & disappear', () => {
+    const tex = String.raw`\begin{aligned} a &= b \\[4pt] &= c \end{aligned}`;
+    expect(texPreview(tex, true)).toBe('a = b\n= c');
+    expect(texPreview(tex, false)).toBe('a = b = c');
+    expect(texPreview(String.raw`\begin{array}{cc} 1 & 2 \end{array}`)).toBe('1 2');
+  });
+
+  it('keeps what it does not know, drops colour and sizing, and survives unbalanced input', () => {
+    expect(texPreview(String.raw`\foo{x}`)).toBe('foox');
+    expect(texPreview(String.raw`\color{red}{x} + \Big( y \Big)`)).toBe('x + (y)');
+    expect(texPreview('a}b{c')).toBe('abc');
+    expect(texPreview('x^')).toBe('x');
+    expect(texPreview('\\')).toBe('');
+    expect(texPreview(String.raw`\sqrt[3]{x}`)).toBe('√x');
+  });
+
+  it('never throws, and never returns a backslash for input made of known commands', () => {
+    const known = ['\\alpha', '\\frac{1}{2}', '\\sqrt{x}', '\\int_0^1', '\\sum_{i=1}^{n}', '\\cdot', '\\left(', '\\right)', '\\text{ab}', '\\hat{x}', '\\\\', '&', 'x^2', 'y_i', '{', '}', ' ', 'a', '1', '+', '='];
+    fc.assert(
+      fc.property(fc.array(fc.constantFrom(...known), { maxLength: 40 }), fc.boolean(), (parts, display) => {
+        const out = texPreview(parts.join(''), display);
+        expect(out).not.toContain('\\');
+      }),
+    );
+    fc.assert(
+      fc.property(fc.string({ maxLength: 200 }), fc.boolean(), (s, display) => {
+        expect(typeof texPreview(s, display)).toBe('string');
+      }),
+    );
+  });
+
+  it('hostile input: long and deeply nested strings are read in one pass', () => {
+    const deep = '{'.repeat(5000) + 'x' + '}'.repeat(5000);
+    expect(texPreview(deep)).toBe('x');
+    const long = '\\frac{a}{b}'.repeat(50_000);
+    const t0 = performance.now();
+    const out = texPreview(long);
+    expect(performance.now() - t0).toBeLessThan(2000);
+    expect(out.length).toBeGreaterThan(0);
+  });
+});
+
+describe('texPreview under hostile nesting', () => {
+  it('commands nested past the stack give back the source instead of throwing', () => {
+    const tex = '\\frac{'.repeat(3000) + 'x' + '}{y}'.repeat(3000);
+    const out = texPreview(tex);
+    expect(typeof out).toBe('string');
+    expect(texPreview('\\sqrt{'.repeat(20) + 'x' + '}'.repeat(20))).toBe('√('.repeat(19) + '√x' + ')'.repeat(19));
+  });
+});
