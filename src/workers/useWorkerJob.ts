@@ -105,7 +105,8 @@ const IDLE: JobState<never, never> = { key: null, running: false, progress: 0, p
 export function useWorkerJob<R, P = unknown>(makeWorker: () => Worker, method: string, args: unknown, options: WorkerJobOptions = {}): WorkerJob<R, P> {
   const { enabled = true, delayMs = 0, queue, manual = false, afterSettle = false } = options;
   const key = options.key ?? JSON.stringify(args);
-  const openingKey = useRef(key);
+  // the arguments the scene opened with (null once they have changed: no later run is held)
+  const openingKey = useRef<string | null>(key);
   const [settled, setSettled] = useState(() => !afterSettle || isPageSettled());
   useEffect(() => {
     if (settled) return;
@@ -118,6 +119,9 @@ export function useWorkerJob<R, P = unknown>(makeWorker: () => Worker, method: s
     };
   }, [settled]);
   const held = !settled && key === openingKey.current;
+  useEffect(() => {
+    if (key !== openingKey.current) openingKey.current = null;
+  }, [key]);
   const id = useId();
   const [state, setState] = useState<JobState<R, P>>(IDLE);
   /** A run asked for (its key and a serial so run() can ask again for the same key). */

@@ -14,7 +14,9 @@ export async function settleLazyViews(page: Page, timeout = 60000): Promise<void
     const el = await page.getByText(LOADING).first().elementHandle({ timeout: 1000 }).catch(() => null);
     if (!el) return;
     await el.scrollIntoViewIfNeeded().catch(() => undefined);
-    await page.waitForFunction((e) => !e.isConnected || !/Loading/.test(e.textContent ?? ''), el, { timeout });
+    // polled on a timer, not per animation frame: a page that draws no frames for a while (a
+    // loaded machine, nothing changing on screen) must not stall the wait
+    await page.waitForFunction((e) => !e.isConnected || !/Loading/.test(e.textContent ?? ''), el, { timeout, polling: 200 });
   }
   throw new Error('views still loading after 50 rounds');
 }
