@@ -23,15 +23,18 @@ const SYMBOL: Record<string, string> = {
   ldots: '…', cdots: '⋯', dots: '…', vdots: '⋮', prime: '′', angle: '∠', perp: '⊥', parallel: '∥',
   langle: '⟨', rangle: '⟩', lfloor: '⌊', rfloor: '⌋', lceil: '⌈', rceil: '⌉', vert: '|', Vert: '‖',
   lvert: '|', rvert: '|', lVert: '‖', rVert: '‖', mid: '|', sqrt: '√', surd: '√', deg: '°',
+  checkmark: '✓', hbar: 'ℏ', wedge: '∧', vee: '∨', oplus: '⊕', otimes: '⊗', colon: ':',
+  lbrace: '{', rbrace: '}', lbrack: '[', rbrack: ']', backslash: '\\',
   quad: '  ', qquad: '    ', ',': ' ', ':': ' ', ';': ' ', '>': ' ', ' ': ' ', '!': '', '/': '',
   '{': '{', '}': '}', '%': '%', '&': '&', _: '_', '#': '#', $: '$', '|': '‖',
 };
 /** Written as their names (upright in TeX). */
-const NAMED = new Set(['sin', 'cos', 'tan', 'cot', 'sec', 'csc', 'arcsin', 'arccos', 'arctan', 'sinh', 'cosh', 'tanh', 'exp', 'log', 'ln', 'lg', 'max', 'min', 'sup', 'inf', 'lim', 'det', 'dim', 'arg', 'gcd', 'Pr']);
+export const NAMED_OPERATORS: ReadonlySet<string> = new Set(['sin', 'cos', 'tan', 'cot', 'sec', 'csc', 'arcsin', 'arccos', 'arctan', 'sinh', 'cosh', 'tanh', 'exp', 'log', 'ln', 'lg', 'max', 'min', 'sup', 'inf', 'lim', 'det', 'dim', 'arg', 'gcd', 'Pr']);
 /** Commands dropped, leaving their argument (fonts, sizes, accents, delimiters' sizing). */
 const DROP = new Set([
   'left', 'right', 'big', 'Big', 'bigg', 'Bigg', 'bigl', 'bigr', 'Bigl', 'Bigr', 'biggl', 'biggr', 'Biggl', 'Biggr', 'middle',
-  'displaystyle', 'textstyle', 'scriptstyle', 'limits', 'nolimits', 'nonumber', 'notag',
+  'displaystyle', 'textstyle', 'scriptstyle', 'limits', 'nolimits', 'nonumber', 'notag', 'allowbreak', 'nobreak', 'hline',
+  'mathop', 'mathbin', 'mathrel', 'mathord', 'mathopen', 'mathclose', 'mathpunct', 'underbrace', 'overbrace',
   'mathrm', 'mathit', 'mathbf', 'mathsf', 'mathtt', 'mathcal', 'mathbb', 'mathfrak', 'boldsymbol', 'bm', 'mathnormal',
   'text', 'textrm', 'textit', 'textbf', 'textsf', 'texttt', 'mbox', 'operatorname', 'hbox',
   'underline',
@@ -108,11 +111,31 @@ export function texPreview(tex: string, display = false): string {
       argument(); // the colour or name; the next group is read as usual
       return '';
     }
+    if (name === 'colorbox' || name === 'fcolorbox') {
+      argument(); // the colour(s); the box's text is read as usual
+      if (name === 'fcolorbox') argument();
+      return '';
+    }
+    if (name === 'phantom' || name === 'hphantom' || name === 'vphantom' || name === 'label' || name === 'tag') {
+      argument();
+      return '';
+    }
+    if (name === 'xrightarrow' || name === 'xleftarrow') {
+      while (s[i] === ' ') i++;
+      if (s[i] === '[') {
+        const k = s.indexOf(']', i);
+        i = k < 0 ? s.length : k + 1;
+      }
+      const over = argument().trim();
+      const arrow = name === 'xrightarrow' ? '→' : '←';
+      return over ? ` ${arrow}(${over}) ` : ` ${arrow} `;
+    }
+    if (name === 'newline' || name === 'linebreak') return display ? '\n' : ' ';
     if (name === 'hspace' || name === 'vspace' || name === 'kern' || name === 'mkern' || name === 'mskip' || name === 'hskip') {
       argument();
       return ' ';
     }
-    if (NAMED.has(name)) return ` ${name} `;
+    if (NAMED_OPERATORS.has(name)) return ` ${name} `;
     if (name in ACCENT) {
       const a = argument();
       return [...a].length === 1 ? a + ACCENT[name]! : a;
@@ -172,6 +195,10 @@ export function texPreview(tex: string, display = false): string {
     .replace(/ ?\n ?/g, '\n')
     .replace(/ ([,.;)\]}|])/g, '$1')
     .replace(/([([{|]) /g, '$1')
+    // a norm's bars hug what they enclose (the odd pieces between ‖ … ‖)
+    .split('‖')
+    .map((piece, k, all) => (k % 2 === 1 && k < all.length - 1 ? piece.trim() : piece))
+    .join('‖')
     .trim()
     .normalize('NFC');
 }

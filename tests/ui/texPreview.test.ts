@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import { texPreview } from '../../src/ui/texPreview';
+import { NAMED_OPERATORS, texPreview } from '../../src/ui/texPreview';
 
 describe('texPreview: TeX read as plain text while KaTeX is on its way', () => {
   it('reads the formulas of the exam as a person would write them', () => {
@@ -61,5 +61,52 @@ describe('texPreview under hostile nesting', () => {
     const out = texPreview(tex);
     expect(typeof out).toBe('string');
     expect(texPreview('\\sqrt{'.repeat(20) + 'x' + '}'.repeat(20))).toBe('√('.repeat(19) + '√x' + ')'.repeat(19));
+  });
+});
+
+describe('texPreview: the commands the scenes use', () => {
+  it('line-break hints, boxes, arrows with labels and ticks read cleanly', () => {
+    expect(texPreview(String.raw`a = 1,\allowbreak b = 2`)).toBe('a = 1, b = 2');
+    expect(texPreview(String.raw`\colorbox{yellow}{x} \checkmark`)).toBe('x ✓');
+    expect(texPreview(String.raw`a \xrightarrow{\text{swap}} b`)).toBe('a →(swap) b');
+    expect(texPreview(String.raw`\begin{array}{c} 1 \\ \hline 2 \end{array}`, true)).toBe('1\n2');
+    expect(texPreview(String.raw`\lVert o - C \rVert^2`)).toBe('‖o − C‖²');
+  });
+
+  it('every command in the scenes, the practice questions and the guide is read, never printed by name', async () => {
+    const { readFileSync, readdirSync, statSync } = await import('node:fs');
+    const { join } = await import('node:path');
+    const files: string[] = [];
+    const walk = (d: string) => {
+      for (const f of readdirSync(d)) {
+        const p = join(d, f);
+        if (statSync(p).isDirectory()) walk(p);
+        else if (/\.tsx?$/.test(f)) files.push(p);
+      }
+    };
+    for (const d of ['src/scenes', 'src/practice', 'src/guide']) walk(d);
+    const names = new Set<string>();
+    for (const f of files) {
+      const text = readFileSync(f, 'utf8');
+      // TeX in String.raw templates (\cmd) and in ordinary strings (\\cmd)
+      for (const m of text.matchAll(/(?<![\\A-Za-z])\\{1,2}([A-Za-z]{2,})/g)) names.add(m[1]!);
+    }
+    // JavaScript escapes and regular expressions, not TeX
+    const notTex = (n: string) => /^(n|b|u|t|r|s|d|w|x)[a-z]*$/.test(n) && !['theta', 'tau', 'times', 'tan', 'text', 'tfrac', 'to', 'sin', 'sum', 'sqrt', 'sim', 'sigma', 'delta', 'dfrac', 'big', 'boldsymbol', 'begin', 'rangle', 'rfloor', 'rVert', 'right', 'rho', 'xi', 'xrightarrow', 'nu', 'neq', 'nabla'].includes(n);
+    const used = [...names].filter((n) => !notTex(n));
+    expect(used.length).toBeGreaterThan(30);
+    for (const n of used) {
+      const out = texPreview(`\\${n}{x}`);
+      expect(out, `\\${n}`).not.toContain('\\');
+      if (!NAMED_OPERATORS.has(n)) expect(out, `\\${n}`).not.toContain(n);
+    }
+  });
+});
+
+
+describe('texPreview: norms', () => {
+  it('norm bars hug their contents and keep their distance from what is outside', () => {
+    expect(texPreview(String.raw`\lVert p - C \rVert^2 = r^2 \Rightarrow \lVert o + t d - C \rVert^2 = r^2`)).toBe('‖p − C‖² = r² ⇒ ‖o + t d − C‖² = r²');
+    expect(texPreview(String.raw`c = \lVert o - C\rVert^2 - r^2`)).toBe('c = ‖o − C‖² − r²');
   });
 });
