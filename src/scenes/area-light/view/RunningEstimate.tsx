@@ -28,7 +28,12 @@ interface Geometry {
   xTicks: number[];
 }
 
-function geometry(run: SampleRun, reference: number): Geometry {
+/**
+ * Scales and paths of the plot. A non-finite running mean (a degenerate configuration can give
+ * NaN or ±∞ samples) sets no scale, breaks the line and the band there, and is drawn nowhere:
+ * an SVG attribute must never read "NaN".
+ */
+export function geometry(run: SampleRun, reference: number): Geometry {
   const n = run.count;
   const xOf = (k: number) => M.l + ((W - M.l - M.r) * Math.log(Math.max(1, k))) / Math.log(Math.max(2, n));
   // y range: the band from 8 samples on (earlier σ is too rough to set a scale), and the reference.
@@ -36,6 +41,7 @@ function geometry(run: SampleRun, reference: number): Geometry {
   const from = Math.min(n, 8) - 1;
   for (let i = Math.max(0, from); i < n; i++) {
     const m = run.mean[i]!, s = Number.isFinite(run.stderr[i]!) ? run.stderr[i]! : 0;
+    if (!Number.isFinite(m)) continue;
     lo = Math.min(lo, m - 2 * s);
     hi = Math.max(hi, m + 2 * s);
   }
@@ -51,15 +57,26 @@ function geometry(run: SampleRun, reference: number): Geometry {
   const pad = 0.08 * (hi - lo);
   lo -= pad;
   hi += pad;
-  const yOf = (v: number) => M.t + ((H - M.t - M.b) * (hi - Math.min(hi, Math.max(lo, v)))) / (hi - lo);
+  const yOf = (v: number) => {
+    // (a range past the largest double, or a NaN, lands mid-plot instead of in an attribute)
+    const f = (hi - Math.min(hi, Math.max(lo, v))) / (hi - lo);
+    return M.t + (H - M.t - M.b) * (Number.isFinite(f) ? f : 0.5);
+  };
   let line = '';
   let upper = '';
   let lower = '';
+  let pen = false; // whether the line is drawing (a non-finite mean lifts it)
   for (let i = 0; i < n; i++) {
     const x = xOf(i + 1).toFixed(1);
-    line += `${i ? 'L' : 'M'}${x},${yOf(run.mean[i]!).toFixed(1)}`;
+    const m = run.mean[i]!;
+    if (!Number.isFinite(m)) {
+      pen = false;
+      continue;
+    }
+    line += `${pen ? 'L' : 'M'}${x},${yOf(m).toFixed(1)}`;
+    pen = true;
     const s = run.stderr[i]!;
-    if (i >= 1 && Number.isFinite(s)) {
+    if (i >= 1 && Number.isFinite(s) && Number.isFinite(m + 2 * s) && Number.isFinite(m - 2 * s)) {
       upper += `${upper ? 'L' : 'M'}${x},${yOf(run.mean[i]! + 2 * s).toFixed(1)}`;
       lower = `L${x},${yOf(run.mean[i]! - 2 * s).toFixed(1)}` + lower;
     }
@@ -102,11 +119,11 @@ export const RunningEstimate = memo(function RunningEstimate({
     const el = svg.current;
     if (!el) return;
     const xk = g.xOf(Math.max(1, kk));
-    const est = kk > 0 ? run.mean[kk - 1]! : NaN;
+    const est = kk > 0 && kk <= run.count ? run.mean[kk - 1]! : NaN;
     el.querySelector('clipPath rect')?.setAttribute('width', String(kk > 0 ? xk + 0.5 : 0));
     const dot = el.querySelector('circle.al-run-dot');
     if (dot) {
-      if (kk > 0) {
+      if (kk > 0 && Number.isFinite(est)) {
         dot.removeAttribute('display');
         dot.setAttribute('cx', String(xk));
         dot.setAttribute('cy', String(g.yOf(est)));
