@@ -38,8 +38,13 @@ const DROP = new Set([
   'mathrm', 'mathit', 'mathbf', 'mathsf', 'mathtt', 'mathcal', 'mathbb', 'mathfrak', 'boldsymbol', 'bm', 'mathnormal',
   'text', 'textrm', 'textit', 'textbf', 'textsf', 'texttt', 'mbox', 'operatorname', 'hbox',
   'underline',
-  'color', 'htmlClass', 'htmlId',
 ]);
+/** Commands whose first arguments (how many) are settings, not text: they read as the string given. */
+const SKIP_ARGS: Record<string, [number, string]> = {
+  color: [1, ''], htmlClass: [1, ''], htmlId: [1, ''], colorbox: [1, ''], fcolorbox: [2, ''],
+  phantom: [1, ''], hphantom: [1, ''], vphantom: [1, ''], label: [1, ''], tag: [1, ''],
+  hspace: [1, ' '], vspace: [1, ' '], kern: [1, ' '], mkern: [1, ' '], mskip: [1, ' '], hskip: [1, ' '],
+};
 /** Accents, as combining marks on a one-letter argument (dropped on a longer one). */
 const ACCENT: Record<string, string> = { hat: '\u0302', widehat: '\u0302', bar: '\u0304', overline: '\u0305', vec: '\u20d7', tilde: '\u0303', widetilde: '\u0303', dot: '\u0307', ddot: '\u0308', mathring: '\u030a' };
 /** Large operators, set apart from what precedes them. */
@@ -67,6 +72,15 @@ export function texPreview(tex: string, display = false): string {
     return s[i++]!;
   }
 
+  /** Skip an optional argument ([…]) at i, after spaces. */
+  function skipOptional(): void {
+    while (s[i] === ' ') i++;
+    if (s[i] === '[') {
+      const k = s.indexOf(']', i);
+      i = k < 0 ? s.length : k + 1;
+    }
+  }
+
   /** A backslash command at i, read to plain text (consumes its arguments where it has some). */
   function command(): string {
     i++; // the backslash
@@ -76,10 +90,7 @@ export function texPreview(tex: string, display = false): string {
       i++;
       if (c === '\\') {
         // a row break, with its optional spacing ([4pt])
-        if (s[i] === '[') {
-          const k = s.indexOf(']', i);
-          i = k < 0 ? s.length : k + 1;
-        }
+        if (s[i] === '[') skipOptional();
         return display ? '\n' : ' ';
       }
       return SYMBOL[c] ?? c;
@@ -94,11 +105,7 @@ export function texPreview(tex: string, display = false): string {
       return `${wrap(a)}/${wrap(b)}`;
     }
     if (name === 'sqrt') {
-      while (s[i] === ' ') i++;
-      if (s[i] === '[') {
-        const k = s.indexOf(']', i);
-        i = k < 0 ? s.length : k + 1;
-      }
+      skipOptional();
       return `√${wrap(argument())}`;
     }
     if (name === 'begin' || name === 'end') {
@@ -107,34 +114,19 @@ export function texPreview(tex: string, display = false): string {
       if (name === 'begin' && s[i] === '{') argument(); // a column spec ({array}{cc})
       return '';
     }
-    if (name === 'color' || name === 'htmlClass' || name === 'htmlId') {
-      argument(); // the colour or name; the next group is read as usual
-      return '';
-    }
-    if (name === 'colorbox' || name === 'fcolorbox') {
-      argument(); // the colour(s); the box's text is read as usual
-      if (name === 'fcolorbox') argument();
-      return '';
-    }
-    if (name === 'phantom' || name === 'hphantom' || name === 'vphantom' || name === 'label' || name === 'tag') {
-      argument();
-      return '';
+    if (name in SKIP_ARGS) {
+      // (the text that follows, a colour box's for one, is read as usual)
+      const [count, reads] = SKIP_ARGS[name]!;
+      for (let a = 0; a < count; a++) argument();
+      return reads;
     }
     if (name === 'xrightarrow' || name === 'xleftarrow') {
-      while (s[i] === ' ') i++;
-      if (s[i] === '[') {
-        const k = s.indexOf(']', i);
-        i = k < 0 ? s.length : k + 1;
-      }
+      skipOptional();
       const over = argument().trim();
       const arrow = name === 'xrightarrow' ? '→' : '←';
       return over ? ` ${arrow}(${over}) ` : ` ${arrow} `;
     }
     if (name === 'newline' || name === 'linebreak') return display ? '\n' : ' ';
-    if (name === 'hspace' || name === 'vspace' || name === 'kern' || name === 'mkern' || name === 'mskip' || name === 'hskip') {
-      argument();
-      return ' ';
-    }
     if (NAMED_OPERATORS.has(name)) return ` ${name} `;
     if (name in ACCENT) {
       const a = argument();
@@ -167,10 +159,8 @@ export function texPreview(tex: string, display = false): string {
         i++;
         const arg = argument();
         out += script(arg, c === '^' ? SUP : SUB, c);
-      } else if (c === '&') {
-        i++;
-        out += ' ';
-      } else if (c === '~') {
+      } else if (c === '&' || c === '~') {
+        // a column break, a tie
         i++;
         out += ' ';
       } else {

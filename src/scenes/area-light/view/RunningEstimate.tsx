@@ -77,8 +77,8 @@ export function geometry(run: SampleRun, reference: number): Geometry {
     pen = true;
     const s = run.stderr[i]!;
     if (i >= 1 && Number.isFinite(s) && Number.isFinite(m + 2 * s) && Number.isFinite(m - 2 * s)) {
-      upper += `${upper ? 'L' : 'M'}${x},${yOf(run.mean[i]! + 2 * s).toFixed(1)}`;
-      lower = `L${x},${yOf(run.mean[i]! - 2 * s).toFixed(1)}` + lower;
+      upper += `${upper ? 'L' : 'M'}${x},${yOf(m + 2 * s).toFixed(1)}`;
+      lower = `L${x},${yOf(m - 2 * s).toFixed(1)}` + lower;
     }
   }
   const band = upper ? `${upper}${lower}Z` : '';
