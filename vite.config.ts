@@ -11,7 +11,8 @@ import { lateManifestLink, routePreload } from './scripts/routePreload';
  * so they run from file:// too.
  */
 function inlineWorkers(): Plugin {
-  const re = /new Worker\(\s*new URL\(\s*(['"])([^'"]+)\1\s*,\s*import\.meta\.url\s*\)\s*(?:,\s*\{[^{}]*\}\s*)?\)/g;
+  const re =
+    /new Worker\(\s*new URL\(\s*(['"])([^'"]+)\1\s*,\s*import\.meta\.url\s*\)\s*(?:,\s*\{[^{}]*\}\s*)?\)/g;
   return {
     name: 'rml:inline-workers',
     enforce: 'pre',
@@ -58,7 +59,8 @@ export default defineConfig(({ mode }) => {
             manifest: {
               name: 'Render Math Lab',
               short_name: 'Math Lab',
-              description: 'Interactive explorables for the mathematics of rendering, computed live in the browser.',
+              description:
+                'Interactive explorables for the mathematics of rendering, computed live in the browser.',
               start_url: './',
               scope: './',
               display: 'standalone',
@@ -98,7 +100,9 @@ export default defineConfig(({ mode }) => {
               // Each scene's lazy chunk is named after it (scene-texture-*.js, …); naming only, so the
               // default splitting (shared modules in shared chunks) is untouched.
               chunkFileNames: (chunk: { facadeModuleId?: string | null }) => {
-                const m = /[\\/]src[\\/]scenes[\\/]([a-z0-9-]+)[\\/]index\.ts$/.exec(chunk.facadeModuleId ?? '');
+                const m = /[\\/]src[\\/]scenes[\\/]([a-z0-9-]+)[\\/]index\.ts$/.exec(
+                  chunk.facadeModuleId ?? '',
+                );
                 return m ? `assets/scene-${m[1]}-[hash].js` : 'assets/[name]-[hash].js';
               },
               codeSplitting: {
@@ -116,7 +120,9 @@ export default defineConfig(({ mode }) => {
     // single: each inlined worker is one self-contained classic script (its lazy imports folded in):
     // a page opened from file:// has an opaque origin, and Chromium refuses module workers from its
     // Blob URLs, but runs classic ones.
-    worker: single ? { format: 'iife' as const, rolldownOptions: { output: { codeSplitting: false } } } : { format: 'es' as const },
+    worker: single
+      ? { format: 'iife' as const, rolldownOptions: { output: { codeSplitting: false } } }
+      : { format: 'es' as const },
     publicDir: single ? false : 'public',
     server: { host: '127.0.0.1' },
   };

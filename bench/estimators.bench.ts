@@ -55,13 +55,13 @@ describe(`running statistics, ${N} samples per iteration`, () => {
   });
   bench('Welford.add per value', () => {
     const w = new Welford();
-    for (let i = 0; i < N; i++) w.add(terms[i]!);
+    for (let i = 0; i < N; i++) w.add(terms[i]);
     sink += w.mean;
   });
   bench('ConvergenceSeries.push (10 checkpoints per decade)', () => {
     const s = new ConvergenceSeries(cps, 0.5);
     s.push(terms);
-    sink += s.estimate[0]!;
+    sink += s.estimate[0];
   });
 });
 

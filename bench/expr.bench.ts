@@ -13,8 +13,8 @@ const SRC = '2/(e^(2 pi) - 1) * cos(theta) * e^phi';
 const N = 100000;
 const u = new Rng(3).fill(new Float64Array(2 * N));
 for (let i = 0; i < N; i++) {
-  u[2 * i] = u[2 * i]! * (Math.PI / 2);
-  u[2 * i + 1] = u[2 * i + 1]! * 2 * Math.PI;
+  u[2 * i] = u[2 * i] * (Math.PI / 2);
+  u[2 * i + 1] = u[2 * i + 1] * 2 * Math.PI;
 }
 const compiled = await compileExpression(SRC, ['theta', 'phi']);
 if (!compiled.ok) throw new Error(compiled.message);
@@ -28,20 +28,20 @@ let sink = 0;
 describe(`expression evaluation, ${N} evaluations per iteration`, () => {
   bench('compileExpression closure tree', () => {
     let s = 0;
-    for (let i = 0; i < N; i++) s += fn(u[2 * i]!, u[2 * i + 1]!);
+    for (let i = 0; i < N; i++) s += fn(u[2 * i], u[2 * i + 1]);
     sink += s;
   });
   bench('hand-written JS (ceiling)', () => {
     let s = 0;
-    for (let i = 0; i < N; i++) s += native(u[2 * i]!, u[2 * i + 1]!);
+    for (let i = 0; i < N; i++) s += native(u[2 * i], u[2 * i + 1]);
     sink += s;
   });
   bench('mathjs compile().evaluate(scope) per sample', () => {
     let s = 0;
     const scope = { theta: 0, phi: 0 };
     for (let i = 0; i < N; i++) {
-      scope.theta = u[2 * i]!;
-      scope.phi = u[2 * i + 1]!;
+      scope.theta = u[2 * i];
+      scope.phi = u[2 * i + 1];
       s += mj.evaluate(scope) as number;
     }
     sink += s;

@@ -31,8 +31,10 @@ describe(`area-light estimator kernels, ${N} samples per iteration`, () => {
       const q = makeSphericalRect(light, 0, 0, 0);
       const pt = { x: 0, y: 0, z: 0 };
       const out = [0, 0, 0];
-      sampleSphericalRectangle(q, u[2 * i]!, u[2 * i + 1]!, out);
-      pt.x = out[0]!; pt.y = out[1]!; pt.z = out[2]!;
+      sampleSphericalRectangle(q, u[2 * i], u[2 * i + 1], out);
+      pt.x = out[0];
+      pt.y = out[1];
+      pt.z = out[2];
       s += pt.z / Math.hypot(pt.x, pt.y, pt.z);
     }
     terms[0] = s;

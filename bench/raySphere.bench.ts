@@ -10,7 +10,7 @@ import { intersectRaySphere, intersectRaySphereBatch, RAY_STRIDE, type Vec3 } fr
 
 const N = 1_000_000;
 const rays = new Rng(5).fill(new Float64Array(N * RAY_STRIDE));
-for (let k = 0; k < rays.length; k++) rays[k] = 8 * rays[k]! - 4; // origins and directions in [−4, 4)³
+for (let k = 0; k < rays.length; k++) rays[k] = 8 * rays[k] - 4; // origins and directions in [−4, 4)³
 const out = new Float64Array(N);
 const C: Vec3 = [0.25, -0.5, 0.125];
 const R = 1.5;
@@ -24,7 +24,13 @@ describe(`ray–sphere, ${N} rays per iteration`, () => {
   });
   bench('per-object intersectRaySphere (robust, object per ray)', () => {
     for (let i = 0, j = 0; i < N; i++, j += RAY_STRIDE) {
-      const res = intersectRaySphere([rays[j]!, rays[j + 1]!, rays[j + 2]!], [rays[j + 3]!, rays[j + 4]!, rays[j + 5]!], C, R, 'stable');
+      const res = intersectRaySphere(
+        [rays[j], rays[j + 1], rays[j + 2]],
+        [rays[j + 3], rays[j + 4], rays[j + 5]],
+        C,
+        R,
+        'stable',
+      );
       out[i] = res.ok && res.tHit !== null ? res.tHit : Infinity;
     }
   });

@@ -47,7 +47,7 @@ const ESTIMATORS: Estimator[] = [
     run: (u, n) => {
       let s = 0;
       for (let i = 0; i < n; i++) {
-        const x = 2 * u[i]!;
+        const x = 2 * u[i];
         s += (x + 2) * (x + 2);
       }
       return (2 * s) / n;
@@ -62,7 +62,7 @@ const ESTIMATORS: Estimator[] = [
       // p(x) = (x + 1)/4 on [0, 2]; CDF (x² + 2x)/8 = ξ → x = −1 + √(1 + 8ξ)
       let s = 0;
       for (let i = 0; i < n; i++) {
-        const x = -1 + Math.sqrt(1 + 8 * u[i]!);
+        const x = -1 + Math.sqrt(1 + 8 * u[i]);
         s += ((x + 2) * (x + 2) * 4) / (x + 1);
       }
       return s / n;
@@ -76,7 +76,7 @@ const ESTIMATORS: Estimator[] = [
     run: (u, n, w) => {
       sampleUniformHemisphereBatch(u, w, n);
       let s = 0;
-      for (let i = 0; i < n; i++) s += w[3 * i + 2]!;
+      for (let i = 0; i < n; i++) s += w[3 * i + 2];
       return (2 * Math.PI * s) / n;
     },
   },
@@ -89,8 +89,8 @@ const ESTIMATORS: Estimator[] = [
       sampleExamLobeBatch(u, w, n);
       let s = 0;
       for (let i = 0; i < n; i++) {
-        const z = w[3 * i + 2]!;
-        const p = examLobePdf(w[3 * i]!, w[3 * i + 1]!, z);
+        const z = w[3 * i + 2];
+        const p = examLobePdf(w[3 * i], w[3 * i + 1], z);
         if (p > 0) s += z / p;
       }
       return s / n;
@@ -106,8 +106,8 @@ function fitSlope(ns: number[], errs: number[]): number {
   let sxy = 0;
   let sxx = 0;
   for (let i = 0; i < xs.length; i++) {
-    sxy += (xs[i]! - mx) * (ys[i]! - my);
-    sxx += (xs[i]! - mx) ** 2;
+    sxy += (xs[i] - mx) * (ys[i] - my);
+    sxx += (xs[i] - mx) ** 2;
   }
   return sxy / sxx;
 }
@@ -123,10 +123,9 @@ function timeBest(fn: () => void, reps: number): number {
 }
 
 export function main(opts: { quick?: boolean } = {}): RuntimeErrorResult {
-
   const ns = opts.quick ? [16, 64, 256, 1024] : [16, 64, 256, 1024, 4096, 16384];
   const runs = opts.quick ? 32 : 100;
-  const maxN = ns[ns.length - 1]!;
+  const maxN = ns[ns.length - 1];
   const u = new Float64Array(2 * maxN);
   const scratch = new Float64Array(3 * maxN);
   const rows: ErrorRow[] = [];
@@ -173,11 +172,15 @@ export function timeExamLobe(n: number, reps: number): { batched: KernelTiming; 
   const naive = () => {
     const res: { x: number; y: number; z: number }[] = [];
     for (let i = 0; i < n; i++) {
-      const theta = 0.5 * Math.acos(1 - 2 * uu[2 * i]!);
-      const phi = Math.log(C_EXAM * uu[2 * i + 1]! + 1);
-      res.push({ x: Math.sin(theta) * Math.cos(phi), y: Math.sin(theta) * Math.sin(phi), z: Math.cos(theta) });
+      const theta = 0.5 * Math.acos(1 - 2 * uu[2 * i]);
+      const phi = Math.log(C_EXAM * uu[2 * i + 1] + 1);
+      res.push({
+        x: Math.sin(theta) * Math.cos(phi),
+        y: Math.sin(theta) * Math.sin(phi),
+        z: Math.cos(theta),
+      });
     }
-    sink += res[n - 1]!.z * K_EXAM;
+    sink += res[n - 1].z * K_EXAM;
   };
   const naiveReps = Math.max(2, reps >> 1);
   const bestNaive = timeBest(naive, naiveReps);

@@ -100,7 +100,9 @@ function cBaseline(): void {
     writeFileSync(join(dir, 'k.c'), C_SOURCE);
     writeFileSync(join(dir, 'u.bin'), new Uint8Array(u.buffer, u.byteOffset, u.byteLength));
     execFileSync('gcc', ['-O2', '-o', join(dir, 'k'), join(dir, 'k.c'), '-lm']);
-    const cMs = Number(execFileSync(join(dir, 'k'), [join(dir, 'u.bin'), String(N)], { encoding: 'utf8' }).split(' ')[0]);
+    const cMs = Number(
+      execFileSync(join(dir, 'k'), [join(dir, 'u.bin'), String(N)], { encoding: 'utf8' }).split(' ')[0],
+    );
     let jsMs = Infinity;
     for (let r = 0; r < 7; r++) {
       const t0 = performance.now();
@@ -112,7 +114,9 @@ function cBaseline(): void {
         `C gcc -O2 ${cMs.toFixed(2)} ms (${((N / cMs) * 1e3).toExponential(3)}/s): JS/C = ${(jsMs / cMs).toFixed(2)}×`,
     );
   } catch (e) {
-    console.log(`[sampling bench] C baseline failed to build or run: ${e instanceof Error ? e.message : String(e)}`);
+    console.log(
+      `[sampling bench] C baseline failed to build or run: ${e instanceof Error ? e.message : String(e)}`,
+    );
   }
 }
 cBaseline();

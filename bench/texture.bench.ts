@@ -6,7 +6,13 @@
  */
 import { bench, describe } from 'vitest';
 import { Rng } from '../src/core/random';
-import { bilinearStencil, randomGrid, reconstructInto, sphericalUV, type LookupOptions } from '../src/core/texture';
+import {
+  bilinearStencil,
+  randomGrid,
+  reconstructInto,
+  sphericalUV,
+  type LookupOptions,
+} from '../src/core/texture';
 
 const W = 256;
 const grid = randomGrid(64, 64, 1);
@@ -25,7 +31,9 @@ describe(`texture reconstruction, 64 × 64 grid, ${W * W} points per iteration`,
     reconstructInto(grid, corner, 'nearest', W, W, out);
   });
   bench('bilinear via bilinearStencil (object per lookup)', () => {
-    for (let py = 0; py < W; py++) for (let px = 0; px < W; px++) out[py * W + px] = bilinearStencil(grid, (px + 0.5) / W, 1 - (py + 0.5) / W, corner).value;
+    for (let py = 0; py < W; py++)
+      for (let px = 0; px < W; px++)
+        out[py * W + px] = bilinearStencil(grid, (px + 0.5) / W, 1 - (py + 0.5) / W, corner).value;
   });
 });
 

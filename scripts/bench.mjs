@@ -43,7 +43,8 @@ function log(...a) {
   console.log(...a);
 }
 
-const PER_ITER = /(\d[\d_.,]*(?:e[+-]?\d+)?)\s*(?:samples|points|rays|estimates|lookups|evaluations)\s+per\s+iteration/i;
+const PER_ITER =
+  /(\d[\d_.,]*(?:e[+-]?\d+)?)\s*(?:samples|points|rays|estimates|lookups|evaluations)\s+per\s+iteration/i;
 function perIteration(text) {
   const m = PER_ITER.exec(text);
   if (!m) return null;
@@ -59,11 +60,15 @@ try {
     const benchFiles = readdirSync(join(root, 'bench')).filter((f) => /\.bench\.ts$/.test(f));
     const jsonPath = join(tmp, 'vitest-bench.json');
     log(`▶ vitest bench over ${benchFiles.length} file(s): ${benchFiles.join(', ')}`);
-    const r = spawnSync('npx', ['vitest', 'bench', '--run', '--outputJson', jsonPath, ...benchFiles.map((f) => `bench/${f}`)], {
-      cwd: root,
-      stdio: ['ignore', 'inherit', 'inherit'],
-      env: { ...process.env, FORCE_COLOR: '0' },
-    });
+    const r = spawnSync(
+      'npx',
+      ['vitest', 'bench', '--run', '--outputJson', jsonPath, ...benchFiles.map((f) => `bench/${f}`)],
+      {
+        cwd: root,
+        stdio: ['ignore', 'inherit', 'inherit'],
+        env: { ...process.env, FORCE_COLOR: '0' },
+      },
+    );
     if (!existsSync(jsonPath)) {
       results.notes.push(`vitest bench did not write a report (exit ${r.status})`);
     } else {
@@ -86,7 +91,8 @@ try {
           }
         }
       }
-      if (r.status !== 0) results.notes.push(`vitest bench exited with status ${r.status}; partial results kept`);
+      if (r.status !== 0)
+        results.notes.push(`vitest bench exited with status ${r.status}; partial results kept`);
     }
   }
 } catch (e) {
@@ -130,7 +136,9 @@ try {
     results.notes.push('gcc not found: C baseline skipped');
   } else {
     exe = join(tmp, 'exam_lobe');
-    const cc = spawnSync('gcc', ['-O2', '-o', exe, join(root, 'bench/c/exam_lobe.c'), '-lm'], { encoding: 'utf8' });
+    const cc = spawnSync('gcc', ['-O2', '-o', exe, join(root, 'bench/c/exam_lobe.c'), '-lm'], {
+      encoding: 'utf8',
+    });
     compiler = gcc.stdout.split('\n')[0];
     if (cc.status !== 0) {
       results.notes.push(`gcc failed, C baseline skipped: ${cc.stderr.trim().slice(0, 500)}`);
@@ -181,17 +189,31 @@ results.machine.loadAverageAtEnd = loadavg().map((x) => +x.toFixed(2));
 writeFileSync(join(root, 'bench/results.json'), JSON.stringify(results, null, 2) + '\n');
 
 // ---------------------------------------------------------------- summary
-const fmt = (x) => (x == null ? '—' : x >= 1e6 ? `${(x / 1e6).toFixed(2)} M` : x >= 1e3 ? `${(x / 1e3).toFixed(1)} k` : x.toFixed(2));
+const fmt = (x) =>
+  x == null
+    ? '—'
+    : x >= 1e6
+      ? `${(x / 1e6).toFixed(2)} M`
+      : x >= 1e3
+        ? `${(x / 1e3).toFixed(1)} k`
+        : x.toFixed(2);
 log('\n== samples per second (vitest bench) ==');
-for (const r of results.vitest) log(`${fmt(r.samplesPerSecond ?? r.iterationsPerSecond).padStart(10)}/s  ${r.samplesPerSecond ? '' : '(iterations) '}${r.group} › ${r.name}`);
+for (const r of results.vitest)
+  log(
+    `${fmt(r.samplesPerSecond ?? r.iterationsPerSecond).padStart(10)}/s  ${r.samplesPerSecond ? '' : '(iterations) '}${r.group} › ${r.name}`,
+  );
 if (results.examLobe) {
   const e = results.examLobe;
   log('\n== exam-lobe kernel (bundled JS vs gcc -O2) ==');
-  log(`JS batched ${fmt(e.js?.samplesPerSecond)}/s · JS naive ${fmt(e.jsNaive?.samplesPerSecond)}/s · C ${fmt(e.c?.samplesPerSecond)}/s` + (e.cOverJs ? ` · C/JS = ${e.cOverJs.toFixed(2)} (goal ≤ 1.3)` : ''));
+  log(
+    `JS batched ${fmt(e.js?.samplesPerSecond)}/s · JS naive ${fmt(e.jsNaive?.samplesPerSecond)}/s · C ${fmt(e.c?.samplesPerSecond)}/s` +
+      (e.cOverJs ? ` · C/JS = ${e.cOverJs.toFixed(2)} (goal ≤ 1.3)` : ''),
+  );
 }
 if (results.runtimeVsError) {
   log('\n== RMSE slope against N (log–log; −0.5 = plain Monte Carlo) ==');
-  for (const s of results.runtimeVsError.slopes) log(`${s.slope.toFixed(2).padStart(6)}  ${s.problem} · ${s.estimator} · ${s.sequence}`);
+  for (const s of results.runtimeVsError.slopes)
+    log(`${s.slope.toFixed(2).padStart(6)}  ${s.problem} · ${s.estimator} · ${s.sequence}`);
 }
 for (const n of results.notes) log(`note: ${n}`);
 log(`\nwrote bench/results.json`);

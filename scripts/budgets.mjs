@@ -20,7 +20,9 @@ const kB = (n) => (n / 1000).toFixed(1);
 const gz = (file) => gzipSync(readFileSync(join(dist, file)), { level: 9 }).length;
 
 const html = readFileSync(join(dist, 'index.html'), 'utf8');
-const roots = [...html.matchAll(/<(?:script|link)[^>]+(?:src|href)="\.?\/?(assets\/[^"]+\.(?:js|css))"/g)].map((m) => m[1]);
+const roots = [
+  ...html.matchAll(/<(?:script|link)[^>]+(?:src|href)="\.?\/?(assets\/[^"]+\.(?:js|css))"/g),
+].map((m) => m[1]);
 
 // Follow static imports (not dynamic import()) from the entry scripts.
 const entryFiles = new Set();
@@ -54,11 +56,13 @@ for (const f of entryFiles) {
   if (/vendor-(three|plotly|mathjs|katex)/.test(f)) failures.push(`the entry pulls in ${f}`);
   if (f.endsWith('.js')) {
     const src = readFileSync(join(dist, f), 'utf8');
-    for (const [lib, re] of SIGNATURES) if (re.test(src)) failures.push(`the entry chunk ${f} contains ${lib}`);
+    for (const [lib, re] of SIGNATURES)
+      if (re.test(src)) failures.push(`the entry chunk ${f} contains ${lib}`);
   }
 }
 const ENTRY_LIMIT = 90_000;
-if (entryTotal > ENTRY_LIMIT) failures.push(`entry is ${kB(entryTotal)} kB gzipped, over ${kB(ENTRY_LIMIT)} kB`);
+if (entryTotal > ENTRY_LIMIT)
+  failures.push(`entry is ${kB(entryTotal)} kB gzipped, over ${kB(ENTRY_LIMIT)} kB`);
 
 const LIMITS = [
   [/^vendor-plotly-/, 520_000],
@@ -88,12 +92,16 @@ if (existsSync(singleFile)) {
   const raw = readFileSync(singleFile);
   const g = gzipSync(raw, { level: 9 }).length;
   singleLine = `single file  ${kB(g).padStart(8)} kB  ${singleFile} (${(raw.length / 1e6).toFixed(2)} MB uncompressed; ≤ ${kB(SINGLE_LIMIT)} kB gzipped)`;
-  if (g > SINGLE_LIMIT) failures.push(`${singleFile} is ${kB(g)} kB gzipped, over its ${kB(SINGLE_LIMIT)} kB budget`);
+  if (g > SINGLE_LIMIT)
+    failures.push(`${singleFile} is ${kB(g)} kB gzipped, over its ${kB(SINGLE_LIMIT)} kB budget`);
 }
 
 rows.sort((a, b) => (a[0] === b[0] ? b[2] - a[2] : a[0] < b[0] ? -1 : 1));
-for (const [kind, f, s, lim] of rows) console.log(`${kind.padEnd(14)} ${kB(s).padStart(8)} kB  ${f}${lim ? `  (≤ ${kB(lim)} kB)` : ''}`);
-console.log(`entry total    ${kB(entryTotal).padStart(8)} kB  (≤ ${kB(ENTRY_LIMIT)} kB; no three.js, Plotly, mathjs or KaTeX)`);
+for (const [kind, f, s, lim] of rows)
+  console.log(`${kind.padEnd(14)} ${kB(s).padStart(8)} kB  ${f}${lim ? `  (≤ ${kB(lim)} kB)` : ''}`);
+console.log(
+  `entry total    ${kB(entryTotal).padStart(8)} kB  (≤ ${kB(ENTRY_LIMIT)} kB; no three.js, Plotly, mathjs or KaTeX)`,
+);
 console.log(singleLine);
 if (failures.length) {
   console.error(`\nbudgets: FAILED\n  ${failures.join('\n  ')}`);

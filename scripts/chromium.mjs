@@ -13,10 +13,18 @@ export const CHROMIUM_ARGS = [
 ];
 
 export function findChromium() {
-  const candidates = [process.env.CHROMIUM_PATH, '/usr/bin/chromium', '/usr/bin/chromium-browser', '/usr/bin/google-chrome'];
+  const candidates = [
+    process.env.CHROMIUM_PATH,
+    '/usr/bin/chromium',
+    '/usr/bin/chromium-browser',
+    '/usr/bin/google-chrome',
+  ];
   for (const c of candidates) if (c && existsSync(c)) return c;
   try {
-    const p = execSync('command -v chromium || command -v chromium-browser || command -v google-chrome', { encoding: 'utf8', shell: '/bin/sh' }).trim();
+    const p = execSync('command -v chromium || command -v chromium-browser || command -v google-chrome', {
+      encoding: 'utf8',
+      shell: '/bin/sh',
+    }).trim();
     if (p) return p;
   } catch {
     /* none on PATH */

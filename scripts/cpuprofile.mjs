@@ -16,7 +16,9 @@ export function takeOpt(args, name, def) {
 
 /** Serve `dist` under /app/ on 127.0.0.1:port (scripts/serve.mjs); resolves once it listens. */
 export async function serveDist(dist, port) {
-  const server = spawn(process.execPath, ['scripts/serve.mjs', dist, String(port)], { stdio: ['ignore', 'pipe', 'inherit'] });
+  const server = spawn(process.execPath, ['scripts/serve.mjs', dist, String(port)], {
+    stdio: ['ignore', 'pipe', 'inherit'],
+  });
   await new Promise((r) => server.stdout.once('data', r));
   return server;
 }
@@ -54,7 +56,8 @@ export function inclusive(ix, samples) {
 const print = (title, map, n) => {
   if (n <= 0) return;
   console.log(title);
-  for (const [k, v] of [...map].sort((a, b) => b[1] - a[1]).slice(0, n)) console.log(`${v.toFixed(0).padStart(7)} ms  ${k}`);
+  for (const [k, v] of [...map].sort((a, b) => b[1] - a[1]).slice(0, n))
+    console.log(`${v.toFixed(0).padStart(7)} ms  ${k}`);
 };
 
 /** Print busy time by script, by function (self) and, if `withInclusive`, inclusive; returns the busy ms. */
@@ -77,7 +80,15 @@ export function summarize(profile, { top = 25, withInclusive = false } = {}) {
     print() {
       print('-- by script', byUrl, 12);
       print('-- by function (self)', byFn, top);
-      if (withInclusive) print('-- inclusive (app scripts)', inclusive(ix, ix.samples.filter(([id]) => !isIdle(ix.nodes.get(id).callFrame))), top);
+      if (withInclusive)
+        print(
+          '-- inclusive (app scripts)',
+          inclusive(
+            ix,
+            ix.samples.filter(([id]) => !isIdle(ix.nodes.get(id).callFrame)),
+          ),
+          top,
+        );
     },
   };
 }
@@ -85,4 +96,10 @@ export function summarize(profile, { top = 25, withInclusive = false } = {}) {
 export { print as printTop };
 
 /** The phone the load diagnostics emulate (Lighthouse's mobile screen; no service worker). */
-export const PHONE_CONTEXT = { viewport: { width: 412, height: 823 }, deviceScaleFactor: 1.75, isMobile: true, hasTouch: true, serviceWorkers: 'block' };
+export const PHONE_CONTEXT = {
+  viewport: { width: 412, height: 823 },
+  deviceScaleFactor: 1.75,
+  isMobile: true,
+  hasTouch: true,
+  serviceWorkers: 'block',
+};

@@ -52,7 +52,19 @@ if (!exe) {
 }
 
 /** Script-like trace events on the main thread (top-level ones are summed; nested ones are inside them). */
-const SCRIPT = new Set(['FunctionCall', 'EvaluateScript', 'TimerFire', 'FireAnimationFrame', 'EventDispatch', 'RunMicrotasks', 'v8.compile', 'FireIdleCallback', 'XHRReadyStateChange', 'v8.callFunction', 'v8.evaluateModule']);
+const SCRIPT = new Set([
+  'FunctionCall',
+  'EvaluateScript',
+  'TimerFire',
+  'FireAnimationFrame',
+  'EventDispatch',
+  'RunMicrotasks',
+  'v8.compile',
+  'FireIdleCallback',
+  'XHRReadyStateChange',
+  'v8.callFunction',
+  'v8.evaluateModule',
+]);
 
 function quantile(sorted, q) {
   if (!sorted.length) return NaN;
@@ -74,13 +86,17 @@ async function readTrace(cdp) {
 function analyse(events) {
   // the renderer's main thread: the thread named CrRendererMain with the most script events
   const names = new Map();
-  for (const e of events) if (e.ph === 'M' && e.name === 'thread_name' && e.args?.name === 'CrRendererMain') names.set(`${e.pid}:${e.tid}`, 0);
+  for (const e of events)
+    if (e.ph === 'M' && e.name === 'thread_name' && e.args?.name === 'CrRendererMain')
+      names.set(`${e.pid}:${e.tid}`, 0);
   for (const e of events) {
     const k = `${e.pid}:${e.tid}`;
     if (names.has(k) && SCRIPT.has(e.name)) names.set(k, names.get(k) + 1);
   }
   const main = [...names.entries()].sort((a, b) => b[1] - a[1])[0]?.[0];
-  const ev = events.filter((e) => `${e.pid}:${e.tid}` === main && e.ph === 'X' && typeof e.dur === 'number').sort((a, b) => a.ts - b.ts);
+  const ev = events
+    .filter((e) => `${e.pid}:${e.tid}` === main && e.ph === 'X' && typeof e.dur === 'number')
+    .sort((a, b) => a.ts - b.ts);
   // top-level script intervals (skip those nested inside an earlier one)
   const script = [];
   let end = -Infinity;
@@ -114,8 +130,12 @@ function analyse(events) {
           const where = d.functionName || d.url?.split('/').pop() || d.type || d.timerId || '';
           return `${e.name}${where ? `(${where}${d.lineNumber ? `:${d.lineNumber}` : ''})` : ''} ${(e.dur / 1000).toFixed(1)}`;
         });
-      const all = script.slice(j, k).map((e) => `${e.name}@${((e.ts - frames[i]) / 1000).toFixed(1)}+${(e.dur / 1000).toFixed(1)}`);
-      console.log(`  frame ${i}/${frames.length - 1}: ${(sum / 1000).toFixed(1)} ms: ${what.join(', ')}${i + 2 >= frames.length ? ` | all: ${all.join(' ')}` : ''}`);
+      const all = script
+        .slice(j, k)
+        .map((e) => `${e.name}@${((e.ts - frames[i]) / 1000).toFixed(1)}+${(e.dur / 1000).toFixed(1)}`);
+      console.log(
+        `  frame ${i}/${frames.length - 1}: ${(sum / 1000).toFixed(1)} ms: ${what.join(', ')}${i + 2 >= frames.length ? ` | all: ${all.join(' ')}` : ''}`,
+      );
     }
   }
   const intervals = [];
@@ -135,11 +155,18 @@ function analyse(events) {
     frameIntervalMsMedian: quantile(si, 0.5),
     frameIntervalMsP95: quantile(si, 0.95),
     droppedFrames: dropped,
-    ...(process.argv.includes('--frames') ? { perFrameMs: perFrame.map((x) => Math.round(x * 10) / 10), perFrameCpuMs: perFrameCpu.map((x) => Math.round(x * 10) / 10) } : {}),
+    ...(process.argv.includes('--frames')
+      ? {
+          perFrameMs: perFrame.map((x) => Math.round(x * 10) / 10),
+          perFrameCpuMs: perFrameCpu.map((x) => Math.round(x * 10) / 10),
+        }
+      : {}),
   };
 }
 
-const server = spawn(process.execPath, ['scripts/serve.mjs', dist, String(port)], { stdio: ['ignore', 'pipe', 'inherit'] });
+const server = spawn(process.execPath, ['scripts/serve.mjs', dist, String(port)], {
+  stdio: ['ignore', 'pipe', 'inherit'],
+});
 await new Promise((r) => server.stdout.once('data', r));
 const browser = await chromium.launch({ executablePath: exe, args: CHROMIUM_ARGS });
 const results = [];
@@ -189,11 +216,15 @@ try {
     // loop, so the animation keeps playing for the whole recording
     const loop = tl.getByRole('checkbox', { name: /loop/i });
     if (!(await loop.isChecked())) await loop.check();
-    if ((await tl.getAttribute('data-playing')) !== '1') await page.getByTestId('timeline-play').first().click();
+    if ((await tl.getAttribute('data-playing')) !== '1')
+      await page.getByTestId('timeline-play').first().click();
     const cdp = await context.newCDPSession(page);
     await cdp.send('Emulation.setCPUThrottlingRate', { rate });
     await page.waitForTimeout(1000); // settle at the throttled rate
-    await cdp.send('Tracing.start', { categories: 'devtools.timeline,v8.execute,disabled-by-default-devtools.timeline', transferMode: 'ReportEvents' });
+    await cdp.send('Tracing.start', {
+      categories: 'devtools.timeline,v8.execute,disabled-by-default-devtools.timeline',
+      transferMode: 'ReportEvents',
+    });
     await page.waitForTimeout(seconds * 1000);
     const events = await readTrace(cdp);
     await cdp.send('Emulation.setCPUThrottlingRate', { rate: 1 });
@@ -206,14 +237,28 @@ try {
   server.kill();
 }
 
-const out = { date: new Date().toISOString(), cpuThrottling: rate, seconds, machine: { cpus: cpus().length, loadavg: loadavg() }, goal: 'p95 script per frame ≤ 8 ms at 4× throttling', results };
+const out = {
+  date: new Date().toISOString(),
+  cpuThrottling: rate,
+  seconds,
+  machine: { cpus: cpus().length, loadavg: loadavg() },
+  goal: 'p95 script per frame ≤ 8 ms at 4× throttling',
+  results,
+};
 mkdirSync('bench', { recursive: true });
 writeFileSync('bench/anim-perf.json', `${JSON.stringify(out, null, 2)}\n`);
 const f = (x) => (typeof x === 'number' && Number.isFinite(x) ? x.toFixed(2) : '—');
-console.log(`animation at ${rate}× CPU throttling, ${seconds} s each (load ${loadavg().map((x) => x.toFixed(2)).join(' ')})`);
+console.log(
+  `animation at ${rate}× CPU throttling, ${seconds} s each (load ${loadavg()
+    .map((x) => x.toFixed(2))
+    .join(' ')})`,
+);
 console.log('route           frames  script/frame median  p95     cpu p95  interval p95  dropped');
 for (const r of results) {
   if (r.error) console.log(`${r.route.padEnd(16)}${r.error}`);
-  else console.log(`${r.route.padEnd(16)}${String(r.frames).padStart(6)}  ${f(r.scriptMsMedian).padStart(19)}  ${f(r.scriptMsP95).padStart(6)}  ${f(r.scriptCpuMsP95).padStart(7)}  ${f(r.frameIntervalMsP95).padStart(12)}  ${String(r.droppedFrames).padStart(7)}`);
+  else
+    console.log(
+      `${r.route.padEnd(16)}${String(r.frames).padStart(6)}  ${f(r.scriptMsMedian).padStart(19)}  ${f(r.scriptMsP95).padStart(6)}  ${f(r.scriptCpuMsP95).padStart(7)}  ${f(r.frameIntervalMsP95).padStart(12)}  ${String(r.droppedFrames).padStart(7)}`,
+    );
 }
 console.log('wrote bench/anim-perf.json');

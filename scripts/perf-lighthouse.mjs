@@ -33,7 +33,16 @@ import { CHROMIUM_ARGS, findChromium, NO_CHROMIUM_HELP } from './chromium.mjs';
  * The routes measured by default. Add new pages here (practice and guide routes, …); each entry is
  * the hash Lighthouse opens (query parameters allowed: '#/texture?u=0.4').
  */
-const ROUTES = ['#/', '#/hemisphere', '#/monte-carlo', '#/texture', '#/ray-sphere', '#/area-light', '#/practice', '#/guide'];
+const ROUTES = [
+  '#/',
+  '#/hemisphere',
+  '#/monte-carlo',
+  '#/texture',
+  '#/ray-sphere',
+  '#/area-light',
+  '#/practice',
+  '#/guide',
+];
 
 const args = process.argv.slice(2);
 const opt = (name, def) => {
@@ -75,7 +84,8 @@ if (!exe) {
 try {
   const reg = readFileSync('src/scenes/registry.ts', 'utf8');
   for (const m of reg.matchAll(/\bpath:\s*'(\/[a-z0-9-]+)'/g)) {
-    if (!ROUTES.includes(`#${m[1]}`)) console.warn(`perf: note: the scene route #${m[1]} is not in ROUTES (scripts/perf-lighthouse.mjs)`);
+    if (!ROUTES.includes(`#${m[1]}`))
+      console.warn(`perf: note: the scene route #${m[1]} is not in ROUTES (scripts/perf-lighthouse.mjs)`);
   }
 } catch {
   /* no registry: nothing to check */
@@ -92,12 +102,16 @@ const load = () => loadavg().map((x) => Math.round(x * 100) / 100);
 
 /** Start the gzip static server (a child process, so Lighthouse's own work does not delay it). */
 async function startServer() {
-  const child = spawn(process.execPath, ['scripts/serve.mjs', dist, String(port), '--gzip'], { stdio: ['ignore', 'pipe', 'pipe'] });
+  const child = spawn(process.execPath, ['scripts/serve.mjs', dist, String(port), '--gzip'], {
+    stdio: ['ignore', 'pipe', 'pipe'],
+  });
   let err = '';
   child.stderr.on('data', (d) => (err += d));
   await new Promise((resolve, reject) => {
     child.stdout.once('data', resolve);
-    child.once('exit', (code) => reject(new Error(`server exited (${code}): ${err.trim()} (is port ${port} in use? pass --port)`)));
+    child.once('exit', (code) =>
+      reject(new Error(`server exited (${code}): ${err.trim()} (is port ${port} in use? pass --port)`)),
+    );
   });
   return child;
 }
@@ -105,9 +119,20 @@ async function startServer() {
 /** Launch a headless Chromium with a debugging port; resolves to { port, kill }. */
 async function launchChromium() {
   const profile = mkdtempSync(join(tmpdir(), 'perf-lh-'));
-  const child = spawn(exe, [...CHROMIUM_ARGS, '--headless=new', '--remote-debugging-port=0', `--user-data-dir=${profile}`, '--no-default-browser-check', 'about:blank'], {
-    stdio: ['ignore', 'ignore', 'pipe'],
-  });
+  const child = spawn(
+    exe,
+    [
+      ...CHROMIUM_ARGS,
+      '--headless=new',
+      '--remote-debugging-port=0',
+      `--user-data-dir=${profile}`,
+      '--no-default-browser-check',
+      'about:blank',
+    ],
+    {
+      stdio: ['ignore', 'ignore', 'pipe'],
+    },
+  );
   const debugPort = await new Promise((resolve, reject) => {
     let buf = '';
     const timer = setTimeout(() => reject(new Error(`Chromium did not start in 60 s:\n${buf}`)), 60_000);
@@ -159,7 +184,8 @@ class TraceForNewChromium extends TraceGatherer {
   getArtifact(ctx) {
     const trace = super.getArtifact(ctx);
     for (const e of trace.traceEvents) {
-      if (e.name === 'PipelineReporter' && e.args?.frame_reporter && !e.args.chrome_frame_reporter) e.args.chrome_frame_reporter = e.args.frame_reporter;
+      if (e.name === 'PipelineReporter' && e.args?.frame_reporter && !e.args.chrome_frame_reporter)
+        e.args.chrome_frame_reporter = e.args.frame_reporter;
     }
     return trace;
   }
@@ -167,11 +193,16 @@ class TraceForNewChromium extends TraceGatherer {
 const CONFIG = {
   ...defaultConfig, // the mobile preset
   settings: { ...defaultConfig.settings, onlyCategories: ['performance'] },
-  artifacts: defaultConfig.artifacts.map((a) => (a.id === 'Trace' ? { id: 'Trace', gatherer: { implementation: TraceForNewChromium } } : a)),
+  artifacts: defaultConfig.artifacts.map((a) =>
+    a.id === 'Trace' ? { id: 'Trace', gatherer: { implementation: TraceForNewChromium } } : a,
+  ),
 };
 
 const nodeOf = (item) => item?.node ?? item?.items?.[0]?.node ?? null;
-const describeNode = (n) => (n ? { label: n.nodeLabel ?? null, selector: n.selector ?? null, snippet: (n.snippet ?? '').slice(0, 200) } : null);
+const describeNode = (n) =>
+  n
+    ? { label: n.nodeLabel ?? null, selector: n.selector ?? null, snippet: (n.snippet ?? '').slice(0, 200) }
+    : null;
 
 let traceRun = 0;
 
@@ -186,7 +217,11 @@ async function measure(url) {
     // the observed trace Lighthouse simulated from (for a look at its long tasks' contents)
     // ({run} in the name: one file per run, numbered in order)
     traceRun++;
-    if (process.env.PERF_TRACE && result.artifacts?.Trace) writeFileSync(process.env.PERF_TRACE.replaceAll('{run}', String(traceRun)), JSON.stringify(result.artifacts.Trace));
+    if (process.env.PERF_TRACE && result.artifacts?.Trace)
+      writeFileSync(
+        process.env.PERF_TRACE.replaceAll('{run}', String(traceRun)),
+        JSON.stringify(result.artifacts.Trace),
+      );
     if (lhr.runtimeError) throw new Error(`${lhr.runtimeError.code}: ${lhr.runtimeError.message}`);
     const a = lhr.audits;
     const num = (id) => (typeof a[id]?.numericValue === 'number' ? a[id].numericValue : null);
@@ -198,9 +233,23 @@ async function measure(url) {
       label: describeNode(nodeOf(it))?.label ?? null,
       causes: (it.subItems?.items ?? []).map((c) => c.cause ?? c.extra?.value ?? null).filter(Boolean),
     }));
-    const diagnosticErrors = ['largest-contentful-paint-element', 'layout-shifts', 'long-tasks'].filter((id) => a[id]?.scoreDisplayMode === 'error').map((id) => `${id}: ${a[id].errorMessage}`);
-    const longTasks = (a['long-tasks']?.details?.items ?? []).slice(0, 8).map((t) => ({ url: String(t.url ?? '').replace(/^.*\/assets\//, 'assets/'), startTime: Math.round(t.startTime), duration: Math.round(t.duration) }));
-    const bootup = (a['bootup-time']?.details?.items ?? []).slice(0, 6).map((t) => ({ url: String(t.url ?? '').replace(/^.*\/assets\//, 'assets/'), total: Math.round(t.total), scripting: Math.round(t.scripting) }));
+    const diagnosticErrors = ['largest-contentful-paint-element', 'layout-shifts', 'long-tasks']
+      .filter((id) => a[id]?.scoreDisplayMode === 'error')
+      .map((id) => `${id}: ${a[id].errorMessage}`);
+    const longTasks = (a['long-tasks']?.details?.items ?? [])
+      .slice(0, 8)
+      .map((t) => ({
+        url: String(t.url ?? '').replace(/^.*\/assets\//, 'assets/'),
+        startTime: Math.round(t.startTime),
+        duration: Math.round(t.duration),
+      }));
+    const bootup = (a['bootup-time']?.details?.items ?? [])
+      .slice(0, 6)
+      .map((t) => ({
+        url: String(t.url ?? '').replace(/^.*\/assets\//, 'assets/'),
+        total: Math.round(t.total),
+        scripting: Math.round(t.scripting),
+      }));
     return {
       score: lhr.categories.performance.score,
       fcp: num('first-contentful-paint'),
@@ -230,7 +279,9 @@ async function measure(url) {
 const server = await startServer();
 const base = `http://127.0.0.1:${port}/app/`;
 const loadAtStart = load();
-console.log(`perf: Lighthouse mobile, ${runs} run(s) × ${routes.length} route(s) on ${base}; load average ${loadAtStart.join(', ')} (${cpus().length} CPUs)`);
+console.log(
+  `perf: Lighthouse mobile, ${runs} run(s) × ${routes.length} route(s) on ${base}; load average ${loadAtStart.join(', ')} (${cpus().length} CPUs)`,
+);
 const results = {};
 let meta = {};
 try {
@@ -243,7 +294,9 @@ try {
         const r = await measure(url);
         rs.push(r);
         meta = { lighthouseVersion: r.lighthouseVersion, userAgent: r.userAgent };
-        console.log(`  ${route} run ${i + 1}/${runs}: score ${r.score?.toFixed(2)} TBT ${Math.round(r.tbt)} ms CLS ${r.cls?.toFixed(3)} LCP ${Math.round(r.lcp)} ms (${((Date.now() - t0) / 1000).toFixed(0)} s, load ${load()[0]})`);
+        console.log(
+          `  ${route} run ${i + 1}/${runs}: score ${r.score?.toFixed(2)} TBT ${Math.round(r.tbt)} ms CLS ${r.cls?.toFixed(3)} LCP ${Math.round(r.lcp)} ms (${((Date.now() - t0) / 1000).toFixed(0)} s, load ${load()[0]})`,
+        );
       } catch (e) {
         console.error(`  ${route} run ${i + 1}/${runs} failed: ${e instanceof Error ? e.message : e}`);
       }
@@ -255,7 +308,8 @@ try {
     const last = rs[rs.length - 1];
     const expected = url;
     const wrongUrl = rs.filter((r) => r.finalUrl !== expected).map((r) => r.finalUrl);
-    if (wrongUrl.length) console.warn(`  ${route}: Lighthouse ended on ${wrongUrl.join(', ')} instead of ${expected}`);
+    if (wrongUrl.length)
+      console.warn(`  ${route}: Lighthouse ended on ${wrongUrl.join(', ')} instead of ${expected}`);
     let shot = null;
     if (shots && last.screenshot) {
       mkdirSync(shots, { recursive: true });
@@ -266,8 +320,31 @@ try {
     const med = (k) => median(rs.map((r) => r[k]));
     results[route] = {
       runs: rs.length,
-      median: { score: med('score'), fcp: med('fcp'), lcp: med('lcp'), tbt: med('tbt'), cls: med('cls'), tti: med('tti'), si: med('si'), bytes: med('bytes'), mainThreadMs: med('mainThreadMs') },
-      all: rs.map(({ screenshot, lighthouseVersion, userAgent, layoutShifts, longTasks, bootup, lcpElement, warnings, finalUrl, ...nums }) => nums),
+      median: {
+        score: med('score'),
+        fcp: med('fcp'),
+        lcp: med('lcp'),
+        tbt: med('tbt'),
+        cls: med('cls'),
+        tti: med('tti'),
+        si: med('si'),
+        bytes: med('bytes'),
+        mainThreadMs: med('mainThreadMs'),
+      },
+      all: rs.map(
+        ({
+          screenshot,
+          lighthouseVersion,
+          userAgent,
+          layoutShifts,
+          longTasks,
+          bootup,
+          lcpElement,
+          warnings,
+          finalUrl,
+          ...nums
+        }) => nums,
+      ),
       // evidence of what was measured, from the last run
       finalUrl: last.finalUrl,
       lcpElement: last.lcpElement,
@@ -287,9 +364,23 @@ const report = {
   date: new Date().toISOString(),
   tool: `lighthouse ${meta.lighthouseVersion ?? '?'} (mobile preset: simulated slow 4G, 4× CPU slowdown), gzip, 127.0.0.1`,
   browser: meta.userAgent ?? null,
-  machine: { cpus: cpus().length, cpuModel: cpus()[0]?.model ?? null, loadAverageAtStart: loadAtStart, loadAverageAtEnd: loadAtEnd },
+  machine: {
+    cpus: cpus().length,
+    cpuModel: cpus()[0]?.model ?? null,
+    loadAverageAtStart: loadAtStart,
+    loadAverageAtEnd: loadAtEnd,
+  },
   runsPerRoute: runs,
-  units: { fcp: 'ms', lcp: 'ms', tbt: 'ms', cls: 'unitless', tti: 'ms', si: 'ms', bytes: 'bytes transferred (gzip)', mainThreadMs: 'ms (observed, unthrottled)' },
+  units: {
+    fcp: 'ms',
+    lcp: 'ms',
+    tbt: 'ms',
+    cls: 'unitless',
+    tti: 'ms',
+    si: 'ms',
+    bytes: 'bytes transferred (gzip)',
+    mainThreadMs: 'ms (observed, unthrottled)',
+  },
   routes: results,
 };
 mkdirSync(join(out, '..'), { recursive: true });
@@ -322,4 +413,6 @@ for (const [i, row] of rows.entries()) {
   console.log(`| ${row.map((c, j) => String(c).padEnd(widths[j])).join(' | ')} |`);
   if (i === 0) console.log(`|${widths.map((w) => '-'.repeat(w + 2)).join('|')}|`);
 }
-console.log(`\nload average at start ${loadAtStart.join(', ')}, at end ${loadAtEnd.join(', ')} (${cpus().length} CPUs). Wrote ${out}${shots ? `; final screenshots in ${shots}/` : ''}.`);
+console.log(
+  `\nload average at start ${loadAtStart.join(', ')}, at end ${loadAtEnd.join(', ')} (${cpus().length} CPUs). Wrote ${out}${shots ? `; final screenshots in ${shots}/` : ''}.`,
+);

@@ -32,7 +32,8 @@ try {
     await tl.scrollIntoViewIfNeeded();
     const loop = tl.getByRole('checkbox', { name: /loop/i });
     if (!(await loop.isChecked())) await loop.check();
-    if ((await tl.getAttribute('data-playing')) !== '1') await page.getByTestId('timeline-play').first().click();
+    if ((await tl.getAttribute('data-playing')) !== '1')
+      await page.getByTestId('timeline-play').first().click();
     const cdp = await ctx.newCDPSession(page);
     await cdp.send('Emulation.setCPUThrottlingRate', { rate: 4 });
     await page.waitForTimeout(1000);
@@ -41,7 +42,9 @@ try {
     await cdp.send('Profiler.start');
     await page.waitForTimeout(ms);
     const { profile } = await cdp.send('Profiler.stop');
-    const frames = await page.evaluate(() => document.querySelector('[data-testid=timeline]')?.getAttribute('data-t'));
+    const frames = await page.evaluate(() =>
+      document.querySelector('[data-testid=timeline]')?.getAttribute('data-t'),
+    );
     const sum = summarize(profile, { top, withInclusive: true });
     console.log(`\n== ${route}: busy ${sum.total.toFixed(0)} ms of ${ms} ms (t now ${frames})`);
     sum.print();

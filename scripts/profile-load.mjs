@@ -46,7 +46,9 @@ try {
     const long = await page.evaluate(() => window.__long);
     const s = summarize(profile, { top });
     const sum = (a) => a.reduce((acc, x) => acc + x[1], 0);
-    console.log(`\n== ${route}  (${((Date.now() - t0) / 1000).toFixed(1)} s wall, busy ${s.total.toFixed(0)} ms, long tasks ${long.length}: ${sum(long)} ms, TBT-like ${long.reduce((acc, x) => acc + Math.max(0, x[1] - 50), 0)} ms)`);
+    console.log(
+      `\n== ${route}  (${((Date.now() - t0) / 1000).toFixed(1)} s wall, busy ${s.total.toFixed(0)} ms, long tasks ${long.length}: ${sum(long)} ms, TBT-like ${long.reduce((acc, x) => acc + Math.max(0, x[1] - 50), 0)} ms)`,
+    );
     console.log('long tasks [start, ms]:', JSON.stringify(long));
     s.print();
     // the longest busy stretches (no idle sample for > GAP_MS, default 30 ms: CPU throttling itself
@@ -67,7 +69,11 @@ try {
     }
     stretches.sort((a, b) => b.end - b.start - (a.end - a.start));
     for (const st of stretches.slice(0, Number(process.env.STRETCHES ?? 4))) {
-      printTop(`-- stretch at ${((st.start - profile.startTime) / 1000).toFixed(0)} ms, ${((st.end - st.start) / 1000).toFixed(0)} ms long; inclusive:`, inclusive(s.ix, st.samples), 30);
+      printTop(
+        `-- stretch at ${((st.start - profile.startTime) / 1000).toFixed(0)} ms, ${((st.end - st.start) / 1000).toFixed(0)} ms long; inclusive:`,
+        inclusive(s.ix, st.samples),
+        30,
+      );
     }
     await ctx.close();
   }

@@ -36,7 +36,7 @@ const OTHER_ROUTES: Array<[RegExp, string]> = [
 /** The route id a lazy chunk's entry module serves ('alpha' for src/scenes/alpha/index.ts), or null. */
 function routeOf(facade: string | null): string | null {
   const m = SCENE_ENTRY.exec(facade ?? '');
-  if (m) return m[1]!;
+  if (m) return m[1];
   for (const [re, id] of OTHER_ROUTES) if (re.test(facade ?? '')) return id;
   return null;
 }
@@ -78,7 +78,10 @@ export function scenePreloadMap(bundle: BundleLike): Record<string, { js: string
     const id = routeOf(c.facadeModuleId);
     if (id === null) continue;
     const cl = closure(c.fileName);
-    out[id] = { js: [...cl.js].filter((f) => !entry.js.has(f)), css: [...cl.css].filter((f) => !entry.css.has(f)) };
+    out[id] = {
+      js: [...cl.js].filter((f) => !entry.js.has(f)),
+      css: [...cl.css].filter((f) => !entry.css.has(f)),
+    };
   }
   return out;
 }

@@ -17,9 +17,18 @@ const positional = argv.filter((a) => !a.startsWith('--'));
 const dir = resolve(positional[0] ?? 'dist');
 const port = Number(positional[1] ?? 4173);
 const types = {
-  '.html': 'text/html; charset=utf-8', '.js': 'text/javascript; charset=utf-8', '.mjs': 'text/javascript; charset=utf-8',
-  '.css': 'text/css; charset=utf-8', '.json': 'application/json', '.svg': 'image/svg+xml', '.png': 'image/png',
-  '.woff2': 'font/woff2', '.woff': 'font/woff', '.ttf': 'font/ttf', '.wasm': 'application/wasm', '.ico': 'image/x-icon',
+  '.html': 'text/html; charset=utf-8',
+  '.js': 'text/javascript; charset=utf-8',
+  '.mjs': 'text/javascript; charset=utf-8',
+  '.css': 'text/css; charset=utf-8',
+  '.json': 'application/json',
+  '.svg': 'image/svg+xml',
+  '.png': 'image/png',
+  '.woff2': 'font/woff2',
+  '.woff': 'font/woff',
+  '.ttf': 'font/ttf',
+  '.wasm': 'application/wasm',
+  '.ico': 'image/x-icon',
 };
 const COMPRESSIBLE = new Set(['.html', '.js', '.mjs', '.css', '.json', '.svg', '.ttf']);
 /** gzip output per file path and modification time (the build does not change while served). */
@@ -36,7 +45,10 @@ const server = createServer(async (req, res) => {
     const st = await stat(file);
     if (!st.isFile()) throw Object.assign(new Error('not a file'), { code: 'ENOENT' });
     let body = await readFile(file);
-    const headers = { 'content-type': types[extname(file)] ?? 'application/octet-stream', 'cache-control': 'no-store' };
+    const headers = {
+      'content-type': types[extname(file)] ?? 'application/octet-stream',
+      'cache-control': 'no-store',
+    };
     if (gzip && COMPRESSIBLE.has(extname(file))) {
       headers.vary = 'accept-encoding';
       if (/\bgzip\b/.test(String(req.headers['accept-encoding'] ?? ''))) {
@@ -55,5 +67,7 @@ const server = createServer(async (req, res) => {
     res.end('not found');
   }
 });
-server.listen(port, '127.0.0.1', () => console.log(`serving ${dir}${gzip ? ' (gzip)' : ''} at http://127.0.0.1:${port}/app/`));
+server.listen(port, '127.0.0.1', () =>
+  console.log(`serving ${dir}${gzip ? ' (gzip)' : ''} at http://127.0.0.1:${port}/app/`),
+);
 for (const sig of ['SIGINT', 'SIGTERM']) process.on(sig, () => server.close(() => process.exit(0)));

@@ -32,7 +32,9 @@ if (!exe) {
   console.error(NO_CHROMIUM_HELP);
   process.exit(1);
 }
-const server = spawn(process.execPath, ['scripts/serve.mjs', dist, String(port)], { stdio: ['ignore', 'pipe', 'inherit'] });
+const server = spawn(process.execPath, ['scripts/serve.mjs', dist, String(port)], {
+  stdio: ['ignore', 'pipe', 'inherit'],
+});
 await new Promise((r) => server.stdout.once('data', r));
 const browser = await chromium.launch({ executablePath: exe, args: CHROMIUM_ARGS });
 try {

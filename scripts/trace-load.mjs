@@ -43,7 +43,16 @@ try {
   for (const route of routes) {
     const ctx = await browser.newContext(PHONE_CONTEXT);
     const page = await ctx.newPage();
-    await browser.startTracing(page, { categories: ['devtools.timeline', 'disabled-by-default-devtools.timeline', 'v8.execute', 'blink.user_timing', ...(withJs ? ['disabled-by-default-v8.cpu_profiler'] : []), ...(withThreads ? ['toplevel'] : [])] });
+    await browser.startTracing(page, {
+      categories: [
+        'devtools.timeline',
+        'disabled-by-default-devtools.timeline',
+        'v8.execute',
+        'blink.user_timing',
+        ...(withJs ? ['disabled-by-default-v8.cpu_profiler'] : []),
+        ...(withThreads ? ['toplevel'] : []),
+      ],
+    });
     await page.goto(`http://127.0.0.1:${port}/app/${route}`);
     await page.waitForTimeout(ms);
     const buf = await browser.stopTracing();
@@ -51,10 +60,17 @@ try {
     // the page's renderer main thread: the CrRendererMain thread that parsed our page's HTML
     const names = new Map();
     for (const e of events) if (e.name === 'thread_name') names.set(`${e.pid}:${e.tid}`, e.args.name);
-    const ours = events.find((e) => e.name === 'ParseHTML' && String(e.args?.beginData?.url ?? '').includes(`127.0.0.1:${port}`) && names.get(`${e.pid}:${e.tid}`) === 'CrRendererMain');
+    const ours = events.find(
+      (e) =>
+        e.name === 'ParseHTML' &&
+        String(e.args?.beginData?.url ?? '').includes(`127.0.0.1:${port}`) &&
+        names.get(`${e.pid}:${e.tid}`) === 'CrRendererMain',
+    );
     if (!ours) throw new Error(`${route}: no trace of the page's main thread`);
     const key = `${ours.pid}:${ours.tid}`;
-    const evs = events.filter((e) => `${e.pid}:${e.tid}` === key && e.ph === 'X' && e.dur !== undefined).map((e) => ({ ...e, wall: e.dur, dur: useWall ? e.dur : e.tdur ?? e.dur }));
+    const evs = events
+      .filter((e) => `${e.pid}:${e.tid}` === key && e.ph === 'X' && e.dur !== undefined)
+      .map((e) => ({ ...e, wall: e.dur, dur: useWall ? e.dur : (e.tdur ?? e.dur) }));
     // JS samples of our thread (ProfileChunk events), as [time µs, node id], with the node tree
     const nodes = new Map();
     const samples = [];
@@ -73,7 +89,8 @@ try {
         }
       }
     }
-    const frameName = (n) => `${n.callFrame.functionName || '(anon)'} ${String(n.callFrame.url).replace(/^.*\/assets\//, '')}`;
+    const frameName = (n) =>
+      `${n.callFrame.functionName || '(anon)'} ${String(n.callFrame.url).replace(/^.*\/assets\//, '')}`;
     evs.sort((a, b) => a.ts - b.ts || b.dur - a.dur);
     const nav = evs.find((e) => e.name === 'RunTask')?.ts ?? 0;
     // top-level tasks only (with --threads the 'toplevel' category nests one task event in another)
@@ -96,9 +113,22 @@ try {
           const d = e.args?.data ?? {};
           const url = String(d.url ?? '').replace(/^.*\/assets\//, '');
           if (e.name !== 'v8.callFunction') add(`js ${d.functionName || '(anon)'} ${url}`, e.dur);
-        } else if (e.args?.data?.stackTrace === undefined && !/^(ThreadControllerImpl|RunTask|ScheduledAction|v8\.|V8\.)/.test(e.name)) {
+        } else if (
+          e.args?.data?.stackTrace === undefined &&
+          !/^(ThreadControllerImpl|RunTask|ScheduledAction|v8\.|V8\.)/.test(e.name)
+        ) {
           // direct children of the task only for the rest (nested ones are inside those)
-          if (!inside.some((o) => o !== e && o.name !== 'FunctionCall' && o.ts <= e.ts && o.ts + o.wall >= e.ts + e.wall && o.wall > e.wall)) add(e.name, e.dur);
+          if (
+            !inside.some(
+              (o) =>
+                o !== e &&
+                o.name !== 'FunctionCall' &&
+                o.ts <= e.ts &&
+                o.ts + o.wall >= e.ts + e.wall &&
+                o.wall > e.wall,
+            )
+          )
+            add(e.name, e.dur);
         }
       }
       let js = '';
@@ -126,31 +156,55 @@ try {
           const seen = new Set();
           for (let node = nodes.get(id); node; node = nodes.get(node.parent)) {
             const fn = node.callFrame.functionName;
-            if (!/^(renderRootSync|renderRootConcurrent|commitRoot|flushPassiveEffects|commitLayoutEffects|flushLayoutEffects|commitMutationEffects|flushMutationEffects|recursivelyTraversePassiveMountEffects)$/.test(fn) || seen.has(fn)) continue;
+            if (
+              !/^(renderRootSync|renderRootConcurrent|commitRoot|flushPassiveEffects|commitLayoutEffects|flushLayoutEffects|commitMutationEffects|flushMutationEffects|recursivelyTraversePassiveMountEffects)$/.test(
+                fn,
+              ) ||
+              seen.has(fn)
+            )
+              continue;
             seen.add(fn);
             phases.set(fn, (phases.get(fn) ?? 0) + 1);
           }
         }
-        const pct = (list) => [...list].sort((a, b) => b[1] - a[1]).slice(0, 6).map(([k, c]) => `${k} ${Math.round((100 * c) / n)}%`).join(' | ');
+        const pct = (list) =>
+          [...list]
+            .sort((a, b) => b[1] - a[1])
+            .slice(0, 6)
+            .map(([k, c]) => `${k} ${Math.round((100 * c) / n)}%`)
+            .join(' | ');
         // and the functions with the most self time, any script (the shell lives in the entry chunk)
         const self = new Map();
         for (const [time, id] of samples) {
           if (time < t.ts || time > end) continue;
           const node = nodes.get(id);
-          if (!node || /^\((idle|program|garbage collector|root)\)$/.test(node.callFrame.functionName)) continue;
+          if (!node || /^\((idle|program|garbage collector|root)\)$/.test(node.callFrame.functionName))
+            continue;
           const k = frameName(node);
           self.set(k, (self.get(k) ?? 0) + 1);
         }
-        if (n) js = `\n${' '.repeat(26)}app code: ${pct(inc)}\n${' '.repeat(26)}React: ${pct(phases)}\n${' '.repeat(26)}self: ${pct(self)}`;
+        if (n)
+          js = `\n${' '.repeat(26)}app code: ${pct(inc)}\n${' '.repeat(26)}React: ${pct(phases)}\n${' '.repeat(26)}self: ${pct(self)}`;
       }
-      long.push({ start: (t.ts - nav) / 1000, dur: t.dur / 1000, top: [...agg].sort((a, b) => b[1] - a[1]).slice(0, 6), js });
+      long.push({
+        start: (t.ts - nav) / 1000,
+        dur: t.dur / 1000,
+        top: [...agg].sort((a, b) => b[1] - a[1]).slice(0, 6),
+        js,
+      });
     }
     if (withThreads) {
       // every thread's busy CPU time in the first --ms: what competes with the main thread for the
       // machine's cores (workers, the GPU process's rasterizer, the compositor…)
       const busy = new Map();
       for (const e of events) {
-        if (e.ph !== 'X' || (e.name !== 'RunTask' && e.name !== 'ThreadControllerImpl::RunTask' && e.name !== 'ThreadPool_RunTask')) continue;
+        if (
+          e.ph !== 'X' ||
+          (e.name !== 'RunTask' &&
+            e.name !== 'ThreadControllerImpl::RunTask' &&
+            e.name !== 'ThreadPool_RunTask')
+        )
+          continue;
         const k = `${e.pid}:${e.tid}`;
         busy.set(k, (busy.get(k) ?? 0) + (e.tdur ?? e.dur) / 1000);
       }
@@ -159,8 +213,13 @@ try {
       for (const [k, v] of rows) console.log(`  ${v.toFixed(0).padStart(6)}  ${names.get(k) ?? '?'} (${k})`);
     }
     const tbt = long.reduce((s, t) => s + Math.max(0, t.dur * 4 - 50), 0);
-    console.log(`\n== ${route}: ${long.length} tasks over ${min} ms of main-thread CPU; simulated TBT-like (×4, −50) ${tbt.toFixed(0)} ms`);
-    for (const t of long) console.log(`${t.start.toFixed(0).padStart(6)} ms  ${t.dur.toFixed(1).padStart(6)} ms  ${t.top.map(([k, d]) => `${k} ${(d / 1000).toFixed(1)}`).join(' | ')}${t.js}`);
+    console.log(
+      `\n== ${route}: ${long.length} tasks over ${min} ms of main-thread CPU; simulated TBT-like (×4, −50) ${tbt.toFixed(0)} ms`,
+    );
+    for (const t of long)
+      console.log(
+        `${t.start.toFixed(0).padStart(6)} ms  ${t.dur.toFixed(1).padStart(6)} ms  ${t.top.map(([k, d]) => `${k} ${(d / 1000).toFixed(1)}`).join(' | ')}${t.js}`,
+      );
     await ctx.close();
   }
 } finally {

@@ -48,7 +48,9 @@ export function App() {
       <Suspense
         fallback={
           <main id="main" className="page route-pending" tabIndex={-1}>
-            <p className="loading" role="status">Loading practice…</p>
+            <p className="loading" role="status">
+              Loading practice…
+            </p>
           </main>
         }
       >
@@ -57,27 +59,42 @@ export function App() {
     );
   else if (route.path === '/guide')
     body = (
-      <Suspense key="guide" fallback={<main id="main" className="page route-pending"><p className="loading" role="status">Loading the teacher’s guide…</p></main>}>
+      <Suspense
+        key="guide"
+        fallback={
+          <main id="main" className="page route-pending">
+            <p className="loading" role="status">
+              Loading the teacher’s guide…
+            </p>
+          </main>
+        }
+      >
         <Guide flags={flags} />
       </Suspense>
     );
-  else if (scene) body = <SceneHost key={scene.id} info={scene} query={route.query} flags={flags} theme={theme} />;
+  else if (scene)
+    body = <SceneHost key={scene.id} info={scene} query={route.query} flags={flags} theme={theme} />;
   else
     body = (
       <main id="main" className="page">
         <h1>Page not found</h1>
         <p role="status">
-          There is no page at <code>#{route.path.slice(0, 80)}</code>. <a href="#/">Go to the list of scenes</a>.
+          There is no page at <code>#{route.path.slice(0, 80)}</code>.{' '}
+          <a href="#/">Go to the list of scenes</a>.
         </p>
       </main>
     );
 
   return (
     <ShortcutProvider active={flags.present}>
-      <a className="skip-link" href="#main" onClick={(e) => {
-        e.preventDefault();
-        document.getElementById('main')?.focus();
-      }}>
+      <a
+        className="skip-link"
+        href="#main"
+        onClick={(e) => {
+          e.preventDefault();
+          document.getElementById('main')?.focus();
+        }}
+      >
         Skip to content
       </a>
       {flags.embed ? null : <SiteHeader present={flags.present} />}
@@ -85,7 +102,8 @@ export function App() {
       {flags.embed ? null : (
         <footer className="site-footer">
           <p>
-            Render Math Lab — every figure is computed live in your browser, and nothing is fetched from anywhere but this site, so a copy of the build works offline.
+            Render Math Lab — every figure is computed live in your browser, and nothing is fetched from
+            anywhere but this site, so a copy of the build works offline.
             {flags.present ? ' Classroom mode: press ? for shortcuts.' : ''}
           </p>
         </footer>
@@ -98,7 +116,10 @@ function SiteHeader({ present }: { present: boolean }) {
   return (
     <header className="site-header">
       <a href={present ? '#/?present=1' : '#/'} className="brand">
-        <span className="brand-mark" aria-hidden="true">◐</span> Render Math Lab
+        <span className="brand-mark" aria-hidden="true">
+          ◐
+        </span>{' '}
+        Render Math Lab
       </a>
       <a href={present ? '#/guide?present=1' : '#/guide'} className="guide-link">
         Teacher’s guide

@@ -19,14 +19,15 @@ export function Home({ flags }: { flags: ShellFlags }) {
       <h1>The mathematics of rendering, one question at a time</h1>
       <p className="lead">
         Six questions from a Computer Graphics final exam, each turned into a scene you can push on: change a
-        number and every figure, plot and picture is recomputed on the spot. Share or embed any configuration by its
-        link.
+        number and every figure, plot and picture is recomputed on the spot. Share or embed any configuration
+        by its link.
       </p>
       <p className="home-practice">
         <a href={`#/practice${withFlags('', flags)}`} data-testid="practice-link">
           Practice
         </a>
-        : test yourself on fresh variants of every question — answers checked, classic mistakes named, worked solutions with your numbers.
+        : test yourself on fresh variants of every question — answers checked, classic mistakes named, worked
+        solutions with your numbers.
       </p>
       <ol className="question-list">
         {EXAM_QUESTIONS.map((q) => {
@@ -46,7 +47,11 @@ export function Home({ flags }: { flags: ShellFlags }) {
               <p className="question-scene">
                 {built ? (
                   <>
-                    Opens <a href={href} aria-label={`${scene.title} (${scene.questions})`}>{scene.title}</a> ({scene.questions})
+                    Opens{' '}
+                    <a href={href} aria-label={`${scene.title} (${scene.questions})`}>
+                      {scene.title}
+                    </a>{' '}
+                    ({scene.questions})
                   </>
                 ) : (
                   <span className="badge">Scene not built yet</span>

@@ -5,7 +5,9 @@ type Matrix = { size: number; dark: (x: number, y: number) => boolean };
 /** Encodes text as a QR code with the `qrcode` library, loaded only when a code is asked for. */
 async function encode(text: string): Promise<Matrix> {
   const QR = await import('qrcode');
-  const create = (QR as unknown as { create?: typeof import('qrcode').create }).create ?? (QR as unknown as { default: typeof import('qrcode') }).default.create;
+  const create =
+    (QR as unknown as { create?: typeof import('qrcode').create }).create ??
+    (QR as unknown as { default: typeof import('qrcode') }).default.create;
   const code = create(text, { errorCorrectionLevel: 'M' });
   const { size, data } = code.modules as unknown as { size: number; data: Uint8Array };
   return { size, dark: (x, y) => data[y * size + x] === 1 };
@@ -26,7 +28,9 @@ function pathOf(m: Matrix): string {
  */
 export function QrButton({ link, present }: { link: string; present: boolean }) {
   const [open, setOpen] = useState(false);
-  const [state, setState] = useState<{ text: string; path: string; size: number } | { error: string } | null>(null);
+  const [state, setState] = useState<{ text: string; path: string; size: number } | { error: string } | null>(
+    null,
+  );
   const btn = useRef<HTMLButtonElement>(null);
   const close = useRef<HTMLButtonElement>(null);
 
@@ -58,11 +62,23 @@ export function QrButton({ link, present }: { link: string; present: boolean }) 
 
   return (
     <>
-      <button type="button" ref={btn} data-testid="show-qr" aria-expanded={open} onClick={() => setOpen((o) => !o)}>
+      <button
+        type="button"
+        ref={btn}
+        data-testid="show-qr"
+        aria-expanded={open}
+        onClick={() => setOpen((o) => !o)}
+      >
         QR code
       </button>
       {open ? (
-        <div className={present ? 'qr-panel qr-large' : 'qr-panel'} role="dialog" aria-modal="false" aria-label="QR code of this link" data-testid="qr-panel">
+        <div
+          className={present ? 'qr-panel qr-large' : 'qr-panel'}
+          role="dialog"
+          aria-modal="false"
+          aria-label="QR code of this link"
+          data-testid="qr-panel"
+        >
           {state && 'path' in state ? (
             <svg
               className="qr-code"
@@ -77,12 +93,24 @@ export function QrButton({ link, present }: { link: string; present: boolean }) 
               <path d={state.path} fill="#000" />
             </svg>
           ) : state && 'error' in state ? (
-            <p role="alert" className="notice notice-error">The QR code could not be made ({state.error}).</p>
+            <p role="alert" className="notice notice-error">
+              The QR code could not be made ({state.error}).
+            </p>
           ) : (
             <p role="status">Making the QR code…</p>
           )}
-          <p className="qr-caption">Scan to open this scene as configured here{present ? '' : ' (larger in classroom mode, present=1)'}.</p>
-          <button type="button" ref={close} onClick={() => { setOpen(false); btn.current?.focus(); }}>
+          <p className="qr-caption">
+            Scan to open this scene as configured here
+            {present ? '' : ' (larger in classroom mode, present=1)'}.
+          </p>
+          <button
+            type="button"
+            ref={close}
+            onClick={() => {
+              setOpen(false);
+              btn.current?.focus();
+            }}
+          >
             Close
           </button>
         </div>

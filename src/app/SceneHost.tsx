@@ -1,8 +1,24 @@
-import { Component, startTransition, useCallback, useEffect, useMemo, useRef, useState, type ReactNode } from 'react';
+import {
+  Component,
+  startTransition,
+  useCallback,
+  useEffect,
+  useMemo,
+  useRef,
+  useState,
+  type ReactNode,
+} from 'react';
 import type { SceneInfo } from '../scenes/registry';
 import { sceneLoader } from '../scenes/registry';
 import type { SceneModule } from './scene';
-import { parseParams, sanitizePatch, serializeParams, type ParamProblem, type ParamValues, type ParamSchema } from './params';
+import {
+  parseParams,
+  sanitizePatch,
+  serializeParams,
+  type ParamProblem,
+  type ParamValues,
+  type ParamSchema,
+} from './params';
 import { shellExtras, type ShellFlags } from './route';
 import { useShortcuts } from '../ui/shortcuts';
 import { QuestionNav } from '../ui/exam';
@@ -18,7 +34,11 @@ interface Props {
   theme: 'light' | 'dark';
 }
 
-type LoadState = { kind: 'loading' } | { kind: 'missing' } | { kind: 'failed'; message: string } | { kind: 'ready'; mod: SceneModule };
+type LoadState =
+  | { kind: 'loading' }
+  | { kind: 'missing' }
+  | { kind: 'failed'; message: string }
+  | { kind: 'ready'; mod: SceneModule };
 
 /** Loads a scene's chunk, parses its URL parameters, and hosts it with the shared chrome. */
 export function SceneHost({ info, query, flags, theme }: Props) {
@@ -37,7 +57,8 @@ export function SceneHost({ info, query, flags, theme }: Props) {
       // A transition: React renders the scene's (large) first tree in slices of a few ms that yield
       // to the browser, instead of one long task (Lighthouse: total blocking time on load).
       (mod) => alive && startTransition(() => setLoad({ kind: 'ready', mod })),
-      (err) => alive && setLoad({ kind: 'failed', message: err instanceof Error ? err.message : String(err) }),
+      (err) =>
+        alive && setLoad({ kind: 'failed', message: err instanceof Error ? err.message : String(err) }),
     );
     return () => {
       alive = false;
@@ -69,9 +90,17 @@ export function SceneHost({ info, query, flags, theme }: Props) {
     // Outside embeds the page is at least one screen tall from the first paint, so the footer starts
     // below the fold and does not jump down when the scene's chunk replaces "Loading the scene…"
     // (that jump was a layout shift of ~0.17 on every scene, measured by Lighthouse mobile).
-    <main id="main" className={`page scene scene-${info.id}${flags.embed ? '' : ' scene-full'}`} tabIndex={-1}>
+    <main
+      id="main"
+      className={`page scene scene-${info.id}${flags.embed ? '' : ' scene-full'}`}
+      tabIndex={-1}
+    >
       {header}
-      {load.kind === 'loading' ? <p className="loading" role="status">Loading the scene…</p> : null}
+      {load.kind === 'loading' ? (
+        <p className="loading" role="status">
+          Loading the scene…
+        </p>
+      ) : null}
       {load.kind === 'missing' ? (
         <p role="status" className="notice notice-info">
           This scene is not built yet. <a href="#/">Back to the list of scenes</a>.
@@ -79,10 +108,16 @@ export function SceneHost({ info, query, flags, theme }: Props) {
       ) : null}
       {load.kind === 'failed' ? (
         <div role="alert" className="notice notice-error">
-          The scene could not be loaded ({load.message}). Check the connection and <button type="button" onClick={() => window.location.reload()}>reload</button>.
+          The scene could not be loaded ({load.message}). Check the connection and{' '}
+          <button type="button" onClick={() => window.location.reload()}>
+            reload
+          </button>
+          .
         </div>
       ) : null}
-      {load.kind === 'ready' ? <LoadedScene mod={load.mod} info={info} query={query} flags={flags} theme={theme} /> : null}
+      {load.kind === 'ready' ? (
+        <LoadedScene mod={load.mod} info={info} query={query} flags={flags} theme={theme} />
+      ) : null}
     </main>
   );
 }
@@ -94,15 +129,39 @@ function fullAppHref(info: SceneInfo, query: string): string {
   return `${window.location.pathname}#${info.path}${q ? `?${q}` : ''}`;
 }
 
-function LoadedScene({ mod, info, query, flags, theme }: { mod: SceneModule; info: SceneInfo; query: string; flags: ShellFlags; theme: 'light' | 'dark' }) {
+function LoadedScene({
+  mod,
+  info,
+  query,
+  flags,
+  theme,
+}: {
+  mod: SceneModule;
+  info: SceneInfo;
+  query: string;
+  flags: ShellFlags;
+  theme: 'light' | 'dark';
+}) {
   const schema = mod.schema;
   const parsed = useMemo(() => parseParams(schema, query), [schema, query]);
   const [values, setValues] = useState(parsed.values);
   const partProblem = useMemo<ParamProblem[]>(
-    () => (flags.part && !info.parts.includes(flags.part) ? [{ name: 'part', message: `${flags.part} is not on this page (it has ${info.parts.join(', ')}); showing the top` }] : []),
+    () =>
+      flags.part && !info.parts.includes(flags.part)
+        ? [
+            {
+              name: 'part',
+              message: `${flags.part} is not on this page (it has ${info.parts.join(', ')}); showing the top`,
+            },
+          ]
+        : [],
     [flags.part, info.parts],
   );
-  const [problems, setProblems] = useState<ParamProblem[]>([...flags.problems, ...partProblem, ...parsed.problems]);
+  const [problems, setProblems] = useState<ParamProblem[]>([
+    ...flags.problems,
+    ...partProblem,
+    ...parsed.problems,
+  ]);
   // the values the scene opened with: "r" (classroom shortcut) always goes back to them
   const opening = useRef(parsed.values);
   const lastQuery = useRef(query);
@@ -174,7 +233,11 @@ function LoadedScene({ mod, info, query, flags, theme }: { mod: SceneModule; inf
       ) : null}
       <ShareBar info={info} schema={schema} values={linkValues} flags={flags} />
       <SceneErrorBoundary resetKey={query}>
-        <Scene params={values} setParams={setParams} mode={{ embed: flags.embed, present: flags.present, theme }} />
+        <Scene
+          params={values}
+          setParams={setParams}
+          mode={{ embed: flags.embed, present: flags.present, theme }}
+        />
       </SceneErrorBoundary>
       {flags.embed ? null : <QuestionNav info={info} flags={flags} />}
     </>
@@ -189,7 +252,10 @@ const goodExpressions = new Map<string, string>();
  * successfully compiled text (or the default) unless it compiles now. The compiler (core/expr and
  * its parser chunk) loads only when an expression differs from its default.
  */
-async function linkSafeValues(schema: ParamSchema, values: ParamValues<ParamSchema>): Promise<ParamValues<ParamSchema>> {
+async function linkSafeValues(
+  schema: ParamSchema,
+  values: ParamValues<ParamSchema>,
+): Promise<ParamValues<ParamSchema>> {
   const out = { ...values } as Record<string, unknown>;
   for (const [name, spec] of Object.entries(schema)) {
     if (spec.kind !== 'string' || spec.expression === undefined) continue;
@@ -209,14 +275,32 @@ async function linkSafeValues(schema: ParamSchema, values: ParamValues<ParamSche
   return out as ParamValues<ParamSchema>;
 }
 
-function ShareBar({ info, schema, values, flags }: { info: SceneInfo; schema: SceneModule['schema']; values: ParamValues<ParamSchema>; flags: ShellFlags }) {
+function ShareBar({
+  info,
+  schema,
+  values,
+  flags,
+}: {
+  info: SceneInfo;
+  schema: SceneModule['schema'];
+  values: ParamValues<ParamSchema>;
+  flags: ShellFlags;
+}) {
   const [copied, setCopied] = useState<'link' | 'embed' | null>(null);
   const [shown, setShown] = useState<string | null>(null);
   // (not location.origin + pathname: a copy opened from file:// has the origin "null")
-  const base = window.location.href.split('#')[0]!;
-  const qs = serializeParams(schema, values, { part: flags.part ?? undefined, present: flags.present ? '1' : undefined, theme: flags.theme ?? undefined });
+  const base = window.location.href.split('#')[0];
+  const qs = serializeParams(schema, values, {
+    part: flags.part ?? undefined,
+    present: flags.present ? '1' : undefined,
+    theme: flags.theme ?? undefined,
+  });
   const link = `${base}#${info.path}${qs ? `?${qs}` : ''}`;
-  const embedQs = serializeParams(schema, values, { part: flags.part ?? undefined, embed: '1', theme: flags.theme ?? undefined });
+  const embedQs = serializeParams(schema, values, {
+    part: flags.part ?? undefined,
+    embed: '1',
+    theme: flags.theme ?? undefined,
+  });
   const embedSrc = `${base}#${info.path}?${embedQs}`;
   const embedCode = embedSnippet(embedSrc, `${info.title} — Render Math Lab`, info.id);
   const copy = async (what: 'link' | 'embed') => {
@@ -239,16 +323,32 @@ function ShareBar({ info, schema, values, flags }: { info: SceneInfo; schema: Sc
         Copy embed code
       </button>
       <span role="status" className="share-status">
-        {copied === 'link' ? 'Link copied.' : copied === 'embed' ? 'Embed code copied.' : shown ? 'Copy it from the box:' : ''}
+        {copied === 'link'
+          ? 'Link copied.'
+          : copied === 'embed'
+            ? 'Embed code copied.'
+            : shown
+              ? 'Copy it from the box:'
+              : ''}
       </span>
       {shown ? (
-        <input className="share-text" data-testid="share-text" aria-label="Text to copy" readOnly value={shown} onFocus={(e) => e.currentTarget.select()} />
+        <input
+          className="share-text"
+          data-testid="share-text"
+          aria-label="Text to copy"
+          readOnly
+          value={shown}
+          onFocus={(e) => e.currentTarget.select()}
+        />
       ) : null}
     </div>
   );
 }
 
-class SceneErrorBoundary extends Component<{ children: ReactNode; resetKey: string }, { error: string | null }> {
+class SceneErrorBoundary extends Component<
+  { children: ReactNode; resetKey: string },
+  { error: string | null }
+> {
   override state = { error: null as string | null };
   static getDerivedStateFromError(err: unknown) {
     return { error: err instanceof Error ? err.message : String(err) };

@@ -12,7 +12,12 @@ export function contentHeight(): number {
   const root = document.getElementById('root') ?? document.body;
   const rect = root.getBoundingClientRect();
   const body = getComputedStyle(document.body);
-  return Math.ceil(rect.bottom + window.scrollY + (parseFloat(body.paddingBottom) || 0) + (parseFloat(body.marginBottom) || 0));
+  return Math.ceil(
+    rect.bottom +
+      window.scrollY +
+      (parseFloat(body.paddingBottom) || 0) +
+      (parseFloat(body.marginBottom) || 0),
+  );
 }
 
 /**
@@ -20,7 +25,11 @@ export function contentHeight(): number {
  * shrinking), so the host can size the iframe (README, "Embed a scene"). With `origin=` the
  * message goes only to those origins.
  */
-export function usePostHeight(active: boolean, sceneId: string | null, origins: readonly string[] = []): void {
+export function usePostHeight(
+  active: boolean,
+  sceneId: string | null,
+  origins: readonly string[] = [],
+): void {
   useEffect(() => {
     if (!active || window.parent === window) return;
     let last = -1;

@@ -69,8 +69,8 @@ export const HOSTILE_STRINGS: readonly string[] = [
   '1/(theta-0.5)',
   'sqrt(cos(phi))',
   'exp(1000*theta)',
-  'exp(' .repeat(60) + 'x' + ')'.repeat(60),
-  'exp(' .repeat(60) + 'theta' + ')'.repeat(60),
+  'exp('.repeat(60) + 'x' + ')'.repeat(60),
+  'exp('.repeat(60) + 'theta' + ')'.repeat(60),
   '('.repeat(70) + 'x' + ')'.repeat(70),
   Array(71).fill('1').join('+'),
   'x'.repeat(401),
@@ -83,9 +83,43 @@ export const HOSTILE_STRINGS: readonly string[] = [
 ];
 
 /** Numbers typed into numeric fields. */
-const NUMBERS: readonly string[] = ['0', '1', '-1', '0.5', '1e9', '-1e9', '1e-300', '1e400', 'NaN', '', '3.14159', '42', '-0', '7'];
+const NUMBERS: readonly string[] = [
+  '0',
+  '1',
+  '-1',
+  '0.5',
+  '1e9',
+  '-1e9',
+  '1e-300',
+  '1e400',
+  'NaN',
+  '',
+  '3.14159',
+  '42',
+  '-0',
+  '7',
+];
 
-const KEYS: readonly string[] = ['ArrowLeft', 'ArrowRight', 'ArrowUp', 'ArrowDown', 'Home', 'End', 'PageUp', 'PageDown', 'Enter', ' ', 'Escape', 'Tab', 'a', 'n', 'r', '1', '?', 'f'];
+const KEYS: readonly string[] = [
+  'ArrowLeft',
+  'ArrowRight',
+  'ArrowUp',
+  'ArrowDown',
+  'Home',
+  'End',
+  'PageUp',
+  'PageDown',
+  'Enter',
+  ' ',
+  'Escape',
+  'Tab',
+  'a',
+  'n',
+  'r',
+  '1',
+  '?',
+  'f',
+];
 
 export interface FuzzState {
   seed: number;
@@ -103,11 +137,14 @@ declare global {
   }
 }
 
-const SELECTOR = 'button, input, select, textarea, summary, [role="slider"], [role="tab"], canvas, [tabindex="0"]';
+const SELECTOR =
+  'button, input, select, textarea, summary, [role="slider"], [role="tab"], canvas, [tabindex="0"]';
 
 function visible(el: Element): boolean {
   const r = (el as HTMLElement).getBoundingClientRect();
-  return r.width > 0 && r.height > 0 && !(el as HTMLInputElement).disabled && !el.closest('[inert], .fuzz-panel');
+  return (
+    r.width > 0 && r.height > 0 && !(el as HTMLInputElement).disabled && !el.closest('[inert], .fuzz-panel')
+  );
 }
 
 /** Elements that would leave or reload the page, or open something outside it. */
@@ -118,7 +155,12 @@ function unsafe(el: Element): boolean {
 }
 
 function setNativeValue(el: HTMLInputElement | HTMLTextAreaElement | HTMLSelectElement, value: string): void {
-  const proto = el instanceof HTMLSelectElement ? HTMLSelectElement.prototype : el instanceof HTMLTextAreaElement ? HTMLTextAreaElement.prototype : HTMLInputElement.prototype;
+  const proto =
+    el instanceof HTMLSelectElement
+      ? HTMLSelectElement.prototype
+      : el instanceof HTMLTextAreaElement
+        ? HTMLTextAreaElement.prototype
+        : HTMLInputElement.prototype;
   const setter = Object.getOwnPropertyDescriptor(proto, 'value')?.set;
   if (setter) setter.call(el, value);
   else el.value = value;
@@ -133,8 +175,15 @@ function key(el: Element, k: string): void {
 /** Start fuzzing this page. Returns a stop function. */
 export function startFuzz(opts: { seed: number; limit: number | null; intervalMs?: number }): () => void {
   const rand = mulberry(opts.seed);
-  const pick = <T>(xs: readonly T[]): T => xs[Math.floor(rand() * xs.length)]!;
-  const state: FuzzState = { seed: opts.seed, actions: 0, limit: opts.limit, running: true, errors: [], log: [] };
+  const pick = <T>(xs: readonly T[]): T => xs[Math.floor(rand() * xs.length)];
+  const state: FuzzState = {
+    seed: opts.seed,
+    actions: 0,
+    limit: opts.limit,
+    running: true,
+    errors: [],
+    log: [],
+  };
 
   const panel = document.createElement('div');
   panel.className = 'fuzz-panel';
@@ -149,11 +198,14 @@ export function startFuzz(opts: { seed: number; limit: number | null; intervalMs
   panel.append(text, stopBtn);
   document.body.append(panel);
   const render = () => {
-    text.textContent = `Fuzz (seed ${state.seed}): ${state.actions}${state.limit ? `/${state.limit}` : ''} actions, ${state.errors.length} error${state.errors.length === 1 ? '' : 's'}${state.errors.length ? ` — last: ${state.errors[state.errors.length - 1]!.slice(0, 140)}` : ''}${state.running ? '' : ' (stopped)'}`;
+    text.textContent = `Fuzz (seed ${state.seed}): ${state.actions}${state.limit ? `/${state.limit}` : ''} actions, ${state.errors.length} error${state.errors.length === 1 ? '' : 's'}${state.errors.length ? ` — last: ${state.errors[state.errors.length - 1].slice(0, 140)}` : ''}${state.running ? '' : ' (stopped)'}`;
   };
 
   const onError = (e: ErrorEvent) => state.errors.push(`error: ${e.message}`);
-  const onRejection = (e: PromiseRejectionEvent) => state.errors.push(`unhandled rejection: ${e.reason instanceof Error ? e.reason.message : String(e.reason)}`);
+  const onRejection = (e: PromiseRejectionEvent) =>
+    state.errors.push(
+      `unhandled rejection: ${e.reason instanceof Error ? e.reason.message : String(e.reason)}`,
+    );
   window.addEventListener('error', onError);
   window.addEventListener('unhandledrejection', onRejection);
   const origConsoleError = console.error;
@@ -167,7 +219,8 @@ export function startFuzz(opts: { seed: number; limit: number | null; intervalMs
     for (const el of document.querySelectorAll('.notice-error[role="alert"]')) {
       if (seenAlerts.has(el)) continue;
       seenAlerts.add(el);
-      if (/went wrong/.test(el.textContent ?? '')) state.errors.push(`error panel: ${(el.textContent ?? '').slice(0, 200)}`);
+      if (/went wrong/.test(el.textContent ?? ''))
+        state.errors.push(`error panel: ${(el.textContent ?? '').slice(0, 200)}`);
     }
   };
 
@@ -175,7 +228,9 @@ export function startFuzz(opts: { seed: number; limit: number | null; intervalMs
     const all = [...document.querySelectorAll(SELECTOR)].filter((el) => visible(el) && !unsafe(el));
     if (all.length === 0) return 'nothing to act on';
     const el = pick(all) as HTMLElement;
-    const what = el.tagName.toLowerCase() + (el.getAttribute('data-testid') ? `[${el.getAttribute('data-testid')}]` : el.id ? `#${el.id}` : '');
+    const what =
+      el.tagName.toLowerCase() +
+      (el.getAttribute('data-testid') ? `[${el.getAttribute('data-testid')}]` : el.id ? `#${el.id}` : '');
     if (el instanceof HTMLInputElement) {
       const type = el.type;
       if (type === 'range') {
@@ -230,14 +285,25 @@ export function startFuzz(opts: { seed: number; limit: number | null; intervalMs
       let x = r.left + rand() * r.width;
       let y = r.top + rand() * r.height;
       const base = { bubbles: true, cancelable: true, pointerId: 1, isPrimary: true, pointerType: 'mouse' };
-      el.dispatchEvent(new PointerEvent('pointerdown', { ...base, clientX: x, clientY: y, button: 0, buttons: 1 }));
+      el.dispatchEvent(
+        new PointerEvent('pointerdown', { ...base, clientX: x, clientY: y, button: 0, buttons: 1 }),
+      );
       for (let i = 0; i < 4; i++) {
         x += (rand() - 0.5) * 80;
         y += (rand() - 0.5) * 80;
         el.dispatchEvent(new PointerEvent('pointermove', { ...base, clientX: x, clientY: y, buttons: 1 }));
       }
       el.dispatchEvent(new PointerEvent('pointerup', { ...base, clientX: x, clientY: y, button: 0 }));
-      if (rand() < 0.3) el.dispatchEvent(new WheelEvent('wheel', { bubbles: true, cancelable: true, deltaY: (rand() - 0.5) * 400, clientX: x, clientY: y }));
+      if (rand() < 0.3)
+        el.dispatchEvent(
+          new WheelEvent('wheel', {
+            bubbles: true,
+            cancelable: true,
+            deltaY: (rand() - 0.5) * 400,
+            clientX: x,
+            clientY: y,
+          }),
+        );
       return `drag on ${what}`;
     }
     if (rand() < 0.25) {

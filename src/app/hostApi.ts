@@ -52,7 +52,8 @@ export function toUrlText(v: unknown): string | null {
   if (typeof v === 'string') return v;
   if (typeof v === 'number') return String(v);
   if (typeof v === 'boolean') return v ? '1' : '0';
-  if (Array.isArray(v) && v.length <= 64 && v.every((x) => typeof x === 'number')) return v.map((x) => String(x)).join(',');
+  if (Array.isArray(v) && v.length <= 64 && v.every((x) => typeof x === 'number'))
+    return v.map((x) => String(x)).join(',');
   return null;
 }
 
@@ -64,15 +65,22 @@ function clip(s: string, n = 40): string {
  * Validates a host's `set` against a schema exactly as the URL would be read. Returns the patch
  * to apply, or the problems (each naming the parameter) when any value cannot be used as given.
  */
-export function validateSet(schema: ParamSchema, params: unknown): { ok: true; patch: Record<string, unknown> } | { ok: false; problems: Problem[] } {
+export function validateSet(
+  schema: ParamSchema,
+  params: unknown,
+): { ok: true; patch: Record<string, unknown> } | { ok: false; problems: Problem[] } {
   if (typeof params !== 'object' || params === null || Array.isArray(params)) {
-    return { ok: false, problems: [{ name: 'params', message: 'must be an object of parameter names and values' }] };
+    return {
+      ok: false,
+      problems: [{ name: 'params', message: 'must be an object of parameter names and values' }],
+    };
   }
   const problems: Problem[] = [];
   const sp = new URLSearchParams();
   const names: string[] = [];
   const keys = Object.keys(params);
-  if (keys.length > 64) return { ok: false, problems: [{ name: 'params', message: `has ${keys.length} entries; at most 64` }] };
+  if (keys.length > 64)
+    return { ok: false, problems: [{ name: 'params', message: `has ${keys.length} entries; at most 64` }] };
   for (const name of keys) {
     const raw = (params as Record<string, unknown>)[name];
     if ((SHELL_PARAMS as readonly string[]).includes(name) || name === 'origin') {
@@ -88,7 +96,8 @@ export function validateSet(schema: ParamSchema, params: unknown): { ok: true; p
     names.push(name);
   }
   const parsed = parseParams(schema, sp);
-  for (const p of parsed.problems) problems.push({ name: p.name, message: p.message.replace(/; (using|ignored).*$/, '') });
+  for (const p of parsed.problems)
+    problems.push({ name: p.name, message: p.message.replace(/; (using|ignored).*$/, '') });
   if (problems.length) return { ok: false, problems };
   const patch: Record<string, unknown> = {};
   const values = parsed.values as Record<string, unknown>;
@@ -148,7 +157,8 @@ export function hostState(s: HostScene | null): HostState {
 }
 
 function reply(id: unknown, origin: string, body: Record<string, unknown>): void {
-  const safeId = typeof id === 'string' ? id.slice(0, 200) : typeof id === 'number' && Number.isFinite(id) ? id : null;
+  const safeId =
+    typeof id === 'string' ? id.slice(0, 200) : typeof id === 'number' && Number.isFinite(id) ? id : null;
   post({ type: 'reply', id: safeId, ...body }, origin);
 }
 
@@ -181,7 +191,10 @@ function onMessage(e: MessageEvent): void {
   const m = d as Record<string, unknown>;
   if (m.protocol !== PROTOCOL) return;
   if (m.version !== PROTOCOL_VERSION) {
-    reply(m.id, e.origin, { ok: false, error: `Protocol version ${String(m.version).slice(0, 12)} is not supported; this app speaks version ${PROTOCOL_VERSION}.` });
+    reply(m.id, e.origin, {
+      ok: false,
+      error: `Protocol version ${String(m.version).slice(0, 12)} is not supported; this app speaks version ${PROTOCOL_VERSION}.`,
+    });
     return;
   }
   switch (m.type) {
@@ -214,7 +227,10 @@ function onMessage(e: MessageEvent): void {
       return;
     }
     default:
-      reply(m.id, e.origin, { ok: false, error: `Unknown request type ${JSON.stringify(String(m.type).slice(0, 24))}; use get, set, subscribe, unsubscribe, play, pause or seek.` });
+      reply(m.id, e.origin, {
+        ok: false,
+        error: `Unknown request type ${JSON.stringify(String(m.type).slice(0, 24))}; use get, set, subscribe, unsubscribe, play, pause or seek.`,
+      });
   }
 }
 
@@ -238,11 +254,17 @@ function onVerdict(e: Event): void {
   const detail = (e as CustomEvent<unknown>).detail;
   if (typeof detail !== 'object' || detail === null) return;
   const d = detail as Record<string, unknown>;
-  const plain = (v: unknown) => (typeof v === 'string' ? v.slice(0, 200) : typeof v === 'number' || typeof v === 'boolean' ? v : null);
+  const plain = (v: unknown) =>
+    typeof v === 'string' ? v.slice(0, 200) : typeof v === 'number' || typeof v === 'boolean' ? v : null;
   emit({
     event: 'practice-verdict',
     route: currentRoute(),
-    verdict: { question: plain(d.question), seed: plain(d.seed), name: plain(d.name), verdict: plain(d.verdict) },
+    verdict: {
+      question: plain(d.question),
+      seed: plain(d.seed),
+      name: plain(d.name),
+      verdict: plain(d.verdict),
+    },
   });
 }
 

@@ -51,7 +51,12 @@ window.addEventListener('hashchange', maybeFuzz);
 // has been painted (10 s at most), and the page has then been idle for 2 s: its install precaches
 // the whole build, about a second of CPU on a worker thread that competed with a scene's load on a
 // phone, and registering at 'load' put its chunks before a scene's first paint (../ui/whenQuiet; issue 15).
-if (import.meta.env.PROD && import.meta.env.MODE !== 'single' && 'serviceWorker' in navigator && /^https?:$/.test(window.location.protocol)) {
+if (
+  import.meta.env.PROD &&
+  import.meta.env.MODE !== 'single' &&
+  'serviceWorker' in navigator &&
+  /^https?:$/.test(window.location.protocol)
+) {
   // A page of the old build reloads, whole, as soon as a new build's worker takes over (another
   // tab's "Reload"), even before this page has registered (it waits for quiet): its lazy chunks
   // would otherwise be looked up in the new build's cache. Not on the first install's claim.
@@ -64,7 +69,10 @@ if (import.meta.env.PROD && import.meta.env.MODE !== 'single' && 'serviceWorker'
       .then(afterPaint)
       .then(() => whenQuiet())
       .then(() => import('./pwa'))
-      .then((m) => m.registerPwa(), () => undefined);
+      .then(
+        (m) => m.registerPwa(),
+        () => undefined,
+      );
   if (document.readyState === 'complete') start();
   else window.addEventListener('load', start, { once: true });
 }

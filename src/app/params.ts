@@ -6,7 +6,13 @@ import { fail, type Failure } from '../core/failure';
 
 export type ParamSpec =
   | { kind: 'number'; default: number; min?: number; max?: number; integer?: boolean; label?: string }
-  | { kind: 'enum'; default: string; values: readonly string[]; aliases?: Readonly<Record<string, string>>; label?: string }
+  | {
+      kind: 'enum';
+      default: string;
+      values: readonly string[];
+      aliases?: Readonly<Record<string, string>>;
+      label?: string;
+    }
   | {
       kind: 'string';
       default: string;
@@ -21,7 +27,15 @@ export type ParamSpec =
     }
   | { kind: 'bool'; default: boolean; label?: string }
   | { kind: 'vec3'; default: readonly [number, number, number]; min?: number; max?: number; label?: string }
-  | { kind: 'list'; default: readonly number[] | null; maxItems: number; minItems?: number; min?: number; max?: number; label?: string };
+  | {
+      kind: 'list';
+      default: readonly number[] | null;
+      maxItems: number;
+      minItems?: number;
+      min?: number;
+      max?: number;
+      label?: string;
+    };
 
 export type ParamSchema = Readonly<Record<string, ParamSpec>>;
 
@@ -55,7 +69,16 @@ export interface ParsedParams<S extends ParamSchema> {
 }
 
 /** Parameters owned by the shell itself, not by any scene. */
-export const SHELL_PARAMS = ['embed', 'present', 'theme', 'part', 'origin', 'fuzz', 'fuzzn', 'fuzzseed'] as const;
+export const SHELL_PARAMS = [
+  'embed',
+  'present',
+  'theme',
+  'part',
+  'origin',
+  'fuzz',
+  'fuzzn',
+  'fuzzseed',
+] as const;
 
 /** Longest raw value the parser looks at; longer ones are rejected, not truncated. */
 export const MAX_RAW_LENGTH = 4000;
@@ -114,15 +137,25 @@ function parseOne(spec: ParamSpec, raw: string): Parsed {
       if (x === null) return fail('invalid', `${short(raw)} is not a finite number`);
       let v = spec.integer ? Math.round(x) : x;
       const c = clamp(v, spec.min, spec.max);
-      if (c !== v) return { ok: true, value: c, problem: `${short(raw)} is outside ${rangeText(spec.min, spec.max)}; using ${fmt(c)}` };
+      if (c !== v)
+        return {
+          ok: true,
+          value: c,
+          problem: `${short(raw)} is outside ${rangeText(spec.min, spec.max)}; using ${fmt(c)}`,
+        };
       v = c;
-      if (spec.integer && v !== x) return { ok: true, value: v, problem: `${short(raw)} is not a whole number; using ${fmt(v)}` };
+      if (spec.integer && v !== x)
+        return { ok: true, value: v, problem: `${short(raw)} is not a whole number; using ${fmt(v)}` };
       return { ok: true, value: v };
     }
     case 'enum': {
       const s = raw.trim();
       // own keys only: 'toString', '__proto__', 'constructor' … are not aliases
-      const canonical = spec.values.includes(s) ? s : spec.aliases && Object.hasOwn(spec.aliases, s) ? spec.aliases[s] : undefined;
+      const canonical = spec.values.includes(s)
+        ? s
+        : spec.aliases && Object.hasOwn(spec.aliases, s)
+          ? spec.aliases[s]
+          : undefined;
       if (canonical === undefined) {
         return fail('invalid', `${short(raw)} is not one of ${spec.values.join(', ')}`);
       }
@@ -144,14 +177,19 @@ function parseOne(spec: ParamSpec, raw: string): Parsed {
       if (xs === null || xs.length !== 3) return fail('invalid', `${short(raw)} is not three numbers x,y,z`);
       const c = xs.map((x) => clamp(x, spec.min, spec.max)) as [number, number, number];
       if (c.some((x, i) => x !== xs[i])) {
-        return { ok: true, value: c, problem: `has a component outside ${rangeText(spec.min, spec.max)}; using ${c.join(',')}` };
+        return {
+          ok: true,
+          value: c,
+          problem: `has a component outside ${rangeText(spec.min, spec.max)}; using ${c.join(',')}`,
+        };
       }
       return { ok: true, value: c };
     }
     case 'list': {
       if (raw.trim() === '') return { ok: true, value: spec.default === null ? null : [...spec.default] };
       const count = raw.split(',').length;
-      if (count > spec.maxItems) return fail('invalid', `has ${count} items; at most ${spec.maxItems} are allowed`);
+      if (count > spec.maxItems)
+        return fail('invalid', `has ${count} items; at most ${spec.maxItems} are allowed`);
       const xs = parseNumberList(raw);
       if (xs === null) return fail('invalid', `${short(raw)} is not a comma-separated list of numbers`);
       if (spec.minItems !== undefined && xs.length < spec.minItems) {
@@ -159,7 +197,11 @@ function parseOne(spec: ParamSpec, raw: string): Parsed {
       }
       const c = xs.map((x) => clamp(x, spec.min, spec.max));
       if (c.some((x, i) => x !== xs[i])) {
-        return { ok: true, value: c, problem: `has values outside ${rangeText(spec.min, spec.max)}; they were clamped` };
+        return {
+          ok: true,
+          value: c,
+          problem: `has values outside ${rangeText(spec.min, spec.max)}; they were clamped`,
+        };
       }
       return { ok: true, value: c };
     }
@@ -184,14 +226,23 @@ export function defaultValues<S extends ParamSchema>(schema: S): ParamValues<S> 
  * `problems`, and the value falls back to the default (or the clamped value). Shell parameters
  * (embed, present, theme) are ignored here.
  */
-export function parseParams<S extends ParamSchema>(schema: S, query: string | URLSearchParams): ParsedParams<S> {
+export function parseParams<S extends ParamSchema>(
+  schema: S,
+  query: string | URLSearchParams,
+): ParsedParams<S> {
   const values = defaultValues(schema) as Record<string, unknown>;
   const problems: ParamProblem[] = [];
   let entries: [string, string, string][];
   try {
-    entries = typeof query === 'string' ? splitQuery(query.startsWith('?') ? query.slice(1) : query) : [...query].map(([k, v]) => [k, v, v]);
+    entries =
+      typeof query === 'string'
+        ? splitQuery(query.startsWith('?') ? query.slice(1) : query)
+        : [...query].map(([k, v]) => [k, v, v]);
   } catch {
-    return { values: values as ParamValues<S>, problems: [{ name: '(query)', message: 'could not be read' }] };
+    return {
+      values: values as ParamValues<S>,
+      problems: [{ name: '(query)', message: 'could not be read' }],
+    };
   }
   const seen = new Set<string>();
   let unknownCount = 0;
@@ -199,7 +250,11 @@ export function parseParams<S extends ParamSchema>(schema: S, query: string | UR
     if ((SHELL_PARAMS as readonly string[]).includes(name)) continue;
     if (!Object.hasOwn(schema, name)) {
       unknownCount++;
-      if (unknownCount <= 5) problems.push({ name: name.length > 24 ? `${name.slice(0, 24)}…` : name, message: 'is not a parameter of this scene; ignored' });
+      if (unknownCount <= 5)
+        problems.push({
+          name: name.length > 24 ? `${name.slice(0, 24)}…` : name,
+          message: 'is not a parameter of this scene; ignored',
+        });
       continue;
     }
     if (seen.has(name)) {
@@ -207,7 +262,7 @@ export function parseParams<S extends ParamSchema>(schema: S, query: string | UR
       continue;
     }
     seen.add(name);
-    const spec = schema[name]!;
+    const spec = schema[name];
     const isExpr = spec.kind === 'string' && spec.expression !== undefined;
     const raw = isExpr ? plusRaw : formRaw;
     const r = parseOne(spec, raw);
@@ -215,13 +270,18 @@ export function parseParams<S extends ParamSchema>(schema: S, query: string | UR
       values[name] = r.value;
       if (r.problem) problems.push({ name, message: r.problem });
       else if (isExpr && plusRaw !== formRaw) {
-        problems.push({ name, message: 'contains "+", read as a plus sign (not as a space, as web forms would); write %2B for a plus to be unambiguous' });
+        problems.push({
+          name,
+          message:
+            'contains "+", read as a plus sign (not as a space, as web forms would); write %2B for a plus to be unambiguous',
+        });
       }
     } else {
       problems.push({ name, message: `${r.message}; using the default ${describeDefault(spec)}` });
     }
   }
-  if (unknownCount > 5) problems.push({ name: '(others)', message: `${unknownCount - 5} more unknown parameters ignored` });
+  if (unknownCount > 5)
+    problems.push({ name: '(others)', message: `${unknownCount - 5} more unknown parameters ignored` });
   return { values: values as ParamValues<S>, problems };
 }
 
@@ -268,11 +328,17 @@ export function sanitizeValue(spec: ParamSpec, v: unknown): unknown {
     case 'bool':
       return typeof v === 'boolean' ? v : undefined;
     case 'vec3':
-      if (!Array.isArray(v) || v.length !== 3 || !v.every((x) => typeof x === 'number' && Number.isFinite(x))) return undefined;
+      if (!Array.isArray(v) || v.length !== 3 || !v.every((x) => typeof x === 'number' && Number.isFinite(x)))
+        return undefined;
       return (v as number[]).map((x) => clamp(x, spec.min, spec.max));
     case 'list':
       if (v === null) return spec.default === null ? null : undefined;
-      if (!Array.isArray(v) || v.length > spec.maxItems || (spec.minItems !== undefined && v.length < spec.minItems)) return undefined;
+      if (
+        !Array.isArray(v) ||
+        v.length > spec.maxItems ||
+        (spec.minItems !== undefined && v.length < spec.minItems)
+      )
+        return undefined;
       if (!v.every((x) => typeof x === 'number' && Number.isFinite(x))) return undefined;
       return (v as number[]).map((x) => clamp(x, spec.min, spec.max));
   }
@@ -283,7 +349,7 @@ export function sanitizePatch(schema: ParamSchema, patch: Record<string, unknown
   const out: Record<string, unknown> = {};
   for (const [k, v] of Object.entries(patch)) {
     if (!Object.hasOwn(schema, k)) continue;
-    const c = sanitizeValue(schema[k]!, v);
+    const c = sanitizeValue(schema[k], v);
     if (c !== undefined) out[k] = c;
   }
   return out;
@@ -341,5 +407,9 @@ export function serializeParams<S extends ParamSchema>(
 
 /** encodeURIComponent, but keeping `,` `;` `(` `)` `*` readable in shared links. */
 function encodeComponent(s: string): string {
-  return encodeURIComponent(s).replace(/%2C/g, ',').replace(/%3B/g, ';').replace(/%28/g, '(').replace(/%29/g, ')');
+  return encodeURIComponent(s)
+    .replace(/%2C/g, ',')
+    .replace(/%3B/g, ';')
+    .replace(/%28/g, '(')
+    .replace(/%29/g, ')');
 }

@@ -32,7 +32,14 @@ export interface ShellFlags {
 
 /** Read the shell's own flags (embed, present, theme) from a query string. Never throws. */
 export function parseShellFlags(query: string): ShellFlags {
-  const flags: ShellFlags = { embed: false, present: false, theme: null, part: null, origins: [], problems: [] };
+  const flags: ShellFlags = {
+    embed: false,
+    present: false,
+    theme: null,
+    part: null,
+    origins: [],
+    problems: [],
+  };
   let sp: URLSearchParams;
   try {
     sp = new URLSearchParams(query);
@@ -51,12 +58,20 @@ export function parseShellFlags(query: string): ShellFlags {
   const t = sp.get('theme');
   if (t !== null) {
     if (t === 'light' || t === 'dark') flags.theme = t;
-    else flags.problems.push({ name: 'theme', message: `${JSON.stringify(t.slice(0, 24))} is not light or dark; using the system's` });
+    else
+      flags.problems.push({
+        name: 'theme',
+        message: `${JSON.stringify(t.slice(0, 24))} is not light or dark; using the system's`,
+      });
   }
   const part = sp.get('part');
   if (part !== null) {
     if (/^[1-6][a-d]?$/.test(part)) flags.part = part;
-    else flags.problems.push({ name: 'part', message: `${JSON.stringify(part.slice(0, 24))} is not an exam part like 1c; showing the top of the page` });
+    else
+      flags.problems.push({
+        name: 'part',
+        message: `${JSON.stringify(part.slice(0, 24))} is not an exam part like 1c; showing the top of the page`,
+      });
   }
   const o = parseOrigins(sp.get('origin'));
   flags.origins = o.origins;
@@ -82,17 +97,23 @@ export function parseOrigins(raw: string | null): { origins: string[]; problem: 
     }
     if (!ok) bad.push(clip(s, 24));
   }
-  const problem = bad.length ? `${bad.map((b) => JSON.stringify(b)).join(', ')} ${bad.length > 1 ? 'are not origins' : 'is not an origin'} like https://lms.example.edu; ignored` : null;
+  const problem = bad.length
+    ? `${bad.map((b) => JSON.stringify(b)).join(', ')} ${bad.length > 1 ? 'are not origins' : 'is not an origin'} like https://lms.example.edu; ignored`
+    : null;
   return { origins: origins.slice(0, 16), problem };
 }
-
 
 function clip(s: string, n: number): string {
   return s.length > n ? `${s.slice(0, n)}…` : s;
 }
 
 /** The shell flags as query entries, for links that must keep the mode. */
-export function shellExtras(flags: Pick<ShellFlags, 'embed' | 'present' | 'theme'> & { part?: string | null; origins?: readonly string[] }): Record<string, string | undefined> {
+export function shellExtras(
+  flags: Pick<ShellFlags, 'embed' | 'present' | 'theme'> & {
+    part?: string | null;
+    origins?: readonly string[];
+  },
+): Record<string, string | undefined> {
   return {
     part: flags.part ?? undefined,
     embed: flags.embed ? '1' : undefined,

@@ -26,9 +26,13 @@ export default function Guide({ flags }: { flags: ShellFlags }) {
         </a>
       </div>
       <p className="guide-lead">
-        For each exam question, a lesson plan: three to five links that open a scene in a telling configuration, with a question to put to the
-        class at each step (ask first, then reveal). Every number the class sees is computed live in the browser from the link’s parameters, so
-        a link opens the same picture on every student’s screen. {flags.present ? 'The links keep classroom mode.' : 'Open this guide with present=1 and the links open in classroom mode.'}
+        For each exam question, a lesson plan: three to five links that open a scene in a telling
+        configuration, with a question to put to the class at each step (ask first, then reveal). Every number
+        the class sees is computed live in the browser from the link’s parameters, so a link opens the same
+        picture on every student’s screen.{' '}
+        {flags.present
+          ? 'The links keep classroom mode.'
+          : 'Open this guide with present=1 and the links open in classroom mode.'}
       </p>
       <nav aria-label="Sections of the guide" className="guide-toc">
         <ul>
@@ -53,7 +57,13 @@ export default function Guide({ flags }: { flags: ShellFlags }) {
       </nav>
 
       {LESSONS.map((l) => (
-        <section key={l.id} id={`guide-${l.id}`} tabIndex={-1} className="guide-lesson" aria-labelledby={`guide-${l.id}-h`}>
+        <section
+          key={l.id}
+          id={`guide-${l.id}`}
+          tabIndex={-1}
+          className="guide-lesson"
+          aria-labelledby={`guide-${l.id}-h`}
+        >
           <h2 id={`guide-${l.id}-h`}>
             <span className="question-tag">{l.question}</span> {l.title}
           </h2>
@@ -97,38 +107,44 @@ export default function Guide({ flags }: { flags: ShellFlags }) {
         <h2 id="guide-embed-h">Embed, print and go offline</h2>
         <h3>Embed a scene in a course page</h3>
         <p>
-          Set the scene up, then press <strong>Copy embed code</strong>: it gives an <code>&lt;iframe&gt;</code> with an id and a short script that
-          resizes it to the scene’s content (the scene posts only its height and its id). Paste both into the course page (Moodle, Canvas and most
-          LMSs accept them in an HTML block). Add <code>origin=https://your-lms.example.edu</code> to the iframe’s link so that the scene talks
-          only to your course page.
+          Set the scene up, then press <strong>Copy embed code</strong>: it gives an{' '}
+          <code>&lt;iframe&gt;</code> with an id and a short script that resizes it to the scene’s content
+          (the scene posts only its height and its id). Paste both into the course page (Moodle, Canvas and
+          most LMSs accept them in an HTML block). Add <code>origin=https://your-lms.example.edu</code> to the
+          iframe’s link so that the scene talks only to your course page.
         </p>
         <p>
-          A course page can also drive the scene: read its parameters, set them (checked exactly like a link’s), hear about every change a student
-          makes and every practice verdict, and play, pause or seek an animation. The README’s “Host-page API” section lists the messages, and{' '}
+          A course page can also drive the scene: read its parameters, set them (checked exactly like a
+          link’s), hear about every change a student makes and every practice verdict, and play, pause or seek
+          an animation. The README’s “Host-page API” section lists the messages, and{' '}
           <code>examples/host.html</code> in the source is a working page to copy from.
         </p>
         <h3>Show it in the lecture hall</h3>
         <p>
-          Add <code>present=1</code> to any link (or open this guide with it): larger type, keyboard shortcuts (press <kbd>?</kbd>). The{' '}
-          <strong>QR code</strong> button beside Copy link shows the current configuration as a large code that students scan to get the same
-          scene on their phones. On phones and tablets a 3D view starts when the student taps <strong>Show the 3D view</strong> (it is the
-          heaviest part of a page on a phone, and until then swipes over it scroll the page); every number and plot works without it.
+          Add <code>present=1</code> to any link (or open this guide with it): larger type, keyboard shortcuts
+          (press <kbd>?</kbd>). The <strong>QR code</strong> button beside Copy link shows the current
+          configuration as a large code that students scan to get the same scene on their phones. On phones
+          and tablets a 3D view starts when the student taps <strong>Show the 3D view</strong> (it is the
+          heaviest part of a page on a phone, and until then swipes over it scroll the page); every number and
+          plot works without it.
         </p>
         <h3>Print</h3>
         <p>
-          Print this guide as a handout with your browser’s Print command: the links are printed with their addresses. A scene prints as it is on
-          screen, in its current configuration; the link in the address bar (or a QR code) brings it back.
+          Print this guide as a handout with your browser’s Print command: the links are printed with their
+          addresses. A scene prints as it is on screen, in its current configuration; the link in the address
+          bar (or a QR code) brings it back.
         </p>
         <h3>Go offline</h3>
         <p>
-          After one visit, the app works with no network: every scene, including those not yet opened, comes from the browser’s cache. Browsers
-          that offer it can <strong>install</strong> the app (the install icon in the address bar). When a new version is published, a small notice
-          offers to reload; until then the version you have keeps working, whole.
+          After one visit, the app works with no network: every scene, including those not yet opened, comes
+          from the browser’s cache. Browsers that offer it can <strong>install</strong> the app (the install
+          icon in the address bar). When a new version is published, a small notice offers to reload; until
+          then the version you have keeps working, whole.
         </p>
         <p>
-          For a lecture hall with no network at all, or an LMS that takes files rather than links, build the <strong>single-file copy</strong>{' '}
-          (<code>npm run build:single</code>): one HTML file with every scene inside, which opens by double-click from a USB stick or as an
-          uploaded LMS file.
+          For a lecture hall with no network at all, or an LMS that takes files rather than links, build the{' '}
+          <strong>single-file copy</strong> (<code>npm run build:single</code>): one HTML file with every
+          scene inside, which opens by double-click from a USB stick or as an uploaded LMS file.
         </p>
       </section>
     </main>

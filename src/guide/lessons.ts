@@ -34,28 +34,32 @@ export const LESSONS: readonly Lesson[] = [
         route: '/hemisphere',
         params: { lobe: 'exam', n: '2000' },
         title: 'The exam’s density, 2,000 samples',
-        shows: 'p(ω) = k cos θ e^φ with its normalization k, the marginals, the CDFs and the inverted samples on the hemisphere.',
+        shows:
+          'p(ω) = k cos θ e^φ with its normalization k, the marginals, the CDFs and the inverted samples on the hemisphere.',
         ask: 'Before you reveal the points: where will they bunch up? Which factor decides the direction in θ, which in φ?',
       },
       {
         route: '/hemisphere',
         params: { lobe: 'exam', jacobian: 'inverted' },
         title: 'The Jacobian written upside down',
-        shows: 'The key also grades p(θ, φ) = p(ω) / sin θ ∝ cot θ e^φ; the scene shows why it is not a density: its θ-integral diverges at θ → 0.',
+        shows:
+          'The key also grades p(θ, φ) = p(ω) / sin θ ∝ cot θ e^φ; the scene shows why it is not a density: its θ-integral diverges at θ → 0.',
         ask: 'Integrate cot θ from 0 to π/2. Can a function whose integral is infinite be normalized? Where did the sin θ come from?',
       },
       {
         route: '/hemisphere',
         params: { lobe: 'uniform', n: '2000' },
         title: 'Uniform over solid angle is not uniform in θ',
-        shows: 'A uniform density per steradian, p(ω) = 1/(2π): the θ histogram follows sin θ, not a flat line.',
+        shows:
+          'A uniform density per steradian, p(ω) = 1/(2π): the θ histogram follows sin θ, not a flat line.',
         ask: 'Why are there so few samples near the pole? What is p(θ) when p(ω) is constant?',
       },
       {
         route: '/hemisphere',
         params: { lobe: 'exam', points: 'stratified', n: '400' },
         title: 'The same inversion, stratified inputs',
-        shows: 'Stratified (ξ₁, ξ₂) through the same inverse CDFs: the warped grid shows how the inversion stretches the unit square.',
+        shows:
+          'Stratified (ξ₁, ξ₂) through the same inverse CDFs: the warped grid shows how the inversion stretches the unit square.',
         ask: 'Where is the warped grid stretched, where squeezed? How does that relate to p?',
       },
       {
@@ -97,14 +101,16 @@ export const LESSONS: readonly Lesson[] = [
         route: '/hemisphere',
         params: { lobe: 'phong', exponent: '20', f: 'cos(theta)' },
         title: 'A lobe much narrower than f',
-        shows: 'A Phong lobe cos²⁰ θ sampling f = cos θ: f/p ∝ cos⁻¹⁹ θ grows without bound near the horizon.',
+        shows:
+          'A Phong lobe cos²⁰ θ sampling f = cos θ: f/p ∝ cos⁻¹⁹ θ grows without bound near the horizon.',
         ask: 'Unbiasedness needs p > 0 wherever f ≠ 0, and it holds here. So why do the estimates jump? What is the variance?',
       },
       {
         route: '/monte-carlo',
         params: { hn: '4' },
         title: 'Unbiased, one estimate at a time (Q2c)',
-        shows: 'The histogram of many independent estimates, each from only 4 samples, with its mean against the exact integral.',
+        shows:
+          'The histogram of many independent estimates, each from only 4 samples, with its mean against the exact integral.',
         ask: 'Almost every single estimate is wrong. Where is the mean of the histogram? State E[⟨I⟩] = ∫ f with linearity of expectation and E[g(X)] = ∫ g p.',
       },
     ],
@@ -118,7 +124,8 @@ export const LESSONS: readonly Lesson[] = [
         route: '/texture',
         params: { u: '0.4', v: '0.24' },
         title: 'The exam’s lookup (Q3a, Q3b)',
-        shows: 'The 5 × 5 grid, the query point, its nearest node and the bilinear steps with the cell-size division.',
+        shows:
+          'The 5 × 5 grid, the query point, its nearest node and the bilinear steps with the cell-size division.',
         ask: 'Which node is nearest? Which four nodes enter the bilinear lookup, and with which weights?',
       },
       {
@@ -132,7 +139,8 @@ export const LESSONS: readonly Lesson[] = [
         route: '/texture',
         params: { u: '0.4', v: '0.24', align: 'center' },
         title: 'Values at texel centres',
-        shows: 'The GPU convention: node (i, j) sits at ((i + ½)/N, (j + ½)/N), so the same (u, v) falls in another cell.',
+        shows:
+          'The GPU convention: node (i, j) sits at ((i + ½)/N, (j + ½)/N), so the same (u, v) falls in another cell.',
         ask: 'Why does a GPU put values at texel centres? Does the nearest value change here, and does the bilinear one?',
       },
       {
@@ -174,7 +182,8 @@ export const LESSONS: readonly Lesson[] = [
         route: '/monte-carlo',
         params: { pdf: 'linear' },
         title: 'A pdf that is close to f',
-        shows: 'The ramp through |f(a)| and |f(b)|: not proportional to f, yet far less variance than uniform.',
+        shows:
+          'The ramp through |f(a)| and |f(b)|: not proportional to f, yet far less variance than uniform.',
         ask: 'Compare the spread of the estimates with the uniform ones. What makes a pdf good in practice?',
       },
       {
@@ -188,7 +197,8 @@ export const LESSONS: readonly Lesson[] = [
         route: '/monte-carlo',
         params: { f: '1/sqrt(x)', a: '0', b: '1' },
         title: 'A finite integral with infinite variance',
-        shows: '∫₀¹ x^(−½) dx = 2 is finite, but f² is not integrable: uniform sampling is unbiased with infinite variance.',
+        shows:
+          '∫₀¹ x^(−½) dx = 2 is finite, but f² is not integrable: uniform sampling is unbiased with infinite variance.',
         ask: 'Is the estimator unbiased? Why does the running estimate jump even at large N? Which pdf would tame it?',
       },
     ],
@@ -230,7 +240,8 @@ export const LESSONS: readonly Lesson[] = [
         route: '/ray-sphere',
         params: { o: '0,0,0', d: '1,5e-9,0', c: '100000000,0,0', r: '1', method: 'naive' },
         title: 'The textbook form breaks far away',
-        shows: 'A small sphere 10⁸ radii away: the textbook b² − 4ac′ rounds to zero; switch to the stable method to compare.',
+        shows:
+          'A small sphere 10⁸ radii away: the textbook b² − 4ac′ rounds to zero; switch to the stable method to compare.',
         ask: 'Which subtraction loses all the digits? How do the stable forms (Ray Tracing Gems, ch. 7) avoid it?',
       },
     ],
@@ -251,7 +262,8 @@ export const LESSONS: readonly Lesson[] = [
         route: '/area-light',
         params: { lc: '0,0,0.25', ls: '2,2', strategy: 'area' },
         title: 'A big light close by, sampled by area (Q6c)',
-        shows: 'Uniform area sampling, p_A = 1/|A|: r² varies wildly over the light, so the estimate is noisy.',
+        shows:
+          'Uniform area sampling, p_A = 1/|A|: r² varies wildly over the light, so the estimate is noisy.',
         ask: 'Which samples get the largest weights |A| cos θ cos θ_l / r²? Which strategy would you choose here?',
       },
       {

@@ -13,7 +13,15 @@ import { useCallback, useEffect, useMemo, useState, type FormEvent } from 'react
 import { MathTex } from '../ui/MathTex';
 import { shellExtras, type ShellFlags } from '../app/route';
 import { checkAnswer, expectedText, FORMULA_POLICY, NUMERIC_POLICY, type Verdict } from './check';
-import { allAnswers, fmt, QUESTION_IDS, type AnswerSpec, type Given, type QuestionId, type Variant } from './model';
+import {
+  allAnswers,
+  fmt,
+  QUESTION_IDS,
+  type AnswerSpec,
+  type Given,
+  type QuestionId,
+  type Variant,
+} from './model';
 import { QUESTIONS, isQuestionId, questionInfo, sheetSeed } from './questions';
 import { loadProgress, recordCheck, resetProgress, type Progress } from './progress';
 import './practice.css';
@@ -29,7 +37,7 @@ const MAX_SEED = 0xffffffff;
 function randomSeed(): number {
   const a = new Uint32Array(1);
   crypto.getRandomValues(a);
-  return a[0]! % 100000; // short numbers read well in a link ("variant 17")
+  return a[0] % 100000; // short numbers read well in a link ("variant 17")
 }
 
 function extras(flags: ShellFlags): string {
@@ -45,7 +53,10 @@ function parseSeed(raw: string | null): { seed: number | null; problem: string |
   if (raw === null) return { seed: null, problem: null };
   const s = raw.trim();
   if (/^\d{1,10}$/.test(s) && Number(s) <= MAX_SEED) return { seed: Number(s), problem: null };
-  return { seed: null, problem: `seed ${JSON.stringify(s.slice(0, 24))} is not a whole number from 0 to ${MAX_SEED}; a new variant was drawn instead.` };
+  return {
+    seed: null,
+    problem: `seed ${JSON.stringify(s.slice(0, 24))} is not a whole number from 0 to ${MAX_SEED}; a new variant was drawn instead.`,
+  };
 }
 
 export default function PracticeRoute({ path, query, flags }: Props) {
@@ -58,7 +69,8 @@ export default function PracticeRoute({ path, query, flags }: Props) {
     <main id="main" className="page practice" tabIndex={-1}>
       <h1>Page not found</h1>
       <p role="status">
-        There is no practice page <code>{sub.slice(0, 40)}</code>. <a href="#/practice">See the practice questions</a>.
+        There is no practice page <code>{sub.slice(0, 40)}</code>.{' '}
+        <a href="#/practice">See the practice questions</a>.
       </p>
     </main>
   );
@@ -70,7 +82,9 @@ export default function PracticeRoute({ path, query, flags }: Props) {
 function PracticeHome({ flags }: { flags: ShellFlags }) {
   const [progress, setProgress] = useState<Progress>(() => loadProgress());
   const [status, setStatus] = useState('');
-  const [sheetQs, setSheetQs] = useState<Record<QuestionId, boolean>>(() => Object.fromEntries(QUESTION_IDS.map((q) => [q, true])) as Record<QuestionId, boolean>);
+  const [sheetQs, setSheetQs] = useState<Record<QuestionId, boolean>>(
+    () => Object.fromEntries(QUESTION_IDS.map((q) => [q, true])) as Record<QuestionId, boolean>,
+  );
   const [count, setCount] = useState(1);
   const [sheetSeedText, setSheetSeedText] = useState('1');
   useEffect(() => {
@@ -88,9 +102,9 @@ function PracticeHome({ flags }: { flags: ShellFlags }) {
         </a>
       </div>
       <p className="lead">
-        Each question draws fresh numbers from a seed, checks your answers the way the key grades them, names the classic mistakes, and then shows
-        the worked solution of your variant. The same seed always gives the same variant, so a link like <code>#/practice/q3?seed=17</code> is
-        “variant 17” for everyone.
+        Each question draws fresh numbers from a seed, checks your answers the way the key grades them, names
+        the classic mistakes, and then shows the worked solution of your variant. The same seed always gives
+        the same variant, so a link like <code>#/practice/q3?seed=17</code> is “variant 17” for everyone.
       </p>
       <ol className="practice-list">
         {QUESTIONS.map((q) => {
@@ -104,7 +118,12 @@ function PracticeHome({ flags }: { flags: ShellFlags }) {
                 </h2>
               </div>
               <p>{q.blurb}</p>
-              <p className="practice-progress" data-testid={`progress-${q.id}`} data-attempted={p.attempted.length} data-correct={p.correct.length}>
+              <p
+                className="practice-progress"
+                data-testid={`progress-${q.id}`}
+                data-attempted={p.attempted.length}
+                data-correct={p.correct.length}
+              >
                 {p.attempted.length === 0
                   ? 'Not tried yet.'
                   : `${p.attempted.length} variant${p.attempted.length === 1 ? '' : 's'} tried, ${p.correct.length} fully correct.`}
@@ -124,7 +143,8 @@ function PracticeHome({ flags }: { flags: ShellFlags }) {
         >
           Reset progress
         </button>{' '}
-        <span role="status">{status}</span> <span className="muted">Progress is kept in this browser only.</span>
+        <span role="status">{status}</span>{' '}
+        <span className="muted">Progress is kept in this browser only.</span>
       </p>
       <section className="panel sheet-builder" aria-labelledby="sheet-title">
         <h2 id="sheet-title">Worksheet for a class (printable)</h2>
@@ -132,19 +152,42 @@ function PracticeHome({ flags }: { flags: ShellFlags }) {
           <legend>Questions</legend>
           {QUESTIONS.map((q) => (
             <label key={q.id} className="check-label">
-              <input type="checkbox" checked={sheetQs[q.id]} onChange={(e) => setSheetQs({ ...sheetQs, [q.id]: e.target.checked })} /> Q{q.n}
+              <input
+                type="checkbox"
+                checked={sheetQs[q.id]}
+                onChange={(e) => setSheetQs({ ...sheetQs, [q.id]: e.target.checked })}
+              />{' '}
+              Q{q.n}
             </label>
           ))}
         </fieldset>
         <label>
           Variants of each{' '}
-          <input type="number" min={1} max={10} value={count} onChange={(e) => setCount(Math.min(10, Math.max(1, Math.round(Number(e.target.value)) || 1)))} />
+          <input
+            type="number"
+            min={1}
+            max={10}
+            value={count}
+            onChange={(e) => setCount(Math.min(10, Math.max(1, Math.round(Number(e.target.value)) || 1)))}
+          />
         </label>{' '}
         <label>
-          Seed <input type="text" inputMode="numeric" value={sheetSeedText} onChange={(e) => setSheetSeedText(e.target.value)} aria-invalid={!seedOk} size={10} />
+          Seed{' '}
+          <input
+            type="text"
+            inputMode="numeric"
+            value={sheetSeedText}
+            onChange={(e) => setSheetSeedText(e.target.value)}
+            aria-invalid={!seedOk}
+            size={10}
+          />
         </label>{' '}
         <a href={sheetHref}>Open the worksheet</a>
-        {!seedOk ? <p className="notice notice-warn">The seed must be a whole number from 0 to {MAX_SEED}; the link uses 1.</p> : null}
+        {!seedOk ? (
+          <p className="notice notice-warn">
+            The seed must be a whole number from 0 to {MAX_SEED}; the link uses 1.
+          </p>
+        ) : null}
       </section>
     </main>
   );
@@ -157,7 +200,10 @@ function QuestionRoute({ q, sp, flags }: { q: QuestionId; sp: URLSearchParams; f
   const parsed = parseSeed(sp.get('seed'));
   const [fallback] = useState(() => randomSeed());
   const seed = parsed.seed ?? fallback;
-  const problems = [...flags.problems.map((p) => `${p.name} ${p.message}`), ...(parsed.problem ? [parsed.problem] : [])];
+  const problems = [
+    ...flags.problems.map((p) => `${p.name} ${p.message}`),
+    ...(parsed.problem ? [parsed.problem] : []),
+  ];
   // a link without a (valid) seed gets one, so the page's URL names its variant
   useEffect(() => {
     if (parsed.seed !== null) return;
@@ -192,7 +238,15 @@ function ParamNotice({ problems, heading = false }: { problems: string[]; headin
   );
 }
 
-function QuestionPage({ variant, flags, problems }: { variant: Variant; flags: ShellFlags; problems: string[] }) {
+function QuestionPage({
+  variant,
+  flags,
+  problems,
+}: {
+  variant: Variant;
+  flags: ShellFlags;
+  problems: string[];
+}) {
   const info = questionInfo(variant.question);
   const answers = allAnswers(variant);
   const [inputs, setInputs] = useState<Record<string, string>>({});
@@ -214,7 +268,11 @@ function QuestionPage({ variant, flags, problems }: { variant: Variant; flags: S
         if (text.trim() === '') continue;
         const v = await checkAnswer(a, text);
         out[a.name] = v;
-        window.dispatchEvent(new CustomEvent('rml:practice-verdict', { detail: { question: variant.question, seed: variant.seed, name: a.name, verdict: v.value } }));
+        window.dispatchEvent(
+          new CustomEvent('rml:practice-verdict', {
+            detail: { question: variant.question, seed: variant.seed, name: a.name, verdict: v.value },
+          }),
+        );
       }
       setVerdicts(out);
       setChecking(false);
@@ -248,7 +306,12 @@ function QuestionPage({ variant, flags, problems }: { variant: Variant; flags: S
           <span className="question-tag">Practice Q{info.n}</span> {variant.title}
         </h1>
         {flags.embed ? (
-          <a className="open-full" href={`${window.location.pathname}#/practice/${variant.question}?seed=${variant.seed}`} target="_blank" rel="noopener">
+          <a
+            className="open-full"
+            href={`${window.location.pathname}#/practice/${variant.question}?seed=${variant.seed}`}
+            target="_blank"
+            rel="noopener"
+          >
             Open in Render Math Lab ↗
           </a>
         ) : (
@@ -278,7 +341,10 @@ function QuestionPage({ variant, flags, problems }: { variant: Variant; flags: S
           <summary>How answers are checked</summary>
           <p>{NUMERIC_POLICY.text}</p>
           <p>{FORMULA_POLICY.text}</p>
-          <p>Classic mistakes the key deducts marks for are recognised and named. Where the key accepts another convention (v′ = 1 − v), it is accepted and said so.</p>
+          <p>
+            Classic mistakes the key deducts marks for are recognised and named. Where the key accepts another
+            convention (v′ = 1 − v), it is accepted and said so.
+          </p>
         </details>
         {variant.parts.map((part) => (
           <fieldset key={part.id} className="practice-part">
@@ -338,7 +404,19 @@ function answerHint(spec: AnswerSpec): string {
   return 'number, expression or none';
 }
 
-function AnswerRow({ spec, value, onChange, verdict, revealed }: { spec: AnswerSpec; value: string; onChange: (t: string) => void; verdict: Verdict | undefined; revealed: boolean }) {
+function AnswerRow({
+  spec,
+  value,
+  onChange,
+  verdict,
+  revealed,
+}: {
+  spec: AnswerSpec;
+  value: string;
+  onChange: (t: string) => void;
+  verdict: Verdict | undefined;
+  revealed: boolean;
+}) {
   const id = `answer-${spec.name}`;
   const listId = spec.kind === 'choice' ? `${id}-options` : undefined;
   const exp = expectedText(spec);
@@ -370,8 +448,21 @@ function AnswerRow({ spec, value, onChange, verdict, revealed }: { spec: AnswerS
         </datalist>
       ) : null}
       {verdict ? (
-        <p className={`verdict verdict-${kind}`} id={`verdict-${spec.name}`} data-testid={`verdict-${spec.name}`} data-value={verdict.value}>
-          <span className="verdict-tag">{kind === 'correct' ? '✓ correct' : kind === 'mistake' ? `✗ ${verdict.value}` : kind === 'invalid' ? '? not readable' : '✗ incorrect'}</span>{' '}
+        <p
+          className={`verdict verdict-${kind}`}
+          id={`verdict-${spec.name}`}
+          data-testid={`verdict-${spec.name}`}
+          data-value={verdict.value}
+        >
+          <span className="verdict-tag">
+            {kind === 'correct'
+              ? '✓ correct'
+              : kind === 'mistake'
+                ? `✗ ${verdict.value}`
+                : kind === 'invalid'
+                  ? '? not readable'
+                  : '✗ incorrect'}
+          </span>{' '}
           {verdict.message}
         </p>
       ) : null}
@@ -397,7 +488,11 @@ function Givens({ givens, testIds }: { givens: Given[]; testIds: boolean }) {
             {g.name === 'grid' ? (
               <GridTable text={g.value} testId={testIds ? `given-${g.name}` : undefined} />
             ) : (
-              <span data-testid={testIds ? `given-${g.name}` : undefined} data-value={g.value} className="given-value">
+              <span
+                data-testid={testIds ? `given-${g.name}` : undefined}
+                data-value={g.value}
+                className="given-value"
+              >
                 {g.tex ? <MathTex tex={g.tex} /> : g.display}
               </span>
             )}
@@ -414,7 +509,9 @@ function GridTable({ text, testId }: { text: string; testId?: string }) {
   return (
     <div className="grid-scroll">
       <table className="grid-table" data-testid={testId} data-value={text}>
-        <caption className="sr-only">Texel values: rows from v = 1 (top) to v = 0 (bottom), columns from u = 0 to u = 1</caption>
+        <caption className="sr-only">
+          Texel values: rows from v = 1 (top) to v = 0 (bottom), columns from u = 0 to u = 1
+        </caption>
         <tbody>
           {rows.map((r, k) => (
             <tr key={k}>
@@ -428,7 +525,7 @@ function GridTable({ text, testId }: { text: string; testId?: string }) {
             <th scope="row" className="axis-corner">
               v ↑ u →
             </th>
-            {rows[0]!.map((_, i) => (
+            {rows[0].map((_, i) => (
               <th key={i} scope="col">
                 {fmt(i / (n - 1), 3)}
               </th>
@@ -454,7 +551,10 @@ function Sheet({ sp, flags }: { sp: URLSearchParams; flags: ShellFlags }) {
   if (qRaw !== null) {
     const parts = qRaw.split(',').map((s) => `q${s.trim().replace(/^q/i, '')}`);
     const ok = parts.filter(isQuestionId);
-    if (ok.length !== parts.length || ok.length === 0) problems.push(`q ${JSON.stringify(qRaw.slice(0, 24))} should list question numbers 1–6 (e.g. 1,3,5); ${ok.length ? 'unknown ones were left out' : 'using all six'}.`);
+    if (ok.length !== parts.length || ok.length === 0)
+      problems.push(
+        `q ${JSON.stringify(qRaw.slice(0, 24))} should list question numbers 1–6 (e.g. 1,3,5); ${ok.length ? 'unknown ones were left out' : 'using all six'}.`,
+      );
     if (ok.length) qs = [...new Set(ok)];
   }
   let count = 1;
@@ -463,9 +563,14 @@ function Sheet({ sp, flags }: { sp: URLSearchParams; flags: ShellFlags }) {
     if (/^\d{1,3}$/.test(cRaw.trim()) && Number(cRaw) >= 1) {
       count = Math.min(10, Number(cRaw));
       if (Number(cRaw) > 10) problems.push(`count ${cRaw} is more than 10; using 10.`);
-    } else problems.push(`count ${JSON.stringify(cRaw.slice(0, 24))} is not a whole number from 1 to 10; using 1.`);
+    } else
+      problems.push(
+        `count ${JSON.stringify(cRaw.slice(0, 24))} is not a whole number from 1 to 10; using 1.`,
+      );
   }
-  const variants = qs.flatMap((q) => Array.from({ length: count }, (_, k) => questionInfo(q).generate(sheetSeed(seed, k))));
+  const variants = qs.flatMap((q) =>
+    Array.from({ length: count }, (_, k) => questionInfo(q).generate(sheetSeed(seed, k))),
+  );
   useEffect(() => {
     document.title = `Practice worksheet (seed ${seed}) — Render Math Lab`;
   }, [seed]);
@@ -480,14 +585,25 @@ function Sheet({ sp, flags }: { sp: URLSearchParams; flags: ShellFlags }) {
         </div>
         <ParamNotice problems={problems} />
         <p>
-          {variants.length} question page{variants.length === 1 ? '' : 's'}, then the answer key. <button type="button" onClick={() => window.print()}>Print</button>{' '}
-          <span className="muted">Each question prints on its own page; the answer key follows on the last page.</span>
+          {variants.length} question page{variants.length === 1 ? '' : 's'}, then the answer key.{' '}
+          <button type="button" onClick={() => window.print()}>
+            Print
+          </button>{' '}
+          <span className="muted">
+            Each question prints on its own page; the answer key follows on the last page.
+          </span>
         </p>
       </div>
       {variants.map((v, i) => (
-        <section key={`${v.question}-${v.seed}`} className="sheet-page" data-testid="sheet-page" aria-labelledby={`sheet-q-${i}`}>
+        <section
+          key={`${v.question}-${v.seed}`}
+          className="sheet-page"
+          data-testid="sheet-page"
+          aria-labelledby={`sheet-q-${i}`}
+        >
           <h2 id={`sheet-q-${i}`}>
-            {i + 1}. Question {questionInfo(v.question).n}: {v.title} <span className="muted">(variant {v.seed})</span>
+            {i + 1}. Question {questionInfo(v.question).n}: {v.title}{' '}
+            <span className="muted">(variant {v.seed})</span>
           </h2>
           <p>{v.statement}</p>
           <Givens givens={v.givens} testIds={false} />
@@ -501,7 +617,9 @@ function Sheet({ sp, flags }: { sp: URLSearchParams; flags: ShellFlags }) {
               ))}
             </div>
           ))}
-          <p className="muted sheet-link">Check online: #/practice/{v.question}?seed={v.seed}</p>
+          <p className="muted sheet-link">
+            Check online: #/practice/{v.question}?seed={v.seed}
+          </p>
         </section>
       ))}
       <section className="sheet-key" data-testid="sheet-key" aria-labelledby="sheet-key-title">
@@ -514,7 +632,10 @@ function Sheet({ sp, flags }: { sp: URLSearchParams; flags: ShellFlags }) {
             <p className="key-answers">
               {allAnswers(v).map((a) => (
                 <span key={a.name} className="key-answer">
-                  {a.label} = <strong>{a.kind === 'number' && a.expected !== null ? fmt(a.expected, 6) : expectedText(a)}</strong>
+                  {a.label} ={' '}
+                  <strong>
+                    {a.kind === 'number' && a.expected !== null ? fmt(a.expected, 6) : expectedText(a)}
+                  </strong>
                 </span>
               ))}
             </p>

@@ -1,6 +1,16 @@
 /** Small builders shared by the question generators (pure). */
 import { separateFormulas, separateNumbers } from './check';
-import type { ChoiceAnswer, ChoiceMistake, FormulaAnswer, FormulaAlternative, FormulaMistake, Fn, NumberAlternative, NumberAnswer, Rational } from './model';
+import type {
+  ChoiceAnswer,
+  ChoiceMistake,
+  FormulaAnswer,
+  FormulaAlternative,
+  FormulaMistake,
+  Fn,
+  NumberAlternative,
+  NumberAnswer,
+  Rational,
+} from './model';
 import { Rng } from '../core/random';
 
 export function numberAnswer(
@@ -24,16 +34,40 @@ export function formulaAnswer(
   mistakes: FormulaMistake[],
 ): FormulaAnswer {
   const d = [domain] as const;
-  return { kind: 'formula', name, label, variables: [variable], domain: d, expected, expectedText, ...separateFormulas(expected, d, alternatives, mistakes) };
+  return {
+    kind: 'formula',
+    name,
+    label,
+    variables: [variable],
+    domain: d,
+    expected,
+    expectedText,
+    ...separateFormulas(expected, d, alternatives, mistakes),
+  };
 }
 
-export function choiceAnswer(name: string, label: string, options: readonly string[], expected: string, mistakes: ChoiceMistake[], why: string): ChoiceAnswer {
-  return { kind: 'choice', name, label, options, expected, mistakes: mistakes.filter((m) => m.value !== expected), why };
+export function choiceAnswer(
+  name: string,
+  label: string,
+  options: readonly string[],
+  expected: string,
+  mistakes: ChoiceMistake[],
+  why: string,
+): ChoiceAnswer {
+  return {
+    kind: 'choice',
+    name,
+    label,
+    options,
+    expected,
+    mistakes: mistakes.filter((m) => m.value !== expected),
+    why,
+  };
 }
 
 /** One element of a list, drawn uniformly. */
 export function pick<T>(rng: Rng, xs: readonly T[]): T {
-  return xs[rng.nextInt(xs.length)]!;
+  return xs[rng.nextInt(xs.length)];
 }
 
 /** A uniform integer in [lo, hi]. */

@@ -37,15 +37,13 @@ export const NUMERIC_POLICY = {
   rtol: 0.005,
   /** Absolute tolerance when the expected value is exactly 0. */
   zeroTol: 1e-6,
-  text:
-    'Numbers: type a number or an arithmetic expression such as 56/3 or 2*pi. An answer within 0.5 % of the exact value is correct, so 3 significant figures are enough (give more if you have them). Type none where a quantity does not exist.',
+  text: 'Numbers: type a number or an arithmetic expression such as 56/3 or 2*pi. An answer within 0.5 % of the exact value is correct, so 3 significant figures are enough (give more if you have them). Type none where a quantity does not exist.',
 } as const;
 
 export const FORMULA_POLICY = {
   points: 40,
   rtol: 1e-6,
-  text:
-    'Formulas: type them in mathjs syntax, e.g. 2*sin(theta)*cos(theta), (1 - cos(2*theta))/2, acos(1 - 2*xi)/2, log(1 + (e^(2*pi) - 1)*xi). Use theta, phi and xi (θ, φ, ξ, ξ₁, ξ₂ work too; ln means log). A formula is correct when it equals the expected one at 40 random points of the domain (to 6 digits) — any equivalent form is accepted.',
+  text: 'Formulas: type them in mathjs syntax, e.g. 2*sin(theta)*cos(theta), (1 - cos(2*theta))/2, acos(1 - 2*xi)/2, log(1 + (e^(2*pi) - 1)*xi). Use theta, phi and xi (θ, φ, ξ, ξ₁, ξ₂ work too; ln means log). A formula is correct when it equals the expected one at 40 random points of the domain (to 6 digits) — any equivalent form is accepted.',
 } as const;
 
 /** Mistakes closer than this many tolerances to a correct value are dropped by the generators. */
@@ -80,7 +78,19 @@ export function numbersSeparated(a: number | null, b: number | null): boolean {
 }
 
 const PLAIN_NUMBER = /^[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?$/;
-const NONE_WORDS = new Set(['none', 'no', 'n/a', 'na', 'nan', '-', '—', 'no root', 'no hit', 'undefined', 'does not exist']);
+const NONE_WORDS = new Set([
+  'none',
+  'no',
+  'n/a',
+  'na',
+  'nan',
+  '-',
+  '—',
+  'no root',
+  'no hit',
+  'undefined',
+  'does not exist',
+]);
 
 /** Normalise what people type: unicode operators, ln, arc-functions, ξ₁/ξ₂ → xi. */
 export function normaliseInput(s: string): string {
@@ -111,7 +121,8 @@ export async function parseNumberAnswer(text: string): Promise<ParsedNumber> {
     const x = Number(s);
     return Number.isFinite(x) ? { ok: true, value: x } : { ok: false, error: 'That number is too large.' };
   }
-  if (/^[+-]?\d+,\d+$/.test(s)) return { ok: false, error: `Use a decimal point, not a comma: ${s.replace(',', '.')}.` };
+  if (/^[+-]?\d+,\d+$/.test(s))
+    return { ok: false, error: `Use a decimal point, not a comma: ${s.replace(',', '.')}.` };
   const r = await compileExpression(s, []);
   if (!r.ok) return { ok: false, error: `Not a number: ${r.message}.` };
   const x = r.fn();
@@ -129,9 +140,12 @@ export async function checkNumber(spec: NumberAnswer, text: string): Promise<Ver
 /** The verdict for an already-read value (pure; used by the tests on every generated variant). */
 export function classifyNumber(spec: NumberAnswer, x: number | null): Verdict {
   if (numbersMatch(x, spec.expected)) return { value: 'correct', message: 'Correct.' };
-  for (const a of spec.alternatives) if (numbersMatch(x, a.value)) return { value: 'correct', message: `Correct — ${a.message}` };
-  for (const m of spec.mistakes) if (numbersMatch(x, m.value)) return { value: `mistake:${m.id}`, message: m.message };
-  if (spec.expected === null) return { value: 'incorrect', message: 'Not right: this quantity does not exist here (answer none).' };
+  for (const a of spec.alternatives)
+    if (numbersMatch(x, a.value)) return { value: 'correct', message: `Correct — ${a.message}` };
+  for (const m of spec.mistakes)
+    if (numbersMatch(x, m.value)) return { value: `mistake:${m.id}`, message: m.message };
+  if (spec.expected === null)
+    return { value: 'incorrect', message: 'Not right: this quantity does not exist here (answer none).' };
   if (x === null) return { value: 'incorrect', message: 'Not right: this quantity exists; give its value.' };
   return { value: 'incorrect', message: 'Not right. Check each step against the worked solution.' };
 }
@@ -170,7 +184,10 @@ export function separateNumbers(
 const POINT_SEED = 0x5eed_f0a1;
 
 /** The comparison points of a domain (seeded: the same points every time). */
-export function formulaPoints(domain: readonly (readonly [number, number])[], count: number = FORMULA_POLICY.points): number[][] {
+export function formulaPoints(
+  domain: readonly (readonly [number, number])[],
+  count: number = FORMULA_POLICY.points,
+): number[][] {
   const rng = new Rng(POINT_SEED, domain.length);
   const pts: number[][] = [];
   for (let k = 0; k < count; k++) {
@@ -199,9 +216,9 @@ export function formulasEquivalent(f: Fn, g: Fn, domain: readonly (readonly [num
   }
   let used = 0;
   for (let k = 0; k < pts.length; k++) {
-    const e = fv[k]!;
+    const e = fv[k];
     if (!Number.isFinite(e)) continue;
-    const s = g(...pts[k]!);
+    const s = g(...pts[k]);
     if (!Number.isFinite(s)) return false;
     const tol = FORMULA_POLICY.rtol * Math.max(Math.abs(e), 1e-3 * scale) + 1e-300;
     if (Math.abs(s - e) > tol) return false;
@@ -213,9 +230,16 @@ export function formulasEquivalent(f: Fn, g: Fn, domain: readonly (readonly [num
 /** Verdict of a formula, given its compiled function (pure). */
 export function classifyFormula(spec: FormulaAnswer, g: Fn): Verdict {
   if (formulasEquivalent(spec.expected, g, spec.domain)) return { value: 'correct', message: 'Correct.' };
-  for (const a of spec.alternatives) if (formulasEquivalent(a.fn, g, spec.domain)) return { value: 'correct', message: `Correct — ${a.message}` };
-  for (const m of spec.mistakes) for (const fn of m.fns) if (formulasEquivalent(fn, g, spec.domain)) return { value: `mistake:${m.id}`, message: m.message };
-  return { value: 'incorrect', message: 'Not equivalent to the expected formula (it differs at some points of the domain).' };
+  for (const a of spec.alternatives)
+    if (formulasEquivalent(a.fn, g, spec.domain))
+      return { value: 'correct', message: `Correct — ${a.message}` };
+  for (const m of spec.mistakes)
+    for (const fn of m.fns)
+      if (formulasEquivalent(fn, g, spec.domain)) return { value: `mistake:${m.id}`, message: m.message };
+  return {
+    value: 'incorrect',
+    message: 'Not equivalent to the expected formula (it differs at some points of the domain).',
+  };
 }
 
 /** Verdict of a typed formula: compiled by the whitelisted expression compiler, then compared. */
@@ -240,7 +264,8 @@ export function separateFormulas(
   for (const m of mistakes) {
     const fns = m.fns.filter((fn) => {
       if (!formulasEquivalent(fn, fn, domain)) return false; // not finite on most of the domain: nobody types it
-      if (seen.some((s) => formulasEquivalent(s, fn, domain) || formulasEquivalent(fn, s, domain))) return false;
+      if (seen.some((s) => formulasEquivalent(s, fn, domain) || formulasEquivalent(fn, s, domain)))
+        return false;
       return true;
     });
     if (fns.length) {
@@ -257,7 +282,11 @@ export function separateFormulas(
 export function checkChoice(spec: ChoiceAnswer, text: string): Verdict {
   const s = text.trim().toLowerCase().replace(/\s+/g, '-');
   if (s === '') return { value: 'invalid', message: `Choose one of: ${spec.options.join(', ')}.` };
-  if (!spec.options.includes(s)) return { value: 'invalid', message: `"${text.trim().slice(0, 24)}" is not one of: ${spec.options.join(', ')}.` };
+  if (!spec.options.includes(s))
+    return {
+      value: 'invalid',
+      message: `"${text.trim().slice(0, 24)}" is not one of: ${spec.options.join(', ')}.`,
+    };
   if (s === spec.expected) return { value: 'correct', message: `Correct. ${spec.why}` };
   for (const m of spec.mistakes) if (m.value === s) return { value: `mistake:${m.id}`, message: m.message };
   return { value: 'incorrect', message: `Not right. ${spec.why}` };
@@ -270,7 +299,10 @@ export async function checkAnswer(spec: AnswerSpec, text: string): Promise<Verdi
     if (spec.kind === 'formula') return await checkFormula(spec, text);
     return checkChoice(spec, text);
   } catch (e) {
-    return { value: 'invalid', message: `That answer could not be read (${e instanceof Error ? e.message : String(e)}).` };
+    return {
+      value: 'invalid',
+      message: `That answer could not be read (${e instanceof Error ? e.message : String(e)}).`,
+    };
   }
 }
 

@@ -23,7 +23,9 @@ function empty(): Progress {
 }
 
 function seeds(x: unknown): number[] {
-  return Array.isArray(x) ? x.filter((s): s is number => Number.isInteger(s) && s >= 0 && s <= 0xffffffff).slice(-MAX_SEEDS) : [];
+  return Array.isArray(x)
+    ? x.filter((s): s is number => Number.isInteger(s) && s >= 0 && s <= 0xffffffff).slice(-MAX_SEEDS)
+    : [];
 }
 
 export function loadProgress(): Progress {

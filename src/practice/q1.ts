@@ -128,44 +128,167 @@ export function q1Variant(seed: number): Variant {
   const pdfTex = `p(\\omega) = k\\,${cosPowTex(m)}${expTex(ar)}`;
   const aIsOne = ar.p === 1 && ar.q === 1;
 
-  const kAns = numberAnswer('k', 'k', k, [], [
-    { id: 'no-sin-jacobian', value: a / (E * W), message: 'This k comes from dω = dθ dφ: the solid-angle element is dω = sin θ dθ dφ (the sin θ is missing).' },
-    { id: 'missing-1-over-a', value: (m + 1) / E, message: `∫₀^2π e^(aφ) dφ = (e^(2πa) − 1)/a: the factor 1/a (a = ${ratText(ar)}) is missing.` },
-    { id: 'forgot-e0', value: (a * (m + 1)) / Math.exp(2 * Math.PI * a), message: 'The lower limit of ∫ e^(aφ) dφ is missing: it gives e^(2πa) − e^0 = e^(2πa) − 1, not e^(2πa).' },
-  ]);
+  const kAns = numberAnswer(
+    'k',
+    'k',
+    k,
+    [],
+    [
+      {
+        id: 'no-sin-jacobian',
+        value: a / (E * W),
+        message:
+          'This k comes from dω = dθ dφ: the solid-angle element is dω = sin θ dθ dφ (the sin θ is missing).',
+      },
+      {
+        id: 'missing-1-over-a',
+        value: (m + 1) / E,
+        message: `∫₀^2π e^(aφ) dφ = (e^(2πa) − 1)/a: the factor 1/a (a = ${ratText(ar)}) is missing.`,
+      },
+      {
+        id: 'forgot-e0',
+        value: (a * (m + 1)) / Math.exp(2 * Math.PI * a),
+        message:
+          'The lower limit of ∫ e^(aφ) dφ is missing: it gives e^(2πa) − e^0 = e^(2πa) − 1, not e^(2πa).',
+      },
+    ],
+  );
   const th: [number, number] = [0, Math.PI / 2];
   const ph: [number, number] = [0, 2 * Math.PI];
   const xi: [number, number] = [0, 1];
-  const pTheta = formulaAnswer('p-theta', 'p(θ)', 'theta', th, c.pTheta, m === 0 ? 'sin(theta)' : `${m + 1}*${cosPowText(m)}*sin(theta)`, [], [
-    {
-      id: 'inverted-jacobian',
-      fns: [(t) => ((m + 1) * Math.cos(t) ** m) / Math.sin(t)],
-      message: 'This is the inverted Jacobian p(θ, φ) = p(ω)/sin θ (the key’s first version): the correct change of variables multiplies, p(θ, φ) = sin θ · p(ω). Divided, the θ-integral diverges at θ → 0.',
-    },
-    { id: 'no-sin-jacobian', fns: [(t) => Math.cos(t) ** m / W, (t) => (m + 1) * Math.cos(t) ** m], message: 'The sin θ of dω = sin θ dθ dφ is missing from p(θ, φ) = sin θ · p(ω).' },
-  ]);
-  const pPhi = formulaAnswer('p-phi', 'p(φ)', 'phi', ph, c.pPhi, `${coefText(ar)}${expText(ar)} / ${ET}`, [], [
-    { id: 'missing-1-over-a', fns: [(f) => Math.exp(a * f) / E], message: `The factor a = ${ratText(ar)} is missing: ∫₀^2π e^(aφ) dφ = (e^(2πa) − 1)/a, so p(φ) = a e^(aφ)/(e^(2πa) − 1).` },
-    { id: 'forgot-e0', fns: [(f) => (a * Math.exp(a * f)) / Math.exp(2 * Math.PI * a)], message: 'The normalization lost the e^0 term: it is e^(2πa) − 1, not e^(2πa).' },
-  ]);
-  const cdfTheta = formulaAnswer('cdf-theta', 'P(θ)', 'theta', th, c.cdfTheta, m === 0 ? '1 - cos(theta)' : `1 - cos(theta)^${m + 1}`, [], [
-    { id: 'no-lower-limit', fns: [(t) => -(Math.cos(t) ** (m + 1)), (t) => -Math.cos(2 * t) / 2], message: 'The lower limit θ′ = 0 was not subtracted: P(0) must be 0.' },
-  ]);
-  const cdfPhi = formulaAnswer('cdf-phi', 'P(φ)', 'phi', ph, c.cdfPhi, `(${expText(ar)} - 1) / ${ET}`, [], [
-    { id: 'no-lower-limit', fns: [(f) => Math.exp(a * f) / E], message: 'The lower limit φ′ = 0 was not subtracted: P(0) must be 0, so the numerator is e^(aφ) − 1.' },
-  ]);
-  const thetaXi = formulaAnswer('theta-of-xi', 'θ(ξ₁)', 'xi', xi, c.thetaOfXi, m === 0 ? 'acos(1 - xi)' : m === 1 ? 'acos(1 - 2*xi) / 2' : `acos((1 - xi)^(1/${m + 1}))`, [
-    { fn: (x) => Math.acos(x ** (1 / (m + 1))), message: 'you used ξ in place of 1 − ξ, which has the same distribution (a valid sampler; the literal inverse of P is with 1 − ξ₁).' },
-  ], [
-    { id: 'missing-root', fns: [(x) => Math.acos(1 - x), (x) => Math.acos(x)], message: `The root is missing: cos^(m+1) θ = 1 − ξ₁ gives cos θ = (1 − ξ₁)^(1/(m+1)) (here m + 1 = ${m + 1}).` },
-    ...(m === 1 ? [{ id: 'missing-half', fns: [(x: number) => Math.acos(1 - 2 * x)], message: 'cos 2θ = 1 − 2ξ₁ gives 2θ = arccos(1 − 2ξ₁): divide by 2.' }] : []),
-  ]);
-  const phiXi = formulaAnswer('phi-of-xi', 'φ(ξ₂)', 'xi', xi, c.phiOfXi, `${coefText(inv)}log(1 + ${ET}*xi)`, [
-    { fn: (x) => Math.log1p(E * (1 - x)) / a, message: 'you used 1 − ξ in place of ξ, which has the same distribution (a valid sampler).' },
-  ], [
-    { id: 'missing-1-over-a', fns: [(x) => Math.log1p(E * x)], message: `e^(aφ) = 1 + (e^(2πa) − 1)ξ₂ gives φ = ln(…)/a: divide by a = ${ratText(ar)}.` },
-    { id: 'no-plus-one', fns: [(x) => Math.log(E * x) / a], message: 'The "+ 1" from P(φ) = (e^(aφ) − 1)/(e^(2πa) − 1) is missing: φ = ln(1 + (e^(2πa) − 1)ξ₂)/a.' },
-  ]);
+  const pTheta = formulaAnswer(
+    'p-theta',
+    'p(θ)',
+    'theta',
+    th,
+    c.pTheta,
+    m === 0 ? 'sin(theta)' : `${m + 1}*${cosPowText(m)}*sin(theta)`,
+    [],
+    [
+      {
+        id: 'inverted-jacobian',
+        fns: [(t) => ((m + 1) * Math.cos(t) ** m) / Math.sin(t)],
+        message:
+          'This is the inverted Jacobian p(θ, φ) = p(ω)/sin θ (the key’s first version): the correct change of variables multiplies, p(θ, φ) = sin θ · p(ω). Divided, the θ-integral diverges at θ → 0.',
+      },
+      {
+        id: 'no-sin-jacobian',
+        fns: [(t) => Math.cos(t) ** m / W, (t) => (m + 1) * Math.cos(t) ** m],
+        message: 'The sin θ of dω = sin θ dθ dφ is missing from p(θ, φ) = sin θ · p(ω).',
+      },
+    ],
+  );
+  const pPhi = formulaAnswer(
+    'p-phi',
+    'p(φ)',
+    'phi',
+    ph,
+    c.pPhi,
+    `${coefText(ar)}${expText(ar)} / ${ET}`,
+    [],
+    [
+      {
+        id: 'missing-1-over-a',
+        fns: [(f) => Math.exp(a * f) / E],
+        message: `The factor a = ${ratText(ar)} is missing: ∫₀^2π e^(aφ) dφ = (e^(2πa) − 1)/a, so p(φ) = a e^(aφ)/(e^(2πa) − 1).`,
+      },
+      {
+        id: 'forgot-e0',
+        fns: [(f) => (a * Math.exp(a * f)) / Math.exp(2 * Math.PI * a)],
+        message: 'The normalization lost the e^0 term: it is e^(2πa) − 1, not e^(2πa).',
+      },
+    ],
+  );
+  const cdfTheta = formulaAnswer(
+    'cdf-theta',
+    'P(θ)',
+    'theta',
+    th,
+    c.cdfTheta,
+    m === 0 ? '1 - cos(theta)' : `1 - cos(theta)^${m + 1}`,
+    [],
+    [
+      {
+        id: 'no-lower-limit',
+        fns: [(t) => -(Math.cos(t) ** (m + 1)), (t) => -Math.cos(2 * t) / 2],
+        message: 'The lower limit θ′ = 0 was not subtracted: P(0) must be 0.',
+      },
+    ],
+  );
+  const cdfPhi = formulaAnswer(
+    'cdf-phi',
+    'P(φ)',
+    'phi',
+    ph,
+    c.cdfPhi,
+    `(${expText(ar)} - 1) / ${ET}`,
+    [],
+    [
+      {
+        id: 'no-lower-limit',
+        fns: [(f) => Math.exp(a * f) / E],
+        message: 'The lower limit φ′ = 0 was not subtracted: P(0) must be 0, so the numerator is e^(aφ) − 1.',
+      },
+    ],
+  );
+  const thetaXi = formulaAnswer(
+    'theta-of-xi',
+    'θ(ξ₁)',
+    'xi',
+    xi,
+    c.thetaOfXi,
+    m === 0 ? 'acos(1 - xi)' : m === 1 ? 'acos(1 - 2*xi) / 2' : `acos((1 - xi)^(1/${m + 1}))`,
+    [
+      {
+        fn: (x) => Math.acos(x ** (1 / (m + 1))),
+        message:
+          'you used ξ in place of 1 − ξ, which has the same distribution (a valid sampler; the literal inverse of P is with 1 − ξ₁).',
+      },
+    ],
+    [
+      {
+        id: 'missing-root',
+        fns: [(x) => Math.acos(1 - x), (x) => Math.acos(x)],
+        message: `The root is missing: cos^(m+1) θ = 1 − ξ₁ gives cos θ = (1 − ξ₁)^(1/(m+1)) (here m + 1 = ${m + 1}).`,
+      },
+      ...(m === 1
+        ? [
+            {
+              id: 'missing-half',
+              fns: [(x: number) => Math.acos(1 - 2 * x)],
+              message: 'cos 2θ = 1 − 2ξ₁ gives 2θ = arccos(1 − 2ξ₁): divide by 2.',
+            },
+          ]
+        : []),
+    ],
+  );
+  const phiXi = formulaAnswer(
+    'phi-of-xi',
+    'φ(ξ₂)',
+    'xi',
+    xi,
+    c.phiOfXi,
+    `${coefText(inv)}log(1 + ${ET}*xi)`,
+    [
+      {
+        fn: (x) => Math.log1p(E * (1 - x)) / a,
+        message: 'you used 1 − ξ in place of ξ, which has the same distribution (a valid sampler).',
+      },
+    ],
+    [
+      {
+        id: 'missing-1-over-a',
+        fns: [(x) => Math.log1p(E * x)],
+        message: `e^(aφ) = 1 + (e^(2πa) − 1)ξ₂ gives φ = ln(…)/a: divide by a = ${ratText(ar)}.`,
+      },
+      {
+        id: 'no-plus-one',
+        fns: [(x) => Math.log(E * x) / a],
+        message:
+          'The "+ 1" from P(φ) = (e^(aφ) − 1)/(e^(2πa) − 1) is missing: φ = ln(1 + (e^(2πa) − 1)ξ₂)/a.',
+      },
+    ],
+  );
 
   const xi1 = 0.3;
   const xi2 = 0.7;
@@ -178,11 +301,19 @@ export function q1Variant(seed: number): Variant {
     { tex: kTex },
     { text: '(b) Change of variables p(θ, φ) = sin θ · p(ω), then marginalize:' },
     { tex: `p(\\theta,\\phi) = k\\,${cosPowTex(m)}\\sin\\theta\\,${expTex(ar)}` },
-    { tex: `p(\\theta) = \\int_0^{2\\pi} p(\\theta,\\phi)\\,d\\phi = ${m === 0 ? '' : `${m + 1}\\,`}${cosPowTex(m)}\\sin\\theta${m === 1 ? ' = \\sin 2\\theta' : ''}` },
-    { tex: `p(\\phi) = \\int_0^{\\pi/2} p(\\theta,\\phi)\\,d\\theta = \\frac{${coefTex(ar)}${expTex(ar)}}{${E2}}` },
-    { text: `The inverted Jacobian p(θ, φ) = p(ω)/sin θ ∝ ${cosPlain}${expPlain(ar)} / sin θ cannot be normalized: ∫ dθ/sin θ diverges at θ → 0.` },
+    {
+      tex: `p(\\theta) = \\int_0^{2\\pi} p(\\theta,\\phi)\\,d\\phi = ${m === 0 ? '' : `${m + 1}\\,`}${cosPowTex(m)}\\sin\\theta${m === 1 ? ' = \\sin 2\\theta' : ''}`,
+    },
+    {
+      tex: `p(\\phi) = \\int_0^{\\pi/2} p(\\theta,\\phi)\\,d\\theta = \\frac{${coefTex(ar)}${expTex(ar)}}{${E2}}`,
+    },
+    {
+      text: `The inverted Jacobian p(θ, φ) = p(ω)/sin θ ∝ ${cosPlain}${expPlain(ar)} / sin θ cannot be normalized: ∫ dθ/sin θ diverges at θ → 0.`,
+    },
     { text: '(c) CDFs, integrating from 0:' },
-    { tex: `P(\\theta) = \\int_0^{\\theta} p(\\theta')\\,d\\theta' = 1 - \\cos${m === 0 ? '' : `^{${m + 1}}`}\\theta${m === 1 ? ' = \\frac{1-\\cos 2\\theta}{2}' : ''}` },
+    {
+      tex: `P(\\theta) = \\int_0^{\\theta} p(\\theta')\\,d\\theta' = 1 - \\cos${m === 0 ? '' : `^{${m + 1}}`}\\theta${m === 1 ? ' = \\frac{1-\\cos 2\\theta}{2}' : ''}`,
+    },
     { tex: `P(\\phi) = \\frac{${expTex(ar)} - 1}{${E2}}` },
     { text: '(d) Set ξ = P and solve:' },
     {
@@ -190,15 +321,18 @@ export function q1Variant(seed: number): Variant {
         m === 0
           ? `\\theta = \\arccos(1 - \\xi_1)`
           : m === 1
-          ? `\\theta = \\tfrac12\\arccos(1 - 2\\xi_1) = \\arccos\\sqrt{1-\\xi_1}`
-          : `\\theta = \\arccos\\!\\big((1 - \\xi_1)^{1/${m + 1}}\\big)`,
+            ? `\\theta = \\tfrac12\\arccos(1 - 2\\xi_1) = \\arccos\\sqrt{1-\\xi_1}`
+            : `\\theta = \\arccos\\!\\big((1 - \\xi_1)^{1/${m + 1}}\\big)`,
     },
     { tex: `\\phi = ${coefTex(inv)}\\ln\\!\\big(1 + (${E2})\\,\\xi_2\\big)` },
     {
       text: `For example ξ₁ = ${xi1} gives θ = ${fmt(c.thetaOfXi(xi1), 5)} rad and ξ₂ = ${xi2} gives φ = ${fmt(c.phiOfXi(xi2), 5)} rad. Here e^(2πa) − 1 = ${fmt(E, 6)}.`,
     },
   ];
-  const sceneQuery = m === 1 && aIsOne ? 'lobe=exam' : query({ lobe: 'custom', pdf: [cosPowText(m), expText(ar)].filter(Boolean).join('*') });
+  const sceneQuery =
+    m === 1 && aIsOne
+      ? 'lobe=exam'
+      : query({ lobe: 'custom', pdf: [cosPowText(m), expText(ar)].filter(Boolean).join('*') });
   return {
     question: 'q1',
     seed,
@@ -211,9 +345,17 @@ export function q1Variant(seed: number): Variant {
     ],
     parts: [
       { id: 'a', prompt: '(a) The normalization constant k (a number).', answers: [kAns] },
-      { id: 'b', prompt: '(b) The marginal densities, as formulas in theta and phi.', answers: [pTheta, pPhi] },
+      {
+        id: 'b',
+        prompt: '(b) The marginal densities, as formulas in theta and phi.',
+        answers: [pTheta, pPhi],
+      },
       { id: 'c', prompt: '(c) The CDFs P(θ) and P(φ).', answers: [cdfTheta, cdfPhi] },
-      { id: 'd', prompt: '(d) θ and φ from uniform numbers (write ξ₁, ξ₂ as xi).', answers: [thetaXi, phiXi] },
+      {
+        id: 'd',
+        prompt: '(d) θ and φ from uniform numbers (write ξ₁, ξ₂ as xi).',
+        answers: [thetaXi, phiXi],
+      },
     ],
     solution,
     sceneHref: `#/hemisphere?${sceneQuery}`,

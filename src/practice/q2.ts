@@ -31,7 +31,12 @@ export interface Q2Params {
 export function q2Params(seed: number): Q2Params {
   const rng = new Rng(seed, 0x5102);
   const m = pick(rng, [1, 1, 2]);
-  const a = pick(rng, [{ p: 1, q: 1 }, { p: 1, q: 2 }, { p: -1, q: 2 }, { p: -1, q: 1 }] as Rational[]);
+  const a = pick(rng, [
+    { p: 1, q: 1 },
+    { p: 1, q: 2 },
+    { p: -1, q: 2 },
+    { p: -1, q: 1 },
+  ] as Rational[]);
   const fKind = pick(rng, ['const', 'prop', 'cos', 'cos2'] as const);
   const C = pick(rng, [1, 2, 3]);
   const dirs: [number, number][] = [];
@@ -78,8 +83,23 @@ export function q2Functions({ m, a: ar, fKind, C }: Q2Params) {
       fText = `${C === 1 ? '' : `${C} * `}cos(theta)^2`;
       fTex = `${C === 1 ? '' : C}\\cos^2\\theta`;
   }
-  const fPlain = fText.replace(/cos\(theta\)\^(\d)/g, 'cos^$1 θ').replace(/cos\(theta\)/g, 'cos θ').replace(/ \* /g, ' ').replace(/exp\([^)]*\)/, expPlain(ar));
-  return { a, k, p, f, fText, fTex, fPlain, pText: `${cosT} * ${expT}`, pPlain: `k ${cosPlain} ${expPlain(ar)}`, pTex: `k\\,${cosX}\\,${expX}` };
+  const fPlain = fText
+    .replace(/cos\(theta\)\^(\d)/g, 'cos^$1 θ')
+    .replace(/cos\(theta\)/g, 'cos θ')
+    .replace(/ \* /g, ' ')
+    .replace(/exp\([^)]*\)/, expPlain(ar));
+  return {
+    a,
+    k,
+    p,
+    f,
+    fText,
+    fTex,
+    fPlain,
+    pText: `${cosT} * ${expT}`,
+    pPlain: `k ${cosPlain} ${expPlain(ar)}`,
+    pTex: `k\\,${cosX}\\,${expX}`,
+  };
 }
 
 /** Both estimates from the given directions, by the core's estimator over per-direction terms. */
@@ -115,24 +135,73 @@ export function q2Variant(seed: number): Variant {
       : zero === 'uniform'
         ? 'Here f is constant, so every uniform term 2π f is the same: zero variance. The importance terms f/p vary because p does.'
         : 'Here f is neither constant nor proportional to p, so both estimators’ terms vary from direction to direction.';
-  const uniAns = numberAnswer('mc-uniform', 'uniform ⟨I⟩', uniform, [], [
-    { id: 'no-2pi', value: sumF / n, message: 'The factor |D| = 2π is missing: uniform sampling of the hemisphere has p = 1/(2π), so ⟨I⟩ = (2π/N) Σ f.' },
-    { id: 'sphere-4pi', value: (4 * Math.PI * sumF) / n, message: 'That is 4π, the solid angle of the whole sphere; the hemisphere has |D| = 2π.' },
-  ]);
-  const impAns = numberAnswer('mc-importance', 'importance ⟨I⟩', importance, [], [
-    { id: 'f-times-p', value: mean(fv.map((f, i) => f * pv[i]!)), message: 'The estimator divides by the density: (1/N) Σ f/p, not f·p.' },
-    { id: 'theta-phi-density', value: mean(fv.map((f, i) => f / (pv[i]! * sinT[i]!))), message: 'You divided by p(θ, φ) = p(ω) sin θ. The integral is over solid angle (dω), so divide by p(ω), the density per steradian.' },
-    { id: 'pdf-without-k', value: mean(fv.map((f, i) => f / (pv[i]! / F.k))), message: 'The density lost its normalization constant k: divide by the full p(ω) = k cosᵐθ e^(aφ).' },
-  ]);
-  const zeroAns = choiceAnswer('zero-variance', 'zero variance', ['uniform', 'importance', 'neither'], zero, [], why);
-  const rows = P.dirs.map(([t, ph], i) => `(${fmt(t)}, ${fmt(ph)}) & ${tn(fv[i]!)} & ${tn(pv[i]!)} & ${tn(fv[i]! / pv[i]!)}`);
+  const uniAns = numberAnswer(
+    'mc-uniform',
+    'uniform ⟨I⟩',
+    uniform,
+    [],
+    [
+      {
+        id: 'no-2pi',
+        value: sumF / n,
+        message:
+          'The factor |D| = 2π is missing: uniform sampling of the hemisphere has p = 1/(2π), so ⟨I⟩ = (2π/N) Σ f.',
+      },
+      {
+        id: 'sphere-4pi',
+        value: (4 * Math.PI * sumF) / n,
+        message: 'That is 4π, the solid angle of the whole sphere; the hemisphere has |D| = 2π.',
+      },
+    ],
+  );
+  const impAns = numberAnswer(
+    'mc-importance',
+    'importance ⟨I⟩',
+    importance,
+    [],
+    [
+      {
+        id: 'f-times-p',
+        value: mean(fv.map((f, i) => f * pv[i])),
+        message: 'The estimator divides by the density: (1/N) Σ f/p, not f·p.',
+      },
+      {
+        id: 'theta-phi-density',
+        value: mean(fv.map((f, i) => f / (pv[i] * sinT[i]))),
+        message:
+          'You divided by p(θ, φ) = p(ω) sin θ. The integral is over solid angle (dω), so divide by p(ω), the density per steradian.',
+      },
+      {
+        id: 'pdf-without-k',
+        value: mean(fv.map((f, i) => f / (pv[i] / F.k))),
+        message: 'The density lost its normalization constant k: divide by the full p(ω) = k cosᵐθ e^(aφ).',
+      },
+    ],
+  );
+  const zeroAns = choiceAnswer(
+    'zero-variance',
+    'zero variance',
+    ['uniform', 'importance', 'neither'],
+    zero,
+    [],
+    why,
+  );
+  const rows = P.dirs.map(
+    ([t, ph], i) => `(${fmt(t)}, ${fmt(ph)}) & ${tn(fv[i])} & ${tn(pv[i])} & ${tn(fv[i] / pv[i])}`,
+  );
   const solution: SolutionStep[] = [
     { text: `Per direction (θᵢ, φᵢ): f(ωᵢ), p(ωᵢ) = ${F.pPlain} with k = ${fmt(F.k, 6)}, and f/p:` },
-    { tex: `\\begin{array}{cccc} (\\theta_i,\\phi_i) & f & p & f/p \\\\ \\hline ${rows.join(' \\\\ ')} \\end{array}` },
+    {
+      tex: `\\begin{array}{cccc} (\\theta_i,\\phi_i) & f & p & f/p \\\\ \\hline ${rows.join(' \\\\ ')} \\end{array}`,
+    },
     { text: '(a) Uniform sampling of the hemisphere, p = 1/|D| = 1/(2π):' },
-    { tex: `\\begin{aligned} \\langle I\\rangle &= \\frac{2\\pi}{N}\\sum f(X_i) \\\\ &= \\frac{2\\pi}{${n}}\\,(${fv.map((x) => tn(x)).join(' + ')}) \\\\ &= ${tn(uniform)} \\end{aligned}` },
+    {
+      tex: `\\begin{aligned} \\langle I\\rangle &= \\frac{2\\pi}{N}\\sum f(X_i) \\\\ &= \\frac{2\\pi}{${n}}\\,(${fv.map((x) => tn(x)).join(' + ')}) \\\\ &= ${tn(uniform)} \\end{aligned}`,
+    },
     { text: '(b) Importance sampling with p(ω), the density per steradian:' },
-    { tex: `\\begin{aligned} \\langle I\\rangle &= \\frac{1}{N}\\sum \\frac{f(X_i)}{p(X_i)} \\\\ &= \\frac{1}{${n}}\\,(${fv.map((x, i) => tp(x / pv[i]!)).join(' + ')}) \\\\ &= ${tn(importance)} \\end{aligned}` },
+    {
+      tex: `\\begin{aligned} \\langle I\\rangle &= \\frac{1}{N}\\sum \\frac{f(X_i)}{p(X_i)} \\\\ &= \\frac{1}{${n}}\\,(${fv.map((x, i) => tp(x / pv[i])).join(' + ')}) \\\\ &= ${tn(importance)} \\end{aligned}`,
+    },
     { text: `(c) ${why}` },
     { text: 'Both estimators are unbiased: E[f(X)/p(X)] = ∫ (f/p) p dω = ∫ f dω for any p > 0 where f ≠ 0.' },
   ];
@@ -144,18 +213,35 @@ export function q2Variant(seed: number): Variant {
     statement: `Estimate ∫ f dω over the upper hemisphere with f(θ, φ) = ${F.fPlain}, from the ${n} directions (θᵢ, φᵢ) below (radians). (a) Treat them as drawn uniformly over the hemisphere: the uniform estimate. (b) Treat them as drawn from p(ω) = ${F.pPlain} with k = ${fmt(F.k, 6)}: the importance-sampled estimate. (c) Which estimator has zero variance for this f?`,
     givens: [
       { name: 'f', label: 'f(θ, φ)', value: F.fText, display: F.fText, tex: `f(\\theta,\\phi) = ${F.fTex}` },
-      { name: 'pdf', label: 'p(ω) per steradian', value: `k * ${F.pText}`, display: `k · ${F.pText}`, tex: `p(\\omega) = ${F.pTex}` },
+      {
+        name: 'pdf',
+        label: 'p(ω) per steradian',
+        value: `k * ${F.pText}`,
+        display: `k · ${F.pText}`,
+        tex: `p(\\omega) = ${F.pTex}`,
+      },
       { name: 'k', label: 'k', value: String(F.k), display: fmt(F.k, 6) },
-      { name: 'directions', label: 'directions (θ, φ), radians', value: dirValue, display: P.dirs.map(([t, ph]) => `(${t}, ${ph})`).join('  ') },
+      {
+        name: 'directions',
+        label: 'directions (θ, φ), radians',
+        value: dirValue,
+        display: P.dirs.map(([t, ph]) => `(${t}, ${ph})`).join('  '),
+      },
     ],
     parts: [
       { id: 'a', prompt: '(a) The uniform estimate (2π/N) Σ f.', answers: [uniAns] },
       { id: 'b', prompt: '(b) The importance-sampled estimate (1/N) Σ f/p.', answers: [impAns] },
-      { id: 'c', prompt: '(c) Which has zero variance for this f: uniform, importance or neither?', answers: [zeroAns] },
+      {
+        id: 'c',
+        prompt: '(c) Which has zero variance for this f: uniform, importance or neither?',
+        answers: [zeroAns],
+      },
     ],
     solution,
     sceneHref: `#/hemisphere?${query({ lobe: 'custom', pdf: F.pText.replace(/ /g, ''), f: F.fText.replace(/ /g, '') })}`,
     sceneLabel: 'Open this density and integrand in the hemisphere scene',
-    notes: ['The scene draws its own directions (many of them); its estimates converge to ∫ f dω rather than reproduce these four.'],
+    notes: [
+      'The scene draws its own directions (many of them); its estimates converge to ∫ f dω rather than reproduce these four.',
+    ],
   };
 }

@@ -11,7 +11,18 @@
  * the quadrant (atan2).
  */
 import { Rng } from '../core/random';
-import { EXAM_LOOKUP, bilinear, bilinearStencil, bilinearSteps, formatGrid, makeGrid, nearestStencil, sphericalUV, type LookupOptions, type TextureGrid } from '../core/texture';
+import {
+  EXAM_LOOKUP,
+  bilinear,
+  bilinearStencil,
+  bilinearSteps,
+  formatGrid,
+  makeGrid,
+  nearestStencil,
+  sphericalUV,
+  type LookupOptions,
+  type TextureGrid,
+} from '../core/texture';
 import { intIn, numberAnswer, pick, query } from './build';
 import { fmt, roundTo, tn, tp, type SolutionStep, type Variant } from './model';
 
@@ -53,7 +64,8 @@ export function q3Params(seed: number): Q3Params {
     if (wellPlaced(u, n) && wellPlaced(v, n) && wellPlaced(1 - v, n)) break;
   }
   const r = pick(rng, [1, 2, 3]);
-  const phi = (pick(rng, [1, 2, 3, 4, 5, 7, 8, 9, 10, 11]) * Math.PI) / 6 + (rng.nextFloat() < 0.3 ? Math.PI / 12 : 0);
+  const phi =
+    (pick(rng, [1, 2, 3, 4, 5, 7, 8, 9, 10, 11]) * Math.PI) / 6 + (rng.nextFloat() < 0.3 ? Math.PI / 12 : 0);
   const theta = (pick(rng, [1, 2, 3, 4, 5]) * Math.PI) / 6;
   const x = roundTo(r * Math.cos(phi) * Math.sin(theta), 4);
   const y = roundTo(r * Math.sin(phi) * Math.sin(theta), 4);
@@ -72,9 +84,10 @@ export function q3Variant(seed: number): Variant {
   const steps = bilinearSteps(st);
   const bil = st.value;
   const bilF = bilinear(grid, u, v, FLIP);
-  const floorNode = grid.values[Math.floor(v * (n - 1)) * n + Math.floor(u * (n - 1))]!;
+  const floorNode = grid.values[Math.floor(v * (n - 1)) * n + Math.floor(u * (n - 1))];
   // weights swapped: (u − u0) on the left texel, (v − v0) on the lower row
-  const swapped = st.fv * (st.fu * st.t00 + (1 - st.fu) * st.t10) + (1 - st.fv) * (st.fu * st.t01 + (1 - st.fu) * st.t11);
+  const swapped =
+    st.fv * (st.fu * st.t00 + (1 - st.fu) * st.t10) + (1 - st.fv) * (st.fu * st.t01 + (1 - st.fu) * st.t11);
   const sp = sphericalUV(x, y, z);
   if (!sp.ok) throw new Error(sp.message); // unreachable: the point is never the origin
   const sBil = bilinear(grid, sp.u, sp.v, EXAM_LOOKUP);
@@ -84,31 +97,100 @@ export function q3Variant(seed: number): Variant {
   const sSteps = bilinearSteps(sSt);
   const atanU = Math.atan(y / x);
 
-  const noDiv = 'The division by the cell size Δ = 1/(N − 1) is missing (the key deducts for it): each interpolation step is ((u₁ − u) t₀ + (u − u₀) t₁)/Δ.';
-  const flipMsg = 'you read the grid with v′ = 1 − v (v = 0 on the top row). The key accepts this convention when it is stated; the exam’s has v = 0 at the bottom row.';
+  const noDiv =
+    'The division by the cell size Δ = 1/(N − 1) is missing (the key deducts for it): each interpolation step is ((u₁ − u) t₀ + (u − u₀) t₁)/Δ.';
+  const flipMsg =
+    'you read the grid with v′ = 1 − v (v = 0 on the top row). The key accepts this convention when it is stated; the exam’s has v = 0 at the bottom row.';
   const answers = {
-    nearest: numberAnswer('nearest', 'nearest', near.value, [{ value: nearF.value, message: flipMsg }], [
-      { id: 'floor-not-round', value: floorNode, message: 'That is the lower-left node of the cell (indices rounded down); nearest rounds each index to the closer node.' },
-    ]),
-    bilinear: numberAnswer('bilinear', 'bilinear', bil, [{ value: bilF, message: flipMsg }], [
-      { id: 'no-cell-division', value: bil * d * d, message: noDiv },
-      { id: 'no-cell-division', value: bil * d, message: noDiv },
-      { id: 'swapped-weights', value: swapped, message: 'The weights are swapped: the texel nearer the query gets the larger weight, (u₁ − u)/Δ on the left texel and (u − u₀)/Δ on the right.' },
-      { id: 'nearest-for-bilinear', value: near.value, message: 'That is the nearest-neighbour value; bilinear blends the four surrounding texels.' },
-    ]),
-    sphereU: numberAnswer('sphere-u', 'sphere u', sp.u, [], [
-      { id: 'no-normalization', value: sp.phi, message: 'That is the angle φ in radians: normalize by 2π, u = φ/(2π).' },
-      { id: 'atan-quadrant', value: atanU / (2 * Math.PI), message: 'arctan(y/x) only covers (−π/2, π/2): with x < 0 (or y < 0) the quadrant is lost. Use atan2(y, x), then add 2π if negative.' },
-      { id: 'atan-quadrant', value: (atanU + 2 * Math.PI) / (2 * Math.PI), message: 'arctan(y/x) only covers (−π/2, π/2): with x < 0 the quadrant is lost. Use atan2(y, x), then add 2π if negative.' },
-    ]),
-    sphereV: numberAnswer('sphere-v', 'sphere v', sp.v, [{ value: 1 - sp.v, message: flipMsg }], [
-      { id: 'no-normalization', value: sp.theta, message: 'That is the angle θ = arccos(z/r) in radians: normalize by π, v = θ/π.' },
-    ]),
-    sphereBil: numberAnswer('sphere-bilinear', 'sphere bilinear', sBil, [{ value: sBilF, message: flipMsg }], [
-      { id: 'no-normalization', value: sBilRaw, message: 'That is the lookup at the raw angles (φ, θ) in radians (clamped to [0, 1]); the key deducts for the missing normalization by (2π, π).' },
-      { id: 'no-cell-division', value: sBil * d * d, message: noDiv },
-      { id: 'no-cell-division', value: sBil * d, message: noDiv },
-    ]),
+    nearest: numberAnswer(
+      'nearest',
+      'nearest',
+      near.value,
+      [{ value: nearF.value, message: flipMsg }],
+      [
+        {
+          id: 'floor-not-round',
+          value: floorNode,
+          message:
+            'That is the lower-left node of the cell (indices rounded down); nearest rounds each index to the closer node.',
+        },
+      ],
+    ),
+    bilinear: numberAnswer(
+      'bilinear',
+      'bilinear',
+      bil,
+      [{ value: bilF, message: flipMsg }],
+      [
+        { id: 'no-cell-division', value: bil * d * d, message: noDiv },
+        { id: 'no-cell-division', value: bil * d, message: noDiv },
+        {
+          id: 'swapped-weights',
+          value: swapped,
+          message:
+            'The weights are swapped: the texel nearer the query gets the larger weight, (u₁ − u)/Δ on the left texel and (u − u₀)/Δ on the right.',
+        },
+        {
+          id: 'nearest-for-bilinear',
+          value: near.value,
+          message: 'That is the nearest-neighbour value; bilinear blends the four surrounding texels.',
+        },
+      ],
+    ),
+    sphereU: numberAnswer(
+      'sphere-u',
+      'sphere u',
+      sp.u,
+      [],
+      [
+        {
+          id: 'no-normalization',
+          value: sp.phi,
+          message: 'That is the angle φ in radians: normalize by 2π, u = φ/(2π).',
+        },
+        {
+          id: 'atan-quadrant',
+          value: atanU / (2 * Math.PI),
+          message:
+            'arctan(y/x) only covers (−π/2, π/2): with x < 0 (or y < 0) the quadrant is lost. Use atan2(y, x), then add 2π if negative.',
+        },
+        {
+          id: 'atan-quadrant',
+          value: (atanU + 2 * Math.PI) / (2 * Math.PI),
+          message:
+            'arctan(y/x) only covers (−π/2, π/2): with x < 0 the quadrant is lost. Use atan2(y, x), then add 2π if negative.',
+        },
+      ],
+    ),
+    sphereV: numberAnswer(
+      'sphere-v',
+      'sphere v',
+      sp.v,
+      [{ value: 1 - sp.v, message: flipMsg }],
+      [
+        {
+          id: 'no-normalization',
+          value: sp.theta,
+          message: 'That is the angle θ = arccos(z/r) in radians: normalize by π, v = θ/π.',
+        },
+      ],
+    ),
+    sphereBil: numberAnswer(
+      'sphere-bilinear',
+      'sphere bilinear',
+      sBil,
+      [{ value: sBilF, message: flipMsg }],
+      [
+        {
+          id: 'no-normalization',
+          value: sBilRaw,
+          message:
+            'That is the lookup at the raw angles (φ, θ) in radians (clamped to [0, 1]); the key deducts for the missing normalization by (2π, π).',
+        },
+        { id: 'no-cell-division', value: sBil * d * d, message: noDiv },
+        { id: 'no-cell-division', value: sBil * d, message: noDiv },
+      ],
+    ),
   };
 
   const gridText = formatGrid(grid);
@@ -122,14 +204,24 @@ export function q3Variant(seed: number): Variant {
   const solution: SolutionStep[] = [
     { text: `The nodes sit at u, v = i/${n - 1} (cell size Δ = ${fmt(d, 4)}), v = 0 at the bottom row:` },
     { tex: gridTex },
-    { text: `(a) Nearest: the closest node to (${u}, ${v}) is (${fmt(near.nodeU, 4)}, ${fmt(near.nodeV, 4)}), value ${fmt(near.value)}.` },
-    { text: `(b) Bilinear: the cell [${fmt(st.u0, 4)}, ${fmt(st.u1, 4)}] × [${fmt(st.v0, 4)}, ${fmt(st.v1, 4)}]; along u on the upper and lower rows, then along v:` },
+    {
+      text: `(a) Nearest: the closest node to (${u}, ${v}) is (${fmt(near.nodeU, 4)}, ${fmt(near.nodeV, 4)}), value ${fmt(near.value)}.`,
+    },
+    {
+      text: `(b) Bilinear: the cell [${fmt(st.u0, 4)}, ${fmt(st.u1, 4)}] × [${fmt(st.v0, 4)}, ${fmt(st.v1, 4)}]; along u on the upper and lower rows, then along v:`,
+    },
     ...stepTex(st, steps, u, v).map((tex) => ({ tex })),
-    { text: `With v′ = 1 − v (the accepted flipped reading) the values are ${fmt(nearF.value)} and ${fmt(bilF)}.` },
+    {
+      text: `With v′ = 1 − v (the accepted flipped reading) the values are ${fmt(nearF.value)} and ${fmt(bilF)}.`,
+    },
     { text: `(c) The point (${x}, ${y}, ${z}) has r = ${fmt(sp.r, 5)}:` },
-    { tex: `u = \\frac{\\operatorname{atan2}(y, x)}{2\\pi} = \\frac{${tn(sp.phi)}}{2\\pi} = ${tn(sp.u)}, \\qquad v = \\frac{\\arccos(z/r)}{\\pi} = \\frac{${tn(sp.theta)}}{\\pi} = ${tn(sp.v)}` },
+    {
+      tex: `u = \\frac{\\operatorname{atan2}(y, x)}{2\\pi} = \\frac{${tn(sp.phi)}}{2\\pi} = ${tn(sp.u)}, \\qquad v = \\frac{\\arccos(z/r)}{\\pi} = \\frac{${tn(sp.theta)}}{\\pi} = ${tn(sp.v)}`,
+    },
     ...stepTex(sSt, sSteps, sSt.u, sSt.v).map((tex) => ({ tex })),
-    { text: `Without the normalization (the angles in radians, clamped to [0, 1]) the lookup would give ${fmt(sBilRaw)}; the key deducts for it.` },
+    {
+      text: `Without the normalization (the angles in radians, clamped to [0, 1]) the lookup would give ${fmt(sBilRaw)}; the key deducts for it.`,
+    },
   ];
   return {
     question: 'q3',
@@ -137,7 +229,13 @@ export function q3Variant(seed: number): Variant {
     title: 'Texture lookup',
     statement: `A ${n} × ${n} texture has values at corner-aligned nodes (u, v) = (i/${n - 1}, j/${n - 1}), v growing upward (the top row printed first is v = 1). (a) Nearest-neighbour value at (u, v) = (${u}, ${v}). (b) Bilinear value there. (c) The point (x, y, z) = (${x}, ${y}, ${z}) lies on a sphere around the origin, x = r cos u sin v, y = r sin u sin v, z = r cos v: find its (u, v) normalized to [0, 1] by (2π, π), and the bilinear value there.`,
     givens: [
-      { name: 'grid', label: 'grid (rows top to bottom)', value: gridText, display: rows.map((r) => r.join(' ')).join(' / '), tex: gridTex },
+      {
+        name: 'grid',
+        label: 'grid (rows top to bottom)',
+        value: gridText,
+        display: rows.map((r) => r.join(' ')).join(' / '),
+        tex: gridTex,
+      },
       { name: 'u', label: 'u', value: String(u), display: String(u) },
       { name: 'v', label: 'v', value: String(v), display: String(v) },
       { name: 'x', label: 'x', value: String(x), display: String(x) },
@@ -147,7 +245,11 @@ export function q3Variant(seed: number): Variant {
     parts: [
       { id: 'a', prompt: `(a) Nearest-neighbour value at (${u}, ${v}).`, answers: [answers.nearest] },
       { id: 'b', prompt: `(b) Bilinear value at (${u}, ${v}).`, answers: [answers.bilinear] },
-      { id: 'c', prompt: '(c) The sphere point’s normalized (u, v) and the bilinear value there.', answers: [answers.sphereU, answers.sphereV, answers.sphereBil] },
+      {
+        id: 'c',
+        prompt: '(c) The sphere point’s normalized (u, v) and the bilinear value there.',
+        answers: [answers.sphereU, answers.sphereV, answers.sphereBil],
+      },
     ],
     solution,
     sceneHref: `#/texture?${query({ grid: gridText, u, v, x, y, z })}`,

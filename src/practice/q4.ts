@@ -87,25 +87,75 @@ export function q4Variant(seed: number): Variant {
   const L = b - a;
   const n = fv.length;
   const mean = (xs: number[]) => xs.reduce((s, x) => s + x, 0) / xs.length;
-  const exact = numberAnswer('exact', 'exact I', I, [], [
-    { id: 'no-lower-limit', value: fn.F(b), message: `F(a) was not subtracted: I = F(b) − F(a) with a = ${a}.` },
-    { id: 'no-lower-limit', value: fn.Fexpanded(b), message: `F(a) was not subtracted: I = F(b) − F(a) with a = ${a}.` },
-  ]);
-  const uni = numberAnswer('uniform', 'uniform ⟨I⟩', uniform, [], [
-    { id: 'no-interval-length', value: mean(fv), message: `Dividing by p = 1/(b − a) multiplies by b − a = ${L}: ⟨I⟩ = ((b − a)/N) Σ f(xᵢ).` },
-    { id: 'times-p', value: mean(fv) / L, message: `That multiplies by p = 1/(b − a) instead of dividing by it: ⟨I⟩ = (1/N) Σ f(xᵢ)/p.` },
-  ]);
-  const imp = numberAnswer('importance', 'importance ⟨I⟩', importance, [], [
-    { id: 'unnormalized-pdf', value: 1, message: 'p = f is not a density: it must integrate to 1, so p = f/I. Then every term f/p equals I.' },
-    { id: 'f-times-p', value: mean(fv.map((f, i) => f * pv[i]!)), message: 'The estimator divides by the density: (1/N) Σ f/p, not f·p.' },
-  ]);
+  const exact = numberAnswer(
+    'exact',
+    'exact I',
+    I,
+    [],
+    [
+      {
+        id: 'no-lower-limit',
+        value: fn.F(b),
+        message: `F(a) was not subtracted: I = F(b) − F(a) with a = ${a}.`,
+      },
+      {
+        id: 'no-lower-limit',
+        value: fn.Fexpanded(b),
+        message: `F(a) was not subtracted: I = F(b) − F(a) with a = ${a}.`,
+      },
+    ],
+  );
+  const uni = numberAnswer(
+    'uniform',
+    'uniform ⟨I⟩',
+    uniform,
+    [],
+    [
+      {
+        id: 'no-interval-length',
+        value: mean(fv),
+        message: `Dividing by p = 1/(b − a) multiplies by b − a = ${L}: ⟨I⟩ = ((b − a)/N) Σ f(xᵢ).`,
+      },
+      {
+        id: 'times-p',
+        value: mean(fv) / L,
+        message: `That multiplies by p = 1/(b − a) instead of dividing by it: ⟨I⟩ = (1/N) Σ f(xᵢ)/p.`,
+      },
+    ],
+  );
+  const imp = numberAnswer(
+    'importance',
+    'importance ⟨I⟩',
+    importance,
+    [],
+    [
+      {
+        id: 'unnormalized-pdf',
+        value: 1,
+        message: 'p = f is not a density: it must integrate to 1, so p = f/I. Then every term f/p equals I.',
+      },
+      {
+        id: 'f-times-p',
+        value: mean(fv.map((f, i) => f * pv[i])),
+        message: 'The estimator divides by the density: (1/N) Σ f/p, not f·p.',
+      },
+    ],
+  );
   const solution: SolutionStep[] = [
     { text: '(a) Exact integral by the antiderivative:' },
-    { tex: `I = \\int_{${a}}^{${b}} ${fn.tex}\\,dx = \\Big[${fn.Ftex}\\Big]_{${a}}^{${b}} = ${tn(fn.F(b))} - ${tn(fn.F(a))} = ${tn(I)}` },
+    {
+      tex: `I = \\int_{${a}}^{${b}} ${fn.tex}\\,dx = \\Big[${fn.Ftex}\\Big]_{${a}}^{${b}} = ${tn(fn.F(b))} - ${tn(fn.F(a))} = ${tn(I)}`,
+    },
     { text: `(b) Uniform density p = 1/(b − a) = ${fmt(1 / L, 6)}; the samples give f(xᵢ):` },
-    { tex: `\\begin{array}{l} ${P.samples.map((x, i) => `f(${x}) = ${tn(fv[i]!)}`).join(' \\\\ ')} \\end{array}` },
-    { tex: `\\begin{aligned} \\langle I\\rangle &= \\frac{1}{${n}}\\sum \\frac{f(x_i)}{p} = \\frac{${L}}{${n}}\\sum f(x_i) \\\\ &= \\frac{${L}}{${n}}\\,(${fv.map((x) => tn(x)).join(' + ')}) \\\\ &= ${tn(uniform)} \\end{aligned}` },
-    { text: `(c) Importance sampling with p(x) = f(x)/I = ${fn.text.replace(/\^/g, '^')}/${fmt(I, 6)}, proportional to f:` },
+    {
+      tex: `\\begin{array}{l} ${P.samples.map((x, i) => `f(${x}) = ${tn(fv[i])}`).join(' \\\\ ')} \\end{array}`,
+    },
+    {
+      tex: `\\begin{aligned} \\langle I\\rangle &= \\frac{1}{${n}}\\sum \\frac{f(x_i)}{p} = \\frac{${L}}{${n}}\\sum f(x_i) \\\\ &= \\frac{${L}}{${n}}\\,(${fv.map((x) => tn(x)).join(' + ')}) \\\\ &= ${tn(uniform)} \\end{aligned}`,
+    },
+    {
+      text: `(c) Importance sampling with p(x) = f(x)/I = ${fn.text.replace(/\^/g, '^')}/${fmt(I, 6)}, proportional to f:`,
+    },
     { tex: `\\frac{f(x_i)}{p(x_i)} = I = ${tn(I)}\\ \\text{for every } i` },
     { tex: `\\langle I\\rangle = ${tn(importance)}\\ \\text{(zero variance)}` },
   ];

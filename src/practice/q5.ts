@@ -46,7 +46,18 @@ function good(p: Q5Params, want: RaySphereCase): boolean {
 
 export function q5Params(seed: number): Q5Params {
   const rng = new Rng(seed, 0x5105);
-  const want = pick(rng, ['two-hits', 'two-hits', 'two-hits', 'inside', 'inside', 'behind', 'behind', 'miss', 'miss', 'tangent'] as const);
+  const want = pick(rng, [
+    'two-hits',
+    'two-hits',
+    'two-hits',
+    'inside',
+    'inside',
+    'behind',
+    'behind',
+    'miss',
+    'miss',
+    'tangent',
+  ] as const);
   for (let k = 0; k < 5000; k++) {
     const o = ivec(rng, -3, 3);
     const r = pick(rng, [1, 2, 3]);
@@ -82,45 +93,134 @@ export function q5Variant(seed: number): Variant {
   const ff = f[0] ** 2 + f[1] ** 2 + f[2] ** 2;
   const hit = t0 !== null && t1 !== null;
   const slipped = hit ? [-t1!, -t0!] : null; // roots of a t² − b t + c
-  const slippedHit = slipped ? (slipped[0]! >= 0 ? slipped[0]! : slipped[1]! >= 0 ? slipped[1]! : null) : null;
-  const signMsg = 'Sign slip in b: b = 2 d·(o − c), with f = o − c pointing from the centre to the ray origin (here you used c − o).';
+  const slippedHit = slipped ? (slipped[0] >= 0 ? slipped[0] : slipped[1] >= 0 ? slipped[1] : null) : null;
+  const signMsg =
+    'Sign slip in b: b = 2 d·(o − c), with f = o − c pointing from the centre to the ray origin (here you used c − o).';
   const answers = [
-    numberAnswer('a', 'a', a, [], [{ id: 'a-not-squared', value: Math.sqrt(a), message: 'a = d·d = |d|², not |d|.' }]),
-    numberAnswer('b', 'b', b, [], [
-      { id: 'b-sign', value: -b, message: signMsg },
-      { id: 'b-no-2', value: b / 2, message: 'That is d·(o − c) = b/2 (the half-b form); in a t² + b t + c the coefficient is b = 2 d·(o − c).' },
-    ]),
-    numberAnswer('c', 'c', cc, [], [{ id: 'r-not-squared', value: ff - P.r, message: 'c = |o − c|² − r²: the radius must be squared.' }]),
-    numberAnswer('discriminant', 'Δ = b² − 4ac', D, [], [
-      { id: 'quarter-discriminant', value: D / 4, message: 'That is Δ/4 = (b/2)² − ac, the half-b form; the question asks for Δ = b² − 4ac.' },
-      { id: 'plus-4ac', value: b * b + 4 * a * cc, message: 'Δ = b² − 4ac (minus).' },
-    ]),
-    numberAnswer('t0', 't0 (smaller root)', t0, [], [
-      { id: 'b-sign', value: slipped ? slipped[0]! : null, message: `${signMsg} The roots come out negated.` },
-      { id: 'no-2a', value: hit ? 2 * t0! : null, message: 'The roots are (−b ± √Δ)/(2a): the 2 in the denominator is missing.' },
-    ]),
-    numberAnswer('t1', 't1 (larger root)', t1, [], [
-      { id: 'b-sign', value: slipped ? slipped[1]! : null, message: `${signMsg} The roots come out negated.` },
-      { id: 'no-2a', value: hit ? 2 * t1! : null, message: 'The roots are (−b ± √Δ)/(2a): the 2 in the denominator is missing.' },
-    ]),
-    numberAnswer('t-hit', 't_hit', tHit, [], [
-      { id: 'negative-root', value: hit && t0! < 0 ? t0 : null, message: 'That root is negative: it lies behind the ray origin. A hit needs t ≥ 0 (the nearest non-negative root).' },
-      { id: 'negative-root', value: hit && t1! < 0 ? t1 : null, message: 'That root is negative: it lies behind the ray origin. A hit needs t ≥ 0; here both roots are negative, so there is no hit (none).' },
-      { id: 'far-root', value: h.case === 'two-hits' ? t1 : null, message: 'That is where the ray leaves the sphere; the visible hit is the nearest root t ≥ 0.' },
-      { id: 'b-sign', value: slippedHit, message: `${signMsg}` },
-    ]),
+    numberAnswer(
+      'a',
+      'a',
+      a,
+      [],
+      [{ id: 'a-not-squared', value: Math.sqrt(a), message: 'a = d·d = |d|², not |d|.' }],
+    ),
+    numberAnswer(
+      'b',
+      'b',
+      b,
+      [],
+      [
+        { id: 'b-sign', value: -b, message: signMsg },
+        {
+          id: 'b-no-2',
+          value: b / 2,
+          message:
+            'That is d·(o − c) = b/2 (the half-b form); in a t² + b t + c the coefficient is b = 2 d·(o − c).',
+        },
+      ],
+    ),
+    numberAnswer(
+      'c',
+      'c',
+      cc,
+      [],
+      [{ id: 'r-not-squared', value: ff - P.r, message: 'c = |o − c|² − r²: the radius must be squared.' }],
+    ),
+    numberAnswer(
+      'discriminant',
+      'Δ = b² − 4ac',
+      D,
+      [],
+      [
+        {
+          id: 'quarter-discriminant',
+          value: D / 4,
+          message: 'That is Δ/4 = (b/2)² − ac, the half-b form; the question asks for Δ = b² − 4ac.',
+        },
+        { id: 'plus-4ac', value: b * b + 4 * a * cc, message: 'Δ = b² − 4ac (minus).' },
+      ],
+    ),
+    numberAnswer(
+      't0',
+      't0 (smaller root)',
+      t0,
+      [],
+      [
+        {
+          id: 'b-sign',
+          value: slipped ? slipped[0] : null,
+          message: `${signMsg} The roots come out negated.`,
+        },
+        {
+          id: 'no-2a',
+          value: hit ? 2 * t0! : null,
+          message: 'The roots are (−b ± √Δ)/(2a): the 2 in the denominator is missing.',
+        },
+      ],
+    ),
+    numberAnswer(
+      't1',
+      't1 (larger root)',
+      t1,
+      [],
+      [
+        {
+          id: 'b-sign',
+          value: slipped ? slipped[1] : null,
+          message: `${signMsg} The roots come out negated.`,
+        },
+        {
+          id: 'no-2a',
+          value: hit ? 2 * t1! : null,
+          message: 'The roots are (−b ± √Δ)/(2a): the 2 in the denominator is missing.',
+        },
+      ],
+    ),
+    numberAnswer(
+      't-hit',
+      't_hit',
+      tHit,
+      [],
+      [
+        {
+          id: 'negative-root',
+          value: hit && t0! < 0 ? t0 : null,
+          message:
+            'That root is negative: it lies behind the ray origin. A hit needs t ≥ 0 (the nearest non-negative root).',
+        },
+        {
+          id: 'negative-root',
+          value: hit && t1! < 0 ? t1 : null,
+          message:
+            'That root is negative: it lies behind the ray origin. A hit needs t ≥ 0; here both roots are negative, so there is no hit (none).',
+        },
+        {
+          id: 'far-root',
+          value: h.case === 'two-hits' ? t1 : null,
+          message: 'That is where the ray leaves the sphere; the visible hit is the nearest root t ≥ 0.',
+        },
+        { id: 'b-sign', value: slippedHit, message: `${signMsg}` },
+      ],
+    ),
     choiceAnswer(
       'case',
       'case',
       CASES,
       h.case,
       h.case === 'inside' || h.case === 'behind'
-        ? [{ id: 'ignored-t-sign', value: 'two-hits', message: 'Δ > 0 gives two roots, but not two hits: a root counts only if t ≥ 0.' }]
+        ? [
+            {
+              id: 'ignored-t-sign',
+              value: 'two-hits',
+              message: 'Δ > 0 gives two roots, but not two hits: a root counts only if t ≥ 0.',
+            },
+          ]
         : [],
       caseWhy(h),
     ),
   ];
-  const dot = (u: Vec3, v: Vec3) => `${tp(u[0])}\\cdot${tp(v[0])} + ${tp(u[1])}\\cdot${tp(v[1])} + ${tp(u[2])}\\cdot${tp(v[2])}`;
+  const dot = (u: Vec3, v: Vec3) =>
+    `${tp(u[0])}\\cdot${tp(v[0])} + ${tp(u[1])}\\cdot${tp(v[1])} + ${tp(u[2])}\\cdot${tp(v[2])}`;
   const solution: SolutionStep[] = [
     { text: 'Substitute p(t) = o + t d into |p − c|² = r², with f = o − c:' },
     { tex: `f = o - c = ${vecDisplay(f)}` },
@@ -130,11 +230,15 @@ export function q5Variant(seed: number): Variant {
     { tex: `\\Delta = b^2 - 4ac = ${tp(b)}^2 - 4\\cdot${tp(a)}\\cdot${tp(cc)} = ${tn(D)}` },
     ...(hit
       ? [
-          { tex: `t_{0,1} = \\frac{-b \\mp \\sqrt{\\Delta}}{2a} = \\frac{${tn(-b)} \\mp ${tn(Math.sqrt(Math.max(D, 0)))}}{${tn(2 * a)}}` },
+          {
+            tex: `t_{0,1} = \\frac{-b \\mp \\sqrt{\\Delta}}{2a} = \\frac{${tn(-b)} \\mp ${tn(Math.sqrt(Math.max(D, 0)))}}{${tn(2 * a)}}`,
+          },
           { tex: `t_0 = ${tn(t0!)},\\quad t_1 = ${tn(t1!)}` },
         ]
       : [{ text: 'Δ < 0: no real root, the ray misses (t0, t1 and t_hit: none).' }]),
-    { text: `${caseWhy(h)} ${tHit !== null ? `t_hit = ${fmt(tHit)}.` : 't_hit: none.'} A hit needs Δ ≥ 0 and t ≥ 0.` },
+    {
+      text: `${caseWhy(h)} ${tHit !== null ? `t_hit = ${fmt(tHit)}.` : 't_hit: none.'} A hit needs Δ ≥ 0 and t ≥ 0.`,
+    },
   ];
   return {
     question: 'q5',
@@ -148,8 +252,17 @@ export function q5Variant(seed: number): Variant {
       { name: 'r', label: 'radius r', value: String(P.r), display: String(P.r) },
     ],
     parts: [
-      { id: 'a', prompt: 'The quadratic a t² + b t + c = 0 and its discriminant.', answers: answers.slice(0, 4) },
-      { id: 'b', prompt: 'The roots (none on a miss), the hit (none if no root is ≥ 0), and the case: miss, tangent, two-hits, inside or behind.', answers: answers.slice(4) },
+      {
+        id: 'a',
+        prompt: 'The quadratic a t² + b t + c = 0 and its discriminant.',
+        answers: answers.slice(0, 4),
+      },
+      {
+        id: 'b',
+        prompt:
+          'The roots (none on a miss), the hit (none if no root is ≥ 0), and the case: miss, tangent, two-hits, inside or behind.',
+        answers: answers.slice(4),
+      },
     ],
     solution,
     sceneHref: `#/ray-sphere?${query({ o: vecValue(P.o), d: vecValue(P.d), c: vecValue(P.c), r: P.r, method: 'naive' })}`,

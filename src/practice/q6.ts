@@ -35,9 +35,13 @@ export interface Q6Params {
 
 export function q6Geometry(P: Q6Params) {
   const light = makeRectLight(P.lc, P.ls[0], P.ls[1], P.tilt);
-  const centre: V3 = [0, 1, 2].map((k) => light.corner[k]! + P.pu * light.edgeX[k]! + P.pv * light.edgeY[k]!) as V3;
+  const centre: V3 = [0, 1, 2].map(
+    (k) => light.corner[k] + P.pu * light.edgeX[k] + P.pv * light.edgeY[k],
+  ) as V3;
   const patch = makeRectLight(centre, P.psize, P.psize, P.tilt + P.ptilt);
-  const dx = centre[0] - P.p[0], dy = centre[1] - P.p[1], dz = centre[2] - P.p[2];
+  const dx = centre[0] - P.p[0],
+    dy = centre[1] - P.p[1],
+    dz = centre[2] - P.p[2];
   const r = Math.hypot(dx, dy, dz);
   const n = patch.normal;
   const cosL = -(dx * n[0] + dy * n[1] + dz * n[2]) / r;
@@ -48,8 +52,10 @@ export function q6Geometry(P: Q6Params) {
 
 function pointTerms(light: RectLight, P: Q6Params) {
   return P.uv.map(([s, t]) => {
-    const x: V3 = [0, 1, 2].map((k) => light.corner[k]! + s * light.edgeX[k]! + t * light.edgeY[k]!) as V3;
-    const dx = x[0] - P.p[0], dy = x[1] - P.p[1], dz = x[2] - P.p[2];
+    const x: V3 = [0, 1, 2].map((k) => light.corner[k] + s * light.edgeX[k] + t * light.edgeY[k]) as V3;
+    const dx = x[0] - P.p[0],
+      dy = x[1] - P.p[1],
+      dz = x[2] - P.p[2];
     const r2 = dx * dx + dy * dy + dz * dz;
     const r = Math.sqrt(r2);
     const nl = light.normal;
@@ -59,7 +65,15 @@ function pointTerms(light: RectLight, P: Q6Params) {
 
 /** The estimate by the core's area-sampling kernel, fed the given points' (s, t) as its uniforms. */
 export function q6Estimate(P: Q6Params, light: RectLight): { estimate: number; terms: Float64Array } {
-  const setup: AreaLightSetup = { light, occluder: null, px: P.p[0], py: P.p[1], pz: P.p[2], L: P.L, rho: P.rho };
+  const setup: AreaLightSetup = {
+    light,
+    occluder: null,
+    px: P.p[0],
+    py: P.p[1],
+    pz: P.p[2],
+    L: P.L,
+    rho: P.rho,
+  };
   const n = P.uv.length;
   const u = new Float64Array(2 * n);
   P.uv.forEach(([s, t], i) => {
@@ -93,7 +107,23 @@ export function q6Params(seed: number): Q6Params {
     if (pts.some((q) => !(q.cosT > 0.05) || !(q.cosL > 0.05))) continue;
     return P;
   }
-  return { p: [0, 0, 0], lc: [0, 0, 2], ls: [1, 1], tilt: 0, L: 1, rho: 0.8, pu: 0.3, pv: 0.6, psize: 0.1, ptilt: 0, uv: [[0.25, 0.25], [0.75, 0.5], [0.5, 0.9]] };
+  return {
+    p: [0, 0, 0],
+    lc: [0, 0, 2],
+    ls: [1, 1],
+    tilt: 0,
+    L: 1,
+    rho: 0.8,
+    pu: 0.3,
+    pv: 0.6,
+    psize: 0.1,
+    ptilt: 0,
+    uv: [
+      [0.25, 0.25],
+      [0.75, 0.5],
+      [0.5, 0.9],
+    ],
+  };
 }
 
 export function q6Variant(seed: number): Variant {
@@ -107,30 +137,98 @@ export function q6Variant(seed: number): Variant {
   const n = pts.length;
   const mean = (xs: number[]) => xs.reduce((s, x) => s + x, 0) / xs.length;
   const answers = [
-    numberAnswer('r', 'r', g.r, [], [{ id: 'r-squared', value: g.r * g.r, message: 'That is r²; r is the distance |x − p|.' }]),
-    numberAnswer('cos-theta-l', 'cos θ_l', g.cosL, [], [
-      { id: 'receiver-cosine', value: g.cosRecv, message: 'That is cos θ at the receiver (against the floor normal +z). θ_l is measured at the patch, against the patch’s own normal n_l.' },
-    ]),
-    numberAnswer('d-omega', 'dω', g.dOmega, [], [
-      { id: 'no-cos', value: dA / (g.r * g.r), message: 'dω = dA cos θ_l / r²: only the patch’s projection perpendicular to the line of sight counts (the cos θ_l is missing).' },
-      { id: 'r-not-squared', value: (dA * g.cosL) / g.r, message: 'Solid angle falls off with the square of the distance: divide by r², not r.' },
-      { id: 'receiver-cosine', value: (dA * g.cosRecv) / (g.r * g.r), message: 'The cosine in dω is the one at the patch, cos θ_l (against n_l), not the receiver’s cos θ.' },
-    ]),
-    numberAnswer('estimate', '⟨L_o⟩', estimate, [], [
-      { id: 'no-area', value: estimate / A, message: `Sampling the light uniformly has p_A = 1/|A|, so the sum is multiplied by |A| = ${fmt(A)}.` },
-      { id: 'no-cos-l', value: mean(pts.map((q) => (A * f * P.L * q.cosT) / q.r2)), message: 'The Jacobian from dω to dA is cos θ_l / r²: the cos θ_l is missing.' },
-      { id: 'rho-not-over-pi', value: estimate * Math.PI, message: 'The Lambertian BRDF is f = ρ/π, not ρ.' },
-    ]),
+    numberAnswer(
+      'r',
+      'r',
+      g.r,
+      [],
+      [{ id: 'r-squared', value: g.r * g.r, message: 'That is r²; r is the distance |x − p|.' }],
+    ),
+    numberAnswer(
+      'cos-theta-l',
+      'cos θ_l',
+      g.cosL,
+      [],
+      [
+        {
+          id: 'receiver-cosine',
+          value: g.cosRecv,
+          message:
+            'That is cos θ at the receiver (against the floor normal +z). θ_l is measured at the patch, against the patch’s own normal n_l.',
+        },
+      ],
+    ),
+    numberAnswer(
+      'd-omega',
+      'dω',
+      g.dOmega,
+      [],
+      [
+        {
+          id: 'no-cos',
+          value: dA / (g.r * g.r),
+          message:
+            'dω = dA cos θ_l / r²: only the patch’s projection perpendicular to the line of sight counts (the cos θ_l is missing).',
+        },
+        {
+          id: 'r-not-squared',
+          value: (dA * g.cosL) / g.r,
+          message: 'Solid angle falls off with the square of the distance: divide by r², not r.',
+        },
+        {
+          id: 'receiver-cosine',
+          value: (dA * g.cosRecv) / (g.r * g.r),
+          message:
+            'The cosine in dω is the one at the patch, cos θ_l (against n_l), not the receiver’s cos θ.',
+        },
+      ],
+    ),
+    numberAnswer(
+      'estimate',
+      '⟨L_o⟩',
+      estimate,
+      [],
+      [
+        {
+          id: 'no-area',
+          value: estimate / A,
+          message: `Sampling the light uniformly has p_A = 1/|A|, so the sum is multiplied by |A| = ${fmt(A)}.`,
+        },
+        {
+          id: 'no-cos-l',
+          value: mean(pts.map((q) => (A * f * P.L * q.cosT) / q.r2)),
+          message: 'The Jacobian from dω to dA is cos θ_l / r²: the cos θ_l is missing.',
+        },
+        {
+          id: 'rho-not-over-pi',
+          value: estimate * Math.PI,
+          message: 'The Lambertian BRDF is f = ρ/π, not ρ.',
+        },
+      ],
+    ),
   ];
-  const rows = pts.map((q, i) => `${vecDisplay(q.x, 4)} & ${tn(q.cosT, 5)} & ${tn(q.cosL, 5)} & ${tn(q.r2, 5)} & ${tn(terms[i]!, 5)}`);
+  const rows = pts.map(
+    (q, i) =>
+      `${vecDisplay(q.x, 4)} & ${tn(q.cosT, 5)} & ${tn(q.cosL, 5)} & ${tn(q.r2, 5)} & ${tn(terms[i], 5)}`,
+  );
   const solution: SolutionStep[] = [
-    { text: `(a) The patch centre is ${vecDisplay(g.centre, 5)} and its normal n_l = ${vecDisplay(g.patch.normal, 5)}; from p = ${vecDisplay(P.p)}:` },
+    {
+      text: `(a) The patch centre is ${vecDisplay(g.centre, 5)} and its normal n_l = ${vecDisplay(g.patch.normal, 5)}; from p = ${vecDisplay(P.p)}:`,
+    },
     { tex: `r = |x - p| = ${tn(g.r)}` },
     { tex: `\\cos\\theta_l = \\frac{-n_l\\cdot(x - p)}{r} = ${tn(g.cosL)}` },
-    { tex: `d\\omega \\approx \\frac{dA\\,\\cos\\theta_l}{r^2} = \\frac{${tn(dA)}\\cdot ${tn(g.cosL)}}{${tn(g.r * g.r)}} = ${tn(g.dOmega)}\\ \\text{sr}` },
-    { text: `(b) Uniform area sampling, p_A = 1/|A| with |A| = ${fmt(A)}, f = ρ/π = ${fmt(f, 6)}, L = ${P.L}. Per point: cos θ (floor normal +z), cos θ_l (light normal ${vecDisplay(g.light.normal, 4)}), r², and the term |A| f L cos θ cos θ_l / r²:` },
-    { tex: `\\begin{array}{ccccc} x_i & \\cos\\theta & \\cos\\theta_l & r^2 & \\text{term} \\\\ \\hline ${rows.join(' \\\\ ')} \\end{array}` },
-    { tex: `\\begin{aligned} \\langle L_o\\rangle &= \\frac{|A|}{N}\\sum_i f L\\,\\cos\\theta_i\\,\\frac{\\cos\\theta_{l,i}}{r_i^2} \\\\ &= \\frac{1}{${n}}\\,(${Array.from(terms, (t) => tn(t, 5)).join(' + ')}) \\\\ &= ${tn(estimate)} \\end{aligned}` },
+    {
+      tex: `d\\omega \\approx \\frac{dA\\,\\cos\\theta_l}{r^2} = \\frac{${tn(dA)}\\cdot ${tn(g.cosL)}}{${tn(g.r * g.r)}} = ${tn(g.dOmega)}\\ \\text{sr}`,
+    },
+    {
+      text: `(b) Uniform area sampling, p_A = 1/|A| with |A| = ${fmt(A)}, f = ρ/π = ${fmt(f, 6)}, L = ${P.L}. Per point: cos θ (floor normal +z), cos θ_l (light normal ${vecDisplay(g.light.normal, 4)}), r², and the term |A| f L cos θ cos θ_l / r²:`,
+    },
+    {
+      tex: `\\begin{array}{ccccc} x_i & \\cos\\theta & \\cos\\theta_l & r^2 & \\text{term} \\\\ \\hline ${rows.join(' \\\\ ')} \\end{array}`,
+    },
+    {
+      tex: `\\begin{aligned} \\langle L_o\\rangle &= \\frac{|A|}{N}\\sum_i f L\\,\\cos\\theta_i\\,\\frac{\\cos\\theta_{l,i}}{r_i^2} \\\\ &= \\frac{1}{${n}}\\,(${Array.from(terms, (t) => tn(t, 5)).join(' + ')}) \\\\ &= ${tn(estimate)} \\end{aligned}`,
+    },
   ];
   const ptsValue = pts.map((q) => vecValue(q.x)).join(';');
   return {
@@ -145,18 +243,39 @@ export function q6Variant(seed: number): Variant {
       { name: 'tilt', label: 'light tilt (°)', value: String(P.tilt), display: `${P.tilt}°` },
       { name: 'L', label: 'radiance L', value: String(P.L), display: String(P.L) },
       { name: 'rho', label: 'albedo ρ', value: String(P.rho), display: String(P.rho) },
-      { name: 'patch-centre', label: 'patch centre', value: vecValue(g.centre), display: vecDisplay(g.centre, 5) },
-      { name: 'patch-normal', label: 'patch normal n_l', value: vecValue(g.patch.normal), display: vecDisplay(g.patch.normal, 5) },
+      {
+        name: 'patch-centre',
+        label: 'patch centre',
+        value: vecValue(g.centre),
+        display: vecDisplay(g.centre, 5),
+      },
+      {
+        name: 'patch-normal',
+        label: 'patch normal n_l',
+        value: vecValue(g.patch.normal),
+        display: vecDisplay(g.patch.normal, 5),
+      },
       { name: 'psize', label: 'patch side (dA = side²)', value: String(P.psize), display: String(P.psize) },
-      { name: 'points', label: 'sample points on the light', value: ptsValue, display: pts.map((q) => vecDisplay(q.x, 5)).join('  ') },
+      {
+        name: 'points',
+        label: 'sample points on the light',
+        value: ptsValue,
+        display: pts.map((q) => vecDisplay(q.x, 5)).join('  '),
+      },
     ],
     parts: [
       { id: 'a', prompt: '(a) The patch: distance r, cos θ_l, and dω.', answers: answers.slice(0, 3) },
-      { id: 'b', prompt: '(b) The area-sampling estimate ⟨L_o⟩ = (|A|/N) Σ f L cos θ cos θ_l / r².', answers: answers.slice(3) },
+      {
+        id: 'b',
+        prompt: '(b) The area-sampling estimate ⟨L_o⟩ = (|A|/N) Σ f L cos θ cos θ_l / r².',
+        answers: answers.slice(3),
+      },
     ],
     solution,
     sceneHref: `#/area-light?${query({ p: vecValue(P.p), lc: vecValue(P.lc), ls: vecValue(P.ls), tilt: P.tilt, L: P.L, rho: P.rho, pu: P.pu, pv: P.pv, psize: P.psize, ptilt: P.ptilt })}`,
     sceneLabel: 'Open this light and patch in the area-light scene',
-    notes: ['The scene draws its own random points on the light; its estimate converges to the analytic L_o rather than reproduce these three.'],
+    notes: [
+      'The scene draws its own random points on the light; its estimate converges to the analytic L_o rather than reproduce these three.',
+    ],
   };
 }

@@ -28,7 +28,8 @@ export const SCENES: readonly SceneInfo[] = [
     path: '/hemisphere',
     title: 'Sampling a hemisphere',
     questions: 'Q1 · Q2',
-    blurb: 'Normalize p(ω) = k cos θ e^φ, find its marginals and CDFs, invert them, and watch the samples land.',
+    blurb:
+      'Normalize p(ω) = k cos θ e^φ, find its marginals and CDFs, invert them, and watch the samples land.',
     examQuery: 'lobe=exam',
     parts: ['1a', '1b', '1c', '1d', '2a', '2b', '2c'],
   },
@@ -55,7 +56,8 @@ export const SCENES: readonly SceneInfo[] = [
     path: '/ray-sphere',
     title: 'Ray–sphere intersection',
     questions: 'Q5',
-    blurb: 'The quadratic, its discriminant, every hit case, and what floating point does to the textbook form.',
+    blurb:
+      'The quadratic, its discriminant, every hit case, and what floating point does to the textbook form.',
     examQuery: '',
     parts: ['5'],
   },

@@ -32,7 +32,10 @@ const ZOOM_STEP = 1.15;
  * Keyboard orbit and zoom for a focused viewport: arrows orbit about the target, + / − zoom,
  * Home resets the view. Returns true when the key was handled.
  */
-export function viewportKey(engine: Pick<Engine, 'orbitBy' | 'zoomBy' | 'resetView'>, e: Pick<KeyboardEvent, 'key' | 'shiftKey'>): boolean {
+export function viewportKey(
+  engine: Pick<Engine, 'orbitBy' | 'zoomBy' | 'resetView'>,
+  e: Pick<KeyboardEvent, 'key' | 'shiftKey'>,
+): boolean {
   const step = e.shiftKey ? FINE_STEP : ORBIT_STEP;
   switch (e.key) {
     case 'ArrowLeft':
@@ -69,7 +72,14 @@ export function viewportKey(engine: Pick<Engine, 'orbitBy' | 'zoomBy' | 'resetVi
  * to zoom; focus it and use the arrow keys to orbit, + / − to zoom, Home (or "Reset view") to go
  * back to the scene's opening camera. A small triad labels the world axes (and φ = 0).
  */
-export function Viewport({ ariaLabel, height = 360, setup, testId, phiZero = true, children }: ViewportProps) {
+export function Viewport({
+  ariaLabel,
+  height = 360,
+  setup,
+  testId,
+  phiZero = true,
+  children,
+}: ViewportProps) {
   const hintId = useId();
   const triad = useRef<SVGSVGElement>(null);
   const box = useRef<HTMLDivElement>(null);
@@ -205,7 +215,11 @@ export function Viewport({ ariaLabel, height = 360, setup, testId, phiZero = tru
         tabIndex={0}
         data-testid={testId}
         data-status={idle ? 'idle' : status}
-        aria-label={idle ? `${ariaLabel} (3D view not started: press Enter to start it)` : `${ariaLabel} (drag or arrow keys to orbit, scroll or + / − to zoom, Home to reset the view)`}
+        aria-label={
+          idle
+            ? `${ariaLabel} (3D view not started: press Enter to start it)`
+            : `${ariaLabel} (drag or arrow keys to orbit, scroll or + / − to zoom, Home to reset the view)`
+        }
         aria-describedby={hintId}
         role="group"
         onKeyDown={onKeyDown}
@@ -224,16 +238,27 @@ export function Viewport({ ariaLabel, height = 360, setup, testId, phiZero = tru
             >
               Show the 3D view
             </button>
-            <p className="viewport-poster-note">On phones and tablets the 3D view starts when you ask for it.</p>
+            <p className="viewport-poster-note">
+              On phones and tablets the 3D view starts when you ask for it.
+            </p>
           </div>
         ) : status === 'loading' ? (
           <p className="viewport-msg">Loading 3D view…</p>
         ) : null}
         {status === 'no-webgl' ? (
-          <p className="viewport-msg">This browser cannot create a WebGL context, so the 3D view is off; every number on the page still works.</p>
+          <p className="viewport-msg">
+            This browser cannot create a WebGL context, so the 3D view is off; every number on the page still
+            works.
+          </p>
         ) : null}
         {ready ? (
-          <svg className="viewport-triad" ref={triad} viewBox="-44 -44 88 88" aria-hidden="true" data-testid={testId ? `${testId}-axes` : undefined}>
+          <svg
+            className="viewport-triad"
+            ref={triad}
+            viewBox="-44 -44 88 88"
+            aria-hidden="true"
+            data-testid={testId ? `${testId}-axes` : undefined}
+          >
             {(['x', 'y', 'z'] as const).map((k) => (
               <g key={k} className={`axis-${k}`} data-axis={k}>
                 <line x1="0" y1="0" x2="0" y2="0" />
@@ -250,7 +275,12 @@ export function Viewport({ ariaLabel, height = 360, setup, testId, phiZero = tru
           </svg>
         ) : null}
         {ready ? (
-          <button type="button" className="viewport-reset" onClick={() => engine?.resetView()} data-testid={testId ? `${testId}-reset` : undefined}>
+          <button
+            type="button"
+            className="viewport-reset"
+            onClick={() => engine?.resetView()}
+            data-testid={testId ? `${testId}-reset` : undefined}
+          >
             Reset view
           </button>
         ) : null}
@@ -258,7 +288,8 @@ export function Viewport({ ariaLabel, height = 360, setup, testId, phiZero = tru
         {idle ? null : children}
       </div>
       <p className="viewport-hint" id={hintId}>
-        Drag to orbit, scroll to zoom. Keyboard: focus the view, then ← → ↑ ↓ orbit (Shift: finer), + / − zoom, Home resets.
+        Drag to orbit, scroll to zoom. Keyboard: focus the view, then ← → ↑ ↓ orbit (Shift: finer), + / −
+        zoom, Home resets.
       </p>
     </div>
   );
@@ -286,8 +317,8 @@ function drawTriad(svg: SVGSVGElement | null, axes: AxisDirs) {
     const lx = sx + ux * 8;
     const ly = sy + uy * 8;
     const texts = g.querySelectorAll('text');
-    texts[0]!.setAttribute('x', lx.toFixed(2));
-    texts[0]!.setAttribute('y', ly.toFixed(2));
+    texts[0].setAttribute('x', lx.toFixed(2));
+    texts[0].setAttribute('y', ly.toFixed(2));
     if (texts[1]) {
       // "φ = 0" under (or above, near the bottom edge) the x label
       texts[1].setAttribute('x', Math.max(-22, Math.min(22, lx)).toFixed(2));

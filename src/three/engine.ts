@@ -152,7 +152,11 @@ const yieldTask = () => new Promise<void>((resolve) => nextTask(resolve));
  * Resolves to null when WebGL is missing, or when `alive()` turns false meanwhile (nothing is left
  * behind then). Throws what three.js throws when the renderer cannot be created.
  */
-export async function startEngine(container: HTMLElement, ariaLabel: string, alive: () => boolean): Promise<Engine | null> {
+export async function startEngine(
+  container: HTMLElement,
+  ariaLabel: string,
+  alive: () => boolean,
+): Promise<Engine | null> {
   await yieldTask();
   if (!alive()) return null;
   if (!webglAvailable()) return null;
@@ -181,14 +185,24 @@ function createRenderer(): { renderer: Three.WebGLRenderer; software: boolean } 
   const software = probeWebGL().software;
   const adopted = software ? takeSpare() : null;
   const renderer = adopted
-    ? new THREE.WebGLRenderer({ canvas: adopted.canvas, context: adopted.gl, antialias: false, alpha: true, powerPreference: 'low-power' })
+    ? new THREE.WebGLRenderer({
+        canvas: adopted.canvas,
+        context: adopted.gl,
+        antialias: false,
+        alpha: true,
+        powerPreference: 'low-power',
+      })
     : new THREE.WebGLRenderer({ antialias: !software, alpha: true, powerPreference: 'low-power' });
   renderer.setPixelRatio(software ? 1 : Math.min(window.devicePixelRatio || 1, 2));
   renderer.setClearColor(0x000000, 0);
   return { renderer, software };
 }
 
-export function createEngine(container: HTMLElement, ariaLabel: string, made: { renderer: Three.WebGLRenderer; software: boolean } = createRenderer()): Engine {
+export function createEngine(
+  container: HTMLElement,
+  ariaLabel: string,
+  made: { renderer: Three.WebGLRenderer; software: boolean } = createRenderer(),
+): Engine {
   const { renderer, software } = made;
   const canvas = renderer.domElement;
   canvas.setAttribute('role', 'img');
@@ -242,7 +256,12 @@ export function createEngine(container: HTMLElement, ariaLabel: string, made: { 
     needsRender = false;
     if (renderCbs.size) {
       const e = camera.matrixWorld.elements; // column j = camera axis j in world space; row i = world axis i in camera space
-      const axes: AxisDirs = { x: [e[0]!, e[4]!, e[8]!], y: [e[1]!, e[5]!, e[9]!], z: [e[2]!, e[6]!, e[10]!], distance: camera.position.distanceTo(controls.target) };
+      const axes: AxisDirs = {
+        x: [e[0], e[4], e[8]],
+        y: [e[1], e[5], e[9]],
+        z: [e[2], e[6], e[10]],
+        distance: camera.position.distanceTo(controls.target),
+      };
       for (const cb of renderCbs) cb(axes);
     }
     if (animating) schedule();
@@ -323,7 +342,12 @@ export function createEngine(container: HTMLElement, ariaLabel: string, made: { 
   const renderables = () => {
     const out: Three.Object3D[] = [];
     scene.traverse((o) => {
-      const m = o as Three.Object3D & { isMesh?: boolean; isPoints?: boolean; isLine?: boolean; isSprite?: boolean };
+      const m = o as Three.Object3D & {
+        isMesh?: boolean;
+        isPoints?: boolean;
+        isLine?: boolean;
+        isSprite?: boolean;
+      };
       if (m.isMesh || m.isPoints || m.isLine || m.isSprite) out.push(o);
     });
     return out;

@@ -15,7 +15,16 @@
  * renders the subtree in slices that yield to input. Where IntersectionObserver is missing
  * everything mounts at once.
  */
-import { createContext, startTransition, useContext, useEffect, useLayoutEffect, useRef, useState, type ReactNode } from 'react';
+import {
+  createContext,
+  startTransition,
+  useContext,
+  useEffect,
+  useLayoutEffect,
+  useRef,
+  useState,
+  type ReactNode,
+} from 'react';
 import { flushSync } from 'react-dom';
 import { nextTask } from './chunked';
 import { createViewQueue } from './viewQueue';
@@ -134,7 +143,13 @@ function hookPrint(): void {
   window.addEventListener('beforeprint', flushDeferred, { capture: true });
 }
 
-export function Deferred({ children, estimate = 480 }: { children: ReactNode; /** the placeholder's height (px) */ estimate?: number }) {
+export function Deferred({
+  children,
+  estimate = 480,
+}: {
+  children: ReactNode;
+  /** the placeholder's height (px) */ estimate?: number;
+}) {
   // mounted at once where nothing can tell when it is near, and when first rendered by the print
   // flush (a section nested in one that the flush mounts)
   const [on, setOn] = useState(() => typeof IntersectionObserver !== 'function' || flushing);
@@ -173,5 +188,7 @@ export function Deferred({ children, estimate = 480 }: { children: ReactNode; /*
     releaseAfterFrame(owner);
   }, [on, owner]);
   if (on) return <SectionWidth.Provider value={width}>{children}</SectionWidth.Provider>;
-  return <div ref={ref} className="deferred-pending" data-deferred="pending" style={{ minHeight: estimate }} />;
+  return (
+    <div ref={ref} className="deferred-pending" data-deferred="pending" style={{ minHeight: estimate }} />
+  );
 }

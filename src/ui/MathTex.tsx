@@ -18,7 +18,9 @@ function loadKatexCss(): Promise<unknown> {
 /** KaTeX itself on the main thread (and its stylesheet): only where no worker can be started. */
 export function loadKatex(): Promise<Katex> {
   if (!katexPromise) {
-    katexPromise = Promise.all([import('katex'), loadKatexCss()]).then(([m]) => (m as unknown as { default?: Katex }).default ?? m);
+    katexPromise = Promise.all([import('katex'), loadKatexCss()]).then(
+      ([m]) => (m as unknown as { default?: Katex }).default ?? m,
+    );
   }
   return katexPromise;
 }
@@ -80,7 +82,8 @@ function typeset(tex: string, display: boolean): Promise<string | null> {
 
 function typesetNow(tex: string, display: boolean): Promise<string | null> {
   const w = katexWorker();
-  const onMain = () => loadKatex().then((k) => k.renderToString(tex, { ...KATEX_OPTIONS, displayMode: display }));
+  const onMain = () =>
+    loadKatex().then((k) => k.renderToString(tex, { ...KATEX_OPTIONS, displayMode: display }));
   if (!w) return onMain();
   return new Promise<string | null>((resolve, reject) => {
     const id = nextId++;
@@ -129,7 +132,15 @@ function hookPrint(): void {
  * shown as plain text (./texPreview: "p(ω) = k cos θ e^φ"); if KaTeX cannot be run, the source is
  * shown as code. Never throws.
  */
-export function MathTex({ tex, display = false, className }: { tex: string; display?: boolean; className?: string }) {
+export function MathTex({
+  tex,
+  display = false,
+  className,
+}: {
+  tex: string;
+  display?: boolean;
+  className?: string;
+}) {
   const key = `${display ? 'D' : 'I'}${tex}`;
   // undefined: not typeset yet; null: KaTeX could not be run
   const [html, setHtml] = useState<string | null | undefined>(() => cached(key));
@@ -180,5 +191,11 @@ export function MathTex({ tex, display = false, className }: { tex: string; disp
       </Tag>
     );
   }
-  return <Tag ref={ref as React.RefObject<HTMLDivElement>} className={cls} dangerouslySetInnerHTML={{ __html: html }} />;
+  return (
+    <Tag
+      ref={ref as React.RefObject<HTMLDivElement>}
+      className={cls}
+      dangerouslySetInnerHTML={{ __html: html }}
+    />
+  );
 }

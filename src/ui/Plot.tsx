@@ -7,7 +7,9 @@ let plotlyPromise: Promise<PlotlyModule> | null = null;
 /** Load plotly.js (cartesian bundle: scatter, bar, histogram, heatmap, histogram2d, contour) once. */
 export function loadPlotly(): Promise<PlotlyModule> {
   if (!plotlyPromise) {
-    plotlyPromise = import('plotly.js-cartesian-dist-min').then((m) => ((m as unknown as { default?: PlotlyModule }).default ?? (m as unknown as PlotlyModule)));
+    plotlyPromise = import('plotly.js-cartesian-dist-min').then(
+      (m) => (m as unknown as { default?: PlotlyModule }).default ?? (m as unknown as PlotlyModule),
+    );
   }
   return plotlyPromise;
 }
@@ -94,7 +96,10 @@ export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProp
   const seen = useSeenOnce(box);
   const [plotly, setPlotly] = useState<PlotlyModule | null>(null);
   const [failed, setFailed] = useState(false);
-  const themeKey = typeof document !== 'undefined' ? `${document.documentElement.dataset.theme}-${document.documentElement.classList.contains('present')}` : '';
+  const themeKey =
+    typeof document !== 'undefined'
+      ? `${document.documentElement.dataset.theme}-${document.documentElement.classList.contains('present')}`
+      : '';
 
   useEffect(() => {
     if (!seen) return;
@@ -120,7 +125,13 @@ export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProp
     const layout = layoutRef.current;
     const c = themeColors();
     // mathematical axes: powers of ten (1×10⁻⁶), never SI prefixes (1µ)
-    const axis = { gridcolor: c.grid, zerolinecolor: c.grid, linecolor: c.grid, automargin: true, exponentformat: 'power' };
+    const axis = {
+      gridcolor: c.grid,
+      zerolinecolor: c.grid,
+      linecolor: c.grid,
+      automargin: true,
+      exponentformat: 'power',
+    };
     const base: PlotLayout = {
       height,
       margin: { l: 56, r: 16, t: 28, b: 44 },
@@ -159,13 +170,20 @@ export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProp
   }, [plotly]);
 
   return (
-    <figure className="plot" ref={box} style={{ minHeight: height }} aria-label={ariaLabel} data-testid={testId}>
+    <figure
+      className="plot"
+      ref={box}
+      style={{ minHeight: height }}
+      aria-label={ariaLabel}
+      data-testid={testId}
+    >
       {failed ? <p className="plot-placeholder">The plot could not be drawn.</p> : null}
       {!plotly && !failed ? <p className="plot-placeholder">Loading plot…</p> : null}
       <div ref={el} className="plot-canvas" />
       {clean.dropped > 0 ? (
         <figcaption className="small" data-testid="plot-dropped">
-          {clean.dropped} value{clean.dropped === 1 ? '' : 's'} too large to draw (±∞ or beyond ±10¹⁰⁰) left out of this plot.
+          {clean.dropped} value{clean.dropped === 1 ? '' : 's'} too large to draw (±∞ or beyond ±10¹⁰⁰) left
+          out of this plot.
         </figcaption>
       ) : null}
     </figure>

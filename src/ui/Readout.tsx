@@ -30,14 +30,22 @@ export function formatNumber(x: number, digits = 6): string {
 
 /** The visible text of a readout's value (as {@link Readout} shows it). */
 export function readoutText(value: number | string | null | undefined, digits = 6): string {
-  return typeof value === 'number' ? formatNumber(value, digits) : value === null || value === undefined ? '—' : value;
+  return typeof value === 'number'
+    ? formatNumber(value, digits)
+    : value === null || value === undefined
+      ? '—'
+      : value;
 }
 
 /**
  * Writes a readout's value into the `<output>` of a {@link LiveReadout} directly (no React render):
  * for figures that follow an animation frame by frame. Writes only what changed.
  */
-export function writeReadout(el: HTMLElement | null, value: number | string | null | undefined, digits = 6): void {
+export function writeReadout(
+  el: HTMLElement | null,
+  value: number | string | null | undefined,
+  digits = 6,
+): void {
   if (!el) return;
   const dv = readoutValue(value);
   if (el.getAttribute('data-value') === dv && el.firstChild) return;
@@ -51,7 +59,12 @@ export function writeReadout(el: HTMLElement | null, value: number | string | nu
  * (from an animation frame subscription, and after each of its renders), so a playing animation
  * updates the number without re-rendering. Same markup and test hooks as {@link Readout}.
  */
-export function LiveReadout({ id, label, note, outRef }: Omit<ReadoutProps, 'value' | 'digits' | 'unit'> & { outRef: React.RefObject<HTMLOutputElement | null> }) {
+export function LiveReadout({
+  id,
+  label,
+  note,
+  outRef,
+}: Omit<ReadoutProps, 'value' | 'digits' | 'unit'> & { outRef: React.RefObject<HTMLOutputElement | null> }) {
   return (
     <div className="readout">
       <span className="readout-label">{label}</span>
@@ -67,7 +80,12 @@ export function Readout({ id, label, value, digits = 6, unit, note }: ReadoutPro
   return (
     <div className="readout">
       <span className="readout-label">{label}</span>
-      <output className="readout-value" data-testid={id} data-value={dv} title={dv === 'none' ? 'not applicable' : dv}>
+      <output
+        className="readout-value"
+        data-testid={id}
+        data-value={dv}
+        title={dv === 'none' ? 'not applicable' : dv}
+      >
         {text}
         {unit && dv !== 'none' ? <span className="readout-unit"> {unit}</span> : null}
       </output>

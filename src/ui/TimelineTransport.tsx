@@ -21,7 +21,13 @@ function speedText(s: number): string {
   return s === 0.25 ? '¼×' : s === 0.5 ? '½×' : `${s}×`;
 }
 
-export function TimelineTransport({ timeline: tl, label, format, children, testId = 'timeline' }: TimelineTransportProps) {
+export function TimelineTransport({
+  timeline: tl,
+  label,
+  format,
+  children,
+  testId = 'timeline',
+}: TimelineTransportProps) {
   const id = useId();
   // The scrubber's thumb follows every frame; data-t, the position text and aria-valuetext at most
   // TEXT_HZ times a second while playing (exact when paused): direct writes, so a timeline
@@ -30,7 +36,8 @@ export function TimelineTransport({ timeline: tl, label, format, children, testI
   const root = useRef<HTMLDivElement>(null);
   const pos = useRef<HTMLOutputElement>(null);
   const lastText = useRef(-Infinity);
-  const textOf = (t: number) => (format ? format(t) : tl.integer ? `${t} of ${tl.max}` : `${Math.round((t / (tl.max || 1)) * 100)} %`);
+  const textOf = (t: number) =>
+    format ? format(t) : tl.integer ? `${t} of ${tl.max}` : `${Math.round((t / (tl.max || 1)) * 100)} %`;
   useTimelineFrame(tl, (t, playing) => {
     const el = scrub.current;
     if (el && Number(el.value) !== t) el.value = String(t);
@@ -66,20 +73,45 @@ export function TimelineTransport({ timeline: tl, label, format, children, testI
     if (e.key === ' ' || e.code === 'Space') e.preventDefault();
   };
   return (
-    <div ref={root} className="timeline" role="group" aria-label={`${label}: animation`} data-testid={testId} data-t={String(tl.t)} data-playing={tl.playing ? '1' : '0'} onKeyDown={onKeyDown} onKeyUp={onKeyUp}>
+    <div
+      ref={root}
+      className="timeline"
+      role="group"
+      aria-label={`${label}: animation`}
+      data-testid={testId}
+      data-t={String(tl.t)}
+      data-playing={tl.playing ? '1' : '0'}
+      onKeyDown={onKeyDown}
+      onKeyUp={onKeyUp}
+    >
       <div className="timeline-buttons">
-        <button type="button" onClick={tl.toggle} aria-pressed={tl.playing} data-testid={`${testId}-play`} title="Play / pause (Space)">
+        <button
+          type="button"
+          onClick={tl.toggle}
+          aria-pressed={tl.playing}
+          data-testid={`${testId}-play`}
+          title="Play / pause (Space)"
+        >
           {tl.playing ? '❚❚ Pause' : '▶ Play'}
         </button>
         <button type="button" onClick={tl.step} data-testid={`${testId}-step`} title="Step forward (s)">
           Step ▸
         </button>
-        <button type="button" onClick={tl.reset} data-testid={`${testId}-reset`} title="Back to the start (r)">
+        <button
+          type="button"
+          onClick={tl.reset}
+          data-testid={`${testId}-reset`}
+          title="Back to the start (r)"
+        >
           ↺ Reset
         </button>
         <label className="timeline-speed">
           <span>Speed</span>
-          <select value={tl.speed} onChange={(e) => tl.setSpeed(Number(e.target.value))} data-testid={`${testId}-speed`}>
+          <select
+            value={tl.speed}
+            onChange={(e) => tl.setSpeed(Number(e.target.value))}
+            data-testid={`${testId}-speed`}
+          >
             {TIMELINE_SPEEDS.map((s) => (
               <option key={s} value={s}>
                 {speedText(s)}

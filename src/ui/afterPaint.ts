@@ -14,7 +14,8 @@ export function afterPaint(): Promise<void> {
       resolve();
     };
     const visible = typeof document === 'undefined' || document.visibilityState !== 'hidden';
-    if (visible && typeof requestAnimationFrame === 'function') requestAnimationFrame(() => setTimeout(go, 0));
+    if (visible && typeof requestAnimationFrame === 'function')
+      requestAnimationFrame(() => setTimeout(go, 0));
     setTimeout(go, visible ? 1000 : 0);
   });
 }

@@ -15,7 +15,10 @@ const queue: Job[] = [];
 let scheduled = false;
 
 interface PostTaskScheduler {
-  postTask: (cb: () => void, opts?: { priority?: 'user-blocking' | 'user-visible' | 'background' }) => Promise<unknown>;
+  postTask: (
+    cb: () => void,
+    opts?: { priority?: 'user-blocking' | 'user-visible' | 'background' },
+  ) => Promise<unknown>;
 }
 
 /** Run `fn` in a new task soon (scheduler.postTask, else a MessageChannel message, else setTimeout). */

@@ -33,7 +33,18 @@ export interface NumberFieldProps {
  * A number input that accepts only finite numbers within [min, max]: invalid text is flagged
  * (aria-invalid, with a message) and never reaches the model; Enter or blur commits.
  */
-export function NumberField({ label, value, onChange, min, max, step, unit, hideLabel, id, testId }: NumberFieldProps) {
+export function NumberField({
+  label,
+  value,
+  onChange,
+  min,
+  max,
+  step,
+  unit,
+  hideLabel,
+  id,
+  testId,
+}: NumberFieldProps) {
   const autoId = useId();
   const inputId = id ?? autoId;
   const [text, setText] = useState(String(value));
@@ -118,10 +129,22 @@ const LOG_STEPS = 1000;
  * A labelled range slider with a number box beside it. Keyboard: arrows / PageUp / PageDown /
  * Home / End on the slider (native), exact typing in the box.
  */
-export function Slider({ label, value, onChange, min, max, step, log, unit, digits = 4, testId }: SliderProps) {
+export function Slider({
+  label,
+  value,
+  onChange,
+  min,
+  max,
+  step,
+  log,
+  unit,
+  digits = 4,
+  testId,
+}: SliderProps) {
   const id = useId();
   const useLog = !!log && min > 0;
-  const toTrack = (x: number) => (useLog ? ((Math.log(x) - Math.log(min)) / (Math.log(max) - Math.log(min))) * LOG_STEPS : x);
+  const toTrack = (x: number) =>
+    useLog ? ((Math.log(x) - Math.log(min)) / (Math.log(max) - Math.log(min))) * LOG_STEPS : x;
   const fromTrack = (t: number) => {
     if (!useLog) return t;
     const x = Math.exp(Math.log(min) + (t / LOG_STEPS) * (Math.log(max) - Math.log(min)));
@@ -148,7 +171,15 @@ export function Slider({ label, value, onChange, min, max, step, log, unit, digi
             if (Number.isFinite(x) && x !== value) onChange(x);
           }}
         />
-        <NumberField label={label} hideLabel value={value} onChange={onChange} min={min} max={max} step={step} />
+        <NumberField
+          label={label}
+          hideLabel
+          value={value}
+          onChange={onChange}
+          min={min}
+          max={max}
+          step={step}
+        />
       </div>
     </div>
   );
@@ -191,7 +222,13 @@ export function Toggle({ label, checked, onChange, testId }: ToggleProps) {
   const id = useId();
   return (
     <div className="field toggle-field">
-      <input id={id} data-testid={testId} type="checkbox" checked={checked} onChange={(e) => onChange(e.target.checked)} />
+      <input
+        id={id}
+        data-testid={testId}
+        type="checkbox"
+        checked={checked}
+        onChange={(e) => onChange(e.target.checked)}
+      />
       <label htmlFor={id}>{label}</label>
     </div>
   );
@@ -249,10 +286,24 @@ export function ExprField({ label, value, onCommit, error, placeholder, hint, te
   );
 }
 
-export function Panel({ title, children, id, className }: { title?: ReactNode; children: ReactNode; id?: string; className?: string }) {
+export function Panel({
+  title,
+  children,
+  id,
+  className,
+}: {
+  title?: ReactNode;
+  children: ReactNode;
+  id?: string;
+  className?: string;
+}) {
   const hid = useId();
   return (
-    <section className={`panel${className ? ` ${className}` : ''}`} id={id} aria-labelledby={title ? hid : undefined}>
+    <section
+      className={`panel${className ? ` ${className}` : ''}`}
+      id={id}
+      aria-labelledby={title ? hid : undefined}
+    >
       {title ? (
         <h2 className="panel-title" id={hid}>
           {title}
@@ -264,16 +315,36 @@ export function Panel({ title, children, id, className }: { title?: ReactNode; c
 }
 
 /** A visible message; warnings and errors are announced (role=status / role=alert). */
-export function Notice({ kind = 'info', children, testId }: { kind?: 'info' | 'warn' | 'error'; children: ReactNode; testId?: string }) {
+export function Notice({
+  kind = 'info',
+  children,
+  testId,
+}: {
+  kind?: 'info' | 'warn' | 'error';
+  children: ReactNode;
+  testId?: string;
+}) {
   return (
-    <div className={`notice notice-${kind}`} role={kind === 'error' ? 'alert' : 'status'} data-testid={testId}>
+    <div
+      className={`notice notice-${kind}`}
+      role={kind === 'error' ? 'alert' : 'status'}
+      data-testid={testId}
+    >
       {children}
     </div>
   );
 }
 
 /** Responsive scene layout: controls | main | aside on wide screens, stacked on phones. */
-export function SceneLayout({ controls, main, aside }: { controls: ReactNode; main: ReactNode; aside?: ReactNode }) {
+export function SceneLayout({
+  controls,
+  main,
+  aside,
+}: {
+  controls: ReactNode;
+  main: ReactNode;
+  aside?: ReactNode;
+}) {
   return (
     <div className={`scene-layout${aside ? ' has-aside' : ''}`}>
       <div className="scene-controls">

@@ -24,9 +24,24 @@ import { questionStart, type SceneInfo } from '../scenes/registry';
 import type { ShellFlags } from '../app/route';
 
 /** One exam question: its number and title, and its parts in order. */
-export function ExamQuestion({ n, title, intro, children }: { n: number; title: string; intro?: ReactNode; children: ReactNode }) {
+export function ExamQuestion({
+  n,
+  title,
+  intro,
+  children,
+}: {
+  n: number;
+  title: string;
+  intro?: ReactNode;
+  children: ReactNode;
+}) {
   return (
-    <section className="exam-question" id={`question-${n}`} aria-labelledby={`question-${n}-title`} data-testid={`question-${n}`}>
+    <section
+      className="exam-question"
+      id={`question-${n}`}
+      aria-labelledby={`question-${n}-title`}
+      data-testid={`question-${n}`}
+    >
       <h2 id={`question-${n}-title`} className="exam-question-title">
         Exam question {n}
         <span className="exam-question-sub"> · {title}</span>
@@ -41,10 +56,26 @@ export function ExamQuestion({ n, title, intro, children }: { n: number; title: 
  * One sub-question: what the exam asks (quoted), then the scene's derivation and live answer
  * (children). `id` is the part, e.g. '1a'; the element's id is `part-1a`.
  */
-export function ExamPart({ id, title, asks, children }: { id: string; title?: string; asks: ReactNode; children: ReactNode }) {
+export function ExamPart({
+  id,
+  title,
+  asks,
+  children,
+}: {
+  id: string;
+  title?: string;
+  asks: ReactNode;
+  children: ReactNode;
+}) {
   const letter = id.replace(/^\d+/, '');
   return (
-    <section className="exam-part" id={`part-${id}`} tabIndex={-1} aria-labelledby={`part-${id}-title`} data-testid={`part-${id}`}>
+    <section
+      className="exam-part"
+      id={`part-${id}`}
+      tabIndex={-1}
+      aria-labelledby={`part-${id}-title`}
+      data-testid={`part-${id}`}
+    >
       <h3 id={`part-${id}-title`} className="exam-part-title">
         {letter ? `(${letter})` : `Q${id}`}
         {title ? ` ${title}` : ''}
@@ -59,7 +90,15 @@ export function ExamPart({ id, title, asks, children }: { id: string; title?: st
 }
 
 /** The written derivation: the steps the key awards marks for (with live numbers where they have numbers). */
-export function Derivation({ title = 'Derivation', children, testId }: { title?: string; children: ReactNode; testId?: string }) {
+export function Derivation({
+  title = 'Derivation',
+  children,
+  testId,
+}: {
+  title?: string;
+  children: ReactNode;
+  testId?: string;
+}) {
   return (
     <div className="exam-derivation" data-testid={testId}>
       <h4 className="exam-block-title">{title}</h4>
@@ -69,7 +108,15 @@ export function Derivation({ title = 'Derivation', children, testId }: { title?:
 }
 
 /** The answer, computed live by the math core (readouts go here). */
-export function LiveAnswer({ title = 'Answer, computed live', children, testId }: { title?: string; children: ReactNode; testId?: string }) {
+export function LiveAnswer({
+  title = 'Answer, computed live',
+  children,
+  testId,
+}: {
+  title?: string;
+  children: ReactNode;
+  testId?: string;
+}) {
   return (
     <div className="exam-answer" data-testid={testId}>
       <h4 className="exam-block-title">{title}</h4>
@@ -90,7 +137,11 @@ export function KeyNote({ children, testId }: { children: ReactNode; testId?: st
 /** Everything beyond the exam, clearly marked as such (stability, QMC, run time, robust forms). */
 export function ExploreFurther({ children, intro }: { children: ReactNode; intro?: ReactNode }) {
   return (
-    <section className="explore-further" aria-labelledby="explore-further-title" data-testid="explore-further">
+    <section
+      className="explore-further"
+      aria-labelledby="explore-further-title"
+      data-testid="explore-further"
+    >
       <h2 id="explore-further-title">
         Explore further <span className="explore-badge">beyond the exam</span>
       </h2>
@@ -118,7 +169,13 @@ export function questionHref(q: number, flags: Pick<ShellFlags, 'present' | 'the
 }
 
 /** Previous / next exam question links, under every scene (not in embeds). */
-export function QuestionNav({ info, flags }: { info: SceneInfo; flags: Pick<ShellFlags, 'present' | 'theme'> }) {
+export function QuestionNav({
+  info,
+  flags,
+}: {
+  info: SceneInfo;
+  flags: Pick<ShellFlags, 'present' | 'theme'>;
+}) {
   const qs = [...new Set(info.parts.map((p) => Number.parseInt(p, 10)))];
   const first = Math.min(...qs);
   const last = Math.max(...qs);

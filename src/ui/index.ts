@@ -1,12 +1,53 @@
-export { Readout, LiveReadout, readoutValue, readoutText, writeReadout, formatNumber, type ReadoutProps } from './Readout';
-export { NumberField, Slider, Select, Toggle, ExprField, Panel, Notice, SceneLayout, Transport } from './controls';
+export {
+  Readout,
+  LiveReadout,
+  readoutValue,
+  readoutText,
+  writeReadout,
+  formatNumber,
+  type ReadoutProps,
+} from './Readout';
+export {
+  NumberField,
+  Slider,
+  Select,
+  Toggle,
+  ExprField,
+  Panel,
+  Notice,
+  SceneLayout,
+  Transport,
+} from './controls';
 export { MathTex, loadKatex } from './MathTex';
 export { runChunked, nextTask } from './chunked';
 export { Plot, loadPlotly, type PlotTrace, type PlotLayout } from './Plot';
 export { useShortcuts, type ShortcutHandlers } from './shortcuts';
 export { useSeenOnce, observeVisibility, touchOnly } from './useInView';
-export { useTimeline, useTimelineFrame, useTimelinePosition, useCoarsePosition, timelineParams, advance, clampPosition, prefersReducedMotion, TIMELINE_SPEEDS, TEXT_HZ, type Timeline, type TimelineOptions, type TimelineListener } from './timeline';
+export {
+  useTimeline,
+  useTimelineFrame,
+  useTimelinePosition,
+  useCoarsePosition,
+  timelineParams,
+  advance,
+  clampPosition,
+  prefersReducedMotion,
+  TIMELINE_SPEEDS,
+  TEXT_HZ,
+  type Timeline,
+  type TimelineOptions,
+  type TimelineListener,
+} from './timeline';
 export { TimelineTransport, type TimelineTransportProps } from './TimelineTransport';
-export { ExamQuestion, ExamPart, Derivation, LiveAnswer, KeyNote, ExploreFurther, QuestionNav, questionHref } from './exam';
+export {
+  ExamQuestion,
+  ExamPart,
+  Derivation,
+  LiveAnswer,
+  KeyNote,
+  ExploreFurther,
+  QuestionNav,
+  questionHref,
+} from './exam';
 export { Deferred, useSectionWidth } from './Deferred';
 export { useCompiled, type Compiled, type CompileOutcome } from './useCompiled';

@@ -30,7 +30,7 @@ let inserting = false;
 
 function insertBatch(): void {
   let spent = 0;
-  while (arrivals.length && (spent === 0 || spent + arrivals[0]!.cost <= HTML_PER_FRAME)) {
+  while (arrivals.length && (spent === 0 || spent + arrivals[0].cost <= HTML_PER_FRAME)) {
     const a = arrivals.shift()!;
     spent += a.cost;
     try {

@@ -108,13 +108,23 @@ export function ShortcutProvider({ active, children }: { active: boolean; childr
   }, [active, toggleHelp]);
   // the list shows only the keys that do something on this page
   const available = helpOpen
-    ? SHORTCUTS.filter((s) => s.action === 'help' || [...handlersRef.current].some((h) => !!h.current[s.action as keyof ShortcutHandlers]))
+    ? SHORTCUTS.filter(
+        (s) =>
+          s.action === 'help' ||
+          [...handlersRef.current].some((h) => !!h.current[s.action as keyof ShortcutHandlers]),
+      )
     : [];
   return (
     <ShortcutContext.Provider value={registry.current}>
       {children}
       {helpOpen ? (
-        <div className="shortcut-help" role="dialog" aria-modal="false" aria-label="Keyboard shortcuts" data-testid="shortcut-help">
+        <div
+          className="shortcut-help"
+          role="dialog"
+          aria-modal="false"
+          aria-label="Keyboard shortcuts"
+          data-testid="shortcut-help"
+        >
           <h2>Keyboard shortcuts</h2>
           <dl>
             {available.map((s) => (

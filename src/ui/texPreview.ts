@@ -8,50 +8,327 @@
  */
 
 const SYMBOL: Record<string, string> = {
-  alpha: 'α', beta: 'β', gamma: 'γ', delta: 'δ', epsilon: 'ε', varepsilon: 'ε', zeta: 'ζ', eta: 'η',
-  theta: 'θ', vartheta: 'ϑ', iota: 'ι', kappa: 'κ', lambda: 'λ', mu: 'μ', nu: 'ν', xi: 'ξ', pi: 'π',
-  rho: 'ρ', sigma: 'σ', tau: 'τ', upsilon: 'υ', phi: 'φ', varphi: 'φ', chi: 'χ', psi: 'ψ', omega: 'ω',
-  Gamma: 'Γ', Delta: 'Δ', Theta: 'Θ', Lambda: 'Λ', Xi: 'Ξ', Pi: 'Π', Sigma: 'Σ', Phi: 'Φ', Psi: 'Ψ',
-  Omega: 'Ω', ell: 'ℓ',
-  int: '∫', iint: '∬', oint: '∮', sum: '∑', prod: '∏', infty: '∞', partial: '∂', nabla: '∇',
-  cdot: '·', times: '×', div: '÷', pm: '±', mp: '∓', ast: '∗', star: '⋆', circ: '∘', bullet: '•',
-  le: '≤', leq: '≤', ge: '≥', geq: '≥', ne: '≠', neq: '≠', approx: '≈', sim: '∼', simeq: '≃',
-  equiv: '≡', propto: '∝', ll: '≪', gg: '≫', in: '∈', notin: '∉', subset: '⊂', subseteq: '⊆',
-  cup: '∪', cap: '∩', setminus: '∖', emptyset: '∅', forall: '∀', exists: '∃', neg: '¬',
-  to: '→', rightarrow: '→', leftarrow: '←', Rightarrow: '⇒', Leftarrow: '⇐', Leftrightarrow: '⇔',
-  iff: '⇔', implies: '⇒', mapsto: '↦', uparrow: '↑', downarrow: '↓',
-  ldots: '…', cdots: '⋯', dots: '…', vdots: '⋮', prime: '′', angle: '∠', perp: '⊥', parallel: '∥',
-  langle: '⟨', rangle: '⟩', lfloor: '⌊', rfloor: '⌋', lceil: '⌈', rceil: '⌉', vert: '|', Vert: '‖',
-  lvert: '|', rvert: '|', lVert: '‖', rVert: '‖', mid: '|', sqrt: '√', surd: '√', deg: '°',
-  checkmark: '✓', hbar: 'ℏ', wedge: '∧', vee: '∨', oplus: '⊕', otimes: '⊗', colon: ':',
-  lbrace: '{', rbrace: '}', lbrack: '[', rbrack: ']', backslash: '\\',
-  quad: '  ', qquad: '    ', ',': ' ', ':': ' ', ';': ' ', '>': ' ', ' ': ' ', '!': '', '/': '',
-  '{': '{', '}': '}', '%': '%', '&': '&', _: '_', '#': '#', $: '$', '|': '‖',
+  alpha: 'α',
+  beta: 'β',
+  gamma: 'γ',
+  delta: 'δ',
+  epsilon: 'ε',
+  varepsilon: 'ε',
+  zeta: 'ζ',
+  eta: 'η',
+  theta: 'θ',
+  vartheta: 'ϑ',
+  iota: 'ι',
+  kappa: 'κ',
+  lambda: 'λ',
+  mu: 'μ',
+  nu: 'ν',
+  xi: 'ξ',
+  pi: 'π',
+  rho: 'ρ',
+  sigma: 'σ',
+  tau: 'τ',
+  upsilon: 'υ',
+  phi: 'φ',
+  varphi: 'φ',
+  chi: 'χ',
+  psi: 'ψ',
+  omega: 'ω',
+  Gamma: 'Γ',
+  Delta: 'Δ',
+  Theta: 'Θ',
+  Lambda: 'Λ',
+  Xi: 'Ξ',
+  Pi: 'Π',
+  Sigma: 'Σ',
+  Phi: 'Φ',
+  Psi: 'Ψ',
+  Omega: 'Ω',
+  ell: 'ℓ',
+  int: '∫',
+  iint: '∬',
+  oint: '∮',
+  sum: '∑',
+  prod: '∏',
+  infty: '∞',
+  partial: '∂',
+  nabla: '∇',
+  cdot: '·',
+  times: '×',
+  div: '÷',
+  pm: '±',
+  mp: '∓',
+  ast: '∗',
+  star: '⋆',
+  circ: '∘',
+  bullet: '•',
+  le: '≤',
+  leq: '≤',
+  ge: '≥',
+  geq: '≥',
+  ne: '≠',
+  neq: '≠',
+  approx: '≈',
+  sim: '∼',
+  simeq: '≃',
+  equiv: '≡',
+  propto: '∝',
+  ll: '≪',
+  gg: '≫',
+  in: '∈',
+  notin: '∉',
+  subset: '⊂',
+  subseteq: '⊆',
+  cup: '∪',
+  cap: '∩',
+  setminus: '∖',
+  emptyset: '∅',
+  forall: '∀',
+  exists: '∃',
+  neg: '¬',
+  to: '→',
+  rightarrow: '→',
+  leftarrow: '←',
+  Rightarrow: '⇒',
+  Leftarrow: '⇐',
+  Leftrightarrow: '⇔',
+  iff: '⇔',
+  implies: '⇒',
+  mapsto: '↦',
+  uparrow: '↑',
+  downarrow: '↓',
+  ldots: '…',
+  cdots: '⋯',
+  dots: '…',
+  vdots: '⋮',
+  prime: '′',
+  angle: '∠',
+  perp: '⊥',
+  parallel: '∥',
+  langle: '⟨',
+  rangle: '⟩',
+  lfloor: '⌊',
+  rfloor: '⌋',
+  lceil: '⌈',
+  rceil: '⌉',
+  vert: '|',
+  Vert: '‖',
+  lvert: '|',
+  rvert: '|',
+  lVert: '‖',
+  rVert: '‖',
+  mid: '|',
+  sqrt: '√',
+  surd: '√',
+  deg: '°',
+  checkmark: '✓',
+  hbar: 'ℏ',
+  wedge: '∧',
+  vee: '∨',
+  oplus: '⊕',
+  otimes: '⊗',
+  colon: ':',
+  lbrace: '{',
+  rbrace: '}',
+  lbrack: '[',
+  rbrack: ']',
+  backslash: '\\',
+  quad: '  ',
+  qquad: '    ',
+  ',': ' ',
+  ':': ' ',
+  ';': ' ',
+  '>': ' ',
+  ' ': ' ',
+  '!': '',
+  '/': '',
+  '{': '{',
+  '}': '}',
+  '%': '%',
+  '&': '&',
+  _: '_',
+  '#': '#',
+  $: '$',
+  '|': '‖',
 };
 /** Written as their names (upright in TeX). */
-export const NAMED_OPERATORS: ReadonlySet<string> = new Set(['sin', 'cos', 'tan', 'cot', 'sec', 'csc', 'arcsin', 'arccos', 'arctan', 'sinh', 'cosh', 'tanh', 'exp', 'log', 'ln', 'lg', 'max', 'min', 'sup', 'inf', 'lim', 'det', 'dim', 'arg', 'gcd', 'Pr']);
+export const NAMED_OPERATORS: ReadonlySet<string> = new Set([
+  'sin',
+  'cos',
+  'tan',
+  'cot',
+  'sec',
+  'csc',
+  'arcsin',
+  'arccos',
+  'arctan',
+  'sinh',
+  'cosh',
+  'tanh',
+  'exp',
+  'log',
+  'ln',
+  'lg',
+  'max',
+  'min',
+  'sup',
+  'inf',
+  'lim',
+  'det',
+  'dim',
+  'arg',
+  'gcd',
+  'Pr',
+]);
 /** Commands dropped, leaving their argument (fonts, sizes, accents, delimiters' sizing). */
 const DROP = new Set([
-  'left', 'right', 'big', 'Big', 'bigg', 'Bigg', 'bigl', 'bigr', 'Bigl', 'Bigr', 'biggl', 'biggr', 'Biggl', 'Biggr', 'middle',
-  'displaystyle', 'textstyle', 'scriptstyle', 'limits', 'nolimits', 'nonumber', 'notag', 'allowbreak', 'nobreak', 'hline',
-  'mathop', 'mathbin', 'mathrel', 'mathord', 'mathopen', 'mathclose', 'mathpunct', 'underbrace', 'overbrace',
-  'mathrm', 'mathit', 'mathbf', 'mathsf', 'mathtt', 'mathcal', 'mathbb', 'mathfrak', 'boldsymbol', 'bm', 'mathnormal',
-  'text', 'textrm', 'textit', 'textbf', 'textsf', 'texttt', 'mbox', 'operatorname', 'hbox',
+  'left',
+  'right',
+  'big',
+  'Big',
+  'bigg',
+  'Bigg',
+  'bigl',
+  'bigr',
+  'Bigl',
+  'Bigr',
+  'biggl',
+  'biggr',
+  'Biggl',
+  'Biggr',
+  'middle',
+  'displaystyle',
+  'textstyle',
+  'scriptstyle',
+  'limits',
+  'nolimits',
+  'nonumber',
+  'notag',
+  'allowbreak',
+  'nobreak',
+  'hline',
+  'mathop',
+  'mathbin',
+  'mathrel',
+  'mathord',
+  'mathopen',
+  'mathclose',
+  'mathpunct',
+  'underbrace',
+  'overbrace',
+  'mathrm',
+  'mathit',
+  'mathbf',
+  'mathsf',
+  'mathtt',
+  'mathcal',
+  'mathbb',
+  'mathfrak',
+  'boldsymbol',
+  'bm',
+  'mathnormal',
+  'text',
+  'textrm',
+  'textit',
+  'textbf',
+  'textsf',
+  'texttt',
+  'mbox',
+  'operatorname',
+  'hbox',
   'underline',
 ]);
 /** Commands whose first arguments (how many) are settings, not text: they read as the string given. */
 const SKIP_ARGS: Record<string, [number, string]> = {
-  color: [1, ''], htmlClass: [1, ''], htmlId: [1, ''], colorbox: [1, ''], fcolorbox: [2, ''],
-  phantom: [1, ''], hphantom: [1, ''], vphantom: [1, ''], label: [1, ''], tag: [1, ''],
-  hspace: [1, ' '], vspace: [1, ' '], kern: [1, ' '], mkern: [1, ' '], mskip: [1, ' '], hskip: [1, ' '],
+  color: [1, ''],
+  htmlClass: [1, ''],
+  htmlId: [1, ''],
+  colorbox: [1, ''],
+  fcolorbox: [2, ''],
+  phantom: [1, ''],
+  hphantom: [1, ''],
+  vphantom: [1, ''],
+  label: [1, ''],
+  tag: [1, ''],
+  hspace: [1, ' '],
+  vspace: [1, ' '],
+  kern: [1, ' '],
+  mkern: [1, ' '],
+  mskip: [1, ' '],
+  hskip: [1, ' '],
 };
 /** Accents, as combining marks on a one-letter argument (dropped on a longer one). */
-const ACCENT: Record<string, string> = { hat: '\u0302', widehat: '\u0302', bar: '\u0304', overline: '\u0305', vec: '\u20d7', tilde: '\u0303', widetilde: '\u0303', dot: '\u0307', ddot: '\u0308', mathring: '\u030a' };
+const ACCENT: Record<string, string> = {
+  hat: '\u0302',
+  widehat: '\u0302',
+  bar: '\u0304',
+  overline: '\u0305',
+  vec: '\u20d7',
+  tilde: '\u0303',
+  widetilde: '\u0303',
+  dot: '\u0307',
+  ddot: '\u0308',
+  mathring: '\u030a',
+};
 /** Large operators, set apart from what precedes them. */
 const BIG_OP = new Set(['int', 'iint', 'oint', 'sum', 'prod']);
 /** Superscript and subscript characters, where Unicode has them all for a script. */
-const SUP: Record<string, string> = { '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶', '7': '⁷', '8': '⁸', '9': '⁹', '+': '⁺', '-': '⁻', '−': '⁻', '=': '⁼', '(': '⁽', ')': '⁾', n: 'ⁿ', i: 'ⁱ', T: 'ᵀ' };
-const SUB: Record<string, string> = { '0': '₀', '1': '₁', '2': '₂', '3': '₃', '4': '₄', '5': '₅', '6': '₆', '7': '₇', '8': '₈', '9': '₉', '+': '₊', '-': '₋', '−': '₋', '=': '₌', '(': '₍', ')': '₎', i: 'ᵢ', j: 'ⱼ', k: 'ₖ', n: 'ₙ', m: 'ₘ', x: 'ₓ', a: 'ₐ', e: 'ₑ', o: 'ₒ', r: 'ᵣ', u: 'ᵤ', v: 'ᵥ', t: 'ₜ', s: 'ₛ', p: 'ₚ', l: 'ₗ', h: 'ₕ' };
+const SUP: Record<string, string> = {
+  '0': '⁰',
+  '1': '¹',
+  '2': '²',
+  '3': '³',
+  '4': '⁴',
+  '5': '⁵',
+  '6': '⁶',
+  '7': '⁷',
+  '8': '⁸',
+  '9': '⁹',
+  '+': '⁺',
+  '-': '⁻',
+  '−': '⁻',
+  '=': '⁼',
+  '(': '⁽',
+  ')': '⁾',
+  n: 'ⁿ',
+  i: 'ⁱ',
+  T: 'ᵀ',
+};
+const SUB: Record<string, string> = {
+  '0': '₀',
+  '1': '₁',
+  '2': '₂',
+  '3': '₃',
+  '4': '₄',
+  '5': '₅',
+  '6': '₆',
+  '7': '₇',
+  '8': '₈',
+  '9': '₉',
+  '+': '₊',
+  '-': '₋',
+  '−': '₋',
+  '=': '₌',
+  '(': '₍',
+  ')': '₎',
+  i: 'ᵢ',
+  j: 'ⱼ',
+  k: 'ₖ',
+  n: 'ₙ',
+  m: 'ₘ',
+  x: 'ₓ',
+  a: 'ₐ',
+  e: 'ₑ',
+  o: 'ₒ',
+  r: 'ᵣ',
+  u: 'ᵤ',
+  v: 'ᵥ',
+  t: 'ₜ',
+  s: 'ₛ',
+  p: 'ₚ',
+  l: 'ₗ',
+  h: 'ₕ',
+};
 
 /** Longest input read; the rest is cut (a formula on a page is far shorter). */
 const MAX_CHARS = 20_000;
@@ -69,7 +346,7 @@ export function texPreview(tex: string, display = false): string {
       return until('}');
     }
     if (s[i] === '\\') return command();
-    return s[i++]!;
+    return s[i++];
   }
 
   /** Skip an optional argument ([…]) at i, after spaces. */
@@ -85,7 +362,7 @@ export function texPreview(tex: string, display = false): string {
   function command(): string {
     i++; // the backslash
     if (i >= s.length) return '';
-    const c = s[i]!;
+    const c = s[i];
     if (!/[A-Za-z]/.test(c)) {
       i++;
       if (c === '\\') {
@@ -96,7 +373,7 @@ export function texPreview(tex: string, display = false): string {
       return SYMBOL[c] ?? c;
     }
     let j = i;
-    while (j < s.length && /[A-Za-z]/.test(s[j]!)) j++;
+    while (j < s.length && /[A-Za-z]/.test(s[j])) j++;
     const name = s.slice(i, j);
     i = j;
     if (name === 'frac' || name === 'dfrac' || name === 'tfrac' || name === 'cfrac') {
@@ -116,7 +393,7 @@ export function texPreview(tex: string, display = false): string {
     }
     if (name in SKIP_ARGS) {
       // (the text that follows, a colour box's for one, is read as usual)
-      const [count, reads] = SKIP_ARGS[name]!;
+      const [count, reads] = SKIP_ARGS[name];
       for (let a = 0; a < count; a++) argument();
       return reads;
     }
@@ -130,10 +407,10 @@ export function texPreview(tex: string, display = false): string {
     if (NAMED_OPERATORS.has(name)) return ` ${name} `;
     if (name in ACCENT) {
       const a = argument();
-      return [...a].length === 1 ? a + ACCENT[name]! : a;
+      return [...a].length === 1 ? a + ACCENT[name] : a;
     }
-    if (BIG_OP.has(name)) return ` ${SYMBOL[name]!}`;
-    if (name in SYMBOL) return SYMBOL[name]!;
+    if (BIG_OP.has(name)) return ` ${SYMBOL[name]}`;
+    if (name in SYMBOL) return SYMBOL[name];
     if (DROP.has(name)) return '';
     return name;
   }
@@ -143,7 +420,7 @@ export function texPreview(tex: string, display = false): string {
     let out = '';
     let depth = 0;
     while (i < s.length) {
-      const c = s[i]!;
+      const c = s[i];
       if (c === '\\') out += command();
       else if (c === '{') {
         // a plain group: its braces go, without a call per level (hostile nesting)
@@ -154,8 +431,7 @@ export function texPreview(tex: string, display = false): string {
         if (depth > 0) depth--;
         else if (end !== null) return out;
         // else unbalanced: dropped
-      }
-      else if (c === '^' || c === '_') {
+      } else if (c === '^' || c === '_') {
         i++;
         const arg = argument();
         out += script(arg, c === '^' ? SUP : SUB, c);
@@ -180,17 +456,19 @@ export function texPreview(tex: string, display = false): string {
   }
   // tidy the spacing: no runs of spaces, none around line breaks, named operators not padded at
   // the ends or before punctuation
-  return text
-    .replace(/[ \t]+/g, ' ')
-    .replace(/ ?\n ?/g, '\n')
-    .replace(/ ([,.;)\]}|])/g, '$1')
-    .replace(/([([{|]) /g, '$1')
-    // a norm's bars hug what they enclose (the odd pieces between ‖ … ‖)
-    .split('‖')
-    .map((piece, k, all) => (k % 2 === 1 && k < all.length - 1 ? piece.trim() : piece))
-    .join('‖')
-    .trim()
-    .normalize('NFC');
+  return (
+    text
+      .replace(/[ \t]+/g, ' ')
+      .replace(/ ?\n ?/g, '\n')
+      .replace(/ ([,.;)\]}|])/g, '$1')
+      .replace(/([([{|]) /g, '$1')
+      // a norm's bars hug what they enclose (the odd pieces between ‖ … ‖)
+      .split('‖')
+      .map((piece, k, all) => (k % 2 === 1 && k < all.length - 1 ? piece.trim() : piece))
+      .join('‖')
+      .trim()
+      .normalize('NFC')
+  );
 }
 
 function wrap(t: string): string {

@@ -53,13 +53,24 @@ export function timelineParams(opts: { max: number; default?: number; integer?: 
   play: Extract<ParamSpec, { kind: 'bool' }>;
 } {
   return {
-    t: { kind: 'number', default: opts.default ?? 0, min: 0, max: opts.max, integer: opts.integer, label: 'animation position' },
+    t: {
+      kind: 'number',
+      default: opts.default ?? 0,
+      min: 0,
+      max: opts.max,
+      integer: opts.integer,
+      label: 'animation position',
+    },
     play: { kind: 'bool', default: false, label: 'animation playing' },
   };
 }
 
 /** Position after `dtMs` milliseconds of playing at `speed` (pure; exported for tests). */
-export function advance(t: number, dtMs: number, opts: { max: number; duration: number; speed: number; loop: boolean }): { t: number; ended: boolean } {
+export function advance(
+  t: number,
+  dtMs: number,
+  opts: { max: number; duration: number; speed: number; loop: boolean },
+): { t: number; ended: boolean } {
   const rate = opts.max / Math.max(opts.duration, 1e-3); // position units per second at 1×
   let next = t + (dtMs / 1000) * rate * opts.speed;
   if (!(next < opts.max)) {
@@ -80,7 +91,11 @@ export function clampPosition(t: number, max: number, integer: boolean): number 
 }
 
 export function prefersReducedMotion(): boolean {
-  return typeof window !== 'undefined' && typeof window.matchMedia === 'function' && window.matchMedia('(prefers-reduced-motion: reduce)').matches;
+  return (
+    typeof window !== 'undefined' &&
+    typeof window.matchMedia === 'function' &&
+    window.matchMedia('(prefers-reduced-motion: reduce)').matches
+  );
 }
 
 export interface TimelineOptions {
@@ -201,8 +216,28 @@ export function useTimeline(opts: TimelineOptions): Timeline {
 
   // live values for the frame loop and callbacks (`exact` runs ahead of React state while playing
   // with renderHz; setExact keeps both in step)
-  const live = useRef({ exact, playing, speed, loop, max, integer, duration, setParams, renderHz: opts.renderHz });
-  live.current = { ...live.current, playing, speed, loop, max, integer, duration, setParams, renderHz: opts.renderHz };
+  const live = useRef({
+    exact,
+    playing,
+    speed,
+    loop,
+    max,
+    integer,
+    duration,
+    setParams,
+    renderHz: opts.renderHz,
+  });
+  live.current = {
+    ...live.current,
+    playing,
+    speed,
+    loop,
+    max,
+    integer,
+    duration,
+    setParams,
+    renderHz: opts.renderHz,
+  };
   const setExact = useCallback((next: number | ((e: number) => number)) => {
     const v = typeof next === 'function' ? next(live.current.exact) : next;
     live.current.exact = v;
@@ -216,17 +251,14 @@ export function useTimeline(opts: TimelineOptions): Timeline {
     const t = positionShown(l.exact, l.integer);
     for (const fn of listeners.current) fn(t, l.playing);
   }, []);
-  const subscribe = useCallback(
-    (fn: TimelineListener) => {
-      listeners.current.add(fn);
-      const l = live.current;
-      fn(positionShown(l.exact, l.integer), l.playing);
-      return () => {
-        listeners.current.delete(fn);
-      };
-    },
-    [],
-  );
+  const subscribe = useCallback((fn: TimelineListener) => {
+    listeners.current.add(fn);
+    const l = live.current;
+    fn(positionShown(l.exact, l.integer), l.playing);
+    return () => {
+      listeners.current.delete(fn);
+    };
+  }, []);
   const now = useCallback(() => {
     const l = live.current;
     return positionShown(l.exact, l.integer);
@@ -327,7 +359,9 @@ export function useTimeline(opts: TimelineOptions): Timeline {
   // the frame loop: only while playing, on screen and in a visible tab
   const visibleRef = opts.visibleRef;
   const [onScreen, setOnScreen] = useState(true);
-  const [tabVisible, setTabVisible] = useState(() => typeof document === 'undefined' || document.visibilityState !== 'hidden');
+  const [tabVisible, setTabVisible] = useState(
+    () => typeof document === 'undefined' || document.visibilityState !== 'hidden',
+  );
   useEffect(() => {
     const on = () => setTabVisible(document.visibilityState !== 'hidden');
     document.addEventListener('visibilitychange', on);
@@ -376,7 +410,12 @@ export function useTimeline(opts: TimelineOptions): Timeline {
       ensureObserved();
       const dt = last < 0 ? 0 : Math.min(100, now - last); // a long gap (e.g. a stall) does not jump
       last = now;
-      const { t, ended } = advance(l.exact, dt, { max: l.max, duration: l.duration, speed: l.speed, loop: l.loop });
+      const { t, ended } = advance(l.exact, dt, {
+        max: l.max,
+        duration: l.duration,
+        speed: l.speed,
+        loop: l.loop,
+      });
       if (ended) {
         setExact(t);
         setPlaying(false);
@@ -387,7 +426,10 @@ export function useTimeline(opts: TimelineOptions): Timeline {
       sinceRender++;
       // coarse React renders: at most renderHz a second, and (on a slow machine, where frames are
       // far apart) at most every RENDER_MIN_FRAMES frames, so most frames stay free of React
-      if (hz === undefined || (hz > 0 && now - rendered >= 1000 / hz - 1 && sinceRender >= RENDER_MIN_FRAMES)) {
+      if (
+        hz === undefined ||
+        (hz > 0 && now - rendered >= 1000 / hz - 1 && sinceRender >= RENDER_MIN_FRAMES)
+      ) {
         rendered = now;
         sinceRender = 0;
         setExact(t); // the layout effect tells the subscribers after React committed
@@ -407,7 +449,25 @@ export function useTimeline(opts: TimelineOptions): Timeline {
 
   const t = positionShown(exact, integer);
   return useMemo(
-    () => ({ t, max, integer, playing, speed, loop, stepSize, play, pause, toggle, step, reset, seek, setSpeed, setLoop, subscribe, now }),
+    () => ({
+      t,
+      max,
+      integer,
+      playing,
+      speed,
+      loop,
+      stepSize,
+      play,
+      pause,
+      toggle,
+      step,
+      reset,
+      seek,
+      setSpeed,
+      setLoop,
+      subscribe,
+      now,
+    }),
     [t, max, integer, playing, speed, loop, stepSize, play, pause, toggle, step, reset, seek, subscribe, now],
   );
 }

@@ -15,10 +15,16 @@ export type Compiled<F> =
   | { status: 'error'; src: string; kind: string; message: string };
 
 function toCompiled<F>(src: string, r: CompileOutcome<F>): Compiled<F> {
-  return r.ok ? { status: 'ok', src, fn: r.fn, tex: r.tex } : { status: 'error', src, kind: r.kind, message: r.message };
+  return r.ok
+    ? { status: 'ok', src, fn: r.fn, tex: r.tex }
+    : { status: 'error', src, kind: r.kind, message: r.message };
 }
 
-export function useCompiled<F>(src: string, compile: (src: string) => Promise<CompileOutcome<F>>, options: { enabled?: boolean; fast?: (src: string) => CompileOutcome<F> | null } = {}): Compiled<F> {
+export function useCompiled<F>(
+  src: string,
+  compile: (src: string) => Promise<CompileOutcome<F>>,
+  options: { enabled?: boolean; fast?: (src: string) => CompileOutcome<F> | null } = {},
+): Compiled<F> {
   const { enabled = true, fast } = options;
   const quick = useMemo(() => {
     if (!enabled || !fast) return null;
@@ -31,7 +37,14 @@ export function useCompiled<F>(src: string, compile: (src: string) => Promise<Co
     let alive = true;
     compile(src).then(
       (r) => alive && setState(toCompiled(src, r)),
-      (e: unknown) => alive && setState({ status: 'error', src, kind: 'unavailable', message: e instanceof Error ? e.message : String(e) }),
+      (e: unknown) =>
+        alive &&
+        setState({
+          status: 'error',
+          src,
+          kind: 'unavailable',
+          message: e instanceof Error ? e.message : String(e),
+        }),
     );
     return () => {
       alive = false;

@@ -47,5 +47,9 @@ export function observeVisibility(el: Element, onChange: (visible: boolean) => v
  * lighter defaults: no Plotly mode bar, and 3D views that start when asked (src/three/Viewport).
  */
 export function touchOnly(): boolean {
-  return typeof window !== 'undefined' && typeof window.matchMedia === 'function' && window.matchMedia('(hover: none) and (pointer: coarse)').matches;
+  return (
+    typeof window !== 'undefined' &&
+    typeof window.matchMedia === 'function' &&
+    window.matchMedia('(hover: none) and (pointer: coarse)').matches
+  );
 }

@@ -18,7 +18,7 @@ export function useWidth(ref: RefObject<Element | null>, fallback: number): numb
     const el = ref.current;
     if (!el || typeof ResizeObserver !== 'function') return;
     const ro = new ResizeObserver((entries) => {
-      const e = entries[entries.length - 1]!;
+      const e = entries[entries.length - 1];
       const x = Math.round(e.borderBoxSize?.[0]?.inlineSize ?? e.contentRect.width);
       if (x > 0) setW((old) => (Math.abs(old - x) >= 1 ? x : old));
     });

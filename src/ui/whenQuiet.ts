@@ -16,7 +16,10 @@ import { afterPaint } from './afterPaint';
 export const FULL_IDLE_MS = 40;
 
 export interface IdleApi {
-  request: (cb: (deadline: { timeRemaining: () => number; didTimeout: boolean }) => void, opts: { timeout: number }) => unknown;
+  request: (
+    cb: (deadline: { timeRemaining: () => number; didTimeout: boolean }) => void,
+    opts: { timeout: number },
+  ) => unknown;
   now: () => number;
   setTimeout: (cb: () => void, ms: number) => unknown;
 }
@@ -25,15 +28,17 @@ function browserIdle(): IdleApi {
   const ric = typeof requestIdleCallback === 'function' ? requestIdleCallback : null;
   return {
     request: (cb, opts) =>
-      ric
-        ? ric(cb, opts)
-        : setTimeout(() => cb({ timeRemaining: () => 50, didTimeout: false }), 100),
+      ric ? ric(cb, opts) : setTimeout(() => cb({ timeRemaining: () => 50, didTimeout: false }), 100),
     now: () => performance.now(),
     setTimeout: (cb, ms) => setTimeout(cb, ms),
   };
 }
 
-export function whenQuiet({ quietMs = 2000, maxMs = 30_000, api = browserIdle() }: { quietMs?: number; maxMs?: number; api?: IdleApi } = {}): Promise<void> {
+export function whenQuiet({
+  quietMs = 2000,
+  maxMs = 30_000,
+  api = browserIdle(),
+}: { quietMs?: number; maxMs?: number; api?: IdleApi } = {}): Promise<void> {
   return new Promise((resolve) => {
     let done = false;
     const finish = () => {

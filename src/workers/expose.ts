@@ -24,7 +24,10 @@ export function exposeTasks(tasks: Record<string, Task>): void {
       return;
     }
     const progress: ProgressFn = (fraction, partial) =>
-      post({ id, type: 'progress', fraction, partial }, partial === undefined ? [] : collectTransferables(partial));
+      post(
+        { id, type: 'progress', fraction, partial },
+        partial === undefined ? [] : collectTransferables(partial),
+      );
     try {
       const value = await task(args as never, progress);
       post({ id, type: 'result', value }, collectTransferables(value));

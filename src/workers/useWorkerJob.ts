@@ -15,7 +15,15 @@
  *
  * The worker side is `exposeTasks` (./expose.ts) over plain-data job functions (a scene's jobs.ts).
  */
-import { startTransition, useCallback, useEffect, useId, useRef, useState, useSyncExternalStore } from 'react';
+import {
+  startTransition,
+  useCallback,
+  useEffect,
+  useId,
+  useRef,
+  useState,
+  useSyncExternalStore,
+} from 'react';
 import { isCancelled, runWorkerTask } from './run';
 import { isPageSettled, pageSettled } from '../ui/whenQuiet';
 
@@ -100,9 +108,21 @@ interface JobState<R, P> {
   result: R | undefined;
   error: string | null;
 }
-const IDLE: JobState<never, never> = { key: null, running: false, progress: 0, partial: undefined, result: undefined, error: null };
+const IDLE: JobState<never, never> = {
+  key: null,
+  running: false,
+  progress: 0,
+  partial: undefined,
+  result: undefined,
+  error: null,
+};
 
-export function useWorkerJob<R, P = unknown>(makeWorker: () => Worker, method: string, args: unknown, options: WorkerJobOptions = {}): WorkerJob<R, P> {
+export function useWorkerJob<R, P = unknown>(
+  makeWorker: () => Worker,
+  method: string,
+  args: unknown,
+  options: WorkerJobOptions = {},
+): WorkerJob<R, P> {
   const { enabled = true, delayMs = 0, queue, manual = false, afterSettle = false } = options;
   const key = options.key ?? JSON.stringify(args);
   // the arguments the scene opened with (null once they have changed: no later run is held)
@@ -143,7 +163,11 @@ export function useWorkerJob<R, P = unknown>(makeWorker: () => Worker, method: s
     },
     [q],
   );
-  const owner = useSyncExternalStore(subscribe, () => q?.owner ?? null, () => null);
+  const owner = useSyncExternalStore(
+    subscribe,
+    () => q?.owner ?? null,
+    () => null,
+  );
 
   const stop = useCallback(() => {
     ctl.current?.abort();
@@ -191,7 +215,12 @@ export function useWorkerJob<R, P = unknown>(makeWorker: () => Worker, method: s
           raf.current = 0;
           const p = pending;
           pending = null;
-          if (p && ctl.current === c) startTransition(() => setState((s) => (s.key === runKey ? { ...s, progress: p.fraction, partial: p.partial ?? s.partial } : s)));
+          if (p && ctl.current === c)
+            startTransition(() =>
+              setState((s) =>
+                s.key === runKey ? { ...s, progress: p.fraction, partial: p.partial ?? s.partial } : s,
+              ),
+            );
         });
       },
     }).then(
@@ -216,7 +245,9 @@ export function useWorkerJob<R, P = unknown>(makeWorker: () => Worker, method: s
     result: current ? state.result : undefined,
     partial: current ? state.partial : undefined,
     running,
-    waiting: (!running && wanted !== null && wanted.key === key && !!q && owner !== null && owner !== id) || (held && enabled && !manual),
+    waiting:
+      (!running && wanted !== null && wanted.key === key && !!q && owner !== null && owner !== id) ||
+      (held && enabled && !manual),
     progress: current ? state.progress : 0,
     error: current ? state.error : null,
     run,

@@ -34,24 +34,39 @@ describe('validateSet', () => {
   });
 
   it('refuses unknown names, prototype names, shell parameters and non-plain values', () => {
-    for (const name of ['bogus', 'toString', '__proto__', 'constructor', 'hasOwnProperty', 'embed', 'present', 'theme', 'origin']) {
+    for (const name of [
+      'bogus',
+      'toString',
+      '__proto__',
+      'constructor',
+      'hasOwnProperty',
+      'embed',
+      'present',
+      'theme',
+      'origin',
+    ]) {
       const params = JSON.parse(`{${JSON.stringify(name)}: 1}`) as Record<string, unknown>;
       const r = validateSet(texture, params);
       expect(r.ok, name).toBe(false);
     }
-    for (const bad of [{ u: null }, { u: { valueOf: 1 } }, { o: ['1', 2, 3] }, { u: NaN }, { u: Infinity }]) expect(validateSet(raySphere, bad).ok).toBe(false);
+    for (const bad of [{ u: null }, { u: { valueOf: 1 } }, { o: ['1', 2, 3] }, { u: NaN }, { u: Infinity }])
+      expect(validateSet(raySphere, bad).ok).toBe(false);
     for (const bad of [null, 'u=1', [1, 2], 42]) expect(validateSet(texture, bad).ok).toBe(false);
   });
 
   it('agrees with the URL parser on arbitrary values (property)', () => {
     fc.assert(
-      fc.property(fc.oneof(fc.double(), fc.string({ maxLength: 12 }), fc.boolean()), fc.constantFrom('u', 'v', 'wrap', 'vflip', 'size'), (value, name) => {
-        const text = toUrlText(value)!;
-        const url = parseParams(texture, new URLSearchParams([[name, text]]));
-        const r = validateSet(texture, { [name]: value });
-        expect(r.ok).toBe(url.problems.length === 0);
-        if (r.ok) expect(r.patch[name]).toEqual((url.values as Record<string, unknown>)[name]);
-      }),
+      fc.property(
+        fc.oneof(fc.double(), fc.string({ maxLength: 12 }), fc.boolean()),
+        fc.constantFrom('u', 'v', 'wrap', 'vflip', 'size'),
+        (value, name) => {
+          const text = toUrlText(value)!;
+          const url = parseParams(texture, new URLSearchParams([[name, text]]));
+          const r = validateSet(texture, { [name]: value });
+          expect(r.ok).toBe(url.problems.length === 0);
+          if (r.ok) expect(r.patch[name]).toEqual((url.values as Record<string, unknown>)[name]);
+        },
+      ),
       { numRuns: 300, seed: 14 },
     );
   });
@@ -60,17 +75,23 @@ describe('validateSet', () => {
     const values = parseParams(texture, 'u=0.7&wrap=mirror&preset=checker').values;
     const r = validateSet(texture, values as Record<string, unknown>);
     expect(r.ok).toBe(true);
-    if (r.ok) expect(serializeParams(texture, { ...values, ...r.patch })).toBe(serializeParams(texture, values));
+    if (r.ok)
+      expect(serializeParams(texture, { ...values, ...r.patch })).toBe(serializeParams(texture, values));
   });
 });
 
 describe('origin=', () => {
   it('reads a comma list of exact origins and names the rest', () => {
-    expect(parseOrigins('https://lms.example.edu,http://127.0.0.1:8080')).toEqual({ origins: ['https://lms.example.edu', 'http://127.0.0.1:8080'], problem: null });
+    expect(parseOrigins('https://lms.example.edu,http://127.0.0.1:8080')).toEqual({
+      origins: ['https://lms.example.edu', 'http://127.0.0.1:8080'],
+      problem: null,
+    });
     const r = parseOrigins('https://lms.example.edu/course/1,javascript:alert(1),*');
     expect(r.origins).toEqual([]);
     expect(r.problem).toContain('javascript');
-    expect(parseShellFlags('origin=https%3A%2F%2Flms.example.edu').origins).toEqual(['https://lms.example.edu']);
+    expect(parseShellFlags('origin=https%3A%2F%2Flms.example.edu').origins).toEqual([
+      'https://lms.example.edu',
+    ]);
     expect(parseShellFlags('origin=nope').problems.map((p) => p.name)).toEqual(['origin']);
     // origin is a shell parameter: a scene does not call it unknown
     expect(parseParams(texture, 'origin=https%3A%2F%2Fx.org').problems).toEqual([]);

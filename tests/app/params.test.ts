@@ -1,12 +1,23 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import { parseNumber, parseParams, serializeParams, defaultValues, type ParamSchema } from '../../src/app/params';
+import {
+  parseNumber,
+  parseParams,
+  serializeParams,
+  defaultValues,
+  type ParamSchema,
+} from '../../src/app/params';
 
 const schema = {
   u: { kind: 'number', default: 0.4, min: -4, max: 4 },
   n: { kind: 'number', default: 1000, min: 1, max: 1e7, integer: true },
   seed: { kind: 'number', default: 1, min: 0, max: 4294967295, integer: true },
-  lobe: { kind: 'enum', default: 'exam', values: ['exam', 'uniform', 'cosine'], aliases: { lambert: 'cosine' } },
+  lobe: {
+    kind: 'enum',
+    default: 'exam',
+    values: ['exam', 'uniform', 'cosine'],
+    aliases: { lambert: 'cosine' },
+  },
   f: { kind: 'string', default: 'cos(theta)', maxLength: 40 },
   vflip: { kind: 'bool', default: false },
   o: { kind: 'vec3', default: [0, 0, -5], min: -1e6, max: 1e6 },
@@ -20,7 +31,22 @@ describe('parseNumber', () => {
     expect(parseNumber('0.4')).toBe(0.4);
     expect(parseNumber(' -3e2 ')).toBe(-300);
     expect(parseNumber('.5')).toBe(0.5);
-    for (const bad of ['', ' ', 'NaN', 'Infinity', '-Infinity', '1e400', '0x10', '1,5', '1.2.3', '٣', '１', '1e', 'e5', '--1'])
+    for (const bad of [
+      '',
+      ' ',
+      'NaN',
+      'Infinity',
+      '-Infinity',
+      '1e400',
+      '0x10',
+      '1,5',
+      '1.2.3',
+      '٣',
+      '１',
+      '1e',
+      'e5',
+      '--1',
+    ])
       expect(parseNumber(bad), bad).toBeNull();
   });
 });
@@ -35,9 +61,21 @@ describe('parseParams', () => {
   });
 
   it('parses valid values of every kind', () => {
-    const r = parseParams(schema, '?u=0.25&n=64&seed=4294967295&lobe=uniform&f=sin(phi)&vflip=1&o=1,2,3&samples=1.16,1.98');
+    const r = parseParams(
+      schema,
+      '?u=0.25&n=64&seed=4294967295&lobe=uniform&f=sin(phi)&vflip=1&o=1,2,3&samples=1.16,1.98',
+    );
     expect(r.problems).toEqual([]);
-    expect(r.values).toEqual({ u: 0.25, n: 64, seed: 4294967295, lobe: 'uniform', f: 'sin(phi)', vflip: true, o: [1, 2, 3], samples: [1.16, 1.98] });
+    expect(r.values).toEqual({
+      u: 0.25,
+      n: 64,
+      seed: 4294967295,
+      lobe: 'uniform',
+      f: 'sin(phi)',
+      vflip: true,
+      o: [1, 2, 3],
+      samples: [1.16, 1.98],
+    });
   });
 
   it('falls back to the default and names the parameter for NaN, Infinity, 1e400 and junk', () => {
@@ -67,7 +105,7 @@ describe('parseParams', () => {
     expect(parseParams(schema, 'lobe=lambert').values.lobe).toBe('cosine');
     const r = parseParams(schema, 'lobe=<script>');
     expect(r.values.lobe).toBe('exam');
-    expect(r.problems[0]!.name).toBe('lobe');
+    expect(r.problems[0].name).toBe('lobe');
   });
 
   it('reports unknown and repeated keys, keeping the first of a repeat', () => {
@@ -108,8 +146,12 @@ describe('parseParams', () => {
       fc.property(fc.string({ unit: 'grapheme', maxLength: 200 }), (q) => {
         const r = parseParams(schema, q);
         return (
-          Number.isFinite(r.values.u) && r.values.u >= -4 && r.values.u <= 4 &&
-          Number.isInteger(r.values.n) && r.values.n >= 1 && r.values.n <= 1e7 &&
+          Number.isFinite(r.values.u) &&
+          r.values.u >= -4 &&
+          r.values.u <= 4 &&
+          Number.isInteger(r.values.n) &&
+          r.values.n >= 1 &&
+          r.values.n <= 1e7 &&
           ['exam', 'uniform', 'cosine'].includes(r.values.lobe) &&
           r.values.o.every((x) => Number.isFinite(x))
         );
@@ -126,8 +168,20 @@ describe('parseParams', () => {
       lobe: fc.constantFrom('exam', 'uniform', 'cosine'),
       f: fc.string({ maxLength: 40 }),
       vflip: fc.boolean(),
-      o: fc.tuple(fc.double({ min: -1e6, max: 1e6, noNaN: true }), fc.double({ min: -1e6, max: 1e6, noNaN: true }), fc.double({ min: -1e6, max: 1e6, noNaN: true })).map((v) => v.map((x) => (Object.is(x, -0) ? 0 : x)) as [number, number, number]),
-      samples: fc.option(fc.array(fc.double({ min: -10, max: 10, noNaN: true }).map((x) => (Object.is(x, -0) ? 0 : x)), { minLength: 1, maxLength: 8 }), { nil: null }),
+      o: fc
+        .tuple(
+          fc.double({ min: -1e6, max: 1e6, noNaN: true }),
+          fc.double({ min: -1e6, max: 1e6, noNaN: true }),
+          fc.double({ min: -1e6, max: 1e6, noNaN: true }),
+        )
+        .map((v) => v.map((x) => (Object.is(x, -0) ? 0 : x)) as [number, number, number]),
+      samples: fc.option(
+        fc.array(
+          fc.double({ min: -10, max: 10, noNaN: true }).map((x) => (Object.is(x, -0) ? 0 : x)),
+          { minLength: 1, maxLength: 8 },
+        ),
+        { nil: null },
+      ),
     });
     fc.assert(
       fc.property(arb, (values) => {
@@ -142,6 +196,8 @@ describe('parseParams', () => {
 
   it('omits defaults and keeps extras when serialising', () => {
     expect(serializeParams(schema, defaultValues(schema))).toBe('');
-    expect(serializeParams(schema, { ...defaultValues(schema), u: 0.5 }, { embed: '1', theme: undefined })).toBe('u=0.5&embed=1');
+    expect(
+      serializeParams(schema, { ...defaultValues(schema), u: 0.5 }, { embed: '1', theme: undefined }),
+    ).toBe('u=0.5&embed=1');
   });
 });

@@ -33,20 +33,29 @@ describe('parseParams with hostile keys and values', () => {
 
   it('property: arbitrary keys (prototype names included) never change a value or the prototype', () => {
     fc.assert(
-      fc.property(fc.array(fc.tuple(fc.oneof(fc.constantFrom(...PROTO_NAMES), fc.string({ maxLength: 12 })), fc.string({ maxLength: 12 })), { maxLength: 8 }), (pairs) => {
-        const q = pairs.map(([k, v]) => `${encodeURIComponent(k)}=${encodeURIComponent(v)}`).join('&');
-        const r = parseParams(schema, q);
-        for (const [k] of pairs) {
-          if (!Object.hasOwn(schema, k)) expect(Object.hasOwn(r.values, k)).toBe(false);
-        }
-        expect(Object.getPrototypeOf(r.values)).toBe(Object.prototype);
-        expect(({} as Record<string, unknown>).polluted).toBeUndefined();
-        for (const [name, spec] of Object.entries(schema)) {
-          const v = (r.values as Record<string, unknown>)[name];
-          if (spec.kind === 'enum') expect(spec.values as readonly string[]).toContain(v);
-          if (spec.kind === 'number') expect(Number.isFinite(v)).toBe(true);
-        }
-      }),
+      fc.property(
+        fc.array(
+          fc.tuple(
+            fc.oneof(fc.constantFrom(...PROTO_NAMES), fc.string({ maxLength: 12 })),
+            fc.string({ maxLength: 12 }),
+          ),
+          { maxLength: 8 },
+        ),
+        (pairs) => {
+          const q = pairs.map(([k, v]) => `${encodeURIComponent(k)}=${encodeURIComponent(v)}`).join('&');
+          const r = parseParams(schema, q);
+          for (const [k] of pairs) {
+            if (!Object.hasOwn(schema, k)) expect(Object.hasOwn(r.values, k)).toBe(false);
+          }
+          expect(Object.getPrototypeOf(r.values)).toBe(Object.prototype);
+          expect(({} as Record<string, unknown>).polluted).toBeUndefined();
+          for (const [name, spec] of Object.entries(schema)) {
+            const v = (r.values as Record<string, unknown>)[name];
+            if (spec.kind === 'enum') expect(spec.values as readonly string[]).toContain(v);
+            if (spec.kind === 'number') expect(Number.isFinite(v)).toBe(true);
+          }
+        },
+      ),
       { seed: 2, numRuns: 300 },
     );
   });

@@ -13,7 +13,12 @@ describe('parseHash', () => {
 
 describe('parseShellFlags', () => {
   it('reads embed, present and theme, and reports garbage', () => {
-    expect(parseShellFlags('embed=1&present=true&theme=dark')).toMatchObject({ embed: true, present: true, theme: 'dark', problems: [] });
+    expect(parseShellFlags('embed=1&present=true&theme=dark')).toMatchObject({
+      embed: true,
+      present: true,
+      theme: 'dark',
+      problems: [],
+    });
     const f = parseShellFlags('embed=yes&theme=purple');
     expect(f.embed).toBe(false);
     expect(f.theme).toBeNull();

@@ -3,7 +3,16 @@ import { runInNewContext } from 'node:vm';
 import { lateManifestLink, preloadScript, scenePreloadMap } from '../../scripts/routePreload';
 
 type Chunk = Parameters<typeof scenePreloadMap>[0][string];
-const chunk = (fileName: string, o: Partial<{ imports: string[]; isEntry: boolean; isDynamicEntry: boolean; facadeModuleId: string; css: string[] }> = {}): Chunk => ({
+const chunk = (
+  fileName: string,
+  o: Partial<{
+    imports: string[];
+    isEntry: boolean;
+    isDynamicEntry: boolean;
+    facadeModuleId: string;
+    css: string[];
+  }> = {},
+): Chunk => ({
   type: 'chunk',
   fileName,
   imports: o.imports ?? [],
@@ -17,14 +26,32 @@ const chunk = (fileName: string, o: Partial<{ imports: string[]; isEntry: boolea
 // chunk that is not a scene (practice), and a scene whose static imports form a chain
 const bundle = Object.fromEntries(
   [
-    chunk('assets/index.js', { isEntry: true, imports: ['assets/runtime.js'], facadeModuleId: '/p/src/app/main.tsx', css: ['assets/index.css'] }),
+    chunk('assets/index.js', {
+      isEntry: true,
+      imports: ['assets/runtime.js'],
+      facadeModuleId: '/p/src/app/main.tsx',
+      css: ['assets/index.css'],
+    }),
     chunk('assets/runtime.js'),
-    chunk('assets/scene-a.js', { isDynamicEntry: true, facadeModuleId: '/p/src/scenes/alpha/index.ts', imports: ['assets/shared.js', 'assets/runtime.js'], css: ['assets/a.css'] }),
-    chunk('assets/scene-b.js', { isDynamicEntry: true, facadeModuleId: '/p/src/scenes/beta-2/index.ts', imports: ['assets/shared.js', 'assets/deep1.js'] }),
+    chunk('assets/scene-a.js', {
+      isDynamicEntry: true,
+      facadeModuleId: '/p/src/scenes/alpha/index.ts',
+      imports: ['assets/shared.js', 'assets/runtime.js'],
+      css: ['assets/a.css'],
+    }),
+    chunk('assets/scene-b.js', {
+      isDynamicEntry: true,
+      facadeModuleId: '/p/src/scenes/beta-2/index.ts',
+      imports: ['assets/shared.js', 'assets/deep1.js'],
+    }),
     chunk('assets/shared.js', { css: ['assets/shared.css'] }),
     chunk('assets/deep1.js', { imports: ['assets/deep2.js'] }),
     chunk('assets/deep2.js', { imports: ['assets/deep1.js'] }), // a cycle must not loop
-    chunk('assets/practice.js', { isDynamicEntry: true, facadeModuleId: '/p/src/practice/PracticeRoute.tsx', imports: ['assets/shared.js'] }),
+    chunk('assets/practice.js', {
+      isDynamicEntry: true,
+      facadeModuleId: '/p/src/practice/PracticeRoute.tsx',
+      imports: ['assets/shared.js'],
+    }),
   ].map((c) => [c.fileName, c]),
 ) as Parameters<typeof scenePreloadMap>[0];
 (bundle as Record<string, unknown>)['assets/font.woff2'] = { type: 'asset', fileName: 'assets/font.woff2' };
@@ -33,15 +60,29 @@ describe('scenePreloadMap: the files to start with the entry, per scene', () => 
   it('maps each scene to its chunk and static import closure (scripts and CSS), minus what the entry loads', () => {
     const map = scenePreloadMap(bundle);
     expect(Object.keys(map).sort()).toEqual(['alpha', 'beta-2', 'practice']); // the practice page too (#/practice)
-    expect(map.practice).toEqual({ js: ['assets/practice.js', 'assets/shared.js'], css: ['assets/shared.css'] });
-    expect(map.alpha).toEqual({ js: ['assets/scene-a.js', 'assets/shared.js'], css: ['assets/a.css', 'assets/shared.css'] });
-    expect(map['beta-2']!.js.sort()).toEqual(['assets/deep1.js', 'assets/deep2.js', 'assets/scene-b.js', 'assets/shared.js']);
-    expect(map['beta-2']!.css).toEqual(['assets/shared.css']);
+    expect(map.practice).toEqual({
+      js: ['assets/practice.js', 'assets/shared.js'],
+      css: ['assets/shared.css'],
+    });
+    expect(map.alpha).toEqual({
+      js: ['assets/scene-a.js', 'assets/shared.js'],
+      css: ['assets/a.css', 'assets/shared.css'],
+    });
+    expect(map['beta-2'].js.sort()).toEqual([
+      'assets/deep1.js',
+      'assets/deep2.js',
+      'assets/scene-b.js',
+      'assets/shared.js',
+    ]);
+    expect(map['beta-2'].css).toEqual(['assets/shared.css']);
   });
 });
 
 /** Runs the inline script against a fake page with the given hash; returns the links it added. */
-function run(hash: string, base = './'): { rel: string; as?: string; href: string; crossOrigin: string | null }[] {
+function run(
+  hash: string,
+  base = './',
+): { rel: string; as?: string; href: string; crossOrigin: string | null }[] {
   const added: { rel: string; as?: string; href: string; crossOrigin: string | null }[] = [];
   const document = {
     head: { appendChild: (l: (typeof added)[number]) => added.push(l) },
@@ -62,15 +103,34 @@ describe('the inline preload script', () => {
     // the spellings the router accepts: no leading slash, a trailing slash
     expect(run('#beta-2').map((l) => l.href)).toContain('./assets/scene-b.js');
     expect(run('#/beta-2/').map((l) => l.href)).toContain('./assets/scene-b.js');
-    expect(run('#/alpha', '/sub/')[0]!.href).toBe('/sub/assets/scene-a.js');
+    expect(run('#/alpha', '/sub/')[0].href).toBe('/sub/assets/scene-a.js');
   });
 
   it('preloads the practice page on #/practice (with or without a query)', () => {
-    for (const h of ['#/practice', '#/practice?q=3']) expect(run(h).map((l) => l.href).sort(), h).toEqual(['./assets/practice.js', './assets/shared.css', './assets/shared.js']);
+    for (const h of ['#/practice', '#/practice?q=3'])
+      expect(
+        run(h)
+          .map((l) => l.href)
+          .sort(),
+        h,
+      ).toEqual(['./assets/practice.js', './assets/shared.css', './assets/shared.js']);
   });
 
   it('adds nothing for the home page, other routes, and hostile hashes (own keys only, never throws)', () => {
-    for (const h of ['', '#/', '#/guide', '#/practice/alpha', '#/nope', '#/__proto__', '#/constructor', '#/toString', '#/hasOwnProperty', '#/alpha/extra', '#/%61lpha', `#/${'x'.repeat(5000)}`]) {
+    for (const h of [
+      '',
+      '#/',
+      '#/guide',
+      '#/practice/alpha',
+      '#/nope',
+      '#/__proto__',
+      '#/constructor',
+      '#/toString',
+      '#/hasOwnProperty',
+      '#/alpha/extra',
+      '#/%61lpha',
+      `#/${'x'.repeat(5000)}`,
+    ]) {
       expect(run(h), h).toEqual([]);
     }
   });
@@ -84,7 +144,8 @@ describe('the inline preload script', () => {
 describe('lateManifestLink', () => {
   it("takes the PWA plugin's manifest link out of index.html and leaves the rest", () => {
     const hook = lateManifestLink().transformIndexHtml as { handler: (html: string) => string };
-    const html = '<head>\n  <link rel="stylesheet" href="./a.css">\n  <link rel="manifest" href="./manifest.webmanifest"></head><body></body>';
+    const html =
+      '<head>\n  <link rel="stylesheet" href="./a.css">\n  <link rel="manifest" href="./manifest.webmanifest"></head><body></body>';
     expect(hook.handler(html)).toBe('<head>\n  <link rel="stylesheet" href="./a.css"></head><body></body>');
   });
 });

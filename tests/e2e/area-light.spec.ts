@@ -8,7 +8,14 @@ import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, readout, readoutNumber, countAnimationFrames } from './fixtures';
 import { defaultValues, parseParams } from '../../src/app/params';
 import { schema } from '../../src/scenes/area-light/params';
-import { animationFrame, animationLength, buildModel, givenSamples, patchModel, sampleRun } from '../../src/scenes/area-light/model';
+import {
+  animationFrame,
+  animationLength,
+  buildModel,
+  givenSamples,
+  patchModel,
+  sampleRun,
+} from '../../src/scenes/area-light/model';
 import type { LightStrategy } from '../../src/core/lights';
 
 type V3 = [number, number, number];
@@ -20,22 +27,57 @@ type V3 = [number, number, number];
  */
 function closedFormOmega(p: V3, c: V3, w: number, h: number, tiltDeg: number): number {
   const t = (tiltDeg * Math.PI) / 180;
-  const ex: V3 = [1, 0, 0], ey: V3 = [0, Math.cos(t), Math.sin(t)], n: V3 = [0, Math.sin(t), -Math.cos(t)];
+  const ex: V3 = [1, 0, 0],
+    ey: V3 = [0, Math.cos(t), Math.sin(t)],
+    n: V3 = [0, Math.sin(t), -Math.cos(t)];
   const dot = (a: V3, b: V3) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
   const rel: V3 = [c[0] - p[0], c[1] - p[1], c[2] - p[2]];
   const d = Math.abs(dot(rel, n));
-  const cx = dot(rel, ex), cy = dot(rel, ey);
+  const cx = dot(rel, ex),
+    cy = dot(rel, ey);
   const F = (a: number, b: number) => Math.atan((a * b) / (d * Math.sqrt(a * a + b * b + d * d)));
-  const x0 = cx - w / 2, x1 = cx + w / 2, y0 = cy - h / 2, y1 = cy + h / 2;
+  const x0 = cx - w / 2,
+    x1 = cx + w / 2,
+    y0 = cy - h / 2,
+    y1 = cy + h / 2;
   return Math.abs(F(x1, y1) - F(x0, y1) - F(x1, y0) + F(x0, y0));
 }
 
-const placements: Array<{ name: string; p: V3; lc: V3; ls: [number, number]; tilt: number; strategy: string; zero?: boolean }> = [
+const placements: Array<{
+  name: string;
+  p: V3;
+  lc: V3;
+  ls: [number, number];
+  tilt: number;
+  strategy: string;
+  zero?: boolean;
+}> = [
   { name: 'overhead', p: [0, 0, 0], lc: [0, 0, 2], ls: [1, 1], tilt: 0, strategy: 'area' },
-  { name: 'off-axis, solid-angle sampling', p: [0.2, -0.4, 0], lc: [0.9, 0.3, 1.5], ls: [1.2, 0.8], tilt: 0, strategy: 'solid-angle' },
+  {
+    name: 'off-axis, solid-angle sampling',
+    p: [0.2, -0.4, 0],
+    lc: [0.9, 0.3, 1.5],
+    ls: [1.2, 0.8],
+    tilt: 0,
+    strategy: 'solid-angle',
+  },
   { name: 'tilted', p: [0, 0, 0], lc: [0, 1, 1.5], ls: [1.5, 1], tilt: -45, strategy: 'area' },
-  { name: 'partly below the horizon', p: [0, 0, 0], lc: [0, 1, 0.2], ls: [1, 1], tilt: -90, strategy: 'solid-angle' },
-  { name: 'near, cosine sampling', p: [0.1, 0, 0], lc: [0, 0, 0.25], ls: [2, 2], tilt: 0, strategy: 'cosine' },
+  {
+    name: 'partly below the horizon',
+    p: [0, 0, 0],
+    lc: [0, 1, 0.2],
+    ls: [1, 1],
+    tilt: -90,
+    strategy: 'solid-angle',
+  },
+  {
+    name: 'near, cosine sampling',
+    p: [0.1, 0, 0],
+    lc: [0, 0, 0.25],
+    ls: [2, 2],
+    tilt: 0,
+    strategy: 'cosine',
+  },
   { name: 'facing away', p: [0, 0, 0], lc: [0, 0, 2], ls: [1, 1], tilt: 180, strategy: 'area', zero: true },
 ];
 
@@ -90,7 +132,10 @@ test('zero-size light: a clear message and the 1 × 1 fallback', async ({ page }
   await openScene(page, '#/area-light?ls=0,0');
   await expect(page.getByRole('alert')).toContainText('no area');
   expect(await readoutNumber(page, 'reference')).toBeGreaterThan(0);
-  expect(await readoutNumber(page, 'solid-angle')).toBeCloseTo(closedFormOmega([0, 0, 0], [0, 0, 2], 1, 1, 0), 12);
+  expect(await readoutNumber(page, 'solid-angle')).toBeCloseTo(
+    closedFormOmega([0, 0, 0], [0, 0, 2], 1, 1, 0),
+    12,
+  );
 });
 
 test('shading point on the light: a clear message and a safe fallback', async ({ page }) => {
@@ -134,7 +179,9 @@ test('large n is estimated in a worker without blocking; the result agrees withi
   expect(Math.abs(est - ref)).toBeLessThanOrEqual(3 * se);
 });
 
-test('dark theme: no serious or critical axe violations (the highlighted KaTeX boxes keep dark text)', async ({ page }) => {
+test('dark theme: no serious or critical axe violations (the highlighted KaTeX boxes keep dark text)', async ({
+  page,
+}) => {
   test.setTimeout(240_000); // a full-page axe scan of a long page on a busy 2-core machine
   await openScene(page, '#/area-light?theme=dark&occluder=1');
   await page.waitForTimeout(2000);
@@ -143,12 +190,18 @@ test('dark theme: no serious or critical axe violations (the highlighted KaTeX b
   expect(bad).toEqual([]);
 });
 
-test('a tiny, distant light (10⁶ away): Ω matches A cos θ_l / r² (exact to O((size/d)²)) to 1e-11; estimates exact', async ({ page }) => {
+test('a tiny, distant light (10⁶ away): Ω matches A cos θ_l / r² (exact to O((size/d)²)) to 1e-11; estimates exact', async ({
+  page,
+}) => {
   await openScene(page, '#/area-light?lc=3,-2,1000000&ls=1,0.5&strategy=solid-angle&n=512');
   const omega = await readoutNumber(page, 'solid-angle');
   // The corner formula's four terms cancel at this distance, so the check is the small-patch limit,
   // whose own error is O((size/d)²) ≈ 1e-12.
-  const d = 1e6, cx = 3, cy = -2, w = 1, h = 0.5;
+  const d = 1e6,
+    cx = 3,
+    cy = -2,
+    w = 1,
+    h = 0.5;
   const r = Math.hypot(cx, cy, d);
   const approx = (w * h * (d / r)) / (r * r);
   expect(Math.abs(omega - approx) / approx).toBeLessThan(1e-11);
@@ -177,7 +230,9 @@ function modelFor(query: string) {
   return { values, model: buildModel(values) };
 }
 
-test('exam first: 6a, 6b, 6c in order before "Explore further", each with its derivation and live numbers', async ({ page }) => {
+test('exam first: 6a, 6b, 6c in order before "Explore further", each with its derivation and live numbers', async ({
+  page,
+}) => {
   const q = 'psize=0.3&ptilt=40&seed=9&occluder=1';
   await openScene(page, `#/area-light?${q}`);
   const ids = ['part-6a', 'part-6b', 'part-6c', 'explore-further'];
@@ -195,23 +250,31 @@ test('exam first: 6a, 6b, 6c in order before "Explore further", each with its de
   await expect(d6a).toContainText('similar triangles');
   const dl = Math.sqrt(patch.area * patch.cosThetaL);
   await expect(page.getByTestId('step-6a-perp')).toContainText(`dl = ${Number(dl.toPrecision(4))}`);
-  await expect(page.getByTestId('step-6a-similar')).toContainText(`dω_l = ${Number((dl / patch.r).toPrecision(4))}`);
+  await expect(page.getByTestId('step-6a-similar')).toContainText(
+    `dω_l = ${Number((dl / patch.r).toPrecision(4))}`,
+  );
   await expect(page.getByTestId('step-6a-result')).toContainText(String(Number(patch.approx.toPrecision(6))));
   expect(await readoutNumber(page, 'patch-approx')).toBeCloseTo(patch.approx, 7);
   // 6b: the four steps (Jacobian J_T, then V, then cos θ_l / r²) with the Jacobian's value
   await expect(page.getByTestId('derivation-6b').locator('.katex')).toHaveCount(4);
-  await expect(page.getByTestId('step-6b-jacobian')).toContainText(String(Number((patch.cosThetaL / patch.r ** 2).toPrecision(4))));
+  await expect(page.getByTestId('step-6b-jacobian')).toContainText(
+    String(Number((patch.cosThetaL / patch.r ** 2).toPrecision(4))),
+  );
   // 6c: p_A = 1/|A| and the four given samples' terms, their mean as the N = 4 estimate
-  await expect(page.getByTestId('step-6c-pdf')).toContainText(`|A| = ${Number(model.light.area.toPrecision(4))}`);
+  await expect(page.getByTestId('step-6c-pdf')).toContainText(
+    `|A| = ${Number(model.light.area.toPrecision(4))}`,
+  );
   const g = givenSamples(model, values.seed, 4);
   for (let i = 0; i < 4; i++) {
     const v = Number(await page.getByTestId(`given-term-${i + 1}`).getAttribute('data-value'));
-    expect(v).toBeCloseTo(g.samples[i]!.term, 12);
+    expect(v).toBeCloseTo(g.samples[i].term, 12);
   }
   expect(await readoutNumber(page, 'given-estimate')).toBeCloseTo(g.estimate, 6);
 });
 
-test('Q6(a) figure: drawn to scale by default, and its labels never overlap (several tilts, 375 px labels ≥ 12 px)', async ({ page }) => {
+test('Q6(a) figure: drawn to scale by default, and its labels never overlap (several tilts, 375 px labels ≥ 12 px)', async ({
+  page,
+}) => {
   await page.setViewportSize({ width: 375, height: 800 });
   for (const ptilt of [0, 30, 60, 85, -45]) {
     for (const psize of [0.25, 0.9]) {
@@ -224,14 +287,26 @@ test('Q6(a) figure: drawn to scale by default, and its labels never overlap (sev
           .filter((e) => getComputedStyle(e).display !== 'none')
           .map((e) => {
             const r = e.getBoundingClientRect();
-            return { t: e.textContent, x0: r.left, x1: r.right, y0: r.top, y1: r.bottom, fs: parseFloat(getComputedStyle(e).fontSize) * ((e as SVGTextElement).ownerSVGElement!.getBoundingClientRect().width / 560) };
+            return {
+              t: e.textContent,
+              x0: r.left,
+              x1: r.right,
+              y0: r.top,
+              y1: r.bottom,
+              fs:
+                parseFloat(getComputedStyle(e).fontSize) *
+                ((e as SVGTextElement).ownerSVGElement!.getBoundingClientRect().width / 560),
+            };
           }),
       );
       for (const b of boxes) expect(b.fs, `${b.t} font size`).toBeGreaterThanOrEqual(12);
       for (let i = 0; i < boxes.length; i++)
         for (let j = i + 1; j < boxes.length; j++) {
-          const a = boxes[i]!, b = boxes[j]!;
-          const overlap = Math.min(a.x1, b.x1) - Math.max(a.x0, b.x0) > 1 && Math.min(a.y1, b.y1) - Math.max(a.y0, b.y0) > 1;
+          const a = boxes[i],
+            b = boxes[j];
+          const overlap =
+            Math.min(a.x1, b.x1) - Math.max(a.x0, b.x0) > 1 &&
+            Math.min(a.y1, b.y1) - Math.max(a.y0, b.y0) > 1;
           expect(overlap, `tilt ${ptilt}, side ${psize}: "${a.t}" overlaps "${b.t}"`).toBe(false);
         }
     }
@@ -247,12 +322,21 @@ test('dark theme: the Q6(b) highlight boxes turn dark with light text', async ({
   };
   expect(lum(bg)).toBeLessThan(110);
   // the KaTeX colour boxes follow the theme too
-  const boxBg = await page.getByTestId('derivation-6b').locator('.colorbox').first().evaluate((e) => getComputedStyle(e).backgroundColor);
+  const boxBg = await page
+    .getByTestId('derivation-6b')
+    .locator('.colorbox')
+    .first()
+    .evaluate((e) => getComputedStyle(e).backgroundColor);
   expect(lum(boxBg)).toBeLessThan(110);
 });
 
-for (const [w, h] of [[1920, 1080], [1280, 720]] as const) {
-  test(`present=1 at ${w}×${h}: the animation is on the first screen, and no plot's axis title is clipped`, async ({ page }) => {
+for (const [w, h] of [
+  [1920, 1080],
+  [1280, 720],
+] as const) {
+  test(`present=1 at ${w}×${h}: the animation is on the first screen, and no plot's axis title is clipped`, async ({
+    page,
+  }) => {
     await page.setViewportSize({ width: w, height: h });
     await openScene(page, '#/area-light?present=1');
     // the animation's figure (the 3D view with the samples) starts on the first screen
@@ -278,7 +362,14 @@ for (const [w, h] of [[1920, 1080], [1280, 720]] as const) {
         const box = el.getBoundingClientRect();
         return [...el.querySelectorAll('.g-xtitle text, .g-ytitle text, .gtitle')].map((t) => {
           const b = t.getBoundingClientRect();
-          return { inside: b.left >= box.left - 1 && b.right <= box.right + 1 && b.top >= box.top - 1 && b.bottom <= box.bottom + 1, text: t.textContent };
+          return {
+            inside:
+              b.left >= box.left - 1 &&
+              b.right <= box.right + 1 &&
+              b.top >= box.top - 1 &&
+              b.bottom <= box.bottom + 1,
+            text: t.textContent,
+          };
         });
       });
       for (const t of r) expect(t.inside, `plot ${i}: "${t.text}"`).toBe(true);
@@ -293,13 +384,17 @@ function animAt(query: string, t: number) {
   return animationFrame(run, t);
 }
 
-test('animation: play, pause, and the readouts equal the model at the paused position; a link restores them; step adds one', async ({ page }) => {
+test('animation: play, pause, and the readouts equal the model at the paused position; a link restores them; step adds one', async ({
+  page,
+}) => {
   const q = 'strategy=solid-angle&n=512&seed=21&t=0';
   await openScene(page, `#/area-light?${q}`);
   await expect(page.getByTestId('anim-k')).toHaveAttribute('data-value', '0');
   const tl = page.getByTestId('timeline');
   await tl.getByRole('button', { name: /play/i }).click();
-  await expect.poll(async () => Number(await page.getByTestId('anim-k').getAttribute('data-value')), { timeout: 20000 }).toBeGreaterThan(20);
+  await expect
+    .poll(async () => Number(await page.getByTestId('anim-k').getAttribute('data-value')), { timeout: 20000 })
+    .toBeGreaterThan(20);
   await tl.getByRole('button', { name: /pause/i }).click();
   await expect(tl).toHaveAttribute('data-playing', '0');
   await expect(page).toHaveURL(/[?&]t=\d+/);
@@ -322,7 +417,9 @@ test('animation: play, pause, and the readouts equal the model at the paused pos
   expect(await readoutNumber(page, 'anim-estimate')).toBeCloseTo(animAt(q, t + 1).estimate, 6);
 });
 
-test('animation: at the end the running estimate is the n-sample estimate; the floor images follow the timeline', async ({ page }) => {
+test('animation: at the end the running estimate is the n-sample estimate; the floor images follow the timeline', async ({
+  page,
+}) => {
   await openScene(page, '#/area-light?n=256&seed=4&strategy=area');
   await expect(page.getByTestId('anim-k')).toHaveAttribute('data-value', '256');
   expect(await readout(page, 'anim-estimate')).toBe(await readout(page, 'estimate'));
@@ -333,7 +430,9 @@ test('animation: at the end the running estimate is the n-sample estimate; the f
   await expect(page.getByTestId('floor-spp')).toHaveAttribute('data-value', '16', { timeout: 30000 });
 });
 
-test('reduced motion: play=1 in the link starts paused; and no animation frames are requested while paused', async ({ page }) => {
+test('reduced motion: play=1 in the link starts paused; and no animation frames are requested while paused', async ({
+  page,
+}) => {
   await countAnimationFrames(page);
   await page.emulateMedia({ reducedMotion: 'reduce' });
   await openScene(page, '#/area-light?play=1&t=10&n=512');
@@ -342,10 +441,15 @@ test('reduced motion: play=1 in the link starts paused; and no animation frames 
   await expect(page.getByTestId('anim-k')).toHaveAttribute('data-value', '10');
   // let the 3D view and plots settle, then count frames over a quiet second
   await page.waitForLoadState('networkidle');
-  await expect.poll(async () => {
-    const a = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
-    await page.waitForTimeout(1000);
-    const b = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
-    return b - a;
-  }, { timeout: 30000 }).toBe(0);
+  await expect
+    .poll(
+      async () => {
+        const a = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
+        await page.waitForTimeout(1000);
+        const b = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
+        return b - a;
+      },
+      { timeout: 30000 },
+    )
+    .toBe(0);
 });

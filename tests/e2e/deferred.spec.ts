@@ -27,7 +27,12 @@ test('far sections wait; scrolling mounts them; printing mounts everything at on
   await expect(page.locator(pending).first()).toBeAttached();
   const far = await page.locator(pending).count();
   expect(far).toBeGreaterThan(0);
-  expect(await page.locator(pending).first().evaluate((el) => el.getBoundingClientRect().height)).toBeGreaterThan(100);
+  expect(
+    await page
+      .locator(pending)
+      .first()
+      .evaluate((el) => el.getBoundingClientRect().height),
+  ).toBeGreaterThan(100);
   // scrolling to a part mounts it
   await page.locator('#part-3c').scrollIntoViewIfNeeded();
   await expect(page.getByTestId('answer-3c')).toHaveCount(1, { timeout: 30_000 });
@@ -40,7 +45,9 @@ test('far sections wait; scrolling mounts them; printing mounts everything at on
   await expect(page.getByTestId('explore-further').locator('.panel').first()).toBeAttached();
 });
 
-test('printing also mounts the sections nested in the sections it mounts (the ray-sphere exam part\'s blocks)', async ({ page }) => {
+test("printing also mounts the sections nested in the sections it mounts (the ray-sphere exam part's blocks)", async ({
+  page,
+}) => {
   // an observer that never reports: no section comes near the screen, so only printing mounts them
   await page.addInitScript(() => {
     (window as unknown as { IntersectionObserver: unknown }).IntersectionObserver = class {
@@ -62,7 +69,8 @@ test('printing also mounts the sections nested in the sections it mounts (the ra
     return document.querySelectorAll(sel).length;
   }, pending);
   expect(left).toBe(0);
-  for (const id of ['cross-section', 'g-plot', 'derivation', 'live-answer', 'precision-table']) await expect(page.getByTestId(id)).toHaveCount(1);
+  for (const id of ['cross-section', 'g-plot', 'derivation', 'live-answer', 'precision-table'])
+    await expect(page.getByTestId(id)).toHaveCount(1);
 });
 
 test('formulas are typeset (in a worker) and the page never loads KaTeX itself', async ({ page }) => {
@@ -82,5 +90,8 @@ test('formulas are typeset (in a worker) and the page never loads KaTeX itself',
   await expect(page.locator('#question-1 .katex').first()).toBeAttached({ timeout: 60_000 });
   const html = await page.locator('#question-1 .katex').first().innerHTML();
   expect(html).toContain('katex-mathml'); // HTML + MathML for screen readers
-  expect(scripts.filter((u) => /vendor-katex/.test(u)), 'KaTeX is not loaded on the main thread').toEqual([]);
+  expect(
+    scripts.filter((u) => /vendor-katex/.test(u)),
+    'KaTeX is not loaded on the main thread',
+  ).toEqual([]);
 });

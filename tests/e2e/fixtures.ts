@@ -46,7 +46,12 @@ export async function readoutNumber(page: Page, id: string): Promise<number> {
 }
 
 /** Wait until a readout's data-value satisfies a predicate (scenes compute asynchronously). */
-export async function waitForReadout(page: Page, id: string, pred: (v: string) => boolean, timeout = 15000): Promise<string> {
+export async function waitForReadout(
+  page: Page,
+  id: string,
+  pred: (v: string) => boolean,
+  timeout = 15000,
+): Promise<string> {
   let last = '';
   await expect
     .poll(

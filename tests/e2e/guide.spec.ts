@@ -5,7 +5,9 @@
 import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene } from './fixtures';
 
-test('the guide lists 3–5 presets per exam question, is reachable from the header, and is axe clean', async ({ page }) => {
+test('the guide lists 3–5 presets per exam question, is reachable from the header, and is axe clean', async ({
+  page,
+}) => {
   test.setTimeout(240_000); // a full-page axe scan of a long page on a busy 2-core machine
   await openScene(page, '#/');
   await page.getByRole('link', { name: 'Teacher’s guide' }).click();
@@ -20,13 +22,23 @@ test('the guide lists 3–5 presets per exam question, is reachable from the hea
   await expect(page.getByRole('heading', { name: 'Embed, print and go offline' })).toBeVisible();
   const results = await new AxeBuilder({ page }).analyze();
   const bad = results.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical');
-  expect(bad.map((v) => `${v.id}: ${v.nodes.slice(0, 5).map((n) => n.target.join(' ')).join(', ')}`)).toEqual([]);
+  expect(
+    bad.map(
+      (v) =>
+        `${v.id}: ${v.nodes
+          .slice(0, 5)
+          .map((n) => n.target.join(' '))
+          .join(', ')}`,
+    ),
+  ).toEqual([]);
 });
 
 test('every preset link opens its scene with all its parameters used', async ({ page }) => {
   test.setTimeout(300_000);
   await openScene(page, '#/guide?present=1');
-  const hrefs = await page.locator('[data-testid="guide-preset"] h3 a').evaluateAll((as) => as.map((a) => a.getAttribute('href')!));
+  const hrefs = await page
+    .locator('[data-testid="guide-preset"] h3 a')
+    .evaluateAll((as) => as.map((a) => a.getAttribute('href')!));
   expect(hrefs.length).toBeGreaterThanOrEqual(18);
   for (const href of hrefs) {
     expect(href).toContain('present=1');

@@ -5,7 +5,13 @@
  */
 import type { Page } from '@playwright/test';
 import { test, expect, openScene, readout, readoutNumber, countAnimationFrames } from './fixtures';
-import { animFrame, computeDrawStats, growCount, makeLobe, rmseOverRuns } from '../../src/scenes/hemisphere/model';
+import {
+  animFrame,
+  computeDrawStats,
+  growCount,
+  makeLobe,
+  rmseOverRuns,
+} from '../../src/scenes/hemisphere/model';
 import { examLobeK } from '../../src/core/sampling';
 import { formatNumber } from '../../src/ui/Readout';
 
@@ -46,7 +52,7 @@ test.describe('exam first: Q1 and Q2 part by part', () => {
     expect([...tops].sort((a, b) => a - b)).toEqual(tops);
     // the explore-further section comes after the last part
     const explore = (await page.getByTestId('explore-further').boundingBox())!.y;
-    expect(explore).toBeGreaterThan(tops[tops.length - 1]!);
+    expect(explore).toBeGreaterThan(tops[tops.length - 1]);
 
     // Q1a: the identity, each evaluation step, and the live k
     const s1a = page.getByTestId('steps-1a');
@@ -55,7 +61,10 @@ test.describe('exam first: Q1 and Q2 part by part', () => {
     await expect(s1a).toContainText(formatNumber(examLobeK(), 8));
     await expect(s1a).toContainText('radius of the ring');
     await expect(page.locator('main')).not.toContainText('area of a thin ring');
-    await expect(page.getByTestId('answer-1a').getByTestId('k')).toHaveAttribute('data-value', String(examLobeK()));
+    await expect(page.getByTestId('answer-1a').getByTestId('k')).toHaveAttribute(
+      'data-value',
+      String(examLobeK()),
+    );
     // Q1b: both marginals, the paper's identity credited, the key's 2 cot θ and its divergence, the stray e^φ
     await expect(page.getByTestId('steps-1b-theta')).toContainText('sin 2');
     await expect(page.getByTestId('steps-1b-phi')).toContainText('separable');
@@ -72,9 +81,11 @@ test.describe('exam first: Q1 and Q2 part by part', () => {
     await expect(page.getByTestId('steps-1d-theta')).toContainText('\\sin^{-1}');
     await expect(page.getByTestId('steps-1d-phi')).toContainText('log1p');
     const f = animFrame(makeLobe('exam', 8), 'independent', 1, 2000, 'warp', 1);
-    await expect(page.getByTestId('steps-1d-example')).toContainText(formatNumber(Math.asin(Math.sqrt(f.tracked!.xi1)), 12));
+    await expect(page.getByTestId('steps-1d-example')).toContainText(
+      formatNumber(Math.asin(Math.sqrt(f.tracked!.xi1)), 12),
+    );
     // Q2a: why |D| = 2π, with the quadrature value
-    await expect(page.getByTestId('steps-2a')).toContainText("solid angle");
+    await expect(page.getByTestId('steps-2a')).toContainText('solid angle');
     await expect(page.getByTestId('steps-2a')).toContainText(formatNumber(2 * Math.PI, 12));
     // Q2c: the proof written out, and the key's E[X] flagged
     const s2c = page.getByTestId('steps-2c');
@@ -99,12 +110,16 @@ test.describe('exam first: Q1 and Q2 part by part', () => {
 });
 
 test.describe('statements that must be true', () => {
-  test('Phong n = 8 with f = cos θ: infinite-variance warning; the repeat summary explains the Phong lobe', async ({ page }) => {
+  test('Phong n = 8 with f = cos θ: infinite-variance warning; the repeat summary explains the Phong lobe', async ({
+    page,
+  }) => {
     await openScene(page, '#/hemisphere?lobe=phong&exponent=8&n=2000');
     await statsReady(page);
     await expect(page.getByTestId('variance-warning')).toContainText('Infinite variance');
     await expect(page.getByTestId('variance-warning')).toContainText('cos^(2−n)');
-    await expect(page.getByTestId('answer-2b').locator('.readout-note')).toContainText('meaningless here (infinite variance)');
+    await expect(page.getByTestId('answer-2b').locator('.readout-note')).toContainText(
+      'meaningless here (infinite variance)',
+    );
     await page.getByTestId('repeat-button').click();
     const summary = page.getByTestId('repeat-summary');
     await expect(summary).toContainText('unbiased', { timeout: 60_000 });
@@ -112,7 +127,9 @@ test.describe('statements that must be true', () => {
     await expect(summary).not.toContainText('exam lobe');
   });
 
-  test('finite variance configurations: the exam lobe warns of huge variance, Phong n = 2 and the cosine lobe do not warn of infinite variance', async ({ page }) => {
+  test('finite variance configurations: the exam lobe warns of huge variance, Phong n = 2 and the cosine lobe do not warn of infinite variance', async ({
+    page,
+  }) => {
     await openScene(page, '#/hemisphere?n=2000');
     await statsReady(page);
     await expect(page.getByTestId('variance-warning')).toContainText('Huge variance');
@@ -125,7 +142,9 @@ test.describe('statements that must be true', () => {
   });
 
   for (const kind of ['stratified', 'halton', 'sobol'] as const) {
-    test(`points=${kind}: s/√N is not shown as the error; the RMSE over randomized runs is, equal to the model's`, async ({ page }) => {
+    test(`points=${kind}: s/√N is not shown as the error; the RMSE over randomized runs is, equal to the model's`, async ({
+      page,
+    }) => {
       await openScene(page, `#/hemisphere?points=${kind}&n=1024`);
       await statsReady(page);
       await expect(page.getByTestId('stderr-note')).toContainText('not an error estimate');
@@ -136,7 +155,9 @@ test.describe('statements that must be true', () => {
       const uniNote = page.getByTestId('answer-2a').locator('.readout-note');
       await expect(uniNote).toContainText(`RMSE ${formatNumber(r.uniform, 3)}`);
       await expect(uniNote).not.toContainText('std. error');
-      await expect(page.getByTestId('answer-2b').locator('.readout-note')).toContainText(`RMSE ${formatNumber(r.importance, 3)}`);
+      await expect(page.getByTestId('answer-2b').locator('.readout-note')).toContainText(
+        `RMSE ${formatNumber(r.importance, 3)}`,
+      );
     });
   }
 
@@ -149,7 +170,10 @@ test.describe('statements that must be true', () => {
 });
 
 test.describe('the warp morph on the shared timeline', () => {
-  test('play, pause: the readouts equal the model at the paused position; the link restores them', async ({ page, context }) => {
+  test('play, pause: the readouts equal the model at the paused position; the link restores them', async ({
+    page,
+    context,
+  }) => {
     await openScene(page, '#/hemisphere?n=2000&t=0');
     await expectFrame(page, 0, 2000);
     await page.getByTestId('timeline-play').click();
@@ -179,7 +203,11 @@ test.describe('the warp morph on the shared timeline', () => {
   test('growth: the samples drawn at t are growCount(n, t)', async ({ page }) => {
     await openScene(page, '#/hemisphere?n=10000&anim=grow&t=0.5');
     await expect(page.getByTestId('anim-count')).toHaveAttribute('data-value', String(growCount(10000, 0.5)));
-    await expect(page.getByTestId('shown-count')).toHaveAttribute('data-value', String(growCount(10000, 0.5)), { timeout: 30_000 });
+    await expect(page.getByTestId('shown-count')).toHaveAttribute(
+      'data-value',
+      String(growCount(10000, 0.5)),
+      { timeout: 30_000 },
+    );
   });
 
   test('reduced motion: play=1 in the link starts paused', async ({ page }) => {
@@ -194,15 +222,22 @@ test.describe('the warp morph on the shared timeline', () => {
     await countAnimationFrames(page);
     await openScene(page, '#/hemisphere?n=5000');
     await statsReady(page);
-    await expect(page.getByTestId('hemisphere-3d')).toHaveAttribute('data-status', 'ready', { timeout: 30_000 });
+    await expect(page.getByTestId('hemisphere-3d')).toHaveAttribute('data-status', 'ready', {
+      timeout: 30_000,
+    });
     await expect(page.getByTestId('shown-count')).toHaveAttribute('data-value', '5000', { timeout: 30_000 });
     // let the last render and any plot layout settle, then count over a quiet window
-    await expect.poll(async () => {
-      const a = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
-      await page.waitForTimeout(400);
-      const b = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
-      return b - a;
-    }, { timeout: 20_000 }).toBe(0);
+    await expect
+      .poll(
+        async () => {
+          const a = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
+          await page.waitForTimeout(400);
+          const b = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
+          return b - a;
+        },
+        { timeout: 20_000 },
+      )
+      .toBe(0);
     const before = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
     await page.waitForTimeout(1500);
     const after = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
@@ -215,7 +250,9 @@ test.describe('layout', () => {
     [1920, 1080],
     [1280, 720],
   ] as const) {
-    test(`present=1 at ${w}×${h}: the figure is on the first screen and no plot title is clipped`, async ({ page }) => {
+    test(`present=1 at ${w}×${h}: the figure is on the first screen and no plot title is clipped`, async ({
+      page,
+    }) => {
       await page.setViewportSize({ width: w, height: h });
       await openScene(page, '#/hemisphere?present=1&n=2000');
       const fig = page.getByTestId('hemisphere-3d');

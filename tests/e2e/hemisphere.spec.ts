@@ -25,7 +25,14 @@ async function statsReady(page: Page) {
   await expect(page.getByTestId('stats-status')).toHaveAttribute('data-state', 'ready', { timeout: 30_000 });
 }
 
-async function expectMatchesCore(page: Page, lobeId: LobeId, n: number, seed: number, exponent = 8, custom?: (t: number, p: number) => number) {
+async function expectMatchesCore(
+  page: Page,
+  lobeId: LobeId,
+  n: number,
+  seed: number,
+  exponent = 8,
+  custom?: (t: number, p: number) => number,
+) {
   const built = lobeFromParams(lobeId, exponent, custom);
   if (built.tab && !built.tab.ok) throw new Error(built.tab.message);
   const lobe = built.lobe!;
@@ -104,7 +111,9 @@ test.describe("the key's inverted Jacobian", () => {
 });
 
 test.describe('typed densities', () => {
-  test('lobe=custom with cos(theta): k ≈ 1/π and the readouts equal the core tabulation', async ({ page }) => {
+  test('lobe=custom with cos(theta): k ≈ 1/π and the readouts equal the core tabulation', async ({
+    page,
+  }) => {
     await openScene(page, '#/hemisphere?lobe=custom&pdf=cos(theta)&n=4000&seed=3');
     await statsReady(page);
     const k = await readoutNumber(page, 'k');
@@ -174,11 +183,21 @@ test.describe('robustness and extras', () => {
       await expect(page.getByTestId('stability')).toBeVisible({ timeout: 30_000 });
       const results = await new AxeBuilder({ page }).exclude('.js-plotly-plot').analyze();
       const bad = results.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical');
-      expect(bad.map((v) => `${v.id}: ${v.nodes.slice(0, 5).map((n) => n.target.join(' ')).join(', ')}`)).toEqual([]);
+      expect(
+        bad.map(
+          (v) =>
+            `${v.id}: ${v.nodes
+              .slice(0, 5)
+              .map((n) => n.target.join(' '))
+              .join(', ')}`,
+        ),
+      ).toEqual([]);
     });
   }
 
-  test('the opening statistics wait for the page to load; a change before then runs at once', async ({ page }) => {
+  test('the opening statistics wait for the page to load; a change before then runs at once', async ({
+    page,
+  }) => {
     // every state the status line shows, and when the scene's worker is created, from the start
     await page.addInitScript(() => {
       const w = window as unknown as { __log: string[] };
@@ -186,7 +205,8 @@ test.describe('robustness and extras', () => {
       const Orig = window.Worker;
       window.Worker = class extends Orig {
         constructor(url: string | URL, opts?: WorkerOptions) {
-          if (String(url).includes('hemisphere')) w.__log.push(document.documentElement.hasAttribute('data-settled') ? 'worker settled' : 'worker');
+          if (String(url).includes('hemisphere'))
+            w.__log.push(document.documentElement.hasAttribute('data-settled') ? 'worker settled' : 'worker');
           super(url, opts);
         }
       };
@@ -194,7 +214,12 @@ test.describe('robustness and extras', () => {
         const s = document.querySelector('[data-testid="stats-status"]')?.getAttribute('data-state');
         const settled = document.documentElement.hasAttribute('data-settled') ? ' settled' : '';
         if (s && w.__log.at(-1) !== s + settled) w.__log.push(s + settled);
-      }).observe(document, { subtree: true, childList: true, attributes: true, attributeFilter: ['data-state'] });
+      }).observe(document, {
+        subtree: true,
+        childList: true,
+        attributes: true,
+        attributeFilter: ['data-state'],
+      });
     });
     await openScene(page, '#/hemisphere?n=500');
     await statsReady(page);
@@ -253,7 +278,9 @@ test.describe('robustness and extras', () => {
         new Promise<{ frames: number[]; longTasks: number[] }>((resolve) => {
           const frames: number[] = [];
           const longTasks: number[] = [];
-          const po = new PerformanceObserver((l) => l.getEntries().forEach((e) => longTasks.push(e.duration)));
+          const po = new PerformanceObserver((l) =>
+            l.getEntries().forEach((e) => longTasks.push(e.duration)),
+          );
           try {
             po.observe({ type: 'longtask', buffered: false });
           } catch {
@@ -273,8 +300,14 @@ test.describe('robustness and extras', () => {
           requestAnimationFrame(tick);
         }),
     );
-    await expect(page.getByTestId('shown-count')).toHaveAttribute('data-value', '1000000', { timeout: 90_000 });
-    const grow = await page.evaluate(() => performance.getEntriesByName('hemisphere-grow').map((e) => [e.duration, (e as PerformanceMeasure).detail as number]));
+    await expect(page.getByTestId('shown-count')).toHaveAttribute('data-value', '1000000', {
+      timeout: 90_000,
+    });
+    const grow = await page.evaluate(() =>
+      performance
+        .getEntriesByName('hemisphere-grow')
+        .map((e) => [e.duration, (e as PerformanceMeasure).detail as number]),
+    );
     const stats = (xs: number[]) => {
       const s = [...xs].sort((a, b) => a - b);
       const q = (p: number) => s[Math.min(s.length - 1, Math.floor(p * s.length))] ?? NaN;
@@ -283,8 +316,12 @@ test.describe('robustness and extras', () => {
     const totalPts = grow.reduce((a, g) => a + g[1], 0);
     const totalMs = grow.reduce((a, g) => a + g[0], 0);
     console.log(`[hemisphere 1e6] rAF deltas during growth: ${stats(probe.frames)}`);
-    console.log(`[hemisphere 1e6] long tasks (>50 ms) during growth: ${probe.longTasks.length ? stats(probe.longTasks) : 'none'}`);
-    console.log(`[hemisphere 1e6] generation per frame: ${stats(grow.map((g) => g[0]))}; ${totalPts} points in ${totalMs.toFixed(0)} ms = ${((totalPts / totalMs) * 1000).toExponential(2)} points/s incl. colours and Float32 copy`);
+    console.log(
+      `[hemisphere 1e6] long tasks (>50 ms) during growth: ${probe.longTasks.length ? stats(probe.longTasks) : 'none'}`,
+    );
+    console.log(
+      `[hemisphere 1e6] generation per frame: ${stats(grow.map((g) => g[0]))}; ${totalPts} points in ${totalMs.toFixed(0)} ms = ${((totalPts / totalMs) * 1000).toExponential(2)} points/s incl. colours and Float32 copy`,
+    );
     // a quiet scene renders nothing: no frames are requested after the growth ends
     const idle = await page.evaluate(
       () =>
@@ -304,7 +341,18 @@ test.describe('robustness and extras', () => {
           let last = performance.now();
           let i = 0;
           const fire = (type: string, px: number) =>
-            canvas.dispatchEvent(new PointerEvent(type, { clientX: px, clientY: y, pointerId: 1, bubbles: true, isPrimary: true, pointerType: 'mouse', button: 0, buttons: 1 }));
+            canvas.dispatchEvent(
+              new PointerEvent(type, {
+                clientX: px,
+                clientY: y,
+                pointerId: 1,
+                bubbles: true,
+                isPrimary: true,
+                pointerType: 'mouse',
+                button: 0,
+                buttons: 1,
+              }),
+            );
           fire('pointerdown', x);
           const tick = (now: number) => {
             d.push(now - last);

@@ -34,7 +34,15 @@ test.afterAll(async () => {
   await new Promise<void>((ok) => server.close(() => ok()));
 });
 
-type Reply = { protocol: string; version: number; id: unknown; type: string; ok: boolean; error?: string; state?: { scene: string; params: Record<string, unknown>; query: string } };
+type Reply = {
+  protocol: string;
+  version: number;
+  id: unknown;
+  type: string;
+  ok: boolean;
+  error?: string;
+  state?: { scene: string; params: Record<string, unknown>; query: string };
+};
 type Msg = Record<string, unknown>;
 
 async function openHost(page: Page, sceneHash: string): Promise<Frame> {
@@ -50,17 +58,31 @@ async function openHost(page: Page, sceneHash: string): Promise<Frame> {
   return f!;
 }
 
-const api = <T,>(page: Page, fn: string, arg?: unknown) =>
-  page.evaluate(([fn, arg]) => (window as unknown as { rml: Record<string, (a?: unknown) => Promise<unknown>> }).rml[fn as string]!(arg), [fn, arg] as const) as Promise<T>;
+const api = <T>(page: Page, fn: string, arg?: unknown) =>
+  page.evaluate(
+    ([fn, arg]) =>
+      (window as unknown as { rml: Record<string, (a?: unknown) => Promise<unknown>> }).rml[fn as string](
+        arg,
+      ),
+    [fn, arg] as const,
+  ) as Promise<T>;
 
-test('the example host page sets, gets and subscribes; bad values answer an error naming them', async ({ page }) => {
+test('the example host page sets, gets and subscribes; bad values answer an error naming them', async ({
+  page,
+}) => {
   const frame = await openHost(page, '#/texture?embed=1');
   const bilinear = () => frame.getByTestId('bilinear').first().getAttribute('data-value');
   const before = await bilinear();
 
   // get: the scene's parameters, typed
   const got = await api<Reply>(page, 'get');
-  expect(got).toMatchObject({ protocol: 'render-math-lab', version: 1, type: 'reply', ok: true, id: expect.stringMatching(/^req-/) });
+  expect(got).toMatchObject({
+    protocol: 'render-math-lab',
+    version: 1,
+    type: 'reply',
+    ok: true,
+    id: expect.stringMatching(/^req-/),
+  });
   expect(got.state!.scene).toBe('texture');
   expect(got.state!.params.u).toBe(0.4);
   expect(got.state!.params.wrap).toBe('clamp');
@@ -78,8 +100,13 @@ test('the example host page sets, gets and subscribes; bad values answer an erro
   expect(got2.state!.params).toMatchObject({ u: 0.7, v: 0.3, wrap: 'repeat' });
   expect(got2.state!.query).toContain('u=0.7');
   // the host's change was announced as an event caused by the host
-  const events = () => page.evaluate(() => (window as unknown as { rml: { received: Msg[] } }).rml.received.filter((m) => m.type === 'event'));
-  await expect.poll(async () => (await events()).some((e) => e.event === 'change' && e.cause === 'host')).toBe(true);
+  const events = () =>
+    page.evaluate(() =>
+      (window as unknown as { rml: { received: Msg[] } }).rml.received.filter((m) => m.type === 'event'),
+    );
+  await expect
+    .poll(async () => (await events()).some((e) => e.event === 'change' && e.cause === 'host'))
+    .toBe(true);
 
   // a bad value: an error naming it, and nothing applied (not even the good value beside it)
   const bad = await api<Reply>(page, 'set', { u: 0.1, wrap: 'sideways' });
@@ -114,8 +141,12 @@ test('the example host page sets, gets and subscribes; bad values answer an erro
   await page.mouse.down();
   await page.mouse.move(box.x + box.width * 0.75, box.y + box.height * 0.25, { steps: 5 });
   await page.mouse.up();
-  await expect.poll(async () => (await events()).filter((e) => e.cause === 'user').length).toBeGreaterThan(n0);
-  const last = (await events()).filter((e) => e.cause === 'user').at(-1) as { state: { scene: string; params: { u: number } } };
+  await expect
+    .poll(async () => (await events()).filter((e) => e.cause === 'user').length)
+    .toBeGreaterThan(n0);
+  const last = (await events()).filter((e) => e.cause === 'user').at(-1) as {
+    state: { scene: string; params: { u: number } };
+  };
   expect(last.state.scene).toBe('texture');
   expect(last.state.params.u).toBeCloseTo(-0.08 + 1.16 * 0.75, 1);
   expect((await api<Reply>(page, 'get')).state!.params.u).toBe(last.state.params.u);
@@ -124,12 +155,20 @@ test('the example host page sets, gets and subscribes; bad values answer an erro
   // plain data; only the four fields, strings capped
   const f = page.frames().find((x) => x.url().startsWith(`http://127.0.0.1:${appPort}/`))!;
   await f.evaluate(() =>
-    window.dispatchEvent(new CustomEvent('rml:practice-verdict', { detail: { question: 'Q3b', seed: 42, name: 'bilinear', verdict: 'correct', extra: '<img src=x>' } })),
+    window.dispatchEvent(
+      new CustomEvent('rml:practice-verdict', {
+        detail: { question: 'Q3b', seed: 42, name: 'bilinear', verdict: 'correct', extra: '<img src=x>' },
+      }),
+    ),
   );
-  await expect.poll(async () => (await events()).find((e) => e.event === 'practice-verdict')?.verdict ?? null).toEqual({ question: 'Q3b', seed: 42, name: 'bilinear', verdict: 'correct' });
+  await expect
+    .poll(async () => (await events()).find((e) => e.event === 'practice-verdict')?.verdict ?? null)
+    .toEqual({ question: 'Q3b', seed: 42, name: 'bilinear', verdict: 'correct' });
 });
 
-test('requests from a window that is not the parent are ignored; height messages carry no URL', async ({ page }) => {
+test('requests from a window that is not the parent are ignored; height messages carry no URL', async ({
+  page,
+}) => {
   const frame = await openHost(page, '#/texture?embed=1&u=0.2');
   // a sibling frame of the host's origin (not the scene's parent) sends a set
   await page.evaluate(() => {
@@ -141,14 +180,20 @@ test('requests from a window that is not the parent are ignored; height messages
   });
   await page.evaluate(() => {
     const scene = (document.getElementById('scene') as HTMLIFrameElement).contentWindow!;
-    const sib = (document.getElementById('sibling') as HTMLIFrameElement).contentWindow as Window & { eval: (s: string) => unknown };
+    const sib = (document.getElementById('sibling') as HTMLIFrameElement).contentWindow as Window & {
+      eval: (s: string) => unknown;
+    };
     (sib as unknown as { target: Window }).target = scene;
-    sib.eval(`target.postMessage({ protocol: 'render-math-lab', version: 1, id: 'intruder', type: 'set', params: { u: 0.9 } }, '*')`);
+    sib.eval(
+      `target.postMessage({ protocol: 'render-math-lab', version: 1, id: 'intruder', type: 'set', params: { u: 0.9 } }, '*')`,
+    );
   });
   // a later request from the parent is answered; the intruder's never was, and changed nothing
   const got = await api<Reply>(page, 'get');
   expect(got.state!.params.u).toBe(0.2);
-  const received = await page.evaluate(() => (window as unknown as { rml: { received: Msg[] } }).rml.received);
+  const received = await page.evaluate(
+    () => (window as unknown as { rml: { received: Msg[] } }).rml.received,
+  );
   expect(received.some((m) => m.id === 'intruder')).toBe(false);
   await expect(frame.getByTestId('u-slider')).toHaveValue('0.2');
 
@@ -171,32 +216,55 @@ test('with origin= the scene answers only that origin', async ({ page }) => {
   );
   expect(r).toBe('ignored');
   // and no height message reaches it either (they go to the allowed origin only)
-  const heights = await page.evaluate(() => (window as unknown as { rml: { received: Msg[] } }).rml.received.filter((m) => m.type === 'render-math-lab:height').length);
+  const heights = await page.evaluate(
+    () =>
+      (window as unknown as { rml: { received: Msg[] } }).rml.received.filter(
+        (m) => m.type === 'render-math-lab:height',
+      ).length,
+  );
   expect(heights).toBe(0);
 });
 
-test('the posted height follows the content both ways: it shrinks as well as grows when the host resizes the iframe', async ({ page }) => {
+test('the posted height follows the content both ways: it shrinks as well as grows when the host resizes the iframe', async ({
+  page,
+}) => {
   await page.setViewportSize({ width: 1400, height: 900 });
   await openHost(page, '#/texture?embed=1');
   const lastHeight = () =>
-    page.evaluate(() => (window as unknown as { rml: { received: Msg[] } }).rml.received.filter((m) => m.type === 'render-math-lab:height').at(-1)?.height as number | undefined ?? 0);
+    page.evaluate(
+      () =>
+        ((window as unknown as { rml: { received: Msg[] } }).rml.received
+          .filter((m) => m.type === 'render-math-lab:height')
+          .at(-1)?.height as number | undefined) ?? 0,
+    );
   const f = page.frames().find((x) => x.url().startsWith(`http://127.0.0.1:${appPort}/`))!;
   // the embedded page's content height (what the posted height must follow)
-  const content = () => f.evaluate(() => Math.ceil(document.getElementById('root')!.getBoundingClientRect().bottom + window.scrollY));
+  const content = () =>
+    f.evaluate(() =>
+      Math.ceil(document.getElementById('root')!.getBoundingClientRect().bottom + window.scrollY),
+    );
   const setWidth = (w: number) =>
     page.evaluate((w) => {
       (document.getElementById('scene') as HTMLIFrameElement).style.width = `${w}px`;
     }, w);
   // settle at a width: the posted height equals the content's height there
   const settle = async () => {
-    await expect.poll(async () => Math.abs((await lastHeight()) - (await content())), { timeout: 20000 }).toBeLessThanOrEqual(1);
+    await expect
+      .poll(async () => Math.abs((await lastHeight()) - (await content())), { timeout: 20000 })
+      .toBeLessThanOrEqual(1);
     return lastHeight();
   };
   await setWidth(380);
   const narrow = await settle();
   expect(narrow).toBeGreaterThan(1500);
   // the host page applies it: the iframe is as tall as the narrow layout
-  await expect.poll(() => page.evaluate(() => (document.getElementById('scene') as HTMLIFrameElement).getBoundingClientRect().height)).toBeGreaterThan(narrow - 5);
+  await expect
+    .poll(() =>
+      page.evaluate(
+        () => (document.getElementById('scene') as HTMLIFrameElement).getBoundingClientRect().height,
+      ),
+    )
+    .toBeGreaterThan(narrow - 5);
   await setWidth(1300);
   const wide = await settle();
   expect(Math.abs(wide - narrow), 'the two layouts differ in height').toBeGreaterThan(50);
@@ -207,7 +275,10 @@ test('the posted height follows the content both ways: it shrinks as well as gro
   expect(again).toBeGreaterThanOrEqual(narrow - 1);
 });
 
-test('"Copy embed code" gives an iframe with an id and the listener that sizes it', async ({ page, context }) => {
+test('"Copy embed code" gives an iframe with an id and the listener that sizes it', async ({
+  page,
+  context,
+}) => {
   const app = await context.newPage();
   await app.goto(`http://127.0.0.1:${appPort}/app/#/texture?u=0.7`);
   await app.getByTestId('copy-embed').click();
@@ -223,9 +294,19 @@ test('"Copy embed code" gives an iframe with an id and the listener that sizes i
   await expect(frame.getByTestId('bilinear').first()).toBeVisible({ timeout: 30000 });
   await expect(frame.getByTestId('u-slider')).toHaveValue('0.7');
   const f = page.frames().find((x) => x.url().includes('/app/'))!;
-  const content = () => f.evaluate(() => Math.ceil(document.getElementById('root')!.getBoundingClientRect().bottom + window.scrollY));
+  const content = () =>
+    f.evaluate(() =>
+      Math.ceil(document.getElementById('root')!.getBoundingClientRect().bottom + window.scrollY),
+    );
   await expect
-    .poll(async () => Math.abs((await page.locator(`#${id}`).evaluate((el) => el.getBoundingClientRect().height)) - (await content())), { timeout: 20000 })
+    .poll(
+      async () =>
+        Math.abs(
+          (await page.locator(`#${id}`).evaluate((el) => el.getBoundingClientRect().height)) -
+            (await content()),
+        ),
+      { timeout: 20000 },
+    )
     .toBeLessThanOrEqual(1);
   expect(await content()).toBeGreaterThan(720);
 });
@@ -248,7 +329,9 @@ test('the host drives the shared animation timeline: seek, play and pause', asyn
   const play = await api<Reply>(page, 'play');
   expect(play.ok, play.error).toBe(true);
   await expect(timeline).toHaveAttribute('data-playing', '1');
-  await expect.poll(async () => Number(await timeline.getAttribute('data-t')), { timeout: 30000 }).not.toBe(0.5);
+  await expect
+    .poll(async () => Number(await timeline.getAttribute('data-t')), { timeout: 30000 })
+    .not.toBe(0.5);
   const pause = await api<Reply>(page, 'pause');
   expect(pause.ok, pause.error).toBe(true);
   await expect(timeline).toHaveAttribute('data-playing', '0');

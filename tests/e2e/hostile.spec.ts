@@ -20,7 +20,8 @@ const EXTRA_ROUTES: { path: string; id: string | null }[] = [];
 function registryRoutes(): { path: string; id: string | null }[] {
   const src = readFileSync('src/scenes/registry.ts', 'utf8');
   const out: { path: string; id: string | null }[] = [];
-  for (const m of src.matchAll(/id:\s*'([\w-]+)',\s*\n\s*path:\s*'(\/[\w/-]*)'/g)) out.push({ id: m[1]!, path: m[2]! });
+  for (const m of src.matchAll(/id:\s*'([\w-]+)',\s*\n\s*path:\s*'(\/[\w/-]*)'/g))
+    out.push({ id: m[1], path: m[2] });
   return out;
 }
 
@@ -40,7 +41,7 @@ function paramNames(id: string | null): { name: string; kind: string }[] {
       const after = body.slice(m.index!, m.index! + 200);
       kind = /kind: '(\w+)'/.exec(after)?.[1] ?? 'unknown';
     }
-    out.push({ name: m[1]!, kind });
+    out.push({ name: m[1], kind });
   }
   return out;
 }
@@ -125,7 +126,10 @@ async function settle(page: Page) {
 async function expectWorkingScene(page: Page, label: string) {
   await expect(page.locator('main#main')).toBeVisible();
   await expect(page.locator('.loading')).toHaveCount(0);
-  await expect(page.getByText('Something in this scene went wrong'), `error panel after ${label}`).toHaveCount(0);
+  await expect(
+    page.getByText('Something in this scene went wrong'),
+    `error panel after ${label}`,
+  ).toHaveCount(0);
 }
 
 for (const route of ROUTES) {
@@ -151,12 +155,15 @@ for (const route of ROUTES) {
       await expectWorkingScene(page, label);
       // every non-text parameter that cannot use the value is named in the notice
       // (a list takes '' as its default and '1,2' as two numbers: those are usable)
-      const mustName = params.filter((p) => p.kind !== 'string' && !(p.kind === 'list' && (raw === '' || raw === '1,2')));
+      const mustName = params.filter(
+        (p) => p.kind !== 'string' && !(p.kind === 'list' && (raw === '' || raw === '1,2')),
+      );
       if (mustName.length) {
         const notice = page.getByTestId('param-notice');
         await expect(notice, `notice for ${label}`).toBeVisible();
         const named = await notice.locator('li code').allTextContents();
-        for (const p of mustName) expect(named, `${route.path}: ${p.name}=${label} is named`).toContain(p.name);
+        for (const p of mustName)
+          expect(named, `${route.path}: ${p.name}=${label} is named`).toContain(p.name);
       }
       await settle(page);
       const long = await page.evaluate(() => {
@@ -165,7 +172,10 @@ for (const route of ROUTES) {
         w.__long.length = 0;
         return l;
       });
-      expect(Math.max(0, ...long), `${route.path} with every parameter = ${label}: longest main-thread task (ms; 1 s × slowdown ${limitMs / 1000})`).toBeLessThan(limitMs);
+      expect(
+        Math.max(0, ...long),
+        `${route.path} with every parameter = ${label}: longest main-thread task (ms; 1 s × slowdown ${limitMs / 1000})`,
+      ).toBeLessThan(limitMs);
     }
     // one prototype name per parameter on its own, then a control change: the URL never carries
     // a function's source
@@ -190,10 +200,17 @@ for (const route of ROUTES) {
     await openScene(page, `#${route.path}?fuzz=1&fuzzseed=17&fuzzn=${FUZZ_ACTIONS}`);
     await expect(page.locator('.fuzz-panel')).toBeVisible();
     await expect
-      .poll(async () => page.evaluate(() => (window as unknown as { __rmlFuzz?: { running: boolean } }).__rmlFuzz?.running ?? true), { timeout: 100_000, intervals: [500] })
+      .poll(
+        async () =>
+          page.evaluate(
+            () => (window as unknown as { __rmlFuzz?: { running: boolean } }).__rmlFuzz?.running ?? true,
+          ),
+        { timeout: 100_000, intervals: [500] },
+      )
       .toBe(false);
     const state = await page.evaluate(() => {
-      const f = (window as unknown as { __rmlFuzz: { actions: number; errors: string[]; log: string[] } }).__rmlFuzz;
+      const f = (window as unknown as { __rmlFuzz: { actions: number; errors: string[]; log: string[] } })
+        .__rmlFuzz;
       return { actions: f.actions, errors: f.errors, log: f.log };
     });
     expect(state.actions).toBe(FUZZ_ACTIONS);

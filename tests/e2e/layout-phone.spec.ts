@@ -61,7 +61,9 @@ for (const [w, h] of [
   [1280, 720],
   [1920, 1080],
 ] as const) {
-  test(`present=1 at ${w}×${h}: #/area-light's 3D view starts in the top half of the first screen, most of it visible`, async ({ page }) => {
+  test(`present=1 at ${w}×${h}: #/area-light's 3D view starts in the top half of the first screen, most of it visible`, async ({
+    page,
+  }) => {
     await page.setViewportSize({ width: w, height: h });
     await openScene(page, '#/area-light?present=1');
     const view = page.getByTestId('al-3d');
@@ -85,7 +87,11 @@ async function typesetAll(page: Page): Promise<void> {
         page.evaluate(() => {
           window.scrollBy(0, window.innerHeight);
           const atEnd = window.scrollY + window.innerHeight >= document.documentElement.scrollHeight - 2;
-          return atEnd && document.querySelectorAll('.math-pending').length === 0 && document.querySelectorAll('.katex-display').length > 0;
+          return (
+            atEnd &&
+            document.querySelectorAll('.math-pending').length === 0 &&
+            document.querySelectorAll('.katex-display').length > 0
+          );
         }),
       { timeout: 60000, intervals: [200] },
     )
@@ -111,12 +117,20 @@ async function displayLines(page: Page): Promise<DisplayLine[]> {
       let box: HTMLElement | null = el;
       let inScroller = false;
       for (; box; box = box.parentElement) {
-        if (box.getAttribute('tabindex') === '0' && box.getAttribute('aria-label') && ['auto', 'scroll'].includes(getComputedStyle(box).overflowX)) {
+        if (
+          box.getAttribute('tabindex') === '0' &&
+          box.getAttribute('aria-label') &&
+          ['auto', 'scroll'].includes(getComputedStyle(box).overflowX)
+        ) {
           inScroller = true;
           break;
         }
       }
-      const tops = new Set([...html.querySelectorAll(':scope > .katex-base')].map((b) => Math.round(b.getBoundingClientRect().top)));
+      const tops = new Set(
+        [...html.querySelectorAll(':scope > .katex-base')].map((b) =>
+          Math.round(b.getBoundingClientRect().top),
+        ),
+      );
       return { tex, overflows, inScroller, wrapped: tops.size > 1 };
     }),
   );
@@ -124,7 +138,10 @@ async function displayLines(page: Page): Promise<DisplayLine[]> {
 
 /** Long single-line derivation steps that must now wrap at 375 px (each was wider than a phone). */
 const MUST_WRAP: Record<string, string[]> = {
-  hemisphere: [String.raw`|D| = \int_\Omega d\omega`, String.raw`E\big[\langle I\rangle\big] = \frac{1}{N}\sum`],
+  hemisphere: [
+    String.raw`|D| = \int_\Omega d\omega`,
+    String.raw`E\big[\langle I\rangle\big] = \frac{1}{N}\sum`,
+  ],
   'monte-carlo': [],
   texture: [],
   'ray-sphere': [String.raw`{a t^2 + b t + c = 0}`, String.raw`{t = \frac{-b \pm \sqrt{\Delta}}{2a}}`],
@@ -133,7 +150,9 @@ const MUST_WRAP: Record<string, string[]> = {
 
 test.describe('375 px: derivations', () => {
   for (const s of SCENES) {
-    test(`#/${s.path}: no display line wider than its box outside a focusable scroller; the long steps wrap`, async ({ page }) => {
+    test(`#/${s.path}: no display line wider than its box outside a focusable scroller; the long steps wrap`, async ({
+      page,
+    }) => {
       test.setTimeout(120_000);
       await page.setViewportSize({ width: 375, height: 800 });
       await openScene(page, `#/${s.path}`);
@@ -156,14 +175,18 @@ test.describe('375 px: derivations', () => {
   }
 });
 
-test('375 px: the dissolved one-column layout stays accessible (axe: no serious or critical violations)', async ({ page }) => {
+test('375 px: the dissolved one-column layout stays accessible (axe: no serious or critical violations)', async ({
+  page,
+}) => {
   test.setTimeout(420_000);
   await page.setViewportSize({ width: 375, height: 800 });
   for (const path of ['area-light', 'texture', 'monte-carlo', 'hemisphere', 'ray-sphere']) {
     await openScene(page, `#/${path}`);
     await typesetAll(page);
     const r = await new AxeBuilder({ page }).analyze();
-    const bad = r.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
+    const bad = r.violations
+      .filter((v) => v.impact === 'serious' || v.impact === 'critical')
+      .map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`);
     expect(bad, path).toEqual([]);
   }
 });

@@ -4,7 +4,15 @@
  * never pasted from the answer key or from the app.
  */
 import AxeBuilder from '@axe-core/playwright';
-import { test, expect, openScene, readout, readoutNumber, waitForReadout, countAnimationFrames } from './fixtures';
+import {
+  test,
+  expect,
+  openScene,
+  readout,
+  readoutNumber,
+  waitForReadout,
+  countAnimationFrames,
+} from './fixtures';
 import { drawnEstimate, raceAt, raceTrack } from '../../src/scenes/monte-carlo/model';
 import { squarePdf1D, uniformPdf1D } from '../../src/core/sampling/pdf1d';
 import { compileXFast } from '../../src/scenes/monte-carlo/expr';
@@ -13,7 +21,8 @@ const EXAM_X = [1.16, 1.98, 0.54, 1.26];
 const f = (x: number) => (x + 2) ** 2;
 const cube = (x: number) => x * x * x;
 const exactSquare = (a: number, b: number) => (cube(b + 2) - cube(a + 2)) / 3;
-const close = (got: number, want: number, tol: number) => expect(Math.abs(got - want), `${got} ≈ ${want} (±${tol})`).toBeLessThanOrEqual(tol);
+const close = (got: number, want: number, tol: number) =>
+  expect(Math.abs(got - want), `${got} ≈ ${want} (±${tol})`).toBeLessThanOrEqual(tol);
 
 function meanAndStderr(terms: number[]) {
   const m = terms.reduce((s, t) => s + t, 0) / terms.length;
@@ -22,7 +31,9 @@ function meanAndStderr(terms: number[]) {
 }
 
 test.describe('exam Q4', () => {
-  test('default page: the worked table of the exam’s four samples, 56/3, and the key’s differing figures', async ({ page }) => {
+  test('default page: the worked table of the exam’s four samples, 56/3, and the key’s differing figures', async ({
+    page,
+  }) => {
     await openScene(page, '#/monte-carlo');
     close(await readoutNumber(page, 'exact'), exactSquare(0, 2), 1e-13);
     for (const [i, x] of EXAM_X.entries()) {
@@ -60,7 +71,8 @@ test.describe('exam Q4', () => {
   test('pdf=proportional: every f/p is 56/3, given or drawn (zero variance)', async ({ page }) => {
     await openScene(page, `#/monte-carlo?pdf=proportional&samples=${EXAM_X.join(',')}`);
     const I = exactSquare(0, 2);
-    for (const [i, x] of EXAM_X.entries()) close(await readoutNumber(page, `p-${i}`), (3 * f(x)) / (cube(4) - cube(2)), 1e-15);
+    for (const [i, x] of EXAM_X.entries())
+      close(await readoutNumber(page, `p-${i}`), (3 * f(x)) / (cube(4) - cube(2)), 1e-15);
     close(await readoutNumber(page, 'estimate'), I, 1e-12);
     expect(await readoutNumber(page, 'stderr')).toBeLessThan(1e-12);
 
@@ -94,7 +106,9 @@ test.describe('typed integrands and pdfs', () => {
     close(est, I, 5 * se + 1e-12);
   });
 
-  test('bad pdfs get a clear message and no estimate; a bad f falls back with a message', async ({ page }) => {
+  test('bad pdfs get a clear message and no estimate; a bad f falls back with a message', async ({
+    page,
+  }) => {
     const cases: [string, RegExp][] = [
       ['x-1', /negative/],
       ['x', /biased/],
@@ -118,7 +132,9 @@ test.describe('typed integrands and pdfs', () => {
 });
 
 test.describe('long runs in the worker', () => {
-  test('n = 3·10⁶ runs off the main thread and finishes; the convergence plot notes the exact strategy', async ({ page }) => {
+  test('n = 3·10⁶ runs off the main thread and finishes; the convergence plot notes the exact strategy', async ({
+    page,
+  }) => {
     await openScene(page, '#/monte-carlo?pdf=proportional&n=3000000');
     const est = Number(await waitForReadout(page, 'estimate', (v) => v !== 'none', 45000));
     close(est, exactSquare(0, 2), 1e-10);
@@ -127,7 +143,9 @@ test.describe('long runs in the worker', () => {
     await expect(page.locator('.mc-plots .js-plotly-plot').first()).toBeVisible();
   });
 
-  test('the unbiasedness histogram: the mean of 2000 estimates is within 4 standard errors of 56/3', async ({ page }) => {
+  test('the unbiasedness histogram: the mean of 2000 estimates is within 4 standard errors of 56/3', async ({
+    page,
+  }) => {
     await openScene(page, '#/monte-carlo?n=1000');
     await page.getByRole('heading', { name: /Unbiasedness/ }).scrollIntoViewIfNeeded();
     const mean = Number(await waitForReadout(page, 'hist-mean', (v) => v !== 'none', 45000));
@@ -158,11 +176,20 @@ test('axe finds no serious or critical violations (light, dark, present, bad pdf
   test.setTimeout(240_000); // four full-page scans of a long page on a busy 2-core machine
   for (const qs of ['theme=light', 'theme=dark', 'present=1', 'pdf=custom&pdfexpr=x-1']) {
     await openScene(page, `#/monte-carlo?${qs}`);
-    await page.getByRole('heading', { name: /Unbiasedness|RMSE over/ }).first().scrollIntoViewIfNeeded();
+    await page
+      .getByRole('heading', { name: /Unbiasedness|RMSE over/ })
+      .first()
+      .scrollIntoViewIfNeeded();
     // Plotly's own modebar lives inside the shared Plot component (not this scene's code)
-    const results = await new AxeBuilder({ page }).exclude('.plot-canvas').exclude('.js-plotly-plot').analyze();
+    const results = await new AxeBuilder({ page })
+      .exclude('.plot-canvas')
+      .exclude('.js-plotly-plot')
+      .analyze();
     const bad = results.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical');
-    expect(bad.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`), qs).toEqual([]);
+    expect(
+      bad.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`),
+      qs,
+    ).toEqual([]);
   }
 });
 
@@ -176,7 +203,8 @@ const examTrack = (seed: number) => raceTrack(f, 0, 2, squarePdf1D(0, 2, 2), exa
 async function raceReadouts(page: import('@playwright/test').Page) {
   const out: Record<string, string> = {};
   for (const lane of ['uniform', 'importance'])
-    for (const k of ['x', 'term', 'estimate', 'stderr']) out[`${lane}-${k}`] = await readout(page, `race-${lane}-${k}`);
+    for (const k of ['x', 'term', 'estimate', 'stderr'])
+      out[`${lane}-${k}`] = await readout(page, `race-${lane}-${k}`);
   return out;
 }
 function expectFrame(r: Record<string, string>, fr: ReturnType<typeof raceAt>) {
@@ -189,11 +217,17 @@ function expectFrame(r: Record<string, string>, fr: ReturnType<typeof raceAt>) {
 }
 
 test.describe('exam first: Q4 (a)–(d)', () => {
-  test('each part asks, derives with live numbers and answers; the key’s Σ from i = 0 is flagged', async ({ page }) => {
+  test('each part asks, derives with live numbers and answers; the key’s Σ from i = 0 is flagged', async ({
+    page,
+  }) => {
     await openScene(page, '#/monte-carlo');
     const I = exactSquare(0, 2);
     // order: the question (with the animation) before the parts, the parts before "explore further"
-    const ys = await Promise.all(['question-4', 'race', 'part-4a', 'part-4b', 'part-4c', 'part-4d', 'explore-further'].map(async (id) => (await page.getByTestId(id).boundingBox())!.y));
+    const ys = await Promise.all(
+      ['question-4', 'race', 'part-4a', 'part-4b', 'part-4c', 'part-4d', 'explore-further'].map(
+        async (id) => (await page.getByTestId(id).boundingBox())!.y,
+      ),
+    );
     expect([...ys].sort((p, q) => p - q)).toEqual(ys);
     // (a): expansion, antiderivative, the evaluation F(2) = 8/3 + 8 + 8, and the exact readout
     const a = page.getByTestId('derivation-4a');
@@ -210,7 +244,7 @@ test.describe('exam first: Q4 (a)–(d)', () => {
     await expect(page.getByTestId('key-sum-4b')).toContainText('i = 1 to 4');
     await expect(page.getByTestId('key-sum-4c')).toBeVisible();
     // (c): p(x) = 3(x + 2)²/56 stated in the default (uniform) configuration, each term = I
-    await expect(page.getByTestId('pdf-4c')).toContainText(String((cube(4) - cube(2))));
+    await expect(page.getByTestId('pdf-4c')).toContainText(String(cube(4) - cube(2)));
     close(await readoutNumber(page, 'q4-importance'), I, 1e-12);
     await expect(page.getByTestId('derivation-4c')).toContainText(I.toFixed(10).slice(0, 12));
     // (d): the key's remark, with the errors after the whole run computed by the model
@@ -220,7 +254,9 @@ test.describe('exam first: Q4 (a)–(d)', () => {
     await expect(page.getByTestId('answer-4d')).toContainText('(c) converges faster');
   });
 
-  test('s/√N is flagged for stratified/QMC points and the RMSE over randomized runs is shown; given samples with a non-uniform pdf are flagged', async ({ page }) => {
+  test('s/√N is flagged for stratified/QMC points and the RMSE over randomized runs is shown; given samples with a non-uniform pdf are flagged', async ({
+    page,
+  }) => {
     await openScene(page, '#/monte-carlo?strategy=sobol&n=1000&runs=8');
     await expect(page.getByTestId('stderr-not-error')).toContainText('not an error estimate');
     const rmse = Number(await waitForReadout(page, 'rmse-at-n', (v) => v !== 'none', 45000));
@@ -244,7 +280,9 @@ test.describe('exam first: Q4 (a)–(d)', () => {
     [1920, 1080],
     [1280, 720],
   ] as const) {
-    test(`present=1 at ${w}×${h}: the animated figure is on the first screen, captions not clipped`, async ({ page }) => {
+    test(`present=1 at ${w}×${h}: the animated figure is on the first screen, captions not clipped`, async ({
+      page,
+    }) => {
       await page.setViewportSize({ width: w, height: h });
       await openScene(page, '#/monte-carlo?present=1&t=200');
       const svg = page.getByTestId('race').locator('svg').first();
@@ -262,11 +300,15 @@ test.describe('exam first: Q4 (a)–(d)', () => {
 });
 
 test.describe('animation: samples arrive one by one', () => {
-  test('play, pause: readouts equal the model at the paused t; the link restores them; step adds one sample', async ({ page }) => {
+  test('play, pause: readouts equal the model at the paused t; the link restores them; step adds one sample', async ({
+    page,
+  }) => {
     await openScene(page, '#/monte-carlo?seed=5');
     const tl = page.getByTestId('timeline');
     await page.getByTestId('timeline-play').click();
-    await expect.poll(async () => Number(await tl.getAttribute('data-t')), { timeout: 20000 }).toBeGreaterThan(40);
+    await expect
+      .poll(async () => Number(await tl.getAttribute('data-t')), { timeout: 20000 })
+      .toBeGreaterThan(40);
     await page.getByTestId('timeline-play').click();
     await expect(tl).toHaveAttribute('data-playing', '0');
     const t = Number(await tl.getAttribute('data-t'));
@@ -282,10 +324,16 @@ test.describe('animation: samples arrive one by one', () => {
     await expect(tl).toHaveAttribute('data-t', String(t + 1));
     expectFrame(await raceReadouts(page), raceAt(track, t + 1));
     // the term appears, and the uniform term is (b − a) f(xᵢ)
-    close(await readoutNumber(page, 'race-uniform-term'), 2 * f(await readoutNumber(page, 'race-uniform-x')), 1e-10);
+    close(
+      await readoutNumber(page, 'race-uniform-term'),
+      2 * f(await readoutNumber(page, 'race-uniform-x')),
+      1e-10,
+    );
   });
 
-  test('reduced motion starts paused even with play=1; no animation frames while paused', async ({ page }) => {
+  test('reduced motion starts paused even with play=1; no animation frames while paused', async ({
+    page,
+  }) => {
     await countAnimationFrames(page);
     await page.emulateMedia({ reducedMotion: 'reduce' });
     await openScene(page, '#/monte-carlo?play=1&t=120');

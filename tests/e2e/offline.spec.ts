@@ -24,9 +24,16 @@ test.use({ serviceWorkers: 'allow' });
 // (service-worker activation under load) is found.
 test.describe.configure({ retries: 1 });
 const TYPES: Record<string, string> = {
-  '.html': 'text/html; charset=utf-8', '.js': 'text/javascript; charset=utf-8', '.css': 'text/css; charset=utf-8',
-  '.json': 'application/json', '.webmanifest': 'application/manifest+json', '.png': 'image/png', '.svg': 'image/svg+xml',
-  '.woff2': 'font/woff2', '.woff': 'font/woff', '.ttf': 'font/ttf',
+  '.html': 'text/html; charset=utf-8',
+  '.js': 'text/javascript; charset=utf-8',
+  '.css': 'text/css; charset=utf-8',
+  '.json': 'application/json',
+  '.webmanifest': 'application/manifest+json',
+  '.png': 'image/png',
+  '.svg': 'image/svg+xml',
+  '.woff2': 'font/woff2',
+  '.woff': 'font/woff',
+  '.ttf': 'font/ttf',
 };
 
 /** A static server of a private copy of the build at /app/; `stop()` closes it and every connection. */
@@ -41,7 +48,10 @@ async function serveCopy(): Promise<{ dir: string; base: string; stop: () => Pro
       if (path.endsWith('/')) path += 'index.html';
       const file = normalize(join(dir, path));
       if (!file.startsWith(dir) || !(await stat(file)).isFile()) throw new Error('missing');
-      res.writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream', 'cache-control': 'no-store' });
+      res.writeHead(200, {
+        'content-type': TYPES[extname(file)] ?? 'application/octet-stream',
+        'cache-control': 'no-store',
+      });
       res.end(await readFile(file));
     } catch {
       res.writeHead(404);
@@ -64,7 +74,9 @@ async function serveCopy(): Promise<{ dir: string; base: string; stop: () => Pro
 /** Wait until the service worker controls the page (it activates only after precaching everything). */
 async function waitForServiceWorker(page: Page): Promise<void> {
   await page.evaluate(() => navigator.serviceWorker.ready.then(() => undefined));
-  await expect.poll(() => page.evaluate(() => navigator.serviceWorker.controller !== null), { timeout: 60000 }).toBe(true);
+  await expect
+    .poll(() => page.evaluate(() => navigator.serviceWorker.controller !== null), { timeout: 60000 })
+    .toBe(true);
 }
 
 // A readout each scene computes (contract ids), to know the scene really works.
@@ -76,7 +88,10 @@ const SCENES: [string, string][] = [
   ['#/area-light', 'reference'],
 ];
 
-test('after one visit to #/, every scene opens and works with the server stopped', async ({ page, context }) => {
+test('after one visit to #/, every scene opens and works with the server stopped', async ({
+  page,
+  context,
+}) => {
   test.setTimeout(360_000);
   const srv = await serveCopy();
   try {
@@ -86,14 +101,22 @@ test('after one visit to #/, every scene opens and works with the server stopped
     // the web app manifest is linked once the worker registers (not in index.html: issue 15), and is served
     const manifest = await page.evaluate(async () => {
       const href = document.querySelector<HTMLLinkElement>('link[rel="manifest"]')?.href;
-      return href ? ((await (await fetch(href)).json()) as { name?: string }).name ?? null : null;
+      return href ? (((await (await fetch(href)).json()) as { name?: string }).name ?? null) : null;
     });
     expect(manifest).toBe('Render Math Lab');
     await srv.stop();
     // the server is gone
-    expect(await fetch(srv.base).then(() => 'reached', () => 'failed')).toBe('failed');
+    expect(
+      await fetch(srv.base).then(
+        () => 'reached',
+        () => 'failed',
+      ),
+    ).toBe('failed');
 
-    for (const [hash, id] of [...SCENES, ['#/guide', ''], ['#/practice/q3?seed=17', '']] as [string, string][]) {
+    for (const [hash, id] of [...SCENES, ['#/guide', ''], ['#/practice/q3?seed=17', '']] as [
+      string,
+      string,
+    ][]) {
       const p = await context.newPage();
       const errors: string[] = [];
       p.on('console', (m) => m.type() === 'error' && errors.push(m.text()));
@@ -101,7 +124,10 @@ test('after one visit to #/, every scene opens and works with the server stopped
       await p.goto(`${srv.base}${hash}`);
       await expect(p.locator('main#main'), `${hash} offline`).toBeVisible({ timeout: 60000 });
       await expect(p.locator('.loading'), `${hash} offline`).toHaveCount(0, { timeout: 60000 });
-      if (id) await expect(p.getByTestId(id).first(), `${hash} offline`).toHaveAttribute('data-value', /^-?\d/, { timeout: 60000 });
+      if (id)
+        await expect(p.getByTestId(id).first(), `${hash} offline`).toHaveAttribute('data-value', /^-?\d/, {
+          timeout: 60000,
+        });
       else await expect(p.getByRole('heading', { level: 1 }).first()).toBeVisible();
       // bring every lazy view (plots, 3D, formulas) on screen so their chunks load
       await settleLazyViews(p);
@@ -127,7 +153,10 @@ test('a new build shows the "updated, reload" notice, and Reload switches to it 
     // "Deploy" a rebuild: a changed index.html, and the service worker of that build, whose
     // precache manifest carries index.html's new revision (what `npm run build` writes).
     const marker = `rebuilt-${Date.now()}`;
-    const html = readFileSync(join(srv.dir, 'index.html'), 'utf8').replace('</head>', `<meta name="rml-build" content="${marker}"></head>`);
+    const html = readFileSync(join(srv.dir, 'index.html'), 'utf8').replace(
+      '</head>',
+      `<meta name="rml-build" content="${marker}"></head>`,
+    );
     writeFileSync(join(srv.dir, 'index.html'), html);
     const swPath = join(srv.dir, 'sw.js');
     const sw = readFileSync(swPath, 'utf8');
@@ -149,9 +178,13 @@ test('a new build shows the "updated, reload" notice, and Reload switches to it 
     await expect(other.getByTestId('t-hit').first()).toHaveAttribute('data-value', /.+/);
     expect(await other.locator('meta[name="rml-build"]').count()).toBe(0);
     await notice.getByRole('button', { name: 'Reload' }).click();
-    await expect(page.locator('meta[name="rml-build"]')).toHaveAttribute('content', marker, { timeout: 60000 });
+    await expect(page.locator('meta[name="rml-build"]')).toHaveAttribute('content', marker, {
+      timeout: 60000,
+    });
     // the other tab switched whole to the new build too, keeping its state (it lives in the URL)
-    await expect(other.locator('meta[name="rml-build"]')).toHaveAttribute('content', marker, { timeout: 60000 });
+    await expect(other.locator('meta[name="rml-build"]')).toHaveAttribute('content', marker, {
+      timeout: 60000,
+    });
     await expect(other).toHaveURL(/#\/ray-sphere\?r=2/);
     await expect(other.getByTestId('t-hit').first()).toHaveAttribute('data-value', /.+/);
     await other.close();

@@ -26,7 +26,8 @@ async function openVariant(page: Page, q: QuestionId, seed: number, extra = ''):
   await page.evaluate(() => {
     const w = window as unknown as { __verdicts: unknown[]; __listening?: boolean };
     w.__verdicts = [];
-    if (!w.__listening) window.addEventListener('rml:practice-verdict', (e) => w.__verdicts.push((e as CustomEvent).detail));
+    if (!w.__listening)
+      window.addEventListener('rml:practice-verdict', (e) => w.__verdicts.push((e as CustomEvent).detail));
     w.__listening = true;
   });
   return questionInfo(q).generate(seed);
@@ -35,21 +36,43 @@ async function openVariant(page: Page, q: QuestionId, seed: number, extra = ''):
 async function fillAndCheck(page: Page, entries: [string, string][]): Promise<void> {
   for (const [name, text] of entries) await page.getByTestId(`answer-${name}`).fill(text);
   await page.getByRole('button', { name: 'Check', exact: true }).click();
-  for (const [name] of entries) await expect(page.getByTestId(`verdict-${name}`)).toHaveAttribute('data-value', /.+/);
+  for (const [name] of entries)
+    await expect(page.getByTestId(`verdict-${name}`)).toHaveAttribute('data-value', /.+/);
 }
 
 for (const q of QUESTIONS) {
-  test(`${q.id}: right answers for several seeds are correct, and each verdict is announced`, async ({ page }) => {
+  test(`${q.id}: right answers for several seeds are correct, and each verdict is announced`, async ({
+    page,
+  }) => {
     for (const seed of [3, 41, 1234]) {
       const v = await openVariant(page, q.id, seed);
-      for (const g of v.givens) await expect(page.getByTestId(`given-${g.name}`)).toHaveAttribute('data-value', g.value);
+      for (const g of v.givens)
+        await expect(page.getByTestId(`given-${g.name}`)).toHaveAttribute('data-value', g.value);
       const answers = allAnswers(v);
-      await fillAndCheck(page, answers.map((a) => [a.name, studentText(a)]));
-      for (const a of answers) await expect(page.getByTestId(`verdict-${a.name}`), `${q.id} seed ${seed} ${a.name}`).toHaveAttribute('data-value', 'correct');
-      const events = await page.evaluate(() => (window as unknown as { __verdicts: { question: string; seed: number; name: string; verdict: string }[] }).__verdicts);
+      await fillAndCheck(
+        page,
+        answers.map((a) => [a.name, studentText(a)]),
+      );
+      for (const a of answers)
+        await expect(page.getByTestId(`verdict-${a.name}`), `${q.id} seed ${seed} ${a.name}`).toHaveAttribute(
+          'data-value',
+          'correct',
+        );
+      const events = await page.evaluate(
+        () =>
+          (
+            window as unknown as {
+              __verdicts: { question: string; seed: number; name: string; verdict: string }[];
+            }
+          ).__verdicts,
+      );
       expect(events.map((e) => e.name).sort()).toEqual(answers.map((a) => a.name).sort());
-      expect(events.every((e) => e.question === q.id && e.seed === seed && e.verdict === 'correct')).toBe(true);
-      await expect(page.getByTestId('practice-summary')).toContainText(`${answers.length} of ${answers.length} correct`);
+      expect(events.every((e) => e.question === q.id && e.seed === seed && e.verdict === 'correct')).toBe(
+        true,
+      );
+      await expect(page.getByTestId('practice-summary')).toContainText(
+        `${answers.length} of ${answers.length} correct`,
+      );
     }
   });
 
@@ -71,16 +94,22 @@ for (const q of QUESTIONS) {
         }
         await fillAndCheck(page, entries);
         for (const [name, w] of want) {
-          await expect(page.getByTestId(`verdict-${name}`), `${q.id} seed ${seed} ${name}`).toHaveAttribute('data-value', w);
+          await expect(page.getByTestId(`verdict-${name}`), `${q.id} seed ${seed} ${name}`).toHaveAttribute(
+            'data-value',
+            w,
+          );
           ids.add(w);
         }
-        await expect(page.getByTestId(`verdict-${entries[0]![0]}`)).not.toHaveText(/^\s*$/);
+        await expect(page.getByTestId(`verdict-${entries[0][0]}`)).not.toHaveText(/^\s*$/);
       }
       for (const a of allAnswers(v)) {
         if (a.kind !== 'choice') continue;
         for (const m of a.mistakes) {
           await fillAndCheck(page, [[a.name, m.value]]);
-          await expect(page.getByTestId(`verdict-${a.name}`)).toHaveAttribute('data-value', `mistake:${m.id}`);
+          await expect(page.getByTestId(`verdict-${a.name}`)).toHaveAttribute(
+            'data-value',
+            `mistake:${m.id}`,
+          );
           ids.add(m.id);
         }
       }
@@ -89,7 +118,9 @@ for (const q of QUESTIONS) {
   });
 }
 
-test('q1: formula mistakes (inverted Jacobian, lost lower limit, lost 1/a) and equivalent forms', async ({ page }) => {
+test('q1: formula mistakes (inverted Jacobian, lost lower limit, lost 1/a) and equivalent forms', async ({
+  page,
+}) => {
   // find a seed with m = 1 and a ≠ 1 among the first few
   let seed = 0;
   while (!(q1Params(seed).m === 1 && q1Params(seed).a.p !== q1Params(seed).a.q)) seed++;
@@ -105,12 +136,18 @@ test('q1: formula mistakes (inverted Jacobian, lost lower limit, lost 1/a) and e
     ['theta-of-xi', 'acos(1 - 2*xi)'],
     ['phi-of-xi', `ln(1 + ${E}*ξ₂)`],
   ]);
-  await expect(page.getByTestId('verdict-p-theta')).toHaveAttribute('data-value', 'mistake:inverted-jacobian');
+  await expect(page.getByTestId('verdict-p-theta')).toHaveAttribute(
+    'data-value',
+    'mistake:inverted-jacobian',
+  );
   await expect(page.getByTestId('verdict-p-phi')).toHaveAttribute('data-value', 'mistake:missing-1-over-a');
   await expect(page.getByTestId('verdict-cdf-theta')).toHaveAttribute('data-value', 'mistake:no-lower-limit');
   await expect(page.getByTestId('verdict-cdf-phi')).toHaveAttribute('data-value', 'mistake:no-lower-limit');
   await expect(page.getByTestId('verdict-theta-of-xi')).toHaveAttribute('data-value', 'mistake:missing-half');
-  await expect(page.getByTestId('verdict-phi-of-xi')).toHaveAttribute('data-value', 'mistake:missing-1-over-a');
+  await expect(page.getByTestId('verdict-phi-of-xi')).toHaveAttribute(
+    'data-value',
+    'mistake:missing-1-over-a',
+  );
   // equivalent forms of the right answers
   await fillAndCheck(page, [
     ['p-theta', '2 sin(theta) cos(theta)'.replace(' sin', '*sin').replace(') cos', ')*cos')],
@@ -118,7 +155,8 @@ test('q1: formula mistakes (inverted Jacobian, lost lower limit, lost 1/a) and e
     ['theta-of-xi', 'asin(sqrt(ξ))'],
     ['phi-of-xi', `log(1 + ${E}*(1 - xi))/${a}`],
   ]);
-  for (const n of ['p-theta', 'cdf-theta', 'theta-of-xi', 'phi-of-xi']) await expect(page.getByTestId(`verdict-${n}`)).toHaveAttribute('data-value', 'correct');
+  for (const n of ['p-theta', 'cdf-theta', 'theta-of-xi', 'phi-of-xi'])
+    await expect(page.getByTestId(`verdict-${n}`)).toHaveAttribute('data-value', 'correct');
   await expect(page.getByTestId('verdict-phi-of-xi')).toContainText('same distribution');
 });
 
@@ -126,10 +164,11 @@ test('q3: the flipped convention v′ = 1 − v is accepted and said so', async 
   let seed = 1;
   let v = questionInfo('q3').generate(seed);
   const flipOf = (x: Variant) => allAnswers(x).find((a) => a.name === 'bilinear')!;
-  while (!(flipOf(v).kind === 'number' && (flipOf(v) as { alternatives: unknown[] }).alternatives.length > 0)) v = questionInfo('q3').generate(++seed);
+  while (!(flipOf(v).kind === 'number' && (flipOf(v) as { alternatives: unknown[] }).alternatives.length > 0))
+    v = questionInfo('q3').generate(++seed);
   await openVariant(page, 'q3', seed);
   const b = flipOf(v) as Extract<AnswerSpec, { kind: 'number' }>;
-  await fillAndCheck(page, [['bilinear', String(b.alternatives[0]!.value)]]);
+  await fillAndCheck(page, [['bilinear', String(b.alternatives[0].value)]]);
   await expect(page.getByTestId('verdict-bilinear')).toHaveAttribute('data-value', 'correct');
   await expect(page.getByTestId('verdict-bilinear')).toContainText('1 − v');
 });
@@ -157,8 +196,14 @@ test('garbage gives invalid with a message, never a crash', async ({ page }) => 
   await expect(page.getByTestId('verdict-a')).toHaveAttribute('data-value', 'invalid');
 });
 
-test('the worked solution shows the variant’s own numbers, the expected answers and the scene link', async ({ page }) => {
-  for (const [q, seed] of [['q5', 12], ['q4', 8], ['q6', 3]] as const) {
+test('the worked solution shows the variant’s own numbers, the expected answers and the scene link', async ({
+  page,
+}) => {
+  for (const [q, seed] of [
+    ['q5', 12],
+    ['q4', 8],
+    ['q6', 3],
+  ] as const) {
     const v = await openVariant(page, q, seed);
     await expect(page.getByTestId('solution')).toHaveCount(0);
     await page.getByTestId('show-solution').click();
@@ -167,9 +212,15 @@ test('the worked solution shows the variant’s own numbers, the expected answer
     await expect(page.locator('.practice-solution .math-pending')).toHaveCount(0);
     for (const a of allAnswers(v)) {
       if (a.kind !== 'number') continue;
-      await expect(page.getByTestId(`expected-${a.name}`)).toHaveAttribute('data-value', a.expected === null ? 'none' : String(a.expected));
+      await expect(page.getByTestId(`expected-${a.name}`)).toHaveAttribute(
+        'data-value',
+        a.expected === null ? 'none' : String(a.expected),
+      );
     }
-    const key = allAnswers(v).find((a) => a.kind === 'number' && a.expected !== null) as Extract<AnswerSpec, { kind: 'number' }>;
+    const key = allAnswers(v).find((a) => a.kind === 'number' && a.expected !== null) as Extract<
+      AnswerSpec,
+      { kind: 'number' }
+    >;
     await expect(sol).toContainText(tn(key.expected!));
     const href = await page.getByTestId('scene-link').getAttribute('href');
     expect(href).toBe(v.sceneHref);
@@ -178,13 +229,21 @@ test('the worked solution shows the variant’s own numbers, the expected answer
   const v = await openVariant(page, 'q5', 12);
   await page.getByTestId('show-solution').click();
   await page.getByTestId('scene-link').click();
-  const disc = allAnswers(v).find((a) => a.name === 'discriminant') as Extract<AnswerSpec, { kind: 'number' }>;
-  await expect(page.getByTestId('discriminant')).toHaveAttribute('data-value', String(disc.expected), { timeout: 30_000 });
+  const disc = allAnswers(v).find((a) => a.name === 'discriminant') as Extract<
+    AnswerSpec,
+    { kind: 'number' }
+  >;
+  await expect(page.getByTestId('discriminant')).toHaveAttribute('data-value', String(disc.expected), {
+    timeout: 30_000,
+  });
 });
 
 test('progress is kept per question and can be reset; a bad seed is named and replaced', async ({ page }) => {
   const v = await openVariant(page, 'q4', 21);
-  await fillAndCheck(page, allAnswers(v).map((a) => [a.name, studentText(a)]));
+  await fillAndCheck(
+    page,
+    allAnswers(v).map((a) => [a.name, studentText(a)]),
+  );
   await page.goto('./#/');
   await page.getByTestId('practice-link').click();
   await expect(page.getByTestId('progress-q4')).toHaveAttribute('data-correct', '1');
@@ -200,16 +259,21 @@ test('progress is kept per question and can be reset; a bad seed is named and re
 });
 
 for (const theme of ['light', 'dark'] as const)
-test(`no serious or critical axe violations on a checked question (${theme} theme)`, async ({ page }) => {
-  test.setTimeout(180_000); // an axe scan on a busy 2-core machine
-  const v = await openVariant(page, 'q3', 17, `&theme=${theme}`);
-  await expect(page.locator('html')).toHaveAttribute('data-theme', theme);
-  await fillAndCheck(page, allAnswers(v).map((a, i) => [a.name, i % 2 ? studentText(a) : '1']));
-  await expect(page.locator('.math-pending')).toHaveCount(0);
-  const r = await new AxeBuilder({ page }).analyze();
-  const bad = r.violations.filter((x) => x.impact === 'serious' || x.impact === 'critical').map((x) => `${x.id}: ${x.nodes.map((n) => n.target.join(' ')).join(', ')}`);
-  expect(bad).toEqual([]);
-});
+  test(`no serious or critical axe violations on a checked question (${theme} theme)`, async ({ page }) => {
+    test.setTimeout(180_000); // an axe scan on a busy 2-core machine
+    const v = await openVariant(page, 'q3', 17, `&theme=${theme}`);
+    await expect(page.locator('html')).toHaveAttribute('data-theme', theme);
+    await fillAndCheck(
+      page,
+      allAnswers(v).map((a, i) => [a.name, i % 2 ? studentText(a) : '1']),
+    );
+    await expect(page.locator('.math-pending')).toHaveCount(0);
+    const r = await new AxeBuilder({ page }).analyze();
+    const bad = r.violations
+      .filter((x) => x.impact === 'serious' || x.impact === 'critical')
+      .map((x) => `${x.id}: ${x.nodes.map((n) => n.target.join(' ')).join(', ')}`);
+    expect(bad).toEqual([]);
+  });
 
 test('the worksheet prints one question per page, then the answer key', async ({ page }) => {
   await page.goto('./#/practice/sheet?seed=5&q=1,3,5&count=1');
@@ -226,7 +290,9 @@ test('the worksheet prints one question per page, then the answer key', async ({
   expect((pdf2.toString('latin1').match(/\/Type\s*\/Page(?![s\w])/g) ?? []).length).toBe(5);
 });
 
-test('each question’s scene link opens its scene in the variant’s configuration (no parameter notices; same numbers)', async ({ page }) => {
+test('each question’s scene link opens its scene in the variant’s configuration (no parameter notices; same numbers)', async ({
+  page,
+}) => {
   test.setTimeout(180_000);
   for (const q of QUESTIONS) {
     const v = q.generate(31);
@@ -234,15 +300,22 @@ test('each question’s scene link opens its scene in the variant’s configurat
     await page.waitForSelector('main#main');
     await expect(page.locator('.loading')).toHaveCount(0, { timeout: 60_000 });
     await expect(page.getByTestId('param-notice'), `${q.id}: ${v.sceneHref}`).toHaveCount(0);
-    const same: Record<string, string[]> = { q3: ['nearest', 'bilinear', 'sphere-u', 'sphere-v', 'sphere-bilinear'], q4: ['exact'], q5: ['a', 'b', 'c', 'discriminant', 't-hit'] };
+    const same: Record<string, string[]> = {
+      q3: ['nearest', 'bilinear', 'sphere-u', 'sphere-v', 'sphere-bilinear'],
+      q4: ['exact'],
+      q5: ['a', 'b', 'c', 'discriminant', 't-hit'],
+    };
     for (const name of same[q.id] ?? []) {
       const a = allAnswers(v).find((x) => x.name === name) as Extract<AnswerSpec, { kind: 'number' }>;
       let got = NaN;
       await expect
-        .poll(async () => {
-          got = Number(await page.getByTestId(name).first().getAttribute('data-value'));
-          return Math.abs(got - a.expected!) <= 1e-12 * Math.max(1, Math.abs(a.expected!));
-        }, { timeout: 30_000, message: `${q.id} ${name}` })
+        .poll(
+          async () => {
+            got = Number(await page.getByTestId(name).first().getAttribute('data-value'));
+            return Math.abs(got - a.expected!) <= 1e-12 * Math.max(1, Math.abs(a.expected!));
+          },
+          { timeout: 30_000, message: `${q.id} ${name}` },
+        )
         .toBe(true);
     }
   }

@@ -1,6 +1,14 @@
 // #/ray-sphere, exam first (issue 11) and the sweep animation on the shared timeline (issue 12).
 // Expected values are computed here, by the scene's own pure model or by plain arithmetic.
-import { test, expect, openScene, readout, readoutNumber, waitForReadout, countAnimationFrames } from './fixtures';
+import {
+  test,
+  expect,
+  openScene,
+  readout,
+  readoutNumber,
+  waitForReadout,
+  countAnimationFrames,
+} from './fixtures';
 import { checkInputs, computeModel, makeSweep, paramsAt, sweepAt } from '../../src/scenes/ray-sphere/model';
 import type { RaySphereParams } from '../../src/scenes/ray-sphere/params';
 
@@ -8,13 +16,37 @@ type V = [number, number, number];
 const P = (o: V, d: V, extra = '') => `#/ray-sphere?o=${o.join(',')}&d=${d.join(',')}&c=0,0,0&r=1${extra}`;
 
 /** The scene's model at timeline position t, computed in the test. */
-function modelAt(p: { o: V; d: V; c?: V; r?: number; sweep?: 'offset' | 'rotate'; extent?: number; method?: 'stable' | 'naive' }, t: number) {
-  const params: RaySphereParams = { o: p.o, d: p.d, c: p.c ?? [0, 0, 0], r: p.r ?? 1, method: p.method ?? 'stable', sweep: p.sweep ?? 'offset', extent: p.extent ?? 2.5, t, play: false };
+function modelAt(
+  p: {
+    o: V;
+    d: V;
+    c?: V;
+    r?: number;
+    sweep?: 'offset' | 'rotate';
+    extent?: number;
+    method?: 'stable' | 'naive';
+  },
+  t: number,
+) {
+  const params: RaySphereParams = {
+    o: p.o,
+    d: p.d,
+    c: p.c ?? [0, 0, 0],
+    r: p.r ?? 1,
+    method: p.method ?? 'stable',
+    sweep: p.sweep ?? 'offset',
+    extent: p.extent ?? 2.5,
+    t,
+    play: false,
+  };
   const sw = makeSweep(checkInputs(params), params.sweep as 'offset' | 'rotate', params.extent);
   return { m: computeModel(paramsAt(params, sw, t)), s: sweepAt(sw, t) };
 }
 
-async function expectReadoutsAt(page: import('@playwright/test').Page, want: ReturnType<typeof modelAt>['m']) {
+async function expectReadoutsAt(
+  page: import('@playwright/test').Page,
+  want: ReturnType<typeof modelAt>['m'],
+) {
   const r = want.chosen!;
   expect(await readoutNumber(page, 'a')).toBe(r.a);
   expect(await readoutNumber(page, 'b')).toBe(r.b);
@@ -25,7 +57,9 @@ async function expectReadoutsAt(page: import('@playwright/test').Page, want: Ret
 }
 
 test.describe('exam first', () => {
-  test('question, then the figure, the derivation with live numbers, the live answer, then explore further', async ({ page }) => {
+  test('question, then the figure, the derivation with live numbers, the live answer, then explore further', async ({
+    page,
+  }) => {
     const o: V = [-3, 0.3, 0.2];
     await openScene(page, P(o, [1, 0, 0]));
     const part = page.getByTestId('part-5');
@@ -51,13 +85,25 @@ test.describe('exam first', () => {
     await expect(page.getByTestId('q5-keynote')).toContainText('Ray Tracing in One Weekend');
     // page order
     const y = async (id: string) => (await page.getByTestId(id).boundingBox())!.y;
-    const order = [await y('part-5'), await y('cross-section'), await y('derivation'), await y('live-answer'), await y('explore-further')];
+    const order = [
+      await y('part-5'),
+      await y('cross-section'),
+      await y('derivation'),
+      await y('live-answer'),
+      await y('explore-further'),
+    ];
     expect([...order].sort((a, b) => a - b)).toEqual(order);
   });
 
-  test('Δ beside a, b, c: b² − 4ac of the shown numbers, and which method computed which', async ({ page }) => {
+  test('Δ beside a, b, c: b² − 4ac of the shown numbers, and which method computed which', async ({
+    page,
+  }) => {
     await openScene(page, P([-3, -1.2, 0.6], [1, 0.4, -0.15]));
-    const [a, b, c] = [await readoutNumber(page, 'a'), await readoutNumber(page, 'b'), await readoutNumber(page, 'c')];
+    const [a, b, c] = [
+      await readoutNumber(page, 'a'),
+      await readoutNumber(page, 'b'),
+      await readoutNumber(page, 'c'),
+    ];
     expect(await readoutNumber(page, 'disc-abc')).toBe(b * b - 4 * a * c);
     await expect(page.getByTestId('disc-method-note')).toContainText('robust form');
     // the textbook method: Δ is exactly b² − 4ac of the numbers shown, and there is no second readout
@@ -73,7 +119,9 @@ test.describe('exam first', () => {
     await expect(page.getByTestId('disc-method-note')).toContainText('differs from b² − 4ac');
   });
 
-  test('the centre is C on the figure; the URL parameter c still sets it and the c readout stays the constant term', async ({ page }) => {
+  test('the centre is C on the figure; the URL parameter c still sets it and the c readout stays the constant term', async ({
+    page,
+  }) => {
     await openScene(page, '#/ray-sphere?o=-3,0,0&d=1,0,0&c=0,0.5,0&r=1');
     await expect(page.getByTestId('handle-c')).toHaveAttribute('aria-label', /sphere centre C/);
     await expect(page.getByTestId('cross-section').locator('text', { hasText: /^C$/ })).toHaveCount(1);
@@ -82,13 +130,17 @@ test.describe('exam first', () => {
 });
 
 test.describe('sweep animation on the shared timeline', () => {
-  test('playing, it stops requesting frames while its figure is off screen and goes on when it is back', async ({ page }) => {
+  test('playing, it stops requesting frames while its figure is off screen and goes on when it is back', async ({
+    page,
+  }) => {
     await countAnimationFrames(page);
     await openScene(page, P([-3, 0.3, 0.2], [1, 0, 0], '&t=0'));
     const tl = page.getByTestId('timeline');
     await page.locator('.timeline-loop input').check();
     await page.getByTestId('timeline-play').click();
-    await expect.poll(async () => Number(await tl.getAttribute('data-t')), { timeout: 20_000 }).toBeGreaterThan(0.02);
+    await expect
+      .poll(async () => Number(await tl.getAttribute('data-t')), { timeout: 20_000 })
+      .toBeGreaterThan(0.02);
     // the figure (in a section that mounts after the timeline) leaves the screen
     await page.evaluate(() => window.scrollTo(0, document.documentElement.scrollHeight));
     await expect(page.locator('.rs-stage')).not.toBeInViewport();
@@ -109,14 +161,18 @@ test.describe('sweep animation on the shared timeline', () => {
     await expect.poll(async () => Number(await tl.getAttribute('data-t')), { timeout: 20_000 }).not.toBe(t0);
   });
 
-  test('play, pause: readouts equal the model at the paused t; the link restores them; step advances by 1/120', async ({ page }) => {
+  test('play, pause: readouts equal the model at the paused t; the link restores them; step advances by 1/120', async ({
+    page,
+  }) => {
     const cfg = { o: [-3, 0.3, 0.2] as V, d: [1, 0, 0] as V, extent: 2 };
     await openScene(page, P(cfg.o, cfg.d, '&extent=2'));
     const tl = page.getByTestId('timeline');
     await expect(tl).toHaveAttribute('data-t', '0.5');
     await expectReadoutsAt(page, modelAt(cfg, 0.5).m);
     await page.getByTestId('timeline-play').click();
-    await expect.poll(async () => Number(await tl.getAttribute('data-t')), { timeout: 20_000 }).toBeGreaterThan(0.56);
+    await expect
+      .poll(async () => Number(await tl.getAttribute('data-t')), { timeout: 20_000 })
+      .toBeGreaterThan(0.56);
     await page.getByTestId('timeline-play').click();
     await expect(tl).toHaveAttribute('data-playing', '0');
     const t = Number(await tl.getAttribute('data-t'));
@@ -133,12 +189,16 @@ test.describe('sweep animation on the shared timeline', () => {
     // paused within the last step)
     await page.getByTestId('timeline-step').click();
     const stepped = t + 1 / 120 > 1 ? 0 : t + 1 / 120;
-    await expect.poll(async () => Number(await page.getByTestId('timeline').getAttribute('data-t'))).toBeCloseTo(stepped, 12);
+    await expect
+      .poll(async () => Number(await page.getByTestId('timeline').getAttribute('data-t')))
+      .toBeCloseTo(stepped, 12);
     const t2 = Number(await page.getByTestId('timeline').getAttribute('data-t'));
     await expectReadoutsAt(page, modelAt(cfg, t2).m);
   });
 
-  test('the case changes along the sweep: miss at the ends, two hits in the middle, Δ crossing zero twice', async ({ page }) => {
+  test('the case changes along the sweep: miss at the ends, two hits in the middle, Δ crossing zero twice', async ({
+    page,
+  }) => {
     const cfg = { o: [-3, 0.3, 0.2] as V, d: [1, 0, 0] as V, extent: 2 };
     for (const [t, name] of [
       [0, 'miss'],
@@ -157,14 +217,18 @@ test.describe('sweep animation on the shared timeline', () => {
     expect(want.s.o).toEqual(cfg.o);
   });
 
-  test('far preset: the textbook Δ has the wrong sign across the sweep, the robust one crosses zero only at tangency', async ({ page }) => {
+  test('far preset: the textbook Δ has the wrong sign across the sweep, the robust one crosses zero only at tangency', async ({
+    page,
+  }) => {
     await openScene(page, '#/ray-sphere');
     await page.getByTestId('preset-far').click();
     const wrong = page.getByTestId('sweep-naive-wrong');
     await expect(wrong).toBeVisible();
     expect(Number(await wrong.getAttribute('data-value'))).toBeGreaterThan(5);
     // the wrong-sign dots are one path; it says how many it draws (near-tangent ones included, which the note leaves out)
-    expect(Number(await page.getByTestId('delta-plot').locator('.mp-naive.wrong').getAttribute('data-count'))).toBeGreaterThanOrEqual(Number(await wrong.getAttribute('data-value')));
+    expect(
+      Number(await page.getByTestId('delta-plot').locator('.mp-naive.wrong').getAttribute('data-count')),
+    ).toBeGreaterThanOrEqual(Number(await wrong.getAttribute('data-value')));
     await expect(page.getByTestId('delta-plot').locator('.mp-tangent-label')).toHaveCount(2);
   });
 
@@ -188,7 +252,9 @@ test.describe('sweep animation on the shared timeline', () => {
     };
     await expect.poll(quiet, { timeout: 30_000, intervals: [0] }).toBe(0);
     await page.getByTestId('timeline-play').click();
-    await expect.poll(async () => Number(await page.getByTestId('timeline').getAttribute('data-t'))).not.toBe(0.5);
+    await expect
+      .poll(async () => Number(await page.getByTestId('timeline').getAttribute('data-t')))
+      .not.toBe(0.5);
     expect(await quiet()).toBeGreaterThan(5);
     await page.getByTestId('timeline-play').click();
     await expect.poll(quiet, { timeout: 30_000, intervals: [0] }).toBe(0);
@@ -200,7 +266,9 @@ test.describe('layout', () => {
     [1920, 1080],
     [1280, 720],
   ] as const) {
-    test(`present=1 at ${w}×${h}: plot titles and labels inside their plots; the figure is on the first screen`, async ({ page }) => {
+    test(`present=1 at ${w}×${h}: plot titles and labels inside their plots; the figure is on the first screen`, async ({
+      page,
+    }) => {
       await page.setViewportSize({ width: w, height: h });
       await openScene(page, '#/ray-sphere?present=1');
       // at least 150 px of the figure on the first screen
@@ -239,9 +307,15 @@ test.describe('layout', () => {
     await openScene(page, '#/ray-sphere');
     const sizes = await page.evaluate(() => {
       const out: { cls: string; px: number }[] = [];
-      for (const svg of document.querySelectorAll<SVGSVGElement>('[data-testid=cross-section], [data-testid=g-plot], [data-testid=delta-plot]')) {
+      for (const svg of document.querySelectorAll<SVGSVGElement>(
+        '[data-testid=cross-section], [data-testid=g-plot], [data-testid=delta-plot]',
+      )) {
         const scale = svg.getBoundingClientRect().width / svg.viewBox.baseVal.width;
-        for (const t of svg.querySelectorAll('text')) out.push({ cls: `${svg.dataset.testid} ${t.getAttribute('class')}`, px: parseFloat(getComputedStyle(t).fontSize) * scale });
+        for (const t of svg.querySelectorAll('text'))
+          out.push({
+            cls: `${svg.dataset.testid} ${t.getAttribute('class')}`,
+            px: parseFloat(getComputedStyle(t).fontSize) * scale,
+          });
       }
       return out;
     });

@@ -26,9 +26,10 @@ function big(x: number): BigNumber {
 
 /** Exact roots of |o + t d − c|² = r² (inputs as exact doubles), rounded to doubles at the end. */
 function exact(o: V, d: V, c: V, r: number) {
-  const f = o.map((x, i) => big(x).minus(big(c[i]!)) as BigNumber);
+  const f = o.map((x, i) => big(x).minus(big(c[i])) as BigNumber);
   const D = d.map(big);
-  const dot = (x: BigNumber[], y: BigNumber[]) => x[0]!.times(y[0]!).plus(x[1]!.times(y[1]!)).plus(x[2]!.times(y[2]!)) as BigNumber;
+  const dot = (x: BigNumber[], y: BigNumber[]) =>
+    x[0].times(y[0]).plus(x[1].times(y[1])).plus(x[2].times(y[2])) as BigNumber;
   const a = dot(D, D);
   const beta = dot(f, D);
   const cc = dot(f, f).minus(big(r).times(big(r))) as BigNumber;
@@ -40,10 +41,13 @@ function exact(o: V, d: V, c: V, r: number) {
   return { sign: q.isZero() ? 0 : 1, t0, t1, hit: t0 >= 0 ? t0 : t1 >= 0 ? t1 : null };
 }
 
-const q = (o: V, d: V, c: V, r: number, method = 'stable') => `#/ray-sphere?o=${o.join(',')}&d=${d.join(',')}&c=${c.join(',')}&r=${r}&method=${method}`;
+const q = (o: V, d: V, c: V, r: number, method = 'stable') =>
+  `#/ray-sphere?o=${o.join(',')}&d=${d.join(',')}&c=${c.join(',')}&r=${r}&method=${method}`;
 
 function close(actual: number, expected: number, rel = 1e-13) {
-  expect(Math.abs(actual - expected), `${actual} vs ${expected}`).toBeLessThanOrEqual(rel * Math.abs(expected) + 1e-300);
+  expect(Math.abs(actual - expected), `${actual} vs ${expected}`).toBeLessThanOrEqual(
+    rel * Math.abs(expected) + 1e-300,
+  );
 }
 
 const CASES: { name: string; o: V; d: V; c: V; r: number }[] = [
@@ -63,10 +67,10 @@ test.describe('every case, by URL', () => {
         const ex = exact(k.o, k.d, k.c, k.r);
         expect(await readout(page, 'case')).toBe(k.name);
         // textbook coefficients
-        const f = k.o.map((x, i) => x - k.c[i]!);
+        const f = k.o.map((x, i) => x - k.c[i]);
         expect(await readoutNumber(page, 'a')).toBe(k.d[0] ** 2 + k.d[1] ** 2 + k.d[2] ** 2);
-        close(await readoutNumber(page, 'b'), 2 * (f[0]! * k.d[0] + f[1]! * k.d[1] + f[2]! * k.d[2]));
-        close(await readoutNumber(page, 'c'), f[0]! ** 2 + f[1]! ** 2 + f[2]! ** 2 - k.r * k.r);
+        close(await readoutNumber(page, 'b'), 2 * (f[0] * k.d[0] + f[1] * k.d[1] + f[2] * k.d[2]));
+        close(await readoutNumber(page, 'c'), f[0] ** 2 + f[1] ** 2 + f[2] ** 2 - k.r * k.r);
         const disc = await readoutNumber(page, 'discriminant');
         expect(Math.sign(disc)).toBe(ex.sign);
         if (ex.t0 === null) {
@@ -98,11 +102,27 @@ test.describe('precision presets: robust roots match high-precision references',
   const P: { id: string; o: V; d: V; c: V; r: number; textbookCase?: string }[] = [
     { id: 'far', o: [0, 0, 0], d: [1, 5e-9, 0], c: [1e8, 0, 0], r: 1, textbookCase: 'tangent' },
     { id: 'grazing', o: [-1e5, 0.99999, 0], d: [1, 0, 0], c: [0, 0, 0], r: 1 },
-    { id: 'ulp-past', o: [-5, 1.0000000000000002, 0], d: [1, 0, 0], c: [0, 0, 0], r: 1, textbookCase: 'tangent' },
-    { id: 'ulp-inside', o: [-5, 0.9999999999999999, 0], d: [1, 0, 0], c: [0, 0, 0], r: 1, textbookCase: 'tangent' },
+    {
+      id: 'ulp-past',
+      o: [-5, 1.0000000000000002, 0],
+      d: [1, 0, 0],
+      c: [0, 0, 0],
+      r: 1,
+      textbookCase: 'tangent',
+    },
+    {
+      id: 'ulp-inside',
+      o: [-5, 0.9999999999999999, 0],
+      d: [1, 0, 0],
+      c: [0, 0, 0],
+      r: 1,
+      textbookCase: 'tangent',
+    },
   ];
   for (const p of P) {
-    test(`${p.id}: robust readouts equal the exact roots to ~1 ulp; the textbook column is wrong`, async ({ page }) => {
+    test(`${p.id}: robust readouts equal the exact roots to ~1 ulp; the textbook column is wrong`, async ({
+      page,
+    }) => {
       await openScene(page, '#/ray-sphere');
       await page.getByTestId(`preset-${p.id}`).click();
       const ex = exact(p.o, p.d, p.c, p.r);
@@ -119,7 +139,8 @@ test.describe('precision presets: robust roots match high-precision references',
       }
       await expect(page.getByTestId('stable-case')).toHaveAttribute('data-value', wantCase);
       await expect(page.getByTestId('ref-case')).toHaveAttribute('data-value', wantCase);
-      if (p.textbookCase) await expect(page.getByTestId('naive-case')).toHaveAttribute('data-value', p.textbookCase);
+      if (p.textbookCase)
+        await expect(page.getByTestId('naive-case')).toHaveAttribute('data-value', p.textbookCase);
       else {
         // grazing: textbook case right but its t₀ is off by far more than the robust one's
         const tb = Number(await page.getByTestId('naive-t0').getAttribute('data-value'));
@@ -146,7 +167,9 @@ test.describe('precision presets: robust roots match high-precision references',
     await box.fill('2');
     await box.press('Enter');
     await expect(summary).toHaveAttribute('data-disagree', '0');
-    expect(await page.getByTestId('img-naive').getAttribute('data-hits')).toBe(await page.getByTestId('img-stable').getAttribute('data-hits'));
+    expect(await page.getByTestId('img-naive').getAttribute('data-hits')).toBe(
+      await page.getByTestId('img-stable').getAttribute('data-hits'),
+    );
   });
 });
 
@@ -228,10 +251,15 @@ test.describe('interaction', () => {
       w.__stop = true;
       return w.__frames;
     });
-    const gaps = frames.slice(1).map((f, i) => f - frames[i]!).sort((a, b) => a - b);
-    const median = gaps[gaps.length >> 1]!;
-    const p90 = gaps[Math.floor(gaps.length * 0.9)]!;
-    console.log(`drag: ${ms.toFixed(1)} ms per pointer move incl. Playwright round trip; frames: median ${median.toFixed(1)} ms, p90 ${p90.toFixed(1)} ms over ${gaps.length}`);
+    const gaps = frames
+      .slice(1)
+      .map((f, i) => f - frames[i])
+      .sort((a, b) => a - b);
+    const median = gaps[gaps.length >> 1];
+    const p90 = gaps[Math.floor(gaps.length * 0.9)];
+    console.log(
+      `drag: ${ms.toFixed(1)} ms per pointer move incl. Playwright round trip; frames: median ${median.toFixed(1)} ms, p90 ${p90.toFixed(1)} ms over ${gaps.length}`,
+    );
     await expect(page).toHaveURL(/o=-3,0\.[4-9]|o=-3,1/);
     expect(['miss', 'two-hits']).toContain(await readout(page, 'case'));
     // generous bound: the CI box is shared; on an idle laptop this is ~16 ms
@@ -265,7 +293,12 @@ test.describe('interaction', () => {
 
 test('axe finds no serious or critical violations (light, dark, present, far preset)', async ({ page }) => {
   test.setTimeout(240_000); // four full-page scans on a busy shared machine
-  for (const qs of ['theme=light', 'theme=dark', 'present=1&o=0,0,0&d=1,5e-9,0&c=100000000,0,0&r=1', 'd=0,0,0&r=-1']) {
+  for (const qs of [
+    'theme=light',
+    'theme=dark',
+    'present=1&o=0,0,0&d=1,5e-9,0&c=100000000,0,0&r=1',
+    'd=0,0,0&r=-1',
+  ]) {
     await openScene(page, `#/ray-sphere?${qs}`);
     await page.getByTestId('view-3d').scrollIntoViewIfNeeded();
     await expect(page.getByTestId('view-3d')).toHaveAttribute('data-status', /ready|no-webgl/);
@@ -275,6 +308,9 @@ test('axe finds no serious or critical violations (light, dark, present, far pre
     // what this scene renders.
     const results = await new AxeBuilder({ page }).exclude('.plot-canvas').analyze();
     const bad = results.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical');
-    expect(bad.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`), qs).toEqual([]);
+    expect(
+      bad.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`),
+      qs,
+    ).toEqual([]);
   }
 });

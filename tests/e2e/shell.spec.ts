@@ -15,8 +15,14 @@ test('home lists the six exam questions, each linking to its scene', async ({ pa
   await expect(cards).toHaveCount(6);
   for (let i = 1; i <= 6; i++) await expect(cards.nth(i - 1)).toContainText(`Q${i}`);
   // every built scene's card links to its route; none is a dead link
-  const hrefs = await page.locator('.question-card h2 a').evaluateAll((as) => as.map((a) => a.getAttribute('href')));
-  for (const h of hrefs) expect(ROUTES.some((r) => h!.startsWith(`#${r}`)), h!).toBe(true);
+  const hrefs = await page
+    .locator('.question-card h2 a')
+    .evaluateAll((as) => as.map((a) => a.getAttribute('href')));
+  for (const h of hrefs)
+    expect(
+      ROUTES.some((r) => h!.startsWith(`#${r}`)),
+      h!,
+    ).toBe(true);
 });
 
 test('#/ downloads no three.js, Plotly, mathjs, KaTeX or scene code', async ({ page }) => {
@@ -37,7 +43,9 @@ test('#/ downloads no three.js, Plotly, mathjs, KaTeX or scene code', async ({ p
   // workbox-window) and the worker itself (sw.js, which precaches the build off the page) load too.
   const names = js.map((u) => new URL(u).pathname.split('/').pop()!);
   const swFiles = /^(pwa-[\w-]+|workbox-window\.prod\.es5-[\w-]+|sw|workbox-[\w-]+)\.js$/;
-  for (const n of names) if (!swFiles.test(n)) expect(n, `unexpected script ${n} on #/`).toMatch(/^(index|rolldown-runtime)-[\w-]+\.js$/);
+  for (const n of names)
+    if (!swFiles.test(n))
+      expect(n, `unexpected script ${n} on #/`).toMatch(/^(index|rolldown-runtime)-[\w-]+\.js$/);
 });
 
 for (const route of ROUTES) {
@@ -45,7 +53,8 @@ for (const route of ROUTES) {
     const foreign: string[] = [];
     page.on('request', (r) => {
       const u = r.url();
-      if (!u.startsWith(new URL(baseURL!).origin) && !u.startsWith('data:') && !u.startsWith('blob:')) foreign.push(u);
+      if (!u.startsWith(new URL(baseURL!).origin) && !u.startsWith('data:') && !u.startsWith('blob:'))
+        foreign.push(u);
     });
     await openScene(page, `#${route}`);
     await expect(page.locator('main#main h1')).toBeVisible();
@@ -69,7 +78,15 @@ for (const route of ROUTES) {
     await page.waitForLoadState('networkidle');
     const results = await new AxeBuilder({ page }).exclude('.js-plotly-plot').analyze();
     const bad = results.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical');
-    expect(bad.map((v) => `${v.id}: ${v.nodes.slice(0, 5).map((n) => n.target.join(' ')).join(', ')}`)).toEqual([]);
+    expect(
+      bad.map(
+        (v) =>
+          `${v.id}: ${v.nodes
+            .slice(0, 5)
+            .map((n) => n.target.join(' '))
+            .join(', ')}`,
+      ),
+    ).toEqual([]);
   });
 
   test(`${route} with garbage parameters shows the notice naming them and still works`, async ({ page }) => {
@@ -108,7 +125,12 @@ test('an embedded scene posts its height to the host page', async ({ page, baseU
   );
   type Msg = { type: string; height: number };
   const lastHeight = () =>
-    page.evaluate(() => (window as unknown as { msgs: Msg[] }).msgs.filter((m) => m && m.type === 'render-math-lab:height').at(-1)?.height ?? 0);
+    page.evaluate(
+      () =>
+        (window as unknown as { msgs: Msg[] }).msgs
+          .filter((m) => m && m.type === 'render-math-lab:height')
+          .at(-1)?.height ?? 0,
+    );
   // the first message may come while the scene is still loading; the page posts again when its
   // height changes, so the last height reported grows to the loaded scene's (well over 300 px)
   await expect.poll(lastHeight, { timeout: 20000 }).toBeGreaterThan(300);
@@ -117,7 +139,10 @@ test('an embedded scene posts its height to the host page', async ({ page, baseU
   await expect(frame.getByTestId('copy-link')).toBeVisible();
   // (the page may still be growing: sections below the first screen mount in idle time; the
   // posted height is rounded up, scrollHeight to the nearest pixel)
-  const gap = async () => Math.abs((await lastHeight()) - (await page.frames()[1]!.evaluate(() => document.documentElement.scrollHeight)));
+  const gap = async () =>
+    Math.abs(
+      (await lastHeight()) - (await page.frames()[1].evaluate(() => document.documentElement.scrollHeight)),
+    );
   await expect.poll(gap, { timeout: 20000 }).toBeLessThanOrEqual(1);
 });
 
@@ -136,7 +161,7 @@ test('Copy link and Copy embed code produce URLs that restore the same state', a
 
   await page.getByTestId('copy-embed').click();
   const code = await page.getByTestId('share-text').inputValue();
-  const src = /src="([^"]+)"/.exec(code)![1]!.replace(/&amp;/g, '&');
+  const src = /src="([^"]+)"/.exec(code)![1].replace(/&amp;/g, '&');
   expect(src).toContain('embed=1');
   const embedded = await context.newPage();
   await embedded.goto(src);
@@ -196,6 +221,9 @@ test('axe finds no serious or critical violations on #/ (light and dark)', async
     await openScene(page, `#/?theme=${theme}`);
     const results = await new AxeBuilder({ page }).analyze();
     const bad = results.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical');
-    expect(bad.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`), theme).toEqual([]);
+    expect(
+      bad.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`),
+      theme,
+    ).toEqual([]);
   }
 });

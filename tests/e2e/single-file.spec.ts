@@ -25,7 +25,10 @@ const ROUTES: [string, string[]][] = [
   ['#/practice/sheet?seed=1&q=1,3,5', []],
 ];
 
-test('the single HTML file opens from file:// and every route works with no network', async ({ page, context }) => {
+test('the single HTML file opens from file:// and every route works with no network', async ({
+  page,
+  context,
+}) => {
   test.setTimeout(240_000);
   expect(existsSync(file), `${file} exists (run "npm run build:single")`).toBe(true);
   // nothing may leave the file: any http(s) request fails the test
@@ -40,7 +43,8 @@ test('the single HTML file opens from file:// and every route works with no netw
     await page.goto(`${url}${hash}`);
     await expect(page.locator('main#main:visible')).toBeVisible({ timeout: 30000 });
     await expect(page.locator('.loading')).toHaveCount(0, { timeout: 30000 });
-    for (const id of ids) await expect(page.getByTestId(id).first()).toHaveAttribute('data-value', /^-?\d/, { timeout: 60000 });
+    for (const id of ids)
+      await expect(page.getByTestId(id).first()).toHaveAttribute('data-value', /^-?\d/, { timeout: 60000 });
     // bring every lazy view (plots, 3D, formulas) on screen so their chunks load
     await settleLazyViews(page);
     await expect(page.locator('.notice-error')).toHaveCount(0);
@@ -48,6 +52,8 @@ test('the single HTML file opens from file:// and every route works with no netw
   await page.goto(`${url}#/texture?u=0.7`);
   await page.getByTestId('copy-link').click();
   // a link copied from the file is the file's own URL
-  await expect(page.getByTestId('share-text')).toHaveValue(new RegExp(`^${url.replace(/[.*+?^${}()|[\]\\]/g, '\\$&')}#/texture\\?u=0\\.7`));
+  await expect(page.getByTestId('share-text')).toHaveValue(
+    new RegExp(`^${url.replace(/[.*+?^${}()|[\]\\]/g, '\\$&')}#/texture\\?u=0\\.7`),
+  );
   expect(requests).toEqual([]);
 });

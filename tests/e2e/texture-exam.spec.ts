@@ -23,7 +23,9 @@ async function timelineT(page: Page): Promise<number> {
 }
 
 test.describe('exam first (issue 11)', () => {
-  test('the page opens with the question, then (a), (b), (c) in order, then explore further', async ({ page }) => {
+  test('the page opens with the question, then (a), (b), (c) in order, then explore further', async ({
+    page,
+  }) => {
     await openScene(page, '#/texture');
     const ys: number[] = [];
     for (const id of ['question-3', 'texel-grid', 'part-3a', 'part-3b', 'part-3c', 'explore-further']) {
@@ -31,13 +33,18 @@ test.describe('exam first (issue 11)', () => {
       expect(b, id).not.toBeNull();
       ys.push(b!.y);
     }
-    for (let k = 1; k < ys.length; k++) expect(ys[k], `element ${k} below element ${k - 1}`).toBeGreaterThan(ys[k - 1]);
+    for (let k = 1; k < ys.length; k++)
+      expect(ys[k], `element ${k} below element ${k - 1}`).toBeGreaterThan(ys[k - 1]);
     // the exam's grid as printed: top row v = 1 is 1 … 5
     await expect(page.getByTestId('exam-grid').locator('tr').first()).toContainText('1');
-    expect(await page.getByTestId('exam-grid').locator('tr').first().locator('td').allTextContents()).toEqual(['1', '2', '3', '4', '5'].map(String));
+    expect(await page.getByTestId('exam-grid').locator('tr').first().locator('td').allTextContents()).toEqual(
+      ['1', '2', '3', '4', '5'].map(String),
+    );
   });
 
-  test('(a): the nearest steps with live numbers, and the key’s note on v′ = 1 − v with the flipped value computed', async ({ page }) => {
+  test('(a): the nearest steps with live numbers, and the key’s note on v′ = 1 − v with the flipped value computed', async ({
+    page,
+  }) => {
     await openScene(page, '#/texture');
     const d = page.getByTestId('derivation-3a');
     await expect(d).toContainText('round');
@@ -45,7 +52,9 @@ test.describe('exam first (issue 11)', () => {
     expect(Number(await readout(page, 'nearest'))).toBe(21 - 5 * Math.round(0.24 * 4) + Math.round(0.4 * 4));
     // flipped: v′ = 0.76 → j = round(3.04) = 3
     await expect(page.getByTestId('keynote-3a')).toContainText('v′ = 1 − v');
-    await expect(page.getByTestId('keynote-3a')).toContainText(`nearest gives ${21 - 5 * Math.round(0.76 * 4) + 2}`);
+    await expect(page.getByTestId('keynote-3a')).toContainText(
+      `nearest gives ${21 - 5 * Math.round(0.76 * 4) + 2}`,
+    );
   });
 
   test('(b): the key’s c_u, c_l, c, each divided by the cell size, with live numbers', async ({ page }) => {
@@ -59,7 +68,9 @@ test.describe('exam first (issue 11)', () => {
     await expect(d).toContainText('Δu');
     await expect(d).toContainText('0.25');
     // the key note: what leaving out the division would give (c scaled by Δu Δv)
-    await expect(page.getByTestId('keynote-3b')).toContainText(`c ${String(Number((L(0.4, 0.24) * 0.25 * 0.25).toPrecision(4)))}`);
+    await expect(page.getByTestId('keynote-3b')).toContainText(
+      `c ${String(Number((L(0.4, 0.24) * 0.25 * 0.25).toPrecision(4)))}`,
+    );
     // moving the query changes the numbers: at (0.6, 0.6) the cell is [0.5, 0.75]²
     await openScene(page, '#/texture?u=0.6&v=0.6');
     await expect(page.getByTestId('derivation-3b')).toContainText(p6(L(0.6, 0.75)));
@@ -68,7 +79,9 @@ test.describe('exam first (issue 11)', () => {
     await waitForReadout(page, 'bilinear', (x) => Math.abs(Number(x) - L(0.4, 0.24)) < 1e-9);
   });
 
-  test('(c): atan2, arccos, the normalization by (2π, π); the un-normalized value computed and the key’s 8.44 named', async ({ page }) => {
+  test('(c): atan2, arccos, the normalization by (2π, π); the un-normalized value computed and the key’s 8.44 named', async ({
+    page,
+  }) => {
     await openScene(page, '#/texture');
     const d = page.getByTestId('derivation-3c');
     await expect(d).toContainText('atan2');
@@ -83,7 +96,9 @@ test.describe('exam first (issue 11)', () => {
     await expect(note).toContainText(`rounds to ${(21 - 4 * Math.PI).toFixed(2)}`);
   });
 
-  test('the crease caption is true: none on the linear exam grid, all 12 on the 8 × 8 checkerboard, drawn on the image', async ({ page }) => {
+  test('the crease caption is true: none on the linear exam grid, all 12 on the 8 × 8 checkerboard, drawn on the image', async ({
+    page,
+  }) => {
     await openScene(page, '#/texture');
     const cap = page.getByTestId('crease-caption');
     await expect(cap).toContainText('none of the 6 interior node lines');
@@ -96,7 +111,9 @@ test.describe('exam first (issue 11)', () => {
 });
 
 test.describe('legible (issue 11)', () => {
-  test('the nearest-node highlight does not cover the answer’s label, and every label has an opaque contrasting halo', async ({ page }) => {
+  test('the nearest-node highlight does not cover the answer’s label, and every label has an opaque contrasting halo', async ({
+    page,
+  }) => {
     await openScene(page, '#/texture');
     const info = await page.evaluate(() => {
       const hl = document.querySelector('[data-testid=nearest-highlight]')!.getBoundingClientRect();
@@ -105,14 +122,23 @@ test.describe('legible (issue 11)', () => {
       const r = answer.getBoundingClientRect();
       const top = document.elementFromPoint(r.x + r.width / 2, r.y + r.height / 2);
       const lum = (c: string) => {
-        const m = c.match(/[\d.]+/g)!.slice(0, 3).map(Number).map((x) => x / 255).map((s) => (s <= 0.04045 ? s / 12.92 : ((s + 0.055) / 1.055) ** 2.4));
+        const m = c
+          .match(/[\d.]+/g)!
+          .slice(0, 3)
+          .map(Number)
+          .map((x) => x / 255)
+          .map((s) => (s <= 0.04045 ? s / 12.92 : ((s + 0.055) / 1.055) ** 2.4));
         return 0.2126 * m[0] + 0.7152 * m[1] + 0.0722 * m[2];
       };
       const ratios = labels.map((t) => {
         const cs = getComputedStyle(t);
         const a = lum(cs.fill);
         const b = lum(cs.stroke);
-        return { ratio: (Math.max(a, b) + 0.05) / (Math.min(a, b) + 0.05), strokeOpacity: Number(cs.strokeOpacity), alpha: cs.stroke.startsWith('rgba') ? Number(cs.stroke.match(/[\d.]+/g)![3]) : 1 };
+        return {
+          ratio: (Math.max(a, b) + 0.05) / (Math.min(a, b) + 0.05),
+          strokeOpacity: Number(cs.strokeOpacity),
+          alpha: cs.stroke.startsWith('rgba') ? Number(cs.stroke.match(/[\d.]+/g)![3]) : 1,
+        };
       });
       const overlap = !(r.right < hl.left || r.left > hl.right || r.bottom < hl.top || r.top > hl.bottom);
       return { overlap, topIsLabel: top === answer, ratios, n: labels.length };
@@ -139,8 +165,10 @@ test.describe('legible (issue 11)', () => {
           const cs = getComputedStyle(s);
           ctx.font = `${cs.fontWeight} ${cs.fontSize} ${cs.fontFamily}`;
           for (const o of s.options) {
-            const need = ctx.measureText(o.text).width + parseFloat(cs.paddingLeft) + parseFloat(cs.paddingRight) + 20; // + the arrow
-            if (need > s.clientWidth + 2) out.push(`select "${o.text}": ${need.toFixed(0)} > ${s.clientWidth}`);
+            const need =
+              ctx.measureText(o.text).width + parseFloat(cs.paddingLeft) + parseFloat(cs.paddingRight) + 20; // + the arrow
+            if (need > s.clientWidth + 2)
+              out.push(`select "${o.text}": ${need.toFixed(0)} > ${s.clientWidth}`);
           }
         }
         for (const c of document.querySelectorAll<HTMLElement>('.scene-texture td, .scene-texture th')) {
@@ -156,7 +184,9 @@ test.describe('legible (issue 11)', () => {
     }
   });
 
-  test('keyboard: the cell editor (arrows choose a node, Enter goes to its value) and the sphere point (angle sliders)', async ({ page }) => {
+  test('keyboard: the cell editor (arrows choose a node, Enter goes to its value) and the sphere point (angle sliders)', async ({
+    page,
+  }) => {
     await openScene(page, '#/texture');
     await page.getByTestId('edit-toggle').check();
     const grid = page.getByTestId('texel-grid');
@@ -189,15 +219,27 @@ test.describe('legible (issue 11)', () => {
     const p = urlParams(page);
     const [x, y] = [Number(p.get('x')), Number(p.get('y'))];
     expect(Math.abs((Math.atan2(y, x) * 180) / Math.PI - 45.1)).toBeLessThan(0.01);
-    await waitForReadout(page, 'sphere-u', (s) => Math.abs(Number(s) - Math.atan2(y, x) / (2 * Math.PI)) < 1e-12);
+    await waitForReadout(
+      page,
+      'sphere-u',
+      (s) => Math.abs(Number(s) - Math.atan2(y, x) / (2 * Math.PI)) < 1e-12,
+    );
   });
 
-  test('draggable handles show a visible focus indicator; the end handle moves with the arrow keys', async ({ page }) => {
+  test('draggable handles show a visible focus indicator; the end handle moves with the arrow keys', async ({
+    page,
+  }) => {
     await openScene(page, '#/texture');
     const grid = page.getByTestId('texel-grid');
     await grid.focus();
     await page.keyboard.press('ArrowRight'); // keyboard modality: :focus-visible applies
-    const ring = (sel: string) => page.locator(sel).evaluate((el) => ({ stroke: getComputedStyle(el).stroke, width: parseFloat(getComputedStyle(el).strokeWidth) }));
+    const ring = (sel: string) =>
+      page
+        .locator(sel)
+        .evaluate((el) => ({
+          stroke: getComputedStyle(el).stroke,
+          width: parseFloat(getComputedStyle(el).strokeWidth),
+        }));
     const a = await ring('.tx-handle.a .tx-handle-focus');
     expect(a.stroke).not.toBe('none');
     expect(a.width).toBeGreaterThanOrEqual(4);
@@ -214,7 +256,9 @@ test.describe('legible (issue 11)', () => {
     expect((await ring('[data-testid=path-end-handle] .tx-handle-focus')).stroke).toBe('none');
   });
 
-  test('375 px: SVG text ≥ 12 px, handles ≥ 24 px, the question’s inputs before its results', async ({ page }) => {
+  test('375 px: SVG text ≥ 12 px, handles ≥ 24 px, the question’s inputs before its results', async ({
+    page,
+  }) => {
     await page.setViewportSize({ width: 375, height: 740 });
     for (const q of ['', 'preset=checker', 'present=1']) {
       await openScene(page, `#/texture?${q}`);
@@ -224,7 +268,8 @@ test.describe('legible (issue 11)', () => {
           const vb = svg.viewBox.baseVal;
           const scale = vb && vb.width ? svg.getBoundingClientRect().width / vb.width : 1;
           if (!svg.getBoundingClientRect().width) continue;
-          for (const t of svg.querySelectorAll('text')) out.push({ text: t.textContent ?? '', px: parseFloat(getComputedStyle(t).fontSize) * scale });
+          for (const t of svg.querySelectorAll('text'))
+            out.push({ text: t.textContent ?? '', px: parseFloat(getComputedStyle(t).fontSize) * scale });
         }
         return out;
       });
@@ -266,7 +311,9 @@ test.describe('legible (issue 11)', () => {
 });
 
 test.describe('the query travels its path (issue 12)', () => {
-  test('play, pause: the readouts are the model at the paused t; the link restores them exactly', async ({ page }) => {
+  test('play, pause: the readouts are the model at the paused t; the link restores them exactly', async ({
+    page,
+  }) => {
     await openScene(page, '#/texture');
     await page.getByTestId('timeline-play').click();
     await expect.poll(() => timelineT(page), { timeout: 20_000 }).toBeGreaterThan(0.1);
@@ -337,11 +384,15 @@ test.describe('the query travels its path (issue 12)', () => {
     expect(await page.evaluate(() => (window as unknown as { __raf: number }).__raf)).toBe(before);
     // playing does request frames
     await page.getByTestId('timeline-play').click();
-    await expect.poll(() => page.evaluate(() => (window as unknown as { __raf: number }).__raf)).toBeGreaterThan(before + 5);
+    await expect
+      .poll(() => page.evaluate(() => (window as unknown as { __raf: number }).__raf))
+      .toBeGreaterThan(before + 5);
     await page.getByTestId('timeline-play').click();
   });
 
-  test('conventions and addressing toggle while it plays; the paused readouts use the new ones', async ({ page }) => {
+  test('conventions and addressing toggle while it plays; the paused readouts use the new ones', async ({
+    page,
+  }) => {
     await openScene(page, '#/texture?u2=1.6&v2=0.3');
     await page.getByTestId('timeline-speed').selectOption('0.25');
     await page.getByTestId('timeline-play').click();
@@ -359,10 +410,15 @@ test.describe('the query travels its path (issue 12)', () => {
     // the plot: repeat with texel centres is continuous (no jump) but kinks where the values wrap
     const prof = pathProfile(examGrid(), opts, path);
     await expect(page.getByTestId('path-plot')).toHaveAttribute('data-borders', String(prof.borders.length));
-    await expect(page.getByTestId('path-plot')).toHaveAttribute('data-jumps', String(prof.borders.filter((b) => b.jump).length));
+    await expect(page.getByTestId('path-plot')).toHaveAttribute(
+      'data-jumps',
+      String(prof.borders.filter((b) => b.jump).length),
+    );
   });
 
-  test('the circle preset and the path ends are in the link; the plot counts kinks (none on the exam grid, all on the checker)', async ({ page }) => {
+  test('the circle preset and the path ends are in the link; the plot counts kinks (none on the exam grid, all on the checker)', async ({
+    page,
+  }) => {
     await openScene(page, '#/texture?path=circle&u2=0.6&v2=0.7&t=0.3');
     const path = pathOf({ u: 0.4, v: 0.24, u2: 0.6, v2: 0.7, path: 'circle' });
     const f = frameAt(examGrid(), EXAM, path, 0.3);
@@ -384,7 +440,9 @@ test.describe('the query travels its path (issue 12)', () => {
     await expect(page).toHaveURL(/u2=0\.6/);
   });
 
-  test('dragging the end handle moves the path’s end and keeps the position; clicking elsewhere rewinds to the clicked query', async ({ page }) => {
+  test('dragging the end handle moves the path’s end and keeps the position; clicking elsewhere rewinds to the clicked query', async ({
+    page,
+  }) => {
     await openScene(page, '#/texture?t=0.5');
     const h = (await page.getByTestId('path-end-handle').locator('.tx-handle-mark').boundingBox())!;
     await page.mouse.move(h.x + h.width / 2, h.y + h.height / 2);
@@ -403,6 +461,10 @@ test.describe('the query travels its path (issue 12)', () => {
     await expect.poll(() => timelineT(page)).toBe(0);
     const q = urlParams(page);
     expect(q.get('t')).toBeNull();
-    await waitForReadout(page, 'bilinear', (x) => Math.abs(Number(x) - L(Number(q.get('u')), Number(q.get('v')))) < 1e-9);
+    await waitForReadout(
+      page,
+      'bilinear',
+      (x) => Math.abs(Number(x) - L(Number(q.get('u')), Number(q.get('v')))) < 1e-9,
+    );
   });
 });

@@ -8,10 +8,13 @@ import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
 
 const L = (u: number, v: number) => 21 + 4 * u - 20 * v;
-const close = (a: number, b: number, tol = 1e-9) => expect(Math.abs(a - b), `${a} ≈ ${b}`).toBeLessThanOrEqual(tol);
+const close = (a: number, b: number, tol = 1e-9) =>
+  expect(Math.abs(a - b), `${a} ≈ ${b}`).toBeLessThanOrEqual(tol);
 
 test.describe('the exam’s three answers', () => {
-  test('defaults: nearest = value(2, 1), bilinear = L(0.4, 0.24), sphere (1/8, 1/4) → L(1/8, 1/4)', async ({ page }) => {
+  test('defaults: nearest = value(2, 1), bilinear = L(0.4, 0.24), sphere (1/8, 1/4) → L(1/8, 1/4)', async ({
+    page,
+  }) => {
     await openScene(page, '#/texture');
     expect(Number(await readout(page, 'nearest'))).toBe(21 - 5 * 1 + 2);
     close(await readoutNumber(page, 'bilinear'), L(0.4, 0.24));
@@ -29,7 +32,9 @@ test.describe('the exam’s three answers', () => {
     close(await readoutNumber(page, 'bilinear'), 17.8);
   });
 
-  test('forgetting to normalize gives 21 − 4π, and the scene says the key’s printed figure differs', async ({ page }) => {
+  test('forgetting to normalize gives 21 − 4π, and the scene says the key’s printed figure differs', async ({
+    page,
+  }) => {
     await openScene(page, '#/texture?normalize=0');
     close(await readoutNumber(page, 'sphere-u'), Math.PI / 4, 1e-15);
     close(await readoutNumber(page, 'sphere-v'), Math.PI / 4, 1e-15);
@@ -43,7 +48,9 @@ test.describe('the exam’s three answers', () => {
 });
 
 test.describe('conventions', () => {
-  test('texel centres: s = uN − ½, t = vN − ½ → 21 + s − 5t; nearest = texel (⌊uN⌋, ⌊vN⌋)', async ({ page }) => {
+  test('texel centres: s = uN − ½, t = vN − ½ → 21 + s − 5t; nearest = texel (⌊uN⌋, ⌊vN⌋)', async ({
+    page,
+  }) => {
     await openScene(page, '#/texture?align=center');
     const s = 0.4 * 5 - 0.5;
     const t = 0.24 * 5 - 0.5;
@@ -228,18 +235,27 @@ test.describe('bad input', () => {
     await expect(page).toHaveURL(/grid=0,1;2,3/);
     // corner nodes on 2 × 2: bilinear at (0.4, 0.24) of bottom (2, 3), top (0, 1)
     const [u, v] = [0.4, 0.24];
-    close(await readoutNumber(page, 'bilinear'), (1 - u) * (1 - v) * 2 + u * (1 - v) * 3 + (1 - u) * v * 0 + u * v * 1, 1e-12);
+    close(
+      await readoutNumber(page, 'bilinear'),
+      (1 - u) * (1 - v) * 2 + u * (1 - v) * 3 + (1 - u) * v * 0 + u * v * 1,
+      1e-12,
+    );
   });
 });
 
 test.describe('interaction', () => {
-  test('click and drag the query point: only the marker layer changes, no canvas is redrawn', async ({ page }) => {
+  test('click and drag the query point: only the marker layer changes, no canvas is redrawn', async ({
+    page,
+  }) => {
     // count canvas redraws (the grid's base layer and the two reconstructions use putImageData)
     await page.addInitScript(() => {
       const w = window as unknown as { __puts: number };
       w.__puts = 0;
       const orig = CanvasRenderingContext2D.prototype.putImageData;
-      CanvasRenderingContext2D.prototype.putImageData = function (this: CanvasRenderingContext2D, ...args: Parameters<typeof orig>) {
+      CanvasRenderingContext2D.prototype.putImageData = function (
+        this: CanvasRenderingContext2D,
+        ...args: Parameters<typeof orig>
+      ) {
         w.__puts++;
         return orig.apply(this, args);
       } as typeof orig;
@@ -249,7 +265,9 @@ test.describe('interaction', () => {
     await expect(svg).toBeVisible();
     // the reconstructions are drawn when they come near the screen
     await page.getByTestId('recon-bilinear').scrollIntoViewIfNeeded();
-    await expect.poll(() => page.evaluate(() => (window as unknown as { __puts: number }).__puts)).toBeGreaterThanOrEqual(3);
+    await expect
+      .poll(() => page.evaluate(() => (window as unknown as { __puts: number }).__puts))
+      .toBeGreaterThanOrEqual(3);
     await svg.scrollIntoViewIfNeeded();
     await page.waitForTimeout(300);
     const putsBefore = await page.evaluate(() => (window as unknown as { __puts: number }).__puts);
@@ -259,17 +277,28 @@ test.describe('interaction', () => {
       const g = document.querySelector('[data-testid=texel-grid] > g')!;
       const w = window as unknown as { __mut: number };
       w.__mut = 0;
-      new MutationObserver((m) => (w.__mut += m.length)).observe(g, { subtree: true, childList: true, attributes: true, characterData: true });
+      new MutationObserver((m) => (w.__mut += m.length)).observe(g, {
+        subtree: true,
+        childList: true,
+        attributes: true,
+        characterData: true,
+      });
     });
     const box = (await svg.boundingBox())!;
     const t0 = Date.now();
     await page.mouse.move(box.x + box.width * 0.3, box.y + box.height * 0.3);
     await page.mouse.down();
     const steps = 40;
-    for (let k = 1; k <= steps; k++) await page.mouse.move(box.x + box.width * (0.3 + (0.4 * k) / steps), box.y + box.height * (0.3 + (0.3 * k) / steps));
+    for (let k = 1; k <= steps; k++)
+      await page.mouse.move(
+        box.x + box.width * (0.3 + (0.4 * k) / steps),
+        box.y + box.height * (0.3 + (0.3 * k) / steps),
+      );
     await page.mouse.up();
     const perMove = (Date.now() - t0) / steps;
-    console.log(`drag: ${perMove.toFixed(1)} ms per pointer move (including Playwright round trips on a shared machine)`);
+    console.log(
+      `drag: ${perMove.toFixed(1)} ms per pointer move (including Playwright round trips on a shared machine)`,
+    );
     expect(perMove, 'the page stays responsive while dragging').toBeLessThan(500);
     expect(await page.evaluate(() => (window as unknown as { __mut: number }).__mut)).toBe(0);
     expect(await page.evaluate(() => (window as unknown as { __puts: number }).__puts)).toBe(putsBefore);
@@ -308,7 +337,9 @@ test.describe('interaction', () => {
     await waitForReadout(page, 'bilinear', (x) => Math.abs(Number(x) - L(0.41, 0.24)) < 1e-9);
   });
 
-  test('with the v-flip, the picture is in the flipped frame: ArrowUp raises v′ and lowers v', async ({ page }) => {
+  test('with the v-flip, the picture is in the flipped frame: ArrowUp raises v′ and lowers v', async ({
+    page,
+  }) => {
     await openScene(page, '#/texture?vflip=1');
     await page.getByTestId('texel-grid').focus();
     await page.keyboard.press('ArrowUp');
@@ -333,7 +364,9 @@ test.describe('interaction', () => {
     close(await readoutNumber(page, 'bilinear'), L(0.4, 0.24) + 100 * 0.6 * 0.96, 1e-9);
   });
 
-  test('typing (x, y, z) updates the sphere readouts; clicking the sphere picks a point', async ({ page }) => {
+  test('typing (x, y, z) updates the sphere readouts; clicking the sphere picks a point', async ({
+    page,
+  }) => {
     await openScene(page, '#/texture');
     const x = page.getByTestId('x-field');
     await x.fill('-1');
@@ -362,6 +395,9 @@ test('axe finds no serious or critical violations (light, dark, present)', async
     await expect(page.getByTestId('sphere-view')).toHaveAttribute('data-status', 'ready');
     const results = await new AxeBuilder({ page }).analyze();
     const bad = results.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical');
-    expect(bad.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`), q).toEqual([]);
+    expect(
+      bad.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`),
+      q,
+    ).toEqual([]);
   }
 });

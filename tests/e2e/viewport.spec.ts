@@ -4,7 +4,9 @@ import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, countAnimationFrames } from './fixtures';
 
 test.describe('shared 3D viewport', () => {
-  test('arrows orbit, + / − zoom, Reset view and Home restore; focus is visible; axes are labelled', async ({ page }) => {
+  test('arrows orbit, + / − zoom, Reset view and Home restore; focus is visible; axes are labelled', async ({
+    page,
+  }) => {
     await openScene(page, '#/ray-sphere');
     const vp = page.getByTestId('view-3d');
     await vp.scrollIntoViewIfNeeded();
@@ -35,10 +37,14 @@ test.describe('shared 3D viewport', () => {
     // the distance is unchanged by orbiting; + brings the camera closer by 1/1.15
     expect(Number(await triad.getAttribute('data-distance'))).toBeCloseTo(Number(home.d), 3);
     await page.keyboard.press('+');
-    await expect.poll(async () => Number(await triad.getAttribute('data-distance'))).toBeCloseTo(Number(home.d) / 1.15, 3);
+    await expect
+      .poll(async () => Number(await triad.getAttribute('data-distance')))
+      .toBeCloseTo(Number(home.d) / 1.15, 3);
     await page.keyboard.press('-');
     await page.keyboard.press('-');
-    await expect.poll(async () => Number(await triad.getAttribute('data-distance'))).toBeCloseTo(Number(home.d) * 1.15, 3);
+    await expect
+      .poll(async () => Number(await triad.getAttribute('data-distance')))
+      .toBeCloseTo(Number(home.d) * 1.15, 3);
 
     await page.getByTestId('view-3d-reset').click();
     await expect.poll(() => triad.getAttribute('data-x-axis')).toBe(home.x);
@@ -96,7 +102,9 @@ test.describe('shared 3D viewport', () => {
   test.describe('on a touch screen', () => {
     test.use({ viewport: { width: 412, height: 823 }, isMobile: true, hasTouch: true });
 
-    test('the 3D view waits to be asked: no three.js until a tap; the page scrolls through it; Enter starts it too', async ({ page }) => {
+    test('the 3D view waits to be asked: no three.js until a tap; the page scrolls through it; Enter starts it too', async ({
+      page,
+    }) => {
       test.setTimeout(120_000);
       const threeRequests: string[] = [];
       page.on('request', (r) => {
@@ -113,7 +121,9 @@ test.describe('shared 3D viewport', () => {
       expect(threeRequests, 'three.js is not loaded before it is asked for').toEqual([]);
       // the waiting view is accessible (its button, its text's contrast)
       const axe = await new AxeBuilder({ page }).include('[data-testid="hemisphere-3d"]').analyze();
-      expect(axe.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => v.id)).toEqual([]);
+      expect(
+        axe.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => v.id),
+      ).toEqual([]);
       await page.getByTestId('hemisphere-3d-start').tap();
       await expect(vp).toHaveAttribute('data-status', 'ready', { timeout: 30_000 });
       expect(threeRequests.length).toBeGreaterThan(0);

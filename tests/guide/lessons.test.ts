@@ -45,7 +45,13 @@ describe('teacher’s guide', () => {
         // the values the scene gets are the ones the guide wrote
         for (const [k, v] of Object.entries(p.params)) {
           const got = (parsed.values as Record<string, unknown>)[k];
-          const text = Array.isArray(got) ? got.join(',') : typeof got === 'boolean' ? (got ? '1' : '0') : String(got);
+          const text = Array.isArray(got)
+            ? got.join(',')
+            : typeof got === 'boolean'
+              ? got
+                ? '1'
+                : '0'
+              : String(got);
           expect(text === v || Number(text) === Number(v), `${href}: ${k}`).toBe(true);
         }
       }

@@ -1,6 +1,13 @@
 /** The answer checker: numbers (tolerance, expressions, none), formulas (equivalence by the whitelisted compiler), choices. */
 import { describe, expect, it } from 'vitest';
-import { checkAnswer, checkFormula, classifyNumber, normaliseInput, parseNumberAnswer, tolerance } from '../../src/practice/check';
+import {
+  checkAnswer,
+  checkFormula,
+  classifyNumber,
+  normaliseInput,
+  parseNumberAnswer,
+  tolerance,
+} from '../../src/practice/check';
 import type { ChoiceAnswer, FormulaAnswer, NumberAnswer } from '../../src/practice/model';
 
 const numSpec: NumberAnswer = {
@@ -49,16 +56,32 @@ describe('formulas', () => {
     expected: (t) => Math.sin(2 * t),
     expectedText: 'sin(2*theta)',
     alternatives: [],
-    mistakes: [{ id: 'inverted-jacobian', fns: [(t) => (2 * Math.cos(t)) / Math.sin(t)], message: 'inverted' }],
+    mistakes: [
+      { id: 'inverted-jacobian', fns: [(t) => (2 * Math.cos(t)) / Math.sin(t)], message: 'inverted' },
+    ],
   };
   it('accepts sin 2θ as 2 sin θ cos θ (and other equivalent forms), rejects near misses', async () => {
-    for (const ok of ['2*sin(theta)*cos(theta)', 'sin(2θ)'.replace('2θ', '2*θ'), '2 sin(θ) cos(θ)'.replace(/ /g, '*').replace('2*sin', '2*sin'), 'sin(theta + theta)', '2*tan(theta)*cos(theta)^2']) {
+    for (const ok of [
+      '2*sin(theta)*cos(theta)',
+      'sin(2θ)'.replace('2θ', '2*θ'),
+      '2 sin(θ) cos(θ)'.replace(/ /g, '*').replace('2*sin', '2*sin'),
+      'sin(theta + theta)',
+      '2*tan(theta)*cos(theta)^2',
+    ]) {
       expect((await checkFormula(spec, ok)).value, ok).toBe('correct');
     }
-    for (const bad of ['2.001*sin(theta)*cos(theta)', 'sin(2*theta) + 0.0001', 'sin(2.0001*theta)', 'sin(theta)*cos(theta)', 'cos(2*theta)']) {
+    for (const bad of [
+      '2.001*sin(theta)*cos(theta)',
+      'sin(2*theta) + 0.0001',
+      'sin(2.0001*theta)',
+      'sin(theta)*cos(theta)',
+      'cos(2*theta)',
+    ]) {
       expect((await checkFormula(spec, bad)).value, bad).toBe('incorrect');
     }
-    expect((await checkFormula(spec, '2*cot(theta)'.replace('cot(theta)', 'cos(theta)/sin(theta)'))).value).toBe('mistake:inverted-jacobian');
+    expect(
+      (await checkFormula(spec, '2*cot(theta)'.replace('cot(theta)', 'cos(theta)/sin(theta)'))).value,
+    ).toBe('mistake:inverted-jacobian');
   });
   it('bad syntax and unknown names are invalid with a message', async () => {
     for (const bad of ['sin(theta', 'x^2', 'foo(theta)', 'theta = 1', '']) {
@@ -76,7 +99,15 @@ describe('formulas', () => {
 
 describe('choices', () => {
   it('exact option names (spaces as hyphens), others invalid', async () => {
-    const c: ChoiceAnswer = { kind: 'choice', name: 'case', label: 'case', options: ['miss', 'two-hits', 'inside'], expected: 'inside', mistakes: [{ id: 'ignored-t-sign', value: 'two-hits', message: 'm' }], why: 'w' };
+    const c: ChoiceAnswer = {
+      kind: 'choice',
+      name: 'case',
+      label: 'case',
+      options: ['miss', 'two-hits', 'inside'],
+      expected: 'inside',
+      mistakes: [{ id: 'ignored-t-sign', value: 'two-hits', message: 'm' }],
+      why: 'w',
+    };
     expect((await checkAnswer(c, 'Inside')).value).toBe('correct');
     expect((await checkAnswer(c, 'two hits')).value).toBe('mistake:ignored-t-sign');
     expect((await checkAnswer(c, 'miss')).value).toBe('incorrect');

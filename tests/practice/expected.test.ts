@@ -33,7 +33,8 @@ const M = create(all, { number: 'BigNumber', precision: 60 }) as unknown as {
   pi: BN;
 };
 const B = (x: number | string) => M.bignumber(x);
-const num = (v: Variant, name: string) => (allAnswers(v).find((a) => a.name === name) as NumberAnswer).expected;
+const num = (v: Variant, name: string) =>
+  (allAnswers(v).find((a) => a.name === name) as NumberAnswer).expected;
 const formula = (v: Variant, name: string) => allAnswers(v).find((a) => a.name === name) as FormulaAnswer;
 const rel = (x: number, y: number) => Math.abs(x - y) / Math.max(Math.abs(y), 1e-300);
 const SEEDS = Array.from({ length: 300 }, (_, i) => i * 104729 + 7);
@@ -44,7 +45,10 @@ describe('Q1', () => {
       const P = q1Params(s);
       const v = q1Variant(s);
       const a = M.divide(B(P.a.p), B(P.a.q)) as BN;
-      const k = M.divide(M.multiply(a, B(P.m + 1)), M.subtract(M.exp(M.multiply(M.multiply(2, M.pi), a)), 1)) as BN;
+      const k = M.divide(
+        M.multiply(a, B(P.m + 1)),
+        M.subtract(M.exp(M.multiply(M.multiply(2, M.pi), a)), 1),
+      ) as BN;
       expect(rel(num(v, 'k')!, M.number(k) as number)).toBeLessThan(1e-13);
       expect(P.m).toBeGreaterThanOrEqual(0);
       expect(P.m).toBeLessThanOrEqual(4);
@@ -62,8 +66,10 @@ describe('Q1', () => {
       const cp = formula(v, 'cdf-phi').expected;
       const ti = formula(v, 'theta-of-xi').expected;
       const fi = formula(v, 'phi-of-xi').expected;
-      for (const x of [0.1, 0.5, 1.2]) expect(Math.abs(ct(x) - integrate1D((t) => pt(t), 0, x).value)).toBeLessThan(1e-12);
-      for (const x of [0.5, 3, 6]) expect(Math.abs(cp(x) - integrate1D((f) => pp(f), 0, x).value)).toBeLessThan(1e-12);
+      for (const x of [0.1, 0.5, 1.2])
+        expect(Math.abs(ct(x) - integrate1D((t) => pt(t), 0, x).value)).toBeLessThan(1e-12);
+      for (const x of [0.5, 3, 6])
+        expect(Math.abs(cp(x) - integrate1D((f) => pp(f), 0, x).value)).toBeLessThan(1e-12);
       for (const xi of [0.01, 0.3, 0.7, 0.99]) {
         expect(Math.abs(ct(ti(xi)) - xi)).toBeLessThan(1e-12);
         expect(Math.abs(cp(fi(xi)) - xi)).toBeLessThan(1e-12);
@@ -90,7 +96,10 @@ describe('Q2', () => {
       const P = q2Params(s);
       const v = q2Variant(s);
       const a = M.divide(B(P.a.p), B(P.a.q)) as BN;
-      const k = M.divide(M.multiply(a, B(P.m + 1)), M.subtract(M.exp(M.multiply(M.multiply(2, M.pi), a)), 1)) as BN;
+      const k = M.divide(
+        M.multiply(a, B(P.m + 1)),
+        M.subtract(M.exp(M.multiply(M.multiply(2, M.pi), a)), 1),
+      ) as BN;
       let su = B(0);
       let si = B(0);
       for (const [t, f] of P.dirs) {
@@ -100,15 +109,25 @@ describe('Q2', () => {
         expect(f).toBeLessThan(2 * Math.PI);
         const shape = M.multiply(M.pow(M.cos(B(t)), P.m), M.exp(M.multiply(a, B(f)))) as BN;
         const fv =
-          P.fKind === 'const' ? B(P.C) : P.fKind === 'prop' ? (M.multiply(B(P.C), shape) as BN) : P.fKind === 'cos' ? (M.multiply(B(P.C), M.cos(B(t))) as BN) : (M.multiply(B(P.C), M.pow(M.cos(B(t)), 2)) as BN);
+          P.fKind === 'const'
+            ? B(P.C)
+            : P.fKind === 'prop'
+              ? (M.multiply(B(P.C), shape) as BN)
+              : P.fKind === 'cos'
+                ? (M.multiply(B(P.C), M.cos(B(t))) as BN)
+                : (M.multiply(B(P.C), M.pow(M.cos(B(t)), 2)) as BN);
         su = M.add(su, fv) as BN;
         si = M.add(si, M.divide(fv, M.multiply(k, shape))) as BN;
       }
       const n = P.dirs.length;
-      expect(rel(num(v, 'mc-uniform')!, M.number(M.multiply(M.divide(M.multiply(2, M.pi), n), su)) as number)).toBeLessThan(1e-13);
+      expect(
+        rel(num(v, 'mc-uniform')!, M.number(M.multiply(M.divide(M.multiply(2, M.pi), n), su)) as number),
+      ).toBeLessThan(1e-13);
       expect(rel(num(v, 'mc-importance')!, M.number(M.divide(si, n)) as number)).toBeLessThan(1e-12);
       const z = allAnswers(v).find((x) => x.name === 'zero-variance')!;
-      expect(z.kind === 'choice' && z.expected).toBe(P.fKind === 'prop' ? 'importance' : P.fKind === 'const' ? 'uniform' : 'neither');
+      expect(z.kind === 'choice' && z.expected).toBe(
+        P.fKind === 'prop' ? 'importance' : P.fKind === 'const' ? 'uniform' : 'neither',
+      );
     }
   });
 });
@@ -125,7 +144,7 @@ describe('Q3', () => {
       expect(P.u).toBeLessThan(1);
       expect(P.v).toBeGreaterThan(0);
       expect(P.v).toBeLessThan(1);
-      const at = (i: number, j: number) => g.values[j * n + i]!;
+      const at = (i: number, j: number) => g.values[j * n + i];
       let best = Infinity;
       let bestVal = NaN;
       for (let j = 0; j < n; j++)
@@ -143,7 +162,11 @@ describe('Q3', () => {
       const j0 = Math.floor(sv);
       const fu = su - i0;
       const fv = sv - j0;
-      const want = (1 - fu) * (1 - fv) * at(i0, j0) + fu * (1 - fv) * at(i0 + 1, j0) + (1 - fu) * fv * at(i0, j0 + 1) + fu * fv * at(i0 + 1, j0 + 1);
+      const want =
+        (1 - fu) * (1 - fv) * at(i0, j0) +
+        fu * (1 - fv) * at(i0 + 1, j0) +
+        (1 - fu) * fv * at(i0, j0 + 1) +
+        fu * fv * at(i0 + 1, j0 + 1);
       expect(Math.abs(num(v, 'bilinear')! - want)).toBeLessThan(1e-12);
       const r = Math.hypot(P.x, P.y, P.z);
       let phi = Math.atan2(P.y, P.x);
@@ -167,7 +190,11 @@ describe('Q4', () => {
       }
       const c = B(P.c);
       const f = (x: BN): BN =>
-        P.kind === 'square' ? (M.pow(M.add(x, c), 2) as BN) : P.kind === 'cube' ? (M.pow(M.add(x, c), 3) as BN) : (M.add(M.pow(x, 2), c) as BN);
+        P.kind === 'square'
+          ? (M.pow(M.add(x, c), 2) as BN)
+          : P.kind === 'cube'
+            ? (M.pow(M.add(x, c), 3) as BN)
+            : (M.add(M.pow(x, 2), c) as BN);
       const F = (x: BN): BN =>
         P.kind === 'square'
           ? (M.divide(M.pow(M.add(x, c), 3), 3) as BN)
@@ -191,9 +218,9 @@ describe('Q5', () => {
     for (const s of SEEDS) {
       const P = q5Params(s);
       const v = q5Variant(s);
-      const f = P.o.map((x, i) => x - P.c[i]!);
+      const f = P.o.map((x, i) => x - P.c[i]);
       const a = P.d.reduce((t, x) => t + x * x, 0);
-      const b = 2 * P.d.reduce((t, x, i) => t + x * f[i]!, 0);
+      const b = 2 * P.d.reduce((t, x, i) => t + x * f[i], 0);
       const c = f.reduce((t, x) => t + x * x, 0) - P.r * P.r;
       expect(num(v, 'a')).toBe(a);
       expect(num(v, 'b')).toBe(b);
@@ -214,7 +241,8 @@ describe('Q5', () => {
       const t1 = M.number(M.divide(M.add(B(-b), sq), 2 * a)) as number;
       expect(Math.abs(num(v, 't0')! - t0)).toBeLessThan(1e-13 * Math.max(1, Math.abs(t0)));
       expect(Math.abs(num(v, 't1')! - t1)).toBeLessThan(1e-13 * Math.max(1, Math.abs(t1)));
-      const want = D === 0 ? (t0 >= 0 ? 'tangent' : 'behind') : t1 < 0 ? 'behind' : t0 >= 0 ? 'two-hits' : 'inside';
+      const want =
+        D === 0 ? (t0 >= 0 ? 'tangent' : 'behind') : t1 < 0 ? 'behind' : t0 >= 0 ? 'two-hits' : 'inside';
       expect(got).toBe(want);
       const hit = t0 >= 0 ? t0 : t1 >= 0 ? t1 : null;
       if (hit === null) expect(num(v, 't-hit')).toBeNull();
@@ -234,24 +262,24 @@ describe('Q6', () => {
       const ex = [1, 0, 0];
       const ey = [0, Math.cos(t), Math.sin(t)];
       const nl = [0, Math.sin(t), -Math.cos(t)];
-      const corner = P.lc.map((c, k) => c - (w / 2) * ex[k]! - (h / 2) * ey[k]!);
-      const pc = corner.map((c, k) => c + P.pu * w * ex[k]! + P.pv * h * ey[k]!);
+      const corner = P.lc.map((c, k) => c - (w / 2) * ex[k] - (h / 2) * ey[k]);
+      const pc = corner.map((c, k) => c + P.pu * w * ex[k] + P.pv * h * ey[k]);
       const tp = ((P.tilt + P.ptilt) * Math.PI) / 180;
       const pn = [0, Math.sin(tp), -Math.cos(tp)];
-      const d = pc.map((c, k) => c - P.p[k]!);
-      const r = Math.hypot(d[0]!, d[1]!, d[2]!);
-      const cosL = -(d[0]! * pn[0]! + d[1]! * pn[1]! + d[2]! * pn[2]!) / r;
+      const d = pc.map((c, k) => c - P.p[k]);
+      const r = Math.hypot(d[0], d[1], d[2]);
+      const cosL = -(d[0] * pn[0] + d[1] * pn[1] + d[2] * pn[2]) / r;
       expect(rel(num(v, 'r')!, r)).toBeLessThan(1e-13);
       expect(rel(num(v, 'cos-theta-l')!, cosL)).toBeLessThan(1e-12);
       expect(rel(num(v, 'd-omega')!, (P.psize * P.psize * cosL) / (r * r))).toBeLessThan(1e-12);
       let sum = 0;
       for (const [a, b] of P.uv) {
-        const x = corner.map((c, k) => c + a * w * ex[k]! + b * h * ey[k]!);
-        const q = x.map((c, k) => c - P.p[k]!);
-        const r2 = q[0]! ** 2 + q[1]! ** 2 + q[2]! ** 2;
+        const x = corner.map((c, k) => c + a * w * ex[k] + b * h * ey[k]);
+        const q = x.map((c, k) => c - P.p[k]);
+        const r2 = q[0] ** 2 + q[1] ** 2 + q[2] ** 2;
         const rr = Math.sqrt(r2);
-        const cosT = q[2]! / rr;
-        const cl = -(q[0]! * nl[0]! + q[1]! * nl[1]! + q[2]! * nl[2]!) / rr;
+        const cosT = q[2] / rr;
+        const cl = -(q[0] * nl[0] + q[1] * nl[1] + q[2] * nl[2]) / rr;
         expect(cosT).toBeGreaterThan(0);
         expect(cl).toBeGreaterThan(0);
         sum += ((P.rho / Math.PI) * P.L * cosT * cl) / r2;

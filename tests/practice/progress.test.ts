@@ -39,7 +39,14 @@ describe('practice progress', () => {
     expect(loadProgress().q3.attempted).toEqual([]);
   });
   it('ignores junk, inherited keys and bad seeds', () => {
-    for (const junk of ['{', 'null', '42', '{"q1": 5}', '{"__proto__": {"attempted": [1]}}', '{"q2": {"attempted": [-1, 1.5, "7", 8], "correct": "x"}}']) {
+    for (const junk of [
+      '{',
+      'null',
+      '42',
+      '{"q1": 5}',
+      '{"__proto__": {"attempted": [1]}}',
+      '{"q2": {"attempted": [-1, 1.5, "7", 8], "correct": "x"}}',
+    ]) {
       store.setItem(PROGRESS_KEY, junk);
       const p = loadProgress();
       expect(p.q1.attempted).toEqual([]);

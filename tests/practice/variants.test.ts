@@ -6,7 +6,13 @@
 import { describe, expect, it } from 'vitest';
 import { QUESTIONS } from '../../src/practice/questions';
 import { allAnswers, type AnswerSpec, type Variant } from '../../src/practice/model';
-import { classifyFormula, classifyNumber, checkChoice, formulasEquivalent, numbersSeparated } from '../../src/practice/check';
+import {
+  classifyFormula,
+  classifyNumber,
+  checkChoice,
+  formulasEquivalent,
+  numbersSeparated,
+} from '../../src/practice/check';
 
 const SEEDS = 2000;
 
@@ -45,7 +51,8 @@ function checkSpec(v: Variant, a: AnswerSpec, seen: Map<string, number>): void {
     expect(classifyFormula(a, a.expected).value, where).toBe('correct');
     for (const alt of a.alternatives) expect(classifyFormula(a, alt.fn).value, where).toBe('correct');
     for (const m of a.mistakes) {
-      for (const fn of m.fns) expect(classifyFormula(a, fn).value, `${where} mistake ${m.id}`).toBe(`mistake:${m.id}`);
+      for (const fn of m.fns)
+        expect(classifyFormula(a, fn).value, `${where} mistake ${m.id}`).toBe(`mistake:${m.id}`);
       seen.set(`${v.question}/${a.name}/${m.id}`, (seen.get(`${v.question}/${a.name}/${m.id}`) ?? 0) + 1);
     }
   } else {
@@ -60,12 +67,63 @@ function checkSpec(v: Variant, a: AnswerSpec, seen: Map<string, number>): void {
 
 /** Mistakes each question must be able to recognise (each must show up in many variants). */
 const REQUIRED: Record<string, string[]> = {
-  q1: ['k/no-sin-jacobian', 'k/missing-1-over-a', 'p-theta/inverted-jacobian', 'p-theta/no-sin-jacobian', 'p-phi/missing-1-over-a', 'cdf-theta/no-lower-limit', 'cdf-phi/no-lower-limit', 'theta-of-xi/missing-root', 'theta-of-xi/missing-half', 'phi-of-xi/missing-1-over-a', 'phi-of-xi/no-plus-one'],
-  q2: ['mc-uniform/no-2pi', 'mc-uniform/sphere-4pi', 'mc-importance/f-times-p', 'mc-importance/theta-phi-density', 'mc-importance/pdf-without-k'],
-  q3: ['nearest/floor-not-round', 'bilinear/no-cell-division', 'bilinear/swapped-weights', 'sphere-u/no-normalization', 'sphere-u/atan-quadrant', 'sphere-v/no-normalization', 'sphere-bilinear/no-normalization', 'sphere-bilinear/no-cell-division'],
-  q4: ['exact/no-lower-limit', 'uniform/no-interval-length', 'uniform/times-p', 'importance/unnormalized-pdf', 'importance/f-times-p'],
-  q5: ['a/a-not-squared', 'b/b-sign', 'b/b-no-2', 'c/r-not-squared', 'discriminant/quarter-discriminant', 't0/b-sign', 't0/no-2a', 't-hit/negative-root', 't-hit/far-root', 'case/ignored-t-sign'],
-  q6: ['cos-theta-l/receiver-cosine', 'd-omega/no-cos', 'd-omega/r-not-squared', 'estimate/no-area', 'estimate/no-cos-l', 'estimate/rho-not-over-pi'],
+  q1: [
+    'k/no-sin-jacobian',
+    'k/missing-1-over-a',
+    'p-theta/inverted-jacobian',
+    'p-theta/no-sin-jacobian',
+    'p-phi/missing-1-over-a',
+    'cdf-theta/no-lower-limit',
+    'cdf-phi/no-lower-limit',
+    'theta-of-xi/missing-root',
+    'theta-of-xi/missing-half',
+    'phi-of-xi/missing-1-over-a',
+    'phi-of-xi/no-plus-one',
+  ],
+  q2: [
+    'mc-uniform/no-2pi',
+    'mc-uniform/sphere-4pi',
+    'mc-importance/f-times-p',
+    'mc-importance/theta-phi-density',
+    'mc-importance/pdf-without-k',
+  ],
+  q3: [
+    'nearest/floor-not-round',
+    'bilinear/no-cell-division',
+    'bilinear/swapped-weights',
+    'sphere-u/no-normalization',
+    'sphere-u/atan-quadrant',
+    'sphere-v/no-normalization',
+    'sphere-bilinear/no-normalization',
+    'sphere-bilinear/no-cell-division',
+  ],
+  q4: [
+    'exact/no-lower-limit',
+    'uniform/no-interval-length',
+    'uniform/times-p',
+    'importance/unnormalized-pdf',
+    'importance/f-times-p',
+  ],
+  q5: [
+    'a/a-not-squared',
+    'b/b-sign',
+    'b/b-no-2',
+    'c/r-not-squared',
+    'discriminant/quarter-discriminant',
+    't0/b-sign',
+    't0/no-2a',
+    't-hit/negative-root',
+    't-hit/far-root',
+    'case/ignored-t-sign',
+  ],
+  q6: [
+    'cos-theta-l/receiver-cosine',
+    'd-omega/no-cos',
+    'd-omega/r-not-squared',
+    'estimate/no-area',
+    'estimate/no-cos-l',
+    'estimate/rho-not-over-pi',
+  ],
 };
 
 describe.each(QUESTIONS.map((q) => [q.id, q] as const))('%s variants', (id, q) => {
@@ -77,7 +135,8 @@ describe.each(QUESTIONS.map((q) => [q.id, q] as const))('%s variants', (id, q) =
       // same seed, same variant
       if (s < 20) expect(JSON.stringify(q.generate(s * 7919 + 13).givens)).toBe(JSON.stringify(v.givens));
       for (const g of v.givens) {
-        if (!g.value.length || /NaN|Infinity|undefined/.test(g.value)) failures.push(`${id} seed ${v.seed} given ${g.name} = ${g.value}`);
+        if (!g.value.length || /NaN|Infinity|undefined/.test(g.value))
+          failures.push(`${id} seed ${v.seed} given ${g.name} = ${g.value}`);
       }
       expect(v.sceneHref).toMatch(/^#\/(hemisphere|monte-carlo|texture|ray-sphere|area-light)\?/);
       expect(v.solution.length).toBeGreaterThan(3);
@@ -86,7 +145,7 @@ describe.each(QUESTIONS.map((q) => [q.id, q] as const))('%s variants', (id, q) =
       for (const a of allAnswers(v)) checkSpec(v, a, seen);
     }
     expect(failures.slice(0, 10)).toEqual([]);
-    for (const key of REQUIRED[id]!) {
+    for (const key of REQUIRED[id]) {
       const count = seen.get(`${id}/${key}`) ?? 0;
       expect(count, `mistake ${key} recognised in ${count} of ${SEEDS} variants`).toBeGreaterThan(SEEDS / 50);
     }
@@ -96,11 +155,47 @@ describe.each(QUESTIONS.map((q) => [q.id, q] as const))('%s variants', (id, q) =
 describe('formula equivalence', () => {
   const dom = [[0, Math.PI / 2]] as const;
   it('accepts equivalent forms and rejects near misses', () => {
-    expect(formulasEquivalent((t) => Math.sin(2 * t), (t) => 2 * Math.sin(t) * Math.cos(t), dom)).toBe(true);
-    expect(formulasEquivalent((t) => 1 - Math.cos(t) ** 2, (t) => (1 - Math.cos(2 * t)) / 2, dom)).toBe(true);
-    expect(formulasEquivalent((t) => Math.sin(2 * t), (t) => 2.001 * Math.sin(t) * Math.cos(t), dom)).toBe(false);
-    expect(formulasEquivalent((t) => Math.sin(2 * t), (t) => Math.sin(2 * t) + 1e-4, dom)).toBe(false);
-    expect(formulasEquivalent((t) => Math.sin(2 * t), (t) => Math.sin(2.0001 * t), dom)).toBe(false);
-    expect(formulasEquivalent((t) => Math.sin(2 * t), (t) => Math.sin(t), dom)).toBe(false);
+    expect(
+      formulasEquivalent(
+        (t) => Math.sin(2 * t),
+        (t) => 2 * Math.sin(t) * Math.cos(t),
+        dom,
+      ),
+    ).toBe(true);
+    expect(
+      formulasEquivalent(
+        (t) => 1 - Math.cos(t) ** 2,
+        (t) => (1 - Math.cos(2 * t)) / 2,
+        dom,
+      ),
+    ).toBe(true);
+    expect(
+      formulasEquivalent(
+        (t) => Math.sin(2 * t),
+        (t) => 2.001 * Math.sin(t) * Math.cos(t),
+        dom,
+      ),
+    ).toBe(false);
+    expect(
+      formulasEquivalent(
+        (t) => Math.sin(2 * t),
+        (t) => Math.sin(2 * t) + 1e-4,
+        dom,
+      ),
+    ).toBe(false);
+    expect(
+      formulasEquivalent(
+        (t) => Math.sin(2 * t),
+        (t) => Math.sin(2.0001 * t),
+        dom,
+      ),
+    ).toBe(false);
+    expect(
+      formulasEquivalent(
+        (t) => Math.sin(2 * t),
+        (t) => Math.sin(t),
+        dom,
+      ),
+    ).toBe(false);
   });
 });

@@ -20,15 +20,15 @@ describe('scheduleMath: formulas near the screen first, the rest in idle time', 
     const seen: string[] = [];
     const els = Array.from({ length: 8 }, () => ({}) as Element);
     els.forEach((el, i) => scheduleMath(el, () => seen.push(`f${i}`)));
-    const io = FakeIO.all[0]!;
+    const io = FakeIO.all[0];
     // nothing runs before the observer has said where each formula is
     await settle();
     expect(seen).toEqual([]);
-    io.report(els[0]!, true);
-    for (let i = 1; i < 8; i++) io.report(els[i]!, false);
+    io.report(els[0], true);
+    for (let i = 1; i < 8; i++) io.report(els[i], false);
     await settle();
     expect(seen).toEqual(['f0']); // the near one, without waiting for idle time
-    io.report(els[6]!, true); // scrolled near: promoted
+    io.report(els[6], true); // scrolled near: promoted
     await settle();
     expect(seen).toEqual(['f0', 'f6']);
     runIdle();
@@ -40,7 +40,7 @@ describe('scheduleMath: formulas near the screen first, the rest in idle time', 
 
   it('a cancelled formula never runs; an element known to be near runs its next formula at once', async () => {
     const { scheduleMath } = await import('../../src/ui/mathQueue');
-    const io = FakeIO.all[0]!;
+    const io = FakeIO.all[0];
     const seen: string[] = [];
     const a = {} as Element;
     const b = {} as Element;
@@ -59,7 +59,7 @@ describe('scheduleMath: formulas near the screen first, the rest in idle time', 
 
   it('flushMathForPrint runs everything still waiting, synchronously', async () => {
     const { scheduleMath, flushMathForPrint } = await import('../../src/ui/mathQueue');
-    const io = FakeIO.all[0]!;
+    const io = FakeIO.all[0];
     const seen: string[] = [];
     const a = {} as Element;
     const b = {} as Element;

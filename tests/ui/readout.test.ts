@@ -13,7 +13,12 @@ describe('readoutValue (the contract’s data-value)', () => {
     expect(readoutValue('two-hits')).toBe('two-hits');
   });
   it('round-trips every finite double exactly (property)', () => {
-    fc.assert(fc.property(fc.double({ noNaN: true, noDefaultInfinity: true }), (x) => Object.is(Number(readoutValue(x)), x) || (x === 0 && Number(readoutValue(x)) === 0)));
+    fc.assert(
+      fc.property(
+        fc.double({ noNaN: true, noDefaultInfinity: true }),
+        (x) => Object.is(Number(readoutValue(x)), x) || (x === 0 && Number(readoutValue(x)) === 0),
+      ),
+    );
   });
 });
 
@@ -33,7 +38,13 @@ describe('formatNumber (visible text)', () => {
     expect(formatNumber(-2e8, 6)).toBe('-2×10⁸');
     expect(formatNumber(1234567, 3)).toBe('1.23×10⁶');
     expect(formatNumber(123456, 6)).toBe('123456');
-    fc.assert(fc.property(fc.double({ noNaN: true, noDefaultInfinity: true }), fc.integer({ min: 1, max: 17 }), (x, d) => !/e/.test(formatNumber(x, d))));
+    fc.assert(
+      fc.property(
+        fc.double({ noNaN: true, noDefaultInfinity: true }),
+        fc.integer({ min: 1, max: 17 }),
+        (x, d) => !/e/.test(formatNumber(x, d)),
+      ),
+    );
   });
   it('never shows a non-finite number', () => {
     expect(formatNumber(NaN)).toBe('—');

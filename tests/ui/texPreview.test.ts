@@ -30,7 +30,29 @@ describe('texPreview: TeX read as plain text while KaTeX is on its way', () => {
   });
 
   it('never throws, and never returns a backslash for input made of known commands', () => {
-    const known = ['\\alpha', '\\frac{1}{2}', '\\sqrt{x}', '\\int_0^1', '\\sum_{i=1}^{n}', '\\cdot', '\\left(', '\\right)', '\\text{ab}', '\\hat{x}', '\\\\', '&', 'x^2', 'y_i', '{', '}', ' ', 'a', '1', '+', '='];
+    const known = [
+      '\\alpha',
+      '\\frac{1}{2}',
+      '\\sqrt{x}',
+      '\\int_0^1',
+      '\\sum_{i=1}^{n}',
+      '\\cdot',
+      '\\left(',
+      '\\right)',
+      '\\text{ab}',
+      '\\hat{x}',
+      '\\\\',
+      '&',
+      'x^2',
+      'y_i',
+      '{',
+      '}',
+      ' ',
+      'a',
+      '1',
+      '+',
+      '=',
+    ];
     fc.assert(
       fc.property(fc.array(fc.constantFrom(...known), { maxLength: 40 }), fc.boolean(), (parts, display) => {
         const out = texPreview(parts.join(''), display);
@@ -60,7 +82,9 @@ describe('texPreview under hostile nesting', () => {
     const tex = '\\frac{'.repeat(3000) + 'x' + '}{y}'.repeat(3000);
     const out = texPreview(tex);
     expect(typeof out).toBe('string');
-    expect(texPreview('\\sqrt{'.repeat(20) + 'x' + '}'.repeat(20))).toBe('√('.repeat(19) + '√x' + ')'.repeat(19));
+    expect(texPreview('\\sqrt{'.repeat(20) + 'x' + '}'.repeat(20))).toBe(
+      '√('.repeat(19) + '√x' + ')'.repeat(19),
+    );
   });
 });
 
@@ -89,10 +113,40 @@ describe('texPreview: the commands the scenes use', () => {
     for (const f of files) {
       const text = readFileSync(f, 'utf8');
       // TeX in String.raw templates (\cmd) and in ordinary strings (\\cmd)
-      for (const m of text.matchAll(/(?<![\\A-Za-z])\\{1,2}([A-Za-z]{2,})/g)) names.add(m[1]!);
+      for (const m of text.matchAll(/(?<![\\A-Za-z])\\{1,2}([A-Za-z]{2,})/g)) names.add(m[1]);
     }
     // JavaScript escapes and regular expressions, not TeX
-    const notTex = (n: string) => /^(n|b|u|t|r|s|d|w|x)[a-z]*$/.test(n) && !['theta', 'tau', 'times', 'tan', 'text', 'tfrac', 'to', 'sin', 'sum', 'sqrt', 'sim', 'sigma', 'delta', 'dfrac', 'big', 'boldsymbol', 'begin', 'rangle', 'rfloor', 'rVert', 'right', 'rho', 'xi', 'xrightarrow', 'nu', 'neq', 'nabla'].includes(n);
+    const notTex = (n: string) =>
+      /^(n|b|u|t|r|s|d|w|x)[a-z]*$/.test(n) &&
+      ![
+        'theta',
+        'tau',
+        'times',
+        'tan',
+        'text',
+        'tfrac',
+        'to',
+        'sin',
+        'sum',
+        'sqrt',
+        'sim',
+        'sigma',
+        'delta',
+        'dfrac',
+        'big',
+        'boldsymbol',
+        'begin',
+        'rangle',
+        'rfloor',
+        'rVert',
+        'right',
+        'rho',
+        'xi',
+        'xrightarrow',
+        'nu',
+        'neq',
+        'nabla',
+      ].includes(n);
     const used = [...names].filter((n) => !notTex(n));
     expect(used.length).toBeGreaterThan(30);
     for (const n of used) {
@@ -103,10 +157,11 @@ describe('texPreview: the commands the scenes use', () => {
   });
 });
 
-
 describe('texPreview: norms', () => {
   it('norm bars hug their contents and keep their distance from what is outside', () => {
-    expect(texPreview(String.raw`\lVert p - C \rVert^2 = r^2 \Rightarrow \lVert o + t d - C \rVert^2 = r^2`)).toBe('‖p − C‖² = r² ⇒ ‖o + t d − C‖² = r²');
+    expect(
+      texPreview(String.raw`\lVert p - C \rVert^2 = r^2 \Rightarrow \lVert o + t d - C \rVert^2 = r^2`),
+    ).toBe('‖p − C‖² = r² ⇒ ‖o + t d − C‖² = r²');
     expect(texPreview(String.raw`c = \lVert o - C\rVert^2 - r^2`)).toBe('c = ‖o − C‖² − r²');
   });
 });

@@ -5,7 +5,10 @@ import { parseParams, serializeParams } from '../../src/app/params';
 
 describe('timeline advance', () => {
   it('moves max/duration position units per second at 1×, scaled by speed', () => {
-    expect(advance(0, 500, { max: 1, duration: 2, speed: 1, loop: false })).toEqual({ t: 0.25, ended: false });
+    expect(advance(0, 500, { max: 1, duration: 2, speed: 1, loop: false })).toEqual({
+      t: 0.25,
+      ended: false,
+    });
     expect(advance(0, 500, { max: 64, duration: 4, speed: 4, loop: false }).t).toBeCloseTo(32, 12);
     expect(advance(0, 500, { max: 64, duration: 4, speed: 0.25, loop: false }).t).toBeCloseTo(2, 12);
   });
@@ -17,11 +20,17 @@ describe('timeline advance', () => {
   });
   it('never leaves [0, max] for any finite input', () => {
     fc.assert(
-      fc.property(fc.double({ min: 0, max: 100, noNaN: true }), fc.double({ min: 0, max: 1e4, noNaN: true }), fc.double({ min: 0.01, max: 1000, noNaN: true }), fc.boolean(), (t0, dt, max, loop) => {
-        const t = Math.min(t0, max);
-        const r = advance(t, dt, { max, duration: 3, speed: 2, loop });
-        return r.t >= 0 && r.t <= max;
-      }),
+      fc.property(
+        fc.double({ min: 0, max: 100, noNaN: true }),
+        fc.double({ min: 0, max: 1e4, noNaN: true }),
+        fc.double({ min: 0.01, max: 1000, noNaN: true }),
+        fc.boolean(),
+        (t0, dt, max, loop) => {
+          const t = Math.min(t0, max);
+          const r = advance(t, dt, { max, duration: 3, speed: 2, loop });
+          return r.t >= 0 && r.t <= max;
+        },
+      ),
     );
   });
 });

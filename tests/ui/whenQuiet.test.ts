@@ -21,7 +21,9 @@ function fakeIdle(busySpans: Array<[number, number]>) {
     });
     while (t < until && settled === null) {
       t += 50;
-      for (const tm of timers.splice(0)) if (tm.at <= t) tm.cb(); else timers.push(tm);
+      for (const tm of timers.splice(0))
+        if (tm.at <= t) tm.cb();
+        else timers.push(tm);
       const busy = busySpans.some(([a, b]) => t >= a && t < b);
       const cb = pendingIdle;
       pendingIdle = null;
@@ -44,7 +46,10 @@ describe('whenQuiet', () => {
   });
 
   it('a busy stretch starts the count again', async () => {
-    const { api, run } = fakeIdle([[0, 2000], [2600, 3000]]);
+    const { api, run } = fakeIdle([
+      [0, 2000],
+      [2600, 3000],
+    ]);
     const at = await run(whenQuiet({ quietMs: 1000, maxMs: 30_000, api }), 10_000);
     expect(at!).toBeGreaterThanOrEqual(4000);
     expect(at!).toBeLessThan(4300);

@@ -12,7 +12,10 @@ class FakeWorker {
   onerror: ((e: ErrorEvent) => void) | null = null;
   terminated = false;
   transfers: Transferable[][] = [];
-  private inner: { onmessage: ((e: MessageEvent) => void) | null; postMessage: (m: unknown, t?: Transferable[]) => void };
+  private inner: {
+    onmessage: ((e: MessageEvent) => void) | null;
+    postMessage: (m: unknown, t?: Transferable[]) => void;
+  };
   constructor(tasks: Parameters<typeof exposeTasks>[0]) {
     this.inner = {
       onmessage: null,
@@ -64,9 +67,14 @@ describe('runWorkerTask', () => {
   it('reports progress in order and resolves with the result, transferring typed arrays', async () => {
     let w!: FakeWorker;
     const seen: number[] = [];
-    const r = await runWorkerTask<{ total: number; values: Float64Array }>(() => (w = new FakeWorker(tasks)) as unknown as Worker, 'sum', { n: 40 }, {
-      onProgress: (f) => seen.push(f),
-    });
+    const r = await runWorkerTask<{ total: number; values: Float64Array }>(
+      () => (w = new FakeWorker(tasks)) as unknown as Worker,
+      'sum',
+      { n: 40 },
+      {
+        onProgress: (f) => seen.push(f),
+      },
+    );
     expect(r.total).toBe((39 * 40) / 2);
     expect(r.values.length).toBe(40);
     expect(seen).toEqual([0.25, 0.5, 0.75, 1]);
@@ -75,17 +83,26 @@ describe('runWorkerTask', () => {
   });
 
   it('rejects with the task’s message on error', async () => {
-    await expect(runWorkerTask(() => new FakeWorker(tasks) as unknown as Worker, 'fail', {})).rejects.toThrow('density is negative');
+    await expect(runWorkerTask(() => new FakeWorker(tasks) as unknown as Worker, 'fail', {})).rejects.toThrow(
+      'density is negative',
+    );
   });
 
   it('rejects unknown tasks', async () => {
-    await expect(runWorkerTask(() => new FakeWorker(tasks) as unknown as Worker, 'nope', {})).rejects.toThrow(/unknown task/);
+    await expect(runWorkerTask(() => new FakeWorker(tasks) as unknown as Worker, 'nope', {})).rejects.toThrow(
+      /unknown task/,
+    );
   });
 
   it('cancels: terminates the worker and rejects with an AbortError', async () => {
     let w!: FakeWorker;
     const ctl = new AbortController();
-    const p = runWorkerTask(() => (w = new FakeWorker(tasks)) as unknown as Worker, 'forever', {}, { signal: ctl.signal });
+    const p = runWorkerTask(
+      () => (w = new FakeWorker(tasks)) as unknown as Worker,
+      'forever',
+      {},
+      { signal: ctl.signal },
+    );
     await new Promise((r) => setTimeout(r, 5));
     ctl.abort();
     const err = await p.catch((e) => e);
@@ -97,7 +114,12 @@ describe('runWorkerTask', () => {
     const ctl = new AbortController();
     ctl.abort();
     let made = false;
-    const err = await runWorkerTask(() => ((made = true), new FakeWorker(tasks)) as unknown as Worker, 'sum', { n: 1 }, { signal: ctl.signal }).catch((e) => e);
+    const err = await runWorkerTask(
+      () => ((made = true), new FakeWorker(tasks)) as unknown as Worker,
+      'sum',
+      { n: 1 },
+      { signal: ctl.signal },
+    ).catch((e) => e);
     expect(isCancelled(err)).toBe(true);
     expect(made).toBe(false);
   });

@@ -71,9 +71,9 @@ export class ConvergenceSeries {
     let m2 = this.m2;
     let k = this.recorded;
     const K = this.n.length;
-    let next = k < K ? this.n[k]! : Infinity;
+    let next = k < K ? this.n[k] : Infinity;
     for (let i = start; i < end; i++) {
-      const y = terms[i]!;
+      const y = terms[i];
       if (!Number.isFinite(y)) {
         this.invalid++;
         continue;
@@ -87,7 +87,7 @@ export class ConvergenceSeries {
         this.absError[k] = Math.abs(mean - this.exact);
         this.stderr[k] = n > 1 ? Math.sqrt(m2 / (n - 1) / n) : NaN;
         k++;
-        next = k < K ? this.n[k]! : Infinity;
+        next = k < K ? this.n[k] : Infinity;
       }
     }
     this.count = n;

@@ -55,7 +55,7 @@ export function uniformEstimate(
   const len = b - a;
   let invalid = 0;
   for (let i = start; i < end; i++) {
-    const f = fValues[i]!;
+    const f = fValues[i];
     if (!Number.isFinite(f)) {
       invalid++;
       continue;
@@ -81,8 +81,8 @@ export function importanceTermsInto(
 ): number {
   let invalid = 0;
   for (let i = start; i < end; i++) {
-    const f = fValues[i]!;
-    const p = pdfValues[i]!;
+    const f = fValues[i];
+    const p = pdfValues[i];
     if (f === 0) out[i] = 0;
     else if (p > 0 && p < Infinity && Number.isFinite(f)) out[i] = f / p;
     else {
@@ -107,8 +107,8 @@ export function importanceEstimate(
   const w = new Welford();
   let invalid = 0;
   for (let i = start; i < end; i++) {
-    const f = fValues[i]!;
-    const p = pdfValues[i]!;
+    const f = fValues[i];
+    const p = pdfValues[i];
     if (f === 0) w.add(0);
     else if (p > 0 && p < Infinity && Number.isFinite(f)) w.add(f / p);
     else invalid++;
@@ -124,7 +124,7 @@ export function estimateFromTerms(terms: ArrayLike<number>, start = 0, end = ter
   const w = new Welford();
   let invalid = 0;
   for (let i = start; i < end; i++) {
-    const y = terms[i]!;
+    const y = terms[i];
     if (Number.isFinite(y)) w.add(y);
     else invalid++;
   }

@@ -11,7 +11,7 @@ export function rmse(estimates: ArrayLike<number>, exact: number, start = 0, end
   let s = 0;
   let c = 0;
   for (let i = start; i < end; i++) {
-    const d = estimates[i]! - exact;
+    const d = estimates[i] - exact;
     s += d * d;
     c++;
   }
@@ -26,12 +26,12 @@ export function quantile(values: ArrayLike<number>, q: number, start = 0, end = 
   const m = end - start;
   if (m <= 0) return NaN;
   const s = new Float64Array(m);
-  for (let i = 0; i < m; i++) s[i] = values[start + i]!;
+  for (let i = 0; i < m; i++) s[i] = values[start + i];
   s.sort();
   const h = (m - 1) * Math.min(1, Math.max(0, q));
   const lo = Math.floor(h);
   const hi = Math.min(m - 1, lo + 1);
-  return s[lo]! + (h - lo) * (s[hi]! - s[lo]!);
+  return s[lo] + (h - lo) * (s[hi] - s[lo]);
 }
 
 /**
@@ -61,14 +61,17 @@ export class RmseAccumulator {
     const K = this.n.length;
     const o = this.runs * K;
     for (let k = 0; k < K; k++) {
-      this.estimates[o + k] = series.estimate[k]!;
-      this.errors[o + k] = Math.abs(series.estimate[k]! - this.exact);
+      this.estimates[o + k] = series.estimate[k];
+      this.errors[o + k] = Math.abs(series.estimate[k] - this.exact);
     }
     this.runs++;
   }
 
   /** Summary per checkpoint: RMSE, mean estimate, and the [qLo, qHi] quantiles of |error|. */
-  summary(qLo = 0.1, qHi = 0.9): { n: Float64Array; rmse: Float64Array; mean: Float64Array; lo: Float64Array; hi: Float64Array } {
+  summary(
+    qLo = 0.1,
+    qHi = 0.9,
+  ): { n: Float64Array; rmse: Float64Array; mean: Float64Array; lo: Float64Array; hi: Float64Array } {
     const K = this.n.length;
     const R = this.runs;
     const out = {
@@ -83,8 +86,8 @@ export class RmseAccumulator {
     for (let k = 0; k < K; k++) {
       let m = 0;
       for (let r = 0; r < R; r++) {
-        const e = this.errors[r * K + k]!;
-        const x = this.estimates[r * K + k]!;
+        const e = this.errors[r * K + k];
+        const x = this.estimates[r * K + k];
         if (!Number.isFinite(e)) continue;
         col[m] = e;
         est[m] = x;
@@ -93,7 +96,7 @@ export class RmseAccumulator {
       if (m === 0) continue;
       out.rmse[k] = rmse(est, this.exact, 0, m);
       let s = 0;
-      for (let i = 0; i < m; i++) s += est[i]!;
+      for (let i = 0; i < m; i++) s += est[i];
       out.mean[k] = s / m;
       out.lo[k] = quantile(col, qLo, 0, m);
       out.hi[k] = quantile(col, qHi, 0, m);

@@ -45,8 +45,8 @@ export function fillTerms(prob: Problem1D, n: number, start: number, end: number
   prob.pdf.sampleBatch(u, x, p, 0, m);
   const f = prob.f;
   for (let i = 0; i < m; i++) {
-    const fx = f(x[i]!);
-    const pi = p[i]!;
+    const fx = f(x[i]);
+    const pi = p[i];
     y[i] = fx === 0 ? 0 : pi > 0 && Number.isFinite(fx) ? fx / pi : NaN;
   }
 }
@@ -63,12 +63,18 @@ export function estimate1D(prob: Problem1D, n: number, buf = new Batch1D()): McE
     const e = Math.min(n, s + BATCH);
     fillTerms(prob, n, s, e, buf);
     for (let i = 0; i < e - s; i++) {
-      const y = buf.y[i]!;
+      const y = buf.y[i];
       if (Number.isFinite(y)) w.add(y);
       else invalid++;
     }
   }
-  return { n: w.count, estimate: w.count > 0 ? w.mean : NaN, variance: w.variance(), stderr: w.standardError(), invalid };
+  return {
+    n: w.count,
+    estimate: w.count > 0 ? w.mean : NaN,
+    variance: w.variance(),
+    stderr: w.standardError(),
+    invalid,
+  };
 }
 
 /**
@@ -95,7 +101,7 @@ export class EstimateRun1D {
       const e = Math.min(n, s + BATCH);
       fillTerms(this.prob, n, s, e, buf);
       for (let i = 0; i < e - s; i++) {
-        const y = buf.y[i]!;
+        const y = buf.y[i];
         if (Number.isFinite(y)) w.add(y);
         else this.invalid++;
       }
@@ -107,7 +113,13 @@ export class EstimateRun1D {
   /** The estimate of the points processed so far (all n once step() has returned true). */
   result(): McEstimate {
     const w = this.w;
-    return { n: w.count, estimate: w.count > 0 ? w.mean : NaN, variance: w.variance(), stderr: w.standardError(), invalid: this.invalid };
+    return {
+      n: w.count,
+      estimate: w.count > 0 ? w.mean : NaN,
+      variance: w.variance(),
+      stderr: w.standardError(),
+      invalid: this.invalid,
+    };
   }
 }
 
@@ -134,7 +146,7 @@ export class ConvergenceRun1D {
     const cps = this.series.n;
     let t = 0;
     if (prob.sequence === 'stratified') for (const c of cps) t += c;
-    else t = cps.length ? cps[cps.length - 1]! : 0;
+    else t = cps.length ? cps[cps.length - 1] : 0;
     this.total = t;
   }
 
@@ -144,7 +156,7 @@ export class ConvergenceRun1D {
     const K = cps.length;
     let left = Math.max(1, budget);
     if (this.prob.sequence !== 'stratified') {
-      const nMax = K ? cps[K - 1]! : 0;
+      const nMax = K ? cps[K - 1] : 0;
       while (left > 0 && this.pos < nMax) {
         const e = Math.min(nMax, this.pos + Math.min(BATCH, left));
         fillTerms(this.prob, nMax, this.pos, e, this.buf);
@@ -157,11 +169,11 @@ export class ConvergenceRun1D {
     }
     // stratified: one full n_k-point set per checkpoint
     while (left > 0 && this.k < K) {
-      const n = cps[this.k]!;
+      const n = cps[this.k];
       const e = Math.min(n, this.pos + Math.min(BATCH, left));
       fillTerms(this.prob, n, this.pos, e, this.buf);
       for (let i = 0; i < e - this.pos; i++) {
-        const y = this.buf.y[i]!;
+        const y = this.buf.y[i];
         if (Number.isFinite(y)) this.w.add(y);
         else this.invalidInSet++;
       }

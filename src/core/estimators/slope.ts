@@ -16,13 +16,18 @@ export interface SlopeFit {
 }
 
 /** Fit log10(y) against log10(x) over [start, end) (see module doc). */
-export function fitLogLogSlope(x: ArrayLike<number>, y: ArrayLike<number>, start = 0, end = Math.min(x.length, y.length)): SlopeFit {
+export function fitLogLogSlope(
+  x: ArrayLike<number>,
+  y: ArrayLike<number>,
+  start = 0,
+  end = Math.min(x.length, y.length),
+): SlopeFit {
   let n = 0;
   let sx = 0;
   let sy = 0;
   for (let i = start; i < end; i++) {
-    const xi = x[i]!;
-    const yi = y[i]!;
+    const xi = x[i];
+    const yi = y[i];
     if (!(xi > 0 && yi > 0 && xi < Infinity && yi < Infinity)) continue;
     sx += Math.log10(xi);
     sy += Math.log10(yi);
@@ -35,8 +40,8 @@ export function fitLogLogSlope(x: ArrayLike<number>, y: ArrayLike<number>, start
   let sxy = 0;
   let syy = 0;
   for (let i = start; i < end; i++) {
-    const xi = x[i]!;
-    const yi = y[i]!;
+    const xi = x[i];
+    const yi = y[i];
     if (!(xi > 0 && yi > 0 && xi < Infinity && yi < Infinity)) continue;
     const dx = Math.log10(xi) - mx;
     const dy = Math.log10(yi) - my;

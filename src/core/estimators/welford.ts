@@ -34,7 +34,7 @@ export class Welford {
     let mean = this.mean;
     let m2 = this.m2;
     for (let i = start; i < end; i++) {
-      const x = values[i]!;
+      const x = values[i];
       n++;
       const d = x - mean;
       mean += d / n;

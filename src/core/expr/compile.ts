@@ -111,7 +111,7 @@ function describeVars(variables: readonly string[]): string {
 }
 
 function canonicalName(name: string): string {
-  return Object.hasOwn(SYMBOL_ALIASES, name) ? SYMBOL_ALIASES[name]! : name;
+  return Object.hasOwn(SYMBOL_ALIASES, name) ? SYMBOL_ALIASES[name] : name;
 }
 
 const KIND_NAMES: Readonly<Record<string, string>> = {
@@ -222,15 +222,26 @@ function binary(op: string, l: Compiled, r: Compiled): Fn4 {
 }
 
 function compileNode(node: NodeLike, variables: readonly string[], depth: number): Compiled {
-  if (depth > MAX_EXPRESSION_DEPTH) throw new ExpressionError(`the expression is nested too deeply (more than ${MAX_EXPRESSION_DEPTH} levels)`);
+  if (depth > MAX_EXPRESSION_DEPTH)
+    throw new ExpressionError(
+      `the expression is nested too deeply (more than ${MAX_EXPRESSION_DEPTH} levels)`,
+    );
   switch (node.type) {
     case 'ConstantNode': {
       const v = node.value;
-      if (v === undefined) throw new ExpressionError('the expression is empty (everything after # is a comment)');
+      if (v === undefined)
+        throw new ExpressionError('the expression is empty (everything after # is a comment)');
       if (typeof v !== 'number') {
-        throw new ExpressionError(typeof v === 'string' ? 'text strings are not allowed' : `the constant '${String(v)}' is not a number`);
+        throw new ExpressionError(
+          typeof v === 'string'
+            ? 'text strings are not allowed'
+            : `the constant '${String(v)}' is not a number`,
+        );
       }
-      if (!Number.isFinite(v)) throw new ExpressionError(`a number in the expression is ${Number.isNaN(v) ? 'NaN' : 'infinite or too large'} (numbers must be finite)`);
+      if (!Number.isFinite(v))
+        throw new ExpressionError(
+          `a number in the expression is ${Number.isNaN(v) ? 'NaN' : 'infinite or too large'} (numbers must be finite)`,
+        );
       return constantFn(v);
     }
     case 'SymbolNode': {
@@ -238,7 +249,8 @@ function compileNode(node: NodeLike, variables: readonly string[], depth: number
       const name = canonicalName(raw);
       const k = variables.indexOf(name);
       if (k >= 0) return { fn: argGetter(k), constant: false, varIndex: k };
-      if (Object.prototype.hasOwnProperty.call(EXPRESSION_CONSTANTS, name)) return constantFn(EXPRESSION_CONSTANTS[name]!);
+      if (Object.prototype.hasOwnProperty.call(EXPRESSION_CONSTANTS, name))
+        return constantFn(EXPRESSION_CONSTANTS[name]);
       throw new ExpressionError(`unknown symbol '${raw}' — ${describeVars(variables)}`);
     }
     case 'ParenthesisNode':
@@ -248,31 +260,45 @@ function compileNode(node: NodeLike, variables: readonly string[], depth: number
       // A left-associative chain (1 + 1 + … + 1, a * b * c) is flat to the reader: its left operand
       // of the same operator does not count as a level of nesting.
       const args = (node.args as NodeLike[]).map((a, i) =>
-        compileNode(a, variables, i === 0 && a.type === 'OperatorNode' && sameFamily(String(a.fn), fnName) && (node.args as NodeLike[]).length === 2 ? depth : depth + 1),
+        compileNode(
+          a,
+          variables,
+          i === 0 &&
+            a.type === 'OperatorNode' &&
+            sameFamily(String(a.fn), fnName) &&
+            (node.args as NodeLike[]).length === 2
+            ? depth
+            : depth + 1,
+        ),
       );
       if (args.length === 1 && (fnName === 'unaryMinus' || fnName === 'unaryPlus')) {
-        const a = args[0]!;
+        const a = args[0];
         if (fnName === 'unaryPlus') return a;
         const f = a.fn;
         return fold({ fn: (x, y, z, w) => -f(x, y, z, w), constant: a.constant });
       }
       if (Object.prototype.hasOwnProperty.call(BINARY, fnName) && args.length === 2) {
-        const fn = binary(fnName, args[0]!, args[1]!);
-        return fold({ fn, constant: args[0]!.constant && args[1]!.constant });
+        const fn = binary(fnName, args[0], args[1]);
+        return fold({ fn, constant: args[0].constant && args[1].constant });
       }
       throw new ExpressionError(`the operator '${String(node.op)}' is not allowed (use + − * / ^)`);
     }
     case 'FunctionNode': {
       const fnNode = node.fn as NodeLike;
-      if (fnNode.type !== 'SymbolNode') throw new ExpressionError('only calls of named functions like sin(x) are allowed');
+      if (fnNode.type !== 'SymbolNode')
+        throw new ExpressionError('only calls of named functions like sin(x) are allowed');
       const raw = String(fnNode.name);
-      const entry = Object.prototype.hasOwnProperty.call(EXPRESSION_FUNCTIONS, raw) ? EXPRESSION_FUNCTIONS[raw] : undefined;
+      const entry = Object.prototype.hasOwnProperty.call(EXPRESSION_FUNCTIONS, raw)
+        ? EXPRESSION_FUNCTIONS[raw]
+        : undefined;
       if (!entry) throw new ExpressionError(`function '${raw}' is not allowed`);
       const [impl, lo, hi] = entry;
       const argNodes = node.args as NodeLike[];
       if (argNodes.length < lo || argNodes.length > hi) {
         const want = lo === hi ? `${lo}` : `${lo} to ${hi}`;
-        throw new ExpressionError(`function '${raw}' takes ${want} argument${hi === 1 ? '' : 's'}, got ${argNodes.length}`);
+        throw new ExpressionError(
+          `function '${raw}' takes ${want} argument${hi === 1 ? '' : 's'}, got ${argNodes.length}`,
+        );
       }
       const args = argNodes.map((a) => compileNode(a, variables, depth + 1));
       const constant = args.every((a) => a.constant);
@@ -280,24 +306,24 @@ function compileNode(node: NodeLike, variables: readonly string[], depth: number
       let fn: Fn4;
       if (fs.length === 1) {
         const onVar = Object.hasOwn(UNARY_ON_VAR, raw) ? UNARY_ON_VAR[raw] : undefined;
-        const k = args[0]!.varIndex;
+        const k = args[0].varIndex;
         const make = Object.hasOwn(UNARY_MAKERS, raw) ? UNARY_MAKERS[raw] : undefined;
         if (onVar && (k === 0 || k === 1)) fn = onVar[k];
-        else if (make) fn = make(fs[0]!);
+        else if (make) fn = make(fs[0]);
         else {
-          const f0 = fs[0]!;
+          const f0 = fs[0];
           const g = impl as (a: number) => number;
           fn = (x, y, z, w) => g(f0(x, y, z, w));
         }
       } else if (fs.length === 2) {
-        const f = fs[0]!;
-        const h = fs[1]!;
+        const f = fs[0];
+        const h = fs[1];
         const g = impl as (a: number, b: number) => number;
         fn = (x, y, z, w) => g(f(x, y, z, w), h(x, y, z, w));
       } else {
         const buf = new Array<number>(fs.length);
         fn = (x, y, z, w) => {
-          for (let i = 0; i < fs.length; i++) buf[i] = fs[i]!(x, y, z, w);
+          for (let i = 0; i < fs.length; i++) buf[i] = fs[i](x, y, z, w);
           return impl(...buf);
         };
       }

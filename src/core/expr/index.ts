@@ -7,7 +7,13 @@
  */
 import type { Failure } from '../failure';
 import { treeToTex } from './tex';
-import { checkAndCompile, canonicalizeTree, ExpressionError, MAX_EXPRESSION_LENGTH, type CompiledFn } from './compile';
+import {
+  checkAndCompile,
+  canonicalizeTree,
+  ExpressionError,
+  MAX_EXPRESSION_LENGTH,
+  type CompiledFn,
+} from './compile';
 
 export * from './compile';
 export { treeToTex } from './tex';
@@ -54,7 +60,8 @@ export type CompileFailureKind = 'empty' | 'too-long' | 'unavailable' | 'syntax'
  * function's domain the result is NaN, which callers must treat as invalid.
  */
 export function compileExpression(src: string, variables: readonly string[]): Promise<CompileResult> {
-  if (typeof src !== 'string') return Promise.resolve({ ok: false, kind: 'invalid', message: 'the expression must be text' });
+  if (typeof src !== 'string')
+    return Promise.resolve({ ok: false, kind: 'invalid', message: 'the expression must be text' });
   // Results are immutable, so identical requests share one (re-renders, workers, URL round trips).
   const key = variables.join(',') + '\u0000' + src;
   const hit = cache.get(key);
@@ -81,7 +88,11 @@ async function compileUncached(src: string, variables: readonly string[]): Promi
   const trimmed = src.trim();
   if (trimmed.length === 0) return { ok: false, kind: 'empty', message: 'the expression is empty' };
   if (src.length > MAX_EXPRESSION_LENGTH) {
-    return { ok: false, kind: 'too-long', message: `the expression is too long (${src.length} characters; at most ${MAX_EXPRESSION_LENGTH})` };
+    return {
+      ok: false,
+      kind: 'too-long',
+      message: `the expression is too long (${src.length} characters; at most ${MAX_EXPRESSION_LENGTH})`,
+    };
   }
   let engine: Engine;
   try {
@@ -107,8 +118,13 @@ async function compileUncached(src: string, variables: readonly string[]): Promi
     return { ok: true, fn, text: canon.toString(), tex };
   } catch (e) {
     if (e instanceof ExpressionError) return { ok: false, kind: 'invalid', message: e.message };
-    if (e instanceof RangeError) return { ok: false, kind: 'too-deep', message: 'the expression is nested too deeply' };
-    return { ok: false, kind: 'invalid', message: `the expression could not be compiled: ${e instanceof Error ? e.message : String(e)}` };
+    if (e instanceof RangeError)
+      return { ok: false, kind: 'too-deep', message: 'the expression is nested too deeply' };
+    return {
+      ok: false,
+      kind: 'invalid',
+      message: `the expression could not be compiled: ${e instanceof Error ? e.message : String(e)}`,
+    };
   }
 }
 
@@ -126,7 +142,10 @@ function syntaxMessage(e: unknown): string {
  * LaTeX for an expression (aliases normalized), for display. If it does not parse or fails the
  * whitelist, returns the source as \text{…} so the page can still show something.
  */
-export async function toTex(src: string, variables: readonly string[] = ['theta', 'phi', 'x']): Promise<string> {
+export async function toTex(
+  src: string,
+  variables: readonly string[] = ['theta', 'phi', 'x'],
+): Promise<string> {
   const r = await compileExpression(src, variables);
   if (r.ok) return r.tex;
   return '\\text{' + src.replace(/[\\{}$&#^_%~]/g, ' ') + '}';

@@ -65,7 +65,7 @@ function numberTex(v: unknown): string {
 }
 
 function symbolTex(raw: string): string {
-  const name = Object.hasOwn(SYMBOL_ALIASES, raw) ? SYMBOL_ALIASES[raw]! : raw;
+  const name = Object.hasOwn(SYMBOL_ALIASES, raw) ? SYMBOL_ALIASES[raw] : raw;
   const t = SYMBOL_TEX.get(name);
   if (t !== undefined) return t;
   if (/^[A-Za-z]$/.test(name)) return name;
@@ -103,7 +103,7 @@ function render(node: NodeLike): string {
       const args = node.args as NodeLike[];
       if (args.length === 1) {
         const sign = fn === 'unaryMinus' ? '-' : '+';
-        return `${sign}${child(args[0]!, 3)}`;
+        return `${sign}${child(args[0], 3)}`;
       }
       const [a, b] = args as [NodeLike, NodeLike];
       switch (fn) {
@@ -117,7 +117,8 @@ function render(node: NodeLike): string {
           return `\\frac{${render(unwrap(a))}}{${render(unwrap(b))}}`;
         case 'pow': {
           // a base that is itself an operator (or a power) needs visible parentheses
-          const base = precedenceOf(a) <= 4 && a.type === 'OperatorNode' ? `\\left(${render(a)}\\right)` : render(a);
+          const base =
+            precedenceOf(a) <= 4 && a.type === 'OperatorNode' ? `\\left(${render(a)}\\right)` : render(a);
           return `{${base}}^{${render(unwrap(b))}}`;
         }
         default:
@@ -140,9 +141,13 @@ function render(node: NodeLike): string {
         case 'ceil':
           return `\\left\\lceil ${list()}\\right\\rceil`;
         case 'pow':
-          return args.length === 2 ? `{\\left(${render(args[0]!)}\\right)}^{${render(args[1]!)}}` : `\\operatorname{pow}\\left(${list()}\\right)`;
+          return args.length === 2
+            ? `{\\left(${render(args[0])}\\right)}^{${render(args[1])}}`
+            : `\\operatorname{pow}\\left(${list()}\\right)`;
         case 'log':
-          return args.length === 2 ? `\\log_{${render(args[1]!)}}\\left(${render(args[0]!)}\\right)` : `\\ln\\left(${list()}\\right)`;
+          return args.length === 2
+            ? `\\log_{${render(args[1])}}\\left(${render(args[0])}\\right)`
+            : `\\ln\\left(${list()}\\right)`;
         default: {
           const op = FUNCTION_TEX.get(name) ?? `\\mathrm{${escapeText(name).replace(/ /g, '')}}`;
           return `${op}\\left(${list()}\\right)`;

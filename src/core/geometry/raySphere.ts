@@ -85,14 +85,27 @@ const EPS = Number.EPSILON / 2; // unit roundoff u = 2^-53
 export function validateRaySphere(o: Vec3, d: Vec3, c: Vec3, r: number): RaySphereError | null {
   const all = [o[0], o[1], o[2], d[0], d[1], d[2], c[0], c[1], c[2], r];
   if (!all.every(Number.isFinite)) {
-    return { ok: false, kind: 'non-finite', message: 'Every coordinate and the radius must be finite numbers.' };
+    return {
+      ok: false,
+      kind: 'non-finite',
+      message: 'Every coordinate and the radius must be finite numbers.',
+    };
   }
   if (!(r > 0)) {
-    return { ok: false, kind: 'bad-radius', message: `The radius must be positive (got r = ${r}); a sphere with r ≤ 0 has no surface.` };
+    return {
+      ok: false,
+      kind: 'bad-radius',
+      message: `The radius must be positive (got r = ${r}); a sphere with r ≤ 0 has no surface.`,
+    };
   }
   const a = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
   if (!(a > 0)) {
-    return { ok: false, kind: 'zero-direction', message: 'The direction d is zero (or too short to square in double precision): the ray points nowhere.' };
+    return {
+      ok: false,
+      kind: 'zero-direction',
+      message:
+        'The direction d is zero (or too short to square in double precision): the ray points nowhere.',
+    };
   }
   const fx = o[0] - c[0];
   const fy = o[1] - c[1];
@@ -103,13 +116,22 @@ export function validateRaySphere(o: Vec3, d: Vec3, c: Vec3, r: number): RaySphe
   // splits, which need |x| ≤ 2^996) finite: refuse coefficients beyond 2^960 ≈ 1e289.
   const LIMIT = 2 ** 960;
   if (!(a <= LIMIT && b * b <= LIMIT && 4 * a * ff <= LIMIT && 4 * a * r * r <= LIMIT && ff <= LIMIT)) {
-    return { ok: false, kind: 'overflow', message: 'The numbers are too large: the quadratic’s coefficients overflow double precision.' };
+    return {
+      ok: false,
+      kind: 'overflow',
+      message: 'The numbers are too large: the quadratic’s coefficients overflow double precision.',
+    };
   }
   return null;
 }
 
 /** Textbook coefficients a = d·d, b = 2 d·(o − c), c = |o − c|² − r² (double arithmetic, as written). */
-export function raySphereCoefficients(o: Vec3, d: Vec3, c: Vec3, r: number): { a: number; b: number; c: number } {
+export function raySphereCoefficients(
+  o: Vec3,
+  d: Vec3,
+  c: Vec3,
+  r: number,
+): { a: number; b: number; c: number } {
   const fx = o[0] - c[0];
   const fy = o[1] - c[1];
   const fz = o[2] - c[2];
@@ -124,7 +146,11 @@ export function raySphereCoefficients(o: Vec3, d: Vec3, c: Vec3, r: number): { a
  * Classify sorted roots (t0 ≤ t1) by the rules in the module comment.
  * `tangent` is the method's exact-zero discriminant flag.
  */
-export function classifyRoots(t0: number, t1: number, tangent: boolean): { case: RaySphereCase; tHit: number | null } {
+export function classifyRoots(
+  t0: number,
+  t1: number,
+  tangent: boolean,
+): { case: RaySphereCase; tHit: number | null } {
   if (t1 < 0) return { case: 'behind', tHit: null };
   if (tangent) return { case: 'tangent', tHit: t1 };
   if (t0 >= 0) return { case: 'two-hits', tHit: t0 };
@@ -137,7 +163,13 @@ export function classifyRoots(t0: number, t1: number, tangent: boolean): { case:
  * units of |d|. Source: Ray Tracing Gems ch. 7 (robust), Shirley, Ray Tracing in One Weekend §5–6
  * (textbook).
  */
-export function intersectRaySphere(o: Vec3, d: Vec3, c: Vec3, r: number, method: RaySphereMethod = 'stable'): RaySphereResult {
+export function intersectRaySphere(
+  o: Vec3,
+  d: Vec3,
+  c: Vec3,
+  r: number,
+  method: RaySphereMethod = 'stable',
+): RaySphereResult {
   const bad = validateRaySphere(o, d, c, r);
   if (bad) return bad;
   const coef = raySphereCoefficients(o, d, c, r);
@@ -187,11 +219,40 @@ export function intersectRaySphere(o: Vec3, d: Vec3, c: Vec3, r: number, method:
     t0 = t1 = -beta / a;
   }
   const cls = classifyRoots(t0, t1, tangent);
-  return { ok: true, method, a, b, c: cc, discriminant: disc, t0, t1, tHit: cls.tHit, case: cls.case, nearTangent };
+  return {
+    ok: true,
+    method,
+    a,
+    b,
+    c: cc,
+    discriminant: disc,
+    t0,
+    t1,
+    tHit: cls.tHit,
+    case: cls.case,
+    nearTangent,
+  };
 }
 
-function missResult(method: RaySphereMethod, coef: { a: number; b: number; c: number }, disc: number, nearTangent: boolean): RaySphereHit {
-  return { ok: true, method, a: coef.a, b: coef.b, c: coef.c, discriminant: disc, t0: null, t1: null, tHit: null, case: 'miss', nearTangent };
+function missResult(
+  method: RaySphereMethod,
+  coef: { a: number; b: number; c: number },
+  disc: number,
+  nearTangent: boolean,
+): RaySphereHit {
+  return {
+    ok: true,
+    method,
+    a: coef.a,
+    b: coef.b,
+    c: coef.c,
+    discriminant: disc,
+    t0: null,
+    t1: null,
+    tHit: null,
+    case: 'miss',
+    nearTangent,
+  };
 }
 
 /**

@@ -13,8 +13,26 @@
  * t = c′/q, q/a evaluated in double-double. Source: Dekker (1971), Shewchuk (1997) for the
  * arithmetic; Ray Tracing Gems ch. 7 for the formulas. Verified against mathjs BigNumber in tests.
  */
-import { type DD, ddAdd, ddDiv, ddMul, ddNeg, ddSign, ddSqrt, ddSub, ddToNumber, twoProduct, twoSum } from './doubleDouble';
-import { classifyRoots, validateRaySphere, type RaySphereCase, type RaySphereError, type Vec3 } from './raySphere';
+import {
+  type DD,
+  ddAdd,
+  ddDiv,
+  ddMul,
+  ddNeg,
+  ddSign,
+  ddSqrt,
+  ddSub,
+  ddToNumber,
+  twoProduct,
+  twoSum,
+} from './doubleDouble';
+import {
+  classifyRoots,
+  validateRaySphere,
+  type RaySphereCase,
+  type RaySphereError,
+  type Vec3,
+} from './raySphere';
 
 /** The reference result: values rounded to the nearest double, plus the double-double Δ/4. */
 export interface RaySphereReference {
@@ -38,11 +56,20 @@ export interface RaySphereReference {
  * Tangent policy: exact zero of the double-double Δ (only for inputs that are exactly tangent,
  * such as axis-aligned rays at distance r).
  */
-export function raySphereReference(o: Vec3, d: Vec3, c: Vec3, r: number): RaySphereReference | RaySphereError {
+export function raySphereReference(
+  o: Vec3,
+  d: Vec3,
+  c: Vec3,
+  r: number,
+): RaySphereReference | RaySphereError {
   const bad = validateRaySphere(o, d, c, r);
   if (bad) return bad;
   const f: [DD, DD, DD] = [twoSum(o[0], -c[0]), twoSum(o[1], -c[1]), twoSum(o[2], -c[2])];
-  const dv: [DD, DD, DD] = [[d[0], 0], [d[1], 0], [d[2], 0]];
+  const dv: [DD, DD, DD] = [
+    [d[0], 0],
+    [d[1], 0],
+    [d[2], 0],
+  ];
   const a = ddAdd(ddAdd(twoProduct(d[0], d[0]), twoProduct(d[1], d[1])), twoProduct(d[2], d[2]));
   const beta = ddAdd(ddAdd(ddMul(f[0], dv[0]), ddMul(f[1], dv[1])), ddMul(f[2], dv[2]));
   const ff = ddAdd(ddAdd(ddMul(f[0], f[0]), ddMul(f[1], f[1])), ddMul(f[2], f[2]));

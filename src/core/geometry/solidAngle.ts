@@ -18,9 +18,15 @@
 export type Vec3Like = readonly [number, number, number] | Float64Array | readonly number[];
 
 function tripleEdges(
-  ax: number, ay: number, az: number,
-  e1x: number, e1y: number, e1z: number,
-  e2x: number, e2y: number, e2z: number,
+  ax: number,
+  ay: number,
+  az: number,
+  e1x: number,
+  e1y: number,
+  e1z: number,
+  e2x: number,
+  e2y: number,
+  e2z: number,
 ): number {
   const cx = e1y * e2z - e1z * e2y;
   const cy = e1z * e2x - e1x * e2z;
@@ -35,12 +41,22 @@ function tripleEdges(
  * Source: Van Oosterom & Strackee 1983, with the triple product taken over edges (see file comment).
  */
 export function triangleSolidAngleEdges(
-  ax: number, ay: number, az: number,
-  e1x: number, e1y: number, e1z: number,
-  e2x: number, e2y: number, e2z: number,
+  ax: number,
+  ay: number,
+  az: number,
+  e1x: number,
+  e1y: number,
+  e1z: number,
+  e2x: number,
+  e2y: number,
+  e2z: number,
 ): number {
-  const bx = ax + e1x, by = ay + e1y, bz = az + e1z;
-  const cx = ax + e2x, cy = ay + e2y, cz = az + e2z;
+  const bx = ax + e1x,
+    by = ay + e1y,
+    bz = az + e1z;
+  const cx = ax + e2x,
+    cy = ay + e2y,
+    cz = az + e2z;
   const la = Math.hypot(ax, ay, az);
   const lb = Math.hypot(bx, by, bz);
   const lc = Math.hypot(cx, cy, cz);
@@ -62,9 +78,15 @@ export function triangleSolidAngleEdges(
  */
 export function triangleSolidAngle(a: Vec3Like, b: Vec3Like, c: Vec3Like): number {
   return triangleSolidAngleEdges(
-    a[0]!, a[1]!, a[2]!,
-    b[0]! - a[0]!, b[1]! - a[1]!, b[2]! - a[2]!,
-    c[0]! - a[0]!, c[1]! - a[1]!, c[2]! - a[2]!,
+    a[0],
+    a[1],
+    a[2],
+    b[0] - a[0],
+    b[1] - a[1],
+    b[2] - a[2],
+    c[0] - a[0],
+    c[1] - a[1],
+    c[2] - a[2],
   );
 }
 
@@ -83,9 +105,15 @@ export function triangleSolidAngle(a: Vec3Like, b: Vec3Like, c: Vec3Like): numbe
  * orientation, so their solid angles add. Source: Van Oosterom & Strackee 1983.
  */
 export function parallelogramSolidAngle(
-  dx: number, dy: number, dz: number,
-  exx: number, exy: number, exz: number,
-  eyx: number, eyy: number, eyz: number,
+  dx: number,
+  dy: number,
+  dz: number,
+  exx: number,
+  exy: number,
+  exz: number,
+  eyx: number,
+  eyy: number,
+  eyz: number,
 ): number {
   // Foot F = d + α ex + β ey with (F ⟂ ex, ey): solve the 2×2 Gram system.
   const gxx = exx * exx + exy * exy + exz * exz;
@@ -98,23 +126,36 @@ export function parallelogramSolidAngle(
   const al = (rx * gyy - ry * gxy) / det;
   const be = (ry * gxx - rx * gxy) / det;
   if (al > 0 && al < 1 && be > 0 && be < 1) {
-    const fx = dx + al * exx + be * eyx, fy = dy + al * exy + be * eyy, fz = dz + al * exz + be * eyz;
+    const fx = dx + al * exx + be * eyx,
+      fy = dy + al * exy + be * eyy,
+      fz = dz + al * exz + be * eyz;
     // Corner parameters relative to F, counter-clockwise: (0,0), (1,0), (1,1), (0,1).
     const ca = [-al, 1 - al, 1 - al, -al];
     const cb = [-be, -be, 1 - be, 1 - be];
     let sum = 0;
     for (let i = 0; i < 4; i++) {
       const j = (i + 1) & 3;
-      const a1 = ca[i]!, b1 = cb[i]!, a2 = ca[j]!, b2 = cb[j]!;
+      const a1 = ca[i],
+        b1 = cb[i],
+        a2 = ca[j],
+        b2 = cb[j];
       sum += triangleSolidAngleEdges(
-        fx, fy, fz,
-        a1 * exx + b1 * eyx, a1 * exy + b1 * eyy, a1 * exz + b1 * eyz,
-        a2 * exx + b2 * eyx, a2 * exy + b2 * eyy, a2 * exz + b2 * eyz,
+        fx,
+        fy,
+        fz,
+        a1 * exx + b1 * eyx,
+        a1 * exy + b1 * eyy,
+        a1 * exz + b1 * eyz,
+        a2 * exx + b2 * eyx,
+        a2 * exy + b2 * eyy,
+        a2 * exz + b2 * eyz,
       );
     }
     return Math.min(sum, 2 * Math.PI);
   }
-  const dgx = exx + eyx, dgy = exy + eyy, dgz = exz + eyz;
+  const dgx = exx + eyx,
+    dgy = exy + eyy,
+    dgz = exz + eyz;
   return (
     triangleSolidAngleEdges(dx, dy, dz, exx, exy, exz, dgx, dgy, dgz) +
     triangleSolidAngleEdges(dx, dy, dz, dgx, dgy, dgz, eyx, eyy, eyz)
@@ -157,7 +198,13 @@ export function patchSolidAngleApprox(dA: number, cosThetaL: number, r: number):
  * for a small distant rectangle — use {@link parallelogramSolidAngle} there. Source: e.g.
  * Mathar 2015, "Solid angle of a rectangular plate"; the corner formula is classical.
  */
-export function alignedRectangleSolidAngle(x0: number, x1: number, y0: number, y1: number, d: number): number {
+export function alignedRectangleSolidAngle(
+  x0: number,
+  x1: number,
+  y0: number,
+  y1: number,
+  d: number,
+): number {
   const ad = Math.abs(d);
   if (!(ad > 0)) return 0;
   const F = (a: number, b: number) => Math.atan((a * b) / (ad * Math.sqrt(a * a + b * b + ad * ad)));

@@ -20,7 +20,12 @@ import { sampleCosineHemisphere } from '../sampling/cosineHemisphere';
 import { Welford } from '../estimators/welford';
 import { ConvergenceSeries } from '../estimators/convergence';
 import { intersectRect, type RectLight } from './rectLight';
-import { makeSphericalRect, sampleSphericalRectangle, sphericalRectanglePdf, type SphericalRect } from './sphericalRectangle';
+import {
+  makeSphericalRect,
+  sampleSphericalRectangle,
+  sphericalRectanglePdf,
+  type SphericalRect,
+} from './sphericalRectangle';
 import { areaToSolidAnglePdf, rectAreaPdf, sampleRectArea } from './areaSampling';
 
 /** The three sampling strategies. */
@@ -74,7 +79,7 @@ export function areaLightTerms(
     for (let i = 0; i < n; i++) {
       terms[i] = 0;
       if (points) {
-        if (strategy === 'cosine') sampleCosineHemisphere(u[2 * i]!, u[2 * i + 1]!, points, 3 * i);
+        if (strategy === 'cosine') sampleCosineHemisphere(u[2 * i], u[2 * i + 1], points, 3 * i);
         else {
           points[3 * i] = light.center[0];
           points[3 * i + 1] = light.center[1];
@@ -86,8 +91,10 @@ export function areaLightTerms(
   }
   if (strategy === 'cosine') {
     for (let i = 0; i < n; i++) {
-      sampleCosineHemisphere(u[2 * i]!, u[2 * i + 1]!, scratch, 0);
-      const dx = scratch[0]!, dy = scratch[1]!, dz = scratch[2]!;
+      sampleCosineHemisphere(u[2 * i], u[2 * i + 1], scratch, 0);
+      const dx = scratch[0],
+        dy = scratch[1],
+        dz = scratch[2];
       if (points) {
         points[3 * i] = dx;
         points[3 * i + 1] = dy;
@@ -108,7 +115,10 @@ export function areaLightTerms(
   }
   // 'area' and 'solid-angle' share one loop: a point x on the light from a sampler, its density
   // per unit solid angle at p from the paired pdf, term = f L V cos θ / p_ω.
-  const pair = strategy === 'area' ? new AreaPoints(light) : new SphericalRectPoints(sph ?? makeSphericalRect(light, px, py, pz));
+  const pair =
+    strategy === 'area'
+      ? new AreaPoints(light)
+      : new SphericalRectPoints(sph ?? makeSphericalRect(light, px, py, pz));
   lightPointTerms(pair, setup, u, n, terms, points);
 }
 
@@ -160,27 +170,42 @@ class SphericalRectPoints implements LightPointSampler {
 }
 
 /** The per-sample loop of the light-point strategies (see {@link areaLightTerms} for the buffers). */
-function lightPointTerms(pair: LightPointSampler, setup: AreaLightSetup, u: Float64Array, n: number, terms: Float64Array, points: Float64Array | undefined): void {
+function lightPointTerms(
+  pair: LightPointSampler,
+  setup: AreaLightSetup,
+  u: Float64Array,
+  n: number,
+  terms: Float64Array,
+  points: Float64Array | undefined,
+): void {
   const { light, occluder, px, py, pz, L, rho } = setup;
   const nl = light.normal;
   const fL = rho * INV_PI * L;
   const scratch = scratchBuf;
   for (let i = 0; i < n; i++) {
-    pair.sample(u[2 * i]!, u[2 * i + 1]!, scratch, 0);
-    const x = scratch[0]!, yy = scratch[1]!, z = scratch[2]!;
+    pair.sample(u[2 * i], u[2 * i + 1], scratch, 0);
+    const x = scratch[0],
+      yy = scratch[1],
+      z = scratch[2];
     if (points) {
       points[3 * i] = x;
       points[3 * i + 1] = yy;
       points[3 * i + 2] = z;
     }
-    const dx = x - px, dy = yy - py, dz = z - pz;
+    const dx = x - px,
+      dy = yy - py,
+      dz = z - pz;
     const r2 = dx * dx + dy * dy + dz * dz;
     const r = Math.sqrt(r2);
     let term = 0;
     if (r > 0) {
       const cosT = dz / r;
       const cosL = -(dx * nl[0] + dy * nl[1] + dz * nl[2]) / r;
-      if (cosT > 0 && cosL > 0 && !(occluder && intersectRect(occluder, px, py, pz, dx, dy, dz, 0) < 1 - SHADOW_EPS)) {
+      if (
+        cosT > 0 &&
+        cosL > 0 &&
+        !(occluder && intersectRect(occluder, px, py, pz, dx, dy, dz, 0) < 1 - SHADOW_EPS)
+      ) {
         const pw = pair.pdfW(x, yy, z, r2, cosL);
         term = pw > 0 ? (fL * cosT) / pw : 0;
       }
@@ -197,7 +222,13 @@ const CHUNK = 4096;
  * mean, its standard error and the (mergeable) Welford accumulator. Deterministic for a given
  * (setup, strategy, n, seed, stream). Domain: n ≥ 0 (n < 2 gives stderr NaN).
  */
-export function estimateAreaLight(setup: AreaLightSetup, strategy: LightStrategy, n: number, seed: number, stream = 0): AreaLightEstimate {
+export function estimateAreaLight(
+  setup: AreaLightSetup,
+  strategy: LightStrategy,
+  n: number,
+  seed: number,
+  stream = 0,
+): AreaLightEstimate {
   const stats = new Welford();
   forEachTermChunk(setup, strategy, n, seed, stream, (terms, k) => stats.addArray(terms, 0, k));
   return { estimate: stats.mean, stderr: stats.standardError(), n: stats.count, stats };
@@ -219,8 +250,9 @@ function forEachTermChunk(
   const m = Math.min(CHUNK, Math.max(1, n));
   const u = new Float64Array(2 * m);
   const terms = new Float64Array(m);
-  const sph = strategy === 'solid-angle' ? makeSphericalRect(setup.light, setup.px, setup.py, setup.pz) : undefined;
-  for (let done = 0; done < n; ) {
+  const sph =
+    strategy === 'solid-angle' ? makeSphericalRect(setup.light, setup.px, setup.py, setup.pz) : undefined;
+  for (let done = 0; done < n;) {
     const k = Math.min(m, n - done);
     rng.fill(u, 0, 2 * k);
     areaLightTerms(setup, strategy, u, k, terms, undefined, sph);
@@ -242,7 +274,7 @@ export function areaLightConvergence(
   stream = 0,
 ): ConvergenceSeries {
   const series = new ConvergenceSeries(checkpoints, exact);
-  const nMax = checkpoints.length ? checkpoints[checkpoints.length - 1]! : 0;
+  const nMax = checkpoints.length ? checkpoints[checkpoints.length - 1] : 0;
   forEachTermChunk(setup, strategy, nMax, seed, stream, (terms, k) => series.push(terms, 0, k));
   return series;
 }

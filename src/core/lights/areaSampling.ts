@@ -12,8 +12,16 @@ import type { RectLight } from './rectLight';
  * Uniform point on the rectangle (area measure). Domain: u1, u2 ∈ [0, 1]. Writes (x, y, z) into
  * out[o..o+2]. Pdf: {@link rectAreaPdf} (per unit area); inverse: {@link invertRectAreaSample}.
  */
-export function sampleRectArea(light: RectLight, u1: number, u2: number, out: Float64Array | number[], o = 0): void {
-  const s = light.corner, a = light.edgeX, b = light.edgeY;
+export function sampleRectArea(
+  light: RectLight,
+  u1: number,
+  u2: number,
+  out: Float64Array | number[],
+  o = 0,
+): void {
+  const s = light.corner,
+    a = light.edgeX,
+    b = light.edgeY;
   out[o] = s[0] + u1 * a[0] + u2 * b[0];
   out[o + 1] = s[1] + u1 * a[1] + u2 * b[1];
   out[o + 2] = s[2] + u1 * a[2] + u2 * b[2];
@@ -26,15 +34,19 @@ export function sampleRectArea(light: RectLight, u1: number, u2: number, out: Fl
  */
 export function rectAreaPdf(light: RectLight, x: number, y: number, z: number): number {
   if (!(light.area > 0)) return 0;
-  const sx = x - light.corner[0], sy = y - light.corner[1], sz = z - light.corner[2];
+  const sx = x - light.corner[0],
+    sy = y - light.corner[1],
+    sz = z - light.corner[2];
   // Relative to the rectangle's size AND its position: a sampled point far from the origin carries
   // an absolute rounding error of ~|corner|·2⁻⁵³ that must not push it "off" the rectangle.
   const s0 = light.corner;
-  const tol = 1e-9 * Math.max(1, light.width, light.height, Math.abs(s0[0]), Math.abs(s0[1]), Math.abs(s0[2]));
+  const tol =
+    1e-9 * Math.max(1, light.width, light.height, Math.abs(s0[0]), Math.abs(s0[1]), Math.abs(s0[2]));
   const a = sx * light.ex[0] + sy * light.ex[1] + sz * light.ex[2];
   const b = sx * light.ey[0] + sy * light.ey[1] + sz * light.ey[2];
   const c = sx * light.normal[0] + sy * light.normal[1] + sz * light.normal[2];
-  if (!(Math.abs(c) <= tol && a >= -tol && a <= light.width + tol && b >= -tol && b <= light.height + tol)) return 0;
+  if (!(Math.abs(c) <= tol && a >= -tol && a <= light.width + tol && b >= -tol && b <= light.height + tol))
+    return 0;
   return 1 / light.area;
 }
 
@@ -44,7 +56,9 @@ export function rectAreaPdf(light: RectLight, x: number, y: number, z: number): 
  */
 export function invertRectAreaSample(light: RectLight, x: number, y: number, z: number): [number, number] {
   const s = light.corner;
-  const dx = x - s[0], dy = y - s[1], dz = z - s[2];
+  const dx = x - s[0],
+    dy = y - s[1],
+    dz = z - s[2];
   const a = dx * light.ex[0] + dy * light.ex[1] + dz * light.ex[2];
   const b = dx * light.ey[0] + dy * light.ey[1] + dz * light.ey[2];
   const u1 = light.width > 0 ? a / light.width : 0;

@@ -24,23 +24,37 @@ import { rectFacesPoint } from './rectLight';
  * Returns a new flat array (possibly empty). Domain: finite vertices, nonzero n. Source:
  * Sutherland & Hodgman, "Reentrant polygon clipping", CACM 17(1), 1974.
  */
-export function clipPolygonToHalfSpace(verts: readonly number[], nx: number, ny: number, nz: number, offset = 0): number[] {
+export function clipPolygonToHalfSpace(
+  verts: readonly number[],
+  nx: number,
+  ny: number,
+  nz: number,
+  offset = 0,
+): number[] {
   const out: number[] = [];
   const m = verts.length / 3;
   for (let i = 0; i < m; i++) {
     const j = (i + 1) % m;
-    const ax = verts[3 * i]!, ay = verts[3 * i + 1]!, az = verts[3 * i + 2]!;
-    const bx = verts[3 * j]!, by = verts[3 * j + 1]!, bz = verts[3 * j + 2]!;
+    const ax = verts[3 * i],
+      ay = verts[3 * i + 1],
+      az = verts[3 * i + 2];
+    const bx = verts[3 * j],
+      by = verts[3 * j + 1],
+      bz = verts[3 * j + 2];
     const da = ax * nx + ay * ny + az * nz - offset;
     const db = bx * nx + by * ny + bz * nz - offset;
     if (da >= 0) out.push(ax, ay, az);
     if ((da >= 0 && db < 0) || (da < 0 && db >= 0)) {
       const t = da / (da - db);
       // The point on the plane; snap its normal component to exactly 0.
-      let cx = ax + t * (bx - ax), cy = ay + t * (by - ay), cz = az + t * (bz - az);
+      let cx = ax + t * (bx - ax),
+        cy = ay + t * (by - ay),
+        cz = az + t * (bz - az);
       const dc = cx * nx + cy * ny + cz * nz - offset;
       const nn = nx * nx + ny * ny + nz * nz;
-      cx -= (dc * nx) / nn; cy -= (dc * ny) / nn; cz -= (dc * nz) / nn;
+      cx -= (dc * nx) / nn;
+      cy -= (dc * ny) / nn;
+      cz -= (dc * nz) / nn;
       if (db !== 0) out.push(cx, cy, cz); // db = 0: b itself lies on the plane and is pushed next
     }
   }
@@ -61,10 +75,16 @@ export function polygonProjectedSolidAngle(verts: readonly number[], nx = 0, ny 
   let sum = 0;
   for (let i = 0; i < m; i++) {
     const j = (i + 1) % m;
-    const ax = v[3 * i]!, ay = v[3 * i + 1]!, az = v[3 * i + 2]!;
-    const bx = v[3 * j]!, by = v[3 * j + 1]!, bz = v[3 * j + 2]!;
+    const ax = v[3 * i],
+      ay = v[3 * i + 1],
+      az = v[3 * i + 2];
+    const bx = v[3 * j],
+      by = v[3 * j + 1],
+      bz = v[3 * j + 2];
     // θᵢ = atan2(|a × b|, a · b) needs no normalization (both scale by |a||b|).
-    const cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
+    const cx = ay * bz - az * by,
+      cy = az * bx - ax * bz,
+      cz = ax * by - ay * bx;
     const cl = Math.hypot(cx, cy, cz);
     if (!(cl > 0)) continue; // coincident or antipodal vertices: zero-length arc (or a degenerate clip)
     const theta = Math.atan2(cl, ax * bx + ay * by + az * bz);
@@ -80,7 +100,15 @@ export function polygonProjectedSolidAngle(verts: readonly number[], nx = 0, ny 
  * Measure: projected solid angle (sr). Source: Lambert's formula via
  * {@link polygonProjectedSolidAngle}.
  */
-export function rectProjectedSolidAngle(light: RectLight, px: number, py: number, pz: number, nx = 0, ny = 0, nz = 1): number {
+export function rectProjectedSolidAngle(
+  light: RectLight,
+  px: number,
+  py: number,
+  pz: number,
+  nx = 0,
+  ny = 0,
+  nz = 1,
+): number {
   if (!rectFacesPoint(light, px, py, pz)) return 0;
   const v: number[] = [];
   for (const c of light.corners) v.push(c[0] - px, c[1] - py, c[2] - pz);
@@ -93,7 +121,14 @@ export function rectProjectedSolidAngle(light: RectLight, px: number, py: number
  * L_o = (ρ/π) · L · ∫ max(0, cos θ) dω. Domain: finite p; L, ρ ≥ 0. Measure: radiance.
  * Source: rendering equation with f = ρ/π (exam Q6(b)); Lambert's formula for the integral.
  */
-export function lambertianFloorRadiance(light: RectLight, px: number, py: number, pz: number, L: number, rho: number): number {
+export function lambertianFloorRadiance(
+  light: RectLight,
+  px: number,
+  py: number,
+  pz: number,
+  L: number,
+  rho: number,
+): number {
   return (rho / Math.PI) * L * rectProjectedSolidAngle(light, px, py, pz);
 }
 
@@ -119,11 +154,16 @@ export function clipPolygonToBox(poly: readonly number[], w: number, h: number):
     const m = cur.length / 2;
     for (let i = 0; i < m; i++) {
       const j = (i + 1) % m;
-      const x1 = cur[2 * i]!, y1 = cur[2 * i + 1]!, x2 = cur[2 * j]!, y2 = cur[2 * j + 1]!;
-      const in1 = inside(x1, y1), in2 = inside(x2, y2);
+      const x1 = cur[2 * i],
+        y1 = cur[2 * i + 1],
+        x2 = cur[2 * j],
+        y2 = cur[2 * j + 1];
+      const in1 = inside(x1, y1),
+        in2 = inside(x2, y2);
       if (in1) out.push(x1, y1);
       if (in1 !== in2) {
-        const v1 = ax === 0 ? x1 : y1, v2 = ax === 0 ? x2 : y2;
+        const v1 = ax === 0 ? x1 : y1,
+          v2 = ax === 0 ? x2 : y2;
         const t = (bound - v1) / (v2 - v1);
         if (ax === 0) out.push(bound, y1 + t * (y2 - y1));
         else out.push(x1 + t * (x2 - x1), bound);
@@ -150,11 +190,19 @@ const SLAB_EPS = 1e-7;
  * Measure: projected solid angle. Source: Lambert 1760 / Arvo 1995 (polygon irradiance),
  * Sutherland–Hodgman clipping.
  */
-export function rectProjectedSolidAngleOccluded(light: RectLight, occluder: RectLight, px: number, py: number, pz: number): number {
+export function rectProjectedSolidAngleOccluded(
+  light: RectLight,
+  occluder: RectLight,
+  px: number,
+  py: number,
+  pz: number,
+): number {
   const base = rectProjectedSolidAngle(light, px, py, pz);
   if (base === 0 || !(occluder.area > 0)) return base;
   // m = −n_l points from p towards the light's plane; sigma = p's distance to the plane (> 0 here).
-  const mx = -light.normal[0], my = -light.normal[1], mz = -light.normal[2];
+  const mx = -light.normal[0],
+    my = -light.normal[1],
+    mz = -light.normal[2];
   const sigma = (light.center[0] - px) * mx + (light.center[1] - py) * my + (light.center[2] - pz) * mz;
   let v: number[] = [];
   for (const c of occluder.corners) v.push(c[0] - px, c[1] - py, c[2] - pz);
@@ -163,17 +211,24 @@ export function rectProjectedSolidAngleOccluded(light: RectLight, occluder: Rect
   if (v.length < 9) return base;
   const poly2: number[] = [];
   for (let i = 0; i < v.length; i += 3) {
-    const h = v[i]! * mx + v[i + 1]! * my + v[i + 2]! * mz;
+    const h = v[i] * mx + v[i + 1] * my + v[i + 2] * mz;
     const t = sigma / h; // ≥ 1: the ray through the occluder point meets the plane at p + t v
-    const hx = px + t * v[i]! - light.corner[0], hy = py + t * v[i + 1]! - light.corner[1], hz = pz + t * v[i + 2]! - light.corner[2];
-    poly2.push(hx * light.ex[0] + hy * light.ex[1] + hz * light.ex[2], hx * light.ey[0] + hy * light.ey[1] + hz * light.ey[2]);
+    const hx = px + t * v[i] - light.corner[0],
+      hy = py + t * v[i + 1] - light.corner[1],
+      hz = pz + t * v[i + 2] - light.corner[2];
+    poly2.push(
+      hx * light.ex[0] + hy * light.ex[1] + hz * light.ex[2],
+      hx * light.ey[0] + hy * light.ey[1] + hz * light.ey[2],
+    );
   }
   const clipped = clipPolygonToBox(poly2, light.width, light.height);
   if (clipped.length < 6) return base;
   const w: number[] = [];
   for (let i = 0; i < clipped.length; i += 2) {
-    const a = clipped[i]!, b = clipped[i + 1]!;
-    for (let k = 0; k < 3; k++) w.push(light.corner[k]! + a * light.ex[k]! + b * light.ey[k]! - (k === 0 ? px : k === 1 ? py : pz));
+    const a = clipped[i],
+      b = clipped[i + 1];
+    for (let k = 0; k < 3; k++)
+      w.push(light.corner[k] + a * light.ex[k] + b * light.ey[k] - (k === 0 ? px : k === 1 ? py : pz));
   }
   return Math.max(0, base - polygonProjectedSolidAngle(w));
 }

@@ -57,7 +57,12 @@ export function sinCosDeg(deg: number): [number, number] {
  * Domain: finite centre; width, height ≥ 0 (negative or non-finite sizes are taken as 0, which
  * gives a degenerate light of area 0 that every routine treats as emitting nothing); finite tilt.
  */
-export function makeRectLight(center: readonly number[], width: number, height: number, tiltDeg = 0): RectLight {
+export function makeRectLight(
+  center: readonly number[],
+  width: number,
+  height: number,
+  tiltDeg = 0,
+): RectLight {
   const w = Number.isFinite(width) && width > 0 ? width : 0;
   const h = Number.isFinite(height) && height > 0 ? height : 0;
   const t = Number.isFinite(tiltDeg) ? tiltDeg : 0;
@@ -65,8 +70,14 @@ export function makeRectLight(center: readonly number[], width: number, height: 
   const ex: Vec3 = [1, 0, 0];
   const ey: Vec3 = [0, c, s];
   const normal: Vec3 = [0, s, 0 - c]; // 0 − c: +0 rather than −0 at tilt ±90°
-  const cx = center[0]!, cy = center[1]!, cz = center[2]!;
-  const corner: Vec3 = [cx - (w / 2) * ex[0] - (h / 2) * ey[0], cy - (w / 2) * ex[1] - (h / 2) * ey[1], cz - (w / 2) * ex[2] - (h / 2) * ey[2]];
+  const cx = center[0],
+    cy = center[1],
+    cz = center[2];
+  const corner: Vec3 = [
+    cx - (w / 2) * ex[0] - (h / 2) * ey[0],
+    cy - (w / 2) * ex[1] - (h / 2) * ey[1],
+    cz - (w / 2) * ex[2] - (h / 2) * ey[2],
+  ];
   const edgeX: Vec3 = [w * ex[0], w * ex[1], w * ex[2]];
   const edgeY: Vec3 = [h * ey[0], h * ey[1], h * ey[2]];
   const corners: [Vec3, Vec3, Vec3, Vec3] = [
@@ -75,7 +86,20 @@ export function makeRectLight(center: readonly number[], width: number, height: 
     [corner[0] + edgeX[0] + edgeY[0], corner[1] + edgeX[1] + edgeY[1], corner[2] + edgeX[2] + edgeY[2]],
     [corner[0] + edgeY[0], corner[1] + edgeY[1], corner[2] + edgeY[2]],
   ];
-  return { center: [cx, cy, cz], width: w, height: h, tiltDeg: t, ex, ey, normal, corner, edgeX, edgeY, corners, area: w * h };
+  return {
+    center: [cx, cy, cz],
+    width: w,
+    height: h,
+    tiltDeg: t,
+    ex,
+    ey,
+    normal,
+    corner,
+    edgeX,
+    edgeY,
+    corners,
+    area: w * h,
+  };
 }
 
 /**
@@ -104,8 +128,12 @@ export function rectFacesPoint(light: RectLight, px: number, py: number, pz: num
  */
 export function intersectRect(
   light: RectLight,
-  ox: number, oy: number, oz: number,
-  dx: number, dy: number, dz: number,
+  ox: number,
+  oy: number,
+  oz: number,
+  dx: number,
+  dy: number,
+  dz: number,
   tMin = 0,
 ): number {
   if (!(light.area > 0)) return Infinity;
@@ -134,8 +162,14 @@ export function rectSolidAngle(light: RectLight, px: number, py: number, pz: num
   if (!(light.area > 0)) return 0;
   const s = light.corner;
   return parallelogramSolidAngle(
-    s[0] - px, s[1] - py, s[2] - pz,
-    light.edgeX[0], light.edgeX[1], light.edgeX[2],
-    light.edgeY[0], light.edgeY[1], light.edgeY[2],
+    s[0] - px,
+    s[1] - py,
+    s[2] - pz,
+    light.edgeX[0],
+    light.edgeX[1],
+    light.edgeX[2],
+    light.edgeY[0],
+    light.edgeY[1],
+    light.edgeY[2],
   );
 }

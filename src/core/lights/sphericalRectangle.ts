@@ -33,16 +33,32 @@ const ONE_MINUS_EPS = 1 - 2 ** -53;
 export interface SphericalRect {
   light: RectLight;
   /** Reference point p. */
-  px: number; py: number; pz: number;
+  px: number;
+  py: number;
+  pz: number;
   /** Local frame axes in world space (z flipped so the rectangle lies at z₀ < 0). */
-  xx: number; xy: number; xz: number;
-  yx: number; yy: number; yz: number;
-  zx: number; zy: number; zz: number;
-  x0: number; x1: number; y0: number; y1: number; z0: number;
+  xx: number;
+  xy: number;
+  xz: number;
+  yx: number;
+  yy: number;
+  yz: number;
+  zx: number;
+  zy: number;
+  zz: number;
+  x0: number;
+  x1: number;
+  y0: number;
+  y1: number;
+  z0: number;
   /** z components of the edge-plane normals n₀ and n₂ (Ureña et al.'s b₀, b₁). */
-  b0: number; b1: number;
+  b0: number;
+  b1: number;
   /** Interior angles γ₀…γ₃ of the spherical rectangle. */
-  g0: number; g1: number; g2: number; g3: number;
+  g0: number;
+  g1: number;
+  g2: number;
+  g3: number;
   /** Solid angle Ω (Van Oosterom–Strackee), steradians. */
   solidAngle: number;
   /** True when the sampler falls back to uniform area sampling (Ω tiny but > 0). */
@@ -61,30 +77,61 @@ function angleBetween(ax: number, ay: number, az: number, bx: number, by: number
  * light or p in the light's plane, solidAngle = 0 and every sample/pdf routine returns 0 density.
  */
 export function makeSphericalRect(light: RectLight, px: number, py: number, pz: number): SphericalRect {
-  const ex = light.ex, ey = light.ey;
+  const ex = light.ex,
+    ey = light.ey;
   let zx = ex[1] * ey[2] - ex[2] * ey[1];
   let zy = ex[2] * ey[0] - ex[0] * ey[2];
   let zz = ex[0] * ey[1] - ex[1] * ey[0];
   const s = light.corner;
-  const dx = s[0] - px, dy = s[1] - py, dz = s[2] - pz;
+  const dx = s[0] - px,
+    dy = s[1] - py,
+    dz = s[2] - pz;
   const x0 = dx * ex[0] + dy * ex[1] + dz * ex[2];
   const y0 = dx * ey[0] + dy * ey[1] + dz * ey[2];
   let z0 = dx * zx + dy * zy + dz * zz;
   if (z0 > 0) {
     z0 = -z0;
-    zx = -zx; zy = -zy; zz = -zz;
+    zx = -zx;
+    zy = -zy;
+    zz = -zz;
   }
-  const x1 = x0 + light.width, y1 = y0 + light.height;
-  const omega = light.area > 0 ? parallelogramSolidAngle(dx, dy, dz, light.edgeX[0], light.edgeX[1], light.edgeX[2], light.edgeY[0], light.edgeY[1], light.edgeY[2]) : 0;
+  const x1 = x0 + light.width,
+    y1 = y0 + light.height;
+  const omega =
+    light.area > 0
+      ? parallelogramSolidAngle(
+          dx,
+          dy,
+          dz,
+          light.edgeX[0],
+          light.edgeX[1],
+          light.edgeX[2],
+          light.edgeY[0],
+          light.edgeY[1],
+          light.edgeY[2],
+        )
+      : 0;
   // Edge-plane normals in closed form (cross products of the corner vectors, normalized):
   // n0 ∝ (0, z0, −y0), n1 ∝ (−z0, 0, x1), n2 ∝ (0, −z0, y1), n3 ∝ (z0, 0, −x0).
-  const l0 = Math.hypot(z0, y0), l1 = Math.hypot(z0, x1), l2 = Math.hypot(z0, y1), l3 = Math.hypot(z0, x0);
-  let g0 = 0, g1 = 0, g2 = 0, g3 = 0, b0 = 0, b1 = 0;
+  const l0 = Math.hypot(z0, y0),
+    l1 = Math.hypot(z0, x1),
+    l2 = Math.hypot(z0, y1),
+    l3 = Math.hypot(z0, x0);
+  let g0 = 0,
+    g1 = 0,
+    g2 = 0,
+    g3 = 0,
+    b0 = 0,
+    b1 = 0;
   if (omega > 0 && l0 > 0 && l1 > 0 && l2 > 0 && l3 > 0) {
-    const n0y = z0 / l0, n0z = -y0 / l0;
-    const n1x = -z0 / l1, n1z = x1 / l1;
-    const n2y = -z0 / l2, n2z = y1 / l2;
-    const n3x = z0 / l3, n3z = -x0 / l3;
+    const n0y = z0 / l0,
+      n0z = -y0 / l0;
+    const n1x = -z0 / l1,
+      n1z = x1 / l1;
+    const n2y = -z0 / l2,
+      n2z = y1 / l2;
+    const n3x = z0 / l3,
+      n3z = -x0 / l3;
     g0 = angleBetween(0, -n0y, -n0z, n1x, 0, n1z);
     g1 = angleBetween(-n1x, 0, -n1z, 0, n2y, n2z);
     g2 = angleBetween(0, -n2y, -n2z, n3x, 0, n3z);
@@ -93,11 +140,30 @@ export function makeSphericalRect(light: RectLight, px: number, py: number, pz: 
     b1 = n2z;
   }
   return {
-    light, px, py, pz,
-    xx: ex[0], xy: ex[1], xz: ex[2],
-    yx: ey[0], yy: ey[1], yz: ey[2],
-    zx, zy, zz,
-    x0, x1, y0, y1, z0, b0, b1, g0, g1, g2, g3,
+    light,
+    px,
+    py,
+    pz,
+    xx: ex[0],
+    xy: ex[1],
+    xz: ex[2],
+    yx: ey[0],
+    yy: ey[1],
+    yz: ey[2],
+    zx,
+    zy,
+    zz,
+    x0,
+    x1,
+    y0,
+    y1,
+    z0,
+    b0,
+    b1,
+    g0,
+    g1,
+    g2,
+    g3,
     solidAngle: omega,
     areaFallback: omega > 0 && omega < SPHERICAL_RECT_MIN_SOLID_ANGLE,
   };
@@ -111,9 +177,17 @@ export function makeSphericalRect(light: RectLight, px: number, py: number, pz: 
  * For Ω = 0 (nothing to sample) or Ω below {@link SPHERICAL_RECT_MIN_SOLID_ANGLE} writes the
  * uniform-area point s + u1 w ex + u2 h ey.
  */
-export function sampleSphericalRectangle(q: SphericalRect, u1: number, u2: number, out: Float64Array | number[], o = 0): void {
+export function sampleSphericalRectangle(
+  q: SphericalRect,
+  u1: number,
+  u2: number,
+  out: Float64Array | number[],
+  o = 0,
+): void {
   if (!(q.solidAngle >= SPHERICAL_RECT_MIN_SOLID_ANGLE)) {
-    const s = q.light.corner, a = q.light.edgeX, b = q.light.edgeY;
+    const s = q.light.corner,
+      a = q.light.edgeX,
+      b = q.light.edgeY;
     out[o] = s[0] + u1 * a[0] + u2 * b[0];
     out[o + 1] = s[1] + u1 * a[1] + u2 * b[1];
     out[o + 2] = s[2] + u1 * a[2] + u2 * b[2];
@@ -154,14 +228,18 @@ export function sampleSphericalRectangle(q: SphericalRect, u1: number, u2: numbe
 export function sphericalRectanglePdf(q: SphericalRect, x: number, y: number, z: number): number {
   if (!(q.solidAngle > 0)) return 0;
   const l = q.light;
-  const sx = x - l.corner[0], sy = y - l.corner[1], sz = z - l.corner[2];
+  const sx = x - l.corner[0],
+    sy = y - l.corner[1],
+    sz = z - l.corner[2];
   const tol = 1e-9 * Math.max(1, l.width, l.height, Math.abs(q.z0));
   const a = sx * l.ex[0] + sy * l.ex[1] + sz * l.ex[2];
   const b = sx * l.ey[0] + sy * l.ey[1] + sz * l.ey[2];
   const c = sx * l.normal[0] + sy * l.normal[1] + sz * l.normal[2];
   if (!(Math.abs(c) <= tol && a >= -tol && a <= l.width + tol && b >= -tol && b <= l.height + tol)) return 0;
   if (!q.areaFallback) return 1 / q.solidAngle;
-  const dx = x - q.px, dy = y - q.py, dz = z - q.pz;
+  const dx = x - q.px,
+    dy = y - q.py,
+    dz = z - q.pz;
   const r2 = dx * dx + dy * dy + dz * dz;
   const n = l.normal;
   const r = Math.sqrt(r2);
@@ -178,15 +256,23 @@ export function sphericalRectanglePdf(q: SphericalRect, x: number, y: number, z:
  * u2 = (h − h₀)/(h₁ − h₀). In the tiny-light fallback, the uniform-area inverse.
  * Source: Ureña et al. 2013; pbrt-v4 `InvertSphericalRectangleSample` (same quantities).
  */
-export function invertSphericalRectangleSample(q: SphericalRect, x: number, y: number, z: number): [number, number] {
-  const dx = x - q.px, dy = y - q.py, dz = z - q.pz;
+export function invertSphericalRectangleSample(
+  q: SphericalRect,
+  x: number,
+  y: number,
+  z: number,
+): [number, number] {
+  const dx = x - q.px,
+    dy = y - q.py,
+    dz = z - q.pz;
   let xu = dx * q.xx + dy * q.xy + dz * q.xz;
   let yv = dx * q.yx + dy * q.yy + dz * q.yz;
   const { x0, x1, y0, y1, z0 } = q;
   xu = Math.min(x1, Math.max(x0, xu));
   yv = Math.min(y1, Math.max(y0, yv));
   if (!(q.solidAngle >= SPHERICAL_RECT_MIN_SOLID_ANGLE)) {
-    const w = x1 - x0, h = y1 - y0;
+    const w = x1 - x0,
+      h = y1 - y0;
     return [w > 0 ? (xu - x0) / w : 0, h > 0 ? (yv - y0) / h : 0];
   }
   const sub = parallelogramSolidAngle(x0, y0, z0, xu - x0, 0, 0, 0, y1 - y0, 0);

@@ -105,15 +105,15 @@ export function owenRadicalInverse3(index: number, seed: number): number {
   // Below that, the nested scramble of the remaining zero digits is a uniform offset in the
   // remaining interval of width 3^-j: draw it from the hash (same distribution, fewer steps).
   while ((a > 0 || j < 20) && j < 34) {
-    const next = a < 2147483648 ? ((a / 3) | 0) : Math.floor(a / 3);
+    const next = a < 2147483648 ? (a / 3) | 0 : Math.floor(a / 3);
     const digit = a - 3 * next;
-    x += PERM3[3 * (((h >>> 16) * 6) >>> 16) + digit]! * POW3_INV[j]!;
+    x += PERM3[3 * (((h >>> 16) * 6) >>> 16) + digit] * POW3_INV[j];
     h = hash32I(h ^ Math.imul(digit + 1 + 4 * j, 0x9e3779b1));
     a = next;
     j++;
   }
   const tail = ((hash32I(h ^ 0x68e31da4) >>> 5) * 67108864 + (hash32I(h ^ 0x1b56c4e9) >>> 6)) * TWO_POW_M53;
-  x += tail * 3 * POW3_INV[j]!;
+  x += tail * 3 * POW3_INV[j];
   return x < ONE_MINUS_EPS ? x : ONE_MINUS_EPS;
 }
 

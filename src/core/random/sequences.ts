@@ -12,7 +12,15 @@
  * Burley (2020) "Practical Hash-based Owen Scrambling", JCGT 9(4).
  */
 import { ONE_MINUS_EPS, toSeed } from './rng';
-import { hash32I, hashCombine, hashUniform, owenHashReversedI, owenRadicalInverse3, reverseBits32I, TWO_POW_M32 } from './owen';
+import {
+  hash32I,
+  hashCombine,
+  hashUniform,
+  owenHashReversedI,
+  owenRadicalInverse3,
+  reverseBits32I,
+  TWO_POW_M32,
+} from './owen';
 import { SOBOL_DIM1_BYTES as DIM1_I } from './sobol';
 
 // Local aliases of the per-point helpers. In the bundled app they change nothing; under Vite's
@@ -72,7 +80,14 @@ export function sequenceSeedHashes(seed: number): [number, number, number, numbe
   return [s, hash32I(s ^ 0x01000193), hash32I(s ^ 0x7f4a7c15), hash32I(s ^ 0x61c88647)];
 }
 
-function checkRange(n: number, out: Float64Array, dim: number, start: number, end: number, offset: number): void {
+function checkRange(
+  n: number,
+  out: Float64Array,
+  dim: number,
+  start: number,
+  end: number,
+  offset: number,
+): void {
   if (!(Number.isInteger(n) && n >= 0 && n <= MAX_SEQUENCE_POINTS)) {
     throw new RangeError(`point count n must be an integer in [0, 2^32], got ${n}`);
   }
@@ -80,7 +95,9 @@ function checkRange(n: number, out: Float64Array, dim: number, start: number, en
     throw new RangeError(`range [${start}, ${end}) must lie within [0, ${n})`);
   }
   if (!(Number.isInteger(offset) && offset >= 0 && out.length >= dim * (offset + end - start))) {
-    throw new RangeError(`output buffer of length ${out.length} is too short for ${end - start} points at offset ${offset}`);
+    throw new RangeError(
+      `output buffer of length ${out.length} is too short for ${end - start} points at offset ${offset}`,
+    );
   }
 }
 
@@ -188,7 +205,8 @@ export function fillSequence1D(
       break;
     case 'halton': {
       const hb2 = hashCombine(s0, 2) | 0;
-      for (let i = start; i < end; i++, o++) out[o] = (reverseBits32IL(owenHashReversedIL(i | 0, hb2)) >>> 0) * TWO_POW_M32_L;
+      for (let i = start; i < end; i++, o++)
+        out[o] = (reverseBits32IL(owenHashReversedIL(i | 0, hb2)) >>> 0) * TWO_POW_M32_L;
       break;
     }
     case 'sobol':
@@ -211,7 +229,16 @@ export function fillSequence1D(
  * not), or with local helpers, ran 15–35 % slower per point, so the repeated rev/hash steps stay
  * written out (issue 16: a hand-inlined twin stays where it is measurably faster, said beside it).
  */
-function sobolKernel(out: Float64Array, o: number, start: number, end: number, s1: number, s2: number, s3: number, dims: 1 | 2): void {
+function sobolKernel(
+  out: Float64Array,
+  o: number,
+  start: number,
+  end: number,
+  s1: number,
+  s2: number,
+  s3: number,
+  dims: 1 | 2,
+): void {
   const m1 = (s1 >>> 16) | 1;
   const m2 = (s2 >>> 16) | 1;
   const m3 = (s3 >>> 16) | 1;
@@ -247,7 +274,11 @@ function sobolKernel(out: Float64Array, o: number, start: number, end: number, s
     out[o] = (((a >>> 16) | (a << 16)) >>> 0) * TWO_POW_M32_L;
     if (dims === 1) continue;
     // x1 = rev(hash_s3(rev(sobol1(j))))
-    let b = DIM1_L[j & 255]! ^ DIM1_L[256 + ((j >>> 8) & 255)]! ^ DIM1_L[512 + ((j >>> 16) & 255)]! ^ DIM1_L[768 + (j >>> 24)]!;
+    let b =
+      DIM1_L[j & 255] ^
+      DIM1_L[256 + ((j >>> 8) & 255)] ^
+      DIM1_L[512 + ((j >>> 16) & 255)] ^
+      DIM1_L[768 + (j >>> 24)];
     b = ((b >>> 1) & 0x55555555) | ((b & 0x55555555) << 1);
     b = ((b >>> 2) & 0x33333333) | ((b & 0x33333333) << 2);
     b = ((b >>> 4) & 0x0f0f0f0f) | ((b & 0x0f0f0f0f) << 4);

@@ -13,7 +13,7 @@ import { owenHashReversedI, reverseBits32I } from './owen';
 export const SOBOL_DIM1 = (() => {
   const v = new Uint32Array(32);
   v[0] = 0x80000000;
-  for (let k = 1; k < 32; k++) v[k] = (v[k - 1]! ^ (v[k - 1]! >>> 1)) >>> 0;
+  for (let k = 1; k < 32; k++) v[k] = (v[k - 1] ^ (v[k - 1] >>> 1)) >>> 0;
   return v;
 })();
 
@@ -31,7 +31,7 @@ export const SOBOL_DIM1_BYTES = (() => {
   for (let b = 0; b < 4; b++) {
     for (let v = 0; v < 256; v++) {
       let x = 0;
-      for (let k = 0; k < 8; k++) if (v & (1 << k)) x ^= SOBOL_DIM1[8 * b + k]!;
+      for (let k = 0; k < 8; k++) if (v & (1 << k)) x ^= SOBOL_DIM1[8 * b + k];
       t[256 * b + v] = x;
     }
   }
@@ -40,7 +40,12 @@ export const SOBOL_DIM1_BYTES = (() => {
 
 /** Unscrambled Sobol' dimension 1 of index i (any 32-bit word), int32 result. */
 export function sobolDim1I(i: number): number {
-  return SOBOL_DIM1_BYTES[i & 255]! ^ SOBOL_DIM1_BYTES[256 + ((i >>> 8) & 255)]! ^ SOBOL_DIM1_BYTES[512 + ((i >>> 16) & 255)]! ^ SOBOL_DIM1_BYTES[768 + (i >>> 24)]!;
+  return (
+    SOBOL_DIM1_BYTES[i & 255] ^
+    SOBOL_DIM1_BYTES[256 + ((i >>> 8) & 255)] ^
+    SOBOL_DIM1_BYTES[512 + ((i >>> 16) & 255)] ^
+    SOBOL_DIM1_BYTES[768 + (i >>> 24)]
+  );
 }
 
 /** Unscrambled Sobol' dimension 1 of index i (uint32), as a uint32 fraction (× 2^-32). */
@@ -54,7 +59,13 @@ export function sobolDim1Bits(i: number): number {
  * of 2^m points, so every power-of-two prefix is still a (0, m, 2)-net.
  * Domain: i integer in [0, 2^32); seeds uint32. Writes the two uint32 values into out[0], out[1].
  */
-export function shuffledSobol2Bits(i: number, shuffleSeed: number, seed0: number, seed1: number, out: Uint32Array): void {
+export function shuffledSobol2Bits(
+  i: number,
+  shuffleSeed: number,
+  seed0: number,
+  seed1: number,
+  out: Uint32Array,
+): void {
   // owen(v) = rev(hash(rev(v))); the reversals of dimension 0 (rev of the index) cancel
   const j = reverseBits32I(owenHashReversedI(reverseBits32I(i), shuffleSeed | 0));
   out[0] = reverseBits32I(owenHashReversedI(j, seed0 | 0)) >>> 0;

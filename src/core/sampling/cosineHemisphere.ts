@@ -53,7 +53,7 @@ export function invertUniformDiskConcentricSample(x: number, y: number): [number
   const at = Math.abs(theta);
   if (at < PI_OVER_4 || at > 3 * PI_OVER_4) {
     ux = r = x < 0 ? -r : r;
-    if (x < 0) uy = (y < 0 ? Math.PI + theta : theta - Math.PI) * r / PI_OVER_4;
+    if (x < 0) uy = ((y < 0 ? Math.PI + theta : theta - Math.PI) * r) / PI_OVER_4;
     else uy = (theta * r) / PI_OVER_4;
   } else {
     uy = r = y < 0 ? -r : r;
@@ -100,7 +100,12 @@ export function invertCosineHemisphereSample(x: number, y: number, _z?: number):
  * Batched {@link sampleCosineHemisphere}: reads u[2i], u[2i+1], writes out[3i..3i+2] for
  * i ∈ [start, n). Caller-owned buffers, no allocation per sample.
  */
-export function sampleCosineHemisphereBatch(u: Float64Array, out: Float64Array, n: number, start = 0): Float64Array {
+export function sampleCosineHemisphereBatch(
+  u: Float64Array,
+  out: Float64Array,
+  n: number,
+  start = 0,
+): Float64Array {
   for (let i = start; i < n; i++) sampleCosineHemisphere(u[2 * i], u[2 * i + 1], out, 3 * i);
   return out;
 }

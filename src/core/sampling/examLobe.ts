@@ -23,14 +23,7 @@
  * method"); 2D sampling with separable densities, pbrt-v4 section 2.4.1.
  */
 import { writeScaledCosSin } from './sinCos';
-import {
-  TWO_PI,
-  TWO_PI_BELOW,
-  HALF_PI,
-  clampUnit,
-  sphericalPhi,
-  type VecOut,
-} from './sphericalCoords';
+import { TWO_PI, TWO_PI_BELOW, HALF_PI, clampUnit, sphericalPhi, type VecOut } from './sphericalCoords';
 
 /** e^{2π} − 1 computed as expm1(2π) (≈ 534.49). */
 export const EXAM_E2PI_M1 = Math.expm1(TWO_PI);

@@ -140,7 +140,7 @@ export function uniformPdf1D(a: number, b: number): Pdf1D {
     sampleBatch(u, x, p, start, end) {
       const w = b - a;
       for (let i = start; i < end; i++) {
-        const xi = a + u[i]! * w;
+        const xi = a + u[i] * w;
         x[i] = xi > b ? b : xi;
         p[i] = inv;
       }
@@ -170,7 +170,7 @@ export function linearPdf1D(a: number, b: number, w0: number, w1: number): Pdf1D
       const w00 = w0 * w0;
       const w11 = w1 * w1;
       for (let i = start; i < end; i++) {
-        const ui = u[i]!;
+        const ui = u[i];
         let t = ui === 0 && w0 === 0 ? 0 : (ui * s) / (w0 + Math.sqrt((1 - ui) * w00 + ui * w11));
         if (t > 1) t = 1;
         x[i] = a + t * w;
@@ -195,7 +195,7 @@ export function squarePdf1D(a: number, b: number, c = 2): Pdf1D {
     sampleBatch(u, x, p, start, end) {
       const k = 3 / D;
       for (let i = start; i < end; i++) {
-        let xi = Math.cbrt(A3 + u[i]! * D) - c;
+        let xi = Math.cbrt(A3 + u[i] * D) - c;
         xi = xi < a ? a : xi > b ? b : xi;
         x[i] = xi;
         const X = xi + c;
@@ -246,11 +246,16 @@ export type TypedPdfResult =
  * outside [a, b]. Source: pbrt-v4 §A.4.1 `PiecewiseConstant1D` (Sample, Invert), used over bin
  * masses so that each bin carries exactly the mass of the typed density over it.
  */
-export function piecewiseConstantPdf1D(masses: ArrayLike<number>, a: number, b: number, kind = 'tabulated'): Pdf1D {
+export function piecewiseConstantPdf1D(
+  masses: ArrayLike<number>,
+  a: number,
+  b: number,
+  kind = 'tabulated',
+): Pdf1D {
   const n = masses.length;
   const dx = (b - a) / n;
   const values = new Float64Array(n);
-  for (let k = 0; k < n; k++) values[k] = masses[k]! / dx;
+  for (let k = 0; k < n; k++) values[k] = masses[k] / dx;
   const table = new PiecewiseConstant1D(values, a, b);
   const dens = table.pdfs;
   return {
@@ -264,12 +269,13 @@ export function piecewiseConstantPdf1D(masses: ArrayLike<number>, a: number, b: 
       const k = Math.min(n - 1, Math.floor(s));
       // a point on the edge between a full bin and an empty one belongs to the full one (the
       // sampler returns the right edge of bin k − 1 when rounding gives t = 1)
-      return dens[k]! === 0 && k > 0 && s === k ? dens[k - 1]! : dens[k]!;
+      return dens[k] === 0 && k > 0 && s === k ? dens[k - 1] : dens[k];
     },
     invert: (x) => table.invert(x),
     sampleBatch(u, x, p, start, end) {
       if (start === 0) table.sampleMany(u, x, p, end);
-      else table.sampleMany(u.subarray(start, end), x.subarray(start, end), p.subarray(start, end), end - start);
+      else
+        table.sampleMany(u.subarray(start, end), x.subarray(start, end), p.subarray(start, end), end - start);
     },
   };
 }
@@ -299,14 +305,27 @@ export function tabulatedPdf1D(
   integrate?: (g: (x: number) => number, a: number, b: number) => { value: number; converged: boolean },
   kind = 'custom',
 ): TypedPdfResult {
-  const fail = (k: PdfProblemKind, message: string, x?: number): TypedPdfResult => (x === undefined ? { ok: false, kind: k, message } : { ok: false, kind: k, x, message });
-  if (!(Number.isFinite(a) && Number.isFinite(b) && a < b)) return fail('not-normalizable', `the interval [${a}, ${b}] is empty or not finite`);
+  const fail = (k: PdfProblemKind, message: string, x?: number): TypedPdfResult =>
+    x === undefined ? { ok: false, kind: k, message } : { ok: false, kind: k, x, message };
+  if (!(Number.isFinite(a) && Number.isFinite(b) && a < b))
+    return fail('not-normalizable', `the interval [${a}, ${b}] is empty or not finite`);
   const h = (b - a) / bins;
   const masses = new Float64Array(bins);
   const check = (x: number, v: number): TypedPdfResult | null => {
-    if (Number.isNaN(v)) return fail('not-finite', `p(x) is not a number at x = ${fmt(x)} (outside the domain of the expression?)`, x);
-    if (v < 0) return fail('negative', `p(x) = ${fmt(v)} < 0 at x = ${fmt(x)}: a density cannot be negative`, x);
-    if (v === Infinity) return fail('not-normalizable', `p(x) is infinite at x = ${fmt(x)}, so it cannot be normalized here`, x);
+    if (Number.isNaN(v))
+      return fail(
+        'not-finite',
+        `p(x) is not a number at x = ${fmt(x)} (outside the domain of the expression?)`,
+        x,
+      );
+    if (v < 0)
+      return fail('negative', `p(x) = ${fmt(v)} < 0 at x = ${fmt(x)}: a density cannot be negative`, x);
+    if (v === Infinity)
+      return fail(
+        'not-normalizable',
+        `p(x) is infinite at x = ${fmt(x)}, so it cannot be normalized here`,
+        x,
+      );
     if (!Number.isFinite(v)) return fail('not-finite', `p(x) is not finite at x = ${fmt(x)}`, x);
     return null;
   };
@@ -315,11 +334,11 @@ export function tabulatedPdf1D(
     const c = a + (k + 0.5) * h;
     let m = 0;
     for (let j = 0; j < 4; j++) {
-      const x = c + 0.5 * h * GL4_X[j]!;
+      const x = c + 0.5 * h * GL4_X[j];
       const v = p(x);
       const bad = check(x, v);
       if (bad) return bad;
-      m += GL4_W[j]! * v;
+      m += GL4_W[j] * v;
       if (v === 0 && f && zeroWhereF === undefined) {
         const fv = f(x);
         if (fv !== 0 && Number.isFinite(fv)) zeroWhereF = x;
@@ -341,9 +360,13 @@ export function tabulatedPdf1D(
   const integ = integrate ?? defaultIntegrate;
   const Z = integ(p, a, b);
   if (!Number.isFinite(Z.value) || !Z.converged) {
-    return fail('not-normalizable', `∫ p dx over [${fmt(a)}, ${fmt(b)}] does not converge: p cannot be normalized into a density`);
+    return fail(
+      'not-normalizable',
+      `∫ p dx over [${fmt(a)}, ${fmt(b)}] does not converge: p cannot be normalized into a density`,
+    );
   }
-  if (!(Z.value > 0)) return fail('zero', `p is zero on all of [${fmt(a)}, ${fmt(b)}]: there is nothing to sample from`);
+  if (!(Z.value > 0))
+    return fail('zero', `p is zero on all of [${fmt(a)}, ${fmt(b)}]: there is nothing to sample from`);
   if (zeroWhereF !== undefined) {
     const x = zeroWhereF;
     return fail(
@@ -353,7 +376,7 @@ export function tabulatedPdf1D(
     );
   }
   let total = 0;
-  for (let k = 0; k < bins; k++) total += masses[k]!;
+  for (let k = 0; k < bins; k++) total += masses[k];
   if (!(total > 0)) return fail('zero', `p is zero on the sampling grid of [${fmt(a)}, ${fmt(b)}]`);
   const Zv = Z.value;
   return {
@@ -368,7 +391,13 @@ export function tabulatedPdf1D(
  * A user-typed pdf p on [a, b] (any positive multiple; normalized numerically), validated against
  * the integrand f (see {@link tabulatedPdf1D}). Measure dx.
  */
-export function customPdf1D(p: (x: number) => number, a: number, b: number, f?: (x: number) => number, bins = TABLE_BINS): TypedPdfResult {
+export function customPdf1D(
+  p: (x: number) => number,
+  a: number,
+  b: number,
+  f?: (x: number) => number,
+  bins = TABLE_BINS,
+): TypedPdfResult {
   return tabulatedPdf1D(p, a, b, f, bins, undefined, 'custom');
 }
 
@@ -377,13 +406,22 @@ export function customPdf1D(p: (x: number) => number, a: number, b: number, f?: 
  * constant ∫|f| up to the table's resolution). Fails with 'zero' when f vanishes on [a, b].
  * Measure dx. Source: pbrt-v4 §2.2.2 (importance sampling, p ∝ f is optimal).
  */
-export function proportionalPdf1D(f: (x: number) => number, a: number, b: number, bins = TABLE_BINS): TypedPdfResult {
+export function proportionalPdf1D(
+  f: (x: number) => number,
+  a: number,
+  b: number,
+  bins = TABLE_BINS,
+): TypedPdfResult {
   const absf = (x: number) => Math.abs(f(x));
   return tabulatedPdf1D(absf, a, b, undefined, bins, undefined, 'proportional');
 }
 
 /** Z by adaptive Gauss–Kronrod, to a relative 1e-12 (enough to tell a density from a divergent one). */
-function defaultIntegrate(g: (x: number) => number, a: number, b: number): { value: number; converged: boolean } {
+function defaultIntegrate(
+  g: (x: number) => number,
+  a: number,
+  b: number,
+): { value: number; converged: boolean } {
   const r = integrate1D(g, a, b, { relTol: 1e-12, maxIntervals: 4000 });
   return { value: r.value, converged: r.converged };
 }

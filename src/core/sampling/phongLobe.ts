@@ -70,7 +70,13 @@ export function phongThetaCdf(theta: number, exponent: number): number {
  * Batched {@link samplePhongLobe}: reads u[2i], u[2i+1], writes out[3i..3i+2], i ∈ [start, n).
  * Same order as the scalar sampler: inputs, the exponent, then the output.
  */
-export function samplePhongLobeBatch(u: Float64Array, exponent: number, out: Float64Array, n: number, start = 0): Float64Array {
+export function samplePhongLobeBatch(
+  u: Float64Array,
+  exponent: number,
+  out: Float64Array,
+  n: number,
+  start = 0,
+): Float64Array {
   for (let i = start; i < n; i++) samplePhongLobe(u[2 * i], u[2 * i + 1], exponent, out, 3 * i);
   return out;
 }

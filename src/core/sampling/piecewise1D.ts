@@ -7,8 +7,7 @@
 
 /** Result of {@link validateDensity}. */
 export type DensityCheck =
-  | { ok: true }
-  | { ok: false; reason: 'negative' | 'nonfinite' | 'zero'; index: number };
+  { ok: true } | { ok: false; reason: 'negative' | 'nonfinite' | 'zero'; index: number };
 
 /**
  * Check that tabulated density values can define a distribution: every value finite and ≥ 0, and
@@ -18,7 +17,7 @@ export type DensityCheck =
 export function validateDensity(values: ArrayLike<number>): DensityCheck {
   let any = false;
   for (let i = 0; i < values.length; i++) {
-    const v = values[i]!;
+    const v = values[i];
     if (!Number.isFinite(v)) return { ok: false, reason: 'nonfinite', index: i };
     if (v < 0) return { ok: false, reason: 'negative', index: i };
     if (v > 0) any = true;
@@ -113,7 +112,7 @@ export class PiecewiseConstant1D {
     // Work with w = f / max(f) so that neither the sum nor the integral can overflow or underflow
     // (a table like [1e-320] on a short interval, or [1e308, 1e308], still normalizes exactly).
     let maxF = 0;
-    for (let i = 0; i < n; i++) if (this.func[i]! > maxF) maxF = this.func[i]!;
+    for (let i = 0; i < n; i++) if (this.func[i] > maxF) maxF = this.func[i];
     const cdf = new Float64Array(n + 1);
     const pdfs = new Float64Array(n);
     const dx = (max - min) / n;
@@ -121,10 +120,10 @@ export class PiecewiseConstant1D {
       for (let i = 1; i <= n; i++) cdf[i] = i / n;
       this.integral = 0;
     } else {
-      for (let i = 1; i <= n; i++) cdf[i] = cdf[i - 1]! + this.func[i - 1]! / maxF;
-      const sum = cdf[n]!; // in [1, n]
-      for (let i = 1; i <= n; i++) cdf[i] = cdf[i]! / sum;
-      for (let i = 0; i < n; i++) pdfs[i] = this.func[i]! / maxF / sum / dx;
+      for (let i = 1; i <= n; i++) cdf[i] = cdf[i - 1] + this.func[i - 1] / maxF;
+      const sum = cdf[n]; // in [1, n]
+      for (let i = 1; i <= n; i++) cdf[i] = cdf[i] / sum;
+      for (let i = 0; i < n; i++) pdfs[i] = this.func[i] / maxF / sum / dx;
       this.integral = maxF * sum * dx;
       // entries after the last non-zero bin are exactly 1, so rounding can never let u < 1 select
       // a trailing empty bin
@@ -140,7 +139,7 @@ export class PiecewiseConstant1D {
   /** CDF at the left edge of bin i (i = 0 … count; cdfAt(count) = 1). Clamped index. */
   cdfAt(i: number): number {
     const k = Math.max(0, Math.min(this.count, Math.floor(i)));
-    return this.cdf[k]!;
+    return this.cdf[k];
   }
 
   /** Bin containing x (clamped to [0, count − 1]). */
@@ -158,12 +157,12 @@ export class PiecewiseConstant1D {
   sample(u: number): { x: number; pdf: number; offset: number } {
     const uu = u > 0 ? (u < 1 ? u : 1) : 0;
     const cdf = this.cdf;
-    const o = findInterval(cdf.length, (i) => cdf[i]! <= uu);
-    let du = uu - cdf[o]!;
-    const w = cdf[o + 1]! - cdf[o]!;
+    const o = findInterval(cdf.length, (i) => cdf[i] <= uu);
+    let du = uu - cdf[o];
+    const w = cdf[o + 1] - cdf[o];
     if (w > 0) du /= w;
     if (du > 1) du = 1;
-    const pdf = this.pdfs[o]!;
+    const pdf = this.pdfs[o];
     const x = this.min + ((o + du) / this.count) * (this.max - this.min);
     return { x: x < this.max ? x : this.max, pdf, offset: o };
   }
@@ -177,27 +176,27 @@ export class PiecewiseConstant1D {
     const n = this.count;
     const span = this.max - this.min;
     for (let k = 0; k < count; k++) {
-      const uu = u[k]! > 0 ? (u[k]! < 1 ? u[k]! : 1) : 0;
+      const uu = u[k] > 0 ? (u[k] < 1 ? u[k] : 1) : 0;
       let lo = 0;
       let hi = n; // invariant: cdf[lo] <= uu, answer in [lo, hi)
       while (hi - lo > 1) {
         const mid = (lo + hi) >>> 1;
-        if (cdf[mid]! <= uu) lo = mid;
+        if (cdf[mid] <= uu) lo = mid;
         else hi = mid;
       }
-      const w = cdf[lo + 1]! - cdf[lo]!;
-      let du = w > 0 ? (uu - cdf[lo]!) / w : uu - cdf[lo]!;
+      const w = cdf[lo + 1] - cdf[lo];
+      let du = w > 0 ? (uu - cdf[lo]) / w : uu - cdf[lo];
       if (du > 1) du = 1;
       const x = this.min + ((lo + du) / n) * span;
       xOut[k] = x < this.max ? x : this.max;
-      if (pdfOut) pdfOut[k] = this.pdfs[lo]!;
+      if (pdfOut) pdfOut[k] = this.pdfs[lo];
     }
   }
 
   /** Density at x (per unit length): f[bin]/integral inside [min, max], 0 outside. */
   pdf(x: number): number {
     if (!(x >= this.min && x <= this.max)) return 0;
-    return this.pdfs[this.offsetOf(x)]!;
+    return this.pdfs[this.offsetOf(x)];
   }
 
   /**
@@ -210,6 +209,6 @@ export class PiecewiseConstant1D {
     const c = ((x - this.min) / (this.max - this.min)) * this.count;
     const o = Math.min(this.count - 1, Math.floor(c));
     const delta = c - o;
-    return this.cdf[o]! + delta * (this.cdf[o + 1]! - this.cdf[o]!);
+    return this.cdf[o] + delta * (this.cdf[o + 1] - this.cdf[o]);
   }
 }

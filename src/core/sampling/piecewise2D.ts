@@ -36,7 +36,12 @@ export class PiecewiseConstant2D {
    * @param nu columns (u), nv rows (v); positive integers with f.length = nu·nv (RangeError otherwise)
    * @param domain the rectangle, u0 < u1 and v0 < v1
    */
-  constructor(f: ArrayLike<number>, nu: number, nv: number, domain: Domain2D = { u0: 0, u1: 1, v0: 0, v1: 1 }) {
+  constructor(
+    f: ArrayLike<number>,
+    nu: number,
+    nv: number,
+    domain: Domain2D = { u0: 0, u1: 1, v0: 0, v1: 1 },
+  ) {
     if (!(Number.isInteger(nu) && Number.isInteger(nv) && nu >= 1 && nv >= 1 && f.length === nu * nv)) {
       throw new RangeError(`a ${nu}×${nv} table needs ${nu * nv} values, got ${f.length}`);
     }
@@ -48,11 +53,11 @@ export class PiecewiseConstant2D {
     this.rows = [];
     // rows are built from f / max(f) so that row integrals cannot overflow or underflow
     let maxF = 0;
-    for (let i = 0; i < f.length; i++) if (f[i]! > maxF) maxF = f[i]!;
+    for (let i = 0; i < f.length; i++) if (f[i] > maxF) maxF = f[i];
     const rowIntegrals = new Float64Array(nv);
     const row = new Float64Array(nu);
     for (let v = 0; v < nv; v++) {
-      for (let u = 0; u < nu; u++) row[u] = f[v * nu + u]! / maxF;
+      for (let u = 0; u < nu; u++) row[u] = f[v * nu + u] / maxF;
       const r = new PiecewiseConstant1D(row, domain.u0, domain.u1, { allowZero: true });
       this.rows.push(r);
       rowIntegrals[v] = r.integral;
@@ -66,7 +71,7 @@ export class PiecewiseConstant2D {
    * divided by the table's maximum (its pdf is the true conditional density).
    */
   conditional(i: number): PiecewiseConstant1D {
-    return this.rows[Math.max(0, Math.min(this.nv - 1, Math.floor(i)))]!;
+    return this.rows[Math.max(0, Math.min(this.nv - 1, Math.floor(i)))];
   }
 
   /**
@@ -75,7 +80,7 @@ export class PiecewiseConstant2D {
    */
   sample(u1: number, u2: number): { u: number; v: number; pdf: number } {
     const m = this.marginal.sample(u2);
-    const c = this.rows[m.offset]!.sample(u1);
+    const c = this.rows[m.offset].sample(u1);
     return { u: c.x, v: m.x, pdf: m.pdf * c.pdf };
   }
 
@@ -84,7 +89,7 @@ export class PiecewiseConstant2D {
     const d = this.domain;
     if (!(u >= d.u0 && u <= d.u1 && v >= d.v0 && v <= d.v1)) return 0;
     const iv = this.marginal.offsetOf(v);
-    return this.marginal.pdfs[iv]! * this.rows[iv]!.pdf(u);
+    return this.marginal.pdfs[iv] * this.rows[iv].pdf(u);
   }
 
   /**
@@ -95,6 +100,6 @@ export class PiecewiseConstant2D {
   invert(u: number, v: number): { u1: number; u2: number } {
     const u2 = this.marginal.invert(v);
     const iv = this.marginal.offsetOf(Math.min(Math.max(v, this.domain.v0), this.domain.v1));
-    return { u1: this.rows[iv]!.invert(u), u2 };
+    return { u1: this.rows[iv].invert(u), u2 };
   }
 }

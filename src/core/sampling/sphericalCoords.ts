@@ -66,7 +66,13 @@ export function sphericalPhi(x: number, y: number): number {
  * Passing sin θ and cos θ separately (rather than θ) lets samplers keep the precision of their
  * closed forms (e.g. sin θ = √ξ₁ for the exam lobe). Returns `out`.
  */
-export function sphericalDirection(sinTheta: number, cosTheta: number, phi: number, out: VecOut, o = 0): VecOut {
+export function sphericalDirection(
+  sinTheta: number,
+  cosTheta: number,
+  phi: number,
+  out: VecOut,
+  o = 0,
+): VecOut {
   out[o] = sinTheta * Math.cos(phi);
   out[o + 1] = sinTheta * Math.sin(phi);
   out[o + 2] = cosTheta;

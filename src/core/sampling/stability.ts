@@ -59,13 +59,32 @@ export interface StabilityForm {
 export const STABILITY_FORMS: readonly StabilityForm[] = [
   { id: 'theta-acos', quantity: 'theta', tex: '\\tfrac12\\arccos(1-2\\xi_1)', fn: thetaFromXiAcos },
   { id: 'theta-asin', quantity: 'theta', tex: '\\arcsin\\sqrt{\\xi_1}', fn: thetaFromXiAsin },
-  { id: 'theta-atan2', quantity: 'theta', tex: '\\operatorname{atan2}(\\sqrt{\\xi_1},\\sqrt{1-\\xi_1})', fn: thetaFromXiStable },
+  {
+    id: 'theta-atan2',
+    quantity: 'theta',
+    tex: '\\operatorname{atan2}(\\sqrt{\\xi_1},\\sqrt{1-\\xi_1})',
+    fn: thetaFromXiStable,
+  },
   { id: 'phi-log', quantity: 'phi', tex: '\\ln\\big((e^{2\\pi}-1)\\xi_2+1\\big)', fn: phiFromXiLog },
-  { id: 'phi-log1p', quantity: 'phi', tex: '\\operatorname{log1p}\\big(\\operatorname{expm1}(2\\pi)\\,\\xi_2\\big)', fn: phiFromXiLog1p },
+  {
+    id: 'phi-log1p',
+    quantity: 'phi',
+    tex: '\\operatorname{log1p}\\big(\\operatorname{expm1}(2\\pi)\\,\\xi_2\\big)',
+    fn: phiFromXiLog1p,
+  },
 ];
 
 /** The ξ values the panel evaluates: tiny, moderate and near 1 (all exactly representable). */
-export const STABILITY_XIS: readonly number[] = [1e-300, 2 ** -53, 1e-12, 1e-6, 0.5, 1 - 1e-6, 1 - 1e-12, 1 - 2 ** -53];
+export const STABILITY_XIS: readonly number[] = [
+  1e-300,
+  2 ** -53,
+  1e-12,
+  1e-6,
+  0.5,
+  1 - 1e-6,
+  1 - 1e-12,
+  1 - 2 ** -53,
+];
 
 export { ulp };
 
@@ -110,7 +129,10 @@ export async function computeStabilityReference(xis: readonly number[]): Promise
     // (truncation error < y⁵ < 1e-50 relative to y for y < 1e-10)
     const y = m.multiply(c, b) as ReturnType<typeof bn>;
     const lg = m.smaller(y, m.bignumber('1e-10'))
-      ? m.add(m.subtract(y, m.divide(m.pow(y, 2), 2)), m.subtract(m.divide(m.pow(y, 3), 3), m.divide(m.pow(y, 4), 4)))
+      ? m.add(
+          m.subtract(y, m.divide(m.pow(y, 2), 2)),
+          m.subtract(m.divide(m.pow(y, 3), 3), m.divide(m.pow(y, 4), 4)),
+        )
       : m.log(m.add(y, m.bignumber(1)));
     phi.push(Number((lg as ReturnType<typeof bn>).toString()));
   }
@@ -151,7 +173,10 @@ export interface StabilityRow {
 }
 
 /** Evaluate every form of {@link STABILITY_FORMS} at each ξ of the reference. Pure, synchronous. */
-export function stabilityTable(ref: StabilityReference, forms: readonly StabilityForm[] = STABILITY_FORMS): StabilityRow[] {
+export function stabilityTable(
+  ref: StabilityReference,
+  forms: readonly StabilityForm[] = STABILITY_FORMS,
+): StabilityRow[] {
   const rows: StabilityRow[] = [];
   for (const quantity of ['theta', 'phi'] as const) {
     ref.xi.forEach((xi, i) => {

@@ -64,7 +64,12 @@ function evalChecked(p: ThetaPhiDensity, theta: number, phi: number): number {
   try {
     v = p(theta, phi);
   } catch (e) {
-    throw new Invalid({ ok: false, kind: 'error', message: `evaluating the density failed at θ = ${fmt(theta)}, φ = ${fmt(phi)}: ${e instanceof Error ? e.message : String(e)}`, at: { theta, phi } });
+    throw new Invalid({
+      ok: false,
+      kind: 'error',
+      message: `evaluating the density failed at θ = ${fmt(theta)}, φ = ${fmt(phi)}: ${e instanceof Error ? e.message : String(e)}`,
+      at: { theta, phi },
+    });
   }
   if (typeof v !== 'number' || !Number.isFinite(v)) {
     throw new Invalid({
@@ -93,11 +98,11 @@ function massThetaPhi(p: ThetaPhiDensity, t0: number, t1: number, p0: number, p1
   for (let k = 0; k < np; k++) {
     const pc = p0 + (2 * k + 1) * hp;
     for (let a = 0; a < 4; a++) {
-      const th = t0 + ht * (1 + GL4_X[a]!);
+      const th = t0 + ht * (1 + GL4_X[a]);
       const st = Math.sin(th);
       for (let b = 0; b < 4; b++) {
-        const ph = pc + hp * GL4_X[b]!;
-        s += GL4_W[a]! * GL4_W[b]! * evalChecked(p, th, ph) * st;
+        const ph = pc + hp * GL4_X[b];
+        s += GL4_W[a] * GL4_W[b] * evalChecked(p, th, ph) * st;
       }
     }
   }
@@ -113,28 +118,37 @@ function massThetaPhi(p: ThetaPhiDensity, t0: number, t1: number, p0: number, p1
 function probeDivergence(p: ThetaPhiDensity, total: number): TabulateFailure | null {
   const H = HALF_PI;
   const scales = [2 ** -10, 2 ** -20, 2 ** -30, 2 ** -40];
-  const probes: { name: string; region: (e: number) => [number, number, number, number]; explain: string }[] = [
-    { name: 'the pole θ → 0', region: (e) => [e / 2, e, 0, TWO_PI], explain: '∫ p sin θ dθ near θ = 0' },
-    { name: 'the horizon θ → π/2', region: (e) => [H - e, H - e / 2, 0, TWO_PI], explain: '∫ p sin θ dθ near θ = π/2' },
-    { name: 'φ → 0', region: (e) => [0, H, e / 2, e], explain: '∫ p dφ near φ = 0' },
-    { name: 'φ → 2π', region: (e) => [0, H, TWO_PI - e, TWO_PI - e / 2], explain: '∫ p dφ near φ = 2π' },
-  ];
+  const probes: { name: string; region: (e: number) => [number, number, number, number]; explain: string }[] =
+    [
+      { name: 'the pole θ → 0', region: (e) => [e / 2, e, 0, TWO_PI], explain: '∫ p sin θ dθ near θ = 0' },
+      {
+        name: 'the horizon θ → π/2',
+        region: (e) => [H - e, H - e / 2, 0, TWO_PI],
+        explain: '∫ p sin θ dθ near θ = π/2',
+      },
+      { name: 'φ → 0', region: (e) => [0, H, e / 2, e], explain: '∫ p dφ near φ = 0' },
+      { name: 'φ → 2π', region: (e) => [0, H, TWO_PI - e, TWO_PI - e / 2], explain: '∫ p dφ near φ = 2π' },
+    ];
   for (const pr of probes) {
     const masses = scales.map((e) => {
       const [t0, t1, p0, p1] = pr.region(e);
       return massThetaPhi(p, t0, t1, p0, p1);
     });
-    const last = masses[masses.length - 1]!;
+    const last = masses[masses.length - 1];
     // a dyadic shell at scale 2⁻⁴⁰ holding more than 1e-6 of the total (or more than the shell at
     // 2⁻¹⁰ shrunk by 2⁻¹⁰) does not vanish: the integral diverges logarithmically or worse
     // (Only the shrinking decides when there is mass at 2⁻¹⁰: a sharp lobe such as cos¹⁰⁰⁰⁰θ, whose
     // peak the table misses, has a tiny table total but a mass at the pole that shrinks like e².)
-    if (!Number.isFinite(last) || (masses[0]! === 0 && last > 1e-6 * total) || (masses[0]! > 0 && last > masses[0]! * 2 ** -10 && last > 1e-9 * total)) {
-      const [t0, , p0] = pr.region(scales[scales.length - 1]!);
+    if (
+      !Number.isFinite(last) ||
+      (masses[0] === 0 && last > 1e-6 * total) ||
+      (masses[0] > 0 && last > masses[0] * 2 ** -10 && last > 1e-9 * total)
+    ) {
+      const [t0, , p0] = pr.region(scales[scales.length - 1]);
       return {
         ok: false,
         kind: 'divergent',
-        message: `the density is not integrable at ${pr.name}: ${pr.explain} does not shrink as the region shrinks (mass ${fmt(masses[0]!)}, ${fmt(masses[1]!)}, ${fmt(masses[2]!)}, ${fmt(last)} in regions of size 2⁻¹⁰ … 2⁻⁴⁰), so ∫ p dω = ∞ and no k can normalize it`,
+        message: `the density is not integrable at ${pr.name}: ${pr.explain} does not shrink as the region shrinks (mass ${fmt(masses[0])}, ${fmt(masses[1])}, ${fmt(masses[2])}, ${fmt(last)} in regions of size 2⁻¹⁰ … 2⁻⁴⁰), so ∫ p dω = ∞ and no k can normalize it`,
         at: { theta: t0, phi: p0 },
       };
     }
@@ -164,15 +178,20 @@ export function tabulateHemisphereDensity(p: ThetaPhiDensity, opts: TabulateOpti
   try {
     const f = table(p, nz, nphi);
     let any = false;
-    for (let i = 0; i < f.length; i++) if (f[i]! > 0) any = true;
-    if (!any) return { ok: false, kind: 'zero', message: 'the density is zero everywhere on the hemisphere, so it cannot be normalized' };
+    for (let i = 0; i < f.length; i++) if (f[i] > 0) any = true;
+    if (!any)
+      return {
+        ok: false,
+        kind: 'zero',
+        message: 'the density is zero everywhere on the hemisphere, so it cannot be normalized',
+      };
     const lobe = new TabulatedHemisphere(f, nz, nphi);
     const div = probeDivergence(p, lobe.integral);
     if (div) return div;
     // refinement check: the integral on a grid twice as fine in each direction
     const fine = table(p, 2 * nz, 2 * nphi);
     let fineSum = 0;
-    for (let i = 0; i < fine.length; i++) fineSum += fine[i]!;
+    for (let i = 0; i < fine.length; i++) fineSum += fine[i];
     const fineIntegral = (fineSum * TWO_PI) / (4 * nz * nphi);
     const rel = Math.abs(fineIntegral - lobe.integral) / lobe.integral;
     const warning =
@@ -212,9 +231,9 @@ export class TabulatedHemisphere {
     this.nphi = nphi;
     const pm = new Float64Array(nphi);
     let total = 0;
-    for (let iz = 0; iz < nz; iz++) for (let ip = 0; ip < nphi; ip++) total += f[iz * nphi + ip]!;
-    for (let iz = 0; iz < nz; iz++) for (let ip = 0; ip < nphi; ip++) pm[ip] = pm[ip]! + f[iz * nphi + ip]!;
-    for (let ip = 0; ip < nphi; ip++) pm[ip] = (pm[ip]! / total) * (nphi / TWO_PI);
+    for (let iz = 0; iz < nz; iz++) for (let ip = 0; ip < nphi; ip++) total += f[iz * nphi + ip];
+    for (let iz = 0; iz < nz; iz++) for (let ip = 0; ip < nphi; ip++) pm[ip] = pm[ip] + f[iz * nphi + ip];
+    for (let ip = 0; ip < nphi; ip++) pm[ip] = (pm[ip] / total) * (nphi / TWO_PI);
     this.phiMarginal = pm;
   }
 
@@ -246,17 +265,17 @@ export class TabulatedHemisphere {
     const nz = this.nz;
     const nphi = this.nphi;
     for (let i = start; i < n; i++) {
-      const a = u[2 * i]!;
+      const a = u[2 * i];
       const lo = cdfSegment(mc, nz, a);
-      const w = mc[lo + 1]! - mc[lo]!;
-      let du = w > 0 ? (a - mc[lo]!) / w : 0;
+      const w = mc[lo + 1] - mc[lo];
+      let du = w > 0 ? (a - mc[lo]) / w : 0;
       if (du > 1) du = 1;
       const z = Math.min(1, (lo + du) / nz);
       const rc = this.dist.conditional(lo).cdf;
-      const b = u[2 * i + 1]!;
+      const b = u[2 * i + 1];
       const lo2 = cdfSegment(rc, nphi, b);
-      const w2 = rc[lo2 + 1]! - rc[lo2]!;
-      let dv = w2 > 0 ? (b - rc[lo2]!) / w2 : 0;
+      const w2 = rc[lo2 + 1] - rc[lo2];
+      let dv = w2 > 0 ? (b - rc[lo2]) / w2 : 0;
       if (dv > 1) dv = 1;
       let phi = ((lo2 + dv) / nphi) * TWO_PI;
       if (phi >= TWO_PI) phi = TWO_PI_BELOW;
@@ -291,7 +310,7 @@ export class TabulatedHemisphere {
   /** Marginal density of φ per unit φ on [0, 2π), 0 elsewhere. */
   phiPdf(phi: number): number {
     if (!(phi >= 0 && phi < TWO_PI)) return 0;
-    return this.phiMarginal[Math.min(this.nphi - 1, Math.floor((phi / TWO_PI) * this.nphi))]!;
+    return this.phiMarginal[Math.min(this.nphi - 1, Math.floor((phi / TWO_PI) * this.nphi))];
   }
 
   /** The marginal over rows (z), for plots. */
@@ -306,7 +325,7 @@ function cdfSegment(cdf: Float64Array, size: number, a: number): number {
   let hi = size;
   while (hi - lo > 1) {
     const mid = (lo + hi) >>> 1;
-    if (cdf[mid]! <= a) lo = mid;
+    if (cdf[mid] <= a) lo = mid;
     else hi = mid;
   }
   return lo;

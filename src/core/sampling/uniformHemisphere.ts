@@ -6,14 +6,7 @@
  * Source: pbrt-v4 section A.5.2, `SampleUniformHemisphere` / `UniformHemispherePDF` /
  * `InvertUniformHemisphereSample` (util/sampling.h).
  */
-import {
-  INV_TWO_PI,
-  TWO_PI,
-  TWO_PI_BELOW,
-  clampUnit,
-  sphericalPhi,
-  type VecOut,
-} from './sphericalCoords';
+import { INV_TWO_PI, TWO_PI, TWO_PI_BELOW, clampUnit, sphericalPhi, type VecOut } from './sphericalCoords';
 
 /** 1/(2π): the constant density of the uniform hemisphere, per steradian. */
 export const UNIFORM_HEMISPHERE_PDF = INV_TWO_PI;
@@ -55,7 +48,12 @@ export function invertUniformHemisphereSample(x: number, y: number, z: number): 
  * Batched {@link sampleUniformHemisphere}: reads u[2i], u[2i+1] and writes out[3i..3i+2] for
  * i ∈ [start, end). Caller-owned buffers, no allocation.
  */
-export function sampleUniformHemisphereBatch(u: Float64Array, out: Float64Array, n: number, start = 0): Float64Array {
+export function sampleUniformHemisphereBatch(
+  u: Float64Array,
+  out: Float64Array,
+  n: number,
+  start = 0,
+): Float64Array {
   for (let i = start; i < n; i++) sampleUniformHemisphere(u[2 * i], u[2 * i + 1], out, 3 * i);
   return out;
 }

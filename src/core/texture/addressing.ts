@@ -66,7 +66,6 @@ export function addressIndex(i: number, n: number, mode: WrapMode): number {
       return i < 0 ? 0 : i >= n ? n - 1 : i;
     case 'repeat': {
       return ((i % n) + n) % n; // non-negative, and +0 rather than −0
-
     }
     case 'mirror': {
       const p = 2 * n;

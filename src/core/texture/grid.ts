@@ -81,7 +81,10 @@ export function parseGrid(text: string): ParseGridResult {
   if (t.length === 0) return fail('empty', 'The grid is empty.');
   const rowTexts = t.split(';');
   if (rowTexts.length < MIN_GRID_SIZE || rowTexts.length > MAX_GRID_SIZE) {
-    return fail('size', `The grid has ${rowTexts.length} row${rowTexts.length === 1 ? '' : 's'}; it needs ${MIN_GRID_SIZE} to ${MAX_GRID_SIZE}.`);
+    return fail(
+      'size',
+      `The grid has ${rowTexts.length} row${rowTexts.length === 1 ? '' : 's'}; it needs ${MIN_GRID_SIZE} to ${MAX_GRID_SIZE}.`,
+    );
   }
   const rows: number[][] = [];
   let width = -1;
@@ -90,20 +93,32 @@ export function parseGrid(text: string): ParseGridResult {
     if (width < 0) {
       width = cells.length;
       if (width < MIN_GRID_SIZE || width > MAX_GRID_SIZE) {
-        return fail('size', `Row 1 has ${width} value${width === 1 ? '' : 's'}; rows need ${MIN_GRID_SIZE} to ${MAX_GRID_SIZE}.`);
+        return fail(
+          'size',
+          `Row 1 has ${width} value${width === 1 ? '' : 's'}; rows need ${MIN_GRID_SIZE} to ${MAX_GRID_SIZE}.`,
+        );
       }
     } else if (cells.length !== width) {
-      return fail('ragged', `The grid is ragged: row ${r + 1} has ${cells.length} value${cells.length === 1 ? '' : 's'}, row 1 has ${width}.`);
+      return fail(
+        'ragged',
+        `The grid is ragged: row ${r + 1} has ${cells.length} value${cells.length === 1 ? '' : 's'}, row 1 has ${width}.`,
+      );
     }
     const row: number[] = [];
     for (let c = 0; c < cells.length; c++) {
       const s = cells[c].trim();
       if (!NUMBER_RE.test(s)) {
         const shown = s.length > 12 ? `${s.slice(0, 12)}…` : s;
-        return fail('cell', s === '' ? `Row ${r + 1}, column ${c + 1} is empty.` : `Row ${r + 1}, column ${c + 1} is not a number: "${shown}".`);
+        return fail(
+          'cell',
+          s === ''
+            ? `Row ${r + 1}, column ${c + 1} is empty.`
+            : `Row ${r + 1}, column ${c + 1} is not a number: "${shown}".`,
+        );
       }
       const x = Number(s);
-      if (!Number.isFinite(x)) return fail('cell', `Row ${r + 1}, column ${c + 1} is too large: "${s.slice(0, 12)}".`);
+      if (!Number.isFinite(x))
+        return fail('cell', `Row ${r + 1}, column ${c + 1} is too large: "${s.slice(0, 12)}".`);
       row.push(x);
     }
     rows.push(row);

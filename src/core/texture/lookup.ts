@@ -83,7 +83,13 @@ export interface NearestStencil {
   nodeV: number;
 }
 
-function nearestIndex(p: AxisPos, t: number, n: number, align: Align, wrap: WrapMode): { k: number; raw: number } {
+function nearestIndex(
+  p: AxisPos,
+  t: number,
+  n: number,
+  align: Align,
+  wrap: WrapMode,
+): { k: number; raw: number } {
   if (align === 'corner') {
     const k = Math.round(p.s);
     return { k, raw: k };
@@ -178,7 +184,12 @@ function axisTaps(p: AxisPos, n: number, align: Align, wrap: WrapMode): AxisTaps
  * sum Σ w·t with weights (1 − fu)(1 − fv), fu(1 − fv), (1 − fu)fv, fu·fv. Reproduces any function
  * a + b u + c v + d u v exactly (up to rounding) inside the nodes' hull.
  */
-export function bilinearStencil(grid: TextureGrid, u: number, v: number, opts: LookupOptions): BilinearStencil {
+export function bilinearStencil(
+  grid: TextureGrid,
+  u: number,
+  v: number,
+  opts: LookupOptions,
+): BilinearStencil {
   const vv = flipV(v, opts.vflip);
   const pu = axisPos(u, grid.width, opts.align, opts.wrap);
   const pv = axisPos(vv, grid.height, opts.align, opts.wrap);
@@ -268,7 +279,14 @@ export function bilinear(grid: TextureGrid, u: number, v: number, opts: LookupOp
  * cell a query falls in (many times, e.g. along a path): writes i0, i1, j0, j1 (as in
  * {@link bilinearStencil}, by the same arithmetic as {@link bilinear}) to out[at … at + 3].
  */
-export function bilinearTapsInto(grid: TextureGrid, u: number, v: number, opts: LookupOptions, out: Float64Array, at = 0): void {
+export function bilinearTapsInto(
+  grid: TextureGrid,
+  u: number,
+  v: number,
+  opts: LookupOptions,
+  out: Float64Array,
+  at = 0,
+): void {
   const w = grid.width;
   const h = grid.height;
   const vv = opts.vflip ? 1 - v : v;
@@ -294,7 +312,10 @@ export function nearestTapIndex(grid: TextureGrid, u: number, v: number, opts: L
   const w = grid.width;
   const h = grid.height;
   const vv = opts.vflip ? 1 - v : v;
-  if (opts.align === 'corner') return Math.round(addressCoord(vv, opts.wrap) * (h - 1)) * w + Math.round(addressCoord(u, opts.wrap) * (w - 1));
+  if (opts.align === 'corner')
+    return (
+      Math.round(addressCoord(vv, opts.wrap) * (h - 1)) * w + Math.round(addressCoord(u, opts.wrap) * (w - 1))
+    );
   const i = addressIndex(Math.floor((Number.isFinite(u) ? u : 0) * w), w, opts.wrap);
   const j = addressIndex(Math.floor((Number.isFinite(vv) ? vv : 0) * h), h, opts.wrap);
   return j * w + i;
@@ -331,7 +352,12 @@ export type Filter = 'nearest' | 'bilinear';
 type PixelWindow = { uMin: number; uMax: number; vMin: number; vMax: number };
 
 /** The u of each pixel column's centre and the v (flipped when opts.vflip) of each row's, as {@link reconstructInto} samples them. */
-function pixelCoords(opts: LookupOptions, width: number, height: number, window: PixelWindow): { us: Float64Array; vs: Float64Array } {
+function pixelCoords(
+  opts: LookupOptions,
+  width: number,
+  height: number,
+  window: PixelWindow,
+): { us: Float64Array; vs: Float64Array } {
   const su = (window.uMax - window.uMin) / width;
   const sv = (window.vMax - window.vMin) / height;
   const us = new Float64Array(width);
@@ -345,14 +371,20 @@ function pixelCoords(opts: LookupOptions, width: number, height: number, window:
 }
 
 /** Per pixel column the texel column, per row the texel row's offset j · width, of nearestValueFast at those coordinates. */
-function nearestTaps(grid: TextureGrid, opts: LookupOptions, us: Float64Array, vs: Float64Array): { col: Int32Array; rowOff: Int32Array } {
+function nearestTaps(
+  grid: TextureGrid,
+  opts: LookupOptions,
+  us: Float64Array,
+  vs: Float64Array,
+): { col: Int32Array; rowOff: Int32Array } {
   const w = grid.width;
   const h = grid.height;
   const col = new Int32Array(us.length);
   const rowOff = new Int32Array(vs.length);
   if (opts.align === 'corner') {
     for (let px = 0; px < us.length; px++) col[px] = Math.round(addressCoord(us[px], opts.wrap) * (w - 1));
-    for (let py = 0; py < vs.length; py++) rowOff[py] = Math.round(addressCoord(vs[py], opts.wrap) * (h - 1)) * w;
+    for (let py = 0; py < vs.length; py++)
+      rowOff[py] = Math.round(addressCoord(vs[py], opts.wrap) * (h - 1)) * w;
   } else {
     for (let px = 0; px < us.length; px++) {
       const u = us[px];

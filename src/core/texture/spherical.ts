@@ -42,7 +42,6 @@ export type SphericalUV =
     }
   | Failure<'nonfinite' | 'origin'>;
 
-
 /**
  * Spherical (u, v) of the point (x, y, z) about the origin. Domain: finite, not all zero.
  * See the module comment for the seam and pole rules.

@@ -111,20 +111,21 @@ export function chi2Test(
   });
   if (expected.length !== bins) return fail(`observed has ${bins} bins but expected has ${expected.length}`);
   for (let i = 0; i < bins; i++) {
-    const o = observed[i]!;
-    const e = expected[i]!;
+    const o = observed[i];
+    const e = expected[i];
     if (!Number.isFinite(o) || o < 0) return fail(`observed count in bin ${i} is ${o}`);
-    if (!Number.isFinite(e) || e < 0) return fail(`expected count in bin ${i} is ${e} (the pdf is negative or not finite there)`);
+    if (!Number.isFinite(e) || e < 0)
+      return fail(`expected count in bin ${i} is ${e} (the pdf is negative or not finite there)`);
   }
-  const order = Array.from({ length: bins }, (_, i) => i).sort((a, b) => expected[a]! - expected[b]!);
+  const order = Array.from({ length: bins }, (_, i) => i).sort((a, b) => expected[a] - expected[b]);
   let statistic = 0;
   let dof = 0;
   let pooledObs = 0;
   let pooledExp = 0;
   let pooledBins = 0;
   for (const i of order) {
-    const o = observed[i]!;
-    const e = expected[i]!;
+    const o = observed[i];
+    const e = expected[i];
     if (e === 0) {
       if (o > 0) return fail(`${o} sample(s) fell in bin ${i}, where the pdf predicts none`);
       continue;
@@ -148,7 +149,12 @@ export function chi2Test(
   if (dof < 1) {
     // Not a rejection: the test cannot be run. pValue is NaN ("does not apply"), pass is false.
     return {
-      ...fail('too few bins with enough expected samples for a χ² test (use more samples or fewer bins)', statistic, Math.max(dof, 0), pooledBins),
+      ...fail(
+        'too few bins with enough expected samples for a χ² test (use more samples or fewer bins)',
+        statistic,
+        Math.max(dof, 0),
+        pooledBins,
+      ),
       pValue: NaN,
     };
   }

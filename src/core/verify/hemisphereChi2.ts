@@ -2,7 +2,6 @@ import { TWO_PI } from '../sampling/sphericalCoords';
 import { chi2Test, type Chi2Result } from './chi2';
 import { adaptiveIntegrate2D, type AdaptiveOptions } from './quadrature';
 
-
 /** Options of {@link hemisphereChi2}. */
 export interface HemisphereChi2Options {
   /** Number of bins in cos θ over [0, 1] (or [−1, 1] with `sphere`); default 10. */
@@ -63,9 +62,9 @@ export function hemisphereChi2(
   const cScale = nc / (1 - zMin);
   const pScale = np / TWO_PI;
   for (let i = 0; i < n; i++) {
-    const x = dirs[3 * i]!;
-    const y = dirs[3 * i + 1]!;
-    const z = dirs[3 * i + 2]!;
+    const x = dirs[3 * i];
+    const y = dirs[3 * i + 1];
+    const z = dirs[3 * i + 2];
     if (!(Number.isFinite(x) && Number.isFinite(y) && Number.isFinite(z)) || z < zMin) {
       outside++;
       continue;
@@ -146,8 +145,8 @@ export function planarChi2(
   const sy = ny / (y1 - y0);
   let outside = 0;
   for (let i = 0; i < n; i++) {
-    const x = points[2 * i]!;
-    const y = points[2 * i + 1]!;
+    const x = points[2 * i];
+    const y = points[2 * i + 1];
     if (!(x >= x0 && x <= x1 && y >= y0 && y <= y1)) {
       outside++;
       continue;

@@ -12,17 +12,22 @@
 
 /** Kronrod abscissae on [0, 1) (the odd-indexed ones, 1, 3, 5, are also the 7-point Gauss nodes, with 0). */
 const XGK = [
-  0.991455371120812639206854697526329, 0.949107912342758524526189684047851, 0.864864423359769072789712788640926,
-  0.741531185599394439863864773280788, 0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
+  0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
+  0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
+  0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
   0.207784955007898467600689403773245, 0,
 ];
 const WGK = [
-  0.022935322010529224963732008058970, 0.063092092629978553290700663189204, 0.104790010322250183839876322541518,
-  0.140653259715525918745189590510238, 0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
+  0.02293532201052922496373200805897, 0.063092092629978553290700663189204,
+  0.104790010322250183839876322541518, 0.140653259715525918745189590510238,
+  0.16900472663926790282658342659855, 0.190350578064785409913256402421014,
   0.204432940075298892414161999234649, 0.209482141084727828012999174891714,
 ];
 /** Gauss weights for XGK[1], XGK[3], XGK[5], XGK[7] = 0. */
-const WG = [0.129484966168869693270611432679082, 0.27970539148927666790146777142378, 0.381830050505118944950369775488975, 0.417959183673469387755102040816327];
+const WG = [
+  0.129484966168869693270611432679082, 0.27970539148927666790146777142378,
+  0.381830050505118944950369775488975, 0.417959183673469387755102040816327,
+];
 
 /** Name of the method, for display beside the reference value. */
 export const INTEGRATION_METHOD = 'adaptive Gauss–Kronrod (7/15-point, QUADPACK QAG)';
@@ -72,18 +77,18 @@ function qk15(f: (x: number) => number, a: number, b: number): Piece {
   const h = 0.5 * (b - a);
   const fc = f(c);
   let bad = Number.isFinite(fc) ? NaN : c;
-  let resK = fc * WGK[7]!;
-  let resG = fc * WG[3]!;
+  let resK = fc * WGK[7];
+  let resG = fc * WG[3];
   let resAbs = Math.abs(resK);
   for (let j = 0; j < 7; j++) {
-    const dx = h * XGK[j]!;
+    const dx = h * XGK[j];
     const f1 = f(c - dx);
     const f2 = f(c + dx);
     if (!Number.isFinite(f1) && Number.isNaN(bad)) bad = c - dx;
     if (!Number.isFinite(f2) && Number.isNaN(bad)) bad = c + dx;
-    resK += WGK[j]! * (f1 + f2);
-    resAbs += WGK[j]! * (Math.abs(f1) + Math.abs(f2));
-    if (j & 1) resG += WG[j >> 1]! * (f1 + f2);
+    resK += WGK[j] * (f1 + f2);
+    resAbs += WGK[j] * (Math.abs(f1) + Math.abs(f2));
+    if (j & 1) resG += WG[j >> 1] * (f1 + f2);
   }
   state.evals += 15;
   if (!Number.isNaN(bad) && Number.isNaN(state.nonFinite)) state.nonFinite = bad;
@@ -96,7 +101,12 @@ function qk15(f: (x: number) => number, a: number, b: number): Piece {
  * estimate does not shrink below the tolerance within `maxIntervals` (e.g. a divergent integral such
  * as ∫₀¹ dx/x), `converged` is false.
  */
-export function integrate1D(f: (x: number) => number, a: number, b: number, opts: Integrate1DOptions = {}): Integral1D {
+export function integrate1D(
+  f: (x: number) => number,
+  a: number,
+  b: number,
+  opts: Integrate1DOptions = {},
+): Integral1D {
   const relTol = opts.relTol ?? 4e-16;
   const absTol = opts.absTol ?? 0;
   const maxIntervals = opts.maxIntervals ?? 2000;
@@ -104,9 +114,18 @@ export function integrate1D(f: (x: number) => number, a: number, b: number, opts
   state.evals = 0;
   const base = { method: INTEGRATION_METHOD };
   if (!Number.isFinite(a) || !Number.isFinite(b)) {
-    return { ...base, value: NaN, error: Infinity, absValue: NaN, evaluations: 0, intervals: 0, converged: false };
+    return {
+      ...base,
+      value: NaN,
+      error: Infinity,
+      absValue: NaN,
+      evaluations: 0,
+      intervals: 0,
+      converged: false,
+    };
   }
-  if (a === b) return { ...base, value: 0, error: 0, absValue: 0, evaluations: 0, intervals: 0, converged: true };
+  if (a === b)
+    return { ...base, value: 0, error: 0, absValue: 0, evaluations: 0, intervals: 0, converged: true };
   const pieces: Piece[] = [qk15(f, a, b)];
   const done = (converged: boolean): Integral1D => {
     // Neumaier-compensated sums of the pieces
@@ -140,18 +159,18 @@ export function integrate1D(f: (x: number) => number, a: number, b: number, opts
     let absTotal = 0;
     let worst = 0;
     for (let i = 0; i < pieces.length; i++) {
-      const p = pieces[i]!;
+      const p = pieces[i];
       total += p.k;
       err += p.err;
       absTotal += p.abs;
-      if (p.err > pieces[worst]!.err) worst = i;
+      if (p.err > pieces[worst].err) worst = i;
     }
     const tol = Math.max(absTol, relTol * Math.abs(total));
     // rounding floor: below ~50 ε ∫|f| the K15−G7 difference is rounding noise (QUADPACK's 50·epmach)
     const floor = 50 * 2.220446049250313e-16 * absTotal;
     if (err <= tol || err <= floor) return done(true);
     if (pieces.length >= maxIntervals) return done(false);
-    const p = pieces[worst]!;
+    const p = pieces[worst];
     const m = 0.5 * (p.a + p.b);
     if (!(m > Math.min(p.a, p.b) && m < Math.max(p.a, p.b))) return done(false); // interval too small to split
     pieces[worst] = qk15(f, p.a, m);

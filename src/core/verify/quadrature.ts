@@ -65,10 +65,10 @@ export function gaussLegendre2D(
   const cy = 0.5 * (y1 + y0);
   let s = 0;
   for (let i = 0; i < x.length; i++) {
-    const xi = cx + hx * x[i]!;
+    const xi = cx + hx * x[i];
     let row = 0;
-    for (let j = 0; j < x.length; j++) row += w[j]! * f(xi, cy + hy * x[j]!);
-    s += w[i]! * row;
+    for (let j = 0; j < x.length; j++) row += w[j] * f(xi, cy + hy * x[j]);
+    s += w[i] * row;
   }
   return s * hx * hy;
 }
@@ -134,13 +134,13 @@ export function adaptiveIntegrate2D(
     let i = heap.length - 1;
     while (i > 0) {
       const p = (i - 1) >> 1;
-      if (cells[heap[p]!]!.err >= cells[heap[i]!]!.err) break;
-      [heap[p], heap[i]] = [heap[i]!, heap[p]!];
+      if (cells[heap[p]].err >= cells[heap[i]].err) break;
+      [heap[p], heap[i]] = [heap[i], heap[p]];
       i = p;
     }
   };
   const pop = (): Cell => {
-    const top = cells[heap[0]!]!;
+    const top = cells[heap[0]];
     const last = heap.pop()!;
     if (heap.length > 0) {
       heap[0] = last;
@@ -149,10 +149,10 @@ export function adaptiveIntegrate2D(
         const l = 2 * i + 1;
         const r = l + 1;
         let m = i;
-        if (l < heap.length && cells[heap[l]!]!.err > cells[heap[m]!]!.err) m = l;
-        if (r < heap.length && cells[heap[r]!]!.err > cells[heap[m]!]!.err) m = r;
+        if (l < heap.length && cells[heap[l]].err > cells[heap[m]].err) m = l;
+        if (r < heap.length && cells[heap[r]].err > cells[heap[m]].err) m = r;
         if (m === i) break;
-        [heap[m], heap[i]] = [heap[i]!, heap[m]!];
+        [heap[m], heap[i]] = [heap[i], heap[m]];
         i = m;
       }
     }
@@ -198,8 +198,12 @@ export function adaptiveIntegrate2D(
     }
     const xm = 0.5 * (c.x0 + c.x1);
     const ym = 0.5 * (c.y0 + c.y1);
-    const k1 = c.splitX ? analyse(c.x0, xm, c.y0, c.y1, c.lo, c.depth + 1) : analyse(c.x0, c.x1, c.y0, ym, c.lo, c.depth + 1);
-    const k2 = c.splitX ? analyse(xm, c.x1, c.y0, c.y1, c.hi, c.depth + 1) : analyse(c.x0, c.x1, ym, c.y1, c.hi, c.depth + 1);
+    const k1 = c.splitX
+      ? analyse(c.x0, xm, c.y0, c.y1, c.lo, c.depth + 1)
+      : analyse(c.x0, c.x1, c.y0, ym, c.lo, c.depth + 1);
+    const k2 = c.splitX
+      ? analyse(xm, c.x1, c.y0, c.y1, c.hi, c.depth + 1)
+      : analyse(c.x0, c.x1, ym, c.y1, c.hi, c.depth + 1);
     if (!Number.isFinite(k1.best) || !Number.isFinite(k2.best)) return k1.best + k2.best;
     total += k1.best + k2.best - c.best;
     errSum += k1.err + k2.err - c.err;
@@ -211,10 +215,10 @@ export function adaptiveIntegrate2D(
   let sum = 0;
   let rawErr = 0;
   for (const i of heap) {
-    sum += cells[i]!.best;
-    rawErr += cells[i]!.rawErr;
+    sum += cells[i].best;
+    rawErr += cells[i].rawErr;
   }
-  root = cells[0]!;
+  root = cells[0];
   if (opts.report) {
     const value = heap.length > 0 ? sum : root.best;
     opts.report.error = rawErr;

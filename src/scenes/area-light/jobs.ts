@@ -44,13 +44,29 @@ export interface FloorFrame {
   passes: FloorFrame[];
 }
 
-function frame(job: FloorJob, sums: Float64Array[], spp: number, ref: Float32Array, ms: number[], done: boolean): FloorFrame {
+function frame(
+  job: FloorJob,
+  sums: Float64Array[],
+  spp: number,
+  ref: Float32Array,
+  ms: number[],
+  done: boolean,
+): FloorFrame {
   const images = sums.map((s) => {
     const img = new Float32Array(s.length);
-    for (let k = 0; k < s.length; k++) img[k] = s[k]! / spp;
+    for (let k = 0; k < s.length; k++) img[k] = s[k] / spp;
     return img;
   });
-  return { size: job.size, spp, images, reference: ref.slice(), rmse: sums.map((s) => imageRmse(s, spp, ref)), ms: ms.slice(), done, passes: [] };
+  return {
+    size: job.size,
+    spp,
+    images,
+    reference: ref.slice(),
+    rmse: sums.map((s) => imageRmse(s, spp, ref)),
+    ms: ms.slice(),
+    done,
+    passes: [],
+  };
 }
 
 /** Seconds per estimate of n samples: repeat until ≥ budgetMs has passed, divide by the count. */
@@ -67,13 +83,19 @@ function timeOne(setup: AreaLightSetup, s: LightStrategy, n: number, seed: numbe
 }
 
 /** Convergence series of the three strategies (log-spaced checkpoints up to nMax). */
-export async function convergenceJob(args: { params: AreaLightParams; nMax: number }, progress: Progress = () => {}) {
+export async function convergenceJob(
+  args: { params: AreaLightParams; nMax: number },
+  progress: Progress = () => {},
+) {
   progress(0);
   return convergence(buildModel(args.params), args.nMax, args.params.seed);
 }
 
 /** The three estimates for large n (the scene computes small n on the main thread; same numbers). */
-export async function estimatesJob(params: AreaLightParams, progress: Progress = () => {}): Promise<StrategyEstimate[]> {
+export async function estimatesJob(
+  params: AreaLightParams,
+  progress: Progress = () => {},
+): Promise<StrategyEstimate[]> {
   progress(0);
   return estimateAll(buildModel(params), params.n, params.seed);
 }
@@ -87,30 +109,39 @@ export async function renderJob(job: FloorJob, progress: Progress = () => {}): P
   let spp = 0;
   const total = PASS_SPP.reduce((a, b) => a + b, 0);
   for (let pass = 0; pass < PASS_SPP.length; pass++) {
-    const k = PASS_SPP[pass]!;
+    const k = PASS_SPP[pass];
     STRATEGIES.forEach((s, i) => {
       const t0 = now();
-      floorPass(job, s, k, pass, sums[i]!);
-      ms[i]! += now() - t0;
+      floorPass(job, s, k, pass, sums[i]);
+      ms[i] += now() - t0;
     });
     spp += k;
     passes.push(frame(job, sums, spp, ref, ms, pass === PASS_SPP.length - 1));
     if (pass < PASS_SPP.length - 1) {
       // A copy: the partial's buffers are transferred, and `passes` keeps its own.
-      const p = passes[pass]!;
-      progress(spp / total, { ...p, images: p.images.map((im) => im.slice()), reference: p.reference.slice() });
+      const p = passes[pass];
+      progress(spp / total, {
+        ...p,
+        images: p.images.map((im) => im.slice()),
+        reference: p.reference.slice(),
+      });
       await tick();
     }
   }
-  return { ...passes[passes.length - 1]!, passes };
+  return { ...passes[passes.length - 1], passes };
 }
 
 /** RMSE over TIMING_RUNS runs and the measured time of one estimate, per strategy and N. */
-export async function timingJob(params: AreaLightParams, progress: Progress = () => {}, budgetMs = 12): Promise<TimingPoint[]> {
+export async function timingJob(
+  params: AreaLightParams,
+  progress: Progress = () => {},
+  budgetMs = 12,
+): Promise<TimingPoint[]> {
   const m = buildModel(params);
   // Warm up every (strategy, N) first so the JIT has optimized the kernels before any timing;
   // otherwise whichever strategy runs first pays for compilation.
-  for (let round = 0; round < 2; round++) for (const s of STRATEGIES) for (const n of TIMING_COUNTS) timeOne(m.setup, s, n, params.seed, 2);
+  for (let round = 0; round < 2; round++)
+    for (const s of STRATEGIES) for (const n of TIMING_COUNTS) timeOne(m.setup, s, n, params.seed, 2);
   progress(0.1);
   await tick();
   const out: TimingPoint[] = [];
@@ -120,7 +151,11 @@ export async function timingJob(params: AreaLightParams, progress: Progress = ()
     for (const s of STRATEGIES) {
       const rmse = rmseOfRuns(m, s, n, TIMING_RUNS, params.seed);
       // Best of three timings (each ≥ budgetMs of repeated estimates, so timer resolution is moot).
-      const seconds = Math.min(timeOne(m.setup, s, n, params.seed, budgetMs), timeOne(m.setup, s, n, params.seed, budgetMs), timeOne(m.setup, s, n, params.seed, budgetMs));
+      const seconds = Math.min(
+        timeOne(m.setup, s, n, params.seed, budgetMs),
+        timeOne(m.setup, s, n, params.seed, budgetMs),
+        timeOne(m.setup, s, n, params.seed, budgetMs),
+      );
       out.push({ strategy: s, n, rmse, seconds });
       progress(0.1 + (0.9 * ++done) / steps);
       await tick();

@@ -27,14 +27,22 @@ import {
   type RectLight,
   type Vec3,
 } from '../../core/lights';
-import { alignedRectangleSolidAngle, patchSolidAngleApprox, parallelogramSolidAngle } from '../../core/geometry/solidAngle';
+import {
+  alignedRectangleSolidAngle,
+  patchSolidAngleApprox,
+  parallelogramSolidAngle,
+} from '../../core/geometry/solidAngle';
 import { logSpacedCounts } from '../../core/estimators/convergence';
 import { Rng } from '../../core/random';
 import { Welford } from '../../core/estimators/welford';
 import { schema, type AreaLightParams } from './params';
 
 export const STRATEGIES: readonly LightStrategy[] = ['area', 'solid-angle', 'cosine'];
-export const STRATEGY_SHORT: Record<LightStrategy, string> = { area: 'area (key)', 'solid-angle': 'solid angle', cosine: 'cosine' };
+export const STRATEGY_SHORT: Record<LightStrategy, string> = {
+  area: 'area (key)',
+  'solid-angle': 'solid angle',
+  cosine: 'cosine',
+};
 export const STRATEGY_LABEL: Record<LightStrategy, string> = {
   area: 'uniform area (the key)',
   'solid-angle': 'solid angle (spherical rectangle)',
@@ -94,8 +102,10 @@ export function buildModel(params: AreaLightParams): AreaLightModel {
   const def = schema;
   let p: Vec3 = finite3(params.p) ? [...params.p] : [...def.p.default];
   let lc: Vec3 = finite3(params.lc) ? [...params.lc] : [...def.lc.default];
-  if (!finite3(params.p)) messages.push({ kind: 'error', text: 'The shading point p is not three finite numbers; using 0,0,0.' });
-  if (!finite3(params.lc)) messages.push({ kind: 'error', text: 'The light centre is not three finite numbers; using 0,0,2.' });
+  if (!finite3(params.p))
+    messages.push({ kind: 'error', text: 'The shading point p is not three finite numbers; using 0,0,0.' });
+  if (!finite3(params.lc))
+    messages.push({ kind: 'error', text: 'The light centre is not three finite numbers; using 0,0,2.' });
   let w = params.ls?.[0] ?? NaN;
   let h = params.ls?.[1] ?? NaN;
   if (!(Number.isFinite(w) && Number.isFinite(h) && w > 0 && h > 0 && w * h >= MIN_AREA)) {
@@ -141,8 +151,10 @@ export function buildModel(params: AreaLightParams): AreaLightModel {
   if (tmod === 0) {
     // Light parallel to the floor: coordinates in its plane relative to the foot of p.
     const d = lc[2] - p[2];
-    const x0 = lc[0] - w / 2 - p[0], x1 = lc[0] + w / 2 - p[0];
-    const y0 = lc[1] - h / 2 - p[1], y1 = lc[1] + h / 2 - p[1];
+    const x0 = lc[0] - w / 2 - p[0],
+      x1 = lc[0] + w / 2 - p[0];
+    const y0 = lc[1] - h / 2 - p[1],
+      y1 = lc[1] + h / 2 - p[1];
     solidAngleClosed = d !== 0 ? alignedRectangleSolidAngle(x0, x1, y0, y1, d) : 0;
   }
   const belowHorizon = fractionBelow(light, p[2]);
@@ -156,7 +168,10 @@ export function buildModel(params: AreaLightParams): AreaLightModel {
           : 'The light faces away from the point (its back is black): L_o = 0, and every estimator returns exactly 0.',
     });
   } else if (belowHorizon >= 1) {
-    messages.push({ kind: 'info', text: 'The whole light is below the floor’s horizon: cos θ ≤ 0 everywhere, so L_o = 0.' });
+    messages.push({
+      kind: 'info',
+      text: 'The whole light is below the floor’s horizon: cos θ ≤ 0 everywhere, so L_o = 0.',
+    });
   } else if (belowHorizon > 0) {
     messages.push({
       kind: 'info',
@@ -164,9 +179,31 @@ export function buildModel(params: AreaLightParams): AreaLightModel {
     });
   }
   if (occluder && referenceOccluded !== null && !Number.isFinite(referenceOccluded)) {
-    messages.push({ kind: 'info', text: 'The occluder is not wholly between the point and the light, so no analytic occluded value is shown.' });
+    messages.push({
+      kind: 'info',
+      text: 'The occluder is not wholly between the point and the light, so no analytic occluded value is shown.',
+    });
   }
-  return { p, lc, w, h, tilt, L, rho, light, occluder, setup, messages, reference, referenceOccluded, solidAngle, solidAngleClosed, projectedSolidAngle: projected, facing, belowHorizon };
+  return {
+    p,
+    lc,
+    w,
+    h,
+    tilt,
+    L,
+    rho,
+    light,
+    occluder,
+    setup,
+    messages,
+    reference,
+    referenceOccluded,
+    solidAngle,
+    solidAngleClosed,
+    projectedSolidAngle: projected,
+    facing,
+    belowHorizon,
+  };
 }
 
 function fmtSize(x: number): string {
@@ -176,11 +213,11 @@ function fmtSize(x: number): string {
 /** True when p lies on the light's rectangle (in its plane, within its edges). */
 export function onLight(light: RectLight, p: readonly number[]): boolean {
   if (!(light.area > 0)) return false;
-  const scale = Math.max(1, Math.hypot(...light.center), Math.hypot(p[0]!, p[1]!, p[2]!));
-  if (Math.abs(rectPlaneDistance(light, p[0]!, p[1]!, p[2]!)) > ON_LIGHT_EPS * scale) return false;
-  const d = [p[0]! - light.corner[0], p[1]! - light.corner[1], p[2]! - light.corner[2]];
-  const a = d[0]! * light.ex[0] + d[1]! * light.ex[1] + d[2]! * light.ex[2];
-  const b = d[0]! * light.ey[0] + d[1]! * light.ey[1] + d[2]! * light.ey[2];
+  const scale = Math.max(1, Math.hypot(...light.center), Math.hypot(p[0], p[1], p[2]));
+  if (Math.abs(rectPlaneDistance(light, p[0], p[1], p[2])) > ON_LIGHT_EPS * scale) return false;
+  const d = [p[0] - light.corner[0], p[1] - light.corner[1], p[2] - light.corner[2]];
+  const a = d[0] * light.ex[0] + d[1] * light.ex[1] + d[2] * light.ex[2];
+  const b = d[0] * light.ey[0] + d[1] * light.ey[1] + d[2] * light.ey[2];
   return a >= 0 && a <= light.width && b >= 0 && b <= light.height;
 }
 
@@ -215,7 +252,12 @@ export interface StrategyEstimate {
 }
 
 /** One strategy with n samples (stream = the strategy's index in STRATEGIES: the numbers of estimateAll). */
-export function estimateOne(m: AreaLightModel, strategy: LightStrategy, n: number, seed: number): StrategyEstimate {
+export function estimateOne(
+  m: AreaLightModel,
+  strategy: LightStrategy,
+  n: number,
+  seed: number,
+): StrategyEstimate {
   const r = estimateAreaLight(m.setup, strategy, n, seed, STRATEGIES.indexOf(strategy));
   return { strategy, estimate: r.estimate, stderr: r.stderr, n: r.n };
 }
@@ -227,7 +269,8 @@ export function estimateAll(m: AreaLightModel, n: number, seed: number): Strateg
 
 /** The value the estimators converge to: the occluded reference when an occluder is on and known. */
 export function targetValue(m: AreaLightModel): number {
-  if (m.occluder) return m.referenceOccluded !== null && Number.isFinite(m.referenceOccluded) ? m.referenceOccluded : NaN;
+  if (m.occluder)
+    return m.referenceOccluded !== null && Number.isFinite(m.referenceOccluded) ? m.referenceOccluded : NaN;
   return m.reference;
 }
 
@@ -236,7 +279,12 @@ export function targetValue(m: AreaLightModel): number {
  * strategies, unit directions for cosine) and their estimator terms. Same streams as
  * {@link estimateAll}, so the drawn samples are the first ones of the estimate.
  */
-export function drawSamples(m: AreaLightModel, strategy: LightStrategy, count: number, seed: number): { points: Float64Array; terms: Float64Array } {
+export function drawSamples(
+  m: AreaLightModel,
+  strategy: LightStrategy,
+  count: number,
+  seed: number,
+): { points: Float64Array; terms: Float64Array } {
   const u = new Float64Array(2 * count);
   new Rng(seed, STRATEGIES.indexOf(strategy)).fill(u);
   const points = new Float64Array(3 * count);
@@ -281,28 +329,42 @@ export interface PatchModel {
 /** A square patch of side s at (pu, pv) on the light, tilted by ptilt about the light's x axis. */
 export function patchGeometry(m: AreaLightModel, pu: number, pv: number, side: number, ptilt: number) {
   const l = m.light;
-  const centre: Vec3 = [0, 1, 2].map((k) => l.corner[k]! + pu * l.edgeX[k]! + pv * l.edgeY[k]!) as Vec3;
+  const centre: Vec3 = [0, 1, 2].map((k) => l.corner[k] + pu * l.edgeX[k] + pv * l.edgeY[k]) as Vec3;
   const patch = makeRectLight(centre, side, side, m.tilt + ptilt);
   return patch;
 }
 
-export function patchModel(m: AreaLightModel, pu: number, pv: number, side: number, ptilt: number): PatchModel {
+export function patchModel(
+  m: AreaLightModel,
+  pu: number,
+  pv: number,
+  side: number,
+  ptilt: number,
+): PatchModel {
   const patch = patchGeometry(m, pu, pv, side, ptilt);
   const [px, py, pz] = m.p;
   const c = patch.center;
   const measure = (pt: RectLight) => {
-    const dx = pt.center[0] - px, dy = pt.center[1] - py, dz = pt.center[2] - pz;
+    const dx = pt.center[0] - px,
+      dy = pt.center[1] - py,
+      dz = pt.center[2] - pz;
     const r = Math.hypot(dx, dy, dz);
     const cosL = r > 0 ? Math.abs(dx * pt.normal[0] + dy * pt.normal[1] + dz * pt.normal[2]) / r : 0;
-    const exact = parallelogramSolidAngle(pt.corner[0] - px, pt.corner[1] - py, pt.corner[2] - pz, ...pt.edgeX, ...pt.edgeY);
+    const exact = parallelogramSolidAngle(
+      pt.corner[0] - px,
+      pt.corner[1] - py,
+      pt.corner[2] - pz,
+      ...pt.edgeX,
+      ...pt.edgeY,
+    );
     const approx = patchSolidAngleApprox(pt.area, cosL, r);
     return { r, cosL, exact, approx, rel: exact > 0 ? (approx - exact) / exact : NaN };
   };
   const cur = measure(patch);
   const projected = patch.corners.map((q) => {
     const d = [q[0] - px, q[1] - py, q[2] - pz];
-    const len = Math.hypot(d[0]!, d[1]!, d[2]!) || 1;
-    return [px + d[0]! / len, py + d[1]! / len, pz + d[2]! / len] as Vec3;
+    const len = Math.hypot(d[0], d[1], d[2]) || 1;
+    return [px + d[0] / len, py + d[1] / len, pz + d[2] / len] as Vec3;
   });
   const K = 25;
   const sides = new Float64Array(K);
@@ -353,10 +415,25 @@ export interface FloorJob {
 
 /** The floor square shown by the images: centred under the light's footprint, covering the point. */
 export function floorJob(m: AreaLightModel, seed: number, size = 72): FloorJob {
-  const cx = (m.p[0] + m.lc[0]) / 2, cy = (m.p[1] + m.lc[1]) / 2;
+  const cx = (m.p[0] + m.lc[0]) / 2,
+    cy = (m.p[1] + m.lc[1]) / 2;
   const reach = Math.hypot(m.lc[0] - m.p[0], m.lc[1] - m.p[1]) / 2 + Math.max(m.w, m.h) / 2;
   const half = Math.min(1e6, Math.max(1.5, reach * 1.3, Math.abs(m.lc[2] - m.p[2]) * 0.9));
-  return { lc: m.lc, w: m.w, h: m.h, tilt: m.tilt, L: m.L, rho: m.rho, occluder: !!m.occluder, p: m.p, size, cx, cy, half, seed };
+  return {
+    lc: m.lc,
+    w: m.w,
+    h: m.h,
+    tilt: m.tilt,
+    L: m.L,
+    rho: m.rho,
+    occluder: !!m.occluder,
+    p: m.p,
+    size,
+    cx,
+    cy,
+    half,
+    seed,
+  };
 }
 
 /** World position of pixel (i, j) centre (row j from the top = +y side). */
@@ -388,7 +465,13 @@ export function referenceImage(job: FloorJob): Float32Array {
  * One progressive pass: add `spp` samples of `strategy` to every pixel's running sum (sum is
  * caller-owned, length size²). Pass index k selects the random stream, so passes are independent.
  */
-export function floorPass(job: FloorJob, strategy: LightStrategy, spp: number, pass: number, sum: Float64Array): void {
+export function floorPass(
+  job: FloorJob,
+  strategy: LightStrategy,
+  spp: number,
+  pass: number,
+  sum: Float64Array,
+): void {
   const light = makeRectLight(job.lc, job.w, job.h, job.tilt);
   const occ = job.occluder ? makeOccluder(job.p, job.lc, job.w, job.h) : null;
   const rng = new Rng(job.seed, 1000 + pass * 3 + STRATEGIES.indexOf(strategy));
@@ -404,18 +487,19 @@ export function floorPass(job: FloorJob, strategy: LightStrategy, spp: number, p
       const sph = strategy === 'solid-angle' ? makeSphericalRect(light, x, y, job.p[2]) : undefined;
       areaLightTerms(setup, strategy, u, spp, terms, undefined, sph);
       let s = 0;
-      for (let k = 0; k < spp; k++) s += terms[k]!;
-      sum[j * job.size + i]! += s;
+      for (let k = 0; k < spp; k++) s += terms[k];
+      sum[j * job.size + i] += s;
     }
 }
 
 /** RMSE of an image (sum / spp) against the reference, over pixels where the reference is finite. */
 export function imageRmse(sum: Float64Array, spp: number, ref: Float32Array): number {
-  let s = 0, n = 0;
+  let s = 0,
+    n = 0;
   for (let k = 0; k < ref.length; k++) {
-    const r = ref[k]!;
+    const r = ref[k];
     if (!Number.isFinite(r)) continue;
-    const d = sum[k]! / spp - r;
+    const d = sum[k] / spp - r;
     s += d * d;
     n++;
   }
@@ -436,11 +520,23 @@ export const TIMING_COUNTS = [16, 64, 256, 1024, 4096] as const;
 export const TIMING_RUNS = 24;
 
 /** RMSE of `runs` independent estimates with n samples each against the target value. */
-export function rmseOfRuns(m: AreaLightModel, strategy: LightStrategy, n: number, runs: number, seed: number): number {
+export function rmseOfRuns(
+  m: AreaLightModel,
+  strategy: LightStrategy,
+  n: number,
+  runs: number,
+  seed: number,
+): number {
   const target = targetValue(m);
   let s = 0;
   for (let r = 0; r < runs; r++) {
-    const e = estimateAreaLight(m.setup, strategy, n, seed, 100 + r * 3 + STRATEGIES.indexOf(strategy)).estimate;
+    const e = estimateAreaLight(
+      m.setup,
+      strategy,
+      n,
+      seed,
+      100 + r * 3 + STRATEGIES.indexOf(strategy),
+    ).estimate;
     s += (e - target) ** 2;
   }
   return Math.sqrt(s / runs);
@@ -471,7 +567,11 @@ export interface GivenSample {
  * they are its first terms), each factor computed with the core's sample/pdf pair, and their mean
  * ⟨L_o⟩ = (|A|/k) Σ f L V cos θ cos θ_l / r².
  */
-export function givenSamples(m: AreaLightModel, seed: number, k = 4): { samples: GivenSample[]; f: number; area: number; estimate: number } {
+export function givenSamples(
+  m: AreaLightModel,
+  seed: number,
+  k = 4,
+): { samples: GivenSample[]; f: number; area: number; estimate: number } {
   const u = new Float64Array(2 * k);
   new Rng(seed, STRATEGIES.indexOf('area')).fill(u);
   const f = m.rho / Math.PI;
@@ -481,19 +581,21 @@ export function givenSamples(m: AreaLightModel, seed: number, k = 4): { samples:
   const x = [0, 0, 0];
   let sum = 0;
   for (let i = 0; i < k; i++) {
-    sampleRectArea(m.light, u[2 * i]!, u[2 * i + 1]!, x);
-    const dx = x[0]! - px, dy = x[1]! - py, dz = x[2]! - pz;
+    sampleRectArea(m.light, u[2 * i], u[2 * i + 1], x);
+    const dx = x[0] - px,
+      dy = x[1] - py,
+      dz = x[2] - pz;
     const r2 = dx * dx + dy * dy + dz * dz;
     const r = Math.sqrt(r2);
     const cosTheta = r > 0 ? dz / r : 0;
     const cosThetaL = r > 0 ? -(dx * nl[0] + dy * nl[1] + dz * nl[2]) / r : 0;
     const blocked = !!m.occluder && intersectRect(m.occluder, px, py, pz, dx, dy, dz, 0) < 1 - 1e-9;
     const V = cosTheta > 0 && cosThetaL > 0 && !blocked ? 1 : 0;
-    const pA = rectAreaPdf(m.light, x[0]!, x[1]!, x[2]!);
+    const pA = rectAreaPdf(m.light, x[0], x[1], x[2]);
     const pw = areaToSolidAnglePdf(pA, r2, cosThetaL);
     const term = V && pw > 0 ? (f * m.L * cosTheta) / pw : 0;
     sum += term;
-    out.push({ u1: u[2 * i]!, u2: u[2 * i + 1]!, x: [x[0]!, x[1]!, x[2]!], r, cosTheta, cosThetaL, V, pA, term });
+    out.push({ u1: u[2 * i], u2: u[2 * i + 1], x: [x[0], x[1], x[2]], r, cosTheta, cosThetaL, V, pA, term });
   }
   return { samples: out, f, area: m.light.area, estimate: k ? sum / k : NaN };
 }
@@ -524,13 +626,18 @@ export interface SampleRun {
 }
 
 /** The first `count` samples of `strategy` (the estimate's own stream) and their running statistics (core Welford). */
-export function sampleRun(m: AreaLightModel, strategy: LightStrategy, count: number, seed: number): SampleRun {
+export function sampleRun(
+  m: AreaLightModel,
+  strategy: LightStrategy,
+  count: number,
+  seed: number,
+): SampleRun {
   const { points, terms } = drawSamples(m, strategy, count, seed);
   const mean = new Float64Array(count);
   const stderr = new Float64Array(count);
   const w = new Welford();
   for (let i = 0; i < count; i++) {
-    w.add(terms[i]!);
+    w.add(terms[i]);
     mean[i] = w.mean;
     stderr[i] = w.standardError();
   }
@@ -555,26 +662,28 @@ export function animationFrame(run: SampleRun, t: number): AnimationFrame {
   const k = Math.max(0, Math.min(run.count, Math.floor(Number.isFinite(t) ? t + 1e-9 : 0)));
   return {
     k,
-    estimate: k > 0 ? run.mean[k - 1]! : NaN,
-    stderr: k > 1 ? run.stderr[k - 1]! : NaN,
+    estimate: k > 0 ? run.mean[k - 1] : NaN,
+    stderr: k > 1 ? run.stderr[k - 1] : NaN,
     newest: k - 1,
-    newestTerm: k > 0 ? run.terms[k - 1]! : NaN,
+    newestTerm: k > 0 ? run.terms[k - 1] : NaN,
   };
 }
 
 /** Samples per pixel added by each progressive pass of the floor images: 1, 1, 2, 4, … (the total doubles). */
 export const PASS_SPP = [1, 1, 2, 4, 8, 16, 32] as const;
 /** Total samples per pixel after each pass: 1, 2, 4, …, 64. */
-export const PASS_TOTAL: readonly number[] = PASS_SPP.map((_, i) => PASS_SPP.slice(0, i + 1).reduce((a, b) => a + b, 0));
+export const PASS_TOTAL: readonly number[] = PASS_SPP.map((_, i) =>
+  PASS_SPP.slice(0, i + 1).reduce((a, b) => a + b, 0),
+);
 
 /**
  * The floor images refine in step with the timeline: at position t of max, show the pass whose
  * samples per pixel are the largest not above the same fraction of the full 64 (at least pass 0).
  */
 export function floorPassAt(t: number, max: number): number {
-  const total = PASS_TOTAL[PASS_TOTAL.length - 1]!;
+  const total = PASS_TOTAL[PASS_TOTAL.length - 1];
   const want = max > 0 ? (total * Math.max(0, Math.min(max, t))) / max : total;
   let k = 0;
-  for (let i = 0; i < PASS_TOTAL.length; i++) if (PASS_TOTAL[i]! <= want + 1e-9) k = i;
+  for (let i = 0; i < PASS_TOTAL.length; i++) if (PASS_TOTAL[i] <= want + 1e-9) k = i;
   return k;
 }

@@ -24,7 +24,13 @@ export const schema = {
     kind: 'enum',
     default: 'area',
     values: ['area', 'solid-angle', 'cosine'],
-    aliases: { solid: 'solid-angle', solidangle: 'solid-angle', spherical: 'solid-angle', hemisphere: 'cosine', cos: 'cosine' },
+    aliases: {
+      solid: 'solid-angle',
+      solidangle: 'solid-angle',
+      spherical: 'solid-angle',
+      hemisphere: 'cosine',
+      cos: 'cosine',
+    },
     label: 'strategy',
   },
   n: { kind: 'number', default: 1024, min: 1, max: 1000000, integer: true, label: 'samples n' },
@@ -32,7 +38,13 @@ export const schema = {
   pu: { kind: 'number', default: 0.3, min: 0, max: 1, label: 'patch position u on the light' },
   pv: { kind: 'number', default: 0.6, min: 0, max: 1, label: 'patch position v on the light' },
   psize: { kind: 'number', default: 0.25, min: 1e-6, max: 2, label: 'patch side' },
-  ptilt: { kind: 'number', default: 0, min: -89, max: 89, label: 'patch tilt (degrees, relative to the light)' },
+  ptilt: {
+    kind: 'number',
+    default: 0,
+    min: -89,
+    max: 89,
+    label: 'patch tilt (degrees, relative to the light)',
+  },
   // The animation: t = samples arrived (0 … min(n, 1024)); the default shows them all.
   ...timelineParams({ max: ANIM_SAMPLES, default: ANIM_SAMPLES, integer: true }),
 } as const satisfies ParamSchema;

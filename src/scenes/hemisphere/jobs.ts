@@ -6,11 +6,21 @@
  */
 import type { Failure } from '../../core/failure';
 import type { SequenceKind } from '../../core/random';
-import { computeDrawStats, lobeFromParams, repeatEstimates, type DrawStats, type Integrand, type Lobe } from './model';
+import {
+  computeDrawStats,
+  lobeFromParams,
+  repeatEstimates,
+  type DrawStats,
+  type Integrand,
+  type Lobe,
+} from './model';
 import type { LobeId } from './params';
 
 /** Compiles a user expression in (theta, phi) (the worker passes core/expr's compiler). */
-export type Compile2 = (src: string, vars: string[]) => Promise<{ ok: true; fn: (...args: number[]) => number } | Failure>;
+export type Compile2 = (
+  src: string,
+  vars: string[],
+) => Promise<{ ok: true; fn: (...args: number[]) => number } | Failure>;
 
 export interface StatsArgs {
   lobe: LobeId;
@@ -37,7 +47,10 @@ export interface RepeatResult {
 type Progress = (fraction: number, partial?: unknown) => void;
 
 /** Compile f (and the typed density when the lobe is 'custom'), build the lobe the page shows. */
-export async function prepare(a: StatsArgs, compile: Compile2): Promise<{ lobe: Lobe | null; f: Integrand | null }> {
+export async function prepare(
+  a: StatsArgs,
+  compile: Compile2,
+): Promise<{ lobe: Lobe | null; f: Integrand | null }> {
   const fc = await compile(a.f, ['theta', 'phi']);
   const f = fc.ok ? (t: number, p: number) => fc.fn(t, p) : null;
   let lobe: Lobe | null = null;
@@ -57,7 +70,11 @@ export async function statsJob(a: StatsArgs, compile: Compile2): Promise<DrawSta
   return computeDrawStats(lobe, f, a.points, a.seed, a.n);
 }
 
-export async function repeatJob(a: RepeatArgs, compile: Compile2, progress: Progress = () => {}): Promise<RepeatResult> {
+export async function repeatJob(
+  a: RepeatArgs,
+  compile: Compile2,
+  progress: Progress = () => {},
+): Promise<RepeatResult> {
   const { lobe, f } = await prepare(a, compile);
   if (!f) throw new Error('the integrand does not compile');
   return repeatEstimates(lobe, f, a.points, a.seed, a.runs, a.perRun, (x) => progress(x));

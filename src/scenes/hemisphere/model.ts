@@ -37,7 +37,6 @@ import { hemisphereChi2, adaptiveIntegrate2D, type HemisphereChi2Result } from '
 import { estimateFromTerms, type McEstimate } from '../../core/estimators';
 import type { LobeId } from './params';
 
-
 /** A sampling density on the hemisphere, as the scene uses it: sampler, pdf and marginals. */
 export interface Lobe {
   id: LobeId;
@@ -64,7 +63,11 @@ export interface Lobe {
  * Built-in ids directly; 'custom' by tabulating the typed density (`density`, null while it does
  * not compile), with the tabulation's verdict in `tab` (null when nothing was tabulated).
  */
-export function lobeFromParams(id: LobeId, exponent: number, density?: Integrand | null): { lobe: Lobe | null; tab: TabulateResult | null } {
+export function lobeFromParams(
+  id: LobeId,
+  exponent: number,
+  density?: Integrand | null,
+): { lobe: Lobe | null; tab: TabulateResult | null } {
   if (id !== 'custom') return { lobe: makeLobe(id, exponent), tab: null };
   if (!density) return { lobe: null, tab: null };
   const tab = tabulateHemisphereDensity(density);
@@ -80,26 +83,44 @@ type LobeRow = (n: number) => Omit<Lobe, 'id'>;
  */
 const LOBES: { readonly [K in Exclude<LobeId, 'custom'>]: LobeRow } = {
   exam: () => ({
-    label: 'k cos θ e^φ', k: examLobeK(), separable: true,
-    sampleBatch: sampleExamLobeBatch, sample: sampleExamLobe, pdf: examLobePdf,
-    thetaPdf: examThetaPdf, phiPdf: examPhiPdf,
+    label: 'k cos θ e^φ',
+    k: examLobeK(),
+    separable: true,
+    sampleBatch: sampleExamLobeBatch,
+    sample: sampleExamLobe,
+    pdf: examLobePdf,
+    thetaPdf: examThetaPdf,
+    phiPdf: examPhiPdf,
   }),
   uniform: () => ({
-    label: 'uniform 1/(2π)', k: 1 / TWO_PI, separable: true,
-    sampleBatch: sampleUniformHemisphereBatch, sample: sampleUniformHemisphere, pdf: uniformHemispherePdf,
-    thetaPdf: (t) => phongThetaPdf(t, 0), phiPdf: uniformPhiPdf,
+    label: 'uniform 1/(2π)',
+    k: 1 / TWO_PI,
+    separable: true,
+    sampleBatch: sampleUniformHemisphereBatch,
+    sample: sampleUniformHemisphere,
+    pdf: uniformHemispherePdf,
+    thetaPdf: (t) => phongThetaPdf(t, 0),
+    phiPdf: uniformPhiPdf,
   }),
   cosine: () => ({
-    label: 'cos θ / π', k: 1 / Math.PI, separable: true,
-    sampleBatch: sampleCosineHemisphereBatch, sample: sampleCosineHemisphere, pdf: cosineHemispherePdf,
-    thetaPdf: (t) => phongThetaPdf(t, 1), phiPdf: uniformPhiPdf,
+    label: 'cos θ / π',
+    k: 1 / Math.PI,
+    separable: true,
+    sampleBatch: sampleCosineHemisphereBatch,
+    sample: sampleCosineHemisphere,
+    pdf: cosineHemispherePdf,
+    thetaPdf: (t) => phongThetaPdf(t, 1),
+    phiPdf: uniformPhiPdf,
   }),
   phong: (n) => ({
-    label: `(n+1)/(2π) cos^${n} θ`, k: (n + 1) / TWO_PI, separable: true,
+    label: `(n+1)/(2π) cos^${n} θ`,
+    k: (n + 1) / TWO_PI,
+    separable: true,
     sampleBatch: (u, out, count, start) => samplePhongLobeBatch(u, n, out, count, start),
     sample: (a, b, out, o) => samplePhongLobe(a, b, n, out, o),
     pdf: (x, y, z) => phongLobePdf(x, y, z, n),
-    thetaPdf: (t) => phongThetaPdf(t, n), phiPdf: uniformPhiPdf,
+    thetaPdf: (t) => phongThetaPdf(t, n),
+    phiPdf: uniformPhiPdf,
   }),
 };
 
@@ -125,12 +146,22 @@ function uniformPhiPdf(phi: number): number {
 }
 
 /** The n points (ξ₁, ξ₂) of the chosen set, interleaved, into `out` (length ≥ 2n). */
-export function drawUniforms(kind: SequenceKind, seed: number, n: number, out = new Float64Array(2 * n)): Float64Array {
+export function drawUniforms(
+  kind: SequenceKind,
+  seed: number,
+  n: number,
+  out = new Float64Array(2 * n),
+): Float64Array {
   return fillSequence2D(kind, seed, n, out);
 }
 
 /** Directions of the lobe for the n points of the set: 3n numbers. */
-export function drawDirections(lobe: Lobe, kind: SequenceKind, seed: number, n: number): { u: Float64Array; dirs: Float64Array } {
+export function drawDirections(
+  lobe: Lobe,
+  kind: SequenceKind,
+  seed: number,
+  n: number,
+): { u: Float64Array; dirs: Float64Array } {
   const u = drawUniforms(kind, seed, n);
   const dirs = new Float64Array(3 * n);
   lobe.sampleBatch(u, dirs, n);
@@ -148,26 +179,37 @@ export interface DensityHistogram {
 }
 
 /** Histograms of θ over [0, π/2] and of φ over [0, 2π) against the lobe's marginals. */
-export function marginalHistograms(lobe: Lobe, dirs: Float64Array, n: number, bins = 36): { theta: DensityHistogram; phi: DensityHistogram } {
+export function marginalHistograms(
+  lobe: Lobe,
+  dirs: Float64Array,
+  n: number,
+  bins = 36,
+): { theta: DensityHistogram; phi: DensityHistogram } {
   const ct = new Float64Array(bins);
   const cp = new Float64Array(bins);
   const wt = HALF_PI / bins;
   const wp = TWO_PI / bins;
   for (let i = 0; i < n; i++) {
-    const x = dirs[3 * i]!;
-    const y = dirs[3 * i + 1]!;
-    const z = dirs[3 * i + 2]!;
+    const x = dirs[3 * i];
+    const y = dirs[3 * i + 1];
+    const z = dirs[3 * i + 2];
     const t = sphericalTheta(x, y, z);
     const p = sphericalPhi(x, y);
     if (t >= 0 && t <= HALF_PI) ct[Math.min(bins - 1, Math.floor(t / wt))]++;
     if (p >= 0 && p < TWO_PI) cp[Math.min(bins - 1, Math.floor(p / wp))]++;
   }
-  const make = (counts: Float64Array, w: number, lo: number, hi: number, f: (x: number) => number): DensityHistogram => {
+  const make = (
+    counts: Float64Array,
+    w: number,
+    lo: number,
+    hi: number,
+    f: (x: number) => number,
+  ): DensityHistogram => {
     const centers = new Float64Array(bins);
     const density = new Float64Array(bins);
     for (let b = 0; b < bins; b++) {
       centers[b] = lo + (b + 0.5) * w;
-      density[b] = n > 0 ? counts[b]! / (n * w) : 0;
+      density[b] = n > 0 ? counts[b] / (n * w) : 0;
     }
     const m = 200;
     const curveX = new Float64Array(m + 1);
@@ -188,7 +230,12 @@ export function chi2OfDirections(lobe: Lobe, dirs: Float64Array, n: number): Hem
   const custom = lobe.id === 'custom';
   // bins of the typed lobe align with its 64 × 128 table (8 × 8 cells per bin), so the quadrature
   // of a piecewise-constant pdf stays cheap and exact
-  return hemisphereChi2(dirs, n, lobe.pdf, custom ? { cosThetaBins: 8, phiBins: 16 } : { cosThetaBins: 10, phiBins: 20 });
+  return hemisphereChi2(
+    dirs,
+    n,
+    lobe.pdf,
+    custom ? { cosThetaBins: 8, phiBins: 16 } : { cosThetaBins: 10, phiBins: 20 },
+  );
 }
 
 /** An integrand of (θ, φ) (compiled user expression). */
@@ -244,7 +291,11 @@ export function findNonFinite(f: Integrand): { theta: number; phi: number } | nu
  */
 export function checkedIntegral(f: Integrand): CheckedIntegral {
   const report = { error: NaN, resolved: false };
-  const v = adaptiveIntegrate2D((t, p) => f(t, p) * Math.sin(t), 0, HALF_PI, 0, TWO_PI, { relTol: 1e-12, maxDepth: 6, report });
+  const v = adaptiveIntegrate2D((t, p) => f(t, p) * Math.sin(t), 0, HALF_PI, 0, TWO_PI, {
+    relTol: 1e-12,
+    maxDepth: 6,
+    report,
+  });
   if (!Number.isFinite(v)) {
     const at = findNonFinite(f);
     return {
@@ -260,13 +311,23 @@ export function checkedIntegral(f: Integrand): CheckedIntegral {
     // (by 2^-1/2 per bisection for 1/√cos θ), a divergent one's does not (ln 2 · coefficient per
     // bisection for a 1/x blow-up). Compare one level shallower.
     const coarse = { error: NaN, resolved: false };
-    adaptiveIntegrate2D((t, p) => f(t, p) * Math.sin(t), 0, HALF_PI, 0, TWO_PI, { relTol: 1e-12, maxDepth: 5, report: coarse });
-    if (!(report.error < SHRINK_RATIO * coarse.error) || !(report.error <= UNTRUSTED_REL * Math.abs(v))) return {
-      value: NaN,
+    adaptiveIntegrate2D((t, p) => f(t, p) * Math.sin(t), 0, HALF_PI, 0, TWO_PI, {
+      relTol: 1e-12,
+      maxDepth: 5,
+      report: coarse,
+    });
+    if (!(report.error < SHRINK_RATIO * coarse.error) || !(report.error <= UNTRUSTED_REL * Math.abs(v)))
+      return {
+        value: NaN,
+        error: report.error,
+        problem: `the quadrature does not converge (its error estimate stays at ${report.error.toPrecision(2)} while refining): ∫ f dω diverges, or f has a singularity too strong to resolve`,
+      };
+    return {
+      value: v,
       error: report.error,
-      problem: `the quadrature does not converge (its error estimate stays at ${report.error.toPrecision(2)} while refining): ∫ f dω diverges, or f has a singularity too strong to resolve`,
+      problem: null,
+      note: `accurate to about ±${report.error.toPrecision(2)} only (f has a singularity the quadrature resolves slowly)`,
     };
-    return { value: v, error: report.error, problem: null, note: `accurate to about ±${report.error.toPrecision(2)} only (f has a singularity the quadrature resolves slowly)` };
   }
   return { value: v, error: report.error, problem: null };
 }
@@ -286,16 +347,23 @@ export interface Q2Estimates {
  * hemisphere map, the importance estimator with the lobe (its directions `dirs`).
  * Terms: Yᵢ = 2π f(Xᵢ) and Yᵢ = f(Xᵢ)/p(Xᵢ) (0 when f = 0; invalid when p = 0 and f ≠ 0).
  */
-export function q2Estimates(lobe: Lobe | null, f: Integrand, u: Float64Array, dirs: Float64Array | null, n: number, scratch?: { uni: Float64Array; terms: Float64Array }): Q2Estimates {
+export function q2Estimates(
+  lobe: Lobe | null,
+  f: Integrand,
+  u: Float64Array,
+  dirs: Float64Array | null,
+  n: number,
+  scratch?: { uni: Float64Array; terms: Float64Array },
+): Q2Estimates {
   const uni = scratch?.uni ?? new Float64Array(3 * n);
   const terms = scratch?.terms ?? new Float64Array(n);
   sampleUniformHemisphereBatch(u, uni, n);
   let fNonFinite = 0;
   let pZero = 0;
   for (let i = 0; i < n; i++) {
-    const x = uni[3 * i]!;
-    const y = uni[3 * i + 1]!;
-    const z = uni[3 * i + 2]!;
+    const x = uni[3 * i];
+    const y = uni[3 * i + 1];
+    const z = uni[3 * i + 2];
     const fv = f(sphericalTheta(x, y, z), sphericalPhi(x, y));
     if (!Number.isFinite(fv)) fNonFinite++;
     terms[i] = TWO_PI * fv;
@@ -304,9 +372,9 @@ export function q2Estimates(lobe: Lobe | null, f: Integrand, u: Float64Array, di
   let importance: McEstimate = { n: 0, estimate: NaN, variance: NaN, stderr: NaN, invalid: 0 };
   if (lobe && dirs) {
     for (let i = 0; i < n; i++) {
-      const x = dirs[3 * i]!;
-      const y = dirs[3 * i + 1]!;
-      const z = dirs[3 * i + 2]!;
+      const x = dirs[3 * i];
+      const y = dirs[3 * i + 1];
+      const z = dirs[3 * i + 2];
       const fv = f(sphericalTheta(x, y, z), sphericalPhi(x, y));
       const p = lobe.pdf(x, y, z);
       if (!Number.isFinite(fv)) fNonFinite++;
@@ -365,7 +433,13 @@ export interface DrawStats {
 }
 
 /** Draw n samples of the lobe from the point set and compute all statistics the scene shows. */
-export function computeDrawStats(lobe: Lobe | null, f: Integrand | null, kind: SequenceKind, seed: number, n: number): DrawStats {
+export function computeDrawStats(
+  lobe: Lobe | null,
+  f: Integrand | null,
+  kind: SequenceKind,
+  seed: number,
+  n: number,
+): DrawStats {
   const u = drawUniforms(kind, seed, n);
   let dirs: Float64Array | null = null;
   if (lobe) {
@@ -418,7 +492,14 @@ export function examNumbers(xi1 = 0.3, xi2 = 0.7): ExamNumbers {
     e2piMinus1: EXAM_E2PI_M1,
     k: examLobeK(),
     halfK: examLobeK() / 2,
-    example: { xi1, xi2, theta: Math.atan2(s, c), phi: Math.log1p(EXAM_E2PI_M1 * xi2), sinTheta: s, cosTheta: c },
+    example: {
+      xi1,
+      xi2,
+      theta: Math.atan2(s, c),
+      phi: Math.log1p(EXAM_E2PI_M1 * xi2),
+      sinTheta: s,
+      cosTheta: c,
+    },
   };
 }
 
@@ -449,7 +530,12 @@ export function morphFraction(t: number): number {
  * Where the point (ξ₁, ξ₂) sits in the unit square as drawn in 3D: the square [−1, 1]² in the base
  * plane z = 0, ξ₁ along +x and ξ₂ along +y (so it frames the hemisphere's base disk).
  */
-export function squarePoint(xi1: number, xi2: number, out: number[] | Float64Array = [0, 0, 0], o = 0): number[] | Float64Array {
+export function squarePoint(
+  xi1: number,
+  xi2: number,
+  out: number[] | Float64Array = [0, 0, 0],
+  o = 0,
+): number[] | Float64Array {
   out[o] = 2 * xi1 - 1;
   out[o + 1] = 2 * xi2 - 1;
   out[o + 2] = 0;
@@ -457,12 +543,20 @@ export function squarePoint(xi1: number, xi2: number, out: number[] | Float64Arr
 }
 
 /** The morphed position: (1 − s)·square + s·direction (the view's shader evaluates the same mix). */
-export function morphPoint(sq: ArrayLike<number>, dir: ArrayLike<number>, s: number, out: number[] | Float64Array = [0, 0, 0], o = 0, so = 0, dOff = 0): number[] | Float64Array {
+export function morphPoint(
+  sq: ArrayLike<number>,
+  dir: ArrayLike<number>,
+  s: number,
+  out: number[] | Float64Array = [0, 0, 0],
+  o = 0,
+  so = 0,
+  dOff = 0,
+): number[] | Float64Array {
   // GLSL's mix(x, y, s) = x(1 − s) + y s: exactly the square at s = 0 and the direction at s = 1
   const r = 1 - s;
-  out[o] = sq[so]! * r + dir[dOff]! * s;
-  out[o + 1] = sq[so + 1]! * r + dir[dOff + 1]! * s;
-  out[o + 2] = sq[so + 2]! * r + dir[dOff + 2]! * s;
+  out[o] = sq[so] * r + dir[dOff] * s;
+  out[o + 1] = sq[so + 1] * r + dir[dOff + 1] * s;
+  out[o + 2] = sq[so + 2] * r + dir[dOff + 2] * s;
   return out;
 }
 
@@ -477,11 +571,25 @@ export interface AnimFrame {
   /** Morph fraction s (1 for the growth animation: points sit on the hemisphere). */
   s: number;
   /** The tracked sample: the first of the set, its (ξ₁, ξ₂), its direction and where it is now. */
-  tracked: { xi1: number; xi2: number; theta: number; phi: number; dir: [number, number, number]; pos: [number, number, number] } | null;
+  tracked: {
+    xi1: number;
+    xi2: number;
+    theta: number;
+    phi: number;
+    dir: [number, number, number];
+    pos: [number, number, number];
+  } | null;
 }
 
 /** The animation frame for (lobe, point set, seed, n) at position t. */
-export function animFrame(lobe: Lobe | null, kind: SequenceKind, seed: number, n: number, anim: AnimKind, t: number): AnimFrame {
+export function animFrame(
+  lobe: Lobe | null,
+  kind: SequenceKind,
+  seed: number,
+  n: number,
+  anim: AnimKind,
+  t: number,
+): AnimFrame {
   const s = anim === 'warp' ? morphFraction(t) : 1;
   const shown = !lobe ? 0 : anim === 'warp' ? n : growCount(n, t);
   let tracked: AnimFrame['tracked'] = null;
@@ -490,15 +598,15 @@ export function animFrame(lobe: Lobe | null, kind: SequenceKind, seed: number, n
     fillSequence2D(kind, seed, n, u, 0, 1, 0);
     const d = new Float64Array(3);
     lobe.sampleBatch(u, d, 1);
-    const sq = squarePoint(u[0]!, u[1]!);
+    const sq = squarePoint(u[0], u[1]);
     const p = morphPoint(sq, d, s);
     tracked = {
-      xi1: u[0]!,
-      xi2: u[1]!,
-      theta: sphericalTheta(d[0]!, d[1]!, d[2]!),
-      phi: sphericalPhi(d[0]!, d[1]!),
-      dir: [d[0]!, d[1]!, d[2]!],
-      pos: [p[0]!, p[1]!, p[2]!],
+      xi1: u[0],
+      xi2: u[1],
+      theta: sphericalTheta(d[0], d[1], d[2]),
+      phi: sphericalPhi(d[0], d[1]),
+      dir: [d[0], d[1], d[2]],
+      pos: [p[0], p[1], p[2]],
     };
   }
   return { anim, shown, s, tracked };
@@ -584,13 +692,19 @@ export function varianceCheck(lobe: Lobe, f: Integrand, exact: number): Variance
   const sum = (a: number[]) => a.reduce((x, y) => x + y, 0);
   const m2 = middle + sum(horizon) + sum(pole);
   const diverges = (a: number[]) => {
-    const last = a[a.length - 1]!;
-    const prev = a[a.length - 2]!;
+    const last = a[a.length - 1];
+    const prev = a[a.length - 2];
     return !Number.isFinite(last) || (last > 1e-9 * Math.max(1e-300, Math.abs(m2)) && last >= 0.9 * prev);
   };
   const infinite = !Number.isFinite(m2) || diverges(horizon) || diverges(pole);
   const importanceVar = infinite ? Infinity : Math.max(0, m2 - exact * exact);
-  const ratio = infinite ? Infinity : uniformVar > 0 ? importanceVar / uniformVar : importanceVar > 0 ? Infinity : NaN;
+  const ratio = infinite
+    ? Infinity
+    : uniformVar > 0
+      ? importanceVar / uniformVar
+      : importanceVar > 0
+        ? Infinity
+        : NaN;
   return { uniformVar, importanceVar, infinite, ratio };
 }
 
@@ -608,7 +722,15 @@ export interface RmseResult {
  * estimate. The error is measured instead: `runs` independent randomizations (jitter, Owen
  * scrambling, seeds derived from `seed`), RMSE = √(mean (⟨I⟩ᵣ − I)²) against the quadrature value.
  */
-export function rmseOverRuns(lobe: Lobe | null, f: Integrand, kind: SequenceKind, seed: number, n: number, exact: number, runs = 16): RmseResult {
+export function rmseOverRuns(
+  lobe: Lobe | null,
+  f: Integrand,
+  kind: SequenceKind,
+  seed: number,
+  n: number,
+  exact: number,
+  runs = 16,
+): RmseResult {
   const r = repeatEstimates(lobe, f, kind, seed, runs, n);
   const rmse = (a: Float64Array) => {
     let s = 0;
@@ -655,7 +777,14 @@ export function examChecks(): ExamChecks {
     thetaIntegral: integrate1D((t) => Math.cos(t) * Math.sin(t), 0, HALF_PI),
     bracket: -0.5 * (Math.cos(Math.PI) - Math.cos(0)),
     phiIntegral: integrate1D(Math.exp, 0, TWO_PI),
-    total: adaptiveIntegrate2D((t, p) => examLobePdf(Math.sin(t) * Math.cos(p), Math.sin(t) * Math.sin(p), Math.cos(t)) * Math.sin(t), 0, HALF_PI, 0, TWO_PI, { relTol: 1e-12 }),
+    total: adaptiveIntegrate2D(
+      (t, p) => examLobePdf(Math.sin(t) * Math.cos(p), Math.sin(t) * Math.sin(p), Math.cos(t)) * Math.sin(t),
+      0,
+      HALF_PI,
+      0,
+      TWO_PI,
+      { relTol: 1e-12 },
+    ),
     thetaMarginalTotal: integrate1D(examThetaPdf, 0, HALF_PI),
     phiMarginalTotal: integrate1D(examPhiPdf, 0, TWO_PI * (1 - 1e-16)),
     thetaCdfEnd: examThetaCdf(HALF_PI),
@@ -671,10 +800,27 @@ export function examChecksCached(): ExamChecks {
 }
 
 /** Q1(d) at one (ξ₁, ξ₂): both θ forms, the φ form and its log1p twin, and the CDFs at the result. */
-export function examInversion(xi1: number, xi2: number): { thetaAcos: number; thetaAsin: number; phiLn: number; phiLog1p: number; cdfTheta: number; cdfPhi: number } {
+export function examInversion(
+  xi1: number,
+  xi2: number,
+): {
+  thetaAcos: number;
+  thetaAsin: number;
+  phiLn: number;
+  phiLog1p: number;
+  cdfTheta: number;
+  cdfPhi: number;
+} {
   const thetaAcos = 0.5 * Math.acos(1 - 2 * xi1);
   const thetaAsin = Math.asin(Math.sqrt(xi1));
   const phiLn = Math.log(EXAM_E2PI_M1 * xi2 + 1);
   const phiLog1p = Math.log1p(EXAM_E2PI_M1 * xi2);
-  return { thetaAcos, thetaAsin, phiLn, phiLog1p, cdfTheta: examThetaCdf(thetaAsin), cdfPhi: examPhiCdf(phiLog1p) };
+  return {
+    thetaAcos,
+    thetaAsin,
+    phiLn,
+    phiLog1p,
+    cdfTheta: examThetaCdf(thetaAsin),
+    cdfPhi: examPhiCdf(phiLog1p),
+  };
 }

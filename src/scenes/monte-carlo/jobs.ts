@@ -85,21 +85,49 @@ const tick = (): Promise<void> => new Promise((r) => setTimeout(r, 0));
  * One convergence run per strategy up to nMax samples, recorded at log-spaced N (10 per decade).
  * Strategies advance together (round robin), so every curve grows as the run proceeds.
  */
-export async function convergenceJob(args: ProblemArgs & { nMax: number }, compile: Compile, progress: Progress = () => {}, every = 250) {
+export async function convergenceJob(
+  args: ProblemArgs & { nMax: number },
+  compile: Compile,
+  progress: Progress = () => {},
+  every = 250,
+) {
   const prep = await prepare(args, compile);
   const cps = logSpacedCounts(args.nMax, 10);
   const runs = args.strategies.map((s, i) =>
-    prep.samplers[i] ? new ConvergenceRun1D({ f: prep.f, pdf: prep.samplers[i]!, sequence: s.seq as SequenceKind, seed: args.seed }, cps, prep.exact) : null,
+    prep.samplers[i]
+      ? new ConvergenceRun1D(
+          { f: prep.f, pdf: prep.samplers[i], sequence: s.seq as SequenceKind, seed: args.seed },
+          cps,
+          prep.exact,
+        )
+      : null,
   );
   const total = runs.reduce((t, r) => t + (r ? r.total : 0), 0) || 1;
   const snapshot = (): SeriesData[] =>
     runs.map((r, i) => {
-      const label = args.strategies[i]!.label;
-      if (!r) return { label, n: cps.slice(0, 0), estimate: new Float64Array(0), absError: new Float64Array(0), stderr: new Float64Array(0), recorded: 0, slope: NaN };
+      const label = args.strategies[i].label;
+      if (!r)
+        return {
+          label,
+          n: cps.slice(0, 0),
+          estimate: new Float64Array(0),
+          absError: new Float64Array(0),
+          stderr: new Float64Array(0),
+          recorded: 0,
+          slope: NaN,
+        };
       const k = r.series.recorded;
       const s = r.series;
       const fit = fitLogLogSlope(s.n, s.absError, 0, k);
-      return { label, n: s.n.slice(0, k), estimate: s.estimate.slice(0, k), absError: s.absError.slice(0, k), stderr: s.stderr.slice(0, k), recorded: k, slope: fit.slope };
+      return {
+        label,
+        n: s.n.slice(0, k),
+        estimate: s.estimate.slice(0, k),
+        absError: s.absError.slice(0, k),
+        stderr: s.stderr.slice(0, k),
+        recorded: k,
+        slope: fit.slope,
+      };
     });
   let last = now();
   let pending = true;
@@ -135,7 +163,12 @@ export interface RmseData {
  * per sample measured in this thread with performance.now() over all runs (the cost per sample of a
  * run to N_max; setup such as tabulating a pdf is not counted).
  */
-export async function rmseJob(args: ProblemArgs & { nMax: number; runs: number }, compile: Compile, progress: Progress = () => {}, every = 250) {
+export async function rmseJob(
+  args: ProblemArgs & { nMax: number; runs: number },
+  compile: Compile,
+  progress: Progress = () => {},
+  every = 250,
+) {
   const prep = await prepare(args, compile);
   const cps = logSpacedCounts(args.nMax, 4, 10);
   const S = args.strategies.length;
@@ -146,11 +179,20 @@ export async function rmseJob(args: ProblemArgs & { nMax: number; runs: number }
   const totalSamples = new Float64Array(S);
   const snapshot = (): RmseData[] =>
     args.strategies.map((s, i) => {
-      const acc = accs[i]!;
+      const acc = accs[i];
       const sum = acc.summary(0.1, 0.9);
-      const perSample = totalSamples[i]! > 0 ? totalMs[i]! / totalSamples[i]! : NaN;
+      const perSample = totalSamples[i] > 0 ? totalMs[i] / totalSamples[i] : NaN;
       const t = sum.n.map((n) => n * perSample);
-      return { label: s.label, n: sum.n, rmse: sum.rmse, lo: sum.lo, hi: sum.hi, timeMs: t, slope: fitLogLogSlope(sum.n, sum.rmse).slope, runs: acc.runs };
+      return {
+        label: s.label,
+        n: sum.n,
+        rmse: sum.rmse,
+        lo: sum.lo,
+        hi: sum.hi,
+        timeMs: t,
+        slope: fitLogLogSlope(sum.n, sum.rmse).slope,
+        runs: acc.runs,
+      };
     });
   let last = now();
   const totalWork = args.runs * S;
@@ -160,12 +202,16 @@ export async function rmseJob(args: ProblemArgs & { nMax: number; runs: number }
       work++;
       const sampler = prep.samplers[i];
       if (!sampler) continue;
-      const seq = args.strategies[i]!.seq as SequenceKind;
-      const run = new ConvergenceRun1D({ f: prep.f, pdf: sampler, sequence: seq, seed: runSeed(args.seed, r) }, cps, prep.exact);
+      const seq = args.strategies[i].seq as SequenceKind;
+      const run = new ConvergenceRun1D(
+        { f: prep.f, pdf: sampler, sequence: seq, seed: runSeed(args.seed, r) },
+        cps,
+        prep.exact,
+      );
       const t0 = now();
       for (let k = 0; k < cps.length; k++) {
         // advance exactly to checkpoint k: progressive sequences continue, stratified starts a new set
-        const budget = seq === 'stratified' ? cps[k]! : cps[k]! - (k ? cps[k - 1]! : 0);
+        const budget = seq === 'stratified' ? cps[k] : cps[k] - (k ? cps[k - 1] : 0);
         run.step(budget);
       }
       totalMs[i] += now() - t0;
@@ -175,7 +221,7 @@ export async function rmseJob(args: ProblemArgs & { nMax: number; runs: number }
         last = now();
         await tick();
       }
-      accs[i]!.addRun(run.series);
+      accs[i].addRun(run.series);
     }
   }
   return { rmse: snapshot(), exact: prep.exact, problems: prep.problems };
@@ -185,15 +231,23 @@ export async function rmseJob(args: ProblemArgs & { nMax: number; runs: number }
  * Unbiasedness: M independent estimates, each with N samples, for one strategy. Returns the
  * estimates (Float64Array of length M, transferred).
  */
-export async function histogramJob(args: ProblemArgs & { N: number; M: number }, compile: Compile, progress: Progress = () => {}, every = 250) {
+export async function histogramJob(
+  args: ProblemArgs & { N: number; M: number },
+  compile: Compile,
+  progress: Progress = () => {},
+  every = 250,
+) {
   const prep = await prepare(args, compile);
   const sampler = prep.samplers[0];
   if (!sampler) throw new Error(prep.problems[0] ?? 'no usable pdf');
-  const seq = args.strategies[0]!.seq as SequenceKind;
+  const seq = args.strategies[0].seq as SequenceKind;
   const out = new Float64Array(args.M).fill(NaN);
   let last = now();
   for (let m = 0; m < args.M; m++) {
-    out[m] = estimate1D({ f: prep.f, pdf: sampler, sequence: seq, seed: runSeed(args.seed ^ 0x5bd1e995, m) }, args.N).estimate;
+    out[m] = estimate1D(
+      { f: prep.f, pdf: sampler, sequence: seq, seed: runSeed(args.seed ^ 0x5bd1e995, m) },
+      args.N,
+    ).estimate;
     if (now() - last > every) {
       progress(m / args.M, { estimates: out.slice(0, m + 1) });
       last = now();
@@ -204,13 +258,21 @@ export async function histogramJob(args: ProblemArgs & { N: number; M: number },
 }
 
 /** One estimate with n drawn samples (large n: runs here, in batches, with progress). */
-export async function estimateJob(args: ProblemArgs & { n: number }, compile: Compile, progress: Progress = () => {}): Promise<McEstimate & { ms: number }> {
+export async function estimateJob(
+  args: ProblemArgs & { n: number },
+  compile: Compile,
+  progress: Progress = () => {},
+): Promise<McEstimate & { ms: number }> {
   const prep = await prepare(args, compile);
   const sampler = prep.samplers[0];
   if (!sampler) throw new Error(prep.problems[0] ?? 'no usable pdf');
-  const seq = args.strategies[0]!.seq as SequenceKind;
+  const seq = args.strategies[0].seq as SequenceKind;
   // one run to N with a single checkpoint: same numbers as estimate1D, but resumable
-  const run = new ConvergenceRun1D({ f: prep.f, pdf: sampler, sequence: seq, seed: args.seed }, [args.n], prep.exact);
+  const run = new ConvergenceRun1D(
+    { f: prep.f, pdf: sampler, sequence: seq, seed: args.seed },
+    [args.n],
+    prep.exact,
+  );
   const t0 = now();
   while (!run.step(262144)) {
     progress(run.done / run.total);
@@ -218,5 +280,12 @@ export async function estimateJob(args: ProblemArgs & { n: number }, compile: Co
   }
   const ms = now() - t0;
   const s = run.series;
-  return { n: args.n - s.invalid, estimate: s.estimate[0]!, variance: NaN, stderr: s.stderr[0]!, invalid: s.invalid, ms };
+  return {
+    n: args.n - s.invalid,
+    estimate: s.estimate[0],
+    variance: NaN,
+    stderr: s.stderr[0],
+    invalid: s.invalid,
+    ms,
+  };
 }

@@ -8,7 +8,8 @@ import { compileX } from './expr';
 import { convergenceJob, estimateJob, histogramJob, rmseJob } from './jobs';
 
 exposeTasks({
-  convergence: (args: Parameters<typeof convergenceJob>[0], progress) => convergenceJob(args, compileX, progress),
+  convergence: (args: Parameters<typeof convergenceJob>[0], progress) =>
+    convergenceJob(args, compileX, progress),
   rmse: (args: Parameters<typeof rmseJob>[0], progress) => rmseJob(args, compileX, progress),
   histogram: (args: Parameters<typeof histogramJob>[0], progress) => histogramJob(args, compileX, progress),
   estimate: (args: Parameters<typeof estimateJob>[0], progress) => estimateJob(args, compileX, progress),

@@ -40,7 +40,11 @@ export type Fn1 = (x: number) => number;
 /** Default limits used when the URL's are unusable. */
 export function checkLimits(a: number, b: number): { a: number; b: number; message: string | null } {
   if (Number.isFinite(a) && Number.isFinite(b) && a < b) return { a, b, message: null };
-  return { a: EXAM_A, b: EXAM_B, message: `The limits must satisfy a < b (got a = ${a}, b = ${b}); using [${EXAM_A}, ${EXAM_B}].` };
+  return {
+    a: EXAM_A,
+    b: EXAM_B,
+    message: `The limits must satisfy a < b (got a = ${a}, b = ${b}); using [${EXAM_A}, ${EXAM_B}].`,
+  };
 }
 
 /**
@@ -78,11 +82,21 @@ export function exactIntegral(fSrc: string, f: Fn1, a: number, b: number): Exact
   if (c !== null) {
     const A = a + c;
     const B = b + c;
-    return { value: ((b - a) * (B * B + A * B + A * A)) / 3, method: 'closed form ((b + c)³ − (a + c)³)/3', error: 0, problem: null };
+    return {
+      value: ((b - a) * (B * B + A * B + A * A)) / 3,
+      method: 'closed form ((b + c)³ − (a + c)³)/3',
+      error: 0,
+      problem: null,
+    };
   }
   const r = integrate1D(f, a, b);
   if (r.nonFiniteAt !== undefined) {
-    return { value: NaN, method: INTEGRATION_METHOD, error: Infinity, problem: `f is not finite at x = ${fmt(r.nonFiniteAt)}, so ∫ f dx has no value on [${fmt(a)}, ${fmt(b)}].` };
+    return {
+      value: NaN,
+      method: INTEGRATION_METHOD,
+      error: Infinity,
+      problem: `f is not finite at x = ${fmt(r.nonFiniteAt)}, so ∫ f dx has no value on [${fmt(a)}, ${fmt(b)}].`,
+    };
   }
   if (!r.converged) {
     return {
@@ -92,7 +106,12 @@ export function exactIntegral(fSrc: string, f: Fn1, a: number, b: number): Exact
       problem: `∫ f dx over [${fmt(a)}, ${fmt(b)}] does not converge (the quadrature error does not shrink): the integral may diverge.`,
     };
   }
-  return { value: r.value, method: `${INTEGRATION_METHOD}, ${r.evaluations} evaluations, error ≤ ${r.error.toExponential(1)}`, error: r.error, problem: null };
+  return {
+    value: r.value,
+    method: `${INTEGRATION_METHOD}, ${r.evaluations} evaluations, error ≤ ${r.error.toExponential(1)}`,
+    error: r.error,
+    problem: null,
+  };
 }
 
 /** A usable sampling density for the scene, or the reason it cannot be used. */
@@ -120,20 +139,45 @@ const fmt = (x: number): string => (Number.isInteger(x) ? String(x) : Number(x.t
  * - proportional: p ∝ f, in closed form when f is (x + c)², else tabulated p ∝ |f| (4096 bins);
  * - custom: the typed pdf, validated and normalized (core `customPdf1D`).
  */
-export function choosePdf(kind: PdfKind, fSrc: string, f: Fn1, a: number, b: number, custom: Fn1 | null): PdfChoice {
+export function choosePdf(
+  kind: PdfKind,
+  fSrc: string,
+  f: Fn1,
+  a: number,
+  b: number,
+  custom: Fn1 | null,
+): PdfChoice {
   switch (kind) {
     case 'uniform': {
       const s = uniformPdf1D(a, b);
-      return { ok: true, kind, sampler: s, density: s.pdf, label: `p(x) = 1/(b − a) = ${fmt(1 / (b - a))}`, note: null };
+      return {
+        ok: true,
+        kind,
+        sampler: s,
+        density: s.pdf,
+        label: `p(x) = 1/(b − a) = ${fmt(1 / (b - a))}`,
+        note: null,
+      };
     }
     case 'linear': {
       const w0 = Math.abs(f(a));
       const w1 = Math.abs(f(b));
       if (!(Number.isFinite(w0) && Number.isFinite(w1) && w0 + w1 > 0)) {
-        return { ok: false, kind, message: `The linear pdf is the ramp through |f(a)| and |f(b)|, but these are ${fmt(w0)} and ${fmt(w1)}: no ramp to sample. Choose another pdf.` };
+        return {
+          ok: false,
+          kind,
+          message: `The linear pdf is the ramp through |f(a)| and |f(b)|, but these are ${fmt(w0)} and ${fmt(w1)}: no ramp to sample. Choose another pdf.`,
+        };
       }
       const s = linearPdf1D(a, b, w0, w1);
-      return { ok: true, kind, sampler: s, density: s.pdf, label: `p(x) ∝ ramp from |f(a)| = ${fmt(w0)} to |f(b)| = ${fmt(w1)}`, note: null };
+      return {
+        ok: true,
+        kind,
+        sampler: s,
+        density: s.pdf,
+        label: `p(x) ∝ ramp from |f(a)| = ${fmt(w0)} to |f(b)| = ${fmt(w1)}`,
+        note: null,
+      };
     }
     case 'proportional': {
       const c = squareShift(fSrc);
@@ -143,7 +187,14 @@ export function choosePdf(kind: PdfKind, fSrc: string, f: Fn1, a: number, b: num
         const B = b + c;
         const D = (b - a) * (B * B + A * B + A * A);
         const cs = c === 0 ? 'x' : `x ${c > 0 ? '+' : '−'} ${fmt(Math.abs(c))}`;
-        return { ok: true, kind, sampler: s, density: s.pdf, label: `p(x) = 3(${cs})²/${fmt(D)} (closed form, inverted by a cube root)`, note: null };
+        return {
+          ok: true,
+          kind,
+          sampler: s,
+          density: s.pdf,
+          label: `p(x) = 3(${cs})²/${fmt(D)} (closed form, inverted by a cube root)`,
+          note: null,
+        };
       }
       const r = proportionalPdf1D(f, a, b);
       if (!r.ok) return { ok: false, kind, message: `p ∝ |f| cannot be built: ${r.message}` };
@@ -201,18 +252,35 @@ export interface SampleTable {
 }
 
 /** Build the worked table for the samples xs (given, or the exam's four). */
-export function sampleTable(xs: readonly number[], f: Fn1, a: number, b: number, density: Fn1 | null, propDensity: Fn1 | null): SampleTable {
+export function sampleTable(
+  xs: readonly number[],
+  f: Fn1,
+  a: number,
+  b: number,
+  density: Fn1 | null,
+  propDensity: Fn1 | null,
+): SampleTable {
   const problems: string[] = [];
   const rows: SampleRow[] = xs.map((x) => {
     const fx = f(x);
     const outside = !(x >= a && x <= b);
     const p = density ? density(x) : NaN;
     const pp = propDensity && !outside ? propDensity(x) : NaN;
-    return { x, f: fx, p, ratio: fx === 0 ? 0 : p > 0 ? fx / p : NaN, uniformTerm: (b - a) * fx, propRatio: fx === 0 ? 0 : pp > 0 ? fx / pp : NaN, outside };
+    return {
+      x,
+      f: fx,
+      p,
+      ratio: fx === 0 ? 0 : p > 0 ? fx / p : NaN,
+      uniformTerm: (b - a) * fx,
+      propRatio: fx === 0 ? 0 : pp > 0 ? fx / pp : NaN,
+      outside,
+    };
   });
   const outside = rows.filter((r) => r.outside).map((r) => fmt(r.x));
   if (outside.length) {
-    problems.push(`Sample${outside.length > 1 ? 's' : ''} ${outside.join(', ')} lie${outside.length > 1 ? '' : 's'} outside [${fmt(a)}, ${fmt(b)}]: p = 0 there, so f/p is undefined and the estimate leaves ${outside.length > 1 ? 'them' : 'it'} out.`);
+    problems.push(
+      `Sample${outside.length > 1 ? 's' : ''} ${outside.join(', ')} lie${outside.length > 1 ? '' : 's'} outside [${fmt(a)}, ${fmt(b)}]: p = 0 there, so f/p is undefined and the estimate leaves ${outside.length > 1 ? 'them' : 'it'} out.`,
+    );
   }
   const fv = Float64Array.from(rows, (r) => (r.outside ? NaN : r.f));
   const uniform = uniformEstimate(fv, a, b);
@@ -221,11 +289,17 @@ export function sampleTable(xs: readonly number[], f: Fn1, a: number, b: number,
     const pv = Float64Array.from(rows, (r) => r.p);
     chosen = importanceEstimate(fv, pv);
     const zero = rows.filter((r) => !r.outside && r.p === 0 && r.f !== 0).map((r) => fmt(r.x));
-    if (zero.length) problems.push(`p = 0 at x = ${zero.join(', ')} where f ≠ 0: such a sample could never be drawn from p.`);
+    if (zero.length)
+      problems.push(
+        `p = 0 at x = ${zero.join(', ')} where f ≠ 0: such a sample could never be drawn from p.`,
+      );
   }
   let proportional: McEstimate | null = null;
   if (propDensity) {
-    proportional = importanceEstimate(fv, Float64Array.from(rows, (r) => propDensity(r.x)));
+    proportional = importanceEstimate(
+      fv,
+      Float64Array.from(rows, (r) => propDensity(r.x)),
+    );
   }
   return { rows, chosen, uniform, proportional, problems };
 }
@@ -233,7 +307,7 @@ export function sampleTable(xs: readonly number[], f: Fn1, a: number, b: number,
 /** Round half away from zero to `d` decimals (how a student writes 9.9856 → 9.99). */
 export function roundTo(x: number, d: number): number {
   const k = 10 ** d;
-  return Math.sign(x) * Math.round(Math.abs(x) * k) / k;
+  return (Math.sign(x) * Math.round(Math.abs(x) * k)) / k;
 }
 
 /** One comparison of a printed figure with the computed one. */
@@ -250,16 +324,33 @@ export interface KeyNote {
  * Compare the key's printed Q4(b) figures with the live computation (only when the scene shows the
  * exam's own problem: f = (x + 2)², [0, 2], the exam's four samples in order). Returns [] otherwise.
  */
-export function keyComparison(fSrc: string, a: number, b: number, xs: readonly number[], table: SampleTable): KeyNote[] {
-  const exam = squareShift(fSrc) === 2 && a === EXAM_A && b === EXAM_B && xs.length === EXAM_SAMPLES.length && xs.every((x, i) => x === EXAM_SAMPLES[i]);
+export function keyComparison(
+  fSrc: string,
+  a: number,
+  b: number,
+  xs: readonly number[],
+  table: SampleTable,
+): KeyNote[] {
+  const exam =
+    squareShift(fSrc) === 2 &&
+    a === EXAM_A &&
+    b === EXAM_B &&
+    xs.length === EXAM_SAMPLES.length &&
+    xs.every((x, i) => x === EXAM_SAMPLES[i]);
   if (!exam) return [];
   const notes: KeyNote[] = table.rows.map((r, i) => {
-    const printed = KEY_PRINTED.f[i]!;
+    const printed = KEY_PRINTED.f[i];
     const rounded = roundTo(r.f, 2);
     return { what: `f(${fmt(r.x)})`, printed, computed: r.f, rounded, agrees: rounded === printed };
   });
   const est = table.uniform.estimate;
-  notes.push({ what: '⟨I⟩ uniform', printed: KEY_PRINTED.estimate, computed: est, rounded: roundTo(est, 2), agrees: roundTo(est, 2) === KEY_PRINTED.estimate });
+  notes.push({
+    what: '⟨I⟩ uniform',
+    printed: KEY_PRINTED.estimate,
+    computed: est,
+    rounded: roundTo(est, 2),
+    agrees: roundTo(est, 2) === KEY_PRINTED.estimate,
+  });
   return notes;
 }
 
@@ -269,7 +360,13 @@ export function drawnProblem(f: Fn1, sampler: Pdf1D, sequence: Strategy, seed: n
 }
 
 /** Estimate with n drawn samples on the main thread (small n; larger n runs in the worker). */
-export function drawnEstimate(f: Fn1, sampler: Pdf1D, sequence: Strategy, seed: number, n: number): McEstimate {
+export function drawnEstimate(
+  f: Fn1,
+  sampler: Pdf1D,
+  sequence: Strategy,
+  seed: number,
+  n: number,
+): McEstimate {
   return estimate1D(drawnProblem(f, sampler, sequence, seed), n);
 }
 
@@ -277,7 +374,13 @@ export function drawnEstimate(f: Fn1, sampler: Pdf1D, sequence: Strategy, seed: 
 export const SYNC_MAX_N = 100_000;
 
 /** Curves of f and of the pdf scaled to f's range, on a grid of m points over [a, b]. */
-export function curves(f: Fn1, density: Fn1 | null, a: number, b: number, m = 400): { x: Float64Array; f: Float64Array; p: Float64Array; scale: number } {
+export function curves(
+  f: Fn1,
+  density: Fn1 | null,
+  a: number,
+  b: number,
+  m = 400,
+): { x: Float64Array; f: Float64Array; p: Float64Array; scale: number } {
   const x = new Float64Array(m);
   const fy = new Float64Array(m);
   const py = new Float64Array(m);
@@ -295,12 +398,16 @@ export function curves(f: Fn1, density: Fn1 | null, a: number, b: number, m = 40
   }
   // scale the pdf to the height of f, rounded to a readable factor
   const scale = pmax > 0 && fmax > 0 ? Number((fmax / pmax).toPrecision(3)) : 1;
-  for (let i = 0; i < m; i++) py[i] = py[i]! * scale;
+  for (let i = 0; i < m; i++) py[i] = py[i] * scale;
   return { x, f: fy, p: py, scale };
 }
 
 /** The strategies compared in the convergence plots: [pdf, sequence, label]. */
-export function comparedStrategies(selPdf: PdfKind, selSeq: Strategy, pdfOk: boolean): { pdf: PdfKind; seq: Strategy; label: string }[] {
+export function comparedStrategies(
+  selPdf: PdfKind,
+  selSeq: Strategy,
+  pdfOk: boolean,
+): { pdf: PdfKind; seq: Strategy; label: string }[] {
   const base: { pdf: PdfKind; seq: Strategy }[] = [
     { pdf: 'uniform', seq: 'independent' },
     { pdf: 'linear', seq: 'independent' },
@@ -308,12 +415,23 @@ export function comparedStrategies(selPdf: PdfKind, selSeq: Strategy, pdfOk: boo
     { pdf: 'uniform', seq: 'stratified' },
     { pdf: 'uniform', seq: 'sobol' },
   ];
-  if (pdfOk && !base.some((s) => s.pdf === selPdf && s.seq === selSeq)) base.push({ pdf: selPdf, seq: selSeq });
+  if (pdfOk && !base.some((s) => s.pdf === selPdf && s.seq === selSeq))
+    base.push({ pdf: selPdf, seq: selSeq });
   return base.map((s) => ({ ...s, label: strategyLabel(s.pdf, s.seq) }));
 }
 
-const PDF_LABEL: Record<PdfKind, string> = { uniform: 'uniform', linear: 'linear', proportional: 'p ∝ f', custom: 'custom p' };
-const SEQ_LABEL: Record<Strategy, string> = { independent: 'independent', stratified: 'stratified', halton: 'Halton', sobol: 'Sobol' };
+const PDF_LABEL: Record<PdfKind, string> = {
+  uniform: 'uniform',
+  linear: 'linear',
+  proportional: 'p ∝ f',
+  custom: 'custom p',
+};
+const SEQ_LABEL: Record<Strategy, string> = {
+  independent: 'independent',
+  stratified: 'stratified',
+  halton: 'Halton',
+  sobol: 'Sobol',
+};
 
 /** "uniform · Sobol" etc. */
 export function strategyLabel(pdf: PdfKind, seq: Strategy): string {
@@ -358,7 +476,12 @@ export interface RaceTrack {
 }
 
 function lane(n: number): RaceLane {
-  return { x: new Float64Array(n), term: new Float64Array(n), mean: new Float64Array(n), m2: new Float64Array(n) };
+  return {
+    x: new Float64Array(n),
+    term: new Float64Array(n),
+    mean: new Float64Array(n),
+    m2: new Float64Array(n),
+  };
 }
 
 /**
@@ -372,7 +495,15 @@ function lane(n: number): RaceLane {
  * draw) and each lane's terms, mean and M₂ are written in one loop. The arithmetic is the plain
  * per-sample one's (tests/scenes/monte-carlo/race.test.ts compares them exactly).
  */
-export function raceTrack(f: Fn1, a: number, b: number, importance: Pdf1D, exact: number, seed: number, max = RACE_MAX): RaceTrack {
+export function raceTrack(
+  f: Fn1,
+  a: number,
+  b: number,
+  importance: Pdf1D,
+  exact: number,
+  seed: number,
+  max = RACE_MAX,
+): RaceTrack {
   const xi = new Rng(seed, RACE_STREAM).fill(new Float64Array(max));
   const U = lane(max);
   const I = lane(max);
@@ -380,7 +511,7 @@ export function raceTrack(f: Fn1, a: number, b: number, importance: Pdf1D, exact
   let mean = 0;
   let m2 = 0;
   for (let i = 0; i < max; i++) {
-    const x = a + w * xi[i]!;
+    const x = a + w * xi[i];
     const y = w * f(x);
     U.x[i] = x;
     U.term[i] = y;
@@ -394,7 +525,7 @@ export function raceTrack(f: Fn1, a: number, b: number, importance: Pdf1D, exact
   mean = 0;
   m2 = 0;
   for (let i = 0; i < max; i++) {
-    const x = importance.sample(xi[i]!);
+    const x = importance.sample(xi[i]);
     I.x[i] = x;
     const fx = f(x);
     const y = fx === 0 ? 0 : fx / importance.pdf(x);
@@ -428,7 +559,7 @@ export function racePoints(max: number): number[] {
   for (let k = Math.ceil(Math.log10(33) * perDecade); ; k++) {
     const n = Math.round(10 ** (k / perDecade));
     if (n > max) break;
-    if (n > out[out.length - 1]!) out.push(n);
+    if (n > out[out.length - 1]) out.push(n);
   }
   return out;
 }
@@ -441,13 +572,13 @@ export function raceLaneAt(L: RaceLane, t: number, exact: number): LaneState {
 function laneAt(L: RaceLane, t: number, exact: number): LaneState {
   if (t < 1) return { n: 0, x: NaN, term: NaN, estimate: NaN, stderr: NaN, absError: NaN };
   const k = t - 1;
-  const est = L.mean[k]!;
+  const est = L.mean[k];
   return {
     n: t,
-    x: L.x[k]!,
-    term: L.term[k]!,
+    x: L.x[k],
+    term: L.term[k],
     estimate: est,
-    stderr: t > 1 ? Math.sqrt(L.m2[k]! / (t - 1) / t) : NaN,
+    stderr: t > 1 ? Math.sqrt(L.m2[k] / (t - 1) / t) : NaN,
     absError: Math.abs(est - exact),
   };
 }
@@ -458,13 +589,26 @@ export interface RaceFrame {
   uniform: LaneState;
   importance: LaneState;
   /** Curves up to t: sample counts (racePoints ≤ t, and t itself) with each lane's estimate, ±SE and |error|. */
-  curve: { n: number[]; u: number[]; uSe: number[]; uErr: number[]; i: number[]; iSe: number[]; iErr: number[] };
+  curve: {
+    n: number[];
+    u: number[];
+    uSe: number[];
+    uErr: number[];
+    i: number[];
+    iSe: number[];
+    iErr: number[];
+  };
   /** The most recent samples (up to `recent`), oldest first, for the rug under the integrand. */
   recentU: number[];
   recentI: number[];
 }
 
-export function raceAt(track: RaceTrack, t: number, points: readonly number[] = racePoints(track.max), recent = 40): RaceFrame {
+export function raceAt(
+  track: RaceTrack,
+  t: number,
+  points: readonly number[] = racePoints(track.max),
+  recent = 40,
+): RaceFrame {
   t = Math.max(0, Math.min(track.max, Math.floor(t)));
   const curve: RaceFrame['curve'] = { n: [], u: [], uSe: [], uErr: [], i: [], iSe: [], iErr: [] };
   const push = (n: number) => {
@@ -512,7 +656,15 @@ export function squareAntiderivative(c: number, a: number, b: number) {
   const Fb = F(b);
   const Fa = F(a);
   const total = (v: { cube: number; lin2: number; lin: number }) => v.cube + v.lin2 + v.lin;
-  return { twoC: 2 * c, c2: c * c, Fb, Fa, valueB: total(Fb), valueA: total(Fa), value: total(Fb) - total(Fa) };
+  return {
+    twoC: 2 * c,
+    c2: c * c,
+    Fb,
+    Fa,
+    valueB: total(Fb),
+    valueA: total(Fa),
+    value: total(Fb) - total(Fa),
+  };
 }
 
 /** Q4(c): the normalization of p ∝ (x + c)² on [a, b]: p = 3(x + c)² / D with D = 3∫f = (b + c)³ − (a + c)³. */
@@ -525,7 +677,7 @@ export function atRoundingLevel(values: ArrayLike<number>, reference: number): b
   const tiny = Math.abs(reference) * 1e-15 || 1e-300;
   let any = false;
   for (let i = 0; i < values.length; i++) {
-    const v = values[i]!;
+    const v = values[i];
     if (!Number.isFinite(v)) continue;
     any = true;
     if (v > tiny * 100) return false;

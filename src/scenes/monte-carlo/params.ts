@@ -27,7 +27,13 @@ export const schema = {
     kind: 'enum',
     default: 'uniform',
     values: PDF_KINDS,
-    aliases: { importance: 'proportional', proportional_to_f: 'proportional', f: 'proportional', typed: 'custom', ramp: 'linear' },
+    aliases: {
+      importance: 'proportional',
+      proportional_to_f: 'proportional',
+      f: 'proportional',
+      typed: 'custom',
+      ramp: 'linear',
+    },
   },
   pdfexpr: { kind: 'string', default: '1 + x', maxLength: 400, label: 'custom pdf p(x)', expression: ['x'] },
   strategy: {
@@ -39,7 +45,14 @@ export const schema = {
   samples: { kind: 'list', default: null, maxItems: 32, min: -1e6, max: 1e6, label: 'given samples x' },
   n: { kind: 'number', default: 10000, min: 1, max: MAX_N, integer: true, label: 'samples N' },
   seed: { kind: 'number', default: 1, min: 0, max: 4294967295, integer: true },
-  hn: { kind: 'number', default: 16, min: 1, max: 10000, integer: true, label: 'samples per estimate (histogram)' },
+  hn: {
+    kind: 'number',
+    default: 16,
+    min: 1,
+    max: 10000,
+    integer: true,
+    label: 'samples per estimate (histogram)',
+  },
   runs: { kind: 'number', default: 32, min: 4, max: 256, integer: true, label: 'independent runs (RMSE)' },
   // the animation: t = samples drawn so far (0…RACE_SAMPLES), play = 1 while playing
   ...timelineParams({ max: RACE_SAMPLES, integer: true }),

@@ -4,9 +4,38 @@
  * live answer, and then, beyond the exam, the 3D view and what floating point does to the
  * textbook form (Ray Tracing Gems ch. 7).
  */
-import { memo, useCallback, useDeferredValue, useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
+import {
+  memo,
+  useCallback,
+  useDeferredValue,
+  useEffect,
+  useLayoutEffect,
+  useMemo,
+  useRef,
+  useState,
+} from 'react';
 import type { SceneProps } from '../../app/scene';
-import { Deferred, Derivation as DerivationBlock, ExamPart, ExamQuestion, ExploreFurther, KeyNote, LiveAnswer, MathTex, nextTask, Notice, NumberField, Panel, Readout, Select, TimelineTransport, useCoarsePosition, useTimeline, useTimelineFrame, type Timeline } from '../../ui';
+import {
+  Deferred,
+  Derivation as DerivationBlock,
+  ExamPart,
+  ExamQuestion,
+  ExploreFurther,
+  KeyNote,
+  LiveAnswer,
+  MathTex,
+  nextTask,
+  Notice,
+  NumberField,
+  Panel,
+  Readout,
+  Select,
+  TimelineTransport,
+  useCoarsePosition,
+  useTimeline,
+  useTimelineFrame,
+  type Timeline,
+} from '../../ui';
 import type { RaySphereHit } from '../../core/geometry';
 import { CASE_PRESETS, PRECISION_PRESETS, schema, type Preset, type RaySphereParams } from './params';
 import {
@@ -76,7 +105,10 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
     renderHz: 0,
   });
   const t = tl.t;
-  const modelAt = useMemo(() => lastValue((tt: number) => computeModel(paramsAt(params, sweep, tt))), [params, sweep]);
+  const modelAt = useMemo(
+    () => lastValue((tt: number) => computeModel(paramsAt(params, sweep, tt))),
+    [params, sweep],
+  );
   const model = modelAt(t);
 
   // Edits (drags, typing, presets) describe the ray you see (at the live position): they become the sweep's centre (t = 0.5).
@@ -121,12 +153,18 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
   const problems = base.problems;
   const method = params.method === 'naive' ? 'naive' : 'stable';
   const hereErrors = useMemo(
-    () => ({ naive: slow.rows.find((x) => x.method === 'naive')?.errDisc ?? null, stable: slow.rows.find((x) => x.method === 'stable')?.errDisc ?? null }),
+    () => ({
+      naive: slow.rows.find((x) => x.method === 'naive')?.errDisc ?? null,
+      stable: slow.rows.find((x) => x.method === 'stable')?.errDisc ?? null,
+    }),
     [slow],
   );
   const activePreset = [...CASE_PRESETS, ...PRECISION_PRESETS].find((p) => samePreset(p, params));
   const ends = useMemo(() => [sweepAt(sweep, 0).o, sweepAt(sweep, 1).o], [sweep]);
-  const xLabel = sweepMode === 'offset' ? 'h / r: signed distance of the line from C, in radii' : 'ψ / α: angle between d and the direction to C, in angular radii α';
+  const xLabel =
+    sweepMode === 'offset'
+      ? 'h / r: signed distance of the line from C, in radii'
+      : 'ψ / α: angle between d and the direction to C, in angular radii α';
 
   const presets = useMemo(
     () => (
@@ -134,7 +172,13 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
         <div className="rs-presets" role="group" aria-label="Case presets">
           <span className="rs-presets-label">Cases:</span>
           {CASE_PRESETS.map((p) => (
-            <button key={p.id} type="button" data-testid={`preset-${p.id}`} aria-pressed={activePreset?.id === p.id} onClick={() => setParams({ ...p.params, t: 0.5, play: false })}>
+            <button
+              key={p.id}
+              type="button"
+              data-testid={`preset-${p.id}`}
+              aria-pressed={activePreset?.id === p.id}
+              onClick={() => setParams({ ...p.params, t: 0.5, play: false })}
+            >
               {p.label}
             </button>
           ))}
@@ -142,7 +186,13 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
         <div className="rs-presets" role="group" aria-label="Precision presets">
           <span className="rs-presets-label">Break the textbook form:</span>
           {PRECISION_PRESETS.map((p) => (
-            <button key={p.id} type="button" data-testid={`preset-${p.id}`} aria-pressed={activePreset?.id === p.id} onClick={() => setParams({ ...p.params, t: 0.5, play: false })}>
+            <button
+              key={p.id}
+              type="button"
+              data-testid={`preset-${p.id}`}
+              aria-pressed={activePreset?.id === p.id}
+              onClick={() => setParams({ ...p.params, t: 0.5, play: false })}
+            >
               {p.label}
             </button>
           ))}
@@ -170,10 +220,24 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
         />
         <VecField label="Origin o" name="o" value={params.o} onChange={(v) => edit({ o: v })} />
         <VecField label="Direction d" name="d" value={params.d} onChange={(v) => edit({ d: v })} />
-        <VecField label="Centre C (URL parameter c)" name="c" value={params.c} onChange={(v) => edit({ c: v })} />
-        <NumberField label="Radius r" value={params.r} onChange={(x) => edit({ r: x })} min={-1e12} max={1e12} step={0.1} testId="input-r" />
+        <VecField
+          label="Centre C (URL parameter c)"
+          name="c"
+          value={params.c}
+          onChange={(v) => edit({ c: v })}
+        />
+        <NumberField
+          label="Radius r"
+          value={params.r}
+          onChange={(x) => edit({ r: x })}
+          min={-1e12}
+          max={1e12}
+          step={0.1}
+          testId="input-r"
+        />
         <p className="rs-small">
-          d need not be unit length: t is then measured in units of |d|. These fields hold the ray at the centre of the sweep (t = 0.5); editing moves the sweep there.
+          d need not be unit length: t is then measured in units of |d|. These fields hold the ray at the
+          centre of the sweep (t = 0.5); editing moves the sweep there.
         </p>
       </details>
     ),
@@ -235,9 +299,13 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
           asks={
             <>
               <p className="rs-asks">
-                A ray p(t) = <b>o</b> + t <b>d</b> (origin <b>o</b>, direction <b>d</b>, t ≥ 0) is traced against a sphere with centre <b>C</b> and radius r. Substitute the ray into
-                the sphere’s equation |p − <b>C</b>|² = r² to get a quadratic in t, and state when the ray hits the sphere and which root is the hit.{' '}
-                <span className="rs-small">(The key awards 2 marks for stating Δ ≥ 0 and 2 marks for stating t ≥ 0.)</span>
+                A ray p(t) = <b>o</b> + t <b>d</b> (origin <b>o</b>, direction <b>d</b>, t ≥ 0) is traced
+                against a sphere with centre <b>C</b> and radius r. Substitute the ray into the sphere’s
+                equation |p − <b>C</b>|² = r² to get a quadratic in t, and state when the ray hits the sphere
+                and which root is the hit.{' '}
+                <span className="rs-small">
+                  (The key awards 2 marks for stating Δ ≥ 0 and 2 marks for stating t ≥ 0.)
+                </span>
               </p>
             </>
           }
@@ -263,7 +331,14 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
             </div>
             <div className="rs-stage-plots">
               <Deferred estimate={640}>
-                <SweepPlotsBlock tl={tl} modelAt={modelAt} sweep={sweep} sweepMode={sweepMode} xLabel={xLabel} method={method} />
+                <SweepPlotsBlock
+                  tl={tl}
+                  modelAt={modelAt}
+                  sweep={sweep}
+                  sweepMode={sweepMode}
+                  xLabel={xLabel}
+                  method={method}
+                />
               </Deferred>
             </div>
           </div>
@@ -271,7 +346,8 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
             <DerivationBlock testId="derivation">
               {tl.playing ? (
                 <p className="rs-small" data-testid="derivation-held">
-                  The numbers below are those of the position where the sweep started; they follow the animation when you pause it.
+                  The numbers below are those of the position where the sweep started; they follow the
+                  animation when you pause it.
                 </p>
               ) : null}
               <DerivationSteps model={slow} />
@@ -282,17 +358,28 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
               <LiveAnswerBody tl={tl} modelAt={modelAt} sweep={sweep} sweepMode={sweepMode} method={method} />
             </LiveAnswer>
             <KeyNote testId="q5-keynote">
-              the key prints no derivation; it refers to <em>Ray Tracing in One Weekend</em> and awards 2 marks for Δ ≥ 0 and 2 for t ≥ 0. That book (and this page) call the
-              centre <b>C</b> and the quadratic’s constant term c; later editions simplify with b = 2h, h = d·(o − C), giving t = (−h ± √(h² − ac)) / a: the same roots.
+              the key prints no derivation; it refers to <em>Ray Tracing in One Weekend</em> and awards 2
+              marks for Δ ≥ 0 and 2 for t ≥ 0. That book (and this page) call the centre <b>C</b> and the
+              quadratic’s constant term c; later editions simplify with b = 2h, h = d·(o − C), giving t = (−h
+              ± √(h² − ac)) / a: the same roots.
             </KeyNote>
           </Deferred>
         </ExamPart>
       </ExamQuestion>
       <ExploreFurther intro="Beyond the exam: the same ray in 3D, and what floating point does to the textbook formula when the sphere is far away or the ray grazes it.">
         <Panel title="3D view">
-          <LiveView3D tl={tl} modelAt={modelAt} height={mode.present ? 420 : 320} dark={mode.theme === 'dark'} fitExtra={ends} />
+          <LiveView3D
+            tl={tl}
+            modelAt={modelAt}
+            height={mode.present ? 420 : 320}
+            dark={mode.theme === 'dark'}
+            fitExtra={ends}
+          />
         </Panel>
-        <Panel title="Precision: textbook vs robust, against a double-double reference" className="rs-offscreen-skip">
+        <Panel
+          title="Precision: textbook vs robust, against a double-double reference"
+          className="rs-offscreen-skip"
+        >
           <PrecisionTableMemo model={slow} />
           <PrecisionExplainerMemo />
         </Panel>
@@ -303,8 +390,10 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
           <Panel title="Error against distance">
             <ErrorVsDistanceMemo current={Number(slow.distanceRatio.toPrecision(3))} here={hereErrors} />
             <p className="rs-small">
-              Median over 12 rays per distance, aimed 0.1 r … 0.95 r off the centre; the crosses are the current ray’s Δ errors. The textbook Δ loses digits like u·(D/r)² (u =
-              2⁻⁵³): by D ≈ 10⁸ r nothing is left. The robust Δ grows only like u·(D/r), and its roots stay accurate to the last bits.
+              Median over 12 rays per distance, aimed 0.1 r … 0.95 r off the centre; the crosses are the
+              current ray’s Δ errors. The textbook Δ loses digits like u·(D/r)² (u = 2⁻⁵³): by D ≈ 10⁸ r
+              nothing is left. The robust Δ grows only like u·(D/r), and its roots stay accurate to the last
+              bits.
             </p>
           </Panel>
         </div>
@@ -319,14 +408,30 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
  * Q5's live answer at the coarse position (the scene does not re-render while the sweep plays:
  * this part re-renders at most RENDER_HZ times a second then, and exactly when paused).
  */
-function LiveAnswerBody({ tl, modelAt, sweep, sweepMode, method }: { tl: Timeline; modelAt: (t: number) => RaySphereModel; sweep: Sweep; sweepMode: SweepMode; method: 'naive' | 'stable' }) {
+function LiveAnswerBody({
+  tl,
+  modelAt,
+  sweep,
+  sweepMode,
+  method,
+}: {
+  tl: Timeline;
+  modelAt: (t: number) => RaySphereModel;
+  sweep: Sweep;
+  sweepMode: SweepMode;
+  method: 'naive' | 'stable';
+}) {
   const t = useCoarsePosition(tl, RENDER_HZ);
   const model = modelAt(t);
   const at = sweepAt(sweep, t);
   const res = model.chosen;
   const naiveRow = model.rows.find((x) => x.method === 'naive');
   const discFromAbc = res ? res.b * res.b - 4 * res.a * res.c : null;
-  const robustDiffers = method === 'stable' && res !== null && naiveRow !== undefined && naiveRow.res.discriminant !== res.discriminant;
+  const robustDiffers =
+    method === 'stable' &&
+    res !== null &&
+    naiveRow !== undefined &&
+    naiveRow.res.discriminant !== res.discriminant;
   return (
     <>
       <div className="readouts">
@@ -335,16 +440,32 @@ function LiveAnswerBody({ tl, modelAt, sweep, sweepMode, method }: { tl: Timelin
         <Readout id="c" label="c = |o − C|² − r²" value={res?.c ?? null} digits={10} />
         <Readout
           id="discriminant"
-          label={method === 'naive' ? 'Δ = b² − 4ac (textbook: from a, b, c as shown)' : 'Δ, robust form 4a(r² − |ℓ|²)'}
+          label={
+            method === 'naive'
+              ? 'Δ = b² − 4ac (textbook: from a, b, c as shown)'
+              : 'Δ, robust form 4a(r² − |ℓ|²)'
+          }
           value={res?.discriminant ?? null}
           digits={10}
         />
-        {method === 'stable' ? <Readout id="disc-abc" label="b² − 4ac from the a, b, c shown (textbook)" value={discFromAbc} digits={10} /> : null}
+        {method === 'stable' ? (
+          <Readout
+            id="disc-abc"
+            label="b² − 4ac from the a, b, c shown (textbook)"
+            value={discFromAbc}
+            digits={10}
+          />
+        ) : null}
         <Readout id="t0" label="t₀" value={res?.t0 ?? null} digits={10} />
         <Readout id="t1" label="t₁" value={res?.t1 ?? null} digits={10} />
         <Readout id="t-hit" label="t-hit (nearest t ≥ 0)" value={res?.tHit ?? null} digits={10} />
         <Readout id="case" label="case" value={res?.case ?? null} />
-        <Readout id="sweep-x" label={sweepMode === 'offset' ? 'h / r (sweep)' : 'ψ / α (sweep)'} value={Number.isFinite(at.x) ? at.x : null} digits={6} />
+        <Readout
+          id="sweep-x"
+          label={sweepMode === 'offset' ? 'h / r (sweep)' : 'ψ / α (sweep)'}
+          value={Number.isFinite(at.x) ? at.x : null}
+          digits={6}
+        />
       </div>
       <p className="rs-small" data-testid="disc-method-note">
         {method === 'naive'
@@ -355,13 +476,15 @@ function LiveAnswerBody({ tl, modelAt, sweep, sweepMode, method }: { tl: Timelin
       </p>
       {res && model.reference && res.case !== model.reference.case ? (
         <Notice kind="warn" testId="method-wrong">
-          The {method === 'naive' ? 'textbook' : 'robust'} form says <strong>{res.case}</strong>, but the exact answer for these inputs (double-double reference) is{' '}
-          <strong>{model.reference.case}</strong>: rounding has changed the case. See the precision table under “Explore further”.
+          The {method === 'naive' ? 'textbook' : 'robust'} form says <strong>{res.case}</strong>, but the
+          exact answer for these inputs (double-double reference) is <strong>{model.reference.case}</strong>:
+          rounding has changed the case. See the precision table under “Explore further”.
         </Notice>
       ) : null}
       {res?.nearTangent && res.case !== 'tangent' ? (
         <p className="rs-small rs-near">
-          |Δ| is within this method’s rounding error of 0: the ray is tangent to within double precision, and whether it hits is decided by the last bits.
+          |Δ| is within this method’s rounding error of 0: the ray is tangent to within double precision, and
+          whether it hits is decided by the last bits.
         </p>
       ) : null}
     </>
@@ -374,7 +497,14 @@ function LiveCaseBanner({ tl, modelAt }: { tl: Timeline; modelAt: (t: number) =>
 }
 
 /** The 3D view at the coarse position (below the fold; see LiveAnswerBody). */
-function LiveView3D({ tl, modelAt, ...rest }: { tl: Timeline; modelAt: (t: number) => RaySphereModel } & Pick<View3DProps, 'height' | 'dark' | 'fitExtra'>) {
+function LiveView3D({
+  tl,
+  modelAt,
+  ...rest
+}: { tl: Timeline; modelAt: (t: number) => RaySphereModel } & Pick<
+  View3DProps,
+  'height' | 'dark' | 'fitExtra'
+>) {
   const m = modelAt(useCoarsePosition(tl, RENDER_HZ));
   const { o, d, c, r } = m.input;
   return <View3D o={o} d={d} c={c} r={r} res={m.chosen} distanceRatio={m.distanceRatio} {...rest} />;
@@ -410,10 +540,25 @@ function useThrottled<T>(value: T, ms: number): T {
 
 function samePreset(p: Preset, params: RaySphereParams): boolean {
   const eq = (x: readonly number[] | undefined, y: readonly number[]) => !x || x.every((v, i) => v === y[i]);
-  return eq(p.params.o, params.o) && eq(p.params.d, params.d) && eq(p.params.c, params.c) && (p.params.r === undefined || p.params.r === params.r);
+  return (
+    eq(p.params.o, params.o) &&
+    eq(p.params.d, params.d) &&
+    eq(p.params.c, params.c) &&
+    (p.params.r === undefined || p.params.r === params.r)
+  );
 }
 
-function VecField({ label, name, value, onChange }: { label: string; name: string; value: readonly number[]; onChange: (v: V3) => void }) {
+function VecField({
+  label,
+  name,
+  value,
+  onChange,
+}: {
+  label: string;
+  name: string;
+  value: readonly number[];
+  onChange: (v: V3) => void;
+}) {
   return (
     <fieldset className="rs-vec">
       <legend>{label}</legend>
@@ -421,13 +566,13 @@ function VecField({ label, name, value, onChange }: { label: string; name: strin
         <NumberField
           key={axis}
           label={axis}
-          value={value[i]!}
+          value={value[i]}
           min={-1e12}
           max={1e12}
           step={0.1}
           testId={`input-${name}-${axis}`}
           onChange={(x) => {
-            const v = [value[0]!, value[1]!, value[2]!] as V3;
+            const v = [value[0], value[1], value[2]] as V3;
             v[i] = x;
             onChange(v);
           }}
@@ -511,13 +656,25 @@ function SweepPlotsBlock({
   const tangentX = useMemo(() => series.tangents.map((tt) => sweepAt(sweep, tt).x), [series, sweep]);
   return (
     <>
-      <LivePlots tl={tl} modelAt={modelAt} sweep={sweep} series={series} tangentX={tangentX} xLabel={xLabel} method={method} />
+      <LivePlots
+        tl={tl}
+        modelAt={modelAt}
+        sweep={sweep}
+        series={series}
+        tangentX={tangentX}
+        xLabel={xLabel}
+        method={method}
+      />
       <p className="rs-small" data-testid="sweep-note">
-        Strip under the Δ plot: the {method === 'naive' ? 'textbook' : 'robust'} method’s case at each position (grey miss, green two hits, blue inside, red behind, gold
-        tangent). {series.tangents.length ? `Δ crosses 0 where the line touches the sphere (tangent, |${sweepMode === 'offset' ? 'h / r' : 'ψ / α'}| = 1).` : 'In this sweep the line never touches the sphere.'}{' '}
+        Strip under the Δ plot: the {method === 'naive' ? 'textbook' : 'robust'} method’s case at each
+        position (grey miss, green two hits, blue inside, red behind, gold tangent).{' '}
+        {series.tangents.length
+          ? `Δ crosses 0 where the line touches the sphere (tangent, |${sweepMode === 'offset' ? 'h / r' : 'ψ / α'}| = 1).`
+          : 'In this sweep the line never touches the sphere.'}{' '}
         {series.naiveSignWrong > 0 ? (
           <strong data-testid="sweep-naive-wrong" data-value={series.naiveSignWrong}>
-            The textbook Δ has the wrong sign (or is 0) at {series.naiveSignWrong} of {series.x.length} positions: rounding, not geometry.
+            The textbook Δ has the wrong sign (or is 0) at {series.naiveSignWrong} of {series.x.length}{' '}
+            positions: rounding, not geometry.
           </strong>
         ) : null}
       </p>
@@ -547,7 +704,9 @@ function LivePlots({
   method: 'naive' | 'stable';
 }) {
   const g = useRef<((res: RaySphereHit | null) => void) | null>(null);
-  const delta = useRef<((x: number, discStable: number | null, discNaive: number | null) => void) | null>(null);
+  const delta = useRef<((x: number, discStable: number | null, discNaive: number | null) => void) | null>(
+    null,
+  );
   const at = (t: number) => {
     const m = modelAt(t);
     return {
@@ -570,7 +729,16 @@ function LivePlots({
   return (
     <>
       <GSweepPlot res={first.res} window={series.gWindow} drawRef={g} />
-      <DeltaSweepPlot series={series} tangentX={tangentX} x={first.x} discStable={first.stable} discNaive={first.naive} xLabel={xLabel} method={method} drawRef={delta} />
+      <DeltaSweepPlot
+        series={series}
+        tangentX={tangentX}
+        x={first.x}
+        discStable={first.stable}
+        discNaive={first.naive}
+        xLabel={xLabel}
+        method={method}
+        drawRef={delta}
+      />
     </>
   );
 }
@@ -594,7 +762,6 @@ function tx(x: number | null, digits = 6): string {
   const [m, e] = x.toExponential(digits - 1).split('e');
   return `${Number(m)} \\times 10^{${Number(e)}}`;
 }
-
 
 /** Hit test for a root: a tick or a cross. */
 const yes = (b: boolean) => (b ? '\\;\\checkmark' : '\\;\\times');
@@ -620,7 +787,10 @@ const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySph
     res.t0 === null
       ? `\\text{(no roots to test)}`
       : `{t_0 = ${tx(res.t0, 6)} ${res.t0 >= 0 ? '\\ge 0' : '< 0'}${yes(res.t0 >= 0)}},\\allowbreak\\qquad {t_1 = ${tx(res.t1, 6)} ${res.t1! >= 0 ? '\\ge 0' : '< 0'}${yes(res.t1! >= 0)}}`;
-  const hit = res.tHit === null ? `\\text{no root } t \\ge 0 \\;\\Rightarrow\\; \\text{no hit}` : `t_{\\text{hit}} = \\min\\{\\, t_i : t_i \\ge 0 \\,\\} = ${tx(res.tHit, 8)}`;
+  const hit =
+    res.tHit === null
+      ? `\\text{no root } t \\ge 0 \\;\\Rightarrow\\; \\text{no hit}`
+      : `t_{\\text{hit}} = \\min\\{\\, t_i : t_i \\ge 0 \\,\\} = ${tx(res.tHit, 8)}`;
   const sec = secondaryFromHit(model.input, res, res.method);
   const tMin = tMinFor(r);
   return (
@@ -628,25 +798,42 @@ const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySph
       <ol className="rs-steps">
         <li data-testid="step-substitute">
           <p>
-            A point of the ray is p(t) = o + t d. It lies on the sphere when its distance to the centre C is r; square both sides and substitute the ray:
+            A point of the ray is p(t) = o + t d. It lies on the sphere when its distance to the centre C is
+            r; square both sides and substitute the ray:
           </p>
-          <MathTex display tex={`\\lVert \\mathbf p - \\mathbf C \\rVert^2 = r^2 \\quad\\Rightarrow\\quad \\lVert \\mathbf o + t\\,\\mathbf d - \\mathbf C \\rVert^2 = r^2`} />
+          <MathTex
+            display
+            tex={`\\lVert \\mathbf p - \\mathbf C \\rVert^2 = r^2 \\quad\\Rightarrow\\quad \\lVert \\mathbf o + t\\,\\mathbf d - \\mathbf C \\rVert^2 = r^2`}
+          />
         </li>
         <li data-testid="step-expand">
           <p>Write f = o − C and expand the squared length as a dot product with itself:</p>
-          <MathTex display tex={`(\\mathbf f + t\\,\\mathbf d)\\cdot(\\mathbf f + t\\,\\mathbf d) = (\\mathbf d\\cdot\\mathbf d)\\,t^2 + 2\\,(\\mathbf d\\cdot\\mathbf f)\\,t + \\mathbf f\\cdot\\mathbf f = r^2`} />
+          <MathTex
+            display
+            tex={`(\\mathbf f + t\\,\\mathbf d)\\cdot(\\mathbf f + t\\,\\mathbf d) = (\\mathbf d\\cdot\\mathbf d)\\,t^2 + 2\\,(\\mathbf d\\cdot\\mathbf f)\\,t + \\mathbf f\\cdot\\mathbf f = r^2`}
+          />
           <p>so t solves a quadratic:</p>
-          <MathTex display tex={`{a t^2 + b t + c = 0},\\allowbreak\\qquad {a = \\mathbf d\\cdot\\mathbf d},\\allowbreak\\quad {b = 2\\,\\mathbf d\\cdot(\\mathbf o - \\mathbf C)},\\allowbreak\\quad {c = \\lVert \\mathbf o - \\mathbf C\\rVert^2 - r^2}`} />
+          <MathTex
+            display
+            tex={`{a t^2 + b t + c = 0},\\allowbreak\\qquad {a = \\mathbf d\\cdot\\mathbf d},\\allowbreak\\quad {b = 2\\,\\mathbf d\\cdot(\\mathbf o - \\mathbf C)},\\allowbreak\\quad {c = \\lVert \\mathbf o - \\mathbf C\\rVert^2 - r^2}`}
+          />
         </li>
         <li data-testid="step-numbers">
           <p>
-            With o = <MathTex tex={v(o)} />, d = <MathTex tex={v(d)} />, C = <MathTex tex={v(c)} />, r = <MathTex tex={tx(r, 6)} />:
+            With o = <MathTex tex={v(o)} />, d = <MathTex tex={v(d)} />, C = <MathTex tex={v(c)} />, r ={' '}
+            <MathTex tex={tx(r, 6)} />:
           </p>
-          <MathTex display tex={`{a = ${tx(res.a)}},\\allowbreak\\qquad {b = ${tx(res.b)}},\\allowbreak\\qquad {c = ${tx(res.c)}}`} />
+          <MathTex
+            display
+            tex={`{a = ${tx(res.a)}},\\allowbreak\\qquad {b = ${tx(res.b)}},\\allowbreak\\qquad {c = ${tx(res.c)}}`}
+          />
         </li>
         <li data-testid="step-roots">
           <p>The quadratic formula gives the roots, with the discriminant Δ:</p>
-          <MathTex display tex={`{t = \\frac{-b \\pm \\sqrt{\\Delta}}{2a}},\\allowbreak\\qquad \\Delta = b^2 - 4ac = (${tx(res.b)})^2 - 4\\,(${tx(res.a)})(${tx(res.c)}) = ${tx(textbookDisc)}`} />
+          <MathTex
+            display
+            tex={`{t = \\frac{-b \\pm \\sqrt{\\Delta}}{2a}},\\allowbreak\\qquad \\Delta = b^2 - 4ac = (${tx(res.b)})^2 - 4\\,(${tx(res.a)})(${tx(res.c)}) = ${tx(textbookDisc)}`}
+          />
           {robust ? (
             <p className="rs-small" data-testid="step-robust-note">
               {textbookDisc === res.discriminant
@@ -662,33 +849,37 @@ const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySph
           </p>
           <ul>
             <li>
-              <strong>Δ ≥ 0</strong>: the quadratic has real roots, i.e. the <em>line</em> meets the sphere (Δ = 0: it touches it, a double root).{' '}
-              <MathTex tex={condDisc} />
+              <strong>Δ ≥ 0</strong>: the quadratic has real roots, i.e. the <em>line</em> meets the sphere (Δ
+              = 0: it touches it, a double root). <MathTex tex={condDisc} />
             </li>
             <li>
-              <strong>t ≥ 0</strong>: a ray only goes forward from its origin, so a root with t &lt; 0 is a meeting point <em>behind</em> the origin and does not count. <MathTex tex={condT} />
+              <strong>t ≥ 0</strong>: a ray only goes forward from its origin, so a root with t &lt; 0 is a
+              meeting point <em>behind</em> the origin and does not count. <MathTex tex={condT} />
             </li>
           </ul>
         </li>
         <li data-testid="step-hit">
           <p>
-            The hit is the <strong>nearest non-negative root</strong>: t₀ if t₀ ≥ 0 (the ray enters there), otherwise t₁ if t₁ ≥ 0 (the origin is inside the sphere: the ray
-            leaves at t₁), otherwise none.
+            The hit is the <strong>nearest non-negative root</strong>: t₀ if t₀ ≥ 0 (the ray enters there),
+            otherwise t₁ if t₁ ≥ 0 (the origin is inside the sphere: the ray leaves at t₁), otherwise none.
           </p>
           <MathTex display tex={hit} />
         </li>
         <li data-testid="step-tmin">
           <p>
-            <strong>Why renderers test t &gt; t_min (a small positive number) instead of t ≥ 0.</strong> A shadow or reflection ray starts at a hit point on the surface. That
-            point is computed in floating point, so it lies a rounding error inside or outside the sphere, and the quadratic then has a root t ≈ 0 at the starting point itself.
-            With t ≥ 0 that root can count as a hit: the surface shadows itself (“shadow acne”, a speckle of dark dots). Testing t &gt; t_min, here t_min = 10⁻⁴ r ={' '}
+            <strong>Why renderers test t &gt; t_min (a small positive number) instead of t ≥ 0.</strong> A
+            shadow or reflection ray starts at a hit point on the surface. That point is computed in floating
+            point, so it lies a rounding error inside or outside the sphere, and the quadratic then has a root
+            t ≈ 0 at the starting point itself. With t ≥ 0 that root can count as a hit: the surface shadows
+            itself (“shadow acne”, a speckle of dark dots). Testing t &gt; t_min, here t_min = 10⁻⁴ r ={' '}
             {fmt(tMin)}, skips it.
           </p>
           {sec ? (
             <p data-testid="tmin-example">
-              Here: the hit point p = o + t_hit d = <MathTex tex={v(sec.p)} /> lies |p − C| − r = {fmt(sec.offSurface)} off the surface. A ray leaving it along the outward
-              normal (towards a light straight above) has roots t = {fmt(sec.res.t0)} and {fmt(sec.res.t1)}: the first is the far side of the sphere behind it, the second is{' '}
-              <em>p itself</em>.{' '}
+              Here: the hit point p = o + t_hit d = <MathTex tex={v(sec.p)} /> lies |p − C| − r ={' '}
+              {fmt(sec.offSurface)} off the surface. A ray leaving it along the outward normal (towards a
+              light straight above) has roots t = {fmt(sec.res.t0)} and {fmt(sec.res.t1)}: the first is the
+              far side of the sphere behind it, the second is <em>p itself</em>.{' '}
               {sec.selfHit !== null
                 ? `With t ≥ 0 it counts as a hit at t = ${fmt(sec.selfHit)}: the point would be in its own shadow. With t > t_min: ${sec.hitWithTMin === null ? 'no hit, the point is lit' : `a hit at ${fmt(sec.hitWithTMin)}`}.`
                 : `Here rounding happened to put p just outside, so t ≥ 0 already rejects it; on other points it does not.`}
@@ -710,7 +901,19 @@ const SURVEY_CHUNK = 200;
  * t > t_min. The rays are cast in short tasks after the derivation has mounted (a few ms of cold
  * code in one piece otherwise: issue 15); the paragraph shows the counts once all are cast.
  */
-const TMinSurvey = memo(function TMinSurvey({ cx, cy, cz, r, method }: { cx: number; cy: number; cz: number; r: number; method: RaySphereHit['method'] }) {
+const TMinSurvey = memo(function TMinSurvey({
+  cx,
+  cy,
+  cz,
+  r,
+  method,
+}: {
+  cx: number;
+  cy: number;
+  cz: number;
+  r: number;
+  method: RaySphereHit['method'];
+}) {
   const key = `${cx},${cy},${cz},${r},${method}`;
   const [done, setDone] = useState<{ key: string; survey: SurveyCounts } | null>(null);
   useEffect(() => {
@@ -738,9 +941,15 @@ const TMinSurvey = memo(function TMinSurvey({ cx, cy, cz, r, method }: { cx: num
     );
   }
   return (
-    <p data-testid="tmin-survey" data-zero={survey.withZero} data-tmin={survey.withTMin} data-count={survey.count}>
-      Over {survey.count} points spread evenly over this sphere (each computed as C + r n in doubles), a ray leaving along the normal hits its own surface with t ≥ 0 at{' '}
-      <strong>{survey.withZero}</strong> points, and with t &gt; t_min at <strong>{survey.withTMin}</strong>.
+    <p
+      data-testid="tmin-survey"
+      data-zero={survey.withZero}
+      data-tmin={survey.withTMin}
+      data-count={survey.count}
+    >
+      Over {survey.count} points spread evenly over this sphere (each computed as C + r n in doubles), a ray
+      leaving along the normal hits its own surface with t ≥ 0 at <strong>{survey.withZero}</strong> points,
+      and with t &gt; t_min at <strong>{survey.withTMin}</strong>.
     </p>
   );
 });
@@ -756,7 +965,19 @@ function later(fn: () => void): () => void {
   };
 }
 
-const SUP: Record<string, string> = { '-': '⁻', '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶', '7': '⁷', '8': '⁸', '9': '⁹' };
+const SUP: Record<string, string> = {
+  '-': '⁻',
+  '0': '⁰',
+  '1': '¹',
+  '2': '²',
+  '3': '³',
+  '4': '⁴',
+  '5': '⁵',
+  '6': '⁶',
+  '7': '⁷',
+  '8': '⁸',
+  '9': '⁹',
+};
 
 /** A number for text: 6 significant digits, m × 10ⁿ for very large or small, a real minus sign. */
 function fmt(x: number | null): string {
@@ -773,13 +994,21 @@ function fmt(x: number | null): string {
   return out.replace('-', '−');
 }
 
-
 function RobustForm() {
   return (
     <div className="rs-derivation">
-      <p>The robust form (Ray Tracing Gems, ch. 7) computes the same Δ without subtracting two huge numbers, and picks the root formula that never cancels:</p>
-      <MathTex display tex={`{\\Delta = 4a\\left(r^2 - \\lVert \\boldsymbol\\ell \\rVert^2\\right)},\\allowbreak\\qquad {\\boldsymbol\\ell = \\mathbf f - \\tfrac{\\mathbf f\\cdot\\mathbf d}{a}\\,\\mathbf d}\\allowbreak\\quad(\\text{from C to the closest point of the line})`} />
-      <MathTex display tex={`{q = -\\left(\\tfrac b2 + \\operatorname{sign}(b)\\,\\tfrac{\\sqrt{\\Delta}}{2}\\right)},\\allowbreak\\qquad {t = \\frac{c}{q},\\; \\frac{q}{a}}`} />
+      <p>
+        The robust form (Ray Tracing Gems, ch. 7) computes the same Δ without subtracting two huge numbers,
+        and picks the root formula that never cancels:
+      </p>
+      <MathTex
+        display
+        tex={`{\\Delta = 4a\\left(r^2 - \\lVert \\boldsymbol\\ell \\rVert^2\\right)},\\allowbreak\\qquad {\\boldsymbol\\ell = \\mathbf f - \\tfrac{\\mathbf f\\cdot\\mathbf d}{a}\\,\\mathbf d}\\allowbreak\\quad(\\text{from C to the closest point of the line})`}
+      />
+      <MathTex
+        display
+        tex={`{q = -\\left(\\tfrac b2 + \\operatorname{sign}(b)\\,\\tfrac{\\sqrt{\\Delta}}{2}\\right)},\\allowbreak\\qquad {t = \\frac{c}{q},\\; \\frac{q}{a}}`}
+      />
     </div>
   );
 }
@@ -789,16 +1018,18 @@ function PrecisionExplainer() {
     <div className="rs-small">
       <RobustForm />
       <p>
-        The reference solves the same quadratic with the inputs taken as exact doubles, in double-double arithmetic (about 106 bits: Dekker’s TwoProduct and Knuth’s TwoSum),
-        using Δ/4 = a r² − |d × f|² so that only the genuine cancellation is left. It is checked against 400-digit mathjs BigNumber arithmetic in the tests.
+        The reference solves the same quadratic with the inputs taken as exact doubles, in double-double
+        arithmetic (about 106 bits: Dekker’s TwoProduct and Knuth’s TwoSum), using Δ/4 = a r² − |d × f|² so
+        that only the genuine cancellation is left. It is checked against 400-digit mathjs BigNumber
+        arithmetic in the tests.
       </p>
       <p>
-        Why the textbook form fails: when the sphere is far (|f| ≫ r), b² and 4ac are both about 4a|f|², and their difference, about 4a r², is what is left after
-        cancelling them. Each carries a rounding error of about u·4a|f|² (u = 2⁻⁵³), so Δ’s relative error is about u·(|f|/r)²: a millionth at |f| ≈ 10⁵ r, everything at
-        |f| ≈ 10⁸ r. The robust form first finds the point of the line closest to the centre, f − (f·d / a) d, whose length is comparable to r, so
-        nothing large is subtracted.
+        Why the textbook form fails: when the sphere is far (|f| ≫ r), b² and 4ac are both about 4a|f|², and
+        their difference, about 4a r², is what is left after cancelling them. Each carries a rounding error of
+        about u·4a|f|² (u = 2⁻⁵³), so Δ’s relative error is about u·(|f|/r)²: a millionth at |f| ≈ 10⁵ r,
+        everything at |f| ≈ 10⁸ r. The robust form first finds the point of the line closest to the centre, f
+        − (f·d / a) d, whose length is comparable to r, so nothing large is subtracted.
       </p>
     </div>
   );
 }
-

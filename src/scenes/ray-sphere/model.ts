@@ -24,9 +24,12 @@ export type V3 = [number, number, number];
 export const CASE_TEXT: Record<RaySphereCase, string> = {
   miss: 'Δ < 0: the quadratic has no real root, so the line never touches the sphere.',
   tangent: 'Δ = 0: one double root; the ray just touches the sphere at t = −b / 2a.',
-  'two-hits': 'Δ > 0 and both roots ≥ 0: the ray enters at t₀ and leaves at t₁. The hit is the nearest root ≥ 0, t₀.',
-  inside: 'Δ > 0 with t₀ < 0 ≤ t₁: the origin is inside the sphere. t₀ lies behind the origin, so the hit is t₁ (the exit).',
-  behind: 'Δ ≥ 0 but every root is < 0: the line meets the sphere behind the origin. A ray only goes forward (t ≥ 0), so there is no hit.',
+  'two-hits':
+    'Δ > 0 and both roots ≥ 0: the ray enters at t₀ and leaves at t₁. The hit is the nearest root ≥ 0, t₀.',
+  inside:
+    'Δ > 0 with t₀ < 0 ≤ t₁: the origin is inside the sphere. t₀ lies behind the origin, so the hit is t₁ (the exit).',
+  behind:
+    'Δ ≥ 0 but every root is < 0: the line meets the sphere behind the origin. A ray only goes forward (t ≥ 0), so there is no hit.',
 };
 
 export interface InputCheck {
@@ -49,9 +52,9 @@ const DEFAULT_D = schema.d.default as unknown as V3;
 export function checkInputs(p: Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r'>): InputCheck {
   const problems: string[] = [];
   const fin = (v: readonly number[], name: string, fallback: readonly number[]): V3 => {
-    if (v.length === 3 && v.every(Number.isFinite)) return [v[0]!, v[1]!, v[2]!];
+    if (v.length === 3 && v.every(Number.isFinite)) return [v[0], v[1], v[2]];
     problems.push(`${name} has a value that is not a finite number; using ${fallback.join(', ')}.`);
-    return [fallback[0]!, fallback[1]!, fallback[2]!];
+    return [fallback[0], fallback[1], fallback[2]];
   };
   const o = fin(p.o, 'The origin o', schema.o.default);
   let d = fin(p.d, 'The direction d', schema.d.default);
@@ -137,7 +140,10 @@ export function computeModel(p: Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r' | 'm
 }
 
 /** g(t) = a t² + b t + c sampled for the plot, over a window that shows the vertex and the roots. */
-export function gCurve(res: RaySphereHit, samples = 161): { t: number[]; g: number[]; tMin: number; tMax: number } {
+export function gCurve(
+  res: RaySphereHit,
+  samples = 161,
+): { t: number[]; g: number[]; tMin: number; tMax: number } {
   const { a, b } = res;
   const tv = -b / (2 * a);
   let half: number;
@@ -172,11 +178,15 @@ export interface Frame2D {
   e2: V3;
 }
 
-const dot = (x: readonly number[], y: readonly number[]) => x[0]! * y[0]! + x[1]! * y[1]! + x[2]! * y[2]!;
-const sub = (x: readonly number[], y: readonly number[]): V3 => [x[0]! - y[0]!, x[1]! - y[1]!, x[2]! - y[2]!];
-const scale = (x: readonly number[], s: number): V3 => [x[0]! * s, x[1]! * s, x[2]! * s];
-const norm = (x: readonly number[]) => Math.hypot(x[0]!, x[1]!, x[2]!);
-const cross = (x: readonly number[], y: readonly number[]): V3 => [x[1]! * y[2]! - x[2]! * y[1]!, x[2]! * y[0]! - x[0]! * y[2]!, x[0]! * y[1]! - x[1]! * y[0]!];
+const dot = (x: readonly number[], y: readonly number[]) => x[0] * y[0] + x[1] * y[1] + x[2] * y[2];
+const sub = (x: readonly number[], y: readonly number[]): V3 => [x[0] - y[0], x[1] - y[1], x[2] - y[2]];
+const scale = (x: readonly number[], s: number): V3 => [x[0] * s, x[1] * s, x[2] * s];
+const norm = (x: readonly number[]) => Math.hypot(x[0], x[1], x[2]);
+const cross = (x: readonly number[], y: readonly number[]): V3 => [
+  x[1] * y[2] - x[2] * y[1],
+  x[2] * y[0] - x[0] * y[2],
+  x[0] * y[1] - x[1] * y[0],
+];
 
 /**
  * The canonical frame: e1 along d, e2 from the centre towards the ray's line (the ray then runs
@@ -213,7 +223,11 @@ export function toFrame(fr: Frame2D, q: Vec3): [number, number] {
 
 /** Frame → world coordinates. */
 export function fromFrame(fr: Frame2D, x: number, y: number): V3 {
-  return [fr.p[0] + x * fr.e1[0] + y * fr.e2[0], fr.p[1] + x * fr.e1[1] + y * fr.e2[1], fr.p[2] + x * fr.e1[2] + y * fr.e2[2]];
+  return [
+    fr.p[0] + x * fr.e1[0] + y * fr.e2[0],
+    fr.p[1] + x * fr.e1[1] + y * fr.e2[1],
+    fr.p[2] + x * fr.e1[2] + y * fr.e2[2],
+  ];
 }
 
 /** In-plane direction → world direction. */
@@ -246,11 +260,19 @@ export interface DistantImage {
 }
 
 /** The camera and sphere of the distant-sphere image: the sphere's centre is `dist` radii away. */
-export function distantSetup(dist: number): { eye: V3; centre: V3; r: number; forward: V3; right: V3; up: V3; halfWidth: number } {
+export function distantSetup(dist: number): {
+  eye: V3;
+  centre: V3;
+  r: number;
+  forward: V3;
+  right: V3;
+  up: V3;
+  halfWidth: number;
+} {
   const eye: V3 = [0.1, -0.2, 0.05];
   const dir = [1, 0.3, 0.2];
-  const n = Math.hypot(dir[0]!, dir[1]!, dir[2]!);
-  const forward: V3 = [dir[0]! / n, dir[1]! / n, dir[2]! / n];
+  const n = Math.hypot(dir[0], dir[1], dir[2]);
+  const forward: V3 = [dir[0] / n, dir[1] / n, dir[2] / n];
   const centre: V3 = [eye[0] + dist * forward[0], eye[1] + dist * forward[1], eye[2] + dist * forward[2]];
   const rightRaw = cross(forward, [0, 0, 1]);
   const right = scale(rightRaw, 1 / norm(rightRaw));
@@ -267,7 +289,12 @@ let scratchRays: Float64Array | null = null;
  * Render the distant sphere with both methods into fresh t buffers. `now` is a clock (injected so
  * the model stays pure of the DOM; pass performance.now in the view).
  */
-export function renderDistant(dist: number, width: number, height: number, now: () => number = () => 0): DistantImage {
+export function renderDistant(
+  dist: number,
+  width: number,
+  height: number,
+  now: () => number = () => 0,
+): DistantImage {
   const n = width * height;
   if (!scratchRays || scratchRays.length < n * RAY_STRIDE) scratchRays = new Float64Array(n * RAY_STRIDE);
   const s = distantSetup(dist);
@@ -275,8 +302,26 @@ export function renderDistant(dist: number, width: number, height: number, now: 
   const stable = new Float64Array(n);
   const t0 = now();
   fillPinholeRays(scratchRays, width, height, s.eye, s.forward, s.right, s.up, s.halfWidth);
-  const naiveHits = intersectRaySphereBatch(scratchRays, n, s.centre[0], s.centre[1], s.centre[2], s.r, 'naive', naive);
-  const stableHits = intersectRaySphereBatch(scratchRays, n, s.centre[0], s.centre[1], s.centre[2], s.r, 'stable', stable);
+  const naiveHits = intersectRaySphereBatch(
+    scratchRays,
+    n,
+    s.centre[0],
+    s.centre[1],
+    s.centre[2],
+    s.r,
+    'naive',
+    naive,
+  );
+  const stableHits = intersectRaySphereBatch(
+    scratchRays,
+    n,
+    s.centre[0],
+    s.centre[1],
+    s.centre[2],
+    s.r,
+    'stable',
+    stable,
+  );
   const ms = now() - t0;
   let disagree = 0;
   for (let i = 0; i < n; i++) if ((naive[i] === NO_HIT) !== (stable[i] === NO_HIT)) disagree++;
@@ -288,11 +333,19 @@ export function renderDistant(dist: number, width: number, height: number, now: 
  * from the depth offset relative to the nearest hit (front of the sphere brighter), misses the
  * background; `hole` pixels (hit by `other` but not by this method) are marked in `holeRGB`.
  */
-export function shadeImage(t: Float64Array, other: Float64Array | null, r: number, out: Uint8ClampedArray, bg: V3, fg: V3, holeRGB: V3): void {
+export function shadeImage(
+  t: Float64Array,
+  other: Float64Array | null,
+  r: number,
+  out: Uint8ClampedArray,
+  bg: V3,
+  fg: V3,
+  holeRGB: V3,
+): void {
   let tMin = Infinity;
-  for (let i = 0; i < t.length; i++) if (t[i]! < tMin) tMin = t[i]!;
+  for (let i = 0; i < t.length; i++) if (t[i] < tMin) tMin = t[i];
   for (let i = 0, j = 0; i < t.length; i++, j += 4) {
-    const ti = t[i]!;
+    const ti = t[i];
     let col: V3;
     if (ti === NO_HIT) col = other && other[i] !== NO_HIT ? holeRGB : bg;
     else {
@@ -328,7 +381,7 @@ export const ERROR_FLOOR = 2 ** -53;
 function median(xs: number[]): number {
   const s = [...xs].sort((x, y) => x - y);
   const m = s.length >> 1;
-  return s.length % 2 ? s[m]! : 0.5 * (s[m - 1]! + s[m]!);
+  return s.length % 2 ? s[m] : 0.5 * (s[m - 1] + s[m]);
 }
 
 /**
@@ -430,7 +483,18 @@ export function makeSweep(input: InputCheck, mode: SweepMode, extent: number): S
   const alpha = dist > r ? Math.asin(r / dist) : Math.PI / 2;
   // direction from o to C in the (e1, e2) plane: −f = −(f·e1) e1 − h0 e2
   const omega = Math.atan2(-h0, -dot(f, e1));
-  return { mode, extent: Number.isFinite(extent) && extent > 0 ? extent : 2.5, base: input, e1, e2, h0, dl: norm(d), dist, alpha, omega };
+  return {
+    mode,
+    extent: Number.isFinite(extent) && extent > 0 ? extent : 2.5,
+    base: input,
+    e1,
+    e2,
+    h0,
+    dl: norm(d),
+    dist,
+    alpha,
+    omega,
+  };
 }
 
 export interface SweepState {
@@ -451,16 +515,31 @@ export function sweepAt(sw: Sweep, t: number): SweepState {
   const { o, d, r } = sw.base;
   if (u === 0) {
     // exactly the typed configuration (no rounding from adding zero offsets)
-    return { t, o: [o[0], o[1], o[2]], d: [d[0], d[1], d[2]], x: sw.mode === 'offset' ? sw.h0 / r : psi(sw, 0) };
+    return {
+      t,
+      o: [o[0], o[1], o[2]],
+      d: [d[0], d[1], d[2]],
+      x: sw.mode === 'offset' ? sw.h0 / r : psi(sw, 0),
+    };
   }
   if (sw.mode === 'offset') {
     const s = u * sw.extent * r;
-    return { t, o: [o[0] + s * sw.e2[0], o[1] + s * sw.e2[1], o[2] + s * sw.e2[2]], d: [d[0], d[1], d[2]], x: (sw.h0 + s) / r };
+    return {
+      t,
+      o: [o[0] + s * sw.e2[0], o[1] + s * sw.e2[1], o[2] + s * sw.e2[2]],
+      d: [d[0], d[1], d[2]],
+      x: (sw.h0 + s) / r,
+    };
   }
   const th = u * sw.extent * sw.alpha;
   const cs = Math.cos(th) * sw.dl;
   const sn = Math.sin(th) * sw.dl;
-  return { t, o: [o[0], o[1], o[2]], d: [cs * sw.e1[0] + sn * sw.e2[0], cs * sw.e1[1] + sn * sw.e2[1], cs * sw.e1[2] + sn * sw.e2[2]], x: psi(sw, th) };
+  return {
+    t,
+    o: [o[0], o[1], o[2]],
+    d: [cs * sw.e1[0] + sn * sw.e2[0], cs * sw.e1[1] + sn * sw.e2[1], cs * sw.e1[2] + sn * sw.e2[2]],
+    x: psi(sw, th),
+  };
 }
 
 /** Angle between the direction at in-plane angle θ and the direction to C, in angular radii, in (−π/α, π/α]. */
@@ -502,7 +581,16 @@ export interface SweepSeries {
  * window. Pure; t-independent (memoise on the parameters).
  */
 export function sweepSeries(p: Pick<RaySphereParams, 'method'>, sw: Sweep, n = 240): SweepSeries {
-  const out: SweepSeries = { t: [], x: [], discNaive: [], discStable: [], cases: [], tangents: [], naiveSignWrong: 0, gWindow: { tMin: 0, tMax: 1, gMin: -1, gMax: 1, shift: 0 } };
+  const out: SweepSeries = {
+    t: [],
+    x: [],
+    discNaive: [],
+    discStable: [],
+    cases: [],
+    tangents: [],
+    naiveSignWrong: 0,
+    gWindow: { tMin: 0, tMax: 1, gMin: -1, gMax: 1, shift: 0 },
+  };
   const { c, r } = sw.base;
   const method = p.method === 'naive' ? 'naive' : 'stable';
   let lo = Infinity;
@@ -538,16 +626,16 @@ export function sweepSeries(p: Pick<RaySphereParams, 'method'>, sw: Sweep, n = 2
     return res.ok ? Math.sign(res.discriminant) : 0;
   };
   for (let i = 1; i < out.t.length; i++) {
-    const s0 = Math.sign(out.discStable[i - 1]!);
-    const s1 = Math.sign(out.discStable[i]!);
+    const s0 = Math.sign(out.discStable[i - 1]);
+    const s1 = Math.sign(out.discStable[i]);
     if (s0 === s1) continue;
     if (s1 === 0) {
-      out.tangents.push(out.t[i]!);
+      out.tangents.push(out.t[i]);
       continue;
     }
     if (s0 === 0) continue;
-    let a0 = out.t[i - 1]!;
-    let a1 = out.t[i]!;
+    let a0 = out.t[i - 1];
+    let a1 = out.t[i];
     for (let k = 0; k < 60 && a1 - a0 > 1e-15; k++) {
       const m = 0.5 * (a0 + a1);
       const sm = sign(m);
@@ -581,8 +669,8 @@ export function sweepSeries(p: Pick<RaySphereParams, 'method'>, sw: Sweep, n = 2
   let gMin = Infinity;
   let gMax = -Infinity;
   for (let i = 0; i < tvs.length; i++) {
-    const tv = tvs[i]!;
-    const k = discs[i]! / (4 * a);
+    const tv = tvs[i];
+    const k = discs[i] / (4 * a);
     const far = Math.max((tMin - tv) ** 2, (tMax - tv) ** 2);
     gMin = Math.min(gMin, -k);
     gMax = Math.max(gMax, a * far - k);
@@ -628,11 +716,22 @@ export function secondaryRay(q: V3, c: V3, r: number, method: RaySphereMethod): 
   const tMin = tMinFor(r);
   const roots = res.t0 === null ? [] : [res.t0, res.t1!];
   const after = roots.filter((t) => t > tMin);
-  return { p: q, offSurface: len - r, n, res, selfHit: res.tHit, hitWithTMin: after.length ? Math.min(...after) : null };
+  return {
+    p: q,
+    offSurface: len - r,
+    n,
+    res,
+    selfHit: res.tHit,
+    hitWithTMin: after.length ? Math.min(...after) : null,
+  };
 }
 
 /** The secondary ray from the current ray's hit point p = o + t_hit d, or null without a hit. */
-export function secondaryFromHit(input: InputCheck, hit: RaySphereHit | null, method: RaySphereMethod): SecondaryRay | null {
+export function secondaryFromHit(
+  input: InputCheck,
+  hit: RaySphereHit | null,
+  method: RaySphereMethod,
+): SecondaryRay | null {
   if (!hit || hit.tHit === null) return null;
   const { o, d, c, r } = input;
   const t = hit.tHit;
@@ -644,7 +743,12 @@ export function secondaryFromHit(input: InputCheck, hit: RaySphereHit | null, me
  * point computed in doubles as C + r n: how many see their own surface with t ≥ 0, and with
  * t > t_min. Deterministic.
  */
-export function selfIntersectionSurvey(c: V3, r: number, method: RaySphereMethod, count = 1000): SurveyCounts {
+export function selfIntersectionSurvey(
+  c: V3,
+  r: number,
+  method: RaySphereMethod,
+  count = 1000,
+): SurveyCounts {
   return selfIntersectionSurveyRange(c, r, method, count, 0, count);
 }
 
@@ -660,7 +764,14 @@ export interface SurveyCounts {
  * The survey's points k0 … k1 − 1 of `count` only (the counts of consecutive ranges add up to the
  * whole survey's): lets a page cast the rays in short tasks.
  */
-export function selfIntersectionSurveyRange(c: V3, r: number, method: RaySphereMethod, count: number, k0: number, k1: number): SurveyCounts {
+export function selfIntersectionSurveyRange(
+  c: V3,
+  r: number,
+  method: RaySphereMethod,
+  count: number,
+  k0: number,
+  k1: number,
+): SurveyCounts {
   const golden = Math.PI * (3 - Math.sqrt(5));
   let withZero = 0;
   let withTMin = 0;

@@ -17,9 +17,27 @@ export const schema = {
   d: { kind: 'vec3', default: [1, 0.4, -0.15], min: -BIG, max: BIG, label: 'ray direction d' },
   c: { kind: 'vec3', default: [0, 0, 0], min: -BIG, max: BIG, label: 'sphere centre C' },
   r: { kind: 'number', default: 1, min: -BIG, max: BIG, label: 'sphere radius r' },
-  method: { kind: 'enum', default: 'stable', values: ['stable', 'naive'], aliases: { robust: 'stable', textbook: 'naive' }, label: 'method' },
-  sweep: { kind: 'enum', default: 'offset', values: ['offset', 'rotate'], aliases: { shift: 'offset', move: 'offset', turn: 'rotate', rotation: 'rotate' }, label: 'sweep mode' },
-  extent: { kind: 'number', default: 2.5, min: 0.05, max: 1000, label: 'sweep extent (radii, or angular radii when rotating)' },
+  method: {
+    kind: 'enum',
+    default: 'stable',
+    values: ['stable', 'naive'],
+    aliases: { robust: 'stable', textbook: 'naive' },
+    label: 'method',
+  },
+  sweep: {
+    kind: 'enum',
+    default: 'offset',
+    values: ['offset', 'rotate'],
+    aliases: { shift: 'offset', move: 'offset', turn: 'rotate', rotation: 'rotate' },
+    label: 'sweep mode',
+  },
+  extent: {
+    kind: 'number',
+    default: 2.5,
+    min: 0.05,
+    max: 1000,
+    label: 'sweep extent (radii, or angular radii when rotating)',
+  },
   ...timelineParams({ max: 1, default: 0.5 }),
 } as const satisfies ParamSchema;
 
@@ -36,11 +54,36 @@ export interface Preset {
 
 /** One preset per case (exam Q5). Exact binary values so the tangent one is exactly tangent. */
 export const CASE_PRESETS: readonly Preset[] = [
-  { id: 'two-hits', label: 'Two hits', what: 'The ray enters and leaves: two roots t₀ < t₁, both ≥ 0; the hit is t₀.', params: { o: [-3, 0.3, 0.2], d: [1, 0, 0], c: [0, 0, 0], r: 1 } },
-  { id: 'miss', label: 'Miss', what: 'The line passes the sphere: Δ < 0, no real root.', params: { o: [-3, 1.5, 0.2], d: [1, 0, 0], c: [0, 0, 0], r: 1 } },
-  { id: 'tangent', label: 'Tangent', what: 'The line touches the sphere: Δ = 0 exactly, one double root.', params: { o: [-5, 1, 0], d: [1, 0, 0], c: [0, 0, 0], r: 1 } },
-  { id: 'inside', label: 'Origin inside', what: 'One root behind (t₀ < 0), one ahead: the hit is t₁, the exit point.', params: { o: [0.2, -0.3, 0.1], d: [1, 0.5, 0], c: [0, 0, 0], r: 1 } },
-  { id: 'behind', label: 'Sphere behind', what: 'Δ > 0 but both roots are negative: the line meets the sphere behind the origin, so no hit.', params: { o: [3, 0.3, 0.2], d: [1, 0, 0], c: [0, 0, 0], r: 1 } },
+  {
+    id: 'two-hits',
+    label: 'Two hits',
+    what: 'The ray enters and leaves: two roots t₀ < t₁, both ≥ 0; the hit is t₀.',
+    params: { o: [-3, 0.3, 0.2], d: [1, 0, 0], c: [0, 0, 0], r: 1 },
+  },
+  {
+    id: 'miss',
+    label: 'Miss',
+    what: 'The line passes the sphere: Δ < 0, no real root.',
+    params: { o: [-3, 1.5, 0.2], d: [1, 0, 0], c: [0, 0, 0], r: 1 },
+  },
+  {
+    id: 'tangent',
+    label: 'Tangent',
+    what: 'The line touches the sphere: Δ = 0 exactly, one double root.',
+    params: { o: [-5, 1, 0], d: [1, 0, 0], c: [0, 0, 0], r: 1 },
+  },
+  {
+    id: 'inside',
+    label: 'Origin inside',
+    what: 'One root behind (t₀ < 0), one ahead: the hit is t₁, the exit point.',
+    params: { o: [0.2, -0.3, 0.1], d: [1, 0.5, 0], c: [0, 0, 0], r: 1 },
+  },
+  {
+    id: 'behind',
+    label: 'Sphere behind',
+    what: 'Δ > 0 but both roots are negative: the line meets the sphere behind the origin, so no hit.',
+    params: { o: [3, 0.3, 0.2], d: [1, 0, 0], c: [0, 0, 0], r: 1 },
+  },
 ];
 
 /**

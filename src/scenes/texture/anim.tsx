@@ -111,7 +111,14 @@ export interface AnimContext {
   worked: (t: number) => Frame;
 }
 
-export function animContext(store: TimelineStore, grid: TextureGrid, opts: LookupOptions, src: GridSource, path: QueryPath, committedPath: QueryPath): AnimContext {
+export function animContext(
+  store: TimelineStore,
+  grid: TextureGrid,
+  opts: LookupOptions,
+  src: GridSource,
+  path: QueryPath,
+  committedPath: QueryPath,
+): AnimContext {
   let ft = NaN;
   let fv: { frame: Frame; dq: Lookup } | null = null;
   let wt = NaN;
@@ -200,7 +207,16 @@ export function TimelineDriver({
   visibleRef: RefObject<Element | null>;
   children?: ReactNode;
 }) {
-  const tl = useTimeline({ t, play, setParams, max: 1, duration: DURATION, stepSize: STEP, visibleRef, renderHz: RENDER_HZ });
+  const tl = useTimeline({
+    t,
+    play,
+    setParams,
+    max: 1,
+    duration: DURATION,
+    stepSize: STEP,
+    visibleRef,
+    renderHz: RENDER_HZ,
+  });
   useLayoutEffect(() => store.publish(tl), [store, tl]);
   useTimelineFrame(tl, store.frame);
   return (

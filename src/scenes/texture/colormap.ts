@@ -38,7 +38,13 @@ const LAST = STOPS.length - 2;
  * and coloured as {@link colorInto} does, written to img from byte 0. One plain loop over typed
  * arrays with the same arithmetic (so the same bytes), for whole images.
  */
-export function colorizeInto(values: Float64Array, n: number, min: number, max: number, img: Uint8ClampedArray): void {
+export function colorizeInto(
+  values: Float64Array,
+  n: number,
+  min: number,
+  max: number,
+  img: Uint8ClampedArray,
+): void {
   const ramp = max > min;
   const span = max - min;
   for (let k = 0; k < n; k++) {

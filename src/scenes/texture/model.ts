@@ -127,12 +127,25 @@ export type SphereModel =
       chosen: Lookup;
     };
 
-export function sphereModel(grid: TextureGrid, p: Pick<TextureParams, 'x' | 'y' | 'z' | 'normalize'>, opts: LookupOptions): SphereModel {
+export function sphereModel(
+  grid: TextureGrid,
+  p: Pick<TextureParams, 'x' | 'y' | 'z' | 'normalize'>,
+  opts: LookupOptions,
+): SphereModel {
   const s = sphericalUV(p.x, p.y, p.z);
   if (!s.ok) return s;
   const normalized = lookupAt(grid, s.u, s.v, opts);
   const raw = lookupAt(grid, s.phi, s.theta, opts);
-  return { ok: true, r: s.r, phi: s.phi, theta: s.theta, pole: s.pole, normalized, raw, chosen: p.normalize ? normalized : raw };
+  return {
+    ok: true,
+    r: s.r,
+    phi: s.phi,
+    theta: s.theta,
+    pole: s.pole,
+    normalized,
+    raw,
+    chosen: p.normalize ? normalized : raw,
+  };
 }
 
 /** The contract readouts of the scene (numbers, or null where they do not apply). */
@@ -150,7 +163,9 @@ export function queryReadouts(q: Lookup): Pick<TextureReadouts, 'nearest' | 'bil
 }
 
 /** The sphere's part of the readouts (u, v and the bilinear value there; null without a point). */
-export function sphereReadouts(sphere: SphereModel): Pick<TextureReadouts, 'sphereU' | 'sphereV' | 'sphereBilinear'> {
+export function sphereReadouts(
+  sphere: SphereModel,
+): Pick<TextureReadouts, 'sphereU' | 'sphereV' | 'sphereBilinear'> {
   return {
     sphereU: sphere.ok ? sphere.chosen.u : null,
     sphereV: sphere.ok ? sphere.chosen.v : null,
@@ -184,8 +199,12 @@ export function addressingNotes(u: number, v: number, opts: LookupOptions, q: Lo
   if (opts.vflip) notes.push(`v-flip: v′ = 1 − v = ${fmt(vv)}.`);
   const out = (t: number) => t < 0 || t > 1;
   if (opts.align === 'corner') {
-    if (out(u)) notes.push(`u = ${fmt(u)} is outside [0, 1]; ${opts.wrap} addressing uses u = ${fmt(q.bil.u)}.`);
-    if (out(vv)) notes.push(`${opts.vflip ? 'v′' : 'v'} = ${fmt(vv)} is outside [0, 1]; ${opts.wrap} addressing uses ${fmt(q.bil.v)}.`);
+    if (out(u))
+      notes.push(`u = ${fmt(u)} is outside [0, 1]; ${opts.wrap} addressing uses u = ${fmt(q.bil.u)}.`);
+    if (out(vv))
+      notes.push(
+        `${opts.vflip ? 'v′' : 'v'} = ${fmt(vv)} is outside [0, 1]; ${opts.wrap} addressing uses ${fmt(q.bil.v)}.`,
+      );
   } else {
     const edgeU = q.bil.i0 > q.bil.i1 || q.bil.i0 === q.bil.i1;
     const edgeV = q.bil.j0 > q.bil.j1 || q.bil.j0 === q.bil.j1;
@@ -382,7 +401,16 @@ function sameKey(a: Float64Array, b: Float64Array): boolean {
  * All t in (lo, hi] where key changes, each as a bracket [l, h] with h − l ≤ 1e-12 (bisection).
  * `scratch` is a key-sized buffer for the probes.
  */
-function findChanges(key: KeyInto, lo: number, hi: number, kLo: Float64Array, kHi: Float64Array, out: [number, number][], scratch: Float64Array, depth = 0): void {
+function findChanges(
+  key: KeyInto,
+  lo: number,
+  hi: number,
+  kLo: Float64Array,
+  kHi: Float64Array,
+  out: [number, number][],
+  scratch: Float64Array,
+  depth = 0,
+): void {
   if (sameKey(kLo, kHi) || depth > 64) return;
   let l = lo;
   let h = hi;
@@ -408,7 +436,12 @@ function findChanges(key: KeyInto, lo: number, hi: number, kLo: Float64Array, kH
  * the slope along the path changes, a jump where the value does. Inside one cell bilinear is a
  * smooth function of t (a quadratic along a line), so kinks can only sit at cell borders.
  */
-export function pathProfile(grid: TextureGrid, opts: LookupOptions, path: QueryPath, samples = 400): PathProfile {
+export function pathProfile(
+  grid: TextureGrid,
+  opts: LookupOptions,
+  path: QueryPath,
+  samples = 400,
+): PathProfile {
   // numbers in typed buffers rather than objects and strings: this runs as the page loads, when
   // the code is still cold, so every allocation and conversion per probe counts
   const pt = new Float64Array(2);
@@ -536,7 +569,10 @@ export interface Crease {
  * (over Δ), interpolated linearly between rows: a grid whose values continue linearly across a
  * node line (the exam's 21 − 5j + i everywhere) has no crease there.
  */
-export function creases(grid: TextureGrid, opts: LookupOptions): { list: Crease[]; lines: number; creased: number } {
+export function creases(
+  grid: TextureGrid,
+  opts: LookupOptions,
+): { list: Crease[]; lines: number; creased: number } {
   const o = { ...opts, vflip: false };
   const range = gridRange(grid);
   const scale = Math.max(1, Math.abs(range.max), Math.abs(range.min), range.max - range.min);
@@ -548,7 +584,11 @@ export function creases(grid: TextureGrid, opts: LookupOptions): { list: Crease[
     const m = axis === 'u' ? grid.height : grid.width; // nodes along the line
     const d = cellSize(n, o.align);
     const h = d / 64;
-    const along = [0, ...Array.from({ length: m }, (_, k) => nodeCoord(k, m, o.align)).filter((x) => x > 0 && x < 1), 1];
+    const along = [
+      0,
+      ...Array.from({ length: m }, (_, k) => nodeCoord(k, m, o.align)).filter((x) => x > 0 && x < 1),
+      1,
+    ];
     const first = o.align === 'corner' ? 1 : 0;
     const last = o.align === 'corner' ? n - 2 : n - 1;
     for (let k = first; k <= last; k++) {

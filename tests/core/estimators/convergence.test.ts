@@ -9,14 +9,19 @@ import { Rng } from '../../../src/core/random';
 describe('logSpacedCounts', () => {
   it('is strictly increasing, starts at nMin and ends at nMax (property)', () => {
     fc.assert(
-      fc.property(fc.integer({ min: 1, max: 1e7 }), fc.integer({ min: 1, max: 20 }), fc.integer({ min: 1, max: 100 }), (nMax, per, nMin) => {
-        const c = logSpacedCounts(nMax, per, nMin);
-        expect(c[0]).toBe(Math.min(nMin, nMax));
-        expect(c[c.length - 1]).toBe(nMax);
-        for (let i = 1; i < c.length; i++) expect(c[i]!).toBeGreaterThan(c[i - 1]!);
-        for (const v of c) expect(Number.isInteger(v)).toBe(true);
-        expect(c.length).toBeLessThanOrEqual(Math.ceil(Math.log10(nMax) * per) + 2);
-      }),
+      fc.property(
+        fc.integer({ min: 1, max: 1e7 }),
+        fc.integer({ min: 1, max: 20 }),
+        fc.integer({ min: 1, max: 100 }),
+        (nMax, per, nMin) => {
+          const c = logSpacedCounts(nMax, per, nMin);
+          expect(c[0]).toBe(Math.min(nMin, nMax));
+          expect(c[c.length - 1]).toBe(nMax);
+          for (let i = 1; i < c.length; i++) expect(c[i]).toBeGreaterThan(c[i - 1]);
+          for (const v of c) expect(Number.isInteger(v)).toBe(true);
+          expect(c.length).toBeLessThanOrEqual(Math.ceil(Math.log10(nMax) * per) + 2);
+        },
+      ),
     );
   });
 });
@@ -31,13 +36,13 @@ describe('ConvergenceSeries', () => {
     for (let i = 0; i < terms.length; i += 37) s.push(terms, i, Math.min(terms.length, i + 37));
     expect(s.recorded).toBe(cps.length);
     for (let k = 0; k < cps.length; k++) {
-      const n = cps[k]!;
+      const n = cps[k];
       const w = new Welford();
       w.addArray(terms, 0, n);
       expect(s.estimate[k]).toBeCloseTo(w.mean, 12);
       expect(s.absError[k]).toBeCloseTo(Math.abs(w.mean - 5), 12);
       if (n > 1) expect(s.stderr[k]).toBeCloseTo(w.standardError(), 12);
-      else expect(Number.isNaN(s.stderr[k]!)).toBe(true);
+      else expect(Number.isNaN(s.stderr[k])).toBe(true);
     }
   });
 
@@ -88,11 +93,11 @@ describe('RMSE and slopes', () => {
     }
     const sum = acc.summary();
     for (let k = 0; k < cps.length; k++) {
-      const expected = sigma / Math.sqrt(cps[k]!);
+      const expected = sigma / Math.sqrt(cps[k]);
       // RMSE over 400 runs has relative sd ≈ 1/√(2·400) ≈ 3.5 %: allow 15 %
-      expect(Math.abs(sum.rmse[k]! - expected) / expected).toBeLessThan(0.15);
-      expect(sum.lo[k]!).toBeLessThan(sum.hi[k]!);
-      expect(Math.abs(sum.mean[k]! - I)).toBeLessThan((4 * expected) / Math.sqrt(R));
+      expect(Math.abs(sum.rmse[k] - expected) / expected).toBeLessThan(0.15);
+      expect(sum.lo[k]).toBeLessThan(sum.hi[k]);
+      expect(Math.abs(sum.mean[k] - I)).toBeLessThan((4 * expected) / Math.sqrt(R));
     }
     const fit = fitLogLogSlope(sum.n, sum.rmse);
     expect(Math.abs(fit.slope + 0.5)).toBeLessThan(0.05);

@@ -28,7 +28,13 @@ describe('estimate1D', () => {
 
   it('counts terms where p = 0 but f ≠ 0 as invalid', () => {
     const pdf = uniformPdf1D(0, 2);
-    const broken = { ...pdf, sampleBatch: (u: Float64Array, x: Float64Array, p: Float64Array, s: number, e: number) => { pdf.sampleBatch(u, x, p, s, e); p.fill(0, s, e); } };
+    const broken = {
+      ...pdf,
+      sampleBatch: (u: Float64Array, x: Float64Array, p: Float64Array, s: number, e: number) => {
+        pdf.sampleBatch(u, x, p, s, e);
+        p.fill(0, s, e);
+      },
+    };
     const r = estimate1D({ f, pdf: broken, sequence: 'independent', seed: 1 }, 100);
     expect(r.invalid).toBe(100);
     expect(Number.isNaN(r.estimate)).toBe(true);
@@ -56,7 +62,13 @@ describe('EstimateRun1D', () => {
     const run = new EstimateRun1D({ f, pdf, sequence: 'independent', seed: 3 }, BATCH + 5);
     expect(run.step()).toBe(false);
     expect(run.result().n).toBe(BATCH);
-    const broken = { ...pdf, sampleBatch: (u: Float64Array, x: Float64Array, p: Float64Array, s: number, e: number) => { pdf.sampleBatch(u, x, p, s, e); p.fill(0, s, e); } };
+    const broken = {
+      ...pdf,
+      sampleBatch: (u: Float64Array, x: Float64Array, p: Float64Array, s: number, e: number) => {
+        pdf.sampleBatch(u, x, p, s, e);
+        p.fill(0, s, e);
+      },
+    };
     const bad = new EstimateRun1D({ f, pdf: broken, sequence: 'sobol', seed: 1 }, 10);
     expect(bad.step()).toBe(true);
     expect(bad.result().invalid).toBe(10);
@@ -74,7 +86,7 @@ describe('ConvergenceRun1D and convergence rates', () => {
       expect(steps).toBeGreaterThan(2);
       expect(run.done).toBe(run.total);
       expect(run.series.recorded).toBe(cps.length);
-      for (let k = 0; k < cps.length; k++) expect(Number.isFinite(run.series.estimate[k]!)).toBe(true);
+      for (let k = 0; k < cps.length; k++) expect(Number.isFinite(run.series.estimate[k])).toBe(true);
       // the last checkpoint equals a direct estimate with N_max points of the same set
       const direct = estimate1D({ f, pdf: uniformPdf1D(0, 2), sequence, seed: 2 }, 5000);
       expect(run.series.estimate[cps.length - 1]).toBeCloseTo(direct.estimate, 10);

@@ -74,30 +74,83 @@ describe('compileExpression: whitelist rejections with clear messages', () => {
 describe('compileExpression: values', () => {
   const cases: [string, (t: number, p: number) => number][] = [
     ['cos(theta) * exp(phi)', (t, p) => Math.cos(t) * Math.exp(p)],
-    ['2/(e^(2 pi) - 1) * cos(θ) * e^φ', (t, p) => (2 / (Math.exp(2 * Math.PI) - 1)) * Math.cos(t) * Math.exp(p)],
+    [
+      '2/(e^(2 pi) - 1) * cos(θ) * e^φ',
+      (t, p) => (2 / (Math.exp(2 * Math.PI) - 1)) * Math.cos(t) * Math.exp(p),
+    ],
     ['-theta^2', (t) => -(t * t)],
     ['2^-1 + +phi', (_t, p) => 0.5 + p],
     ['sqrt(abs(sin(theta))) / (1 + phi^2)', (t, p) => Math.sqrt(Math.abs(Math.sin(t))) / (1 + p * p)],
-    ['atan2(phi, theta) + log1p(theta^2) - expm1(-phi) + cbrt(theta)', (t, p) => Math.atan2(p, t) + Math.log1p(t * t) - Math.expm1(-p) + Math.cbrt(t)],
-    ['min(theta, phi, 0.5) + max(theta, phi) + pow(theta, 3) + floor(phi) + ceil(theta) + sign(theta - phi)', (t, p) => Math.min(t, p, 0.5) + Math.max(t, p) + Math.pow(t, 3) + Math.floor(p) + Math.ceil(t) + Math.sign(t - p)],
-    ['log(phi + 1, 2) + log(theta + 1) + tanh(theta) + sinh(phi) / cosh(phi)', (t, p) => Math.log(p + 1) / Math.log(2) + Math.log(t + 1) + Math.tanh(t) + Math.sinh(p) / Math.cosh(p)],
+    [
+      'atan2(phi, theta) + log1p(theta^2) - expm1(-phi) + cbrt(theta)',
+      (t, p) => Math.atan2(p, t) + Math.log1p(t * t) - Math.expm1(-p) + Math.cbrt(t),
+    ],
+    [
+      'min(theta, phi, 0.5) + max(theta, phi) + pow(theta, 3) + floor(phi) + ceil(theta) + sign(theta - phi)',
+      (t, p) =>
+        Math.min(t, p, 0.5) +
+        Math.max(t, p) +
+        Math.pow(t, 3) +
+        Math.floor(p) +
+        Math.ceil(t) +
+        Math.sign(t - p),
+    ],
+    [
+      'log(phi + 1, 2) + log(theta + 1) + tanh(theta) + sinh(phi) / cosh(phi)',
+      (t, p) => Math.log(p + 1) / Math.log(2) + Math.log(t + 1) + Math.tanh(t) + Math.sinh(p) / Math.cosh(p),
+    ],
     ['tau * theta + π * phi + τ', (t, p) => 2 * Math.PI * t + Math.PI * p + 2 * Math.PI],
     ['2theta phi', (t, p) => 2 * t * p],
     // specialized closures: constant operands, squares, e^x, functions of a bare variable, 1-argument min
-    ['e^theta + 3^phi - theta^2 + phi^0.5 - 2 - theta / 4 + 1 / (1 + phi)', (t, p) => Math.exp(t) + Math.pow(3, p) - t * t + Math.pow(p, 0.5) - 2 - t / 4 + 1 / (1 + p)],
-    ['min(theta) + max(phi, 1, 2, theta) + sin(phi) + cos(phi) + exp(theta) + sqrt(phi) + log(1 + theta) + tan(theta / 4) + abs(phi)', (t, p) => t + Math.max(p, 1, 2, t) + Math.sin(p) + Math.cos(p) + Math.exp(t) + Math.sqrt(p) + Math.log(1 + t) + Math.tan(t / 4) + Math.abs(p)],
-    ['sign(phi - 3) * floor(theta * 3) * ceil(phi) + sinh(theta) - cosh(phi / 4) + tanh(phi) + asin(theta / 2) + acos(phi / 7) + atan(phi) + log1p(phi) + expm1(theta) + cbrt(phi)', (t, p) => Math.sign(p - 3) * Math.floor(t * 3) * Math.ceil(p) + Math.sinh(t) - Math.cosh(p / 4) + Math.tanh(p) + Math.asin(t / 2) + Math.acos(p / 7) + Math.atan(p) + Math.log1p(p) + Math.expm1(t) + Math.cbrt(p)],
-    ['asin(theta / 4) + acos(phi / 8) + atan(theta) + tan(phi / 8)', (t, p) => Math.asin(t / 4) + Math.acos(p / 8) + Math.atan(t) + Math.tan(p / 8)],
+    [
+      'e^theta + 3^phi - theta^2 + phi^0.5 - 2 - theta / 4 + 1 / (1 + phi)',
+      (t, p) => Math.exp(t) + Math.pow(3, p) - t * t + Math.pow(p, 0.5) - 2 - t / 4 + 1 / (1 + p),
+    ],
+    [
+      'min(theta) + max(phi, 1, 2, theta) + sin(phi) + cos(phi) + exp(theta) + sqrt(phi) + log(1 + theta) + tan(theta / 4) + abs(phi)',
+      (t, p) =>
+        t +
+        Math.max(p, 1, 2, t) +
+        Math.sin(p) +
+        Math.cos(p) +
+        Math.exp(t) +
+        Math.sqrt(p) +
+        Math.log(1 + t) +
+        Math.tan(t / 4) +
+        Math.abs(p),
+    ],
+    [
+      'sign(phi - 3) * floor(theta * 3) * ceil(phi) + sinh(theta) - cosh(phi / 4) + tanh(phi) + asin(theta / 2) + acos(phi / 7) + atan(phi) + log1p(phi) + expm1(theta) + cbrt(phi)',
+      (t, p) =>
+        Math.sign(p - 3) * Math.floor(t * 3) * Math.ceil(p) +
+        Math.sinh(t) -
+        Math.cosh(p / 4) +
+        Math.tanh(p) +
+        Math.asin(t / 2) +
+        Math.acos(p / 7) +
+        Math.atan(p) +
+        Math.log1p(p) +
+        Math.expm1(t) +
+        Math.cbrt(p),
+    ],
+    [
+      'asin(theta / 4) + acos(phi / 8) + atan(theta) + tan(phi / 8)',
+      (t, p) => Math.asin(t / 4) + Math.acos(p / 8) + Math.atan(t) + Math.tan(p / 8),
+    ],
   ];
 
   it.each(cases)('%s matches Math', async (src, ref) => {
     const { fn } = await ok(src);
     fc.assert(
-      fc.property(fc.double({ min: 0, max: Math.PI / 2, noNaN: true }), fc.double({ min: 0, max: 2 * Math.PI, noNaN: true }), (t, p) => {
-        const a = fn(t, p);
-        const b = ref(t, p);
-        return Object.is(a, b) || Math.abs(a - b) <= 1e-14 * Math.max(1, Math.abs(b));
-      }),
+      fc.property(
+        fc.double({ min: 0, max: Math.PI / 2, noNaN: true }),
+        fc.double({ min: 0, max: 2 * Math.PI, noNaN: true }),
+        (t, p) => {
+          const a = fn(t, p);
+          const b = ref(t, p);
+          return Object.is(a, b) || Math.abs(a - b) <= 1e-14 * Math.max(1, Math.abs(b));
+        },
+      ),
     );
   });
 

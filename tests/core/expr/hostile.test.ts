@@ -4,7 +4,12 @@
  */
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import { compileExpression, MAX_EXPRESSION_DEPTH, MAX_EXPRESSION_LENGTH, EXPRESSION_FUNCTIONS } from '../../../src/core/expr';
+import {
+  compileExpression,
+  MAX_EXPRESSION_DEPTH,
+  MAX_EXPRESSION_LENGTH,
+  EXPRESSION_FUNCTIONS,
+} from '../../../src/core/expr';
 
 const PROTO_NAMES = Object.getOwnPropertyNames(Object.prototype);
 const UNARY = Object.entries(EXPRESSION_FUNCTIONS)
@@ -41,15 +46,19 @@ describe('expression work is bounded (no exponential TeX)', () => {
   it('property: any nesting of whitelisted unary functions up to the depth limit compiles in bounded time', async () => {
     await compileExpression('x', ['x']);
     await fc.assert(
-      fc.asyncProperty(fc.array(fc.constantFrom(...UNARY), { minLength: 1, maxLength: MAX_EXPRESSION_DEPTH - 1 }), fc.constantFrom('theta', 'phi', '0.5'), async (fns, inner) => {
-        const src = nest(fns, inner);
-        const { r, ms } = await timed(src);
-        if (src.length <= MAX_EXPRESSION_LENGTH) expect(r.ok).toBe(true);
-        else expect(r.ok).toBe(false);
-        // work per expression: far below a frame budget on a loaded machine
-        expect(ms).toBeLessThan(250);
-        if (r.ok) expect(r.tex.length).toBeLessThan(40 * src.length + 40);
-      }),
+      fc.asyncProperty(
+        fc.array(fc.constantFrom(...UNARY), { minLength: 1, maxLength: MAX_EXPRESSION_DEPTH - 1 }),
+        fc.constantFrom('theta', 'phi', '0.5'),
+        async (fns, inner) => {
+          const src = nest(fns, inner);
+          const { r, ms } = await timed(src);
+          if (src.length <= MAX_EXPRESSION_LENGTH) expect(r.ok).toBe(true);
+          else expect(r.ok).toBe(false);
+          // work per expression: far below a frame budget on a loaded machine
+          expect(ms).toBeLessThan(250);
+          if (r.ok) expect(r.tex.length).toBeLessThan(40 * src.length + 40);
+        },
+      ),
       { numRuns: 60, seed: 17 },
     );
   });
@@ -61,8 +70,15 @@ describe('expression work is bounded (no exponential TeX)', () => {
       t: fc.oneof(
         { depthSize: 'small', withCrossShrink: true },
         leaf,
-        fc.tuple(fc.constantFrom(...UNARY, 'max', 'min', 'atan2', 'pow', 'log'), fc.array(tie('t'), { minLength: 1, maxLength: 3 })).map(([f, a]) => `${f}(${a.join(',')})`),
-        fc.tuple(tie('t'), fc.constantFrom('+', '-', '*', '/', '^', ' '), tie('t')).map(([a, o, b]) => `(${a}${o}${b})`),
+        fc
+          .tuple(
+            fc.constantFrom(...UNARY, 'max', 'min', 'atan2', 'pow', 'log'),
+            fc.array(tie('t'), { minLength: 1, maxLength: 3 }),
+          )
+          .map(([f, a]) => `${f}(${a.join(',')})`),
+        fc
+          .tuple(tie('t'), fc.constantFrom('+', '-', '*', '/', '^', ' '), tie('t'))
+          .map(([a, o, b]) => `(${a}${o}${b})`),
         tie('t').map((a) => `-${a}`),
       ),
     })).t;
@@ -106,25 +122,32 @@ describe('expression work is bounded (no exponential TeX)', () => {
 describe('prototype names are ordinary unknown names', () => {
   it('property: every Object.prototype name as symbol, function, or alias is rejected with a message', async () => {
     await fc.assert(
-      fc.asyncProperty(fc.constantFrom(...PROTO_NAMES), fc.constantFrom('%s', '%s(x)', '%s + x', 'x * %s(1, 2)'), async (name, shape) => {
-        const src = shape.replace('%s', name);
-        const r = await compileExpression(src, ['x']);
-        expect(r.ok).toBe(false);
-        if (!r.ok) {
-          expect(r.message).not.toMatch(/native code|\[object|is not a function|Cannot read/);
-        }
-      }),
+      fc.asyncProperty(
+        fc.constantFrom(...PROTO_NAMES),
+        fc.constantFrom('%s', '%s(x)', '%s + x', 'x * %s(1, 2)'),
+        async (name, shape) => {
+          const src = shape.replace('%s', name);
+          const r = await compileExpression(src, ['x']);
+          expect(r.ok).toBe(false);
+          if (!r.ok) {
+            expect(r.message).not.toMatch(/native code|\[object|is not a function|Cannot read/);
+          }
+        },
+      ),
       { numRuns: 120, seed: 3 },
     );
   });
 
   it('property: arbitrary identifiers never crash the compiler', async () => {
     await fc.assert(
-      fc.asyncProperty(fc.oneof(fc.string({ maxLength: 30 }), fc.constantFrom(...PROTO_NAMES)), async (name) => {
-        const r = await compileExpression(name, ['x']);
-        if (!r.ok) expect(typeof r.message).toBe('string');
-        else expect(typeof r.fn(1)).toBe('number');
-      }),
+      fc.asyncProperty(
+        fc.oneof(fc.string({ maxLength: 30 }), fc.constantFrom(...PROTO_NAMES)),
+        async (name) => {
+          const r = await compileExpression(name, ['x']);
+          if (!r.ok) expect(typeof r.message).toBe('string');
+          else expect(typeof r.fn(1)).toBe('number');
+        },
+      ),
       { numRuns: 200, seed: 11 },
     );
   });

@@ -59,7 +59,8 @@ interface BigSolution {
 function bigSolve(o: Vec3, d: Vec3, c: Vec3, r: number): BigSolution {
   const f = [0, 1, 2].map((i) => big(o[i]).minus(big(c[i])) as BigNumber);
   const D = d.map(big);
-  const dot = (x: BigNumber[], y: BigNumber[]) => x[0].times(y[0]).plus(x[1].times(y[1])).plus(x[2].times(y[2])) as BigNumber;
+  const dot = (x: BigNumber[], y: BigNumber[]) =>
+    x[0].times(y[0]).plus(x[1].times(y[1])).plus(x[2].times(y[2])) as BigNumber;
   const a = dot(D, D);
   const beta = dot(f, D);
   const cc = dot(f, f).minus(big(r).times(big(r))) as BigNumber;
@@ -88,17 +89,89 @@ const X: Vec3 = [1, 0, 0];
 
 // ---------------------------------------------------------------------------------------------
 describe('every case, both methods agree on easy inputs', () => {
-  const cases: { name: string; o: Vec3; d: Vec3; c: Vec3; r: number; want: string; t: [number, number] | null; hit: number | null }[] = [
+  const cases: {
+    name: string;
+    o: Vec3;
+    d: Vec3;
+    c: Vec3;
+    r: number;
+    want: string;
+    t: [number, number] | null;
+    hit: number | null;
+  }[] = [
     { name: 'two hits in front', o: [-3, 0, 0], d: X, c: O, r: 1, want: 'two-hits', t: [2, 4], hit: 2 },
     { name: 'miss', o: [-3, 2, 0], d: X, c: O, r: 1, want: 'miss', t: null, hit: null },
     { name: 'tangent (Δ = 0 exactly)', o: [-5, 1, 0], d: X, c: O, r: 1, want: 'tangent', t: [5, 5], hit: 5 },
-    { name: 'tangent point behind → behind', o: [5, 1, 0], d: X, c: O, r: 1, want: 'behind', t: [-5, -5], hit: null },
-    { name: 'origin inside: hit is t1', o: [0.5, 0, 0], d: X, c: O, r: 1, want: 'inside', t: [-1.5, 0.5], hit: 0.5 },
-    { name: 'sphere behind: Δ > 0 but no hit', o: [3, 0, 0], d: X, c: O, r: 1, want: 'behind', t: [-4, -2], hit: null },
-    { name: 'origin on the surface, pointing in: t = 0 is the hit', o: [-1, 0, 0], d: X, c: O, r: 1, want: 'two-hits', t: [0, 2], hit: 0 },
-    { name: 'origin on the surface, pointing out: inside with t-hit 0', o: [1, 0, 0], d: X, c: O, r: 1, want: 'inside', t: [-2, 0], hit: 0 },
-    { name: 'non-unit d: t in units of d', o: [-3, 0, 0], d: [2, 0, 0], c: O, r: 1, want: 'two-hits', t: [1, 2], hit: 1 },
-    { name: 'oblique, offset centre', o: [1, 2, 3], d: [0, 0, -1], c: [1, 2, -4], r: 2, want: 'two-hits', t: [5, 9], hit: 5 },
+    {
+      name: 'tangent point behind → behind',
+      o: [5, 1, 0],
+      d: X,
+      c: O,
+      r: 1,
+      want: 'behind',
+      t: [-5, -5],
+      hit: null,
+    },
+    {
+      name: 'origin inside: hit is t1',
+      o: [0.5, 0, 0],
+      d: X,
+      c: O,
+      r: 1,
+      want: 'inside',
+      t: [-1.5, 0.5],
+      hit: 0.5,
+    },
+    {
+      name: 'sphere behind: Δ > 0 but no hit',
+      o: [3, 0, 0],
+      d: X,
+      c: O,
+      r: 1,
+      want: 'behind',
+      t: [-4, -2],
+      hit: null,
+    },
+    {
+      name: 'origin on the surface, pointing in: t = 0 is the hit',
+      o: [-1, 0, 0],
+      d: X,
+      c: O,
+      r: 1,
+      want: 'two-hits',
+      t: [0, 2],
+      hit: 0,
+    },
+    {
+      name: 'origin on the surface, pointing out: inside with t-hit 0',
+      o: [1, 0, 0],
+      d: X,
+      c: O,
+      r: 1,
+      want: 'inside',
+      t: [-2, 0],
+      hit: 0,
+    },
+    {
+      name: 'non-unit d: t in units of d',
+      o: [-3, 0, 0],
+      d: [2, 0, 0],
+      c: O,
+      r: 1,
+      want: 'two-hits',
+      t: [1, 2],
+      hit: 1,
+    },
+    {
+      name: 'oblique, offset centre',
+      o: [1, 2, 3],
+      d: [0, 0, -1],
+      c: [1, 2, -4],
+      r: 2,
+      want: 'two-hits',
+      t: [5, 9],
+      hit: 5,
+    },
   ];
   for (const k of cases) {
     for (const method of ['naive', 'stable'] as const) {
@@ -234,7 +307,11 @@ describe('stress inputs against mathjs BigNumber (400 digits)', () => {
       const sxy = Math.sqrt(1 - u * u);
       const c: Vec3 = [D * sxy * Math.cos(phi), D * sxy * Math.sin(phi), D * u];
       const o: Vec3 = [rng.nextFloat(), rng.nextFloat(), rng.nextFloat()];
-      const aim: Vec3 = [c[0] + 0.9 * (rng.nextFloat() - 0.5), c[1] + 0.9 * (rng.nextFloat() - 0.5), c[2] + 0.9 * (rng.nextFloat() - 0.5)];
+      const aim: Vec3 = [
+        c[0] + 0.9 * (rng.nextFloat() - 0.5),
+        c[1] + 0.9 * (rng.nextFloat() - 0.5),
+        c[2] + 0.9 * (rng.nextFloat() - 0.5),
+      ];
       const d: Vec3 = [aim[0] - o[0], aim[1] - o[1], aim[2] - o[2]];
       const exact = bigSolve(o, d, c, 1);
       if (exact.sign <= 0) continue; // (never happens for |offset| < 0.8, but stay honest)
@@ -250,8 +327,18 @@ describe('stress inputs against mathjs BigNumber (400 digits)', () => {
   });
 
   it('origin inside and sphere behind, far from the centre scale: robust matches exact roots', () => {
-    const inside = { o: [1e6 + 0.3, 2e6 - 0.2, -3e6] as Vec3, d: [0.3, -0.7, 0.1] as Vec3, c: [1e6, 2e6, -3e6] as Vec3, r: 1 };
-    const behind = { o: [1e6 + 50, 2e6, -3e6] as Vec3, d: [1, 1e-3, 0] as Vec3, c: [1e6, 2e6, -3e6] as Vec3, r: 1 };
+    const inside = {
+      o: [1e6 + 0.3, 2e6 - 0.2, -3e6] as Vec3,
+      d: [0.3, -0.7, 0.1] as Vec3,
+      c: [1e6, 2e6, -3e6] as Vec3,
+      r: 1,
+    };
+    const behind = {
+      o: [1e6 + 50, 2e6, -3e6] as Vec3,
+      d: [1, 1e-3, 0] as Vec3,
+      c: [1e6, 2e6, -3e6] as Vec3,
+      r: 1,
+    };
     const si = hit(intersectRaySphere(inside.o, inside.d, inside.c, inside.r, 'stable'));
     const ei = bigSolve(inside.o, inside.d, inside.c, inside.r);
     expect(si.case).toBe('inside');
@@ -381,7 +468,13 @@ describe('properties over whole input ranges (fast-check)', () => {
       let count = 0;
       for (let i = 0; i < n; i++) {
         const j = i * RAY_STRIDE;
-        const res = intersectRaySphere([rays[j], rays[j + 1], rays[j + 2]], [rays[j + 3], rays[j + 4], rays[j + 5]], c, 1.5, method);
+        const res = intersectRaySphere(
+          [rays[j], rays[j + 1], rays[j + 2]],
+          [rays[j + 3], rays[j + 4], rays[j + 5]],
+          c,
+          1.5,
+          method,
+        );
         const want = res.ok && res.tHit !== null ? res.tHit : NO_HIT;
         expect(out[i]).toBe(want);
         if (want !== NO_HIT) count++;
@@ -403,7 +496,14 @@ describe('properties over whole input ranges (fast-check)', () => {
     let refHits = 0;
     for (let i = 0; i < w * h; i++) {
       const j = i * RAY_STRIDE;
-      const x = ref(raySphereReference([rays[j], rays[j + 1], rays[j + 2]], [rays[j + 3], rays[j + 4], rays[j + 5]], [D, 0.2, 0.3], 1));
+      const x = ref(
+        raySphereReference(
+          [rays[j], rays[j + 1], rays[j + 2]],
+          [rays[j + 3], rays[j + 4], rays[j + 5]],
+          [D, 0.2, 0.3],
+          1,
+        ),
+      );
       if (x.tHit !== null) refHits++;
     }
     const naive = intersectRaySphereBatch(rays, w * h, D, 0.2, 0.3, 1, 'naive', out);

@@ -49,17 +49,29 @@ describe('TwoSum and TwoProduct are error-free', () => {
     fc.assert(
       fc.property(finite, finite, (a, b) => {
         const [s, e] = twoSum(a, b);
-        return s === a + b && big(s).plus(big(e)).eq(big(a).plus(big(b)));
+        return (
+          s === a + b &&
+          big(s)
+            .plus(big(e))
+            .eq(big(a).plus(big(b)))
+        );
       }),
       { seed: 7, numRuns: 300 },
     );
   });
   it('twoProduct: p + e equals a·b exactly (Veltkamp split)', () => {
-    const g = fc.double({ min: -1e100, max: 1e100, noNaN: true, noDefaultInfinity: true }).filter((x) => x === 0 || Math.abs(x) > 1e-100);
+    const g = fc
+      .double({ min: -1e100, max: 1e100, noNaN: true, noDefaultInfinity: true })
+      .filter((x) => x === 0 || Math.abs(x) > 1e-100);
     fc.assert(
       fc.property(g, g, (a, b) => {
         const [p, e] = twoProduct(a, b);
-        return p === a * b && big(p).plus(big(e)).eq(big(a).times(big(b)));
+        return (
+          p === a * b &&
+          big(p)
+            .plus(big(e))
+            .eq(big(a).times(big(b)))
+        );
       }),
       { seed: 8, numRuns: 300 },
     );
@@ -72,7 +84,11 @@ describe('TwoSum and TwoProduct are error-free', () => {
       [1e8, 1e8 + 1],
     ]) {
       const [p, e] = twoProduct(a, b);
-      expect(big(p).plus(big(e)).eq(big(a).times(big(b)))).toBe(true);
+      expect(
+        big(p)
+          .plus(big(e))
+          .eq(big(a).times(big(b))),
+      ).toBe(true);
     }
   });
 });
@@ -127,7 +143,11 @@ describe('ulp stepping', () => {
     expect(ulpDistance(-Number.MIN_VALUE, Number.MIN_VALUE)).toBe(2);
     expect(ulpDistance(0, -0)).toBe(0);
     fc.assert(
-      fc.property(finite, fc.integer({ min: -5, max: 5 }), (x, n) => ulpDistance(x, nextAfterN(x, n)) === Math.abs(n) || x === 0),
+      fc.property(
+        finite,
+        fc.integer({ min: -5, max: 5 }),
+        (x, n) => ulpDistance(x, nextAfterN(x, n)) === Math.abs(n) || x === 0,
+      ),
       { seed: 10 },
     );
   });

@@ -1,6 +1,9 @@
 import { describe, expect, it } from 'vitest';
 import { makeRectLight, type RectLight } from '../../../src/core/lights/rectLight';
-import { lambertianFloorRadiance, rectProjectedSolidAngleOccluded } from '../../../src/core/lights/polygonIrradiance';
+import {
+  lambertianFloorRadiance,
+  rectProjectedSolidAngleOccluded,
+} from '../../../src/core/lights/polygonIrradiance';
 import {
   areaLightConvergence,
   areaLightTerms,
@@ -12,7 +15,11 @@ import { Welford } from '../../../src/core/estimators/welford';
 
 const STRATEGIES: LightStrategy[] = ['area', 'solid-angle', 'cosine'];
 
-function setup(light: RectLight, p: [number, number, number] = [0, 0, 0], occluder: RectLight | null = null): AreaLightSetup {
+function setup(
+  light: RectLight,
+  p: [number, number, number] = [0, 0, 0],
+  occluder: RectLight | null = null,
+): AreaLightSetup {
   return { light, occluder, px: p[0], py: p[1], pz: p[2], L: 2, rho: 0.8 };
 }
 
@@ -40,7 +47,7 @@ describe('area-light estimators agree with the analytic reference', () => {
   }
 
   it('solid-angle sampling of an overhead light has far less variance than cosine sampling of a far one', () => {
-    const s = placements[4]![1];
+    const s = placements[4][1];
     const sa = estimateAreaLight(s, 'solid-angle', 20000, 5);
     const cos = estimateAreaLight(s, 'cosine', 20000, 5);
     expect(sa.stderr * 10).toBeLessThan(cos.stderr);
@@ -88,7 +95,11 @@ describe('area-light estimators agree with the analytic reference', () => {
     const xs = [0, 2 ** -53, 0.5, 1 - 2 ** -53];
     const u = new Float64Array(32);
     let k = 0;
-    for (const a of xs) for (const b of xs) { u[k++] = a; u[k++] = b; }
+    for (const a of xs)
+      for (const b of xs) {
+        u[k++] = a;
+        u[k++] = b;
+      }
     for (const [, s] of placements)
       for (const strategy of STRATEGIES) {
         const terms = new Float64Array(16);
@@ -113,7 +124,8 @@ describe('area-light estimators agree with the analytic reference', () => {
     // Pairwise agreement within 3σ of the difference.
     for (let i = 0; i < 3; i++)
       for (let j = i + 1; j < 3; j++) {
-        const a = rs[i]!, b = rs[j]!;
+        const a = rs[i],
+          b = rs[j];
         expect(Math.abs(a.estimate - b.estimate)).toBeLessThan(3 * Math.hypot(a.stderr, b.stderr));
       }
   });
@@ -131,8 +143,14 @@ describe('area-light estimators agree with the analytic reference', () => {
       expect(Math.abs(r.estimate - occRef)).toBeLessThan(3 * r.stderr);
     }
     // An occluder beyond the light or wholly below p casts no shadow.
-    expect(rectProjectedSolidAngleOccluded(light, makeRectLight([0, 0, 5], 1, 1, 0), 0, 0, 0)).toBeCloseTo(ref / (s.rho / Math.PI) / s.L, 14);
-    expect(rectProjectedSolidAngleOccluded(light, makeRectLight([0, 0, -1], 1, 1, 0), 0, 0, 0)).toBeCloseTo(ref / (s.rho / Math.PI) / s.L, 14);
+    expect(rectProjectedSolidAngleOccluded(light, makeRectLight([0, 0, 5], 1, 1, 0), 0, 0, 0)).toBeCloseTo(
+      ref / (s.rho / Math.PI) / s.L,
+      14,
+    );
+    expect(rectProjectedSolidAngleOccluded(light, makeRectLight([0, 0, -1], 1, 1, 0), 0, 0, 0)).toBeCloseTo(
+      ref / (s.rho / Math.PI) / s.L,
+      14,
+    );
   });
 
   it('occluded analytic value when the occluder straddles p’s level or pierces the light’s plane', () => {
@@ -155,7 +173,7 @@ describe('area-light estimators agree with the analytic reference', () => {
   });
 
   it('Welford accumulators merge: two halves give the same mean as the whole', () => {
-    const s = placements[1]![1];
+    const s = placements[1][1];
     const a = estimateAreaLight(s, 'area', 3000, 42, 0).stats;
     const b = estimateAreaLight(s, 'area', 5000, 42, 1).stats;
     const m = new Welford();
@@ -166,14 +184,14 @@ describe('area-light estimators agree with the analytic reference', () => {
   });
 
   it('convergence series: error shrinks roughly like N^-1/2 and the last point equals the estimate', () => {
-    const s = placements[0]![1];
+    const s = placements[0][1];
     const ref = lambertianFloorRadiance(s.light, 0, 0, 0, s.L, s.rho);
     const cps = [100, 1000, 10000, 100000];
     const series = areaLightConvergence(s, 'area', cps, ref, 99);
     const direct = estimateAreaLight(s, 'area', 100000, 99);
     expect(series.estimate[3]).toBeCloseTo(direct.estimate, 14);
-    expect(series.stderr[3]! / series.stderr[0]!).toBeGreaterThan(0.02);
-    expect(series.stderr[3]! / series.stderr[0]!).toBeLessThan(0.05); // √(1/1000) ≈ 0.032
+    expect(series.stderr[3] / series.stderr[0]).toBeGreaterThan(0.02);
+    expect(series.stderr[3] / series.stderr[0]).toBeLessThan(0.05); // √(1/1000) ≈ 0.032
   });
 });
 
@@ -186,12 +204,13 @@ describe('area sampling goes through the tested sample / pdf pair (core/lights/a
     areaLightTerms(s, 'area', u, 4, terms);
     for (let i = 0; i < 4; i++) {
       const x = [0, 0, 0];
-      sampleRectArea(s.light, u[2 * i]!, u[2 * i + 1]!, x);
-      const d = [x[0]! - s.px, x[1]! - s.py, x[2]! - s.pz];
-      const r2 = d[0]! ** 2 + d[1]! ** 2 + d[2]! ** 2, r = Math.sqrt(r2);
-      const cosT = d[2]! / r;
-      const cosL = -(d[0]! * s.light.normal[0] + d[1]! * s.light.normal[1] + d[2]! * s.light.normal[2]) / r;
-      const pA = rectAreaPdf(s.light, x[0]!, x[1]!, x[2]!);
+      sampleRectArea(s.light, u[2 * i], u[2 * i + 1], x);
+      const d = [x[0] - s.px, x[1] - s.py, x[2] - s.pz];
+      const r2 = d[0] ** 2 + d[1] ** 2 + d[2] ** 2,
+        r = Math.sqrt(r2);
+      const cosT = d[2] / r;
+      const cosL = -(d[0] * s.light.normal[0] + d[1] * s.light.normal[1] + d[2] * s.light.normal[2]) / r;
+      const pA = rectAreaPdf(s.light, x[0], x[1], x[2]);
       expect(pA).toBeCloseTo(1 / (1.3 * 0.9), 12);
       const expected = cosT > 0 && cosL > 0 ? ((s.rho / Math.PI) * s.L * cosT * cosL) / (pA * r2) : 0;
       expect(terms[i]).toBeCloseTo(expected, 12);
@@ -202,14 +221,25 @@ describe('area sampling goes through the tested sample / pdf pair (core/lights/a
     const { sampleRectArea, rectAreaPdf } = await import('../../../src/core/lights/areaSampling');
     const s = setup(makeRectLight([3e8, -2e8, 1e9], 2, 1, 30), [0, 0, 0]);
     const x = [0, 0, 0];
-    for (const [a, b] of [[0.123, 0.877], [0.5, 0.25], [0.999, 0.001]] as const) {
+    for (const [a, b] of [
+      [0.123, 0.877],
+      [0.5, 0.25],
+      [0.999, 0.001],
+    ] as const) {
       sampleRectArea(s.light, a, b, x);
-      expect(rectAreaPdf(s.light, x[0]!, x[1]!, x[2]!)).toBeCloseTo(1 / 2, 12);
+      expect(rectAreaPdf(s.light, x[0], x[1], x[2])).toBeCloseTo(1 / 2, 12);
     }
     const r = estimateAreaLight(s, 'area', 2000, 9, 0);
     // Small-patch limit f L |A| cos θ cos θ_l / r² at the centre: exact to O((size/r)²) ≈ 1e-18 here.
-    const c = s.light.center, rr = Math.hypot(...c);
-    const ref = ((s.rho / Math.PI) * s.L * s.light.area * (c[2] / rr) * (-(c[0] * s.light.normal[0] + c[1] * s.light.normal[1] + c[2] * s.light.normal[2]) / rr)) / (rr * rr);
+    const c = s.light.center,
+      rr = Math.hypot(...c);
+    const ref =
+      ((s.rho / Math.PI) *
+        s.L *
+        s.light.area *
+        (c[2] / rr) *
+        (-(c[0] * s.light.normal[0] + c[1] * s.light.normal[1] + c[2] * s.light.normal[2]) / rr)) /
+      (rr * rr);
     expect(ref).toBeGreaterThan(0);
     expect(Math.abs(r.estimate - ref) / ref).toBeLessThan(1e-3);
   });

@@ -21,7 +21,9 @@ function cornerProjectedBig(a: number, b: number, c: number): number {
   const Y = M.bignumber(b).div(c);
   const sx = X.times(X).plus(1).sqrt();
   const sy = Y.times(Y).plus(1).sqrt();
-  const t = X.div(sx).times(Y.div(sx).atan()).plus(Y.div(sy).times(X.div(sy).atan()));
+  const t = X.div(sx)
+    .times(Y.div(sx).atan())
+    .plus(Y.div(sy).times(X.div(sy).atan()));
   return t.div(2).toNumber();
 }
 
@@ -30,12 +32,13 @@ function quadrature(l: RectLight, p: [number, number, number], K = 1500): number
   let sum = 0;
   for (let i = 0; i < K; i++)
     for (let j = 0; j < K; j++) {
-      const a = (i + 0.5) / K, b = (j + 0.5) / K;
-      const x = [0, 1, 2].map((k) => l.corner[k]! + a * l.edgeX[k]! + b * l.edgeY[k]! - p[k]!);
-      const r2 = x[0]! ** 2 + x[1]! ** 2 + x[2]! ** 2;
+      const a = (i + 0.5) / K,
+        b = (j + 0.5) / K;
+      const x = [0, 1, 2].map((k) => l.corner[k] + a * l.edgeX[k] + b * l.edgeY[k] - p[k]);
+      const r2 = x[0] ** 2 + x[1] ** 2 + x[2] ** 2;
       const r = Math.sqrt(r2);
-      const cosT = x[2]! / r;
-      const cosL = -(x[0]! * l.normal[0] + x[1]! * l.normal[1] + x[2]! * l.normal[2]) / r;
+      const cosT = x[2] / r;
+      const cosL = -(x[0] * l.normal[0] + x[1] * l.normal[1] + x[2] * l.normal[2]) / r;
       if (cosT > 0 && cosL > 0) sum += (cosT * cosL) / r2;
     }
   return (sum * l.area) / (K * K);
@@ -43,7 +46,12 @@ function quadrature(l: RectLight, p: [number, number, number], K = 1500): number
 
 describe("Lambert's formula for a polygon", () => {
   it('a parallel rectangle with a corner overhead matches the configuration-factor closed form', () => {
-    for (const [a, b, c] of [[1, 1, 1], [2, 0.5, 3], [0.01, 0.02, 1], [50, 50, 0.1]] as const) {
+    for (const [a, b, c] of [
+      [1, 1, 1],
+      [2, 0.5, 3],
+      [0.01, 0.02, 1],
+      [50, 50, 0.1],
+    ] as const) {
       const l = makeRectLight([a / 2, b / 2, c], a, b, 0);
       const ref = cornerProjectedBig(a, b, c);
       expect(Math.abs(rectProjectedSolidAngle(l, 0, 0, 0) - ref) / ref).toBeLessThan(1e-12);
@@ -89,7 +97,10 @@ describe("Lambert's formula for a polygon", () => {
   });
   it('L_o = (ρ/π) L ∫cos θ dω', () => {
     const l = makeRectLight([0, 0, 2], 1, 1, 0);
-    expect(lambertianFloorRadiance(l, 0, 0, 0, 3, 0.5)).toBeCloseTo((0.5 / Math.PI) * 3 * rectProjectedSolidAngle(l, 0, 0, 0), 15);
+    expect(lambertianFloorRadiance(l, 0, 0, 0, 3, 0.5)).toBeCloseTo(
+      (0.5 / Math.PI) * 3 * rectProjectedSolidAngle(l, 0, 0, 0),
+      15,
+    );
   });
   it('clipping keeps the part above the plane, with new vertices exactly on it', () => {
     const v = clipPolygonToHalfSpace([-1, 1, -1, 1, 1, -1, 1, 1, 1, -1, 1, 1], 0, 0, 1);

@@ -1,5 +1,12 @@
 import { describe, expect, it } from 'vitest';
-import { intersectRect, makeRectLight, rectFacesPoint, rectPlaneDistance, rectSolidAngle, sinCosDeg } from '../../../src/core/lights/rectLight';
+import {
+  intersectRect,
+  makeRectLight,
+  rectFacesPoint,
+  rectPlaneDistance,
+  rectSolidAngle,
+  sinCosDeg,
+} from '../../../src/core/lights/rectLight';
 import { centredRectangleSolidAngle } from '../../../src/core/geometry/solidAngle';
 
 describe('rectangle light frame', () => {
@@ -22,11 +29,15 @@ describe('rectangle light frame', () => {
     for (const t of [13, 45, 120, -33.3]) {
       const l = makeRectLight([1, 2, 3], 2, 3, t);
       const { ex, ey, normal: n } = l;
-      const dot = (a: number[], b: number[]) => a[0]! * b[0]! + a[1]! * b[1]! + a[2]! * b[2]!;
+      const dot = (a: number[], b: number[]) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
       expect(dot(ex, ey)).toBeCloseTo(0, 15);
       expect(dot(ey, n)).toBeCloseTo(0, 15);
       expect(dot(n, n)).toBeCloseTo(1, 15);
-      const cross = [ey[1] * ex[2] - ey[2] * ex[1], ey[2] * ex[0] - ey[0] * ex[2], ey[0] * ex[1] - ey[1] * ex[0]];
+      const cross = [
+        ey[1] * ex[2] - ey[2] * ex[1],
+        ey[2] * ex[0] - ey[0] * ex[2],
+        ey[0] * ex[1] - ey[1] * ex[0],
+      ];
       expect(cross[1]).toBeCloseTo(n[1], 15);
       expect(cross[2]).toBeCloseTo(n[2], 15);
     }

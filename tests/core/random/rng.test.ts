@@ -81,7 +81,8 @@ describe('Rng (xoshiro128**)', () => {
     const r = new Rng(5);
     const counts = [0, 0, 0];
     for (let i = 0; i < 30000; i++) counts[r.nextInt(3)]++;
-    for (const c of counts) expect(Math.abs(c - 10000)).toBeLessThan(5 * Math.sqrt(30000 * (1 / 3) * (2 / 3)));
+    for (const c of counts)
+      expect(Math.abs(c - 10000)).toBeLessThan(5 * Math.sqrt(30000 * (1 / 3) * (2 / 3)));
     expect(r.nextInt(0)).toBe(0);
   });
 
@@ -94,7 +95,12 @@ describe('Rng (xoshiro128**)', () => {
   });
 
   it('fill gives exactly the nextFloat stream, in any ranges, and leaves the generator where nextFloat would', () => {
-    for (const [seed, stream] of [[0, 0], [1, 7], [0xffffffff, 3], [123456789, 0x4d43]] as const) {
+    for (const [seed, stream] of [
+      [0, 0],
+      [1, 7],
+      [0xffffffff, 3],
+      [123456789, 0x4d43],
+    ] as const) {
       const want = new Rng(seed, stream);
       const got = new Rng(seed, stream);
       const buf = new Float64Array(3000).fill(-1);

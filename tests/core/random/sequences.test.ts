@@ -17,18 +17,24 @@ import {
 } from '../../../src/core/random';
 import { chi2Test, planarChi2 } from '../../../src/core/verify';
 
-const gen2 = (kind: SequenceKind, seed: number, n: number) => fillSequence2D(kind, seed, n, new Float64Array(2 * n));
+const gen2 = (kind: SequenceKind, seed: number, n: number) =>
+  fillSequence2D(kind, seed, n, new Float64Array(2 * n));
 
 describe('bit helpers', () => {
   it('reverseBits32 is an involution with known values', () => {
     expect(reverseBits32(1)).toBe(0x80000000);
     expect(reverseBits32(0x80000000)).toBe(1);
     expect(reverseBits32(0xf0)).toBe(0x0f000000);
-    fc.assert(fc.property(fc.integer({ min: 0, max: 0xffffffff }), (v) => reverseBits32(reverseBits32(v)) === v));
+    fc.assert(
+      fc.property(fc.integer({ min: 0, max: 0xffffffff }), (v) => reverseBits32(reverseBits32(v)) === v),
+    );
   });
 
   it('unscrambled Sobol dimensions 0 and 1 give the textbook first 8 points', () => {
-    const pts = Array.from({ length: 8 }, (_, i) => [sobolDim0Bits(i) * TWO_POW_M32, sobolDim1Bits(i) * TWO_POW_M32]);
+    const pts = Array.from({ length: 8 }, (_, i) => [
+      sobolDim0Bits(i) * TWO_POW_M32,
+      sobolDim1Bits(i) * TWO_POW_M32,
+    ]);
     expect(pts).toEqual([
       [0, 0],
       [0.5, 0.5],
@@ -49,7 +55,7 @@ describe('bit helpers', () => {
       const bits = new Uint32Array(2);
       for (let i = 0; i < n; i += 7) {
         shuffledSobol2Bits(i, s1, s2, s3, bits);
-        expect([p[2 * i], p[2 * i + 1]]).toEqual([bits[0]! * TWO_POW_M32, bits[1]! * TWO_POW_M32]);
+        expect([p[2 * i], p[2 * i + 1]]).toEqual([bits[0] * TWO_POW_M32, bits[1] * TWO_POW_M32]);
       }
     }
   });
@@ -64,7 +70,7 @@ describe('bit helpers', () => {
         (a, b, seed, m) => {
           const mask = (~0 << (32 - m)) >>> 0;
           const b2 = ((a & mask) | (b & ~mask)) >>> 0; // same top m bits as a
-          return ((owenScramble32(a, seed) & mask) >>> 0) === ((owenScramble32(b2, seed) & mask) >>> 0);
+          return (owenScramble32(a, seed) & mask) >>> 0 === (owenScramble32(b2, seed) & mask) >>> 0;
         },
       ),
     );
@@ -156,17 +162,18 @@ describe('fillSequence2D / fillSequence1D', () => {
       const hits = new Uint8Array(n);
       let bad = 0;
       for (let i = 0; i < n; i++) {
-        const x = pts[2 * i]!;
-        const y = pts[2 * i + 1]!;
+        const x = pts[2 * i];
+        const y = pts[2 * i + 1];
         let r = 0;
         let before = 0;
-        while (r < a - 1 && y * n >= before + counts[r]!) before += counts[r++]!;
-        const k = counts[r]!;
+        while (r < a - 1 && y * n >= before + counts[r]) before += counts[r++];
+        const k = counts[r];
         const cell = before + Math.min(k - 1, Math.floor(x * k));
         hits[cell]++;
         const { k: kk, height } = stratifiedCell(n, i);
         const aspect = 1 / kk / height;
-        if (Math.abs((1 / kk) * height - 1 / n) > 1e-14 / n || aspect < 1 / 3 - 1e-12 || aspect > 3 + 1e-12) bad++;
+        if (Math.abs((1 / kk) * height - 1 / n) > 1e-14 / n || aspect < 1 / 3 - 1e-12 || aspect > 3 + 1e-12)
+          bad++;
       }
       expect(bad, `n = ${n}`).toBe(0);
       if (!hits.every((h) => h === 1)) expect.fail(`stratum hit twice for n = ${n}`);
@@ -190,11 +197,14 @@ describe('fillSequence2D / fillSequence1D', () => {
             const q = m - p;
             const hit = new Uint8Array(n);
             for (let i = block * n; i < (block + 1) * n; i++) {
-              const a = Math.floor(big[2 * i]! * 2 ** p);
-              const b = Math.floor(big[2 * i + 1]! * 2 ** q);
+              const a = Math.floor(big[2 * i] * 2 ** p);
+              const b = Math.floor(big[2 * i + 1] * 2 ** q);
               hit[a * 2 ** q + b]++;
             }
-            expect(hit.every((h) => h === 1), `seed ${seed} m ${m} p ${p} block ${block}`).toBe(true);
+            expect(
+              hit.every((h) => h === 1),
+              `seed ${seed} m ${m} p ${p} block ${block}`,
+            ).toBe(true);
           }
         }
         const one = fillSequence1D('sobol', seed, n, new Float64Array(n));
@@ -217,8 +227,11 @@ describe('fillSequence2D / fillSequence1D', () => {
         const n = nx * ny;
         const p = gen2('halton', seed, n);
         const hit = new Uint8Array(n);
-        for (let i = 0; i < n; i++) hit[Math.floor(p[2 * i]! * nx) * ny + Math.floor(p[2 * i + 1]! * ny)]++;
-        expect(hit.every((h) => h === 1), `seed ${seed} ${nx}×${ny}`).toBe(true);
+        for (let i = 0; i < n; i++) hit[Math.floor(p[2 * i] * nx) * ny + Math.floor(p[2 * i + 1] * ny)]++;
+        expect(
+          hit.every((h) => h === 1),
+          `seed ${seed} ${nx}×${ny}`,
+        ).toBe(true);
       }
     }
   });
@@ -242,7 +255,7 @@ describe('fillSequence2D / fillSequence1D', () => {
     // for i.i.d. points the statistic ~ χ²_99; P[χ²_99 < 60] ≈ 8e-4
     expect(r.statistic).toBeGreaterThan(60);
     let sxy = 0;
-    for (let i = 0; i < n; i++) sxy += (p[2 * i]! - 0.5) * (p[2 * i + 1]! - 0.5);
+    for (let i = 0; i < n; i++) sxy += (p[2 * i] - 0.5) * (p[2 * i + 1] - 0.5);
     // correlation estimate has sd 1/√n ≈ 0.007 (after scaling by 12)
     expect(Math.abs((12 * sxy) / n)).toBeLessThan(0.03);
   });

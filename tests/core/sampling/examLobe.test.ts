@@ -58,7 +58,8 @@ describe('exam lobe p(ω) = k cos θ e^φ', () => {
   it('marginal pdfs integrate to 1 and CDFs are their integrals', () => {
     expect(simpson(examThetaPdf, 0, Math.PI / 2)).toBeCloseTo(1, 10);
     expect(simpson(examPhiPdf, 0, 2 * Math.PI - 1e-15)).toBeCloseTo(1, 8);
-    for (const t of [0.1, 0.5, 1.0, 1.4]) expect(examThetaCdf(t)).toBeCloseTo(simpson(examThetaPdf, 0, t), 10);
+    for (const t of [0.1, 0.5, 1.0, 1.4])
+      expect(examThetaCdf(t)).toBeCloseTo(simpson(examThetaPdf, 0, t), 10);
     for (const p of [0.3, 2, 4.5, 6]) expect(examPhiCdf(p)).toBeCloseTo(simpson(examPhiPdf, 0, p), 8);
     expect(examThetaCdf(-1)).toBe(0);
     expect(examThetaCdf(2)).toBe(1);
@@ -111,11 +112,15 @@ describe('exam lobe p(ω) = k cos θ e^φ', () => {
 
   it('pdf(ω) · sin θ equals the product of the marginals (separability, correct Jacobian)', () => {
     fc.assert(
-      fc.property(fc.double({ min: 0.01, max: 1.5, noNaN: true }), fc.double({ min: 0, max: 6.28, noNaN: true }), (t, p) => {
-        const lhs = examLobeThetaPhiPdf(t, p);
-        const rhs = examThetaPdf(t) * examPhiPdf(p);
-        return Math.abs(lhs - rhs) <= 1e-12 * Math.max(1, rhs);
-      }),
+      fc.property(
+        fc.double({ min: 0.01, max: 1.5, noNaN: true }),
+        fc.double({ min: 0, max: 6.28, noNaN: true }),
+        (t, p) => {
+          const lhs = examLobeThetaPhiPdf(t, p);
+          const rhs = examThetaPdf(t) * examPhiPdf(p);
+          return Math.abs(lhs - rhs) <= 1e-12 * Math.max(1, rhs);
+        },
+      ),
       { numRuns: 500, seed: 3 },
     );
   });

@@ -30,15 +30,24 @@ const unit = fc.double({ min: 0, max: 1, maxExcluded: true, noNaN: true });
 const M = create(all, { number: 'BigNumber', precision: 60 });
 
 /** χ² of `sampler` against the density `pdf` on [a, b]: expected counts by quadrature of the pdf. */
-function chi2Of(sampler: (u: number) => number, pdf: (x: number) => number, a: number, b: number, seed: number, n = 40000, bins = 40) {
+function chi2Of(
+  sampler: (u: number) => number,
+  pdf: (x: number) => number,
+  a: number,
+  b: number,
+  seed: number,
+  n = 40000,
+  bins = 40,
+) {
   const rng = new Rng(seed);
   const obs = new Float64Array(bins);
   for (let i = 0; i < n; i++) {
     const x = sampler(rng.nextFloat());
-    obs[Math.min(bins - 1, Math.floor(((x - a) / (b - a)) * bins))]!++;
+    obs[Math.min(bins - 1, Math.floor(((x - a) / (b - a)) * bins))]++;
   }
   const exp = new Float64Array(bins);
-  for (let k = 0; k < bins; k++) exp[k] = n * integrate1D(pdf, a + ((b - a) * k) / bins, a + ((b - a) * (k + 1)) / bins).value;
+  for (let k = 0; k < bins; k++)
+    exp[k] = n * integrate1D(pdf, a + ((b - a) * k) / bins, a + ((b - a) * (k + 1)) / bins).value;
   return chi2Test(obs, exp, { alpha: 0.01, tests: 4 });
 }
 
@@ -94,10 +103,16 @@ describe('1D pdfs: shared properties', () => {
       const p = new Float64Array(6);
       pdf.sampleBatch(u, x, p, 0, 6);
       for (let i = 0; i < 6; i++) {
-        expect(x[i]).toBeCloseTo(pdf.sample(u[i]!), 13);
-        expect(p[i]).toBeCloseTo(pdf.pdf(x[i]!), 12);
+        expect(x[i]).toBeCloseTo(pdf.sample(u[i]), 13);
+        expect(p[i]).toBeCloseTo(pdf.pdf(x[i]), 12);
       }
-      const r = chi2Of((v) => pdf.sample(v), (v) => pdf.pdf(v), a, b, 1234);
+      const r = chi2Of(
+        (v) => pdf.sample(v),
+        (v) => pdf.pdf(v),
+        a,
+        b,
+        1234,
+      );
       expect(r.pass, `χ² p = ${r.pValue}`).toBe(true);
     });
   }
@@ -129,7 +144,9 @@ describe('closed forms', () => {
     for (const u of [TINY, 1e-10, 0.5, NEAR_ONE]) {
       const ub = M.bignumber(u);
       const ref = M.number(M.subtract(M.cbrt(M.add(8, M.multiply(56, ub)) as never), 2) as never);
-      expect(Math.abs(sampleSquare1D(u, 0, 2, 2) - ref)).toBeLessThanOrEqual(4e-16 * Math.max(1, Math.abs(ref)));
+      expect(Math.abs(sampleSquare1D(u, 0, 2, 2) - ref)).toBeLessThanOrEqual(
+        4e-16 * Math.max(1, Math.abs(ref)),
+      );
     }
     // tiny u: CDF inverse stays accurate relative to the offset from a (u ≈ 12 x/56 ·… near x = 0)
     const x = 1e-12;
@@ -181,7 +198,7 @@ describe('typed densities (custom, proportional to f)', () => {
     const x = new Float64Array(64);
     const p = new Float64Array(64);
     r.pdf.sampleBatch(u, x, p, 0, 64);
-    for (let i = 0; i < 64; i++) expect(Math.abs(f(x[i]!) / p[i]! / r.norm - 1)).toBeLessThan(5e-3);
+    for (let i = 0; i < 64; i++) expect(Math.abs(f(x[i]) / p[i] / r.norm - 1)).toBeLessThan(5e-3);
   });
 
   it('rejects bad pdfs with clear messages', () => {
@@ -192,14 +209,26 @@ describe('typed densities (custom, proportional to f)', () => {
       expect(neg.message).toMatch(/cannot be negative/);
       expect(neg.x!).toBeLessThan(1);
     }
-    const zero = customPdf1D((x) => (x < 1 ? 0 : 1), 0, 2, (x) => (x + 2) ** 2);
+    const zero = customPdf1D(
+      (x) => (x < 1 ? 0 : 1),
+      0,
+      2,
+      (x) => (x + 2) ** 2,
+    );
     expect(zero.ok).toBe(false);
     if (!zero.ok) {
       expect(zero.kind).toBe('zero-where-f-nonzero');
       expect(zero.message).toMatch(/biased/);
     }
     // zero where f is zero too is fine
-    expect(customPdf1D((x) => (x < 1 ? 0 : 1), 0, 2, (x) => (x < 1 ? 0 : x)).ok).toBe(true);
+    expect(
+      customPdf1D(
+        (x) => (x < 1 ? 0 : 1),
+        0,
+        2,
+        (x) => (x < 1 ? 0 : x),
+      ).ok,
+    ).toBe(true);
     const div = customPdf1D((x) => 1 / x, 0, 1);
     expect(div.ok).toBe(false);
     if (!div.ok) expect(div.kind).toBe('not-normalizable');

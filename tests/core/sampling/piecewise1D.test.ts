@@ -1,6 +1,12 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import { DensityError, PiecewiseConstant1D, validateDensity, densityErrorMessage, findInterval } from '../../../src/core/sampling';
+import {
+  DensityError,
+  PiecewiseConstant1D,
+  validateDensity,
+  densityErrorMessage,
+  findInterval,
+} from '../../../src/core/sampling';
 import { Rng } from '../../../src/core/random';
 import { chi2Test } from '../../../src/core/verify';
 
@@ -13,7 +19,9 @@ describe('validateDensity', () => {
     expect(validateDensity([1, 2, Infinity])).toEqual({ ok: false, reason: 'nonfinite', index: 2 });
     expect(validateDensity([NaN])).toEqual({ ok: false, reason: 'nonfinite', index: 0 });
     expect(validateDensity([0, 0])).toEqual({ ok: false, reason: 'zero', index: -1 });
-    expect(densityErrorMessage({ ok: false, reason: 'negative', index: 4 })).toMatch(/negative at table entry 4/);
+    expect(densityErrorMessage({ ok: false, reason: 'negative', index: 4 })).toMatch(
+      /negative at table entry 4/,
+    );
   });
   it('the constructor throws a DensityError naming the reason', () => {
     expect(() => new PiecewiseConstant1D([1, -1], 0, 1)).toThrow(DensityError);
@@ -30,10 +38,10 @@ describe('validateDensity', () => {
 describe('findInterval', () => {
   it('returns the largest index whose predicate holds, clamped to [0, size − 2]', () => {
     const cdf = [0, 0.1, 0.1, 0.5, 1];
-    expect(findInterval(cdf.length, (i) => cdf[i]! <= 0)).toBe(0);
-    expect(findInterval(cdf.length, (i) => cdf[i]! <= 0.1)).toBe(2);
-    expect(findInterval(cdf.length, (i) => cdf[i]! <= 0.7)).toBe(3);
-    expect(findInterval(cdf.length, (i) => cdf[i]! <= 1)).toBe(3);
+    expect(findInterval(cdf.length, (i) => cdf[i] <= 0)).toBe(0);
+    expect(findInterval(cdf.length, (i) => cdf[i] <= 0.1)).toBe(2);
+    expect(findInterval(cdf.length, (i) => cdf[i] <= 0.7)).toBe(3);
+    expect(findInterval(cdf.length, (i) => cdf[i] <= 1)).toBe(3);
   });
 });
 
@@ -99,7 +107,7 @@ describe('PiecewiseConstant1D', () => {
     const p = new Float64Array(1000);
     d.sampleMany(u, x, p);
     for (let i = 0; i < 1000; i++) {
-      const s = d.sample(u[i]!);
+      const s = d.sample(u[i]);
       expect(x[i]).toBe(s.x);
       expect(p[i]).toBe(s.pdf);
     }

@@ -19,7 +19,8 @@ describe('PiecewiseConstant2D', () => {
     expect(d.conditional(0).pdf(0.25)).toBeCloseTo(1 / (10 * 0.5), 14); // p(u | row 0) = f / ∫ f du
     expect(d.marginal.pdf(-0.9)).toBeCloseTo(10 / 18 / (2 / 3), 14); // row 0 carries 10/18 of the mass
     let s = 0;
-    for (let iv = 0; iv < 3; iv++) for (let iu = 0; iu < 4; iu++) s += d.pdf(0.5 * (iu + 0.5), -1 + (2 / 3) * (iv + 0.5)) * cell;
+    for (let iv = 0; iv < 3; iv++)
+      for (let iu = 0; iu < 4; iu++) s += d.pdf(0.5 * (iu + 0.5), -1 + (2 / 3) * (iv + 0.5)) * cell;
     expect(s).toBeCloseTo(1, 14);
     expect(d.pdf(-0.1, 0)).toBe(0);
     expect(d.pdf(1, 1.5)).toBe(0);
@@ -45,11 +46,15 @@ describe('PiecewiseConstant2D', () => {
 
   it('invert(sample(ξ)) = ξ (property)', () => {
     fc.assert(
-      fc.property(fc.double({ min: 0, max: 1 - 2 ** -53, noNaN: true }), fc.double({ min: 0, max: 1 - 2 ** -53, noNaN: true }), (a, b) => {
-        const s = d.sample(a, b);
-        const r = d.invert(s.u, s.v);
-        return Math.abs(r.u1 - a) < 1e-12 && Math.abs(r.u2 - b) < 1e-12;
-      }),
+      fc.property(
+        fc.double({ min: 0, max: 1 - 2 ** -53, noNaN: true }),
+        fc.double({ min: 0, max: 1 - 2 ** -53, noNaN: true }),
+        (a, b) => {
+          const s = d.sample(a, b);
+          const r = d.invert(s.u, s.v);
+          return Math.abs(r.u1 - a) < 1e-12 && Math.abs(r.u2 - b) < 1e-12;
+        },
+      ),
     );
   });
 

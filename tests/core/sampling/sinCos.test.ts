@@ -14,12 +14,15 @@ const M = create(all, { number: 'BigNumber', precision: 50 });
  * kπ/2 the difference is the whole answer). */
 function big(x: number): BigNumber {
   if (x === 0) return M.bignumber(0);
-  const bits = new BigUint64Array(new Float64Array([Math.abs(x)]).buffer)[0]!;
+  const bits = new BigUint64Array(new Float64Array([Math.abs(x)]).buffer)[0];
   const e = Number((bits >> 52n) & 0x7ffn);
   const frac = bits & ((1n << 52n) - 1n);
   const mant = e === 0 ? frac : frac | (1n << 52n);
   const exp = (e === 0 ? 1 : e) - 1075;
-  const v = M.multiply(M.bignumber(mant.toString()), M.pow(M.bignumber(2), M.bignumber(exp))) as unknown as BigNumber;
+  const v = M.multiply(
+    M.bignumber(mant.toString()),
+    M.pow(M.bignumber(2), M.bignumber(exp)),
+  ) as unknown as BigNumber;
   return x < 0 ? (M.unaryMinus(v) as BigNumber) : v;
 }
 function ref(phi: number): [number, number] {
@@ -33,11 +36,15 @@ const out = new Float64Array(2);
 function check(phi: number) {
   writeScaledCosSin(phi, 1, out, 0);
   const [c, s] = ref(phi);
-  expect(Math.abs(out[0]! - c), `cos ${phi}`).toBeLessThanOrEqual(ULP1 / 2);
-  expect(Math.abs(out[1]! - s), `sin ${phi}`).toBeLessThanOrEqual(ULP1 / 2);
+  expect(Math.abs(out[0] - c), `cos ${phi}`).toBeLessThanOrEqual(ULP1 / 2);
+  expect(Math.abs(out[1] - s), `sin ${phi}`).toBeLessThanOrEqual(ULP1 / 2);
   // where a value is small (near a quadrant boundary) it must still be right relative to itself
-  for (const [got, want] of [[out[0]!, c], [out[1]!, s]] as const) {
-    if (Math.abs(want) < 1e-3 && want !== 0) expect(Math.abs(got - want) / Math.abs(want), `rel ${phi}`).toBeLessThan(4 * 2 ** -53);
+  for (const [got, want] of [
+    [out[0], c],
+    [out[1], s],
+  ] as const) {
+    if (Math.abs(want) < 1e-3 && want !== 0)
+      expect(Math.abs(got - want) / Math.abs(want), `rel ${phi}`).toBeLessThan(4 * 2 ** -53);
   }
 }
 
@@ -51,15 +58,16 @@ describe('writeScaledCosSin', () => {
   it('is accurate at and around every quadrant boundary kπ/2 (the zeros of sin and cos)', () => {
     for (let k = 0; k <= 4; k++) {
       const b = (k * Math.PI) / 2;
-      for (const d of [0, 1e-300, 2 ** -60, 2 ** -52, 1e-12, 1e-8, 1e-4, -1e-4, -1e-8, -(2 ** -52)]) check(b + d);
+      for (const d of [0, 1e-300, 2 ** -60, 2 ** -52, 1e-12, 1e-8, 1e-4, -1e-4, -1e-8, -(2 ** -52)])
+        check(b + d);
       // the neighbouring doubles of the boundary
       const f = new Float64Array([b]);
       const u = new BigUint64Array(f.buffer);
       if (b > 0) {
-        u[0]! -= 1n;
-        check(f[0]!);
-        u[0]! += 2n;
-        check(f[0]!);
+        u[0] -= 1n;
+        check(f[0]);
+        u[0] += 2n;
+        check(f[0]);
       }
     }
     check(6.283185307179585); // the largest φ the warps produce (just below 2π)
@@ -67,10 +75,17 @@ describe('writeScaledCosSin', () => {
 
   it('scales by s and handles negative angles (property)', () => {
     fc.assert(
-      fc.property(fc.double({ min: -50, max: 50, noNaN: true }), fc.double({ min: -4, max: 4, noNaN: true }), (phi, s) => {
-        writeScaledCosSin(phi, s, out, 0);
-        return Math.abs(out[0]! - s * Math.cos(phi)) <= 4 * ULP1 * Math.max(1, Math.abs(s)) && Math.abs(out[1]! - s * Math.sin(phi)) <= 4 * ULP1 * Math.max(1, Math.abs(s));
-      }),
+      fc.property(
+        fc.double({ min: -50, max: 50, noNaN: true }),
+        fc.double({ min: -4, max: 4, noNaN: true }),
+        (phi, s) => {
+          writeScaledCosSin(phi, s, out, 0);
+          return (
+            Math.abs(out[0] - s * Math.cos(phi)) <= 4 * ULP1 * Math.max(1, Math.abs(s)) &&
+            Math.abs(out[1] - s * Math.sin(phi)) <= 4 * ULP1 * Math.max(1, Math.abs(s))
+          );
+        },
+      ),
       { numRuns: 2000, seed: 5 },
     );
   });

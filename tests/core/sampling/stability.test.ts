@@ -25,7 +25,11 @@ const thetaRef = (xi: number) => num(m.asin(m.sqrt(big(xi))));
 /** ln(1 + cξ) at 60 digits; by series when cξ is tiny (1 + cξ would round even at 60 digits). */
 const phiRef = (xi: number) => {
   const y = m.multiply(cB, big(xi)) as BN;
-  return num(m.smaller(y, m.bignumber('1e-12')) ? m.add(m.subtract(y, m.divide(m.pow(y, 2), 2)), m.divide(m.pow(y, 3), 3)) : m.log(m.add(y, 1)));
+  return num(
+    m.smaller(y, m.bignumber('1e-12'))
+      ? m.add(m.subtract(y, m.divide(m.pow(y, 2), 2)), m.divide(m.pow(y, 3), 3))
+      : m.log(m.add(y, 1)),
+  );
 };
 const rel = (a: number, b: number) => Math.abs(a - b) / Math.abs(b);
 

@@ -4,7 +4,9 @@ export const NEAR_ONE = 1 - 2 ** -53;
 export const STRESS_U = [0, TINY, 0.5, NEAR_ONE] as const;
 
 /** All pairs of stress inputs. */
-export const STRESS_PAIRS: [number, number][] = STRESS_U.flatMap((a) => STRESS_U.map((b) => [a, b] as [number, number]));
+export const STRESS_PAIRS: [number, number][] = STRESS_U.flatMap((a) =>
+  STRESS_U.map((b) => [a, b] as [number, number]),
+);
 
 /** |v| for out[o..o+2]. */
 export function norm3(v: ArrayLike<number>, o = 0): number {

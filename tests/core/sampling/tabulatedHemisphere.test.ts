@@ -1,5 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { tabulateHemisphereDensity, type TabulatedHemisphere } from '../../../src/core/sampling/tabulatedHemisphere';
+import {
+  tabulateHemisphereDensity,
+  type TabulatedHemisphere,
+} from '../../../src/core/sampling/tabulatedHemisphere';
 import { examLobeK } from '../../../src/core/sampling/examLobe';
 
 function ok(p: (t: number, f: number) => number): TabulatedHemisphere {

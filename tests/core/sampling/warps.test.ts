@@ -85,7 +85,8 @@ function phongRow(n: number, chi2Seed?: number): Warp {
     pdf: (x, y, z) => phongLobePdf(x, y, z, n),
     invert: (x, y, z) => invertPhongLobeSample(x, y, z, n),
     normTol: 1e-15,
-    roundTrip: (a, b, u1, u2, d) => Math.abs(u1 - a) < 1e-9 && (Math.hypot(d[0], d[1]) < 1e-6 || torusDist(u2, b) < 1e-9),
+    roundTrip: (a, b, u1, u2, d) =>
+      Math.abs(u1 - a) < 1e-9 && (Math.hypot(d[0], d[1]) < 1e-6 || torusDist(u2, b) < 1e-9),
     property: { numRuns: 400, seed: 8 },
     batch: { tol: 0, seed: 4, n: 500 },
     chi2: chi2Seed === undefined ? undefined : { n: N, seed: chi2Seed, opts: SIDAK },
@@ -166,13 +167,21 @@ const WARPS: Warp[] = [
     pdf: uniformHemispherePdf,
     invert: invertUniformHemisphereSample,
     normTol: 1e-15,
-    stressExtra: (_a, _b, d) => expect(uniformHemispherePdf(d[0], d[1], d[2])).toBeCloseTo(1 / (2 * Math.PI), 15),
+    stressExtra: (_a, _b, d) =>
+      expect(uniformHemispherePdf(d[0], d[1], d[2])).toBeCloseTo(1 / (2 * Math.PI), 15),
     // near the pole the azimuth is undefined: only check u2 where sin θ is not tiny
     roundTrip: (a, b, u1, u2) => Math.abs(u1 - a) < 1e-12 && (a > 1 - 1e-8 || torusDist(u2, b) < 1e-9),
     property: { numRuns: 2000, seed: 7 },
     batch: { tol: 0, seed: 3, n: 1000 },
     chi2: { n: N, seed: 2, opts: SIDAK },
-    broken: [{ name: 'tested against the cosine pdf', seed: 14, sampleBatch: sampleUniformHemisphereBatch, pdf: cosineHemispherePdf }],
+    broken: [
+      {
+        name: 'tested against the cosine pdf',
+        seed: 14,
+        sampleBatch: sampleUniformHemisphereBatch,
+        pdf: cosineHemispherePdf,
+      },
+    ],
   },
   {
     name: 'cosine hemisphere (concentric)',
@@ -200,7 +209,11 @@ const WARPS: Warp[] = [
   phongRow(50, 5),
   tabulatedRow('cos θ e^φ', (t, f) => Math.cos(t) * Math.exp(f), 7),
   tabulatedRow('cos θ (2 + cos φ)', (t, f) => Math.cos(t) * (2 + Math.cos(f)), 8),
-  tabulatedRow('cos²θ (1.5 + sin(2φ + 3θ)) (non-separable)', (t, f) => Math.cos(t) ** 2 * (1.5 + Math.sin(2 * f + 3 * t)), 5),
+  tabulatedRow(
+    'cos²θ (1.5 + sin(2φ + 3θ)) (non-separable)',
+    (t, f) => Math.cos(t) ** 2 * (1.5 + Math.sin(2 * f + 3 * t)),
+    5,
+  ),
 ];
 
 describe.each(WARPS)('warp: $name', (w) => {
@@ -287,7 +300,13 @@ it('χ² accepts the exam lobe with Sobol points too (marginals stay exact)', ()
 describe.each([
   { name: 'uniform', sample: sampleUniformHemisphere, seed: 11, n: 200000, mean: 1 / 2, sigma2: 1 / 12 },
   { name: 'cosine', sample: sampleCosineHemisphere, seed: 12, n: 200000, mean: 2 / 3 },
-  { name: 'Phong n = 8', sample: (a: number, b: number, o: VecOut) => samplePhongLobe(a, b, 8, o), seed: 5, n: 100000, mean: 9 / 10 },
+  {
+    name: 'Phong n = 8',
+    sample: (a: number, b: number, o: VecOut) => samplePhongLobe(a, b, 8, o),
+    seed: 5,
+    n: 100000,
+    mean: 9 / 10,
+  },
 ])('E[cos θ] of the $name lobe', ({ sample, seed, n, mean, sigma2 }) => {
   it(`is ${mean.toFixed(4)} within 4σ`, () => {
     const rng = new Rng(seed);
@@ -336,10 +355,17 @@ function simpson(f: (x: number) => number, a: number, b: number, n = 4000): numb
 
 it('Phong: ∫ p dω = 1, the θ marginal integrates to 1, its CDF is its integral', () => {
   for (const n of [0, 1, 8, 100]) {
-    const v = 2 * Math.PI * simpson((t) => phongLobePdf(Math.sin(t), 0, Math.cos(t), n) * Math.sin(t), 0, Math.PI / 2);
+    const v =
+      2 *
+      Math.PI *
+      simpson((t) => phongLobePdf(Math.sin(t), 0, Math.cos(t), n) * Math.sin(t), 0, Math.PI / 2);
     expect(v).toBeCloseTo(1, 8);
     expect(simpson((t) => phongThetaPdf(t, n), 0, Math.PI / 2)).toBeCloseTo(1, 8);
-    for (const t of [0.05, 0.3, 1.2]) expect(phongThetaCdf(t, n)).toBeCloseTo(simpson((s) => phongThetaPdf(s, n), 0, t), 8);
+    for (const t of [0.05, 0.3, 1.2])
+      expect(phongThetaCdf(t, n)).toBeCloseTo(
+        simpson((s) => phongThetaPdf(s, n), 0, t),
+        8,
+      );
   }
 });
 

@@ -66,9 +66,13 @@ describe('addressCoord', () => {
 
   it('mirror is continuous (|Δ output| ≤ |Δ input|)', () => {
     fc.assert(
-      fc.property(fc.double({ min: -50, max: 50, noNaN: true }), fc.double({ min: 0, max: 0.01, noNaN: true }), (t, d) => {
-        return Math.abs(addressCoord(t + d, 'mirror') - addressCoord(t, 'mirror')) <= d + 1e-12;
-      }),
+      fc.property(
+        fc.double({ min: -50, max: 50, noNaN: true }),
+        fc.double({ min: 0, max: 0.01, noNaN: true }),
+        (t, d) => {
+          return Math.abs(addressCoord(t + d, 'mirror') - addressCoord(t, 'mirror')) <= d + 1e-12;
+        },
+      ),
     );
   });
 });

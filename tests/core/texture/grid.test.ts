@@ -31,9 +31,14 @@ describe('grid layout', () => {
       fc.property(
         fc.integer({ min: 2, max: 9 }),
         fc.integer({ min: 2, max: 9 }),
-        fc.array(fc.double({ min: -1e6, max: 1e6, noNaN: true, noDefaultInfinity: true }), { minLength: 81, maxLength: 81 }),
+        fc.array(fc.double({ min: -1e6, max: 1e6, noNaN: true, noDefaultInfinity: true }), {
+          minLength: 81,
+          maxLength: 81,
+        }),
         (w, h, pool) => {
-          const rows = Array.from({ length: h }, (_, r) => Array.from({ length: w }, (_, c) => pool[r * 9 + c] + 0));
+          const rows = Array.from({ length: h }, (_, r) =>
+            Array.from({ length: w }, (_, c) => pool[r * 9 + c] + 0),
+          );
           const g = gridFromRows(rows);
           const p = parseGrid(formatGrid(g));
           if (!p.ok) return false;
@@ -49,7 +54,11 @@ describe('parseGrid', () => {
   it('accepts whitespace, signs, exponents and one trailing semicolon', () => {
     const p = parseGrid(' 1, -2.5 ; +3e1 ,.5 ;');
     expect(p.ok).toBe(true);
-    if (p.ok) expect(gridToRows(p.grid)).toEqual([[1, -2.5], [30, 0.5]]);
+    if (p.ok)
+      expect(gridToRows(p.grid)).toEqual([
+        [1, -2.5],
+        [30, 0.5],
+      ]);
   });
 
   it('rejects bad text with a message that names the problem', () => {
@@ -78,7 +87,9 @@ describe('parseGrid', () => {
 
   it('accepts the extreme sizes 2 × 2 and 64 × 64', () => {
     expect(parseGrid('1,2;3,4').ok).toBe(true);
-    const big = Array.from({ length: 64 }, (_, r) => Array.from({ length: 64 }, (_, c) => r * 64 + c).join(',')).join(';');
+    const big = Array.from({ length: 64 }, (_, r) =>
+      Array.from({ length: 64 }, (_, c) => r * 64 + c).join(','),
+    ).join(';');
     const p = parseGrid(big);
     expect(p.ok).toBe(true);
     if (p.ok) {

@@ -40,7 +40,7 @@ describe('the exam, Q3 (values derived from the grid definition, not copied from
     expect(s.value).toBe(18);
   });
 
-  it('(b) bilinear of (0.4, 0.24) equals L(0.4, 0.24) = 17.8, and so do the key\'s steps c_u, c_l, c', () => {
+  it("(b) bilinear of (0.4, 0.24) equals L(0.4, 0.24) = 17.8, and so do the key's steps c_u, c_l, c", () => {
     const s = bilinearStencil(exam, 0.4, 0.24, EXAM_LOOKUP);
     expect(s.value).toBeCloseTo(L(0.4, 0.24), 13);
     expect(L(0.4, 0.24)).toBeCloseTo(17.8, 13);
@@ -67,7 +67,7 @@ describe('the exam, Q3 (values derived from the grid definition, not copied from
     expect(b).toBeCloseTo(16.5, 12);
   });
 
-  it('(c) without normalization, (π/4, π/4) gives 21 − 4π ≈ 8.4336, not the key\'s 8.44', () => {
+  it("(c) without normalization, (π/4, π/4) gives 21 − 4π ≈ 8.4336, not the key's 8.44", () => {
     const p = sphericalUV(1, 1, Math.SQRT2);
     if (!p.ok) throw new Error('unreachable');
     expect(p.phi).toBeCloseTo(Math.PI / 4, 15);
@@ -82,7 +82,7 @@ describe('the exam, Q3 (values derived from the grid definition, not copied from
     expect(b.toFixed(2)).toBe('8.43');
   });
 
-  it('the key\'s alternative reading v\' = 1 − v: nearest (0.5, 0.75) = value(2, 3), bilinear L(0.4, 0.76)', () => {
+  it("the key's alternative reading v' = 1 − v: nearest (0.5, 0.75) = value(2, 3), bilinear L(0.4, 0.76)", () => {
     const o = { ...EXAM_LOOKUP, vflip: true };
     expect(nearest(exam, 0.4, 0.24, o)).toBe(21 - 5 * 3 + 2);
     expect(bilinear(exam, 0.4, 0.24, o)).toBeCloseTo(L(0.4, 0.76), 13);
@@ -169,10 +169,14 @@ describe('2 × 2 and 64 × 64 grids', () => {
   it('2 × 2 corner-aligned is the textbook (1−u)(1−v)a + u(1−v)b + (1−u)v c + uv d', () => {
     const g = makeGrid(2, 2, (i, j) => [3, -1, 7, 10][j * 2 + i]);
     fc.assert(
-      fc.property(fc.double({ min: 0, max: 1, noNaN: true }), fc.double({ min: 0, max: 1, noNaN: true }), (u, v) => {
-        const ref = (1 - u) * (1 - v) * 3 + u * (1 - v) * -1 + (1 - u) * v * 7 + u * v * 10;
-        return Math.abs(bilinear(g, u, v, EXAM_LOOKUP) - ref) <= 1e-13;
-      }),
+      fc.property(
+        fc.double({ min: 0, max: 1, noNaN: true }),
+        fc.double({ min: 0, max: 1, noNaN: true }),
+        (u, v) => {
+          const ref = (1 - u) * (1 - v) * 3 + u * (1 - v) * -1 + (1 - u) * v * 7 + u * v * 10;
+          return Math.abs(bilinear(g, u, v, EXAM_LOOKUP) - ref) <= 1e-13;
+        },
+      ),
     );
     expect(nearest(g, 0.49, 0.51, EXAM_LOOKUP)).toBe(7);
     expect(nearest(g, 0.5, 0.5, EXAM_LOOKUP)).toBe(10); // ties go to the larger index
@@ -183,25 +187,36 @@ describe('2 × 2 and 64 × 64 grids', () => {
     const g = makeGrid(64, 64, (i, j) => f(i / 63, j / 63));
     const r = randomGrid(64, 64, 9);
     fc.assert(
-      fc.property(fc.double({ min: 0, max: 1, noNaN: true }), fc.double({ min: 0, max: 1, noNaN: true }), (u, v) => {
-        if (Math.abs(bilinear(g, u, v, EXAM_LOOKUP) - f(u, v)) > 1e-12) return false;
-        // independent formula for the random grid, texel centres + clamp
-        const su = Math.min(Math.max(u * 64 - 0.5, 0), 63);
-        const sv = Math.min(Math.max(v * 64 - 0.5, 0), 63);
-        const i0 = Math.min(Math.floor(su), 62);
-        const j0 = Math.min(Math.floor(sv), 62);
-        const a = su - i0;
-        const b = sv - j0;
-        const ref =
-          (1 - a) * (1 - b) * texel(r, i0, j0) + a * (1 - b) * texel(r, i0 + 1, j0) + (1 - a) * b * texel(r, i0, j0 + 1) + a * b * texel(r, i0 + 1, j0 + 1);
-        return Math.abs(bilinear(r, u, v, { align: 'center', vflip: false, wrap: 'clamp' }) - ref) <= 1e-14;
-      }),
+      fc.property(
+        fc.double({ min: 0, max: 1, noNaN: true }),
+        fc.double({ min: 0, max: 1, noNaN: true }),
+        (u, v) => {
+          if (Math.abs(bilinear(g, u, v, EXAM_LOOKUP) - f(u, v)) > 1e-12) return false;
+          // independent formula for the random grid, texel centres + clamp
+          const su = Math.min(Math.max(u * 64 - 0.5, 0), 63);
+          const sv = Math.min(Math.max(v * 64 - 0.5, 0), 63);
+          const i0 = Math.min(Math.floor(su), 62);
+          const j0 = Math.min(Math.floor(sv), 62);
+          const a = su - i0;
+          const b = sv - j0;
+          const ref =
+            (1 - a) * (1 - b) * texel(r, i0, j0) +
+            a * (1 - b) * texel(r, i0 + 1, j0) +
+            (1 - a) * b * texel(r, i0, j0 + 1) +
+            a * b * texel(r, i0 + 1, j0 + 1);
+          return Math.abs(bilinear(r, u, v, { align: 'center', vflip: false, wrap: 'clamp' }) - ref) <= 1e-14;
+        },
+      ),
     );
   });
 });
 
 const gridArb: fc.Arbitrary<TextureGrid> = fc
-  .record({ w: fc.integer({ min: 2, max: 12 }), h: fc.integer({ min: 2, max: 12 }), seed: fc.integer({ min: 0, max: 1000 }) })
+  .record({
+    w: fc.integer({ min: 2, max: 12 }),
+    h: fc.integer({ min: 2, max: 12 }),
+    seed: fc.integer({ min: 0, max: 1000 }),
+  })
   .map(({ w, h, seed }) => randomGrid(w, h, seed));
 const optsArb = fc.constantFrom(...OPTS);
 const coordArb = fc.oneof(
@@ -221,7 +236,8 @@ describe('properties over all conventions and wrap modes', () => {
         if (ws.some((w) => !(w >= 0 && w <= 1))) return false;
         if (Math.abs(ws.reduce((a, b) => a + b, 0) - 1) > 1e-15) return false;
         if (!(s.fu >= 0 && s.fu <= 1 && s.fv >= 0 && s.fv <= 1)) return false;
-        if (!(s.u0 <= s.u + 1e-15 && s.u <= s.u1 + 1e-15 && s.v0 <= s.v + 1e-15 && s.v <= s.v1 + 1e-15)) return false;
+        if (!(s.u0 <= s.u + 1e-15 && s.u <= s.u1 + 1e-15 && s.v0 <= s.v + 1e-15 && s.v <= s.v1 + 1e-15))
+          return false;
         if (Math.abs(bilinearSteps(s).c - s.value) > 1e-12) return false;
         if (!Object.is(bilinear(g, u, v, o), s.value)) return false;
         const n = nearestStencil(g, u, v, o);
@@ -233,12 +249,17 @@ describe('properties over all conventions and wrap modes', () => {
 
   it('the nearest node is at least as close as every stencil node (corner alignment, inside [0, 1])', () => {
     fc.assert(
-      fc.property(gridArb, fc.double({ min: 0, max: 1, noNaN: true }), fc.double({ min: 0, max: 1, noNaN: true }), (g, u, v) => {
-        const n = nearestStencil(g, u, v, EXAM_LOOKUP);
-        const s = bilinearStencil(g, u, v, EXAM_LOOKUP);
-        const d = Math.max(Math.abs(n.nodeU - u), Math.abs(n.nodeV - v));
-        return d <= Math.max(s.du, s.dv) / 2 + 1e-12;
-      }),
+      fc.property(
+        gridArb,
+        fc.double({ min: 0, max: 1, noNaN: true }),
+        fc.double({ min: 0, max: 1, noNaN: true }),
+        (g, u, v) => {
+          const n = nearestStencil(g, u, v, EXAM_LOOKUP);
+          const s = bilinearStencil(g, u, v, EXAM_LOOKUP);
+          const d = Math.max(Math.abs(n.nodeU - u), Math.abs(n.nodeV - v));
+          return d <= Math.max(s.du, s.dv) / 2 + 1e-12;
+        },
+      ),
     );
   });
 
@@ -268,27 +289,36 @@ describe('properties over all conventions and wrap modes', () => {
 
   it('seam continuity: with texel centres and repeat, lookups just left of u = 1 and just right of u = 0 agree', () => {
     fc.assert(
-      fc.property(gridArb, fc.double({ min: 0, max: 1, noNaN: true }), fc.double({ min: 0, max: 1e-6, noNaN: true }), (g, v, d) => {
-        const o: LookupOptions = { align: 'center', vflip: false, wrap: 'repeat' };
-        const a = bilinear(g, 1 - d, v, o);
-        const b = bilinear(g, d, v, o);
-        return Math.abs(a - b) <= 2 * d * g.width * 1 + 1e-12; // values in [0, 1]: Lipschitz ≤ N per unit u
-      }),
+      fc.property(
+        gridArb,
+        fc.double({ min: 0, max: 1, noNaN: true }),
+        fc.double({ min: 0, max: 1e-6, noNaN: true }),
+        (g, v, d) => {
+          const o: LookupOptions = { align: 'center', vflip: false, wrap: 'repeat' };
+          const a = bilinear(g, 1 - d, v, o);
+          const b = bilinear(g, d, v, o);
+          return Math.abs(a - b) <= 2 * d * g.width * 1 + 1e-12; // values in [0, 1]: Lipschitz ≤ N per unit u
+        },
+      ),
     );
   });
 
   it('sphere seam: points just below and just above the +x axis map to u near 1 and u = small, always < 1', () => {
     fc.assert(
-      fc.property(fc.double({ min: 1e-300, max: 1e-6, noNaN: true }), fc.double({ min: -1, max: 1, noNaN: true }), (e, z) => {
-        const a = sphericalUV(1, -e, z);
-        const b = sphericalUV(1, e, z);
-        if (!a.ok || !b.ok) return false;
-        if (!(a.u < 1 && a.u >= 0 && b.u >= 0 && b.u < 1)) return false;
-        // the two sides are within ~e/(2π) of the seam, on opposite ends of [0, 1)
-        const o: LookupOptions = { align: 'center', vflip: false, wrap: 'repeat' };
-        const g = randomGrid(8, 8, 5);
-        return Math.abs(bilinear(g, a.u, a.v, o) - bilinear(g, b.u, b.v, o)) <= 1e-5;
-      }),
+      fc.property(
+        fc.double({ min: 1e-300, max: 1e-6, noNaN: true }),
+        fc.double({ min: -1, max: 1, noNaN: true }),
+        (e, z) => {
+          const a = sphericalUV(1, -e, z);
+          const b = sphericalUV(1, e, z);
+          if (!a.ok || !b.ok) return false;
+          if (!(a.u < 1 && a.u >= 0 && b.u >= 0 && b.u < 1)) return false;
+          // the two sides are within ~e/(2π) of the seam, on opposite ends of [0, 1)
+          const o: LookupOptions = { align: 'center', vflip: false, wrap: 'repeat' };
+          const g = randomGrid(8, 8, 5);
+          return Math.abs(bilinear(g, a.u, a.v, o) - bilinear(g, b.u, b.v, o)) <= 1e-5;
+        },
+      ),
     );
   });
 });
@@ -301,7 +331,12 @@ describe('reconstructInto', () => {
     expect(out[3 * 8 + 7]).toBeCloseTo(L(15 / 16, 1 / 8), 12);
     reconstructInto(exam, EXAM_LOOKUP, 'nearest', 8, 4, out);
     expect(out[0]).toBe(nearest(exam, 1 / 16, 7 / 8, EXAM_LOOKUP));
-    const w = reconstructInto(exam, EXAM_LOOKUP, 'bilinear', 2, 1, new Float64Array(2), { uMin: -1, uMax: 1, vMin: 0, vMax: 0.5 });
+    const w = reconstructInto(exam, EXAM_LOOKUP, 'bilinear', 2, 1, new Float64Array(2), {
+      uMin: -1,
+      uMax: 1,
+      vMin: 0,
+      vMax: 0.5,
+    });
     expect(w[0]).toBeCloseTo(L(0, 0.25), 12); // u = −0.5 clamps to 0
     expect(w[1]).toBeCloseTo(L(0.5, 0.25), 12);
   });
@@ -328,7 +363,10 @@ describe('reconstructInto', () => {
                 const u = win.uMin + (px + 0.5) * su;
                 const v = win.vMax - (py + 0.5) * sv;
                 const want = filter === 'bilinear' ? bilinear(g, u, v, o) : nearestValueFast(g, u, v, o);
-                if (!Object.is(out[py * W + px], want)) throw new Error(`${filter} ${JSON.stringify(o)} (${px}, ${py}): ${out[py * W + px]} ≠ ${want}`);
+                if (!Object.is(out[py * W + px], want))
+                  throw new Error(
+                    `${filter} ${JSON.stringify(o)} (${px}, ${py}): ${out[py * W + px]} ≠ ${want}`,
+                  );
               }
           }
   });

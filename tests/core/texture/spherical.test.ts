@@ -111,7 +111,16 @@ describe('sphericalUV', () => {
           const p = sphericalUV(x, y, z);
           if (x === 0 && y === 0 && z === 0) return !p.ok;
           if (!p.ok) return false;
-          return p.u >= 0 && p.u < 1 && p.v >= 0 && p.v <= 1 && p.phi >= 0 && p.phi < 2 * Math.PI && p.theta >= 0 && p.theta <= Math.PI;
+          return (
+            p.u >= 0 &&
+            p.u < 1 &&
+            p.v >= 0 &&
+            p.v <= 1 &&
+            p.phi >= 0 &&
+            p.phi < 2 * Math.PI &&
+            p.theta >= 0 &&
+            p.theta <= Math.PI
+          );
         },
       ),
     );

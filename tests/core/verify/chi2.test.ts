@@ -87,7 +87,10 @@ describe('chi2UpperTail', () => {
         expect(Math.abs(got - ref) / ref, `dof=${dof} x=${x}`).toBeLessThan(1e-12);
         // step a → a + 1
         gamma = M.multiply(gamma, a) as BigNumber; // Γ(a + 1) = a Γ(a)
-        q = M.add(q, M.divide(M.multiply(M.pow(y, a) as BigNumber, M.exp(M.unaryMinus(y))), gamma)) as BigNumber;
+        q = M.add(
+          q,
+          M.divide(M.multiply(M.pow(y, a) as BigNumber, M.exp(M.unaryMinus(y))), gamma),
+        ) as BigNumber;
         a = M.add(a, 1) as BigNumber;
       }
     }
@@ -133,16 +136,25 @@ describe('sidakAlpha', () => {
       [0.01, 7],
       [0.05, 1e6],
     ] as const) {
-      const ref = M.number(M.subtract(1, M.pow(M.subtract(1, big(a)) as BigNumber, M.divide(1, big(m)) as BigNumber) as BigNumber) as BigNumber) as number;
+      const ref = M.number(
+        M.subtract(
+          1,
+          M.pow(M.subtract(1, big(a)) as BigNumber, M.divide(1, big(m)) as BigNumber) as BigNumber,
+        ) as BigNumber,
+      ) as number;
       expect(Math.abs(sidakAlpha(a, m) - ref) / ref).toBeLessThan(1e-13);
     }
   });
   it('is below alpha/m·(1 + alpha) and at least alpha/m (property)', () => {
     fc.assert(
-      fc.property(fc.double({ min: 1e-12, max: 0.5, noNaN: true }), fc.integer({ min: 1, max: 1e6 }), (a, m) => {
-        const s = sidakAlpha(a, m);
-        return s >= (a / m) * (1 - 1e-12) && s <= a;
-      }),
+      fc.property(
+        fc.double({ min: 1e-12, max: 0.5, noNaN: true }),
+        fc.integer({ min: 1, max: 1e6 }),
+        (a, m) => {
+          const s = sidakAlpha(a, m);
+          return s >= (a / m) * (1 - 1e-12) && s <= a;
+        },
+      ),
     );
   });
 });

@@ -22,15 +22,18 @@ const cosineNoSqrt: Warp = (u1, u2, out, o) => {
 };
 const cosinePdf = (_x: number, _y: number, z: number) => (z > 0 ? z / Math.PI : 0);
 
-const phong = (n: number): Warp => (u1, u2, out, o) => {
-  const c = Math.pow(1 - u1, 1 / (n + 1));
-  const s = Math.sqrt(Math.max(0, 1 - c * c));
-  const phi = 2 * Math.PI * u2;
-  out[o] = s * Math.cos(phi);
-  out[o + 1] = s * Math.sin(phi);
-  out[o + 2] = c;
-};
-const phongPdf = (n: number) => (_x: number, _y: number, z: number) => (z > 0 ? ((n + 1) / (2 * Math.PI)) * Math.pow(z, n) : 0);
+const phong =
+  (n: number): Warp =>
+  (u1, u2, out, o) => {
+    const c = Math.pow(1 - u1, 1 / (n + 1));
+    const s = Math.sqrt(Math.max(0, 1 - c * c));
+    const phi = 2 * Math.PI * u2;
+    out[o] = s * Math.cos(phi);
+    out[o + 1] = s * Math.sin(phi);
+    out[o + 2] = c;
+  };
+const phongPdf = (n: number) => (_x: number, _y: number, z: number) =>
+  z > 0 ? ((n + 1) / (2 * Math.PI)) * Math.pow(z, n) : 0;
 
 // The exam lobe p(ω) = k cos θ e^φ, k = 2/(e^{2π} − 1): sin²θ = ξ1, φ = log(1 + (e^{2π} − 1) ξ2).
 const K_EXAM = 2 / Math.expm1(2 * Math.PI);
@@ -67,15 +70,18 @@ describe('gaussLegendre / adaptiveIntegrate2D', () => {
       let s = 0;
       const deg = 2 * order - 1;
       for (let i = 0; i < order; i++) {
-        sw += w[i]!;
-        s += w[i]! * Math.pow(x[i]!, deg - 1); // even power deg-1: ∫ = 2/deg
+        sw += w[i];
+        s += w[i] * Math.pow(x[i], deg - 1); // even power deg-1: ∫ = 2/deg
       }
       expect(sw).toBeCloseTo(2, 14);
       expect(s).toBeCloseTo(2 / deg, 13);
     }
   });
   it('integrates smooth and discontinuous functions', () => {
-    expect(adaptiveIntegrate2D((x, y) => Math.exp(x + y), 0, 1, 0, 2)).toBeCloseTo(Math.expm1(1) * Math.expm1(2), 12);
+    expect(adaptiveIntegrate2D((x, y) => Math.exp(x + y), 0, 1, 0, 2)).toBeCloseTo(
+      Math.expm1(1) * Math.expm1(2),
+      12,
+    );
     // a step along x = 1/3 (not a cell boundary): area of [0,1/3]×[0,1]
     const step = adaptiveIntegrate2D((x) => (x < 1 / 3 ? 1 : 0), 0, 1, 0, 1);
     expect(Math.abs(step - 1 / 3)).toBeLessThan(1e-6);

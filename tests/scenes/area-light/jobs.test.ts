@@ -19,7 +19,7 @@ describe('area-light jobs (what the worker runs)', () => {
     expect(last.done).toBe(true);
     expect(last.spp).toBe(PASS_SPP.reduce((a, b) => a + b, 0));
     expect(last.images.length).toBe(3);
-    for (const r of last.rmse) expect(r).toBeLessThanOrEqual(frames[0]!.rmse[0]! * 10);
+    for (const r of last.rmse) expect(r).toBeLessThanOrEqual(frames[0].rmse[0] * 10);
   });
 });
 
@@ -31,8 +31,8 @@ describe('renderJob keeps every pass for the timeline', () => {
     const job = floorJob(buildModel(defaultValues(schema)), 3, 8);
     const last = await renderJob(job);
     expect(last.passes.map((p) => p.spp)).toEqual([...PASS_TOTAL]);
-    expect(Array.from(last.passes.at(-1)!.images[0]!)).toEqual(Array.from(last.images[0]!));
+    expect(Array.from(last.passes.at(-1)!.images[0])).toEqual(Array.from(last.images[0]));
     // earlier passes are noisier on average than the last (RMSE against the reference)
-    expect(last.passes[0]!.rmse[0]!).toBeGreaterThan(last.rmse[0]!);
+    expect(last.passes[0].rmse[0]).toBeGreaterThan(last.rmse[0]);
   });
 });

@@ -78,10 +78,10 @@ describe('area-light model', () => {
   });
 
   it('facing away and partly below the horizon are explained', () => {
-    expect(buildModel(withP({ tilt: 180 })).messages[0]!.text).toMatch(/faces away/);
+    expect(buildModel(withP({ tilt: 180 })).messages[0].text).toMatch(/faces away/);
     const m = buildModel(withP({ lc: [0, 1, 0.2], tilt: -90 }));
     expect(m.belowHorizon).toBeCloseTo(0.3, 2);
-    expect(m.messages[0]!.text).toMatch(/below the horizon/);
+    expect(m.messages[0].text).toMatch(/below the horizon/);
   });
 
   it('occluder: the estimators converge to the occluded analytic value', () => {
@@ -96,8 +96,10 @@ describe('area-light model', () => {
     const { points, terms } = drawSamples(m, 'solid-angle', 64, 1);
     expect(points.length).toBe(192);
     for (let i = 0; i < 64; i++) {
-      const d = [points[3 * i]! - m.lc[0], points[3 * i + 1]! - m.lc[1], points[3 * i + 2]! - m.lc[2]];
-      expect(Math.abs(d[0]! * m.light.normal[0] + d[1]! * m.light.normal[1] + d[2]! * m.light.normal[2])).toBeLessThan(1e-12);
+      const d = [points[3 * i] - m.lc[0], points[3 * i + 1] - m.lc[1], points[3 * i + 2] - m.lc[2]];
+      expect(
+        Math.abs(d[0] * m.light.normal[0] + d[1] * m.light.normal[1] + d[2] * m.light.normal[2]),
+      ).toBeLessThan(1e-12);
     }
     const est = estimateAll(m, 64, 1).find((e) => e.strategy === 'solid-angle')!;
     expect(terms.reduce((a, b) => a + b, 0) / 64).toBeCloseTo(est.estimate, 12);
@@ -108,15 +110,19 @@ describe('area-light model', () => {
     const big = patchModel(m, 0.3, 0.6, 0.5, 15);
     const small = patchModel(m, 0.3, 0.6, 0.005, 15);
     expect(Math.abs(small.relError)).toBeLessThan(Math.abs(big.relError) / 1000);
-    expect(small.projected.every((q) => Math.abs(Math.hypot(q[0] - m.p[0], q[1] - m.p[1], q[2] - m.p[2]) - 1) < 1e-12)).toBe(true);
+    expect(
+      small.projected.every(
+        (q) => Math.abs(Math.hypot(q[0] - m.p[0], q[1] - m.p[1], q[2] - m.p[2]) - 1) < 1e-12,
+      ),
+    ).toBe(true);
     const rs = Array.from(small.series.relError).filter(Number.isFinite);
-    expect(rs[rs.length - 1]!).toBeLessThan(rs[0]!);
+    expect(rs[rs.length - 1]).toBeLessThan(rs[0]);
   });
 
   it('convergence series and a floor pass are finite, and the floor image approaches the reference', () => {
     const m = buildModel(base());
     const c = convergence(m, 4096, 1);
-    for (const s of c) expect(Number.isFinite(s.estimate[s.estimate.length - 1]!)).toBe(true);
+    for (const s of c) expect(Number.isFinite(s.estimate[s.estimate.length - 1])).toBe(true);
     const job = floorJob(m, 1, 16);
     const ref = referenceImage(job);
     const sum = new Float64Array(256);
@@ -136,22 +142,25 @@ describe('Q6(c) given samples and the animation (pure functions of params, seed,
       const d = draw(m, 'area', 4, 11);
       let sum = 0;
       g.samples.forEach((s, i) => {
-        expect(s.term).toBeCloseTo(d.terms[i]!, 12);
+        expect(s.term).toBeCloseTo(d.terms[i], 12);
         expect(s.pA).toBeCloseTo(1 / m.light.area, 12);
-        for (let c = 0; c < 3; c++) expect(s.x[c]).toBeCloseTo(d.points[3 * i + c]!, 12);
+        for (let c = 0; c < 3; c++) expect(s.x[c]).toBeCloseTo(d.points[3 * i + c], 12);
         // the key's form of the term, recomputed from the printed factors
-        const keyTerm = s.V ? (m.light.area * (m.rho / Math.PI) * m.L * s.cosTheta * s.cosThetaL) / (s.r * s.r) : 0;
+        const keyTerm = s.V
+          ? (m.light.area * (m.rho / Math.PI) * m.L * s.cosTheta * s.cosThetaL) / (s.r * s.r)
+          : 0;
         expect(s.term).toBeCloseTo(keyTerm, 12);
         sum += s.term;
       });
       expect(g.estimate).toBeCloseTo(sum / 4, 14);
       // the first four samples are the first four of the n-sample estimate (same stream)
-      expect(g.estimate).toBeCloseTo(estimateAll(m, 4, 11)[0]!.estimate, 14);
+      expect(g.estimate).toBeCloseTo(estimateAll(m, 4, 11)[0].estimate, 14);
     }
   });
 
   it('animationFrame at t = n reproduces the estimate readout; at t = k the mean of the first k terms', async () => {
-    const { sampleRun, animationFrame, animationLength } = await import('../../../src/scenes/area-light/model');
+    const { sampleRun, animationFrame, animationLength } =
+      await import('../../../src/scenes/area-light/model');
     const m = buildModel(withP({ occluder: true }));
     for (const s of ['area', 'solid-angle', 'cosine'] as const) {
       const n = 300;
@@ -163,7 +172,7 @@ describe('Q6(c) given samples and the animation (pure functions of params, seed,
       expect(f.stderr).toBeCloseTo(full.stderr, 13);
       const k = 37;
       let mean = 0;
-      for (let i = 0; i < k; i++) mean += run.terms[i]!;
+      for (let i = 0; i < k; i++) mean += run.terms[i];
       expect(animationFrame(run, k + 0.6).estimate).toBeCloseTo(mean / k, 13);
       expect(animationFrame(run, 0).k).toBe(0);
       expect(Number.isNaN(animationFrame(run, 1).stderr)).toBe(true);

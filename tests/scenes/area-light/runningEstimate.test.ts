@@ -5,13 +5,27 @@ import type { SampleRun } from '../../../src/scenes/area-light/model';
 
 function run(mean: number[], stderr: number[] = mean.map((_, i) => (i ? 0.1 : NaN))): SampleRun {
   const n = mean.length;
-  return { strategy: 'area', count: n, points: new Float64Array(3 * n), terms: Float64Array.from(mean), mean: Float64Array.from(mean), stderr: Float64Array.from(stderr) } as SampleRun;
+  return {
+    strategy: 'area',
+    count: n,
+    points: new Float64Array(3 * n),
+    terms: Float64Array.from(mean),
+    mean: Float64Array.from(mean),
+    stderr: Float64Array.from(stderr),
+  } as SampleRun;
 }
 
 const NUM = /-?\d+(\.\d+)?/;
 /** Every coordinate of an SVG path is a number ("NaN" or "Infinity" in an attribute is a console error). */
 function pathOk(d: string): boolean {
-  return !/NaN|Infinity/.test(d) && (d === '' || d.split(/[MLZ]/).filter(Boolean).every((p) => p.split(',').every((c) => NUM.test(c))));
+  return (
+    !/NaN|Infinity/.test(d) &&
+    (d === '' ||
+      d
+        .split(/[MLZ]/)
+        .filter(Boolean)
+        .every((p) => p.split(',').every((c) => NUM.test(c))))
+  );
 }
 
 describe('running-estimate plot geometry: never NaN in an attribute', () => {

@@ -1,5 +1,17 @@
 import { describe, expect, it } from 'vitest';
-import { animFrame, growCount, makeLobe, morphFraction, rmseOverRuns, squarePoint, varianceCheck, warpedGrid, GRID_LINES, exactIntegral, computeDrawStats } from '../../../src/scenes/hemisphere/model';
+import {
+  animFrame,
+  growCount,
+  makeLobe,
+  morphFraction,
+  rmseOverRuns,
+  squarePoint,
+  varianceCheck,
+  warpedGrid,
+  GRID_LINES,
+  exactIntegral,
+  computeDrawStats,
+} from '../../../src/scenes/hemisphere/model';
 import { fillSequence2D } from '../../../src/core/random';
 
 const cosTheta = (t: number) => Math.cos(t);
@@ -32,14 +44,15 @@ describe('hemisphere animation model (pure in params, seed, t)', () => {
     fillSequence2D('stratified', 5, 64, u, 0, 1, 0);
     const a = animFrame(lobe, 'stratified', 5, 64, 'warp', 0);
     expect(a.tracked!.xi1).toBe(u[0]);
-    expect(a.tracked!.pos).toEqual(Array.from(squarePoint(u[0]!, u[1]!)));
+    expect(a.tracked!.pos).toEqual(Array.from(squarePoint(u[0], u[1])));
     const b = animFrame(lobe, 'stratified', 5, 64, 'warp', 1);
     expect(b.tracked!.pos).toEqual(b.tracked!.dir);
     expect(Math.hypot(...b.tracked!.dir)).toBeCloseTo(1, 12);
     // θ = arcsin √ξ₁ for the exam lobe
-    expect(b.tracked!.theta).toBeCloseTo(Math.asin(Math.sqrt(u[0]!)), 12);
+    expect(b.tracked!.theta).toBeCloseTo(Math.asin(Math.sqrt(u[0])), 12);
     const mid = animFrame(lobe, 'stratified', 5, 64, 'warp', 0.5);
-    for (let i = 0; i < 3; i++) expect(mid.tracked!.pos[i]).toBeCloseTo((a.tracked!.pos[i]! + b.tracked!.dir[i]!) / 2, 12);
+    for (let i = 0; i < 3; i++)
+      expect(mid.tracked!.pos[i]).toBeCloseTo((a.tracked!.pos[i] + b.tracked!.dir[i]) / 2, 12);
     // the growth shows the same sample on the hemisphere once it is drawn
     expect(animFrame(lobe, 'stratified', 5, 64, 'grow', 0).shown).toBe(0);
     expect(animFrame(lobe, 'stratified', 5, 64, 'grow', 1).tracked!.pos).toEqual(b.tracked!.dir);
@@ -52,16 +65,17 @@ describe('hemisphere animation model (pure in params, seed, t)', () => {
     const g1 = warpedGrid(lobe, 1, 8);
     expect(g0.pos.length).toBe(3 * 2 * 2 * (GRID_LINES + 1) * 8);
     for (let k = 0; k < g0.pos.length / 3; k++) {
-      expect(g0.pos[3 * k]).toBeCloseTo(2 * g0.xi[2 * k]! - 1, 14);
+      expect(g0.pos[3 * k]).toBeCloseTo(2 * g0.xi[2 * k] - 1, 14);
       expect(g0.pos[3 * k + 2]).toBe(0);
-      expect(Math.hypot(g1.pos[3 * k]!, g1.pos[3 * k + 1]!, g1.pos[3 * k + 2]!)).toBeCloseTo(1, 9);
+      expect(Math.hypot(g1.pos[3 * k], g1.pos[3 * k + 1], g1.pos[3 * k + 2])).toBeCloseTo(1, 9);
     }
   });
 });
 
 describe('variance warnings', () => {
   it('Phong with f = cos θ: finite for n ≤ 2, infinite for n ≥ 3 (f/p ∝ cos^{1−n} θ)', () => {
-    for (const n of [0, 1, 2]) expect(varianceCheck(makeLobe('phong', n)!, cosTheta, Math.PI).infinite).toBe(false);
+    for (const n of [0, 1, 2])
+      expect(varianceCheck(makeLobe('phong', n)!, cosTheta, Math.PI).infinite).toBe(false);
     for (const n of [3, 8, 100]) {
       const v = varianceCheck(makeLobe('phong', n)!, cosTheta, Math.PI);
       expect(v.infinite).toBe(true);
@@ -77,7 +91,9 @@ describe('variance warnings', () => {
     const ex = makeLobe('exam', 8)!;
     const e = varianceCheck(ex, cosTheta, Math.PI);
     expect(e.infinite).toBe(false);
-    expect(e.importanceVar / ((1 - Math.exp(-2 * Math.PI)) / (2 * ex.k) - Math.PI ** 2) - 1).toBeLessThan(1e-6);
+    expect(e.importanceVar / ((1 - Math.exp(-2 * Math.PI)) / (2 * ex.k) - Math.PI ** 2) - 1).toBeLessThan(
+      1e-6,
+    );
     expect(e.ratio).toBeGreaterThan(10);
   });
 

@@ -20,6 +20,7 @@ describe('the default integrand without the parser', () => {
 
   test('spacing does not matter; anything else goes to the parser', () => {
     expect(compileThetaPhiFast(' cos( theta ) ')).not.toBeNull();
-    for (const s of ['cos(theta)^2', 'cos(phi)', 'sin(theta)', '', 'cos(theta) + 0']) expect(compileThetaPhiFast(s)).toBeNull();
+    for (const s of ['cos(theta)^2', 'cos(phi)', 'sin(theta)', '', 'cos(theta) + 0'])
+      expect(compileThetaPhiFast(s)).toBeNull();
   });
 });

@@ -10,11 +10,14 @@ async function fnOf(src: string) {
 }
 
 describe('checkedIntegral (hemisphere ∫ f dω)', () => {
-  it.each(['tan(theta)', '1/cos(theta)', 'theta^-2', '1/(theta-0.5)'])('calls %s divergent, with no value', async (src) => {
-    const r = checkedIntegral(await fnOf(src));
-    expect(r.value).toBeNaN();
-    expect(r.problem).toMatch(/does not converge/);
-  });
+  it.each(['tan(theta)', '1/cos(theta)', 'theta^-2', '1/(theta-0.5)'])(
+    'calls %s divergent, with no value',
+    async (src) => {
+      const r = checkedIntegral(await fnOf(src));
+      expect(r.value).toBeNaN();
+      expect(r.problem).toMatch(/does not converge/);
+    },
+  );
 
   it.each(['sqrt(cos(phi))', '1e308', 'exp(1000*theta)'])('says f is not finite for %s', async (src) => {
     const r = checkedIntegral(await fnOf(src));
@@ -41,7 +44,7 @@ describe('q2Estimates blames the right thing', () => {
     const u = new Float64Array(2 * n);
     for (let i = 0; i < n; i++) {
       u[2 * i] = (i + 0.5) / n;
-      u[2 * i + 1] = ((i * 0.618034) % 1 + 1) % 1;
+      u[2 * i + 1] = (((i * 0.618034) % 1) + 1) % 1;
     }
     const dirs = new Float64Array(3 * n);
     lobe.sampleBatch(u, dirs, n);

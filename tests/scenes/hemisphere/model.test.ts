@@ -1,5 +1,13 @@
 import { describe, expect, it } from 'vitest';
-import { computeDrawStats, exactIntegral, invertedJacobianSeries, makeLobe, marginalHistograms, drawDirections, repeatEstimates } from '../../../src/scenes/hemisphere/model';
+import {
+  computeDrawStats,
+  exactIntegral,
+  invertedJacobianSeries,
+  makeLobe,
+  marginalHistograms,
+  drawDirections,
+  repeatEstimates,
+} from '../../../src/scenes/hemisphere/model';
 import { tabulateHemisphereDensity, examLobeK } from '../../../src/core/sampling';
 import { LOBES } from '../../../src/scenes/hemisphere/params';
 
@@ -19,7 +27,7 @@ describe('hemisphere scene model', () => {
     expect(makeLobe('phong', 8)!.k).toBe(9 / (2 * Math.PI));
     expect(makeLobe('custom', 8, null)).toBeNull();
     // typed cos²θ (2 + cos φ): ∫ = 2π · 2/3 … → k = 3/(4π)
-    expect(Math.abs(customLobe().k * (4 * Math.PI) / 3 - 1)).toBeLessThan(2e-3);
+    expect(Math.abs((customLobe().k * (4 * Math.PI)) / 3 - 1)).toBeLessThan(2e-3);
   });
 
   it('exact ∫ cos θ dω = π; ∫ 1 dω = 2π; ∫ cos²θ sin φ dω = 0', () => {
@@ -35,7 +43,9 @@ describe('hemisphere scene model', () => {
       const s = computeDrawStats(lobe, cosTheta, 'independent', 3, 20000);
       expect(s.chi2!.pass, id).toBe(true);
       expect(Math.abs(s.q2.uniform.estimate - Math.PI)).toBeLessThan(4 * s.q2.uniform.stderr);
-      expect(Math.abs(s.q2.importance.estimate - Math.PI), id).toBeLessThan(4 * s.q2.importance.stderr + 1e-12);
+      expect(Math.abs(s.q2.importance.estimate - Math.PI), id).toBeLessThan(
+        4 * s.q2.importance.stderr + 1e-12,
+      );
       expect(s.q2.importance.invalid).toBe(0);
     }
   });
@@ -51,11 +61,11 @@ describe('hemisphere scene model', () => {
     const { dirs } = drawDirections(lobe, 'sobol', 2, 1 << 16);
     const h = marginalHistograms(lobe, dirs, 1 << 16, 36);
     let mass = 0;
-    for (let b = 0; b < 36; b++) mass += h.theta.density[b]! * h.theta.width;
+    for (let b = 0; b < 36; b++) mass += h.theta.density[b] * h.theta.width;
     expect(mass).toBeCloseTo(1, 12);
     // p(θ) = sin 2θ: bin at centre π/4 ≈ 1
-    expect(h.theta.density[18]!).toBeGreaterThan(0.95);
-    expect(h.phi.curveY[200]!).toBeGreaterThan(0); // last curve point inside the half-open support
+    expect(h.theta.density[18]).toBeGreaterThan(0.95);
+    expect(h.phi.curveY[200]).toBeGreaterThan(0); // last curve point inside the half-open support
   });
 
   it('repeat many times: the mean of independent estimates centres on the integral (Q2(c))', () => {
@@ -77,11 +87,11 @@ describe('hemisphere scene model', () => {
   it('inverted Jacobian: partial integrals grow without bound, always finite', () => {
     const { eps, partial } = invertedJacobianSeries(40);
     for (let i = 1; i < 40; i++) {
-      expect(eps[i]!).toBeLessThan(eps[i - 1]!);
-      expect(partial[i]!).toBeGreaterThan(partial[i - 1]!);
-      expect(Number.isFinite(partial[i]!)).toBe(true);
+      expect(eps[i]).toBeLessThan(eps[i - 1]);
+      expect(partial[i]).toBeGreaterThan(partial[i - 1]);
+      expect(Number.isFinite(partial[i])).toBe(true);
     }
-    expect(partial[39]!).toBeGreaterThan(34); // −ln 1e-15 ≈ 34.5
+    expect(partial[39]).toBeGreaterThan(34); // −ln 1e-15 ≈ 34.5
   });
 
   it('no lobe (inverted Jacobian or invalid typed density): no χ², importance estimate off, uniform still valid', () => {

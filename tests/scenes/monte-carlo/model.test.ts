@@ -14,7 +14,13 @@ import {
   squareShift,
 } from '../../../src/scenes/monte-carlo/model';
 import { compileX } from '../../../src/scenes/monte-carlo/expr';
-import { convergenceJob, estimateJob, histogramJob, rmseJob, type ProblemArgs } from '../../../src/scenes/monte-carlo/jobs';
+import {
+  convergenceJob,
+  estimateJob,
+  histogramJob,
+  rmseJob,
+  type ProblemArgs,
+} from '../../../src/scenes/monte-carlo/jobs';
 import { parseParams } from '../../../src/app/params';
 import { schema } from '../../../src/scenes/monte-carlo/params';
 
@@ -60,13 +66,13 @@ describe('model', () => {
     const notes = keyComparison('(x+2)^2', 0, 2, EXAM_SAMPLES, t);
     expect(notes).toHaveLength(5);
     for (const [i, x] of EXAM_SAMPLES.entries()) {
-      expect(notes[i]!.computed).toBeCloseTo((x + 2) ** 2, 13);
-      expect(notes[i]!.agrees).toBe(roundTo((x + 2) ** 2, 2) === KEY_PRINTED.f[i]);
+      expect(notes[i].computed).toBeCloseTo((x + 2) ** 2, 13);
+      expect(notes[i].agrees).toBe(roundTo((x + 2) ** 2, 2) === KEY_PRINTED.f[i]);
     }
     // (1.16+2)² = 9.9856 rounds to 9.99, not 9.98; 0.54 → 6.4516 → 6.45 agrees
-    expect(notes[0]!.agrees).toBe(false);
-    expect(notes[2]!.agrees).toBe(true);
-    expect(notes[4]!.agrees).toBe(true); // the final 21.45 is right
+    expect(notes[0].agrees).toBe(false);
+    expect(notes[2].agrees).toBe(true);
+    expect(notes[4].agrees).toBe(true); // the final 21.45 is right
     expect(keyComparison('(x+2)^2', 0, 3, EXAM_SAMPLES, t)).toEqual([]);
   });
 
@@ -92,7 +98,7 @@ describe('model', () => {
   it('curves and histogram', () => {
     const c = curves(f, (x) => (3 / 56) * f(x), 0, 2, 11);
     expect(c.f[10]).toBe(16);
-    expect(Math.abs(c.p[10]! - 16)).toBeLessThan(0.1);
+    expect(Math.abs(c.p[10] - 16)).toBeLessThan(0.1);
     const h = histogram([1, 2, 2, 3, NaN], 2);
     expect(Array.from(h.counts)).toEqual([1, 3]);
     expect(histogram([5, 5], 3).counts.reduce((s, v) => s + v, 0)).toBe(2);
@@ -128,14 +134,17 @@ describe('jobs (as run in the worker)', () => {
     const [u, p, c] = r.series;
     expect(u!.recorded).toBe(u!.n.length);
     const k = u!.recorded - 1;
-    expect(Math.abs(u!.estimate[k]! - I)).toBeLessThan(5 * u!.stderr[k]!);
+    expect(Math.abs(u!.estimate[k] - I)).toBeLessThan(5 * u!.stderr[k]);
     for (const e of p!.absError) expect(e).toBeLessThan(1e-12);
-    expect(Math.abs(c!.estimate[c!.recorded - 1]! - I)).toBeLessThan(0.05);
+    expect(Math.abs(c!.estimate[c!.recorded - 1] - I)).toBeLessThan(0.05);
     expect(partials.length).toBeGreaterThan(0);
   });
 
   it('rmse: times are measured, p ∝ f has ~zero RMSE, uniform slope ≈ −1/2', async () => {
-    const r = await rmseJob({ ...base, strategies: base.strategies.slice(0, 2), nMax: 2000, runs: 24 }, compileX);
+    const r = await rmseJob(
+      { ...base, strategies: base.strategies.slice(0, 2), nMax: 2000, runs: 24 },
+      compileX,
+    );
     const [u, p] = r.rmse;
     expect(u!.runs).toBe(24);
     expect(Math.abs(u!.slope + 0.5)).toBeLessThan(0.2);
@@ -144,7 +153,7 @@ describe('jobs (as run in the worker)', () => {
   });
 
   it('histogram: mean of many estimates ≈ the integral (unbiasedness)', async () => {
-    const r = await histogramJob({ ...base, strategies: [base.strategies[0]!], N: 8, M: 2000 }, compileX);
+    const r = await histogramJob({ ...base, strategies: [base.strategies[0]], N: 8, M: 2000 }, compileX);
     let s = 0;
     for (const e of r.estimates) s += e;
     const mean = s / r.estimates.length;
@@ -153,9 +162,11 @@ describe('jobs (as run in the worker)', () => {
   });
 
   it('estimate job equals the drawn estimate and reports bad input', async () => {
-    const r = await estimateJob({ ...base, strategies: [base.strategies[1]!], n: 300000 }, compileX);
+    const r = await estimateJob({ ...base, strategies: [base.strategies[1]], n: 300000 }, compileX);
     expect(r.estimate).toBeCloseTo(I, 12);
-    await expect(estimateJob({ ...base, f: 'y + 1', strategies: [base.strategies[0]!], n: 10 }, compileX)).rejects.toThrow(/f:/);
+    await expect(
+      estimateJob({ ...base, f: 'y + 1', strategies: [base.strategies[0]], n: 10 }, compileX),
+    ).rejects.toThrow(/f:/);
   });
 });
 
@@ -173,7 +184,35 @@ describe('samples field parsing', async () => {
 
 describe('formatCount', () => {
   it('writes what toLocaleString("en") writes, for counts of every length and the odd cases', () => {
-    const xs = [0, 1, 9, 10, 99, 100, 999, 1000, 1001, 9999, 10000, 12345, 99999, 100000, 999999, 1000000, 1234567, 10000000, 2 ** 31, 2 ** 32 + 7, Number.MAX_SAFE_INTEGER, -0, -1234, 1.5, 1234.5678, NaN, Infinity];
+    const xs = [
+      0,
+      1,
+      9,
+      10,
+      99,
+      100,
+      999,
+      1000,
+      1001,
+      9999,
+      10000,
+      12345,
+      99999,
+      100000,
+      999999,
+      1000000,
+      1234567,
+      10000000,
+      2 ** 31,
+      2 ** 32 + 7,
+      Number.MAX_SAFE_INTEGER,
+      -0,
+      -1234,
+      1.5,
+      1234.5678,
+      NaN,
+      Infinity,
+    ];
     for (let k = 0; k < 2000; k++) xs.push(Math.floor((k * 7919) ** 1.7) % 123456789);
     for (const x of xs) expect(formatCount(x), String(x)).toBe(x.toLocaleString('en'));
   });

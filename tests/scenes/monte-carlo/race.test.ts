@@ -4,8 +4,25 @@
  */
 import { describe, expect, it } from 'vitest';
 import { Rng } from '../../../src/core/random/rng';
-import { customPdf1D, linearPdf1D, proportionalPdf1D, squarePdf1D, uniformPdf1D, type Pdf1D } from '../../../src/core/sampling/pdf1d';
-import { atRoundingLevel, RACE_STREAM, raceAt, racePoints, raceTrack, sortedByX, squareAntiderivative, squareNormalizer, stderrIsValid } from '../../../src/scenes/monte-carlo/model';
+import {
+  customPdf1D,
+  linearPdf1D,
+  proportionalPdf1D,
+  squarePdf1D,
+  uniformPdf1D,
+  type Pdf1D,
+} from '../../../src/core/sampling/pdf1d';
+import {
+  atRoundingLevel,
+  RACE_STREAM,
+  raceAt,
+  racePoints,
+  raceTrack,
+  sortedByX,
+  squareAntiderivative,
+  squareNormalizer,
+  stderrIsValid,
+} from '../../../src/scenes/monte-carlo/model';
 
 const f = (x: number) => (x + 2) ** 2;
 const I = (4 ** 3 - 2 ** 3) / 3;
@@ -24,7 +41,7 @@ function direct(seed: number, t: number) {
     const v = ys.reduce((s, y) => s + (y - m) ** 2, 0) / (ys.length - 1);
     return { m, se: Math.sqrt(v / ys.length) };
   };
-  return { xu: 2 * xi[t - 1]!, u: stats(tu), i: stats(ti), lastTermU: tu[t - 1]! };
+  return { xu: 2 * xi[t - 1], u: stats(tu), i: stats(ti), lastTermU: tu[t - 1] };
 }
 
 describe('race model', () => {
@@ -52,12 +69,15 @@ describe('race model', () => {
     expect(b.uniform).toEqual(a.uniform);
     expect(b.curve).toEqual(a.curve);
     expect(raceAt(raceTrack(f, 0, 2, squarePdf1D(0, 2, 2), I, 7, 2000), 1234)).toEqual(a);
-    expect(raceAt(raceTrack(f, 0, 2, squarePdf1D(0, 2, 2), I, 8, 2000), 1234).uniform.x).not.toBe(a.uniform.x);
+    expect(raceAt(raceTrack(f, 0, 2, squarePdf1D(0, 2, 2), I, 8, 2000), 1234).uniform.x).not.toBe(
+      a.uniform.x,
+    );
   });
 
   it('both lanes use the same ξᵢ: the importance x is P⁻¹ of the uniform lane’s ξ', () => {
     const p = squarePdf1D(0, 2, 2);
-    for (let k = 0; k < 50; k++) expect(track.importance.x[k]).toBeCloseTo(p.sample(track.uniform.x[k]! / 2), 12);
+    for (let k = 0; k < 50; k++)
+      expect(track.importance.x[k]).toBeCloseTo(p.sample(track.uniform.x[k] / 2), 12);
   });
 
   it('t = 0 shows nothing; t is clamped; curves grow with t and end at t', () => {
@@ -68,14 +88,15 @@ describe('race model', () => {
     expect(raceAt(track, 1e9).t).toBe(2000);
     const fr = raceAt(track, 777);
     expect(fr.curve.n.at(-1)).toBe(777);
-    expect(fr.curve.n.every((n, k) => k === 0 || n > fr.curve.n[k - 1]!)).toBe(true);
+    expect(fr.curve.n.every((n, k) => k === 0 || n > fr.curve.n[k - 1])).toBe(true);
     expect(fr.recentU.length).toBe(40);
     expect(fr.recentU.at(-1)).toBe(fr.uniform.x);
   });
 
   it('a uniform importance pdf reproduces the uniform lane', () => {
     const t2 = raceTrack(f, 0, 2, uniformPdf1D(0, 2), I, 3, 100);
-    for (let k = 0; k < 100; k++) expect(Math.abs(t2.importance.mean[k]! - t2.uniform.mean[k]!)).toBeLessThan(1e-11);
+    for (let k = 0; k < 100; k++)
+      expect(Math.abs(t2.importance.mean[k] - t2.uniform.mean[k])).toBeLessThan(1e-11);
   });
 });
 
@@ -101,7 +122,10 @@ function plainTrack(g: (x: number) => number, a: number, b: number, imp: Pdf1D, 
   const xs = xi.map((u) => imp.sample(u));
   return {
     xi,
-    uniform: lane(xu, xu.map((x) => (b - a) * g(x))),
+    uniform: lane(
+      xu,
+      xu.map((x) => (b - a) * g(x)),
+    ),
     importance: lane(
       xs,
       xs.map((x) => {
@@ -132,7 +156,8 @@ describe('raceTrack equals the plain per-sample computation exactly', () => {
       const got = raceTrack(g1, a, b, imp, 1, 5, 3000);
       expect(Array.from(got.xi)).toEqual(want.xi);
       for (const lane of ['uniform', 'importance'] as const) {
-        for (const k of ['x', 'term', 'mean', 'm2'] as const) expect(Array.from(got[lane][k]), `${lane}.${k}`).toEqual(want[lane][k]);
+        for (const k of ['x', 'term', 'mean', 'm2'] as const)
+          expect(Array.from(got[lane][k]), `${lane}.${k}`).toEqual(want[lane][k]);
       }
     });
   }

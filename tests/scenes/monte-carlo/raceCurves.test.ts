@@ -29,8 +29,8 @@ describe('race curves (incremental paths)', () => {
     const path = (ys: number[], sy: (v: number) => number) => {
       let d = '';
       c.n.forEach((n, k) => {
-        if (!Number.isFinite(ys[k]!)) return;
-        d += `${d ? 'L' : 'M'}${ex(n).toFixed(1)},${sy(ys[k]!).toFixed(1)}`;
+        if (!Number.isFinite(ys[k])) return;
+        d += `${d ? 'L' : 'M'}${ex(n).toFixed(1)},${sy(ys[k]).toFixed(1)}`;
       });
       return d;
     };
@@ -38,9 +38,9 @@ describe('race curves (incremental paths)', () => {
       const up: string[] = [];
       const dn: string[] = [];
       c.n.forEach((n, k) => {
-        if (!Number.isFinite(se[k]!)) return;
-        up.push(`${ex(n).toFixed(1)},${ey(clampY(est[k]! + se[k]!)).toFixed(1)}`);
-        dn.push(`${ex(n).toFixed(1)},${ey(clampY(est[k]! - se[k]!)).toFixed(1)}`);
+        if (!Number.isFinite(se[k])) return;
+        up.push(`${ex(n).toFixed(1)},${ey(clampY(est[k] + se[k])).toFixed(1)}`);
+        dn.push(`${ex(n).toFixed(1)},${ey(clampY(est[k] - se[k])).toFixed(1)}`);
       });
       return up.length ? `M${up.join('L')}L${dn.reverse().join('L')}Z` : '';
     };
@@ -56,7 +56,9 @@ describe('race curves (incremental paths)', () => {
 
   it('equals the from-scratch paths forward, after a loop back, and after seeks', () => {
     const curves = raceCurves(track, points, fig, I);
-    const ts = [0, 1, 2, 3, 5, 32, 33, 34, 35, 47, 48, 100, 101, 733, 1999, 2000, 0, 1, 4, 40, 1200, 17, 2000];
+    const ts = [
+      0, 1, 2, 3, 5, 32, 33, 34, 35, 47, 48, 100, 101, 733, 1999, 2000, 0, 1, 4, 40, 1200, 17, 2000,
+    ];
     for (const t of ts) expect(curves.at(t), `t = ${t}`).toEqual(reference(t));
   });
 

@@ -14,10 +14,25 @@ import {
   errorVsDistance,
   tidy,
 } from '../../../src/scenes/ray-sphere/model';
-import { schema, CASE_PRESETS, PRECISION_PRESETS, type RaySphereParams } from '../../../src/scenes/ray-sphere/params';
+import {
+  schema,
+  CASE_PRESETS,
+  PRECISION_PRESETS,
+  type RaySphereParams,
+} from '../../../src/scenes/ray-sphere/params';
 import type { Vec3 } from '../../../src/core/geometry';
 
-const base: RaySphereParams = { o: [-3, -1.2, 0.6], d: [1, 0.4, -0.15], c: [0, 0, 0], r: 1, method: 'stable', sweep: 'offset', extent: 2.5, t: 0.5, play: false };
+const base: RaySphereParams = {
+  o: [-3, -1.2, 0.6],
+  d: [1, 0.4, -0.15],
+  c: [0, 0, 0],
+  r: 1,
+  method: 'stable',
+  sweep: 'offset',
+  extent: 2.5,
+  t: 0.5,
+  play: false,
+};
 
 describe('input checks: bad input → message + safe fallback', () => {
   it('zero direction falls back to the default direction', () => {
@@ -42,12 +57,20 @@ describe('input checks: bad input → message + safe fallback', () => {
   it('the model never throws and never yields NaN readouts, for any numbers', () => {
     const num = fc.oneof(fc.double(), fc.constantFrom(0, -0, 1e300, -1e300, NaN, Infinity));
     fc.assert(
-      fc.property(fc.tuple(num, num, num), fc.tuple(num, num, num), fc.tuple(num, num, num), num, (o, d, c, r) => {
-        const m = computeModel({ o, d, c, r, method: 'naive' });
-        if (m.fatal) return typeof m.fatal === 'string' && m.chosen === null;
-        const x = m.chosen!;
-        return [x.a, x.b, x.c, x.discriminant].every(Number.isFinite) && (x.t0 === null || Number.isFinite(x.t0));
-      }),
+      fc.property(
+        fc.tuple(num, num, num),
+        fc.tuple(num, num, num),
+        fc.tuple(num, num, num),
+        num,
+        (o, d, c, r) => {
+          const m = computeModel({ o, d, c, r, method: 'naive' });
+          if (m.fatal) return typeof m.fatal === 'string' && m.chosen === null;
+          const x = m.chosen!;
+          return (
+            [x.a, x.b, x.c, x.discriminant].every(Number.isFinite) && (x.t0 === null || Number.isFinite(x.t0))
+          );
+        },
+      ),
       { seed: 21, numRuns: 300 },
     );
   });
@@ -85,7 +108,7 @@ describe('2D frame through the ray and the centre', () => {
     expect(x1 - x0).toBeCloseTo(Math.hypot(...d), 12);
     expect(y0).toBeGreaterThan(0);
     const back = fromFrame(fr, x0, y0);
-    back.forEach((v, i) => expect(v).toBeCloseTo(o[i]!, 12));
+    back.forEach((v, i) => expect(v).toBeCloseTo(o[i], 12));
     expect(frameFits(fr, o, d, [0, 0, 0], 1e-9)).toBe(true);
     expect(frameFits(fr, o, d, [0, 1, 0], 1e-9)).toBe(false);
   });
@@ -101,12 +124,13 @@ describe('2D frame through the ray and the centre', () => {
 
 describe('g(t) curve', () => {
   it('is zero at the roots (vertex form) and spans them', () => {
-    const m = computeModel({ ...base, ...CASE_PRESETS[0]!.params });
+    const m = computeModel({ ...base, ...CASE_PRESETS[0].params });
     const g = gCurve(m.chosen!);
     expect(g.tMin).toBeLessThan(m.chosen!.t0!);
     expect(g.tMax).toBeGreaterThan(m.chosen!.t1!);
     const { a, b, c } = m.chosen!;
-    for (const t of [m.chosen!.t0!, m.chosen!.t1!]) expect(Math.abs(a * t * t + b * t + c)).toBeLessThan(1e-12);
+    for (const t of [m.chosen!.t0!, m.chosen!.t1!])
+      expect(Math.abs(a * t * t + b * t + c)).toBeLessThan(1e-12);
   });
 });
 
@@ -124,7 +148,7 @@ describe('distant sphere image and error vs distance', () => {
     const s = errorVsDistance([1, 4, 6, 8]);
     expect(s.discNaive[3]).toBeGreaterThan(0.1); // garbage at 1e8
     expect(s.discStable[3]).toBeLessThan(1e-6);
-    expect(s.discNaive[2]!).toBeGreaterThan(100 * s.discNaive[0]!);
+    expect(s.discNaive[2]).toBeGreaterThan(100 * s.discNaive[0]);
     expect(s.hitStable.every((e) => e < 1e-14)).toBe(true);
   });
 });

@@ -2,17 +2,35 @@
 // where the line is tangent; the far preset's textbook Δ flickers in sign, the robust one does not.
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import { checkInputs, computeModel, makeSweep, paramsAt, sweepAt, sweepSeries, sweepXRange } from '../../../src/scenes/ray-sphere/model';
+import {
+  checkInputs,
+  computeModel,
+  makeSweep,
+  paramsAt,
+  sweepAt,
+  sweepSeries,
+  sweepXRange,
+} from '../../../src/scenes/ray-sphere/model';
 import { PRECISION_PRESETS, schema, type RaySphereParams } from '../../../src/scenes/ray-sphere/params';
 
-const base: RaySphereParams = { o: [-3, 0.3, 0.2], d: [1, 0, 0], c: [0, 0, 0], r: 1, method: 'stable', sweep: 'offset', extent: 2.5, t: 0.5, play: false };
+const base: RaySphereParams = {
+  o: [-3, 0.3, 0.2],
+  d: [1, 0, 0],
+  c: [0, 0, 0],
+  r: 1,
+  method: 'stable',
+  sweep: 'offset',
+  extent: 2.5,
+  t: 0.5,
+  play: false,
+};
 const sw = (p: RaySphereParams) => makeSweep(checkInputs(p), p.sweep as 'offset' | 'rotate', p.extent);
 const dist = (o: readonly number[], d: readonly number[], c: readonly number[]) => {
   // distance of the line o + t d from c
-  const f = [o[0]! - c[0]!, o[1]! - c[1]!, o[2]! - c[2]!];
-  const dd = d[0]! ** 2 + d[1]! ** 2 + d[2]! ** 2;
-  const k = (f[0]! * d[0]! + f[1]! * d[1]! + f[2]! * d[2]!) / dd;
-  return Math.hypot(f[0]! - k * d[0]!, f[1]! - k * d[1]!, f[2]! - k * d[2]!);
+  const f = [o[0] - c[0], o[1] - c[1], o[2] - c[2]];
+  const dd = d[0] ** 2 + d[1] ** 2 + d[2] ** 2;
+  const k = (f[0] * d[0] + f[1] * d[1] + f[2] * d[2]) / dd;
+  return Math.hypot(f[0] - k * d[0], f[1] - k * d[1], f[2] - k * d[2]);
 };
 
 describe('sweepAt', () => {
@@ -24,12 +42,19 @@ describe('sweepAt', () => {
     }
   });
   it('offset: the origin moves perpendicular to d by ±E r; the line passes C at |x| r', () => {
-    const p = { ...base, o: [-3, -1.2, 0.6], d: [1, 0.4, -0.15], c: [0.5, 0.2, -0.1], r: 1.3, extent: 2 } as RaySphereParams;
+    const p = {
+      ...base,
+      o: [-3, -1.2, 0.6],
+      d: [1, 0.4, -0.15],
+      c: [0.5, 0.2, -0.1],
+      r: 1.3,
+      extent: 2,
+    } as RaySphereParams;
     const S = sw(p);
     for (const t of [0, 0.1, 0.37, 0.5, 0.9, 1]) {
       const s = sweepAt(S, t);
-      const moved = s.o.map((x, i) => x - p.o[i]!);
-      expect(Math.abs(moved[0]! * p.d[0]! + moved[1]! * p.d[1]! + moved[2]! * p.d[2]!)).toBeLessThan(1e-12);
+      const moved = s.o.map((x, i) => x - p.o[i]);
+      expect(Math.abs(moved[0] * p.d[0] + moved[1] * p.d[1] + moved[2] * p.d[2])).toBeLessThan(1e-12);
       expect(Math.hypot(...moved)).toBeCloseTo(Math.abs(2 * t - 1) * 2 * 1.3, 12);
       expect(dist(s.o, s.d, p.c)).toBeCloseTo(Math.abs(s.x) * 1.3, 12);
       expect(s.d).toEqual(p.d);
@@ -44,19 +69,23 @@ describe('sweepAt', () => {
       expect(s.o).toEqual(p.o);
       expect(Math.hypot(...s.d)).toBeCloseTo(2, 12);
       const toC = [4, -1, -0.5];
-      const cos = (s.d[0] * toC[0]! + s.d[1] * toC[1]! + s.d[2] * toC[2]!) / (2 * Math.hypot(4, 1, 0.5));
+      const cos = (s.d[0] * toC[0] + s.d[1] * toC[1] + s.d[2] * toC[2]) / (2 * Math.hypot(4, 1, 0.5));
       expect(Math.acos(Math.min(1, cos)) / alpha).toBeCloseTo(Math.abs(s.x), 9);
     }
   });
   it('is a pure function of (params, t) (property)', () => {
     fc.assert(
-      fc.property(fc.double({ min: 0, max: 1, noNaN: true }), fc.constantFrom('offset', 'rotate'), (t, mode) => {
-        const p = { ...base, sweep: mode } as RaySphereParams;
-        expect(sweepAt(sw(p), t)).toEqual(sweepAt(sw(p), t));
-        const m1 = computeModel(paramsAt(p, sw(p), t));
-        const m2 = computeModel(paramsAt(p, sw(p), t));
-        expect(m1.chosen).toEqual(m2.chosen);
-      }),
+      fc.property(
+        fc.double({ min: 0, max: 1, noNaN: true }),
+        fc.constantFrom('offset', 'rotate'),
+        (t, mode) => {
+          const p = { ...base, sweep: mode } as RaySphereParams;
+          expect(sweepAt(sw(p), t)).toEqual(sweepAt(sw(p), t));
+          const m1 = computeModel(paramsAt(p, sw(p), t));
+          const m2 = computeModel(paramsAt(p, sw(p), t));
+          expect(m1.chosen).toEqual(m2.chosen);
+        },
+      ),
       { numRuns: 50 },
     );
   });
@@ -119,17 +148,27 @@ describe('sweepSeries', () => {
     }
   });
   it('never throws or yields NaN, for any inputs (property)', () => {
-    const num = fc.oneof(fc.double({ min: -1e6, max: 1e6, noNaN: true }), fc.constantFrom(0, -0, 1e12, NaN, Infinity));
+    const num = fc.oneof(
+      fc.double({ min: -1e6, max: 1e6, noNaN: true }),
+      fc.constantFrom(0, -0, 1e12, NaN, Infinity),
+    );
     fc.assert(
-      fc.property(fc.tuple(num, num, num), fc.tuple(num, num, num), num, fc.constantFrom('offset', 'rotate'), fc.double({ min: 0, max: 1, noNaN: true }), (o, d, r, mode, t) => {
-        const S = makeSweep(checkInputs({ o, d, c: [0, 0, 0], r }), mode, 2.5);
-        const ser = sweepSeries({ method: 'stable' }, S, 24);
-        // (x = h / r is ±∞ only for a subnormal radius)
-        expect(ser.x.some(Number.isNaN)).toBe(false);
-        expect(Number.isNaN(sweepAt(S, t).x)).toBe(false);
-        expect(sweepAt(S, t).o.every(Number.isFinite)).toBe(true);
-        expect(ser.gWindow.tMax).toBeGreaterThan(ser.gWindow.tMin);
-      }),
+      fc.property(
+        fc.tuple(num, num, num),
+        fc.tuple(num, num, num),
+        num,
+        fc.constantFrom('offset', 'rotate'),
+        fc.double({ min: 0, max: 1, noNaN: true }),
+        (o, d, r, mode, t) => {
+          const S = makeSweep(checkInputs({ o, d, c: [0, 0, 0], r }), mode, 2.5);
+          const ser = sweepSeries({ method: 'stable' }, S, 24);
+          // (x = h / r is ±∞ only for a subnormal radius)
+          expect(ser.x.some(Number.isNaN)).toBe(false);
+          expect(Number.isNaN(sweepAt(S, t).x)).toBe(false);
+          expect(sweepAt(S, t).o.every(Number.isFinite)).toBe(true);
+          expect(ser.gWindow.tMax).toBeGreaterThan(ser.gWindow.tMin);
+        },
+      ),
       { numRuns: 80 },
     );
   });
@@ -156,7 +195,8 @@ describe('t_min: secondary rays leaving the surface', () => {
     }
   });
   it('the survey cast in ranges (as the page does, in short tasks) adds up to the whole survey', async () => {
-    const { selfIntersectionSurvey, selfIntersectionSurveyRange } = await import('../../../src/scenes/ray-sphere/model');
+    const { selfIntersectionSurvey, selfIntersectionSurveyRange } =
+      await import('../../../src/scenes/ray-sphere/model');
     const c: [number, number, number] = [0.3, -1.7, 2.9];
     for (const method of ['naive', 'stable'] as const) {
       const whole = selfIntersectionSurvey(c, 0.7, method, 1000);

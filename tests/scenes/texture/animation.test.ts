@@ -6,8 +6,25 @@ import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { parseParams } from '../../../src/app/params';
 import { schema } from '../../../src/scenes/texture/params';
-import { creases, frameAt, lookupAt, lookupOptions, pathOf, pathPoint, pathProfile, resolveGrid, type QueryPath } from '../../../src/scenes/texture/model';
-import { bilinear, checkerGrid, examGrid, nearest, randomGrid, type LookupOptions } from '../../../src/core/texture';
+import {
+  creases,
+  frameAt,
+  lookupAt,
+  lookupOptions,
+  pathOf,
+  pathPoint,
+  pathProfile,
+  resolveGrid,
+  type QueryPath,
+} from '../../../src/scenes/texture/model';
+import {
+  bilinear,
+  checkerGrid,
+  examGrid,
+  nearest,
+  randomGrid,
+  type LookupOptions,
+} from '../../../src/core/texture';
 
 const EXAM: LookupOptions = { align: 'corner', vflip: false, wrap: 'clamp' };
 const L = (u: number, v: number) => 21 + 4 * u - 20 * v;
@@ -35,16 +52,23 @@ describe('path', () => {
 
   it('circle: through both ends (a at t = 0 and 1, b at t = ½), counter-clockwise, on the circle', () => {
     fc.assert(
-      fc.property(fc.double({ min: -2, max: 2, noNaN: true }), fc.double({ min: -2, max: 2, noNaN: true }), fc.double({ min: -2, max: 2, noNaN: true }), fc.double({ min: -2, max: 2, noNaN: true }), fc.double({ min: 0, max: 1, noNaN: true }), (au, av, bu, bv, t) => {
-        const path: QueryPath = { kind: 'circle', a: [au, av], b: [bu, bv] };
-        const c = [(au + bu) / 2, (av + bv) / 2];
-        const r = Math.hypot(bu - au, bv - av) / 2;
-        const p = pathPoint(path, t);
-        expect(Math.abs(Math.hypot(p.u - c[0], p.v - c[1]) - r)).toBeLessThan(1e-9);
-        const h = pathPoint(path, 0.5);
-        expect(Math.abs(h.u - bu)).toBeLessThan(1e-9);
-        expect(Math.abs(h.v - bv)).toBeLessThan(1e-9);
-      }),
+      fc.property(
+        fc.double({ min: -2, max: 2, noNaN: true }),
+        fc.double({ min: -2, max: 2, noNaN: true }),
+        fc.double({ min: -2, max: 2, noNaN: true }),
+        fc.double({ min: -2, max: 2, noNaN: true }),
+        fc.double({ min: 0, max: 1, noNaN: true }),
+        (au, av, bu, bv, t) => {
+          const path: QueryPath = { kind: 'circle', a: [au, av], b: [bu, bv] };
+          const c = [(au + bu) / 2, (av + bv) / 2];
+          const r = Math.hypot(bu - au, bv - av) / 2;
+          const p = pathPoint(path, t);
+          expect(Math.abs(Math.hypot(p.u - c[0], p.v - c[1]) - r)).toBeLessThan(1e-9);
+          const h = pathPoint(path, 0.5);
+          expect(Math.abs(h.u - bu)).toBeLessThan(1e-9);
+          expect(Math.abs(h.v - bv)).toBeLessThan(1e-9);
+        },
+      ),
     );
     const path: QueryPath = { kind: 'circle', a: [1, 0.5], b: [0, 0.5] };
     expect(pathPoint(path, 0)).toEqual({ u: 1, v: 0.5 });
@@ -73,12 +97,20 @@ describe('values along the path', () => {
   it('exam grid: the borders crossed are where the line meets the node lines; no kinks (the texture is linear)', () => {
     const p = pathProfile(examGrid(), EXAM, line);
     // u = 0.5, 0.75 and v = 0.25, 0.5, 0.75 along u = 0.4 + 0.45 t, v = 0.24 + 0.56 t
-    const want = [(0.25 - 0.24) / 0.56, (0.5 - 0.4) / 0.45, (0.5 - 0.24) / 0.56, (0.75 - 0.4) / 0.45, (0.75 - 0.24) / 0.56].sort((a, b) => a - b);
+    const want = [
+      (0.25 - 0.24) / 0.56,
+      (0.5 - 0.4) / 0.45,
+      (0.5 - 0.24) / 0.56,
+      (0.75 - 0.4) / 0.45,
+      (0.75 - 0.24) / 0.56,
+    ].sort((a, b) => a - b);
     expect(p.borders.map((b) => b.t)).toHaveLength(want.length);
     p.borders.forEach((b, k) => expect(Math.abs(b.t - want[k])).toBeLessThan(1e-9));
     expect(p.borders.every((b) => !b.kink && !b.jump)).toBe(true);
     // bilinear along the path equals the linear function
-    p.ts.forEach((t, k) => expect(Math.abs(p.bil[k] - L(0.4 + 0.45 * t, 0.24 + 0.56 * t))).toBeLessThan(1e-9));
+    p.ts.forEach((t, k) =>
+      expect(Math.abs(p.bil[k] - L(0.4 + 0.45 * t, 0.24 + 0.56 * t))).toBeLessThan(1e-9),
+    );
     expect(p.breaks).toEqual([]);
   });
 
@@ -106,7 +138,11 @@ describe('values along the path', () => {
   });
 
   it('repeat with corner nodes across u = 1: one border, a jump (column 4 to column 0), no kink claimed', () => {
-    const p = pathProfile(examGrid(), { ...EXAM, wrap: 'repeat' }, { kind: 'line', a: [0.4, 0.24], b: [1.6, 0.3] });
+    const p = pathProfile(
+      examGrid(),
+      { ...EXAM, wrap: 'repeat' },
+      { kind: 'line', a: [0.4, 0.24], b: [1.6, 0.3] },
+    );
     const jumps = p.borders.filter((b) => b.jump);
     expect(jumps).toHaveLength(1);
     expect(Math.abs(jumps[0].t - 0.5)).toBeLessThan(1e-9);

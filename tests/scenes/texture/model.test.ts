@@ -18,7 +18,16 @@ import {
   textureImage,
   withCell,
 } from '../../../src/scenes/texture/model';
-import { EXAM_GRID_TEXT, WRAP_MODES, examGrid, formatGrid, randomGrid, reconstructInto, texel, type LookupOptions } from '../../../src/core/texture';
+import {
+  EXAM_GRID_TEXT,
+  WRAP_MODES,
+  examGrid,
+  formatGrid,
+  randomGrid,
+  reconstructInto,
+  texel,
+  type LookupOptions,
+} from '../../../src/core/texture';
 import { colorInto, normalizeValue } from '../../../src/scenes/texture/colormap';
 
 const L = (u: number, v: number) => 21 - 20 * v + 4 * u; // the exam grid as a function of (u, v)
@@ -87,7 +96,8 @@ describe('texture scene model', () => {
 
   it('the drawn (in-window) lookup has the same bilinear value as the actual one, for every convention (property)', () => {
     const all: LookupOptions[] = [];
-    for (const align of ['corner', 'center'] as const) for (const vflip of [false, true]) for (const wrap of WRAP_MODES) all.push({ align, vflip, wrap });
+    for (const align of ['corner', 'center'] as const)
+      for (const vflip of [false, true]) for (const wrap of WRAP_MODES) all.push({ align, vflip, wrap });
     fc.assert(
       fc.property(
         fc.constantFrom(...all),
@@ -108,10 +118,19 @@ describe('texture scene model', () => {
 
   it('addressing notes explain outside queries and the v-flip', () => {
     const m = modelOf('u=1.4&wrap=repeat');
-    expect(addressingNotes(m.p.u, m.p.v, m.opts, m.q).join(' ')).toMatch(/u = 1\.4 is outside \[0, 1\]; repeat addressing uses u = 0\.4/);
+    expect(addressingNotes(m.p.u, m.p.v, m.opts, m.q).join(' ')).toMatch(
+      /u = 1\.4 is outside \[0, 1\]; repeat addressing uses u = 0\.4/,
+    );
     const f = modelOf('vflip=1');
     expect(addressingNotes(f.p.u, f.p.v, f.opts, f.q).join(' ')).toMatch(/v′ = 1 − v = 0\.76/);
-    expect(addressingNotes(0.4, 0.24, lookupOptions(defaultValues(schema)), lookupAt(examGrid(), 0.4, 0.24, lookupOptions(defaultValues(schema))))).toEqual([]);
+    expect(
+      addressingNotes(
+        0.4,
+        0.24,
+        lookupOptions(defaultValues(schema)),
+        lookupAt(examGrid(), 0.4, 0.24, lookupOptions(defaultValues(schema))),
+      ),
+    ).toEqual([]);
   });
 
   it('textureImage is opaque RGBA of the right size and follows the value order', () => {
@@ -128,7 +147,12 @@ describe('texture scene model', () => {
     const W = 31;
     const H = 19;
     for (const filter of ['nearest', 'bilinear'] as const)
-      for (const range of [{ min: -0.2, max: 0.7 }, { min: 0.3, max: 0.3 }, { min: NaN, max: 1 }, { min: 0.4, max: 0.5 }]) {
+      for (const range of [
+        { min: -0.2, max: 0.7 },
+        { min: 0.3, max: 0.3 },
+        { min: NaN, max: 1 },
+        { min: 0.4, max: 0.5 },
+      ]) {
         const opts = lookupOptions({ align: 'center', vflip: true, wrap: 'mirror' });
         const win = { uMin: -0.3, uMax: 1.2, vMin: -0.1, vMax: 1.4 };
         const img = textureImage(g, opts, filter, W, H, range, win);
@@ -136,7 +160,12 @@ describe('texture scene model', () => {
         const c = [0, 0, 0];
         for (let k = 0; k < W * H; k++) {
           colorInto(normalizeValue(vals[k], range.min, range.max), c);
-          expect([img[4 * k], img[4 * k + 1], img[4 * k + 2], img[4 * k + 3]]).toEqual([c[0], c[1], c[2], 255]);
+          expect([img[4 * k], img[4 * k + 1], img[4 * k + 2], img[4 * k + 3]]).toEqual([
+            c[0],
+            c[1],
+            c[2],
+            255,
+          ]);
         }
       }
   });

@@ -5,7 +5,14 @@
  */
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import { pathPoint, pathPointInto, pathProfile, type CellBorder, type PathProfile, type QueryPath } from '../../../src/scenes/texture/model';
+import {
+  pathPoint,
+  pathPointInto,
+  pathProfile,
+  type CellBorder,
+  type PathProfile,
+  type QueryPath,
+} from '../../../src/scenes/texture/model';
 import {
   WRAP_MODES,
   bilinear,
@@ -37,7 +44,15 @@ function nearKey(grid: TextureGrid, u: number, v: number, opts: LookupOptions): 
 }
 
 /** All t in (lo, hi] where key changes, each as a bracket [l, h] with h − l ≤ 1e-12 (bisection). */
-function findChanges(key: (t: number) => string, lo: number, hi: number, kLo: string, kHi: string, out: [number, number][], depth = 0): void {
+function findChanges(
+  key: (t: number) => string,
+  lo: number,
+  hi: number,
+  kLo: string,
+  kHi: string,
+  out: [number, number][],
+  depth = 0,
+): void {
   if (kLo === kHi || depth > 64) return;
   let l = lo;
   let h = hi;
@@ -58,7 +73,12 @@ function findChanges(key: (t: number) => string, lo: number, hi: number, kLo: st
  * the slope along the path changes, a jump where the value does. Inside one cell bilinear is a
  * smooth function of t (a quadratic along a line), so kinks can only sit at cell borders.
  */
-function referenceProfile(grid: TextureGrid, opts: LookupOptions, path: QueryPath, samples = 400): PathProfile {
+function referenceProfile(
+  grid: TextureGrid,
+  opts: LookupOptions,
+  path: QueryPath,
+  samples = 400,
+): PathProfile {
   const at = (t: number) => pathPoint(path, t);
   const bilAt = (t: number) => {
     const p = at(t);
@@ -143,46 +163,71 @@ function referenceProfile(grid: TextureGrid, opts: LookupOptions, path: QueryPat
 }
 
 const OPTS: LookupOptions[] = [];
-for (const align of ['corner', 'center'] as const) for (const vflip of [false, true]) for (const wrap of WRAP_MODES) OPTS.push({ align, vflip, wrap });
+for (const align of ['corner', 'center'] as const)
+  for (const vflip of [false, true]) for (const wrap of WRAP_MODES) OPTS.push({ align, vflip, wrap });
 
 const coord = fc.double({ min: -2.5, max: 3.5, noNaN: true });
-const pathArb = fc.record({ kind: fc.constantFrom<'line' | 'circle'>('line', 'circle'), a: fc.tuple(coord, coord), b: fc.tuple(coord, coord) });
+const pathArb = fc.record({
+  kind: fc.constantFrom<'line' | 'circle'>('line', 'circle'),
+  a: fc.tuple(coord, coord),
+  b: fc.tuple(coord, coord),
+});
 const gridArb = fc.oneof(
   fc.constant(examGrid()),
   fc.constant(checkerGrid(8, 8)),
-  fc.record({ w: fc.integer({ min: 2, max: 9 }), h: fc.integer({ min: 2, max: 9 }), seed: fc.integer({ min: 0, max: 1000 }) }).map(({ w, h, seed }) => randomGrid(w, h, seed)),
+  fc
+    .record({
+      w: fc.integer({ min: 2, max: 9 }),
+      h: fc.integer({ min: 2, max: 9 }),
+      seed: fc.integer({ min: 0, max: 1000 }),
+    })
+    .map(({ w, h, seed }) => randomGrid(w, h, seed)),
 );
 
 describe('the path profile, fast form', () => {
   it('equals the reference profile exactly (random grids, paths, conventions)', () => {
     fc.assert(
-      fc.property(gridArb, pathArb, fc.constantFrom(...OPTS), (grid: TextureGrid, path: QueryPath, opts: LookupOptions) => {
-        expect(pathProfile(grid, opts, path, 60)).toEqual(referenceProfile(grid, opts, path, 60));
-      }),
+      fc.property(
+        gridArb,
+        pathArb,
+        fc.constantFrom(...OPTS),
+        (grid: TextureGrid, path: QueryPath, opts: LookupOptions) => {
+          expect(pathProfile(grid, opts, path, 60)).toEqual(referenceProfile(grid, opts, path, 60));
+        },
+      ),
       { numRuns: 40, seed: 15 },
     );
   });
 
   it('equals the reference on the exam, the default path, at full resolution', () => {
     const path: QueryPath = { kind: 'line', a: [0.4, 0.24], b: [0.85, 0.8] };
-    for (const opts of OPTS) expect(pathProfile(examGrid(), opts, path)).toEqual(referenceProfile(examGrid(), opts, path));
+    for (const opts of OPTS)
+      expect(pathProfile(examGrid(), opts, path)).toEqual(referenceProfile(examGrid(), opts, path));
     const circle: QueryPath = { kind: 'circle', a: [0.4, 0.24], b: [1.3, -0.2] };
-    expect(pathProfile(checkerGrid(8, 8), OPTS[5], circle)).toEqual(referenceProfile(checkerGrid(8, 8), OPTS[5], circle));
+    expect(pathProfile(checkerGrid(8, 8), OPTS[5], circle)).toEqual(
+      referenceProfile(checkerGrid(8, 8), OPTS[5], circle),
+    );
   });
 
   it('pathPointInto gives pathPoint’s numbers; the tap helpers give the stencils’ taps', () => {
     const out = new Float64Array(6);
     fc.assert(
-      fc.property(gridArb, pathArb, fc.constantFrom(...OPTS), fc.double({ min: -0.5, max: 1.5, noNaN: true }), (grid, path, opts, t) => {
-        pathPointInto(path, t, out);
-        const p = pathPoint(path, t);
-        expect([out[0], out[1]]).toEqual([p.u, p.v]);
-        bilinearTapsInto(grid, p.u, p.v, opts, out, 1);
-        const s = bilinearStencil(grid, p.u, p.v, opts);
-        expect([out[1], out[2], out[3], out[4]]).toEqual([s.i0, s.i1, s.j0, s.j1]);
-        const n = nearestStencil(grid, p.u, p.v, opts);
-        expect(nearestTapIndex(grid, p.u, p.v, opts)).toBe(n.j * grid.width + n.i);
-      }),
+      fc.property(
+        gridArb,
+        pathArb,
+        fc.constantFrom(...OPTS),
+        fc.double({ min: -0.5, max: 1.5, noNaN: true }),
+        (grid, path, opts, t) => {
+          pathPointInto(path, t, out);
+          const p = pathPoint(path, t);
+          expect([out[0], out[1]]).toEqual([p.u, p.v]);
+          bilinearTapsInto(grid, p.u, p.v, opts, out, 1);
+          const s = bilinearStencil(grid, p.u, p.v, opts);
+          expect([out[1], out[2], out[3], out[4]]).toEqual([s.i0, s.i1, s.j0, s.j1]);
+          const n = nearestStencil(grid, p.u, p.v, opts);
+          expect(nearestTapIndex(grid, p.u, p.v, opts)).toBe(n.j * grid.width + n.i);
+        },
+      ),
       { numRuns: 300, seed: 16 },
     );
   });

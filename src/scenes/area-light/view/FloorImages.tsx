@@ -20,9 +20,12 @@ function paint(canvas: HTMLCanvasElement | null, img: Float32Array | undefined, 
   const data = ctx.createImageData(size, size);
   const d = data.data;
   for (let k = 0; k < size * size; k++) {
-    const v = img[k]!;
+    const v = img[k];
     if (!Number.isFinite(v)) {
-      d[4 * k] = 120; d[4 * k + 1] = 60; d[4 * k + 2] = 120; d[4 * k + 3] = 255;
+      d[4 * k] = 120;
+      d[4 * k + 1] = 60;
+      d[4 * k + 2] = 120;
+      d[4 * k + 3] = 255;
       continue;
     }
     const t = Math.pow(Math.min(1, Math.max(0, v / scale)), 1 / 2.2);
@@ -44,10 +47,16 @@ export function FloorImages({ job, pass = PASS_TOTAL.length - 1 }: { job: FloorJ
   // (debounced so dragging a slider does not queue renders).
   const box = useRef<HTMLDivElement>(null);
   const seenOnce = useSeenOnce(box);
-  const task = useWorkerJob<FloorFrame, FloorFrame>(makeWorker, 'render', job, { delayMs: 250, enabled: seenOnce });
+  const task = useWorkerJob<FloorFrame, FloorFrame>(makeWorker, 'render', job, {
+    delayMs: 250,
+    enabled: seenOnce,
+  });
   const refs = useRef<(HTMLCanvasElement | null)[]>([]);
   // Partials seen for the current job, by pass (a partial carries one pass; the result all of them).
-  const seen = useRef<{ job: FloorJob | null; byPass: Map<number, FloorFrame> }>({ job: null, byPass: new Map() });
+  const seen = useRef<{ job: FloorJob | null; byPass: Map<number, FloorFrame> }>({
+    job: null,
+    byPass: new Map(),
+  });
   if (seen.current.job !== job) seen.current = { job, byPass: new Map() };
   if (task.partial) seen.current.byPass.set(PASS_TOTAL.indexOf(task.partial.spp), task.partial);
 
@@ -75,11 +84,14 @@ export function FloorImages({ job, pass = PASS_TOTAL.length - 1 }: { job: FloorJ
           <span className="field-error">Rendering failed: {task.error}</span>
         ) : task.running ? (
           <>
-            <progress max={1} value={task.progress} aria-label="Rendering progress" /> {fr ? `${fr.spp} samples per pixel so far…` : 'starting…'}
+            <progress max={1} value={task.progress} aria-label="Rendering progress" />{' '}
+            {fr ? `${fr.spp} samples per pixel so far…` : 'starting…'}
           </>
         ) : fr && full ? (
           <span data-testid="floor-spp" data-value={fr.spp}>
-            {fr.spp === full.spp ? `${fr.spp} samples per pixel (done).` : `Showing ${fr.spp} of ${full.spp} samples per pixel, in step with the timeline (done).`}
+            {fr.spp === full.spp
+              ? `${fr.spp} samples per pixel (done).`
+              : `Showing ${fr.spp} of ${full.spp} samples per pixel, in step with the timeline (done).`}
           </span>
         ) : (
           'Waiting…'
@@ -100,7 +112,12 @@ export function FloorImages({ job, pass = PASS_TOTAL.length - 1 }: { job: FloorJ
             <figcaption>
               {label}
               {i > 0 && fr ? (
-                <Readout id={`image-rmse-${STRATEGIES[i - 1]}`} label="RMSE vs reference" value={fr.rmse[i - 1] ?? null} digits={3} />
+                <Readout
+                  id={`image-rmse-${STRATEGIES[i - 1]}`}
+                  label="RMSE vs reference"
+                  value={fr.rmse[i - 1] ?? null}
+                  digits={3}
+                />
               ) : null}
               {i > 0 && fr ? <span className="al-ms">{(fr.ms[i - 1] ?? 0).toFixed(0)} ms</span> : null}
             </figcaption>

@@ -19,7 +19,8 @@ const RMAX = 150;
 
 function fmt(x: number, d = 4): string {
   if (!Number.isFinite(x)) return '—';
-  if (x !== 0 && (Math.abs(x) < 1e-3 || Math.abs(x) >= 1e5)) return x.toExponential(d - 1).replace('e', '×10^');
+  if (x !== 0 && (Math.abs(x) < 1e-3 || Math.abs(x) >= 1e5))
+    return x.toExponential(d - 1).replace('e', '×10^');
   return Number(x.toPrecision(d)).toString();
 }
 
@@ -46,32 +47,43 @@ export function patchFigureLayout(patch: PatchModel) {
 
 export function PatchFigure({ patch }: { patch: PatchModel }) {
   const { thetaL, D, R, s, distanceToScale, patchToScale } = patchFigureLayout(patch);
-  const cx = PX + D, cy = PY;
+  const cx = PX + D,
+    cy = PY;
   // The patch: a segment through its centre, turned θ_l from the perpendicular to the ray.
-  const ux = Math.sin(thetaL), uy = Math.cos(thetaL);
+  const ux = Math.sin(thetaL),
+    uy = Math.cos(thetaL);
   const a = { x: cx - (s / 2) * ux, y: cy - (s / 2) * uy };
   const b = { x: cx + (s / 2) * ux, y: cy + (s / 2) * uy };
   // dA⊥: perpendicular to the ray, side dl = s cos θ_l (in this cross-section).
   const dl = s * Math.cos(thetaL);
-  const pa = { x: cx, y: cy - dl / 2 }, pb = { x: cx, y: cy + dl / 2 };
+  const pa = { x: cx, y: cy - dl / 2 },
+    pb = { x: cx, y: cy + dl / 2 };
   // Where the cone p → dA⊥ meets the unit circle (the ends of dω_l).
   const onCircle = (q: { x: number; y: number }) => {
-    const dx = q.x - PX, dy = q.y - PY, l = Math.hypot(dx, dy) || 1;
+    const dx = q.x - PX,
+      dy = q.y - PY,
+      l = Math.hypot(dx, dy) || 1;
     return { x: PX + (R * dx) / l, y: PY + (R * dy) / l };
   };
-  const ca = onCircle(pa), cbb = onCircle(pb);
+  const ca = onCircle(pa),
+    cbb = onCircle(pb);
   const far = Math.max(D, R) + 24;
   const ext = (q: { x: number; y: number }) => {
-    const dx = q.x - PX, dy = q.y - PY, l = Math.hypot(dx, dy) || 1;
+    const dx = q.x - PX,
+      dy = q.y - PY,
+      l = Math.hypot(dx, dy) || 1;
     return { x: PX + (far * dx) / l, y: PY + (far * dy) / l };
   };
-  const ea = ext(pa), eb = ext(pb);
+  const ea = ext(pa),
+    eb = ext(pb);
   // Patch normal n_l (towards p's side) and the θ_l arc between n_l and the direction back to p.
-  const nx = -Math.cos(thetaL), ny = Math.sin(thetaL);
+  const nx = -Math.cos(thetaL),
+    ny = Math.sin(thetaL);
   const nLen = 56;
   const arcR = 30;
   const arcEnd = { x: cx + arcR * nx, y: cy + arcR * ny };
-  const C70 = Math.cos((62 * Math.PI) / 180), S70 = Math.sin((62 * Math.PI) / 180);
+  const C70 = Math.cos((62 * Math.PI) / 180),
+    S70 = Math.sin((62 * Math.PI) / 180);
   const scaleNote = !distanceToScale
     ? `r = ${fmt(patch.r, 3)} and the unit radius are not to scale here`
     : !patchToScale
@@ -87,7 +99,15 @@ export function PatchFigure({ patch }: { patch: PatchModel }) {
       aria-label={`Cross-section of Q6(a), ${scaleNote}: the patch of area ${fmt(patch.area)} at distance r = ${fmt(patch.r)}, tilted by θ_l = ${fmt((thetaL * 180) / Math.PI, 3)} degrees. Its perpendicular projection dA⊥ has side dl; the similar triangles give dω_l = dl / r, so dω = dA cos θ_l / r² = ${fmt(patch.approx)} sr (exactly ${fmt(patch.exact)} sr).`}
     >
       <defs>
-        <marker id="al-arrow" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="6" markerHeight="6" orient="auto-start-reverse">
+        <marker
+          id="al-arrow"
+          viewBox="0 0 10 10"
+          refX="9"
+          refY="5"
+          markerWidth="6"
+          markerHeight="6"
+          orient="auto-start-reverse"
+        >
           <path d="M0,0 L10,5 L0,10 z" fill="currentColor" />
         </marker>
       </defs>
@@ -95,12 +115,20 @@ export function PatchFigure({ patch }: { patch: PatchModel }) {
       <path d={`M ${PX} ${PY} L ${cx} ${cy} L ${pa.x} ${pa.y} Z`} className="al-fig-tri-big" />
       <path d={`M ${PX} ${PY} L ${PX + R} ${PY} L ${ca.x} ${ca.y} Z`} className="al-fig-tri-small" />
       {/* unit circle (arc) around p */}
-      <path d={`M ${PX + R * C70} ${PY - R * S70} A ${R} ${R} 0 0 1 ${PX + R * C70} ${PY + R * S70}`} className="al-fig-circle" />
+      <path
+        d={`M ${PX + R * C70} ${PY - R * S70} A ${R} ${R} 0 0 1 ${PX + R * C70} ${PY + R * S70}`}
+        className="al-fig-circle"
+      />
       {/* the cone from p through the ends of dA⊥ */}
       <line x1={PX} y1={PY} x2={ea.x} y2={ea.y} className="al-fig-cone" />
       <line x1={PX} y1={PY} x2={eb.x} y2={eb.y} className="al-fig-cone" />
       <line x1={PX} y1={PY} x2={cx} y2={cy} className="al-fig-ray" />
-      <text x={PX + Math.max(R + 14, R + 0.3 * (D - R))} y={PY + 22} textAnchor="middle" className="al-fig-label">
+      <text
+        x={PX + Math.max(R + 14, R + 0.3 * (D - R))}
+        y={PY + 22}
+        textAnchor="middle"
+        className="al-fig-label"
+      >
         r
       </text>
       <text x={PX + R / 2} y={PY + 22} textAnchor="middle" className="al-fig-label">
@@ -121,13 +149,23 @@ export function PatchFigure({ patch }: { patch: PatchModel }) {
       <text x={Math.max(a.x, b.x) + 8} y={Math.max(a.y, b.y) + 6} className="al-fig-accent">
         dA
       </text>
-      <line x1={cx} y1={cy} x2={cx + nLen * nx} y2={cy + nLen * ny} className="al-fig-normal" markerEnd="url(#al-arrow)" />
+      <line
+        x1={cx}
+        y1={cy}
+        x2={cx + nLen * nx}
+        y2={cy + nLen * ny}
+        className="al-fig-normal"
+        markerEnd="url(#al-arrow)"
+      />
       <text x={cx + nLen * nx - 4} y={cy + nLen * ny + 24} textAnchor="end" className="al-fig-muted">
         n_l
       </text>
       {thetaL > 0.02 ? (
         <>
-          <path d={`M ${cx - arcR} ${cy} A ${arcR} ${arcR} 0 0 0 ${arcEnd.x} ${arcEnd.y}`} className="al-fig-theta" />
+          <path
+            d={`M ${cx - arcR} ${cy} A ${arcR} ${arcR} 0 0 0 ${arcEnd.x} ${arcEnd.y}`}
+            className="al-fig-theta"
+          />
           {/* a small angle leaves no room inside it: the label goes below, clear of n_l */}
           <text
             x={thetaL < 0.35 ? cx - 14 : cx - (arcR + 14) * Math.cos(thetaL / 2)}
@@ -151,5 +189,7 @@ export function PatchFigure({ patch }: { patch: PatchModel }) {
 }
 
 function sideTrueWord(s: number, patch: PatchModel): string {
-  return s <= 10 ? `drawn larger than its ${fmt(Math.sqrt(patch.area), 2)}` : `drawn smaller than its ${fmt(Math.sqrt(patch.area), 2)}`;
+  return s <= 10
+    ? `drawn larger than its ${fmt(Math.sqrt(patch.area), 2)}`
+    : `drawn smaller than its ${fmt(Math.sqrt(patch.area), 2)}`;
 }

@@ -37,10 +37,12 @@ export function geometry(run: SampleRun, reference: number): Geometry {
   const n = run.count;
   const xOf = (k: number) => M.l + ((W - M.l - M.r) * Math.log(Math.max(1, k))) / Math.log(Math.max(2, n));
   // y range: the band from 8 samples on (earlier σ is too rough to set a scale), and the reference.
-  let lo = Infinity, hi = -Infinity;
+  let lo = Infinity,
+    hi = -Infinity;
   const from = Math.min(n, 8) - 1;
   for (let i = Math.max(0, from); i < n; i++) {
-    const m = run.mean[i]!, s = Number.isFinite(run.stderr[i]!) ? run.stderr[i]! : 0;
+    const m = run.mean[i],
+      s = Number.isFinite(run.stderr[i]) ? run.stderr[i] : 0;
     if (!Number.isFinite(m)) continue;
     lo = Math.min(lo, m - 2 * s);
     hi = Math.max(hi, m + 2 * s);
@@ -68,14 +70,14 @@ export function geometry(run: SampleRun, reference: number): Geometry {
   let pen = false; // whether the line is drawing (a non-finite mean lifts it)
   for (let i = 0; i < n; i++) {
     const x = xOf(i + 1).toFixed(1);
-    const m = run.mean[i]!;
+    const m = run.mean[i];
     if (!Number.isFinite(m)) {
       pen = false;
       continue;
     }
     line += `${pen ? 'L' : 'M'}${x},${yOf(m).toFixed(1)}`;
     pen = true;
-    const s = run.stderr[i]!;
+    const s = run.stderr[i];
     if (i >= 1 && Number.isFinite(s) && Number.isFinite(m + 2 * s) && Number.isFinite(m - 2 * s)) {
       upper += `${upper ? 'L' : 'M'}${x},${yOf(m + 2 * s).toFixed(1)}`;
       lower = `L${x},${yOf(m - 2 * s).toFixed(1)}` + lower;
@@ -86,7 +88,7 @@ export function geometry(run: SampleRun, reference: number): Geometry {
   const xTicks: number[] = [];
   for (let k = 1; k <= n; k *= 10) xTicks.push(k);
   // the end, unless it would crowd the last power of ten
-  if (n / xTicks[xTicks.length - 1]! >= 2.5) xTicks.push(n);
+  if (n / xTicks[xTicks.length - 1] >= 2.5) xTicks.push(n);
   return { xOf, yOf, line, band, yTicks, xTicks };
 }
 
@@ -111,7 +113,7 @@ export const RunningEstimate = memo(function RunningEstimate({
   const svg = useRef<SVGSVGElement>(null);
   const shown = useRef(k);
   const label = (kk: number) => {
-    const est = kk > 0 ? run.mean[kk - 1]! : NaN;
+    const est = kk > 0 ? run.mean[kk - 1] : NaN;
     return `Running estimate after ${kk} of ${run.count} samples: ${fmt(est)}; reference ${fmt(reference)}. The shaded band is ±2 standard errors.`;
   };
   const draw = (kk: number, text: boolean) => {
@@ -119,7 +121,7 @@ export const RunningEstimate = memo(function RunningEstimate({
     const el = svg.current;
     if (!el) return;
     const xk = g.xOf(Math.max(1, kk));
-    const est = kk > 0 && kk <= run.count ? run.mean[kk - 1]! : NaN;
+    const est = kk > 0 && kk <= run.count ? run.mean[kk - 1] : NaN;
     el.querySelector('clipPath rect')?.setAttribute('width', String(kk > 0 ? xk + 0.5 : 0));
     const dot = el.querySelector('circle.al-run-dot');
     if (dot) {
@@ -135,7 +137,14 @@ export const RunningEstimate = memo(function RunningEstimate({
   else shown.current = k;
   useLayoutEffect(() => draw(shown.current, true));
   return (
-    <svg ref={svg} className="al-running" viewBox={`0 0 ${W} ${H}`} role="img" aria-label={label(k)} data-testid="al-running">
+    <svg
+      ref={svg}
+      className="al-running"
+      viewBox={`0 0 ${W} ${H}`}
+      role="img"
+      aria-label={label(k)}
+      data-testid="al-running"
+    >
       <defs>
         <clipPath id={clip}>
           <rect x={0} y={0} height={H} />
@@ -161,7 +170,9 @@ export const RunningEstimate = memo(function RunningEstimate({
       <text x={(M.l + W - M.r) / 2} y={H - 4} textAnchor="middle" className="al-run-tick">
         samples k (log scale)
       </text>
-      {Number.isFinite(reference) ? <line x1={M.l} x2={W - M.r} y1={g.yOf(reference)} y2={g.yOf(reference)} className="al-run-ref" /> : null}
+      {Number.isFinite(reference) ? (
+        <line x1={M.l} x2={W - M.r} y1={g.yOf(reference)} y2={g.yOf(reference)} className="al-run-ref" />
+      ) : null}
       <g clipPath={`url(#${clip})`}>
         {g.band ? <path d={g.band} className="al-run-band" /> : null}
         <path d={g.line} className="al-run-line" />

@@ -51,14 +51,16 @@ interface Objects {
 
 function setQuad(mesh: THREE.Mesh | THREE.LineLoop, c: readonly Vec3[], order: readonly number[]) {
   const pos = mesh.geometry.getAttribute('position') as THREE.BufferAttribute;
-  order.forEach((k, i) => pos.setXYZ(i, c[k]![0], c[k]![1], c[k]![2]));
+  order.forEach((k, i) => pos.setXYZ(i, c[k][0], c[k][1], c[k][2]));
   pos.needsUpdate = true;
   mesh.geometry.computeBoundingSphere();
 }
 
 function frame(o: Objects, m: AreaLightModel) {
   const [px, py, pz] = m.p;
-  const tx = (px + m.lc[0]) / 2, ty = (py + m.lc[1]) / 2, tz = (pz + m.lc[2]) / 2;
+  const tx = (px + m.lc[0]) / 2,
+    ty = (py + m.lc[1]) / 2,
+    tz = (pz + m.lc[2]) / 2;
   const span = Math.max(2.5, Math.hypot(m.lc[0] - px, m.lc[1] - py, m.lc[2] - pz) + Math.max(m.w, m.h));
   const cam = o.ctx.camera;
   // Low, from the side: the emitting underside of a ceiling light is in view.
@@ -70,7 +72,17 @@ function frame(o: Objects, m: AreaLightModel) {
   o.ctx.invalidate();
 }
 
-export function Scene3D({ model, strategy, samples, terms, patch, height, dark, count, countRef }: Scene3DProps) {
+export function Scene3D({
+  model,
+  strategy,
+  samples,
+  terms,
+  patch,
+  height,
+  dark,
+  count,
+  countRef,
+}: Scene3DProps) {
   const objs = useRef<Objects | null>(null);
   const latest = useRef({ model, strategy, samples, terms, patch, dark, count });
   latest.current = { model, strategy, samples, terms, patch, dark, count };
@@ -85,9 +97,9 @@ export function Scene3D({ model, strategy, samples, terms, patch, height, dark, 
     const first = Math.max(0, n - RAYS);
     for (let i = first; i < n; i++) {
       const j = i - first;
-      const ex = st === 'cosine' ? px + smp[3 * i]! : smp[3 * i]!;
-      const ey = st === 'cosine' ? py + smp[3 * i + 1]! : smp[3 * i + 1]!;
-      const ez = st === 'cosine' ? pz + smp[3 * i + 2]! : smp[3 * i + 2]!;
+      const ex = st === 'cosine' ? px + smp[3 * i] : smp[3 * i];
+      const ey = st === 'cosine' ? py + smp[3 * i + 1] : smp[3 * i + 1];
+      const ez = st === 'cosine' ? pz + smp[3 * i + 2] : smp[3 * i + 2];
       rayPos.setXYZ(2 * j, px, py, pz);
       rayPos.setXYZ(2 * j + 1, ex, ey, ez);
     }
@@ -133,17 +145,23 @@ export function Scene3D({ model, strategy, samples, terms, patch, height, dark, 
     for (let i = 0; i < n; i++) {
       let dx: number, dy: number, dz: number;
       if (st === 'cosine') {
-        dx = smp[3 * i]!; dy = smp[3 * i + 1]!; dz = smp[3 * i + 2]!;
+        dx = smp[3 * i];
+        dy = smp[3 * i + 1];
+        dz = smp[3 * i + 2];
       } else {
-        onPos.setXYZ(i, smp[3 * i]!, smp[3 * i + 1]!, smp[3 * i + 2]!);
-        const col = tm[i]! > 0 ? hit : miss;
+        onPos.setXYZ(i, smp[3 * i], smp[3 * i + 1], smp[3 * i + 2]);
+        const col = tm[i] > 0 ? hit : miss;
         onCol.setXYZ(i, col.r, col.g, col.b);
-        dx = smp[3 * i]! - px; dy = smp[3 * i + 1]! - py; dz = smp[3 * i + 2]! - pz;
+        dx = smp[3 * i] - px;
+        dy = smp[3 * i + 1] - py;
+        dz = smp[3 * i + 2] - pz;
         const len = Math.hypot(dx, dy, dz) || 1;
-        dx /= len; dy /= len; dz /= len;
+        dx /= len;
+        dy /= len;
+        dz /= len;
       }
       dirPos.setXYZ(i, px + dx, py + dy, pz + dz);
-      const col = tm[i]! > 0 ? hit : miss;
+      const col = tm[i] > 0 ? hit : miss;
       dirCol.setXYZ(i, col.r, col.g, col.b);
     }
     o.samplesOn.visible = st !== 'cosine';
@@ -168,7 +186,9 @@ export function Scene3D({ model, strategy, samples, terms, patch, height, dark, 
     // view (e.g. after a preset moved the light far away); otherwise keep the user's camera.
     const cam = o.ctx.camera;
     cam.updateMatrixWorld();
-    const fr = new T.Frustum().setFromProjectionMatrix(new T.Matrix4().multiplyMatrices(cam.projectionMatrix, cam.matrixWorldInverse));
+    const fr = new T.Frustum().setFromProjectionMatrix(
+      new T.Matrix4().multiplyMatrices(cam.projectionMatrix, cam.matrixWorldInverse),
+    );
     const visible = [m.p, ...c].every((q) => fr.containsPoint(new T.Vector3(q[0], q[1], q[2])));
     if (framedFor.current === '' || !visible) {
       framedFor.current = 'framed';
@@ -205,8 +225,14 @@ export function Scene3D({ model, strategy, samples, terms, patch, height, dark, 
     const lightFront = new T.Mesh(lightGeo, new T.MeshBasicMaterial({ color: 0xffd35a, side: T.FrontSide }));
     const lightBack = new T.Mesh(lightGeo, new T.MeshBasicMaterial({ color: 0x3b3b3b, side: T.BackSide }));
     const lightEdge = new T.LineLoop(quadGeo(4), new T.LineBasicMaterial({ color: 0xb34700 }));
-    const occluder = new T.Mesh(quadGeo(6), new T.MeshLambertMaterial({ color: 0x6b6f78, side: T.DoubleSide }));
-    const point = new T.Mesh(new T.SphereGeometry(0.035, 16, 12), new T.MeshBasicMaterial({ color: 0x1f5fa8 }));
+    const occluder = new T.Mesh(
+      quadGeo(6),
+      new T.MeshLambertMaterial({ color: 0x6b6f78, side: T.DoubleSide }),
+    );
+    const point = new T.Mesh(
+      new T.SphereGeometry(0.035, 16, 12),
+      new T.MeshBasicMaterial({ color: 0x1f5fa8 }),
+    );
     const nGeo = new T.BufferGeometry();
     nGeo.setAttribute('position', new T.Float32BufferAttribute([0, 0, 0, 0, 0, 0.5], 3));
     const normal = new T.Line(nGeo, new T.LineBasicMaterial({ color: 0x1f5fa8 }));
@@ -216,22 +242,30 @@ export function Scene3D({ model, strategy, samples, terms, patch, height, dark, 
     for (let k = 0; k < 6; k++) {
       const ph = (k * Math.PI) / 6;
       for (let s = 0; s < seg; s++) {
-        const a = (s / seg) * Math.PI, b = ((s + 1) / seg) * Math.PI;
+        const a = (s / seg) * Math.PI,
+          b = ((s + 1) / seg) * Math.PI;
         hv.push(Math.cos(a) * Math.cos(ph), Math.cos(a) * Math.sin(ph), Math.sin(a));
         hv.push(Math.cos(b) * Math.cos(ph), Math.cos(b) * Math.sin(ph), Math.sin(b));
       }
     }
     for (const th of [0, Math.PI / 6, Math.PI / 3]) {
       for (let s = 0; s < 2 * seg; s++) {
-        const a = (s / (2 * seg)) * 2 * Math.PI, b = ((s + 1) / (2 * seg)) * 2 * Math.PI;
+        const a = (s / (2 * seg)) * 2 * Math.PI,
+          b = ((s + 1) / (2 * seg)) * 2 * Math.PI;
         hv.push(Math.cos(th) * Math.cos(a), Math.cos(th) * Math.sin(a), Math.sin(th));
         hv.push(Math.cos(th) * Math.cos(b), Math.cos(th) * Math.sin(b), Math.sin(th));
       }
     }
     const hemiGeo = new T.BufferGeometry();
     hemiGeo.setAttribute('position', new T.Float32BufferAttribute(hv, 3));
-    const hemi = new T.LineSegments(hemiGeo, new T.LineBasicMaterial({ color: 0x8a8f98, transparent: true, opacity: 0.45 }));
-    const floor = new T.Mesh(new T.PlaneGeometry(1, 1), new T.MeshLambertMaterial({ color: 0xcfc9b8, transparent: true, opacity: 0.55, side: T.DoubleSide }));
+    const hemi = new T.LineSegments(
+      hemiGeo,
+      new T.LineBasicMaterial({ color: 0x8a8f98, transparent: true, opacity: 0.45 }),
+    );
+    const floor = new T.Mesh(
+      new T.PlaneGeometry(1, 1),
+      new T.MeshLambertMaterial({ color: 0xcfc9b8, transparent: true, opacity: 0.55, side: T.DoubleSide }),
+    );
     const grid = new T.GridHelper(8, 8, 0x888888, 0xaaaaaa);
     grid.rotation.x = Math.PI / 2; // GridHelper lies in xz; make it the z = 0 floor
     (grid.material as THREE.Material).transparent = true;
@@ -246,15 +280,63 @@ export function Scene3D({ model, strategy, samples, terms, patch, height, dark, 
     const samplesDir = pts(3);
     const rayGeo = new T.BufferGeometry();
     rayGeo.setAttribute('position', new T.BufferAttribute(new Float32Array(RAYS * 6), 3));
-    const rays = new T.LineSegments(rayGeo, new T.LineBasicMaterial({ color: 0x1f5fa8, transparent: true, opacity: 0.35 }));
-    const patch = new T.Mesh(quadGeo(6), new T.MeshBasicMaterial({ color: 0xe4572e, side: T.DoubleSide, polygonOffset: true, polygonOffsetFactor: -2, polygonOffsetUnits: -2 }));
+    const rays = new T.LineSegments(
+      rayGeo,
+      new T.LineBasicMaterial({ color: 0x1f5fa8, transparent: true, opacity: 0.35 }),
+    );
+    const patch = new T.Mesh(
+      quadGeo(6),
+      new T.MeshBasicMaterial({
+        color: 0xe4572e,
+        side: T.DoubleSide,
+        polygonOffset: true,
+        polygonOffsetFactor: -2,
+        polygonOffsetUnits: -2,
+      }),
+    );
     const patchRays = new T.LineSegments(quadGeo(8), new T.LineBasicMaterial({ color: 0xe4572e }));
-    const patchProj = new T.Mesh(quadGeo(6), new T.MeshBasicMaterial({ color: 0xe4572e, side: T.DoubleSide }));
-    for (const obj of [floor, grid, lightFront, lightBack, lightEdge, occluder, point, normal, hemi, samplesOn, samplesDir, rays, patch, patchRays, patchProj]) {
+    const patchProj = new T.Mesh(
+      quadGeo(6),
+      new T.MeshBasicMaterial({ color: 0xe4572e, side: T.DoubleSide }),
+    );
+    for (const obj of [
+      floor,
+      grid,
+      lightFront,
+      lightBack,
+      lightEdge,
+      occluder,
+      point,
+      normal,
+      hemi,
+      samplesOn,
+      samplesDir,
+      rays,
+      patch,
+      patchRays,
+      patchProj,
+    ]) {
       obj.frustumCulled = false;
       ctx.scene.add(obj);
     }
-    const o: Objects = { ctx, lightFront, lightBack, lightEdge, occluder, point, normal, hemi, floor, grid, samplesOn, samplesDir, rays, patch, patchRays, patchProj };
+    const o: Objects = {
+      ctx,
+      lightFront,
+      lightBack,
+      lightEdge,
+      occluder,
+      point,
+      normal,
+      hemi,
+      floor,
+      grid,
+      samplesOn,
+      samplesDir,
+      rays,
+      patch,
+      patchRays,
+      patchProj,
+    };
     objs.current = o;
     framedFor.current = '';
     apply(o);
@@ -265,7 +347,12 @@ export function Scene3D({ model, strategy, samples, terms, patch, height, dark, 
 
   return (
     <div className="al-viewport">
-      <Viewport ariaLabel="3D view: the floor, the shading point with its unit hemisphere, the rectangular light, the samples and the Q6(a) patch" height={height} setup={setup} testId="al-3d">
+      <Viewport
+        ariaLabel="3D view: the floor, the shading point with its unit hemisphere, the rectangular light, the samples and the Q6(a) patch"
+        height={height}
+        setup={setup}
+        testId="al-3d"
+      >
         <button
           type="button"
           className="al-frame"

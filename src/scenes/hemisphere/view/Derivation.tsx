@@ -7,13 +7,38 @@ import { MathTex, formatNumber } from '../../../ui';
 import type { TabulatedHemisphere } from '../../../core/sampling';
 import type { LobeId } from '../params';
 
-const n6 = (x: number) => formatNumber(x, 6).replace('×10', '\\times 10^{').replace(/([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)/, (m) => `${fromSup(m)}}`);
+const n6 = (x: number) =>
+  formatNumber(x, 6)
+    .replace('×10', '\\times 10^{')
+    .replace(/([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)/, (m) => `${fromSup(m)}}`);
 function fromSup(s: string): string {
-  const map: Record<string, string> = { '⁻': '-', '⁰': '0', '¹': '1', '²': '2', '³': '3', '⁴': '4', '⁵': '5', '⁶': '6', '⁷': '7', '⁸': '8', '⁹': '9' };
+  const map: Record<string, string> = {
+    '⁻': '-',
+    '⁰': '0',
+    '¹': '1',
+    '²': '2',
+    '³': '3',
+    '⁴': '4',
+    '⁵': '5',
+    '⁶': '6',
+    '⁷': '7',
+    '⁸': '8',
+    '⁹': '9',
+  };
   return [...s].map((c) => map[c] ?? c).join('');
 }
 
-function Step({ n, title, tex, children }: { n: number; title: string; tex: string | string[]; children?: React.ReactNode }) {
+function Step({
+  n,
+  title,
+  tex,
+  children,
+}: {
+  n: number;
+  title: string;
+  tex: string | string[];
+  children?: React.ReactNode;
+}) {
   return (
     <li className="deriv-step">
       <h3>
@@ -21,7 +46,13 @@ function Step({ n, title, tex, children }: { n: number; title: string; tex: stri
       </h3>
       {(Array.isArray(tex) ? tex : [tex]).map((t, i) => (
         // a focusable scroll box: a wide formula scrolls sideways on a phone, also from the keyboard
-        <div key={i} className="deriv-formula" tabIndex={0} role="group" aria-label={`${title}, formula ${i + 1}`}>
+        <div
+          key={i}
+          className="deriv-formula"
+          tabIndex={0}
+          role="group"
+          aria-label={`${title}, formula ${i + 1}`}
+        >
           <MathTex tex={t} display />
         </div>
       ))}
@@ -30,15 +61,43 @@ function Step({ n, title, tex, children }: { n: number; title: string; tex: stri
   );
 }
 
-export function Derivation({ lobe, exponent, custom, customTex }: { lobe: LobeId; exponent: number; custom: TabulatedHemisphere | null; customTex: string | null }) {
+export function Derivation({
+  lobe,
+  exponent,
+  custom,
+  customTex,
+}: {
+  lobe: LobeId;
+  exponent: number;
+  custom: TabulatedHemisphere | null;
+  customTex: string | null;
+}) {
   // the exam lobe's derivation is written out part by part in the exam section (view/ExamQ1.tsx)
   if (lobe === 'exam') return null;
   if (lobe === 'uniform')
     return (
       <ol className="derivation" data-testid="derivation">
-        <Step n={1} title="Normalize" tex={`\\int_\\Omega k\\,d\\omega = 2\\pi k = 1 \\Rightarrow k = \\frac{1}{2\\pi} = ${n6(1 / (2 * Math.PI))}`} />
-        <Step n={2} title="Change of variables and marginals" tex={[`p(\\theta,\\phi) = \\frac{\\sin\\theta}{2\\pi}`, `p(\\theta) = \\sin\\theta,\\quad p(\\phi) = \\frac{1}{2\\pi}`]} />
-        <Step n={3} title="CDFs and inversion" tex={[`P(\\theta) = 1-\\cos\\theta \\;\\Rightarrow\\; \\cos\\theta = 1-\\xi_1 \\sim \\xi_1`, `\\phi = 2\\pi\\xi_2`]}>
+        <Step
+          n={1}
+          title="Normalize"
+          tex={`\\int_\\Omega k\\,d\\omega = 2\\pi k = 1 \\Rightarrow k = \\frac{1}{2\\pi} = ${n6(1 / (2 * Math.PI))}`}
+        />
+        <Step
+          n={2}
+          title="Change of variables and marginals"
+          tex={[
+            `p(\\theta,\\phi) = \\frac{\\sin\\theta}{2\\pi}`,
+            `p(\\theta) = \\sin\\theta,\\quad p(\\phi) = \\frac{1}{2\\pi}`,
+          ]}
+        />
+        <Step
+          n={3}
+          title="CDFs and inversion"
+          tex={[
+            `P(\\theta) = 1-\\cos\\theta \\;\\Rightarrow\\; \\cos\\theta = 1-\\xi_1 \\sim \\xi_1`,
+            `\\phi = 2\\pi\\xi_2`,
+          ]}
+        >
           1 − ξ₁ has the same distribution as ξ₁, so the code uses cos θ = ξ₁ (pbrt-v4 A.5.2).
         </Step>
       </ol>
@@ -46,22 +105,49 @@ export function Derivation({ lobe, exponent, custom, customTex }: { lobe: LobeId
   if (lobe === 'cosine')
     return (
       <ol className="derivation" data-testid="derivation">
-        <Step n={1} title="Normalize" tex={[`k\\int_\\Omega \\cos\\theta\\,d\\omega = k\\pi = 1`, `k = \\frac1\\pi = ${n6(1 / Math.PI)}`]} />
+        <Step
+          n={1}
+          title="Normalize"
+          tex={[`k\\int_\\Omega \\cos\\theta\\,d\\omega = k\\pi = 1`, `k = \\frac1\\pi = ${n6(1 / Math.PI)}`]}
+        />
         <Step n={2} title="Marginals" tex={`p(\\theta) = \\sin 2\\theta,\\quad p(\\phi) = \\frac{1}{2\\pi}`}>
           The same θ-marginal as the exam lobe: the exam lobe is the cosine lobe with φ reweighted by e^φ.
         </Step>
-        <Step n={3} title="Malley's method" tex={[`(x, y) \\sim \\text{uniform on the unit disk}`, `z = \\sqrt{1-x^2-y^2}`]}>
-          Projecting a uniform disk point up onto the hemisphere gives density cos θ/π. The disk is sampled with Shirley and Chiu&apos;s
-          concentric map, which keeps the warped grid well shaped (pbrt-v4 A.5.3).
+        <Step
+          n={3}
+          title="Malley's method"
+          tex={[`(x, y) \\sim \\text{uniform on the unit disk}`, `z = \\sqrt{1-x^2-y^2}`]}
+        >
+          Projecting a uniform disk point up onto the hemisphere gives density cos θ/π. The disk is sampled
+          with Shirley and Chiu&apos;s concentric map, which keeps the warped grid well shaped (pbrt-v4
+          A.5.3).
         </Step>
       </ol>
     );
   if (lobe === 'phong')
     return (
       <ol className="derivation" data-testid="derivation">
-        <Step n={1} title="Normalize" tex={[`k\\int_\\Omega \\cos^{n}\\theta\\,d\\omega = \\frac{2\\pi k}{n+1} = 1`, `k = \\frac{n+1}{2\\pi} = ${n6((exponent + 1) / (2 * Math.PI))}\\quad (n = ${exponent})`]} />
-        <Step n={2} title="Marginal and CDF" tex={[`p(\\theta) = (n+1)\\cos^{n}\\theta\\sin\\theta`, `P(\\theta) = 1-\\cos^{n+1}\\theta`]} />
-        <Step n={3} title="Inversion" tex={[`\\cos\\theta = \\xi_1^{1/(n+1)} = \\exp\\!\\Big(\\frac{\\ln\\xi_1}{n+1}\\Big)`, `\\sin\\theta = \\sqrt{-\\operatorname{expm1}\\!\\Big(\\frac{2\\ln\\xi_1}{n+1}\\Big)},\\quad \\phi = 2\\pi\\xi_2`]}>
+        <Step
+          n={1}
+          title="Normalize"
+          tex={[
+            `k\\int_\\Omega \\cos^{n}\\theta\\,d\\omega = \\frac{2\\pi k}{n+1} = 1`,
+            `k = \\frac{n+1}{2\\pi} = ${n6((exponent + 1) / (2 * Math.PI))}\\quad (n = ${exponent})`,
+          ]}
+        />
+        <Step
+          n={2}
+          title="Marginal and CDF"
+          tex={[`p(\\theta) = (n+1)\\cos^{n}\\theta\\sin\\theta`, `P(\\theta) = 1-\\cos^{n+1}\\theta`]}
+        />
+        <Step
+          n={3}
+          title="Inversion"
+          tex={[
+            `\\cos\\theta = \\xi_1^{1/(n+1)} = \\exp\\!\\Big(\\frac{\\ln\\xi_1}{n+1}\\Big)`,
+            `\\sin\\theta = \\sqrt{-\\operatorname{expm1}\\!\\Big(\\frac{2\\ln\\xi_1}{n+1}\\Big)},\\quad \\phi = 2\\pi\\xi_2`,
+          ]}
+        >
           Computed in log space so a large exponent does not lose sin θ to cancellation.
         </Step>
       </ol>
@@ -71,7 +157,8 @@ export function Derivation({ lobe, exponent, custom, customTex }: { lobe: LobeId
     <ol className="derivation" data-testid="derivation">
       <li className="deriv-step">
         <p>
-          <strong>Numerical steps.</strong> A typed density has no closed-form integral in general, so each step below is done on a table.
+          <strong>Numerical steps.</strong> A typed density has no closed-form integral in general, so each
+          step below is done on a table.
         </p>
       </li>
       <Step
@@ -79,18 +166,34 @@ export function Derivation({ lobe, exponent, custom, customTex }: { lobe: LobeId
         title="Normalize (numerically)"
         tex={
           custom
-            ? [`p(\\theta,\\phi) = ${customTex ?? '\\text{(typed)}'}`, `\\int_\\Omega p\\,d\\omega \\approx ${n6(custom.integral)} \\;\\Rightarrow\\; k \\approx ${n6(custom.k)}`]
+            ? [
+                `p(\\theta,\\phi) = ${customTex ?? '\\text{(typed)}'}`,
+                `\\int_\\Omega p\\,d\\omega \\approx ${n6(custom.integral)} \\;\\Rightarrow\\; k \\approx ${n6(custom.k)}`,
+              ]
             : `\\int_\\Omega p\\,d\\omega = \\;?`
         }
       >
-        The hemisphere is cut into {custom ? `${custom.nz} × ${custom.nphi}` : '64 × 128'} cells of equal solid angle (equal steps in cos θ and φ, since dω = d(cos θ) dφ);
-        p is taken at each cell centre.
+        The hemisphere is cut into {custom ? `${custom.nz} × ${custom.nphi}` : '64 × 128'} cells of equal
+        solid angle (equal steps in cos θ and φ, since dω = d(cos θ) dφ); p is taken at each cell centre.
       </Step>
-      <Step n={2} title="Marginal of cos θ, conditional of φ" tex={[`p(\\cos\\theta) = \\int_0^{2\\pi} p\\,d\\phi`, `p(\\phi\\mid\\theta) = \\frac{p(\\theta,\\phi)}{p(\\cos\\theta)}`]}>
-        The density need not be separable, so φ is drawn from the conditional of the row that θ fell in (pbrt-v4 PiecewiseConstant2D).
+      <Step
+        n={2}
+        title="Marginal of cos θ, conditional of φ"
+        tex={[
+          `p(\\cos\\theta) = \\int_0^{2\\pi} p\\,d\\phi`,
+          `p(\\phi\\mid\\theta) = \\frac{p(\\theta,\\phi)}{p(\\cos\\theta)}`,
+        ]}
+      >
+        The density need not be separable, so φ is drawn from the conditional of the row that θ fell in
+        (pbrt-v4 PiecewiseConstant2D).
       </Step>
-      <Step n={3} title="Invert the tabulated CDFs" tex={[`\\cos\\theta = P_{\\cos\\theta}^{-1}(\\xi_1)`, `\\phi = P_{\\phi\\mid\\theta}^{-1}(\\xi_2)`]}>
-        Each CDF is a running sum over the table, inverted by binary search and linear interpolation within the cell.
+      <Step
+        n={3}
+        title="Invert the tabulated CDFs"
+        tex={[`\\cos\\theta = P_{\\cos\\theta}^{-1}(\\xi_1)`, `\\phi = P_{\\phi\\mid\\theta}^{-1}(\\xi_2)`]}
+      >
+        Each CDF is a running sum over the table, inverted by binary search and linear interpolation within
+        the cell.
       </Step>
     </ol>
   );

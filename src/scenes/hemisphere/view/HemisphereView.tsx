@@ -75,7 +75,6 @@ export interface HemisphereViewProps {
   drawRef?: { current: ((frame: AnimFrame) => void) | null };
 }
 
-
 /**
  * Buffers sized for n points, rounded up to a power of two (at least 4096, at most MAX_N): sized
  * for 10⁶ from the start, the first upload of ~23 MB cost a phone's main thread hundreds of ms on
@@ -103,7 +102,17 @@ function pointBuffers(T: ViewportContext['THREE'], cap: number) {
   return { geom, pos, col, xi };
 }
 
-export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGrid, height = 380, drawRef }: HemisphereViewProps) {
+export function HemisphereView({
+  lobe,
+  kind,
+  seed,
+  n,
+  frame,
+  showPoints,
+  showGrid,
+  height = 380,
+  drawRef,
+}: HemisphereViewProps) {
   const ctxRef = useRef<ViewportContext | null>(null);
   const objs = useRef<{
     geom: THREE.BufferGeometry;
@@ -140,7 +149,8 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
     if (!o) return;
     const a = fill.current;
     const end = Math.min(nn, upTo);
-    if (!scratch.current) scratch.current = { u: new Float64Array(2 * BATCH), d: new Float64Array(3 * BATCH) };
+    if (!scratch.current)
+      scratch.current = { u: new Float64Array(2 * BATCH), d: new Float64Array(3 * BATCH) };
     const { u, d } = scratch.current;
     const pos = o.pos.array as Float32Array;
     const col = o.col.array as Uint8Array;
@@ -154,12 +164,12 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
       lb.sampleBatch(u, d, m);
       for (let i = 0; i < m; i++) {
         const j = 3 * (s + i);
-        pos[j] = d[3 * i]!;
-        pos[j + 1] = d[3 * i + 1]!;
-        pos[j + 2] = d[3 * i + 2]!;
-        xi[2 * (s + i)] = u[2 * i]!;
-        xi[2 * (s + i) + 1] = u[2 * i + 1]!;
-        xiColor(u[2 * i]!, u[2 * i + 1]!, col, j);
+        pos[j] = d[3 * i];
+        pos[j + 1] = d[3 * i + 1];
+        pos[j + 2] = d[3 * i + 2];
+        xi[2 * (s + i)] = u[2 * i];
+        xi[2 * (s + i) + 1] = u[2 * i + 1];
+        xiColor(u[2 * i], u[2 * i + 1], col, j);
       }
     }
     if (end > start) {
@@ -203,7 +213,7 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
       const arr = p.array as Float32Array;
       const { a, b } = o.gridEnds;
       const r = 1 - s;
-      for (let i = 0; i < arr.length; i++) arr[i] = a[i]! * r + b[i]! * s; // the model's morphPoint, unrolled
+      for (let i = 0; i < arr.length; i++) arr[i] = a[i] * r + b[i] * s; // the model's morphPoint, unrolled
       p.needsUpdate = true;
     }
     updateLabel();
@@ -224,20 +234,23 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
     const g0 = warpedGrid(cfg.current.lobe, 0, GRID_SEGMENTS);
     const g1 = warpedGrid(cfg.current.lobe, 1, GRID_SEGMENTS);
     const lift = 1.003; // just above the sphere so the lines are not hidden by the shell
-    for (let i = 0; i < g1.pos.length; i++) g1.pos[i]! *= lift;
+    for (let i = 0; i < g1.pos.length; i++) g1.pos[i] *= lift;
     const verts = g0.xi.length / 2;
     const c = new Float32Array(3 * verts);
     const rgb = [0, 0, 0];
     for (let k = 0; k < verts; k++) {
-      xiColor(g0.xi[2 * k]!, g0.xi[2 * k + 1]!, rgb);
-      c[3 * k] = rgb[0]! / 255;
-      c[3 * k + 1] = rgb[1]! / 255;
-      c[3 * k + 2] = rgb[2]! / 255;
+      xiColor(g0.xi[2 * k], g0.xi[2 * k + 1], rgb);
+      c[3 * k] = rgb[0] / 255;
+      c[3 * k + 1] = rgb[1] / 255;
+      c[3 * k + 2] = rgb[2] / 255;
     }
     const g = new T.BufferGeometry();
     g.setAttribute('position', new T.BufferAttribute(new Float32Array(3 * verts), 3));
     g.setAttribute('color', new T.BufferAttribute(c, 3));
-    const lines = new T.LineSegments(g, new T.LineBasicMaterial({ vertexColors: true, transparent: true, opacity: 0.9 }));
+    const lines = new T.LineSegments(
+      g,
+      new T.LineBasicMaterial({ vertexColors: true, transparent: true, opacity: 0.9 }),
+    );
     lines.frustumCulled = false;
     lines.visible = cfg.current.showGrid;
     ctx.scene.add(lines);
@@ -256,7 +269,10 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
       shader.uniforms.uMorph = morph;
       shader.vertexShader = shader.vertexShader
         .replace('#include <common>', '#include <common>\nattribute vec2 xi;\nuniform float uMorph;')
-        .replace('#include <begin_vertex>', 'vec3 transformed = mix(vec3(2.0 * xi.x - 1.0, 2.0 * xi.y - 1.0, 0.0), vec3(position), uMorph);');
+        .replace(
+          '#include <begin_vertex>',
+          'vec3 transformed = mix(vec3(2.0 * xi.x - 1.0, 2.0 * xi.y - 1.0, 0.0), vec3(position), uMorph);',
+        );
     };
     material.customProgramCacheKey = () => 'hemisphere-morph';
     const points = new T.Points(geom, material);
@@ -266,7 +282,16 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
 
     // the hemisphere shell, its rim, the outline of the unit square in the base plane, and the axes
     const shellGeom = new T.SphereGeometry(1, 48, 24, 0, 2 * Math.PI, 0, Math.PI / 2);
-    const shell = new T.Mesh(shellGeom, new T.MeshBasicMaterial({ color: 0x8899aa, transparent: true, opacity: 0.07, depthWrite: false, side: T.DoubleSide }));
+    const shell = new T.Mesh(
+      shellGeom,
+      new T.MeshBasicMaterial({
+        color: 0x8899aa,
+        transparent: true,
+        opacity: 0.07,
+        depthWrite: false,
+        side: T.DoubleSide,
+      }),
+    );
     shell.rotation.x = Math.PI / 2; // the cap from y up to z up (on the object: rotating the geometry's vertices cost a phone ~30 ms)
     ctx.scene.add(shell);
     const rimPts: number[] = [];
@@ -288,7 +313,9 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
       sq.push(...(squarePoint(a, b) as number[]));
     const sqGeom = new T.BufferGeometry();
     sqGeom.setAttribute('position', new T.Float32BufferAttribute(sq, 3));
-    ctx.scene.add(new T.Line(sqGeom, new T.LineBasicMaterial({ color: 0x99a3ad, transparent: true, opacity: 0.6 })));
+    ctx.scene.add(
+      new T.Line(sqGeom, new T.LineBasicMaterial({ color: 0x99a3ad, transparent: true, opacity: 0.6 })),
+    );
     const axes: [number[], number][] = [
       [[1.25, 0, 0], 0xd04040],
       [[0, 1.25, 0], 0x30a050],
@@ -308,7 +335,8 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
     // level of detail while orbiting: the sets are prefixes of well-spread sequences (except the
     // stratified set, whose prefix fills rows in order, so it is always drawn in full)
     const onStart = () => {
-      if (cfg.current.kind !== 'stratified' && drawn() > ORBIT_LOD) objs.current?.geom.setDrawRange(0, ORBIT_LOD);
+      if (cfg.current.kind !== 'stratified' && drawn() > ORBIT_LOD)
+        objs.current?.geom.setDrawRange(0, ORBIT_LOD);
     };
     const onEnd = () => {
       objs.current?.geom.setDrawRange(0, drawn());
@@ -337,7 +365,13 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
         filling = false;
         return;
       }
-      generate(Math.min(a.target, a.filled + (a.pointsPerMs ? Math.max(MIN_PER_FRAME, Math.floor(a.pointsPerMs * SLICE_MS)) : FIRST_FRAME)));
+      generate(
+        Math.min(
+          a.target,
+          a.filled +
+            (a.pointsPerMs ? Math.max(MIN_PER_FRAME, Math.floor(a.pointsPerMs * SLICE_MS)) : FIRST_FRAME),
+        ),
+      );
       apply();
       nextTask(fillTask);
     };
@@ -420,7 +454,11 @@ export function HemisphereView({ lobe, kind, seed, n, frame, showPoints, showGri
         testId="hemisphere-3d"
       />
       <p className="hemi-shown">
-        showing <span ref={label} data-testid="shown-count" data-value="0">0</span> of {formatCount(n)} points
+        showing{' '}
+        <span ref={label} data-testid="shown-count" data-value="0">
+          0
+        </span>{' '}
+        of {formatCount(n)} points
       </p>
     </div>
   );

@@ -9,7 +9,14 @@ import { titled } from './plotTitle';
 import { examLobeK, invertedJacobianDensity, invertedJacobianPartialIntegral } from '../../../core/sampling';
 import { invertedJacobianSeries } from '../model';
 
-const LEGEND = { orientation: 'v', x: 0.02, y: 0.98, xanchor: 'left', yanchor: 'top', bgcolor: 'rgba(0,0,0,0)' };
+const LEGEND = {
+  orientation: 'v',
+  x: 0.02,
+  y: 0.98,
+  xanchor: 'left',
+  yanchor: 'top',
+  bgcolor: 'rgba(0,0,0,0)',
+};
 
 export function InvertedJacobian() {
   const [eps, setEps] = useState(1e-3);
@@ -28,32 +35,77 @@ export function InvertedJacobian() {
   return (
     <div className="inverted" data-testid="inverted-jacobian">
       <Notice kind="warn" testId="inverted-message">
-        Not integrable: with the identity as printed on the exam paper, p(ω) = sin θ p(θ, φ), the change of variables gives p(θ, φ) = p(ω)/sin θ = k cot θ e^φ, and
-        the key&apos;s marginal p(θ) = 2 cot θ has ∫₀^π/2 2 cot θ dθ = ∞ (it diverges at θ → 0). No constant normalizes it, so there is no CDF to invert and nothing to
-        sample: the χ² test and the importance estimate are off (their readouts say “none”). The key grades this route leniently; the correct identity is
-        p(θ, φ) = sin θ p(ω).
+        Not integrable: with the identity as printed on the exam paper, p(ω) = sin θ p(θ, φ), the change of
+        variables gives p(θ, φ) = p(ω)/sin θ = k cot θ e^φ, and the key&apos;s marginal p(θ) = 2 cot θ has
+        ∫₀^π/2 2 cot θ dθ = ∞ (it diverges at θ → 0). No constant normalizes it, so there is no CDF to invert
+        and nothing to sample: the χ² test and the importance estimate are off (their readouts say “none”).
+        The key grades this route leniently; the correct identity is p(θ, φ) = sin θ p(ω).
       </Notice>
-      <MathTex display tex={`\\int_{\\varepsilon}^{\\pi/2}2\\cot\\theta\\,d\\theta = 2\\Big[\\ln\\sin\\theta\\Big]_{\\varepsilon}^{\\pi/2} = -2\\ln\\sin\\varepsilon \\;\\xrightarrow[\\varepsilon\\to 0]{}\\; \\infty`} />
+      <MathTex
+        display
+        tex={`\\int_{\\varepsilon}^{\\pi/2}2\\cot\\theta\\,d\\theta = 2\\Big[\\ln\\sin\\theta\\Big]_{\\varepsilon}^{\\pi/2} = -2\\ln\\sin\\varepsilon \\;\\xrightarrow[\\varepsilon\\to 0]{}\\; \\infty`}
+      />
       <p>
-        Why it fails: probability is conserved, p(θ, φ) dθ dφ = p(ω) dω, and a small patch of directions has solid angle dω = sin θ dθ dφ, so p(θ, φ) = sin θ · p(ω).
-        Dividing instead multiplies the correct density by 1/sin²θ, which near the pole behaves like 1/θ² · θ = 1/θ: the classic non-integrable singularity. The
-        readout below is ∫ from ε to π/2 of cot θ dθ = −ln sin ε (half the key&apos;s 2 cot θ integral): it grows without bound as ε shrinks.
+        Why it fails: probability is conserved, p(θ, φ) dθ dφ = p(ω) dω, and a small patch of directions has
+        solid angle dω = sin θ dθ dφ, so p(θ, φ) = sin θ · p(ω). Dividing instead multiplies the correct
+        density by 1/sin²θ, which near the pole behaves like 1/θ² · θ = 1/θ: the classic non-integrable
+        singularity. The readout below is ∫ from ε to π/2 of cot θ dθ = −ln sin ε (half the key&apos;s 2 cot θ
+        integral): it grows without bound as ε shrinks.
       </p>
       <Slider label="ε (lower limit of θ)" value={eps} min={1e-15} max={1} log onChange={setEps} unit="rad" />
-      <Readout id="inverted-partial" label={`∫ from ε to π/2 of cot θ dθ at ε = ${formatNumber(eps, 3)}`} value={partial} digits={8} />
+      <Readout
+        id="inverted-partial"
+        label={`∫ from ε to π/2 of cot θ dθ at ε = ${formatNumber(eps, 3)}`}
+        value={partial}
+        digits={8}
+      />
       <div className="hemi-plot-grid">
         <Plot
           ariaLabel="The key's marginal 2 cot θ near θ = 0, on log axes: it grows like 2/θ"
-          data={[{ type: 'scatter', mode: 'lines', x: dens.x, y: dens.y, name: '2 cot θ', line: { color: '#c0392b', width: 2.5 } }]}
-          layout={{ ...titled("key's p(θ) = 2 cot θ"), xaxis: { type: 'log', title: { text: 'θ (rad)' } }, yaxis: { type: 'log', title: { text: '2 cot θ' } }, showlegend: false }}
+          data={[
+            {
+              type: 'scatter',
+              mode: 'lines',
+              x: dens.x,
+              y: dens.y,
+              name: '2 cot θ',
+              line: { color: '#c0392b', width: 2.5 },
+            },
+          ]}
+          layout={{
+            ...titled("key's p(θ) = 2 cot θ"),
+            xaxis: { type: 'log', title: { text: 'θ (rad)' } },
+            yaxis: { type: 'log', title: { text: '2 cot θ' } },
+            showlegend: false,
+          }}
         />
         <Plot
           ariaLabel="The partial integral minus ln sin epsilon against epsilon: it grows without bound as epsilon shrinks"
           data={[
-            { type: 'scatter', mode: 'lines+markers', x: Array.from(series.eps), y: Array.from(series.partial), name: '−ln sin ε', line: { color: '#1f5fa8' }, marker: { size: 4 } },
-            { type: 'scatter', mode: 'markers', x: [eps], y: [partial], name: 'ε chosen', marker: { size: 11, color: '#c0392b' } },
+            {
+              type: 'scatter',
+              mode: 'lines+markers',
+              x: Array.from(series.eps),
+              y: Array.from(series.partial),
+              name: '−ln sin ε',
+              line: { color: '#1f5fa8' },
+              marker: { size: 4 },
+            },
+            {
+              type: 'scatter',
+              mode: 'markers',
+              x: [eps],
+              y: [partial],
+              name: 'ε chosen',
+              marker: { size: 11, color: '#c0392b' },
+            },
           ]}
-          layout={{ ...titled('partial integral: no limit'), xaxis: { type: 'log', title: { text: 'ε (rad)' }, autorange: 'reversed' }, yaxis: { title: { text: '−ln sin ε' } }, legend: LEGEND }}
+          layout={{
+            ...titled('partial integral: no limit'),
+            xaxis: { type: 'log', title: { text: 'ε (rad)' }, autorange: 'reversed' },
+            yaxis: { title: { text: '−ln sin ε' } },
+            legend: LEGEND,
+          }}
         />
       </div>
     </div>

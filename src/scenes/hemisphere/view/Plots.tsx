@@ -10,12 +10,33 @@ import { titled } from './plotTitle';
 import type { DrawStats } from '../model';
 
 /** Legend inside the plot's top-left corner (where both marginals are low), clear of the axis titles. */
-const LEGEND = { orientation: 'v', x: 0.02, y: 0.98, xanchor: 'left', yanchor: 'top', bgcolor: 'rgba(0,0,0,0)' };
+const LEGEND = {
+  orientation: 'v',
+  x: 0.02,
+  y: 0.98,
+  xanchor: 'left',
+  yanchor: 'top',
+  bgcolor: 'rgba(0,0,0,0)',
+};
 
 function histTraces(h: NonNullable<DrawStats['hist']>['theta'], name: string): PlotTrace[] {
   return [
-    { type: 'bar', x: Array.from(h.centers), y: Array.from(h.density), width: h.width, name: `samples`, marker: { color: 'rgba(70,120,200,0.55)' } },
-    { type: 'scatter', mode: 'lines', x: Array.from(h.curveX), y: Array.from(h.curveY), name: `p(${name})`, line: { color: '#d0502a', width: 2.5 } },
+    {
+      type: 'bar',
+      x: Array.from(h.centers),
+      y: Array.from(h.density),
+      width: h.width,
+      name: `samples`,
+      marker: { color: 'rgba(70,120,200,0.55)' },
+    },
+    {
+      type: 'scatter',
+      mode: 'lines',
+      x: Array.from(h.curveX),
+      y: Array.from(h.curveY),
+      name: `p(${name})`,
+      line: { color: '#d0502a', width: 2.5 },
+    },
   ];
 }
 
@@ -29,13 +50,25 @@ export function MarginalPlots({ stats }: { stats: DrawStats }) {
       <Plot
         ariaLabel="Histogram of the sampled polar angles θ against the marginal density p(θ)"
         data={theta}
-        layout={{ ...titled('θ: histogram vs p(θ)'), xaxis: { title: { text: 'θ (rad)' }, range: [0, Math.PI / 2] }, yaxis: { title: { text: 'density' } }, bargap: 0, legend: LEGEND }}
+        layout={{
+          ...titled('θ: histogram vs p(θ)'),
+          xaxis: { title: { text: 'θ (rad)' }, range: [0, Math.PI / 2] },
+          yaxis: { title: { text: 'density' } },
+          bargap: 0,
+          legend: LEGEND,
+        }}
         testId="plot-theta"
       />
       <Plot
         ariaLabel="Histogram of the sampled azimuths φ against the marginal density p(φ)"
         data={phi}
-        layout={{ ...titled('φ: histogram vs p(φ)'), xaxis: { title: { text: 'φ (rad)' }, range: [0, TWO_PI] }, yaxis: { title: { text: 'density' } }, bargap: 0, legend: LEGEND }}
+        layout={{
+          ...titled('φ: histogram vs p(φ)'),
+          xaxis: { title: { text: 'φ (rad)' }, range: [0, TWO_PI] },
+          yaxis: { title: { text: 'density' } },
+          bargap: 0,
+          legend: LEGEND,
+        }}
         testId="plot-phi"
       />
     </div>
@@ -50,24 +83,74 @@ export function Histogram2D({ stats }: { stats: DrawStats }) {
     const np = chi2.phiBins;
     const x = Array.from({ length: np }, (_, i) => ((i + 0.5) * TWO_PI) / np);
     const y = Array.from({ length: nc }, (_, i) => (i + 0.5) / nc);
-    const rows = (f: (k: number) => number) => Array.from({ length: nc }, (_, i) => Array.from({ length: np }, (_, j) => f(i * np + j)));
-    const obs = rows((k) => chi2.observed[k]!);
-    const exp = rows((k) => chi2.expected[k]!);
+    const rows = (f: (k: number) => number) =>
+      Array.from({ length: nc }, (_, i) => Array.from({ length: np }, (_, j) => f(i * np + j)));
+    const obs = rows((k) => chi2.observed[k]);
+    const exp = rows((k) => chi2.expected[k]);
     const diff = rows((k) => {
-      const e = chi2.expected[k]!;
-      return e > 0 ? (chi2.observed[k]! - e) / Math.sqrt(e) : 0;
+      const e = chi2.expected[k];
+      return e > 0 ? (chi2.observed[k] - e) / Math.sqrt(e) : 0;
     });
     let zmax = 0;
-    for (let k = 0; k < nc * np; k++) zmax = Math.max(zmax, chi2.observed[k]!, chi2.expected[k]!);
+    for (let k = 0; k < nc * np; k++) zmax = Math.max(zmax, chi2.observed[k], chi2.expected[k]);
     return { x, y, obs, exp, diff, zmax };
   }, [chi2]);
   if (!data) return null;
   const axes = { xaxis: { title: { text: 'φ' } }, yaxis: { title: { text: 'cos θ' } } };
   return (
     <div className="hemi-plot-grid three">
-      <Plot ariaLabel="Observed counts in bins of equal solid angle" height={240} data={[{ type: 'heatmap', x: data.x, y: data.y, z: data.obs, zmin: 0, zmax: data.zmax, colorscale: 'Viridis', showscale: false }]} layout={{ ...titled('observed'), ...axes }} />
-      <Plot ariaLabel="Expected counts: the density integrated over each bin" height={240} data={[{ type: 'heatmap', x: data.x, y: data.y, z: data.exp, zmin: 0, zmax: data.zmax, colorscale: 'Viridis', showscale: false }]} layout={{ ...titled('expected N∫p dω'), ...axes }} />
-      <Plot ariaLabel="Standardized difference (observed minus expected) over the square root of expected" height={240} data={[{ type: 'heatmap', x: data.x, y: data.y, z: data.diff, zmin: -4, zmax: 4, colorscale: 'RdBu', reversescale: true, showscale: true }]} layout={{ ...titled('(O − E)/√E'), ...axes }} />
+      <Plot
+        ariaLabel="Observed counts in bins of equal solid angle"
+        height={240}
+        data={[
+          {
+            type: 'heatmap',
+            x: data.x,
+            y: data.y,
+            z: data.obs,
+            zmin: 0,
+            zmax: data.zmax,
+            colorscale: 'Viridis',
+            showscale: false,
+          },
+        ]}
+        layout={{ ...titled('observed'), ...axes }}
+      />
+      <Plot
+        ariaLabel="Expected counts: the density integrated over each bin"
+        height={240}
+        data={[
+          {
+            type: 'heatmap',
+            x: data.x,
+            y: data.y,
+            z: data.exp,
+            zmin: 0,
+            zmax: data.zmax,
+            colorscale: 'Viridis',
+            showscale: false,
+          },
+        ]}
+        layout={{ ...titled('expected N∫p dω'), ...axes }}
+      />
+      <Plot
+        ariaLabel="Standardized difference (observed minus expected) over the square root of expected"
+        height={240}
+        data={[
+          {
+            type: 'heatmap',
+            x: data.x,
+            y: data.y,
+            z: data.diff,
+            zmin: -4,
+            zmax: 4,
+            colorscale: 'RdBu',
+            reversescale: true,
+            showscale: true,
+          },
+        ]}
+        layout={{ ...titled('(O − E)/√E'), ...axes }}
+      />
     </div>
   );
 }

@@ -15,7 +15,12 @@ import type { LobeId } from '../params';
 
 import type { RepeatResult } from '../jobs';
 
-const KIND_NAME: Record<SequenceKind, string> = { independent: 'independent', stratified: 'stratified', halton: 'Halton', sobol: 'Sobol' };
+const KIND_NAME: Record<SequenceKind, string> = {
+  independent: 'independent',
+  stratified: 'stratified',
+  halton: 'Halton',
+  sobol: 'Sobol',
+};
 
 /** Mean, its standard error and the spread of the finite estimates (Welford, in the core). */
 function meanSe(a: Float64Array): { mean: number; se: number; sd: number } {
@@ -26,8 +31,11 @@ function meanSe(a: Float64Array): { mean: number; se: number; sd: number } {
 /** The error note of one estimate: s/√N for independent points, the measured RMSE otherwise. */
 function errorNote(est: McEstimate | null, kind: SequenceKind, rmse: number | null): string | undefined {
   if (!est || !Number.isFinite(est.estimate)) return undefined;
-  if (kind === 'independent') return Number.isFinite(est.stderr) ? `± ${formatNumber(est.stderr, 3)} (std. error s/√N)` : undefined;
-  return rmse !== null && Number.isFinite(rmse) ? `RMSE ${formatNumber(rmse, 3)} over randomized runs (s/√N does not apply to ${KIND_NAME[kind]} points)` : `(s/√N does not apply to ${KIND_NAME[kind]} points)`;
+  if (kind === 'independent')
+    return Number.isFinite(est.stderr) ? `± ${formatNumber(est.stderr, 3)} (std. error s/√N)` : undefined;
+  return rmse !== null && Number.isFinite(rmse)
+    ? `RMSE ${formatNumber(rmse, 3)} over randomized runs (s/√N does not apply to ${KIND_NAME[kind]} points)`
+    : `(s/√N does not apply to ${KIND_NAME[kind]} points)`;
 }
 
 /** Why s/√N is not shown as the error for stratified and quasi-random points (with the RMSE that is). */
@@ -35,10 +43,15 @@ export function StderrNote({ kind, rmse }: { kind: SequenceKind; rmse: RmseResul
   if (kind === 'independent') return null;
   return (
     <Notice kind="warn" testId="stderr-note">
-      {KIND_NAME[kind].charAt(0).toUpperCase() + KIND_NAME[kind].slice(1)} points are not independent, so the sample standard deviation over √N is not an error estimate for them (it ignores how evenly the points
-      cover the square, and usually overstates the error). The error shown is measured instead: the root-mean-square error against ∫ f dω over{' '}
-      {rmse ? rmse.runs : 16} independently randomized sets of the same N (fresh jitter or scrambling each run, seeds derived from the seed)
-      {rmse ? `: ${formatNumber(rmse.uniform, 3)} uniform${Number.isFinite(rmse.importance) ? `, ${formatNumber(rmse.importance, 3)} importance` : ''}` : ''}.
+      {KIND_NAME[kind].charAt(0).toUpperCase() + KIND_NAME[kind].slice(1)} points are not independent, so the
+      sample standard deviation over √N is not an error estimate for them (it ignores how evenly the points
+      cover the square, and usually overstates the error). The error shown is measured instead: the
+      root-mean-square error against ∫ f dω over {rmse ? rmse.runs : 16} independently randomized sets of the
+      same N (fresh jitter or scrambling each run, seeds derived from the seed)
+      {rmse
+        ? `: ${formatNumber(rmse.uniform, 3)} uniform${Number.isFinite(rmse.importance) ? `, ${formatNumber(rmse.importance, 3)} importance` : ''}`
+        : ''}
+      .
     </Notice>
   );
 }
@@ -65,13 +78,23 @@ export function UniformReadouts({
   const fBad = fNonFinite > 0;
   return (
     <div className="readouts">
-      <Readout id="mc-exact" label="∫ f dω (quadrature)" value={exactProblem ? null : exact} digits={8} note={exactProblem ? 'no value' : exactNote} />
+      <Readout
+        id="mc-exact"
+        label="∫ f dω (quadrature)"
+        value={exactProblem ? null : exact}
+        digits={8}
+        note={exactProblem ? 'no value' : exactNote}
+      />
       <Readout
         id="mc-uniform"
         label="uniform (2π/N) Σ f"
         value={fBad ? null : (uniform?.estimate ?? null)}
         digits={8}
-        note={fBad ? 'no value: f is not finite at some samples' : errorNote(uniform, kind, rmse ? rmse.uniform : null)}
+        note={
+          fBad
+            ? 'no value: f is not finite at some samples'
+            : errorNote(uniform, kind, rmse ? rmse.uniform : null)
+        }
       />
       {exactProblem ? (
         <Notice kind="warn" testId="exact-problem">
@@ -80,8 +103,9 @@ export function UniformReadouts({
       ) : null}
       {fBad ? (
         <Notice kind="warn" testId="f-nonfinite">
-          f is not finite (NaN or ±∞) at {fNonFinite} of the sampled directions: f is undefined or overflows on part of the hemisphere, so the
-          estimates have no value (averaging only the finite terms would be biased). Change f so it is finite everywhere on the hemisphere.
+          f is not finite (NaN or ±∞) at {fNonFinite} of the sampled directions: f is undefined or overflows
+          on part of the hemisphere, so the estimates have no value (averaging only the finite terms would be
+          biased). Change f so it is finite everywhere on the hemisphere.
         </Notice>
       ) : null}
     </div>
@@ -124,7 +148,8 @@ export function ImportanceReadouts({
       />
       {pBad > 0 ? (
         <Notice kind="warn">
-          {pBad} sample(s) landed where p = 0 but f ≠ 0: importance sampling needs p &gt; 0 wherever f ≠ 0, so that estimate is biased.
+          {pBad} sample(s) landed where p = 0 but f ≠ 0: importance sampling needs p &gt; 0 wherever f ≠ 0, so
+          that estimate is biased.
         </Notice>
       ) : null}
     </div>
@@ -151,13 +176,24 @@ export function lobeExplanation(lobe: LobeId, exponent: number, fIsCos: boolean)
 }
 
 /** Infinite or huge variance of the importance estimator (by quadrature of ∫ f²/p dω). */
-export function VarianceWarning({ v, lobe, exponent, fIsCos }: { v: VarianceCheck | null; lobe: LobeId; exponent: number; fIsCos: boolean }) {
+export function VarianceWarning({
+  v,
+  lobe,
+  exponent,
+  fIsCos,
+}: {
+  v: VarianceCheck | null;
+  lobe: LobeId;
+  exponent: number;
+  fIsCos: boolean;
+}) {
   if (!v) return null;
   if (v.infinite)
     return (
       <Notice kind="warn" testId="variance-warning">
-        <strong>Infinite variance.</strong> ∫ f²/p dω diverges, so Var[f(X)/p(X)] is infinite: the importance estimate is still unbiased, but its standard error
-        means nothing, it converges slower than 1/√N, and rare huge terms make it jump.{' '}
+        <strong>Infinite variance.</strong> ∫ f²/p dω diverges, so Var[f(X)/p(X)] is infinite: the importance
+        estimate is still unbiased, but its standard error means nothing, it converges slower than 1/√N, and
+        rare huge terms make it jump.{' '}
         {lobe === 'phong' && fIsCos
           ? `Here f/p ∝ cos^(1−n) θ, so f²/p ∝ cos^(2−n) θ and ∫ cos^(2−n) θ sin θ dθ diverges at the horizon for n ≥ 3 (n = ${formatNumber(exponent, 6)}).`
           : lobeExplanation(lobe, exponent, fIsCos)}
@@ -166,14 +202,31 @@ export function VarianceWarning({ v, lobe, exponent, fIsCos }: { v: VarianceChec
   if (v.ratio > 10)
     return (
       <Notice kind="warn" testId="variance-warning">
-        <strong>Huge variance.</strong> One importance term varies {formatNumber(v.ratio, 3)} times as much as one uniform term (Var {formatNumber(v.importanceVar, 4)} against{' '}
-        {formatNumber(v.uniformVar, 4)}, by quadrature): this p makes the estimate worse, not better. {lobeExplanation(lobe, exponent, fIsCos)}
+        <strong>Huge variance.</strong> One importance term varies {formatNumber(v.ratio, 3)} times as much as
+        one uniform term (Var {formatNumber(v.importanceVar, 4)} against {formatNumber(v.uniformVar, 4)}, by
+        quadrature): this p makes the estimate worse, not better. {lobeExplanation(lobe, exponent, fIsCos)}
       </Notice>
     );
   return null;
 }
 
-export function RepeatView({ result, exact, runs, perRun, lobe, exponent, fIsCos }: { result: RepeatResult; exact: number; runs: number; perRun: number; lobe: LobeId; exponent: number; fIsCos: boolean }) {
+export function RepeatView({
+  result,
+  exact,
+  runs,
+  perRun,
+  lobe,
+  exponent,
+  fIsCos,
+}: {
+  result: RepeatResult;
+  exact: number;
+  runs: number;
+  perRun: number;
+  lobe: LobeId;
+  exponent: number;
+  fIsCos: boolean;
+}) {
   const u = useMemo(() => meanSe(result.uniform), [result]);
   const im = useMemo(() => meanSe(result.importance), [result]);
   const hasImp = Number.isFinite(im.mean);
@@ -190,9 +243,26 @@ export function RepeatView({ result, exact, runs, perRun, lobe, exponent, fIsCos
     const size = hi > lo ? (hi - lo) / 60 : 1;
     const xbins = { start: lo - size / 2, end: hi + size / 2, size };
     const traces: Record<string, unknown>[] = [
-      { type: 'histogram', x: Array.from(result.uniform), name: 'uniform', opacity: 0.6, marker: { color: '#1f5fa8' }, xbins, autobinx: false },
+      {
+        type: 'histogram',
+        x: Array.from(result.uniform),
+        name: 'uniform',
+        opacity: 0.6,
+        marker: { color: '#1f5fa8' },
+        xbins,
+        autobinx: false,
+      },
     ];
-    if (hasImp) traces.push({ type: 'histogram', x: Array.from(result.importance), name: 'importance', opacity: 0.55, marker: { color: '#d0502a' }, xbins, autobinx: false });
+    if (hasImp)
+      traces.push({
+        type: 'histogram',
+        x: Array.from(result.importance),
+        name: 'importance',
+        opacity: 0.55,
+        marker: { color: '#d0502a' },
+        xbins,
+        autobinx: false,
+      });
     return traces;
   }, [result, hasImp]);
   return (
@@ -205,15 +275,30 @@ export function RepeatView({ result, exact, runs, perRun, lobe, exponent, fIsCos
           ...titled(`${runs} estimates, N = ${perRun} each`),
           xaxis: { title: { text: 'estimate' } },
           yaxis: { title: { text: 'runs' } },
-          shapes: Number.isFinite(exact) ? [{ type: 'line', x0: exact, x1: exact, yref: 'paper', y0: 0, y1: 1, line: { color: '#888', width: 2, dash: 'dash' } }] : [],
+          shapes: Number.isFinite(exact)
+            ? [
+                {
+                  type: 'line',
+                  x0: exact,
+                  x1: exact,
+                  yref: 'paper',
+                  y0: 0,
+                  y1: 1,
+                  line: { color: '#888', width: 2, dash: 'dash' },
+                },
+              ]
+            : [],
         }}
       />
       <p className="small" data-testid="repeat-summary">
         Mean of the uniform estimates {formatNumber(u.mean, 6)} ± {formatNumber(u.se, 2)}
-        {hasImp ? `, of the importance estimates ${formatNumber(im.mean, 6)} ± ${formatNumber(im.se, 2)}` : ''}; the exact value is {formatNumber(exact, 6)} (dashed
-        line). Spread of one estimate: {formatNumber(u.sd, 3)} uniform
-        {hasImp ? `, ${formatNumber(im.sd, 3)} importance` : ''}. Both are unbiased: E[⟨I⟩] = ∫ f dω (the runs are independent, so ± here is a valid standard
-        error of the mean).
+        {hasImp
+          ? `, of the importance estimates ${formatNumber(im.mean, 6)} ± ${formatNumber(im.se, 2)}`
+          : ''}
+        ; the exact value is {formatNumber(exact, 6)} (dashed line). Spread of one estimate:{' '}
+        {formatNumber(u.sd, 3)} uniform
+        {hasImp ? `, ${formatNumber(im.sd, 3)} importance` : ''}. Both are unbiased: E[⟨I⟩] = ∫ f dω (the runs
+        are independent, so ± here is a valid standard error of the mean).
         {hasImp && im.sd > 1.05 * u.sd
           ? ` Here importance sampling is worse than uniform. ${lobeExplanation(lobe, exponent, fIsCos)}`
           : hasImp && im.sd < 0.95 * u.sd

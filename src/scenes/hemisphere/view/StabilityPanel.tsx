@@ -5,7 +5,13 @@
  */
 import { useEffect, useState } from 'react';
 import { MathTex, Notice, formatNumber } from '../../../ui';
-import { STABILITY_FORMS, STABILITY_XIS, computeStabilityReference, stabilityTable, type StabilityRow } from '../../../core/sampling';
+import {
+  STABILITY_FORMS,
+  STABILITY_XIS,
+  computeStabilityReference,
+  stabilityTable,
+  type StabilityRow,
+} from '../../../core/sampling';
 
 function xiLabel(xi: number): string {
   if (xi === 2 ** -53) return '2⁻⁵³';
@@ -19,7 +25,10 @@ function errCell(relError: number, ulps: number) {
   return (
     <td className={bad ? 'err-bad' : 'err-ok'}>
       {relError === 0 ? 'exact' : `${formatNumber(relError, 2)}`}
-      <span className="small"> {relError === 0 ? '' : `(${ulps < 1e6 ? formatNumber(ulps, 2) : '≫10⁶'} ulp)`}</span>
+      <span className="small">
+        {' '}
+        {relError === 0 ? '' : `(${ulps < 1e6 ? formatNumber(ulps, 2) : '≫10⁶'} ulp)`}
+      </span>
     </td>
   );
 }
@@ -37,16 +46,27 @@ export function StabilityPanel() {
       alive = false;
     };
   }, []);
-  if (error) return <Notice kind="error">The high-precision reference could not be computed ({error}).</Notice>;
+  if (error)
+    return <Notice kind="error">The high-precision reference could not be computed ({error}).</Notice>;
   if (!rows) return <p role="status">Computing the 64-digit reference…</p>;
   return (
     <div className="stability" data-testid="stability">
       {(['theta', 'phi'] as const).map((q) => {
         const forms = STABILITY_FORMS.filter((f) => f.quantity === q);
         return (
-          <div key={q} className="table-scroll" tabIndex={0} role="region" aria-label={q === 'theta' ? 'errors of the θ forms' : 'errors of the φ forms'}>
+          <div
+            key={q}
+            className="table-scroll"
+            tabIndex={0}
+            role="region"
+            aria-label={q === 'theta' ? 'errors of the θ forms' : 'errors of the φ forms'}
+          >
             <table className="stability-table">
-              <caption>{q === 'theta' ? 'θ(ξ₁): relative error (and ulps) against the 64-digit reference' : 'φ(ξ₂): relative error (and ulps)'}</caption>
+              <caption>
+                {q === 'theta'
+                  ? 'θ(ξ₁): relative error (and ulps) against the 64-digit reference'
+                  : 'φ(ξ₂): relative error (and ulps)'}
+              </caption>
               <thead>
                 <tr>
                   <th scope="col">ξ</th>
@@ -64,7 +84,11 @@ export function StabilityPanel() {
                   .map((r) => (
                     <tr key={r.xi}>
                       <th scope="row">{xiLabel(r.xi)}</th>
-                      <td className="mono">{r.reference !== 0 && Math.abs(r.reference) < 1e-3 ? r.reference.toExponential(9) : r.reference.toPrecision(10)}</td>
+                      <td className="mono">
+                        {r.reference !== 0 && Math.abs(r.reference) < 1e-3
+                          ? r.reference.toExponential(9)
+                          : r.reference.toPrecision(10)}
+                      </td>
                       {r.forms.map((f) => (
                         <FragmentCell key={f.id} relError={f.relError} ulps={f.ulps} />
                       ))}
@@ -76,9 +100,10 @@ export function StabilityPanel() {
         );
       })}
       <p className="small">
-        ½ arccos(1 − 2ξ) returns exactly 0 once ξ &lt; 2⁻⁵⁴ (1 − 2ξ rounds to 1) and keeps only half the digits above that; arcsin √ξ is
-        accurate there but near ξ = 1 amplifies the rounding of √ξ (arcsin is ill-conditioned at 1). ln(cξ + 1) loses the small cξ to the
-        +1. The sampler uses sin θ = √ξ₁, cos θ = √(1 − ξ₁) and log1p(expm1(2π) ξ₂), all within an ulp or two everywhere.
+        ½ arccos(1 − 2ξ) returns exactly 0 once ξ &lt; 2⁻⁵⁴ (1 − 2ξ rounds to 1) and keeps only half the
+        digits above that; arcsin √ξ is accurate there but near ξ = 1 amplifies the rounding of √ξ (arcsin is
+        ill-conditioned at 1). ln(cξ + 1) loses the small cξ to the +1. The sampler uses sin θ = √ξ₁, cos θ =
+        √(1 − ξ₁) and log1p(expm1(2π) ξ₂), all within an ulp or two everywhere.
       </p>
     </div>
   );

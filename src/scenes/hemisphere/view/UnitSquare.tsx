@@ -10,7 +10,17 @@ import { xiColor } from './colors';
 
 const MAX_SHOWN = 4096;
 
-export function UnitSquare({ kind, seed, n, size = 220 }: { kind: SequenceKind; seed: number; n: number; size?: number }) {
+export function UnitSquare({
+  kind,
+  seed,
+  n,
+  size = 220,
+}: {
+  kind: SequenceKind;
+  seed: number;
+  n: number;
+  size?: number;
+}) {
   const canvas = useRef<HTMLCanvasElement>(null);
   const shown = Math.min(n, MAX_SHOWN);
   const pad = 22;
@@ -18,7 +28,10 @@ export function UnitSquare({ kind, seed, n, size = 220 }: { kind: SequenceKind; 
   const X = (a: number) => pad + a * s;
   const Y = (b: number) => pad + (1 - b) * s;
   // the first sample, which the 3D view and the worked example track (ringed)
-  const first = useMemo(() => (shown > 0 ? fillSequence2D(kind, seed, n, new Float64Array(2), 0, 1, 0) : null), [kind, seed, n, shown]);
+  const first = useMemo(
+    () => (shown > 0 ? fillSequence2D(kind, seed, n, new Float64Array(2), 0, 1, 0) : null),
+    [kind, seed, n, shown],
+  );
   useEffect(() => {
     const c = canvas.current;
     const g = c?.getContext('2d', { willReadFrequently: true });
@@ -39,9 +52,9 @@ export function UnitSquare({ kind, seed, n, size = 220 }: { kind: SequenceKind; 
       const yb = Math.min(H, Math.round(y1 * dpr));
       for (let y = ya; y < yb; y++) {
         for (let x = xa, k = (y * W + xa) * 4; x < xb; x++, k += 4) {
-          px[k] = rgb[0]!;
-          px[k + 1] = rgb[1]!;
-          px[k + 2] = rgb[2]!;
+          px[k] = rgb[0];
+          px[k + 1] = rgb[1];
+          px[k + 2] = rgb[2];
           px[k + 3] = 255;
         }
       }
@@ -66,8 +79,8 @@ export function UnitSquare({ kind, seed, n, size = 220 }: { kind: SequenceKind; 
     const drawPoints = (from: number, to: number) => {
       if (from === 0) fillSequence2D(kind, seed, n, u, 0, shown, 0);
       for (let i = from; i < to; i++) {
-        const a = u[2 * i]!;
-        const b = u[2 * i + 1]!;
+        const a = u[2 * i];
+        const b = u[2 * i + 1];
         xiColor(a, b, rgb);
         fill(X(a) - r, X(a) + r, Y(b) - r, Y(b) + r);
       }
@@ -109,17 +122,33 @@ export function UnitSquare({ kind, seed, n, size = 220 }: { kind: SequenceKind; 
         />
         <svg viewBox={`0 0 ${size} ${size}`} width={size} height={size} aria-hidden="true" focusable="false">
           <rect x={X(0)} y={Y(1)} width={s} height={s} fill="none" stroke="currentColor" strokeWidth={1} />
-          {first && <circle cx={X(first[0]!)} cy={Y(first[1]!)} r={6} fill="none" stroke="currentColor" strokeWidth={2} />}
+          {first && (
+            <circle
+              cx={X(first[0])}
+              cy={Y(first[1])}
+              r={6}
+              fill="none"
+              stroke="currentColor"
+              strokeWidth={2}
+            />
+          )}
           <g fill="currentColor" fontSize={12} fontFamily="sans-serif">
-            <text x={X(1) - 30} y={Y(0) + 16}>ξ₁ →</text>
-            <text x={X(0) - 4} y={Y(0) + 16}>0</text>
-            <text x={X(1) - 4} y={Y(0) + 16}>1</text>
+            <text x={X(1) - 30} y={Y(0) + 16}>
+              ξ₁ →
+            </text>
+            <text x={X(0) - 4} y={Y(0) + 16}>
+              0
+            </text>
+            <text x={X(1) - 4} y={Y(0) + 16}>
+              1
+            </text>
             <text transform={`translate(${X(0) - 8} ${Y(0.5)}) rotate(-90)`}>ξ₂ →</text>
           </g>
         </svg>
       </div>
       <figcaption>
-        (ξ₁, ξ₂): first {formatCount(shown)} {kind} points; each colour lands where the same colour appears on the hemisphere; the ringed point is the first sample.
+        (ξ₁, ξ₂): first {formatCount(shown)} {kind} points; each colour lands where the same colour appears on
+        the hemisphere; the ringed point is the first sample.
       </figcaption>
     </figure>
   );

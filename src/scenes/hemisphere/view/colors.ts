@@ -8,12 +8,18 @@ const C01 = [0.1, 0.72, 0.42]; // (0, 1): green
 const C11 = [0.85, 0.18, 0.62]; // (1, 1): magenta
 
 // corner colours scaled to 0…255 (+0.5 so that truncation on store rounds)
-const R0 = C00[0]! * 255, G0 = C00[1]! * 255, B0 = C00[2]! * 255;
-const RA = (C10[0]! - C00[0]!) * 255, GA = (C10[1]! - C00[1]!) * 255, BA = (C10[2]! - C00[2]!) * 255;
-const RB = (C01[0]! - C00[0]!) * 255, GB = (C01[1]! - C00[1]!) * 255, BB = (C01[2]! - C00[2]!) * 255;
-const RAB = (C11[0]! - C10[0]! - C01[0]! + C00[0]!) * 255;
-const GAB = (C11[1]! - C10[1]! - C01[1]! + C00[1]!) * 255;
-const BAB = (C11[2]! - C10[2]! - C01[2]! + C00[2]!) * 255;
+const R0 = C00[0] * 255,
+  G0 = C00[1] * 255,
+  B0 = C00[2] * 255;
+const RA = (C10[0] - C00[0]) * 255,
+  GA = (C10[1] - C00[1]) * 255,
+  BA = (C10[2] - C00[2]) * 255;
+const RB = (C01[0] - C00[0]) * 255,
+  GB = (C01[1] - C00[1]) * 255,
+  BB = (C01[2] - C00[2]) * 255;
+const RAB = (C11[0] - C10[0] - C01[0] + C00[0]) * 255;
+const GAB = (C11[1] - C10[1] - C01[1] + C00[1]) * 255;
+const BAB = (C11[2] - C10[2] - C01[2] + C00[2]) * 255;
 
 /** Write the RGB (0…255) of (a, b) ∈ [0, 1]² into out[o..o+2] (bilinear in the corner colours). */
 export function xiColor(a: number, b: number, out: Uint8Array | number[], o = 0): void {

@@ -2,6 +2,12 @@
  * A plot title pinned inside the top of the plot's box (container coordinates) with a top margin
  * that fits it at classroom font sizes, so it is never clipped above the plot (present=1).
  */
-export function titled(text: string): { title: Record<string, unknown>; margin: { l: number; r: number; t: number; b: number } } {
-  return { title: { text, y: 1, yref: 'container', yanchor: 'top', pad: { t: 6 } }, margin: { l: 56, r: 16, t: 46, b: 44 } };
+export function titled(text: string): {
+  title: Record<string, unknown>;
+  margin: { l: number; r: number; t: number; b: number };
+} {
+  return {
+    title: { text, y: 1, yref: 'container', yanchor: 'top', pad: { t: 6 } },
+    margin: { l: 56, r: 16, t: 46, b: 44 },
+  };
 }

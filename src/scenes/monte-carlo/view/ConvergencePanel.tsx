@@ -9,7 +9,21 @@ import { arr, COLORS, Heading, L_ERR, L_EST, RunBar } from './plotStyle';
 
 type ConvResult = { series: SeriesData[]; exact: number; problems: string[] };
 
-export function ConvergencePanel({ args, nMax, exact, makeWorker, present, runToken = 0 }: { args: ProblemArgs; nMax: number; exact: number; makeWorker: () => Worker; present: boolean; runToken?: number }) {
+export function ConvergencePanel({
+  args,
+  nMax,
+  exact,
+  makeWorker,
+  present,
+  runToken = 0,
+}: {
+  args: ProblemArgs;
+  nMax: number;
+  exact: number;
+  makeWorker: () => Worker;
+  present: boolean;
+  runToken?: number;
+}) {
   const box = useRef<HTMLDivElement>(null);
   const key = JSON.stringify([args, nMax]);
   const task = useAutoRun<ConvResult, ConvResult>('convergence', makeWorker, { ...args, nMax }, key, box);
@@ -26,10 +40,24 @@ export function ConvergencePanel({ args, nMax, exact, makeWorker, present, runTo
   const ref = cur?.exact ?? exact;
 
   const estData = useMemo<PlotTrace[]>(() => {
-    const t: PlotTrace[] = series.map((s, i) => ({ type: 'scatter', mode: 'lines', x: arr(s.n), y: arr(s.estimate), name: s.label, line: { color: COLORS[i % COLORS.length], width: 2 } }));
+    const t: PlotTrace[] = series.map((s, i) => ({
+      type: 'scatter',
+      mode: 'lines',
+      x: arr(s.n),
+      y: arr(s.estimate),
+      name: s.label,
+      line: { color: COLORS[i % COLORS.length], width: 2 },
+    }));
     if (series.length && Number.isFinite(ref)) {
       const nm = Math.max(1, nMax);
-      t.push({ type: 'scatter', mode: 'lines', x: [1, nm], y: [ref, ref], name: `exact ${formatNumber(ref, 8)}`, line: { color: '#777', dash: 'dot', width: 2 } });
+      t.push({
+        type: 'scatter',
+        mode: 'lines',
+        x: [1, nm],
+        y: [ref, ref],
+        name: `exact ${formatNumber(ref, 8)}`,
+        line: { color: '#777', dash: 'dot', width: 2 },
+      });
     }
     return t;
   }, [series, ref, nMax]);
@@ -53,13 +81,27 @@ export function ConvergencePanel({ args, nMax, exact, makeWorker, present, runTo
     const s0 = series[0];
     if (s0 && s0.recorded > 2) {
       const scaled = arr(s0.absError)
-        .map((e, k) => e * Math.sqrt(s0.n[k]!))
+        .map((e, k) => e * Math.sqrt(s0.n[k]))
         .filter((v) => v > 0)
         .sort((x, y) => x - y);
       const c = scaled[Math.floor(scaled.length / 2)] ?? 1;
       const nm = Math.max(2, nMax);
-      t.push({ type: 'scatter', mode: 'lines', x: [1, nm], y: [c, c / Math.sqrt(nm)], name: 'N^−1/2 guide', line: { color: '#888', dash: 'dash', width: 1.5 } });
-      t.push({ type: 'scatter', mode: 'lines', x: [1, nm], y: [c, c / nm], name: 'N^−1 guide', line: { color: '#888', dash: 'dot', width: 1.5 } });
+      t.push({
+        type: 'scatter',
+        mode: 'lines',
+        x: [1, nm],
+        y: [c, c / Math.sqrt(nm)],
+        name: 'N^−1/2 guide',
+        line: { color: '#888', dash: 'dash', width: 1.5 },
+      });
+      t.push({
+        type: 'scatter',
+        mode: 'lines',
+        x: [1, nm],
+        y: [c, c / nm],
+        name: 'N^−1 guide',
+        line: { color: '#888', dash: 'dot', width: 1.5 },
+      });
     }
     return t;
   }, [series, ref, nMax]);
@@ -68,7 +110,14 @@ export function ConvergencePanel({ args, nMax, exact, makeWorker, present, runTo
   return (
     <Panel title="Convergence as N grows (Q4 d)" className="mc-plots">
       <div ref={box}>
-        <RunBar running={task.running} waiting={task.waiting} progress={task.progress} onCancel={task.cancel} onRun={task.run} label={`Running up to N = ${formatCount(nMax)}…`} />
+        <RunBar
+          running={task.running}
+          waiting={task.waiting}
+          progress={task.progress}
+          onCancel={task.cancel}
+          onRun={task.run}
+          label={`Running up to N = ${formatCount(nMax)}…`}
+        />
         {task.error ? <p className="field-error">The run failed: {task.error}</p> : null}
         {cur?.problems.length ? <p className="mc-note">Left out: {cur.problems.join('; ')}</p> : null}
         <Heading>Running estimate</Heading>
@@ -87,16 +136,17 @@ export function ConvergencePanel({ args, nMax, exact, makeWorker, present, runTo
         />
         {exactLabels.length ? (
           <p className="mc-note" data-testid="exact-strategies">
-            Not drawn on the log axis: {exactLabels.join(', ')} — its error is at rounding level (≤ 10⁻¹³ of the integral) at every N: f/p is the same number for every sample (zero
-            variance).
+            Not drawn on the log axis: {exactLabels.join(', ')} — its error is at rounding level (≤ 10⁻¹³ of
+            the integral) at every N: f/p is the same number for every sample (zero variance).
           </p>
         ) : null}
         <p className="mc-note">
-          One run’s error jumps around its trend; the slope is fitted to log |error| against log N. Independent samples give about −½ (error ∝ N^−½); stratified and Sobol points
-          do better on a smooth f; p ∝ f has no error at all when it is exact (the closed form for (x + c)²) and a tiny one when it is tabulated (4096 bins).
+          One run’s error jumps around its trend; the slope is fitted to log |error| against log N.
+          Independent samples give about −½ (error ∝ N^−½); stratified and Sobol points do better on a smooth
+          f; p ∝ f has no error at all when it is exact (the closed form for (x + c)²) and a tiny one when it
+          is tabulated (4096 bins).
         </p>
       </div>
     </Panel>
   );
 }
-

@@ -2,12 +2,30 @@ import { useEffect, useState, type ReactNode } from 'react';
 import { ExprField } from '../../../ui';
 
 /** A typed-expression field (commits on Enter / blur). */
-export function FnField(props: { label: ReactNode; value: string; error: string | null; onCommit: (s: string) => void; testId?: string; hint?: ReactNode }) {
-  return <ExprField label={props.label} value={props.value} error={props.error} onCommit={props.onCommit} testId={props.testId} hint={props.hint ?? 'in x, e.g. (x+2)^2, exp(-x)*sin(3x)'} />;
+export function FnField(props: {
+  label: ReactNode;
+  value: string;
+  error: string | null;
+  onCommit: (s: string) => void;
+  testId?: string;
+  hint?: ReactNode;
+}) {
+  return (
+    <ExprField
+      label={props.label}
+      value={props.value}
+      error={props.error}
+      onCommit={props.onCommit}
+      testId={props.testId}
+      hint={props.hint ?? 'in x, e.g. (x+2)^2, exp(-x)*sin(3x)'}
+    />
+  );
 }
 
 /** Parse "1.16, 1.98, 0.54" → numbers, or an error message. Empty → null (draw samples instead). */
-export function parseSamples(text: string): { ok: true; value: number[] | null } | { ok: false; message: string } {
+export function parseSamples(
+  text: string,
+): { ok: true; value: number[] | null } | { ok: false; message: string } {
   const t = text.trim();
   if (t === '') return { ok: true, value: null };
   const parts = t.split(/[,;\s]+/).filter((s) => s !== '');
@@ -22,7 +40,13 @@ export function parseSamples(text: string): { ok: true; value: number[] | null }
 }
 
 /** The `samples` list: given → exactly these are used; empty → N samples are drawn. */
-export function SamplesField({ value, onCommit }: { value: number[] | null; onCommit: (v: number[] | null) => void }) {
+export function SamplesField({
+  value,
+  onCommit,
+}: {
+  value: number[] | null;
+  onCommit: (v: number[] | null) => void;
+}) {
   const shown = value ? value.join(', ') : '';
   const [error, setError] = useState<string | null>(null);
   useEffect(() => setError(null), [shown]);

@@ -8,7 +8,19 @@ import { arr, COLORS, L_HIST, RunBar } from './plotStyle';
 
 type HistResult = { estimates: Float64Array; exact?: number };
 
-export function HistogramPanel({ args, N, exact, makeWorker, onN }: { args: ProblemArgs; N: number; exact: number; makeWorker: () => Worker; onN: (v: number) => void }) {
+export function HistogramPanel({
+  args,
+  N,
+  exact,
+  makeWorker,
+  onN,
+}: {
+  args: ProblemArgs;
+  N: number;
+  exact: number;
+  makeWorker: () => Worker;
+  onN: (v: number) => void;
+}) {
   const box = useRef<HTMLDivElement>(null);
   const M = 2000;
   const room = useLegendRoom();
@@ -23,32 +35,80 @@ export function HistogramPanel({ args, N, exact, makeWorker, onN }: { args: Prob
   const data = useMemo<PlotTrace[]>(() => {
     if (!est || !stats) return [];
     const h = histogram(est, 40);
-    const centers = arr(h.counts).map((_, k) => 0.5 * (h.edges[k]! + h.edges[k + 1]!));
+    const centers = arr(h.counts).map((_, k) => 0.5 * (h.edges[k] + h.edges[k + 1]));
     const ymax = Math.max(...arr(h.counts));
     return [
-      { type: 'bar', x: centers, y: arr(h.counts), name: `${stats.count} estimates`, marker: { color: COLORS[0], opacity: 0.75 }, width: (h.edges[1]! - h.edges[0]!) * 0.95 },
-      { type: 'scatter', mode: 'lines', x: [exact, exact], y: [0, ymax], name: `exact ${formatNumber(exact, 8)}`, line: { color: '#444', dash: 'dash', width: 2 } },
-      { type: 'scatter', mode: 'lines', x: [stats.mean, stats.mean], y: [0, ymax], name: `mean ${formatNumber(stats.mean, 8)}`, line: { color: COLORS[1], width: 2 } },
+      {
+        type: 'bar',
+        x: centers,
+        y: arr(h.counts),
+        name: `${stats.count} estimates`,
+        marker: { color: COLORS[0], opacity: 0.75 },
+        width: (h.edges[1] - h.edges[0]) * 0.95,
+      },
+      {
+        type: 'scatter',
+        mode: 'lines',
+        x: [exact, exact],
+        y: [0, ymax],
+        name: `exact ${formatNumber(exact, 8)}`,
+        line: { color: '#444', dash: 'dash', width: 2 },
+      },
+      {
+        type: 'scatter',
+        mode: 'lines',
+        x: [stats.mean, stats.mean],
+        y: [0, ymax],
+        name: `mean ${formatNumber(stats.mean, 8)}`,
+        line: { color: COLORS[1], width: 2 },
+      },
     ];
   }, [est, stats, exact]);
   return (
     <Panel title="Unbiasedness: many independent estimates (Q2 c)" className="mc-plots">
       <div ref={box}>
         <div className="mc-inline">
-          <NumberField label="samples per estimate" value={N} min={1} max={10000} step={1} onChange={(v) => onN(Math.round(v))} testId="hn-input" />
-          <span className="mc-note">{M} estimates, each from its own {N} sample{N === 1 ? '' : 's'} (selected pdf and sequence)</span>
+          <NumberField
+            label="samples per estimate"
+            value={N}
+            min={1}
+            max={10000}
+            step={1}
+            onChange={(v) => onN(Math.round(v))}
+            testId="hn-input"
+          />
+          <span className="mc-note">
+            {M} estimates, each from its own {N} sample{N === 1 ? '' : 's'} (selected pdf and sequence)
+          </span>
         </div>
-        <RunBar running={task.running} waiting={task.waiting} progress={task.progress} onCancel={task.cancel} onRun={task.run} label="Estimating…" />
+        <RunBar
+          running={task.running}
+          waiting={task.waiting}
+          progress={task.progress}
+          onCancel={task.cancel}
+          onRun={task.run}
+          label="Estimating…"
+        />
         {task.error ? <p className="field-error">The run failed: {task.error}</p> : null}
         <div className="readouts">
-          <Readout id="hist-mean" label="mean of the estimates" value={stats?.mean ?? null} digits={8} note={stats ? `± ${formatNumber(stats.sem, 2)} (its standard error)` : undefined} />
+          <Readout
+            id="hist-mean"
+            label="mean of the estimates"
+            value={stats?.mean ?? null}
+            digits={8}
+            note={stats ? `± ${formatNumber(stats.sem, 2)} (its standard error)` : undefined}
+          />
           <Readout id="hist-sd" label="spread of one estimate (sd)" value={stats?.sd ?? null} digits={4} />
           <Readout
             id="hist-bias"
             label="mean − exact, in standard errors"
             value={stats && stats.sd > 1e-12 * Math.abs(exact) ? (stats.mean - exact) / stats.sem : null}
             digits={3}
-            note={stats && !(stats.sd > 1e-12 * Math.abs(exact)) ? 'no spread: every estimate is exact (zero variance)' : undefined}
+            note={
+              stats && !(stats.sd > 1e-12 * Math.abs(exact))
+                ? 'no spread: every estimate is exact (zero variance)'
+                : undefined
+            }
           />
         </div>
         <Plot
@@ -58,10 +118,10 @@ export function HistogramPanel({ args, N, exact, makeWorker, onN }: { args: Prob
           layout={L_HIST}
         />
         <p className="mc-note">
-          E[⟨I⟩] = ∫ f dx for any valid p: each estimate misses, but their mean lands on the integral (within a few standard errors), whatever N is. Only the spread shrinks as N grows.
+          E[⟨I⟩] = ∫ f dx for any valid p: each estimate misses, but their mean lands on the integral (within
+          a few standard errors), whatever N is. Only the spread shrinks as N grows.
         </p>
       </div>
     </Panel>
   );
 }
-

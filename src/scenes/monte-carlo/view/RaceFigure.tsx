@@ -12,8 +12,24 @@
  * React renders the exact position on pause, step, seek and reset.
  */
 import { memo, useLayoutEffect, useMemo, useRef, type ReactNode } from 'react';
-import { formatNumber, LiveReadout, TEXT_HZ, TimelineTransport, useTimeline, useTimelineFrame, writeReadout } from '../../../ui';
-import { RACE_DURATION, RACE_MAX, raceHeadAt, raceLaneAt, racePoints, type LaneState, type RaceTrack } from '../model';
+import {
+  formatNumber,
+  LiveReadout,
+  TEXT_HZ,
+  TimelineTransport,
+  useTimeline,
+  useTimelineFrame,
+  writeReadout,
+} from '../../../ui';
+import {
+  RACE_DURATION,
+  RACE_MAX,
+  raceHeadAt,
+  raceLaneAt,
+  racePoints,
+  type LaneState,
+  type RaceTrack,
+} from '../model';
 
 const W = 360;
 const H = 190;
@@ -23,11 +39,26 @@ const PH = H - M.t - M.b;
 const C_U = 'var(--accent-2)';
 const C_I = 'var(--accent)';
 
-const SUP: Record<string, string> = { '-': '⁻', '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶', '7': '⁷', '8': '⁸', '9': '⁹' };
+const SUP: Record<string, string> = {
+  '-': '⁻',
+  '0': '⁰',
+  '1': '¹',
+  '2': '²',
+  '3': '³',
+  '4': '⁴',
+  '5': '⁵',
+  '6': '⁶',
+  '7': '⁷',
+  '8': '⁸',
+  '9': '⁹',
+};
 const pow10 = (e: number) => `10${String(e).replace(/./g, (c) => SUP[c] ?? c)}`;
 
 type Scale = (v: number) => number;
-const lin = (d0: number, d1: number, r0: number, r1: number): Scale => (v) => r0 + ((v - d0) / (d1 - d0 || 1)) * (r1 - r0);
+const lin =
+  (d0: number, d1: number, r0: number, r1: number): Scale =>
+  (v) =>
+    r0 + ((v - d0) / (d1 - d0 || 1)) * (r1 - r0);
 const logS = (d0: number, d1: number, r0: number, r1: number): Scale => {
   const l0 = Math.log10(d0);
   const l1 = Math.log10(d1);
@@ -37,14 +68,24 @@ const logS = (d0: number, d1: number, r0: number, r1: number): Scale => {
 function path(xs: readonly number[], ys: readonly number[], sx: Scale, sy: Scale, from = 0): string {
   let d = '';
   for (let k = from; k < xs.length; k++) {
-    const y = ys[k]!;
+    const y = ys[k];
     if (!Number.isFinite(y)) continue;
-    d += `${d ? 'L' : 'M'}${sx(xs[k]!).toFixed(1)},${sy(y).toFixed(1)}`;
+    d += `${d ? 'L' : 'M'}${sx(xs[k]).toFixed(1)},${sy(y).toFixed(1)}`;
   }
   return d;
 }
 
-function Axes({ xTicks, yTicks, xLabel, yLabel }: { xTicks: [number, string][]; yTicks: [number, string][]; xLabel: string; yLabel: string }) {
+function Axes({
+  xTicks,
+  yTicks,
+  xLabel,
+  yLabel,
+}: {
+  xTicks: [number, string][];
+  yTicks: [number, string][];
+  xLabel: string;
+  yLabel: string;
+}) {
   return (
     <g className="mc-svg-axes">
       <rect x={M.l} y={M.t} width={PW} height={PH} className="mc-svg-frame" />
@@ -64,7 +105,13 @@ function Axes({ xTicks, yTicks, xLabel, yLabel }: { xTicks: [number, string][]; 
       <text x={M.l + PW / 2} y={H - 2} textAnchor="middle" className="mc-svg-axis-title">
         {xLabel}
       </text>
-      <text x={11} y={M.t + PH / 2} textAnchor="middle" transform={`rotate(-90 11 ${M.t + PH / 2})`} className="mc-svg-axis-title">
+      <text
+        x={11}
+        y={M.t + PH / 2}
+        textAnchor="middle"
+        transform={`rotate(-90 11 ${M.t + PH / 2})`}
+        className="mc-svg-axis-title"
+      >
         {yLabel}
       </text>
     </g>
@@ -102,7 +149,14 @@ interface LaneRefs {
 }
 
 function useLaneRefs(): LaneRefs {
-  return { x: useRef(null), term: useRef(null), estimate: useRef(null), stderr: useRef(null), sub: useRef(null), after: useRef(null) };
+  return {
+    x: useRef(null),
+    term: useRef(null),
+    estimate: useRef(null),
+    stderr: useRef(null),
+    sub: useRef(null),
+    after: useRef(null),
+  };
 }
 
 function drawLane(r: LaneRefs, s: LaneState): void {
@@ -116,16 +170,44 @@ function drawLane(r: LaneRefs, s: LaneState): void {
   if (r.after.current && r.after.current.textContent !== after) r.after.current.textContent = after;
 }
 
-function Lane({ id, name, color, r, children }: { id: string; name: ReactNode; color: string; r: LaneRefs; children: ReactNode }) {
+function Lane({
+  id,
+  name,
+  color,
+  r,
+  children,
+}: {
+  id: string;
+  name: ReactNode;
+  color: string;
+  r: LaneRefs;
+  children: ReactNode;
+}) {
   return (
     <div className="mc-lane" style={{ borderTopColor: color }}>
       <h4 className="mc-lane-title" style={{ color }}>
         {name}
       </h4>
       <div className="readouts mc-lane-readouts">
-        <LiveReadout id={`race-${id}-x`} label={<>x<sub ref={r.sub} /></>} outRef={r.x} />
+        <LiveReadout
+          id={`race-${id}-x`}
+          label={
+            <>
+              x<sub ref={r.sub} />
+            </>
+          }
+          outRef={r.x}
+        />
         <LiveReadout id={`race-${id}-term`} label="its term f/p" outRef={r.term} />
-        <LiveReadout id={`race-${id}-estimate`} label={<>⟨I⟩ after <span ref={r.after} /></>} outRef={r.estimate} />
+        <LiveReadout
+          id={`race-${id}-estimate`}
+          label={
+            <>
+              ⟨I⟩ after <span ref={r.after} />
+            </>
+          }
+          outRef={r.estimate}
+        />
         <LiveReadout id={`race-${id}-stderr`} label="± s/√N" outRef={r.stderr} />
       </div>
       {children}
@@ -134,9 +216,27 @@ function Lane({ id, name, color, r, children }: { id: string; name: ReactNode; c
 }
 
 /** The race figure with its transport. Memoised: only a change of track or position redraws it. */
-export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importanceLabel, t, play, setParams }: RaceProps) {
+export const RaceFigure = memo(function RaceFigure({
+  track,
+  curve,
+  a,
+  b,
+  importanceLabel,
+  t,
+  play,
+  setParams,
+}: RaceProps) {
   const box = useRef<HTMLDivElement>(null);
-  const tl = useTimeline({ t, play, setParams, max: RACE_MAX, integer: true, duration: RACE_DURATION, visibleRef: box, renderHz: RENDER_HZ });
+  const tl = useTimeline({
+    t,
+    play,
+    setParams,
+    max: RACE_MAX,
+    integer: true,
+    duration: RACE_DURATION,
+    visibleRef: box,
+    renderHz: RENDER_HZ,
+  });
   const points = useMemo(() => racePoints(track.max), [track.max]);
   const fr = useMemo(() => raceHeadAt(track, tl.t, RECENT), [track, tl.t]);
   const I = track.exact;
@@ -147,8 +247,8 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
     let lo = 0;
     let hi = 0;
     for (let k = 0; k < curve.f.length; k++) {
-      const v = curve.f[k]!;
-      const p = curve.p[k]!;
+      const v = curve.f[k];
+      const p = curve.p[k];
       if (Number.isFinite(v)) {
         lo = Math.min(lo, v);
         hi = Math.max(hi, v);
@@ -162,13 +262,20 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
     const xs = Array.from(curve.x);
     const fPath = path(xs, Array.from(curve.f), sx, sy);
     const pPath = path(xs, Array.from(curve.p), sx, sy);
-    const xt: [number, string][] = [0, 0.25, 0.5, 0.75, 1].map((q) => [sx(a + q * (b - a)), formatNumber(a + q * (b - a), 3)]);
+    const xt: [number, string][] = [0, 0.25, 0.5, 0.75, 1].map((q) => [
+      sx(a + q * (b - a)),
+      formatNumber(a + q * (b - a), 3),
+    ]);
     let fmax = 0;
     for (const v of curve.f) if (Number.isFinite(v)) fmax = Math.max(fmax, v);
-    const yt: [number, string][] = (lo < 0 ? [lo, 0, fmax] : [0, fmax / 2, fmax]).map((v) => [sy(v), formatNumber(v, 3)]);
+    const yt: [number, string][] = (lo < 0 ? [lo, 0, fmax] : [0, fmax / 2, fmax]).map((v) => [
+      sy(v),
+      formatNumber(v, 3),
+    ]);
     // running estimate: the same y range for both lanes, around the exact value
     let R = 0;
-    for (let k = 3; k < track.max; k++) R = Math.max(R, Math.abs(track.uniform.mean[k]! - I), Math.abs(track.importance.mean[k]! - I));
+    for (let k = 3; k < track.max; k++)
+      R = Math.max(R, Math.abs(track.uniform.mean[k] - I), Math.abs(track.importance.mean[k] - I));
     R = Math.max(R * 1.1, 1e-6 * s);
     const ex = logS(1, track.max, M.l, M.l + PW);
     const ey = lin(I - R, I + R, M.t + PH, M.t);
@@ -182,7 +289,7 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
     for (let e = e0; e <= e1; e += e1 - e0 > 4 ? 2 : 1) lt.push([ly(10 ** e), pow10(e)]);
     // N^−½ guide through the uniform lane's final standard deviation: sd/√N is the expected error scale
     const last = track.max - 1;
-    const sd = Math.sqrt(track.uniform.m2[last]! / Math.max(1, last));
+    const sd = Math.sqrt(track.uniform.m2[last] / Math.max(1, last));
     const guide = `M${ex(1).toFixed(1)},${ly(Math.max(sd, 10 ** e0)).toFixed(1)}L${ex(track.max).toFixed(1)},${ly(Math.max(sd / Math.sqrt(track.max), 10 ** e0)).toFixed(1)}`;
     return { sx, sy, fPath, pPath, xt, yt, ex, ey, nt, et, ly, lt, floor: 10 ** e0, guide, R };
   }, [track, curve, a, b, I, s]);
@@ -207,7 +314,9 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
 
   // per-frame writes (see the module comment); React's render below is the same geometry at tl.t
   const svgF = useRef<SVGSVGElement>(null);
-  const pathRefs = useRef<Record<keyof Pick<RaceGeom, 'uErr' | 'iErr' | 'uBand' | 'iBand' | 'uEst' | 'iEst'>, SVGPathElement | null>>({ uErr: null, iErr: null, uBand: null, iBand: null, uEst: null, iEst: null });
+  const pathRefs = useRef<
+    Record<keyof Pick<RaceGeom, 'uErr' | 'iErr' | 'uBand' | 'iBand' | 'uEst' | 'iEst'>, SVGPathElement | null>
+  >({ uErr: null, iErr: null, uBand: null, iBand: null, uEst: null, iEst: null });
   const laneU = useLaneRefs();
   const laneI = useLaneRefs();
   const lastText = useRef(-Infinity);
@@ -231,7 +340,10 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
     const h = raceHeadAt(track, tt, 0);
     drawLane(laneU, h.uniform);
     drawLane(laneI, h.importance);
-    svg?.setAttribute('aria-label', `The integrand f over [${a}, ${b}] with the ${h.t} samples drawn so far, uniform and importance`);
+    svg?.setAttribute(
+      'aria-label',
+      `The integrand f over [${a}, ${b}] with the ${h.t} samples drawn so far, uniform and importance`,
+    );
   };
   const drawRef = useRef(draw);
   drawRef.current = draw;
@@ -244,8 +356,20 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
 
   // while playing the newest dot keeps its element (no drop animation per frame); stepped, it drops in
   const newestDot = (d: { x: number; y: number } | null, color: string, row: number) => (
-    <g key={tl.playing ? `${row}` : `${row}-${fr.t}`} className="mc-drop" data-dot={row} style={d ? undefined : { display: 'none' }}>
-      <line x1={d?.x ?? 0} x2={d?.x ?? 0} y1={M.t} y2={d?.y ?? 0} style={{ stroke: color }} strokeDasharray="2 3" />
+    <g
+      key={tl.playing ? `${row}` : `${row}-${fr.t}`}
+      className="mc-drop"
+      data-dot={row}
+      style={d ? undefined : { display: 'none' }}
+    >
+      <line
+        x1={d?.x ?? 0}
+        x2={d?.x ?? 0}
+        y1={M.t}
+        y2={d?.y ?? 0}
+        style={{ stroke: color }}
+        strokeDasharray="2 3"
+      />
       <circle cx={d?.x ?? 0} cy={d?.y ?? 0} r={5} style={{ fill: color }} />
     </g>
   );
@@ -255,7 +379,11 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
     return (
       <g data-rug={row}>
         {d.map((p, k) => (
-          <path key={k} d={p} style={{ stroke: color, strokeOpacity: 0.25 + (0.75 * (k + 1)) / RUG_BUCKETS }} />
+          <path
+            key={k}
+            d={p}
+            style={{ stroke: color, strokeOpacity: 0.25 + (0.75 * (k + 1)) / RUG_BUCKETS }}
+          />
         ))}
       </g>
     );
@@ -263,7 +391,12 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
 
   return (
     <div className="mc-race" ref={box} data-testid="race">
-      <TimelineTransport timeline={tl} label="Samples arriving" format={(n) => `${n} of ${RACE_MAX} samples`} testId="timeline">
+      <TimelineTransport
+        timeline={tl}
+        label="Samples arriving"
+        format={(n) => `${n} of ${RACE_MAX} samples`}
+        testId="timeline"
+      >
         <span className="mc-note" data-testid="race-rate">
           {formatNumber(rate, 4)} samples/s
         </span>
@@ -283,7 +416,11 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
         </figure>
         <figure className="mc-svg-fig">
           <figcaption>|⟨I⟩ − I| against N, log-log</figcaption>
-          <svg viewBox={`0 0 ${W} ${H}`} role="img" aria-label="Absolute error of the running estimate against the number of samples, log-log, uniform and importance">
+          <svg
+            viewBox={`0 0 ${W} ${H}`}
+            role="img"
+            aria-label="Absolute error of the running estimate against the number of samples, log-log, uniform and importance"
+          >
             <Axes xTicks={fig.nt} yTicks={fig.lt} xLabel="N (samples)" yLabel="|error|" />
             <path d={fig.guide} className="mc-svg-guide" />
             <path ref={setPath('uErr')} d={g.uErr} style={{ stroke: C_U }} className="mc-svg-line" />
@@ -291,7 +428,11 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
           </svg>
         </figure>
         <Lane id="uniform" name="Uniform, p = 1/(b − a)" color={C_U} r={laneU}>
-          <svg viewBox={`0 0 ${W} ${H}`} role="img" aria-label="Running estimate of the uniform estimator with its ± standard-error band, against N on a log axis">
+          <svg
+            viewBox={`0 0 ${W} ${H}`}
+            role="img"
+            aria-label="Running estimate of the uniform estimator with its ± standard-error band, against N on a log axis"
+          >
             <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
             <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
             <path ref={setPath('uBand')} d={g.uBand} style={{ fill: C_U }} className="mc-svg-band" />
@@ -299,7 +440,11 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
           </svg>
         </Lane>
         <Lane id="importance" name={`Importance, ${importanceLabel}`} color={C_I} r={laneI}>
-          <svg viewBox={`0 0 ${W} ${H}`} role="img" aria-label="Running estimate of the importance-sampling estimator with its ± standard-error band, against N on a log axis">
+          <svg
+            viewBox={`0 0 ${W} ${H}`}
+            role="img"
+            aria-label="Running estimate of the importance-sampling estimator with its ± standard-error band, against N on a log axis"
+          >
             <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
             <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
             <path ref={setPath('iBand')} d={g.iBand} style={{ fill: C_I }} className="mc-svg-band" />
@@ -308,8 +453,10 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
         </Lane>
       </div>
       <p className="mc-note">
-        Blue: uniform; orange: importance (its pdf dashed on f). Dashed line: the exact I = {formatNumber(I, 8)}; grey: the N^−½ trend σ/√N. Both estimators use the same random numbers ξᵢ (seeded): uniform puts xᵢ = a + (b − a)ξᵢ, importance xᵢ = P⁻¹(ξᵢ).
-        {' '}Errors below {pow10(Math.round(Math.log10(fig.floor)))} sit on the bottom line.
+        Blue: uniform; orange: importance (its pdf dashed on f). Dashed line: the exact I ={' '}
+        {formatNumber(I, 8)}; grey: the N^−½ trend σ/√N. Both estimators use the same random numbers ξᵢ
+        (seeded): uniform puts xᵢ = a + (b − a)ξᵢ, importance xᵢ = P⁻¹(ξᵢ). Errors below{' '}
+        {pow10(Math.round(Math.log10(fig.floor)))} sit on the bottom line.
       </p>
     </div>
   );
@@ -320,7 +467,12 @@ export const RaceFigure = memo(function RaceFigure({ track, curve, a, b, importa
  * sample counts `points` below t, plus the point at t itself: the segments at `points` are formatted
  * once; `at(t)` joins those below t, reusing the previous call's joined prefix when t grew.
  */
-export function raceCurves(track: RaceTrack, points: readonly number[], fig: { ex: Scale; ey: Scale; ly: Scale; floor: number; R: number }, I: number) {
+export function raceCurves(
+  track: RaceTrack,
+  points: readonly number[],
+  fig: { ex: Scale; ey: Scale; ly: Scale; floor: number; R: number },
+  I: number,
+) {
   const { ex, ey, ly, floor, R } = fig;
   const clampY = (v: number) => Math.max(I - R, Math.min(I + R, v));
   const xy = (n: number, y: number) => `${ex(n).toFixed(1)},${y.toFixed(1)}`;
@@ -348,7 +500,7 @@ export function raceCurves(track: RaceTrack, points: readonly number[], fig: { e
         s = '';
       }
       for (; k < upTo; k++) {
-        const g = segs[k]![key];
+        const g = segs[k][key];
         if (g) s = s ? (reversed ? `${g}L${s}` : `${s}L${g}`) : g;
       }
       return s;
@@ -369,14 +521,14 @@ export function raceCurves(track: RaceTrack, points: readonly number[], fig: { e
       let hi = points.length;
       while (lo < hi) {
         const mid = (lo + hi) >> 1;
-        if (points[mid]! < t) lo = mid + 1;
+        if (points[mid] < t) lo = mid + 1;
         else hi = mid;
       }
       const k = lo;
       const out = [] as string[][];
       for (const [L, lane] of [
-        [lanes[0]!, track.uniform],
-        [lanes[1]!, track.importance],
+        [lanes[0], track.uniform],
+        [lanes[1], track.importance],
       ] as const) {
         const tail: Seg = t >= 1 ? seg(raceLaneAt(lane, t, I)) : { err: null, est: null, up: null, dn: null };
         const err = join(L.err(k), tail.err);
@@ -385,7 +537,14 @@ export function raceCurves(track: RaceTrack, points: readonly number[], fig: { e
         const dn = join(tail.dn, L.dn(k));
         out.push([err ? `M${err}` : '', est ? `M${est}` : '', up ? `M${up}L${dn}Z` : '']);
       }
-      return { uErr: out[0]![0]!, uEst: out[0]![1]!, uBand: out[0]![2]!, iErr: out[1]![0]!, iEst: out[1]![1]!, iBand: out[1]![2]! };
+      return {
+        uErr: out[0][0],
+        uEst: out[0][1],
+        uBand: out[0][2],
+        iErr: out[1][0],
+        iEst: out[1][1],
+        iBand: out[1][2],
+      };
     },
   };
 }
@@ -414,7 +573,7 @@ function rugPaths(xs: number[], y: number): string[] {
   const off = RECENT - xs.length;
   for (let j = 0; j < xs.length; j++) {
     const b = Math.min(RUG_BUCKETS - 1, Math.floor(((j + off) * RUG_BUCKETS) / RECENT));
-    out[b] += `M${xs[j]!.toFixed(1)},${y}v7`;
+    out[b] += `M${xs[j].toFixed(1)},${y}v7`;
   }
   return out;
 }
@@ -424,7 +583,7 @@ function drawRug(g: Element | null, xs: number[], y: number): void {
   if (!g) return;
   const d = rugPaths(xs, y);
   const kids = g.children;
-  for (let k = 0; k < kids.length && k < d.length; k++) kids[k]!.setAttribute('d', d[k]!);
+  for (let k = 0; k < kids.length && k < d.length; k++) kids[k].setAttribute('d', d[k]);
 }
 
 /** Moves a newest-sample marker (a dashed drop line and a dot). */
@@ -448,10 +607,10 @@ function drawDot(g: Element | null, d: { x: number; y: number } | null): void {
 /** f at x, interpolated on the drawn grid (for placing the importance sample's dot on the curve). */
 function curveAt(curve: { x: Float64Array; f: Float64Array }, x: number): number {
   const n = curve.x.length;
-  const x0 = curve.x[0]!;
-  const x1 = curve.x[n - 1]!;
+  const x0 = curve.x[0];
+  const x1 = curve.x[n - 1];
   const q = ((x - x0) / (x1 - x0 || 1)) * (n - 1);
   const k = Math.max(0, Math.min(n - 2, Math.floor(q)));
   const w = q - k;
-  return curve.f[k]! * (1 - w) + curve.f[k + 1]! * w;
+  return curve.f[k] * (1 - w) + curve.f[k + 1] * w;
 }

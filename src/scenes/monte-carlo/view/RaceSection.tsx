@@ -26,7 +26,13 @@ export interface RaceInput {
 let last: { input: RaceInput; track: RaceTrack; curve: ReturnType<typeof curves> } | null = null;
 
 const same = (p: RaceInput, q: RaceInput) =>
-  p.f === q.f && p.a === q.a && p.b === q.b && p.sampler === q.sampler && p.density === q.density && Object.is(p.exact, q.exact) && p.seed === q.seed;
+  p.f === q.f &&
+  p.a === q.a &&
+  p.b === q.b &&
+  p.sampler === q.sampler &&
+  p.density === q.density &&
+  Object.is(p.exact, q.exact) &&
+  p.seed === q.seed;
 
 /** The track and the drawn curve of `input`, computed once per input (model.raceTrack, model.curves). */
 function raceOf(input: RaceInput): { track: RaceTrack; curve: ReturnType<typeof curves> } {
@@ -53,13 +59,40 @@ export function RaceSection({
 }) {
   if (!input) return <>{fallback}</>;
   const { track, curve } = raceOf(input);
-  return <RaceFigure track={track} curve={curve} a={input.a} b={input.b} importanceLabel={importanceLabel} t={t} play={play} setParams={setParams} />;
+  return (
+    <RaceFigure
+      track={track}
+      curve={curve}
+      a={input.a}
+      b={input.b}
+      importanceLabel={importanceLabel}
+      t={t}
+      play={play}
+      setParams={setParams}
+    />
+  );
 }
 
 /** Q4(d) with the errors of the whole race (nothing without a race). */
-export function Q4dRace({ input, importanceIsExam, onWhole }: { input: RaceInput | null; importanceIsExam: boolean; onWhole: () => void }) {
+export function Q4dRace({
+  input,
+  importanceIsExam,
+  onWhole,
+}: {
+  input: RaceInput | null;
+  importanceIsExam: boolean;
+  onWhole: () => void;
+}) {
   if (!input) return null;
   const { track } = raceOf(input);
   const end = raceAt(track, track.max, []);
-  return <Q4d uErr={end.uniform.absError} iErr={end.importance.absError} N={RACE_MAX} importanceIsExam={importanceIsExam} onWhole={onWhole} />;
+  return (
+    <Q4d
+      uErr={end.uniform.absError}
+      iErr={end.importance.absError}
+      N={RACE_MAX}
+      importanceIsExam={importanceIsExam}
+      onWhole={onWhole}
+    />
+  );
 }

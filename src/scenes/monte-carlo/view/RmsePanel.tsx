@@ -9,7 +9,21 @@ import { arr, clampArr, COLORS, Heading, hexA, L_RMSE, L_TIME, RunBar } from './
 
 type RmseResult = { rmse: RmseData[]; exact?: number; problems?: string[] };
 
-export function RmsePanel({ args, nMax, runs, exact, makeWorker, onRuns }: { args: ProblemArgs; nMax: number; runs: number; exact: number; makeWorker: () => Worker; onRuns: (r: number) => void }) {
+export function RmsePanel({
+  args,
+  nMax,
+  runs,
+  exact,
+  makeWorker,
+  onRuns,
+}: {
+  args: ProblemArgs;
+  nMax: number;
+  runs: number;
+  exact: number;
+  makeWorker: () => Worker;
+  onRuns: (r: number) => void;
+}) {
   const box = useRef<HTMLDivElement>(null);
   const key = JSON.stringify([args, nMax, runs]);
   const task = useAutoRun<RmseResult, RmseResult>('rmse', makeWorker, { ...args, nMax, runs }, key, box);
@@ -21,10 +35,30 @@ export function RmsePanel({ args, nMax, runs, exact, makeWorker, onRuns }: { arg
     const t: PlotTrace[] = [];
     rm.forEach((s, i) => {
       if (atRoundingLevel(s.rmse, exact)) return;
-      const c = COLORS[i % COLORS.length]!;
+      const c = COLORS[i % COLORS.length];
       const n = arr(s.n);
-      t.push({ type: 'scatter', mode: 'lines', x: n, y: clampArr(s.hi), line: { width: 0, color: c }, hoverinfo: 'skip', showlegend: false, legendgroup: s.label });
-      t.push({ type: 'scatter', mode: 'lines', x: n, y: clampArr(s.lo), line: { width: 0, color: c }, fill: 'tonexty', fillcolor: hexA(c, 0.15), hoverinfo: 'skip', showlegend: false, legendgroup: s.label });
+      t.push({
+        type: 'scatter',
+        mode: 'lines',
+        x: n,
+        y: clampArr(s.hi),
+        line: { width: 0, color: c },
+        hoverinfo: 'skip',
+        showlegend: false,
+        legendgroup: s.label,
+      });
+      t.push({
+        type: 'scatter',
+        mode: 'lines',
+        x: n,
+        y: clampArr(s.lo),
+        line: { width: 0, color: c },
+        fill: 'tonexty',
+        fillcolor: hexA(c, 0.15),
+        hoverinfo: 'skip',
+        showlegend: false,
+        legendgroup: s.label,
+      });
       t.push({
         type: 'scatter',
         mode: 'lines+markers',
@@ -45,7 +79,13 @@ export function RmsePanel({ args, nMax, runs, exact, makeWorker, onRuns }: { arg
         if (atRoundingLevel(s.rmse, exact)) return [];
         // x = measured time: sorted, so the curve never doubles back (n × cost per sample is
         // already increasing, but a curve against time must not depend on that)
-        const pts = sortedByX(arr(s.n).flatMap((n, k) => (s.timeMs[k]! > 0 && Number.isFinite(s.rmse[k]!) && s.rmse[k]! > 0 ? [{ x: s.timeMs[k]!, y: s.rmse[k]!, n }] : [])));
+        const pts = sortedByX(
+          arr(s.n).flatMap((n, k) =>
+            s.timeMs[k] > 0 && Number.isFinite(s.rmse[k]) && s.rmse[k] > 0
+              ? [{ x: s.timeMs[k], y: s.rmse[k], n }]
+              : [],
+          ),
+        );
         return {
           type: 'scatter',
           mode: 'lines+markers',
@@ -66,12 +106,27 @@ export function RmsePanel({ args, nMax, runs, exact, makeWorker, onRuns }: { arg
     <Panel title="RMSE over independent runs, and against run time" className="mc-plots">
       <div ref={box}>
         <div className="mc-inline">
-          <NumberField label="runs" value={runs} min={4} max={256} step={1} onChange={(v) => onRuns(Math.round(v))} testId="runs-input" />
+          <NumberField
+            label="runs"
+            value={runs}
+            min={4}
+            max={256}
+            step={1}
+            onChange={(v) => onRuns(Math.round(v))}
+            testId="runs-input"
+          />
           <span className="mc-note">
             {runsDone} run{runsDone === 1 ? '' : 's'} per strategy so far, N up to {formatCount(nMax)}
           </span>
         </div>
-        <RunBar running={task.running} waiting={task.waiting} progress={task.progress} onCancel={task.cancel} onRun={task.run} label="Independent runs…" />
+        <RunBar
+          running={task.running}
+          waiting={task.waiting}
+          progress={task.progress}
+          onCancel={task.cancel}
+          onRun={task.run}
+          label="Independent runs…"
+        />
         {task.error ? <p className="field-error">The run failed: {task.error}</p> : null}
         <Heading>RMSE over the runs (band: 10–90 % of |error|)</Heading>
         <Plot
@@ -87,13 +142,17 @@ export function RmsePanel({ args, nMax, runs, exact, makeWorker, onRuns }: { arg
           ariaLabel="RMSE against the measured wall-clock time of one estimate, log-log, per strategy"
           layout={L_TIME}
         />
-        {rmExactLabels.length ? <p className="mc-note">Not drawn: {rmExactLabels.join(', ')} (RMSE at rounding level: zero variance).</p> : null}
+        {rmExactLabels.length ? (
+          <p className="mc-note">
+            Not drawn: {rmExactLabels.join(', ')} (RMSE at rounding level: zero variance).
+          </p>
+        ) : null}
         <p className="mc-note">
-          Run time of one N-sample estimate = N × the cost per sample measured over all runs in a worker in your browser (set-up such as tabulating a pdf is not
-          counted). A curve further down and to the left buys more accuracy per millisecond.
+          Run time of one N-sample estimate = N × the cost per sample measured over all runs in a worker in
+          your browser (set-up such as tabulating a pdf is not counted). A curve further down and to the left
+          buys more accuracy per millisecond.
         </p>
       </div>
     </Panel>
   );
 }
-

@@ -10,7 +10,12 @@ import { EstimateRun1D, type McEstimate, type Problem1D } from '../../../core/es
 export /** Extra plot height on phones, where the legend above the plot takes several rows. */
 function useLegendRoom(): number {
   const q = '(max-width: 600px)';
-  const [narrow, setNarrow] = useState(() => typeof window !== 'undefined' && typeof window.matchMedia === 'function' && window.matchMedia(q).matches);
+  const [narrow, setNarrow] = useState(
+    () =>
+      typeof window !== 'undefined' &&
+      typeof window.matchMedia === 'function' &&
+      window.matchMedia(q).matches,
+  );
   useEffect(() => {
     if (typeof window.matchMedia !== 'function') return;
     const m = window.matchMedia(q);
@@ -39,11 +44,14 @@ function useThrottled<T>(value: T, ms: number, immediate: boolean): T {
       last.current = now;
       setShown(value);
     } else if (timer.current === undefined) {
-      timer.current = setTimeout(() => {
-        timer.current = undefined;
-        last.current = performance.now();
-        setShown(latest.current);
-      }, ms - (now - last.current));
+      timer.current = setTimeout(
+        () => {
+          timer.current = undefined;
+          last.current = performance.now();
+          setShown(latest.current);
+        },
+        ms - (now - last.current),
+      );
     }
   }, [value, ms, immediate]);
   useEffect(() => () => clearTimeout(timer.current), []);
@@ -58,11 +66,21 @@ export /**
  * panels share one queue: their runs go one at a time (first come, first served), so the workers
  * never take every core from the page that draws their results (2 cores are common).
  */
-function useAutoRun<R, P>(method: string, makeWorker: () => Worker, args: unknown, key: string, box: React.RefObject<HTMLElement | null>) {
+function useAutoRun<R, P>(
+  method: string,
+  makeWorker: () => Worker,
+  args: unknown,
+  key: string,
+  box: React.RefObject<HTMLElement | null>,
+) {
   const seen = useSeenOnce(box, '100px');
-  return useWorkerJob<R, P>(makeWorker, method, args, { key, enabled: seen, delayMs: 250, queue: 'monte-carlo' });
+  return useWorkerJob<R, P>(makeWorker, method, args, {
+    key,
+    enabled: seen,
+    delayMs: 250,
+    queue: 'monte-carlo',
+  });
 }
-
 
 export /**
  * estimate1D(problem, n) on the main thread, one batch of points per short task (ui/chunked), so

@@ -9,17 +9,57 @@ export const MARGIN = { l: 60, r: 12, t: 12, b: 48 };
 
 // Layouts are module constants: Plot re-renders whenever its layout object changes identity.
 export const L_FUNC = { legend: LEGEND, margin: MARGIN, xaxis: { title: { text: 'x' } } };
-export const L_EST = { xaxis: { type: 'log', title: { text: 'N (samples)' } }, yaxis: { title: { text: 'estimate' } }, legend: LEGEND, margin: MARGIN };
-export const L_ERR = { xaxis: { type: 'log', title: { text: 'N' } }, yaxis: { type: 'log', title: { text: '|estimate − exact|' }, exponentformat: 'power' }, legend: LEGEND, margin: MARGIN };
-export const L_RMSE = { xaxis: { type: 'log', title: { text: 'N' } }, yaxis: { type: 'log', title: { text: 'RMSE' }, exponentformat: 'power' }, legend: LEGEND, margin: MARGIN };
-export const L_TIME = { xaxis: { type: 'log', title: { text: 'ms per estimate (measured here)' } }, yaxis: { type: 'log', title: { text: 'RMSE' }, exponentformat: 'power' }, legend: LEGEND, margin: MARGIN };
-export const L_HIST = { xaxis: { title: { text: 'estimate ⟨I⟩' } }, yaxis: { title: { text: 'count' } }, bargap: 0, legend: LEGEND, margin: MARGIN };
+export const L_EST = {
+  xaxis: { type: 'log', title: { text: 'N (samples)' } },
+  yaxis: { title: { text: 'estimate' } },
+  legend: LEGEND,
+  margin: MARGIN,
+};
+export const L_ERR = {
+  xaxis: { type: 'log', title: { text: 'N' } },
+  yaxis: { type: 'log', title: { text: '|estimate − exact|' }, exponentformat: 'power' },
+  legend: LEGEND,
+  margin: MARGIN,
+};
+export const L_RMSE = {
+  xaxis: { type: 'log', title: { text: 'N' } },
+  yaxis: { type: 'log', title: { text: 'RMSE' }, exponentformat: 'power' },
+  legend: LEGEND,
+  margin: MARGIN,
+};
+export const L_TIME = {
+  xaxis: { type: 'log', title: { text: 'ms per estimate (measured here)' } },
+  yaxis: { type: 'log', title: { text: 'RMSE' }, exponentformat: 'power' },
+  legend: LEGEND,
+  margin: MARGIN,
+};
+export const L_HIST = {
+  xaxis: { title: { text: 'estimate ⟨I⟩' } },
+  yaxis: { title: { text: 'count' } },
+  bargap: 0,
+  legend: LEGEND,
+  margin: MARGIN,
+};
 
 export function Heading({ children }: { children: ReactNode }) {
   return <h3 className="mc-plot-title">{children}</h3>;
 }
 
-export function RunBar({ running, waiting, progress, onCancel, onRun, label }: { running: boolean; waiting: boolean; progress: number; onCancel: () => void; onRun: () => void; label: ReactNode }) {
+export function RunBar({
+  running,
+  waiting,
+  progress,
+  onCancel,
+  onRun,
+  label,
+}: {
+  running: boolean;
+  waiting: boolean;
+  progress: number;
+  onCancel: () => void;
+  onRun: () => void;
+  label: ReactNode;
+}) {
   return (
     <div className="mc-runbar">
       {waiting && !running ? (

@@ -10,7 +10,16 @@ import { useLayoutEffect, useRef, useState, type KeyboardEvent, type PointerEven
 import { useWidth } from '../../../ui/useWidth';
 import { useSectionWidth } from '../../../ui/Deferred';
 import type { RaySphereHit } from '../../../core/geometry';
-import { canonicalFrame, dirFromFrame, fromFrame, frameFits, tidy, toFrame, type Frame2D, type V3 } from '../model';
+import {
+  canonicalFrame,
+  dirFromFrame,
+  fromFrame,
+  frameFits,
+  tidy,
+  toFrame,
+  type Frame2D,
+  type V3,
+} from '../model';
 
 export interface CrossSectionProps {
   o: V3;
@@ -70,7 +79,14 @@ interface Layout {
  * The figure's layout for a ray: the plane (kept while it still fits, or while dragging) and the
  * view (kept while the content still fits well). Updates the kept frame and view in `keep`.
  */
-function layoutCross(ray: CrossRay, fitExtra: readonly V3[], W: number, H: number, dragging: boolean, keep: { frame: Frame2D | null; view: View | null }): Layout {
+function layoutCross(
+  ray: CrossRay,
+  fitExtra: readonly V3[],
+  W: number,
+  H: number,
+  dragging: boolean,
+  keep: { frame: Frame2D | null; view: View | null },
+): Layout {
   const { o, d, c, r, res, distanceRatio } = ray;
   const far = distanceRatio > FAR;
   // --- frame: keep it while it still contains the ray and the centre
@@ -100,7 +116,10 @@ function layoutCross(ray: CrossRay, fitExtra: readonly V3[], W: number, H: numbe
   } else {
     O2 = toFrame(fr, o);
     C2 = toFrame(fr, c);
-    dir2 = [(d[0] * fr.e1[0] + d[1] * fr.e1[1] + d[2] * fr.e1[2]) / dl, (d[0] * fr.e2[0] + d[1] * fr.e2[1] + d[2] * fr.e2[2]) / dl];
+    dir2 = [
+      (d[0] * fr.e1[0] + d[1] * fr.e1[1] + d[2] * fr.e1[2]) / dl,
+      (d[0] * fr.e2[0] + d[1] * fr.e2[1] + d[2] * fr.e2[2]) / dl,
+    ];
   }
   // a tangent's double root is drawn once
   const roots = res && res.t0 !== null ? (res.t0 === res.t1 ? [res.t0] : [res.t0, res.t1!]) : [];
@@ -113,7 +132,12 @@ function layoutCross(ray: CrossRay, fitExtra: readonly V3[], W: number, H: numbe
     // the closest point of the line to the centre, and the sphere
     const tClose = -((O2[0] - C2[0]) * dir2[0] + (O2[1] - C2[1]) * dir2[1]);
     const P: [number, number] = [O2[0] + tClose * dir2[0], O2[1] + tClose * dir2[1]];
-    box = [Math.min(C2[0] - r, P[0]), Math.max(C2[0] + r, P[0]), Math.min(C2[1] - r, P[1]), Math.max(C2[1] + r, P[1])];
+    box = [
+      Math.min(C2[0] - r, P[0]),
+      Math.max(C2[0] + r, P[0]),
+      Math.min(C2[1] - r, P[1]),
+      Math.max(C2[1] + r, P[1]),
+    ];
   } else {
     const extra = fitExtra.map((q) => toFrame(fr!, q));
     const xs = [C2[0] - r, C2[0] + r, O2[0], ...rootPts.map((p) => p[0]), ...extra.map((p) => p[0])];
@@ -127,8 +151,12 @@ function layoutCross(ray: CrossRay, fitExtra: readonly V3[], W: number, H: numbe
   const fit: View = { cx: (box[0] + box[1]) / 2, cy: (box[2] + box[3]) / 2, s: fitS };
   let view = prevView;
   const inside = (v: View) =>
-    box[0] >= v.cx - (v.s * W) / 2 + 10 * v.s && box[1] <= v.cx + (v.s * W) / 2 - 10 * v.s && box[2] >= v.cy - (v.s * H) / 2 + 10 * v.s && box[3] <= v.cy + (v.s * H) / 2 - 10 * v.s;
-  if (!dragging && (!view || !inside(view) || view.s > 2.5 * fitS || far !== prevView?.far || view.W !== W)) view = fit;
+    box[0] >= v.cx - (v.s * W) / 2 + 10 * v.s &&
+    box[1] <= v.cx + (v.s * W) / 2 - 10 * v.s &&
+    box[2] >= v.cy - (v.s * H) / 2 + 10 * v.s &&
+    box[3] <= v.cy + (v.s * H) / 2 - 10 * v.s;
+  if (!dragging && (!view || !inside(view) || view.s > 2.5 * fitS || far !== prevView?.far || view.W !== W))
+    view = fit;
   keep.view = { ...view!, far, W };
   const v = view!;
   const step = 10 ** Math.floor(Math.log10(v.s * 2));
@@ -142,7 +170,27 @@ function layoutCross(ray: CrossRay, fitExtra: readonly V3[], W: number, H: numbe
   const reach = (Math.hypot(W, H) * v.s + Math.hypot(O2[0] - v.cx, O2[1] - v.cy)) * 1.2;
   const fwdEnd: [number, number] = [O2[0] + reach * dir2[0], O2[1] + reach * dir2[1]];
   const backEnd: [number, number] = [O2[0] - reach * dir2[0], O2[1] - reach * dir2[1]];
-  return { far, fr, v, W, H, dl, r, O2, C2, dir2, tip, rHandle, fwdEnd, backEnd, roots, rootPts, res, distanceRatio, step };
+  return {
+    far,
+    fr,
+    v,
+    W,
+    H,
+    dl,
+    r,
+    O2,
+    C2,
+    dir2,
+    tip,
+    rHandle,
+    fwdEnd,
+    backEnd,
+    roots,
+    rootPts,
+    res,
+    distanceRatio,
+    step,
+  };
 }
 
 const X_ = (g: Layout, x: number) => g.W / 2 + (x - g.v.cx) / g.v.s;
@@ -185,13 +233,19 @@ function drawCross(fig: HTMLElement, g: Layout): void {
     const t = g.roots[i];
     show(el, t !== undefined);
     if (!el || t === undefined) continue;
-    const p = g.rootPts[i]!;
+    const p = g.rootPts[i];
     const isHit = res !== null && res.tHit !== null && res.tHit === t;
-    set(el, { transform: `translate(${cl(X(p[0]))} ${cl(Y(p[1]))})`, class: `rs-root${isHit ? ' hit' : ''}${t < 0 ? ' behind' : ''}` });
+    set(el, {
+      transform: `translate(${cl(X(p[0]))} ${cl(Y(p[1]))})`,
+      class: `rs-root${isHit ? ' hit' : ''}${t < 0 ? ' behind' : ''}`,
+    });
     set(el.firstElementChild, { r: isHit ? 6.5 : 5 });
     const label = el.lastElementChild;
     set(label, { y: i === 0 ? -9 : 18 });
-    text(label, `${g.roots.length === 1 ? 't₀ = t₁' : `t${i === 0 ? '₀' : '₁'}`}${isHit ? ' (hit)' : t < 0 ? ' < 0' : ''}`);
+    text(
+      label,
+      `${g.roots.length === 1 ? 't₀ = t₁' : `t${i === 0 ? '₀' : '₁'}`}${isHit ? ' (hit)' : t < 0 ? ' < 0' : ''}`,
+    );
   }
   const oLabel = q('o-label');
   show(oLabel, !far);
@@ -222,7 +276,17 @@ function drawCross(fig: HTMLElement, g: Layout): void {
   }
 }
 
-export function CrossSection({ o, d, c, r, res, distanceRatio, onChange, fitExtra = [], drawRef }: CrossSectionProps) {
+export function CrossSection({
+  o,
+  d,
+  c,
+  r,
+  res,
+  distanceRatio,
+  onChange,
+  fitExtra = [],
+  drawRef,
+}: CrossSectionProps) {
   const svgRef = useRef<SVGSVGElement>(null);
   // one SVG unit = one CSS pixel: labels and handles keep their size on small screens
   const figRef = useRef<HTMLElement>(null);
@@ -339,7 +403,15 @@ export function CrossSection({ o, d, c, r, res, distanceRatio, onChange, fitExtr
         data-testid="cross-section"
       >
         <defs>
-          <marker id="rs-arrow" viewBox="0 0 10 10" refX="8" refY="5" markerWidth="7" markerHeight="7" orient="auto-start-reverse">
+          <marker
+            id="rs-arrow"
+            viewBox="0 0 10 10"
+            refX="8"
+            refY="5"
+            markerWidth="7"
+            markerHeight="7"
+            orient="auto-start-reverse"
+          >
             <path d="M0,0 L10,5 L0,10 z" className="rs-arrowhead" />
           </marker>
         </defs>
@@ -369,9 +441,10 @@ export function CrossSection({ o, d, c, r, res, distanceRatio, onChange, fitExtr
         <text data-k="note" x={12} className="rs-note" display="none" />
       </svg>
       <figcaption className="rs-caption">
-        Plane through the ray and the centre. Solid: the ray (t ≥ 0); dashed: the line behind the origin (t &lt; 0). Drag{' '}
-        <span className="key-o">o</span>, the <span className="key-d">arrow tip</span> (direction), <span className="key-c">C</span> and the{' '}
-        <span className="key-r">rim handle</span> (radius).
+        Plane through the ray and the centre. Solid: the ray (t ≥ 0); dashed: the line behind the origin (t
+        &lt; 0). Drag <span className="key-o">o</span>, the <span className="key-d">arrow tip</span>{' '}
+        (direction), <span className="key-c">C</span> and the <span className="key-r">rim handle</span>{' '}
+        (radius).
       </figcaption>
     </figure>
   );

@@ -20,16 +20,50 @@ const num = (x: number | null) => (x === null ? 'none' : String(x));
 export function PrecisionTable({ model }: { model: RaySphereModel }) {
   const ref = model.reference;
   if (!ref || model.rows.length < 2) return null;
-  const [naive, stable] = [model.rows.find((r) => r.method === 'naive')!, model.rows.find((r) => r.method === 'stable')!];
+  const [naive, stable] = [
+    model.rows.find((r) => r.method === 'naive')!,
+    model.rows.find((r) => r.method === 'stable')!,
+  ];
   const rows: { label: string; n: string; s: string; ref: string; en: number | null; es: number | null }[] = [
-    { label: 'Δ = b² − 4ac', n: num(naive.res.discriminant), s: num(stable.res.discriminant), ref: num(ref.discriminant), en: naive.errDisc, es: stable.errDisc },
-    { label: 't₀', n: num(naive.res.t0), s: num(stable.res.t0), ref: num(ref.t0), en: naive.errT0, es: stable.errT0 },
-    { label: 't₁', n: num(naive.res.t1), s: num(stable.res.t1), ref: num(ref.t1), en: naive.errT1, es: stable.errT1 },
-    { label: 't-hit', n: num(naive.res.tHit), s: num(stable.res.tHit), ref: num(ref.tHit), en: naive.errHit, es: stable.errHit },
+    {
+      label: 'Δ = b² − 4ac',
+      n: num(naive.res.discriminant),
+      s: num(stable.res.discriminant),
+      ref: num(ref.discriminant),
+      en: naive.errDisc,
+      es: stable.errDisc,
+    },
+    {
+      label: 't₀',
+      n: num(naive.res.t0),
+      s: num(stable.res.t0),
+      ref: num(ref.t0),
+      en: naive.errT0,
+      es: stable.errT0,
+    },
+    {
+      label: 't₁',
+      n: num(naive.res.t1),
+      s: num(stable.res.t1),
+      ref: num(ref.t1),
+      en: naive.errT1,
+      es: stable.errT1,
+    },
+    {
+      label: 't-hit',
+      n: num(naive.res.tHit),
+      s: num(stable.res.tHit),
+      ref: num(ref.tHit),
+      en: naive.errHit,
+      es: stable.errHit,
+    },
   ];
   const cell = (v: string, e: number | null, testId: string, refV: string) => {
     const f = fmtErr(e);
-    const abs = v !== 'none' && refV !== 'none' && e !== null && e !== 0 && Number.isFinite(e) ? Math.abs(Number(v) - Number(refV)) : null;
+    const abs =
+      v !== 'none' && refV !== 'none' && e !== null && e !== 0 && Number.isFinite(e)
+        ? Math.abs(Number(v) - Number(refV))
+        : null;
     return (
       <td>
         <span className="mono" data-testid={testId} data-value={v}>
@@ -43,7 +77,12 @@ export function PrecisionTable({ model }: { model: RaySphereModel }) {
     );
   };
   return (
-    <div className="rs-table-wrap" tabIndex={0} role="group" aria-label="Precision of the two methods (the table scrolls sideways on narrow screens)">
+    <div
+      className="rs-table-wrap"
+      tabIndex={0}
+      role="group"
+      aria-label="Precision of the two methods (the table scrolls sideways on narrow screens)"
+    >
       <table className="rs-precision" data-testid="precision-table">
         <thead>
           <tr>
@@ -60,7 +99,11 @@ export function PrecisionTable({ model }: { model: RaySphereModel }) {
               {cell(r.n, r.en, `naive-${['disc', 't0', 't1', 'hit'][i]}`, r.ref)}
               {cell(r.s, r.es, `stable-${['disc', 't0', 't1', 'hit'][i]}`, r.ref)}
               <td>
-                <span className="mono" data-testid={`ref-${['disc', 't0', 't1', 'hit'][i]}`} data-value={r.ref}>
+                <span
+                  className="mono"
+                  data-testid={`ref-${['disc', 't0', 't1', 'hit'][i]}`}
+                  data-value={r.ref}
+                >
                   {r.ref}
                 </span>
               </td>
@@ -68,11 +111,19 @@ export function PrecisionTable({ model }: { model: RaySphereModel }) {
           ))}
           <tr>
             <th scope="row">case</th>
-            <td className={naive.caseRight ? '' : 'rs-wrong'} data-testid="naive-case" data-value={naive.res.case}>
+            <td
+              className={naive.caseRight ? '' : 'rs-wrong'}
+              data-testid="naive-case"
+              data-value={naive.res.case}
+            >
               {naive.res.case}
               {naive.caseRight ? '' : ' ✗ wrong'}
             </td>
-            <td className={stable.caseRight ? '' : 'rs-wrong'} data-testid="stable-case" data-value={stable.res.case}>
+            <td
+              className={stable.caseRight ? '' : 'rs-wrong'}
+              data-testid="stable-case"
+              data-value={stable.res.case}
+            >
               {stable.res.case}
               {stable.caseRight ? '' : ' ✗ wrong'}
             </td>
@@ -98,7 +149,10 @@ export function DistantImages() {
   // computed once the panel comes near the screen (it is under "explore further"; issue 15)
   const box = useRef<HTMLDivElement>(null);
   const seen = useSeenOnce(box);
-  const img = useMemo(() => (seen ? renderDistant(dist, IMG, IMG, () => performance.now()) : null), [dist, seen]);
+  const img = useMemo(
+    () => (seen ? renderDistant(dist, IMG, IMG, () => performance.now()) : null),
+    [dist, seen],
+  );
   const naiveRef = useRef<HTMLCanvasElement>(null);
   const stableRef = useRef<HTMLCanvasElement>(null);
   useEffect(() => {
@@ -115,31 +169,60 @@ export function DistantImages() {
   }, [img]);
   return (
     <div className="rs-distant" ref={box}>
-      <Slider label="Distance to the sphere, log₁₀(|o − c| / r)" value={exp} min={0.5} max={10} step={0.25} onChange={setExp} testId="distant-exp" />
+      <Slider
+        label="Distance to the sphere, log₁₀(|o − c| / r)"
+        value={exp}
+        min={0.5}
+        max={10}
+        step={0.25}
+        onChange={setExp}
+        testId="distant-exp"
+      />
       <div className="rs-images">
         <figure>
-          <canvas ref={naiveRef} width={IMG} height={IMG} className="rs-canvas" aria-label="Textbook render of the distant sphere" data-testid="img-naive" data-hits={img?.naiveHits} />
-          <figcaption>
-            Textbook: {img ? img.naiveHits : '…'} px hit
-          </figcaption>
+          <canvas
+            ref={naiveRef}
+            width={IMG}
+            height={IMG}
+            className="rs-canvas"
+            aria-label="Textbook render of the distant sphere"
+            data-testid="img-naive"
+            data-hits={img?.naiveHits}
+          />
+          <figcaption>Textbook: {img ? img.naiveHits : '…'} px hit</figcaption>
         </figure>
         <figure>
-          <canvas ref={stableRef} width={IMG} height={IMG} className="rs-canvas" aria-label="Robust render of the distant sphere" data-testid="img-stable" data-hits={img?.stableHits} />
-          <figcaption>
-            Robust: {img ? img.stableHits : '…'} px hit
-          </figcaption>
+          <canvas
+            ref={stableRef}
+            width={IMG}
+            height={IMG}
+            className="rs-canvas"
+            aria-label="Robust render of the distant sphere"
+            data-testid="img-stable"
+            data-hits={img?.stableHits}
+          />
+          <figcaption>Robust: {img ? img.stableHits : '…'} px hit</figcaption>
         </figure>
       </div>
       {img ? (
         <p className="rs-small" data-testid="distant-summary" data-disagree={img.disagree}>
-          Sphere {dist.toPrecision(2)} radii away, {IMG}×{IMG} rays per method. The methods disagree on <strong>{img.disagree}</strong> pixels
-          {img.disagree ? <> (<span className="rs-hole">pink</span>: the textbook form misses where the exact answer hits; grey specks outside the disc are hits it invents)</> : null}.
-          Both images ({2 * IMG * IMG} rays) were computed on the main thread by the batched kernel in{' '}
-          <span data-testid="distant-ms">{img.ms.toFixed(1)} ms</span> (the first render includes the JavaScript engine’s warm-up; later ones take about a millisecond).
+          Sphere {dist.toPrecision(2)} radii away, {IMG}×{IMG} rays per method. The methods disagree on{' '}
+          <strong>{img.disagree}</strong> pixels
+          {img.disagree ? (
+            <>
+              {' '}
+              (<span className="rs-hole">pink</span>: the textbook form misses where the exact answer hits;
+              grey specks outside the disc are hits it invents)
+            </>
+          ) : null}
+          . Both images ({2 * IMG * IMG} rays) were computed on the main thread by the batched kernel in{' '}
+          <span data-testid="distant-ms">{img.ms.toFixed(1)} ms</span> (the first render includes the
+          JavaScript engine’s warm-up; later ones take about a millisecond).
         </p>
       ) : (
         <p className="rs-small" data-testid="distant-summary">
-          Sphere {dist.toPrecision(2)} radii away, {IMG}×{IMG} rays per method: computed when this panel comes into view.
+          Sphere {dist.toPrecision(2)} radii away, {IMG}×{IMG} rays per method: computed when this panel comes
+          into view.
         </p>
       )}
     </div>
@@ -147,47 +230,128 @@ export function DistantImages() {
 }
 
 /** The error of each method against distance, with the current configuration marked. */
-export function ErrorVsDistance({ current, here }: { current: number; here?: { naive: number | null; stable: number | null } }) {
+export function ErrorVsDistance({
+  current,
+  here,
+}: {
+  current: number;
+  here?: { naive: number | null; stable: number | null };
+}) {
   // computed once the plot comes near the screen (it is under "explore further"; issue 15)
   const box = useRef<HTMLDivElement>(null);
   const seen = useSeenOnce(box);
   const s = useMemo(() => (seen ? errorVsDistance() : null), [seen]);
   const u = ERROR_FLOOR;
-  const data = useMemo<PlotTrace[]>(() => !s ? [] : [
-    { x: s.dist, y: s.discNaive, name: 'textbook Δ', mode: 'lines+markers', line: { color: '#c0392b' }, marker: { size: 4 } },
-    { x: s.dist, y: s.discStable, name: 'robust Δ', mode: 'lines+markers', line: { color: '#1f5fa8' }, marker: { size: 4 } },
-    { x: s.dist, y: s.hitNaive, name: 'textbook t-hit', mode: 'lines', line: { color: '#c0392b', dash: 'dot' } },
-    { x: s.dist, y: s.hitStable, name: 'robust t-hit', mode: 'lines', line: { color: '#1f5fa8', dash: 'dot' } },
-    { x: s.dist, y: s.dist.map((D) => Math.min(1, u * D * D)), name: 'u (D/r)²', mode: 'lines', line: { color: '#999', width: 1, dash: 'dash' } },
-    { x: s.dist, y: s.dist.map((D) => Math.min(1, u * D)), name: 'u (D/r)', mode: 'lines', line: { color: '#bbb', width: 1, dash: 'dash' } },
-    ...(here && current > 1 && Number.isFinite(current)
-      ? [
-          {
-            x: [current, current],
-            y: [here.naive, here.stable].map((e) => (e === null || !Number.isFinite(e) ? 1 : Math.min(1, Math.max(u, e)))),
-            name: 'this ray (Δ)',
-            mode: 'markers',
-            marker: { size: 12, symbol: 'x', color: ['#c0392b', '#1f5fa8'], line: { width: 1, color: '#222' } },
-          },
-        ]
-      : []),
-  ], [s, u, current, here]);
-  const layout = useMemo(() => ({
-    xaxis: { type: 'log', title: { text: 'distance |o − C| / r' }, exponentformat: 'power' },
-    yaxis: { type: 'log', title: { text: 'relative error (median)' }, exponentformat: 'power', range: [-17, 0.3] },
-    // inside the plot, top left (the curves start low there): the plot keeps its height and the
-    // axis titles are not squeezed out of the figure in classroom mode
-    legend: { x: 0.01, y: 0.99, xanchor: 'left', yanchor: 'top', bgcolor: 'rgba(0,0,0,0)' },
-    margin: { l: 72, r: 12, t: 12, b: 60 },
-    shapes:
-      current > 1 && Number.isFinite(current)
-        ? [{ type: 'line', x0: current, x1: current, yref: 'paper', y0: 0, y1: 1, line: { color: '#888', width: 1 } }]
-        : [],
-  }), [current]);
+  const data = useMemo<PlotTrace[]>(
+    () =>
+      !s
+        ? []
+        : [
+            {
+              x: s.dist,
+              y: s.discNaive,
+              name: 'textbook Δ',
+              mode: 'lines+markers',
+              line: { color: '#c0392b' },
+              marker: { size: 4 },
+            },
+            {
+              x: s.dist,
+              y: s.discStable,
+              name: 'robust Δ',
+              mode: 'lines+markers',
+              line: { color: '#1f5fa8' },
+              marker: { size: 4 },
+            },
+            {
+              x: s.dist,
+              y: s.hitNaive,
+              name: 'textbook t-hit',
+              mode: 'lines',
+              line: { color: '#c0392b', dash: 'dot' },
+            },
+            {
+              x: s.dist,
+              y: s.hitStable,
+              name: 'robust t-hit',
+              mode: 'lines',
+              line: { color: '#1f5fa8', dash: 'dot' },
+            },
+            {
+              x: s.dist,
+              y: s.dist.map((D) => Math.min(1, u * D * D)),
+              name: 'u (D/r)²',
+              mode: 'lines',
+              line: { color: '#999', width: 1, dash: 'dash' },
+            },
+            {
+              x: s.dist,
+              y: s.dist.map((D) => Math.min(1, u * D)),
+              name: 'u (D/r)',
+              mode: 'lines',
+              line: { color: '#bbb', width: 1, dash: 'dash' },
+            },
+            ...(here && current > 1 && Number.isFinite(current)
+              ? [
+                  {
+                    x: [current, current],
+                    y: [here.naive, here.stable].map((e) =>
+                      e === null || !Number.isFinite(e) ? 1 : Math.min(1, Math.max(u, e)),
+                    ),
+                    name: 'this ray (Δ)',
+                    mode: 'markers',
+                    marker: {
+                      size: 12,
+                      symbol: 'x',
+                      color: ['#c0392b', '#1f5fa8'],
+                      line: { width: 1, color: '#222' },
+                    },
+                  },
+                ]
+              : []),
+          ],
+    [s, u, current, here],
+  );
+  const layout = useMemo(
+    () => ({
+      xaxis: { type: 'log', title: { text: 'distance |o − C| / r' }, exponentformat: 'power' },
+      yaxis: {
+        type: 'log',
+        title: { text: 'relative error (median)' },
+        exponentformat: 'power',
+        range: [-17, 0.3],
+      },
+      // inside the plot, top left (the curves start low there): the plot keeps its height and the
+      // axis titles are not squeezed out of the figure in classroom mode
+      legend: { x: 0.01, y: 0.99, xanchor: 'left', yanchor: 'top', bgcolor: 'rgba(0,0,0,0)' },
+      margin: { l: 72, r: 12, t: 12, b: 60 },
+      shapes:
+        current > 1 && Number.isFinite(current)
+          ? [
+              {
+                type: 'line',
+                x0: current,
+                x1: current,
+                yref: 'paper',
+                y0: 0,
+                y1: 1,
+                line: { color: '#888', width: 1 },
+              },
+            ]
+          : [],
+    }),
+    [current],
+  );
   return (
     <div ref={box} style={{ minHeight: 440 }}>
       {s ? (
-        <Plot data={data} layout={layout} height={440} ariaLabel="Relative error of the discriminant and of t-hit against distance, textbook and robust" testId="error-plot" />
+        <Plot
+          data={data}
+          layout={layout}
+          height={440}
+          ariaLabel="Relative error of the discriminant and of t-hit against distance, textbook and robust"
+          testId="error-plot"
+        />
       ) : (
         <div data-testid="error-plot" style={{ height: 440 }} aria-busy="true" />
       )}

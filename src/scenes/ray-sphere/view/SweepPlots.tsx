@@ -25,7 +25,19 @@ export function niceTicks(lo: number, hi: number, count = 5): { ticks: number[];
   return { ticks, step };
 }
 
-const SUP: Record<string, string> = { '-': '⁻', '0': '⁰', '1': '¹', '2': '²', '3': '³', '4': '⁴', '5': '⁵', '6': '⁶', '7': '⁷', '8': '⁸', '9': '⁹' };
+const SUP: Record<string, string> = {
+  '-': '⁻',
+  '0': '⁰',
+  '1': '¹',
+  '2': '²',
+  '3': '³',
+  '4': '⁴',
+  '5': '⁵',
+  '6': '⁶',
+  '7': '⁷',
+  '8': '⁸',
+  '9': '⁹',
+};
 
 /** A tick label: plain decimals for ordinary sizes, m × 10ⁿ (never SI prefixes) otherwise. */
 export function fmtTick(v: number, step: number): string {
@@ -53,7 +65,14 @@ interface Frame {
   y1: number;
 }
 
-function makeFrame(W: number, H: number, xd: [number, number], yd: [number, number], padBottom = PAD.b, padTop = PAD.t): Frame {
+function makeFrame(
+  W: number,
+  H: number,
+  xd: [number, number],
+  yd: [number, number],
+  padBottom = PAD.b,
+  padTop = PAD.t,
+): Frame {
   const x0 = PAD.l;
   const x1 = W - PAD.r;
   const y0 = padTop;
@@ -64,7 +83,21 @@ function makeFrame(W: number, H: number, xd: [number, number], yd: [number, numb
 }
 
 /** Axes, ticks, grid, title and axis labels (static for a given frame). */
-function Axes({ f, xd, yd, title, xLabel, yLabel }: { f: Frame; xd: [number, number]; yd: [number, number]; title: string; xLabel: string; yLabel: string }) {
+function Axes({
+  f,
+  xd,
+  yd,
+  title,
+  xLabel,
+  yLabel,
+}: {
+  f: Frame;
+  xd: [number, number];
+  yd: [number, number];
+  title: string;
+  xLabel: string;
+  yLabel: string;
+}) {
   const xt = niceTicks(xd[0], xd[1], Math.max(2, Math.floor((f.x1 - f.x0) / 80)));
   const yt = niceTicks(yd[0], yd[1], Math.max(2, Math.floor((f.y1 - f.y0) / 45)));
   return (
@@ -92,7 +125,14 @@ function Axes({ f, xd, yd, title, xLabel, yLabel }: { f: Frame; xd: [number, num
       <text x={(f.x0 + f.x1) / 2} y={f.H - 8} textAnchor="middle" className="mp-label">
         {xLabel}
       </text>
-      <text x={4} y={(f.y0 + f.y1) / 2} textAnchor="middle" dominantBaseline="hanging" className="mp-label" transform={`rotate(-90 4 ${(f.y0 + f.y1) / 2})`}>
+      <text
+        x={4}
+        y={(f.y0 + f.y1) / 2}
+        textAnchor="middle"
+        dominantBaseline="hanging"
+        className="mp-label"
+        transform={`rotate(-90 4 ${(f.y0 + f.y1) / 2})`}
+      >
         {yLabel}
       </text>
     </g>
@@ -118,7 +158,16 @@ function SvgBox({
 }) {
   return (
     <div ref={boxRef} className="mp-box">
-      <svg ref={svgRef} viewBox={`0 0 ${W} ${height}`} width="100%" height={height} role="img" aria-label={label} data-testid={testId} className="mp-svg">
+      <svg
+        ref={svgRef}
+        viewBox={`0 0 ${W} ${height}`}
+        width="100%"
+        height={height}
+        role="img"
+        aria-label={label}
+        data-testid={testId}
+        className="mp-svg"
+      >
         {children}
       </svg>
     </div>
@@ -183,7 +232,10 @@ export function GSweepPlot({ res, window: w, drawRef }: GPlotProps) {
   const yd = useMemo<[number, number]>(() => [w.gMin, w.gMax], [w.gMin, w.gMax]);
   const f = useMemo(() => makeFrame(W, H, xd, yd), [W, H, xd, yd]);
   const xLabel = w.shift ? `t − ${w.shift.toPrecision(12)}` : 't (grey: behind the origin, t < 0)';
-  const axes = useMemo(() => <Axes f={f} xd={xd} yd={yd} title="g(t) = a t² + b t + c" xLabel={xLabel} yLabel="g(t)" />, [f, xd, yd, xLabel]);
+  const axes = useMemo(
+    () => <Axes f={f} xd={xd} yd={yd} title="g(t) = a t² + b t + c" xLabel={xLabel} yLabel="g(t)" />,
+    [f, xd, yd, xLabel],
+  );
   // the last ray drawn (from a render or a frame), so a re-render (resize, new window) redraws it
   const last = useRef(res);
   const draw = (r: RaySphereHit | null) => {
@@ -195,21 +247,41 @@ export function GSweepPlot({ res, window: w, drawRef }: GPlotProps) {
   useLayoutEffect(() => draw(last.current));
   const showBehind = w.shift === 0 && w.tMin < 0;
   return (
-    <SvgBox boxRef={box} svgRef={svg} W={W} height={H} label="The quadratic g(t) for the ray at the current position, with its real roots on the t axis" testId="g-plot">
+    <SvgBox
+      boxRef={box}
+      svgRef={svg}
+      W={W}
+      height={H}
+      label="The quadratic g(t) for the ray at the current position, with its real roots on the t axis"
+      testId="g-plot"
+    >
       <defs>
         <clipPath id="rs-gclip">
           <rect x={f.x0} y={f.y0} width={f.x1 - f.x0} height={f.y1 - f.y0} />
         </clipPath>
       </defs>
       {axes}
-      {showBehind ? <rect x={f.X(w.tMin)} y={f.y0} width={Math.max(0, f.X(0) - f.X(w.tMin))} height={f.y1 - f.y0} className="mp-behind" /> : null}
+      {showBehind ? (
+        <rect
+          x={f.X(w.tMin)}
+          y={f.y0}
+          width={Math.max(0, f.X(0) - f.X(w.tMin))}
+          height={f.y1 - f.y0}
+          className="mp-behind"
+        />
+      ) : null}
       <g clipPath="url(#rs-gclip)">
         <path className="mp-g" />
       </g>
       {[0, 1].map((i) => (
         <g key={i} data-root={i} className="mp-root" display="none">
           <circle r={5} />
-          <text y={i === 0 ? -10 : 20} x={i === 0 ? -4 : 4} textAnchor={i === 0 ? 'end' : 'start'} className="mp-rootlabel" />
+          <text
+            y={i === 0 ? -10 : 20}
+            x={i === 0 ? -4 : 4}
+            textAnchor={i === 0 ? 'end' : 'start'}
+            className="mp-rootlabel"
+          />
         </g>
       ))}
     </SvgBox>
@@ -225,7 +297,13 @@ export const CASE_COLOURS: Record<RaySphereCase, string> = {
   inside: 'case-inside',
   behind: 'case-behind',
 };
-const CASE_SHORT: Record<RaySphereCase, string> = { miss: 'miss', tangent: 'tangent', 'two-hits': 'two hits', inside: 'inside', behind: 'behind' };
+const CASE_SHORT: Record<RaySphereCase, string> = {
+  miss: 'miss',
+  tangent: 'tangent',
+  'two-hits': 'two hits',
+  inside: 'inside',
+  behind: 'behind',
+};
 
 export interface DeltaPlotProps {
   series: SweepSeries;
@@ -240,12 +318,23 @@ export interface DeltaPlotProps {
 }
 
 /** The static layer of the Δ plot (curves, case strip, tangency marks): redrawn only when the sweep changes. */
-const DeltaStatic = memo(function DeltaStatic({ series: s, tangentX, f, xd, yd, xLabel }: Omit<DeltaPlotProps, 'x' | 'discStable' | 'discNaive'> & { f: Frame; xd: [number, number]; yd: [number, number] }) {
+const DeltaStatic = memo(function DeltaStatic({
+  series: s,
+  tangentX,
+  f,
+  xd,
+  yd,
+  xLabel,
+}: Omit<DeltaPlotProps, 'x' | 'discStable' | 'discNaive'> & {
+  f: Frame;
+  xd: [number, number];
+  yd: [number, number];
+}) {
   const clampY = (v: number) => Math.max(-1e4, Math.min(1e4, f.Y(v)));
   let robust = '';
   s.x.forEach((x, i) => {
     if (!Number.isFinite(x)) return;
-    robust += `${robust ? 'L' : 'M'}${f.X(x).toFixed(1)},${clampY(s.discStable[i]!).toFixed(1)}`;
+    robust += `${robust ? 'L' : 'M'}${f.X(x).toFixed(1)},${clampY(s.discStable[i]).toFixed(1)}`;
   });
   // the textbook Δ as dots: its rounding noise shows as scatter, its wrong signs as dots across 0.
   // Two paths of circles (right sign, wrong sign) rather than an element per sample: ~240 fewer
@@ -253,11 +342,12 @@ const DeltaStatic = memo(function DeltaStatic({ series: s, tangentX, f, xd, yd, 
   let dotsOk = '';
   let dotsWrong = '';
   let nWrong = 0;
-  const circle = (cx: string, cy: string, r: number) => `M${cx},${cy}m${-r},0a${r},${r} 0 1,0 ${2 * r},0a${r},${r} 0 1,0 ${-2 * r},0`;
+  const circle = (cx: string, cy: string, r: number) =>
+    `M${cx},${cy}m${-r},0a${r},${r} 0 1,0 ${2 * r},0a${r},${r} 0 1,0 ${-2 * r},0`;
   s.x.forEach((x, i) => {
     if (!Number.isFinite(x)) return;
-    const v = s.discNaive[i]!;
-    const wrong = Math.sign(v) !== Math.sign(s.discStable[i]!);
+    const v = s.discNaive[i];
+    const wrong = Math.sign(v) !== Math.sign(s.discStable[i]);
     const cx = f.X(x).toFixed(1);
     const cy = clampY(v).toFixed(1);
     if (wrong) {
@@ -268,9 +358,9 @@ const DeltaStatic = memo(function DeltaStatic({ series: s, tangentX, f, xd, yd, 
   // case strip for the chosen method: merge equal neighbours into segments
   const segs: { x0: number; x1: number; c: RaySphereCase }[] = [];
   s.x.forEach((x, i) => {
-    const c = s.cases[i]!;
-    const prev = i > 0 ? s.x[i - 1]! : x;
-    const next = i < s.x.length - 1 ? s.x[i + 1]! : x;
+    const c = s.cases[i];
+    const prev = i > 0 ? s.x[i - 1] : x;
+    const next = i < s.x.length - 1 ? s.x[i + 1] : x;
     const a = (prev + x) / 2;
     const b = (x + next) / 2;
     const last = segs[segs.length - 1];
@@ -297,7 +387,14 @@ const DeltaStatic = memo(function DeltaStatic({ series: s, tangentX, f, xd, yd, 
       ))}
       <g className="mp-strip" aria-hidden="true">
         {segs.map((g, i) => (
-          <rect key={i} x={Math.min(f.X(g.x0), f.X(g.x1))} width={Math.max(0.5, Math.abs(f.X(g.x1) - f.X(g.x0)))} y={stripY - 8} height={8} className={`mp-case ${CASE_COLOURS[g.c]}`}>
+          <rect
+            key={i}
+            x={Math.min(f.X(g.x0), f.X(g.x1))}
+            width={Math.max(0.5, Math.abs(f.X(g.x1) - f.X(g.x0)))}
+            y={stripY - 8}
+            height={8}
+            className={`mp-case ${CASE_COLOURS[g.c]}`}
+          >
             <title>{CASE_SHORT[g.c]}</title>
           </rect>
         ))}
@@ -317,7 +414,11 @@ const DeltaStatic = memo(function DeltaStatic({ series: s, tangentX, f, xd, yd, 
 });
 
 /** Δ against the sweep coordinate; the current position moves along it. */
-export function DeltaSweepPlot(p: DeltaPlotProps & { drawRef?: { current: ((x: number, discStable: number | null, discNaive: number | null) => void) | null } }) {
+export function DeltaSweepPlot(
+  p: DeltaPlotProps & {
+    drawRef?: { current: ((x: number, discStable: number | null, discNaive: number | null) => void) | null };
+  },
+) {
   const box = useRef<HTMLDivElement>(null);
   const svg = useRef<SVGSVGElement>(null);
   const W = Math.max(260, useWidth(box, useSectionWidth() ?? 520));
@@ -346,7 +447,11 @@ export function DeltaSweepPlot(p: DeltaPlotProps & { drawRef?: { current: ((x: n
     const el = svg.current;
     if (!el) return;
     const cx = (Number.isFinite(x) ? f.X(Math.max(xd[0], Math.min(xd[1], x))) : f.x0).toFixed(1);
-    const [line, dn, ds] = [el.querySelector('line.mp-now'), el.querySelector('circle.mp-now-naive'), el.querySelector('circle.mp-now-robust')];
+    const [line, dn, ds] = [
+      el.querySelector('line.mp-now'),
+      el.querySelector('circle.mp-now-naive'),
+      el.querySelector('circle.mp-now-robust'),
+    ];
     line?.setAttribute('x1', cx);
     line?.setAttribute('x2', cx);
     const dot = (c: Element | null, v: number | null) => {
@@ -366,13 +471,28 @@ export function DeltaSweepPlot(p: DeltaPlotProps & { drawRef?: { current: ((x: n
   else last.current = [p.x, p.discStable, p.discNaive];
   useLayoutEffect(() => draw(...last.current));
   return (
-    <SvgBox boxRef={box} svgRef={svg} W={W} height={H} label="The discriminant Δ against the sweep coordinate, robust and textbook, with the current position" testId="delta-plot">
+    <SvgBox
+      boxRef={box}
+      svgRef={svg}
+      W={W}
+      height={H}
+      label="The discriminant Δ against the sweep coordinate, robust and textbook, with the current position"
+      testId="delta-plot"
+    >
       <defs>
         <clipPath id="rs-dclip">
           <rect x={f.x0} y={f.y0} width={f.x1 - f.x0} height={f.y1 - f.y0} />
         </clipPath>
       </defs>
-      <DeltaStatic series={s} tangentX={p.tangentX} f={f} xd={xd} yd={yd} xLabel={p.xLabel} method={p.method} />
+      <DeltaStatic
+        series={s}
+        tangentX={p.tangentX}
+        f={f}
+        xd={xd}
+        yd={yd}
+        xLabel={p.xLabel}
+        method={p.method}
+      />
       <line y1={f.y0} y2={f.y1 + 34} className="mp-now" />
       <circle r={5.5} className="mp-now-naive" display="none" />
       <circle r={5.5} className="mp-now-robust" display="none" />

@@ -36,7 +36,17 @@ interface Objects {
 
 const FAR = 60;
 
-export function View3D({ o, d, c, r, res, distanceRatio, height = 320, dark = false, fitExtra = [] }: View3DProps) {
+export function View3D({
+  o,
+  d,
+  c,
+  r,
+  res,
+  distanceRatio,
+  height = 320,
+  dark = false,
+  fitExtra = [],
+}: View3DProps) {
   const objs = useRef<Objects | null>(null);
   const latest = useRef({ o, d, c, r, res, distanceRatio, dark, fitExtra });
   latest.current = { o, d, c, r, res, distanceRatio, dark, fitExtra };
@@ -54,14 +64,19 @@ export function View3D({ o, d, c, r, res, distanceRatio, height = 320, dark = fa
       extent = 2.5 * r;
     } else {
       const pts: V3[] = [o, c, ...fitExtra];
-      if (res && res.t1 !== null) pts.push([o[0] + res.t1 * d[0], o[1] + res.t1 * d[1], o[2] + res.t1 * d[2]]);
-      const lo = [0, 1, 2].map((i) => Math.min(...pts.map((p) => p[i]!), c[i]! - r));
-      const hi = [0, 1, 2].map((i) => Math.max(...pts.map((p) => p[i]!), c[i]! + r));
-      centre = [(lo[0]! + hi[0]!) / 2, (lo[1]! + hi[1]!) / 2, (lo[2]! + hi[2]!) / 2];
-      extent = Math.max(hi[0]! - lo[0]!, hi[1]! - lo[1]!, hi[2]! - lo[2]!) / 2 || 1;
+      if (res && res.t1 !== null)
+        pts.push([o[0] + res.t1 * d[0], o[1] + res.t1 * d[1], o[2] + res.t1 * d[2]]);
+      const lo = [0, 1, 2].map((i) => Math.min(...pts.map((p) => p[i]), c[i] - r));
+      const hi = [0, 1, 2].map((i) => Math.max(...pts.map((p) => p[i]), c[i] + r));
+      centre = [(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, (lo[2] + hi[2]) / 2];
+      extent = Math.max(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) / 2 || 1;
     }
     const s = 1.05 / extent;
-    const map = (p: readonly number[]): [number, number, number] => [(p[0]! - centre[0]) * s, (p[1]! - centre[1]) * s, (p[2]! - centre[2]) * s];
+    const map = (p: readonly number[]): [number, number, number] => [
+      (p[0] - centre[0]) * s,
+      (p[1] - centre[1]) * s,
+      (p[2] - centre[2]) * s,
+    ];
     const dl = Math.hypot(d[0], d[1], d[2]);
     const dh: V3 = [d[0] / dl, d[1] / dl, d[2] / dl];
 
@@ -116,19 +131,36 @@ export function View3D({ o, d, c, r, res, distanceRatio, height = 320, dark = fa
     const T = ctx.THREE;
     const sphere = new T.Mesh(
       new T.SphereGeometry(1, 48, 32),
-      new T.MeshStandardMaterial({ color: 0x6f9fd8, transparent: true, opacity: 0.42, roughness: 0.6, depthWrite: false }),
+      new T.MeshStandardMaterial({
+        color: 0x6f9fd8,
+        transparent: true,
+        opacity: 0.42,
+        roughness: 0.6,
+        depthWrite: false,
+      }),
     );
-    const wire = new T.LineSegments(new T.WireframeGeometry(new T.SphereGeometry(1, 18, 12)), new T.LineBasicMaterial({ color: 0x1f5fa8, transparent: true, opacity: 0.25 }));
+    const wire = new T.LineSegments(
+      new T.WireframeGeometry(new T.SphereGeometry(1, 18, 12)),
+      new T.LineBasicMaterial({ color: 0x1f5fa8, transparent: true, opacity: 0.25 }),
+    );
     const lineGeom = () => {
       const g = new T.BufferGeometry();
       g.setAttribute('position', new T.BufferAttribute(new Float32Array(6), 3));
       return g;
     };
     const ray = new T.Line(lineGeom(), new T.LineBasicMaterial({ color: 0xe8590c }));
-    const back = new T.Line(lineGeom(), new T.LineDashedMaterial({ color: 0x888888, dashSize: 0.08, gapSize: 0.06 }));
-    const origin = new T.Mesh(new T.SphereGeometry(0.05, 16, 12), new T.MeshBasicMaterial({ color: 0x222222 }));
+    const back = new T.Line(
+      lineGeom(),
+      new T.LineDashedMaterial({ color: 0x888888, dashSize: 0.08, gapSize: 0.06 }),
+    );
+    const origin = new T.Mesh(
+      new T.SphereGeometry(0.05, 16, 12),
+      new T.MeshBasicMaterial({ color: 0x222222 }),
+    );
     const arrow = new T.ArrowHelper(new T.Vector3(1, 0, 0), new T.Vector3(), 0.6, 0xe8590c, 0.14, 0.08);
-    const roots = [0, 1].map(() => new T.Mesh(new T.SphereGeometry(0.045, 16, 12), new T.MeshBasicMaterial({ color: 0x1f5fa8 })));
+    const roots = [0, 1].map(
+      () => new T.Mesh(new T.SphereGeometry(0.045, 16, 12), new T.MeshBasicMaterial({ color: 0x1f5fa8 })),
+    );
     ctx.scene.add(sphere, wire, ray, back, origin, arrow, ...roots);
     objs.current = { ctx, sphere, wire, ray, back, origin, arrow, roots };
     update();
@@ -144,8 +176,18 @@ export function View3D({ o, d, c, r, res, distanceRatio, height = 320, dark = fa
   };
 
   return (
-    <Viewport ariaLabel="3D view of the ray and the sphere" height={height} setup={setup} testId="view-3d" phiZero={false}>
-      {distanceRatio > FAR ? <p className="rs-3d-note">Centred on the sphere; the origin is {distanceRatio.toPrecision(3)} radii away.</p> : null}
+    <Viewport
+      ariaLabel="3D view of the ray and the sphere"
+      height={height}
+      setup={setup}
+      testId="view-3d"
+      phiZero={false}
+    >
+      {distanceRatio > FAR ? (
+        <p className="rs-3d-note">
+          Centred on the sphere; the origin is {distanceRatio.toPrecision(3)} radii away.
+        </p>
+      ) : null}
     </Viewport>
   );
 }

@@ -11,7 +11,16 @@
  * query brought into [0, 1]² by the wrap mode (an equivalent point: the lookup there is the same).
  */
 import { useWidth } from '../../../ui/useWidth';
-import { memo, useEffect, useLayoutEffect, useMemo, useRef, type KeyboardEvent, type PointerEvent, type RefObject } from 'react';
+import {
+  memo,
+  useEffect,
+  useLayoutEffect,
+  useMemo,
+  useRef,
+  type KeyboardEvent,
+  type PointerEvent,
+  type RefObject,
+} from 'react';
 import { nodeCoord, type LookupOptions, type TextureGrid } from '../../../core/texture';
 import { colorCss, darkTextOn, normalizeValue } from '../colormap';
 import { pathPoint, textureImage, type Lookup, type QueryPath } from '../model';
@@ -61,7 +70,20 @@ interface Props {
   drawRef?: { current: ((q: Lookup) => void) | null };
 }
 
-export function GridView({ grid, opts, range, q, path, onMove, editing, selected, onSelect, onEditEnter, present, drawRef }: Props) {
+export function GridView({
+  grid,
+  opts,
+  range,
+  q,
+  path,
+  onMove,
+  editing,
+  selected,
+  onSelect,
+  onEditEnter,
+  present,
+  drawRef,
+}: Props) {
   const win = useMemo(() => viewWindow(grid, opts), [grid, opts]);
   const svgRef = useRef<SVGSVGElement>(null);
   const markerRef = useRef<SVGGElement>(null);
@@ -94,11 +116,17 @@ export function GridView({ grid, opts, range, q, path, onMove, editing, selected
     const fy = (e.clientY - r.top) / r.height;
     const span = win.max - win.min;
     const clamp01 = (t: number) => Math.min(1, Math.max(0, t));
-    return { u: round4(clamp01(win.min + fx * span)), v: round4(clamp01(win.max - fy * span)), x: fx * VB, y: fy * VB };
+    return {
+      u: round4(clamp01(win.min + fx * span)),
+      v: round4(clamp01(win.max - fy * span)),
+      x: fx * VB,
+      y: fy * VB,
+    };
   };
 
   const nodeAt = (u: number, v: number) => {
-    const pick = (t: number, n: number) => (opts.align === 'corner' ? Math.round(t * (n - 1)) : Math.min(n - 1, Math.floor(t * n)));
+    const pick = (t: number, n: number) =>
+      opts.align === 'corner' ? Math.round(t * (n - 1)) : Math.min(n - 1, Math.floor(t * n));
     return { i: pick(u, grid.width), j: pick(v, grid.height) };
   };
 
@@ -198,15 +226,31 @@ export function GridView({ grid, opts, range, q, path, onMove, editing, selected
         >
           <StaticLayer grid={grid} opts={opts} range={range} win={win} unitsPerPx={unitsPerPx} />
           <QueryLayer grid={grid} win={win} q={q} gRef={stencilRef} />
-          <LabelLayer grid={grid} opts={opts} range={range} win={win} present={present} unitsPerPx={unitsPerPx} />
+          <LabelLayer
+            grid={grid}
+            opts={opts}
+            range={range}
+            win={win}
+            present={present}
+            unitsPerPx={unitsPerPx}
+          />
           <PathLayer path={path} vflip={opts.vflip} win={win} />
-          <g ref={markerRef} className="tx-query" transform={`translate(${sx(q.bil.u, win)} ${sy(q.bil.v, win)})`} data-testid="query-marker">
+          <g
+            ref={markerRef}
+            className="tx-query"
+            transform={`translate(${sx(q.bil.u, win)} ${sy(q.bil.v, win)})`}
+            data-testid="query-marker"
+          >
             <circle r={11} />
             <line x1={-22} x2={22} y1={0} y2={0} />
             <line y1={-22} y2={22} x1={0} x2={0} />
           </g>
           {inWindow(aT, win) ? (
-            <g className="tx-handle a" transform={`translate(${sx(aT.u, win)} ${sy(aT.v, win)})`} aria-hidden="true">
+            <g
+              className="tx-handle a"
+              transform={`translate(${sx(aT.u, win)} ${sy(aT.v, win)})`}
+              aria-hidden="true"
+            >
               <circle className="tx-handle-focus" r={Math.max(30, 16 * unitsPerPx)} />
               <circle className="tx-handle-mark" r={Math.max(14, 7 * unitsPerPx)} />
             </g>
@@ -224,7 +268,13 @@ export function GridView({ grid, opts, range, q, path, onMove, editing, selected
             >
               <circle className="tx-handle-hit" r={HANDLE_HIT_PX * unitsPerPx} />
               <circle className="tx-handle-focus" r={Math.max(30, 16 * unitsPerPx)} />
-              <rect className="tx-handle-mark" x={-Math.max(13, 7 * unitsPerPx)} y={-Math.max(13, 7 * unitsPerPx)} width={2 * Math.max(13, 7 * unitsPerPx)} height={2 * Math.max(13, 7 * unitsPerPx)} />
+              <rect
+                className="tx-handle-mark"
+                x={-Math.max(13, 7 * unitsPerPx)}
+                y={-Math.max(13, 7 * unitsPerPx)}
+                width={2 * Math.max(13, 7 * unitsPerPx)}
+                height={2 * Math.max(13, 7 * unitsPerPx)}
+              />
             </g>
           ) : null}
           {editing && selected ? (
@@ -238,15 +288,22 @@ export function GridView({ grid, opts, range, q, path, onMove, editing, selected
         </svg>
       </div>
       <div className="tx-axis-note">
-        u → right, {opts.vflip ? 'v′ = 1 − v' : 'v'} → up · {opts.align === 'corner' ? 'nodes at i/(N − 1)' : 'texel centres at (i + ½)/N'} · ○ start (u, v) · □ end (u₂,
-        v₂)
+        u → right, {opts.vflip ? 'v′ = 1 − v' : 'v'} → up ·{' '}
+        {opts.align === 'corner' ? 'nodes at i/(N − 1)' : 'texel centres at (i + ½)/N'} · ○ start (u, v) · □
+        end (u₂, v₂)
       </div>
     </div>
   );
 }
 
 /** The four taps with their values and weights, and the magnified cell (follows the query). */
-export function StencilDetail({ q, drawRef }: { q: Lookup; drawRef?: { current: ((q: Lookup, text: boolean) => void) | null } }) {
+export function StencilDetail({
+  q,
+  drawRef,
+}: {
+  q: Lookup;
+  drawRef?: { current: ((q: Lookup, text: boolean) => void) | null };
+}) {
   const listRef = useRef<HTMLUListElement>(null);
   const closeRef = useRef<SVGSVGElement>(null);
   // The numbers are written directly (here after each render, and per animation frame through
@@ -263,7 +320,7 @@ export function StencilDetail({ q, drawRef }: { q: Lookup; drawRef?: { current: 
       ];
       const items = ul.children;
       for (let k = 0; k < 4 && k < items.length; k++) {
-        const [i, j, t, w] = taps[k]!;
+        const [i, j, t, w] = taps[k];
         const li = items[k] as HTMLElement;
         li.setAttribute('data-weight', String(w));
         setText(li.children[1], `${i},${j}`);
@@ -278,7 +335,12 @@ export function StencilDetail({ q, drawRef }: { q: Lookup; drawRef?: { current: 
   return (
     <div className="tx-closeup-row">
       <CellCloseUp svgRef={closeRef} />
-      <ul className="tx-taps" aria-label="The four bilinear taps and their weights" data-testid="taps" ref={listRef}>
+      <ul
+        className="tx-taps"
+        aria-label="The four bilinear taps and their weights"
+        data-testid="taps"
+        ref={listRef}
+      >
         {TAP_CLASS.map((cls) => (
           <li key={cls} data-testid={`tap-${cls}`}>
             <span className={`tx-chip ${cls}`} />T<sub />
@@ -317,7 +379,17 @@ function sy(v: number, win: ViewWindow): number {
 }
 
 /** Nearest-neighbour regions as an image (outside [0, 1]² dimmed by the SVG layer). */
-const BaseCanvas = memo(function BaseCanvas({ grid, opts, range, win }: { grid: TextureGrid; opts: LookupOptions; range: { min: number; max: number }; win: ViewWindow }) {
+const BaseCanvas = memo(function BaseCanvas({
+  grid,
+  opts,
+  range,
+  win,
+}: {
+  grid: TextureGrid;
+  opts: LookupOptions;
+  range: { min: number; max: number };
+  win: ViewWindow;
+}) {
   const ref = useRef<HTMLCanvasElement>(null);
   useEffect(() => {
     const c = ref.current;
@@ -327,7 +399,12 @@ const BaseCanvas = memo(function BaseCanvas({ grid, opts, range, win }: { grid: 
     c.height = res;
     const g = c.getContext('2d');
     if (!g) return;
-    const img = textureImage(grid, { ...opts, vflip: false }, 'nearest', res, res, range, { uMin: win.min, uMax: win.max, vMin: win.min, vMax: win.max });
+    const img = textureImage(grid, { ...opts, vflip: false }, 'nearest', res, res, range, {
+      uMin: win.min,
+      uMax: win.max,
+      vMin: win.min,
+      vMax: win.max,
+    });
     g.putImageData(new ImageData(img as Uint8ClampedArray<ArrayBuffer>, res, res), 0, 0);
   }, [grid, opts, range, win]);
   return <canvas ref={ref} className="tx-grid-canvas" aria-hidden="true" />;
@@ -355,11 +432,29 @@ const StaticLayer = memo(function StaticLayer({
   if (nmax <= 32) {
     for (let i = 0; i < W; i++) {
       const x = sx(nodeCoord(i, W, opts.align), win);
-      items.push(<line key={`vl${i}`} x1={x} x2={x} y1={sy(nodeCoord(0, H, opts.align), win)} y2={sy(nodeCoord(H - 1, H, opts.align), win)} className="tx-node-line" />);
+      items.push(
+        <line
+          key={`vl${i}`}
+          x1={x}
+          x2={x}
+          y1={sy(nodeCoord(0, H, opts.align), win)}
+          y2={sy(nodeCoord(H - 1, H, opts.align), win)}
+          className="tx-node-line"
+        />,
+      );
     }
     for (let j = 0; j < H; j++) {
       const y = sy(nodeCoord(j, H, opts.align), win);
-      items.push(<line key={`hl${j}`} y1={y} y2={y} x1={sx(nodeCoord(0, W, opts.align), win)} x2={sx(nodeCoord(W - 1, W, opts.align), win)} className="tx-node-line" />);
+      items.push(
+        <line
+          key={`hl${j}`}
+          y1={y}
+          y2={y}
+          x1={sx(nodeCoord(0, W, opts.align), win)}
+          x2={sx(nodeCoord(W - 1, W, opts.align), win)}
+          className="tx-node-line"
+        />,
+      );
     }
   }
   if (showDots) {
@@ -368,7 +463,15 @@ const StaticLayer = memo(function StaticLayer({
         const x = sx(nodeCoord(i, W, opts.align), win);
         const y = sy(nodeCoord(j, H, opts.align), win);
         const t = normalizeValue(grid.values[j * W + i], range.min, range.max);
-        items.push(<circle key={`d${i}-${j}`} cx={x} cy={y} r={nmax <= 16 ? 5 : 3} className={darkTextOn(t) ? 'tx-dot dark' : 'tx-dot'} />);
+        items.push(
+          <circle
+            key={`d${i}-${j}`}
+            cx={x}
+            cy={y}
+            r={nmax <= 16 ? 5 : 3}
+            className={darkTextOn(t) ? 'tx-dot dark' : 'tx-dot'}
+          />,
+        );
       }
     }
   }
@@ -379,19 +482,30 @@ const StaticLayer = memo(function StaticLayer({
   const y1 = sy(0, win);
   const tickFont = Math.max(28, MIN_TEXT_PX * unitsPerPx);
   // ticks at the nodes while they fit (a label is about 2.2 em wide), else 0, ½, 1
-  const fits = (n: number) => n <= 5 && (VB / (win.max - win.min)) / Math.max(1, n - 1) > tickFont * 2.4;
+  const fits = (n: number) => n <= 5 && VB / (win.max - win.min) / Math.max(1, n - 1) > tickFont * 2.4;
   const ticks = fits(W) ? Array.from({ length: W }, (_, i) => nodeCoord(i, W, opts.align)) : [0, 0.5, 1];
   // v ticks sit in the left margin: keep those whose text fits there (monospace ≈ 0.62 em a digit)
-  const vticks = (fits(H) ? Array.from({ length: H }, (_, j) => nodeCoord(j, H, opts.align)) : [0, 0.5, 1]).filter(
-    (t) => 0.62 * tickFont * String(Number(t.toPrecision(3))).length + 4 <= x0 + 4,
-  );
+  const vticks = (
+    fits(H) ? Array.from({ length: H }, (_, j) => nodeCoord(j, H, opts.align)) : [0, 0.5, 1]
+  ).filter((t) => 0.62 * tickFont * String(Number(t.toPrecision(3))).length + 4 <= x0 + 4);
   return (
     <g>
-      <path d={`M0 0H${VB}V${VB}H0Z M${x0} ${y0}V${y1}H${x1}V${y0}Z`} className="tx-outside" fillRule="evenodd" />
+      <path
+        d={`M0 0H${VB}V${VB}H0Z M${x0} ${y0}V${y1}H${x1}V${y0}Z`}
+        className="tx-outside"
+        fillRule="evenodd"
+      />
       {items}
       <rect x={x0} y={y0} width={x1 - x0} height={y1 - y0} className="tx-frame" />
       {ticks.map((t) => (
-        <text key={`ut${t}`} x={sx(t, win)} y={VB - 6} className="tx-tick" textAnchor="middle" fontSize={tickFont}>
+        <text
+          key={`ut${t}`}
+          x={sx(t, win)}
+          y={VB - 6}
+          className="tx-tick"
+          textAnchor="middle"
+          fontSize={tickFont}
+        >
           {Number(t.toPrecision(3))}
         </text>
       ))}
@@ -437,7 +551,14 @@ const LabelLayer = memo(function LabelLayer({
       const val = grid.values[j * W + i];
       const t = normalizeValue(val, range.min, range.max);
       items.push(
-        <text key={`t${i}-${j}`} x={x + 8} y={y - 8} fontSize={fontSize} className={darkTextOn(t) ? 'tx-val dark' : 'tx-val'} data-testid="node-label">
+        <text
+          key={`t${i}-${j}`}
+          x={x + 8}
+          y={y - 8}
+          fontSize={fontSize}
+          className={darkTextOn(t) ? 'tx-val dark' : 'tx-val'}
+          data-testid="node-label"
+        >
           {fmtShort(val)}
         </text>,
       );
@@ -447,7 +568,15 @@ const LabelLayer = memo(function LabelLayer({
 });
 
 /** The query's path (clipped to the plotted window). */
-const PathLayer = memo(function PathLayer({ path, vflip, win }: { path: QueryPath; vflip: boolean; win: ViewWindow }) {
+const PathLayer = memo(function PathLayer({
+  path,
+  vflip,
+  win,
+}: {
+  path: QueryPath;
+  vflip: boolean;
+  win: ViewWindow;
+}) {
   const n = path.kind === 'line' ? 1 : 96;
   const pts: string[] = [];
   for (let k = 0; k <= n; k++) {
@@ -530,7 +659,17 @@ function drawStencil(g: SVGGElement, geo: QueryGeometry): void {
 }
 
 /** The nearest node and the bilinear stencil with its weight rectangles (below the labels). */
-const QueryLayer = memo(function QueryLayer({ grid, win, q, gRef }: { grid: TextureGrid; win: ViewWindow; q: Lookup; gRef?: RefObject<SVGGElement | null> }) {
+const QueryLayer = memo(function QueryLayer({
+  grid,
+  win,
+  q,
+  gRef,
+}: {
+  grid: TextureGrid;
+  win: ViewWindow;
+  q: Lookup;
+  gRef?: RefObject<SVGGElement | null>;
+}) {
   const geo = queryGeometry(grid, win, q);
   return (
     <g data-testid="stencil" ref={gRef}>
@@ -541,7 +680,15 @@ const QueryLayer = memo(function QueryLayer({ grid, win, q, gRef }: { grid: Text
       {geo.taps.map((t, k) => (
         <circle key={k} cx={t.x} cy={t.y} r={geo.ringR} className={`tx-tap ${TAP_CLASS[k]}`} />
       ))}
-      <rect x={geo.nearest.x} y={geo.nearest.y} width={geo.nearest.size} height={geo.nearest.size} className="tx-nearest" rx={4} data-testid="nearest-highlight" />
+      <rect
+        x={geo.nearest.x}
+        y={geo.nearest.y}
+        width={geo.nearest.size}
+        height={geo.nearest.size}
+        className="tx-nearest"
+        rx={4}
+        data-testid="nearest-highlight"
+      />
     </g>
   );
 });
@@ -576,7 +723,13 @@ const CU_CORNERS = [
  */
 function CellCloseUp({ svgRef }: { svgRef: RefObject<SVGSVGElement | null> }) {
   return (
-    <svg ref={svgRef} className="tx-closeup" viewBox={`0 0 ${CU_S} ${CU_S}`} role="img" data-testid="cell-closeup">
+    <svg
+      ref={svgRef}
+      className="tx-closeup"
+      viewBox={`0 0 ${CU_S} ${CU_S}`}
+      role="img"
+      data-testid="cell-closeup"
+    >
       {TAP_CLASS.map((cls) => (
         <g key={cls}>
           <rect className={`tx-wrect ${cls}`} />
@@ -586,8 +739,13 @@ function CellCloseUp({ svgRef }: { svgRef: RefObject<SVGSVGElement | null> }) {
       <rect x={CU_P} y={CU_P} width={CU_C} height={CU_C} className="tx-closeup-cell" />
       {TAP_CLASS.map((cls, k) => (
         <g key={cls}>
-          <circle cx={CU_CORNERS[k]!.cx} cy={CU_CORNERS[k]!.cy} r={6} className={`tx-tap ${cls}`} />
-          <text x={CU_CORNERS[k]!.cx} y={CU_CORNERS[k]!.cy + CU_CORNERS[k]!.dy} textAnchor="middle" className="tx-closeup-t" />
+          <circle cx={CU_CORNERS[k].cx} cy={CU_CORNERS[k].cy} r={6} className={`tx-tap ${cls}`} />
+          <text
+            x={CU_CORNERS[k].cx}
+            y={CU_CORNERS[k].cy + CU_CORNERS[k].dy}
+            textAnchor="middle"
+            className="tx-closeup-t"
+          />
         </g>
       ))}
       <circle r={5} className="tx-closeup-q" />
@@ -610,8 +768,8 @@ function drawCloseUp(svg: SVGSVGElement, q: Lookup, text: boolean): void {
   ];
   const set = setAttr;
   for (let k = 0; k < 4; k++) {
-    const r = rects[k]!;
-    const [rect, label] = kids[k]!.children;
+    const r = rects[k];
+    const [rect, label] = kids[k].children;
     set(rect!, 'x', r.x0);
     set(rect!, 'y', r.y0);
     set(rect!, 'width', Math.max(0, r.x1 - r.x0));
@@ -625,10 +783,13 @@ function drawCloseUp(svg: SVGSVGElement, q: Lookup, text: boolean): void {
     if (text) setText(label, String(Number(r.w.toPrecision(3))));
   }
   const values = [b.t00, b.t10, b.t01, b.t11];
-  for (let k = 0; k < 4; k++) setText(kids[5 + k]!.children[1], fmtShort(values[k]!));
+  for (let k = 0; k < 4; k++) setText(kids[5 + k].children[1], fmtShort(values[k]));
   if (text) {
-    svg.setAttribute('aria-label', `The bilinear cell magnified: the query sits at fu = ${fmtShort(b.fu)}, fv = ${fmtShort(b.fv)} inside it`);
+    svg.setAttribute(
+      'aria-label',
+      `The bilinear cell magnified: the query sits at fu = ${fmtShort(b.fu)}, fv = ${fmtShort(b.fv)} inside it`,
+    );
   }
-  set(kids[9]!, 'cx', x);
-  set(kids[9]!, 'cy', y);
+  set(kids[9], 'cx', x);
+  set(kids[9], 'cy', y);
 }

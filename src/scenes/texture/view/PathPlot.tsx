@@ -19,7 +19,8 @@ function niceTicks(min: number, max: number, count: number): number[] {
   const p = 10 ** Math.floor(Math.log10(raw));
   const step = [1, 2, 2.5, 5, 10].map((m) => m * p).find((s) => s >= raw) ?? raw;
   const out: number[] = [];
-  for (let x = Math.ceil(min / step) * step; x <= max + step * 1e-9; x += step) out.push(Number(x.toPrecision(12)));
+  for (let x = Math.ceil(min / step) * step; x <= max + step * 1e-9; x += step)
+    out.push(Number(x.toPrecision(12)));
   return out;
 }
 
@@ -51,7 +52,14 @@ const Curves = memo(function Curves({ profile, s }: { profile: PathProfile; s: S
     <g>
       <rect x={M.l} y={M.t} width={s.w - M.l - M.r} height={bottom - M.t} className="tx-plot-bg" />
       {profile.borders.map((b, k) => (
-        <line key={k} x1={X(s, b.t)} x2={X(s, b.t)} y1={M.t} y2={bottom} className={b.kink ? 'tx-plot-border kink' : b.jump ? 'tx-plot-border jump' : 'tx-plot-border'} />
+        <line
+          key={k}
+          x1={X(s, b.t)}
+          x2={X(s, b.t)}
+          y1={M.t}
+          y2={bottom}
+          className={b.kink ? 'tx-plot-border kink' : b.jump ? 'tx-plot-border jump' : 'tx-plot-border'}
+        />
       ))}
       {yt.map((y) => (
         <g key={y}>

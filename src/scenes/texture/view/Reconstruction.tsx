@@ -31,7 +31,16 @@ const FilterCanvas = memo(function FilterCanvas({
     const img = textureImage(grid, { ...opts, vflip: false }, filter, RES, RES, range);
     g.putImageData(new ImageData(img as Uint8ClampedArray<ArrayBuffer>, RES, RES), 0, 0);
   }, [seen, grid, opts, range, filter]);
-  return <canvas ref={ref} width={RES} height={RES} className="tx-recon-canvas" data-testid={`recon-${filter}`} aria-hidden="true" />;
+  return (
+    <canvas
+      ref={ref}
+      width={RES}
+      height={RES}
+      className="tx-recon-canvas"
+      data-testid={`recon-${filter}`}
+      aria-hidden="true"
+    />
+  );
 });
 
 export const Reconstruction = memo(function Reconstruction({
@@ -65,15 +74,33 @@ export const Reconstruction = memo(function Reconstruction({
     <div className="tx-recon" ref={box}>
       {(['nearest', 'bilinear'] as const).map((f) => (
         <figure key={f} className="tx-recon-fig">
-          <div className="tx-recon-box" role="img" aria-label={`The texture reconstructed with ${f} filtering over [0, 1]²`}>
+          <div
+            className="tx-recon-box"
+            role="img"
+            aria-label={`The texture reconstructed with ${f} filtering over [0, 1]²`}
+          >
             <FilterCanvas grid={grid} opts={opts} range={range} filter={f} />
             <svg viewBox="0 0 100 100" className="tx-recon-svg" aria-hidden="true">
               {f === 'bilinear'
                 ? creases.map((c, k) =>
                     c.axis === 'u' ? (
-                      <line key={k} x1={c.at * 100} x2={c.at * 100} y1={(1 - c.from) * 100} y2={(1 - c.to) * 100} className="tx-crease" />
+                      <line
+                        key={k}
+                        x1={c.at * 100}
+                        x2={c.at * 100}
+                        y1={(1 - c.from) * 100}
+                        y2={(1 - c.to) * 100}
+                        className="tx-crease"
+                      />
                     ) : (
-                      <line key={k} y1={(1 - c.at) * 100} y2={(1 - c.at) * 100} x1={c.from * 100} x2={c.to * 100} className="tx-crease" />
+                      <line
+                        key={k}
+                        y1={(1 - c.at) * 100}
+                        y2={(1 - c.at) * 100}
+                        x1={c.from * 100}
+                        x2={c.to * 100}
+                        className="tx-crease"
+                      />
                     ),
                   )
                 : null}
@@ -84,7 +111,11 @@ export const Reconstruction = memo(function Reconstruction({
               </g>
             </svg>
           </div>
-          <figcaption>{f === 'nearest' ? 'Nearest: piecewise constant, blocky' : 'Bilinear: continuous; dashed: its creases'}</figcaption>
+          <figcaption>
+            {f === 'nearest'
+              ? 'Nearest: piecewise constant, blocky'
+              : 'Bilinear: continuous; dashed: its creases'}
+          </figcaption>
         </figure>
       ))}
     </div>

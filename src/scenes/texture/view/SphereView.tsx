@@ -34,10 +34,17 @@ export interface SphereViewProps {
   height: number;
 }
 
-function imageFor(grid: TextureGrid, opts: LookupOptions, range: { min: number; max: number }, normalize: boolean): Uint8Array {
+function imageFor(
+  grid: TextureGrid,
+  opts: LookupOptions,
+  range: { min: number; max: number },
+  normalize: boolean,
+): Uint8Array {
   // textureImage's row 0 is v = vMax; a DataTexture's row 0 sits at three's uv.y = 0, and the mesh
   // uses uv.y = 1 − θ/π, so uv.y = 0 is θ = π, i.e. v = vMax as well: no flip needed.
-  const window = normalize ? { uMin: 0, uMax: 1, vMin: 0, vMax: 1 } : { uMin: 0, uMax: 2 * Math.PI, vMin: 0, vMax: Math.PI };
+  const window = normalize
+    ? { uMin: 0, uMax: 1, vMin: 0, vMax: 1 }
+    : { uMin: 0, uMax: 2 * Math.PI, vMin: 0, vMax: Math.PI };
   return new Uint8Array(textureImage(grid, opts, 'bilinear', TW, TH, range, window).buffer);
 }
 
@@ -98,7 +105,10 @@ export function SphereView({ grid, opts, range, normalize, dir, onPick, height }
     if (!o) return;
     o.tex.image.data = imageFor(grid, opts, range, normalize);
     o.tex.needsUpdate = true;
-    o.nodeLines.geometry.setAttribute('position', new o.ctx.THREE.Float32BufferAttribute(nodeLinePositions(grid, opts, normalize), 3));
+    o.nodeLines.geometry.setAttribute(
+      'position',
+      new o.ctx.THREE.Float32BufferAttribute(nodeLinePositions(grid, opts, normalize), 3),
+    );
     o.ctx.invalidate();
   }, [grid, opts, range, normalize]);
 
@@ -162,12 +172,24 @@ export function SphereView({ grid, opts, range, normalize, dir, onPick, height }
     ctx.scene.add(xAxis);
 
     const nodeGeo = new T.BufferGeometry();
-    nodeGeo.setAttribute('position', new T.Float32BufferAttribute(nodeLinePositions(L.grid, L.opts, L.normalize), 3));
-    const nodeLines = new T.LineSegments(nodeGeo, new T.LineBasicMaterial({ color: 0xffffff, transparent: true, opacity: 0.45 }));
+    nodeGeo.setAttribute(
+      'position',
+      new T.Float32BufferAttribute(nodeLinePositions(L.grid, L.opts, L.normalize), 3),
+    );
+    const nodeLines = new T.LineSegments(
+      nodeGeo,
+      new T.LineBasicMaterial({ color: 0xffffff, transparent: true, opacity: 0.45 }),
+    );
     ctx.scene.add(nodeLines);
 
-    const marker = new T.Mesh(new T.SphereGeometry(0.045, 16, 12), new T.MeshBasicMaterial({ color: 0xffffff }));
-    const ring = new T.Mesh(new T.SphereGeometry(0.065, 16, 12), new T.MeshBasicMaterial({ color: 0x111111, side: T.BackSide }));
+    const marker = new T.Mesh(
+      new T.SphereGeometry(0.045, 16, 12),
+      new T.MeshBasicMaterial({ color: 0xffffff }),
+    );
+    const ring = new T.Mesh(
+      new T.SphereGeometry(0.065, 16, 12),
+      new T.MeshBasicMaterial({ color: 0x111111, side: T.BackSide }),
+    );
     marker.add(ring);
     ctx.scene.add(marker);
     const rayGeo = new T.BufferGeometry();
@@ -197,7 +219,10 @@ export function SphereView({ grid, opts, range, normalize, dir, onPick, height }
       down = null;
       if (moved > 4) return;
       const r = el.getBoundingClientRect();
-      const ndc = new T.Vector2(((e.clientX - r.left) / r.width) * 2 - 1, -((e.clientY - r.top) / r.height) * 2 + 1);
+      const ndc = new T.Vector2(
+        ((e.clientX - r.left) / r.width) * 2 - 1,
+        -((e.clientY - r.top) / r.height) * 2 + 1,
+      );
       raycaster.setFromCamera(ndc, ctx.camera);
       const hit = raycaster.intersectObject(mesh, false)[0];
       if (hit) latest.current.onPick([hit.point.x, hit.point.y, hit.point.z]);
@@ -224,9 +249,15 @@ export function SphereView({ grid, opts, range, normalize, dir, onPick, height }
   };
 
   return (
-    <Viewport ariaLabel="A sphere wearing the texture; click it to pick a point" height={height} setup={setup} testId="sphere-view">
+    <Viewport
+      ariaLabel="A sphere wearing the texture; click it to pick a point"
+      height={height}
+      setup={setup}
+      testId="sphere-view"
+    >
       <div className="tx-sphere-legend" aria-hidden="true">
-        <span className="tx-seam-key" /> seam φ = 0 (u = 0 ≡ 1) · grey: pole axis · white: the grid’s node lines
+        <span className="tx-seam-key" /> seam φ = 0 (u = 0 ≡ 1) · grey: pole axis · white: the grid’s node
+        lines
       </div>
     </Viewport>
   );

@@ -31,7 +31,13 @@ function diff(a: number, b: number): string {
   return `(${texNum(a, 5)} - ${fac(b)})`;
 }
 
-export function nearestTex(grid: TextureGrid, q: Lookup, opts: LookupOptions, uName = 'u', vName = 'v'): string {
+export function nearestTex(
+  grid: TextureGrid,
+  q: Lookup,
+  opts: LookupOptions,
+  uName = 'u',
+  vName = 'v',
+): string {
   const n = q.near;
   const vq = opts.vflip ? `${vName}'` : vName;
   if (opts.align === 'corner') {
@@ -53,12 +59,48 @@ export function bilinearTex(q: Lookup, opts: LookupOptions, uName = 'u', vName =
   const s = q.steps;
   const vq = opts.vflip ? `${vName}'` : vName;
   // each step on rows short enough for a phone: the formula, the numbers (one product per row), the value
-  const step = (lhs: string, formula: string, d1: string, f1: number, d2: string, f2: number, den: number, value: number) =>
+  const step = (
+    lhs: string,
+    formula: string,
+    d1: string,
+    f1: number,
+    d2: string,
+    f2: number,
+    den: number,
+    value: number,
+  ) =>
     `${lhs} &= ${formula} \\\\ &= \\tfrac{1}{${texNum(den, 5)}}\\big(${d1} \\cdot ${fac(f1)} \\\\ &\\qquad + ${d2} \\cdot ${fac(f2)}\\big) \\\\ &= ${texNum(value)}`;
   return [
-    step('c_u', `\\frac{(u_1 - ${uName})\\,T_{${b.i0},${b.j1}} + (${uName} - u_0)\\,T_{${b.i1},${b.j1}}}{\\Delta u}`, diff(b.u1, b.u), b.t01, diff(b.u, b.u0), b.t11, b.du, s.cu),
-    step('c_l', `\\frac{(u_1 - ${uName})\\,T_{${b.i0},${b.j0}} + (${uName} - u_0)\\,T_{${b.i1},${b.j0}}}{\\Delta u}`, diff(b.u1, b.u), b.t00, diff(b.u, b.u0), b.t10, b.du, s.cl),
-    step('c', `\\frac{(v_1 - ${vq})\\,c_l + (${vq} - v_0)\\,c_u}{\\Delta v}`, diff(b.v1, b.v), s.cl, diff(b.v, b.v0), s.cu, b.dv, s.c),
+    step(
+      'c_u',
+      `\\frac{(u_1 - ${uName})\\,T_{${b.i0},${b.j1}} + (${uName} - u_0)\\,T_{${b.i1},${b.j1}}}{\\Delta u}`,
+      diff(b.u1, b.u),
+      b.t01,
+      diff(b.u, b.u0),
+      b.t11,
+      b.du,
+      s.cu,
+    ),
+    step(
+      'c_l',
+      `\\frac{(u_1 - ${uName})\\,T_{${b.i0},${b.j0}} + (${uName} - u_0)\\,T_{${b.i1},${b.j0}}}{\\Delta u}`,
+      diff(b.u1, b.u),
+      b.t00,
+      diff(b.u, b.u0),
+      b.t10,
+      b.du,
+      s.cl,
+    ),
+    step(
+      'c',
+      `\\frac{(v_1 - ${vq})\\,c_l + (${vq} - v_0)\\,c_u}{\\Delta v}`,
+      diff(b.v1, b.v),
+      s.cl,
+      diff(b.v, b.v0),
+      s.cu,
+      b.dv,
+      s.c,
+    ),
   ].join(' \\\\[4pt] ');
 }
 
@@ -76,14 +118,26 @@ export function WideMath({ tex, label }: { tex: string; label: string }) {
 }
 
 /** The nearest-neighbour steps (Q3a) for the current query. */
-export const NearestWorked = memo(function NearestWorked({ grid, opts, q }: { grid: TextureGrid; opts: LookupOptions; q: Lookup }) {
+export const NearestWorked = memo(function NearestWorked({
+  grid,
+  opts,
+  q,
+}: {
+  grid: TextureGrid;
+  opts: LookupOptions;
+  q: Lookup;
+}) {
   return (
     <div className="tx-worked" data-testid="worked-nearest">
       <p className="tx-small">
-        The nodes sit at u = i/(N − 1), v = j/(N − 1) (corner nodes, the exam’s) or at the texel centres (i + ½)/N; nearest-neighbour lookup takes the value
-        of the node closest to the query{opts.align === 'center' ? ' (the texel whose square holds it)' : ''}, without blending.
+        The nodes sit at u = i/(N − 1), v = j/(N − 1) (corner nodes, the exam’s) or at the texel centres (i +
+        ½)/N; nearest-neighbour lookup takes the value of the node closest to the query
+        {opts.align === 'center' ? ' (the texel whose square holds it)' : ''}, without blending.
       </p>
-      <WideMath label="Nearest-neighbour steps" tex={`\\begin{aligned}${nearestTex(grid, q, opts)}\\end{aligned}`} />
+      <WideMath
+        label="Nearest-neighbour steps"
+        tex={`\\begin{aligned}${nearestTex(grid, q, opts)}\\end{aligned}`}
+      />
     </div>
   );
 });
@@ -94,21 +148,33 @@ export const BilinearWorked = memo(function BilinearWorked({ opts, q }: { opts: 
   return (
     <div className="tx-worked" data-testid="worked-query">
       <p className="tx-small">
-        The query lies in the cell u₀ = {texNum(b.u0)} ≤ u ≤ u₁ = {texNum(b.u1)}, v₀ = {texNum(b.v0)} ≤ {opts.vflip ? 'v′' : 'v'} ≤ v₁ = {texNum(b.v1)}, of size Δu ={' '}
-        {texNum(b.du)}, Δv = {texNum(b.dv)}. Interpolate along u on the upper row (c_u) and on the lower row (c_l), then along v between them; each step
-        divides by the cell size.
+        The query lies in the cell u₀ = {texNum(b.u0)} ≤ u ≤ u₁ = {texNum(b.u1)}, v₀ = {texNum(b.v0)} ≤{' '}
+        {opts.vflip ? 'v′' : 'v'} ≤ v₁ = {texNum(b.v1)}, of size Δu = {texNum(b.du)}, Δv = {texNum(b.dv)}.
+        Interpolate along u on the upper row (c_u) and on the lower row (c_l), then along v between them; each
+        step divides by the cell size.
       </p>
       <WideMath label="Bilinear steps" tex={`\\begin{aligned}${bilinearTex(q, opts)}\\end{aligned}`} />
       <p className="tx-small">
-        The same as the weighted sum of the four nodes, each weighted by the area of the sub-rectangle opposite to it: w₀₀ = {texNum(b.w00, 4)}, w₁₀ ={' '}
-        {texNum(b.w10, 4)}, w₀₁ = {texNum(b.w01, 4)}, w₁₁ = {texNum(b.w11, 4)} (sum 1).
+        The same as the weighted sum of the four nodes, each weighted by the area of the sub-rectangle
+        opposite to it: w₀₀ = {texNum(b.w00, 4)}, w₁₀ = {texNum(b.w10, 4)}, w₀₁ = {texNum(b.w01, 4)}, w₁₁ ={' '}
+        {texNum(b.w11, 4)} (sum 1).
       </p>
     </div>
   );
 });
 
 /** The spherical (u, v) of Q3c, step by step with live numbers. */
-export function sphereTex(p: { x: number; y: number; z: number; r: number; phi: number; theta: number; pole: boolean; u: number; v: number }): string {
+export function sphereTex(p: {
+  x: number;
+  y: number;
+  z: number;
+  r: number;
+  phi: number;
+  theta: number;
+  pole: boolean;
+  u: number;
+  v: number;
+}): string {
   return [
     `\\frac{y}{x} &= \\frac{r \\sin u \\sin v}{r \\cos u \\sin v} = \\tan u`,
     `u &= \\operatorname{atan2}(y, x) \\\\ &= \\operatorname{atan2}(${texNum(p.y)},\\ ${texNum(p.x)}) \\\\ &= ${texNum(p.phi)}${p.pole ? '\\quad(\\text{a pole: defined as } 0)' : ''}`,
