@@ -1,12 +1,12 @@
 import { lazy, Suspense, useEffect, useMemo } from 'react';
 import { useHashRoute } from './useHashRoute';
-import { parseShellFlags } from './route';
+import { parseShellFlags } from '../kit/shell';
 import { useTheme } from './theme';
 import { usePostHeight } from './embedHeight';
 import { useHostApi } from './hostApi';
 import { Home } from './Home';
 import { SceneHost } from './SceneHost';
-import { findScene } from '../scenes/registry';
+import { findScene } from '../kit/catalogue';
 import { ShortcutProvider } from '../ui/shortcuts';
 
 // Practice mode is its own lazy chunk (src/practice): nothing of it loads on the other routes.

@@ -8,9 +8,9 @@ import {
   useState,
   type ReactNode,
 } from 'react';
-import type { SceneInfo } from '../scenes/registry';
+import type { SceneInfo } from '../kit/catalogue';
 import { sceneLoader } from '../scenes/registry';
-import type { SceneModule } from './scene';
+import type { SceneModule } from '../kit/scene';
 import {
   parseParams,
   sanitizePatch,
@@ -18,8 +18,8 @@ import {
   type ParamProblem,
   type ParamValues,
   type ParamSchema,
-} from './params';
-import { shellExtras, type ShellFlags } from './route';
+} from '../kit/params';
+import { shellExtras, type ShellFlags } from '../kit/shell';
 import { useShortcuts } from '../ui/shortcuts';
 import { QuestionNav } from '../ui/exam';
 import { useHostScene } from './hostApi';

@@ -3,8 +3,9 @@ import { createRoot } from 'react-dom/client';
 import { App } from './App';
 import '../ui/styles.css';
 import { whenQuiet } from '../ui/whenQuiet';
-import { findScene, sceneLoader } from '../scenes/registry';
-import { parseHash } from './route';
+import { findScene } from '../kit/catalogue';
+import { sceneLoader } from '../scenes/registry';
+import { parseHash } from '../kit/shell';
 import { firstScreen } from './firstScreen';
 import { afterPaint } from '../ui/afterPaint';
 

@@ -11,7 +11,7 @@
  */
 import { useCallback, useEffect, useMemo, useState, type FormEvent } from 'react';
 import { MathTex } from '../ui/MathTex';
-import { shellExtras, type ShellFlags } from '../app/route';
+import { shellExtras, type ShellFlags } from '../kit/shell';
 import { checkAnswer, expectedText, FORMULA_POLICY, NUMERIC_POLICY, type Verdict } from './check';
 import {
   allAnswers,

@@ -1,8 +1,8 @@
 /**
- * Exam-first page structure, shared by every scene (issue 11). A scene lays out each exam question
+ * Exam-first page structure, shared by every scene. A scene lays out each exam question
  * in this order:
  *
- *   <ExamQuestion n={1} title="Sampling a hemisphere PDF">
+ *   <ExamQuestion n={1}>                (its title comes from the catalogue)
  *     <ExamPart id="1a" asks={<>Normalize p(ω) over the hemisphere …</>}>
  *       <Derivation>…the steps the key awards marks for, with live numbers…</Derivation>
  *       <LiveAnswer>…readouts computed by the core…</LiveAnswer>
@@ -20,18 +20,18 @@
  */
 import { Children, type ReactNode } from 'react';
 import { Deferred } from './Deferred';
-import { questionStart, type SceneInfo } from '../scenes/registry';
-import type { ShellFlags } from '../app/route';
+import { questionInfo, questionStart, type SceneInfo } from '../kit/catalogue';
+import type { ShellFlags } from '../kit/shell';
 
-/** One exam question: its number and title, and its parts in order. */
+/** One exam question: its number and title (the catalogue's unless given), and its parts in order. */
 export function ExamQuestion({
   n,
-  title,
+  title = questionInfo(n)?.title ?? '',
   intro,
   children,
 }: {
   n: number;
-  title: string;
+  title?: string;
   intro?: ReactNode;
   children: ReactNode;
 }) {

@@ -19,7 +19,7 @@
  * ignores `play=1` from a link (the Play button still works: that is the user's own choice).
  */
 import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState, type RefObject } from 'react';
-import type { ParamSpec } from '../app/params';
+import type { ParamSpec } from '../kit/params';
 import { useShortcuts } from './shortcuts';
 
 /**

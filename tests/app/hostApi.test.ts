@@ -5,8 +5,8 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { validateSet, toUrlText } from '../../src/app/hostApi';
-import { parseOrigins, parseShellFlags } from '../../src/app/route';
-import { parseParams, serializeParams } from '../../src/app/params';
+import { parseOrigins, parseShellFlags } from '../../src/kit/shell';
+import { parseParams, serializeParams } from '../../src/kit/params';
 import { schema as texture } from '../../src/scenes/texture/params';
 import { schema as raySphere } from '../../src/scenes/ray-sphere/params';
 

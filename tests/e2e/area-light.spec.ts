@@ -6,7 +6,7 @@
  */
 import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, readout, readoutNumber, countAnimationFrames } from './fixtures';
-import { defaultValues, parseParams } from '../../src/app/params';
+import { defaultValues, parseParams } from '../../src/kit/params';
 import { schema } from '../../src/scenes/area-light/params';
 import {
   animationFrame,

@@ -14,6 +14,7 @@ import { extname, join, normalize } from 'node:path';
 import type { Page } from '@playwright/test';
 import { test, expect } from './fixtures';
 import { settleLazyViews } from './lazyViews';
+import { SCENES as CATALOGUE } from '../../src/kit/catalogue';
 
 const dist = process.env.E2E_DIST ?? 'dist';
 
@@ -80,13 +81,7 @@ async function waitForServiceWorker(page: Page): Promise<void> {
 }
 
 // A readout each scene computes (contract ids), to know the scene really works.
-const SCENES: [string, string][] = [
-  ['#/hemisphere', 'k'],
-  ['#/monte-carlo', 'exact'],
-  ['#/texture', 'bilinear'],
-  ['#/ray-sphere', 't-hit'],
-  ['#/area-light', 'reference'],
-];
+const SCENES: [string, string][] = CATALOGUE.map((s) => [`#${s.path}`, s.keyReadout]);
 
 test('after one visit to #/, every scene opens and works with the server stopped', async ({
   page,

@@ -234,12 +234,10 @@ test.describe('legible (issue 11)', () => {
     await grid.focus();
     await page.keyboard.press('ArrowRight'); // keyboard modality: :focus-visible applies
     const ring = (sel: string) =>
-      page
-        .locator(sel)
-        .evaluate((el) => ({
-          stroke: getComputedStyle(el).stroke,
-          width: parseFloat(getComputedStyle(el).strokeWidth),
-        }));
+      page.locator(sel).evaluate((el) => ({
+        stroke: getComputedStyle(el).stroke,
+        width: parseFloat(getComputedStyle(el).strokeWidth),
+      }));
     const a = await ring('.tx-handle.a .tx-handle-focus');
     expect(a.stroke).not.toBe('none');
     expect(a.width).toBeGreaterThanOrEqual(4);

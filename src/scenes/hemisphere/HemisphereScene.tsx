@@ -7,7 +7,7 @@
  */
 import { formatCount } from '../../ui/format';
 import { lazy, memo, Suspense, useMemo, useRef, useState, type ComponentProps } from 'react';
-import type { SceneProps } from '../../app/scene';
+import type { SceneProps } from '../../kit/scene';
 import {
   useCompiled,
   ExprField,

@@ -4,7 +4,7 @@
  */
 import { formatCount } from '../../ui/format';
 import { useCallback, useMemo } from 'react';
-import type { SceneProps } from '../../app/scene';
+import type { SceneProps } from '../../kit/scene';
 import {
   ExamQuestion,
   ExploreFurther,

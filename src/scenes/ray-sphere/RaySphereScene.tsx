@@ -14,7 +14,7 @@ import {
   useRef,
   useState,
 } from 'react';
-import type { SceneProps } from '../../app/scene';
+import type { SceneProps } from '../../kit/scene';
 import {
   Deferred,
   Derivation as DerivationBlock,

@@ -17,7 +17,7 @@ import {
   useState,
   type ComponentProps,
 } from 'react';
-import type { SceneProps } from '../../app/scene';
+import type { SceneProps } from '../../kit/scene';
 import { EXAM_GRID_TEXT, examGrid, gridRange, gridToRows, parseGrid, texel } from '../../core/texture';
 import {
   Derivation,

@@ -31,7 +31,7 @@ import {
   type WrapMode,
 } from '../../core/texture';
 import type { Failure } from '../../core/failure';
-import type { ParamValues } from '../../app/params';
+import type { ParamValues } from '../../kit/params';
 import { colorizeInto } from './colormap';
 import { GRID_TEXT_MAX, type PathKind, type Preset, type TextureSchema } from './params';
 

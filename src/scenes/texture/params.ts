@@ -6,7 +6,7 @@
  * and `seed` (for the generated presets). They exist because a 64 × 64 grid cannot be written in
  * the `grid` parameter: the shell caps any parameter at 4000 characters.
  */
-import type { ParamSchema } from '../../app/params';
+import type { ParamSchema } from '../../kit/params';
 import { EXAM_GRID_TEXT } from '../../core/texture';
 import { timelineParams } from '../../ui/timeline';
 

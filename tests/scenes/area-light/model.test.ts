@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { defaultValues } from '../../../src/app/params';
+import { defaultValues } from '../../../src/kit/params';
 import { schema, PRESETS, type AreaLightParams } from '../../../src/scenes/area-light/params';
 import {
   buildModel,

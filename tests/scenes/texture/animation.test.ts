@@ -4,7 +4,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import { parseParams } from '../../../src/app/params';
+import { parseParams } from '../../../src/kit/params';
 import { schema } from '../../../src/scenes/texture/params';
 import {
   creases,
