@@ -103,7 +103,6 @@ for (const which of process.env.BOTH ? ['optimistic', 'pessimistic'] : ['pessimi
   const est = res[`${which}Estimate`];
   const rows = [...est.nodeTimings.entries()].sort((a, b) => a[1].startTime - b[1].startTime);
   console.log(`-- ${which}: ${rows.length} nodes`);
-  let t0 = null;
   for (const [n, t] of rows) {
     let what;
     if (n.type === 'network')

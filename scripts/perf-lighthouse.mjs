@@ -21,7 +21,7 @@
  * shifts' elements; the final screenshot of the last run of each route is saved under --shots.
  */
 import { spawn } from 'node:child_process';
-import { mkdtempSync, rmSync, readFileSync, writeFileSync, mkdirSync, existsSync } from 'node:fs';
+import { mkdtempSync, rmSync, writeFileSync, mkdirSync, existsSync } from 'node:fs';
 import { tmpdir, loadavg, cpus } from 'node:os';
 import { join } from 'node:path';
 import lighthouse, { defaultConfig } from 'lighthouse';

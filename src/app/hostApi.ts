@@ -21,7 +21,13 @@
  * naming the parameter elsewhere.
  */
 import { useEffect, useRef } from 'react';
-import { parseParams, serializeParams, SHELL_PARAMS, type ParamSchema, type ParamValues } from '../kit/params';
+import {
+  parseParams,
+  serializeParams,
+  SHELL_PARAMS,
+  type ParamSchema,
+  type ParamValues,
+} from '../kit/params';
 
 export const PROTOCOL = 'render-math-lab';
 export const PROTOCOL_VERSION = 1;
