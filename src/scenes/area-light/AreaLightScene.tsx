@@ -41,7 +41,8 @@ import {
   type Timeline,
 } from '../../ui';
 import type { PlotTrace } from '../../ui';
-import { useWorkerJob } from '../../workers';
+import { useWorkerJob, workerFactory } from '../../workers';
+import type { AreaLightTasks } from './floor.worker';
 import { runChunked } from '../../ui/chunked';
 import type { LightStrategy } from '../../core/lights';
 import {
@@ -51,7 +52,6 @@ import {
   animationFrame,
   animationLength,
   buildModel,
-  convergence,
   estimateOne,
   floorJob,
   floorPassAt,
@@ -61,7 +61,6 @@ import {
   targetValue,
   type AreaLightModel,
   type StrategyEstimate,
-  type TimingPoint,
 } from './model';
 import { PRESETS, schema, type AreaLightParams } from './params';
 import { RunningEstimate } from './view/RunningEstimate';
@@ -79,7 +78,9 @@ const COLORS: Record<LightStrategy, string> = {
   'solid-angle': '#1f5fa8',
   cosine: '#1d7a3a',
 };
-const makeWorker = () => new Worker(new URL('./floor.worker.ts', import.meta.url), { type: 'module' });
+const makeWorker = workerFactory<AreaLightTasks>(
+  () => new Worker(new URL('./floor.worker.ts', import.meta.url), { type: 'module' }),
+);
 
 const LEGEND_TOP = { orientation: 'h', x: 0, y: 1.02, yanchor: 'bottom' };
 
@@ -134,7 +135,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
     );
     return () => cancels.forEach((c) => c());
   }, [big, estKey, n, seed]);
-  const estTask = useWorkerJob<StrategyEstimate[]>(makeWorker, 'estimates', params, {
+  const estTask = useWorkerJob(makeWorker, 'estimates', params, {
     enabled: big,
     delayMs: 150,
   });
@@ -158,7 +159,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
   const convSeen = useSeenOnce(convBox);
   const timingSeen = useSeenOnce(timingBox);
   const convArgs = useMemo(() => ({ params, nMax: 1 << 15 }), [params]);
-  const convTask = useWorkerJob<ReturnType<typeof convergence>>(makeWorker, 'convergence', convArgs, {
+  const convTask = useWorkerJob(makeWorker, 'convergence', convArgs, {
     key: timingKey,
     delayMs: 120,
     enabled: convSeen,
@@ -167,7 +168,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
 
   const job = useMemo(() => floorJob(model, seed), [model, seed]);
 
-  const timing = useWorkerJob<TimingPoint[]>(makeWorker, 'timing', params, {
+  const timing = useWorkerJob(makeWorker, 'timing', params, {
     key: timingKey,
     delayMs: 400,
     enabled: timingSeen,
@@ -486,7 +487,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
               <progress max={1} value={timing.progress} aria-label="Timing progress" />
             ) : null}
           </div>
-          {timing.error ? <Notice kind="warn">Timing failed: {timing.error}</Notice> : null}
+          {timing.error ? <Notice kind="warn">Timing failed: {timing.error.message}</Notice> : null}
           <Plot
             ariaLabel="RMSE over independent runs against the run time of one estimate, for the three strategies, log-log."
             data={timingTraces}

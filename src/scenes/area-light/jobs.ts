@@ -101,7 +101,10 @@ export async function estimatesJob(
 }
 
 /** The floor rendered progressively with each strategy, one partial frame per pass. */
-export async function renderJob(job: FloorJob, progress: Progress = () => {}): Promise<FloorFrame> {
+export async function renderJob(
+  job: FloorJob,
+  progress: Progress<FloorFrame> = () => {},
+): Promise<FloorFrame> {
   const ref = referenceImage(job);
   const sums = STRATEGIES.map(() => new Float64Array(job.size * job.size));
   const ms = STRATEGIES.map(() => 0);

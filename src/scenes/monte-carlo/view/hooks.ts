@@ -5,6 +5,7 @@
 import { useEffect, useRef, useState } from 'react';
 import { runChunked, useSeenOnce } from '../../../ui';
 import { useWorkerJob } from '../../../workers';
+import type { ArgsOf, TaskMap, TaskName, WorkerFactory } from '../../../workers/protocol';
 import { EstimateRun1D, type McEstimate, type Problem1D } from '../../../core/estimators';
 
 export /** Extra plot height on phones, where the legend above the plot takes several rows. */
@@ -66,15 +67,15 @@ export /**
  * panels share one queue: their runs go one at a time (first come, first served), so the workers
  * never take every core from the page that draws their results (2 cores are common).
  */
-function useAutoRun<R, P>(
-  method: string,
-  makeWorker: () => Worker,
-  args: unknown,
+function useAutoRun<T extends TaskMap, K extends TaskName<T>>(
+  method: K,
+  makeWorker: WorkerFactory<T>,
+  args: ArgsOf<T, K>,
   key: string,
   box: React.RefObject<HTMLElement | null>,
 ) {
   const seen = useSeenOnce(box, '100px');
-  return useWorkerJob<R, P>(makeWorker, method, args, {
+  return useWorkerJob(makeWorker, method, args, {
     key,
     enabled: seen,
     delayMs: 250,
