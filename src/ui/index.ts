@@ -40,6 +40,22 @@ export {
 } from './timeline';
 export { TimelineTransport, type TimelineTransportProps } from './TimelineTransport';
 export {
+  AnimationDriver,
+  createAnimationStore,
+  createThrottle,
+  heldPosition,
+  lastValue,
+  useAnimationDriver,
+  useAnimFrame,
+  useHeldWhile,
+  usePlaying,
+  useStillT,
+  useThrottled,
+  textGate,
+  type AnimationDriverProps,
+  type AnimationStore,
+} from './animation';
+export {
   ExamQuestion,
   ExamPart,
   Derivation,

@@ -30,8 +30,11 @@ import {
   Panel,
   Readout,
   Select,
+  lastValue,
   TimelineTransport,
   useCoarsePosition,
+  useHeldWhile,
+  useThrottled,
   useTimeline,
   useTimelineFrame,
   type Timeline,
@@ -510,34 +513,6 @@ function LiveView3D({
   return <View3D o={o} d={d} c={c} r={r} res={m.chosen} distanceRatio={m.distanceRatio} {...rest} />;
 }
 
-/** `value`, except while `hold` is true: then the value it had when holding began. */
-function useHeldWhile<T>(value: T, hold: boolean): T {
-  const ref = useRef(value);
-  if (!hold) ref.current = value;
-  return ref.current;
-}
-
-/** `value`, but changing at most once per `ms` (leading and trailing edges). */
-function useThrottled<T>(value: T, ms: number): T {
-  const [out, setOut] = useState(value);
-  const last = useRef(0);
-  useEffect(() => {
-    const now = performance.now();
-    const wait = last.current + ms - now;
-    if (wait <= 0) {
-      last.current = now;
-      setOut(value);
-      return;
-    }
-    const id = setTimeout(() => {
-      last.current = performance.now();
-      setOut(value);
-    }, wait);
-    return () => clearTimeout(id);
-  }, [value, ms]);
-  return out;
-}
-
 function samePreset(p: Preset, params: RaySphereParams): boolean {
   const eq = (x: readonly number[] | undefined, y: readonly number[]) => !x || x.every((v, i) => v === y[i]);
   return (
@@ -588,19 +563,6 @@ function VecField({
  * re-render while playing (renderHz 0), and the figures move every frame by direct writes.
  */
 const RENDER_HZ = 4;
-
-/** `f`, remembering its last argument and result (the figures and the scene often ask for the same t). */
-function lastValue<T>(f: (t: number) => T): (t: number) => T {
-  let at = NaN;
-  let v: T | undefined;
-  return (t) => {
-    if (v === undefined || t !== at) {
-      v = f(t);
-      at = t;
-    }
-    return v;
-  };
-}
 
 /**
  * The cross-section at the live position: React renders it when the inputs change; every frame
