@@ -59,6 +59,7 @@ import {
   type SweepSeries,
   type V3,
 } from './model';
+import { superscript } from '../../ui/axis';
 import { CrossSection, type CrossRay } from './view/CrossSection';
 import { View3D, type View3DProps } from './view/View3D';
 import { DistantImages, ErrorVsDistance, PrecisionTable } from './view/Precision';
@@ -927,20 +928,6 @@ function later(fn: () => void): () => void {
   };
 }
 
-const SUP: Record<string, string> = {
-  '-': '⁻',
-  '0': '⁰',
-  '1': '¹',
-  '2': '²',
-  '3': '³',
-  '4': '⁴',
-  '5': '⁵',
-  '6': '⁶',
-  '7': '⁷',
-  '8': '⁸',
-  '9': '⁹',
-};
-
 /** A number for text: 6 significant digits, m × 10ⁿ for very large or small, a real minus sign. */
 function fmt(x: number | null): string {
   if (x === null || !Number.isFinite(x)) return 'none';
@@ -950,7 +937,7 @@ function fmt(x: number | null): string {
   if (ax >= 1e-3 && ax < 1e7) out = String(Number(x.toPrecision(6)));
   else {
     const [m, e] = x.toExponential(5).split('e');
-    const ex = String(Number(e)).replace(/./g, (ch) => SUP[ch] ?? ch);
+    const ex = superscript(String(Number(e)));
     out = Number(m) === 1 ? `10${ex}` : `${Number(m)} × 10${ex}`;
   }
   return out.replace('-', '−');
