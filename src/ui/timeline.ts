@@ -206,28 +206,9 @@ export function useTimeline(opts: TimelineOptions): Timeline {
 
   // live values for the frame loop and callbacks (`exact` runs ahead of React state while playing
   // with renderHz; setExact keeps both in step)
-  const live = useRef({
-    exact,
-    playing,
-    speed,
-    loop,
-    max,
-    integer,
-    duration,
-    setParams,
-    renderHz: opts.renderHz,
-  });
-  live.current = {
-    ...live.current,
-    playing,
-    speed,
-    loop,
-    max,
-    integer,
-    duration,
-    setParams,
-    renderHz: opts.renderHz,
-  };
+  const current = { playing, speed, loop, max, integer, duration, setParams, renderHz: opts.renderHz };
+  const live = useRef({ exact, ...current });
+  live.current = { ...live.current, ...current };
   const setExact = useCallback((next: number | ((e: number) => number)) => {
     const v = typeof next === 'function' ? next(live.current.exact) : next;
     live.current.exact = v;
