@@ -73,7 +73,10 @@ export default defineConfig(({ mode }) => {
               ],
             },
             workbox: {
-              globPatterns: ['**/*.{js,css,html,png,svg,ico,webmanifest,woff2,woff,ttf,wasm,json}'],
+              // KaTeX's stylesheet lists each font as woff2, woff and ttf; every browser the app
+              // supports takes the woff2, so only those are precached (the others: 2/3 of the fonts'
+              // bytes, never fetched)
+              globPatterns: ['**/*.{js,css,html,png,svg,ico,webmanifest,woff2,wasm,json}'],
               maximumFileSizeToCacheInBytes: 20 * 1024 * 1024,
               cleanupOutdatedCaches: true,
               clientsClaim: true,
@@ -95,8 +98,7 @@ export default defineConfig(({ mode }) => {
             output: {
               // three.js, Plotly and KaTeX get recognisable chunk names (vendor-three-*.js, …) for the
               // budgets. mathjs is left to the default splitting on purpose: the parse-only expression
-              // engine (src/core/expr) must not share a chunk with the full mathjs that the stability
-              // panel's BigNumber reference loads.
+              // engine (src/core/expr) loads only what it needs.
               // Each scene's lazy chunk is named after it (scene-texture-*.js, …); naming only, so the
               // default splitting (shared modules in shared chunks) is untouched.
               chunkFileNames: (chunk: { facadeModuleId?: string | null }) => {

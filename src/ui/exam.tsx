@@ -89,40 +89,36 @@ export function ExamPart({
   );
 }
 
-/** The written derivation: the steps the key awards marks for (with live numbers where they have numbers). */
-export function Derivation({
-  title = 'Derivation',
+/** A titled block of an exam part (derivation, live answer). */
+function ExamBlock({
+  className,
+  title,
   children,
   testId,
 }: {
-  title?: string;
+  className: string;
+  title: string;
   children: ReactNode;
   testId?: string;
 }) {
   return (
-    <div className="exam-derivation" data-testid={testId}>
+    <div className={className} data-testid={testId}>
       <h4 className="exam-block-title">{title}</h4>
       {children}
     </div>
   );
 }
 
+type BlockProps = { title?: string; children: ReactNode; testId?: string };
+
+/** The written derivation: the steps the key awards marks for (with live numbers where they have numbers). */
+export function Derivation({ title = 'Derivation', ...rest }: BlockProps) {
+  return <ExamBlock className="exam-derivation" title={title} {...rest} />;
+}
+
 /** The answer, computed live by the math core (readouts go here). */
-export function LiveAnswer({
-  title = 'Answer, computed live',
-  children,
-  testId,
-}: {
-  title?: string;
-  children: ReactNode;
-  testId?: string;
-}) {
-  return (
-    <div className="exam-answer" data-testid={testId}>
-      <h4 className="exam-block-title">{title}</h4>
-      {children}
-    </div>
-  );
+export function LiveAnswer({ title = 'Answer, computed live', ...rest }: BlockProps) {
+  return <ExamBlock className="exam-answer" title={title} {...rest} />;
 }
 
 /** A note on where the key's printed figure or wording differs from the computation. */

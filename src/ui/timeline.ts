@@ -161,16 +161,6 @@ export interface Timeline {
 }
 
 /**
- * The live position, re-rendering only the calling component on every frame (for a small figure
- * that moves every frame while the component owning the timeline re-renders at `renderHz`).
- */
-export function useTimelinePosition(tl: Pick<Timeline, 'subscribe' | 'now'>): number {
-  const [t, setT] = useState(tl.now);
-  useTimelineFrame(tl, setT);
-  return t;
-}
-
-/**
  * The position at a coarse rate: re-renders only the calling component, at most `hz` times a
  * second (and at most every RENDER_MIN_FRAMES frames) while playing, and on every change while
  * paused (exact on pause, step, seek, reset). For text that follows an animation whose owner does
@@ -216,28 +206,9 @@ export function useTimeline(opts: TimelineOptions): Timeline {
 
   // live values for the frame loop and callbacks (`exact` runs ahead of React state while playing
   // with renderHz; setExact keeps both in step)
-  const live = useRef({
-    exact,
-    playing,
-    speed,
-    loop,
-    max,
-    integer,
-    duration,
-    setParams,
-    renderHz: opts.renderHz,
-  });
-  live.current = {
-    ...live.current,
-    playing,
-    speed,
-    loop,
-    max,
-    integer,
-    duration,
-    setParams,
-    renderHz: opts.renderHz,
-  };
+  const current = { playing, speed, loop, max, integer, duration, setParams, renderHz: opts.renderHz };
+  const live = useRef({ exact, ...current });
+  live.current = { ...live.current, ...current };
   const setExact = useCallback((next: number | ((e: number) => number)) => {
     const v = typeof next === 'function' ? next(live.current.exact) : next;
     live.current.exact = v;

@@ -20,6 +20,8 @@ import {
 import type { SceneProps } from '../../kit/scene';
 import { EXAM_GRID_TEXT, examGrid, gridRange, gridToRows, parseGrid, texel } from '../../core/texture';
 import {
+  AnimationDriver,
+  createAnimationStore,
   Derivation,
   ExamPart,
   ExamQuestion,
@@ -36,6 +38,9 @@ import {
   Select,
   Slider,
   Toggle,
+  useAnimFrame,
+  usePlaying,
+  useStillT,
   writeReadout,
 } from '../../ui';
 import {
@@ -58,16 +63,7 @@ import {
   type Lookup,
   type QueryPath,
 } from './model';
-import {
-  TimelineDriver,
-  animContext,
-  createTimelineStore,
-  useAnimFrame,
-  usePlaying,
-  useStillT,
-  useWorkedT,
-  type AnimContext,
-} from './anim';
+import { DURATION, RENDER_HZ, STEP, animContext, formatT, type AnimContext } from './anim';
 import { GRID_TEXT_MAX, type PathKind, type Preset, type TextureSchema } from './params';
 import { GridView, StencilDetail, fmtShort, type Grab } from './view/GridView';
 import { BilinearWorked, NearestWorked, WideMath, bilinearTex, sphereTex } from './view/WorkedSteps';
@@ -118,10 +114,10 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
   );
   const range = useMemo(() => gridRange(grid), [grid]);
 
-  // The timeline lives in <TimelineDriver>, which publishes its position to this store; only the
+  // The timeline lives in <AnimationDriver>, which publishes its position to this store; only the
   // components that draw the moving query subscribe to it (see ./anim), so a frame does not
   // re-render the scene.
-  const [store] = useState(() => createTimelineStore(Number(params.t)));
+  const [store] = useState(() => createAnimationStore(Number(params.t)));
   const ctx = useMemo(
     () => animContext(store, grid, opts, src, path, committedPath),
     [store, grid, opts, src, path, committedPath],
@@ -343,12 +339,18 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
             present={mode.present}
           />
           <Legend range={range} />
-          <TimelineDriver
+          <AnimationDriver
             store={store}
             t={Number(params.t)}
             play={params.play === true}
             setParams={setParams}
             visibleRef={figRef}
+            max={1}
+            duration={DURATION}
+            stepSize={STEP}
+            renderHz={RENDER_HZ}
+            label="Query path"
+            format={formatT}
           >
             <label className="tx-path-kind">
               <span>Path</span>
@@ -361,7 +363,7 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
                 <option value="circle">circle through both</option>
               </select>
             </label>
-          </TimelineDriver>
+          </AnimationDriver>
           <div className="tx-path-end">
             <span>Path end</span>
             <NumberField
@@ -1062,7 +1064,7 @@ function AnimReconstruction({
  * started (exact again as soon as it pauses, steps or seeks), so no frame carries a KaTeX typeset.
  */
 function useWorked(ctx: AnimContext) {
-  const tWorked = useWorkedT(ctx.store);
+  const tWorked = useStillT(ctx.store);
   return { tWorked, frame: ctx.worked(tWorked) };
 }
 

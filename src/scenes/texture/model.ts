@@ -349,12 +349,6 @@ export function pathPointInto(path: QueryPath, t: number, out: Float64Array): vo
   }
 }
 
-/** Length of the path in (u, v) units. */
-export function pathLength(path: QueryPath): number {
-  const d = Math.hypot(path.b[0] - path.a[0], path.b[1] - path.a[1]);
-  return path.kind === 'line' ? d : Math.PI * d;
-}
-
 /** A place on the path where the bilinear cell (or the addressing branch) changes. */
 export interface CellBorder {
   t: number;

@@ -1,12 +1,12 @@
 /** Convergence as N grows: running estimate and |error| log-log with guides and fitted slopes (one run per strategy, in the worker). */
 import { useEffect, useMemo, useRef } from 'react';
-import { formatNumber, Panel, Plot, type PlotTrace } from '../../../ui';
+import { formatNumber, Panel, Plot, useThrottled, type PlotTrace } from '../../../ui';
+import { useAutoRun, type WorkerFactory } from '../../../workers';
 import { atRoundingLevel } from '../model';
 import { formatCount } from '../../../ui/format';
 import type { ProblemArgs, SeriesData } from '../jobs';
-import { REDRAW_MS, useAutoRun, useLegendRoom, useThrottled } from './hooks';
+import { REDRAW_MS, useLegendRoom } from './hooks';
 import { arr, COLORS, Heading, L_ERR, L_EST, RunBar } from './plotStyle';
-import type { WorkerFactory } from '../../../workers';
 import type { McTasks } from '../mc.worker';
 
 export function ConvergencePanel({
@@ -26,7 +26,7 @@ export function ConvergencePanel({
 }) {
   const box = useRef<HTMLDivElement>(null);
   const key = JSON.stringify([args, nMax]);
-  const task = useAutoRun('convergence', makeWorker, { ...args, nMax }, key, box);
+  const task = useAutoRun(makeWorker, 'convergence', { ...args, nMax }, { key, box, queue: 'monte-carlo' });
   // classroom shortcut (space): run the convergence again
   const rerun = task.run;
   const lastToken = useRef(runToken);

@@ -1,11 +1,11 @@
 /** Unbiasedness: the histogram of many independent estimates at fixed N, with their mean (core Welford). */
 import { useMemo, useRef } from 'react';
-import { formatNumber, NumberField, Panel, Plot, Readout, type PlotTrace } from '../../../ui';
+import { formatNumber, NumberField, Panel, Plot, Readout, useThrottled, type PlotTrace } from '../../../ui';
+import { useAutoRun, type WorkerFactory } from '../../../workers';
 import { estimateFromTerms, histogram } from '../../../core/estimators';
 import type { ProblemArgs } from '../jobs';
-import { REDRAW_MS, useAutoRun, useLegendRoom, useThrottled } from './hooks';
+import { REDRAW_MS, useLegendRoom } from './hooks';
 import { arr, COLORS, L_HIST, RunBar } from './plotStyle';
-import type { WorkerFactory } from '../../../workers';
 import type { McTasks } from '../mc.worker';
 
 export function HistogramPanel({
@@ -25,7 +25,7 @@ export function HistogramPanel({
   const M = 2000;
   const room = useLegendRoom();
   const key = JSON.stringify([args, N]);
-  const task = useAutoRun('histogram', makeWorker, { ...args, N, M }, key, box);
+  const task = useAutoRun(makeWorker, 'histogram', { ...args, N, M }, { key, box, queue: 'monte-carlo' });
   const est = useThrottled(task.result ?? task.partial, REDRAW_MS, !task.running)?.estimates;
   const stats = useMemo(() => {
     if (!est || !est.length) return null;

@@ -1,12 +1,12 @@
 /** RMSE over independent (randomized) runs against N, and against the measured run time. */
 import { useMemo, useRef } from 'react';
-import { NumberField, Panel, Plot, type PlotTrace } from '../../../ui';
+import { NumberField, Panel, Plot, useThrottled, type PlotTrace } from '../../../ui';
+import { useAutoRun, type WorkerFactory } from '../../../workers';
 import { atRoundingLevel, sortedByX } from '../model';
 import { formatCount } from '../../../ui/format';
 import type { ProblemArgs } from '../jobs';
-import { REDRAW_MS, useAutoRun, useLegendRoom, useThrottled } from './hooks';
+import { REDRAW_MS, useLegendRoom } from './hooks';
 import { arr, clampArr, COLORS, Heading, hexA, L_RMSE, L_TIME, RunBar } from './plotStyle';
-import type { WorkerFactory } from '../../../workers';
 import type { McTasks } from '../mc.worker';
 
 export function RmsePanel({
@@ -26,7 +26,7 @@ export function RmsePanel({
 }) {
   const box = useRef<HTMLDivElement>(null);
   const key = JSON.stringify([args, nMax, runs]);
-  const task = useAutoRun('rmse', makeWorker, { ...args, nMax, runs }, key, box);
+  const task = useAutoRun(makeWorker, 'rmse', { ...args, nMax, runs }, { key, box, queue: 'monte-carlo' });
   const cur = useThrottled(task.result ?? task.partial, REDRAW_MS, !task.running);
   const rm = cur?.rmse ?? [];
   const rmExactLabels = rm.filter((s) => atRoundingLevel(s.rmse, exact)).map((s) => s.label);

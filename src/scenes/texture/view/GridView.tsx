@@ -22,7 +22,7 @@ import {
   type RefObject,
 } from 'react';
 import { nodeCoord, type LookupOptions, type TextureGrid } from '../../../core/texture';
-import { colorCss, darkTextOn, normalizeValue } from '../colormap';
+import { darkTextOn, normalizeValue } from '../colormap';
 import { pathPoint, textureImage, type Lookup, type QueryPath } from '../model';
 
 const VB = 1000; // viewBox size of the plotted window
@@ -698,11 +698,6 @@ export function fmtShort(x: number): string {
   if (!Number.isFinite(x)) return '—';
   const s = Number(x.toPrecision(4));
   return String(s);
-}
-
-/** CSS colour of a value on the grid's range (legend). */
-export function valueColor(x: number, range: { min: number; max: number }): string {
-  return colorCss(normalizeValue(x, range.min, range.max));
 }
 
 const CU_S = 200;
