@@ -17,7 +17,9 @@ export default tseslint.config(
     plugins: { 'react-hooks': reactHooks, local: { rules: { layers } } },
     languageOptions: { globals: { ...globals.browser, ...globals.worker } },
     rules: {
-      ...reactHooks.configs.recommended.rules,
+      // the two classic hook rules (the React Compiler's rules are not adopted: no compiler here)
+      'react-hooks/rules-of-hooks': 'error',
+      'react-hooks/exhaustive-deps': 'warn',
       'local/layers': 'error',
     },
   },

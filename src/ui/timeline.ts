@@ -250,7 +250,7 @@ export function useTimeline(opts: TimelineOptions): Timeline {
       written.current.t = t;
       setExact(t);
     }
-  }, [opts.t, max, integer]);
+  }, [opts.t, max, integer, setExact]);
   // external change of `play`
   // (a host page's pause must also leave the paused position in the URL, as the Pause button does)
   useEffect(() => {
@@ -269,11 +269,11 @@ export function useTimeline(opts: TimelineOptions): Timeline {
       written.current.t = t;
       l.setParams({ t });
     }
-  }, [opts.play]);
+  }, [opts.play, setExact]);
   // a shorter timeline (e.g. fewer samples) clamps the position
   useEffect(() => {
     setExact((e) => clampPosition(e, max, false));
-  }, [max]);
+  }, [max, setExact]);
 
   const write = useCallback((patch: { t?: number; play?: boolean }) => {
     if (patch.t !== undefined) written.current.t = patch.t;
