@@ -33,7 +33,7 @@ function inlineWorkers(): Plugin {
  * @stdlib's packages are CommonJS without a `sideEffects` field, so a bundler keeps them (and runs
  * their module code, tens of ms on a phone) in every chunk that imports them, even unused: the
  * χ² test's gammainc ended up in the hemisphere page's chunk, though only its worker runs the test
- * (issue 15). They have no side effects on import.
+ *. They have no side effects on import.
  */
 const treeshake = { moduleSideEffects: [{ test: /[\\/]node_modules[\\/]@stdlib[\\/]/, sideEffects: false }] };
 
@@ -46,7 +46,7 @@ export default defineConfig(({ mode }) => {
       ? [react(), inlineWorkers(), viteSingleFile({ removeViteModuleLoader: true })]
       : [
           react(),
-          // index.html starts the opened scene's chunks downloading with the entry (issue 15)
+          // index.html starts the opened scene's chunks downloading with the entry
           routePreload(),
           // Offline: a Workbox service worker precaches every file of the build (all chunks, workers,
           // fonts), so after one visit every scene opens with no network. 'prompt': a new build waits
@@ -83,7 +83,7 @@ export default defineConfig(({ mode }) => {
               navigateFallback: 'index.html',
             },
           }),
-          // after VitePWA: its manifest link leaves index.html; src/app/pwa.ts adds it later (issue 15)
+          // after VitePWA: its manifest link leaves index.html; src/app/pwa.ts adds it later
           lateManifestLink(),
         ],
     build: {

@@ -1,6 +1,6 @@
 #!/usr/bin/env node
 /**
- * What Lighthouse's simulated LCP is made of (issue 15): runs Lighthouse (mobile preset) once on a
+ * What Lighthouse's simulated LCP is made of: runs Lighthouse (mobile preset) once on a
  * route of a build, served gzipped on 127.0.0.1, then prints the request/task graph that Lantern
  * simulates for LCP, each node with its simulated start–end (ms), the slowest end being the LCP.
  * Network nodes: every request that ended before the observed LCP (so anything started before the

@@ -52,7 +52,7 @@ export function SceneHost({ info, query, flags, theme }: Props) {
     }
     let alive = true;
     // (KaTeX's worker and stylesheet start once the scene's first screen has been painted, with its
-    // formulas as plain text for a moment: fetched earlier, they delayed that paint on a phone; issue 15.)
+    // formulas as plain text for a moment: fetched earlier, they delayed that paint on a phone.)
     loader().then(
       // A transition: React renders the scene's (large) first tree in slices of a few ms that yield
       // to the browser, instead of one long task (Lighthouse: total blocking time on load).

@@ -30,7 +30,7 @@ export function formatSignificant(x: number, digits: number, style: ExponentStyl
 /**
  * A sample count with comma thousands separators, as `n.toLocaleString('en')` writes a
  * non-negative integer, without Intl: the page's first toLocaleString loads ICU's number
- * formatting, ~25–40 ms of main-thread time in the scene's first render (issue 15). Anything else
+ * formatting, ~25–40 ms of main-thread time in the scene's first render. Anything else
  * (negative, fractional, unsafe integers) goes to toLocaleString.
  */
 export function formatCount(n: number): string {

@@ -2,7 +2,7 @@
  * A plain-text reading of TeX, shown while a formula waits for KaTeX (./MathTex): "p(ω) = k cos θ
  * e^φ" instead of the source "p(\omega) = k\cos\theta\,e^{\phi}". It reads better on a slow phone
  * and to a screen reader, and, being about as wide as the typeset formula, the text around it
- * moves less when the formula arrives (Lighthouse's layout shift, issue 15).
+ * moves less when the formula arrives (Lighthouse's layout shift).
  *
  * One pass over the characters (no backtracking), never throws; what it does not know it keeps.
  */

@@ -1,6 +1,6 @@
 /**
  * The shared animation timeline: one implementation of play / pause / step / reset / speed / loop /
- * scrub for every scene (issue 12).
+ * scrub for every scene.
  *
  * The position `t` is state like any other scene parameter: it lives in the scene's URL parameters
  * (`t`, and `play=1` while playing), so a link reopens the animation at the same moment. What a scene

@@ -215,7 +215,7 @@ export function useWorkerJob<T extends TaskMap, K extends TaskName<T>>(
       ctl.current = null;
       if (q) release(q, id);
       // a transition: a result re-renders most of a scene, which React then does in slices that
-      // yield instead of one long task (issue 15)
+      // yield instead of one long task
       startTransition(() => setState((s) => (s.key === runKey ? { ...s, ...patch, running: false } : s)));
     };
     runWorkerTask(latest.current.makeWorker, method, latest.current.args as ArgsOf<T, K>, {

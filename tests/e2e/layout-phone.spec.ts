@@ -1,5 +1,5 @@
 /**
- * Layout on phones, tablets and in present mode (issue 11, "make every layout legible"):
+ * Layout on phones, tablets and in present mode ("make every layout legible"):
  * - one column (375 and 768 px): every scene shows its exam question (heading) before its inputs,
  *   and its inputs before its first computed answer;
  * - present=1: #/area-light's 3D view (the figure that teaches Q6) starts in the first screen;

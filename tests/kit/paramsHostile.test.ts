@@ -1,4 +1,4 @@
-/** Hostile link parameters (issue 17): prototype names, '+' in expressions, broken escapes. */
+/** Hostile link parameters: prototype names, '+' in expressions, broken escapes. */
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { parseParams, serializeParams, type ParamSchema } from '../../src/kit/params';

@@ -222,10 +222,10 @@ export function fillSequence1D(
  * x0 = owen(rev(j)) = rev(hash(j)), x1 = owen(sobol1(j)) = rev(hash(rev(sobol1(j)))). Written out by
  * hand, without helper calls: engines stop inlining after a budget, and a non-inlined helper that
  * returns a 32-bit value outside the small-integer range allocates, which made this 20× slower.
- * Re-measured for issue 16 (interleaved A/B against this kernel, bit-identical output, Node 20):
+ * Re-measured (interleaved A/B against this kernel, bit-identical output, Node 20):
  * the same loop written with owen.ts's reverseBits32I / owenHashReversedI (multiplier hoisted or
  * not), or with local helpers, ran 15–35 % slower per point, so the repeated rev/hash steps stay
- * written out (issue 16: a hand-inlined twin stays where it is measurably faster, said beside it).
+ * written out (a hand-inlined twin stays where it is measurably faster, said beside it).
  */
 function sobolKernel(
   out: Float64Array,
