@@ -13,7 +13,8 @@
  *   { protocol, version, type: 'event', event: 'practice-verdict', verdict: { question, seed, name, verdict } }
  *
  * Rules: only messages whose `source` is this window's parent are read (and only when the app
- * runs in a frame); with `origin=` in the URL only those origins are; replies go to the origin
+ * runs in a frame); with `origin=` in the URL only those origins are (none when it names no
+ * usable origin: a malformed `origin=` never widens who is answered); replies go to the origin
  * the request came from. Values are validated exactly like URL parameters (`parseParams`), a
  * `set` is all-or-nothing and its error names every value it could not use; nothing received is
  * evaluated or inserted as HTML. `play`, `pause` and `seek` are `set`s of the animation's `play`
@@ -112,7 +113,8 @@ interface Subscriber {
 }
 
 let scene: HostScene | null = null;
-let allowed: readonly string[] = [];
+// who is answered (null: any parent); nobody until the app has read its link's `origin=`
+let allowed: readonly string[] | null = [];
 const subscribers: Subscriber[] = [];
 /** `scene?query` of the last change event, so that each change is told once. */
 let lastEmitted: string | null = null;
@@ -185,7 +187,8 @@ function applySet(id: unknown, origin: string, params: unknown): void {
 
 function onMessage(e: MessageEvent): void {
   if (!framed() || e.source !== window.parent) return;
-  if (allowed.length && !allowed.includes(e.origin)) return;
+  // no `origin=`: any parent; `origin=` (even one naming nothing usable): only its origins
+  if (allowed !== null && !allowed.includes(e.origin)) return;
   const d: unknown = e.data;
   if (typeof d !== 'object' || d === null) return;
   const m = d as Record<string, unknown>;
@@ -269,7 +272,7 @@ function onVerdict(e: Event): void {
 }
 
 /** The page-wide bridge (call once, in the app): listens for requests and practice verdicts. */
-export function useHostApi(origins: readonly string[]): void {
+export function useHostApi(origins: readonly string[] | null): void {
   useEffect(() => {
     allowed = origins;
   }, [origins]);

@@ -5,7 +5,7 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { validateSet, toUrlText } from '../../src/app/hostApi';
-import { parseOrigins, parseShellFlags } from '../../src/app/route';
+import { parseOrigins, parseShellFlags, shellExtras } from '../../src/app/route';
 import { parseParams, serializeParams } from '../../src/app/params';
 import { schema as texture } from '../../src/scenes/texture/params';
 import { schema as raySphere } from '../../src/scenes/ray-sphere/params';
@@ -95,5 +95,45 @@ describe('origin=', () => {
     expect(parseShellFlags('origin=nope').problems.map((p) => p.name)).toEqual(['origin']);
     // origin is a shell parameter: a scene does not call it unknown
     expect(parseParams(texture, 'origin=https%3A%2F%2Fx.org').problems).toEqual([]);
+  });
+
+  it('never widens who is answered: a present origin= with no usable entry answers nobody, and says so', () => {
+    expect(parseOrigins(null)).toEqual({ origins: null, problem: null });
+    expect(parseShellFlags('u=0.3').origins).toBeNull();
+    for (const raw of [
+      'http://127.0.0.1:4304/lms/page',
+      '127.0.0.1:4304',
+      'HTTP://127.0.0.1:4304',
+      'null',
+      '*',
+      '',
+      ' , ,',
+      'file:///x',
+      'javascript:alert(1)',
+    ]) {
+      const r = parseOrigins(raw);
+      expect(r.origins, raw).toEqual([]);
+      expect(r.problem, raw).toMatch(/no usable origin/);
+      const f = parseShellFlags(`origin=${encodeURIComponent(raw)}`);
+      expect(f.origins, raw).toEqual([]);
+      expect(
+        f.problems.map((p) => p.name),
+        raw,
+      ).toEqual(['origin']);
+      // a link the page rewrites keeps the (closed) restriction
+      expect(shellExtras(f).origin, raw).toBe('');
+    }
+    expect(parseShellFlags('origin=').origins).toEqual([]);
+  });
+
+  it('keeps the first 16 origins and names the dropped ones', () => {
+    const list = Array.from({ length: 17 }, (_, i) => `https://h${i}.example.edu`);
+    const r = parseOrigins(list.join(','));
+    expect(r.origins).toEqual(list.slice(0, 16));
+    expect(r.problem).toMatch(/17 origins; only the first 16/);
+    expect(r.problem).toContain('h16.example.edu');
+    expect(parseOrigins(list.slice(0, 16).join(',')).problem).toBeNull();
+    // a repeated origin counts once
+    expect(parseOrigins('https://a.org,https://a.org').origins).toEqual(['https://a.org']);
   });
 });

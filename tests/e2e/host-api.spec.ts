@@ -225,6 +225,37 @@ test('with origin= the scene answers only that origin', async ({ page }) => {
   expect(heights).toBe(0);
 });
 
+test('a malformed origin= never opens the scene up: nobody is answered, and the page says so', async ({
+  page,
+}) => {
+  test.setTimeout(120_000);
+  const host = hostOrigin.replace('http://', '');
+  for (const raw of [`${hostOrigin}/lms/page`, host, hostOrigin.toUpperCase(), 'null', '*', '']) {
+    await openHost(page, `#/texture?embed=1&origin=${encodeURIComponent(raw)}`);
+    const frame = page.frameLocator('#scene');
+    await expect(frame.getByTestId('param-notice'), raw).toContainText('no usable origin');
+    const r = await page.evaluate(() =>
+      Promise.race([
+        (window as unknown as { rml: { set: (p: unknown) => Promise<unknown> } }).rml
+          .set({ u: 0.9 })
+          .then(() => 'answered'),
+        new Promise((ok) => setTimeout(() => ok('ignored'), 2500)),
+      ]),
+    );
+    expect(r, raw).toBe('ignored');
+    // nothing was applied, and no height message was posted (to '*' or anywhere)
+    const got = await page.evaluate(
+      () =>
+        (window as unknown as { rml: { received: Msg[] } }).rml.received.filter(
+          (m) => m.type === 'render-math-lab:height' || m.type === 'reply',
+        ).length,
+    );
+    expect(got, raw).toBe(0);
+    const f = page.frames().find((x) => x.url().startsWith(`http://127.0.0.1:${appPort}/`))!;
+    expect(await f.evaluate(() => window.location.hash), raw).not.toContain('u=0.9');
+  }
+});
+
 test('the posted height follows the content both ways: it shrinks as well as grows when the host resizes the iframe', async ({
   page,
 }) => {
