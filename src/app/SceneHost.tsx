@@ -211,7 +211,10 @@ function LoadedScene({
   useShortcuts({ reset: () => setParams({ ...opening.current }) });
 
   const getValues = useCallback(() => valuesRef.current, []);
-  useHostScene({ id: info.id, route: info.path, schema, getValues, setParams }, values);
+  useHostScene(
+    { id: info.id, route: info.path, schema, getValues, setParams, checkValues: mod.checkValues },
+    values,
+  );
 
   const Scene = mod.default;
   return (

@@ -23,6 +23,8 @@
  */
 import { useEffect, useRef } from 'react';
 import { parseParams, serializeParams, SHELL_PARAMS, type ParamSchema, type ParamValues } from './params';
+import type { SceneCheck } from './scene';
+import { refusedValues } from './hostCheck';
 
 export const PROTOCOL = 'render-math-lab';
 export const PROTOCOL_VERSION = 1;
@@ -44,6 +46,8 @@ export interface HostScene {
   /** The scene's current values (after any setParams, even before React re-renders). */
   getValues: () => ParamValues<ParamSchema>;
   setParams: (patch: Record<string, unknown>) => void;
+  /** The scene's model check (SceneModule.checkValues): values it would replace by a fallback. */
+  checkValues?: SceneCheck;
 }
 
 type Problem = { name: string; message: string };
@@ -164,23 +168,47 @@ function reply(id: unknown, origin: string, body: Record<string, unknown>): void
   post({ type: 'reply', id: safeId, ...body }, origin);
 }
 
+/** `set`s run one after another (each waits for its checks), so replies keep the requests' order. */
+let setQueue: Promise<void> = Promise.resolve();
+
 function applySet(id: unknown, origin: string, params: unknown): void {
-  if (!scene) {
+  setQueue = setQueue.then(() => applySetNow(id, origin, params)).catch(() => undefined);
+}
+
+function refuse(id: unknown, origin: string, problems: Problem[]): void {
+  reply(id, origin, {
+    ok: false,
+    error: `Not applied: ${problems.map((p) => `${p.name} ${p.message}`).join('; ')}.`,
+    problems,
+  });
+}
+
+async function applySetNow(id: unknown, origin: string, params: unknown): Promise<void> {
+  const s = scene;
+  if (!s) {
     reply(id, origin, { ok: false, error: 'There is no scene on this page to set parameters of.' });
     return;
   }
-  const r = validateSet(scene.schema, params);
+  const r = validateSet(s.schema, params);
   if (!r.ok) {
-    reply(id, origin, {
-      ok: false,
-      error: `Not applied: ${r.problems.map((p) => `${p.name} ${p.message}`).join('; ')}.`,
-      problems: r.problems,
-    });
+    refuse(id, origin, r.problems);
     return;
   }
-  if (Object.keys(r.patch).length) scene.setParams(r.patch);
+  // values the parser accepts but the page would replace (an expression that does not compile, a
+  // fallback the scene's model would take): the whole set fails, as the README promises
+  const refused = await refusedValues(s.schema, s.getValues(), r.patch, s.checkValues);
+  if (refused.length) {
+    refuse(id, origin, refused);
+    return;
+  }
+  const now = scene;
+  if (!now || now.id !== s.id) {
+    reply(id, origin, { ok: false, error: 'Not applied: the page changed to another scene meanwhile.' });
+    return;
+  }
+  if (Object.keys(r.patch).length) now.setParams(r.patch);
   // the state after the change (the shell updates the values synchronously in setParams)
-  const state = hostState(scene);
+  const state = hostState(now);
   reply(id, origin, { ok: true, state });
   maybeEmitChange(state, 'host');
 }

@@ -256,6 +256,31 @@ test('a malformed origin= never opens the scene up: nobody is answered, and the 
   }
 });
 
+test('set fails, applying nothing, for values the scene would replace by a fallback', async ({ page }) => {
+  test.setTimeout(120_000);
+  const cases: [string, Record<string, unknown>, string][] = [
+    ['#/monte-carlo?embed=1', { a: 1, b: 1, n: 64 }, 'b'],
+    ['#/ray-sphere?embed=1', { d: [0, 0, 0] }, 'd'],
+    ['#/area-light?embed=1', { ls: [0, 0] }, 'ls'],
+    ['#/texture?embed=1', { grid: '1,2,3;4' }, 'grid'],
+    ['#/hemisphere?embed=1', { lobe: 'custom', pdf: '-1' }, 'pdf'],
+    ['#/hemisphere?embed=1', { lobe: 'custom', pdf: 'import(1)' }, 'pdf'],
+  ];
+  for (const [hash, params, name] of cases) {
+    await openHost(page, hash);
+    const before = await api<Reply>(page, 'get');
+    const r = await api<Reply>(page, 'set', params);
+    expect(r.ok, `${hash} ${JSON.stringify(params)}`).toBe(false);
+    expect(r.error).toContain(name);
+    const after = await api<Reply>(page, 'get');
+    expect(after.state, 'nothing applied').toEqual(before.state);
+    await expect(page.frameLocator('#scene').getByTestId('param-notice')).toHaveCount(0);
+  }
+  // a usable change on the same page still applies
+  const ok = await api<Reply>(page, 'set', { lobe: 'custom', pdf: 'cos(theta)' });
+  expect(ok.ok, ok.error).toBe(true);
+});
+
 test('the posted height follows the content both ways: it shrinks as well as grows when the host resizes the iframe', async ({
   page,
 }) => {
