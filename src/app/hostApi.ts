@@ -22,7 +22,14 @@
  * naming the parameter elsewhere.
  */
 import { useEffect, useRef } from 'react';
-import { parseParams, serializeParams, SHELL_PARAMS, type ParamSchema, type ParamValues } from './params';
+import {
+  parseParams,
+  serializeParams,
+  SHELL_PARAMS,
+  type ParamSchema,
+  type ParamSpec,
+  type ParamValues,
+} from './params';
 import type { SceneCheck } from './scene';
 import { refusedValues } from './hostCheck';
 
@@ -62,6 +69,50 @@ export function toUrlText(v: unknown): string | null {
   return null;
 }
 
+const KIND_WORDS: Record<ParamSpec['kind'], string> = {
+  number: 'a number',
+  enum: 'one of its words (a string)',
+  string: 'a string',
+  bool: 'a boolean (or 0 / 1)',
+  vec3: 'a list of three numbers',
+  list: 'a list of numbers',
+};
+
+function typeName(v: unknown): string {
+  if (Array.isArray(v)) return 'a list';
+  if (v === null) return 'null';
+  return typeof v === 'object' ? 'an object' : `a ${typeof v}`;
+}
+
+/**
+ * Why a host's value does not have its parameter's type, or null if it does. No conversion is
+ * silent: a boolean is not a number, a one-element list is not a number, a list is not a grid's
+ * text. A string is read as URL text for every kind (the way a link carries it), but must not
+ * carry spaces around it where the parameter is not free text, and a boolean's text is 0, 1,
+ * true or false.
+ */
+export function typeProblem(spec: ParamSpec, v: unknown): string | null {
+  const want = () => `is ${typeName(v)}; it takes ${KIND_WORDS[spec.kind]}`;
+  if (typeof v === 'string') {
+    if (spec.kind !== 'string' && v !== v.trim())
+      return `${JSON.stringify(clip(v, 24))} has spaces around it; send the value alone`;
+    if (spec.kind === 'bool' && !/^(0|1|true|false)$/.test(v))
+      return `${JSON.stringify(clip(v, 24))} is not a boolean (true, false, 0 or 1)`;
+    return null;
+  }
+  switch (spec.kind) {
+    case 'number':
+      return typeof v === 'number' ? null : want();
+    case 'bool':
+      return typeof v === 'boolean' || v === 0 || v === 1 ? null : want();
+    case 'vec3':
+    case 'list':
+      return Array.isArray(v) ? null : want();
+    default:
+      return want();
+  }
+}
+
 function clip(s: string, n = 40): string {
   return s.length > n ? `${s.slice(0, n)}…` : s;
 }
@@ -95,6 +146,12 @@ export function validateSet(
     const text = toUrlText(raw);
     if (text === null) {
       problems.push({ name: clip(name), message: 'is not a string, number, boolean or list of numbers' });
+      continue;
+    }
+    const spec = Object.hasOwn(schema, name) ? schema[name] : undefined;
+    const wrong = spec ? typeProblem(spec, raw) : null;
+    if (wrong) {
+      problems.push({ name, message: wrong });
       continue;
     }
     sp.append(name, text);
@@ -213,6 +270,16 @@ async function applySetNow(id: unknown, origin: string, params: unknown): Promis
   maybeEmitChange(state, 'host');
 }
 
+/** The reply to a request whose `version` is not this protocol's (a number). */
+export function versionError(v: unknown): string {
+  const V = PROTOCOL_VERSION;
+  if (typeof v === 'string')
+    return `Protocol version ${JSON.stringify(clip(v, 12))} is a string; send version: ${V} (the number ${V}).`;
+  if (v === undefined) return `The request has no version; send version: ${V}.`;
+  const shown = typeof v === 'number' ? String(v) : typeName(v);
+  return `Protocol version ${shown} is not supported; this app speaks version ${V}.`;
+}
+
 function onMessage(e: MessageEvent): void {
   if (!framed() || e.source !== window.parent) return;
   // no `origin=`: any parent; `origin=` (even one naming nothing usable): only its origins
@@ -224,7 +291,7 @@ function onMessage(e: MessageEvent): void {
   if (m.version !== PROTOCOL_VERSION) {
     reply(m.id, e.origin, {
       ok: false,
-      error: `Protocol version ${String(m.version).slice(0, 12)} is not supported; this app speaks version ${PROTOCOL_VERSION}.`,
+      error: versionError(m.version),
     });
     return;
   }

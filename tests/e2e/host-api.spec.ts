@@ -276,6 +276,33 @@ test('set fails, applying nothing, for values the scene would replace by a fallb
     expect(after.state, 'nothing applied').toEqual(before.state);
     await expect(page.frameLocator('#scene').getByTestId('param-notice')).toHaveCount(0);
   }
+  // no type is converted silently, and a version sent as a string is told how to send it
+  for (const params of [{ exponent: true }, { exponent: [8] }, { lobe: 'custom ' }, { pdf: [1, 2] }]) {
+    const r = await api<Reply>(page, 'set', params);
+    expect(r.ok, JSON.stringify(params)).toBe(false);
+    expect(r.error).toContain(Object.keys(params)[0]);
+  }
+  const v = await page.evaluate(
+    () =>
+      new Promise<Reply>((ok) => {
+        const w = window as unknown as { rml: { received: Msg[] } };
+        const frame = document.querySelector<HTMLIFrameElement>('#scene')!;
+        const n = w.rml.received.length;
+        frame.contentWindow!.postMessage(
+          { protocol: 'render-math-lab', version: '1', id: 'v1', type: 'get' },
+          '*',
+        );
+        const t = setInterval(() => {
+          const m = w.rml.received.slice(n).find((x) => x.id === 'v1');
+          if (m) {
+            clearInterval(t);
+            ok(m as unknown as Reply);
+          }
+        }, 50);
+      }),
+  );
+  expect(v.ok).toBe(false);
+  expect(v.error).toMatch(/"1" is a string; send version: 1/);
   // a usable change on the same page still applies
   const ok = await api<Reply>(page, 'set', { lobe: 'custom', pdf: 'cos(theta)' });
   expect(ok.ok, ok.error).toBe(true);
