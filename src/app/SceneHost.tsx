@@ -26,6 +26,7 @@ import { useHostScene } from './hostApi';
 import { embedSnippet } from './embedCode';
 import { QrButton } from './QrButton';
 import { markFirstScreen } from './firstScreen';
+import { importOrReload } from './staleBuild';
 
 interface Props {
   info: SceneInfo;
@@ -53,7 +54,8 @@ export function SceneHost({ info, query, flags, theme }: Props) {
     let alive = true;
     // (KaTeX's worker and stylesheet start once the scene's first screen has been painted, with its
     // formulas as plain text for a moment: fetched earlier, they delayed that paint on a phone.)
-    loader().then(
+    // a page of a replaced build reloads onto the new one instead (staleBuild.ts)
+    importOrReload(loader).then(
       // A transition: React renders the scene's (large) first tree in slices of a few ms that yield
       // to the browser, instead of one long task (Lighthouse: total blocking time on load).
       (mod) => alive && startTransition(() => setLoad({ kind: 'ready', mod })),
@@ -209,7 +211,10 @@ function LoadedScene({
   useShortcuts({ reset: () => setParams({ ...opening.current }) });
 
   const getValues = useCallback(() => valuesRef.current, []);
-  useHostScene({ id: info.id, route: info.path, schema, getValues, setParams }, values);
+  useHostScene(
+    { id: info.id, route: info.path, schema, getValues, setParams, checkValues: mod.checkValues },
+    values,
+  );
 
   const Scene = mod.default;
   return (

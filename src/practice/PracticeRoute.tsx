@@ -24,6 +24,7 @@ import {
 } from './model';
 import { QUESTIONS, isQuestionId, questionInfo, sheetSeed } from './questions';
 import { loadProgress, recordCheck, resetProgress, type Progress } from './progress';
+import { loadDraft, saveDraft } from './drafts';
 import './practice.css';
 
 interface Props {
@@ -249,7 +250,14 @@ function QuestionPage({
 }) {
   const info = questionInfo(variant.question);
   const answers = allAnswers(variant);
-  const [inputs, setInputs] = useState<Record<string, string>>({});
+  // typed answers survive a reload of the tab (drafts.ts)
+  const [inputs, setInputs] = useState<Record<string, string>>(() =>
+    loadDraft(variant.question, variant.seed),
+  );
+  useEffect(
+    () => saveDraft(variant.question, variant.seed, inputs),
+    [inputs, variant.question, variant.seed],
+  );
   const [verdicts, setVerdicts] = useState<Record<string, Verdict>>({});
   const [checking, setChecking] = useState(false);
   const [revealed, setRevealed] = useState(false);

@@ -320,3 +320,20 @@ test('each question’s scene link opens its scene in the variant’s configurat
     }
   }
 });
+
+test('answers typed but not checked survive a reload of the tab, per variant', async ({ page }) => {
+  await page.goto('./#/practice/q5?seed=3');
+  await page.getByTestId('answer-a').fill('12.5');
+  await page.getByTestId('answer-case').fill('two hits');
+  await page.reload();
+  await expect(page.getByTestId('answer-a')).toHaveValue('12.5');
+  await expect(page.getByTestId('answer-case')).toHaveValue('two hits');
+  await expect(page.getByTestId('verdict-a')).toHaveCount(0);
+  // another variant has its own (empty) draft
+  await page.goto('./#/practice/q5?seed=4');
+  await expect(page.getByTestId('answer-a')).toHaveValue('');
+  // a corrupted draft is ignored, not shown
+  await page.evaluate(() => sessionStorage.setItem('rml:practice-draft:q5:4', '{"a":7,"b":{"x":1}}'));
+  await page.reload();
+  await expect(page.getByTestId('answer-a')).toHaveValue('');
+});
