@@ -36,6 +36,8 @@ export interface NumberMistake {
 export interface NumberAlternative {
   value: number;
   message: string;
+  /** The convention's id (e.g. 'v-flip'): a variant's answers must use one convention throughout. */
+  convention?: string;
 }
 
 export interface NumberAnswer {
@@ -57,6 +59,7 @@ export interface FormulaMistake {
 export interface FormulaAlternative {
   fn: Fn;
   message: string;
+  convention?: string;
 }
 
 export interface FormulaAnswer {
