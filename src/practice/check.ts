@@ -66,6 +66,8 @@ export interface Verdict {
    * a variant's parts must use one convention throughout.
    */
   convention?: string;
+  /** For `consistent`: the earlier answers (names) this one follows through from. */
+  from?: string[];
 }
 
 // ---------------------------------------------------------------------------------------------
