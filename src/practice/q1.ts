@@ -12,6 +12,7 @@
  */
 import { Rng } from '../core/random';
 import { formulaAnswer, numberAnswer, pick, query } from './build';
+import { closeFns, integralFrom0, ownFn, ownNumber } from './follow';
 import {
   assembleSolution,
   fmt,
@@ -19,6 +20,8 @@ import {
   ratText,
   ratValue,
   tn,
+  type FollowRule,
+  type OwnValue,
   type Part,
   type Rational,
   type SolutionStep,
@@ -301,6 +304,40 @@ export function q1Variant(seed: number): Variant {
     ],
   );
 
+  // follow-through: each later answer from the student's own earlier one
+  pPhi.follow = [
+    {
+      from: ['k'],
+      matches: (own, g) => {
+        const ks = ownNumber(own, 'k');
+        return typeof ks === 'number' && closeFns((f) => (ks / (m + 1)) * Math.exp(a * f), g, ph);
+      },
+    },
+  ];
+  const cdfFrom = (pdf: string, dom: [number, number]) => [
+    {
+      from: [pdf],
+      matches: (own: Parameters<FollowRule['matches']>[0], g: OwnValue) => {
+        const p = ownFn(own, pdf);
+        return !!p && closeFns(integralFrom0(p), g, dom);
+      },
+    },
+  ];
+  cdfTheta.follow = cdfFrom('p-theta', th);
+  cdfPhi.follow = cdfFrom('p-phi', ph);
+  const inverseOf = (cdf: string) => [
+    {
+      from: [cdf],
+      matches: (own: Parameters<FollowRule['matches']>[0], h: OwnValue) => {
+        const P = ownFn(own, cdf);
+        if (!P || typeof h !== 'function') return false;
+        const back = (x: number) => P(h(x));
+        return closeFns((x) => x, back, xi) || closeFns((x) => 1 - x, back, xi);
+      },
+    },
+  ];
+  thetaXi.follow = inverseOf('cdf-theta');
+  phiXi.follow = inverseOf('cdf-phi');
   const xi1 = 0.3;
   const xi2 = 0.7;
   const mp1 = m + 1;

@@ -24,6 +24,7 @@ import {
   type TextureGrid,
 } from '../core/texture';
 import { intIn, numberAnswer, pick, query } from './build';
+import { closeTo, ownNumber } from './follow';
 import { assembleSolution, fmt, roundTo, tn, tp, type Part, type SolutionStep, type Variant } from './model';
 
 const FLIP: LookupOptions = { ...EXAM_LOOKUP, vflip: true };
@@ -263,6 +264,19 @@ export function q3Variant(seed: number): Variant {
           text: `Without the normalization (the angles in radians, clamped to [0, 1]) the lookup would give ${fmt(sBilRaw)}; the key deducts for it.`,
         },
       ],
+    },
+  ];
+  answers.sphereBil.follow = [
+    {
+      from: ['sphere-u', 'sphere-v'],
+      matches: (own, val) => {
+        const us = ownNumber(own, 'sphere-u');
+        const vs = ownNumber(own, 'sphere-v');
+        if (typeof us !== 'number' || typeof vs !== 'number') return false;
+        return (
+          closeTo(val, bilinear(grid, us, vs, EXAM_LOOKUP)) || closeTo(val, bilinear(grid, us, vs, FLIP))
+        );
+      },
     },
   ];
   answers.nearest.tex = `\\text{nearest} = ${tn(near.value)}`;

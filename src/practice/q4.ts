@@ -12,6 +12,7 @@
 import { Rng } from '../core/random';
 import { importanceEstimate, uniformEstimate } from '../core/estimators';
 import { intIn, numberAnswer, pick, query } from './build';
+import { closeTo, ownNumber } from './follow';
 import { assembleSolution, fmt, roundTo, tn, type Part, type Variant } from './model';
 
 type Kind = 'square' | 'cube' | 'quad';
@@ -197,6 +198,15 @@ export function q4Variant(seed: number): Variant {
         { tex: `\\frac{f(x_i)}{p(x_i)} = \\frac{f(x_i)}{f(x_i)/I} = I = ${tn(I)}\\ \\text{for every } i` },
         { tex: `\\langle I\\rangle = ${tn(importance)}\\ \\text{(zero variance)}` },
       ],
+    },
+  ];
+  imp.follow = [
+    {
+      from: ['exact'],
+      matches: (own, val) => {
+        const Is = ownNumber(own, 'exact');
+        return typeof Is === 'number' && Is !== 0 && closeTo(val, Is);
+      },
     },
   ];
   exact.tex = `I = ${iTex}`;

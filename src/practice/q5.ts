@@ -10,6 +10,7 @@
 import { Rng } from '../core/random';
 import { intersectRaySphere, type RaySphereCase, type RaySphereHit, type Vec3 } from '../core/geometry';
 import { choiceAnswer, intIn, numberAnswer, pick, query } from './build';
+import { closeTo, ownNumber } from './follow';
 import {
   assembleSolution,
   fmt,
@@ -17,6 +18,7 @@ import {
   tp,
   vecDisplay,
   vecValue,
+  type FollowRule,
   type Part,
   type SolutionStep,
   type Variant,
@@ -278,8 +280,73 @@ export function q5Variant(seed: number): Variant {
       steps: stepsB,
     },
   ];
-  const texOf = (x: number | null) => (x === null ? '\\text{none}' : tn(x));
   const byName = Object.fromEntries(answers.map((x) => [x.name, x]));
+  // follow-through from the student's own a, b, c, Δ and roots
+  type Own = Parameters<FollowRule['matches']>[0];
+  const N = (own: Own, n: string) => ownNumber(own, n);
+  const ownRoots = (own: Own): [number | null, number | null] | null => {
+    const A = N(own, 'a');
+    const B = N(own, 'b');
+    const Dd = N(own, 'discriminant');
+    if (typeof A !== 'number' || typeof B !== 'number' || typeof Dd !== 'number' || A === 0) return null;
+    if (Dd < 0) return [null, null];
+    const r0 = (-B - Math.sqrt(Dd)) / (2 * A);
+    const r1 = (-B + Math.sqrt(Dd)) / (2 * A);
+    return [Math.min(r0, r1), Math.max(r0, r1)];
+  };
+  byName.discriminant.follow = [
+    {
+      from: ['a', 'b', 'c'],
+      matches: (own, x) => {
+        const [A, B, C] = [N(own, 'a'), N(own, 'b'), N(own, 'c')];
+        return (
+          typeof A === 'number' &&
+          typeof B === 'number' &&
+          typeof C === 'number' &&
+          closeTo(x, B * B - 4 * A * C)
+        );
+      },
+    },
+  ];
+  byName.t0.follow = [
+    { from: ['a', 'b', 'discriminant'], matches: (own, x) => closeTo(x, ownRoots(own)?.[0]) },
+  ];
+  byName.t1.follow = [
+    { from: ['a', 'b', 'discriminant'], matches: (own, x) => closeTo(x, ownRoots(own)?.[1]) },
+  ];
+  byName['t-hit'].follow = [
+    {
+      from: ['t0', 't1'],
+      matches: (own, x) => {
+        const r = [N(own, 't0'), N(own, 't1')];
+        if (r.some((t) => t === undefined)) return false;
+        const ahead = r.filter((t): t is number => typeof t === 'number' && t >= 0);
+        return closeTo(x, ahead.length ? Math.min(...ahead) : null);
+      },
+    },
+  ];
+  byName.case.follow = [
+    {
+      from: ['discriminant', 't0', 't1'],
+      matches: (own, x) => {
+        const Dd = N(own, 'discriminant');
+        const r0 = N(own, 't0');
+        const r1 = N(own, 't1');
+        if (typeof Dd !== 'number' || r0 === undefined || r1 === undefined) return false;
+        let want: string;
+        if (Dd < 0) want = 'miss';
+        else if (Dd === 0) want = 'tangent';
+        else if (r0 === null || r1 === null) return false;
+        else {
+          const lo = Math.min(r0, r1);
+          const hi = Math.max(r0, r1);
+          want = lo >= 0 ? 'two-hits' : hi >= 0 ? 'inside' : 'behind';
+        }
+        return x === want;
+      },
+    },
+  ];
+  const texOf = (x: number | null) => (x === null ? '\\text{none}' : tn(x));
   byName.a.tex = `a = ${tn(a)}`;
   byName.b.tex = `b = ${tn(b)}`;
   byName.c.tex = `c = ${tn(cc)}`;

@@ -14,6 +14,7 @@ import { Rng } from '../core/random';
 import { patchSolidAngleApprox } from '../core/geometry';
 import { areaLightTerms, makeRectLight, type AreaLightSetup, type RectLight } from '../core/lights';
 import { intIn, numberAnswer, pick, query } from './build';
+import { closeTo, ownNumber } from './follow';
 import { assembleSolution, fmt, tn, vecDisplay, vecValue, type Part, type Variant } from './model';
 
 type V3 = [number, number, number];
@@ -255,6 +256,33 @@ export function q6Variant(seed: number): Variant {
           tex: `\\begin{aligned} \\langle L_o\\rangle &= \\frac{|A|}{N}\\sum_i f L\\,\\cos\\theta_i\\,\\frac{\\cos\\theta_{l,i}}{r_i^2} \\\\ &= \\frac{1}{${n}}\\,(${Array.from(terms, (t) => tn(t, 5)).join(' + ')}) \\\\ &= ${tn(estimate)} \\end{aligned}`,
         },
       ],
+    },
+  ];
+  // follow-through: dω from the student's own r and cos θ_l; the estimate with their own dω formula
+  answers[2].follow = [
+    {
+      from: ['r', 'cos-theta-l'],
+      matches: (own, x) => {
+        const r = ownNumber(own, 'r');
+        const c = ownNumber(own, 'cos-theta-l');
+        return typeof r === 'number' && typeof c === 'number' && r !== 0 && closeTo(x, (dA * c) / (r * r));
+      },
+    },
+  ];
+  const perPoint = (term: (q: (typeof pts)[number]) => number) =>
+    mean(pts.map((q) => A * f * P.L * q.cosT * term(q)));
+  const ownFormulas: [number, number][] = [
+    [dA / (g.r * g.r), perPoint((q) => 1 / q.r2)], // no cos θ_l
+    [(dA * g.cosL) / g.r, perPoint((q) => q.cosL / Math.sqrt(q.r2))], // r not squared
+    [(dA * g.cosRecv) / (g.r * g.r), perPoint((q) => q.cosT / q.r2)], // the receiver's cosine
+  ];
+  answers[3].follow = [
+    {
+      from: ['d-omega'],
+      matches: (own, x) => {
+        const w = ownNumber(own, 'd-omega');
+        return typeof w === 'number' && ownFormulas.some(([wv, ev]) => closeTo(w, wv) && closeTo(x, ev));
+      },
     },
   ];
   answers[0].tex = `r = ${tn(g.r)}`;
