@@ -4,8 +4,10 @@
  * Every expected value comes from the core's texture routines, the ones the texture scene uses:
  * nearestStencil, bilinearStencil + bilinearSteps (the key's c_u, c_l, c), sphericalUV, bilinear.
  *
- * Accepted convention: v′ = 1 − v (the key accepts it when stated): nearest, bilinear, sphere-v and
- * sphere-bilinear with the flip are checked as correct, with a note.
+ * Accepted convention: the grid read with v′ = 1 − v (the key accepts it when stated), only on the
+ * grid's v axis: nearest, bilinear and sphere-bilinear with the flip are correct, with a note, as long
+ * as every answer of the variant uses the same reading (session.ts names a mix). The sphere's
+ * v = θ/π is unambiguous and has no flipped form.
  * Classic mistakes: the division by the cell size missing (×Δ or ×Δ²), the weights swapped, the
  * lower-left node taken for the nearest, (u, v) not normalized by (2π, π), u = arctan(y/x) without
  * the quadrant (atan2).
@@ -101,13 +103,13 @@ export function q3Variant(seed: number): Variant {
   const noDiv =
     'The division by the cell size Δ = 1/(N − 1) is missing (the key deducts for it): each interpolation step is ((u₁ − u) t₀ + (u − u₀) t₁)/Δ.';
   const flipMsg =
-    'you read the grid with v′ = 1 − v (v = 0 on the top row). The key accepts this convention when it is stated; the exam’s has v = 0 at the bottom row.';
+    'you read the grid with v′ = 1 − v (v = 0 on the top row). The key accepts this convention when it is stated and used for every lookup; the exam’s has v = 0 at the bottom row.';
   const answers = {
     nearest: numberAnswer(
       'nearest',
       'nearest',
       near.value,
-      [{ value: nearF.value, message: flipMsg }],
+      [{ value: nearF.value, message: flipMsg, convention: 'v-flip' }],
       [
         {
           id: 'floor-not-round',
@@ -121,7 +123,7 @@ export function q3Variant(seed: number): Variant {
       'bilinear',
       'bilinear',
       bil,
-      [{ value: bilF, message: flipMsg }],
+      [{ value: bilF, message: flipMsg, convention: 'v-flip' }],
       [
         { id: 'no-cell-division', value: bil * d * d, message: noDiv },
         { id: 'no-cell-division', value: bil * d, message: noDiv },
@@ -167,12 +169,18 @@ export function q3Variant(seed: number): Variant {
       'sphere-v',
       'sphere v',
       sp.v,
-      [{ value: 1 - sp.v, message: flipMsg }],
+      [], // v = θ/π on the sphere is unambiguous: the grid's flipped reading does not apply here
       [
         {
           id: 'no-normalization',
           value: sp.theta,
           message: 'That is the angle θ = arccos(z/r) in radians: normalize by π, v = θ/π.',
+        },
+        {
+          id: 'flipped-v',
+          value: 1 - sp.v,
+          message:
+            'That is 1 − θ/π. On the sphere v = θ/π = arccos(z/r)/π is unambiguous: the flipped v′ = 1 − v the key accepts is a way of reading the grid, not of the sphere’s angle.',
         },
       ],
     ),
@@ -180,7 +188,7 @@ export function q3Variant(seed: number): Variant {
       'sphere-bilinear',
       'sphere bilinear',
       sBil,
-      [{ value: sBilF, message: flipMsg }],
+      [{ value: sBilF, message: flipMsg, convention: 'v-flip' }],
       [
         {
           id: 'no-normalization',
