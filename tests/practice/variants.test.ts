@@ -71,6 +71,8 @@ const REQUIRED: Record<string, string[]> = {
   q1: [
     'k/no-sin-jacobian',
     'k/missing-1-over-a',
+    'k/forgot-e0',
+    'p-phi/forgot-e0',
     'p-theta/inverted-jacobian',
     'p-theta/no-sin-jacobian',
     'p-phi/missing-1-over-a',
