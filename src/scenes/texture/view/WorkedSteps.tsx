@@ -117,6 +117,14 @@ export function WideMath({ tex, label }: { tex: string; label: string }) {
   );
 }
 
+/** `tex` as the lines of an aligned block. */
+export const aligned = (tex: string) => `\\begin{aligned}${tex}\\end{aligned}`;
+
+/** The bilinear steps at the sphere point, in the key's form. */
+export function SphereBilinear({ q, opts }: { q: Lookup; opts: LookupOptions }) {
+  return <WideMath label="Bilinear steps at the sphere point" tex={aligned(bilinearTex(q, opts))} />;
+}
+
 /** The nearest-neighbour steps (Q3a) for the current query. */
 export const NearestWorked = memo(function NearestWorked({
   grid,
