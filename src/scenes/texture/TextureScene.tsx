@@ -81,6 +81,7 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
     [params.align, params.vflip, params.wrap],
   );
   const range = useMemo(() => gridRange(grid), [grid]);
+  const shown = { grid, opts, range };
 
   // The timeline lives in <AnimationDriver>, which publishes its position to this store; only the
   // components that draw the moving query subscribe to it (see ./view/anim), so a frame does not
@@ -164,9 +165,7 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
         <div className="tx-figure-main">
           <AnimGrid
             ctx={ctx}
-            grid={grid}
-            opts={opts}
-            range={range}
+            {...shown}
             onMove={onMove}
             editing={editing}
             selected={selected}
@@ -218,9 +217,7 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
           setParams={setParams}
           sphere={sphere}
           src={src}
-          grid={grid}
-          opts={opts}
-          range={range}
+          {...shown}
           present={mode.present}
         />
       </ExamQuestion>

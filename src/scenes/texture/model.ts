@@ -36,6 +36,13 @@ import { GRID_TEXT_MAX, type PathKind, type TextureSchema } from './params';
 
 export type TextureParams = ParamValues<TextureSchema>;
 
+/** A texture as the figures draw it: the grid, the lookup conventions, and the range of its values. */
+export interface ShownTexture {
+  grid: TextureGrid;
+  opts: LookupOptions;
+  range: { min: number; max: number };
+}
+
 /** Where the grid came from, and what went wrong if the `grid` text could not be used. */
 export interface GridSource {
   grid: TextureGrid;

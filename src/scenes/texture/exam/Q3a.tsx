@@ -5,22 +5,14 @@ import { KEY_PRINTED, lookupAt, queryReadouts } from '../model';
 import type { AnimContext } from '../view/anim';
 import { fmtShort } from '../view/GridView';
 import { NearestWorked } from '../view/WorkedSteps';
-import { keyNote, QueryPart, useStillQuery, useWorked, type QueryPartProps } from './shared';
+import { keyNote, queryPart, useStillQuery, useWorked } from './shared';
 
-export function Q3a(props: QueryPartProps) {
-  const { ctx } = props;
-  return (
-    <QueryPart
-      {...props}
-      id="3a"
-      title="Nearest neighbour"
-      asks={<>What value does nearest-neighbour lookup return at (u, v) = (0.4, 0.24)?</>}
-      worked={<WorkedNearest ctx={ctx} />}
-      answer={<Readouts3a ctx={ctx} />}
-      note={<KeyNote3a ctx={ctx} />}
-    />
-  );
-}
+export const Q3a = queryPart(
+  '3a',
+  'Nearest neighbour',
+  'What value does nearest-neighbour lookup return at (u, v) = (0.4, 0.24)?',
+  [WorkedNearest, Readouts3a, KeyNote3a],
+);
 
 function WorkedNearest({ ctx }: { ctx: AnimContext }) {
   const q = useDeferredValue(useWorked(ctx).frame.lookup);

@@ -5,22 +5,14 @@ import { KEY_PRINTED, agreesWithKey, isExamQuery, queryReadouts } from '../model
 import type { AnimContext } from '../view/anim';
 import { fmtShort } from '../view/GridView';
 import { BilinearWorked } from '../view/WorkedSteps';
-import { keyNote, QueryPart, useStillQuery, useWorked, type QueryPartProps } from './shared';
+import { keyNote, queryPart, useStillQuery, useWorked } from './shared';
 
-export function Q3b(props: QueryPartProps) {
-  const { ctx } = props;
-  return (
-    <QueryPart
-      {...props}
-      id="3b"
-      title="Bilinear"
-      asks={<>What value does bilinear interpolation give at (u, v) = (0.4, 0.24)?</>}
-      worked={<WorkedBilinear ctx={ctx} />}
-      answer={<Readouts3b ctx={ctx} />}
-      note={<KeyNote3b ctx={ctx} />}
-    />
-  );
-}
+export const Q3b = queryPart(
+  '3b',
+  'Bilinear',
+  'What value does bilinear interpolation give at (u, v) = (0.4, 0.24)?',
+  [WorkedBilinear, Readouts3b, KeyNote3b],
+);
 
 function WorkedBilinear({ ctx }: { ctx: AnimContext }) {
   const q = useDeferredValue(useWorked(ctx).frame.lookup);

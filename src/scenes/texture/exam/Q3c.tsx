@@ -5,7 +5,6 @@
  */
 import { memo, useCallback, useMemo } from 'react';
 import type { SceneProps } from '../../../kit/scene';
-import type { LookupOptions, TextureGrid } from '../../../core/texture';
 import {
   Derivation,
   ExamPart,
@@ -26,6 +25,7 @@ import {
   sphereAnglesDeg,
   sphereReadouts,
   type GridSource,
+  type ShownTexture,
   type SphereModel,
 } from '../model';
 import type { TextureSchema } from '../params';
@@ -34,16 +34,21 @@ import { SphereView } from '../view/SphereView';
 import { SphereBilinear, WideMath, aligned, sphereTex } from '../view/WorkedSteps';
 import { keyNote, texPlain } from './shared';
 
-type Props = Pick<SceneProps<TextureSchema>, 'params' | 'setParams'> & {
-  sphere: SphereModel;
-  src: GridSource;
-  grid: TextureGrid;
-  opts: LookupOptions;
-  range: { min: number; max: number };
-  present: boolean;
-};
+type Props = Pick<SceneProps<TextureSchema>, 'params' | 'setParams'> &
+  ShownTexture & {
+    sphere: SphereModel;
+    src: GridSource;
+    present: boolean;
+  };
 
-export const Q3c = memo(function Q3c({ params, setParams, sphere, src, grid, opts, range, present }: Props) {
+/** The angle sliders: a keyboard way to move the point on the sphere. */
+const ANGLES = [
+  { key: 'phi', label: 'Azimuth φ (moves the point)', max: 359.9 },
+  { key: 'theta', label: 'Polar angle θ (moves the point)', max: 180 },
+] as const;
+
+export const Q3c = memo(function Q3c({ params, setParams, sphere, src, present, ...shown }: Props) {
+  const { opts } = shown;
   const ro = useMemo(() => sphereReadouts(sphere), [sphere]);
   const examS = isExamSphere(src, opts, sphere);
   const dir = useMemo<[number, number, number] | null>(() => {
@@ -56,8 +61,8 @@ export const Q3c = memo(function Q3c({ params, setParams, sphere, src, grid, opt
   );
   // where the sphere point is, as angles (a keyboard path to "picking" a point on the sphere)
   const angles = sphereAnglesDeg(sphere);
-  const setAngles = (phi: number, theta: number) =>
-    setParams(pointAtAngles(sphere.ok ? sphere.r : 1, phi, theta));
+  const setAngles = (a: { phi: number; theta: number }) =>
+    setParams(pointAtAngles(sphere.ok ? sphere.r : 1, a.phi, a.theta));
   const n = params.normalize;
 
   return (
@@ -84,26 +89,19 @@ export const Q3c = memo(function Q3c({ params, setParams, sphere, src, grid, opt
               testId={`${k}-field`}
             />
           ))}
-          <Slider
-            label="Azimuth φ (moves the point)"
-            unit="°"
-            value={round4(angles.phi)}
-            min={0}
-            max={359.9}
-            step={0.1}
-            onChange={(x) => setAngles(x, angles.theta)}
-            testId="phi-slider"
-          />
-          <Slider
-            label="Polar angle θ (moves the point)"
-            unit="°"
-            value={round4(angles.theta)}
-            min={0}
-            max={180}
-            step={0.1}
-            onChange={(x) => setAngles(angles.phi, x)}
-            testId="theta-slider"
-          />
+          {ANGLES.map(({ key, label, max }) => (
+            <Slider
+              key={key}
+              label={label}
+              unit="°"
+              value={round4(angles[key])}
+              min={0}
+              max={max}
+              step={0.1}
+              onChange={(x) => setAngles({ ...angles, [key]: x })}
+              testId={`${key}-slider`}
+            />
+          ))}
           <Toggle
             label="Normalize by (2π, π)"
             checked={n}
@@ -119,15 +117,7 @@ export const Q3c = memo(function Q3c({ params, setParams, sphere, src, grid, opt
           </button>
         </div>
         <div className="tx-sphere-fig">
-          <SphereView
-            grid={grid}
-            opts={opts}
-            range={range}
-            normalize={n}
-            dir={dir}
-            onPick={onPick}
-            height={present ? 420 : 320}
-          />
+          <SphereView {...shown} normalize={n} dir={dir} onPick={onPick} height={present ? 420 : 320} />
           <p className="tx-small">
             Click the sphere to pick a point, or use the angle sliders or the x, y, z fields.
           </p>

@@ -68,30 +68,32 @@ export interface QueryPartProps {
   toExam: () => void;
 }
 
-/** The frame of a part about the query: the not-the-exam line, the steps, the answer, the key's note. */
-export function QueryPart({
-  id,
-  title,
-  asks,
-  ctx,
-  toExam,
-  worked,
-  answer,
-  note,
-}: QueryPartProps & {
-  id: string;
-  title: string;
-  asks: ReactNode;
-  worked: ReactNode;
-  answer: ReactNode;
-  note: ReactNode;
-}) {
-  return (
-    <ExamPart id={id} title={title} asks={asks}>
-      <NotExam ctx={ctx} toExam={toExam} />
-      <Derivation testId={`derivation-${id}`}>{worked}</Derivation>
-      <LiveAnswer testId={`answer-${id}`}>{answer}</LiveAnswer>
-      <KeyNote testId={`keynote-${id}`}>{note}</KeyNote>
-    </ExamPart>
-  );
+type PartBody = (props: { ctx: AnimContext }) => ReactNode;
+
+/**
+ * An exam part about the query, (a) or (b): the not-the-exam line, then its worked steps, its live
+ * answer and the key's note, each a component of the animation context.
+ */
+export function queryPart(
+  id: string,
+  title: string,
+  asks: string,
+  [Worked, Answer, Note]: readonly [PartBody, PartBody, PartBody],
+) {
+  return function QueryPart({ ctx, toExam }: QueryPartProps) {
+    return (
+      <ExamPart id={id} title={title} asks={asks}>
+        <NotExam ctx={ctx} toExam={toExam} />
+        <Derivation testId={`derivation-${id}`}>
+          <Worked ctx={ctx} />
+        </Derivation>
+        <LiveAnswer testId={`answer-${id}`}>
+          <Answer ctx={ctx} />
+        </LiveAnswer>
+        <KeyNote testId={`keynote-${id}`}>
+          <Note ctx={ctx} />
+        </KeyNote>
+      </ExamPart>
+    );
+  };
 }

@@ -33,24 +33,18 @@ export const Controls = memo(function Controls({ params, setParams, grid, isExam
   return (
     <>
       <Panel title="Query point and path" className="tx-panel-query">
-        <Slider
-          label="u (the query at t = 0)"
-          value={params.u}
-          min={-2}
-          max={3}
-          step={0.001}
-          onChange={(x) => setParams({ u: x })}
-          testId="u-slider"
-        />
-        <Slider
-          label="v (the query at t = 0)"
-          value={params.v}
-          min={-2}
-          max={3}
-          step={0.001}
-          onChange={(x) => setParams({ v: x })}
-          testId="v-slider"
-        />
+        {(['u', 'v'] as const).map((k) => (
+          <Slider
+            key={k}
+            label={`${k} (the query at t = 0)`}
+            value={params[k]}
+            min={-2}
+            max={3}
+            step={0.001}
+            onChange={(x) => setParams({ [k]: x })}
+            testId={`${k}-slider`}
+          />
+        ))}
         <p className="tx-small">
           Or click / drag on the grid; with the grid focused, arrow keys move the query (Shift: by 0.1).
         </p>

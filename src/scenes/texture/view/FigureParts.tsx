@@ -77,24 +77,18 @@ export function PathEnd({ params, setParams }: { params: Params; setParams: SetP
   return (
     <div className="tx-path-end">
       <span>Path end</span>
-      <NumberField
-        label="u₂"
-        value={params.u2}
-        min={-4}
-        max={4}
-        step={0.01}
-        onChange={(x) => setParams({ u2: x })}
-        testId="u2-field"
-      />
-      <NumberField
-        label="v₂"
-        value={params.v2}
-        min={-4}
-        max={4}
-        step={0.01}
-        onChange={(x) => setParams({ v2: x })}
-        testId="v2-field"
-      />
+      {(['u2', 'v2'] as const).map((k) => (
+        <NumberField
+          key={k}
+          label={k === 'u2' ? 'u₂' : 'v₂'}
+          value={params[k]}
+          min={-4}
+          max={4}
+          step={0.01}
+          onChange={(x) => setParams({ [k]: x })}
+          testId={`${k}-field`}
+        />
+      ))}
     </div>
   );
 }

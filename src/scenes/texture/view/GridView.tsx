@@ -23,7 +23,7 @@ import {
 } from 'react';
 import { nodeCoord, type LookupOptions, type TextureGrid } from '../../../core/texture';
 import { darkTextOn, normalizeValue } from '../colormap';
-import { pathPoint, textureImage, type Lookup, type QueryPath } from '../model';
+import { pathPoint, textureImage, type Lookup, type QueryPath, type ShownTexture } from '../model';
 
 const VB = 1000; // viewBox size of the plotted window
 /** Smallest on-screen size of any text in the figure, in CSS pixels (issue 11: ≥ 12 px on phones). */
@@ -46,10 +46,7 @@ export function viewWindow(grid: TextureGrid, opts: LookupOptions): ViewWindow {
 /** Which thing a pointer or key moves: the path's start (u, v), its end (u2, v2), or the query itself. */
 export type Grab = 'a' | 'b' | 'query';
 
-interface Props {
-  grid: TextureGrid;
-  opts: LookupOptions;
-  range: { min: number; max: number };
+interface Props extends ShownTexture {
   /** The lookup drawn (from {@link drawnLookup}). */
   q: Lookup;
   /** The query's path in the user's (u, v) (drawn in the texture frame). */
@@ -379,17 +376,7 @@ function sy(v: number, win: ViewWindow): number {
 }
 
 /** Nearest-neighbour regions as an image (outside [0, 1]² dimmed by the SVG layer). */
-const BaseCanvas = memo(function BaseCanvas({
-  grid,
-  opts,
-  range,
-  win,
-}: {
-  grid: TextureGrid;
-  opts: LookupOptions;
-  range: { min: number; max: number };
-  win: ViewWindow;
-}) {
+const BaseCanvas = memo(function BaseCanvas({ grid, opts, range, win }: ShownTexture & { win: ViewWindow }) {
   const ref = useRef<HTMLCanvasElement>(null);
   useEffect(() => {
     const c = ref.current;
@@ -416,13 +403,7 @@ const StaticLayer = memo(function StaticLayer({
   range,
   win,
   unitsPerPx,
-}: {
-  grid: TextureGrid;
-  opts: LookupOptions;
-  range: { min: number; max: number };
-  win: ViewWindow;
-  unitsPerPx: number;
-}) {
+}: ShownTexture & { win: ViewWindow; unitsPerPx: number }) {
   const W = grid.width;
   const H = grid.height;
   const nmax = Math.max(W, H);
@@ -530,14 +511,7 @@ const LabelLayer = memo(function LabelLayer({
   win,
   present,
   unitsPerPx,
-}: {
-  grid: TextureGrid;
-  opts: LookupOptions;
-  range: { min: number; max: number };
-  win: ViewWindow;
-  present: boolean;
-  unitsPerPx: number;
-}) {
+}: ShownTexture & { win: ViewWindow; present: boolean; unitsPerPx: number }) {
   const W = grid.width;
   const H = grid.height;
   const nmax = Math.max(W, H);
