@@ -319,7 +319,7 @@ export function isExamQuery(src: GridSource, opts: LookupOptions, u: number, v: 
 }
 
 // ---------------------------------------------------------------------------------------------
-// The animation (issue 12): the query point travels a path; everything on screen at position t is
+// The animation: the query point travels a path; everything on screen at position t is
 // a function of the parameters and t computed here.
 
 /** The query's path: a line from a to b, or the circle with a and b as the ends of a diameter. */

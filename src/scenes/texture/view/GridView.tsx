@@ -26,7 +26,7 @@ import { darkTextOn, normalizeValue } from '../colormap';
 import { pathPoint, textureImage, type Lookup, type QueryPath, type ShownTexture } from '../model';
 
 const VB = 1000; // viewBox size of the plotted window
-/** Smallest on-screen size of any text in the figure, in CSS pixels (issue 11: ≥ 12 px on phones). */
+/** Smallest on-screen size of any text in the figure, in CSS pixels (at least 12 px on phones). */
 const MIN_TEXT_PX = 12.5;
 /** Radius of a handle's hit area in CSS pixels (a ≥ 24 px target on touch screens). */
 const HANDLE_HIT_PX = 20;
@@ -86,7 +86,7 @@ export function GridView({
   const markerRef = useRef<SVGGElement>(null);
   const stencilRef = useRef<SVGGElement>(null);
   if (drawRef) {
-    // per-frame drawing of the moving query without React (see ../anim.tsx)
+    // per-frame drawing of the moving query without React (see ./anim.ts)
     drawRef.current = (dq: Lookup) => {
       const m = markerRef.current;
       if (m) m.setAttribute('transform', `translate(${sx(dq.bil.u, win)} ${sy(dq.bil.v, win)})`);
