@@ -5,7 +5,7 @@
  * cache that the animated parts share (it must return exactly the model's frame at t).
  */
 import { describe, expect, it } from 'vitest';
-import { animContext } from '../../../src/scenes/texture/anim';
+import { animContext } from '../../../src/scenes/texture/view/anim';
 import {
   createAnimationStore as createTimelineStore,
   heldPosition as workedPosition,

@@ -1,10 +1,10 @@
 /**
- * The looked-up value along the query's path (issue 12), under the grid: nearest as a step
+ * The looked-up value along the query's path, under the grid: nearest as a step
  * function, bilinear as a continuous curve with its cell borders marked (solid where the slope
  * changes, a kink; dotted where it does not), and the current position. Drawn in CSS pixels (the
  * SVG is as wide as its box), so text stays at its stated size on phones. The curves are memoized
  * on the profile; only the position marker re-renders per animation frame. Until the profile is
- * computed (a task after the page's first render, issue 15) the figure keeps its size, empty.
+ * computed (a task after the page's first render, so loading has no long task) the figure keeps its size, empty.
  */
 import { memo, useMemo, useRef } from 'react';
 import { useWidth } from '../../../ui/useWidth';

@@ -10,10 +10,9 @@
  * while paused; the worked steps (KaTeX) render at the still position too: typesetting them costs
  * several frames' worth of time at once, so none of it happens mid-play.
  */
-import { lastValue, type AnimationStore } from '../../ui';
-import { drawnLookup, frameAt, type Frame, type Lookup, type QueryPath } from './model';
-import type { GridSource } from './model';
-import type { LookupOptions, TextureGrid } from '../../core/texture';
+import { lastValue, type AnimationStore } from '../../../ui';
+import { drawnLookup, frameAt, type Frame, type GridSource, type Lookup, type QueryPath } from '../model';
+import type { LookupOptions, TextureGrid } from '../../../core/texture';
 
 /** Seconds for one pass along the path at 1×. */
 export const DURATION = 8;
