@@ -53,8 +53,6 @@ import {
   animationLength,
   buildModel,
   estimateOne,
-  floorJob,
-  floorPassAt,
   givenSamples,
   patchModel,
   sampleRun,
@@ -62,6 +60,7 @@ import {
   type AreaLightModel,
   type StrategyEstimate,
 } from './model';
+import { floorJob, floorPassAt } from './floor';
 import { PRESETS, schema, type AreaLightParams } from './params';
 import { RunningEstimate } from './view/RunningEstimate';
 import { Scene3D } from './view/Scene3D';

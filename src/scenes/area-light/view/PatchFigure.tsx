@@ -7,7 +7,7 @@
  * Drawn to scale (one scale for r, the unit radius and the patch) whenever that fits; otherwise the
  * figure says which length is not to scale. The numbers come from the model (PatchModel).
  */
-import type { PatchModel } from '../model';
+import type { PatchModel } from '../patch';
 
 const W = 560;
 const H = 260;

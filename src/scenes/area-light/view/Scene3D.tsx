@@ -9,7 +9,8 @@ import { useEffect, useEffectEvent, useRef } from 'react';
 import type * as THREE from 'three';
 import { Viewport, type ViewportContext } from '../../../three';
 import type { LightStrategy, Vec3 } from '../../../core/lights';
-import type { AreaLightModel, PatchModel } from '../model';
+import type { AreaLightModel } from '../model';
+import type { PatchModel } from '../patch';
 
 export interface Scene3DProps {
   model: AreaLightModel;
