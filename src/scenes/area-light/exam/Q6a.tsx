@@ -4,20 +4,44 @@
  * exact solid angle of the patch as it shrinks.
  */
 import { memo, useMemo } from 'react';
-import {
-  Derivation,
-  ExamPart,
-  LiveAnswer,
-  MathTex,
-  Plot,
-  Readout,
-  Slider,
-  type PlotTrace,
-} from '../../../ui';
+import { Derivation, ExamPart, LiveAnswer, MathTex, Plot, Readout, type PlotTrace } from '../../../ui';
 import type { PatchModel } from '../patch';
 import type { AreaLightParams } from '../params';
 import { fmt } from '../view/format';
 import { PatchFigure } from '../view/PatchFigure';
+import { SliderList, type SliderSpec } from '../view/SliderList';
+
+type PatchValues = Pick<AreaLightParams, 'pu' | 'pv' | 'psize' | 'ptilt'>;
+
+/** Where the patch sits on the light, its side and its tilt. */
+const PATCH_SLIDERS: readonly SliderSpec<PatchValues>[] = [
+  {
+    label: 'Patch position u on the light',
+    min: 0,
+    max: 1,
+    step: 0.01,
+    get: (v) => v.pu,
+    patch: (pu) => ({ pu }),
+  },
+  {
+    label: 'Patch position v on the light',
+    min: 0,
+    max: 1,
+    step: 0.01,
+    get: (v) => v.pv,
+    patch: (pv) => ({ pv }),
+  },
+  { label: 'Patch side', min: 0.001, max: 2, log: true, get: (v) => v.psize, patch: (psize) => ({ psize }) },
+  {
+    label: 'Patch tilt θ_l (relative to the light)',
+    min: -89,
+    max: 89,
+    step: 1,
+    unit: '°',
+    get: (v) => v.ptilt,
+    patch: (ptilt) => ({ ptilt }),
+  },
+];
 
 export const Q6a = memo(function Q6a({
   patch,
@@ -113,39 +137,7 @@ export const Q6a = memo(function Q6a({
         <div className="al-6a-figure">
           <PatchFigure patch={patch} />
           <div className="al-patch-controls">
-            <Slider
-              label="Patch position u on the light"
-              value={pu}
-              min={0}
-              max={1}
-              step={0.01}
-              onChange={(x) => set({ pu: x })}
-            />
-            <Slider
-              label="Patch position v on the light"
-              value={pv}
-              min={0}
-              max={1}
-              step={0.01}
-              onChange={(x) => set({ pv: x })}
-            />
-            <Slider
-              label="Patch side"
-              value={psize}
-              min={0.001}
-              max={2}
-              log
-              onChange={(x) => set({ psize: x })}
-            />
-            <Slider
-              label="Patch tilt θ_l (relative to the light)"
-              value={ptilt}
-              min={-89}
-              max={89}
-              step={1}
-              unit="°"
-              onChange={(x) => set({ ptilt: x })}
-            />
+            <SliderList specs={PATCH_SLIDERS} values={{ pu, pv, psize, ptilt }} set={set} />
           </div>
         </div>
         <LiveAnswer

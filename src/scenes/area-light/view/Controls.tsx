@@ -5,10 +5,42 @@
 import { memo } from 'react';
 import type { Vec3 } from '../../../core/lights';
 import { NumberField, Panel, Select, Slider, Toggle } from '../../../ui';
+import { SliderList, type SliderSpec } from './SliderList';
 import { PRESETS, type AreaLightParams } from '../params';
 import { STRATEGIES, STRATEGY_LABEL } from '../strategies';
 
 const AXES = ['x', 'y', 'z'] as const;
+
+/** The light's size, tilt and radiance and the floor's albedo. */
+const LIGHT_SLIDERS: readonly SliderSpec<AreaLightParams>[] = [
+  {
+    label: 'Width w',
+    min: 0,
+    max: 10,
+    step: 0.05,
+    get: (p) => p.ls?.[0] ?? 1,
+    patch: (x, p) => ({ ls: [x, p.ls?.[1] ?? 1] }),
+  },
+  {
+    label: 'Height h',
+    min: 0,
+    max: 10,
+    step: 0.05,
+    get: (p) => p.ls?.[1] ?? 1,
+    patch: (x, p) => ({ ls: [p.ls?.[0] ?? 1, x] }),
+  },
+  {
+    label: 'Tilt about x',
+    min: -180,
+    max: 180,
+    step: 1,
+    unit: '°',
+    get: (p) => p.tilt,
+    patch: (tilt) => ({ tilt }),
+  },
+  { label: 'Radiance L', min: 0, max: 10, step: 0.1, get: (p) => p.L, patch: (L) => ({ L }) },
+  { label: 'Albedo ρ', min: 0, max: 1, step: 0.01, get: (p) => p.rho, patch: (rho) => ({ rho }) },
+];
 
 /** Three number fields for a vector parameter (test ids `<testId>-x`, `-y`, `-z`). */
 function VecField({
@@ -109,47 +141,7 @@ export const Controls = memo(function Controls({
       </Panel>
       <Panel title="Light and floor">
         <VecField label="Light centre" testId="lc" value={params.lc} onChange={(v) => set({ lc: v })} />
-        <Slider
-          label="Width w"
-          value={params.ls?.[0] ?? 1}
-          min={0}
-          max={10}
-          step={0.05}
-          onChange={(x) => set({ ls: [x, params.ls?.[1] ?? 1] })}
-        />
-        <Slider
-          label="Height h"
-          value={params.ls?.[1] ?? 1}
-          min={0}
-          max={10}
-          step={0.05}
-          onChange={(x) => set({ ls: [params.ls?.[0] ?? 1, x] })}
-        />
-        <Slider
-          label="Tilt about x"
-          value={params.tilt}
-          min={-180}
-          max={180}
-          step={1}
-          unit="°"
-          onChange={(x) => set({ tilt: x })}
-        />
-        <Slider
-          label="Radiance L"
-          value={params.L}
-          min={0}
-          max={10}
-          step={0.1}
-          onChange={(x) => set({ L: x })}
-        />
-        <Slider
-          label="Albedo ρ"
-          value={params.rho}
-          min={0}
-          max={1}
-          step={0.01}
-          onChange={(x) => set({ rho: x })}
-        />
+        <SliderList specs={LIGHT_SLIDERS} values={params} set={set} />
         <VecField
           label="Shading point p (normal +z)"
           testId="p"

@@ -16,14 +16,27 @@ const COLORS: Record<LightStrategy, string> = {
   cosine: '#1d7a3a',
 };
 
-/** A log-log plot layout with its legend in a row above the plot. */
-function logLogLayout(x: string, y: string) {
-  return {
+/** A log-log plot with axis titles x and y and its legend in a row above the plot. */
+function LogLogPlot({
+  ariaLabel,
+  data,
+  height,
+  x,
+  y,
+}: {
+  ariaLabel: string;
+  data: PlotTrace[];
+  height: number;
+  x: string;
+  y: string;
+}) {
+  const layout = {
     xaxis: { type: 'log', title: { text: x } },
     yaxis: { type: 'log', title: { text: y } },
     legend: { orientation: 'h', x: 0, y: 1.02, yanchor: 'bottom' },
     margin: { l: 56, r: 16, t: 40, b: 44 },
   };
+  return <Plot ariaLabel={ariaLabel} data={data} height={height} layout={layout} />;
 }
 
 /** The three estimates at n samples each (null while they are computed), against the reference. */
@@ -128,11 +141,12 @@ export const ConvergencePanel = memo(function ConvergencePanel({
   return (
     <Panel title="Convergence">
       <div ref={seenRef} />
-      <Plot
+      <LogLogPlot
         ariaLabel="Absolute error and standard error of the three estimators against the number of samples, log-log."
         data={traces}
         height={present ? 380 : 300}
-        layout={logLogLayout('N (samples)', 'error')}
+        x="N (samples)"
+        y="error"
       />
       <p className="al-note">
         Solid: |estimate − reference|. Dotted: the standard error s/√N the estimator reports. Both fall like
@@ -182,11 +196,12 @@ export const TimingPanel = memo(function TimingPanel({
         {running ? <progress max={1} value={progress} aria-label="Timing progress" /> : null}
       </div>
       {error ? <Notice kind="warn">Timing failed: {error.message}</Notice> : null}
-      <Plot
+      <LogLogPlot
         ariaLabel="RMSE over independent runs against the run time of one estimate, for the three strategies, log-log."
         data={traces}
         height={present ? 360 : 280}
-        layout={logLogLayout('time per estimate (ms)', 'RMSE')}
+        x="time per estimate (ms)"
+        y="RMSE"
       />
       <p className="al-note">
         Each point: N = 16 … 4096 samples, RMSE over 24 independent runs, run time measured in a worker on
