@@ -6,21 +6,17 @@
  */
 import { estimateAreaLight, type AreaLightSetup, type LightStrategy } from '../../core/lights';
 import {
-  PASS_SPP,
   STRATEGIES,
   TIMING_COUNTS,
   TIMING_RUNS,
   buildModel,
   convergence,
   estimateAll,
-  floorPass,
-  imageRmse,
-  referenceImage,
   rmseOfRuns,
-  type FloorJob,
   type StrategyEstimate,
   type TimingPoint,
 } from './model';
+import { PASS_SPP, floorPass, imageRmse, referenceImage, type FloorJob } from './floor';
 import type { AreaLightParams } from './params';
 
 import { yieldToEventLoop as tick, type ProgressFn as Progress } from '../../workers/expose';

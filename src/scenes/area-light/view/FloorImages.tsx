@@ -7,7 +7,8 @@ import { useEffect, useRef } from 'react';
 import { useWorkerJob, workerFactory } from '../../../workers';
 import type { AreaLightTasks } from '../floor.worker';
 import { Readout, useSeenOnce } from '../../../ui';
-import { PASS_TOTAL, STRATEGIES, STRATEGY_LABEL, type FloorJob } from '../model';
+import { PASS_TOTAL, type FloorJob } from '../floor';
+import { STRATEGIES, STRATEGY_LABEL } from '../strategies';
 import type { FloorFrame } from '../jobs';
 
 const makeWorker = workerFactory<AreaLightTasks>(
