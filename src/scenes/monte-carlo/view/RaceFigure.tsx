@@ -22,6 +22,7 @@ import {
   writeReadout,
 } from '../../../ui';
 import { pow10Text } from '../../../ui/axis';
+import { clampExponent, fmt, linearScale, logScale, type Scale } from '../../../ui/chartScale';
 import {
   RACE_DURATION,
   RACE_MAX,
@@ -40,23 +41,16 @@ const PH = H - M.t - M.b;
 const C_U = 'var(--accent-2)';
 const C_I = 'var(--accent)';
 
-type Scale = (v: number) => number;
-const lin =
-  (d0: number, d1: number, r0: number, r1: number): Scale =>
-  (v) =>
-    r0 + ((v - d0) / (d1 - d0 || 1)) * (r1 - r0);
-const logS = (d0: number, d1: number, r0: number, r1: number): Scale => {
-  const l0 = Math.log10(d0);
-  const l1 = Math.log10(d1);
-  return (v) => r0 + ((Math.log10(v) - l0) / (l1 - l0 || 1)) * (r1 - r0);
-};
+// the shared chart guard: every coordinate finite, for any data (../../../ui/chartScale)
+const lin = linearScale;
+const logS = logScale;
 
 function path(xs: readonly number[], ys: readonly number[], sx: Scale, sy: Scale, from = 0): string {
   let d = '';
   for (let k = from; k < xs.length; k++) {
     const y = ys[k];
     if (!Number.isFinite(y)) continue;
-    d += `${d ? 'L' : 'M'}${sx(xs[k]).toFixed(1)},${sy(y).toFixed(1)}`;
+    d += `${d ? 'L' : 'M'}${fmt(sx(xs[k]))},${fmt(sy(y))}`;
   }
   return d;
 }
@@ -268,15 +262,16 @@ export const RaceFigure = memo(function RaceFigure({
     const nt: [number, string][] = N_TICKS.map((n) => [ex(n), String(n)]);
     const et: [number, string][] = [-1, 0, 1].map((q) => [ey(I + q * R), formatNumber(I + q * R, 4)]);
     // |error| log-log: from 10⁻⁵·|I| to |I| (smaller errors sit on the floor line)
-    const e0 = Math.floor(Math.log10(s)) - 5;
-    const e1 = Math.ceil(Math.log10(s)) + 0;
+    // (decades of a subnormal |I| stop at 10⁻³²³, the smallest power of ten a double holds)
+    const e1 = clampExponent(Math.ceil(Math.log10(s)));
+    const e0 = clampExponent(Math.min(e1 - 1, Math.floor(Math.log10(s)) - 5));
     const ly = logS(10 ** e0, 10 ** e1, M.t + PH, M.t);
     const lt: [number, string][] = [];
     for (let e = e0; e <= e1; e += e1 - e0 > 4 ? 2 : 1) lt.push([ly(10 ** e), pow10Text(e)]);
     // N^−½ guide through the uniform lane's final standard deviation: sd/√N is the expected error scale
     const last = track.max - 1;
     const sd = Math.sqrt(track.uniform.m2[last] / Math.max(1, last));
-    const guide = `M${ex(1).toFixed(1)},${ly(Math.max(sd, 10 ** e0)).toFixed(1)}L${ex(track.max).toFixed(1)},${ly(Math.max(sd / Math.sqrt(track.max), 10 ** e0)).toFixed(1)}`;
+    const guide = `M${fmt(ex(1))},${fmt(ly(Math.max(sd, 10 ** e0)))}L${fmt(ex(track.max))},${fmt(ly(Math.max(sd / Math.sqrt(track.max), 10 ** e0)))}`;
     return { sx, sy, fPath, pPath, xt, yt, ex, ey, nt, et, ly, lt, floor: 10 ** e0, guide, R };
   }, [track, curve, a, b, I, s]);
 
@@ -461,7 +456,7 @@ export function raceCurves(
 ) {
   const { ex, ey, ly, floor, R } = fig;
   const clampY = (v: number) => Math.max(I - R, Math.min(I + R, v));
-  const xy = (n: number, y: number) => `${ex(n).toFixed(1)},${y.toFixed(1)}`;
+  const xy = (n: number, y: number) => `${fmt(ex(n))},${fmt(y)}`;
   type Seg = { err: string | null; est: string | null; up: string | null; dn: string | null };
   const seg = (s: LaneState): Seg => {
     const n = s.n;
@@ -559,7 +554,7 @@ function rugPaths(xs: number[], y: number): string[] {
   const off = RECENT - xs.length;
   for (let j = 0; j < xs.length; j++) {
     const b = Math.min(RUG_BUCKETS - 1, Math.floor(((j + off) * RUG_BUCKETS) / RECENT));
-    out[b] += `M${xs[j].toFixed(1)},${y}v7`;
+    out[b] += `M${fmt(xs[j])},${fmt(y)}v7`;
   }
   return out;
 }

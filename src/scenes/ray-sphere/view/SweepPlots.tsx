@@ -9,6 +9,7 @@ import { memo, useLayoutEffect, useMemo, useRef, type ReactNode } from 'react';
 import type { RaySphereCase, RaySphereHit } from '../../../core/geometry';
 import type { SweepSeries } from '../model';
 import { useWidth } from '../../../ui/useWidth';
+import { linearScale } from '../../../ui/chartScale';
 import { useSectionWidth } from '../../../ui/Deferred';
 import { niceTicks, tickLabel } from '../../../ui/axis';
 
@@ -37,8 +38,9 @@ function makeFrame(
   const x1 = W - PAD.r;
   const y0 = padTop;
   const y1 = H - padBottom;
-  const X = (x: number) => x0 + ((x - xd[0]) / (xd[1] - xd[0])) * (x1 - x0);
-  const Y = (y: number) => y1 - ((y - yd[0]) / (yd[1] - yd[0])) * (y1 - y0);
+  // the shared chart guard: finite coordinates for any data (../../../ui/chartScale)
+  const X = linearScale(xd[0], xd[1], x0, x1);
+  const Y = linearScale(yd[0], yd[1], y1, y0);
   return { W, H, X, Y, x0, x1, y0, y1 };
 }
 
