@@ -1,5 +1,5 @@
 /**
- * The animation of Q4 (issue 12): samples arrive one by one on the shared timeline (t = samples
+ * The animation of Q4: samples arrive one by one on the shared timeline (t = samples
  * drawn so far). Each xᵢ drops onto the integrand, its term f(xᵢ)/p(xᵢ) appears, and the running
  * estimate with its ± standard-error band and the |error| log-log curve grow with it — uniform and
  * importance sampling side by side, on the same random numbers ξᵢ. Everything at position t comes
@@ -408,30 +408,42 @@ export const RaceFigure = memo(function RaceFigure({
             <path ref={setPath('iErr')} d={g.iErr} style={{ stroke: C_I }} className="mc-svg-line" />
           </svg>
         </figure>
-        <Lane id="uniform" name="Uniform, p = 1/(b − a)" color={C_U} r={laneU}>
-          <svg
-            viewBox={`0 0 ${W} ${H}`}
-            role="img"
-            aria-label="Running estimate of the uniform estimator with its ± standard-error band, against N on a log axis"
-          >
-            <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
-            <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
-            <path ref={setPath('uBand')} d={g.uBand} style={{ fill: C_U }} className="mc-svg-band" />
-            <path ref={setPath('uEst')} d={g.uEst} style={{ stroke: C_U }} className="mc-svg-line" />
-          </svg>
-        </Lane>
-        <Lane id="importance" name={`Importance, ${importanceLabel}`} color={C_I} r={laneI}>
-          <svg
-            viewBox={`0 0 ${W} ${H}`}
-            role="img"
-            aria-label="Running estimate of the importance-sampling estimator with its ± standard-error band, against N on a log axis"
-          >
-            <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
-            <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
-            <path ref={setPath('iBand')} d={g.iBand} style={{ fill: C_I }} className="mc-svg-band" />
-            <path ref={setPath('iEst')} d={g.iEst} style={{ stroke: C_I }} className="mc-svg-line" />
-          </svg>
-        </Lane>
+        {(
+          [
+            ['uniform', 'Uniform, p = 1/(b − a)', C_U, laneU, 'uniform estimator', 'u'],
+            [
+              'importance',
+              `Importance, ${importanceLabel}`,
+              C_I,
+              laneI,
+              'importance-sampling estimator',
+              'i',
+            ],
+          ] as const
+        ).map(([id, name, color, refs, what, k]) => (
+          <Lane key={id} id={id} name={name} color={color} r={refs}>
+            <svg
+              viewBox={`0 0 ${W} ${H}`}
+              role="img"
+              aria-label={`Running estimate of the ${what} with its ± standard-error band, against N on a log axis`}
+            >
+              <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
+              <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
+              <path
+                ref={setPath(`${k}Band`)}
+                d={g[`${k}Band`]}
+                style={{ fill: color }}
+                className="mc-svg-band"
+              />
+              <path
+                ref={setPath(`${k}Est`)}
+                d={g[`${k}Est`]}
+                style={{ stroke: color }}
+                className="mc-svg-line"
+              />
+            </svg>
+          </Lane>
+        ))}
       </div>
       <p className="mc-note">
         Blue: uniform; orange: importance (its pdf dashed on f). Dashed line: the exact I ={' '}
