@@ -42,7 +42,7 @@ export interface InputCheck {
   problems: string[];
 }
 
-const DEFAULT_D = schema.d.default as unknown as V3;
+const DEFAULT_D: V3 = [...schema.d.default];
 
 /**
  * Replace inputs that do not describe a ray and a sphere by safe values, saying why:
@@ -79,7 +79,7 @@ export function checkInputs(p: Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r'>): In
         ? `The direction d = (0, 0, 0) points nowhere, so the ray has no t; using d = (${DEFAULT_D.join(', ')}).`
         : `The direction d is too short to square in double precision (d·d underflows to 0); using d = (${DEFAULT_D.join(', ')}).`,
     );
-    d = [...DEFAULT_D] as V3;
+    d = [...DEFAULT_D];
   }
   return { o, d, c, r, problems };
 }
@@ -135,7 +135,7 @@ export function computeModel(p: Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r' | 'm
       caseRight: res.case === ref.case,
     });
   }
-  const chosen = rows.find((row) => row.method === (p.method === 'naive' ? 'naive' : 'stable'))!.res;
+  const chosen = rows.find((row) => row.method === p.method)!.res;
   return { input, chosen, rows, reference: ref, fatal: null, distanceRatio };
 }
 
@@ -436,7 +436,7 @@ function range(a: number, b: number, step: number): number[] {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The sweep animation (issue 12): the ray moves across the sphere as the timeline's t goes 0 → 1.
+// The sweep animation: the ray moves across the sphere as the timeline's t goes 0 → 1.
 // Everything on screen at position t is a pure function of the parameters and t.
 
 export type SweepMode = 'offset' | 'rotate';
@@ -592,7 +592,7 @@ export function sweepSeries(p: Pick<RaySphereParams, 'method'>, sw: Sweep, n = 2
     gWindow: { tMin: 0, tMax: 1, gMin: -1, gMax: 1, shift: 0 },
   };
   const { c, r } = sw.base;
-  const method = p.method === 'naive' ? 'naive' : 'stable';
+  const method = p.method;
   let lo = Infinity;
   let hi = -Infinity;
   const tvs: number[] = [];

@@ -38,6 +38,9 @@ export interface CrossSectionProps {
 /** What moves while a sweep plays. */
 export type CrossRay = Pick<CrossSectionProps, 'o' | 'd' | 'c' | 'r' | 'res' | 'distanceRatio'>;
 
+/** Each coordinate rounded to `step` (see tidy). */
+const tidyVec = (q: V3, step: number): V3 => [tidy(q[0], step), tidy(q[1], step), tidy(q[2], step)];
+
 /** Above this |o − c| / r the view centres on the sphere and leaves the origin off screen. */
 const FAR = 60;
 
@@ -323,7 +326,7 @@ export function CrossSection({
   const apply = (target: Target, x: number, y: number) => {
     const g = cur();
     const { fr, O2, C2, dl, v, step } = g;
-    const t = (q: V3) => q.map((z) => tidy(z, step)) as V3;
+    const t = (q: V3) => tidyVec(q, step);
     if (target === 'o') onChange({ o: t(fromFrame(fr, x, y)) });
     else if (target === 'c') onChange({ c: t(fromFrame(fr, x, y)) });
     else if (target === 'r') {
@@ -336,7 +339,7 @@ export function CrossSection({
       if (n < 4 * v.s) return;
       const w = dirFromFrame(fr, (vx / n) * dl, (vy / n) * dl);
       const ds = 10 ** Math.floor(Math.log10(dl / 500));
-      const nd = w.map((z) => tidy(z, ds)) as V3;
+      const nd = tidyVec(w, ds);
       if (nd.some((z) => z !== 0)) onChange({ d: nd });
     }
   };

@@ -146,7 +146,7 @@ const HOLE: [number, number, number] = [255, 45, 149];
 export function DistantImages() {
   const [exp, setExp] = useState(7.5);
   const dist = 10 ** exp;
-  // computed once the panel comes near the screen (it is under "explore further"; issue 15)
+  // computed once the panel comes near the screen (it is under "explore further")
   const box = useRef<HTMLDivElement>(null);
   const seen = useSeenOnce(box);
   const img = useMemo(
@@ -237,7 +237,7 @@ export function ErrorVsDistance({
   current: number;
   here?: { naive: number | null; stable: number | null };
 }) {
-  // computed once the plot comes near the screen (it is under "explore further"; issue 15)
+  // computed once the plot comes near the screen (it is under "explore further")
   const box = useRef<HTMLDivElement>(null);
   const seen = useSeenOnce(box);
   const s = useMemo(() => (seen ? errorVsDistance() : null), [seen]);

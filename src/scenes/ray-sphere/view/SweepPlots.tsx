@@ -298,7 +298,7 @@ const DeltaStatic = memo(function DeltaStatic({
   });
   // the textbook Δ as dots: its rounding noise shows as scatter, its wrong signs as dots across 0.
   // Two paths of circles (right sign, wrong sign) rather than an element per sample: ~240 fewer
-  // SVG nodes to build, style and lay out when the page opens (issue 15).
+  // SVG nodes to build, style and lay out when the page opens.
   let dotsOk = '';
   let dotsWrong = '';
   let nWrong = 0;
