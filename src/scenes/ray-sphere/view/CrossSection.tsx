@@ -21,13 +21,17 @@ import {
   type V3,
 } from '../model';
 
-export interface CrossSectionProps {
+/** The ray and sphere a figure draws: the checked inputs, the chosen method's hit, |o − C| / r. */
+export interface RayState {
   o: V3;
   d: V3;
   c: V3;
   r: number;
   res: RaySphereHit | null;
   distanceRatio: number;
+}
+
+export interface CrossSectionProps extends RayState {
   onChange: (patch: { o?: V3; d?: V3; c?: V3; r?: number }) => void;
   /** More points to keep in view (e.g. the ends of a sweep), so the view does not jump while animating. */
   fitExtra?: readonly V3[];
@@ -36,7 +40,7 @@ export interface CrossSectionProps {
 }
 
 /** What moves while a sweep plays. */
-export type CrossRay = Pick<CrossSectionProps, 'o' | 'd' | 'c' | 'r' | 'res' | 'distanceRatio'>;
+export type CrossRay = RayState;
 
 /** Each coordinate rounded to `step` (see tidy). */
 const tidyVec = (q: V3, step: number): V3 => [tidy(q[0], step), tidy(q[1], step), tidy(q[2], step)];
