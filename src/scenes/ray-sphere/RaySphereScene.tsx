@@ -121,7 +121,7 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
   return (
     <div className="rs-page">
       {/* problems are those of the typed inputs (the sweep only moves already-checked values) */}
-      <InputNotices problems={base.problems} fatal={model.fatal} />
+      <InputNotices problems={base.failures} fatal={model.fatal} />
       <ExamQuestion n={5}>
         <ExamPart id="5" title="The quadratic, Δ ≥ 0 and t ≥ 0" asks={<Q5Asks />}>
           {/* Each block of the part mounts on its own (ui/Deferred: one at a time, a frame each, the

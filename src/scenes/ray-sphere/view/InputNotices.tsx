@@ -1,7 +1,8 @@
 /** What the page says when the typed inputs had to be replaced, or overflow even then. */
+import type { Failure } from '../../../core/failure';
 import { Notice } from '../../../ui';
 
-export function InputNotices({ problems, fatal }: { problems: readonly string[]; fatal: string | null }) {
+export function InputNotices({ problems, fatal }: { problems: readonly Failure[]; fatal: string | null }) {
   return (
     <>
       {problems.length ? (
@@ -11,7 +12,9 @@ export function InputNotices({ problems, fatal }: { problems: readonly string[];
           </p>
           <ul>
             {problems.map((p) => (
-              <li key={p}>{p}</li>
+              <li key={p.message} data-kind={p.kind}>
+                {p.message}
+              </li>
             ))}
           </ul>
         </Notice>
