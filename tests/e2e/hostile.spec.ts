@@ -1,5 +1,5 @@
 /**
- * Hostile input, kept fixed (issue 17):
+ * Hostile input, kept fixed:
  *  - a URL corpus: every route × every parameter set to each hostile value (prototype names,
  *    empty, NaN, ±Infinity, 1e400, 100k characters, unicode/RTL marks, broken percent-escapes,
  *    wrong arity, deeply nested calls). Per value, all of a route's parameters get it at once
