@@ -410,6 +410,7 @@ function QuestionPage({
             onInput={(name, t) => setInputs((s) => ({ ...s, [name]: t }))}
             onHint={() => setSession((s) => showHint(s, part.id))}
             onReveal={() => setSession((s) => revealPart(s, part.id))}
+            stepsBelow={allShown}
           />
         ))}
         <div className="practice-actions">
@@ -512,6 +513,7 @@ function PartBlock({
   onInput,
   onHint,
   onReveal,
+  stepsBelow,
 }: {
   part: Part;
   progress: PartProgress;
@@ -520,6 +522,8 @@ function PartBlock({
   onInput: (name: string, text: string) => void;
   onHint: () => void;
   onReveal: () => void;
+  /** The whole worked solution is shown below the form: the part's step is not repeated here. */
+  stepsBelow: boolean;
 }) {
   const done = part.answers.every((a) => answers[a.name].verdict?.value === 'correct');
   const open = progress.revealed !== null || done;
@@ -570,7 +574,7 @@ function PartBlock({
           <strong>Hint:</strong> <SolutionSteps steps={part.hint} />
         </div>
       ) : null}
-      {open ? (
+      {open && !stepsBelow ? (
         <div className="part-solution" data-testid={`part-solution-${part.id}`}>
           <h3 className="part-solution-title">Worked step</h3>
           <SolutionSteps steps={part.steps} />
