@@ -253,9 +253,12 @@ test('progress is kept per question and can be reset; a bad seed is named and re
   await page.getByTestId('practice-link').click();
   await expect(page.getByTestId('progress-q4')).toHaveAttribute('data-correct', '1');
   await expect(page.getByTestId('progress-q4')).toContainText('1 variant tried, 1 fully correct');
+  await expect(page.getByTestId('best-q4')).toContainText('variant 21 100 %');
+  await expect(page.getByTestId('best-q1')).toHaveCount(0);
   await expect(page.getByTestId('progress-q1')).toHaveAttribute('data-attempted', '0');
   await page.getByTestId('reset-progress').click();
   await expect(page.getByTestId('progress-q4')).toHaveAttribute('data-attempted', '0');
+  await expect(page.getByTestId('best-q4')).toHaveCount(0);
   await page.goto('./#/practice/q2?seed=banana');
   await expect(page.getByTestId('param-notice')).toContainText('seed');
   await expect(page.getByTestId('variant-seed')).toHaveText(/^\d+$/);
