@@ -604,7 +604,7 @@ function verdictTag(value: string): string {
   if (value === 'correct') return '✓ correct';
   if (value === 'consistent') return '≈ follow-through';
   if (value.startsWith('mistake:')) return `✗ ${value}`;
-  if (value === 'invalid') return '? not readable';
+  if (value === 'invalid') return '? not graded';
   return '✗ incorrect';
 }
 
