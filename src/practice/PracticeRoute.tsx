@@ -38,10 +38,11 @@ import {
   type Session,
 } from './session';
 import { loadScores, recordScore, resetScores, type Scores } from './scores';
-import { QUESTIONS, isQuestionId, questionInfo, sheetSeed } from './questions';
+import { QUESTIONS, isQuestionId, questionInfo } from './questions';
 import { loadProgress, recordCheck, resetProgress, type Progress } from './progress';
 import { loadDraft, saveDraft } from './drafts';
 import { RouteNotice } from '../ui/RouteNotice';
+import Sheet from './Sheet';
 import './practice.css';
 
 interface Props {
@@ -105,13 +106,14 @@ function PracticeHome({ flags, query }: { flags: ShellFlags; query: string }) {
     () => Object.fromEntries(QUESTION_IDS.map((q) => [q, true])) as Record<QuestionId, boolean>,
   );
   const [count, setCount] = useState(1);
+  const [withSolutions, setWithSolutions] = useState(false);
   const [sheetSeedText, setSheetSeedText] = useState('1');
   useEffect(() => {
     document.title = 'Practice — Render Math Lab';
   }, []);
   const chosen = QUESTION_IDS.filter((q) => sheetQs[q]).map((q) => q.slice(1));
   const seedOk = /^\d{1,10}$/.test(sheetSeedText.trim()) && Number(sheetSeedText) <= MAX_SEED;
-  const sheetHref = `#/practice/sheet?seed=${seedOk ? Number(sheetSeedText) : 1}&q=${chosen.join(',') || '1'}&count=${count}${extras(flags)}`;
+  const sheetHref = `#/practice/sheet?seed=${seedOk ? Number(sheetSeedText) : 1}&q=${chosen.join(',') || '1'}&count=${count}${withSolutions ? '&solutions=1' : ''}${extras(flags)}`;
   return (
     <main id="main" className="page practice practice-home" tabIndex={-1}>
       <div className="scene-header">
@@ -204,6 +206,14 @@ function PracticeHome({ flags, query }: { flags: ShellFlags; query: string }) {
             aria-invalid={!seedOk}
             size={10}
           />
+        </label>{' '}
+        <label className="check-label">
+          <input
+            type="checkbox"
+            checked={withSolutions}
+            onChange={(e) => setWithSolutions(e.target.checked)}
+          />{' '}
+          with worked solutions
         </label>{' '}
         <a href={sheetHref}>Open the worksheet</a>
         {!seedOk ? (
@@ -421,6 +431,7 @@ function QuestionPage({
             onInput={(name, t) => setInputs((s) => ({ ...s, [name]: t }))}
             onHint={() => setSession((s) => showHint(s, part.id))}
             onReveal={() => setSession((s) => revealPart(s, part.id))}
+            stepsBelow={allShown}
           />
         ))}
         <div className="practice-actions">
@@ -523,6 +534,7 @@ function PartBlock({
   onInput,
   onHint,
   onReveal,
+  stepsBelow,
 }: {
   part: Part;
   progress: PartProgress;
@@ -531,6 +543,8 @@ function PartBlock({
   onInput: (name: string, text: string) => void;
   onHint: () => void;
   onReveal: () => void;
+  /** The whole worked solution is shown below the form: the part's step is not repeated here. */
+  stepsBelow: boolean;
 }) {
   const done = part.answers.every((a) => answers[a.name].verdict?.value === 'correct');
   const open = progress.revealed !== null || done;
@@ -581,7 +595,7 @@ function PartBlock({
           <strong>Hint:</strong> <SolutionSteps steps={part.hint} />
         </div>
       ) : null}
-      {open ? (
+      {open && !stepsBelow ? (
         <div className="part-solution" data-testid={`part-solution-${part.id}`}>
           <h3 className="part-solution-title">Worked step</h3>
           <SolutionSteps steps={part.steps} />
@@ -601,7 +615,7 @@ function verdictTag(value: string): string {
   if (value === 'correct') return '✓ correct';
   if (value === 'consistent') return '≈ follow-through';
   if (value.startsWith('mistake:')) return `✗ ${value}`;
-  if (value === 'invalid') return '? not readable';
+  if (value === 'invalid') return '? not graded';
   return '✗ incorrect';
 }
 
@@ -739,114 +753,5 @@ function GridTable({ text, testId }: { text: string; testId?: string }) {
         </tbody>
       </table>
     </div>
-  );
-}
-
-// ---------------------------------------------------------------------------------------------
-// #/practice/sheet
-
-function Sheet({ sp, flags }: { sp: URLSearchParams; flags: ShellFlags }) {
-  const problems: string[] = flags.problems.map((p) => `${p.name} ${p.message}`);
-  const ps = parseSeed(sp.get('seed'));
-  let seed = 1;
-  if (ps.seed !== null) seed = ps.seed;
-  else if (ps.problem) problems.push(ps.problem.replace('a new variant was drawn instead', 'using 1'));
-  let qs: QuestionId[] = [...QUESTION_IDS];
-  const qRaw = sp.get('q');
-  if (qRaw !== null) {
-    const parts = qRaw.split(',').map((s) => `q${s.trim().replace(/^q/i, '')}`);
-    const ok = parts.filter(isQuestionId);
-    if (ok.length !== parts.length || ok.length === 0)
-      problems.push(
-        `q ${JSON.stringify(qRaw.slice(0, 24))} should list question numbers 1–6 (e.g. 1,3,5); ${ok.length ? 'unknown ones were left out' : 'using all six'}.`,
-      );
-    if (ok.length) qs = [...new Set(ok)];
-  }
-  let count = 1;
-  const cRaw = sp.get('count');
-  if (cRaw !== null) {
-    if (/^\d{1,3}$/.test(cRaw.trim()) && Number(cRaw) >= 1) {
-      count = Math.min(10, Number(cRaw));
-      if (Number(cRaw) > 10) problems.push(`count ${cRaw} is more than 10; using 10.`);
-    } else
-      problems.push(
-        `count ${JSON.stringify(cRaw.slice(0, 24))} is not a whole number from 1 to 10; using 1.`,
-      );
-  }
-  const variants = qs.flatMap((q) =>
-    Array.from({ length: count }, (_, k) => questionInfo(q).generate(sheetSeed(seed, k))),
-  );
-  useEffect(() => {
-    document.title = `Practice worksheet (seed ${seed}) — Render Math Lab`;
-  }, [seed]);
-  return (
-    <main id="main" className="page practice practice-sheet" tabIndex={-1}>
-      <div className="no-print">
-        <div className="scene-header">
-          <h1>Worksheet: seed {seed}</h1>
-          <a className="back-link" href="#/practice">
-            ← All practice questions
-          </a>
-        </div>
-        <ParamNotice problems={problems} />
-        <p>
-          {variants.length} question page{variants.length === 1 ? '' : 's'}, then the answer key.{' '}
-          <button type="button" onClick={() => window.print()}>
-            Print
-          </button>{' '}
-          <span className="muted">
-            Each question prints on its own page; the answer key follows on the last page.
-          </span>
-        </p>
-      </div>
-      {variants.map((v, i) => (
-        <section
-          key={`${v.question}-${v.seed}`}
-          className="sheet-page"
-          data-testid="sheet-page"
-          aria-labelledby={`sheet-q-${i}`}
-        >
-          <h2 id={`sheet-q-${i}`}>
-            {i + 1}. Question {questionInfo(v.question).n}: {v.title}{' '}
-            <span className="muted">(variant {v.seed})</span>
-          </h2>
-          <p>{v.statement}</p>
-          <Givens givens={v.givens} testIds={false} />
-          {v.parts.map((p) => (
-            <div key={p.id} className="sheet-part">
-              <p className="sheet-prompt">{p.prompt}</p>
-              {p.answers.map((a) => (
-                <p key={a.name} className="sheet-blank">
-                  {a.label}: <span className="blank-line" aria-hidden="true" />
-                </p>
-              ))}
-            </div>
-          ))}
-          <p className="muted sheet-link">
-            Check online: #/practice/{v.question}?seed={v.seed}
-          </p>
-        </section>
-      ))}
-      <section className="sheet-key" data-testid="sheet-key" aria-labelledby="sheet-key-title">
-        <h2 id="sheet-key-title">Answer key (seed {seed})</h2>
-        {variants.map((v, i) => (
-          <div key={`${v.question}-${v.seed}`} className="key-block">
-            <h3>
-              {i + 1}. Q{questionInfo(v.question).n} variant {v.seed}
-            </h3>
-            <p className="key-answers">
-              {allAnswers(v).map((a) => (
-                <span key={a.name} className="key-answer">
-                  {a.label} ={' '}
-                  <strong>
-                    {a.kind === 'number' && a.expected !== null ? fmt(a.expected, 6) : expectedText(a)}
-                  </strong>
-                </span>
-              ))}
-            </p>
-          </div>
-        ))}
-      </section>
-    </main>
   );
 }
