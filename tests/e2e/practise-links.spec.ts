@@ -2,9 +2,10 @@
  * "Practise this": every exam part of every scene links to its question's practice page (a fixed
  * variant and a fresh one), and together the scenes reach all six questions.
  */
+import { SCENES } from '../../src/kit/catalogue';
 import { test, expect, openScene } from './fixtures';
 
-const ROUTES = ['hemisphere', 'monte-carlo', 'texture', 'ray-sphere', 'area-light'];
+const ROUTES = SCENES.map((s) => s.id);
 
 test('every scene’s exam parts link to their practice question', async ({ page }) => {
   test.setTimeout(180_000);
