@@ -3,3 +3,5 @@ export * from './raySphereReference';
 export * from './doubleDouble';
 export * from './ulp';
 export * from './solidAngle';
+export * from './raySphereF32';
+export * from './ulp32';
