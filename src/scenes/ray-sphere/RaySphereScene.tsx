@@ -39,6 +39,7 @@ import {
 import type { RaySphereHit } from '../../core/geometry';
 import { CASE_PRESETS, PRECISION_PRESETS, schema, type Preset, type RaySphereParams } from './params';
 import {
+  activeRows,
   CASE_TEXT,
   checkInputs,
   computeModel,
@@ -60,6 +61,7 @@ import { CrossSection, type CrossRay } from './view/CrossSection';
 import { View3D, type View3DProps } from './view/View3D';
 import { DistantImages, ErrorVsDistance, PrecisionTable } from './view/Precision';
 import { DeltaSweepPlot, GSweepPlot } from './view/SweepPlots';
+import { Float32Note, PRECISION_OPTIONS, PrecisionCompare, textbookDiscriminant } from './view/Float32Panel';
 import './ray-sphere.css';
 
 const CASE_NAME: Record<string, string> = {
@@ -79,6 +81,7 @@ const SWEEP_SECONDS = 10;
 const DistantImagesMemo = memo(DistantImages);
 const ErrorVsDistanceMemo = memo(ErrorVsDistance);
 const PrecisionTableMemo = memo(PrecisionTable);
+const PrecisionCompareMemo = memo(PrecisionCompare);
 const PrecisionExplainerMemo = memo(function PrecisionExplainerMemo() {
   return <PrecisionExplainer />;
 });
@@ -152,6 +155,7 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
   // problems are those of the typed inputs (the sweep only moves already-checked values)
   const problems = base.problems;
   const method = params.method === 'naive' ? 'naive' : 'stable';
+  const precision = params.precision === 'f32' ? 'f32' : 'f64';
   const hereErrors = useMemo(
     () => ({
       naive: slow.rows.find((x) => x.method === 'naive')?.errDisc ?? null,
@@ -218,6 +222,13 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
           onChange={(m) => setParams({ method: m })}
           testId="method"
         />
+        <Select
+          label="Arithmetic (for the readouts)"
+          value={precision}
+          options={PRECISION_OPTIONS}
+          onChange={(x) => setParams({ precision: x })}
+          testId="precision"
+        />
         <VecField label="Origin o" name="o" value={params.o} onChange={(v) => edit({ o: v })} />
         <VecField label="Direction d" name="d" value={params.d} onChange={(v) => edit({ d: v })} />
         <VecField
@@ -241,7 +252,7 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
         </p>
       </details>
     ),
-    [params.o, params.d, params.c, params.r, method, setParams, edit],
+    [params.o, params.d, params.c, params.r, method, precision, setParams, edit],
   );
 
   const sweepControls = (
@@ -381,6 +392,7 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
           className="rs-offscreen-skip"
         >
           <PrecisionTableMemo model={slow} />
+          <PrecisionCompareMemo model={slow} />
           <PrecisionExplainerMemo />
         </Panel>
         <div className="rs-explore-grid">
@@ -393,7 +405,8 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
               Median over 12 rays per distance, aimed 0.1 r … 0.95 r off the centre; the crosses are the
               current ray’s Δ errors. The textbook Δ loses digits like u·(D/r)² (u = 2⁻⁵³): by D ≈ 10⁸ r
               nothing is left. The robust Δ grows only like u·(D/r), and its roots stay accurate to the last
-              bits.
+              bits. In float32 (orange and green squares; u₃₂ = 2⁻²⁴) the same happens 10⁴ times sooner: the
+              textbook Δ is noise by D ≈ 1/√u₃₂ ≈ 4·10³ r, a distance every game scene has.
             </p>
           </Panel>
         </div>
@@ -425,8 +438,10 @@ function LiveAnswerBody({
   const model = modelAt(t);
   const at = sweepAt(sweep, t);
   const res = model.chosen;
-  const naiveRow = model.rows.find((x) => x.method === 'naive');
-  const discFromAbc = res ? res.b * res.b - 4 * res.a * res.c : null;
+  const active = activeRows(model);
+  const f32 = model.precision === 'f32';
+  const naiveRow = active.rows.find((x) => x.method === 'naive');
+  const discFromAbc = res ? textbookDiscriminant(res, model.precision) : null;
   const robustDiffers =
     method === 'stable' &&
     res !== null &&
@@ -469,16 +484,18 @@ function LiveAnswerBody({
       </div>
       <p className="rs-small" data-testid="disc-method-note">
         {method === 'naive'
-          ? 'All of a, b, c, Δ and the roots are computed the textbook way: Δ is exactly b² − 4ac of the numbers shown (in double arithmetic).'
+          ? `All of a, b, c, Δ and the roots are computed the textbook way: Δ is exactly b² − 4ac of the numbers shown (in ${f32 ? 'float32' : 'double'} arithmetic).`
           : robustDiffers && discFromAbc !== null && res
             ? `a, b, c are the textbook coefficients; Δ and the roots come from the robust form 4a(r² − |ℓ|²), which computes the same quantity without cancellation. Here it differs from b² − 4ac of the a, b, c shown (next readout) by ${fmt(Math.abs(res.discriminant - discFromAbc))}${res.discriminant !== 0 ? ` (relative ${fmt(Math.abs(res.discriminant - discFromAbc) / Math.abs(res.discriminant))})` : ''}: rounding in the textbook form.`
             : 'a, b, c are the textbook coefficients; Δ and the roots come from the robust form 4a(r² − |ℓ|²). Here it equals b² − 4ac of the a, b, c shown, to the last bit.'}
       </p>
-      {res && model.reference && res.case !== model.reference.case ? (
+      {f32 ? <Float32Note model={model} /> : null}
+      {res && active.reference && res.case !== active.reference.case ? (
         <Notice kind="warn" testId="method-wrong">
-          The {method === 'naive' ? 'textbook' : 'robust'} form says <strong>{res.case}</strong>, but the
-          exact answer for these inputs (double-double reference) is <strong>{model.reference.case}</strong>:
-          rounding has changed the case. See the precision table under “Explore further”.
+          The {method === 'naive' ? 'textbook' : 'robust'} form{f32 ? ' in float32' : ''} says{' '}
+          <strong>{res.case}</strong>, but the exact answer for these inputs (double-double reference) is{' '}
+          <strong>{active.reference.case}</strong>: rounding has changed the case. See the precision table
+          under “Explore further”.
         </Notice>
       ) : null}
       {res?.nearTangent && res.case !== 'tangent' ? (
@@ -773,8 +790,8 @@ const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySph
   if (!res) return <p>No derivation: the inputs overflow.</p>;
   const { o, d, c, r } = model.input;
   const v = (p: readonly number[]) => `(${p.map((x) => tx(x, 4)).join(',\\, ')})`;
-  const naive = model.rows.find((x) => x.method === 'naive')!.res;
-  const textbookDisc = naive.discriminant; // = b² − 4ac of the shown a, b, c, in double arithmetic
+  const naive = activeRows(model).rows.find((x) => x.method === 'naive')!.res;
+  const textbookDisc = naive.discriminant; // = b² − 4ac of the shown a, b, c, in the model's arithmetic
   const robust = res.method === 'stable';
   const roots =
     res.t0 === null

@@ -19,6 +19,7 @@ const base: RaySphereParams = {
   c: [0, 0, 0],
   r: 1,
   method: 'stable',
+  precision: 'f64',
   sweep: 'offset',
   extent: 2.5,
   t: 0.5,

@@ -5,6 +5,7 @@
 import { useEffect, useMemo, useRef, useState } from 'react';
 import { Plot, Slider, useSeenOnce, type PlotTrace } from '../../../ui';
 import { ERROR_FLOOR, errorVsDistance, renderDistant, shadeImage, type RaySphereModel } from '../model';
+import { f32ErrorTraces } from './float32Traces';
 
 function fmtErr(e: number | null): { text: string; cls: string } {
   if (e === null) return { text: '—', cls: 'na' };
@@ -241,6 +242,7 @@ export function ErrorVsDistance({
   const box = useRef<HTMLDivElement>(null);
   const seen = useSeenOnce(box);
   const s = useMemo(() => (seen ? errorVsDistance() : null), [seen]);
+  const s32 = useMemo(() => (s ? f32ErrorTraces(s.dist) : []), [s]);
   const u = ERROR_FLOOR;
   const data = useMemo<PlotTrace[]>(
     () =>
@@ -291,6 +293,7 @@ export function ErrorVsDistance({
               mode: 'lines',
               line: { color: '#bbb', width: 1, dash: 'dash' },
             },
+            ...s32,
             ...(here && current > 1 && Number.isFinite(current)
               ? [
                   {
@@ -310,7 +313,7 @@ export function ErrorVsDistance({
                 ]
               : []),
           ],
-    [s, u, current, here],
+    [s, s32, u, current, here],
   );
   const layout = useMemo(
     () => ({
