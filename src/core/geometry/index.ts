@@ -5,3 +5,4 @@ export * from './ulp';
 export * from './solidAngle';
 export * from './raySphereF32';
 export * from './ulp32';
+export * from './raySphereImageF32';

@@ -61,6 +61,7 @@ import { CrossSection, type CrossRay } from './view/CrossSection';
 import { View3D, type View3DProps } from './view/View3D';
 import { DistantImages, ErrorVsDistance, PrecisionTable } from './view/Precision';
 import { DeltaSweepPlot, GSweepPlot } from './view/SweepPlots';
+import { GpuSection } from './gpu';
 import { Float32Note, PRECISION_OPTIONS, PrecisionCompare, textbookDiscriminant } from './view/Float32Panel';
 import './ray-sphere.css';
 
@@ -410,6 +411,9 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
             </p>
           </Panel>
         </div>
+        <Panel title="What the GPU sees: the sphere in float32, on a shader">
+          <GpuSection />
+        </Panel>
       </ExploreFurther>
     </>
   );
