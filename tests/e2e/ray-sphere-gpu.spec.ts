@@ -87,3 +87,25 @@ test('without WebGL2 the panel says so and shows the emulation', async ({ page }
   expect(Number(await readout(page, 'image-wrong-naive'))).toBeGreaterThan(100);
   expect(await readout(page, 'image-shader-mismatch')).toBe('none');
 });
+
+test('shadow acne in float32: self-hits at a small ε, none with pbrt’s offset', async ({ page }) => {
+  test.setTimeout(120_000);
+  await openScene(page, '#/ray-sphere');
+  const details = page.getByTestId('gpu-details');
+  await details.scrollIntoViewIfNeeded();
+  await details.locator('summary').click();
+  const acne = page.getByTestId('acne-panel');
+  await acne.scrollIntoViewIfNeeded();
+  await page.getByTestId('acne-dist-10000').click();
+  await expect.poll(async () => Number(await readout(page, 'acne-fraction'))).toBeGreaterThan(0.1);
+  await page.getByTestId('acne-pbrt').check();
+  await expect.poll(async () => Number(await readout(page, 'acne-fraction'))).toBe(0);
+  expect(Number(await readout(page, 'acne-lit'))).toBeGreaterThan(1000);
+  // the ε needed grows with the distance; pbrt's offset never self-hits
+  await expect(page.getByTestId('acne-table')).toBeVisible({ timeout: 30_000 });
+  const need = async (D: number) =>
+    Number(await page.getByTestId(`acne-need-${D}`).getAttribute('data-value'));
+  expect(await need(1e4)).toBeGreaterThan(10 * (await need(10)));
+  for (const D of [10, 100, 1000, 10000])
+    await expect(page.getByTestId(`acne-pbrt-hits-${D}`)).toHaveAttribute('data-value', '0');
+});

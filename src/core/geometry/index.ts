@@ -6,3 +6,4 @@ export * from './solidAngle';
 export * from './raySphereF32';
 export * from './ulp32';
 export * from './raySphereImageF32';
+export * from './selfIntersectF32';

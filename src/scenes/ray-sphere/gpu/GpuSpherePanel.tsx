@@ -15,6 +15,7 @@ import {
   ulpF32,
 } from '../../../core/geometry';
 import { getGl2, renderSphereGpu, type GpuSphereImage } from './sphereShader';
+import { SelfIntersectionF32 } from './SelfIntersectionF32';
 
 /** Image size: one ray per pixel, as the distant-sphere images above. */
 const W = 96;
@@ -292,6 +293,7 @@ export function GpuSpherePanel() {
         The robust form’s error grows only like u₃₂·D/r ≈ 6·10⁻⁴: at this resolution no pixel centre lies that
         close to the rim (on larger images a few rim pixels can flip, and beyond 10⁵ r they do).
       </p>
+      <SelfIntersectionF32 />
     </div>
   );
 }
