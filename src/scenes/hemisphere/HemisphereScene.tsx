@@ -49,6 +49,7 @@ import { Derivation } from './view/Derivation';
 import { MarginalPlots, Histogram2D } from './view/Plots';
 import { ImportanceReadouts, RepeatView, StderrNote, UniformReadouts, VarianceWarning } from './view/Q2Panel';
 import { InvertedJacobian } from './view/InvertedJacobian';
+import { GpuWarpSection } from './view/GpuWarpSection';
 import { ExamQ1 } from './view/ExamQ1';
 import { ExamQ2, lobeTexOf } from './view/ExamQ2';
 import type { RepeatArgs, RepeatResult, StatsArgs } from './jobs';
@@ -487,6 +488,9 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
         ) : null}
         <Panel title="Numerical stability of the inversion formulas">
           <StabilityDetails />
+        </Panel>
+        <Panel title="The warps in float32, on a GPU">
+          <GpuWarpSection seed={params.seed} />
         </Panel>
       </ExploreFurther>
     </div>

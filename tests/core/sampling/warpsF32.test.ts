@@ -14,6 +14,8 @@ import {
   warpF32Table,
 } from '../../../src/core/sampling';
 import { ulpF32 } from '../../../src/core/geometry';
+import { examLobePdf, uniformHemispherePdf } from '../../../src/core/sampling';
+import { hemisphereChi2 } from '../../../src/core/verify';
 
 const ulps = (x: number, ref: number) => Math.abs(x - ref) / ulpF32(ref);
 
@@ -101,5 +103,28 @@ describe('the GPU pass’s hash', () => {
     let s = 0;
     for (let i = 0; i < 10000; i++) s += gpuXi(i, 1)[0];
     expect(Math.abs(s / 10000 - 0.5)).toBeLessThan(0.01);
+  });
+});
+
+describe('the GPU pass’s samples, emulated in float32', () => {
+  /** Directions of samples 0 … n−1 from the hash and the stable float32 forms. */
+  function sample(n: number, seed: number): Float64Array {
+    const fr = Math.fround;
+    const out = new Float64Array(3 * n);
+    for (let i = 0; i < n; i++) {
+      const [x1, x2] = gpuXi(i, seed);
+      const s = fr(Math.sqrt(x1));
+      const phi = Math.min(phiLog1pF32(x2), fr(6.283185));
+      out[3 * i] = fr(s * fr(Math.cos(phi)));
+      out[3 * i + 1] = fr(s * fr(Math.sin(phi)));
+      out[3 * i + 2] = fr(Math.sqrt(fr(1 - x1)));
+    }
+    return out;
+  }
+  it('pass the χ² test against the exam pdf, and fail it against the uniform one', () => {
+    const n = 200_000;
+    const d = sample(n, 7);
+    expect(hemisphereChi2(d, n, examLobePdf, { tests: 2 }).pass).toBe(true);
+    expect(hemisphereChi2(d, n, uniformHemispherePdf, { tests: 2 }).pass).toBe(false);
   });
 });
