@@ -230,6 +230,9 @@ export function DistantImages() {
   );
 }
 
+/** Height of the error plot (px): 440 for the axes, the rest for the legend's rows below them. */
+const ERROR_PLOT_HEIGHT = 600;
+
 /** The error of each method against distance, with the current configuration marked. */
 export function ErrorVsDistance({
   current,
@@ -324,9 +327,9 @@ export function ErrorVsDistance({
         exponentformat: 'power',
         range: [-17, 0.3],
       },
-      // inside the plot, top left (the curves start low there): the plot keeps its height and the
-      // axis titles are not squeezed out of the figure in classroom mode
-      legend: { x: 0.01, y: 0.99, xanchor: 'left', yanchor: 'top', bgcolor: 'rgba(0,0,0,0)' },
+      // below the plot, in rows (eleven entries with the float32 curves would cover the curves
+      // inside it); the extra height is the legend's, so the axes keep theirs in classroom mode
+      legend: { orientation: 'h', x: 0, y: -0.2, xanchor: 'left', yanchor: 'top', bgcolor: 'rgba(0,0,0,0)' },
       margin: { l: 72, r: 12, t: 12, b: 60 },
       shapes:
         current > 1 && Number.isFinite(current)
@@ -346,17 +349,17 @@ export function ErrorVsDistance({
     [current],
   );
   return (
-    <div ref={box} style={{ minHeight: 440 }}>
+    <div ref={box} style={{ minHeight: ERROR_PLOT_HEIGHT }}>
       {s ? (
         <Plot
           data={data}
           layout={layout}
-          height={440}
+          height={ERROR_PLOT_HEIGHT}
           ariaLabel="Relative error of the discriminant and of t-hit against distance, textbook and robust"
           testId="error-plot"
         />
       ) : (
-        <div data-testid="error-plot" style={{ height: 440 }} aria-busy="true" />
+        <div data-testid="error-plot" style={{ height: ERROR_PLOT_HEIGHT }} aria-busy="true" />
       )}
     </div>
   );
