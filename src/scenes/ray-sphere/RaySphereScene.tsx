@@ -504,8 +504,8 @@ function LiveAnswerBody({
       ) : null}
       {res?.nearTangent && res.case !== 'tangent' ? (
         <p className="rs-small rs-near">
-          |Δ| is within this method’s rounding error of 0: the ray is tangent to within double precision, and
-          whether it hits is decided by the last bits.
+          |Δ| is within this method’s rounding error of 0: the ray is tangent to within{' '}
+          {f32 ? 'float32' : 'double'} precision, and whether it hits is decided by the last bits.
         </p>
       ) : null}
     </>
@@ -797,6 +797,7 @@ const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySph
   const naive = activeRows(model).rows.find((x) => x.method === 'naive')!.res;
   const textbookDisc = naive.discriminant; // = b² − 4ac of the shown a, b, c, in the model's arithmetic
   const robust = res.method === 'stable';
+  const arith = model.precision === 'f32' ? 'float32' : 'double';
   const roots =
     res.t0 === null
       ? `\\Delta < 0 \\;\\Rightarrow\\; \\text{no real root: the line misses the sphere}`
@@ -858,8 +859,8 @@ const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySph
           {robust ? (
             <p className="rs-small" data-testid="step-robust-note">
               {textbookDisc === res.discriminant
-                ? 'That is b² − 4ac of these numbers in double arithmetic; the robust form (used for the roots here, see “Explore further”) gives the same value.'
-                : `That is b² − 4ac of these numbers in double arithmetic (the textbook method). The roots below use the robust form, which computes Δ = 4a(r² − |ℓ|²) = ${fmt(res.discriminant)} without cancellation: the same quantity, different rounding.`}
+                ? `That is b² − 4ac of these numbers in ${arith} arithmetic; the robust form (used for the roots here, see “Explore further”) gives the same value.`
+                : `That is b² − 4ac of these numbers in ${arith} arithmetic (the textbook method). The roots below use the robust form, which computes Δ = 4a(r² − |ℓ|²) = ${fmt(res.discriminant)} without cancellation: the same quantity, different rounding.`}
             </p>
           ) : null}
           <MathTex display tex={roots} />
