@@ -1,7 +1,7 @@
 // The precision switch of #/ray-sphere: float64 by default (existing links unchanged), float32
 // readouts from the float32 core for both methods, and the float32 error-against-distance series.
 import { describe, expect, it } from 'vitest';
-import { parseParams, serializeParams, defaultValues } from '../../../src/app/params';
+import { parseParams, serializeParams, defaultValues } from '../../../src/kit/params';
 import { intersectRaySphereF32, intersectRaySphere } from '../../../src/core/geometry';
 import { activeRows, computeModel } from '../../../src/scenes/ray-sphere/model';
 import { errorVsDistanceF32 } from '../../../src/scenes/ray-sphere/precisionF32';
