@@ -43,7 +43,7 @@ export function App() {
   }, [flags.present, flags.embed]);
 
   let body;
-  if (route.path === '/') body = <Home flags={flags} />;
+  if (route.path === '/') body = <Home flags={flags} query={route.query} />;
   else if (route.path === '/practice' || route.path.startsWith('/practice/'))
     body = (
       <Suspense
@@ -70,7 +70,7 @@ export function App() {
           </main>
         }
       >
-        <Guide flags={flags} />
+        <Guide flags={flags} query={route.query} />
       </Suspense>
     );
   else if (scene)

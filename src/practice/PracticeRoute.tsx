@@ -11,7 +11,7 @@
  */
 import { useCallback, useEffect, useMemo, useState, type FormEvent } from 'react';
 import { MathTex } from '../ui/MathTex';
-import { shellExtras, type ShellFlags } from '../kit/shell';
+import { queryProblems, shellExtras, type ShellFlags } from '../kit/shell';
 import { expectedText, FORMULA_POLICY, NUMERIC_POLICY } from './check';
 import {
   allAnswers,
@@ -41,6 +41,7 @@ import { loadScores, recordScore, resetScores, type Scores } from './scores';
 import { QUESTIONS, isQuestionId, questionInfo, sheetSeed } from './questions';
 import { loadProgress, recordCheck, resetProgress, type Progress } from './progress';
 import { loadDraft, saveDraft } from './drafts';
+import { RouteNotice } from '../ui/RouteNotice';
 import './practice.css';
 
 interface Props {
@@ -79,7 +80,7 @@ function parseSeed(raw: string | null): { seed: number | null; problem: string |
 export default function PracticeRoute({ path, query, flags }: Props) {
   const sp = useMemo(() => new URLSearchParams(query), [query]);
   const sub = path.slice('/practice'.length).replace(/^\//, '');
-  if (sub === '') return <PracticeHome flags={flags} />;
+  if (sub === '') return <PracticeHome flags={flags} query={query} />;
   if (sub === 'sheet') return <Sheet sp={sp} flags={flags} />;
   if (isQuestionId(sub)) return <QuestionRoute key={sub} q={sub} sp={sp} flags={flags} />;
   return (
@@ -96,7 +97,7 @@ export default function PracticeRoute({ path, query, flags }: Props) {
 // ---------------------------------------------------------------------------------------------
 // #/practice
 
-function PracticeHome({ flags }: { flags: ShellFlags }) {
+function PracticeHome({ flags, query }: { flags: ShellFlags; query: string }) {
   const [progress, setProgress] = useState<Progress>(() => loadProgress());
   const [scores, setScores] = useState<Scores>(() => loadScores());
   const [status, setStatus] = useState('');
@@ -119,6 +120,7 @@ function PracticeHome({ flags }: { flags: ShellFlags }) {
           ← All scenes
         </a>
       </div>
+      <RouteNotice flags={flags} query={query} />
       <p className="lead">
         Each question draws fresh numbers from a seed, checks your answers the way the key grades them, names
         the classic mistakes, and then shows the worked solution of your variant. The same seed always gives
@@ -242,6 +244,7 @@ function QuestionRoute({ q, sp, flags }: { q: QuestionId; sp: URLSearchParams; f
   const seed = parsed.seed ?? fallback;
   const problems = [
     ...flags.problems.map((p) => `${p.name} ${p.message}`),
+    ...queryProblems(sp.toString(), ['seed']).map((p) => `${p.name} ${p.message}`),
     ...(parsed.problem ? [parsed.problem] : []),
   ];
   // a link without a (valid) seed gets one, so the page's URL names its variant
