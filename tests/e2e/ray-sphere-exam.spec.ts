@@ -34,6 +34,7 @@ function modelAt(
     c: p.c ?? [0, 0, 0],
     r: p.r ?? 1,
     method: p.method ?? 'stable',
+    precision: 'f64',
     sweep: p.sweep ?? 'offset',
     extent: p.extent ?? 2.5,
     t,

@@ -8,3 +8,4 @@ export * from './pdf1d';
 export * from './piecewise1D';
 export * from './piecewise2D';
 export * from './tabulatedHemisphere';
+export * from './warpsF32';

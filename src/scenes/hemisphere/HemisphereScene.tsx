@@ -19,6 +19,7 @@ import { compileThetaPhi, compileThetaPhiFast, isCosTheta } from './expr';
 import { Derivation } from './view/Derivation';
 import { ImportanceReadouts, StderrNote, UniformReadouts, VarianceWarning } from './view/Q2Panel';
 import { InvertedJacobian } from './view/InvertedJacobian';
+import { GpuWarpSection } from './view/GpuWarpSection';
 import { Figure } from './view/Figure';
 import { Settings } from './view/Settings';
 import { SampleCheck } from './view/SampleCheck';
@@ -289,6 +290,9 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
         ) : null}
         <Panel title="Numerical stability of the inversion formulas">
           <StabilityDetails />
+        </Panel>
+        <Panel title="The warps in float32, on a GPU">
+          <GpuWarpSection seed={params.seed} />
         </Panel>
       </ExploreFurther>
     </div>

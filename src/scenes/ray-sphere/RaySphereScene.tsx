@@ -30,6 +30,8 @@ import { InputNotices } from './view/InputNotices';
 import { LiveView3D } from './view/Live';
 import { DistantImages, ErrorVsDistance, PrecisionTable } from './view/Precision';
 import { PrecisionExplainer } from './view/PrecisionExplainer';
+import { PrecisionCompare } from './view/Float32Panel';
+import { GpuSection } from './gpu';
 import './ray-sphere.css';
 
 /** The figure block's placeholder height (px): the cross-section, the case banner and the transport. */
@@ -41,6 +43,7 @@ const SWEEP_SECONDS = 10;
 const DistantImagesMemo = memo(DistantImages);
 const ErrorVsDistanceMemo = memo(ErrorVsDistance);
 const PrecisionTableMemo = memo(PrecisionTable);
+const PrecisionCompareMemo = memo(PrecisionCompare);
 
 export default function RaySphereScene({ params, setParams, mode }: SceneProps<typeof schema>) {
   const { method, sweep: sweepMode, extent } = params;
@@ -149,6 +152,7 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
                   c={params.c}
                   r={params.r}
                   method={method}
+                  precision={params.precision}
                   setParams={setParams}
                   edit={edit}
                 />
@@ -182,6 +186,7 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
           className="rs-offscreen-skip"
         >
           <PrecisionTableMemo model={slow} />
+          <PrecisionCompareMemo model={slow} />
           <PrecisionExplainer />
         </Panel>
         <div className="rs-explore-grid">
@@ -194,10 +199,14 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
               Median over 12 rays per distance, aimed 0.1 r … 0.95 r off the centre; the crosses are the
               current ray’s Δ errors. The textbook Δ loses digits like u·(D/r)² (u = 2⁻⁵³): by D ≈ 10⁸ r
               nothing is left. The robust Δ grows only like u·(D/r), and its roots stay accurate to the last
-              bits.
+              bits. In float32 (orange and green squares; u₃₂ = 2⁻²⁴) the same happens 10⁴ times sooner: the
+              textbook Δ is noise by D ≈ 1/√u₃₂ ≈ 4·10³ r, a distance every game scene has.
             </p>
           </Panel>
         </div>
+        <Panel title="What the GPU sees: the sphere in float32, on a shader">
+          <GpuSection />
+        </Panel>
       </ExploreFurther>
     </div>
   );

@@ -18,6 +18,7 @@ import {
 } from '../../core/geometry';
 import { fail, type Failure } from '../../core/failure';
 import { schema, type RaySphereParams } from './params';
+import { computeRowsF32, type F32Rows, type Precision } from './precisionF32';
 
 export type V3 = [number, number, number];
 
@@ -121,6 +122,15 @@ export interface RaySphereModel {
   fatal: string | null;
   /** |o − c| / r: how many radii away the sphere's centre is. */
   distanceRatio: number;
+  /** The arithmetic of `chosen` (the readouts); `f32`: IEEE single precision, as a shader. */
+  precision: Precision;
+  /** Both methods in float32, against the reference of the float32 inputs (precisionF32.ts). */
+  f32: F32Rows | null;
+}
+
+/** The rows and the reference of the model's own precision (those the readouts come from). */
+export function activeRows(m: RaySphereModel): { rows: MethodRow[]; reference: RaySphereReference | null } {
+  return m.precision === 'f32' && m.f32 ? m.f32 : m;
 }
 
 function relDisc(x: number, ref: number): number {
@@ -129,18 +139,31 @@ function relDisc(x: number, ref: number): number {
 }
 
 /** Everything the page shows, for one parameter set. */
-export function computeModel(p: Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r' | 'method'>): RaySphereModel {
+export function computeModel(
+  p: Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r' | 'method'> & { precision?: string },
+): RaySphereModel {
   const input = checkInputs(p);
   const { o, d, c, r } = input;
   const ref = raySphereReference(o, d, c, r);
   const distanceRatio = Math.hypot(o[0] - c[0], o[1] - c[1], o[2] - c[2]) / r;
-  if (!ref.ok) {
-    return { input, chosen: null, rows: [], reference: null, fatal: ref.message, distanceRatio };
-  }
+  const precision: Precision = p.precision === 'f32' ? 'f32' : 'f64';
+  const f32 = computeRowsF32(input);
+  const fail = (fatal: string): RaySphereModel => ({
+    input,
+    chosen: null,
+    rows: [],
+    reference: null,
+    fatal,
+    distanceRatio,
+    precision,
+    f32,
+  });
+  if (!ref.ok) return fail(ref.message);
+  if (precision === 'f32' && f32.fatal) return fail(f32.fatal);
   const rows: MethodRow[] = [];
   for (const method of ['naive', 'stable'] as const) {
     const res = intersectRaySphere(o, d, c, r, method);
-    if (!res.ok) return { input, chosen: null, rows: [], reference: null, fatal: res.message, distanceRatio };
+    if (!res.ok) return fail(res.message);
     rows.push({
       method,
       res,
@@ -151,8 +174,8 @@ export function computeModel(p: Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r' | 'm
       caseRight: res.case === ref.case,
     });
   }
-  const chosen = rows.find((row) => row.method === p.method)!.res;
-  return { input, chosen, rows, reference: ref, fatal: null, distanceRatio };
+  const chosen = (precision === 'f32' ? f32.rows : rows).find((row) => row.method === p.method)!.res;
+  return { input, chosen, rows, reference: ref, fatal: null, distanceRatio, precision, f32 };
 }
 
 /** g(t) = a t² + b t + c sampled for the plot, over a window that shows the vertex and the roots. */

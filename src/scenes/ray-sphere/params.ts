@@ -1,6 +1,7 @@
 /**
  * URL parameters of #/ray-sphere (see /shared/spec/contract.md): the ray o + t d, the sphere
- * (centre C, radius r; the URL parameter for C is `c`) and the evaluation method. Vectors are
+ * (centre C, radius r; the URL parameter for C is `c`), the evaluation method and the arithmetic
+ * (`precision`: f64, or f32 — IEEE single precision, every operation rounded, as a GPU). Vectors are
  * "x,y,z" in z-up world space. The sweep animation: `sweep` (the origin moves across the ray, or
  * the direction turns), `extent` (how far, in radii / angular radii either side) and the shared
  * timeline's `t` ∈ [0, 1] (0.5, the default, is the configuration typed in o, d) and `play`.
@@ -23,6 +24,13 @@ export const schema = {
     values: ['stable', 'naive'],
     aliases: { robust: 'stable', textbook: 'naive' },
     label: 'method',
+  },
+  precision: {
+    kind: 'enum',
+    default: 'f64',
+    values: ['f64', 'f32'],
+    aliases: { double: 'f64', float64: 'f64', single: 'f32', float32: 'f32', float: 'f32' },
+    label: 'arithmetic (f64 double, f32 single precision as on a GPU)',
   },
   sweep: {
     kind: 'enum',

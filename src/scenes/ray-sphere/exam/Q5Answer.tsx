@@ -3,7 +3,8 @@
  * note on what the key prints.
  */
 import { KeyNote, LiveAnswer, Notice, Readout } from '../../../ui';
-import { sweepAt, type Sweep } from '../model';
+import { activeRows, sweepAt, type Sweep } from '../model';
+import { Float32Note, textbookDiscriminant } from '../view/Float32Panel';
 import type { RaySphereParams } from '../params';
 import { fmt, sweepCoord } from '../view/format';
 import { useCoarseModel, type LiveProps } from '../view/Live';
@@ -35,11 +36,12 @@ function methodNote(
   discriminant: number | null,
   discFromAbc: number | null,
   robustDiffers: boolean,
+  arithmetic: string,
 ): string {
   if (method === 'naive') {
     return (
       'All of a, b, c, Δ and the roots are computed the textbook way: Δ is exactly b² − 4ac of the ' +
-      'numbers shown (in double arithmetic).'
+      `numbers shown (in ${arithmetic} arithmetic).`
     );
   }
   const intro =
@@ -63,8 +65,10 @@ function LiveAnswerBody({ tl, modelAt, sweep, method }: Q5AnswerProps) {
   const { t, model } = useCoarseModel({ tl, modelAt });
   const at = sweepAt(sweep, t);
   const res = model.chosen;
-  const naiveRow = model.rows.find((x) => x.method === 'naive');
-  const discFromAbc = res ? res.b * res.b - 4 * res.a * res.c : null;
+  const active = activeRows(model);
+  const f32 = model.precision === 'f32';
+  const naiveRow = active.rows.find((x) => x.method === 'naive');
+  const discFromAbc = res ? textbookDiscriminant(res, model.precision) : null;
   const robustDiffers =
     method === 'stable' &&
     res !== null &&
@@ -106,19 +110,27 @@ function LiveAnswerBody({ tl, modelAt, sweep, method }: Q5AnswerProps) {
         />
       </div>
       <p className="rs-small" data-testid="disc-method-note">
-        {methodNote(method, res?.discriminant ?? null, discFromAbc, robustDiffers)}
+        {methodNote(
+          method,
+          res?.discriminant ?? null,
+          discFromAbc,
+          robustDiffers,
+          f32 ? 'float32' : 'double',
+        )}
       </p>
-      {res && model.reference && res.case !== model.reference.case ? (
+      {f32 ? <Float32Note model={model} /> : null}
+      {res && active.reference && res.case !== active.reference.case ? (
         <Notice kind="warn" testId="method-wrong">
-          The {method === 'naive' ? 'textbook' : 'robust'} form says <strong>{res.case}</strong>, but the
-          exact answer for these inputs (double-double reference) is <strong>{model.reference.case}</strong>:
-          rounding has changed the case. See the precision table under “Explore further”.
+          The {method === 'naive' ? 'textbook' : 'robust'} form{f32 ? ' in float32' : ''} says{' '}
+          <strong>{res.case}</strong>, but the exact answer for these inputs (double-double reference) is{' '}
+          <strong>{active.reference.case}</strong>: rounding has changed the case. See the precision table
+          under “Explore further”.
         </Notice>
       ) : null}
       {res?.nearTangent && res.case !== 'tangent' ? (
         <p className="rs-small rs-near">
-          |Δ| is within this method’s rounding error of 0: the ray is tangent to within double precision, and
-          whether it hits is decided by the last bits.
+          |Δ| is within this method’s rounding error of 0: the ray is tangent to within{' '}
+          {f32 ? 'float32' : 'double'} precision, and whether it hits is decided by the last bits.
         </p>
       ) : null}
     </>

@@ -4,6 +4,7 @@
  */
 import { memo } from 'react';
 import { NumberField, Select } from '../../../ui';
+import { PRECISION_OPTIONS } from '../view/Float32Panel';
 import type { V3 } from '../model';
 import { CASE_PRESETS, PRECISION_PRESETS, type Preset, type RaySphereParams } from '../params';
 
@@ -121,14 +122,23 @@ function VecField({
   );
 }
 
-export interface Q5FieldsProps extends Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r' | 'method'> {
+export interface Q5FieldsProps extends Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r' | 'method' | 'precision'> {
   setParams: SetParams;
   /** An edit of the ray or sphere: it moves the sweep's centre to the ray on screen. */
   edit: SetParams;
 }
 
 /** The typed values (memoised: a re-render of the scene with the same values leaves it alone). */
-export const Q5Fields = memo(function Q5Fields({ o, d, c, r, method, setParams, edit }: Q5FieldsProps) {
+export const Q5Fields = memo(function Q5Fields({
+  o,
+  d,
+  c,
+  r,
+  method,
+  precision,
+  setParams,
+  edit,
+}: Q5FieldsProps) {
   return (
     <details className="rs-fields" open={typeof window === 'undefined' || window.innerWidth > 820}>
       <summary>Ray o + t d and sphere (centre C, radius r): type values</summary>
@@ -141,6 +151,13 @@ export const Q5Fields = memo(function Q5Fields({ o, d, c, r, method, setParams, 
         ]}
         onChange={(m) => setParams({ method: m })}
         testId="method"
+      />
+      <Select
+        label="Arithmetic (for the readouts)"
+        value={precision}
+        options={PRECISION_OPTIONS}
+        onChange={(x) => setParams({ precision: x })}
+        testId="precision"
       />
       <VecField label="Origin o" name="o" value={o} onChange={(v) => edit({ o: v })} />
       <VecField label="Direction d" name="d" value={d} onChange={(v) => edit({ d: v })} />

@@ -6,7 +6,7 @@
 import { memo } from 'react';
 import { Derivation, MathTex } from '../../../ui';
 import type { RaySphereMethod } from '../../../core/geometry';
-import { secondaryFromHit, tMinFor, type RaySphereModel } from '../model';
+import { activeRows, secondaryFromHit, tMinFor, type RaySphereModel } from '../model';
 import { fmt, tx, txVec as v, yes } from '../view/format';
 import { SURVEY_POINTS, useSurvey } from '../view/useSurvey';
 
@@ -35,9 +35,10 @@ const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySph
   const [cx, cy, cz] = model.input.c;
   if (!res) return <p>No derivation: the inputs overflow.</p>;
   const { o, d, c, r } = model.input;
-  const naive = model.rows.find((x) => x.method === 'naive')!.res;
-  const textbookDisc = naive.discriminant; // = b² − 4ac of the shown a, b, c, in double arithmetic
+  const naive = activeRows(model).rows.find((x) => x.method === 'naive')!.res;
+  const textbookDisc = naive.discriminant; // = b² − 4ac of the shown a, b, c, in the model's arithmetic
   const robust = res.method === 'stable';
+  const arith = model.precision === 'f32' ? 'float32' : 'double';
   const roots =
     res.t0 === null
       ? `\\Delta < 0 \\;\\Rightarrow\\; \\text{no real root: the line misses the sphere}`
@@ -113,9 +114,9 @@ const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySph
           {robust ? (
             <p className="rs-small" data-testid="step-robust-note">
               {textbookDisc === res.discriminant
-                ? 'That is b² − 4ac of these numbers in double arithmetic; the robust form (used for the roots ' +
+                ? `That is b² − 4ac of these numbers in ${arith} arithmetic; the robust form (used for the roots ` +
                   'here, see “Explore further”) gives the same value.'
-                : 'That is b² − 4ac of these numbers in double arithmetic (the textbook method). The roots ' +
+                : `That is b² − 4ac of these numbers in ${arith} arithmetic (the textbook method). The roots ` +
                   'below use the robust form, which computes Δ = 4a(r² − |ℓ|²) = ' +
                   `${fmt(res.discriminant)} without cancellation: the same quantity, different rounding.`}
             </p>

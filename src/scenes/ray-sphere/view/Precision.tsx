@@ -5,6 +5,7 @@
 import { useEffect, useMemo, useRef, useState, type RefObject } from 'react';
 import { Plot, Slider, useSeenOnce, type PlotTrace } from '../../../ui';
 import { ERROR_FLOOR, errorVsDistance, renderDistant, shadeImage, type RaySphereModel } from '../model';
+import { f32ErrorTraces } from './float32Traces';
 
 function fmtErr(e: number | null): { text: string; cls: string } {
   if (e === null) return { text: '—', cls: 'na' };
@@ -210,6 +211,9 @@ export function DistantImages() {
   );
 }
 
+/** Height of the error plot (px): 440 for the axes, the rest for the legend's rows below them. */
+const ERROR_PLOT_HEIGHT = 600;
+
 const NAIVE_COLOR = '#c0392b';
 const STABLE_COLOR = '#1f5fa8';
 
@@ -232,6 +236,7 @@ export function ErrorVsDistance({
   const box = useRef<HTMLDivElement>(null);
   const seen = useSeenOnce(box);
   const s = useMemo(() => (seen ? errorVsDistance() : null), [seen]);
+  const s32 = useMemo(() => (s ? f32ErrorTraces(s.dist) : []), [s]);
   const u = ERROR_FLOOR;
   const data = useMemo<PlotTrace[]>(
     () =>
@@ -254,6 +259,7 @@ export function ErrorVsDistance({
               'u (D/r)',
               { color: '#bbb', width: 1, dash: 'dash' },
             ),
+            ...s32,
             ...(here && current > 1 && Number.isFinite(current)
               ? [
                   {
@@ -273,7 +279,7 @@ export function ErrorVsDistance({
                 ]
               : []),
           ],
-    [s, u, current, here],
+    [s, s32, u, current, here],
   );
   const layout = useMemo(
     () => ({
@@ -284,9 +290,9 @@ export function ErrorVsDistance({
         exponentformat: 'power',
         range: [-17, 0.3],
       },
-      // inside the plot, top left (the curves start low there): the plot keeps its height and the
-      // axis titles are not squeezed out of the figure in classroom mode
-      legend: { x: 0.01, y: 0.99, xanchor: 'left', yanchor: 'top', bgcolor: 'rgba(0,0,0,0)' },
+      // below the plot, in rows (eleven entries with the float32 curves would cover the curves
+      // inside it); the extra height is the legend's, so the axes keep theirs in classroom mode
+      legend: { orientation: 'h', x: 0, y: -0.2, xanchor: 'left', yanchor: 'top', bgcolor: 'rgba(0,0,0,0)' },
       margin: { l: 72, r: 12, t: 12, b: 60 },
       shapes:
         current > 1 && Number.isFinite(current)
@@ -306,17 +312,17 @@ export function ErrorVsDistance({
     [current],
   );
   return (
-    <div ref={box} style={{ minHeight: 440 }}>
+    <div ref={box} style={{ minHeight: ERROR_PLOT_HEIGHT }}>
       {s ? (
         <Plot
           data={data}
           layout={layout}
-          height={440}
+          height={ERROR_PLOT_HEIGHT}
           ariaLabel="Relative error of the discriminant and of t-hit against distance, textbook and robust"
           testId="error-plot"
         />
       ) : (
-        <div data-testid="error-plot" style={{ height: 440 }} aria-busy="true" />
+        <div data-testid="error-plot" style={{ height: ERROR_PLOT_HEIGHT }} aria-busy="true" />
       )}
     </div>
   );
