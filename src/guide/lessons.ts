@@ -1,11 +1,12 @@
 /**
- * The teacher's guide's content, read from the catalogue (src/kit/catalogue.ts): for each exam
+ * The teacher's guide's content, read from the catalogue (src/kit/catalogue.ts, lessons.ts): for each exam
  * question, a lesson plan of presets (links that open a scene in a telling configuration, with what
  * to ask the class), and the misconceptions each scene addresses. Every preset's parameters are
  * checked against the scene's schema by tests/guide/lessons.test.ts and opened in the browser by
  * tests/e2e/guide.spec.ts.
  */
-import { QUESTIONS, SCENES, presetScene } from '../kit/catalogue';
+import { QUESTIONS, SCENES } from '../kit/catalogue';
+import { LESSON_PRESETS, MISCONCEPTIONS as BY_SCENE, presetScene } from '../kit/lessons';
 
 export interface Preset {
   /** Scene route, e.g. '/hemisphere'. */
@@ -30,8 +31,8 @@ export const LESSONS: readonly Lesson[] = QUESTIONS.map((q) => ({
   id: `q${q.n}`,
   question: `Q${q.n}`,
   title: q.title,
-  presets: q.lesson.presets.map(({ scene: _scene, ...p }) => ({
-    route: presetScene(q, { scene: _scene, ...p }).path,
+  presets: LESSON_PRESETS[q.n].map(({ scene: _scene, ...p }) => ({
+    route: presetScene(q.n, { scene: _scene, ...p }).path,
     ...p,
   })),
 }));
@@ -44,7 +45,7 @@ export interface Misconceptions {
 
 export const MISCONCEPTIONS: readonly Misconceptions[] = SCENES.map((s) => ({
   route: s.path,
-  ...s.misconceptions,
+  ...BY_SCENE[s.id],
 }));
 
 /** encodeURIComponent, keeping `,` readable (the scenes' vectors and lists). */
