@@ -24,6 +24,7 @@ import {
 } from './model';
 import { QUESTIONS, isQuestionId, questionInfo, sheetSeed } from './questions';
 import { loadProgress, recordCheck, resetProgress, type Progress } from './progress';
+import { extensionCheck, extensionInput, extensionRestore, extensionSeed } from './extensions';
 import './practice.css';
 
 interface Props {
@@ -199,7 +200,8 @@ function PracticeHome({ flags }: { flags: ShellFlags }) {
 function QuestionRoute({ q, sp, flags }: { q: QuestionId; sp: URLSearchParams; flags: ShellFlags }) {
   const parsed = parseSeed(sp.get('seed'));
   const [fallback] = useState(() => randomSeed());
-  const seed = parsed.seed ?? fallback;
+  // an extension (the LMS runtime in a package) fixes each learner's variant, whatever the link says
+  const seed = extensionSeed(q) ?? parsed.seed ?? fallback;
   const problems = [
     ...flags.problems.map((p) => `${p.name} ${p.message}`),
     ...(parsed.problem ? [parsed.problem] : []),
@@ -249,7 +251,13 @@ function QuestionPage({
 }) {
   const info = questionInfo(variant.question);
   const answers = allAnswers(variant);
-  const [inputs, setInputs] = useState<Record<string, string>>({});
+  const [inputs, setInputs] = useState<Record<string, string>>(
+    () => extensionRestore(variant.question, variant.seed) ?? {},
+  );
+  useEffect(
+    () => extensionInput(variant.question, variant.seed, inputs),
+    [inputs, variant.question, variant.seed],
+  );
   const [verdicts, setVerdicts] = useState<Record<string, Verdict>>({});
   const [checking, setChecking] = useState(false);
   const [revealed, setRevealed] = useState(false);
@@ -288,6 +296,18 @@ function QuestionPage({
           : `${nCorrect} of ${answers.length} correct${nMistake ? `, ${nMistake} classic mistake${nMistake === 1 ? '' : 's'} named` : ''}${nInvalid ? `, ${nInvalid} not readable` : ''}${blank ? `, ${blank} not answered` : ''}.`,
       );
       if (vals.length > 0) recordCheck(variant.question, variant.seed, nCorrect === answers.length);
+      if (vals.length > 0)
+        extensionCheck({
+          question: variant.question,
+          seed: variant.seed,
+          answers: answers.map((a) => ({
+            name: a.name,
+            response: inputs[a.name] ?? '',
+            verdict: out[a.name]?.value ?? 'blank',
+            message: out[a.name]?.message ?? '',
+          })),
+          time: new Date().toISOString(),
+        });
     },
     [answers, inputs, variant.question, variant.seed],
   );

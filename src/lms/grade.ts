@@ -1,0 +1,80 @@
+/**
+ * Grading a learner's typed answers from the question and seed alone, for everything that reports
+ * or collates results outside the practice page (SCORM, cmi5, the class results page). The verdicts
+ * come from the practice checker itself, so a score recomputed here is the score the page showed,
+ * and a results file whose verdicts were edited by hand cannot raise it.
+ */
+import { checkAnswer } from '../practice/check';
+import { allAnswers, QUESTION_IDS, type AnswerSpec, type QuestionId, type Variant } from '../practice/model';
+import { questionInfo } from '../practice/questions';
+
+export interface GradedAnswer {
+  name: string;
+  label: string;
+  kind: AnswerSpec['kind'];
+  response: string;
+  /** correct | incorrect | invalid | mistake:<id> | blank */
+  verdict: string;
+  message: string;
+}
+
+export interface GradedAttempt {
+  question: QuestionId;
+  seed: number;
+  answers: GradedAnswer[];
+  /** Number of correct answers. */
+  score: number;
+  /** Number of answers the question asks for. */
+  max: number;
+}
+
+const variants = new Map<string, Variant>();
+
+/** The variant of (q, seed), memoised (generators are pure; a class's files repeat variants). */
+export function variantOf(q: QuestionId, seed: number): Variant {
+  const k = `${q}:${seed}`;
+  let v = variants.get(k);
+  if (!v) {
+    v = questionInfo(q).generate(seed);
+    if (variants.size > 2000) variants.clear();
+    variants.set(k, v);
+  }
+  return v;
+}
+
+/** The named mistake of a verdict value (`mistake:no-sin-jacobian` → `no-sin-jacobian`), or null. */
+export function mistakeOf(verdict: string): string | null {
+  return verdict.startsWith('mistake:') ? verdict.slice('mistake:'.length) : null;
+}
+
+/** Check every typed answer of (q, seed); blank answers are 'blank' and score nothing. */
+export async function gradeAttempt(
+  q: QuestionId,
+  seed: number,
+  responses: Readonly<Record<string, string>>,
+): Promise<GradedAttempt> {
+  const v = variantOf(q, seed);
+  const out: GradedAnswer[] = [];
+  for (const a of allAnswers(v)) {
+    const response = typeof responses[a.name] === 'string' ? responses[a.name].slice(0, 500) : '';
+    if (response.trim() === '') {
+      out.push({ name: a.name, label: a.label, kind: a.kind, response, verdict: 'blank', message: '' });
+      continue;
+    }
+    const r = await checkAnswer(a, response);
+    out.push({ name: a.name, label: a.label, kind: a.kind, response, verdict: r.value, message: r.message });
+  }
+  const score = out.filter((a) => a.verdict === 'correct').length;
+  return { question: q, seed, answers: out, score, max: out.length };
+}
+
+/** Read a question list like "1,3,5" or "q1,q3" (null when any entry is not a question 1–6). */
+export function parseQuestionList(text: string): QuestionId[] | null {
+  const ids = text
+    .split(',')
+    .map((s) => s.trim())
+    .filter(Boolean)
+    .map((s) => `q${s.replace(/^q/i, '')}`);
+  if (!ids.length || ids.some((s) => !(QUESTION_IDS as readonly string[]).includes(s))) return null;
+  return [...new Set(ids as QuestionId[])].sort();
+}
