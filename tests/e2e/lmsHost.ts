@@ -1,0 +1,63 @@
+/**
+ * Helpers for the LMS browser tests: build a package in-process from the single-file build, unzip
+ * it, and serve it (with a host page and scorm-again) from a loopback server on the test's port.
+ */
+import { createServer, type IncomingMessage, type Server, type ServerResponse } from 'node:http';
+import { existsSync, readFileSync } from 'node:fs';
+import { unzipSync } from 'fflate';
+import { buildPackages, type PackageOutputs } from '../../src/lms/packages';
+import type { QuestionId } from '../../src/practice/model';
+
+export const SINGLE = 'dist-single/index.html';
+
+export function haveSingle(): boolean {
+  return existsSync(SINGLE);
+}
+
+/** Build the packages for `questions` (one variant each in the banks) from dist-single. */
+export function packages(questions: QuestionId[], seed: number, mastery = 0.8): PackageOutputs {
+  const app = { 'index.html': new Uint8Array(readFileSync(SINGLE)) };
+  return buildPackages({ questions, variants: 1, seed, mastery, version: 'test' }, app);
+}
+
+export function unzip(bytes: Uint8Array): Record<string, Uint8Array> {
+  return unzipSync(bytes);
+}
+
+const TYPES: Record<string, string> = {
+  html: 'text/html; charset=utf-8',
+  js: 'text/javascript; charset=utf-8',
+  xml: 'application/xml',
+  json: 'application/json',
+};
+
+export type Handler = (req: IncomingMessage, res: ServerResponse, body: string) => boolean;
+
+/** A 127.0.0.1 server: files by path, then the handler, else 404. */
+export async function serve(
+  port: number,
+  files: Map<string, Uint8Array | string>,
+  handler?: Handler,
+): Promise<Server> {
+  const server = createServer((req, res) => {
+    const chunks: Buffer[] = [];
+    req.on('data', (c: Buffer) => chunks.push(c));
+    req.on('end', () => {
+      const body = Buffer.concat(chunks).toString('utf8');
+      const path = decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname);
+      const f = files.get(path);
+      if (f !== undefined && req.method === 'GET') {
+        res.writeHead(200, {
+          'content-type': TYPES[path.split('.').pop() ?? ''] ?? 'application/octet-stream',
+        });
+        res.end(f);
+        return;
+      }
+      if (handler && handler(req, res, body)) return;
+      res.writeHead(404);
+      res.end();
+    });
+  });
+  await new Promise<void>((ok) => server.listen(port, '127.0.0.1', ok));
+  return server;
+}
