@@ -27,7 +27,7 @@ function readConfig(): LmsConfig | null {
   };
 }
 
-function showStatus(state: 'connected' | 'none' | 'error', text: string): void {
+function showStatus(state: 'connected' | 'none' | 'finished' | 'error', text: string): void {
   let el = document.querySelector<HTMLElement>('[data-testid="lms-status"]');
   if (!el) {
     el = document.createElement('p');
@@ -40,6 +40,21 @@ function showStatus(state: 'connected' | 'none' | 'error', text: string): void {
   }
   el.dataset.state = state;
   el.textContent = text;
+}
+
+/** cmi5: an explicit "Finish" (Terminated), since a closing page may not get its last request out. */
+function finishButton(onFinish: () => Promise<void>): void {
+  const b = document.createElement('button');
+  b.type = 'button';
+  b.textContent = 'Finish';
+  b.setAttribute('data-testid', 'lms-finish');
+  b.style.cssText =
+    'position:fixed;right:0.5rem;bottom:2.6rem;z-index:50;font:0.85rem system-ui,sans-serif;padding:0.3rem 0.8rem';
+  b.addEventListener('click', () => {
+    b.disabled = true;
+    void onFinish().finally(() => b.remove());
+  });
+  document.body.appendChild(b);
 }
 
 function openStart(questions: readonly QuestionId[], only: QuestionId | null): void {
@@ -71,6 +86,11 @@ export async function startLms(): Promise<void> {
         s.state.extension({ onCheck: (r) => void s.onCheck(r), onInput: () => undefined }),
       );
       window.addEventListener('pagehide', () => void s.finish(), { once: true });
+      finishButton(async () => {
+        await s.finish();
+        if (s.returnUrl) window.location.href = s.returnUrl;
+        else showStatus('finished', 'Finished: your results are with the LMS. You can close this page.');
+      });
       showStatus(
         'connected',
         `Connected to the LMS (cmi5)${s.learnerName ? ` as ${s.learnerName}` : ''}: your checked answers are reported.`,
