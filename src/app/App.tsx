@@ -26,6 +26,9 @@ const PracticeRoute = lazy(() =>
 // The teacher's guide (#/guide) is its own lazy chunk.
 const Guide = lazy(() => import('../guide/Guide'));
 
+// The class results page (#/results) is its own lazy chunk.
+const ResultsRoute = lazy(() => import('../results/ResultsRoute'));
+
 export function App() {
   const route = useHashRoute();
   // memoised: SceneHost's setParams and effects depend on it, so it must not change per render
@@ -70,6 +73,21 @@ export function App() {
         }
       >
         <Guide flags={flags} />
+      </Suspense>
+    );
+  else if (route.path === '/results')
+    body = (
+      <Suspense
+        key="results"
+        fallback={
+          <main id="main" className="page route-pending">
+            <p className="loading" role="status">
+              Loading the class results page…
+            </p>
+          </main>
+        }
+      >
+        <ResultsRoute />
       </Suspense>
     );
   else if (scene)

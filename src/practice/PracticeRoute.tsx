@@ -25,6 +25,7 @@ import {
 import { QUESTIONS, isQuestionId, questionInfo, sheetSeed } from './questions';
 import { loadProgress, recordCheck, resetProgress, type Progress } from './progress';
 import { extensionCheck, extensionInput, extensionRestore, extensionSeed } from './extensions';
+import { DownloadResults } from '../results/DownloadResults';
 import './practice.css';
 
 interface Props {
@@ -147,6 +148,7 @@ function PracticeHome({ flags }: { flags: ShellFlags }) {
         <span role="status">{status}</span>{' '}
         <span className="muted">Progress is kept in this browser only.</span>
       </p>
+      <DownloadResults />
       <section className="panel sheet-builder" aria-labelledby="sheet-title">
         <h2 id="sheet-title">Worksheet for a class (printable)</h2>
         <fieldset>
@@ -393,6 +395,7 @@ function QuestionPage({
           </span>
         </div>
       </form>
+      <DownloadResults />
       {revealed ? (
         <section className="panel practice-solution" aria-labelledby="solution-title" data-testid="solution">
           <h2 id="solution-title">Worked solution of variant {variant.seed}</h2>
