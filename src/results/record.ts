@@ -6,13 +6,7 @@
  */
 import { addPracticeExtension } from '../practice/extensions';
 import { APP_VERSION } from './version';
-import {
-  MAX_ATTEMPTS,
-  RESULTS_FORMAT,
-  parseResultsFile,
-  type Attempt,
-  type ResultsFile,
-} from './format';
+import { MAX_ATTEMPTS, RESULTS_FORMAT, parseResultsFile, type Attempt, type ResultsFile } from './format';
 
 export const RESULTS_KEY = 'rml:practice-results';
 export const NAME_KEY = 'rml:practice-name';
