@@ -26,6 +26,7 @@ import { QUESTIONS, isQuestionId, questionInfo, sheetSeed } from './questions';
 import { loadProgress, recordCheck, resetProgress, type Progress } from './progress';
 import { extensionCheck, extensionInput, extensionRestore, extensionSeed } from './extensions';
 import { DownloadResults } from '../results/DownloadResults';
+import { LmsDownloads } from '../lms/LmsDownloads';
 import './practice.css';
 
 interface Props {
@@ -616,6 +617,7 @@ function Sheet({ sp, flags }: { sp: URLSearchParams; flags: ShellFlags }) {
             Each question prints on its own page; the answer key follows on the last page.
           </span>
         </p>
+        <LmsDownloads questions={qs} variants={count} seed={seed} />
       </div>
       {variants.map((v, i) => (
         <section
