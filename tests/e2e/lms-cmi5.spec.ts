@@ -15,8 +15,7 @@ import { learnerSeed } from '../../src/lms/seeds';
 import { expectedText } from '../../src/practice/check';
 import { allAnswers } from '../../src/practice/model';
 
-const PORT = Number(process.env.LMS_TEST_PORT_CMI5 ?? 4482);
-const ORIGIN = `http://127.0.0.1:${PORT}`;
+let ORIGIN = '';
 const PKG_SEED = 5;
 const REGISTRATION = '6b3d0f4e-5b4a-4d39-9f55-1f2a3c4d5e6f';
 const SESSION = 'a1b2c3d4-0000-4000-8000-000000000001';
@@ -45,7 +44,7 @@ test.beforeAll(async () => {
   cmi5Xml = new TextDecoder().decode(zip['cmi5.xml']);
   for (const [name, bytes] of Object.entries(zip)) files.set(`/pkg/${name}`, bytes);
   files.set('/favicon.ico', '');
-  server = await serve(PORT, files, (req, res, body) => {
+  ({ server, origin: ORIGIN } = await serve(files, (req, res, body) => {
     const url = new URL(req.url ?? '/', ORIGIN);
     requests.push(`${req.method} ${url.pathname}`);
     const json = (code: number, x: unknown) => {
@@ -82,7 +81,7 @@ test.beforeAll(async () => {
     }
     json(404, {});
     return true;
-  });
+  }));
 });
 
 test.afterAll(async () => {

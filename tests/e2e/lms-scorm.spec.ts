@@ -15,8 +15,7 @@ import { learnerSeed } from '../../src/lms/seeds';
 import { expectedText } from '../../src/practice/check';
 import { allAnswers } from '../../src/practice/model';
 
-const PORT = Number(process.env.LMS_TEST_PORT ?? 4481);
-const ORIGIN = `http://127.0.0.1:${PORT}`;
+let ORIGIN = '';
 const PKG_SEED = 11;
 let server: Server | null = null;
 
@@ -53,7 +52,7 @@ test.beforeAll(async () => {
   files.set('/favicon.ico', '');
   files.set('/host12.html', HOST('scorm12.js', 'Scorm12API', 'API'));
   files.set('/host2004.html', HOST('scorm2004.js', 'Scorm2004API', 'API_1484_11'));
-  server = await serve(PORT, files);
+  ({ server, origin: ORIGIN } = await serve(files));
 });
 
 test.afterAll(async () => {

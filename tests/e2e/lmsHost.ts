@@ -33,12 +33,14 @@ const TYPES: Record<string, string> = {
 
 export type Handler = (req: IncomingMessage, res: ServerResponse, body: string) => boolean;
 
-/** A 127.0.0.1 server: files by path, then the handler, else 404. */
+/**
+ * A 127.0.0.1 server on a free port (each test worker gets its own): files by path, then the
+ * handler, else 404. Returns the server and its origin.
+ */
 export async function serve(
-  port: number,
   files: Map<string, Uint8Array | string>,
   handler?: Handler,
-): Promise<Server> {
+): Promise<{ server: Server; origin: string }> {
   const server = createServer((req, res) => {
     const chunks: Buffer[] = [];
     req.on('data', (c: Buffer) => chunks.push(c));
@@ -58,6 +60,8 @@ export async function serve(
       res.end();
     });
   });
-  await new Promise<void>((ok) => server.listen(port, '127.0.0.1', ok));
-  return server;
+  await new Promise<void>((ok) => server.listen(0, '127.0.0.1', ok));
+  const addr = server.address();
+  const port = typeof addr === 'object' && addr ? addr.port : 0;
+  return { server, origin: `http://127.0.0.1:${port}` };
 }
