@@ -3,7 +3,8 @@
  * it, and serve it (with a host page and scorm-again) from a loopback server on the test's port.
  */
 import { createServer, type IncomingMessage, type Server, type ServerResponse } from 'node:http';
-import { existsSync, readFileSync } from 'node:fs';
+import { existsSync, readFileSync, readdirSync, statSync } from 'node:fs';
+import { join, relative } from 'node:path';
 import { unzipSync } from 'fflate';
 import { buildPackages, type PackageOutputs } from '../../src/lms/packages';
 import type { QuestionId } from '../../src/practice/model';
@@ -14,9 +15,25 @@ export function haveSingle(): boolean {
   return existsSync(SINGLE);
 }
 
+/** The static build's files (LMS_TEST_APP=dist runs the package tests on it instead). */
+function staticApp(dir: string): Record<string, Uint8Array> {
+  const out: Record<string, Uint8Array> = {};
+  const walk = (d: string) => {
+    for (const n of readdirSync(d)) {
+      const p = join(d, n);
+      if (statSync(p).isDirectory()) walk(p);
+      else if (!/^(sw\.js|workbox-.*\.js)$/.test(n))
+        out[relative(dir, p).split('\\').join('/')] = new Uint8Array(readFileSync(p));
+    }
+  };
+  walk(dir);
+  return out;
+}
+
 /** Build the packages for `questions` (one variant each in the banks) from dist-single. */
 export function packages(questions: QuestionId[], seed: number, mastery = 0.8): PackageOutputs {
-  const app = { 'index.html': new Uint8Array(readFileSync(SINGLE)) };
+  const dir = process.env.LMS_TEST_APP;
+  const app = dir ? staticApp(dir) : { 'index.html': new Uint8Array(readFileSync(SINGLE)) };
   return buildPackages({ questions, variants: 1, seed, mastery, version: 'test' }, app);
 }
 
