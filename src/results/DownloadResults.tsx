@@ -13,6 +13,10 @@ function fileName(student: string): string {
   return `render-math-lab-results${who ? `-${who}` : ''}-${new Date().toISOString().slice(0, 10)}.json`;
 }
 
+function recordedText(n: number): string {
+  return `${n} check${n === 1 ? '' : 's'} recorded in this browser; your teacher collates the files at #/results.`;
+}
+
 export function DownloadResults() {
   const [name, setName] = useState(() => loadName());
   const [status, setStatus] = useState('');
@@ -51,8 +55,7 @@ export function DownloadResults() {
         Download my results
       </button>{' '}
       <span role="status" className="muted">
-        {status ||
-          `${loadAttempts().length} checks recorded in this browser; your teacher collates the files at #/results.`}
+        {status || recordedText(loadAttempts().length)}
       </span>
     </div>
   );
