@@ -34,7 +34,7 @@ function inlineWorkers(): Plugin {
  * @stdlib's packages are CommonJS without a `sideEffects` field, so a bundler keeps them (and runs
  * their module code, tens of ms on a phone) in every chunk that imports them, even unused: the
  * χ² test's gammainc ended up in the hemisphere page's chunk, though only its worker runs the test
- * (issue 15). They have no side effects on import.
+ *. They have no side effects on import.
  */
 const treeshake = { moduleSideEffects: [{ test: /[\\/]node_modules[\\/]@stdlib[\\/]/, sideEffects: false }] };
 
@@ -47,7 +47,7 @@ export default defineConfig(({ mode }) => {
       ? [react(), inlineWorkers(), viteSingleFile({ removeViteModuleLoader: true })]
       : [
           react(),
-          // index.html starts the opened scene's chunks downloading with the entry (issue 15)
+          // index.html starts the opened scene's chunks downloading with the entry
           routePreload(),
           // Offline: a Workbox service worker precaches every file of the build (all chunks, workers,
           // fonts), so after one visit every scene opens with no network. 'prompt': a new build waits
@@ -74,14 +74,17 @@ export default defineConfig(({ mode }) => {
               ],
             },
             workbox: {
-              globPatterns: ['**/*.{js,css,html,png,svg,ico,webmanifest,woff2,woff,ttf,wasm,json}'],
+              // KaTeX's stylesheet lists each font as woff2, woff and ttf; every browser the app
+              // supports takes the woff2, so only those are precached (the others: 2/3 of the fonts'
+              // bytes, never fetched)
+              globPatterns: ['**/*.{js,css,html,png,svg,ico,webmanifest,woff2,wasm,json}'],
               maximumFileSizeToCacheInBytes: 20 * 1024 * 1024,
               cleanupOutdatedCaches: true,
               clientsClaim: true,
               navigateFallback: 'index.html',
             },
           }),
-          // after VitePWA: its manifest link leaves index.html; src/app/pwa.ts adds it later (issue 15)
+          // after VitePWA: its manifest link leaves index.html; src/app/pwa.ts adds it later
           lateManifestLink(),
           // app-files.json: what the practice sheet page packs into LMS zips in the browser
           appFiles(),
@@ -98,8 +101,7 @@ export default defineConfig(({ mode }) => {
             output: {
               // three.js, Plotly and KaTeX get recognisable chunk names (vendor-three-*.js, …) for the
               // budgets. mathjs is left to the default splitting on purpose: the parse-only expression
-              // engine (src/core/expr) must not share a chunk with the full mathjs that the stability
-              // panel's BigNumber reference loads.
+              // engine (src/core/expr) loads only what it needs.
               // Each scene's lazy chunk is named after it (scene-texture-*.js, …); naming only, so the
               // default splitting (shared modules in shared chunks) is untouched.
               chunkFileNames: (chunk: { facadeModuleId?: string | null }) => {

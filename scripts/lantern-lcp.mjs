@@ -1,6 +1,6 @@
 #!/usr/bin/env node
 /**
- * What Lighthouse's simulated LCP is made of (issue 15): runs Lighthouse (mobile preset) once on a
+ * What Lighthouse's simulated LCP is made of: runs Lighthouse (mobile preset) once on a
  * route of a build, served gzipped on 127.0.0.1, then prints the request/task graph that Lantern
  * simulates for LCP, each node with its simulated start–end (ms), the slowest end being the LCP.
  * Network nodes: every request that ended before the observed LCP (so anything started before the
@@ -103,7 +103,6 @@ for (const which of process.env.BOTH ? ['optimistic', 'pessimistic'] : ['pessimi
   const est = res[`${which}Estimate`];
   const rows = [...est.nodeTimings.entries()].sort((a, b) => a[1].startTime - b[1].startTime);
   console.log(`-- ${which}: ${rows.length} nodes`);
-  let t0 = null;
   for (const [n, t] of rows) {
     let what;
     if (n.type === 'network')

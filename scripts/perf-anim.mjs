@@ -1,6 +1,6 @@
 #!/usr/bin/env node
 /**
- * Animation benchmark (issue 12): plays each scene's animation in the system Chromium at 4× CPU
+ * Animation benchmark: plays each scene's animation in the system Chromium at 4× CPU
  * throttling (DevTools Emulation.setCPUThrottlingRate) and records, from a performance trace, the
  * main thread's script time per animation frame (median, p95) and the dropped frames. Writes
  * bench/anim-perf.json and prints a table. A benchmark, not a test: it is not part of `npm test`.
@@ -22,6 +22,7 @@ import { spawn } from 'node:child_process';
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { cpus, loadavg } from 'node:os';
 import { chromium } from 'playwright-core';
+import { SCENES } from './catalogue.mjs';
 import { CHROMIUM_ARGS, findChromium, NO_CHROMIUM_HELP } from './chromium.mjs';
 
 const args = process.argv.slice(2);
@@ -33,13 +34,7 @@ const dist = opt('--dist', 'dist');
 const port = Number(opt('--port', '4391'));
 const seconds = Number(opt('--seconds', '4'));
 const rate = Number(opt('--rate', '4'));
-const ROUTES = {
-  hemisphere: '#/hemisphere',
-  'monte-carlo': '#/monte-carlo',
-  texture: '#/texture',
-  'ray-sphere': '#/ray-sphere',
-  'area-light': '#/area-light',
-};
+const ROUTES = Object.fromEntries(SCENES.map((s) => [s.id, `#${s.path}`]));
 const only = opt('--routes', '');
 const detail = args.includes('--detail');
 const settleMax = Number(opt('--settle', '20'));

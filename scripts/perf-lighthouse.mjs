@@ -21,28 +21,20 @@
  * shifts' elements; the final screenshot of the last run of each route is saved under --shots.
  */
 import { spawn } from 'node:child_process';
-import { mkdtempSync, rmSync, readFileSync, writeFileSync, mkdirSync, existsSync } from 'node:fs';
+import { mkdtempSync, rmSync, writeFileSync, mkdirSync, existsSync } from 'node:fs';
 import { tmpdir, loadavg, cpus } from 'node:os';
 import { join } from 'node:path';
 import lighthouse, { defaultConfig } from 'lighthouse';
 // Lighthouse's own trace gatherer, extended below (a file inside the pinned package; see TraceForNewChromium).
 import TraceGatherer from 'lighthouse/core/gather/gatherers/trace.js';
+import { SCENES } from './catalogue.mjs';
 import { CHROMIUM_ARGS, findChromium, NO_CHROMIUM_HELP } from './chromium.mjs';
 
 /**
- * The routes measured by default. Add new pages here (practice and guide routes, …); each entry is
- * the hash Lighthouse opens (query parameters allowed: '#/texture?u=0.4').
+ * The routes measured by default: home, every scene of the catalogue, practice and the guide. Each
+ * entry is the hash Lighthouse opens (query parameters allowed: '#/texture?u=0.4').
  */
-const ROUTES = [
-  '#/',
-  '#/hemisphere',
-  '#/monte-carlo',
-  '#/texture',
-  '#/ray-sphere',
-  '#/area-light',
-  '#/practice',
-  '#/guide',
-];
+const ROUTES = ['#/', ...SCENES.map((s) => `#${s.path}`), '#/practice', '#/guide'];
 
 const args = process.argv.slice(2);
 const opt = (name, def) => {
@@ -78,17 +70,6 @@ const exe = findChromium();
 if (!exe) {
   console.error(NO_CHROMIUM_HELP);
   process.exit(1);
-}
-
-// A scene in the registry that the default list forgets is worth a warning.
-try {
-  const reg = readFileSync('src/scenes/registry.ts', 'utf8');
-  for (const m of reg.matchAll(/\bpath:\s*'(\/[a-z0-9-]+)'/g)) {
-    if (!ROUTES.includes(`#${m[1]}`))
-      console.warn(`perf: note: the scene route #${m[1]} is not in ROUTES (scripts/perf-lighthouse.mjs)`);
-  }
-} catch {
-  /* no registry: nothing to check */
 }
 
 const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
@@ -236,20 +217,16 @@ async function measure(url) {
     const diagnosticErrors = ['largest-contentful-paint-element', 'layout-shifts', 'long-tasks']
       .filter((id) => a[id]?.scoreDisplayMode === 'error')
       .map((id) => `${id}: ${a[id].errorMessage}`);
-    const longTasks = (a['long-tasks']?.details?.items ?? [])
-      .slice(0, 8)
-      .map((t) => ({
-        url: String(t.url ?? '').replace(/^.*\/assets\//, 'assets/'),
-        startTime: Math.round(t.startTime),
-        duration: Math.round(t.duration),
-      }));
-    const bootup = (a['bootup-time']?.details?.items ?? [])
-      .slice(0, 6)
-      .map((t) => ({
-        url: String(t.url ?? '').replace(/^.*\/assets\//, 'assets/'),
-        total: Math.round(t.total),
-        scripting: Math.round(t.scripting),
-      }));
+    const longTasks = (a['long-tasks']?.details?.items ?? []).slice(0, 8).map((t) => ({
+      url: String(t.url ?? '').replace(/^.*\/assets\//, 'assets/'),
+      startTime: Math.round(t.startTime),
+      duration: Math.round(t.duration),
+    }));
+    const bootup = (a['bootup-time']?.details?.items ?? []).slice(0, 6).map((t) => ({
+      url: String(t.url ?? '').replace(/^.*\/assets\//, 'assets/'),
+      total: Math.round(t.total),
+      scripting: Math.round(t.scripting),
+    }));
     return {
       score: lhr.categories.performance.score,
       fcp: num('first-contentful-paint'),

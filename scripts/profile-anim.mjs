@@ -2,7 +2,7 @@
 /**
  * Where a playing animation spends its main-thread time: a CPU profile (CDP Profiler, 4× CPU
  * throttling) of a route of the built app while its shared timeline plays, aggregated by function
- * (self time) and by inclusive time within the app's scripts. A diagnostic for issue 12's
+ * (self time) and by inclusive time within the app's scripts. A diagnostic for the animation
  * frame-time goal (see scripts/perf-anim.mjs for the benchmark), not a test. For readable names,
  * build without minifying: `npx vite build --outDir dist-prof --minify false`.
  *

@@ -3,7 +3,7 @@
  * Where the main thread spends a scene's first seconds: a CPU profile (CDP Profiler, 4x CPU
  * throttling, phone-sized viewport) of loading a route of the built app, aggregated by function
  * (self time) and by script, plus the long tasks (> 50 ms) seen by a PerformanceObserver. A
- * diagnostic for issue 15 (Lighthouse TBT), not a test.
+ * diagnostic for Lighthouse TBT, not a test.
  *
  *   node scripts/profile-load.mjs [--dist dist] [--port 4336] [--ms 8000] [--top 25] [--rate 4] '#/hemisphere' …
  */

@@ -1,5 +1,5 @@
 /**
- * Vite build plugin (issue 15): start downloading the opened scene's chunks with the entry, not after it.
+ * Vite build plugin: start downloading the opened scene's chunks with the entry, not after it.
  *
  * A scene's code is a lazy chunk that the shell imports once React has rendered, so on a phone its
  * download waited for the entry's download, evaluation and first render (a chain of round trips
@@ -131,7 +131,7 @@ export function routePreload(): Plugin {
 /**
  * Takes vite-plugin-pwa's `<link rel="manifest">` out of index.html (list this plugin after VitePWA):
  * Chromium fetched the manifest and its icon at once, two requests beside the entry's on a phone's
- * first load; src/app/pwa.ts adds the link when it registers the service worker (issue 15).
+ * first load; src/app/pwa.ts adds the link when it registers the service worker.
  */
 export function lateManifestLink(): Plugin {
   return {

@@ -3,7 +3,7 @@
  * The long main-thread tasks of a route's load, as Lighthouse sees them: a Chromium trace without
  * CPU throttling (Lighthouse's simulator multiplies each task by 4, so a task over 12.5 ms here is
  * a "long task" there), each task listed with what ran inside it (script by function, style,
- * layout, paint, HTML parsing). A diagnostic for issue 15, not a test.
+ * layout, paint, HTML parsing). A diagnostic for load performance, not a test.
  *
  * Durations are (unless --wall) the main thread's CPU time (the trace's thread duration), not wall time, so that
  * a machine busy with other work still shows what the page itself costs; on a quiet machine the

@@ -1,18 +1,19 @@
 import { lazy, Suspense, useEffect, useMemo } from 'react';
 import { useHashRoute } from './useHashRoute';
-import { parseShellFlags } from './route';
+import { parseShellFlags } from '../kit/shell';
 import { useTheme } from './theme';
 import { usePostHeight } from './embedHeight';
 import { useHostApi } from './hostApi';
 import { Home } from './Home';
 import { SceneHost } from './SceneHost';
-import { findScene } from '../scenes/registry';
+import { findScene } from '../kit/catalogue';
 import { ShortcutProvider } from '../ui/shortcuts';
+import { importOrReload } from './staleBuild';
 
 // Practice mode is its own lazy chunk (src/practice): nothing of it loads on the other routes.
 // A failed load (offline, stale deploy) shows a message instead of throwing.
 const PracticeRoute = lazy(() =>
-  import('../practice/PracticeRoute').catch(() => ({
+  importOrReload(() => import('../practice/PracticeRoute')).catch(() => ({
     default: () => (
       <main id="main" className="page" tabIndex={-1}>
         <p role="alert" className="notice notice-error">
@@ -24,7 +25,7 @@ const PracticeRoute = lazy(() =>
 );
 
 // The teacher's guide (#/guide) is its own lazy chunk.
-const Guide = lazy(() => import('../guide/Guide'));
+const Guide = lazy(() => importOrReload(() => import('../guide/Guide')));
 
 // The class results page (#/results) is its own lazy chunk.
 const ResultsRoute = lazy(() => import('../results/ResultsRoute'));

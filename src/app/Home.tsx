@@ -1,6 +1,7 @@
 import { useEffect } from 'react';
-import { SCENES, sceneLoader } from '../scenes/registry';
-import type { ShellFlags } from './route';
+import { QUESTIONS, sceneById } from '../kit/catalogue';
+import { sceneLoader } from '../scenes/registry';
+import type { ShellFlags } from '../kit/shell';
 
 function withFlags(query: string, flags: ShellFlags): string {
   const parts = query ? [query] : [];
@@ -30,8 +31,8 @@ export function Home({ flags }: { flags: ShellFlags }) {
         solutions with your numbers.
       </p>
       <ol className="question-list">
-        {EXAM_QUESTIONS.map((q) => {
-          const scene = SCENES.find((s) => s.id === q.scene)!;
+        {QUESTIONS.map((q) => {
+          const scene = sceneById(q.scene);
           const built = sceneLoader(scene.id) !== null;
           // land on the question's first part (Q2 opens the hemisphere page at 2a, not at Q1)
           const part = scene.parts.find((p) => p.startsWith(String(q.n)));
@@ -64,46 +65,3 @@ export function Home({ flags }: { flags: ShellFlags }) {
     </main>
   );
 }
-
-const EXAM_QUESTIONS: { n: number; title: string; text: string; scene: string; query?: string }[] = [
-  {
-    n: 1,
-    title: 'Sampling a hemisphere PDF',
-    text: 'Normalize p(ω) = k cos θ e^φ, find its marginals and CDFs, and invert them to draw directions.',
-    scene: 'hemisphere',
-    query: 'lobe=exam',
-  },
-  {
-    n: 2,
-    title: 'Monte Carlo estimators on the hemisphere',
-    text: 'Uniform and importance-sampled estimators of ∫ f dω, and why both are unbiased.',
-    scene: 'hemisphere',
-    query: 'lobe=exam&f=cos(theta)',
-  },
-  {
-    n: 3,
-    title: 'Texture lookup',
-    text: 'Nearest neighbour and bilinear lookup at (0.4, 0.24), and the spherical (u, v) mapping.',
-    scene: 'texture',
-    query: 'u=0.4&v=0.24',
-  },
-  {
-    n: 4,
-    title: 'Monte Carlo integration of (x + 2)²',
-    text: 'Uniform against importance sampling with four given samples, and how each converges.',
-    scene: 'monte-carlo',
-    query: 'samples=1.16,1.98,0.54,1.26',
-  },
-  {
-    n: 5,
-    title: 'Ray–sphere intersection',
-    text: 'The quadratic, its discriminant, which root is the hit, and floating-point robustness.',
-    scene: 'ray-sphere',
-  },
-  {
-    n: 6,
-    title: 'Solid angle and area lights',
-    text: 'dω = dA cos θ_l / r², the rendering equation over a light’s area, and area-light sampling.',
-    scene: 'area-light',
-  },
-];

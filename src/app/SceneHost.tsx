@@ -8,9 +8,9 @@ import {
   useState,
   type ReactNode,
 } from 'react';
-import type { SceneInfo } from '../scenes/registry';
+import type { SceneInfo } from '../kit/catalogue';
 import { sceneLoader } from '../scenes/registry';
-import type { SceneModule } from './scene';
+import type { SceneModule } from '../kit/scene';
 import {
   parseParams,
   sanitizePatch,
@@ -18,14 +18,15 @@ import {
   type ParamProblem,
   type ParamValues,
   type ParamSchema,
-} from './params';
-import { shellExtras, type ShellFlags } from './route';
+} from '../kit/params';
+import { shellExtras, type ShellFlags } from '../kit/shell';
 import { useShortcuts } from '../ui/shortcuts';
 import { QuestionNav } from '../ui/exam';
 import { useHostScene } from './hostApi';
 import { embedSnippet } from './embedCode';
 import { QrButton } from './QrButton';
 import { markFirstScreen } from './firstScreen';
+import { importOrReload } from './staleBuild';
 
 interface Props {
   info: SceneInfo;
@@ -52,8 +53,9 @@ export function SceneHost({ info, query, flags, theme }: Props) {
     }
     let alive = true;
     // (KaTeX's worker and stylesheet start once the scene's first screen has been painted, with its
-    // formulas as plain text for a moment: fetched earlier, they delayed that paint on a phone; issue 15.)
-    loader().then(
+    // formulas as plain text for a moment: fetched earlier, they delayed that paint on a phone.)
+    // a page of a replaced build reloads onto the new one instead (staleBuild.ts)
+    importOrReload(loader).then(
       // A transition: React renders the scene's (large) first tree in slices of a few ms that yield
       // to the browser, instead of one long task (Lighthouse: total blocking time on load).
       (mod) => alive && startTransition(() => setLoad({ kind: 'ready', mod })),
@@ -209,7 +211,10 @@ function LoadedScene({
   useShortcuts({ reset: () => setParams({ ...opening.current }) });
 
   const getValues = useCallback(() => valuesRef.current, []);
-  useHostScene({ id: info.id, route: info.path, schema, getValues, setParams }, values);
+  useHostScene(
+    { id: info.id, route: info.path, schema, getValues, setParams, checkValues: mod.checkValues },
+    values,
+  );
 
   const Scene = mod.default;
   return (

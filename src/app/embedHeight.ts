@@ -23,15 +23,16 @@ export function contentHeight(): number {
 /**
  * In an iframe, post the content's height to the parent whenever it changes (growing or
  * shrinking), so the host can size the iframe (README, "Embed a scene"). With `origin=` the
- * message goes only to those origins.
+ * message goes only to those origins (to none when it names no usable one).
  */
 export function usePostHeight(
   active: boolean,
   sceneId: string | null,
-  origins: readonly string[] = [],
+  origins: readonly string[] | null = null,
 ): void {
   useEffect(() => {
-    if (!active || window.parent === window) return;
+    // `origin=` with no usable origin: nobody is told anything
+    if (!active || window.parent === window || (origins && origins.length === 0)) return;
     let last = -1;
     let raf = 0;
     const post = () => {
@@ -40,7 +41,7 @@ export function usePostHeight(
       if (h === last) return;
       last = h;
       const msg = { type: HEIGHT_MESSAGE, height: h, scene: sceneId };
-      if (origins.length) for (const o of origins) window.parent.postMessage(msg, o);
+      if (origins) for (const o of origins) window.parent.postMessage(msg, o);
       else window.parent.postMessage(msg, '*');
     };
     const schedule = () => {

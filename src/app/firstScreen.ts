@@ -1,7 +1,7 @@
 /**
  * "The opened page's first screen is up": the scene host marks it once the scene's chunk has
  * rendered (or failed to load). Work that is no part of the first screen (registering the service
- * worker) waits for it (issue 15).
+ * worker) waits for it.
  */
 let mark: () => void = () => undefined;
 const shown = new Promise<void>((resolve) => {

@@ -1,5 +1,5 @@
 /**
- * Fuzz mode (issue 17), after PhET's `?fuzz`: `#/<scene>?fuzz=1&seed=7` makes the page drive
+ * Fuzz mode, after PhET's `?fuzz`: `#/<scene>?fuzz=1&seed=7` makes the page drive
  * itself with seeded random clicks, drags, key presses and typing into its own controls (expression
  * fields included, with a corpus of hostile strings) and reports every error it sees in a small
  * panel and on `window.__rmlFuzz`. `fuzzn=300` stops after 300 actions (the browser test uses it);

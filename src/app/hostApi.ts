@@ -13,7 +13,8 @@
  *   { protocol, version, type: 'event', event: 'practice-verdict', verdict: { question, seed, name, verdict } }
  *
  * Rules: only messages whose `source` is this window's parent are read (and only when the app
- * runs in a frame); with `origin=` in the URL only those origins are; replies go to the origin
+ * runs in a frame); with `origin=` in the URL only those origins are (none when it names no
+ * usable origin: a malformed `origin=` never widens who is answered); replies go to the origin
  * the request came from. Values are validated exactly like URL parameters (`parseParams`), a
  * `set` is all-or-nothing and its error names every value it could not use; nothing received is
  * evaluated or inserted as HTML. `play`, `pause` and `seek` are `set`s of the animation's `play`
@@ -21,7 +22,16 @@
  * naming the parameter elsewhere.
  */
 import { useEffect, useRef } from 'react';
-import { parseParams, serializeParams, SHELL_PARAMS, type ParamSchema, type ParamValues } from './params';
+import {
+  parseParams,
+  serializeParams,
+  SHELL_PARAMS,
+  type ParamSchema,
+  type ParamSpec,
+  type ParamValues,
+} from '../kit/params';
+import type { SceneCheck } from '../kit/scene';
+import { refusedValues } from './hostCheck';
 
 export const PROTOCOL = 'render-math-lab';
 export const PROTOCOL_VERSION = 1;
@@ -43,6 +53,8 @@ export interface HostScene {
   /** The scene's current values (after any setParams, even before React re-renders). */
   getValues: () => ParamValues<ParamSchema>;
   setParams: (patch: Record<string, unknown>) => void;
+  /** The scene's model check (SceneModule.checkValues): values it would replace by a fallback. */
+  checkValues?: SceneCheck;
 }
 
 type Problem = { name: string; message: string };
@@ -55,6 +67,50 @@ export function toUrlText(v: unknown): string | null {
   if (Array.isArray(v) && v.length <= 64 && v.every((x) => typeof x === 'number'))
     return v.map((x) => String(x)).join(',');
   return null;
+}
+
+const KIND_WORDS: Record<ParamSpec['kind'], string> = {
+  number: 'a number',
+  enum: 'one of its words (a string)',
+  string: 'a string',
+  bool: 'a boolean (or 0 / 1)',
+  vec3: 'a list of three numbers',
+  list: 'a list of numbers',
+};
+
+function typeName(v: unknown): string {
+  if (Array.isArray(v)) return 'a list';
+  if (v === null) return 'null';
+  return typeof v === 'object' ? 'an object' : `a ${typeof v}`;
+}
+
+/**
+ * Why a host's value does not have its parameter's type, or null if it does. No conversion is
+ * silent: a boolean is not a number, a one-element list is not a number, a list is not a grid's
+ * text. A string is read as URL text for every kind (the way a link carries it), but must not
+ * carry spaces around it where the parameter is not free text, and a boolean's text is 0, 1,
+ * true or false.
+ */
+export function typeProblem(spec: ParamSpec, v: unknown): string | null {
+  const want = () => `is ${typeName(v)}; it takes ${KIND_WORDS[spec.kind]}`;
+  if (typeof v === 'string') {
+    if (spec.kind !== 'string' && v !== v.trim())
+      return `${JSON.stringify(clip(v, 24))} has spaces around it; send the value alone`;
+    if (spec.kind === 'bool' && !/^(0|1|true|false)$/.test(v))
+      return `${JSON.stringify(clip(v, 24))} is not a boolean (true, false, 0 or 1)`;
+    return null;
+  }
+  switch (spec.kind) {
+    case 'number':
+      return typeof v === 'number' ? null : want();
+    case 'bool':
+      return typeof v === 'boolean' || v === 0 || v === 1 ? null : want();
+    case 'vec3':
+    case 'list':
+      return Array.isArray(v) ? null : want();
+    default:
+      return want();
+  }
 }
 
 function clip(s: string, n = 40): string {
@@ -92,6 +148,12 @@ export function validateSet(
       problems.push({ name: clip(name), message: 'is not a string, number, boolean or list of numbers' });
       continue;
     }
+    const spec = Object.hasOwn(schema, name) ? schema[name] : undefined;
+    const wrong = spec ? typeProblem(spec, raw) : null;
+    if (wrong) {
+      problems.push({ name, message: wrong });
+      continue;
+    }
     sp.append(name, text);
     names.push(name);
   }
@@ -112,7 +174,8 @@ interface Subscriber {
 }
 
 let scene: HostScene | null = null;
-let allowed: readonly string[] = [];
+// who is answered (null: any parent); nobody until the app has read its link's `origin=`
+let allowed: readonly string[] | null = [];
 const subscribers: Subscriber[] = [];
 /** `scene?query` of the last change event, so that each change is told once. */
 let lastEmitted: string | null = null;
@@ -162,30 +225,65 @@ function reply(id: unknown, origin: string, body: Record<string, unknown>): void
   post({ type: 'reply', id: safeId, ...body }, origin);
 }
 
+/** `set`s run one after another (each waits for its checks), so replies keep the requests' order. */
+let setQueue: Promise<void> = Promise.resolve();
+
 function applySet(id: unknown, origin: string, params: unknown): void {
-  if (!scene) {
+  setQueue = setQueue.then(() => applySetNow(id, origin, params)).catch(() => undefined);
+}
+
+function refuse(id: unknown, origin: string, problems: Problem[]): void {
+  reply(id, origin, {
+    ok: false,
+    error: `Not applied: ${problems.map((p) => `${p.name} ${p.message}`).join('; ')}.`,
+    problems,
+  });
+}
+
+async function applySetNow(id: unknown, origin: string, params: unknown): Promise<void> {
+  const s = scene;
+  if (!s) {
     reply(id, origin, { ok: false, error: 'There is no scene on this page to set parameters of.' });
     return;
   }
-  const r = validateSet(scene.schema, params);
+  const r = validateSet(s.schema, params);
   if (!r.ok) {
-    reply(id, origin, {
-      ok: false,
-      error: `Not applied: ${r.problems.map((p) => `${p.name} ${p.message}`).join('; ')}.`,
-      problems: r.problems,
-    });
+    refuse(id, origin, r.problems);
     return;
   }
-  if (Object.keys(r.patch).length) scene.setParams(r.patch);
+  // values the parser accepts but the page would replace (an expression that does not compile, a
+  // fallback the scene's model would take): the whole set fails, as the README promises
+  const refused = await refusedValues(s.schema, s.getValues(), r.patch, s.checkValues);
+  if (refused.length) {
+    refuse(id, origin, refused);
+    return;
+  }
+  const now = scene;
+  if (!now || now.id !== s.id) {
+    reply(id, origin, { ok: false, error: 'Not applied: the page changed to another scene meanwhile.' });
+    return;
+  }
+  if (Object.keys(r.patch).length) now.setParams(r.patch);
   // the state after the change (the shell updates the values synchronously in setParams)
-  const state = hostState(scene);
+  const state = hostState(now);
   reply(id, origin, { ok: true, state });
   maybeEmitChange(state, 'host');
 }
 
+/** The reply to a request whose `version` is not this protocol's (a number). */
+export function versionError(v: unknown): string {
+  const V = PROTOCOL_VERSION;
+  if (typeof v === 'string')
+    return `Protocol version ${JSON.stringify(clip(v, 12))} is a string; send version: ${V} (the number ${V}).`;
+  if (v === undefined) return `The request has no version; send version: ${V}.`;
+  const shown = typeof v === 'number' ? String(v) : typeName(v);
+  return `Protocol version ${shown} is not supported; this app speaks version ${V}.`;
+}
+
 function onMessage(e: MessageEvent): void {
   if (!framed() || e.source !== window.parent) return;
-  if (allowed.length && !allowed.includes(e.origin)) return;
+  // no `origin=`: any parent; `origin=` (even one naming nothing usable): only its origins
+  if (allowed !== null && !allowed.includes(e.origin)) return;
   const d: unknown = e.data;
   if (typeof d !== 'object' || d === null) return;
   const m = d as Record<string, unknown>;
@@ -193,7 +291,7 @@ function onMessage(e: MessageEvent): void {
   if (m.version !== PROTOCOL_VERSION) {
     reply(m.id, e.origin, {
       ok: false,
-      error: `Protocol version ${String(m.version).slice(0, 12)} is not supported; this app speaks version ${PROTOCOL_VERSION}.`,
+      error: versionError(m.version),
     });
     return;
   }
@@ -269,7 +367,7 @@ function onVerdict(e: Event): void {
 }
 
 /** The page-wide bridge (call once, in the app): listens for requests and practice verdicts. */
-export function useHostApi(origins: readonly string[]): void {
+export function useHostApi(origins: readonly string[] | null): void {
   useEffect(() => {
     allowed = origins;
   }, [origins]);

@@ -3,10 +3,13 @@ import { createRoot } from 'react-dom/client';
 import { App } from './App';
 import '../ui/styles.css';
 import { whenQuiet } from '../ui/whenQuiet';
-import { findScene, sceneLoader } from '../scenes/registry';
-import { parseHash } from './route';
+import { findScene } from '../kit/catalogue';
+import { sceneLoader } from '../scenes/registry';
+import { parseHash } from '../kit/shell';
 import { firstScreen } from './firstScreen';
 import { afterPaint } from '../ui/afterPaint';
+import { markBuildReplaced } from './staleBuild';
+import { showUpdateNotice } from './updateNotice';
 
 // The opened scene's chunk is requested now, while React mounts the shell, not once the shell has
 // rendered (index.html has already started downloading it: scripts/routePreload.ts; issue 15). The
@@ -68,12 +71,16 @@ if (
   'serviceWorker' in navigator &&
   /^https?:$/.test(window.location.protocol)
 ) {
-  // A page of the old build reloads, whole, as soon as a new build's worker takes over (another
-  // tab's "Reload"), even before this page has registered (it waits for quiet): its lazy chunks
-  // would otherwise be looked up in the new build's cache. Not on the first install's claim.
-  const hadController = navigator.serviceWorker.controller !== null;
+  // A new build's worker taking over this page (another tab's Reload) does not reload it: its
+  // reader may be typing. The page keeps running its build and says it was updated; a lazy chunk it
+  // then cannot load (gone with the old build) reloads it onto the new one (staleBuild.ts). The
+  // first controllerchange of a page that loaded without a controller is the first install's claim.
+  let controllers = navigator.serviceWorker.controller ? 1 : 0;
   navigator.serviceWorker.addEventListener('controllerchange', () => {
-    if (hadController) window.location.reload();
+    controllers += 1;
+    if (controllers < 2) return;
+    markBuildReplaced();
+    showUpdateNotice(() => window.location.reload());
   });
   const start = () =>
     void (opened ? firstScreen(10_000) : Promise.resolve())

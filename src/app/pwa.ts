@@ -1,44 +1,21 @@
 /**
  * Service-worker registration (loaded lazily from main.tsx after the page has loaded, so it adds
  * nothing to the entry but one dynamic import). The worker precaches the whole build; when a new
- * build is deployed, its worker waits and this shows an unobtrusive notice: reloading activates it
- * and reloads the page, so a page never mixes chunks of two builds.
+ * build is deployed, its worker waits and every open page shows an unobtrusive notice. Clicking
+ * Reload activates the new worker and reloads that page once the new worker controls it; other
+ * pages keep running their build until their reader reloads them (main.tsx, staleBuild.ts).
+ *
+ * Plain service-worker API, not vite-plugin-pwa's registerSW: that helper reloads every page that
+ * had shown the notice as soon as the new worker takes over (discarding another tab's typed work),
+ * and never reloads a page that had no controller when it loaded (a first visit), so such a page
+ * stayed on the old build after its reader clicked Reload.
  */
-import { registerSW } from 'virtual:pwa-register';
-
-let shown = false;
-
-function showUpdateNotice(update: () => void): void {
-  if (shown) return;
-  shown = true;
-  // built with DOM calls and textContent only (no HTML strings)
-  const box = document.createElement('div');
-  box.className = 'update-notice';
-  box.setAttribute('role', 'status');
-  box.dataset.testid = 'update-notice';
-  const p = document.createElement('p');
-  p.textContent = 'Render Math Lab was updated.';
-  const reload = document.createElement('button');
-  reload.type = 'button';
-  reload.textContent = 'Reload';
-  reload.addEventListener('click', () => {
-    reload.disabled = true;
-    update();
-  });
-  const later = document.createElement('button');
-  later.type = 'button';
-  later.className = 'link-button';
-  later.textContent = 'Later';
-  later.setAttribute('aria-label', 'Dismiss the update notice');
-  later.addEventListener('click', () => box.remove());
-  box.append(p, reload, later);
-  document.body.append(box);
-}
+import { showUpdateNotice } from './updateNotice';
 
 /**
  * The web app manifest's link (name, icons, standalone display) is added here, not in index.html:
  * browsers fetch the manifest and an icon as soon as they see it, which on a phone's first load
- * competed with the page's own scripts (issue 15).
+ * competed with the page's own scripts.
  */
 function linkManifest(): void {
   if (document.querySelector('link[rel="manifest"]')) return;
@@ -48,18 +25,59 @@ function linkManifest(): void {
   document.head.append(link);
 }
 
+let reloading = false;
+function reloadOnce(): void {
+  if (reloading) return;
+  reloading = true;
+  window.location.reload();
+}
+
+/**
+ * Activates the waiting worker and reloads this page as soon as it controls the page (whatever
+ * controlled the page when it loaded: nothing, on a first visit, or the old worker). When there is
+ * no waiting worker any more (another tab activated it), the new build is already in charge.
+ */
+export function activateAndReload(reg: ServiceWorkerRegistration): void {
+  const waiting = reg.waiting;
+  if (!waiting) {
+    reloadOnce();
+    return;
+  }
+  navigator.serviceWorker.addEventListener('controllerchange', reloadOnce, { once: true });
+  waiting.addEventListener('statechange', () => {
+    // activated: the controller changes with it (clientsClaim); redundant: another worker replaced
+    // it, and a reload picks up whatever is active now
+    if (waiting.state === 'activated' || waiting.state === 'redundant') reloadOnce();
+  });
+  waiting.postMessage({ type: 'SKIP_WAITING' });
+}
+
+/** A new build's worker is installed and waiting (this page runs an older build): say so. */
+function watch(reg: ServiceWorkerRegistration): void {
+  const offer = () => {
+    // no controller: this is the first install, which takes over by itself (nothing to reload)
+    if (reg.waiting && navigator.serviceWorker.controller) showUpdateNotice(() => activateAndReload(reg));
+  };
+  offer();
+  reg.addEventListener('updatefound', () => {
+    const w = reg.installing;
+    w?.addEventListener('statechange', () => {
+      if (w.state === 'installed') offer();
+    });
+  });
+  // look for a new build when the reader comes back to the tab, and every hour while it stays open
+  const update = () => void reg.update().catch(() => undefined);
+  document.addEventListener('visibilitychange', () => {
+    if (document.visibilityState === 'visible') update();
+  });
+  window.setInterval(update, 3_600_000);
+}
+
 export function registerPwa(): void {
   linkManifest();
-  // (Pages still running the old build in other tabs reload when the new build takes over:
-  // main.tsx's controllerchange listener does it from the start, before this registration, and
-  // registerSW's own 'controlling' handler too; tests/e2e/offline.spec.ts checks it.)
-  const updateSW = registerSW({
-    immediate: true,
-    onNeedRefresh() {
-      showUpdateNotice(() => void updateSW(true));
-    },
-    onRegisterError() {
+  navigator.serviceWorker
+    .register(new URL('sw.js', document.baseURI).href, { scope: './' })
+    .then(watch, () => {
       /* offline use is a bonus: the app works without it */
-    },
-  });
+    });
 }

@@ -1,5 +1,5 @@
 import { useEffect, useState } from 'react';
-import { parseHash, type Route } from './route';
+import { parseHash, type Route } from '../kit/shell';
 
 /** The current hash route; re-renders on hashchange (not on replaceState, which the shell itself does). */
 export function useHashRoute(): Route {

@@ -1,5 +1,5 @@
 import { useEffect } from 'react';
-import type { ShellFlags } from '../app/route';
+import type { ShellFlags } from '../kit/shell';
 import { LESSONS, MISCONCEPTIONS, presetHref } from './lessons';
 import './guide.css';
 

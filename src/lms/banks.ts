@@ -118,7 +118,7 @@ export function moodleXml(variants: readonly Variant[], appVersion: string): str
           .map((g) => `<p>${xmlEscape(g.prompt)}: ${clozeGap(g)}</p>`)
           .join('')}`;
       }),
-      `<p><small>Numbers within 0.5 % of the exact value are correct.</small></p>`,
+      `<p><small>Give numbers to at least 3 significant figures.</small></p>`,
     ].join('\n');
     out.push(
       [
@@ -149,11 +149,9 @@ function ident(s: string): string {
   return s.replace(/[^A-Za-z0-9_.-]/g, '_');
 }
 
-function tolAttrs(x: number): string {
-  // relative tolerance in QTI is a percentage; at an expected 0 the app's absolute floor applies
-  return x === 0
-    ? 'toleranceMode="absolute" tolerance="0.000001 0.000001"'
-    : 'toleranceMode="relative" tolerance="0.5 0.5"';
+function tolAttrs(g: { tol: number }): string {
+  // the bank's band around the value (gaps.ts bankTolerance), as an absolute tolerance
+  return `toleranceMode="absolute" tolerance="${num(g.tol)} ${num(g.tol)}"`;
 }
 
 function addScore(): string {
@@ -184,14 +182,14 @@ export function qtiItem(v: Variant, toMathml?: TexToMathml): string {
         `<responseDeclaration identifier="${r}" cardinality="single" baseType="float"><correctResponse><value>${num(g.value)}</value></correctResponse></responseDeclaration>`,
       );
       const branches = [
-        `<responseIf><equal ${tolAttrs(g.value)}><variable identifier="${r}"/><correct identifier="${r}"/></equal>${addScore()}</responseIf>`,
+        `<responseIf><equal ${tolAttrs(g)}><variable identifier="${r}"/><correct identifier="${r}"/></equal>${addScore()}</responseIf>`,
         ...g.alternatives.map(
           (a) =>
-            `<responseElseIf><equal ${tolAttrs(g.value)}><variable identifier="${r}"/><baseValue baseType="float">${num(a.value)}</baseValue></equal>${addScore()}</responseElseIf>`,
+            `<responseElseIf><equal ${tolAttrs(g)}><variable identifier="${r}"/><baseValue baseType="float">${num(a.value)}</baseValue></equal>${addScore()}</responseElseIf>`,
         ),
         ...g.mistakes.map(
           (m, k) =>
-            `<responseElseIf><equal ${tolAttrs(g.value)}><variable identifier="${r}"/><baseValue baseType="float">${num(m.value as number)}</baseValue></equal>${addFeedback(feedbackId(g.name, k))}</responseElseIf>`,
+            `<responseElseIf><equal ${tolAttrs(g)}><variable identifier="${r}"/><baseValue baseType="float">${num(m.value as number)}</baseValue></equal>${addFeedback(feedbackId(g.name, k))}</responseElseIf>`,
         ),
       ];
       rp.push(`<responseCondition>${branches.join('')}</responseCondition>`);
@@ -249,7 +247,7 @@ export function qtiItem(v: Variant, toMathml?: TexToMathml): string {
     '<outcomeDeclaration identifier="SCORE" cardinality="single" baseType="float"><defaultValue><value>0</value></defaultValue></outcomeDeclaration>',
     `<outcomeDeclaration identifier="MAXSCORE" cardinality="single" baseType="float"><defaultValue><value>${gaps.length}</value></defaultValue></outcomeDeclaration>`,
     '<outcomeDeclaration identifier="FEEDBACK" cardinality="multiple" baseType="identifier"/>',
-    `<itemBody><div><p>${xmlEscape(v.statement)}</p>${givensHtml(v, tex)}</div>\n${interactions}\n<p>Numbers within 0.5 % of the exact value are correct.</p></itemBody>`,
+    `<itemBody><div><p>${xmlEscape(v.statement)}</p>${givensHtml(v, tex)}</div>\n${interactions}\n<p>Give numbers to at least 3 significant figures.</p></itemBody>`,
     `<responseProcessing>${rp.join('')}</responseProcessing>`,
     ...fb,
     '</assessmentItem>',

@@ -1,15 +1,17 @@
 /**
  * A practice variant as the gaps of a question bank item (Moodle XML, QTI 2.1). A bank grades
  * what it can tell apart without the app's formula checker, so:
- *  - a number answer is a numeric gap with the app's tolerance (check.ts `tolerance`: 0.5 %
- *    relative, 10⁻⁶ absolute at 0); accepted conventions are full-credit answers, each named
+ *  - a number answer is a numeric gap with the tolerance the app allows the fewest figures it
+ *    accepts ({@link bankTolerance}: the answer rounded to 3 significant figures passes, as it does
+ *    on the practice page; a bank cannot see how many figures were typed, so more precise wrong
+ *    values within that band pass too); accepted conventions are full-credit answers, each named
  *    mistake a no-credit answer with its message as feedback;
  *  - a number answer whose expected value is "none" is a text gap answered `none`;
  *  - a formula answer becomes the formula's value at a stated point of its domain (a numeric gap;
  *    the mistakes' formulas evaluated at the same point keep their feedback);
  *  - a choice is a choice gap.
  */
-import { numbersSeparated, tolerance } from '../practice/check';
+import { NUMERIC_POLICY, numbersSeparated } from '../practice/check';
 import { allAnswers, fmt, type AnswerSpec, type Variant } from '../practice/model';
 
 export interface GapMistake {
@@ -45,6 +47,16 @@ export type Gap =
       mistakes: GapMistake[];
     };
 
+/**
+ * Half a unit in the last of the fewest significant figures the practice checker accepts for a
+ * typed decimal (NUMERIC_POLICY.minSigFigs = 3): 0.5 × 10^(⌊log₁₀|e|⌋ − 2); the exact floor at 0.
+ */
+export function bankTolerance(e: number): number {
+  if (e === 0 || !Number.isFinite(e)) return NUMERIC_POLICY.exactAtol;
+  const t = 0.5 * 10 ** (Math.floor(Math.log10(Math.abs(e))) - (NUMERIC_POLICY.minSigFigs - 1));
+  return Number(t.toPrecision(6));
+}
+
 /** A round point inside the domain where the expected formula is finite. */
 function formulaPoint(spec: Extract<AnswerSpec, { kind: 'formula' }>): number[] | null {
   for (const f of [0.3, 0.4, 0.6, 0.7, 0.2, 0.8]) {
@@ -55,12 +67,17 @@ function formulaPoint(spec: Extract<AnswerSpec, { kind: 'formula' }>): number[] 
   return null;
 }
 
-/** Keep values that a tolerance can tell from every value kept before them. */
+/**
+ * Keep values that the bank's tolerance band can tell from every value kept before them (farther
+ * apart than two bands, so no typed value is in both).
+ */
 function separated<T extends { value: number }>(first: number[], xs: T[]): T[] {
   const seen = [...first];
   const out: T[] = [];
+  const apart = (a: number, b: number) =>
+    numbersSeparated(a, b) && Math.abs(a - b) > bankTolerance(a) + bankTolerance(b);
   for (const x of xs) {
-    if (!Number.isFinite(x.value) || seen.some((s) => !numbersSeparated(s, x.value))) continue;
+    if (!Number.isFinite(x.value) || seen.some((s) => !apart(s, x.value))) continue;
     seen.push(x.value);
     out.push(x);
   }
@@ -95,7 +112,7 @@ export function gapOf(spec: AnswerSpec): Gap | null {
       label: spec.label,
       prompt: spec.label,
       value: spec.expected,
-      tol: tolerance(spec.expected),
+      tol: bankTolerance(spec.expected),
       alternatives,
       mistakes: separated(
         [spec.expected, ...alternatives.map((a) => a.value)],
@@ -121,7 +138,7 @@ export function gapOf(spec: AnswerSpec): Gap | null {
     label: spec.label,
     prompt: `${spec.label} at ${at} (the value of your formula there)`,
     value,
-    tol: tolerance(value),
+    tol: bankTolerance(value),
     alternatives,
     mistakes,
   };

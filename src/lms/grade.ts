@@ -4,16 +4,16 @@
  * come from the practice checker itself, so a score recomputed here is the score the page showed,
  * and a results file whose verdicts were edited by hand cannot raise it.
  */
-import { checkAnswer } from '../practice/check';
 import { allAnswers, QUESTION_IDS, type AnswerSpec, type QuestionId, type Variant } from '../practice/model';
 import { questionInfo } from '../practice/questions';
+import { gradeAnswers } from '../practice/session';
 
 export interface GradedAnswer {
   name: string;
   label: string;
   kind: AnswerSpec['kind'];
   response: string;
-  /** correct | incorrect | invalid | mistake:<id> | blank */
+  /** correct | consistent | incorrect | invalid | mistake:<id> | blank */
   verdict: string;
   message: string;
 }
@@ -47,23 +47,29 @@ export function mistakeOf(verdict: string): string | null {
   return verdict.startsWith('mistake:') ? verdict.slice('mistake:'.length) : null;
 }
 
-/** Check every typed answer of (q, seed); blank answers are 'blank' and score nothing. */
+/**
+ * Check every typed answer of (q, seed) as the practice page does; blank answers are 'blank'. The
+ * score counts correct answers (a follow-through 'consistent' answer is not counted).
+ */
 export async function gradeAttempt(
   q: QuestionId,
   seed: number,
   responses: Readonly<Record<string, string>>,
 ): Promise<GradedAttempt> {
   const v = variantOf(q, seed);
-  const out: GradedAnswer[] = [];
-  for (const a of allAnswers(v)) {
-    const response = typeof responses[a.name] === 'string' ? responses[a.name].slice(0, 500) : '';
-    if (response.trim() === '') {
-      out.push({ name: a.name, label: a.label, kind: a.kind, response, verdict: 'blank', message: '' });
-      continue;
-    }
-    const r = await checkAnswer(a, response);
-    out.push({ name: a.name, label: a.label, kind: a.kind, response, verdict: r.value, message: r.message });
-  }
+  const texts: Record<string, string> = {};
+  for (const a of allAnswers(v))
+    texts[a.name] = typeof responses[a.name] === 'string' ? responses[a.name].slice(0, 500) : '';
+  // the page's own grading: conventions across the variant, follow-through from earlier answers
+  const verdicts = await gradeAnswers(v, texts);
+  const out: GradedAnswer[] = allAnswers(v).map((a) => ({
+    name: a.name,
+    label: a.label,
+    kind: a.kind,
+    response: texts[a.name],
+    verdict: verdicts[a.name]?.value ?? 'blank',
+    message: verdicts[a.name]?.message ?? '',
+  }));
   const score = out.filter((a) => a.verdict === 'correct').length;
   return { question: q, seed, answers: out, score, max: out.length };
 }

@@ -5,7 +5,7 @@
  * chain of parent windows, then the opener and its parents. Initializes, reads the learner id
  * (cmi.core.student_id / cmi.learner_id) from which the variant seeds derive, and resumes from
  * suspend_data. Each Check records one interaction per answered field (id, type fill-in, the typed
- * response, the expected answer, the result; the named mistake in the description in 2004, and as
+ * response, the expected answer, the result (neutral for a follow-through answer); the named mistake in the description in 2004, and as
  * the interaction's objective id in 1.2, which has no description), the score and the status, and
  * commits. Leaving the page sets the session time and exit = suspend, and terminates.
  *
@@ -228,7 +228,13 @@ export function connectScorm(config: LmsConfig, win: Window = window): ScormSess
           set(`${p}student_response`, fillIn(a.response, 255));
           set(
             `${p}result`,
-            a.verdict === 'correct' ? 'correct' : a.verdict === 'invalid' ? 'unanticipated' : 'wrong',
+            a.verdict === 'correct'
+              ? 'correct'
+              : a.verdict === 'invalid'
+                ? 'unanticipated'
+                : a.verdict === 'consistent'
+                  ? 'neutral'
+                  : 'wrong',
           );
         } else {
           set(`${p}id`, `urn:render-math-lab:${r.question}:${r.seed}:${a.name}`);
@@ -238,7 +244,13 @@ export function connectScorm(config: LmsConfig, win: Window = window): ScormSess
           set(`${p}learner_response`, fillIn(a.response, 250));
           set(
             `${p}result`,
-            a.verdict === 'correct' ? 'correct' : a.verdict === 'invalid' ? 'unanticipated' : 'incorrect',
+            a.verdict === 'correct'
+              ? 'correct'
+              : a.verdict === 'invalid'
+                ? 'unanticipated'
+                : a.verdict === 'consistent'
+                  ? 'neutral'
+                  : 'incorrect',
           );
           set(
             `${p}description`,

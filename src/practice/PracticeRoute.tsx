@@ -11,22 +11,39 @@
  */
 import { useCallback, useEffect, useMemo, useState, type FormEvent } from 'react';
 import { MathTex } from '../ui/MathTex';
-import { shellExtras, type ShellFlags } from '../app/route';
-import { checkAnswer, expectedText, FORMULA_POLICY, NUMERIC_POLICY, type Verdict } from './check';
+import { shellExtras, type ShellFlags } from '../kit/shell';
+import { expectedText, FORMULA_POLICY, NUMERIC_POLICY } from './check';
 import {
   allAnswers,
   fmt,
   QUESTION_IDS,
   type AnswerSpec,
   type Given,
+  type Part,
   type QuestionId,
+  type SolutionStep,
   type Variant,
 } from './model';
+import {
+  applyCheck,
+  gradeAnswers,
+  newSession,
+  partDone,
+  revealPart,
+  SCORING,
+  sessionScore,
+  showHint,
+  type AnswerProgress,
+  type PartProgress,
+  type Session,
+} from './session';
+import { loadScores, recordScore, resetScores, type Scores } from './scores';
 import { QUESTIONS, isQuestionId, questionInfo, sheetSeed } from './questions';
 import { loadProgress, recordCheck, resetProgress, type Progress } from './progress';
 import { extensionCheck, extensionInput, extensionRestore, extensionSeed } from './extensions';
 import { DownloadResults } from '../results/DownloadResults';
 import { LmsDownloads } from '../lms/LmsDownloads';
+import { loadDraft, saveDraft } from './drafts';
 import './practice.css';
 
 interface Props {
@@ -84,6 +101,7 @@ export default function PracticeRoute({ path, query, flags }: Props) {
 
 function PracticeHome({ flags }: { flags: ShellFlags }) {
   const [progress, setProgress] = useState<Progress>(() => loadProgress());
+  const [scores, setScores] = useState<Scores>(() => loadScores());
   const [status, setStatus] = useState('');
   const [sheetQs, setSheetQs] = useState<Record<QuestionId, boolean>>(
     () => Object.fromEntries(QUESTION_IDS.map((q) => [q, true])) as Record<QuestionId, boolean>,
@@ -131,6 +149,7 @@ function PracticeHome({ flags }: { flags: ShellFlags }) {
                   ? 'Not tried yet.'
                   : `${p.attempted.length} variant${p.attempted.length === 1 ? '' : 's'} tried, ${p.correct.length} fully correct.`}
               </p>
+              <BestScores q={q.id} scores={scores} flags={flags} />
             </li>
           );
         })}
@@ -141,6 +160,8 @@ function PracticeHome({ flags }: { flags: ShellFlags }) {
           data-testid="reset-progress"
           onClick={() => {
             setProgress(resetProgress());
+            resetScores();
+            setScores(loadScores());
             setStatus('Progress cleared.');
           }}
         >
@@ -194,6 +215,25 @@ function PracticeHome({ flags }: { flags: ShellFlags }) {
         ) : null}
       </section>
     </main>
+  );
+}
+
+/** The best marks kept for a question's variants (the three best, linked). */
+function BestScores({ q, scores, flags }: { q: QuestionId; scores: Scores; flags: ShellFlags }) {
+  const list = Object.entries(scores[q]).sort((a, b) => b[1] - a[1]);
+  if (!list.length) return null;
+  return (
+    <p className="practice-best muted" data-testid={`best-${q}`} data-count={list.length}>
+      Best marks:{' '}
+      {list.slice(0, 3).map(([seed, score], i) => (
+        <span key={seed}>
+          {i ? ', ' : ''}
+          <a href={`#/practice/${q}?seed=${seed}${extras(flags)}`}>variant {seed}</a>{' '}
+          {Math.round(score * 100)} %
+        </span>
+      ))}
+      {list.length > 3 ? ` (and ${list.length - 3} more)` : ''}.
+    </p>
   );
 }
 
@@ -253,17 +293,17 @@ function QuestionPage({
   problems: string[];
 }) {
   const info = questionInfo(variant.question);
-  const answers = allAnswers(variant);
+  // typed answers survive a reload of the tab (drafts.ts); an extension (the LMS runtime in a
+  // package) may hand back the learner's saved answers instead
   const [inputs, setInputs] = useState<Record<string, string>>(
-    () => extensionRestore(variant.question, variant.seed) ?? {},
+    () => extensionRestore(variant.question, variant.seed) ?? loadDraft(variant.question, variant.seed),
   );
-  useEffect(
-    () => extensionInput(variant.question, variant.seed, inputs),
-    [inputs, variant.question, variant.seed],
-  );
-  const [verdicts, setVerdicts] = useState<Record<string, Verdict>>({});
+  useEffect(() => {
+    saveDraft(variant.question, variant.seed, inputs);
+    extensionInput(variant.question, variant.seed, inputs);
+  }, [inputs, variant.question, variant.seed]);
+  const [session, setSession] = useState<Session>(() => newSession(variant));
   const [checking, setChecking] = useState(false);
-  const [revealed, setRevealed] = useState(false);
   const [summary, setSummary] = useState('');
   useEffect(() => {
     document.title = `Practice Q${info.n} (variant ${variant.seed}) — Render Math Lab`;
@@ -273,46 +313,54 @@ function QuestionPage({
     async (e?: FormEvent) => {
       e?.preventDefault();
       setChecking(true);
-      const out: Record<string, Verdict> = {};
-      for (const a of answers) {
-        const text = inputs[a.name] ?? '';
-        if (text.trim() === '') continue;
-        const v = await checkAnswer(a, text);
-        out[a.name] = v;
-        window.dispatchEvent(
-          new CustomEvent('rml:practice-verdict', {
-            detail: { question: variant.question, seed: variant.seed, name: a.name, verdict: v.value },
-          }),
-        );
-      }
-      setVerdicts(out);
+      const verdicts = await gradeAnswers(variant, inputs);
+      const next = applyCheck(variant, session, inputs, verdicts);
+      for (const p of variant.parts)
+        for (const a of p.answers) {
+          const v = verdicts[a.name];
+          if (!v) continue;
+          window.dispatchEvent(
+            new CustomEvent('rml:practice-verdict', {
+              detail: {
+                question: variant.question,
+                seed: variant.seed,
+                name: a.name,
+                verdict: v.value,
+                part: p.id,
+                attempt: next.parts[p.id].attempts,
+                credit: next.answers[a.name].last,
+              },
+            }),
+          );
+        }
+      setSession(next);
       setChecking(false);
-      setRevealed(true);
-      const vals = Object.values(out);
-      const nCorrect = vals.filter((v) => v.value === 'correct').length;
-      const nMistake = vals.filter((v) => v.value.startsWith('mistake:')).length;
-      const nInvalid = vals.filter((v) => v.value === 'invalid').length;
-      const blank = answers.length - vals.length;
+      const answers = allAnswers(variant);
+      const vals = Object.values(verdicts);
+      if (vals.length === 0) {
+        setSummary('Nothing to check yet: type an answer first.');
+        return;
+      }
+      const nCorrect = answers.filter((a) => next.answers[a.name].verdict?.value === 'correct').length;
+      const score = sessionScore(variant, next);
       setSummary(
-        vals.length === 0
-          ? 'Nothing to check yet: type an answer first. (The worked solution is below.)'
-          : `${nCorrect} of ${answers.length} correct${nMistake ? `, ${nMistake} classic mistake${nMistake === 1 ? '' : 's'} named` : ''}${nInvalid ? `, ${nInvalid} not readable` : ''}${blank ? `, ${blank} not answered` : ''}.`,
+        `${nCorrect} of ${answers.length} correct · ${fmtMarks(score.marks)} of ${score.total} marks (best kept).`,
       );
-      if (vals.length > 0) recordCheck(variant.question, variant.seed, nCorrect === answers.length);
-      if (vals.length > 0)
-        extensionCheck({
-          question: variant.question,
-          seed: variant.seed,
-          answers: answers.map((a) => ({
-            name: a.name,
-            response: inputs[a.name] ?? '',
-            verdict: out[a.name]?.value ?? 'blank',
-            message: out[a.name]?.message ?? '',
-          })),
-          time: new Date().toISOString(),
-        });
+      recordCheck(variant.question, variant.seed, nCorrect === answers.length);
+      recordScore(variant.question, variant.seed, score.marks / score.total);
+      extensionCheck({
+        question: variant.question,
+        seed: variant.seed,
+        answers: answers.map((a) => ({
+          name: a.name,
+          response: inputs[a.name] ?? '',
+          verdict: verdicts[a.name]?.value ?? 'blank',
+          message: verdicts[a.name]?.message ?? '',
+        })),
+        time: new Date().toISOString(),
+      });
     },
-    [answers, inputs, variant.question, variant.seed],
+    [variant, inputs, session],
   );
 
   const newVariant = () => {
@@ -321,6 +369,8 @@ function QuestionPage({
     window.location.hash = `#/practice/${variant.question}?seed=${s}${extras(flags)}`;
   };
   const sceneHref = `${variant.sceneHref}${extras(flags)}`;
+  const allShown = variant.parts.every((p) => session.parts[p.id].revealed || partDone(p, session));
+  const next = nextSteps(variant, session);
 
   return (
     <main id="main" className={`page practice practice-question practice-${variant.question}`} tabIndex={-1}>
@@ -360,52 +410,67 @@ function QuestionPage({
       </section>
       <form className="panel practice-answers" onSubmit={check} noValidate aria-labelledby="answers-title">
         <h2 id="answers-title">Your answers</h2>
-        <details className="policy">
-          <summary>How answers are checked</summary>
+        <p className="muted practice-howto">
+          Answer any part and press <strong>Check</strong>: only what you typed is graded. Each part has a
+          hint and its own <strong>Show answer</strong>.
+        </p>
+        <details className="policy" data-testid="policy">
+          <summary>How answers are checked and marked</summary>
           <p>{NUMERIC_POLICY.text}</p>
           <p>{FORMULA_POLICY.text}</p>
           <p>
             Classic mistakes the key deducts marks for are recognised and named. Where the key accepts another
-            convention (v′ = 1 − v), it is accepted and said so.
+            convention (the grid read with v′ = 1 − v in Q3), it is accepted and said so, as long as every
+            answer of the variant uses the same one.
           </p>
+          <p data-testid="scoring-policy">{SCORING.text}</p>
         </details>
         {variant.parts.map((part) => (
-          <fieldset key={part.id} className="practice-part">
-            <legend>{part.prompt}</legend>
-            {part.answers.map((a) => (
-              <AnswerRow
-                key={a.name}
-                spec={a}
-                value={inputs[a.name] ?? ''}
-                onChange={(t) => setInputs((s) => ({ ...s, [a.name]: t }))}
-                verdict={verdicts[a.name]}
-                revealed={revealed}
-              />
-            ))}
-          </fieldset>
+          <PartBlock
+            key={part.id}
+            part={part}
+            progress={session.parts[part.id]}
+            answers={session.answers}
+            inputs={inputs}
+            onInput={(name, t) => setInputs((s) => ({ ...s, [name]: t }))}
+            onHint={() => setSession((s) => showHint(s, part.id))}
+            onReveal={() => setSession((s) => revealPart(s, part.id))}
+          />
         ))}
         <div className="practice-actions">
           <button type="submit" className="primary" disabled={checking}>
             Check
           </button>
-          <button type="button" onClick={() => setRevealed(true)} data-testid="show-solution">
-            Show solution
-          </button>
           <span role="status" className="practice-summary" data-testid="practice-summary">
             {checking ? 'Checking…' : summary}
           </span>
         </div>
+        {next.length && !checking && summary ? (
+          <div className="practice-next" data-testid="practice-next">
+            <strong>What next:</strong>
+            <ul>
+              {next.map((n) => (
+                <li key={n}>{n}</li>
+              ))}
+            </ul>
+          </div>
+        ) : null}
+        <p className="practice-giveup">
+          <button
+            type="button"
+            onClick={() => setSession((s) => variant.parts.reduce((acc, p) => revealPart(acc, p.id), s))}
+            data-testid="show-solution"
+          >
+            Show all answers and the worked solution
+          </button>{' '}
+          <span className="muted">(parts not yet right then earn no more marks)</span>
+        </p>
       </form>
       <DownloadResults />
-      {revealed ? (
+      {allShown ? (
         <section className="panel practice-solution" aria-labelledby="solution-title" data-testid="solution">
           <h2 id="solution-title">Worked solution of variant {variant.seed}</h2>
-          {variant.solution.map((s, i) => (
-            <div key={i} className="solution-step">
-              {s.text ? <p>{s.text}</p> : null}
-              {s.tex ? <MathTex tex={s.tex} display /> : null}
-            </div>
-          ))}
+          <SolutionSteps steps={variant.solution} />
           {variant.notes.map((n) => (
             <p key={n} className="muted">
               {n}
@@ -422,28 +487,156 @@ function QuestionPage({
   );
 }
 
+function fmtMarks(x: number): string {
+  return String(Math.round(x * 100) / 100);
+}
+
+/** What the student could do next: the parts to retry, with the hint or answer on offer. */
+function nextSteps(v: Variant, s: Session): string[] {
+  const out: string[] = [];
+  for (const p of v.parts) {
+    const st = s.parts[p.id];
+    const tried = p.answers.filter((a) => s.answers[a.name].verdict);
+    const wrong = tried.filter((a) => s.answers[a.name].verdict!.value !== 'correct');
+    const name = `(${p.id})`;
+    if (wrong.length) {
+      const labels = wrong.map((a) => a.label).join(', ');
+      out.push(
+        st.revealed
+          ? `${name} ${labels}: compare with the answer shown under the part.`
+          : `${name} ${labels}: read the message, ${st.hint ? 'use the hint, ' : 'take the hint, '}and check again (${SCORING.revealAfter - st.wrong} wrong ${SCORING.revealAfter - st.wrong === 1 ? 'attempt' : 'attempts'} left before the answer is shown).`,
+      );
+    } else if (tried.length && tried.length < p.answers.length)
+      out.push(`${name} The rest of this part is not answered yet.`);
+  }
+  const untouched = v.parts.filter((p) => p.answers.every((a) => !s.answers[a.name].verdict));
+  if (untouched.length && untouched.length < v.parts.length)
+    out.push(`Not answered yet: ${untouched.map((p) => `(${p.id})`).join(', ')}.`);
+  if (!out.length && v.parts.every((p) => partDone(p, s)))
+    out.push('Every answer is right. Try a new variant, or open the scene to see it move.');
+  return out;
+}
+
+function SolutionSteps({ steps }: { steps: SolutionStep[] }) {
+  return (
+    <>
+      {steps.map((s, i) => (
+        <div key={i} className="solution-step">
+          {s.text ? <p>{s.text}</p> : null}
+          {s.tex ? <MathTex tex={s.tex} display /> : null}
+        </div>
+      ))}
+    </>
+  );
+}
+
+function PartBlock({
+  part,
+  progress,
+  answers,
+  inputs,
+  onInput,
+  onHint,
+  onReveal,
+}: {
+  part: Part;
+  progress: PartProgress;
+  answers: Session['answers'];
+  inputs: Record<string, string>;
+  onInput: (name: string, text: string) => void;
+  onHint: () => void;
+  onReveal: () => void;
+}) {
+  const done = part.answers.every((a) => answers[a.name].verdict?.value === 'correct');
+  const open = progress.revealed !== null || done;
+  const marks = part.answers.reduce((m, a) => m + answers[a.name].best, 0);
+  const left = SCORING.revealAfter - progress.wrong;
+  return (
+    <fieldset className="practice-part" data-testid={`part-${part.id}`}>
+      <legend>{part.prompt}</legend>
+      {part.answers.map((a) => (
+        <AnswerRow
+          key={a.name}
+          spec={a}
+          value={inputs[a.name] ?? ''}
+          onChange={(t) => onInput(a.name, t)}
+          progress={answers[a.name]}
+          revealed={open}
+        />
+      ))}
+      <div className="part-tools">
+        <span
+          className="part-status"
+          data-testid={`attempts-${part.id}`}
+          data-attempts={progress.attempts}
+          data-wrong={progress.wrong}
+        >
+          {progress.attempts === 0
+            ? 'Not checked yet.'
+            : `${progress.attempts} attempt${progress.attempts === 1 ? '' : 's'}, ${progress.wrong} wrong · ${fmtMarks(marks)} of ${part.answers.length} mark${part.answers.length === 1 ? '' : 's'}`}
+          {progress.revealed === 'attempts' ? ' · answer shown after 3 wrong attempts' : ''}
+          {progress.revealed === 'asked' ? ' · answer shown' : ''}
+          {!open && progress.wrong > 0
+            ? ` · ${left} wrong attempt${left === 1 ? '' : 's'} before the answer is shown`
+            : ''}
+        </span>
+        {!progress.hint && !open ? (
+          <button type="button" onClick={onHint} data-testid={`hint-${part.id}`}>
+            Hint
+          </button>
+        ) : null}
+        {progress.revealed === null && !done ? (
+          <button type="button" onClick={onReveal} data-testid={`show-answer-${part.id}`}>
+            Show answer
+          </button>
+        ) : null}
+      </div>
+      {progress.hint && !open ? (
+        <div className="part-hint" data-testid={`hint-text-${part.id}`}>
+          <strong>Hint:</strong> <SolutionSteps steps={part.hint} />
+        </div>
+      ) : null}
+      {open ? (
+        <div className="part-solution" data-testid={`part-solution-${part.id}`}>
+          <h3 className="part-solution-title">Worked step</h3>
+          <SolutionSteps steps={part.steps} />
+        </div>
+      ) : null}
+    </fieldset>
+  );
+}
+
 function answerHint(spec: AnswerSpec): string {
   if (spec.kind === 'formula') return `formula in ${spec.variables.join(', ')}`;
   if (spec.kind === 'choice') return spec.options.join(' · ');
   return 'number, expression or none';
 }
 
+function verdictTag(value: string): string {
+  if (value === 'correct') return '✓ correct';
+  if (value === 'consistent') return '≈ follow-through';
+  if (value.startsWith('mistake:')) return `✗ ${value}`;
+  if (value === 'invalid') return '? not readable';
+  return '✗ incorrect';
+}
+
 function AnswerRow({
   spec,
   value,
   onChange,
-  verdict,
+  progress,
   revealed,
 }: {
   spec: AnswerSpec;
   value: string;
   onChange: (t: string) => void;
-  verdict: Verdict | undefined;
+  progress: AnswerProgress;
   revealed: boolean;
 }) {
   const id = `answer-${spec.name}`;
   const listId = spec.kind === 'choice' ? `${id}-options` : undefined;
   const exp = expectedText(spec);
+  const verdict = progress.verdict;
   const kind = verdict ? (verdict.value.startsWith('mistake:') ? 'mistake' : verdict.value) : null;
   return (
     <div className={`answer-row${kind ? ` is-${kind}` : ''}`}>
@@ -477,24 +670,27 @@ function AnswerRow({
           id={`verdict-${spec.name}`}
           data-testid={`verdict-${spec.name}`}
           data-value={verdict.value}
+          data-credit={progress.last}
         >
-          <span className="verdict-tag">
-            {kind === 'correct'
-              ? '✓ correct'
-              : kind === 'mistake'
-                ? `✗ ${verdict.value}`
-                : kind === 'invalid'
-                  ? '? not readable'
-                  : '✗ incorrect'}
-          </span>{' '}
-          {verdict.message}
+          <span className="verdict-tag">{verdictTag(verdict.value)}</span> {verdict.message}
+          {verdict.value !== 'invalid' &&
+          verdict.value !== 'incorrect' &&
+          !verdict.value.startsWith('mistake:') ? (
+            <span className="verdict-credit"> (+{fmtMarks(progress.last)} mark)</span>
+          ) : null}
         </p>
       ) : null}
       {revealed ? (
         <p className="expected">
           Expected:{' '}
           <output data-testid={`expected-${spec.name}`} data-value={exp} title={exp}>
-            {spec.kind === 'number' && spec.expected !== null ? fmt(spec.expected, 6) : exp}
+            {spec.tex ? (
+              <MathTex tex={spec.tex} />
+            ) : spec.kind === 'number' && spec.expected !== null ? (
+              fmt(spec.expected, 6)
+            ) : (
+              exp
+            )}
           </output>
         </p>
       ) : null}

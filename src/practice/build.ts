@@ -9,7 +9,6 @@ import type {
   Fn,
   NumberAlternative,
   NumberAnswer,
-  Rational,
 } from './model';
 import { Rng } from '../core/random';
 
@@ -73,12 +72,6 @@ export function pick<T>(rng: Rng, xs: readonly T[]): T {
 /** A uniform integer in [lo, hi]. */
 export function intIn(rng: Rng, lo: number, hi: number): number {
   return lo + rng.nextInt(hi - lo + 1);
-}
-
-/** mathjs text of a rational, parenthesised when it is a fraction or negative. */
-export function ratParen(r: Rational): string {
-  if (r.q === 1) return r.p < 0 ? `(${r.p})` : String(r.p);
-  return `(${r.p}/${r.q})`;
 }
 
 /** Query string from entries (values URI-encoded, commas kept readable). */

@@ -1,22 +1,23 @@
 /**
  * Checking a student's answers the way a careful grader would (STACK / PrairieLearn / WeBWorK style).
  *
- * Numbers ({@link NUMERIC_POLICY}): a plain number or an arithmetic expression of constants
- * (`56/3`, `2/(e^(2*pi)-1)`, `sqrt(2)/2`), read by the app's whitelisted expression compiler.
- * An answer x is correct when |x − e| ≤ 0.5 % of |e| (so any correct rounding to 3 significant
- * figures passes, and so does the exact value), or |x| ≤ 10⁻⁶ when e = 0. "none" answers a
- * quantity that does not exist (no root, no hit).
+ * Numbers ({@link NUMERIC_POLICY}): a decimal, or an arithmetic expression of constants (`56/3`,
+ * `2/(e^(2*pi)-1)`, `sqrt(2)/2`) read by the app's whitelisted expression compiler. An expression is
+ * compared exactly (10⁻⁹ relative): a near miss such as 3/e^(3π) for 3/(e^(3π) − 1) is never
+ * correct. A decimal is compared at the precision it was typed to, as STACK's significant-figure
+ * tests do: it must be the answer rounded to its last digit (half a unit there), with at least 3
+ * significant figures. "none" answers a quantity that does not exist (no root, no hit).
  *
  * Formulas ({@link FORMULA_POLICY}): mathjs syntax in the question's variable, compiled by the same
  * whitelisted compiler the scenes use (src/core/expr), and compared with the expected formula at
  * 40 seeded random points of the open domain (WeBWorK's method): equivalent when every point agrees
- * to 10⁻⁶ relative. Points where the expected formula is not finite are skipped; a student formula
+ * to 10⁻⁸ relative. Points where the expected formula is not finite are skipped; a student formula
  * that is not finite where the expected one is fails.
  *
- * Order of recognition: correct, then an accepted convention (correct, with a note), then a
- * classic mistake (its id), else incorrect. Generators drop any mistake whose value is within
- * {@link SEPARATION} tolerances of the correct answer, an accepted convention, or another mistake,
- * so a correct answer can never be classed as a mistake.
+ * Recognition: the correct answer, an accepted convention (correct, with a note) or a classic
+ * mistake (its id), else incorrect. Generators drop any mistake no typed text could tell apart from
+ * the correct answer, an accepted convention or another mistake ({@link SEPARATION_RTOL}), so a
+ * correct answer typed exactly is never classed as a mistake, nor a mistake typed exactly as correct.
  */
 import { compileExpression } from '../core/expr';
 import { Rng } from '../core/random';
@@ -33,48 +34,96 @@ import type {
 } from './model';
 
 export const NUMERIC_POLICY = {
-  /** Relative tolerance: half a unit in the third significant figure (worst case). */
-  rtol: 0.005,
-  /** Absolute tolerance when the expected value is exactly 0. */
-  zeroTol: 1e-6,
-  text: 'Numbers: type a number or an arithmetic expression such as 56/3 or 2*pi. An answer within 0.5 % of the exact value is correct, so 3 significant figures are enough (give more if you have them). Type none where a quantity does not exist.',
+  /** An exact expression (56/3, 2/(e^(2*pi) - 1)) must agree to this relative tolerance. */
+  exactRtol: 1e-9,
+  /** Absolute floor of the exact comparison (for answers that are exactly 0). */
+  exactAtol: 1e-15,
+  /** A typed decimal that is not exact needs at least this many significant figures. */
+  minSigFigs: 3,
+  text: 'Numbers: type a decimal (0.00374, 3.74e-3) or an exact expression (56/3, 2/(e^(2*pi) - 1), sqrt(2)/2). An expression must be exactly right (to 9 digits). A decimal is read at the precision you typed it: 0.00374 means 0.003735 to 0.003745, so it must be the right answer rounded to the figures you give, with at least 3 significant figures. A value that is a classic mistake rather than the right answer is named as that mistake; if, to the figures you typed, it is both, it is marked correct with a note to give more figures. Type none where a quantity does not exist.',
 } as const;
 
 export const FORMULA_POLICY = {
   points: 40,
-  rtol: 1e-6,
-  text: 'Formulas: type them in mathjs syntax, e.g. 2*sin(theta)*cos(theta), (1 - cos(2*theta))/2, acos(1 - 2*xi)/2, log(1 + (e^(2*pi) - 1)*xi). Use theta, phi and xi (θ, φ, ξ, ξ₁, ξ₂ work too; ln means log). A formula is correct when it equals the expected one at 40 random points of the domain (to 6 digits) — any equivalent form is accepted.',
+  rtol: 1e-8,
+  text: 'Formulas: type them in mathjs syntax, e.g. 2*sin(theta)*cos(theta), (1 - cos(2*theta))/2, acos(1 - 2*xi)/2, log(1 + (e^(2*pi) - 1)*xi). Use theta, phi and xi (θ, φ, ξ, ξ₁, ξ₂ work too; ln means log). A formula is correct when it equals the expected one at 40 random points of the domain (to 8 digits): any equivalent form is accepted.',
 } as const;
 
-/** Mistakes closer than this many tolerances to a correct value are dropped by the generators. */
-export const SEPARATION = 4;
+/**
+ * Mistakes and conventions whose values differ from the correct answer (and from each other) by
+ * less than this relative amount are dropped by the generators: no typed text could tell them apart.
+ */
+export const SEPARATION_RTOL = 1e-7;
 
 /** What a verdict's data-value says. */
-export type VerdictValue = 'correct' | 'incorrect' | 'invalid' | `mistake:${string}`;
+export type VerdictValue = 'correct' | 'incorrect' | 'invalid' | 'consistent' | `mistake:${string}`;
 
 export interface Verdict {
   value: VerdictValue;
   message: string;
+  /**
+   * The accepted convention the answer used (e.g. 'v-flip'), when it was correct only under it;
+   * a variant's parts must use one convention throughout.
+   */
+  convention?: string;
+  /** For `consistent`: the earlier answers (names) this one follows through from. */
+  from?: string[];
 }
 
 // ---------------------------------------------------------------------------------------------
 // Numbers
 
-/** Tolerance around an expected value (see {@link NUMERIC_POLICY}). */
-export function tolerance(e: number): number {
-  return e === 0 ? NUMERIC_POLICY.zeroTol : NUMERIC_POLICY.rtol * Math.abs(e);
+/** A number as typed: its value, and how precisely it was given. */
+export interface TypedNumber {
+  /** null: "none". */
+  value: number | null;
+  /** true for an expression or for a value given in full (the exact comparison applies). */
+  exact: boolean;
+  /** Half a unit in the last typed digit (decimals only). */
+  halfUnit: number;
+  /** Significant figures as typed (decimals only; Infinity for an exact value). */
+  sigFigs: number;
+  /** What was typed (for messages). */
+  text: string;
 }
 
-/** Whether x passes for e (null means "none"). */
+/** An exact typed value (what the tests and the pure classifier use). */
+export function exactNumber(x: number | null): TypedNumber {
+  return { value: x, exact: true, halfUnit: 0, sigFigs: Infinity, text: x === null ? 'none' : String(x) };
+}
+
+/** Tolerance of the exact comparison around e. */
+export function exactTolerance(e: number): number {
+  return Math.max(NUMERIC_POLICY.exactRtol * Math.abs(e), NUMERIC_POLICY.exactAtol);
+}
+
+/** Whether x equals e exactly, in the sense of {@link NUMERIC_POLICY} (null means "none"). */
 export function numbersMatch(x: number | null, e: number | null): boolean {
   if (e === null || x === null) return e === x;
-  return Math.abs(x - e) <= tolerance(e);
+  return Math.abs(x - e) <= exactTolerance(e);
 }
 
-/** Clearly different: farther apart than {@link SEPARATION} tolerances of either value. */
+/** Clearly different: no text could be both (relative {@link SEPARATION_RTOL}). */
 export function numbersSeparated(a: number | null, b: number | null): boolean {
   if (a === null || b === null) return a !== b;
-  return Math.abs(a - b) > SEPARATION * Math.max(tolerance(a), tolerance(b));
+  return (
+    Math.abs(a - b) >
+    SEPARATION_RTOL * Math.max(Math.abs(a), Math.abs(b), 1e-300) + 2 * NUMERIC_POLICY.exactAtol
+  );
+}
+
+/**
+ * Precision of a plain decimal as typed: half a unit in its last digit and its significant
+ * figures (leading zeros do not count; every other digit typed does, trailing zeros included).
+ * `s` must match {@link PLAIN_NUMBER}.
+ */
+export function decimalPrecision(s: string): { halfUnit: number; sigFigs: number } {
+  const m = /^[+-]?(\d*)(?:\.(\d*))?(?:[eE]([+-]?\d+))?$/.exec(s);
+  if (!m) return { halfUnit: 0, sigFigs: Infinity };
+  const frac = m[2] ?? '';
+  const exp = Number(m[3] ?? 0);
+  const sig = ((m[1] ?? '') + frac).replace(/^0+/, '').length;
+  return { halfUnit: 0.5 * 10 ** (exp - frac.length), sigFigs: sig };
 }
 
 const PLAIN_NUMBER = /^[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?$/;
@@ -108,18 +157,20 @@ export function normaliseInput(s: string): string {
     .trim();
 }
 
-export type ParsedNumber = { ok: true; value: number | null } | { ok: false; error: string };
+export type ParsedNumber = ({ ok: true } & TypedNumber) | { ok: false; error: string };
 
-/** Read a numeric answer: a number, "none", or an expression of constants. Never throws. */
+/** Read a numeric answer: a decimal, "none", or an expression of constants. Never throws. */
 export async function parseNumberAnswer(text: string): Promise<ParsedNumber> {
   const raw = text.trim();
   if (raw === '') return { ok: false, error: 'Type a number (or none).' };
   if (raw.length > 200) return { ok: false, error: 'That answer is too long for a number.' };
-  if (NONE_WORDS.has(raw.toLowerCase())) return { ok: true, value: null };
+  if (NONE_WORDS.has(raw.toLowerCase())) return { ok: true, ...exactNumber(null), text: raw };
   const s = normaliseInput(raw);
   if (PLAIN_NUMBER.test(s)) {
     const x = Number(s);
-    return Number.isFinite(x) ? { ok: true, value: x } : { ok: false, error: 'That number is too large.' };
+    if (!Number.isFinite(x)) return { ok: false, error: 'That number is too large.' };
+    const p = decimalPrecision(s);
+    return { ok: true, value: x + 0, exact: false, halfUnit: p.halfUnit, sigFigs: p.sigFigs, text: raw };
   }
   if (/^[+-]?\d+,\d+$/.test(s))
     return { ok: false, error: `Use a decimal point, not a comma: ${s.replace(',', '.')}.` };
@@ -127,32 +178,100 @@ export async function parseNumberAnswer(text: string): Promise<ParsedNumber> {
   if (!r.ok) return { ok: false, error: `Not a number: ${r.message}.` };
   const x = r.fn();
   if (!Number.isFinite(x)) return { ok: false, error: 'That expression has no finite value.' };
-  return { ok: true, value: x };
+  return { ok: true, ...exactNumber(x), text: raw };
 }
 
 /** Verdict of a numeric answer (see the module comment). */
 export async function checkNumber(spec: NumberAnswer, text: string): Promise<Verdict> {
   const p = await parseNumberAnswer(text);
   if (!p.ok) return { value: 'invalid', message: p.error };
-  return classifyNumber(spec, p.value);
+  return classifyTyped(spec, p);
 }
 
-/** The verdict for an already-read value (pure; used by the tests on every generated variant). */
+/** The verdict for an exact value (pure; used by the tests on every generated variant). */
 export function classifyNumber(spec: NumberAnswer, x: number | null): Verdict {
-  if (numbersMatch(x, spec.expected)) return { value: 'correct', message: 'Correct.' };
-  for (const a of spec.alternatives)
-    if (numbersMatch(x, a.value)) return { value: 'correct', message: `Correct — ${a.message}` };
-  for (const m of spec.mistakes)
-    if (numbersMatch(x, m.value)) return { value: `mistake:${m.id}`, message: m.message };
-  if (spec.expected === null)
-    return { value: 'incorrect', message: 'Not right: this quantity does not exist here (answer none).' };
-  if (x === null) return { value: 'incorrect', message: 'Not right: this quantity exists; give its value.' };
-  return { value: 'incorrect', message: 'Not right. Check each step against the worked solution.' };
+  return classifyTyped(spec, exactNumber(x));
+}
+
+interface Candidate {
+  kind: 'correct' | 'alternative' | 'mistake';
+  value: number | null;
+  alt?: NumberAlternative;
+  mistake?: NumberMistake;
+}
+
+function candidates(spec: NumberAnswer): Candidate[] {
+  return [
+    { kind: 'correct', value: spec.expected },
+    ...spec.alternatives.map((a): Candidate => ({ kind: 'alternative', value: a.value, alt: a })),
+    ...spec.mistakes.map((m): Candidate => ({ kind: 'mistake', value: m.value, mistake: m })),
+  ];
+}
+
+function verdictOf(c: Candidate, note = ''): Verdict {
+  if (c.kind === 'correct') return { value: 'correct', message: `Correct.${note}` };
+  if (c.kind === 'alternative')
+    return {
+      value: 'correct',
+      message: `Correct: ${c.alt!.message}${note}`,
+      ...(c.alt!.convention ? { convention: c.alt!.convention } : {}),
+    };
+  return { value: `mistake:${c.mistake!.id}`, message: c.mistake!.message };
 }
 
 /**
- * Keep the mistakes and conventions that a grader can tell apart: finite, clearly separated from
- * the correct answer, from the accepted conventions and from the mistakes kept before them.
+ * The verdict for a typed value. An exact value is compared exactly with the correct answer, the
+ * accepted conventions and the named mistakes. A decimal is compared at the precision it was typed
+ * to: it "is" every value it is a correct rounding of. Of those, the correct answer (or an accepted
+ * convention) wins, with a note when a named mistake rounds to the same figures; otherwise the
+ * nearest named mistake is named.
+ */
+export function classifyTyped(spec: NumberAnswer, t: TypedNumber): Verdict {
+  const cs = candidates(spec);
+  const x = t.value;
+  if (x === null || t.exact) {
+    for (const c of cs) if (numbersMatch(x, c.value)) return verdictOf(c);
+  } else {
+    const h = t.halfUnit * (1 + 1e-9) + exactTolerance(x);
+    const within = cs
+      .filter((c) => c.value !== null && Math.abs(x - c.value) <= h)
+      .sort((p, q) => Math.abs(x - p.value!) - Math.abs(x - q.value!));
+    const right = within.find((c) => c.kind !== 'mistake');
+    if (t.sigFigs < NUMERIC_POLICY.minSigFigs) {
+      // too few figures to be read at their precision: only a value typed in full counts
+      const same = cs.find((c) => numbersMatch(x, c.value));
+      if (same) return verdictOf(same);
+    }
+    if (right && t.sigFigs < NUMERIC_POLICY.minSigFigs)
+      return {
+        value: 'invalid',
+        message: `${t.text} has ${t.sigFigs} significant figure${t.sigFigs === 1 ? '' : 's'}: give at least ${NUMERIC_POLICY.minSigFigs}, or an exact expression.`,
+      };
+    if (right) {
+      const also = within.find((c) => c.kind === 'mistake');
+      return verdictOf(
+        right,
+        also
+          ? ` (To the figures you typed, this is also what the mistake “${also.mistake!.id}” gives; more figures would tell them apart.)`
+          : '',
+      );
+    }
+    if (within.length) return verdictOf(within[0]);
+  }
+  if (spec.expected === null)
+    return { value: 'incorrect', message: 'Not right: this quantity does not exist here (answer none).' };
+  if (x === null) return { value: 'incorrect', message: 'Not right: this quantity exists; give its value.' };
+  if (!t.exact && Math.abs(x - spec.expected) <= 0.01 * Math.abs(spec.expected))
+    return {
+      value: 'incorrect',
+      message: `Close, but not right to the figures you typed: ${t.text} is not the answer rounded to that precision. Check your rounding, or type more figures.`,
+    };
+  return { value: 'incorrect', message: 'Not right. Check each step of your working.' };
+}
+
+/**
+ * Keep the mistakes and conventions that a grader can tell apart: finite, separated from the
+ * correct answer, from the accepted conventions and from the mistakes kept before them.
  */
 export function separateNumbers(
   expected: number | null,

@@ -36,12 +36,35 @@ export interface NumberMistake {
 export interface NumberAlternative {
   value: number;
   message: string;
+  /** The convention's id (e.g. 'v-flip'): a variant's answers must use one convention throughout. */
+  convention?: string;
 }
 
-export interface NumberAnswer {
-  kind: 'number';
+/**
+ * What a student typed for an earlier answer, as the follow-through rules read it: a number (null
+ * for "none"), a compiled formula, or a chosen option.
+ */
+export type OwnValue = number | null | Fn | string;
+
+/**
+ * Follow-through: this answer recomputed from the student's own earlier answers `from`. `matches`
+ * says whether the student's answer is what their own (wrong) earlier answers give.
+ */
+export interface FollowRule {
+  from: readonly string[];
+  matches: (own: Readonly<Record<string, OwnValue>>, answer: OwnValue) => boolean;
+}
+
+interface AnswerBase {
   name: string;
   label: string;
+  /** The expected answer in the key's form, as TeX (the printed key); else the number or formula. */
+  tex?: string;
+  follow?: FollowRule[];
+}
+
+export interface NumberAnswer extends AnswerBase {
+  kind: 'number';
   /** The expected value; null where the answer is "none" (no root, no hit). */
   expected: number | null;
   alternatives: NumberAlternative[];
@@ -57,12 +80,11 @@ export interface FormulaMistake {
 export interface FormulaAlternative {
   fn: Fn;
   message: string;
+  convention?: string;
 }
 
-export interface FormulaAnswer {
+export interface FormulaAnswer extends AnswerBase {
   kind: 'formula';
-  name: string;
-  label: string;
   /** The variable names the student writes (one here: theta, phi or xi). */
   variables: readonly string[];
   /** Open interval of each variable where the two formulas are compared. */
@@ -80,10 +102,8 @@ export interface ChoiceMistake {
   message: string;
 }
 
-export interface ChoiceAnswer {
+export interface ChoiceAnswer extends AnswerBase {
   kind: 'choice';
-  name: string;
-  label: string;
   options: readonly string[];
   expected: string;
   mistakes: ChoiceMistake[];
@@ -93,17 +113,23 @@ export interface ChoiceAnswer {
 
 export type AnswerSpec = NumberAnswer | FormulaAnswer | ChoiceAnswer;
 
-/** One sub-question: a prompt and the answers it asks for. */
-export interface Part {
-  id: string;
-  prompt: string;
-  answers: AnswerSpec[];
-}
-
 /** One line of the worked solution: a sentence, a display formula, or both. */
 export interface SolutionStep {
   text?: string;
   tex?: string;
+}
+
+/** One sub-question: a prompt, the answers it asks for, its hint and its worked step. */
+export interface Part {
+  id: string;
+  prompt: string;
+  /** The prompt as printed on paper (no typing instructions), when it differs. */
+  paperPrompt?: string;
+  answers: AnswerSpec[];
+  /** One hint: the first step of this part's derivation, in the variant's numbers. */
+  hint: SolutionStep[];
+  /** This part's worked solution (every step the key awards marks for), in the variant's numbers. */
+  steps: SolutionStep[];
 }
 
 export interface Variant {
@@ -114,12 +140,20 @@ export interface Variant {
   statement: string;
   givens: Given[];
   parts: Part[];
+  /** The worked solution in full: {@link Variant.intro} (when any), then each part's steps. */
   solution: SolutionStep[];
+  /** Steps that come before every part (a table of the given data), if any. */
+  intro: SolutionStep[];
   /** Hash route of the matching scene in this variant's configuration. */
   sceneHref: string;
   sceneLabel: string;
   /** Remarks (e.g. what the scene does differently). */
   notes: string[];
+}
+
+/** The full worked solution from its intro and the parts' steps. */
+export function assembleSolution(intro: SolutionStep[], parts: Part[]): SolutionStep[] {
+  return [...intro, ...parts.flatMap((p) => p.steps)];
 }
 
 /** Every answer of a variant, in order. */

@@ -12,7 +12,21 @@
  */
 import { Rng } from '../core/random';
 import { formulaAnswer, numberAnswer, pick, query } from './build';
-import { fmt, ratTex, ratText, ratValue, tn, type Rational, type SolutionStep, type Variant } from './model';
+import { closeFns, integralFrom0, ownFn, ownNumber } from './follow';
+import {
+  assembleSolution,
+  fmt,
+  ratTex,
+  ratText,
+  ratValue,
+  tn,
+  type FollowRule,
+  type OwnValue,
+  type Part,
+  type Rational,
+  type SolutionStep,
+  type Variant,
+} from './model';
 
 const A_CHOICES: readonly Rational[] = [
   { p: 1, q: 1 },
@@ -290,43 +304,161 @@ export function q1Variant(seed: number): Variant {
     ],
   );
 
+  // follow-through: each later answer from the student's own earlier one
+  pPhi.follow = [
+    {
+      from: ['k'],
+      matches: (own, g) => {
+        const ks = ownNumber(own, 'k');
+        return typeof ks === 'number' && closeFns((f) => (ks / (m + 1)) * Math.exp(a * f), g, ph);
+      },
+    },
+  ];
+  const cdfFrom = (pdf: string, dom: [number, number]) => [
+    {
+      from: [pdf],
+      matches: (own: Parameters<FollowRule['matches']>[0], g: OwnValue) => {
+        const p = ownFn(own, pdf);
+        return !!p && closeFns(integralFrom0(p), g, dom);
+      },
+    },
+  ];
+  cdfTheta.follow = cdfFrom('p-theta', th);
+  cdfPhi.follow = cdfFrom('p-phi', ph);
+  const inverseOf = (cdf: string) => [
+    {
+      from: [cdf],
+      matches: (own: Parameters<FollowRule['matches']>[0], h: OwnValue) => {
+        const P = ownFn(own, cdf);
+        if (!P || typeof h !== 'function') return false;
+        const back = (x: number) => P(h(x));
+        return closeFns((x) => x, back, xi) || closeFns((x) => 1 - x, back, xi);
+      },
+    },
+  ];
+  thetaXi.follow = inverseOf('cdf-theta');
+  phiXi.follow = inverseOf('cdf-phi');
   const xi1 = 0.3;
   const xi2 = 0.7;
-  const kTex = `k = \\frac{${ratTex(num)}}{${E2}} = ${tn(k)}`;
-  const solution: SolutionStep[] = [
-    { text: '(a) Normalize over the upper hemisphere with dω = sin θ dθ dφ:' },
+  const mp1 = m + 1;
+  const cosPow1Tex = m === 0 ? '\\cos\\theta' : `\\cos^{${mp1}}\\theta`;
+  const kExactTex = `\\frac{${ratTex(num)}}{${E2}}`;
+  const pThetaTex = `${m === 0 ? '' : `${mp1}\\,`}${cosPowTex(m)}\\sin\\theta`;
+  const pPhiTex = `\\frac{${coefTex(ar)}${expTex(ar)}}{${E2}}`;
+  const cdfThetaTex = `1 - ${cosPow1Tex}`;
+  const cdfPhiTex = `\\frac{${expTex(ar)} - 1}{${E2}}`;
+  const thetaXiTex =
+    m === 0
+      ? `\\arccos(1 - \\xi_1)`
+      : m === 1
+        ? `\\tfrac12\\arccos(1 - 2\\xi_1)`
+        : `\\arccos\\!\\big((1 - \\xi_1)^{1/${mp1}}\\big)`;
+  const phiXiTex = `${coefTex(inv)}\\ln\\!\\big(1 + (${E2})\\,\\xi_2\\big)`;
+  kAns.tex = `k = ${kExactTex} \\approx ${tn(k)}`;
+  pTheta.tex = `p(\\theta) = ${pThetaTex}`;
+  pPhi.tex = `p(\\phi) = ${pPhiTex}`;
+  cdfTheta.tex = `P(\\theta) = ${cdfThetaTex}`;
+  cdfPhi.tex = `P(\\phi) = ${cdfPhiTex}`;
+  thetaXi.tex = `\\theta = ${thetaXiTex}`;
+  phiXi.tex = `\\phi = ${phiXiTex}`;
+  const thetaIntegral = `\\int_0^{\\pi/2} ${cosPowTex(m)}\\sin\\theta\\,d\\theta = \\Big[-\\frac{${cosPow1Tex}}{${mp1}}\\Big]_0^{\\pi/2} = ${m === 0 ? '1' : `\\frac{1}{${mp1}}`}`;
+  const phiIntegral = `\\int_0^{2\\pi} ${expTex(ar)}\\,d\\phi = \\Big[\\frac{${expTex(ar)}}{${A}}\\Big]_0^{2\\pi} = \\frac{${E2}}{${A}}`;
+  const normTex = `\\int_0^{2\\pi}\\!\\!\\int_0^{\\pi/2} k\\,${cosPowTex(m)}${expTex(ar)}\\sin\\theta\\,d\\theta\\,d\\phi = 1`;
+  const stepsA: SolutionStep[] = [
+    { text: '(a) Normalize over the upper hemisphere with dω = sin θ dθ dφ; the integral separates:' },
+    { tex: normTex },
+    { text: 'The θ integral (substitute u = cos θ, du = −sin θ dθ):' },
+    { tex: thetaIntegral },
+    { text: 'The φ integral (both limits: e^0 = 1 is subtracted):' },
+    { tex: phiIntegral },
     {
-      tex: `\\int_0^{2\\pi}\\!\\!\\int_0^{\\pi/2} k\\,${cosPowTex(m)}${expTex(ar)}\\sin\\theta\\,d\\theta\\,d\\phi = k\\cdot${m === 0 ? '1' : `\\frac{1}{${m + 1}}`}\\cdot\\frac{${E2}}{${A}} = 1`,
+      tex: `k\\cdot${m === 0 ? '1' : `\\frac{1}{${mp1}}`}\\cdot\\frac{${E2}}{${A}} = 1 \\;\\Rightarrow\\; k = ${kExactTex} = ${tn(k)}`,
     },
-    { tex: kTex },
-    { text: '(b) Change of variables p(θ, φ) = sin θ · p(ω), then marginalize:' },
+    { text: `Here e^(2πa) − 1 = ${fmt(E, 6)}.` },
+  ];
+  const stepsB: SolutionStep[] = [
+    { text: '(b) Change of variables p(θ, φ) = sin θ · p(ω), then integrate out the other variable:' },
     { tex: `p(\\theta,\\phi) = k\\,${cosPowTex(m)}\\sin\\theta\\,${expTex(ar)}` },
     {
-      tex: `p(\\theta) = \\int_0^{2\\pi} p(\\theta,\\phi)\\,d\\phi = ${m === 0 ? '' : `${m + 1}\\,`}${cosPowTex(m)}\\sin\\theta${m === 1 ? ' = \\sin 2\\theta' : ''}`,
+      tex: `p(\\theta) = \\int_0^{2\\pi} p(\\theta,\\phi)\\,d\\phi = k\\,${cosPowTex(m)}\\sin\\theta\\cdot\\frac{${E2}}{${A}} = ${pThetaTex}${m === 1 ? ' = \\sin 2\\theta' : ''}`,
     },
     {
-      tex: `p(\\phi) = \\int_0^{\\pi/2} p(\\theta,\\phi)\\,d\\theta = \\frac{${coefTex(ar)}${expTex(ar)}}{${E2}}`,
+      tex: `p(\\phi) = \\int_0^{\\pi/2} p(\\theta,\\phi)\\,d\\theta = k\\,${expTex(ar)}\\cdot${m === 0 ? '1' : `\\frac{1}{${mp1}}`} = ${pPhiTex}`,
     },
     {
-      text: `The inverted Jacobian p(θ, φ) = p(ω)/sin θ ∝ ${cosPlain}${expPlain(ar)} / sin θ cannot be normalized: ∫ dθ/sin θ diverges at θ → 0.`,
+      text: `Each marginal integrates to 1. The inverted Jacobian p(θ, φ) = p(ω)/sin θ ∝ ${cosPlain}${expPlain(ar)} / sin θ cannot be normalized: ∫ dθ/sin θ diverges at θ → 0.`,
     },
-    { text: '(c) CDFs, integrating from 0:' },
+  ];
+  const stepsC: SolutionStep[] = [
+    { text: '(c) CDFs, integrating each marginal from 0 (so that P(0) = 0):' },
     {
-      tex: `P(\\theta) = \\int_0^{\\theta} p(\\theta')\\,d\\theta' = 1 - \\cos${m === 0 ? '' : `^{${m + 1}}`}\\theta${m === 1 ? ' = \\frac{1-\\cos 2\\theta}{2}' : ''}`,
+      tex: `P(\\theta) = \\int_0^{\\theta} ${pThetaTex.replace(/\\theta/g, "\\theta'")}\\,d\\theta' = \\Big[-${cosPow1Tex.replace(/\\theta/g, "\\theta'")}\\Big]_0^{\\theta} = ${cdfThetaTex}${m === 1 ? ' = \\frac{1-\\cos 2\\theta}{2}' : ''}`,
     },
-    { tex: `P(\\phi) = \\frac{${expTex(ar)} - 1}{${E2}}` },
-    { text: '(d) Set ξ = P and solve:' },
+    {
+      tex: `P(\\phi) = \\int_0^{\\phi} \\frac{${coefTex(ar)}e^{${argTex(ar).replace(/\\phi/g, "\\phi'")}}}{${E2}}\\,d\\phi' = ${cdfPhiTex}`,
+    },
+  ];
+  const stepsD: SolutionStep[] = [
+    { text: '(d) Set ξ = P and solve for the angle:' },
+    { tex: `\\xi_1 = ${cdfThetaTex} \\;\\Rightarrow\\; \\cos\\theta = (1 - \\xi_1)^{1/${mp1}}` },
     {
       tex:
         m === 0
           ? `\\theta = \\arccos(1 - \\xi_1)`
           : m === 1
             ? `\\theta = \\tfrac12\\arccos(1 - 2\\xi_1) = \\arccos\\sqrt{1-\\xi_1}`
-            : `\\theta = \\arccos\\!\\big((1 - \\xi_1)^{1/${m + 1}}\\big)`,
+            : `\\theta = ${thetaXiTex}`,
     },
-    { tex: `\\phi = ${coefTex(inv)}\\ln\\!\\big(1 + (${E2})\\,\\xi_2\\big)` },
+    { tex: `\\xi_2 = ${cdfPhiTex} \\;\\Rightarrow\\; ${expTex(ar)} = 1 + (${E2})\\,\\xi_2` },
+    { tex: `\\phi = ${phiXiTex}` },
     {
-      text: `For example ξ₁ = ${xi1} gives θ = ${fmt(c.thetaOfXi(xi1), 5)} rad and ξ₂ = ${xi2} gives φ = ${fmt(c.phiOfXi(xi2), 5)} rad. Here e^(2πa) − 1 = ${fmt(E, 6)}.`,
+      text: `For example ξ₁ = ${xi1} gives θ = ${fmt(c.thetaOfXi(xi1), 5)} rad and ξ₂ = ${xi2} gives φ = ${fmt(c.phiOfXi(xi2), 5)} rad. Using 1 − ξ for ξ gives the same distribution.`,
+    },
+  ];
+  const parts: Part[] = [
+    {
+      id: 'a',
+      prompt: '(a) The normalization constant k (a number).',
+      answers: [kAns],
+      hint: [
+        { text: 'Integrate p(ω) over the hemisphere with dω = sin θ dθ dφ and set the result to 1:' },
+        { tex: normTex },
+      ],
+      steps: stepsA,
+    },
+    {
+      id: 'b',
+      prompt: '(b) The marginal densities, as formulas in theta and phi.',
+      paperPrompt: '(b) The marginal densities p(θ) and p(φ).',
+      answers: [pTheta, pPhi],
+      hint: [
+        { text: 'First change variables (the Jacobian multiplies), then integrate out the other angle:' },
+        {
+          tex: `p(\\theta,\\phi) = \\sin\\theta\\cdot p(\\omega) = k\\,${cosPowTex(m)}\\sin\\theta\\,${expTex(ar)}`,
+        },
+      ],
+      steps: stepsB,
+    },
+    {
+      id: 'c',
+      prompt: '(c) The CDFs P(θ) and P(φ).',
+      answers: [cdfTheta, cdfPhi],
+      hint: [
+        { text: 'Integrate each marginal from 0; for θ substitute u = cos θ′:' },
+        { tex: `P(\\theta) = \\int_0^{\\theta} ${pThetaTex.replace(/\\theta/g, "\\theta'")}\\,d\\theta'` },
+      ],
+      steps: stepsC,
+    },
+    {
+      id: 'd',
+      prompt: '(d) θ and φ from uniform numbers (write ξ₁, ξ₂ as xi).',
+      paperPrompt: '(d) The inversion formulas θ(ξ₁) and φ(ξ₂).',
+      answers: [thetaXi, phiXi],
+      hint: [
+        { text: 'Set ξ₁ equal to P(θ) and solve for θ (and likewise ξ₂ = P(φ)):' },
+        { tex: `\\xi_1 = ${cdfThetaTex}` },
+      ],
+      steps: stepsD,
     },
   ];
   const sceneQuery =
@@ -343,21 +475,9 @@ export function q1Variant(seed: number): Variant {
       { name: 'm', label: 'exponent m of cos θ', value: String(m), display: String(m) },
       { name: 'a', label: 'a (in e^(aφ))', value: String(a), display: ratText(ar) },
     ],
-    parts: [
-      { id: 'a', prompt: '(a) The normalization constant k (a number).', answers: [kAns] },
-      {
-        id: 'b',
-        prompt: '(b) The marginal densities, as formulas in theta and phi.',
-        answers: [pTheta, pPhi],
-      },
-      { id: 'c', prompt: '(c) The CDFs P(θ) and P(φ).', answers: [cdfTheta, cdfPhi] },
-      {
-        id: 'd',
-        prompt: '(d) θ and φ from uniform numbers (write ξ₁, ξ₂ as xi).',
-        answers: [thetaXi, phiXi],
-      },
-    ],
-    solution,
+    parts,
+    intro: [],
+    solution: assembleSolution([], parts),
     sceneHref: `#/hemisphere?${sceneQuery}`,
     sceneLabel: 'Open this density in the hemisphere scene',
     notes: [],

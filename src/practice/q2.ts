@@ -15,7 +15,18 @@ import { Rng } from '../core/random';
 import { estimateFromTerms } from '../core/estimators';
 import { choiceAnswer, numberAnswer, pick, query } from './build';
 import { argTex, argText, expPlain } from './q1';
-import { fmt, ratValue, roundTo, tn, tp, type Rational, type SolutionStep, type Variant } from './model';
+import {
+  assembleSolution,
+  fmt,
+  ratValue,
+  roundTo,
+  tn,
+  tp,
+  type Part,
+  type Rational,
+  type SolutionStep,
+  type Variant,
+} from './model';
 
 type FKind = 'const' | 'prop' | 'cos' | 'cos2';
 
@@ -121,6 +132,30 @@ export function q2Estimates(P: Q2Params) {
   return { F, fv, pv, uniform: estimateFromTerms(uni).estimate, importance: estimateFromTerms(imp).estimate };
 }
 
+/** ∫ f dω over the upper hemisphere, in closed form: 2πC, πC, 2πC/3, or C/k for f ∝ p. */
+export function q2TrueValue(P: Q2Params, k: number): { value: number; tex: string; how: string } {
+  const C = P.C;
+  const c = C === 1 ? '' : String(C);
+  switch (P.fKind) {
+    case 'const':
+      return { value: 2 * Math.PI * C, tex: `${2 * C}\\pi`, how: `${C} · 2π` };
+    case 'cos':
+      return { value: Math.PI * C, tex: `${c}\\pi`, how: `${c ? `${C} · ` : ''}∫ cos θ dω = ${c}π` };
+    case 'cos2':
+      return {
+        value: (2 * Math.PI * C) / 3,
+        tex: `\\frac{${2 * C}\\pi}{3}`,
+        how: `${c ? `${C} · ` : ''}∫ cos² θ dω = ${2 * C}π/3`,
+      };
+    default:
+      return {
+        value: C / k,
+        tex: `\\frac{${C}}{k}`,
+        how: `${C}/k (p integrates to 1, so ∫ cosᵐθ e^(aφ) dω = 1/k)`,
+      };
+  }
+}
+
 export function q2Variant(seed: number): Variant {
   const P = q2Params(seed);
   const { F, fv, pv, uniform, importance } = q2Estimates(P);
@@ -189,22 +224,75 @@ export function q2Variant(seed: number): Variant {
   const rows = P.dirs.map(
     ([t, ph], i) => `(${fmt(t)}, ${fmt(ph)}) & ${tn(fv[i])} & ${tn(pv[i])} & ${tn(fv[i] / pv[i])}`,
   );
-  const solution: SolutionStep[] = [
+  const { value: trueI, tex: trueTex, how: trueHow } = q2TrueValue(P, F.k);
+  const intro: SolutionStep[] = [
     { text: `Per direction (θᵢ, φᵢ): f(ωᵢ), p(ωᵢ) = ${F.pPlain} with k = ${fmt(F.k, 6)}, and f/p:` },
     {
       tex: `\\begin{array}{cccc} (\\theta_i,\\phi_i) & f & p & f/p \\\\ \\hline ${rows.join(' \\\\ ')} \\end{array}`,
     },
-    { text: '(a) Uniform sampling of the hemisphere, p = 1/|D| = 1/(2π):' },
-    {
-      tex: `\\begin{aligned} \\langle I\\rangle &= \\frac{2\\pi}{N}\\sum f(X_i) \\\\ &= \\frac{2\\pi}{${n}}\\,(${fv.map((x) => tn(x)).join(' + ')}) \\\\ &= ${tn(uniform)} \\end{aligned}`,
-    },
-    { text: '(b) Importance sampling with p(ω), the density per steradian:' },
-    {
-      tex: `\\begin{aligned} \\langle I\\rangle &= \\frac{1}{N}\\sum \\frac{f(X_i)}{p(X_i)} \\\\ &= \\frac{1}{${n}}\\,(${fv.map((x, i) => tp(x / pv[i])).join(' + ')}) \\\\ &= ${tn(importance)} \\end{aligned}`,
-    },
-    { text: `(c) ${why}` },
-    { text: 'Both estimators are unbiased: E[f(X)/p(X)] = ∫ (f/p) p dω = ∫ f dω for any p > 0 where f ≠ 0.' },
   ];
+  const uniformSum = `\\frac{2\\pi}{${n}}\\,(${fv.map((x) => tn(x)).join(' + ')})`;
+  const impSum = `\\frac{1}{${n}}\\,(${fv.map((x, i) => tp(x / pv[i])).join(' + ')})`;
+  const trueStep = (est: number): SolutionStep => ({
+    text: `The true value is ∫ f dω = ${trueHow} = ${fmt(trueI, 6)}; this estimate from ${n} directions is ${fmt(est, 6)} (${est === trueI ? 'exact' : `off by ${fmt(Math.abs(est - trueI), 3)}`}).`,
+    tex: `\\int f\\,d\\omega = ${trueTex} = ${tn(trueI)}`,
+  });
+  const parts: Part[] = [
+    {
+      id: 'a',
+      prompt: '(a) The uniform estimate (2π/N) Σ f.',
+      answers: [uniAns],
+      hint: [
+        { text: 'Uniform over the hemisphere means p = 1/|D| = 1/(2π); sum f over the directions:' },
+        { tex: `\\langle I\\rangle = \\frac{1}{N}\\sum \\frac{f(X_i)}{1/(2\\pi)} = ${uniformSum}` },
+      ],
+      steps: [
+        { text: '(a) Uniform sampling of the hemisphere, p = 1/|D| = 1/(2π):' },
+        {
+          tex: `\\begin{aligned} \\langle I\\rangle &= \\frac{2\\pi}{N}\\sum f(X_i) \\\\ &= ${uniformSum} \\\\ &= ${tn(uniform)} \\end{aligned}`,
+        },
+        trueStep(uniform),
+      ],
+    },
+    {
+      id: 'b',
+      prompt: '(b) The importance-sampled estimate (1/N) Σ f/p.',
+      answers: [impAns],
+      hint: [
+        {
+          text: 'Divide each f by the density per steradian p(ω) (the f/p column of the table), then average:',
+        },
+        { tex: `\\langle I\\rangle = ${impSum}` },
+      ],
+      steps: [
+        { text: '(b) Importance sampling with p(ω), the density per steradian:' },
+        {
+          tex: `\\begin{aligned} \\langle I\\rangle &= \\frac{1}{N}\\sum \\frac{f(X_i)}{p(X_i)} \\\\ &= ${impSum} \\\\ &= ${tn(importance)} \\end{aligned}`,
+        },
+        trueStep(importance),
+      ],
+    },
+    {
+      id: 'c',
+      prompt: '(c) Which has zero variance for this f: uniform, importance or neither?',
+      paperPrompt: '(c) Which estimator has zero variance for this f: uniform, importance or neither? Why?',
+      answers: [zeroAns],
+      hint: [
+        {
+          text: 'An estimator has zero variance when all its terms are the same number: compare the terms 2π f and f/p from direction to direction.',
+        },
+      ],
+      steps: [
+        { text: `(c) ${why}` },
+        {
+          text: 'Both estimators are unbiased: E[f(X)/p(X)] = ∫ (f/p) p dω = ∫ f dω for any p > 0 where f ≠ 0.',
+        },
+      ],
+    },
+  ];
+  uniAns.tex = `\\langle I\\rangle_{\\text{uniform}} = ${tn(uniform)}`;
+  impAns.tex = `\\langle I\\rangle_{\\text{importance}} = ${tn(importance)}`;
+  zeroAns.tex = `\\text{${zero}}`;
   const dirValue = P.dirs.map(([t, ph]) => `${t},${ph}`).join(';');
   return {
     question: 'q2',
@@ -228,16 +316,9 @@ export function q2Variant(seed: number): Variant {
         display: P.dirs.map(([t, ph]) => `(${t}, ${ph})`).join('  '),
       },
     ],
-    parts: [
-      { id: 'a', prompt: '(a) The uniform estimate (2π/N) Σ f.', answers: [uniAns] },
-      { id: 'b', prompt: '(b) The importance-sampled estimate (1/N) Σ f/p.', answers: [impAns] },
-      {
-        id: 'c',
-        prompt: '(c) Which has zero variance for this f: uniform, importance or neither?',
-        answers: [zeroAns],
-      },
-    ],
-    solution,
+    parts,
+    intro,
+    solution: assembleSolution(intro, parts),
     sceneHref: `#/hemisphere?${query({ lobe: 'custom', pdf: F.pText.replace(/ /g, ''), f: F.fText.replace(/ /g, '') })}`,
     sceneLabel: 'Open this density and integrand in the hemisphere scene',
     notes: [

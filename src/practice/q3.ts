@@ -4,8 +4,10 @@
  * Every expected value comes from the core's texture routines, the ones the texture scene uses:
  * nearestStencil, bilinearStencil + bilinearSteps (the key's c_u, c_l, c), sphericalUV, bilinear.
  *
- * Accepted convention: v′ = 1 − v (the key accepts it when stated): nearest, bilinear, sphere-v and
- * sphere-bilinear with the flip are checked as correct, with a note.
+ * Accepted convention: the grid read with v′ = 1 − v (the key accepts it when stated), only on the
+ * grid's v axis: nearest, bilinear and sphere-bilinear with the flip are correct, with a note, as long
+ * as every answer of the variant uses the same reading (session.ts names a mix). The sphere's
+ * v = θ/π is unambiguous and has no flipped form.
  * Classic mistakes: the division by the cell size missing (×Δ or ×Δ²), the weights swapped, the
  * lower-left node taken for the nearest, (u, v) not normalized by (2π, π), u = arctan(y/x) without
  * the quadrant (atan2).
@@ -24,7 +26,8 @@ import {
   type TextureGrid,
 } from '../core/texture';
 import { intIn, numberAnswer, pick, query } from './build';
-import { fmt, roundTo, tn, tp, type SolutionStep, type Variant } from './model';
+import { closeTo, ownNumber } from './follow';
+import { assembleSolution, fmt, roundTo, tn, tp, type Part, type SolutionStep, type Variant } from './model';
 
 const FLIP: LookupOptions = { ...EXAM_LOOKUP, vflip: true };
 
@@ -100,13 +103,13 @@ export function q3Variant(seed: number): Variant {
   const noDiv =
     'The division by the cell size Δ = 1/(N − 1) is missing (the key deducts for it): each interpolation step is ((u₁ − u) t₀ + (u − u₀) t₁)/Δ.';
   const flipMsg =
-    'you read the grid with v′ = 1 − v (v = 0 on the top row). The key accepts this convention when it is stated; the exam’s has v = 0 at the bottom row.';
+    'you read the grid with v′ = 1 − v (v = 0 on the top row). The key accepts this convention when it is stated and used for every lookup; the exam’s has v = 0 at the bottom row.';
   const answers = {
     nearest: numberAnswer(
       'nearest',
       'nearest',
       near.value,
-      [{ value: nearF.value, message: flipMsg }],
+      [{ value: nearF.value, message: flipMsg, convention: 'v-flip' }],
       [
         {
           id: 'floor-not-round',
@@ -120,7 +123,7 @@ export function q3Variant(seed: number): Variant {
       'bilinear',
       'bilinear',
       bil,
-      [{ value: bilF, message: flipMsg }],
+      [{ value: bilF, message: flipMsg, convention: 'v-flip' }],
       [
         { id: 'no-cell-division', value: bil * d * d, message: noDiv },
         { id: 'no-cell-division', value: bil * d, message: noDiv },
@@ -166,12 +169,18 @@ export function q3Variant(seed: number): Variant {
       'sphere-v',
       'sphere v',
       sp.v,
-      [{ value: 1 - sp.v, message: flipMsg }],
+      [], // v = θ/π on the sphere is unambiguous: the grid's flipped reading does not apply here
       [
         {
           id: 'no-normalization',
           value: sp.theta,
           message: 'That is the angle θ = arccos(z/r) in radians: normalize by π, v = θ/π.',
+        },
+        {
+          id: 'flipped-v',
+          value: 1 - sp.v,
+          message:
+            'That is 1 − θ/π. On the sphere v = θ/π = arccos(z/r)/π is unambiguous: the flipped v′ = 1 − v the key accepts is a way of reading the grid, not of the sphere’s angle.',
         },
       ],
     ),
@@ -179,7 +188,7 @@ export function q3Variant(seed: number): Variant {
       'sphere-bilinear',
       'sphere bilinear',
       sBil,
-      [{ value: sBilF, message: flipMsg }],
+      [{ value: sBilF, message: flipMsg, convention: 'v-flip' }],
       [
         {
           id: 'no-normalization',
@@ -201,28 +210,88 @@ export function q3Variant(seed: number): Variant {
     `c_l = \\frac{(${tn(s.u1)} - ${tn(uu)})\\cdot ${tp(s.t00)} + (${tn(uu)} - ${tn(s.u0)})\\cdot ${tp(s.t10)}}{${tn(s.du)}} = ${tn(sv.cl)}`,
     `c = \\frac{(${tn(s.v1)} - ${tn(vv)})\\cdot ${tp(sv.cl)} + (${tn(vv)} - ${tn(s.v0)})\\cdot ${tp(sv.cu)}}{${tn(s.dv)}} = ${tn(sv.c)}`,
   ];
-  const solution: SolutionStep[] = [
+  const intro: SolutionStep[] = [
     { text: `The nodes sit at u, v = i/${n - 1} (cell size Δ = ${fmt(d, 4)}), v = 0 at the bottom row:` },
     { tex: gridTex },
+  ];
+  const cellText = (s: typeof st) =>
+    `the cell [${fmt(s.u0, 4)}, ${fmt(s.u1, 4)}] × [${fmt(s.v0, 4)}, ${fmt(s.v1, 4)}]`;
+  const uvTex = `u = \\frac{\\operatorname{atan2}(y, x)}{2\\pi} = \\frac{${tn(sp.phi)}}{2\\pi} = ${tn(sp.u)}, \\qquad v = \\frac{\\arccos(z/r)}{\\pi} = \\frac{${tn(sp.theta)}}{\\pi} = ${tn(sp.v)}`;
+  const parts: Part[] = [
     {
-      text: `(a) Nearest: the closest node to (${u}, ${v}) is (${fmt(near.nodeU, 4)}, ${fmt(near.nodeV, 4)}), value ${fmt(near.value)}.`,
+      id: 'a',
+      prompt: `(a) Nearest-neighbour value at (${u}, ${v}).`,
+      answers: [answers.nearest],
+      hint: [
+        {
+          text: `Scale to node indices: u·${n - 1} = ${fmt(u * (n - 1), 4)} and v·${n - 1} = ${fmt(v * (n - 1), 4)} (v counted from the bottom row); round each to the nearest whole number.`,
+        },
+      ],
+      steps: [
+        {
+          text: `(a) Nearest: u·${n - 1} = ${fmt(u * (n - 1), 4)} and v·${n - 1} = ${fmt(v * (n - 1), 4)} round to the node (${fmt(near.nodeU, 4)}, ${fmt(near.nodeV, 4)}), value ${fmt(near.value)}.`,
+        },
+      ],
     },
     {
-      text: `(b) Bilinear: the cell [${fmt(st.u0, 4)}, ${fmt(st.u1, 4)}] × [${fmt(st.v0, 4)}, ${fmt(st.v1, 4)}]; along u on the upper and lower rows, then along v:`,
+      id: 'b',
+      prompt: `(b) Bilinear value at (${u}, ${v}).`,
+      answers: [answers.bilinear],
+      hint: [
+        {
+          text: `(${u}, ${v}) lies in ${cellText(st)}. Interpolate along u on its lower row (texels ${fmt(st.t00)}, ${fmt(st.t10)}) and its upper row (${fmt(st.t01)}, ${fmt(st.t11)}), dividing by Δ = ${fmt(d, 4)}:`,
+        },
+        { tex: stepTex(st, steps, u, v)[1] },
+      ],
+      steps: [
+        {
+          text: `(b) Bilinear: ${cellText(st)}; along u on the upper and lower rows, then along v:`,
+        },
+        ...stepTex(st, steps, u, v).map((tex) => ({ tex })),
+        {
+          text: `Read with v′ = 1 − v (the key accepts this flipped grid convention when it is stated and used throughout) the values of (a) and (b) are ${fmt(nearF.value)} and ${fmt(bilF)}.`,
+        },
+      ],
     },
-    ...stepTex(st, steps, u, v).map((tex) => ({ tex })),
     {
-      text: `With v′ = 1 − v (the accepted flipped reading) the values are ${fmt(nearF.value)} and ${fmt(bilF)}.`,
-    },
-    { text: `(c) The point (${x}, ${y}, ${z}) has r = ${fmt(sp.r, 5)}:` },
-    {
-      tex: `u = \\frac{\\operatorname{atan2}(y, x)}{2\\pi} = \\frac{${tn(sp.phi)}}{2\\pi} = ${tn(sp.u)}, \\qquad v = \\frac{\\arccos(z/r)}{\\pi} = \\frac{${tn(sp.theta)}}{\\pi} = ${tn(sp.v)}`,
-    },
-    ...stepTex(sSt, sSteps, sSt.u, sSt.v).map((tex) => ({ tex })),
-    {
-      text: `Without the normalization (the angles in radians, clamped to [0, 1]) the lookup would give ${fmt(sBilRaw)}; the key deducts for it.`,
+      id: 'c',
+      prompt: '(c) The sphere point’s normalized (u, v) and the bilinear value there.',
+      answers: [answers.sphereU, answers.sphereV, answers.sphereBil],
+      hint: [
+        {
+          text: `First r = √(x² + y² + z²) = ${fmt(sp.r, 5)}; then the angles φ = atan2(y, x) (in [0, 2π)) and θ = arccos(z/r), normalized:`,
+        },
+        { tex: `u = \\frac{\\varphi}{2\\pi}, \\qquad v = \\frac{\\theta}{\\pi}` },
+      ],
+      steps: [
+        { text: `(c) The point (${x}, ${y}, ${z}) has r = ${fmt(sp.r, 5)}:` },
+        { tex: uvTex },
+        { text: `Bilinear lookup at (${fmt(sp.u, 6)}, ${fmt(sp.v, 6)}), in ${cellText(sSt)}:` },
+        ...stepTex(sSt, sSteps, sSt.u, sSt.v).map((tex) => ({ tex })),
+        {
+          text: `Without the normalization (the angles in radians, clamped to [0, 1]) the lookup would give ${fmt(sBilRaw)}; the key deducts for it.`,
+        },
+      ],
     },
   ];
+  answers.sphereBil.follow = [
+    {
+      from: ['sphere-u', 'sphere-v'],
+      matches: (own, val) => {
+        const us = ownNumber(own, 'sphere-u');
+        const vs = ownNumber(own, 'sphere-v');
+        if (typeof us !== 'number' || typeof vs !== 'number') return false;
+        return (
+          closeTo(val, bilinear(grid, us, vs, EXAM_LOOKUP)) || closeTo(val, bilinear(grid, us, vs, FLIP))
+        );
+      },
+    },
+  ];
+  answers.nearest.tex = `\\text{nearest} = ${tn(near.value)}`;
+  answers.bilinear.tex = `\\text{bilinear} = ${tn(bil)}`;
+  answers.sphereU.tex = `u = \\frac{${tn(sp.phi)}}{2\\pi} = ${tn(sp.u)}`;
+  answers.sphereV.tex = `v = \\frac{${tn(sp.theta)}}{\\pi} = ${tn(sp.v)}`;
+  answers.sphereBil.tex = `\\text{bilinear at }(u, v) = ${tn(sBil)}`;
   return {
     question: 'q3',
     seed,
@@ -242,16 +311,9 @@ export function q3Variant(seed: number): Variant {
       { name: 'y', label: 'y', value: String(y), display: String(y) },
       { name: 'z', label: 'z', value: String(z), display: String(z) },
     ],
-    parts: [
-      { id: 'a', prompt: `(a) Nearest-neighbour value at (${u}, ${v}).`, answers: [answers.nearest] },
-      { id: 'b', prompt: `(b) Bilinear value at (${u}, ${v}).`, answers: [answers.bilinear] },
-      {
-        id: 'c',
-        prompt: '(c) The sphere point’s normalized (u, v) and the bilinear value there.',
-        answers: [answers.sphereU, answers.sphereV, answers.sphereBil],
-      },
-    ],
-    solution,
+    parts,
+    intro,
+    solution: assembleSolution(intro, parts),
     sceneHref: `#/texture?${query({ grid: gridText, u, v, x, y, z })}`,
     sceneLabel: 'Open this grid and these points in the texture scene',
     notes: [],

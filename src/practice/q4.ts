@@ -12,7 +12,8 @@
 import { Rng } from '../core/random';
 import { importanceEstimate, uniformEstimate } from '../core/estimators';
 import { intIn, numberAnswer, pick, query } from './build';
-import { fmt, roundTo, tn, type SolutionStep, type Variant } from './model';
+import { closeTo, ownNumber } from './follow';
+import { assembleSolution, fmt, roundTo, tn, type Part, type Variant } from './model';
 
 type Kind = 'square' | 'cube' | 'quad';
 
@@ -141,24 +142,76 @@ export function q4Variant(seed: number): Variant {
       },
     ],
   );
-  const solution: SolutionStep[] = [
-    { text: '(a) Exact integral by the antiderivative:' },
+  const den = P.kind === 'cube' ? 4 : 3;
+  const numI = Math.round(I * den);
+  const iTex =
+    Math.abs(numI / den - I) < 1e-9 && numI % den !== 0 ? `\\frac{${numI}}{${den}} = ${tn(I)}` : tn(I);
+  const fTable = `\\begin{array}{l} ${P.samples.map((x, i) => `f(${x}) = ${tn(fv[i])}`).join(' \\\\ ')} \\end{array}`;
+  const parts: Part[] = [
     {
-      tex: `I = \\int_{${a}}^{${b}} ${fn.tex}\\,dx = \\Big[${fn.Ftex}\\Big]_{${a}}^{${b}} = ${tn(fn.F(b))} - ${tn(fn.F(a))} = ${tn(I)}`,
+      id: 'a',
+      prompt: `(a) I = ∫ f dx over [${a}, ${b}].`,
+      answers: [exact],
+      hint: [
+        { text: 'Find an antiderivative F of f and evaluate it at both limits:' },
+        { tex: `F(x) = ${fn.Ftex}, \\qquad I = F(${b}) - F(${a})` },
+      ],
+      steps: [
+        { text: '(a) Exact integral by the antiderivative:' },
+        {
+          tex: `I = \\int_{${a}}^{${b}} ${fn.tex}\\,dx = \\Big[${fn.Ftex}\\Big]_{${a}}^{${b}} = ${tn(fn.F(b))} - ${tn(fn.F(a))} = ${iTex}`,
+        },
+      ],
     },
-    { text: `(b) Uniform density p = 1/(b − a) = ${fmt(1 / L, 6)}; the samples give f(xᵢ):` },
     {
-      tex: `\\begin{array}{l} ${P.samples.map((x, i) => `f(${x}) = ${tn(fv[i])}`).join(' \\\\ ')} \\end{array}`,
+      id: 'b',
+      prompt: '(b) The uniform estimate.',
+      answers: [uni],
+      hint: [
+        {
+          text: `The uniform density on [${a}, ${b}] is p = 1/(b − a) = ${fmt(1 / L, 6)}; evaluate f at each sample:`,
+        },
+        { tex: fTable },
+      ],
+      steps: [
+        { text: `(b) Uniform density p = 1/(b − a) = ${fmt(1 / L, 6)}; the samples give f(xᵢ):` },
+        { tex: fTable },
+        {
+          tex: `\\begin{aligned} \\langle I\\rangle &= \\frac{1}{${n}}\\sum \\frac{f(x_i)}{p} = \\frac{${L}}{${n}}\\sum f(x_i) \\\\ &= \\frac{${L}}{${n}}\\,(${fv.map((x) => tn(x)).join(' + ')}) \\\\ &= ${tn(uniform)} \\end{aligned}`,
+        },
+        {
+          text: `The exact value is I = ${fmt(I, 6)}: this estimate is off by ${fmt(Math.abs(uniform - I), 3)}.`,
+        },
+      ],
     },
     {
-      tex: `\\begin{aligned} \\langle I\\rangle &= \\frac{1}{${n}}\\sum \\frac{f(x_i)}{p} = \\frac{${L}}{${n}}\\sum f(x_i) \\\\ &= \\frac{${L}}{${n}}\\,(${fv.map((x) => tn(x)).join(' + ')}) \\\\ &= ${tn(uniform)} \\end{aligned}`,
+      id: 'c',
+      prompt: '(c) The importance-sampled estimate with p ∝ f.',
+      answers: [imp],
+      hint: [
+        {
+          text: 'A density must integrate to 1 over the interval: p(x) = f(x) / ∫ f dx. Write each term f(xᵢ)/p(xᵢ) with it.',
+        },
+      ],
+      steps: [
+        { text: `(c) Importance sampling with p(x) = f(x)/I = ${fn.text}/${fmt(I, 6)}, proportional to f:` },
+        { tex: `\\frac{f(x_i)}{p(x_i)} = \\frac{f(x_i)}{f(x_i)/I} = I = ${tn(I)}\\ \\text{for every } i` },
+        { tex: `\\langle I\\rangle = ${tn(importance)}\\ \\text{(zero variance)}` },
+      ],
     },
-    {
-      text: `(c) Importance sampling with p(x) = f(x)/I = ${fn.text.replace(/\^/g, '^')}/${fmt(I, 6)}, proportional to f:`,
-    },
-    { tex: `\\frac{f(x_i)}{p(x_i)} = I = ${tn(I)}\\ \\text{for every } i` },
-    { tex: `\\langle I\\rangle = ${tn(importance)}\\ \\text{(zero variance)}` },
   ];
+  imp.follow = [
+    {
+      from: ['exact'],
+      matches: (own, val) => {
+        const Is = ownNumber(own, 'exact');
+        return typeof Is === 'number' && Is !== 0 && closeTo(val, Is);
+      },
+    },
+  ];
+  exact.tex = `I = ${iTex}`;
+  uni.tex = `\\langle I\\rangle_{\\text{uniform}} = ${tn(uniform)}`;
+  imp.tex = `\\langle I\\rangle_{\\text{importance}} = I = ${tn(importance)}`;
   return {
     question: 'q4',
     seed,
@@ -170,12 +223,9 @@ export function q4Variant(seed: number): Variant {
       { name: 'b', label: 'b', value: String(b), display: String(b) },
       { name: 'samples', label: 'samples xᵢ', value: P.samples.join(','), display: P.samples.join(', ') },
     ],
-    parts: [
-      { id: 'a', prompt: `(a) I = ∫ f dx over [${a}, ${b}].`, answers: [exact] },
-      { id: 'b', prompt: '(b) The uniform estimate.', answers: [uni] },
-      { id: 'c', prompt: '(c) The importance-sampled estimate with p ∝ f.', answers: [imp] },
-    ],
-    solution,
+    parts,
+    intro: [],
+    solution: assembleSolution([], parts),
     sceneHref: `#/monte-carlo?${query({ f: fn.text, a, b, samples: P.samples.join(','), pdf: 'proportional' })}`,
     sceneLabel: 'Open this integral and these samples in the Monte Carlo scene',
     notes: [],

@@ -10,7 +10,19 @@
 import { Rng } from '../core/random';
 import { intersectRaySphere, type RaySphereCase, type RaySphereHit, type Vec3 } from '../core/geometry';
 import { choiceAnswer, intIn, numberAnswer, pick, query } from './build';
-import { fmt, tn, tp, vecDisplay, vecValue, type SolutionStep, type Variant } from './model';
+import { closeTo, ownNumber } from './follow';
+import {
+  assembleSolution,
+  fmt,
+  tn,
+  tp,
+  vecDisplay,
+  vecValue,
+  type FollowRule,
+  type Part,
+  type SolutionStep,
+  type Variant,
+} from './model';
 
 export const CASES: readonly RaySphereCase[] = ['miss', 'tangent', 'two-hits', 'inside', 'behind'];
 
@@ -221,25 +233,128 @@ export function q5Variant(seed: number): Variant {
   ];
   const dot = (u: Vec3, v: Vec3) =>
     `${tp(u[0])}\\cdot${tp(v[0])} + ${tp(u[1])}\\cdot${tp(v[1])} + ${tp(u[2])}\\cdot${tp(v[2])}`;
-  const solution: SolutionStep[] = [
+  const stepsA: SolutionStep[] = [
     { text: 'Substitute p(t) = o + t d into |p − c|² = r², with f = o − c:' },
     { tex: `f = o - c = ${vecDisplay(f)}` },
+    { tex: `(d\\cdot d)\\,t^2 + 2\\,(d\\cdot f)\\,t + (f\\cdot f - r^2) = 0` },
     { tex: `a = d\\cdot d = ${dot(P.d, P.d)} = ${tn(a)}` },
     { tex: `b = 2\\,d\\cdot f = 2\\,(${dot(P.d, f)}) = ${tn(b)}` },
     { tex: `c = f\\cdot f - r^2 = ${tn(ff)} - ${tn(P.r * P.r)} = ${tn(cc)}` },
     { tex: `\\Delta = b^2 - 4ac = ${tp(b)}^2 - 4\\cdot${tp(a)}\\cdot${tp(cc)} = ${tn(D)}` },
+  ];
+  const rootsTex = `t_{0,1} = \\frac{-b \\mp \\sqrt{\\Delta}}{2a} = \\frac{${tn(-b)} \\mp ${tn(Math.sqrt(Math.max(D, 0)))}}{${tn(2 * a)}}`;
+  const stepsB: SolutionStep[] = [
     ...(hit
-      ? [
-          {
-            tex: `t_{0,1} = \\frac{-b \\mp \\sqrt{\\Delta}}{2a} = \\frac{${tn(-b)} \\mp ${tn(Math.sqrt(Math.max(D, 0)))}}{${tn(2 * a)}}`,
-          },
-          { tex: `t_0 = ${tn(t0!)},\\quad t_1 = ${tn(t1!)}` },
-        ]
+      ? [{ tex: rootsTex }, { tex: `t_0 = ${tn(t0!)},\\quad t_1 = ${tn(t1!)}` }]
       : [{ text: 'Δ < 0: no real root, the ray misses (t0, t1 and t_hit: none).' }]),
     {
       text: `${caseWhy(h)} ${tHit !== null ? `t_hit = ${fmt(tHit)}.` : 't_hit: none.'} A hit needs Δ ≥ 0 and t ≥ 0.`,
     },
   ];
+  const parts: Part[] = [
+    {
+      id: 'a',
+      prompt: 'The quadratic a t² + b t + c = 0 and its discriminant.',
+      answers: answers.slice(0, 4),
+      hint: [
+        { text: 'Write f = o − c and expand |f + t d|² = r²:' },
+        {
+          tex: `f = o - c = ${vecDisplay(f)}, \\qquad (d\\cdot d)\\,t^2 + 2\\,(d\\cdot f)\\,t + (f\\cdot f - r^2) = 0`,
+        },
+      ],
+      steps: stepsA,
+    },
+    {
+      id: 'b',
+      prompt:
+        'The roots (none on a miss), the hit (none if no root is ≥ 0), and the case: miss, tangent, two-hits, inside or behind.',
+      paperPrompt:
+        'The roots t0 ≤ t1, the hit t_hit (the nearest root with t ≥ 0, if any), and the case: miss, tangent, two hits, origin inside, or sphere behind.',
+      answers: answers.slice(4),
+      hint: [
+        {
+          text: 'The sign of Δ says how many real roots there are; if Δ ≥ 0 use the quadratic formula, then keep only roots with t ≥ 0:',
+        },
+        { tex: hit ? rootsTex : `\\Delta = ${tn(D)}` },
+      ],
+      steps: stepsB,
+    },
+  ];
+  const byName = Object.fromEntries(answers.map((x) => [x.name, x]));
+  // follow-through from the student's own a, b, c, Δ and roots
+  type Own = Parameters<FollowRule['matches']>[0];
+  const N = (own: Own, n: string) => ownNumber(own, n);
+  const ownRoots = (own: Own): [number | null, number | null] | null => {
+    const A = N(own, 'a');
+    const B = N(own, 'b');
+    const Dd = N(own, 'discriminant');
+    if (typeof A !== 'number' || typeof B !== 'number' || typeof Dd !== 'number' || A === 0) return null;
+    if (Dd < 0) return [null, null];
+    const r0 = (-B - Math.sqrt(Dd)) / (2 * A);
+    const r1 = (-B + Math.sqrt(Dd)) / (2 * A);
+    return [Math.min(r0, r1), Math.max(r0, r1)];
+  };
+  byName.discriminant.follow = [
+    {
+      from: ['a', 'b', 'c'],
+      matches: (own, x) => {
+        const [A, B, C] = [N(own, 'a'), N(own, 'b'), N(own, 'c')];
+        return (
+          typeof A === 'number' &&
+          typeof B === 'number' &&
+          typeof C === 'number' &&
+          closeTo(x, B * B - 4 * A * C)
+        );
+      },
+    },
+  ];
+  byName.t0.follow = [
+    { from: ['a', 'b', 'discriminant'], matches: (own, x) => closeTo(x, ownRoots(own)?.[0]) },
+  ];
+  byName.t1.follow = [
+    { from: ['a', 'b', 'discriminant'], matches: (own, x) => closeTo(x, ownRoots(own)?.[1]) },
+  ];
+  byName['t-hit'].follow = [
+    {
+      from: ['t0', 't1'],
+      matches: (own, x) => {
+        const r = [N(own, 't0'), N(own, 't1')];
+        if (r.some((t) => t === undefined)) return false;
+        const ahead = r.filter((t): t is number => typeof t === 'number' && t >= 0);
+        return closeTo(x, ahead.length ? Math.min(...ahead) : null);
+      },
+    },
+  ];
+  byName.case.follow = [
+    {
+      from: ['discriminant', 't0', 't1'],
+      matches: (own, x) => {
+        const Dd = N(own, 'discriminant');
+        const r0 = N(own, 't0');
+        const r1 = N(own, 't1');
+        if (typeof Dd !== 'number' || r0 === undefined || r1 === undefined) return false;
+        let want: string;
+        if (Dd < 0) want = 'miss';
+        else if (Dd === 0) want = 'tangent';
+        else if (r0 === null || r1 === null) return false;
+        else {
+          const lo = Math.min(r0, r1);
+          const hi = Math.max(r0, r1);
+          want = lo >= 0 ? 'two-hits' : hi >= 0 ? 'inside' : 'behind';
+        }
+        return x === want;
+      },
+    },
+  ];
+  const texOf = (x: number | null) => (x === null ? '\\text{none}' : tn(x));
+  byName.a.tex = `a = ${tn(a)}`;
+  byName.b.tex = `b = ${tn(b)}`;
+  byName.c.tex = `c = ${tn(cc)}`;
+  byName.discriminant.tex = `\\Delta = ${tn(D)}`;
+  byName.t0.tex = `t_0 = ${texOf(t0)}`;
+  byName.t1.tex = `t_1 = ${texOf(t1)}`;
+  byName['t-hit'].tex = `t_{\\text{hit}} = ${texOf(tHit)}`;
+  byName.case.tex = `\\text{${h.case}}`;
   return {
     question: 'q5',
     seed,
@@ -251,20 +366,9 @@ export function q5Variant(seed: number): Variant {
       { name: 'c', label: 'centre c', value: vecValue(P.c), display: vecDisplay(P.c) },
       { name: 'r', label: 'radius r', value: String(P.r), display: String(P.r) },
     ],
-    parts: [
-      {
-        id: 'a',
-        prompt: 'The quadratic a t² + b t + c = 0 and its discriminant.',
-        answers: answers.slice(0, 4),
-      },
-      {
-        id: 'b',
-        prompt:
-          'The roots (none on a miss), the hit (none if no root is ≥ 0), and the case: miss, tangent, two-hits, inside or behind.',
-        answers: answers.slice(4),
-      },
-    ],
-    solution,
+    parts,
+    intro: [],
+    solution: assembleSolution([], parts),
     sceneHref: `#/ray-sphere?${query({ o: vecValue(P.o), d: vecValue(P.d), c: vecValue(P.c), r: P.r, method: 'naive' })}`,
     sceneLabel: 'Open this ray and sphere in the ray–sphere scene',
     notes: [],

@@ -14,7 +14,8 @@ import { Rng } from '../core/random';
 import { patchSolidAngleApprox } from '../core/geometry';
 import { areaLightTerms, makeRectLight, type AreaLightSetup, type RectLight } from '../core/lights';
 import { intIn, numberAnswer, pick, query } from './build';
-import { fmt, tn, vecDisplay, vecValue, type SolutionStep, type Variant } from './model';
+import { closeTo, ownNumber } from './follow';
+import { assembleSolution, fmt, tn, vecDisplay, vecValue, type Part, type Variant } from './model';
 
 type V3 = [number, number, number];
 
@@ -211,25 +212,83 @@ export function q6Variant(seed: number): Variant {
     (q, i) =>
       `${vecDisplay(q.x, 4)} & ${tn(q.cosT, 5)} & ${tn(q.cosL, 5)} & ${tn(q.r2, 5)} & ${tn(terms[i], 5)}`,
   );
-  const solution: SolutionStep[] = [
+  const xp = g.centre.map((c, k) => c - P.p[k]);
+  const parts: Part[] = [
     {
-      text: `(a) The patch centre is ${vecDisplay(g.centre, 5)} and its normal n_l = ${vecDisplay(g.patch.normal, 5)}; from p = ${vecDisplay(P.p)}:`,
+      id: 'a',
+      prompt: '(a) The patch: distance r, cos θ_l, and dω.',
+      answers: answers.slice(0, 3),
+      hint: [
+        { text: 'Start from the vector from p to the patch centre; its length is r:' },
+        { tex: `x - p = ${vecDisplay(xp, 5)}` },
+      ],
+      steps: [
+        {
+          text: `(a) The patch centre is x = ${vecDisplay(g.centre, 5)} and its normal n_l = ${vecDisplay(g.patch.normal, 5)}; from p = ${vecDisplay(P.p)}:`,
+        },
+        { tex: `x - p = ${vecDisplay(xp, 5)}, \\qquad r = |x - p| = ${tn(g.r)}` },
+        { tex: `\\cos\\theta_l = \\frac{-n_l\\cdot(x - p)}{r} = ${tn(g.cosL)}` },
+        {
+          tex: `d\\omega \\approx \\frac{dA\\,\\cos\\theta_l}{r^2} = \\frac{${tn(dA)}\\cdot ${tn(g.cosL)}}{${tn(g.r * g.r)}} = ${tn(g.dOmega)}\\ \\text{sr}`,
+        },
+      ],
     },
-    { tex: `r = |x - p| = ${tn(g.r)}` },
-    { tex: `\\cos\\theta_l = \\frac{-n_l\\cdot(x - p)}{r} = ${tn(g.cosL)}` },
     {
-      tex: `d\\omega \\approx \\frac{dA\\,\\cos\\theta_l}{r^2} = \\frac{${tn(dA)}\\cdot ${tn(g.cosL)}}{${tn(g.r * g.r)}} = ${tn(g.dOmega)}\\ \\text{sr}`,
-    },
-    {
-      text: `(b) Uniform area sampling, p_A = 1/|A| with |A| = ${fmt(A)}, f = ρ/π = ${fmt(f, 6)}, L = ${P.L}. Per point: cos θ (floor normal +z), cos θ_l (light normal ${vecDisplay(g.light.normal, 4)}), r², and the term |A| f L cos θ cos θ_l / r²:`,
-    },
-    {
-      tex: `\\begin{array}{ccccc} x_i & \\cos\\theta & \\cos\\theta_l & r^2 & \\text{term} \\\\ \\hline ${rows.join(' \\\\ ')} \\end{array}`,
-    },
-    {
-      tex: `\\begin{aligned} \\langle L_o\\rangle &= \\frac{|A|}{N}\\sum_i f L\\,\\cos\\theta_i\\,\\frac{\\cos\\theta_{l,i}}{r_i^2} \\\\ &= \\frac{1}{${n}}\\,(${Array.from(terms, (t) => tn(t, 5)).join(' + ')}) \\\\ &= ${tn(estimate)} \\end{aligned}`,
+      id: 'b',
+      prompt: '(b) The area-sampling estimate ⟨L_o⟩ = (|A|/N) Σ f L cos θ cos θ_l / r².',
+      answers: answers.slice(3),
+      hint: [
+        {
+          text: `Sampling the light uniformly by area has p_A = 1/|A| with |A| = ${fmt(A)}. The solid angle of each sample’s area is dω = dA cos θ_l / r², so each term is:`,
+        },
+        {
+          tex: `\\frac{f\\,L\\cos\\theta\\,\\cos\\theta_l / r^2}{p_A} = |A|\\,\\frac{\\rho}{\\pi}\\,L\\,\\frac{\\cos\\theta\\,\\cos\\theta_l}{r^2}`,
+        },
+      ],
+      steps: [
+        {
+          text: `(b) Uniform area sampling, p_A = 1/|A| with |A| = ${fmt(A)}, f = ρ/π = ${fmt(f, 6)}, L = ${P.L}. Per point: cos θ (floor normal +z), cos θ_l (light normal ${vecDisplay(g.light.normal, 4)}), r², and the term |A| f L cos θ cos θ_l / r²:`,
+        },
+        {
+          tex: `\\begin{array}{ccccc} x_i & \\cos\\theta & \\cos\\theta_l & r^2 & \\text{term} \\\\ \\hline ${rows.join(' \\\\ ')} \\end{array}`,
+        },
+        {
+          tex: `\\begin{aligned} \\langle L_o\\rangle &= \\frac{|A|}{N}\\sum_i f L\\,\\cos\\theta_i\\,\\frac{\\cos\\theta_{l,i}}{r_i^2} \\\\ &= \\frac{1}{${n}}\\,(${Array.from(terms, (t) => tn(t, 5)).join(' + ')}) \\\\ &= ${tn(estimate)} \\end{aligned}`,
+        },
+      ],
     },
   ];
+  // follow-through: dω from the student's own r and cos θ_l; the estimate with their own dω formula
+  answers[2].follow = [
+    {
+      from: ['r', 'cos-theta-l'],
+      matches: (own, x) => {
+        const r = ownNumber(own, 'r');
+        const c = ownNumber(own, 'cos-theta-l');
+        return typeof r === 'number' && typeof c === 'number' && r !== 0 && closeTo(x, (dA * c) / (r * r));
+      },
+    },
+  ];
+  const perPoint = (term: (q: (typeof pts)[number]) => number) =>
+    mean(pts.map((q) => A * f * P.L * q.cosT * term(q)));
+  const ownFormulas: [number, number][] = [
+    [dA / (g.r * g.r), perPoint((q) => 1 / q.r2)], // no cos θ_l
+    [(dA * g.cosL) / g.r, perPoint((q) => q.cosL / Math.sqrt(q.r2))], // r not squared
+    [(dA * g.cosRecv) / (g.r * g.r), perPoint((q) => q.cosT / q.r2)], // the receiver's cosine
+  ];
+  answers[3].follow = [
+    {
+      from: ['d-omega'],
+      matches: (own, x) => {
+        const w = ownNumber(own, 'd-omega');
+        return typeof w === 'number' && ownFormulas.some(([wv, ev]) => closeTo(w, wv) && closeTo(x, ev));
+      },
+    },
+  ];
+  answers[0].tex = `r = ${tn(g.r)}`;
+  answers[1].tex = `\\cos\\theta_l = ${tn(g.cosL)}`;
+  answers[2].tex = `d\\omega = \\frac{dA\\cos\\theta_l}{r^2} = ${tn(g.dOmega)}\\ \\text{sr}`;
+  answers[3].tex = `\\langle L_o\\rangle = ${tn(estimate)}`;
   const ptsValue = pts.map((q) => vecValue(q.x)).join(';');
   return {
     question: 'q6',
@@ -263,15 +322,9 @@ export function q6Variant(seed: number): Variant {
         display: pts.map((q) => vecDisplay(q.x, 5)).join('  '),
       },
     ],
-    parts: [
-      { id: 'a', prompt: '(a) The patch: distance r, cos θ_l, and dω.', answers: answers.slice(0, 3) },
-      {
-        id: 'b',
-        prompt: '(b) The area-sampling estimate ⟨L_o⟩ = (|A|/N) Σ f L cos θ cos θ_l / r².',
-        answers: answers.slice(3),
-      },
-    ],
-    solution,
+    parts,
+    intro: [],
+    solution: assembleSolution([], parts),
     sceneHref: `#/area-light?${query({ p: vecValue(P.p), lc: vecValue(P.lc), ls: vecValue(P.ls), tilt: P.tilt, L: P.L, rho: P.rho, pu: P.pu, pv: P.pv, psize: P.psize, ptilt: P.ptilt })}`,
     sceneLabel: 'Open this light and patch in the area-light scene',
     notes: [

@@ -1,4 +1,5 @@
 /** The six practice questions: metadata and the variant generator of each (pure). */
+import { QUESTIONS as CATALOGUE } from '../kit/catalogue';
 import { QUESTION_IDS, type QuestionId, type Variant } from './model';
 import { q1Variant } from './q1';
 import { q2Variant } from './q2';
@@ -15,50 +16,23 @@ export interface QuestionInfo {
   generate: (seed: number) => Variant;
 }
 
-export const QUESTIONS: readonly QuestionInfo[] = [
-  {
-    id: 'q1',
-    n: 1,
-    title: 'Sampling a hemisphere PDF by inversion',
-    blurb: 'Normalize k cosᵐθ e^(aφ), its marginals, CDFs and inversion formulas.',
-    generate: q1Variant,
-  },
-  {
-    id: 'q2',
-    n: 2,
-    title: 'Monte Carlo estimators on the hemisphere',
-    blurb: 'Uniform and importance-sampled estimates from given directions; which has zero variance.',
-    generate: q2Variant,
-  },
-  {
-    id: 'q3',
-    n: 3,
-    title: 'Texture lookup',
-    blurb: 'Nearest and bilinear lookup on a texel grid, and the spherical (u, v) of a point.',
-    generate: q3Variant,
-  },
-  {
-    id: 'q4',
-    n: 4,
-    title: 'Monte Carlo integration in 1D',
-    blurb: 'The exact integral, the uniform and the importance-sampled estimate from given samples.',
-    generate: q4Variant,
-  },
-  {
-    id: 'q5',
-    n: 5,
-    title: 'Ray–sphere intersection',
-    blurb: 'The quadratic, its discriminant, the roots, the hit and the case.',
-    generate: q5Variant,
-  },
-  {
-    id: 'q6',
-    n: 6,
-    title: 'Solid angle and area lights',
-    blurb: 'dω = dA cos θ_l / r² for a patch, and the area-sampling estimator from given points.',
-    generate: q6Variant,
-  },
-];
+const GENERATORS: Record<QuestionId, (seed: number) => Variant> = {
+  q1: q1Variant,
+  q2: q2Variant,
+  q3: q3Variant,
+  q4: q4Variant,
+  q5: q5Variant,
+  q6: q6Variant,
+};
+
+/** The practice questions, in exam order: title and blurb from the catalogue, and a generator. */
+export const QUESTIONS: readonly QuestionInfo[] = CATALOGUE.map((q) => ({
+  id: q.practice.id as QuestionId,
+  n: q.n,
+  title: q.title,
+  blurb: q.practice.blurb,
+  generate: GENERATORS[q.practice.id as QuestionId],
+}));
 
 export function isQuestionId(s: string): s is QuestionId {
   return (QUESTION_IDS as readonly string[]).includes(s);

@@ -85,7 +85,7 @@ export function Viewport({
   const box = useRef<HTMLDivElement>(null);
   const seen = useSeenOnce(box);
   // On a phone or tablet the 3D view starts when asked (a tap on its button, or Enter on the
-  // focused view): three.js on a phone's CPU is the heaviest part of a scene's load (issue 15), and
+  // focused view): three.js on a phone's CPU is the heaviest part of a scene's load, and
   // an idle view does not capture the swipes that scroll the page. Elsewhere it starts on sight.
   const [wanted, setWanted] = useState(() => !touchOnly());
   const [engine, setEngine] = useState<Engine | null>(null);
@@ -102,7 +102,7 @@ export function Viewport({
     let eng: Engine | null = null;
     let stopVis = () => {};
     const container = box.current;
-    // The start is split into tasks that yield (issue 15: on a phone each was a long task): the
+    // The start is split into tasks that yield (on a phone each was a long task): the
     // probe, the renderer, the scene's setup (effect below), the shaders (warmUp), the first frame.
     // after the frame in progress has painted: the page's first content does not wait for three.js
     afterPaint()

@@ -1,5 +1,5 @@
 /**
- * A part of the page that is mounted late (issue 15): when it comes near the screen, else in idle
+ * A part of the page that is mounted late: when it comes near the screen, else in idle
  * time, one section per idle period in page order (./viewQueue), and at once before printing. A
  * scene's exam page mounts its first screen first; the derivations, tables and plots below follow
  * in short tasks instead of one long commit (and one long layout) when the page opens on a phone.

@@ -27,7 +27,7 @@ export function loadKatex(): Promise<Katex> {
 
 /**
  * Typesetting happens in a worker (./katex.worker): one aligned derivation is tens of ms of
- * KaTeX on a phone, a long task each on the main thread (issue 15). Where a worker cannot be
+ * KaTeX on a phone, a long task each on the main thread. Where a worker cannot be
  * started, KaTeX runs on the main thread instead.
  */
 let worker: Worker | null | undefined;
@@ -68,7 +68,7 @@ let started: Promise<void> | null = null;
 /**
  * The first formula to typeset starts the worker and the stylesheet, but only once the frame that
  * shows the page's text (formulas still as TeX source) has been painted: on a phone, downloading
- * them earlier delays that first paint (Lighthouse's LCP; issue 15). Later formulas go at once.
+ * them earlier delays that first paint (Lighthouse's LCP). Later formulas go at once.
  */
 function mathStarted(): Promise<void> {
   if (!started) started = afterPaint().then(prepareMath);

@@ -2,7 +2,7 @@
  * Resolves once the browser has painted the frame in progress (the next animation frame, then a
  * task). Work that the first paint does not need (the KaTeX worker and stylesheet, the service
  * worker) waits for it, so a phone does not download and run it before the page's first content is
- * on screen (Lighthouse's LCP counts everything started before that paint; issue 15). A hidden page
+ * on screen (Lighthouse's LCP counts everything started before that paint). A hidden page
  * paints no frames: there it resolves after a task, and a timer makes sure it always resolves.
  */
 export function afterPaint(): Promise<void> {

@@ -355,34 +355,3 @@ export function SceneLayout({
     </div>
   );
 }
-
-/** A button row for play / pause / step / reset. */
-export function Transport({
-  playing,
-  onPlayPause,
-  onStep,
-  onReset,
-}: {
-  playing: boolean;
-  onPlayPause: () => void;
-  onStep?: () => void;
-  onReset?: () => void;
-}) {
-  return (
-    <div className="transport" role="group" aria-label="Animation">
-      <button type="button" onClick={onPlayPause} aria-pressed={playing}>
-        {playing ? '❚❚ Pause' : '▶ Play'}
-      </button>
-      {onStep ? (
-        <button type="button" onClick={onStep}>
-          Step
-        </button>
-      ) : null}
-      {onReset ? (
-        <button type="button" onClick={onReset}>
-          Reset
-        </button>
-      ) : null}
-    </div>
-  );
-}

@@ -1,8 +1,8 @@
 /**
- * Exam-first page structure, shared by every scene (issue 11). A scene lays out each exam question
+ * Exam-first page structure, shared by every scene. A scene lays out each exam question
  * in this order:
  *
- *   <ExamQuestion n={1} title="Sampling a hemisphere PDF">
+ *   <ExamQuestion n={1}>                (its title comes from the catalogue)
  *     <ExamPart id="1a" asks={<>Normalize p(ω) over the hemisphere …</>}>
  *       <Derivation>…the steps the key awards marks for, with live numbers…</Derivation>
  *       <LiveAnswer>…readouts computed by the core…</LiveAnswer>
@@ -20,18 +20,18 @@
  */
 import { Children, type ReactNode } from 'react';
 import { Deferred } from './Deferred';
-import { questionStart, type SceneInfo } from '../scenes/registry';
-import type { ShellFlags } from '../app/route';
+import { questionInfo, questionStart, type SceneInfo } from '../kit/catalogue';
+import type { ShellFlags } from '../kit/shell';
 
-/** One exam question: its number and title, and its parts in order. */
+/** One exam question: its number and title (the catalogue's unless given), and its parts in order. */
 export function ExamQuestion({
   n,
-  title,
+  title = questionInfo(n)?.title ?? '',
   intro,
   children,
 }: {
   n: number;
-  title: string;
+  title?: string;
   intro?: ReactNode;
   children: ReactNode;
 }) {
@@ -89,40 +89,36 @@ export function ExamPart({
   );
 }
 
-/** The written derivation: the steps the key awards marks for (with live numbers where they have numbers). */
-export function Derivation({
-  title = 'Derivation',
+/** A titled block of an exam part (derivation, live answer). */
+function ExamBlock({
+  className,
+  title,
   children,
   testId,
 }: {
-  title?: string;
+  className: string;
+  title: string;
   children: ReactNode;
   testId?: string;
 }) {
   return (
-    <div className="exam-derivation" data-testid={testId}>
+    <div className={className} data-testid={testId}>
       <h4 className="exam-block-title">{title}</h4>
       {children}
     </div>
   );
 }
 
+type BlockProps = { title?: string; children: ReactNode; testId?: string };
+
+/** The written derivation: the steps the key awards marks for (with live numbers where they have numbers). */
+export function Derivation({ title = 'Derivation', ...rest }: BlockProps) {
+  return <ExamBlock className="exam-derivation" title={title} {...rest} />;
+}
+
 /** The answer, computed live by the math core (readouts go here). */
-export function LiveAnswer({
-  title = 'Answer, computed live',
-  children,
-  testId,
-}: {
-  title?: string;
-  children: ReactNode;
-  testId?: string;
-}) {
-  return (
-    <div className="exam-answer" data-testid={testId}>
-      <h4 className="exam-block-title">{title}</h4>
-      {children}
-    </div>
-  );
+export function LiveAnswer({ title = 'Answer, computed live', ...rest }: BlockProps) {
+  return <ExamBlock className="exam-answer" title={title} {...rest} />;
 }
 
 /** A note on where the key's printed figure or wording differs from the computation. */

@@ -3,26 +3,10 @@
  * practice pages (practice/model.ts `fmt`) and the scenes' counts (`formatCount`): pure, no DOM.
  */
 
+import { superscript } from './axis';
+
 /** How an exponent is written: 'e' → "1.5e-5" (plain text), 'times' → "1.5×10⁻⁵" (typeset). */
 export type ExponentStyle = 'e' | 'times';
-
-const SUPERSCRIPT: Readonly<Record<string, string>> = Object.assign(
-  Object.create(null) as Record<string, string>,
-  {
-    '-': '⁻',
-    '+': '',
-    '0': '⁰',
-    '1': '¹',
-    '2': '²',
-    '3': '³',
-    '4': '⁴',
-    '5': '⁵',
-    '6': '⁶',
-    '7': '⁷',
-    '8': '⁸',
-    '9': '⁹',
-  },
-);
 
 /**
  * `digits` significant digits, trailing zeros trimmed, no exponent for 1e-4 ≤ |x| < 1e9; outside
@@ -40,15 +24,13 @@ export function formatSignificant(x: number, digits: number, style: ExponentStyl
   }
   const [m, e] = x.toExponential(Math.max(0, digits - 1)).split('e');
   const mt = m!.includes('.') ? m!.replace(/\.?0+$/, '') : m!;
-  return style === 'e'
-    ? `${mt}e${e!.replace('+', '')}`
-    : `${mt}×10${[...e!].map((c) => SUPERSCRIPT[c] ?? c).join('')}`;
+  return style === 'e' ? `${mt}e${e!.replace('+', '')}` : `${mt}×10${superscript(e!.replace('+', ''))}`;
 }
 
 /**
  * A sample count with comma thousands separators, as `n.toLocaleString('en')` writes a
  * non-negative integer, without Intl: the page's first toLocaleString loads ICU's number
- * formatting, ~25–40 ms of main-thread time in the scene's first render (issue 15). Anything else
+ * formatting, ~25–40 ms of main-thread time in the scene's first render. Anything else
  * (negative, fractional, unsafe integers) goes to toLocaleString.
  */
 export function formatCount(n: number): string {

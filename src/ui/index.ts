@@ -7,17 +7,7 @@ export {
   formatNumber,
   type ReadoutProps,
 } from './Readout';
-export {
-  NumberField,
-  Slider,
-  Select,
-  Toggle,
-  ExprField,
-  Panel,
-  Notice,
-  SceneLayout,
-  Transport,
-} from './controls';
+export { NumberField, Slider, Select, Toggle, ExprField, Panel, Notice, SceneLayout } from './controls';
 export { MathTex, loadKatex } from './MathTex';
 export { runChunked, nextTask } from './chunked';
 export { Plot, loadPlotly, type PlotTrace, type PlotLayout } from './Plot';
@@ -26,7 +16,6 @@ export { useSeenOnce, observeVisibility, touchOnly } from './useInView';
 export {
   useTimeline,
   useTimelineFrame,
-  useTimelinePosition,
   useCoarsePosition,
   timelineParams,
   advance,
@@ -39,6 +28,22 @@ export {
   type TimelineListener,
 } from './timeline';
 export { TimelineTransport, type TimelineTransportProps } from './TimelineTransport';
+export {
+  AnimationDriver,
+  createAnimationStore,
+  createThrottle,
+  heldPosition,
+  lastValue,
+  useAnimationDriver,
+  useAnimFrame,
+  useHeldWhile,
+  usePlaying,
+  useStillT,
+  useThrottled,
+  textGate,
+  type AnimationDriverProps,
+  type AnimationStore,
+} from './animation';
 export {
   ExamQuestion,
   ExamPart,

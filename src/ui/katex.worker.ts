@@ -1,5 +1,5 @@
 /**
- * KaTeX typesetting off the main thread (issue 15): a scene's exam page has a hundred-odd
+ * KaTeX typesetting off the main thread: a scene's exam page has a hundred-odd
  * formulas, and one aligned derivation takes tens of ms to typeset on a phone — each one a long
  * task on the main thread. Here they cost the page nothing; the main thread only inserts the HTML.
  * Requests are answered in the order they arrive (the page sends the formulas near the screen

@@ -1,5 +1,5 @@
 /**
- * When each formula of a page is typeset (issue 15): KaTeX for a formula on or near the screen
+ * When each formula of a page is typeset: KaTeX for a formula on or near the screen
  * runs at once, in the shared sliced queue (./chunked: short tasks that yield between slices); the
  * others in idle time, a few per idle period, in page order; everything still waiting before
  * printing (`flushMathForPrint`). The scheduling is ./viewQueue's.
@@ -57,7 +57,7 @@ function pumpInserts(): void {
 /**
  * Put a typeset formula (`cost`: its HTML's length) into the page soon: a few per frame. The
  * worker answers a whole screen of formulas at once, and React would commit them together (tens
- * of ms of HTML parsing and layout in one task on a phone; issue 15), so `insert` (which sets the
+ * of ms of HTML parsing and layout in one task on a phone), so `insert` (which sets the
  * formula's state) runs in batches of at most {@link HTML_PER_FRAME} characters, one batch per
  * painted frame.
  */

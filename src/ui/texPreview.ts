@@ -2,10 +2,11 @@
  * A plain-text reading of TeX, shown while a formula waits for KaTeX (./MathTex): "p(ω) = k cos θ
  * e^φ" instead of the source "p(\omega) = k\cos\theta\,e^{\phi}". It reads better on a slow phone
  * and to a screen reader, and, being about as wide as the typeset formula, the text around it
- * moves less when the formula arrives (Lighthouse's layout shift, issue 15).
+ * moves less when the formula arrives (Lighthouse's layout shift).
  *
  * One pass over the characters (no backtracking), never throws; what it does not know it keeps.
  */
+import { SUPERSCRIPT } from './axis';
 
 const SYMBOL: Record<string, string> = {
   alpha: 'α',
@@ -272,28 +273,7 @@ const ACCENT: Record<string, string> = {
 };
 /** Large operators, set apart from what precedes them. */
 const BIG_OP = new Set(['int', 'iint', 'oint', 'sum', 'prod']);
-/** Superscript and subscript characters, where Unicode has them all for a script. */
-const SUP: Record<string, string> = {
-  '0': '⁰',
-  '1': '¹',
-  '2': '²',
-  '3': '³',
-  '4': '⁴',
-  '5': '⁵',
-  '6': '⁶',
-  '7': '⁷',
-  '8': '⁸',
-  '9': '⁹',
-  '+': '⁺',
-  '-': '⁻',
-  '−': '⁻',
-  '=': '⁼',
-  '(': '⁽',
-  ')': '⁾',
-  n: 'ⁿ',
-  i: 'ⁱ',
-  T: 'ᵀ',
-};
+/** Subscript characters (superscripts: ./axis), where Unicode has them all for a script. */
 const SUB: Record<string, string> = {
   '0': '₀',
   '1': '₁',
@@ -434,7 +414,7 @@ export function texPreview(tex: string, display = false): string {
       } else if (c === '^' || c === '_') {
         i++;
         const arg = argument();
-        out += script(arg, c === '^' ? SUP : SUB, c);
+        out += script(arg, c === '^' ? SUPERSCRIPT : SUB, c);
       } else if (c === '&' || c === '~') {
         // a column break, a tie
         i++;
@@ -476,7 +456,7 @@ function wrap(t: string): string {
   return x.length <= 1 || /^[\w.′]+$/u.test(x) ? x : `(${x})`;
 }
 
-function script(arg: string, map: Record<string, string>, mark: string): string {
+function script(arg: string, map: Readonly<Record<string, string>>, mark: string): string {
   const x = arg.trim();
   if (x === '') return '';
   if (x === '′' || x === '′′') return x;

@@ -1,6 +1,6 @@
 /**
  * The shared animation timeline: one implementation of play / pause / step / reset / speed / loop /
- * scrub for every scene (issue 12).
+ * scrub for every scene.
  *
  * The position `t` is state like any other scene parameter: it lives in the scene's URL parameters
  * (`t`, and `play=1` while playing), so a link reopens the animation at the same moment. What a scene
@@ -19,7 +19,7 @@
  * ignores `play=1` from a link (the Play button still works: that is the user's own choice).
  */
 import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState, type RefObject } from 'react';
-import type { ParamSpec } from '../app/params';
+import type { ParamSpec } from '../kit/params';
 import { useShortcuts } from './shortcuts';
 
 /**
@@ -161,16 +161,6 @@ export interface Timeline {
 }
 
 /**
- * The live position, re-rendering only the calling component on every frame (for a small figure
- * that moves every frame while the component owning the timeline re-renders at `renderHz`).
- */
-export function useTimelinePosition(tl: Pick<Timeline, 'subscribe' | 'now'>): number {
-  const [t, setT] = useState(tl.now);
-  useTimelineFrame(tl, setT);
-  return t;
-}
-
-/**
  * The position at a coarse rate: re-renders only the calling component, at most `hz` times a
  * second (and at most every RENDER_MIN_FRAMES frames) while playing, and on every change while
  * paused (exact on pause, step, seek, reset). For text that follows an animation whose owner does
@@ -216,28 +206,9 @@ export function useTimeline(opts: TimelineOptions): Timeline {
 
   // live values for the frame loop and callbacks (`exact` runs ahead of React state while playing
   // with renderHz; setExact keeps both in step)
-  const live = useRef({
-    exact,
-    playing,
-    speed,
-    loop,
-    max,
-    integer,
-    duration,
-    setParams,
-    renderHz: opts.renderHz,
-  });
-  live.current = {
-    ...live.current,
-    playing,
-    speed,
-    loop,
-    max,
-    integer,
-    duration,
-    setParams,
-    renderHz: opts.renderHz,
-  };
+  const current = { playing, speed, loop, max, integer, duration, setParams, renderHz: opts.renderHz };
+  const live = useRef({ exact, ...current });
+  live.current = { ...live.current, ...current };
   const setExact = useCallback((next: number | ((e: number) => number)) => {
     const v = typeof next === 'function' ? next(live.current.exact) : next;
     live.current.exact = v;
@@ -279,7 +250,7 @@ export function useTimeline(opts: TimelineOptions): Timeline {
       written.current.t = t;
       setExact(t);
     }
-  }, [opts.t, max, integer]);
+  }, [opts.t, max, integer, setExact]);
   // external change of `play`
   // (a host page's pause must also leave the paused position in the URL, as the Pause button does)
   useEffect(() => {
@@ -298,11 +269,11 @@ export function useTimeline(opts: TimelineOptions): Timeline {
       written.current.t = t;
       l.setParams({ t });
     }
-  }, [opts.play]);
+  }, [opts.play, setExact]);
   // a shorter timeline (e.g. fewer samples) clamps the position
   useEffect(() => {
     setExact((e) => clampPosition(e, max, false));
-  }, [max]);
+  }, [max, setExact]);
 
   const write = useCallback((patch: { t?: number; play?: boolean }) => {
     if (patch.t !== undefined) written.current.t = patch.t;

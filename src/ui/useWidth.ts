@@ -7,7 +7,7 @@ import { useEffect, useState, type RefObject } from 'react';
  *
  * Measured only by a ResizeObserver, never by reading the layout in an effect: on a page's first
  * commit such a read forced the layout of the whole page inside React's commit, one long task on a
- * phone (issue 15). The observer reports after the browser's own layout; the new width is drawn in
+ * phone. The observer reports after the browser's own layout; the new width is drawn in
  * the next frame (applying it inside the observer's callback would resize observed boxes in the
  * same frame: "ResizeObserver loop completed with undelivered notifications"). The figures that
  * use it have a fixed height, so that first frame shifts nothing.

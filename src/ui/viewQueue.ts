@@ -1,6 +1,6 @@
 /**
  * Work that belongs to an element of the page, done when the element is about to be seen, else in
- * idle time (issue 15). Two users: formulas (./mathQueue: KaTeX typesetting) and the exam page's
+ * idle time. Two users: formulas (./mathQueue: KaTeX typesetting) and the exam page's
  * sections below the first screen (./Deferred: their React subtree is mounted late). A scene's
  * exam page is long; doing all of it when the page opens was most of its main-thread blocking on a
  * phone. So, per queue:

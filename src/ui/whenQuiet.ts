@@ -4,7 +4,7 @@
  * queued), or after `maxMs` whatever happens. A gap between idle callbacks (a task ran) starts the
  * count again.
  *
- * Used to register the service worker (issue 15): its install downloads and stores the whole build
+ * Used to register the service worker: its install downloads and stores the whole build
  * (every scene, Plotly, three.js, KaTeX's fonts), about a second of CPU on a worker thread. Started
  * while a scene is still mounting its sections, it took the second core from the page on a phone
  * and stretched the page's own tasks several times over.
@@ -74,7 +74,7 @@ let settledNow = false;
  * Once per page: resolves when the first screen has been painted and the page has then been quiet
  * for half a second (3 s at most). A scene's opening computation whose result is not on the first
  * screen waits for it (useWorkerJob's `afterSettle`): started while the page mounts its sections
- * and typesets its formulas, a worker takes a core from it and stretches every task (issue 15).
+ * and typesets its formulas, a worker takes a core from it and stretches every task.
  */
 export function pageSettled(): Promise<void> {
   if (!settled) {

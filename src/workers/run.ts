@@ -7,7 +7,17 @@
  *
  * A fresh worker per task makes cancel immediate (terminate) even inside a tight loop.
  */
-import type { FromWorker, ToWorker } from './protocol';
+import { FailureError } from '../core/failure';
+import type {
+  ArgsOf,
+  FromWorker,
+  PartialOf,
+  ResultOf,
+  TaskMap,
+  TaskName,
+  ToWorker,
+  WorkerFactory,
+} from './protocol';
 
 export interface RunOptions<P = unknown> {
   onProgress?: (fraction: number, partial?: P) => void;
@@ -30,12 +40,20 @@ export function isCancelled(err: unknown): boolean {
 
 let nextId = 1;
 
-export function runWorkerTask<R, P = unknown>(
-  makeWorker: () => Worker,
-  method: string,
-  args: unknown,
-  opts: RunOptions<P> = {},
-): Promise<R> {
+/**
+ * Runs `method` in a fresh worker. With a typed factory (workerFactory<Tasks>) the method name, the
+ * arguments, the result and the progress partials are checked against the worker's task map. A task
+ * that refuses rejects with a FailureError carrying the task's `kind`; a worker that crashes, with
+ * kind 'worker-failed'.
+ */
+export function runWorkerTask<T extends TaskMap, K extends TaskName<T>>(
+  makeWorker: WorkerFactory<T>,
+  method: K,
+  args: ArgsOf<T, K>,
+  opts: RunOptions<PartialOf<T, K>> = {},
+): Promise<ResultOf<T, K>> {
+  type R = ResultOf<T, K>;
+  type P = PartialOf<T, K>;
   return new Promise<R>((resolve, reject) => {
     if (opts.signal?.aborted) {
       reject(new TaskCancelled());
@@ -67,13 +85,13 @@ export function runWorkerTask<R, P = unknown>(
         resolve(m.value as R);
       } else {
         finish();
-        reject(new Error(m.message));
+        reject(new FailureError(m.kind, m.message));
       }
     };
     worker.onerror = (e) => {
       e.preventDefault();
       finish();
-      reject(new Error(e.message || 'worker failed'));
+      reject(new FailureError('worker-failed', e.message || 'worker failed'));
     };
     const msg: ToWorker = { id, method, args };
     worker.postMessage(msg, opts.transfer ?? []);

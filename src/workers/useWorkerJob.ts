@@ -1,8 +1,13 @@
 /**
  * The one way a scene runs a long computation: `useWorkerJob(makeWorker, method, args, options)`.
  *
- *     const stats = useWorkerJob<DrawStats>(makeWorker, 'stats', args, { delayMs: 60 });
+ *     const makeWorker = workerFactory<HemisphereTasks>(() => new Worker(new URL(…), { type: 'module' }));
+ *     const stats = useWorkerJob(makeWorker, 'stats', args, { delayMs: 60 });
  *     stats.result   // the result for THESE args, or undefined while it is computed (never a stale one)
+ *     stats.error    // a Failure ({ kind, message }) when the task refused or the worker failed
+ *
+ * The task name, its arguments, its result and its progress partials are checked against the
+ * worker's task map (./protocol TaskMap) at compile time.
  *
  * - When the arguments change (by `key`, default `JSON.stringify(args)`) the run in flight is
  *   cancelled (its worker terminated) and, after `delayMs` of quiet (debounce), a new one starts.
@@ -24,6 +29,8 @@ import {
   useState,
   useSyncExternalStore,
 } from 'react';
+import { asFailure, type Failure } from '../core/failure';
+import type { ArgsOf, PartialOf, ResultOf, TaskMap, TaskName, WorkerFactory } from './protocol';
 import { isCancelled, runWorkerTask } from './run';
 import { isPageSettled, pageSettled } from '../ui/whenQuiet';
 
@@ -55,7 +62,8 @@ export interface WorkerJob<R, P> {
   /** Asked for, but waiting for its turn on the queue. */
   waiting: boolean;
   progress: number;
-  error: string | null;
+  /** Why the run failed (the task's own Failure kind, or 'worker-failed'); null otherwise. */
+  error: Failure | null;
   /** (Re)start now for the current arguments (after its turn on the queue). */
   run: () => void;
   cancel: () => void;
@@ -106,7 +114,7 @@ interface JobState<R, P> {
   progress: number;
   partial: P | undefined;
   result: R | undefined;
-  error: string | null;
+  error: Failure | null;
 }
 const IDLE: JobState<never, never> = {
   key: null,
@@ -117,13 +125,17 @@ const IDLE: JobState<never, never> = {
   error: null,
 };
 
-export function useWorkerJob<R, P = unknown>(
-  makeWorker: () => Worker,
-  method: string,
-  args: unknown,
+export function useWorkerJob<T extends TaskMap, K extends TaskName<T>>(
+  makeWorker: WorkerFactory<T>,
+  method: K,
+  args: ArgsOf<T, K> | null,
   options: WorkerJobOptions = {},
-): WorkerJob<R, P> {
-  const { enabled = true, delayMs = 0, queue, manual = false, afterSettle = false } = options;
+): WorkerJob<ResultOf<T, K>, PartialOf<T, K>> {
+  type R = ResultOf<T, K>;
+  type P = PartialOf<T, K>;
+  const { enabled: asked = true, delayMs = 0, queue, manual = false, afterSettle = false } = options;
+  // null arguments: nothing to run (as enabled: false)
+  const enabled = asked && args !== null;
   const key = options.key ?? JSON.stringify(args);
   // the arguments the scene opened with (null once they have changed: no later run is held)
   const openingKey = useRef<string | null>(key);
@@ -203,10 +215,10 @@ export function useWorkerJob<R, P = unknown>(
       ctl.current = null;
       if (q) release(q, id);
       // a transition: a result re-renders most of a scene, which React then does in slices that
-      // yield instead of one long task (issue 15)
+      // yield instead of one long task
       startTransition(() => setState((s) => (s.key === runKey ? { ...s, ...patch, running: false } : s)));
     };
-    runWorkerTask<R, P>(latest.current.makeWorker, method, latest.current.args, {
+    runWorkerTask(latest.current.makeWorker, method, latest.current.args as ArgsOf<T, K>, {
       signal: c.signal,
       onProgress: (fraction, partial) => {
         pending = { fraction, partial };
@@ -226,7 +238,7 @@ export function useWorkerJob<R, P = unknown>(
     }).then(
       (result) => settle({ progress: 1, result }),
       (err) => {
-        if (!isCancelled(err)) settle({ error: err instanceof Error ? err.message : String(err) });
+        if (!isCancelled(err)) settle({ error: asFailure(err) });
       },
     );
   }, [wanted, key, owner, q, id, method]);

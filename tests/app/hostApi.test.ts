@@ -4,9 +4,9 @@
  */
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import { validateSet, toUrlText } from '../../src/app/hostApi';
-import { parseOrigins, parseShellFlags } from '../../src/app/route';
-import { parseParams, serializeParams } from '../../src/app/params';
+import { validateSet, toUrlText, typeProblem, versionError } from '../../src/app/hostApi';
+import { parseOrigins, parseShellFlags, shellExtras } from '../../src/kit/shell';
+import { parseParams, serializeParams } from '../../src/kit/params';
 import { schema as texture } from '../../src/scenes/texture/params';
 import { schema as raySphere } from '../../src/scenes/ray-sphere/params';
 
@@ -63,12 +63,57 @@ describe('validateSet', () => {
           const text = toUrlText(value)!;
           const url = parseParams(texture, new URLSearchParams([[name, text]]));
           const r = validateSet(texture, { [name]: value });
-          expect(r.ok).toBe(url.problems.length === 0);
+          // accepted exactly when the URL would take the text and the value has the parameter's type
+          expect(r.ok).toBe(url.problems.length === 0 && typeProblem(texture[name], value) === null);
           if (r.ok) expect(r.patch[name]).toEqual((url.values as Record<string, unknown>)[name]);
         },
       ),
       { numRuns: 300, seed: 14 },
     );
+  });
+
+  it('converts no type silently', () => {
+    for (const bad of [
+      { u: true },
+      { u: [0.7] },
+      { u: false },
+      { vflip: 'yes' },
+      { vflip: 2 },
+      { wrap: 'repeat ' },
+      { wrap: ' repeat' },
+      { wrap: 1 },
+      { grid: [1, 2, 3] },
+      { grid: [] },
+      { grid: 5 },
+      { u: ' 0.7' },
+    ]) {
+      const r = validateSet(texture, bad);
+      expect(r.ok, JSON.stringify(bad)).toBe(false);
+      if (!r.ok) expect(r.problems.map((p) => p.name)).toEqual(Object.keys(bad));
+    }
+    expect(validateSet(raySphere, { r: [2] }).ok).toBe(false);
+    expect(validateSet(raySphere, { o: 1 }).ok).toBe(false);
+    // what the README documents still works: typed values, and URL text
+    for (const good of [
+      { u: 0.7 },
+      { u: '0.7' },
+      { vflip: true },
+      { vflip: 1 },
+      { vflip: '0' },
+      { wrap: 'repeat' },
+      { grid: '1,2;3,4' },
+      { grid: ' 1,2;3,4' },
+    ])
+      expect(validateSet(texture, good).ok, JSON.stringify(good)).toBe(true);
+    expect(validateSet(raySphere, { o: [0, 0, -5], r: 2 }).ok).toBe(true);
+    expect(validateSet(raySphere, { o: '0,0,-5' }).ok).toBe(true);
+  });
+
+  it('says what is wrong with a version', () => {
+    expect(versionError('1')).toMatch(/"1" is a string; send version: 1 \(the number 1\)/);
+    expect(versionError(2)).toMatch(/version 2 is not supported; this app speaks version 1/);
+    expect(versionError(undefined)).toMatch(/no version/);
+    expect(versionError({})).toMatch(/an object/);
   });
 
   it('round-trips: what get reports, set accepts unchanged', () => {
@@ -95,5 +140,45 @@ describe('origin=', () => {
     expect(parseShellFlags('origin=nope').problems.map((p) => p.name)).toEqual(['origin']);
     // origin is a shell parameter: a scene does not call it unknown
     expect(parseParams(texture, 'origin=https%3A%2F%2Fx.org').problems).toEqual([]);
+  });
+
+  it('never widens who is answered: a present origin= with no usable entry answers nobody, and says so', () => {
+    expect(parseOrigins(null)).toEqual({ origins: null, problem: null });
+    expect(parseShellFlags('u=0.3').origins).toBeNull();
+    for (const raw of [
+      'http://127.0.0.1:4304/lms/page',
+      '127.0.0.1:4304',
+      'HTTP://127.0.0.1:4304',
+      'null',
+      '*',
+      '',
+      ' , ,',
+      'file:///x',
+      'javascript:alert(1)',
+    ]) {
+      const r = parseOrigins(raw);
+      expect(r.origins, raw).toEqual([]);
+      expect(r.problem, raw).toMatch(/no usable origin/);
+      const f = parseShellFlags(`origin=${encodeURIComponent(raw)}`);
+      expect(f.origins, raw).toEqual([]);
+      expect(
+        f.problems.map((p) => p.name),
+        raw,
+      ).toEqual(['origin']);
+      // a link the page rewrites keeps the (closed) restriction
+      expect(shellExtras(f).origin, raw).toBe('');
+    }
+    expect(parseShellFlags('origin=').origins).toEqual([]);
+  });
+
+  it('keeps the first 16 origins and names the dropped ones', () => {
+    const list = Array.from({ length: 17 }, (_, i) => `https://h${i}.example.edu`);
+    const r = parseOrigins(list.join(','));
+    expect(r.origins).toEqual(list.slice(0, 16));
+    expect(r.problem).toMatch(/17 origins; only the first 16/);
+    expect(r.problem).toContain('h16.example.edu');
+    expect(parseOrigins(list.slice(0, 16).join(',')).problem).toBeNull();
+    // a repeated origin counts once
+    expect(parseOrigins('https://a.org,https://a.org').origins).toEqual(['https://a.org']);
   });
 });

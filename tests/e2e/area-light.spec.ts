@@ -6,7 +6,7 @@
  */
 import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, readout, readoutNumber, countAnimationFrames } from './fixtures';
-import { defaultValues, parseParams } from '../../src/app/params';
+import { defaultValues, parseParams } from '../../src/kit/params';
 import { schema } from '../../src/scenes/area-light/params';
 import {
   animationFrame,
@@ -222,7 +222,7 @@ test('Q6(a): as the patch shrinks, dA cos θ_l / r² meets the exact solid angle
 });
 
 // ------------------------------------------------------------------------------------------------
-// Exam first (issue 11) and the animation (issue 12).
+// Exam first and the animation.
 
 /** The model computed here, in Node, from a query string (the same parser as the app). */
 function modelFor(query: string) {

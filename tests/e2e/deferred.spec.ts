@@ -1,5 +1,5 @@
 /**
- * Issue 15: a scene's exam page mounts its first screen first. The bodies of the exam parts, the
+ * A scene's exam page mounts its first screen first. The bodies of the exam parts, the
  * controls column and Explore further mount when they come near the screen or in idle time
  * (src/ui/Deferred.tsx); formulas are typeset by KaTeX in a worker. Here idle time is switched off
  * (requestIdleCallback never calls back), so only what is near the screen may mount: the test can

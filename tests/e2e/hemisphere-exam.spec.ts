@@ -1,6 +1,6 @@
 /**
- * Browser tests of #/hemisphere, exam first (issue 11) and the warp morph on the shared timeline
- * (issue 12). Expected values come from the scene's own pure model run here in Node (same core
+ * Browser tests of #/hemisphere, exam first and the warp morph on the shared timeline
+ *. Expected values come from the scene's own pure model run here in Node (same core
  * code, same seed), never from the answer key.
  */
 import type { Page } from '@playwright/test';

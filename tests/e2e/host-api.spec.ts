@@ -225,6 +225,89 @@ test('with origin= the scene answers only that origin', async ({ page }) => {
   expect(heights).toBe(0);
 });
 
+test('a malformed origin= never opens the scene up: nobody is answered, and the page says so', async ({
+  page,
+}) => {
+  test.setTimeout(120_000);
+  const host = hostOrigin.replace('http://', '');
+  for (const raw of [`${hostOrigin}/lms/page`, host, hostOrigin.toUpperCase(), 'null', '*', '']) {
+    await openHost(page, `#/texture?embed=1&origin=${encodeURIComponent(raw)}`);
+    const frame = page.frameLocator('#scene');
+    await expect(frame.getByTestId('param-notice'), raw).toContainText('no usable origin');
+    const r = await page.evaluate(() =>
+      Promise.race([
+        (window as unknown as { rml: { set: (p: unknown) => Promise<unknown> } }).rml
+          .set({ u: 0.9 })
+          .then(() => 'answered'),
+        new Promise((ok) => setTimeout(() => ok('ignored'), 2500)),
+      ]),
+    );
+    expect(r, raw).toBe('ignored');
+    // nothing was applied, and no height message was posted (to '*' or anywhere)
+    const got = await page.evaluate(
+      () =>
+        (window as unknown as { rml: { received: Msg[] } }).rml.received.filter(
+          (m) => m.type === 'render-math-lab:height' || m.type === 'reply',
+        ).length,
+    );
+    expect(got, raw).toBe(0);
+    const f = page.frames().find((x) => x.url().startsWith(`http://127.0.0.1:${appPort}/`))!;
+    expect(await f.evaluate(() => window.location.hash), raw).not.toContain('u=0.9');
+  }
+});
+
+test('set fails, applying nothing, for values the scene would replace by a fallback', async ({ page }) => {
+  test.setTimeout(120_000);
+  const cases: [string, Record<string, unknown>, string][] = [
+    ['#/monte-carlo?embed=1', { a: 1, b: 1, n: 64 }, 'b'],
+    ['#/ray-sphere?embed=1', { d: [0, 0, 0] }, 'd'],
+    ['#/area-light?embed=1', { ls: [0, 0] }, 'ls'],
+    ['#/texture?embed=1', { grid: '1,2,3;4' }, 'grid'],
+    ['#/hemisphere?embed=1', { lobe: 'custom', pdf: '-1' }, 'pdf'],
+    ['#/hemisphere?embed=1', { lobe: 'custom', pdf: 'import(1)' }, 'pdf'],
+  ];
+  for (const [hash, params, name] of cases) {
+    await openHost(page, hash);
+    const before = await api<Reply>(page, 'get');
+    const r = await api<Reply>(page, 'set', params);
+    expect(r.ok, `${hash} ${JSON.stringify(params)}`).toBe(false);
+    expect(r.error).toContain(name);
+    const after = await api<Reply>(page, 'get');
+    expect(after.state, 'nothing applied').toEqual(before.state);
+    await expect(page.frameLocator('#scene').getByTestId('param-notice')).toHaveCount(0);
+  }
+  // no type is converted silently, and a version sent as a string is told how to send it
+  for (const params of [{ exponent: true }, { exponent: [8] }, { lobe: 'custom ' }, { pdf: [1, 2] }]) {
+    const r = await api<Reply>(page, 'set', params);
+    expect(r.ok, JSON.stringify(params)).toBe(false);
+    expect(r.error).toContain(Object.keys(params)[0]);
+  }
+  const v = await page.evaluate(
+    () =>
+      new Promise<Reply>((ok) => {
+        const w = window as unknown as { rml: { received: Msg[] } };
+        const frame = document.querySelector<HTMLIFrameElement>('#scene')!;
+        const n = w.rml.received.length;
+        frame.contentWindow!.postMessage(
+          { protocol: 'render-math-lab', version: '1', id: 'v1', type: 'get' },
+          '*',
+        );
+        const t = setInterval(() => {
+          const m = w.rml.received.slice(n).find((x) => x.id === 'v1');
+          if (m) {
+            clearInterval(t);
+            ok(m as unknown as Reply);
+          }
+        }, 50);
+      }),
+  );
+  expect(v.ok).toBe(false);
+  expect(v.error).toMatch(/"1" is a string; send version: 1/);
+  // a usable change on the same page still applies
+  const ok = await api<Reply>(page, 'set', { lobe: 'custom', pdf: 'cos(theta)' });
+  expect(ok.ok, ok.error).toBe(true);
+});
+
 test('the posted height follows the content both ways: it shrinks as well as grows when the host resizes the iframe', async ({
   page,
 }) => {

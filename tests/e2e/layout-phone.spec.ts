@@ -1,5 +1,5 @@
 /**
- * Layout on phones, tablets and in present mode (issue 11, "make every layout legible"):
+ * Layout on phones, tablets and in present mode ("make every layout legible"):
  * - one column (375 and 768 px): every scene shows its exam question (heading) before its inputs,
  *   and its inputs before its first computed answer;
  * - present=1: #/area-light's 3D view (the figure that teaches Q6) starts in the first screen;
@@ -10,15 +10,18 @@
 import type { Page } from '@playwright/test';
 import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene } from './fixtures';
+import { SCENES as CATALOGUE, type SceneId } from '../../src/kit/catalogue';
 
 /** Each scene: its first exam question's heading, the box that holds its inputs. */
-const SCENES = [
-  { path: 'hemisphere', heading: '#question-1-title', controls: '.hemi-controls' },
-  { path: 'monte-carlo', heading: '#question-4-title', controls: '.scene-controls' },
-  { path: 'texture', heading: '#question-3-title', controls: '.scene-controls' },
-  { path: 'ray-sphere', heading: '#question-5-title', controls: '.rs-stage-ctl' },
-  { path: 'area-light', heading: '#question-6-title', controls: '.scene-controls' },
-] as const;
+const CONTROLS: Partial<Record<SceneId, string>> = {
+  hemisphere: '.hemi-controls',
+  'ray-sphere': '.rs-stage-ctl',
+};
+const SCENES = CATALOGUE.map((s) => ({
+  path: s.id,
+  heading: `#question-${Number.parseInt(s.parts[0]!, 10)}-title`,
+  controls: CONTROLS[s.id] ?? '.scene-controls',
+}));
 
 /** Page y (not viewport y) of the top of the first element matching `sel` that has a box. */
 async function pageTop(page: Page, sel: string): Promise<number> {
@@ -137,13 +140,11 @@ async function displayLines(page: Page): Promise<DisplayLine[]> {
 }
 
 /** Long single-line derivation steps that must now wrap at 375 px (each was wider than a phone). */
-const MUST_WRAP: Record<string, string[]> = {
+const MUST_WRAP: Partial<Record<SceneId, string[]>> = {
   hemisphere: [
     String.raw`|D| = \int_\Omega d\omega`,
     String.raw`E\big[\langle I\rangle\big] = \frac{1}{N}\sum`,
   ],
-  'monte-carlo': [],
-  texture: [],
   'ray-sphere': [String.raw`{a t^2 + b t + c = 0}`, String.raw`{t = \frac{-b \pm \sqrt{\Delta}}{2a}}`],
   'area-light': [String.raw`\langle L_o\rangle_{N=4}`, String.raw`\langle L_o\rangle = \frac{1}{N}\sum`],
 };
@@ -180,7 +181,7 @@ test('375 px: the dissolved one-column layout stays accessible (axe: no serious 
 }) => {
   test.setTimeout(420_000);
   await page.setViewportSize({ width: 375, height: 800 });
-  for (const path of ['area-light', 'texture', 'monte-carlo', 'hemisphere', 'ray-sphere']) {
+  for (const path of CATALOGUE.map((s) => s.id)) {
     await openScene(page, `#/${path}`);
     await typesetAll(page);
     const r = await new AxeBuilder({ page }).analyze();

@@ -194,7 +194,7 @@ test('axe finds no serious or critical violations (light, dark, present, bad pdf
 });
 
 // ---------------------------------------------------------------------------------------------
-// Exam first (issue 11) and the animation (issue 12)
+// Exam first and the animation
 // ---------------------------------------------------------------------------------------------
 
 /** The race as the model computes it, for the exam's f on [0, 2], p ∝ f, seed s. */

@@ -1,7 +1,8 @@
 /**
  * Offline: after one visit to `#/`, the service worker has precached the whole build, so with the
  * server stopped every scene (never opened before) loads and works, with zero console errors. A
- * new build is picked up with the "updated, reload" notice, never a mix of chunks.
+ * new build is picked up with the "updated, reload" notice, never a mix of chunks, and no tab is
+ * reloaded but by its reader.
  *
  * Each test serves its own copy of the build on an ephemeral port, so it can stop the server and
  * "deploy" a new build without touching the shared one.
@@ -14,6 +15,7 @@ import { extname, join, normalize } from 'node:path';
 import type { Page } from '@playwright/test';
 import { test, expect } from './fixtures';
 import { settleLazyViews } from './lazyViews';
+import { SCENES as CATALOGUE } from '../../src/kit/catalogue';
 
 const dist = process.env.E2E_DIST ?? 'dist';
 
@@ -80,13 +82,7 @@ async function waitForServiceWorker(page: Page): Promise<void> {
 }
 
 // A readout each scene computes (contract ids), to know the scene really works.
-const SCENES: [string, string][] = [
-  ['#/hemisphere', 'k'],
-  ['#/monte-carlo', 'exact'],
-  ['#/texture', 'bilinear'],
-  ['#/ray-sphere', 't-hit'],
-  ['#/area-light', 'reference'],
-];
+const SCENES: [string, string][] = CATALOGUE.map((s) => [`#${s.path}`, s.keyReadout]);
 
 test('after one visit to #/, every scene opens and works with the server stopped', async ({
   page,
@@ -181,7 +177,12 @@ test('a new build shows the "updated, reload" notice, and Reload switches to it 
     await expect(page.locator('meta[name="rml-build"]')).toHaveAttribute('content', marker, {
       timeout: 60000,
     });
-    // the other tab switched whole to the new build too, keeping its state (it lives in the URL)
+    // the other tab was not reloaded behind its reader's back: it keeps the old build whole and
+    // offers the reload; its reader's click switches it whole, keeping its state (in the URL)
+    const otherReload = other.getByTestId('update-notice').getByRole('button', { name: 'Reload' });
+    await expect(otherReload).toBeEnabled({ timeout: 60000 });
+    expect(await other.locator('meta[name="rml-build"]').count()).toBe(0);
+    await otherReload.click();
     await expect(other.locator('meta[name="rml-build"]')).toHaveAttribute('content', marker, {
       timeout: 60000,
     });
@@ -190,6 +191,126 @@ test('a new build shows the "updated, reload" notice, and Reload switches to it 
     await other.close();
     await expect(page.getByTestId('bilinear').first()).toHaveAttribute('data-value', /^-?\d/);
     await expect(page.getByTestId('update-notice')).toHaveCount(0);
+  } finally {
+    await srv.stop().catch(() => undefined);
+    rmSync(srv.dir, { recursive: true, force: true });
+  }
+});
+
+/**
+ * "Deploy" a real rebuild into the served folder: every file under assets/ gets a new name (as a
+ * build with changed sources does), every reference to it in the build's text files follows, the
+ * old files are gone from the host, and index.html carries a marker (with its new revision in the
+ * service worker's precache list). Returns the marker.
+ */
+function deployRenamedBuild(dir: string): string {
+  const marker = `rebuilt-${Date.now()}`;
+  const assets = readdirSync(join(dir, 'assets'));
+  const renames = assets.map((name) => [name, name.replace(/(\.[a-z0-9]+)$/i, 'v2$1')] as const);
+  // longest first, and only whole names, so one name inside another is never half-renamed
+  renames.sort((a, b) => b[0].length - a[0].length);
+  const rename = (text: string) => {
+    let out = text;
+    for (const [from, to] of renames) out = out.split(from).join(to);
+    return out;
+  };
+  for (const [from, to] of renames) {
+    const path = join(dir, 'assets', from);
+    if (/\.(js|css|html|json|webmanifest)$/.test(from))
+      writeFileSync(join(dir, 'assets', to), rename(readFileSync(path, 'utf8')));
+    else cpSync(path, join(dir, 'assets', to));
+    rmSync(path);
+  }
+  const html = rename(readFileSync(join(dir, 'index.html'), 'utf8')).replace(
+    '</head>',
+    `<meta name="rml-build" content="${marker}"></head>`,
+  );
+  writeFileSync(join(dir, 'index.html'), html);
+  const sw = readFileSync(join(dir, 'sw.js'), 'utf8');
+  const sw2 = rename(sw).replace(/(url:\s*"index\.html",\s*revision:\s*")[^"]+"/, `$1${marker}"`);
+  expect(sw2, 'the service worker precaches index.html with a revision').not.toBe(rename(sw));
+  writeFileSync(join(dir, 'sw.js'), sw2);
+  return marker;
+}
+
+test('a deploy with three tabs: Reload moves its own tab to the new build, others keep their work', async ({
+  page,
+}) => {
+  test.setTimeout(300_000);
+  const srv = await serveCopy();
+  const context = page.context();
+  const built = (p: Page) => p.locator('meta[name="rml-build"]');
+  try {
+    // tab A: a first visit (no worker controls it when it loads; the first install claims it)
+    await page.goto(`${srv.base}#/texture`);
+    expect(await page.evaluate(() => navigator.serviceWorker.controller === null)).toBe(true);
+    await waitForServiceWorker(page);
+    // tab B: opened once the worker is active, so controlled from its start
+    const tabB = await context.newPage();
+    await tabB.goto(`${srv.base}#/ray-sphere?r=2`);
+    await expect(tabB.getByTestId('t-hit').first()).toHaveAttribute('data-value', /.+/);
+    expect(await tabB.evaluate(() => navigator.serviceWorker.controller !== null)).toBe(true);
+    // tab C: practice with an answer typed and not checked
+    const tabC = await context.newPage();
+    await tabC.goto(`${srv.base}#/practice/q5?seed=3`);
+    await tabC.getByTestId('answer-a').fill('12.5');
+    for (const p of [tabB, tabC])
+      await p.evaluate(() => {
+        const w = window as unknown as { __oldPage: boolean; __taken: Promise<boolean> };
+        w.__oldPage = true; // gone if the page reloads
+        w.__taken = new Promise((ok) =>
+          navigator.serviceWorker.addEventListener('controllerchange', () => ok(true), { once: true }),
+        );
+      });
+
+    const marker = deployRenamedBuild(srv.dir);
+    // the browser's own update check (on a navigation, or periodically), from the first-visit tab
+    await page.evaluate(() =>
+      navigator.serviceWorker.getRegistration().then((r) => r?.update().then(() => undefined)),
+    );
+    const notice = page.getByTestId('update-notice');
+    await expect(notice).toBeVisible({ timeout: 60000 });
+    for (const p of [tabB, tabC])
+      await expect(p.getByTestId('update-notice')).toBeVisible({ timeout: 60000 });
+    expect(await built(page).count()).toBe(0);
+
+    // A's reader clicks Reload: A lands on the new build (it had no controller when it loaded)
+    await notice.getByRole('button', { name: 'Reload' }).click();
+    await expect(built(page)).toHaveAttribute('content', marker, { timeout: 60000 });
+    await expect(page.getByTestId('bilinear').first()).toHaveAttribute('data-value', /^-?\d/);
+    await expect(page.getByTestId('update-notice')).toHaveCount(0);
+
+    // B and C are now controlled by the new build's worker, and were not reloaded: their readers
+    // did not ask; each still runs the old build, offering Reload
+    for (const p of [tabB, tabC]) {
+      expect(await p.evaluate(() => (window as unknown as { __taken: Promise<boolean> }).__taken)).toBe(true);
+      expect(await p.evaluate(() => (window as unknown as { __oldPage?: boolean }).__oldPage)).toBe(true);
+      expect(await built(p).count()).toBe(0);
+      await expect(p.getByTestId('update-notice').getByRole('button', { name: 'Reload' })).toBeEnabled();
+    }
+    await expect(tabB.getByTestId('t-hit').first()).toHaveAttribute('data-value', /.+/);
+
+    // B's reader opens another scene, whose chunk went with the old build: the page reloads onto
+    // the new build at that address instead of failing
+    await tabB.evaluate(() => {
+      window.location.hash = '#/monte-carlo';
+    });
+    await expect(built(tabB)).toHaveAttribute('content', marker, { timeout: 60000 });
+    await expect(tabB).toHaveURL(/#\/monte-carlo$/);
+    await expect(tabB.getByTestId('exact').first()).toHaveAttribute('data-value', /^-?\d/, {
+      timeout: 60000,
+    });
+    await expect(tabB.locator('.notice-error')).toHaveCount(0);
+
+    // C's typed answer is still there (never reloaded) and survives its reader's Reload
+    expect(await tabC.evaluate(() => (window as unknown as { __oldPage?: boolean }).__oldPage)).toBe(true);
+    await expect(tabC.getByTestId('answer-a')).toHaveValue('12.5');
+    await tabC.getByTestId('update-notice').getByRole('button', { name: 'Reload' }).click();
+    await expect(built(tabC)).toHaveAttribute('content', marker, { timeout: 60000 });
+    await expect(tabC.getByTestId('answer-a')).toHaveValue('12.5');
+    await expect(tabC.getByTestId('verdict-a')).toHaveCount(0);
+    await tabB.close();
+    await tabC.close();
   } finally {
     await srv.stop().catch(() => undefined);
     rmSync(srv.dir, { recursive: true, force: true });

@@ -1,4 +1,4 @@
-// #/ray-sphere, exam first (issue 11) and the sweep animation on the shared timeline (issue 12).
+// #/ray-sphere, exam first and the sweep animation on the shared timeline.
 // Expected values are computed here, by the scene's own pure model or by plain arithmetic.
 import {
   test,

@@ -4,9 +4,10 @@
  * sub-folder (/app/) to prove the static build works from any folder.
  */
 import AxeBuilder from '@axe-core/playwright';
+import { SCENES } from '../../src/kit/catalogue';
 import { test, expect, openScene, readout } from './fixtures';
 
-const ROUTES = ['/hemisphere', '/monte-carlo', '/texture', '/ray-sphere', '/area-light'];
+const ROUTES = SCENES.map((s) => s.path);
 
 test('home lists the six exam questions, each linking to its scene', async ({ page }) => {
   await openScene(page, '#/');

@@ -7,18 +7,24 @@ import { resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { test, expect } from './fixtures';
 import { settleLazyViews } from './lazyViews';
+import { SCENES, type SceneId } from '../../src/kit/catalogue';
 
 const file = resolve(process.env.E2E_SINGLE ?? 'dist-single/index.html');
 
-// A readout each scene computes; monte-carlo's `estimate` and hemisphere's `mc-uniform` come from
-// workers, so they prove the inlined workers run from file://.
+// A readout each scene computes (the catalogue's key readout), and where a scene has one, a readout
+// that comes from a worker (monte-carlo's `estimate`, hemisphere's `mc-uniform`), to prove the
+// inlined workers run from file://.
+const WORKER_READOUT: Partial<Record<SceneId, string>> = {
+  hemisphere: 'mc-uniform',
+  'monte-carlo': 'estimate',
+  'area-light': 'estimate',
+};
 const ROUTES: [string, string[]][] = [
   ['#/', []],
-  ['#/hemisphere', ['k', 'mc-uniform']],
-  ['#/monte-carlo', ['exact', 'estimate']],
-  ['#/texture', ['bilinear']],
-  ['#/ray-sphere', ['t-hit']],
-  ['#/area-light', ['reference', 'estimate']],
+  ...SCENES.map((s): [string, string[]] => [
+    `#${s.path}`,
+    [s.keyReadout, ...(WORKER_READOUT[s.id] ? [WORKER_READOUT[s.id]!] : [])],
+  ]),
   ['#/guide', []],
   ['#/practice', []],
   ...[1, 2, 3, 4, 5, 6].map((q): [string, string[]] => [`#/practice/q${q}?seed=17`, []]),

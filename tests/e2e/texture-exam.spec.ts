@@ -1,5 +1,5 @@
 /**
- * Browser tests of #/texture for issues 11 (exam first, true statements, legible layouts) and 12
+ * Browser tests of #/texture (exam first, true statements, legible layouts)
  * (the query travels a path on the shared timeline). Expected figures are computed here: from the
  * exam grid's definition (value(i, j) = 21 − 5j + i at (i/4, j/4), i.e. L(u, v) = 21 + 4u − 20v)
  * or from the scene's own pure model at the position the page reports — never copied from the key.
@@ -22,7 +22,7 @@ async function timelineT(page: Page): Promise<number> {
   return Number(await page.getByTestId('timeline').getAttribute('data-t'));
 }
 
-test.describe('exam first (issue 11)', () => {
+test.describe('exam first', () => {
   test('the page opens with the question, then (a), (b), (c) in order, then explore further', async ({
     page,
   }) => {
@@ -110,7 +110,7 @@ test.describe('exam first (issue 11)', () => {
   });
 });
 
-test.describe('legible (issue 11)', () => {
+test.describe('legible', () => {
   test('the nearest-node highlight does not cover the answer’s label, and every label has an opaque contrasting halo', async ({
     page,
   }) => {
@@ -234,12 +234,10 @@ test.describe('legible (issue 11)', () => {
     await grid.focus();
     await page.keyboard.press('ArrowRight'); // keyboard modality: :focus-visible applies
     const ring = (sel: string) =>
-      page
-        .locator(sel)
-        .evaluate((el) => ({
-          stroke: getComputedStyle(el).stroke,
-          width: parseFloat(getComputedStyle(el).strokeWidth),
-        }));
+      page.locator(sel).evaluate((el) => ({
+        stroke: getComputedStyle(el).stroke,
+        width: parseFloat(getComputedStyle(el).strokeWidth),
+      }));
     const a = await ring('.tx-handle.a .tx-handle-focus');
     expect(a.stroke).not.toBe('none');
     expect(a.width).toBeGreaterThanOrEqual(4);
@@ -310,7 +308,7 @@ test.describe('legible (issue 11)', () => {
   });
 });
 
-test.describe('the query travels its path (issue 12)', () => {
+test.describe('the query travels its path', () => {
   test('play, pause: the readouts are the model at the paused t; the link restores them exactly', async ({
     page,
   }) => {

@@ -5,22 +5,17 @@
  */
 import { describe, expect, it } from 'vitest';
 import { LESSONS, MISCONCEPTIONS, presetHref } from '../../src/guide/lessons';
-import { parseParams, type ParamSchema } from '../../src/app/params';
-import { parseHash } from '../../src/app/route';
-import { SCENES } from '../../src/scenes/registry';
-import { schema as hemisphere } from '../../src/scenes/hemisphere/params';
-import { schema as monteCarlo } from '../../src/scenes/monte-carlo/params';
-import { schema as texture } from '../../src/scenes/texture/params';
-import { schema as raySphere } from '../../src/scenes/ray-sphere/params';
-import { schema as areaLight } from '../../src/scenes/area-light/params';
+import { parseParams, type ParamSchema } from '../../src/kit/params';
+import { parseHash } from '../../src/kit/shell';
+import { SCENES } from '../../src/kit/catalogue';
 
-const SCHEMAS = new Map<string, ParamSchema>([
-  ['/hemisphere', hemisphere],
-  ['/monte-carlo', monteCarlo],
-  ['/texture', texture],
-  ['/ray-sphere', raySphere],
-  ['/area-light', areaLight],
-]);
+// every scene's URL schema, by route, found the way the registry finds the scenes
+const SCHEMAS = new Map<string, ParamSchema>(
+  Object.entries(
+    import.meta.glob<{ schema: ParamSchema }>('../../src/scenes/*/params.ts', { eager: true }),
+  ).map(([file, mod]) => [`/${file.split('/').at(-2)}`, mod.schema]),
+);
+const monteCarlo = SCHEMAS.get('/monte-carlo')!;
 
 describe('teacher’s guide', () => {
   it('has a lesson of 3–5 presets for each of the six exam questions', () => {

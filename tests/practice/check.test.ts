@@ -6,7 +6,6 @@ import {
   classifyNumber,
   normaliseInput,
   parseNumberAnswer,
-  tolerance,
 } from '../../src/practice/check';
 import type { ChoiceAnswer, FormulaAnswer, NumberAnswer } from '../../src/practice/model';
 
@@ -21,8 +20,13 @@ const numSpec: NumberAnswer = {
 
 describe('numbers', () => {
   it('reads numbers, constant expressions and none; rejects garbage with a message', async () => {
-    expect(await parseNumberAnswer('18.67')).toEqual({ ok: true, value: 18.67 });
-    expect(await parseNumberAnswer(' none ')).toEqual({ ok: true, value: null });
+    expect(await parseNumberAnswer('18.67')).toMatchObject({
+      ok: true,
+      value: 18.67,
+      exact: false,
+      sigFigs: 4,
+    });
+    expect(await parseNumberAnswer(' none ')).toMatchObject({ ok: true, value: null });
     const e = await parseNumberAnswer('56/3');
     expect(e.ok && e.value).toBeCloseTo(56 / 3, 14);
     const k = await parseNumberAnswer('2/(e^(2π) − 1)');
@@ -33,11 +37,11 @@ describe('numbers', () => {
       if (!r.ok) expect(r.error.length).toBeGreaterThan(5);
     }
   });
-  it('tolerance: 3 significant figures pass, 2 do not; alternatives correct with a note; mistakes named', async () => {
-    expect(tolerance(0)).toBe(1e-6);
+  it('3 significant figures pass, 2 do not; alternatives correct with a note; mistakes named', async () => {
     expect((await checkAnswer(numSpec, '18.7')).value).toBe('correct');
     expect((await checkAnswer(numSpec, '18.6667')).value).toBe('correct');
-    expect((await checkAnswer(numSpec, '19')).value).toBe('incorrect');
+    expect((await checkAnswer(numSpec, '19')).value).toBe('invalid');
+    expect((await checkAnswer(numSpec, '17')).value).toBe('incorrect');
     expect((await checkAnswer(numSpec, '10')).message).toContain('flipped');
     expect((await checkAnswer(numSpec, '4.667')).value).toBe('mistake:no-div');
     expect((await checkAnswer(numSpec, 'none')).value).toBe('incorrect');

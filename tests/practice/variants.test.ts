@@ -4,6 +4,7 @@
  * listed mistake as its own id (never a correct answer as a mistake).
  */
 import { describe, expect, it } from 'vitest';
+import { SCENES } from '../../src/kit/catalogue';
 import { QUESTIONS } from '../../src/practice/questions';
 import { allAnswers, type AnswerSpec, type Variant } from '../../src/practice/model';
 import {
@@ -70,6 +71,8 @@ const REQUIRED: Record<string, string[]> = {
   q1: [
     'k/no-sin-jacobian',
     'k/missing-1-over-a',
+    'k/forgot-e0',
+    'p-phi/forgot-e0',
     'p-theta/inverted-jacobian',
     'p-theta/no-sin-jacobian',
     'p-phi/missing-1-over-a',
@@ -138,7 +141,10 @@ describe.each(QUESTIONS.map((q) => [q.id, q] as const))('%s variants', (id, q) =
         if (!g.value.length || /NaN|Infinity|undefined/.test(g.value))
           failures.push(`${id} seed ${v.seed} given ${g.name} = ${g.value}`);
       }
-      expect(v.sceneHref).toMatch(/^#\/(hemisphere|monte-carlo|texture|ray-sphere|area-light)\?/);
+      expect(
+        SCENES.some((sc) => v.sceneHref.startsWith(`#${sc.path}?`)),
+        v.sceneHref,
+      ).toBe(true);
       expect(v.solution.length).toBeGreaterThan(3);
       const names = allAnswers(v).map((a) => a.name);
       expect(new Set(names).size).toBe(names.length);

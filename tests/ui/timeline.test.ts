@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { advance, clampPosition, timelineParams } from '../../src/ui/timeline';
-import { parseParams, serializeParams } from '../../src/app/params';
+import { parseParams, serializeParams } from '../../src/kit/params';
 
 describe('timeline advance', () => {
   it('moves max/duration position units per second at 1×, scaled by speed', () => {

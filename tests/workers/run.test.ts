@@ -5,7 +5,7 @@
 import { afterEach, describe, expect, it } from 'vitest';
 import { exposeTasks, yieldToEventLoop } from '../../src/workers/expose';
 import { isCancelled, runWorkerTask } from '../../src/workers/run';
-import { collectTransferables } from '../../src/workers/protocol';
+import { collectTransferables, workerFactory } from '../../src/workers/protocol';
 
 class FakeWorker {
   onmessage: ((e: MessageEvent) => void) | null = null;
@@ -67,8 +67,8 @@ describe('runWorkerTask', () => {
   it('reports progress in order and resolves with the result, transferring typed arrays', async () => {
     let w!: FakeWorker;
     const seen: number[] = [];
-    const r = await runWorkerTask<{ total: number; values: Float64Array }>(
-      () => (w = new FakeWorker(tasks)) as unknown as Worker,
+    const r = await runWorkerTask(
+      workerFactory<typeof tasks>(() => (w = new FakeWorker(tasks)) as unknown as Worker),
       'sum',
       { n: 40 },
       {

@@ -29,7 +29,8 @@ export interface McEstimate {
   invalid: number;
 }
 
-function finish(w: Welford, invalid: number): McEstimate {
+/** The estimate a Welford accumulator holds (NaN with no valid term), with the count of invalid terms. */
+export function finishEstimate(w: Welford, invalid: number): McEstimate {
   return {
     n: w.count,
     estimate: w.count > 0 ? w.mean : NaN,
@@ -62,7 +63,7 @@ export function uniformEstimate(
     }
     w.add(len * f);
   }
-  return finish(w, invalid);
+  return finishEstimate(w, invalid);
 }
 
 /**
@@ -113,7 +114,7 @@ export function importanceEstimate(
     else if (p > 0 && p < Infinity && Number.isFinite(f)) w.add(f / p);
     else invalid++;
   }
-  return finish(w, invalid);
+  return finishEstimate(w, invalid);
 }
 
 /**
@@ -128,5 +129,5 @@ export function estimateFromTerms(terms: ArrayLike<number>, start = 0, end = ter
     if (Number.isFinite(y)) w.add(y);
     else invalid++;
   }
-  return finish(w, invalid);
+  return finishEstimate(w, invalid);
 }

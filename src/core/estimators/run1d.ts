@@ -13,7 +13,7 @@ import { fillSequence1D, type SequenceKind } from '../random/sequences';
 import type { Pdf1D } from '../sampling/pdf1d';
 import { ConvergenceSeries } from './convergence';
 import { Welford } from './welford';
-import type { McEstimate } from './estimate';
+import { finishEstimate, type McEstimate } from './estimate';
 
 /** Samples per batch. */
 export const BATCH = 4096;
@@ -68,13 +68,7 @@ export function estimate1D(prob: Problem1D, n: number, buf = new Batch1D()): McE
       else invalid++;
     }
   }
-  return {
-    n: w.count,
-    estimate: w.count > 0 ? w.mean : NaN,
-    variance: w.variance(),
-    stderr: w.standardError(),
-    invalid,
-  };
+  return finishEstimate(w, invalid);
 }
 
 /**

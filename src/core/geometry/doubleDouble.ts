@@ -47,11 +47,6 @@ export function twoProduct(a: number, b: number): DD {
   return [p, e];
 }
 
-/** The double-double of one double. */
-export function dd(x: number): DD {
-  return [x, 0];
-}
-
 /** Renormalise hi + lo so that |lo| ≤ ½ ulp(hi) (Fast2Sum; needs |hi| ≥ |lo| or hi = 0). */
 function quickTwoSum(a: number, b: number): DD {
   const s = a + b;
@@ -114,9 +109,4 @@ export function ddSign(x: DD): -1 | 0 | 1 {
 /** The nearest double to hi + lo. */
 export function ddToNumber(x: DD): number {
   return x[0] + x[1];
-}
-
-/** Σ xᵢ·yᵢ of three double products, in double-double (each product exact, sums double-double). */
-export function ddDot3(x: readonly [DD, DD, DD], y: readonly [DD, DD, DD]): DD {
-  return ddAdd(ddAdd(ddMul(x[0], y[0]), ddMul(x[1], y[1])), ddMul(x[2], y[2]));
 }

@@ -10,7 +10,7 @@ import type { RectLight } from './rectLight';
 
 /**
  * Uniform point on the rectangle (area measure). Domain: u1, u2 ∈ [0, 1]. Writes (x, y, z) into
- * out[o..o+2]. Pdf: {@link rectAreaPdf} (per unit area); inverse: {@link invertRectAreaSample}.
+ * out[o..o+2]. Pdf: {@link rectAreaPdf} (per unit area).
  */
 export function sampleRectArea(
   light: RectLight,
@@ -48,22 +48,6 @@ export function rectAreaPdf(light: RectLight, x: number, y: number, z: number): 
   if (!(Math.abs(c) <= tol && a >= -tol && a <= light.width + tol && b >= -tol && b <= light.height + tol))
     return 0;
   return 1 / light.area;
-}
-
-/**
- * Inverse of {@link sampleRectArea}: the (u1, u2) ∈ [0, 1]² of a point on the rectangle (the
- * point's local coordinates divided by w and h, clamped to [0, 1]). Degenerate sides give 0.
- */
-export function invertRectAreaSample(light: RectLight, x: number, y: number, z: number): [number, number] {
-  const s = light.corner;
-  const dx = x - s[0],
-    dy = y - s[1],
-    dz = z - s[2];
-  const a = dx * light.ex[0] + dy * light.ex[1] + dz * light.ex[2];
-  const b = dx * light.ey[0] + dy * light.ey[1] + dz * light.ey[2];
-  const u1 = light.width > 0 ? a / light.width : 0;
-  const u2 = light.height > 0 ? b / light.height : 0;
-  return [Math.min(1, Math.max(0, u1)), Math.min(1, Math.max(0, u2))];
 }
 
 /**

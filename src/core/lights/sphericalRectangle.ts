@@ -22,7 +22,7 @@
  */
 import { parallelogramSolidAngle } from '../geometry/solidAngle';
 import { TWO_PI } from '../sampling/sphericalCoords';
-import type { RectLight } from './rectLight';
+import { rectSolidAngle, type RectLight } from './rectLight';
 
 /** Below this solid angle (sr) the sampler falls back to uniform area sampling (see file comment). */
 export const SPHERICAL_RECT_MIN_SOLID_ANGLE = 1e-6;
@@ -97,20 +97,7 @@ export function makeSphericalRect(light: RectLight, px: number, py: number, pz: 
   }
   const x1 = x0 + light.width,
     y1 = y0 + light.height;
-  const omega =
-    light.area > 0
-      ? parallelogramSolidAngle(
-          dx,
-          dy,
-          dz,
-          light.edgeX[0],
-          light.edgeX[1],
-          light.edgeX[2],
-          light.edgeY[0],
-          light.edgeY[1],
-          light.edgeY[2],
-        )
-      : 0;
+  const omega = rectSolidAngle(light, px, py, pz);
   // Edge-plane normals in closed form (cross products of the corner vectors, normalized):
   // n0 ∝ (0, z0, −y0), n1 ∝ (−z0, 0, x1), n2 ∝ (0, −z0, y1), n3 ∝ (z0, 0, −x0).
   const l0 = Math.hypot(z0, y0),

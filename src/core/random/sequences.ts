@@ -139,19 +139,17 @@ export function fillSequence2D(
       }
       break;
     case 'stratified':
-      // the layout of stratifiedCell, hoisted out of the loop (no object per point)
-      const a = Math.max(1, Math.round(Math.sqrt(n)));
-      const base = Math.floor(n / a);
-      const bigRows = (n - a * base) * (base + 1);
-      for (let i = start; i < end; i++, o += 2) {
-        const k = i < bigRows ? base + 1 : base;
-        const c = i < bigRows ? i % k : (i - bigRows) % k;
-        const y0 = (i - c) / n;
-        const height = k / n;
-        const ux = hashUniformL(s2, s3, i, 0);
-        const uy = hashUniformL(s2, s3, i, 1);
-        out[o] = Math.min(below((c + ux) / k, (c + 1) / k), ONE_MINUS_EPS_L);
-        out[o + 1] = Math.min(below(y0 + uy * height, y0 + height), ONE_MINUS_EPS_L);
+      // one stratifiedCell per row (not per point): the row's cells are consecutive indices
+      for (let i = start; i < end;) {
+        const { k, c: c0, y0, height } = stratifiedCell(n, i);
+        const rowEnd = Math.min(end, i - c0 + k);
+        const top = y0 + height;
+        for (let c = c0; i < rowEnd; i++, c++, o += 2) {
+          const ux = hashUniformL(s2, s3, i, 0);
+          const uy = hashUniformL(s2, s3, i, 1);
+          out[o] = Math.min(below((c + ux) / k, (c + 1) / k), ONE_MINUS_EPS_L);
+          out[o + 1] = Math.min(below(y0 + uy * height, top), ONE_MINUS_EPS_L);
+        }
       }
       break;
     case 'halton': {
@@ -224,10 +222,10 @@ export function fillSequence1D(
  * x0 = owen(rev(j)) = rev(hash(j)), x1 = owen(sobol1(j)) = rev(hash(rev(sobol1(j)))). Written out by
  * hand, without helper calls: engines stop inlining after a budget, and a non-inlined helper that
  * returns a 32-bit value outside the small-integer range allocates, which made this 20× slower.
- * Re-measured for issue 16 (interleaved A/B against this kernel, bit-identical output, Node 20):
+ * Re-measured (interleaved A/B against this kernel, bit-identical output, Node 20):
  * the same loop written with owen.ts's reverseBits32I / owenHashReversedI (multiplier hoisted or
  * not), or with local helpers, ran 15–35 % slower per point, so the repeated rev/hash steps stay
- * written out (issue 16: a hand-inlined twin stays where it is measurably faster, said beside it).
+ * written out (a hand-inlined twin stays where it is measurably faster, said beside it).
  */
 function sobolKernel(
   out: Float64Array,

@@ -4,8 +4,7 @@
  * (φ ∈ [0, 2π)). A direction is ω = (sin θ cos φ, sin θ sin φ, cos θ).
  * Solid angle: dω = sin θ dθ dφ.
  *
- * Source: pbrt-v4, section 3.8 ("Spherical geometry"), `SphericalDirection`, `SphericalTheta`,
- * `SphericalPhi`, `SafeSqrt`, `SafeACos`, `SafeASin`.
+ * Source: pbrt-v4, section 3.8 ("Spherical geometry"), `SphericalTheta`, `SphericalPhi`.
  */
 
 /** Caller-owned output buffer for vectors: a Float64Array or a plain array, written at an offset. */
@@ -26,21 +25,6 @@ export const TWO_PI_BELOW = 6.283185307179585; // 2π = 6.283185307179586; one u
 /** 1 − 2⁻⁵³, the largest double below 1: inverted samples are clamped to it so that u ∈ [0, 1). */
 export const ONE_MINUS_ULP = 1 - 1 / 9007199254740992;
 
-/** √max(0, x): a square root that never returns NaN for slightly negative round-off. Domain: any x. */
-export function safeSqrt(x: number): number {
-  return x > 0 ? Math.sqrt(x) : 0;
-}
-
-/** acos of x clamped to [−1, 1] (never NaN for |x| a few ulps above 1). Domain: any finite x. */
-export function safeAcos(x: number): number {
-  return Math.acos(x > 1 ? 1 : x < -1 ? -1 : x);
-}
-
-/** asin of x clamped to [−1, 1]. Domain: any finite x. */
-export function safeAsin(x: number): number {
-  return Math.asin(x > 1 ? 1 : x < -1 ? -1 : x);
-}
-
 /**
  * Polar angle θ ∈ [0, π] of the direction (x, y, z) (need not be unit length).
  * Uses atan2(√(x²+y²), z), which is accurate near both poles, unlike acos(z) (pbrt's
@@ -59,24 +43,6 @@ export function sphericalPhi(x: number, y: number): number {
   if (!(p < 0)) return p; // p ≥ 0, or NaN for NaN input (callers treat it as outside the support)
   const q = p + TWO_PI;
   return q < TWO_PI ? q : TWO_PI_BELOW;
-}
-
-/**
- * Write ω = (sin θ cos φ, sin θ sin φ, cos θ) into out[o..o+2] from sin θ, cos θ and φ.
- * Passing sin θ and cos θ separately (rather than θ) lets samplers keep the precision of their
- * closed forms (e.g. sin θ = √ξ₁ for the exam lobe). Returns `out`.
- */
-export function sphericalDirection(
-  sinTheta: number,
-  cosTheta: number,
-  phi: number,
-  out: VecOut,
-  o = 0,
-): VecOut {
-  out[o] = sinTheta * Math.cos(phi);
-  out[o + 1] = sinTheta * Math.sin(phi);
-  out[o + 2] = cosTheta;
-  return out;
 }
 
 /** Clamp an inverted sample coordinate to [0, 1 − 2⁻⁵³] (NaN → 0). */

@@ -11,8 +11,9 @@
  *  φ(ξ₂): ln((e^{2π} − 1) ξ₂ + 1) — relative precision lost for tiny ξ₂ (the +1 swamps c ξ₂);
  *         log1p(expm1(2π) ξ₂)     — accurate everywhere.
  *
- * The reference is computed with mathjs BigNumber (64 significant digits) on the exact double ξ,
- * loaded lazily (`import('mathjs')`) so the page only pays for it when the panel is opened.
+ * The reference is computed with decimal.js (64 significant digits; mathjs' BigNumber is built on
+ * it) on the exact double ξ, loaded lazily (`import('decimal.js')`) so the page only pays for it
+ * when the panel is opened.
  * Source: Goldberg 1991, "What every computer scientist should know about floating-point
  * arithmetic" (log1p/expm1, cancellation); Higham, "Accuracy and Stability of Numerical
  * Algorithms", 2nd ed., ch. 1.
@@ -111,30 +112,28 @@ export interface StabilityReference {
 }
 
 /**
- * High-precision references via mathjs BigNumber (precision 64), on the exact binary value of each ξ.
- * Async because mathjs is imported lazily. Domain: ξ ∈ [0, 1].
+ * High-precision references in 64-digit decimal arithmetic (decimal.js, the library under mathjs'
+ * BigNumber), on the exact binary value of each ξ. Async because decimal.js is imported lazily.
+ * Domain: ξ ∈ [0, 1].
  */
 export async function computeStabilityReference(xis: readonly number[]): Promise<StabilityReference> {
-  const { create, all } = await import('mathjs');
-  const m = create(all, { number: 'BigNumber', precision: 64 });
-  const bn = (x: number) => m.bignumber(exactDecimal(x));
-  const twoPi = m.multiply(m.bignumber(2), m.pi) as unknown as ReturnType<typeof bn>;
-  const c = m.subtract(m.exp(twoPi), m.bignumber(1)) as ReturnType<typeof bn>;
+  const { default: Decimal } = await import('decimal.js');
+  const D = Decimal.clone({ precision: 64 });
+  const pi = D.acos(-1);
+  const c = D.exp(pi.times(2)).minus(1);
+  const tiny = new D('1e-10');
   const theta: number[] = [];
   const phi: number[] = [];
   for (const xi of xis) {
-    const b = bn(xi);
-    theta.push(Number((m.asin(m.sqrt(b)) as ReturnType<typeof bn>).toString()));
+    const b = new D(exactDecimal(xi));
+    theta.push(Number(b.sqrt().asin().toString()));
     // ln(1 + y): for tiny y, 1 + y would round at 64 digits, so use the series y − y²/2 + y³/3 − y⁴/4
     // (truncation error < y⁵ < 1e-50 relative to y for y < 1e-10)
-    const y = m.multiply(c, b) as ReturnType<typeof bn>;
-    const lg = m.smaller(y, m.bignumber('1e-10'))
-      ? m.add(
-          m.subtract(y, m.divide(m.pow(y, 2), 2)),
-          m.subtract(m.divide(m.pow(y, 3), 3), m.divide(m.pow(y, 4), 4)),
-        )
-      : m.log(m.add(y, m.bignumber(1)));
-    phi.push(Number((lg as ReturnType<typeof bn>).toString()));
+    const y = c.times(b);
+    const lg = y.lt(tiny)
+      ? y.minus(y.pow(2).div(2)).plus(y.pow(3).div(3).minus(y.pow(4).div(4)))
+      : y.plus(1).ln();
+    phi.push(Number(lg.toString()));
   }
   return { xi: [...xis], theta, phi };
 }

@@ -8,9 +8,6 @@
  */
 import { INV_TWO_PI, TWO_PI, TWO_PI_BELOW, clampUnit, sphericalPhi, type VecOut } from './sphericalCoords';
 
-/** 1/(2π): the constant density of the uniform hemisphere, per steradian. */
-export const UNIFORM_HEMISPHERE_PDF = INV_TWO_PI;
-
 /**
  * Sample a direction uniformly on the upper hemisphere (z-up).
  * Domain: u1, u2 ∈ [0, 1). Writes the unit vector (x, y, z), z = u1 ∈ [0, 1), into out[o..o+2].

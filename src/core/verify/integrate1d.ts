@@ -10,6 +10,9 @@
  * Kronrod (1965); node and weight values from QUADPACK `dqk15.f`.
  */
 
+/* eslint-disable no-loss-of-precision -- QUADPACK's constants as published (21 digits); each rounds
+   to the nearest double, which is the value meant. */
+
 /** Kronrod abscissae on [0, 1) (the odd-indexed ones, 1, 3, 5, are also the 7-point Gauss nodes, with 0). */
 const XGK = [
   0.991455371120812639206854697526329, 0.949107912342758524526189684047851,

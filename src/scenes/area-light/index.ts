@@ -1,2 +1,3 @@
 export { schema } from './params';
 export { default } from './AreaLightScene';
+export { checkValues } from './check';

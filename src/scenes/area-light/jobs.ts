@@ -6,21 +6,17 @@
  */
 import { estimateAreaLight, type AreaLightSetup, type LightStrategy } from '../../core/lights';
 import {
-  PASS_SPP,
   STRATEGIES,
   TIMING_COUNTS,
   TIMING_RUNS,
   buildModel,
   convergence,
   estimateAll,
-  floorPass,
-  imageRmse,
-  referenceImage,
   rmseOfRuns,
-  type FloorJob,
   type StrategyEstimate,
   type TimingPoint,
 } from './model';
+import { PASS_SPP, floorPass, imageRmse, referenceImage, type FloorJob } from './floor';
 import type { AreaLightParams } from './params';
 
 import { yieldToEventLoop as tick, type ProgressFn as Progress } from '../../workers/expose';
@@ -101,7 +97,10 @@ export async function estimatesJob(
 }
 
 /** The floor rendered progressively with each strategy, one partial frame per pass. */
-export async function renderJob(job: FloorJob, progress: Progress = () => {}): Promise<FloorFrame> {
+export async function renderJob(
+  job: FloorJob,
+  progress: Progress<FloorFrame> = () => {},
+): Promise<FloorFrame> {
   const ref = referenceImage(job);
   const sums = STRATEGIES.map(() => new Float64Array(job.size * job.size));
   const ms = STRATEGIES.map(() => 0);

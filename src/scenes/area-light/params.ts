@@ -4,7 +4,7 @@
  * the floor albedo rho, an optional occluder, the sampling strategy, n and seed. The Q6(a) patch
  * (pu, pv, psize, ptilt) is an addition to the contract (it only grows).
  */
-import type { ParamSchema, ParamValues } from '../../app/params';
+import type { ParamSchema, ParamValues } from '../../kit/params';
 import { timelineParams } from '../../ui/timeline';
 
 /** Longest animation (samples); the same constant as model.ANIM_MAX (kept here: params must not import the model). */

@@ -7,7 +7,7 @@
  */
 import { formatCount } from '../../ui/format';
 import { lazy, memo, Suspense, useMemo, useRef, useState, type ComponentProps } from 'react';
-import type { SceneProps } from '../../app/scene';
+import type { SceneProps } from '../../kit/scene';
 import {
   useCompiled,
   ExprField,
@@ -28,7 +28,8 @@ import {
 } from '../../ui';
 import { ExamQuestion, ExploreFurther } from '../../ui/exam';
 import { MathTex } from '../../ui';
-import { useWorkerJob } from '../../workers';
+import { useWorkerJob, workerFactory } from '../../workers';
+import type { HemisphereTasks } from './hemisphere.worker';
 import { nextTask } from '../../ui/chunked';
 import { fillSequence2D, type SequenceKind } from '../../core/random';
 import {
@@ -39,7 +40,6 @@ import {
   lobeFromParams,
   type AnimFrame,
   type AnimKind,
-  type DrawStats,
   type Lobe,
 } from './model';
 import { ANIMS, LOBES, MAX_N, POINT_SETS, type HemisphereSchema, type LobeId } from './params';
@@ -51,7 +51,7 @@ import { ImportanceReadouts, RepeatView, StderrNote, UniformReadouts, VarianceWa
 import { InvertedJacobian } from './view/InvertedJacobian';
 import { ExamQ1 } from './view/ExamQ1';
 import { ExamQ2, lobeTexOf } from './view/ExamQ2';
-import type { RepeatArgs, RepeatResult, StatsArgs } from './jobs';
+import type { RepeatArgs, StatsArgs } from './jobs';
 // Static, not lazy: the 3D panel is on the first screen, and a Suspense fallback of another height
 // shifted the layout when it arrived (three.js itself still loads lazily, inside Viewport).
 import { HemisphereView } from './view/HemisphereView';
@@ -61,7 +61,9 @@ const StabilityPanel = lazy(() =>
   import('./view/StabilityPanel').then((m) => ({ default: m.StabilityPanel })),
 );
 
-const makeWorker = () => new Worker(new URL('./hemisphere.worker.ts', import.meta.url), { type: 'module' });
+const makeWorker = workerFactory<HemisphereTasks>(
+  () => new Worker(new URL('./hemisphere.worker.ts', import.meta.url), { type: 'module' }),
+);
 
 const LOBE_OPTIONS: { value: LobeId; label: string }[] = [
   { value: 'exam', label: 'exam: k cos θ e^φ' },
@@ -122,7 +124,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
     [lobeId, params.exponent, params.pdf, params.f, kind, params.seed, params.n, inverted, baseLobe],
   );
   // its readouts and plots are below the first screen: the opening run waits for the page to load
-  const stats = useWorkerJob<DrawStats>(makeWorker, 'stats', args, {
+  const stats = useWorkerJob(makeWorker, 'stats', args, {
     enabled: ready,
     delayMs: 60,
     afterSettle: true,
@@ -132,7 +134,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
   // ---- repeat many times (on request; a change of parameters cancels and clears it) -----------
   const perRun = Math.min(params.n, 256);
   const repeatArgs: RepeatArgs = useMemo(() => ({ ...args, runs: REPEAT_RUNS, perRun }), [args, perRun]);
-  const repeat = useWorkerJob<RepeatResult>(makeWorker, 'repeat', repeatArgs, { manual: true });
+  const repeat = useWorkerJob(makeWorker, 'repeat', repeatArgs, { manual: true });
   const runRepeat = repeat.run;
 
   // ---- readouts -------------------------------------------------------------------------------
@@ -326,7 +328,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
           Repeat {REPEAT_RUNS} times (N = {perRun} each)
         </button>
         {repeat.running ? <span role="status"> running… {Math.round(repeat.progress * 100)} %</span> : null}
-        {repeat.error ? <Notice kind="error">{repeat.error}</Notice> : null}
+        {repeat.error ? <Notice kind="error">{repeat.error.message}</Notice> : null}
       </div>
       {repeat.result && exact !== null ? (
         <RepeatView

@@ -1,5 +1,5 @@
 /** Worker of the hemisphere scene: runs ./jobs off the main thread (cancel = terminate, src/workers/run.ts). */
-import { exposeTasks } from '../../workers/expose';
+import { exposeTasks, type ProgressFn } from '../../workers/expose';
 import { compileExpression } from '../../core/expr';
 import { repeatJob, statsJob, type Compile2, type RepeatArgs, type StatsArgs } from './jobs';
 
@@ -8,7 +8,11 @@ const compile: Compile2 = async (src, vars) => {
   return r.ok ? { ok: true, fn: r.fn as (...args: number[]) => number } : r;
 };
 
-exposeTasks({
+const tasks = {
   stats: (a: StatsArgs) => statsJob(a, compile),
-  repeat: (a: RepeatArgs, progress) => repeatJob(a, compile, progress),
-});
+  repeat: (a: RepeatArgs, progress: ProgressFn) => repeatJob(a, compile, progress),
+};
+exposeTasks(tasks);
+
+/** The worker's tasks, for workerFactory<HemisphereTasks> on the page's side. */
+export type HemisphereTasks = typeof tasks;

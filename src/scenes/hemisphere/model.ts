@@ -475,34 +475,6 @@ export function invertedJacobianSeries(points = 40): { eps: Float64Array; partia
   return { eps, partial };
 }
 
-/** Numbers the derivation panel shows for the exam lobe. */
-export interface ExamNumbers {
-  e2piMinus1: number;
-  k: number;
-  halfK: number;
-  /** Worked example: ξ = (ξ₁, ξ₂) ↦ θ, φ. */
-  example: { xi1: number; xi2: number; theta: number; phi: number; sinTheta: number; cosTheta: number };
-}
-
-/** Live numbers for the exam derivation, for a worked example ξ. */
-export function examNumbers(xi1 = 0.3, xi2 = 0.7): ExamNumbers {
-  const s = Math.sqrt(xi1);
-  const c = Math.sqrt(1 - xi1);
-  return {
-    e2piMinus1: EXAM_E2PI_M1,
-    k: examLobeK(),
-    halfK: examLobeK() / 2,
-    example: {
-      xi1,
-      xi2,
-      theta: Math.atan2(s, c),
-      phi: Math.log1p(EXAM_E2PI_M1 * xi2),
-      sinTheta: s,
-      cosTheta: c,
-    },
-  };
-}
-
 // ---- the animation (issue 12): a pure function of (params, seed, t) ---------------------------
 
 /** Which animation the shared timeline plays: the warp morph (square → hemisphere) or the growth. */

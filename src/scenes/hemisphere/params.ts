@@ -7,7 +7,7 @@
  * unit square to the hemisphere; `grow`: the samples appear, 1 → N); `t` ∈ [0, 1] (default 1, the
  * finished figure) and `play` (shared timeline).
  */
-import type { ParamSchema, ParamValues } from '../../app/params';
+import type { ParamSchema, ParamValues } from '../../kit/params';
 import { timelineParams } from '../../ui/timeline';
 
 export const LOBES = ['exam', 'uniform', 'cosine', 'phong', 'custom'] as const;

@@ -4,7 +4,7 @@
  */
 import { formatCount } from '../../ui/format';
 import { useCallback, useMemo } from 'react';
-import type { SceneProps } from '../../app/scene';
+import type { SceneProps } from '../../kit/scene';
 import {
   ExamQuestion,
   ExploreFurther,
@@ -19,7 +19,8 @@ import {
   Select,
   Slider,
 } from '../../ui';
-import { useWorkerJob } from '../../workers';
+import { useWorkerJob, workerFactory } from '../../workers';
+import type { McTasks } from './mc.worker';
 import {
   EXAM_A,
   EXAM_B,
@@ -51,7 +52,6 @@ import { HistogramPanel } from './view/HistogramPanel';
 import { KeyFigures, SampleRows } from './view/WorkedTable';
 import { RaceSection, Q4dRace, type RaceInput } from './view/RaceSection';
 import { Q4a, Q4b, Q4c } from './view/ExamQ4';
-import type { RmseData } from './jobs';
 import { SamplesField, FnField } from './view/Fields';
 import { useSlicedEstimate } from './view/hooks';
 import './monte-carlo.css';
@@ -69,7 +69,9 @@ const SEQ_OPTIONS: { value: Strategy; label: string }[] = [
   { value: 'sobol', label: 'Sobol (Owen-scrambled)' },
 ];
 
-const makeWorker = () => new Worker(new URL('./mc.worker.ts', import.meta.url), { type: 'module' });
+const makeWorker = workerFactory<McTasks>(
+  () => new Worker(new URL('./mc.worker.ts', import.meta.url), { type: 'module' }),
+);
 
 export default function MonteCarloScene({ params, setParams, mode }: SceneProps<McSchema>) {
   const pdfKind = (PDF_KINDS as readonly string[]).includes(params.pdf) ? (params.pdf as PdfKind) : 'uniform';
@@ -153,7 +155,7 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
   const bigArgs = baseArgs
     ? { ...baseArgs, strategies: [{ pdf: pdfKind, seq, label: 'selected' }], n }
     : null;
-  const bigTask = useWorkerJob<McEstimate & { ms: number }>(makeWorker, 'estimate', bigArgs, {
+  const bigTask = useWorkerJob(makeWorker, 'estimate', bigArgs, {
     key: bigKey,
     enabled: !!bigKey && !!baseArgs,
   });
@@ -207,7 +209,7 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
   // --- s/√N is no error estimate for stratified / QMC points: RMSE over randomized runs instead ---
   const qmc = !given && !stderrIsValid(seq) && chosenOk && !!baseArgs;
   const rmseN = Math.min(n, 100_000);
-  const rmseTask = useWorkerJob<{ rmse: RmseData[] }>(
+  const rmseTask = useWorkerJob(
     makeWorker,
     'rmse',
     qmc && baseArgs
@@ -375,7 +377,7 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
               rmseTask.running
                 ? `running… ${Math.round(rmseTask.progress * 100)} %`
                 : rmseTask.error
-                  ? `failed: ${rmseTask.error}`
+                  ? `failed: ${rmseTask.error.message}`
                   : undefined
             }
           />
@@ -413,7 +415,9 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
           {formatCount(n)} samples took {formatNumber(bigTask.result.ms, 3)} ms in the worker.
         </p>
       ) : null}
-      {needBig && bigTask.error ? <Notice kind="error">The run failed: {bigTask.error}</Notice> : null}
+      {needBig && bigTask.error ? (
+        <Notice kind="error">The run failed: {bigTask.error.message}</Notice>
+      ) : null}
       {est && est.invalid > 0 ? (
         <Notice kind="error">
           {est.invalid} of the samples have p = 0 where f ≠ 0 (or f is not finite there): no estimate is

@@ -12,6 +12,7 @@ import {
   type McEstimate,
 } from '../../core/estimators';
 import type { Failure } from '../../core/failure';
+import type { ProgressFn } from '../../workers/protocol';
 import type { SequenceKind } from '../../core/random/sequences';
 import type { Pdf1D } from '../../core/sampling/pdf1d';
 import { runSeed } from '../../core/random/rng';
@@ -77,7 +78,14 @@ export interface SeriesData {
   slope: number;
 }
 
-type Progress = (fraction: number, partial?: unknown) => void;
+type Progress<P = unknown> = ProgressFn<P>;
+
+/** What a convergence run reports as it goes (and returns at the end). */
+export interface ConvergencePartial {
+  series: SeriesData[];
+  exact: number;
+  problems: string[];
+}
 const now = (): number => (typeof performance !== 'undefined' ? performance.now() : Date.now());
 const tick = (): Promise<void> => new Promise((r) => setTimeout(r, 0));
 
@@ -88,7 +96,7 @@ const tick = (): Promise<void> => new Promise((r) => setTimeout(r, 0));
 export async function convergenceJob(
   args: ProblemArgs & { nMax: number },
   compile: Compile,
-  progress: Progress = () => {},
+  progress: Progress<ConvergencePartial> = () => {},
   every = 250,
 ) {
   const prep = await prepare(args, compile);
@@ -166,7 +174,7 @@ export interface RmseData {
 export async function rmseJob(
   args: ProblemArgs & { nMax: number; runs: number },
   compile: Compile,
-  progress: Progress = () => {},
+  progress: Progress<{ rmse: RmseData[] }> = () => {},
   every = 250,
 ) {
   const prep = await prepare(args, compile);
@@ -234,7 +242,7 @@ export async function rmseJob(
 export async function histogramJob(
   args: ProblemArgs & { N: number; M: number },
   compile: Compile,
-  progress: Progress = () => {},
+  progress: Progress<{ estimates: Float64Array }> = () => {},
   every = 250,
 ) {
   const prep = await prepare(args, compile);

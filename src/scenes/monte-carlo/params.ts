@@ -5,7 +5,7 @@
  * histogram), `runs` (independent runs behind the RMSE curves), and the animation's `t` (samples
  * drawn so far) and `play`.
  */
-import type { ParamSchema } from '../../app/params';
+import type { ParamSchema } from '../../kit/params';
 import { timelineParams } from '../../ui/timeline';
 
 /** Samples in the animation (the timeline's t is the sample index 0…RACE_MAX). Mirrors model.RACE_MAX. */

@@ -14,7 +14,7 @@ import {
   useRef,
   useState,
 } from 'react';
-import type { SceneProps } from '../../app/scene';
+import type { SceneProps } from '../../kit/scene';
 import {
   Deferred,
   Derivation as DerivationBlock,
@@ -30,8 +30,11 @@ import {
   Panel,
   Readout,
   Select,
+  lastValue,
   TimelineTransport,
   useCoarsePosition,
+  useHeldWhile,
+  useThrottled,
   useTimeline,
   useTimelineFrame,
   type Timeline,
@@ -56,6 +59,7 @@ import {
   type SweepSeries,
   type V3,
 } from './model';
+import { superscript } from '../../ui/axis';
 import { CrossSection, type CrossRay } from './view/CrossSection';
 import { View3D, type View3DProps } from './view/View3D';
 import { DistantImages, ErrorVsDistance, PrecisionTable } from './view/Precision';
@@ -510,34 +514,6 @@ function LiveView3D({
   return <View3D o={o} d={d} c={c} r={r} res={m.chosen} distanceRatio={m.distanceRatio} {...rest} />;
 }
 
-/** `value`, except while `hold` is true: then the value it had when holding began. */
-function useHeldWhile<T>(value: T, hold: boolean): T {
-  const ref = useRef(value);
-  if (!hold) ref.current = value;
-  return ref.current;
-}
-
-/** `value`, but changing at most once per `ms` (leading and trailing edges). */
-function useThrottled<T>(value: T, ms: number): T {
-  const [out, setOut] = useState(value);
-  const last = useRef(0);
-  useEffect(() => {
-    const now = performance.now();
-    const wait = last.current + ms - now;
-    if (wait <= 0) {
-      last.current = now;
-      setOut(value);
-      return;
-    }
-    const id = setTimeout(() => {
-      last.current = performance.now();
-      setOut(value);
-    }, wait);
-    return () => clearTimeout(id);
-  }, [value, ms]);
-  return out;
-}
-
 function samePreset(p: Preset, params: RaySphereParams): boolean {
   const eq = (x: readonly number[] | undefined, y: readonly number[]) => !x || x.every((v, i) => v === y[i]);
   return (
@@ -588,19 +564,6 @@ function VecField({
  * re-render while playing (renderHz 0), and the figures move every frame by direct writes.
  */
 const RENDER_HZ = 4;
-
-/** `f`, remembering its last argument and result (the figures and the scene often ask for the same t). */
-function lastValue<T>(f: (t: number) => T): (t: number) => T {
-  let at = NaN;
-  let v: T | undefined;
-  return (t) => {
-    if (v === undefined || t !== at) {
-      v = f(t);
-      at = t;
-    }
-    return v;
-  };
-}
 
 /**
  * The cross-section at the live position: React renders it when the inputs change; every frame
@@ -965,20 +928,6 @@ function later(fn: () => void): () => void {
   };
 }
 
-const SUP: Record<string, string> = {
-  '-': '⁻',
-  '0': '⁰',
-  '1': '¹',
-  '2': '²',
-  '3': '³',
-  '4': '⁴',
-  '5': '⁵',
-  '6': '⁶',
-  '7': '⁷',
-  '8': '⁸',
-  '9': '⁹',
-};
-
 /** A number for text: 6 significant digits, m × 10ⁿ for very large or small, a real minus sign. */
 function fmt(x: number | null): string {
   if (x === null || !Number.isFinite(x)) return 'none';
@@ -988,7 +937,7 @@ function fmt(x: number | null): string {
   if (ax >= 1e-3 && ax < 1e7) out = String(Number(x.toPrecision(6)));
   else {
     const [m, e] = x.toExponential(5).split('e');
-    const ex = String(Number(e)).replace(/./g, (ch) => SUP[ch] ?? ch);
+    const ex = superscript(String(Number(e)));
     out = Number(m) === 1 ? `10${ex}` : `${Number(m)} × 10${ex}`;
   }
   return out.replace('-', '−');

@@ -7,7 +7,7 @@
  * The radius may be typed ≤ 0 (it is in range here so the scene itself can explain why that is
  * not a sphere and fall back); non-numbers are rejected by the shell with a notice.
  */
-import type { ParamSchema, ParamValues } from '../../app/params';
+import type { ParamSchema, ParamValues } from '../../kit/params';
 import { timelineParams } from '../../ui/timeline';
 
 const BIG = 1e12;

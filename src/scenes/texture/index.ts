@@ -1,2 +1,3 @@
 export { schema } from './params';
 export { default } from './TextureScene';
+export { checkValues } from './check';

@@ -28,14 +28,20 @@ import {
   type LookupOptions,
   type NearestStencil,
   type TextureGrid,
-  type WrapMode,
 } from '../../core/texture';
 import type { Failure } from '../../core/failure';
-import type { ParamValues } from '../../app/params';
+import type { ParamValues } from '../../kit/params';
 import { colorizeInto } from './colormap';
-import { GRID_TEXT_MAX, type PathKind, type Preset, type TextureSchema } from './params';
+import { GRID_TEXT_MAX, type PathKind, type TextureSchema } from './params';
 
 export type TextureParams = ParamValues<TextureSchema>;
+
+/** A texture as the figures draw it: the grid, the lookup conventions, and the range of its values. */
+export interface ShownTexture {
+  grid: TextureGrid;
+  opts: LookupOptions;
+  range: { min: number; max: number };
+}
 
 /** Where the grid came from, and what went wrong if the `grid` text could not be used. */
 export interface GridSource {
@@ -48,7 +54,7 @@ export interface GridSource {
 
 /** The grid the parameters describe (never throws; a bad `grid` text falls back to the exam's grid). */
 export function resolveGrid(p: Pick<TextureParams, 'grid' | 'preset' | 'size' | 'seed'>): GridSource {
-  const preset = p.preset as Preset;
+  const preset = p.preset;
   let grid: TextureGrid;
   let error: string | null = null;
   if (preset === 'checker') grid = checkerGrid(p.size, p.size);
@@ -86,7 +92,7 @@ export function gridTextIfFits(grid: TextureGrid): string | null {
 }
 
 export function lookupOptions(p: Pick<TextureParams, 'align' | 'vflip' | 'wrap'>): LookupOptions {
-  return { align: p.align === 'center' ? 'center' : 'corner', vflip: p.vflip, wrap: p.wrap as WrapMode };
+  return { align: p.align, vflip: p.vflip, wrap: p.wrap };
 }
 
 /** A lookup at one (u, v): both filters, with stencils and the key's steps. */
@@ -145,6 +151,30 @@ export function sphereModel(
     normalized,
     raw,
     chosen: p.normalize ? normalized : raw,
+  };
+}
+
+/** Rounded to four decimals, with −0 written as 0: how a picked or dialled sphere point is stored. */
+export const round4 = (x: number): number => Math.round(x * 10000) / 10000 + 0;
+
+/** The sphere point's azimuth φ and polar angle θ in degrees (0 where the point is unusable). */
+export function sphereAnglesDeg(sphere: SphereModel): { phi: number; theta: number } {
+  if (!sphere.ok) return { phi: 0, theta: 0 };
+  return { phi: (sphere.phi * 180) / Math.PI, theta: (sphere.theta * 180) / Math.PI };
+}
+
+/** The point at azimuth φ and polar angle θ (degrees) on the sphere of radius r, rounded by round4. */
+export function pointAtAngles(
+  r: number,
+  phiDeg: number,
+  thetaDeg: number,
+): { x: number; y: number; z: number } {
+  const ph = (phiDeg * Math.PI) / 180;
+  const th = (thetaDeg * Math.PI) / 180;
+  return {
+    x: round4(r * Math.cos(ph) * Math.sin(th)),
+    y: round4(r * Math.sin(ph) * Math.sin(th)),
+    z: round4(r * Math.cos(th)),
   };
 }
 
@@ -289,7 +319,7 @@ export function isExamQuery(src: GridSource, opts: LookupOptions, u: number, v: 
 }
 
 // ---------------------------------------------------------------------------------------------
-// The animation (issue 12): the query point travels a path; everything on screen at position t is
+// The animation: the query point travels a path; everything on screen at position t is
 // a function of the parameters and t computed here.
 
 /** The query's path: a line from a to b, or the circle with a and b as the ends of a diameter. */
@@ -347,12 +377,6 @@ export function pathPointInto(path: QueryPath, t: number, out: Float64Array): vo
     out[0] = cu + r * Math.cos(ang);
     out[1] = cv + r * Math.sin(ang);
   }
-}
-
-/** Length of the path in (u, v) units. */
-export function pathLength(path: QueryPath): number {
-  const d = Math.hypot(path.b[0] - path.a[0], path.b[1] - path.a[1]);
-  return path.kind === 'line' ? d : Math.PI * d;
 }
 
 /** A place on the path where the bilinear cell (or the addressing branch) changes. */

@@ -6,7 +6,7 @@
  * and `seed` (for the generated presets). They exist because a 64 × 64 grid cannot be written in
  * the `grid` parameter: the shell caps any parameter at 4000 characters.
  */
-import type { ParamSchema } from '../../app/params';
+import type { ParamSchema } from '../../kit/params';
 import { EXAM_GRID_TEXT } from '../../core/texture';
 import { timelineParams } from '../../ui/timeline';
 
@@ -53,7 +53,7 @@ export const schema = {
   },
   size: { kind: 'number', default: 8, min: 2, max: 64, integer: true },
   seed: { kind: 'number', default: 1, min: 0, max: 4294967295, integer: true },
-  // the animation (issue 12): the query travels from (u, v) to (u2, v2) on a line, or round the
+  // the animation: the query travels from (u, v) to (u2, v2) on a line, or round the
   // circle that has them as the ends of a diameter; t ∈ [0, 1] is the position on the path
   path: { kind: 'enum', default: 'line', values: PATHS, label: 'query path' },
   u2: { kind: 'number', default: 0.85, min: -4, max: 4, label: 'path end u' },

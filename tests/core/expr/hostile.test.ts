@@ -1,5 +1,5 @@
 /**
- * Hostile expressions (issue 17): no input the whitelist accepts may cost more than linear work,
+ * Hostile expressions: no input the whitelist accepts may cost more than linear work,
  * and prototype names are never mistaken for functions, symbols or aliases.
  */
 import { describe, expect, it } from 'vitest';

@@ -1,7 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { PASS_SPP, estimatesJob, renderJob, type FloorFrame } from '../../../src/scenes/area-light/jobs';
-import { buildModel, estimateAll, floorJob } from '../../../src/scenes/area-light/model';
-import { defaultValues } from '../../../src/app/params';
+import { buildModel, estimateAll } from '../../../src/scenes/area-light/model';
+import { floorJob } from '../../../src/scenes/area-light/floor';
+import { defaultValues } from '../../../src/kit/params';
 import { schema } from '../../../src/scenes/area-light/params';
 
 const defaults = defaultValues(schema);
@@ -25,8 +26,9 @@ describe('area-light jobs (what the worker runs)', () => {
 
 describe('renderJob keeps every pass for the timeline', () => {
   it('the result carries all passes, their spp are 1, 2, 4, …, 64 and the last equals the result', async () => {
-    const { buildModel, floorJob, PASS_TOTAL } = await import('../../../src/scenes/area-light/model');
-    const { defaultValues } = await import('../../../src/app/params');
+    const { buildModel } = await import('../../../src/scenes/area-light/model');
+    const { floorJob, PASS_TOTAL } = await import('../../../src/scenes/area-light/floor');
+    const { defaultValues } = await import('../../../src/kit/params');
     const { schema } = await import('../../../src/scenes/area-light/params');
     const job = floorJob(buildModel(defaultValues(schema)), 3, 8);
     const last = await renderJob(job);

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { defaultValues } from '../../../src/app/params';
+import { defaultValues } from '../../../src/kit/params';
 import { schema, PRESETS, type AreaLightParams } from '../../../src/scenes/area-light/params';
 import {
   buildModel,
@@ -7,13 +7,10 @@ import {
   drawSamples,
   estimateAll,
   estimateOne,
-  floorJob,
-  floorPass,
-  imageRmse,
   patchModel,
-  referenceImage,
   targetValue,
 } from '../../../src/scenes/area-light/model';
+import { floorJob, floorPass, imageRmse, referenceImage } from '../../../src/scenes/area-light/floor';
 
 const base = (): AreaLightParams => defaultValues(schema);
 const withP = (patch: Partial<AreaLightParams>): AreaLightParams => ({ ...base(), ...patch });
@@ -183,7 +180,7 @@ describe('Q6(c) given samples and the animation (pure functions of params, seed,
   });
 
   it('floorPassAt: pass grows with t, 0 at the start, the last pass (64 spp) at the end', async () => {
-    const { floorPassAt, PASS_TOTAL } = await import('../../../src/scenes/area-light/model');
+    const { floorPassAt, PASS_TOTAL } = await import('../../../src/scenes/area-light/floor');
     expect(floorPassAt(0, 1024)).toBe(0);
     expect(PASS_TOTAL[floorPassAt(1024, 1024)]).toBe(64);
     expect(PASS_TOTAL[floorPassAt(512, 1024)]).toBe(32);

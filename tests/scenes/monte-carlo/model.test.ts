@@ -21,7 +21,7 @@ import {
   rmseJob,
   type ProblemArgs,
 } from '../../../src/scenes/monte-carlo/jobs';
-import { parseParams } from '../../../src/app/params';
+import { parseParams } from '../../../src/kit/params';
 import { schema } from '../../../src/scenes/monte-carlo/params';
 
 const f = (x: number) => (x + 2) ** 2;

@@ -1,10 +1,15 @@
 /**
- * The texture scene's animation plumbing (src/scenes/texture/anim.tsx): the timeline store that
+ * The texture scene's animation plumbing (the shared store of src/ui/animation.tsx, and the frame
+ * cache of src/scenes/texture/anim.tsx): the timeline store that
  * lets only the animated parts re-render per frame, the worked steps' position, and the frame
  * cache that the animated parts share (it must return exactly the model's frame at t).
  */
 import { describe, expect, it } from 'vitest';
-import { animContext, createTimelineStore, workedPosition } from '../../../src/scenes/texture/anim';
+import { animContext } from '../../../src/scenes/texture/view/anim';
+import {
+  createAnimationStore as createTimelineStore,
+  heldPosition as workedPosition,
+} from '../../../src/ui/animation';
 import { drawnLookup, frameAt, lookupOptions, pathOf, resolveGrid } from '../../../src/scenes/texture/model';
 import type { Timeline } from '../../../src/ui';
 
@@ -41,11 +46,11 @@ describe('timeline store', () => {
     const s = createTimelineStore(0.2);
     s.publish(tl(0.2, true));
     s.publish(tl(0.437, true));
-    expect(s.tWorked()).toBe(0.2);
+    expect(s.tStill()).toBe(0.2);
     s.publish(tl(0.6, true));
-    expect(s.tWorked()).toBe(0.2);
+    expect(s.tStill()).toBe(0.2);
     s.publish(tl(0.61, false));
-    expect(s.tWorked()).toBe(0.61);
+    expect(s.tStill()).toBe(0.61);
   });
 
   it('the figures hold the paused position while playing; frames reach the frame listeners with the live position', () => {

@@ -1,10 +1,10 @@
 /**
- * The texture scene's animation model (issue 12): the query's path, the values along it, and the
+ * The texture scene's animation model: the query's path, the values along it, and the
  * creases of the bilinear reconstruction. Expected values are derived from the definitions here.
  */
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import { parseParams } from '../../../src/app/params';
+import { parseParams } from '../../../src/kit/params';
 import { schema } from '../../../src/scenes/texture/params';
 import {
   creases,

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import { parseParams, defaultValues } from '../../../src/app/params';
+import { parseParams, defaultValues } from '../../../src/kit/params';
 import { schema } from '../../../src/scenes/texture/params';
 import {
   KEY_PRINTED,

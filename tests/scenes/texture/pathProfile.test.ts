@@ -1,5 +1,5 @@
 /**
- * The fast path profile (numeric keys in typed buffers, issue 15) against the plain one it
+ * The fast path profile (numeric keys in typed buffers) against the plain one it
  * replaced (string keys over the stencils, kept here as the reference): the same breakpoints, the
  * same samples, the same numbers, bit for bit, over random grids, paths and conventions.
  */
@@ -28,7 +28,7 @@ import {
   type TextureGrid,
 } from '../../../src/core/texture';
 
-// ---- the reference: pathProfile as it was before issue 15 (string keys, stencil objects) ----
+// ---- the reference: the plain pathProfile it replaced (string keys, stencil objects) ----
 function region(t: number): number {
   return t >= 0 && t <= 1 ? 0 : Math.floor(t);
 }

@@ -4,12 +4,16 @@
  * progress and cancel); the canvases are repainted only when a new pass arrives.
  */
 import { useEffect, useRef } from 'react';
-import { useWorkerJob } from '../../../workers';
+import { useWorkerJob, workerFactory } from '../../../workers';
+import type { AreaLightTasks } from '../floor.worker';
 import { Readout, useSeenOnce } from '../../../ui';
-import { PASS_TOTAL, STRATEGIES, STRATEGY_LABEL, type FloorJob } from '../model';
+import { PASS_TOTAL, type FloorJob } from '../floor';
+import { STRATEGIES, STRATEGY_LABEL } from '../strategies';
 import type { FloorFrame } from '../jobs';
 
-const makeWorker = () => new Worker(new URL('../floor.worker.ts', import.meta.url), { type: 'module' });
+const makeWorker = workerFactory<AreaLightTasks>(
+  () => new Worker(new URL('../floor.worker.ts', import.meta.url), { type: 'module' }),
+);
 
 /** Paint a radiance image: v / scale, gamma 1/2.2, warm white; NaN (no closed form) as a hatch colour. */
 function paint(canvas: HTMLCanvasElement | null, img: Float32Array | undefined, size: number, scale: number) {
@@ -47,7 +51,7 @@ export function FloorImages({ job, pass = PASS_TOTAL.length - 1 }: { job: FloorJ
   // (debounced so dragging a slider does not queue renders).
   const box = useRef<HTMLDivElement>(null);
   const seenOnce = useSeenOnce(box);
-  const task = useWorkerJob<FloorFrame, FloorFrame>(makeWorker, 'render', job, {
+  const task = useWorkerJob(makeWorker, 'render', job, {
     delayMs: 250,
     enabled: seenOnce,
   });
@@ -81,7 +85,7 @@ export function FloorImages({ job, pass = PASS_TOTAL.length - 1 }: { job: FloorJ
     <div className="al-images" ref={box}>
       <div className="al-progress" aria-live="polite">
         {task.error ? (
-          <span className="field-error">Rendering failed: {task.error}</span>
+          <span className="field-error">Rendering failed: {task.error.message}</span>
         ) : task.running ? (
           <>
             <progress max={1} value={task.progress} aria-label="Rendering progress" />{' '}

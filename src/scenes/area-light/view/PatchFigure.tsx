@@ -7,7 +7,7 @@
  * Drawn to scale (one scale for r, the unit radius and the patch) whenever that fits; otherwise the
  * figure says which length is not to scale. The numbers come from the model (PatchModel).
  */
-import type { PatchModel } from '../model';
+import type { PatchModel } from '../patch';
 
 const W = 560;
 const H = 260;
@@ -58,24 +58,19 @@ export function PatchFigure({ patch }: { patch: PatchModel }) {
   const dl = s * Math.cos(thetaL);
   const pa = { x: cx, y: cy - dl / 2 },
     pb = { x: cx, y: cy + dl / 2 };
-  // Where the cone p → dA⊥ meets the unit circle (the ends of dω_l).
-  const onCircle = (q: { x: number; y: number }) => {
+  // The point at distance `len` from p towards q.
+  const along = (q: { x: number; y: number }, len: number) => {
     const dx = q.x - PX,
       dy = q.y - PY,
       l = Math.hypot(dx, dy) || 1;
-    return { x: PX + (R * dx) / l, y: PY + (R * dy) / l };
+    return { x: PX + (len * dx) / l, y: PY + (len * dy) / l };
   };
-  const ca = onCircle(pa),
-    cbb = onCircle(pb);
+  // Where the cone p → dA⊥ meets the unit circle (the ends of dω_l), and the cone's edges drawn past it.
+  const ca = along(pa, R),
+    cbb = along(pb, R);
   const far = Math.max(D, R) + 24;
-  const ext = (q: { x: number; y: number }) => {
-    const dx = q.x - PX,
-      dy = q.y - PY,
-      l = Math.hypot(dx, dy) || 1;
-    return { x: PX + (far * dx) / l, y: PY + (far * dy) / l };
-  };
-  const ea = ext(pa),
-    eb = ext(pb);
+  const ea = along(pa, far),
+    eb = along(pb, far);
   // Patch normal n_l (towards p's side) and the θ_l arc between n_l and the direction back to p.
   const nx = -Math.cos(thetaL),
     ny = Math.sin(thetaL);

@@ -6,7 +6,7 @@
  * so a frame costs next to nothing.
  */
 import { memo, useId, useLayoutEffect, useMemo, useRef } from 'react';
-import type { SampleRun } from '../model';
+import type { SampleRun } from '../animation';
 
 const W = 420;
 const H = 230;

@@ -5,11 +5,12 @@
  * Q6(a) patch with its projection onto the unit sphere. Built once; objects are updated in place
  * when the model changes (no React state per frame, renders on demand).
  */
-import { useEffect, useEffectEvent, useRef } from 'react';
+import { useEffect, useRef } from 'react';
 import type * as THREE from 'three';
 import { Viewport, type ViewportContext } from '../../../three';
 import type { LightStrategy, Vec3 } from '../../../core/lights';
-import type { AreaLightModel, PatchModel } from '../model';
+import type { AreaLightModel } from '../model';
+import type { PatchModel } from '../patch';
 
 export interface Scene3DProps {
   model: AreaLightModel;
@@ -72,6 +73,119 @@ function frame(o: Objects, m: AreaLightModel) {
   o.ctx.invalidate();
 }
 
+/** What the view shows: the props that the drawing functions read. */
+type Shown = Pick<Scene3DProps, 'model' | 'strategy' | 'samples' | 'terms' | 'patch' | 'dark' | 'count'>;
+
+/** The animated part: how many samples are drawn, and rays from p to the RAYS newest (cheap: per frame). */
+function applyCount(o: Objects, s: Shown) {
+  const { model: m, strategy: st, samples: smp, terms: tm, count: cnt } = s;
+  const n = Math.min(MAX_SAMPLES, tm.length, cnt ?? tm.length);
+  const [px, py, pz] = m.p;
+  const rayPos = o.rays.geometry.getAttribute('position') as THREE.BufferAttribute;
+  const first = Math.max(0, n - RAYS);
+  for (let i = first; i < n; i++) {
+    const j = i - first;
+    const ex = st === 'cosine' ? px + smp[3 * i] : smp[3 * i];
+    const ey = st === 'cosine' ? py + smp[3 * i + 1] : smp[3 * i + 1];
+    const ez = st === 'cosine' ? pz + smp[3 * i + 2] : smp[3 * i + 2];
+    rayPos.setXYZ(2 * j, px, py, pz);
+    rayPos.setXYZ(2 * j + 1, ex, ey, ez);
+  }
+  rayPos.needsUpdate = true;
+  o.samplesOn.geometry.setDrawRange(0, st === 'cosine' ? 0 : n);
+  o.samplesDir.geometry.setDrawRange(0, n);
+  o.rays.geometry.setDrawRange(0, 2 * (n - first));
+  o.rays.geometry.computeBoundingSphere();
+  o.ctx.invalidate();
+}
+
+/** Everything else: the light, occluder, point, floor, all samples' positions and colours, the patch. */
+function apply(o: Objects, s: Shown, framedFor: { current: string }) {
+  const { model: m, strategy: st, samples: smp, terms: tm, patch: pt, dark: dk } = s;
+  const T = o.ctx.THREE;
+  const c = m.light.corners;
+  // Corners are counter-clockwise about ex × ey = −n_l; seen from the emitting side that is
+  // clockwise, so the front triangles use the reversed order.
+  setQuad(o.lightFront, c, [0, 2, 1, 0, 3, 2]);
+  setQuad(o.lightBack, c, [0, 2, 1, 0, 3, 2]);
+  setQuad(o.lightEdge, c, [0, 1, 2, 3]);
+  o.occluder.visible = !!m.occluder;
+  if (m.occluder) setQuad(o.occluder, m.occluder.corners, [0, 1, 2, 0, 2, 3]);
+  const [px, py, pz] = m.p;
+  o.point.position.set(px, py, pz);
+  o.normal.position.set(px, py, pz);
+  o.hemi.position.set(px, py, pz);
+  const span = Math.max(4, 2.5 * Math.hypot(m.lc[0] - px, m.lc[1] - py), Math.max(m.w, m.h) * 3);
+  o.floor.position.set(px, py, pz - 1e-3);
+  o.floor.scale.set(span, span, 1);
+  o.grid.position.set(Math.round(px), Math.round(py), pz);
+  const gs = Math.max(1, Math.ceil(span / 8));
+  o.grid.scale.set(gs, 1, gs);
+  (o.grid.material as THREE.Material).opacity = dk ? 0.35 : 0.5;
+
+  // Samples: points on the light (light strategies) and the unit directions from p.
+  const n = Math.min(MAX_SAMPLES, tm.length);
+  const onPos = o.samplesOn.geometry.getAttribute('position') as THREE.BufferAttribute;
+  const onCol = o.samplesOn.geometry.getAttribute('color') as THREE.BufferAttribute;
+  const dirPos = o.samplesDir.geometry.getAttribute('position') as THREE.BufferAttribute;
+  const dirCol = o.samplesDir.geometry.getAttribute('color') as THREE.BufferAttribute;
+  const hit = new T.Color(dk ? 0x7ee787 : 0x1d7a3a);
+  const miss = new T.Color(dk ? 0xf47067 : 0xc0392b);
+  for (let i = 0; i < n; i++) {
+    let dx: number, dy: number, dz: number;
+    if (st === 'cosine') {
+      dx = smp[3 * i];
+      dy = smp[3 * i + 1];
+      dz = smp[3 * i + 2];
+    } else {
+      onPos.setXYZ(i, smp[3 * i], smp[3 * i + 1], smp[3 * i + 2]);
+      const col = tm[i] > 0 ? hit : miss;
+      onCol.setXYZ(i, col.r, col.g, col.b);
+      dx = smp[3 * i] - px;
+      dy = smp[3 * i + 1] - py;
+      dz = smp[3 * i + 2] - pz;
+      const len = Math.hypot(dx, dy, dz) || 1;
+      dx /= len;
+      dy /= len;
+      dz /= len;
+    }
+    dirPos.setXYZ(i, px + dx, py + dy, pz + dz);
+    const col = tm[i] > 0 ? hit : miss;
+    dirCol.setXYZ(i, col.r, col.g, col.b);
+  }
+  o.samplesOn.visible = st !== 'cosine';
+  for (const a of [onPos, onCol, dirPos, dirCol]) a.needsUpdate = true;
+  for (const g of [o.samplesOn.geometry, o.samplesDir.geometry]) g.computeBoundingSphere();
+  applyCount(o, s);
+
+  // Q6(a) patch and its projection onto the unit sphere around p.
+  o.patch.visible = o.patchRays.visible = o.patchProj.visible = !!pt;
+  if (pt) {
+    setQuad(o.patch, pt.corners, [0, 1, 2, 0, 2, 3]);
+    setQuad(o.patchProj, pt.projected, [0, 1, 2, 0, 2, 3]);
+    const rp = o.patchRays.geometry.getAttribute('position') as THREE.BufferAttribute;
+    pt.corners.forEach((q, i) => {
+      rp.setXYZ(2 * i, px, py, pz);
+      rp.setXYZ(2 * i + 1, q[0], q[1], q[2]);
+    });
+    rp.needsUpdate = true;
+    o.patchRays.geometry.computeBoundingSphere();
+  }
+  // Re-frame on the first draw, and whenever the point or a corner of the light has left the
+  // view (e.g. after a preset moved the light far away); otherwise keep the user's camera.
+  const cam = o.ctx.camera;
+  cam.updateMatrixWorld();
+  const fr = new T.Frustum().setFromProjectionMatrix(
+    new T.Matrix4().multiplyMatrices(cam.projectionMatrix, cam.matrixWorldInverse),
+  );
+  const visible = [m.p, ...c].every((q) => fr.containsPoint(new T.Vector3(q[0], q[1], q[2])));
+  if (framedFor.current === '' || !visible) {
+    framedFor.current = 'framed';
+    frame(o, m);
+  }
+  o.ctx.invalidate();
+}
+
 export function Scene3D({
   model,
   strategy,
@@ -84,133 +198,24 @@ export function Scene3D({
   countRef,
 }: Scene3DProps) {
   const objs = useRef<Objects | null>(null);
-  const latest = useRef({ model, strategy, samples, terms, patch, dark, count });
+  const latest = useRef<Shown>({ model, strategy, samples, terms, patch, dark, count });
   latest.current = { model, strategy, samples, terms, patch, dark, count };
   const framedFor = useRef('');
 
-  /** The animated part: how many samples are drawn, and rays from p to the RAYS newest. Cheap (per frame). */
-  const applyCount = (o: Objects) => {
-    const { model: m, strategy: st, samples: smp, terms: tm, count: cnt } = latest.current;
-    const n = Math.min(MAX_SAMPLES, tm.length, cnt ?? tm.length);
-    const [px, py, pz] = m.p;
-    const rayPos = o.rays.geometry.getAttribute('position') as THREE.BufferAttribute;
-    const first = Math.max(0, n - RAYS);
-    for (let i = first; i < n; i++) {
-      const j = i - first;
-      const ex = st === 'cosine' ? px + smp[3 * i] : smp[3 * i];
-      const ey = st === 'cosine' ? py + smp[3 * i + 1] : smp[3 * i + 1];
-      const ez = st === 'cosine' ? pz + smp[3 * i + 2] : smp[3 * i + 2];
-      rayPos.setXYZ(2 * j, px, py, pz);
-      rayPos.setXYZ(2 * j + 1, ex, ey, ez);
-    }
-    rayPos.needsUpdate = true;
-    o.samplesOn.geometry.setDrawRange(0, st === 'cosine' ? 0 : n);
-    o.samplesDir.geometry.setDrawRange(0, n);
-    o.rays.geometry.setDrawRange(0, 2 * (n - first));
-    o.rays.geometry.computeBoundingSphere();
-    o.ctx.invalidate();
-  };
-
-  const apply = (o: Objects) => {
-    const { model: m, strategy: st, samples: smp, terms: tm, patch: pt, dark: dk } = latest.current;
-    const T = o.ctx.THREE;
-    const c = m.light.corners;
-    // Corners are counter-clockwise about ex × ey = −n_l; seen from the emitting side that is
-    // clockwise, so the front triangles use the reversed order.
-    setQuad(o.lightFront, c, [0, 2, 1, 0, 3, 2]);
-    setQuad(o.lightBack, c, [0, 2, 1, 0, 3, 2]);
-    setQuad(o.lightEdge, c, [0, 1, 2, 3]);
-    o.occluder.visible = !!m.occluder;
-    if (m.occluder) setQuad(o.occluder, m.occluder.corners, [0, 1, 2, 0, 2, 3]);
-    const [px, py, pz] = m.p;
-    o.point.position.set(px, py, pz);
-    o.normal.position.set(px, py, pz);
-    o.hemi.position.set(px, py, pz);
-    const span = Math.max(4, 2.5 * Math.hypot(m.lc[0] - px, m.lc[1] - py), Math.max(m.w, m.h) * 3);
-    o.floor.position.set(px, py, pz - 1e-3);
-    o.floor.scale.set(span, span, 1);
-    o.grid.position.set(Math.round(px), Math.round(py), pz);
-    const gs = Math.max(1, Math.ceil(span / 8));
-    o.grid.scale.set(gs, 1, gs);
-    (o.grid.material as THREE.Material).opacity = dk ? 0.35 : 0.5;
-
-    // Samples: points on the light (light strategies) and the unit directions from p.
-    const n = Math.min(MAX_SAMPLES, tm.length);
-    const onPos = o.samplesOn.geometry.getAttribute('position') as THREE.BufferAttribute;
-    const onCol = o.samplesOn.geometry.getAttribute('color') as THREE.BufferAttribute;
-    const dirPos = o.samplesDir.geometry.getAttribute('position') as THREE.BufferAttribute;
-    const dirCol = o.samplesDir.geometry.getAttribute('color') as THREE.BufferAttribute;
-    const hit = new T.Color(dk ? 0x7ee787 : 0x1d7a3a);
-    const miss = new T.Color(dk ? 0xf47067 : 0xc0392b);
-    for (let i = 0; i < n; i++) {
-      let dx: number, dy: number, dz: number;
-      if (st === 'cosine') {
-        dx = smp[3 * i];
-        dy = smp[3 * i + 1];
-        dz = smp[3 * i + 2];
-      } else {
-        onPos.setXYZ(i, smp[3 * i], smp[3 * i + 1], smp[3 * i + 2]);
-        const col = tm[i] > 0 ? hit : miss;
-        onCol.setXYZ(i, col.r, col.g, col.b);
-        dx = smp[3 * i] - px;
-        dy = smp[3 * i + 1] - py;
-        dz = smp[3 * i + 2] - pz;
-        const len = Math.hypot(dx, dy, dz) || 1;
-        dx /= len;
-        dy /= len;
-        dz /= len;
-      }
-      dirPos.setXYZ(i, px + dx, py + dy, pz + dz);
-      const col = tm[i] > 0 ? hit : miss;
-      dirCol.setXYZ(i, col.r, col.g, col.b);
-    }
-    o.samplesOn.visible = st !== 'cosine';
-    for (const a of [onPos, onCol, dirPos, dirCol]) a.needsUpdate = true;
-    for (const g of [o.samplesOn.geometry, o.samplesDir.geometry]) g.computeBoundingSphere();
-    applyCount(o);
-
-    // Q6(a) patch and its projection onto the unit sphere around p.
-    o.patch.visible = o.patchRays.visible = o.patchProj.visible = !!pt;
-    if (pt) {
-      setQuad(o.patch, pt.corners, [0, 1, 2, 0, 2, 3]);
-      setQuad(o.patchProj, pt.projected, [0, 1, 2, 0, 2, 3]);
-      const rp = o.patchRays.geometry.getAttribute('position') as THREE.BufferAttribute;
-      pt.corners.forEach((q, i) => {
-        rp.setXYZ(2 * i, px, py, pz);
-        rp.setXYZ(2 * i + 1, q[0], q[1], q[2]);
-      });
-      rp.needsUpdate = true;
-      o.patchRays.geometry.computeBoundingSphere();
-    }
-    // Re-frame on the first draw, and whenever the point or a corner of the light has left the
-    // view (e.g. after a preset moved the light far away); otherwise keep the user's camera.
-    const cam = o.ctx.camera;
-    cam.updateMatrixWorld();
-    const fr = new T.Frustum().setFromProjectionMatrix(
-      new T.Matrix4().multiplyMatrices(cam.projectionMatrix, cam.matrixWorldInverse),
-    );
-    const visible = [m.p, ...c].every((q) => fr.containsPoint(new T.Vector3(q[0], q[1], q[2])));
-    if (framedFor.current === '' || !visible) {
-      framedFor.current = 'framed';
-      frame(o, m);
-    }
-    o.ctx.invalidate();
-  };
-
-  const onChange = useEffectEvent(() => {
-    if (objs.current) apply(objs.current);
-  });
-  useEffect(() => onChange(), [model, strategy, samples, terms, patch, dark]);
-  const onCount = useEffectEvent(() => {
-    if (objs.current) applyCount(objs.current);
-  });
-  useEffect(() => onCount(), [count]);
+  // The effects read the props through `latest` (set above in this render); their dependencies say
+  // when to redraw: everything on a new model or samples, only the draw ranges on a new count.
+  useEffect(() => {
+    if (objs.current) apply(objs.current, latest.current, framedFor);
+  }, [model, strategy, samples, terms, patch, dark]);
+  useEffect(() => {
+    if (objs.current) applyCount(objs.current, latest.current);
+  }, [count]);
   if (countRef) {
     // per animation frame, without a React render: a new count moves the draw ranges and rays
     countRef.current = (k: number) => {
       if (latest.current.count === k) return;
       latest.current.count = k;
-      if (objs.current) applyCount(objs.current);
+      if (objs.current) applyCount(objs.current, latest.current);
     };
   }
 
@@ -299,7 +304,8 @@ export function Scene3D({
       quadGeo(6),
       new T.MeshBasicMaterial({ color: 0xe4572e, side: T.DoubleSide }),
     );
-    for (const obj of [
+    // in the order they are added to the scene
+    const parts = {
       floor,
       grid,
       lightFront,
@@ -309,27 +315,6 @@ export function Scene3D({
       point,
       normal,
       hemi,
-      samplesOn,
-      samplesDir,
-      rays,
-      patch,
-      patchRays,
-      patchProj,
-    ]) {
-      obj.frustumCulled = false;
-      ctx.scene.add(obj);
-    }
-    const o: Objects = {
-      ctx,
-      lightFront,
-      lightBack,
-      lightEdge,
-      occluder,
-      point,
-      normal,
-      hemi,
-      floor,
-      grid,
       samplesOn,
       samplesDir,
       rays,
@@ -337,9 +322,14 @@ export function Scene3D({
       patchRays,
       patchProj,
     };
+    for (const obj of Object.values(parts)) {
+      obj.frustumCulled = false;
+      ctx.scene.add(obj);
+    }
+    const o: Objects = { ctx, ...parts };
     objs.current = o;
     framedFor.current = '';
-    apply(o);
+    apply(o, latest.current, framedFor);
     return () => {
       objs.current = null;
     };

@@ -4,29 +4,14 @@
  * For a typed density the steps are numerical (tabulated) and say so.
  */
 import { MathTex, formatNumber } from '../../../ui';
+import { unsuperscript } from '../../../ui/axis';
 import type { TabulatedHemisphere } from '../../../core/sampling';
 import type { LobeId } from '../params';
 
 const n6 = (x: number) =>
   formatNumber(x, 6)
     .replace('×10', '\\times 10^{')
-    .replace(/([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)/, (m) => `${fromSup(m)}}`);
-function fromSup(s: string): string {
-  const map: Record<string, string> = {
-    '⁻': '-',
-    '⁰': '0',
-    '¹': '1',
-    '²': '2',
-    '³': '3',
-    '⁴': '4',
-    '⁵': '5',
-    '⁶': '6',
-    '⁷': '7',
-    '⁸': '8',
-    '⁹': '9',
-  };
-  return [...s].map((c) => map[c] ?? c).join('');
-}
+    .replace(/([⁻⁰¹²³⁴⁵⁶⁷⁸⁹]+)/, (m) => `${unsuperscript(m)}}`);
 
 function Step({
   n,

@@ -1,7 +1,7 @@
 /**
  * The numerical-stability panel: the θ and φ inversion forms evaluated at tiny and near-1 ξ, with
- * their errors against a 64-digit reference (mathjs BigNumber, loaded only when the panel is
- * opened — core/sampling/stability).
+ * their errors against a 64-digit reference (decimal.js, loaded only when the panel is opened —
+ * core/sampling/stability).
  */
 import { useEffect, useState } from 'react';
 import { MathTex, Notice, formatNumber } from '../../../ui';

@@ -1,13 +1,13 @@
 /** Convergence as N grows: running estimate and |error| log-log with guides and fitted slopes (one run per strategy, in the worker). */
 import { useEffect, useMemo, useRef } from 'react';
-import { formatNumber, Panel, Plot, type PlotTrace } from '../../../ui';
+import { formatNumber, Panel, Plot, useThrottled, type PlotTrace } from '../../../ui';
+import { useAutoRun, type WorkerFactory } from '../../../workers';
 import { atRoundingLevel } from '../model';
 import { formatCount } from '../../../ui/format';
 import type { ProblemArgs, SeriesData } from '../jobs';
-import { REDRAW_MS, useAutoRun, useLegendRoom, useThrottled } from './hooks';
+import { REDRAW_MS, useLegendRoom } from './hooks';
 import { arr, COLORS, Heading, L_ERR, L_EST, RunBar } from './plotStyle';
-
-type ConvResult = { series: SeriesData[]; exact: number; problems: string[] };
+import type { McTasks } from '../mc.worker';
 
 export function ConvergencePanel({
   args,
@@ -20,13 +20,13 @@ export function ConvergencePanel({
   args: ProblemArgs;
   nMax: number;
   exact: number;
-  makeWorker: () => Worker;
+  makeWorker: WorkerFactory<McTasks>;
   present: boolean;
   runToken?: number;
 }) {
   const box = useRef<HTMLDivElement>(null);
   const key = JSON.stringify([args, nMax]);
-  const task = useAutoRun<ConvResult, ConvResult>('convergence', makeWorker, { ...args, nMax }, key, box);
+  const task = useAutoRun(makeWorker, 'convergence', { ...args, nMax }, { key, box, queue: 'monte-carlo' });
   // classroom shortcut (space): run the convergence again
   const rerun = task.run;
   const lastToken = useRef(runToken);
@@ -118,7 +118,7 @@ export function ConvergencePanel({
           onRun={task.run}
           label={`Running up to N = ${formatCount(nMax)}…`}
         />
-        {task.error ? <p className="field-error">The run failed: {task.error}</p> : null}
+        {task.error ? <p className="field-error">The run failed: {task.error.message}</p> : null}
         {cur?.problems.length ? <p className="mc-note">Left out: {cur.problems.join('; ')}</p> : null}
         <Heading>Running estimate</Heading>
         <Plot

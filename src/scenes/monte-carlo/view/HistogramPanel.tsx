@@ -1,12 +1,12 @@
 /** Unbiasedness: the histogram of many independent estimates at fixed N, with their mean (core Welford). */
 import { useMemo, useRef } from 'react';
-import { formatNumber, NumberField, Panel, Plot, Readout, type PlotTrace } from '../../../ui';
+import { formatNumber, NumberField, Panel, Plot, Readout, useThrottled, type PlotTrace } from '../../../ui';
+import { useAutoRun, type WorkerFactory } from '../../../workers';
 import { estimateFromTerms, histogram } from '../../../core/estimators';
 import type { ProblemArgs } from '../jobs';
-import { REDRAW_MS, useAutoRun, useLegendRoom, useThrottled } from './hooks';
+import { REDRAW_MS, useLegendRoom } from './hooks';
 import { arr, COLORS, L_HIST, RunBar } from './plotStyle';
-
-type HistResult = { estimates: Float64Array; exact?: number };
+import type { McTasks } from '../mc.worker';
 
 export function HistogramPanel({
   args,
@@ -18,14 +18,14 @@ export function HistogramPanel({
   args: ProblemArgs;
   N: number;
   exact: number;
-  makeWorker: () => Worker;
+  makeWorker: WorkerFactory<McTasks>;
   onN: (v: number) => void;
 }) {
   const box = useRef<HTMLDivElement>(null);
   const M = 2000;
   const room = useLegendRoom();
   const key = JSON.stringify([args, N]);
-  const task = useAutoRun<HistResult, HistResult>('histogram', makeWorker, { ...args, N, M }, key, box);
+  const task = useAutoRun(makeWorker, 'histogram', { ...args, N, M }, { key, box, queue: 'monte-carlo' });
   const est = useThrottled(task.result ?? task.partial, REDRAW_MS, !task.running)?.estimates;
   const stats = useMemo(() => {
     if (!est || !est.length) return null;
@@ -89,7 +89,7 @@ export function HistogramPanel({
           onRun={task.run}
           label="Estimating…"
         />
-        {task.error ? <p className="field-error">The run failed: {task.error}</p> : null}
+        {task.error ? <p className="field-error">The run failed: {task.error.message}</p> : null}
         <div className="readouts">
           <Readout
             id="hist-mean"

@@ -21,6 +21,7 @@ import {
   useTimelineFrame,
   writeReadout,
 } from '../../../ui';
+import { pow10Text } from '../../../ui/axis';
 import {
   RACE_DURATION,
   RACE_MAX,
@@ -38,21 +39,6 @@ const PW = W - M.l - M.r;
 const PH = H - M.t - M.b;
 const C_U = 'var(--accent-2)';
 const C_I = 'var(--accent)';
-
-const SUP: Record<string, string> = {
-  '-': '⁻',
-  '0': '⁰',
-  '1': '¹',
-  '2': '²',
-  '3': '³',
-  '4': '⁴',
-  '5': '⁵',
-  '6': '⁶',
-  '7': '⁷',
-  '8': '⁸',
-  '9': '⁹',
-};
-const pow10 = (e: number) => `10${String(e).replace(/./g, (c) => SUP[c] ?? c)}`;
 
 type Scale = (v: number) => number;
 const lin =
@@ -286,7 +272,7 @@ export const RaceFigure = memo(function RaceFigure({
     const e1 = Math.ceil(Math.log10(s)) + 0;
     const ly = logS(10 ** e0, 10 ** e1, M.t + PH, M.t);
     const lt: [number, string][] = [];
-    for (let e = e0; e <= e1; e += e1 - e0 > 4 ? 2 : 1) lt.push([ly(10 ** e), pow10(e)]);
+    for (let e = e0; e <= e1; e += e1 - e0 > 4 ? 2 : 1) lt.push([ly(10 ** e), pow10Text(e)]);
     // N^−½ guide through the uniform lane's final standard deviation: sd/√N is the expected error scale
     const last = track.max - 1;
     const sd = Math.sqrt(track.uniform.m2[last] / Math.max(1, last));
@@ -456,7 +442,7 @@ export const RaceFigure = memo(function RaceFigure({
         Blue: uniform; orange: importance (its pdf dashed on f). Dashed line: the exact I ={' '}
         {formatNumber(I, 8)}; grey: the N^−½ trend σ/√N. Both estimators use the same random numbers ξᵢ
         (seeded): uniform puts xᵢ = a + (b − a)ξᵢ, importance xᵢ = P⁻¹(ξᵢ). Errors below{' '}
-        {pow10(Math.round(Math.log10(fig.floor)))} sit on the bottom line.
+        {pow10Text(Math.round(Math.log10(fig.floor)))} sit on the bottom line.
       </p>
     </div>
   );

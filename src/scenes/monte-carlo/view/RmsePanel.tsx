@@ -1,13 +1,13 @@
 /** RMSE over independent (randomized) runs against N, and against the measured run time. */
 import { useMemo, useRef } from 'react';
-import { NumberField, Panel, Plot, type PlotTrace } from '../../../ui';
+import { NumberField, Panel, Plot, useThrottled, type PlotTrace } from '../../../ui';
+import { useAutoRun, type WorkerFactory } from '../../../workers';
 import { atRoundingLevel, sortedByX } from '../model';
 import { formatCount } from '../../../ui/format';
-import type { ProblemArgs, RmseData } from '../jobs';
-import { REDRAW_MS, useAutoRun, useLegendRoom, useThrottled } from './hooks';
+import type { ProblemArgs } from '../jobs';
+import { REDRAW_MS, useLegendRoom } from './hooks';
 import { arr, clampArr, COLORS, Heading, hexA, L_RMSE, L_TIME, RunBar } from './plotStyle';
-
-type RmseResult = { rmse: RmseData[]; exact?: number; problems?: string[] };
+import type { McTasks } from '../mc.worker';
 
 export function RmsePanel({
   args,
@@ -21,12 +21,12 @@ export function RmsePanel({
   nMax: number;
   runs: number;
   exact: number;
-  makeWorker: () => Worker;
+  makeWorker: WorkerFactory<McTasks>;
   onRuns: (r: number) => void;
 }) {
   const box = useRef<HTMLDivElement>(null);
   const key = JSON.stringify([args, nMax, runs]);
-  const task = useAutoRun<RmseResult, RmseResult>('rmse', makeWorker, { ...args, nMax, runs }, key, box);
+  const task = useAutoRun(makeWorker, 'rmse', { ...args, nMax, runs }, { key, box, queue: 'monte-carlo' });
   const cur = useThrottled(task.result ?? task.partial, REDRAW_MS, !task.running);
   const rm = cur?.rmse ?? [];
   const rmExactLabels = rm.filter((s) => atRoundingLevel(s.rmse, exact)).map((s) => s.label);
@@ -127,7 +127,7 @@ export function RmsePanel({
           onRun={task.run}
           label="Independent runs…"
         />
-        {task.error ? <p className="field-error">The run failed: {task.error}</p> : null}
+        {task.error ? <p className="field-error">The run failed: {task.error.message}</p> : null}
         <Heading>RMSE over the runs (band: 10–90 % of |error|)</Heading>
         <Plot
           data={rmseData}

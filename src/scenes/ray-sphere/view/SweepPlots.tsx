@@ -10,49 +10,9 @@ import type { RaySphereCase, RaySphereHit } from '../../../core/geometry';
 import type { SweepSeries } from '../model';
 import { useWidth } from '../../../ui/useWidth';
 import { useSectionWidth } from '../../../ui/Deferred';
+import { niceTicks, tickLabel } from '../../../ui/axis';
 
 const PAD = { l: 62, r: 14, t: 30, b: 44 };
-
-/** Round ticks (1, 2, 5 × 10ⁿ) covering [lo, hi]. */
-export function niceTicks(lo: number, hi: number, count = 5): { ticks: number[]; step: number } {
-  if (!(hi > lo) || !Number.isFinite(hi - lo)) return { ticks: [lo], step: 1 };
-  const raw = (hi - lo) / Math.max(1, count);
-  const p = 10 ** Math.floor(Math.log10(raw));
-  const m = raw / p;
-  const step = (m < 1.5 ? 1 : m < 3 ? 2 : m < 7 ? 5 : 10) * p;
-  const ticks: number[] = [];
-  for (let k = Math.ceil(lo / step); k * step <= hi + step * 1e-9; k++) ticks.push(k * step);
-  return { ticks, step };
-}
-
-const SUP: Record<string, string> = {
-  '-': '⁻',
-  '0': '⁰',
-  '1': '¹',
-  '2': '²',
-  '3': '³',
-  '4': '⁴',
-  '5': '⁵',
-  '6': '⁶',
-  '7': '⁷',
-  '8': '⁸',
-  '9': '⁹',
-};
-
-/** A tick label: plain decimals for ordinary sizes, m × 10ⁿ (never SI prefixes) otherwise. */
-export function fmtTick(v: number, step: number): string {
-  if (v === 0 || Math.abs(v) < step * 1e-9) return '0';
-  const av = Math.abs(v);
-  if (av >= 1e5 || step < 1e-3) {
-    const e = Math.floor(Math.log10(av));
-    const m = v / 10 ** e;
-    const ms = Number(m.toPrecision(3)).toString();
-    const ex = String(e).replace(/./g, (ch) => SUP[ch] ?? ch);
-    return ms === '1' ? `10${ex}` : ms === '-1' ? `−10${ex}` : `${ms.replace('-', '−')}×10${ex}`;
-  }
-  const digits = Math.max(0, Math.min(6, -Math.floor(Math.log10(step) + 1e-9)));
-  return v.toFixed(digits).replace('-', '−');
-}
 
 interface Frame {
   W: number;
@@ -107,7 +67,7 @@ function Axes({
         <g key={`x${v}`}>
           <line x1={f.X(v)} x2={f.X(v)} y1={f.y0} y2={f.y1} className="mp-grid" />
           <text x={f.X(v)} y={f.y1 + 16} textAnchor="middle" className="mp-tick">
-            {fmtTick(v, xt.step)}
+            {tickLabel(v, xt.step)}
           </text>
         </g>
       ))}
@@ -115,7 +75,7 @@ function Axes({
         <g key={`y${v}`}>
           <line x1={f.x0} x2={f.x1} y1={f.Y(v)} y2={f.Y(v)} className={v === 0 ? 'mp-zero' : 'mp-grid'} />
           <text x={f.x0 - 6} y={f.Y(v) + 4} textAnchor="end" className="mp-tick">
-            {fmtTick(v, yt.step)}
+            {tickLabel(v, yt.step)}
           </text>
         </g>
       ))}

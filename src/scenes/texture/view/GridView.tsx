@@ -22,11 +22,11 @@ import {
   type RefObject,
 } from 'react';
 import { nodeCoord, type LookupOptions, type TextureGrid } from '../../../core/texture';
-import { colorCss, darkTextOn, normalizeValue } from '../colormap';
-import { pathPoint, textureImage, type Lookup, type QueryPath } from '../model';
+import { darkTextOn, normalizeValue } from '../colormap';
+import { pathPoint, textureImage, type Lookup, type QueryPath, type ShownTexture } from '../model';
 
 const VB = 1000; // viewBox size of the plotted window
-/** Smallest on-screen size of any text in the figure, in CSS pixels (issue 11: ≥ 12 px on phones). */
+/** Smallest on-screen size of any text in the figure, in CSS pixels (at least 12 px on phones). */
 const MIN_TEXT_PX = 12.5;
 /** Radius of a handle's hit area in CSS pixels (a ≥ 24 px target on touch screens). */
 const HANDLE_HIT_PX = 20;
@@ -46,10 +46,7 @@ export function viewWindow(grid: TextureGrid, opts: LookupOptions): ViewWindow {
 /** Which thing a pointer or key moves: the path's start (u, v), its end (u2, v2), or the query itself. */
 export type Grab = 'a' | 'b' | 'query';
 
-interface Props {
-  grid: TextureGrid;
-  opts: LookupOptions;
-  range: { min: number; max: number };
+interface Props extends ShownTexture {
   /** The lookup drawn (from {@link drawnLookup}). */
   q: Lookup;
   /** The query's path in the user's (u, v) (drawn in the texture frame). */
@@ -89,7 +86,7 @@ export function GridView({
   const markerRef = useRef<SVGGElement>(null);
   const stencilRef = useRef<SVGGElement>(null);
   if (drawRef) {
-    // per-frame drawing of the moving query without React (see ../anim.tsx)
+    // per-frame drawing of the moving query without React (see ./anim.ts)
     drawRef.current = (dq: Lookup) => {
       const m = markerRef.current;
       if (m) m.setAttribute('transform', `translate(${sx(dq.bil.u, win)} ${sy(dq.bil.v, win)})`);
@@ -379,17 +376,7 @@ function sy(v: number, win: ViewWindow): number {
 }
 
 /** Nearest-neighbour regions as an image (outside [0, 1]² dimmed by the SVG layer). */
-const BaseCanvas = memo(function BaseCanvas({
-  grid,
-  opts,
-  range,
-  win,
-}: {
-  grid: TextureGrid;
-  opts: LookupOptions;
-  range: { min: number; max: number };
-  win: ViewWindow;
-}) {
+const BaseCanvas = memo(function BaseCanvas({ grid, opts, range, win }: ShownTexture & { win: ViewWindow }) {
   const ref = useRef<HTMLCanvasElement>(null);
   useEffect(() => {
     const c = ref.current;
@@ -416,13 +403,7 @@ const StaticLayer = memo(function StaticLayer({
   range,
   win,
   unitsPerPx,
-}: {
-  grid: TextureGrid;
-  opts: LookupOptions;
-  range: { min: number; max: number };
-  win: ViewWindow;
-  unitsPerPx: number;
-}) {
+}: ShownTexture & { win: ViewWindow; unitsPerPx: number }) {
   const W = grid.width;
   const H = grid.height;
   const nmax = Math.max(W, H);
@@ -530,14 +511,7 @@ const LabelLayer = memo(function LabelLayer({
   win,
   present,
   unitsPerPx,
-}: {
-  grid: TextureGrid;
-  opts: LookupOptions;
-  range: { min: number; max: number };
-  win: ViewWindow;
-  present: boolean;
-  unitsPerPx: number;
-}) {
+}: ShownTexture & { win: ViewWindow; present: boolean; unitsPerPx: number }) {
   const W = grid.width;
   const H = grid.height;
   const nmax = Math.max(W, H);
@@ -698,11 +672,6 @@ export function fmtShort(x: number): string {
   if (!Number.isFinite(x)) return '—';
   const s = Number(x.toPrecision(4));
   return String(s);
-}
-
-/** CSS colour of a value on the grid's range (legend). */
-export function valueColor(x: number, range: { min: number; max: number }): string {
-  return colorCss(normalizeValue(x, range.min, range.max));
 }
 
 const CU_S = 200;

@@ -1,28 +1,18 @@
 /**
- * The looked-up value along the query's path (issue 12), under the grid: nearest as a step
+ * The looked-up value along the query's path, under the grid: nearest as a step
  * function, bilinear as a continuous curve with its cell borders marked (solid where the slope
  * changes, a kink; dotted where it does not), and the current position. Drawn in CSS pixels (the
  * SVG is as wide as its box), so text stays at its stated size on phones. The curves are memoized
  * on the profile; only the position marker re-renders per animation frame. Until the profile is
- * computed (a task after the page's first render, issue 15) the figure keeps its size, empty.
+ * computed (a task after the page's first render, so loading has no long task) the figure keeps its size, empty.
  */
 import { memo, useMemo, useRef } from 'react';
 import { useWidth } from '../../../ui/useWidth';
+import { niceTicks } from '../../../ui/axis';
 import type { PathProfile } from '../model';
 import { fmtShort } from './GridView';
 
 const M = { l: 46, r: 12, t: 10, b: 34 };
-
-function niceTicks(min: number, max: number, count: number): number[] {
-  if (!(max > min)) return [min];
-  const raw = (max - min) / count;
-  const p = 10 ** Math.floor(Math.log10(raw));
-  const step = [1, 2, 2.5, 5, 10].map((m) => m * p).find((s) => s >= raw) ?? raw;
-  const out: number[] = [];
-  for (let x = Math.ceil(min / step) * step; x <= max + step * 1e-9; x += step)
-    out.push(Number(x.toPrecision(12)));
-  return out;
-}
 
 interface Scale {
   w: number;
@@ -46,7 +36,7 @@ const Curves = memo(function Curves({ profile, s }: { profile: PathProfile; s: S
     const y = Y(s, p.value).toFixed(1);
     n += `${k === 0 ? 'M' : 'L'}${X(s, p.t0).toFixed(1)} ${y}L${X(s, p.t1).toFixed(1)} ${y}`;
   });
-  const yt = niceTicks(s.y0, s.y1, 4);
+  const yt = niceTicks(s.y0, s.y1, 4, 'atLeast').ticks;
   const bottom = s.h - M.b;
   return (
     <g>

@@ -3,8 +3,8 @@
  * magnified, with the query marker. Canvases redraw only when the grid or the conventions change.
  */
 import { memo, useEffect, useRef } from 'react';
-import type { Filter, LookupOptions, TextureGrid } from '../../../core/texture';
-import { textureImage, type Crease } from '../model';
+import type { Filter } from '../../../core/texture';
+import { textureImage, type Crease, type ShownTexture } from '../model';
 import { useSeenOnce } from '../../../ui';
 
 const RES = 256;
@@ -14,12 +14,7 @@ const FilterCanvas = memo(function FilterCanvas({
   opts,
   range,
   filter,
-}: {
-  grid: TextureGrid;
-  opts: LookupOptions;
-  range: { min: number; max: number };
-  filter: Filter;
-}) {
+}: ShownTexture & { filter: Filter }) {
   const ref = useRef<HTMLCanvasElement>(null);
   // Drawn once the figure comes near the screen (RES² lookups per filter: not first-screen work).
   const seen = useSeenOnce(ref);
@@ -51,10 +46,7 @@ export const Reconstruction = memo(function Reconstruction({
   qv,
   creases,
   drawRef,
-}: {
-  grid: TextureGrid;
-  opts: LookupOptions;
-  range: { min: number; max: number };
+}: ShownTexture & {
   /** The drawn query in the texture frame, [0, 1]². */
   qu: number;
   qv: number;

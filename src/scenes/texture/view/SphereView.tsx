@@ -8,7 +8,7 @@ import { useEffect, useRef } from 'react';
 import type * as THREE from 'three';
 import { Viewport, type ViewportContext } from '../../../three';
 import { nodeCoord, type LookupOptions, type TextureGrid } from '../../../core/texture';
-import { textureImage } from '../model';
+import { textureImage, type ShownTexture } from '../model';
 
 const TW = 256;
 const TH = 128;
@@ -23,10 +23,7 @@ interface Objects {
   ray: THREE.Line;
 }
 
-export interface SphereViewProps {
-  grid: TextureGrid;
-  opts: LookupOptions;
-  range: { min: number; max: number };
+export interface SphereViewProps extends ShownTexture {
   normalize: boolean;
   /** Unit direction of the picked point, or null when there is none. */
   dir: [number, number, number] | null;

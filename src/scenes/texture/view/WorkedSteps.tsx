@@ -70,27 +70,21 @@ export function bilinearTex(q: Lookup, opts: LookupOptions, uName = 'u', vName =
     value: number,
   ) =>
     `${lhs} &= ${formula} \\\\ &= \\tfrac{1}{${texNum(den, 5)}}\\big(${d1} \\cdot ${fac(f1)} \\\\ &\\qquad + ${d2} \\cdot ${fac(f2)}\\big) \\\\ &= ${texNum(value)}`;
+  // c_u and c_l: the same step along u, on the upper row (j1) and the lower row (j0)
+  const row = (lhs: string, j: number, t0: number, t1: number, value: number) =>
+    step(
+      lhs,
+      `\\frac{(u_1 - ${uName})\\,T_{${b.i0},${j}} + (${uName} - u_0)\\,T_{${b.i1},${j}}}{\\Delta u}`,
+      diff(b.u1, b.u),
+      t0,
+      diff(b.u, b.u0),
+      t1,
+      b.du,
+      value,
+    );
   return [
-    step(
-      'c_u',
-      `\\frac{(u_1 - ${uName})\\,T_{${b.i0},${b.j1}} + (${uName} - u_0)\\,T_{${b.i1},${b.j1}}}{\\Delta u}`,
-      diff(b.u1, b.u),
-      b.t01,
-      diff(b.u, b.u0),
-      b.t11,
-      b.du,
-      s.cu,
-    ),
-    step(
-      'c_l',
-      `\\frac{(u_1 - ${uName})\\,T_{${b.i0},${b.j0}} + (${uName} - u_0)\\,T_{${b.i1},${b.j0}}}{\\Delta u}`,
-      diff(b.u1, b.u),
-      b.t00,
-      diff(b.u, b.u0),
-      b.t10,
-      b.du,
-      s.cl,
-    ),
+    row('c_u', b.j1, b.t01, b.t11, s.cu),
+    row('c_l', b.j0, b.t00, b.t10, s.cl),
     step(
       'c',
       `\\frac{(v_1 - ${vq})\\,c_l + (${vq} - v_0)\\,c_u}{\\Delta v}`,
@@ -115,6 +109,14 @@ export function WideMath({ tex, label }: { tex: string; label: string }) {
       <MathTex display tex={tex} />
     </div>
   );
+}
+
+/** `tex` as the lines of an aligned block. */
+export const aligned = (tex: string) => `\\begin{aligned}${tex}\\end{aligned}`;
+
+/** The bilinear steps at the sphere point, in the key's form. */
+export function SphereBilinear({ q, opts }: { q: Lookup; opts: LookupOptions }) {
+  return <WideMath label="Bilinear steps at the sphere point" tex={aligned(bilinearTex(q, opts))} />;
 }
 
 /** The nearest-neighbour steps (Q3a) for the current query. */

@@ -3,7 +3,7 @@
  * `schema` (its URL parameters) and a default React component receiving {@link SceneProps}.
  */
 import type { ComponentType } from 'react';
-import type { ParamSchema, ParamValues } from './params';
+import type { ParamProblem, ParamSchema, ParamValues } from './params';
 
 export interface SceneMode {
   /** `embed=1`: scene only, compact header, no site chrome. */
@@ -24,4 +24,15 @@ export interface SceneProps<S extends ParamSchema = ParamSchema> {
 export interface SceneModule<S extends ParamSchema = ParamSchema> {
   schema: S;
   default: ComponentType<SceneProps<S>>;
+  /**
+   * Optional: the values this scene would not use as given although the URL parser accepts them
+   * (it shows "using … instead" and computes with a fallback), one problem per parameter, from the
+   * same model code the scene runs. The host API refuses a `set` that would add one.
+   */
+  checkValues?: SceneCheck<S>;
 }
+
+/** See {@link SceneModule.checkValues}. */
+export type SceneCheck<S extends ParamSchema = ParamSchema> = (
+  values: ParamValues<S>,
+) => ParamProblem[] | Promise<ParamProblem[]>;

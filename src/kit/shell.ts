@@ -24,8 +24,12 @@ export interface ShellFlags {
    * links the scene writes, so a shared link lands on the same part.
    */
   part: string | null;
-  /** `origin=`: the only host-page origins the host API answers (empty: any parent). */
-  origins: string[];
+  /**
+   * `origin=`: the only host-page origins the host API answers and height messages go to. null: no
+   * `origin=` in the link (any parent). An empty list: `origin=` was given but names no usable
+   * origin, so nobody is answered (a malformed restriction never widens who is).
+   */
+  origins: readonly string[] | null;
   /** Shell parameters the shell could not use, with a message each. */
   problems: { name: string; message: string }[];
 }
@@ -37,7 +41,7 @@ export function parseShellFlags(query: string): ShellFlags {
     present: false,
     theme: null,
     part: null,
-    origins: [],
+    origins: null,
     problems: [],
   };
   let sp: URLSearchParams;
@@ -79,9 +83,16 @@ export function parseShellFlags(query: string): ShellFlags {
   return flags;
 }
 
-/** Parses the `origin=` parameter: a comma list of exact origins (`https://lms.example.edu`). */
-export function parseOrigins(raw: string | null): { origins: string[]; problem: string | null } {
-  if (raw === null) return { origins: [], problem: null };
+/** The most origins `origin=` may name; the rest are dropped, with a notice. */
+export const MAX_ORIGINS = 16;
+
+/**
+ * Parses the `origin=` parameter: a comma list of exact origins (`https://lms.example.edu`).
+ * `origins` is null only when there is no `origin=` at all; an `origin=` with no usable entry
+ * gives an empty list (answer nobody), never "any parent".
+ */
+export function parseOrigins(raw: string | null): { origins: string[] | null; problem: string | null } {
+  if (raw === null) return { origins: null, problem: null };
   const origins: string[] = [];
   const bad: string[] = [];
   for (const part of raw.split(',')) {
@@ -91,16 +102,29 @@ export function parseOrigins(raw: string | null): { origins: string[]; problem: 
     try {
       const u = new URL(s);
       ok = (u.protocol === 'https:' || u.protocol === 'http:') && u.origin === s.replace(/\/$/, '');
-      if (ok) origins.push(u.origin);
+      if (ok && !origins.includes(u.origin)) origins.push(u.origin);
     } catch {
       ok = false;
     }
     if (!ok) bad.push(clip(s, 24));
   }
-  const problem = bad.length
-    ? `${bad.map((b) => JSON.stringify(b)).join(', ')} ${bad.length > 1 ? 'are not origins' : 'is not an origin'} like https://lms.example.edu; ignored`
-    : null;
-  return { origins: origins.slice(0, 16), problem };
+  const problems: string[] = [];
+  if (bad.length)
+    problems.push(
+      `${bad
+        .slice(0, 4)
+        .map((b) => JSON.stringify(b))
+        .join(
+          ', ',
+        )}${bad.length > 4 ? ` and ${bad.length - 4} more` : ''} ${bad.length > 1 ? 'are not origins' : 'is not an origin'} like https://lms.example.edu; ignored`,
+    );
+  if (origins.length > MAX_ORIGINS)
+    problems.push(
+      `names ${origins.length} origins; only the first ${MAX_ORIGINS} are answered (${origins.length - MAX_ORIGINS} dropped, from ${JSON.stringify(clip(origins[MAX_ORIGINS], 40))})`,
+    );
+  if (origins.length === 0)
+    problems.push('names no usable origin, so no host page is answered and no height message is sent');
+  return { origins: origins.slice(0, MAX_ORIGINS), problem: problems.length ? problems.join('; ') : null };
 }
 
 function clip(s: string, n: number): string {
@@ -111,7 +135,7 @@ function clip(s: string, n: number): string {
 export function shellExtras(
   flags: Pick<ShellFlags, 'embed' | 'present' | 'theme'> & {
     part?: string | null;
-    origins?: readonly string[];
+    origins?: readonly string[] | null;
   },
 ): Record<string, string | undefined> {
   return {
@@ -119,6 +143,7 @@ export function shellExtras(
     embed: flags.embed ? '1' : undefined,
     present: flags.present ? '1' : undefined,
     theme: flags.theme ?? undefined,
-    origin: flags.origins?.length ? flags.origins.join(',') : undefined,
+    // an empty list stays `origin=` (nobody), so a rewritten link never drops the restriction
+    origin: flags.origins ? flags.origins.join(',') : undefined,
   };
 }

@@ -41,8 +41,8 @@ export type ParamSchema = Readonly<Record<string, ParamSpec>>;
 
 type ValueOf<P extends ParamSpec> = P extends { kind: 'number' }
   ? number
-  : P extends { kind: 'enum' }
-    ? string
+  : P extends { kind: 'enum'; values: readonly (infer V)[] }
+    ? V
     : P extends { kind: 'string' }
       ? string
       : P extends { kind: 'bool' }

@@ -1,7 +1,7 @@
-/** Hostile link parameters (issue 17): prototype names, '+' in expressions, broken escapes. */
+/** Hostile link parameters: prototype names, '+' in expressions, broken escapes. */
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import { parseParams, serializeParams, type ParamSchema } from '../../src/app/params';
+import { parseParams, serializeParams, type ParamSchema } from '../../src/kit/params';
 
 const schema = {
   mode: { kind: 'enum', default: 'a', values: ['a', 'b'], aliases: { bee: 'b' } },

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { parseHash, parseShellFlags } from '../../src/app/route';
+import { parseHash, parseShellFlags } from '../../src/kit/shell';
 
 describe('parseHash', () => {
   it('splits path and query and normalises the path', () => {

@@ -6,7 +6,7 @@ import {
   serializeParams,
   defaultValues,
   type ParamSchema,
-} from '../../src/app/params';
+} from '../../src/kit/params';
 
 const schema = {
   u: { kind: 'number', default: 0.4, min: -4, max: 4 },

@@ -1,0 +1,485 @@
+/**
+ * The catalogue: every exam question and every scene, in one place. The shell (router, home page,
+ * scene registry), the teacher's guide, the practice index, the perf scripts and the browser tests
+ * all read it; nothing else spells out the list of scenes. Pure data and tiny look-ups: no imports,
+ * so Node scripts can load it too (scripts/catalogue.mjs).
+ *
+ * A scene (a route, e.g. `#/texture`) teaches one or more exam questions; a question's parts
+ * (`1a`, `1b`, …) are anchors on its scene's page (`part=1c` lands on the element `part-1c`).
+ */
+
+/** What the catalogue says of a scene. */
+export interface SceneInfoSpec {
+  id: string;
+  /** Hash path, e.g. '/hemisphere'. */
+  path: string;
+  title: string;
+  /** Which exam questions the scene teaches, for display ('Q1 · Q2'). */
+  questions: string;
+  blurb: string;
+  /** Query opening the scene in the exam's configuration ('' = the defaults). */
+  examQuery: string;
+  /** The exam's sub-questions this scene teaches, in page order. */
+  parts: readonly string[];
+  /** A readout (data-testid) the scene computes as soon as it opens: what shows it is working. */
+  keyReadout: string;
+  /** The misconceptions the scene is built to make visible (the teacher's guide lists them). */
+  misconceptions: { title: string; items: readonly string[] };
+}
+
+/** One step of a lesson plan: a link that opens a scene in a telling configuration. */
+export interface LessonPreset {
+  /** The scene the preset opens, when it is not the question's own scene. */
+  scene?: SceneId;
+  /** URL parameters (plain values; the link encodes them, so `+` stays a plus). */
+  params: Readonly<Record<string, string>>;
+  title: string;
+  /** What the class sees. */
+  shows: string;
+  /** What to ask the class at this step. */
+  ask: string;
+}
+
+export interface QuestionInfo {
+  n: 1 | 2 | 3 | 4 | 5 | 6;
+  /** The question's one title: the home page, its scene's heading, the guide and practice use it. */
+  title: string;
+  /** The question in one sentence (home page). */
+  text: string;
+  /** The scene that teaches it. */
+  scene: SceneId;
+  /** Query the home page opens the scene with (default: the scene's examQuery). */
+  query?: string;
+  /** Its practice question: route `#/practice/<id>`, and a blurb for the practice index. */
+  practice: { id: string; blurb: string };
+  /** The teacher's guide's lesson plan for the question. */
+  lesson: { presets: readonly LessonPreset[] };
+}
+
+const SCENE_LIST = [
+  {
+    id: 'hemisphere',
+    path: '/hemisphere',
+    title: 'Sampling a hemisphere',
+    questions: 'Q1 · Q2',
+    blurb:
+      'Normalize p(ω) = k cos θ e^φ, find its marginals and CDFs, invert them, and watch the samples land.',
+    examQuery: 'lobe=exam',
+    parts: ['1a', '1b', '1c', '1d', '2a', '2b', '2c'],
+    keyReadout: 'k',
+    misconceptions: {
+      title: 'Sampling a hemisphere (Q1, Q2)',
+      items: [
+        '“Uniform on the hemisphere means uniform in θ.” Uniform per steradian gives p(θ) = sin θ: few samples near the pole.',
+        '“p(ω) and p(θ, φ) are the same function.” They differ by the Jacobian sin θ; writing it upside down gives a density that does not integrate.',
+        '“Any non-negative function can be sampled.” It must integrate to 1 over solid angle (not over the θ–φ rectangle) before its CDF can be inverted.',
+        '“arccos(1 − 2ξ)/2 and arcsin √ξ are the same formula.” Equal in exact arithmetic, not in floating point near ξ → 0.',
+        '“Importance sampling always reduces variance.” A lobe narrower than f makes f/p unbounded.',
+      ],
+    },
+  },
+  {
+    id: 'monte-carlo',
+    path: '/monte-carlo',
+    title: 'Monte Carlo integration',
+    questions: 'Q2 · Q4',
+    blurb: 'Estimate ∫₀² (x + 2)² dx with uniform and importance sampling, and see how fast each converges.',
+    examQuery: 'samples=1.16,1.98,0.54,1.26',
+    parts: ['4a', '4b', '4c', '4d'],
+    keyReadout: 'exact',
+    misconceptions: {
+      title: 'Monte Carlo integration (Q2, Q4)',
+      items: [
+        '“Unbiased means each estimate is right.” Only the mean of the estimates is; each one scatters.',
+        '“More samples fix any estimator.” They fix the variance of an unbiased one, not a bias (p = 0 where f ≠ 0).',
+        '“s/√N is the error of every estimate.” Not for stratified or quasi-random points, whose errors are not independent.',
+        '“The zero-variance pdf is a method.” Sampling p ∝ f needs ∫ f, the answer itself.',
+        '“A finite integral has a finite-variance estimator.” ∫₀¹ x^(−½) dx is finite, its variance is not.',
+      ],
+    },
+  },
+  {
+    id: 'texture',
+    path: '/texture',
+    title: 'Texture lookup',
+    questions: 'Q3',
+    blurb: 'Nearest-neighbour and bilinear lookup on a texel grid, and the spherical (u, v) mapping.',
+    examQuery: 'u=0.4&v=0.24',
+    parts: ['3a', '3b', '3c'],
+    keyReadout: 'bilinear',
+    misconceptions: {
+      title: 'Texture lookup (Q3)',
+      items: [
+        '“v grows downward like image rows.” The exam’s v grows upward; the flipped convention gives another answer.',
+        '“Texel values sit at the corners.” Here they do (the exam); on a GPU they sit at texel centres.',
+        '“Bilinear is the average of the four neighbours.” It weights them by the distances to the query point.',
+        '“Spherical angles are texture coordinates.” They must be divided by (2π, π) to land in [0, 1].',
+        '“Coordinates outside [0, 1] are errors.” Clamp, repeat and mirror each give a defined value.',
+      ],
+    },
+  },
+  {
+    id: 'ray-sphere',
+    path: '/ray-sphere',
+    title: 'Ray–sphere intersection',
+    questions: 'Q5',
+    blurb:
+      'The quadratic, its discriminant, every hit case, and what floating point does to the textbook form.',
+    examQuery: '',
+    parts: ['5'],
+    keyReadout: 't-hit',
+    misconceptions: {
+      title: 'Ray–sphere intersection (Q5)',
+      items: [
+        '“Δ ≥ 0 means a hit.” The roots may both be behind the origin.',
+        '“The smaller root is the hit.” Not when the origin is inside the sphere (t₀ < 0).',
+        '“d must be a unit vector.” The quadratic works for any d; a = d·d then is not 1.',
+        '“The textbook formula is exact.” b² − 4ac′ and −b ± √Δ cancel catastrophically far away and at grazing angles.',
+        '“t ≥ 0 is enough in a renderer.” A ray leaving a surface re-hits it at t ≈ 0 unless t_min > 0.',
+      ],
+    },
+  },
+  {
+    id: 'area-light',
+    path: '/area-light',
+    title: 'Solid angle and area lights',
+    questions: 'Q6',
+    blurb: 'dω = dA cos θ_l / r², the rendering equation over a light’s area, and three ways to sample it.',
+    examQuery: '',
+    parts: ['6a', '6b', '6c'],
+    keyReadout: 'reference',
+    misconceptions: {
+      title: 'Solid angle and area lights (Q6)',
+      items: [
+        '“A light’s contribution falls off as 1/r², full stop.” The cosines at the receiver and at the light matter as much.',
+        '“cos θ and cos θ_l are the same angle.” One is at the shading point, the other at the light.',
+        '“Uniform over the light’s area is uniform in solid angle.” The Jacobian cos θ_l / r² makes them differ.',
+        '“Cosine sampling is always best.” It rarely hits a small or distant light.',
+        '“A light facing away still lights the point.” Its back emits nothing: L_o = 0.',
+      ],
+    },
+  },
+] as const satisfies readonly SceneInfoSpec[];
+
+export const QUESTIONS: readonly QuestionInfo[] = [
+  {
+    n: 1,
+    title: 'Sampling a hemisphere PDF by inversion',
+    text: 'Normalize p(ω) = k cos θ e^φ, find its marginals and CDFs, and invert them to draw directions.',
+    scene: 'hemisphere',
+    query: 'lobe=exam',
+    practice: { id: 'q1', blurb: 'Normalize k cosᵐθ e^(aφ), its marginals, CDFs and inversion formulas.' },
+    lesson: {
+      presets: [
+        {
+          params: { lobe: 'exam', n: '2000' },
+          title: 'The exam’s density, 2,000 samples',
+          shows:
+            'p(ω) = k cos θ e^φ with its normalization k, the marginals, the CDFs and the inverted samples on the hemisphere.',
+          ask: 'Before you reveal the points: where will they bunch up? Which factor decides the direction in θ, which in φ?',
+        },
+        {
+          params: { lobe: 'exam', jacobian: 'inverted' },
+          title: 'The Jacobian written upside down',
+          shows:
+            'The key also grades p(θ, φ) = p(ω) / sin θ ∝ cot θ e^φ; the scene shows why it is not a density: its θ-integral diverges at θ → 0.',
+          ask: 'Integrate cot θ from 0 to π/2. Can a function whose integral is infinite be normalized? Where did the sin θ come from?',
+        },
+        {
+          params: { lobe: 'uniform', n: '2000' },
+          title: 'Uniform over solid angle is not uniform in θ',
+          shows:
+            'A uniform density per steradian, p(ω) = 1/(2π): the θ histogram follows sin θ, not a flat line.',
+          ask: 'Why are there so few samples near the pole? What is p(θ) when p(ω) is constant?',
+        },
+        {
+          params: { lobe: 'exam', points: 'stratified', n: '400' },
+          title: 'The same inversion, stratified inputs',
+          shows:
+            'Stratified (ξ₁, ξ₂) through the same inverse CDFs: the warped grid shows how the inversion stretches the unit square.',
+          ask: 'Where is the warped grid stretched, where squeezed? How does that relate to p?',
+        },
+        {
+          params: { lobe: 'exam', n: '100', seed: '7' },
+          title: 'Only 100 samples',
+          shows: 'The χ² test of the histograms against the marginals with few samples.',
+          ask: 'The histogram is ragged. Is the inversion wrong, or is this chance? What does the p-value tell you, and what does it not?',
+        },
+      ],
+    },
+  },
+  {
+    n: 2,
+    title: 'Monte Carlo estimators on the hemisphere',
+    text: 'Uniform and importance-sampled estimators of ∫ f dω, and why both are unbiased.',
+    scene: 'hemisphere',
+    query: 'lobe=exam&f=cos(theta)',
+    practice: {
+      id: 'q2',
+      blurb: 'Uniform and importance-sampled estimates from given directions; which has zero variance.',
+    },
+    lesson: {
+      presets: [
+        {
+          params: { lobe: 'uniform', f: 'cos(theta)' },
+          title: 'Uniform sampling (Q2a)',
+          shows: '⟨I⟩ = (2π/N) Σ f(Xᵢ) for f = cos θ, against the exact integral π.',
+          ask: 'Where does the factor 2π come from? What would go wrong if you forgot it?',
+        },
+        {
+          params: { lobe: 'cosine', f: 'cos(theta)' },
+          title: 'Importance sampling with p ∝ f (Q2b)',
+          shows: 'Cosine-weighted samples for f = cos θ: every term f/p is the same number.',
+          ask: 'What is f(X)/p(X) for each sample? What is the variance of this estimator, and why is this a special case?',
+        },
+        {
+          params: { lobe: 'exam', f: 'cos(theta)' },
+          title: 'The exam’s density as the sampling pdf',
+          shows:
+            'Importance sampling f = cos θ with p(ω) = k cos θ e^φ: unbiased, but f/p now varies with φ.',
+          ask: 'Is this estimator still unbiased? Which samples carry the largest weights f/p, and why?',
+        },
+        {
+          params: { lobe: 'phong', exponent: '20', f: 'cos(theta)' },
+          title: 'A lobe much narrower than f',
+          shows:
+            'A Phong lobe cos²⁰ θ sampling f = cos θ: f/p ∝ cos⁻¹⁹ θ grows without bound near the horizon.',
+          ask: 'Unbiasedness needs p > 0 wherever f ≠ 0, and it holds here. So why do the estimates jump? What is the variance?',
+        },
+        {
+          scene: 'monte-carlo',
+          params: { hn: '4' },
+          title: 'Unbiased, one estimate at a time (Q2c)',
+          shows:
+            'The histogram of many independent estimates, each from only 4 samples, with its mean against the exact integral.',
+          ask: 'Almost every single estimate is wrong. Where is the mean of the histogram? State E[⟨I⟩] = ∫ f with linearity of expectation and E[g(X)] = ∫ g p.',
+        },
+      ],
+    },
+  },
+  {
+    n: 3,
+    title: 'Texture lookup',
+    text: 'Nearest neighbour and bilinear lookup at (0.4, 0.24), and the spherical (u, v) mapping.',
+    scene: 'texture',
+    query: 'u=0.4&v=0.24',
+    practice: {
+      id: 'q3',
+      blurb: 'Nearest and bilinear lookup on a texel grid, and the spherical (u, v) of a point.',
+    },
+    lesson: {
+      presets: [
+        {
+          params: { u: '0.4', v: '0.24' },
+          title: 'The exam’s lookup (Q3a, Q3b)',
+          shows:
+            'The 5 × 5 grid, the query point, its nearest node and the bilinear steps with the cell-size division.',
+          ask: 'Which node is nearest? Which four nodes enter the bilinear lookup, and with which weights?',
+        },
+        {
+          params: { u: '0.4', v: '0.24', vflip: '1' },
+          title: 'v measured from the top',
+          shows: 'The key accepts v′ = 1 − v (image rows grow downward): different rows, a different answer.',
+          ask: 'Both conventions exist in real APIs. Which one does the exam’s figure use, and how would you tell from a picture?',
+        },
+        {
+          params: { u: '0.4', v: '0.24', align: 'center' },
+          title: 'Values at texel centres',
+          shows:
+            'The GPU convention: node (i, j) sits at ((i + ½)/N, (j + ½)/N), so the same (u, v) falls in another cell.',
+          ask: 'Why does a GPU put values at texel centres? Does the nearest value change here, and does the bilinear one?',
+        },
+        {
+          params: { u: '1.3', v: '0.24', wrap: 'repeat' },
+          title: 'Outside [0, 1]: repeat',
+          shows: 'u = 1.3 with repeat addressing; switch the addressing to clamp and mirror to compare.',
+          ask: 'Predict the value at u = 1.3 under clamp, repeat and mirror before switching. Where would each be used?',
+        },
+        {
+          params: { x: '1', y: '1', z: '1.4142135623730951', normalize: '0' },
+          title: 'The sphere point, not normalized (Q3c)',
+          shows:
+            'u = φ and v = θ in radians, used directly as texture coordinates: the lookup leaves [0, 1].',
+          ask: 'What do (2π, π) do to φ and θ? Which answer does the lookup give with and without them, and which is the texture’s?',
+        },
+      ],
+    },
+  },
+  {
+    n: 4,
+    title: 'Monte Carlo integration in 1D',
+    text: '∫₀² (x + 2)² dx by uniform against importance sampling with four given samples, and how each converges.',
+    scene: 'monte-carlo',
+    query: 'samples=1.16,1.98,0.54,1.26',
+    practice: {
+      id: 'q4',
+      blurb: 'The exact integral, the uniform and the importance-sampled estimate from given samples.',
+    },
+    lesson: {
+      presets: [
+        {
+          params: { samples: '1.16,1.98,0.54,1.26' },
+          title: 'The exam’s four samples (Q4b)',
+          shows: 'f(xᵢ), p(xᵢ) = 1/2 and each term f/p for the four given samples, against the exact 56/3.',
+          ask: 'Compute one term by hand. Why is the estimate not 56/3, and would a fifth sample bring it closer?',
+        },
+        {
+          params: { pdf: 'proportional' },
+          title: 'p proportional to f (Q4c)',
+          shows: 'p(x) = 3(x + 2)²/56: every term f/p equals the integral, so the variance is zero.',
+          ask: 'Why can’t a renderer sample in proportion to f itself? What did we need to know to write this p?',
+        },
+        {
+          params: { pdf: 'linear' },
+          title: 'A pdf that is close to f',
+          shows:
+            'The ramp through |f(a)| and |f(b)|: not proportional to f, yet far less variance than uniform.',
+          ask: 'Compare the spread of the estimates with the uniform ones. What makes a pdf good in practice?',
+        },
+        {
+          params: { strategy: 'stratified' },
+          title: 'Stratified samples and the convergence plot (Q4d)',
+          shows: 'The error against N for stratified uniform samples, with the 1/√N reference line.',
+          ask: 'How does the slope compare with independent samples? Is s/√N still an honest error bar here?',
+        },
+        {
+          params: { f: '1/sqrt(x)', a: '0', b: '1' },
+          title: 'A finite integral with infinite variance',
+          shows:
+            '∫₀¹ x^(−½) dx = 2 is finite, but f² is not integrable: uniform sampling is unbiased with infinite variance.',
+          ask: 'Is the estimator unbiased? Why does the running estimate jump even at large N? Which pdf would tame it?',
+        },
+      ],
+    },
+  },
+  {
+    n: 5,
+    title: 'Ray–sphere intersection',
+    text: 'The quadratic, its discriminant, which root is the hit, and floating-point robustness.',
+    scene: 'ray-sphere',
+    practice: { id: 'q5', blurb: 'The quadratic, its discriminant, the roots, the hit and the case.' },
+    lesson: {
+      presets: [
+        {
+          params: { o: '-3,0.3,0.2', d: '1,0,0', c: '0,0,0', r: '1' },
+          title: 'Two hits',
+          shows: 'Two roots t₀ < t₁, both ahead of the origin.',
+          ask: 'Which root is the visible hit? What does the other one mean physically?',
+        },
+        {
+          params: { o: '0.2,-0.3,0.1', d: '1,0.5,0', c: '0,0,0', r: '1' },
+          title: 'Origin inside, d not unit length',
+          shows:
+            'One root behind, one ahead: the hit is the exit point. d is not normalized, so a = d·d ≠ 1.',
+          ask: 'Why is the smaller root not the answer here? What changes in the formula when d is not a unit vector, and what stays the same?',
+        },
+        {
+          params: { o: '3,0.3,0.2', d: '1,0,0', c: '0,0,0', r: '1' },
+          title: 'Sphere behind the ray',
+          shows: 'Δ > 0, yet both roots are negative: no hit.',
+          ask: 'Is Δ ≥ 0 enough for a hit? Why does a renderer also use t_min > 0 (think of a ray leaving a surface)?',
+        },
+        {
+          params: { o: '-5,1,0', d: '1,0,0', c: '0,0,0', r: '1' },
+          title: 'Tangent',
+          shows: 'Δ = 0 exactly: one double root.',
+          ask: 'Hit or miss? What would a tiny rounding error in Δ do here?',
+        },
+        {
+          params: { o: '0,0,0', d: '1,5e-9,0', c: '100000000,0,0', r: '1', method: 'naive' },
+          title: 'The textbook form breaks far away',
+          shows:
+            'A small sphere 10⁸ radii away: the textbook b² − 4ac′ rounds to zero; switch to the stable method to compare.',
+          ask: 'Which subtraction loses all the digits? How do the stable forms (Ray Tracing Gems, ch. 7) avoid it?',
+        },
+      ],
+    },
+  },
+  {
+    n: 6,
+    title: 'Solid angle and area lights',
+    text: 'dω = dA cos θ_l / r², the rendering equation over a light’s area, and area-light sampling.',
+    scene: 'area-light',
+    practice: {
+      id: 'q6',
+      blurb: 'dω = dA cos θ_l / r² for a patch, and the area-sampling estimator from given points.',
+    },
+    lesson: {
+      presets: [
+        {
+          params: { lc: '0,0,2', ls: '1,1', tilt: '0' },
+          title: 'A light overhead (Q6a, Q6b)',
+          shows: 'dω = dA cos θ_l / r² on a patch of the light, and L_o against the exact reference.',
+          ask: 'Derive dω from similar triangles. Which factor shrinks a patch’s solid angle fastest as it moves to the light’s edge?',
+        },
+        {
+          params: { lc: '0,0,0.25', ls: '2,2', strategy: 'area' },
+          title: 'A big light close by, sampled by area (Q6c)',
+          shows:
+            'Uniform area sampling, p_A = 1/|A|: r² varies wildly over the light, so the estimate is noisy.',
+          ask: 'Which samples get the largest weights |A| cos θ cos θ_l / r²? Which strategy would you choose here?',
+        },
+        {
+          params: { lc: '0,0,10', ls: '1,1', strategy: 'cosine' },
+          title: 'A small far light, cosine sampling',
+          shows: 'Cosine-weighted directions almost never hit a small distant light.',
+          ask: 'Most samples return 0. Is the estimator biased? Why is it so noisy, and what would area sampling do?',
+        },
+        {
+          params: { lc: '0,1,1.5', ls: '1.5,1', tilt: '-45' },
+          title: 'A tilted light',
+          shows: 'cos θ_l varies over the light: it is not one number per light.',
+          ask: 'Where on the light is cos θ_l largest as seen from p? How does that change the contribution of each patch?',
+        },
+        {
+          params: { occluder: '1' },
+          title: 'An occluder: visibility',
+          shows: 'V(x, y) enters the integrand: part of the light is hidden from p.',
+          ask: 'Where is V in the estimator? Can the exact reference still be written in closed form?',
+        },
+      ],
+    },
+  },
+];
+
+/** A scene's id, which is also its folder under src/scenes/ and its route. */
+export type SceneId = (typeof SCENE_LIST)[number]['id'];
+
+export interface SceneInfo extends SceneInfoSpec {
+  id: SceneId;
+}
+
+export const SCENES: readonly SceneInfo[] = SCENE_LIST;
+
+export const SCENE_IDS: readonly SceneId[] = SCENES.map((s) => s.id);
+
+export function isSceneId(s: string): s is SceneId {
+  return (SCENE_IDS as readonly string[]).includes(s);
+}
+
+export function sceneById(id: SceneId): SceneInfo {
+  return SCENES.find((s) => s.id === id) as SceneInfo;
+}
+
+/** The scene at a hash path ('/texture'), if any. */
+export function findScene(path: string): SceneInfo | undefined {
+  return SCENES.find((s) => s.path === path);
+}
+
+export function questionInfo(n: number): QuestionInfo | undefined {
+  return QUESTIONS.find((q) => q.n === n);
+}
+
+/** Where an exam question starts: its scene and its first part there. */
+export function questionStart(q: number): { scene: SceneInfo; part: string } | null {
+  for (const scene of SCENES) {
+    const part = scene.parts.find((p) => p.startsWith(String(q)));
+    if (part) return { scene, part };
+  }
+  return null;
+}
+
+/** The scene a lesson preset opens. */
+export function presetScene(q: QuestionInfo, p: LessonPreset): SceneInfo {
+  return sceneById(p.scene ?? q.scene);
+}

@@ -1,0 +1,173 @@
+/**
+ * Q6(a): dω = dA cos θ_l / r² by similar triangles, each step with this patch's numbers, the
+ * cross-section figure with the patch's controls, and the live check of the formula against the
+ * exact solid angle of the patch as it shrinks.
+ */
+import { memo, useMemo } from 'react';
+import { Derivation, ExamPart, LiveAnswer, MathTex, Plot, Readout, type PlotTrace } from '../../../ui';
+import type { PatchModel } from '../patch';
+import type { AreaLightParams } from '../params';
+import { fmt } from '../view/format';
+import { PatchFigure } from '../view/PatchFigure';
+import { SliderList, type SliderSpec } from '../view/SliderList';
+
+type PatchValues = Pick<AreaLightParams, 'pu' | 'pv' | 'psize' | 'ptilt'>;
+
+/** Where the patch sits on the light, its side and its tilt. */
+const PATCH_SLIDERS: readonly SliderSpec<PatchValues>[] = [
+  {
+    label: 'Patch position u on the light',
+    min: 0,
+    max: 1,
+    step: 0.01,
+    get: (v) => v.pu,
+    patch: (pu) => ({ pu }),
+  },
+  {
+    label: 'Patch position v on the light',
+    min: 0,
+    max: 1,
+    step: 0.01,
+    get: (v) => v.pv,
+    patch: (pv) => ({ pv }),
+  },
+  { label: 'Patch side', min: 0.001, max: 2, log: true, get: (v) => v.psize, patch: (psize) => ({ psize }) },
+  {
+    label: 'Patch tilt θ_l (relative to the light)',
+    min: -89,
+    max: 89,
+    step: 1,
+    unit: '°',
+    get: (v) => v.ptilt,
+    patch: (ptilt) => ({ ptilt }),
+  },
+];
+
+export const Q6a = memo(function Q6a({
+  patch,
+  pu,
+  pv,
+  psize,
+  ptilt,
+  set,
+}: {
+  patch: PatchModel;
+  pu: number;
+  pv: number;
+  psize: number;
+  ptilt: number;
+  set: (patch: Partial<AreaLightParams>) => void;
+}) {
+  const patchTraces: PlotTrace[] = useMemo(
+    () => [
+      {
+        x: Array.from(patch.series.side),
+        y: Array.from(patch.series.relError),
+        type: 'scatter',
+        mode: 'lines',
+        name: '|dA cos θ_l / r² − Ω| / Ω',
+        line: { color: '#e4572e' },
+      },
+      {
+        x: [patch.side],
+        y: [Math.abs(patch.relError)],
+        type: 'scatter',
+        mode: 'markers',
+        name: 'this patch',
+        marker: { color: '#e4572e', size: 10 },
+      },
+    ],
+    [patch],
+  );
+  return (
+    <ExamPart
+      id="6a"
+      title="Solid angle of a small area element"
+      asks={
+        <>
+          A small area element dA of a light, at distance r from x, arbitrarily oriented (normal n_l at angle
+          θ_l to the direction back to x), subtends a solid angle dω. Show that{' '}
+          <MathTex tex={String.raw`d\omega = \dfrac{dA\cos\theta_l}{r^2}`} />.
+        </>
+      }
+    >
+      <Derivation testId="derivation-6a">
+        <ol className="al-steps">
+          <li>
+            Project dA onto the plane perpendicular to the ray: a perpendicular element{' '}
+            <MathTex tex={String.raw`dA^{\perp}`} /> with sides dl, so{' '}
+            <MathTex tex={String.raw`dA^{\perp} = dl\cdot dl = dA\cos\theta_l`} />
+            <span className="al-live" data-testid="step-6a-perp">
+              {' '}
+              (here dA = {fmt(patch.area)}, cos θ_l = {fmt(patch.cosThetaL)}, dA⊥ ={' '}
+              {fmt(patch.area * patch.cosThetaL)}, dl = {fmt(Math.sqrt(patch.area * patch.cosThetaL))})
+            </span>
+            .
+          </li>
+          <li>
+            The solid-angle element is the patch dA⊥ casts on the unit sphere, with sides dω_l:{' '}
+            <MathTex tex={String.raw`d\omega = d\omega_l\cdot d\omega_l`} />.
+          </li>
+          <li>
+            By similar triangles (shaded in the figure: legs 1 and dω_l/2 on the unit circle, legs r and dl/2
+            at the patch):{' '}
+            <MathTex
+              tex={String.raw`\frac{d\omega_l/2}{1} = \frac{dl/2}{r}\;\Rightarrow\; d\omega_l = \frac{dl}{r}`}
+            />
+            <span className="al-live" data-testid="step-6a-similar">
+              {' '}
+              (r = {fmt(patch.r)}: dω_l = {fmt(Math.sqrt(patch.area * patch.cosThetaL) / patch.r)})
+            </span>
+            .
+          </li>
+          <li>
+            Thus{' '}
+            <MathTex
+              tex={String.raw`d\omega = \frac{dl}{r}\cdot\frac{dl}{r} = \frac{dA^{\perp}}{r^2} = \frac{dA\cos\theta_l}{r^2}`}
+            />
+            <span className="al-live" data-testid="step-6a-result">
+              {' '}
+              = {fmt(patch.approx, 6)} sr for this patch
+            </span>
+            .
+          </li>
+        </ol>
+      </Derivation>
+      <div className="al-6a">
+        <div className="al-6a-figure">
+          <PatchFigure patch={patch} />
+          <div className="al-patch-controls">
+            <SliderList specs={PATCH_SLIDERS} values={{ pu, pv, psize, ptilt }} set={set} />
+          </div>
+        </div>
+        <LiveAnswer
+          title="Check, computed live: the formula against the exact solid angle of the patch"
+          testId="answer-6a"
+        >
+          <p className="al-note">
+            The formula is exact only in the limit of a small patch. The exact solid angle of the orange patch
+            (Van Oosterom–Strackee) and dA cos θ_l / r² agree better and better as the patch shrinks — the
+            relative difference falls like the square of its size (slope 2 below).
+          </p>
+          <div className="al-readouts">
+            <Readout id="patch-exact" label="exact Ω of the patch" value={patch.exact} digits={8} unit="sr" />
+            <Readout id="patch-approx" label="dA cos θ_l / r²" value={patch.approx} digits={8} unit="sr" />
+            <Readout id="patch-rel-error" label="relative difference" value={patch.relError} digits={3} />
+            <Readout id="patch-r" label="r" value={patch.r} digits={5} />
+            <Readout id="patch-cos" label="cos θ_l" value={patch.cosThetaL} digits={5} />
+          </div>
+          <Plot
+            ariaLabel="Relative difference between dA cos θ_l / r² and the exact solid angle of the patch, against the patch side, log-log: a line of slope 2."
+            data={patchTraces}
+            height={240}
+            layout={{
+              xaxis: { type: 'log', title: { text: 'patch side' } },
+              yaxis: { type: 'log', title: { text: 'relative difference' } },
+              showlegend: false,
+            }}
+          />
+        </LiveAnswer>
+      </div>
+    </ExamPart>
+  );
+});

@@ -1,0 +1,177 @@
+/**
+ * Q6(c): the pdf and the Monte Carlo estimator of uniform area sampling, worked through the first
+ * four samples of the seed, then the live answer (Answer6c).
+ */
+import { memo, useMemo, type ReactNode } from 'react';
+import type { LightStrategy } from '../../../core/lights';
+import { Derivation, ExamPart, LiveAnswer, MathTex, Readout } from '../../../ui';
+import { STRATEGY_LABEL } from '../strategies';
+import { estimateOne, givenSamples, type AreaLightModel, type StrategyEstimate } from '../model';
+import { fmt } from '../view/format';
+
+export const Q6c = memo(function Q6c({
+  model,
+  seed,
+  answer,
+}: {
+  model: AreaLightModel;
+  seed: number;
+  /** The live answer, rendered when the part's body mounts. */
+  answer: ReactNode;
+}) {
+  const given = useMemo(() => givenSamples(model, seed, 4), [model, seed]);
+  const fArea = given.f;
+  return (
+    <ExamPart
+      id="6c"
+      title="Monte Carlo estimator with uniform area sampling"
+      asks={
+        <>Sampling points uniformly on the light’s area, give the pdf and the Monte Carlo estimator of L_o.</>
+      }
+    >
+      <Derivation testId="derivation-6c">
+        <ol className="al-steps">
+          <li>
+            The pdf is uniform over the light’s area: <MathTex tex={String.raw`p_A = \frac{1}{|A|}`} />
+            <span className="al-live" data-testid="step-6c-pdf">
+              {' '}
+              (|A| = {fmt(given.area)}, p_A = {fmt(1 / given.area)})
+            </span>
+            .
+          </li>
+          <li>
+            The MC estimator divides each term of the area integral by p_A:
+            <MathTex
+              display
+              tex={String.raw`\langle L_o\rangle = \frac{1}{N}\sum_{i=1}^{N}\frac{f\,L_i\,V\cos\theta_i\,\cos\theta_{l,i}/r_i^2}{p_A} = \frac{|A|}{N}\sum_{i=1}^{N} f\,L_i\,V_i\cos\theta_i\,\frac{\cos\theta_{l,i}}{r_i^2}`}
+            />
+          </li>
+          <li>
+            With numbers — the first four samples of seed {seed} (f = ρ/π = {fmt(fArea)}, L = {fmt(model.L)}
+            ):
+            <div
+              className="al-table-wrap"
+              tabIndex={0}
+              role="group"
+              aria-label="The first four samples (the table scrolls sideways on narrow screens)"
+            >
+              <table className="al-table al-given" data-testid="given-samples">
+                <thead>
+                  <tr>
+                    <th scope="col">i</th>
+                    <th scope="col">(ξ₁, ξ₂)</th>
+                    <th scope="col">y_i on the light</th>
+                    <th scope="col">r_i</th>
+                    <th scope="col">cos θ_i</th>
+                    <th scope="col">cos θ_l,i</th>
+                    <th scope="col">V_i</th>
+                    <th scope="col">|A| f L V cos θ cos θ_l / r²</th>
+                  </tr>
+                </thead>
+                <tbody>
+                  {given.samples.map((g, i) => (
+                    <tr key={i} data-testid={`given-${i + 1}`}>
+                      <th scope="row">{i + 1}</th>
+                      <td>
+                        {fmt(g.u1, 3)}, {fmt(g.u2, 3)}
+                      </td>
+                      <td>
+                        ({fmt(g.x[0], 3)}, {fmt(g.x[1], 3)}, {fmt(g.x[2], 3)})
+                      </td>
+                      <td>{fmt(g.r)}</td>
+                      <td>{fmt(g.cosTheta)}</td>
+                      <td>{fmt(g.cosThetaL)}</td>
+                      <td>{g.V}</td>
+                      <td data-testid={`given-term-${i + 1}`} data-value={String(g.term)}>
+                        {fmt(g.term, 5)}
+                      </td>
+                    </tr>
+                  ))}
+                </tbody>
+              </table>
+            </div>
+            <MathTex
+              display
+              tex={String.raw`\langle L_o\rangle_{N=4} = \tfrac{1}{4}\big(${given.samples.map((g) => fmt(g.term, 5)).join(' + ')}\big) = ${fmt(given.estimate, 5)}`}
+            />
+            <Readout
+              id="given-estimate"
+              label="⟨L_o⟩ from these 4 samples"
+              value={given.estimate}
+              digits={7}
+            />
+          </li>
+        </ol>
+      </Derivation>
+      {answer}
+    </ExamPart>
+  );
+});
+
+/**
+ * Q6(c)'s live answer: the chosen strategy's estimate with n samples (on the main thread up to
+ * the scene's limit, else from the worker's list), its standard error and the verdict against the reference.
+ */
+export const Answer6c = memo(function Answer6c({
+  model,
+  strategy,
+  n,
+  seed,
+  big,
+  estimates,
+  pending,
+  target,
+}: {
+  model: AreaLightModel;
+  strategy: LightStrategy;
+  n: number;
+  seed: number;
+  big: boolean;
+  estimates: StrategyEstimate[] | null;
+  pending: boolean;
+  target: number;
+}) {
+  const chosenSync = useMemo(
+    () => (big ? null : estimateOne(model, strategy, n, seed)),
+    [big, model, strategy, n, seed],
+  );
+  const chosen: StrategyEstimate = chosenSync ??
+    estimates?.find((e) => e.strategy === strategy) ?? { strategy, estimate: NaN, stderr: NaN, n };
+  const zTarget =
+    Number.isFinite(target) && chosen.stderr > 0 ? (chosen.estimate - target) / chosen.stderr : null;
+  return (
+    <LiveAnswer testId="answer-6c">
+      <div className="al-readouts">
+        <Readout
+          id="estimate"
+          label={`estimate, ${STRATEGY_LABEL[strategy]}, n = ${n}`}
+          value={chosen.estimate}
+          digits={7}
+        />
+        <Readout id="stderr" label="standard error" value={chosen.stderr} digits={3} />
+        <Readout
+          id="reference-6c"
+          label={model.occluder ? 'reference (with occluder)' : 'reference (Lambert)'}
+          value={Number.isFinite(target) ? target : null}
+          digits={7}
+        />
+      </div>
+      <p className="al-verdict" data-testid="al-verdict">
+        {pending ? (
+          <>
+            <progress aria-label="Estimating" /> Estimating with n = {n} samples per strategy in the
+            background…
+          </>
+        ) : zTarget === null ? (
+          chosen.stderr === 0 && chosen.estimate === target ? (
+            'Every sample gave the same value: the estimate is exact here.'
+          ) : (
+            'No standard error yet (n < 2), or no analytic value to compare with.'
+          )
+        ) : (
+          `The estimate is ${fmt(Math.abs(zTarget), 2)} standard errors ${zTarget >= 0 ? 'above' : 'below'} the ${model.occluder ? 'occluded ' : ''}reference${Math.abs(zTarget) <= 3 ? ' — within 3σ, as an unbiased estimator should be (about 997 times in 1000).' : ' — outside 3σ (happens about 3 times in 1000 for a correct estimator; try another seed).'}`
+        )}
+      </p>
+    </LiveAnswer>
+  );
+});

@@ -1,0 +1,213 @@
+/**
+ * The "explore further" panels of #/area-light: the three strategies side by side at n samples,
+ * their convergence against N, and their run time against error (both computed in the worker).
+ */
+import { memo, useMemo, type RefObject } from 'react';
+import type { LightStrategy } from '../../../core/lights';
+import type { Failure } from '../../../core/failure';
+import { Notice, Panel, Plot, Readout, type PlotTrace } from '../../../ui';
+import type { StrategyEstimate, TimingPoint, convergence } from '../model';
+import { STRATEGIES, STRATEGY_LABEL, STRATEGY_SHORT } from '../strategies';
+import { fmt } from './format';
+
+const COLORS: Record<LightStrategy, string> = {
+  area: '#b34700',
+  'solid-angle': '#1f5fa8',
+  cosine: '#1d7a3a',
+};
+
+/** A log-log plot with axis titles x and y and its legend in a row above the plot. */
+function LogLogPlot({
+  ariaLabel,
+  data,
+  height,
+  x,
+  y,
+}: {
+  ariaLabel: string;
+  data: PlotTrace[];
+  height: number;
+  x: string;
+  y: string;
+}) {
+  const layout = {
+    xaxis: { type: 'log', title: { text: x } },
+    yaxis: { type: 'log', title: { text: y } },
+    legend: { orientation: 'h', x: 0, y: 1.02, yanchor: 'bottom' },
+    margin: { l: 56, r: 16, t: 40, b: 44 },
+  };
+  return <Plot ariaLabel={ariaLabel} data={data} height={height} layout={layout} />;
+}
+
+/** The three estimates at n samples each (null while they are computed), against the reference. */
+export const StrategyTable = memo(function StrategyTable({
+  estimates,
+  strategy,
+  n,
+  seed,
+  target,
+}: {
+  estimates: StrategyEstimate[] | null;
+  strategy: LightStrategy;
+  n: number;
+  seed: number;
+  target: number;
+}) {
+  return (
+    <Panel title="Three strategies for the same integral">
+      <p>
+        Solid-angle sampling draws ω uniformly over the light’s spherical rectangle (pdf 1/Ω), so each term is
+        Ω f L V cos θ; cosine sampling draws ω with pdf cos θ / π, so each term is ρ L V when the ray hits the
+        light and 0 when it misses. All three are unbiased; they differ in variance. All samples are
+        independent pseudo-random draws, so the standard error s/√N is a valid error estimate for each.
+      </p>
+      <table className="al-table">
+        <caption>
+          All three strategies, n = {n} each, seed {seed}
+        </caption>
+        <thead>
+          <tr>
+            <th scope="col">strategy</th>
+            <th scope="col">estimate</th>
+            <th scope="col">std. error σ</th>
+            <th scope="col">(est. − ref.)/σ</th>
+          </tr>
+        </thead>
+        <tbody>
+          {estimates === null ? (
+            <tr>
+              <td colSpan={4}>
+                <progress aria-label="Estimating the three strategies" /> Estimating…
+              </td>
+            </tr>
+          ) : null}
+          {(estimates ?? []).map((e) => (
+            <tr key={e.strategy} className={e.strategy === strategy ? 'al-current' : undefined}>
+              <th scope="row" title={STRATEGY_LABEL[e.strategy]}>
+                {STRATEGY_SHORT[e.strategy]}
+              </th>
+              <td>
+                <Readout id={`estimate-${e.strategy}`} label="" value={e.estimate} digits={5} />
+              </td>
+              <td>
+                <Readout id={`stderr-${e.strategy}`} label="" value={e.stderr} digits={2} />
+              </td>
+              <td>
+                {e.stderr > 0 && Number.isFinite(target) ? fmt((e.estimate - target) / e.stderr, 3) : '—'}
+              </td>
+            </tr>
+          ))}
+        </tbody>
+      </table>
+    </Panel>
+  );
+});
+
+/** Absolute and standard error of the three strategies against N (`seenRef` marks the panel for its job). */
+export const ConvergencePanel = memo(function ConvergencePanel({
+  conv,
+  seenRef,
+  present,
+}: {
+  conv: ReturnType<typeof convergence> | undefined;
+  seenRef: RefObject<HTMLDivElement | null>;
+  present: boolean;
+}) {
+  const traces: PlotTrace[] = useMemo(() => {
+    const out: PlotTrace[] = [];
+    for (const c of conv ?? []) {
+      out.push({
+        x: Array.from(c.n),
+        y: Array.from(c.absError),
+        type: 'scatter',
+        mode: 'lines',
+        name: STRATEGY_SHORT[c.strategy],
+        legendgroup: c.strategy,
+        line: { color: COLORS[c.strategy], width: 2 },
+      });
+      out.push({
+        x: Array.from(c.n),
+        y: Array.from(c.stderr),
+        type: 'scatter',
+        mode: 'lines',
+        name: `std. error, ${STRATEGY_SHORT[c.strategy]}`,
+        legendgroup: c.strategy,
+        showlegend: false,
+        line: { color: COLORS[c.strategy], dash: 'dot', width: 1.5 },
+      });
+    }
+    return out;
+  }, [conv]);
+  return (
+    <Panel title="Convergence">
+      <div ref={seenRef} />
+      <LogLogPlot
+        ariaLabel="Absolute error and standard error of the three estimators against the number of samples, log-log."
+        data={traces}
+        height={present ? 380 : 300}
+        x="N (samples)"
+        y="error"
+      />
+      <p className="al-note">
+        Solid: |estimate − reference|. Dotted: the standard error s/√N the estimator reports. Both fall like
+        N^−½; the strategies differ by a constant.
+      </p>
+    </Panel>
+  );
+});
+
+/** RMSE against run time per estimate (`seenRef` marks the panel for its job). */
+export const TimingPanel = memo(function TimingPanel({
+  result,
+  running,
+  progress,
+  error,
+  seenRef,
+  present,
+}: {
+  result: TimingPoint[] | undefined;
+  running: boolean;
+  progress: number;
+  error: Failure | null;
+  seenRef: RefObject<HTMLDivElement | null>;
+  present: boolean;
+}) {
+  const traces: PlotTrace[] = useMemo(() => {
+    const pts = result ?? [];
+    return STRATEGIES.map((s) => {
+      // Sorted by run time, so the path never doubles back in x (a busy machine can time a larger N faster).
+      const rows = pts
+        .filter((r) => r.strategy === s && r.rmse > 0 && r.seconds > 0)
+        .sort((a, b) => a.seconds - b.seconds);
+      return {
+        x: rows.map((r) => r.seconds * 1e3),
+        y: rows.map((r) => r.rmse),
+        text: rows.map((r) => `N = ${r.n}`),
+        type: 'scatter',
+        mode: 'lines+markers',
+        name: STRATEGY_SHORT[s],
+        line: { color: COLORS[s] },
+      };
+    });
+  }, [result]);
+  return (
+    <Panel title="Run time against error">
+      <div ref={seenRef} className="al-progress-slot">
+        {running ? <progress max={1} value={progress} aria-label="Timing progress" /> : null}
+      </div>
+      {error ? <Notice kind="warn">Timing failed: {error.message}</Notice> : null}
+      <LogLogPlot
+        ariaLabel="RMSE over independent runs against the run time of one estimate, for the three strategies, log-log."
+        data={traces}
+        height={present ? 360 : 280}
+        x="time per estimate (ms)"
+        y="RMSE"
+      />
+      <p className="al-note">
+        Each point: N = 16 … 4096 samples, RMSE over 24 independent runs, run time measured in a worker on
+        this machine (best of three; noisy when the machine is busy). Points are joined in order of run time,
+        so the line never doubles back. Lower-left wins.
+      </p>
+    </Panel>
+  );
+});

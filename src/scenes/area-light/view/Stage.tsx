@@ -1,0 +1,138 @@
+/**
+ * The animated stage of #/area-light: the 3D view with the samples of the chosen strategy that have
+ * arrived at the timeline's position, the transport, the running estimate and its readouts. The 3D
+ * samples and the running-estimate plot follow every frame by direct writes (no React render).
+ */
+import { useCallback, useMemo, useRef, type ComponentProps, type RefObject } from 'react';
+import { Readout, TEXT_HZ, TimelineTransport, useTimelineFrame, type Timeline } from '../../../ui';
+import type { LightStrategy } from '../../../core/lights';
+import { animationFrame, sampleRun, type SampleRun } from '../animation';
+import { STRATEGY_LABEL, STRATEGY_SHORT, type AreaLightModel } from '../model';
+import { RunningEstimate } from './RunningEstimate';
+import { Scene3D } from './Scene3D';
+
+/** The 3D view with the samples arrived at the timeline's live position (drawn per frame, no React render). */
+function LiveScene3D({
+  tl,
+  run,
+  ...rest
+}: { tl: Timeline; run: SampleRun } & Omit<ComponentProps<typeof Scene3D>, 'count' | 'countRef'>) {
+  const countRef = useRef<((k: number) => void) | null>(null);
+  const latest = useRef(run);
+  latest.current = run;
+  useTimelineFrame(tl, (t) => countRef.current?.(animationFrame(latest.current, t).k));
+  return <Scene3D {...rest} count={animationFrame(run, tl.now()).k} countRef={countRef} />;
+}
+
+/**
+ * The running-estimate plot at the timeline's live position (drawn per frame without a React
+ * render; its text label at most TEXT_HZ times a second).
+ */
+function LiveRunning({ tl, run, reference }: { tl: Timeline; run: SampleRun; reference: number }) {
+  const drawRef = useRef<((k: number, text: boolean) => void) | null>(null);
+  const latest = useRef(run);
+  latest.current = run;
+  const lastText = useRef(-Infinity);
+  useTimelineFrame(tl, (t, playing) => {
+    const now = performance.now();
+    const text = !playing || now - lastText.current >= 1000 / TEXT_HZ - 1;
+    if (text) lastText.current = now;
+    drawRef.current?.(animationFrame(latest.current, t).k, text);
+  });
+  return (
+    <RunningEstimate run={run} reference={reference} k={animationFrame(run, tl.now()).k} drawRef={drawRef} />
+  );
+}
+
+/**
+ * The animated stage: the 3D view with the samples arrived so far, the transport, the running
+ * estimate and its readouts. Its own component, so that its sample run is computed in a render of
+ * its own: React can yield between the scene's render and this one, which keeps a phone's first
+ * render from being one long task.
+ */
+export function Stage({
+  tl,
+  stageRef,
+  model,
+  strategy,
+  animMax,
+  seed,
+  patch,
+  vpHeight,
+  dark,
+  target,
+}: {
+  tl: Timeline;
+  stageRef: RefObject<HTMLDivElement | null>;
+  model: AreaLightModel;
+  strategy: LightStrategy;
+  animMax: number;
+  seed: number;
+  patch: ComponentProps<typeof Scene3D>['patch'];
+  vpHeight: number;
+  dark: boolean;
+  target: number;
+}) {
+  const run = useMemo(() => sampleRun(model, strategy, animMax, seed), [model, strategy, animMax, seed]);
+  const af = animationFrame(run, tl.t);
+  const fmtPos = useCallback((t: number) => `${Math.floor(t)} of ${animMax} samples`, [animMax]);
+  return (
+    <div className="al-stage-wrap">
+      <div className="al-stage" ref={stageRef}>
+        <div className="al-stage-3d">
+          <LiveScene3D
+            tl={tl}
+            run={run}
+            model={model}
+            strategy={strategy}
+            samples={run.points}
+            terms={run.terms}
+            patch={patch}
+            height={vpHeight}
+            dark={dark}
+          />
+        </div>
+        <div className="al-stage-side">
+          <TimelineTransport
+            timeline={tl}
+            label={`Samples arriving (${STRATEGY_SHORT[strategy]})`}
+            format={fmtPos}
+          />
+          <div className="al-readouts al-anim-readouts">
+            <Readout id="anim-k" label="samples arrived k" value={af.k} digits={7} />
+            <Readout
+              id="anim-estimate"
+              label={`running estimate, ${STRATEGY_SHORT[strategy]}`}
+              value={af.k > 0 ? af.estimate : null}
+              digits={7}
+            />
+            <Readout
+              id="anim-stderr"
+              label="its standard error"
+              value={af.k > 1 ? af.stderr : null}
+              digits={3}
+            />
+            <Readout
+              id="anim-term"
+              label="newest sample’s term"
+              value={af.k > 0 ? af.newestTerm : null}
+              digits={5}
+            />
+          </div>
+          <LiveRunning tl={tl} run={run} reference={target} />
+        </div>
+        <p className="al-legend">
+          Yellow: the emitting side of the light (its back is dark). Dots: the samples of the{' '}
+          {STRATEGY_LABEL[strategy]} strategy arrived so far
+          {strategy === 'cosine'
+            ? ', as directions on the unit hemisphere'
+            : ' on the light, and their directions on the unit hemisphere'}{' '}
+          — green where the sample contributes, red where it is wasted (below the horizon, blocked, or missing
+          the light); lines to the newest. Orange: the Q6(a) patch and its projection on the unit sphere. The
+          small plot (beside the view, or below it on narrow screens): the running estimate with ±2 standard
+          errors, converging on the reference (dashed).
+        </p>
+      </div>
+    </div>
+  );
+}

@@ -1,0 +1,164 @@
+/** The scene's control panels: the query and its path, the conventions, and the texture's values. */
+import { memo, useState } from 'react';
+import type { SceneProps } from '../../../kit/scene';
+import { EXAM_GRID_TEXT, parseGrid, type TextureGrid } from '../../../core/texture';
+import { NumberField, Panel, Select, Slider, Toggle } from '../../../ui';
+import { gridTextIfFits } from '../model';
+import { GRID_TEXT_MAX, type Preset, type TextureSchema } from '../params';
+
+type PresetChoice = 'exam' | 'custom' | Exclude<Preset, 'grid'>;
+
+const PRESET_OPTIONS: { value: PresetChoice; label: string }[] = [
+  { value: 'exam', label: 'The exam’s 5 × 5 grid' },
+  { value: 'checker', label: 'Checkerboard' },
+  { value: 'gradient', label: 'Gradient' },
+  { value: 'random', label: 'Random (seeded)' },
+];
+const CUSTOM_OPTION: { value: PresetChoice; label: string } = {
+  value: 'custom',
+  label: 'Custom (grid text)',
+};
+
+type Props = Pick<SceneProps<TextureSchema>, 'params' | 'setParams'> & {
+  grid: TextureGrid;
+  /** Whether the grid is the exam's. */
+  isExam: boolean;
+  /** Called before the texture's values change (the cell being edited no longer applies). */
+  onTexture: () => void;
+};
+
+export const Controls = memo(function Controls({ params, setParams, grid, isExam, onTexture }: Props) {
+  const presetChoice: PresetChoice = params.preset === 'grid' ? (isExam ? 'exam' : 'custom') : params.preset;
+  const presetOptions = presetChoice === 'custom' ? [...PRESET_OPTIONS, CUSTOM_OPTION] : PRESET_OPTIONS;
+  return (
+    <>
+      <Panel title="Query point and path" className="tx-panel-query">
+        {(['u', 'v'] as const).map((k) => (
+          <Slider
+            key={k}
+            label={`${k} (the query at t = 0)`}
+            value={params[k]}
+            min={-2}
+            max={3}
+            step={0.001}
+            onChange={(x) => setParams({ [k]: x })}
+            testId={`${k}-slider`}
+          />
+        ))}
+        <p className="tx-small">
+          Or click / drag on the grid; with the grid focused, arrow keys move the query (Shift: by 0.1).
+        </p>
+      </Panel>
+      <Panel title="Conventions" className="tx-panel-conventions">
+        <Select
+          label="Where the values sit"
+          value={params.align}
+          options={[
+            { value: 'corner', label: 'Corner nodes (exam)' },
+            { value: 'center', label: 'Texel centres (GPU)' },
+          ]}
+          onChange={(x) => setParams({ align: x })}
+          testId="align-select"
+        />
+        <Toggle
+          label="Flip v: v′ = 1 − v (the key accepts it)"
+          checked={params.vflip}
+          onChange={(x) => setParams({ vflip: x })}
+          testId="vflip-toggle"
+        />
+        <Select
+          label="Addressing outside [0, 1]"
+          value={params.wrap}
+          options={[
+            { value: 'clamp', label: 'Clamp to edge' },
+            { value: 'repeat', label: 'Repeat' },
+            { value: 'mirror', label: 'Mirrored repeat' },
+          ]}
+          onChange={(x) => setParams({ wrap: x })}
+          testId="wrap-select"
+        />
+      </Panel>
+      <Panel title="Texture" className="tx-panel-texture">
+        <Select
+          label="Values"
+          value={presetChoice}
+          options={presetOptions}
+          onChange={(x) => {
+            onTexture();
+            if (x === 'exam') setParams({ preset: 'grid', grid: EXAM_GRID_TEXT });
+            else if (x !== 'custom') setParams({ preset: x });
+          }}
+          testId="preset-select"
+        />
+        {params.preset !== 'grid' ? (
+          <>
+            <NumberField
+              label="Size N (N × N, 2 to 64)"
+              value={params.size}
+              min={2}
+              max={64}
+              step={1}
+              onChange={(x) => setParams({ size: Math.round(x) })}
+              testId="size-field"
+            />
+            {params.preset === 'random' ? (
+              <button type="button" onClick={() => setParams({ seed: (params.seed + 1) % 4294967296 })}>
+                New random values (seed {params.seed + 1})
+              </button>
+            ) : null}
+          </>
+        ) : null}
+        <GridText
+          key={params.grid + params.preset}
+          text={params.preset === 'grid' ? params.grid : (gridTextIfFits(grid) ?? '')}
+          onApply={(t) => setParams({ preset: 'grid', grid: t })}
+        />
+      </Panel>
+    </>
+  );
+});
+
+/** The grid as text (rows top to bottom); applies only text that parses, else says why. */
+function GridText({ text, onApply }: { text: string; onApply: (t: string) => void }) {
+  const [draft, setDraft] = useState(text);
+  const [error, setError] = useState<string | null>(null);
+  const apply = () => {
+    const t = draft.trim();
+    const r = parseGrid(t);
+    if (!r.ok) {
+      setError(r.message);
+      return;
+    }
+    if (t.length > GRID_TEXT_MAX) {
+      setError(`The text is longer than ${GRID_TEXT_MAX} characters, too long for a link.`);
+      return;
+    }
+    setError(null);
+    onApply(t);
+  };
+  return (
+    <div className="field">
+      <label className="field-label" htmlFor="tx-grid-text">
+        Grid as text (rows top to bottom, “;” between rows, “,” between values)
+      </label>
+      <textarea
+        id="tx-grid-text"
+        className="tx-grid-text"
+        data-testid="grid-text"
+        rows={4}
+        spellCheck={false}
+        value={draft}
+        aria-invalid={error ? true : undefined}
+        onChange={(e) => setDraft(e.target.value)}
+      />
+      <button type="button" onClick={apply} data-testid="grid-apply">
+        Use this grid
+      </button>
+      {error ? (
+        <span className="field-error" role="alert" data-testid="grid-text-error">
+          {error}
+        </span>
+      ) : null}
+    </div>
+  );
+}

@@ -1,0 +1,136 @@
+/** The smaller pieces of the scene's figure: the exam's grid, the legend, the path's and cells' fields. */
+import { memo } from 'react';
+import type { SceneProps } from '../../../kit/scene';
+import { examGrid, gridToRows, texel, type TextureGrid } from '../../../core/texture';
+import { Notice, NumberField, Toggle } from '../../../ui';
+import type { TextureSchema } from '../params';
+import { colorCss } from '../colormap';
+import { fmtShort } from './GridView';
+
+type Params = SceneProps<TextureSchema>['params'];
+type SetParams = SceneProps<TextureSchema>['setParams'];
+
+/** The exam's grid as the exam prints it (v = 1 on top). */
+export const ExamGridTable = memo(function ExamGridTable() {
+  const rows = gridToRows(examGrid());
+  const n = rows.length;
+  const top = rows[0] ?? [];
+  return (
+    <table
+      className="tx-exam-grid"
+      data-testid="exam-grid"
+      aria-label="The exam’s texture: rows from v = 1 (top) to v = 0, columns u = 0 to 1"
+    >
+      <tbody>
+        {rows.map((row, k) => (
+          <tr key={k}>
+            <th scope="row">{(n - 1 - k) / (n - 1)}</th>
+            {row.map((x, i) => (
+              <td key={i}>{x}</td>
+            ))}
+          </tr>
+        ))}
+        <tr>
+          <th scope="row">v↑ u→</th>
+          {top.map((_, i) => (
+            <th key={i} scope="col">
+              {i / (top.length - 1)}
+            </th>
+          ))}
+        </tr>
+      </tbody>
+    </table>
+  );
+});
+
+/** The colour scale from the grid's least to its greatest value. */
+export const Legend = memo(function Legend({ range }: { range: { min: number; max: number } }) {
+  const stops = Array.from({ length: 11 }, (_, k) => colorCss(k / 10)).join(', ');
+  return (
+    <div className="tx-legend" aria-hidden="true">
+      <span>{fmtShort(range.min)}</span>
+      <span className="tx-legend-bar" style={{ background: `linear-gradient(to right, ${stops})` }} />
+      <span>{fmtShort(range.max)}</span>
+    </div>
+  );
+});
+
+/** The path's shape, beside the transport. */
+export function PathKindSelect({ params, setParams }: { params: Params; setParams: SetParams }) {
+  return (
+    <label className="tx-path-kind">
+      <span>Path</span>
+      <select
+        value={params.path}
+        onChange={(e) => setParams({ path: e.target.value === 'circle' ? 'circle' : 'line' })}
+        data-testid="path-select"
+      >
+        <option value="line">line to (u₂, v₂)</option>
+        <option value="circle">circle through both</option>
+      </select>
+    </label>
+  );
+}
+
+/** The path's end (u₂, v₂). */
+export function PathEnd({ params, setParams }: { params: Params; setParams: SetParams }) {
+  return (
+    <div className="tx-path-end">
+      <span>Path end</span>
+      {(['u2', 'v2'] as const).map((k) => (
+        <NumberField
+          key={k}
+          label={k === 'u2' ? 'u₂' : 'v₂'}
+          value={params[k]}
+          min={-4}
+          max={4}
+          step={0.01}
+          onChange={(x) => setParams({ [k]: x })}
+          testId={`${k}-field`}
+        />
+      ))}
+    </div>
+  );
+}
+
+/** Editing one node's value: the switch, the chosen node's field, and why an edit was refused. */
+export function CellEditor({
+  grid,
+  editing,
+  onEditing,
+  selected,
+  onCell,
+  error,
+}: {
+  grid: TextureGrid;
+  editing: boolean;
+  onEditing: (on: boolean) => void;
+  selected: { i: number; j: number } | null;
+  onCell: (x: number) => void;
+  error: string | null;
+}) {
+  return (
+    <div className="tx-edit">
+      <Toggle
+        label="Edit cells (click a node, or arrow keys on the grid, then Enter)"
+        checked={editing}
+        onChange={onEditing}
+        testId="edit-toggle"
+      />
+      {editing && selected && selected.i < grid.width && selected.j < grid.height ? (
+        <NumberField
+          label={`Value at column ${selected.i}, row ${selected.j} (from the bottom)`}
+          value={texel(grid, selected.i, selected.j)}
+          onChange={onCell}
+          step={1}
+          testId="cell-field"
+        />
+      ) : editing ? (
+        <p className="tx-small">
+          Click a node, or focus the grid and use the arrow keys, to choose the value to edit.
+        </p>
+      ) : null}
+      {error ? <Notice kind="warn">{error}</Notice> : null}
+    </div>
+  );
+}

@@ -1,0 +1,117 @@
+/**
+ * Axes of the hand-written SVG plots: round tick positions, their labels, and the Unicode
+ * superscripts those labels (and other plain-text numbers, "1.5×10⁻⁵") are written with. Pure, no DOM.
+ */
+
+/** Unicode superscript of each character that has one (no prototype: any key is a plain lookup). */
+export const SUPERSCRIPT: Readonly<Record<string, string>> = Object.assign(
+  Object.create(null) as Record<string, string>,
+  {
+    '0': '⁰',
+    '1': '¹',
+    '2': '²',
+    '3': '³',
+    '4': '⁴',
+    '5': '⁵',
+    '6': '⁶',
+    '7': '⁷',
+    '8': '⁸',
+    '9': '⁹',
+    '+': '⁺',
+    '-': '⁻',
+    '−': '⁻',
+    '=': '⁼',
+    '(': '⁽',
+    ')': '⁾',
+    n: 'ⁿ',
+    i: 'ⁱ',
+    T: 'ᵀ',
+  },
+);
+
+/** The plain character of each superscript digit and sign ("⁻" reads back as "-"). */
+const PLAIN: Readonly<Record<string, string>> = Object.assign(Object.create(null) as Record<string, string>, {
+  '⁰': '0',
+  '¹': '1',
+  '²': '2',
+  '³': '3',
+  '⁴': '4',
+  '⁵': '5',
+  '⁶': '6',
+  '⁷': '7',
+  '⁸': '8',
+  '⁹': '9',
+  '⁺': '+',
+  '⁻': '-',
+});
+
+/** `text` with each character that has a superscript raised; others are kept. */
+export function superscript(text: string): string {
+  let out = '';
+  for (const ch of text) out += SUPERSCRIPT[ch] ?? ch;
+  return out;
+}
+
+/** Superscript digits and signs back to plain ones ("⁻¹²" → "-12"); others are kept. */
+export function unsuperscript(text: string): string {
+  let out = '';
+  for (const ch of text) out += PLAIN[ch] ?? ch;
+  return out;
+}
+
+/** "10ⁿ" for an integer exponent n (e.g. pow10Text(-3) = "10⁻³"). */
+export function pow10Text(e: number): string {
+  return `10${superscript(String(e))}`;
+}
+
+/**
+ * How a tick step is chosen from the raw step (range / count) scaled to [1, 10):
+ * 'round': the nearest of 1, 2, 5, 10 (so about `count` ticks, more or fewer);
+ * 'atLeast': the smallest of 1, 2, 2.5, 5, 10 not below it (at most about `count` ticks).
+ */
+export type TickLadder = 'round' | 'atLeast';
+
+/** The tick step for [lo, hi] with about `count` intervals. */
+export function niceStep(lo: number, hi: number, count: number, ladder: TickLadder = 'round'): number {
+  const raw = (hi - lo) / Math.max(1, count);
+  const p = 10 ** Math.floor(Math.log10(raw));
+  const m = raw / p;
+  if (ladder === 'atLeast') return [1, 2, 2.5, 5, 10].map((k) => k * p).find((s) => s >= raw) ?? raw;
+  return (m < 1.5 ? 1 : m < 3 ? 2 : m < 7 ? 5 : 10) * p;
+}
+
+/**
+ * Round ticks covering [lo, hi]: every multiple of the step (niceStep) inside it, rounded to 12
+ * significant digits (no 0.30000000000000004). An empty or non-finite range: [lo] with step 1.
+ */
+export function niceTicks(
+  lo: number,
+  hi: number,
+  count = 5,
+  ladder: TickLadder = 'round',
+): { ticks: number[]; step: number } {
+  if (!(hi > lo) || !Number.isFinite(hi - lo)) return { ticks: [lo], step: 1 };
+  const step = niceStep(lo, hi, count, ladder);
+  const ticks: number[] = [];
+  for (let k = Math.ceil(lo / step); k * step <= hi + step * 1e-9; k++)
+    ticks.push(Number((k * step).toPrecision(12)));
+  return { ticks, step };
+}
+
+/**
+ * A tick label: plain decimals (as many as the step needs) for ordinary sizes, m×10ⁿ (never SI
+ * prefixes) for |v| ≥ 1e5 or steps below 1e-3; a real minus sign.
+ */
+export function tickLabel(v: number, step: number): string {
+  if (v === 0 || Math.abs(v) < step * 1e-9) return '0';
+  const av = Math.abs(v);
+  if (av >= 1e5 || step < 1e-3) {
+    const e = Math.floor(Math.log10(av));
+    const m = v / 10 ** e;
+    const ms = Number(m.toPrecision(3)).toString();
+    const ex = superscript(String(e));
+    return ms === '1' ? `10${ex}` : ms === '-1' ? `−10${ex}` : `${ms.replace('-', '−')}×10${ex}`;
+  }
+  const digits = Math.max(0, Math.min(6, -Math.floor(Math.log10(step) + 1e-9)));
+  return v.toFixed(digits).replace('-', '−');
+}
