@@ -28,8 +28,10 @@ const out = arg('out', 'dist-lms');
 const variants = Number(arg('variants', '5'));
 const seed = Number(arg('seed', '1'));
 const mastery = Number(arg('mastery', '0.8'));
-if (!Number.isInteger(variants) || variants < 1 || variants > 200) fail('--variants must be a whole number from 1 to 200');
-if (!Number.isInteger(seed) || seed < 0 || seed > 0xffffffff) fail(`--seed must be a whole number from 0 to ${0xffffffff}`);
+if (!Number.isInteger(variants) || variants < 1 || variants > 200)
+  fail('--variants must be a whole number from 1 to 200');
+if (!Number.isInteger(seed) || seed < 0 || seed > 0xffffffff)
+  fail(`--seed must be a whole number from 0 to ${0xffffffff}`);
 if (!(mastery > 0 && mastery <= 1)) fail('--mastery must be a number in (0, 1]');
 if (!existsSync(join(appDir, 'index.html')))
   fail(`no ${appDir}/index.html: run "npm run build:single" (or "npm run build" with --app dist) first`);
@@ -67,7 +69,9 @@ try {
     writeFileSync(join(out, name), bytes);
     console.log(`${join(out, name).padEnd(34)} ${(bytes.length / 1e6).toFixed(2)} MB`);
   }
-  console.log(`questions ${questions.join(',')}, ${variants} variant(s) each, seed ${seed}, mastery ${mastery}`);
+  console.log(
+    `questions ${questions.join(',')}, ${variants} variant(s) each, seed ${seed}, mastery ${mastery}`,
+  );
 } finally {
   await vite.close();
 }

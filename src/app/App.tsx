@@ -13,7 +13,14 @@ import { importOrReload } from './staleBuild';
 // Practice mode is its own lazy chunk (src/practice): nothing of it loads on the other routes.
 // A failed load (offline, stale deploy) shows a message instead of throwing.
 const PracticeRoute = lazy(() =>
-  importOrReload(() => import('../practice/PracticeRoute')).catch(() => ({
+  // with the parts other features show on the practice pages (results download, LMS packages)
+  importOrReload(() =>
+    Promise.all([
+      import('../practice/PracticeRoute'),
+      import('../results/slots'),
+      import('../lms/slots'),
+    ]).then(([m]) => m),
+  ).catch(() => ({
     default: () => (
       <main id="main" className="page" tabIndex={-1}>
         <p role="alert" className="notice notice-error">
@@ -46,7 +53,7 @@ export function App() {
   }, [flags.present, flags.embed]);
 
   let body;
-  if (route.path === '/') body = <Home flags={flags} />;
+  if (route.path === '/') body = <Home flags={flags} query={route.query} />;
   else if (route.path === '/practice' || route.path.startsWith('/practice/'))
     body = (
       <Suspense
@@ -73,7 +80,7 @@ export function App() {
           </main>
         }
       >
-        <Guide flags={flags} />
+        <Guide flags={flags} query={route.query} />
       </Suspense>
     );
   else if (route.path === '/results')

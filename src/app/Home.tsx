@@ -2,6 +2,7 @@ import { useEffect } from 'react';
 import { QUESTIONS, sceneById } from '../kit/catalogue';
 import { sceneLoader } from '../scenes/registry';
 import type { ShellFlags } from '../kit/shell';
+import { RouteNotice } from '../ui/RouteNotice';
 
 function withFlags(query: string, flags: ShellFlags): string {
   const parts = query ? [query] : [];
@@ -11,12 +12,13 @@ function withFlags(query: string, flags: ShellFlags): string {
 }
 
 /** The home page: the six exam questions, each linked to the scene that teaches it. */
-export function Home({ flags }: { flags: ShellFlags }) {
+export function Home({ flags, query = '' }: { flags: ShellFlags; query?: string }) {
   useEffect(() => {
     document.title = 'Render Math Lab';
   }, []);
   return (
     <main id="main" className="page home" tabIndex={-1}>
+      <RouteNotice flags={flags} query={query} />
       <h1>The mathematics of rendering, one question at a time</h1>
       <p className="lead">
         Six questions from a Computer Graphics final exam, each turned into a scene you can push on: change a

@@ -12,7 +12,7 @@ import { markBuildReplaced } from './staleBuild';
 import { showUpdateNotice } from './updateNotice';
 
 // The opened scene's chunk is requested now, while React mounts the shell, not once the shell has
-// rendered (index.html has already started downloading it: scripts/routePreload.ts; issue 15). The
+// rendered (index.html has already started downloading it: scripts/routePreload.ts). The
 // scene host's own import gets the same module; it also reports a failure.
 const opened = findScene(parseHash(window.location.hash).path);
 if (opened) void sceneLoader(opened.id)?.().catch(() => undefined);
@@ -31,7 +31,7 @@ else if (root) render(root);
 function render(root: HTMLElement) {
   const r = createRoot(root);
   // A transition: React renders the shell's first tree in slices that yield to the browser, not in
-  // one task (on a phone, code that has never run yet is slow; issue 15).
+  // one task (on a phone, code that has never run yet is slow).
   startTransition(() =>
     r.render(
       <StrictMode>
@@ -63,7 +63,7 @@ window.addEventListener('hashchange', maybeFuzz);
 // single-file build, not from file://) once the page has loaded, the opened scene's first screen
 // has been painted (10 s at most), and the page has then been idle for 2 s: its install precaches
 // the whole build, about a second of CPU on a worker thread that competed with a scene's load on a
-// phone, and registering at 'load' put its chunks before a scene's first paint (../ui/whenQuiet; issue 15).
+// phone, and registering at 'load' put its chunks before a scene's first paint (../ui/whenQuiet).
 if (
   import.meta.env.PROD &&
   import.meta.env.MODE !== 'single' &&

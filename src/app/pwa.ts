@@ -53,7 +53,9 @@ export function activateAndReload(reg: ServiceWorkerRegistration): void {
 }
 
 /** A new build's worker is installed and waiting (this page runs an older build): say so. */
-function watch(reg: ServiceWorkerRegistration): void {
+function watch(reg: ServiceWorkerRegistration | undefined): void {
+  // (an automated browser that blocks service workers resolves the registration with nothing)
+  if (!reg) return;
   const offer = () => {
     // no controller: this is the first install, which takes over by itself (nothing to reload)
     if (reg.waiting && navigator.serviceWorker.controller) showUpdateNotice(() => activateAndReload(reg));

@@ -1,6 +1,7 @@
 import { useEffect } from 'react';
 import type { ShellFlags } from '../kit/shell';
 import { LESSONS, MISCONCEPTIONS, presetHref } from './lessons';
+import { RouteNotice } from '../ui/RouteNotice';
 import './guide.css';
 
 /** Scroll to a section (the hash holds the route, so in-page anchors are buttons). */
@@ -12,7 +13,7 @@ function jump(id: string) {
 }
 
 /** `#/guide`: lesson plans per exam question, misconceptions per scene, embedding, printing, offline. */
-export default function Guide({ flags }: { flags: ShellFlags }) {
+export default function Guide({ flags, query = '' }: { flags: ShellFlags; query?: string }) {
   useEffect(() => {
     document.title = 'Teacher’s guide — Render Math Lab';
   }, []);
@@ -25,6 +26,7 @@ export default function Guide({ flags }: { flags: ShellFlags }) {
           ← All scenes
         </a>
       </div>
+      <RouteNotice flags={flags} query={query} />
       <p className="guide-lead">
         For each exam question, a lesson plan: three to five links that open a scene in a telling
         configuration, with a question to put to the class at each step (ask first, then reveal). Every number

@@ -135,6 +135,18 @@ function parseOne(spec: ParamSpec, raw: string): Parsed {
     case 'number': {
       const x = parseNumber(raw);
       if (x === null) return fail('invalid', `${short(raw)} is not a finite number`);
+      // a non-zero number too small for a double (1e-400) reads as 0: say so, not silently
+      if (
+        x === 0 &&
+        /[1-9]/.test(raw.replace(/e.*$/i, '')) &&
+        (spec.min ?? -Infinity) <= 0 &&
+        (spec.max ?? Infinity) >= 0
+      )
+        return {
+          ok: true,
+          value: 0,
+          problem: `${short(raw)} is smaller than the smallest double (it rounds to 0); using 0`,
+        };
       let v = spec.integer ? Math.round(x) : x;
       const c = clamp(v, spec.min, spec.max);
       if (c !== v)

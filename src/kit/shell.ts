@@ -77,6 +77,11 @@ export function parseShellFlags(query: string): ShellFlags {
         message: `${JSON.stringify(part.slice(0, 24))} is not an exam part like 1c; showing the top of the page`,
       });
   }
+  // a shell parameter given twice: the first is used, and the notice says so
+  for (const name of ['embed', 'present', 'theme', 'part', 'origin']) {
+    const n = sp.getAll(name).length;
+    if (n > 1) flags.problems.push({ name, message: `is given ${n} times; using the first` });
+  }
   const o = parseOrigins(sp.get('origin'));
   flags.origins = o.origins;
   if (o.problem) flags.problems.push({ name: 'origin', message: o.problem });
@@ -146,4 +151,34 @@ export function shellExtras(
     // an empty list stays `origin=` (nobody), so a rewritten link never drops the restriction
     origin: flags.origins ? flags.origins.join(',') : undefined,
   };
+}
+
+/**
+ * What a page without a parameter schema (home, guide, practice) could not use in its query: names
+ * it does not take (beyond the shell's), and names given more than once (the first is used).
+ */
+export function queryProblems(query: string, known: readonly string[]): { name: string; message: string }[] {
+  let sp: URLSearchParams;
+  try {
+    sp = new URLSearchParams(query);
+  } catch {
+    return [{ name: '(query)', message: 'could not be read' }];
+  }
+  const shell = ['embed', 'present', 'theme', 'part', 'origin', 'fuzz', 'fuzzn', 'fuzzseed'];
+  const out: { name: string; message: string }[] = [];
+  const seen = new Set<string>();
+  let unknown = 0;
+  for (const name of sp.keys()) {
+    if (seen.has(name)) continue;
+    seen.add(name);
+    const shown = clip(name, 24);
+    if (shell.includes(name)) continue;
+    if (!known.includes(name)) {
+      if (++unknown <= 5) out.push({ name: shown, message: 'is not a parameter of this page; ignored' });
+      continue;
+    }
+    const n = sp.getAll(name).length;
+    if (n > 1) out.push({ name: shown, message: `is given ${n} times; using the first` });
+  }
+  return out;
 }

@@ -6,7 +6,7 @@
 import { useState } from 'react';
 import type { QuestionId } from '../practice/model';
 import type { PackageOutputs } from './packages';
-import { APP_VERSION } from '../results/version';
+import { APP_VERSION } from './version';
 
 const FILES: { name: keyof PackageOutputs; label: string; type: string }[] = [
   { name: 'practice-scorm12.zip', label: 'SCORM 1.2 package', type: 'application/zip' },

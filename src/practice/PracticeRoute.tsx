@@ -11,7 +11,7 @@
  */
 import { useCallback, useEffect, useMemo, useState, type FormEvent } from 'react';
 import { MathTex } from '../ui/MathTex';
-import { shellExtras, type ShellFlags } from '../kit/shell';
+import { queryProblems, shellExtras, type ShellFlags } from '../kit/shell';
 import { expectedText, FORMULA_POLICY, NUMERIC_POLICY } from './check';
 import {
   allAnswers,
@@ -38,12 +38,12 @@ import {
   type Session,
 } from './session';
 import { loadScores, recordScore, resetScores, type Scores } from './scores';
-import { QUESTIONS, isQuestionId, questionInfo, sheetSeed } from './questions';
+import { QUESTIONS, isQuestionId, questionInfo } from './questions';
 import { loadProgress, recordCheck, resetProgress, type Progress } from './progress';
-import { extensionCheck, extensionInput, extensionRestore, extensionSeed } from './extensions';
-import { DownloadResults } from '../results/DownloadResults';
-import { LmsDownloads } from '../lms/LmsDownloads';
+import { extensionCheck, extensionInput, extensionRestore, extensionSeed, practiceSlot } from './extensions';
 import { loadDraft, saveDraft } from './drafts';
+import { RouteNotice } from '../ui/RouteNotice';
+import Sheet from './Sheet';
 import './practice.css';
 
 interface Props {
@@ -82,7 +82,7 @@ function parseSeed(raw: string | null): { seed: number | null; problem: string |
 export default function PracticeRoute({ path, query, flags }: Props) {
   const sp = useMemo(() => new URLSearchParams(query), [query]);
   const sub = path.slice('/practice'.length).replace(/^\//, '');
-  if (sub === '') return <PracticeHome flags={flags} />;
+  if (sub === '') return <PracticeHome flags={flags} query={query} />;
   if (sub === 'sheet') return <Sheet sp={sp} flags={flags} />;
   if (isQuestionId(sub)) return <QuestionRoute key={sub} q={sub} sp={sp} flags={flags} />;
   return (
@@ -99,7 +99,7 @@ export default function PracticeRoute({ path, query, flags }: Props) {
 // ---------------------------------------------------------------------------------------------
 // #/practice
 
-function PracticeHome({ flags }: { flags: ShellFlags }) {
+function PracticeHome({ flags, query }: { flags: ShellFlags; query: string }) {
   const [progress, setProgress] = useState<Progress>(() => loadProgress());
   const [scores, setScores] = useState<Scores>(() => loadScores());
   const [status, setStatus] = useState('');
@@ -107,13 +107,14 @@ function PracticeHome({ flags }: { flags: ShellFlags }) {
     () => Object.fromEntries(QUESTION_IDS.map((q) => [q, true])) as Record<QuestionId, boolean>,
   );
   const [count, setCount] = useState(1);
+  const [withSolutions, setWithSolutions] = useState(false);
   const [sheetSeedText, setSheetSeedText] = useState('1');
   useEffect(() => {
     document.title = 'Practice — Render Math Lab';
   }, []);
   const chosen = QUESTION_IDS.filter((q) => sheetQs[q]).map((q) => q.slice(1));
   const seedOk = /^\d{1,10}$/.test(sheetSeedText.trim()) && Number(sheetSeedText) <= MAX_SEED;
-  const sheetHref = `#/practice/sheet?seed=${seedOk ? Number(sheetSeedText) : 1}&q=${chosen.join(',') || '1'}&count=${count}${extras(flags)}`;
+  const sheetHref = `#/practice/sheet?seed=${seedOk ? Number(sheetSeedText) : 1}&q=${chosen.join(',') || '1'}&count=${count}${withSolutions ? '&solutions=1' : ''}${extras(flags)}`;
   return (
     <main id="main" className="page practice practice-home" tabIndex={-1}>
       <div className="scene-header">
@@ -122,6 +123,7 @@ function PracticeHome({ flags }: { flags: ShellFlags }) {
           ← All scenes
         </a>
       </div>
+      <RouteNotice flags={flags} query={query} />
       <p className="lead">
         Each question draws fresh numbers from a seed, checks your answers the way the key grades them, names
         the classic mistakes, and then shows the worked solution of your variant. The same seed always gives
@@ -170,7 +172,7 @@ function PracticeHome({ flags }: { flags: ShellFlags }) {
         <span role="status">{status}</span>{' '}
         <span className="muted">Progress is kept in this browser only.</span>
       </p>
-      <DownloadResults />
+      <Slot name="home-footer" />
       <section className="panel sheet-builder" aria-labelledby="sheet-title">
         <h2 id="sheet-title">Worksheet for a class (printable)</h2>
         <fieldset>
@@ -206,6 +208,14 @@ function PracticeHome({ flags }: { flags: ShellFlags }) {
             aria-invalid={!seedOk}
             size={10}
           />
+        </label>{' '}
+        <label className="check-label">
+          <input
+            type="checkbox"
+            checked={withSolutions}
+            onChange={(e) => setWithSolutions(e.target.checked)}
+          />{' '}
+          with worked solutions
         </label>{' '}
         <a href={sheetHref}>Open the worksheet</a>
         {!seedOk ? (
@@ -247,6 +257,7 @@ function QuestionRoute({ q, sp, flags }: { q: QuestionId; sp: URLSearchParams; f
   const seed = extensionSeed(q) ?? parsed.seed ?? fallback;
   const problems = [
     ...flags.problems.map((p) => `${p.name} ${p.message}`),
+    ...queryProblems(sp.toString(), ['seed']).map((p) => `${p.name} ${p.message}`),
     ...(parsed.problem ? [parsed.problem] : []),
   ];
   // a link without a (valid) seed gets one, so the page's URL names its variant
@@ -435,6 +446,7 @@ function QuestionPage({
             onInput={(name, t) => setInputs((s) => ({ ...s, [name]: t }))}
             onHint={() => setSession((s) => showHint(s, part.id))}
             onReveal={() => setSession((s) => revealPart(s, part.id))}
+            stepsBelow={allShown}
           />
         ))}
         <div className="practice-actions">
@@ -466,7 +478,7 @@ function QuestionPage({
           <span className="muted">(parts not yet right then earn no more marks)</span>
         </p>
       </form>
-      <DownloadResults />
+      <Slot name="question-footer" />
       {allShown ? (
         <section className="panel practice-solution" aria-labelledby="solution-title" data-testid="solution">
           <h2 id="solution-title">Worked solution of variant {variant.seed}</h2>
@@ -538,6 +550,7 @@ function PartBlock({
   onInput,
   onHint,
   onReveal,
+  stepsBelow,
 }: {
   part: Part;
   progress: PartProgress;
@@ -546,6 +559,8 @@ function PartBlock({
   onInput: (name: string, text: string) => void;
   onHint: () => void;
   onReveal: () => void;
+  /** The whole worked solution is shown below the form: the part's step is not repeated here. */
+  stepsBelow: boolean;
 }) {
   const done = part.answers.every((a) => answers[a.name].verdict?.value === 'correct');
   const open = progress.revealed !== null || done;
@@ -596,7 +611,7 @@ function PartBlock({
           <strong>Hint:</strong> <SolutionSteps steps={part.hint} />
         </div>
       ) : null}
-      {open ? (
+      {open && !stepsBelow ? (
         <div className="part-solution" data-testid={`part-solution-${part.id}`}>
           <h3 className="part-solution-title">Worked step</h3>
           <SolutionSteps steps={part.steps} />
@@ -616,7 +631,7 @@ function verdictTag(value: string): string {
   if (value === 'correct') return '✓ correct';
   if (value === 'consistent') return '≈ follow-through';
   if (value.startsWith('mistake:')) return `✗ ${value}`;
-  if (value === 'invalid') return '? not readable';
+  if (value === 'invalid') return '? not graded';
   return '✗ incorrect';
 }
 
@@ -757,112 +772,8 @@ function GridTable({ text, testId }: { text: string; testId?: string }) {
   );
 }
 
-// ---------------------------------------------------------------------------------------------
-// #/practice/sheet
-
-function Sheet({ sp, flags }: { sp: URLSearchParams; flags: ShellFlags }) {
-  const problems: string[] = flags.problems.map((p) => `${p.name} ${p.message}`);
-  const ps = parseSeed(sp.get('seed'));
-  let seed = 1;
-  if (ps.seed !== null) seed = ps.seed;
-  else if (ps.problem) problems.push(ps.problem.replace('a new variant was drawn instead', 'using 1'));
-  let qs: QuestionId[] = [...QUESTION_IDS];
-  const qRaw = sp.get('q');
-  if (qRaw !== null) {
-    const parts = qRaw.split(',').map((s) => `q${s.trim().replace(/^q/i, '')}`);
-    const ok = parts.filter(isQuestionId);
-    if (ok.length !== parts.length || ok.length === 0)
-      problems.push(
-        `q ${JSON.stringify(qRaw.slice(0, 24))} should list question numbers 1–6 (e.g. 1,3,5); ${ok.length ? 'unknown ones were left out' : 'using all six'}.`,
-      );
-    if (ok.length) qs = [...new Set(ok)];
-  }
-  let count = 1;
-  const cRaw = sp.get('count');
-  if (cRaw !== null) {
-    if (/^\d{1,3}$/.test(cRaw.trim()) && Number(cRaw) >= 1) {
-      count = Math.min(10, Number(cRaw));
-      if (Number(cRaw) > 10) problems.push(`count ${cRaw} is more than 10; using 10.`);
-    } else
-      problems.push(
-        `count ${JSON.stringify(cRaw.slice(0, 24))} is not a whole number from 1 to 10; using 1.`,
-      );
-  }
-  const variants = qs.flatMap((q) =>
-    Array.from({ length: count }, (_, k) => questionInfo(q).generate(sheetSeed(seed, k))),
-  );
-  useEffect(() => {
-    document.title = `Practice worksheet (seed ${seed}) — Render Math Lab`;
-  }, [seed]);
-  return (
-    <main id="main" className="page practice practice-sheet" tabIndex={-1}>
-      <div className="no-print">
-        <div className="scene-header">
-          <h1>Worksheet: seed {seed}</h1>
-          <a className="back-link" href="#/practice">
-            ← All practice questions
-          </a>
-        </div>
-        <ParamNotice problems={problems} />
-        <p>
-          {variants.length} question page{variants.length === 1 ? '' : 's'}, then the answer key.{' '}
-          <button type="button" onClick={() => window.print()}>
-            Print
-          </button>{' '}
-          <span className="muted">
-            Each question prints on its own page; the answer key follows on the last page.
-          </span>
-        </p>
-        <LmsDownloads questions={qs} variants={count} seed={seed} />
-      </div>
-      {variants.map((v, i) => (
-        <section
-          key={`${v.question}-${v.seed}`}
-          className="sheet-page"
-          data-testid="sheet-page"
-          aria-labelledby={`sheet-q-${i}`}
-        >
-          <h2 id={`sheet-q-${i}`}>
-            {i + 1}. Question {questionInfo(v.question).n}: {v.title}{' '}
-            <span className="muted">(variant {v.seed})</span>
-          </h2>
-          <p>{v.statement}</p>
-          <Givens givens={v.givens} testIds={false} />
-          {v.parts.map((p) => (
-            <div key={p.id} className="sheet-part">
-              <p className="sheet-prompt">{p.prompt}</p>
-              {p.answers.map((a) => (
-                <p key={a.name} className="sheet-blank">
-                  {a.label}: <span className="blank-line" aria-hidden="true" />
-                </p>
-              ))}
-            </div>
-          ))}
-          <p className="muted sheet-link">
-            Check online: #/practice/{v.question}?seed={v.seed}
-          </p>
-        </section>
-      ))}
-      <section className="sheet-key" data-testid="sheet-key" aria-labelledby="sheet-key-title">
-        <h2 id="sheet-key-title">Answer key (seed {seed})</h2>
-        {variants.map((v, i) => (
-          <div key={`${v.question}-${v.seed}`} className="key-block">
-            <h3>
-              {i + 1}. Q{questionInfo(v.question).n} variant {v.seed}
-            </h3>
-            <p className="key-answers">
-              {allAnswers(v).map((a) => (
-                <span key={a.name} className="key-answer">
-                  {a.label} ={' '}
-                  <strong>
-                    {a.kind === 'number' && a.expected !== null ? fmt(a.expected, 6) : expectedText(a)}
-                  </strong>
-                </span>
-              ))}
-            </p>
-          </div>
-        ))}
-      </section>
-    </main>
-  );
+/** What another feature shows in this place of the page (extensions.ts), if any. */
+function Slot({ name }: { name: 'home-footer' | 'question-footer' }) {
+  const C = practiceSlot(name);
+  return C ? <C /> : null;
 }

@@ -266,7 +266,11 @@ export function classifyTyped(spec: NumberAnswer, t: TypedNumber): Verdict {
       value: 'incorrect',
       message: `Close, but not right to the figures you typed: ${t.text} is not the answer rounded to that precision. Check your rounding, or type more figures.`,
     };
-  return { value: 'incorrect', message: 'Not right. Check each step of your working.' };
+  return {
+    value: 'incorrect',
+    message:
+      'Not right, and not one of the classic mistakes: redo this step (the part’s hint gives its first step).',
+  };
 }
 
 /**
@@ -357,7 +361,8 @@ export function classifyFormula(spec: FormulaAnswer, g: Fn): Verdict {
       if (formulasEquivalent(fn, g, spec.domain)) return { value: `mistake:${m.id}`, message: m.message };
   return {
     value: 'incorrect',
-    message: 'Not equivalent to the expected formula (it differs at some points of the domain).',
+    message:
+      'Not equivalent to the expected formula (it differs at some points of the domain), and not one of the classic mistakes: the part’s hint gives the first step.',
   };
 }
 

@@ -11,6 +11,7 @@
  *
  * Nothing registers by default; with no extension the pages behave exactly as without this module.
  */
+import type { ComponentType } from 'react';
 import type { QuestionId } from './model';
 
 export interface CheckedAnswer {
@@ -79,4 +80,30 @@ export function extensionInput(q: QuestionId, seed: number, answers: Record<stri
 
 export function extensionCheck(record: CheckRecord): void {
   each((x) => x.onCheck?.(record));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Slots: parts of the practice pages that other features provide (registered by the app before the
+// pages render, so practice never imports them): "Download my results" under a question and on the
+// list, and the LMS packages on the worksheet page.
+
+export interface SlotProps {
+  'question-footer': Record<string, never>;
+  'home-footer': Record<string, never>;
+  sheet: { questions: QuestionId[]; variants: number; seed: number };
+}
+export type SlotName = keyof SlotProps;
+
+const slots: { [K in SlotName]?: ComponentType<SlotProps[K]> } = {};
+
+export function registerPracticeSlot<K extends SlotName>(
+  name: K,
+  component: ComponentType<SlotProps[K]>,
+): void {
+  (slots as Record<string, unknown>)[name] = component;
+}
+
+/** The component registered for a slot, or null. */
+export function practiceSlot<K extends SlotName>(name: K): ComponentType<SlotProps[K]> | null {
+  return (slots[name] as ComponentType<SlotProps[K]> | undefined) ?? null;
 }

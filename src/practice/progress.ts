@@ -28,6 +28,16 @@ function seeds(x: unknown): number[] {
     : [];
 }
 
+/**
+ * Stored progress as it can be true: each seed once, and a variant answered fully correctly was
+ * also tried (a hand-edited or corrupted `{"attempted":[7],"correct":[7,7,7]}` reads 1 tried, 1 correct).
+ */
+function normalise(attempted: number[], correct: number[]): QuestionProgress {
+  const c = [...new Set(correct)];
+  const a = [...new Set([...attempted, ...c])].slice(-MAX_SEEDS);
+  return { attempted: a, correct: c.filter((s) => a.includes(s)) };
+}
+
 export function loadProgress(): Progress {
   const p = empty();
   try {
@@ -38,7 +48,7 @@ export function loadProgress(): Progress {
     for (const q of QUESTION_IDS) {
       if (!Object.hasOwn(data, q)) continue;
       const e = (data as Record<string, unknown>)[q] as { attempted?: unknown; correct?: unknown } | null;
-      if (e && typeof e === 'object') p[q] = { attempted: seeds(e.attempted), correct: seeds(e.correct) };
+      if (e && typeof e === 'object') p[q] = normalise(seeds(e.attempted), seeds(e.correct));
     }
   } catch {
     /* unreadable: start afresh */

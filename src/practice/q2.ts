@@ -234,7 +234,7 @@ export function q2Variant(seed: number): Variant {
   const uniformSum = `\\frac{2\\pi}{${n}}\\,(${fv.map((x) => tn(x)).join(' + ')})`;
   const impSum = `\\frac{1}{${n}}\\,(${fv.map((x, i) => tp(x / pv[i])).join(' + ')})`;
   const trueStep = (est: number): SolutionStep => ({
-    text: `The true value is ∫ f dω = ${trueHow} = ${fmt(trueI, 6)}; this estimate from ${n} directions is ${fmt(est, 6)} (${est === trueI ? 'exact' : `off by ${fmt(Math.abs(est - trueI), 3)}`}).`,
+    text: `The true value is ∫ f dω = ${trueHow} = ${fmt(trueI, 6)}; this estimate from ${n} directions is ${fmt(est, 6)} (${Math.abs(est - trueI) <= 1e-9 * Math.abs(trueI) ? 'exact: every term is the same' : `off by ${fmt(Math.abs(est - trueI), 3)}`}).`,
     tex: `\\int f\\,d\\omega = ${trueTex} = ${tn(trueI)}`,
   });
   const parts: Part[] = [
@@ -285,7 +285,10 @@ export function q2Variant(seed: number): Variant {
       steps: [
         { text: `(c) ${why}` },
         {
-          text: 'Both estimators are unbiased: E[f(X)/p(X)] = ∫ (f/p) p dω = ∫ f dω for any p > 0 where f ≠ 0.',
+          text: 'Both estimators are unbiased (the key’s proof: linearity of E, then E[g(X)] = ∫ g p dω), for any p > 0 where f ≠ 0:',
+        },
+        {
+          tex: `\\begin{aligned} E[\\langle I\\rangle] &= E\\Big[\\frac{1}{N}\\sum_{i=1}^N \\frac{f(X_i)}{p(X_i)}\\Big] = \\frac{1}{N}\\sum_{i=1}^N E\\Big[\\frac{f(X_i)}{p(X_i)}\\Big] \\\\ &= \\frac{1}{N}\\sum_{i=1}^N \\int \\frac{f(\\omega)}{p(\\omega)}\\,p(\\omega)\\,d\\omega = \\int f\\,d\\omega = ${trueTex} \\end{aligned}`,
         },
       ],
     },

@@ -5,7 +5,7 @@
  * practice chunk loads. Storage can be missing or full: then the log lives for the page only.
  */
 import { addPracticeExtension } from '../practice/extensions';
-import { APP_VERSION } from './version';
+import { APP_VERSION } from '../lms/version';
 import { MAX_ATTEMPTS, RESULTS_FORMAT, parseResultsFile, type Attempt, type ResultsFile } from './format';
 
 export const RESULTS_KEY = 'rml:practice-results';

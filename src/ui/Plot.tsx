@@ -46,17 +46,30 @@ export interface PlotProps {
 
 /** Largest magnitude Plotly draws: beyond it its axis arithmetic overflows to NaN paths. */
 const PLOT_MAX_ABS = 1e100;
+/**
+ * Smallest non-zero magnitude Plotly draws: below it (subnormals included) its axis arithmetic
+ * underflows ("Something went wrong with axis scaling"), so such values are drawn as 0.
+ */
+const PLOT_MIN_ABS = 1e-100;
 
 /**
- * Replace infinite or astronomically large numbers (NaN is already a gap to Plotly) in the traces' x / y / z arrays by null (a
- * gap), so Plotly never draws a NaN path; returns the traces and how many values were left out.
+ * Replace infinite or astronomically large numbers (NaN is already a gap to Plotly) in the traces'
+ * x / y / z arrays by null (a gap), and non-zero numbers too small for Plotly's axes by 0, so
+ * Plotly never draws a NaN path or fails to scale an axis; returns the traces and how many values
+ * were left out (`dropped`) or drawn as 0 (`flushed`).
  */
-export function sanitizeTraces(data: PlotTrace[]): { data: PlotTrace[]; dropped: number } {
+export function sanitizeTraces(data: PlotTrace[]): { data: PlotTrace[]; dropped: number; flushed: number } {
   let dropped = 0;
+  let flushed = 0;
+  const tiny = (v: number) => v !== 0 && Math.abs(v) < PLOT_MIN_ABS;
   const clean = (v: unknown): unknown => {
     if (typeof v === 'number' && Math.abs(v) > PLOT_MAX_ABS) {
       dropped++;
       return null;
+    }
+    if (typeof v === 'number' && tiny(v)) {
+      flushed++;
+      return 0;
     }
     return v;
   };
@@ -67,14 +80,15 @@ export function sanitizeTraces(data: PlotTrace[]): { data: PlotTrace[]; dropped:
       if (!Array.isArray(a) && !ArrayBuffer.isView(a)) continue;
       const arr = Array.from(a as ArrayLike<unknown>);
       let bad = false;
-      for (const v of arr) if (typeof v === 'number' && Math.abs(v) > PLOT_MAX_ABS) bad = true;
+      for (const v of arr)
+        if (typeof v === 'number' ? Math.abs(v) > PLOT_MAX_ABS || tiny(v) : Array.isArray(v)) bad = true;
       if (!bad) continue;
       copy ??= { ...t };
       copy[k] = arr.map((v) => (Array.isArray(v) ? v.map(clean) : clean(v)));
     }
     return copy ?? t;
   });
-  return { data: out, dropped };
+  return { data: out, dropped, flushed };
 }
 
 function themeColors() {
@@ -184,6 +198,12 @@ export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProp
         <figcaption className="small" data-testid="plot-dropped">
           {clean.dropped} value{clean.dropped === 1 ? '' : 's'} too large to draw (±∞ or beyond ±10¹⁰⁰) left
           out of this plot.
+        </figcaption>
+      ) : null}
+      {clean.flushed > 0 ? (
+        <figcaption className="small" data-testid="plot-flushed">
+          {clean.flushed} value{clean.flushed === 1 ? '' : 's'} closer to 0 than 10⁻¹⁰⁰ drawn as 0 (too small
+          for the plot&rsquo;s axes).
         </figcaption>
       ) : null}
     </figure>

@@ -84,8 +84,32 @@ export function ExamPart({
         <span className="exam-asks-label">The exam asks</span>
         <div className="exam-asks-text">{asks}</div>
       </div>
+      <PractiseLinks partId={id} />
       <Deferred>{children}</Deferred>
     </section>
+  );
+}
+
+/** The variant of each question that "Practise this" opens (the same for everyone, so it can be discussed). */
+export const PRACTISE_SEED = 1;
+
+/**
+ * "Practise this": the practice page of the part's question (a fixed variant, and a fresh one drawn
+ * at random), so a student revising a part can try it with other numbers.
+ */
+export function PractiseLinks({ partId }: { partId: string }) {
+  const n = /^([1-6])/.exec(partId)?.[1];
+  if (!n) return null;
+  return (
+    <p className="exam-practise" data-testid={`practise-${partId}`}>
+      <a href={`#/practice/q${n}?seed=${PRACTISE_SEED}`} data-testid={`practise-link-${partId}`}>
+        Practise this: question {n} with new numbers
+      </a>{' '}
+      ·{' '}
+      <a href={`#/practice/q${n}`} data-testid={`practise-fresh-${partId}`}>
+        a fresh variant
+      </a>
+    </p>
   );
 }
 

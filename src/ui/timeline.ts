@@ -90,6 +90,16 @@ export function clampPosition(t: number, max: number, integer: boolean): number 
   return integer ? Math.round(c) : c;
 }
 
+/**
+ * Where a link opens the animation: `t` clamped; but a link that asks to play (`play=1`) from the
+ * end (e.g. a scene whose default `t` is the finished figure) plays from the start, as the Play
+ * button does after the end. One rule for every scene.
+ */
+export function openingPosition(t: number, max: number, integer: boolean, playing: boolean): number {
+  const c = clampPosition(t, max, integer);
+  return playing && c >= max ? 0 : c;
+}
+
 export function prefersReducedMotion(): boolean {
   return (
     typeof window !== 'undefined' &&
@@ -199,8 +209,12 @@ export function useTimeline(opts: TimelineOptions): Timeline {
   const { max, duration, setParams } = opts;
   const integer = !!opts.integer;
   const stepSize = opts.stepSize ?? (integer ? 1 : max / 100);
-  const [exact, setExactState] = useState(() => clampPosition(opts.t, max, integer));
-  const [playing, setPlaying] = useState(() => opts.play && !prefersReducedMotion());
+  const [opening] = useState(() => {
+    const play = opts.play && !prefersReducedMotion();
+    return { play, t: openingPosition(opts.t, max, integer, play) };
+  });
+  const [exact, setExactState] = useState(opening.t);
+  const [playing, setPlaying] = useState(opening.play);
   const [speed, setSpeed] = useState(1);
   const [loop, setLoop] = useState(!!opts.loop);
 

@@ -1,5 +1,5 @@
 /**
- * Hostile input, kept fixed (issue 17):
+ * Hostile input, kept fixed:
  *  - a URL corpus: every route × every parameter set to each hostile value (prototype names,
  *    empty, NaN, ±Infinity, 1e400, 100k characters, unicode/RTL marks, broken percent-escapes,
  *    wrong arity, deeply nested calls). Per value, all of a route's parameters get it at once
@@ -14,12 +14,29 @@ import { readFileSync, existsSync } from 'node:fs';
 import { test, expect, openScene } from './fixtures';
 import type { Page } from '@playwright/test';
 
-/** Routes that are not scenes of the registry (add '/practice', '/guide' … here when they exist). */
-const EXTRA_ROUTES: { path: string; id: string | null }[] = [];
+type Route = { path: string; id: string | null; params?: { name: string; kind: string }[] };
 
-function registryRoutes(): { path: string; id: string | null }[] {
+/** Routes that are not scenes of the registry, with the parameters each takes. */
+const EXTRA_ROUTES: Route[] = [
+  { path: '/', id: null, params: [] },
+  { path: '/guide', id: null, params: [] },
+  { path: '/practice', id: null, params: [] },
+  { path: '/practice/q5', id: null, params: [{ name: 'seed', kind: 'number' }] },
+  { path: '/practice/q1', id: null, params: [{ name: 'seed', kind: 'number' }] },
+  {
+    path: '/practice/sheet',
+    id: null,
+    params: [
+      { name: 'seed', kind: 'number' },
+      { name: 'q', kind: 'list' },
+      { name: 'count', kind: 'number' },
+    ],
+  },
+];
+
+function registryRoutes(): Route[] {
   const src = readFileSync('src/scenes/registry.ts', 'utf8');
-  const out: { path: string; id: string | null }[] = [];
+  const out: Route[] = [];
   for (const m of src.matchAll(/id:\s*'([\w-]+)',\s*\n\s*path:\s*'(\/[\w/-]*)'/g))
     out.push({ id: m[1], path: m[2] });
   return out;
@@ -135,7 +152,7 @@ async function expectWorkingScene(page: Page, label: string) {
 for (const route of ROUTES) {
   test(`URL corpus on ${route.path}: every parameter × every hostile value`, async ({ page }) => {
     test.setTimeout(240_000);
-    const params = paramNames(route.id);
+    const params = route.params ?? paramNames(route.id);
     await openScene(page, `#${route.path}`);
     // let the first load (lazy libraries, first plots) finish before timing the input
     for (let y = 0; y <= 4; y++) {
@@ -158,12 +175,16 @@ for (const route of ROUTES) {
       const mustName = params.filter(
         (p) => p.kind !== 'string' && !(p.kind === 'list' && (raw === '' || raw === '1,2')),
       );
+      // theme (a shell parameter, on every route) never takes a hostile value silently either
+      const notice = page.getByTestId('param-notice').first();
+      await expect(notice, `notice for ${label} on ${route.path}`).toBeVisible();
+      expect(await notice.textContent(), `${route.path}: theme=${label} is named`).toContain('theme');
       if (mustName.length) {
-        const notice = page.getByTestId('param-notice');
-        await expect(notice, `notice for ${label}`).toBeVisible();
-        const named = await notice.locator('li code').allTextContents();
+        const text = (await notice.textContent()) ?? '';
+        const named = route.id ? await notice.locator('li code').allTextContents() : null;
         for (const p of mustName)
-          expect(named, `${route.path}: ${p.name}=${label} is named`).toContain(p.name);
+          if (named) expect(named, `${route.path}: ${p.name}=${label} is named`).toContain(p.name);
+          else expect(text, `${route.path}: ${p.name}=${label} is named`).toContain(p.name);
       }
       await settle(page);
       const long = await page.evaluate(() => {

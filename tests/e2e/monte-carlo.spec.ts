@@ -13,6 +13,7 @@ import {
   waitForReadout,
   countAnimationFrames,
 } from './fixtures';
+import { settleLazyViews } from './lazyViews';
 import { drawnEstimate, raceAt, raceTrack } from '../../src/scenes/monte-carlo/model';
 import { squarePdf1D, uniformPdf1D } from '../../src/core/sampling/pdf1d';
 import { compileXFast } from '../../src/scenes/monte-carlo/expr';
@@ -348,4 +349,19 @@ test.describe('animation: samples arrive one by one', () => {
     expect(await page.evaluate(() => (window as unknown as { __raf: number }).__raf)).toBe(0);
     await expect(tl).toHaveAttribute('data-t', '120');
   });
+});
+
+test('a subnormal integrand (f = 1e-320·x) draws every chart without a NaN attribute', async ({ page }) => {
+  // the fixture fails the test on any console error, e.g. "<line> attribute y1: Expected length, NaN"
+  await openScene(page, '#/monte-carlo?f=1e-320*x');
+  await settleLazyViews(page);
+  await expect(page.getByTestId('exact').first()).toHaveAttribute('data-value', /\d/);
+  const bad = await page.evaluate(() => {
+    const out: string[] = [];
+    for (const el of document.querySelectorAll('svg *'))
+      for (const a of el.getAttributeNames())
+        if (/NaN|Infinity/.test(el.getAttribute(a) ?? '')) out.push(`${el.tagName} ${a}`);
+    return out;
+  });
+  expect(bad).toEqual([]);
 });

@@ -94,7 +94,7 @@ test('after one visit to #/, every scene opens and works with the server stopped
     await page.goto(`${srv.base}#/`);
     await expect(page.locator('main#main')).toBeVisible();
     await waitForServiceWorker(page);
-    // the web app manifest is linked once the worker registers (not in index.html: issue 15), and is served
+    // the web app manifest is linked once the worker registers (not in index.html), and is served
     const manifest = await page.evaluate(async () => {
       const href = document.querySelector<HTMLLinkElement>('link[rel="manifest"]')?.href;
       return href ? (((await (await fetch(href)).json()) as { name?: string }).name ?? null) : null;

@@ -64,4 +64,13 @@ describe('practice progress', () => {
     expect(loadProgress().q1.attempted).toEqual([]);
     expect(() => resetProgress()).not.toThrow();
   });
+  it('normalises corrupted progress: each seed once, a correct variant is also tried', () => {
+    store.setItem(
+      PROGRESS_KEY,
+      JSON.stringify({ q3: { attempted: [7], correct: [7, 7, 7] }, q4: { attempted: [], correct: [2] } }),
+    );
+    const p = loadProgress();
+    expect(p.q3).toEqual({ attempted: [7], correct: [7] });
+    expect(p.q4).toEqual({ attempted: [2], correct: [2] });
+  });
 });

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import { advance, clampPosition, timelineParams } from '../../src/ui/timeline';
+import { advance, clampPosition, openingPosition, timelineParams } from '../../src/ui/timeline';
 import { parseParams, serializeParams } from '../../src/kit/params';
 
 describe('timeline advance', () => {
@@ -53,5 +53,26 @@ describe('timelineParams', () => {
     const bad = parseParams(schema, 't=7');
     expect(bad.values.t).toBe(1);
     expect(bad.problems.map((p) => p.name)).toContain('t');
+  });
+});
+
+describe('openingPosition', () => {
+  it('opens where the link says, except that play=1 at the end plays from the start', () => {
+    expect(openingPosition(0.3, 1, false, true)).toBe(0.3);
+    expect(openingPosition(1, 1, false, true)).toBe(0);
+    expect(openingPosition(1, 1, false, false)).toBe(1);
+    expect(openingPosition(5000, 1024, true, true)).toBe(0);
+    expect(openingPosition(NaN, 1024, true, true)).toBe(0);
+    fc.assert(
+      fc.property(
+        fc.double(),
+        fc.double({ min: 0.01, max: 1e4, noNaN: true }),
+        fc.boolean(),
+        (t, max, integer) => {
+          const o = openingPosition(t, max, integer, true);
+          return o >= 0 && o < max;
+        },
+      ),
+    );
   });
 });

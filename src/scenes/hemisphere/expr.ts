@@ -1,7 +1,7 @@
 /**
  * The scene's compiler for typed expressions in (theta, phi): core/expr's (mathjs loads lazily),
  * and a synchronous path (`compileThetaPhiFast`) for the default integrand f = cos(theta), so the
- * default page never loads the parser on the main thread (issue 15: mathjs' `create` and the
+ * default page never loads the parser on the main thread (mathjs' `create` and the
  * first parse cost ~350 ms of a phone's main thread on load).
  */
 import { compileExpression } from '../../core/expr';

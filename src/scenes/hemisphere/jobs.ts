@@ -4,7 +4,7 @@
  * runs. They run in hemisphere.worker.ts and in unit tests alike; the user expressions are compiled
  * here again (closures cannot cross the worker boundary), by the `compile` the caller passes.
  */
-import type { Failure } from '../../core/failure';
+import { fail, raise, type Failure } from '../../core/failure';
 import type { SequenceKind } from '../../core/random';
 import {
   computeDrawStats,
@@ -50,7 +50,7 @@ type Progress = (fraction: number, partial?: unknown) => void;
 export async function prepare(
   a: StatsArgs,
   compile: Compile2,
-): Promise<{ lobe: Lobe | null; f: Integrand | null }> {
+): Promise<{ lobe: Lobe | null; f: Integrand | null; fFailure: Failure | null }> {
   const fc = await compile(a.f, ['theta', 'phi']);
   const f = fc.ok ? (t: number, p: number) => fc.fn(t, p) : null;
   let lobe: Lobe | null = null;
@@ -62,7 +62,7 @@ export async function prepare(
     }
     lobe = lobeFromParams(a.lobe, a.exponent, density).lobe;
   }
-  return { lobe, f };
+  return { lobe, f, fFailure: fc.ok ? null : fc };
 }
 
 export async function statsJob(a: StatsArgs, compile: Compile2): Promise<DrawStats> {
@@ -75,7 +75,7 @@ export async function repeatJob(
   compile: Compile2,
   progress: Progress = () => {},
 ): Promise<RepeatResult> {
-  const { lobe, f } = await prepare(a, compile);
-  if (!f) throw new Error('the integrand does not compile');
+  const { lobe, f, fFailure } = await prepare(a, compile);
+  if (!f) raise(fail(fFailure?.kind ?? 'compile', 'the integrand does not compile'));
   return repeatEstimates(lobe, f, a.points, a.seed, a.runs, a.perRun, (x) => progress(x));
 }

@@ -475,7 +475,7 @@ export function invertedJacobianSeries(points = 40): { eps: Float64Array; partia
   return { eps, partial };
 }
 
-// ---- the animation (issue 12): a pure function of (params, seed, t) ---------------------------
+// ---- the animation: a pure function of (params, seed, t) ---------------------------------------
 
 /** Which animation the shared timeline plays: the warp morph (square → hemisphere) or the growth. */
 export type AnimKind = 'warp' | 'grow';

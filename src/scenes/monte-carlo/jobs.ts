@@ -11,9 +11,8 @@ import {
   fitLogLogSlope,
   type McEstimate,
 } from '../../core/estimators';
-import type { Failure } from '../../core/failure';
+import { fail, raise, type Failure } from '../../core/failure';
 import type { ProgressFn } from '../../workers/protocol';
-import type { SequenceKind } from '../../core/random/sequences';
 import type { Pdf1D } from '../../core/sampling/pdf1d';
 import { runSeed } from '../../core/random/rng';
 import { checkLimits, choosePdf, exactIntegral, type Fn1, type PdfChoice } from './model';
@@ -36,13 +35,14 @@ export interface Prepared {
   f: Fn1;
   exact: number;
   samplers: (Pdf1D | null)[];
-  problems: string[];
+  /** Strategies left out, each with why (the pdf's own Failure, its message led by the label). */
+  problems: Failure[];
 }
 
 /** Compile f (and the custom pdf if used), compute the reference, build every strategy's sampler. */
 export async function prepare(args: ProblemArgs, compile: Compile): Promise<Prepared> {
   const cf = await compile(args.f);
-  if (!cf.ok) throw new Error(`f: ${cf.message}`);
+  if (!cf.ok) raise(fail(cf.kind, `f: ${cf.message}`));
   const { a, b } = checkLimits(args.a, args.b);
   let custom: Fn1 | null = null;
   if (args.strategies.some((s) => s.pdf === 'custom')) {
@@ -51,7 +51,7 @@ export async function prepare(args: ProblemArgs, compile: Compile): Promise<Prep
   }
   const ex = exactIntegral(args.f, cf.fn, a, b);
   const cache = new Map<PdfKind, PdfChoice>();
-  const problems: string[] = [];
+  const problems: Failure[] = [];
   const samplers = args.strategies.map((s) => {
     let c = cache.get(s.pdf);
     if (!c) {
@@ -59,7 +59,7 @@ export async function prepare(args: ProblemArgs, compile: Compile): Promise<Prep
       cache.set(s.pdf, c);
     }
     if (!c.ok) {
-      problems.push(`${s.label}: ${c.message}`);
+      problems.push(fail(c.kind, `${s.label}: ${c.message}`));
       return null;
     }
     return c.sampler;
@@ -84,7 +84,7 @@ type Progress<P = unknown> = ProgressFn<P>;
 export interface ConvergencePartial {
   series: SeriesData[];
   exact: number;
-  problems: string[];
+  problems: Failure[];
 }
 const now = (): number => (typeof performance !== 'undefined' ? performance.now() : Date.now());
 const tick = (): Promise<void> => new Promise((r) => setTimeout(r, 0));
@@ -104,7 +104,7 @@ export async function convergenceJob(
   const runs = args.strategies.map((s, i) =>
     prep.samplers[i]
       ? new ConvergenceRun1D(
-          { f: prep.f, pdf: prep.samplers[i], sequence: s.seq as SequenceKind, seed: args.seed },
+          { f: prep.f, pdf: prep.samplers[i], sequence: s.seq, seed: args.seed },
           cps,
           prep.exact,
         )
@@ -165,6 +165,14 @@ export interface RmseData {
   runs: number;
 }
 
+/** The RMSE of the first strategy at exactly n samples (null until the run has reached n). */
+export function rmseAt(rmse: RmseData[] | undefined, n: number): number | null {
+  const r = rmse?.[0];
+  if (!r || r.n.length === 0) return null;
+  const k = r.n.length - 1;
+  return r.n[k] === n ? r.rmse[k] : null;
+}
+
 /**
  * RMSE over `runs` independent runs (seeds runSeed(seed, r)) at log-spaced N up to nMax (4 per
  * decade), with the 10–90 % band of |error|, and the time of an N-sample estimate = N × the cost
@@ -210,7 +218,7 @@ export async function rmseJob(
       work++;
       const sampler = prep.samplers[i];
       if (!sampler) continue;
-      const seq = args.strategies[i].seq as SequenceKind;
+      const seq = args.strategies[i].seq;
       const run = new ConvergenceRun1D(
         { f: prep.f, pdf: sampler, sequence: seq, seed: runSeed(args.seed, r) },
         cps,
@@ -247,8 +255,8 @@ export async function histogramJob(
 ) {
   const prep = await prepare(args, compile);
   const sampler = prep.samplers[0];
-  if (!sampler) throw new Error(prep.problems[0] ?? 'no usable pdf');
-  const seq = args.strategies[0].seq as SequenceKind;
+  if (!sampler) raise(prep.problems[0] ?? fail('no-pdf', 'no usable pdf'));
+  const seq = args.strategies[0].seq;
   const out = new Float64Array(args.M).fill(NaN);
   let last = now();
   for (let m = 0; m < args.M; m++) {
@@ -273,8 +281,8 @@ export async function estimateJob(
 ): Promise<McEstimate & { ms: number }> {
   const prep = await prepare(args, compile);
   const sampler = prep.samplers[0];
-  if (!sampler) throw new Error(prep.problems[0] ?? 'no usable pdf');
-  const seq = args.strategies[0].seq as SequenceKind;
+  if (!sampler) raise(prep.problems[0] ?? fail('no-pdf', 'no usable pdf'));
+  const seq = args.strategies[0].seq;
   // one run to N with a single checkpoint: same numbers as estimate1D, but resumable
   const run = new ConvergenceRun1D(
     { f: prep.f, pdf: sampler, sequence: seq, seed: args.seed },

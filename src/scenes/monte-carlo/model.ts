@@ -18,7 +18,7 @@ import {
   uniformPdf1D,
   type Pdf1D,
 } from '../../core/sampling/pdf1d';
-import type { SequenceKind } from '../../core/random/sequences';
+import { fail, type Failure } from '../../core/failure';
 import { Rng } from '../../core/random/rng';
 import { RACE_SAMPLES, type PdfKind, type Strategy } from './params';
 
@@ -128,7 +128,7 @@ export type PdfChoice =
       /** A note (e.g. the tabulation, or a fallback). */
       note: string | null;
     }
-  | { ok: false; kind: PdfKind; message: string };
+  | Failure<PdfKind>;
 
 const fmt = (x: number): string => (Number.isInteger(x) ? String(x) : Number(x.toPrecision(6)).toString());
 
@@ -247,8 +247,8 @@ export interface SampleTable {
   uniform: McEstimate;
   /** Importance estimator with p ∝ |f| (exact density). */
   proportional: McEstimate | null;
-  /** Problems with the given samples (outside [a, b], p = 0 where f ≠ 0). */
-  problems: string[];
+  /** Problems with the given samples: kind 'outside' ([a, b]) or 'zero-pdf' (p = 0 where f ≠ 0). */
+  problems: Failure[];
 }
 
 /** Build the worked table for the samples xs (given, or the exam's four). */
@@ -260,7 +260,7 @@ export function sampleTable(
   density: Fn1 | null,
   propDensity: Fn1 | null,
 ): SampleTable {
-  const problems: string[] = [];
+  const problems: Failure[] = [];
   const rows: SampleRow[] = xs.map((x) => {
     const fx = f(x);
     const outside = !(x >= a && x <= b);
@@ -279,7 +279,10 @@ export function sampleTable(
   const outside = rows.filter((r) => r.outside).map((r) => fmt(r.x));
   if (outside.length) {
     problems.push(
-      `Sample${outside.length > 1 ? 's' : ''} ${outside.join(', ')} lie${outside.length > 1 ? '' : 's'} outside [${fmt(a)}, ${fmt(b)}]: p = 0 there, so f/p is undefined and the estimate leaves ${outside.length > 1 ? 'them' : 'it'} out.`,
+      fail(
+        'outside',
+        `Sample${outside.length > 1 ? 's' : ''} ${outside.join(', ')} lie${outside.length > 1 ? '' : 's'} outside [${fmt(a)}, ${fmt(b)}]: p = 0 there, so f/p is undefined and the estimate leaves ${outside.length > 1 ? 'them' : 'it'} out.`,
+      ),
     );
   }
   const fv = Float64Array.from(rows, (r) => (r.outside ? NaN : r.f));
@@ -291,7 +294,10 @@ export function sampleTable(
     const zero = rows.filter((r) => !r.outside && r.p === 0 && r.f !== 0).map((r) => fmt(r.x));
     if (zero.length)
       problems.push(
-        `p = 0 at x = ${zero.join(', ')} where f ≠ 0: such a sample could never be drawn from p.`,
+        fail(
+          'zero-pdf',
+          `p = 0 at x = ${zero.join(', ')} where f ≠ 0: such a sample could never be drawn from p.`,
+        ),
       );
   }
   let proportional: McEstimate | null = null;
@@ -354,9 +360,35 @@ export function keyComparison(
   return notes;
 }
 
+/**
+ * The pdf of the race's importance lane: the chosen pdf unless it is uniform, else p ∝ f (null when
+ * neither is usable), with the label the race shows for it.
+ */
+export function importanceLane(
+  choice: PdfChoice | null,
+  proportional: PdfChoice | null,
+): { pdf: Extract<PdfChoice, { ok: true }>; label: string } | null {
+  const pdf = choice?.ok && choice.kind !== 'uniform' ? choice : proportional?.ok ? proportional : null;
+  if (!pdf) return null;
+  const label =
+    pdf.kind === 'proportional' ? 'p ∝ f: ' + pdf.label.replace(/ \(closed form.*\)$/, '') : pdf.label;
+  return { pdf, label };
+}
+
+/** Whether the page shows the exam's own Q4: f = (x + 2)², [0, 2] and the exam's four samples in order. */
+export function isExamConfig(shift: number | null, a: number, b: number, xs: readonly number[]): boolean {
+  return (
+    shift === 2 &&
+    a === EXAM_A &&
+    b === EXAM_B &&
+    xs.length === EXAM_SAMPLES.length &&
+    xs.every((x, i) => x === EXAM_SAMPLES[i])
+  );
+}
+
 /** The problem of an estimate with drawn samples (what estimate1D and EstimateRun1D take). */
 export function drawnProblem(f: Fn1, sampler: Pdf1D, sequence: Strategy, seed: number): Problem1D {
-  return { f, pdf: sampler, sequence: sequence as SequenceKind, seed };
+  return { f, pdf: sampler, sequence, seed };
 }
 
 /** Estimate with n drawn samples on the main thread (small n; larger n runs in the worker). */
@@ -442,7 +474,7 @@ export function strategyLabel(pdf: PdfKind, seq: Strategy): string {
 export { histogram } from '../../core/estimators';
 
 // ---------------------------------------------------------------------------------------------
-// The animation (issue 12): uniform against importance sampling, one sample at a time, on the
+// The animation: uniform against importance sampling, one sample at a time, on the
 // same random numbers. Position t of the shared timeline = the number of samples drawn so far.
 // ---------------------------------------------------------------------------------------------
 
@@ -484,6 +516,20 @@ function lane(n: number): RaceLane {
   };
 }
 
+/** A lane's running mean and M₂ over its first n terms, by Welford's update (one loop, no call per term). */
+function runningMoments(L: RaceLane, n: number): void {
+  let mean = 0;
+  let m2 = 0;
+  for (let i = 0; i < n; i++) {
+    const y = L.term[i];
+    const d = y - mean;
+    mean += d / (i + 1);
+    m2 += d * (y - mean);
+    L.mean[i] = mean;
+    L.m2[i] = m2;
+  }
+}
+
 /**
  * Precompute the race: ξᵢ is the i-th draw of the seeded generator (Rng(seed, RACE_STREAM)), so a
  * track of `max` samples is a prefix of any longer one. The uniform lane uses xᵢ = a + (b − a)ξᵢ
@@ -491,8 +537,8 @@ function lane(n: number): RaceLane {
  * M₂ by Welford's update. O(max) once per parameter change; raceAt(track, t) is then O(points).
  *
  * It runs while the scene first renders, on code the JIT has not warmed up yet, where a function
- * call per sample costs many times the arithmetic (issue 15): ξ comes from Rng.fill (no call per
- * draw) and each lane's terms, mean and M₂ are written in one loop. The arithmetic is the plain
+ * call per sample costs many times the arithmetic: ξ comes from Rng.fill (no call per draw), each
+ * lane's terms are written in one loop and its running mean and M₂ in one more. The arithmetic is the plain
  * per-sample one's (tests/scenes/monte-carlo/race.test.ts compares them exactly).
  */
 export function raceTrack(
@@ -508,34 +554,22 @@ export function raceTrack(
   const U = lane(max);
   const I = lane(max);
   const w = b - a;
-  let mean = 0;
-  let m2 = 0;
   for (let i = 0; i < max; i++) {
     const x = a + w * xi[i];
     const y = w * f(x);
     U.x[i] = x;
     U.term[i] = y;
-    const d = y - mean;
-    mean += d / (i + 1);
-    m2 += d * (y - mean);
-    U.mean[i] = mean;
-    U.m2[i] = m2;
   }
   // per sample, not the batched sampler: a pdf's batch may round differently in the last bit
-  mean = 0;
-  m2 = 0;
   for (let i = 0; i < max; i++) {
     const x = importance.sample(xi[i]);
     I.x[i] = x;
     const fx = f(x);
     const y = fx === 0 ? 0 : fx / importance.pdf(x);
     I.term[i] = y;
-    const d = y - mean;
-    mean += d / (i + 1);
-    m2 += d * (y - mean);
-    I.mean[i] = mean;
-    I.m2[i] = m2;
   }
+  runningMoments(U, max);
+  runningMoments(I, max);
   return { max, exact, xi, uniform: U, importance: I };
 }
 

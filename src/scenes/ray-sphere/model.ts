@@ -16,6 +16,7 @@ import {
   type RaySphereReference,
   type Vec3,
 } from '../../core/geometry';
+import { fail, type Failure } from '../../core/failure';
 import { schema, type RaySphereParams } from './params';
 
 export type V3 = [number, number, number];
@@ -38,11 +39,17 @@ export interface InputCheck {
   d: V3;
   c: V3;
   r: number;
-  /** Messages for the page; empty when the inputs are fine. */
+  /** What was replaced and why (kind for code, message for the page); empty when the inputs are fine. */
+  failures: Failure<InputProblem>[];
+  /** The failures' messages, in order. */
   problems: string[];
 }
 
-const DEFAULT_D = schema.d.default as unknown as V3;
+/** Why an input was replaced by a safe value. */
+export type InputProblem =
+  'not-finite' | 'zero-radius' | 'negative-radius' | 'zero-direction' | 'direction-underflow';
+
+const DEFAULT_D: V3 = [...schema.d.default];
 
 /**
  * Replace inputs that do not describe a ray and a sphere by safe values, saying why:
@@ -50,10 +57,12 @@ const DEFAULT_D = schema.d.default as unknown as V3;
  * r ≤ 0 → |r| if positive, else 1.
  */
 export function checkInputs(p: Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r'>): InputCheck {
-  const problems: string[] = [];
+  const failures: Failure<InputProblem>[] = [];
   const fin = (v: readonly number[], name: string, fallback: readonly number[]): V3 => {
     if (v.length === 3 && v.every(Number.isFinite)) return [v[0], v[1], v[2]];
-    problems.push(`${name} has a value that is not a finite number; using ${fallback.join(', ')}.`);
+    failures.push(
+      fail('not-finite', `${name} has a value that is not a finite number; using ${fallback.join(', ')}.`),
+    );
     return [fallback[0], fallback[1], fallback[2]];
   };
   const o = fin(p.o, 'The origin o', schema.o.default);
@@ -61,27 +70,34 @@ export function checkInputs(p: Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r'>): In
   const c = fin(p.c, 'The centre C', schema.c.default);
   let r = p.r;
   if (!Number.isFinite(r)) {
-    problems.push(`The radius is not a finite number; using r = ${schema.r.default}.`);
+    failures.push(fail('not-finite', `The radius is not a finite number; using r = ${schema.r.default}.`));
     r = schema.r.default;
   } else if (r <= 0) {
     const fb = r < 0 ? -r : schema.r.default;
-    problems.push(
+    failures.push(
       r === 0
-        ? `A radius of 0 is a point, not a sphere; using r = ${fb}.`
-        : `A negative radius (r = ${r}) does not describe a sphere; using |r| = ${fb}.`,
+        ? fail('zero-radius', `A radius of 0 is a point, not a sphere; using r = ${fb}.`)
+        : fail(
+            'negative-radius',
+            `A negative radius (r = ${r}) does not describe a sphere; using |r| = ${fb}.`,
+          ),
     );
     r = fb;
   }
   const a = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
   if (!(a > 0)) {
-    problems.push(
+    const using = `using d = (${DEFAULT_D.join(', ')})`;
+    failures.push(
       d.every((x) => x === 0)
-        ? `The direction d = (0, 0, 0) points nowhere, so the ray has no t; using d = (${DEFAULT_D.join(', ')}).`
-        : `The direction d is too short to square in double precision (d·d underflows to 0); using d = (${DEFAULT_D.join(', ')}).`,
+        ? fail('zero-direction', `The direction d = (0, 0, 0) points nowhere, so the ray has no t; ${using}.`)
+        : fail(
+            'direction-underflow',
+            `The direction d is too short to square in double precision (d·d underflows to 0); ${using}.`,
+          ),
     );
-    d = [...DEFAULT_D] as V3;
+    d = [...DEFAULT_D];
   }
-  return { o, d, c, r, problems };
+  return { o, d, c, r, failures, problems: failures.map((f) => f.message) };
 }
 
 export interface MethodRow {
@@ -135,7 +151,7 @@ export function computeModel(p: Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r' | 'm
       caseRight: res.case === ref.case,
     });
   }
-  const chosen = rows.find((row) => row.method === (p.method === 'naive' ? 'naive' : 'stable'))!.res;
+  const chosen = rows.find((row) => row.method === p.method)!.res;
   return { input, chosen, rows, reference: ref, fatal: null, distanceRatio };
 }
 
@@ -436,7 +452,7 @@ function range(a: number, b: number, step: number): number[] {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The sweep animation (issue 12): the ray moves across the sphere as the timeline's t goes 0 → 1.
+// The sweep animation: the ray moves across the sphere as the timeline's t goes 0 → 1.
 // Everything on screen at position t is a pure function of the parameters and t.
 
 export type SweepMode = 'offset' | 'rotate';
@@ -592,7 +608,7 @@ export function sweepSeries(p: Pick<RaySphereParams, 'method'>, sw: Sweep, n = 2
     gWindow: { tMin: 0, tMax: 1, gMin: -1, gMax: 1, shift: 0 },
   };
   const { c, r } = sw.base;
-  const method = p.method === 'naive' ? 'naive' : 'stable';
+  const method = p.method;
   let lo = Infinity;
   let hi = -Infinity;
   const tvs: number[] = [];

@@ -1,4 +1,4 @@
-/** Issue 17: ∫ f dω must not show finite numbers for divergent integrals or non-finite f. */
+/** ∫ f dω must not show finite numbers for divergent integrals or non-finite f. */
 import { describe, expect, it } from 'vitest';
 import { compileExpression } from '../../../src/core/expr';
 import { checkedIntegral, q2Estimates, makeLobe } from '../../../src/scenes/hemisphere/model';

@@ -80,7 +80,7 @@ describe('model', () => {
     const u = choosePdf('uniform', 'x', (x) => x, 0, 1, null);
     if (!u.ok) throw new Error('pdf');
     const t = sampleTable([0.5, 3], (x) => x, 0, 1, u.density, null);
-    expect(t.problems[0]).toMatch(/outside/);
+    expect(t.problems[0]?.message).toMatch(/outside/);
     expect(t.chosen!.invalid).toBe(1);
     expect(t.chosen!.estimate).toBe(0.5);
   });

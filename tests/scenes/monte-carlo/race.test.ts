@@ -1,5 +1,5 @@
 /**
- * The animation's model (issue 12): what is on screen at position t is a pure function of
+ * The animation's model: what is on screen at position t is a pure function of
  * (f, [a, b], pdf, seed, t), a prefix of one seeded stream; checked against a direct recomputation.
  */
 import { describe, expect, it } from 'vitest';

@@ -21,18 +21,10 @@ import {
   type RaySphereParams,
 } from '../../../src/scenes/ray-sphere/params';
 import type { Vec3 } from '../../../src/core/geometry';
+import { defaultValues } from '../../../src/kit/params';
 
-const base: RaySphereParams = {
-  o: [-3, -1.2, 0.6],
-  d: [1, 0.4, -0.15],
-  c: [0, 0, 0],
-  r: 1,
-  method: 'stable',
-  sweep: 'offset',
-  extent: 2.5,
-  t: 0.5,
-  play: false,
-};
+// the schema's defaults: o = (−3, −1.2, 0.6), d = (1, 0.4, −0.15), the unit sphere at the origin
+const base: RaySphereParams = defaultValues(schema);
 
 describe('input checks: bad input → message + safe fallback', () => {
   it('zero direction falls back to the default direction', () => {

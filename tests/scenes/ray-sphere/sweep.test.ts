@@ -12,19 +12,10 @@ import {
   sweepXRange,
 } from '../../../src/scenes/ray-sphere/model';
 import { PRECISION_PRESETS, schema, type RaySphereParams } from '../../../src/scenes/ray-sphere/params';
+import { defaultValues } from '../../../src/kit/params';
 
-const base: RaySphereParams = {
-  o: [-3, 0.3, 0.2],
-  d: [1, 0, 0],
-  c: [0, 0, 0],
-  r: 1,
-  method: 'stable',
-  sweep: 'offset',
-  extent: 2.5,
-  t: 0.5,
-  play: false,
-};
-const sw = (p: RaySphereParams) => makeSweep(checkInputs(p), p.sweep as 'offset' | 'rotate', p.extent);
+const base: RaySphereParams = { ...defaultValues(schema), o: [-3, 0.3, 0.2], d: [1, 0, 0] };
+const sw = (p: RaySphereParams) => makeSweep(checkInputs(p), p.sweep, p.extent);
 const dist = (o: readonly number[], d: readonly number[], c: readonly number[]) => {
   // distance of the line o + t d from c
   const f = [o[0] - c[0], o[1] - c[1], o[2] - c[2]];

@@ -1,5 +1,5 @@
 /**
- * The derivation of a lobe other than the exam's (whose derivation is the exam section, view/ExamQ1.tsx),
+ * The derivation of a lobe other than the exam's (whose derivation is the exam section, exam/Q1.tsx),
  * with the live numbers from the core.
  * For a typed density the steps are numerical (tabulated) and say so.
  */
@@ -57,7 +57,7 @@ export function Derivation({
   custom: TabulatedHemisphere | null;
   customTex: string | null;
 }) {
-  // the exam lobe's derivation is written out part by part in the exam section (view/ExamQ1.tsx)
+  // the exam lobe's derivation is written out part by part in the exam section (exam/Q1.tsx)
   if (lobe === 'exam') return null;
   if (lobe === 'uniform')
     return (

@@ -15,7 +15,7 @@
  * timeline is paused and the buffers are filled, unless the camera moves.
  */
 import { formatCount } from '../../../ui/format';
-import { useEffect, useEffectEvent, useRef } from 'react';
+import { useEffect, useRef } from 'react';
 import type * as THREE from 'three';
 import { Viewport, type ViewportContext } from '../../../three';
 import { fillSequence2D, type SequenceKind } from '../../../core/random';
@@ -48,7 +48,7 @@ interface Fill {
 /**
  * New points allowed this frame: what the measured speed generates in a quarter of the last frame's
  * length, kept between 4 and 40 ms of work. Time-sliced so that the first fill on load (cold code,
- * a phone's CPU) never makes one long task (issue 15: 20 000 points in one frame took ~450 ms at 4×
+ * a phone's CPU) never makes one long task (20 000 points in one frame took ~450 ms at 4×
  * CPU throttling), while slow software-GL frames still take big batches for 10⁶ points.
  */
 function perFrame(a: Fill): number {
@@ -78,7 +78,7 @@ export interface HemisphereViewProps {
 /**
  * Buffers sized for n points, rounded up to a power of two (at least 4096, at most MAX_N): sized
  * for 10⁶ from the start, the first upload of ~23 MB cost a phone's main thread hundreds of ms on
- * load (issue 15), though the exam's default shows 512 points.
+ * load, though the exam's default shows 512 points.
  */
 function capacityFor(n: number): number {
   let c = 4096;
@@ -355,7 +355,7 @@ export function HemisphereView({
     });
 
     // The first fill, before the first frame (the engine draws none until its shaders are ready):
-    // in tasks of about SLICE_MS each, not in frames (issue 15: on a software WebGL every frame is
+    // in tasks of about SLICE_MS each, not in frames (on a software WebGL every frame is
     // a synchronous read-back of tens of ms on a phone, and the fill took one frame per batch).
     let filling = true;
     const fillTask = () => {
@@ -403,7 +403,9 @@ export function HemisphereView({
   };
 
   // the point set changed: the buffers start over, the grid is rebuilt
-  const onPointsChange = useEffectEvent(() => {
+  // (the latest closures in refs, so that the effects run on their own dependencies only)
+  const onPointsChange = useRef(() => {});
+  onPointsChange.current = () => {
     const o = objs.current;
     const ctx = ctxRef.current;
     if (!o || !ctx) return;
@@ -419,16 +421,17 @@ export function HemisphereView({
     fill.current.filled = 0;
     performance.clearMeasures?.('hemisphere-grow');
     apply();
-  });
-  useEffect(() => onPointsChange(), [lobe, kind, seed, n]);
+  };
+  useEffect(() => onPointsChange.current(), [lobe, kind, seed, n]);
 
   // every timeline position: the new target and morph (the fill loop runs only if points are missing)
-  const onFrameChange = useEffectEvent(() => {
+  const onFrameChange = useRef(() => {});
+  onFrameChange.current = () => {
     fill.current.target = frame.shown;
     if (!objs.current) return;
     apply();
-  });
-  useEffect(() => onFrameChange(), [frame]);
+  };
+  useEffect(() => onFrameChange.current(), [frame]);
   if (drawRef) {
     drawRef.current = (f: AnimFrame) => {
       cfg.current.frame = f;

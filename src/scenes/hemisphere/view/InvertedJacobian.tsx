@@ -5,18 +5,9 @@
  */
 import { useMemo, useState } from 'react';
 import { MathTex, Notice, Plot, Slider, Readout, formatNumber } from '../../../ui';
-import { titled } from './plotTitle';
+import { LEGEND_INSIDE, titled } from './plotTitle';
 import { examLobeK, invertedJacobianDensity, invertedJacobianPartialIntegral } from '../../../core/sampling';
 import { invertedJacobianSeries } from '../model';
-
-const LEGEND = {
-  orientation: 'v',
-  x: 0.02,
-  y: 0.98,
-  xanchor: 'left',
-  yanchor: 'top',
-  bgcolor: 'rgba(0,0,0,0)',
-};
 
 export function InvertedJacobian() {
   const [eps, setEps] = useState(1e-3);
@@ -104,7 +95,7 @@ export function InvertedJacobian() {
             ...titled('partial integral: no limit'),
             xaxis: { type: 'log', title: { text: 'ε (rad)' }, autorange: 'reversed' },
             yaxis: { title: { text: '−ln sin ε' } },
-            legend: LEGEND,
+            legend: LEGEND_INSIDE,
           }}
         />
       </div>

@@ -6,18 +6,8 @@
 import { useMemo } from 'react';
 import { Plot, type PlotTrace } from '../../../ui';
 import { TWO_PI } from '../../../core/sampling';
-import { titled } from './plotTitle';
+import { LEGEND_INSIDE, titled } from './plotTitle';
 import type { DrawStats } from '../model';
-
-/** Legend inside the plot's top-left corner (where both marginals are low), clear of the axis titles. */
-const LEGEND = {
-  orientation: 'v',
-  x: 0.02,
-  y: 0.98,
-  xanchor: 'left',
-  yanchor: 'top',
-  bgcolor: 'rgba(0,0,0,0)',
-};
 
 function histTraces(h: NonNullable<DrawStats['hist']>['theta'], name: string): PlotTrace[] {
   return [
@@ -55,7 +45,7 @@ export function MarginalPlots({ stats }: { stats: DrawStats }) {
           xaxis: { title: { text: 'θ (rad)' }, range: [0, Math.PI / 2] },
           yaxis: { title: { text: 'density' } },
           bargap: 0,
-          legend: LEGEND,
+          legend: LEGEND_INSIDE,
         }}
         testId="plot-theta"
       />
@@ -67,7 +57,7 @@ export function MarginalPlots({ stats }: { stats: DrawStats }) {
           xaxis: { title: { text: 'φ (rad)' }, range: [0, TWO_PI] },
           yaxis: { title: { text: 'density' } },
           bargap: 0,
-          legend: LEGEND,
+          legend: LEGEND_INSIDE,
         }}
         testId="plot-phi"
       />
@@ -97,60 +87,36 @@ export function Histogram2D({ stats }: { stats: DrawStats }) {
   }, [chi2]);
   if (!data) return null;
   const axes = { xaxis: { title: { text: 'φ' } }, yaxis: { title: { text: 'cos θ' } } };
+  const heat = (z: number[][], title: string, ariaLabel: string, diverging = false) => (
+    <Plot
+      ariaLabel={ariaLabel}
+      height={240}
+      data={[
+        {
+          type: 'heatmap',
+          x: data.x,
+          y: data.y,
+          z,
+          zmin: diverging ? -4 : 0,
+          zmax: diverging ? 4 : data.zmax,
+          colorscale: diverging ? 'RdBu' : 'Viridis',
+          ...(diverging ? { reversescale: true } : {}),
+          showscale: diverging,
+        },
+      ]}
+      layout={{ ...titled(title), ...axes }}
+    />
+  );
   return (
     <div className="hemi-plot-grid three">
-      <Plot
-        ariaLabel="Observed counts in bins of equal solid angle"
-        height={240}
-        data={[
-          {
-            type: 'heatmap',
-            x: data.x,
-            y: data.y,
-            z: data.obs,
-            zmin: 0,
-            zmax: data.zmax,
-            colorscale: 'Viridis',
-            showscale: false,
-          },
-        ]}
-        layout={{ ...titled('observed'), ...axes }}
-      />
-      <Plot
-        ariaLabel="Expected counts: the density integrated over each bin"
-        height={240}
-        data={[
-          {
-            type: 'heatmap',
-            x: data.x,
-            y: data.y,
-            z: data.exp,
-            zmin: 0,
-            zmax: data.zmax,
-            colorscale: 'Viridis',
-            showscale: false,
-          },
-        ]}
-        layout={{ ...titled('expected N∫p dω'), ...axes }}
-      />
-      <Plot
-        ariaLabel="Standardized difference (observed minus expected) over the square root of expected"
-        height={240}
-        data={[
-          {
-            type: 'heatmap',
-            x: data.x,
-            y: data.y,
-            z: data.diff,
-            zmin: -4,
-            zmax: 4,
-            colorscale: 'RdBu',
-            reversescale: true,
-            showscale: true,
-          },
-        ]}
-        layout={{ ...titled('(O − E)/√E'), ...axes }}
-      />
+      {heat(data.obs, 'observed', 'Observed counts in bins of equal solid angle')}
+      {heat(data.exp, 'expected N∫p dω', 'Expected counts: the density integrated over each bin')}
+      {heat(
+        data.diff,
+        '(O − E)/√E',
+        'Standardized difference (observed minus expected) over the square root of expected',
+        true,
+      )}
     </div>
   );
 }

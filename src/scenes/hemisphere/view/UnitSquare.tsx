@@ -10,6 +10,13 @@ import { xiColor } from './colors';
 
 const MAX_SHOWN = 4096;
 
+/** The square's side s and its coordinates in a figure of `size` px: ξ₁ → x, ξ₂ → y (up). */
+function squareAxes(size: number) {
+  const pad = 22;
+  const s = size - 2 * pad;
+  return { s, X: (a: number) => pad + a * s, Y: (b: number) => pad + (1 - b) * s };
+}
+
 export function UnitSquare({
   kind,
   seed,
@@ -23,10 +30,7 @@ export function UnitSquare({
 }) {
   const canvas = useRef<HTMLCanvasElement>(null);
   const shown = Math.min(n, MAX_SHOWN);
-  const pad = 22;
-  const s = size - 2 * pad;
-  const X = (a: number) => pad + a * s;
-  const Y = (b: number) => pad + (1 - b) * s;
+  const { s, X, Y } = squareAxes(size);
   // the first sample, which the 3D view and the worked example track (ringed)
   const first = useMemo(
     () => (shown > 0 ? fillSequence2D(kind, seed, n, new Float64Array(2), 0, 1, 0) : null),
@@ -36,12 +40,13 @@ export function UnitSquare({
     const c = canvas.current;
     const g = c?.getContext('2d', { willReadFrequently: true });
     if (!c || !g) return;
+    const { X, Y } = squareAxes(size);
     const dpr = Math.min(window.devicePixelRatio || 1, 2);
     const W = Math.round(size * dpr);
     const H = W;
     // Everything coloured goes straight into the pixels (grid segments and points, one colour each):
-    // a stroke and a colour string per segment and per point was tens of ms of a phone's load
-    // (issue 15). Two short tasks: the grid and the first half of the points, then the rest.
+    // a stroke and a colour string per segment and per point was tens of ms of a phone's load.
+    // Two short tasks: the grid and the first half of the points, then the rest.
     const img = new ImageData(W, H);
     const px = img.data;
     const rgb = new Uint8Array(3);
@@ -105,11 +110,10 @@ export function UnitSquare({
       alive = false;
       cancel();
     };
-    // (X and Y are functions of size, which is listed)
   }, [kind, seed, n, shown, size]);
   // The frame, the axis labels and the ring are drawn over the pixels in the text colour
   // (currentColor): reading the theme's colour for the canvas forced a style recalculation of the
-  // whole page while it loaded (42 ms on the Lighthouse trace, issue 15), and a theme switch now
+  // whole page while it loaded (42 ms on the Lighthouse trace), and a theme switch now
   // recolours them without a redraw.
   return (
     <figure className="hemi-square">

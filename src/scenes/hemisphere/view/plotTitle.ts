@@ -11,3 +11,13 @@ export function titled(text: string): {
     margin: { l: 56, r: 16, t: 46, b: 44 },
   };
 }
+
+/** Legend inside the plot's top-left corner (where both marginals are low), clear of the axis titles. */
+export const LEGEND_INSIDE = {
+  orientation: 'v',
+  x: 0.02,
+  y: 0.98,
+  xanchor: 'left',
+  yanchor: 'top',
+  bgcolor: 'rgba(0,0,0,0)',
+};

@@ -36,7 +36,7 @@ export function ConvergencePanel({
     rerun();
   }, [runToken, rerun]);
   const cur = useThrottled(task.result ?? task.partial, REDRAW_MS, !task.running);
-  const series = cur?.series ?? [];
+  const series = useMemo(() => cur?.series ?? [], [cur]);
   const ref = cur?.exact ?? exact;
 
   const estData = useMemo<PlotTrace[]>(() => {
@@ -110,16 +110,10 @@ export function ConvergencePanel({
   return (
     <Panel title="Convergence as N grows (Q4 d)" className="mc-plots">
       <div ref={box}>
-        <RunBar
-          running={task.running}
-          waiting={task.waiting}
-          progress={task.progress}
-          onCancel={task.cancel}
-          onRun={task.run}
-          label={`Running up to N = ${formatCount(nMax)}…`}
-        />
-        {task.error ? <p className="field-error">The run failed: {task.error.message}</p> : null}
-        {cur?.problems.length ? <p className="mc-note">Left out: {cur.problems.join('; ')}</p> : null}
+        <RunBar task={task} label={`Running up to N = ${formatCount(nMax)}…`} />
+        {cur?.problems.length ? (
+          <p className="mc-note">Left out: {cur.problems.map((p) => p.message).join('; ')}</p>
+        ) : null}
         <Heading>Running estimate</Heading>
         <Plot
           data={estData}

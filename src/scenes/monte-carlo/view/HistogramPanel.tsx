@@ -1,11 +1,11 @@
 /** Unbiasedness: the histogram of many independent estimates at fixed N, with their mean (core Welford). */
 import { useMemo, useRef } from 'react';
-import { formatNumber, NumberField, Panel, Plot, Readout, useThrottled, type PlotTrace } from '../../../ui';
+import { formatNumber, Panel, Plot, Readout, useThrottled, type PlotTrace } from '../../../ui';
 import { useAutoRun, type WorkerFactory } from '../../../workers';
 import { estimateFromTerms, histogram } from '../../../core/estimators';
 import type { ProblemArgs } from '../jobs';
 import { REDRAW_MS, useLegendRoom } from './hooks';
-import { arr, COLORS, L_HIST, RunBar } from './plotStyle';
+import { arr, COLORS, L_HIST, CountField, RunBar } from './plotStyle';
 import type { McTasks } from '../mc.worker';
 
 export function HistogramPanel({
@@ -67,29 +67,20 @@ export function HistogramPanel({
   return (
     <Panel title="Unbiasedness: many independent estimates (Q2 c)" className="mc-plots">
       <div ref={box}>
-        <div className="mc-inline">
-          <NumberField
-            label="samples per estimate"
-            value={N}
-            min={1}
-            max={10000}
-            step={1}
-            onChange={(v) => onN(Math.round(v))}
-            testId="hn-input"
-          />
-          <span className="mc-note">
-            {M} estimates, each from its own {N} sample{N === 1 ? '' : 's'} (selected pdf and sequence)
-          </span>
-        </div>
-        <RunBar
-          running={task.running}
-          waiting={task.waiting}
-          progress={task.progress}
-          onCancel={task.cancel}
-          onRun={task.run}
-          label="Estimating…"
+        <CountField
+          label="samples per estimate"
+          value={N}
+          min={1}
+          max={10000}
+          onChange={onN}
+          testId="hn-input"
+          note={
+            <>
+              {M} estimates, each from its own {N} sample{N === 1 ? '' : 's'} (selected pdf and sequence)
+            </>
+          }
         />
-        {task.error ? <p className="field-error">The run failed: {task.error.message}</p> : null}
+        <RunBar task={task} label="Estimating…" />
         <div className="readouts">
           <Readout
             id="hist-mean"

@@ -1,5 +1,5 @@
 /**
- * The animation of Q4 (issue 12): samples arrive one by one on the shared timeline (t = samples
+ * The animation of Q4: samples arrive one by one on the shared timeline (t = samples
  * drawn so far). Each xᵢ drops onto the integrand, its term f(xᵢ)/p(xᵢ) appears, and the running
  * estimate with its ± standard-error band and the |error| log-log curve grow with it — uniform and
  * importance sampling side by side, on the same random numbers ξᵢ. Everything at position t comes
@@ -22,6 +22,7 @@ import {
   writeReadout,
 } from '../../../ui';
 import { pow10Text } from '../../../ui/axis';
+import { clampExponent, fmt, linearScale, logScale, type Scale } from '../../../ui/chartScale';
 import {
   RACE_DURATION,
   RACE_MAX,
@@ -40,23 +41,16 @@ const PH = H - M.t - M.b;
 const C_U = 'var(--accent-2)';
 const C_I = 'var(--accent)';
 
-type Scale = (v: number) => number;
-const lin =
-  (d0: number, d1: number, r0: number, r1: number): Scale =>
-  (v) =>
-    r0 + ((v - d0) / (d1 - d0 || 1)) * (r1 - r0);
-const logS = (d0: number, d1: number, r0: number, r1: number): Scale => {
-  const l0 = Math.log10(d0);
-  const l1 = Math.log10(d1);
-  return (v) => r0 + ((Math.log10(v) - l0) / (l1 - l0 || 1)) * (r1 - r0);
-};
+// the shared chart guard: every coordinate finite, for any data (../../../ui/chartScale)
+const lin = linearScale;
+const logS = logScale;
 
 function path(xs: readonly number[], ys: readonly number[], sx: Scale, sy: Scale, from = 0): string {
   let d = '';
   for (let k = from; k < xs.length; k++) {
     const y = ys[k];
     if (!Number.isFinite(y)) continue;
-    d += `${d ? 'L' : 'M'}${sx(xs[k]).toFixed(1)},${sy(y).toFixed(1)}`;
+    d += `${d ? 'L' : 'M'}${fmt(sx(xs[k]))},${fmt(sy(y))}`;
   }
   return d;
 }
@@ -268,15 +262,16 @@ export const RaceFigure = memo(function RaceFigure({
     const nt: [number, string][] = N_TICKS.map((n) => [ex(n), String(n)]);
     const et: [number, string][] = [-1, 0, 1].map((q) => [ey(I + q * R), formatNumber(I + q * R, 4)]);
     // |error| log-log: from 10⁻⁵·|I| to |I| (smaller errors sit on the floor line)
-    const e0 = Math.floor(Math.log10(s)) - 5;
-    const e1 = Math.ceil(Math.log10(s)) + 0;
+    // (decades of a subnormal |I| stop at 10⁻³²³, the smallest power of ten a double holds)
+    const e1 = clampExponent(Math.ceil(Math.log10(s)));
+    const e0 = clampExponent(Math.min(e1 - 1, Math.floor(Math.log10(s)) - 5));
     const ly = logS(10 ** e0, 10 ** e1, M.t + PH, M.t);
     const lt: [number, string][] = [];
     for (let e = e0; e <= e1; e += e1 - e0 > 4 ? 2 : 1) lt.push([ly(10 ** e), pow10Text(e)]);
     // N^−½ guide through the uniform lane's final standard deviation: sd/√N is the expected error scale
     const last = track.max - 1;
     const sd = Math.sqrt(track.uniform.m2[last] / Math.max(1, last));
-    const guide = `M${ex(1).toFixed(1)},${ly(Math.max(sd, 10 ** e0)).toFixed(1)}L${ex(track.max).toFixed(1)},${ly(Math.max(sd / Math.sqrt(track.max), 10 ** e0)).toFixed(1)}`;
+    const guide = `M${fmt(ex(1))},${fmt(ly(Math.max(sd, 10 ** e0)))}L${fmt(ex(track.max))},${fmt(ly(Math.max(sd / Math.sqrt(track.max), 10 ** e0)))}`;
     return { sx, sy, fPath, pPath, xt, yt, ex, ey, nt, et, ly, lt, floor: 10 ** e0, guide, R };
   }, [track, curve, a, b, I, s]);
 
@@ -413,30 +408,42 @@ export const RaceFigure = memo(function RaceFigure({
             <path ref={setPath('iErr')} d={g.iErr} style={{ stroke: C_I }} className="mc-svg-line" />
           </svg>
         </figure>
-        <Lane id="uniform" name="Uniform, p = 1/(b − a)" color={C_U} r={laneU}>
-          <svg
-            viewBox={`0 0 ${W} ${H}`}
-            role="img"
-            aria-label="Running estimate of the uniform estimator with its ± standard-error band, against N on a log axis"
-          >
-            <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
-            <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
-            <path ref={setPath('uBand')} d={g.uBand} style={{ fill: C_U }} className="mc-svg-band" />
-            <path ref={setPath('uEst')} d={g.uEst} style={{ stroke: C_U }} className="mc-svg-line" />
-          </svg>
-        </Lane>
-        <Lane id="importance" name={`Importance, ${importanceLabel}`} color={C_I} r={laneI}>
-          <svg
-            viewBox={`0 0 ${W} ${H}`}
-            role="img"
-            aria-label="Running estimate of the importance-sampling estimator with its ± standard-error band, against N on a log axis"
-          >
-            <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
-            <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
-            <path ref={setPath('iBand')} d={g.iBand} style={{ fill: C_I }} className="mc-svg-band" />
-            <path ref={setPath('iEst')} d={g.iEst} style={{ stroke: C_I }} className="mc-svg-line" />
-          </svg>
-        </Lane>
+        {(
+          [
+            ['uniform', 'Uniform, p = 1/(b − a)', C_U, laneU, 'uniform estimator', 'u'],
+            [
+              'importance',
+              `Importance, ${importanceLabel}`,
+              C_I,
+              laneI,
+              'importance-sampling estimator',
+              'i',
+            ],
+          ] as const
+        ).map(([id, name, color, refs, what, k]) => (
+          <Lane key={id} id={id} name={name} color={color} r={refs}>
+            <svg
+              viewBox={`0 0 ${W} ${H}`}
+              role="img"
+              aria-label={`Running estimate of the ${what} with its ± standard-error band, against N on a log axis`}
+            >
+              <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
+              <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
+              <path
+                ref={setPath(`${k}Band`)}
+                d={g[`${k}Band`]}
+                style={{ fill: color }}
+                className="mc-svg-band"
+              />
+              <path
+                ref={setPath(`${k}Est`)}
+                d={g[`${k}Est`]}
+                style={{ stroke: color }}
+                className="mc-svg-line"
+              />
+            </svg>
+          </Lane>
+        ))}
       </div>
       <p className="mc-note">
         Blue: uniform; orange: importance (its pdf dashed on f). Dashed line: the exact I ={' '}
@@ -461,7 +468,7 @@ export function raceCurves(
 ) {
   const { ex, ey, ly, floor, R } = fig;
   const clampY = (v: number) => Math.max(I - R, Math.min(I + R, v));
-  const xy = (n: number, y: number) => `${ex(n).toFixed(1)},${y.toFixed(1)}`;
+  const xy = (n: number, y: number) => `${fmt(ex(n))},${fmt(y)}`;
   type Seg = { err: string | null; est: string | null; up: string | null; dn: string | null };
   const seg = (s: LaneState): Seg => {
     const n = s.n;
@@ -559,7 +566,7 @@ function rugPaths(xs: number[], y: number): string[] {
   const off = RECENT - xs.length;
   for (let j = 0; j < xs.length; j++) {
     const b = Math.min(RUG_BUCKETS - 1, Math.floor(((j + off) * RUG_BUCKETS) / RECENT));
-    out[b] += `M${xs[j].toFixed(1)},${y}v7`;
+    out[b] += `M${fmt(xs[j])},${fmt(y)}v7`;
   }
   return out;
 }

@@ -1,15 +1,14 @@
 /**
- * The race (RaceFigure) and Q4(d)'s numbers, each computing the shared track in its own render
- * (issue 15): the track is the largest computation of the scene's first screen, and React renders
+ * The race (RaceFigure) and Q4(d)'s numbers (exam/Q4d), each computing the shared track in its own
+ * render: the track is the largest computation of the scene's first screen, and React renders
  * a transition component by component, yielding between them, so out of MonteCarloScene's own
  * render it makes its own short task instead of lengthening the scene's. Both read one cached
  * track (the last one computed), so the second is free.
  */
 import type { ReactNode } from 'react';
-import { curves, RACE_MAX, raceAt, raceTrack, type Fn1, type RaceTrack } from '../model';
+import { curves, raceTrack, type Fn1, type RaceTrack } from '../model';
 import type { Pdf1D } from '../../../core/sampling/pdf1d';
 import { RaceFigure } from './RaceFigure';
-import { Q4d } from './ExamQ4';
 
 /** What the race is computed from (RaceFigure's track and curve). */
 export interface RaceInput {
@@ -35,7 +34,7 @@ const same = (p: RaceInput, q: RaceInput) =>
   p.seed === q.seed;
 
 /** The track and the drawn curve of `input`, computed once per input (model.raceTrack, model.curves). */
-function raceOf(input: RaceInput): { track: RaceTrack; curve: ReturnType<typeof curves> } {
+export function raceOf(input: RaceInput): { track: RaceTrack; curve: ReturnType<typeof curves> } {
   if (last && (last.input === input || same(last.input, input))) return last;
   const { f, a, b, sampler, density, exact, seed } = input;
   last = { input, track: raceTrack(f, a, b, sampler, exact, seed), curve: curves(f, density, a, b, 200) };
@@ -69,30 +68,6 @@ export function RaceSection({
       t={t}
       play={play}
       setParams={setParams}
-    />
-  );
-}
-
-/** Q4(d) with the errors of the whole race (nothing without a race). */
-export function Q4dRace({
-  input,
-  importanceIsExam,
-  onWhole,
-}: {
-  input: RaceInput | null;
-  importanceIsExam: boolean;
-  onWhole: () => void;
-}) {
-  if (!input) return null;
-  const { track } = raceOf(input);
-  const end = raceAt(track, track.max, []);
-  return (
-    <Q4d
-      uErr={end.uniform.absError}
-      iErr={end.importance.absError}
-      N={RACE_MAX}
-      importanceIsExam={importanceIsExam}
-      onWhole={onWhole}
     />
   );
 }

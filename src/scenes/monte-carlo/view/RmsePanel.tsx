@@ -1,12 +1,12 @@
 /** RMSE over independent (randomized) runs against N, and against the measured run time. */
 import { useMemo, useRef } from 'react';
-import { NumberField, Panel, Plot, useThrottled, type PlotTrace } from '../../../ui';
+import { Panel, Plot, useThrottled, type PlotTrace } from '../../../ui';
 import { useAutoRun, type WorkerFactory } from '../../../workers';
 import { atRoundingLevel, sortedByX } from '../model';
 import { formatCount } from '../../../ui/format';
 import type { ProblemArgs } from '../jobs';
 import { REDRAW_MS, useLegendRoom } from './hooks';
-import { arr, clampArr, COLORS, Heading, hexA, L_RMSE, L_TIME, RunBar } from './plotStyle';
+import { arr, clampArr, COLORS, Heading, hexA, L_RMSE, L_TIME, CountField, RunBar } from './plotStyle';
 import type { McTasks } from '../mc.worker';
 
 export function RmsePanel({
@@ -28,7 +28,7 @@ export function RmsePanel({
   const key = JSON.stringify([args, nMax, runs]);
   const task = useAutoRun(makeWorker, 'rmse', { ...args, nMax, runs }, { key, box, queue: 'monte-carlo' });
   const cur = useThrottled(task.result ?? task.partial, REDRAW_MS, !task.running);
-  const rm = cur?.rmse ?? [];
+  const rm = useMemo(() => cur?.rmse ?? [], [cur]);
   const rmExactLabels = rm.filter((s) => atRoundingLevel(s.rmse, exact)).map((s) => s.label);
 
   const rmseData = useMemo<PlotTrace[]>(() => {
@@ -105,29 +105,20 @@ export function RmsePanel({
   return (
     <Panel title="RMSE over independent runs, and against run time" className="mc-plots">
       <div ref={box}>
-        <div className="mc-inline">
-          <NumberField
-            label="runs"
-            value={runs}
-            min={4}
-            max={256}
-            step={1}
-            onChange={(v) => onRuns(Math.round(v))}
-            testId="runs-input"
-          />
-          <span className="mc-note">
-            {runsDone} run{runsDone === 1 ? '' : 's'} per strategy so far, N up to {formatCount(nMax)}
-          </span>
-        </div>
-        <RunBar
-          running={task.running}
-          waiting={task.waiting}
-          progress={task.progress}
-          onCancel={task.cancel}
-          onRun={task.run}
-          label="Independent runs…"
+        <CountField
+          label="runs"
+          value={runs}
+          min={4}
+          max={256}
+          onChange={onRuns}
+          testId="runs-input"
+          note={
+            <>
+              {runsDone} run{runsDone === 1 ? '' : 's'} per strategy so far, N up to {formatCount(nMax)}
+            </>
+          }
         />
-        {task.error ? <p className="field-error">The run failed: {task.error.message}</p> : null}
+        <RunBar task={task} label="Independent runs…" />
         <Heading>RMSE over the runs (band: 10–90 % of |error|)</Heading>
         <Plot
           data={rmseData}

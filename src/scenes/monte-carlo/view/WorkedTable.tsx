@@ -63,7 +63,7 @@ export function SampleRows({
       </table>
       {table.problems.map((p, i) => (
         <Notice key={i} kind="warn">
-          {p}
+          {p.message}
         </Notice>
       ))}
     </div>

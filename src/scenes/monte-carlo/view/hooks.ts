@@ -30,7 +30,7 @@ export const REDRAW_MS = 400;
 
 export /**
  * estimate1D(problem, n) on the main thread, one batch of points per short task (ui/chunked), so
- * neither the scene's first render nor a parameter change runs it in one long task (issue 15).
+ * neither the scene's first render nor a parameter change runs it in one long task.
  * Null while it runs (and when `problem` is null); the result is exactly estimate1D's. A new
  * problem or n cancels the run in progress. `problem` is compared by identity (memoise it).
  */

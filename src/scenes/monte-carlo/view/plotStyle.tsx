@@ -1,5 +1,7 @@
 /** Shared look of the scene's Plotly views: colours, legend and margins, layouts, the run bar. */
 import type { ReactNode } from 'react';
+import { NumberField } from '../../../ui';
+import type { WorkerJob } from '../../../workers';
 
 export const COLORS = ['#1f5fa8', '#a13f00', '#1d7a3a', '#7b3fa1', '#b8860b', '#d6336c', '#117a8b'];
 export const arr = (a: ArrayLike<number>) => Array.from(a);
@@ -15,24 +17,16 @@ export const L_EST = {
   legend: LEGEND,
   margin: MARGIN,
 };
-export const L_ERR = {
-  xaxis: { type: 'log', title: { text: 'N' } },
-  yaxis: { type: 'log', title: { text: '|estimate − exact|' }, exponentformat: 'power' },
+/** A log-log layout with these axis titles. */
+const logLog = (x: string, y: string) => ({
+  xaxis: { type: 'log', title: { text: x } },
+  yaxis: { type: 'log', title: { text: y }, exponentformat: 'power' },
   legend: LEGEND,
   margin: MARGIN,
-};
-export const L_RMSE = {
-  xaxis: { type: 'log', title: { text: 'N' } },
-  yaxis: { type: 'log', title: { text: 'RMSE' }, exponentformat: 'power' },
-  legend: LEGEND,
-  margin: MARGIN,
-};
-export const L_TIME = {
-  xaxis: { type: 'log', title: { text: 'ms per estimate (measured here)' } },
-  yaxis: { type: 'log', title: { text: 'RMSE' }, exponentformat: 'power' },
-  legend: LEGEND,
-  margin: MARGIN,
-};
+});
+export const L_ERR = logLog('N', '|estimate − exact|');
+export const L_RMSE = logLog('N', 'RMSE');
+export const L_TIME = logLog('ms per estimate (measured here)', 'RMSE');
 export const L_HIST = {
   xaxis: { title: { text: 'estimate ⟨I⟩' } },
   yaxis: { title: { text: 'count' } },
@@ -45,40 +39,70 @@ export function Heading({ children }: { children: ReactNode }) {
   return <h3 className="mc-plot-title">{children}</h3>;
 }
 
-export function RunBar({
-  running,
-  waiting,
-  progress,
-  onCancel,
-  onRun,
+type RunTask = Pick<
+  WorkerJob<unknown, unknown>,
+  'running' | 'waiting' | 'progress' | 'error' | 'cancel' | 'run'
+>;
+
+/** A job's progress with Cancel while it runs, Run again when it is done, and its failure. */
+export function RunBar({ task, label }: { task: RunTask; label: ReactNode }) {
+  const { running, waiting, progress } = task;
+  return (
+    <>
+      <div className="mc-runbar">
+        {waiting && !running ? (
+          <span role="status">Waiting for the run above to finish…</span>
+        ) : running ? (
+          <>
+            <progress max={1} value={progress} aria-label="progress" />
+            <span role="status">
+              {label} {Math.round(progress * 100)} %
+            </span>
+            <button type="button" onClick={task.cancel}>
+              Cancel
+            </button>
+          </>
+        ) : (
+          <button type="button" onClick={task.run}>
+            Run again
+          </button>
+        )}
+      </div>
+      {task.error ? <p className="field-error">The run failed: {task.error.message}</p> : null}
+    </>
+  );
+}
+
+/** An integer field with a note beside it (how many runs or samples a panel uses). */
+export function CountField({
   label,
+  value,
+  min,
+  max,
+  onChange,
+  testId,
+  note,
 }: {
-  running: boolean;
-  waiting: boolean;
-  progress: number;
-  onCancel: () => void;
-  onRun: () => void;
-  label: ReactNode;
+  label: string;
+  value: number;
+  min: number;
+  max: number;
+  onChange: (v: number) => void;
+  testId: string;
+  note: ReactNode;
 }) {
   return (
-    <div className="mc-runbar">
-      {waiting && !running ? (
-        <span role="status">Waiting for the run above to finish…</span>
-      ) : running ? (
-        <>
-          <progress max={1} value={progress} aria-label="progress" />
-          <span role="status">
-            {label} {Math.round(progress * 100)} %
-          </span>
-          <button type="button" onClick={onCancel}>
-            Cancel
-          </button>
-        </>
-      ) : (
-        <button type="button" onClick={onRun}>
-          Run again
-        </button>
-      )}
+    <div className="mc-inline">
+      <NumberField
+        label={label}
+        value={value}
+        min={min}
+        max={max}
+        step={1}
+        onChange={(v) => onChange(Math.round(v))}
+        testId={testId}
+      />
+      <span className="mc-note">{note}</span>
     </div>
   );
 }

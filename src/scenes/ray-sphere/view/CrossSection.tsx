@@ -21,13 +21,17 @@ import {
   type V3,
 } from '../model';
 
-export interface CrossSectionProps {
+/** The ray and sphere a figure draws: the checked inputs, the chosen method's hit, |o − C| / r. */
+export interface RayState {
   o: V3;
   d: V3;
   c: V3;
   r: number;
   res: RaySphereHit | null;
   distanceRatio: number;
+}
+
+export interface CrossSectionProps extends RayState {
   onChange: (patch: { o?: V3; d?: V3; c?: V3; r?: number }) => void;
   /** More points to keep in view (e.g. the ends of a sweep), so the view does not jump while animating. */
   fitExtra?: readonly V3[];
@@ -36,7 +40,10 @@ export interface CrossSectionProps {
 }
 
 /** What moves while a sweep plays. */
-export type CrossRay = Pick<CrossSectionProps, 'o' | 'd' | 'c' | 'r' | 'res' | 'distanceRatio'>;
+export type CrossRay = RayState;
+
+/** Each coordinate rounded to `step` (see tidy). */
+const tidyVec = (q: V3, step: number): V3 => [tidy(q[0], step), tidy(q[1], step), tidy(q[2], step)];
 
 /** Above this |o − c| / r the view centres on the sphere and leaves the origin off screen. */
 const FAR = 60;
@@ -323,7 +330,7 @@ export function CrossSection({
   const apply = (target: Target, x: number, y: number) => {
     const g = cur();
     const { fr, O2, C2, dl, v, step } = g;
-    const t = (q: V3) => q.map((z) => tidy(z, step)) as V3;
+    const t = (q: V3) => tidyVec(q, step);
     if (target === 'o') onChange({ o: t(fromFrame(fr, x, y)) });
     else if (target === 'c') onChange({ c: t(fromFrame(fr, x, y)) });
     else if (target === 'r') {
@@ -336,7 +343,7 @@ export function CrossSection({
       if (n < 4 * v.s) return;
       const w = dirFromFrame(fr, (vx / n) * dl, (vy / n) * dl);
       const ds = 10 ** Math.floor(Math.log10(dl / 500));
-      const nd = w.map((z) => tidy(z, ds)) as V3;
+      const nd = tidyVec(w, ds);
       if (nd.some((z) => z !== 0)) onChange({ d: nd });
     }
   };

@@ -2,7 +2,7 @@
  * The precision views: textbook vs robust vs double-double reference (table), the rendered image
  * of a distant sphere by each method, and the error against distance.
  */
-import { useEffect, useMemo, useRef, useState } from 'react';
+import { useEffect, useMemo, useRef, useState, type RefObject } from 'react';
 import { Plot, Slider, useSeenOnce, type PlotTrace } from '../../../ui';
 import { ERROR_FLOOR, errorVsDistance, renderDistant, shadeImage, type RaySphereModel } from '../model';
 
@@ -16,6 +16,14 @@ function fmtErr(e: number | null): { text: string; cls: string } {
 
 const num = (x: number | null) => (x === null ? 'none' : String(x));
 
+/** The table's rows: the quantity, its test id, and where the value and its error are. */
+const QUANTITIES = [
+  { label: 'Δ = b² − 4ac', id: 'disc', value: 'discriminant', err: 'errDisc' },
+  { label: 't₀', id: 't0', value: 't0', err: 'errT0' },
+  { label: 't₁', id: 't1', value: 't1', err: 'errT1' },
+  { label: 't-hit', id: 'hit', value: 'tHit', err: 'errHit' },
+] as const;
+
 /** Side-by-side table of both methods against the reference. */
 export function PrecisionTable({ model }: { model: RaySphereModel }) {
   const ref = model.reference;
@@ -24,40 +32,14 @@ export function PrecisionTable({ model }: { model: RaySphereModel }) {
     model.rows.find((r) => r.method === 'naive')!,
     model.rows.find((r) => r.method === 'stable')!,
   ];
-  const rows: { label: string; n: string; s: string; ref: string; en: number | null; es: number | null }[] = [
-    {
-      label: 'Δ = b² − 4ac',
-      n: num(naive.res.discriminant),
-      s: num(stable.res.discriminant),
-      ref: num(ref.discriminant),
-      en: naive.errDisc,
-      es: stable.errDisc,
-    },
-    {
-      label: 't₀',
-      n: num(naive.res.t0),
-      s: num(stable.res.t0),
-      ref: num(ref.t0),
-      en: naive.errT0,
-      es: stable.errT0,
-    },
-    {
-      label: 't₁',
-      n: num(naive.res.t1),
-      s: num(stable.res.t1),
-      ref: num(ref.t1),
-      en: naive.errT1,
-      es: stable.errT1,
-    },
-    {
-      label: 't-hit',
-      n: num(naive.res.tHit),
-      s: num(stable.res.tHit),
-      ref: num(ref.tHit),
-      en: naive.errHit,
-      es: stable.errHit,
-    },
-  ];
+  const rows = QUANTITIES.map((q) => ({
+    ...q,
+    n: num(naive.res[q.value]),
+    s: num(stable.res[q.value]),
+    ref: num(ref[q.value]),
+    en: naive[q.err],
+    es: stable[q.err],
+  }));
   const cell = (v: string, e: number | null, testId: string, refV: string) => {
     const f = fmtErr(e);
     const abs =
@@ -93,17 +75,13 @@ export function PrecisionTable({ model }: { model: RaySphereModel }) {
           </tr>
         </thead>
         <tbody>
-          {rows.map((r, i) => (
+          {rows.map((r) => (
             <tr key={r.label}>
               <th scope="row">{r.label}</th>
-              {cell(r.n, r.en, `naive-${['disc', 't0', 't1', 'hit'][i]}`, r.ref)}
-              {cell(r.s, r.es, `stable-${['disc', 't0', 't1', 'hit'][i]}`, r.ref)}
+              {cell(r.n, r.en, `naive-${r.id}`, r.ref)}
+              {cell(r.s, r.es, `stable-${r.id}`, r.ref)}
               <td>
-                <span
-                  className="mono"
-                  data-testid={`ref-${['disc', 't0', 't1', 'hit'][i]}`}
-                  data-value={r.ref}
-                >
+                <span className="mono" data-testid={`ref-${r.id}`} data-value={r.ref}>
                   {r.ref}
                 </span>
               </td>
@@ -111,22 +89,17 @@ export function PrecisionTable({ model }: { model: RaySphereModel }) {
           ))}
           <tr>
             <th scope="row">case</th>
-            <td
-              className={naive.caseRight ? '' : 'rs-wrong'}
-              data-testid="naive-case"
-              data-value={naive.res.case}
-            >
-              {naive.res.case}
-              {naive.caseRight ? '' : ' ✗ wrong'}
-            </td>
-            <td
-              className={stable.caseRight ? '' : 'rs-wrong'}
-              data-testid="stable-case"
-              data-value={stable.res.case}
-            >
-              {stable.res.case}
-              {stable.caseRight ? '' : ' ✗ wrong'}
-            </td>
+            {[naive, stable].map((row) => (
+              <td
+                key={row.method}
+                className={row.caseRight ? '' : 'rs-wrong'}
+                data-testid={`${row.method}-case`}
+                data-value={row.res.case}
+              >
+                {row.res.case}
+                {row.caseRight ? '' : ' ✗ wrong'}
+              </td>
+            ))}
             <td data-testid="ref-case" data-value={ref.case}>
               {ref.case}
             </td>
@@ -142,11 +115,41 @@ const BG: [number, number, number] = [32, 35, 42];
 const FG: [number, number, number] = [236, 228, 206];
 const HOLE: [number, number, number] = [255, 45, 149];
 
+/** One method's render of the distant sphere, with its count of pixels hit (undefined: not yet). */
+function MethodImage({
+  canvasRef,
+  name,
+  id,
+  hits,
+}: {
+  canvasRef: RefObject<HTMLCanvasElement | null>;
+  name: string;
+  id: string;
+  hits: number | undefined;
+}) {
+  return (
+    <figure>
+      <canvas
+        ref={canvasRef}
+        width={IMG}
+        height={IMG}
+        className="rs-canvas"
+        aria-label={`${name} render of the distant sphere`}
+        data-testid={`img-${id}`}
+        data-hits={hits}
+      />
+      <figcaption>
+        {name}: {hits ?? '…'} px hit
+      </figcaption>
+    </figure>
+  );
+}
+
 /** Two small renders of a distant sphere, one ray per pixel, one per method. */
 export function DistantImages() {
   const [exp, setExp] = useState(7.5);
   const dist = 10 ** exp;
-  // computed once the panel comes near the screen (it is under "explore further"; issue 15)
+  // computed once the panel comes near the screen (it is under "explore further")
   const box = useRef<HTMLDivElement>(null);
   const seen = useSeenOnce(box);
   const img = useMemo(
@@ -179,30 +182,8 @@ export function DistantImages() {
         testId="distant-exp"
       />
       <div className="rs-images">
-        <figure>
-          <canvas
-            ref={naiveRef}
-            width={IMG}
-            height={IMG}
-            className="rs-canvas"
-            aria-label="Textbook render of the distant sphere"
-            data-testid="img-naive"
-            data-hits={img?.naiveHits}
-          />
-          <figcaption>Textbook: {img ? img.naiveHits : '…'} px hit</figcaption>
-        </figure>
-        <figure>
-          <canvas
-            ref={stableRef}
-            width={IMG}
-            height={IMG}
-            className="rs-canvas"
-            aria-label="Robust render of the distant sphere"
-            data-testid="img-stable"
-            data-hits={img?.stableHits}
-          />
-          <figcaption>Robust: {img ? img.stableHits : '…'} px hit</figcaption>
-        </figure>
+        <MethodImage canvasRef={naiveRef} name="Textbook" id="naive" hits={img?.naiveHits} />
+        <MethodImage canvasRef={stableRef} name="Robust" id="stable" hits={img?.stableHits} />
       </div>
       {img ? (
         <p className="rs-small" data-testid="distant-summary" data-disagree={img.disagree}>
@@ -229,6 +210,16 @@ export function DistantImages() {
   );
 }
 
+const NAIVE_COLOR = '#c0392b';
+const STABLE_COLOR = '#1f5fa8';
+
+/** A curve of the error plot: a line, with markers on the Δ curves. */
+function curve(x: number[], y: number[], name: string, line: object, markers = false): PlotTrace {
+  return markers
+    ? { x, y, name, mode: 'lines+markers', line, marker: { size: 4 } }
+    : { x, y, name, mode: 'lines', line };
+}
+
 /** The error of each method against distance, with the current configuration marked. */
 export function ErrorVsDistance({
   current,
@@ -237,7 +228,7 @@ export function ErrorVsDistance({
   current: number;
   here?: { naive: number | null; stable: number | null };
 }) {
-  // computed once the plot comes near the screen (it is under "explore further"; issue 15)
+  // computed once the plot comes near the screen (it is under "explore further")
   const box = useRef<HTMLDivElement>(null);
   const seen = useSeenOnce(box);
   const s = useMemo(() => (seen ? errorVsDistance() : null), [seen]);
@@ -247,50 +238,22 @@ export function ErrorVsDistance({
       !s
         ? []
         : [
-            {
-              x: s.dist,
-              y: s.discNaive,
-              name: 'textbook Δ',
-              mode: 'lines+markers',
-              line: { color: '#c0392b' },
-              marker: { size: 4 },
-            },
-            {
-              x: s.dist,
-              y: s.discStable,
-              name: 'robust Δ',
-              mode: 'lines+markers',
-              line: { color: '#1f5fa8' },
-              marker: { size: 4 },
-            },
-            {
-              x: s.dist,
-              y: s.hitNaive,
-              name: 'textbook t-hit',
-              mode: 'lines',
-              line: { color: '#c0392b', dash: 'dot' },
-            },
-            {
-              x: s.dist,
-              y: s.hitStable,
-              name: 'robust t-hit',
-              mode: 'lines',
-              line: { color: '#1f5fa8', dash: 'dot' },
-            },
-            {
-              x: s.dist,
-              y: s.dist.map((D) => Math.min(1, u * D * D)),
-              name: 'u (D/r)²',
-              mode: 'lines',
-              line: { color: '#999', width: 1, dash: 'dash' },
-            },
-            {
-              x: s.dist,
-              y: s.dist.map((D) => Math.min(1, u * D)),
-              name: 'u (D/r)',
-              mode: 'lines',
-              line: { color: '#bbb', width: 1, dash: 'dash' },
-            },
+            curve(s.dist, s.discNaive, 'textbook Δ', { color: NAIVE_COLOR }, true),
+            curve(s.dist, s.discStable, 'robust Δ', { color: STABLE_COLOR }, true),
+            curve(s.dist, s.hitNaive, 'textbook t-hit', { color: NAIVE_COLOR, dash: 'dot' }),
+            curve(s.dist, s.hitStable, 'robust t-hit', { color: STABLE_COLOR, dash: 'dot' }),
+            curve(
+              s.dist,
+              s.dist.map((D) => Math.min(1, u * D * D)),
+              'u (D/r)²',
+              { color: '#999', width: 1, dash: 'dash' },
+            ),
+            curve(
+              s.dist,
+              s.dist.map((D) => Math.min(1, u * D)),
+              'u (D/r)',
+              { color: '#bbb', width: 1, dash: 'dash' },
+            ),
             ...(here && current > 1 && Number.isFinite(current)
               ? [
                   {
@@ -303,7 +266,7 @@ export function ErrorVsDistance({
                     marker: {
                       size: 12,
                       symbol: 'x',
-                      color: ['#c0392b', '#1f5fa8'],
+                      color: [NAIVE_COLOR, STABLE_COLOR],
                       line: { width: 1, color: '#222' },
                     },
                   },

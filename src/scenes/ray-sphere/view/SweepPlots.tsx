@@ -9,6 +9,7 @@ import { memo, useLayoutEffect, useMemo, useRef, type ReactNode } from 'react';
 import type { RaySphereCase, RaySphereHit } from '../../../core/geometry';
 import type { SweepSeries } from '../model';
 import { useWidth } from '../../../ui/useWidth';
+import { linearScale } from '../../../ui/chartScale';
 import { useSectionWidth } from '../../../ui/Deferred';
 import { niceTicks, tickLabel } from '../../../ui/axis';
 
@@ -37,8 +38,9 @@ function makeFrame(
   const x1 = W - PAD.r;
   const y0 = padTop;
   const y1 = H - padBottom;
-  const X = (x: number) => x0 + ((x - xd[0]) / (xd[1] - xd[0])) * (x1 - x0);
-  const Y = (y: number) => y1 - ((y - yd[0]) / (yd[1] - yd[0])) * (y1 - y0);
+  // the shared chart guard: finite coordinates for any data (../../../ui/chartScale)
+  const X = linearScale(xd[0], xd[1], x0, x1);
+  const Y = linearScale(yd[0], yd[1], y1, y0);
   return { W, H, X, Y, x0, x1, y0, y1 };
 }
 
@@ -99,6 +101,14 @@ function Axes({
   );
 }
 
+/** The refs of a plot's box and SVG, and the width to draw at (the box's, at least 260 px). */
+function usePlotBox() {
+  const boxRef = useRef<HTMLDivElement>(null);
+  const svgRef = useRef<SVGSVGElement>(null);
+  const W = Math.max(260, useWidth(boxRef, useSectionWidth() ?? 520));
+  return { boxRef, svgRef, W };
+}
+
 function SvgBox({
   children,
   height,
@@ -107,6 +117,8 @@ function SvgBox({
   W,
   boxRef,
   svgRef,
+  clipId,
+  f,
 }: {
   children: ReactNode;
   height: number;
@@ -115,6 +127,9 @@ function SvgBox({
   W: number;
   boxRef: React.RefObject<HTMLDivElement | null>;
   svgRef?: React.RefObject<SVGSVGElement | null>;
+  /** The id of a clip path to the plot area of `f` (drawn before the children). */
+  clipId: string;
+  f: Frame;
 }) {
   return (
     <div ref={boxRef} className="mp-box">
@@ -128,6 +143,11 @@ function SvgBox({
         data-testid={testId}
         className="mp-svg"
       >
+        <defs>
+          <clipPath id={clipId}>
+            <rect x={f.x0} y={f.y0} width={f.x1 - f.x0} height={f.y1 - f.y0} />
+          </clipPath>
+        </defs>
         {children}
       </svg>
     </div>
@@ -184,9 +204,8 @@ function drawG(svg: SVGSVGElement, f: Frame, w: SweepSeries['gWindow'], res: Ray
 
 /** g(t) of the ray at the current position, on the sweep's fixed window. */
 export function GSweepPlot({ res, window: w, drawRef }: GPlotProps) {
-  const box = useRef<HTMLDivElement>(null);
-  const svg = useRef<SVGSVGElement>(null);
-  const W = Math.max(260, useWidth(box, useSectionWidth() ?? 520));
+  const plot = usePlotBox();
+  const { W, svgRef: svg } = plot;
   const H = Math.round(Math.min(300, Math.max(220, W * 0.5)));
   const xd = useMemo<[number, number]>(() => [w.tMin - w.shift, w.tMax - w.shift], [w.tMin, w.tMax, w.shift]);
   const yd = useMemo<[number, number]>(() => [w.gMin, w.gMax], [w.gMin, w.gMax]);
@@ -208,18 +227,13 @@ export function GSweepPlot({ res, window: w, drawRef }: GPlotProps) {
   const showBehind = w.shift === 0 && w.tMin < 0;
   return (
     <SvgBox
-      boxRef={box}
-      svgRef={svg}
-      W={W}
+      {...plot}
       height={H}
       label="The quadratic g(t) for the ray at the current position, with its real roots on the t axis"
       testId="g-plot"
+      clipId="rs-gclip"
+      f={f}
     >
-      <defs>
-        <clipPath id="rs-gclip">
-          <rect x={f.x0} y={f.y0} width={f.x1 - f.x0} height={f.y1 - f.y0} />
-        </clipPath>
-      </defs>
       {axes}
       {showBehind ? (
         <rect
@@ -298,7 +312,7 @@ const DeltaStatic = memo(function DeltaStatic({
   });
   // the textbook Δ as dots: its rounding noise shows as scatter, its wrong signs as dots across 0.
   // Two paths of circles (right sign, wrong sign) rather than an element per sample: ~240 fewer
-  // SVG nodes to build, style and lay out when the page opens (issue 15).
+  // SVG nodes to build, style and lay out when the page opens.
   let dotsOk = '';
   let dotsWrong = '';
   let nWrong = 0;
@@ -379,9 +393,8 @@ export function DeltaSweepPlot(
     drawRef?: { current: ((x: number, discStable: number | null, discNaive: number | null) => void) | null };
   },
 ) {
-  const box = useRef<HTMLDivElement>(null);
-  const svg = useRef<SVGSVGElement>(null);
-  const W = Math.max(260, useWidth(box, useSectionWidth() ?? 520));
+  const plot = usePlotBox();
+  const { W, svgRef: svg } = plot;
   const H = Math.round(Math.min(340, Math.max(270, W * 0.58)));
   const s = p.series;
   const xd = useMemo<[number, number]>(() => {
@@ -432,18 +445,13 @@ export function DeltaSweepPlot(
   useLayoutEffect(() => draw(...last.current));
   return (
     <SvgBox
-      boxRef={box}
-      svgRef={svg}
-      W={W}
+      {...plot}
       height={H}
       label="The discriminant Δ against the sweep coordinate, robust and textbook, with the current position"
       testId="delta-plot"
+      clipId="rs-dclip"
+      f={f}
     >
-      <defs>
-        <clipPath id="rs-dclip">
-          <rect x={f.x0} y={f.y0} width={f.x1 - f.x0} height={f.y1 - f.y0} />
-        </clipPath>
-      </defs>
       <DeltaStatic
         series={s}
         tangentX={p.tangentX}

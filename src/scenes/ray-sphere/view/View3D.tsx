@@ -7,16 +7,11 @@
 import { useEffect, useRef } from 'react';
 import type * as THREE from 'three';
 import { Viewport, type ViewportContext } from '../../../three';
-import { intersectRaySphere, type RaySphereHit } from '../../../core/geometry';
+import { intersectRaySphere } from '../../../core/geometry';
 import type { V3 } from '../model';
+import type { RayState } from './CrossSection';
 
-export interface View3DProps {
-  o: V3;
-  d: V3;
-  c: V3;
-  r: number;
-  res: RaySphereHit | null;
-  distanceRatio: number;
+export interface View3DProps extends RayState {
   height?: number;
   dark?: boolean;
   /** More points to keep in view (the ends of a sweep), so the view does not rescale while animating. */

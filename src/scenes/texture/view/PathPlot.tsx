@@ -10,6 +10,7 @@ import { memo, useMemo, useRef } from 'react';
 import { useWidth } from '../../../ui/useWidth';
 import { niceTicks } from '../../../ui/axis';
 import type { PathProfile } from '../model';
+import { linearScale } from '../../../ui/chartScale';
 import { fmtShort } from './GridView';
 
 const M = { l: 46, r: 12, t: 10, b: 34 };
@@ -20,8 +21,9 @@ interface Scale {
   y0: number;
   y1: number;
 }
-const X = (s: Scale, t: number) => M.l + t * (s.w - M.l - M.r);
-const Y = (s: Scale, y: number) => M.t + ((s.y1 - y) / (s.y1 - s.y0)) * (s.h - M.t - M.b);
+// the shared chart guard: finite coordinates for any data (../../../ui/chartScale)
+const X = (s: Scale, t: number) => linearScale(0, 1, M.l, s.w - M.r)(t);
+const Y = (s: Scale, y: number) => linearScale(s.y1, s.y0, M.t, s.h - M.b)(y);
 
 const Curves = memo(function Curves({ profile, s }: { profile: PathProfile; s: Scale }) {
   // bilinear: one path, moving (M) where it breaks at a jump

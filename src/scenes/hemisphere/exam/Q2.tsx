@@ -5,12 +5,12 @@
 import type { ReactNode } from 'react';
 import { ExamPart, Derivation as DerivationBlock, LiveAnswer, KeyNote } from '../../../ui/exam';
 import { MathTex, formatNumber } from '../../../ui';
-import { Steps } from './Steps';
-import { texNum } from './tex';
+import { Steps } from '../view/Steps';
+import { texNum } from '../view/tex';
 
 const M = ({ t }: { t: string }) => <MathTex tex={t} />;
 
-export function ExamQ2({
+export function Q2({
   solidAngle,
   lobeTex,
   answer2a,

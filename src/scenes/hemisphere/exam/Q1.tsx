@@ -1,26 +1,28 @@
 /**
- * Exam Q1, part by part (issue 11): what the exam asks, the written derivation with the steps the
+ * Exam Q1, part by part: what the exam asks, the written derivation with the steps the
  * key awards marks for (every number computed live by the model), then the live answer. The
  * derivation is always the exam's lobe k cos θ e^φ; another lobe's derivation is in "Explore further".
  */
 import type { ReactNode } from 'react';
 import { ExamPart, Derivation as DerivationBlock, LiveAnswer, KeyNote } from '../../../ui/exam';
-import { MathTex, formatNumber } from '../../../ui';
+import { MathTex, Readout, formatNumber } from '../../../ui';
 import { examInversion, type ExamChecks } from '../model';
-import { texNum } from './tex';
-import { Steps } from './Steps';
+import { texNum } from '../view/tex';
+import { Steps } from '../view/Steps';
 
 const M = ({ t }: { t: string }) => <MathTex tex={t} />;
 
-export interface ExamQ1Props {
+export interface Q1Props {
   c: ExamChecks;
   /** The first sample's (ξ₁, ξ₂) of the current point set: the worked example of (c) and (d). */
   xi: { xi1: number; xi2: number } | null;
   /** True when the page shows the divergence panel for the paper's identity (jacobian=inverted). */
   invertedShown: boolean;
   onShowInverted: () => void;
-  /** Live answers, supplied by the scene (readouts, the sample check, the divergence panel). */
-  answer1a: ReactNode;
+  /** k of the sampled lobe (null without one), and what it is (the exam's formula or the lobe's name). */
+  k: number | null;
+  kNote: string;
+  /** Live answers, supplied by the scene (the sample check, the divergence panel). */
   inverted: ReactNode;
   answer1d: ReactNode;
   /** A note when the sampled lobe is not the exam's. */
@@ -29,17 +31,18 @@ export interface ExamQ1Props {
   mainTestId: boolean;
 }
 
-export function ExamQ1({
+export function Q1({
   c,
   xi,
   invertedShown,
   onShowInverted,
-  answer1a,
+  k: kValue,
+  kNote,
   inverted,
   answer1d,
   otherLobe,
   mainTestId,
-}: ExamQ1Props) {
+}: Q1Props) {
   const k = texNum(c.k, 8);
   const E = texNum(c.e2piMinus1, 8);
   const ex = xi ? examInversion(xi.xi1, xi.xi2) : null;
@@ -109,7 +112,11 @@ export function ExamQ1({
             ]}
           />
         </DerivationBlock>
-        <LiveAnswer testId="answer-1a">{answer1a}</LiveAnswer>
+        <LiveAnswer testId="answer-1a">
+          <div className="readouts">
+            <Readout id="k" label="k (normalization of p(ω))" value={kValue} digits={8} note={kNote} />
+          </div>
+        </LiveAnswer>
       </ExamPart>
 
       <ExamPart

@@ -1,0 +1,46 @@
+/**
+ * Q2(c)'s empirical check: repeat the estimate many times with fresh samples (on request) and show
+ * the histogram of the estimates around ∫ f dω.
+ */
+import type { ComponentProps } from 'react';
+import { Notice } from '../../../ui';
+import type { WorkerJob } from '../../../workers';
+import type { RepeatResult } from '../jobs';
+import { RepeatView } from './Q2Panel';
+
+export function RepeatSection({
+  repeat,
+  fOk,
+  exact,
+  ...view
+}: {
+  repeat: Pick<WorkerJob<RepeatResult, unknown>, 'result' | 'running' | 'progress' | 'error' | 'run'>;
+  /** Whether the integrand compiled. */
+  fOk: boolean;
+  exact: number | null;
+} & Omit<ComponentProps<typeof RepeatView>, 'result' | 'exact'>) {
+  return (
+    <>
+      <div className="repeat-row">
+        <button
+          type="button"
+          onClick={repeat.run}
+          disabled={!fOk || repeat.running}
+          data-testid="repeat-button"
+        >
+          Repeat {view.runs} times (N = {view.perRun} each)
+        </button>
+        {repeat.running ? <span role="status"> running… {Math.round(repeat.progress * 100)} %</span> : null}
+        {repeat.error ? <Notice kind="error">{repeat.error.message}</Notice> : null}
+      </div>
+      {repeat.result && exact !== null ? (
+        <RepeatView result={repeat.result} exact={exact} {...view} />
+      ) : (
+        <p className="small">
+          Each run draws {view.perRun} fresh samples; the histogram of the {view.runs} estimates should centre
+          on ∫ f dω.
+        </p>
+      )}
+    </>
+  );
+}

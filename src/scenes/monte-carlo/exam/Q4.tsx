@@ -1,0 +1,57 @@
+/**
+ * Exam Q4's introduction: what the question asks, a way back to the exam's configuration when the
+ * page's settings differ, and the race of uniform against importance sampling that (d) refers to.
+ */
+import { EXAM_A, EXAM_B, EXAM_F, EXAM_SAMPLES } from '../model';
+import { RaceSection, type RaceInput } from '../view/RaceSection';
+
+export function Q4Intro({
+  isExamConfig,
+  onExamConfig,
+  race,
+  importanceLabel,
+  t,
+  play,
+  setRace,
+}: {
+  isExamConfig: boolean;
+  onExamConfig: (patch: { f: string; a: number; b: number; samples: number[] }) => void;
+  race: RaceInput | null;
+  importanceLabel: string;
+  t: number;
+  play: boolean;
+  setRace: (patch: { t?: number; play?: boolean }) => void;
+}) {
+  return (
+    <>
+      <p>
+        I = ∫₀² (x + 2)² dx: (a) analytically, (b) uniform Monte Carlo, (c) importance sampling, (d)
+        convergence.
+        {!isExamConfig ? (
+          <>
+            {' '}
+            <span className="mc-note" data-testid="not-exam-config">
+              Your settings differ from the exam’s; the numbers below are for yours.{' '}
+              <button
+                type="button"
+                onClick={() => onExamConfig({ f: EXAM_F, a: EXAM_A, b: EXAM_B, samples: [...EXAM_SAMPLES] })}
+              >
+                Exam configuration
+              </button>
+            </span>
+          </>
+        ) : null}
+      </p>
+      <RaceSection
+        input={race}
+        importanceLabel={importanceLabel}
+        t={t}
+        play={play}
+        setParams={setRace}
+        fallback={
+          <p className="mc-note">The animation needs a finite integral and a usable importance pdf.</p>
+        }
+      />
+    </>
+  );
+}

@@ -1,0 +1,47 @@
+/**
+ * The integrand and the chosen pdf drawn over [a, b] with the samples of the worked table, and the
+ * estimator's formulas.
+ */
+import { MathTex, Panel } from '../../../ui';
+import type { curves, PdfChoice, SampleTable } from '../model';
+import { MathBlock } from './examMath';
+import { FunctionPlot } from './FunctionPlot';
+
+export function IntegrandPanel({
+  choice,
+  curve,
+  table,
+  a,
+  b,
+}: {
+  choice: PdfChoice | null;
+  curve: ReturnType<typeof curves> | null;
+  table: SampleTable | null;
+  a: number;
+  b: number;
+}) {
+  return (
+    <Panel title="The integrand and the pdf">
+      {choice && choice.ok ? (
+        <p className="mc-pdf-label">
+          {choice.label}
+          {choice.note ? <span className="mc-note"> {choice.note}</span> : null}
+        </p>
+      ) : null}
+      {curve ? (
+        <FunctionPlot
+          curve={curve}
+          samples={table ? table.rows.map((r): [number, number] => [r.x, r.f]) : []}
+          a={a}
+          b={b}
+        />
+      ) : null}
+      <MathBlock label="formulas (scroll sideways when wider than the screen)">
+        <MathTex
+          display
+          tex={String.raw`\begin{gathered}\langle I\rangle = \frac{1}{N}\sum_{i=1}^{N}\frac{f(x_i)}{p(x_i)},\quad x_i\sim p \\ \operatorname{SE} = \frac{s}{\sqrt N}\ \text{(independent } x_i \text{ only)} \\ s^2 = \frac{1}{N-1}\sum_{i=1}^{N}\Big(\frac{f(x_i)}{p(x_i)} - \langle I\rangle\Big)^2\end{gathered}`}
+        />
+      </MathBlock>
+    </Panel>
+  );
+}

@@ -1,0 +1,58 @@
+/**
+ * Small pieces the exam parts share: TeX formatting of live numbers, a sideways-scrolling block for
+ * wide formulas, and the key's note on the index of its sum.
+ */
+import type { ReactNode } from 'react';
+import { formatNumber, KeyNote, MathTex } from '../../../ui';
+
+/** A number for TeX (six significant digits), or a dash when it is not finite. */
+export const n4 = (x: number) => (Number.isFinite(x) ? formatNumber(x, 6) : '\\text{—}');
+
+/** v as "p/3" when 3v is (nearly) an integer, else its decimal. */
+export function thirds(v: number): string {
+  const k = Math.round(v * 3);
+  if (Math.abs(v * 3 - k) < 1e-9 * Math.max(1, Math.abs(k)) && k % 3 !== 0) return `\\frac{${k}}{3}`;
+  return n4(v);
+}
+
+/** x + c as TeX. */
+export const shifted = (c: number) => (c === 0 ? 'x' : `x ${c > 0 ? '+' : '-'} ${n4(Math.abs(c))}`);
+
+/** (x + c)² at a number, as TeX. */
+export const squareAt = (x: number, c: number) => `(${n4(x)} ${c >= 0 ? '+' : '-'} ${n4(Math.abs(c))})^2`;
+
+/** Terms of a sum for an aligned block, two per row (a long sum would not fit a phone's width). */
+export function sumRows(terms: string[]): string {
+  const rows: string[] = [];
+  for (let i = 0; i < terms.length; i += 2) rows.push(terms.slice(i, i + 2).join(' + '));
+  return rows.join(String.raw` \\ &\qquad + `);
+}
+
+/** A block of display formulas that scrolls sideways when wider than the screen. */
+export function MathBlock({
+  children,
+  label = 'derivation (scrolls sideways when wider than the screen)',
+  testId,
+}: {
+  children: ReactNode;
+  label?: string;
+  testId?: string;
+}) {
+  return (
+    <div className="mc-math" data-testid={testId} tabIndex={0} role="group" aria-label={label}>
+      {children}
+    </div>
+  );
+}
+
+/** The key's Σ from i = 0 to 4 with the factor 1/4 (Q4 b and c). */
+export function SumIndexNote({ part }: { part: string }) {
+  return (
+    <KeyNote testId={`key-sum-${part}`}>
+      the key writes <MathTex tex={String.raw`\tfrac14\sum_{i=0}^{4}`} />: that is five terms (i = 0, 1, 2, 3,
+      4) divided by 4. The four samples are x₁ … x₄, so the sum runs from i = 1 to 4 (
+      <MathTex tex={String.raw`\tfrac14\sum_{i=1}^{4}`} />
+      ), as its own arithmetic (four values added) does.
+    </KeyNote>
+  );
+}

@@ -1,0 +1,163 @@
+/**
+ * Q5's controls beside the figure: the presets (the five cases, and the inputs that break the
+ * textbook form) and the typed values of the ray and the sphere.
+ */
+import { memo } from 'react';
+import { NumberField, Select } from '../../../ui';
+import type { V3 } from '../model';
+import { CASE_PRESETS, PRECISION_PRESETS, type Preset, type RaySphereParams } from '../params';
+
+type SetParams = (patch: Partial<RaySphereParams>) => void;
+
+/** The preset whose values are those of the URL, if any (one of the module-level preset objects). */
+export function activePresetOf(params: RaySphereParams): Preset | undefined {
+  return [...CASE_PRESETS, ...PRECISION_PRESETS].find((p) => samePreset(p, params));
+}
+
+function samePreset(p: Preset, params: RaySphereParams): boolean {
+  const eq = (x: readonly number[] | undefined, y: readonly number[]) => !x || x.every((v, i) => v === y[i]);
+  return (
+    eq(p.params.o, params.o) &&
+    eq(p.params.d, params.d) &&
+    eq(p.params.c, params.c) &&
+    (p.params.r === undefined || p.params.r === params.r)
+  );
+}
+
+function PresetGroup({
+  name,
+  heading,
+  presets,
+  active,
+  setParams,
+}: {
+  /** The group's accessible name, and the words before its buttons. */
+  name: string;
+  heading: string;
+  presets: readonly Preset[];
+  active: Preset | undefined;
+  setParams: SetParams;
+}) {
+  return (
+    <div className="rs-presets" role="group" aria-label={name}>
+      <span className="rs-presets-label">{heading}</span>
+      {presets.map((p) => (
+        <button
+          key={p.id}
+          type="button"
+          data-testid={`preset-${p.id}`}
+          aria-pressed={active?.id === p.id}
+          onClick={() => setParams({ ...p.params, t: 0.5, play: false })}
+        >
+          {p.label}
+        </button>
+      ))}
+    </div>
+  );
+}
+
+/** Both preset groups and what the active preset shows (memoised: `active` has a stable identity). */
+export const Q5Presets = memo(function Q5Presets({
+  active,
+  setParams,
+}: {
+  active: Preset | undefined;
+  setParams: SetParams;
+}) {
+  return (
+    <div className="rs-preset-groups">
+      <PresetGroup
+        name="Case presets"
+        heading="Cases:"
+        presets={CASE_PRESETS}
+        active={active}
+        setParams={setParams}
+      />
+      <PresetGroup
+        name="Precision presets"
+        heading="Break the textbook form:"
+        presets={PRECISION_PRESETS}
+        active={active}
+        setParams={setParams}
+      />
+      {active ? <p className="rs-small rs-preset-what">{active.what}</p> : null}
+    </div>
+  );
+});
+
+const BIG = 1e12;
+
+function VecField({
+  label,
+  name,
+  value,
+  onChange,
+}: {
+  label: string;
+  name: string;
+  value: readonly number[];
+  onChange: (v: V3) => void;
+}) {
+  return (
+    <fieldset className="rs-vec">
+      <legend>{label}</legend>
+      {(['x', 'y', 'z'] as const).map((axis, i) => (
+        <NumberField
+          key={axis}
+          label={axis}
+          value={value[i]}
+          min={-BIG}
+          max={BIG}
+          step={0.1}
+          testId={`input-${name}-${axis}`}
+          onChange={(x) => {
+            const v: V3 = [value[0], value[1], value[2]];
+            v[i] = x;
+            onChange(v);
+          }}
+        />
+      ))}
+    </fieldset>
+  );
+}
+
+export interface Q5FieldsProps extends Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r' | 'method'> {
+  setParams: SetParams;
+  /** An edit of the ray or sphere: it moves the sweep's centre to the ray on screen. */
+  edit: SetParams;
+}
+
+/** The typed values (memoised: a re-render of the scene with the same values leaves it alone). */
+export const Q5Fields = memo(function Q5Fields({ o, d, c, r, method, setParams, edit }: Q5FieldsProps) {
+  return (
+    <details className="rs-fields" open={typeof window === 'undefined' || window.innerWidth > 820}>
+      <summary>Ray o + t d and sphere (centre C, radius r): type values</summary>
+      <Select
+        label="Method (for the readouts)"
+        value={method}
+        options={[
+          { value: 'stable', label: 'robust (Ray Tracing Gems ch. 7)' },
+          { value: 'naive', label: 'textbook (−b ± √Δ) / 2a' },
+        ]}
+        onChange={(m) => setParams({ method: m })}
+        testId="method"
+      />
+      <VecField label="Origin o" name="o" value={o} onChange={(v) => edit({ o: v })} />
+      <VecField label="Direction d" name="d" value={d} onChange={(v) => edit({ d: v })} />
+      <VecField label="Centre C (URL parameter c)" name="c" value={c} onChange={(v) => edit({ c: v })} />
+      <NumberField
+        label="Radius r"
+        value={r}
+        onChange={(x) => edit({ r: x })}
+        min={-BIG}
+        max={BIG}
+        step={0.1}
+        testId="input-r"
+      />
+      <p className="rs-small">
+        d need not be unit length: t is then measured in units of |d|. These fields hold the ray at the centre
+        of the sweep (t = 0.5); editing moves the sweep there.
+      </p>
+    </details>
+  );
+});

@@ -1,0 +1,55 @@
+/**
+ * Q5's figure block: the cross-section at the live position, the case banner, and the sweep's
+ * transport with the sweep's own controls (mode and extent).
+ */
+import { NumberField, Select, TimelineTransport } from '../../../ui';
+import { sweepAt, type Sweep, type V3 } from '../model';
+import type { RaySphereParams } from '../params';
+import { sweepCoord } from '../view/format';
+import { LiveCaseBanner, LiveCrossSection, type LiveProps } from '../view/Live';
+
+export interface Q5FigureProps extends LiveProps {
+  sweep: Sweep;
+  extent: number;
+  /** The ends of the sweep, kept in view so the figure does not rescale while it plays. */
+  ends: readonly V3[];
+  /** An edit of the ray or sphere by dragging (coalesced to one per frame by the scene). */
+  onDrag: (patch: Partial<RaySphereParams>) => void;
+  setParams: (patch: Partial<RaySphereParams>) => void;
+}
+
+export function Q5Figure({ tl, modelAt, sweep, extent, ends, onDrag, setParams }: Q5FigureProps) {
+  const fmtPos = (tt: number) => {
+    const x = sweepAt(sweep, tt).x;
+    return `t = ${tt.toFixed(3)}, ${sweepCoord(sweep.mode)} = ${Number.isFinite(x) ? x.toFixed(3) : String(x)}`;
+  };
+  return (
+    <>
+      <LiveCrossSection tl={tl} modelAt={modelAt} onChange={onDrag} fitExtra={ends} />
+      <LiveCaseBanner tl={tl} modelAt={modelAt} />
+      <TimelineTransport timeline={tl} label="Ray sweep" format={fmtPos} testId="timeline">
+        <div className="rs-sweep-controls">
+          <Select
+            label="Sweep"
+            value={sweep.mode}
+            options={[
+              { value: 'offset', label: 'origin moves across the ray' },
+              { value: 'rotate', label: 'direction turns about o' },
+            ]}
+            onChange={(m) => setParams({ sweep: m })}
+            testId="sweep-mode"
+          />
+          <NumberField
+            label={sweep.mode === 'offset' ? 'extent (± radii)' : 'extent (± angular radii)'}
+            value={extent}
+            onChange={(x) => setParams({ extent: x })}
+            min={0.05}
+            max={1000}
+            step={0.5}
+            testId="sweep-extent"
+          />
+        </div>
+      </TimelineTransport>
+    </>
+  );
+}

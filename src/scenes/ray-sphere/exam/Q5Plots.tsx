@@ -1,0 +1,50 @@
+/**
+ * Q5's sweep plots (g(t) and Δ along the sweep) and their note. The sweep's samples are computed
+ * here, in a block that mounts after the page's first render (ui/Deferred), so they are not part
+ * of one long first task.
+ */
+import { useMemo } from 'react';
+import { sweepAt, sweepSeries, type Sweep } from '../model';
+import type { RaySphereParams } from '../params';
+import { LivePlots, type LiveProps } from '../view/Live';
+import { sweepCoord } from '../view/format';
+
+export function Q5Plots({
+  tl,
+  modelAt,
+  sweep,
+  method,
+}: LiveProps & { sweep: Sweep; method: RaySphereParams['method'] }) {
+  const series = useMemo(() => sweepSeries({ method }, sweep), [method, sweep]);
+  const tangentX = useMemo(() => series.tangents.map((tt) => sweepAt(sweep, tt).x), [series, sweep]);
+  const xLabel =
+    sweep.mode === 'offset'
+      ? 'h / r: signed distance of the line from C, in radii'
+      : 'ψ / α: angle between d and the direction to C, in angular radii α';
+  return (
+    <>
+      <LivePlots
+        tl={tl}
+        modelAt={modelAt}
+        sweep={sweep}
+        series={series}
+        tangentX={tangentX}
+        xLabel={xLabel}
+        method={method}
+      />
+      <p className="rs-small" data-testid="sweep-note">
+        Strip under the Δ plot: the {method === 'naive' ? 'textbook' : 'robust'} method’s case at each
+        position (grey miss, green two hits, blue inside, red behind, gold tangent).{' '}
+        {series.tangents.length
+          ? `Δ crosses 0 where the line touches the sphere (tangent, |${sweepCoord(sweep.mode)}| = 1).`
+          : 'In this sweep the line never touches the sphere.'}{' '}
+        {series.naiveSignWrong > 0 ? (
+          <strong data-testid="sweep-naive-wrong" data-value={series.naiveSignWrong}>
+            The textbook Δ has the wrong sign (or is 0) at {series.naiveSignWrong} of {series.x.length}{' '}
+            positions: rounding, not geometry.
+          </strong>
+        ) : null}
+      </p>
+    </>
+  );
+}

@@ -1,0 +1,158 @@
+/**
+ * The figures at the sweep's live position. The scene does not re-render while the sweep plays:
+ * the figures that move every frame (the cross-section, the two plots) are drawn directly on each
+ * timeline frame; the text (case banner, 3D view) re-renders at most RENDER_HZ times a second.
+ */
+import { useLayoutEffect, useRef } from 'react';
+import { useCoarsePosition, useTimelineFrame, type Timeline } from '../../../ui';
+import type { RaySphereCase, RaySphereHit } from '../../../core/geometry';
+import { CASE_TEXT, sweepAt, type RaySphereModel, type Sweep, type SweepSeries, type V3 } from '../model';
+import type { RaySphereParams } from '../params';
+import { CrossSection, type CrossRay } from './CrossSection';
+import { DeltaSweepPlot, GSweepPlot } from './SweepPlots';
+import { View3D, type View3DProps } from './View3D';
+
+/**
+ * How often the scene's text (readouts, case, notes, the 3D view) re-renders while the sweep plays:
+ * those parts subscribe to the timeline themselves (useCoarsePosition); the scene itself does not
+ * re-render while playing (renderHz 0), and the figures move every frame by direct writes.
+ */
+export const RENDER_HZ = 4;
+
+/** The model at a timeline position (memoised on the last position asked for). */
+export type ModelAt = (t: number) => RaySphereModel;
+
+/** What every live part reads: the timeline and the model along the sweep. */
+export interface LiveProps {
+  tl: Timeline;
+  modelAt: ModelAt;
+}
+
+/** The model at the coarse position (see RENDER_HZ). */
+export function useCoarseModel({ tl, modelAt }: LiveProps): { t: number; model: RaySphereModel } {
+  const t = useCoarsePosition(tl, RENDER_HZ);
+  return { t, model: modelAt(t) };
+}
+
+/**
+ * Calls `draw` with the live position on every timeline frame and after every render: the latest
+ * `draw` (a ref), so it may close over this render's props.
+ */
+function useDrawEveryFrame(tl: Timeline, draw: (t: number) => void): void {
+  const latest = useRef(draw);
+  latest.current = draw;
+  useTimelineFrame(tl, (t) => latest.current(t));
+  useLayoutEffect(() => latest.current(tl.now()));
+}
+
+/**
+ * The cross-section at the live position: React renders it when the inputs change; every frame
+ * (and after each render) the ray is drawn directly (CrossSection's drawRef).
+ */
+export function LiveCrossSection({
+  tl,
+  modelAt,
+  onChange,
+  fitExtra,
+}: LiveProps & {
+  onChange: (patch: Partial<RaySphereParams>) => void;
+  fitExtra: readonly V3[];
+}) {
+  const drawRef = useRef<((ray: CrossRay) => void) | null>(null);
+  const rayAt = (t: number): CrossRay => {
+    const m = modelAt(t);
+    return { ...m.input, res: m.chosen, distanceRatio: m.distanceRatio };
+  };
+  useDrawEveryFrame(tl, (t) => drawRef.current?.(rayAt(t)));
+  const first = rayAt(tl.now());
+  return <CrossSection {...first} onChange={onChange} fitExtra={fitExtra} drawRef={drawRef} />;
+}
+
+const CASE_NAME: Record<RaySphereCase, string> = {
+  miss: 'Miss',
+  tangent: 'Tangent',
+  'two-hits': 'Two hits',
+  inside: 'Origin inside',
+  behind: 'Sphere behind',
+};
+
+function CaseBanner({ res }: { res: RaySphereHit | null }) {
+  if (!res) return null;
+  return (
+    <div className={`rs-case case-${res.case}`} data-testid="case-banner">
+      <strong>{CASE_NAME[res.case]}</strong>
+      <span>{CASE_TEXT[res.case]}</span>
+    </div>
+  );
+}
+
+/** The case banner at the coarse position. */
+export function LiveCaseBanner(props: LiveProps) {
+  return <CaseBanner res={useCoarseModel(props).model.chosen} />;
+}
+
+/** The 3D view at the coarse position (below the fold). */
+export function LiveView3D({
+  tl,
+  modelAt,
+  ...rest
+}: LiveProps & Pick<View3DProps, 'height' | 'dark' | 'fitExtra'>) {
+  const m = useCoarseModel({ tl, modelAt }).model;
+  const { o, d, c, r } = m.input;
+  return <View3D o={o} d={d} c={c} r={r} res={m.chosen} distanceRatio={m.distanceRatio} {...rest} />;
+}
+
+/**
+ * g(t) and Δ against the sweep at the live position: React renders the plots when the sweep or the
+ * sizes change; every frame (and after each render) the moving parts are written directly.
+ */
+export function LivePlots({
+  tl,
+  modelAt,
+  sweep,
+  series,
+  tangentX,
+  xLabel,
+  method,
+}: LiveProps & {
+  sweep: Sweep;
+  series: SweepSeries;
+  tangentX: number[];
+  xLabel: string;
+  method: RaySphereParams['method'];
+}) {
+  const g = useRef<((res: RaySphereHit | null) => void) | null>(null);
+  const delta = useRef<((x: number, discStable: number | null, discNaive: number | null) => void) | null>(
+    null,
+  );
+  const at = (t: number) => {
+    const m = modelAt(t);
+    return {
+      res: m.chosen,
+      x: sweepAt(sweep, t).x,
+      stable: m.rows.find((x) => x.method === 'stable')?.res.discriminant ?? null,
+      naive: m.rows.find((x) => x.method === 'naive')?.res.discriminant ?? null,
+    };
+  };
+  useDrawEveryFrame(tl, (t) => {
+    const a = at(t);
+    g.current?.(a.res);
+    delta.current?.(a.x, a.stable, a.naive);
+  });
+  const first = at(tl.now());
+  return (
+    <>
+      <GSweepPlot res={first.res} window={series.gWindow} drawRef={g} />
+      <DeltaSweepPlot
+        series={series}
+        tangentX={tangentX}
+        x={first.x}
+        discStable={first.stable}
+        discNaive={first.naive}
+        xLabel={xLabel}
+        method={method}
+        drawRef={delta}
+      />
+    </>
+  );
+}
