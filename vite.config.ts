@@ -3,6 +3,7 @@ import react from '@vitejs/plugin-react';
 import { VitePWA } from 'vite-plugin-pwa';
 import { viteSingleFile } from 'vite-plugin-singlefile';
 import { lateManifestLink, routePreload } from './scripts/routePreload';
+import { appFiles } from './scripts/appFiles';
 
 /**
  * `--mode single` (npm run build:single): one self-contained HTML file. Workers are written as
@@ -85,6 +86,8 @@ export default defineConfig(({ mode }) => {
           }),
           // after VitePWA: its manifest link leaves index.html; src/app/pwa.ts adds it later
           lateManifestLink(),
+          // app-files.json: what the practice sheet page packs into LMS zips in the browser
+          appFiles(),
         ],
     build: {
       target: 'es2022',

@@ -1,7 +1,11 @@
 /**
  * ESLint rule `local/layers`: every import under src/ points down the layers.
  *
- *   core  ←  kit  ←  ui, workers, three  ←  scenes, practice, guide, lms, results  ←  app
+ *   core  ←  kit  ←  ui, workers, three  ←  scenes, practice, guide  ←  lms  ←  results  ←  app
+ *
+ * lms (SCORM, cmi5, question banks) builds on practice's generators and checker, and results (the
+ * class results page) on lms's grading; practice shows their parts through the slots of
+ * src/practice/extensions.ts, registered by the app, never by importing them.
  *
  * A file may import from its own folder (for scenes: its own scene's folder) and from any lower
  * layer. ui, workers and three may import each other; folders of the feature layer (scenes,
@@ -20,9 +24,9 @@ export const LAYERS = {
   scenes: 3,
   practice: 3,
   guide: 3,
-  lms: 3,
-  results: 3,
-  app: 4,
+  lms: 4,
+  results: 5,
+  app: 6,
 };
 
 /** Where a file under src/ sits: its top folder (for a scene, `scenes/<id>`) and its layer. */

@@ -13,7 +13,14 @@ import { importOrReload } from './staleBuild';
 // Practice mode is its own lazy chunk (src/practice): nothing of it loads on the other routes.
 // A failed load (offline, stale deploy) shows a message instead of throwing.
 const PracticeRoute = lazy(() =>
-  importOrReload(() => import('../practice/PracticeRoute')).catch(() => ({
+  // with the parts other features show on the practice pages (results download, LMS packages)
+  importOrReload(() =>
+    Promise.all([
+      import('../practice/PracticeRoute'),
+      import('../results/slots'),
+      import('../lms/slots'),
+    ]).then(([m]) => m),
+  ).catch(() => ({
     default: () => (
       <main id="main" className="page" tabIndex={-1}>
         <p role="alert" className="notice notice-error">
@@ -26,6 +33,9 @@ const PracticeRoute = lazy(() =>
 
 // The teacher's guide (#/guide) is its own lazy chunk.
 const Guide = lazy(() => importOrReload(() => import('../guide/Guide')));
+
+// The class results page (#/results) is its own lazy chunk.
+const ResultsRoute = lazy(() => import('../results/ResultsRoute'));
 
 export function App() {
   const route = useHashRoute();
@@ -71,6 +81,21 @@ export function App() {
         }
       >
         <Guide flags={flags} query={route.query} />
+      </Suspense>
+    );
+  else if (route.path === '/results')
+    body = (
+      <Suspense
+        key="results"
+        fallback={
+          <main id="main" className="page route-pending">
+            <p className="loading" role="status">
+              Loading the class results page…
+            </p>
+          </main>
+        }
+      >
+        <ResultsRoute />
       </Suspense>
     );
   else if (scene)

@@ -18,7 +18,17 @@ const opened = findScene(parseHash(window.location.hash).path);
 if (opened) void sceneLoader(opened.id)?.().catch(() => undefined);
 
 const root = document.getElementById('root');
-if (root) {
+// Inside an LMS package (SCORM, cmi5) the launch page declares window.__RML_LMS__: the LMS runtime
+// is loaded, and connects, before the first render (it decides the learner's variant seeds).
+const inLms = typeof (window as { __RML_LMS__?: unknown }).__RML_LMS__ === 'object';
+if (root && inLms)
+  void import('../lms/launch')
+    .then((m) => m.startLms())
+    .catch(() => undefined)
+    .finally(() => render(root));
+else if (root) render(root);
+
+function render(root: HTMLElement) {
   const r = createRoot(root);
   // A transition: React renders the shell's first tree in slices that yield to the browser, not in
   // one task (on a phone, code that has never run yet is slow).
@@ -57,6 +67,7 @@ window.addEventListener('hashchange', maybeFuzz);
 if (
   import.meta.env.PROD &&
   import.meta.env.MODE !== 'single' &&
+  !inLms &&
   'serviceWorker' in navigator &&
   /^https?:$/.test(window.location.protocol)
 ) {

@@ -40,6 +40,7 @@ import {
 import { loadScores, recordScore, resetScores, type Scores } from './scores';
 import { QUESTIONS, isQuestionId, questionInfo } from './questions';
 import { loadProgress, recordCheck, resetProgress, type Progress } from './progress';
+import { extensionCheck, extensionInput, extensionRestore, extensionSeed, practiceSlot } from './extensions';
 import { loadDraft, saveDraft } from './drafts';
 import { RouteNotice } from '../ui/RouteNotice';
 import Sheet from './Sheet';
@@ -171,6 +172,7 @@ function PracticeHome({ flags, query }: { flags: ShellFlags; query: string }) {
         <span role="status">{status}</span>{' '}
         <span className="muted">Progress is kept in this browser only.</span>
       </p>
+      <Slot name="home-footer" />
       <section className="panel sheet-builder" aria-labelledby="sheet-title">
         <h2 id="sheet-title">Worksheet for a class (printable)</h2>
         <fieldset>
@@ -251,7 +253,8 @@ function BestScores({ q, scores, flags }: { q: QuestionId; scores: Scores; flags
 function QuestionRoute({ q, sp, flags }: { q: QuestionId; sp: URLSearchParams; flags: ShellFlags }) {
   const parsed = parseSeed(sp.get('seed'));
   const [fallback] = useState(() => randomSeed());
-  const seed = parsed.seed ?? fallback;
+  // an extension (the LMS runtime in a package) fixes each learner's variant, whatever the link says
+  const seed = extensionSeed(q) ?? parsed.seed ?? fallback;
   const problems = [
     ...flags.problems.map((p) => `${p.name} ${p.message}`),
     ...queryProblems(sp.toString(), ['seed']).map((p) => `${p.name} ${p.message}`),
@@ -301,14 +304,15 @@ function QuestionPage({
   problems: string[];
 }) {
   const info = questionInfo(variant.question);
-  // typed answers survive a reload of the tab (drafts.ts)
-  const [inputs, setInputs] = useState<Record<string, string>>(() =>
-    loadDraft(variant.question, variant.seed),
+  // typed answers survive a reload of the tab (drafts.ts); an extension (the LMS runtime in a
+  // package) may hand back the learner's saved answers instead
+  const [inputs, setInputs] = useState<Record<string, string>>(
+    () => extensionRestore(variant.question, variant.seed) ?? loadDraft(variant.question, variant.seed),
   );
-  useEffect(
-    () => saveDraft(variant.question, variant.seed, inputs),
-    [inputs, variant.question, variant.seed],
-  );
+  useEffect(() => {
+    saveDraft(variant.question, variant.seed, inputs);
+    extensionInput(variant.question, variant.seed, inputs);
+  }, [inputs, variant.question, variant.seed]);
   const [session, setSession] = useState<Session>(() => newSession(variant));
   const [checking, setChecking] = useState(false);
   const [summary, setSummary] = useState('');
@@ -355,6 +359,17 @@ function QuestionPage({
       );
       recordCheck(variant.question, variant.seed, nCorrect === answers.length);
       recordScore(variant.question, variant.seed, score.marks / score.total);
+      extensionCheck({
+        question: variant.question,
+        seed: variant.seed,
+        answers: answers.map((a) => ({
+          name: a.name,
+          response: inputs[a.name] ?? '',
+          verdict: verdicts[a.name]?.value ?? 'blank',
+          message: verdicts[a.name]?.message ?? '',
+        })),
+        time: new Date().toISOString(),
+      });
     },
     [variant, inputs, session],
   );
@@ -463,6 +478,7 @@ function QuestionPage({
           <span className="muted">(parts not yet right then earn no more marks)</span>
         </p>
       </form>
+      <Slot name="question-footer" />
       {allShown ? (
         <section className="panel practice-solution" aria-labelledby="solution-title" data-testid="solution">
           <h2 id="solution-title">Worked solution of variant {variant.seed}</h2>
@@ -754,4 +770,10 @@ function GridTable({ text, testId }: { text: string; testId?: string }) {
       </table>
     </div>
   );
+}
+
+/** What another feature shows in this place of the page (extensions.ts), if any. */
+function Slot({ name }: { name: 'home-footer' | 'question-footer' }) {
+  const C = practiceSlot(name);
+  return C ? <C /> : null;
 }

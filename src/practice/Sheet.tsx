@@ -12,6 +12,7 @@ import { expectedText } from './check';
 import { fmt, QUESTION_IDS, type AnswerSpec, type QuestionId, type Variant } from './model';
 import { isQuestionId, questionInfo, sheetSeed } from './questions';
 import { qrPath, type QrPath } from './qr';
+import { practiceSlot } from './extensions';
 
 const MAX_SEED = 0xffffffff;
 
@@ -177,6 +178,7 @@ export default function Sheet({ sp, flags }: { sp: URLSearchParams; flags: Shell
     else next.set('solutions', '1');
     window.location.hash = `#/practice/sheet?${next.toString()}`;
   };
+  const LmsSlot = practiceSlot('sheet');
   return (
     <main id="main" className="page practice practice-sheet" tabIndex={-1}>
       <div className="no-print">
@@ -210,6 +212,7 @@ export default function Sheet({ sp, flags }: { sp: URLSearchParams; flags: Shell
           Each variant’s page carries its own link and QR code: students check their answers online, one part
           at a time.
         </p>
+        {LmsSlot ? <LmsSlot questions={P.qs} variants={P.count} seed={P.seed} /> : null}
       </div>
       {variants.map((v, i) => {
         const url = variantUrl(v);

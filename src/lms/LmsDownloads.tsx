@@ -1,0 +1,98 @@
+/**
+ * "For your LMS" on the worksheet page: the same packages as `npm run build:lms` (SCORM 1.2,
+ * SCORM 2004, cmi5, Moodle XML, QTI 2.1) for the worksheet's questions, variants and seed, built
+ * in this browser when asked (./browserBuild.ts, loaded then).
+ */
+import { useState } from 'react';
+import type { QuestionId } from '../practice/model';
+import type { PackageOutputs } from './packages';
+import { APP_VERSION } from './version';
+
+const FILES: { name: keyof PackageOutputs; label: string; type: string }[] = [
+  { name: 'practice-scorm12.zip', label: 'SCORM 1.2 package', type: 'application/zip' },
+  { name: 'practice-scorm2004.zip', label: 'SCORM 2004 package', type: 'application/zip' },
+  { name: 'practice-cmi5.zip', label: 'cmi5 package', type: 'application/zip' },
+  { name: 'questions-moodle.xml', label: 'Moodle XML question bank', type: 'application/xml' },
+  { name: 'questions-qti21.zip', label: 'QTI 2.1 question bank', type: 'application/zip' },
+];
+
+export function LmsDownloads({
+  questions,
+  variants,
+  seed,
+}: {
+  questions: QuestionId[];
+  variants: number;
+  seed: number;
+}) {
+  const [mastery, setMastery] = useState(80);
+  const [status, setStatus] = useState('');
+  const [busy, setBusy] = useState(false);
+  const get = async (name: keyof PackageOutputs, type: string) => {
+    setBusy(true);
+    setStatus('Preparing…');
+    try {
+      const { buildInBrowser } = await import('./browserBuild');
+      const out = await buildInBrowser(
+        { questions, variants, seed, mastery: mastery / 100, version: APP_VERSION },
+        setStatus,
+      );
+      const data = out[name];
+      const url = URL.createObjectURL(new Blob([data as BlobPart], { type }));
+      const a = document.createElement('a');
+      a.href = url;
+      a.download = name;
+      document.body.appendChild(a);
+      a.click();
+      a.remove();
+      setTimeout(() => URL.revokeObjectURL(url), 30_000);
+      setStatus(`${name}: ${(data.length / 1e6).toFixed(2)} MB.`);
+    } catch (e) {
+      setStatus(
+        `The package could not be built (${e instanceof Error ? e.message : String(e)}). Use npm run build:lms instead.`,
+      );
+    } finally {
+      setBusy(false);
+    }
+  };
+  return (
+    <section className="panel lms-downloads" aria-labelledby="lms-title" data-testid="lms-downloads">
+      <h2 id="lms-title">For your LMS</h2>
+      <p className="muted">
+        These questions ({questions.map((q) => q.toUpperCase()).join(', ')}; {variants} variant
+        {variants === 1 ? '' : 's'} each from seed {seed}) as packages: in a SCORM or cmi5 package each
+        learner gets their own variant and the score reaches the gradebook; the question banks import into a
+        quiz. Built in this browser, nothing is uploaded.
+      </p>
+      <p>
+        <label>
+          Pass mark{' '}
+          <input
+            type="number"
+            min={1}
+            max={100}
+            value={mastery}
+            onChange={(e) => setMastery(Math.min(100, Math.max(1, Math.round(Number(e.target.value)) || 80)))}
+          />{' '}
+          %
+        </label>
+      </p>
+      <p className="lms-buttons" style={{ display: 'flex', flexWrap: 'wrap', gap: '0.5rem' }}>
+        {FILES.map((f) => (
+          <button
+            key={f.name}
+            type="button"
+            disabled={busy}
+            onClick={() => void get(f.name, f.type)}
+            data-testid={`lms-build-${f.name}`}
+          >
+            {f.label}
+          </button>
+        ))}
+      </p>
+      <p role="status" data-testid="lms-build-status">
+        {status}
+      </p>
+    </section>
+  );
+}

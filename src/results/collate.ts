@@ -1,0 +1,146 @@
+/**
+ * Collating a class's results files (pure, no DOM): every attempt is regraded from its seed and
+ * typed answers with the practice checker (src/lms/grade.ts), so a verdict edited in a file cannot
+ * raise a score. Per question: attempts, students, the mean of each student's best score, and how
+ * often each named mistake occurs (in regraded verdicts, over all attempts). Per student: the best
+ * score of each question. Disagreements between a file's verdicts and the regraded ones are counted.
+ */
+import { QUESTION_IDS, type QuestionId } from '../practice/model';
+import { gradeAttempt, mistakeOf } from '../lms/grade';
+import { parseResultsFile } from './format';
+
+export interface InputFile {
+  name: string;
+  text: string;
+}
+
+export interface StudentRow {
+  student: string;
+  file: string;
+  /** Best fraction correct (0–1) per question attempted. */
+  best: Partial<Record<QuestionId, { score: number; max: number; attempts: number }>>;
+  attempts: number;
+}
+
+export interface QuestionStats {
+  question: QuestionId;
+  attempts: number;
+  students: number;
+  /** Mean over students of their best fraction correct. */
+  meanBest: number;
+  /** Checked answers (non-blank) and how many were correct. */
+  answers: number;
+  correct: number;
+  /** Named mistake id → occurrences. */
+  mistakes: Record<string, number>;
+  /** Answers the file said were correct that regrade otherwise (an edited or stale verdict). */
+  disagreements: number;
+}
+
+export interface Collation {
+  files: number;
+  attempts: number;
+  students: StudentRow[];
+  questions: QuestionStats[];
+  problems: string[];
+}
+
+export async function collate(
+  files: readonly InputFile[],
+  onProgress?: (done: number) => void,
+): Promise<Collation> {
+  const problems: string[] = [];
+  const students: StudentRow[] = [];
+  const stats = new Map<QuestionId, QuestionStats & { sum: number }>();
+  for (const q of QUESTION_IDS)
+    stats.set(q, {
+      question: q,
+      attempts: 0,
+      students: 0,
+      meanBest: 0,
+      answers: 0,
+      correct: 0,
+      mistakes: {},
+      disagreements: 0,
+      sum: 0,
+    });
+  let attempts = 0;
+  let done = 0;
+  for (const f of files) {
+    const p = parseResultsFile(f.text);
+    done++;
+    if (!p.ok) {
+      problems.push(`${f.name}: ${p.error}; left out.`);
+      onProgress?.(done);
+      continue;
+    }
+    if (p.skipped)
+      problems.push(`${f.name}: ${p.skipped} attempt(s) that name no question 1–6 or seed were left out.`);
+    const row: StudentRow = {
+      student: p.file.student || f.name.replace(/\.json$/i, ''),
+      file: f.name,
+      best: {},
+      attempts: 0,
+    };
+    for (const a of p.file.attempts) {
+      const g = await gradeAttempt(a.question, a.seed, a.answers);
+      const s = stats.get(a.question)!;
+      s.attempts++;
+      attempts++;
+      row.attempts++;
+      for (const x of g.answers) {
+        if (x.verdict === 'blank') continue;
+        s.answers++;
+        if (x.verdict === 'correct') s.correct++;
+        const m = mistakeOf(x.verdict);
+        if (m) s.mistakes[m] = (s.mistakes[m] ?? 0) + 1;
+        if (a.verdicts[x.name] === 'correct' && x.verdict !== 'correct') s.disagreements++;
+      }
+      const prev = row.best[a.question];
+      const frac = g.max ? g.score / g.max : 0;
+      if (!prev || frac > prev.score / prev.max)
+        row.best[a.question] = { score: g.score, max: g.max, attempts: (prev?.attempts ?? 0) + 1 };
+      else prev.attempts++;
+    }
+    for (const [q, b] of Object.entries(row.best) as [QuestionId, { score: number; max: number }][]) {
+      const s = stats.get(q)!;
+      s.students++;
+      s.sum += b.max ? b.score / b.max : 0;
+    }
+    students.push(row);
+    onProgress?.(done);
+    // yield now and then so the page stays responsive
+    if (done % 10 === 0) await new Promise((r) => setTimeout(r, 0));
+  }
+  const questions = [...stats.values()].map(({ sum, ...s }) => ({
+    ...s,
+    meanBest: s.students ? sum / s.students : 0,
+  }));
+  return { files: files.length, attempts, students, questions, problems };
+}
+
+function csvCell(x: string | number): string {
+  const s = String(x);
+  // a leading = + - @ would be a formula in a spreadsheet
+  const safe = /^[=+\-@]/.test(s) && !/^-?\d/.test(s) ? `'${s}` : s;
+  return /[",\n\r]/.test(safe) ? `"${safe.replace(/"/g, '""')}"` : safe;
+}
+
+/** One row per student: name, file, attempts, then each question's best score and max. */
+export function studentsCsv(c: Collation): string {
+  const head: (string | number)[] = [
+    'student',
+    'file',
+    'attempts',
+    ...QUESTION_IDS.flatMap((q) => [`${q} score`, `${q} max`]),
+  ];
+  const rows = c.students.map((s): (string | number)[] => [
+    s.student,
+    s.file,
+    s.attempts,
+    ...QUESTION_IDS.flatMap((q): (string | number)[] =>
+      s.best[q] ? [s.best[q]!.score, s.best[q]!.max] : ['', ''],
+    ),
+  ]);
+  return [head, ...rows].map((r) => r.map(csvCell).join(',')).join('\r\n') + '\r\n';
+}
