@@ -1,7 +1,7 @@
 #!/usr/bin/env node
 /**
  * GPU benchmark (not a test): the frame time of the hemisphere scene's vertex-shader pass, which
- * makes and draws 10⁶ directions (src/scenes/hemisphere/gpu/warpShader.ts), in headless Chromium
+ * makes and draws 10⁶ directions (src/scenes/hemisphere/view/gpu/warpShader.ts), in headless Chromium
  * against the built app. The page's own "Time 20 frames" button times each frame as draw +
  * a one-pixel read back (which waits for the GPU), median of 20; this script presses it `--runs`
  * times for each form and records the medians, the renderer and the first pass's times.

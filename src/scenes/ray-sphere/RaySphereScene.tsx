@@ -31,7 +31,7 @@ import { LiveView3D } from './view/Live';
 import { DistantImages, ErrorVsDistance, PrecisionTable } from './view/Precision';
 import { PrecisionExplainer } from './view/PrecisionExplainer';
 import { PrecisionCompare } from './view/Float32Panel';
-import { GpuSection } from './gpu';
+import { GpuSection } from './view/gpu';
 import './ray-sphere.css';
 
 /** The figure block's placeholder height (px): the cross-section, the case banner and the transport. */

@@ -1,7 +1,7 @@
 /**
  * The exam's warps in float32, and on the GPU: the inversion formulas' float32 errors near ξ → 0
  * and ξ → 1 against float64, then 10⁶ directions made and drawn by a WebGL2 vertex shader
- * (../gpu/warpShader), read back by transform feedback and χ²-tested against the exam's pdf.
+ * (./gpu/warpShader), read back by transform feedback and χ²-tested against the exam's pdf.
  * A lazy chunk: loaded only when its disclosure is opened.
  */
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
@@ -16,7 +16,7 @@ import {
   warpF32Table,
 } from '../../../core/sampling';
 import { hemisphereChi2, sidakAlpha } from '../../../core/verify';
-import { makeWarpPass, readDirections, syncGpu, type WarpPass } from '../gpu/warpShader';
+import { makeWarpPass, readDirections, syncGpu, type WarpPass } from './gpu/warpShader';
 
 /** Directions per GPU pass. */
 export const GPU_SAMPLES = 1_000_000;

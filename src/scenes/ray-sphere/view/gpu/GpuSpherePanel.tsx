@@ -4,7 +4,7 @@
  * and a float64 reference of the same rays. Loaded only when its panel is opened (a lazy chunk).
  */
 import { useEffect, useMemo, useRef, useState } from 'react';
-import { Notice, Readout, Slider } from '../../../ui';
+import { Notice, Readout, Slider } from '../../../../ui';
 import {
   countHitMismatch,
   countUlpMismatch,
@@ -13,7 +13,7 @@ import {
   sphereImageSetup,
   ulpErrors,
   ulpF32,
-} from '../../../core/geometry';
+} from '../../../../core/geometry';
 import { getGl2, renderSphereGpu, type GpuSphereImage } from './sphereShader';
 import { SelfIntersectionF32 } from './SelfIntersectionF32';
 

@@ -3,7 +3,7 @@
  * (the WebGL2 shader, the float32 images, self-intersection in float32) is a lazy chunk.
  */
 import { lazy } from 'react';
-import { LazyDetails } from '../../../ui/LazyDetails';
+import { LazyDetails } from '../../../../ui/LazyDetails';
 
 const GpuSpherePanel = lazy(() => import('./GpuSpherePanel').then((m) => ({ default: m.GpuSpherePanel })));
 

@@ -4,14 +4,14 @@
  * self-hits against the offset ε at several distances, and pbrt's error-bound offset.
  */
 import { useEffect, useMemo, useRef, useState } from 'react';
-import { Plot, Readout, Slider, type PlotTrace } from '../../../ui';
+import { Plot, Readout, Slider, type PlotTrace } from '../../../../ui';
 import {
   ACNE_EPSILONS,
   acneSweepF32,
   shadowAcneF32,
   sphereImageSetup,
   type AcneSweep,
-} from '../../../core/geometry';
+} from '../../../../core/geometry';
 
 const W = 96;
 const SWEEP_W = 48;
