@@ -138,9 +138,10 @@ export function studentsCsv(c: Collation): string {
     s.student,
     s.file,
     s.attempts,
-    ...QUESTION_IDS.flatMap((q): (string | number)[] =>
-      s.best[q] ? [s.best[q]!.score, s.best[q]!.max] : ['', ''],
-    ),
+    ...QUESTION_IDS.flatMap((q): (string | number)[] => {
+      const b = s.best[q];
+      return b ? [b.score, b.max] : ['', ''];
+    }),
   ]);
   return [head, ...rows].map((r) => r.map(csvCell).join(',')).join('\r\n') + '\r\n';
 }
