@@ -226,32 +226,14 @@ export function connectScorm(config: LmsConfig, win: Window = window): ScormSess
           set(`${p}time`, `${pad(now.getHours())}:${pad(now.getMinutes())}:${pad(now.getSeconds())}`);
           if (expected) set(`${p}correct_responses.0.pattern`, fillIn(expected, 255));
           set(`${p}student_response`, fillIn(a.response, 255));
-          set(
-            `${p}result`,
-            a.verdict === 'correct'
-              ? 'correct'
-              : a.verdict === 'invalid'
-                ? 'unanticipated'
-                : a.verdict === 'consistent'
-                  ? 'neutral'
-                  : 'wrong',
-          );
+          set(`${p}result`, interactionResult(a.verdict, 'wrong'));
         } else {
           set(`${p}id`, `urn:render-math-lab:${r.question}:${r.seed}:${a.name}`);
           set(`${p}type`, 'fill-in');
           set(`${p}timestamp`, `${now.toISOString().slice(0, 19)}Z`);
           if (expected) set(`${p}correct_responses.0.pattern`, fillIn(expected, 250));
           set(`${p}learner_response`, fillIn(a.response, 250));
-          set(
-            `${p}result`,
-            a.verdict === 'correct'
-              ? 'correct'
-              : a.verdict === 'invalid'
-                ? 'unanticipated'
-                : a.verdict === 'consistent'
-                  ? 'neutral'
-                  : 'incorrect',
-          );
+          set(`${p}result`, interactionResult(a.verdict, 'incorrect'));
           set(
             `${p}description`,
             fillIn(mistake ? `${a.name}: mistake ${mistake}: ${a.message}` : `${a.name}: ${a.verdict}`, 250),
@@ -282,4 +264,16 @@ export function connectScorm(config: LmsConfig, win: Window = window): ScormSess
 function expectedOf(q: QuestionId, seed: number, name: string): string {
   const a = allAnswers(variantOf(q, seed)).find((x) => x.name === name);
   return a ? expectedText(a) : '';
+}
+
+/**
+ * A checked answer's interaction result: correct, unanticipated (not a valid answer), neutral (a
+ * follow-through answer: consistent with the learner's own earlier, wrong answer) or wrong, which
+ * SCORM 1.2 spells 'wrong' and SCORM 2004 'incorrect'.
+ */
+function interactionResult(verdict: string, wrong: 'wrong' | 'incorrect'): string {
+  if (verdict === 'correct') return 'correct';
+  if (verdict === 'invalid') return 'unanticipated';
+  if (verdict === 'consistent') return 'neutral';
+  return wrong;
 }
