@@ -417,7 +417,8 @@ export interface ErrorSeries {
 /** Floor for plotting errors on a log axis (exact results plot at u = 2⁻⁵³ "or better"). */
 export const ERROR_FLOOR = 2 ** -53;
 
-function median(xs: number[]): number {
+/** The median of xs (the mean of the middle two for an even count); xs is not reordered. */
+export function median(xs: number[]): number {
   const s = [...xs].sort((x, y) => x - y);
   const m = s.length >> 1;
   return s.length % 2 ? s[m] : 0.5 * (s[m - 1] + s[m]);

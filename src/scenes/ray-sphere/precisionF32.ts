@@ -15,7 +15,7 @@ import {
   type RaySphereReference,
   type Vec3,
 } from '../../core/geometry';
-import { distantSetup, type InputCheck, type MethodRow, type V3 } from './model';
+import { distantSetup, median, type ErrorSeries, type InputCheck, type MethodRow, type V3 } from './model';
 
 /** Which arithmetic the readouts use. */
 export type Precision = 'f64' | 'f32';
@@ -62,22 +62,10 @@ export function computeRowsF32(input: InputCheck): F32Rows {
 }
 
 /** The error series of {@link errorVsDistanceF32}: medians per distance, like the float64 one. */
-export interface ErrorSeriesF32 {
-  dist: number[];
-  discNaive: number[];
-  discStable: number[];
-  hitNaive: number[];
-  hitStable: number[];
-}
+export type ErrorSeriesF32 = ErrorSeries;
 
 /** Floor for plotting float32 errors on a log axis: exact results plot at u₃₂ = 2⁻²⁴ "or better". */
 export const ERROR_FLOOR_F32 = 2 ** -24;
-
-function median(xs: number[]): number {
-  const s = [...xs].sort((x, y) => x - y);
-  const m = s.length >> 1;
-  return s.length % 2 ? s[m] : 0.5 * (s[m - 1] + s[m]);
-}
 
 /**
  * The rays of the error-against-distance plot at distance D (as the float64 series in model.ts):
