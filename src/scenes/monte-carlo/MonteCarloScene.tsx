@@ -224,9 +224,12 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
             onExamConfig={setParams}
             race={raceInput}
             importanceLabel={lane?.label ?? ''}
+            importanceName={lane?.name ?? ''}
             t={Number(params.t)}
             play={params.play === true}
             setRace={setRace}
+            exact={exact}
+            table={table}
           />
         }
       >

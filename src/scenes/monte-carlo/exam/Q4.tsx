@@ -2,22 +2,29 @@
  * Exam Q4's introduction: what the question asks, a way back to the exam's configuration when the
  * page's settings differ, and the race of uniform against importance sampling that (d) refers to.
  */
-import { EXAM_A, EXAM_B, EXAM_F, EXAM_SAMPLES } from '../model';
+import { EXAM_A, EXAM_B, EXAM_F, EXAM_SAMPLES, type Exact, type SampleTable } from '../model';
 import { RaceSection, type RaceInput } from '../view/RaceSection';
+import { Q4Answers } from './Q4Answers';
 
 export function Q4Intro({
   isExamConfig,
   onExamConfig,
   race,
   importanceLabel,
+  importanceName,
   t,
   play,
   setRace,
+  exact,
+  table,
 }: {
+  exact: Exact | null;
+  table: SampleTable | null;
   isExamConfig: boolean;
   onExamConfig: (patch: { f: string; a: number; b: number; samples: number[] }) => void;
   race: RaceInput | null;
   importanceLabel: string;
+  importanceName: string;
   t: number;
   play: boolean;
   setRace: (patch: { t?: number; play?: boolean }) => void;
@@ -42,9 +49,11 @@ export function Q4Intro({
           </>
         ) : null}
       </p>
+      <Q4Answers exact={exact} table={table} isExamConfig={isExamConfig} />
       <RaceSection
         input={race}
         importanceLabel={importanceLabel}
+        importanceName={importanceName}
         t={t}
         play={play}
         setParams={setRace}

@@ -3,7 +3,7 @@
  * out with the page's numbers; for another f the pdf is the tabulated |f| / ∫|f| dx.
  */
 import { Derivation, ExamPart, formatNumber, LiveAnswer, MathTex, Readout } from '../../../ui';
-import { squareNormalizer, type SampleTable } from '../model';
+import { estimateHasZeroVariance, squareNormalizer, type SampleTable } from '../model';
 import { MathBlock, n4, shifted, SumIndexNote, thirds } from '../view/examMath';
 
 export function Q4c({
@@ -83,7 +83,9 @@ export function Q4c({
             digits={10}
             note={
               prop && prop.n > 1
-                ? `spread of f/p: s = ${formatNumber(Math.sqrt(prop.variance), 3)} (zero variance)`
+                ? estimateHasZeroVariance(prop)
+                  ? `spread of f/p: s = ${formatNumber(Math.sqrt(prop.variance), 3)}, zero to rounding (zero variance)`
+                  : `spread of f/p: s = ${formatNumber(Math.sqrt(prop.variance), 3)}`
                 : undefined
             }
           />

@@ -59,7 +59,7 @@ function Q4dParts({
           The animation at the top of this question is the graph: the running estimate ⟨I⟩ against N for
           uniform sampling (b) and importance sampling (c), drawn from the same random numbers, with the ±
           s/√N band and |error| on log-log axes. Uniform sampling wanders around I and closes in like σ/√N
-          (the |error| curve follows the N^−½ trend);
+          (the |error| curve follows the N⁻½ trend);
           {importanceIsExam
             ? ' importance sampling with p ∝ f sits on I from the first sample.'
             : ' the importance lane uses your chosen pdf.'}
@@ -86,12 +86,12 @@ function Q4dParts({
         {importanceIsExam ? (
           <p data-testid="answer-4d">
             <strong>(c) converges faster</strong>: it has zero variance (every term f/p equals I), so its
-            error is at rounding level for every N, while the uniform estimator’s error only falls like N^−½.
+            error is at rounding level for every N, while the uniform estimator’s error only falls like N⁻½.
           </p>
         ) : (
           <p data-testid="answer-4d">
             With p ∝ f (the exam’s (c)) the importance estimate would be exact at every N (zero variance);
-            your pdf only approximates f, so its error also falls like N^−½, with a smaller constant when p
+            your pdf only approximates f, so its error also falls like N⁻½, with a smaller constant when p
             follows f more closely.
           </p>
         )}

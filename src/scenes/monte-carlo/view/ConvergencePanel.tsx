@@ -6,7 +6,7 @@ import { atRoundingLevel } from '../model';
 import { formatCount } from '../../../ui/format';
 import type { ProblemArgs, SeriesData } from '../jobs';
 import { REDRAW_MS, useLegendRoom } from './hooks';
-import { arr, COLORS, Heading, L_ERR, L_EST, RunBar } from './plotStyle';
+import { arr, Heading, L_ERR, L_EST, RunBar, strategyLine } from './plotStyle';
 import type { McTasks } from '../mc.worker';
 
 export function ConvergencePanel({
@@ -46,7 +46,7 @@ export function ConvergencePanel({
       x: arr(s.n),
       y: arr(s.estimate),
       name: s.label,
-      line: { color: COLORS[i % COLORS.length], width: 2 },
+      line: strategyLine(i),
     }));
     if (series.length && Number.isFinite(ref)) {
       const nm = Math.max(1, nMax);
@@ -74,7 +74,7 @@ export function ConvergencePanel({
         x: arr(s.n),
         y: arr(s.absError).map((e) => (e > 0 ? e : null)),
         name: `${s.label} (slope ${Number.isFinite(s.slope) ? s.slope.toFixed(2) : '—'})`,
-        line: { color: COLORS[i % COLORS.length], width: 2 },
+        line: strategyLine(i),
       });
     });
     // guides anchored on the first strategy (uniform · independent): its median |error|·√N
@@ -91,7 +91,7 @@ export function ConvergencePanel({
         mode: 'lines',
         x: [1, nm],
         y: [c, c / Math.sqrt(nm)],
-        name: 'N^−1/2 guide',
+        name: 'N⁻½ guide',
         line: { color: '#888', dash: 'dash', width: 1.5 },
       });
       t.push({
@@ -99,7 +99,7 @@ export function ConvergencePanel({
         mode: 'lines',
         x: [1, nm],
         y: [c, c / nm],
-        name: 'N^−1 guide',
+        name: 'N⁻¹ guide',
         line: { color: '#888', dash: 'dot', width: 1.5 },
       });
     }
@@ -121,11 +121,11 @@ export function ConvergencePanel({
           ariaLabel="Running estimate against the number of samples N, on a log axis, for several strategies, with the exact value"
           layout={L_EST}
         />
-        <Heading>|error| of one run, log-log, with N^−½ and N^−1 guides</Heading>
+        <Heading>|error| of one run, log-log, with N⁻½ and N⁻¹ guides</Heading>
         <Plot
           data={errData}
           height={h}
-          ariaLabel="Absolute error against N on log-log axes, with N^-1/2 and N^-1 guide lines and fitted slopes"
+          ariaLabel="Absolute error against N on log-log axes, with guide lines falling as N to the −½ and N to the −1 and fitted slopes"
           layout={L_ERR}
         />
         {exactLabels.length ? (
@@ -136,7 +136,7 @@ export function ConvergencePanel({
         ) : null}
         <p className="mc-note">
           One run’s error jumps around its trend; the slope is fitted to log |error| against log N.
-          Independent samples give about −½ (error ∝ N^−½); stratified and Sobol points do better on a smooth
+          Independent samples give about −½ (error ∝ N⁻½); stratified and Sobol points do better on a smooth
           f; p ∝ f has no error at all when it is exact (the closed form for (x + c)²) and a tiny one when it
           is tabulated (4096 bins).
         </p>

@@ -6,7 +6,7 @@
  * track (the last one computed), so the second is free.
  */
 import type { ReactNode } from 'react';
-import { curves, raceTrack, type Fn1, type RaceTrack } from '../model';
+import { curves, heavierHalf, raceTrack, type Fn1, type RaceTrack } from '../model';
 import type { Pdf1D } from '../../../core/sampling/pdf1d';
 import { RaceFigure } from './RaceFigure';
 
@@ -22,7 +22,14 @@ export interface RaceInput {
   seed: number;
 }
 
-let last: { input: RaceInput; track: RaceTrack; curve: ReturnType<typeof curves> } | null = null;
+interface Race {
+  track: RaceTrack;
+  curve: ReturnType<typeof curves>;
+  /** The half of [a, b] where the importance pdf is heavier (model.heavierHalf). */
+  half: [number, number];
+}
+
+let last: (Race & { input: RaceInput }) | null = null;
 
 const same = (p: RaceInput, q: RaceInput) =>
   p.f === q.f &&
@@ -34,16 +41,22 @@ const same = (p: RaceInput, q: RaceInput) =>
   p.seed === q.seed;
 
 /** The track and the drawn curve of `input`, computed once per input (model.raceTrack, model.curves). */
-export function raceOf(input: RaceInput): { track: RaceTrack; curve: ReturnType<typeof curves> } {
+export function raceOf(input: RaceInput): Race {
   if (last && (last.input === input || same(last.input, input))) return last;
   const { f, a, b, sampler, density, exact, seed } = input;
-  last = { input, track: raceTrack(f, a, b, sampler, exact, seed), curve: curves(f, density, a, b, 200) };
+  last = {
+    input,
+    track: raceTrack(f, a, b, sampler, exact, seed),
+    curve: curves(f, density, a, b, 200),
+    half: heavierHalf(sampler, a, b),
+  };
   return last;
 }
 
 export function RaceSection({
   input,
   importanceLabel,
+  importanceName,
   t,
   play,
   setParams,
@@ -51,13 +64,14 @@ export function RaceSection({
 }: {
   input: RaceInput | null;
   importanceLabel: string;
+  importanceName: string;
   t: number;
   play: boolean;
   setParams: (patch: { t?: number; play?: boolean }) => void;
   fallback: ReactNode;
 }) {
   if (!input) return <>{fallback}</>;
-  const { track, curve } = raceOf(input);
+  const { track, curve, half } = raceOf(input);
   return (
     <RaceFigure
       track={track}
@@ -65,6 +79,8 @@ export function RaceSection({
       a={input.a}
       b={input.b}
       importanceLabel={importanceLabel}
+      importanceName={importanceName}
+      half={half}
       t={t}
       play={play}
       setParams={setParams}

@@ -6,7 +6,18 @@ import { atRoundingLevel, sortedByX } from '../model';
 import { formatCount } from '../../../ui/format';
 import type { ProblemArgs } from '../jobs';
 import { REDRAW_MS, useLegendRoom } from './hooks';
-import { arr, clampArr, COLORS, Heading, hexA, L_RMSE, L_TIME, CountField, RunBar } from './plotStyle';
+import {
+  arr,
+  clampArr,
+  COLORS,
+  Heading,
+  hexA,
+  L_RMSE,
+  L_TIME,
+  CountField,
+  RunBar,
+  strategyLine,
+} from './plotStyle';
 import type { McTasks } from '../mc.worker';
 
 export function RmsePanel({
@@ -65,7 +76,7 @@ export function RmsePanel({
         x: n,
         y: clampArr(s.rmse),
         name: `${s.label} (slope ${Number.isFinite(s.slope) ? s.slope.toFixed(2) : '—'})`,
-        line: { color: c, width: 2 },
+        line: strategyLine(i),
         marker: { size: 5 },
         legendgroup: s.label,
       });
@@ -93,7 +104,7 @@ export function RmsePanel({
           y: pts.map((p) => p.y),
           text: pts.map((p) => `N = ${p.n}`),
           name: s.label,
-          line: { color: COLORS[i % COLORS.length], width: 2 },
+          line: strategyLine(i),
           marker: { size: 5 },
         };
       }),
