@@ -230,6 +230,7 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
             setRace={setRace}
             exact={exact}
             table={table}
+            present={mode.present}
           />
         }
       >

@@ -17,7 +17,10 @@ export function Q4Intro({
   setRace,
   exact,
   table,
+  present,
 }: {
+  /** Classroom mode: the race (the figure the room watches) first, the answers under it. */
+  present: boolean;
   exact: Exact | null;
   table: SampleTable | null;
   isExamConfig: boolean;
@@ -29,6 +32,7 @@ export function Q4Intro({
   play: boolean;
   setRace: (patch: { t?: number; play?: boolean }) => void;
 }) {
+  const answers = <Q4Answers exact={exact} table={table} isExamConfig={isExamConfig} />;
   return (
     <>
       <p>
@@ -49,7 +53,7 @@ export function Q4Intro({
           </>
         ) : null}
       </p>
-      <Q4Answers exact={exact} table={table} isExamConfig={isExamConfig} />
+      {present ? null : answers}
       <RaceSection
         input={race}
         importanceLabel={importanceLabel}
@@ -61,6 +65,7 @@ export function Q4Intro({
           <p className="mc-note">The animation needs a finite integral and a usable importance pdf.</p>
         }
       />
+      {present ? answers : null}
     </>
   );
 }
