@@ -442,6 +442,18 @@ export function curves(
   return { x, f: fy, p: py, scale };
 }
 
+/** The value at x of a function tabulated on an evenly spaced grid (linear interpolation, clamped to its ends). */
+export function gridAt(xs: ArrayLike<number>, ys: ArrayLike<number>, x: number): number {
+  const n = xs.length;
+  if (n < 2) return n ? ys[0] : NaN;
+  const x0 = xs[0];
+  const x1 = xs[n - 1];
+  const q = ((x - x0) / (x1 - x0 || 1)) * (n - 1);
+  const k = Math.max(0, Math.min(n - 2, Math.floor(q)));
+  const w = q - k;
+  return ys[k] * (1 - w) + ys[k + 1] * w;
+}
+
 /** The strategies compared in the convergence plots: [pdf, sequence, label]. */
 export function comparedStrategies(
   selPdf: PdfKind,

@@ -13,6 +13,7 @@
  */
 import { memo, useLayoutEffect, useMemo, useRef, type ReactNode } from 'react';
 import {
+  DescribedFigure,
   formatNumber,
   LiveReadout,
   TEXT_HZ,
@@ -25,9 +26,9 @@ import { pow10Text } from '../../../ui/axis';
 import { clampExponent, fmt, linearScale, logScale, type Scale } from '../../../ui/chartScale';
 import { Axes, H, M, path, PH, PW, W } from './raceSvg';
 import { RaceHistogram } from './RaceHistogram';
-import { describeRace } from './describeRace';
+import { RaceData, raceWords } from './RaceData';
 import {
-  countIn,
+  gridAt,
   RACE_DURATION,
   RACE_MAX,
   raceHeadAt,
@@ -285,27 +286,16 @@ export const RaceFigure = memo(function RaceFigure({
       rugU: f.recentU.map(sx),
       rugI: f.recentI.map(sx),
       dotU: dot(f.uniform.n, f.uniform.x, f.uniform.term / (b - a)),
-      dotI: dot(f.importance.n, f.importance.x, curveAt(curve, f.importance.x)),
+      dotI: dot(f.importance.n, f.importance.x, gridAt(curve.x, curve.f, f.importance.x)),
     };
   };
   const g = geomAt(fr.t);
   const rate = (RACE_MAX / RACE_DURATION) * tl.speed;
-  const description = describeRace({
-    t: fr.t,
-    max: track.max,
-    uniform: fr.uniform,
-    importance: fr.importance,
-    importanceName,
-    exact: I,
-    half: half
-      ? {
-          lo: half[0],
-          hi: half[1],
-          uniform: countIn(track.uniform.x, fr.t, half[0], half[1]),
-          importance: countIn(track.importance.x, fr.t, half[0], half[1]),
-        }
-      : null,
-  });
+  // the figures in words at the rendered position (React renders it on pause, step, seek and reset)
+  const words = useMemo(
+    () => raceWords({ track, t: fr.t, points, importanceName, half, a, b, fValues: curve.f }),
+    [track, fr.t, points, importanceName, half, a, b, curve.f],
+  );
 
   // per-frame writes (see the module comment); React's render below is the same geometry at tl.t
   const svgF = useRef<SVGSVGElement>(null);
@@ -335,10 +325,6 @@ export const RaceFigure = memo(function RaceFigure({
     const h = raceHeadAt(track, tt, 0);
     drawLane(laneU, h.uniform);
     drawLane(laneI, h.importance);
-    svg?.setAttribute(
-      'aria-label',
-      `The integrand f over [${a}, ${b}] with the ${h.t} samples drawn so far, uniform and importance`,
-    );
   };
   const drawRef = useRef(draw);
   drawRef.current = draw;
@@ -392,130 +378,146 @@ export const RaceFigure = memo(function RaceFigure({
   };
 
   return (
-    <div className="mc-race" ref={box} data-testid="race" aria-describedby="mc-race-description">
-      <p id="mc-race-description" className="sr-only" data-testid="race-description">
-        {description}
-      </p>
-      <TimelineTransport
-        timeline={tl}
-        label="Samples arriving"
-        format={(n) => `${n} of ${RACE_MAX} samples`}
-        testId="timeline"
+    <div className="mc-race" ref={box} data-testid="race">
+      <DescribedFigure
+        label="The race: uniform against importance sampling, one sample at a time"
+        description={words.main}
+        playing={tl.playing}
+        testId="race-figure"
       >
-        <span className="mc-note" data-testid="race-rate">
-          {formatNumber(rate, 4)} samples/s
-        </span>
-      </TimelineTransport>
-      <div className="mc-race-grid">
-        <figure className="mc-svg-fig">
-          <figcaption>
-            Each xᵢ drops onto f (● uniform, ○ importance; newest {RECENT} as ticks, uniform above)
-          </figcaption>
-          <svg ref={svgF} viewBox={`0 0 ${W} ${H}`} role="img">
-            <Axes xTicks={fig.xt} yTicks={fig.yt} xLabel="x" yLabel="f(x)" />
-            <path d={fig.fPath} className="mc-svg-f" />
-            <path d={fig.pPath} style={{ stroke: C_I }} className="mc-svg-p" />
-            {rug(g.rugU, C_U, 0)}
-            {rug(g.rugI, C_I, 1)}
-            {newestDot(g.dotU, C_U, 0)}
-            {newestDot(g.dotI, C_I, 1)}
-          </svg>
-        </figure>
-        <figure className="mc-svg-fig">
-          <figcaption>|⟨I⟩ − I| against N, log-log</figcaption>
-          <svg
-            viewBox={`0 0 ${W} ${H}`}
-            role="img"
-            aria-label="Absolute error of the running estimate against the number of samples, log-log, uniform and importance"
+        <TimelineTransport
+          timeline={tl}
+          label="Samples arriving"
+          format={(n) => `${n} of ${RACE_MAX} samples`}
+          testId="timeline"
+        >
+          <span className="mc-note" data-testid="race-rate">
+            {formatNumber(rate, 4)} samples/s
+          </span>
+        </TimelineTransport>
+        <div className="mc-race-grid">
+          <DescribedFigure
+            className="mc-svg-fig"
+            label="Each sample drops onto f"
+            description={words.integrand}
+            quiet
+            testId="race-integrand"
           >
-            <Axes xTicks={fig.nt} yTicks={fig.lt} xLabel="N (samples)" yLabel="|error|" />
-            <path d={fig.guide} className="mc-svg-guide" />
-            <path ref={setPath('uErr')} d={g.uErr} style={{ stroke: C_U }} className="mc-svg-line" />
-            <path
-              ref={setPath('iErr')}
-              d={g.iErr}
-              style={{ stroke: C_I }}
-              className="mc-svg-line mc-svg-dashed"
-            />
-            <LineKey
-              x={M.l + PW - 118}
-              y={M.t + 14}
-              items={[
-                ['uniform', C_U, false],
-                ['importance', C_I, true],
-              ]}
-            />
-          </svg>
-        </figure>
-        {(
-          [
-            {
-              id: 'uniform',
-              name: 'Uniform, p = 1/(b − a)',
-              color: C_U,
-              refs: laneU,
-              what: 'uniform estimator',
-              k: 'u',
-              xs: track.uniform.x,
-              py: hist.pu,
-              pdf: `p(x) = ${formatNumber(1 / (b - a), 4)}`,
-            },
-            {
-              id: 'importance',
-              name: `Importance, ${importanceLabel}`,
-              color: C_I,
-              refs: laneI,
-              what: 'importance-sampling estimator',
-              k: 'i',
-              xs: track.importance.x,
-              py: hist.pi,
-              pdf: importanceName === 'p ∝ f' ? 'p(x) ∝ f(x)' : `p(x), ${importanceName}`,
-            },
-          ] as const
-        ).map(({ id, name, color, refs, what, k, xs, py, pdf }) => (
-          <Lane key={id} id={id} name={name} color={color} r={refs}>
-            <RaceHistogram
-              id={id}
-              xs={xs}
-              a={a}
-              b={b}
-              px={curve.x}
-              py={py}
-              pdfLabel={pdf}
-              yMax={hist.yMax}
-              color={color}
-              tl={tl}
-              t={fr.t}
-            />
-            <svg
-              viewBox={`0 0 ${W} ${H}`}
-              role="img"
-              aria-label={`Running estimate of the ${what} with its ± standard-error band, against N on a log axis`}
-            >
-              <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
-              <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
+            <figcaption>
+              Each xᵢ drops onto f (● uniform, ○ importance; newest {RECENT} as ticks, uniform above)
+            </figcaption>
+            <svg ref={svgF} viewBox={`0 0 ${W} ${H}`} aria-hidden="true">
+              <Axes xTicks={fig.xt} yTicks={fig.yt} xLabel="x" yLabel="f(x)" />
+              <path d={fig.fPath} className="mc-svg-f" />
+              <path d={fig.pPath} style={{ stroke: C_I }} className="mc-svg-p" />
+              {rug(g.rugU, C_U, 0)}
+              {rug(g.rugI, C_I, 1)}
+              {newestDot(g.dotU, C_U, 0)}
+              {newestDot(g.dotI, C_I, 1)}
+            </svg>
+          </DescribedFigure>
+          <DescribedFigure
+            className="mc-svg-fig"
+            label="|error| of the running estimates against N, log–log"
+            description={words.errors}
+            quiet
+            testId="race-errors"
+          >
+            <figcaption>|⟨I⟩ − I| against N, log-log</figcaption>
+            <svg viewBox={`0 0 ${W} ${H}`} aria-hidden="true">
+              <Axes xTicks={fig.nt} yTicks={fig.lt} xLabel="N (samples)" yLabel="|error|" />
+              <path d={fig.guide} className="mc-svg-guide" />
+              <path ref={setPath('uErr')} d={g.uErr} style={{ stroke: C_U }} className="mc-svg-line" />
               <path
-                ref={setPath(`${k}Band`)}
-                d={g[`${k}Band`]}
-                style={{ fill: color }}
-                className="mc-svg-band"
+                ref={setPath('iErr')}
+                d={g.iErr}
+                style={{ stroke: C_I }}
+                className="mc-svg-line mc-svg-dashed"
               />
-              <path
-                ref={setPath(`${k}Est`)}
-                d={g[`${k}Est`]}
-                style={{ stroke: color }}
-                className={k === 'i' ? 'mc-svg-line mc-svg-dashed' : 'mc-svg-line'}
+              <LineKey
+                x={M.l + PW - 118}
+                y={M.t + 14}
+                items={[
+                  ['uniform', C_U, false],
+                  ['importance', C_I, true],
+                ]}
               />
             </svg>
-          </Lane>
-        ))}
-      </div>
-      <p className="mc-note">
-        Solid blue: uniform; dashed orange: importance (its pdf dashed on f). Grey dashes: the exact I ={' '}
-        {formatNumber(I, 8)}; the grey line: the N⁻½ trend σ/√N. Both estimators use the same random numbers
-        ξᵢ (seeded): uniform puts xᵢ = a + (b − a)ξᵢ, importance xᵢ = P⁻¹(ξᵢ). Errors below{' '}
-        {pow10Text(Math.round(Math.log10(fig.floor)))} sit on the bottom line.
-      </p>
+          </DescribedFigure>
+          {(
+            [
+              {
+                id: 'uniform',
+                name: 'Uniform, p = 1/(b − a)',
+                color: C_U,
+                refs: laneU,
+                k: 'u',
+                xs: track.uniform.x,
+                py: hist.pu,
+                pdf: `p(x) = ${formatNumber(1 / (b - a), 4)}`,
+              },
+              {
+                id: 'importance',
+                name: `Importance, ${importanceLabel}`,
+                color: C_I,
+                refs: laneI,
+                k: 'i',
+                xs: track.importance.x,
+                py: hist.pi,
+                pdf: importanceName === 'p ∝ f' ? 'p(x) ∝ f(x)' : `p(x), ${importanceName}`,
+              },
+            ] as const
+          ).map(({ id, name, color, refs, k, xs, py, pdf }) => (
+            <Lane key={id} id={id} name={name} color={color} r={refs}>
+              <RaceHistogram
+                id={id}
+                xs={xs}
+                a={a}
+                b={b}
+                px={curve.x}
+                py={py}
+                pdfLabel={pdf}
+                yMax={hist.yMax}
+                color={color}
+                tl={tl}
+                t={fr.t}
+                half={half}
+              />
+              <DescribedFigure
+                className="mc-svg-fig"
+                label={`The ${id} running estimate with its ± s/√N band, against N on a log axis`}
+                description={words[id]}
+                quiet
+                testId={`race-estimate-${id}`}
+              >
+                <svg viewBox={`0 0 ${W} ${H}`} aria-hidden="true">
+                  <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
+                  <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
+                  <path
+                    ref={setPath(`${k}Band`)}
+                    d={g[`${k}Band`]}
+                    style={{ fill: color }}
+                    className="mc-svg-band"
+                  />
+                  <path
+                    ref={setPath(`${k}Est`)}
+                    d={g[`${k}Est`]}
+                    style={{ stroke: color }}
+                    className={k === 'i' ? 'mc-svg-line mc-svg-dashed' : 'mc-svg-line'}
+                  />
+                </svg>
+              </DescribedFigure>
+            </Lane>
+          ))}
+        </div>
+        <p className="mc-note">
+          Solid blue: uniform; dashed orange: importance (its pdf dashed on f). Grey dashes: the exact I ={' '}
+          {formatNumber(I, 8)}; the grey line: the N⁻½ trend σ/√N. Both estimators use the same random numbers
+          ξᵢ (seeded): uniform puts xᵢ = a + (b − a)ξᵢ, importance xᵢ = P⁻¹(ξᵢ). Errors below{' '}
+          {pow10Text(Math.round(Math.log10(fig.floor)))} sit on the bottom line.
+        </p>
+      </DescribedFigure>
+      <RaceData curve={words.curve} exact={I} zeroVarianceImportance={words.zeroVarianceImportance} />
     </div>
   );
 });
@@ -660,15 +662,4 @@ function drawDot(g: Element | null, d: { x: number; y: number } | null): void {
   line?.setAttribute('y2', String(d.y));
   dot?.setAttribute('cx', x);
   dot?.setAttribute('cy', String(d.y));
-}
-
-/** f at x, interpolated on the drawn grid (for placing the importance sample's dot on the curve). */
-function curveAt(curve: { x: Float64Array; f: Float64Array }, x: number): number {
-  const n = curve.x.length;
-  const x0 = curve.x[0];
-  const x1 = curve.x[n - 1];
-  const q = ((x - x0) / (x1 - x0 || 1)) * (n - 1);
-  const k = Math.max(0, Math.min(n - 2, Math.floor(q)));
-  const w = q - k;
-  return curve.f[k] * (1 - w) + curve.f[k + 1] * w;
 }

@@ -6,9 +6,10 @@
  * with `data-t`, the samples they count.
  */
 import { useLayoutEffect, useMemo, useRef } from 'react';
-import { formatNumber, useTimelineFrame, type Timeline } from '../../../ui';
+import { DescribedFigure, formatNumber, ShowAsTable, useTimelineFrame, type Timeline } from '../../../ui';
 import { fmt, linearScale } from '../../../ui/chartScale';
-import { raceBinIndex, raceCounts, RACE_BINS } from '../model';
+import { binRange, countIn, gridAt, raceBinIndex, raceCounts, RACE_BINS } from '../model';
+import { describeHistogram } from './describeRace';
 import { Axes, M, path, PW } from './raceSvg';
 
 /** Height of a histogram's viewBox (its width is the race's W). */
@@ -33,6 +34,8 @@ export interface RaceHistogramProps {
   tl: Pick<Timeline, 'subscribe' | 'now'>;
   /** The position React renders (the paused t). */
   t: number;
+  /** The half of [a, b] where the importance pdf is heavier: the description says how many fell there. */
+  half: [number, number] | null;
 }
 
 /** The bars of a density histogram (bins of equal width over [a, b]) as one path, clipped at yMax. */
@@ -52,7 +55,20 @@ function barsPath(counts: Uint32Array, t: number, a: number, b: number, yMax: nu
   return d;
 }
 
-export function RaceHistogram({ id, xs, a, b, px, py, pdfLabel, yMax, color, tl, t }: RaceHistogramProps) {
+export function RaceHistogram({
+  id,
+  xs,
+  a,
+  b,
+  px,
+  py,
+  pdfLabel,
+  yMax,
+  color,
+  tl,
+  t,
+  half,
+}: RaceHistogramProps) {
   const index = useMemo(() => raceBinIndex(xs, a, b, RACE_BINS), [xs, a, b]);
   const counts = useRef(new Uint32Array(RACE_BINS));
   const bars = useRef<SVGPathElement>(null);
@@ -86,23 +102,54 @@ export function RaceHistogram({ id, xs, a, b, px, py, pdfLabel, yMax, color, tl,
     drawRef.current(tl.now());
   });
 
+  // the words and the table: the counts at the rendered position
+  const data = useMemo(() => {
+    const c = raceCounts(index, t, RACE_BINS);
+    const description = describeHistogram({
+      lane: id,
+      pdf: pdfLabel,
+      counts: c,
+      t,
+      a,
+      b,
+      half,
+      inHalf: half ? countIn(xs, t, half[0], half[1]) : 0,
+    });
+    const w = (b - a) / RACE_BINS;
+    const rows = Array.from(c, (n, k) => {
+      const [lo, hi] = binRange(k, a, b, RACE_BINS);
+      return [lo, hi, n, t > 0 ? n / (t * w) : NaN, gridAt(px, py, (lo + hi) / 2)];
+    });
+    return { description, rows };
+  }, [index, t, id, pdfLabel, a, b, half, xs, px, py]);
+
   return (
-    <figure className="mc-svg-fig mc-hist">
-      <figcaption>
-        Where all {t === 1 ? 'the sample' : `${t} samples`} fell, against {pdfLabel}
-      </figcaption>
-      <svg
-        viewBox={`0 0 360 ${HIST_H}`}
-        role="img"
-        aria-label={`Histogram of every ${id} sample drawn so far, as a density over x, with ${pdfLabel} drawn over it`}
+    <>
+      <DescribedFigure
+        className="mc-svg-fig mc-hist"
+        label={`Histogram of every ${id} sample drawn so far, against ${pdfLabel}`}
+        description={data.description}
+        quiet
+        testId={`race-histogram-${id}`}
       >
-        <Axes xTicks={axes.xt} yTicks={axes.yt} xLabel="x" yLabel="density" h={HIST_H} />
-        <path ref={bars} className="mc-svg-bars" style={{ fill: color }} data-testid={`race-hist-${id}`} />
-        <path d={axes.pPath} className="mc-svg-pdf" />
-        <text x={M.l + PW - 4} y={M.t + 14} textAnchor="end" className="mc-svg-pdf-label">
-          — p(x)
-        </text>
-      </svg>
-    </figure>
+        <figcaption>
+          Where all {t === 1 ? 'the sample' : `${t} samples`} fell, against {pdfLabel}
+        </figcaption>
+        <svg viewBox={`0 0 360 ${HIST_H}`} aria-hidden="true">
+          <Axes xTicks={axes.xt} yTicks={axes.yt} xLabel="x" yLabel="density" h={HIST_H} />
+          <path ref={bars} className="mc-svg-bars" style={{ fill: color }} data-testid={`race-hist-${id}`} />
+          <path d={axes.pPath} className="mc-svg-pdf" />
+          <text x={M.l + PW - 4} y={M.t + 14} textAnchor="end" className="mc-svg-pdf-label">
+            — p(x)
+          </text>
+        </svg>
+      </DescribedFigure>
+      <ShowAsTable
+        caption={`Histogram of the ${t} ${id} samples drawn so far, ${RACE_BINS} bins, against ${pdfLabel}`}
+        columns={['from x', 'to x', 'count', 'density', 'p(x) at the bin centre']}
+        rows={data.rows}
+        testId={`race-hist-table-${id}`}
+      />
+    </>
   );
 }

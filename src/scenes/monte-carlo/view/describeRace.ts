@@ -4,6 +4,7 @@
  * accessible descriptions.
  */
 import { formatCount, formatSignificant } from '../../../ui/format';
+import { summarizeSeries } from '../../../ui/summary';
 import { binRange, type LaneState } from '../model';
 
 const num = (x: number, digits: number) => (Number.isFinite(x) ? formatSignificant(x, digits, 'times') : '—');
@@ -100,4 +101,67 @@ export function describeHistogram(o: {
   const bin = (k: number) => interval(...binRange(k, o.a, o.b, bins));
   const half = o.half ? `; ${percent(o.inHalf, o.t)} in ${interval(o.half[0], o.half[1])}` : '';
   return `${what}: fewest ${formatCount(o.counts[lo])} in ${bin(lo)}, most ${formatCount(o.counts[hi])} in ${bin(hi)}${half}.`;
+}
+
+/** The race's curves up to t (model.raceAt's `curve`): N and each lane's estimate, ± s/√N, |error|. */
+export interface RaceCurve {
+  n: readonly number[];
+  u: readonly number[];
+  uSe: readonly number[];
+  uErr: readonly number[];
+  i: readonly number[];
+  iSe: readonly number[];
+  iErr: readonly number[];
+}
+
+/** The integrand plot: f over [a, b], the importance pdf on it, and the newest sample of each lane. */
+export function describeIntegrand(o: {
+  a: number;
+  b: number;
+  fMin: number;
+  fMax: number;
+  importanceName: string;
+  uniform: LaneState;
+  importance: LaneState;
+}): string {
+  const head = `f over ${interval(o.a, o.b)}, from ${num(o.fMin, 4)} to ${num(o.fMax, 4)}, with the importance pdf (${o.importanceName}) drawn scaled onto it.`;
+  if (o.uniform.n < 1) return `${head} No sample has dropped yet.`;
+  const k = o.uniform.n;
+  return `${head} Sample ${formatCount(k)} dropped at x = ${num(o.uniform.x, 4)} (uniform) and x = ${num(o.importance.x, 4)} (importance); the ticks under f are the newest samples of each.`;
+}
+
+/** |error| against N on log–log axes, both lanes: the fitted slope of each, or "zero variance". */
+export function describeErrors(c: RaceCurve, zeroVarianceImportance: boolean): string {
+  if (c.n.length === 0) return '|error| against N, log–log: no samples yet.';
+  const opts = { xLabel: 'N', yLabel: '|error|', logLog: true } as const;
+  const u = `Uniform: ${summarizeSeries(c.n, c.uErr, opts)}`;
+  const i = zeroVarianceImportance
+    ? `Importance: zero variance, its |error| stays at rounding level (at most ${num(Math.max(...c.iErr.filter(Number.isFinite), 0), 2)}) at every N.`
+    : `Importance: ${summarizeSeries(c.n, c.iErr, opts)}`;
+  return `${u} ${i}`;
+}
+
+/** One lane's running estimate against N: its summary and where it ends against the exact I. */
+export function describeEstimate(
+  lane: string,
+  n: readonly number[],
+  est: readonly number[],
+  s: LaneState,
+  exact: number,
+): string {
+  if (n.length === 0) return `The ${lane} estimate against N: no samples yet.`;
+  const sum = summarizeSeries(n, est, { xLabel: 'N', yLabel: `the ${lane} estimate` });
+  return `${sum} Now ${laneText(s)} against the exact I = ${num(exact, 6)}.`;
+}
+
+/** Where a running estimate crosses the exact value (a sign change of estimate − I between points). */
+export function crossings(xs: readonly number[], est: readonly number[], exact: number): number[] {
+  const out: number[] = [];
+  for (let k = 1; k < est.length; k++) {
+    const d0 = est[k - 1] - exact;
+    const d1 = est[k] - exact;
+    if (Number.isFinite(d0) && Number.isFinite(d1) && d0 !== 0 && Math.sign(d0) !== Math.sign(d1))
+      out.push(d1 === 0 ? xs[k] : xs[k - 1] + ((xs[k] - xs[k - 1]) * d0) / (d0 - d1));
+  }
+  return out;
 }
