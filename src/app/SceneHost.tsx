@@ -24,7 +24,7 @@ import {
 import { shellExtras, type ShellFlags } from '../kit/shell';
 import { useShortcuts } from '../ui/shortcuts';
 import { QuestionNav } from '../ui/exam';
-import { useHostScene } from './hostApi';
+import { useHostScene } from './hostBridge';
 import { embedSnippet } from './embedCode';
 import { QrButton } from './QrButton';
 import { markFirstScreen } from './firstScreen';
