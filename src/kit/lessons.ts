@@ -6,6 +6,7 @@
  * and not with the entry.
  */
 import { questionInfo, sceneById, type QuestionInfo, type SceneId, type SceneInfo } from './catalogue';
+import { SHELL_PARAMS } from './params';
 
 /** One step of a lesson plan: a link that opens a scene in a telling configuration. */
 export interface LessonPreset {
@@ -18,6 +19,13 @@ export interface LessonPreset {
   shows: string;
   /** What to ask the class at this step. */
   ask: string;
+  /** The exam part the link lands on (`part=`). */
+  part?: string;
+  /**
+   * The link opens with `ask=1`: results hidden until revealed, for a question the class answers
+   * before it sees them (false where the question is about what is on screen).
+   */
+  askFirst?: boolean;
 }
 
 /** Each question's lesson presets, by question number. */
@@ -284,3 +292,30 @@ export const MISCONCEPTIONS: Readonly<Record<SceneId, { title: string; items: re
 export function presetScene(n: QuestionInfo['n'], p: LessonPreset): SceneInfo {
   return sceneById(p.scene ?? (questionInfo(n) as QuestionInfo).scene);
 }
+
+/**
+ * The `ask` text of the lesson preset whose link `query` is (its scene parameters exactly, whatever
+ * the shell flags), or null: an `ask=1` page opened from the guide puts the preset's own question.
+ */
+export function presetAskFor(scene: SceneId, query: string): string | null {
+  let sp: URLSearchParams;
+  try {
+    sp = new URLSearchParams(query);
+  } catch {
+    return null;
+  }
+  const given = new Map<string, string>();
+  for (const [k, v] of sp) {
+    if (!(SHELL_PARAMS as readonly string[]).includes(k) && !given.has(k)) given.set(k, v);
+  }
+  for (const q of QUESTION_NUMBERS) {
+    for (const p of LESSON_PRESETS[q]) {
+      if (presetScene(q, p).id !== scene) continue;
+      const entries = Object.entries(p.params);
+      if (entries.length === given.size && entries.every(([k, v]) => given.get(k) === v)) return p.ask;
+    }
+  }
+  return null;
+}
+
+const QUESTION_NUMBERS: readonly QuestionInfo['n'][] = [1, 2, 3, 4, 5, 6];
