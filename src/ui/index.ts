@@ -8,6 +8,8 @@ export {
   type ReadoutProps,
 } from './Readout';
 export { NumberField, Slider, Select, Toggle, ExprField, Panel, Notice, SceneLayout } from './controls';
+export { Revealed, type RevealedProps } from './ask';
+export { usePresent, isPresent } from './pageKeys';
 export { MathTex, loadKatex } from './MathTex';
 export { runChunked, nextTask } from './chunked';
 export { Plot, loadPlotly, type PlotTrace, type PlotLayout } from './Plot';
