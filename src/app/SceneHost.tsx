@@ -25,7 +25,7 @@ import { dropQueryParam, parseHash, parseShellFlags, shellExtras, type ShellFlag
 import { useShortcuts } from '../ui/shortcuts';
 import { AskPrompt } from '../ui/ask';
 import { usePageKey } from '../ui/pageKeys';
-import { QuestionNav } from '../ui/exam';
+import { QuestionNav } from '../ui/QuestionNav';
 import { useHostScene } from './hostBridge';
 import { embedSnippet } from './embedCode';
 import { QrButton } from './QrButton';
