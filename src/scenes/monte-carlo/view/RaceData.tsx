@@ -39,8 +39,6 @@ export function raceWords(o: {
     if (v > fMax) fMax = v;
   }
   return {
-    zeroVarianceImportance: fr.importance.zeroVariance,
-    curve: fr.curve,
     main: describeRace({
       t,
       max: track.max,

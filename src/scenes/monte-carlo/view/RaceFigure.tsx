@@ -16,6 +16,7 @@ import {
   DescribedFigure,
   formatNumber,
   LiveReadout,
+  Revealed,
   TEXT_HZ,
   TimelineTransport,
   useTimeline,
@@ -26,7 +27,7 @@ import { pow10Text } from '../../../ui/axis';
 import { clampExponent, fmt, linearScale, logScale, type Scale } from '../../../ui/chartScale';
 import { Axes, H, M, path, PH, PW, W } from './raceSvg';
 import { RaceHistogram } from './RaceHistogram';
-import { RaceData, raceWords } from './RaceData';
+import { raceWords } from './RaceData';
 import {
   gridAt,
   RACE_DURATION,
@@ -63,6 +64,10 @@ export interface RaceProps {
   importanceName: string;
   /** The half of [a, b] where the importance pdf is heavier (the description says how many fell there). */
   half: [number, number] | null;
+  /** Classroom mode: the race is the stage, its plots in a grid sized to the first screen. */
+  staged: boolean;
+  /** ask=1: held at its start, its transport hidden (nothing can play) until revealed. */
+  held: boolean;
   t: number;
   play: boolean;
   setParams: (patch: { t?: number; play?: boolean }) => void;
@@ -152,10 +157,10 @@ function Lane({
 }) {
   return (
     <div className="mc-lane" style={{ borderTopColor: color }}>
-      <h4 className="mc-lane-title" style={{ color }}>
+      <h4 className={`mc-lane-title mc-area-t${id[0]}`} style={{ color }}>
         {name}
       </h4>
-      <div className="readouts mc-lane-readouts">
+      <div className={`readouts mc-lane-readouts mc-area-r${id[0]}`}>
         <LiveReadout
           id={`race-${id}-x`}
           label={
@@ -191,6 +196,8 @@ export const RaceFigure = memo(function RaceFigure({
   importanceLabel,
   importanceName,
   half,
+  staged,
+  held,
   t,
   play,
   setParams,
@@ -205,6 +212,7 @@ export const RaceFigure = memo(function RaceFigure({
     duration: RACE_DURATION,
     visibleRef: box,
     renderHz: RENDER_HZ,
+    shortcuts: !held,
   });
   const points = useMemo(() => racePoints(track.max), [track.max]);
   const fr = useMemo(() => raceHeadAt(track, tl.t, RECENT), [track, tl.t]);
@@ -378,33 +386,36 @@ export const RaceFigure = memo(function RaceFigure({
   };
 
   return (
-    <div className="mc-race" ref={box} data-testid="race">
+    <div className={staged ? 'mc-race mc-race-staged' : 'mc-race'} ref={box} data-testid="race">
       <DescribedFigure
         label="The race: uniform against importance sampling, one sample at a time"
         description={words.main}
         playing={tl.playing}
         testId="race-figure"
       >
-        <TimelineTransport
-          timeline={tl}
-          label="Samples arriving"
-          format={(n) => `${n} of ${RACE_MAX} samples`}
-          testId="timeline"
-        >
-          <span className="mc-note" data-testid="race-rate">
-            {formatNumber(rate, 4)} samples/s
-          </span>
-        </TimelineTransport>
-        <div className="mc-race-grid">
+        <Revealed ask={held} what="the samples: reveal, then play them" testId="ask-hidden-race">
+          <TimelineTransport
+            timeline={tl}
+            label="Samples arriving"
+            format={(n) => `${n} of ${RACE_MAX} samples`}
+            testId="timeline"
+          >
+            <span className="mc-note" data-testid="race-rate">
+              {formatNumber(rate, 4)} samples/s
+            </span>
+          </TimelineTransport>
+        </Revealed>
+        <div className={staged ? 'mc-race-grid stage-figure' : 'mc-race-grid'}>
           <DescribedFigure
-            className="mc-svg-fig"
+            className="mc-svg-fig mc-area-f"
             label="Each sample drops onto f"
             description={words.integrand}
             quiet
             testId="race-integrand"
           >
             <figcaption>
-              Each xᵢ drops onto f (● uniform, ○ importance; newest {RECENT} as ticks, uniform above)
+              Each xᵢ drops onto f
+              {staged ? null : ` (● uniform, ○ importance; newest ${RECENT} as ticks, uniform above)`}
             </figcaption>
             <svg ref={svgF} viewBox={`0 0 ${W} ${H}`} aria-hidden="true">
               <Axes xTicks={fig.xt} yTicks={fig.yt} xLabel="x" yLabel="f(x)" />
@@ -417,7 +428,7 @@ export const RaceFigure = memo(function RaceFigure({
             </svg>
           </DescribedFigure>
           <DescribedFigure
-            className="mc-svg-fig"
+            className="mc-svg-fig mc-area-x"
             label="|error| of the running estimates against N, log–log"
             description={words.errors}
             quiet
@@ -482,14 +493,16 @@ export const RaceFigure = memo(function RaceFigure({
                 tl={tl}
                 t={fr.t}
                 half={half}
+                staged={staged}
               />
               <DescribedFigure
-                className="mc-svg-fig"
+                className={`mc-svg-fig mc-area-e${k}`}
                 label={`The ${id} running estimate with its ± s/√N band, against N on a log axis`}
                 description={words[id]}
                 quiet
                 testId={`race-estimate-${id}`}
               >
+                <figcaption>⟨I⟩ against N, with its ± s/√N band</figcaption>
                 <svg viewBox={`0 0 ${W} ${H}`} aria-hidden="true">
                   <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
                   <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
@@ -510,14 +523,13 @@ export const RaceFigure = memo(function RaceFigure({
             </Lane>
           ))}
         </div>
-        <p className="mc-note">
+        <p className="mc-note mc-race-note">
           Solid blue: uniform; dashed orange: importance (its pdf dashed on f). Grey dashes: the exact I ={' '}
           {formatNumber(I, 8)}; the grey line: the N⁻½ trend σ/√N. Both estimators use the same random numbers
           ξᵢ (seeded): uniform puts xᵢ = a + (b − a)ξᵢ, importance xᵢ = P⁻¹(ξᵢ). Errors below{' '}
           {pow10Text(Math.round(Math.log10(fig.floor)))} sit on the bottom line.
         </p>
       </DescribedFigure>
-      <RaceData curve={words.curve} exact={I} zeroVarianceImportance={words.zeroVarianceImportance} />
     </div>
   );
 });

@@ -36,6 +36,8 @@ export interface RaceHistogramProps {
   t: number;
   /** The half of [a, b] where the importance pdf is heavier: the description says how many fell there. */
   half: [number, number] | null;
+  /** Classroom mode: a shorter caption. */
+  staged: boolean;
 }
 
 /** The bars of a density histogram (bins of equal width over [a, b]) as one path, clipped at yMax. */
@@ -68,6 +70,7 @@ export function RaceHistogram({
   tl,
   t,
   half,
+  staged,
 }: RaceHistogramProps) {
   const index = useMemo(() => raceBinIndex(xs, a, b, RACE_BINS), [xs, a, b]);
   const counts = useRef(new Uint32Array(RACE_BINS));
@@ -126,14 +129,16 @@ export function RaceHistogram({
   return (
     <>
       <DescribedFigure
-        className="mc-svg-fig mc-hist"
+        className={`mc-svg-fig mc-hist mc-area-h${id[0]}`}
         label={`Histogram of every ${id} sample drawn so far, against ${pdfLabel}`}
         description={data.description}
         quiet
         testId={`race-histogram-${id}`}
       >
         <figcaption>
-          Where all {t === 1 ? 'the sample' : `${t} samples`} fell, against {pdfLabel}
+          {staged
+            ? `All ${t} samples against p(x)`
+            : `Where all ${t === 1 ? 'the sample' : `${t} samples`} fell, against ${pdfLabel}`}
         </figcaption>
         <svg viewBox={`0 0 360 ${HIST_H}`} aria-hidden="true">
           <Axes xTicks={axes.xt} yTicks={axes.yt} xLabel="x" yLabel="density" h={HIST_H} />

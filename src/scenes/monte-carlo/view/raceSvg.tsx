@@ -57,7 +57,7 @@ export function Axes({
         y={M.t + ph / 2}
         textAnchor="middle"
         transform={`rotate(-90 11 ${M.t + ph / 2})`}
-        className="mc-svg-axis-title"
+        className="mc-svg-axis-title mc-svg-ytitle"
       >
         {yLabel}
       </text>
