@@ -1,6 +1,6 @@
 /** Convergence as N grows: running estimate and |error| log-log with guides and fitted slopes (one run per strategy, in the worker). */
 import { useEffect, useMemo, useRef } from 'react';
-import { formatNumber, Panel, Plot, useThrottled, type PlotTrace } from '../../../ui';
+import { formatNumber, Panel, Plot, ShowAsTable, useThrottled, type PlotTrace } from '../../../ui';
 import { useAutoRun, type WorkerFactory } from '../../../workers';
 import { atRoundingLevel } from '../model';
 import { formatCount } from '../../../ui/format';
@@ -8,6 +8,7 @@ import type { ProblemArgs, SeriesData } from '../jobs';
 import { REDRAW_MS, useLegendRoom } from './hooks';
 import { arr, Heading, L_ERR, L_EST, RunBar, strategyLine } from './plotStyle';
 import type { McTasks } from '../mc.worker';
+import { describeSeriesSet, seriesTable } from './plotWords';
 
 export function ConvergencePanel({
   args,
@@ -106,6 +107,23 @@ export function ConvergencePanel({
     return t;
   }, [series, ref, nMax]);
 
+  // the plots in words and as tables
+  const words = useMemo(() => {
+    const est = series.map((s) => ({ label: s.label, xs: s.n, ys: s.estimate }));
+    const err = series
+      .filter((s) => !atRoundingLevel(s.absError, ref))
+      .map((s) => ({ label: s.label, xs: s.n, ys: s.absError }));
+    const empty = 'No run yet.';
+    return {
+      est: `${describeSeriesSet(est, { xLabel: 'N', yLabel: 'the estimate', empty })} Exact: ${formatNumber(ref, 8)}.`,
+      err: describeSeriesSet(err, { xLabel: 'N', yLabel: '|error|', logLog: true, empty }),
+      estTable: seriesTable('N', est),
+      errTable: seriesTable(
+        'N',
+        series.map((s) => ({ label: s.label, xs: s.n, ys: s.absError })),
+      ),
+    };
+  }, [series, ref]);
   const h = (present ? 380 : 300) + useLegendRoom();
   return (
     <Panel title="Convergence as N grows (Q4 d)" className="mc-plots">
@@ -118,15 +136,31 @@ export function ConvergencePanel({
         <Plot
           data={estData}
           height={h}
-          ariaLabel="Running estimate against the number of samples N, on a log axis, for several strategies, with the exact value"
+          label="Running estimate against the number of samples N, on a log axis, for several strategies, with the exact value"
+          description={words.est}
           layout={L_EST}
+          testId="convergence-estimate-plot"
+        />
+        <ShowAsTable
+          caption="Running estimate against N, per strategy"
+          columns={words.estTable.columns}
+          rows={words.estTable.rows}
+          testId="convergence-estimate-table"
         />
         <Heading>|error| of one run, log-log, with N⁻½ and N⁻¹ guides</Heading>
         <Plot
           data={errData}
           height={h}
-          ariaLabel="Absolute error against N on log-log axes, with guide lines falling as N to the −½ and N to the −1 and fitted slopes"
+          label="Absolute error against N on log-log axes, with guide lines falling as N to the −½ and N to the −1 and fitted slopes"
+          description={words.err}
           layout={L_ERR}
+          testId="convergence-error-plot"
+        />
+        <ShowAsTable
+          caption="|estimate − exact| against N, per strategy"
+          columns={words.errTable.columns}
+          rows={words.errTable.rows}
+          testId="convergence-error-table"
         />
         {exactLabels.length ? (
           <p className="mc-note" data-testid="exact-strategies">

@@ -1,6 +1,6 @@
 /** RMSE over independent (randomized) runs against N, and against the measured run time. */
 import { useMemo, useRef } from 'react';
-import { Panel, Plot, useThrottled, type PlotTrace } from '../../../ui';
+import { Panel, Plot, ShowAsTable, useThrottled, type PlotTrace } from '../../../ui';
 import { useAutoRun, type WorkerFactory } from '../../../workers';
 import { atRoundingLevel, sortedByX } from '../model';
 import { formatCount } from '../../../ui/format';
@@ -19,6 +19,7 @@ import {
   strategyLine,
 } from './plotStyle';
 import type { McTasks } from '../mc.worker';
+import { describeSeriesSet, seriesTable } from './plotWords';
 
 export function RmsePanel({
   args,
@@ -111,6 +112,36 @@ export function RmsePanel({
     [rm, exact],
   );
 
+  // the plots in words and as tables
+  const words = useMemo(() => {
+    const shown = rm.filter((s) => !atRoundingLevel(s.rmse, exact));
+    const empty = 'No runs yet.';
+    return {
+      rmse: describeSeriesSet(
+        shown.map((s) => ({ label: s.label, xs: s.n, ys: s.rmse })),
+        { xLabel: 'N', yLabel: 'RMSE', logLog: true, empty },
+      ),
+      time: describeSeriesSet(
+        shown.map((s) => ({ label: s.label, xs: s.timeMs, ys: s.rmse })),
+        { xLabel: 'ms', yLabel: 'RMSE', logLog: true, empty },
+      ),
+      rmseTable: seriesTable(
+        'N',
+        rm.flatMap((s) => [
+          { label: `${s.label} RMSE`, xs: s.n, ys: s.rmse },
+          { label: `${s.label} 10 %`, xs: s.n, ys: s.lo },
+          { label: `${s.label} 90 %`, xs: s.n, ys: s.hi },
+        ]),
+      ),
+      timeTable: seriesTable(
+        'N',
+        shown.flatMap((s) => [
+          { label: `${s.label} ms`, xs: s.n, ys: s.timeMs },
+          { label: `${s.label} RMSE`, xs: s.n, ys: s.rmse },
+        ]),
+      ),
+    };
+  }, [rm, exact]);
   const runsDone = rm[0]?.runs ?? 0;
   const h = 300 + useLegendRoom();
   return (
@@ -134,15 +165,31 @@ export function RmsePanel({
         <Plot
           data={rmseData}
           height={h}
-          ariaLabel="Root mean square error over independent runs against N, log-log, with bands from the 10th to the 90th percentile of the absolute error"
+          label="Root mean square error over independent runs against N, log-log, with bands from the 10th to the 90th percentile of the absolute error"
+          description={words.rmse}
           layout={L_RMSE}
+          testId="rmse-plot"
+        />
+        <ShowAsTable
+          caption="RMSE over the runs and the 10–90 % band of |error|, against N, per strategy"
+          columns={words.rmseTable.columns}
+          rows={words.rmseTable.rows}
+          testId="rmse-table"
         />
         <Heading>Accuracy per millisecond: RMSE against run time</Heading>
         <Plot
           data={timeData}
           height={h}
-          ariaLabel="RMSE against the measured wall-clock time of one estimate, log-log, per strategy"
+          label="RMSE against the measured wall-clock time of one estimate, log-log, per strategy"
+          description={words.time}
           layout={L_TIME}
+          testId="rmse-time-plot"
+        />
+        <ShowAsTable
+          caption="Time of one estimate (ms) and its RMSE, against N, per strategy"
+          columns={words.timeTable.columns}
+          rows={words.timeTable.rows}
+          testId="rmse-time-table"
         />
         {rmExactLabels.length ? (
           <p className="mc-note">
