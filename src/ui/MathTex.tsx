@@ -2,7 +2,7 @@ import { useEffect, useMemo, useRef, useState } from 'react';
 import { KATEX_OPTIONS } from './katexOptions';
 import { flushMathForPrint, insertTypeset, scheduleMath } from './mathQueue';
 import { afterPaint } from './afterPaint';
-import { texPreview } from './texPreview';
+import { previewLabel, texPreview } from './texPreview';
 import type { TypesetReply, TypesetRequest } from './katex.worker';
 
 type Katex = typeof import('katex');
@@ -83,7 +83,9 @@ function typeset(tex: string, display: boolean): Promise<string | null> {
 function typesetNow(tex: string, display: boolean): Promise<string | null> {
   const w = katexWorker();
   const onMain = () =>
-    loadKatex().then((k) => k.renderToString(tex, { ...KATEX_OPTIONS, displayMode: display }));
+    Promise.all([loadKatex(), import('./mathmlSpeech')]).then(([k, m]) =>
+      m.speakableMathml(k.renderToString(tex, { ...KATEX_OPTIONS, displayMode: display })),
+    );
   if (!w) return onMain();
   return new Promise<string | null>((resolve, reject) => {
     const id = nextId++;
@@ -180,7 +182,9 @@ export function MathTex({
   if (html === undefined) {
     return (
       <Tag ref={ref as React.RefObject<HTMLDivElement>} className={`${cls} math-pending`}>
-        <span className="math-preview">{preview}</span>
+        <span className="math-preview" role="math" aria-label={previewLabel(preview)}>
+          {preview}
+        </span>
       </Tag>
     );
   }

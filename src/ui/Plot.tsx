@@ -1,5 +1,6 @@
 import { useEffect, useId, useMemo, useRef, useState } from 'react';
 import { touchOnly, useSeenOnce } from './useInView';
+import { resolveTraceColors } from './palette';
 
 type PlotlyModule = (typeof import('plotly.js-cartesian-dist-min'))['default'];
 let plotlyPromise: Promise<PlotlyModule> | null = null;
@@ -169,7 +170,7 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
       if (layout && layout[k]) merged[k] = { ...axis, ...(layout[k] as object) };
     }
     pending.current = plotly
-      .react(el.current, clean.data, merged, {
+      .react(el.current, resolveTraceColors(clean.data), resolveTraceColors(merged), {
         ...PLOT_CONFIG,
         // on touch screens the mode bar would sit over titles and legends with no hover to hide it
         displayModeBar: touchOnly() ? false : 'hover',

@@ -55,3 +55,4 @@ export { DescribedFigure, DESCRIBE_SETTLE_MS, type DescribedFigureProps } from '
 export { summarizeSeries, superscriptExponent, type SummaryOptions } from './summary';
 export { ShowAsTable, type ShowAsTableProps } from './DataTable';
 export { AudioTrace, type AudioTraceProps, type TraceEvent, type TraceEventKind } from './audioTrace';
+export { SERIES, STRATEGY_COLOR, resolveColor } from './palette';
