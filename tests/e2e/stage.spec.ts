@@ -302,9 +302,12 @@ test('Play and Pause have the same width: the transport row does not shift', asy
   const play = page.getByTestId('timeline-play').first();
   await play.scrollIntoViewIfNeeded();
   const before = (await play.boundingBox())!.width;
+  // the invisible wider label is neither seen by screen readers nor part of the button's name
+  await expect(play).toHaveAccessibleName('▶ Play');
   await play.click();
   await expect(play).toHaveAttribute('aria-pressed', 'true');
   const during = (await play.boundingBox())!.width;
+  await expect(play).toHaveAccessibleName('❚❚ Pause');
   await play.click();
   expect(Math.abs(during - before)).toBeLessThanOrEqual(0.5);
 });
