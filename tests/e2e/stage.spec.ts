@@ -368,3 +368,23 @@ for (const s of SCENES) {
     expect(inside, `${s.id}: formulas broken inside parentheses`).toEqual([]);
   });
 }
+
+test('present=1: every Plotly plot’s tick labels are at least 18 px', async ({ page }) => {
+  test.setTimeout(180_000);
+  await page.setViewportSize({ width: 1280, height: 720 });
+  await openScene(page, '#/monte-carlo?present=1');
+  const height = await page.evaluate(() => document.documentElement.scrollHeight);
+  for (let y = 0; y < height; y += 600) {
+    await page.evaluate((y) => window.scrollTo(0, y), y);
+    await page.waitForTimeout(80);
+  }
+  await expect(page.locator('.js-plotly-plot .xtick text').first()).toBeAttached({ timeout: 60_000 });
+  const sizes = await page.locator('.js-plotly-plot :is(.xtick, .ytick) text').evaluateAll((ts) =>
+    ts.map((t) => ({
+      px: parseFloat(getComputedStyle(t).fontSize),
+      what: `${t.closest('figure')?.getAttribute('aria-label')?.slice(0, 40)}: ${t.textContent}`,
+    })),
+  );
+  expect(sizes.length).toBeGreaterThan(0);
+  expect(sizes.filter((s) => s.px < 17.5).map((s) => `${s.what} at ${s.px} px`)).toEqual([]);
+});
