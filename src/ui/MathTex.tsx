@@ -3,6 +3,7 @@ import { KATEX_OPTIONS } from './katexOptions';
 import { flushMathForPrint, insertTypeset, scheduleMath } from './mathQueue';
 import { afterPaint } from './afterPaint';
 import { previewLabel, texPreview } from './texPreview';
+import { keepParenthesesTogether } from './texBreaks';
 import type { TypesetReply, TypesetRequest } from './katex.worker';
 
 type Katex = typeof import('katex');
@@ -80,7 +81,9 @@ function typeset(tex: string, display: boolean): Promise<string | null> {
   return mathStarted().then(() => typesetNow(tex, display));
 }
 
-function typesetNow(tex: string, display: boolean): Promise<string | null> {
+function typesetNow(source: string, display: boolean): Promise<string | null> {
+  // a long formula wraps only at operators outside parentheses (./texBreaks)
+  const tex = keepParenthesesTogether(source);
   const w = katexWorker();
   const onMain = () =>
     Promise.all([loadKatex(), import('./mathmlSpeech')]).then(([k, m]) =>

@@ -10,6 +10,7 @@ export {
 export { NumberField, Slider, Select, Toggle, ExprField, Panel, Notice, SceneLayout } from './controls';
 export { Revealed, type RevealedProps } from './ask';
 export { usePresent, isPresent } from './pageKeys';
+export { keepTextParenthesesTogether } from './texBreaks';
 export { MathTex, loadKatex } from './MathTex';
 export { runChunked, nextTask } from './chunked';
 export { Plot, loadPlotly, type PlotTrace, type PlotLayout } from './Plot';
