@@ -1,5 +1,5 @@
 /**
- * Q6(a): dω = dA cos θ_l / r² by similar triangles, each step with this patch's numbers, the
+ * Q6(a): dω = dA cos θₗ / r² by similar triangles, each step with this patch's numbers, the
  * cross-section figure with the patch's controls, and the live check of the formula against the
  * exact solid angle of the patch as it shrinks.
  */
@@ -33,7 +33,7 @@ const PATCH_SLIDERS: readonly SliderSpec<PatchValues>[] = [
   },
   { label: 'Patch side', min: 0.001, max: 2, log: true, get: (v) => v.psize, patch: (psize) => ({ psize }) },
   {
-    label: 'Patch tilt θ_l (relative to the light)',
+    label: 'Patch tilt (relative to the light)',
     min: -89,
     max: 89,
     step: 1,
@@ -65,7 +65,7 @@ export const Q6a = memo(function Q6a({
         y: Array.from(patch.series.relError),
         type: 'scatter',
         mode: 'lines',
-        name: '|dA cos θ_l / r² − Ω| / Ω',
+        name: '|dA cos θ<sub>l</sub> / r² − Ω| / Ω',
         line: { color: '#e4572e' },
       },
       {
@@ -85,8 +85,8 @@ export const Q6a = memo(function Q6a({
       title="Solid angle of a small area element"
       asks={
         <>
-          A small area element dA of a light, at distance r from x, arbitrarily oriented (normal n_l at angle
-          θ_l to the direction back to x), subtends a solid angle dω. Show that{' '}
+          A small area element dA of a light, at distance r from x, arbitrarily oriented (normal n<sub>l</sub>{' '}
+          at angle θ<sub>l</sub> to the direction back to x), subtends a solid angle dω. Show that{' '}
           <MathTex tex={String.raw`d\omega = \dfrac{dA\cos\theta_l}{r^2}`} />.
         </>
       }
@@ -99,24 +99,24 @@ export const Q6a = memo(function Q6a({
             <MathTex tex={String.raw`dA^{\perp} = dl\cdot dl = dA\cos\theta_l`} />
             <span className="al-live" data-testid="step-6a-perp">
               {' '}
-              (here dA = {fmt(patch.area)}, cos θ_l = {fmt(patch.cosThetaL)}, dA⊥ ={' '}
+              (here dA = {fmt(patch.area)}, cos θ<sub>l</sub> = {fmt(patch.cosThetaL)}, dA⊥ ={' '}
               {fmt(patch.area * patch.cosThetaL)}, dl = {fmt(Math.sqrt(patch.area * patch.cosThetaL))})
             </span>
             .
           </li>
           <li>
-            The solid-angle element is the patch dA⊥ casts on the unit sphere, with sides dω_l:{' '}
+            The solid-angle element is the patch dA⊥ casts on the unit sphere, with sides dω<sub>l</sub>:{' '}
             <MathTex tex={String.raw`d\omega = d\omega_l\cdot d\omega_l`} />.
           </li>
           <li>
-            By similar triangles (shaded in the figure: legs 1 and dω_l/2 on the unit circle, legs r and dl/2
-            at the patch):{' '}
+            By similar triangles (shaded in the figure: legs 1 and dω<sub>l</sub>/2 on the unit circle, legs r
+            and dl/2 at the patch):{' '}
             <MathTex
               tex={String.raw`\frac{d\omega_l/2}{1} = \frac{dl/2}{r}\;\Rightarrow\; d\omega_l = \frac{dl}{r}`}
             />
             <span className="al-live" data-testid="step-6a-similar">
               {' '}
-              (r = {fmt(patch.r)}: dω_l = {fmt(Math.sqrt(patch.area * patch.cosThetaL) / patch.r)})
+              (r = {fmt(patch.r)}: dω<sub>l</sub> = {fmt(Math.sqrt(patch.area * patch.cosThetaL) / patch.r)})
             </span>
             .
           </li>
@@ -146,18 +146,37 @@ export const Q6a = memo(function Q6a({
         >
           <p className="al-note">
             The formula is exact only in the limit of a small patch. The exact solid angle of the orange patch
-            (Van Oosterom–Strackee) and dA cos θ_l / r² agree better and better as the patch shrinks — the
-            relative difference falls like the square of its size (slope 2 below).
+            (Van Oosterom–Strackee) and dA cos θ<sub>l</sub> / r² agree better and better as the patch shrinks
+            — the relative difference falls like the square of its size (slope 2 below).
           </p>
           <div className="al-readouts">
             <Readout id="patch-exact" label="exact Ω of the patch" value={patch.exact} digits={8} unit="sr" />
-            <Readout id="patch-approx" label="dA cos θ_l / r²" value={patch.approx} digits={8} unit="sr" />
+            <Readout
+              id="patch-approx"
+              label={
+                <>
+                  dA cos θ<sub>l</sub> / r²
+                </>
+              }
+              value={patch.approx}
+              digits={8}
+              unit="sr"
+            />
             <Readout id="patch-rel-error" label="relative difference" value={patch.relError} digits={3} />
             <Readout id="patch-r" label="r" value={patch.r} digits={5} />
-            <Readout id="patch-cos" label="cos θ_l" value={patch.cosThetaL} digits={5} />
+            <Readout
+              id="patch-cos"
+              label={
+                <>
+                  cos θ<sub>l</sub>
+                </>
+              }
+              value={patch.cosThetaL}
+              digits={5}
+            />
           </div>
           <Plot
-            ariaLabel="Relative difference between dA cos θ_l / r² and the exact solid angle of the patch, against the patch side, log-log: a line of slope 2."
+            ariaLabel="Relative difference between dA cos θₗ / r² and the exact solid angle of the patch, against the patch side, log-log: a line of slope 2."
             data={patchTraces}
             height={240}
             layout={{

@@ -26,7 +26,10 @@ export const Q6c = memo(function Q6c({
       id="6c"
       title="Monte Carlo estimator with uniform area sampling"
       asks={
-        <>Sampling points uniformly on the light’s area, give the pdf and the Monte Carlo estimator of L_o.</>
+        <>
+          Sampling points uniformly on the light’s area, give the pdf and the Monte Carlo estimator of L
+          <sub>o</sub>.
+        </>
       }
     >
       <Derivation testId="derivation-6c">
@@ -35,12 +38,12 @@ export const Q6c = memo(function Q6c({
             The pdf is uniform over the light’s area: <MathTex tex={String.raw`p_A = \frac{1}{|A|}`} />
             <span className="al-live" data-testid="step-6c-pdf">
               {' '}
-              (|A| = {fmt(given.area)}, p_A = {fmt(1 / given.area)})
+              (|A| = {fmt(given.area)}, p<sub>A</sub> = {fmt(1 / given.area)})
             </span>
             .
           </li>
           <li>
-            The MC estimator divides each term of the area integral by p_A:
+            The MC estimator divides each term of the area integral by p<sub>A</sub>:
             <MathTex
               display
               tex={String.raw`\langle L_o\rangle = \frac{1}{N}\sum_{i=1}^{N}\frac{f\,L_i\,V\cos\theta_i\,\cos\theta_{l,i}/r_i^2}{p_A} = \frac{|A|}{N}\sum_{i=1}^{N} f\,L_i\,V_i\cos\theta_i\,\frac{\cos\theta_{l,i}}{r_i^2}`}
@@ -60,12 +63,24 @@ export const Q6c = memo(function Q6c({
                   <tr>
                     <th scope="col">i</th>
                     <th scope="col">(ξ₁, ξ₂)</th>
-                    <th scope="col">y_i on the light</th>
-                    <th scope="col">r_i</th>
-                    <th scope="col">cos θ_i</th>
-                    <th scope="col">cos θ_l,i</th>
-                    <th scope="col">V_i</th>
-                    <th scope="col">|A| f L V cos θ cos θ_l / r²</th>
+                    <th scope="col">
+                      y<sub>i</sub> on the light
+                    </th>
+                    <th scope="col">
+                      r<sub>i</sub>
+                    </th>
+                    <th scope="col">
+                      cos θ<sub>i</sub>
+                    </th>
+                    <th scope="col">
+                      cos θ<sub>l,i</sub>
+                    </th>
+                    <th scope="col">
+                      V<sub>i</sub>
+                    </th>
+                    <th scope="col">
+                      |A| f L V cos θ cos θ<sub>l</sub> / r²
+                    </th>
                   </tr>
                 </thead>
                 <tbody>
@@ -96,7 +111,11 @@ export const Q6c = memo(function Q6c({
             />
             <Readout
               id="given-estimate"
-              label="⟨L_o⟩ from these 4 samples"
+              label={
+                <>
+                  ⟨L<sub>o</sub>⟩ from these 4 samples
+                </>
+              }
               value={given.estimate}
               digits={7}
             />

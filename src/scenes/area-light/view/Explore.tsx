@@ -149,8 +149,8 @@ export const ConvergencePanel = memo(function ConvergencePanel({
         y="error"
       />
       <p className="al-note">
-        Solid: |estimate − reference|. Dotted: the standard error s/√N the estimator reports. Both fall like
-        N^−½; the strategies differ by a constant.
+        Solid: |estimate − reference|. Dotted: the standard error s/√N the estimator reports. Both fall like N
+        <sup>−½</sup>; the strategies differ by a constant.
       </p>
     </Panel>
   );
