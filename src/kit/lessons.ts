@@ -200,13 +200,13 @@ export const LESSON_PRESETS: Readonly<Record<QuestionInfo['n'], readonly LessonP
       ask: 'Derive dω from similar triangles. Which factor shrinks a patch’s solid angle fastest as it moves to the light’s edge?',
     },
     {
-      params: { lc: '0,0,0.25', ls: '2,2', strategy: 'area' },
+      params: { lc: '0,0,0.25', ls: '2,2', tilt: '0', strategy: 'area' },
       title: 'A big light close by, sampled by area (Q6c)',
       shows: 'Uniform area sampling, p_A = 1/|A|: r² varies wildly over the light, so the estimate is noisy.',
       ask: 'Which samples get the largest weights |A| cos θ cos θ_l / r²? Which strategy would you choose here?',
     },
     {
-      params: { lc: '0,0,10', ls: '1,1', strategy: 'cosine' },
+      params: { lc: '0,0,10', ls: '1,1', tilt: '0', strategy: 'cosine' },
       title: 'A small far light, cosine sampling',
       shows: 'Cosine-weighted directions almost never hit a small distant light.',
       ask: 'Most samples return 0. Is the estimator biased? Why is it so noisy, and what would area sampling do?',

@@ -1,5 +1,5 @@
 /**
- * Solid angle and area lights (exam Q6): dω = dA cos θ_l / r² drawn, the rendering equation over
+ * Solid angle and area lights (exam Q6): dω = dA cos θₗ / r² drawn, the rendering equation over
  * solid angle and over area, and three estimators of the light reflected by a Lambertian floor —
  * uniform area (the key's), solid-angle (spherical rectangle) and cosine hemisphere sampling —
  * against the analytic reference (Lambert's formula). All figures come from ./model over the core;
@@ -26,6 +26,7 @@ import { Q6a } from './exam/Q6a';
 import { Q6b } from './exam/Q6b';
 import { Answer6c, Q6c } from './exam/Q6c';
 import { Controls } from './view/Controls';
+import { ExamConfig } from './view/ExamConfig';
 import { ConvergencePanel, StrategyTable, TimingPanel } from './view/Explore';
 import { FloorImages } from './view/FloorImages';
 import { Stage } from './view/Stage';
@@ -176,11 +177,12 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
         intro={
           <p>
             A rectangular area light of radiance L shines on a floor point x (normal +z, Lambertian, albedo
-            ρ). (a) Derive dω = dA cos θ_l / r² by similar triangles; (b) write the rendering equation over
-            the light’s area; (c) give the Monte Carlo estimator with uniform area sampling.
+            ρ). (a) Derive dω = dA cos θ<sub>l</sub> / r² by similar triangles; (b) write the rendering
+            equation over the light’s area; (c) give the Monte Carlo estimator with uniform area sampling.
           </p>
         }
       >
+        <ExamConfig params={params} tilt={model.tilt} patchCos={patch.cosThetaL} set={set} />
         <Stage
           tl={tl}
           stageRef={stageRef}
