@@ -196,7 +196,8 @@ test('dark theme: no serious or critical axe violations (the highlighted KaTeX b
 test('a tiny, distant light (10⁶ away): Ω matches A cos θ_l / r² (exact to O((size/d)²)) to 1e-11; estimates exact', async ({
   page,
 }) => {
-  await openScene(page, '#/area-light?lc=3,-2,1000000&ls=1,0.5&strategy=solid-angle&n=512');
+  // tilt=0: the light parallel to the floor, so cos θₗ = d / r below
+  await openScene(page, '#/area-light?lc=3,-2,1000000&ls=1,0.5&tilt=0&strategy=solid-angle&n=512');
   const omega = await readoutNumber(page, 'solid-angle');
   // The corner formula's four terms cancel at this distance, so the check is the small-patch limit,
   // whose own error is O((size/d)²) ≈ 1e-12.
