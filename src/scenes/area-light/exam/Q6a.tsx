@@ -4,11 +4,23 @@
  * exact solid angle of the patch as it shrinks.
  */
 import { memo, useMemo } from 'react';
-import { Derivation, ExamPart, LiveAnswer, MathTex, Plot, Readout, type PlotTrace } from '../../../ui';
+import {
+  DescribedFigure,
+  Derivation,
+  ExamPart,
+  LiveAnswer,
+  MathTex,
+  Plot,
+  Readout,
+  Revealed,
+  ShowAsTable,
+  summarizeSeries,
+  type PlotTrace,
+} from '../../../ui';
 import type { PatchModel } from '../patch';
 import type { AreaLightParams } from '../params';
 import { fmt } from '../view/format';
-import { PatchFigure } from '../view/PatchFigure';
+import { PatchFigure, patchFigureText } from '../view/PatchFigure';
 import { SliderList, type SliderSpec } from '../view/SliderList';
 
 type PatchValues = Pick<AreaLightParams, 'pu' | 'pv' | 'psize' | 'ptilt'>;
@@ -50,6 +62,7 @@ export const Q6a = memo(function Q6a({
   psize,
   ptilt,
   set,
+  ask,
 }: {
   patch: PatchModel;
   pu: number;
@@ -57,6 +70,8 @@ export const Q6a = memo(function Q6a({
   psize: number;
   ptilt: number;
   set: (patch: Partial<AreaLightParams>) => void;
+  /** Asked to predict first: the check is hidden until revealed. */
+  ask: boolean;
 }) {
   const patchTraces: PlotTrace[] = useMemo(
     () => [
@@ -79,6 +94,18 @@ export const Q6a = memo(function Q6a({
     ],
     [patch],
   );
+  const { relRows, relSummary } = useMemo(() => {
+    const xs = Array.from(patch.series.side);
+    const ys = Array.from(patch.series.relError);
+    return {
+      relRows: xs.map((x, i) => [x, ys[i]]),
+      relSummary: summarizeSeries(xs, ys, {
+        xLabel: 'side',
+        yLabel: 'the relative difference',
+        logLog: true,
+      }),
+    };
+  }, [patch]);
   return (
     <ExamPart
       id="6a"
@@ -135,57 +162,80 @@ export const Q6a = memo(function Q6a({
       </Derivation>
       <div className="al-6a">
         <div className="al-6a-figure">
-          <PatchFigure patch={patch} />
+          <DescribedFigure
+            label="Cross-section of Q6(a): the patch, its perpendicular projection and the similar triangles"
+            description={patchFigureText(patch)}
+            quiet
+            testId="al-patch-described"
+          >
+            <PatchFigure patch={patch} />
+          </DescribedFigure>
           <div className="al-patch-controls">
             <SliderList specs={PATCH_SLIDERS} values={{ pu, pv, psize, ptilt }} set={set} />
           </div>
         </div>
-        <LiveAnswer
-          title="Check, computed live: the formula against the exact solid angle of the patch"
-          testId="answer-6a"
-        >
-          <p className="al-note">
-            The formula is exact only in the limit of a small patch. The exact solid angle of the orange patch
-            (Van Oosterom–Strackee) and dA cos θ<sub>l</sub> / r² agree better and better as the patch shrinks
-            — the relative difference falls like the square of its size (slope 2 below).
-          </p>
-          <div className="al-readouts">
-            <Readout id="patch-exact" label="exact Ω of the patch" value={patch.exact} digits={8} unit="sr" />
-            <Readout
-              id="patch-approx"
-              label={
-                <>
-                  dA cos θ<sub>l</sub> / r²
-                </>
-              }
-              value={patch.approx}
-              digits={8}
-              unit="sr"
+        <Revealed ask={ask} what="the check of the formula against the exact solid angle">
+          <LiveAnswer
+            title="Check, computed live: the formula against the exact solid angle of the patch"
+            testId="answer-6a"
+          >
+            <p className="al-note">
+              The formula is exact only in the limit of a small patch. The exact solid angle of the orange
+              patch (Van Oosterom–Strackee) and dA cos θ<sub>l</sub> / r² agree better and better as the patch
+              shrinks — the relative difference falls like the square of its size (slope 2 below).
+            </p>
+            <div className="al-readouts">
+              <Readout
+                id="patch-exact"
+                label="exact Ω of the patch"
+                value={patch.exact}
+                digits={8}
+                unit="sr"
+              />
+              <Readout
+                id="patch-approx"
+                label={
+                  <>
+                    dA cos θ<sub>l</sub> / r²
+                  </>
+                }
+                value={patch.approx}
+                digits={8}
+                unit="sr"
+              />
+              <Readout id="patch-rel-error" label="relative difference" value={patch.relError} digits={3} />
+              <Readout id="patch-r" label="r" value={patch.r} digits={5} />
+              <Readout
+                id="patch-cos"
+                label={
+                  <>
+                    cos θ<sub>l</sub>
+                  </>
+                }
+                value={patch.cosThetaL}
+                digits={5}
+              />
+            </div>
+            <Plot
+              label="Relative difference between dA cos θₗ / r² and the exact solid angle of the patch, against the patch side (log–log)"
+              description={`${relSummary} This patch: side ${fmt(patch.side)}, relative difference ${fmt(Math.abs(patch.relError), 3)}.`}
+              testId="al-patch-plot"
+              data={patchTraces}
+              height={240}
+              layout={{
+                xaxis: { type: 'log', title: { text: 'patch side' } },
+                yaxis: { type: 'log', title: { text: 'relative difference' } },
+                showlegend: false,
+              }}
             />
-            <Readout id="patch-rel-error" label="relative difference" value={patch.relError} digits={3} />
-            <Readout id="patch-r" label="r" value={patch.r} digits={5} />
-            <Readout
-              id="patch-cos"
-              label={
-                <>
-                  cos θ<sub>l</sub>
-                </>
-              }
-              value={patch.cosThetaL}
-              digits={5}
+            <ShowAsTable
+              caption="Relative difference |dA cos θₗ / r² − Ω| / Ω against the patch side"
+              columns={['patch side', 'relative difference']}
+              rows={relRows}
+              testId="al-patch-table"
             />
-          </div>
-          <Plot
-            ariaLabel="Relative difference between dA cos θₗ / r² and the exact solid angle of the patch, against the patch side, log-log: a line of slope 2."
-            data={patchTraces}
-            height={240}
-            layout={{
-              xaxis: { type: 'log', title: { text: 'patch side' } },
-              yaxis: { type: 'log', title: { text: 'relative difference' } },
-              showlegend: false,
-            }}
-          />
-        </LiveAnswer>
+          </LiveAnswer>
+        </Revealed>
       </div>
     </ExamPart>
   );

@@ -3,7 +3,7 @@
  * visibility highlighted, with the reference values of the current setup.
  */
 import { memo, useMemo } from 'react';
-import { Derivation, ExamPart, KeyNote, LiveAnswer, MathTex, Readout } from '../../../ui';
+import { Derivation, ExamPart, KeyNote, LiveAnswer, MathTex, Readout, Revealed } from '../../../ui';
 import type { AreaLightModel } from '../model';
 import type { PatchModel } from '../patch';
 import { fmt } from '../view/format';
@@ -19,10 +19,13 @@ export const Q6b = memo(function Q6b({
   patch,
   model,
   dark,
+  ask,
 }: {
   patch: PatchModel;
   model: AreaLightModel;
   dark: boolean;
+  /** Asked to predict first: the values of Lₒ are hidden until revealed. */
+  ask: boolean;
 }) {
   const hl = useMemo(() => highlight(dark), [dark]);
   return (
@@ -87,47 +90,49 @@ export const Q6b = memo(function Q6b({
           as written here.
         </KeyNote>
       </Derivation>
-      <LiveAnswer testId="answer-6b">
-        <div className="al-readouts">
-          <Readout
-            id="reference"
-            label="reference (Lambert, no occluder)"
-            value={model.reference}
-            digits={7}
-          />
-          <Readout
-            id="reference-occluded"
-            label="reference with occluder (V < 1)"
-            value={model.occluder ? model.referenceOccluded : null}
-            digits={7}
-          />
-          <Readout
-            id="projected-solid-angle"
-            label="∫ cos θ dω (clipped to the horizon)"
-            value={model.projectedSolidAngle}
-            digits={7}
-            unit="sr"
-          />
-          <Readout
-            id="solid-angle"
-            label="solid angle Ω of the light"
-            value={model.solidAngle}
-            digits={7}
-            unit="sr"
-          />
-          <Readout
-            id="solid-angle-closed"
-            label="Ω, closed form (light parallel to floor)"
-            value={model.solidAngleClosed}
-            digits={7}
-            unit="sr"
-          />
-        </div>
-        <p className="al-note">
-          For a Lambertian floor f = ρ/π, and the integral has a closed form: L<sub>o</sub> = (ρ/π) L ∫ cos θ
-          dω by Lambert’s formula.
-        </p>
-      </LiveAnswer>
+      <Revealed ask={ask} what="Lₒ and the light’s solid angle">
+        <LiveAnswer testId="answer-6b">
+          <div className="al-readouts">
+            <Readout
+              id="reference"
+              label="reference (Lambert, no occluder)"
+              value={model.reference}
+              digits={7}
+            />
+            <Readout
+              id="reference-occluded"
+              label="reference with occluder (V < 1)"
+              value={model.occluder ? model.referenceOccluded : null}
+              digits={7}
+            />
+            <Readout
+              id="projected-solid-angle"
+              label="∫ cos θ dω (clipped to the horizon)"
+              value={model.projectedSolidAngle}
+              digits={7}
+              unit="sr"
+            />
+            <Readout
+              id="solid-angle"
+              label="solid angle Ω of the light"
+              value={model.solidAngle}
+              digits={7}
+              unit="sr"
+            />
+            <Readout
+              id="solid-angle-closed"
+              label="Ω, closed form (light parallel to floor)"
+              value={model.solidAngleClosed}
+              digits={7}
+              unit="sr"
+            />
+          </div>
+          <p className="al-note">
+            For a Lambertian floor f = ρ/π, and the integral has a closed form: L<sub>o</sub> = (ρ/π) L ∫ cos
+            θ dω by Lambert’s formula.
+          </p>
+        </LiveAnswer>
+      </Revealed>
     </ExamPart>
   );
 });

@@ -4,7 +4,7 @@
  */
 import { memo, useMemo, type ReactNode } from 'react';
 import type { LightStrategy } from '../../../core/lights';
-import { Derivation, ExamPart, LiveAnswer, MathTex, Readout } from '../../../ui';
+import { Derivation, ExamPart, LiveAnswer, MathTex, Readout, Revealed } from '../../../ui';
 import { STRATEGY_LABEL } from '../strategies';
 import { estimateOne, givenSamples, type AreaLightModel, type StrategyEstimate } from '../model';
 import { fmt } from '../view/format';
@@ -13,11 +13,14 @@ export const Q6c = memo(function Q6c({
   model,
   seed,
   answer,
+  ask,
 }: {
   model: AreaLightModel;
   seed: number;
   /** The live answer, rendered when the part's body mounts. */
   answer: ReactNode;
+  /** Asked to predict first: the terms, their mean and the answer are hidden until revealed. */
+  ask: boolean;
 }) {
   const given = useMemo(() => givenSamples(model, seed, 4), [model, seed]);
   const fArea = given.f;
@@ -97,32 +100,40 @@ export const Q6c = memo(function Q6c({
                       <td>{fmt(g.cosTheta)}</td>
                       <td>{fmt(g.cosThetaL)}</td>
                       <td>{g.V}</td>
-                      <td data-testid={`given-term-${i + 1}`} data-value={String(g.term)}>
-                        {fmt(g.term, 5)}
-                      </td>
+                      {ask ? (
+                        <td>?</td>
+                      ) : (
+                        <td data-testid={`given-term-${i + 1}`} data-value={String(g.term)}>
+                          {fmt(g.term, 5)}
+                        </td>
+                      )}
                     </tr>
                   ))}
                 </tbody>
               </table>
             </div>
-            <MathTex
-              display
-              tex={String.raw`\langle L_o\rangle_{N=4} = \tfrac{1}{4}\big(${given.samples.map((g) => fmt(g.term, 5)).join(' + ')}\big) = ${fmt(given.estimate, 5)}`}
-            />
-            <Readout
-              id="given-estimate"
-              label={
-                <>
-                  ⟨L<sub>o</sub>⟩ from these 4 samples
-                </>
-              }
-              value={given.estimate}
-              digits={7}
-            />
+            <Revealed ask={ask} what="the four terms and their mean">
+              <MathTex
+                display
+                tex={String.raw`\langle L_o\rangle_{N=4} = \tfrac{1}{4}\big(${given.samples.map((g) => fmt(g.term, 5)).join(' + ')}\big) = ${fmt(given.estimate, 5)}`}
+              />
+              <Readout
+                id="given-estimate"
+                label={
+                  <>
+                    ⟨L<sub>o</sub>⟩ from these 4 samples
+                  </>
+                }
+                value={given.estimate}
+                digits={7}
+              />
+            </Revealed>
           </li>
         </ol>
       </Derivation>
-      {answer}
+      <Revealed ask={ask} what="the estimate with N samples and its verdict">
+        {answer}
+      </Revealed>
     </ExamPart>
   );
 });

@@ -29,16 +29,15 @@ export const ExamConfig = memo(function ExamConfig({
       <p className="al-note" data-testid="al-config-note">
         {parallel ? (
           <>
-            The light is parallel to the floor, so cos θ = cos θ<sub>l</sub> at every sample.{' '}
+            Light parallel to the floor: cos θ = cos θ<sub>l</sub> at every sample.{' '}
           </>
         ) : (
           <>
-            The light is tilted {fmt(tiltFromFloor(tilt), 3)}° from the floor, so cos θ at the point and cos θ
-            <sub>l</sub> at the light differ.{' '}
+            Light {fmt(tiltFromFloor(tilt), 2)}° from the floor: cos θ at the point ≠ cos θ<sub>l</sub> at the
+            light.{' '}
           </>
         )}
-        The patch is turned {fmt(patchAngle, 3)}° from facing the point: dA⊥ = dA cos θ<sub>l</sub> ={' '}
-        {fmt(patchCos, 3)} dA.
+        Patch {fmt(patchAngle, 2)}° from facing the point: dA⊥ = {fmt(patchCos, 3)} dA.
       </p>
       <div className="al-row">
         <button

@@ -48,6 +48,22 @@ export function patchFigureLayout(patch: PatchModel) {
   return { thetaL, k, D, R, s, distanceToScale, patchToScale };
 }
 
+/** Whether (and how) the figure is drawn to scale, in words. */
+function scaleNoteOf(patch: PatchModel): string {
+  const { distanceToScale, patchToScale, s } = patchFigureLayout(patch);
+  return !distanceToScale
+    ? `r = ${fmt(patch.r, 3)} and the unit radius are not to scale here`
+    : !patchToScale
+      ? `to scale, except the patch (${sideTrueWord(s, patch)})`
+      : 'drawn to scale';
+}
+
+/** The figure in words, with its numbers: its accessible description. */
+export function patchFigureText(patch: PatchModel): string {
+  const deg = (Math.acos(Math.min(1, Math.max(0, patch.cosThetaL))) * 180) / Math.PI;
+  return `Cross-section of Q6(a), ${scaleNoteOf(patch)}: the patch of area ${fmt(patch.area)} at distance r = ${fmt(patch.r)}, tilted by θₗ = ${fmt(deg, 3)} degrees from facing the point. Its perpendicular projection dA⊥ has side dl = ${fmt(Math.sqrt(patch.area * patch.cosThetaL))}; the similar triangles give dωₗ = dl / r, so dω = dA cos θₗ / r² = ${fmt(patch.approx)} sr (exactly ${fmt(patch.exact)} sr).`;
+}
+
 export function PatchFigure({ patch }: { patch: PatchModel }) {
   const { thetaL, D, R, s, distanceToScale, patchToScale } = patchFigureLayout(patch);
   const cx = PX + D,
@@ -82,19 +98,14 @@ export function PatchFigure({ patch }: { patch: PatchModel }) {
   const arcEnd = { x: cx + arcR * nx, y: cy + arcR * ny };
   const C70 = Math.cos((62 * Math.PI) / 180),
     S70 = Math.sin((62 * Math.PI) / 180);
-  const scaleNote = !distanceToScale
-    ? `r = ${fmt(patch.r, 3)} and the unit radius are not to scale here`
-    : !patchToScale
-      ? `to scale, except the patch (${sideTrueWord(s, patch)})`
-      : 'drawn to scale';
+  const scaleNote = scaleNoteOf(patch);
   return (
     <svg
       className="al-patch-fig"
       viewBox={`0 0 ${W} ${H}`}
-      role="img"
       data-testid="al-patch-figure"
       data-to-scale={distanceToScale && patchToScale ? '1' : '0'}
-      aria-label={`Cross-section of Q6(a), ${scaleNote}: the patch of area ${fmt(patch.area)} at distance r = ${fmt(patch.r)}, tilted by θₗ = ${fmt((thetaL * 180) / Math.PI, 3)} degrees. Its perpendicular projection dA⊥ has side dl; the similar triangles give dωₗ = dl / r, so dω = dA cos θₗ / r² = ${fmt(patch.approx)} sr (exactly ${fmt(patch.exact)} sr).`}
+      aria-hidden="true"
     >
       <defs>
         <marker

@@ -6,6 +6,7 @@
  */
 import type { LightStrategy } from '../../../core/lights';
 import { formatNumber } from '../../../ui/Readout';
+import { summarizeSeries } from '../../../ui/summary';
 import type { AnimationFrame, SampleRun } from '../animation';
 import type { AreaLightModel } from '../model';
 import type { PatchModel } from '../patch';
@@ -100,4 +101,65 @@ export function describeAreaLight(
   hidden = false,
 ): string {
   return `${describeSetup(m, patch)} ${describeSamples(strategy, run, frame, target, hidden)}`;
+}
+
+/**
+ * The sample counts at which the running estimate is read out (its table and its audio trace):
+ * 1, 2, 4, … up to 32, then every 32nd, and always the last, k, itself. Ascending, all ≤ k.
+ */
+export function runningPoints(k: number): number[] {
+  const out: number[] = [];
+  for (let j = 1; j <= Math.min(k, 32); j *= 2) out.push(j);
+  for (let j = 64; j <= k; j += 32) out.push(j);
+  if (k > 0 && out[out.length - 1] !== k) out.push(k);
+  return out;
+}
+
+/** The running estimate's rows at those counts: k, estimate, its standard error (NaN for one sample). */
+export function runningRows(run: SampleRun, k: number): number[][] {
+  return runningPoints(Math.min(k, run.count)).map((j) => [j, run.mean[j - 1], run.stderr[j - 1]]);
+}
+
+/**
+ * Where the running estimate crosses the reference between two of the read-out counts (the count
+ * after the crossing): the audio trace's ticks.
+ */
+export function referenceCrossings(run: SampleRun, ks: readonly number[], reference: number): number[] {
+  if (!Number.isFinite(reference)) return [];
+  const out: number[] = [];
+  let prev = NaN;
+  for (const j of ks) {
+    const d = run.mean[j - 1] - reference;
+    if (Number.isFinite(prev) && Number.isFinite(d) && ((prev < 0 && d >= 0) || (prev > 0 && d <= 0)))
+      out.push(j);
+    if (Number.isFinite(d) && d !== 0) prev = d;
+  }
+  return out;
+}
+
+/** The running-estimate plot in words: its trend and extremes, where it ends against the reference. */
+export function describeRunning(run: SampleRun, k: number, reference: number): string {
+  const kk = Math.min(k, run.count);
+  if (kk === 0) return 'Running estimate against samples k: no samples yet.';
+  const ks = runningPoints(kk);
+  const series = summarizeSeries(
+    ks,
+    ks.map((j) => run.mean[j - 1]),
+    { xLabel: 'k', yLabel: 'the running estimate', format: (v) => formatNumber(v, 4) },
+  );
+  const sentence = `Running estimate against samples k (log scale), ${kk} of ${run.count} samples: ${series}`;
+  if (!Number.isFinite(reference)) return sentence;
+  const se = run.stderr[kk - 1];
+  const est = run.mean[kk - 1];
+  const where =
+    se > 0
+      ? `${num(Math.abs(est - reference) / se, 2)} standard errors from`
+      : est === reference
+        ? 'exactly at'
+        : `${num(Math.abs(est - reference))} (with no spread) from`;
+  const band = Number.isFinite(se)
+    ? ` The ±2σ band is ${num(4 * se, 2)} wide there; the estimate is ${where} the reference ${num(reference)} (dashed).`
+    : ` The reference is ${num(reference)} (dashed).`;
+  const crossings = referenceCrossings(run, ks, reference).length;
+  return `${sentence}${band} It crosses the reference ${crossings === 1 ? 'once' : `${crossings} times`} among the counts read out.`;
 }
