@@ -96,3 +96,57 @@ describe('describeAreaLight: the main figure in words, with the live numbers', (
     expect(text).not.toMatch(/NaN|undefined|Infinity/);
   });
 });
+
+describe('the running estimate in words, as a table and as ticks', () => {
+  it('reads out at 1, 2, 4 … 32, then every 32nd, and at k itself', async () => {
+    const { runningPoints } = await import('../../../src/scenes/area-light/view/describe');
+    expect(runningPoints(0)).toEqual([]);
+    expect(runningPoints(1)).toEqual([1]);
+    expect(runningPoints(5)).toEqual([1, 2, 4, 5]);
+    const p = runningPoints(1024);
+    expect(p.slice(0, 7)).toEqual([1, 2, 4, 8, 16, 32, 64]);
+    expect(p[p.length - 1]).toBe(1024);
+    expect(p.every((x, i) => i === 0 || x > p[i - 1]!)).toBe(true);
+    expect(runningPoints(100)).toEqual([1, 2, 4, 8, 16, 32, 64, 96, 100]);
+  });
+
+  it('the rows are the run’s own means and errors; the crossings are where the sign against the reference flips', async () => {
+    const { runningRows, referenceCrossings, describeRunning } =
+      await import('../../../src/scenes/area-light/view/describe');
+    const { run, m, fr } = described();
+    const rows = runningRows(run, fr.k);
+    for (const [k, mean, se] of rows) {
+      expect(mean).toBe(run.mean[k! - 1]);
+      expect(Object.is(se, run.stderr[k! - 1])).toBe(true);
+    }
+    const ks = rows.map((r) => r[0]!);
+    const ref = targetValue(m);
+    const cross = referenceCrossings(run, ks, ref);
+    for (const c of cross) {
+      const i = ks.indexOf(c);
+      expect(i).toBeGreaterThan(0);
+      expect(Math.sign(run.mean[c - 1]! - ref)).not.toBe(Math.sign(run.mean[ks[i - 1]! - 1]! - ref));
+    }
+    const text = describeRunning(run, fr.k, ref);
+    expect(text).toContain(`1024 of 1024 samples`);
+    expect(text).toContain(`reference ${formatNumber(ref, 4)}`);
+    expect(text).toContain(
+      cross.length === 0
+        ? 'never crosses'
+        : cross.length === 1
+          ? 'crosses once'
+          : `crosses ${cross.length} times`,
+    );
+    // a paused, earlier frame says other numbers
+    expect(describeRunning(run, 40, ref)).not.toBe(text);
+    expect(describeRunning(run, 0, ref)).toContain('no samples yet');
+  });
+
+  it('an exact estimator (a light facing away: every term 0) says so', async () => {
+    const { describeRunning } = await import('../../../src/scenes/area-light/view/describe');
+    const { run, fr, m } = described({ tilt: 180 });
+    const text = describeRunning(run, fr.k, targetValue(m));
+    expect(text).toContain('exactly at the reference 0');
+    expect(text).not.toMatch(/NaN|Infinity/);
+  });
+});

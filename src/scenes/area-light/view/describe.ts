@@ -161,5 +161,7 @@ export function describeRunning(run: SampleRun, k: number, reference: number): s
     ? ` The ±2σ band is ${num(4 * se, 2)} wide there; the estimate is ${where} the reference ${num(reference)} (dashed).`
     : ` The reference is ${num(reference)} (dashed).`;
   const crossings = referenceCrossings(run, ks, reference).length;
-  return `${sentence}${band} It crosses the reference ${crossings === 1 ? 'once' : `${crossings} times`} among the counts read out.`;
+  const times =
+    crossings === 0 ? 'never crosses' : crossings === 1 ? 'crosses once' : `crosses ${crossings} times`;
+  return `${sentence}${band} It ${times} the reference among the counts read out.`;
 }
