@@ -98,14 +98,16 @@ test('on pause the description says the paused frame’s numbers', async ({ page
   const q = 'n=512&seed=5&t=0';
   await openScene(page, `#/area-light?${q}`);
   await expect.poll(() => figureDescription(page), { timeout: 30000 }).toContain('none yet (0 of 512)');
+  // by keyboard: Enter on the focused Play button plays, Enter again (now Pause) pauses
   const tl = page.getByTestId('timeline');
-  await tl.getByRole('button', { name: /play/i }).click();
-  await expect
-    .poll(async () => Number(await page.getByTestId('anim-k').getAttribute('data-value')), { timeout: 20000 })
-    .toBeGreaterThan(20);
-  await tl.getByRole('button', { name: /pause/i }).click();
+  await tl.getByRole('button', { name: /play/i }).focus();
+  await page.keyboard.press('Enter');
+  await expect(tl).toHaveAttribute('data-playing', '1');
+  const arrived = async () => Number(await page.getByTestId('anim-k').getAttribute('data-value'));
+  await expect.poll(arrived, { timeout: 20000 }).toBeGreaterThan(20);
+  await page.keyboard.press('Enter');
   await expect(tl).toHaveAttribute('data-playing', '0');
-  const k = Number(await page.getByTestId('anim-k').getAttribute('data-value'));
+  const k = await arrived();
   const { m, v } = modelFor(q);
   const run = sampleRun(m, v.strategy as LightStrategy, animationLength(v.n), v.seed);
   const fr = animationFrame(run, k);

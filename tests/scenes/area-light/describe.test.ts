@@ -24,7 +24,7 @@ function described(patch: Partial<AreaLightParams> = {}, t?: number, hidden = fa
   const run = sampleRun(m, v.strategy, 1024, v.seed);
   const fr = animationFrame(run, t ?? v.t);
   return {
-    text: describeAreaLight(m, pt, v.strategy, run, fr, targetValue(m), hidden),
+    text: describeAreaLight(m, pt, { strategy: v.strategy, run, frame: fr, target: targetValue(m), hidden }),
     m,
     pt,
     run,
@@ -76,7 +76,13 @@ describe('describeAreaLight: the main figure in words, with the live numbers', (
     const w = wastedSamples(run, fr.k);
     expect(w).toBeGreaterThan(0);
     expect(w).toBe(Array.from(run.terms.slice(0, 200)).filter((x) => !(x > 0)).length);
-    const hiddenText = describeSamples('area', run, fr, targetValue(m), true);
+    const hiddenText = describeSamples({
+      strategy: 'area',
+      run,
+      frame: fr,
+      target: targetValue(m),
+      hidden: true,
+    });
     expect(hiddenText).toContain(`${w} of them wasted`);
     expect(hiddenText).toContain('hidden until you reveal');
     expect(hiddenText).not.toContain(formatNumber(fr.estimate, 4));

@@ -102,7 +102,7 @@ export function Stage({
   const run = useMemo(() => sampleRun(model, strategy, animMax, seed), [model, strategy, animMax, seed]);
   const af = animationFrame(run, tl.t);
   const fmtPos = useCallback((t: number) => `${Math.floor(t)} of ${animMax} samples`, [animMax]);
-  const description = describeAreaLight(model, patch, strategy, run, af, target, ask);
+  const description = describeAreaLight(model, patch, { strategy, run, frame: af, target, hidden: ask });
   return (
     <div className="al-stage-wrap">
       <DescribedFigure

@@ -68,14 +68,18 @@ export function describeSetup(m: AreaLightModel, patch: PatchModel): string {
   );
 }
 
-/** What the samples and the running estimate show at the frame (hidden: the estimate is not given away). */
-export function describeSamples(
-  strategy: LightStrategy,
-  run: SampleRun,
-  frame: AnimationFrame,
-  target: number,
-  hidden = false,
-): string {
+/** The animation at one frame: the samples of a strategy and the value they converge to. */
+export interface SamplesAt {
+  strategy: LightStrategy;
+  run: SampleRun;
+  frame: AnimationFrame;
+  target: number;
+  /** Asked to predict first: the estimate is not given away. */
+  hidden?: boolean;
+}
+
+/** What the samples and the running estimate show at the frame. */
+export function describeSamples({ strategy, run, frame, target, hidden = false }: SamplesAt): string {
   const { k } = frame;
   const name = `Samples of ${STRATEGY_LABEL[strategy]} sampling`;
   if (k === 0) return `${name}: none yet (0 of ${run.count}).`;
@@ -91,16 +95,8 @@ export function describeSamples(
 }
 
 /** The main figure's description: the setup, then the samples and the estimate. */
-export function describeAreaLight(
-  m: AreaLightModel,
-  patch: PatchModel,
-  strategy: LightStrategy,
-  run: SampleRun,
-  frame: AnimationFrame,
-  target: number,
-  hidden = false,
-): string {
-  return `${describeSetup(m, patch)} ${describeSamples(strategy, run, frame, target, hidden)}`;
+export function describeAreaLight(m: AreaLightModel, patch: PatchModel, at: SamplesAt): string {
+  return `${describeSetup(m, patch)} ${describeSamples(at)}`;
 }
 
 /**
