@@ -13,7 +13,7 @@ describe('runChunked', () => {
     const seen: number[] = [];
     for (let i = 0; i < 5; i++) runChunked(() => seen.push(i));
     expect(seen).toEqual([]);
-    await settle();
+    await until(() => seen.length === 5);
     expect(seen).toEqual([0, 1, 2, 3, 4]);
   });
 
@@ -23,7 +23,7 @@ describe('runChunked', () => {
     const cancel = runChunked(() => seen.push('b'));
     runChunked(() => seen.push('c'));
     cancel();
-    await settle();
+    await until(() => seen.includes('c'));
     expect(seen).toEqual(['a', 'c']);
   });
 
