@@ -5,7 +5,7 @@
 import { NumberField, Select, TimelineTransport } from '../../../ui';
 import { sweepAt, type Sweep, type V3 } from '../model';
 import type { RaySphereParams } from '../params';
-import { sweepCoord } from '../view/format';
+import { sweepPlaceText } from '../view/describe';
 import { LiveCaseBanner, LiveCrossSection, type LiveProps } from '../view/Live';
 
 export interface Q5FigureProps extends LiveProps {
@@ -19,10 +19,8 @@ export interface Q5FigureProps extends LiveProps {
 }
 
 export function Q5Figure({ tl, modelAt, sweep, extent, ends, onDrag, setParams }: Q5FigureProps) {
-  const fmtPos = (tt: number) => {
-    const x = sweepAt(sweep, tt).x;
-    return `t = ${tt.toFixed(3)}, ${sweepCoord(sweep.mode)} = ${Number.isFinite(x) ? x.toFixed(3) : String(x)}`;
-  };
+  // the timeline's position is τ, never t: t is the ray's parameter (on the g(t) axis beside it)
+  const fmtPos = (tau: number) => sweepPlaceText({ mode: sweep.mode, tau, x: sweepAt(sweep, tau).x });
   return (
     <>
       <LiveCrossSection tl={tl} modelAt={modelAt} onChange={onDrag} fitExtra={ends} />
