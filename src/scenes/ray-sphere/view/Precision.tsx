@@ -22,7 +22,16 @@ const QUANTITIES = [
   { label: 'Δ = b² − 4ac', id: 'disc', value: 'discriminant', err: 'errDisc' },
   { label: 't₀', id: 't0', value: 't0', err: 'errT0' },
   { label: 't₁', id: 't1', value: 't1', err: 'errT1' },
-  { label: 't-hit', id: 'hit', value: 'tHit', err: 'errHit' },
+  {
+    label: (
+      <>
+        t<sub>hit</sub>
+      </>
+    ),
+    id: 'hit',
+    value: 'tHit',
+    err: 'errHit',
+  },
 ] as const;
 
 /** Side-by-side table of both methods against the reference. */
@@ -77,7 +86,7 @@ export function PrecisionTable({ model }: { model: RaySphereModel }) {
         </thead>
         <tbody>
           {rows.map((r) => (
-            <tr key={r.label}>
+            <tr key={r.id}>
               <th scope="row">{r.label}</th>
               {cell(r.n, r.en, `naive-${r.id}`, r.ref)}
               {cell(r.s, r.es, `stable-${r.id}`, r.ref)}
@@ -245,8 +254,8 @@ export function ErrorVsDistance({
         : [
             curve(s.dist, s.discNaive, 'textbook Δ', { color: NAIVE_COLOR }, true),
             curve(s.dist, s.discStable, 'robust Δ', { color: STABLE_COLOR }, true),
-            curve(s.dist, s.hitNaive, 'textbook t-hit', { color: NAIVE_COLOR, dash: 'dot' }),
-            curve(s.dist, s.hitStable, 'robust t-hit', { color: STABLE_COLOR, dash: 'dot' }),
+            curve(s.dist, s.hitNaive, 'textbook t<sub>hit</sub>', { color: NAIVE_COLOR, dash: 'dot' }),
+            curve(s.dist, s.hitStable, 'robust t<sub>hit</sub>', { color: STABLE_COLOR, dash: 'dot' }),
             curve(
               s.dist,
               s.dist.map((D) => Math.min(1, u * D * D)),
@@ -318,7 +327,7 @@ export function ErrorVsDistance({
           data={data}
           layout={layout}
           height={ERROR_PLOT_HEIGHT}
-          ariaLabel="Relative error of the discriminant and of t-hit against distance, textbook and robust"
+          ariaLabel="Relative error of the discriminant and of the hit's t against distance, textbook and robust"
           testId="error-plot"
         />
       ) : (

@@ -16,6 +16,17 @@ export function num(x: number, digits = 4): string {
   return formatNumber(x, digits).replace(/^-/, '−');
 }
 
+/**
+ * Digits enough to tell a and b apart (4 at least, 10 at most, as the readouts): two roots
+ * 2·10⁻⁵ apart at t ≈ 10⁵ need 11 digits, and get the readouts' 10.
+ */
+export function digitsApart(a: number, b: number): number {
+  const gap = Math.abs(a - b);
+  const big = Math.max(Math.abs(a), Math.abs(b));
+  if (!(gap > 0) || !(big > 0) || !Number.isFinite(big)) return 4;
+  return Math.max(4, Math.min(10, Math.ceil(Math.log10(big / gap)) + 2));
+}
+
 /** A vector: (x, y, z), each as {@link num}. */
 export const vec = (p: readonly number[], digits = 4) => `(${p.map((x) => num(x, digits)).join(', ')})`;
 
@@ -38,17 +49,18 @@ export const HANDLE_NAMES: Record<Target, string> = {
 export function caseShort(res: RaySphereHit | null): string {
   if (!res) return 'no result';
   const D = `Δ = ${num(res.discriminant)}`;
+  const k = res.t0 !== null && res.t1 !== null ? digitsApart(res.t0, res.t1) : 4;
   switch (res.case) {
     case 'miss':
       return `the ray misses (${D})`;
     case 'tangent':
       return `the ray touches the sphere at t = ${num(res.tHit ?? res.t0 ?? NaN)} (Δ = 0)`;
     case 'two-hits':
-      return `the ray hits at t₀ = ${num(res.t0!)} and leaves at t₁ = ${num(res.t1!)}`;
+      return `the ray hits at t₀ = ${num(res.t0!, k)} and leaves at t₁ = ${num(res.t1!, k)}`;
     case 'inside':
       return `the origin is inside; the ray leaves at t₁ = ${num(res.t1!)}`;
     case 'behind':
-      return `the sphere is behind the origin (t₀ = ${num(res.t0!)}, t₁ = ${num(res.t1!)}), no hit`;
+      return `the sphere is behind the origin (t₀ = ${num(res.t0!, k)}, t₁ = ${num(res.t1!, k)}), no hit`;
   }
 }
 
@@ -116,6 +128,9 @@ export function describeRaySphere(
           ? `${num(-gap)} inside the radius`
           : 'exactly at the radius');
     const at = (t: number) => `p = ${vec(pointAt(o, d, t))}`;
+    const k = res.t0 !== null && res.t1 !== null ? digitsApart(res.t0, res.t1) : 4;
+    const t0 = res.t0 !== null ? num(res.t0, k) : '';
+    const t1 = res.t1 !== null ? num(res.t1, k) : '';
     switch (res.case) {
       case 'miss':
         parts.push(`The ray misses: ${D} < 0, no real root; ${passes}.`);
@@ -127,20 +142,20 @@ export function describeRaySphere(
         break;
       case 'two-hits':
         parts.push(
-          `The ray hits: ${D} > 0, roots t₀ = ${num(res.t0!)} and t₁ = ${num(res.t1!)}, both ≥ 0. ` +
+          `The ray hits: ${D} > 0, roots t₀ = ${t0} and t₁ = ${t1}, both ≥ 0. ` +
             `It enters at t₀, the hit point ${at(res.t0!)}, and leaves at t₁; ${passes}.`,
         );
         break;
       case 'inside':
         parts.push(
-          `The origin is inside the sphere: ${D}, t₀ = ${num(res.t0!)} lies behind the origin; ` +
-            `the hit is the exit t₁ = ${num(res.t1!)} at ${at(res.t1!)}.`,
+          `The origin is inside the sphere: ${D}, t₀ = ${t0} lies behind the origin; ` +
+            `the hit is the exit t₁ = ${t1} at ${at(res.t1!)}.`,
         );
         break;
       case 'behind':
         parts.push(
-          `The sphere is behind the origin: ${D} ≥ 0 but both roots t₀ = ${num(res.t0!)} and ` +
-            `t₁ = ${num(res.t1!)} are negative, so the ray (t ≥ 0) has no hit.`,
+          `The sphere is behind the origin: ${D} ≥ 0 but both roots t₀ = ${t0} and ` +
+            `t₁ = ${t1} are negative, so the ray (t ≥ 0) has no hit.`,
         );
         break;
     }
@@ -201,7 +216,8 @@ export function describeGPlot(res: RaySphereHit | null, w: SweepSeries['gWindow'
       : res.tHit === res.t0
         ? 't₀ is the hit'
         : 't₀ is behind the origin, t₁ is the hit';
-  return `${head}; it crosses zero at t₀ = ${num(res.t0)} and t₁ = ${num(res.t1!)}: ${hit}.`;
+  const k = digitsApart(res.t0, res.t1!);
+  return `${head}; it crosses zero at t₀ = ${num(res.t0, k)} and t₁ = ${num(res.t1!, k)}: ${hit}.`;
 }
 
 /** The tangencies of the sweep as audio-trace events (Δ = 0), at their sweep coordinates. */
@@ -222,11 +238,13 @@ function caseRuns(s: SweepSeries, mode: SweepMode): string {
     inside: 'origin inside',
     behind: 'sphere behind',
   };
+  // each run ends halfway between its last sample and the next run's first
   const runs: { c: string; to: number }[] = [];
   s.cases.forEach((c, i) => {
     const last = runs[runs.length - 1];
-    if (last && last.c === c) last.to = s.x[i];
-    else runs.push({ c, to: s.x[i] });
+    if (last && last.c === c) return;
+    if (last) last.to = (s.x[i - 1] + s.x[i]) / 2;
+    runs.push({ c, to: NaN });
   });
   if (runs.length > 8) return `the case changes ${runs.length - 1} times`;
   return runs

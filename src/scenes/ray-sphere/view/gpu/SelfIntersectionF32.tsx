@@ -204,9 +204,9 @@ export function SelfIntersectionF32() {
           <p className="rs-small">
             {SWEEP_W}×{SWEEP_W} camera rays per distance, ε swept from 10⁻⁸ r to 10⁻¹ r (
             {ACNE_EPSILONS.length - 1} steps). The ε a float32 renderer needs grows in proportion to the
-            distance, as pbrt’s bound does; a fixed t_min that is ample in double (10⁻⁴ r) is too small in
-            float32 beyond about 10³ r. Below half a coordinate’s ulp an offset does nothing at all: p + ε n
-            rounds back to p.
+            distance, as pbrt’s bound does; a fixed t<sub>min</sub> that is ample in double (10⁻⁴ r) is too
+            small in float32 beyond about 10³ r. Below half a coordinate’s ulp an offset does nothing at all:
+            p + ε n rounds back to p.
           </p>
         </>
       ) : (
