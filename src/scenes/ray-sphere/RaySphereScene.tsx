@@ -28,6 +28,8 @@ import { Q5Figure } from './exam/Q5Figure';
 import { Q5Plots } from './exam/Q5Plots';
 import { InputNotices } from './view/InputNotices';
 import { LiveView3D } from './view/Live';
+import { LiveDescribed } from './view/Described';
+import { describe3D } from './view/describe';
 import { DistantImages, ErrorVsDistance, PrecisionTable } from './view/Precision';
 import { PrecisionExplainer } from './view/PrecisionExplainer';
 import { PrecisionCompare } from './view/Float32Panel';
@@ -140,6 +142,7 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
                   ends={ends}
                   onDrag={editSoon}
                   setParams={setParams}
+                  method={method}
                 />
               </Deferred>
             </div>
@@ -174,12 +177,20 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
       </ExamQuestion>
       <ExploreFurther intro="Beyond the exam: the same ray in 3D, and what floating point does to the textbook formula when the sphere is far away or the ray grazes it.">
         <Panel title="3D view">
-          <LiveView3D
+          <LiveDescribed
             {...live}
-            height={mode.present ? 420 : 320}
-            dark={mode.theme === 'dark'}
-            fitExtra={ends}
-          />
+            label="3D view of the ray and the sphere"
+            describe={describe3D}
+            quiet
+            testId="view3d-figure"
+          >
+            <LiveView3D
+              {...live}
+              height={mode.present ? 420 : 320}
+              dark={mode.theme === 'dark'}
+              fitExtra={ends}
+            />
+          </LiveDescribed>
         </Panel>
         <Panel
           title="Precision: textbook vs robust, against a double-double reference"

@@ -5,7 +5,8 @@
 import { NumberField, Select, TimelineTransport } from '../../../ui';
 import { sweepAt, type Sweep, type V3 } from '../model';
 import type { RaySphereParams } from '../params';
-import { sweepPlaceText } from '../view/describe';
+import { describeRaySphere, sweepPlaceText } from '../view/describe';
+import { LiveDescribed } from '../view/Described';
 import { LiveCaseBanner, LiveCrossSection, type LiveProps } from '../view/Live';
 
 export interface Q5FigureProps extends LiveProps {
@@ -16,15 +17,26 @@ export interface Q5FigureProps extends LiveProps {
   /** An edit of the ray or sphere by dragging (coalesced to one per frame by the scene). */
   onDrag: (patch: Partial<RaySphereParams>) => void;
   setParams: (patch: Partial<RaySphereParams>) => void;
+  method: RaySphereParams['method'];
 }
 
-export function Q5Figure({ tl, modelAt, sweep, extent, ends, onDrag, setParams }: Q5FigureProps) {
+export function Q5Figure({ tl, modelAt, sweep, extent, ends, onDrag, setParams, method }: Q5FigureProps) {
   // the timeline's position is τ, never t: t is the ray's parameter (on the g(t) axis beside it)
   const fmtPos = (tau: number) => sweepPlaceText({ mode: sweep.mode, tau, x: sweepAt(sweep, tau).x });
   return (
     <>
-      <LiveCrossSection tl={tl} modelAt={modelAt} onChange={onDrag} fitExtra={ends} />
-      <LiveCaseBanner tl={tl} modelAt={modelAt} />
+      <LiveDescribed
+        tl={tl}
+        modelAt={modelAt}
+        label="Cross-section through the ray and the sphere"
+        describe={(m, tau) =>
+          describeRaySphere(m, { method, sweep: { mode: sweep.mode, tau, x: sweepAt(sweep, tau).x } })
+        }
+        testId="cross-figure"
+      >
+        <LiveCrossSection tl={tl} modelAt={modelAt} onChange={onDrag} fitExtra={ends} />
+        <LiveCaseBanner tl={tl} modelAt={modelAt} />
+      </LiveDescribed>
       <TimelineTransport timeline={tl} label="Ray sweep" format={fmtPos} testId="timeline">
         <div className="rs-sweep-controls">
           <Select

@@ -9,6 +9,7 @@
  * React, while a sweep plays).
  */
 import { useLayoutEffect, useRef, useState, type KeyboardEvent, type PointerEvent } from 'react';
+import { announce } from '../../../ui/announce';
 import { useWidth } from '../../../ui/useWidth';
 import { useSectionWidth } from '../../../ui/Deferred';
 import { dirFromFrame, fromFrame, tidy, type V3 } from '../model';
@@ -230,9 +231,13 @@ export function CrossSection({
     if (p) apply(dr.target, p[0], p[1]);
   };
   const up = (e: PointerEvent<SVGSVGElement>) => {
-    if (dragRef.current?.pointerId !== e.pointerId) return;
+    const dr = dragRef.current;
+    if (dr?.pointerId !== e.pointerId) return;
     dragRef.current = null;
     setDragging(null);
+    // what was dragged, where it is now and what the ray does (a slider's keys say it themselves)
+    const g = cur();
+    announce(`${HANDLE_NAMES[dr.target]}: ${handleText(dr.target, ray.current, g.dir2).valueText}`);
   };
   // Arrow keys move a point 8 px in the figure (Shift: 1 px; Page Up / Down: 40 px). The radius is
   // a plain slider: Up / Right grow it, Down / Left shrink it.

@@ -7,7 +7,14 @@
  */
 import type { RaySphereHit } from '../../../core/geometry';
 import { formatNumber } from '../../../ui/Readout';
-import { closestApproach, FAR_RATIO, type RaySphereModel, type SweepMode, type SweepSeries } from '../model';
+import {
+  closestApproach,
+  FAR_RATIO,
+  type ErrorSeries,
+  type RaySphereModel,
+  type SweepMode,
+  type SweepSeries,
+} from '../model';
 import type { RayState, Target } from './crossLayout';
 import { sweepCoord } from './format';
 
@@ -172,6 +179,20 @@ export function describeRaySphere(
   return parts.join(' ');
 }
 
+/** The 3D view in words: what the ray does, the ray and the sphere, and how to turn the view. */
+export function describe3D(m: RaySphereModel): string {
+  const { o, d, c, r } = m.input;
+  const hit =
+    m.chosen && m.chosen.tHit !== null
+      ? ` The hit point p = ${vec(pointAt(o, d, m.chosen.tHit))} is marked on the sphere.`
+      : '';
+  return (
+    `The ray and the sphere in 3D: ${caseShort(m.chosen)}.${hit} Ray o = ${vec(o)}, d = ${vec(d)}; ` +
+    `sphere C = ${vec(c)}, r = ${num(r)}. Focus the view to orbit it with the arrow keys; + and − zoom, ` +
+    'Home resets it.'
+  );
+}
+
 // ---------------------------------------------------------------------------------------------
 // The plots: g(t) along the ray, Δ against the sweep.
 
@@ -282,5 +303,37 @@ export function describeDeltaPlot(
     );
   if (now.disc !== null && Number.isFinite(now.x))
     parts.push(`Now at ${coord} = ${num(now.x, 3)}: Δ = ${num(now.disc)}.`);
+  return parts.join(' ');
+}
+
+// ---------------------------------------------------------------------------------------------
+// Explore further: the error against distance, the distant-sphere images.
+
+/** The first distance at which an error reaches `level` (null: never). */
+function firstAt(dist: readonly number[], err: readonly number[], level: number): number | null {
+  const i = err.findIndex((e) => e >= level);
+  return i < 0 ? null : dist[i];
+}
+
+/**
+ * The error plot in words: where each form's Δ has lost half its digits and all of them, in
+ * float64 and (given the float32 series) in float32, and the robust form's largest error.
+ */
+export function describeErrorPlot(
+  s: ErrorSeries,
+  f32?: Pick<ErrorSeries, 'dist' | 'discNaive' | 'discStable'>,
+): string {
+  const D = (x: number | null) => (x === null ? 'never in the plotted range' : `by D ≈ ${num(x, 2)} r`);
+  const lost = (d: readonly number[], e: readonly number[]) =>
+    `half its digits ${D(firstAt(d, e, 1e-8))}, all of them ${D(firstAt(d, e, 0.5))}`;
+  const worst = (e: readonly number[]) => num(Math.max(...e), 2);
+  const parts = [
+    `Median relative error against the distance D = |o − C| / r from ${num(s.dist[0], 2)} to ${num(s.dist[s.dist.length - 1], 2)} (log–log).`,
+    `In float64 the textbook Δ loses ${lost(s.dist, s.discNaive)}; it grows like u (D/r)². The robust Δ's error grows only like u D/r, at most ${worst(s.discStable)}.`,
+  ];
+  if (f32 && f32.dist.length)
+    parts.push(
+      `In float32 the textbook Δ loses all its digits ${D(firstAt(f32.dist, f32.discNaive, 0.5))}; the robust Δ's error is at most ${worst(f32.discStable)}.`,
+    );
   return parts.join(' ');
 }

@@ -137,7 +137,8 @@ export function SelfIntersectionF32() {
             width={W}
             height={W}
             className="rs-canvas rs-gpu-canvas"
-            aria-label="Shadow acne image"
+            role="img"
+            aria-label={`Shadow acne image at D/r = ${sup(dist)}: ${acne.selfHits} of ${acne.lit} lit pixels shadow themselves`}
             data-testid="acne-img"
           />
           <figcaption>red: lit pixels that shadow themselves</figcaption>
@@ -170,7 +171,14 @@ export function SelfIntersectionF32() {
             data={data}
             layout={layout}
             height={340}
-            ariaLabel="Fraction of self-shadowed lit pixels against the offset ε, one curve per distance"
+            label="Fraction of self-shadowed lit pixels against the offset ε, one curve per distance"
+            description={`${sweeps
+              .map((s) =>
+                s.epsNeeded === null
+                  ? `At D/r = ${sup(s.dist)} no swept ε cures it`
+                  : `At D/r = ${sup(s.dist)} the acne is gone from ε ≈ ${s.epsNeeded.toPrecision(2)} r`,
+              )
+              .join('; ')}: the offset needed grows in proportion to the distance. The table below lists it.`}
             testId="acne-plot"
           />
           <table className="rs-precision" data-testid="acne-table">
