@@ -3,7 +3,7 @@ import { useHashRoute } from './useHashRoute';
 import { parseShellFlags } from '../kit/shell';
 import { useTheme } from './theme';
 import { usePostHeight } from './embedHeight';
-import { useHostApi } from './hostApi';
+import { useHostApi } from './hostBridge';
 import { Home } from './Home';
 import { SceneHost } from './SceneHost';
 import { findScene } from '../kit/catalogue';
