@@ -38,8 +38,31 @@ export interface CrossSectionProps extends RayState {
   fitExtra?: readonly V3[];
   /** Set to a function that redraws the figure for another ray directly (per animation frame). */
   drawRef?: { current: ((ray: CrossRay) => void) | null };
-  /** The tallest the drawing may be (px), e.g. to fit a classroom screen; default 460. */
+  /** The tallest the drawing may be (px); default 460. */
   maxHeight?: number;
+  /**
+   * Fill the height of the enclosing `.stage-figure` (the classroom stage gives it what the first
+   * screen leaves); otherwise the height follows the width.
+   */
+  fill?: boolean;
+}
+
+/** The height of the enclosing `.stage-figure` while `on` (null: not filling, or not measured yet). */
+function useFillHeight(ref: { current: HTMLElement | null }, on: boolean): number | null {
+  const [h, setH] = useState<number | null>(null);
+  useLayoutEffect(() => {
+    const box = on ? ref.current?.closest<HTMLElement>('.stage-figure') : null;
+    if (!box) {
+      setH(null);
+      return;
+    }
+    const measure = () => setH(box.clientHeight);
+    measure();
+    const ro = typeof ResizeObserver === 'function' ? new ResizeObserver(measure) : null;
+    ro?.observe(box);
+    return () => ro?.disconnect();
+  }, [ref, on]);
+  return h;
 }
 
 /** What moves while a sweep plays. */
@@ -152,13 +175,18 @@ export function CrossSection({
   fitExtra = [],
   drawRef,
   maxHeight = 460,
+  fill = false,
 }: CrossSectionProps) {
   const svgRef = useRef<SVGSVGElement>(null);
   // one SVG unit = one CSS pixel: labels and handles keep their size on small screens
   const figRef = useRef<HTMLDivElement>(null);
   // first drawn at the width of the placeholder it replaced (the figure fills its section), else a guess
   const W = Math.max(280, useWidth(figRef, useSectionWidth() ?? 640));
-  const H = Math.round(Math.min(Math.max(240, maxHeight), Math.max(280, W * 0.62)));
+  const fillH = useFillHeight(figRef, fill);
+  const H =
+    fillH !== null
+      ? Math.max(200, Math.round(fillH))
+      : Math.round(Math.min(Math.max(240, maxHeight), Math.max(280, W * 0.62)));
   const keep = useRef<Kept>({ frame: null, view: null });
   const dragRef = useRef<{ target: Target; pointerId: number } | null>(null);
   const [dragging, setDragging] = useState<Target | null>(null);

@@ -54,18 +54,23 @@ export function LiveCrossSection({
   modelAt,
   onChange,
   fitExtra,
+  hideResults = false,
+  fill,
 }: LiveProps & {
   onChange: (patch: Partial<RaySphereParams>) => void;
   fitExtra: readonly V3[];
+  /** Draw the ray and the sphere only, without the roots (ask=1 before Reveal). */
+  hideResults?: boolean;
+  fill?: boolean;
 }) {
   const drawRef = useRef<((ray: CrossRay) => void) | null>(null);
   const rayAt = (t: number): CrossRay => {
     const m = modelAt(t);
-    return { ...m.input, res: m.chosen, distanceRatio: m.distanceRatio };
+    return { ...m.input, res: hideResults ? null : m.chosen, distanceRatio: m.distanceRatio };
   };
   useDrawEveryFrame(tl, (t) => drawRef.current?.(rayAt(t)));
   const first = rayAt(tl.now());
-  return <CrossSection {...first} onChange={onChange} fitExtra={fitExtra} drawRef={drawRef} />;
+  return <CrossSection {...first} onChange={onChange} fitExtra={fitExtra} drawRef={drawRef} fill={fill} />;
 }
 
 const CASE_NAME: Record<RaySphereCase, string> = {

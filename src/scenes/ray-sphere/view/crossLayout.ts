@@ -32,8 +32,9 @@ export interface View {
   /** world units per pixel */
   s: number;
   far?: boolean;
-  /** The figure width the view was fitted for. */
+  /** The figure size the view was fitted for. */
   W?: number;
+  H?: number;
 }
 
 export type Target = 'o' | 'tip' | 'c' | 'r';
@@ -166,9 +167,10 @@ export function layoutCross(
     box[1] <= v.cx + (v.s * W) / 2 - 10 * v.s &&
     box[2] >= v.cy - (v.s * H) / 2 + 10 * v.s &&
     box[3] <= v.cy + (v.s * H) / 2 - 10 * v.s;
-  if (!dragging && (!view || !inside(view) || view.s > 2.5 * fitS || far !== prevView?.far || view.W !== W))
+  const resized = view?.W !== W || view?.H !== H;
+  if (!dragging && (!view || !inside(view) || view.s > 2.5 * fitS || far !== prevView?.far || resized))
     view = fit;
-  keep.view = { ...view!, far, W };
+  keep.view = { ...view!, far, W, H };
   const v = view!;
   const step = 10 ** Math.floor(Math.log10(v.s * 2));
   const px = (p: readonly [number, number]): Pt => [X_({ W, v }, p[0]), Y_({ H, v }, p[1])];

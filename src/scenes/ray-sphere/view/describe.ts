@@ -81,19 +81,20 @@ export function handleText(
   ray: RayState,
   dir2: readonly [number, number],
 ): { valueText: string; valueNow: number; min?: number; max?: number } {
-  const what = caseShort(ray.res);
-  if (target === 'r') return { valueText: `r = ${num(ray.r)}; ${what}`, valueNow: ray.r, min: 0 };
+  // what the ray does now (nothing while the results are hidden: ask=1 before Reveal)
+  const what = ray.res ? `; ${caseShort(ray.res)}` : '';
+  if (target === 'r') return { valueText: `r = ${num(ray.r)}${what}`, valueNow: ray.r, min: 0 };
   if (target === 'tip') {
     const deg = Math.round((Math.atan2(dir2[1], dir2[0]) * 180) / Math.PI);
     return {
-      valueText: `d = ${vec(ray.d)}, at ${deg}° in the figure; ${what}`,
+      valueText: `d = ${vec(ray.d)}, at ${deg}° in the figure${what}`,
       valueNow: deg,
       min: -180,
       max: 180,
     };
   }
   const p = target === 'o' ? ray.o : ray.c;
-  return { valueText: `${target === 'o' ? 'o' : 'C'} = ${vec(p)}; ${what}`, valueNow: p[0] };
+  return { valueText: `${target === 'o' ? 'o' : 'C'} = ${vec(p)}${what}`, valueNow: p[0] };
 }
 
 /** Where the ray is in the sweep animation (τ: the timeline's position, not the ray's t). */
@@ -117,12 +118,14 @@ export function sweepPlaceText(p: SweepPlace): string {
  */
 export function describeRaySphere(
   m: RaySphereModel,
-  opts: { method: 'stable' | 'naive'; sweep?: SweepPlace },
+  opts: { method: 'stable' | 'naive'; sweep?: SweepPlace; ask?: boolean },
 ): string {
   const { o, d, c, r } = m.input;
   const res = m.chosen;
   const parts: string[] = [];
-  if (!res) parts.push(`No result: ${m.fatal ?? 'the inputs cannot be used'}.`);
+  if (opts.ask)
+    parts.push('The ray and the sphere; where (and whether) the ray meets it is hidden until you reveal it.');
+  else if (!res) parts.push(`No result: ${m.fatal ?? 'the inputs cannot be used'}.`);
   else {
     const D = `Δ = ${num(res.discriminant)}`;
     const near = closestApproach(o, d, c);
@@ -172,7 +175,7 @@ export function describeRaySphere(
   parts.push(`Ray o = ${vec(o)}, d = ${vec(d)}; sphere C = ${vec(c)}, r = ${num(r)}.`);
   if (m.distanceRatio > FAR_RATIO)
     parts.push(`Not to scale: the origin is ${num(m.distanceRatio, 3)} radii from the centre.`);
-  if (opts.sweep) parts.push(`Sweep ${sweepPlaceText(opts.sweep)}.`);
+  if (opts.sweep && !opts.ask) parts.push(`Sweep ${sweepPlaceText(opts.sweep)}.`);
   parts.push(
     `${opts.method === 'naive' ? 'Textbook' : 'Robust'} Δ, ${m.precision === 'f32' ? 'float32' : 'double'} arithmetic.`,
   );
