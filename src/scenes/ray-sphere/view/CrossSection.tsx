@@ -207,8 +207,10 @@ export function CrossSection({
       const el = fig.querySelector(`[data-k="h-${target}"]`);
       const attrs = handleAria(g, x, target);
       for (const a in attrs) {
-        const v = String(attrs[a as keyof typeof attrs]);
-        if (el && el.getAttribute(a) !== v) el.setAttribute(a, v);
+        const v = attrs[a as keyof typeof attrs];
+        if (!el) continue;
+        if (v === undefined) el.removeAttribute(a);
+        else if (el.getAttribute(a) !== String(v)) el.setAttribute(a, String(v));
       }
     }
   };
@@ -265,7 +267,10 @@ export function CrossSection({
     setDragging(null);
     // what was dragged, where it is now and what the ray does (a slider's keys say it themselves)
     const g = cur();
-    announce(`${HANDLE_NAMES[dr.target]}: ${handleText(dr.target, ray.current, g.dir2).valueText}`);
+    const name = HANDLE_NAMES[dr.target];
+    announce(
+      `${name[0].toUpperCase()}${name.slice(1)}: ${handleText(dr.target, ray.current, g.dir2).valueText}`,
+    );
   };
   // Arrow keys move a point 8 px in the figure (Shift: 1 px; Page Up / Down: 40 px). The radius is
   // a plain slider: Up / Right grow it, Down / Left shrink it.

@@ -46,10 +46,10 @@ export const pointAt = (o: readonly number[], d: readonly number[], t: number): 
 
 /** The handles' accessible names. */
 export const HANDLE_NAMES: Record<Target, string> = {
-  o: 'Ray origin o',
-  tip: 'Ray direction d (arrow tip)',
-  c: 'Sphere centre C',
-  r: 'Sphere radius r',
+  o: 'ray origin o',
+  tip: 'ray direction d (arrow tip)',
+  c: 'sphere centre C',
+  r: 'sphere radius r',
 };
 
 /** What the ray does, in a few words (for a handle's value text, after each move). */
@@ -94,7 +94,13 @@ export function handleText(
     };
   }
   const p = target === 'o' ? ray.o : ray.c;
-  return { valueText: `${target === 'o' ? 'o' : 'C'} = ${vec(p)}${what}`, valueNow: p[0] };
+  // a point's first coordinate, within the bounds the URL accepts
+  return {
+    valueText: `${target === 'o' ? 'o' : 'C'} = ${vec(p)}${what}`,
+    valueNow: p[0],
+    min: -1e12,
+    max: 1e12,
+  };
 }
 
 /** Where the ray is in the sweep animation (τ: the timeline's position, not the ray's t). */
