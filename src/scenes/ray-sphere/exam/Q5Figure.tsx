@@ -38,16 +38,8 @@ function StageReadouts(live: LiveProps) {
       <Readout id="stage-discriminant" label="Δ" value={res?.discriminant ?? null} digits={4} />
       <Readout id="stage-t0" label="t₀" value={res?.t0 ?? null} digits={4} />
       <Readout id="stage-t1" label="t₁" value={res?.t1 ?? null} digits={4} />
-      <Readout
-        id="stage-t-hit"
-        label={
-          <>
-            t<sub>hit</sub>
-          </>
-        }
-        value={res?.tHit ?? null}
-        digits={4}
-      />
+      {/* Unicode subscripts, not <sub>: on the stage no text may be set smaller than 18 px */}
+      <Readout id="stage-t-hit" label="tₕᵢₜ" value={res?.tHit ?? null} digits={4} />
     </div>
   );
 }

@@ -29,6 +29,7 @@ import {
   type Target,
 } from './crossLayout';
 import { handleText, HANDLE_NAMES } from './describe';
+import { clipSegment } from './labelLayout';
 
 export type { RayState } from './crossLayout';
 
@@ -114,8 +115,25 @@ function drawCross(
   const figCls = `rs-section ${caseCls}`;
   if (fig.getAttribute('class') !== figCls) fig.setAttribute('class', figCls);
   set(q('circle'), { cx: cl(X(C2[0])), cy: cl(Y(C2[1])), r: Math.min(1e5, g.r / g.v.s) });
-  set(q('back'), { x1: cl(X(g.backEnd[0])), y1: cl(Y(g.backEnd[1])), x2: cl(X(O2[0])), y2: cl(Y(O2[1])) });
-  set(q('fwd'), { x1: cl(X(O2[0])), y1: cl(Y(O2[1])), x2: cl(X(g.fwdEnd[0])), y2: cl(Y(g.fwdEnd[1])) });
+  // the ray and the line behind the origin, drawn only within the figure
+  const line = (k: string, a: readonly [number, number], b: readonly [number, number]) => {
+    const seg = clipSegment([cl(X(a[0])), cl(Y(a[1]))], [cl(X(b[0])), cl(Y(b[1]))], {
+      x: 0,
+      y: 0,
+      w: g.W,
+      h: g.H,
+    });
+    show(q(k), seg !== null);
+    if (seg)
+      set(q(k), {
+        x1: seg[0][0].toFixed(1),
+        y1: seg[0][1].toFixed(1),
+        x2: seg[1][0].toFixed(1),
+        y2: seg[1][1].toFixed(1),
+      });
+  };
+  line('back', g.backEnd, O2);
+  line('fwd', O2, g.fwdEnd);
   const dir = q('dir');
   show(dir, !far);
   if (!far) set(dir, { x1: X(O2[0]), y1: Y(O2[1]), x2: X(g.tip[0]), y2: Y(g.tip[1]) });

@@ -24,8 +24,11 @@ export function overlapArea(a: Box, b: Box): number {
   return w > 0 && h > 0 ? w * h : 0;
 }
 
-/** Does the segment from p to q pass through the box? (Liang–Barsky clipping.) */
-export function segmentHitsBox(p: Pt, q: Pt, b: Box): boolean {
+/**
+ * The part of the segment p–q inside the box (Liang–Barsky), or null when none is: lines are
+ * drawn only where they can be seen, so their boxes stay within the figure.
+ */
+export function clipSegment(p: Pt, q: Pt, b: Box): [Pt, Pt] | null {
   let t0 = 0;
   let t1 = 1;
   const dx = q[0] - p[0];
@@ -38,16 +41,22 @@ export function segmentHitsBox(p: Pt, q: Pt, b: Box): boolean {
   ];
   for (const [pp, qq] of edges) {
     if (pp === 0) {
-      if (qq < 0) return false;
+      if (qq < 0) return null;
       continue;
     }
     const r = qq / pp;
     if (pp < 0) t0 = Math.max(t0, r);
     else t1 = Math.min(t1, r);
-    if (t0 > t1) return false;
+    if (t0 > t1) return null;
   }
-  return true;
+  return [
+    [p[0] + t0 * dx, p[1] + t0 * dy],
+    [p[0] + t1 * dx, p[1] + t1 * dy],
+  ];
 }
+
+/** Does the segment from p to q pass through the box? */
+export const segmentHitsBox = (p: Pt, q: Pt, b: Box): boolean => clipSegment(p, q, b) !== null;
 
 /** Distance from p to the segment a–b. */
 export function distToSegment(p: Pt, a: Pt, b: Pt): number {
