@@ -255,7 +255,7 @@ export const LESSON_PRESETS: Readonly<Record<QuestionInfo['n'], readonly LessonP
       ask: 'Derive dω from similar triangles. Which factor shrinks a patch’s solid angle fastest as it moves to the light’s edge?',
     },
     {
-      params: { lc: '0,0,0.25', ls: '2,2', strategy: 'area', t: '0' },
+      params: { lc: '0,0,0.25', ls: '2,2', tilt: '0', strategy: 'area', t: '0' },
       part: '6c',
       askFirst: true,
       title: 'A big light close by, sampled by area (Q6c)',
@@ -263,7 +263,7 @@ export const LESSON_PRESETS: Readonly<Record<QuestionInfo['n'], readonly LessonP
       ask: 'Which samples get the largest weights |A| cos θ cos θ_l / r²? Which strategy would you choose here?',
     },
     {
-      params: { lc: '0,0,10', ls: '1,1', strategy: 'cosine', t: '0' },
+      params: { lc: '0,0,10', ls: '1,1', tilt: '0', strategy: 'cosine', t: '0' },
       part: '6c',
       askFirst: true,
       title: 'A small far light, cosine sampling',
