@@ -131,7 +131,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
       <Notice kind="info" testId="other-lobe">
         The figure, the checks in (d) and the estimates of Q2 use the chosen density,{' '}
         {baseLobe ? baseLobe.label : 'the typed density'}; the derivation above is the exam&apos;s, for k cos
-        θ e^φ. The chosen density&apos;s own derivation is under Explore further.
+        θ e<sup>φ</sup>. The chosen density&apos;s own derivation is under Explore further.
       </Notice>
     ) : null;
 
@@ -166,9 +166,9 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
             problem={
               inverted ? (
                 <Notice kind="warn" testId="figure-no-density">
-                  No directions to show: with the identity as printed on the paper, p(θ, φ) = k cot θ e^φ is
-                  not a density (its θ-integral diverges; see (b)). Choose &ldquo;sin θ · p(ω)&rdquo; under
-                  Jacobian to sample the exam&apos;s lobe.
+                  No directions to show: with the identity as printed on the paper, p(θ, φ) = k cot θ e
+                  <sup>φ</sup> is not a density (its θ-integral diverges; see (b)). Choose &ldquo;sin θ ·
+                  p(ω)&rdquo; under Jacobian to sample the exam&apos;s lobe.
                 </Notice>
               ) : (
                 (densityProblem ?? <Notice kind="warn">No valid density to sample yet.</Notice>)

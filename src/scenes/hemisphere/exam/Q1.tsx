@@ -51,7 +51,11 @@ export function Q1({
       <ExamPart
         id="1a"
         title="Normalize p(ω)"
-        asks={<>Find k so that p(ω) = k cos θ e^φ is a probability density over the upper hemisphere.</>}
+        asks={
+          <>
+            Find k so that p(ω) = k cos θ e<sup>φ</sup> is a probability density over the upper hemisphere.
+          </>
+        }
       >
         <DerivationBlock testId={mainTestId ? 'derivation' : 'derivation-1a'}>
           <p>
@@ -145,13 +149,17 @@ export function Q1({
               },
               {
                 tex: `p(\\theta) = \\int_0^{2\\pi}p(\\theta,\\phi)\\,d\\phi = \\frac{2}{e^{2\\pi}-1}\\cos\\theta\\sin\\theta\\int_0^{2\\pi}e^{\\phi}\\,d\\phi`,
-                why: 'marginalize φ: only e^φ depends on φ',
+                why: (
+                  <>
+                    marginalize φ: only e<sup>φ</sup> depends on φ
+                  </>
+                ),
               },
               {
                 tex: `= \\frac{2}{e^{2\\pi}-1}\\cos\\theta\\sin\\theta\\,(e^{2\\pi}-1) = 2\\sin\\theta\\cos\\theta = \\sin 2\\theta`,
                 why: (
                   <>
-                    the factor e<sup>2π</sup> − 1 cancels; check: ∫₀^π/2 sin 2θ dθ ={' '}
+                    the factor e<sup>2π</sup> − 1 cancels; check: ∫₀<sup>π/2</sup> sin 2θ dθ ={' '}
                     {texNumPlain(c.thetaMarginalTotal, 12)}
                   </>
                 ),
@@ -164,13 +172,18 @@ export function Q1({
             lines={[
               {
                 tex: `p(\\phi) = \\int_0^{\\pi/2}p(\\theta,\\phi)\\,d\\theta = \\frac{1}{e^{2\\pi}-1}e^{\\phi}\\int_0^{\\pi/2}2\\cos\\theta\\sin\\theta\\,d\\theta`,
-                why: 'marginalize θ: only cos θ sin θ depends on θ; the 2 of k = 2/(e^(2π) − 1) moves inside the integral',
+                why: (
+                  <>
+                    marginalize θ: only cos θ sin θ depends on θ; the 2 of k = 2/(e<sup>2π</sup> − 1) moves
+                    inside the integral
+                  </>
+                ),
               },
               {
                 tex: `= \\frac{e^{\\phi}}{e^{2\\pi}-1}\\Big[-\\tfrac12\\cos 2\\theta\\Big]_0^{\\pi/2} = \\frac{e^{\\phi}}{e^{2\\pi}-1}`,
                 why: (
                   <>
-                    the bracket is {texNumPlain(c.bracket)}, as in (a); check: ∫₀^2π p(φ) dφ ={' '}
+                    the bracket is {texNumPlain(c.bracket)}, as in (a); check: ∫₀<sup>2π</sup> p(φ) dφ ={' '}
                     {texNumPlain(c.phiMarginalTotal, 12)}
                   </>
                 ),
@@ -233,8 +246,9 @@ export function Q1({
         </DerivationBlock>
         <LiveAnswer testId="answer-1b">
           <p>
-            p(θ) = sin 2θ on [0, π/2] and p(φ) = e^φ/(e<sup>2π</sup> − 1) = {texNumPlain(c.k / 2, 8)} e^φ on
-            [0, 2π); the histograms in (d) are drawn against these curves.
+            p(θ) = sin 2θ on [0, π/2] and p(φ) = e<sup>φ</sup>/(e<sup>2π</sup> − 1) ={' '}
+            {texNumPlain(c.k / 2, 8)} e<sup>φ</sup> on [0, 2π); the histograms in (d) are drawn against these
+            curves.
           </p>
         </LiveAnswer>
       </ExamPart>

@@ -171,7 +171,7 @@ function FigureText({
           ? 'At t = 0 every point (ξ₁, ξ₂) lies in the unit square drawn flat on the base plane (ξ₁ along x, ξ₂ along y); as t goes to 1 each travels to the direction the inversion of (d) gives it. Each cell of the 8 × 8 grid is a stratum of the square: follow its colour to the patch of the hemisphere it lands on.'
           : 'The samples appear in the order they are drawn, from 1 to N (geometric in t); each keeps the colour of its (ξ₁, ξ₂).'}
         {spread !== null
-          ? ` For the exam's lobe, ξ₁ sets θ = arcsin √ξ₁ (rings) and ξ₂ sets φ: the first stratum ξ₂ < 1/8 spreads over φ ∈ [0, ${formatNumber(spread, 3)}) rad, where p ∝ e^φ is small, while the last one is squeezed near φ = 2π.`
+          ? ` For the exam's lobe, ξ₁ sets θ = arcsin √ξ₁ (rings) and ξ₂ sets φ: the first stratum ξ₂ < 1/8 spreads over φ ∈ [0, ${formatNumber(spread, 3)}) rad, where p ∝ eᵠ is small, while the last one is squeezed near φ = 2π.`
           : ''}
         {tr
           ? ` The first sample (ξ₁, ξ₂) = (${formatNumber(tr.xi1, 4)}, ${formatNumber(tr.xi2, 4)}) goes to θ = ${formatNumber(tr.theta, 4)}, φ = ${formatNumber(tr.phi, 4)} (ringed in the square).`
