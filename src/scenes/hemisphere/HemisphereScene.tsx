@@ -7,7 +7,7 @@
  */
 import { useMemo } from 'react';
 import type { SceneProps } from '../../kit/scene';
-import { useCompiled, ExprField, Notice, Panel, prefersReducedMotion, MathTex } from '../../ui';
+import { useCompiled, ExprField, Notice, Panel, MathTex } from '../../ui';
 import { ExamQuestion, ExploreFurther } from '../../ui/exam';
 import { useWorkerJob, workerFactory } from '../../workers';
 import type { HemisphereTasks } from './hemisphere.worker';
@@ -20,7 +20,7 @@ import { Derivation } from './view/Derivation';
 import { ImportanceReadouts, StderrNote, UniformReadouts, VarianceWarning } from './view/Q2Panel';
 import { InvertedJacobian } from './view/InvertedJacobian';
 import { GpuWarpSection } from './view/GpuWarpSection';
-import { Figure } from './view/Figure';
+import { Q1Figure } from './view/Q1Figure';
 import { Settings } from './view/Settings';
 import { SampleCheck } from './view/SampleCheck';
 import { RepeatSection } from './view/RepeatSection';
@@ -43,7 +43,6 @@ nextTask(() => void examChecksCached());
 export default function HemisphereScene({ params, setParams, mode }: SceneProps<HemisphereSchema>) {
   const lobeId = params.lobe;
   const kind = params.points;
-  const anim = params.anim;
   const inverted = params.jacobian === 'inverted';
   const isCustom = lobeId === 'custom';
   const fIsCos = isCosTheta(params.f);
@@ -148,35 +147,16 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
           </p>
         }
       >
-        <Panel className="hemi-figure-panel">
-          <Figure
-            lobe={lobe}
-            kind={kind}
-            seed={params.seed}
-            n={params.n}
-            anim={anim}
-            // a link with play=1 and t at its default (the end) plays the animation from the start
-            t={
-              params.play === true && !prefersReducedMotion() && Number(params.t) >= 1 ? 0 : Number(params.t)
-            }
-            play={params.play === true}
-            setParams={setParams}
-            present={mode.present}
-            lobeId={lobeId}
-            problem={
-              inverted ? (
-                <Notice kind="warn" testId="figure-no-density">
-                  No directions to show: with the identity as printed on the paper, p(θ, φ) = k cot θ e
-                  <sup>φ</sup> is not a density (its θ-integral diverges; see (b)). Choose &ldquo;sin θ ·
-                  p(ω)&rdquo; under Jacobian to sample the exam&apos;s lobe.
-                </Notice>
-              ) : (
-                (densityProblem ?? <Notice kind="warn">No valid density to sample yet.</Notice>)
-              )
-            }
-            settings={settings}
-          />
-        </Panel>
+        <Q1Figure
+          params={params}
+          setParams={setParams}
+          present={mode.present}
+          ask={false}
+          lobe={lobe}
+          inverted={inverted}
+          densityProblem={densityProblem}
+          settings={settings}
+        />
         {isCustom && tab && tab.ok && tab.warning ? (
           <Notice kind="warn">Approximate: {tab.warning}.</Notice>
         ) : null}

@@ -3,10 +3,11 @@
  * (or the samples appearing one by one), its transport and toggles, the readouts and caption at the
  * current position, and the unit square beside it with the scene's settings.
  */
-import { memo, useMemo, useRef, useState, type ComponentProps, type ReactNode } from 'react';
+import { memo, useEffect, useMemo, useRef, useState, type ComponentProps, type ReactNode } from 'react';
 import type { SceneProps } from '../../../kit/scene';
 import {
   formatNumber,
+  prefersReducedMotion,
   Readout,
   Select,
   TimelineTransport,
@@ -17,13 +18,16 @@ import {
   type Timeline,
 } from '../../../ui';
 import { formatCount } from '../../../ui/format';
-import type { SequenceKind } from '../../../core/random';
+import { fillSequence2D, type SequenceKind } from '../../../core/random';
 import { animDuration, animFrame, examInversion, type AnimFrame, type AnimKind, type Lobe } from '../model';
 import type { HemisphereSchema, LobeId } from '../params';
 // Static, not lazy: the 3D panel is on the first screen, and a Suspense fallback of another height
 // shifted the layout when it arrived (three.js itself still loads lazily, inside Viewport).
 import { HemisphereView } from './HemisphereView';
 import { UnitSquare } from './UnitSquare';
+import { cellImage, cellOf, type Cell } from '../stratum';
+import { StratumControls, useCellCount, type PickCell } from './StratumPicker';
+import { describeStratum } from './describe';
 
 const ANIM_OPTIONS: { value: AnimKind; label: string }[] = [
   { value: 'warp', label: 'warp morph: square → hemisphere' },
@@ -45,6 +49,11 @@ interface FigureProps {
   present: boolean;
   problem: ReactNode;
   settings: ReactNode;
+  /** The followed stratum and how to choose another (stable). */
+  cell: Cell | null;
+  onPickCell: PickCell;
+  /** Results hidden (ask before revealing): no samples on the hemisphere, the morph held at t = 0. */
+  ask: boolean;
 }
 
 /**
@@ -66,11 +75,14 @@ export function Figure({
   present,
   problem,
   settings,
+  cell,
+  onPickCell,
+  ask,
 }: FigureProps) {
   const box = useRef<HTMLDivElement>(null);
   const tl = useTimeline({
-    t,
-    play,
+    t: ask ? 0 : t,
+    play: ask ? false : play,
     setParams,
     max: 1,
     duration: animDuration(anim, n),
@@ -79,6 +91,22 @@ export function Figure({
   });
   const [showPoints, setShowPoints] = useState(true);
   const [showGrid, setShowGrid] = useState(true);
+  // revealed: the morph plays from the square (or jumps to its end for reduced motion)
+  const wasAsk = useRef(ask);
+  useEffect(() => {
+    if (wasAsk.current && !ask) {
+      if (prefersReducedMotion()) tl.seek(1);
+      else tl.play();
+    }
+    wasAsk.current = ask;
+  }, [ask, tl]);
+  const image = useMemo(() => (lobe && cell ? cellImage(lobe, cell) : null), [lobe, cell]);
+  const count = useCellCount(kind, seed, n, cell);
+  const stratumText = describeStratum(cell, image, count, n, ask);
+  const firstCell = useMemo(() => {
+    const u = fillSequence2D(kind, seed, Math.max(1, n), new Float64Array(2), 0, 1, 0);
+    return cellOf(u[0], u[1]);
+  }, [kind, seed, n]);
   const format = (x: number) => {
     const frame = animFrame(lobe, kind, seed, n, anim, x);
     return anim === 'warp'
@@ -96,27 +124,34 @@ export function Figure({
             seed={seed}
             n={n}
             anim={anim}
-            showPoints={showPoints}
+            showPoints={showPoints && !ask}
             showGrid={showGrid}
+            cell={cell}
             height={present ? 520 : 400}
           />
         ) : (
           <div className="hemi-no-view">{problem}</div>
         )}
-        <TimelineTransport
-          timeline={tl}
-          label={anim === 'warp' ? 'Warp morph' : 'Samples appearing'}
-          format={format}
-          testId="timeline"
-        >
-          <Select
-            label="Animation"
-            value={anim}
-            options={ANIM_OPTIONS}
-            onChange={(v) => setParams({ anim: v })}
-            testId="anim"
-          />
-        </TimelineTransport>
+        {ask ? (
+          <p className="small hemi-held" data-testid="timeline-held">
+            The warp stays at t = 0 (the square) until you reveal.
+          </p>
+        ) : (
+          <TimelineTransport
+            timeline={tl}
+            label={anim === 'warp' ? 'Warp morph' : 'Samples appearing'}
+            format={format}
+            testId="timeline"
+          >
+            <Select
+              label="Animation"
+              value={anim}
+              options={ANIM_OPTIONS}
+              onChange={(v) => setParams({ anim: v })}
+              testId="anim"
+            />
+          </TimelineTransport>
+        )}
         <div className="hemi-toggles">
           <Toggle label="points" checked={showPoints} onChange={setShowPoints} />
           <Toggle label="warped (ξ₁, ξ₂) grid" checked={showGrid} onChange={setShowGrid} />
@@ -124,7 +159,15 @@ export function Figure({
         <FigureText tl={tl} lobe={lobe} lobeId={lobeId} kind={kind} seed={seed} n={n} anim={anim} />
       </div>
       <div className="hemi-figure-side">
-        <SquareMemo kind={kind} seed={seed} n={n} size={present ? 260 : 220} />
+        <SquareMemo
+          kind={kind}
+          seed={seed}
+          n={n}
+          size={present ? 260 : 220}
+          cell={cell}
+          onPick={onPickCell}
+        />
+        <StratumControls cell={cell} onPick={onPickCell} text={stratumText} firstCell={firstCell} />
         {settings}
       </div>
     </div>
