@@ -23,6 +23,7 @@ import { GpuWarpSection } from './view/GpuWarpSection';
 import { Q1Figure } from './view/Q1Figure';
 import { Settings } from './view/Settings';
 import { SampleCheck } from './view/SampleCheck';
+import { CdfPlots } from './view/CdfPlots';
 import { RepeatSection } from './view/RepeatSection';
 import { StabilityDetails } from './view/StabilityDetails';
 import { Q1 } from './exam/Q1';
@@ -116,14 +117,8 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
       </Notice>
     ) : null;
 
-  const settings = (
-    <Settings
-      params={params}
-      setParams={setParams}
-      pdfError={pc.status === 'error' ? pc.message : tab && !tab.ok ? tab.message : null}
-      stats={stats}
-    />
-  );
+  const pdfError = pc.status === 'error' ? pc.message : tab && !tab.ok ? tab.message : null;
+  const settings = <Settings params={params} setParams={setParams} pdfError={pdfError} stats={stats} />;
 
   const otherLobe =
     lobeId !== 'exam' ? (
@@ -155,7 +150,9 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
           lobe={lobe}
           inverted={inverted}
           densityProblem={densityProblem}
+          pdfError={isCustom ? pdfError : null}
           settings={settings}
+          chi2={current?.chi2 ?? null}
         />
         {isCustom && tab && tab.ok && tab.warning ? (
           <Notice kind="warn">Approximate: {tab.warning}.</Notice>
@@ -171,8 +168,9 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
           }
           inverted={<InvertedJacobian />}
           answer1d={
-            <SampleCheck current={current} sampled={!!lobe} inverted={inverted} kind={kind} n={params.n} />
+            <SampleCheck current={current} lobe={lobe} inverted={inverted} kind={kind} n={params.n} />
           }
+          cdfs={lobe ? <CdfPlots lobe={lobe} stats={current} xi={firstXi} /> : null}
           otherLobe={otherLobe}
           mainTestId={lobeId === 'exam'}
         />

@@ -241,3 +241,15 @@ export function countInCell(
   }
   return count;
 }
+
+/** How many of the first `count` points of the set fall in each cell (index j·8 + i). */
+export function cellCounts(kind: SequenceKind, seed: number, n: number, count: number): Uint32Array {
+  const out = new Uint32Array(CELLS * CELLS);
+  const u = new Float64Array(2 * Math.min(count, n));
+  fillSequence2D(kind, seed, n, u, 0, Math.min(count, n), 0);
+  for (let k = 0; k < u.length; k += 2) {
+    const c = cellOf(u[k], u[k + 1]);
+    out[c.j * CELLS + c.i]++;
+  }
+  return out;
+}

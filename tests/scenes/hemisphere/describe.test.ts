@@ -4,10 +4,10 @@ import { cellImage } from '../../../src/scenes/hemisphere/stratum';
 import {
   describeHemisphere,
   describeStratum,
-  marginalShape,
   whereTheyBunch,
   type HemisphereState,
 } from '../../../src/scenes/hemisphere/view/describe';
+import { marginalShape } from '../../../src/scenes/hemisphere/marginals';
 import { EXAM_E2PI_M1, examLobeK } from '../../../src/core/sampling';
 import { formatSignificant } from '../../../src/ui/format';
 

@@ -25,6 +25,8 @@ export interface Q1Props {
   /** Live answers, supplied by the scene (the sample check, the divergence panel). */
   inverted: ReactNode;
   answer1d: ReactNode;
+  /** The CDFs plotted (the chosen density's, against the samples), under (c)'s answer. */
+  cdfs: ReactNode;
   /** A note when the sampled lobe is not the exam's. */
   otherLobe: ReactNode;
   /** `data-testid="derivation"` goes on part (a) when the exam lobe is chosen (the contract's test hook). */
@@ -40,6 +42,7 @@ export function Q1({
   kNote,
   inverted,
   answer1d,
+  cdfs,
   otherLobe,
   mainTestId,
 }: Q1Props) {
@@ -285,16 +288,17 @@ export function Q1({
             ]}
           />
         </DerivationBlock>
-        {xi && ex ? (
-          <LiveAnswer testId="answer-1c">
+        <LiveAnswer testId="answer-1c">
+          {xi && ex ? (
             <p data-testid="cdf-example">
               At the first sample of the current set, θ = {texNumPlain(ex.thetaAsin, 8)} and φ ={' '}
               {texNumPlain(ex.phiLog1p, 8)}: P(θ) = {texNumPlain(ex.cdfTheta, 10)} and P(φ) ={' '}
               {texNumPlain(ex.cdfPhi, 10)}, which are its ξ₁ = {texNumPlain(xi.xi1, 10)} and ξ₂ ={' '}
               {texNumPlain(xi.xi2, 10)}: the CDF undoes the inversion of (d).
             </p>
-          </LiveAnswer>
-        ) : null}
+          ) : null}
+          {cdfs}
+        </LiveAnswer>
       </ExamPart>
 
       <ExamPart

@@ -6,6 +6,7 @@
 import { memo, useEffect, useMemo, useRef, useState, type ComponentProps, type ReactNode } from 'react';
 import type { SceneProps } from '../../../kit/scene';
 import {
+  DescribedFigure,
   formatNumber,
   prefersReducedMotion,
   Readout,
@@ -27,7 +28,7 @@ import { HemisphereView } from './HemisphereView';
 import { UnitSquare } from './UnitSquare';
 import { cellImage, cellOf, type Cell } from '../stratum';
 import { StratumControls, useCellCount, type PickCell } from './StratumPicker';
-import { describeStratum } from './describe';
+import { describeHemisphere, describeStratum, type HemisphereState } from './describe';
 
 const ANIM_OPTIONS: { value: AnimKind; label: string }[] = [
   { value: 'warp', label: 'warp morph: square → hemisphere' },
@@ -54,6 +55,9 @@ interface FigureProps {
   onPickCell: PickCell;
   /** Results hidden (ask before revealing): no samples on the hemisphere, the morph held at t = 0. */
   ask: boolean;
+  /** The χ² test of the current draw (null while it runs), and why nothing is sampled (no lobe). */
+  chi2: HemisphereState['chi2'];
+  noLobeText: string;
 }
 
 /**
@@ -78,6 +82,8 @@ export function Figure({
   cell,
   onPickCell,
   ask,
+  chi2,
+  noLobeText,
 }: FigureProps) {
   const box = useRef<HTMLDivElement>(null);
   const tl = useTimeline({
@@ -107,6 +113,21 @@ export function Figure({
     const u = fillSequence2D(kind, seed, Math.max(1, n), new Float64Array(2), 0, 1, 0);
     return cellOf(u[0], u[1]);
   }, [kind, seed, n]);
+  // described at the paused position (while playing, the description is announced on pause)
+  const still = animFrame(lobe, kind, seed, n, anim, tl.t);
+  const description = describeHemisphere({
+    lobe,
+    noLobe: noLobeText,
+    kind,
+    n,
+    anim,
+    t: tl.t,
+    s: still.s,
+    shown: still.shown,
+    chi2,
+    stratum: cell ? stratumText : '',
+    ask,
+  });
   const format = (x: number) => {
     const frame = animFrame(lobe, kind, seed, n, anim, x);
     return anim === 'warp'
@@ -115,7 +136,13 @@ export function Figure({
   };
   return (
     <div className="hemi-figure" ref={box}>
-      <div className="hemi-figure-main">
+      <DescribedFigure
+        className="hemi-figure-main"
+        label="Warp of the unit square onto the hemisphere: samples of the chosen density"
+        description={description}
+        playing={tl.playing}
+        testId="hemi-figure"
+      >
         {lobe ? (
           <LiveHemisphereView
             tl={tl}
@@ -156,8 +183,8 @@ export function Figure({
           <Toggle label="points" checked={showPoints} onChange={setShowPoints} />
           <Toggle label="warped (ξ₁, ξ₂) grid" checked={showGrid} onChange={setShowGrid} />
         </div>
-        <FigureText tl={tl} lobe={lobe} lobeId={lobeId} kind={kind} seed={seed} n={n} anim={anim} />
-      </div>
+        <FigureText tl={tl} lobe={lobe} lobeId={lobeId} kind={kind} seed={seed} n={n} anim={anim} ask={ask} />
+      </DescribedFigure>
       <div className="hemi-figure-side">
         <SquareMemo
           kind={kind}
@@ -183,6 +210,7 @@ function FigureText({
   seed,
   n,
   anim,
+  ask,
 }: {
   tl: Timeline;
   lobe: FigureProps['lobe'];
@@ -191,6 +219,7 @@ function FigureText({
   seed: number;
   n: number;
   anim: AnimKind;
+  ask: boolean;
 }) {
   const t = useCoarsePosition(tl, 4);
   const frame = useMemo(() => animFrame(lobe, kind, seed, n, anim, t), [lobe, kind, seed, n, anim, t]);
@@ -213,10 +242,10 @@ function FigureText({
         {anim === 'warp'
           ? 'At t = 0 every point (ξ₁, ξ₂) lies in the unit square drawn flat on the base plane (ξ₁ along x, ξ₂ along y); as t goes to 1 each travels to the direction the inversion of (d) gives it. Each cell of the 8 × 8 grid is a stratum of the square: follow its colour to the patch of the hemisphere it lands on.'
           : 'The samples appear in the order they are drawn, from 1 to N (geometric in t); each keeps the colour of its (ξ₁, ξ₂).'}
-        {spread !== null
+        {spread !== null && !ask
           ? ` For the exam's lobe, ξ₁ sets θ = arcsin √ξ₁ (rings) and ξ₂ sets φ: the first stratum ξ₂ < 1/8 spreads over φ ∈ [0, ${formatNumber(spread, 3)}) rad, where p ∝ eᵠ is small, while the last one is squeezed near φ = 2π.`
           : ''}
-        {tr
+        {tr && !ask
           ? ` The first sample (ξ₁, ξ₂) = (${formatNumber(tr.xi1, 4)}, ${formatNumber(tr.xi2, 4)}) goes to θ = ${formatNumber(tr.theta, 4)}, φ = ${formatNumber(tr.phi, 4)} (ringed in the square).`
           : ''}
       </p>

@@ -481,7 +481,7 @@ export function HemisphereView({
   return (
     <div className="hemi-3d">
       <Viewport
-        ariaLabel="Samples of the chosen density: (ξ₁, ξ₂) points and grid in the unit square travelling to their directions on the upper hemisphere, coloured by (ξ₁, ξ₂)"
+        ariaLabel={`3D view: ${formatCount(n)} samples of p(ω) = ${lobe.label}, (ξ₁, ξ₂) points and grid travelling from the unit square to their directions on the upper hemisphere${cell ? `; stratum (${cell.i}, ${cell.j}) marked` : ''}`}
         height={height}
         setup={setup}
         testId="hemisphere-3d"

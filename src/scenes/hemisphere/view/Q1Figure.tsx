@@ -4,7 +4,7 @@
  * stratum read from and written to the URL (`cell=i,j`), with a notice when the link's value had to
  * be changed.
  */
-import { useCallback, useMemo, type ReactNode } from 'react';
+import { useCallback, useMemo, type ComponentProps, type ReactNode } from 'react';
 import type { SceneProps } from '../../../kit/scene';
 import { Notice, Panel, prefersReducedMotion } from '../../../ui';
 import type { Lobe } from '../model';
@@ -20,7 +20,9 @@ export function Q1Figure({
   lobe,
   inverted,
   densityProblem,
+  pdfError,
   settings,
+  chi2,
 }: {
   params: HemisphereParams;
   setParams: SceneProps<HemisphereSchema>['setParams'];
@@ -30,7 +32,10 @@ export function Q1Figure({
   inverted: boolean;
   /** Why the typed density cannot be sampled (null when it can). */
   densityProblem: ReactNode;
+  /** The same in words, for the figure's description. */
+  pdfError: string | null;
   settings: ReactNode;
+  chi2: ComponentProps<typeof Figure>['chi2'];
 }) {
   const cellKey = params.cell ? params.cell.join(',') : '';
   const { cell, problem } = useMemo(
@@ -71,6 +76,14 @@ export function Q1Figure({
         cell={cell}
         onPickCell={onPickCell}
         ask={ask}
+        chi2={chi2}
+        noLobeText={
+          inverted
+            ? 'with the identity as printed on the paper, p(θ, φ) = k cot θ eᵠ is not a density (its θ-integral diverges at the pole).'
+            : pdfError
+              ? `the typed density cannot be used: ${pdfError}.`
+              : 'there is no valid density to sample yet.'
+        }
       />
     </Panel>
   );

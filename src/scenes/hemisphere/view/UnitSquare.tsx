@@ -9,7 +9,9 @@ import { useEffect, useMemo, useRef } from 'react';
 import { fillSequence2D, type SequenceKind } from '../../../core/random';
 import { nextTask, runChunked } from '../../../ui/chunked';
 import { xiColor } from './colors';
-import { cellBounds, type Cell } from '../stratum';
+import { CELLS, cellBounds, cellCounts, type Cell } from '../stratum';
+import { ShowAsTable } from '../../../ui';
+import { describeSquare } from './describe';
 import { StratumCells, type PickCell } from './StratumPicker';
 
 const MAX_SHOWN = 4096;
@@ -44,6 +46,15 @@ export function UnitSquare({
   const first = useMemo(
     () => (shown > 0 ? fillSequence2D(kind, seed, n, new Float64Array(2), 0, 1, 0) : null),
     [kind, seed, n, shown],
+  );
+  const counts = useMemo(() => cellCounts(kind, seed, n, shown), [kind, seed, n, shown]);
+  const rows = useMemo(
+    () =>
+      Array.from({ length: CELLS }, (_, r) => {
+        const j = CELLS - 1 - r; // the top row first, as drawn
+        return [`${j}`, ...Array.from({ length: CELLS }, (_, i) => String(counts[j * CELLS + i]))];
+      }),
+    [counts],
   );
   useEffect(() => {
     const c = canvas.current;
@@ -131,7 +142,7 @@ export function UnitSquare({
           ref={canvas}
           style={{ width: size, height: size }}
           role="img"
-          aria-label={`The unit square of (ξ₁, ξ₂) with the first ${shown} points of the ${kind} set and the grid whose image is drawn on the hemisphere`}
+          aria-label={`The unit square of (ξ₁, ξ₂) and the grid whose image is drawn on the hemisphere: ${describeSquare(counts, shown, n, kind)}`}
         />
         <svg viewBox={`0 0 ${size} ${size}`} width={size} height={size} aria-hidden="true" focusable="false">
           <rect x={X(0)} y={Y(1)} width={s} height={s} fill="none" stroke="currentColor" strokeWidth={1} />
@@ -166,6 +177,12 @@ export function UnitSquare({
         the hemisphere; the ringed point is the first sample.
         {cell ? ` The outlined cell is the followed stratum (${cell.i}, ${cell.j}).` : ''}
       </figcaption>
+      <ShowAsTable
+        caption={`Points of the square in each cell (first ${formatCount(shown)}): rows j of ξ₂ from the top, columns i of ξ₁`}
+        columns={['j \\ i', ...Array.from({ length: CELLS }, (_, i) => String(i))]}
+        rows={rows}
+        testId="square-table"
+      />
     </figure>
   );
 }

@@ -5,56 +5,14 @@
  * description and the stratum panel's text are built here and unit-tested.
  */
 import { formatCount, formatSignificant } from '../../../ui/format';
+import { summarizeSeries } from '../../../ui/summary';
 import { HALF_PI, TWO_PI } from '../../../core/sampling';
 import type { SequenceKind } from '../../../core/random';
 import type { AnimKind, Lobe } from '../model';
 import { CELLS, cellBounds, type Cell, type CellImage } from '../stratum';
+import { marginalShape, type MarginalShape } from '../marginals';
 
 const num = (x: number, digits = 3) => (Number.isFinite(x) ? formatSignificant(x, digits, 'times') : '—');
-
-/** Where a marginal density puts its mass: its peak, its median and whether it is flat. */
-export interface MarginalShape {
-  peak: number;
-  median: number;
-  flat: boolean;
-  lo: number;
-  hi: number;
-}
-
-/** The shape of a density f on [lo, hi] from a fine grid (trapezoids for the median). */
-export function marginalShape(f: (x: number) => number, lo: number, hi: number, m = 400): MarginalShape {
-  const xs = new Float64Array(m + 1);
-  const ys = new Float64Array(m + 1);
-  let peak = lo;
-  let yMax = -Infinity;
-  let yMin = Infinity;
-  for (let k = 0; k <= m; k++) {
-    // the end of a half-open support (φ < 2π) is read just inside it
-    const x = k === m ? hi - (hi - lo) * 1e-12 : lo + ((hi - lo) * k) / m;
-    const y = Math.max(0, f(x));
-    xs[k] = x;
-    ys[k] = Number.isFinite(y) ? y : 0;
-    if (ys[k] > yMax * (1 + 1e-9)) {
-      yMax = ys[k];
-      peak = x;
-    }
-    if (k > 0 && k < m) yMin = Math.min(yMin, ys[k]);
-  }
-  let total = 0;
-  for (let k = 0; k < m; k++) total += 0.5 * (ys[k] + ys[k + 1]) * (xs[k + 1] - xs[k]);
-  let acc = 0;
-  let median = (lo + hi) / 2;
-  for (let k = 0; k < m; k++) {
-    const piece = 0.5 * (ys[k] + ys[k + 1]) * (xs[k + 1] - xs[k]);
-    if (total > 0 && acc + piece >= total / 2) {
-      const f0 = piece > 0 ? (total / 2 - acc) / piece : 0;
-      median = xs[k] + f0 * (xs[k + 1] - xs[k]);
-      break;
-    }
-    acc += piece;
-  }
-  return { peak, median, flat: yMax <= yMin * 1.001, lo, hi };
-}
 
 /** "around θ = 0.785 rad", "towards the pole", … for one marginal. */
 function shapeText(s: MarginalShape, v: 'θ' | 'φ', lowEnd: string, highEnd: string): string {
@@ -177,4 +135,94 @@ export function describeHemisphere(st: HemisphereState): string {
   }
   if (st.stratum) parts.push(st.stratum);
   return parts.join(' ');
+}
+
+/** The unit square's points in words: how many, and how evenly the 64 cells share them. */
+export function describeSquare(
+  counts: ArrayLike<number>,
+  shown: number,
+  n: number,
+  kind: SequenceKind,
+): string {
+  let lo = Infinity;
+  let hi = -Infinity;
+  for (let k = 0; k < counts.length; k++) {
+    lo = Math.min(lo, counts[k]);
+    hi = Math.max(hi, counts[k]);
+  }
+  const of = shown < n ? ` (the first of ${formatCount(n)})` : '';
+  return `${formatCount(shown)} ${KIND_TEXT[kind]} points (ξ₁, ξ₂) in the unit square${of}; each of its ${counts.length} cells holds from ${formatCount(lo)} to ${formatCount(hi)} of them (${num(shown / counts.length, 4)} expected).`;
+}
+
+/** A marginal histogram against its density, in words: both series summarized and where they differ most. */
+export function describeMarginal(
+  h: {
+    centers: ArrayLike<number>;
+    density: ArrayLike<number>;
+    curveX: ArrayLike<number>;
+    curveY: ArrayLike<number>;
+  },
+  v: 'θ' | 'φ',
+  n: number,
+  density: (x: number) => number,
+): string {
+  const opts = { xLabel: `${v} (rad)`, format: (x: number) => num(x) };
+  let gap = 0;
+  let at = 0;
+  for (let b = 0; b < h.centers.length; b++) {
+    const d = Math.abs(h.density[b] - density(h.centers[b]));
+    if (d > gap) {
+      gap = d;
+      at = h.centers[b];
+    }
+  }
+  return [
+    `Histogram of ${formatCount(n)} sampled ${v} in ${h.centers.length} bins against the density p(${v}).`,
+    summarizeSeries(h.centers, h.density, { ...opts, yLabel: 'the histogram' }),
+    summarizeSeries(h.curveX, h.curveY, { ...opts, yLabel: `p(${v})` }),
+    `They differ most at ${v} = ${num(at)} rad, by ${num(gap)}.`,
+  ].join(' ');
+}
+
+/** The centre of χ² bin k (cos θ, φ) and its standardized difference (O − E)/√E (0 where E = 0). */
+export function chi2Bin(
+  c: { observed: ArrayLike<number>; expected: ArrayLike<number>; cosThetaBins: number; phiBins: number },
+  k: number,
+): { cosTheta: number; phi: number; o: number; e: number; z: number } {
+  const i = Math.floor(k / c.phiBins);
+  const j = k % c.phiBins;
+  const o = c.observed[k];
+  const e = c.expected[k];
+  return {
+    cosTheta: (i + 0.5) / c.cosThetaBins,
+    phi: ((j + 0.5) * TWO_PI) / c.phiBins,
+    o,
+    e,
+    z: e > 0 ? (o - e) / Math.sqrt(e) : 0,
+  };
+}
+
+/** The χ² bins in words: counts observed and expected, and the bin where they differ most. */
+export function describeChi2Bins(c: Parameters<typeof chi2Bin>[0]): string {
+  const m = c.cosThetaBins * c.phiBins;
+  let oLo = Infinity,
+    oHi = -Infinity,
+    eLo = Infinity,
+    eHi = -Infinity,
+    worst = 0;
+  for (let k = 0; k < m; k++) {
+    const b = chi2Bin(c, k);
+    oLo = Math.min(oLo, b.o);
+    oHi = Math.max(oHi, b.o);
+    eLo = Math.min(eLo, b.e);
+    eHi = Math.max(eHi, b.e);
+    if (Math.abs(b.z) > Math.abs(chi2Bin(c, worst).z)) worst = k;
+  }
+  const w = chi2Bin(c, worst);
+  return (
+    `${m} bins of equal solid angle, ${c.cosThetaBins} in cos θ by ${c.phiBins} in φ: observed counts from ` +
+    `${formatCount(oLo)} to ${formatCount(oHi)}, expected from ${num(eLo)} to ${num(eHi)}. The largest ` +
+    `standardized difference (O − E)/√E is ${num(w.z).replace(/^-/, '−')}, at cos θ = ${num(w.cosTheta)}, ` +
+    `φ = ${num(w.phi)} rad (${formatCount(w.o)} observed, ${num(w.e)} expected).`
+  );
 }
