@@ -129,9 +129,25 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
       </Notice>
     ) : null;
 
+  const figure = (
+    <Q1Figure
+      params={params}
+      setParams={setParams}
+      present={mode.present}
+      ask={mode.ask}
+      lobe={lobe}
+      inverted={inverted}
+      densityProblem={densityProblem}
+      pdfError={isCustom ? pdfError : null}
+      settings={settings}
+      chi2={current?.chi2 ?? null}
+    />
+  );
   const lobeTex = lobeTexOf(lobeId, params.exponent, k, pc.status === 'ok' ? (pc.tex ?? null) : null);
   return (
-    <div className="hemi-page">
+    // classroom mode: the stage first (`stage-layout` lets the shell compact the heading above it)
+    <div className={mode.present ? 'hemi-page stage-layout' : 'hemi-page'}>
+      {mode.present ? figure : null}
       <ExamQuestion
         n={1}
         intro={
@@ -142,18 +158,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
           </p>
         }
       >
-        <Q1Figure
-          params={params}
-          setParams={setParams}
-          present={mode.present}
-          ask={false}
-          lobe={lobe}
-          inverted={inverted}
-          densityProblem={densityProblem}
-          pdfError={isCustom ? pdfError : null}
-          settings={settings}
-          chi2={current?.chi2 ?? null}
-        />
+        {mode.present ? null : figure}
         {isCustom && tab && tab.ok && tab.warning ? (
           <Notice kind="warn">Approximate: {tab.warning}.</Notice>
         ) : null}
@@ -173,6 +178,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
           cdfs={lobe ? <CdfPlots lobe={lobe} stats={current} xi={firstXi} /> : null}
           otherLobe={otherLobe}
           mainTestId={lobeId === 'exam'}
+          ask={mode.ask}
         />
       </ExamQuestion>
 
@@ -199,6 +205,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
         <Q2
           solidAngle={checks.solidAngle}
           lobeTex={lobeTex}
+          ask={mode.ask}
           answer2a={
             <>
               <UniformReadouts

@@ -5,6 +5,7 @@
  */
 import type { ReactNode } from 'react';
 import { ExamPart, Derivation as DerivationBlock, LiveAnswer, KeyNote } from '../../../ui/exam';
+import { Revealed } from '../../../ui/ask';
 import { MathTex, Readout, formatNumber } from '../../../ui';
 import { examInversion, type ExamChecks } from '../model';
 import { texNum } from '../view/tex';
@@ -31,6 +32,8 @@ export interface Q1Props {
   otherLobe: ReactNode;
   /** `data-testid="derivation"` goes on part (a) when the exam lobe is chosen (the contract's test hook). */
   mainTestId: boolean;
+  /** Results hidden until revealed (`ask=1`): the live answers wait, the derivations stay. */
+  ask: boolean;
 }
 
 export function Q1({
@@ -45,6 +48,7 @@ export function Q1({
   cdfs,
   otherLobe,
   mainTestId,
+  ask,
 }: Q1Props) {
   const k = texNum(c.k, 8);
   const E = texNum(c.e2piMinus1, 8);
@@ -120,9 +124,11 @@ export function Q1({
           />
         </DerivationBlock>
         <LiveAnswer testId="answer-1a">
-          <div className="readouts">
-            <Readout id="k" label="k (normalization of p(ω))" value={kValue} digits={8} note={kNote} />
-          </div>
+          <Revealed ask={ask} what="k">
+            <div className="readouts">
+              <Readout id="k" label="k (normalization of p(ω))" value={kValue} digits={8} note={kNote} />
+            </div>
+          </Revealed>
         </LiveAnswer>
       </ExamPart>
 
@@ -248,11 +254,13 @@ export function Q1({
           )}
         </DerivationBlock>
         <LiveAnswer testId="answer-1b">
-          <p>
-            p(θ) = sin 2θ on [0, π/2] and p(φ) = e<sup>φ</sup>/(e<sup>2π</sup> − 1) ={' '}
-            {texNumPlain(c.k / 2, 8)} e<sup>φ</sup> on [0, 2π); the histograms in (d) are drawn against these
-            curves.
-          </p>
+          <Revealed ask={ask} what="the marginals">
+            <p>
+              p(θ) = sin 2θ on [0, π/2] and p(φ) = e<sup>φ</sup>/(e<sup>2π</sup> − 1) ={' '}
+              {texNumPlain(c.k / 2, 8)} e<sup>φ</sup> on [0, 2π); the histograms in (d) are drawn against
+              these curves.
+            </p>
+          </Revealed>
         </LiveAnswer>
       </ExamPart>
 
@@ -289,15 +297,17 @@ export function Q1({
           />
         </DerivationBlock>
         <LiveAnswer testId="answer-1c">
-          {xi && ex ? (
-            <p data-testid="cdf-example">
-              At the first sample of the current set, θ = {texNumPlain(ex.thetaAsin, 8)} and φ ={' '}
-              {texNumPlain(ex.phiLog1p, 8)}: P(θ) = {texNumPlain(ex.cdfTheta, 10)} and P(φ) ={' '}
-              {texNumPlain(ex.cdfPhi, 10)}, which are its ξ₁ = {texNumPlain(xi.xi1, 10)} and ξ₂ ={' '}
-              {texNumPlain(xi.xi2, 10)}: the CDF undoes the inversion of (d).
-            </p>
-          ) : null}
-          {cdfs}
+          <Revealed ask={ask} what="the CDFs against the samples">
+            {xi && ex ? (
+              <p data-testid="cdf-example">
+                At the first sample of the current set, θ = {texNumPlain(ex.thetaAsin, 8)} and φ ={' '}
+                {texNumPlain(ex.phiLog1p, 8)}: P(θ) = {texNumPlain(ex.cdfTheta, 10)} and P(φ) ={' '}
+                {texNumPlain(ex.cdfPhi, 10)}, which are its ξ₁ = {texNumPlain(xi.xi1, 10)} and ξ₂ ={' '}
+                {texNumPlain(xi.xi2, 10)}: the CDF undoes the inversion of (d).
+              </p>
+            ) : null}
+            {cdfs}
+          </Revealed>
         </LiveAnswer>
       </ExamPart>
 
@@ -370,7 +380,11 @@ export function Q1({
             />
           ) : null}
         </DerivationBlock>
-        <LiveAnswer testId="answer-1d">{answer1d}</LiveAnswer>
+        <LiveAnswer testId="answer-1d">
+          <Revealed ask={ask} what="the samples' histograms and the χ² test">
+            {answer1d}
+          </Revealed>
+        </LiveAnswer>
       </ExamPart>
       {otherLobe}
     </>

@@ -73,8 +73,8 @@ export interface HemisphereViewProps {
   showGrid: boolean;
   /** The followed stratum (its samples marked, its patch and outline drawn), or null. */
   cell?: Cell | null;
-  /** Height of the 3D viewport in CSS pixels (default 380; the scene passes a larger one in present mode). */
-  height?: number;
+  /** Height of the 3D viewport: CSS pixels, or a CSS length (the classroom stage sizes it to the screen). */
+  height?: number | string;
   /**
    * Set to a function that shows another frame directly (per animation frame, without a React
    * render); `frame` is then the frame of the component's last render.

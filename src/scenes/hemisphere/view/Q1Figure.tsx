@@ -43,8 +43,8 @@ export function Q1Figure({
     [cellKey],
   );
   const onPickCell = useCallback((c: Cell | null) => setParams({ cell: c ? [c.i, c.j] : null }), [setParams]);
-  return (
-    <Panel className="hemi-figure-panel">
+  const body = (
+    <>
       {problem ? (
         <Notice kind="warn" testId="cell-problem">
           {problem}.
@@ -85,6 +85,8 @@ export function Q1Figure({
               : 'there is no valid density to sample yet.'
         }
       />
-    </Panel>
+    </>
   );
+  // on the classroom stage the figure stands on its own, first on the page
+  return present ? body : <Panel className="hemi-figure-panel">{body}</Panel>;
 }

@@ -180,9 +180,11 @@ export function StratumControls({
           .
         </p>
       )}
-      <p className="small" data-testid="stratum-text">
-        {text}
-      </p>
+      {cell && text ? (
+        <p className="small" data-testid="stratum-text">
+          {text}
+        </p>
+      ) : null}
     </fieldset>
   );
 }

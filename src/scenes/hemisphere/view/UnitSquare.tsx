@@ -30,6 +30,7 @@ export function UnitSquare({
   size = 220,
   cell = null,
   onPick,
+  captioned = true,
 }: {
   kind: SequenceKind;
   seed: number;
@@ -38,6 +39,8 @@ export function UnitSquare({
   /** The followed stratum (null: none) and the way to choose another (absent: no picking). */
   cell?: Cell | null;
   onPick?: PickCell;
+  /** Show the caption under the square (the classroom stage leaves it out). */
+  captioned?: boolean;
 }) {
   const canvas = useRef<HTMLCanvasElement>(null);
   const shown = Math.min(n, MAX_SHOWN);
@@ -157,22 +160,30 @@ export function UnitSquare({
               strokeWidth={2}
             />
           )}
-          <g fill="currentColor" fontSize={12} fontFamily="sans-serif">
-            <text x={X(1) - 30} y={Y(0) + 16}>
+          <g
+            fill="currentColor"
+            style={{ fontSize: 'var(--tick-size, 12px)' }}
+            fontFamily="sans-serif"
+            textAnchor="middle"
+            dominantBaseline="hanging"
+          >
+            <text x={X(0.5)} y={Y(0) + 3}>
               ξ₁ →
             </text>
-            <text x={X(0) - 4} y={Y(0) + 16}>
+            <text x={X(0)} y={Y(0) + 3}>
               0
             </text>
-            <text x={X(1) - 4} y={Y(0) + 16}>
+            <text x={X(1)} y={Y(0) + 3}>
               1
             </text>
-            <text transform={`translate(${X(0) - 8} ${Y(0.5)}) rotate(-90)`}>ξ₂ →</text>
+            <text transform={`translate(${X(0) - 3} ${Y(0.5)}) rotate(-90)`} dominantBaseline="auto">
+              ξ₂ →
+            </text>
           </g>
         </svg>
         {onPick ? <StratumCells cell={cell} onPick={onPick} inset={22 / size} /> : null}
       </div>
-      <figcaption>
+      <figcaption className={captioned ? undefined : 'sr-only'}>
         (ξ₁, ξ₂): first {formatCount(shown)} {kind} points; each colour lands where the same colour appears on
         the hemisphere; the ringed point is the first sample.
         {cell ? ` The outlined cell is the followed stratum (${cell.i}, ${cell.j}).` : ''}
