@@ -8,7 +8,7 @@ export {
   type ReadoutProps,
 } from './Readout';
 export { NumberField, Slider, Select, Toggle, ExprField, Panel, Notice, SceneLayout } from './controls';
-export { MathTex, loadKatex } from './MathTex';
+export { MathTex, loadKatex, preloadMath } from './MathTex';
 export { runChunked, nextTask } from './chunked';
 export { Plot, loadPlotly, type PlotTrace, type PlotLayout } from './Plot';
 export { useShortcuts, type ShortcutHandlers } from './shortcuts';

@@ -466,3 +466,77 @@ test.describe('the query travels its path', () => {
     );
   });
 });
+
+test.describe('the derivation and the answer under it agree while it plays', () => {
+  /** The result each part's derivation prints (from its TeX) and the answer under it, read at one moment. */
+  async function resultsNow(page: Page) {
+    return page.evaluate(() => {
+      const tex = (id: string) =>
+        document.querySelector(`[data-testid=derivation-${id}] annotation[encoding="application/x-tex"]`)
+          ?.textContent ?? null;
+      const out = (id: string) => document.querySelector(`[data-testid=${id}]`)?.textContent ?? null;
+      const t = document.querySelector('[data-testid=timeline]')?.getAttribute('data-t') ?? null;
+      return { a: tex('3a'), b: tex('3b'), nearest: out('nearest'), bilinear: out('bilinear'), t };
+    });
+  }
+  /** The last value of the bilinear steps (c = …) and the value of the nearest node (T_{i,j} = …). */
+  const bilinearResult = (tex: string) => /&= ([-0-9.]+)\s*\\end\{aligned\}\s*$/.exec(tex)?.[1];
+  const nearestResult = (tex: string) => /T_\{\d+,\d+\} &= ([-0-9.]+)/.exec(tex)?.[1];
+
+  async function expectAgree(page: Page) {
+    const r = await resultsNow(page);
+    expect(r.a && r.b, 'both derivations are typeset').toBeTruthy();
+    expect(nearestResult(r.a!), `(a) at t = ${r.t}`).toBe(r.nearest);
+    expect(bilinearResult(r.b!), `(b) at t = ${r.t}`).toBe(r.bilinear);
+    return r;
+  }
+  const typeset = async (page: Page) => {
+    for (const id of ['3a', '3b'])
+      await expect(page.getByTestId(`derivation-${id}`).locator('.math-pending')).toHaveCount(0);
+  };
+
+  test('sampled while playing, and paused at several t: the steps end in the answer shown under them', async ({
+    page,
+  }) => {
+    await openScene(page, '#/texture');
+    await page.getByTestId('derivation-3b').scrollIntoViewIfNeeded();
+    await typeset(page);
+    const first = await expectAgree(page);
+    expect(Number(first.bilinear)).toBeCloseTo(L(0.4, 0.24), 9);
+    await page.getByTestId('timeline-speed').selectOption('0.5');
+    // while it plays: every sample agrees, and the steps do move with the point
+    await page.getByTestId('timeline-play').click();
+    const seen = new Set<string>();
+    for (let k = 0; k < 12; k++) {
+      await page.waitForTimeout(250);
+      const r = await resultsNow(page);
+      if (!r.a || !r.b) continue; // not typeset yet (the first formula of the page)
+      expect(nearestResult(r.a), `(a) while playing, sample ${k}`).toBe(r.nearest);
+      expect(bilinearResult(r.b), `(b) while playing, sample ${k}`).toBe(r.bilinear);
+      seen.add(r.bilinear!);
+    }
+    expect(seen.size, 'the derivation follows the moving point').toBeGreaterThan(2);
+    await page.getByTestId('timeline-play').click();
+    // paused at several positions: the steps, the answer and the model at the paused t agree
+    for (const after of [0.25, 0.5, 0.8]) {
+      await page.getByTestId('timeline-play').click();
+      await expect.poll(() => timelineT(page), { timeout: 30_000 }).toBeGreaterThan(after);
+      await page.getByTestId('timeline-play').click();
+      await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '0');
+      const t = await timelineT(page);
+      const f = frameAt(examGrid(), EXAM, DEFAULT_PATH, t);
+      await waitForReadout(page, 'bilinear', (x) => Math.abs(Number(x) - f.lookup.bil.value) < 1e-12);
+      await typeset(page);
+      const r = await expectAgree(page);
+      expect(Number(r.bilinear)).toBeCloseTo(f.lookup.bil.value, 4);
+      expect(Number(r.nearest)).toBe(f.lookup.near.value);
+      // the key's note names the point it computes at, not the exam's
+      await expect(page.getByTestId('keynote-3a')).toContainText(`at t = ${p4(t)}`);
+      await expect(page.getByTestId('keynote-3a')).toContainText('at the exam’s point (0.4, 0.24) the key');
+      await expect(page.getByTestId('not-exam-query').first()).toContainText(`at t = ${p4(t)}`);
+    }
+  });
+});
+
+/** As the page prints a short number (4 significant digits). */
+const p4 = (x: number) => String(Number(x.toPrecision(4)));

@@ -66,10 +66,6 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
     () => pathOf({ u: au, v: av, u2: bu, v2: bv, path: kind }),
     [au, av, bu, bv, kind],
   );
-  const committedPath = useMemo<QueryPath>(
-    () => pathOf({ u: params.u, v: params.v, u2: params.u2, v2: params.v2, path: kind }),
-    [params.u, params.v, params.u2, params.v2, kind],
-  );
 
   const src = useMemo(
     () => resolveGrid({ grid: params.grid, preset: params.preset, size: params.size, seed: params.seed }),
@@ -87,10 +83,7 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
   // components that draw the moving query subscribe to it (see ./view/anim), so a frame does not
   // re-render the scene.
   const [store] = useState(() => createAnimationStore(Number(params.t)));
-  const ctx = useMemo(
-    () => animContext(store, grid, opts, src, path, committedPath),
-    [store, grid, opts, src, path, committedPath],
-  );
+  const ctx = useMemo(() => animContext(store, grid, opts, src, path), [store, grid, opts, src, path]);
   const sphere = useMemo(
     () => sphereModel(grid, { x: params.x, y: params.y, z: params.z, normalize: params.normalize }, opts),
     [grid, params.x, params.y, params.z, params.normalize, opts],
