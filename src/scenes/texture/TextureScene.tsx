@@ -188,10 +188,11 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
         <div className="tx-figure-side">
           <AnimSide ctx={ctx} />
           <CellEditor
-            grid={grid}
+            ctx={ctx}
             editing={editing}
             onEditing={onEditing}
             selected={selected}
+            onSelect={(i, j) => setSelected({ i, j })}
             onCell={setCell}
             error={editError}
           />
