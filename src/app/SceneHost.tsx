@@ -1,6 +1,8 @@
 import {
   Component,
+  lazy,
   startTransition,
+  Suspense,
   useCallback,
   useEffect,
   useMemo,
@@ -27,6 +29,9 @@ import { embedSnippet } from './embedCode';
 import { QrButton } from './QrButton';
 import { markFirstScreen } from './firstScreen';
 import { importOrReload } from './staleBuild';
+
+// The teacher's A11y view (a11y=1): its own chunk, loaded only with the flag.
+const A11yView = lazy(() => import('./A11yView'));
 
 interface Props {
   info: SceneInfo;
@@ -98,6 +103,11 @@ export function SceneHost({ info, query, flags, theme }: Props) {
       tabIndex={-1}
     >
       {header}
+      {flags.a11y ? (
+        <Suspense fallback={null}>
+          <A11yView />
+        </Suspense>
+      ) : null}
       {load.kind === 'loading' ? (
         <p className="loading" role="status">
           Loading the scene…

@@ -19,6 +19,8 @@ export interface ShellFlags {
   embed: boolean;
   present: boolean;
   theme: 'light' | 'dark' | null;
+  /** `a11y=1`: beside the scene, the text a screen reader receives (the teacher's A11y view). */
+  a11y?: boolean;
   /**
    * `part=1c`: the exam sub-question to land on (the scene checks it is one of its parts). Kept in
    * links the scene writes, so a shared link lands on the same part.
@@ -50,7 +52,7 @@ export function parseShellFlags(query: string): ShellFlags {
   } catch {
     return flags;
   }
-  const bool = (name: 'embed' | 'present') => {
+  const bool = (name: 'embed' | 'present' | 'a11y') => {
     const v = sp.get(name);
     if (v === null) return;
     if (v === '1' || v === 'true') flags[name] = true;
@@ -59,6 +61,7 @@ export function parseShellFlags(query: string): ShellFlags {
   };
   bool('embed');
   bool('present');
+  bool('a11y');
   const t = sp.get('theme');
   if (t !== null) {
     if (t === 'light' || t === 'dark') flags.theme = t;
@@ -78,7 +81,7 @@ export function parseShellFlags(query: string): ShellFlags {
       });
   }
   // a shell parameter given twice: the first is used, and the notice says so
-  for (const name of ['embed', 'present', 'theme', 'part', 'origin']) {
+  for (const name of ['embed', 'present', 'theme', 'part', 'origin', 'a11y']) {
     const n = sp.getAll(name).length;
     if (n > 1) flags.problems.push({ name, message: `is given ${n} times; using the first` });
   }
@@ -138,7 +141,7 @@ function clip(s: string, n: number): string {
 
 /** The shell flags as query entries, for links that must keep the mode. */
 export function shellExtras(
-  flags: Pick<ShellFlags, 'embed' | 'present' | 'theme'> & {
+  flags: Pick<ShellFlags, 'embed' | 'present' | 'theme' | 'a11y'> & {
     part?: string | null;
     origins?: readonly string[] | null;
   },
@@ -148,6 +151,7 @@ export function shellExtras(
     embed: flags.embed ? '1' : undefined,
     present: flags.present ? '1' : undefined,
     theme: flags.theme ?? undefined,
+    a11y: flags.a11y ? '1' : undefined,
     // an empty list stays `origin=` (nobody), so a rewritten link never drops the restriction
     origin: flags.origins ? flags.origins.join(',') : undefined,
   };
@@ -164,7 +168,7 @@ export function queryProblems(query: string, known: readonly string[]): { name: 
   } catch {
     return [{ name: '(query)', message: 'could not be read' }];
   }
-  const shell = ['embed', 'present', 'theme', 'part', 'origin', 'fuzz', 'fuzzn', 'fuzzseed'];
+  const shell = ['embed', 'present', 'theme', 'part', 'origin', 'a11y', 'fuzz', 'fuzzn', 'fuzzseed'];
   const out: { name: string; message: string }[] = [];
   const seen = new Set<string>();
   let unknown = 0;

@@ -56,3 +56,8 @@ export {
 } from './exam';
 export { Deferred, useSectionWidth } from './Deferred';
 export { useCompiled, type Compiled, type CompileOutcome } from './useCompiled';
+export { announce, onAnnounce, recentAnnouncements, ANNOUNCE_GAP_MS, type Announcement } from './announce';
+export { DescribedFigure, DESCRIBE_SETTLE_MS, type DescribedFigureProps } from './describe';
+export { summarizeSeries, superscriptExponent, type SummaryOptions } from './summary';
+export { ShowAsTable, type ShowAsTableProps } from './DataTable';
+export { AudioTrace, type AudioTraceProps, type TraceEvent, type TraceEventKind } from './audioTrace';

@@ -31,7 +31,8 @@ export const SHORTCUTS: readonly { key: string; label: string; action: keyof Sho
   { key: '?', label: 'show this list', action: 'help' },
 ];
 
-function isTyping(target: EventTarget | null): boolean {
+/** Keys typed into a field belong to the field, not to a shortcut. */
+export function isTyping(target: EventTarget | null): boolean {
   if (!(target instanceof HTMLElement)) return false;
   const tag = target.tagName;
   if (tag === 'TEXTAREA' || tag === 'SELECT' || target.isContentEditable) return true;
