@@ -30,10 +30,10 @@ import {
 } from './model';
 import { GRID_TEXT_MAX, type TextureSchema } from './params';
 import { DURATION, RENDER_HZ, STEP, animContext, formatT } from './view/anim';
-import { AnimGrid, AnimPathPlot, AnimSide } from './view/animated';
+import { AnimGrid, AnimPathPlot, AnimSide, DescribedMain } from './view/animated';
 import { Controls } from './view/Controls';
 import { ReconstructionPanel, SeamPanel } from './view/Explore';
-import { CellEditor, ExamGridTable, Legend, PathEnd, PathKindSelect } from './view/FigureParts';
+import { CellEditor, ExamGridTable, GridValues, Legend, PathEnd, PathKindSelect } from './view/FigureParts';
 import type { Grab } from './view/GridView';
 import { Q3a } from './exam/Q3a';
 import { Q3b } from './exam/Q3b';
@@ -84,9 +84,10 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
   // re-render the scene.
   const [store] = useState(() => createAnimationStore(Number(params.t)));
   const ctx = useMemo(() => animContext(store, grid, opts, src, path), [store, grid, opts, src, path]);
+  const point = useMemo(() => ({ x: params.x, y: params.y, z: params.z }), [params.x, params.y, params.z]);
   const sphere = useMemo(
-    () => sphereModel(grid, { x: params.x, y: params.y, z: params.z, normalize: params.normalize }, opts),
-    [grid, params.x, params.y, params.z, params.normalize, opts],
+    () => sphereModel(grid, { ...point, normalize: params.normalize }, opts),
+    [grid, point, params.normalize, opts],
   );
 
   const onMove = useCallback(
@@ -146,58 +147,68 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
           <strong>grid</strong>: {src.error} Using the exam’s 5 × 5 grid instead.
         </Notice>
       ) : null}
-      <div className="tx-figure-cols" ref={figRef}>
-        <div className="exam-asks tx-gives">
-          <span className="exam-asks-label">The exam gives</span>
-          <p>
-            A 5 × 5 texture with values at the nodes (u, v) = (i/4, j/4), v upward. (a), (b): look it up at
-            (u, v) = (0.4, 0.24); (c): at a point on a sphere.
-          </p>
-          <ExamGridTable />
+      <DescribedMain
+        ctx={ctx}
+        preset={params.preset}
+        sphere={sphere}
+        point={point}
+        normalize={params.normalize}
+        editing={editing ? selected : null}
+      >
+        <div className="tx-figure-cols" ref={figRef}>
+          <div className="exam-asks tx-gives">
+            <span className="exam-asks-label">The exam gives</span>
+            <p>
+              A 5 × 5 texture with values at the nodes (u, v) = (i/4, j/4), v upward. (a), (b): look it up at
+              (u, v) = (0.4, 0.24); (c): at a point on a sphere.
+            </p>
+            <ExamGridTable />
+          </div>
+          <div className="tx-figure-main">
+            <AnimGrid
+              ctx={ctx}
+              {...shown}
+              onMove={onMove}
+              editing={editing}
+              selected={selected}
+              onSelect={(i, j) => setSelected({ i, j })}
+              onEditEnter={() => setFocusCell((k) => k + 1)}
+              present={mode.present}
+            />
+            <Legend range={range} />
+            <AnimationDriver
+              store={store}
+              t={Number(params.t)}
+              play={params.play === true}
+              setParams={setParams}
+              visibleRef={figRef}
+              max={1}
+              duration={DURATION}
+              stepSize={STEP}
+              renderHz={RENDER_HZ}
+              label="Query path"
+              format={formatT}
+            >
+              <PathKindSelect params={params} setParams={setParams} />
+            </AnimationDriver>
+            <PathEnd params={params} setParams={setParams} />
+            <AnimPathPlot ctx={ctx} present={mode.present} />
+          </div>
+          <div className="tx-figure-side">
+            <AnimSide ctx={ctx} />
+            <CellEditor
+              ctx={ctx}
+              editing={editing}
+              onEditing={onEditing}
+              selected={selected}
+              onSelect={(i, j) => setSelected({ i, j })}
+              onCell={setCell}
+              error={editError}
+            />
+            <GridValues grid={grid} opts={opts} />
+          </div>
         </div>
-        <div className="tx-figure-main">
-          <AnimGrid
-            ctx={ctx}
-            {...shown}
-            onMove={onMove}
-            editing={editing}
-            selected={selected}
-            onSelect={(i, j) => setSelected({ i, j })}
-            onEditEnter={() => setFocusCell((k) => k + 1)}
-            present={mode.present}
-          />
-          <Legend range={range} />
-          <AnimationDriver
-            store={store}
-            t={Number(params.t)}
-            play={params.play === true}
-            setParams={setParams}
-            visibleRef={figRef}
-            max={1}
-            duration={DURATION}
-            stepSize={STEP}
-            renderHz={RENDER_HZ}
-            label="Query path"
-            format={formatT}
-          >
-            <PathKindSelect params={params} setParams={setParams} />
-          </AnimationDriver>
-          <PathEnd params={params} setParams={setParams} />
-          <AnimPathPlot ctx={ctx} present={mode.present} />
-        </div>
-        <div className="tx-figure-side">
-          <AnimSide ctx={ctx} />
-          <CellEditor
-            ctx={ctx}
-            editing={editing}
-            onEditing={onEditing}
-            selected={selected}
-            onSelect={(i, j) => setSelected({ i, j })}
-            onCell={setCell}
-            error={editError}
-          />
-        </div>
-      </div>
+      </DescribedMain>
     </Panel>
   );
 

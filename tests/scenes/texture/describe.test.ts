@@ -19,7 +19,13 @@ import {
   describePathStructure,
   describeSphere,
   describeTexture,
+  describeReconstruction,
+  gridTableColumns,
+  gridTableRows,
+  nearestEvents,
   pathEvents,
+  pathSamples,
+  pathTableRows,
   short,
   textureName,
 } from '../../../src/scenes/texture/view/describe';
@@ -153,5 +159,47 @@ describe('the value along the path', () => {
     expect(jumps).toBeGreaterThan(0);
     expect(describePathStructure(p)).toContain(`except ${jumps} jump`);
     expect(pathEvents(p).some((e) => e.label.includes('jumps'))).toBe(true);
+  });
+});
+
+describe('the plot’s data and the texture as tables', () => {
+  it('samples: nearest and bilinear at evenly spaced t; bilinear is the plane L on the exam grid', () => {
+    const s = pathSamples(examGrid(), EXAM, PATH, 10);
+    expect(s.ts).toHaveLength(11);
+    s.ts.forEach((t, k) => {
+      const f = frameAt(examGrid(), EXAM, PATH, t);
+      expect(s.bil[k]).toBeCloseTo(L(f.u, f.v), 9);
+      expect(s.near[k]).toBe(f.lookup.near.value);
+    });
+  });
+
+  it('table rows: the samples plus every border and step, in order, each named', () => {
+    const p = pathProfile(examGrid(), EXAM, PATH);
+    const rows = pathTableRows(examGrid(), EXAM, PATH, p, 20);
+    expect(rows.length).toBe(21 + p.borders.length + p.nearSwitches.length);
+    const ts = rows.map((r) => Number(r[0]));
+    expect([...ts].sort((a, b) => a - b)).toEqual(ts);
+    expect(rows.filter((r) => r[3].includes('cell border')).length).toBe(p.borders.length);
+    const steps = nearestEvents(p);
+    expect(steps.map((e) => e.x)).toEqual(p.nearSwitches);
+    expect(steps[0].label).toBe(`nearest steps to ${short(p.near[1].value)}`);
+  });
+
+  it('the grid as rows top first, with the node coordinates as headings', () => {
+    const g = examGrid();
+    expect(gridTableColumns(g, EXAM)).toEqual(['v \\ u', 'u 0', 'u 0.25', 'u 0.5', 'u 0.75', 'u 1']);
+    const rows = gridTableRows(g, EXAM);
+    expect(rows[0]).toEqual(['1', '1', '2', '3', '4', '5']);
+    expect(rows[4]).toEqual(['0', '21', '22', '23', '24', '25']);
+    const centres = lookupOptions({ align: 'center', vflip: false, wrap: 'clamp' });
+    expect(gridTableColumns(g, centres)[1]).toBe('u 0.1');
+  });
+
+  it('a reconstruction: its range, the query and (bilinear) the creases', () => {
+    const s = describeReconstruction('bilinear', { min: 1, max: 25 }, 0.4, 0.24, 12);
+    expect(s).toContain('values from 1 to 25');
+    expect(s).toContain('12 creased pieces');
+    expect(s).toContain('(0.40, 0.24)');
+    expect(describeReconstruction('nearest', { min: 0, max: 1 }, 0, 1, 0)).toContain('piecewise constant');
   });
 });

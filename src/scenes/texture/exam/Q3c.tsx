@@ -6,6 +6,7 @@
 import { memo, useCallback, useMemo } from 'react';
 import type { SceneProps } from '../../../kit/scene';
 import {
+  DescribedFigure,
   Derivation,
   ExamPart,
   KeyNote,
@@ -30,6 +31,7 @@ import {
 } from '../model';
 import type { TextureSchema } from '../params';
 import { fmtShort } from '../view/GridView';
+import { describeSphere } from '../view/describe';
 import { SphereView } from '../view/SphereView';
 import { SphereBilinear, WideMath, aligned, sphereTex } from '../view/WorkedSteps';
 import { keyNote, texPlain } from './shared';
@@ -117,7 +119,16 @@ export const Q3c = memo(function Q3c({ params, setParams, sphere, src, present, 
           </button>
         </div>
         <div className="tx-sphere-fig">
-          <SphereView {...shown} normalize={n} dir={dir} onPick={onPick} height={present ? 420 : 320} />
+          <DescribedFigure
+            label="The sphere wearing the texture, with the chosen point"
+            description={
+              `${describeSphere(sphere, params, n)} The seam, where u jumps from just below 1 back to 0, ` +
+              'is the meridian φ = 0 through +x; the pole axis is z.'
+            }
+            testId="sphere-figure"
+          >
+            <SphereView {...shown} normalize={n} dir={dir} onPick={onPick} height={present ? 420 : 320} />
+          </DescribedFigure>
           <p className="tx-small">
             Click the sphere to pick a point, or use the angle sliders or the x, y, z fields.
           </p>

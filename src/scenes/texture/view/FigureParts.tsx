@@ -1,8 +1,9 @@
 /** The smaller pieces of the scene's figure: the exam's grid, the legend, the path's and cells' fields. */
 import { memo } from 'react';
 import type { SceneProps } from '../../../kit/scene';
-import { examGrid, gridToRows, texel } from '../../../core/texture';
-import { Notice, NumberField, Select, Toggle, useStillT } from '../../../ui';
+import { examGrid, gridToRows, texel, type LookupOptions, type TextureGrid } from '../../../core/texture';
+import { Notice, NumberField, Select, ShowAsTable, Toggle, useStillT } from '../../../ui';
+import { gridTableColumns, gridTableRows } from './describe';
 import type { TextureSchema } from '../params';
 import { colorCss } from '../colormap';
 import type { AnimContext } from './anim';
@@ -41,6 +42,25 @@ export const ExamGridTable = memo(function ExamGridTable() {
         </tr>
       </tbody>
     </table>
+  );
+});
+
+/** The texture's values as a table (the data the grid figure colours), rendered when opened. */
+export const GridValues = memo(function GridValues({
+  grid,
+  opts,
+}: {
+  grid: TextureGrid;
+  opts: LookupOptions;
+}) {
+  return (
+    <ShowAsTable
+      caption={`The texture’s ${grid.width} × ${grid.height} values, top row (largest v) first`}
+      columns={gridTableColumns(grid, opts)}
+      rows={gridTableRows(grid, opts)}
+      summary="Show the texture as a table"
+      testId="grid-table"
+    />
   );
 });
 

@@ -4,8 +4,15 @@
  * Coordinates are written with at least two decimals ("u 0.40"), values as the figure's labels
  * (four significant digits).
  */
-import type { LookupOptions, TextureGrid } from '../../../core/texture';
-import type { Frame, Lookup, PathProfile, QueryPath, SphereModel } from '../model';
+import { nodeCoord, type LookupOptions, type TextureGrid } from '../../../core/texture';
+import {
+  frameAt,
+  type Frame,
+  type Lookup,
+  type PathProfile,
+  type QueryPath,
+  type SphereModel,
+} from '../model';
 import type { Preset } from '../params';
 
 /** Up to four significant digits (as the figure's labels). */
@@ -164,4 +171,92 @@ export function describePathStructure(profile: PathProfile): string {
 /** Where the marker is on the plot: "Now at t = 0.30: nearest 17, bilinear 15.32." */
 export function describePathNow(t: number, near: number, bil: number): string {
   return `Now at t = ${coord(t)}: nearest ${short(near)}, bilinear ${short(bil)}.`;
+}
+
+/** Nearest and bilinear at n + 1 evenly spaced positions on the path (what the audio traces play). */
+export function pathSamples(
+  grid: TextureGrid,
+  opts: LookupOptions,
+  path: QueryPath,
+  n = 40,
+): { ts: number[]; near: number[]; bil: number[] } {
+  const ts: number[] = [];
+  const near: number[] = [];
+  const bil: number[] = [];
+  for (let k = 0; k <= n; k++) {
+    const f = frameAt(grid, opts, path, k / n);
+    ts.push(f.t);
+    near.push(f.lookup.near.value);
+    bil.push(f.lookup.bil.value);
+  }
+  return { ts, near, bil };
+}
+
+/** Where nearest's value steps, as events of its trace. */
+export function nearestEvents(profile: PathProfile): PathEvent[] {
+  return profile.nearSwitches.map((t, k) => ({
+    x: t,
+    kind: 'kink',
+    label: `nearest steps to ${short(profile.near[k + 1]?.value ?? NaN)}`,
+  }));
+}
+
+/**
+ * The plot's data as table rows: t, nearest, bilinear and what happens there, at the samples and
+ * at every cell border and nearest step (in order of t).
+ */
+export function pathTableRows(
+  grid: TextureGrid,
+  opts: LookupOptions,
+  path: QueryPath,
+  profile: PathProfile,
+  n = 20,
+): string[][] {
+  const marks = new Map<number, string[]>();
+  const mark = (t: number, what: string) => marks.set(t, [...(marks.get(t) ?? []), what]);
+  for (let k = 0; k <= n; k++) marks.set(k / n, marks.get(k / n) ?? []);
+  for (const e of pathEvents(profile)) mark(e.x, e.label);
+  for (const e of nearestEvents(profile)) mark(e.x, e.label);
+  return [...marks.keys()]
+    .sort((a, b) => a - b)
+    .map((t) => {
+      const l = frameAt(grid, opts, path, t).lookup;
+      return [short(t), short(l.near.value), short(l.bil.value), marks.get(t)!.join('; ')];
+    });
+}
+
+/** A reconstruction image in words: its filter, its value range, the query's cross and the creases. */
+export function describeReconstruction(
+  filter: 'nearest' | 'bilinear',
+  range: { min: number; max: number },
+  qu: number,
+  qv: number,
+  creased: number,
+): string {
+  return (
+    `The texture reconstructed with ${filter} filtering over [0, 1]², values from ${short(range.min)} to ${short(range.max)}` +
+    (filter === 'nearest'
+      ? ', piecewise constant'
+      : `, continuous, with ${plural(creased, 'creased piece')} of node line dashed`) +
+    `; the cross marks the query at ${pair(qu, qv)}.`
+  );
+}
+
+/** The grid's values as table rows, top row (largest v) first: [v, values…]. */
+export function gridTableRows(grid: TextureGrid, opts: LookupOptions): string[][] {
+  const rows: string[][] = [];
+  for (let j = grid.height - 1; j >= 0; j--) {
+    const row = [short(nodeCoord(j, grid.height, opts.align))];
+    for (let i = 0; i < grid.width; i++) row.push(short(grid.values[j * grid.width + i]));
+    rows.push(row);
+  }
+  return rows;
+}
+
+/** The column headings of {@link gridTableRows}: "v \ u", then each column's u. */
+export function gridTableColumns(grid: TextureGrid, opts: LookupOptions): string[] {
+  return [
+    'v \\ u',
+    ...Array.from({ length: grid.width }, (_, i) => `u ${short(nodeCoord(i, grid.width, opts.align))}`),
+  ];
 }
