@@ -5,7 +5,17 @@ import { qrPath } from '../ui/qr';
  * "QR code" beside Copy link: shows the current link as a QR code (large in classroom mode), so
  * students in the room open the lecturer's exact configuration on their phones.
  */
-export function QrButton({ link, present }: { link: string; present: boolean }) {
+export function QrButton({
+  link,
+  present,
+  classroomLink = false,
+}: {
+  link: string;
+  /** Classroom mode is on here: the code is drawn large. */
+  present: boolean;
+  /** The link keeps classroom mode (the lecturer asked for it); otherwise it is the students' view. */
+  classroomLink?: boolean;
+}) {
   const [open, setOpen] = useState(false);
   const [state, setState] = useState<{ text: string; path: string; size: number } | { error: string } | null>(
     null,
@@ -80,7 +90,12 @@ export function QrButton({ link, present }: { link: string; present: boolean }) 
           )}
           <p className="qr-caption">
             Scan to open this scene as configured here
-            {present ? '' : ' (larger in classroom mode, present=1)'}.
+            {classroomLink
+              ? ', in classroom mode'
+              : present
+                ? ' (the students’ view, without classroom mode)'
+                : ' (larger in classroom mode, present=1)'}
+            .
           </p>
           <button
             type="button"

@@ -72,6 +72,7 @@ export interface ParsedParams<S extends ParamSchema> {
 export const SHELL_PARAMS = [
   'embed',
   'present',
+  'ask',
   'theme',
   'part',
   'origin',

@@ -87,6 +87,7 @@ export function TimelineTransport({
       <div className="timeline-buttons">
         <button
           type="button"
+          className="timeline-play"
           onClick={tl.toggle}
           aria-pressed={tl.playing}
           data-testid={`${testId}-play`}

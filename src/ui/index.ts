@@ -8,6 +8,8 @@ export {
   type ReadoutProps,
 } from './Readout';
 export { NumberField, Slider, Select, Toggle, ExprField, Panel, Notice, SceneLayout } from './controls';
+export { Revealed, type RevealedProps } from './ask';
+export { usePresent, isPresent } from './pageKeys';
 export { MathTex, loadKatex, preloadMath } from './MathTex';
 export { runChunked, nextTask } from './chunked';
 export { Plot, loadPlotly, type PlotTrace, type PlotLayout } from './Plot';
@@ -44,16 +46,8 @@ export {
   type AnimationDriverProps,
   type AnimationStore,
 } from './animation';
-export {
-  ExamQuestion,
-  ExamPart,
-  Derivation,
-  LiveAnswer,
-  KeyNote,
-  ExploreFurther,
-  QuestionNav,
-  questionHref,
-} from './exam';
+export { ExamQuestion, ExamPart, Derivation, LiveAnswer, KeyNote, ExploreFurther } from './exam';
+export { QuestionNav, questionHref } from './QuestionNav';
 export { Deferred, useSectionWidth } from './Deferred';
 export { useCompiled, type Compiled, type CompileOutcome } from './useCompiled';
 export { announce, onAnnounce, recentAnnouncements, ANNOUNCE_GAP_MS, type Announcement } from './announce';

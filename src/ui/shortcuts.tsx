@@ -31,7 +31,7 @@ export const SHORTCUTS: readonly { key: string; label: string; action: keyof Sho
   { key: '?', label: 'show this list', action: 'help' },
 ];
 
-/** Keys typed into a field belong to the field, not to a shortcut. */
+/** Whether a key event's target takes text (page-wide single-letter keys must then stay out). */
 export function isTyping(target: EventTarget | null): boolean {
   if (!(target instanceof HTMLElement)) return false;
   const tag = target.tagName;
