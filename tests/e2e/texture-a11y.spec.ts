@@ -221,3 +221,74 @@ test.describe('by keyboard alone', () => {
     await waitForDescription(cdp, MAIN, (x) => x.includes('Editing cells: node (2, 1) chosen, value 118.'));
   });
 });
+
+test.describe('ask first, and the stage for the room', () => {
+  test('ask=1: the steps, answers, stencil, plot and animation are hidden until Reveal', async ({ page }) => {
+    await openScene(page, '#/texture?ask=1&t=0.5');
+    await expect(page.getByTestId('ask-prompt')).toBeVisible();
+    for (const id of ['nearest', 'bilinear', 'sphere-u', 'derivation-3a', 'derivation-3b', 'derivation-3c'])
+      await expect(page.getByTestId(id), id).toHaveCount(0);
+    for (const id of ['stencil', 'path-plot', 'timeline', 'query-now', 'phi-slider'])
+      await expect(page.getByTestId(id), id).toHaveCount(0);
+    await expect(page.getByTestId('ask-hidden-3b')).toContainText('Hidden until you reveal');
+    const cdp = await page.context().newCDPSession(page);
+    const d = (await axNamed(cdp, MAIN))!.description;
+    expect(d).toContain('The query point at u 0.40, v 0.24; the values looked up there are hidden');
+    expect(d).not.toMatch(/bilinear|nearest|45°/);
+    // the query is at the start of its path (t = 0), not at the link's t
+    expect(d).toContain('at the start of its path');
+
+    await page.getByTestId('reveal').click();
+    await expect(page.getByTestId('ask-prompt')).toHaveCount(0);
+    await waitForReadout(page, 'bilinear', (x) => Number.isFinite(Number(x)));
+    await expect(page.getByTestId('derivation-3b')).toBeVisible();
+    await expect(page.getByTestId('stencil')).toHaveCount(1);
+    await expect(page.getByTestId('timeline')).toBeVisible();
+    const t = await timelineT(page);
+    const f = frameAt(examGrid(), EXAM, DEFAULT_PATH, t);
+    await waitForReadout(page, 'bilinear', (x) => Math.abs(Number(x) - f.lookup.bil.value) < 1e-12);
+    await waitForDescription(cdp, MAIN, (x) => x.includes(`bilinear ${short(f.lookup.bil.value)} from`));
+  });
+
+  for (const [w, h] of [
+    [1280, 720],
+    [1920, 1080],
+  ] as const) {
+    for (const ask of [false, true]) {
+      test(`present=1${ask ? '&ask=1' : ''} at ${w}×${h}: the stage (grid, readouts, transport) is wholly on the first screen`, async ({
+        page,
+      }) => {
+        await page.setViewportSize({ width: w, height: h });
+        await openScene(page, `#/texture?present=1${ask ? '&ask=1' : ''}`);
+        const stage = page.getByTestId('scene-stage');
+        const box = (await stage.boundingBox())!;
+        expect(box.y).toBeGreaterThanOrEqual(0);
+        expect(box.y + box.height).toBeLessThanOrEqual(h);
+        // nothing of the stage spills out of it
+        const [sh, ch] = await stage.evaluate((el) => [el.scrollHeight, el.clientHeight]);
+        expect(sh).toBeLessThanOrEqual(ch + 1);
+        const inside = async (testId: string) => {
+          const b = (await page.getByTestId(testId).boundingBox())!;
+          expect(b.y, testId).toBeGreaterThanOrEqual(box.y - 1);
+          expect(b.y + b.height, testId).toBeLessThanOrEqual(Math.min(h, box.y + box.height) + 1);
+          return b;
+        };
+        const grid = await inside('texel-grid');
+        expect(grid.height).toBeGreaterThan(ask ? 250 : 380);
+        if (ask) await inside('ask-hidden-transport');
+        else {
+          await inside('timeline');
+          await inside('query-now');
+          // the key readouts in classroom type
+          const px = await page
+            .getByTestId('query-now')
+            .evaluate((el) => parseFloat(getComputedStyle(el).fontSize));
+          expect(px).toBeGreaterThanOrEqual(18);
+        }
+        // the stage is the described main figure
+        const cdp = await page.context().newCDPSession(page);
+        expect((await axNamed(cdp, MAIN))?.description).toContain('u 0.40, v 0.24');
+      });
+    }
+  }
+});

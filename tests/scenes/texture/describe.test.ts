@@ -119,6 +119,21 @@ describe('the main figure', () => {
   });
 });
 
+describe('ask first: the setup without the results', () => {
+  it('says where the query and the sphere point are, and no value looked up', () => {
+    const st = state(0);
+    const s = describeTexture({
+      ...st,
+      ask: true,
+      sphere: describeSphere(sphereModel(examGrid(), EXAM_POINT, EXAM), EXAM_POINT, true, true),
+    });
+    expect(s).toContain('The query point at u 0.40, v 0.24; the values looked up there are hidden');
+    expect(s).toContain('The sphere point (1, 1, 1.414); its angles and texture coordinates are hidden');
+    expect(s).not.toMatch(/bilinear|nearest|45°|0\.125/);
+    expect(describeTexture(st)).toMatch(/bilinear/);
+  });
+});
+
 describe('the sphere point', () => {
   it('normalized, not normalized, at a pole, and without a direction', () => {
     const g = examGrid();

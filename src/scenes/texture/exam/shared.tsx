@@ -10,6 +10,8 @@ import {
   ExamPart,
   KeyNote,
   LiveAnswer,
+  Revealed,
+  TEXT_HZ,
   preloadMath,
   useAnimFrame,
   usePlaying,
@@ -27,21 +29,22 @@ export interface Shown {
 
 /**
  * The position a part shows: its worked steps, its answer and its notes all render at this one
- * frame, so the derivation and the answer under it never disagree. Paused (or stepped, scrubbed,
- * dragged, edited) it is the exact position, at once (the steps' formula shows as plain text until
- * it is typeset: ./view/WorkedSteps' `exact` math). Playing, it follows the moving query at most
- * TEXT_HZ times a second, and a new position is shown only once its formula (`texOf`) is typeset,
- * so the formula and the numbers beside it change in one render; one typeset is in flight at a
- * time, and the latest position waits for it.
+ * frame, so the derivation and the answer under it never disagree. Paused (stepped, scrubbed,
+ * edited) it is the exact position, at once (the steps' formula shows as plain text until it is
+ * typeset: ./view/WorkedSteps' `exact` math). While it plays or a handle is dragged it follows the
+ * moving query at most TEXT_HZ times a second, and a new position is shown only once its formula
+ * (`texOf`) is typeset, so the formula and the numbers beside it change in one render; one typeset
+ * is in flight at a time, and the latest position waits for it.
  */
 export function useShownFrame(ctx: AnimContext, texOf: (s: Shown) => string): Shown {
   const tStill = useStillT(ctx.store);
   const playing = usePlaying(ctx.store);
+  const moves = playing || ctx.dragging;
   const exact = useMemo<Shown>(() => ({ ctx, frame: ctx.frame(tStill).frame }), [ctx, tStill]);
   const [moving, setMoving] = useState<Shown | null>(null);
   useEffect(() => {
-    if (!playing) setMoving(null);
-  }, [playing]);
+    if (!moves) setMoving(null);
+  }, [moves]);
   const alive = useRef(true);
   useEffect(() => {
     alive.current = true;
@@ -49,23 +52,29 @@ export function useShownFrame(ctx: AnimContext, texOf: (s: Shown) => string): Sh
       alive.current = false;
     };
   }, []);
-  const req = useRef<{ ctx: AnimContext | null; t: number; busy: boolean; next: Shown | null }>({
-    ctx: null,
+  const req = useRef({
+    ctx: null as AnimContext | null,
     t: NaN,
+    at: -Infinity,
     busy: false,
-    next: null,
+    next: null as Shown | null,
   });
+  const latest = useRef(ctx);
+  latest.current = ctx;
+  const movingNow = () => latest.current.dragging || latest.current.store.livePlaying();
   useAnimFrame(ctx.store, (t, text) => {
     const r = req.current;
-    const store = ctx.store;
-    if (!text || !store.livePlaying() || (r.ctx === ctx && r.t === t)) return;
+    const now = performance.now();
+    if (!text || !movingNow()) return;
+    if ((r.ctx === ctx && r.t === t) || now - r.at < 1000 / TEXT_HZ - 1) return;
     r.ctx = ctx;
     r.t = t;
+    r.at = now;
     const run = (w: Shown) => {
       r.busy = true;
       void preloadMath(texOf(w), true).then(() => {
-        // a typeset that ends after the pause is not shown: paused, the exact position is
-        if (alive.current && w.ctx.store.livePlaying()) setMoving(w);
+        // a typeset that ends after the pause (or the drop) is not shown: the exact position is
+        if (alive.current && movingNow()) setMoving(w);
         r.busy = false;
         const n = r.next;
         r.next = null;
@@ -76,7 +85,7 @@ export function useShownFrame(ctx: AnimContext, texOf: (s: Shown) => string): Sh
     if (r.busy) r.next = want;
     else run(want);
   });
-  return playing && moving ? moving : exact;
+  return moves && moving ? moving : exact;
 }
 
 /** Whether the shown position is the exam's own query (grid, conventions and point). */
@@ -121,6 +130,8 @@ export interface QueryPartProps {
   ctx: AnimContext;
   /** Puts the exam's grid, query and conventions back. */
   toExam: () => void;
+  /** Ask first: the steps, the answer and the key's note are hidden until revealed. */
+  ask: boolean;
 }
 
 /** What each block of a part gets: the shown position, and whether the animation plays. */
@@ -137,21 +148,23 @@ export function queryPart(
   texOf: (s: Shown) => string,
   [Worked, Answer, Note]: readonly [PartBody, PartBody, PartBody],
 ) {
-  return function QueryPart({ ctx, toExam }: QueryPartProps) {
+  return function QueryPart({ ctx, toExam, ask }: QueryPartProps) {
     const shown = useShownFrame(ctx, texOf);
     const playing = usePlaying(ctx.store);
     return (
       <ExamPart id={id} title={title} asks={asks}>
         <NotExam shown={shown} toExam={toExam} />
-        <Derivation testId={`derivation-${id}`}>
-          <Worked shown={shown} playing={playing} />
-        </Derivation>
-        <LiveAnswer testId={`answer-${id}`}>
-          <Answer shown={shown} playing={playing} />
-        </LiveAnswer>
-        <KeyNote testId={`keynote-${id}`}>
-          <Note shown={shown} playing={playing} />
-        </KeyNote>
+        <Revealed ask={ask} what="the steps and the answer" minHeight="6rem" testId={`ask-hidden-${id}`}>
+          <Derivation testId={`derivation-${id}`}>
+            <Worked shown={shown} playing={playing} />
+          </Derivation>
+          <LiveAnswer testId={`answer-${id}`}>
+            <Answer shown={shown} playing={playing} />
+          </LiveAnswer>
+          <KeyNote testId={`keynote-${id}`}>
+            <Note shown={shown} playing={playing} />
+          </KeyNote>
+        </Revealed>
       </ExamPart>
     );
   };

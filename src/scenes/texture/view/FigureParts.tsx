@@ -12,6 +12,20 @@ import { fmtShort } from './GridView';
 type Params = SceneProps<TextureSchema>['params'];
 type SetParams = SceneProps<TextureSchema>['setParams'];
 
+/** What the exam gives: its text and its grid. */
+export function ExamGives() {
+  return (
+    <div className="exam-asks tx-gives">
+      <span className="exam-asks-label">The exam gives</span>
+      <p>
+        A 5 × 5 texture with values at the nodes (u, v) = (i/4, j/4), v upward. (a), (b): look it up at (u, v)
+        = (0.4, 0.24); (c): at a point on a sphere.
+      </p>
+      <ExamGridTable />
+    </div>
+  );
+}
+
 /** The exam's grid as the exam prints it (v = 1 on top). */
 export const ExamGridTable = memo(function ExamGridTable() {
   const rows = gridToRows(examGrid());

@@ -38,6 +38,8 @@ export interface AnimContext {
   src: GridSource;
   /** The drawn path (follows a drag). */
   path: QueryPath;
+  /** A handle is being dragged (the path follows the pointer, not yet the URL). */
+  dragging: boolean;
   /** The query at position t of `path`, and its drawn (addressed) lookup; cached for the last t. */
   frame: (t: number) => { frame: Frame; dq: Lookup };
 }
@@ -48,6 +50,7 @@ export function animContext(
   opts: LookupOptions,
   src: GridSource,
   path: QueryPath,
+  dragging = false,
 ): AnimContext {
   return {
     store,
@@ -55,6 +58,7 @@ export function animContext(
     opts,
     src,
     path,
+    dragging,
     frame: lastValue((t) => {
       const frame = frameAt(grid, opts, path, t);
       return { frame, dq: drawnLookup(grid, frame.u, frame.v, opts) };

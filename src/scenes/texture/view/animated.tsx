@@ -190,7 +190,7 @@ export function AnimSide({ ctx }: { ctx: AnimContext }) {
         <span />: (u, v) = (<span />, <span />) → nearest <strong />, bilinear <strong />
       </p>
       <StencilDetail q={dq} drawRef={stencil} />
-      <p className="tx-small">
+      <p className="tx-small tx-stencil-key">
         <span className="tx-key nearest" /> nearest node · <span className="tx-key cell" /> the bilinear cell:
         each of its four nodes is weighted by the area of the sub-rectangle opposite to it (same colour).
       </p>
@@ -219,6 +219,7 @@ export function DescribedMain({
   point,
   normalize,
   editing,
+  ask,
   children,
 }: {
   ctx: AnimContext;
@@ -228,6 +229,8 @@ export function DescribedMain({
   normalize: boolean;
   /** The node being edited (null when not editing or none chosen). */
   editing: { i: number; j: number } | null;
+  /** Ask first: the setup only (see describeTexture). */
+  ask: boolean;
   children: ReactNode;
 }) {
   const t = useStillT(ctx.store);
@@ -246,9 +249,10 @@ export function DescribedMain({
           editing && editing.i < grid.width && editing.j < grid.height
             ? { ...editing, value: texel(grid, editing.i, editing.j) }
             : null,
-        sphere: describeSphere(sphere, point, normalize),
+        sphere: describeSphere(sphere, point, normalize, ask),
+        ask,
       }),
-    [grid, preset, src.isExam, opts, frame, path, editing, sphere, point, normalize],
+    [grid, preset, src.isExam, opts, frame, path, editing, sphere, point, normalize, ask],
   );
   return (
     <DescribedFigure

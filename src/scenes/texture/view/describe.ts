@@ -84,8 +84,10 @@ export function describeSphere(
   sphere: SphereModel,
   p: { x: number; y: number; z: number },
   normalize: boolean,
+  ask = false,
 ): string {
   const at = `(${short(p.x)}, ${short(p.y)}, ${short(p.z)})`;
+  if (ask) return `The sphere point ${at}; its angles and texture coordinates are hidden until you reveal.`;
   if (!sphere.ok) return `The sphere point ${at} gives no texture coordinates: ${sphere.message}`;
   const deg = (a: number) => `${short((a * 180) / Math.PI)}°`;
   const angles = `azimuth φ ${deg(sphere.phi)}, polar angle θ ${deg(sphere.theta)}${sphere.pole ? ' (a pole: φ taken as 0)' : ''}`;
@@ -108,6 +110,8 @@ export interface TextureFigureState {
   editing: { i: number; j: number; value: number } | null;
   /** The sphere part's sentence (from {@link describeSphere}). */
   sphere: string;
+  /** Ask first (`ask=1`, not yet revealed): the setup only, no looked-up value. */
+  ask?: boolean;
 }
 
 /**
@@ -118,6 +122,13 @@ export interface TextureFigureState {
  */
 export function describeTexture(s: TextureFigureState): string {
   const name = s.name.charAt(0).toUpperCase() + s.name.slice(1);
+  if (s.ask)
+    return [
+      `${name}, ${conventions(s.opts)}.`,
+      `The query point at u ${coord(s.frame.u)}, v ${coord(s.frame.v)}; the values looked up there are hidden until you reveal.`,
+      describePath(s.path, s.frame.t),
+      s.sphere,
+    ].join(' ');
   const parts = [
     `${name}, ${conventions(s.opts)}.`,
     describeLookup(s.frame.lookup, s.frame.u, s.frame.v),
