@@ -34,6 +34,9 @@ const PracticeRoute = lazy(() =>
 // The teacher's guide (#/guide) is its own lazy chunk.
 const Guide = lazy(() => importOrReload(() => import('../guide/Guide')));
 
+// The accessibility statement and its worked example (#/accessibility): its own lazy chunk.
+const AccessibilityPage = lazy(() => importOrReload(() => import('./AccessibilityPage')));
+
 // The class results page (#/results) is its own lazy chunk.
 const ResultsRoute = lazy(() => import('../results/ResultsRoute'));
 
@@ -83,6 +86,12 @@ export function App() {
         <Guide flags={flags} query={route.query} />
       </LazyRoute>
     );
+  else if (route.path === '/accessibility')
+    body = (
+      <LazyRoute key="accessibility" loading="Loading the accessibility statement…">
+        <AccessibilityPage flags={flags} query={route.query} />
+      </LazyRoute>
+    );
   else if (route.path === '/results')
     body = (
       <LazyRoute key="results" loading="Loading the class results page…">
@@ -121,7 +130,8 @@ export function App() {
           <p>
             Render Math Lab — every figure is computed live in your browser, and nothing is fetched from
             anywhere but this site, so a copy of the build works offline.
-            {flags.present ? ' Classroom mode: press ? for shortcuts.' : ''}
+            {flags.present ? ' Classroom mode: press ? for shortcuts.' : ''}{' '}
+            <a href="#/accessibility">Accessibility</a>
           </p>
         </footer>
       )}

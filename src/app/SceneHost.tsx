@@ -405,7 +405,7 @@ function ShareBar({
             checked={keep}
             onChange={(e) => setKeep(e.target.checked)}
           />{' '}
-          Keep classroom mode in the link
+          Keep classroom mode
         </label>
       ) : null}
       <span role="status" className="share-status">

@@ -136,10 +136,9 @@ export default function Guide({ flags, query = '' }: { flags: ShellFlags; query?
           The <strong>QR code</strong> button beside Copy link shows the current configuration as a large code
           that students scan to get the same scene on their phones. Copy link and the QR code give the
           students’ link, without classroom mode and with nothing hidden; check{' '}
-          <strong>Keep classroom mode in the link</strong> to share your own view instead. On phones and
-          tablets a 3D view starts when the student taps <strong>Show the 3D view</strong> (it is the heaviest
-          part of a page on a phone, and until then swipes over it scroll the page); every number and plot
-          works without it.
+          <strong>Keep classroom mode</strong> to share your own view instead. On phones and tablets a 3D view
+          starts when the student taps <strong>Show the 3D view</strong> (it is the heaviest part of a page on
+          a phone, and until then swipes over it scroll the page); every number and plot works without it.
         </p>
         <h3>Print</h3>
         <p>

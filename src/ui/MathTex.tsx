@@ -2,7 +2,8 @@ import { useEffect, useMemo, useRef, useState } from 'react';
 import { KATEX_OPTIONS } from './katexOptions';
 import { flushMathForPrint, insertTypeset, scheduleMath } from './mathQueue';
 import { afterPaint } from './afterPaint';
-import { texPreview } from './texPreview';
+import { previewLabel, texPreview } from './texPreview';
+import { keepParenthesesTogether } from './texBreaks';
 import type { TypesetReply, TypesetRequest } from './katex.worker';
 
 type Katex = typeof import('katex');
@@ -80,10 +81,14 @@ function typeset(tex: string, display: boolean): Promise<string | null> {
   return mathStarted().then(() => typesetNow(tex, display));
 }
 
-function typesetNow(tex: string, display: boolean): Promise<string | null> {
+function typesetNow(source: string, display: boolean): Promise<string | null> {
+  // a long formula wraps only at operators outside parentheses (./texBreaks)
+  const tex = keepParenthesesTogether(source);
   const w = katexWorker();
   const onMain = () =>
-    loadKatex().then((k) => k.renderToString(tex, { ...KATEX_OPTIONS, displayMode: display }));
+    Promise.all([loadKatex(), import('./mathmlSpeech')]).then(([k, m]) =>
+      m.speakableMathml(k.renderToString(tex, { ...KATEX_OPTIONS, displayMode: display })),
+    );
   if (!w) return onMain();
   return new Promise<string | null>((resolve, reject) => {
     const id = nextId++;
@@ -180,7 +185,9 @@ export function MathTex({
   if (html === undefined) {
     return (
       <Tag ref={ref as React.RefObject<HTMLDivElement>} className={`${cls} math-pending`}>
-        <span className="math-preview">{preview}</span>
+        <span className="math-preview" role="math" aria-label={previewLabel(preview)}>
+          {preview}
+        </span>
       </Tag>
     );
   }

@@ -1,5 +1,8 @@
 import { useEffect, useId, useMemo, useRef, useState } from 'react';
 import { touchOnly, useSeenOnce } from './useInView';
+import { resolveTraceColors } from './palette';
+import { isPresent } from './pageKeys';
+import './plot.css';
 
 type PlotlyModule = (typeof import('plotly.js-cartesian-dist-min'))['default'];
 let plotlyPromise: Promise<PlotlyModule> | null = null;
@@ -107,6 +110,24 @@ function themeColors() {
   };
 }
 
+/** Classroom mode: the smallest tick label size (px), readable from the back of a lecture hall. */
+export const PRESENT_TICK_PX = 18;
+
+/**
+ * Raises every axis's tick labels to {@link PRESENT_TICK_PX} (a layout's own larger size stays). A
+ * log axis labels the digits between its decades ("2", "5") at 3/4 of its tick size, so its tick
+ * size is 4/3 of that.
+ */
+function presentTicks(layout: PlotLayout): void {
+  for (const [k, v] of Object.entries(layout)) {
+    if (!/^[xy]axis\d*$/.test(k) || !v || typeof v !== 'object') continue;
+    const ax = v as { tickfont?: { size?: unknown }; type?: unknown };
+    const size = typeof ax.tickfont?.size === 'number' ? ax.tickfont.size : 0;
+    const least = ax.type === 'log' ? Math.ceil((PRESENT_TICK_PX * 4) / 3) : PRESENT_TICK_PX;
+    layout[k] = { ...v, tickfont: { ...ax.tickfont, size: Math.max(size, least) } };
+  }
+}
+
 /**
  * A lazy Plotly plot: plotly.js loads only when the plot scrolls near the viewport; updates go
  * through Plotly.react in an effect (cheap diffing); the plot is purged on unmount.
@@ -168,8 +189,9 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
     for (const k of ['xaxis', 'yaxis', 'xaxis2', 'yaxis2']) {
       if (layout && layout[k]) merged[k] = { ...axis, ...(layout[k] as object) };
     }
+    if (isPresent()) presentTicks(merged);
     pending.current = plotly
-      .react(el.current, clean.data, merged, {
+      .react(el.current, resolveTraceColors(clean.data), resolveTraceColors(merged), {
         ...PLOT_CONFIG,
         // on touch screens the mode bar would sit over titles and legends with no hover to hide it
         displayModeBar: touchOnly() ? false : 'hover',

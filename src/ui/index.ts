@@ -10,6 +10,7 @@ export {
 export { NumberField, Slider, Select, Toggle, ExprField, Panel, Notice, SceneLayout } from './controls';
 export { Revealed, type RevealedProps } from './ask';
 export { usePresent, isPresent } from './pageKeys';
+export { keepTextParenthesesTogether } from './texBreaks';
 export { MathTex, loadKatex } from './MathTex';
 export { runChunked, nextTask } from './chunked';
 export { Plot, loadPlotly, type PlotTrace, type PlotLayout } from './Plot';
@@ -55,3 +56,4 @@ export { DescribedFigure, DESCRIBE_SETTLE_MS, type DescribedFigureProps } from '
 export { summarizeSeries, superscriptExponent, type SummaryOptions } from './summary';
 export { ShowAsTable, type ShowAsTableProps } from './DataTable';
 export { AudioTrace, type AudioTraceProps, type TraceEvent, type TraceEventKind } from './audioTrace';
+export { SERIES, STRATEGY_COLOR, resolveColor } from './palette';

@@ -111,17 +111,24 @@ export function Stage({ children, staged, controls }: StageProps) {
  */
 function DrawerToggle({ children }: { children: ReactNode }) {
   const id = useId();
-  const [open, setOpen] = useState(false);
+  const [open, setOpenState] = useState(false);
+  const openRef = useRef(open);
+  openRef.current = open;
   const btn = useRef<HTMLButtonElement>(null);
   const drawer = useRef<HTMLDivElement>(null);
-  const wasOpen = useRef(false);
+  // closing with focus inside the drawer gives it back to the button (read before the drawer hides,
+  // which drops focus to the page)
+  const restore = useRef(false);
+  const setOpen = useCallback((next: boolean) => {
+    if (!next && openRef.current) restore.current = !!drawer.current?.contains(document.activeElement);
+    setOpenState(next);
+  }, []);
   useEffect(() => {
     if (open) drawer.current?.focus({ preventScroll: true });
-    else if (wasOpen.current && drawer.current?.contains(document.activeElement))
-      btn.current?.focus({ preventScroll: true });
-    wasOpen.current = open;
+    else if (restore.current) btn.current?.focus({ preventScroll: true });
+    restore.current = false;
   }, [open]);
-  usePageKey('c', () => setOpen((o) => !o));
+  usePageKey('c', () => setOpen(!openRef.current));
   useEffect(() => {
     if (!open) return;
     const on = (e: KeyboardEvent) => {
@@ -132,7 +139,7 @@ function DrawerToggle({ children }: { children: ReactNode }) {
     };
     window.addEventListener('keydown', on);
     return () => window.removeEventListener('keydown', on);
-  }, [open]);
+  }, [open, setOpen]);
   return (
     <>
       <button
@@ -144,7 +151,7 @@ function DrawerToggle({ children }: { children: ReactNode }) {
         aria-controls={id}
         aria-keyshortcuts="c"
         title="Show or hide the controls (c)"
-        onClick={() => setOpen((o) => !o)}
+        onClick={() => setOpen(!open)}
       >
         Controls <kbd aria-hidden="true">c</kbd>
       </button>

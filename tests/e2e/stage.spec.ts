@@ -302,9 +302,89 @@ test('Play and Pause have the same width: the transport row does not shift', asy
   const play = page.getByTestId('timeline-play').first();
   await play.scrollIntoViewIfNeeded();
   const before = (await play.boundingBox())!.width;
+  // the invisible wider label is neither seen by screen readers nor part of the button's name
+  await expect(play).toHaveAccessibleName('▶ Play');
   await play.click();
   await expect(play).toHaveAttribute('aria-pressed', 'true');
   const during = (await play.boundingBox())!.width;
+  await expect(play).toHaveAccessibleName('❚❚ Pause');
   await play.click();
   expect(Math.abs(during - before)).toBeLessThanOrEqual(0.5);
+});
+
+for (const s of SCENES) {
+  test(`${s.id} on a phone: formulas wrap only at operators outside parentheses`, async ({ page }) => {
+    test.setTimeout(180_000);
+    await page.setViewportSize({ width: 375, height: 800 });
+    await openScene(page, `#${s.path}`);
+    // bring every section on screen once, so its formulas are typeset
+    const height = await page.evaluate(() => document.documentElement.scrollHeight);
+    for (let y = 0; y < height; y += 700) {
+      await page.evaluate((y) => window.scrollTo(0, y), y);
+      await page.waitForTimeout(60);
+    }
+    await expect(page.locator('.math-pending')).toHaveCount(0, { timeout: 60_000 });
+    const inside = await page.evaluate(() => {
+      const out: string[] = [];
+      for (const html of document.querySelectorAll('.katex-html')) {
+        let depth = 0;
+        let prev: DOMRect | null = null;
+        for (const base of html.querySelectorAll(':scope > .base')) {
+          const r = base.getBoundingClientRect();
+          if (prev && depth > 0 && r.top >= prev.bottom - 1)
+            out.push((html.closest('.katex')?.querySelector('annotation')?.textContent ?? '').slice(0, 80));
+          depth +=
+            base.querySelectorAll('.mopen:not(.minner .mopen)').length -
+            base.querySelectorAll('.mclose:not(.minner .mclose)').length;
+          prev = r;
+        }
+      }
+      // formulas written as plain text: a parenthesized group with an operator on two lines
+      const walker = document.createTreeWalker(document.querySelector('main')!, NodeFilter.SHOW_TEXT);
+      for (let n = walker.nextNode(); n; n = walker.nextNode()) {
+        const t = n.nodeValue ?? '';
+        if (n.parentElement?.closest('.katex, .sr-only, .math-preview')) continue;
+        const open: number[] = [];
+        for (let i = 0; i < t.length; i++) {
+          if (t[i] === '(') open.push(i);
+          else if (t[i] === ')' && open.length) {
+            const a = open.pop()!;
+            const inner = t.slice(a, i);
+            // a formula (an operator, no word), not a remark in prose
+            if (open.length || !/\s[=+−×·<>≤≥≈≠∓±/]\s|[²³√∫Σ]/.test(inner) || /\p{L}{4,}/u.test(inner))
+              continue;
+            const range = document.createRange();
+            range.setStart(n, a);
+            range.setEnd(n, i + 1);
+            const lines = new Set(
+              [...range.getClientRects()].filter((r) => r.width > 0).map((r) => Math.round(r.top)),
+            );
+            if (lines.size > 1) out.push(t.slice(Math.max(0, a - 12), i + 1));
+          }
+        }
+      }
+      return out;
+    });
+    expect(inside, `${s.id}: formulas broken inside parentheses`).toEqual([]);
+  });
+}
+
+test('present=1: every Plotly plot’s tick labels are at least 18 px', async ({ page }) => {
+  test.setTimeout(180_000);
+  await page.setViewportSize({ width: 1280, height: 720 });
+  await openScene(page, '#/monte-carlo?present=1');
+  const height = await page.evaluate(() => document.documentElement.scrollHeight);
+  for (let y = 0; y < height; y += 600) {
+    await page.evaluate((y) => window.scrollTo(0, y), y);
+    await page.waitForTimeout(80);
+  }
+  await expect(page.locator('.js-plotly-plot .xtick text').first()).toBeAttached({ timeout: 60_000 });
+  const sizes = await page.locator('.js-plotly-plot :is(.xtick, .ytick) text').evaluateAll((ts) =>
+    ts.map((t) => ({
+      px: parseFloat(getComputedStyle(t).fontSize),
+      what: `${t.closest('figure')?.getAttribute('aria-label')?.slice(0, 40)}: ${t.textContent}`,
+    })),
+  );
+  expect(sizes.length).toBeGreaterThan(0);
+  expect(sizes.filter((s) => s.px < 17.5).map((s) => `${s.what} at ${s.px} px`)).toEqual([]);
 });
