@@ -1,6 +1,8 @@
 import {
   Component,
+  lazy,
   startTransition,
+  Suspense,
   useCallback,
   useEffect,
   useMemo,
@@ -23,12 +25,15 @@ import { dropQueryParam, parseHash, parseShellFlags, shellExtras, type ShellFlag
 import { useShortcuts } from '../ui/shortcuts';
 import { AskPrompt } from '../ui/ask';
 import { usePageKey } from '../ui/pageKeys';
-import { QuestionNav } from '../ui/exam';
-import { useHostScene } from './hostApi';
+import { QuestionNav } from '../ui/QuestionNav';
+import { useHostScene } from './hostBridge';
 import { embedSnippet } from './embedCode';
 import { QrButton } from './QrButton';
 import { markFirstScreen } from './firstScreen';
 import { importOrReload } from './staleBuild';
+
+// The teacher's A11y view (a11y=1): its own chunk, loaded only with the flag.
+const A11yView = lazy(() => import('./A11yView'));
 
 interface Props {
   info: SceneInfo;
@@ -100,6 +105,11 @@ export function SceneHost({ info, query, flags, theme }: Props) {
       tabIndex={-1}
     >
       {header}
+      {flags.a11y ? (
+        <Suspense fallback={null}>
+          <A11yView />
+        </Suspense>
+      ) : null}
       {load.kind === 'loading' ? (
         <p className="loading" role="status">
           Loading the scene…

@@ -76,6 +76,7 @@ export const SHELL_PARAMS = [
   'theme',
   'part',
   'origin',
+  'a11y',
   'fuzz',
   'fuzzn',
   'fuzzseed',

@@ -26,6 +26,8 @@ export interface ShellFlags {
    */
   ask: boolean;
   theme: 'light' | 'dark' | null;
+  /** `a11y=1`: beside the scene, the text a screen reader receives (the teacher's A11y view). */
+  a11y?: boolean;
   /**
    * `part=1c`: the exam sub-question to land on (the scene checks it is one of its parts). Kept in
    * links the scene writes, so a shared link lands on the same part.
@@ -42,7 +44,7 @@ export interface ShellFlags {
 }
 
 /** The shell's own parameters (every page takes them; no scene schema may use these names). */
-export const SHELL_FLAG_NAMES = ['embed', 'present', 'ask', 'theme', 'part', 'origin'] as const;
+export const SHELL_FLAG_NAMES = ['embed', 'present', 'ask', 'theme', 'part', 'origin', 'a11y'] as const;
 
 /** Read the shell's own flags (embed, present, ask, theme, part, origin) from a query string. Never throws. */
 export function parseShellFlags(query: string): ShellFlags {
@@ -61,7 +63,7 @@ export function parseShellFlags(query: string): ShellFlags {
   } catch {
     return flags;
   }
-  const bool = (name: 'embed' | 'present' | 'ask') => {
+  const bool = (name: 'embed' | 'present' | 'ask' | 'a11y') => {
     const v = sp.get(name);
     if (v === null) return;
     if (v === '1' || v === 'true') flags[name] = true;
@@ -71,6 +73,7 @@ export function parseShellFlags(query: string): ShellFlags {
   bool('embed');
   bool('present');
   bool('ask');
+  bool('a11y');
   const t = sp.get('theme');
   if (t !== null) {
     if (t === 'light' || t === 'dark') flags.theme = t;
@@ -150,7 +153,7 @@ function clip(s: string, n: number): string {
 
 /** The shell flags as query entries, for links that must keep the mode. */
 export function shellExtras(
-  flags: Pick<ShellFlags, 'embed' | 'present' | 'theme'> & {
+  flags: Pick<ShellFlags, 'embed' | 'present' | 'theme' | 'a11y'> & {
     ask?: boolean;
     part?: string | null;
     origins?: readonly string[] | null;
@@ -162,6 +165,7 @@ export function shellExtras(
     present: flags.present ? '1' : undefined,
     ask: flags.ask ? '1' : undefined,
     theme: flags.theme ?? undefined,
+    a11y: flags.a11y ? '1' : undefined,
     // an empty list stays `origin=` (nobody), so a rewritten link never drops the restriction
     origin: flags.origins ? flags.origins.join(',') : undefined,
   };

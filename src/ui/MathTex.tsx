@@ -2,7 +2,7 @@ import { useEffect, useMemo, useRef, useState } from 'react';
 import { KATEX_OPTIONS } from './katexOptions';
 import { flushMathForPrint, insertTypeset, scheduleMath } from './mathQueue';
 import { afterPaint } from './afterPaint';
-import { texPreview } from './texPreview';
+import { previewLabel, texPreview } from './texPreview';
 import { keepParenthesesTogether } from './texBreaks';
 import type { TypesetReply, TypesetRequest } from './katex.worker';
 
@@ -86,7 +86,9 @@ function typesetNow(source: string, display: boolean): Promise<string | null> {
   const tex = keepParenthesesTogether(source);
   const w = katexWorker();
   const onMain = () =>
-    loadKatex().then((k) => k.renderToString(tex, { ...KATEX_OPTIONS, displayMode: display }));
+    Promise.all([loadKatex(), import('./mathmlSpeech')]).then(([k, m]) =>
+      m.speakableMathml(k.renderToString(tex, { ...KATEX_OPTIONS, displayMode: display })),
+    );
   if (!w) return onMain();
   return new Promise<string | null>((resolve, reject) => {
     const id = nextId++;
@@ -183,7 +185,9 @@ export function MathTex({
   if (html === undefined) {
     return (
       <Tag ref={ref as React.RefObject<HTMLDivElement>} className={`${cls} math-pending`}>
-        <span className="math-preview">{preview}</span>
+        <span className="math-preview" role="math" aria-label={previewLabel(preview)}>
+          {preview}
+        </span>
       </Tag>
     );
   }

@@ -1,6 +1,7 @@
-import { useEffect, useMemo, useRef, useState } from 'react';
+import { useEffect, useId, useMemo, useRef, useState } from 'react';
 import { touchOnly, useSeenOnce } from './useInView';
 import { isPresent } from './pageKeys';
+import { resolveTraceColors } from './palette';
 
 type PlotlyModule = (typeof import('plotly.js-cartesian-dist-min'))['default'];
 let plotlyPromise: Promise<PlotlyModule> | null = null;
@@ -40,8 +41,15 @@ export interface PlotProps {
   data: PlotTrace[];
   layout?: PlotLayout;
   height?: number;
-  /** What the plot shows, for screen readers (the plot itself is not accessible). */
-  ariaLabel: string;
+  /** The plot's accessible name (older name of `label`; `label` wins when both are given). */
+  ariaLabel?: string;
+  /** The plot's accessible name: what it plots ("|error| against N"). */
+  label?: string;
+  /**
+   * What its data shows, for readers who cannot see it (build it with summarizeSeries): the
+   * plot's aria-describedby text, visually hidden. Plotly's own SVG is not accessible.
+   */
+  description?: string;
   testId?: string;
 }
 
@@ -123,7 +131,8 @@ function presentTicks(layout: PlotLayout): void {
  * A lazy Plotly plot: plotly.js loads only when the plot scrolls near the viewport; updates go
  * through Plotly.react in an effect (cheap diffing); the plot is purged on unmount.
  */
-export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProps) {
+export function Plot({ data, layout, height = 280, ariaLabel, label, description, testId }: PlotProps) {
+  const descId = `${useId()}-description`;
   const box = useRef<HTMLDivElement>(null);
   const el = useRef<HTMLDivElement>(null);
   const seen = useSeenOnce(box);
@@ -181,7 +190,7 @@ export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProp
     }
     if (isPresent()) presentTicks(merged);
     pending.current = plotly
-      .react(el.current, clean.data, merged, {
+      .react(el.current, resolveTraceColors(clean.data), resolveTraceColors(merged), {
         ...PLOT_CONFIG,
         // on touch screens the mode bar would sit over titles and legends with no hover to hide it
         displayModeBar: touchOnly() ? false : 'hover',
@@ -208,9 +217,16 @@ export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProp
       className="plot"
       ref={box}
       style={{ minHeight: height }}
-      aria-label={ariaLabel}
+      role="group"
+      aria-label={label ?? ariaLabel}
+      aria-describedby={description ? descId : undefined}
       data-testid={testId}
     >
+      {description ? (
+        <p id={descId} className="sr-only" data-testid={testId ? `${testId}-description` : undefined}>
+          {description}
+        </p>
+      ) : null}
       {failed ? <p className="plot-placeholder">The plot could not be drawn.</p> : null}
       {!plotly && !failed ? <p className="plot-placeholder">Loading plot…</p> : null}
       <div ref={el} className="plot-canvas" />

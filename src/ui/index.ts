@@ -47,15 +47,13 @@ export {
   type AnimationDriverProps,
   type AnimationStore,
 } from './animation';
-export {
-  ExamQuestion,
-  ExamPart,
-  Derivation,
-  LiveAnswer,
-  KeyNote,
-  ExploreFurther,
-  QuestionNav,
-  questionHref,
-} from './exam';
+export { ExamQuestion, ExamPart, Derivation, LiveAnswer, KeyNote, ExploreFurther } from './exam';
+export { QuestionNav, questionHref } from './QuestionNav';
 export { Deferred, useSectionWidth } from './Deferred';
 export { useCompiled, type Compiled, type CompileOutcome } from './useCompiled';
+export { announce, onAnnounce, recentAnnouncements, ANNOUNCE_GAP_MS, type Announcement } from './announce';
+export { DescribedFigure, DESCRIBE_SETTLE_MS, type DescribedFigureProps } from './describe';
+export { summarizeSeries, superscriptExponent, type SummaryOptions } from './summary';
+export { ShowAsTable, type ShowAsTableProps } from './DataTable';
+export { AudioTrace, type AudioTraceProps, type TraceEvent, type TraceEventKind } from './audioTrace';
+export { SERIES, STRATEGY_COLOR, resolveColor } from './palette';
