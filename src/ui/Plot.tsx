@@ -1,7 +1,8 @@
 import { useEffect, useId, useMemo, useRef, useState } from 'react';
 import { touchOnly, useSeenOnce } from './useInView';
-import { isPresent } from './pageKeys';
 import { resolveTraceColors } from './palette';
+import { isPresent } from './pageKeys';
+import './plot.css';
 
 type PlotlyModule = (typeof import('plotly.js-cartesian-dist-min'))['default'];
 let plotlyPromise: Promise<PlotlyModule> | null = null;
