@@ -4,6 +4,14 @@ import { NumberField } from '../../../ui';
 import type { WorkerJob } from '../../../workers';
 
 export const COLORS = ['#1f5fa8', '#a13f00', '#1d7a3a', '#7b3fa1', '#b8860b', '#d6336c', '#117a8b'];
+/** Line dashes per strategy, in step with COLORS: the legend matches a line by its dash, not only its colour. */
+export const DASHES = ['solid', 'dash', 'dot', 'dashdot', 'longdash', 'longdashdot', '5px,2px,1px,2px'];
+/** The line of strategy i: its colour and its dash. */
+export const strategyLine = (i: number, width = 2) => ({
+  color: COLORS[i % COLORS.length],
+  dash: DASHES[i % DASHES.length],
+  width,
+});
 export const arr = (a: ArrayLike<number>) => Array.from(a);
 /** Legend above the plot (below, it collides with the x-axis title on narrow screens). */
 export const LEGEND = { orientation: 'h', x: 0, xanchor: 'left', y: 1.02, yanchor: 'bottom' };
