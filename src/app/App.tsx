@@ -88,9 +88,9 @@ export function App() {
     );
   else if (route.path === '/accessibility')
     body = (
-      <Suspense key="accessibility" fallback={<main id="main" className="page route-pending" />}>
+      <LazyRoute key="accessibility" loading="Loading the accessibility statement…">
         <AccessibilityPage flags={flags} query={route.query} />
-      </Suspense>
+      </LazyRoute>
     );
   else if (route.path === '/results')
     body = (

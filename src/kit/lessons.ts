@@ -193,8 +193,7 @@ export const LESSON_PRESETS: Readonly<Record<QuestionInfo['n'], readonly LessonP
       ask: 'Before the race runs: will the error fall faster than with independent samples? Is s/√N still an honest error bar here?',
     },
     {
-      params: { f: '1/sqrt(x)', a: '0', b: '1', t: '0' },
-      part: '4d',
+      params: { f: '1/sqrt(x)', a: '0', b: '1' },
       askFirst: true,
       title: 'A finite integral with infinite variance',
       shows:
@@ -204,7 +203,7 @@ export const LESSON_PRESETS: Readonly<Record<QuestionInfo['n'], readonly LessonP
   ],
   5: [
     {
-      params: { o: '-3,0.3,0.2', d: '1,0,0', c: '0,0,0', r: '1', t: '0' },
+      params: { o: '-3,0.3,0.2', d: '1,0,0', c: '0,0,0', r: '1' },
       part: '5',
       askFirst: true,
       title: 'Two hits',
@@ -212,7 +211,7 @@ export const LESSON_PRESETS: Readonly<Record<QuestionInfo['n'], readonly LessonP
       ask: 'Which root is the visible hit? What does the other one mean physically?',
     },
     {
-      params: { o: '0.2,-0.3,0.1', d: '1,0.5,0', c: '0,0,0', r: '1', t: '0' },
+      params: { o: '0.2,-0.3,0.1', d: '1,0.5,0', c: '0,0,0', r: '1' },
       part: '5',
       askFirst: true,
       title: 'Origin inside, d not unit length',
@@ -220,15 +219,15 @@ export const LESSON_PRESETS: Readonly<Record<QuestionInfo['n'], readonly LessonP
       ask: 'Why is the smaller root not the answer here? What changes in the formula when d is not a unit vector, and what stays the same?',
     },
     {
-      params: { o: '3,0.3,0.2', d: '1,0,0', c: '0,0,0', r: '1', t: '0' },
+      params: { o: '3,0.3,0.2', d: '1,0,0', c: '0,0,0', r: '1' },
       part: '5',
       askFirst: true,
       title: 'Sphere behind the ray',
       shows: 'Δ > 0, yet both roots are negative: no hit.',
-      ask: 'Is Δ ≥ 0 enough for a hit? Why does a renderer also use t_min > 0 (think of a ray leaving a surface)?',
+      ask: 'Is Δ ≥ 0 enough for a hit? Why does a renderer also use tₘᵢₙ > 0 (think of a ray leaving a surface)?',
     },
     {
-      params: { o: '-5,1,0', d: '1,0,0', c: '0,0,0', r: '1', t: '0' },
+      params: { o: '-5,1,0', d: '1,0,0', c: '0,0,0', r: '1' },
       part: '5',
       askFirst: true,
       title: 'Tangent',
@@ -255,7 +254,7 @@ export const LESSON_PRESETS: Readonly<Record<QuestionInfo['n'], readonly LessonP
       ask: 'Derive dω from similar triangles. Which factor shrinks a patch’s solid angle fastest as it moves to the light’s edge?',
     },
     {
-      params: { lc: '0,0,0.25', ls: '2,2', strategy: 'area', t: '0' },
+      params: { lc: '0,0,0.25', ls: '2,2', tilt: '0', strategy: 'area', t: '0' },
       part: '6c',
       askFirst: true,
       title: 'A big light close by, sampled by area (Q6c)',
@@ -263,7 +262,7 @@ export const LESSON_PRESETS: Readonly<Record<QuestionInfo['n'], readonly LessonP
       ask: 'Which samples get the largest weights |A| cos θ cos θ_l / r²? Which strategy would you choose here?',
     },
     {
-      params: { lc: '0,0,10', ls: '1,1', strategy: 'cosine', t: '0' },
+      params: { lc: '0,0,10', ls: '1,1', tilt: '0', strategy: 'cosine', t: '0' },
       part: '6c',
       askFirst: true,
       title: 'A small far light, cosine sampling',
@@ -328,7 +327,7 @@ export const MISCONCEPTIONS: Readonly<Record<SceneId, { title: string; items: re
       '“The smaller root is the hit.” Not when the origin is inside the sphere (t₀ < 0).',
       '“d must be a unit vector.” The quadratic works for any d; a = d·d then is not 1.',
       '“The textbook formula is exact.” b² − 4ac′ and −b ± √Δ cancel catastrophically far away and at grazing angles.',
-      '“t ≥ 0 is enough in a renderer.” A ray leaving a surface re-hits it at t ≈ 0 unless t_min > 0.',
+      '“t ≥ 0 is enough in a renderer.” A ray leaving a surface re-hits it at t ≈ 0 unless tₘᵢₙ > 0.',
     ],
   },
   'area-light': {

@@ -2,6 +2,7 @@ import { useEffect, useId, useMemo, useRef, useState } from 'react';
 import { touchOnly, useSeenOnce } from './useInView';
 import { resolveTraceColors } from './palette';
 import { isPresent } from './pageKeys';
+import './plot.css';
 
 type PlotlyModule = (typeof import('plotly.js-cartesian-dist-min'))['default'];
 let plotlyPromise: Promise<PlotlyModule> | null = null;

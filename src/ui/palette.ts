@@ -1,10 +1,12 @@
 /**
  * The shared colours of plot lines and of the two Monte Carlo strategies, as CSS custom properties
- * (src/ui/styles.css sets them per theme; tests/ui/palette.test.ts checks their contrast and that
+ * (./palette.css sets them per theme, loaded with this module; tests/ui/palette.test.ts checks their contrast and that
  * they stay apart under colour-vision deficiencies). SVG and CSS use them as they are; Plotly traces
  * may give them as `var(--series-1)` (src/ui/Plot.tsx resolves them when it draws); a canvas or
  * WebGL view reads them with {@link resolveColor}.
  */
+import './palette.css';
+
 export const SERIES = ['var(--series-1)', 'var(--series-2)', 'var(--series-3)', 'var(--series-4)'] as const;
 export const STRATEGY_COLOR = {
   uniform: 'var(--strategy-uniform)',

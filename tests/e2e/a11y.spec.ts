@@ -152,3 +152,61 @@ test('on a scene, the A11y view lists what the page names, and links keep the fl
     ).toBe(true);
   expect(page.url()).toContain('a11y=1');
 });
+
+test('status messages (4.1.3): one live region for the page; copy and practice results are status messages', async ({
+  page,
+}) => {
+  await page.goto('./#/accessibility');
+  await page.getByTestId('demo-r').focus();
+  for (let i = 0; i < 3; i++) await page.keyboard.press('ArrowLeft');
+  await expect(page.getByTestId('live-region')).toHaveText(/Radius r = 0\.85/, { timeout: 15_000 });
+  await page.getByTestId('demo-trace').focus();
+  await page.keyboard.press('ArrowRight');
+  await expect(page.getByTestId('live-region')).toHaveText(/point 1 of 41/);
+  await expect(page.getByTestId('live-region')).toHaveCount(1);
+  const live = await axNodeOf(page, '[data-testid="live-region"]');
+  expect(live!.role).toBe('status');
+
+  await openScene(page, '#/texture');
+  await page.getByTestId('copy-link').click();
+  await expect(
+    page.getByRole('status').filter({ hasText: /Link copied\.|Copy it from the box/ }),
+  ).toHaveCount(1);
+
+  await page.goto('./#/practice/q3?seed=7');
+  const check = page.getByRole('button', { name: /^Check/ });
+  await expect(check).toBeVisible({ timeout: 30_000 });
+  await check.click();
+  await expect(page.getByTestId('practice-summary')).toHaveAttribute('role', 'status');
+  await expect(page.getByTestId('practice-summary')).not.toBeEmpty();
+});
+
+test('formulas: KaTeX’s MathML is in the accessibility tree, never under aria-hidden', async ({ page }) => {
+  await openScene(page, '#/hemisphere');
+  await expect(page.locator('.katex-mathml math').first()).toBeAttached({ timeout: 60_000 });
+  const hiddenMath = await page.evaluate(
+    () =>
+      [...document.querySelectorAll('.katex-mathml')].filter((m) => m.closest('[aria-hidden="true"]')).length,
+  );
+  expect(hiddenMath).toBe(0);
+  const node = await axNodeOf(page, '.katex-mathml math');
+  expect(node!.ignored).toBe(false);
+  expect(node!.role.toLowerCase()).toContain('math');
+  // the HTML rendering is hidden: a screen reader does not read the formula twice
+  const html = await axNodeOf(page, '.katex-html');
+  expect(html!.ignored).toBe(true);
+});
+
+test('formulas: the plain-text reading shown before KaTeX arrives is a named math element', async ({
+  page,
+}) => {
+  // hold KaTeX back (its worker and its library never arrive): the previews stay
+  await page.route(/katex/i, () => undefined);
+  await page.goto('./#/hemisphere');
+  const preview = page.locator('.math-preview').first();
+  await expect(preview).toBeAttached({ timeout: 60_000 });
+  const node = await axNodeOf(page, '.math-preview');
+  expect(node!.role.toLowerCase()).toContain('math');
+  expect(node!.name.length).toBeGreaterThan(0);
+  expect(node!.name).not.toMatch(/[\\^_]/);
+});

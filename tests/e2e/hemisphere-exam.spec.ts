@@ -116,7 +116,7 @@ test.describe('statements that must be true', () => {
     await openScene(page, '#/hemisphere?lobe=phong&exponent=8&n=2000');
     await statsReady(page);
     await expect(page.getByTestId('variance-warning')).toContainText('Infinite variance');
-    await expect(page.getByTestId('variance-warning')).toContainText('cos^(2−n)');
+    await expect(page.getByTestId('variance-warning')).toContainText('cos²⁻ⁿ');
     await expect(page.getByTestId('answer-2b').locator('.readout-note')).toContainText(
       'meaningless here (infinite variance)',
     );

@@ -1,6 +1,7 @@
 /**
  * The colour-vision check of the palettes (WCAG 1.4.11 and 1.4.1): plot lines, the two Monte Carlo
- * strategies, the accents and the focus ring, read from src/ui/styles.css for both themes, keep
+ * strategies, the accents and the focus ring, read from src/ui/styles.css and src/ui/palette.css for
+ * both themes, keep
  * 3 : 1 against the page and panel backgrounds, and the lines stay apart (CIEDE2000) in normal
  * vision and simulated protanopia, deuteranopia and tritanopia (Machado et al. 2009; Viénot et al.
  * 1999 for protan and deutan). The scenes' own hard-coded colours are listed at the end.
@@ -10,7 +11,8 @@ import { describe, expect, it } from 'vitest';
 import { MACHADO, VIENOT, contrast, cssVars, deltaE2000, parseHex, simulate, type RGB } from './colorVision';
 import { resolveTraceColors, SERIES, STRATEGY_COLOR } from '../../src/ui/palette';
 
-const css = readFileSync('src/ui/styles.css', 'utf8');
+// the theme's colours, then the palette's (loaded after them)
+const css = `${readFileSync('src/ui/styles.css', 'utf8')}\n${readFileSync('src/ui/palette.css', 'utf8')}`;
 const LIGHT = cssVars(css, ':root');
 const DARK = { ...LIGHT, ...cssVars(css, ":root[data-theme='dark']") };
 const THEMES = { light: LIGHT, dark: DARK } as const;

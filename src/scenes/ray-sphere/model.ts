@@ -22,6 +22,12 @@ import { computeRowsF32, type F32Rows, type Precision } from './precisionF32';
 
 export type V3 = [number, number, number];
 
+/**
+ * Above this |o − C| / r the figures centre on the sphere and leave the origin off screen (the
+ * cross-section and the 3D view are then not to scale).
+ */
+export const FAR_RATIO = 60;
+
 /** Plain-words explanation of each case, shown beside the case name. */
 export const CASE_TEXT: Record<RaySphereCase, string> = {
   miss: 'Δ < 0: the quadratic has no real root, so the line never touches the sphere.',
@@ -226,6 +232,18 @@ const cross = (x: readonly number[], y: readonly number[]): V3 => [
   x[2] * y[0] - x[0] * y[2],
   x[0] * y[1] - x[1] * y[0],
 ];
+
+/**
+ * l = f − (f·d / d·d) d with f = o − C: from the centre to the closest point of the ray's line
+ * (the vector of the robust form); |l| is the line's distance from the centre.
+ */
+export function closestOffset(o: Vec3, d: Vec3, c: Vec3): V3 {
+  const f = sub(o, c);
+  return sub(f, scale(d, dot(f, d) / dot(d, d)));
+}
+
+/** The distance of the ray's line from the centre: the closest approach (tangent when it is r). */
+export const closestApproach = (o: Vec3, d: Vec3, c: Vec3) => norm(closestOffset(o, d, c));
 
 /**
  * The canonical frame: e1 along d, e2 from the centre towards the ray's line (the ray then runs
@@ -511,7 +529,7 @@ export function makeSweep(input: InputCheck, mode: SweepMode, extent: number): S
   // length is the line's distance from C. e2 = l / |l|, made exactly perpendicular to e1 again
   // (for a far sphere l's direction carries the rounding of f·d, and f·e2 would cancel to 0).
   const e1 = fr.e1;
-  const l = sub(f, scale(d, dot(f, d) / dot(d, d)));
+  const l = closestOffset(o, d, c);
   const h0 = norm(l);
   let e2: V3 = fr.e2;
   if (h0 > 0 && Number.isFinite(h0)) {

@@ -4,6 +4,7 @@
  */
 import type { ReactNode } from 'react';
 import { ExamPart, Derivation as DerivationBlock, LiveAnswer, KeyNote } from '../../../ui/exam';
+import { Revealed } from '../../../ui/ask';
 import { MathTex, formatNumber } from '../../../ui';
 import { Steps } from '../view/Steps';
 import { texNum } from '../view/tex';
@@ -16,12 +17,15 @@ export function Q2({
   answer2a,
   answer2b,
   answer2c,
+  ask,
 }: {
   solidAngle: number;
   lobeTex: string;
   answer2a: ReactNode;
   answer2b: ReactNode;
   answer2c: ReactNode;
+  /** Results hidden until revealed (`ask=1`). */
+  ask: boolean;
 }) {
   return (
     <>
@@ -58,7 +62,11 @@ export function Q2({
             ]}
           />
         </DerivationBlock>
-        <LiveAnswer testId="answer-2a">{answer2a}</LiveAnswer>
+        <LiveAnswer testId="answer-2a">
+          <Revealed ask={ask} what="the uniform estimate">
+            {answer2a}
+          </Revealed>
+        </LiveAnswer>
       </ExamPart>
 
       <ExamPart
@@ -87,7 +95,11 @@ export function Q2({
             like f and can be infinite when p vanishes faster than f.
           </p>
         </DerivationBlock>
-        <LiveAnswer testId="answer-2b">{answer2b}</LiveAnswer>
+        <LiveAnswer testId="answer-2b">
+          <Revealed ask={ask} what="the importance estimate">
+            {answer2b}
+          </Revealed>
+        </LiveAnswer>
       </ExamPart>
 
       <ExamPart id="2c" title="Unbiasedness" asks={<>Show that the estimator is unbiased: E[⟨I⟩] = I.</>}>
@@ -131,7 +143,9 @@ export function Q2({
           </KeyNote>
         </DerivationBlock>
         <LiveAnswer title="Checked empirically" testId="answer-2c">
-          {answer2c}
+          <Revealed ask={ask} what="the repeated estimates">
+            {answer2c}
+          </Revealed>
         </LiveAnswer>
       </ExamPart>
     </>

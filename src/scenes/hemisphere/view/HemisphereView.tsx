@@ -22,6 +22,8 @@ import { fillSequence2D, type SequenceKind } from '../../../core/random';
 import { squarePoint, warpedGrid, type AnimFrame, type Lobe } from '../model';
 import { MAX_N } from '../params';
 import { xiColor } from './colors';
+import type { Cell } from '../stratum';
+import { patchStratumShader, stratumLayer, stratumUniforms, type StratumLayer } from './stratum3d';
 import { nextTask, SLICE_MS } from '../../../ui/chunked';
 
 const BATCH = 1 << 15;
@@ -57,6 +59,9 @@ function perFrame(a: Fill): number {
   return Math.min(MAX_PER_FRAME, Math.max(MIN_PER_FRAME, Math.floor(a.pointsPerMs * budgetMs)));
 }
 
+/** The warped grid recedes while a stratum is followed, so the stratum's outline stands out. */
+const gridOpacity = (cell: Cell | null) => (cell ? 0.35 : 0.9);
+
 export interface HemisphereViewProps {
   lobe: Lobe;
   kind: SequenceKind;
@@ -66,8 +71,10 @@ export interface HemisphereViewProps {
   frame: AnimFrame;
   showPoints: boolean;
   showGrid: boolean;
-  /** Height of the 3D viewport in CSS pixels (default 380; the scene passes a larger one in present mode). */
-  height?: number;
+  /** The followed stratum (its samples marked, its patch and outline drawn), or null. */
+  cell?: Cell | null;
+  /** Height of the 3D viewport: CSS pixels, or a CSS length (the classroom stage sizes it to the screen). */
+  height?: number | string;
   /**
    * Set to a function that shows another frame directly (per animation frame, without a React
    * render); `frame` is then the frame of the component's last render.
@@ -112,6 +119,7 @@ export function HemisphereView({
   showGrid,
   height = 380,
   drawRef,
+  cell = null,
 }: HemisphereViewProps) {
   const ctxRef = useRef<ViewportContext | null>(null);
   const objs = useRef<{
@@ -125,10 +133,11 @@ export function HemisphereView({
     grid: THREE.LineSegments | null;
     /** The grid's vertices in the square (s = 0) and on the hemisphere (s = 1). */
     gridEnds: { a: Float64Array; b: Float64Array } | null;
+    stratum: StratumLayer;
   } | null>(null);
   const fill = useRef<Fill>({ filled: 0, target: frame.shown, pointsPerMs: 0, frameMs: 16, last: 0 });
-  const cfg = useRef({ lobe, kind, seed, n, frame, showPoints, showGrid });
-  cfg.current = { lobe, kind, seed, n, frame, showPoints, showGrid };
+  const cfg = useRef({ lobe, kind, seed, n, frame, showPoints, showGrid, cell });
+  cfg.current = { lobe, kind, seed, n, frame, showPoints, showGrid, cell };
   const label = useRef<HTMLSpanElement>(null);
   const scratch = useRef<{ u: Float64Array; d: Float64Array } | null>(null);
 
@@ -216,6 +225,7 @@ export function HemisphereView({
       for (let i = 0; i < arr.length; i++) arr[i] = a[i] * r + b[i] * s; // the model's morphPoint, unrolled
       p.needsUpdate = true;
     }
+    o.stratum.morph(s);
     updateLabel();
     ctxRef.current?.invalidate();
   };
@@ -249,7 +259,11 @@ export function HemisphereView({
     g.setAttribute('color', new T.BufferAttribute(c, 3));
     const lines = new T.LineSegments(
       g,
-      new T.LineBasicMaterial({ vertexColors: true, transparent: true, opacity: 0.9 }),
+      new T.LineBasicMaterial({
+        vertexColors: true,
+        transparent: true,
+        opacity: gridOpacity(cfg.current.cell),
+      }),
     );
     lines.frustumCulled = false;
     lines.visible = cfg.current.showGrid;
@@ -264,6 +278,7 @@ export function HemisphereView({
     const { geom, pos, col, xi } = pointBuffers(T, capacityFor(cfg.current.n));
     const material = new T.PointsMaterial({ size: 3, sizeAttenuation: false, vertexColors: true });
     const morph = { value: cfg.current.frame.s };
+    const strata = stratumUniforms(T);
     // the warp morph on the GPU: mix(square point of (ξ₁, ξ₂), direction, s), as the model's morphPoint
     material.onBeforeCompile = (shader) => {
       shader.uniforms.uMorph = morph;
@@ -273,6 +288,7 @@ export function HemisphereView({
           '#include <begin_vertex>',
           'vec3 transformed = mix(vec3(2.0 * xi.x - 1.0, 2.0 * xi.y - 1.0, 0.0), vec3(position), uMorph);',
         );
+      patchStratumShader(shader, strata);
     };
     material.customProgramCacheKey = () => 'hemisphere-morph';
     const points = new T.Points(geom, material);
@@ -331,7 +347,9 @@ export function HemisphereView({
     ctx.controls.target.set(0, 0, 0.3);
     ctx.controls.update();
 
-    objs.current = { geom, pos, col, xi, points, material, morph, grid: null, gridEnds: null };
+    const stratum = stratumLayer(ctx, strata);
+    stratum.set(cfg.current.lobe, cfg.current.cell);
+    objs.current = { geom, pos, col, xi, points, material, morph, grid: null, gridEnds: null, stratum };
     // level of detail while orbiting: the sets are prefixes of well-spread sequences (except the
     // stratified set, whose prefix fills rows in order, so it is always drawn in full)
     const onStart = () => {
@@ -397,6 +415,7 @@ export function HemisphereView({
       stop();
       ctx.controls.removeEventListener('start', onStart);
       ctx.controls.removeEventListener('end', onEnd);
+      stratum.dispose();
       objs.current = null;
       ctxRef.current = null;
     };
@@ -423,6 +442,17 @@ export function HemisphereView({
     apply();
   };
   useEffect(() => onPointsChange.current(), [lobe, kind, seed, n]);
+
+  // the followed stratum: its patch and outline for this lobe, its samples marked by the shader
+  const onCellChange = useRef(() => {});
+  onCellChange.current = () => {
+    const o = objs.current;
+    if (!o) return;
+    o.stratum.set(lobe, cell);
+    if (o.grid) (o.grid.material as THREE.LineBasicMaterial).opacity = gridOpacity(cell);
+    apply();
+  };
+  useEffect(() => onCellChange.current(), [lobe, cell]);
 
   // every timeline position: the new target and morph (the fill loop runs only if points are missing)
   const onFrameChange = useRef(() => {});
@@ -451,7 +481,7 @@ export function HemisphereView({
   return (
     <div className="hemi-3d">
       <Viewport
-        ariaLabel="Samples of the chosen density: (ξ₁, ξ₂) points and grid in the unit square travelling to their directions on the upper hemisphere, coloured by (ξ₁, ξ₂)"
+        ariaLabel={`3D view: ${formatCount(n)} samples of p(ω) = ${lobe.label}, (ξ₁, ξ₂) points and grid travelling from the unit square to their directions on the upper hemisphere${cell ? `; stratum (${cell.i}, ${cell.j}) marked` : ''}`}
         height={height}
         setup={setup}
         testId="hemisphere-3d"

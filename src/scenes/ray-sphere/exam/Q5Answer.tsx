@@ -100,7 +100,16 @@ function LiveAnswerBody({ tl, modelAt, sweep, method }: Q5AnswerProps) {
         ) : null}
         <Readout id="t0" label="t₀" value={res?.t0 ?? null} digits={10} />
         <Readout id="t1" label="t₁" value={res?.t1 ?? null} digits={10} />
-        <Readout id="t-hit" label="t-hit (nearest t ≥ 0)" value={res?.tHit ?? null} digits={10} />
+        <Readout
+          id="t-hit"
+          label={
+            <>
+              t<sub>hit</sub> (nearest t ≥ 0)
+            </>
+          }
+          value={res?.tHit ?? null}
+          digits={10}
+        />
         <Readout id="case" label="case" value={res?.case ?? null} />
         <Readout
           id="sweep-x"

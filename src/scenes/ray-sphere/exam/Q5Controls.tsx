@@ -173,7 +173,7 @@ export const Q5Fields = memo(function Q5Fields({
       />
       <p className="rs-small">
         d need not be unit length: t is then measured in units of |d|. These fields hold the ray at the centre
-        of the sweep (t = 0.5); editing moves the sweep there.
+        of the sweep (sweep position τ = 0.5); editing moves the sweep there.
       </p>
     </details>
   );

@@ -3,6 +3,7 @@
  * readouts in float32, and the table of errors of both methods in float64 and in float32 side by
  * side (each against the double-double reference of its own inputs).
  */
+import type { ReactNode } from 'react';
 import type { RaySphereHit } from '../../../core/geometry';
 import { errorInUlpsF32 } from '../../../core/geometry';
 import type { MethodRow, RaySphereModel } from '../model';
@@ -82,7 +83,16 @@ export function PrecisionCompare({ model }: { model: RaySphereModel }) {
     { id: 'f32-naive', row: pick(f.rows, 'naive'), u: 2 ** -24, ref: f.reference },
     { id: 'f32-stable', row: pick(f.rows, 'stable'), u: 2 ** -24, ref: f.reference },
   ];
-  const labels: Record<Key, string> = { disc: 'Δ', t0: 't₀', t1: 't₁', hit: 't-hit' };
+  const labels: Record<Key, ReactNode> = {
+    disc: 'Δ',
+    t0: 't₀',
+    t1: 't₁',
+    hit: (
+      <>
+        t<sub>hit</sub>
+      </>
+    ),
+  };
   return (
     <div
       className="rs-table-wrap"

@@ -3,9 +3,18 @@
  * of a distant sphere by each method, and the error against distance.
  */
 import { useEffect, useMemo, useRef, useState, type RefObject } from 'react';
-import { Plot, Slider, useSeenOnce, type PlotTrace } from '../../../ui';
-import { ERROR_FLOOR, errorVsDistance, renderDistant, shadeImage, type RaySphereModel } from '../model';
-import { f32ErrorTraces } from './float32Traces';
+import { Plot, ShowAsTable, Slider, useSeenOnce, type PlotTrace } from '../../../ui';
+import {
+  ERROR_FLOOR,
+  errorVsDistance,
+  renderDistant,
+  shadeImage,
+  type ErrorSeries,
+  type RaySphereModel,
+} from '../model';
+import { f32ErrorSeries, f32ErrorTraces } from './float32Traces';
+import { describeErrorPlot } from './describe';
+import { formatNumber } from '../../../ui/Readout';
 
 function fmtErr(e: number | null): { text: string; cls: string } {
   if (e === null) return { text: '—', cls: 'na' };
@@ -22,7 +31,16 @@ const QUANTITIES = [
   { label: 'Δ = b² − 4ac', id: 'disc', value: 'discriminant', err: 'errDisc' },
   { label: 't₀', id: 't0', value: 't0', err: 'errT0' },
   { label: 't₁', id: 't1', value: 't1', err: 'errT1' },
-  { label: 't-hit', id: 'hit', value: 'tHit', err: 'errHit' },
+  {
+    label: (
+      <>
+        t<sub>hit</sub>
+      </>
+    ),
+    id: 'hit',
+    value: 'tHit',
+    err: 'errHit',
+  },
 ] as const;
 
 /** Side-by-side table of both methods against the reference. */
@@ -77,7 +95,7 @@ export function PrecisionTable({ model }: { model: RaySphereModel }) {
         </thead>
         <tbody>
           {rows.map((r) => (
-            <tr key={r.label}>
+            <tr key={r.id}>
               <th scope="row">{r.label}</th>
               {cell(r.n, r.en, `naive-${r.id}`, r.ref)}
               {cell(r.s, r.es, `stable-${r.id}`, r.ref)}
@@ -122,11 +140,14 @@ function MethodImage({
   name,
   id,
   hits,
+  says,
 }: {
   canvasRef: RefObject<HTMLCanvasElement | null>;
   name: string;
   id: string;
   hits: number | undefined;
+  /** What the image shows, in numbers (its accessible name after its own). */
+  says: string;
 }) {
   return (
     <figure>
@@ -135,7 +156,8 @@ function MethodImage({
         width={IMG}
         height={IMG}
         className="rs-canvas"
-        aria-label={`${name} render of the distant sphere`}
+        role="img"
+        aria-label={`${name} render of the distant sphere: ${hits === undefined ? 'not yet computed' : `${hits} of ${IMG * IMG} pixels hit; ${says}`}`}
         data-testid={`img-${id}`}
         data-hits={hits}
       />
@@ -183,8 +205,20 @@ export function DistantImages() {
         testId="distant-exp"
       />
       <div className="rs-images">
-        <MethodImage canvasRef={naiveRef} name="Textbook" id="naive" hits={img?.naiveHits} />
-        <MethodImage canvasRef={stableRef} name="Robust" id="stable" hits={img?.stableHits} />
+        <MethodImage
+          canvasRef={naiveRef}
+          name="Textbook"
+          id="naive"
+          hits={img?.naiveHits}
+          says={img ? `${img.disagree} pixels differ from the robust render` : ''}
+        />
+        <MethodImage
+          canvasRef={stableRef}
+          name="Robust"
+          id="stable"
+          hits={img?.stableHits}
+          says="the correct disc"
+        />
       </div>
       {img ? (
         <p className="rs-small" data-testid="distant-summary" data-disagree={img.disagree}>
@@ -236,7 +270,8 @@ export function ErrorVsDistance({
   const box = useRef<HTMLDivElement>(null);
   const seen = useSeenOnce(box);
   const s = useMemo(() => (seen ? errorVsDistance() : null), [seen]);
-  const s32 = useMemo(() => (s ? f32ErrorTraces(s.dist) : []), [s]);
+  const e32 = useMemo(() => (s ? f32ErrorSeries(s.dist) : null), [s]);
+  const s32 = useMemo(() => (e32 ? f32ErrorTraces(e32) : []), [e32]);
   const u = ERROR_FLOOR;
   const data = useMemo<PlotTrace[]>(
     () =>
@@ -245,8 +280,8 @@ export function ErrorVsDistance({
         : [
             curve(s.dist, s.discNaive, 'textbook Δ', { color: NAIVE_COLOR }, true),
             curve(s.dist, s.discStable, 'robust Δ', { color: STABLE_COLOR }, true),
-            curve(s.dist, s.hitNaive, 'textbook t-hit', { color: NAIVE_COLOR, dash: 'dot' }),
-            curve(s.dist, s.hitStable, 'robust t-hit', { color: STABLE_COLOR, dash: 'dot' }),
+            curve(s.dist, s.hitNaive, 'textbook t<sub>hit</sub>', { color: NAIVE_COLOR, dash: 'dot' }),
+            curve(s.dist, s.hitStable, 'robust t<sub>hit</sub>', { color: STABLE_COLOR, dash: 'dot' }),
             curve(
               s.dist,
               s.dist.map((D) => Math.min(1, u * D * D)),
@@ -318,12 +353,44 @@ export function ErrorVsDistance({
           data={data}
           layout={layout}
           height={ERROR_PLOT_HEIGHT}
-          ariaLabel="Relative error of the discriminant and of t-hit against distance, textbook and robust"
+          label="Relative error of Δ and of the hit's t against distance, textbook and robust"
+          description={describeErrorPlot(s, e32 ?? undefined)}
           testId="error-plot"
         />
       ) : (
         <div data-testid="error-plot" style={{ height: ERROR_PLOT_HEIGHT }} aria-busy="true" />
       )}
+      {s ? <ErrorTables s={s} e32={e32} /> : null}
     </div>
   );
 }
+
+/** The error plot's data as tables: float64, and float32 (its own distances, up to 10⁹ r). */
+function ErrorTables({ s, e32 }: { s: ErrorSeries; e32: ErrorSeries | null }) {
+  const cols = ['D / r', 'textbook Δ', 'robust Δ', 'textbook tₕᵢₜ', 'robust tₕᵢₜ'];
+  const rows = (e: ErrorSeries) =>
+    e.dist.map((D, i) => [D, e.discNaive[i], e.discStable[i], e.hitNaive[i], e.hitStable[i]]);
+  return (
+    <>
+      <ShowAsTable
+        caption="Median relative error against distance, float64"
+        columns={cols}
+        rows={rows(s)}
+        format={fmtTable}
+        testId="error-table"
+      />
+      {e32 ? (
+        <ShowAsTable
+          caption="Median relative error against distance, float32"
+          columns={cols}
+          rows={rows(e32)}
+          format={fmtTable}
+          summary="Show the float32 curves as a table"
+          testId="error-table-f32"
+        />
+      ) : null}
+    </>
+  );
+}
+
+const fmtTable = (v: number) => formatNumber(v, 2);
