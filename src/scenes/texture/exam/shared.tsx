@@ -180,7 +180,7 @@ export function queryPart(
     return (
       <ExamPart id={id} title={title} asks={asks}>
         <NotExam shown={shown} toExam={toExam} />
-        <Revealed ask={ask} what="the steps and the answer" minHeight="6rem" testId={`ask-hidden-${id}`}>
+        <Revealed ask={ask} what="the steps and the answer" minHeight="6rem">
           <Derivation testId={`derivation-${id}`}>
             <Worked shown={shown} playing={playing} />
           </Derivation>
