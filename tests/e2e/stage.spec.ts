@@ -217,6 +217,26 @@ test('the copied link and the QR code are the students’ link, unless classroom
   expect(await copied()).not.toMatch(/[?&](present|ask)=/);
 });
 
+test('present=1 at 1280×720: each scene’s title, share bar and way back stand in one row', async ({
+  page,
+}) => {
+  test.setTimeout(180_000);
+  await page.setViewportSize({ width: 1280, height: 720 });
+  for (const s of SCENES) {
+    await openScene(page, `#${s.path}?present=1&ask=1`);
+    const h1 = (await page.locator('main h1').boundingBox())!;
+    const bar = (await page.locator('.share-bar').boundingBox())!;
+    const back = (await page.locator('main .back-link').boundingBox())!;
+    // one row: the share bar is no taller than a row of buttons, beside the title, not under it
+    expect(bar.height, `${s.id}: the share bar wraps`).toBeLessThan(70);
+    expect(bar.x, s.id).toBeGreaterThan(h1.x + h1.width);
+    expect(back.x, s.id).toBeGreaterThan(bar.x + bar.width - 1);
+    expect(Math.abs(bar.y + bar.height / 2 - (h1.y + h1.height / 2)), s.id).toBeLessThan(20);
+    // embedding is not a lecture's business: no embed code in classroom mode
+    await expect(page.getByTestId('copy-embed')).toHaveCount(0);
+  }
+});
+
 test('without classroom mode there is no "keep classroom mode" choice', async ({ page }) => {
   await openScene(page, '#/texture?u=0.7');
   await expect(page.getByTestId('copy-link')).toBeVisible();
