@@ -258,7 +258,8 @@ export const LESSON_PRESETS: Readonly<Record<QuestionInfo['n'], readonly LessonP
       part: '6c',
       askFirst: true,
       title: 'A big light close by, sampled by area (Q6c)',
-      shows: 'Uniform area sampling, pdf 1/|A| per unit area: r² varies wildly over the light, so the estimate is noisy.',
+      shows:
+        'Uniform area sampling, pdf 1/|A| per unit area: r² varies wildly over the light, so the estimate is noisy.',
       ask: 'Which samples get the largest weights |A| cos θ cos θₗ / r²? Which strategy would you choose here?',
     },
     {
