@@ -20,6 +20,7 @@ import { formatCount } from '../../../ui/format';
 import type { SequenceKind } from '../../../core/random';
 import { animDuration, animFrame, examInversion, type AnimFrame, type AnimKind, type Lobe } from '../model';
 import type { HemisphereSchema, LobeId } from '../params';
+import type { PointsArgs } from '../jobs';
 // Static, not lazy: the 3D panel is on the first screen, and a Suspense fallback of another height
 // shifted the layout when it arrived (three.js itself still loads lazily, inside Viewport).
 import { HemisphereView } from './HemisphereView';
@@ -34,6 +35,8 @@ const SquareMemo = memo(UnitSquare);
 
 interface FigureProps {
   lobe: Lobe | null;
+  /** What the 3D view's points depend on (../jobs pointsArgsOf). */
+  points: PointsArgs;
   lobeId: LobeId;
   kind: SequenceKind;
   seed: number;
@@ -55,6 +58,7 @@ interface FigureProps {
  */
 export function Figure({
   lobe,
+  points,
   lobeId,
   kind,
   seed,
@@ -92,6 +96,7 @@ export function Figure({
           <LiveHemisphereView
             tl={tl}
             lobe={lobe}
+            points={points}
             kind={kind}
             seed={seed}
             n={n}
