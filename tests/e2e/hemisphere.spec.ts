@@ -7,6 +7,7 @@
 import type { Page } from '@playwright/test';
 import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
+import { slowdown } from './longTasks';
 import { computeDrawStats, lobeFromParams } from '../../src/scenes/hemisphere/model';
 import { examLobeK } from '../../src/core/sampling';
 import type { LobeId } from '../../src/scenes/hemisphere/params';
@@ -322,6 +323,13 @@ test.describe('robustness and extras', () => {
     );
     console.log(
       `[hemisphere 1e6] main-thread copy per chunk (the worker generates them): ${stats(grow.map((g) => g[0]))}; ${totalPts} points in ${totalMs.toFixed(0)} ms = ${((totalPts / totalMs) * 1000).toExponential(2)} points/s`,
+    );
+    // the main thread only copies what the worker generated: 10⁶ points (23 MB of buffers) take it a
+    // few ms on a quiet desktop; generating them there took it about 2 s on a loaded 2-core machine
+    const factor = await slowdown(page);
+    expect(totalPts).toBeGreaterThanOrEqual(1_000_000);
+    expect(totalMs, `main-thread time to fill 10⁶ points (slowdown ${factor.toFixed(1)})`).toBeLessThan(
+      15 * factor,
     );
     // a quiet scene renders nothing: no frames are requested after the growth ends
     const idle = await page.evaluate(
