@@ -146,11 +146,15 @@ export function StratumControls({
 }) {
   return (
     <fieldset className="hemi-stratum" data-testid="stratum">
-      <legend>Follow a stratum</legend>
+      <legend>Follow a stratum: cell (i, j)</legend>
       {cell ? (
         <div className="hemi-stratum-fields">
           <NumberField
-            label="column i (ξ₁)"
+            label={
+              <>
+                column i <span className="sr-only">of ξ₁</span>
+              </>
+            }
             value={cell.i}
             min={0}
             max={CELLS - 1}
@@ -159,7 +163,11 @@ export function StratumControls({
             testId="stratum-i"
           />
           <NumberField
-            label="row j (ξ₂)"
+            label={
+              <>
+                row j <span className="sr-only">of ξ₂</span>
+              </>
+            }
             value={cell.j}
             min={0}
             max={CELLS - 1}

@@ -166,7 +166,8 @@ export function describeMarginal(
   n: number,
   density: (x: number) => number,
 ): string {
-  const opts = { xLabel: `${v} (rad)`, format: (x: number) => num(x) };
+  // a density that is zero to rounding at an end (sin 2θ at π/2) reads as 0
+  const opts = { xLabel: v, format: (x: number) => (Math.abs(x) < 1e-9 ? '0' : num(x)) };
   let gap = 0;
   let at = 0;
   for (let b = 0; b < h.centers.length; b++) {
@@ -177,7 +178,7 @@ export function describeMarginal(
     }
   }
   return [
-    `Histogram of ${formatCount(n)} sampled ${v} in ${h.centers.length} bins against the density p(${v}).`,
+    `Histogram of ${formatCount(n)} sampled ${v} (rad) in ${h.centers.length} bins against the density p(${v}).`,
     summarizeSeries(h.centers, h.density, { ...opts, yLabel: 'the histogram' }),
     summarizeSeries(h.curveX, h.curveY, { ...opts, yLabel: `p(${v})` }),
     `They differ most at ${v} = ${num(at)} rad, by ${num(gap)}.`,
