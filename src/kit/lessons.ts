@@ -193,8 +193,7 @@ export const LESSON_PRESETS: Readonly<Record<QuestionInfo['n'], readonly LessonP
       ask: 'Before the race runs: will the error fall faster than with independent samples? Is s/√N still an honest error bar here?',
     },
     {
-      params: { f: '1/sqrt(x)', a: '0', b: '1', t: '0' },
-      part: '4d',
+      params: { f: '1/sqrt(x)', a: '0', b: '1' },
       askFirst: true,
       title: 'A finite integral with infinite variance',
       shows:

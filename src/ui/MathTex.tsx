@@ -120,6 +120,23 @@ function remember(key: string, html: string): void {
   if (CACHE.size > CACHE_MAX) CACHE.delete(CACHE.keys().next().value!);
 }
 
+/**
+ * Typeset `tex` ahead of showing it: once this resolves, a MathTex given `tex` shows the typeset
+ * formula in the render that gives it (from the cache), with no frame of the previous formula.
+ * For views whose formula and the numbers beside it must change together (an animation's worked
+ * steps). Resolves (never rejects) also when KaTeX cannot typeset it.
+ */
+export function preloadMath(tex: string, display = false): Promise<void> {
+  const key = `${display ? 'D' : 'I'}${tex}`;
+  if (CACHE.has(key)) return Promise.resolve();
+  return typeset(tex, display).then(
+    (out) => {
+      if (out !== null) remember(key, out);
+    },
+    () => undefined,
+  );
+}
+
 let printHooked = false;
 /**
  * Before printing, every formula still waiting for idle time is sent to be typeset at once. The
@@ -148,7 +165,7 @@ export function MathTex({
 }) {
   const key = `${display ? 'D' : 'I'}${tex}`;
   // undefined: not typeset yet; null: KaTeX could not be run
-  const [html, setHtml] = useState<string | null | undefined>(() => cached(key));
+  const [typesetHtml, setHtml] = useState<string | null | undefined>(() => cached(key));
   const ref = useRef<HTMLElement>(null);
   useEffect(() => {
     const hit = cached(key);
@@ -179,6 +196,8 @@ export function MathTex({
       cancel();
     };
   }, [key, tex, display]);
+  // a formula already typeset shows at once, in the render that changes it (see preloadMath)
+  const html = CACHE.get(key) ?? typesetHtml;
   const preview = useMemo(() => (html === undefined ? texPreview(tex, display) : ''), [html, tex, display]);
   const Tag = display ? 'div' : 'span';
   const cls = `math${display ? ' math-display' : ''}${className ? ` ${className}` : ''}`;

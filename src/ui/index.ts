@@ -11,7 +11,7 @@ export { NumberField, Slider, Select, Toggle, ExprField, Panel, Notice, SceneLay
 export { Revealed, type RevealedProps } from './ask';
 export { usePresent, isPresent } from './pageKeys';
 export { keepTextParenthesesTogether } from './texBreaks';
-export { MathTex, loadKatex } from './MathTex';
+export { MathTex, loadKatex, preloadMath } from './MathTex';
 export { runChunked, nextTask } from './chunked';
 export { Plot, loadPlotly, type PlotTrace, type PlotLayout } from './Plot';
 export { useShortcuts, type ShortcutHandlers } from './shortcuts';

@@ -137,8 +137,20 @@ function DrawerToggle({ children }: { children: ReactNode }) {
         setOpen(false);
       }
     };
+    // The drawer lies over the page: focus tabbed out of it would land under it, out of sight
+    // (WCAG 2.4.11), so the drawer folds away when the keyboard takes focus elsewhere. A click
+    // elsewhere keeps it open (the figure beside it stays usable with the pointer).
+    const away = (e: FocusEvent) => {
+      const t = e.target;
+      if (!(t instanceof Element) || drawer.current?.contains(t) || btn.current === t) return;
+      if (t.matches(':focus-visible')) setOpen(false);
+    };
     window.addEventListener('keydown', on);
-    return () => window.removeEventListener('keydown', on);
+    document.addEventListener('focusin', away);
+    return () => {
+      window.removeEventListener('keydown', on);
+      document.removeEventListener('focusin', away);
+    };
   }, [open, setOpen]);
   return (
     <>

@@ -7,6 +7,7 @@
  */
 import type { Page } from '@playwright/test';
 import { test, expect, openScene, readoutNumber } from './fixtures';
+import { axTree } from './axTree';
 import { defaultValues, parseParams } from '../../src/kit/params';
 import { EXAM_PRESET, schema } from '../../src/scenes/area-light/params';
 import {
@@ -23,24 +24,9 @@ import type { LightStrategy } from '../../src/core/lights';
 
 const FIGURE = 'The area light, the shading point and the samples arriving';
 
-/** The figure's name and description as a screen reader receives them (null: not in the tree). */
+/** The figure's role and description as a screen reader receives them, found by its name (null: none). */
 async function axFigure(page: Page, name: string): Promise<{ role: string; description: string } | null> {
-  const cdp = await page.context().newCDPSession(page);
-  try {
-    await cdp.send('Accessibility.enable');
-    const { nodes } = (await cdp.send('Accessibility.getFullAXTree')) as {
-      nodes: {
-        ignored?: boolean;
-        role?: { value?: unknown };
-        name?: { value?: unknown };
-        description?: { value?: unknown };
-      }[];
-    };
-    const n = nodes.find((x) => !x.ignored && x.name?.value === name);
-    return n ? { role: String(n.role?.value ?? ''), description: String(n.description?.value ?? '') } : null;
-  } finally {
-    await cdp.detach();
-  }
+  return (await axTree(page)).find((n) => n.name === name) ?? null;
 }
 
 async function figureDescription(page: Page): Promise<string> {

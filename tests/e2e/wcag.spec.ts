@@ -87,3 +87,23 @@ for (const route of ROUTES) {
     });
   });
 }
+
+for (const s of SCENES) {
+  test(`${s.path} in classroom mode (present=1): with the controls drawer open, focus is never hidden`, async ({
+    page,
+  }) => {
+    await page.setViewportSize({ width: 1280, height: 720 });
+    await openScene(page, `#${s.path}?present=1`);
+    const toggle = page.getByTestId('controls-drawer-toggle');
+    test.skip((await toggle.count()) === 0, 'this scene has no stage drawer');
+    await toggle.click();
+    await expect(page.getByTestId('controls-drawer')).toBeVisible();
+    const hidden: string[] = [];
+    for (let i = 0; i < 40; i++) {
+      await page.keyboard.press('Tab');
+      const why = await focusObscured(page);
+      if (why) hidden.push(why);
+    }
+    expect(hidden).toEqual([]);
+  });
+}

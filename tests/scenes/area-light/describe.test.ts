@@ -136,13 +136,12 @@ describe('the running estimate in words, as a table and as ticks', () => {
     const text = describeRunning(run, fr.k, ref);
     expect(text).toContain(`1024 of 1024 samples`);
     expect(text).toContain(`reference ${formatNumber(ref, 4)}`);
-    expect(text).toContain(
-      cross.length === 0
-        ? 'never crosses'
-        : cross.length === 1
-          ? 'crosses once'
-          : `crosses ${cross.length} times`,
-    );
+    const times = [
+      'never crosses the reference',
+      'crosses the reference once',
+      'crosses the reference twice',
+    ];
+    expect(text).toContain(times[cross.length] ?? `crosses the reference ${cross.length} times`);
     // a paused, earlier frame says other numbers
     expect(describeRunning(run, 40, ref)).not.toBe(text);
     expect(describeRunning(run, 0, ref)).toContain('no samples yet');

@@ -5,15 +5,25 @@
 import { memo, useMemo, type RefObject } from 'react';
 import type { LightStrategy } from '../../../core/lights';
 import type { Failure } from '../../../core/failure';
-import { Notice, Panel, Plot, Readout, ShowAsTable, summarizeSeries, type PlotTrace } from '../../../ui';
+import {
+  Notice,
+  Panel,
+  Plot,
+  Readout,
+  SERIES,
+  ShowAsTable,
+  summarizeSeries,
+  type PlotTrace,
+} from '../../../ui';
 import type { StrategyEstimate, TimingPoint, convergence } from '../model';
 import { STRATEGIES, STRATEGY_LABEL, STRATEGY_SHORT } from '../strategies';
 import { fmt } from './format';
 
+/** The shared series colours (contrast and colour-vision checked in both themes). */
 const COLORS: Record<LightStrategy, string> = {
-  area: '#b34700',
-  'solid-angle': '#1f5fa8',
-  cosine: '#1d7a3a',
+  area: SERIES[1],
+  'solid-angle': SERIES[0],
+  cosine: SERIES[2],
 };
 /** A marker shape per strategy, so that colour is never the only cue. */
 const SYMBOLS: Record<LightStrategy, string> = {
@@ -102,7 +112,7 @@ export const StrategyTable = memo(function StrategyTable({
             <th scope="col">strategy</th>
             <th scope="col">estimate</th>
             <th scope="col">std. error σ</th>
-            <th scope="col">(est. − ref.)/σ</th>
+            <th scope="col">(est.&nbsp;−&nbsp;ref.)/σ</th>
           </tr>
         </thead>
         <tbody>

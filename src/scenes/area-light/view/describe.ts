@@ -158,6 +158,8 @@ export function describeRunning(run: SampleRun, k: number, reference: number): s
     : ` The reference is ${num(reference)} (dashed).`;
   const crossings = referenceCrossings(run, ks, reference).length;
   const times =
-    crossings === 0 ? 'never crosses' : crossings === 1 ? 'crosses once' : `crosses ${crossings} times`;
-  return `${sentence}${band} It ${times} the reference among the counts read out.`;
+    crossings === 0
+      ? 'never crosses the reference'
+      : `crosses the reference ${crossings === 1 ? 'once' : crossings === 2 ? 'twice' : `${crossings} times`}`;
+  return `${sentence}${band} It ${times} among the counts read out.`;
 }

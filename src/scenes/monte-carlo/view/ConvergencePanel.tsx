@@ -1,12 +1,12 @@
 /** Convergence as N grows: running estimate and |error| log-log with guides and fitted slopes (one run per strategy, in the worker). */
 import { useEffect, useMemo, useRef } from 'react';
-import { formatNumber, Panel, Plot, ShowAsTable, useThrottled, type PlotTrace } from '../../../ui';
+import { formatNumber, Panel, useThrottled, type PlotTrace } from '../../../ui';
 import { useAutoRun, type WorkerFactory } from '../../../workers';
 import { atRoundingLevel } from '../model';
 import { formatCount } from '../../../ui/format';
 import type { ProblemArgs, SeriesData } from '../jobs';
 import { REDRAW_MS, useLegendRoom } from './hooks';
-import { arr, Heading, L_ERR, L_EST, RunBar, strategyLine } from './plotStyle';
+import { arr, L_ERR, L_EST, RunBar, DescribedPlot, strategyLine } from './plotStyle';
 import type { McTasks } from '../mc.worker';
 import { describeSeriesSet, seriesTable } from './plotWords';
 
@@ -132,35 +132,27 @@ export function ConvergencePanel({
         {cur?.problems.length ? (
           <p className="mc-note">Left out: {cur.problems.map((p) => p.message).join('; ')}</p>
         ) : null}
-        <Heading>Running estimate</Heading>
-        <Plot
+        <DescribedPlot
+          id="convergence-estimate"
+          heading="Running estimate"
           data={estData}
           height={h}
           label="Running estimate against the number of samples N, on a log axis, for several strategies, with the exact value"
           description={words.est}
           layout={L_EST}
-          testId="convergence-estimate-plot"
-        />
-        <ShowAsTable
           caption="Running estimate against N, per strategy"
-          columns={words.estTable.columns}
-          rows={words.estTable.rows}
-          testId="convergence-estimate-table"
+          table={words.estTable}
         />
-        <Heading>|error| of one run, log-log, with N⁻½ and N⁻¹ guides</Heading>
-        <Plot
+        <DescribedPlot
+          id="convergence-error"
+          heading="|error| of one run, log-log, with N⁻½ and N⁻¹ guides"
           data={errData}
           height={h}
           label="Absolute error against N on log-log axes, with guide lines falling as N to the −½ and N to the −1 and fitted slopes"
           description={words.err}
           layout={L_ERR}
-          testId="convergence-error-plot"
-        />
-        <ShowAsTable
           caption="|estimate − exact| against N, per strategy"
-          columns={words.errTable.columns}
-          rows={words.errTable.rows}
-          testId="convergence-error-table"
+          table={words.errTable}
         />
         {exactLabels.length ? (
           <p className="mc-note" data-testid="exact-strategies">

@@ -1,7 +1,7 @@
 /** f and the pdf (scaled to f's height) on the same axes, with the worked samples marked. */
 import { useMemo } from 'react';
-import { formatNumber, Plot, ShowAsTable, type PlotTrace } from '../../../ui';
-import { arr, COLORS, L_FUNC } from './plotStyle';
+import { formatNumber, type PlotTrace } from '../../../ui';
+import { arr, COLORS, L_FUNC, DescribedPlot } from './plotStyle';
 import { describeSeriesSet, seriesTable } from './plotWords';
 
 /** f and p × scale on the same axes, with the worked samples marked. */
@@ -69,19 +69,15 @@ export function FunctionPlot({
   }, [curve, samples]);
   return (
     <>
-      <Plot
+      <DescribedPlot
+        id="integrand"
         data={data}
         height={260}
         label="The integrand f(x) and the sampling pdf p(x), scaled to the same height, over [a, b]"
         description={words.text}
         layout={L_FUNC}
-        testId="integrand-plot"
-      />
-      <ShowAsTable
         caption="f(x) and the pdf p(x) over [a, b]"
-        columns={words.table.columns}
-        rows={words.table.rows}
-        testId="integrand-table"
+        table={words.table}
       />
     </>
   );

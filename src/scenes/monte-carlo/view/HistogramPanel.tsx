@@ -1,11 +1,11 @@
 /** Unbiasedness: the histogram of many independent estimates at fixed N, with their mean (core Welford). */
 import { useMemo, useRef } from 'react';
-import { formatNumber, Panel, Plot, Readout, ShowAsTable, useThrottled, type PlotTrace } from '../../../ui';
+import { formatNumber, Panel, Readout, useThrottled, type PlotTrace } from '../../../ui';
 import { useAutoRun, type WorkerFactory } from '../../../workers';
 import { estimateFromTerms, histogram } from '../../../core/estimators';
 import type { ProblemArgs } from '../jobs';
 import { REDRAW_MS, useLegendRoom } from './hooks';
-import { arr, COLORS, L_HIST, CountField, RunBar } from './plotStyle';
+import { arr, COLORS, L_HIST, CountField, DescribedPlot, RunBar } from './plotStyle';
 import type { McTasks } from '../mc.worker';
 import { describeEstimateHistogram } from './plotWords';
 
@@ -137,19 +137,15 @@ export function HistogramPanel({
             }
           />
         </div>
-        <Plot
+        <DescribedPlot
+          id="estimates-histogram"
           data={data}
           height={280 + room / 2}
           label="Histogram of many independent estimates at fixed N, with their mean and the exact integral"
           description={words.text}
           layout={L_HIST}
-          testId="estimates-histogram-plot"
-        />
-        <ShowAsTable
           caption={`Histogram of the independent estimates, each from ${N} samples: bins and counts`}
-          columns={['from', 'to', 'estimates']}
-          rows={words.rows}
-          testId="estimates-histogram-table"
+          table={{ columns: ['from', 'to', 'estimates'], rows: words.rows }}
         />
         <p className="mc-note">
           E[⟨I⟩] = ∫ f dx for any valid p: each estimate misses, but their mean lands on the integral (within

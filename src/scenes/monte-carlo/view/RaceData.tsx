@@ -97,15 +97,34 @@ export function RaceData({
     const logN = log10s(curve.n);
     const events = (est: readonly number[]) =>
       crossings(logN, est, exact).map((x) => ({ x, kind: 'zero' as const, label: 'crosses the exact I' }));
-    return {
-      logN,
-      uEvents: events(curve.u),
-      iEvents: events(curve.i),
-      uErr: log10s(curve.uErr),
-      iErr: log10s(curve.iErr),
-      rows: tableRows(curve),
-    };
-  }, [curve, exact]);
+    const lanes = [
+      ['uniform', curve.u, curve.uErr],
+      ['importance', curve.i, curve.iErr],
+    ] as const;
+    // each lane's running estimate (a tick where it crosses I), and its |error| on log–log axes
+    // (none for a lane with zero variance: its |error| is rounding noise)
+    const traces = lanes.flatMap(([lane, est, err]) => [
+      {
+        id: `trace-${lane}-estimate`,
+        label: `${lane} running estimate against log₁₀ N`,
+        ys: est,
+        yLabel: `${lane} estimate`,
+        events: events(est),
+      },
+      ...(lane === 'importance' && zeroVarianceImportance
+        ? []
+        : [
+            {
+              id: `trace-${lane}-error`,
+              label: `${lane} |error| against N, log–log`,
+              ys: log10s(err),
+              yLabel: 'log₁₀ |error|',
+              events: [],
+            },
+          ]),
+    ]);
+    return { logN, traces, rows: tableRows(curve) };
+  }, [curve, exact, zeroVarianceImportance]);
   return (
     <section className="mc-race-data" aria-label="The race as a table and as sound">
       <ShowAsTable
@@ -123,42 +142,18 @@ export function RaceData({
         testId="race-table"
       />
       <div className="mc-traces">
-        <AudioTrace
-          label="uniform running estimate against log₁₀ N"
-          xs={d.logN}
-          ys={curve.u}
-          xLabel="log₁₀ N"
-          yLabel="uniform estimate"
-          events={d.uEvents}
-          testId="trace-uniform-estimate"
-        />
-        <AudioTrace
-          label="importance running estimate against log₁₀ N"
-          xs={d.logN}
-          ys={curve.i}
-          xLabel="log₁₀ N"
-          yLabel="importance estimate"
-          events={d.iEvents}
-          testId="trace-importance-estimate"
-        />
-        <AudioTrace
-          label="uniform |error| against N, log–log"
-          xs={d.logN}
-          ys={d.uErr}
-          xLabel="log₁₀ N"
-          yLabel="log₁₀ |error|"
-          testId="trace-uniform-error"
-        />
-        {zeroVarianceImportance ? null : (
+        {d.traces.map((tr) => (
           <AudioTrace
-            label="importance |error| against N, log–log"
+            key={tr.id}
+            label={tr.label}
             xs={d.logN}
-            ys={d.iErr}
+            ys={tr.ys}
             xLabel="log₁₀ N"
-            yLabel="log₁₀ |error|"
-            testId="trace-importance-error"
+            yLabel={tr.yLabel}
+            events={tr.events}
+            testId={tr.id}
           />
-        )}
+        ))}
       </div>
     </section>
   );

@@ -11,7 +11,7 @@
  * segments up to t (appending to the previous frame's string) and adds the point at t itself.
  * React renders the exact position on pause, step, seek and reset.
  */
-import { memo, useLayoutEffect, useMemo, useRef, type ReactNode } from 'react';
+import { memo, useLayoutEffect, useMemo, useRef } from 'react';
 import {
   DescribedFigure,
   formatNumber,
@@ -142,47 +142,30 @@ function drawLane(r: LaneRefs, s: LaneState): void {
   if (r.after.current && r.after.current.textContent !== after) r.after.current.textContent = after;
 }
 
-function Lane({
-  id,
-  name,
-  color,
-  r,
-  children,
-}: {
-  id: string;
-  name: ReactNode;
-  color: string;
-  r: LaneRefs;
-  children: ReactNode;
-}) {
+/** A lane's readouts: its newest sample and term, its estimate and ± s/√N (written per frame). */
+function LaneReadouts({ id, r }: { id: string; r: LaneRefs }) {
   return (
-    <div className="mc-lane" style={{ borderTopColor: color }}>
-      <h4 className={`mc-lane-title mc-area-t${id[0]}`} style={{ color }}>
-        {name}
-      </h4>
-      <div className={`readouts mc-lane-readouts mc-area-r${id[0]}`}>
-        <LiveReadout
-          id={`race-${id}-x`}
-          label={
-            <>
-              x<sub ref={r.sub} />
-            </>
-          }
-          outRef={r.x}
-        />
-        <LiveReadout id={`race-${id}-term`} label="its term f/p" outRef={r.term} />
-        <LiveReadout
-          id={`race-${id}-estimate`}
-          label={
-            <>
-              ⟨I⟩ after <span ref={r.after} />
-            </>
-          }
-          outRef={r.estimate}
-        />
-        <LiveReadout id={`race-${id}-stderr`} label="± s/√N" outRef={r.stderr} />
-      </div>
-      {children}
+    <div className="readouts mc-lane-readouts mc-half">
+      <LiveReadout
+        id={`race-${id}-x`}
+        label={
+          <>
+            x<sub ref={r.sub} />
+          </>
+        }
+        outRef={r.x}
+      />
+      <LiveReadout id={`race-${id}-term`} label="its term f/p" outRef={r.term} />
+      <LiveReadout
+        id={`race-${id}-estimate`}
+        label={
+          <>
+            ⟨I⟩ after <span ref={r.after} />
+          </>
+        }
+        outRef={r.estimate}
+      />
+      <LiveReadout id={`race-${id}-stderr`} label="± s/√N" outRef={r.stderr} />
     </div>
   );
 }
@@ -385,6 +368,139 @@ export const RaceFigure = memo(function RaceFigure({
     );
   };
 
+  // the figure's pieces: the shared plots, and per lane its title, readouts, histogram and
+  // running estimate; the page groups them by lane, the stage lays them out in one grid
+  const fPlot = (
+    <DescribedFigure
+      key="f"
+      className="mc-svg-fig"
+      label="Each sample drops onto f"
+      description={words.integrand}
+      quiet
+      testId="race-integrand"
+    >
+      <figcaption>
+        Each xᵢ drops onto f
+        {staged ? null : ` (● uniform, ○ importance; newest ${RECENT} as ticks, uniform above)`}
+      </figcaption>
+      <svg ref={svgF} viewBox={`0 0 ${W} ${H}`} aria-hidden="true">
+        <Axes xTicks={fig.xt} yTicks={fig.yt} xLabel="x" yLabel="f(x)" />
+        <path d={fig.fPath} className="mc-svg-f" />
+        <path d={fig.pPath} style={{ stroke: C_I }} className="mc-svg-p" />
+        {rug(g.rugU, C_U, 0)}
+        {rug(g.rugI, C_I, 1)}
+        {newestDot(g.dotU, C_U, 0)}
+        {newestDot(g.dotI, C_I, 1)}
+      </svg>
+    </DescribedFigure>
+  );
+  const xPlot = (
+    <DescribedFigure
+      key="x"
+      className="mc-svg-fig mc-tall-only"
+      label="|error| of the running estimates against N, log–log"
+      description={words.errors}
+      quiet
+      testId="race-errors"
+    >
+      <figcaption>|⟨I⟩ − I| against N, log-log</figcaption>
+      <svg viewBox={`0 0 ${W} ${H}`} aria-hidden="true">
+        <Axes xTicks={fig.nt} yTicks={fig.lt} xLabel="N (samples)" yLabel="|error|" />
+        <path d={fig.guide} className="mc-svg-guide" />
+        <path ref={setPath('uErr')} d={g.uErr} style={{ stroke: C_U }} className="mc-svg-line" />
+        <path
+          ref={setPath('iErr')}
+          d={g.iErr}
+          style={{ stroke: C_I }}
+          className="mc-svg-line mc-svg-dashed"
+        />
+        <LineKey
+          x={M.l + PW - 140}
+          y={M.t + 14}
+          items={[
+            ['uniform', C_U, false],
+            ['importance', C_I, true],
+          ]}
+        />
+      </svg>
+    </DescribedFigure>
+  );
+  const lanes = (
+    [
+      {
+        id: 'uniform',
+        name: 'Uniform, p = 1/(b − a)',
+        color: C_U,
+        refs: laneU,
+        k: 'u',
+        xs: track.uniform.x,
+        py: hist.pu,
+        pdf: `p(x) = ${formatNumber(1 / (b - a), 4)}`,
+      },
+      {
+        id: 'importance',
+        name: `Importance, ${importanceLabel}`,
+        color: C_I,
+        refs: laneI,
+        k: 'i',
+        xs: track.importance.x,
+        py: hist.pi,
+        pdf: importanceName === 'p ∝ f' ? 'p(x) ∝ f(x)' : `p(x), ${importanceName}`,
+      },
+    ] as const
+  ).map(({ id, name, color, refs, k, xs, py, pdf }) => ({
+    id,
+    color,
+    title: (
+      <h4 key={`t${k}`} className="mc-lane-title mc-half" style={{ color }}>
+        {name}
+      </h4>
+    ),
+    readouts: <LaneReadouts key={`r${k}`} id={id} r={refs} />,
+    hist: (
+      <RaceHistogram
+        key={`h${k}`}
+        id={id}
+        xs={xs}
+        a={a}
+        b={b}
+        px={curve.x}
+        py={py}
+        pdfLabel={pdf}
+        yMax={hist.yMax}
+        color={color}
+        tl={tl}
+        t={fr.t}
+        half={half}
+        staged={staged}
+      />
+    ),
+    est: (
+      <DescribedFigure
+        key={`e${k}`}
+        className="mc-svg-fig mc-tall-only"
+        label={`The ${id} running estimate with its ± s/√N band, against N on a log axis`}
+        description={words[id]}
+        quiet
+        testId={`race-estimate-${id}`}
+      >
+        <figcaption>⟨I⟩ against N, with its ± s/√N band</figcaption>
+        <svg viewBox={`0 0 ${W} ${H}`} aria-hidden="true">
+          <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
+          <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
+          <path ref={setPath(`${k}Band`)} d={g[`${k}Band`]} style={{ fill: color }} className="mc-svg-band" />
+          <path
+            ref={setPath(`${k}Est`)}
+            d={g[`${k}Est`]}
+            style={{ stroke: color }}
+            className={k === 'i' ? 'mc-svg-line mc-svg-dashed' : 'mc-svg-line'}
+          />
+        </svg>
+      </DescribedFigure>
+    ),
+  }));
+  const [U, Im] = lanes;
+
   return (
     <div className={staged ? 'mc-race mc-race-staged' : 'mc-race'} ref={box} data-testid="race">
       <DescribedFigure
@@ -406,122 +522,20 @@ export const RaceFigure = memo(function RaceFigure({
           </TimelineTransport>
         </Revealed>
         <div className={staged ? 'mc-race-grid stage-figure' : 'mc-race-grid'}>
-          <DescribedFigure
-            className="mc-svg-fig mc-area-f"
-            label="Each sample drops onto f"
-            description={words.integrand}
-            quiet
-            testId="race-integrand"
-          >
-            <figcaption>
-              Each xᵢ drops onto f
-              {staged ? null : ` (● uniform, ○ importance; newest ${RECENT} as ticks, uniform above)`}
-            </figcaption>
-            <svg ref={svgF} viewBox={`0 0 ${W} ${H}`} aria-hidden="true">
-              <Axes xTicks={fig.xt} yTicks={fig.yt} xLabel="x" yLabel="f(x)" />
-              <path d={fig.fPath} className="mc-svg-f" />
-              <path d={fig.pPath} style={{ stroke: C_I }} className="mc-svg-p" />
-              {rug(g.rugU, C_U, 0)}
-              {rug(g.rugI, C_I, 1)}
-              {newestDot(g.dotU, C_U, 0)}
-              {newestDot(g.dotI, C_I, 1)}
-            </svg>
-          </DescribedFigure>
-          <DescribedFigure
-            className="mc-svg-fig mc-area-x"
-            label="|error| of the running estimates against N, log–log"
-            description={words.errors}
-            quiet
-            testId="race-errors"
-          >
-            <figcaption>|⟨I⟩ − I| against N, log-log</figcaption>
-            <svg viewBox={`0 0 ${W} ${H}`} aria-hidden="true">
-              <Axes xTicks={fig.nt} yTicks={fig.lt} xLabel="N (samples)" yLabel="|error|" />
-              <path d={fig.guide} className="mc-svg-guide" />
-              <path ref={setPath('uErr')} d={g.uErr} style={{ stroke: C_U }} className="mc-svg-line" />
-              <path
-                ref={setPath('iErr')}
-                d={g.iErr}
-                style={{ stroke: C_I }}
-                className="mc-svg-line mc-svg-dashed"
-              />
-              <LineKey
-                x={M.l + PW - 118}
-                y={M.t + 14}
-                items={[
-                  ['uniform', C_U, false],
-                  ['importance', C_I, true],
-                ]}
-              />
-            </svg>
-          </DescribedFigure>
-          {(
-            [
-              {
-                id: 'uniform',
-                name: 'Uniform, p = 1/(b − a)',
-                color: C_U,
-                refs: laneU,
-                k: 'u',
-                xs: track.uniform.x,
-                py: hist.pu,
-                pdf: `p(x) = ${formatNumber(1 / (b - a), 4)}`,
-              },
-              {
-                id: 'importance',
-                name: `Importance, ${importanceLabel}`,
-                color: C_I,
-                refs: laneI,
-                k: 'i',
-                xs: track.importance.x,
-                py: hist.pi,
-                pdf: importanceName === 'p ∝ f' ? 'p(x) ∝ f(x)' : `p(x), ${importanceName}`,
-              },
-            ] as const
-          ).map(({ id, name, color, refs, k, xs, py, pdf }) => (
-            <Lane key={id} id={id} name={name} color={color} r={refs}>
-              <RaceHistogram
-                id={id}
-                xs={xs}
-                a={a}
-                b={b}
-                px={curve.x}
-                py={py}
-                pdfLabel={pdf}
-                yMax={hist.yMax}
-                color={color}
-                tl={tl}
-                t={fr.t}
-                half={half}
-                staged={staged}
-              />
-              <DescribedFigure
-                className={`mc-svg-fig mc-area-e${k}`}
-                label={`The ${id} running estimate with its ± s/√N band, against N on a log axis`}
-                description={words[id]}
-                quiet
-                testId={`race-estimate-${id}`}
-              >
-                <figcaption>⟨I⟩ against N, with its ± s/√N band</figcaption>
-                <svg viewBox={`0 0 ${W} ${H}`} aria-hidden="true">
-                  <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
-                  <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
-                  <path
-                    ref={setPath(`${k}Band`)}
-                    d={g[`${k}Band`]}
-                    style={{ fill: color }}
-                    className="mc-svg-band"
-                  />
-                  <path
-                    ref={setPath(`${k}Est`)}
-                    d={g[`${k}Est`]}
-                    style={{ stroke: color }}
-                    className={k === 'i' ? 'mc-svg-line mc-svg-dashed' : 'mc-svg-line'}
-                  />
-                </svg>
-              </DescribedFigure>
-            </Lane>
-          ))}
+          {staged
+            ? [U.title, Im.title, U.readouts, Im.readouts, U.hist, fPlot, Im.hist, U.est, xPlot, Im.est]
+            : [
+                fPlot,
+                xPlot,
+                ...lanes.map((L) => (
+                  <div key={L.id} className="mc-lane" style={{ borderTopColor: L.color }}>
+                    {L.title}
+                    {L.readouts}
+                    {L.hist}
+                    {L.est}
+                  </div>
+                )),
+              ]}
         </div>
         <p className="mc-note mc-race-note">
           Solid blue: uniform; dashed orange: importance (its pdf dashed on f). Grey dashes: the exact I ={' '}

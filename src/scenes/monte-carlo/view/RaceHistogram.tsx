@@ -129,7 +129,7 @@ export function RaceHistogram({
   return (
     <>
       <DescribedFigure
-        className={`mc-svg-fig mc-hist mc-area-h${id[0]}`}
+        className="mc-svg-fig mc-hist"
         label={`Histogram of every ${id} sample drawn so far, against ${pdfLabel}`}
         description={data.description}
         quiet

@@ -1,6 +1,6 @@
 /** RMSE over independent (randomized) runs against N, and against the measured run time. */
 import { useMemo, useRef } from 'react';
-import { Panel, Plot, ShowAsTable, useThrottled, type PlotTrace } from '../../../ui';
+import { Panel, useThrottled, type PlotTrace } from '../../../ui';
 import { useAutoRun, type WorkerFactory } from '../../../workers';
 import { atRoundingLevel, sortedByX } from '../model';
 import { formatCount } from '../../../ui/format';
@@ -10,12 +10,12 @@ import {
   arr,
   clampArr,
   COLORS,
-  Heading,
   hexA,
   L_RMSE,
   L_TIME,
   CountField,
   RunBar,
+  DescribedPlot,
   strategyLine,
 } from './plotStyle';
 import type { McTasks } from '../mc.worker';
@@ -161,35 +161,27 @@ export function RmsePanel({
           }
         />
         <RunBar task={task} label="Independent runs…" />
-        <Heading>RMSE over the runs (band: 10–90 % of |error|)</Heading>
-        <Plot
+        <DescribedPlot
+          id="rmse"
+          heading="RMSE over the runs (band: 10–90 % of |error|)"
           data={rmseData}
           height={h}
           label="Root mean square error over independent runs against N, log-log, with bands from the 10th to the 90th percentile of the absolute error"
           description={words.rmse}
           layout={L_RMSE}
-          testId="rmse-plot"
-        />
-        <ShowAsTable
           caption="RMSE over the runs and the 10–90 % band of |error|, against N, per strategy"
-          columns={words.rmseTable.columns}
-          rows={words.rmseTable.rows}
-          testId="rmse-table"
+          table={words.rmseTable}
         />
-        <Heading>Accuracy per millisecond: RMSE against run time</Heading>
-        <Plot
+        <DescribedPlot
+          id="rmse-time"
+          heading="Accuracy per millisecond: RMSE against run time"
           data={timeData}
           height={h}
           label="RMSE against the measured wall-clock time of one estimate, log-log, per strategy"
           description={words.time}
           layout={L_TIME}
-          testId="rmse-time-plot"
-        />
-        <ShowAsTable
           caption="Time of one estimate (ms) and its RMSE, against N, per strategy"
-          columns={words.timeTable.columns}
-          rows={words.timeTable.rows}
-          testId="rmse-time-table"
+          table={words.timeTable}
         />
         {rmExactLabels.length ? (
           <p className="mc-note">

@@ -1,6 +1,6 @@
 /** Shared look of the scene's Plotly views: colours, legend and margins, layouts, the run bar. */
 import type { ReactNode } from 'react';
-import { NumberField } from '../../../ui';
+import { NumberField, Plot, ShowAsTable, type PlotLayout, type PlotTrace } from '../../../ui';
 import type { WorkerJob } from '../../../workers';
 
 export const COLORS = ['#1f5fa8', '#a13f00', '#1d7a3a', '#7b3fa1', '#b8860b', '#d6336c', '#117a8b'];
@@ -121,4 +121,46 @@ export const clampArr = (a: Float64Array) => arr(a).map((v) => (Number.isFinite(
 export function hexA(hex: string, a: number): string {
   const v = parseInt(hex.slice(1), 16);
   return `rgba(${(v >> 16) & 255}, ${(v >> 8) & 255}, ${v & 255}, ${a})`;
+}
+
+/**
+ * A Plotly plot with its heading, its accessible name and description, and its data as a "Show as
+ * table" under it (`table`: ./plotWords seriesTable, a column per series). Test ids `${id}-plot`
+ * and `${id}-table`.
+ */
+export function DescribedPlot({
+  id,
+  heading,
+  data,
+  layout,
+  height,
+  label,
+  description,
+  caption,
+  table,
+}: {
+  id: string;
+  heading?: ReactNode;
+  data: PlotTrace[];
+  layout: PlotLayout;
+  height: number;
+  label: string;
+  description: string;
+  caption: string;
+  table: { columns: string[]; rows: number[][] };
+}) {
+  return (
+    <>
+      {heading ? <Heading>{heading}</Heading> : null}
+      <Plot
+        data={data}
+        height={height}
+        label={label}
+        description={description}
+        layout={layout}
+        testId={`${id}-plot`}
+      />
+      <ShowAsTable caption={caption} columns={table.columns} rows={table.rows} testId={`${id}-table`} />
+    </>
+  );
 }

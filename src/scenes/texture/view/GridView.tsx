@@ -63,6 +63,8 @@ interface Props extends ShownTexture {
   /** Enter on the grid while editing: go to the value field. */
   onEditEnter: () => void;
   present: boolean;
+  /** Ask first: no nearest-node highlight and no bilinear stencil (they show the answers). */
+  ask?: boolean;
   /** Set to a function that moves the query marker and the stencil to a lookup directly (per animation frame). */
   drawRef?: { current: ((q: Lookup) => void) | null };
 }
@@ -79,6 +81,7 @@ export function GridView({
   onSelect,
   onEditEnter,
   present,
+  ask = false,
   drawRef,
 }: Props) {
   const win = useMemo(() => viewWindow(grid, opts), [grid, opts]);
@@ -221,8 +224,15 @@ export function GridView({
           onPointerCancel={end}
           onKeyDown={onKeyDown}
         >
-          <StaticLayer grid={grid} opts={opts} range={range} win={win} unitsPerPx={unitsPerPx} />
-          <QueryLayer grid={grid} win={win} q={q} gRef={stencilRef} />
+          <StaticLayer
+            grid={grid}
+            opts={opts}
+            range={range}
+            win={win}
+            unitsPerPx={unitsPerPx}
+            present={present}
+          />
+          {ask ? null : <QueryLayer grid={grid} win={win} q={q} gRef={stencilRef} />}
           <LabelLayer
             grid={grid}
             opts={opts}
@@ -403,7 +413,8 @@ const StaticLayer = memo(function StaticLayer({
   range,
   win,
   unitsPerPx,
-}: ShownTexture & { win: ViewWindow; unitsPerPx: number }) {
+  present,
+}: ShownTexture & { win: ViewWindow; unitsPerPx: number; present: boolean }) {
   const W = grid.width;
   const H = grid.height;
   const nmax = Math.max(W, H);
@@ -461,7 +472,8 @@ const StaticLayer = memo(function StaticLayer({
   const x1 = sx(1, win);
   const y0 = sy(1, win);
   const y1 = sy(0, win);
-  const tickFont = Math.max(28, MIN_TEXT_PX * unitsPerPx);
+  // ticks: at least 12.5 px on screen, 18 px in classroom mode
+  const tickFont = Math.max(28, (present ? 18 : MIN_TEXT_PX) * unitsPerPx);
   // ticks at the nodes while they fit (a label is about 2.2 em wide), else 0, ½, 1
   const fits = (n: number) => n <= 5 && VB / (win.max - win.min) / Math.max(1, n - 1) > tickFont * 2.4;
   const ticks = fits(W) ? Array.from({ length: W }, (_, i) => nodeCoord(i, W, opts.align)) : [0, 0.5, 1];
@@ -515,7 +527,7 @@ const LabelLayer = memo(function LabelLayer({
   const W = grid.width;
   const H = grid.height;
   const nmax = Math.max(W, H);
-  const fontSize = Math.min(present ? 44 : 38, (VB / (nmax + 0.5)) * 0.34);
+  const fontSize = Math.min(present ? 56 : 38, (VB / (nmax + 0.5)) * 0.34);
   if (nmax > 16 || fontSize / unitsPerPx < 12) return null;
   const items: React.ReactNode[] = [];
   for (let j = 0; j < H; j++) {
