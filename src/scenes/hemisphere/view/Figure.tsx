@@ -16,11 +16,11 @@ import {
   type Timeline,
 } from '../../../ui';
 import { formatCount } from '../../../ui/format';
-import { fillSequence2D, type SequenceKind } from '../../../core/random';
-import { animDuration, animFrame, type AnimFrame, type AnimKind, type Lobe } from '../model';
+import { fillSequence2D } from '../../../core/random';
+import { animDuration, animFrame, type AnimFrame, type AnimKind } from '../model';
 import { Stage } from '../../../ui/stage';
-import { FigureCaption, FigureReadouts } from './FigureText';
-import type { HemisphereSchema, LobeId } from '../params';
+import { FigureCaption, FigureReadouts, type FigureState } from './FigureText';
+import type { HemisphereSchema } from '../params';
 // Static, not lazy: the 3D panel is on the first screen, and a Suspense fallback of another height
 // shifted the layout when it arrived (three.js itself still loads lazily, inside Viewport).
 import { HemisphereView } from './HemisphereView';
@@ -44,13 +44,7 @@ const SquareMemo = memo(UnitSquare);
 const stageViewHeight = (held: boolean) =>
   `max(9rem, calc(100dvh - var(--stage-top, 0px) - ${held ? 12 : 10.5}rem))`;
 
-interface FigureProps {
-  lobe: Lobe | null;
-  lobeId: LobeId;
-  kind: SequenceKind;
-  seed: number;
-  n: number;
-  anim: AnimKind;
+interface FigureProps extends FigureState {
   t: number;
   play: boolean;
   setParams: SceneProps<HemisphereSchema>['setParams'];
