@@ -1,13 +1,17 @@
 import { describe, expect, it } from 'vitest';
-import { makeLobe, morphFraction } from '../../../src/scenes/hemisphere/model';
-import { cellImage } from '../../../src/scenes/hemisphere/stratum';
+import { computeDrawStats, makeLobe, morphFraction } from '../../../src/scenes/hemisphere/model';
+import { cellCounts, cellImage } from '../../../src/scenes/hemisphere/stratum';
 import {
+  chi2Bin,
+  describeChi2Bins,
   describeHemisphere,
+  describeMarginal,
+  describeSquare,
   describeStratum,
   whereTheyBunch,
   type HemisphereState,
 } from '../../../src/scenes/hemisphere/view/describe';
-import { marginalShape } from '../../../src/scenes/hemisphere/marginals';
+import { cdfCurve, histogramCdf, marginalShape } from '../../../src/scenes/hemisphere/marginals';
 import { EXAM_E2PI_M1, examLobeK } from '../../../src/core/sampling';
 import { formatSignificant } from '../../../src/ui/format';
 
@@ -117,5 +121,52 @@ describe('the stratum described', () => {
     expect(d).toContain('hidden until you reveal');
     expect(d).not.toContain('sr');
     expect(describeStratum(null, null, null, 100)).toBe('No stratum followed.');
+  });
+});
+
+describe('the plots described', () => {
+  it("the CDF by trapezoids is the exam's sin²θ and (eᵠ − 1)/(e²ᵖ − 1)", () => {
+    const th = cdfCurve(exam.thetaPdf, 0, Math.PI / 2, 576);
+    for (let k = 0; k <= 576; k += 48) expect(th.y[k]).toBeCloseTo(Math.sin(th.x[k]) ** 2, 5);
+    const ph = cdfCurve(exam.phiPdf, 0, 2 * Math.PI, 576);
+    for (let k = 0; k <= 576; k += 48) expect(ph.y[k]).toBeCloseTo(Math.expm1(ph.x[k]) / EXAM_E2PI_M1, 5);
+    expect(th.y[576]).toBe(1);
+  });
+
+  it("the samples' CDF climbs by each bin's share and ends at 1", () => {
+    const h = histogramCdf([0.5, 1.5, 2], 0.25, 0);
+    expect(Array.from(h.x)).toEqual([0, 0.25, 0.5, 0.75]);
+    expect(Array.from(h.y)).toEqual([0, 0.125, 0.5, 1]);
+  });
+
+  it('a marginal histogram: both series, and where they differ most', () => {
+    const stats = computeDrawStats(exam, Math.cos, 'independent', 1, 2000);
+    const h = stats.hist!.theta;
+    const d = describeMarginal(h, 'θ', 2000, exam.thetaPdf);
+    expect(d).toContain('Histogram of 2,000 sampled θ (rad) in 36 bins');
+    expect(d).toContain(`maximum 1 at θ = ${f3(Math.PI / 4)}`);
+    let gap = 0;
+    for (let b = 0; b < 36; b++) gap = Math.max(gap, Math.abs(h.density[b] - exam.thetaPdf(h.centers[b])));
+    expect(d).toContain(`by ${f3(gap)}.`);
+  });
+
+  it('the χ² bins: ranges, and the worst bin with its counts', () => {
+    const c = computeDrawStats(exam, Math.cos, 'independent', 1, 2000).chi2!;
+    const d = describeChi2Bins(c);
+    expect(d).toMatch(/^200 bins of equal solid angle, 10 in cos θ by 20 in φ/);
+    let worst = 0;
+    for (let k = 0; k < 200; k++) if (Math.abs(chi2Bin(c, k).z) > Math.abs(chi2Bin(c, worst).z)) worst = k;
+    expect(d).toContain(`φ = ${f3(chi2Bin(c, worst).phi)} rad`);
+    expect(chi2Bin(c, 0)).toMatchObject({ cosTheta: 0.05, phi: Math.PI / 20 });
+  });
+
+  it('the square: how evenly its cells share the points', () => {
+    const counts = cellCounts('stratified', 1, 4096, 4096);
+    expect(describeSquare(counts, 4096, 4096, 'stratified')).toContain(
+      'each of its 64 cells holds from 64 to 64',
+    );
+    const ind = describeSquare(cellCounts('independent', 1, 20000, 4096), 4096, 20000, 'independent');
+    expect(ind).toContain('(the first of 20,000)');
+    expect(ind).toContain('(64 expected)');
   });
 });

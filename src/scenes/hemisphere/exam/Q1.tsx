@@ -4,8 +4,8 @@
  * derivation is always the exam's lobe k cos θ e^φ; another lobe's derivation is in "Explore further".
  */
 import type { ReactNode } from 'react';
-import { ExamPart, Derivation as DerivationBlock, LiveAnswer, KeyNote } from '../../../ui/exam';
-import { Revealed } from '../../../ui/ask';
+import { ExamPart, Derivation as DerivationBlock, KeyNote } from '../../../ui/exam';
+import { Answer } from '../view/Answer';
 import { MathTex, Readout, formatNumber } from '../../../ui';
 import { examInversion, type ExamChecks } from '../model';
 import { texNum } from '../view/tex';
@@ -123,13 +123,11 @@ export function Q1({
             ]}
           />
         </DerivationBlock>
-        <LiveAnswer testId="answer-1a">
-          <Revealed ask={ask} what="k">
-            <div className="readouts">
-              <Readout id="k" label="k (normalization of p(ω))" value={kValue} digits={8} note={kNote} />
-            </div>
-          </Revealed>
-        </LiveAnswer>
+        <Answer testId="answer-1a" ask={ask} what="k">
+          <div className="readouts">
+            <Readout id="k" label="k (normalization of p(ω))" value={kValue} digits={8} note={kNote} />
+          </div>
+        </Answer>
       </ExamPart>
 
       <ExamPart
@@ -253,15 +251,13 @@ export function Q1({
             </p>
           )}
         </DerivationBlock>
-        <LiveAnswer testId="answer-1b">
-          <Revealed ask={ask} what="the marginals">
-            <p>
-              p(θ) = sin 2θ on [0, π/2] and p(φ) = e<sup>φ</sup>/(e<sup>2π</sup> − 1) ={' '}
-              {texNumPlain(c.k / 2, 8)} e<sup>φ</sup> on [0, 2π); the histograms in (d) are drawn against
-              these curves.
-            </p>
-          </Revealed>
-        </LiveAnswer>
+        <Answer testId="answer-1b" ask={ask} what="the marginals">
+          <p>
+            p(θ) = sin 2θ on [0, π/2] and p(φ) = e<sup>φ</sup>/(e<sup>2π</sup> − 1) ={' '}
+            {texNumPlain(c.k / 2, 8)} e<sup>φ</sup> on [0, 2π); the histograms in (d) are drawn against these
+            curves.
+          </p>
+        </Answer>
       </ExamPart>
 
       <ExamPart id="1c" title="CDFs" asks={<>Find the cumulative distribution functions P(θ) and P(φ).</>}>
@@ -296,19 +292,17 @@ export function Q1({
             ]}
           />
         </DerivationBlock>
-        <LiveAnswer testId="answer-1c">
-          <Revealed ask={ask} what="the CDFs against the samples">
-            {xi && ex ? (
-              <p data-testid="cdf-example">
-                At the first sample of the current set, θ = {texNumPlain(ex.thetaAsin, 8)} and φ ={' '}
-                {texNumPlain(ex.phiLog1p, 8)}: P(θ) = {texNumPlain(ex.cdfTheta, 10)} and P(φ) ={' '}
-                {texNumPlain(ex.cdfPhi, 10)}, which are its ξ₁ = {texNumPlain(xi.xi1, 10)} and ξ₂ ={' '}
-                {texNumPlain(xi.xi2, 10)}: the CDF undoes the inversion of (d).
-              </p>
-            ) : null}
-            {cdfs}
-          </Revealed>
-        </LiveAnswer>
+        <Answer testId="answer-1c" ask={ask} what="the CDFs against the samples">
+          {xi && ex ? (
+            <p data-testid="cdf-example">
+              At the first sample of the current set, θ = {texNumPlain(ex.thetaAsin, 8)} and φ ={' '}
+              {texNumPlain(ex.phiLog1p, 8)}: P(θ) = {texNumPlain(ex.cdfTheta, 10)} and P(φ) ={' '}
+              {texNumPlain(ex.cdfPhi, 10)}, which are its ξ₁ = {texNumPlain(xi.xi1, 10)} and ξ₂ ={' '}
+              {texNumPlain(xi.xi2, 10)}: the CDF undoes the inversion of (d).
+            </p>
+          ) : null}
+          {cdfs}
+        </Answer>
       </ExamPart>
 
       <ExamPart
@@ -380,11 +374,9 @@ export function Q1({
             />
           ) : null}
         </DerivationBlock>
-        <LiveAnswer testId="answer-1d">
-          <Revealed ask={ask} what="the samples' histograms and the χ² test">
-            {answer1d}
-          </Revealed>
-        </LiveAnswer>
+        <Answer testId="answer-1d" ask={ask} what="the samples' histograms and the χ² test">
+          {answer1d}
+        </Answer>
       </ExamPart>
       {otherLobe}
     </>

@@ -3,8 +3,8 @@
  * (c) the unbiasedness proof written out, beside the empirical check ("repeat many times").
  */
 import type { ReactNode } from 'react';
-import { ExamPart, Derivation as DerivationBlock, LiveAnswer, KeyNote } from '../../../ui/exam';
-import { Revealed } from '../../../ui/ask';
+import { ExamPart, Derivation as DerivationBlock, KeyNote } from '../../../ui/exam';
+import { Answer } from '../view/Answer';
 import { MathTex, formatNumber } from '../../../ui';
 import { Steps } from '../view/Steps';
 import { texNum } from '../view/tex';
@@ -62,11 +62,9 @@ export function Q2({
             ]}
           />
         </DerivationBlock>
-        <LiveAnswer testId="answer-2a">
-          <Revealed ask={ask} what="the uniform estimate">
-            {answer2a}
-          </Revealed>
-        </LiveAnswer>
+        <Answer testId="answer-2a" ask={ask} what="the uniform estimate">
+          {answer2a}
+        </Answer>
       </ExamPart>
 
       <ExamPart
@@ -95,11 +93,9 @@ export function Q2({
             like f and can be infinite when p vanishes faster than f.
           </p>
         </DerivationBlock>
-        <LiveAnswer testId="answer-2b">
-          <Revealed ask={ask} what="the importance estimate">
-            {answer2b}
-          </Revealed>
-        </LiveAnswer>
+        <Answer testId="answer-2b" ask={ask} what="the importance estimate">
+          {answer2b}
+        </Answer>
       </ExamPart>
 
       <ExamPart id="2c" title="Unbiasedness" asks={<>Show that the estimator is unbiased: E[⟨I⟩] = I.</>}>
@@ -142,11 +138,9 @@ export function Q2({
             condition p &gt; 0 wherever f ≠ 0.
           </KeyNote>
         </DerivationBlock>
-        <LiveAnswer title="Checked empirically" testId="answer-2c">
-          <Revealed ask={ask} what="the repeated estimates">
-            {answer2c}
-          </Revealed>
-        </LiveAnswer>
+        <Answer title="Checked empirically" testId="answer-2c" ask={ask} what="the repeated estimates">
+          {answer2c}
+        </Answer>
       </ExamPart>
     </>
   );

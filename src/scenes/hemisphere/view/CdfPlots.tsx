@@ -11,6 +11,7 @@ import { HALF_PI, TWO_PI, sphericalPhi, sphericalTheta } from '../../../core/sam
 import type { DrawStats, Lobe } from '../model';
 import { cdfCurve, histogramCdf, marginalShape } from '../marginals';
 import { LEGEND_ABOVE, titled } from './plotTitle';
+import { modelCurve } from './Plots';
 
 const num = (x: number) => formatSignificant(x, 3, 'times');
 /** Points per histogram bin on the model's CDF (so the table can read it at the bins' edges). */
@@ -48,16 +49,7 @@ function CdfPlot({
   }, [at, model, hi]);
   const inverts = at !== null && pAt !== null && Math.abs(pAt - at.xi) < 1e-3;
   const traces = useMemo(() => {
-    const out: PlotTrace[] = [
-      {
-        type: 'scatter',
-        mode: 'lines',
-        x: Array.from(model.x),
-        y: Array.from(model.y),
-        name: `P(${v})`,
-        line: { color: '#d0502a', width: 2.5 },
-      },
-    ];
+    const out: PlotTrace[] = [modelCurve(model.x, model.y, `P(${v})`)];
     if (samples)
       out.push({
         type: 'scatter',

@@ -16,11 +16,11 @@ import {
   type Timeline,
 } from '../../../ui';
 import { formatCount } from '../../../ui/format';
-import { fillSequence2D, type SequenceKind } from '../../../core/random';
-import { animDuration, animFrame, type AnimFrame, type AnimKind, type Lobe } from '../model';
+import { fillSequence2D } from '../../../core/random';
+import { animDuration, animFrame, type AnimFrame, type AnimKind } from '../model';
 import { Stage } from '../../../ui/stage';
-import { FigureCaption, FigureReadouts } from './FigureText';
-import type { HemisphereSchema, LobeId } from '../params';
+import { FigureCaption, FigureReadouts, type FigureState } from './FigureText';
+import type { HemisphereSchema } from '../params';
 import type { PointsArgs } from '../jobs';
 // Static, not lazy: the 3D panel is on the first screen, and a Suspense fallback of another height
 // shifted the layout when it arrived (three.js itself still loads lazily, inside Viewport).
@@ -39,19 +39,15 @@ const SquareMemo = memo(UnitSquare);
 
 /**
  * The 3D view's height on the classroom stage: what the first screen leaves below the stage's top
- * (`--stage-top`, set by the stage) after the transport, the toggles and the readouts.
+ * (`--stage-top`, set by the stage) after the transport and the key readouts (and, while the
+ * results are hidden, the line that says the warp is held).
  */
-const STAGE_VIEW_HEIGHT = 'max(12rem, calc(100dvh - var(--stage-top, 0px) - 13rem))';
+const stageViewHeight = (held: boolean) =>
+  `max(9rem, calc(100dvh - var(--stage-top, 0px) - ${held ? 12 : 10.5}rem))`;
 
-interface FigureProps {
-  lobe: Lobe | null;
+interface FigureProps extends FigureState {
   /** What the 3D view's points depend on (../jobs pointsArgsOf). */
   points: PointsArgs;
-  lobeId: LobeId;
-  kind: SequenceKind;
-  seed: number;
-  n: number;
-  anim: AnimKind;
   t: number;
   play: boolean;
   setParams: SceneProps<HemisphereSchema>['setParams'];
@@ -103,6 +99,7 @@ export function Figure({
     duration: animDuration(anim, n),
     visibleRef: box,
     renderHz: 0,
+    shortcuts: !ask,
   });
   const [showPoints, setShowPoints] = useState(true);
   const [showGrid, setShowGrid] = useState(true);
@@ -153,6 +150,16 @@ export function Figure({
       testId="anim"
     />
   );
+  const transport = (
+    <TimelineTransport
+      timeline={tl}
+      label={anim === 'warp' ? 'Warp morph' : 'Samples appearing'}
+      format={format}
+      testId="timeline"
+    >
+      {present ? null : animSelect}
+    </TimelineTransport>
+  );
   const toggles = (
     <div className="hemi-toggles">
       <Toggle label="points" checked={showPoints} onChange={setShowPoints} />
@@ -186,7 +193,7 @@ export function Figure({
           >
             {lobe ? (
               <LiveHemisphereView
-                height={present ? STAGE_VIEW_HEIGHT : 400}
+                height={present ? stageViewHeight(ask) : 400}
                 tl={tl}
                 lobe={lobe}
                 points={points}
@@ -202,18 +209,13 @@ export function Figure({
               <div className="hemi-no-view">{problem}</div>
             )}
             {ask ? (
-              <p className="small hemi-held" data-testid="timeline-held">
-                The warp stays at t = 0 (the square) until you reveal.
-              </p>
+              // held at t = 0 until revealed: the transport is there, and disabled
+              <fieldset disabled className="hemi-held" data-testid="timeline-held">
+                <legend className="small">The warp stays at t = 0 (the square) until you reveal.</legend>
+                {transport}
+              </fieldset>
             ) : (
-              <TimelineTransport
-                timeline={tl}
-                label={anim === 'warp' ? 'Warp morph' : 'Samples appearing'}
-                format={format}
-                testId="timeline"
-              >
-                {present ? null : animSelect}
-              </TimelineTransport>
+              transport
             )}
             {present ? null : toggles}
             <FigureReadouts {...text} tracked={!present} />
@@ -224,7 +226,7 @@ export function Figure({
               kind={kind}
               seed={seed}
               n={n}
-              size={present ? 260 : 220}
+              size={present ? 260 : 240}
               cell={cell}
               onPick={onPickCell}
               captioned={!present}

@@ -8,15 +8,19 @@ import type { SequenceKind } from '../../../core/random';
 import { animFrame, examInversion, type AnimKind, type Lobe } from '../model';
 import type { LobeId } from '../params';
 
-/** The figure's state at a coarse position (4 times a second while playing, exact when paused). */
-export interface FigureTextProps {
-  tl: Timeline;
+/** What the figure samples and animates (the figure's and its texts' common inputs). */
+export interface FigureState {
   lobe: Lobe | null;
   lobeId: LobeId;
   kind: SequenceKind;
   seed: number;
   n: number;
   anim: AnimKind;
+}
+
+/** The figure's state at a coarse position (4 times a second while playing, exact when paused). */
+export interface FigureTextProps extends FigureState {
+  tl: Timeline;
   /** Results hidden: the caption leaves out where the samples land. */
   ask: boolean;
 }

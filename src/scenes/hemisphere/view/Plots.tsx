@@ -21,18 +21,23 @@ function histTraces(h: MarginalHist, name: string): PlotTrace[] {
       name: `samples`,
       marker: { color: 'rgba(70,120,200,0.55)' },
     },
-    {
-      type: 'scatter',
-      mode: 'lines',
-      x: Array.from(h.curveX),
-      y: Array.from(h.curveY),
-      name: `p(${name})`,
-      line: { color: '#d0502a', width: 2.5 },
-    },
+    modelCurve(h.curveX, h.curveY, `p(${name})`),
   ];
 }
 
 type MarginalHist = NonNullable<DrawStats['hist']>['theta'];
+
+/** The model's curve (a density or a CDF) beside the samples: one colour and width in every plot. */
+export function modelCurve(x: ArrayLike<number>, y: ArrayLike<number>, name: string): PlotTrace {
+  return {
+    type: 'scatter',
+    mode: 'lines',
+    x: Array.from(x),
+    y: Array.from(y),
+    name,
+    line: { color: '#d0502a', width: 2.5 },
+  };
+}
 
 /** A tick where the density has an interior peak (a horizontal tangent), for the audio trace. */
 function peakEvents(f: (x: number) => number, lo: number, hi: number, v: string): TraceEvent[] {

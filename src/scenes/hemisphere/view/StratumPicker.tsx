@@ -131,6 +131,12 @@ export function useCellCount(kind: SequenceKind, seed: number, n: number, cell: 
   return ci >= 0 && state && state.key === key ? state.count : null;
 }
 
+/** The two number fields: the cell's column (along ξ₁) and row (along ξ₂). */
+const AXES = [
+  { key: 'i', name: 'column i', xi: 'ξ₁' },
+  { key: 'j', name: 'row j', xi: 'ξ₂' },
+] as const;
+
 /** The same choice by number fields and buttons, and what the cell becomes (`text`). */
 export function StratumControls({
   cell,
@@ -149,32 +155,22 @@ export function StratumControls({
       <legend>Follow a stratum: cell (i, j)</legend>
       {cell ? (
         <div className="hemi-stratum-fields">
-          <NumberField
-            label={
-              <>
-                column i <span className="sr-only">of ξ₁</span>
-              </>
-            }
-            value={cell.i}
-            min={0}
-            max={CELLS - 1}
-            step={1}
-            onChange={(v) => onPick({ i: Math.round(v), j: cell.j })}
-            testId="stratum-i"
-          />
-          <NumberField
-            label={
-              <>
-                row j <span className="sr-only">of ξ₂</span>
-              </>
-            }
-            value={cell.j}
-            min={0}
-            max={CELLS - 1}
-            step={1}
-            onChange={(v) => onPick({ i: cell.i, j: Math.round(v) })}
-            testId="stratum-j"
-          />
+          {AXES.map(({ key, name, xi }) => (
+            <NumberField
+              key={key}
+              label={
+                <>
+                  {name} <span className="sr-only">of {xi}</span>
+                </>
+              }
+              value={cell[key]}
+              min={0}
+              max={CELLS - 1}
+              step={1}
+              onChange={(v) => onPick({ ...cell, [key]: Math.round(v) })}
+              testId={`stratum-${key}`}
+            />
+          ))}
           <button type="button" onClick={() => onPick(null)} data-testid="stratum-clear">
             Stop following
           </button>

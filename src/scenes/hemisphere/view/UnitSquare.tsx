@@ -27,7 +27,7 @@ export function UnitSquare({
   kind,
   seed,
   n,
-  size = 220,
+  size = 240,
   cell = null,
   onPick,
   captioned = true,
@@ -35,6 +35,7 @@ export function UnitSquare({
   kind: SequenceKind;
   seed: number;
   n: number;
+  /** Side in CSS px: 240 or more keeps each of the 64 cells a 24 px target (WCAG 2.5.8). */
   size?: number;
   /** The followed stratum (null: none) and the way to choose another (absent: no picking). */
   cell?: Cell | null;
