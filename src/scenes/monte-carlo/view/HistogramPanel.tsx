@@ -5,7 +5,7 @@ import { useAutoRun, type WorkerFactory } from '../../../workers';
 import { estimateFromTerms, histogram } from '../../../core/estimators';
 import type { ProblemArgs } from '../jobs';
 import { REDRAW_MS, useLegendRoom } from './hooks';
-import { arr, COLORS, L_HIST, CountField, DescribedPlot, RunBar } from './plotStyle';
+import { arr, COLORS, L_HIST, CountField, DescribedPlot, REFERENCE, RunBar } from './plotStyle';
 import type { McTasks } from '../mc.worker';
 import { describeEstimateHistogram } from './plotWords';
 
@@ -87,7 +87,7 @@ export function HistogramPanel({
         x: [exact, exact],
         y: [0, ymax],
         name: `exact ${formatNumber(exact, 8)}`,
-        line: { color: '#444', dash: 'dash', width: 2 },
+        line: { color: REFERENCE, dash: 'dash', width: 2 },
       },
       {
         type: 'scatter',
