@@ -1,4 +1,4 @@
-import { useEffect, useRef, useState } from 'react';
+import { useEffect, useRef, useState, type ReactNode } from 'react';
 import { qrPath } from '../ui/qr';
 
 /**
@@ -9,12 +9,15 @@ export function QrButton({
   link,
   present,
   classroomLink = false,
+  children,
 }: {
   link: string;
   /** Classroom mode is on here: the code is drawn large. */
   present: boolean;
   /** The link keeps classroom mode (the lecturer asked for it); otherwise it is the students' view. */
   classroomLink?: boolean;
+  /** Shown in the panel under the caption (the share bar's choice of link, usable while it is open). */
+  children?: ReactNode;
 }) {
   const [open, setOpen] = useState(false);
   const [state, setState] = useState<{ text: string; path: string; size: number } | { error: string } | null>(
@@ -97,6 +100,7 @@ export function QrButton({
                 : ' (larger in classroom mode, present=1)'}
             .
           </p>
+          {children}
           <button
             type="button"
             ref={close}

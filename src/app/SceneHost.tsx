@@ -393,21 +393,16 @@ function ShareBar({
       <button type="button" data-testid="copy-link" onClick={() => copy('link')}>
         Copy link
       </button>
-      <QrButton link={link} present={flags.present} classroomLink={keep && classroom} />
-      <button type="button" data-testid="copy-embed" onClick={() => copy('embed')}>
-        Copy embed code
-      </button>
-      {classroom ? (
-        <label className="share-keep">
-          <input
-            type="checkbox"
-            data-testid="keep-classroom"
-            checked={keep}
-            onChange={(e) => setKeep(e.target.checked)}
-          />{' '}
-          Keep classroom mode
-        </label>
-      ) : null}
+      <QrButton link={link} present={flags.present} classroomLink={keep && classroom}>
+        {classroom ? <KeepClassroom keep={keep} onKeep={setKeep} testId="qr-keep-classroom" /> : null}
+      </QrButton>
+      {/* embedding is preparation, not the lecture: classroom mode keeps its one header row */}
+      {flags.present ? null : (
+        <button type="button" data-testid="copy-embed" onClick={() => copy('embed')}>
+          Copy embed code
+        </button>
+      )}
+      {classroom ? <KeepClassroom keep={keep} onKeep={setKeep} testId="keep-classroom" /> : null}
       <span role="status" className="share-status">
         {copied === 'link'
           ? 'Link copied.'
@@ -428,6 +423,24 @@ function ShareBar({
         />
       ) : null}
     </div>
+  );
+}
+
+/** The lecturer's choice: the copied link and the QR code keep classroom mode (present=1, ask=1). */
+function KeepClassroom({
+  keep,
+  onKeep,
+  testId,
+}: {
+  keep: boolean;
+  onKeep: (keep: boolean) => void;
+  testId: string;
+}) {
+  return (
+    <label className="share-keep">
+      <input type="checkbox" data-testid={testId} checked={keep} onChange={(e) => onKeep(e.target.checked)} />{' '}
+      Keep classroom mode
+    </label>
   );
 }
 

@@ -111,7 +111,7 @@ export default function Guide({ flags, query = '' }: { flags: ShellFlags; query?
         <h2 id="guide-embed-h">Embed, print and go offline</h2>
         <h3>Embed a scene in a course page</h3>
         <p>
-          Set the scene up, then press <strong>Copy embed code</strong>: it gives an{' '}
+          Set the scene up (outside classroom mode), then press <strong>Copy embed code</strong>: it gives an{' '}
           <code>&lt;iframe&gt;</code> with an id and a short script that resizes it to the scene’s content
           (the scene posts only its height and its id). Paste both into the course page (Moodle, Canvas and
           most LMSs accept them in an HTML block). Add <code>origin=https://your-lms.example.edu</code> to the

@@ -53,7 +53,7 @@ const SCENE_LIST = [
     title: 'Sampling a hemisphere',
     questions: 'Q1 · Q2',
     blurb:
-      'Normalize p(ω) = k cos θ e^φ, find its marginals and CDFs, invert them, and watch the samples land.',
+      'Normalize p(ω) = k cos θ eᵠ, find its marginals and CDFs, invert them, and watch the samples land.',
     examQuery: 'lobe=exam',
     parts: ['1a', '1b', '1c', '1d', '2a', '2b', '2c'],
     keyReadout: 'k',
@@ -117,14 +117,14 @@ const SCENE_LIST = [
     path: '/area-light',
     title: 'Solid angle and area lights',
     questions: 'Q6',
-    blurb: 'dω = dA cos θ_l / r², the rendering equation over a light’s area, and three ways to sample it.',
+    blurb: 'dω = dA cos θₗ / r², the rendering equation over a light’s area, and three ways to sample it.',
     examQuery: '',
     parts: ['6a', '6b', '6c'],
     keyReadout: 'reference',
     predict: {
-      '6a': 'As a patch of the light moves towards the light’s edge, which factors of dω = dA cos θ_l / r² shrink it, and which shrinks it fastest?',
-      '6b': 'Before you reveal L_o: which parts of the light contribute most to the shading point, and why?',
-      '6c': 'Uniform area sampling: which samples get the largest weights |A| cos θ cos θ_l / r²? How noisy will the estimate be?',
+      '6a': 'As a patch of the light moves towards the light’s edge, which factors of dω = dA cos θₗ / r² shrink it, and which shrinks it fastest?',
+      '6b': 'Before you reveal Lₒ: which parts of the light contribute most to the shading point, and why?',
+      '6c': 'Uniform area sampling: which samples get the largest weights |A| cos θ cos θₗ / r²? How noisy will the estimate be?',
     },
   },
 ] as const satisfies readonly SceneInfoSpec[];
@@ -133,10 +133,10 @@ export const QUESTIONS: readonly QuestionInfo[] = [
   {
     n: 1,
     title: 'Sampling a hemisphere PDF by inversion',
-    text: 'Normalize p(ω) = k cos θ e^φ, find its marginals and CDFs, and invert them to draw directions.',
+    text: 'Normalize p(ω) = k cos θ eᵠ, find its marginals and CDFs, and invert them to draw directions.',
     scene: 'hemisphere',
     query: 'lobe=exam',
-    practice: { id: 'q1', blurb: 'Normalize k cosᵐθ e^(aφ), its marginals, CDFs and inversion formulas.' },
+    practice: { id: 'q1', blurb: 'Normalize k cosᵐθ eᵃᵠ, its marginals, CDFs and inversion formulas.' },
   },
   {
     n: 2,
@@ -181,11 +181,11 @@ export const QUESTIONS: readonly QuestionInfo[] = [
   {
     n: 6,
     title: 'Solid angle and area lights',
-    text: 'dω = dA cos θ_l / r², the rendering equation over a light’s area, and area-light sampling.',
+    text: 'dω = dA cos θₗ / r², the rendering equation over a light’s area, and area-light sampling.',
     scene: 'area-light',
     practice: {
       id: 'q6',
-      blurb: 'dω = dA cos θ_l / r² for a patch, and the area-sampling estimator from given points.',
+      blurb: 'dω = dA cos θₗ / r² for a patch, and the area-sampling estimator from given points.',
     },
   },
 ];

@@ -36,7 +36,7 @@ export const LESSON_PRESETS: Readonly<Record<QuestionInfo['n'], readonly LessonP
       askFirst: true,
       title: 'The exam’s density, 2,000 samples',
       shows:
-        'p(ω) = k cos θ e^φ with its normalization k, the marginals, the CDFs and the inverted samples on the hemisphere.',
+        'p(ω) = k cos θ eᵠ with its normalization k, the marginals, the CDFs and the inverted samples on the hemisphere.',
       ask: 'Before you reveal the points: where will they bunch up? Which factor decides the direction in θ, which in φ?',
     },
     {
@@ -45,7 +45,7 @@ export const LESSON_PRESETS: Readonly<Record<QuestionInfo['n'], readonly LessonP
       askFirst: true,
       title: 'The Jacobian written upside down',
       shows:
-        'The key also grades p(θ, φ) = p(ω) / sin θ ∝ cot θ e^φ; the scene shows why it is not a density: its θ-integral diverges at θ → 0.',
+        'The key also grades p(θ, φ) = p(ω) / sin θ ∝ cot θ eᵠ; the scene shows why it is not a density: its θ-integral diverges at θ → 0.',
       ask: 'Integrate cot θ from 0 to π/2. Can a function whose integral is infinite be normalized? Where did the sin θ come from?',
     },
     {
@@ -94,7 +94,7 @@ export const LESSON_PRESETS: Readonly<Record<QuestionInfo['n'], readonly LessonP
       part: '2b',
       askFirst: true,
       title: 'The exam’s density as the sampling pdf',
-      shows: 'Importance sampling f = cos θ with p(ω) = k cos θ e^φ: unbiased, but f/p now varies with φ.',
+      shows: 'Importance sampling f = cos θ with p(ω) = k cos θ eᵠ: unbiased, but f/p now varies with φ.',
       ask: 'Is this estimator still unbiased? Which samples carry the largest weights f/p, and why?',
     },
     {
@@ -197,7 +197,7 @@ export const LESSON_PRESETS: Readonly<Record<QuestionInfo['n'], readonly LessonP
       askFirst: true,
       title: 'A finite integral with infinite variance',
       shows:
-        '∫₀¹ x^(−½) dx = 2 is finite, but f² is not integrable: uniform sampling is unbiased with infinite variance.',
+        '∫₀¹ 1/√x dx = 2 is finite, but f² is not integrable: uniform sampling is unbiased with infinite variance.',
       ask: 'Is the estimator unbiased? Will the running estimate settle as N grows? Which pdf would tame it?',
     },
   ],
@@ -250,7 +250,7 @@ export const LESSON_PRESETS: Readonly<Record<QuestionInfo['n'], readonly LessonP
       part: '6a',
       askFirst: true,
       title: 'A light overhead (Q6a, Q6b)',
-      shows: 'dω = dA cos θ_l / r² on a patch of the light, and L_o against the exact reference.',
+      shows: 'dω = dA cos θₗ / r² on a patch of the light, and Lₒ against the exact reference.',
       ask: 'Derive dω from similar triangles. Which factor shrinks a patch’s solid angle fastest as it moves to the light’s edge?',
     },
     {
@@ -258,8 +258,9 @@ export const LESSON_PRESETS: Readonly<Record<QuestionInfo['n'], readonly LessonP
       part: '6c',
       askFirst: true,
       title: 'A big light close by, sampled by area (Q6c)',
-      shows: 'Uniform area sampling, p_A = 1/|A|: r² varies wildly over the light, so the estimate is noisy.',
-      ask: 'Which samples get the largest weights |A| cos θ cos θ_l / r²? Which strategy would you choose here?',
+      shows:
+        'Uniform area sampling, pdf 1/|A| per unit area: r² varies wildly over the light, so the estimate is noisy.',
+      ask: 'Which samples get the largest weights |A| cos θ cos θₗ / r²? Which strategy would you choose here?',
     },
     {
       params: { lc: '0,0,10', ls: '1,1', tilt: '0', strategy: 'cosine', t: '0' },
@@ -274,8 +275,8 @@ export const LESSON_PRESETS: Readonly<Record<QuestionInfo['n'], readonly LessonP
       part: '6a',
       askFirst: true,
       title: 'A tilted light',
-      shows: 'cos θ_l varies over the light: it is not one number per light.',
-      ask: 'Where on the light is cos θ_l largest as seen from p? How does that change the contribution of each patch?',
+      shows: 'cos θₗ varies over the light: it is not one number per light.',
+      ask: 'Where on the light is cos θₗ largest as seen from p? How does that change the contribution of each patch?',
     },
     {
       params: { occluder: '1' },
@@ -307,7 +308,7 @@ export const MISCONCEPTIONS: Readonly<Record<SceneId, { title: string; items: re
       '“More samples fix any estimator.” They fix the variance of an unbiased one, not a bias (p = 0 where f ≠ 0).',
       '“s/√N is the error of every estimate.” Not for stratified or quasi-random points, whose errors are not independent.',
       '“The zero-variance pdf is a method.” Sampling p ∝ f needs ∫ f, the answer itself.',
-      '“A finite integral has a finite-variance estimator.” ∫₀¹ x^(−½) dx is finite, its variance is not.',
+      '“A finite integral has a finite-variance estimator.” ∫₀¹ 1/√x dx is finite, its variance is not.',
     ],
   },
   texture: {
@@ -334,10 +335,10 @@ export const MISCONCEPTIONS: Readonly<Record<SceneId, { title: string; items: re
     title: 'Solid angle and area lights (Q6)',
     items: [
       '“A light’s contribution falls off as 1/r², full stop.” The cosines at the receiver and at the light matter as much.',
-      '“cos θ and cos θ_l are the same angle.” One is at the shading point, the other at the light.',
-      '“Uniform over the light’s area is uniform in solid angle.” The Jacobian cos θ_l / r² makes them differ.',
+      '“cos θ and cos θₗ are the same angle.” One is at the shading point, the other at the light.',
+      '“Uniform over the light’s area is uniform in solid angle.” The Jacobian cos θₗ / r² makes them differ.',
       '“Cosine sampling is always best.” It rarely hits a small or distant light.',
-      '“A light facing away still lights the point.” Its back emits nothing: L_o = 0.',
+      '“A light facing away still lights the point.” Its back emits nothing: Lₒ = 0.',
     ],
   },
 };

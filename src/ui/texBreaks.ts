@@ -51,21 +51,31 @@ export function keepParenthesesTogether(tex: string): string {
 }
 
 /**
- * The same for a formula written as plain text ("p(x) = 3(x + 2)²/56", "4a(r² − |ℓ|²)"): the
- * spaces inside each parenthesized group that holds an operator (and no word: a remark in prose
- * wraps like prose) become no-break spaces, so the line wraps only at the spaces outside them.
+ * The outermost parenthesized groups of a plain-text formula ("3(x + 2)²/56", "4a(r² − |ℓ|²)") that
+ * hold an operator and no word (a remark in prose wraps like prose), as [index of "(", index of ")"].
  */
-export function keepTextParenthesesTogether(text: string): string {
-  const out = text.split('');
+export function textFormulaGroups(text: string): [number, number][] {
+  const groups: [number, number][] = [];
   const open: number[] = [];
   for (let i = 0; i < text.length; i++) {
     if (text[i] === '(') open.push(i);
     else if (text[i] === ')' && open.length) {
       const a = open.pop()!;
       const inner = text.slice(a, i);
-      if (open.length > 0 || !TEXT_OPERATOR.test(inner) || PROSE.test(inner)) continue;
-      for (let j = a + 1; j < i; j++) if (out[j] === ' ') out[j] = '\u00a0';
+      if (open.length === 0 && TEXT_OPERATOR.test(inner) && !PROSE.test(inner)) groups.push([a, i]);
     }
+  }
+  return groups;
+}
+
+/**
+ * The same as {@link keepParenthesesTogether} for a formula written as plain text: the spaces inside
+ * each of its {@link textFormulaGroups} become no-break spaces, so the line wraps only outside them.
+ */
+export function keepTextParenthesesTogether(text: string): string {
+  const out = text.split('');
+  for (const [a, b] of textFormulaGroups(text)) {
+    for (let j = a + 1; j < b; j++) if (out[j] === ' ') out[j] = '\u00a0';
   }
   return out.join('');
 }

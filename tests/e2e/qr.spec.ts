@@ -69,7 +69,9 @@ test('in classroom mode the QR code is large, and decodes to the students’ lin
   expect(text).toMatch(/#\/ray-sphere\?.*r=2/);
   // students scanning it get the scene, not classroom mode, unless the lecturer keeps it
   expect(text).not.toMatch(/[?&]present=/);
-  await page.getByTestId('keep-classroom').check();
+  // the choice is in the panel too (the large code stands over the share bar)
+  await page.getByTestId('qr-keep-classroom').check();
+  await expect(page.getByTestId('keep-classroom')).toBeChecked();
   await expect(qr).toHaveAttribute('data-text', /[?&]present=1/);
   expect(await decode(page, qr)).toMatch(/#\/ray-sphere\?.*r=2.*present=1/);
 });

@@ -7,6 +7,7 @@
  */
 import type { Page } from '@playwright/test';
 import { SCENES, predictPrompt, type SceneInfo } from '../../src/kit/catalogue';
+import { textFormulaGroups } from '../../src/ui/texBreaks';
 import { test, expect, openScene } from './fixtures';
 
 const SCREENS = [
@@ -216,6 +217,26 @@ test('the copied link and the QR code are the students’ link, unless classroom
   expect(await copied()).not.toMatch(/[?&](present|ask)=/);
 });
 
+test('present=1 at 1280×720: each scene’s title, share bar and way back stand in one row', async ({
+  page,
+}) => {
+  test.setTimeout(180_000);
+  await page.setViewportSize({ width: 1280, height: 720 });
+  for (const s of SCENES) {
+    await openScene(page, `#${s.path}?present=1&ask=1`);
+    const h1 = (await page.locator('main h1').boundingBox())!;
+    const bar = (await page.locator('.share-bar').boundingBox())!;
+    const back = (await page.locator('main .back-link').boundingBox())!;
+    // one row: the share bar is no taller than a row of buttons, beside the title, not under it
+    expect(bar.height, `${s.id}: the share bar wraps`).toBeLessThan(70);
+    expect(bar.x, s.id).toBeGreaterThan(h1.x + h1.width);
+    expect(back.x, s.id).toBeGreaterThan(bar.x + bar.width - 1);
+    expect(Math.abs(bar.y + bar.height / 2 - (h1.y + h1.height / 2)), s.id).toBeLessThan(20);
+    // embedding is not a lecture's business: no embed code in classroom mode
+    await expect(page.getByTestId('copy-embed')).toHaveCount(0);
+  }
+});
+
 test('without classroom mode there is no "keep classroom mode" choice', async ({ page }) => {
   await openScene(page, '#/texture?u=0.7');
   await expect(page.getByTestId('copy-link')).toBeVisible();
@@ -339,32 +360,32 @@ for (const s of SCENES) {
           prev = r;
         }
       }
-      // formulas written as plain text: a parenthesized group with an operator on two lines
-      const walker = document.createTreeWalker(document.querySelector('main')!, NodeFilter.SHOW_TEXT);
-      for (let n = walker.nextNode(); n; n = walker.nextNode()) {
-        const t = n.nodeValue ?? '';
-        if (n.parentElement?.closest('.katex, .sr-only, .math-preview')) continue;
-        const open: number[] = [];
-        for (let i = 0; i < t.length; i++) {
-          if (t[i] === '(') open.push(i);
-          else if (t[i] === ')' && open.length) {
-            const a = open.pop()!;
-            const inner = t.slice(a, i);
-            // a formula (an operator, no word), not a remark in prose
-            if (open.length || !/\s[=+−×·<>≤≥≈≠∓±/]\s|[²³√∫Σ]/.test(inner) || /\p{L}{4,}/u.test(inner))
-              continue;
-            const range = document.createRange();
-            range.setStart(n, a);
-            range.setEnd(n, i + 1);
-            const lines = new Set(
-              [...range.getClientRects()].filter((r) => r.width > 0).map((r) => Math.round(r.top)),
-            );
-            if (lines.size > 1) out.push(t.slice(Math.max(0, a - 12), i + 1));
-          }
-        }
-      }
       return out;
     });
+    // formulas written as plain text: the page's text, its formula groups found here, and each
+    // group measured there (on two lines: broken inside its parentheses)
+    const texts = await page.evaluate(() => {
+      const w = window as unknown as { __texts: Text[] };
+      w.__texts = [];
+      const walker = document.createTreeWalker(document.querySelector('main')!, NodeFilter.SHOW_TEXT);
+      for (let n = walker.nextNode(); n; n = walker.nextNode())
+        if (!n.parentElement?.closest('.katex, .sr-only, .math-preview')) w.__texts.push(n as Text);
+      return w.__texts.map((n) => n.nodeValue ?? '');
+    });
+    const groups = texts.flatMap((t, i) => textFormulaGroups(t).map(([a, b]) => [i, a, b] as const));
+    const broken = await page.evaluate((groups) => {
+      const nodes = (window as unknown as { __texts: Text[] }).__texts;
+      return groups
+        .filter(([i, a, b]) => {
+          const range = document.createRange();
+          range.setStart(nodes[i], a);
+          range.setEnd(nodes[i], b + 1);
+          const rects = [...range.getClientRects()].filter((r) => r.width > 0);
+          return new Set(rects.map((r) => Math.round(r.top))).size > 1;
+        })
+        .map(([i, a, b]) => (nodes[i].nodeValue ?? '').slice(Math.max(0, a - 12), b + 1));
+    }, groups);
+    inside.push(...broken);
     expect(inside, `${s.id}: formulas broken inside parentheses`).toEqual([]);
   });
 }

@@ -230,7 +230,9 @@ test.describe('ask first, and the stage for the room', () => {
       await expect(page.getByTestId(id), id).toHaveCount(0);
     for (const id of ['stencil', 'path-plot', 'timeline', 'query-now', 'phi-slider'])
       await expect(page.getByTestId(id), id).toHaveCount(0);
-    await expect(page.getByTestId('ask-hidden-3b')).toContainText('Hidden until you reveal');
+    await expect(page.getByTestId('part-3b').getByTestId('ask-hidden')).toContainText(
+      'Hidden until you reveal: the steps and the answer',
+    );
     const cdp = await page.context().newCDPSession(page);
     const d = (await axNamed(cdp, MAIN))!.description;
     expect(d).toContain('The query point at u 0.40, v 0.24; the values looked up there are hidden');
@@ -275,8 +277,12 @@ test.describe('ask first, and the stage for the room', () => {
         };
         const grid = await inside('texel-grid');
         expect(grid.height).toBeGreaterThan(ask ? 250 : 380);
-        if (ask) await inside('ask-hidden-transport');
-        else {
+        if (ask) {
+          const held = page.getByTestId('scene-stage').getByTestId('ask-hidden').first();
+          await expect(held).toContainText('the query’s path');
+          const b = (await held.boundingBox())!;
+          expect(b.y + b.height).toBeLessThanOrEqual(Math.min(h, box.y + box.height) + 1);
+        } else {
           await inside('timeline');
           await inside('query-now');
           // the key readouts in classroom type

@@ -126,20 +126,13 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
       boxRef={staged ? stageRef : undefined}
     />
   );
+  const { o, d, c, r, precision } = params;
+  const fields = { o, d, c, r, precision };
   const controls = (
     <>
       {staged ? <SweepControls sweep={sweep} extent={extent} setParams={setParams} /> : null}
       <Q5Presets active={activePreset} setParams={setParams} />
-      <Q5Fields
-        o={params.o}
-        d={params.d}
-        c={params.c}
-        r={params.r}
-        method={method}
-        precision={params.precision}
-        setParams={setParams}
-        edit={edit}
-      />
+      <Q5Fields {...fields} method={method} setParams={setParams} edit={edit} />
     </>
   );
   const plots = (

@@ -139,9 +139,23 @@ export function activeRows(m: RaySphereModel): { rows: MethodRow[]; reference: R
   return m.precision === 'f32' && m.f32 ? m.f32 : m;
 }
 
-function relDisc(x: number, ref: number): number {
+/** The relative error of a discriminant against the reference's (Infinity: a zero made nonzero). */
+export function relDisc(x: number, ref: number): number {
   if (ref === 0) return x === 0 ? 0 : Infinity;
   return Math.abs(x - ref) / Math.abs(ref);
+}
+
+/** One method's result with its errors against the reference (in float64 or in float32). */
+export function methodRow(method: RaySphereMethod, res: RaySphereHit, ref: RaySphereReference): MethodRow {
+  return {
+    method,
+    res,
+    errT0: relativeError(res.t0, ref.t0),
+    errT1: relativeError(res.t1, ref.t1),
+    errHit: relativeError(res.tHit, ref.tHit),
+    errDisc: relDisc(res.discriminant, ref.discriminant),
+    caseRight: res.case === ref.case,
+  };
 }
 
 /** Everything the page shows, for one parameter set. */
@@ -170,15 +184,7 @@ export function computeModel(
   for (const method of ['naive', 'stable'] as const) {
     const res = intersectRaySphere(o, d, c, r, method);
     if (!res.ok) return fail(res.message);
-    rows.push({
-      method,
-      res,
-      errT0: relativeError(res.t0, ref.t0),
-      errT1: relativeError(res.t1, ref.t1),
-      errHit: relativeError(res.tHit, ref.tHit),
-      errDisc: relDisc(res.discriminant, ref.discriminant),
-      caseRight: res.case === ref.case,
-    });
+    rows.push(methodRow(method, res, ref));
   }
   const chosen = (precision === 'f32' ? f32.rows : rows).find((row) => row.method === p.method)!.res;
   return { input, chosen, rows, reference: ref, fatal: null, distanceRatio, precision, f32 };

@@ -168,7 +168,7 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
     ),
     // ask first: the query stays at the start of its path until the results are revealed
     transport: (
-      <Revealed ask={ask} what="the query’s path (the animation)" testId="ask-hidden-transport">
+      <Revealed ask={ask} what="the query’s path (the animation)">
         <AnimationDriver
           store={store}
           t={Number(params.t)}
@@ -188,12 +188,12 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
     ),
     pathEnd: <PathEnd params={params} setParams={setParams} />,
     plot: (
-      <Revealed ask={ask} what="the value along the path" testId="ask-hidden-plot">
+      <Revealed ask={ask} what="the value along the path">
         <AnimPathPlot ctx={ctx} present={mode.present} />
       </Revealed>
     ),
     side: (
-      <Revealed ask={ask} what="the looked-up values and the weights" testId="ask-hidden-side">
+      <Revealed ask={ask} what="the looked-up values and the weights">
         <AnimSide ctx={ctx} />
       </Revealed>
     ),

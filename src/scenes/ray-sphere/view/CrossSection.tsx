@@ -341,7 +341,6 @@ export function CrossSection({
         width="100%"
         height={H}
         role="group"
-        aria-label="Cross-section through the ray and the sphere's centre"
         onPointerMove={move}
         onPointerUp={up}
         onPointerCancel={up}

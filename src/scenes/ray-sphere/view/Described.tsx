@@ -5,7 +5,14 @@
  * wrap are passed in as children and are not re-rendered with them).
  */
 import { useMemo, useState, type ReactNode } from 'react';
-import { AudioTrace, DescribedFigure, ShowAsTable, useTimelineFrame } from '../../../ui';
+import {
+  AudioTrace,
+  DescribedFigure,
+  ShowAsTable,
+  useTimelineFrame,
+  type AudioTraceProps,
+  type ShowAsTableProps,
+} from '../../../ui';
 import type { RaySphereHit } from '../../../core/geometry';
 import type { RaySphereModel, Sweep, SweepSeries } from '../model';
 import { useCoarseModel, type LiveProps } from './Live';
@@ -64,29 +71,44 @@ export function LiveDescribed({
   );
 }
 
+/** A plot's data heard (an audio trace) and read (a table), under the plot. */
+function PlotData({
+  trace,
+  table,
+}: {
+  trace: Omit<AudioTraceProps, 'format'>;
+  table: Pick<ShowAsTableProps, 'caption' | 'columns' | 'rows' | 'testId'>;
+}) {
+  return (
+    <div className="rs-plot-data">
+      <AudioTrace {...trace} format={(v) => num(v, 3)} />
+      <ShowAsTable {...table} />
+    </div>
+  );
+}
+
 /** g(t) at the current ray as a table and an audio trace (events at its roots). */
 export function GPlotData({ res, window: w }: { res: RaySphereHit | null; window: SweepSeries['gWindow'] }) {
   const data = useMemo(() => (res ? gSamples(res, w) : { t: [], g: [] }), [res, w]);
   const events = useMemo(() => gEvents(res), [res]);
   return (
-    <div className="rs-plot-data">
-      <AudioTrace
-        label="g(t) along the ray"
-        xs={data.t}
-        ys={data.g}
-        xLabel="t"
-        yLabel="g"
-        events={events}
-        format={(v) => num(v, 3)}
-        testId="g-trace"
-      />
-      <ShowAsTable
-        caption="g(t) = a t² + b t + c along the ray at the current position"
-        columns={['t', 'g(t)']}
-        rows={data.t.map((t, i) => [t, data.g[i]])}
-        testId="g-table"
-      />
-    </div>
+    <PlotData
+      trace={{
+        label: 'g(t) along the ray',
+        xs: data.t,
+        ys: data.g,
+        xLabel: 't',
+        yLabel: 'g',
+        events,
+        testId: 'g-trace',
+      }}
+      table={{
+        caption: 'g(t) = a t² + b t + c along the ray at the current position',
+        columns: ['t', 'g(t)'],
+        rows: data.t.map((t, i) => [t, data.g[i]]),
+        testId: 'g-table',
+      }}
+    />
   );
 }
 
@@ -109,24 +131,23 @@ export function DeltaPlotData({
     [s],
   );
   return (
-    <div className="rs-plot-data">
-      <AudioTrace
-        label="robust Δ against the sweep"
-        xs={s.x}
-        ys={s.discStable}
-        xLabel={coord}
-        yLabel="Δ"
-        events={events}
-        format={(v) => num(v, 3)}
-        testId="delta-trace"
-      />
-      <ShowAsTable
-        caption={`Δ against the sweep coordinate ${coord}: robust and textbook, and the case`}
-        columns={[coord, 'robust Δ', 'textbook Δ', 'case']}
-        rows={rows}
-        testId="delta-table"
-      />
-    </div>
+    <PlotData
+      trace={{
+        label: 'robust Δ against the sweep',
+        xs: s.x,
+        ys: s.discStable,
+        xLabel: coord,
+        yLabel: 'Δ',
+        events,
+        testId: 'delta-trace',
+      }}
+      table={{
+        caption: `Δ against the sweep coordinate ${coord}: robust and textbook, and the case`,
+        columns: [coord, 'robust Δ', 'textbook Δ', 'case'],
+        rows,
+        testId: 'delta-table',
+      }}
+    />
   );
 }
 

@@ -8,6 +8,7 @@ import type { RaySphereHit } from '../../../core/geometry';
 import { errorInUlpsF32 } from '../../../core/geometry';
 import type { MethodRow, RaySphereModel } from '../model';
 import type { Precision } from '../precisionF32';
+import { ScrollTable } from './Precision';
 
 export const PRECISION_OPTIONS: { value: Precision; label: string }[] = [
   { value: 'f64', label: 'float64 (double, as JavaScript)' },
@@ -94,12 +95,7 @@ export function PrecisionCompare({ model }: { model: RaySphereModel }) {
     ),
   };
   return (
-    <div
-      className="rs-table-wrap"
-      tabIndex={0}
-      role="group"
-      aria-label="Errors in float64 and float32 side by side (the table scrolls sideways on narrow screens)"
-    >
+    <ScrollTable label="Errors in float64 and float32 side by side">
       <table className="rs-precision rs-compare" data-testid="precision-compare">
         <caption className="rs-small">
           Relative error against the double-double reference, float64 beside float32
@@ -159,6 +155,6 @@ export function PrecisionCompare({ model }: { model: RaySphereModel }) {
           </tr>
         </tbody>
       </table>
-    </div>
+    </ScrollTable>
   );
 }

@@ -2,7 +2,7 @@
  * The precision views: textbook vs robust vs double-double reference (table), the rendered image
  * of a distant sphere by each method, and the error against distance.
  */
-import { useEffect, useMemo, useRef, useState, type RefObject } from 'react';
+import { useEffect, useMemo, useRef, useState, type ReactNode, type RefObject } from 'react';
 import { Plot, ShowAsTable, Slider, useSeenOnce, type PlotTrace } from '../../../ui';
 import {
   ERROR_FLOOR,
@@ -43,6 +43,20 @@ const QUANTITIES = [
   },
 ] as const;
 
+/** A table that scrolls sideways on narrow screens, focusable so the keyboard can scroll it. */
+export function ScrollTable({ label, children }: { label: string; children: ReactNode }) {
+  return (
+    <div
+      className="rs-table-wrap"
+      tabIndex={0}
+      role="group"
+      aria-label={`${label} (the table scrolls sideways on narrow screens)`}
+    >
+      {children}
+    </div>
+  );
+}
+
 /** Side-by-side table of both methods against the reference. */
 export function PrecisionTable({ model }: { model: RaySphereModel }) {
   const ref = model.reference;
@@ -78,12 +92,7 @@ export function PrecisionTable({ model }: { model: RaySphereModel }) {
     );
   };
   return (
-    <div
-      className="rs-table-wrap"
-      tabIndex={0}
-      role="group"
-      aria-label="Precision of the two methods (the table scrolls sideways on narrow screens)"
-    >
+    <ScrollTable label="Precision of the two methods">
       <table className="rs-precision" data-testid="precision-table">
         <thead>
           <tr>
@@ -125,7 +134,7 @@ export function PrecisionTable({ model }: { model: RaySphereModel }) {
           </tr>
         </tbody>
       </table>
-    </div>
+    </ScrollTable>
   );
 }
 
@@ -370,25 +379,25 @@ function ErrorTables({ s, e32 }: { s: ErrorSeries; e32: ErrorSeries | null }) {
   const cols = ['D / r', 'textbook Δ', 'robust Δ', 'textbook tₕᵢₜ', 'robust tₕᵢₜ'];
   const rows = (e: ErrorSeries) =>
     e.dist.map((D, i) => [D, e.discNaive[i], e.discStable[i], e.hitNaive[i], e.hitStable[i]]);
+  const tables = [
+    { e: s, arithmetic: 'float64', id: 'error-table', summary: undefined },
+    { e: e32, arithmetic: 'float32', id: 'error-table-f32', summary: 'Show the float32 curves as a table' },
+  ];
   return (
     <>
-      <ShowAsTable
-        caption="Median relative error against distance, float64"
-        columns={cols}
-        rows={rows(s)}
-        format={fmtTable}
-        testId="error-table"
-      />
-      {e32 ? (
-        <ShowAsTable
-          caption="Median relative error against distance, float32"
-          columns={cols}
-          rows={rows(e32)}
-          format={fmtTable}
-          summary="Show the float32 curves as a table"
-          testId="error-table-f32"
-        />
-      ) : null}
+      {tables.map(({ e, arithmetic, id, summary }) =>
+        e ? (
+          <ShowAsTable
+            key={id}
+            caption={`Median relative error against distance, ${arithmetic}`}
+            columns={cols}
+            rows={rows(e)}
+            format={fmtTable}
+            summary={summary}
+            testId={id}
+          />
+        ) : null,
+      )}
     </>
   );
 }

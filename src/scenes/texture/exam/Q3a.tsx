@@ -1,32 +1,25 @@
 /** Q3(a): nearest-neighbour lookup at the query, with the key's steps and the flipped-v convention. */
 import { useMemo } from 'react';
 import { Readout } from '../../../ui';
-import { KEY_PRINTED, lookupAt, queryReadouts } from '../model';
+import { KEY_PRINTED, lookupAt } from '../model';
 import { fmtShort } from '../view/GridView';
 import { NearestWorked, nearestBlock } from '../view/WorkedSteps';
-import { isExamShown, keyNote, queryPart, shownPoint, type PartBody } from './shared';
+import { answerOf, isExamShown, queryPart, shownPoint, type PartBody } from './shared';
 
 const Worked: PartBody = ({ shown: { ctx, frame } }) => (
   <NearestWorked grid={ctx.grid} opts={ctx.opts} q={frame.lookup} />
 );
 
-/** The answer at the shown position (the key's comparison only while paused at the exam's query). */
-const Answer: PartBody = ({ shown, playing }) => {
-  const q = shown.frame.lookup;
-  const ro = queryReadouts(q);
-  const exam = !playing && isExamShown(shown);
-  return (
-    <div className="readouts">
-      <Readout
-        id="nearest"
-        label="Nearest (Q3a)"
-        value={ro.nearest}
-        note={exam ? keyNote(ro.nearest, KEY_PRINTED.nearest) : undefined}
-      />
-      <Readout id="query-uv" label="(u, v) as used" value={`(${fmtShort(q.bil.u)}, ${fmtShort(q.bil.v)})`} />
-    </div>
-  );
-};
+/** The answer at the shown position, and the (u, v) the lookup used. */
+const Answer = answerOf(
+  'nearest',
+  'Nearest (Q3a)',
+  (q) => q.near.value,
+  KEY_PRINTED.nearest,
+  (q) => (
+    <Readout id="query-uv" label="(u, v) as used" value={`(${fmtShort(q.bil.u)}, ${fmtShort(q.bil.v)})`} />
+  ),
+);
 
 /**
  * The key's figures are the exam point's; the flipped lookup is computed at the point shown and

@@ -1,27 +1,13 @@
 /** Q3(b): bilinear interpolation at the query, in the key's form, and what dropping the cell size does. */
-import { Readout } from '../../../ui';
-import { KEY_PRINTED, agreesWithKey, queryReadouts } from '../model';
+import { KEY_PRINTED, agreesWithKey } from '../model';
 import { fmtShort } from '../view/GridView';
 import { BilinearWorked, bilinearBlock } from '../view/WorkedSteps';
-import { isExamShown, keyNote, queryPart, shownPoint, type PartBody } from './shared';
+import { answerOf, isExamShown, queryPart, shownPoint, type PartBody } from './shared';
 
 const Worked: PartBody = ({ shown: { ctx, frame } }) => <BilinearWorked opts={ctx.opts} q={frame.lookup} />;
 
-/** The answer at the shown position (the key's comparison only while paused at the exam's query). */
-const Answer: PartBody = ({ shown, playing }) => {
-  const ro = queryReadouts(shown.frame.lookup);
-  const exam = !playing && isExamShown(shown);
-  return (
-    <div className="readouts">
-      <Readout
-        id="bilinear"
-        label="Bilinear (Q3b)"
-        value={ro.bilinear}
-        note={exam ? keyNote(ro.bilinear, KEY_PRINTED.bilinear) : undefined}
-      />
-    </div>
-  );
-};
+/** The answer at the shown position. */
+const Answer = answerOf('bilinear', 'Bilinear (Q3b)', (q) => q.bil.value, KEY_PRINTED.bilinear);
 
 const cu = (
   <>

@@ -138,7 +138,7 @@ export const Q3c = memo(function Q3c({ params, setParams, sphere, src, present, 
           </p>
         </div>
       </div>
-      <Revealed ask={ask} what="the steps and the answer" minHeight="6rem" testId="ask-hidden-3c">
+      <Revealed ask={ask} what="the steps and the answer" minHeight="6rem">
         {!sphere.ok ? (
           <Notice kind="warn" testId="sphere-error">
             <strong>x, y, z</strong>: {sphere.message} The sphere readouts show “none” until you pick another

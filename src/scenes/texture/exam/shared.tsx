@@ -10,6 +10,7 @@ import {
   ExamPart,
   KeyNote,
   LiveAnswer,
+  Readout,
   Revealed,
   TEXT_HZ,
   preloadMath,
@@ -17,7 +18,7 @@ import {
   usePlaying,
   useStillT,
 } from '../../../ui';
-import { agreesWithKey, isExamQuery, type Frame } from '../model';
+import { agreesWithKey, isExamQuery, type Frame, type Lookup } from '../model';
 import type { AnimContext } from '../view/anim';
 import { fmtShort } from '../view/GridView';
 
@@ -125,6 +126,31 @@ function NotExam({ shown, toExam }: { shown: Shown; toExam: () => void }) {
   );
 }
 
+/**
+ * A part's answer block: its readout at the shown position (`pick` from the lookup) and, while
+ * paused at the exam's own query, how it compares with the key's printed figure; `more` adds
+ * readouts after it.
+ */
+export function answerOf(
+  id: string,
+  label: string,
+  pick: (q: Lookup) => number,
+  printed: { value: number; decimals: number },
+  more?: (q: Lookup) => ReactNode,
+): PartBody {
+  return function Answer({ shown, playing }) {
+    const q = shown.frame.lookup;
+    const value = pick(q);
+    const exam = !playing && isExamShown(shown);
+    return (
+      <div className="readouts">
+        <Readout id={id} label={label} value={value} note={exam ? keyNote(value, printed) : undefined} />
+        {more?.(q)}
+      </div>
+    );
+  };
+}
+
 /** Props of an exam part about the query: (a) and (b). */
 export interface QueryPartProps {
   ctx: AnimContext;
@@ -154,7 +180,7 @@ export function queryPart(
     return (
       <ExamPart id={id} title={title} asks={asks}>
         <NotExam shown={shown} toExam={toExam} />
-        <Revealed ask={ask} what="the steps and the answer" minHeight="6rem" testId={`ask-hidden-${id}`}>
+        <Revealed ask={ask} what="the steps and the answer" minHeight="6rem">
           <Derivation testId={`derivation-${id}`}>
             <Worked shown={shown} playing={playing} />
           </Derivation>

@@ -200,6 +200,8 @@ export function GridView({
     arrow(e, q.bil, 'query');
   };
   const bIn = inWindow(bT, win);
+  // what the grid's memoized layers are drawn from
+  const layer = { grid, opts, range, win, unitsPerPx, present };
 
   return (
     <div className={`tx-grid${present ? ' present' : ''}`}>
@@ -224,23 +226,9 @@ export function GridView({
           onPointerCancel={end}
           onKeyDown={onKeyDown}
         >
-          <StaticLayer
-            grid={grid}
-            opts={opts}
-            range={range}
-            win={win}
-            unitsPerPx={unitsPerPx}
-            present={present}
-          />
+          <StaticLayer {...layer} />
           {ask ? null : <QueryLayer grid={grid} win={win} q={q} gRef={stencilRef} />}
-          <LabelLayer
-            grid={grid}
-            opts={opts}
-            range={range}
-            win={win}
-            present={present}
-            unitsPerPx={unitsPerPx}
-          />
+          <LabelLayer {...layer} />
           <PathLayer path={path} vflip={opts.vflip} win={win} />
           <g
             ref={markerRef}
@@ -422,31 +410,18 @@ const StaticLayer = memo(function StaticLayer({
   const items: React.ReactNode[] = [];
   // node lines (the bilinear cells' edges run through the nodes)
   if (nmax <= 32) {
+    const line = (key: string, x1: number, y1: number, x2: number, y2: number) => (
+      <line key={key} x1={x1} x2={x2} y1={y1} y2={y2} className="tx-node-line" />
+    );
+    const [u0, u1] = [sx(nodeCoord(0, W, opts.align), win), sx(nodeCoord(W - 1, W, opts.align), win)];
+    const [v0, v1] = [sy(nodeCoord(0, H, opts.align), win), sy(nodeCoord(H - 1, H, opts.align), win)];
     for (let i = 0; i < W; i++) {
       const x = sx(nodeCoord(i, W, opts.align), win);
-      items.push(
-        <line
-          key={`vl${i}`}
-          x1={x}
-          x2={x}
-          y1={sy(nodeCoord(0, H, opts.align), win)}
-          y2={sy(nodeCoord(H - 1, H, opts.align), win)}
-          className="tx-node-line"
-        />,
-      );
+      items.push(line(`vl${i}`, x, v0, x, v1));
     }
     for (let j = 0; j < H; j++) {
       const y = sy(nodeCoord(j, H, opts.align), win);
-      items.push(
-        <line
-          key={`hl${j}`}
-          y1={y}
-          y2={y}
-          x1={sx(nodeCoord(0, W, opts.align), win)}
-          x2={sx(nodeCoord(W - 1, W, opts.align), win)}
-          className="tx-node-line"
-        />,
-      );
+      items.push(line(`hl${j}`, u0, y, u1, y));
     }
   }
   if (showDots) {

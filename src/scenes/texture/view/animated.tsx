@@ -87,8 +87,11 @@ export function AnimPathPlot({ ctx, present }: { ctx: AnimContext; present: bool
     return {
       samples,
       summary: `${sum(samples.bil, 'Bilinear')} ${sum(samples.near, 'Nearest')} ${describePathStructure(profile)}`,
-      bilEvents: pathEvents(profile),
-      nearEvents: nearestEvents(profile),
+      // bilinear with a tick at each cell border, nearest at each of its steps
+      traces: [
+        { name: 'bilinear', ys: samples.bil, events: pathEvents(profile) },
+        { name: 'nearest', ys: samples.near, events: nearestEvents(profile) },
+      ],
       rows: pathTableRows(grid, opts, path, profile),
     };
   }, [profile, grid, opts, path]);
@@ -122,26 +125,19 @@ export function AnimPathPlot({ ctx, present }: { ctx: AnimContext; present: bool
           />
           <details className="tx-listen" data-testid="path-listen">
             <summary>Listen to the plot</summary>
-            <AudioTrace
-              label="bilinear along the path"
-              xs={data.samples.ts}
-              ys={data.samples.bil}
-              xLabel="t"
-              yLabel="bilinear"
-              events={data.bilEvents}
-              format={short}
-              testId="path-audio-bilinear"
-            />
-            <AudioTrace
-              label="nearest along the path"
-              xs={data.samples.ts}
-              ys={data.samples.near}
-              xLabel="t"
-              yLabel="nearest"
-              events={data.nearEvents}
-              format={short}
-              testId="path-audio-nearest"
-            />
+            {data.traces.map((tr) => (
+              <AudioTrace
+                key={tr.name}
+                label={`${tr.name} along the path`}
+                xs={data.samples.ts}
+                ys={tr.ys}
+                xLabel="t"
+                yLabel={tr.name}
+                events={tr.events}
+                format={short}
+                testId={`path-audio-${tr.name}`}
+              />
+            ))}
           </details>
         </div>
       ) : null}
