@@ -15,7 +15,7 @@ import {
   type RaceCurve,
 } from './describeRace';
 
-/** The words of the race's figures at t, and the frame they come from. */
+/** The words of the race's figures at t: the main description and each plot's. */
 export function raceWords(o: {
   track: RaceTrack;
   t: number;
