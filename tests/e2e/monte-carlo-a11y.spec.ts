@@ -162,13 +162,20 @@ test('ask=1: the answers and the race’s samples are hidden and it holds at t =
   await expect(page.getByTestId('q4-uniform')).toHaveCount(0);
   await expect(page.getByTestId('timeline')).toHaveCount(0);
   await expect.poll(() => page.evaluate(() => location.hash)).toMatch(/[?&]t=0(&|$)/);
-  expect(await description(page)).toMatch(/^No samples drawn yet/);
+  const held = await description(page);
+  expect(held).toMatch(/^No samples drawn yet/);
+  expect(held).not.toContain(I.toPrecision(4));
+  // nothing that gives the integral away: no estimate or |error| axes while held
+  await expect(page.getByTestId('race-estimate-uniform')).toHaveCount(0);
+  await expect(page.getByTestId('race-errors')).toHaveCount(0);
   // the setup stays: f and the pdfs over the empty histograms
   await expect(page.getByTestId('race-hist-uniform')).toHaveAttribute('data-t', '0');
   await page.getByTestId('reveal').click();
   await expect(page.getByTestId('ask-hidden')).toHaveCount(0);
   await expect(page.getByTestId('timeline')).toHaveAttribute('data-t', '0');
   await expect(page.getByTestId('q4-answer-a')).toHaveAttribute('data-value', String(I));
+  await expect(page.getByTestId('race-errors')).toHaveCount(1);
+  expect(await description(page)).toMatch(/^No samples drawn yet .*play or step/);
 });
 
 for (const [width, height] of [

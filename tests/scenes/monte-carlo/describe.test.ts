@@ -104,6 +104,19 @@ describe('the race in words', () => {
     };
     const base = text(exam(1), 'p ∝ f');
     expect(text(exam(2), 'p ∝ f')).not.toBe(base);
+    // held for ask=1: nothing of the result, not even the exact value
+    const held = describeRace({
+      t: 0,
+      max: 8192,
+      uniform: raceAt(exam(1), 0, []).uniform,
+      importance: raceAt(exam(1), 0, []).importance,
+      importanceName: 'p ∝ f',
+      exact: I,
+      half: null,
+      held: true,
+    });
+    expect(held).toContain('once the results are revealed');
+    expect(held).not.toContain('18.6');
     const ramp = text(raceTrack(f, 0, 2, linearPdf1D(0, 2, 4, 16), I, 1), 'the linear ramp');
     expect(ramp).toContain('importance (the linear ramp)');
     expect(ramp).not.toContain('zero variance');

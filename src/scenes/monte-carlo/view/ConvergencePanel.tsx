@@ -6,7 +6,7 @@ import { atRoundingLevel } from '../model';
 import { formatCount } from '../../../ui/format';
 import type { ProblemArgs, SeriesData } from '../jobs';
 import { REDRAW_MS, useLegendRoom } from './hooks';
-import { arr, L_ERR, L_EST, RunBar, DescribedPlot, strategyLine } from './plotStyle';
+import { arr, L_ERR, L_EST, REFERENCE, RunBar, DescribedPlot, strategyLine } from './plotStyle';
 import type { McTasks } from '../mc.worker';
 import { describeSeriesSet, seriesTable } from './plotWords';
 
@@ -57,7 +57,7 @@ export function ConvergencePanel({
         x: [1, nm],
         y: [ref, ref],
         name: `exact ${formatNumber(ref, 8)}`,
-        line: { color: '#777', dash: 'dot', width: 2 },
+        line: { color: REFERENCE, dash: 'dot', width: 2 },
       });
     }
     return t;
@@ -93,7 +93,7 @@ export function ConvergencePanel({
         x: [1, nm],
         y: [c, c / Math.sqrt(nm)],
         name: 'N⁻½ guide',
-        line: { color: '#888', dash: 'dash', width: 1.5 },
+        line: { color: REFERENCE, dash: 'dash', width: 1.5 },
       });
       t.push({
         type: 'scatter',
@@ -101,7 +101,7 @@ export function ConvergencePanel({
         x: [1, nm],
         y: [c, c / nm],
         name: 'N⁻¹ guide',
-        line: { color: '#888', dash: 'dot', width: 1.5 },
+        line: { color: REFERENCE, dash: 'dot', width: 1.5 },
       });
     }
     return t;

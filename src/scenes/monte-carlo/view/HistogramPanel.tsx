@@ -5,8 +5,9 @@ import { useAutoRun, type WorkerFactory } from '../../../workers';
 import { estimateFromTerms, histogram } from '../../../core/estimators';
 import type { ProblemArgs } from '../jobs';
 import { REDRAW_MS, useLegendRoom } from './hooks';
-import { arr, COLORS, L_HIST, CountField, DescribedPlot, RunBar } from './plotStyle';
+import { arr, COLORS, L_HIST, CountField, DescribedPlot, REFERENCE, RunBar } from './plotStyle';
 import type { McTasks } from '../mc.worker';
+import { zeroToRounding } from '../model';
 import { describeEstimateHistogram } from './plotWords';
 
 export function HistogramPanel({
@@ -33,6 +34,8 @@ export function HistogramPanel({
     const e = estimateFromTerms(est); // Welford over the finite estimates
     return { mean: e.estimate, sd: e.n > 1 ? Math.sqrt(e.variance) : NaN, count: e.n, sem: e.stderr };
   }, [est]);
+  // the estimates' spread is rounding noise (p ∝ f): no bias in standard errors to speak of
+  const zero = !!stats && zeroToRounding(stats.sd, stats.mean);
   const bins = useMemo(() => {
     if (!est || !stats) return null;
     const h = histogram(est, 40);
@@ -87,7 +90,7 @@ export function HistogramPanel({
         x: [exact, exact],
         y: [0, ymax],
         name: `exact ${formatNumber(exact, 8)}`,
-        line: { color: '#444', dash: 'dash', width: 2 },
+        line: { color: REFERENCE, dash: 'dash', width: 2 },
       },
       {
         type: 'scatter',
@@ -128,13 +131,9 @@ export function HistogramPanel({
           <Readout
             id="hist-bias"
             label="mean − exact, in standard errors"
-            value={stats && stats.sd > 1e-12 * Math.abs(exact) ? (stats.mean - exact) / stats.sem : null}
+            value={stats && !zero ? (stats.mean - exact) / stats.sem : null}
             digits={3}
-            note={
-              stats && !(stats.sd > 1e-12 * Math.abs(exact))
-                ? 'no spread: every estimate is exact (zero variance)'
-                : undefined
-            }
+            note={zero ? 'no spread: every estimate is exact (zero variance)' : undefined}
           />
         </div>
         <DescribedPlot

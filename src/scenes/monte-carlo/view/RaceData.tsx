@@ -15,7 +15,7 @@ import {
   type RaceCurve,
 } from './describeRace';
 
-/** The words of the race's figures at t, and the frame they come from. */
+/** The words of the race's figures at t: the main description and each plot's. */
 export function raceWords(o: {
   track: RaceTrack;
   t: number;
@@ -26,6 +26,8 @@ export function raceWords(o: {
   b: number;
   /** f on the drawn grid. */
   fValues: ArrayLike<number>;
+  /** ask=1: held at its start, nothing of the result said. */
+  held: boolean;
 }) {
   const { track, half } = o;
   const fr = raceAt(track, o.t, o.points, 0);
@@ -46,6 +48,7 @@ export function raceWords(o: {
       importance: fr.importance,
       importanceName: o.importanceName,
       exact: I,
+      held: o.held,
       half: half
         ? {
             lo: half[0],

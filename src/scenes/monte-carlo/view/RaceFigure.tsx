@@ -17,6 +17,7 @@ import {
   formatNumber,
   LiveReadout,
   Revealed,
+  STRATEGY_COLOR,
   TEXT_HZ,
   TimelineTransport,
   useTimeline,
@@ -39,8 +40,9 @@ import {
   type RaceTrack,
 } from '../model';
 
-const C_U = 'var(--accent-2)';
-const C_I = 'var(--accent)';
+// the shared strategy colours (src/ui/palette): 3 : 1 in both themes, apart under colour-vision deficiencies
+const C_U = STRATEGY_COLOR.uniform;
+const C_I = STRATEGY_COLOR.importance;
 
 // the shared chart guard: every coordinate finite, for any data (../../../ui/chartScale)
 const lin = linearScale;
@@ -284,8 +286,8 @@ export const RaceFigure = memo(function RaceFigure({
   const rate = (RACE_MAX / RACE_DURATION) * tl.speed;
   // the figures in words at the rendered position (React renders it on pause, step, seek and reset)
   const words = useMemo(
-    () => raceWords({ track, t: fr.t, points, importanceName, half, a, b, fValues: curve.f }),
-    [track, fr.t, points, importanceName, half, a, b, curve.f],
+    () => raceWords({ track, t: fr.t, points, importanceName, half, a, b, fValues: curve.f, held }),
+    [track, fr.t, points, importanceName, half, a, b, curve.f, held],
   );
 
   // per-frame writes (see the module comment); React's render below is the same geometry at tl.t
@@ -394,7 +396,8 @@ export const RaceFigure = memo(function RaceFigure({
       </svg>
     </DescribedFigure>
   );
-  const xPlot = (
+  // held (ask=1): no |error| and no running estimates (their axes would give the exact value away)
+  const xPlot = held ? null : (
     <DescribedFigure
       key="x"
       className="mc-svg-fig mc-tall-only"
@@ -475,7 +478,7 @@ export const RaceFigure = memo(function RaceFigure({
         staged={staged}
       />
     ),
-    est: (
+    est: held ? null : (
       <DescribedFigure
         key={`e${k}`}
         className="mc-svg-fig mc-tall-only"

@@ -52,6 +52,8 @@ export interface RaceScene {
   exact: number;
   /** The half of [a, b] where the importance pdf is heavier, and how many of each lane's t samples lie in it. */
   half: { lo: number; hi: number; uniform: number; importance: number } | null;
+  /** ask=1: held at its start until the results are revealed (the exact value is not said). */
+  held?: boolean;
 }
 
 /**
@@ -60,6 +62,8 @@ export interface RaceScene {
  */
 export function describeRace(r: RaceScene): string {
   const exact = `exact I = ${num(r.exact, 6)}`;
+  if (r.held)
+    return `No samples drawn yet (0 of ${formatCount(r.max)}): they arrive once the results are revealed. Shown: f, and each lane's pdf over its empty histogram.`;
   if (r.t < 1)
     return `No samples drawn yet (0 of ${formatCount(r.max)}): play or step to draw them; ${exact}.`;
   const head =
