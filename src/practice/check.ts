@@ -127,19 +127,12 @@ export function decimalPrecision(s: string): { halfUnit: number; sigFigs: number
 }
 
 const PLAIN_NUMBER = /^[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?$/;
-const NONE_WORDS = new Set([
-  'none',
-  'no',
-  'n/a',
-  'na',
-  'nan',
-  '-',
-  '—',
-  'no root',
-  'no hit',
-  'undefined',
-  'does not exist',
-]);
+const NONE_WORDS = new Set(['none', 'no', 'n/a', 'na', 'no root', 'no hit', 'does not exist']);
+/**
+ * Texts that say nothing a grader could read: a program's "not a number" or "undefined", or a bare
+ * dash. They are unreadable answers (never "none": typing NaN in every box must not score).
+ */
+const UNREADABLE = /^(?:nan|[+-]?infinity|undefined|null|[-–—−]+)$/i;
 
 /** Normalise what people type: unicode operators, ln, arc-functions, ξ₁/ξ₂ → xi. */
 export function normaliseInput(s: string): string {
@@ -165,6 +158,11 @@ export async function parseNumberAnswer(text: string): Promise<ParsedNumber> {
   if (raw === '') return { ok: false, error: 'Type a number (or none).' };
   if (raw.length > 200) return { ok: false, error: 'That answer is too long for a number.' };
   if (NONE_WORDS.has(raw.toLowerCase())) return { ok: true, ...exactNumber(null), text: raw };
+  if (UNREADABLE.test(raw))
+    return {
+      ok: false,
+      error: `“${raw}” is not an answer: type a number, or none where the quantity does not exist.`,
+    };
   const s = normaliseInput(raw);
   if (PLAIN_NUMBER.test(s)) {
     const x = Number(s);

@@ -3,6 +3,7 @@ import { touchOnly, useSeenOnce } from './useInView';
 import { resolveTraceColors } from './palette';
 import { isPresent } from './pageKeys';
 import './plot.css';
+import { runChunked } from './chunked';
 
 type PlotlyModule = (typeof import('plotly.js-cartesian-dist-min'))['default'];
 let plotlyPromise: Promise<PlotlyModule> | null = null;
@@ -190,13 +191,28 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
       if (layout && layout[k]) merged[k] = { ...axis, ...(layout[k] as object) };
     }
     if (isPresent()) presentTicks(merged);
-    pending.current = plotly
-      .react(el.current, resolveTraceColors(clean.data), resolveTraceColors(merged), {
-        ...PLOT_CONFIG,
-        // on touch screens the mode bar would sit over titles and legends with no hover to hide it
-        displayModeBar: touchOnly() ? false : 'hover',
-      })
-      .catch(() => setFailed(true));
+    // Each plot's redraw is a job of its own (./chunked): the plots that one change updates
+    // together (a scene has up to four) are drawn in separate tasks, not in one long one.
+    const node = el.current;
+    let settle = () => {};
+    let started = false;
+    pending.current = new Promise<void>((resolve) => (settle = resolve));
+    const cancel = runChunked(() => {
+      started = true;
+      plotly
+        .react(node, resolveTraceColors(clean.data), resolveTraceColors(merged), {
+          ...PLOT_CONFIG,
+          // on touch screens the mode bar would sit over titles and legends with no hover to hide it
+          displayModeBar: touchOnly() ? false : 'hover',
+        })
+        .catch(() => setFailed(true))
+        .finally(settle);
+    });
+    return () => {
+      // a newer redraw replaces one not started yet; one under way settles by itself
+      cancel();
+      if (!started) settle();
+    };
   }, [plotly, clean, layoutKey, height, themeKey]);
 
   // Purge only after the last react() has settled and its follow-up redraws (Plotly's auto-margin

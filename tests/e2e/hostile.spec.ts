@@ -7,16 +7,18 @@
  *    main-thread task over 1 s while the input is processed, and a notice naming every
  *    non-text parameter whose value could not be used;
  *  - the fuzz mode (`fuzz=1&seed=…&fuzzn=…`) on every route, fixed seed, a few hundred actions.
- * Routes come from the scene registry (src/scenes/registry.ts) plus EXTRA_ROUTES, parameter names
- * from each scene's params.ts, so new scenes are covered without editing this file.
+ * Routes come from the catalogue (src/kit/catalogue.ts) plus EXTRA_ROUTES, parameter names and
+ * kinds from each scene's schema (its params.ts), so new scenes are covered without editing this file.
  */
-import { readFileSync, existsSync } from 'node:fs';
 import { test, expect, openScene } from './fixtures';
+import { installLongTaskObserver, settle, slowdown, takeLongTasks } from './longTasks';
+import { SCENES, sceneParams } from './sceneSchemas';
+import type { SceneId } from '../../src/kit/catalogue';
 import type { Page } from '@playwright/test';
 
-type Route = { path: string; id: string | null; params?: { name: string; kind: string }[] };
+type Route = { path: string; id: SceneId | null; params?: { name: string; kind: string }[] };
 
-/** Routes that are not scenes of the registry, with the parameters each takes. */
+/** Routes that are not scenes, with the parameters each takes. */
 const EXTRA_ROUTES: Route[] = [
   { path: '/', id: null, params: [] },
   { path: '/guide', id: null, params: [] },
@@ -34,36 +36,10 @@ const EXTRA_ROUTES: Route[] = [
   },
 ];
 
-function registryRoutes(): Route[] {
-  const src = readFileSync('src/scenes/registry.ts', 'utf8');
-  const out: Route[] = [];
-  for (const m of src.matchAll(/id:\s*'([\w-]+)',\s*\n\s*path:\s*'(\/[\w/-]*)'/g))
-    out.push({ id: m[1], path: m[2] });
-  return out;
-}
+/** Every scene of the catalogue; its parameters come from its schema when the test runs. */
+const SCENE_ROUTES: Route[] = SCENES.map((sc) => ({ path: sc.path, id: sc.id }));
 
-/** Parameter names of a scene's URL schema (top-level keys of `schema = { … }` in its params.ts). */
-function paramNames(id: string | null): { name: string; kind: string }[] {
-  if (!id) return [];
-  const file = `src/scenes/${id}/params.ts`;
-  if (!existsSync(file)) return [];
-  const src = readFileSync(file, 'utf8');
-  const start = src.indexOf('export const schema = {');
-  if (start < 0) return [];
-  const body = src.slice(start);
-  const out: { name: string; kind: string }[] = [];
-  for (const m of body.matchAll(/^ {2}(\w+): \{(?:\s*kind: '(\w+)')?/gm)) {
-    let kind = m[2];
-    if (!kind) {
-      const after = body.slice(m.index!, m.index! + 200);
-      kind = /kind: '(\w+)'/.exec(after)?.[1] ?? 'unknown';
-    }
-    out.push({ name: m[1], kind });
-  }
-  return out;
-}
-
-const ROUTES = [...registryRoutes(), ...EXTRA_ROUTES];
+const ROUTES = [...SCENE_ROUTES, ...EXTRA_ROUTES];
 
 const NESTED = `${'exp('.repeat(60)}x${')'.repeat(60)}`;
 /** [label, raw text put into the query as is (already URL-encoded where needed)]. */
@@ -85,61 +61,6 @@ const CORPUS: [string, string][] = [
   ['deeply nested calls', encodeURIComponent(NESTED)],
 ];
 
-async function installLongTaskObserver(page: Page) {
-  await page.evaluate(() => {
-    const w = window as unknown as { __long: number[] };
-    w.__long = [];
-    new PerformanceObserver((list) => {
-      for (const e of list.getEntries()) w.__long.push(e.duration);
-    }).observe({ type: 'longtask', buffered: false });
-  });
-}
-
-/**
- * How much slower than a quiet machine this page's main thread runs now (≥ 1): a fixed loop that
- * takes ~10 ms on a quiet desktop core, timed three times, the fastest kept. The 1 s long-task
- * bound is scaled by it, so a machine shared by many test runs does not fail the test, while an
- * input that costs exponential work (minutes) still does.
- */
-async function slowdown(page: Page): Promise<number> {
-  const ms = await page.evaluate(() => {
-    let best = Infinity;
-    for (let r = 0; r < 3; r++) {
-      const t0 = performance.now();
-      let acc = 0;
-      for (let i = 0; i < 10_000_000; i++) acc += Math.sqrt(i);
-      const t = performance.now() - t0;
-      if (acc > 0) best = Math.min(best, t);
-    }
-    return best;
-  });
-  return Math.max(1, ms / 10);
-}
-
-/**
- * Resolves once the main thread has rendered two frames and run a macrotask (it is free again).
- * A compositor that skips frames (seen once on a loaded machine: no animation frame for minutes
- * while scrolling the default page) must not hang the test, so a 2 s timer also resolves it: a
- * timer still needs a free main thread, so a page that blocks its main thread still fails (and
- * long tasks are measured separately below).
- */
-async function settle(page: Page) {
-  await page.evaluate(
-    () =>
-      new Promise<void>((resolve) => {
-        const timer = setTimeout(resolve, 2000);
-        requestAnimationFrame(() =>
-          requestAnimationFrame(() =>
-            setTimeout(() => {
-              clearTimeout(timer);
-              resolve();
-            }, 0),
-          ),
-        );
-      }),
-  );
-}
-
 async function expectWorkingScene(page: Page, label: string) {
   await expect(page.locator('main#main')).toBeVisible();
   await expect(page.locator('.loading')).toHaveCount(0);
@@ -152,7 +73,7 @@ async function expectWorkingScene(page: Page, label: string) {
 for (const route of ROUTES) {
   test(`URL corpus on ${route.path}: every parameter × every hostile value`, async ({ page }) => {
     test.setTimeout(240_000);
-    const params = route.params ?? paramNames(route.id);
+    const params = route.params ?? (route.id ? await sceneParams(route.id) : []);
     await openScene(page, `#${route.path}`);
     // let the first load (lazy libraries, first plots) finish before timing the input
     for (let y = 0; y <= 4; y++) {
@@ -187,12 +108,7 @@ for (const route of ROUTES) {
           else expect(text, `${route.path}: ${p.name}=${label} is named`).toContain(p.name);
       }
       await settle(page);
-      const long = await page.evaluate(() => {
-        const w = window as unknown as { __long: number[] };
-        const l = w.__long.slice();
-        w.__long.length = 0;
-        return l;
-      });
+      const long = await takeLongTasks(page);
       expect(
         Math.max(0, ...long),
         `${route.path} with every parameter = ${label}: longest main-thread task (ms; 1 s × slowdown ${limitMs / 1000})`,

@@ -7,7 +7,14 @@ import {
   normaliseInput,
   parseNumberAnswer,
 } from '../../src/practice/check';
-import type { ChoiceAnswer, FormulaAnswer, NumberAnswer } from '../../src/practice/model';
+import {
+  allAnswers,
+  type ChoiceAnswer,
+  type FormulaAnswer,
+  type NumberAnswer,
+} from '../../src/practice/model';
+import { QUESTIONS } from '../../src/practice/questions';
+import { gradeAnswers } from '../../src/practice/session';
 
 const numSpec: NumberAnswer = {
   kind: 'number',
@@ -47,6 +54,35 @@ describe('numbers', () => {
     expect((await checkAnswer(numSpec, 'none')).value).toBe('incorrect');
     expect(classifyNumber({ ...numSpec, expected: null }, null).value).toBe('correct');
     expect((await checkAnswer(numSpec, 'garbage')).value).toBe('invalid');
+  });
+});
+
+describe('unreadable answers are never "none"', () => {
+  const UNREADABLE = ['NaN', 'nan', '-', '—', '–', 'undefined', 'null', 'Infinity', '-Infinity'];
+  it('NaN, a dash, undefined: unreadable, with a message saying what to type', async () => {
+    for (const t of UNREADABLE) {
+      const r = await parseNumberAnswer(t);
+      expect(r.ok, t).toBe(false);
+      if (!r.ok) expect(r.error, t).toContain('none');
+      expect((await checkAnswer({ ...numSpec, expected: null }, t)).value, t).toBe('invalid');
+    }
+    // the words that do mean "does not exist" still do
+    for (const t of ['none', 'None', 'no hit', 'n/a'])
+      expect((await checkAnswer({ ...numSpec, expected: null }, t)).value, t).toBe('correct');
+  });
+  it('typing one of them in every box of any variant scores nothing (Q5 seed 11 once scored 3 with NaN)', async () => {
+    for (const q of QUESTIONS)
+      for (const seed of [1, 2, 3, 7, 11, 12]) {
+        const v = q.generate(seed);
+        for (const t of ['NaN', '-', 'undefined']) {
+          const texts = Object.fromEntries(allAnswers(v).map((a) => [a.name, t]));
+          const verdicts = Object.values(await gradeAnswers(v, texts));
+          expect(
+            verdicts.filter((x) => x.value === 'correct' || x.value === 'consistent'),
+            `${q.id} seed ${seed}: ${t} everywhere`,
+          ).toEqual([]);
+        }
+      }
   });
 });
 

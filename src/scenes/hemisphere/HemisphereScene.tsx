@@ -9,8 +9,8 @@ import { useMemo } from 'react';
 import type { SceneProps } from '../../kit/scene';
 import { useCompiled, ExprField, Notice, Panel, MathTex } from '../../ui';
 import { ExamQuestion, ExploreFurther } from '../../ui/exam';
-import { useWorkerJob, workerFactory } from '../../workers';
-import type { HemisphereTasks } from './hemisphere.worker';
+import { useWorkerJob } from '../../workers';
+import { makeWorker } from './worker';
 import { nextTask } from '../../ui/chunked';
 import { fillSequence2D } from '../../core/random';
 import { examChecksCached, lobeFromParams } from './model';
@@ -30,10 +30,6 @@ import { Q1 } from './exam/Q1';
 import { Q2, lobeTexOf } from './exam/Q2';
 import type { RepeatArgs, StatsArgs } from './jobs';
 import './hemisphere.css';
-
-const makeWorker = workerFactory<HemisphereTasks>(
-  () => new Worker(new URL('./hemisphere.worker.ts', import.meta.url), { type: 'module' }),
-);
 
 const REPEAT_RUNS = 1000;
 

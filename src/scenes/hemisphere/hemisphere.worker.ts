@@ -1,9 +1,20 @@
 /** Worker of the hemisphere scene: runs ./jobs off the main thread (cancel = terminate, src/workers/run.ts). */
 import { exposeTasks, type ProgressFn } from '../../workers/expose';
-import { compileExpression } from '../../core/expr';
-import { repeatJob, statsJob, type Compile2, type RepeatArgs, type StatsArgs } from './jobs';
+import {
+  pointsJob,
+  repeatJob,
+  statsJob,
+  type Compile2,
+  type PointsArgs,
+  type PointsChunk,
+  type RepeatArgs,
+  type StatsArgs,
+} from './jobs';
 
+// the expression compiler (mathjs) loads on first use: the 3D view's points of a built-in lobe
+// need none, and they are what the scene's first screen waits for
 const compile: Compile2 = async (src, vars) => {
+  const { compileExpression } = await import('../../core/expr');
   const r = await compileExpression(src, vars);
   return r.ok ? { ok: true, fn: r.fn as (...args: number[]) => number } : r;
 };
@@ -11,6 +22,7 @@ const compile: Compile2 = async (src, vars) => {
 const tasks = {
   stats: (a: StatsArgs) => statsJob(a, compile),
   repeat: (a: RepeatArgs, progress: ProgressFn) => repeatJob(a, compile, progress),
+  points: (a: PointsArgs, progress: ProgressFn<PointsChunk>) => pointsJob(a, compile, progress),
 };
 exposeTasks(tasks);
 

@@ -1,7 +1,23 @@
 import { describe, expect, it } from 'vitest';
 import { compileExpression } from '../../../src/core/expr';
-import { repeatJob, statsJob, type Compile2, type StatsArgs } from '../../../src/scenes/hemisphere/jobs';
-import { computeDrawStats, lobeFromParams, repeatEstimates } from '../../../src/scenes/hemisphere/model';
+import {
+  FIRST_CHUNK,
+  MAX_CHUNK,
+  pointsArgsOf,
+  pointsJob,
+  repeatJob,
+  statsJob,
+  type Compile2,
+  type PointsChunk,
+  type StatsArgs,
+} from '../../../src/scenes/hemisphere/jobs';
+import {
+  computeDrawStats,
+  drawDirections,
+  lobeFromParams,
+  repeatEstimates,
+} from '../../../src/scenes/hemisphere/model';
+import { xiColor } from '../../../src/scenes/hemisphere/view/colors';
 
 const compile: Compile2 = async (src, vars) => {
   const r = await compileExpression(src, vars);
@@ -52,5 +68,65 @@ describe('hemisphere jobs (what the worker runs)', () => {
     );
     expect(Array.from(got.importance)).toEqual(Array.from(want.importance));
     expect(seen.length).toBeGreaterThan(0);
+  });
+});
+
+describe('the 3D view points, streamed from the worker', () => {
+  const args = { lobe: 'phong' as const, exponent: 12, pdf: '', points: 'sobol' as const, seed: 5, n: 9000 };
+  it('chunks cover [0, n) in order: the directions and (ξ₁, ξ₂) of drawDirections, in float32, and their colours', async () => {
+    const chunks: PointsChunk[] = [];
+    const r = await pointsJob(args, compile, (_f, c) => chunks.push(c));
+    expect(r.n).toBe(9000);
+    expect(chunks[0].count).toBe(FIRST_CHUNK);
+    let next = 0;
+    for (const c of chunks) {
+      expect(c.start).toBe(next);
+      expect(c.count).toBeLessThanOrEqual(MAX_CHUNK);
+      next += c.count;
+    }
+    expect(next).toBe(9000);
+    const { u, dirs } = drawDirections(lobeFromParams('phong', 12).lobe!, 'sobol', 5, 9000);
+    const rgb = new Uint8Array(3);
+    for (const c of chunks)
+      for (const i of [0, c.count >> 1, c.count - 1]) {
+        const k = c.start + i;
+        expect(c.pos[3 * i + 2]).toBe(Math.fround(dirs[3 * k + 2]));
+        expect(c.xi[2 * i]).toBe(Math.fround(u[2 * k]));
+        xiColor(u[2 * k], u[2 * k + 1], rgb);
+        expect(Array.from(c.col.subarray(3 * i, 3 * i + 3))).toEqual(Array.from(rgb));
+      }
+  });
+  it('refuses without a density; a typed one is compiled and tabulated as on the page', async () => {
+    await expect(pointsJob({ ...args, lobe: 'custom', pdf: 'cos(' }, compile, () => {})).rejects.toThrow(
+      /no valid density/,
+    );
+    const chunks: PointsChunk[] = [];
+    await pointsJob({ ...args, lobe: 'custom', pdf: 'cos(theta)^2', n: 100 }, compile, (_f, c) =>
+      chunks.push(c),
+    );
+    const { dirs } = drawDirections(
+      lobeFromParams('custom', 0, (t) => Math.cos(t) ** 2).lobe!,
+      'sobol',
+      5,
+      100,
+    );
+    expect(chunks[0].pos[3 * 99]).toBe(Math.fround(dirs[3 * 99]));
+  });
+  it('pointsArgsOf keeps only what the lobe reads: the exponent outside Phong and the density outside custom do not restart the points', () => {
+    const p = {
+      lobe: 'exam' as const,
+      exponent: 8,
+      pdf: 'cos(theta)',
+      points: 'halton' as const,
+      seed: 3,
+      n: 10,
+    };
+    expect(pointsArgsOf(p)).toEqual(pointsArgsOf({ ...p, exponent: 50, pdf: 'sin(theta)' }));
+    expect(pointsArgsOf({ ...p, lobe: 'phong' })).not.toEqual(
+      pointsArgsOf({ ...p, lobe: 'phong', exponent: 9 }),
+    );
+    expect(pointsArgsOf({ ...p, lobe: 'custom' })).not.toEqual(
+      pointsArgsOf({ ...p, lobe: 'custom', pdf: 'sin(theta)' }),
+    );
   });
 });

@@ -21,6 +21,7 @@ import { animDuration, animFrame, type AnimFrame, type AnimKind, type Lobe } fro
 import { Stage } from '../../../ui/stage';
 import { FigureCaption, FigureReadouts } from './FigureText';
 import type { HemisphereSchema, LobeId } from '../params';
+import type { PointsArgs } from '../jobs';
 // Static, not lazy: the 3D panel is on the first screen, and a Suspense fallback of another height
 // shifted the layout when it arrived (three.js itself still loads lazily, inside Viewport).
 import { HemisphereView } from './HemisphereView';
@@ -44,6 +45,8 @@ const STAGE_VIEW_HEIGHT = 'max(12rem, calc(100dvh - var(--stage-top, 0px) - 13re
 
 interface FigureProps {
   lobe: Lobe | null;
+  /** What the 3D view's points depend on (../jobs pointsArgsOf). */
+  points: PointsArgs;
   lobeId: LobeId;
   kind: SequenceKind;
   seed: number;
@@ -73,6 +76,7 @@ interface FigureProps {
  */
 export function Figure({
   lobe,
+  points,
   lobeId,
   kind,
   seed,
@@ -185,6 +189,7 @@ export function Figure({
                 height={present ? STAGE_VIEW_HEIGHT : 400}
                 tl={tl}
                 lobe={lobe}
+                points={points}
                 kind={kind}
                 seed={seed}
                 n={n}

@@ -10,53 +10,40 @@
  * - Growth (`anim=grow`): the first `growCount(n, t)` samples are drawn (geometric, 0 → n).
  *
  * One preallocated Float32 position attribute (the directions), one Uint8 colour attribute and one
- * Float32 (ξ₁, ξ₂) attribute are filled in place, batch by batch, up to what the frame needs;
- * filled points are kept, so scrubbing back and forth costs nothing. Nothing renders while the
- * timeline is paused and the buffers are filled, unless the camera moves.
+ * Float32 (ξ₁, ξ₂) attribute receive the points as the worker streams them (../pointStream: the
+ * main thread only copies each chunk in), and at most UPLOAD_PER_FRAME new points go to the GPU
+ * per frame; filled points are kept, so scrubbing back and forth costs nothing. Nothing renders
+ * while the timeline is paused and the buffers are filled, unless the camera moves.
  */
 import { formatCount } from '../../../ui/format';
 import { useEffect, useRef } from 'react';
 import type * as THREE from 'three';
 import { Viewport, type ViewportContext } from '../../../three';
-import { fillSequence2D, type SequenceKind } from '../../../core/random';
+import type { SequenceKind } from '../../../core/random';
 import { squarePoint, warpedGrid, type AnimFrame, type Lobe } from '../model';
 import { MAX_N } from '../params';
+import type { PointsArgs, PointsChunk } from '../jobs';
+import { streamPoints } from '../pointStream';
 import { xiColor } from './colors';
 import type { Cell } from '../stratum';
 import { patchStratumShader, stratumLayer, stratumUniforms, type StratumLayer } from './stratum3d';
-import { nextTask, SLICE_MS } from '../../../ui/chunked';
+import { nextTask } from '../../../ui/chunked';
 
-const BATCH = 1 << 15;
-/** New points of the first frame, before the generation speed is known (cold code runs slowly). */
-const FIRST_FRAME = 2048;
-/** Bounds on new points per frame once the speed is measured. */
-const MIN_PER_FRAME = 1024;
-const MAX_PER_FRAME = 1 << 18;
+/** New points sent to the GPU per frame (3 MB of buffers): one frame never uploads all of 10⁶. */
+const UPLOAD_PER_FRAME = 1 << 17;
 /** While the camera is being dragged, draw at most this many points (level of detail). */
 const ORBIT_LOD = 200_000;
 const GRID_SEGMENTS = 48;
+/** A change of the point set restarts the stream after this much quiet (a storm of changes starts one). */
+const RESTART_MS = 40;
 
 interface Fill {
   /** Points whose direction, colour and (ξ₁, ξ₂) are in the buffers: [0, filled). */
   filled: number;
+  /** Of those, the points marked for upload to the GPU (drawn from the next render): [0, uploaded). */
+  uploaded: number;
   /** Points the current frame wants drawn. */
   target: number;
-  /** Measured generation speed (points per ms, running average) and the last frame's length (ms). */
-  pointsPerMs: number;
-  frameMs: number;
-  last: number;
-}
-
-/**
- * New points allowed this frame: what the measured speed generates in a quarter of the last frame's
- * length, kept between 4 and 40 ms of work. Time-sliced so that the first fill on load (cold code,
- * a phone's CPU) never makes one long task (20 000 points in one frame took ~450 ms at 4×
- * CPU throttling), while slow software-GL frames still take big batches for 10⁶ points.
- */
-function perFrame(a: Fill): number {
-  if (!a.pointsPerMs) return FIRST_FRAME;
-  const budgetMs = Math.min(40, Math.max(4, 0.25 * a.frameMs));
-  return Math.min(MAX_PER_FRAME, Math.max(MIN_PER_FRAME, Math.floor(a.pointsPerMs * budgetMs)));
 }
 
 /** The warped grid recedes while a stratum is followed, so the stratum's outline stands out. */
@@ -64,6 +51,8 @@ const gridOpacity = (cell: Cell | null) => (cell ? 0.35 : 0.9);
 
 export interface HemisphereViewProps {
   lobe: Lobe;
+  /** What the points depend on (../jobs pointsArgsOf): the worker draws them from these. */
+  points: PointsArgs;
   kind: SequenceKind;
   seed: number;
   n: number;
@@ -111,6 +100,7 @@ function pointBuffers(T: ViewportContext['THREE'], cap: number) {
 
 export function HemisphereView({
   lobe,
+  points: pointArgs,
   kind,
   seed,
   n,
@@ -135,13 +125,14 @@ export function HemisphereView({
     gridEnds: { a: Float64Array; b: Float64Array } | null;
     stratum: StratumLayer;
   } | null>(null);
-  const fill = useRef<Fill>({ filled: 0, target: frame.shown, pointsPerMs: 0, frameMs: 16, last: 0 });
-  const cfg = useRef({ lobe, kind, seed, n, frame, showPoints, showGrid, cell });
-  cfg.current = { lobe, kind, seed, n, frame, showPoints, showGrid, cell };
+  const fill = useRef<Fill>({ filled: 0, uploaded: 0, target: frame.shown });
+  const cfg = useRef({ lobe, pointArgs, kind, seed, n, frame, showPoints, showGrid, cell });
+  cfg.current = { lobe, pointArgs, kind, seed, n, frame, showPoints, showGrid, cell };
   const label = useRef<HTMLSpanElement>(null);
-  const scratch = useRef<{ u: Float64Array; d: Float64Array } | null>(null);
+  /** Stops the stream in flight (or the pending restart). */
+  const stopStream = useRef<() => void>(() => {});
 
-  const drawn = () => Math.min(fill.current.filled, fill.current.target);
+  const drawn = () => Math.min(fill.current.uploaded, fill.current.target);
   const updateLabel = () => {
     const v = drawn();
     // per frame while the warp morph plays: write only on a change (toLocaleString is slow)
@@ -151,70 +142,82 @@ export function HemisphereView({
     }
   };
 
-  /** Generate points [filled, upTo) into the buffers (in batches). */
-  const generate = (upTo: number) => {
+  /**
+   * Copy a chunk of the stream into the buffers (the GPU gets it over the next frames). The points
+   * of the previous parameters stay drawn until the new stream's first chunk replaces them.
+   */
+  const receive = (c: PointsChunk) => {
     const o = objs.current;
-    const { lobe: lb, kind: kd, seed: sd, n: nn } = cfg.current;
-    if (!o) return;
     const a = fill.current;
-    const end = Math.min(nn, upTo);
-    if (!scratch.current)
-      scratch.current = { u: new Float64Array(2 * BATCH), d: new Float64Array(3 * BATCH) };
-    const { u, d } = scratch.current;
-    const pos = o.pos.array as Float32Array;
-    const col = o.col.array as Uint8Array;
-    const xi = o.xi.array as Float32Array;
-    const start = a.filled;
+    if (!o || c.start + c.count > o.pos.count) return;
+    if (c.start === 0) a.filled = a.uploaded = 0;
+    if (c.start !== a.filled) return;
     const t0 = performance.now();
-    for (let s = start; s < end; s += BATCH) {
-      const e = Math.min(end, s + BATCH);
-      const m = e - s;
-      fillSequence2D(kd, sd, nn, u, s, e, 0);
-      lb.sampleBatch(u, d, m);
-      for (let i = 0; i < m; i++) {
-        const j = 3 * (s + i);
-        pos[j] = d[3 * i];
-        pos[j + 1] = d[3 * i + 1];
-        pos[j + 2] = d[3 * i + 2];
-        xi[2 * (s + i)] = u[2 * i];
-        xi[2 * (s + i) + 1] = u[2 * i + 1];
-        xiColor(u[2 * i], u[2 * i + 1], col, j);
-      }
+    (o.pos.array as Float32Array).set(c.pos, 3 * c.start);
+    (o.col.array as Uint8Array).set(c.col, 3 * c.start);
+    (o.xi.array as Float32Array).set(c.xi, 2 * c.start);
+    a.filled = c.start + c.count;
+    // the main thread's cost per chunk, readable with performance.getEntriesByName('hemisphere-grow')
+    try {
+      performance.measure('hemisphere-grow', { start: t0, end: performance.now(), detail: c.count });
+    } catch {
+      /* older engines without measure options: the probe is optional */
     }
-    if (end > start) {
-      // generation cost per batch, readable with performance.getEntriesByName('hemisphere-grow')
-      const t1 = performance.now();
-      try {
-        performance.measure('hemisphere-grow', { start: t0, end: t1, detail: end - start });
-      } catch {
-        /* older engines without measure options: the probe is optional */
-      }
-      if (end - start >= MIN_PER_FRAME && t1 > t0) {
-        const pps = (end - start) / (t1 - t0);
-        a.pointsPerMs = a.pointsPerMs ? 0.7 * a.pointsPerMs + 0.3 * pps : pps;
-      }
+    ctxRef.current?.invalidate();
+  };
+
+  /** Mark up to UPLOAD_PER_FRAME more of the filled points for upload; true while some are left. */
+  const upload = (): boolean => {
+    const o = objs.current;
+    const a = fill.current;
+    if (!o) return false;
+    const end = Math.min(a.filled, a.target, a.uploaded + UPLOAD_PER_FRAME);
+    if (end > a.uploaded) {
       for (const [attr, w] of [
         [o.pos, 3],
         [o.col, 3],
         [o.xi, 2],
       ] as const) {
-        // ranges add up until the next render uploads them (three merges and clears them then):
-        // the start-up fill generates several batches between two renders
-        attr.addUpdateRange(w * start, w * (end - start));
+        // ranges add up until the next render uploads them (three merges and clears them then)
+        attr.addUpdateRange(w * a.uploaded, w * (end - a.uploaded));
         attr.needsUpdate = true;
       }
-      a.filled = end;
+      a.uploaded = end;
     }
+    return a.uploaded < Math.min(a.filled, a.target);
   };
 
-  /** Show what the current frame asks for: the draw range, the point size, the morph. */
-  const apply = () => {
+  /** Start the stream of the current parameters from point 0 (after `delayMs`). */
+  const restartStream = (delayMs: number) => {
+    stopStream.current();
+    const { pointArgs: args, lobe: lb } = cfg.current;
+    let stop: (() => void) | null = null;
+    const go = () => {
+      stop = streamPoints(args, lb, receive);
+    };
+    const timer = delayMs > 0 ? window.setTimeout(go, delayMs) : (go(), 0);
+    stopStream.current = () => {
+      window.clearTimeout(timer);
+      stop?.();
+    };
+  };
+
+  /** The draw range, the point size and the count at what is drawn (within a frame: no new frame). */
+  const showDrawn = () => {
     const o = objs.current;
     if (!o) return;
     const v = drawn();
     o.geom.setDrawRange(0, v);
     // bigger dots while there are few of them
     o.material.size = Math.max(1.5, Math.min(7, 9 / Math.pow(Math.max(1, v), 0.18)));
+    updateLabel();
+  };
+
+  /** Show what the current frame asks for: the draw range, the point size, the morph. */
+  const apply = () => {
+    const o = objs.current;
+    if (!o) return;
+    showDrawn();
     const s = cfg.current.frame.s;
     o.morph.value = s;
     if (o.grid && o.gridEnds) {
@@ -226,7 +229,6 @@ export function HemisphereView({
       p.needsUpdate = true;
     }
     o.stratum.morph(s);
-    updateLabel();
     ctxRef.current?.invalidate();
   };
 
@@ -362,8 +364,9 @@ export function HemisphereView({
     };
     ctx.controls.addEventListener('start', onStart);
     ctx.controls.addEventListener('end', onEnd);
-    fill.current.filled = 0;
+    fill.current.filled = fill.current.uploaded = 0;
     fill.current.target = cfg.current.frame.shown;
+    restartStream(0);
     apply();
     // the grid in a task of its own (before the engine's shader warm-up, which queues after it)
     nextTask(() => {
@@ -372,46 +375,16 @@ export function HemisphereView({
       apply();
     });
 
-    // The first fill, before the first frame (the engine draws none until its shaders are ready):
-    // in tasks of about SLICE_MS each, not in frames (on a software WebGL every frame is
-    // a synchronous read-back of tens of ms on a phone, and the fill took one frame per batch).
-    let filling = true;
-    const fillTask = () => {
-      const a = fill.current;
-      if (!filling || objs.current === null) return;
-      if (a.filled >= a.target) {
-        filling = false;
-        return;
-      }
-      generate(
-        Math.min(
-          a.target,
-          a.filled +
-            (a.pointsPerMs ? Math.max(MIN_PER_FRAME, Math.floor(a.pointsPerMs * SLICE_MS)) : FIRST_FRAME),
-        ),
-      );
-      apply();
-      nextTask(fillTask);
-    };
-    nextTask(fillTask);
-
-    // fill the buffers up to what the frame needs, at most perFrame points per frame; frames are
-    // requested only while there is something left to fill
+    // each frame: the next points of the stream to the GPU, up to what the frame needs; frames
+    // are requested only while there is something left to upload
     const stop = ctx.onFrame(() => {
-      const a = fill.current;
-      if (a.filled >= a.target) {
-        a.last = 0;
-        return false;
-      }
-      const now = performance.now();
-      if (a.last) a.frameMs = now - a.last;
-      a.last = now;
-      generate(Math.min(a.target, a.filled + perFrame(a)));
-      apply();
-      return a.filled < a.target;
+      const before = fill.current.uploaded;
+      const more = upload();
+      if (fill.current.uploaded !== before) showDrawn();
+      return more;
     });
     return () => {
-      filling = false;
+      stopStream.current();
       stop();
       ctx.controls.removeEventListener('start', onStart);
       ctx.controls.removeEventListener('end', onEnd);
@@ -435,13 +408,15 @@ export function HemisphereView({
       o.points.geometry = b.geom;
       o.geom.dispose();
       Object.assign(o, b);
+      fill.current.filled = fill.current.uploaded = 0;
     }
     buildGrid();
-    fill.current.filled = 0;
     performance.clearMeasures?.('hemisphere-grow');
+    restartStream(RESTART_MS);
     apply();
   };
-  useEffect(() => onPointsChange.current(), [lobe, kind, seed, n]);
+  const pointsKey = JSON.stringify(pointArgs);
+  useEffect(() => onPointsChange.current(), [lobe, pointsKey]);
 
   // the followed stratum: its patch and outline for this lobe, its samples marked by the shader
   const onCellChange = useRef(() => {});

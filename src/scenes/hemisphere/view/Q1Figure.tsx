@@ -11,6 +11,7 @@ import type { Lobe } from '../model';
 import type { HemisphereParams, HemisphereSchema } from '../params';
 import { cellFromParam, type Cell } from '../stratum';
 import { Figure } from './Figure';
+import { pointsArgsOf } from '../jobs';
 
 export function Q1Figure({
   params,
@@ -52,6 +53,7 @@ export function Q1Figure({
       ) : null}
       <Figure
         lobe={lobe}
+        points={pointsArgsOf(params)}
         kind={params.points}
         seed={params.seed}
         n={params.n}

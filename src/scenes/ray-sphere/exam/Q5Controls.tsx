@@ -147,7 +147,7 @@ export const Q5Fields = memo(function Q5Fields({
         value={method}
         options={[
           { value: 'stable', label: 'robust (Ray Tracing Gems ch. 7)' },
-          { value: 'naive', label: 'textbook (−b ± √Δ) / 2a' },
+          { value: 'naive', label: 'textbook (−b\u00a0±\u00a0√Δ) / 2a' },
         ]}
         onChange={(m) => setParams({ method: m })}
         testId="method"

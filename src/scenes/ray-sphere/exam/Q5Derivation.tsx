@@ -117,7 +117,7 @@ const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySph
                 ? `That is b² − 4ac of these numbers in ${arith} arithmetic; the robust form (used for the roots ` +
                   'here, see “Explore further”) gives the same value.'
                 : `That is b² − 4ac of these numbers in ${arith} arithmetic (the textbook method). The roots ` +
-                  'below use the robust form, which computes Δ = 4a(r² − |ℓ|²) = ' +
+                  'below use the robust form, which computes Δ = 4a(r²\u00a0−\u00a0|ℓ|²) = ' +
                   `${fmt(res.discriminant)} without cancellation: the same quantity, different rounding.`}
             </p>
           ) : null}

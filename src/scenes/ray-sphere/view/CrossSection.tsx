@@ -388,10 +388,10 @@ export function CrossSection({
         <text data-k="note" className="rs-note" display="none" />
       </svg>
       <p className="rs-caption">
-        Plane through the ray and the centre. Solid: the ray (t ≥ 0); dashed: the line behind the origin (t
-        &lt; 0); filled dots: the roots. Drag a ringed handle (<b>o</b>, the arrow tip for the direction,{' '}
-        <b>C</b>, and the one on the rim for the radius), or focus it and use the arrow keys; or type the
-        values.
+        Plane through the ray and the centre. Solid: the ray (t&nbsp;≥&nbsp;0); dashed: the line behind the
+        origin (t&nbsp;&lt;&nbsp;0); filled dots: the roots. Drag a ringed handle (<b>o</b>, the arrow tip for
+        the direction, <b>C</b>, and the one on the rim for the radius), or focus it and use the arrow keys;
+        or type the values.
       </p>
     </div>
   );

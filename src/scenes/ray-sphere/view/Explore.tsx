@@ -72,10 +72,10 @@ export function RaySphereExplore({ tl, modelAt, slow, ends, present, dark, ask }
           <ErrorVsDistanceMemo current={Number(slow.distanceRatio.toPrecision(3))} here={hereErrors} />
           <p className="rs-small">
             Median over 12 rays per distance, aimed 0.1 r … 0.95 r off the centre; the crosses are the current
-            ray’s Δ errors. The textbook Δ loses digits like u·(D/r)² (u = 2⁻⁵³): by D ≈ 10⁸ r nothing is
-            left. The robust Δ grows only like u·(D/r), and its roots stay accurate to the last bits. In
-            float32 (orange and green squares; u₃₂ = 2⁻²⁴) the same happens 10⁴ times sooner: the textbook Δ
-            is noise by D ≈ 1/√u₃₂ ≈ 4·10³ r, a distance every game scene has.
+            ray’s Δ errors. The textbook Δ loses digits like u·(D/r)² (u&nbsp;=&nbsp;2⁻⁵³): by D ≈ 10⁸ r
+            nothing is left. The robust Δ grows only like u·(D/r), and its roots stay accurate to the last
+            bits. In float32 (orange and green squares; u₃₂ = 2⁻²⁴) the same happens 10⁴ times sooner: the
+            textbook Δ is noise by D ≈ 1/√u₃₂ ≈ 4·10³ r, a distance every game scene has.
           </p>
         </Panel>
       </div>

@@ -97,7 +97,7 @@ export function PrecisionTable({ model }: { model: RaySphereModel }) {
         <thead>
           <tr>
             <th scope="col"></th>
-            <th scope="col">Textbook (−b ± √Δ) / 2a</th>
+            <th scope="col">Textbook (−b&nbsp;±&nbsp;√Δ) / 2a</th>
             <th scope="col">Robust (RTG ch. 7)</th>
             <th scope="col">Reference (double-double)</th>
           </tr>
@@ -205,7 +205,7 @@ export function DistantImages() {
   return (
     <div className="rs-distant" ref={box}>
       <Slider
-        label="Distance to the sphere, log₁₀(|o − c| / r)"
+        label={'Distance to the sphere, log₁₀(|o\u00a0−\u00a0c|\u00a0/\u00a0r)'}
         value={exp}
         min={0.5}
         max={10}

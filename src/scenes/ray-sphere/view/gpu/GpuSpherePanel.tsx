@@ -223,7 +223,7 @@ export function GpuSpherePanel() {
         ))}
       </div>
       <Slider
-        label="Distance, log₁₀(D / r)"
+        label={'Distance, log₁₀(D\u00a0/\u00a0r)'}
         value={exp}
         min={0.5}
         max={6}

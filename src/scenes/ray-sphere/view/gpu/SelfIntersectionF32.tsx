@@ -113,7 +113,7 @@ export function SelfIntersectionF32() {
         ))}
       </div>
       <Slider
-        label="Offset, log₁₀(ε / r)"
+        label={'Offset, log₁₀(ε\u00a0/\u00a0r)'}
         value={epsExp}
         min={-8}
         max={-1}
