@@ -228,3 +228,33 @@ test('axe finds no serious or critical violations on #/ (light and dark)', async
     ).toEqual([]);
   }
 });
+
+test('service workers blocked (as in automated browsers): the registration settles with no error', async ({
+  page,
+}) => {
+  // the page registers its worker once loaded and quiet; record what the registration gives
+  await page.addInitScript(() => {
+    const sw = navigator.serviceWorker;
+    if (!sw) return;
+    const register = sw.register.bind(sw);
+    const w = window as unknown as { __swSettled?: string };
+    sw.register = (...a: Parameters<ServiceWorkerContainer['register']>) => {
+      const p = register(...a);
+      p.then(
+        (r) => (w.__swSettled = r ? 'registered' : 'nothing'),
+        () => (w.__swSettled = 'refused'),
+      );
+      return p;
+    };
+  });
+  await openScene(page, '#/texture');
+  await expect
+    .poll(() => page.evaluate(() => (window as unknown as { __swSettled?: string }).__swSettled), {
+      timeout: 60_000,
+    })
+    .toBeTruthy();
+  // the page's own handling runs after the recorder's: give it a task, then the fixture checks that
+  // no console error or uncaught error (such as reading .waiting of nothing) was seen
+  await page.evaluate(() => new Promise((r) => setTimeout(r, 100)));
+  await expect(page.locator('link[rel="manifest"]')).toHaveCount(1);
+});
