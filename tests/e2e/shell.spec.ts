@@ -4,8 +4,8 @@
  * sub-folder (/app/) to prove the static build works from any folder.
  */
 import AxeBuilder from '@axe-core/playwright';
-import { SCENES } from '../../src/kit/catalogue';
 import { test, expect, openScene, readout } from './fixtures';
+import { SCENES, sceneSchema } from './sceneSchemas';
 
 const ROUTES = SCENES.map((s) => s.path);
 
@@ -257,4 +257,30 @@ test('service workers blocked (as in automated browsers): the registration settl
   // no console error or uncaught error (such as reading .waiting of nothing) was seen
   await page.evaluate(() => new Promise((r) => setTimeout(r, 100)));
   await expect(page.locator('link[rel="manifest"]')).toHaveCount(1);
+});
+
+test('play=1 plays, on every scene: a link asking to play from the end (or at the default t) plays from the start', async ({
+  page,
+}) => {
+  test.setTimeout(180_000);
+  let played = 0;
+  for (const scene of SCENES) {
+    const schema = await sceneSchema(scene.id);
+    const t = schema.t;
+    if (!('play' in schema) || !t || t.kind !== 'number' || t.max === undefined) continue;
+    for (const hash of [`#${scene.path}?play=1`, `#${scene.path}?play=1&t=${t.max}`]) {
+      await openScene(page, hash);
+      const tl = page.getByTestId('timeline').first();
+      // playing: the transport says so, and the link keeps play=1 while it plays
+      await expect(tl, hash).toHaveAttribute('data-playing', '1');
+      await expect
+        .poll(() => page.evaluate(() => window.location.hash), { message: hash })
+        .toContain('play=1');
+      await tl.getByRole('button', { name: /Pause/ }).click();
+      await expect(tl, hash).toHaveAttribute('data-playing', '0');
+      played++;
+    }
+  }
+  // every scene of the catalogue has the shared timeline
+  expect(played).toBe(2 * SCENES.length);
 });
