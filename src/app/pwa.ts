@@ -75,9 +75,10 @@ function watch(reg: ServiceWorkerRegistration | undefined): void {
   window.setInterval(update, 3_600_000);
 }
 
-export function registerPwa(): void {
+/** Register the worker and watch for new builds; the promise settles once that is set up (never rejects). */
+export function registerPwa(): Promise<void> {
   linkManifest();
-  navigator.serviceWorker
+  return navigator.serviceWorker
     .register(new URL('sw.js', document.baseURI).href, { scope: './' })
     .then(watch, () => {
       /* offline use is a bonus: the app works without it */

@@ -615,10 +615,15 @@ function PartBlock({
   );
 }
 
-function answerHint(spec: AnswerSpec): string {
+function answerHint(spec: Exclude<AnswerSpec, { kind: 'choice' }>): string {
   if (spec.kind === 'formula') return `formula in ${spec.variables.join(', ')}`;
-  if (spec.kind === 'choice') return spec.options.join(' · ');
   return 'number, expression or none';
+}
+
+/** The option a stored answer names (a draft typed before choices were lists: "two hits"), or ''. */
+function choiceValue(options: readonly string[], text: string): string {
+  const s = text.trim().toLowerCase().replace(/\s+/g, '-');
+  return options.includes(s) ? s : '';
 }
 
 function verdictTag(value: string): string {
@@ -643,7 +648,6 @@ function AnswerRow({
   revealed: boolean;
 }) {
   const id = `answer-${spec.name}`;
-  const listId = spec.kind === 'choice' ? `${id}-options` : undefined;
   const exp = expectedText(spec);
   const verdict = progress.verdict;
   const kind = verdict ? (verdict.value.startsWith('mistake:') ? 'mistake' : verdict.value) : null;
@@ -652,27 +656,38 @@ function AnswerRow({
       <label htmlFor={id} className="answer-label">
         {spec.label}
       </label>
-      <input
-        id={id}
-        data-testid={id}
-        type="text"
-        value={value}
-        onChange={(e) => onChange(e.target.value)}
-        autoComplete="off"
-        autoCapitalize="off"
-        spellCheck={false}
-        list={listId}
-        placeholder={answerHint(spec)}
-        aria-describedby={verdict ? `verdict-${spec.name}` : undefined}
-        aria-invalid={verdict && verdict.value !== 'correct' ? true : undefined}
-      />
-      {listId && spec.kind === 'choice' ? (
-        <datalist id={listId}>
+      {spec.kind === 'choice' ? (
+        // a choice is chosen from its options (graded as the option's name), never typed
+        <select
+          id={id}
+          data-testid={id}
+          value={choiceValue(spec.options, value)}
+          onChange={(e) => onChange(e.target.value)}
+          aria-describedby={verdict ? `verdict-${spec.name}` : undefined}
+          aria-invalid={verdict && verdict.value !== 'correct' ? true : undefined}
+        >
+          <option value="">Choose…</option>
           {spec.options.map((o) => (
-            <option key={o} value={o} />
+            <option key={o} value={o}>
+              {o.replace(/-/g, ' ')}
+            </option>
           ))}
-        </datalist>
-      ) : null}
+        </select>
+      ) : (
+        <input
+          id={id}
+          data-testid={id}
+          type="text"
+          value={value}
+          onChange={(e) => onChange(e.target.value)}
+          autoComplete="off"
+          autoCapitalize="off"
+          spellCheck={false}
+          placeholder={answerHint(spec)}
+          aria-describedby={verdict ? `verdict-${spec.name}` : undefined}
+          aria-invalid={verdict && verdict.value !== 'correct' ? true : undefined}
+        />
+      )}
       {verdict ? (
         <p
           className={`verdict verdict-${kind}`}

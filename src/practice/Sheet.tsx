@@ -7,7 +7,7 @@
  */
 import { useEffect, useState } from 'react';
 import { MathTex } from '../ui/MathTex';
-import type { ShellFlags } from '../kit/shell';
+import { queryProblems, type ShellFlags } from '../kit/shell';
 import { expectedText } from './check';
 import { fmt, QUESTION_IDS, type AnswerSpec, type QuestionId, type Variant } from './model';
 import { isQuestionId, questionInfo, sheetSeed } from './questions';
@@ -49,7 +49,10 @@ export interface SheetParams {
 
 /** Read the sheet's link parameters; anything unusable is named and replaced. */
 export function parseSheetParams(sp: URLSearchParams): SheetParams {
-  const problems: string[] = [];
+  // names the sheet does not take, and repeated ones, first (as the other pages name them)
+  const problems: string[] = queryProblems(sp.toString(), ['seed', 'q', 'count', 'solutions']).map(
+    (p) => `${p.name} ${p.message}.`,
+  );
   let seed = 1;
   const sRaw = sp.get('seed');
   if (sRaw !== null) {

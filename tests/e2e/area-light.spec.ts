@@ -458,24 +458,3 @@ test('reduced motion: play=1 in the link starts paused; and no animation frames 
     )
     .toBe(0);
 });
-
-test('play=1 plays, on every scene: a link asking to play from the end plays from the start', async ({
-  page,
-}) => {
-  for (const hash of [
-    '#/area-light?play=1',
-    '#/area-light?play=1&t=1024',
-    '#/hemisphere?play=1&n=500',
-    '#/texture?play=1&t=1',
-    '#/ray-sphere?play=1&t=1',
-    '#/monte-carlo?play=1&t=8192',
-  ]) {
-    await openScene(page, hash);
-    const tl = page.getByTestId('timeline').first();
-    // playing: the transport says so, and the link keeps play=1 while it plays
-    await expect(tl, hash).toHaveAttribute('data-playing', '1');
-    await expect.poll(() => page.evaluate(() => window.location.hash), { message: hash }).toContain('play=1');
-    await tl.getByRole('button', { name: /Pause/ }).click();
-    await expect(tl, hash).toHaveAttribute('data-playing', '0');
-  }
-});

@@ -2,7 +2,7 @@
  * Shared browser-test fixtures: every test fails on any console error or uncaught page error;
  * helpers open a scene and read readouts the way the contract defines them.
  */
-import { test as base, expect, type Page } from '@playwright/test';
+import { test as base, expect, type Frame, type Page } from '@playwright/test';
 
 export const test = base.extend<{ consoleErrors: string[] }>({
   consoleErrors: [
@@ -28,6 +28,16 @@ export async function openScene(page: Page, hash: string): Promise<void> {
   await expect(page.locator('.loading')).toHaveCount(0);
   // the exam page's sections below the first screen mount in idle time (src/ui/Deferred.tsx)
   await expect(page.locator('[data-deferred="pending"]')).toHaveCount(0, { timeout: 30_000 });
+}
+
+/**
+ * Give a practice answer: type it into its field, or, where the answer is a choice (a select),
+ * choose the option it names.
+ */
+export async function giveAnswer(root: Page | Frame, name: string, text: string): Promise<void> {
+  const el = root.getByTestId(`answer-${name}`);
+  if ((await el.evaluate((e) => e.tagName)) === 'SELECT') await el.selectOption(text);
+  else await el.fill(text);
 }
 
 /** The `data-value` of a readout (the contract's full-precision value, or "none"). */

@@ -127,6 +127,17 @@ for (const route of ROUTES) {
   });
 }
 
+for (const route of EXTRA_ROUTES) {
+  test(`${route.path}: an unknown parameter and a repeated one are named`, async ({ page }) => {
+    await openScene(page, `#${route.path}?bogus=1&theme=dark&theme=light`);
+    const notice = page.getByTestId('param-notice').first();
+    await expect(notice).toBeVisible();
+    await expect(notice).toContainText('bogus');
+    await expect(notice).toContainText('theme');
+    await expectWorkingScene(page, 'bogus=1, theme twice');
+  });
+}
+
 // Sized for the whole spec's fuzz part to stay near 2 minutes on a loaded 2-core machine (~25 s a route);
 // run more by hand: #/<route>?fuzz=1&fuzzseed=N (unbounded) or &fuzzn=1000.
 const FUZZ_ACTIONS = 80;

@@ -8,7 +8,7 @@
  * and the cmi5 category.
  */
 import type { Server } from 'node:http';
-import { test, expect } from './fixtures';
+import { test, expect, giveAnswer } from './fixtures';
 import { haveSingle, packages, serve, unzip } from './lmsHost';
 import { auId } from '../../src/lms/packages';
 import { variantOf } from '../../src/lms/grade';
@@ -124,7 +124,7 @@ test('cmi5: Initialized, answered, Passed or Failed, Completed, Terminated with 
   const wrong = answers.find((a) => a.kind === 'number' && a.mistakes.length > 0)!;
   const mistake = wrong.kind === 'number' ? wrong.mistakes[0] : null;
   for (const a of answers)
-    await page.getByTestId(`answer-${a.name}`).fill(a === wrong ? String(mistake!.value) : expectedText(a));
+    await giveAnswer(page, a.name, a === wrong ? String(mistake!.value) : expectedText(a));
   await page.getByRole('button', { name: 'Check' }).click();
   await expect(page.getByTestId(`verdict-${wrong.name}`)).toHaveAttribute(
     'data-value',

@@ -9,7 +9,7 @@
 import { readFileSync } from 'node:fs';
 import type { Server } from 'node:http';
 import type { Frame, Page } from '@playwright/test';
-import { test, expect } from './fixtures';
+import { test, expect, giveAnswer } from './fixtures';
 import { haveSingle, packages, serve, unzip } from './lmsHost';
 import { variantOf } from '../../src/lms/grade';
 import { learnerSeed } from '../../src/lms/seeds';
@@ -127,7 +127,7 @@ for (const version of ['12', '2004'] as const) {
     let f = await launch(null);
     await expect(f.getByTestId('variant-seed')).toHaveText(String(seed));
     for (const a of answers)
-      await f.getByTestId(`answer-${a.name}`).fill(a === wrong ? String(mistake!.value) : expectedText(a));
+      await giveAnswer(f, a.name, a === wrong ? String(mistake!.value) : expectedText(a));
     await f.getByRole('button', { name: 'Check' }).click();
     await expect(f.getByTestId(`verdict-${wrong!.name}`)).toHaveAttribute(
       'data-value',
@@ -175,7 +175,7 @@ for (const version of ['12', '2004'] as const) {
     expect(saved.q.q5.a[wrong!.name]).toBe(String(mistake!.value));
 
     // a typed but unchecked change also reaches suspend_data; leaving the page terminates
-    const last = answers[answers.length - 1];
+    const last = answers.filter((a) => a.kind !== 'choice').at(-1)!;
     await f.getByTestId(`answer-${last.name}`).fill('edited');
     await f.evaluate(() => (window.location.href = 'about:blank'));
     await expect

@@ -8,7 +8,7 @@
  */
 import AxeBuilder from '@axe-core/playwright';
 import type { Page } from '@playwright/test';
-import { test, expect } from './fixtures';
+import { test, expect, giveAnswer } from './fixtures';
 import { QUESTIONS, questionInfo } from '../../src/practice/questions';
 import { allAnswers, tn, type AnswerSpec, type QuestionId, type Variant } from '../../src/practice/model';
 import { q1Params } from '../../src/practice/q1';
@@ -34,7 +34,7 @@ async function openVariant(page: Page, q: QuestionId, seed: number, extra = ''):
 }
 
 async function fillAndCheck(page: Page, entries: [string, string][]): Promise<void> {
-  for (const [name, text] of entries) await page.getByTestId(`answer-${name}`).fill(text);
+  for (const [name, text] of entries) await giveAnswer(page, name, text);
   await page.getByRole('button', { name: 'Check', exact: true }).click();
   for (const [name] of entries)
     await expect(page.getByTestId(`verdict-${name}`)).toHaveAttribute('data-value', /.+/);
@@ -192,13 +192,45 @@ test('garbage gives invalid with a message, never a crash', async ({ page }) => 
   }
   await expect(page.getByTestId('verdict-cdf-theta')).toContainText("unknown symbol 'x'");
   await openVariant(page, 'q5', 9);
-  await fillAndCheck(page, [
-    ['case', 'sideways'],
-    ['a', 'abc'],
-  ]);
-  await expect(page.getByTestId('verdict-case')).toHaveAttribute('data-value', 'invalid');
-  await expect(page.getByTestId('verdict-case')).toContainText('two-hits');
+  await fillAndCheck(page, [['a', 'abc']]);
   await expect(page.getByTestId('verdict-a')).toHaveAttribute('data-value', 'invalid');
+});
+
+test('a choice answer (the case of Q5, the zero-variance estimator of Q2) is chosen from its options, by keyboard too', async ({
+  page,
+}) => {
+  for (const [q, seed] of [
+    ['q5', 9],
+    ['q2', 4],
+  ] as const) {
+    const v = await openVariant(page, q, seed);
+    const spec = allAnswers(v).find((a) => a.kind === 'choice')!;
+    if (spec.kind !== 'choice') throw new Error('no choice answer');
+    const field = page.getByTestId(`answer-${spec.name}`);
+    // a list of exactly the options (each spelled out in full), nothing chosen at first
+    await expect(field).toHaveJSProperty('tagName', 'SELECT');
+    await expect(field).toHaveValue('');
+    await expect(field.locator('option')).toHaveText([
+      'Choose…',
+      ...spec.options.map((o) => o.replace(/-/g, ' ')),
+    ]);
+    await expect(page.getByLabel(spec.label, { exact: true })).toHaveCount(1);
+    // a named mistake chosen is named as when it was typed
+    for (const m of spec.mistakes.slice(0, 1)) {
+      await giveAnswer(page, spec.name, m.value);
+      await page.getByRole('button', { name: 'Check', exact: true }).click();
+      await expect(page.getByTestId(`verdict-${spec.name}`)).toHaveAttribute('data-value', `mistake:${m.id}`);
+    }
+    // keyboard: from "Choose…", the arrow keys walk the options; the verdict is the checker's
+    await giveAnswer(page, spec.name, '');
+    await field.focus();
+    for (let i = 0; i <= spec.options.indexOf(spec.expected); i++) await page.keyboard.press('ArrowDown');
+    await expect(field).toHaveValue(spec.expected);
+    await page.getByRole('button', { name: 'Check', exact: true }).click();
+    await expect(page.getByTestId(`verdict-${spec.name}`)).toHaveAttribute('data-value', 'correct');
+  }
+  const axe = await new AxeBuilder({ page }).include('.practice').analyze();
+  expect(axe.violations.filter((x) => x.impact === 'serious' || x.impact === 'critical')).toEqual([]);
 });
 
 test('the worked solution shows the variant’s own numbers, the expected answers and the scene link', async ({
@@ -382,10 +414,10 @@ test('each question’s scene link opens its scene in the variant’s configurat
 test('answers typed but not checked survive a reload of the tab, per variant', async ({ page }) => {
   await page.goto('./#/practice/q5?seed=3');
   await page.getByTestId('answer-a').fill('12.5');
-  await page.getByTestId('answer-case').fill('two hits');
+  await page.getByTestId('answer-case').selectOption('two-hits');
   await page.reload();
   await expect(page.getByTestId('answer-a')).toHaveValue('12.5');
-  await expect(page.getByTestId('answer-case')).toHaveValue('two hits');
+  await expect(page.getByTestId('answer-case')).toHaveValue('two-hits');
   await expect(page.getByTestId('verdict-a')).toHaveCount(0);
   // another variant has its own (empty) draft
   await page.goto('./#/practice/q5?seed=4');

@@ -5,7 +5,7 @@
  * claims "correct" for answers that are mistakes: the recomputed verdicts count.
  */
 import AxeBuilder from '@axe-core/playwright';
-import { test, expect } from './fixtures';
+import { test, expect, giveAnswer } from './fixtures';
 import { variantOf } from '../../src/lms/grade';
 import { expectedText } from '../../src/practice/check';
 import { allAnswers, QUESTION_IDS, type QuestionId } from '../../src/practice/model';
@@ -158,7 +158,7 @@ test('#/results collates 100 files offline, recomputing every verdict', async ({
 test('a practice page downloads the learner’s checks as a results file', async ({ page }) => {
   await page.goto('./#/practice/q5?seed=31');
   const a = allAnswers(variantOf('q5', 31))[0];
-  await page.getByTestId(`answer-${a.name}`).fill(expectedText(a));
+  await giveAnswer(page, a.name, expectedText(a));
   await page.getByRole('button', { name: 'Check' }).click();
   await expect(page.getByTestId(`verdict-${a.name}`)).toHaveAttribute('data-value', 'correct');
   await page.getByLabel('Your name').fill('Ada');

@@ -3,7 +3,8 @@
  * (src/kit/catalogue.ts), so browser tests iterate the scenes without listing them.
  */
 import { SCENES, type SceneId } from '../../src/kit/catalogue';
-import type { ParamSchema } from '../../src/kit/params';
+import type { ParamSchema, ParamSpec } from '../../src/kit/params';
+import type { SceneCheck } from '../../src/kit/scene';
 
 export { SCENES };
 
@@ -28,4 +29,42 @@ export async function maxCountsQuery(id: SceneId): Promise<string> {
     if (spec.kind === 'number' && spec.integer && name !== 'seed' && name !== 't' && spec.max !== undefined)
       out.push(`${name}=${spec.max}`);
   return out.join('&');
+}
+
+/**
+ * Values a host's `set` must refuse for a parameter, from its spec alone: the wrong type, and where
+ * the spec bounds it, a value out of range, not whole, too long or of the wrong length.
+ */
+export function invalidValues(spec: ParamSpec): unknown[] {
+  switch (spec.kind) {
+    case 'number':
+      return [
+        'abc',
+        true,
+        [1],
+        ...(spec.max !== undefined ? [spec.max + Math.max(1, Math.abs(spec.max))] : []),
+        ...(spec.min !== undefined ? [spec.min - Math.max(1, Math.abs(spec.min))] : []),
+        ...(spec.integer ? [(spec.min ?? 0) + 0.5] : []),
+      ];
+    case 'enum':
+      return ['not-a-value', 7, ` ${spec.default}`];
+    case 'string':
+      return [[1, 2], ...(spec.maxLength !== undefined ? ['x'.repeat(spec.maxLength + 1)] : [])];
+    case 'bool':
+      return ['yes', 2, [1]];
+    case 'vec3':
+      return [[1, 2], 'abc', ...(spec.max !== undefined ? [[spec.max * 2 + 1, 0, 0]] : [])];
+    case 'list':
+      return [
+        'abc',
+        Array.from({ length: spec.maxItems + 1 }, () => 0),
+        ...(spec.max !== undefined ? [[spec.max * 2 + 1]] : []),
+      ];
+  }
+}
+
+/** A scene's own check of values (its module's checkValues), if it has one. */
+export async function sceneCheck(id: SceneId): Promise<SceneCheck | undefined> {
+  const mod = (await import(`../../src/scenes/${id}/check.ts`)) as { checkValues?: SceneCheck };
+  return mod.checkValues;
 }
