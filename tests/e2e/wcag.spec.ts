@@ -23,10 +23,12 @@ const ROUTES = ['#/', '#/guide', '#/practice', '#/accessibility', ...SCENES.map(
 async function open(page: Page, hash: string) {
   await openScene(page, hash);
   // everything that mounts on the way down (deferred sections, lazy plots) is on the page
+  // (stepped on a timer, not per animation frame: a loaded machine may draw no frame for a while,
+  // and bounded, in case a section that mounts on the way makes the page grow as it is scrolled)
   await page.evaluate(async () => {
-    for (let y = 0; y < document.body.scrollHeight; y += innerHeight / 2) {
+    for (let y = 0, i = 0; y < document.body.scrollHeight && i < 200; y += innerHeight / 2, i++) {
       scrollTo(0, y);
-      await new Promise((r) => requestAnimationFrame(() => r(null)));
+      await new Promise((r) => setTimeout(r, 50));
     }
     scrollTo(0, 0);
   });

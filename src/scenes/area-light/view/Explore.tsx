@@ -18,6 +18,7 @@ import {
 import type { StrategyEstimate, TimingPoint, convergence } from '../model';
 import { STRATEGIES, STRATEGY_LABEL, STRATEGY_SHORT } from '../strategies';
 import { fmt } from './format';
+import { ScrollBox } from '../../../ui/ScrollBox';
 
 /** The shared series colours (contrast and colour-vision checked in both themes). */
 const COLORS: Record<LightStrategy, string> = {
@@ -103,44 +104,46 @@ export const StrategyTable = memo(function StrategyTable({
         light and 0 when it misses. All three are unbiased; they differ in variance. All samples are
         independent pseudo-random draws, so the standard error s/√N is a valid error estimate for each.
       </p>
-      <table className="al-table">
-        <caption>
-          All three strategies, n = {n} each, seed {seed}
-        </caption>
-        <thead>
-          <tr>
-            <th scope="col">strategy</th>
-            <th scope="col">estimate</th>
-            <th scope="col">std. error σ</th>
-            <th scope="col">(est.&nbsp;−&nbsp;ref.)/σ</th>
-          </tr>
-        </thead>
-        <tbody>
-          {estimates === null ? (
+      <ScrollBox label="All three strategies, their estimates and standard errors">
+        <table className="al-table">
+          <caption>
+            All three strategies, n = {n} each, seed {seed}
+          </caption>
+          <thead>
             <tr>
-              <td colSpan={4}>
-                <progress aria-label="Estimating the three strategies" /> Estimating…
-              </td>
+              <th scope="col">strategy</th>
+              <th scope="col">estimate</th>
+              <th scope="col">std. error σ</th>
+              <th scope="col">(est.&nbsp;−&nbsp;ref.)/σ</th>
             </tr>
-          ) : null}
-          {(estimates ?? []).map((e) => (
-            <tr key={e.strategy} className={e.strategy === strategy ? 'al-current' : undefined}>
-              <th scope="row" title={STRATEGY_LABEL[e.strategy]}>
-                {STRATEGY_SHORT[e.strategy]}
-              </th>
-              <td>
-                <Readout id={`estimate-${e.strategy}`} label="" value={e.estimate} digits={5} />
-              </td>
-              <td>
-                <Readout id={`stderr-${e.strategy}`} label="" value={e.stderr} digits={2} />
-              </td>
-              <td>
-                {e.stderr > 0 && Number.isFinite(target) ? fmt((e.estimate - target) / e.stderr, 3) : '—'}
-              </td>
-            </tr>
-          ))}
-        </tbody>
-      </table>
+          </thead>
+          <tbody>
+            {estimates === null ? (
+              <tr>
+                <td colSpan={4}>
+                  <progress aria-label="Estimating the three strategies" /> Estimating…
+                </td>
+              </tr>
+            ) : null}
+            {(estimates ?? []).map((e) => (
+              <tr key={e.strategy} className={e.strategy === strategy ? 'al-current' : undefined}>
+                <th scope="row" title={STRATEGY_LABEL[e.strategy]}>
+                  {STRATEGY_SHORT[e.strategy]}
+                </th>
+                <td>
+                  <Readout id={`estimate-${e.strategy}`} label="" value={e.estimate} digits={5} />
+                </td>
+                <td>
+                  <Readout id={`stderr-${e.strategy}`} label="" value={e.stderr} digits={2} />
+                </td>
+                <td>
+                  {e.stderr > 0 && Number.isFinite(target) ? fmt((e.estimate - target) / e.stderr, 3) : '—'}
+                </td>
+              </tr>
+            ))}
+          </tbody>
+        </table>
+      </ScrollBox>
     </Panel>
   );
 });
