@@ -1,9 +1,9 @@
-import { lazy, Suspense, useEffect, useMemo } from 'react';
+import { lazy, Suspense, useEffect, useMemo, type ReactNode } from 'react';
 import { useHashRoute } from './useHashRoute';
 import { parseShellFlags } from '../kit/shell';
 import { useTheme } from './theme';
 import { usePostHeight } from './embedHeight';
-import { useHostApi } from './hostApi';
+import { useHostApi } from './hostBridge';
 import { Home } from './Home';
 import { SceneHost } from './SceneHost';
 import { findScene } from '../kit/catalogue';
@@ -34,8 +34,28 @@ const PracticeRoute = lazy(() =>
 // The teacher's guide (#/guide) is its own lazy chunk.
 const Guide = lazy(() => importOrReload(() => import('../guide/Guide')));
 
+// The accessibility statement and its worked example (#/accessibility): its own lazy chunk.
+const AccessibilityPage = lazy(() => importOrReload(() => import('./AccessibilityPage')));
+
 // The class results page (#/results) is its own lazy chunk.
 const ResultsRoute = lazy(() => import('../results/ResultsRoute'));
+
+/** A route whose page loads as its own chunk, with a "Loading …" status until it has. */
+function LazyRoute({ loading, children }: { loading: string; children: ReactNode }) {
+  return (
+    <Suspense
+      fallback={
+        <main id="main" className="page route-pending" tabIndex={-1}>
+          <p className="loading" role="status">
+            {loading}
+          </p>
+        </main>
+      }
+    >
+      {children}
+    </Suspense>
+  );
+}
 
 export function App() {
   const route = useHashRoute();
@@ -56,47 +76,27 @@ export function App() {
   if (route.path === '/') body = <Home flags={flags} query={route.query} />;
   else if (route.path === '/practice' || route.path.startsWith('/practice/'))
     body = (
-      <Suspense
-        fallback={
-          <main id="main" className="page route-pending" tabIndex={-1}>
-            <p className="loading" role="status">
-              Loading practice…
-            </p>
-          </main>
-        }
-      >
+      <LazyRoute loading="Loading practice…">
         <PracticeRoute path={route.path} query={route.query} flags={flags} />
-      </Suspense>
+      </LazyRoute>
     );
   else if (route.path === '/guide')
     body = (
-      <Suspense
-        key="guide"
-        fallback={
-          <main id="main" className="page route-pending">
-            <p className="loading" role="status">
-              Loading the teacher’s guide…
-            </p>
-          </main>
-        }
-      >
+      <LazyRoute key="guide" loading="Loading the teacher’s guide…">
         <Guide flags={flags} query={route.query} />
-      </Suspense>
+      </LazyRoute>
+    );
+  else if (route.path === '/accessibility')
+    body = (
+      <LazyRoute key="accessibility" loading="Loading the accessibility statement…">
+        <AccessibilityPage flags={flags} query={route.query} />
+      </LazyRoute>
     );
   else if (route.path === '/results')
     body = (
-      <Suspense
-        key="results"
-        fallback={
-          <main id="main" className="page route-pending">
-            <p className="loading" role="status">
-              Loading the class results page…
-            </p>
-          </main>
-        }
-      >
+      <LazyRoute key="results" loading="Loading the class results page…">
         <ResultsRoute />
-      </Suspense>
+      </LazyRoute>
     );
   else if (scene)
     body = <SceneHost key={scene.id} info={scene} query={route.query} flags={flags} theme={theme} />;
@@ -130,7 +130,8 @@ export function App() {
           <p>
             Render Math Lab — every figure is computed live in your browser, and nothing is fetched from
             anywhere but this site, so a copy of the build works offline.
-            {flags.present ? ' Classroom mode: press ? for shortcuts.' : ''}
+            {flags.present ? ' Classroom mode: press ? for shortcuts.' : ''}{' '}
+            <a href="#/accessibility">Accessibility</a>
           </p>
         </footer>
       )}

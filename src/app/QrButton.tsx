@@ -1,32 +1,24 @@
-import { useEffect, useRef, useState } from 'react';
-
-type Matrix = { size: number; dark: (x: number, y: number) => boolean };
-
-/** Encodes text as a QR code with the `qrcode` library, loaded only when a code is asked for. */
-async function encode(text: string): Promise<Matrix> {
-  const QR = await import('qrcode');
-  const create =
-    (QR as unknown as { create?: typeof import('qrcode').create }).create ??
-    (QR as unknown as { default: typeof import('qrcode') }).default.create;
-  const code = create(text, { errorCorrectionLevel: 'M' });
-  const { size, data } = code.modules as unknown as { size: number; data: Uint8Array };
-  return { size, dark: (x, y) => data[y * size + x] === 1 };
-}
-
-/** One SVG path of the dark modules, with the four-module quiet zone the standard asks for. */
-function pathOf(m: Matrix): string {
-  let d = '';
-  for (let y = 0; y < m.size; y++) {
-    for (let x = 0; x < m.size; x++) if (m.dark(x, y)) d += `M${x + 4} ${y + 4}h1v1h-1z`;
-  }
-  return d;
-}
+import { useEffect, useRef, useState, type ReactNode } from 'react';
+import { qrPath } from '../ui/qr';
 
 /**
  * "QR code" beside Copy link: shows the current link as a QR code (large in classroom mode), so
  * students in the room open the lecturer's exact configuration on their phones.
  */
-export function QrButton({ link, present }: { link: string; present: boolean }) {
+export function QrButton({
+  link,
+  present,
+  classroomLink = false,
+  children,
+}: {
+  link: string;
+  /** Classroom mode is on here: the code is drawn large. */
+  present: boolean;
+  /** The link keeps classroom mode (the lecturer asked for it); otherwise it is the students' view. */
+  classroomLink?: boolean;
+  /** Shown in the panel under the caption (the share bar's choice of link, usable while it is open). */
+  children?: ReactNode;
+}) {
   const [open, setOpen] = useState(false);
   const [state, setState] = useState<{ text: string; path: string; size: number } | { error: string } | null>(
     null,
@@ -37,8 +29,8 @@ export function QrButton({ link, present }: { link: string; present: boolean }) 
   useEffect(() => {
     if (!open) return;
     let alive = true;
-    encode(link).then(
-      (m) => alive && setState({ text: link, path: pathOf(m), size: m.size + 8 }),
+    qrPath(link).then(
+      (q) => alive && setState({ text: link, path: q.d, size: q.size }),
       (e: unknown) => alive && setState({ error: e instanceof Error ? e.message : String(e) }),
     );
     return () => {
@@ -101,8 +93,14 @@ export function QrButton({ link, present }: { link: string; present: boolean }) 
           )}
           <p className="qr-caption">
             Scan to open this scene as configured here
-            {present ? '' : ' (larger in classroom mode, present=1)'}.
+            {classroomLink
+              ? ', in classroom mode'
+              : present
+                ? ' (the students’ view, without classroom mode)'
+                : ' (larger in classroom mode, present=1)'}
+            .
           </p>
+          {children}
           <button
             type="button"
             ref={close}

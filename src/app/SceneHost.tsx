@@ -1,6 +1,8 @@
 import {
   Component,
+  lazy,
   startTransition,
+  Suspense,
   useCallback,
   useEffect,
   useMemo,
@@ -8,7 +10,7 @@ import {
   useState,
   type ReactNode,
 } from 'react';
-import type { SceneInfo } from '../kit/catalogue';
+import { predictPrompt, type SceneInfo } from '../kit/catalogue';
 import { sceneLoader } from '../scenes/registry';
 import type { SceneModule } from '../kit/scene';
 import {
@@ -19,14 +21,19 @@ import {
   type ParamValues,
   type ParamSchema,
 } from '../kit/params';
-import { shellExtras, type ShellFlags } from '../kit/shell';
+import { dropQueryParam, parseHash, parseShellFlags, shellExtras, type ShellFlags } from '../kit/shell';
 import { useShortcuts } from '../ui/shortcuts';
-import { QuestionNav } from '../ui/exam';
-import { useHostScene } from './hostApi';
+import { AskPrompt } from '../ui/ask';
+import { usePageKey } from '../ui/pageKeys';
+import { QuestionNav } from '../ui/QuestionNav';
+import { useHostScene } from './hostBridge';
 import { embedSnippet } from './embedCode';
 import { QrButton } from './QrButton';
 import { markFirstScreen } from './firstScreen';
 import { importOrReload } from './staleBuild';
+
+// The teacher's A11y view (a11y=1): its own chunk, loaded only with the flag.
+const A11yView = lazy(() => import('./A11yView'));
 
 interface Props {
   info: SceneInfo;
@@ -98,6 +105,11 @@ export function SceneHost({ info, query, flags, theme }: Props) {
       tabIndex={-1}
     >
       {header}
+      {flags.a11y ? (
+        <Suspense fallback={null}>
+          <A11yView />
+        </Suspense>
+      ) : null}
       {load.kind === 'loading' ? (
         <p className="loading" role="status">
           Loading the scene…
@@ -178,6 +190,30 @@ function LoadedScene({
   const part = flags.part && info.parts.includes(flags.part) ? flags.part : null;
   useScrollToPart(part);
 
+  // ask=1: results hidden until revealed (button or `v`); revealing drops `ask` from the URL
+  const [asking, setAsking] = useState(flags.ask);
+  const askingRef = useRef(asking);
+  askingRef.current = asking;
+  useEffect(() => setAsking(flags.ask), [flags.ask]);
+  useEffect(() => {
+    // a link opened again (its query string unchanged since the shell rewrote the URL) asks again
+    const on = () => setAsking(parseShellFlags(parseHash(window.location.hash).query).ask);
+    window.addEventListener('hashchange', on);
+    return () => window.removeEventListener('hashchange', on);
+  }, []);
+  const reveal = useCallback(() => {
+    setAsking(false);
+    const { path, query: current } = parseHash(window.location.hash);
+    const qs = dropQueryParam(current, 'ask');
+    try {
+      window.history.replaceState(window.history.state, '', `#${path}${qs ? `?${qs}` : ''}`);
+    } catch {
+      /* some sandboxed iframes forbid it; the state still lives in the page */
+    }
+  }, []);
+  usePageKey('v', reveal, asking);
+  const askText = useAskText(info, query, part, flags.ask);
+
   const valuesRef = useRef(values);
   valuesRef.current = values;
   // The values the link carries: typed expressions enter it only once they have compiled (a link
@@ -196,7 +232,7 @@ function LoadedScene({
       void linkSafeValues(schema, next).then((safe) => {
         if (seq !== writeSeq.current) return; // a newer change will write the URL
         setLinkValues(safe);
-        const qs = serializeParams(schema, safe, shellExtras(flags));
+        const qs = serializeParams(schema, safe, shellExtras({ ...flags, ask: askingRef.current }));
         const hash = `#${info.path}${qs ? `?${qs}` : ''}`;
         try {
           window.history.replaceState(window.history.state, '', hash);
@@ -236,17 +272,43 @@ function LoadedScene({
           </button>
         </div>
       ) : null}
-      <ShareBar info={info} schema={schema} values={linkValues} flags={flags} />
+      <ShareBar info={info} schema={schema} values={linkValues} flags={flags} asking={asking} />
+      {asking && askText !== null ? <AskPrompt text={askText} onReveal={reveal} /> : null}
       <SceneErrorBoundary resetKey={query}>
         <Scene
           params={values}
           setParams={setParams}
-          mode={{ embed: flags.embed, present: flags.present, theme }}
+          mode={{ embed: flags.embed, present: flags.present, ask: asking, theme }}
         />
       </SceneErrorBoundary>
       {flags.embed ? null : <QuestionNav info={info} flags={flags} />}
     </>
   );
+}
+
+/** Said when neither the link's guide preset nor the catalogue has a question for this page. */
+const GENERIC_PROMPT = 'What will the scene show? Make your prediction, then reveal.';
+
+/**
+ * The prediction prompt of an `ask=1` page (null until known): the guide preset's own question when
+ * the link is one of its presets, else the catalogue's prompt for the part. The guide's texts load
+ * (lazily, apart from the entry) only for ask=1.
+ */
+function useAskText(info: SceneInfo, query: string, part: string | null, ask: boolean): string | null {
+  const [preset, setPreset] = useState<{ query: string; text: string | null } | null>(null);
+  useEffect(() => {
+    if (!ask) return;
+    let alive = true;
+    import('../kit/lessons').then(
+      (m) => alive && setPreset({ query, text: m.presetAskFor(info.id, query) }),
+      () => alive && setPreset({ query, text: null }),
+    );
+    return () => {
+      alive = false;
+    };
+  }, [ask, info.id, query]);
+  if (!ask || !preset || preset.query !== query) return null;
+  return preset.text ?? predictPrompt(info, part) ?? GENERIC_PROMPT;
 }
 
 /** Last expression per parameter that compiled, so a failing one falls back to it in the link. */
@@ -285,19 +347,27 @@ function ShareBar({
   schema,
   values,
   flags,
+  asking,
 }: {
   info: SceneInfo;
   schema: SceneModule['schema'];
   values: ParamValues<ParamSchema>;
   flags: ShellFlags;
+  /** `ask=1` and not yet revealed. */
+  asking: boolean;
 }) {
   const [copied, setCopied] = useState<'link' | 'embed' | null>(null);
   const [shown, setShown] = useState<string | null>(null);
+  // The copied link and the QR code are the students' link: classroom mode (present=1) and the
+  // held-back results (ask=1) are the lecturer's, unless the lecturer asks to keep them.
+  const classroom = flags.present || asking;
+  const [keep, setKeep] = useState(false);
   // (not location.origin + pathname: a copy opened from file:// has the origin "null")
   const base = window.location.href.split('#')[0];
   const qs = serializeParams(schema, values, {
     part: flags.part ?? undefined,
-    present: flags.present ? '1' : undefined,
+    present: keep && flags.present ? '1' : undefined,
+    ask: keep && asking ? '1' : undefined,
     theme: flags.theme ?? undefined,
   });
   const link = `${base}#${info.path}${qs ? `?${qs}` : ''}`;
@@ -323,10 +393,16 @@ function ShareBar({
       <button type="button" data-testid="copy-link" onClick={() => copy('link')}>
         Copy link
       </button>
-      <QrButton link={link} present={flags.present} />
-      <button type="button" data-testid="copy-embed" onClick={() => copy('embed')}>
-        Copy embed code
-      </button>
+      <QrButton link={link} present={flags.present} classroomLink={keep && classroom}>
+        {classroom ? <KeepClassroom keep={keep} onKeep={setKeep} testId="qr-keep-classroom" /> : null}
+      </QrButton>
+      {/* embedding is preparation, not the lecture: classroom mode keeps its one header row */}
+      {flags.present ? null : (
+        <button type="button" data-testid="copy-embed" onClick={() => copy('embed')}>
+          Copy embed code
+        </button>
+      )}
+      {classroom ? <KeepClassroom keep={keep} onKeep={setKeep} testId="keep-classroom" /> : null}
       <span role="status" className="share-status">
         {copied === 'link'
           ? 'Link copied.'
@@ -347,6 +423,24 @@ function ShareBar({
         />
       ) : null}
     </div>
+  );
+}
+
+/** The lecturer's choice: the copied link and the QR code keep classroom mode (present=1, ask=1). */
+function KeepClassroom({
+  keep,
+  onKeep,
+  testId,
+}: {
+  keep: boolean;
+  onKeep: (keep: boolean) => void;
+  testId: string;
+}) {
+  return (
+    <label className="share-keep">
+      <input type="checkbox" data-testid={testId} checked={keep} onChange={(e) => onKeep(e.target.checked)} />{' '}
+      Keep classroom mode
+    </label>
   );
 }
 

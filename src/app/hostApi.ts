@@ -21,7 +21,6 @@
  * (0/1) and `t` parameters, so they work on scenes whose schema has them and answer an error
  * naming the parameter elsewhere.
  */
-import { useEffect, useRef } from 'react';
 import {
   parseParams,
   serializeParams,
@@ -366,35 +365,28 @@ function onVerdict(e: Event): void {
   });
 }
 
-/** The page-wide bridge (call once, in the app): listens for requests and practice verdicts. */
-export function useHostApi(origins: readonly string[] | null): void {
-  useEffect(() => {
+/**
+ * What the page's bridge (./hostBridge.ts, in the entry) calls once this module has loaded: the
+ * handlers for requests and practice verdicts, and the allowed origins and the scene on screen.
+ */
+export const host = {
+  onMessage,
+  onVerdict,
+  setAllowed(origins: readonly string[] | null): void {
     allowed = origins;
-  }, [origins]);
-  useEffect(() => {
-    if (!framed()) return;
-    window.addEventListener('message', onMessage);
-    window.addEventListener('rml:practice-verdict', onVerdict);
-    return () => {
-      window.removeEventListener('message', onMessage);
-      window.removeEventListener('rml:practice-verdict', onVerdict);
-    };
-  }, []);
-}
-
-/** Registers the scene on screen with the bridge and tells subscribers about every change. */
-export function useHostScene(s: HostScene, values: unknown): void {
-  const ref = useRef(s);
-  ref.current = s;
-  useEffect(() => {
-    if (!framed()) return;
-    scene = ref.current;
-    return () => {
-      if (scene === ref.current) scene = null;
-    };
-  }, []);
-  useEffect(() => {
-    if (scene !== ref.current) scene = ref.current;
-    maybeEmitChange(hostState(ref.current), 'user');
-  }, [values]);
-}
+  },
+  /** The scene on screen (null when it leaves); tells subscribers about the change it makes. */
+  setScene(s: HostScene | null): void {
+    scene = s;
+    if (s) maybeEmitChange(hostState(s), 'user');
+  },
+  /** The scene's values changed (by the reader or by a `set`). */
+  changed(s: HostScene): void {
+    if (scene !== s) scene = s;
+    maybeEmitChange(hostState(s), 'user');
+  },
+  /** The scene is leaving: forget it unless another has taken its place. */
+  leave(s: HostScene): void {
+    if (scene === s) scene = null;
+  },
+};

@@ -29,9 +29,11 @@ export default function Guide({ flags, query = '' }: { flags: ShellFlags; query?
       <RouteNotice flags={flags} query={query} />
       <p className="guide-lead">
         For each exam question, a lesson plan: three to five links that open a scene in a telling
-        configuration, with a question to put to the class at each step (ask first, then reveal). Every number
-        the class sees is computed live in the browser from the link’s parameters, so a link opens the same
-        picture on every student’s screen.{' '}
+        configuration, with a question to put to the class at each step. A link that asks first opens with the
+        results hidden, on its part and with its animation at the start, under its question: press{' '}
+        <strong>Reveal</strong> (or <kbd>v</kbd>) once the class has answered. Every number the class sees is
+        computed live in the browser from the link’s parameters, so a link opens the same picture on every
+        student’s screen.{' '}
         {flags.present
           ? 'The links keep classroom mode.'
           : 'Open this guide with present=1 and the links open in classroom mode.'}
@@ -109,7 +111,7 @@ export default function Guide({ flags, query = '' }: { flags: ShellFlags; query?
         <h2 id="guide-embed-h">Embed, print and go offline</h2>
         <h3>Embed a scene in a course page</h3>
         <p>
-          Set the scene up, then press <strong>Copy embed code</strong>: it gives an{' '}
+          Set the scene up (outside classroom mode), then press <strong>Copy embed code</strong>: it gives an{' '}
           <code>&lt;iframe&gt;</code> with an id and a short script that resizes it to the scene’s content
           (the scene posts only its height and its id). Paste both into the course page (Moodle, Canvas and
           most LMSs accept them in an HTML block). Add <code>origin=https://your-lms.example.edu</code> to the
@@ -123,12 +125,20 @@ export default function Guide({ flags, query = '' }: { flags: ShellFlags; query?
         </p>
         <h3>Show it in the lecture hall</h3>
         <p>
-          Add <code>present=1</code> to any link (or open this guide with it): larger type, keyboard shortcuts
-          (press <kbd>?</kbd>). The <strong>QR code</strong> button beside Copy link shows the current
-          configuration as a large code that students scan to get the same scene on their phones. On phones
-          and tablets a 3D view starts when the student taps <strong>Show the 3D view</strong> (it is the
-          heaviest part of a page on a phone, and until then swipes over it scroll the page); every number and
-          plot works without it.
+          Add <code>present=1</code> to any link (or open this guide with it): the stage view, with larger
+          type and keyboard shortcuts (press <kbd>?</kbd>). The scene’s figure, its key readouts and its
+          animation’s controls fill the first screen; the other controls fold into a drawer (the{' '}
+          <strong>Controls</strong> button, or <kbd>c</kbd>), and <strong>Fullscreen</strong> shows the figure
+          alone (<kbd>Esc</kbd> leaves). Add <code>ask=1</code> to hide the results until you press{' '}
+          <strong>Reveal</strong> (or <kbd>v</kbd>).
+        </p>
+        <p>
+          The <strong>QR code</strong> button beside Copy link shows the current configuration as a large code
+          that students scan to get the same scene on their phones. Copy link and the QR code give the
+          students’ link, without classroom mode and with nothing hidden; check{' '}
+          <strong>Keep classroom mode</strong> to share your own view instead. On phones and tablets a 3D view
+          starts when the student taps <strong>Show the 3D view</strong> (it is the heaviest part of a page on
+          a phone, and until then swipes over it scroll the page); every number and plot works without it.
         </p>
         <h3>Print</h3>
         <p>

@@ -18,6 +18,10 @@ export interface Preset {
   shows: string;
   /** What to ask the class at this step. */
   ask: string;
+  /** The exam part the link lands on (`part=`). */
+  part?: string;
+  /** The link opens with the results hidden until revealed (`ask=1`). */
+  askFirst?: boolean;
 }
 
 export interface Lesson {
@@ -53,9 +57,11 @@ function enc(s: string): string {
   return encodeURIComponent(s).replace(/%2C/g, ',');
 }
 
-/** The hash link of a preset (optionally in classroom mode). */
+/** The hash link of a preset: its parameters, its part, ask=1 if it asks first (optionally in classroom mode). */
 export function presetHref(p: Preset, present = false): string {
   const q = Object.entries(p.params).map(([k, v]) => `${enc(k)}=${enc(v)}`);
+  if (p.part) q.push(`part=${enc(p.part)}`);
+  if (p.askFirst) q.push('ask=1');
   if (present) q.push('present=1');
   return `#${p.route}${q.length ? `?${q.join('&')}` : ''}`;
 }

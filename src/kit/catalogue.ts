@@ -25,6 +25,11 @@ export interface SceneInfoSpec {
   parts: readonly string[];
   /** A readout (data-testid) the scene computes as soon as it opens: what shows it is working. */
   keyReadout: string;
+  /**
+   * Per part: the question to put to the class before its results are revealed (`ask=1` shows it
+   * above the scene with a Reveal button). Parts where a prediction makes no sense have none.
+   */
+  predict?: Readonly<Partial<Record<string, string>>>;
 }
 
 export interface QuestionInfo {
@@ -48,10 +53,19 @@ const SCENE_LIST = [
     title: 'Sampling a hemisphere',
     questions: 'Q1 · Q2',
     blurb:
-      'Normalize p(ω) = k cos θ e^φ, find its marginals and CDFs, invert them, and watch the samples land.',
+      'Normalize p(ω) = k cos θ eᵠ, find its marginals and CDFs, invert them, and watch the samples land.',
     examQuery: 'lobe=exam',
     parts: ['1a', '1b', '1c', '1d', '2a', '2b', '2c'],
     keyReadout: 'k',
+    predict: {
+      '1a': 'Before you reveal k: is it larger or smaller than 1/(2π), the constant of a uniform density? What does dω = sin θ dθ dφ add to the integral?',
+      '1b': 'Predict the marginals p(θ) and p(φ) before you reveal them: where does each one peak, and where does the Jacobian sin θ go?',
+      '1c': 'Sketch the CDFs P(θ) and P(φ) before you reveal them: which one climbs slowly and then steeply, and why?',
+      '1d': 'Before you reveal the points: where will they bunch up? Which factor decides the direction in θ, which in φ?',
+      '2a': 'Uniform sampling: which factor multiplies the mean of f(Xᵢ), and how far from the exact integral do you expect the estimate to land?',
+      '2b': 'Importance sampling: which samples carry the largest weights f(Xᵢ)/p(Xᵢ)? Will the estimate scatter more or less than the uniform one?',
+      '2c': 'Many independent estimates, each from a few samples: where will the mean of their histogram be, and how wide will it be?',
+    },
   },
   {
     id: 'monte-carlo',
@@ -62,6 +76,12 @@ const SCENE_LIST = [
     examQuery: 'samples=1.16,1.98,0.54,1.26',
     parts: ['4a', '4b', '4c', '4d'],
     keyReadout: 'exact',
+    predict: {
+      '4a': 'Work out ∫₀² (x + 2)² dx by hand before you reveal it: which antiderivative, and roughly what value?',
+      '4b': 'Predict the uniform estimate from the four samples 1.16, 1.98, 0.54, 1.26: above or below the exact integral, and why?',
+      '4c': 'With p ∝ f, predict each term f(xᵢ)/p(xᵢ): how much do the terms differ from one another?',
+      '4d': 'Predict the convergence plot: how fast does each estimator’s error fall as N grows, and which one falls lowest?',
+    },
   },
   {
     id: 'texture',
@@ -72,6 +92,11 @@ const SCENE_LIST = [
     examQuery: 'u=0.4&v=0.24',
     parts: ['3a', '3b', '3c'],
     keyReadout: 'bilinear',
+    predict: {
+      '3a': 'Which node is nearest to (u, v), and what value does the nearest-neighbour lookup return?',
+      '3b': 'Predict the bilinear value: which four nodes enter, with which weights? Is it nearer the nearest node’s value or the four’s average?',
+      '3c': 'From the point on the sphere, predict (u, v) with and without dividing by (2π, π): which of the two lands in [0, 1]?',
+    },
   },
   {
     id: 'ray-sphere',
@@ -83,16 +108,24 @@ const SCENE_LIST = [
     examQuery: '',
     parts: ['5'],
     keyReadout: 't-hit',
+    predict: {
+      '5': 'Before you reveal the roots: how many real roots does the quadratic have here, and which one (if any) is the visible hit?',
+    },
   },
   {
     id: 'area-light',
     path: '/area-light',
     title: 'Solid angle and area lights',
     questions: 'Q6',
-    blurb: 'dω = dA cos θ_l / r², the rendering equation over a light’s area, and three ways to sample it.',
+    blurb: 'dω = dA cos θₗ / r², the rendering equation over a light’s area, and three ways to sample it.',
     examQuery: '',
     parts: ['6a', '6b', '6c'],
     keyReadout: 'reference',
+    predict: {
+      '6a': 'As a patch of the light moves towards the light’s edge, which factors of dω = dA cos θₗ / r² shrink it, and which shrinks it fastest?',
+      '6b': 'Before you reveal Lₒ: which parts of the light contribute most to the shading point, and why?',
+      '6c': 'Uniform area sampling: which samples get the largest weights |A| cos θ cos θₗ / r²? How noisy will the estimate be?',
+    },
   },
 ] as const satisfies readonly SceneInfoSpec[];
 
@@ -100,10 +133,10 @@ export const QUESTIONS: readonly QuestionInfo[] = [
   {
     n: 1,
     title: 'Sampling a hemisphere PDF by inversion',
-    text: 'Normalize p(ω) = k cos θ e^φ, find its marginals and CDFs, and invert them to draw directions.',
+    text: 'Normalize p(ω) = k cos θ eᵠ, find its marginals and CDFs, and invert them to draw directions.',
     scene: 'hemisphere',
     query: 'lobe=exam',
-    practice: { id: 'q1', blurb: 'Normalize k cosᵐθ e^(aφ), its marginals, CDFs and inversion formulas.' },
+    practice: { id: 'q1', blurb: 'Normalize k cosᵐθ eᵃᵠ, its marginals, CDFs and inversion formulas.' },
   },
   {
     n: 2,
@@ -148,11 +181,11 @@ export const QUESTIONS: readonly QuestionInfo[] = [
   {
     n: 6,
     title: 'Solid angle and area lights',
-    text: 'dω = dA cos θ_l / r², the rendering equation over a light’s area, and area-light sampling.',
+    text: 'dω = dA cos θₗ / r², the rendering equation over a light’s area, and area-light sampling.',
     scene: 'area-light',
     practice: {
       id: 'q6',
-      blurb: 'dω = dA cos θ_l / r² for a patch, and the area-sampling estimator from given points.',
+      blurb: 'dω = dA cos θₗ / r² for a patch, and the area-sampling estimator from given points.',
     },
   },
 ];
@@ -183,6 +216,22 @@ export function findScene(path: string): SceneInfo | undefined {
 
 export function questionInfo(n: number): QuestionInfo | undefined {
   return QUESTIONS.find((q) => q.n === n);
+}
+
+/**
+ * The prediction prompt of an `ask=1` page: the one of `part` when it has one, else the scene's first
+ * part's that has one; null when the scene asks nothing.
+ */
+export function predictPrompt(scene: SceneInfo, part: string | null): string | null {
+  const p = scene.predict;
+  if (!p) return null;
+  const own = part ? p[part] : undefined;
+  if (own) return own;
+  for (const q of scene.parts) {
+    const t = p[q];
+    if (t) return t;
+  }
+  return null;
 }
 
 /** Where an exam question starts: its scene and its first part there. */

@@ -72,9 +72,11 @@ export interface ParsedParams<S extends ParamSchema> {
 export const SHELL_PARAMS = [
   'embed',
   'present',
+  'ask',
   'theme',
   'part',
   'origin',
+  'a11y',
   'fuzz',
   'fuzzn',
   'fuzzseed',

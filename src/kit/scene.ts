@@ -10,6 +10,11 @@ export interface SceneMode {
   embed: boolean;
   /** `present=1`: classroom mode, large type, keyboard shortcuts. */
   present: boolean;
+  /**
+   * `ask=1`, not yet revealed: show the setup (the figure with its inputs), hide the results (with
+   * `<Revealed>` from src/ui/ask.tsx) and hold the animation at its start until this turns false.
+   */
+  ask: boolean;
   theme: 'light' | 'dark';
 }
 

@@ -1,3 +1,5 @@
+import { SHELL_PARAMS } from './params';
+
 /** Hash routing: `#/texture?u=0.4&v=0.24` → { path: '/texture', query: 'u=0.4&v=0.24' }. */
 export interface Route {
   path: string;
@@ -18,7 +20,14 @@ export function parseHash(hash: string): Route {
 export interface ShellFlags {
   embed: boolean;
   present: boolean;
+  /**
+   * `ask=1`: ask, then reveal. The scene opens with its setup shown, its results hidden and its
+   * animation held at the start, under a prediction prompt; Reveal (button or `v`) shows them.
+   */
+  ask: boolean;
   theme: 'light' | 'dark' | null;
+  /** `a11y=1`: beside the scene, the text a screen reader receives (the teacher's A11y view). */
+  a11y?: boolean;
   /**
    * `part=1c`: the exam sub-question to land on (the scene checks it is one of its parts). Kept in
    * links the scene writes, so a shared link lands on the same part.
@@ -34,11 +43,15 @@ export interface ShellFlags {
   problems: { name: string; message: string }[];
 }
 
-/** Read the shell's own flags (embed, present, theme) from a query string. Never throws. */
+/** The shell's own parameters (every page takes them; no scene schema may use these names). */
+export const SHELL_FLAG_NAMES = ['embed', 'present', 'ask', 'theme', 'part', 'origin', 'a11y'] as const;
+
+/** Read the shell's own flags (embed, present, ask, theme, part, origin) from a query string. Never throws. */
 export function parseShellFlags(query: string): ShellFlags {
   const flags: ShellFlags = {
     embed: false,
     present: false,
+    ask: false,
     theme: null,
     part: null,
     origins: null,
@@ -50,7 +63,7 @@ export function parseShellFlags(query: string): ShellFlags {
   } catch {
     return flags;
   }
-  const bool = (name: 'embed' | 'present') => {
+  const bool = (name: 'embed' | 'present' | 'ask' | 'a11y') => {
     const v = sp.get(name);
     if (v === null) return;
     if (v === '1' || v === 'true') flags[name] = true;
@@ -59,6 +72,8 @@ export function parseShellFlags(query: string): ShellFlags {
   };
   bool('embed');
   bool('present');
+  bool('ask');
+  bool('a11y');
   const t = sp.get('theme');
   if (t !== null) {
     if (t === 'light' || t === 'dark') flags.theme = t;
@@ -78,7 +93,7 @@ export function parseShellFlags(query: string): ShellFlags {
       });
   }
   // a shell parameter given twice: the first is used, and the notice says so
-  for (const name of ['embed', 'present', 'theme', 'part', 'origin']) {
+  for (const name of SHELL_FLAG_NAMES) {
     const n = sp.getAll(name).length;
     if (n > 1) flags.problems.push({ name, message: `is given ${n} times; using the first` });
   }
@@ -138,7 +153,8 @@ function clip(s: string, n: number): string {
 
 /** The shell flags as query entries, for links that must keep the mode. */
 export function shellExtras(
-  flags: Pick<ShellFlags, 'embed' | 'present' | 'theme'> & {
+  flags: Pick<ShellFlags, 'embed' | 'present' | 'theme' | 'a11y'> & {
+    ask?: boolean;
     part?: string | null;
     origins?: readonly string[] | null;
   },
@@ -147,10 +163,34 @@ export function shellExtras(
     part: flags.part ?? undefined,
     embed: flags.embed ? '1' : undefined,
     present: flags.present ? '1' : undefined,
+    ask: flags.ask ? '1' : undefined,
     theme: flags.theme ?? undefined,
+    a11y: flags.a11y ? '1' : undefined,
     // an empty list stays `origin=` (nobody), so a rewritten link never drops the restriction
     origin: flags.origins ? flags.origins.join(',') : undefined,
   };
+}
+
+/**
+ * `query` without the entries named `name` (e.g. `ask` once revealed); every other entry stays
+ * exactly as written (its order and its encoding).
+ */
+export function dropQueryParam(query: string, name: string): string {
+  const q = query.startsWith('?') ? query.slice(1) : query;
+  if (q === '') return '';
+  return q
+    .split('&')
+    .filter((entry) => {
+      const k = entry.split('=', 1)[0];
+      let key = k;
+      try {
+        key = decodeURIComponent(k.replace(/\+/g, ' '));
+      } catch {
+        /* a malformed escape: compare it as written */
+      }
+      return key !== name;
+    })
+    .join('&');
 }
 
 /**
@@ -164,7 +204,7 @@ export function queryProblems(query: string, known: readonly string[]): { name: 
   } catch {
     return [{ name: '(query)', message: 'could not be read' }];
   }
-  const shell = ['embed', 'present', 'theme', 'part', 'origin', 'fuzz', 'fuzzn', 'fuzzseed'];
+  const shell: readonly string[] = SHELL_PARAMS;
   const out: { name: string; message: string }[] = [];
   const seen = new Set<string>();
   let unknown = 0;

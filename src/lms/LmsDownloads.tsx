@@ -7,6 +7,8 @@ import { useState } from 'react';
 import type { QuestionId } from '../practice/model';
 import type { PackageOutputs } from './packages';
 import { APP_VERSION } from './version';
+import { downloadFile } from '../ui/download';
+import { IntInput } from '../ui/IntInput';
 
 const FILES: { name: keyof PackageOutputs; label: string; type: string }[] = [
   { name: 'practice-scorm12.zip', label: 'SCORM 1.2 package', type: 'application/zip' },
@@ -38,14 +40,7 @@ export function LmsDownloads({
         setStatus,
       );
       const data = out[name];
-      const url = URL.createObjectURL(new Blob([data as BlobPart], { type }));
-      const a = document.createElement('a');
-      a.href = url;
-      a.download = name;
-      document.body.appendChild(a);
-      a.click();
-      a.remove();
-      setTimeout(() => URL.revokeObjectURL(url), 30_000);
+      downloadFile(name, data as BlobPart, type);
       setStatus(`${name}: ${(data.length / 1e6).toFixed(2)} MB.`);
     } catch (e) {
       setStatus(
@@ -66,15 +61,7 @@ export function LmsDownloads({
       </p>
       <p>
         <label>
-          Pass mark{' '}
-          <input
-            type="number"
-            min={1}
-            max={100}
-            value={mastery}
-            onChange={(e) => setMastery(Math.min(100, Math.max(1, Math.round(Number(e.target.value)) || 80)))}
-          />{' '}
-          %
+          Pass mark <IntInput min={1} max={100} value={mastery} fallback={80} onChange={setMastery} /> %
         </label>
       </p>
       <p className="lms-buttons" style={{ display: 'flex', flexWrap: 'wrap', gap: '0.5rem' }}>

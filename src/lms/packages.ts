@@ -63,29 +63,38 @@ function fileList(files: readonly string[], indent: string): string {
   return files.map((f) => `${indent}<file href="${xmlEscape(f)}"/>`).join('\n');
 }
 
-export function scorm12Manifest(c: PackageChoice, files: readonly string[]): string {
+/** The parts in which the two SCORM versions' manifests differ. */
+interface ScormFlavour {
+  id: string;
+  version: string;
+  namespaces: string;
+  schemaVersion: string;
+  /** What the item carries besides its title (the mastery score, in each version's own form). */
+  itemExtra: string;
+  /** The attribute naming a resource a SCO (its case differs between the versions). */
+  scormTypeAttr: string;
+}
+
+function scormManifest(c: PackageChoice, files: readonly string[], f: ScormFlavour): string {
   const t = xmlEscape(title(c));
   return `<?xml version="1.0" encoding="UTF-8"?>
-<manifest identifier="render-math-lab-practice-scorm12-${c.seed}" version="1.0"
-  xmlns="http://www.imsproject.org/xsd/imscp_rootv1p1p2"
-  xmlns:adlcp="http://www.adlnet.org/xsd/adlcp_rootv1p2"
-  xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance"
-  xsi:schemaLocation="http://www.imsproject.org/xsd/imscp_rootv1p1p2 imscp_rootv1p1p2.xsd http://www.imsglobal.org/xsd/imsmd_rootv1p2p1 imsmd_rootv1p2p1.xsd http://www.adlnet.org/xsd/adlcp_rootv1p2 adlcp_rootv1p2.xsd">
+<manifest identifier="render-math-lab-practice-${f.id}-${c.seed}" version="${f.version}"
+${f.namespaces}>
   <metadata>
     <schema>ADL SCORM</schema>
-    <schemaversion>1.2</schemaversion>
+    <schemaversion>${f.schemaVersion}</schemaversion>
   </metadata>
   <organizations default="ORG-1">
     <organization identifier="ORG-1">
       <title>${t}</title>
       <item identifier="ITEM-1" identifierref="SCO-1" isvisible="true">
         <title>${t}</title>
-        <adlcp:masteryscore>${Math.round(c.mastery * 100)}</adlcp:masteryscore>
+${f.itemExtra}
       </item>
     </organization>
   </organizations>
   <resources>
-    <resource identifier="SCO-1" type="webcontent" adlcp:scormtype="sco" href="index.html">
+    <resource identifier="SCO-1" type="webcontent" ${f.scormTypeAttr}="sco" href="index.html">
 ${fileList(files, '      ')}
     </resource>
   </resources>
@@ -93,43 +102,41 @@ ${fileList(files, '      ')}
 `;
 }
 
+export function scorm12Manifest(c: PackageChoice, files: readonly string[]): string {
+  return scormManifest(c, files, {
+    id: 'scorm12',
+    version: '1.0',
+    namespaces: `  xmlns="http://www.imsproject.org/xsd/imscp_rootv1p1p2"
+  xmlns:adlcp="http://www.adlnet.org/xsd/adlcp_rootv1p2"
+  xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance"
+  xsi:schemaLocation="http://www.imsproject.org/xsd/imscp_rootv1p1p2 imscp_rootv1p1p2.xsd http://www.imsglobal.org/xsd/imsmd_rootv1p2p1 imsmd_rootv1p2p1.xsd http://www.adlnet.org/xsd/adlcp_rootv1p2 adlcp_rootv1p2.xsd"`,
+    schemaVersion: '1.2',
+    itemExtra: `        <adlcp:masteryscore>${Math.round(c.mastery * 100)}</adlcp:masteryscore>`,
+    scormTypeAttr: 'adlcp:scormtype',
+  });
+}
+
 export function scorm2004Manifest(c: PackageChoice, files: readonly string[]): string {
-  const t = xmlEscape(title(c));
-  return `<?xml version="1.0" encoding="UTF-8"?>
-<manifest identifier="render-math-lab-practice-scorm2004-${c.seed}" version="1"
-  xmlns="http://www.imsglobal.org/xsd/imscp_v1p1"
+  return scormManifest(c, files, {
+    id: 'scorm2004',
+    version: '1',
+    namespaces: `  xmlns="http://www.imsglobal.org/xsd/imscp_v1p1"
   xmlns:adlcp="http://www.adlnet.org/xsd/adlcp_v1p3"
   xmlns:adlseq="http://www.adlnet.org/xsd/adlseq_v1p3"
   xmlns:adlnav="http://www.adlnet.org/xsd/adlnav_v1p3"
   xmlns:imsss="http://www.imsglobal.org/xsd/imsss"
   xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance"
-  xsi:schemaLocation="http://www.imsglobal.org/xsd/imscp_v1p1 imscp_v1p1.xsd http://www.adlnet.org/xsd/adlcp_v1p3 adlcp_v1p3.xsd http://www.adlnet.org/xsd/adlseq_v1p3 adlseq_v1p3.xsd http://www.adlnet.org/xsd/adlnav_v1p3 adlnav_v1p3.xsd http://www.imsglobal.org/xsd/imsss imsss_v1p0.xsd">
-  <metadata>
-    <schema>ADL SCORM</schema>
-    <schemaversion>2004 4th Edition</schemaversion>
-  </metadata>
-  <organizations default="ORG-1">
-    <organization identifier="ORG-1">
-      <title>${t}</title>
-      <item identifier="ITEM-1" identifierref="SCO-1" isvisible="true">
-        <title>${t}</title>
-        <imsss:sequencing>
+  xsi:schemaLocation="http://www.imsglobal.org/xsd/imscp_v1p1 imscp_v1p1.xsd http://www.adlnet.org/xsd/adlcp_v1p3 adlcp_v1p3.xsd http://www.adlnet.org/xsd/adlseq_v1p3 adlseq_v1p3.xsd http://www.adlnet.org/xsd/adlnav_v1p3 adlnav_v1p3.xsd http://www.imsglobal.org/xsd/imsss imsss_v1p0.xsd"`,
+    schemaVersion: '2004 4th Edition',
+    itemExtra: `        <imsss:sequencing>
           <imsss:objectives>
             <imsss:primaryObjective objectiveID="mastery" satisfiedByMeasure="true">
               <imsss:minNormalizedMeasure>${c.mastery}</imsss:minNormalizedMeasure>
             </imsss:primaryObjective>
           </imsss:objectives>
-        </imsss:sequencing>
-      </item>
-    </organization>
-  </organizations>
-  <resources>
-    <resource identifier="SCO-1" type="webcontent" adlcp:scormType="sco" href="index.html">
-${fileList(files, '      ')}
-    </resource>
-  </resources>
-</manifest>
-`;
+        </imsss:sequencing>`,
+    scormTypeAttr: 'adlcp:scormType',
+  });
 }
 
 /** The AU of one question: `index.html?rml-au=q3` (the LMS appends its launch parameters). */

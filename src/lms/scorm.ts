@@ -77,26 +77,41 @@ interface Driver {
   lastError(): string;
 }
 
-function driver12(a: Api12): Driver {
-  return {
-    version: '1.2',
-    init: () => String(a.LMSInitialize('')) === 'true',
-    get: (k) => String(a.LMSGetValue(k) ?? ''),
-    set: (k, v) => String(a.LMSSetValue(k, v)) === 'true',
-    commit: () => String(a.LMSCommit('')) === 'true',
-    finish: () => String(a.LMSFinish('')) === 'true',
-    lastError: () => String(a.LMSGetLastError()),
+/** Each version's names for the shared calls (the versions differ only in the names). */
+const CALLS = {
+  '1.2': {
+    init: 'LMSInitialize',
+    get: 'LMSGetValue',
+    set: 'LMSSetValue',
+    commit: 'LMSCommit',
+    finish: 'LMSFinish',
+    lastError: 'LMSGetLastError',
+  },
+  '2004': {
+    init: 'Initialize',
+    get: 'GetValue',
+    set: 'SetValue',
+    commit: 'Commit',
+    finish: 'Terminate',
+    lastError: 'GetLastError',
+  },
+} as const satisfies Record<'1.2', Record<string, keyof Api12>> &
+  Record<'2004', Record<string, keyof Api2004>>;
+
+function driver(version: Driver['version'], api: Api12 | Api2004): Driver {
+  const names = CALLS[version];
+  const call = (name: string, ...args: string[]): string => {
+    const fn = (api as unknown as Record<string, (...a: string[]) => unknown>)[name];
+    return String(fn?.apply(api, args) ?? '');
   };
-}
-function driver2004(a: Api2004): Driver {
   return {
-    version: '2004',
-    init: () => String(a.Initialize('')) === 'true',
-    get: (k) => String(a.GetValue(k) ?? ''),
-    set: (k, v) => String(a.SetValue(k, v)) === 'true',
-    commit: () => String(a.Commit('')) === 'true',
-    finish: () => String(a.Terminate('')) === 'true',
-    lastError: () => String(a.GetLastError()),
+    version,
+    init: () => call(names.init, '') === 'true',
+    get: (k) => call(names.get, k),
+    set: (k, v) => call(names.set, k, v) === 'true',
+    commit: () => call(names.commit, '') === 'true',
+    finish: () => call(names.finish, '') === 'true',
+    lastError: () => call(names.lastError),
   };
 }
 
@@ -137,7 +152,7 @@ export function connectScorm(config: LmsConfig, win: Window = window): ScormSess
   const v12 = config.kind === 'scorm12';
   const api = v12 ? findApi<Api12>(win, 'API') : findApi<Api2004>(win, 'API_1484_11');
   if (!api) return null;
-  const d = v12 ? driver12(api as Api12) : driver2004(api as Api2004);
+  const d = driver(v12 ? '1.2' : '2004', api);
   let ok = false;
   try {
     ok = d.init();

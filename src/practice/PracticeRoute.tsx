@@ -11,6 +11,7 @@
  */
 import { useCallback, useEffect, useMemo, useState, type FormEvent } from 'react';
 import { MathTex } from '../ui/MathTex';
+import { IntInput } from '../ui/IntInput';
 import { queryProblems, shellExtras, type ShellFlags } from '../kit/shell';
 import { expectedText, FORMULA_POLICY, NUMERIC_POLICY } from './check';
 import {
@@ -189,14 +190,7 @@ function PracticeHome({ flags, query }: { flags: ShellFlags; query: string }) {
           ))}
         </fieldset>
         <label>
-          Variants of each{' '}
-          <input
-            type="number"
-            min={1}
-            max={10}
-            value={count}
-            onChange={(e) => setCount(Math.min(10, Math.max(1, Math.round(Number(e.target.value)) || 1)))}
-          />
+          Variants of each <IntInput min={1} max={10} value={count} fallback={1} onChange={setCount} />
         </label>{' '}
         <label>
           Seed{' '}

@@ -11,7 +11,7 @@ import { queryProblems, type ShellFlags } from '../kit/shell';
 import { expectedText } from './check';
 import { fmt, QUESTION_IDS, type AnswerSpec, type QuestionId, type Variant } from './model';
 import { isQuestionId, questionInfo, sheetSeed } from './questions';
-import { qrPath, type QrPath } from './qr';
+import { qrPath, type QrPath } from '../ui/qr';
 import { practiceSlot } from './extensions';
 
 const MAX_SEED = 0xffffffff;

@@ -5,6 +5,7 @@
  * guarded and progress then simply is not kept.
  */
 import { QUESTION_IDS, type QuestionId } from './model';
+import { readPerQuestion } from './stored';
 
 export const PROGRESS_KEY = 'rml:practice-progress';
 const MAX_SEEDS = 500;
@@ -40,19 +41,9 @@ function normalise(attempted: number[], correct: number[]): QuestionProgress {
 
 export function loadProgress(): Progress {
   const p = empty();
-  try {
-    const raw = window.localStorage.getItem(PROGRESS_KEY);
-    if (!raw) return p;
-    const data = JSON.parse(raw) as unknown;
-    if (!data || typeof data !== 'object') return p;
-    for (const q of QUESTION_IDS) {
-      if (!Object.hasOwn(data, q)) continue;
-      const e = (data as Record<string, unknown>)[q] as { attempted?: unknown; correct?: unknown } | null;
-      if (e && typeof e === 'object') p[q] = normalise(seeds(e.attempted), seeds(e.correct));
-    }
-  } catch {
-    /* unreadable: start afresh */
-  }
+  readPerQuestion(PROGRESS_KEY, (q, e) => {
+    p[q] = normalise(seeds(e.attempted), seeds(e.correct));
+  });
   return p;
 }
 

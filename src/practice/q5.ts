@@ -108,6 +108,26 @@ export function q5Variant(seed: number): Variant {
   const slippedHit = slipped ? (slipped[0] >= 0 ? slipped[0] : slipped[1] >= 0 ? slipped[1] : null) : null;
   const signMsg =
     'Sign slip in b: b = 2 d·(o − c), with f = o − c pointing from the centre to the ray origin (here you used c − o).';
+  // t₀ and t₁ are asked alike: the same two slips (b's sign, the missing 2 in 2a) named for each
+  const rootAnswer = (k: 0 | 1, t: number | null) =>
+    numberAnswer(
+      `t${k}`,
+      k === 0 ? 't0 (smaller root)' : 't1 (larger root)',
+      t,
+      [],
+      [
+        {
+          id: 'b-sign',
+          value: slipped ? slipped[k] : null,
+          message: `${signMsg} The roots come out negated.`,
+        },
+        {
+          id: 'no-2a',
+          value: hit ? 2 * t! : null,
+          message: 'The roots are (−b ± √Δ)/(2a): the 2 in the denominator is missing.',
+        },
+      ],
+    );
   const answers = [
     numberAnswer(
       'a',
@@ -152,42 +172,8 @@ export function q5Variant(seed: number): Variant {
         { id: 'plus-4ac', value: b * b + 4 * a * cc, message: 'Δ = b² − 4ac (minus).' },
       ],
     ),
-    numberAnswer(
-      't0',
-      't0 (smaller root)',
-      t0,
-      [],
-      [
-        {
-          id: 'b-sign',
-          value: slipped ? slipped[0] : null,
-          message: `${signMsg} The roots come out negated.`,
-        },
-        {
-          id: 'no-2a',
-          value: hit ? 2 * t0! : null,
-          message: 'The roots are (−b ± √Δ)/(2a): the 2 in the denominator is missing.',
-        },
-      ],
-    ),
-    numberAnswer(
-      't1',
-      't1 (larger root)',
-      t1,
-      [],
-      [
-        {
-          id: 'b-sign',
-          value: slipped ? slipped[1] : null,
-          message: `${signMsg} The roots come out negated.`,
-        },
-        {
-          id: 'no-2a',
-          value: hit ? 2 * t1! : null,
-          message: 'The roots are (−b ± √Δ)/(2a): the 2 in the denominator is missing.',
-        },
-      ],
-    ),
+    rootAnswer(0, t0),
+    rootAnswer(1, t1),
     numberAnswer(
       't-hit',
       't_hit',

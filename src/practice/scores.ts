@@ -4,6 +4,7 @@
  * missing, full or forbidden: every access is guarded, and anything unreadable is ignored.
  */
 import { QUESTION_IDS, type QuestionId } from './model';
+import { readPerQuestion } from './stored';
 
 export const SCORES_KEY = 'rml:practice-scores';
 const MAX_VARIANTS = 200;
@@ -18,23 +19,12 @@ function empty(): Scores {
 
 export function loadScores(): Scores {
   const out = empty();
-  try {
-    const raw = window.localStorage.getItem(SCORES_KEY);
-    if (!raw) return out;
-    const data = JSON.parse(raw) as unknown;
-    if (!data || typeof data !== 'object') return out;
-    for (const q of QUESTION_IDS) {
-      if (!Object.hasOwn(data, q)) continue;
-      const e = (data as Record<string, unknown>)[q];
-      if (!e || typeof e !== 'object') continue;
-      for (const [seed, v] of Object.entries(e as Record<string, unknown>)) {
-        if (!/^\d{1,10}$/.test(seed) || Number(seed) > 0xffffffff) continue;
-        if (typeof v === 'number' && v >= 0 && v <= 1) out[q][seed] = v;
-      }
+  readPerQuestion(SCORES_KEY, (q, e) => {
+    for (const [seed, v] of Object.entries(e)) {
+      if (!/^\d{1,10}$/.test(seed) || Number(seed) > 0xffffffff) continue;
+      if (typeof v === 'number' && v >= 0 && v <= 1) out[q][seed] = v;
     }
-  } catch {
-    /* unreadable: start afresh */
-  }
+  });
   return out;
 }
 

@@ -9,6 +9,7 @@ import { loadExpressionEngine } from '../core/expr';
 import { questionInfo } from '../practice/questions';
 import { QUESTION_IDS } from '../practice/model';
 import { collate, studentsCsv, type Collation, type InputFile, type QuestionStats } from './collate';
+import { downloadFile } from '../ui/download';
 import './results.css';
 
 const MAX_FILES = 2000;
@@ -16,17 +17,6 @@ const MAX_BYTES = 2_000_000;
 
 function pct(x: number): string {
   return `${Math.round(x * 1000) / 10} %`;
-}
-
-function download(name: string, text: string, type: string): void {
-  const url = URL.createObjectURL(new Blob([text], { type }));
-  const a = document.createElement('a');
-  a.href = url;
-  a.download = name;
-  document.body.appendChild(a);
-  a.click();
-  a.remove();
-  setTimeout(() => URL.revokeObjectURL(url), 10_000);
 }
 
 function mistakesCsv(c: Collation): string {
@@ -159,14 +149,14 @@ function Report({ c }: { c: Collation }) {
       <p>
         <button
           type="button"
-          onClick={() => download('class-results.csv', studentsCsv(c), 'text/csv')}
+          onClick={() => downloadFile('class-results.csv', studentsCsv(c), 'text/csv')}
           data-testid="export-csv"
         >
           Export students (CSV)
         </button>{' '}
         <button
           type="button"
-          onClick={() => download('class-mistakes.csv', mistakesCsv(c), 'text/csv')}
+          onClick={() => downloadFile('class-mistakes.csv', mistakesCsv(c), 'text/csv')}
           data-testid="export-mistakes-csv"
         >
           Export mistakes (CSV)

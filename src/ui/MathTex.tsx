@@ -2,7 +2,8 @@ import { useEffect, useMemo, useRef, useState } from 'react';
 import { KATEX_OPTIONS } from './katexOptions';
 import { flushMathForPrint, insertTypeset, scheduleMath } from './mathQueue';
 import { afterPaint } from './afterPaint';
-import { texPreview } from './texPreview';
+import { previewLabel, texPreview } from './texPreview';
+import { keepParenthesesTogether } from './texBreaks';
 import type { TypesetReply, TypesetRequest } from './katex.worker';
 
 type Katex = typeof import('katex');
@@ -80,10 +81,14 @@ function typeset(tex: string, display: boolean): Promise<string | null> {
   return mathStarted().then(() => typesetNow(tex, display));
 }
 
-function typesetNow(tex: string, display: boolean): Promise<string | null> {
+function typesetNow(source: string, display: boolean): Promise<string | null> {
+  // a long formula wraps only at operators outside parentheses (./texBreaks)
+  const tex = keepParenthesesTogether(source);
   const w = katexWorker();
   const onMain = () =>
-    loadKatex().then((k) => k.renderToString(tex, { ...KATEX_OPTIONS, displayMode: display }));
+    Promise.all([loadKatex(), import('./mathmlSpeech')]).then(([k, m]) =>
+      m.speakableMathml(k.renderToString(tex, { ...KATEX_OPTIONS, displayMode: display })),
+    );
   if (!w) return onMain();
   return new Promise<string | null>((resolve, reject) => {
     const id = nextId++;
@@ -115,6 +120,23 @@ function remember(key: string, html: string): void {
   if (CACHE.size > CACHE_MAX) CACHE.delete(CACHE.keys().next().value!);
 }
 
+/**
+ * Typeset `tex` ahead of showing it: once this resolves, a MathTex given `tex` shows the typeset
+ * formula in the render that gives it (from the cache), with no frame of the previous formula.
+ * For views whose formula and the numbers beside it must change together (an animation's worked
+ * steps). Resolves (never rejects) also when KaTeX cannot typeset it.
+ */
+export function preloadMath(tex: string, display = false): Promise<void> {
+  const key = `${display ? 'D' : 'I'}${tex}`;
+  if (CACHE.has(key)) return Promise.resolve();
+  return typeset(tex, display).then(
+    (out) => {
+      if (out !== null) remember(key, out);
+    },
+    () => undefined,
+  );
+}
+
 let printHooked = false;
 /**
  * Before printing, every formula still waiting for idle time is sent to be typeset at once. The
@@ -143,7 +165,7 @@ export function MathTex({
 }) {
   const key = `${display ? 'D' : 'I'}${tex}`;
   // undefined: not typeset yet; null: KaTeX could not be run
-  const [html, setHtml] = useState<string | null | undefined>(() => cached(key));
+  const [typesetHtml, setHtml] = useState<string | null | undefined>(() => cached(key));
   const ref = useRef<HTMLElement>(null);
   useEffect(() => {
     const hit = cached(key);
@@ -174,13 +196,17 @@ export function MathTex({
       cancel();
     };
   }, [key, tex, display]);
+  // a formula already typeset shows at once, in the render that changes it (see preloadMath)
+  const html = CACHE.get(key) ?? typesetHtml;
   const preview = useMemo(() => (html === undefined ? texPreview(tex, display) : ''), [html, tex, display]);
   const Tag = display ? 'div' : 'span';
   const cls = `math${display ? ' math-display' : ''}${className ? ` ${className}` : ''}`;
   if (html === undefined) {
     return (
       <Tag ref={ref as React.RefObject<HTMLDivElement>} className={`${cls} math-pending`}>
-        <span className="math-preview">{preview}</span>
+        <span className="math-preview" role="math" aria-label={previewLabel(preview)}>
+          {preview}
+        </span>
       </Tag>
     );
   }

@@ -1,5 +1,8 @@
-import { useEffect, useMemo, useRef, useState } from 'react';
+import { useEffect, useId, useMemo, useRef, useState } from 'react';
 import { touchOnly, useSeenOnce } from './useInView';
+import { resolveTraceColors } from './palette';
+import { isPresent } from './pageKeys';
+import './plot.css';
 import { runChunked } from './chunked';
 
 type PlotlyModule = (typeof import('plotly.js-cartesian-dist-min'))['default'];
@@ -40,8 +43,15 @@ export interface PlotProps {
   data: PlotTrace[];
   layout?: PlotLayout;
   height?: number;
-  /** What the plot shows, for screen readers (the plot itself is not accessible). */
-  ariaLabel: string;
+  /** The plot's accessible name (older name of `label`; `label` wins when both are given). */
+  ariaLabel?: string;
+  /** The plot's accessible name: what it plots ("|error| against N"). */
+  label?: string;
+  /**
+   * What its data shows, for readers who cannot see it (build it with summarizeSeries): the
+   * plot's aria-describedby text, visually hidden. Plotly's own SVG is not accessible.
+   */
+  description?: string;
   testId?: string;
 }
 
@@ -101,11 +111,30 @@ function themeColors() {
   };
 }
 
+/** Classroom mode: the smallest tick label size (px), readable from the back of a lecture hall. */
+export const PRESENT_TICK_PX = 18;
+
+/**
+ * Raises every axis's tick labels to {@link PRESENT_TICK_PX} (a layout's own larger size stays). A
+ * log axis labels the digits between its decades ("2", "5") at 3/4 of its tick size, so its tick
+ * size is 4/3 of that.
+ */
+function presentTicks(layout: PlotLayout): void {
+  for (const [k, v] of Object.entries(layout)) {
+    if (!/^[xy]axis\d*$/.test(k) || !v || typeof v !== 'object') continue;
+    const ax = v as { tickfont?: { size?: unknown }; type?: unknown };
+    const size = typeof ax.tickfont?.size === 'number' ? ax.tickfont.size : 0;
+    const least = ax.type === 'log' ? Math.ceil((PRESENT_TICK_PX * 4) / 3) : PRESENT_TICK_PX;
+    layout[k] = { ...v, tickfont: { ...ax.tickfont, size: Math.max(size, least) } };
+  }
+}
+
 /**
  * A lazy Plotly plot: plotly.js loads only when the plot scrolls near the viewport; updates go
  * through Plotly.react in an effect (cheap diffing); the plot is purged on unmount.
  */
-export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProps) {
+export function Plot({ data, layout, height = 280, ariaLabel, label, description, testId }: PlotProps) {
+  const descId = `${useId()}-description`;
   const box = useRef<HTMLDivElement>(null);
   const el = useRef<HTMLDivElement>(null);
   const seen = useSeenOnce(box);
@@ -161,6 +190,7 @@ export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProp
     for (const k of ['xaxis', 'yaxis', 'xaxis2', 'yaxis2']) {
       if (layout && layout[k]) merged[k] = { ...axis, ...(layout[k] as object) };
     }
+    if (isPresent()) presentTicks(merged);
     // Each plot's redraw is a job of its own (./chunked): the plots that one change updates
     // together (a scene has up to four) are drawn in separate tasks, not in one long one.
     const node = el.current;
@@ -170,7 +200,7 @@ export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProp
     const cancel = runChunked(() => {
       started = true;
       plotly
-        .react(node, clean.data, merged, {
+        .react(node, resolveTraceColors(clean.data), resolveTraceColors(merged), {
           ...PLOT_CONFIG,
           // on touch screens the mode bar would sit over titles and legends with no hover to hide it
           displayModeBar: touchOnly() ? false : 'hover',
@@ -204,9 +234,16 @@ export function Plot({ data, layout, height = 280, ariaLabel, testId }: PlotProp
       className="plot"
       ref={box}
       style={{ minHeight: height }}
-      aria-label={ariaLabel}
+      role="group"
+      aria-label={label ?? ariaLabel}
+      aria-describedby={description ? descId : undefined}
       data-testid={testId}
     >
+      {description ? (
+        <p id={descId} className="sr-only" data-testid={testId ? `${testId}-description` : undefined}>
+          {description}
+        </p>
+      ) : null}
       {failed ? <p className="plot-placeholder">The plot could not be drawn.</p> : null}
       {!plotly && !failed ? <p className="plot-placeholder">Loading plot…</p> : null}
       <div ref={el} className="plot-canvas" />

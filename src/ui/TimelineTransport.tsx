@@ -17,6 +17,9 @@ export interface TimelineTransportProps {
   testId?: string;
 }
 
+const PLAY_LABEL = '▶ Play';
+const PAUSE_LABEL = '❚❚ Pause';
+
 function speedText(s: number): string {
   return s === 0.25 ? '¼×' : s === 0.5 ? '½×' : `${s}×`;
 }
@@ -87,12 +90,15 @@ export function TimelineTransport({
       <div className="timeline-buttons">
         <button
           type="button"
+          className="timeline-play"
+          // the wider of the two labels, laid out invisibly under the label: one width for both
+          data-wide={PAUSE_LABEL}
           onClick={tl.toggle}
           aria-pressed={tl.playing}
           data-testid={`${testId}-play`}
           title="Play / pause (Space)"
         >
-          {tl.playing ? '❚❚ Pause' : '▶ Play'}
+          {tl.playing ? PAUSE_LABEL : PLAY_LABEL}
         </button>
         <button type="button" onClick={tl.step} data-testid={`${testId}-step`} title="Step forward (s)">
           Step ▸

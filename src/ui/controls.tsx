@@ -1,6 +1,8 @@
 import { Deferred } from './Deferred';
 import { useEffect, useId, useState, type ReactNode } from 'react';
 import { formatNumber } from './Readout';
+import { usePresent } from './pageKeys';
+import { Stage } from './stage';
 
 function clamp(x: number, min?: number, max?: number): number {
   if (min !== undefined && x < min) return min;
@@ -335,22 +337,47 @@ export function Notice({
   );
 }
 
-/** Responsive scene layout: controls | main | aside on wide screens, stacked on phones. */
+/**
+ * Responsive scene layout: controls | main | aside on wide screens, stacked on phones.
+ *
+ * `stage` (optional): the scene's main figure, its key readouts and its transport (see ./stage.tsx
+ * for sizing the figure). Outside classroom mode it is shown at the top of `main`, with a
+ * fullscreen button. In classroom mode (`present=1`) it comes first, filling the first screen,
+ * the controls column folds into a drawer over it (the "Controls" button, key `c`), and `main`
+ * follows below.
+ */
 export function SceneLayout({
   controls,
   main,
   aside,
+  stage,
 }: {
   controls: ReactNode;
   main: ReactNode;
   aside?: ReactNode;
+  stage?: ReactNode;
 }) {
+  const present = usePresent();
+  const hasStage = stage !== undefined && stage !== null && stage !== false;
+  if (present && hasStage)
+    return (
+      <div className={`scene-layout stage-layout${aside ? ' has-aside' : ''}`}>
+        <Stage staged controls={controls}>
+          {stage}
+        </Stage>
+        <div className="scene-main">{main}</div>
+        {aside ? <div className="scene-aside">{aside}</div> : null}
+      </div>
+    );
   return (
     <div className={`scene-layout${aside ? ' has-aside' : ''}`}>
       <div className="scene-controls">
         <Deferred estimate={600}>{controls}</Deferred>
       </div>
-      <div className="scene-main">{main}</div>
+      <div className="scene-main">
+        {hasStage ? <Stage staged={false}>{stage}</Stage> : null}
+        {main}
+      </div>
       {aside ? <div className="scene-aside">{aside}</div> : null}
     </div>
   );

@@ -12,7 +12,7 @@
  *   <ExploreFurther>…stability, QMC, run time, robust forms…</ExploreFurther>
  *
  * `part=1a` in a link lands on `<ExamPart id="1a">` (the shell scrolls to `#part-1a`). The shell adds
- * previous / next question links under the scene (QuestionNav).
+ * previous / next question links under the scene (./QuestionNav).
  *
  * A part's heading and question are drawn with the page; its body (derivation, answer, figures),
  * and the body of Explore further, mount when they come near the screen or in idle time
@@ -20,8 +20,7 @@
  */
 import { Children, type ReactNode } from 'react';
 import { Deferred } from './Deferred';
-import { questionInfo, questionStart, type SceneInfo } from '../kit/catalogue';
-import type { ShellFlags } from '../kit/shell';
+import { questionInfo } from '../kit/catalogue';
 
 /** One exam question: its number and title (the catalogue's unless given), and its parts in order. */
 export function ExamQuestion({
@@ -173,50 +172,5 @@ export function ExploreFurther({ children, intro }: { children: ReactNode; intro
         </Deferred>
       ))}
     </section>
-  );
-}
-
-function flagQuery(flags: Pick<ShellFlags, 'present' | 'theme'>): string {
-  return `${flags.present ? '&present=1' : ''}${flags.theme ? `&theme=${flags.theme}` : ''}`;
-}
-
-/** Link to the start of exam question q (its scene, in the exam's configuration, at its first part). */
-export function questionHref(q: number, flags: Pick<ShellFlags, 'present' | 'theme'>): string | null {
-  const start = questionStart(q);
-  if (!start) return null;
-  const base = start.scene.examQuery ? `${start.scene.examQuery}&` : '';
-  return `#${start.scene.path}?${base}part=${start.part}${flagQuery(flags)}`;
-}
-
-/** Previous / next exam question links, under every scene (not in embeds). */
-export function QuestionNav({
-  info,
-  flags,
-}: {
-  info: SceneInfo;
-  flags: Pick<ShellFlags, 'present' | 'theme'>;
-}) {
-  const qs = [...new Set(info.parts.map((p) => Number.parseInt(p, 10)))];
-  const first = Math.min(...qs);
-  const last = Math.max(...qs);
-  const prev = first > 1 ? questionHref(first - 1, flags) : null;
-  const next = last < 6 ? questionHref(last + 1, flags) : null;
-  return (
-    <nav className="question-nav" aria-label="Exam questions">
-      {prev ? (
-        <a href={prev} rel="prev" data-testid="prev-question">
-          ← Question {first - 1}
-        </a>
-      ) : (
-        <span />
-      )}
-      {next ? (
-        <a href={next} rel="next" data-testid="next-question">
-          Question {last + 1} →
-        </a>
-      ) : (
-        <span />
-      )}
-    </nav>
   );
 }

@@ -8,7 +8,10 @@ export {
   type ReadoutProps,
 } from './Readout';
 export { NumberField, Slider, Select, Toggle, ExprField, Panel, Notice, SceneLayout } from './controls';
-export { MathTex, loadKatex } from './MathTex';
+export { Revealed, type RevealedProps } from './ask';
+export { usePresent, isPresent } from './pageKeys';
+export { keepTextParenthesesTogether } from './texBreaks';
+export { MathTex, loadKatex, preloadMath } from './MathTex';
 export { runChunked, nextTask } from './chunked';
 export { Plot, loadPlotly, type PlotTrace, type PlotLayout } from './Plot';
 export { useShortcuts, type ShortcutHandlers } from './shortcuts';
@@ -44,15 +47,13 @@ export {
   type AnimationDriverProps,
   type AnimationStore,
 } from './animation';
-export {
-  ExamQuestion,
-  ExamPart,
-  Derivation,
-  LiveAnswer,
-  KeyNote,
-  ExploreFurther,
-  QuestionNav,
-  questionHref,
-} from './exam';
+export { ExamQuestion, ExamPart, Derivation, LiveAnswer, KeyNote, ExploreFurther } from './exam';
+export { QuestionNav, questionHref } from './QuestionNav';
 export { Deferred, useSectionWidth } from './Deferred';
 export { useCompiled, type Compiled, type CompileOutcome } from './useCompiled';
+export { announce, onAnnounce, recentAnnouncements, ANNOUNCE_GAP_MS, type Announcement } from './announce';
+export { DescribedFigure, DESCRIBE_SETTLE_MS, type DescribedFigureProps } from './describe';
+export { summarizeSeries, superscriptExponent, type SummaryOptions } from './summary';
+export { ShowAsTable, type ShowAsTableProps } from './DataTable';
+export { AudioTrace, type AudioTraceProps, type TraceEvent, type TraceEventKind } from './audioTrace';
+export { SERIES, STRATEGY_COLOR, resolveColor } from './palette';

@@ -7,6 +7,7 @@
  */
 import katex from 'katex';
 import { KATEX_OPTIONS } from './katexOptions';
+import { speakableMathml } from './mathmlSpeech';
 
 export interface TypesetRequest {
   id: number;
@@ -23,7 +24,7 @@ self.onmessage = (e: MessageEvent<TypesetRequest>) => {
   const { id, tex, display } = e.data;
   let html: string | null = null;
   try {
-    html = katex.renderToString(tex, { ...KATEX_OPTIONS, displayMode: display });
+    html = speakableMathml(katex.renderToString(tex, { ...KATEX_OPTIONS, displayMode: display }));
   } catch {
     html = null;
   }

@@ -31,7 +31,8 @@ export const SHORTCUTS: readonly { key: string; label: string; action: keyof Sho
   { key: '?', label: 'show this list', action: 'help' },
 ];
 
-function isTyping(target: EventTarget | null): boolean {
+/** Whether a key event's target takes text (page-wide single-letter keys must then stay out). */
+export function isTyping(target: EventTarget | null): boolean {
   if (!(target instanceof HTMLElement)) return false;
   const tag = target.tagName;
   if (tag === 'TEXTAREA' || tag === 'SELECT' || target.isContentEditable) return true;

@@ -468,3 +468,11 @@ function script(arg: string, map: Readonly<Record<string, string>>, mark: string
   }
   return out;
 }
+
+/**
+ * The accessible name of a formula's plain-text reading (shown until KaTeX has typeset it): the
+ * text with the marks a screen reader would read as punctuation ("^", "_") said in words.
+ */
+export function previewLabel(preview: string): string {
+  return preview.replace(/\^/g, ' to the power ').replace(/_/g, ' sub ').replace(/\s+/g, ' ').trim();
+}

@@ -111,7 +111,8 @@ for (const pl of placements) {
 }
 
 test('a horizontal light also shows the aligned closed form, equal to Ω', async ({ page }) => {
-  await openScene(page, '#/area-light?lc=0.7,-0.3,1.5&ls=1.2,0.8');
+  // tilt=0: the light is parallel to the floor (the default light is tilted)
+  await openScene(page, '#/area-light?lc=0.7,-0.3,1.5&ls=1.2,0.8&tilt=0');
   const a = await readoutNumber(page, 'solid-angle');
   const b = await readoutNumber(page, 'solid-angle-closed');
   expect(Math.abs(a - b) / a).toBeLessThan(1e-13);
@@ -132,14 +133,16 @@ test('zero-size light: a clear message and the 1 × 1 fallback', async ({ page }
   await openScene(page, '#/area-light?ls=0,0');
   await expect(page.getByRole('alert')).toContainText('no area');
   expect(await readoutNumber(page, 'reference')).toBeGreaterThan(0);
+  // the 1 × 1 fallback where the default light is
   expect(await readoutNumber(page, 'solid-angle')).toBeCloseTo(
-    closedFormOmega([0, 0, 0], [0, 0, 2], 1, 1, 0),
+    closedFormOmega([...schema.p.default], [...schema.lc.default], 1, 1, schema.tilt.default),
     12,
   );
 });
 
 test('shading point on the light: a clear message and a safe fallback', async ({ page }) => {
-  await openScene(page, '#/area-light?p=0.1,0.1,2');
+  // a point on the exam's light (centred at 0,0,2, parallel to the floor)
+  await openScene(page, '#/area-light?p=0.1,0.1,2&lc=0,0,2&tilt=0');
   await expect(page.getByRole('alert')).toContainText('on the light');
   expect(await readoutNumber(page, 'reference')).toBeGreaterThan(0);
   expect(await readoutNumber(page, 'estimate')).toBeGreaterThan(0);
@@ -193,7 +196,8 @@ test('dark theme: no serious or critical axe violations (the highlighted KaTeX b
 test('a tiny, distant light (10⁶ away): Ω matches A cos θ_l / r² (exact to O((size/d)²)) to 1e-11; estimates exact', async ({
   page,
 }) => {
-  await openScene(page, '#/area-light?lc=3,-2,1000000&ls=1,0.5&strategy=solid-angle&n=512');
+  // tilt=0: the light parallel to the floor, so cos θₗ = d / r below
+  await openScene(page, '#/area-light?lc=3,-2,1000000&ls=1,0.5&tilt=0&strategy=solid-angle&n=512');
   const omega = await readoutNumber(page, 'solid-angle');
   // The corner formula's four terms cancel at this distance, so the check is the small-patch limit,
   // whose own error is O((size/d)²) ≈ 1e-12.
@@ -250,8 +254,9 @@ test('exam first: 6a, 6b, 6c in order before "Explore further", each with its de
   await expect(d6a).toContainText('similar triangles');
   const dl = Math.sqrt(patch.area * patch.cosThetaL);
   await expect(page.getByTestId('step-6a-perp')).toContainText(`dl = ${Number(dl.toPrecision(4))}`);
+  // dωₗ is written with a real subscript (dω<sub>l</sub>): its text is "dωl"
   await expect(page.getByTestId('step-6a-similar')).toContainText(
-    `dω_l = ${Number((dl / patch.r).toPrecision(4))}`,
+    `dωl = ${Number((dl / patch.r).toPrecision(4))}`,
   );
   await expect(page.getByTestId('step-6a-result')).toContainText(String(Number(patch.approx.toPrecision(6))));
   expect(await readoutNumber(page, 'patch-approx')).toBeCloseTo(patch.approx, 7);

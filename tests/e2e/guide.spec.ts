@@ -3,6 +3,7 @@
  * with every parameter used (no notice, no error) and the scene computing.
  */
 import AxeBuilder from '@axe-core/playwright';
+import { LESSONS, presetHref } from '../../src/guide/lessons';
 import { test, expect, openScene } from './fixtures';
 
 test('the guide lists 3–5 presets per exam question, is reachable from the header, and is axe clean', async ({
@@ -33,19 +34,41 @@ test('the guide lists 3–5 presets per exam question, is reachable from the hea
   ).toEqual([]);
 });
 
-test('every preset link opens its scene with all its parameters used', async ({ page }) => {
-  test.setTimeout(300_000);
+test('every preset link opens its scene with all its parameters used, on its part and in its state', async ({
+  page,
+}) => {
+  test.setTimeout(400_000);
   await openScene(page, '#/guide?present=1');
   const hrefs = await page
     .locator('[data-testid="guide-preset"] h3 a')
     .evaluateAll((as) => as.map((a) => a.getAttribute('href')!));
+  const presets = LESSONS.flatMap((l) => l.presets);
   expect(hrefs.length).toBeGreaterThanOrEqual(18);
-  for (const href of hrefs) {
+  expect(hrefs).toEqual(presets.map((p) => presetHref(p, true)));
+  for (const [i, href] of hrefs.entries()) {
+    const p = presets[i];
     expect(href).toContain('present=1');
+    // the link says what the preset's text says: its part, ask first, the animation's start
+    const sp = new URLSearchParams(href.split('?')[1]);
+    expect(sp.get('part'), href).toBe(p.part ?? null);
+    expect(sp.get('ask'), href).toBe(p.askFirst ? '1' : null);
     await openScene(page, href);
     await expect(page.locator('main#main.scene')).toBeVisible();
     await expect(page.getByTestId('param-notice'), href).toHaveCount(0);
     await expect(page.locator('.notice-error'), href).toHaveCount(0);
     await expect(page.getByTestId('copy-link')).toBeVisible();
+    // it lands on its part (scrolled to and focused) …
+    if (p.part) await expect(page.locator(`#part-${p.part}`), href).toBeFocused();
+    // … asks its own question before revealing, or shows everything at once
+    if (p.askFirst) await expect(page.getByTestId('ask-prompt-text'), href).toHaveText(p.ask);
+    else await expect(page.getByTestId('ask-prompt'), href).toHaveCount(0);
+    // … and holds its animation where the link says (or, asking, hides its transport until revealed;
+    // what a scene does on Reveal, e.g. play what was predicted, is the scene's own test)
+    if (p.params.t !== undefined) {
+      const timeline = page.locator('.timeline');
+      if (p.askFirst && (await timeline.count()) === 0)
+        await expect(page.getByTestId('ask-hidden').first(), href).toBeVisible();
+      else await expect(timeline.first(), href).toHaveAttribute('data-t', p.params.t);
+    }
   }
 });

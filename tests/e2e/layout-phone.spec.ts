@@ -76,9 +76,12 @@ for (const [w, h] of [
     expect(await page.evaluate(() => window.scrollY)).toBe(0);
     expect(b.y, 'top of the 3D view').toBeLessThan(0.5 * h);
     expect(b.y + b.height / 2, 'the middle of the 3D view').toBeLessThan(h);
-    // the question's heading stays above it
-    const title = (await page.locator('#question-6-title').boundingBox())!;
-    expect(title.y).toBeLessThan(b.y);
+    // the scene's title (Q6) stays above it; in classroom mode the stage comes before the
+    // question's text, which follows under it
+    const title = page.getByRole('heading', { level: 1 });
+    await expect(title).toContainText('Q6');
+    expect((await title.boundingBox())!.y).toBeLessThan(b.y);
+    expect((await page.locator('#question-6-title').boundingBox())!.y).toBeGreaterThan(b.y);
   });
 }
 

@@ -289,7 +289,11 @@ test.describe('exam first: Q4 (a)–(d)', () => {
       const svg = page.getByTestId('race').locator('svg').first();
       const box = (await svg.boundingBox())!;
       expect(box.y).toBeLessThan(h - 100);
-      for (const cap of await page.locator('.mc-svg-fig figcaption').all()) {
+      // the stage shows fewer plots on 720 lines than on 1080 (the others are not displayed there):
+      // every caption shown is whole, and the stage shows at least three plots
+      const shown = await page.locator('.mc-svg-fig figcaption:visible').all();
+      expect(shown.length).toBeGreaterThanOrEqual(3);
+      for (const cap of shown) {
         const c = (await cap.boundingBox())!;
         const sw = await cap.evaluate((e) => e.scrollWidth - e.clientWidth);
         expect(sw).toBeLessThanOrEqual(0);
@@ -364,4 +368,120 @@ test('a subnormal integrand (f = 1e-320·x) draws every chart without a NaN attr
     return out;
   });
   expect(bad).toEqual([]);
+});
+
+// ---------------------------------------------------------------------------------------------
+// The race accumulates what it claims: histograms of every sample drawn so far
+// ---------------------------------------------------------------------------------------------
+
+/** Counts of the first t samples in `bins` equal bins over [0, 2], binned here from the model's samples. */
+function binned(xs: Float64Array, t: number, bins: number): number[] {
+  const c = new Array<number>(bins).fill(0);
+  for (let i = 0; i < t; i++) c[Math.min(bins - 1, Math.floor((xs[i] / 2) * bins))]++;
+  return c;
+}
+
+/** Both histograms' counts and the samples they count, read in one go (one frame's state). */
+async function histograms(page: import('@playwright/test').Page) {
+  return page.evaluate(() =>
+    (['uniform', 'importance'] as const).map((id) => {
+      const el = document.querySelector(`[data-testid="race-hist-${id}"]`)!;
+      return {
+        t: Number(el.getAttribute('data-t')),
+        counts: (el.getAttribute('data-counts') ?? '').split(',').map(Number),
+      };
+    }),
+  );
+}
+
+test.describe('the race’s histograms and the answers first', () => {
+  test('the histograms count every sample drawn so far, paused, playing, stepped and reset', async ({
+    page,
+  }) => {
+    await openScene(page, '#/monte-carlo?seed=3');
+    const track = examTrack(3);
+    const tl = page.getByTestId('timeline');
+    const lanes = [track.uniform.x, track.importance.x];
+    const check = (h: { t: number; counts: number[] }[]) => {
+      h.forEach((lane, k) => {
+        expect(lane.counts.reduce((s, c) => s + c, 0)).toBe(lane.t);
+        expect(lane.counts).toEqual(binned(lanes[k], lane.t, lane.counts.length));
+      });
+      expect(h[0].t).toBe(h[1].t);
+      return h[0].t;
+    };
+    // the race opens with samples drawn (not at t = 0), and the histograms hold all of them
+    const t0 = Number(await tl.getAttribute('data-t'));
+    expect(t0).toBeGreaterThan(100);
+    expect(check(await histograms(page))).toBe(t0);
+    // importance samples crowd where f is large: more of them in the last bin than in the first
+    const [, imp] = await histograms(page);
+    expect(imp.counts.at(-1)!).toBeGreaterThan(imp.counts[0]);
+    // playing: at several moments, what is drawn is all the samples drawn so far
+    await page.getByTestId('timeline-play').click();
+    const seen = new Set<number>();
+    await expect
+      .poll(
+        async () => {
+          seen.add(check(await histograms(page)));
+          return seen.size;
+        },
+        { timeout: 30_000 },
+      )
+      .toBeGreaterThanOrEqual(4);
+    expect(Math.max(...seen)).toBeGreaterThan(t0);
+    await page.getByTestId('timeline-play').click();
+    await expect(tl).toHaveAttribute('data-playing', '0');
+    const t = Number(await tl.getAttribute('data-t'));
+    expect(check(await histograms(page))).toBe(t);
+    await page.getByTestId('timeline-step').click();
+    await expect(tl).toHaveAttribute('data-t', String(t + 1));
+    expect(check(await histograms(page))).toBe(t + 1);
+    await page.getByTestId('timeline-reset').click();
+    await expect(tl).toHaveAttribute('data-t', '0');
+    expect(check(await histograms(page))).toBe(0);
+  });
+
+  test('at 1280×900 the first screen holds Q4’s answers (a), (b) and (c), computed live', async ({
+    page,
+  }) => {
+    await page.setViewportSize({ width: 1280, height: 900 });
+    await openScene(page, '#/monte-carlo');
+    const I = exactSquare(0, 2);
+    const uni = (2 / 4) * EXAM_X.reduce((s, x) => s + f(x), 0);
+    for (const [id, want] of [
+      ['q4-answer-a', I],
+      ['q4-answer-b', uni],
+      ['q4-answer-c', I],
+    ] as const) {
+      close(await readoutNumber(page, id), want, 1e-12);
+      const box = (await page.getByTestId(id).boundingBox())!;
+      expect(box.y + box.height, id).toBeLessThanOrEqual(900);
+    }
+    const answers = page.getByTestId('q4-answers');
+    await expect(answers).toContainText(`${Math.round(3 * I)}/3`);
+    await expect(answers).toContainText(uni.toFixed(2));
+    await expect(answers).toContainText('zero variance');
+    // they follow the page's samples
+    await openScene(page, '#/monte-carlo?samples=0.5,1.5');
+    close(await readoutNumber(page, 'q4-answer-b'), f(0.5) + f(1.5), 1e-12);
+  });
+
+  test('a spread that is zero to rounding says “zero variance”; a real one does not', async ({ page }) => {
+    await openScene(page, '#/monte-carlo?t=500');
+    const imp = page.getByTestId('race-importance-stderr');
+    await expect(imp).toHaveText(/zero variance/);
+    expect(await readoutNumber(page, 'race-importance-stderr')).toBeLessThan(1e-12);
+    const uni = page.getByTestId('race-uniform-stderr');
+    await expect(uni).not.toHaveText(/zero variance/);
+    close(await readoutNumber(page, 'race-uniform-stderr'), raceAt(examTrack(1), 500).uniform.stderr, 1e-10);
+    // the page's own estimate with p ∝ f (drawn samples), and with a ramp that only approximates f
+    await openScene(page, '#/monte-carlo?pdf=proportional&n=2000');
+    await waitForReadout(page, 'estimate', (v) => v !== 'none');
+    await expect(page.getByTestId('stderr').locator('..')).toContainText('zero variance');
+    await openScene(page, '#/monte-carlo?pdf=linear&n=2000');
+    await waitForReadout(page, 'estimate', (v) => v !== 'none');
+    await expect(page.getByTestId('stderr').locator('..')).not.toContainText('zero variance');
+    await expect(page.getByTestId('race-importance-stderr')).not.toHaveText(/zero variance/);
+  });
 });

@@ -57,7 +57,7 @@ test('the QR code decodes to the current link, and follows changes', async ({ pa
   await expect(page.getByTestId('show-qr')).toBeFocused();
 });
 
-test('in classroom mode the QR code is large, and still decodes', async ({ page }) => {
+test('in classroom mode the QR code is large, and decodes to the students’ link', async ({ page }) => {
   await page.setViewportSize({ width: 1280, height: 720 });
   await openScene(page, '#/ray-sphere?present=1&r=2');
   await page.getByTestId('show-qr').click();
@@ -66,5 +66,12 @@ test('in classroom mode the QR code is large, and still decodes', async ({ page 
   const box = (await qr.boundingBox())!;
   expect(box.width).toBeGreaterThan(0.7 * 720);
   const text = await decode(page, qr);
-  expect(text).toMatch(/#\/ray-sphere\?.*r=2.*present=1/);
+  expect(text).toMatch(/#\/ray-sphere\?.*r=2/);
+  // students scanning it get the scene, not classroom mode, unless the lecturer keeps it
+  expect(text).not.toMatch(/[?&]present=/);
+  // the choice is in the panel too (the large code stands over the share bar)
+  await page.getByTestId('qr-keep-classroom').check();
+  await expect(page.getByTestId('keep-classroom')).toBeChecked();
+  await expect(qr).toHaveAttribute('data-text', /[?&]present=1/);
+  expect(await decode(page, qr)).toMatch(/#\/ray-sphere\?.*r=2.*present=1/);
 });

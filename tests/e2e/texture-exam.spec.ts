@@ -277,6 +277,12 @@ test.describe('legible', () => {
       const hit = await page.locator('[data-testid=path-end-handle] .tx-handle-hit').boundingBox();
       expect(hit!.width).toBeGreaterThanOrEqual(24);
       const y = async (id: string) => (await page.getByTestId(id).boundingBox())!.y;
+      if (q === 'present=1') {
+        // classroom mode folds the inputs into the stage's Controls drawer: its button comes first
+        expect(await y('controls-drawer-toggle')).toBeLessThan(await y('nearest'));
+        expect(await y('controls-drawer-toggle')).toBeLessThan(await y('bilinear'));
+        continue;
+      }
       expect(await y('u-slider')).toBeLessThan(await y('nearest'));
       expect(await y('align-select')).toBeLessThan(await y('nearest'));
       expect(await y('wrap-select')).toBeLessThan(await y('bilinear'));
@@ -466,3 +472,93 @@ test.describe('the query travels its path', () => {
     );
   });
 });
+
+test.describe('the derivation and the answer under it agree while it plays', () => {
+  /** The result each part's derivation prints (from its TeX) and the answer under it, read at one moment. */
+  async function resultsNow(page: Page) {
+    return page.evaluate(() => {
+      const tex = (id: string) =>
+        document.querySelector(`[data-testid=derivation-${id}] annotation[encoding="application/x-tex"]`)
+          ?.textContent ?? null;
+      const out = (id: string) => document.querySelector(`[data-testid=${id}]`)?.textContent ?? null;
+      const t = document.querySelector('[data-testid=timeline]')?.getAttribute('data-t') ?? null;
+      return { a: tex('3a'), b: tex('3b'), nearest: out('nearest'), bilinear: out('bilinear'), t };
+    });
+  }
+  /** The last value of the bilinear steps (c = …) and the value of the nearest node (T_{i,j} = …). */
+  const bilinearResult = (tex: string) => /&= ([-0-9.]+)\s*\\end\{aligned\}\s*$/.exec(tex)?.[1];
+  const nearestResult = (tex: string) => /T_\{\d+,\d+\} &= ([-0-9.]+)/.exec(tex)?.[1];
+
+  async function expectAgree(page: Page) {
+    const r = await resultsNow(page);
+    expect(r.a && r.b, 'both derivations are typeset').toBeTruthy();
+    expect(nearestResult(r.a!), `(a) at t = ${r.t}`).toBe(r.nearest);
+    expect(bilinearResult(r.b!), `(b) at t = ${r.t}`).toBe(r.bilinear);
+    return r;
+  }
+  const typeset = async (page: Page) => {
+    for (const id of ['3a', '3b'])
+      await expect(page.getByTestId(`derivation-${id}`).locator('.math-pending')).toHaveCount(0);
+  };
+
+  test('sampled while playing, and paused at several t: the steps end in the answer shown under them', async ({
+    page,
+  }) => {
+    test.setTimeout(180_000);
+    await openScene(page, '#/texture');
+    // the grid stays in view (the timeline runs only while its figure is on screen); the steps
+    // below are typeset all the same
+    await page.getByTestId('texel-grid').scrollIntoViewIfNeeded();
+    await typeset(page);
+    const first = await expectAgree(page);
+    expect(Number(first.bilinear)).toBeCloseTo(L(0.4, 0.24), 9);
+    await page.getByTestId('timeline-speed').selectOption('0.5');
+    // while it plays: every sample agrees, and the steps do move with the point
+    await page.getByTestId('timeline-play').click();
+    const seen = new Set<string>();
+    const disagree: string[] = [];
+    let samples = 0;
+    await expect
+      .poll(
+        async () => {
+          const r = await resultsNow(page);
+          if (r.a && r.b) {
+            // (not typeset yet: the first formula of the page)
+            samples++;
+            if (nearestResult(r.a) !== r.nearest) disagree.push(`(a) at t ≈ ${r.t}: ${r.a} vs ${r.nearest}`);
+            if (bilinearResult(r.b) !== r.bilinear)
+              disagree.push(`(b) at t ≈ ${r.t}: ${r.b} vs ${r.bilinear}`);
+            seen.add(r.bilinear!);
+          }
+          return seen.size;
+        },
+        { timeout: 30_000, intervals: [150] },
+      )
+      .toBeGreaterThan(4);
+    expect(disagree).toEqual([]);
+    expect(samples).toBeGreaterThan(4);
+    await page.getByTestId('timeline-play').click();
+    await page.getByTestId('timeline-speed').selectOption('1');
+    // paused at several positions: the steps, the answer and the model at the paused t agree
+    for (const after of [0.25, 0.5, 0.8]) {
+      await page.getByTestId('timeline-play').click();
+      await expect.poll(() => timelineT(page), { timeout: 30_000 }).toBeGreaterThan(after);
+      await page.getByTestId('timeline-play').click();
+      await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '0');
+      const t = await timelineT(page);
+      const f = frameAt(examGrid(), EXAM, DEFAULT_PATH, t);
+      await waitForReadout(page, 'bilinear', (x) => Math.abs(Number(x) - f.lookup.bil.value) < 1e-12);
+      await typeset(page);
+      const r = await expectAgree(page);
+      expect(Number(r.bilinear)).toBeCloseTo(f.lookup.bil.value, 4);
+      expect(Number(r.nearest)).toBe(f.lookup.near.value);
+      // the key's note names the point it computes at, not the exam's
+      await expect(page.getByTestId('keynote-3a')).toContainText(`at t = ${p4(t)}`);
+      await expect(page.getByTestId('keynote-3a')).toContainText('at the exam’s point (0.4, 0.24) the key');
+      await expect(page.getByTestId('not-exam-query').first()).toContainText(`at t = ${p4(t)}`);
+    }
+  });
+});
+
+/** As the page prints a short number (4 significant digits). */
+const p4 = (x: number) => String(Number(x.toPrecision(4)));

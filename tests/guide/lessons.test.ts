@@ -7,7 +7,8 @@ import { describe, expect, it } from 'vitest';
 import { LESSONS, MISCONCEPTIONS, presetHref } from '../../src/guide/lessons';
 import { parseParams, type ParamSchema } from '../../src/kit/params';
 import { parseHash } from '../../src/kit/shell';
-import { SCENES } from '../../src/kit/catalogue';
+import { SCENES, predictPrompt } from '../../src/kit/catalogue';
+import { presetAskFor } from '../../src/kit/lessons';
 
 // every scene's URL schema, by route, found the way the registry finds the scenes
 const SCHEMAS = new Map<string, ParamSchema>(
@@ -57,6 +58,53 @@ describe('teacher’s guide', () => {
     expect(presetHref(p)).toBe('#/monte-carlo?f=x%2B1');
     expect(parseParams(monteCarlo, parseHash(presetHref(p)).query).values.f).toBe('x+1');
     expect(presetHref(p, true)).toBe('#/monte-carlo?f=x%2B1&present=1');
+  });
+
+  it('each preset lands where its text says: its part, ask=1 when it asks first, t=0 before an animation', () => {
+    for (const l of LESSONS)
+      for (const p of l.presets) {
+        const href = presetHref(p);
+        const scene = SCENES.find((s) => s.path === p.route)!;
+        const sp = new URLSearchParams(parseHash(href).query);
+        if (p.part) {
+          expect(scene.parts, `${href}: part ${p.part} is on its scene`).toContain(p.part);
+          expect(sp.get('part'), href).toBe(p.part);
+        } else expect(sp.has('part'), href).toBe(false);
+        expect(sp.get('ask'), href).toBe(p.askFirst ? '1' : null);
+        // a title naming an exam part of this scene ("(Q6a, Q6b)") lands on the first one named
+        const named = /\(Q(\d[a-d]?)/.exec(p.title)?.[1];
+        if (named && scene.parts.includes(named)) expect(p.part, `${href}: ${p.title}`).toBe(named);
+        // a question about what happens next opens before it happens, in ask mode
+        if (/^before (you play|the race runs|the samples are drawn|you reveal the points)/i.test(p.ask)) {
+          expect(p.params.t, `${href}: opens at the start of its animation`).toBe('0');
+          expect(p.askFirst, href).toBe(true);
+        }
+        if (p.params.t !== undefined) expect(p.askFirst, `${href}: held at t=0 for a prediction`).toBe(true);
+      }
+  });
+
+  it('an ask=1 page opened from a preset link finds that preset’s question, whatever the shell flags', () => {
+    for (const l of LESSONS)
+      for (const p of l.presets) {
+        const scene = SCENES.find((s) => s.path === p.route)!;
+        const query = parseHash(presetHref(p, true)).query;
+        expect(presetAskFor(scene.id, query), presetHref(p)).toBe(p.ask);
+        expect(presetAskFor(scene.id, `${query}&theme=dark`), presetHref(p)).toBe(p.ask);
+      }
+    // other values, an extra parameter or another scene: not the preset
+    expect(presetAskFor('texture', 'u=0.41&v=0.24&ask=1')).toBeNull();
+    expect(presetAskFor('texture', 'u=0.4&v=0.24&wrap=clamp&ask=1')).toBeNull();
+    expect(presetAskFor('ray-sphere', 'u=0.4&v=0.24&ask=1')).toBeNull();
+  });
+
+  it('the catalogue’s prediction prompts belong to real parts; every scene asks something', () => {
+    for (const s of SCENES) {
+      for (const part of Object.keys(s.predict ?? {})) expect(s.parts, s.id).toContain(part);
+      expect(predictPrompt(s, null), s.id).toMatch(/\?/);
+      // part= picks its own prompt; a part without one falls back to the first part's
+      for (const part of s.parts)
+        expect(predictPrompt(s, part)).toBe(s.predict?.[part] ?? predictPrompt(s, null));
+    }
   });
 
   it('lists misconceptions for every scene', () => {

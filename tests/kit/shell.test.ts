@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { parseHash, parseShellFlags } from '../../src/kit/shell';
+import { dropQueryParam, parseHash, parseShellFlags, queryProblems, shellExtras } from '../../src/kit/shell';
 
 describe('parseHash', () => {
   it('splits path and query and normalises the path', () => {
@@ -23,5 +23,58 @@ describe('parseShellFlags', () => {
     expect(f.embed).toBe(false);
     expect(f.theme).toBeNull();
     expect(f.problems.map((p) => p.name)).toEqual(['embed', 'theme']);
+  });
+});
+
+describe('ask=1 (ask, then reveal)', () => {
+  it('is off unless asked, on for 1 or true, off for 0 or false', () => {
+    expect(parseShellFlags('').ask).toBe(false);
+    for (const v of ['1', 'true']) expect(parseShellFlags(`ask=${v}`).ask).toBe(true);
+    for (const v of ['0', 'false']) {
+      const f = parseShellFlags(`ask=${v}`);
+      expect(f.ask).toBe(false);
+      expect(f.problems).toEqual([]);
+    }
+  });
+
+  it('reports a bad value and falls back to not asking', () => {
+    const f = parseShellFlags('ask=maybe&present=1');
+    expect(f.ask).toBe(false);
+    expect(f.present).toBe(true);
+    expect(f.problems).toEqual([{ name: 'ask', message: '"maybe" is not 0 or 1; ignored' }]);
+  });
+
+  it('uses the first of repeated values, and says so', () => {
+    const f = parseShellFlags('ask=1&ask=0');
+    expect(f.ask).toBe(true);
+    expect(f.problems).toEqual([{ name: 'ask', message: 'is given 2 times; using the first' }]);
+  });
+
+  it('is a shell parameter: not reported as unknown on pages without a schema', () => {
+    expect(queryProblems('ask=1&present=1', [])).toEqual([]);
+    expect(queryProblems('ask=1&nope=2', [])).toEqual([
+      { name: 'nope', message: 'is not a parameter of this page; ignored' },
+    ]);
+  });
+
+  it('goes into links that keep the mode only when on', () => {
+    const base = { embed: false, present: true, theme: null };
+    expect(shellExtras({ ...base, ask: true }).ask).toBe('1');
+    expect(shellExtras({ ...base, ask: false }).ask).toBeUndefined();
+    expect(shellExtras(base).ask).toBeUndefined();
+  });
+});
+
+describe('dropQueryParam', () => {
+  it('removes every entry of one name and keeps the rest exactly as written', () => {
+    expect(dropQueryParam('lobe=exam&ask=1&o=-3,0.3,0.2&f=x%2B1', 'ask')).toBe(
+      'lobe=exam&o=-3,0.3,0.2&f=x%2B1',
+    );
+    expect(dropQueryParam('ask=1', 'ask')).toBe('');
+    expect(dropQueryParam('?ask=1&ask=0&present=1', 'ask')).toBe('present=1');
+    expect(dropQueryParam('', 'ask')).toBe('');
+    // an encoded name is the same name; a malformed escape is left alone
+    expect(dropQueryParam('%61sk=1&a=%E0%A4%A', 'ask')).toBe('a=%E0%A4%A');
+    expect(dropQueryParam('%zz=1&asking=1', 'ask')).toBe('%zz=1&asking=1');
   });
 });

@@ -2,13 +2,18 @@ import { describe, expect, it } from 'vitest';
 import { runChunked, SLICE_MS } from '../../src/ui/chunked';
 
 const settle = () => new Promise((r) => setTimeout(r, 50));
+/** Wait (polling, up to 10 s on a loaded machine) until `cond` holds: a state, not a fixed time. */
+async function until(cond: () => boolean): Promise<void> {
+  const end = Date.now() + 10_000;
+  while (!cond() && Date.now() < end) await settle();
+}
 
 describe('runChunked', () => {
   it('runs queued jobs later, in order, not synchronously', async () => {
     const seen: number[] = [];
     for (let i = 0; i < 5; i++) runChunked(() => seen.push(i));
     expect(seen).toEqual([]);
-    await settle();
+    await until(() => seen.length === 5);
     expect(seen).toEqual([0, 1, 2, 3, 4]);
   });
 
@@ -18,7 +23,7 @@ describe('runChunked', () => {
     const cancel = runChunked(() => seen.push('b'));
     runChunked(() => seen.push('c'));
     cancel();
-    await settle();
+    await until(() => seen.includes('c'));
     expect(seen).toEqual(['a', 'c']);
   });
 
@@ -56,7 +61,7 @@ describe('runChunked', () => {
       throw new Error('boom');
     });
     runChunked(() => seen.push('after'));
-    await settle();
+    await until(() => seen.length > 0 && errors.length > 0);
     process.off('uncaughtException', onErr);
     expect(seen).toEqual(['after']);
     expect(errors.length).toBe(1);

@@ -414,6 +414,40 @@ export function nearestPixelTaps(
 }
 
 /**
+ * One axis of a bilinear lookup for each coordinate in `cs` (texel count n): the two taps and the
+ * weight of the second, with exactly the arithmetic of {@link bilinear} for that axis.
+ */
+function bilinearTaps(
+  cs: ArrayLike<number>,
+  n: number,
+  opts: LookupOptions,
+): { t0: Int32Array; t1: Int32Array; f: Float64Array } {
+  const len = cs.length;
+  const t0 = new Int32Array(len);
+  const t1 = new Int32Array(len);
+  const f = new Float64Array(len);
+  if (opts.align === 'corner') {
+    for (let k = 0; k < len; k++) {
+      const s = addressCoord(cs[k], opts.wrap) * (n - 1);
+      const i0 = Math.min(Math.floor(s), n - 2);
+      t0[k] = i0;
+      t1[k] = i0 + 1;
+      f[k] = s - i0;
+    }
+  } else {
+    for (let k = 0; k < len; k++) {
+      const c = cs[k];
+      const s = (Number.isFinite(c) ? c : 0) * n - 0.5;
+      const r = Math.floor(s);
+      f[k] = s - r;
+      t0[k] = addressIndex(r, n, opts.wrap);
+      t1[k] = addressIndex(r + 1, n, opts.wrap);
+    }
+  }
+  return { t0, t1, f };
+}
+
+/**
  * Reconstruct the whole texture as an image: out[py · width + px] = lookup at the pixel centre
  * u = (px + ½)/width, v = 1 − (py + ½)/height (image rows top to bottom, v = 1 on top), over the
  * window [uMin, uMax] × [vMin, vMax] of (u, v) (default [0, 1]²). Batched, writes into the
@@ -448,45 +482,8 @@ export function reconstructInto(
     return out;
   }
   // bilinear: per column i0, i1, fu; per row j0, j1, fv (as in bilinear)
-  const i0s = new Int32Array(width);
-  const i1s = new Int32Array(width);
-  const fus = new Float64Array(width);
-  const j0s = new Int32Array(height);
-  const j1s = new Int32Array(height);
-  const fvs = new Float64Array(height);
-  if (opts.align === 'corner') {
-    for (let px = 0; px < width; px++) {
-      const s = addressCoord(us[px], opts.wrap) * (w - 1);
-      const i0 = Math.min(Math.floor(s), w - 2);
-      i0s[px] = i0;
-      i1s[px] = i0 + 1;
-      fus[px] = s - i0;
-    }
-    for (let py = 0; py < height; py++) {
-      const s = addressCoord(vs[py], opts.wrap) * (h - 1);
-      const j0 = Math.min(Math.floor(s), h - 2);
-      j0s[py] = j0;
-      j1s[py] = j0 + 1;
-      fvs[py] = s - j0;
-    }
-  } else {
-    for (let px = 0; px < width; px++) {
-      const u = us[px];
-      const s = (Number.isFinite(u) ? u : 0) * w - 0.5;
-      const r = Math.floor(s);
-      fus[px] = s - r;
-      i0s[px] = addressIndex(r, w, opts.wrap);
-      i1s[px] = addressIndex(r + 1, w, opts.wrap);
-    }
-    for (let py = 0; py < height; py++) {
-      const vv = vs[py];
-      const s = (Number.isFinite(vv) ? vv : 0) * h - 0.5;
-      const r = Math.floor(s);
-      fvs[py] = s - r;
-      j0s[py] = addressIndex(r, h, opts.wrap);
-      j1s[py] = addressIndex(r + 1, h, opts.wrap);
-    }
-  }
+  const { t0: i0s, t1: i1s, f: fus } = bilinearTaps(us, w, opts);
+  const { t0: j0s, t1: j1s, f: fvs } = bilinearTaps(vs, h, opts);
   for (let py = 0; py < height; py++) {
     const row = py * width;
     const o0 = j0s[py] * w;

@@ -1,5 +1,5 @@
 /**
- * Solid angle and area lights (exam Q6): dω = dA cos θ_l / r² drawn, the rendering equation over
+ * Solid angle and area lights (exam Q6): dω = dA cos θₗ / r² drawn, the rendering equation over
  * solid angle and over area, and three estimators of the light reflected by a Lambertian floor —
  * uniform area (the key's), solid-angle (spherical rectangle) and cosine hemisphere sampling —
  * against the analytic reference (Lambert's formula). All figures come from ./model over the core;
@@ -7,7 +7,17 @@
  */
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import type { SceneProps } from '../../kit/scene';
-import { ExamQuestion, ExploreFurther, Notice, Panel, SceneLayout, useSeenOnce, useTimeline } from '../../ui';
+import {
+  ExamQuestion,
+  ExploreFurther,
+  Notice,
+  Panel,
+  Revealed,
+  SceneLayout,
+  useSeenOnce,
+  useTimeline,
+} from '../../ui';
+import { prefersReducedMotion } from '../../ui/timeline';
 import { useWorkerJob, workerFactory } from '../../workers';
 import { runChunked } from '../../ui/chunked';
 import type { AreaLightTasks } from './floor.worker';
@@ -26,9 +36,11 @@ import { Q6a } from './exam/Q6a';
 import { Q6b } from './exam/Q6b';
 import { Answer6c, Q6c } from './exam/Q6c';
 import { Controls } from './view/Controls';
+import { ExamConfig } from './view/ExamConfig';
 import { ConvergencePanel, StrategyTable, TimingPanel } from './view/Explore';
 import { FloorImages } from './view/FloorImages';
-import { Stage } from './view/Stage';
+import { RunningData } from './view/RunningData';
+import { Legend, Stage } from './view/Stage';
 import { fmt } from './view/format';
 import './area-light.css';
 
@@ -117,11 +129,18 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
   const job = useMemo(() => floorJob(model, seed), [model, seed]);
 
   // The animation: t = samples of the chosen strategy arrived so far, 0 … min(n, 1024).
+  // Asked to predict first (ask=1), it is held at its start; on Reveal it plays from there.
   const animMax = animationLength(n);
   const stageRef = useRef<HTMLDivElement>(null);
+  const [held, setHeld] = useState(mode.ask);
+  useEffect(() => {
+    if (mode.ask || !held) return;
+    setHeld(false);
+    setParams({ t: 0, play: !prefersReducedMotion() });
+  }, [mode.ask, held, setParams]);
   const tl = useTimeline({
-    t: params.t,
-    play: params.play,
+    t: held ? 0 : params.t,
+    play: held ? false : params.play,
     setParams,
     max: animMax,
     integer: true,
@@ -143,7 +162,9 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
   }, [reseeding, setParams]);
 
   const dark = mode.theme === 'dark';
-  const vpHeight = mode.present ? 480 : 380;
+  const ask = mode.ask;
+  // in classroom mode the 3D view fills the stage's height (CSS), elsewhere a fixed height
+  const vpHeight: number | string = mode.present ? '100%' : 380;
 
   // The panels and exam parts are memoised on their props (not on t), so an animation frame
   // re-renders only the stage's animated bits and the floor images' pass choice; each exam part
@@ -176,23 +197,22 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
         intro={
           <p>
             A rectangular area light of radiance L shines on a floor point x (normal +z, Lambertian, albedo
-            ρ). (a) Derive dω = dA cos θ_l / r² by similar triangles; (b) write the rendering equation over
-            the light’s area; (c) give the Monte Carlo estimator with uniform area sampling.
+            ρ). (a) Derive dω = dA cos θ<sub>l</sub> / r² by similar triangles; (b) write the rendering
+            equation over the light’s area; (c) give the Monte Carlo estimator with uniform area sampling.
           </p>
         }
       >
-        <Stage
-          tl={tl}
-          stageRef={stageRef}
-          model={model}
-          strategy={strategy}
-          animMax={animMax}
-          seed={seed}
-          patch={patch}
-          vpHeight={vpHeight}
-          dark={dark}
-          target={target}
-        />
+        <Legend strategy={strategy} />
+        <Revealed ask={ask} what="the running estimate as sound and as a table">
+          <RunningData
+            model={model}
+            strategy={strategy}
+            count={animMax}
+            seed={seed}
+            t={tl.t}
+            reference={target}
+          />
+        </Revealed>
         <Q6a
           patch={patch}
           pu={params.pu}
@@ -200,29 +220,32 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
           psize={params.psize}
           ptilt={params.ptilt}
           set={set}
+          ask={ask}
         />
-        <Q6b patch={patch} model={model} dark={dark} />
-        <Q6c model={model} seed={seed} answer={answer6c} />
+        <Q6b patch={patch} model={model} dark={dark} ask={ask} />
+        <Q6c model={model} seed={seed} answer={answer6c} ask={ask} />
       </ExamQuestion>
       <ExploreFurther intro="Beyond the exam: two other ways to sample the same integral, how fast each converges, what it costs, and what its noise looks like on a whole floor.">
-        <StrategyTable estimates={estimates} strategy={strategy} n={n} seed={seed} target={target} />
-        <ConvergencePanel conv={convTask.result} seenRef={convBox} present={mode.present} />
-        <TimingPanel
-          result={timing.result}
-          running={timing.running}
-          progress={timing.progress}
-          error={timing.error}
-          seenRef={timingBox}
-          present={mode.present}
-        />
-        <Panel title="The floor, rendered with each strategy">
-          <FloorImages job={job} pass={floorPass} />
-          <p className="al-note">
-            {job.size} × {job.size} pixels of floor, {fmt(2 * job.half, 3)} units across, all at the same
-            samples per pixel, which grow with the timeline (at its end: 64). The light’s footprint is
-            brightest; the grain is each strategy’s variance.
-          </p>
-        </Panel>
+        <Revealed ask={ask} what="the three strategies’ estimates, their convergence and the floor images">
+          <StrategyTable estimates={estimates} strategy={strategy} n={n} seed={seed} target={target} />
+          <ConvergencePanel conv={convTask.result} seenRef={convBox} present={mode.present} />
+          <TimingPanel
+            result={timing.result}
+            running={timing.running}
+            progress={timing.progress}
+            error={timing.error}
+            seenRef={timingBox}
+            present={mode.present}
+          />
+          <Panel title="The floor, rendered with each strategy">
+            <FloorImages job={job} pass={floorPass} />
+            <p className="al-note">
+              {job.size} × {job.size} pixels of floor, {fmt(2 * job.half, 3)} units across, all at the same
+              samples per pixel, which grow with the timeline (at its end: 64). The light’s footprint is
+              brightest; the grain is each strategy’s variance.
+            </p>
+          </Panel>
+        </Revealed>
       </ExploreFurther>
     </>
   );
@@ -230,5 +253,23 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
   const controls = (
     <Controls params={params} set={set} reseeding={reseeding} onToggleReseeding={toggleReseeding} />
   );
-  return <SceneLayout controls={controls} main={main} />;
+  const stage = (
+    <>
+      <ExamConfig params={params} tilt={model.tilt} patchCos={patch.cosThetaL} set={set} />
+      <Stage
+        tl={tl}
+        stageRef={stageRef}
+        model={model}
+        strategy={strategy}
+        animMax={animMax}
+        seed={seed}
+        patch={patch}
+        vpHeight={vpHeight}
+        dark={dark}
+        target={target}
+        ask={ask}
+      />
+    </>
+  );
+  return <SceneLayout controls={controls} main={main} stage={stage} />;
 }

@@ -129,7 +129,9 @@ export function buildModel(params: AreaLightParams): AreaLightModel {
   if (!finite3(params.p))
     refusals.push(fail('bad-point', 'The shading point p is not three finite numbers; using 0,0,0.'));
   if (!finite3(params.lc))
-    refusals.push(fail('bad-centre', 'The light centre is not three finite numbers; using 0,0,2.'));
+    refusals.push(
+      fail('bad-centre', `The light centre is not three finite numbers; using ${def.lc.default.join(',')}.`),
+    );
   let w = params.ls?.[0] ?? NaN;
   let h = params.ls?.[1] ?? NaN;
   if (!(Number.isFinite(w) && Number.isFinite(h) && w > 0 && h > 0 && w * h >= MIN_AREA)) {

@@ -7,7 +7,7 @@
  */
 import { useMemo } from 'react';
 import type { SceneProps } from '../../kit/scene';
-import { useCompiled, ExprField, Notice, Panel, prefersReducedMotion, MathTex } from '../../ui';
+import { useCompiled, ExprField, Notice, Panel, MathTex } from '../../ui';
 import { ExamQuestion, ExploreFurther } from '../../ui/exam';
 import { useWorkerJob } from '../../workers';
 import { makeWorker } from './worker';
@@ -20,14 +20,15 @@ import { Derivation } from './view/Derivation';
 import { ImportanceReadouts, StderrNote, UniformReadouts, VarianceWarning } from './view/Q2Panel';
 import { InvertedJacobian } from './view/InvertedJacobian';
 import { GpuWarpSection } from './view/GpuWarpSection';
-import { Figure } from './view/Figure';
+import { Q1Figure } from './view/Q1Figure';
 import { Settings } from './view/Settings';
 import { SampleCheck } from './view/SampleCheck';
+import { CdfPlots } from './view/CdfPlots';
 import { RepeatSection } from './view/RepeatSection';
 import { StabilityDetails } from './view/StabilityDetails';
 import { Q1 } from './exam/Q1';
 import { Q2, lobeTexOf } from './exam/Q2';
-import { pointsArgsOf, type RepeatArgs, type StatsArgs } from './jobs';
+import type { RepeatArgs, StatsArgs } from './jobs';
 import './hemisphere.css';
 
 const REPEAT_RUNS = 1000;
@@ -39,7 +40,6 @@ nextTask(() => void examChecksCached());
 export default function HemisphereScene({ params, setParams, mode }: SceneProps<HemisphereSchema>) {
   const lobeId = params.lobe;
   const kind = params.points;
-  const anim = params.anim;
   const inverted = params.jacobian === 'inverted';
   const isCustom = lobeId === 'custom';
   const fIsCos = isCosTheta(params.f);
@@ -113,27 +113,37 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
       </Notice>
     ) : null;
 
-  const settings = (
-    <Settings
-      params={params}
-      setParams={setParams}
-      pdfError={pc.status === 'error' ? pc.message : tab && !tab.ok ? tab.message : null}
-      stats={stats}
-    />
-  );
+  const pdfError = pc.status === 'error' ? pc.message : tab && !tab.ok ? tab.message : null;
+  const settings = <Settings params={params} setParams={setParams} pdfError={pdfError} stats={stats} />;
 
   const otherLobe =
     lobeId !== 'exam' ? (
       <Notice kind="info" testId="other-lobe">
         The figure, the checks in (d) and the estimates of Q2 use the chosen density,{' '}
         {baseLobe ? baseLobe.label : 'the typed density'}; the derivation above is the exam&apos;s, for k cos
-        θ e^φ. The chosen density&apos;s own derivation is under Explore further.
+        θ e<sup>φ</sup>. The chosen density&apos;s own derivation is under Explore further.
       </Notice>
     ) : null;
 
+  const figure = (
+    <Q1Figure
+      params={params}
+      setParams={setParams}
+      present={mode.present}
+      ask={mode.ask}
+      lobe={lobe}
+      inverted={inverted}
+      densityProblem={densityProblem}
+      pdfError={isCustom ? pdfError : null}
+      settings={settings}
+      chi2={current?.chi2 ?? null}
+    />
+  );
   const lobeTex = lobeTexOf(lobeId, params.exponent, k, pc.status === 'ok' ? (pc.tex ?? null) : null);
   return (
-    <div className="hemi-page">
+    // classroom mode: the stage first (`stage-layout` lets the shell compact the heading above it)
+    <div className={mode.present ? 'hemi-page stage-layout' : 'hemi-page'}>
+      {mode.present ? figure : null}
       <ExamQuestion
         n={1}
         intro={
@@ -144,36 +154,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
           </p>
         }
       >
-        <Panel className="hemi-figure-panel">
-          <Figure
-            lobe={lobe}
-            points={pointsArgsOf(params)}
-            kind={kind}
-            seed={params.seed}
-            n={params.n}
-            anim={anim}
-            // a link with play=1 and t at its default (the end) plays the animation from the start
-            t={
-              params.play === true && !prefersReducedMotion() && Number(params.t) >= 1 ? 0 : Number(params.t)
-            }
-            play={params.play === true}
-            setParams={setParams}
-            present={mode.present}
-            lobeId={lobeId}
-            problem={
-              inverted ? (
-                <Notice kind="warn" testId="figure-no-density">
-                  No directions to show: with the identity as printed on the paper, p(θ, φ) = k cot θ e^φ is
-                  not a density (its θ-integral diverges; see (b)). Choose &ldquo;sin θ · p(ω)&rdquo; under
-                  Jacobian to sample the exam&apos;s lobe.
-                </Notice>
-              ) : (
-                (densityProblem ?? <Notice kind="warn">No valid density to sample yet.</Notice>)
-              )
-            }
-            settings={settings}
-          />
-        </Panel>
+        {mode.present ? null : figure}
         {isCustom && tab && tab.ok && tab.warning ? (
           <Notice kind="warn">Approximate: {tab.warning}.</Notice>
         ) : null}
@@ -188,10 +169,12 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
           }
           inverted={<InvertedJacobian />}
           answer1d={
-            <SampleCheck current={current} sampled={!!lobe} inverted={inverted} kind={kind} n={params.n} />
+            <SampleCheck current={current} lobe={lobe} inverted={inverted} kind={kind} n={params.n} />
           }
+          cdfs={lobe ? <CdfPlots lobe={lobe} stats={current} xi={firstXi} /> : null}
           otherLobe={otherLobe}
           mainTestId={lobeId === 'exam'}
+          ask={mode.ask}
         />
       </ExamQuestion>
 
@@ -218,6 +201,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
         <Q2
           solidAngle={checks.solidAngle}
           lobeTex={lobeTex}
+          ask={mode.ask}
           answer2a={
             <>
               <UniformReadouts

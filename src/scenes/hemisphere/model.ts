@@ -35,6 +35,7 @@ import {
 import { fillSequence2D, runSeed, type SequenceKind } from '../../core/random';
 import { hemisphereChi2, adaptiveIntegrate2D, type HemisphereChi2Result } from '../../core/verify';
 import { estimateFromTerms, type McEstimate } from '../../core/estimators';
+import { superscript } from '../../ui/axis';
 import type { LobeId } from './params';
 
 /** A sampling density on the hemisphere, as the scene uses it: sampler, pdf and marginals. */
@@ -83,7 +84,7 @@ type LobeRow = (n: number) => Omit<Lobe, 'id'>;
  */
 const LOBES: { readonly [K in Exclude<LobeId, 'custom'>]: LobeRow } = {
   exam: () => ({
-    label: 'k cos θ e^φ',
+    label: 'k cos θ eᵠ',
     k: examLobeK(),
     separable: true,
     sampleBatch: sampleExamLobeBatch,
@@ -113,7 +114,7 @@ const LOBES: { readonly [K in Exclude<LobeId, 'custom'>]: LobeRow } = {
     phiPdf: uniformPhiPdf,
   }),
   phong: (n) => ({
-    label: `(n+1)/(2π) cos^${n} θ`,
+    label: `(n+1)/(2π) cos${superscript(String(n))} θ`,
     k: (n + 1) / TWO_PI,
     separable: true,
     sampleBatch: (u, out, count, start) => samplePhongLobeBatch(u, n, out, count, start),

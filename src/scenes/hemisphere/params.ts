@@ -5,7 +5,9 @@
  * Added by this scene (the contract only grows): `points`, the point set fed to the warp; `anim`,
  * which animation the shared timeline plays (`warp`: the (ξ₁, ξ₂) points and grid travel from the
  * unit square to the hemisphere; `grow`: the samples appear, 1 → N); `t` ∈ [0, 1] (default 1, the
- * finished figure) and `play` (shared timeline).
+ * finished figure) and `play` (shared timeline); `cell` = i,j, the stratum of the 8 × 8 grid of the
+ * unit square the figure follows onto the hemisphere (ξ₁ ∈ [i/8, (i+1)/8), ξ₂ ∈ [j/8, (j+1)/8); none by
+ * default).
  */
 import type { ParamSchema, ParamValues } from '../../kit/params';
 import { timelineParams } from '../../ui/timeline';
@@ -70,6 +72,15 @@ export const schema = {
     values: ANIMS,
     aliases: { morph: 'warp', growth: 'grow' },
     label: 'animation',
+  },
+  cell: {
+    kind: 'list',
+    default: null,
+    minItems: 2,
+    maxItems: 2,
+    min: 0,
+    max: 7,
+    label: 'followed stratum i,j of the (ξ₁, ξ₂) grid',
   },
   ...timelineParams({ max: 1, default: 1 }),
 } as const satisfies ParamSchema;

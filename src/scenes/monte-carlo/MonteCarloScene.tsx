@@ -4,7 +4,7 @@
  */
 import { useCallback, useMemo } from 'react';
 import type { SceneProps } from '../../kit/scene';
-import { ExamQuestion, ExploreFurther, useCompiled, Notice, SceneLayout } from '../../ui';
+import { ExamQuestion, useCompiled, Notice, SceneLayout } from '../../ui';
 import { useWorkerJob, workerFactory } from '../../workers';
 import type { McTasks } from './mc.worker';
 import {
@@ -33,14 +33,11 @@ import type { McEstimate, Problem1D } from '../../core/estimators';
 import { rmseAt, type ProblemArgs } from './jobs';
 import { fail } from '../../core/failure';
 import { compileX, compileXFast } from './expr';
-import { IntegrandPanel } from './view/IntegrandPanel';
-import { ConvergencePanel } from './view/ConvergencePanel';
-import { RmsePanel } from './view/RmsePanel';
-import { HistogramPanel } from './view/HistogramPanel';
-import type { RaceInput } from './view/RaceSection';
+import { McExplore } from './view/Explore';
+import { raceInputOf, RaceSection } from './view/RaceSection';
 import { McControls } from './view/Controls';
 import { EstimateBlock } from './view/EstimateBlock';
-import { useSlicedEstimate } from './view/hooks';
+import { useHeldAtStart, useSlicedEstimate } from './view/hooks';
 import { Q4Intro } from './exam/Q4';
 import { Q4a } from './exam/Q4a';
 import { Q4b } from './exam/Q4b';
@@ -150,22 +147,26 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
   const lane = importanceLane(choice, propChoice);
   const raceImp = lane?.pdf ?? null;
   // the track itself is computed by the race's components (./view/RaceSection), not in this render
-  const raceInput = useMemo<RaceInput | null>(
-    () =>
-      f && raceImp && exact && Number.isFinite(exact.value)
-        ? {
-            f,
-            a,
-            b,
-            sampler: raceImp.sampler,
-            density: raceImp.density,
-            exact: exact.value,
-            seed: params.seed,
-          }
-        : null,
+  const raceInput = useMemo(
+    () => raceInputOf(f, raceImp, exact, a, b, params.seed),
     [f, raceImp, exact, a, b, params.seed],
   );
   const setRace = useCallback((patch: { t?: number; play?: boolean }) => setParams(patch), [setParams]);
+  // ask=1: the race holds at its start (t = 0 in the link, so it is still there when revealed)
+  const held = mode.ask;
+  useHeldAtStart(held, params.t, params.play, setRace);
+  const race = (
+    <RaceSection
+      input={raceInput}
+      importanceLabel={lane?.label ?? ''}
+      importanceName={lane?.name ?? ''}
+      t={held ? 0 : Number(params.t)}
+      play={!held && params.play === true}
+      setParams={setRace}
+      staged={mode.present}
+      held={held}
+    />
+  );
 
   // --- s/√N is no error estimate for stratified / QMC points: RMSE over randomized runs instead ---
   const qmc = !given && !stderrIsValid(seq) && chosenOk && !!baseArgs;
@@ -222,15 +223,16 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
           <Q4Intro
             isExamConfig={examConfig}
             onExamConfig={setParams}
-            race={raceInput}
-            importanceLabel={lane?.label ?? ''}
-            t={Number(params.t)}
-            play={params.play === true}
-            setRace={setRace}
+            race={mode.present ? null : race}
+            input={raceInput}
+            t={held ? 0 : Number(params.t)}
+            exact={exact}
+            table={table}
+            ask={held}
           />
         }
       >
-        <Q4a c={c} a={ca} b={cb} isSquare={examSq} exact={exact} />
+        <Q4a c={c} a={ca} b={cb} isSquare={examSq} exact={exact} ask={held} />
         {table && f ? (
           <Q4b
             table={table}
@@ -245,48 +247,36 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
             keyNotes={keyNotes}
             onSamples={(samples) => setParams({ samples })}
             estimate={estimateBlock}
+            ask={held}
           />
         ) : null}
-        {table && f ? <Q4c table={table} c={c} a={ca} b={cb} isSquare={examSq} /> : null}
+        {table && f ? <Q4c table={table} c={c} a={ca} b={cb} isSquare={examSq} ask={held} /> : null}
         <Q4d
           input={raceInput}
           importanceIsExam={raceImp?.kind === 'proportional'}
           onWhole={() => setParams({ t: RACE_MAX, play: false })}
+          ask={held}
         />
       </ExamQuestion>
-      <ExploreFurther intro="Other integrands and pdfs, stratified and quasi-Monte Carlo points, many runs, run time, and unbiasedness (exam Q2 c).">
-        <IntegrandPanel choice={choice} curve={curve} table={table} a={a} b={b} />
-        {baseArgs ? (
-          <>
-            <ConvergencePanel
-              args={baseArgs}
-              nMax={n}
-              exact={exact?.value ?? NaN}
-              makeWorker={makeWorker}
-              present={mode.present}
-            />
-            <RmsePanel
-              args={baseArgs}
-              nMax={Math.min(n, 100_000)}
-              runs={params.runs}
-              exact={exact?.value ?? NaN}
-              makeWorker={makeWorker}
-              onRuns={(r) => setParams({ runs: r })}
-            />
-            {chosenOk ? (
-              <HistogramPanel
-                args={{ ...baseArgs, strategies: selected }}
-                N={params.hn}
-                exact={exact?.value ?? NaN}
-                makeWorker={makeWorker}
-                onN={(v) => setParams({ hn: v })}
-              />
-            ) : null}
-          </>
-        ) : null}
-      </ExploreFurther>
+      <McExplore
+        choice={choice}
+        curve={curve}
+        table={table}
+        a={a}
+        b={b}
+        baseArgs={baseArgs}
+        selected={selected}
+        n={n}
+        runs={params.runs}
+        hn={params.hn}
+        exact={exact?.value ?? NaN}
+        makeWorker={makeWorker}
+        present={mode.present}
+        ask={held}
+        setParams={setParams}
+      />
     </>
   );
 
-  return <SceneLayout controls={controls} main={main} />;
+  return <SceneLayout controls={controls} main={main} stage={mode.present ? race : undefined} />;
 }

@@ -367,13 +367,21 @@ export function keyComparison(
 export function importanceLane(
   choice: PdfChoice | null,
   proportional: PdfChoice | null,
-): { pdf: Extract<PdfChoice, { ok: true }>; label: string } | null {
+): { pdf: Extract<PdfChoice, { ok: true }>; label: string; name: string } | null {
   const pdf = choice?.ok && choice.kind !== 'uniform' ? choice : proportional?.ok ? proportional : null;
   if (!pdf) return null;
   const label =
     pdf.kind === 'proportional' ? 'p ∝ f: ' + pdf.label.replace(/ \(closed form.*\)$/, '') : pdf.label;
-  return { pdf, label };
+  return { pdf, label, name: LANE_NAME[pdf.kind] };
 }
+
+/** The importance lane's pdf in a few words (the figures' descriptions). */
+const LANE_NAME: Record<PdfKind, string> = {
+  uniform: 'uniform',
+  proportional: 'p ∝ f',
+  linear: 'the linear ramp',
+  custom: 'your pdf',
+};
 
 /** Whether the page shows the exam's own Q4: f = (x + 2)², [0, 2] and the exam's four samples in order. */
 export function isExamConfig(shift: number | null, a: number, b: number, xs: readonly number[]): boolean {
@@ -432,6 +440,18 @@ export function curves(
   const scale = pmax > 0 && fmax > 0 ? Number((fmax / pmax).toPrecision(3)) : 1;
   for (let i = 0; i < m; i++) py[i] = py[i] * scale;
   return { x, f: fy, p: py, scale };
+}
+
+/** The value at x of a function tabulated on an evenly spaced grid (linear interpolation, clamped to its ends). */
+export function gridAt(xs: ArrayLike<number>, ys: ArrayLike<number>, x: number): number {
+  const n = xs.length;
+  if (n < 2) return n ? ys[0] : NaN;
+  const x0 = xs[0];
+  const x1 = xs[n - 1];
+  const q = ((x - x0) / (x1 - x0 || 1)) * (n - 1);
+  const k = Math.max(0, Math.min(n - 2, Math.floor(q)));
+  const w = q - k;
+  return ys[k] * (1 - w) + ys[k + 1] * w;
 }
 
 /** The strategies compared in the convergence plots: [pdf, sequence, label]. */
@@ -583,6 +603,8 @@ export interface LaneState {
   /** s/√N with s² the unbiased sample variance; NaN for N < 2. */
   stderr: number;
   absError: number;
+  /** Whether the terms' spread s is zero to rounding (see {@link zeroToRounding}); false for N < 2. */
+  zeroVariance: boolean;
 }
 
 /** Sample counts at which the growing curves are drawn: 1 … 32 each, then 48 per decade up to max. */
@@ -604,7 +626,8 @@ export function raceLaneAt(L: RaceLane, t: number, exact: number): LaneState {
 }
 
 function laneAt(L: RaceLane, t: number, exact: number): LaneState {
-  if (t < 1) return { n: 0, x: NaN, term: NaN, estimate: NaN, stderr: NaN, absError: NaN };
+  if (t < 1)
+    return { n: 0, x: NaN, term: NaN, estimate: NaN, stderr: NaN, absError: NaN, zeroVariance: false };
   const k = t - 1;
   const est = L.mean[k];
   return {
@@ -614,6 +637,7 @@ function laneAt(L: RaceLane, t: number, exact: number): LaneState {
     estimate: est,
     stderr: t > 1 ? Math.sqrt(L.m2[k] / (t - 1) / t) : NaN,
     absError: Math.abs(est - exact),
+    zeroVariance: t > 1 && zeroToRounding(Math.sqrt(Math.max(0, L.m2[k]) / (t - 1)), est),
   };
 }
 
@@ -675,6 +699,90 @@ export function raceHeadAt(track: RaceTrack, t: number, recent = 40): Omit<RaceF
     recentU: Array.from(track.uniform.x.subarray(from, t)),
     recentI: Array.from(track.importance.x.subarray(from, t)),
   };
+}
+
+/**
+ * Rounding allowance of {@link zeroToRounding}, in units of ε·|mean|. Each term f(x)/p(x) carries a
+ * few roundings (the sample, f, p, the division), so terms that are equal in exact arithmetic differ
+ * by a few ulps, and Welford's update adds a few more to s; any spread a real pdf leaves (a tabulated
+ * p ∝ |f| leaves about 10⁻⁴ of the mean) is many orders of magnitude above this.
+ */
+export const ZERO_SPREAD_ULPS = 64;
+
+/**
+ * Whether a spread (the terms' standard deviation s) is zero to rounding: exactly 0, or at most
+ * ZERO_SPREAD_ULPS · ε · |mean|, relative to the magnitude of the estimate and to machine epsilon
+ * (so the verdict does not change when f is scaled by any power of two). Not finite: false.
+ */
+export function zeroToRounding(spread: number, mean: number): boolean {
+  if (spread === 0) return true;
+  return (
+    Number.isFinite(spread) &&
+    Number.isFinite(mean) &&
+    spread <= ZERO_SPREAD_ULPS * Number.EPSILON * Math.abs(mean)
+  );
+}
+
+/** Whether an estimate's terms have zero variance to rounding (s = √variance against the estimate). */
+export function estimateHasZeroVariance(e: { n: number; variance: number; estimate: number }): boolean {
+  return e.n > 1 && zeroToRounding(Math.sqrt(Math.max(0, e.variance)), e.estimate);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The race's histograms: every sample drawn so far, binned over [a, b], per lane
+// ---------------------------------------------------------------------------------------------
+
+/** Bins of the race's histograms over [a, b]. */
+export const RACE_BINS = 24;
+
+/**
+ * The bin of each sample: ⌊(x − a)/(b − a) · bins⌋, the last bin closed at b (a sample outside
+ * [a, b], which no sampler of the scene produces, goes to the nearest end bin). Once per track.
+ */
+export function raceBinIndex(xs: ArrayLike<number>, a: number, b: number, bins = RACE_BINS): Uint16Array {
+  const out = new Uint16Array(xs.length);
+  const k = bins / (b - a);
+  for (let i = 0; i < xs.length; i++) {
+    const j = Math.floor((xs[i] - a) * k);
+    out[i] = j < 0 || !(j === j) ? 0 : j >= bins ? bins - 1 : j;
+  }
+  return out;
+}
+
+/** Counts per bin of the first t samples (the histogram of everything drawn so far), into `out`. */
+export function raceCounts(
+  index: Uint16Array,
+  t: number,
+  bins = RACE_BINS,
+  out: Uint32Array = new Uint32Array(bins),
+): Uint32Array {
+  out.fill(0);
+  const n = Math.max(0, Math.min(index.length, Math.floor(t)));
+  for (let i = 0; i < n; i++) out[index[i]]++;
+  return out;
+}
+
+/** Bin k's interval [lo, hi] over [a, b]. */
+export function binRange(k: number, a: number, b: number, bins = RACE_BINS): [number, number] {
+  const w = (b - a) / bins;
+  return [a + k * w, k === bins - 1 ? b : a + (k + 1) * w];
+}
+
+/** How many of the first t samples lie in [lo, hi]. */
+export function countIn(xs: ArrayLike<number>, t: number, lo: number, hi: number): number {
+  let c = 0;
+  const n = Math.max(0, Math.min(xs.length, Math.floor(t)));
+  for (let i = 0; i < n; i++) if (xs[i] >= lo && xs[i] <= hi) c++;
+  return c;
+}
+
+/**
+ * The half of [a, b] where a pdf puts more than half of its mass (where importance samples crowd),
+ * from its CDF at the midpoint; the right half when they are equal.
+ */
+export function heavierHalf(pdf: Pick<Pdf1D, 'invert'>, a: number, b: number): [number, number] {
+  const m = (a + b) / 2;
+  return pdf.invert(m) > 0.5 ? [a, m] : [m, b];
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -10,6 +10,11 @@ import { timelineParams } from '../../ui/timeline';
 
 /** Samples in the animation (the timeline's t is the sample index 0…RACE_MAX). Mirrors model.RACE_MAX. */
 export const RACE_SAMPLES = 8192;
+/**
+ * Where the animation opens: enough samples that the histograms show where each strategy's samples
+ * crowd and the estimates have settled, with most of the run still to play.
+ */
+export const RACE_OPEN = 1024;
 
 export const PDF_KINDS = ['uniform', 'proportional', 'linear', 'custom'] as const;
 export type PdfKind = (typeof PDF_KINDS)[number];
@@ -54,8 +59,8 @@ export const schema = {
     label: 'samples per estimate (histogram)',
   },
   runs: { kind: 'number', default: 32, min: 4, max: 256, integer: true, label: 'independent runs (RMSE)' },
-  // the animation: t = samples drawn so far (0…RACE_SAMPLES), play = 1 while playing
-  ...timelineParams({ max: RACE_SAMPLES, integer: true }),
+  // the animation: t = samples drawn so far (0…RACE_SAMPLES, opening at RACE_OPEN), play = 1 while playing
+  ...timelineParams({ max: RACE_SAMPLES, integer: true, default: RACE_OPEN }),
 } as const satisfies ParamSchema;
 
 export type McSchema = typeof schema;

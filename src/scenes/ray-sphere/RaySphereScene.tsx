@@ -5,15 +5,15 @@
  * textbook form (Ray Tracing Gems ch. 7). This file holds the state and the layout; the exam's
  * blocks are in exam/, the figures in view/.
  */
-import { memo, useCallback, useDeferredValue, useEffect, useMemo, useRef } from 'react';
+import { useCallback, useDeferredValue, useEffect, useMemo, useRef } from 'react';
 import type { SceneProps } from '../../kit/scene';
 import {
   Deferred,
   ExamPart,
   ExamQuestion,
-  ExploreFurther,
   lastValue,
-  Panel,
+  Revealed,
+  SceneLayout,
   useHeldWhile,
   useThrottled,
   useTimeline,
@@ -24,26 +24,17 @@ import { Q5Answer } from './exam/Q5Answer';
 import { Q5Asks } from './exam/Q5Asks';
 import { activePresetOf, Q5Fields, Q5Presets } from './exam/Q5Controls';
 import { Q5Derivation } from './exam/Q5Derivation';
-import { Q5Figure } from './exam/Q5Figure';
+import { Q5Figure, SweepControls } from './exam/Q5Figure';
 import { Q5Plots } from './exam/Q5Plots';
 import { InputNotices } from './view/InputNotices';
-import { LiveView3D } from './view/Live';
-import { DistantImages, ErrorVsDistance, PrecisionTable } from './view/Precision';
-import { PrecisionExplainer } from './view/PrecisionExplainer';
-import { PrecisionCompare } from './view/Float32Panel';
-import { GpuSection } from './view/gpu';
+import { RaySphereExplore } from './view/Explore';
 import './ray-sphere.css';
 
 /** The figure block's placeholder height (px): the cross-section, the case banner and the transport. */
 const STAGE_FIG_ESTIMATE = 720;
 
-/** Seconds for one sweep (t from 0 to 1) at 1× speed. */
+/** Seconds for one sweep (τ from 0 to 1) at 1× speed. */
 const SWEEP_SECONDS = 10;
-
-const DistantImagesMemo = memo(DistantImages);
-const ErrorVsDistanceMemo = memo(ErrorVsDistance);
-const PrecisionTableMemo = memo(PrecisionTable);
-const PrecisionCompareMemo = memo(PrecisionCompare);
 
 export default function RaySphereScene({ params, setParams, mode }: SceneProps<typeof schema>) {
   const { method, sweep: sweepMode, extent } = params;
@@ -57,7 +48,9 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
   // timeline's frames in their own small components (view/Live.tsx).
   const tl = useTimeline({
     t: params.t,
-    play: params.play,
+    // ask=1: held where the link opens (the typed ray) until revealed; the sweep is hidden then
+    play: params.play && !mode.ask,
+    shortcuts: !mode.ask,
     setParams,
     max: 1,
     duration: SWEEP_SECONDS,
@@ -110,104 +103,109 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
   const held = useHeldWhile(model, tl.playing);
   const slow = useDeferredValue(useThrottled(held, 200));
 
-  const hereErrors = useMemo(
-    () => ({
-      naive: slow.rows.find((x) => x.method === 'naive')?.errDisc ?? null,
-      stable: slow.rows.find((x) => x.method === 'stable')?.errDisc ?? null,
-    }),
-    [slow],
-  );
   const activePreset = activePresetOf(params);
   const ends = useMemo(() => [sweepAt(sweep, 0).o, sweepAt(sweep, 1).o], [sweep]);
   const live = { tl, modelAt };
+
+  const ask = mode.ask;
+  // In classroom mode the figure, the case and the transport are the stage (first, filling the
+  // first screen) and the sweep's settings, the presets and typed values are the drawer; the exam
+  // follows below.
+  const staged = mode.present;
+  const figure = (staged: boolean) => (
+    <Q5Figure
+      {...live}
+      sweep={sweep}
+      extent={extent}
+      ends={ends}
+      onDrag={editSoon}
+      setParams={setParams}
+      method={method}
+      ask={ask}
+      staged={staged}
+      boxRef={staged ? stageRef : undefined}
+    />
+  );
+  const { o, d, c, r, precision } = params;
+  const fields = { o, d, c, r, precision };
+  const controls = (
+    <>
+      {staged ? <SweepControls sweep={sweep} extent={extent} setParams={setParams} /> : null}
+      <Q5Presets active={activePreset} setParams={setParams} />
+      <Q5Fields {...fields} method={method} setParams={setParams} edit={edit} />
+    </>
+  );
+  const plots = (
+    <Deferred estimate={640}>
+      <Revealed ask={ask} what="g(t) and Δ along the sweep, with their roots and cases" minHeight={200}>
+        <Q5Plots {...live} sweep={sweep} method={method} />
+      </Revealed>
+    </Deferred>
+  );
+  const exam = (
+    <ExamQuestion n={5}>
+      <ExamPart id="5" title="The quadratic, Δ ≥ 0 and t ≥ 0" asks={<Q5Asks />}>
+        {/* Each block of the part mounts on its own (ui/Deferred: one at a time, a frame each, the
+            figure first), so opening the page is several short commits and layouts instead of
+            one long one. The placeholders hold the blocks' places in the stage grid. */}
+        {staged ? (
+          <div className="rs-stage-plots rs-staged-plots">{plots}</div>
+        ) : (
+          <div className="rs-stage" ref={stageRef}>
+            <div className="rs-stage-fig">
+              <Deferred estimate={STAGE_FIG_ESTIMATE}>{figure(false)}</Deferred>
+            </div>
+            <div className="rs-stage-ctl">
+              <Deferred estimate={360}>{controls}</Deferred>
+            </div>
+            <div className="rs-stage-plots">{plots}</div>
+          </div>
+        )}
+        <Deferred estimate={600}>
+          <Revealed ask={ask} what="the derivation with these numbers" minHeight={160}>
+            <Q5Derivation model={slow} playing={tl.playing} />
+          </Revealed>
+        </Deferred>
+        <Deferred estimate={480}>
+          <Revealed ask={ask} what="the live answer: Δ, the roots, the hit and the case" minHeight={120}>
+            <Q5Answer {...live} sweep={sweep} method={method} />
+          </Revealed>
+        </Deferred>
+      </ExamPart>
+    </ExamQuestion>
+  );
+  const explore = (
+    <RaySphereExplore
+      {...live}
+      slow={slow}
+      ends={ends}
+      present={mode.present}
+      dark={mode.theme === 'dark'}
+      ask={ask}
+    />
+  );
 
   return (
     <div className="rs-page">
       {/* problems are those of the typed inputs (the sweep only moves already-checked values) */}
       <InputNotices problems={base.failures} fatal={model.fatal} />
-      <ExamQuestion n={5}>
-        <ExamPart id="5" title="The quadratic, Δ ≥ 0 and t ≥ 0" asks={<Q5Asks />}>
-          {/* Each block of the part mounts on its own (ui/Deferred: one at a time, a frame each, the
-              figure first), so opening the page is several short commits and layouts instead of
-              one long one. The placeholders hold the blocks' places in the stage grid. */}
-          <div className="rs-stage" ref={stageRef}>
-            <div className="rs-stage-fig">
-              <Deferred estimate={STAGE_FIG_ESTIMATE}>
-                <Q5Figure
-                  {...live}
-                  sweep={sweep}
-                  extent={extent}
-                  ends={ends}
-                  onDrag={editSoon}
-                  setParams={setParams}
-                />
-              </Deferred>
-            </div>
-            <div className="rs-stage-ctl">
-              <Deferred estimate={360}>
-                <Q5Presets active={activePreset} setParams={setParams} />
-                <Q5Fields
-                  o={params.o}
-                  d={params.d}
-                  c={params.c}
-                  r={params.r}
-                  method={method}
-                  precision={params.precision}
-                  setParams={setParams}
-                  edit={edit}
-                />
-              </Deferred>
-            </div>
-            <div className="rs-stage-plots">
-              <Deferred estimate={640}>
-                <Q5Plots {...live} sweep={sweep} method={method} />
-              </Deferred>
-            </div>
-          </div>
-          <Deferred estimate={600}>
-            <Q5Derivation model={slow} playing={tl.playing} />
-          </Deferred>
-          <Deferred estimate={480}>
-            <Q5Answer {...live} sweep={sweep} method={method} />
-          </Deferred>
-        </ExamPart>
-      </ExamQuestion>
-      <ExploreFurther intro="Beyond the exam: the same ray in 3D, and what floating point does to the textbook formula when the sphere is far away or the ray grazes it.">
-        <Panel title="3D view">
-          <LiveView3D
-            {...live}
-            height={mode.present ? 420 : 320}
-            dark={mode.theme === 'dark'}
-            fitExtra={ends}
-          />
-        </Panel>
-        <Panel
-          title="Precision: textbook vs robust, against a double-double reference"
-          className="rs-offscreen-skip"
-        >
-          <PrecisionTableMemo model={slow} />
-          <PrecisionCompareMemo model={slow} />
-          <PrecisionExplainer />
-        </Panel>
-        <div className="rs-explore-grid">
-          <Panel title="A distant sphere, one ray per pixel" className="rs-offscreen-skip">
-            <DistantImagesMemo />
-          </Panel>
-          <Panel title="Error against distance">
-            <ErrorVsDistanceMemo current={Number(slow.distanceRatio.toPrecision(3))} here={hereErrors} />
-            <p className="rs-small">
-              Median over 12 rays per distance, aimed 0.1 r … 0.95 r off the centre; the crosses are the
-              current ray’s Δ errors. The textbook Δ loses digits like u·(D/r)² (u = 2⁻⁵³): by D ≈ 10⁸ r
-              nothing is left. The robust Δ grows only like u·(D/r), and its roots stay accurate to the last
-              bits. In float32 (orange and green squares; u₃₂ = 2⁻²⁴) the same happens 10⁴ times sooner: the
-              textbook Δ is noise by D ≈ 1/√u₃₂ ≈ 4·10³ r, a distance every game scene has.
-            </p>
-          </Panel>
-        </div>
-        <Panel title="What the GPU sees: the sphere in float32, on a shader">
-          <GpuSection />
-        </Panel>
-      </ExploreFurther>
+      {staged ? (
+        <SceneLayout
+          stage={figure(true)}
+          controls={controls}
+          main={
+            <>
+              {exam}
+              {explore}
+            </>
+          }
+        />
+      ) : (
+        <>
+          {exam}
+          {explore}
+        </>
+      )}
     </div>
   );
 }

@@ -22,6 +22,12 @@ import { computeRowsF32, type F32Rows, type Precision } from './precisionF32';
 
 export type V3 = [number, number, number];
 
+/**
+ * Above this |o − C| / r the figures centre on the sphere and leave the origin off screen (the
+ * cross-section and the 3D view are then not to scale).
+ */
+export const FAR_RATIO = 60;
+
 /** Plain-words explanation of each case, shown beside the case name. */
 export const CASE_TEXT: Record<RaySphereCase, string> = {
   miss: 'Δ < 0: the quadratic has no real root, so the line never touches the sphere.',
@@ -133,9 +139,23 @@ export function activeRows(m: RaySphereModel): { rows: MethodRow[]; reference: R
   return m.precision === 'f32' && m.f32 ? m.f32 : m;
 }
 
-function relDisc(x: number, ref: number): number {
+/** The relative error of a discriminant against the reference's (Infinity: a zero made nonzero). */
+export function relDisc(x: number, ref: number): number {
   if (ref === 0) return x === 0 ? 0 : Infinity;
   return Math.abs(x - ref) / Math.abs(ref);
+}
+
+/** One method's result with its errors against the reference (in float64 or in float32). */
+export function methodRow(method: RaySphereMethod, res: RaySphereHit, ref: RaySphereReference): MethodRow {
+  return {
+    method,
+    res,
+    errT0: relativeError(res.t0, ref.t0),
+    errT1: relativeError(res.t1, ref.t1),
+    errHit: relativeError(res.tHit, ref.tHit),
+    errDisc: relDisc(res.discriminant, ref.discriminant),
+    caseRight: res.case === ref.case,
+  };
 }
 
 /** Everything the page shows, for one parameter set. */
@@ -164,15 +184,7 @@ export function computeModel(
   for (const method of ['naive', 'stable'] as const) {
     const res = intersectRaySphere(o, d, c, r, method);
     if (!res.ok) return fail(res.message);
-    rows.push({
-      method,
-      res,
-      errT0: relativeError(res.t0, ref.t0),
-      errT1: relativeError(res.t1, ref.t1),
-      errHit: relativeError(res.tHit, ref.tHit),
-      errDisc: relDisc(res.discriminant, ref.discriminant),
-      caseRight: res.case === ref.case,
-    });
+    rows.push(methodRow(method, res, ref));
   }
   const chosen = (precision === 'f32' ? f32.rows : rows).find((row) => row.method === p.method)!.res;
   return { input, chosen, rows, reference: ref, fatal: null, distanceRatio, precision, f32 };
@@ -226,6 +238,18 @@ const cross = (x: readonly number[], y: readonly number[]): V3 => [
   x[2] * y[0] - x[0] * y[2],
   x[0] * y[1] - x[1] * y[0],
 ];
+
+/**
+ * l = f − (f·d / d·d) d with f = o − C: from the centre to the closest point of the ray's line
+ * (the vector of the robust form); |l| is the line's distance from the centre.
+ */
+export function closestOffset(o: Vec3, d: Vec3, c: Vec3): V3 {
+  const f = sub(o, c);
+  return sub(f, scale(d, dot(f, d) / dot(d, d)));
+}
+
+/** The distance of the ray's line from the centre: the closest approach (tangent when it is r). */
+export const closestApproach = (o: Vec3, d: Vec3, c: Vec3) => norm(closestOffset(o, d, c));
 
 /**
  * The canonical frame: e1 along d, e2 from the centre towards the ray's line (the ray then runs
@@ -511,7 +535,7 @@ export function makeSweep(input: InputCheck, mode: SweepMode, extent: number): S
   // length is the line's distance from C. e2 = l / |l|, made exactly perpendicular to e1 again
   // (for a far sphere l's direction carries the rounding of f·d, and f·e2 would cancel to 0).
   const e1 = fr.e1;
-  const l = sub(f, scale(d, dot(f, d) / dot(d, d)));
+  const l = closestOffset(o, d, c);
   const h0 = norm(l);
   let e2: V3 = fr.e2;
   if (h0 > 0 && Number.isFinite(h0)) {

@@ -15,7 +15,16 @@ import {
   type RaySphereReference,
   type Vec3,
 } from '../../core/geometry';
-import { distantSetup, median, type ErrorSeries, type InputCheck, type MethodRow, type V3 } from './model';
+import {
+  distantSetup,
+  median,
+  methodRow,
+  relDisc,
+  type ErrorSeries,
+  type InputCheck,
+  type MethodRow,
+  type V3,
+} from './model';
 
 /** Which arithmetic the readouts use. */
 export type Precision = 'f64' | 'f32';
@@ -27,11 +36,6 @@ export interface F32Rows {
   fatal: string | null;
   /** True when rounding the inputs to float32 changed any of them. */
   inputsRounded: boolean;
-}
-
-function relDisc(x: number, ref: number): number {
-  if (ref === 0) return x === 0 ? 0 : Infinity;
-  return Math.abs(x - ref) / Math.abs(ref);
 }
 
 /** Both methods in float32 for the checked inputs, against the reference of the float32 inputs. */
@@ -48,15 +52,7 @@ export function computeRowsF32(input: InputCheck): F32Rows {
     const res = intersectRaySphereF32(input.o, input.d, input.c, input.r, method);
     if (!res.ok) return { rows: [], reference: null, fatal: res.message, inputsRounded };
     if (!ref.ok) return { rows: [], reference: null, fatal: ref.message, inputsRounded };
-    rows.push({
-      method,
-      res,
-      errT0: relativeError(res.t0, ref.t0),
-      errT1: relativeError(res.t1, ref.t1),
-      errHit: relativeError(res.tHit, ref.tHit),
-      errDisc: relDisc(res.discriminant, ref.discriminant),
-      caseRight: res.case === ref.case,
-    });
+    rows.push(methodRow(method, res, ref));
   }
   return { rows, reference: ref.ok ? ref : null, fatal: null, inputsRounded };
 }

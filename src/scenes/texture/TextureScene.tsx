@@ -7,7 +7,7 @@
  * position t is model.frameAt(grid, conventions, path, t). This file holds the scene's state and
  * its layout; the exam parts are in ./exam, the figures in ./view.
  */
-import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
+import { useCallback, useEffect, useMemo, useRef, useState, type ReactNode } from 'react';
 import type { SceneProps } from '../../kit/scene';
 import { EXAM_GRID_TEXT, gridRange } from '../../core/texture';
 import {
@@ -17,6 +17,7 @@ import {
   ExploreFurther,
   Notice,
   Panel,
+  Revealed,
   SceneLayout,
 } from '../../ui';
 import {
@@ -30,10 +31,11 @@ import {
 } from './model';
 import { GRID_TEXT_MAX, type TextureSchema } from './params';
 import { DURATION, RENDER_HZ, STEP, animContext, formatT } from './view/anim';
-import { AnimGrid, AnimPathPlot, AnimSide } from './view/animated';
+import { AnimGrid, AnimPathPlot, AnimSide, DescribedMain } from './view/animated';
 import { Controls } from './view/Controls';
 import { ReconstructionPanel, SeamPanel } from './view/Explore';
-import { CellEditor, ExamGridTable, Legend, PathEnd, PathKindSelect } from './view/FigureParts';
+import { CellEditor, ExamGives, GridValues, Legend, PathEnd, PathKindSelect } from './view/FigureParts';
+import { PageFigure, StageFigure, StageRest, type FigurePieces } from './view/Layout';
 import type { Grab } from './view/GridView';
 import { Q3a } from './exam/Q3a';
 import { Q3b } from './exam/Q3b';
@@ -66,10 +68,6 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
     () => pathOf({ u: au, v: av, u2: bu, v2: bv, path: kind }),
     [au, av, bu, bv, kind],
   );
-  const committedPath = useMemo<QueryPath>(
-    () => pathOf({ u: params.u, v: params.v, u2: params.u2, v2: params.v2, path: kind }),
-    [params.u, params.v, params.u2, params.v2, kind],
-  );
 
   const src = useMemo(
     () => resolveGrid({ grid: params.grid, preset: params.preset, size: params.size, seed: params.seed }),
@@ -86,14 +84,17 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
   // The timeline lives in <AnimationDriver>, which publishes its position to this store; only the
   // components that draw the moving query subscribe to it (see ./view/anim), so a frame does not
   // re-render the scene.
-  const [store] = useState(() => createAnimationStore(Number(params.t)));
+  // (ask first: held at the start until revealed)
+  const [store] = useState(() => createAnimationStore(mode.ask ? 0 : Number(params.t)));
+  const dragging = drag !== null;
   const ctx = useMemo(
-    () => animContext(store, grid, opts, src, path, committedPath),
-    [store, grid, opts, src, path, committedPath],
+    () => animContext(store, grid, opts, src, path, dragging),
+    [store, grid, opts, src, path, dragging],
   );
+  const point = useMemo(() => ({ x: params.x, y: params.y, z: params.z }), [params.x, params.y, params.z]);
   const sphere = useMemo(
-    () => sphereModel(grid, { x: params.x, y: params.y, z: params.z, normalize: params.normalize }, opts),
-    [grid, params.x, params.y, params.z, params.normalize, opts],
+    () => sphereModel(grid, { ...point, normalize: params.normalize }, opts),
+    [grid, point, params.normalize, opts],
   );
 
   const onMove = useCallback(
@@ -146,6 +147,86 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
     <Controls params={params} setParams={setParams} grid={grid} isExam={src.isExam} onTexture={onTexture} />
   );
 
+  const ask = mode.ask;
+  const pieces: FigurePieces = {
+    gives: <ExamGives />,
+    grid: (
+      <>
+        <AnimGrid
+          ctx={ctx}
+          {...shown}
+          onMove={onMove}
+          editing={editing}
+          selected={selected}
+          onSelect={(i, j) => setSelected({ i, j })}
+          onEditEnter={() => setFocusCell((k) => k + 1)}
+          present={mode.present}
+          ask={ask}
+        />
+        <Legend range={range} />
+      </>
+    ),
+    // ask first: the query stays at the start of its path until the results are revealed
+    transport: (
+      <Revealed ask={ask} what="the query’s path (the animation)">
+        <AnimationDriver
+          store={store}
+          t={Number(params.t)}
+          play={params.play === true}
+          setParams={setParams}
+          visibleRef={figRef}
+          max={1}
+          duration={DURATION}
+          stepSize={STEP}
+          renderHz={RENDER_HZ}
+          label="Query path"
+          format={formatT}
+        >
+          <PathKindSelect params={params} setParams={setParams} />
+        </AnimationDriver>
+      </Revealed>
+    ),
+    pathEnd: <PathEnd params={params} setParams={setParams} />,
+    plot: (
+      <Revealed ask={ask} what="the value along the path">
+        <AnimPathPlot ctx={ctx} present={mode.present} />
+      </Revealed>
+    ),
+    side: (
+      <Revealed ask={ask} what="the looked-up values and the weights">
+        <AnimSide ctx={ctx} />
+      </Revealed>
+    ),
+    editor: (
+      <>
+        <CellEditor
+          ctx={ctx}
+          editing={editing}
+          onEditing={onEditing}
+          selected={selected}
+          onSelect={(i, j) => setSelected({ i, j })}
+          onCell={setCell}
+          error={editError}
+        />
+        <GridValues grid={grid} opts={opts} />
+      </>
+    ),
+  };
+  const described = (children: ReactNode) => (
+    <DescribedMain
+      ctx={ctx}
+      preset={params.preset}
+      sphere={sphere}
+      point={point}
+      normalize={params.normalize}
+      editing={editing ? selected : null}
+      ask={ask}
+    >
+      {children}
+    </DescribedMain>
+  );
+  // classroom mode: the grid, its readouts and the transport on the stage, the rest below
+  const stage = mode.present ? described(<StageFigure p={pieces} figRef={figRef} />) : undefined;
   const figure = (
     <Panel className="tx-figure">
       {src.error ? (
@@ -153,65 +234,15 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
           <strong>grid</strong>: {src.error} Using the exam’s 5 × 5 grid instead.
         </Notice>
       ) : null}
-      <div className="tx-figure-cols" ref={figRef}>
-        <div className="exam-asks tx-gives">
-          <span className="exam-asks-label">The exam gives</span>
-          <p>
-            A 5 × 5 texture with values at the nodes (u, v) = (i/4, j/4), v upward. (a), (b): look it up at
-            (u, v) = (0.4, 0.24); (c): at a point on a sphere.
-          </p>
-          <ExamGridTable />
-        </div>
-        <div className="tx-figure-main">
-          <AnimGrid
-            ctx={ctx}
-            {...shown}
-            onMove={onMove}
-            editing={editing}
-            selected={selected}
-            onSelect={(i, j) => setSelected({ i, j })}
-            onEditEnter={() => setFocusCell((k) => k + 1)}
-            present={mode.present}
-          />
-          <Legend range={range} />
-          <AnimationDriver
-            store={store}
-            t={Number(params.t)}
-            play={params.play === true}
-            setParams={setParams}
-            visibleRef={figRef}
-            max={1}
-            duration={DURATION}
-            stepSize={STEP}
-            renderHz={RENDER_HZ}
-            label="Query path"
-            format={formatT}
-          >
-            <PathKindSelect params={params} setParams={setParams} />
-          </AnimationDriver>
-          <PathEnd params={params} setParams={setParams} />
-          <AnimPathPlot ctx={ctx} present={mode.present} />
-        </div>
-        <div className="tx-figure-side">
-          <AnimSide ctx={ctx} />
-          <CellEditor
-            grid={grid}
-            editing={editing}
-            onEditing={onEditing}
-            selected={selected}
-            onCell={setCell}
-            error={editError}
-          />
-        </div>
-      </div>
+      {mode.present ? <StageRest p={pieces} /> : described(<PageFigure p={pieces} figRef={figRef} />)}
     </Panel>
   );
 
   const main = (
     <>
       <ExamQuestion n={3} intro={figure}>
-        <Q3a ctx={ctx} toExam={toExam} />
-        <Q3b ctx={ctx} toExam={toExam} />
+        <Q3a ctx={ctx} toExam={toExam} ask={ask} />
+        <Q3b ctx={ctx} toExam={toExam} ask={ask} />
         <Q3c
           params={params}
           setParams={setParams}
@@ -219,6 +250,7 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
           src={src}
           {...shown}
           present={mode.present}
+          ask={ask}
         />
       </ExamQuestion>
       <ExploreFurther
@@ -238,5 +270,5 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
     </>
   );
 
-  return <SceneLayout controls={controls} main={main} />;
+  return <SceneLayout controls={controls} main={main} stage={stage} />;
 }

@@ -1,12 +1,19 @@
 import { describe, expect, it } from 'vitest';
 import { defaultValues } from '../../../src/kit/params';
-import { schema, PRESETS, type AreaLightParams } from '../../../src/scenes/area-light/params';
+import {
+  schema,
+  EXAM_PRESET,
+  PRESETS,
+  presetActive,
+  type AreaLightParams,
+} from '../../../src/scenes/area-light/params';
 import {
   buildModel,
   convergence,
   drawSamples,
   estimateAll,
   estimateOne,
+  givenSamples,
   patchModel,
   targetValue,
 } from '../../../src/scenes/area-light/model';
@@ -16,14 +23,46 @@ const base = (): AreaLightParams => defaultValues(schema);
 const withP = (patch: Partial<AreaLightParams>): AreaLightParams => ({ ...base(), ...patch });
 
 describe('area-light model', () => {
-  it('defaults: a positive reference, Ω equal to its closed form, no messages', () => {
-    const m = buildModel(base());
+  it('the exam’s configuration: a positive reference, Ω equal to its closed form, no messages', () => {
+    const m = buildModel(withP(EXAM_PRESET.params));
     expect(m.reference).toBeGreaterThan(0);
     expect(m.messages).toEqual([]);
     expect(m.solidAngleClosed).not.toBeNull();
     expect(Math.abs(m.solidAngle - m.solidAngleClosed!)).toBeLessThan(1e-14);
     // 1×1 light at height 2, centred: Ω = 4 atan(1/(2·2·√(1+1+16))).
     expect(m.solidAngle).toBeCloseTo(4 * Math.atan(1 / (4 * Math.sqrt(18))), 14);
+  });
+
+  it('defaults: the light is tilted and the patch too, so cos θ ≠ cos θₗ at every given sample and dA⊥ < dA', () => {
+    const v = base();
+    const m = buildModel(v);
+    expect(m.messages).toEqual([]);
+    expect(m.reference).toBeGreaterThan(0);
+    // not parallel to the floor: no aligned closed form
+    expect(m.solidAngleClosed).toBeNull();
+    for (const g of givenSamples(m, v.seed, 4).samples) {
+      expect(g.V).toBe(1);
+      expect(Math.abs(g.cosTheta - g.cosThetaL)).toBeGreaterThan(0.05);
+    }
+    const pt = patchModel(m, v.pu, v.pv, v.psize, v.ptilt);
+    expect(v.ptilt).not.toBe(0);
+    expect(pt.cosThetaL).toBeLessThan(0.9); // dA⊥ = dA cos θₗ visibly smaller than dA
+    // the defaults are the opening preset, and the exam's configuration is another
+    expect(
+      presetActive(
+        PRESETS.find((p) => p.id === 'opening')!,
+        v,
+      ),
+    ).toBe(true);
+    expect(presetActive(EXAM_PRESET, v)).toBe(false);
+    expect(presetActive(EXAM_PRESET, withP(EXAM_PRESET.params))).toBe(true);
+  });
+
+  it('the exam’s configuration: cos θ = cos θₗ at every given sample (the light is parallel to the floor)', () => {
+    const v = withP(EXAM_PRESET.params);
+    const m = buildModel(v);
+    for (const g of givenSamples(m, v.seed, 4).samples)
+      expect(Math.abs(g.cosTheta - g.cosThetaL)).toBeLessThan(1e-12);
   });
 
   for (const preset of PRESETS) {
@@ -60,7 +99,8 @@ describe('area-light model', () => {
   });
 
   it('shading point on the light: an error message, and the point moves off it', () => {
-    const m = buildModel(withP({ p: [0.1, 0.1, 2] }));
+    // a point on the exam's light (1 × 1, centred at 0,0,2, parallel to the floor)
+    const m = buildModel(withP({ ...EXAM_PRESET.params, p: [0.1, 0.1, 2] }));
     expect(m.messages.some((x) => x.kind === 'error' && /on the light/.test(x.text))).toBe(true);
     expect(m.p).toEqual([0, 0, 0]);
     expect(Number.isFinite(m.reference)).toBe(true);

@@ -1,14 +1,26 @@
 /**
- * Q6(a): dω = dA cos θ_l / r² by similar triangles, each step with this patch's numbers, the
+ * Q6(a): dω = dA cos θₗ / r² by similar triangles, each step with this patch's numbers, the
  * cross-section figure with the patch's controls, and the live check of the formula against the
  * exact solid angle of the patch as it shrinks.
  */
 import { memo, useMemo } from 'react';
-import { Derivation, ExamPart, LiveAnswer, MathTex, Plot, Readout, type PlotTrace } from '../../../ui';
+import {
+  DescribedFigure,
+  Derivation,
+  ExamPart,
+  LiveAnswer,
+  MathTex,
+  Plot,
+  Readout,
+  Revealed,
+  ShowAsTable,
+  summarizeSeries,
+  type PlotTrace,
+} from '../../../ui';
 import type { PatchModel } from '../patch';
 import type { AreaLightParams } from '../params';
 import { fmt } from '../view/format';
-import { PatchFigure } from '../view/PatchFigure';
+import { PatchFigure, patchFigureText } from '../view/PatchFigure';
 import { SliderList, type SliderSpec } from '../view/SliderList';
 
 type PatchValues = Pick<AreaLightParams, 'pu' | 'pv' | 'psize' | 'ptilt'>;
@@ -33,7 +45,7 @@ const PATCH_SLIDERS: readonly SliderSpec<PatchValues>[] = [
   },
   { label: 'Patch side', min: 0.001, max: 2, log: true, get: (v) => v.psize, patch: (psize) => ({ psize }) },
   {
-    label: 'Patch tilt θ_l (relative to the light)',
+    label: 'Patch tilt (relative to the light)',
     min: -89,
     max: 89,
     step: 1,
@@ -50,6 +62,7 @@ export const Q6a = memo(function Q6a({
   psize,
   ptilt,
   set,
+  ask,
 }: {
   patch: PatchModel;
   pu: number;
@@ -57,6 +70,8 @@ export const Q6a = memo(function Q6a({
   psize: number;
   ptilt: number;
   set: (patch: Partial<AreaLightParams>) => void;
+  /** Asked to predict first: the check is hidden until revealed. */
+  ask: boolean;
 }) {
   const patchTraces: PlotTrace[] = useMemo(
     () => [
@@ -65,7 +80,7 @@ export const Q6a = memo(function Q6a({
         y: Array.from(patch.series.relError),
         type: 'scatter',
         mode: 'lines',
-        name: '|dA cos θ_l / r² − Ω| / Ω',
+        name: '|dA cos θ<sub>l</sub> / r² − Ω| / Ω',
         line: { color: '#e4572e' },
       },
       {
@@ -79,14 +94,26 @@ export const Q6a = memo(function Q6a({
     ],
     [patch],
   );
+  const { relRows, relSummary } = useMemo(() => {
+    const xs = Array.from(patch.series.side);
+    const ys = Array.from(patch.series.relError);
+    return {
+      relRows: xs.map((x, i) => [x, ys[i]]),
+      relSummary: summarizeSeries(xs, ys, {
+        xLabel: 'side',
+        yLabel: 'the relative difference',
+        logLog: true,
+      }),
+    };
+  }, [patch]);
   return (
     <ExamPart
       id="6a"
       title="Solid angle of a small area element"
       asks={
         <>
-          A small area element dA of a light, at distance r from x, arbitrarily oriented (normal n_l at angle
-          θ_l to the direction back to x), subtends a solid angle dω. Show that{' '}
+          A small area element dA of a light, at distance r from x, arbitrarily oriented (normal n<sub>l</sub>{' '}
+          at angle θ<sub>l</sub> to the direction back to x), subtends a solid angle dω. Show that{' '}
           <MathTex tex={String.raw`d\omega = \dfrac{dA\cos\theta_l}{r^2}`} />.
         </>
       }
@@ -99,24 +126,24 @@ export const Q6a = memo(function Q6a({
             <MathTex tex={String.raw`dA^{\perp} = dl\cdot dl = dA\cos\theta_l`} />
             <span className="al-live" data-testid="step-6a-perp">
               {' '}
-              (here dA = {fmt(patch.area)}, cos θ_l = {fmt(patch.cosThetaL)}, dA⊥ ={' '}
+              (here dA = {fmt(patch.area)}, cos θ<sub>l</sub> = {fmt(patch.cosThetaL)}, dA⊥ ={' '}
               {fmt(patch.area * patch.cosThetaL)}, dl = {fmt(Math.sqrt(patch.area * patch.cosThetaL))})
             </span>
             .
           </li>
           <li>
-            The solid-angle element is the patch dA⊥ casts on the unit sphere, with sides dω_l:{' '}
+            The solid-angle element is the patch dA⊥ casts on the unit sphere, with sides dω<sub>l</sub>:{' '}
             <MathTex tex={String.raw`d\omega = d\omega_l\cdot d\omega_l`} />.
           </li>
           <li>
-            By similar triangles (shaded in the figure: legs 1 and dω_l/2 on the unit circle, legs r and dl/2
-            at the patch):{' '}
+            By similar triangles (shaded in the figure: legs 1 and dω<sub>l</sub>/2 on the unit circle, legs r
+            and dl/2 at the patch):{' '}
             <MathTex
               tex={String.raw`\frac{d\omega_l/2}{1} = \frac{dl/2}{r}\;\Rightarrow\; d\omega_l = \frac{dl}{r}`}
             />
             <span className="al-live" data-testid="step-6a-similar">
               {' '}
-              (r = {fmt(patch.r)}: dω_l = {fmt(Math.sqrt(patch.area * patch.cosThetaL) / patch.r)})
+              (r = {fmt(patch.r)}: dω<sub>l</sub> = {fmt(Math.sqrt(patch.area * patch.cosThetaL) / patch.r)})
             </span>
             .
           </li>
@@ -135,38 +162,80 @@ export const Q6a = memo(function Q6a({
       </Derivation>
       <div className="al-6a">
         <div className="al-6a-figure">
-          <PatchFigure patch={patch} />
+          <DescribedFigure
+            label="Cross-section of Q6(a): the patch, its perpendicular projection and the similar triangles"
+            description={patchFigureText(patch)}
+            quiet
+            testId="al-patch-described"
+          >
+            <PatchFigure patch={patch} />
+          </DescribedFigure>
           <div className="al-patch-controls">
             <SliderList specs={PATCH_SLIDERS} values={{ pu, pv, psize, ptilt }} set={set} />
           </div>
         </div>
-        <LiveAnswer
-          title="Check, computed live: the formula against the exact solid angle of the patch"
-          testId="answer-6a"
-        >
-          <p className="al-note">
-            The formula is exact only in the limit of a small patch. The exact solid angle of the orange patch
-            (Van Oosterom–Strackee) and dA cos θ_l / r² agree better and better as the patch shrinks — the
-            relative difference falls like the square of its size (slope 2 below).
-          </p>
-          <div className="al-readouts">
-            <Readout id="patch-exact" label="exact Ω of the patch" value={patch.exact} digits={8} unit="sr" />
-            <Readout id="patch-approx" label="dA cos θ_l / r²" value={patch.approx} digits={8} unit="sr" />
-            <Readout id="patch-rel-error" label="relative difference" value={patch.relError} digits={3} />
-            <Readout id="patch-r" label="r" value={patch.r} digits={5} />
-            <Readout id="patch-cos" label="cos θ_l" value={patch.cosThetaL} digits={5} />
-          </div>
-          <Plot
-            ariaLabel="Relative difference between dA cos θ_l / r² and the exact solid angle of the patch, against the patch side, log-log: a line of slope 2."
-            data={patchTraces}
-            height={240}
-            layout={{
-              xaxis: { type: 'log', title: { text: 'patch side' } },
-              yaxis: { type: 'log', title: { text: 'relative difference' } },
-              showlegend: false,
-            }}
-          />
-        </LiveAnswer>
+        <Revealed ask={ask} what="the check of the formula against the exact solid angle">
+          <LiveAnswer
+            title="Check, computed live: the formula against the exact solid angle of the patch"
+            testId="answer-6a"
+          >
+            <p className="al-note">
+              The formula is exact only in the limit of a small patch. The exact solid angle of the orange
+              patch (Van Oosterom–Strackee) and dA cos θ<sub>l</sub> / r² agree better and better as the patch
+              shrinks — the relative difference falls like the square of its size (slope 2 below).
+            </p>
+            <div className="al-readouts">
+              <Readout
+                id="patch-exact"
+                label="exact Ω of the patch"
+                value={patch.exact}
+                digits={8}
+                unit="sr"
+              />
+              <Readout
+                id="patch-approx"
+                label={
+                  <>
+                    dA cos θ<sub>l</sub> / r²
+                  </>
+                }
+                value={patch.approx}
+                digits={8}
+                unit="sr"
+              />
+              <Readout id="patch-rel-error" label="relative difference" value={patch.relError} digits={3} />
+              <Readout id="patch-r" label="r" value={patch.r} digits={5} />
+              <Readout
+                id="patch-cos"
+                label={
+                  <>
+                    cos θ<sub>l</sub>
+                  </>
+                }
+                value={patch.cosThetaL}
+                digits={5}
+              />
+            </div>
+            <Plot
+              label="Relative difference between dA cos θₗ / r² and the exact solid angle of the patch, against the patch side (log–log)"
+              description={`${relSummary} This patch: side ${fmt(patch.side)}, relative difference ${fmt(Math.abs(patch.relError), 3)}.`}
+              testId="al-patch-plot"
+              data={patchTraces}
+              height={240}
+              layout={{
+                xaxis: { type: 'log', title: { text: 'patch side' } },
+                yaxis: { type: 'log', title: { text: 'relative difference' } },
+                showlegend: false,
+              }}
+            />
+            <ShowAsTable
+              caption="Relative difference |dA cos θₗ / r² − Ω| / Ω against the patch side"
+              columns={['patch side', 'relative difference']}
+              rows={relRows}
+              testId="al-patch-table"
+            />
+          </LiveAnswer>
+        </Revealed>
       </div>
     </ExamPart>
   );

@@ -3,7 +3,7 @@
  * visibility highlighted, with the reference values of the current setup.
  */
 import { memo, useMemo } from 'react';
-import { Derivation, ExamPart, KeyNote, LiveAnswer, MathTex, Readout } from '../../../ui';
+import { Derivation, ExamPart, KeyNote, LiveAnswer, MathTex, Readout, Revealed } from '../../../ui';
 import type { AreaLightModel } from '../model';
 import type { PatchModel } from '../patch';
 import { fmt } from '../view/format';
@@ -19,10 +19,13 @@ export const Q6b = memo(function Q6b({
   patch,
   model,
   dark,
+  ask,
 }: {
   patch: PatchModel;
   model: AreaLightModel;
   dark: boolean;
+  /** Asked to predict first: the values of Lₒ are hidden until revealed. */
+  ask: boolean;
 }) {
   const hl = useMemo(() => highlight(dark), [dark]);
   return (
@@ -46,8 +49,8 @@ export const Q6b = memo(function Q6b({
             />
           </li>
           <li>
-            Change of variables from ω_i to the point y on the light: dω_i = J_T dA, which introduces a
-            Jacobian:
+            Change of variables from ω<sub>i</sub> to the point y on the light: dω<sub>i</sub> = J<sub>T</sub>{' '}
+            dA, which introduces a Jacobian:
             <MathTex
               display
               tex={String.raw`L_o(x,\omega_o) = \int_{A} f\,L_i\cos\theta\,\colorbox{${hl.jBg}}{$\color{${hl.jFg}}J_T$}\,dA`}
@@ -55,7 +58,7 @@ export const Q6b = memo(function Q6b({
           </li>
           <li>
             Over points of the light, nothing says whether the segment from x to y is blocked (over
-            directions, L_i already included it), so visibility is added explicitly:
+            directions, L<sub>i</sub> already included it), so visibility is added explicitly:
             <MathTex
               display
               tex={String.raw`L_o(x,\omega_o) = \int_{A} f\,L_i\,\colorbox{${hl.vBg}}{$\color{${hl.vFg}}V(x,y)$}\cos\theta\,J_T\,dA`}
@@ -68,61 +71,68 @@ export const Q6b = memo(function Q6b({
               tex={String.raw`L_o(x,\omega_o) = \int_{A} f\,L_i\,\colorbox{${hl.vBg}}{$\color{${hl.vFg}}V(x,y)$}\,\cos\theta\,\colorbox{${hl.jBg}}{$\color{${hl.jFg}}\dfrac{\cos\theta_l}{r^2}$}\,dA_y`}
             />
             <span className="al-live" data-testid="step-6b-jacobian">
-              For the patch of (a): J_T = cos θ_l / r² = {fmt(patch.cosThetaL / (patch.r * patch.r))} per unit
-              area.
+              For the patch of (a): J<sub>T</sub> = cos θ<sub>l</sub> / r² ={' '}
+              {fmt(patch.cosThetaL / (patch.r * patch.r))} per unit area.
             </span>
           </li>
         </ol>
         <p>
-          The <span className="al-hl-j">Jacobian cos θ_l / r²</span> turns area into solid angle; the{' '}
-          <span className="al-hl-v">visibility V</span> is 1 where y is seen from x and 0 where it is blocked.
+          The{' '}
+          <span className="al-hl-j">
+            Jacobian cos θ<sub>l</sub> / r²
+          </span>{' '}
+          turns area into solid angle; the <span className="al-hl-v">visibility V</span> is 1 where y is seen
+          from x and 0 where it is blocked.
         </p>
         <KeyNote testId="keynote-6b">
-          the key writes L_i(x, ω_i) and V(x, ω_i) inside the area integral; over A they are functions of the
-          point y on the light (ω_i is the direction from x to y), as written here.
+          the key writes L<sub>i</sub>(x, ω<sub>i</sub>) and V(x, ω<sub>i</sub>) inside the area integral;
+          over A they are functions of the point y on the light (ω<sub>i</sub> is the direction from x to y),
+          as written here.
         </KeyNote>
       </Derivation>
-      <LiveAnswer testId="answer-6b">
-        <div className="al-readouts">
-          <Readout
-            id="reference"
-            label="reference (Lambert, no occluder)"
-            value={model.reference}
-            digits={7}
-          />
-          <Readout
-            id="reference-occluded"
-            label="reference with occluder (V < 1)"
-            value={model.occluder ? model.referenceOccluded : null}
-            digits={7}
-          />
-          <Readout
-            id="projected-solid-angle"
-            label="∫ cos θ dω (clipped to the horizon)"
-            value={model.projectedSolidAngle}
-            digits={7}
-            unit="sr"
-          />
-          <Readout
-            id="solid-angle"
-            label="solid angle Ω of the light"
-            value={model.solidAngle}
-            digits={7}
-            unit="sr"
-          />
-          <Readout
-            id="solid-angle-closed"
-            label="Ω, closed form (light parallel to floor)"
-            value={model.solidAngleClosed}
-            digits={7}
-            unit="sr"
-          />
-        </div>
-        <p className="al-note">
-          For a Lambertian floor f = ρ/π, and the integral has a closed form: L_o = (ρ/π) L ∫ cos θ dω by
-          Lambert’s formula.
-        </p>
-      </LiveAnswer>
+      <Revealed ask={ask} what="Lₒ and the light’s solid angle">
+        <LiveAnswer testId="answer-6b">
+          <div className="al-readouts">
+            <Readout
+              id="reference"
+              label="reference (Lambert, no occluder)"
+              value={model.reference}
+              digits={7}
+            />
+            <Readout
+              id="reference-occluded"
+              label="reference with occluder (V < 1)"
+              value={model.occluder ? model.referenceOccluded : null}
+              digits={7}
+            />
+            <Readout
+              id="projected-solid-angle"
+              label="∫ cos θ dω (clipped to the horizon)"
+              value={model.projectedSolidAngle}
+              digits={7}
+              unit="sr"
+            />
+            <Readout
+              id="solid-angle"
+              label="solid angle Ω of the light"
+              value={model.solidAngle}
+              digits={7}
+              unit="sr"
+            />
+            <Readout
+              id="solid-angle-closed"
+              label="Ω, closed form (light parallel to floor)"
+              value={model.solidAngleClosed}
+              digits={7}
+              unit="sr"
+            />
+          </div>
+          <p className="al-note">
+            For a Lambertian floor f = ρ/π, and the integral has a closed form: L<sub>o</sub> = (ρ/π) L ∫ cos
+            θ dω by Lambert’s formula.
+          </p>
+        </LiveAnswer>
+      </Revealed>
     </ExamPart>
   );
 });

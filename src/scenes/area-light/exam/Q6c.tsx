@@ -4,7 +4,7 @@
  */
 import { memo, useMemo, type ReactNode } from 'react';
 import type { LightStrategy } from '../../../core/lights';
-import { Derivation, ExamPart, LiveAnswer, MathTex, Readout } from '../../../ui';
+import { Derivation, ExamPart, LiveAnswer, MathTex, Readout, Revealed } from '../../../ui';
 import { STRATEGY_LABEL } from '../strategies';
 import { estimateOne, givenSamples, type AreaLightModel, type StrategyEstimate } from '../model';
 import { fmt } from '../view/format';
@@ -13,11 +13,14 @@ export const Q6c = memo(function Q6c({
   model,
   seed,
   answer,
+  ask,
 }: {
   model: AreaLightModel;
   seed: number;
   /** The live answer, rendered when the part's body mounts. */
   answer: ReactNode;
+  /** Asked to predict first: the terms, their mean and the answer are hidden until revealed. */
+  ask: boolean;
 }) {
   const given = useMemo(() => givenSamples(model, seed, 4), [model, seed]);
   const fArea = given.f;
@@ -26,7 +29,10 @@ export const Q6c = memo(function Q6c({
       id="6c"
       title="Monte Carlo estimator with uniform area sampling"
       asks={
-        <>Sampling points uniformly on the light’s area, give the pdf and the Monte Carlo estimator of L_o.</>
+        <>
+          Sampling points uniformly on the light’s area, give the pdf and the Monte Carlo estimator of L
+          <sub>o</sub>.
+        </>
       }
     >
       <Derivation testId="derivation-6c">
@@ -35,12 +41,12 @@ export const Q6c = memo(function Q6c({
             The pdf is uniform over the light’s area: <MathTex tex={String.raw`p_A = \frac{1}{|A|}`} />
             <span className="al-live" data-testid="step-6c-pdf">
               {' '}
-              (|A| = {fmt(given.area)}, p_A = {fmt(1 / given.area)})
+              (|A| = {fmt(given.area)}, p<sub>A</sub> = {fmt(1 / given.area)})
             </span>
             .
           </li>
           <li>
-            The MC estimator divides each term of the area integral by p_A:
+            The MC estimator divides each term of the area integral by p<sub>A</sub>:
             <MathTex
               display
               tex={String.raw`\langle L_o\rangle = \frac{1}{N}\sum_{i=1}^{N}\frac{f\,L_i\,V\cos\theta_i\,\cos\theta_{l,i}/r_i^2}{p_A} = \frac{|A|}{N}\sum_{i=1}^{N} f\,L_i\,V_i\cos\theta_i\,\frac{\cos\theta_{l,i}}{r_i^2}`}
@@ -60,12 +66,24 @@ export const Q6c = memo(function Q6c({
                   <tr>
                     <th scope="col">i</th>
                     <th scope="col">(ξ₁, ξ₂)</th>
-                    <th scope="col">y_i on the light</th>
-                    <th scope="col">r_i</th>
-                    <th scope="col">cos θ_i</th>
-                    <th scope="col">cos θ_l,i</th>
-                    <th scope="col">V_i</th>
-                    <th scope="col">|A| f L V cos θ cos θ_l / r²</th>
+                    <th scope="col">
+                      y<sub>i</sub> on the light
+                    </th>
+                    <th scope="col">
+                      r<sub>i</sub>
+                    </th>
+                    <th scope="col">
+                      cos θ<sub>i</sub>
+                    </th>
+                    <th scope="col">
+                      cos θ<sub>l,i</sub>
+                    </th>
+                    <th scope="col">
+                      V<sub>i</sub>
+                    </th>
+                    <th scope="col">
+                      |A| f L V cos θ cos θ<sub>l</sub> / r²
+                    </th>
                   </tr>
                 </thead>
                 <tbody>
@@ -82,28 +100,40 @@ export const Q6c = memo(function Q6c({
                       <td>{fmt(g.cosTheta)}</td>
                       <td>{fmt(g.cosThetaL)}</td>
                       <td>{g.V}</td>
-                      <td data-testid={`given-term-${i + 1}`} data-value={String(g.term)}>
-                        {fmt(g.term, 5)}
-                      </td>
+                      {ask ? (
+                        <td>?</td>
+                      ) : (
+                        <td data-testid={`given-term-${i + 1}`} data-value={String(g.term)}>
+                          {fmt(g.term, 5)}
+                        </td>
+                      )}
                     </tr>
                   ))}
                 </tbody>
               </table>
             </div>
-            <MathTex
-              display
-              tex={String.raw`\langle L_o\rangle_{N=4} = \tfrac{1}{4}\big(${given.samples.map((g) => fmt(g.term, 5)).join(' + ')}\big) = ${fmt(given.estimate, 5)}`}
-            />
-            <Readout
-              id="given-estimate"
-              label="⟨L_o⟩ from these 4 samples"
-              value={given.estimate}
-              digits={7}
-            />
+            <Revealed ask={ask} what="the four terms and their mean">
+              <MathTex
+                display
+                tex={String.raw`\langle L_o\rangle_{N=4} = \tfrac{1}{4}\big(${given.samples.map((g) => fmt(g.term, 5)).join(' + ')}\big) = ${fmt(given.estimate, 5)}`}
+              />
+              <Readout
+                id="given-estimate"
+                label={
+                  <>
+                    ⟨L<sub>o</sub>⟩ from these 4 samples
+                  </>
+                }
+                value={given.estimate}
+                digits={7}
+              />
+            </Revealed>
           </li>
         </ol>
       </Derivation>
-      {answer}
+      <Revealed ask={ask} what="the estimate with N samples and its verdict">
+        {answer}
+      </Revealed>
     </ExamPart>
   );
 });

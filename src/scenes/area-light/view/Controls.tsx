@@ -6,7 +6,7 @@ import { memo } from 'react';
 import type { Vec3 } from '../../../core/lights';
 import { NumberField, Panel, Select, Slider, Toggle } from '../../../ui';
 import { SliderList, type SliderSpec } from './SliderList';
-import { PRESETS, type AreaLightParams } from '../params';
+import { PRESETS, presetActive, type AreaLightParams } from '../params';
 import { STRATEGIES, STRATEGY_LABEL } from '../strategies';
 
 const AXES = ['x', 'y', 'z'] as const;
@@ -97,6 +97,7 @@ export const Controls = memo(function Controls({
               key={pr.id}
               type="button"
               title={pr.what}
+              aria-pressed={presetActive(pr, params)}
               onClick={() => set({ ...pr.params })}
               data-testid={`preset-${pr.id}`}
             >

@@ -5,26 +5,59 @@
 import { memo, useMemo, type RefObject } from 'react';
 import type { LightStrategy } from '../../../core/lights';
 import type { Failure } from '../../../core/failure';
-import { Notice, Panel, Plot, Readout, type PlotTrace } from '../../../ui';
+import {
+  Notice,
+  Panel,
+  Plot,
+  Readout,
+  SERIES,
+  ShowAsTable,
+  summarizeSeries,
+  type PlotTrace,
+} from '../../../ui';
 import type { StrategyEstimate, TimingPoint, convergence } from '../model';
 import { STRATEGIES, STRATEGY_LABEL, STRATEGY_SHORT } from '../strategies';
 import { fmt } from './format';
 
+/** The shared series colours (contrast and colour-vision checked in both themes). */
 const COLORS: Record<LightStrategy, string> = {
-  area: '#b34700',
-  'solid-angle': '#1f5fa8',
-  cosine: '#1d7a3a',
+  area: SERIES[1],
+  'solid-angle': SERIES[0],
+  cosine: SERIES[2],
 };
+/** A marker shape per strategy, so that colour is never the only cue. */
+const SYMBOLS: Record<LightStrategy, string> = {
+  area: 'circle',
+  'solid-angle': 'square',
+  cosine: 'diamond',
+};
+
+/** One sentence per strategy from summarizeSeries, on log–log axes. */
+function perStrategy(
+  series: readonly { strategy: LightStrategy; x: ArrayLike<number>; y: ArrayLike<number> }[],
+  xLabel: string,
+  yLabel: string,
+): string {
+  return series
+    .map(
+      (c) => `${STRATEGY_LABEL[c.strategy]}: ${summarizeSeries(c.x, c.y, { xLabel, yLabel, logLog: true })}`,
+    )
+    .join(' ');
+}
 
 /** A log-log plot with axis titles x and y and its legend in a row above the plot. */
 function LogLogPlot({
-  ariaLabel,
+  label,
+  description,
+  testId,
   data,
   height,
   x,
   y,
 }: {
-  ariaLabel: string;
+  label: string;
+  description: string;
+  testId: string;
   data: PlotTrace[];
   height: number;
   x: string;
@@ -36,7 +69,16 @@ function LogLogPlot({
     legend: { orientation: 'h', x: 0, y: 1.02, yanchor: 'bottom' },
     margin: { l: 56, r: 16, t: 40, b: 44 },
   };
-  return <Plot ariaLabel={ariaLabel} data={data} height={height} layout={layout} />;
+  return (
+    <Plot
+      label={label}
+      description={description}
+      testId={testId}
+      data={data}
+      height={height}
+      layout={layout}
+    />
+  );
 }
 
 /** The three estimates at n samples each (null while they are computed), against the reference. */
@@ -70,7 +112,7 @@ export const StrategyTable = memo(function StrategyTable({
             <th scope="col">strategy</th>
             <th scope="col">estimate</th>
             <th scope="col">std. error σ</th>
-            <th scope="col">(est. − ref.)/σ</th>
+            <th scope="col">(est.&nbsp;−&nbsp;ref.)/σ</th>
           </tr>
         </thead>
         <tbody>
@@ -120,10 +162,11 @@ export const ConvergencePanel = memo(function ConvergencePanel({
         x: Array.from(c.n),
         y: Array.from(c.absError),
         type: 'scatter',
-        mode: 'lines',
+        mode: 'lines+markers',
         name: STRATEGY_SHORT[c.strategy],
         legendgroup: c.strategy,
         line: { color: COLORS[c.strategy], width: 2 },
+        marker: { color: COLORS[c.strategy], symbol: SYMBOLS[c.strategy], size: 6 },
       });
       out.push({
         x: Array.from(c.n),
@@ -138,20 +181,55 @@ export const ConvergencePanel = memo(function ConvergencePanel({
     }
     return out;
   }, [conv]);
+  const { description, rows, columns } = useMemo(() => {
+    const cs = conv ?? [];
+    if (!cs.length)
+      return {
+        description: 'No convergence data yet: it is computed when this panel comes into view.',
+        rows: [],
+        columns: ['N'],
+      };
+    const abs = perStrategy(
+      cs.map((c) => ({ strategy: c.strategy, x: c.n, y: c.absError })),
+      'N',
+      '|estimate − reference|',
+    );
+    const se = perStrategy(
+      cs.map((c) => ({ strategy: c.strategy, x: c.n, y: c.stderr })),
+      'N',
+      'the standard error',
+    );
+    return {
+      description: `${abs} ${se}`,
+      rows: Array.from(cs[0].n, (n, i) => [n, ...cs.flatMap((c) => [c.absError[i], c.stderr[i]])]),
+      columns: [
+        'N',
+        ...cs.flatMap((c) => [`|error|, ${STRATEGY_SHORT[c.strategy]}`, `σ, ${STRATEGY_SHORT[c.strategy]}`]),
+      ],
+    };
+  }, [conv]);
   return (
     <Panel title="Convergence">
       <div ref={seenRef} />
       <LogLogPlot
-        ariaLabel="Absolute error and standard error of the three estimators against the number of samples, log-log."
+        label="Absolute error and standard error of the three estimators against the number of samples N (log–log)"
+        description={description}
+        testId="al-convergence-plot"
         data={traces}
         height={present ? 380 : 300}
         x="N (samples)"
         y="error"
       />
       <p className="al-note">
-        Solid: |estimate − reference|. Dotted: the standard error s/√N the estimator reports. Both fall like
-        N^−½; the strategies differ by a constant.
+        Solid: |estimate − reference|. Dotted: the standard error s/√N the estimator reports. Both fall like N
+        <sup>−½</sup>; the strategies differ by a constant.
       </p>
+      <ShowAsTable
+        caption="Absolute error and standard error against N, per strategy"
+        columns={columns}
+        rows={rows}
+        testId="al-convergence-table"
+      />
     </Panel>
   );
 });
@@ -187,8 +265,27 @@ export const TimingPanel = memo(function TimingPanel({
         mode: 'lines+markers',
         name: STRATEGY_SHORT[s],
         line: { color: COLORS[s] },
+        marker: { color: COLORS[s], symbol: SYMBOLS[s], size: 7 },
       };
     });
+  }, [result]);
+  const { description, rows } = useMemo(() => {
+    const pts = (result ?? []).filter((r) => r.rmse > 0 && r.seconds > 0);
+    const series = STRATEGIES.map((s) => {
+      const mine = pts.filter((r) => r.strategy === s).sort((a, b) => a.seconds - b.seconds);
+      return { strategy: s, x: mine.map((r) => r.seconds * 1e3), y: mine.map((r) => r.rmse) };
+    });
+    return {
+      description: pts.length
+        ? perStrategy(series, 'time in ms', 'RMSE')
+        : 'No timings yet: they are measured when this panel comes into view.',
+      rows: pts.map((r) => [
+        STRATEGY_SHORT[r.strategy],
+        String(r.n),
+        fmt(r.seconds * 1e3, 3),
+        fmt(r.rmse, 3),
+      ]),
+    };
   }, [result]);
   return (
     <Panel title="Run time against error">
@@ -197,7 +294,9 @@ export const TimingPanel = memo(function TimingPanel({
       </div>
       {error ? <Notice kind="warn">Timing failed: {error.message}</Notice> : null}
       <LogLogPlot
-        ariaLabel="RMSE over independent runs against the run time of one estimate, for the three strategies, log-log."
+        label="RMSE over independent runs against the run time of one estimate, for the three strategies (log–log)"
+        description={description}
+        testId="al-timing-plot"
         data={traces}
         height={present ? 360 : 280}
         x="time per estimate (ms)"
@@ -208,6 +307,12 @@ export const TimingPanel = memo(function TimingPanel({
         this machine (best of three; noisy when the machine is busy). Points are joined in order of run time,
         so the line never doubles back. Lower-left wins.
       </p>
+      <ShowAsTable
+        caption="RMSE against the run time of one estimate"
+        columns={['strategy', 'N', 'time (ms)', 'RMSE']}
+        rows={rows}
+        testId="al-timing-table"
+      />
     </Panel>
   );
 });

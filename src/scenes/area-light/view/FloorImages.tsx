@@ -7,6 +7,7 @@ import { useEffect, useRef } from 'react';
 import { useWorkerJob, workerFactory } from '../../../workers';
 import type { AreaLightTasks } from '../floor.worker';
 import { Readout, useSeenOnce } from '../../../ui';
+import { formatNumber } from '../../../ui/Readout';
 import { PASS_TOTAL, type FloorJob } from '../floor';
 import { STRATEGIES, STRATEGY_LABEL } from '../strategies';
 import type { FloorFrame } from '../jobs';
@@ -39,6 +40,14 @@ function paint(canvas: HTMLCanvasElement | null, img: Float32Array | undefined, 
     d[4 * k + 3] = 255;
   }
   ctx.putImageData(data, 0, 0);
+}
+
+/** A floor image's accessible name: what it is and, for a strategy, its error against the reference. */
+function floorImageLabel(label: string, i: number, fr: FloorFrame | undefined): string {
+  if (!fr) return `Floor rendered with ${label} (not rendered yet)`;
+  if (i === 0) return `Floor rendered with ${label}: the exact radiance, brightest in the light’s footprint`;
+  const rmse = fr.rmse[i - 1];
+  return `Floor rendered with ${label} at ${fr.spp} samples per pixel: RMSE ${rmse === undefined ? '—' : formatNumber(rmse, 3)} against the reference`;
 }
 
 /**
@@ -111,7 +120,7 @@ export function FloorImages({ job, pass = PASS_TOTAL.length - 1 }: { job: FloorJ
               width={job.size}
               height={job.size}
               role="img"
-              aria-label={`Floor rendered with ${label}`}
+              aria-label={floorImageLabel(label, i, fr)}
             />
             <figcaption>
               {label}

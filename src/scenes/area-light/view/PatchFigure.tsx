@@ -7,6 +7,7 @@
  * Drawn to scale (one scale for r, the unit radius and the patch) whenever that fits; otherwise the
  * figure says which length is not to scale. The numbers come from the model (PatchModel).
  */
+import { superscript } from '../../../ui/axis';
 import type { PatchModel } from '../patch';
 
 const W = 560;
@@ -19,8 +20,10 @@ const RMAX = 150;
 
 function fmt(x: number, d = 4): string {
   if (!Number.isFinite(x)) return '—';
-  if (x !== 0 && (Math.abs(x) < 1e-3 || Math.abs(x) >= 1e5))
-    return x.toExponential(d - 1).replace('e', '×10^');
+  if (x !== 0 && (Math.abs(x) < 1e-3 || Math.abs(x) >= 1e5)) {
+    const [m, e] = x.toExponential(d - 1).split('e');
+    return `${m}×10${superscript(String(Number(e)))}`;
+  }
   return Number(x.toPrecision(d)).toString();
 }
 
@@ -43,6 +46,22 @@ export function patchFigureLayout(patch: PatchModel) {
   const s = Math.min(180, Math.max(10, sideTrue));
   const patchToScale = Math.abs(s - sideTrue) < 1e-6;
   return { thetaL, k, D, R, s, distanceToScale, patchToScale };
+}
+
+/** Whether (and how) the figure is drawn to scale, in words. */
+function scaleNoteOf(patch: PatchModel): string {
+  const { distanceToScale, patchToScale, s } = patchFigureLayout(patch);
+  return !distanceToScale
+    ? `r = ${fmt(patch.r, 3)} and the unit radius are not to scale here`
+    : !patchToScale
+      ? `to scale, except the patch (${sideTrueWord(s, patch)})`
+      : 'drawn to scale';
+}
+
+/** The figure in words, with its numbers: its accessible description. */
+export function patchFigureText(patch: PatchModel): string {
+  const deg = (Math.acos(Math.min(1, Math.max(0, patch.cosThetaL))) * 180) / Math.PI;
+  return `Cross-section of Q6(a), ${scaleNoteOf(patch)}: the patch of area ${fmt(patch.area)} at distance r = ${fmt(patch.r)}, tilted by θₗ = ${fmt(deg, 3)} degrees from facing the point. Its perpendicular projection dA⊥ has side dl = ${fmt(Math.sqrt(patch.area * patch.cosThetaL))}; the similar triangles give dωₗ = dl / r, so dω = dA cos θₗ / r² = ${fmt(patch.approx)} sr (exactly ${fmt(patch.exact)} sr).`;
 }
 
 export function PatchFigure({ patch }: { patch: PatchModel }) {
@@ -79,19 +98,14 @@ export function PatchFigure({ patch }: { patch: PatchModel }) {
   const arcEnd = { x: cx + arcR * nx, y: cy + arcR * ny };
   const C70 = Math.cos((62 * Math.PI) / 180),
     S70 = Math.sin((62 * Math.PI) / 180);
-  const scaleNote = !distanceToScale
-    ? `r = ${fmt(patch.r, 3)} and the unit radius are not to scale here`
-    : !patchToScale
-      ? `to scale, except the patch (${sideTrueWord(s, patch)})`
-      : 'drawn to scale';
+  const scaleNote = scaleNoteOf(patch);
   return (
     <svg
       className="al-patch-fig"
       viewBox={`0 0 ${W} ${H}`}
-      role="img"
       data-testid="al-patch-figure"
       data-to-scale={distanceToScale && patchToScale ? '1' : '0'}
-      aria-label={`Cross-section of Q6(a), ${scaleNote}: the patch of area ${fmt(patch.area)} at distance r = ${fmt(patch.r)}, tilted by θ_l = ${fmt((thetaL * 180) / Math.PI, 3)} degrees. Its perpendicular projection dA⊥ has side dl; the similar triangles give dω_l = dl / r, so dω = dA cos θ_l / r² = ${fmt(patch.approx)} sr (exactly ${fmt(patch.exact)} sr).`}
+      aria-hidden="true"
     >
       <defs>
         <marker
@@ -132,7 +146,10 @@ export function PatchFigure({ patch }: { patch: PatchModel }) {
       {/* dω_l on the unit circle */}
       <path d={`M ${ca.x} ${ca.y} A ${R} ${R} 0 0 1 ${cbb.x} ${cbb.y}`} className="al-fig-domega" />
       <text x={ca.x - 6} y={Math.min(ca.y, PY - 12) - 8} textAnchor="end" className="al-fig-accent">
-        dω_l
+        dω
+        <tspan className="al-fig-sub" dy="0.3em">
+          l
+        </tspan>
       </text>
       {/* dA⊥ with side dl */}
       <line x1={pa.x} y1={pa.y} x2={pb.x} y2={pb.y} className="al-fig-perp" />
@@ -153,7 +170,10 @@ export function PatchFigure({ patch }: { patch: PatchModel }) {
         markerEnd="url(#al-arrow)"
       />
       <text x={cx + nLen * nx - 4} y={cy + nLen * ny + 24} textAnchor="end" className="al-fig-muted">
-        n_l
+        n
+        <tspan className="al-fig-sub" dy="0.3em">
+          l
+        </tspan>
       </text>
       {thetaL > 0.02 ? (
         <>
@@ -168,7 +188,10 @@ export function PatchFigure({ patch }: { patch: PatchModel }) {
             textAnchor="end"
             className="al-fig-label"
           >
-            θ_l
+            θ
+            <tspan className="al-fig-sub" dy="0.3em">
+              l
+            </tspan>
           </text>
         </>
       ) : null}

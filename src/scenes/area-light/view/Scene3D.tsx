@@ -20,7 +20,8 @@ export interface Scene3DProps {
   /** Estimator term per sample (0 = the sample contributes nothing). */
   terms: Float64Array;
   patch: PatchModel | null;
-  height: number;
+  /** Pixels, or a CSS length (classroom mode: '100%' of the stage). */
+  height: number | string;
   dark: boolean;
   /** Samples arrived so far (the animation's position): the first `count` are drawn, rays to the newest. */
   count?: number;
@@ -42,8 +43,13 @@ interface Objects {
   hemi: THREE.LineSegments;
   floor: THREE.Mesh;
   grid: THREE.GridHelper;
+  /** Samples that contribute (large dots) and wasted ones (small dots): not told apart by colour alone. */
   samplesOn: THREE.Points;
+  samplesOnMiss: THREE.Points;
   samplesDir: THREE.Points;
+  samplesDirMiss: THREE.Points;
+  /** hitsBefore[k] = how many of the first k samples contribute (for the draw ranges). */
+  hitsBefore: Int32Array;
   rays: THREE.LineSegments;
   patch: THREE.Mesh;
   patchRays: THREE.LineSegments;
@@ -92,8 +98,11 @@ function applyCount(o: Objects, s: Shown) {
     rayPos.setXYZ(2 * j + 1, ex, ey, ez);
   }
   rayPos.needsUpdate = true;
-  o.samplesOn.geometry.setDrawRange(0, st === 'cosine' ? 0 : n);
-  o.samplesDir.geometry.setDrawRange(0, n);
+  const hits = o.hitsBefore[n] ?? 0;
+  o.samplesOn.geometry.setDrawRange(0, st === 'cosine' ? 0 : hits);
+  o.samplesOnMiss.geometry.setDrawRange(0, st === 'cosine' ? 0 : n - hits);
+  o.samplesDir.geometry.setDrawRange(0, hits);
+  o.samplesDirMiss.geometry.setDrawRange(0, n - hits);
   o.rays.geometry.setDrawRange(0, 2 * (n - first));
   o.rays.geometry.computeBoundingSphere();
   o.ctx.invalidate();
@@ -123,24 +132,29 @@ function apply(o: Objects, s: Shown, framedFor: { current: string }) {
   o.grid.scale.set(gs, 1, gs);
   (o.grid.material as THREE.Material).opacity = dk ? 0.35 : 0.5;
 
-  // Samples: points on the light (light strategies) and the unit directions from p.
+  // Samples: points on the light (light strategies) and the unit directions from p, those that
+  // contribute and the wasted ones in separate buffers, each in the order they arrive.
   const n = Math.min(MAX_SAMPLES, tm.length);
-  const onPos = o.samplesOn.geometry.getAttribute('position') as THREE.BufferAttribute;
-  const onCol = o.samplesOn.geometry.getAttribute('color') as THREE.BufferAttribute;
-  const dirPos = o.samplesDir.geometry.getAttribute('position') as THREE.BufferAttribute;
-  const dirCol = o.samplesDir.geometry.getAttribute('color') as THREE.BufferAttribute;
-  const hit = new T.Color(dk ? 0x7ee787 : 0x1d7a3a);
-  const miss = new T.Color(dk ? 0xf47067 : 0xc0392b);
+  const pos = (p: THREE.Points) => p.geometry.getAttribute('position') as THREE.BufferAttribute;
+  const onPos = [pos(o.samplesOnMiss), pos(o.samplesOn)];
+  const dirPos = [pos(o.samplesDirMiss), pos(o.samplesDir)];
+  (o.samplesOn.material as THREE.PointsMaterial).color.set(dk ? 0x7ee787 : 0x1d7a3a);
+  (o.samplesDir.material as THREE.PointsMaterial).color.set(dk ? 0x7ee787 : 0x1d7a3a);
+  (o.samplesOnMiss.material as THREE.PointsMaterial).color.set(dk ? 0xf47067 : 0xc0392b);
+  (o.samplesDirMiss.material as THREE.PointsMaterial).color.set(dk ? 0xf47067 : 0xc0392b);
+  const next = [0, 0]; // next index in the wasted (0) and contributing (1) buffers
+  o.hitsBefore[0] = 0;
   for (let i = 0; i < n; i++) {
+    const h = tm[i] > 0 ? 1 : 0;
+    const j = next[h]++;
+    o.hitsBefore[i + 1] = o.hitsBefore[i] + h;
     let dx: number, dy: number, dz: number;
     if (st === 'cosine') {
       dx = smp[3 * i];
       dy = smp[3 * i + 1];
       dz = smp[3 * i + 2];
     } else {
-      onPos.setXYZ(i, smp[3 * i], smp[3 * i + 1], smp[3 * i + 2]);
-      const col = tm[i] > 0 ? hit : miss;
-      onCol.setXYZ(i, col.r, col.g, col.b);
+      onPos[h].setXYZ(j, smp[3 * i], smp[3 * i + 1], smp[3 * i + 2]);
       dx = smp[3 * i] - px;
       dy = smp[3 * i + 1] - py;
       dz = smp[3 * i + 2] - pz;
@@ -149,13 +163,12 @@ function apply(o: Objects, s: Shown, framedFor: { current: string }) {
       dy /= len;
       dz /= len;
     }
-    dirPos.setXYZ(i, px + dx, py + dy, pz + dz);
-    const col = tm[i] > 0 ? hit : miss;
-    dirCol.setXYZ(i, col.r, col.g, col.b);
+    dirPos[h].setXYZ(j, px + dx, py + dy, pz + dz);
   }
-  o.samplesOn.visible = st !== 'cosine';
-  for (const a of [onPos, onCol, dirPos, dirCol]) a.needsUpdate = true;
-  for (const g of [o.samplesOn.geometry, o.samplesDir.geometry]) g.computeBoundingSphere();
+  o.samplesOn.visible = o.samplesOnMiss.visible = st !== 'cosine';
+  for (const a of [...onPos, ...dirPos]) a.needsUpdate = true;
+  for (const p of [o.samplesOn, o.samplesOnMiss, o.samplesDir, o.samplesDirMiss])
+    p.geometry.computeBoundingSphere();
   applyCount(o, s);
 
   // Q6(a) patch and its projection onto the unit sphere around p.
@@ -278,11 +291,13 @@ export function Scene3D({
     const pts = (size: number) => {
       const g = new T.BufferGeometry();
       g.setAttribute('position', new T.BufferAttribute(new Float32Array(MAX_SAMPLES * 3), 3));
-      g.setAttribute('color', new T.BufferAttribute(new Float32Array(MAX_SAMPLES * 3), 3));
-      return new T.Points(g, new T.PointsMaterial({ size, sizeAttenuation: false, vertexColors: true }));
+      return new T.Points(g, new T.PointsMaterial({ size, sizeAttenuation: false }));
     };
-    const samplesOn = pts(4);
-    const samplesDir = pts(3);
+    // contributing samples large, wasted ones small (and a different colour)
+    const samplesOn = pts(5);
+    const samplesOnMiss = pts(2.5);
+    const samplesDir = pts(4);
+    const samplesDirMiss = pts(2);
     const rayGeo = new T.BufferGeometry();
     rayGeo.setAttribute('position', new T.BufferAttribute(new Float32Array(RAYS * 6), 3));
     const rays = new T.LineSegments(
@@ -316,7 +331,9 @@ export function Scene3D({
       normal,
       hemi,
       samplesOn,
+      samplesOnMiss,
       samplesDir,
+      samplesDirMiss,
       rays,
       patch,
       patchRays,
@@ -326,7 +343,7 @@ export function Scene3D({
       obj.frustumCulled = false;
       ctx.scene.add(obj);
     }
-    const o: Objects = { ctx, ...parts };
+    const o: Objects = { ctx, ...parts, hitsBefore: new Int32Array(MAX_SAMPLES + 1) };
     objs.current = o;
     framedFor.current = '';
     apply(o, latest.current, framedFor);

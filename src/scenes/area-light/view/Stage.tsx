@@ -4,10 +4,19 @@
  * samples and the running-estimate plot follow every frame by direct writes (no React render).
  */
 import { useCallback, useMemo, useRef, type ComponentProps, type RefObject } from 'react';
-import { Readout, TEXT_HZ, TimelineTransport, useTimelineFrame, type Timeline } from '../../../ui';
+import {
+  DescribedFigure,
+  Readout,
+  Revealed,
+  TEXT_HZ,
+  TimelineTransport,
+  useTimelineFrame,
+  type Timeline,
+} from '../../../ui';
 import type { LightStrategy } from '../../../core/lights';
 import { animationFrame, sampleRun, type SampleRun } from '../animation';
 import { STRATEGY_LABEL, STRATEGY_SHORT, type AreaLightModel } from '../model';
+import { describeAreaLight, describeRunning } from './describe';
 import { RunningEstimate } from './RunningEstimate';
 import { Scene3D } from './Scene3D';
 
@@ -39,8 +48,22 @@ function LiveRunning({ tl, run, reference }: { tl: Timeline; run: SampleRun; ref
     if (text) lastText.current = now;
     drawRef.current?.(animationFrame(latest.current, t).k, text);
   });
+  const k = animationFrame(run, tl.t).k;
   return (
-    <RunningEstimate run={run} reference={reference} k={animationFrame(run, tl.now()).k} drawRef={drawRef} />
+    <DescribedFigure
+      label="Running estimate against samples k"
+      description={describeRunning(run, k, reference)}
+      playing={tl.playing}
+      quiet
+      testId="al-running-figure"
+    >
+      <RunningEstimate
+        run={run}
+        reference={reference}
+        k={animationFrame(run, tl.now()).k}
+        drawRef={drawRef}
+      />
+    </DescribedFigure>
   );
 }
 
@@ -61,6 +84,7 @@ export function Stage({
   vpHeight,
   dark,
   target,
+  ask,
 }: {
   tl: Timeline;
   stageRef: RefObject<HTMLDivElement | null>;
@@ -68,71 +92,100 @@ export function Stage({
   strategy: LightStrategy;
   animMax: number;
   seed: number;
-  patch: ComponentProps<typeof Scene3D>['patch'];
-  vpHeight: number;
+  patch: NonNullable<ComponentProps<typeof Scene3D>['patch']>;
+  vpHeight: number | string;
   dark: boolean;
   target: number;
+  /** Asked to predict first: the running estimate and the transport are hidden. */
+  ask: boolean;
 }) {
   const run = useMemo(() => sampleRun(model, strategy, animMax, seed), [model, strategy, animMax, seed]);
   const af = animationFrame(run, tl.t);
   const fmtPos = useCallback((t: number) => `${Math.floor(t)} of ${animMax} samples`, [animMax]);
+  const description = describeAreaLight(model, patch, { strategy, run, frame: af, target, hidden: ask });
   return (
     <div className="al-stage-wrap">
-      <div className="al-stage" ref={stageRef}>
-        <div className="al-stage-3d">
-          <LiveScene3D
-            tl={tl}
-            run={run}
-            model={model}
-            strategy={strategy}
-            samples={run.points}
-            terms={run.terms}
-            patch={patch}
-            height={vpHeight}
-            dark={dark}
-          />
-        </div>
-        <div className="al-stage-side">
-          <TimelineTransport
-            timeline={tl}
-            label={`Samples arriving (${STRATEGY_SHORT[strategy]})`}
-            format={fmtPos}
-          />
-          <div className="al-readouts al-anim-readouts">
-            <Readout id="anim-k" label="samples arrived k" value={af.k} digits={7} />
-            <Readout
-              id="anim-estimate"
-              label={`running estimate, ${STRATEGY_SHORT[strategy]}`}
-              value={af.k > 0 ? af.estimate : null}
-              digits={7}
-            />
-            <Readout
-              id="anim-stderr"
-              label="its standard error"
-              value={af.k > 1 ? af.stderr : null}
-              digits={3}
-            />
-            <Readout
-              id="anim-term"
-              label="newest sample’s term"
-              value={af.k > 0 ? af.newestTerm : null}
-              digits={5}
+      <DescribedFigure
+        label="The area light, the shading point and the samples arriving"
+        description={description}
+        playing={tl.playing}
+        testId="al-figure"
+        className="stage-figure"
+      >
+        <div className="al-stage" ref={stageRef}>
+          <div className="al-stage-3d">
+            <LiveScene3D
+              tl={tl}
+              run={run}
+              model={model}
+              strategy={strategy}
+              samples={run.points}
+              terms={run.terms}
+              patch={patch}
+              height={vpHeight}
+              dark={dark}
             />
           </div>
-          <LiveRunning tl={tl} run={run} reference={target} />
+          <div className="al-stage-transport">
+            <Revealed
+              ask={ask}
+              what="the samples arriving (Reveal, then they play)"
+              testId="ask-hidden-transport"
+            >
+              <TimelineTransport
+                timeline={tl}
+                label={`Samples arriving (${STRATEGY_SHORT[strategy]})`}
+                format={fmtPos}
+              />
+            </Revealed>
+          </div>
+          <div className="al-stage-side">
+            <div className="al-readouts al-anim-readouts">
+              <Readout id="anim-k" label="samples arrived k" value={af.k} digits={7} />
+              <Revealed ask={ask} what="the running estimate">
+                <Readout
+                  id="anim-estimate"
+                  label="running estimate"
+                  value={af.k > 0 ? af.estimate : null}
+                  digits={7}
+                />
+                <Readout
+                  id="anim-stderr"
+                  label="its standard error"
+                  value={af.k > 1 ? af.stderr : null}
+                  digits={3}
+                />
+                <Readout
+                  id="anim-term"
+                  label="newest sample’s term"
+                  value={af.k > 0 ? af.newestTerm : null}
+                  digits={5}
+                />
+              </Revealed>
+            </div>
+            <Revealed ask={ask} what="the running-estimate plot" testId="ask-hidden-running">
+              <LiveRunning tl={tl} run={run} reference={target} />
+            </Revealed>
+          </div>
         </div>
-        <p className="al-legend">
-          Yellow: the emitting side of the light (its back is dark). Dots: the samples of the{' '}
-          {STRATEGY_LABEL[strategy]} strategy arrived so far
-          {strategy === 'cosine'
-            ? ', as directions on the unit hemisphere'
-            : ' on the light, and their directions on the unit hemisphere'}{' '}
-          — green where the sample contributes, red where it is wasted (below the horizon, blocked, or missing
-          the light); lines to the newest. Orange: the Q6(a) patch and its projection on the unit sphere. The
-          small plot (beside the view, or below it on narrow screens): the running estimate with ±2 standard
-          errors, converging on the reference (dashed).
-        </p>
-      </div>
+      </DescribedFigure>
     </div>
+  );
+}
+
+/** What the colours and shapes of the 3D view mean (shown under the question, outside the stage). */
+export function Legend({ strategy }: { strategy: LightStrategy }) {
+  return (
+    <p className="al-legend">
+      Yellow: the emitting side of the light (its back is dark). Dots: the samples of the{' '}
+      {STRATEGY_LABEL[strategy]} strategy arrived so far
+      {strategy === 'cosine'
+        ? ', as directions on the unit hemisphere'
+        : ' on the light, and their directions on the unit hemisphere'}{' '}
+      — large green dots where the sample contributes, small red dots where it is wasted (below the horizon,
+      blocked, or missing the light); lines to the newest. Orange: the Q6(a) patch and its projection on the
+      unit sphere. The small plot (beside the view, or below it on narrow screens): the running estimate with
+      ±2 standard errors, converging on the reference (dashed).
+    </p>
   );
 }

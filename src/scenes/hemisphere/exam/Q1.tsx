@@ -4,7 +4,8 @@
  * derivation is always the exam's lobe k cos θ e^φ; another lobe's derivation is in "Explore further".
  */
 import type { ReactNode } from 'react';
-import { ExamPart, Derivation as DerivationBlock, LiveAnswer, KeyNote } from '../../../ui/exam';
+import { ExamPart, Derivation as DerivationBlock, KeyNote } from '../../../ui/exam';
+import { Answer } from '../view/Answer';
 import { MathTex, Readout, formatNumber } from '../../../ui';
 import { examInversion, type ExamChecks } from '../model';
 import { texNum } from '../view/tex';
@@ -25,10 +26,14 @@ export interface Q1Props {
   /** Live answers, supplied by the scene (the sample check, the divergence panel). */
   inverted: ReactNode;
   answer1d: ReactNode;
+  /** The CDFs plotted (the chosen density's, against the samples), under (c)'s answer. */
+  cdfs: ReactNode;
   /** A note when the sampled lobe is not the exam's. */
   otherLobe: ReactNode;
   /** `data-testid="derivation"` goes on part (a) when the exam lobe is chosen (the contract's test hook). */
   mainTestId: boolean;
+  /** Results hidden until revealed (`ask=1`): the live answers wait, the derivations stay. */
+  ask: boolean;
 }
 
 export function Q1({
@@ -40,8 +45,10 @@ export function Q1({
   kNote,
   inverted,
   answer1d,
+  cdfs,
   otherLobe,
   mainTestId,
+  ask,
 }: Q1Props) {
   const k = texNum(c.k, 8);
   const E = texNum(c.e2piMinus1, 8);
@@ -51,7 +58,11 @@ export function Q1({
       <ExamPart
         id="1a"
         title="Normalize p(ω)"
-        asks={<>Find k so that p(ω) = k cos θ e^φ is a probability density over the upper hemisphere.</>}
+        asks={
+          <>
+            Find k so that p(ω) = k cos θ e<sup>φ</sup> is a probability density over the upper hemisphere.
+          </>
+        }
       >
         <DerivationBlock testId={mainTestId ? 'derivation' : 'derivation-1a'}>
           <p>
@@ -112,11 +123,11 @@ export function Q1({
             ]}
           />
         </DerivationBlock>
-        <LiveAnswer testId="answer-1a">
+        <Answer testId="answer-1a" ask={ask} what="k">
           <div className="readouts">
             <Readout id="k" label="k (normalization of p(ω))" value={kValue} digits={8} note={kNote} />
           </div>
-        </LiveAnswer>
+        </Answer>
       </ExamPart>
 
       <ExamPart
@@ -145,13 +156,17 @@ export function Q1({
               },
               {
                 tex: `p(\\theta) = \\int_0^{2\\pi}p(\\theta,\\phi)\\,d\\phi = \\frac{2}{e^{2\\pi}-1}\\cos\\theta\\sin\\theta\\int_0^{2\\pi}e^{\\phi}\\,d\\phi`,
-                why: 'marginalize φ: only e^φ depends on φ',
+                why: (
+                  <>
+                    marginalize φ: only e<sup>φ</sup> depends on φ
+                  </>
+                ),
               },
               {
                 tex: `= \\frac{2}{e^{2\\pi}-1}\\cos\\theta\\sin\\theta\\,(e^{2\\pi}-1) = 2\\sin\\theta\\cos\\theta = \\sin 2\\theta`,
                 why: (
                   <>
-                    the factor e<sup>2π</sup> − 1 cancels; check: ∫₀^π/2 sin 2θ dθ ={' '}
+                    the factor e<sup>2π</sup> − 1 cancels; check: ∫₀<sup>π/2</sup> sin 2θ dθ ={' '}
                     {texNumPlain(c.thetaMarginalTotal, 12)}
                   </>
                 ),
@@ -164,13 +179,18 @@ export function Q1({
             lines={[
               {
                 tex: `p(\\phi) = \\int_0^{\\pi/2}p(\\theta,\\phi)\\,d\\theta = \\frac{1}{e^{2\\pi}-1}e^{\\phi}\\int_0^{\\pi/2}2\\cos\\theta\\sin\\theta\\,d\\theta`,
-                why: 'marginalize θ: only cos θ sin θ depends on θ; the 2 of k = 2/(e^(2π) − 1) moves inside the integral',
+                why: (
+                  <>
+                    marginalize θ: only cos θ sin θ depends on θ; the 2 of k = 2/(e<sup>2π</sup> − 1) moves
+                    inside the integral
+                  </>
+                ),
               },
               {
                 tex: `= \\frac{e^{\\phi}}{e^{2\\pi}-1}\\Big[-\\tfrac12\\cos 2\\theta\\Big]_0^{\\pi/2} = \\frac{e^{\\phi}}{e^{2\\pi}-1}`,
                 why: (
                   <>
-                    the bracket is {texNumPlain(c.bracket)}, as in (a); check: ∫₀^2π p(φ) dφ ={' '}
+                    the bracket is {texNumPlain(c.bracket)}, as in (a); check: ∫₀<sup>2π</sup> p(φ) dφ ={' '}
                     {texNumPlain(c.phiMarginalTotal, 12)}
                   </>
                 ),
@@ -231,12 +251,13 @@ export function Q1({
             </p>
           )}
         </DerivationBlock>
-        <LiveAnswer testId="answer-1b">
+        <Answer testId="answer-1b" ask={ask} what="the marginals">
           <p>
-            p(θ) = sin 2θ on [0, π/2] and p(φ) = e^φ/(e<sup>2π</sup> − 1) = {texNumPlain(c.k / 2, 8)} e^φ on
-            [0, 2π); the histograms in (d) are drawn against these curves.
+            p(θ) = sin 2θ on [0, π/2] and p(φ) = e<sup>φ</sup>/(e<sup>2π</sup> − 1) ={' '}
+            {texNumPlain(c.k / 2, 8)} e<sup>φ</sup> on [0, 2π); the histograms in (d) are drawn against these
+            curves.
           </p>
-        </LiveAnswer>
+        </Answer>
       </ExamPart>
 
       <ExamPart id="1c" title="CDFs" asks={<>Find the cumulative distribution functions P(θ) and P(φ).</>}>
@@ -271,16 +292,17 @@ export function Q1({
             ]}
           />
         </DerivationBlock>
-        {xi && ex ? (
-          <LiveAnswer testId="answer-1c">
+        <Answer testId="answer-1c" ask={ask} what="the CDFs against the samples">
+          {xi && ex ? (
             <p data-testid="cdf-example">
               At the first sample of the current set, θ = {texNumPlain(ex.thetaAsin, 8)} and φ ={' '}
               {texNumPlain(ex.phiLog1p, 8)}: P(θ) = {texNumPlain(ex.cdfTheta, 10)} and P(φ) ={' '}
               {texNumPlain(ex.cdfPhi, 10)}, which are its ξ₁ = {texNumPlain(xi.xi1, 10)} and ξ₂ ={' '}
               {texNumPlain(xi.xi2, 10)}: the CDF undoes the inversion of (d).
             </p>
-          </LiveAnswer>
-        ) : null}
+          ) : null}
+          {cdfs}
+        </Answer>
       </ExamPart>
 
       <ExamPart
@@ -352,7 +374,9 @@ export function Q1({
             />
           ) : null}
         </DerivationBlock>
-        <LiveAnswer testId="answer-1d">{answer1d}</LiveAnswer>
+        <Answer testId="answer-1d" ask={ask} what="the samples' histograms and the χ² test">
+          {answer1d}
+        </Answer>
       </ExamPart>
       {otherLobe}
     </>

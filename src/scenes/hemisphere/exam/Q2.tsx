@@ -3,7 +3,8 @@
  * (c) the unbiasedness proof written out, beside the empirical check ("repeat many times").
  */
 import type { ReactNode } from 'react';
-import { ExamPart, Derivation as DerivationBlock, LiveAnswer, KeyNote } from '../../../ui/exam';
+import { ExamPart, Derivation as DerivationBlock, KeyNote } from '../../../ui/exam';
+import { Answer } from '../view/Answer';
 import { MathTex, formatNumber } from '../../../ui';
 import { Steps } from '../view/Steps';
 import { texNum } from '../view/tex';
@@ -16,12 +17,15 @@ export function Q2({
   answer2a,
   answer2b,
   answer2c,
+  ask,
 }: {
   solidAngle: number;
   lobeTex: string;
   answer2a: ReactNode;
   answer2b: ReactNode;
   answer2c: ReactNode;
+  /** Results hidden until revealed (`ask=1`). */
+  ask: boolean;
 }) {
   return (
     <>
@@ -58,7 +62,9 @@ export function Q2({
             ]}
           />
         </DerivationBlock>
-        <LiveAnswer testId="answer-2a">{answer2a}</LiveAnswer>
+        <Answer testId="answer-2a" ask={ask} what="the uniform estimate">
+          {answer2a}
+        </Answer>
       </ExamPart>
 
       <ExamPart
@@ -87,7 +93,9 @@ export function Q2({
             like f and can be infinite when p vanishes faster than f.
           </p>
         </DerivationBlock>
-        <LiveAnswer testId="answer-2b">{answer2b}</LiveAnswer>
+        <Answer testId="answer-2b" ask={ask} what="the importance estimate">
+          {answer2b}
+        </Answer>
       </ExamPart>
 
       <ExamPart id="2c" title="Unbiasedness" asks={<>Show that the estimator is unbiased: E[⟨I⟩] = I.</>}>
@@ -130,9 +138,9 @@ export function Q2({
             condition p &gt; 0 wherever f ≠ 0.
           </KeyNote>
         </DerivationBlock>
-        <LiveAnswer title="Checked empirically" testId="answer-2c">
+        <Answer title="Checked empirically" testId="answer-2c" ask={ask} what="the repeated estimates">
           {answer2c}
-        </LiveAnswer>
+        </Answer>
       </ExamPart>
     </>
   );

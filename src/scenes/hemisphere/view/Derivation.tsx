@@ -96,7 +96,8 @@ export function Derivation({
           tex={[`k\\int_\\Omega \\cos\\theta\\,d\\omega = k\\pi = 1`, `k = \\frac1\\pi = ${n6(1 / Math.PI)}`]}
         />
         <Step n={2} title="Marginals" tex={`p(\\theta) = \\sin 2\\theta,\\quad p(\\phi) = \\frac{1}{2\\pi}`}>
-          The same θ-marginal as the exam lobe: the exam lobe is the cosine lobe with φ reweighted by e^φ.
+          The same θ-marginal as the exam lobe: the exam lobe is the cosine lobe with φ reweighted by e
+          <sup>φ</sup>.
         </Step>
         <Step
           n={3}

@@ -3,28 +3,32 @@
  * (or the samples appearing one by one), its transport and toggles, the readouts and caption at the
  * current position, and the unit square beside it with the scene's settings.
  */
-import { memo, useMemo, useRef, useState, type ComponentProps, type ReactNode } from 'react';
+import { memo, useEffect, useMemo, useRef, useState, type ComponentProps, type ReactNode } from 'react';
 import type { SceneProps } from '../../../kit/scene';
 import {
-  formatNumber,
-  Readout,
+  DescribedFigure,
+  prefersReducedMotion,
   Select,
   TimelineTransport,
   Toggle,
-  useCoarsePosition,
   useTimeline,
   useTimelineFrame,
   type Timeline,
 } from '../../../ui';
 import { formatCount } from '../../../ui/format';
-import type { SequenceKind } from '../../../core/random';
-import { animDuration, animFrame, examInversion, type AnimFrame, type AnimKind, type Lobe } from '../model';
-import type { HemisphereSchema, LobeId } from '../params';
+import { fillSequence2D } from '../../../core/random';
+import { animDuration, animFrame, type AnimFrame, type AnimKind } from '../model';
+import { Stage } from '../../../ui/stage';
+import { FigureCaption, FigureReadouts, type FigureState } from './FigureText';
+import type { HemisphereSchema } from '../params';
 import type { PointsArgs } from '../jobs';
 // Static, not lazy: the 3D panel is on the first screen, and a Suspense fallback of another height
 // shifted the layout when it arrived (three.js itself still loads lazily, inside Viewport).
 import { HemisphereView } from './HemisphereView';
 import { UnitSquare } from './UnitSquare';
+import { cellImage, cellOf, type Cell } from '../stratum';
+import { StratumControls, useCellCount, type PickCell } from './StratumPicker';
+import { describeHemisphere, describeStratum, type HemisphereState } from './describe';
 
 const ANIM_OPTIONS: { value: AnimKind; label: string }[] = [
   { value: 'warp', label: 'warp morph: square → hemisphere' },
@@ -33,21 +37,31 @@ const ANIM_OPTIONS: { value: AnimKind; label: string }[] = [
 
 const SquareMemo = memo(UnitSquare);
 
-interface FigureProps {
-  lobe: Lobe | null;
+/**
+ * The 3D view's height on the classroom stage: what the first screen leaves below the stage's top
+ * (`--stage-top`, set by the stage) after the transport and the key readouts (and, while the
+ * results are hidden, the line that says the warp is held).
+ */
+const stageViewHeight = (held: boolean) =>
+  `max(9rem, calc(100dvh - var(--stage-top, 0px) - ${held ? 12 : 10.5}rem))`;
+
+interface FigureProps extends FigureState {
   /** What the 3D view's points depend on (../jobs pointsArgsOf). */
   points: PointsArgs;
-  lobeId: LobeId;
-  kind: SequenceKind;
-  seed: number;
-  n: number;
-  anim: AnimKind;
   t: number;
   play: boolean;
   setParams: SceneProps<HemisphereSchema>['setParams'];
   present: boolean;
   problem: ReactNode;
   settings: ReactNode;
+  /** The followed stratum and how to choose another (stable). */
+  cell: Cell | null;
+  onPickCell: PickCell;
+  /** Results hidden (ask before revealing): no samples on the hemisphere, the morph held at t = 0. */
+  ask: boolean;
+  /** The χ² test of the current draw (null while it runs), and why nothing is sampled (no lobe). */
+  chi2: HemisphereState['chi2'];
+  noLobeText: string;
 }
 
 /**
@@ -70,118 +84,170 @@ export function Figure({
   present,
   problem,
   settings,
+  cell,
+  onPickCell,
+  ask,
+  chi2,
+  noLobeText,
 }: FigureProps) {
   const box = useRef<HTMLDivElement>(null);
   const tl = useTimeline({
-    t,
-    play,
+    t: ask ? 0 : t,
+    play: ask ? false : play,
     setParams,
     max: 1,
     duration: animDuration(anim, n),
     visibleRef: box,
     renderHz: 0,
+    shortcuts: !ask,
   });
   const [showPoints, setShowPoints] = useState(true);
   const [showGrid, setShowGrid] = useState(true);
+  // revealed: the morph plays from the square (or jumps to its end for reduced motion)
+  const wasAsk = useRef(ask);
+  useEffect(() => {
+    if (wasAsk.current && !ask) {
+      if (prefersReducedMotion()) tl.seek(1);
+      else tl.play();
+    }
+    wasAsk.current = ask;
+  }, [ask, tl]);
+  const image = useMemo(() => (lobe && cell ? cellImage(lobe, cell) : null), [lobe, cell]);
+  const count = useCellCount(kind, seed, n, cell);
+  const stratumText = describeStratum(cell, image, count, n, ask);
+  const firstCell = useMemo(() => {
+    const u = fillSequence2D(kind, seed, Math.max(1, n), new Float64Array(2), 0, 1, 0);
+    return cellOf(u[0], u[1]);
+  }, [kind, seed, n]);
+  // described at the paused position (while playing, the description is announced on pause)
+  const still = animFrame(lobe, kind, seed, n, anim, tl.t);
+  const description = describeHemisphere({
+    lobe,
+    noLobe: noLobeText,
+    kind,
+    n,
+    anim,
+    t: tl.t,
+    s: still.s,
+    shown: still.shown,
+    chi2,
+    stratum: cell ? stratumText : '',
+    ask,
+  });
   const format = (x: number) => {
     const frame = animFrame(lobe, kind, seed, n, anim, x);
     return anim === 'warp'
       ? `t = ${x.toFixed(2)}, s = ${frame.s.toFixed(2)}`
       : `t = ${x.toFixed(2)}: ${formatCount(frame.shown)} of ${formatCount(n)}`;
   };
-  return (
-    <div className="hemi-figure" ref={box}>
-      <div className="hemi-figure-main">
-        {lobe ? (
-          <LiveHemisphereView
-            tl={tl}
-            lobe={lobe}
-            points={points}
-            kind={kind}
-            seed={seed}
-            n={n}
-            anim={anim}
-            showPoints={showPoints}
-            showGrid={showGrid}
-            height={present ? 520 : 400}
-          />
-        ) : (
-          <div className="hemi-no-view">{problem}</div>
-        )}
-        <TimelineTransport
-          timeline={tl}
-          label={anim === 'warp' ? 'Warp morph' : 'Samples appearing'}
-          format={format}
-          testId="timeline"
-        >
-          <Select
-            label="Animation"
-            value={anim}
-            options={ANIM_OPTIONS}
-            onChange={(v) => setParams({ anim: v })}
-            testId="anim"
-          />
-        </TimelineTransport>
-        <div className="hemi-toggles">
-          <Toggle label="points" checked={showPoints} onChange={setShowPoints} />
-          <Toggle label="warped (ξ₁, ξ₂) grid" checked={showGrid} onChange={setShowGrid} />
-        </div>
-        <FigureText tl={tl} lobe={lobe} lobeId={lobeId} kind={kind} seed={seed} n={n} anim={anim} />
-      </div>
-      <div className="hemi-figure-side">
-        <SquareMemo kind={kind} seed={seed} n={n} size={present ? 260 : 220} />
-        {settings}
-      </div>
+  const text = { tl, lobe, lobeId, kind, seed, n, anim, ask };
+  const animSelect = (
+    <Select
+      label="Animation"
+      value={anim}
+      options={ANIM_OPTIONS}
+      onChange={(v) => setParams({ anim: v })}
+      testId="anim"
+    />
+  );
+  const transport = (
+    <TimelineTransport
+      timeline={tl}
+      label={anim === 'warp' ? 'Warp morph' : 'Samples appearing'}
+      format={format}
+      testId="timeline"
+    >
+      {present ? null : animSelect}
+    </TimelineTransport>
+  );
+  const toggles = (
+    <div className="hemi-toggles">
+      <Toggle label="points" checked={showPoints} onChange={setShowPoints} />
+      <Toggle label="warped (ξ₁, ξ₂) grid" checked={showGrid} onChange={setShowGrid} />
     </div>
   );
-}
-
-/** The animation's readouts and caption at a coarse position (4 times a second while playing, exact when paused). */
-function FigureText({
-  tl,
-  lobe,
-  lobeId,
-  kind,
-  seed,
-  n,
-  anim,
-}: {
-  tl: Timeline;
-  lobe: FigureProps['lobe'];
-  lobeId: FigureProps['lobeId'];
-  kind: SequenceKind;
-  seed: number;
-  n: number;
-  anim: AnimKind;
-}) {
-  const t = useCoarsePosition(tl, 4);
-  const frame = useMemo(() => animFrame(lobe, kind, seed, n, anim, t), [lobe, kind, seed, n, anim, t]);
-  const tr = frame.tracked;
-  const spread = lobeId === 'exam' ? examInversion(0, 1 / 8).phiLog1p : null;
+  // On the classroom stage: the view, the transport and the key readouts; the toggles go to the
+  // drawer with the settings, the caption, the first sample's position and the stratum's sentence
+  // below the stage.
   return (
     <>
-      <div className="readouts hemi-anim-readouts" data-testid="anim-readouts">
-        <Readout id="morph-s" label="morph s = t²(3 − 2t)" value={lobe ? frame.s : null} digits={6} />
-        <Readout
-          id="anim-count"
-          label={anim === 'warp' ? 'points morphing' : 'points drawn at t'}
-          value={lobe ? frame.shown : null}
-        />
-        <Readout id="tracked-x" label="first sample now at x" value={tr ? tr.pos[0] : null} digits={6} />
-        <Readout id="tracked-y" label="y" value={tr ? tr.pos[1] : null} digits={6} />
-        <Readout id="tracked-z" label="z" value={tr ? tr.pos[2] : null} digits={6} />
-      </div>
-      <p className="small hemi-caption">
-        {anim === 'warp'
-          ? 'At t = 0 every point (ξ₁, ξ₂) lies in the unit square drawn flat on the base plane (ξ₁ along x, ξ₂ along y); as t goes to 1 each travels to the direction the inversion of (d) gives it. Each cell of the 8 × 8 grid is a stratum of the square: follow its colour to the patch of the hemisphere it lands on.'
-          : 'The samples appear in the order they are drawn, from 1 to N (geometric in t); each keeps the colour of its (ξ₁, ξ₂).'}
-        {spread !== null
-          ? ` For the exam's lobe, ξ₁ sets θ = arcsin √ξ₁ (rings) and ξ₂ sets φ: the first stratum ξ₂ < 1/8 spreads over φ ∈ [0, ${formatNumber(spread, 3)}) rad, where p ∝ e^φ is small, while the last one is squeezed near φ = 2π.`
-          : ''}
-        {tr
-          ? ` The first sample (ξ₁, ξ₂) = (${formatNumber(tr.xi1, 4)}, ${formatNumber(tr.xi2, 4)}) goes to θ = ${formatNumber(tr.theta, 4)}, φ = ${formatNumber(tr.phi, 4)} (ringed in the square).`
-          : ''}
-      </p>
+      <Stage
+        staged={present}
+        controls={
+          present ? (
+            <>
+              {animSelect}
+              {toggles}
+              {settings}
+            </>
+          ) : undefined
+        }
+      >
+        <div className={present ? 'hemi-figure is-staged' : 'hemi-figure'} ref={box}>
+          <DescribedFigure
+            className="hemi-figure-main"
+            label="Warp of the unit square onto the hemisphere: samples of the chosen density"
+            description={description}
+            playing={tl.playing}
+            testId="hemi-figure"
+          >
+            {lobe ? (
+              <LiveHemisphereView
+                height={present ? stageViewHeight(ask) : 400}
+                tl={tl}
+                lobe={lobe}
+                points={points}
+                kind={kind}
+                seed={seed}
+                n={n}
+                anim={anim}
+                showPoints={showPoints && !ask}
+                showGrid={showGrid}
+                cell={cell}
+              />
+            ) : (
+              <div className="hemi-no-view">{problem}</div>
+            )}
+            {ask ? (
+              // held at t = 0 until revealed: the transport is there, and disabled
+              <fieldset disabled className="hemi-held" data-testid="timeline-held">
+                <legend className="small">The warp stays at t = 0 (the square) until you reveal.</legend>
+                {transport}
+              </fieldset>
+            ) : (
+              transport
+            )}
+            {present ? null : toggles}
+            <FigureReadouts {...text} tracked={!present} />
+            {present ? null : <FigureCaption {...text} />}
+          </DescribedFigure>
+          <div className="hemi-figure-side">
+            <SquareMemo
+              kind={kind}
+              seed={seed}
+              n={n}
+              size={present ? 260 : 240}
+              cell={cell}
+              onPick={onPickCell}
+              captioned={!present}
+            />
+            <StratumControls
+              cell={cell}
+              onPick={onPickCell}
+              text={present ? '' : stratumText}
+              firstCell={firstCell}
+            />
+            {present ? null : settings}
+          </div>
+        </div>
+      </Stage>
+      {present ? (
+        <div className="hemi-after-stage">
+          <FigureReadouts {...text} keys={false} />
+          <FigureCaption {...text} />
+          {cell ? <p className="small">{stratumText}</p> : null}
+        </div>
+      ) : null}
     </>
   );
 }

@@ -233,10 +233,10 @@ export function GpuWarpPanel({ seed }: { seed: number }) {
       <h3>10⁶ directions from a vertex shader</h3>
       <p className="small">
         Each vertex makes its own direction from gl_VertexID (a PCG hash of the index and the seed gives ξ₁,
-        ξ₂), draws it as a point (the hemisphere seen from above: brightness k e^φ per projected area, so it
-        grows with φ only), and writes it by transform feedback to a buffer that is read back for a χ² test
-        against the exam’s pdf (10 × 20 bins of equal solid angle). No sample passes through the CPU on its
-        way to the screen.
+        ξ₂), draws it as a point (the hemisphere seen from above: brightness k e<sup>φ</sup> per projected
+        area, so it grows with φ only), and writes it by transform feedback to a buffer that is read back for
+        a χ² test against the exam’s pdf (10 × 20 bins of equal solid angle). No sample passes through the CPU
+        on its way to the screen.
       </p>
       <div className="gpu-warp-row">
         <canvas

@@ -25,6 +25,8 @@ import { MAX_N } from '../params';
 import type { PointsArgs, PointsChunk } from '../jobs';
 import { streamPoints } from '../pointStream';
 import { xiColor } from './colors';
+import type { Cell } from '../stratum';
+import { patchStratumShader, stratumLayer, stratumUniforms, type StratumLayer } from './stratum3d';
 import { nextTask } from '../../../ui/chunked';
 
 /** New points sent to the GPU per frame (3 MB of buffers): one frame never uploads all of 10⁶. */
@@ -44,6 +46,9 @@ interface Fill {
   target: number;
 }
 
+/** The warped grid recedes while a stratum is followed, so the stratum's outline stands out. */
+const gridOpacity = (cell: Cell | null) => (cell ? 0.35 : 0.9);
+
 export interface HemisphereViewProps {
   lobe: Lobe;
   /** What the points depend on (../jobs pointsArgsOf): the worker draws them from these. */
@@ -55,8 +60,10 @@ export interface HemisphereViewProps {
   frame: AnimFrame;
   showPoints: boolean;
   showGrid: boolean;
-  /** Height of the 3D viewport in CSS pixels (default 380; the scene passes a larger one in present mode). */
-  height?: number;
+  /** The followed stratum (its samples marked, its patch and outline drawn), or null. */
+  cell?: Cell | null;
+  /** Height of the 3D viewport: CSS pixels, or a CSS length (the classroom stage sizes it to the screen). */
+  height?: number | string;
   /**
    * Set to a function that shows another frame directly (per animation frame, without a React
    * render); `frame` is then the frame of the component's last render.
@@ -102,6 +109,7 @@ export function HemisphereView({
   showGrid,
   height = 380,
   drawRef,
+  cell = null,
 }: HemisphereViewProps) {
   const ctxRef = useRef<ViewportContext | null>(null);
   const objs = useRef<{
@@ -115,10 +123,11 @@ export function HemisphereView({
     grid: THREE.LineSegments | null;
     /** The grid's vertices in the square (s = 0) and on the hemisphere (s = 1). */
     gridEnds: { a: Float64Array; b: Float64Array } | null;
+    stratum: StratumLayer;
   } | null>(null);
   const fill = useRef<Fill>({ filled: 0, uploaded: 0, target: frame.shown });
-  const cfg = useRef({ lobe, pointArgs, kind, seed, n, frame, showPoints, showGrid });
-  cfg.current = { lobe, pointArgs, kind, seed, n, frame, showPoints, showGrid };
+  const cfg = useRef({ lobe, pointArgs, kind, seed, n, frame, showPoints, showGrid, cell });
+  cfg.current = { lobe, pointArgs, kind, seed, n, frame, showPoints, showGrid, cell };
   const label = useRef<HTMLSpanElement>(null);
   /** Stops the stream in flight (or the pending restart). */
   const stopStream = useRef<() => void>(() => {});
@@ -219,6 +228,7 @@ export function HemisphereView({
       for (let i = 0; i < arr.length; i++) arr[i] = a[i] * r + b[i] * s; // the model's morphPoint, unrolled
       p.needsUpdate = true;
     }
+    o.stratum.morph(s);
     ctxRef.current?.invalidate();
   };
 
@@ -251,7 +261,11 @@ export function HemisphereView({
     g.setAttribute('color', new T.BufferAttribute(c, 3));
     const lines = new T.LineSegments(
       g,
-      new T.LineBasicMaterial({ vertexColors: true, transparent: true, opacity: 0.9 }),
+      new T.LineBasicMaterial({
+        vertexColors: true,
+        transparent: true,
+        opacity: gridOpacity(cfg.current.cell),
+      }),
     );
     lines.frustumCulled = false;
     lines.visible = cfg.current.showGrid;
@@ -266,6 +280,7 @@ export function HemisphereView({
     const { geom, pos, col, xi } = pointBuffers(T, capacityFor(cfg.current.n));
     const material = new T.PointsMaterial({ size: 3, sizeAttenuation: false, vertexColors: true });
     const morph = { value: cfg.current.frame.s };
+    const strata = stratumUniforms(T);
     // the warp morph on the GPU: mix(square point of (ξ₁, ξ₂), direction, s), as the model's morphPoint
     material.onBeforeCompile = (shader) => {
       shader.uniforms.uMorph = morph;
@@ -275,6 +290,7 @@ export function HemisphereView({
           '#include <begin_vertex>',
           'vec3 transformed = mix(vec3(2.0 * xi.x - 1.0, 2.0 * xi.y - 1.0, 0.0), vec3(position), uMorph);',
         );
+      patchStratumShader(shader, strata);
     };
     material.customProgramCacheKey = () => 'hemisphere-morph';
     const points = new T.Points(geom, material);
@@ -333,7 +349,9 @@ export function HemisphereView({
     ctx.controls.target.set(0, 0, 0.3);
     ctx.controls.update();
 
-    objs.current = { geom, pos, col, xi, points, material, morph, grid: null, gridEnds: null };
+    const stratum = stratumLayer(ctx, strata);
+    stratum.set(cfg.current.lobe, cfg.current.cell);
+    objs.current = { geom, pos, col, xi, points, material, morph, grid: null, gridEnds: null, stratum };
     // level of detail while orbiting: the sets are prefixes of well-spread sequences (except the
     // stratified set, whose prefix fills rows in order, so it is always drawn in full)
     const onStart = () => {
@@ -370,6 +388,7 @@ export function HemisphereView({
       stop();
       ctx.controls.removeEventListener('start', onStart);
       ctx.controls.removeEventListener('end', onEnd);
+      stratum.dispose();
       objs.current = null;
       ctxRef.current = null;
     };
@@ -399,6 +418,17 @@ export function HemisphereView({
   const pointsKey = JSON.stringify(pointArgs);
   useEffect(() => onPointsChange.current(), [lobe, pointsKey]);
 
+  // the followed stratum: its patch and outline for this lobe, its samples marked by the shader
+  const onCellChange = useRef(() => {});
+  onCellChange.current = () => {
+    const o = objs.current;
+    if (!o) return;
+    o.stratum.set(lobe, cell);
+    if (o.grid) (o.grid.material as THREE.LineBasicMaterial).opacity = gridOpacity(cell);
+    apply();
+  };
+  useEffect(() => onCellChange.current(), [lobe, cell]);
+
   // every timeline position: the new target and morph (the fill loop runs only if points are missing)
   const onFrameChange = useRef(() => {});
   onFrameChange.current = () => {
@@ -426,7 +456,7 @@ export function HemisphereView({
   return (
     <div className="hemi-3d">
       <Viewport
-        ariaLabel="Samples of the chosen density: (ξ₁, ξ₂) points and grid in the unit square travelling to their directions on the upper hemisphere, coloured by (ξ₁, ξ₂)"
+        ariaLabel={`3D view: ${formatCount(n)} samples of p(ω) = ${lobe.label}, (ξ₁, ξ₂) points and grid travelling from the unit square to their directions on the upper hemisphere${cell ? `; stratum (${cell.i}, ${cell.j}) marked` : ''}`}
         height={height}
         setup={setup}
         testId="hemisphere-3d"

@@ -27,10 +27,11 @@ export function InvertedJacobian() {
     <div className="inverted" data-testid="inverted-jacobian">
       <Notice kind="warn" testId="inverted-message">
         Not integrable: with the identity as printed on the exam paper, p(ω) = sin θ p(θ, φ), the change of
-        variables gives p(θ, φ) = p(ω)/sin θ = k cot θ e^φ, and the key&apos;s marginal p(θ) = 2 cot θ has
-        ∫₀^π/2 2 cot θ dθ = ∞ (it diverges at θ → 0). No constant normalizes it, so there is no CDF to invert
-        and nothing to sample: the χ² test and the importance estimate are off (their readouts say “none”).
-        The key grades this route leniently; the correct identity is p(θ, φ) = sin θ p(ω).
+        variables gives p(θ, φ) = p(ω)/sin θ = k cot θ e<sup>φ</sup>, and the key&apos;s marginal p(θ) = 2 cot
+        θ has ∫₀<sup>π/2</sup> 2 cot θ dθ = ∞ (it diverges at θ → 0). No constant normalizes it, so there is
+        no CDF to invert and nothing to sample: the χ² test and the importance estimate are off (their
+        readouts say “none”). The key grades this route leniently; the correct identity is p(θ, φ) = sin θ
+        p(ω).
       </Notice>
       <MathTex
         display

@@ -4,12 +4,14 @@
  * test's expected counts), with their standardized difference (O − E)/√E.
  */
 import { useMemo } from 'react';
-import { Plot, type PlotTrace } from '../../../ui';
-import { TWO_PI } from '../../../core/sampling';
-import { LEGEND_INSIDE, titled } from './plotTitle';
-import type { DrawStats } from '../model';
+import { AudioTrace, Plot, ShowAsTable, type PlotTrace, type TraceEvent } from '../../../ui';
+import { HALF_PI, TWO_PI } from '../../../core/sampling';
+import { LEGEND_ABOVE, titled } from './plotTitle';
+import type { DrawStats, Lobe } from '../model';
+import { marginalShape } from '../marginals';
+import { chi2Bin, describeChi2Bins, describeMarginal } from './describe';
 
-function histTraces(h: NonNullable<DrawStats['hist']>['theta'], name: string): PlotTrace[] {
+function histTraces(h: MarginalHist, name: string): PlotTrace[] {
   return [
     {
       type: 'bar',
@@ -19,48 +21,95 @@ function histTraces(h: NonNullable<DrawStats['hist']>['theta'], name: string): P
       name: `samples`,
       marker: { color: 'rgba(70,120,200,0.55)' },
     },
-    {
-      type: 'scatter',
-      mode: 'lines',
-      x: Array.from(h.curveX),
-      y: Array.from(h.curveY),
-      name: `p(${name})`,
-      line: { color: '#d0502a', width: 2.5 },
-    },
+    modelCurve(h.curveX, h.curveY, `p(${name})`),
   ];
 }
 
-export function MarginalPlots({ stats }: { stats: DrawStats }) {
+type MarginalHist = NonNullable<DrawStats['hist']>['theta'];
+
+/** The model's curve (a density or a CDF) beside the samples: one colour and width in every plot. */
+export function modelCurve(x: ArrayLike<number>, y: ArrayLike<number>, name: string): PlotTrace {
+  return {
+    type: 'scatter',
+    mode: 'lines',
+    x: Array.from(x),
+    y: Array.from(y),
+    name,
+    line: { color: '#d0502a', width: 2.5 },
+  };
+}
+
+/** A tick where the density has an interior peak (a horizontal tangent), for the audio trace. */
+function peakEvents(f: (x: number) => number, lo: number, hi: number, v: string): TraceEvent[] {
+  const s = marginalShape(f, lo, hi);
+  const span = hi - lo;
+  return !s.flat && s.peak > lo + 0.01 * span && s.peak < hi - 0.01 * span
+    ? [{ x: s.peak, kind: 'tangent', label: `peak of p(${v})` }]
+    : [];
+}
+
+/** One marginal: the histogram against p, its description, its audio trace and its table. */
+function MarginalPlot({
+  h,
+  v,
+  n,
+  pdf,
+  hi,
+  testId,
+}: {
+  h: MarginalHist;
+  v: 'θ' | 'φ';
+  n: number;
+  pdf: (x: number) => number;
+  hi: number;
+  testId: string;
+}) {
+  const traces = useMemo(() => histTraces(h, v), [h, v]);
+  const description = useMemo(() => describeMarginal(h, v, n, pdf), [h, v, n, pdf]);
+  const events = useMemo(() => peakEvents(pdf, 0, hi, v), [pdf, hi, v]);
+  const rows = useMemo(() => Array.from(h.centers, (c, b) => [c, h.density[b], pdf(c)]), [h, pdf]);
+  const name = v === 'θ' ? 'polar angles θ' : 'azimuths φ';
+  return (
+    <div className="hemi-marginal">
+      <Plot
+        label={`Histogram of the sampled ${name} against the marginal density p(${v})`}
+        description={description}
+        data={traces}
+        layout={{
+          ...titled(`${v}: histogram vs p(${v})`, true),
+          xaxis: { title: { text: `${v} (rad)` }, range: [0, hi] },
+          yaxis: { title: { text: 'density' } },
+          bargap: 0,
+          legend: LEGEND_ABOVE,
+        }}
+        testId={testId}
+      />
+      <AudioTrace
+        label={`histogram of ${v}`}
+        xs={h.centers}
+        ys={h.density}
+        xLabel={v}
+        yLabel="density"
+        events={events}
+        testId={`${testId}-audio`}
+      />
+      <ShowAsTable
+        caption={`Histogram of ${v}: density of the samples in each bin and p(${v}) at its centre`}
+        columns={[`${v} (bin centre, rad)`, 'samples (density)', `p(${v})`]}
+        rows={rows}
+        testId={`${testId}-table`}
+      />
+    </div>
+  );
+}
+
+export function MarginalPlots({ stats, lobe }: { stats: DrawStats; lobe: Lobe }) {
   const hist = stats.hist;
-  const theta = useMemo(() => (hist ? histTraces(hist.theta, 'θ') : []), [hist]);
-  const phi = useMemo(() => (hist ? histTraces(hist.phi, 'φ') : []), [hist]);
   if (!hist) return null;
   return (
     <div className="hemi-plot-grid">
-      <Plot
-        ariaLabel="Histogram of the sampled polar angles θ against the marginal density p(θ)"
-        data={theta}
-        layout={{
-          ...titled('θ: histogram vs p(θ)'),
-          xaxis: { title: { text: 'θ (rad)' }, range: [0, Math.PI / 2] },
-          yaxis: { title: { text: 'density' } },
-          bargap: 0,
-          legend: LEGEND_INSIDE,
-        }}
-        testId="plot-theta"
-      />
-      <Plot
-        ariaLabel="Histogram of the sampled azimuths φ against the marginal density p(φ)"
-        data={phi}
-        layout={{
-          ...titled('φ: histogram vs p(φ)'),
-          xaxis: { title: { text: 'φ (rad)' }, range: [0, TWO_PI] },
-          yaxis: { title: { text: 'density' } },
-          bargap: 0,
-          legend: LEGEND_INSIDE,
-        }}
-        testId="plot-phi"
-      />
+      <MarginalPlot h={hist.theta} v="θ" n={stats.n} pdf={lobe.thetaPdf} hi={HALF_PI} testId="plot-theta" />
+      <MarginalPlot h={hist.phi} v="φ" n={stats.n} pdf={lobe.phiPdf} hi={TWO_PI} testId="plot-phi" />
     </div>
   );
 }
@@ -77,19 +126,21 @@ export function Histogram2D({ stats }: { stats: DrawStats }) {
       Array.from({ length: nc }, (_, i) => Array.from({ length: np }, (_, j) => f(i * np + j)));
     const obs = rows((k) => chi2.observed[k]);
     const exp = rows((k) => chi2.expected[k]);
-    const diff = rows((k) => {
-      const e = chi2.expected[k];
-      return e > 0 ? (chi2.observed[k] - e) / Math.sqrt(e) : 0;
-    });
+    const diff = rows((k) => chi2Bin(chi2, k).z);
     let zmax = 0;
     for (let k = 0; k < nc * np; k++) zmax = Math.max(zmax, chi2.observed[k], chi2.expected[k]);
-    return { x, y, obs, exp, diff, zmax };
+    const table = Array.from({ length: nc * np }, (_, k) => {
+      const b = chi2Bin(chi2, k);
+      return [b.cosTheta, b.phi, b.o, b.e, b.z];
+    });
+    return { x, y, obs, exp, diff, zmax, table, description: describeChi2Bins(chi2) };
   }, [chi2]);
   if (!data) return null;
   const axes = { xaxis: { title: { text: 'φ' } }, yaxis: { title: { text: 'cos θ' } } };
-  const heat = (z: number[][], title: string, ariaLabel: string, diverging = false) => (
+  const heat = (z: number[][], title: string, label: string, diverging = false) => (
     <Plot
-      ariaLabel={ariaLabel}
+      label={label}
+      description={data.description}
       height={240}
       data={[
         {
@@ -108,15 +159,23 @@ export function Histogram2D({ stats }: { stats: DrawStats }) {
     />
   );
   return (
-    <div className="hemi-plot-grid three">
-      {heat(data.obs, 'observed', 'Observed counts in bins of equal solid angle')}
-      {heat(data.exp, 'expected N∫p dω', 'Expected counts: the density integrated over each bin')}
-      {heat(
-        data.diff,
-        '(O − E)/√E',
-        'Standardized difference (observed minus expected) over the square root of expected',
-        true,
-      )}
-    </div>
+    <>
+      <div className="hemi-plot-grid three">
+        {heat(data.obs, 'observed', 'Observed counts in bins of equal solid angle')}
+        {heat(data.exp, 'expected N∫p dω', 'Expected counts: the density integrated over each bin')}
+        {heat(
+          data.diff,
+          '(O − E)/√E',
+          'Standardized difference (observed minus expected) over the square root of expected',
+          true,
+        )}
+      </div>
+      <ShowAsTable
+        caption="The χ² bins: centre (cos θ, φ), observed and expected counts, (O − E)/√E"
+        columns={['cos θ', 'φ (rad)', 'observed', 'expected', '(O − E)/√E']}
+        rows={data.table}
+        testId="chi2-table"
+      />
+    </>
   );
 }

@@ -161,11 +161,11 @@ export function lobeExplanation(lobe: LobeId, exponent: number, fIsCos: boolean)
   if (!fIsCos) return 'p is not shaped like f here, so f/p is large where p is small compared with f.';
   switch (lobe) {
     case 'exam':
-      return 'For the exam lobe and f = cos θ, f/p = e^(−φ)/k: p grows like e^φ while f does not depend on φ, so the terms are huge near φ = 0 where p is small.';
+      return 'For the exam lobe and f = cos θ, f/p = e⁻ᵠ/k: p grows like eᵠ while f does not depend on φ, so the terms are huge near φ = 0 where p is small.';
     case 'phong':
       return exponent > 1
-        ? `For the Phong lobe with n = ${formatNumber(exponent, 6)} and f = cos θ, f/p = 2π cos^(1−n) θ/(n + 1): p vanishes faster than f at the horizon, so the terms blow up there${exponent >= 3 ? ' (infinite variance for n ≥ 3)' : ''}.`
-        : `For the Phong lobe with n = ${formatNumber(exponent, 6)} and f = cos θ, f/p = 2π cos^(1−n) θ/(n + 1) stays bounded.`;
+        ? `For the Phong lobe with n = ${formatNumber(exponent, 6)} and f = cos θ, f/p = 2π cos¹⁻ⁿ θ/(n + 1): p vanishes faster than f at the horizon, so the terms blow up there${exponent >= 3 ? ' (infinite variance for n ≥ 3)' : ''}.`
+        : `For the Phong lobe with n = ${formatNumber(exponent, 6)} and f = cos θ, f/p = 2π cos¹⁻ⁿ θ/(n + 1) stays bounded.`;
     case 'cosine':
       return 'For the cosine lobe and f = cos θ, f/p = π for every sample: p is exactly proportional to f (zero variance).';
     case 'uniform':
@@ -195,7 +195,7 @@ export function VarianceWarning({
         estimate is still unbiased, but its standard error means nothing, it converges slower than 1/√N, and
         rare huge terms make it jump.{' '}
         {lobe === 'phong' && fIsCos
-          ? `Here f/p ∝ cos^(1−n) θ, so f²/p ∝ cos^(2−n) θ and ∫ cos^(2−n) θ sin θ dθ diverges at the horizon for n ≥ 3 (n = ${formatNumber(exponent, 6)}).`
+          ? `Here f/p ∝ cos¹⁻ⁿ θ, so f²/p ∝ cos²⁻ⁿ θ and ∫ cos²⁻ⁿ θ sin θ dθ diverges at the horizon for n ≥ 3 (n = ${formatNumber(exponent, 6)}).`
           : lobeExplanation(lobe, exponent, fIsCos)}
       </Notice>
     );

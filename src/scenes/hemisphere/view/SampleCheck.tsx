@@ -5,24 +5,25 @@
 import { formatNumber, Readout } from '../../../ui';
 import { formatCount } from '../../../ui/format';
 import type { SequenceKind } from '../../../core/random';
-import type { DrawStats } from '../model';
+import type { DrawStats, Lobe } from '../model';
 import { Histogram2D, MarginalPlots } from './Plots';
 
 export function SampleCheck({
   current,
-  sampled,
+  lobe,
   inverted,
   kind,
   n,
 }: {
   /** The statistics of the current draw (null while they are computed). */
   current: DrawStats | null;
-  /** Whether there is a density to sample. */
-  sampled: boolean;
+  /** The sampled density (null: none). */
+  lobe: Lobe | null;
   inverted: boolean;
   kind: SequenceKind;
   n: number;
 }) {
+  const sampled = !!lobe;
   const samples = current && sampled ? current.n : null;
   const chi2 = current?.chi2 ?? null;
   return (
@@ -31,14 +32,14 @@ export function SampleCheck({
         <Readout id="samples" label="samples drawn" value={samples} />
         <Readout id="chi2-p" label="χ² p-value" value={chi2 ? chi2.pValue : null} digits={4} />
       </div>
-      {sampled ? (
+      {lobe ? (
         current ? (
           <>
             <p className="small">
               Do the samples follow p? Histograms of θ and φ against p(θ) and p(φ), and a χ² test on bins of
               equal solid angle.
             </p>
-            <MarginalPlots stats={current} />
+            <MarginalPlots stats={current} lobe={lobe} />
             <Histogram2D stats={current} />
             {chi2 ? (
               <p data-testid="chi2-verdict" className={chi2.pass ? 'verdict ok' : 'verdict bad'}>

@@ -8,7 +8,7 @@ import type { WorkerJob } from '../../../workers';
 import { MAX_N, POINT_SETS, type HemisphereParams, type HemisphereSchema, type LobeId } from '../params';
 
 const LOBE_OPTIONS: { value: LobeId; label: string }[] = [
-  { value: 'exam', label: 'exam: k cos θ e^φ' },
+  { value: 'exam', label: 'exam: k cos θ eᵠ' },
   { value: 'uniform', label: 'uniform' },
   { value: 'cosine', label: 'cosine-weighted' },
   { value: 'phong', label: 'Phong cosⁿθ' },

@@ -1,12 +1,18 @@
 /**
  * The unit square of (ξ₁, ξ₂): the first points of the chosen set and the 8 × 8 grid whose image
  * the 3D view draws on the hemisphere, in the same colours. Redrawn only when the inputs change.
+ * The followed stratum is outlined and the rest of the square veiled (an SVG layer over the
+ * pixels, so a new choice redraws nothing); its cells are radio buttons over the plot.
  */
 import { formatCount } from '../../../ui/format';
 import { useEffect, useMemo, useRef } from 'react';
 import { fillSequence2D, type SequenceKind } from '../../../core/random';
 import { nextTask, runChunked } from '../../../ui/chunked';
 import { xiColor } from './colors';
+import { CELLS, cellBounds, cellCounts, type Cell } from '../stratum';
+import { ShowAsTable } from '../../../ui';
+import { describeSquare } from './describe';
+import { StratumCells, type PickCell } from './StratumPicker';
 
 const MAX_SHOWN = 4096;
 
@@ -21,12 +27,21 @@ export function UnitSquare({
   kind,
   seed,
   n,
-  size = 220,
+  size = 240,
+  cell = null,
+  onPick,
+  captioned = true,
 }: {
   kind: SequenceKind;
   seed: number;
   n: number;
+  /** Side in CSS px: 240 or more keeps each of the 64 cells a 24 px target (WCAG 2.5.8). */
   size?: number;
+  /** The followed stratum (null: none) and the way to choose another (absent: no picking). */
+  cell?: Cell | null;
+  onPick?: PickCell;
+  /** Show the caption under the square (the classroom stage leaves it out). */
+  captioned?: boolean;
 }) {
   const canvas = useRef<HTMLCanvasElement>(null);
   const shown = Math.min(n, MAX_SHOWN);
@@ -35,6 +50,15 @@ export function UnitSquare({
   const first = useMemo(
     () => (shown > 0 ? fillSequence2D(kind, seed, n, new Float64Array(2), 0, 1, 0) : null),
     [kind, seed, n, shown],
+  );
+  const counts = useMemo(() => cellCounts(kind, seed, n, shown), [kind, seed, n, shown]);
+  const rows = useMemo(
+    () =>
+      Array.from({ length: CELLS }, (_, r) => {
+        const j = CELLS - 1 - r; // the top row first, as drawn
+        return [`${j}`, ...Array.from({ length: CELLS }, (_, i) => String(counts[j * CELLS + i]))];
+      }),
+    [counts],
   );
   useEffect(() => {
     const c = canvas.current;
@@ -122,10 +146,11 @@ export function UnitSquare({
           ref={canvas}
           style={{ width: size, height: size }}
           role="img"
-          aria-label={`The unit square of (ξ₁, ξ₂) with the first ${shown} points of the ${kind} set and the grid whose image is drawn on the hemisphere`}
+          aria-label={`The unit square of (ξ₁, ξ₂) and the grid whose image is drawn on the hemisphere: ${describeSquare(counts, shown, n, kind)}`}
         />
         <svg viewBox={`0 0 ${size} ${size}`} width={size} height={size} aria-hidden="true" focusable="false">
           <rect x={X(0)} y={Y(1)} width={s} height={s} fill="none" stroke="currentColor" strokeWidth={1} />
+          {cell ? <StratumMark cell={cell} X={X} Y={Y} /> : null}
           {first && (
             <circle
               cx={X(first[0])}
@@ -136,24 +161,74 @@ export function UnitSquare({
               strokeWidth={2}
             />
           )}
-          <g fill="currentColor" fontSize={12} fontFamily="sans-serif">
-            <text x={X(1) - 30} y={Y(0) + 16}>
+          <g
+            fill="currentColor"
+            style={{ fontSize: 'var(--tick-size, 12px)' }}
+            fontFamily="sans-serif"
+            textAnchor="middle"
+            dominantBaseline="hanging"
+          >
+            <text x={X(0.5)} y={Y(0) + 3}>
               ξ₁ →
             </text>
-            <text x={X(0) - 4} y={Y(0) + 16}>
+            <text x={X(0)} y={Y(0) + 3}>
               0
             </text>
-            <text x={X(1) - 4} y={Y(0) + 16}>
+            <text x={X(1)} y={Y(0) + 3}>
               1
             </text>
-            <text transform={`translate(${X(0) - 8} ${Y(0.5)}) rotate(-90)`}>ξ₂ →</text>
+            <text transform={`translate(${X(0) - 3} ${Y(0.5)}) rotate(-90)`} dominantBaseline="auto">
+              ξ₂ →
+            </text>
           </g>
         </svg>
+        {onPick ? <StratumCells cell={cell} onPick={onPick} inset={22 / size} /> : null}
       </div>
-      <figcaption>
+      <figcaption className={captioned ? undefined : 'sr-only'}>
         (ξ₁, ξ₂): first {formatCount(shown)} {kind} points; each colour lands where the same colour appears on
         the hemisphere; the ringed point is the first sample.
+        {cell ? ` The outlined cell is the followed stratum (${cell.i}, ${cell.j}).` : ''}
       </figcaption>
+      <ShowAsTable
+        caption={`Points of the square in each cell (first ${formatCount(shown)}): rows j of ξ₂ from the top, columns i of ξ₁`}
+        columns={['j \\ i', ...Array.from({ length: CELLS }, (_, i) => String(i))]}
+        rows={rows}
+        testId="square-table"
+      />
     </figure>
+  );
+}
+
+/** The followed cell: the rest of the square veiled, the cell outlined twice (dark and light, for both themes). */
+function StratumMark({ cell, X, Y }: { cell: Cell; X: (a: number) => number; Y: (b: number) => number }) {
+  const { xi1, xi2 } = cellBounds(cell);
+  const x0 = X(xi1[0]);
+  const x1 = X(xi1[1]);
+  const y0 = Y(xi2[1]);
+  const y1 = Y(xi2[0]);
+  const outer = `M${X(0)} ${Y(1)}H${X(1)}V${Y(0)}H${X(0)}Z`;
+  const hole = `M${x0} ${y0}V${y1}H${x1}V${y0}Z`;
+  return (
+    <g data-testid="stratum-mark">
+      <path d={`${outer}${hole}`} fillRule="evenodd" style={{ fill: 'var(--surface)' }} opacity={0.72} />
+      <rect
+        x={x0}
+        y={y0}
+        width={x1 - x0}
+        height={y1 - y0}
+        fill="none"
+        stroke="currentColor"
+        strokeWidth={3}
+      />
+      <rect
+        x={x0 + 2}
+        y={y0 + 2}
+        width={x1 - x0 - 4}
+        height={y1 - y0 - 4}
+        fill="none"
+        style={{ stroke: 'var(--surface)' }}
+        strokeWidth={1}
+      />
+    </g>
   );
 }

@@ -1,14 +1,18 @@
 /**
  * A plot title pinned inside the top of the plot's box (container coordinates) with a top margin
- * that fits it at classroom font sizes, so it is never clipped above the plot (present=1).
+ * that fits it at classroom font sizes, so it is never clipped above the plot (present=1); with
+ * `legendRow`, the margin also holds a row for the legend between the title and the plot.
  */
-export function titled(text: string): {
+export function titled(
+  text: string,
+  legendRow = false,
+): {
   title: Record<string, unknown>;
   margin: { l: number; r: number; t: number; b: number };
 } {
   return {
     title: { text, y: 1, yref: 'container', yanchor: 'top', pad: { t: 6 } },
-    margin: { l: 56, r: 16, t: 46, b: 44 },
+    margin: { l: 56, r: 16, t: legendRow ? 76 : 46, b: 44 },
   };
 }
 
@@ -19,5 +23,18 @@ export const LEGEND_INSIDE = {
   y: 0.98,
   xanchor: 'left',
   yanchor: 'top',
+  bgcolor: 'rgba(0,0,0,0)',
+};
+
+/**
+ * Legend in one row above the plot area, under the title (use with `titled(…, true)`): outside the
+ * bars and curves whatever their shape, at any width (on a phone a legend inside covered bars).
+ */
+export const LEGEND_ABOVE = {
+  orientation: 'h',
+  x: 0,
+  y: 1.02,
+  xanchor: 'left',
+  yanchor: 'bottom',
   bgcolor: 'rgba(0,0,0,0)',
 };

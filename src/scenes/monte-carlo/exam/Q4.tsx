@@ -1,27 +1,41 @@
 /**
  * Exam Q4's introduction: what the question asks, a way back to the exam's configuration when the
- * page's settings differ, and the race of uniform against importance sampling that (d) refers to.
+ * page's settings differ, the answers first, and the race of uniform against importance sampling
+ * that (d) refers to (in classroom mode the race is the stage above, and the answers follow here).
  */
-import { EXAM_A, EXAM_B, EXAM_F, EXAM_SAMPLES } from '../model';
-import { RaceSection, type RaceInput } from '../view/RaceSection';
+import type { ReactNode } from 'react';
+import { Revealed } from '../../../ui';
+import { EXAM_A, EXAM_B, EXAM_F, EXAM_SAMPLES, type Exact, type SampleTable } from '../model';
+import { RaceDataSection, type RaceInput } from '../view/RaceSection';
+import { Q4Answers } from './Q4Answers';
 
 export function Q4Intro({
   isExamConfig,
   onExamConfig,
   race,
-  importanceLabel,
+  input,
   t,
-  play,
-  setRace,
+  exact,
+  table,
+  ask,
 }: {
   isExamConfig: boolean;
   onExamConfig: (patch: { f: string; a: number; b: number; samples: number[] }) => void;
-  race: RaceInput | null;
-  importanceLabel: string;
+  /** The race, or null when it is the stage (classroom mode). */
+  race: ReactNode;
+  input: RaceInput | null;
+  /** The race's paused position (for its table and audio traces). */
   t: number;
-  play: boolean;
-  setRace: (patch: { t?: number; play?: boolean }) => void;
+  exact: Exact | null;
+  table: SampleTable | null;
+  /** ask=1, not yet revealed. */
+  ask: boolean;
 }) {
+  const answers = (
+    <Revealed ask={ask} what="the answers (a)–(c)" minHeight="6rem">
+      <Q4Answers exact={exact} table={table} isExamConfig={isExamConfig} />
+    </Revealed>
+  );
   return (
     <>
       <p>
@@ -42,16 +56,12 @@ export function Q4Intro({
           </>
         ) : null}
       </p>
-      <RaceSection
-        input={race}
-        importanceLabel={importanceLabel}
-        t={t}
-        play={play}
-        setParams={setRace}
-        fallback={
-          <p className="mc-note">The animation needs a finite integral and a usable importance pdf.</p>
-        }
-      />
+      {race ? answers : null}
+      {race}
+      <Revealed ask={ask} what="the race as a table and as sound">
+        <RaceDataSection input={input} t={t} />
+      </Revealed>
+      {race ? null : answers}
     </>
   );
 }

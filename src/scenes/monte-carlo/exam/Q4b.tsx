@@ -4,7 +4,7 @@
  * given samples, the chosen pdf and sequence) follows as `estimate`.
  */
 import type { ReactNode } from 'react';
-import { Derivation, ExamPart, formatNumber, LiveAnswer, MathTex, Readout } from '../../../ui';
+import { Derivation, ExamPart, Revealed, formatNumber, LiveAnswer, MathTex, Readout } from '../../../ui';
 import { formatCount } from '../../../ui/format';
 import { EXAM_SAMPLES, roundTo, type KeyNote, type SampleTable } from '../model';
 import type { PdfKind, Strategy } from '../params';
@@ -24,6 +24,7 @@ export function Q4b({
   keyNotes,
   onSamples,
   estimate,
+  ask,
 }: {
   table: SampleTable;
   /** The shift of f = (x + c)², or null when f is no such square. */
@@ -39,6 +40,8 @@ export function Q4b({
   keyNotes: KeyNote[];
   onSamples: (samples: number[] | null) => void;
   estimate: ReactNode;
+  /** ask=1, not yet revealed: the derivation and the answer are hidden. */
+  ask: boolean;
 }) {
   const rows = table.rows.filter((r) => !r.outside);
   const N = rows.length;
@@ -56,56 +59,58 @@ export function Q4b({
         </>
       }
     >
-      <Derivation testId="derivation-4b">
-        <p>
-          The pdf is p = 1/(b − a) = {formatNumber(p, 6)}. Evaluate f at each sample, divide by p, and average
-          over the N = {N} samples:
-        </p>
-        <MathBlock>
-          <MathTex
-            display
-            tex={String.raw`\begin{aligned} ${rows.map((r, i) => `f(x_${i + 1}) &= ${c === null ? '' : `${squareAt(r.x, c)} = `}${n4(r.f)}`).join(' \\\\ ')} \end{aligned}`}
-          />
-          <MathTex
-            display
-            tex={String.raw`\begin{aligned} \langle I\rangle &= \frac{1}{${N}}\sum_{i=1}^{${N}} \frac{f(x_i)}{p(x_i)} \\ &= \frac{1}{${N}\cdot ${n4(p)}}\,\big(${sumRows(rows.map((r) => n4(r.f)))}\big) \\ &= \frac{${n4(sum)}}{${N}\cdot ${n4(p)}} = ${formatNumber(est, 8)} \end{aligned}`}
-          />
-        </MathBlock>
-      </Derivation>
-      <LiveAnswer testId="answer-4b">
-        <div className="readouts mc-headline">
-          <Readout
-            id="q4-uniform"
-            label="uniform ⟨I⟩ = (b − a)/N Σ f(xᵢ)"
-            value={table.uniform.invalid ? null : table.uniform.estimate}
-            digits={6}
-            note={
-              table.uniform.invalid
-                ? undefined
-                : `to 2 decimals, as the exam writes it: ${roundTo(table.uniform.estimate, 2).toFixed(2)}`
-            }
-          />
-        </div>
-        <SampleRows table={table} pdfOk={pdfOk} pdfKind={pdfKind} />
-        <div className="mc-buttons">
-          {given ? (
-            <button type="button" onClick={() => onSamples(null)}>
-              Draw N samples instead
-            </button>
-          ) : (
-            <button type="button" onClick={() => onSamples([...EXAM_SAMPLES])}>
-              Use these four samples for the estimate
-            </button>
-          )}
-        </div>
-        <h5 className="mc-subhead">
-          With the page’s settings ({given ? 'the given samples' : `N = ${formatCount(n)} drawn samples`}, pdf{' '}
-          {pdfKind}, {seq})
-        </h5>
-        {estimate}
-      </LiveAnswer>
-      <SumIndexNote part="4b" />
-      <KeyFigures keyNotes={keyNotes} a={a} b={b} />
+      <Revealed ask={ask} what="the derivation and the answer">
+        <Derivation testId="derivation-4b">
+          <p>
+            The pdf is p = 1/(b − a) = {formatNumber(p, 6)}. Evaluate f at each sample, divide by p, and
+            average over the N = {N} samples:
+          </p>
+          <MathBlock>
+            <MathTex
+              display
+              tex={String.raw`\begin{aligned} ${rows.map((r, i) => `f(x_${i + 1}) &= ${c === null ? '' : `${squareAt(r.x, c)} = `}${n4(r.f)}`).join(' \\\\ ')} \end{aligned}`}
+            />
+            <MathTex
+              display
+              tex={String.raw`\begin{aligned} \langle I\rangle &= \frac{1}{${N}}\sum_{i=1}^{${N}} \frac{f(x_i)}{p(x_i)} \\ &= \frac{1}{${N}\cdot ${n4(p)}}\,\big(${sumRows(rows.map((r) => n4(r.f)))}\big) \\ &= \frac{${n4(sum)}}{${N}\cdot ${n4(p)}} = ${formatNumber(est, 8)} \end{aligned}`}
+            />
+          </MathBlock>
+        </Derivation>
+        <LiveAnswer testId="answer-4b">
+          <div className="readouts mc-headline">
+            <Readout
+              id="q4-uniform"
+              label="uniform ⟨I⟩ = (b − a)/N Σ f(xᵢ)"
+              value={table.uniform.invalid ? null : table.uniform.estimate}
+              digits={6}
+              note={
+                table.uniform.invalid
+                  ? undefined
+                  : `to 2 decimals, as the exam writes it: ${roundTo(table.uniform.estimate, 2).toFixed(2)}`
+              }
+            />
+          </div>
+          <SampleRows table={table} pdfOk={pdfOk} pdfKind={pdfKind} />
+          <div className="mc-buttons">
+            {given ? (
+              <button type="button" onClick={() => onSamples(null)}>
+                Draw N samples instead
+              </button>
+            ) : (
+              <button type="button" onClick={() => onSamples([...EXAM_SAMPLES])}>
+                Use these four samples for the estimate
+              </button>
+            )}
+          </div>
+          <h5 className="mc-subhead">
+            With the page’s settings ({given ? 'the given samples' : `N = ${formatCount(n)} drawn samples`},
+            pdf {pdfKind}, {seq})
+          </h5>
+          {estimate}
+        </LiveAnswer>
+        <SumIndexNote part="4b" />
+        <KeyFigures keyNotes={keyNotes} a={a} b={b} />
+      </Revealed>
     </ExamPart>
   );
 }

@@ -1,13 +1,14 @@
 /** Convergence as N grows: running estimate and |error| log-log with guides and fitted slopes (one run per strategy, in the worker). */
 import { useEffect, useMemo, useRef } from 'react';
-import { formatNumber, Panel, Plot, useThrottled, type PlotTrace } from '../../../ui';
+import { formatNumber, Panel, useThrottled, type PlotTrace } from '../../../ui';
 import { useAutoRun, type WorkerFactory } from '../../../workers';
 import { atRoundingLevel } from '../model';
 import { formatCount } from '../../../ui/format';
 import type { ProblemArgs, SeriesData } from '../jobs';
 import { REDRAW_MS, useLegendRoom } from './hooks';
-import { arr, COLORS, Heading, L_ERR, L_EST, RunBar } from './plotStyle';
+import { arr, L_ERR, L_EST, REFERENCE, RunBar, DescribedPlot, strategyLine } from './plotStyle';
 import type { McTasks } from '../mc.worker';
+import { describeSeriesSet, seriesTable } from './plotWords';
 
 export function ConvergencePanel({
   args,
@@ -46,7 +47,7 @@ export function ConvergencePanel({
       x: arr(s.n),
       y: arr(s.estimate),
       name: s.label,
-      line: { color: COLORS[i % COLORS.length], width: 2 },
+      line: strategyLine(i),
     }));
     if (series.length && Number.isFinite(ref)) {
       const nm = Math.max(1, nMax);
@@ -56,7 +57,7 @@ export function ConvergencePanel({
         x: [1, nm],
         y: [ref, ref],
         name: `exact ${formatNumber(ref, 8)}`,
-        line: { color: '#777', dash: 'dot', width: 2 },
+        line: { color: REFERENCE, dash: 'dot', width: 2 },
       });
     }
     return t;
@@ -74,7 +75,7 @@ export function ConvergencePanel({
         x: arr(s.n),
         y: arr(s.absError).map((e) => (e > 0 ? e : null)),
         name: `${s.label} (slope ${Number.isFinite(s.slope) ? s.slope.toFixed(2) : '—'})`,
-        line: { color: COLORS[i % COLORS.length], width: 2 },
+        line: strategyLine(i),
       });
     });
     // guides anchored on the first strategy (uniform · independent): its median |error|·√N
@@ -91,21 +92,38 @@ export function ConvergencePanel({
         mode: 'lines',
         x: [1, nm],
         y: [c, c / Math.sqrt(nm)],
-        name: 'N^−1/2 guide',
-        line: { color: '#888', dash: 'dash', width: 1.5 },
+        name: 'N⁻½ guide',
+        line: { color: REFERENCE, dash: 'dash', width: 1.5 },
       });
       t.push({
         type: 'scatter',
         mode: 'lines',
         x: [1, nm],
         y: [c, c / nm],
-        name: 'N^−1 guide',
-        line: { color: '#888', dash: 'dot', width: 1.5 },
+        name: 'N⁻¹ guide',
+        line: { color: REFERENCE, dash: 'dot', width: 1.5 },
       });
     }
     return t;
   }, [series, ref, nMax]);
 
+  // the plots in words and as tables
+  const words = useMemo(() => {
+    const est = series.map((s) => ({ label: s.label, xs: s.n, ys: s.estimate }));
+    const err = series
+      .filter((s) => !atRoundingLevel(s.absError, ref))
+      .map((s) => ({ label: s.label, xs: s.n, ys: s.absError }));
+    const empty = 'No run yet.';
+    return {
+      est: `${describeSeriesSet(est, { xLabel: 'N', yLabel: 'the estimate', empty })} Exact: ${formatNumber(ref, 8)}.`,
+      err: describeSeriesSet(err, { xLabel: 'N', yLabel: '|error|', logLog: true, empty }),
+      estTable: seriesTable('N', est),
+      errTable: seriesTable(
+        'N',
+        series.map((s) => ({ label: s.label, xs: s.n, ys: s.absError })),
+      ),
+    };
+  }, [series, ref]);
   const h = (present ? 380 : 300) + useLegendRoom();
   return (
     <Panel title="Convergence as N grows (Q4 d)" className="mc-plots">
@@ -114,19 +132,27 @@ export function ConvergencePanel({
         {cur?.problems.length ? (
           <p className="mc-note">Left out: {cur.problems.map((p) => p.message).join('; ')}</p>
         ) : null}
-        <Heading>Running estimate</Heading>
-        <Plot
+        <DescribedPlot
+          id="convergence-estimate"
+          heading="Running estimate"
           data={estData}
           height={h}
-          ariaLabel="Running estimate against the number of samples N, on a log axis, for several strategies, with the exact value"
+          label="Running estimate against the number of samples N, on a log axis, for several strategies, with the exact value"
+          description={words.est}
           layout={L_EST}
+          caption="Running estimate against N, per strategy"
+          table={words.estTable}
         />
-        <Heading>|error| of one run, log-log, with N^−½ and N^−1 guides</Heading>
-        <Plot
+        <DescribedPlot
+          id="convergence-error"
+          heading="|error| of one run, log-log, with N⁻½ and N⁻¹ guides"
           data={errData}
           height={h}
-          ariaLabel="Absolute error against N on log-log axes, with N^-1/2 and N^-1 guide lines and fitted slopes"
+          label="Absolute error against N on log-log axes, with guide lines falling as N to the −½ and N to the −1 and fitted slopes"
+          description={words.err}
           layout={L_ERR}
+          caption="|estimate − exact| against N, per strategy"
+          table={words.errTable}
         />
         {exactLabels.length ? (
           <p className="mc-note" data-testid="exact-strategies">
@@ -136,7 +162,7 @@ export function ConvergencePanel({
         ) : null}
         <p className="mc-note">
           One run’s error jumps around its trend; the slope is fitted to log |error| against log N.
-          Independent samples give about −½ (error ∝ N^−½); stratified and Sobol points do better on a smooth
+          Independent samples give about −½ (error ∝ N⁻½); stratified and Sobol points do better on a smooth
           f; p ∝ f has no error at all when it is exact (the closed form for (x + c)²) and a tiny one when it
           is tabulated (4096 bins).
         </p>

@@ -8,6 +8,7 @@ import { formatNumber, Notice, Readout } from '../../../ui';
 import { formatCount } from '../../../ui/format';
 import type { WorkerJob } from '../../../workers';
 import type { PdfKind, Strategy } from '../params';
+import { estimateHasZeroVariance } from '../model';
 
 type Job = Pick<WorkerJob<unknown, unknown>, 'running' | 'progress' | 'error'>;
 
@@ -75,6 +76,11 @@ export function EstimateBlock({
           label={rmse ? 's/√N (not an error estimate for these points)' : 'standard error s/√N'}
           value={stderr}
           digits={4}
+          note={
+            est && stderr !== null && estimateHasZeroVariance(est)
+              ? 'zero variance: every term f/p is the same number, up to rounding'
+              : undefined
+          }
         />
         <Readout
           id="abs-error"

@@ -1,7 +1,8 @@
 /** f and the pdf (scaled to f's height) on the same axes, with the worked samples marked. */
 import { useMemo } from 'react';
-import { formatNumber, Plot, type PlotTrace } from '../../../ui';
-import { arr, COLORS, L_FUNC } from './plotStyle';
+import { formatNumber, type PlotTrace } from '../../../ui';
+import { arr, COLORS, L_FUNC, DescribedPlot } from './plotStyle';
+import { describeSeriesSet, seriesTable } from './plotWords';
 
 /** f and p × scale on the same axes, with the worked samples marked. */
 export function FunctionPlot({
@@ -49,12 +50,35 @@ export function FunctionPlot({
     }
     return t;
   }, [curve, samples, a, b]);
+  // in words, and every 20th grid point (and the last) as a table
+  const words = useMemo(() => {
+    const f = { label: 'f(x)', xs: curve.x, ys: curve.f };
+    const p = { label: 'p(x)', xs: curve.x, ys: curve.p.map((v) => v / curve.scale) };
+    const shown = curve.p.some(Number.isFinite) ? [f, p] : [f];
+    const keep = (_: number, k: number) => k % 20 === 0 || k === curve.x.length - 1;
+    const at = samples.length
+      ? ` The worked samples at x = ${samples.map((s) => formatNumber(s[0], 4)).join(', ')}.`
+      : '';
+    return {
+      text: describeSeriesSet(shown, { xLabel: 'x', yLabel: 'the value', empty: 'No integrand yet.' }) + at,
+      table: seriesTable(
+        'x',
+        shown.map((s) => ({ ...s, xs: s.xs.filter(keep), ys: s.ys.filter(keep) })),
+      ),
+    };
+  }, [curve, samples]);
   return (
-    <Plot
-      data={data}
-      height={260}
-      ariaLabel="The integrand f(x) and the sampling pdf p(x), scaled to the same height, over [a, b]"
-      layout={L_FUNC}
-    />
+    <>
+      <DescribedPlot
+        id="integrand"
+        data={data}
+        height={260}
+        label="The integrand f(x) and the sampling pdf p(x), scaled to the same height, over [a, b]"
+        description={words.text}
+        layout={L_FUNC}
+        caption="f(x) and the pdf p(x) over [a, b]"
+        table={words.table}
+      />
+    </>
   );
 }

@@ -1,12 +1,14 @@
 /** Unbiasedness: the histogram of many independent estimates at fixed N, with their mean (core Welford). */
 import { useMemo, useRef } from 'react';
-import { formatNumber, Panel, Plot, Readout, useThrottled, type PlotTrace } from '../../../ui';
+import { formatNumber, Panel, Readout, useThrottled, type PlotTrace } from '../../../ui';
 import { useAutoRun, type WorkerFactory } from '../../../workers';
 import { estimateFromTerms, histogram } from '../../../core/estimators';
 import type { ProblemArgs } from '../jobs';
 import { REDRAW_MS, useLegendRoom } from './hooks';
-import { arr, COLORS, L_HIST, CountField, RunBar } from './plotStyle';
+import { arr, COLORS, L_HIST, CountField, DescribedPlot, REFERENCE, RunBar } from './plotStyle';
 import type { McTasks } from '../mc.worker';
+import { zeroToRounding } from '../model';
+import { describeEstimateHistogram } from './plotWords';
 
 export function HistogramPanel({
   args,
@@ -32,10 +34,46 @@ export function HistogramPanel({
     const e = estimateFromTerms(est); // Welford over the finite estimates
     return { mean: e.estimate, sd: e.n > 1 ? Math.sqrt(e.variance) : NaN, count: e.n, sem: e.stderr };
   }, [est]);
-  const data = useMemo<PlotTrace[]>(() => {
-    if (!est || !stats) return [];
+  // the estimates' spread is rounding noise (p ∝ f): no bias in standard errors to speak of
+  const zero = !!stats && zeroToRounding(stats.sd, stats.mean);
+  const bins = useMemo(() => {
+    if (!est || !stats) return null;
     const h = histogram(est, 40);
-    const centers = arr(h.counts).map((_, k) => 0.5 * (h.edges[k] + h.edges[k + 1]));
+    return { h, centers: arr(h.counts).map((_, k) => 0.5 * (h.edges[k] + h.edges[k + 1])) };
+  }, [est, stats]);
+  const words = useMemo(() => {
+    if (!bins || !stats)
+      return {
+        text: describeEstimateHistogram({
+          count: 0,
+          N,
+          mean: NaN,
+          sd: NaN,
+          sem: NaN,
+          exact,
+          centers: [],
+          counts: [],
+        }),
+        rows: [],
+      };
+    const counts = arr(bins.h.counts);
+    return {
+      text: describeEstimateHistogram({
+        count: stats.count,
+        N,
+        mean: stats.mean,
+        sd: stats.sd,
+        sem: stats.sem,
+        exact,
+        centers: bins.centers,
+        counts,
+      }),
+      rows: counts.map((c, k) => [bins.h.edges[k], bins.h.edges[k + 1], c]),
+    };
+  }, [bins, stats, N, exact]);
+  const data = useMemo<PlotTrace[]>(() => {
+    if (!bins || !stats) return [];
+    const { h, centers } = bins;
     const ymax = Math.max(...arr(h.counts));
     return [
       {
@@ -52,7 +90,7 @@ export function HistogramPanel({
         x: [exact, exact],
         y: [0, ymax],
         name: `exact ${formatNumber(exact, 8)}`,
-        line: { color: '#444', dash: 'dash', width: 2 },
+        line: { color: REFERENCE, dash: 'dash', width: 2 },
       },
       {
         type: 'scatter',
@@ -63,7 +101,7 @@ export function HistogramPanel({
         line: { color: COLORS[1], width: 2 },
       },
     ];
-  }, [est, stats, exact]);
+  }, [bins, stats, exact]);
   return (
     <Panel title="Unbiasedness: many independent estimates (Q2 c)" className="mc-plots">
       <div ref={box}>
@@ -93,20 +131,20 @@ export function HistogramPanel({
           <Readout
             id="hist-bias"
             label="mean − exact, in standard errors"
-            value={stats && stats.sd > 1e-12 * Math.abs(exact) ? (stats.mean - exact) / stats.sem : null}
+            value={stats && !zero ? (stats.mean - exact) / stats.sem : null}
             digits={3}
-            note={
-              stats && !(stats.sd > 1e-12 * Math.abs(exact))
-                ? 'no spread: every estimate is exact (zero variance)'
-                : undefined
-            }
+            note={zero ? 'no spread: every estimate is exact (zero variance)' : undefined}
           />
         </div>
-        <Plot
+        <DescribedPlot
+          id="estimates-histogram"
           data={data}
           height={280 + room / 2}
-          ariaLabel="Histogram of many independent estimates at fixed N, with their mean and the exact integral"
+          label="Histogram of many independent estimates at fixed N, with their mean and the exact integral"
+          description={words.text}
           layout={L_HIST}
+          caption={`Histogram of the independent estimates, each from ${N} samples: bins and counts`}
+          table={{ columns: ['from', 'to', 'estimates'], rows: words.rows }}
         />
         <p className="mc-note">
           E[⟨I⟩] = ∫ f dx for any valid p: each estimate misses, but their mean lands on the integral (within

@@ -11,10 +11,13 @@
  * segments up to t (appending to the previous frame's string) and adds the point at t itself.
  * React renders the exact position on pause, step, seek and reset.
  */
-import { memo, useLayoutEffect, useMemo, useRef, type ReactNode } from 'react';
+import { memo, useLayoutEffect, useMemo, useRef } from 'react';
 import {
+  DescribedFigure,
   formatNumber,
   LiveReadout,
+  Revealed,
+  STRATEGY_COLOR,
   TEXT_HZ,
   TimelineTransport,
   useTimeline,
@@ -23,7 +26,11 @@ import {
 } from '../../../ui';
 import { pow10Text } from '../../../ui/axis';
 import { clampExponent, fmt, linearScale, logScale, type Scale } from '../../../ui/chartScale';
+import { Axes, H, M, path, PH, PW, W } from './raceSvg';
+import { RaceHistogram } from './RaceHistogram';
+import { raceWords } from './RaceData';
 import {
+  gridAt,
   RACE_DURATION,
   RACE_MAX,
   raceHeadAt,
@@ -33,70 +40,13 @@ import {
   type RaceTrack,
 } from '../model';
 
-const W = 360;
-const H = 190;
-const M = { l: 64, r: 10, t: 10, b: 30 };
-const PW = W - M.l - M.r;
-const PH = H - M.t - M.b;
-const C_U = 'var(--accent-2)';
-const C_I = 'var(--accent)';
+// the shared strategy colours (src/ui/palette): 3 : 1 in both themes, apart under colour-vision deficiencies
+const C_U = STRATEGY_COLOR.uniform;
+const C_I = STRATEGY_COLOR.importance;
 
 // the shared chart guard: every coordinate finite, for any data (../../../ui/chartScale)
 const lin = linearScale;
 const logS = logScale;
-
-function path(xs: readonly number[], ys: readonly number[], sx: Scale, sy: Scale, from = 0): string {
-  let d = '';
-  for (let k = from; k < xs.length; k++) {
-    const y = ys[k];
-    if (!Number.isFinite(y)) continue;
-    d += `${d ? 'L' : 'M'}${fmt(sx(xs[k]))},${fmt(sy(y))}`;
-  }
-  return d;
-}
-
-function Axes({
-  xTicks,
-  yTicks,
-  xLabel,
-  yLabel,
-}: {
-  xTicks: [number, string][];
-  yTicks: [number, string][];
-  xLabel: string;
-  yLabel: string;
-}) {
-  return (
-    <g className="mc-svg-axes">
-      <rect x={M.l} y={M.t} width={PW} height={PH} className="mc-svg-frame" />
-      {xTicks.map(([x, s]) => (
-        <text key={`x${s}`} x={x} y={M.t + PH + 14} textAnchor="middle">
-          {s}
-        </text>
-      ))}
-      {yTicks.map(([y, s]) => (
-        <g key={`y${s}`}>
-          <line x1={M.l} x2={M.l + PW} y1={y} y2={y} className="mc-svg-grid" />
-          <text x={M.l - 4} y={y + 4} textAnchor="end">
-            {s}
-          </text>
-        </g>
-      ))}
-      <text x={M.l + PW / 2} y={H - 2} textAnchor="middle" className="mc-svg-axis-title">
-        {xLabel}
-      </text>
-      <text
-        x={11}
-        y={M.t + PH / 2}
-        textAnchor="middle"
-        transform={`rotate(-90 11 ${M.t + PH / 2})`}
-        className="mc-svg-axis-title"
-      >
-        {yLabel}
-      </text>
-    </g>
-  );
-}
 
 const N_TICKS: number[] = [1, 10, 100, 1000].filter((n) => n <= RACE_MAX);
 /** Samples shown in each rug (the latest ones). */
@@ -112,9 +62,50 @@ export interface RaceProps {
   b: number;
   /** e.g. "p ∝ f, p = 3(x + 2)²/56". */
   importanceLabel: string;
+  /** The importance pdf, short ("p ∝ f"), for the figure's description. */
+  importanceName: string;
+  /** The half of [a, b] where the importance pdf is heavier (the description says how many fell there). */
+  half: [number, number] | null;
+  /** Classroom mode: the race is the stage, its plots in a grid sized to the first screen. */
+  staged: boolean;
+  /** ask=1: held at its start, its transport hidden (nothing can play) until revealed. */
+  held: boolean;
   t: number;
   play: boolean;
   setParams: (patch: { t?: number; play?: boolean }) => void;
+}
+
+/** What a lane's ± s/√N reads when the terms' spread is zero to rounding (model.zeroToRounding). */
+export const ZERO_TEXT = '0 (zero variance)';
+
+/** A small key of line styles: a stroke sample (solid or dashed) and its name per row. */
+function LineKey({ x, y, items }: { x: number; y: number; items: [string, string, boolean][] }) {
+  return (
+    <g className="mc-svg-key" aria-hidden="true">
+      {items.map(([name, color, dashed], k) => (
+        <g key={name} transform={`translate(${x} ${y + 15 * k})`}>
+          <line
+            x1={0}
+            x2={22}
+            y1={-4}
+            y2={-4}
+            style={{ stroke: color }}
+            className={dashed ? 'mc-svg-line mc-svg-dashed' : 'mc-svg-line'}
+          />
+          <text x={27} y={0}>
+            {name}
+          </text>
+        </g>
+      ))}
+    </g>
+  );
+}
+
+/** v rounded up to two significant digits (a density axis's top). */
+function roundUp2(v: number): number {
+  if (!(v > 0 && Number.isFinite(v))) return 1;
+  const u = 10 ** (Math.floor(Math.log10(v)) - 1);
+  return Math.ceil(v / u - 1e-9) * u;
 }
 
 /** The readouts of a lane: written directly (see drawLane), not rendered by React. */
@@ -144,53 +135,39 @@ function drawLane(r: LaneRefs, s: LaneState): void {
   writeReadout(r.term.current, s.n ? s.term : null, 6);
   writeReadout(r.estimate.current, s.n ? s.estimate : null, 7);
   writeReadout(r.stderr.current, s.n > 1 ? s.stderr : null, 3);
+  // a spread that is rounding noise reads as what it is (the value itself stays in data-value)
+  const el = r.stderr.current;
+  if (el && s.zeroVariance && el.textContent !== ZERO_TEXT) el.textContent = ZERO_TEXT;
   const sub = String(s.n || 'i');
   if (r.sub.current && r.sub.current.textContent !== sub) r.sub.current.textContent = sub;
   const after = String(s.n);
   if (r.after.current && r.after.current.textContent !== after) r.after.current.textContent = after;
 }
 
-function Lane({
-  id,
-  name,
-  color,
-  r,
-  children,
-}: {
-  id: string;
-  name: ReactNode;
-  color: string;
-  r: LaneRefs;
-  children: ReactNode;
-}) {
+/** A lane's readouts: its newest sample and term, its estimate and ± s/√N (written per frame). */
+function LaneReadouts({ id, r }: { id: string; r: LaneRefs }) {
   return (
-    <div className="mc-lane" style={{ borderTopColor: color }}>
-      <h4 className="mc-lane-title" style={{ color }}>
-        {name}
-      </h4>
-      <div className="readouts mc-lane-readouts">
-        <LiveReadout
-          id={`race-${id}-x`}
-          label={
-            <>
-              x<sub ref={r.sub} />
-            </>
-          }
-          outRef={r.x}
-        />
-        <LiveReadout id={`race-${id}-term`} label="its term f/p" outRef={r.term} />
-        <LiveReadout
-          id={`race-${id}-estimate`}
-          label={
-            <>
-              ⟨I⟩ after <span ref={r.after} />
-            </>
-          }
-          outRef={r.estimate}
-        />
-        <LiveReadout id={`race-${id}-stderr`} label="± s/√N" outRef={r.stderr} />
-      </div>
-      {children}
+    <div className="readouts mc-lane-readouts mc-half">
+      <LiveReadout
+        id={`race-${id}-x`}
+        label={
+          <>
+            x<sub ref={r.sub} />
+          </>
+        }
+        outRef={r.x}
+      />
+      <LiveReadout id={`race-${id}-term`} label="its term f/p" outRef={r.term} />
+      <LiveReadout
+        id={`race-${id}-estimate`}
+        label={
+          <>
+            ⟨I⟩ after <span ref={r.after} />
+          </>
+        }
+        outRef={r.estimate}
+      />
+      <LiveReadout id={`race-${id}-stderr`} label="± s/√N" outRef={r.stderr} />
     </div>
   );
 }
@@ -202,6 +179,10 @@ export const RaceFigure = memo(function RaceFigure({
   a,
   b,
   importanceLabel,
+  importanceName,
+  half,
+  staged,
+  held,
   t,
   play,
   setParams,
@@ -216,6 +197,7 @@ export const RaceFigure = memo(function RaceFigure({
     duration: RACE_DURATION,
     visibleRef: box,
     renderHz: RENDER_HZ,
+    shortcuts: !held,
   });
   const points = useMemo(() => racePoints(track.max), [track.max]);
   const fr = useMemo(() => raceHeadAt(track, tl.t, RECENT), [track, tl.t]);
@@ -268,12 +250,22 @@ export const RaceFigure = memo(function RaceFigure({
     const ly = logS(10 ** e0, 10 ** e1, M.t + PH, M.t);
     const lt: [number, string][] = [];
     for (let e = e0; e <= e1; e += e1 - e0 > 4 ? 2 : 1) lt.push([ly(10 ** e), pow10Text(e)]);
-    // N^−½ guide through the uniform lane's final standard deviation: sd/√N is the expected error scale
+    // N⁻½ guide through the uniform lane's final standard deviation: sd/√N is the expected error scale
     const last = track.max - 1;
     const sd = Math.sqrt(track.uniform.m2[last] / Math.max(1, last));
     const guide = `M${fmt(ex(1))},${fmt(ly(Math.max(sd, 10 ** e0)))}L${fmt(ex(track.max))},${fmt(ly(Math.max(sd / Math.sqrt(track.max), 10 ** e0)))}`;
     return { sx, sy, fPath, pPath, xt, yt, ex, ey, nt, et, ly, lt, floor: 10 ** e0, guide, R };
   }, [track, curve, a, b, I, s]);
+
+  // the histograms' pdfs on the drawn grid (the importance curve is drawn scaled to f: unscale it), and
+  // one density axis for both lanes, so their bars compare
+  const hist = useMemo(() => {
+    const pu = new Float64Array(curve.x.length).fill(1 / (b - a));
+    const pi = curve.p.map((v) => v / curve.scale);
+    let top = 1 / (b - a);
+    for (const v of pi) if (Number.isFinite(v)) top = Math.max(top, v);
+    return { pu, pi, yMax: roundUp2(1.35 * top) };
+  }, [curve, a, b]);
 
   const { sx, sy, ey } = fig;
   // the growing curves' segments, formatted once per track (see the module comment)
@@ -287,11 +279,16 @@ export const RaceFigure = memo(function RaceFigure({
       rugU: f.recentU.map(sx),
       rugI: f.recentI.map(sx),
       dotU: dot(f.uniform.n, f.uniform.x, f.uniform.term / (b - a)),
-      dotI: dot(f.importance.n, f.importance.x, curveAt(curve, f.importance.x)),
+      dotI: dot(f.importance.n, f.importance.x, gridAt(curve.x, curve.f, f.importance.x)),
     };
   };
   const g = geomAt(fr.t);
   const rate = (RACE_MAX / RACE_DURATION) * tl.speed;
+  // the figures in words at the rendered position (React renders it on pause, step, seek and reset)
+  const words = useMemo(
+    () => raceWords({ track, t: fr.t, points, importanceName, half, a, b, fValues: curve.f, held }),
+    [track, fr.t, points, importanceName, half, a, b, curve.f, held],
+  );
 
   // per-frame writes (see the module comment); React's render below is the same geometry at tl.t
   const svgF = useRef<SVGSVGElement>(null);
@@ -321,10 +318,6 @@ export const RaceFigure = memo(function RaceFigure({
     const h = raceHeadAt(track, tt, 0);
     drawLane(laneU, h.uniform);
     drawLane(laneI, h.importance);
-    svg?.setAttribute(
-      'aria-label',
-      `The integrand f over [${a}, ${b}] with the ${h.t} samples drawn so far, uniform and importance`,
-    );
   };
   const drawRef = useRef(draw);
   drawRef.current = draw;
@@ -351,7 +344,14 @@ export const RaceFigure = memo(function RaceFigure({
         style={{ stroke: color }}
         strokeDasharray="2 3"
       />
-      <circle cx={d?.x ?? 0} cy={d?.y ?? 0} r={5} style={{ fill: color }} />
+      {/* filled for uniform, hollow for importance: the shape tells the lanes apart, not only the colour */}
+      <circle
+        cx={d?.x ?? 0}
+        cy={d?.y ?? 0}
+        r={5}
+        style={row ? { stroke: color } : { fill: color }}
+        className={row ? 'mc-dot-hollow' : undefined}
+      />
     </g>
   );
   // the rug: RUG_BUCKETS paths per row, older samples fainter, so a frame writes a few `d`s
@@ -370,87 +370,183 @@ export const RaceFigure = memo(function RaceFigure({
     );
   };
 
-  return (
-    <div className="mc-race" ref={box} data-testid="race">
-      <TimelineTransport
-        timeline={tl}
-        label="Samples arriving"
-        format={(n) => `${n} of ${RACE_MAX} samples`}
-        testId="timeline"
+  // the figure's pieces: the shared plots, and per lane its title, readouts, histogram and
+  // running estimate; the page groups them by lane, the stage lays them out in one grid
+  const fPlot = (
+    <DescribedFigure
+      key="f"
+      className="mc-svg-fig"
+      label="Each sample drops onto f"
+      description={words.integrand}
+      quiet
+      testId="race-integrand"
+    >
+      <figcaption>
+        Each xᵢ drops onto f
+        {staged ? null : ` (● uniform, ○ importance; newest ${RECENT} as ticks, uniform above)`}
+      </figcaption>
+      <svg ref={svgF} viewBox={`0 0 ${W} ${H}`} aria-hidden="true">
+        <Axes xTicks={fig.xt} yTicks={fig.yt} xLabel="x" yLabel="f(x)" />
+        <path d={fig.fPath} className="mc-svg-f" />
+        <path d={fig.pPath} style={{ stroke: C_I }} className="mc-svg-p" />
+        {rug(g.rugU, C_U, 0)}
+        {rug(g.rugI, C_I, 1)}
+        {newestDot(g.dotU, C_U, 0)}
+        {newestDot(g.dotI, C_I, 1)}
+      </svg>
+    </DescribedFigure>
+  );
+  // held (ask=1): no |error| and no running estimates (their axes would give the exact value away)
+  const xPlot = held ? null : (
+    <DescribedFigure
+      key="x"
+      className="mc-svg-fig mc-tall-only"
+      label="|error| of the running estimates against N, log–log"
+      description={words.errors}
+      quiet
+      testId="race-errors"
+    >
+      <figcaption>|⟨I⟩ − I| against N, log-log</figcaption>
+      <svg viewBox={`0 0 ${W} ${H}`} aria-hidden="true">
+        <Axes xTicks={fig.nt} yTicks={fig.lt} xLabel="N (samples)" yLabel="|error|" />
+        <path d={fig.guide} className="mc-svg-guide" />
+        <path ref={setPath('uErr')} d={g.uErr} style={{ stroke: C_U }} className="mc-svg-line" />
+        <path
+          ref={setPath('iErr')}
+          d={g.iErr}
+          style={{ stroke: C_I }}
+          className="mc-svg-line mc-svg-dashed"
+        />
+        <LineKey
+          x={M.l + PW - 140}
+          y={M.t + 14}
+          items={[
+            ['uniform', C_U, false],
+            ['importance', C_I, true],
+          ]}
+        />
+      </svg>
+    </DescribedFigure>
+  );
+  const lanes = (
+    [
+      {
+        id: 'uniform',
+        name: 'Uniform, p = 1/(b − a)',
+        color: C_U,
+        refs: laneU,
+        k: 'u',
+        xs: track.uniform.x,
+        py: hist.pu,
+        pdf: `p(x) = ${formatNumber(1 / (b - a), 4)}`,
+      },
+      {
+        id: 'importance',
+        name: `Importance, ${importanceLabel}`,
+        color: C_I,
+        refs: laneI,
+        k: 'i',
+        xs: track.importance.x,
+        py: hist.pi,
+        pdf: importanceName === 'p ∝ f' ? 'p(x) ∝ f(x)' : `p(x), ${importanceName}`,
+      },
+    ] as const
+  ).map(({ id, name, color, refs, k, xs, py, pdf }) => ({
+    id,
+    color,
+    title: (
+      <h4 key={`t${k}`} className="mc-lane-title mc-half" style={{ color }}>
+        {name}
+      </h4>
+    ),
+    readouts: <LaneReadouts key={`r${k}`} id={id} r={refs} />,
+    hist: (
+      <RaceHistogram
+        key={`h${k}`}
+        id={id}
+        xs={xs}
+        a={a}
+        b={b}
+        px={curve.x}
+        py={py}
+        pdfLabel={pdf}
+        yMax={hist.yMax}
+        color={color}
+        tl={tl}
+        t={fr.t}
+        half={half}
+        staged={staged}
+      />
+    ),
+    est: held ? null : (
+      <DescribedFigure
+        key={`e${k}`}
+        className="mc-svg-fig mc-tall-only"
+        label={`The ${id} running estimate with its ± s/√N band, against N on a log axis`}
+        description={words[id]}
+        quiet
+        testId={`race-estimate-${id}`}
       >
-        <span className="mc-note" data-testid="race-rate">
-          {formatNumber(rate, 4)} samples/s
-        </span>
-      </TimelineTransport>
-      <div className="mc-race-grid">
-        <figure className="mc-svg-fig">
-          <figcaption>Each xᵢ drops onto f</figcaption>
-          <svg ref={svgF} viewBox={`0 0 ${W} ${H}`} role="img">
-            <Axes xTicks={fig.xt} yTicks={fig.yt} xLabel="x" yLabel="f(x)" />
-            <path d={fig.fPath} className="mc-svg-f" />
-            <path d={fig.pPath} style={{ stroke: C_I }} className="mc-svg-p" />
-            {rug(g.rugU, C_U, 0)}
-            {rug(g.rugI, C_I, 1)}
-            {newestDot(g.dotU, C_U, 0)}
-            {newestDot(g.dotI, C_I, 1)}
-          </svg>
-        </figure>
-        <figure className="mc-svg-fig">
-          <figcaption>|⟨I⟩ − I| against N, log-log</figcaption>
-          <svg
-            viewBox={`0 0 ${W} ${H}`}
-            role="img"
-            aria-label="Absolute error of the running estimate against the number of samples, log-log, uniform and importance"
+        <figcaption>⟨I⟩ against N, with its ± s/√N band</figcaption>
+        <svg viewBox={`0 0 ${W} ${H}`} aria-hidden="true">
+          <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
+          <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
+          <path ref={setPath(`${k}Band`)} d={g[`${k}Band`]} style={{ fill: color }} className="mc-svg-band" />
+          <path
+            ref={setPath(`${k}Est`)}
+            d={g[`${k}Est`]}
+            style={{ stroke: color }}
+            className={k === 'i' ? 'mc-svg-line mc-svg-dashed' : 'mc-svg-line'}
+          />
+        </svg>
+      </DescribedFigure>
+    ),
+  }));
+  const [U, Im] = lanes;
+
+  return (
+    <div className={staged ? 'mc-race mc-race-staged' : 'mc-race'} ref={box} data-testid="race">
+      <DescribedFigure
+        label="The race: uniform against importance sampling, one sample at a time"
+        description={words.main}
+        playing={tl.playing}
+        testId="race-figure"
+      >
+        <Revealed ask={held} what="the samples: reveal, then play them" testId="ask-hidden-race">
+          <TimelineTransport
+            timeline={tl}
+            label="Samples arriving"
+            format={(n) => `${n} of ${RACE_MAX} samples`}
+            testId="timeline"
           >
-            <Axes xTicks={fig.nt} yTicks={fig.lt} xLabel="N (samples)" yLabel="|error|" />
-            <path d={fig.guide} className="mc-svg-guide" />
-            <path ref={setPath('uErr')} d={g.uErr} style={{ stroke: C_U }} className="mc-svg-line" />
-            <path ref={setPath('iErr')} d={g.iErr} style={{ stroke: C_I }} className="mc-svg-line" />
-          </svg>
-        </figure>
-        {(
-          [
-            ['uniform', 'Uniform, p = 1/(b − a)', C_U, laneU, 'uniform estimator', 'u'],
-            [
-              'importance',
-              `Importance, ${importanceLabel}`,
-              C_I,
-              laneI,
-              'importance-sampling estimator',
-              'i',
-            ],
-          ] as const
-        ).map(([id, name, color, refs, what, k]) => (
-          <Lane key={id} id={id} name={name} color={color} r={refs}>
-            <svg
-              viewBox={`0 0 ${W} ${H}`}
-              role="img"
-              aria-label={`Running estimate of the ${what} with its ± standard-error band, against N on a log axis`}
-            >
-              <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
-              <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
-              <path
-                ref={setPath(`${k}Band`)}
-                d={g[`${k}Band`]}
-                style={{ fill: color }}
-                className="mc-svg-band"
-              />
-              <path
-                ref={setPath(`${k}Est`)}
-                d={g[`${k}Est`]}
-                style={{ stroke: color }}
-                className="mc-svg-line"
-              />
-            </svg>
-          </Lane>
-        ))}
-      </div>
-      <p className="mc-note">
-        Blue: uniform; orange: importance (its pdf dashed on f). Dashed line: the exact I ={' '}
-        {formatNumber(I, 8)}; grey: the N^−½ trend σ/√N. Both estimators use the same random numbers ξᵢ
-        (seeded): uniform puts xᵢ = a + (b − a)ξᵢ, importance xᵢ = P⁻¹(ξᵢ). Errors below{' '}
-        {pow10Text(Math.round(Math.log10(fig.floor)))} sit on the bottom line.
-      </p>
+            <span className="mc-note" data-testid="race-rate">
+              {formatNumber(rate, 4)} samples/s
+            </span>
+          </TimelineTransport>
+        </Revealed>
+        <div className={staged ? 'mc-race-grid stage-figure' : 'mc-race-grid'}>
+          {staged
+            ? [U.title, Im.title, U.readouts, Im.readouts, U.hist, fPlot, Im.hist, U.est, xPlot, Im.est]
+            : [
+                fPlot,
+                xPlot,
+                ...lanes.map((L) => (
+                  <div key={L.id} className="mc-lane" style={{ borderTopColor: L.color }}>
+                    {L.title}
+                    {L.readouts}
+                    {L.hist}
+                    {L.est}
+                  </div>
+                )),
+              ]}
+        </div>
+        <p className="mc-note mc-race-note">
+          Solid blue: uniform; dashed orange: importance (its pdf dashed on f). Grey dashes: the exact I ={' '}
+          {formatNumber(I, 8)}; the grey line: the N⁻½ trend σ/√N. Both estimators use the same random numbers
+          ξᵢ (seeded): uniform puts xᵢ = a + (b − a)ξᵢ, importance xᵢ = P⁻¹(ξᵢ). Errors below{' '}
+          {pow10Text(Math.round(Math.log10(fig.floor)))} sit on the bottom line.
+        </p>
+      </DescribedFigure>
     </div>
   );
 });
@@ -595,15 +691,4 @@ function drawDot(g: Element | null, d: { x: number; y: number } | null): void {
   line?.setAttribute('y2', String(d.y));
   dot?.setAttribute('cx', x);
   dot?.setAttribute('cy', String(d.y));
-}
-
-/** f at x, interpolated on the drawn grid (for placing the importance sample's dot on the curve). */
-function curveAt(curve: { x: Float64Array; f: Float64Array }, x: number): number {
-  const n = curve.x.length;
-  const x0 = curve.x[0];
-  const x1 = curve.x[n - 1];
-  const q = ((x - x0) / (x1 - x0 || 1)) * (n - 1);
-  const k = Math.max(0, Math.min(n - 2, Math.floor(q)));
-  const w = q - k;
-  return curve.f[k] * (1 - w) + curve.f[k + 1] * w;
 }

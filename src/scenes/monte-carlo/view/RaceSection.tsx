@@ -5,10 +5,20 @@
  * render it makes its own short task instead of lengthening the scene's. Both read one cached
  * track (the last one computed), so the second is free.
  */
-import type { ReactNode } from 'react';
-import { curves, raceTrack, type Fn1, type RaceTrack } from '../model';
+import {
+  curves,
+  heavierHalf,
+  raceAt,
+  racePoints,
+  raceTrack,
+  type Exact,
+  type Fn1,
+  type PdfChoice,
+  type RaceTrack,
+} from '../model';
 import type { Pdf1D } from '../../../core/sampling/pdf1d';
 import { RaceFigure } from './RaceFigure';
+import { RaceData } from './RaceData';
 
 /** What the race is computed from (RaceFigure's track and curve). */
 export interface RaceInput {
@@ -22,7 +32,14 @@ export interface RaceInput {
   seed: number;
 }
 
-let last: { input: RaceInput; track: RaceTrack; curve: ReturnType<typeof curves> } | null = null;
+interface Race {
+  track: RaceTrack;
+  curve: ReturnType<typeof curves>;
+  /** The half of [a, b] where the importance pdf is heavier (model.heavierHalf). */
+  half: [number, number];
+}
+
+let last: (Race & { input: RaceInput }) | null = null;
 
 const same = (p: RaceInput, q: RaceInput) =>
   p.f === q.f &&
@@ -33,31 +50,56 @@ const same = (p: RaceInput, q: RaceInput) =>
   Object.is(p.exact, q.exact) &&
   p.seed === q.seed;
 
+/** The race's input, or null when there is none to run (no f yet, no importance pdf, no finite integral). */
+export function raceInputOf(
+  f: Fn1 | null,
+  imp: Extract<PdfChoice, { ok: true }> | null,
+  exact: Exact | null,
+  a: number,
+  b: number,
+  seed: number,
+): RaceInput | null {
+  if (!f || !imp || !exact || !Number.isFinite(exact.value)) return null;
+  return { f, a, b, sampler: imp.sampler, density: imp.density, exact: exact.value, seed };
+}
+
 /** The track and the drawn curve of `input`, computed once per input (model.raceTrack, model.curves). */
-export function raceOf(input: RaceInput): { track: RaceTrack; curve: ReturnType<typeof curves> } {
+export function raceOf(input: RaceInput): Race {
   if (last && (last.input === input || same(last.input, input))) return last;
   const { f, a, b, sampler, density, exact, seed } = input;
-  last = { input, track: raceTrack(f, a, b, sampler, exact, seed), curve: curves(f, density, a, b, 200) };
+  last = {
+    input,
+    track: raceTrack(f, a, b, sampler, exact, seed),
+    curve: curves(f, density, a, b, 200),
+    half: heavierHalf(sampler, a, b),
+  };
   return last;
 }
 
 export function RaceSection({
   input,
   importanceLabel,
+  importanceName,
   t,
   play,
   setParams,
-  fallback,
+  staged,
+  held,
 }: {
   input: RaceInput | null;
   importanceLabel: string;
+  importanceName: string;
   t: number;
   play: boolean;
   setParams: (patch: { t?: number; play?: boolean }) => void;
-  fallback: ReactNode;
+  /** Classroom mode: the race is the stage (sized to the first screen). */
+  staged: boolean;
+  /** ask=1: held at t = 0, its samples and transport hidden until revealed. */
+  held: boolean;
 }) {
-  if (!input) return <>{fallback}</>;
-  const { track, curve } = raceOf(input);
+  if (!input)
+    return <p className="mc-note">The animation needs a finite integral and a usable importance pdf.</p>;
+  const { track, curve, half } = raceOf(input);
   return (
     <RaceFigure
       track={track}
@@ -65,9 +107,26 @@ export function RaceSection({
       a={input.a}
       b={input.b}
       importanceLabel={importanceLabel}
+      importanceName={importanceName}
+      half={half}
       t={t}
       play={play}
       setParams={setParams}
+      staged={staged}
+      held={held}
     />
+  );
+}
+
+/**
+ * The race at position t as a table and as sound (./RaceData), under the figure: t is the paused
+ * position the page's link holds, so it follows the race on pause, step, seek and reset.
+ */
+export function RaceDataSection({ input, t }: { input: RaceInput | null; t: number }) {
+  if (!input) return null;
+  const { track } = raceOf(input);
+  const fr = raceAt(track, t, racePoints(track.max), 0);
+  return (
+    <RaceData curve={fr.curve} exact={track.exact} zeroVarianceImportance={fr.importance.zeroVariance} />
   );
 }

@@ -1,13 +1,24 @@
 /** RMSE over independent (randomized) runs against N, and against the measured run time. */
 import { useMemo, useRef } from 'react';
-import { Panel, Plot, useThrottled, type PlotTrace } from '../../../ui';
+import { Panel, useThrottled, type PlotTrace } from '../../../ui';
 import { useAutoRun, type WorkerFactory } from '../../../workers';
 import { atRoundingLevel, sortedByX } from '../model';
 import { formatCount } from '../../../ui/format';
 import type { ProblemArgs } from '../jobs';
 import { REDRAW_MS, useLegendRoom } from './hooks';
-import { arr, clampArr, COLORS, Heading, hexA, L_RMSE, L_TIME, CountField, RunBar } from './plotStyle';
+import {
+  arr,
+  clampArr,
+  COLORS,
+  L_RMSE,
+  L_TIME,
+  CountField,
+  RunBar,
+  DescribedPlot,
+  strategyLine,
+} from './plotStyle';
 import type { McTasks } from '../mc.worker';
+import { describeSeriesSet, seriesTable } from './plotWords';
 
 export function RmsePanel({
   args,
@@ -54,7 +65,8 @@ export function RmsePanel({
         y: clampArr(s.lo),
         line: { width: 0, color: c },
         fill: 'tonexty',
-        fillcolor: hexA(c, 0.15),
+        fillcolor: c,
+        opacity: 0.15,
         hoverinfo: 'skip',
         showlegend: false,
         legendgroup: s.label,
@@ -65,7 +77,7 @@ export function RmsePanel({
         x: n,
         y: clampArr(s.rmse),
         name: `${s.label} (slope ${Number.isFinite(s.slope) ? s.slope.toFixed(2) : '—'})`,
-        line: { color: c, width: 2 },
+        line: strategyLine(i),
         marker: { size: 5 },
         legendgroup: s.label,
       });
@@ -93,13 +105,43 @@ export function RmsePanel({
           y: pts.map((p) => p.y),
           text: pts.map((p) => `N = ${p.n}`),
           name: s.label,
-          line: { color: COLORS[i % COLORS.length], width: 2 },
+          line: strategyLine(i),
           marker: { size: 5 },
         };
       }),
     [rm, exact],
   );
 
+  // the plots in words and as tables
+  const words = useMemo(() => {
+    const shown = rm.filter((s) => !atRoundingLevel(s.rmse, exact));
+    const empty = 'No runs yet.';
+    return {
+      rmse: describeSeriesSet(
+        shown.map((s) => ({ label: s.label, xs: s.n, ys: s.rmse })),
+        { xLabel: 'N', yLabel: 'RMSE', logLog: true, empty },
+      ),
+      time: describeSeriesSet(
+        shown.map((s) => ({ label: s.label, xs: s.timeMs, ys: s.rmse })),
+        { xLabel: 'ms', yLabel: 'RMSE', logLog: true, empty },
+      ),
+      rmseTable: seriesTable(
+        'N',
+        rm.flatMap((s) => [
+          { label: `${s.label} RMSE`, xs: s.n, ys: s.rmse },
+          { label: `${s.label} 10 %`, xs: s.n, ys: s.lo },
+          { label: `${s.label} 90 %`, xs: s.n, ys: s.hi },
+        ]),
+      ),
+      timeTable: seriesTable(
+        'N',
+        shown.flatMap((s) => [
+          { label: `${s.label} ms`, xs: s.n, ys: s.timeMs },
+          { label: `${s.label} RMSE`, xs: s.n, ys: s.rmse },
+        ]),
+      ),
+    };
+  }, [rm, exact]);
   const runsDone = rm[0]?.runs ?? 0;
   const h = 300 + useLegendRoom();
   return (
@@ -119,19 +161,27 @@ export function RmsePanel({
           }
         />
         <RunBar task={task} label="Independent runs…" />
-        <Heading>RMSE over the runs (band: 10–90 % of |error|)</Heading>
-        <Plot
+        <DescribedPlot
+          id="rmse"
+          heading="RMSE over the runs (band: 10–90 % of |error|)"
           data={rmseData}
           height={h}
-          ariaLabel="Root mean square error over independent runs against N, log-log, with bands from the 10th to the 90th percentile of the absolute error"
+          label="Root mean square error over independent runs against N, log-log, with bands from the 10th to the 90th percentile of the absolute error"
+          description={words.rmse}
           layout={L_RMSE}
+          caption="RMSE over the runs and the 10–90 % band of |error|, against N, per strategy"
+          table={words.rmseTable}
         />
-        <Heading>Accuracy per millisecond: RMSE against run time</Heading>
-        <Plot
+        <DescribedPlot
+          id="rmse-time"
+          heading="Accuracy per millisecond: RMSE against run time"
           data={timeData}
           height={h}
-          ariaLabel="RMSE against the measured wall-clock time of one estimate, log-log, per strategy"
+          label="RMSE against the measured wall-clock time of one estimate, log-log, per strategy"
+          description={words.time}
           layout={L_TIME}
+          caption="Time of one estimate (ms) and its RMSE, against N, per strategy"
+          table={words.timeTable}
         />
         {rmExactLabels.length ? (
           <p className="mc-note">

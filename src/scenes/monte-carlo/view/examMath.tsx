@@ -8,11 +8,22 @@ import { formatNumber, KeyNote, MathTex } from '../../../ui';
 /** A number for TeX (six significant digits), or a dash when it is not finite. */
 export const n4 = (x: number) => (Number.isFinite(x) ? formatNumber(x, 6) : '\\text{—}');
 
-/** v as "p/3" when 3v is (nearly) an integer, else its decimal. */
-export function thirds(v: number): string {
+/** k when 3v is (nearly) the integer k and v is no integer, else null. */
+function thirdsOf(v: number): number | null {
   const k = Math.round(v * 3);
-  if (Math.abs(v * 3 - k) < 1e-9 * Math.max(1, Math.abs(k)) && k % 3 !== 0) return `\\frac{${k}}{3}`;
-  return n4(v);
+  return Math.abs(v * 3 - k) < 1e-9 * Math.max(1, Math.abs(k)) && k % 3 !== 0 ? k : null;
+}
+
+/** v as "p/3" (TeX) when 3v is (nearly) an integer, else its decimal. */
+export function thirds(v: number): string {
+  const k = thirdsOf(v);
+  return k === null ? n4(v) : `\\frac{${k}}{3}`;
+}
+
+/** v as plain text: "56/3" when 3v is (nearly) an integer, else its decimal (six significant digits). */
+export function thirdsText(v: number): string {
+  const k = thirdsOf(v);
+  return k === null ? formatNumber(v, 6) : `${k}/3`;
 }
 
 /** x + c as TeX. */

@@ -49,3 +49,18 @@ function useSlicedEstimate(problem: Problem1D | null, n: number): McEstimate | n
   }, [problem, n]);
   return problem && done && done.problem === problem && done.n === n ? done.est : null;
 }
+
+/**
+ * ask=1 holds the animation at its start: while `held`, a position other than 0 (or playing) is
+ * written back to t = 0, paused, so the race is still at its start when the results are revealed.
+ */
+export function useHeldAtStart(
+  held: boolean,
+  t: number,
+  play: boolean,
+  setParams: (patch: { t: number; play: boolean }) => void,
+): void {
+  useEffect(() => {
+    if (held && (t !== 0 || play)) setParams({ t: 0, play: false });
+  }, [held, t, play, setParams]);
+}

@@ -1,9 +1,24 @@
 /** Shared look of the scene's Plotly views: colours, legend and margins, layouts, the run bar. */
 import type { ReactNode } from 'react';
-import { NumberField } from '../../../ui';
+import { NumberField, Plot, SERIES, ShowAsTable, type PlotLayout, type PlotTrace } from '../../../ui';
 import type { WorkerJob } from '../../../workers';
 
-export const COLORS = ['#1f5fa8', '#a13f00', '#1d7a3a', '#7b3fa1', '#b8860b', '#d6336c', '#117a8b'];
+/**
+ * The shared plot colours (src/ui/palette: 3 : 1 on every background in both themes, apart under
+ * colour-vision deficiencies); Plot resolves the var() when it draws. With more strategies than
+ * colours, the dash tells the ones of one colour apart.
+ */
+export const COLORS = SERIES;
+/** The colour of references drawn over the data (the exact value, guides). */
+export const REFERENCE = 'var(--muted)';
+/** Line dashes per strategy, in step with COLORS: the legend matches a line by its dash, not only its colour. */
+export const DASHES = ['solid', 'dash', 'dot', 'dashdot', 'longdash', 'longdashdot', '5px,2px,1px,2px'];
+/** The line of strategy i: its colour and its dash. */
+export const strategyLine = (i: number, width = 2) => ({
+  color: COLORS[i % COLORS.length],
+  dash: DASHES[i % DASHES.length],
+  width,
+});
 export const arr = (a: ArrayLike<number>) => Array.from(a);
 /** Legend above the plot (below, it collides with the x-axis title on narrow screens). */
 export const LEGEND = { orientation: 'h', x: 0, xanchor: 'left', y: 1.02, yanchor: 'bottom' };
@@ -110,7 +125,44 @@ export function CountField({
 /** Positive finite values, null elsewhere (a gap on a log axis). */
 export const clampArr = (a: Float64Array) => arr(a).map((v) => (Number.isFinite(v) && v > 0 ? v : null));
 
-export function hexA(hex: string, a: number): string {
-  const v = parseInt(hex.slice(1), 16);
-  return `rgba(${(v >> 16) & 255}, ${(v >> 8) & 255}, ${v & 255}, ${a})`;
+/**
+ * A Plotly plot with its heading, its accessible name and description, and its data as a "Show as
+ * table" under it (`table`: ./plotWords seriesTable, a column per series). Test ids `${id}-plot`
+ * and `${id}-table`.
+ */
+export function DescribedPlot({
+  id,
+  heading,
+  data,
+  layout,
+  height,
+  label,
+  description,
+  caption,
+  table,
+}: {
+  id: string;
+  heading?: ReactNode;
+  data: PlotTrace[];
+  layout: PlotLayout;
+  height: number;
+  label: string;
+  description: string;
+  caption: string;
+  table: { columns: string[]; rows: number[][] };
+}) {
+  return (
+    <>
+      {heading ? <Heading>{heading}</Heading> : null}
+      <Plot
+        data={data}
+        height={height}
+        label={label}
+        description={description}
+        layout={layout}
+        testId={`${id}-plot`}
+      />
+      <ShowAsTable caption={caption} columns={table.columns} rows={table.rows} testId={`${id}-table`} />
+    </>
+  );
 }

@@ -23,8 +23,8 @@ export function Q5Answer(props: Q5AnswerProps) {
       <KeyNote testId="q5-keynote">
         the key prints no derivation; it refers to <em>Ray Tracing in One Weekend</em> and awards 2 marks for
         Δ ≥ 0 and 2 for t ≥ 0. That book (and this page) call the centre <b>C</b> and the quadratic’s constant
-        term c; later editions simplify with b = 2h, h = d·(o − C), giving t = (−h ± √(h² − ac)) / a: the same
-        roots.
+        term c; later editions simplify with b = 2h, h = d·(o&nbsp;−&nbsp;C), giving t =
+        (−h&nbsp;±&nbsp;√(h²&nbsp;−&nbsp;ac)) / a: the same roots.
       </KeyNote>
     </>
   );
@@ -45,7 +45,7 @@ function methodNote(
     );
   }
   const intro =
-    'a, b, c are the textbook coefficients; Δ and the roots come from the robust form 4a(r² − |ℓ|²)';
+    'a, b, c are the textbook coefficients; Δ and the roots come from the robust form 4a(r²\u00a0−\u00a0|ℓ|²)';
   if (!robustDiffers || discFromAbc === null || discriminant === null) {
     return `${intro}. Here it equals b² − 4ac of the a, b, c shown, to the last bit.`;
   }
@@ -78,14 +78,14 @@ function LiveAnswerBody({ tl, modelAt, sweep, method }: Q5AnswerProps) {
     <>
       <div className="readouts">
         <Readout id="a" label="a = d·d" value={res?.a ?? null} digits={10} />
-        <Readout id="b" label="b = 2 d·(o − C)" value={res?.b ?? null} digits={10} />
+        <Readout id="b" label={'b = 2 d·(o\u00a0−\u00a0C)'} value={res?.b ?? null} digits={10} />
         <Readout id="c" label="c = |o − C|² − r²" value={res?.c ?? null} digits={10} />
         <Readout
           id="discriminant"
           label={
             method === 'naive'
               ? 'Δ = b² − 4ac (textbook: from a, b, c as shown)'
-              : 'Δ, robust form 4a(r² − |ℓ|²)'
+              : 'Δ, robust form 4a(r²\u00a0−\u00a0|ℓ|²)'
           }
           value={res?.discriminant ?? null}
           digits={10}
@@ -100,7 +100,16 @@ function LiveAnswerBody({ tl, modelAt, sweep, method }: Q5AnswerProps) {
         ) : null}
         <Readout id="t0" label="t₀" value={res?.t0 ?? null} digits={10} />
         <Readout id="t1" label="t₁" value={res?.t1 ?? null} digits={10} />
-        <Readout id="t-hit" label="t-hit (nearest t ≥ 0)" value={res?.tHit ?? null} digits={10} />
+        <Readout
+          id="t-hit"
+          label={
+            <>
+              t<sub>hit</sub> (nearest t ≥ 0)
+            </>
+          }
+          value={res?.tHit ?? null}
+          digits={10}
+        />
         <Readout id="case" label="case" value={res?.case ?? null} />
         <Readout
           id="sweep-x"

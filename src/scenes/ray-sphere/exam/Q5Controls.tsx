@@ -147,7 +147,7 @@ export const Q5Fields = memo(function Q5Fields({
         value={method}
         options={[
           { value: 'stable', label: 'robust (Ray Tracing Gems ch. 7)' },
-          { value: 'naive', label: 'textbook (−b ± √Δ) / 2a' },
+          { value: 'naive', label: 'textbook (−b\u00a0±\u00a0√Δ) / 2a' },
         ]}
         onChange={(m) => setParams({ method: m })}
         testId="method"
@@ -173,7 +173,7 @@ export const Q5Fields = memo(function Q5Fields({
       />
       <p className="rs-small">
         d need not be unit length: t is then measured in units of |d|. These fields hold the ray at the centre
-        of the sweep (t = 0.5); editing moves the sweep there.
+        of the sweep (sweep position τ = 0.5); editing moves the sweep there.
       </p>
     </details>
   );

@@ -117,7 +117,7 @@ const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySph
                 ? `That is b² − 4ac of these numbers in ${arith} arithmetic; the robust form (used for the roots ` +
                   'here, see “Explore further”) gives the same value.'
                 : `That is b² − 4ac of these numbers in ${arith} arithmetic (the textbook method). The roots ` +
-                  'below use the robust form, which computes Δ = 4a(r² − |ℓ|²) = ' +
+                  'below use the robust form, which computes Δ = 4a(r²\u00a0−\u00a0|ℓ|²) = ' +
                   `${fmt(res.discriminant)} without cancellation: the same quantity, different rounding.`}
             </p>
           ) : null}
@@ -147,23 +147,31 @@ const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySph
         </li>
         <li data-testid="step-tmin">
           <p>
-            <strong>Why renderers test t &gt; t_min (a small positive number) instead of t ≥ 0.</strong> A
-            shadow or reflection ray starts at a hit point on the surface. That point is computed in floating
-            point, so it lies a rounding error inside or outside the sphere, and the quadratic then has a root
-            t ≈ 0 at the starting point itself. With t ≥ 0 that root can count as a hit: the surface shadows
-            itself (“shadow acne”, a speckle of dark dots). Testing t &gt; t_min, here t_min = 10⁻⁴ r ={' '}
-            {fmt(tMin)}, skips it.
+            <strong>
+              Why renderers test t &gt; t<sub>min</sub> (a small positive number) instead of t ≥ 0.
+            </strong>{' '}
+            A shadow or reflection ray starts at a hit point on the surface. That point is computed in
+            floating point, so it lies a rounding error inside or outside the sphere, and the quadratic then
+            has a root t ≈ 0 at the starting point itself. With t ≥ 0 that root can count as a hit: the
+            surface shadows itself (“shadow acne”, a speckle of dark dots). Testing t &gt; t<sub>min</sub>,
+            here t<sub>min</sub> = 10⁻⁴ r = {fmt(tMin)}, skips it.
           </p>
           {sec ? (
             <p data-testid="tmin-example">
-              Here: the hit point p = o + t_hit d = <MathTex tex={v(sec.p)} /> lies |p − C| − r ={' '}
+              Here: the hit point p = o + t<sub>hit</sub> d = <MathTex tex={v(sec.p)} /> lies |p − C| − r ={' '}
               {fmt(sec.offSurface)} off the surface. A ray leaving it along the outward normal (towards a
               light straight above) has roots t = {fmt(sec.res.t0)} and {fmt(sec.res.t1)}: the first is the
               far side of the sphere behind it, the second is <em>p itself</em>.{' '}
-              {sec.selfHit !== null
-                ? `With t ≥ 0 it counts as a hit at t = ${fmt(sec.selfHit)}: the point would be in its own ` +
-                  `shadow. With t > t_min: ${sec.hitWithTMin === null ? 'no hit, the point is lit' : `a hit at ${fmt(sec.hitWithTMin)}`}.`
-                : 'Here rounding happened to put p just outside, so t ≥ 0 already rejects it; on other points it does not.'}
+              {sec.selfHit !== null ? (
+                <>
+                  With t ≥ 0 it counts as a hit at t = {fmt(sec.selfHit)}: the point would be in its own
+                  shadow. With t &gt; t<sub>min</sub>:{' '}
+                  {sec.hitWithTMin === null ? 'no hit, the point is lit' : `a hit at ${fmt(sec.hitWithTMin)}`}
+                  .
+                </>
+              ) : (
+                'Here rounding happened to put p just outside, so t ≥ 0 already rejects it; on other points it does not.'
+              )}
             </p>
           ) : null}
           <TMinSurvey cx={cx} cy={cy} cz={cz} r={model.input.r} method={res.method} />
@@ -207,7 +215,7 @@ const TMinSurvey = memo(function TMinSurvey({
     >
       Over {survey.count} points spread evenly over this sphere (each computed as C + r n in doubles), a ray
       leaving along the normal hits its own surface with t ≥ 0 at <strong>{survey.withZero}</strong> points,
-      and with t &gt; t_min at <strong>{survey.withTMin}</strong>.
+      and with t &gt; t<sub>min</sub> at <strong>{survey.withTMin}</strong>.
     </p>
   );
 });

@@ -1,12 +1,17 @@
 /**
- * Q5's figure block: the cross-section at the live position, the case banner, and the sweep's
- * transport with the sweep's own controls (mode and extent).
+ * Q5's figure block: the cross-section at the live position (a described figure), the case
+ * banner, and the sweep's transport with the sweep's own controls (mode and extent). On the page
+ * they stack; on the classroom stage (`present=1`) the figure takes the height the first screen
+ * leaves, over the transport and beside the case and the key readouts. With `ask=1` the roots, the
+ * case, the readouts and the sweep stay hidden until revealed.
  */
-import { NumberField, Select, TimelineTransport } from '../../../ui';
+import type { RefObject } from 'react';
+import { NumberField, Readout, Revealed, Select, TimelineTransport } from '../../../ui';
 import { sweepAt, type Sweep, type V3 } from '../model';
 import type { RaySphereParams } from '../params';
-import { sweepCoord } from '../view/format';
-import { LiveCaseBanner, LiveCrossSection, type LiveProps } from '../view/Live';
+import { describeRaySphere, sweepPlaceText } from '../view/describe';
+import { LiveDescribed } from '../view/Described';
+import { LiveCaseBanner, LiveCrossSection, useCoarseModel, type LiveProps } from '../view/Live';
 
 export interface Q5FigureProps extends LiveProps {
   sweep: Sweep;
@@ -16,40 +21,108 @@ export interface Q5FigureProps extends LiveProps {
   /** An edit of the ray or sphere by dragging (coalesced to one per frame by the scene). */
   onDrag: (patch: Partial<RaySphereParams>) => void;
   setParams: (patch: Partial<RaySphereParams>) => void;
+  method: RaySphereParams['method'];
+  /** `ask=1` before Reveal: the setup only. */
+  ask: boolean;
+  /** Laid out for the classroom stage (the figure fills the height left). */
+  staged?: boolean;
+  /** The block's box on the stage (the timeline stops drawing while it is off screen). */
+  boxRef?: RefObject<HTMLDivElement | null>;
 }
 
-export function Q5Figure({ tl, modelAt, sweep, extent, ends, onDrag, setParams }: Q5FigureProps) {
-  const fmtPos = (tt: number) => {
-    const x = sweepAt(sweep, tt).x;
-    return `t = ${tt.toFixed(3)}, ${sweepCoord(sweep.mode)} = ${Number.isFinite(x) ? x.toFixed(3) : String(x)}`;
-  };
+/** The readouts a class reads off the stage: the case, Δ and the roots (at the coarse position). */
+function StageReadouts(live: LiveProps) {
+  const res = useCoarseModel(live).model.chosen;
   return (
-    <>
-      <LiveCrossSection tl={tl} modelAt={modelAt} onChange={onDrag} fitExtra={ends} />
-      <LiveCaseBanner tl={tl} modelAt={modelAt} />
+    <div className="readouts rs-stage-readouts">
+      <Readout id="stage-discriminant" label="Δ" value={res?.discriminant ?? null} digits={4} />
+      <Readout id="stage-t0" label="t₀" value={res?.t0 ?? null} digits={4} />
+      <Readout id="stage-t1" label="t₁" value={res?.t1 ?? null} digits={4} />
+      {/* Unicode subscripts, not <sub>: on the stage no text may be set smaller than 18 px */}
+      <Readout id="stage-t-hit" label="tₕᵢₜ" value={res?.tHit ?? null} digits={4} />
+    </div>
+  );
+}
+
+/** The sweep's mode and extent (beside the transport on the page, in the drawer on the stage). */
+export function SweepControls({
+  sweep,
+  extent,
+  setParams,
+}: Pick<Q5FigureProps, 'sweep' | 'extent' | 'setParams'>) {
+  return (
+    <div className="rs-sweep-controls">
+      <Select
+        label="Sweep"
+        value={sweep.mode}
+        options={[
+          { value: 'offset', label: 'origin moves across the ray' },
+          { value: 'rotate', label: 'direction turns about o' },
+        ]}
+        onChange={(m) => setParams({ sweep: m })}
+        testId="sweep-mode"
+      />
+      <NumberField
+        label={sweep.mode === 'offset' ? 'extent (± radii)' : 'extent (± angular radii)'}
+        value={extent}
+        onChange={(x) => setParams({ extent: x })}
+        min={0.05}
+        max={1000}
+        step={0.5}
+        testId="sweep-extent"
+      />
+    </div>
+  );
+}
+
+export function Q5Figure(props: Q5FigureProps) {
+  const { tl, modelAt, sweep, extent, ends, onDrag, setParams, method, ask, staged, boxRef } = props;
+  const live = { tl, modelAt };
+  // the timeline's position is τ, never t: t is the ray's parameter (on the g(t) axis beside it)
+  const fmtPos = (tau: number) => sweepPlaceText({ mode: sweep.mode, tau, x: sweepAt(sweep, tau).x });
+  const figure = (
+    <LiveDescribed
+      {...live}
+      label="Cross-section through the ray and the sphere"
+      describe={(m, tau) =>
+        describeRaySphere(m, { method, ask, sweep: { mode: sweep.mode, tau, x: sweepAt(sweep, tau).x } })
+      }
+      testId="cross-figure"
+    >
+      <LiveCrossSection {...live} onChange={onDrag} fitExtra={ends} hideResults={ask} fill={staged} />
+    </LiveDescribed>
+  );
+  const banner = (
+    <Revealed ask={ask} what="the case (hit, miss, tangent …)">
+      <LiveCaseBanner {...live} />
+    </Revealed>
+  );
+  // on the stage the sweep's own controls (mode, extent) are in the drawer with the others
+  const transport = (
+    <Revealed ask={ask} what="the sweep of the ray across the sphere">
       <TimelineTransport timeline={tl} label="Ray sweep" format={fmtPos} testId="timeline">
-        <div className="rs-sweep-controls">
-          <Select
-            label="Sweep"
-            value={sweep.mode}
-            options={[
-              { value: 'offset', label: 'origin moves across the ray' },
-              { value: 'rotate', label: 'direction turns about o' },
-            ]}
-            onChange={(m) => setParams({ sweep: m })}
-            testId="sweep-mode"
-          />
-          <NumberField
-            label={sweep.mode === 'offset' ? 'extent (± radii)' : 'extent (± angular radii)'}
-            value={extent}
-            onChange={(x) => setParams({ extent: x })}
-            min={0.05}
-            max={1000}
-            step={0.5}
-            testId="sweep-extent"
-          />
-        </div>
+        {staged ? null : <SweepControls sweep={sweep} extent={extent} setParams={setParams} />}
       </TimelineTransport>
-    </>
+    </Revealed>
+  );
+  if (!staged)
+    return (
+      <>
+        {figure}
+        {banner}
+        {transport}
+      </>
+    );
+  return (
+    <div className="rs-present" ref={boxRef}>
+      <div className="rs-present-fig stage-figure">{figure}</div>
+      <div className="rs-present-side">
+        {banner}
+        <Revealed ask={ask} what="Δ and the roots">
+          <StageReadouts {...live} />
+        </Revealed>
+      </div>
+      <div className="rs-present-tl">{transport}</div>
+    </div>
   );
 }

@@ -7,6 +7,7 @@ import { useMemo } from 'react';
 import { sweepAt, sweepSeries, type Sweep } from '../model';
 import type { RaySphereParams } from '../params';
 import { LivePlots, type LiveProps } from '../view/Live';
+import { DeltaPlotData, deltaDescription, gDescription, GPlotData, LiveDescribed } from '../view/Described';
 import { sweepCoord } from '../view/format';
 
 export function Q5Plots({
@@ -17,6 +18,11 @@ export function Q5Plots({
 }: LiveProps & { sweep: Sweep; method: RaySphereParams['method'] }) {
   const series = useMemo(() => sweepSeries({ method }, sweep), [method, sweep]);
   const tangentX = useMemo(() => series.tangents.map((tt) => sweepAt(sweep, tt).x), [series, sweep]);
+  const live = { tl, modelAt };
+  const describeDelta = useMemo(
+    () => deltaDescription(series, tangentX, sweep, (tau) => sweepAt(sweep, tau).x),
+    [series, tangentX, sweep],
+  );
   const xLabel =
     sweep.mode === 'offset'
       ? 'h / r: signed distance of the line from C, in radii'
@@ -31,6 +37,30 @@ export function Q5Plots({
         tangentX={tangentX}
         xLabel={xLabel}
         method={method}
+        aroundG={(plot) => (
+          <LiveDescribed
+            {...live}
+            label="g(t) along the ray: the quadratic and its roots"
+            describe={gDescription(series.gWindow)}
+            quiet
+            testId="g-figure"
+            after={(m) => <GPlotData res={m.chosen} window={series.gWindow} />}
+          >
+            {plot}
+          </LiveDescribed>
+        )}
+        aroundDelta={(plot) => (
+          <LiveDescribed
+            {...live}
+            label="Δ against the sweep"
+            describe={describeDelta}
+            quiet
+            testId="delta-figure"
+            after={() => <DeltaPlotData series={series} tangentX={tangentX} sweep={sweep} />}
+          >
+            {plot}
+          </LiveDescribed>
+        )}
       />
       <p className="rs-small" data-testid="sweep-note">
         Strip under the Δ plot: the {method === 'naive' ? 'textbook' : 'robust'} method’s case at each

@@ -1,35 +1,37 @@
 /**
  * The 2D cross-section through the ray and the sphere's centre (an SVG): the great circle of the
- * sphere, the ray (solid for t ≥ 0, dashed behind the origin), its roots, and draggable handles
- * for the origin, the direction, the centre and the radius. The frame (plane and zoom) is kept
- * while dragging so nothing jumps; it is recomputed only when typed values leave the plane.
- * React renders the elements; their positions and labels are written by drawCross (after each
- * render, and per animation frame through `drawRef` without React, while a sweep plays).
+ * sphere, the ray (solid for t ≥ 0, dashed behind the origin), its roots, and handles for the
+ * origin, the direction, the centre and the radius (drag them, or focus one and use the arrow
+ * keys; each is a slider that says what it is, where it is and what the ray does now). The
+ * layout (view/crossLayout.ts) keeps the frame while dragging so nothing jumps, and places the
+ * labels where no handle covers them. React renders the elements; their positions and labels are
+ * written by drawCross (after each render, and per animation frame through `drawRef` without
+ * React, while a sweep plays).
  */
 import { useLayoutEffect, useRef, useState, type KeyboardEvent, type PointerEvent } from 'react';
+import { announce } from '../../../ui/announce';
 import { useWidth } from '../../../ui/useWidth';
 import { useSectionWidth } from '../../../ui/Deferred';
-import type { RaySphereHit } from '../../../core/geometry';
+import { dirFromFrame, fromFrame, tidy, type V3 } from '../model';
 import {
-  canonicalFrame,
-  dirFromFrame,
-  fromFrame,
-  frameFits,
-  tidy,
-  toFrame,
-  type Frame2D,
-  type V3,
-} from '../model';
+  cl,
+  handlePositions,
+  HANDLE_R,
+  layoutCross,
+  noteText,
+  planLabels,
+  X_,
+  Y_,
+  type Kept,
+  type LabelKey,
+  type Layout,
+  type RayState,
+  type Target,
+} from './crossLayout';
+import { handleText, HANDLE_NAMES } from './describe';
+import { clipSegment } from './labelLayout';
 
-/** The ray and sphere a figure draws: the checked inputs, the chosen method's hit, |o − C| / r. */
-export interface RayState {
-  o: V3;
-  d: V3;
-  c: V3;
-  r: number;
-  res: RaySphereHit | null;
-  distanceRatio: number;
-}
+export type { RayState } from './crossLayout';
 
 export interface CrossSectionProps extends RayState {
   onChange: (patch: { o?: V3; d?: V3; c?: V3; r?: number }) => void;
@@ -37,6 +39,31 @@ export interface CrossSectionProps extends RayState {
   fitExtra?: readonly V3[];
   /** Set to a function that redraws the figure for another ray directly (per animation frame). */
   drawRef?: { current: ((ray: CrossRay) => void) | null };
+  /** The tallest the drawing may be (px); default 460. */
+  maxHeight?: number;
+  /**
+   * Fill the height of the enclosing `.stage-figure` (the classroom stage gives it what the first
+   * screen leaves); otherwise the height follows the width.
+   */
+  fill?: boolean;
+}
+
+/** The height of the enclosing `.stage-figure` while `on` (null: not filling, or not measured yet). */
+function useFillHeight(ref: { current: HTMLElement | null }, on: boolean): number | null {
+  const [h, setH] = useState<number | null>(null);
+  useLayoutEffect(() => {
+    const box = on ? ref.current?.closest<HTMLElement>('.stage-figure') : null;
+    if (!box) {
+      setH(null);
+      return;
+    }
+    const measure = () => setH(box.clientHeight);
+    measure();
+    const ro = typeof ResizeObserver === 'function' ? new ResizeObserver(measure) : null;
+    ro?.observe(box);
+    return () => ro?.disconnect();
+  }, [ref, on]);
+  return h;
 }
 
 /** What moves while a sweep plays. */
@@ -45,168 +72,29 @@ export type CrossRay = RayState;
 /** Each coordinate rounded to `step` (see tidy). */
 const tidyVec = (q: V3, step: number): V3 => [tidy(q[0], step), tidy(q[1], step), tidy(q[2], step)];
 
-/** Above this |o − c| / r the view centres on the sphere and leaves the origin off screen. */
-const FAR = 60;
-
-interface View {
-  cx: number;
-  cy: number;
-  /** world units per pixel */
-  s: number;
-  far?: boolean;
-  /** The figure width the view was fitted for. */
-  W?: number;
-}
-
-type Target = 'o' | 'tip' | 'c' | 'r';
-
-interface Layout {
-  far: boolean;
-  fr: Frame2D;
-  v: View;
-  W: number;
-  H: number;
-  dl: number;
-  r: number;
-  O2: [number, number];
-  C2: [number, number];
-  dir2: [number, number];
-  tip: [number, number];
-  rHandle: [number, number];
-  fwdEnd: [number, number];
-  backEnd: [number, number];
-  roots: number[];
-  rootPts: [number, number][];
-  res: RaySphereHit | null;
-  distanceRatio: number;
-  step: number;
-}
-
-/**
- * The figure's layout for a ray: the plane (kept while it still fits, or while dragging) and the
- * view (kept while the content still fits well). Updates the kept frame and view in `keep`.
- */
-function layoutCross(
-  ray: CrossRay,
-  fitExtra: readonly V3[],
-  W: number,
-  H: number,
-  dragging: boolean,
-  keep: { frame: Frame2D | null; view: View | null },
-): Layout {
-  const { o, d, c, r, res, distanceRatio } = ray;
-  const far = distanceRatio > FAR;
-  // --- frame: keep it while it still contains the ray and the centre
-  const prevView = keep.view;
-  const tolLen = prevView ? prevView.s * 0.75 : 1e-9 * (Math.abs(r) + 1);
-  let fr = keep.frame;
-  if (far || (!dragging && (!fr || !frameFits(fr, o, d, c, tolLen)))) fr = canonicalFrame(o, d, c);
-  if (!fr) fr = canonicalFrame(o, d, c);
-  keep.frame = fr;
-
-  const dl = Math.hypot(d[0], d[1], d[2]);
-  let O2: [number, number];
-  let C2: [number, number];
-  let dir2: [number, number];
-  if (far) {
-    // Projecting a point 10⁸ r away onto e2 would amplify e2's rounding (≈ε|f|/|l|) into a
-    // visible offset; in the canonical frame the exact answer is known: the ray runs along x at
-    // height |l| (the distance of the line from the centre), and the centre is the origin.
-    const f: V3 = [o[0] - c[0], o[1] - c[1], o[2] - c[2]];
-    const k = (f[0] * d[0] + f[1] * d[1] + f[2] * d[2]) / (dl * dl);
-    const lx = f[0] - k * d[0];
-    const ly = f[1] - k * d[1];
-    const lz = f[2] - k * d[2];
-    O2 = [k * dl, Math.hypot(lx, ly, lz)];
-    C2 = [0, 0];
-    dir2 = [1, 0];
-  } else {
-    O2 = toFrame(fr, o);
-    C2 = toFrame(fr, c);
-    dir2 = [
-      (d[0] * fr.e1[0] + d[1] * fr.e1[1] + d[2] * fr.e1[2]) / dl,
-      (d[0] * fr.e2[0] + d[1] * fr.e2[1] + d[2] * fr.e2[2]) / dl,
-    ];
-  }
-  // a tangent's double root is drawn once
-  const roots = res && res.t0 !== null ? (res.t0 === res.t1 ? [res.t0] : [res.t0, res.t1!]) : [];
-  // root points along the drawn line (t in units of |d|)
-  const rootPts = roots.map((t): [number, number] => [O2[0] + t * dl * dir2[0], O2[1] + t * dl * dir2[1]]);
-
-  // --- view: fit the content, but keep the view while dragging or while it still fits well
-  let box: [number, number, number, number]; // xmin, xmax, ymin, ymax
-  if (far) {
-    // the closest point of the line to the centre, and the sphere
-    const tClose = -((O2[0] - C2[0]) * dir2[0] + (O2[1] - C2[1]) * dir2[1]);
-    const P: [number, number] = [O2[0] + tClose * dir2[0], O2[1] + tClose * dir2[1]];
-    box = [
-      Math.min(C2[0] - r, P[0]),
-      Math.max(C2[0] + r, P[0]),
-      Math.min(C2[1] - r, P[1]),
-      Math.max(C2[1] + r, P[1]),
-    ];
-  } else {
-    const extra = fitExtra.map((q) => toFrame(fr!, q));
-    const xs = [C2[0] - r, C2[0] + r, O2[0], ...rootPts.map((p) => p[0]), ...extra.map((p) => p[0])];
-    const ys = [C2[1] - r, C2[1] + r, O2[1], ...rootPts.map((p) => p[1]), ...extra.map((p) => p[1])];
-    box = [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)];
-  }
-  const bw = box[1] - box[0];
-  const bh = box[3] - box[2];
-  // margins for labels and handles, smaller on a phone-sized figure
-  const fitS = Math.max(bw / (W - Math.min(130, 0.16 * W)), bh / (H - Math.min(110, 0.22 * H))) || 1;
-  const fit: View = { cx: (box[0] + box[1]) / 2, cy: (box[2] + box[3]) / 2, s: fitS };
-  let view = prevView;
-  const inside = (v: View) =>
-    box[0] >= v.cx - (v.s * W) / 2 + 10 * v.s &&
-    box[1] <= v.cx + (v.s * W) / 2 - 10 * v.s &&
-    box[2] >= v.cy - (v.s * H) / 2 + 10 * v.s &&
-    box[3] <= v.cy + (v.s * H) / 2 - 10 * v.s;
-  if (!dragging && (!view || !inside(view) || view.s > 2.5 * fitS || far !== prevView?.far || view.W !== W))
-    view = fit;
-  keep.view = { ...view!, far, W };
-  const v = view!;
-  const step = 10 ** Math.floor(Math.log10(v.s * 2));
-
-  const L = Math.min(130, 0.22 * W) * v.s; // direction arrow length: 130 px (less on a phone)
-  const tip: [number, number] = [O2[0] + L * dir2[0], O2[1] + L * dir2[1]];
-  const rAngle = Math.PI / 4;
-  const rHandle: [number, number] = [C2[0] + r * Math.cos(rAngle), C2[1] + r * Math.sin(rAngle)];
-
-  // ray segment across the whole view: t from the origin to well past the view
-  const reach = (Math.hypot(W, H) * v.s + Math.hypot(O2[0] - v.cx, O2[1] - v.cy)) * 1.2;
-  const fwdEnd: [number, number] = [O2[0] + reach * dir2[0], O2[1] + reach * dir2[1]];
-  const backEnd: [number, number] = [O2[0] - reach * dir2[0], O2[1] - reach * dir2[1]];
-  return {
-    far,
-    fr,
-    v,
-    W,
-    H,
-    dl,
-    r,
-    O2,
-    C2,
-    dir2,
-    tip,
-    rHandle,
-    fwdEnd,
-    backEnd,
-    roots,
-    rootPts,
-    res,
-    distanceRatio,
-    step,
+/** A label's size: its measured text width (cached per text and font size) and 1.25 em. */
+function useLabelSizer() {
+  const cache = useRef(new Map<string, number>());
+  return (el: SVGTextElement | null, text: string): [number, number] => {
+    const fs = el ? parseFloat(getComputedStyle(el).fontSize) || 15 : 15;
+    const key = `${fs}|${text}`;
+    let w = cache.current.get(key);
+    if (w === undefined) {
+      // a text not yet laid out (jsdom, display none) measures 0: estimate it from its length
+      const m = el && typeof el.getComputedTextLength === 'function' ? el.getComputedTextLength() : 0;
+      w = m > 0 ? m : 0.62 * fs * text.length;
+      if (m > 0) cache.current.set(key, w);
+    }
+    return [w + 2, 1.25 * fs];
   };
 }
 
-const X_ = (g: Layout, x: number) => g.W / 2 + (x - g.v.cx) / g.v.s;
-const Y_ = (g: Layout, y: number) => g.H / 2 - (y - g.v.cy) / g.v.s;
-/** Clamp huge coordinates (far mode) so the SVG stays well-behaved. */
-const cl = (x: number) => Math.max(-1e5, Math.min(1e5, x));
-
 /** Writes a layout into the elements CrossSection rendered (marked with data-k). */
-function drawCross(fig: HTMLElement, g: Layout): void {
+function drawCross(
+  fig: HTMLElement,
+  g: Layout,
+  size: (el: SVGTextElement | null, text: string) => [number, number],
+): void {
   const X = (x: number) => X_(g, x);
   const Y = (y: number) => Y_(g, y);
   const q = (k: string) => fig.querySelector<SVGElement>(`[data-k="${k}"]`);
@@ -222,16 +110,30 @@ function drawCross(fig: HTMLElement, g: Layout): void {
     if (on) el.removeAttribute('display');
     else el.setAttribute('display', 'none');
   };
-  const text = (el: Element | null, t: string) => {
-    if (el && el.textContent !== t) el.textContent = t;
-  };
   const { O2, C2, far, res } = g;
   const caseCls = res ? `case-${res.case}` : '';
   const figCls = `rs-section ${caseCls}`;
   if (fig.getAttribute('class') !== figCls) fig.setAttribute('class', figCls);
   set(q('circle'), { cx: cl(X(C2[0])), cy: cl(Y(C2[1])), r: Math.min(1e5, g.r / g.v.s) });
-  set(q('back'), { x1: cl(X(g.backEnd[0])), y1: cl(Y(g.backEnd[1])), x2: cl(X(O2[0])), y2: cl(Y(O2[1])) });
-  set(q('fwd'), { x1: cl(X(O2[0])), y1: cl(Y(O2[1])), x2: cl(X(g.fwdEnd[0])), y2: cl(Y(g.fwdEnd[1])) });
+  // the ray and the line behind the origin, drawn only within the figure
+  const line = (k: string, a: readonly [number, number], b: readonly [number, number]) => {
+    const seg = clipSegment([cl(X(a[0])), cl(Y(a[1]))], [cl(X(b[0])), cl(Y(b[1]))], {
+      x: 0,
+      y: 0,
+      w: g.W,
+      h: g.H,
+    });
+    show(q(k), seg !== null);
+    if (seg)
+      set(q(k), {
+        x1: seg[0][0].toFixed(1),
+        y1: seg[0][1].toFixed(1),
+        x2: seg[1][0].toFixed(1),
+        y2: seg[1][1].toFixed(1),
+      });
+  };
+  line('back', g.backEnd, O2);
+  line('fwd', O2, g.fwdEnd);
   const dir = q('dir');
   show(dir, !far);
   if (!far) set(dir, { x1: X(O2[0]), y1: Y(O2[1]), x2: X(g.tip[0]), y2: Y(g.tip[1]) });
@@ -239,6 +141,7 @@ function drawCross(fig: HTMLElement, g: Layout): void {
     const el = q(`root${i}`);
     const t = g.roots[i];
     show(el, t !== undefined);
+    show(q(`root${i}-label`), t !== undefined);
     if (!el || t === undefined) continue;
     const p = g.rootPts[i];
     const isHit = res !== null && res.tHit !== null && res.tHit === t;
@@ -247,40 +150,36 @@ function drawCross(fig: HTMLElement, g: Layout): void {
       class: `rs-root${isHit ? ' hit' : ''}${t < 0 ? ' behind' : ''}`,
     });
     set(el.firstElementChild, { r: isHit ? 6.5 : 5 });
-    const label = el.lastElementChild;
-    set(label, { y: i === 0 ? -9 : 18 });
-    text(
-      label,
-      `${g.roots.length === 1 ? 't₀ = t₁' : `t${i === 0 ? '₀' : '₁'}`}${isHit ? ' (hit)' : t < 0 ? ' < 0' : ''}`,
-    );
   }
-  const oLabel = q('o-label');
-  show(oLabel, !far);
-  if (!far) set(oLabel, { x: cl(X(O2[0])) - 10, y: cl(Y(O2[1])) - 12 });
-  set(q('c-label'), { x: cl(X(C2[0])) + 9, y: cl(Y(C2[1])) + 16 });
-  const handle = (k: string, at: [number, number], on = true) => {
-    const el = q(`h-${k}`);
-    show(el, on);
-    if (on) set(el, { transform: `translate(${cl(X(at[0]))} ${cl(Y(at[1]))})` });
+  const shown = new Set(handlePositions(g).map((h) => h.target));
+  for (const h of handlePositions(g))
+    set(q(`h-${h.target}`), { transform: `translate(${cl(h.at[0])} ${cl(h.at[1])})` });
+  for (const k of ['o', 'tip', 'c', 'r'] as const) show(q(`h-${k}`), shown.has(k));
+  show(q('o-label'), !far);
+  show(q('note'), noteText(g) !== null);
+  // labels last: measured with their current text, then put where no handle covers them
+  const labels = planLabels(g, (key: LabelKey, text: string) => {
+    const el = q(key) as SVGTextElement | null;
+    if (el && el.textContent !== text) el.textContent = text;
+    return size(el, text);
+  });
+  for (const l of labels) {
+    const el = q(l.key);
+    if (!el) continue;
+    const fs = l.box.h / 1.25;
+    set(el, { x: l.box.x.toFixed(1), y: (l.box.y + 0.95 * fs).toFixed(1) });
+  }
+}
+
+/** The slider attributes of a handle for this layout (name, value text, a value for aria-valuenow). */
+function handleAria(g: Layout, ray: RayState, target: Target) {
+  const t = handleText(target, ray, g.dir2);
+  return {
+    'aria-valuetext': t.valueText,
+    'aria-valuenow': t.valueNow,
+    'aria-valuemin': t.min,
+    'aria-valuemax': t.max,
   };
-  handle('o', O2, !far);
-  handle('tip', g.tip, !far);
-  handle('c', C2);
-  handle('r', g.rHandle);
-  set(q('h-r'), { 'aria-label': `radius r = ${g.r} (drag, or focus and use the arrow keys)` });
-  set(q('r-label'), { x: X(g.rHandle[0]) + 12, y: Y(g.rHandle[1]) - 6 });
-  const originOff = X(O2[0]) < 0 || X(O2[0]) > g.W || Y(O2[1]) < 0 || Y(O2[1]) > g.H;
-  const note = q('note');
-  show(note, far || originOff);
-  if (note && (far || originOff)) {
-    set(note, { y: g.H - 12 });
-    text(
-      note,
-      far
-        ? `Not to scale: the origin is ${g.distanceRatio.toPrecision(3)} radii away (off to the ${g.dir2[0] >= 0 ? 'left' : 'right'}). Type values to move it.`
-        : 'The origin is outside the view.',
-    );
-  }
 }
 
 export function CrossSection({
@@ -293,26 +192,45 @@ export function CrossSection({
   onChange,
   fitExtra = [],
   drawRef,
+  maxHeight = 460,
+  fill = false,
 }: CrossSectionProps) {
   const svgRef = useRef<SVGSVGElement>(null);
   // one SVG unit = one CSS pixel: labels and handles keep their size on small screens
-  const figRef = useRef<HTMLElement>(null);
+  const figRef = useRef<HTMLDivElement>(null);
   // first drawn at the width of the placeholder it replaced (the figure fills its section), else a guess
   const W = Math.max(280, useWidth(figRef, useSectionWidth() ?? 640));
-  const H = Math.round(Math.min(460, Math.max(280, W * 0.62)));
-  const keep = useRef<{ frame: Frame2D | null; view: View | null }>({ frame: null, view: null });
+  const fillH = useFillHeight(figRef, fill);
+  const H =
+    fillH !== null
+      ? Math.max(200, Math.round(fillH))
+      : Math.round(Math.min(Math.max(240, maxHeight), Math.max(280, W * 0.62)));
+  const keep = useRef<Kept>({ frame: null, view: null });
   const dragRef = useRef<{ target: Target; pointerId: number } | null>(null);
   const [dragging, setDragging] = useState<Target | null>(null);
   // the ray drawn last (from a render or a frame): pointer and key handlers work on what is shown
   const ray = useRef<CrossRay>({ o, d, c, r, res, distanceRatio });
   if (!drawRef) ray.current = { o, d, c, r, res, distanceRatio };
   const shown = useRef<Layout | null>(null);
-  const layout = (x: CrossRay) => layoutCross(x, fitExtra, W, H, dragging !== null, keep.current);
+  const size = useLabelSizer();
+  const layout = (x: CrossRay) => layoutCross(x, fitExtra, W, H, dragging, keep.current);
   const draw = (x: CrossRay) => {
     ray.current = x;
     const g = layout(x);
     shown.current = g;
-    if (figRef.current) drawCross(figRef.current, g);
+    const fig = figRef.current;
+    if (!fig) return;
+    drawCross(fig, g, size);
+    for (const target of ['o', 'tip', 'c', 'r'] as const) {
+      const el = fig.querySelector(`[data-k="h-${target}"]`);
+      const attrs = handleAria(g, x, target);
+      for (const a in attrs) {
+        const v = attrs[a as keyof typeof attrs];
+        if (!el) continue;
+        if (v === undefined) el.removeAttribute(a);
+        else if (el.getAttribute(a) !== String(v)) el.setAttribute(a, String(v));
+      }
+    }
   };
   if (drawRef) drawRef.current = draw;
   useLayoutEffect(() => draw(ray.current));
@@ -361,41 +279,61 @@ export function CrossSection({
     if (p) apply(dr.target, p[0], p[1]);
   };
   const up = (e: PointerEvent<SVGSVGElement>) => {
-    if (dragRef.current?.pointerId !== e.pointerId) return;
+    const dr = dragRef.current;
+    if (dr?.pointerId !== e.pointerId) return;
     dragRef.current = null;
     setDragging(null);
+    // what was dragged, where it is now and what the ray does (a slider's keys say it themselves)
+    const g = cur();
+    const name = HANDLE_NAMES[dr.target];
+    announce(
+      `${name[0].toUpperCase()}${name.slice(1)}: ${handleText(dr.target, ray.current, g.dir2).valueText}`,
+    );
   };
+  // Arrow keys move a point 8 px in the figure (Shift: 1 px; Page Up / Down: 40 px). The radius is
+  // a plain slider: Up / Right grow it, Down / Left shrink it.
   const key = (target: Target) => (e: KeyboardEvent<SVGElement>) => {
     const g = cur();
-    const k = 8 * g.v.s;
+    const px = e.key === 'PageUp' || e.key === 'PageDown' ? 40 : e.shiftKey ? 1 : 8;
+    const k = px * g.v.s;
+    if (target === 'r') {
+      const sgn = { ArrowUp: 1, ArrowRight: 1, PageUp: 1, ArrowDown: -1, ArrowLeft: -1, PageDown: -1 }[e.key];
+      if (!sgn) return;
+      e.preventDefault();
+      const step = e.shiftKey ? g.step / 10 : g.step;
+      const nr = tidy(g.r + sgn * Math.max(k, step), step);
+      if (nr > 0) onChange({ r: nr });
+      return;
+    }
     const dx = e.key === 'ArrowRight' ? k : e.key === 'ArrowLeft' ? -k : 0;
-    const dy = e.key === 'ArrowUp' ? k : e.key === 'ArrowDown' ? -k : 0;
+    const dy =
+      e.key === 'ArrowUp' || e.key === 'PageUp' ? k : e.key === 'ArrowDown' || e.key === 'PageDown' ? -k : 0;
     if (!dx && !dy) return;
     e.preventDefault();
-    const at = target === 'o' ? g.O2 : target === 'tip' ? g.tip : target === 'c' ? g.C2 : g.rHandle;
+    const at = target === 'o' ? g.O2 : target === 'tip' ? g.tip : g.C2;
     apply(target, at[0] + dx, at[1] + dy);
   };
 
-  const handle = (target: Target, label: string, cls: string) => (
+  const handle = (target: Target, cls: string) => (
     <g
       className={`rs-handle ${cls}${dragging === target ? ' active' : ''}`}
       data-k={`h-${target}`}
       onPointerDown={down(target)}
       onKeyDown={key(target)}
       tabIndex={0}
-      role="button"
-      aria-roledescription="draggable handle"
-      aria-label={`${label} (drag, or focus and use the arrow keys)`}
+      role="slider"
+      aria-label={HANDLE_NAMES[target]}
       data-testid={`handle-${target}`}
     >
-      <circle r={16} className="rs-handle-hit" />
+      <circle r={HANDLE_R} className="rs-handle-hit" />
       <circle r={13} className="rs-handle-ring" />
-      <circle r={7} />
+      <circle r={7.5} className="rs-handle-dot" />
+      <path d="M-3.5,0H3.5M0,-3.5V3.5" className="rs-handle-grip" />
     </g>
   );
 
   return (
-    <figure className="rs-section" ref={figRef}>
+    <div className="rs-section" ref={figRef}>
       <svg
         ref={svgRef}
         viewBox={`0 0 ${W} ${H}`}
@@ -403,7 +341,6 @@ export function CrossSection({
         width="100%"
         height={H}
         role="group"
-        aria-label="Cross-section through the ray and the sphere's centre"
         onPointerMove={move}
         onPointerUp={up}
         onPointerCancel={up}
@@ -429,30 +366,33 @@ export function CrossSection({
         {[0, 1].map((i) => (
           <g key={i} data-k={`root${i}`} className="rs-root" display="none">
             <circle r={5} />
-            <text x={8} className="rs-label" />
           </g>
         ))}
-        <text data-k="o-label" className="rs-label" textAnchor="end">
+        {handle('o', 'h-o')}
+        {handle('tip', 'h-d')}
+        {handle('c', 'h-c')}
+        {handle('r', 'h-r')}
+        {/* labels after the handles: drawn on top, and placed where no handle is */}
+        {[0, 1].map((i) => (
+          <text key={i} data-k={`root${i}-label`} className="rs-label" display="none" />
+        ))}
+        <text data-k="o-label" className="rs-label">
           o
         </text>
         <text data-k="c-label" className="rs-label">
           C
         </text>
-        {handle('o', 'ray origin o', 'h-o')}
-        {handle('tip', 'ray direction d', 'h-d')}
-        {handle('c', 'sphere centre C', 'h-c')}
-        {handle('r', 'radius r', 'h-r')}
         <text data-k="r-label" className="rs-label">
           r
         </text>
-        <text data-k="note" x={12} className="rs-note" display="none" />
+        <text data-k="note" className="rs-note" display="none" />
       </svg>
-      <figcaption className="rs-caption">
-        Plane through the ray and the centre. Solid: the ray (t ≥ 0); dashed: the line behind the origin (t
-        &lt; 0). Drag <span className="key-o">o</span>, the <span className="key-d">arrow tip</span>{' '}
-        (direction), <span className="key-c">C</span> and the <span className="key-r">rim handle</span>{' '}
-        (radius).
-      </figcaption>
-    </figure>
+      <p className="rs-caption">
+        Plane through the ray and the centre. Solid: the ray (t&nbsp;≥&nbsp;0); dashed: the line behind the
+        origin (t&nbsp;&lt;&nbsp;0); filled dots: the roots. Drag a ringed handle (<b>o</b>, the arrow tip for
+        the direction, <b>C</b>, and the one on the rim for the radius), or focus it and use the arrow keys;
+        or type the values.
+      </p>
+    </div>
   );
 }

@@ -3,10 +3,12 @@
  * readouts in float32, and the table of errors of both methods in float64 and in float32 side by
  * side (each against the double-double reference of its own inputs).
  */
+import type { ReactNode } from 'react';
 import type { RaySphereHit } from '../../../core/geometry';
 import { errorInUlpsF32 } from '../../../core/geometry';
 import type { MethodRow, RaySphereModel } from '../model';
 import type { Precision } from '../precisionF32';
+import { ScrollTable } from './Precision';
 
 export const PRECISION_OPTIONS: { value: Precision; label: string }[] = [
   { value: 'f64', label: 'float64 (double, as JavaScript)' },
@@ -82,14 +84,18 @@ export function PrecisionCompare({ model }: { model: RaySphereModel }) {
     { id: 'f32-naive', row: pick(f.rows, 'naive'), u: 2 ** -24, ref: f.reference },
     { id: 'f32-stable', row: pick(f.rows, 'stable'), u: 2 ** -24, ref: f.reference },
   ];
-  const labels: Record<Key, string> = { disc: 'Δ', t0: 't₀', t1: 't₁', hit: 't-hit' };
+  const labels: Record<Key, ReactNode> = {
+    disc: 'Δ',
+    t0: 't₀',
+    t1: 't₁',
+    hit: (
+      <>
+        t<sub>hit</sub>
+      </>
+    ),
+  };
   return (
-    <div
-      className="rs-table-wrap"
-      tabIndex={0}
-      role="group"
-      aria-label="Errors in float64 and float32 side by side (the table scrolls sideways on narrow screens)"
-    >
+    <ScrollTable label="Errors in float64 and float32 side by side">
       <table className="rs-precision rs-compare" data-testid="precision-compare">
         <caption className="rs-small">
           Relative error against the double-double reference, float64 beside float32
@@ -149,6 +155,6 @@ export function PrecisionCompare({ model }: { model: RaySphereModel }) {
           </tr>
         </tbody>
       </table>
-    </div>
+    </ScrollTable>
   );
 }

@@ -3,7 +3,7 @@
  * the figures that move every frame (the cross-section, the two plots) are drawn directly on each
  * timeline frame; the text (case banner, 3D view) re-renders at most RENDER_HZ times a second.
  */
-import { useLayoutEffect, useRef } from 'react';
+import { useLayoutEffect, useRef, type ReactNode } from 'react';
 import { useCoarsePosition, useTimelineFrame, type Timeline } from '../../../ui';
 import type { RaySphereCase, RaySphereHit } from '../../../core/geometry';
 import { CASE_TEXT, sweepAt, type RaySphereModel, type Sweep, type SweepSeries, type V3 } from '../model';
@@ -54,18 +54,23 @@ export function LiveCrossSection({
   modelAt,
   onChange,
   fitExtra,
+  hideResults = false,
+  fill,
 }: LiveProps & {
   onChange: (patch: Partial<RaySphereParams>) => void;
   fitExtra: readonly V3[];
+  /** Draw the ray and the sphere only, without the roots (ask=1 before Reveal). */
+  hideResults?: boolean;
+  fill?: boolean;
 }) {
   const drawRef = useRef<((ray: CrossRay) => void) | null>(null);
   const rayAt = (t: number): CrossRay => {
     const m = modelAt(t);
-    return { ...m.input, res: m.chosen, distanceRatio: m.distanceRatio };
+    return { ...m.input, res: hideResults ? null : m.chosen, distanceRatio: m.distanceRatio };
   };
   useDrawEveryFrame(tl, (t) => drawRef.current?.(rayAt(t)));
   const first = rayAt(tl.now());
-  return <CrossSection {...first} onChange={onChange} fitExtra={fitExtra} drawRef={drawRef} />;
+  return <CrossSection {...first} onChange={onChange} fitExtra={fitExtra} drawRef={drawRef} fill={fill} />;
 }
 
 const CASE_NAME: Record<RaySphereCase, string> = {
@@ -114,12 +119,17 @@ export function LivePlots({
   tangentX,
   xLabel,
   method,
+  aroundG = (el) => el,
+  aroundDelta = (el) => el,
 }: LiveProps & {
   sweep: Sweep;
   series: SweepSeries;
   tangentX: number[];
   xLabel: string;
   method: RaySphereParams['method'];
+  /** What goes around each plot (its described figure, its table and audio trace). */
+  aroundG?: (plot: ReactNode) => ReactNode;
+  aroundDelta?: (plot: ReactNode) => ReactNode;
 }) {
   const g = useRef<((res: RaySphereHit | null) => void) | null>(null);
   const delta = useRef<((x: number, discStable: number | null, discNaive: number | null) => void) | null>(
@@ -142,17 +152,19 @@ export function LivePlots({
   const first = at(tl.now());
   return (
     <>
-      <GSweepPlot res={first.res} window={series.gWindow} drawRef={g} />
-      <DeltaSweepPlot
-        series={series}
-        tangentX={tangentX}
-        x={first.x}
-        discStable={first.stable}
-        discNaive={first.naive}
-        xLabel={xLabel}
-        method={method}
-        drawRef={delta}
-      />
+      {aroundG(<GSweepPlot res={first.res} window={series.gWindow} drawRef={g} />)}
+      {aroundDelta(
+        <DeltaSweepPlot
+          series={series}
+          tangentX={tangentX}
+          x={first.x}
+          discStable={first.stable}
+          discNaive={first.naive}
+          xLabel={xLabel}
+          method={method}
+          drawRef={delta}
+        />,
+      )}
     </>
   );
 }

@@ -2,10 +2,19 @@
  * The precision views: textbook vs robust vs double-double reference (table), the rendered image
  * of a distant sphere by each method, and the error against distance.
  */
-import { useEffect, useMemo, useRef, useState, type RefObject } from 'react';
-import { Plot, Slider, useSeenOnce, type PlotTrace } from '../../../ui';
-import { ERROR_FLOOR, errorVsDistance, renderDistant, shadeImage, type RaySphereModel } from '../model';
-import { f32ErrorTraces } from './float32Traces';
+import { useEffect, useMemo, useRef, useState, type ReactNode, type RefObject } from 'react';
+import { Plot, ShowAsTable, Slider, useSeenOnce, type PlotTrace } from '../../../ui';
+import {
+  ERROR_FLOOR,
+  errorVsDistance,
+  renderDistant,
+  shadeImage,
+  type ErrorSeries,
+  type RaySphereModel,
+} from '../model';
+import { f32ErrorSeries, f32ErrorTraces } from './float32Traces';
+import { describeErrorPlot } from './describe';
+import { formatNumber } from '../../../ui/Readout';
 
 function fmtErr(e: number | null): { text: string; cls: string } {
   if (e === null) return { text: '—', cls: 'na' };
@@ -22,8 +31,31 @@ const QUANTITIES = [
   { label: 'Δ = b² − 4ac', id: 'disc', value: 'discriminant', err: 'errDisc' },
   { label: 't₀', id: 't0', value: 't0', err: 'errT0' },
   { label: 't₁', id: 't1', value: 't1', err: 'errT1' },
-  { label: 't-hit', id: 'hit', value: 'tHit', err: 'errHit' },
+  {
+    label: (
+      <>
+        t<sub>hit</sub>
+      </>
+    ),
+    id: 'hit',
+    value: 'tHit',
+    err: 'errHit',
+  },
 ] as const;
+
+/** A table that scrolls sideways on narrow screens, focusable so the keyboard can scroll it. */
+export function ScrollTable({ label, children }: { label: string; children: ReactNode }) {
+  return (
+    <div
+      className="rs-table-wrap"
+      tabIndex={0}
+      role="group"
+      aria-label={`${label} (the table scrolls sideways on narrow screens)`}
+    >
+      {children}
+    </div>
+  );
+}
 
 /** Side-by-side table of both methods against the reference. */
 export function PrecisionTable({ model }: { model: RaySphereModel }) {
@@ -60,24 +92,19 @@ export function PrecisionTable({ model }: { model: RaySphereModel }) {
     );
   };
   return (
-    <div
-      className="rs-table-wrap"
-      tabIndex={0}
-      role="group"
-      aria-label="Precision of the two methods (the table scrolls sideways on narrow screens)"
-    >
+    <ScrollTable label="Precision of the two methods">
       <table className="rs-precision" data-testid="precision-table">
         <thead>
           <tr>
             <th scope="col"></th>
-            <th scope="col">Textbook (−b ± √Δ) / 2a</th>
+            <th scope="col">Textbook (−b&nbsp;±&nbsp;√Δ) / 2a</th>
             <th scope="col">Robust (RTG ch. 7)</th>
             <th scope="col">Reference (double-double)</th>
           </tr>
         </thead>
         <tbody>
           {rows.map((r) => (
-            <tr key={r.label}>
+            <tr key={r.id}>
               <th scope="row">{r.label}</th>
               {cell(r.n, r.en, `naive-${r.id}`, r.ref)}
               {cell(r.s, r.es, `stable-${r.id}`, r.ref)}
@@ -107,7 +134,7 @@ export function PrecisionTable({ model }: { model: RaySphereModel }) {
           </tr>
         </tbody>
       </table>
-    </div>
+    </ScrollTable>
   );
 }
 
@@ -122,11 +149,14 @@ function MethodImage({
   name,
   id,
   hits,
+  says,
 }: {
   canvasRef: RefObject<HTMLCanvasElement | null>;
   name: string;
   id: string;
   hits: number | undefined;
+  /** What the image shows, in numbers (its accessible name after its own). */
+  says: string;
 }) {
   return (
     <figure>
@@ -135,7 +165,8 @@ function MethodImage({
         width={IMG}
         height={IMG}
         className="rs-canvas"
-        aria-label={`${name} render of the distant sphere`}
+        role="img"
+        aria-label={`${name} render of the distant sphere: ${hits === undefined ? 'not yet computed' : `${hits} of ${IMG * IMG} pixels hit; ${says}`}`}
         data-testid={`img-${id}`}
         data-hits={hits}
       />
@@ -174,7 +205,7 @@ export function DistantImages() {
   return (
     <div className="rs-distant" ref={box}>
       <Slider
-        label="Distance to the sphere, log₁₀(|o − c| / r)"
+        label={'Distance to the sphere, log₁₀(|o\u00a0−\u00a0c|\u00a0/\u00a0r)'}
         value={exp}
         min={0.5}
         max={10}
@@ -183,8 +214,20 @@ export function DistantImages() {
         testId="distant-exp"
       />
       <div className="rs-images">
-        <MethodImage canvasRef={naiveRef} name="Textbook" id="naive" hits={img?.naiveHits} />
-        <MethodImage canvasRef={stableRef} name="Robust" id="stable" hits={img?.stableHits} />
+        <MethodImage
+          canvasRef={naiveRef}
+          name="Textbook"
+          id="naive"
+          hits={img?.naiveHits}
+          says={img ? `${img.disagree} pixels differ from the robust render` : ''}
+        />
+        <MethodImage
+          canvasRef={stableRef}
+          name="Robust"
+          id="stable"
+          hits={img?.stableHits}
+          says="the correct disc"
+        />
       </div>
       {img ? (
         <p className="rs-small" data-testid="distant-summary" data-disagree={img.disagree}>
@@ -236,7 +279,8 @@ export function ErrorVsDistance({
   const box = useRef<HTMLDivElement>(null);
   const seen = useSeenOnce(box);
   const s = useMemo(() => (seen ? errorVsDistance() : null), [seen]);
-  const s32 = useMemo(() => (s ? f32ErrorTraces(s.dist) : []), [s]);
+  const e32 = useMemo(() => (s ? f32ErrorSeries(s.dist) : null), [s]);
+  const s32 = useMemo(() => (e32 ? f32ErrorTraces(e32) : []), [e32]);
   const u = ERROR_FLOOR;
   const data = useMemo<PlotTrace[]>(
     () =>
@@ -245,8 +289,8 @@ export function ErrorVsDistance({
         : [
             curve(s.dist, s.discNaive, 'textbook Δ', { color: NAIVE_COLOR }, true),
             curve(s.dist, s.discStable, 'robust Δ', { color: STABLE_COLOR }, true),
-            curve(s.dist, s.hitNaive, 'textbook t-hit', { color: NAIVE_COLOR, dash: 'dot' }),
-            curve(s.dist, s.hitStable, 'robust t-hit', { color: STABLE_COLOR, dash: 'dot' }),
+            curve(s.dist, s.hitNaive, 'textbook t<sub>hit</sub>', { color: NAIVE_COLOR, dash: 'dot' }),
+            curve(s.dist, s.hitStable, 'robust t<sub>hit</sub>', { color: STABLE_COLOR, dash: 'dot' }),
             curve(
               s.dist,
               s.dist.map((D) => Math.min(1, u * D * D)),
@@ -318,12 +362,44 @@ export function ErrorVsDistance({
           data={data}
           layout={layout}
           height={ERROR_PLOT_HEIGHT}
-          ariaLabel="Relative error of the discriminant and of t-hit against distance, textbook and robust"
+          label="Relative error of Δ and of the hit's t against distance, textbook and robust"
+          description={describeErrorPlot(s, e32 ?? undefined)}
           testId="error-plot"
         />
       ) : (
         <div data-testid="error-plot" style={{ height: ERROR_PLOT_HEIGHT }} aria-busy="true" />
       )}
+      {s ? <ErrorTables s={s} e32={e32} /> : null}
     </div>
   );
 }
+
+/** The error plot's data as tables: float64, and float32 (its own distances, up to 10⁹ r). */
+function ErrorTables({ s, e32 }: { s: ErrorSeries; e32: ErrorSeries | null }) {
+  const cols = ['D / r', 'textbook Δ', 'robust Δ', 'textbook tₕᵢₜ', 'robust tₕᵢₜ'];
+  const rows = (e: ErrorSeries) =>
+    e.dist.map((D, i) => [D, e.discNaive[i], e.discStable[i], e.hitNaive[i], e.hitStable[i]]);
+  const tables = [
+    { e: s, arithmetic: 'float64', id: 'error-table', summary: undefined },
+    { e: e32, arithmetic: 'float32', id: 'error-table-f32', summary: 'Show the float32 curves as a table' },
+  ];
+  return (
+    <>
+      {tables.map(({ e, arithmetic, id, summary }) =>
+        e ? (
+          <ShowAsTable
+            key={id}
+            caption={`Median relative error against distance, ${arithmetic}`}
+            columns={cols}
+            rows={rows(e)}
+            format={fmtTable}
+            summary={summary}
+            testId={id}
+          />
+        ) : null,
+      )}
+    </>
+  );
+}
+
+const fmtTable = (v: number) => formatNumber(v, 2);

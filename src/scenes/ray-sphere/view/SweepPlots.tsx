@@ -138,8 +138,10 @@ function SvgBox({
         viewBox={`0 0 ${W} ${height}`}
         width="100%"
         height={height}
-        role="img"
-        aria-label={label}
+        // named and described by the figure around it (view/Described.tsx): the SVG's ticks and
+        // labels would only repeat its summary, piece by piece
+        aria-hidden="true"
+        data-label={label}
         data-testid={testId}
         className="mp-svg"
       >

@@ -8,7 +8,7 @@ import { useEffect, useRef } from 'react';
 import type * as THREE from 'three';
 import { Viewport, type ViewportContext } from '../../../three';
 import { intersectRaySphere } from '../../../core/geometry';
-import type { V3 } from '../model';
+import { FAR_RATIO, type V3 } from '../model';
 import type { RayState } from './CrossSection';
 
 export interface View3DProps extends RayState {
@@ -29,8 +29,6 @@ interface Objects {
   roots: THREE.Mesh[];
 }
 
-const FAR = 60;
-
 export function View3D({
   o,
   d,
@@ -50,7 +48,7 @@ export function View3D({
     const ob = objs.current;
     if (!ob) return;
     const { o, d, c, r, res, distanceRatio, dark, fitExtra } = latest.current;
-    const far = distanceRatio > FAR;
+    const far = distanceRatio > FAR_RATIO;
     // view centre and scale (in doubles)
     let centre: V3;
     let extent: number;
@@ -178,7 +176,7 @@ export function View3D({
       testId="view-3d"
       phiZero={false}
     >
-      {distanceRatio > FAR ? (
+      {distanceRatio > FAR_RATIO ? (
         <p className="rs-3d-note">
           Centred on the sphere; the origin is {distanceRatio.toPrecision(3)} radii away.
         </p>

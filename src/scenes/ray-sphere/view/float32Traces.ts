@@ -4,13 +4,18 @@
  * textbook form breaks (D/r ≈ 1/√u₃₂ = 4096, against 1/√u ≈ 10⁸ in float64).
  */
 import type { PlotTrace } from '../../../ui';
+import type { ErrorSeries } from '../model';
 import { errorVsDistanceF32 } from '../precisionF32';
 
 const U32 = 2 ** -24;
 
-export function f32ErrorTraces(distances: number[]): PlotTrace[] {
+/** The float32 error series at the plot's distances up to 10⁹ r. */
+export function f32ErrorSeries(distances: number[]): ErrorSeries {
   // beyond 10⁹ radii a float32 sphere's centre is too coarse (spacing ≳ 64 r) to aim at
-  const s = errorVsDistanceF32(distances.filter((D) => D <= 1e9));
+  return errorVsDistanceF32(distances.filter((D) => D <= 1e9));
+}
+
+export function f32ErrorTraces(s: ErrorSeries): PlotTrace[] {
   return [
     {
       x: s.dist,
@@ -31,14 +36,14 @@ export function f32ErrorTraces(distances: number[]): PlotTrace[] {
     {
       x: s.dist,
       y: s.hitNaive,
-      name: 'textbook t-hit, float32',
+      name: 'textbook t<sub>hit</sub>, float32',
       mode: 'lines',
       line: { color: '#e67e22', dash: 'dot' },
     },
     {
       x: s.dist,
       y: s.hitStable,
-      name: 'robust t-hit, float32',
+      name: 'robust t<sub>hit</sub>, float32',
       mode: 'lines',
       line: { color: '#16a085', dash: 'dot' },
     },

@@ -1,62 +1,56 @@
 /** Q3(a): nearest-neighbour lookup at the query, with the key's steps and the flipped-v convention. */
-import { useDeferredValue, useMemo, useRef } from 'react';
-import { LiveReadout, useAnimFrame, writeReadout } from '../../../ui';
-import { KEY_PRINTED, lookupAt, queryReadouts } from '../model';
-import type { AnimContext } from '../view/anim';
+import { useMemo } from 'react';
+import { Readout } from '../../../ui';
+import { KEY_PRINTED, lookupAt } from '../model';
 import { fmtShort } from '../view/GridView';
-import { NearestWorked } from '../view/WorkedSteps';
-import { keyNote, queryPart, useStillQuery, useWorked } from './shared';
+import { NearestWorked, nearestBlock } from '../view/WorkedSteps';
+import { answerOf, isExamShown, queryPart, shownPoint, type PartBody } from './shared';
 
-export const Q3a = queryPart(
-  '3a',
-  'Nearest neighbour',
-  'What value does nearest-neighbour lookup return at (u, v) = (0.4, 0.24)?',
-  [WorkedNearest, Readouts3a, KeyNote3a],
+const Worked: PartBody = ({ shown: { ctx, frame } }) => (
+  <NearestWorked grid={ctx.grid} opts={ctx.opts} q={frame.lookup} />
 );
 
-function WorkedNearest({ ctx }: { ctx: AnimContext }) {
-  const q = useDeferredValue(useWorked(ctx).frame.lookup);
-  return <NearestWorked grid={ctx.grid} opts={ctx.opts} q={q} />;
-}
+/** The answer at the shown position, and the (u, v) the lookup used. */
+const Answer = answerOf(
+  'nearest',
+  'Nearest (Q3a)',
+  (q) => q.near.value,
+  KEY_PRINTED.nearest,
+  (q) => (
+    <Readout id="query-uv" label="(u, v) as used" value={`(${fmtShort(q.bil.u)}, ${fmtShort(q.bil.v)})`} />
+  ),
+);
 
-/** The live answer at position t (written per frame; the key note only while paused). */
-function Readouts3a({ ctx }: { ctx: AnimContext }) {
-  const { ro, examQ } = useStillQuery(ctx);
-  const near = useRef<HTMLOutputElement>(null);
-  const uv = useRef<HTMLOutputElement>(null);
-  useAnimFrame(ctx.store, (x, text) => {
-    if (!text) return;
-    const q = ctx.frame(x).frame.lookup;
-    writeReadout(near.current, queryReadouts(q).nearest);
-    writeReadout(uv.current, `(${fmtShort(q.bil.u)}, ${fmtShort(q.bil.v)})`);
-  });
-  return (
-    <div className="readouts">
-      <LiveReadout
-        id="nearest"
-        label="Nearest (Q3a)"
-        outRef={near}
-        note={examQ ? keyNote(ro.nearest, KEY_PRINTED.nearest) : undefined}
-      />
-      <LiveReadout id="query-uv" label="(u, v) as used" outRef={uv} />
-    </div>
-  );
-}
-
-function KeyNote3a({ ctx }: { ctx: AnimContext }) {
-  const { frame } = useWorked(ctx);
+/**
+ * The key's figures are the exam point's; the flipped lookup is computed at the point shown and
+ * says which point that is whenever it is not the exam's.
+ */
+const Note: PartBody = ({ shown }) => {
+  const { ctx, frame } = shown;
   const { grid, opts } = ctx;
   const flipped = useMemo(
     () => lookupAt(grid, frame.u, frame.v, { ...opts, vflip: !opts.vflip }),
     [grid, frame.u, frame.v, opts],
   );
+  const exam = isExamShown(shown);
   return (
     <>
-      the key gives the node (0.5, 0.25) with the value 18 and also awards marks for a stated different
-      convention, for example v′ = 1 − v (v measured downward). With the flip{' '}
-      {opts.vflip ? 'undone' : 'applied'} here, nearest gives {fmtShort(flipped.near.value)} (the node at (
-      {fmtShort(flipped.near.nodeU)}, {fmtShort(flipped.near.nodeV)}) of the flipped frame) and bilinear{' '}
-      {fmtShort(flipped.bil.value)}.
+      {exam ? 'the key' : 'at the exam’s point (0.4, 0.24) the key'} gives the node (0.5, 0.25) with the value{' '}
+      {KEY_PRINTED.nearest.value} and also awards marks for a stated different convention, for example v′ = 1
+      − v (v measured downward).{' '}
+      {exam
+        ? 'With the flip applied here'
+        : `At the point shown, ${shownPoint(shown)}, with the flip ${opts.vflip ? 'undone' : 'applied'}`}
+      , nearest gives {fmtShort(flipped.near.value)} (the node at ({fmtShort(flipped.near.nodeU)},{' '}
+      {fmtShort(flipped.near.nodeV)}) of the flipped frame) and bilinear {fmtShort(flipped.bil.value)}.
     </>
   );
-}
+};
+
+export const Q3a = queryPart(
+  '3a',
+  'Nearest neighbour',
+  'What value does nearest-neighbour lookup return at (u, v) = (0.4, 0.24)?',
+  ({ ctx, frame }) => nearestBlock(ctx.grid, frame.lookup, ctx.opts),
+  [Worked, Answer, Note],
+);

@@ -6,6 +6,7 @@
 import { memo, useCallback, useMemo } from 'react';
 import type { SceneProps } from '../../../kit/scene';
 import {
+  DescribedFigure,
   Derivation,
   ExamPart,
   KeyNote,
@@ -13,6 +14,7 @@ import {
   Notice,
   NumberField,
   Readout,
+  Revealed,
   Slider,
   Toggle,
 } from '../../../ui';
@@ -30,6 +32,7 @@ import {
 } from '../model';
 import type { TextureSchema } from '../params';
 import { fmtShort } from '../view/GridView';
+import { describeSphere } from '../view/describe';
 import { SphereView } from '../view/SphereView';
 import { SphereBilinear, WideMath, aligned, sphereTex } from '../view/WorkedSteps';
 import { keyNote, texPlain } from './shared';
@@ -39,6 +42,8 @@ type Props = Pick<SceneProps<TextureSchema>, 'params' | 'setParams'> &
     sphere: SphereModel;
     src: GridSource;
     present: boolean;
+    /** Ask first: the angles, the steps and the answer hidden until revealed. */
+    ask: boolean;
   };
 
 /** The angle sliders: a keyboard way to move the point on the sphere. */
@@ -47,7 +52,7 @@ const ANGLES = [
   { key: 'theta', label: 'Polar angle θ (moves the point)', max: 180 },
 ] as const;
 
-export const Q3c = memo(function Q3c({ params, setParams, sphere, src, present, ...shown }: Props) {
+export const Q3c = memo(function Q3c({ params, setParams, sphere, src, present, ask, ...shown }: Props) {
   const { opts } = shown;
   const ro = useMemo(() => sphereReadouts(sphere), [sphere]);
   const examS = isExamSphere(src, opts, sphere);
@@ -89,7 +94,8 @@ export const Q3c = memo(function Q3c({ params, setParams, sphere, src, present, 
               testId={`${k}-field`}
             />
           ))}
-          {ANGLES.map(({ key, label, max }) => (
+          {/* the angles are what (c) asks for: not shown before the reveal */}
+          {(ask ? [] : ANGLES).map(({ key, label, max }) => (
             <Slider
               key={key}
               label={label}
@@ -117,81 +123,92 @@ export const Q3c = memo(function Q3c({ params, setParams, sphere, src, present, 
           </button>
         </div>
         <div className="tx-sphere-fig">
-          <SphereView {...shown} normalize={n} dir={dir} onPick={onPick} height={present ? 420 : 320} />
+          <DescribedFigure
+            label="The sphere wearing the texture, with the chosen point"
+            description={
+              `${describeSphere(sphere, params, n, ask)} The seam, where u jumps from just below 1 back to 0, ` +
+              'is the meridian φ = 0 through +x; the pole axis is z.'
+            }
+            testId="sphere-figure"
+          >
+            <SphereView {...shown} normalize={n} dir={dir} onPick={onPick} height={present ? 420 : 320} />
+          </DescribedFigure>
           <p className="tx-small">
-            Click the sphere to pick a point, or use the angle sliders or the x, y, z fields.
+            Click the sphere to pick a point, or use {ask ? '' : 'the angle sliders or '}the x, y, z fields.
           </p>
         </div>
       </div>
-      {!sphere.ok ? (
-        <Notice kind="warn" testId="sphere-error">
-          <strong>x, y, z</strong>: {sphere.message} The sphere readouts show “none” until you pick another
-          point.
-        </Notice>
-      ) : (
-        <Derivation testId="derivation-3c">
-          <p className="tx-small">
-            Divide y by x to eliminate r and v, and z by r to isolate v. The key writes u = arctan(y/x);
-            atan2(y, x) is the same for x &gt; 0 and also finds the right quadrant when x ≤ 0 (negative angles
-            get + 2π, so u ∈ [0, 2π)). Then normalize by the ranges (2π, π) of the two angles to land in [0,
-            1]:
-          </p>
-          <WideMath
-            label="Spherical coordinates, step by step"
-            tex={aligned(
-              sphereTex({
-                x: params.x,
-                y: params.y,
-                z: params.z,
-                r: sphere.r,
-                phi: sphere.phi,
-                theta: sphere.theta,
-                pole: sphere.pole,
-                u: sphere.normalized.u,
-                v: sphere.normalized.v,
-              }),
-            )}
-          />
-          <p className="tx-small">
-            Bilinear at the normalized (u, v), in the key’s form (each step divided by the cell size):
-          </p>
-          <SphereBilinear q={sphere.normalized} opts={opts} />
-          {sphere.normalized.bil.fv === 0 || sphere.normalized.bil.fu === 0 ? (
+      <Revealed ask={ask} what="the steps and the answer" minHeight="6rem">
+        {!sphere.ok ? (
+          <Notice kind="warn" testId="sphere-error">
+            <strong>x, y, z</strong>: {sphere.message} The sphere readouts show “none” until you pick another
+            point.
+          </Notice>
+        ) : (
+          <Derivation testId="derivation-3c">
             <p className="tx-small">
-              The point lies on a node line ({sphere.normalized.bil.fv === 0 ? 'v = v₀' : 'u = u₀'}), so one
-              of the two rows gets weight 0: that is the key’s one-line form.
+              Divide y by x to eliminate r and v, and z by r to isolate v. The key writes u = arctan(y/x);
+              atan2(y, x) is the same for x &gt; 0 and also finds the right quadrant when x ≤ 0 (negative
+              angles get + 2π, so u ∈ [0, 2π)). Then normalize by the ranges (2π, π) of the two angles to land
+              in [0, 1]:
             </p>
-          ) : null}
-        </Derivation>
-      )}
-      <LiveAnswer testId="answer-3c">
-        <div className="readouts">
-          <Readout id="sphere-u" label={n ? 'u = φ / 2π' : 'u = φ (radians)'} value={ro.sphereU} />
-          <Readout id="sphere-v" label={n ? 'v = θ / π' : 'v = θ (radians)'} value={ro.sphereV} />
-          <Readout
-            id="sphere-bilinear"
-            label={n ? 'Bilinear at (u, v)' : 'Bilinear at (φ, θ), not normalized'}
-            value={ro.sphereBilinear}
-            note={
-              examS && ro.sphereBilinear !== null
-                ? keyNote(ro.sphereBilinear, n ? KEY_PRINTED.sphere : KEY_PRINTED.sphereRaw)
-                : undefined
-            }
-          />
-        </div>
-        {sphere.ok ? <SphereCompare sphere={sphere} /> : null}
-      </LiveAnswer>
-      {sphere.ok ? (
-        <KeyNote testId="key-note">
-          the key cuts 2.5 marks when the normalization is missing, but gives full marks for a lookup at the
-          un-normalized (π/4, π/4) done right, and prints {KEY_PRINTED.sphereRaw.value} for it.{' '}
-          {examS ? (
-            <ExamSphereNote normalized={sphere.normalized.bil.value} raw={sphere.raw.bil.value} />
-          ) : (
-            `Here the un-normalized lookup gives ${texPlain(sphere.raw.bil.value)}.`
-          )}
-        </KeyNote>
-      ) : null}
+            <WideMath
+              label="Spherical coordinates, step by step"
+              tex={aligned(
+                sphereTex({
+                  x: params.x,
+                  y: params.y,
+                  z: params.z,
+                  r: sphere.r,
+                  phi: sphere.phi,
+                  theta: sphere.theta,
+                  pole: sphere.pole,
+                  u: sphere.normalized.u,
+                  v: sphere.normalized.v,
+                }),
+              )}
+            />
+            <p className="tx-small">
+              Bilinear at the normalized (u, v), in the key’s form (each step divided by the cell size):
+            </p>
+            <SphereBilinear q={sphere.normalized} opts={opts} />
+            {sphere.normalized.bil.fv === 0 || sphere.normalized.bil.fu === 0 ? (
+              <p className="tx-small">
+                The point lies on a node line ({sphere.normalized.bil.fv === 0 ? 'v = v₀' : 'u = u₀'}), so one
+                of the two rows gets weight 0: that is the key’s one-line form.
+              </p>
+            ) : null}
+          </Derivation>
+        )}
+        <LiveAnswer testId="answer-3c">
+          <div className="readouts">
+            <Readout id="sphere-u" label={n ? 'u = φ / 2π' : 'u = φ (radians)'} value={ro.sphereU} />
+            <Readout id="sphere-v" label={n ? 'v = θ / π' : 'v = θ (radians)'} value={ro.sphereV} />
+            <Readout
+              id="sphere-bilinear"
+              label={n ? 'Bilinear at (u, v)' : 'Bilinear at (φ, θ), not normalized'}
+              value={ro.sphereBilinear}
+              note={
+                examS && ro.sphereBilinear !== null
+                  ? keyNote(ro.sphereBilinear, n ? KEY_PRINTED.sphere : KEY_PRINTED.sphereRaw)
+                  : undefined
+              }
+            />
+          </div>
+          {sphere.ok ? <SphereCompare sphere={sphere} /> : null}
+        </LiveAnswer>
+        {sphere.ok ? (
+          <KeyNote testId="key-note">
+            the key cuts 2.5 marks when the normalization is missing, but gives full marks for a lookup at the
+            un-normalized (π/4, π/4) done right, and prints {KEY_PRINTED.sphereRaw.value} for it.{' '}
+            {examS ? (
+              <ExamSphereNote normalized={sphere.normalized.bil.value} raw={sphere.raw.bil.value} />
+            ) : (
+              `Here the un-normalized lookup gives ${texPlain(sphere.raw.bil.value)}.`
+            )}
+          </KeyNote>
+        ) : null}
+      </Revealed>
     </ExamPart>
   );
 });

@@ -1,34 +1,100 @@
 /**
- * What the exam parts of Q3 share: the worked position (the committed path, held while playing),
- * the "these are not the exam's numbers" line, the key-note wording, and the frame of a part about
- * the query (a) and (b): the steps, the live answer and the key's note.
+ * What the exam parts of Q3 share: the position a part shows (the moving query, its steps and its
+ * answer always at one position), the "these are not the exam's numbers" line, the key-note
+ * wording, and the frame of a part about the query (a) and (b): the steps, the live answer and the
+ * key's note.
  */
-import type { ReactNode } from 'react';
-import { Derivation, ExamPart, KeyNote, LiveAnswer, usePlaying, useStillT } from '../../../ui';
-import { agreesWithKey, isExamQuery, queryReadouts } from '../model';
+import { useEffect, useMemo, useRef, useState, type ReactNode } from 'react';
+import {
+  Derivation,
+  ExamPart,
+  KeyNote,
+  LiveAnswer,
+  Readout,
+  Revealed,
+  TEXT_HZ,
+  preloadMath,
+  useAnimFrame,
+  usePlaying,
+  useStillT,
+} from '../../../ui';
+import { agreesWithKey, isExamQuery, type Frame, type Lookup } from '../model';
 import type { AnimContext } from '../view/anim';
 import { fmtShort } from '../view/GridView';
 
-/**
- * The worked steps follow the committed path; while playing they hold the position where it
- * started (exact again as soon as it pauses, steps or seeks), so no frame carries a KaTeX typeset.
- */
-export function useWorked(ctx: AnimContext) {
-  const tWorked = useStillT(ctx.store);
-  return { tWorked, frame: ctx.worked(tWorked) };
+/** What a part about the query shows: the position, and the context it was computed in. */
+export interface Shown {
+  ctx: AnimContext;
+  frame: Frame;
 }
 
 /**
- * The live answer's values at the still position, and whether the query there is the exam's (only
- * while paused: the key's note is not shown mid-play).
+ * The position a part shows: its worked steps, its answer and its notes all render at this one
+ * frame, so the derivation and the answer under it never disagree. Paused (stepped, scrubbed,
+ * edited) it is the exact position, at once (the steps' formula shows as plain text until it is
+ * typeset: ./view/WorkedSteps' `exact` math). While it plays or a handle is dragged it follows the
+ * moving query at most TEXT_HZ times a second, and a new position is shown only once its formula
+ * (`texOf`) is typeset, so the formula and the numbers beside it change in one render; one typeset
+ * is in flight at a time, and the latest position waits for it.
  */
-export function useStillQuery(ctx: AnimContext) {
-  const t = useStillT(ctx.store);
+export function useShownFrame(ctx: AnimContext, texOf: (s: Shown) => string): Shown {
+  const tStill = useStillT(ctx.store);
   const playing = usePlaying(ctx.store);
-  const { frame } = ctx.frame(t);
-  const ro = queryReadouts(frame.lookup);
-  const examQ = !playing && isExamQuery(ctx.src, ctx.opts, frame.u, frame.v);
-  return { ro, examQ };
+  const moves = playing || ctx.dragging;
+  const exact = useMemo<Shown>(() => ({ ctx, frame: ctx.frame(tStill).frame }), [ctx, tStill]);
+  const [moving, setMoving] = useState<Shown | null>(null);
+  useEffect(() => {
+    if (!moves) setMoving(null);
+  }, [moves]);
+  const alive = useRef(true);
+  useEffect(() => {
+    alive.current = true;
+    return () => {
+      alive.current = false;
+    };
+  }, []);
+  const req = useRef({
+    ctx: null as AnimContext | null,
+    t: NaN,
+    at: -Infinity,
+    busy: false,
+    next: null as Shown | null,
+  });
+  const latest = useRef(ctx);
+  latest.current = ctx;
+  const movingNow = () => latest.current.dragging || latest.current.store.livePlaying();
+  useAnimFrame(ctx.store, (t, text) => {
+    const r = req.current;
+    const now = performance.now();
+    if (!text || !movingNow()) return;
+    if ((r.ctx === ctx && r.t === t) || now - r.at < 1000 / TEXT_HZ - 1) return;
+    r.ctx = ctx;
+    r.t = t;
+    r.at = now;
+    const run = (w: Shown) => {
+      r.busy = true;
+      void preloadMath(texOf(w), true).then(() => {
+        // a typeset that ends after the pause (or the drop) is not shown: the exact position is
+        if (alive.current && movingNow()) setMoving(w);
+        r.busy = false;
+        const n = r.next;
+        r.next = null;
+        if (n) run(n);
+      });
+    };
+    const want = { ctx, frame: ctx.frame(t).frame };
+    if (r.busy) r.next = want;
+    else run(want);
+  });
+  return moves && moving ? moving : exact;
+}
+
+/** Whether the shown position is the exam's own query (grid, conventions and point). */
+export const isExamShown = ({ ctx, frame }: Shown) => isExamQuery(ctx.src, ctx.opts, frame.u, frame.v);
+
+/** "(u, v) = (0.52, 0.39) at t = 0.3": the shown point, named so it is not taken for the exam's. */
+export function shownPoint({ frame }: Shown): string {
+  return `(u, v) = (${fmtShort(frame.u)}, ${fmtShort(frame.v)})${frame.t !== 0 ? ` at t = ${fmtShort(frame.t)}` : ''}`;
 }
 
 /** A number shown plainly: six significant digits, or a dash when it is not finite. */
@@ -43,17 +109,16 @@ export function keyNote(computed: number, printed: { value: number; decimals: nu
     : `the key prints ${printed.value}; the computed value rounds to ${computed.toFixed(printed.decimals)}`;
 }
 
-function NotExam({ ctx, toExam }: { ctx: AnimContext; toExam: () => void }) {
-  const { tWorked, frame } = useWorked(ctx);
-  const { src, opts } = ctx;
-  if (isExamQuery(src, opts, frame.u, frame.v)) return null;
+function NotExam({ shown, toExam }: { shown: Shown; toExam: () => void }) {
+  if (isExamShown(shown)) return null;
+  const { src, opts } = shown.ctx;
   return (
     <p className="tx-small tx-not-exam" data-testid="not-exam-query">
-      The steps use the current query (u, v) = ({fmtShort(frame.u)}, {fmtShort(frame.v)})
-      {tWorked !== 0 ? `, at t = ${fmtShort(tWorked)} on its path` : ''}
+      The steps and the answer use the point shown, {shownPoint(shown)}
+      {shown.frame.t !== 0 ? ' on its path' : ''}
       {src.isExam ? '' : ', on a grid that is not the exam’s'}
       {opts.align !== 'corner' ? ', with texel centres' : ''}
-      {opts.vflip ? ', with v flipped' : ''}.{' '}
+      {opts.vflip ? ', with v flipped' : ''}; the exam asks at (0.4, 0.24).{' '}
       <button type="button" onClick={toExam} data-testid="to-exam">
         Back to the exam’s question
       </button>
@@ -61,38 +126,71 @@ function NotExam({ ctx, toExam }: { ctx: AnimContext; toExam: () => void }) {
   );
 }
 
+/**
+ * A part's answer block: its readout at the shown position (`pick` from the lookup) and, while
+ * paused at the exam's own query, how it compares with the key's printed figure; `more` adds
+ * readouts after it.
+ */
+export function answerOf(
+  id: string,
+  label: string,
+  pick: (q: Lookup) => number,
+  printed: { value: number; decimals: number },
+  more?: (q: Lookup) => ReactNode,
+): PartBody {
+  return function Answer({ shown, playing }) {
+    const q = shown.frame.lookup;
+    const value = pick(q);
+    const exam = !playing && isExamShown(shown);
+    return (
+      <div className="readouts">
+        <Readout id={id} label={label} value={value} note={exam ? keyNote(value, printed) : undefined} />
+        {more?.(q)}
+      </div>
+    );
+  };
+}
+
 /** Props of an exam part about the query: (a) and (b). */
 export interface QueryPartProps {
   ctx: AnimContext;
   /** Puts the exam's grid, query and conventions back. */
   toExam: () => void;
+  /** Ask first: the steps, the answer and the key's note are hidden until revealed. */
+  ask: boolean;
 }
 
-type PartBody = (props: { ctx: AnimContext }) => ReactNode;
+/** What each block of a part gets: the shown position, and whether the animation plays. */
+export type PartBody = (props: { shown: Shown; playing: boolean }) => ReactNode;
 
 /**
- * An exam part about the query, (a) or (b): the not-the-exam line, then its worked steps, its live
- * answer and the key's note, each a component of the animation context.
+ * An exam part about the query, (a) or (b): the not-the-exam line, then its worked steps (whose
+ * formula is `texOf`), its live answer and the key's note, all at one shown position.
  */
 export function queryPart(
   id: string,
   title: string,
   asks: string,
+  texOf: (s: Shown) => string,
   [Worked, Answer, Note]: readonly [PartBody, PartBody, PartBody],
 ) {
-  return function QueryPart({ ctx, toExam }: QueryPartProps) {
+  return function QueryPart({ ctx, toExam, ask }: QueryPartProps) {
+    const shown = useShownFrame(ctx, texOf);
+    const playing = usePlaying(ctx.store);
     return (
       <ExamPart id={id} title={title} asks={asks}>
-        <NotExam ctx={ctx} toExam={toExam} />
-        <Derivation testId={`derivation-${id}`}>
-          <Worked ctx={ctx} />
-        </Derivation>
-        <LiveAnswer testId={`answer-${id}`}>
-          <Answer ctx={ctx} />
-        </LiveAnswer>
-        <KeyNote testId={`keynote-${id}`}>
-          <Note ctx={ctx} />
-        </KeyNote>
+        <NotExam shown={shown} toExam={toExam} />
+        <Revealed ask={ask} what="the steps and the answer" minHeight="6rem">
+          <Derivation testId={`derivation-${id}`}>
+            <Worked shown={shown} playing={playing} />
+          </Derivation>
+          <LiveAnswer testId={`answer-${id}`}>
+            <Answer shown={shown} playing={playing} />
+          </LiveAnswer>
+          <KeyNote testId={`keynote-${id}`}>
+            <Note shown={shown} playing={playing} />
+          </KeyNote>
+        </Revealed>
       </ExamPart>
     );
   };

@@ -116,8 +116,8 @@ export function SeamPanel({
       </p>
       <p className="tx-small">
         <strong>Poles.</strong> On the z axis (x = y = 0) every φ names the same point, so u is undefined; we
-        define u = 0. θ is computed as atan2(√(x² + y²), z), which equals arccos(z/r) but keeps full precision
-        near the poles.
+        define u = 0. θ is computed as <span className="tx-formula">atan2(√(x² + y²), z)</span>, which equals
+        arccos(z/r) but keeps full precision near the poles.
       </p>
       {sphere.ok ? (
         <details className="tx-details">

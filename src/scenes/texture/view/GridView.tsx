@@ -63,6 +63,8 @@ interface Props extends ShownTexture {
   /** Enter on the grid while editing: go to the value field. */
   onEditEnter: () => void;
   present: boolean;
+  /** Ask first: no nearest-node highlight and no bilinear stencil (they show the answers). */
+  ask?: boolean;
   /** Set to a function that moves the query marker and the stencil to a lookup directly (per animation frame). */
   drawRef?: { current: ((q: Lookup) => void) | null };
 }
@@ -79,6 +81,7 @@ export function GridView({
   onSelect,
   onEditEnter,
   present,
+  ask = false,
   drawRef,
 }: Props) {
   const win = useMemo(() => viewWindow(grid, opts), [grid, opts]);
@@ -197,6 +200,8 @@ export function GridView({
     arrow(e, q.bil, 'query');
   };
   const bIn = inWindow(bT, win);
+  // what the grid's memoized layers are drawn from
+  const layer = { grid, opts, range, win, unitsPerPx, present };
 
   return (
     <div className={`tx-grid${present ? ' present' : ''}`}>
@@ -221,16 +226,9 @@ export function GridView({
           onPointerCancel={end}
           onKeyDown={onKeyDown}
         >
-          <StaticLayer grid={grid} opts={opts} range={range} win={win} unitsPerPx={unitsPerPx} />
-          <QueryLayer grid={grid} win={win} q={q} gRef={stencilRef} />
-          <LabelLayer
-            grid={grid}
-            opts={opts}
-            range={range}
-            win={win}
-            present={present}
-            unitsPerPx={unitsPerPx}
-          />
+          <StaticLayer {...layer} />
+          {ask ? null : <QueryLayer grid={grid} win={win} q={q} gRef={stencilRef} />}
+          <LabelLayer {...layer} />
           <PathLayer path={path} vflip={opts.vflip} win={win} />
           <g
             ref={markerRef}
@@ -403,7 +401,8 @@ const StaticLayer = memo(function StaticLayer({
   range,
   win,
   unitsPerPx,
-}: ShownTexture & { win: ViewWindow; unitsPerPx: number }) {
+  present,
+}: ShownTexture & { win: ViewWindow; unitsPerPx: number; present: boolean }) {
   const W = grid.width;
   const H = grid.height;
   const nmax = Math.max(W, H);
@@ -411,31 +410,18 @@ const StaticLayer = memo(function StaticLayer({
   const items: React.ReactNode[] = [];
   // node lines (the bilinear cells' edges run through the nodes)
   if (nmax <= 32) {
+    const line = (key: string, x1: number, y1: number, x2: number, y2: number) => (
+      <line key={key} x1={x1} x2={x2} y1={y1} y2={y2} className="tx-node-line" />
+    );
+    const [u0, u1] = [sx(nodeCoord(0, W, opts.align), win), sx(nodeCoord(W - 1, W, opts.align), win)];
+    const [v0, v1] = [sy(nodeCoord(0, H, opts.align), win), sy(nodeCoord(H - 1, H, opts.align), win)];
     for (let i = 0; i < W; i++) {
       const x = sx(nodeCoord(i, W, opts.align), win);
-      items.push(
-        <line
-          key={`vl${i}`}
-          x1={x}
-          x2={x}
-          y1={sy(nodeCoord(0, H, opts.align), win)}
-          y2={sy(nodeCoord(H - 1, H, opts.align), win)}
-          className="tx-node-line"
-        />,
-      );
+      items.push(line(`vl${i}`, x, v0, x, v1));
     }
     for (let j = 0; j < H; j++) {
       const y = sy(nodeCoord(j, H, opts.align), win);
-      items.push(
-        <line
-          key={`hl${j}`}
-          y1={y}
-          y2={y}
-          x1={sx(nodeCoord(0, W, opts.align), win)}
-          x2={sx(nodeCoord(W - 1, W, opts.align), win)}
-          className="tx-node-line"
-        />,
-      );
+      items.push(line(`hl${j}`, u0, y, u1, y));
     }
   }
   if (showDots) {
@@ -461,7 +447,8 @@ const StaticLayer = memo(function StaticLayer({
   const x1 = sx(1, win);
   const y0 = sy(1, win);
   const y1 = sy(0, win);
-  const tickFont = Math.max(28, MIN_TEXT_PX * unitsPerPx);
+  // ticks: at least 12.5 px on screen, 18 px in classroom mode
+  const tickFont = Math.max(28, (present ? 18 : MIN_TEXT_PX) * unitsPerPx);
   // ticks at the nodes while they fit (a label is about 2.2 em wide), else 0, ½, 1
   const fits = (n: number) => n <= 5 && VB / (win.max - win.min) / Math.max(1, n - 1) > tickFont * 2.4;
   const ticks = fits(W) ? Array.from({ length: W }, (_, i) => nodeCoord(i, W, opts.align)) : [0, 0.5, 1];
@@ -515,7 +502,7 @@ const LabelLayer = memo(function LabelLayer({
   const W = grid.width;
   const H = grid.height;
   const nmax = Math.max(W, H);
-  const fontSize = Math.min(present ? 44 : 38, (VB / (nmax + 0.5)) * 0.34);
+  const fontSize = Math.min(present ? 56 : 38, (VB / (nmax + 0.5)) * 0.34);
   if (nmax > 16 || fontSize / unitsPerPx < 12) return null;
   const items: React.ReactNode[] = [];
   for (let j = 0; j < H; j++) {

@@ -6,7 +6,8 @@
  * on the profile; only the position marker re-renders per animation frame. Until the profile is
  * computed (a task after the page's first render, so loading has no long task) the figure keeps its size, empty.
  */
-import { memo, useMemo, useRef } from 'react';
+import { memo, useMemo, useRef, type ReactNode } from 'react';
+import { DescribedFigure } from '../../../ui';
 import { useWidth } from '../../../ui/useWidth';
 import { niceTicks } from '../../../ui/axis';
 import type { PathProfile } from '../model';
@@ -86,6 +87,8 @@ export function PathPlot({
   near,
   bil,
   present,
+  description,
+  children,
   drawRef,
 }: {
   /** null while it is computed: the figure keeps its box (no layout shift), without curves. */
@@ -94,6 +97,10 @@ export function PathPlot({
   near: number;
   bil: number;
   present: boolean;
+  /** What the plot shows, in words (its accessible description). */
+  description: string;
+  /** Under the legend: the plot's data as a table and as sound. */
+  children?: ReactNode;
   /** Set to a function that moves the marker directly (per animation frame; the label follows on pause). */
   drawRef?: { current: ((t: number, near: number, bil: number) => void) | null };
 }) {
@@ -120,50 +127,51 @@ export function PathPlot({
       bd.setAttribute('cy', String(Y(s, b)));
     };
   }
-  const kinks = useMemo(() => (profile ? profile.borders.filter((b) => b.kink).length : 0), [profile]);
-  const jumps = useMemo(() => (profile ? profile.borders.filter((b) => b.jump).length : 0), [profile]);
-  const label = !profile
-    ? 'The looked-up value along the path (being computed).'
-    : `The looked-up value along the path. Bilinear: continuous${jumps ? ` except ${jumps} jump${jumps > 1 ? 's' : ''} from the addressing` : ''}, ` +
-      `crossing ${profile.borders.length} cell border${profile.borders.length === 1 ? '' : 's'}, ${kinks} with a kink. ` +
-      `Nearest: a step function with ${profile.nearSwitches.length} step${profile.nearSwitches.length === 1 ? '' : 's'}. Now at t = ${fmtShort(t)}: nearest ${fmtShort(near)}, bilinear ${fmtShort(bil)}.`;
   return (
-    <figure
-      className="tx-plot"
-      data-testid="path-plot"
-      data-borders={profile?.borders.length}
-      data-kinks={profile ? kinks : undefined}
-      data-jumps={profile ? jumps : undefined}
-      data-steps={profile?.nearSwitches.length}
+    <DescribedFigure
+      label="The looked-up value along the path: nearest and bilinear against the position t"
+      description={description}
+      testId="path-plot-figure"
+      quiet
     >
-      <div ref={ref} className="tx-plot-box">
-        <svg width={w} height={h} viewBox={`0 0 ${w} ${h}`} role="img" aria-label={label}>
-          {profile && s ? (
-            <>
-              <Curves profile={profile} s={s} />
-              <g data-testid="path-plot-marker" ref={markerRef}>
-                <line x1={X(s, t)} x2={X(s, t)} y1={M.t} y2={h - M.b} className="tx-plot-now" />
-                <circle cx={X(s, t)} cy={Y(s, near)} r={5} className="tx-plot-near-dot" />
-                <circle cx={X(s, t)} cy={Y(s, bil)} r={5} className="tx-plot-bil-dot" />
-              </g>
-            </>
-          ) : null}
-        </svg>
+      <div
+        className="tx-plot"
+        data-testid="path-plot"
+        data-borders={profile?.borders.length}
+        data-kinks={profile ? profile.borders.filter((b) => b.kink).length : undefined}
+        data-jumps={profile ? profile.borders.filter((b) => b.jump).length : undefined}
+        data-steps={profile?.nearSwitches.length}
+      >
+        <div ref={ref} className="tx-plot-box">
+          <svg width={w} height={h} viewBox={`0 0 ${w} ${h}`} aria-hidden="true">
+            {profile && s ? (
+              <>
+                <Curves profile={profile} s={s} />
+                <g data-testid="path-plot-marker" ref={markerRef}>
+                  <line x1={X(s, t)} x2={X(s, t)} y1={M.t} y2={h - M.b} className="tx-plot-now" />
+                  <circle cx={X(s, t)} cy={Y(s, near)} r={5} className="tx-plot-near-dot" />
+                  <circle cx={X(s, t)} cy={Y(s, bil)} r={5} className="tx-plot-bil-dot" />
+                </g>
+              </>
+            ) : null}
+          </svg>
+        </div>
+        <div className="tx-plot-legend" aria-hidden="true">
+          <span>
+            <span className="tx-lg bil" /> bilinear
+          </span>
+          <span>
+            <span className="tx-lg near" /> nearest (steps)
+          </span>
+          <span>
+            <span className="tx-lg kink" /> cell border with a kink
+          </span>
+          <span>
+            <span className="tx-lg border" /> cell border, no kink
+          </span>
+        </div>
+        {children}
       </div>
-      <figcaption className="tx-plot-legend">
-        <span>
-          <span className="tx-lg bil" /> bilinear
-        </span>
-        <span>
-          <span className="tx-lg near" /> nearest (steps)
-        </span>
-        <span>
-          <span className="tx-lg kink" /> cell border with a kink
-        </span>
-        <span>
-          <span className="tx-lg border" /> cell border, no kink
-        </span>
-      </figcaption>
-    </figure>
+    </DescribedFigure>
   );
 }

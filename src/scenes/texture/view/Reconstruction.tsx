@@ -6,6 +6,7 @@ import { memo, useEffect, useRef } from 'react';
 import type { Filter } from '../../../core/texture';
 import { textureImage, type Crease, type ShownTexture } from '../model';
 import { useSeenOnce } from '../../../ui';
+import { describeReconstruction } from './describe';
 
 const RES = 256;
 
@@ -69,7 +70,7 @@ export const Reconstruction = memo(function Reconstruction({
           <div
             className="tx-recon-box"
             role="img"
-            aria-label={`The texture reconstructed with ${f} filtering over [0, 1]²`}
+            aria-label={describeReconstruction(f, range, qu, qv, creases.length)}
           >
             <FilterCanvas grid={grid} opts={opts} range={range} filter={f} />
             <svg viewBox="0 0 100 100" className="tx-recon-svg" aria-hidden="true">

@@ -1,7 +1,7 @@
 /**
  * The exam key's worked steps with live numbers (TeX built from the model's lookups).
  */
-import { memo } from 'react';
+import { memo, useLayoutEffect, useRef } from 'react';
 import { MathTex } from '../../../ui';
 import type { LookupOptions, TextureGrid } from '../../../core/texture';
 import type { Lookup } from '../model';
@@ -101,12 +101,25 @@ export function bilinearTex(q: Lookup, opts: LookupOptions, uName = 'u', vName =
 /**
  * Display math that may be wider than its column (phones, classroom type): the box scrolls
  * sideways and, being scrollable, is focusable (keyboard users can scroll it; axe
- * scrollable-region-focusable).
+ * scrollable-region-focusable). `exact`: never shows a formula other than `tex` — until `tex` is
+ * typeset it shows as plain text (in the height the typeset one had, so the page does not jump);
+ * for steps whose numbers must match the answer shown beside them.
  */
-export function WideMath({ tex, label }: { tex: string; label: string }) {
+export function WideMath({ tex, label, exact = false }: { tex: string; label: string; exact?: boolean }) {
+  const box = useRef<HTMLDivElement>(null);
+  const typesetHeight = useRef(0);
+  useLayoutEffect(() => {
+    const el = box.current;
+    if (!el || !exact) return;
+    if (el.querySelector('.math-pending')) el.style.minHeight = `${typesetHeight.current}px`;
+    else {
+      el.style.minHeight = '';
+      typesetHeight.current = el.offsetHeight;
+    }
+  });
   return (
-    <div className="tx-math" tabIndex={0} role="group" aria-label={label}>
-      <MathTex display tex={tex} />
+    <div className="tx-math" tabIndex={0} role="group" aria-label={label} ref={box}>
+      <MathTex key={exact ? tex : undefined} display tex={tex} />
     </div>
   );
 }
@@ -114,9 +127,16 @@ export function WideMath({ tex, label }: { tex: string; label: string }) {
 /** `tex` as the lines of an aligned block. */
 export const aligned = (tex: string) => `\\begin{aligned}${tex}\\end{aligned}`;
 
+/** The nearest-neighbour steps as one display block (what Q3a shows and typesets ahead). */
+export const nearestBlock = (grid: TextureGrid, q: Lookup, opts: LookupOptions) =>
+  aligned(nearestTex(grid, q, opts));
+
+/** The bilinear steps as one display block (what Q3b shows and typesets ahead). */
+export const bilinearBlock = (q: Lookup, opts: LookupOptions) => aligned(bilinearTex(q, opts));
+
 /** The bilinear steps at the sphere point, in the key's form. */
 export function SphereBilinear({ q, opts }: { q: Lookup; opts: LookupOptions }) {
-  return <WideMath label="Bilinear steps at the sphere point" tex={aligned(bilinearTex(q, opts))} />;
+  return <WideMath label="Bilinear steps at the sphere point" tex={bilinearBlock(q, opts)} />;
 }
 
 /** The nearest-neighbour steps (Q3a) for the current query. */
@@ -136,15 +156,12 @@ export const NearestWorked = memo(function NearestWorked({
         ½)/N; nearest-neighbour lookup takes the value of the node closest to the query
         {opts.align === 'center' ? ' (the texel whose square holds it)' : ''}, without blending.
       </p>
-      <WideMath
-        label="Nearest-neighbour steps"
-        tex={`\\begin{aligned}${nearestTex(grid, q, opts)}\\end{aligned}`}
-      />
+      <WideMath label="Nearest-neighbour steps" tex={nearestBlock(grid, q, opts)} exact />
     </div>
   );
 });
 
-/** The key's bilinear steps (Q3b) for the current query: c_u, c_l, c, each divided by the cell size. */
+/** The key's bilinear steps (Q3b) for the current query: cᵤ, cₗ, c, each divided by the cell size. */
 export const BilinearWorked = memo(function BilinearWorked({ opts, q }: { opts: LookupOptions; q: Lookup }) {
   const b = q.bil;
   return (
@@ -152,10 +169,10 @@ export const BilinearWorked = memo(function BilinearWorked({ opts, q }: { opts: 
       <p className="tx-small">
         The query lies in the cell u₀ = {texNum(b.u0)} ≤ u ≤ u₁ = {texNum(b.u1)}, v₀ = {texNum(b.v0)} ≤{' '}
         {opts.vflip ? 'v′' : 'v'} ≤ v₁ = {texNum(b.v1)}, of size Δu = {texNum(b.du)}, Δv = {texNum(b.dv)}.
-        Interpolate along u on the upper row (c_u) and on the lower row (c_l), then along v between them; each
-        step divides by the cell size.
+        Interpolate along u on the upper row (c<sub>u</sub>) and on the lower row (c<sub>l</sub>), then along
+        v between them; each step divides by the cell size.
       </p>
-      <WideMath label="Bilinear steps" tex={`\\begin{aligned}${bilinearTex(q, opts)}\\end{aligned}`} />
+      <WideMath label="Bilinear steps" tex={bilinearBlock(q, opts)} exact />
       <p className="tx-small">
         The same as the weighted sum of the four nodes, each weighted by the area of the sub-rectangle
         opposite to it: w₀₀ = {texNum(b.w00, 4)}, w₁₀ = {texNum(b.w10, 4)}, w₀₁ = {texNum(b.w01, 4)}, w₁₁ ={' '}

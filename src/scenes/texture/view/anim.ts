@@ -7,8 +7,9 @@
  * re-render only when the position changes while paused (`useStillT`: pause, step, seek). The text
  * readouts beside the grid are written the same way (their text at most TEXT_HZ times a second
  * while playing, so a screen reader is not flooded; exact on pause), and their notes render only
- * while paused; the worked steps (KaTeX) render at the still position too: typesetting them costs
- * several frames' worth of time at once, so none of it happens mid-play.
+ * while paused; the worked steps (KaTeX) and the answer under them follow the moving query at the
+ * text rate, each position typeset ahead (in the KaTeX worker) so the formula and its answer
+ * change in one render (../exam/shared: useShownFrame).
  */
 import { lastValue, type AnimationStore } from '../../../ui';
 import { drawnLookup, frameAt, type Frame, type GridSource, type Lookup, type QueryPath } from '../model';
@@ -37,12 +38,10 @@ export interface AnimContext {
   src: GridSource;
   /** The drawn path (follows a drag). */
   path: QueryPath;
-  /** The committed path (the worked steps follow it). */
-  committedPath: QueryPath;
+  /** A handle is being dragged (the path follows the pointer, not yet the URL). */
+  dragging: boolean;
   /** The query at position t of `path`, and its drawn (addressed) lookup; cached for the last t. */
   frame: (t: number) => { frame: Frame; dq: Lookup };
-  /** The query at position t of `committedPath`; cached for the last t. */
-  worked: (t: number) => Frame;
 }
 
 export function animContext(
@@ -51,7 +50,7 @@ export function animContext(
   opts: LookupOptions,
   src: GridSource,
   path: QueryPath,
-  committedPath: QueryPath,
+  dragging = false,
 ): AnimContext {
   return {
     store,
@@ -59,11 +58,10 @@ export function animContext(
     opts,
     src,
     path,
-    committedPath,
+    dragging,
     frame: lastValue((t) => {
       const frame = frameAt(grid, opts, path, t);
       return { frame, dq: drawnLookup(grid, frame.u, frame.v, opts) };
     }),
-    worked: lastValue((t) => frameAt(grid, opts, committedPath, t)),
   };
 }

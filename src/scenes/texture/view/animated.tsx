@@ -2,11 +2,43 @@
  * The animated figures beside and under the grid: each renders at the paused position (useStillT)
  * and writes its moving nodes per frame without React (useAnimFrame); see ./anim.
  */
-import { startTransition, useEffect, useMemo, useRef, useState, type ComponentProps } from 'react';
-import { Notice, nextTask, useAnimFrame, usePlaying, useStillT } from '../../../ui';
-import { addressingNotes, pathProfile, type Lookup } from '../model';
+import {
+  startTransition,
+  useEffect,
+  useMemo,
+  useRef,
+  useState,
+  type ComponentProps,
+  type ReactNode,
+} from 'react';
+import { texel } from '../../../core/texture';
+import {
+  AudioTrace,
+  DescribedFigure,
+  Notice,
+  ShowAsTable,
+  nextTask,
+  summarizeSeries,
+  useAnimFrame,
+  usePlaying,
+  useStillT,
+} from '../../../ui';
+import { addressingNotes, pathProfile, type Lookup, type SphereModel } from '../model';
+import type { Preset } from '../params';
 import type { AnimContext } from './anim';
 import { GridView, StencilDetail, fmtShort } from './GridView';
+import {
+  describePathNow,
+  describePathStructure,
+  describeSphere,
+  describeTexture,
+  nearestEvents,
+  pathEvents,
+  pathSamples,
+  pathTableRows,
+  short,
+  textureName,
+} from './describe';
 import { PathPlot } from './PathPlot';
 
 /** The grid figure with the query at position t (the grid's layers are memoized inside). */
@@ -38,13 +70,31 @@ function useAfterMount(): boolean {
   return on;
 }
 
-/** The value along the path with the marker at t (its curves are memoized inside). */
+/**
+ * The value along the path with the marker at t (its curves are memoized inside), described in
+ * words, with its data as a table and as two audio traces (bilinear with a tick at each cell
+ * border, nearest with a tick at each step).
+ */
 export function AnimPathPlot({ ctx, present }: { ctx: AnimContext; present: boolean }) {
   const ready = useAfterMount();
-  const profile = useMemo(
-    () => (ready ? pathProfile(ctx.grid, ctx.opts, ctx.path) : null),
-    [ready, ctx.grid, ctx.opts, ctx.path],
-  );
+  const { grid, opts, path } = ctx;
+  const profile = useMemo(() => (ready ? pathProfile(grid, opts, path) : null), [ready, grid, opts, path]);
+  const data = useMemo(() => {
+    if (!profile) return null;
+    const samples = pathSamples(grid, opts, path);
+    const sum = (ys: number[], yLabel: string) =>
+      summarizeSeries(samples.ts, ys, { xLabel: 't', yLabel, format: short });
+    return {
+      samples,
+      summary: `${sum(samples.bil, 'Bilinear')} ${sum(samples.near, 'Nearest')} ${describePathStructure(profile)}`,
+      // bilinear with a tick at each cell border, nearest at each of its steps
+      traces: [
+        { name: 'bilinear', ys: samples.bil, events: pathEvents(profile) },
+        { name: 'nearest', ys: samples.near, events: nearestEvents(profile) },
+      ],
+      rows: pathTableRows(grid, opts, path, profile),
+    };
+  }, [profile, grid, opts, path]);
   const t = useStillT(ctx.store);
   const q = ctx.frame(t).frame.lookup;
   const draw = useRef<((t: number, near: number, bil: number) => void) | null>(null);
@@ -52,6 +102,9 @@ export function AnimPathPlot({ ctx, present }: { ctx: AnimContext; present: bool
     const l = ctx.frame(x).frame.lookup;
     draw.current?.(x, l.near.value, l.bil.value);
   });
+  const description = data
+    ? `${data.summary} ${describePathNow(t, q.near.value, q.bil.value)}`
+    : 'The value along the path is being computed.';
   return (
     <PathPlot
       profile={profile}
@@ -59,8 +112,36 @@ export function AnimPathPlot({ ctx, present }: { ctx: AnimContext; present: bool
       near={q.near.value}
       bil={q.bil.value}
       present={present}
+      description={description}
       drawRef={draw}
-    />
+    >
+      {data ? (
+        <div className="tx-plot-a11y">
+          <ShowAsTable
+            caption="The looked-up value along the path"
+            columns={['t', 'nearest', 'bilinear', 'on the path']}
+            rows={data.rows}
+            testId="path-table"
+          />
+          <details className="tx-listen" data-testid="path-listen">
+            <summary>Listen to the plot</summary>
+            {data.traces.map((tr) => (
+              <AudioTrace
+                key={tr.name}
+                label={`${tr.name} along the path`}
+                xs={data.samples.ts}
+                ys={tr.ys}
+                xLabel="t"
+                yLabel={tr.name}
+                events={tr.events}
+                format={short}
+                testId={`path-audio-${tr.name}`}
+              />
+            ))}
+          </details>
+        </div>
+      ) : null}
+    </PathPlot>
   );
 }
 
@@ -105,7 +186,7 @@ export function AnimSide({ ctx }: { ctx: AnimContext }) {
         <span />: (u, v) = (<span />, <span />) → nearest <strong />, bilinear <strong />
       </p>
       <StencilDetail q={dq} drawRef={stencil} />
-      <p className="tx-small">
+      <p className="tx-small tx-stencil-key">
         <span className="tx-key nearest" /> nearest node · <span className="tx-key cell" /> the bilinear cell:
         each of its four nodes is weighted by the area of the sub-rectangle opposite to it (same colour).
       </p>
@@ -119,5 +200,64 @@ export function AnimSide({ ctx }: { ctx: AnimContext }) {
         </Notice>
       ) : null}
     </>
+  );
+}
+
+/**
+ * The main figure (the grid, the query on its path, the value along it and the stencil beside it),
+ * named and described at the still position: the description follows every parameter and the
+ * paused position (while playing it holds, and is announced again on pause).
+ */
+export function DescribedMain({
+  ctx,
+  preset,
+  sphere,
+  point,
+  normalize,
+  editing,
+  ask,
+  children,
+}: {
+  ctx: AnimContext;
+  preset: Preset;
+  sphere: SphereModel;
+  point: { x: number; y: number; z: number };
+  normalize: boolean;
+  /** The node being edited (null when not editing or none chosen). */
+  editing: { i: number; j: number } | null;
+  /** Ask first: the setup only (see describeTexture). */
+  ask: boolean;
+  children: ReactNode;
+}) {
+  const t = useStillT(ctx.store);
+  const playing = usePlaying(ctx.store);
+  const { frame } = ctx.frame(t);
+  const { grid, opts, src, path } = ctx;
+  const description = useMemo(
+    () =>
+      describeTexture({
+        name: textureName(grid, preset, src.isExam),
+        opts,
+        frame,
+        path,
+        notes: addressingNotes(frame.u, frame.v, opts, frame.lookup),
+        editing:
+          editing && editing.i < grid.width && editing.j < grid.height
+            ? { ...editing, value: texel(grid, editing.i, editing.j) }
+            : null,
+        sphere: describeSphere(sphere, point, normalize, ask),
+        ask,
+      }),
+    [grid, preset, src.isExam, opts, frame, path, editing, sphere, point, normalize, ask],
+  );
+  return (
+    <DescribedFigure
+      label="Texel grid with the query point, its path, and the value along the path"
+      description={description}
+      playing={playing}
+      testId="texture-figure"
+    >
+      {children}
+    </DescribedFigure>
   );
 }

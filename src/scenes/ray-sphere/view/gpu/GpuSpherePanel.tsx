@@ -180,14 +180,21 @@ export function GpuSpherePanel() {
     });
   }, [res]);
 
-  const figure = (ref: React.RefObject<HTMLCanvasElement | null>, caption: string, testId: string) => (
+  // each image is named by its caption and says, briefly, what it shows in numbers
+  const figure = (
+    ref: React.RefObject<HTMLCanvasElement | null>,
+    caption: string,
+    testId: string,
+    says: string,
+  ) => (
     <figure>
       <canvas
         ref={ref}
         width={W}
         height={W}
         className="rs-canvas rs-gpu-canvas"
-        aria-label={caption}
+        role="img"
+        aria-label={`${caption}: ${says}`}
         data-testid={testId}
       />
       <figcaption>{caption}</figcaption>
@@ -216,7 +223,7 @@ export function GpuSpherePanel() {
         ))}
       </div>
       <Slider
-        label="Distance, log₁₀(D / r)"
+        label={'Distance, log₁₀(D\u00a0/\u00a0r)'}
         value={exp}
         min={0.5}
         max={6}
@@ -230,12 +237,32 @@ export function GpuSpherePanel() {
         </Notice>
       ) : null}
       <div className="rs-images rs-gpu-images">
-        {figure(cRef, 'float64 reference', 'gpu-img-ref')}
-        {figure(cNaive, `textbook, ${res.gpu ? 'GPU' : 'emulated'} float32`, 'gpu-img-naive')}
-        {figure(cStable, `robust, ${res.gpu ? 'GPU' : 'emulated'} float32`, 'gpu-img-stable')}
-        {figure(cErrN, 'textbook: error in t (ulps)', 'gpu-err-naive')}
-        {figure(cErrS, 'robust: error in t (ulps)', 'gpu-err-stable')}
-        {figure(cMis, 'shader ≠ emulation', 'gpu-mismatch')}
+        {figure(cRef, 'float64 reference', 'gpu-img-ref', `the sphere ${dist} radii away, ${W}×${W} pixels`)}
+        {figure(
+          cNaive,
+          `textbook, ${res.gpu ? 'GPU' : 'emulated'} float32`,
+          'gpu-img-naive',
+          `${res.wrongNaive} of ${W * W} pixels wrong`,
+        )}
+        {figure(
+          cStable,
+          `robust, ${res.gpu ? 'GPU' : 'emulated'} float32`,
+          'gpu-img-stable',
+          `${res.wrongStable} of ${W * W} pixels wrong`,
+        )}
+        {figure(cErrN, 'textbook: error in t (ulps)', 'gpu-err-naive', 'false colour, log scale')}
+        {figure(
+          cErrS,
+          'robust: error in t (ulps)',
+          'gpu-err-stable',
+          `largest error ${res.maxUlpStable.toPrecision(3)} ulps`,
+        )}
+        {figure(
+          cMis,
+          'shader ≠ emulation',
+          'gpu-mismatch',
+          res.gpu ? `${mismatch} pixels differ by more than ${MISMATCH_ULPS} ulps` : 'no shader ran',
+        )}
       </div>
       <p className="rs-small rs-gpu-legend" aria-hidden="true">
         Error colours (float32 ulps of the reference t, log scale):{' '}

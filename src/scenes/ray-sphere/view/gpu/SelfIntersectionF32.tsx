@@ -113,7 +113,7 @@ export function SelfIntersectionF32() {
         ))}
       </div>
       <Slider
-        label="Offset, log₁₀(ε / r)"
+        label={'Offset, log₁₀(ε\u00a0/\u00a0r)'}
         value={epsExp}
         min={-8}
         max={-1}
@@ -137,7 +137,8 @@ export function SelfIntersectionF32() {
             width={W}
             height={W}
             className="rs-canvas rs-gpu-canvas"
-            aria-label="Shadow acne image"
+            role="img"
+            aria-label={`Shadow acne image at D/r = ${sup(dist)}: ${acne.selfHits} of ${acne.lit} lit pixels shadow themselves`}
             data-testid="acne-img"
           />
           <figcaption>red: lit pixels that shadow themselves</figcaption>
@@ -170,7 +171,14 @@ export function SelfIntersectionF32() {
             data={data}
             layout={layout}
             height={340}
-            ariaLabel="Fraction of self-shadowed lit pixels against the offset ε, one curve per distance"
+            label="Fraction of self-shadowed lit pixels against the offset ε, one curve per distance"
+            description={`${sweeps
+              .map((s) =>
+                s.epsNeeded === null
+                  ? `At D/r = ${sup(s.dist)} no swept ε cures it`
+                  : `At D/r = ${sup(s.dist)} the acne is gone from ε ≈ ${s.epsNeeded.toPrecision(2)} r`,
+              )
+              .join('; ')}: the offset needed grows in proportion to the distance. The table below lists it.`}
             testId="acne-plot"
           />
           <table className="rs-precision" data-testid="acne-table">
@@ -204,9 +212,9 @@ export function SelfIntersectionF32() {
           <p className="rs-small">
             {SWEEP_W}×{SWEEP_W} camera rays per distance, ε swept from 10⁻⁸ r to 10⁻¹ r (
             {ACNE_EPSILONS.length - 1} steps). The ε a float32 renderer needs grows in proportion to the
-            distance, as pbrt’s bound does; a fixed t_min that is ample in double (10⁻⁴ r) is too small in
-            float32 beyond about 10³ r. Below half a coordinate’s ulp an offset does nothing at all: p + ε n
-            rounds back to p.
+            distance, as pbrt’s bound does; a fixed t<sub>min</sub> that is ample in double (10⁻⁴ r) is too
+            small in float32 beyond about 10³ r. Below half a coordinate’s ulp an offset does nothing at all:
+            p + ε n rounds back to p.
           </p>
         </>
       ) : (

@@ -1,4 +1,4 @@
-/** QR codes for the printed worksheet: the `qrcode` library (loaded on demand) to one SVG path. */
+/** QR codes (the share bar's and the printed worksheet's): the `qrcode` library, loaded on demand, to one SVG path. */
 
 export interface QrPath {
   /** SVG path of the dark modules, offset by the four-module quiet zone. */

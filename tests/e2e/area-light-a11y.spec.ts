@@ -1,0 +1,253 @@
+/**
+ * #/area-light for a reader who cannot see it, read from Chromium's accessibility tree (CDP
+ * Accessibility.getFullAXTree): the main figure's name and description hold the live numbers and
+ * change with the light's tilt and on pause; the running estimate's audio trace starts Web Audio
+ * and steps by key; ask=1 hides the results until Reveal; the stage is one screen in classroom
+ * mode; and Q6 can be worked through with the keyboard alone, its numbers read from the tree.
+ */
+import type { Page } from '@playwright/test';
+import { test, expect, openScene, readoutNumber } from './fixtures';
+import { axTree } from './axTree';
+import { defaultValues, parseParams } from '../../src/kit/params';
+import { EXAM_PRESET, schema } from '../../src/scenes/area-light/params';
+import {
+  animationFrame,
+  animationLength,
+  buildModel,
+  patchModel,
+  sampleRun,
+  targetValue,
+} from '../../src/scenes/area-light/model';
+import { centreView } from '../../src/scenes/area-light/view/describe';
+import { formatNumber } from '../../src/ui/Readout';
+import type { LightStrategy } from '../../src/core/lights';
+
+const FIGURE = 'The area light, the shading point and the samples arriving';
+
+/** The figure's role and description as a screen reader receives them, found by its name (null: none). */
+async function axFigure(page: Page, name: string): Promise<{ role: string; description: string } | null> {
+  return (await axTree(page)).find((n) => n.name === name) ?? null;
+}
+
+async function figureDescription(page: Page): Promise<string> {
+  const n = await axFigure(page, FIGURE);
+  expect(n, 'the main figure is in the accessibility tree by its name').not.toBeNull();
+  return n!.description;
+}
+
+/** The model for a query string, computed here with the app's own parser and defaults. */
+function modelFor(query: string) {
+  const v = { ...defaultValues(schema), ...parseParams(schema, new URLSearchParams(query)).values };
+  const m = buildModel(v);
+  return { v, m, patch: patchModel(m, v.pu, v.pv, v.psize, v.ptilt) };
+}
+
+const f = (x: number, d = 4) => formatNumber(x, d).replace(/^-/, '−');
+
+test('the main figure’s description holds the live numbers and changes when the light tilts', async ({
+  page,
+}) => {
+  await openScene(page, '#/area-light');
+  const { m, patch, v } = modelFor('');
+  const cv = centreView(m);
+  const run = sampleRun(m, v.strategy as LightStrategy, animationLength(v.n), v.seed);
+  const fr = animationFrame(run, v.t);
+  await expect.poll(() => figureDescription(page), { timeout: 30000 }).toContain('from the floor');
+  const d = await figureDescription(page);
+  expect((await axFigure(page, FIGURE))!.role).toBe('group');
+  expect(d).toContain('tilted 30° from the floor (tilt −30° about its x axis)');
+  expect(d).toContain(
+    `cos θ = ${f(cv.cosTheta, 3)} at the point, cos θₗ = ${f(cv.cosThetaL, 3)} at the light`,
+  );
+  expect(d).toContain(`dω = dA cos θₗ / r² = ${f(patch.approx)} sr`);
+  expect(d).toContain(`${fr.k} of ${run.count} arrived`);
+  expect(d).toContain(`running estimate ${f(fr.estimate)} ± ${f(fr.stderr, 2)}`);
+  expect(d).toContain(`reference ${f(targetValue(m))}`);
+
+  // tilt the light by keyboard (the slider in the controls): the description follows
+  const tilt = page.getByRole('slider', { name: /^Tilt about x/ });
+  await tilt.focus();
+  await page.keyboard.press('ArrowRight');
+  await expect(page).toHaveURL(/tilt=-29/);
+  await expect.poll(() => figureDescription(page)).toContain('tilted 29° from the floor');
+  const after = modelFor('tilt=-29');
+  expect(await figureDescription(page)).toContain(
+    `cos θₗ = ${f(centreView(after.m).cosThetaL, 3)} at the light`,
+  );
+  // and it is announced once the input settles (the page's one live region)
+  await expect(page.getByTestId('live-region')).toContainText('tilted 29° from the floor', {
+    timeout: 10000,
+  });
+});
+
+test('on pause the description says the paused frame’s numbers', async ({ page }) => {
+  const q = 'n=512&seed=5&t=0';
+  await openScene(page, `#/area-light?${q}`);
+  await expect.poll(() => figureDescription(page), { timeout: 30000 }).toContain('none yet (0 of 512)');
+  // by keyboard: Enter on the focused Play button plays, Enter again (now Pause) pauses
+  const tl = page.getByTestId('timeline');
+  await tl.getByRole('button', { name: /play/i }).focus();
+  await page.keyboard.press('Enter');
+  await expect(tl).toHaveAttribute('data-playing', '1');
+  const arrived = async () => Number(await page.getByTestId('anim-k').getAttribute('data-value'));
+  await expect.poll(arrived, { timeout: 20000 }).toBeGreaterThan(20);
+  await page.keyboard.press('Enter');
+  await expect(tl).toHaveAttribute('data-playing', '0');
+  const k = await arrived();
+  const { m, v } = modelFor(q);
+  const run = sampleRun(m, v.strategy as LightStrategy, animationLength(v.n), v.seed);
+  const fr = animationFrame(run, k);
+  await expect.poll(() => figureDescription(page)).toContain(`${k} of 512 arrived`);
+  expect(await figureDescription(page)).toContain(`running estimate ${f(fr.estimate)} ± ${f(fr.stderr, 2)}`);
+  // the running-estimate plot has its own name and summary, for the same frame
+  const running = await axFigure(page, 'Running estimate against samples k');
+  expect(running!.description).toContain(`${k} of 512 samples`);
+  // the pause is announced with the paused frame
+  await expect(page.getByTestId('live-region')).toContainText(`${k} of 512 arrived`, { timeout: 10000 });
+});
+
+test('the running estimate’s audio trace starts Web Audio and steps by key; its table has the run’s rows', async ({
+  page,
+}) => {
+  await page.addInitScript(() => {
+    const w = window as unknown as { __osc: number };
+    w.__osc = 0;
+    const AC = window.AudioContext;
+    if (!AC) return;
+    const orig = AC.prototype.createOscillator;
+    AC.prototype.createOscillator = function (this: AudioContext) {
+      w.__osc++;
+      return orig.call(this);
+    };
+  });
+  const q = 'n=256&seed=3';
+  await openScene(page, `#/area-light?${q}`);
+  const trace = page.getByTestId('al-running-audio');
+  await trace.scrollIntoViewIfNeeded();
+  await trace.focus();
+  // stepping reads the points out (no sound needed): the first point is k = 1
+  await page.keyboard.press('ArrowRight');
+  const { m, v } = modelFor(q);
+  const run = sampleRun(m, v.strategy as LightStrategy, animationLength(v.n), v.seed);
+  await expect(page.getByTestId('live-region')).toContainText(`k = 1, estimate = ${f(run.mean[0]!, 4)}`);
+  await page.keyboard.press('ArrowRight');
+  await expect(page.getByTestId('live-region')).toContainText(`k = 2, estimate = ${f(run.mean[1]!, 4)}`);
+  await page.keyboard.press('End');
+  await expect(page.getByTestId('live-region')).toContainText(`k = 256, estimate = ${f(run.mean[255]!, 4)}`);
+  // Enter plays it: oscillators are created
+  expect(await page.evaluate(() => (window as unknown as { __osc: number }).__osc)).toBe(0);
+  await page.keyboard.press('Enter');
+  await expect
+    .poll(() => page.evaluate(() => (window as unknown as { __osc: number }).__osc), { timeout: 15000 })
+    .toBeGreaterThan(0);
+  await page.keyboard.press('Escape');
+  // the table: opened, it lists k = 1, 2, 4 … 256 with the run's means
+  const table = page.getByTestId('al-running-table');
+  await table.locator('summary').click();
+  const rows = table.locator('tbody tr');
+  await expect(rows.first()).toContainText(f(run.mean[0]!, 4));
+  await expect(rows.last().locator('td').first()).toHaveText('256');
+  await expect(rows.last()).toContainText(f(run.mean[255]!, 4));
+});
+
+test('ask=1: the estimate, the running plot and the answers wait for Reveal; the animation is held at its start', async ({
+  page,
+}) => {
+  await openScene(page, '#/area-light?ask=1&part=6c');
+  await expect(page.getByTestId('ask-prompt')).toBeVisible();
+  await expect(page.getByTestId('anim-estimate')).toHaveCount(0);
+  await expect(page.getByTestId('al-running')).toHaveCount(0);
+  await expect(page.getByTestId('anim-k')).toHaveAttribute('data-value', '0');
+  await expect(page.getByTestId('timeline')).toHaveCount(0);
+  await expect(page.locator('[data-testid^="given-term-"]')).toHaveCount(0);
+  await expect(page.getByTestId('given-estimate')).toHaveCount(0);
+  await expect(page.getByTestId('estimate')).toHaveCount(0);
+  expect(await figureDescription(page)).not.toMatch(/running estimate \d/);
+  // the setup stays: the light, the patch, the first four samples' geometry
+  await expect(page.getByTestId('given-samples')).toBeVisible();
+  await page.getByTestId('reveal').click();
+  await expect(page.getByTestId('ask-prompt')).toHaveCount(0);
+  await expect(page).not.toHaveURL(/ask=1/);
+  // revealed: the samples play in from the start, the results are back
+  await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '1');
+  await expect(page.getByTestId('anim-estimate')).toBeVisible();
+  await expect(page.getByTestId('given-estimate')).toBeVisible();
+  await readoutNumber(page, 'estimate');
+});
+
+for (const [w, h] of [
+  [1280, 720],
+  [1920, 1080],
+] as const) {
+  test(`present=1 at ${w}×${h}: the stage (3D view, configuration, transport, readouts, running estimate) is one screen`, async ({
+    page,
+  }) => {
+    await page.setViewportSize({ width: w, height: h });
+    await openScene(page, '#/area-light?present=1');
+    await page.evaluate(() => window.scrollTo(0, 0));
+    const stage = page.getByTestId('scene-stage');
+    for (const el of [
+      stage,
+      page.getByTestId('al-3d'),
+      page.getByTestId('timeline'),
+      page.getByTestId('anim-estimate'),
+      page.getByTestId('al-running'),
+      page.getByTestId('exam-config'),
+    ]) {
+      await expect(el).toBeVisible();
+      const b = (await el.boundingBox())!;
+      expect(b.y).toBeGreaterThanOrEqual(0);
+      expect(b.y + b.height).toBeLessThanOrEqual(h + 1);
+      expect(b.x + b.width).toBeLessThanOrEqual(w + 1);
+    }
+    // the 3D view is the larger part of it
+    expect((await page.getByTestId('al-3d').boundingBox())!.height).toBeGreaterThan(0.3 * h);
+  });
+}
+
+test('keyboard only: the exam’s configuration, a tilted patch, and the numbers Q6 asks for, read from the tree', async ({
+  page,
+}) => {
+  test.setTimeout(180_000);
+  await openScene(page, '#/area-light?n=1024&seed=1');
+  /** Tab until the focused element has this test id, or a label starting with this text. */
+  const tabTo = async (want: { testId?: string; label?: string }, limit = 400) => {
+    for (let i = 0; i < limit; i++) {
+      await page.keyboard.press('Tab');
+      const hit = await page.evaluate(({ testId, label }) => {
+        const el = document.activeElement as HTMLInputElement | null;
+        if (!el) return false;
+        if (testId) return el.getAttribute('data-testid') === testId;
+        return !!label && !!el.labels?.[0]?.textContent?.startsWith(label);
+      }, want);
+      if (hit) return;
+    }
+    throw new Error(`never reached by Tab: ${JSON.stringify(want)}`);
+  };
+  await tabTo({ testId: 'exam-config' });
+  await page.keyboard.press('Enter');
+  await expect(page.getByTestId('exam-config')).toHaveAttribute('aria-pressed', 'true');
+  await expect.poll(() => figureDescription(page)).toContain('parallel to the floor');
+  expect(await figureDescription(page)).toContain('cos θ = cos θₗ = 1;');
+
+  // Q6(a): tilt the patch with the arrow keys; dω = dA cos θₗ / r² for it, read from the figure
+  await tabTo({ label: 'Patch tilt' });
+  expect(await page.evaluate(() => (document.activeElement as HTMLInputElement).type)).toBe('range');
+  for (let i = 0; i < 20; i++) await page.keyboard.press('ArrowRight');
+  await expect(page).toHaveURL(/ptilt=20/);
+  const exam = modelFor(
+    `p=0,0,0&lc=0,0,2&ls=1,1&tilt=0&pu=${EXAM_PRESET.params.pu}&pv=${EXAM_PRESET.params.pv}&psize=${EXAM_PRESET.params.psize}&ptilt=20`,
+  );
+  await expect
+    .poll(() => figureDescription(page))
+    .toContain(`dω = dA cos θₗ / r² = ${f(exam.patch.approx)} sr (exactly ${f(exam.patch.exact)} sr)`);
+  expect(await figureDescription(page)).toContain(`cos θₗ = ${f(exam.patch.cosThetaL, 3)}, so dA⊥`);
+
+  // Q6(c): the area estimator's value with all 1024 samples, and the reference it must meet
+  const run = sampleRun(exam.m, 'area', 1024, 1);
+  const fr = animationFrame(run, 1024);
+  const d = await figureDescription(page);
+  expect(d).toContain(`running estimate ${f(fr.estimate)} ± ${f(fr.stderr, 2)}`);
+  expect(d).toContain(`reference ${f(targetValue(exam.m))}`);
+  expect(Math.abs(fr.estimate - targetValue(exam.m))).toBeLessThan(3 * fr.stderr);
+});

@@ -1,0 +1,328 @@
+/**
+ * #/hemisphere for a reader who does not see the figure, and in the lecture room: the main
+ * figure's description read from Chromium's accessibility tree (what a screen reader receives),
+ * its live numbers recomputed here from the scene's own model; the audio traces; the stratum
+ * followed onto the hemisphere by keyboard; ask=1 and present=1; and a keyboard-only run through
+ * Q1 with its numbers read from the accessibility tree.
+ */
+import type { CDPSession, Page } from '@playwright/test';
+import { test, expect, openScene } from './fixtures';
+import { computeDrawStats, examInversion, lobeFromParams } from '../../src/scenes/hemisphere/model';
+import { cellImage, countInCell } from '../../src/scenes/hemisphere/stratum';
+import { describeStratum } from '../../src/scenes/hemisphere/view/describe';
+import { fillSequence2D } from '../../src/core/random';
+import { examLobeK } from '../../src/core/sampling';
+import { formatSignificant } from '../../src/ui/format';
+
+const FIGURE = 'Warp of the unit square onto the hemisphere: samples of the chosen density';
+const f3 = (x: number) => formatSignificant(x, 3, 'times');
+const exam = lobeFromParams('exam', 8).lobe!;
+
+interface AXNode {
+  nodeId: string;
+  ignored?: boolean;
+  role?: { value: string };
+  name?: { value: string };
+  description?: { value: string };
+  childIds?: string[];
+  backendDOMNodeId?: number;
+}
+
+async function axTree(cdp: CDPSession): Promise<AXNode[]> {
+  await cdp.send('Accessibility.enable');
+  const { nodes } = (await cdp.send('Accessibility.getFullAXTree')) as { nodes: AXNode[] };
+  return nodes;
+}
+
+/** The accessible description of the figure named `name` (a screen reader's reading of it). */
+async function figureDescription(page: Page, name: string): Promise<string> {
+  const cdp = await page.context().newCDPSession(page);
+  const node = (await axTree(cdp)).find((n) => !n.ignored && n.name?.value === name);
+  await cdp.detach();
+  expect(node, `no accessible node named "${name}"`).toBeTruthy();
+  return node!.description?.value ?? '';
+}
+
+/** The text of an element as the accessibility tree holds it (its StaticText descendants). */
+async function axText(page: Page, selector: string): Promise<string> {
+  const cdp = await page.context().newCDPSession(page);
+  const { root } = (await cdp.send('DOM.getDocument', { depth: 0 })) as { root: { nodeId: number } };
+  const { nodeId } = (await cdp.send('DOM.querySelector', { nodeId: root.nodeId, selector })) as {
+    nodeId: number;
+  };
+  const { node } = (await cdp.send('DOM.describeNode', { nodeId })) as { node: { backendNodeId: number } };
+  const nodes = await axTree(cdp);
+  await cdp.detach();
+  const byId = new Map(nodes.map((n) => [n.nodeId, n]));
+  const out: string[] = [];
+  const walk = (n: AXNode | undefined) => {
+    if (!n) return;
+    if (n.role?.value === 'StaticText' && n.name?.value) out.push(n.name.value);
+    for (const c of n.childIds ?? []) walk(byId.get(c));
+  };
+  walk(nodes.find((n) => n.backendDOMNodeId === node.backendNodeId));
+  return out.join('');
+}
+
+async function statsReady(page: Page) {
+  await expect(page.getByTestId('stats-status')).toHaveAttribute('data-state', 'ready', { timeout: 60_000 });
+}
+
+/** Tab (keyboard only) until the focused element matches `selector`. */
+async function tabTo(page: Page, selector: string, max = 200) {
+  for (let i = 0; i < max; i++) {
+    await page.keyboard.press('Tab');
+    if (await page.evaluate((s) => !!document.activeElement?.matches(s), selector)) return;
+  }
+  throw new Error(`Tab never reached ${selector}`);
+}
+
+test.describe('the figure described', () => {
+  test('the description holds the live numbers and changes with the lobe and on pause', async ({ page }) => {
+    test.setTimeout(180_000);
+    await openScene(page, '#/hemisphere?n=2000');
+    await statsReady(page);
+    const core = computeDrawStats(exam, Math.cos, 'independent', 1, 2000);
+    await expect
+      .poll(() => figureDescription(page, FIGURE), { timeout: 30_000 })
+      .toContain(`p = ${f3(core.chi2!.pValue)}`);
+    const d = await figureDescription(page, FIGURE);
+    expect(d).toContain(`k = ${formatSignificant(examLobeK(), 4, 'times')}`);
+    expect(d).toContain('2,000 independent samples');
+    expect(d).toContain('every point sits on its direction on the hemisphere');
+    expect(d).toContain(`around θ = ${f3(Math.PI / 4)} rad`);
+    expect(d).toContain('towards φ = 2π');
+
+    await page.getByTestId('lobe').selectOption('cosine');
+    await expect.poll(() => figureDescription(page, FIGURE), { timeout: 30_000 }).toContain('cos θ / π');
+    const cos = await figureDescription(page, FIGURE);
+    expect(cos).not.toBe(d);
+    expect(cos).toContain('evenly in φ');
+
+    // play, then pause: the description says the paused position
+    await page.getByTestId('timeline-play').click();
+    await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '1');
+    await page.waitForFunction(() => {
+      const t = Number(document.querySelector('[data-testid="timeline"]')?.getAttribute('data-t'));
+      return t > 0.15 && t < 0.85;
+    });
+    await page.getByTestId('timeline-play').click();
+    await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '0');
+    const t = Number(await page.getByTestId('timeline').getAttribute('data-t'));
+    const s = Number(await page.getByTestId('morph-s').getAttribute('data-value'));
+    await expect
+      .poll(() => figureDescription(page, FIGURE))
+      .toContain(`Warp morph at t = ${t.toFixed(2)} (s = ${s.toFixed(2)})`);
+    // on pause the description is announced through the live region
+    await expect(page.getByTestId('live-region')).toContainText(`t = ${t.toFixed(2)}`, { timeout: 10_000 });
+  });
+
+  test('the θ histogram: named, summarized, a table of its bins', async ({ page }) => {
+    test.setTimeout(120_000);
+    await openScene(page, '#/hemisphere?n=2000&part=1d');
+    await statsReady(page);
+    const name = 'Histogram of the sampled polar angles θ against the marginal density p(θ)';
+    const d = await figureDescription(page, name);
+    expect(d).toContain('Histogram of 2,000 sampled θ (rad) in 36 bins');
+    expect(d).toContain(`p(θ) ends about where it starts from 0 at θ = 0 to 0 at θ = ${f3(Math.PI / 2)}`);
+    expect(d).toContain(`maximum 1 at θ = ${f3(Math.PI / 4)}`);
+    const table = page.getByTestId('plot-theta-table');
+    await table.locator('summary').click();
+    await expect(table.locator('tbody tr')).toHaveCount(36);
+    const h = computeDrawStats(exam, Math.cos, 'independent', 1, 2000).hist!.theta;
+    const first = (await table.locator('tbody tr').first().locator('td').allTextContents()).map(Number);
+    expect(first[0]).toBeCloseTo(h.centers[0], 3);
+    expect(first[1]).toBeCloseTo(h.density[0], 3);
+  });
+});
+
+test.describe('audio traces', () => {
+  test('the θ histogram and the CDF play through Web Audio and step by key', async ({ page }) => {
+    test.setTimeout(120_000);
+    await page.addInitScript(() => {
+      const w = window as unknown as { __osc: number };
+      w.__osc = 0;
+      const proto = (window.BaseAudioContext ?? window.AudioContext).prototype;
+      const make = proto.createOscillator;
+      proto.createOscillator = function (this: BaseAudioContext) {
+        w.__osc++;
+        return make.call(this);
+      };
+    });
+    await openScene(page, '#/hemisphere?n=2000&part=1d');
+    await statsReady(page);
+    const trace = page.getByTestId('plot-theta-audio');
+    await trace.focus();
+    expect(await page.evaluate(() => (window as unknown as { __osc: number }).__osc)).toBe(0);
+    await page.keyboard.press('Enter');
+    await expect
+      .poll(() => page.evaluate(() => (window as unknown as { __osc: number }).__osc), { timeout: 15_000 })
+      .toBeGreaterThan(0);
+    await page.keyboard.press('Escape');
+    const h = computeDrawStats(exam, Math.cos, 'independent', 1, 2000).hist!.theta;
+    await page.keyboard.press('ArrowRight');
+    await page.keyboard.press('ArrowRight');
+    const second = `θ = ${f3(h.centers[1])}, density = ${f3(h.density[1])}`;
+    await expect(page.getByTestId('plot-theta-audio-point')).toContainText(`${second} (point 2 of 36)`);
+    await expect(page.getByTestId('live-region')).toContainText(second, { timeout: 10_000 });
+
+    // the CDF of (c): a tick at the median, named when stepped onto
+    const cdf = page.getByTestId('plot-cdf-theta-audio');
+    await cdf.focus();
+    await page.keyboard.press('End');
+    await expect(page.getByTestId('plot-cdf-theta-audio-point')).toContainText('P(θ) = 1');
+  });
+});
+
+test.describe('the followed stratum', () => {
+  test('by keyboard: arrows pick a cell, its sentence is the model’s, the URL keeps it, Escape stops', async ({
+    page,
+  }) => {
+    test.setTimeout(120_000);
+    await openScene(page, '#/hemisphere?n=2000');
+    await tabTo(page, '[data-testid="stratum-cells"] [role="radio"]');
+    for (let i = 0; i < 3; i++) await page.keyboard.press('ArrowRight');
+    for (let i = 0; i < 5; i++) await page.keyboard.press('ArrowUp');
+    const cell = page.locator('[data-cell="3,5"]');
+    await expect(cell).toHaveAttribute('aria-checked', 'true');
+    await expect(cell).toBeFocused();
+    await expect.poll(() => page.evaluate(() => location.hash)).toMatch(/[?&]cell=3,5(&|$)/);
+    const c = { i: 3, j: 5 };
+    const count = countInCell('independent', 1, 2000, c, 0, 2000, new Float64Array(2 * 512));
+    const text = describeStratum(c, cellImage(exam, c), count, 2000);
+    await expect(page.getByTestId('stratum-text')).toHaveText(text);
+    await expect.poll(() => figureDescription(page, FIGURE)).toContain(text);
+    // the 3D view names the stratum it marks
+    await expect(page.getByTestId('hemisphere-3d')).toHaveAttribute('aria-label', /stratum \(3, 5\) marked/);
+    await page.keyboard.press('Escape');
+    await expect.poll(() => page.evaluate(() => location.hash)).not.toMatch(/cell=/);
+    await expect(cell).toHaveAttribute('aria-checked', 'false');
+  });
+
+  test('by number fields and by a click; the square outlines it', async ({ page }) => {
+    await openScene(page, '#/hemisphere?n=2000');
+    await page.getByTestId('stratum-start').click();
+    await expect(page.getByTestId('stratum-mark')).toHaveCount(1);
+    const i = page.getByTestId('stratum-i');
+    await i.fill('6');
+    await i.press('Enter');
+    await page.getByTestId('stratum-j').fill('1');
+    await page.getByTestId('stratum-j').press('Enter');
+    await expect(page.locator('[data-cell="6,1"]')).toHaveAttribute('aria-checked', 'true');
+    await page.locator('[data-cell="2,7"]').click();
+    await expect.poll(() => page.evaluate(() => location.hash)).toMatch(/cell=2,7/);
+    await expect(page.getByTestId('stratum-text')).toContainText('Stratum (2, 7)');
+    await page.getByTestId('stratum-clear').click();
+    await expect(page.getByTestId('stratum-mark')).toHaveCount(0);
+  });
+
+  test('bad cell values: a notice and a safe fallback', async ({ page }) => {
+    await openScene(page, '#/hemisphere?cell=9,2');
+    await expect(page.getByTestId('param-notice')).toContainText('cell');
+    await expect(page.locator('[data-cell="7,2"]')).toHaveAttribute('aria-checked', 'true');
+    await openScene(page, '#/hemisphere?cell=2.5,3');
+    await expect(page.getByTestId('cell-problem')).toContainText('not two whole numbers');
+    await expect(page.locator('[data-cell="3,3"]')).toHaveAttribute('aria-checked', 'true');
+    await openScene(page, '#/hemisphere?cell=banana');
+    await expect(page.getByTestId('param-notice')).toContainText('cell');
+    await expect(page.getByTestId('stratum-mark')).toHaveCount(0);
+  });
+});
+
+test.describe('in the lecture room', () => {
+  test('ask=1: no samples, histograms or answers, the morph at t = 0; Reveal shows them and plays', async ({
+    page,
+  }) => {
+    test.setTimeout(120_000);
+    await openScene(page, '#/hemisphere?ask=1&n=2000&t=0');
+    await expect(page.getByTestId('ask-prompt')).toBeVisible();
+    await expect(page.getByTestId('timeline-held')).toBeVisible();
+    await expect(page.getByTestId('morph-s')).toHaveAttribute('data-value', '0');
+    expect(await page.getByTestId('ask-hidden').count()).toBeGreaterThanOrEqual(4);
+    await expect(page.getByTestId('plot-theta')).toHaveCount(0);
+    await expect(page.getByTestId('chi2-verdict')).toHaveCount(0);
+    const d = await figureDescription(page, FIGURE);
+    expect(d).toContain('hidden until you reveal');
+    expect(d).not.toContain('bunch');
+    await page.keyboard.press('v');
+    await expect(page.getByTestId('ask-prompt')).toHaveCount(0);
+    await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '1');
+    await statsReady(page);
+    await expect(page.getByTestId('chi2-verdict')).toBeVisible();
+    await expect.poll(() => figureDescription(page, FIGURE), { timeout: 30_000 }).toContain('bunch');
+  });
+
+  for (const screen of [
+    { width: 1280, height: 720 },
+    { width: 1920, height: 1080 },
+  ]) {
+    for (const ask of ['', '&ask=1']) {
+      test(`present=1${ask} at ${screen.width}×${screen.height}: the stage with a stratum is wholly on the first screen`, async ({
+        page,
+      }) => {
+        await page.setViewportSize(screen);
+        await openScene(page, `#/hemisphere?present=1${ask}&cell=6,5`);
+        await page.evaluate(() => window.scrollTo(0, 0));
+        const out = await page.evaluate(() => {
+          let worst = 0;
+          for (const el of document.querySelectorAll(
+            '[data-testid="scene-stage"], [data-testid="scene-stage"] *',
+          )) {
+            const r = el.getBoundingClientRect();
+            if (r.width === 0 && r.height === 0) continue;
+            if (el.closest('.sr-only') || getComputedStyle(el).position === 'absolute') continue;
+            worst = Math.max(
+              worst,
+              r.bottom - window.innerHeight,
+              r.right - document.documentElement.clientWidth,
+            );
+          }
+          return worst;
+        });
+        expect(out).toBeLessThanOrEqual(1);
+        const stage = page.getByTestId('scene-stage');
+        for (const id of ['hemisphere-3d', 'timeline', 'morph-s', 'stratum-i', 'stratum-j'])
+          await expect(stage.getByTestId(id)).toBeVisible();
+        await expect(page.locator('[data-cell="6,5"]')).toHaveAttribute('aria-checked', 'true');
+      });
+    }
+  }
+});
+
+test('keyboard only: orbit the view, follow a stratum, and read Q1’s numbers from the accessibility tree', async ({
+  page,
+}) => {
+  test.setTimeout(180_000);
+  await openScene(page, '#/hemisphere?n=2000');
+  // the 3D view by keyboard: arrows orbit, Home returns
+  await tabTo(page, '[data-testid="hemisphere-3d"]');
+  const triad = page.getByTestId('hemisphere-3d-axes');
+  await expect(triad).toHaveAttribute('data-x-axis', /./, { timeout: 30_000 });
+  const home = await triad.getAttribute('data-x-axis');
+  await page.keyboard.press('ArrowLeft');
+  await expect.poll(() => triad.getAttribute('data-x-axis')).not.toBe(home);
+  await page.keyboard.press('Home');
+  await expect.poll(() => triad.getAttribute('data-x-axis')).toBe(home);
+  // the first sample's stratum, by the button
+  await tabTo(page, '[data-testid="stratum-start"]');
+  await page.keyboard.press('Enter');
+  const u = fillSequence2D('independent', 1, 2000, new Float64Array(2), 0, 1, 0);
+  const cell = { i: Math.floor(u[0] * 8), j: Math.floor(u[1] * 8) };
+  await expect(page.locator(`[data-cell="${cell.i},${cell.j}"]`)).toHaveAttribute('aria-checked', 'true');
+  await statsReady(page);
+
+  // (a) k, (c) the CDFs at the first sample, (d) the χ² test: read as a screen reader gets them
+  const k = await axText(page, '[data-testid="answer-1a"]');
+  expect(k).toContain(formatSignificant(examLobeK(), 8, 'times'));
+  const ex = examInversion(u[0], u[1]);
+  const c = await axText(page, '[data-testid="cdf-example"]');
+  expect(c).toContain(`θ = ${formatSignificant(ex.thetaAsin, 8, 'times')}`);
+  expect(c).toContain(`φ = ${formatSignificant(ex.phiLog1p, 8, 'times')}`);
+  expect(c).toContain(`P(θ) = ${formatSignificant(ex.cdfTheta, 10, 'times')}`);
+  const core = computeDrawStats(exam, Math.cos, 'independent', 1, 2000);
+  const verdict = await axText(page, '[data-testid="chi2-verdict"]');
+  expect(verdict).toContain(`p = ${formatSignificant(core.chi2!.pValue, 4, 'times')}`);
+  expect(verdict).toContain('Accepted');
+  // the stratum's sentence is part of the figure's description
+  expect(await figureDescription(page, FIGURE)).toContain(`Stratum (${cell.i}, ${cell.j})`);
+});
