@@ -1,9 +1,11 @@
+import { fileURLToPath } from 'node:url';
 import { defineConfig, type Plugin } from 'vite';
 import react from '@vitejs/plugin-react';
 import { VitePWA } from 'vite-plugin-pwa';
 import { viteSingleFile } from 'vite-plugin-singlefile';
 import { lateManifestLink, routePreload } from './scripts/routePreload';
 import { appFiles } from './scripts/appFiles';
+import { contentSecurityPolicy } from './scripts/csp';
 
 /**
  * `--mode single` (npm run build:single): one self-contained HTML file. Workers are written as
@@ -44,7 +46,7 @@ export default defineConfig(({ mode }) => {
   return {
     base: './',
     plugins: single
-      ? [react(), inlineWorkers(), viteSingleFile({ removeViteModuleLoader: true })]
+      ? [react(), inlineWorkers(), viteSingleFile({ removeViteModuleLoader: true }), contentSecurityPolicy()]
       : [
           react(),
           // index.html starts the opened scene's chunks downloading with the entry
@@ -88,6 +90,8 @@ export default defineConfig(({ mode }) => {
           lateManifestLink(),
           // app-files.json: what the practice sheet page packs into LMS zips in the browser
           appFiles(),
+          // the Content-Security-Policy meta, with the hashes of the final index.html's inline scripts
+          contentSecurityPolicy(),
         ],
     build: {
       target: 'es2022',
@@ -129,6 +133,15 @@ export default defineConfig(({ mode }) => {
       ? { format: 'iife' as const, rolldownOptions: { output: { codeSplitting: false } } }
       : { format: 'es' as const },
     publicDir: single ? false : 'public',
+    // @stdlib's generator probe evaluates a string, which the CSP refuses (scripts/stubs/)
+    resolve: {
+      alias: [
+        {
+          find: /^@stdlib\/assert-has-generator-support$/,
+          replacement: fileURLToPath(new URL('./scripts/stubs/hasGeneratorSupport.cjs', import.meta.url)),
+        },
+      ],
+    },
     server: { host: '127.0.0.1' },
   };
 });

@@ -95,6 +95,30 @@ export function summarize(profile, { top = 25, withInclusive = false } = {}) {
 
 export { print as printTop };
 
+/**
+ * The JavaScript samples of one thread (`pid:tid`) in a Chromium trace recorded with the
+ * `disabled-by-default-v8.cpu_profiler` category: the profile's nodes by id, and [time µs, node id]
+ * of every sample (its ProfileChunk events, in order).
+ */
+export function traceProfileSamples(events, thread) {
+  const nodes = new Map();
+  const samples = [];
+  const prof = events.find((e) => e.name === 'Profile' && `${e.pid}:${e.tid}` === thread);
+  let clock = prof?.args?.data?.startTime ?? 0;
+  for (const e of events) {
+    if (e.name !== 'ProfileChunk' || !prof || e.pid !== prof.pid || e.id !== prof.id) continue;
+    const d = e.args.data;
+    for (const n of d.cpuProfile?.nodes ?? []) nodes.set(n.id, n);
+    const ids = d.cpuProfile?.samples ?? [];
+    const deltas = d.timeDeltas ?? [];
+    for (let i = 0; i < ids.length; i++) {
+      clock += deltas[i] ?? 0;
+      samples.push([clock, ids[i]]);
+    }
+  }
+  return { nodes, samples };
+}
+
 /** The phone the load diagnostics emulate (Lighthouse's mobile screen; no service worker). */
 export const PHONE_CONTEXT = {
   viewport: { width: 412, height: 823 },

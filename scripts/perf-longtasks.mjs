@@ -22,7 +22,7 @@ import { chromium } from 'playwright-core';
 import { runnerImport } from 'vite';
 import { SCENES } from './catalogue.mjs';
 import { CHROMIUM_ARGS, findChromium, NO_CHROMIUM_HELP } from './chromium.mjs';
-import { serveDist, takeOpt } from './cpuprofile.mjs';
+import { serveDist, takeOpt, traceProfileSamples } from './cpuprofile.mjs';
 
 const load = async (rel) => (await runnerImport(new URL(rel, import.meta.url).pathname)).module;
 const { pageMainThread, threadEvents, topLevelTasks, startTrace, stopTrace, TASK_CATEGORIES } =
@@ -79,8 +79,7 @@ function tasksOf(events) {
   const ev = threadEvents(events, main);
   const tasks = topLevelTasks(ev);
   // JS samples (ProfileChunk events) for --js
-  const nodes = new Map();
-  const samples = [];
+  const { nodes, samples } = withJs ? traceProfileSamples(events, main) : { nodes: new Map(), samples: [] };
   if (withJs) {
     const prof = events.find((e) => e.name === 'Profile' && `${e.pid}:${e.tid}` === main);
     let clock = prof?.args?.data?.startTime ?? 0;

@@ -13,7 +13,7 @@
  */
 import { chromium } from 'playwright-core';
 import { CHROMIUM_ARGS, findChromium } from './chromium.mjs';
-import { serveDist, takeOpt, PHONE_CONTEXT } from './cpuprofile.mjs';
+import { serveDist, takeOpt, PHONE_CONTEXT, traceProfileSamples } from './cpuprofile.mjs';
 
 function takeFlag(list, name) {
   const i = list.indexOf(name);
@@ -72,8 +72,7 @@ try {
       .filter((e) => `${e.pid}:${e.tid}` === key && e.ph === 'X' && e.dur !== undefined)
       .map((e) => ({ ...e, wall: e.dur, dur: useWall ? e.dur : (e.tdur ?? e.dur) }));
     // JS samples of our thread (ProfileChunk events), as [time µs, node id], with the node tree
-    const nodes = new Map();
-    const samples = [];
+    const { nodes, samples } = withJs ? traceProfileSamples(events, key) : { nodes: new Map(), samples: [] };
     if (withJs) {
       const prof = events.find((e) => e.name === 'Profile' && `${e.pid}:${e.tid}` === key);
       let clock = prof?.args?.data?.startTime ?? 0;

@@ -10,6 +10,7 @@ import { firstScreen } from './firstScreen';
 import { afterPaint } from '../ui/afterPaint';
 import { markBuildReplaced } from './staleBuild';
 import { showUpdateNotice } from './updateNotice';
+import { declaredLmsConfig } from '../lms/config';
 
 // The opened scene's chunk is requested now, while React mounts the shell, not once the shell has
 // rendered (index.html has already started downloading it: scripts/routePreload.ts). The
@@ -18,9 +19,10 @@ const opened = findScene(parseHash(window.location.hash).path);
 if (opened) void sceneLoader(opened.id)?.().catch(() => undefined);
 
 const root = document.getElementById('root');
-// Inside an LMS package (SCORM, cmi5) the launch page declares window.__RML_LMS__: the LMS runtime
-// is loaded, and connects, before the first render (it decides the learner's variant seeds).
-const inLms = typeof (window as { __RML_LMS__?: unknown }).__RML_LMS__ === 'object';
+// Inside an LMS package (SCORM, cmi5) the launch page declares it (../lms/config.ts): the LMS
+// runtime is loaded, and connects, before the first render (it decides the learner's variant seeds).
+const declared = declaredLmsConfig();
+const inLms = typeof declared === 'object' && declared !== null;
 if (root && inLms)
   void import('../lms/launch')
     .then((m) => m.startLms())

@@ -1,6 +1,6 @@
 /**
- * The LMS runtime's entry, loaded by the app only when the launch page declares
- * `window.__RML_LMS__` (see packages.ts): connects to the LMS (SCORM 1.2, SCORM 2004 or cmi5),
+ * The LMS runtime's entry, loaded by the app only when the launch page declares a package
+ * (./config.ts, written by packages.ts): connects to the LMS (SCORM 1.2, SCORM 2004 or cmi5),
  * registers the practice extension that gives each learner their variants and reports every
  * check, opens the package's start page, and shows a one-line status. Without an LMS the package
  * runs as the normal practice pages, and the status says so.
@@ -9,9 +9,10 @@ import { addPracticeExtension } from '../practice/extensions';
 import type { QuestionId } from '../practice/model';
 import { isQuestionId } from '../practice/questions';
 import type { LmsConfig } from './packages';
+import { declaredLmsConfig } from './config';
 
 function readConfig(): LmsConfig | null {
-  const c = (window as { __RML_LMS__?: Partial<LmsConfig> }).__RML_LMS__;
+  const c = declaredLmsConfig() as Partial<LmsConfig> | null;
   if (!c || typeof c !== 'object') return null;
   const kind = c.kind === 'scorm12' || c.kind === 'scorm2004' || c.kind === 'cmi5' ? c.kind : null;
   const questions = Array.isArray(c.questions)

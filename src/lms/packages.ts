@@ -4,20 +4,22 @@
  * caller hands in the app's files and gets the packages' bytes (the Node script and the practice
  * sheet page share this).
  *
- * The launch page is the app's own index.html with one inline script added at the top of <head>
- * that sets `window.__RML_LMS__` (the package kind, its questions, seed and mastery score); the
- * app's entry sees it and loads the LMS runtime (src/lms/launch.ts) before rendering. Without
- * that script the app never loads any LMS code.
+ * The launch page is the app's own index.html with one meta tag added at the top of <head> (after
+ * the charset) that declares the package (its kind, questions, seed and mastery score: ./config.ts);
+ * the app's entry sees it and loads the LMS runtime (src/lms/launch.ts) before rendering. Without
+ * that tag the app never loads any LMS code. The app's Content-Security-Policy stays as built, but for cmi5, whose
+ * learning record store is named only at launch: its connect-src admits any http(s) origin.
  */
 import { strToU8, zipSync, type Zippable } from 'fflate';
 import type { QuestionId } from '../practice/model';
 import { questionInfo } from '../practice/questions';
 import { bankVariants, moodleXml, qtiPackageFiles, type BankChoice, type TexToMathml } from './banks';
 import { xmlEscape } from './gaps';
+import { lmsConfigMeta } from './config';
 
 export type LmsKind = 'scorm12' | 'scorm2004' | 'cmi5';
 
-/** What the launch page's inline script declares (read by src/lms/launch.ts). */
+/** What the launch page declares (./config.ts; read by src/lms/launch.ts). */
 export interface LmsConfig {
   kind: LmsKind;
   questions: QuestionId[];
@@ -40,13 +42,21 @@ function title(c: Pick<BankChoice, 'questions'>): string {
   return `${TITLE}: ${c.questions.map((q) => `Q${questionInfo(q).n}`).join(', ')}`;
 }
 
-/** The launch page: the app's index.html with the LMS configuration script in front. */
+/** The launch page: the app's index.html with the LMS configuration in front (and, for cmi5, its LRS allowed). */
 export function launchHtml(appHtml: string, config: LmsConfig): string {
-  const script = `<script>window.__RML_LMS__=${JSON.stringify(config).replace(/</g, '\\u003c')};</script>`;
-  const i = appHtml.search(/<head[^>]*>/i);
-  if (i < 0) return `${script}${appHtml}`;
-  const end = appHtml.indexOf('>', i) + 1;
-  return `${appHtml.slice(0, end)}${script}${appHtml.slice(end)}`;
+  const tag = lmsConfigMeta(config);
+  const html =
+    config.kind === 'cmi5'
+      ? appHtml.replace(
+          /(<meta http-equiv="Content-Security-Policy" content="[^"]*connect-src )'self'/i,
+          "$1'self' https: http:",
+        )
+      : appHtml;
+  // after the charset (first 1024 bytes) where there is one, else at the top of <head>
+  const at = /<meta charset[^>]*>/i.exec(html) ?? /<head[^>]*>/i.exec(html);
+  if (!at) return `${tag}${html}`;
+  const end = at.index + at[0].length;
+  return `${html.slice(0, end)}${tag}${html.slice(end)}`;
 }
 
 function fileList(files: readonly string[], indent: string): string {

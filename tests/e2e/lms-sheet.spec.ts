@@ -31,7 +31,7 @@ test('the worksheet page builds the packages for its questions in the browser', 
   const zip = unzipSync(new Uint8Array(await read(await download)));
   const index = new TextDecoder().decode(zip['index.html']);
   expect(index).toContain(
-    'window.__RML_LMS__={"kind":"scorm12","questions":["q1","q3"],"seed":21,"mastery":0.8',
+    '<meta name="rml-lms" content="{&quot;kind&quot;:&quot;scorm12&quot;,&quot;questions&quot;:[&quot;q1&quot;,&quot;q3&quot;],&quot;seed&quot;:21,&quot;mastery&quot;:0.8',
   );
   expect(new TextDecoder().decode(zip['imsmanifest.xml'])).toContain('adlcp:scormtype="sco"');
   const scripts = [...index.matchAll(/src="\.\/(assets\/[^"]+\.js)"/g)].map((m) => m[1]);

@@ -15,6 +15,8 @@ import { extname, join, normalize } from 'node:path';
 import type { Page } from '@playwright/test';
 import { test, expect } from './fixtures';
 import { settleLazyViews } from './lazyViews';
+import { cspViolations, injectScript, INJECTION_REFUSED, recordCspViolations } from './csp';
+import { withCsp } from '../../scripts/csp';
 import { SCENES as CATALOGUE } from '../../src/kit/catalogue';
 
 const dist = process.env.E2E_DIST ?? 'dist';
@@ -201,7 +203,8 @@ test('a new build shows the "updated, reload" notice, and Reload switches to it 
  * "Deploy" a real rebuild into the served folder: every file under assets/ gets a new name (as a
  * build with changed sources does), every reference to it in the build's text files follows, the
  * old files are gone from the host, and index.html carries a marker (with its new revision in the
- * service worker's precache list). Returns the marker.
+ * service worker's precache list) and its Content-Security-Policy for its new inline script.
+ * Returns the marker.
  */
 function deployRenamedBuild(dir: string): string {
   const marker = `rebuilt-${Date.now()}`;
@@ -225,7 +228,8 @@ function deployRenamedBuild(dir: string): string {
     '</head>',
     `<meta name="rml-build" content="${marker}"></head>`,
   );
-  writeFileSync(join(dir, 'index.html'), html);
+  // the new build's policy hashes its own inline script (the preloader names the new files)
+  writeFileSync(join(dir, 'index.html'), withCsp(html));
   const sw = readFileSync(join(dir, 'sw.js'), 'utf8');
   const sw2 = rename(sw).replace(/(url:\s*"index\.html",\s*revision:\s*")[^"]+"/, `$1${marker}"`);
   expect(sw2, 'the service worker precaches index.html with a revision').not.toBe(rename(sw));
@@ -311,6 +315,49 @@ test('a deploy with three tabs: Reload moves its own tab to the new build, other
     await expect(tabC.getByTestId('verdict-a')).toHaveCount(0);
     await tabB.close();
     await tabC.close();
+  } finally {
+    await srv.stop().catch(() => undefined);
+    rmSync(srv.dir, { recursive: true, force: true });
+  }
+});
+
+test('under the build’s Content-Security-Policy every route loads with no violation; injected script does not run', async ({
+  page,
+  context,
+  consoleErrors,
+}) => {
+  test.setTimeout(360_000);
+  await recordCspViolations(context);
+  const srv = await serveCopy();
+  try {
+    const routes = [
+      '#/',
+      ...SCENES.map(([hash]) => hash),
+      '#/guide',
+      '#/practice',
+      ...[1, 2, 3, 4, 5, 6].map((q) => `#/practice/q${q}?seed=17`),
+      '#/practice/sheet?seed=1&q=1,3,5',
+      '#/results',
+    ];
+    for (const hash of routes) {
+      await page.goto(`${srv.base}${hash}`);
+      await expect(page.locator('main#main'), hash).toBeVisible({ timeout: 60000 });
+      await expect(page.locator('.loading'), hash).toHaveCount(0, { timeout: 60000 });
+      // every lazy view (plots, 3D, formulas, workers) loads under the policy
+      await settleLazyViews(page);
+      await expect(page.locator('.notice-error'), hash).toHaveCount(0);
+      expect(await cspViolations(page), `CSP violations on ${hash}`).toEqual([]);
+    }
+    const meta = await page.locator('meta[http-equiv="Content-Security-Policy"]').getAttribute('content');
+    expect(meta).toMatch(/script-src 'self' 'sha256-/);
+    // an attacker's inline script and inline handler are refused, and say so
+    const injected = await injectScript(page);
+    expect(injected.ran).toEqual([]);
+    expect(injected.reported).toEqual(['script-src-elem inline', 'script-src-attr inline']);
+    // (the browser logs each refusal as a console error: those two are expected)
+    const refused = consoleErrors.filter((e) => INJECTION_REFUSED.test(e));
+    expect(refused).toHaveLength(2);
+    consoleErrors.splice(0, consoleErrors.length, ...consoleErrors.filter((e) => !INJECTION_REFUSED.test(e)));
   } finally {
     await srv.stop().catch(() => undefined);
     rmSync(srv.dir, { recursive: true, force: true });

@@ -7,6 +7,7 @@ import { resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { test, expect } from './fixtures';
 import { settleLazyViews } from './lazyViews';
+import { cspViolations, injectScript, INJECTION_REFUSED, recordCspViolations } from './csp';
 import { SCENES, type SceneId } from '../../src/kit/catalogue';
 
 const file = resolve(process.env.E2E_SINGLE ?? 'dist-single/index.html');
@@ -31,12 +32,14 @@ const ROUTES: [string, string[]][] = [
   ['#/practice/sheet?seed=1&q=1,3,5', []],
 ];
 
-test('the single HTML file opens from file:// and every route works with no network', async ({
+test('the single HTML file opens from file:// and every route works with no network, under its CSP', async ({
   page,
   context,
+  consoleErrors,
 }) => {
   test.setTimeout(240_000);
   expect(existsSync(file), `${file} exists (run "npm run build:single")`).toBe(true);
+  await recordCspViolations(context);
   // nothing may leave the file: any http(s) request fails the test
   const requests: string[] = [];
   await context.route(/^https?:/, (route) => {
@@ -54,7 +57,15 @@ test('the single HTML file opens from file:// and every route works with no netw
     // bring every lazy view (plots, 3D, formulas) on screen so their chunks load
     await settleLazyViews(page);
     await expect(page.locator('.notice-error')).toHaveCount(0);
+    // the file's inline app runs by its hash, its workers from Blob URLs: nothing is refused
+    expect(await cspViolations(page), `CSP violations on ${hash}`).toEqual([]);
   }
+  // an inline script or handler injected into the file's page does not run
+  const injected = await injectScript(page);
+  expect(injected.ran).toEqual([]);
+  expect(injected.reported).toEqual(['script-src-elem inline', 'script-src-attr inline']);
+  expect(consoleErrors.filter((e) => INJECTION_REFUSED.test(e))).toHaveLength(2);
+  consoleErrors.splice(0, consoleErrors.length, ...consoleErrors.filter((e) => !INJECTION_REFUSED.test(e)));
   await page.goto(`${url}#/texture?u=0.7`);
   await page.getByTestId('copy-link').click();
   // a link copied from the file is the file's own URL

@@ -200,7 +200,7 @@ describe('QTI 2.1 package', () => {
     );
     const scorm = unzipSync(out['practice-scorm12.zip']);
     expect(new TextDecoder().decode(scorm['index.html'])).toMatch(
-      /^<html><head><script>window.__RML_LMS__=\{"kind":"scorm12","questions":\["q1"\],"seed":3/,
+      /^<html><head><meta name="rml-lms" content="\{&quot;kind&quot;:&quot;scorm12&quot;,&quot;questions&quot;:\[&quot;q1&quot;\],&quot;seed&quot;:3/,
     );
   });
 });
