@@ -9,14 +9,8 @@
  * Source: Lafortune & Willems 1994, "Using the modified Phong reflectance model for physically
  * based rendering"; pbrt-v4 section 2.3 (inversion); Walter et al. 2007 for the sin θ form idea.
  */
-import {
-  INV_TWO_PI,
-  TWO_PI,
-  clampUnit,
-  sphericalPhi,
-  writeSphericalDirection,
-  type VecOut,
-} from './sphericalCoords';
+import type { VecOut } from './sphericalCoords';
+import { INV_TWO_PI, TWO_PI, clampUnit, sphericalPhi, writeSphericalDirection } from './sphericalCoords';
 
 /**
  * Sample the Phong lobe cosⁿθ. Domain: u1, u2 ∈ [0, 1), exponent n ≥ 0 (finite; negative or NaN

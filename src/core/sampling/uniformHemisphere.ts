@@ -6,14 +6,8 @@
  * Source: pbrt-v4 section A.5.2, `SampleUniformHemisphere` / `UniformHemispherePDF` /
  * `InvertUniformHemisphereSample` (util/sampling.h).
  */
-import {
-  INV_TWO_PI,
-  TWO_PI,
-  clampUnit,
-  sphericalPhi,
-  writeSphericalDirection,
-  type VecOut,
-} from './sphericalCoords';
+import type { VecOut } from './sphericalCoords';
+import { INV_TWO_PI, TWO_PI, clampUnit, sphericalPhi, writeSphericalDirection } from './sphericalCoords';
 
 /**
  * Sample a direction uniformly on the upper hemisphere (z-up).
