@@ -26,6 +26,7 @@ import { useShortcuts } from '../ui/shortcuts';
 import { AskPrompt } from '../ui/ask';
 import { usePageKey } from '../ui/pageKeys';
 import { QuestionNav } from '../ui/QuestionNav';
+import { ParamNotice } from '../ui/RouteNotice';
 import { useHostScene } from './hostBridge';
 import { embedSnippet } from './embedCode';
 import { QrButton } from './QrButton';
@@ -256,21 +257,18 @@ function LoadedScene({
   return (
     <>
       {problems.length ? (
-        <div className="notice notice-warn param-notice" role="status" data-testid="param-notice">
-          <p>
-            <strong>Some link parameters could not be used</strong>; the scene uses safe values instead:
-          </p>
-          <ul>
-            {problems.map((p, i) => (
-              <li key={`${p.name}-${i}`}>
-                <code>{p.name}</code> {p.message}
-              </li>
-            ))}
-          </ul>
+        <ParamNotice
+          problems={problems}
+          lead={
+            <>
+              <strong>Some link parameters could not be used</strong>; the scene uses safe values instead:
+            </>
+          }
+        >
           <button type="button" className="link-button" onClick={() => setProblems([])}>
             Dismiss
           </button>
-        </div>
+        </ParamNotice>
       ) : null}
       <ShareBar info={info} schema={schema} values={linkValues} flags={flags} asking={asking} />
       {asking && askText !== null ? <AskPrompt text={askText} onReveal={reveal} /> : null}
