@@ -651,6 +651,13 @@ function AnswerRow({
   const exp = expectedText(spec);
   const verdict = progress.verdict;
   const kind = verdict ? (verdict.value.startsWith('mistake:') ? 'mistake' : verdict.value) : null;
+  // What the answer's control carries whether it is a choice or typed text.
+  const control = {
+    id,
+    'data-testid': id,
+    'aria-describedby': verdict ? `verdict-${spec.name}` : undefined,
+    'aria-invalid': verdict && verdict.value !== 'correct' ? true : undefined,
+  };
   return (
     <div className={`answer-row${kind ? ` is-${kind}` : ''}`}>
       <label htmlFor={id} className="answer-label">
@@ -659,12 +666,9 @@ function AnswerRow({
       {spec.kind === 'choice' ? (
         // a choice is chosen from its options (graded as the option's name), never typed
         <select
-          id={id}
-          data-testid={id}
+          {...control}
           value={choiceValue(spec.options, value)}
           onChange={(e) => onChange(e.target.value)}
-          aria-describedby={verdict ? `verdict-${spec.name}` : undefined}
-          aria-invalid={verdict && verdict.value !== 'correct' ? true : undefined}
         >
           <option value="">Choose…</option>
           {spec.options.map((o) => (
@@ -675,8 +679,7 @@ function AnswerRow({
         </select>
       ) : (
         <input
-          id={id}
-          data-testid={id}
+          {...control}
           type="text"
           value={value}
           onChange={(e) => onChange(e.target.value)}
@@ -684,8 +687,6 @@ function AnswerRow({
           autoCapitalize="off"
           spellCheck={false}
           placeholder={answerHint(spec)}
-          aria-describedby={verdict ? `verdict-${spec.name}` : undefined}
-          aria-invalid={verdict && verdict.value !== 'correct' ? true : undefined}
         />
       )}
       {verdict ? (

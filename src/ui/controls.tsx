@@ -131,18 +131,9 @@ const LOG_STEPS = 1000;
  * A labelled range slider with a number box beside it. Keyboard: arrows / PageUp / PageDown /
  * Home / End on the slider (native), exact typing in the box.
  */
-export function Slider({
-  label,
-  value,
-  onChange,
-  min,
-  max,
-  step,
-  log,
-  unit,
-  digits = 4,
-  testId,
-}: SliderProps) {
+export function Slider({ log, unit, digits = 4, testId, ...box }: SliderProps) {
+  // `box`: what the number box beside the track takes too
+  const { label, value, onChange, min, max, step } = box;
   const id = useId();
   const useLog = !!log && min > 0;
   const toTrack = (x: number) =>
@@ -173,15 +164,7 @@ export function Slider({
             if (Number.isFinite(x) && x !== value) onChange(x);
           }}
         />
-        <NumberField
-          label={label}
-          hideLabel
-          value={value}
-          onChange={onChange}
-          min={min}
-          max={max}
-          step={step}
-        />
+        <NumberField {...box} hideLabel />
       </div>
     </div>
   );

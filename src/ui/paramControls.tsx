@@ -6,7 +6,7 @@
  * range the URL parser clamps to (so a control can never offer a value a link would refuse), and a
  * whole-number parameter's slider writes whole numbers.
  */
-import type { ReactNode } from 'react';
+import type { ComponentType, ReactNode } from 'react';
 import type { ParamSchema, ParamSpec, ParamValues } from '../kit/params';
 import { NumberField, Select, Slider, Toggle, type SliderProps } from './controls';
 
@@ -16,6 +16,13 @@ type KeysOfKind<S extends ParamSchema, K extends ParamSpec['kind']> = {
   string;
 
 type NumberSpec = Extract<ParamSpec, { kind: 'number' }>;
+
+/** What the controls of a number parameter (Slider, NumberField) all take. */
+interface NumberControlProps {
+  label: ReactNode;
+  value: number;
+  onChange: (x: number) => void;
+}
 
 export interface SliderOptions extends Pick<SliderProps, 'log' | 'unit' | 'digits' | 'step'> {
   /** A narrower range than the schema's (the number box still clamps to this one). */
@@ -49,39 +56,44 @@ export function bindControls<S extends ParamSchema>(
   const get = (name: string) => (params as Record<string, unknown>)[name];
   const numberSpec = (name: string) => schema[name] as NumberSpec;
   const whole = (spec: NumberSpec, v: number) => (spec.integer ? Math.round(v) : v);
+  // A number parameter's control, a slider or a bare box: it shows the parameter's value and writes
+  // what it is given back (rounded for a whole-number parameter); `rest` is what differs.
+  const numberControl = <P extends NumberControlProps>(
+    Control: ComponentType<P>,
+    name: string,
+    label: ReactNode,
+    rest: Omit<P, keyof NumberControlProps>,
+  ) => {
+    const spec = numberSpec(name);
+    const bound: NumberControlProps = {
+      label,
+      value: get(name) as number,
+      onChange: (v) => set(name, whole(spec, v)),
+    };
+    return <Control key={name} {...(rest as P)} {...bound} />;
+  };
   return {
     slider(name, label, opts = {}) {
       const spec = numberSpec(name);
-      return (
-        <Slider
-          key={name}
-          label={label}
-          value={get(name) as number}
-          min={opts.min ?? spec.min ?? 0}
-          max={opts.max ?? spec.max ?? 1}
-          step={opts.step ?? (spec.integer ? 1 : undefined)}
-          log={opts.log}
-          unit={opts.unit}
-          digits={opts.digits}
-          onChange={(v) => set(name, whole(spec, v))}
-          testId={opts.testId ?? name}
-        />
-      );
+      return numberControl(Slider, name, label, {
+        min: opts.min ?? spec.min ?? 0,
+        max: opts.max ?? spec.max ?? 1,
+        step: opts.step ?? (spec.integer ? 1 : undefined),
+        log: opts.log,
+        unit: opts.unit,
+        digits: opts.digits,
+        testId: opts.testId ?? name,
+      });
     },
     number(name, label, opts = {}) {
       const spec = numberSpec(name);
-      return (
-        <NumberField
-          key={name}
-          label={label}
-          value={get(name) as number}
-          min={spec.min}
-          max={spec.max}
-          step={spec.integer ? 1 : undefined}
-          onChange={(v) => set(name, whole(spec, v))}
-          testId={opts.testId}
-        />
-      );
+      const step = spec.integer ? 1 : undefined;
+      return numberControl(NumberField, name, label, {
+        min: spec.min,
+        max: spec.max,
+        step,
+        testId: opts.testId,
+      });
     },
     select(name, label, options, opts = {}) {
       return (
