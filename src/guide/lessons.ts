@@ -6,23 +6,13 @@
  * tests/e2e/guide.spec.ts.
  */
 import { QUESTIONS, SCENES } from '../kit/catalogue';
-import { LESSON_PRESETS, MISCONCEPTIONS as BY_SCENE, presetScene } from '../kit/lessons';
+import { LESSON_PRESETS, MISCONCEPTIONS as BY_SCENE, presetScene, type LessonPreset } from '../kit/lessons';
 
-export interface Preset {
+/** A lesson preset as the guide shows it: the catalogue's preset with the route of the scene it opens. */
+export type Preset = Omit<LessonPreset, 'scene'> & {
   /** Scene route, e.g. '/hemisphere'. */
   route: string;
-  /** URL parameters (plain values; the link encodes them, so `+` stays a plus). */
-  params: Readonly<Record<string, string>>;
-  title: string;
-  /** What the class sees. */
-  shows: string;
-  /** What to ask the class at this step. */
-  ask: string;
-  /** The exam part the link lands on (`part=`). */
-  part?: string;
-  /** The link opens with the results hidden until revealed (`ask=1`). */
-  askFirst?: boolean;
-}
+};
 
 export interface Lesson {
   id: string;
