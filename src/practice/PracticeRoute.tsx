@@ -44,6 +44,7 @@ import { loadProgress, recordCheck, resetProgress, type Progress } from './progr
 import { extensionCheck, extensionInput, extensionRestore, extensionSeed, practiceSlot } from './extensions';
 import { loadDraft, saveDraft } from './drafts';
 import { RouteNotice } from '../ui/RouteNotice';
+import { ParamNotice, TextList } from './ParamNotice';
 import Sheet from './Sheet';
 import './practice.css';
 
@@ -130,7 +131,7 @@ function PracticeHome({ flags, query }: { flags: ShellFlags; query: string }) {
         the classic mistakes, and then shows the worked solution of your variant. The same seed always gives
         the same variant, so a link like <code>#/practice/q3?seed=17</code> is “variant 17” for everyone.
       </p>
-      <ol className="practice-list">
+      <ol className="question-list practice-list">
         {QUESTIONS.map((q) => {
           const p = progress[q.id];
           return (
@@ -267,25 +268,6 @@ function QuestionRoute({ q, sp, flags }: { q: QuestionId; sp: URLSearchParams; f
   }, [parsed.seed, seed, q, sp]);
   const variant = useMemo(() => questionInfo(q).generate(seed), [q, seed]);
   return <QuestionPage key={`${q}-${seed}`} variant={variant} flags={flags} problems={problems} />;
-}
-
-/** The link parameters a practice page could not use (nothing when there are none). */
-function ParamNotice({ problems, heading = false }: { problems: string[]; heading?: boolean }) {
-  if (!problems.length) return null;
-  return (
-    <div className="notice notice-warn" role="status" data-testid="param-notice">
-      {heading ? (
-        <p>
-          <strong>Some link parameters could not be used:</strong>
-        </p>
-      ) : null}
-      <ul>
-        {problems.map((p) => (
-          <li key={p}>{p}</li>
-        ))}
-      </ul>
-    </div>
-  );
 }
 
 function QuestionPage({
@@ -454,11 +436,7 @@ function QuestionPage({
         {next.length && !checking && summary ? (
           <div className="practice-next" data-testid="practice-next">
             <strong>What next:</strong>
-            <ul>
-              {next.map((n) => (
-                <li key={n}>{n}</li>
-              ))}
-            </ul>
+            <TextList items={next} />
           </div>
         ) : null}
         <p className="practice-giveup">

@@ -13,6 +13,7 @@ import { fmt, QUESTION_IDS, type AnswerSpec, type QuestionId, type Variant } fro
 import { isQuestionId, questionInfo, sheetSeed } from './questions';
 import { qrPath, type QrPath } from '../ui/qr';
 import { practiceSlot } from './extensions';
+import { ParamNotice } from './ParamNotice';
 
 const MAX_SEED = 0xffffffff;
 
@@ -191,15 +192,7 @@ export default function Sheet({ sp, flags }: { sp: URLSearchParams; flags: Shell
             ← All practice questions
           </a>
         </div>
-        {problems.length ? (
-          <div className="notice notice-warn" role="status" data-testid="param-notice">
-            <ul>
-              {problems.map((p) => (
-                <li key={p}>{p}</li>
-              ))}
-            </ul>
-          </div>
-        ) : null}
+        <ParamNotice problems={problems} />
         <p>
           {variants.length} question page{variants.length === 1 ? '' : 's'}, then the answer key
           {P.solutions ? ', then a page of worked solutions per variant' : ''}.{' '}

@@ -1,0 +1,31 @@
+/** A bulleted list of short texts (each is its own key: a list never holds one text twice). */
+export function TextList({ items }: { items: readonly string[] }) {
+  return (
+    <ul>
+      {items.map((t) => (
+        <li key={t}>{t}</li>
+      ))}
+    </ul>
+  );
+}
+
+/** The link parameters a practice page could not use (nothing when there are none). */
+export function ParamNotice({
+  problems,
+  heading = false,
+}: {
+  problems: readonly string[];
+  heading?: boolean;
+}) {
+  if (!problems.length) return null;
+  return (
+    <div className="notice notice-warn" role="status" data-testid="param-notice">
+      {heading ? (
+        <p>
+          <strong>Some link parameters could not be used:</strong>
+        </p>
+      ) : null}
+      <TextList items={problems} />
+    </div>
+  );
+}
