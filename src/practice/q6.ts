@@ -86,45 +86,49 @@ export function q6Estimate(P: Q6Params, light: RectLight): { estimate: number; t
   return { estimate: terms.reduce((s, x) => s + x, 0) / n, terms };
 }
 
+/** One random draw of a variant's parameters from the stream `rng`. */
+function drawQ6Params(rng: Rng): Q6Params {
+  return {
+    p: [pick(rng, [0, 0, 0.5, -0.5]), pick(rng, [0, 0, 0.5, -0.5]), 0],
+    lc: [pick(rng, [0, 0, 0.5, -0.5, 1]), pick(rng, [0, 0, 0.5, -0.5, 1]), pick(rng, [1, 1.5, 2, 2.5, 3])],
+    ls: [pick(rng, [0.5, 1, 1.5, 2]), pick(rng, [0.5, 1, 1.5, 2])],
+    tilt: pick(rng, [0, 0, 0, 20, 30, -30]),
+    L: pick(rng, [1, 2, 5, 10]),
+    rho: pick(rng, [0.5, 0.8, 1]),
+    pu: intIn(rng, 1, 9) / 10,
+    pv: intIn(rng, 1, 9) / 10,
+    psize: pick(rng, [0.05, 0.1, 0.2]),
+    ptilt: pick(rng, [0, 15, 30, 45, -30, -45]),
+    uv: [0, 1, 2].map(() => [intIn(rng, 1, 19) / 20, intIn(rng, 1, 19) / 20] as [number, number]),
+  };
+}
+
+/** A draw makes a fair variant when the patch and every given point see the floor point clearly. */
+export function q6Acceptable(P: Q6Params): boolean {
+  const g = q6Geometry(P);
+  if (!(g.cosL > 0.05) || !(g.cosRecv > 0.05)) return false;
+  return pointTerms(g.light, P).every((q) => q.cosT > 0.05 && q.cosL > 0.05);
+}
+
+/** The seed whose first draw is the fallback variant (the tests check that it is acceptable). */
+const FALLBACK_SEED = 1;
+
+/**
+ * The parameters of variant `seed`: the first acceptable draw of its stream. Should a thousand draws
+ * fail, the first draw of variant {@link FALLBACK_SEED}'s stream.
+ */
 export function q6Params(seed: number): Q6Params {
   const rng = new Rng(seed, 0x5106);
   for (let k = 0; k < 1000; k++) {
-    const P: Q6Params = {
-      p: [pick(rng, [0, 0, 0.5, -0.5]), pick(rng, [0, 0, 0.5, -0.5]), 0],
-      lc: [pick(rng, [0, 0, 0.5, -0.5, 1]), pick(rng, [0, 0, 0.5, -0.5, 1]), pick(rng, [1, 1.5, 2, 2.5, 3])],
-      ls: [pick(rng, [0.5, 1, 1.5, 2]), pick(rng, [0.5, 1, 1.5, 2])],
-      tilt: pick(rng, [0, 0, 0, 20, 30, -30]),
-      L: pick(rng, [1, 2, 5, 10]),
-      rho: pick(rng, [0.5, 0.8, 1]),
-      pu: intIn(rng, 1, 9) / 10,
-      pv: intIn(rng, 1, 9) / 10,
-      psize: pick(rng, [0.05, 0.1, 0.2]),
-      ptilt: pick(rng, [0, 15, 30, 45, -30, -45]),
-      uv: [0, 1, 2].map(() => [intIn(rng, 1, 19) / 20, intIn(rng, 1, 19) / 20] as [number, number]),
-    };
-    const g = q6Geometry(P);
-    if (!(g.cosL > 0.05) || !(g.cosRecv > 0.05)) continue;
-    const pts = pointTerms(g.light, P);
-    if (pts.some((q) => !(q.cosT > 0.05) || !(q.cosL > 0.05))) continue;
-    return P;
+    const P = drawQ6Params(rng);
+    if (q6Acceptable(P)) return P;
   }
-  return {
-    p: [0, 0, 0],
-    lc: [0, 0, 2],
-    ls: [1, 1],
-    tilt: 0,
-    L: 1,
-    rho: 0.8,
-    pu: 0.3,
-    pv: 0.6,
-    psize: 0.1,
-    ptilt: 0,
-    uv: [
-      [0.25, 0.25],
-      [0.75, 0.5],
-      [0.5, 0.9],
-    ],
-  };
+  return q6FallbackParams();
+}
+
+/** The variant a seed gets when none of its draws is acceptable. */
+export function q6FallbackParams(): Q6Params {
+  return drawQ6Params(new Rng(FALLBACK_SEED, 0x5106));
 }
 
 export function q6Variant(seed: number): Variant {

@@ -205,3 +205,15 @@ describe('formula equivalence', () => {
     ).toBe(false);
   });
 });
+
+describe('Q6 parameters', () => {
+  it('the fallback variant (for a seed none of whose draws is acceptable) is itself acceptable', async () => {
+    const { q6Acceptable, q6FallbackParams, q6Params } = await import('../../src/practice/q6');
+    expect(q6Acceptable(q6FallbackParams())).toBe(true);
+    // the check can fail: the same draw with its light below the floor point is refused
+    const below = q6FallbackParams();
+    below.lc = [below.lc[0], below.lc[1], -1];
+    expect(q6Acceptable(below)).toBe(false);
+    for (let seed = 0; seed < 200; seed++) expect(q6Acceptable(q6Params(seed))).toBe(true);
+  });
+});
