@@ -98,7 +98,10 @@ export function invertCosineHemisphereSample(x: number, y: number, _z?: number):
 
 /**
  * Batched {@link sampleCosineHemisphere}: reads u[2i], u[2i+1], writes out[3i..3i+2] for
- * i ∈ [start, n). Caller-owned buffers, no allocation per sample.
+ * i ∈ [start, n). Caller-owned buffers, no allocation per sample. Written out like
+ * sampleUniformHemisphereBatch rather than made by one factory taking the sampler: closures made
+ * by one function share their type feedback in V8, so the inner call turns polymorphic, and the
+ * batches ran 15–25 % slower per direction (interleaved, bundled, Node 20).
  */
 export function sampleCosineHemisphereBatch(
   u: Float64Array,
