@@ -8,36 +8,35 @@ import { useCallback, useMemo, type ComponentProps, type ReactNode } from 'react
 import type { SceneProps } from '../../../kit/scene';
 import { Notice, Panel, prefersReducedMotion } from '../../../ui';
 import type { Lobe } from '../model';
-import type { HemisphereParams, HemisphereSchema } from '../params';
+import type { HemisphereSchema } from '../params';
 import { cellFromParam, type Cell } from '../stratum';
 import { Figure } from './Figure';
 import { pointsArgsOf } from '../jobs';
 
+/** Why a typed density cannot be sampled: what went wrong, and the parser's or the check's message. */
+export interface DensityProblem {
+  what: string;
+  message: string;
+}
+
 export function Q1Figure({
   params,
   setParams,
-  present,
-  ask,
+  mode: { present, ask },
   lobe,
-  inverted,
   densityProblem,
-  pdfError,
-  settings,
+  children: settings,
   chi2,
-}: {
-  params: HemisphereParams;
-  setParams: SceneProps<HemisphereSchema>['setParams'];
-  present: boolean;
-  ask: boolean;
+}: SceneProps<HemisphereSchema> & {
+  /** The density sampled (null when there is none: a bad typed density, or the paper's Jacobian). */
   lobe: Lobe | null;
-  inverted: boolean;
-  /** Why the typed density cannot be sampled (null when it can). */
-  densityProblem: ReactNode;
-  /** The same in words, for the figure's description. */
-  pdfError: string | null;
-  settings: ReactNode;
+  /** Why the typed density cannot be sampled (null when it can, or is not chosen). */
+  densityProblem: DensityProblem | null;
+  /** The settings, beside the figure (in the classroom stage's drawer). */
+  children: ReactNode;
   chi2: ComponentProps<typeof Figure>['chi2'];
 }) {
+  const inverted = params.jacobian === 'inverted';
   const cellKey = params.cell ? params.cell.join(',') : '';
   const { cell, problem } = useMemo(
     () => cellFromParam(cellKey ? cellKey.split(',').map(Number) : null),
@@ -70,8 +69,12 @@ export function Q1Figure({
               <sup>φ</sup> is not a density (its θ-integral diverges; see (b)). Choose &ldquo;sin θ ·
               p(ω)&rdquo; under Jacobian to sample the exam&apos;s lobe.
             </Notice>
+          ) : densityProblem ? (
+            <Notice kind="error" testId="custom-error">
+              {densityProblem.what}: {densityProblem.message}. Nothing is sampled until it is fixed.
+            </Notice>
           ) : (
-            (densityProblem ?? <Notice kind="warn">No valid density to sample yet.</Notice>)
+            <Notice kind="warn">No valid density to sample yet.</Notice>
           )
         }
         settings={settings}
@@ -82,8 +85,8 @@ export function Q1Figure({
         noLobeText={
           inverted
             ? 'with the identity as printed on the paper, p(θ, φ) = k cot θ eᵠ is not a density (its θ-integral diverges at the pole).'
-            : pdfError
-              ? `the typed density cannot be used: ${pdfError}.`
+            : densityProblem
+              ? `the typed density cannot be used: ${densityProblem.message}.`
               : 'there is no valid density to sample yet.'
         }
       />

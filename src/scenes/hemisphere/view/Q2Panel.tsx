@@ -12,8 +12,8 @@ import { estimateFromTerms, type McEstimate } from '../../../core/estimators';
 import type { SequenceKind } from '../../../core/random';
 import type { RmseResult, VarianceCheck } from '../model';
 import type { LobeId } from '../params';
-
-import type { RepeatResult } from '../jobs';
+import type { RepeatArgs, RepeatResult } from '../jobs';
+import { isCosTheta } from '../expr';
 
 const KIND_NAME: Record<SequenceKind, string> = {
   independent: 'independent',
@@ -213,20 +213,15 @@ export function VarianceWarning({
 export function RepeatView({
   result,
   exact,
-  runs,
-  perRun,
-  lobe,
-  exponent,
-  fIsCos,
+  args,
 }: {
   result: RepeatResult;
   exact: number;
-  runs: number;
-  perRun: number;
-  lobe: LobeId;
-  exponent: number;
-  fIsCos: boolean;
+  /** The arguments of the run: its counts, and the lobe and f that the summary explains. */
+  args: Pick<RepeatArgs, 'runs' | 'perRun' | 'lobe' | 'exponent' | 'f'>;
 }) {
+  const { runs, perRun, lobe, exponent } = args;
+  const fIsCos = isCosTheta(args.f);
   const u = useMemo(() => meanSe(result.uniform), [result]);
   const im = useMemo(() => meanSe(result.importance), [result]);
   const hasImp = Number.isFinite(im.mean);
