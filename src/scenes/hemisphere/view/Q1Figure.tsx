@@ -1,17 +1,15 @@
 /**
- * Q1's figure panel as the scene places it: the figure on the timeline (a link with play=1 and t at
- * its end plays from the start), what it shows when there is nothing to sample, and the followed
- * stratum read from and written to the URL (`cell=i,j`), with a notice when the link's value had to
- * be changed.
+ * Q1's figure panel as the scene places it: the figure on the timeline, what it shows when there is
+ * nothing to sample, and the followed stratum read from and written to the URL (`cell=i,j`), with a
+ * notice when the link's value had to be changed.
  */
 import { useCallback, useMemo, type ComponentProps, type ReactNode } from 'react';
 import type { SceneProps } from '../../../kit/scene';
-import { Notice, Panel, prefersReducedMotion } from '../../../ui';
+import { Notice, Panel } from '../../../ui';
 import type { Lobe } from '../model';
 import type { HemisphereSchema } from '../params';
 import { cellFromParam, type Cell } from '../stratum';
 import { Figure } from './Figure';
-import { pointsArgsOf } from '../jobs';
 
 /** Why a typed density cannot be sampled: what went wrong, and the parser's or the check's message. */
 export interface DensityProblem {
@@ -20,13 +18,11 @@ export interface DensityProblem {
 }
 
 export function Q1Figure({
-  params,
-  setParams,
-  mode: { present, ask },
   lobe,
   densityProblem,
   children: settings,
   chi2,
+  ...scene
 }: SceneProps<HemisphereSchema> & {
   /** The density sampled (null when there is none: a bad typed density, or the paper's Jacobian). */
   lobe: Lobe | null;
@@ -36,6 +32,7 @@ export function Q1Figure({
   children: ReactNode;
   chi2: ComponentProps<typeof Figure>['chi2'];
 }) {
+  const { params, setParams } = scene;
   const inverted = params.jacobian === 'inverted';
   const cellKey = params.cell ? params.cell.join(',') : '';
   const { cell, problem } = useMemo(
@@ -51,17 +48,8 @@ export function Q1Figure({
         </Notice>
       ) : null}
       <Figure
+        {...scene}
         lobe={lobe}
-        points={pointsArgsOf(params)}
-        kind={params.points}
-        seed={params.seed}
-        n={params.n}
-        anim={params.anim}
-        t={params.play === true && !prefersReducedMotion() && Number(params.t) >= 1 ? 0 : Number(params.t)}
-        play={params.play === true}
-        setParams={setParams}
-        present={present}
-        lobeId={params.lobe}
         problem={
           inverted ? (
             <Notice kind="warn" testId="figure-no-density">
@@ -80,7 +68,6 @@ export function Q1Figure({
         settings={settings}
         cell={cell}
         onPickCell={onPickCell}
-        ask={ask}
         chi2={chi2}
         noLobeText={
           inverted
@@ -93,5 +80,5 @@ export function Q1Figure({
     </>
   );
   // on the classroom stage the figure stands on its own, first on the page
-  return present ? body : <Panel className="hemi-figure-panel">{body}</Panel>;
+  return scene.mode.present ? body : <Panel className="hemi-figure-panel">{body}</Panel>;
 }
