@@ -6,15 +6,24 @@ import type { SceneProps } from '../../../kit/scene';
 import { ExprField } from '../../../ui';
 import { bindControls } from '../../../ui/paramControls';
 import type { WorkerJob } from '../../../workers';
-import { POINT_SETS, schema, type HemisphereParams, type HemisphereSchema, type LobeId } from '../params';
+import {
+  LOBES,
+  POINT_SETS,
+  schema,
+  type HemisphereParams,
+  type HemisphereSchema,
+  type LobeId,
+} from '../params';
 
-const LOBE_OPTIONS: { value: LobeId; label: string }[] = [
-  { value: 'exam', label: 'exam: k cos θ eᵠ' },
-  { value: 'uniform', label: 'uniform' },
-  { value: 'cosine', label: 'cosine-weighted' },
-  { value: 'phong', label: 'Phong cosⁿθ' },
-  { value: 'custom', label: 'typed density p(θ, φ)' },
-];
+/** Each lobe's name in the select (a lobe added to LOBES must be named here too). */
+const LOBE_LABEL: Record<LobeId, string> = {
+  exam: 'exam: k cos θ eᵠ',
+  uniform: 'uniform',
+  cosine: 'cosine-weighted',
+  phong: 'Phong cosⁿθ',
+  custom: 'typed density p(θ, φ)',
+};
+const LOBE_OPTIONS = LOBES.map((value) => ({ value, label: LOBE_LABEL[value] }));
 const JACOBIAN_OPTIONS: { value: HemisphereParams['jacobian']; label: string }[] = [
   { value: 'correct', label: 'sin θ · p(ω) (correct)' },
   { value: 'inverted', label: 'p(ω) / sin θ (as on the paper)' },
