@@ -14,6 +14,7 @@ import type { RmseResult, VarianceCheck } from '../model';
 import type { LobeId } from '../params';
 import type { RepeatArgs, RepeatResult } from '../jobs';
 import { isCosTheta } from '../expr';
+import { BAR_OPACITY, IMPORTANCE, REFERENCE, UNIFORM } from './plotColors';
 
 const KIND_NAME: Record<SequenceKind, string> = {
   independent: 'independent',
@@ -242,8 +243,8 @@ export function RepeatView({
         type: 'histogram',
         x: Array.from(result.uniform),
         name: 'uniform',
-        opacity: 0.6,
-        marker: { color: '#1f5fa8' },
+        opacity: BAR_OPACITY,
+        marker: { color: UNIFORM },
         xbins,
         autobinx: false,
       },
@@ -253,8 +254,8 @@ export function RepeatView({
         type: 'histogram',
         x: Array.from(result.importance),
         name: 'importance',
-        opacity: 0.55,
-        marker: { color: '#d0502a' },
+        opacity: BAR_OPACITY,
+        marker: { color: IMPORTANCE },
         xbins,
         autobinx: false,
       });
@@ -279,7 +280,7 @@ export function RepeatView({
                   yref: 'paper',
                   y0: 0,
                   y1: 1,
-                  line: { color: '#888', width: 2, dash: 'dash' },
+                  line: { color: REFERENCE, width: 2, dash: 'dash' },
                 },
               ]
             : [],
