@@ -187,7 +187,6 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
     <McControls
       params={params}
       setParams={setParams}
-      n={n}
       fError={fError}
       limitsMessage={lim.message}
       pdfExprError={pdfExprError}
