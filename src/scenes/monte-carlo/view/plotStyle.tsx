@@ -1,6 +1,7 @@
 /** Shared look of the scene's Plotly views: colours, legend and margins, layouts, the run bar. */
 import type { ReactNode } from 'react';
-import { NumberField, Plot, SERIES, ShowAsTable, type PlotLayout, type PlotTrace } from '../../../ui';
+import { NumberField, Plot, SERIES, ShowAsTable } from '../../../ui';
+import type { PlotProps } from '../../../ui/Plot';
 import type { WorkerJob } from '../../../workers';
 
 /**
@@ -90,13 +91,9 @@ export function RunBar({ task, label }: { task: RunTask; label: ReactNode }) {
 
 /** An integer field with a note beside it (how many runs or samples a panel uses). */
 export function CountField({
-  label,
-  value,
-  min,
-  max,
-  onChange,
-  testId,
   note,
+  onChange,
+  ...field
 }: {
   label: string;
   value: number;
@@ -108,15 +105,7 @@ export function CountField({
 }) {
   return (
     <div className="mc-inline">
-      <NumberField
-        label={label}
-        value={value}
-        min={min}
-        max={max}
-        step={1}
-        onChange={(v) => onChange(Math.round(v))}
-        testId={testId}
-      />
+      <NumberField {...field} step={1} onChange={(v) => onChange(Math.round(v))} />
       <span className="mc-note">{note}</span>
     </div>
   );
@@ -133,35 +122,19 @@ export const clampArr = (a: Float64Array) => arr(a).map((v) => (Number.isFinite(
 export function DescribedPlot({
   id,
   heading,
-  data,
-  layout,
-  height,
-  label,
-  description,
   caption,
   table,
-}: {
+  ...plot
+}: Required<Pick<PlotProps, 'data' | 'layout' | 'height' | 'label' | 'description'>> & {
   id: string;
   heading?: ReactNode;
-  data: PlotTrace[];
-  layout: PlotLayout;
-  height: number;
-  label: string;
-  description: string;
   caption: string;
   table: { columns: string[]; rows: number[][] };
 }) {
   return (
     <>
       {heading ? <Heading>{heading}</Heading> : null}
-      <Plot
-        data={data}
-        height={height}
-        label={label}
-        description={description}
-        layout={layout}
-        testId={`${id}-plot`}
-      />
+      <Plot {...plot} testId={`${id}-plot`} />
       <ShowAsTable caption={caption} columns={table.columns} rows={table.rows} testId={`${id}-table`} />
     </>
   );
