@@ -1,8 +1,10 @@
 /** Shared look of the scene's Plotly views: colours, legend and margins, layouts, the run bar. */
 import type { ReactNode } from 'react';
-import { NumberField, Plot, SERIES, ShowAsTable } from '../../../ui';
-import type { PlotProps } from '../../../ui/Plot';
-import type { WorkerJob } from '../../../workers';
+import { NumberField, SERIES } from '../../../ui';
+import type { WorkerFactory, WorkerJob } from '../../../workers';
+import type { ProblemArgs } from '../jobs';
+import type { McTasks } from '../mc.worker';
+import { schema } from '../params';
 
 /**
  * The shared plot colours (src/ui/palette: 3 : 1 on every background in both themes, apart under
@@ -55,6 +57,13 @@ export function Heading({ children }: { children: ReactNode }) {
   return <h3 className="mc-plot-title">{children}</h3>;
 }
 
+/** What every worker-run panel is given: the problem, its exact value, and the worker to run it in. */
+export interface PanelRunProps {
+  args: ProblemArgs;
+  exact: number;
+  makeWorker: WorkerFactory<McTasks>;
+}
+
 type RunTask = Pick<
   WorkerJob<unknown, unknown>,
   'running' | 'waiting' | 'progress' | 'error' | 'cancel' | 'run'
@@ -89,23 +98,35 @@ export function RunBar({ task, label }: { task: RunTask; label: ReactNode }) {
   );
 }
 
-/** An integer field with a note beside it (how many runs or samples a panel uses). */
+/** The panels' count fields: label and test id (the range is the URL parameter's, ../params). */
+const COUNT_FIELDS = {
+  runs: { label: 'runs', testId: 'runs-input' },
+  hn: { label: 'samples per estimate', testId: 'hn-input' },
+} as const;
+
+/** A whole-number field with a note beside it (how many runs or samples a panel uses). */
 export function CountField({
-  note,
+  name,
+  value,
   onChange,
-  ...field
+  note,
 }: {
-  label: string;
+  name: keyof typeof COUNT_FIELDS;
   value: number;
-  min: number;
-  max: number;
   onChange: (v: number) => void;
-  testId: string;
   note: ReactNode;
 }) {
+  const { min, max } = schema[name];
   return (
     <div className="mc-inline">
-      <NumberField {...field} step={1} onChange={(v) => onChange(Math.round(v))} />
+      <NumberField
+        {...COUNT_FIELDS[name]}
+        value={value}
+        min={min}
+        max={max}
+        step={1}
+        onChange={(v) => onChange(Math.round(v))}
+      />
       <span className="mc-note">{note}</span>
     </div>
   );
@@ -113,29 +134,3 @@ export function CountField({
 
 /** Positive finite values, null elsewhere (a gap on a log axis). */
 export const clampArr = (a: Float64Array) => arr(a).map((v) => (Number.isFinite(v) && v > 0 ? v : null));
-
-/**
- * A Plotly plot with its heading, its accessible name and description, and its data as a "Show as
- * table" under it (`table`: ./plotWords seriesTable, a column per series). Test ids `${id}-plot`
- * and `${id}-table`.
- */
-export function DescribedPlot({
-  id,
-  heading,
-  caption,
-  table,
-  ...plot
-}: Required<Pick<PlotProps, 'data' | 'layout' | 'height' | 'label' | 'description'>> & {
-  id: string;
-  heading?: ReactNode;
-  caption: string;
-  table: { columns: string[]; rows: number[][] };
-}) {
-  return (
-    <>
-      {heading ? <Heading>{heading}</Heading> : null}
-      <Plot {...plot} testId={`${id}-plot`} />
-      <ShowAsTable caption={caption} columns={table.columns} rows={table.rows} testId={`${id}-table`} />
-    </>
-  );
-}
