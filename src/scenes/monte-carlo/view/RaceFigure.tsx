@@ -428,6 +428,8 @@ export const RaceFigure = memo(function RaceFigure({
       </svg>
     </DescribedFigure>
   );
+  // what the two lanes' histograms share: the interval, the grid of the pdf curve, the count scale, the clock
+  const histShared = { a, b, px: curve.x, yMax: hist.yMax, tl, t: fr.t, half, staged };
   const lanes = (
     [
       {
@@ -461,22 +463,7 @@ export const RaceFigure = memo(function RaceFigure({
     ),
     readouts: <LaneReadouts key={`r${k}`} id={id} r={refs} />,
     hist: (
-      <RaceHistogram
-        key={`h${k}`}
-        id={id}
-        xs={xs}
-        a={a}
-        b={b}
-        px={curve.x}
-        py={py}
-        pdfLabel={pdf}
-        yMax={hist.yMax}
-        color={color}
-        tl={tl}
-        t={fr.t}
-        half={half}
-        staged={staged}
-      />
+      <RaceHistogram key={`h${k}`} {...histShared} id={id} xs={xs} py={py} pdfLabel={pdf} color={color} />
     ),
     est: held ? null : (
       <DescribedFigure
