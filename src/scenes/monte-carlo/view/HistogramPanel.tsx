@@ -4,7 +4,7 @@ import { formatNumber, Panel, Readout, useThrottled, type PlotTrace } from '../.
 import { useAutoRun } from '../../../workers';
 import { estimateFromTerms, histogram } from '../../../core/estimators';
 import { REDRAW_MS, useLegendRoom } from './hooks';
-import { arr, COLORS, CountField, REFERENCE, RunBar, type PanelRunProps } from './plotStyle';
+import { arr, BAR_OPACITY, COLORS, CountField, REFERENCE, RunBar, type PanelRunProps } from './plotStyle';
 import { DescribedPlot, type PlotWords } from './DescribedPlot';
 import { zeroToRounding } from '../model';
 import { describeEstimateHistogram } from './plotWords';
@@ -60,7 +60,7 @@ export function HistogramPanel({
         x: centers,
         y: arr(h.counts),
         name: `${stats.count} estimates`,
-        marker: { color: COLORS[0], opacity: 0.75 },
+        marker: { color: COLORS[0], opacity: BAR_OPACITY },
         width: (h.edges[1] - h.edges[0]) * 0.95,
       },
       {

@@ -12,6 +12,8 @@ import { schema } from '../params';
  * colours, the dash tells the ones of one colour apart.
  */
 export const COLORS = SERIES;
+/** Opacity of a histogram's bars in the shared colours: still 3 : 1 on the page in both themes. */
+export const BAR_OPACITY = 0.75;
 /** The colour of references drawn over the data (the exact value, guides). */
 export const REFERENCE = 'var(--muted)';
 /** Line dashes per strategy, in step with COLORS: the legend matches a line by its dash, not only its colour. */
