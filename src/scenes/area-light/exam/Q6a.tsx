@@ -52,7 +52,7 @@ export const Q6a = memo(function Q6a({
         type: 'scatter',
         mode: 'lines',
         name: '|dA cos θ<sub>l</sub> / r² − Ω| / Ω',
-        line: { color: '#e4572e' },
+        line: { color: 'var(--al-patch)' },
       },
       {
         x: [patch.side],
@@ -60,7 +60,7 @@ export const Q6a = memo(function Q6a({
         type: 'scatter',
         mode: 'markers',
         name: 'this patch',
-        marker: { color: '#e4572e', size: 10 },
+        marker: { color: 'var(--al-patch)', size: 10 },
       },
     ],
     [patch],
