@@ -13,6 +13,7 @@ import {
   type RaySphereModel,
 } from '../model';
 import { f32ErrorSeries, f32ErrorTraces } from './float32Traces';
+import { ERROR_COLOURS, guide, methodCurves } from './errorCurves';
 import { describeErrorPlot } from './describe';
 import { formatNumber } from '../../../ui/Readout';
 
@@ -257,16 +258,6 @@ export function DistantImages() {
 /** Height of the error plot (px): 440 for the axes, the rest for the legend's rows below them. */
 const ERROR_PLOT_HEIGHT = 600;
 
-const NAIVE_COLOR = '#c0392b';
-const STABLE_COLOR = '#1f5fa8';
-
-/** A curve of the error plot: a line, with markers on the Δ curves. */
-function curve(x: number[], y: number[], name: string, line: object, markers = false): PlotTrace {
-  return markers
-    ? { x, y, name, mode: 'lines+markers', line, marker: { size: 4 } }
-    : { x, y, name, mode: 'lines', line };
-}
-
 /** The error of each method against distance, with the current configuration marked. */
 export function ErrorVsDistance({
   current,
@@ -287,22 +278,9 @@ export function ErrorVsDistance({
       !s
         ? []
         : [
-            curve(s.dist, s.discNaive, 'textbook Δ', { color: NAIVE_COLOR }, true),
-            curve(s.dist, s.discStable, 'robust Δ', { color: STABLE_COLOR }, true),
-            curve(s.dist, s.hitNaive, 'textbook t<sub>hit</sub>', { color: NAIVE_COLOR, dash: 'dot' }),
-            curve(s.dist, s.hitStable, 'robust t<sub>hit</sub>', { color: STABLE_COLOR, dash: 'dot' }),
-            curve(
-              s.dist,
-              s.dist.map((D) => Math.min(1, u * D * D)),
-              'u (D/r)²',
-              { color: '#999', width: 1, dash: 'dash' },
-            ),
-            curve(
-              s.dist,
-              s.dist.map((D) => Math.min(1, u * D)),
-              'u (D/r)',
-              { color: '#bbb', width: 1, dash: 'dash' },
-            ),
+            ...methodCurves(s, ERROR_COLOURS),
+            guide(s, (D) => u * D * D, 'u (D/r)²', ERROR_COLOURS.guide),
+            guide(s, (D) => u * D, 'u (D/r)', ERROR_COLOURS.guide2),
             ...s32,
             ...(here && current > 1 && Number.isFinite(current)
               ? [
@@ -316,8 +294,8 @@ export function ErrorVsDistance({
                     marker: {
                       size: 12,
                       symbol: 'x',
-                      color: [NAIVE_COLOR, STABLE_COLOR],
-                      line: { width: 1, color: '#222' },
+                      color: [ERROR_COLOURS.naive, ERROR_COLOURS.stable],
+                      line: { width: 1, color: 'var(--fg)' },
                     },
                   },
                 ]
@@ -348,7 +326,7 @@ export function ErrorVsDistance({
                 yref: 'paper',
                 y0: 0,
                 y1: 1,
-                line: { color: '#888', width: 1 },
+                line: { color: ERROR_COLOURS.guide2, width: 1 },
               },
             ]
           : [],
