@@ -2,8 +2,10 @@
  * The precision views: textbook vs robust vs double-double reference (table), the rendered image
  * of a distant sphere by each method, and the error against distance.
  */
-import { useEffect, useMemo, useRef, useState, type ReactNode, type RefObject } from 'react';
-import { Plot, ShowAsTable, Slider, useSeenOnce, type PlotTrace } from '../../../ui';
+import { useEffect, useMemo, useRef, type ReactNode, type RefObject } from 'react';
+import { Plot, ShowAsTable, useSeenOnce, type PlotTrace } from '../../../ui';
+import { useLogDistance } from './useLogDistance';
+import { IMAGE_BG, IMAGE_FG, IMAGE_HOLE } from './imageColours';
 import {
   ERROR_FLOOR,
   errorVsDistance,
@@ -140,9 +142,6 @@ export function PrecisionTable({ model }: { model: RaySphereModel }) {
 }
 
 const IMG = 96;
-const BG: [number, number, number] = [32, 35, 42];
-const FG: [number, number, number] = [236, 228, 206];
-const HOLE: [number, number, number] = [255, 45, 149];
 
 /** One method's render of the distant sphere, with its count of pixels hit (undefined: not yet). */
 function MethodImage({
@@ -180,8 +179,11 @@ function MethodImage({
 
 /** Two small renders of a distant sphere, one ray per pixel, one per method. */
 export function DistantImages() {
-  const [exp, setExp] = useState(7.5);
-  const dist = 10 ** exp;
+  const { dist, slider } = useLogDistance(7.5, {
+    label: 'Distance to the sphere, log₁₀(|o\u00a0−\u00a0c|\u00a0/\u00a0r)',
+    max: 10,
+    testId: 'distant-exp',
+  });
   // computed once the panel comes near the screen (it is under "explore further")
   const box = useRef<HTMLDivElement>(null);
   const seen = useSeenOnce(box);
@@ -197,7 +199,7 @@ export function DistantImages() {
       const g = cv?.getContext('2d');
       if (!g) return;
       const data = g.createImageData(IMG, IMG);
-      shadeImage(t, other, 1, data.data, BG, FG, HOLE);
+      shadeImage(t, other, 1, data.data, IMAGE_BG, IMAGE_FG, IMAGE_HOLE);
       g.putImageData(data, 0, 0);
     };
     draw(naiveRef.current, img.naive, img.stable);
@@ -205,15 +207,7 @@ export function DistantImages() {
   }, [img]);
   return (
     <div className="rs-distant" ref={box}>
-      <Slider
-        label={'Distance to the sphere, log₁₀(|o\u00a0−\u00a0c|\u00a0/\u00a0r)'}
-        value={exp}
-        min={0.5}
-        max={10}
-        step={0.25}
-        onChange={setExp}
-        testId="distant-exp"
-      />
+      {slider}
       <div className="rs-images">
         <MethodImage
           canvasRef={naiveRef}
