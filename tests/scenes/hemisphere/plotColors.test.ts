@@ -1,7 +1,9 @@
 /**
- * The hemisphere scene's plot colours (WCAG 1.4.11): every line, marker and bar keeps 3 : 1 against
- * the page and panel backgrounds in both themes, the see-through bars composited over them; and the
- * plot files take their colours from ./view/plotColors (no colour written into them by hand).
+ * The hemisphere scene's colours (WCAG 1.4.11): every plot line, marker and bar keeps 3 : 1 against
+ * the page and panel backgrounds in both themes, the see-through bars composited over them; the plot
+ * files take their colours from ./view/plotColors (no colour written into them by hand); and the
+ * (ξ₁, ξ₂) colours of the points and grid, as drawn in each theme, keep 3 : 1 on the 3D view's and
+ * the panels' backgrounds over the whole unit square.
  */
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
@@ -14,6 +16,7 @@ import {
   SAMPLED,
   UNIFORM,
 } from '../../../src/scenes/hemisphere/view/plotColors';
+import { pointShade, xiColor } from '../../../src/scenes/hemisphere/view/colors';
 
 const css = `${readFileSync('src/ui/styles.css', 'utf8')}\n${readFileSync('src/ui/palette.css', 'utf8')}`;
 const LIGHT = cssVars(css, ':root');
@@ -50,6 +53,24 @@ describe.each(Object.entries(THEMES))('the %s theme', (_theme, vars) => {
           contrast(over(parseHex(resolve(vars, ref)), bg, BAR_OPACITY), bg),
           name,
         ).toBeGreaterThanOrEqual(3);
+  });
+});
+
+describe.each(Object.entries(THEMES))('the (ξ₁, ξ₂) colours in the %s theme', (theme, vars) => {
+  it('≥ 3 : 1 on the 3D view, the page and the panels, everywhere in the square', () => {
+    const shade = pointShade(theme === 'dark');
+    const backgrounds = ['--viewport-bg', '--bg', '--surface'].map((n) =>
+      parseHex(resolve(vars, `var(${n})`)),
+    );
+    const rgb = [0, 0, 0];
+    let least = Infinity;
+    for (let i = 0; i <= 16; i++)
+      for (let j = 0; j <= 16; j++) {
+        xiColor(i / 16, j / 16, rgb);
+        const c = rgb.map((x) => x * shade) as RGB;
+        for (const bg of backgrounds) least = Math.min(least, contrast(c, bg));
+      }
+    expect(least).toBeGreaterThanOrEqual(3);
   });
 });
 

@@ -67,7 +67,7 @@ interface FigureProps extends SceneProps<HemisphereSchema> {
 export function Figure({
   params,
   setParams,
-  mode: { present, ask },
+  mode: { present, ask, theme },
   lobe,
   problem,
   settings,
@@ -77,8 +77,8 @@ export function Figure({
   noLobeText,
 }: FigureProps) {
   const { points: kind, seed, n, anim, lobe: lobeId } = params;
-  // the (ξ₁, ξ₂) points that both the unit square and the 3D view draw
-  const pointSet = { kind, seed, n };
+  // the (ξ₁, ξ₂) points that both the unit square and the 3D view draw, and the theme they draw for
+  const pointSet = { kind, seed, n, dark: theme === 'dark' };
   const play = params.play === true;
   // a link with play=1 and t at its end plays from the start
   const t = play && !prefersReducedMotion() && Number(params.t) >= 1 ? 0 : Number(params.t);

@@ -24,7 +24,7 @@ import { squarePoint, warpedGrid, type AnimFrame, type Lobe } from '../model';
 import { MAX_N } from '../params';
 import type { PointsArgs, PointsChunk } from '../jobs';
 import { streamPoints } from '../pointStream';
-import { xiColor } from './colors';
+import { pointShade, xiColor } from './colors';
 import type { Cell } from '../stratum';
 import { patchStratumShader, stratumLayer, stratumUniforms, type StratumLayer } from './stratum3d';
 import { nextTask } from '../../../ui/chunked';
@@ -64,6 +64,8 @@ export interface HemisphereViewProps {
   cell?: Cell | null;
   /** Height of the 3D viewport: CSS pixels, or a CSS length (the classroom stage sizes it to the screen). */
   height?: number | string;
+  /** The dark theme: the points and grid at full brightness (shaded on the light theme, ./colors). */
+  dark?: boolean;
   /**
    * Set to a function that shows another frame directly (per animation frame, without a React
    * render); `frame` is then the frame of the component's last render.
@@ -110,6 +112,7 @@ export function HemisphereView({
   height = 380,
   drawRef,
   cell = null,
+  dark = false,
 }: HemisphereViewProps) {
   const ctxRef = useRef<ViewportContext | null>(null);
   const objs = useRef<{
@@ -120,14 +123,14 @@ export function HemisphereView({
     points: THREE.Points;
     material: THREE.PointsMaterial;
     morph: { value: number };
-    grid: THREE.LineSegments | null;
+    grid: THREE.LineSegments<THREE.BufferGeometry, THREE.LineBasicMaterial> | null;
     /** The grid's vertices in the square (s = 0) and on the hemisphere (s = 1). */
     gridEnds: { a: Float64Array; b: Float64Array } | null;
     stratum: StratumLayer;
   } | null>(null);
   const fill = useRef<Fill>({ filled: 0, uploaded: 0, target: frame.shown });
-  const cfg = useRef({ lobe, pointArgs, kind, seed, n, frame, showPoints, showGrid, cell });
-  cfg.current = { lobe, pointArgs, kind, seed, n, frame, showPoints, showGrid, cell };
+  const cfg = useRef({ lobe, pointArgs, kind, seed, n, frame, showPoints, showGrid, cell, dark });
+  cfg.current = { lobe, pointArgs, kind, seed, n, frame, showPoints, showGrid, cell, dark };
   const label = useRef<HTMLSpanElement>(null);
   /** Stops the stream in flight (or the pending restart). */
   const stopStream = useRef<() => void>(() => {});
@@ -239,7 +242,7 @@ export function HemisphereView({
     if (o.grid) {
       ctx.scene.remove(o.grid);
       o.grid.geometry.dispose();
-      (o.grid.material as THREE.Material).dispose();
+      o.grid.material.dispose();
       o.grid = null;
     }
     const T = ctx.THREE;
@@ -263,6 +266,7 @@ export function HemisphereView({
       g,
       new T.LineBasicMaterial({
         vertexColors: true,
+        color: new T.Color().setScalar(pointShade(cfg.current.dark)),
         transparent: true,
         opacity: gridOpacity(cfg.current.cell),
       }),
@@ -279,6 +283,7 @@ export function HemisphereView({
     const T = ctx.THREE;
     const { geom, pos, col, xi } = pointBuffers(T, capacityFor(cfg.current.n));
     const material = new T.PointsMaterial({ size: 3, sizeAttenuation: false, vertexColors: true });
+    material.color.setScalar(pointShade(cfg.current.dark));
     const morph = { value: cfg.current.frame.s };
     const strata = stratumUniforms(T);
     // the warp morph on the GPU: mix(square point of (ξ₁, ξ₂), direction, s), as the model's morphPoint
@@ -424,7 +429,7 @@ export function HemisphereView({
     const o = objs.current;
     if (!o) return;
     o.stratum.set(lobe, cell);
-    if (o.grid) (o.grid.material as THREE.LineBasicMaterial).opacity = gridOpacity(cell);
+    if (o.grid) o.grid.material.opacity = gridOpacity(cell);
     apply();
   };
   useEffect(() => onCellChange.current(), [lobe, cell]);
@@ -452,6 +457,15 @@ export function HemisphereView({
     if (o.grid) o.grid.visible = showGrid;
     ctxRef.current?.invalidate();
   }, [showPoints, showGrid]);
+
+  // a theme switch: the vertex colours are multiplied by the materials' colour
+  useEffect(() => {
+    const o = objs.current;
+    if (!o) return;
+    o.material.color.setScalar(pointShade(dark));
+    o.grid?.material.color.setScalar(pointShade(dark));
+    ctxRef.current?.invalidate();
+  }, [dark]);
 
   return (
     <div className="hemi-3d">

@@ -8,7 +8,7 @@ import { formatCount } from '../../../ui/format';
 import { useEffect, useMemo, useRef } from 'react';
 import { fillSequence2D, type SequenceKind } from '../../../core/random';
 import { nextTask, runChunked } from '../../../ui/chunked';
-import { xiColor } from './colors';
+import { pointShade, xiColor } from './colors';
 import { CELLS, cellBounds, cellCounts, type Cell } from '../stratum';
 import { ShowAsTable } from '../../../ui';
 import { describeSquare } from './describe';
@@ -31,6 +31,7 @@ export function UnitSquare({
   cell = null,
   onPick,
   captioned = true,
+  dark = false,
 }: {
   kind: SequenceKind;
   seed: number;
@@ -42,6 +43,8 @@ export function UnitSquare({
   onPick?: PickCell;
   /** Show the caption under the square (the classroom stage leaves it out). */
   captioned?: boolean;
+  /** The dark theme (the colours are drawn at full brightness there, shaded on the light theme). */
+  dark?: boolean;
 }) {
   const canvas = useRef<HTMLCanvasElement>(null);
   const shown = Math.min(n, MAX_SHOWN);
@@ -74,16 +77,18 @@ export function UnitSquare({
     const img = new ImageData(W, H);
     const px = img.data;
     const rgb = new Uint8Array(3);
+    const shade = pointShade(dark);
     const fill = (x0: number, x1: number, y0: number, y1: number) => {
+      const [r, gr, b] = [rgb[0] * shade, rgb[1] * shade, rgb[2] * shade];
       const xa = Math.max(0, Math.round(x0 * dpr));
       const xb = Math.min(W, Math.round(x1 * dpr));
       const ya = Math.max(0, Math.round(y0 * dpr));
       const yb = Math.min(H, Math.round(y1 * dpr));
       for (let y = ya; y < yb; y++) {
         for (let x = xa, k = (y * W + xa) * 4; x < xb; x++, k += 4) {
-          px[k] = rgb[0];
-          px[k + 1] = rgb[1];
-          px[k + 2] = rgb[2];
+          px[k] = r;
+          px[k + 1] = gr;
+          px[k + 2] = b;
           px[k + 3] = 255;
         }
       }
@@ -134,7 +139,7 @@ export function UnitSquare({
       alive = false;
       cancel();
     };
-  }, [kind, seed, n, shown, size]);
+  }, [kind, seed, n, shown, size, dark]);
   // The frame, the axis labels and the ring are drawn over the pixels in the text colour
   // (currentColor): reading the theme's colour for the canvas forced a style recalculation of the
   // whole page while it loaded (42 ms on the Lighthouse trace), and a theme switch now

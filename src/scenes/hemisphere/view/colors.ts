@@ -28,3 +28,11 @@ export function xiColor(a: number, b: number, out: Uint8Array | number[], o = 0)
   out[o + 1] = Math.floor(G0 + GA * a + GB * b + GAB * ab + 0.5);
   out[o + 2] = Math.floor(B0 + BA * a + BB * b + BAB * ab + 0.5);
 }
+
+/**
+ * The brightness the (ξ₁, ξ₂) colours are drawn at. On the light theme's pale backgrounds (the 3D
+ * view's, the panel behind the square) the orange and green corners are under 3 : 1 at full
+ * brightness, so there every colour is drawn at 70 %; the dark theme shows them as they are
+ * (tests/scenes/hemisphere/plotColors.test.ts checks both over the whole square).
+ */
+export const pointShade = (dark: boolean): number => (dark ? 1 : 0.7);
