@@ -109,28 +109,31 @@ function usePlotBox() {
   return { boxRef, svgRef, W };
 }
 
+/** The two plots by name: what each shows (the SVG's data-label). */
+const PLOT_LABELS = {
+  g: 'The quadratic g(t) for the ray at the current position, with its real roots on the t axis',
+  delta: 'The discriminant Δ against the sweep coordinate, robust and textbook, with the current position',
+} as const;
+type PlotName = keyof typeof PLOT_LABELS;
+
+/** The id of a plot's clip path to its plot area (SvgBox draws it; the plot's curves use it). */
+const clipId = (name: PlotName) => `rs-${name}-clip`;
+
+/** A plot's box and SVG, sized by its frame `f`; its test id is `<name>-plot`. */
 function SvgBox({
   children,
-  height,
-  label,
-  testId,
-  W,
+  name,
   boxRef,
   svgRef,
-  clipId,
   f,
 }: {
   children: ReactNode;
-  height: number;
-  label: string;
-  testId: string;
-  W: number;
+  name: PlotName;
   boxRef: React.RefObject<HTMLDivElement | null>;
   svgRef?: React.RefObject<SVGSVGElement | null>;
-  /** The id of a clip path to the plot area of `f` (drawn before the children). */
-  clipId: string;
   f: Frame;
 }) {
+  const { W, H: height } = f;
   return (
     <div ref={boxRef} className="mp-box">
       <svg
@@ -141,12 +144,12 @@ function SvgBox({
         // named and described by the figure around it (view/Described.tsx): the SVG's ticks and
         // labels would only repeat its summary, piece by piece
         aria-hidden="true"
-        data-label={label}
-        data-testid={testId}
+        data-label={PLOT_LABELS[name]}
+        data-testid={`${name}-plot`}
         className="mp-svg"
       >
         <defs>
-          <clipPath id={clipId}>
+          <clipPath id={clipId(name)}>
             <rect x={f.x0} y={f.y0} width={f.x1 - f.x0} height={f.y1 - f.y0} />
           </clipPath>
         </defs>
@@ -228,14 +231,7 @@ export function GSweepPlot({ res, window: w, drawRef }: GPlotProps) {
   useLayoutEffect(() => draw(last.current));
   const showBehind = w.shift === 0 && w.tMin < 0;
   return (
-    <SvgBox
-      {...plot}
-      height={H}
-      label="The quadratic g(t) for the ray at the current position, with its real roots on the t axis"
-      testId="g-plot"
-      clipId="rs-gclip"
-      f={f}
-    >
+    <SvgBox {...plot} name="g" f={f}>
       {axes}
       {showBehind ? (
         <rect
@@ -246,7 +242,7 @@ export function GSweepPlot({ res, window: w, drawRef }: GPlotProps) {
           className="mp-behind"
         />
       ) : null}
-      <g clipPath="url(#rs-gclip)">
+      <g clipPath={`url(#${clipId('g')})`}>
         <path className="mp-g" />
       </g>
       {[0, 1].map((i) => (
@@ -348,7 +344,7 @@ const DeltaStatic = memo(function DeltaStatic({
   return (
     <g>
       <Axes f={f} xd={xd} yd={yd} title={title} xLabel={xLabel} yLabel="Δ = b² − 4ac" />
-      <g clipPath="url(#rs-dclip)">
+      <g clipPath={`url(#${clipId('delta')})`}>
         {tangentX.map((x, i) => (
           <line key={i} x1={f.X(x)} x2={f.X(x)} y1={f.y0} y2={f.y1} className="mp-tangent" />
         ))}
@@ -446,14 +442,7 @@ export function DeltaSweepPlot(
   else last.current = [p.x, p.discStable, p.discNaive];
   useLayoutEffect(() => draw(...last.current));
   return (
-    <SvgBox
-      {...plot}
-      height={H}
-      label="The discriminant Δ against the sweep coordinate, robust and textbook, with the current position"
-      testId="delta-plot"
-      clipId="rs-dclip"
-      f={f}
-    >
+    <SvgBox {...plot} name="delta" f={f}>
       <DeltaStatic
         series={s}
         tangentX={p.tangentX}
