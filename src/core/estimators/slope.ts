@@ -22,29 +22,32 @@ export function fitLogLogSlope(
   start = 0,
   end = Math.min(x.length, y.length),
 ): SlopeFit {
-  let n = 0;
-  let sx = 0;
-  let sy = 0;
+  // The logarithms of the usable points, in order (each computed once).
+  const lx: number[] = [];
+  const ly: number[] = [];
   for (let i = start; i < end; i++) {
     const xi = x[i];
     const yi = y[i];
     if (!(xi > 0 && yi > 0 && xi < Infinity && yi < Infinity)) continue;
-    sx += Math.log10(xi);
-    sy += Math.log10(yi);
-    n++;
+    lx.push(Math.log10(xi));
+    ly.push(Math.log10(yi));
   }
+  const n = lx.length;
   if (n < 2) return { slope: NaN, intercept: NaN, r2: NaN, points: n };
+  let sx = 0;
+  let sy = 0;
+  for (let k = 0; k < n; k++) {
+    sx += lx[k];
+    sy += ly[k];
+  }
   const mx = sx / n;
   const my = sy / n;
   let sxx = 0;
   let sxy = 0;
   let syy = 0;
-  for (let i = start; i < end; i++) {
-    const xi = x[i];
-    const yi = y[i];
-    if (!(xi > 0 && yi > 0 && xi < Infinity && yi < Infinity)) continue;
-    const dx = Math.log10(xi) - mx;
-    const dy = Math.log10(yi) - my;
+  for (let k = 0; k < n; k++) {
+    const dx = lx[k] - mx;
+    const dy = ly[k] - my;
     sxx += dx * dx;
     sxy += dx * dy;
     syy += dy * dy;

@@ -36,7 +36,7 @@
  * A tangent point behind the origin (double root < 0) is 'behind'. The origin exactly on the
  * surface gives a root t = 0, which counts as a hit (t ≥ 0).
  */
-import type { Failure } from '../failure';
+import { fail, type Failure } from '../failure';
 
 /** A 3-vector as a tuple (x, y, z), z-up world space. */
 export type Vec3 = readonly [number, number, number];
@@ -75,7 +75,20 @@ export type RaySphereError = Failure<RaySphereErrorKind>;
 
 export type RaySphereResult = RaySphereHit | RaySphereError;
 
+/**
+ * An intersection routine: the ray o + t d against the sphere |p − c| = r by `method` (default
+ * 'stable'), in one precision: {@link intersectRaySphere} in double, intersectRaySphereF32 in float32.
+ */
+export type RaySphereIntersect<R> = (o: Vec3, d: Vec3, c: Vec3, r: number, method?: RaySphereMethod) => R;
+
 const EPS = Number.EPSILON / 2; // unit roundoff u = 2^-53
+
+/** The first check of every method and precision: all ten numbers finite, else the error. */
+export function checkFinite(o: Vec3, d: Vec3, c: Vec3, r: number): RaySphereError | null {
+  const all = [o[0], o[1], o[2], d[0], d[1], d[2], c[0], c[1], c[2], r];
+  if (all.every(Number.isFinite)) return null;
+  return fail('non-finite', 'Every coordinate and the radius must be finite numbers.');
+}
 
 /**
  * Check that (o, d, c, r) describe a ray and a sphere. Returns null when fine, else the error.
@@ -83,29 +96,20 @@ const EPS = Number.EPSILON / 2; // unit roundoff u = 2^-53
  * the coefficients must not overflow.
  */
 export function validateRaySphere(o: Vec3, d: Vec3, c: Vec3, r: number): RaySphereError | null {
-  const all = [o[0], o[1], o[2], d[0], d[1], d[2], c[0], c[1], c[2], r];
-  if (!all.every(Number.isFinite)) {
-    return {
-      ok: false,
-      kind: 'non-finite',
-      message: 'Every coordinate and the radius must be finite numbers.',
-    };
-  }
+  const nonFinite = checkFinite(o, d, c, r);
+  if (nonFinite) return nonFinite;
   if (!(r > 0)) {
-    return {
-      ok: false,
-      kind: 'bad-radius',
-      message: `The radius must be positive (got r = ${r}); a sphere with r ≤ 0 has no surface.`,
-    };
+    return fail(
+      'bad-radius',
+      `The radius must be positive (got r = ${r}); a sphere with r ≤ 0 has no surface.`,
+    );
   }
   const a = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
   if (!(a > 0)) {
-    return {
-      ok: false,
-      kind: 'zero-direction',
-      message:
-        'The direction d is zero (or too short to square in double precision): the ray points nowhere.',
-    };
+    return fail(
+      'zero-direction',
+      'The direction d is zero (or too short to square in double precision): the ray points nowhere.',
+    );
   }
   const fx = o[0] - c[0];
   const fy = o[1] - c[1];
@@ -116,11 +120,10 @@ export function validateRaySphere(o: Vec3, d: Vec3, c: Vec3, r: number): RaySphe
   // splits, which need |x| ≤ 2^996) finite: refuse coefficients beyond 2^960 ≈ 1e289.
   const LIMIT = 2 ** 960;
   if (!(a <= LIMIT && b * b <= LIMIT && 4 * a * ff <= LIMIT && 4 * a * r * r <= LIMIT && ff <= LIMIT)) {
-    return {
-      ok: false,
-      kind: 'overflow',
-      message: 'The numbers are too large: the quadratic’s coefficients overflow double precision.',
-    };
+    return fail(
+      'overflow',
+      'The numbers are too large: the quadratic’s coefficients overflow double precision.',
+    );
   }
   return null;
 }
@@ -163,13 +166,7 @@ export function classifyRoots(
  * units of |d|. Source: Ray Tracing Gems ch. 7 (robust), Shirley, Ray Tracing in One Weekend §5–6
  * (textbook).
  */
-export function intersectRaySphere(
-  o: Vec3,
-  d: Vec3,
-  c: Vec3,
-  r: number,
-  method: RaySphereMethod = 'stable',
-): RaySphereResult {
+export const intersectRaySphere: RaySphereIntersect<RaySphereResult> = (o, d, c, r, method = 'stable') => {
   const bad = validateRaySphere(o, d, c, r);
   if (bad) return bad;
   const coef = raySphereCoefficients(o, d, c, r);
@@ -218,41 +215,56 @@ export function intersectRaySphere(
   if (tangent) {
     t0 = t1 = -beta / a;
   }
-  const cls = classifyRoots(t0, t1, tangent);
-  return {
-    ok: true,
-    method,
-    a,
-    b,
-    c: cc,
-    discriminant: disc,
-    t0,
-    t1,
-    tHit: cls.tHit,
-    case: cls.case,
-    nearTangent,
-  };
+  return rootsResult(method, coef, disc, t0, t1, tangent, nearTangent);
+};
+
+/** The coefficients a, b, c of the quadratic, as a method evaluated them. */
+export interface RaySphereCoefficients {
+  a: number;
+  b: number;
+  c: number;
 }
 
-function missResult(
+/**
+ * The result for real roots t0 ≤ t1 (either precision): the case and the hit by
+ * {@link classifyRoots}; `tangent` is the method's exact-zero discriminant flag.
+ */
+export function rootsResult(
   method: RaySphereMethod,
-  coef: { a: number; b: number; c: number },
+  coef: RaySphereCoefficients,
+  disc: number,
+  t0: number,
+  t1: number,
+  tangent: boolean,
+  nearTangent: boolean,
+): RaySphereHit {
+  const cls = classifyRoots(t0, t1, tangent);
+  return hitResult(method, coef, disc, t0, t1, cls.tHit, cls.case, nearTangent);
+}
+
+/** The result for a negative discriminant (either precision): no real root. */
+export function missResult(
+  method: RaySphereMethod,
+  coef: RaySphereCoefficients,
   disc: number,
   nearTangent: boolean,
 ): RaySphereHit {
-  return {
-    ok: true,
-    method,
-    a: coef.a,
-    b: coef.b,
-    c: coef.c,
-    discriminant: disc,
-    t0: null,
-    t1: null,
-    tHit: null,
-    case: 'miss',
-    nearTangent,
-  };
+  return hitResult(method, coef, disc, null, null, null, 'miss', nearTangent);
+}
+
+// One object literal for every successful result, so that all of them share one shape.
+function hitResult(
+  method: RaySphereMethod,
+  coef: RaySphereCoefficients,
+  disc: number,
+  t0: number | null,
+  t1: number | null,
+  tHit: number | null,
+  kind: RaySphereCase,
+  nearTangent: boolean,
+): RaySphereHit {
+  const { a, b, c } = coef;
+  return { ok: true, method, a, b, c, discriminant: disc, t0, t1, tHit, case: kind, nearTangent };
 }
 
 /**

@@ -18,14 +18,16 @@
  * ones for the same float32 inputs.
  */
 import {
-  classifyRoots,
-  type RaySphereCase,
+  checkFinite,
+  missResult,
+  rootsResult,
   type RaySphereHit,
-  type RaySphereMethod,
+  type RaySphereIntersect,
   type RaySphereResult,
   type Vec3,
 } from './raySphere';
 import { F32_MAX, U32 } from './ulp32';
+import { fail } from '../failure';
 
 const fr = Math.fround;
 
@@ -49,38 +51,31 @@ export type RaySphereResultF32 = RaySphereHitF32 | Exclude<RaySphereResult, RayS
  * (|x| ≤ 3.4e38); else an error result whose message says so. Same cases, tangent policy and
  * roots as {@link intersectRaySphere} (raySphere.ts), evaluated in float32.
  */
-export function intersectRaySphereF32(
-  o: Vec3,
-  d: Vec3,
-  c: Vec3,
-  r: number,
-  method: RaySphereMethod = 'stable',
-): RaySphereResultF32 {
+export const intersectRaySphereF32: RaySphereIntersect<RaySphereResultF32> = (
+  o,
+  d,
+  c,
+  r,
+  method = 'stable',
+) => {
+  const nonFinite = checkFinite(o, d, c, r);
+  if (nonFinite) return nonFinite;
   const all = [o[0], o[1], o[2], d[0], d[1], d[2], c[0], c[1], c[2], r];
-  if (!all.every(Number.isFinite)) {
-    return {
-      ok: false,
-      kind: 'non-finite',
-      message: 'Every coordinate and the radius must be finite numbers.',
-    };
-  }
   const O = toF32(o);
   const D = toF32(d);
   const C = toF32(c);
   const R = fr(r);
   if (!all.every((x) => Math.abs(x) <= F32_MAX)) {
-    return {
-      ok: false,
-      kind: 'overflow',
-      message: 'A coordinate is larger than the largest float32 (3.4·10³⁸): it has no float32 value.',
-    };
+    return fail(
+      'overflow',
+      'A coordinate is larger than the largest float32 (3.4·10³⁸): it has no float32 value.',
+    );
   }
   if (!(R > 0)) {
-    return {
-      ok: false,
-      kind: 'bad-radius',
-      message: `The radius must be positive (got r = ${r} in float32); a sphere with r ≤ 0 has no surface.`,
-    };
+    return fail(
+      'bad-radius',
+      `The radius must be positive (got r = ${r} in float32); a sphere with r ≤ 0 has no surface.`,
+    );
   }
   const fx = fr(O[0] - C[0]);
   const fy = fr(O[1] - C[1]);
@@ -88,12 +83,10 @@ export function intersectRaySphereF32(
   const [dx, dy, dz] = D;
   const a = fr(fr(fr(dx * dx) + fr(dy * dy)) + fr(dz * dz));
   if (!(a > 0)) {
-    return {
-      ok: false,
-      kind: 'zero-direction',
-      message:
-        'The direction d is zero (or too short to square in float32, below about 10⁻²³): the ray points nowhere.',
-    };
+    return fail(
+      'zero-direction',
+      'The direction d is zero (or too short to square in float32, below about 10⁻²³): the ray points nowhere.',
+    );
   }
   const beta = fr(fr(fr(fx * dx) + fr(fy * dy)) + fr(fz * dz));
   const b = fr(2 * beta);
@@ -104,14 +97,13 @@ export function intersectRaySphereF32(
   const bb = fr(b * b);
   const fourAC = fr(fourA * cc);
   if (![a, b, ff, r2, cc, bb, fourAC].every(Number.isFinite)) {
-    return {
-      ok: false,
-      kind: 'overflow',
-      message:
-        'The numbers are too large for float32: the quadratic’s coefficients overflow (above 3.4·10³⁸).',
-    };
+    return fail(
+      'overflow',
+      'The numbers are too large for float32: the quadratic’s coefficients overflow (above 3.4·10³⁸).',
+    );
   }
   const inputs = { o: O, d: D, c: C, r: R };
+  const coef = { a, b, c: cc };
   let disc: number;
   let t0: number;
   let t1: number;
@@ -119,7 +111,7 @@ export function intersectRaySphereF32(
   if (method === 'naive') {
     disc = fr(bb - fourAC);
     nearTangent = Math.abs(disc) <= 8 * U32 * (bb + Math.abs(fourAC));
-    if (disc < 0) return miss(method, a, b, cc, disc, nearTangent, inputs);
+    if (disc < 0) return withInputs(missResult(method, coef, disc, nearTangent), inputs);
     const s = fr(Math.sqrt(disc));
     const twoA = fr(2 * a);
     t0 = fr(fr(-b - s) / twoA);
@@ -136,7 +128,7 @@ export function intersectRaySphereF32(
     const l = Math.sqrt(ll);
     const f = Math.sqrt(ff);
     nearTangent = Math.abs(h) <= 8 * U32 * (r2 + ll + l * f);
-    if (q4 < 0) return miss(method, a, b, cc, disc, nearTangent, inputs);
+    if (q4 < 0) return withInputs(missResult(method, coef, disc, nearTangent), inputs);
     const sq = fr(Math.sqrt(q4));
     const q = -fr(beta + (beta >= 0 ? sq : -sq));
     if (q === 0) {
@@ -151,46 +143,14 @@ export function intersectRaySphereF32(
   }
   const tangent = disc === 0;
   if (tangent) t0 = t1 = fr(-beta / a) + 0;
-  const cls = classifyRoots(t0, t1, tangent);
-  return {
-    ok: true,
-    method,
-    a,
-    b,
-    c: cc,
-    discriminant: disc,
-    t0,
-    t1,
-    tHit: cls.tHit,
-    case: cls.case as RaySphereCase,
-    nearTangent,
-    inputs,
-  };
-}
+  return withInputs(rootsResult(method, coef, disc, t0, t1, tangent, nearTangent), inputs);
+};
 
-function miss(
-  method: RaySphereMethod,
-  a: number,
-  b: number,
-  c: number,
-  disc: number,
-  nearTangent: boolean,
-  inputs: RaySphereHitF32['inputs'],
-): RaySphereHitF32 {
-  return {
-    ok: true,
-    method,
-    a,
-    b,
-    c,
-    discriminant: disc,
-    t0: null,
-    t1: null,
-    tHit: null,
-    case: 'miss',
-    nearTangent,
-    inputs,
-  };
+/** The double routine's result object with the float32 inputs added (no copy). */
+function withInputs(hit: RaySphereHit, inputs: RaySphereHitF32['inputs']): RaySphereHitF32 {
+  const h = hit as RaySphereHit & Partial<RaySphereHitF32>;
+  h.inputs = inputs;
+  return h as RaySphereHitF32;
 }
 
 /**

@@ -17,23 +17,6 @@
 /** A 3-vector as a tuple (not used on hot paths). */
 export type Vec3Like = readonly [number, number, number] | Float64Array | readonly number[];
 
-function tripleEdges(
-  ax: number,
-  ay: number,
-  az: number,
-  e1x: number,
-  e1y: number,
-  e1z: number,
-  e2x: number,
-  e2y: number,
-  e2z: number,
-): number {
-  const cx = e1y * e2z - e1z * e2y;
-  const cy = e1z * e2x - e1x * e2z;
-  const cz = e1x * e2y - e1y * e2x;
-  return ax * cx + ay * cy + az * cz;
-}
-
 /**
  * Solid angle (steradians) subtended at the origin by the triangle with vertex a and edges
  * e₁ = b − a, e₂ = c − a (all relative to the viewpoint). Domain: any finite vectors. Measure:
@@ -60,7 +43,11 @@ export function triangleSolidAngleEdges(
   const la = Math.hypot(ax, ay, az);
   const lb = Math.hypot(bx, by, bz);
   const lc = Math.hypot(cx, cy, cz);
-  const num = Math.abs(tripleEdges(ax, ay, az, e1x, e1y, e1z, e2x, e2y, e2z));
+  // The triple product a·(e₁×e₂) over the edges (see the file comment).
+  const nx = e1y * e2z - e1z * e2y;
+  const ny = e1z * e2x - e1x * e2z;
+  const nz = e1x * e2y - e1y * e2x;
+  const num = Math.abs(ax * nx + ay * ny + az * nz);
   if (!(num > 0)) return 0;
   const den =
     la * lb * lc +

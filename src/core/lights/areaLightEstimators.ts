@@ -74,7 +74,6 @@ export function areaLightTerms(
 ): void {
   const { light, occluder, px, py, pz, L, rho } = setup;
   const nl = light.normal;
-  const scratch = scratchBuf;
   if (!(light.area > 0) || !(L > 0) || !(rho > 0)) {
     for (let i = 0; i < n; i++) {
       terms[i] = 0;
@@ -90,16 +89,14 @@ export function areaLightTerms(
     return;
   }
   if (strategy === 'cosine') {
+    // The sample goes straight into `points` when it is given, else into a scratch buffer.
+    const buf = points ?? scratchBuf;
     for (let i = 0; i < n; i++) {
-      sampleCosineHemisphere(u[2 * i], u[2 * i + 1], scratch, 0);
-      const dx = scratch[0],
-        dy = scratch[1],
-        dz = scratch[2];
-      if (points) {
-        points[3 * i] = dx;
-        points[3 * i + 1] = dy;
-        points[3 * i + 2] = dz;
-      }
+      const o = points ? 3 * i : 0;
+      sampleCosineHemisphere(u[2 * i], u[2 * i + 1], buf, o);
+      const dx = buf[o],
+        dy = buf[o + 1],
+        dz = buf[o + 2];
       let y = 0;
       // Front face only: the ray must travel against the emitting normal.
       if (dz > 0 && dx * nl[0] + dy * nl[1] + dz * nl[2] < 0) {
@@ -181,17 +178,13 @@ function lightPointTerms(
   const { light, occluder, px, py, pz, L, rho } = setup;
   const nl = light.normal;
   const fL = rho * INV_PI * L;
-  const scratch = scratchBuf;
+  const buf = points ?? scratchBuf; // as in the cosine loop: samples straight into `points`
   for (let i = 0; i < n; i++) {
-    pair.sample(u[2 * i], u[2 * i + 1], scratch, 0);
-    const x = scratch[0],
-      yy = scratch[1],
-      z = scratch[2];
-    if (points) {
-      points[3 * i] = x;
-      points[3 * i + 1] = yy;
-      points[3 * i + 2] = z;
-    }
+    const o = points ? 3 * i : 0;
+    pair.sample(u[2 * i], u[2 * i + 1], buf, o);
+    const x = buf[o],
+      yy = buf[o + 1],
+      z = buf[o + 2];
     const dx = x - px,
       dy = yy - py,
       dz = z - pz;

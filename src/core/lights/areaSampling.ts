@@ -9,23 +9,30 @@
 import type { RectLight } from './rectLight';
 
 /**
- * Uniform point on the rectangle (area measure). Domain: u1, u2 ∈ [0, 1]. Writes (x, y, z) into
- * out[o..o+2]. Pdf: {@link rectAreaPdf} (per unit area).
+ * A sampler of points on a rectangle light: for (u1, u2) ∈ [0, 1]² it writes the point (x, y, z)
+ * into out[o..o+2] (o defaults to 0). `S` is what it samples from: the light itself (by area,
+ * {@link sampleRectArea}) or the light seen from a point (by solid angle, sampleSphericalRectangle).
  */
-export function sampleRectArea(
-  light: RectLight,
+export type RectPointSampler<S> = (
+  from: S,
   u1: number,
   u2: number,
   out: Float64Array | number[],
-  o = 0,
-): void {
+  o?: number,
+) => void;
+
+/**
+ * Uniform point on the rectangle (area measure). Domain: u1, u2 ∈ [0, 1]. Writes (x, y, z) into
+ * out[o..o+2]. Pdf: {@link rectAreaPdf} (per unit area).
+ */
+export const sampleRectArea: RectPointSampler<RectLight> = (light, u1, u2, out, o = 0) => {
   const s = light.corner,
     a = light.edgeX,
     b = light.edgeY;
   out[o] = s[0] + u1 * a[0] + u2 * b[0];
   out[o + 1] = s[1] + u1 * a[1] + u2 * b[1];
   out[o + 2] = s[2] + u1 * a[2] + u2 * b[2];
-}
+};
 
 /**
  * Density of {@link sampleRectArea} per unit AREA at the point x: 1/|A| on the rectangle; 0 off it

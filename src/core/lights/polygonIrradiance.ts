@@ -19,6 +19,32 @@ import type { RectLight } from './rectLight';
 import { rectFacesPoint } from './rectLight';
 
 /**
+ * Folds visit(acc, a, b) over the edges of a polygon given as a flat xyz array of m vertices: the
+ * edges (vertex i, vertex i + 1), i = 0 … m − 1, in that order, the last one closing the polygon
+ * back to vertex 0. Returns the last accumulator.
+ */
+function reduceEdges<T>(
+  verts: readonly number[],
+  acc: T,
+  visit: (acc: T, ax: number, ay: number, az: number, bx: number, by: number, bz: number) => T,
+): T {
+  const m = verts.length / 3;
+  for (let i = 0; i < m; i++) {
+    const j = (i + 1) % m;
+    acc = visit(
+      acc,
+      verts[3 * i],
+      verts[3 * i + 1],
+      verts[3 * i + 2],
+      verts[3 * j],
+      verts[3 * j + 1],
+      verts[3 * j + 2],
+    );
+  }
+  return acc;
+}
+
+/**
  * Clip a polygon (flat xyz array of vertices, relative to the shading point) to the half-space
  * n · v ≥ offset (Sutherland–Hodgman against one plane; offset 0: a plane through the origin).
  * Returns a new flat array (possibly empty). Domain: finite vertices, nonzero n. Source:
@@ -31,16 +57,7 @@ export function clipPolygonToHalfSpace(
   nz: number,
   offset = 0,
 ): number[] {
-  const out: number[] = [];
-  const m = verts.length / 3;
-  for (let i = 0; i < m; i++) {
-    const j = (i + 1) % m;
-    const ax = verts[3 * i],
-      ay = verts[3 * i + 1],
-      az = verts[3 * i + 2];
-    const bx = verts[3 * j],
-      by = verts[3 * j + 1],
-      bz = verts[3 * j + 2];
+  return reduceEdges(verts, [] as number[], (out, ax, ay, az, bx, by, bz) => {
     const da = ax * nx + ay * ny + az * nz - offset;
     const db = bx * nx + by * ny + bz * nz - offset;
     if (da >= 0) out.push(ax, ay, az);
@@ -57,8 +74,8 @@ export function clipPolygonToHalfSpace(
       cz -= (dc * nz) / nn;
       if (db !== 0) out.push(cx, cy, cz); // db = 0: b itself lies on the plane and is pushed next
     }
-  }
-  return out;
+    return out;
+  });
 }
 
 /**
@@ -72,24 +89,16 @@ export function polygonProjectedSolidAngle(verts: readonly number[], nx = 0, ny 
   const v = clipPolygonToHalfSpace(verts, nx, ny, nz);
   const m = v.length / 3;
   if (m < 3) return 0;
-  let sum = 0;
-  for (let i = 0; i < m; i++) {
-    const j = (i + 1) % m;
-    const ax = v[3 * i],
-      ay = v[3 * i + 1],
-      az = v[3 * i + 2];
-    const bx = v[3 * j],
-      by = v[3 * j + 1],
-      bz = v[3 * j + 2];
+  const sum = reduceEdges(v, 0, (sum, ax, ay, az, bx, by, bz) => {
     // θᵢ = atan2(|a × b|, a · b) needs no normalization (both scale by |a||b|).
     const cx = ay * bz - az * by,
       cy = az * bx - ax * bz,
       cz = ax * by - ay * bx;
     const cl = Math.hypot(cx, cy, cz);
-    if (!(cl > 0)) continue; // coincident or antipodal vertices: zero-length arc (or a degenerate clip)
+    if (!(cl > 0)) return sum; // coincident or antipodal vertices: zero-length arc (or a degenerate clip)
     const theta = Math.atan2(cl, ax * bx + ay * by + az * bz);
-    sum += (theta * (cx * nx + cy * ny + cz * nz)) / cl;
-  }
+    return sum + (theta * (cx * nx + cy * ny + cz * nz)) / cl;
+  });
   const r = 0.5 * Math.abs(sum);
   return Number.isFinite(r) ? Math.min(r, Math.PI) : 0;
 }

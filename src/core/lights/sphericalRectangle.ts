@@ -23,6 +23,7 @@
 import { parallelogramSolidAngle } from '../geometry/solidAngle';
 import { TWO_PI } from '../sampling/sphericalCoords';
 import { rectSolidAngle, type RectLight } from './rectLight';
+import { sampleRectArea, type RectPointSampler } from './areaSampling';
 
 /** Below this solid angle (sr) the sampler falls back to uniform area sampling (see file comment). */
 export const SPHERICAL_RECT_MIN_SOLID_ANGLE = 1e-6;
@@ -164,20 +165,9 @@ export function makeSphericalRect(light: RectLight, px: number, py: number, pz: 
  * For Ω = 0 (nothing to sample) or Ω below {@link SPHERICAL_RECT_MIN_SOLID_ANGLE} writes the
  * uniform-area point s + u1 w ex + u2 h ey.
  */
-export function sampleSphericalRectangle(
-  q: SphericalRect,
-  u1: number,
-  u2: number,
-  out: Float64Array | number[],
-  o = 0,
-): void {
+export const sampleSphericalRectangle: RectPointSampler<SphericalRect> = (q, u1, u2, out, o = 0) => {
   if (!(q.solidAngle >= SPHERICAL_RECT_MIN_SOLID_ANGLE)) {
-    const s = q.light.corner,
-      a = q.light.edgeX,
-      b = q.light.edgeY;
-    out[o] = s[0] + u1 * a[0] + u2 * b[0];
-    out[o + 1] = s[1] + u1 * a[1] + u2 * b[1];
-    out[o + 2] = s[2] + u1 * a[2] + u2 * b[2];
+    sampleRectArea(q.light, u1, u2, out, o);
     return;
   }
   const { x0, x1, y0, y1, z0, b0, b1, g0, g1, g2, g3 } = q;
@@ -204,7 +194,7 @@ export function sampleSphericalRectangle(
   out[o] = q.px + xu * q.xx + yv * q.yx + z0 * q.zx;
   out[o + 1] = q.py + xu * q.xy + yv * q.yy + z0 * q.zy;
   out[o + 2] = q.pz + xu * q.xz + yv * q.yz + z0 * q.zz;
-}
+};
 
 /**
  * Density of {@link sampleSphericalRectangle} per unit SOLID ANGLE (of the direction from p) at the

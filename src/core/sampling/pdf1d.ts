@@ -387,19 +387,21 @@ export function tabulatedPdf1D(
   };
 }
 
-/**
- * A user-typed pdf p on [a, b] (any positive multiple; normalized numerically), validated against
- * the integrand f (see {@link tabulatedPdf1D}). Measure dx.
- */
-export function customPdf1D(
+/** {@link tabulatedPdf1D} as the app calls it: the density p, the interval, the integrand f, the bins. */
+type TabulatedPdfBuilder = (
   p: (x: number) => number,
   a: number,
   b: number,
   f?: (x: number) => number,
-  bins = TABLE_BINS,
-): TypedPdfResult {
-  return tabulatedPdf1D(p, a, b, f, bins, undefined, 'custom');
-}
+  bins?: number,
+) => TypedPdfResult;
+
+/**
+ * A user-typed pdf p on [a, b] (any positive multiple; normalized numerically), validated against
+ * the integrand f: {@link tabulatedPdf1D} with its defaults (kind 'custom', Z by adaptive
+ * Gauss–Kronrod). Measure dx.
+ */
+export const customPdf1D: TabulatedPdfBuilder = tabulatedPdf1D;
 
 /**
  * p ∝ |f| on [a, b], tabulated (the zero-variance choice when f does not change sign: f/p is then the

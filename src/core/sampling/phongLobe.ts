@@ -9,7 +9,8 @@
  * Source: Lafortune & Willems 1994, "Using the modified Phong reflectance model for physically
  * based rendering"; pbrt-v4 section 2.3 (inversion); Walter et al. 2007 for the sin θ form idea.
  */
-import { INV_TWO_PI, TWO_PI, TWO_PI_BELOW, clampUnit, sphericalPhi, type VecOut } from './sphericalCoords';
+import type { VecOut } from './sphericalCoords';
+import { INV_TWO_PI, TWO_PI, clampUnit, sphericalPhi, writeSphericalDirection } from './sphericalCoords';
 
 /**
  * Sample the Phong lobe cosⁿθ. Domain: u1, u2 ∈ [0, 1), exponent n ≥ 0 (finite; negative or NaN
@@ -21,12 +22,7 @@ export function samplePhongLobe(u1: number, u2: number, exponent: number, out: V
   const lc = Math.log(u1) * inv; // ln cos θ (−∞ at u1 = 0: cos θ = 0, horizon)
   const c = Math.exp(lc);
   const s = Math.sqrt(Math.max(0, -Math.expm1(2 * lc)));
-  let phi = TWO_PI * u2;
-  if (phi >= TWO_PI) phi = TWO_PI_BELOW;
-  out[o] = s * Math.cos(phi);
-  out[o + 1] = s * Math.sin(phi);
-  out[o + 2] = c;
-  return out;
+  return writeSphericalDirection(s, c, TWO_PI * u2, out, o);
 }
 
 /**

@@ -45,6 +45,26 @@ export function sphericalPhi(x: number, y: number): number {
   return q < TWO_PI ? q : TWO_PI_BELOW;
 }
 
+/**
+ * Write the unit direction (sin θ cos φ, sin θ sin φ, cos θ) into out[o..o+2], given sin θ, cos θ
+ * and the azimuth φ ∈ [0, 2π] (φ = 2π, which 2π·ξ can round to, is clamped one ulp below, so the
+ * direction has φ ∈ [0, 2π) and inverts to a ξ below 1). Returns out. The last step of the
+ * samplers that draw θ and φ separately.
+ */
+export function writeSphericalDirection(
+  sinTheta: number,
+  cosTheta: number,
+  phi: number,
+  out: VecOut,
+  o: number,
+): VecOut {
+  const p = phi >= TWO_PI ? TWO_PI_BELOW : phi;
+  out[o] = sinTheta * Math.cos(p);
+  out[o + 1] = sinTheta * Math.sin(p);
+  out[o + 2] = cosTheta;
+  return out;
+}
+
 /** Clamp an inverted sample coordinate to [0, 1 − 2⁻⁵³] (NaN → 0). */
 export function clampUnit(u: number): number {
   return u > 0 ? (u < ONE_MINUS_ULP ? u : ONE_MINUS_ULP) : 0;

@@ -24,7 +24,15 @@ import type { Failure } from '../failure';
 import { gaussLegendre } from '../verify/quadrature';
 import { DensityError, PiecewiseConstant1D } from './piecewise1D';
 import { PiecewiseConstant2D } from './piecewise2D';
-import { HALF_PI, TWO_PI, TWO_PI_BELOW, clampUnit, sphericalPhi, type VecOut } from './sphericalCoords';
+import {
+  HALF_PI,
+  TWO_PI,
+  TWO_PI_BELOW,
+  clampUnit,
+  sphericalPhi,
+  writeSphericalDirection,
+  type VecOut,
+} from './sphericalCoords';
 
 /** A density over solid angle in (θ, φ); may return anything (validated). */
 export type ThetaPhiDensity = (theta: number, phi: number) => number;
@@ -246,13 +254,7 @@ export class TabulatedHemisphere {
   sample(u1: number, u2: number, out: VecOut, o = 0): VecOut {
     const s = this.dist.sample(u2, u1); // v (z) from the marginal with ξ₁, u (φ) with ξ₂
     const z = s.v;
-    let phi = s.u;
-    if (phi >= TWO_PI) phi = TWO_PI_BELOW;
-    const r = Math.sqrt(Math.max(0, (1 - z) * (1 + z)));
-    out[o] = r * Math.cos(phi);
-    out[o + 1] = r * Math.sin(phi);
-    out[o + 2] = z;
-    return out;
+    return writeSphericalDirection(Math.sqrt(Math.max(0, (1 - z) * (1 + z))), z, s.u, out, o);
   }
 
   /**

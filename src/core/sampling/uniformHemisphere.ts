@@ -6,7 +6,8 @@
  * Source: pbrt-v4 section A.5.2, `SampleUniformHemisphere` / `UniformHemispherePDF` /
  * `InvertUniformHemisphereSample` (util/sampling.h).
  */
-import { INV_TWO_PI, TWO_PI, TWO_PI_BELOW, clampUnit, sphericalPhi, type VecOut } from './sphericalCoords';
+import type { VecOut } from './sphericalCoords';
+import { INV_TWO_PI, TWO_PI, clampUnit, sphericalPhi, writeSphericalDirection } from './sphericalCoords';
 
 /**
  * Sample a direction uniformly on the upper hemisphere (z-up).
@@ -17,12 +18,7 @@ import { INV_TWO_PI, TWO_PI, TWO_PI_BELOW, clampUnit, sphericalPhi, type VecOut 
 export function sampleUniformHemisphere(u1: number, u2: number, out: VecOut, o = 0): VecOut {
   const z = u1;
   const r = Math.sqrt(Math.max(0, (1 - z) * (1 + z)));
-  let phi = TWO_PI * u2;
-  if (phi >= TWO_PI) phi = TWO_PI_BELOW;
-  out[o] = r * Math.cos(phi);
-  out[o + 1] = r * Math.sin(phi);
-  out[o + 2] = z;
-  return out;
+  return writeSphericalDirection(r, z, TWO_PI * u2, out, o);
 }
 
 /**
@@ -43,7 +39,7 @@ export function invertUniformHemisphereSample(x: number, y: number, z: number): 
 
 /**
  * Batched {@link sampleUniformHemisphere}: reads u[2i], u[2i+1] and writes out[3i..3i+2] for
- * i ∈ [start, end). Caller-owned buffers, no allocation.
+ * i ∈ [start, n). Caller-owned buffers, no allocation.
  */
 export function sampleUniformHemisphereBatch(
   u: Float64Array,

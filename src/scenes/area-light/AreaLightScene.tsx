@@ -11,7 +11,6 @@ import {
   ExamQuestion,
   ExploreFurther,
   Notice,
-  Panel,
   Revealed,
   SceneLayout,
   useSeenOnce,
@@ -38,10 +37,9 @@ import { Answer6c, Q6c } from './exam/Q6c';
 import { Controls } from './view/Controls';
 import { ExamConfig } from './view/ExamConfig';
 import { ConvergencePanel, StrategyTable, TimingPanel } from './view/Explore';
-import { FloorImages } from './view/FloorImages';
+import { FloorPanel } from './view/FloorImages';
 import { RunningData } from './view/RunningData';
 import { Legend, Stage } from './view/Stage';
-import { fmt } from './view/format';
 import './area-light.css';
 
 type Schema = typeof schema;
@@ -103,10 +101,9 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
       : null;
   const pending = big && !estTask.result;
   const target = targetValue(model);
-  const patch = useMemo(
-    () => patchModel(model, params.pu, params.pv, params.psize, params.ptilt),
-    [model, params.pu, params.pv, params.psize, params.ptilt],
-  );
+  const { pu, pv, psize, ptilt } = params;
+  const patchValues = useMemo(() => ({ pu, pv, psize, ptilt }), [pu, pv, psize, ptilt]);
+  const patch = useMemo(() => patchModel(model, pu, pv, psize, ptilt), [model, pu, pv, psize, ptilt]);
   // Convergence series (3 × 32768 samples) in the worker: ~0.1 s that a slider drag should not wait for.
   // The convergence and timing runs start when their panels come near the screen (not on load:
   // their results re-render the scene while the first screen should be answering input).
@@ -163,26 +160,18 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
 
   const dark = mode.theme === 'dark';
   const ask = mode.ask;
-  // in classroom mode the 3D view fills the stage's height (CSS), elsewhere a fixed height
-  const vpHeight: number | string = mode.present ? '100%' : 380;
 
+  // The chosen strategy's run, which its answer, the stage and the running data all show.
+  const chosen = useMemo(
+    () => ({ model, strategy, seed, reference: target }),
+    [model, strategy, seed, target],
+  );
   // The panels and exam parts are memoised on their props (not on t), so an animation frame
   // re-renders only the stage's animated bits and the floor images' pass choice; each exam part
   // renders on its own, so React can yield between the scene's render and theirs.
   const answer6c = useMemo(
-    () => (
-      <Answer6c
-        model={model}
-        strategy={strategy}
-        n={n}
-        seed={seed}
-        big={big}
-        estimates={estimates}
-        pending={pending}
-        target={target}
-      />
-    ),
-    [model, strategy, n, seed, big, estimates, pending, target],
+    () => <Answer6c {...chosen} n={n} big={big} estimates={estimates} pending={pending} />,
+    [chosen, n, big, estimates, pending],
   );
 
   const main = (
@@ -204,24 +193,9 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
       >
         <Legend strategy={strategy} />
         <Revealed ask={ask} what="the running estimate as sound and as a table">
-          <RunningData
-            model={model}
-            strategy={strategy}
-            count={animMax}
-            seed={seed}
-            t={tl.t}
-            reference={target}
-          />
+          <RunningData {...chosen} count={animMax} t={tl.t} />
         </Revealed>
-        <Q6a
-          patch={patch}
-          pu={params.pu}
-          pv={params.pv}
-          psize={params.psize}
-          ptilt={params.ptilt}
-          set={set}
-          ask={ask}
-        />
+        <Q6a patch={patch} values={patchValues} set={set} ask={ask} />
         <Q6b patch={patch} model={model} dark={dark} ask={ask} />
         <Q6c model={model} seed={seed} answer={answer6c} ask={ask} />
       </ExamQuestion>
@@ -237,14 +211,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
             seenRef={timingBox}
             present={mode.present}
           />
-          <Panel title="The floor, rendered with each strategy">
-            <FloorImages job={job} pass={floorPass} />
-            <p className="al-note">
-              {job.size} × {job.size} pixels of floor, {fmt(2 * job.half, 3)} units across, all at the same
-              samples per pixel, which grow with the timeline (at its end: 64). The light’s footprint is
-              brightest; the grain is each strategy’s variance.
-            </p>
-          </Panel>
+          <FloorPanel job={job} pass={floorPass} />
         </Revealed>
       </ExploreFurther>
     </>
@@ -256,19 +223,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
   const stage = (
     <>
       <ExamConfig params={params} tilt={model.tilt} patchCos={patch.cosThetaL} set={set} />
-      <Stage
-        tl={tl}
-        stageRef={stageRef}
-        model={model}
-        strategy={strategy}
-        animMax={animMax}
-        seed={seed}
-        patch={patch}
-        vpHeight={vpHeight}
-        dark={dark}
-        target={target}
-        ask={ask}
-      />
+      <Stage {...chosen} tl={tl} stageRef={stageRef} count={animMax} patch={patch} mode={mode} />
     </>
   );
   return <SceneLayout controls={controls} main={main} stage={stage} />;

@@ -65,6 +65,9 @@ export interface Preset {
   params: Partial<AreaLightParams>;
 }
 
+/** The plain geometry: a 1 × 1 light 2 above the point and parallel to the floor. */
+const OVERHEAD = { p: [0, 0, 0], lc: [0, 0, 2], ls: [1, 1], tilt: 0 } satisfies Partial<AreaLightParams>;
+
 /**
  * The exam's configuration. Q6 gives no numbers; this is the plain setup its figure and answers
  * assume: a 1 × 1 light 2 above the point, parallel to the floor, the Q6(a) patch flat on it,
@@ -74,18 +77,7 @@ export const EXAM_PRESET: Preset = {
   id: 'exam',
   label: 'The exam’s configuration',
   what: 'The light 2 above the point and parallel to the floor, the patch flat on it, uniform area sampling as in (c): here cos θ = cos θₗ at every sample.',
-  params: {
-    p: [0, 0, 0],
-    lc: [0, 0, 2],
-    ls: [1, 1],
-    tilt: 0,
-    pu: 0.3,
-    pv: 0.6,
-    psize: 0.25,
-    ptilt: 0,
-    strategy: 'area',
-    occluder: false,
-  },
+  params: { ...OVERHEAD, pu: 0.3, pv: 0.6, psize: 0.25, ptilt: 0, strategy: 'area', occluder: false },
 };
 
 /** The opening view (the defaults): a tilted light beside the point and a tilted patch. */
@@ -124,7 +116,7 @@ export const PRESETS: readonly Preset[] = [
     id: 'overhead',
     label: 'Overhead',
     what: 'A 1 × 1 light 2 units above the point: all three strategies work; solid-angle sampling is nearly noise-free.',
-    params: { p: [0, 0, 0], lc: [0, 0, 2], ls: [1, 1], tilt: 0 },
+    params: OVERHEAD,
   },
   {
     id: 'near',
@@ -160,6 +152,6 @@ export const PRESETS: readonly Preset[] = [
     id: 'away',
     label: 'Facing away',
     what: 'The light faces up: its back is black, so Lₒ = 0 exactly, and every estimator returns 0.',
-    params: { p: [0, 0, 0], lc: [0, 0, 2], ls: [1, 1], tilt: 180 },
+    params: { ...OVERHEAD, tilt: 180 },
   },
 ];

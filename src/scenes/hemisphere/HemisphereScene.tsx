@@ -20,7 +20,7 @@ import { Derivation } from './view/Derivation';
 import { ImportanceReadouts, StderrNote, UniformReadouts, VarianceWarning } from './view/Q2Panel';
 import { InvertedJacobian } from './view/InvertedJacobian';
 import { GpuWarpSection } from './view/GpuWarpSection';
-import { Q1Figure } from './view/Q1Figure';
+import { Q1Figure, type DensityProblem } from './view/Q1Figure';
 import { Settings } from './view/Settings';
 import { SampleCheck } from './view/SampleCheck';
 import { CdfPlots } from './view/CdfPlots';
@@ -37,7 +37,8 @@ const REPEAT_RUNS = 1000;
 // scene's code arrives, not inside its first render; the render reads the cached result.
 nextTask(() => void examChecksCached());
 
-export default function HemisphereScene({ params, setParams, mode }: SceneProps<HemisphereSchema>) {
+export default function HemisphereScene(props: SceneProps<HemisphereSchema>) {
+  const { params, setParams, mode } = props;
   const lobeId = params.lobe;
   const kind = params.points;
   const inverted = params.jacobian === 'inverted';
@@ -93,6 +94,8 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
       ? 'off: no valid density to sample'
       : null;
   const rmse = current && fc.status === 'ok' ? current.rmse : null;
+  // what both estimators' error notes depend on: the point set, the measured RMSE, f's bad samples
+  const errorBasis = { kind, rmse, fNonFinite: current && fc.status === 'ok' ? current.q2.fNonFinite : 0 };
 
   const checks = useMemo(() => examChecksCached(), []);
   const firstXi = useMemo(() => {
@@ -102,16 +105,12 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
     return { xi1: u[0], xi2: u[1] };
   }, [kind, params.seed, params.n]);
 
-  const densityProblem =
-    isCustom && pc.status === 'error' ? (
-      <Notice kind="error" testId="custom-error">
-        The typed density could not be used: {pc.message}. Nothing is sampled until it is fixed.
-      </Notice>
-    ) : isCustom && tab && !tab.ok ? (
-      <Notice kind="error" testId="custom-error">
-        This is not a valid density: {tab.message}. Nothing is sampled until it is fixed.
-      </Notice>
-    ) : null;
+  const densityProblem: DensityProblem | null =
+    isCustom && pc.status === 'error'
+      ? { what: 'The typed density could not be used', message: pc.message }
+      : isCustom && tab && !tab.ok
+        ? { what: 'This is not a valid density', message: tab.message }
+        : null;
 
   const pdfError = pc.status === 'error' ? pc.message : tab && !tab.ok ? tab.message : null;
   const settings = <Settings params={params} setParams={setParams} pdfError={pdfError} stats={stats} />;
@@ -126,18 +125,9 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
     ) : null;
 
   const figure = (
-    <Q1Figure
-      params={params}
-      setParams={setParams}
-      present={mode.present}
-      ask={mode.ask}
-      lobe={lobe}
-      inverted={inverted}
-      densityProblem={densityProblem}
-      pdfError={isCustom ? pdfError : null}
-      settings={settings}
-      chi2={current?.chi2 ?? null}
-    />
+    <Q1Figure {...props} lobe={lobe} densityProblem={densityProblem} chi2={current?.chi2 ?? null}>
+      {settings}
+    </Q1Figure>
   );
   const lobeTex = lobeTexOf(lobeId, params.exponent, k, pc.status === 'ok' ? (pc.tex ?? null) : null);
   return (
@@ -205,13 +195,11 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
           answer2a={
             <>
               <UniformReadouts
+                {...errorBasis}
                 exact={exact}
                 uniform={uniformEst}
-                kind={kind}
-                rmse={rmse}
                 exactProblem={current && fc.status === 'ok' ? current.exactProblem : null}
                 exactNote={current?.exactNote}
-                fNonFinite={current && fc.status === 'ok' ? current.q2.fNonFinite : 0}
               />
               <StderrNote kind={kind} rmse={rmse} />
             </>
@@ -219,11 +207,9 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
           answer2b={
             <>
               <ImportanceReadouts
+                {...errorBasis}
                 importance={importanceEst}
                 importanceOff={importanceOff}
-                kind={kind}
-                rmse={rmse}
-                fNonFinite={current && fc.status === 'ok' ? current.q2.fNonFinite : 0}
                 pZero={current && fc.status === 'ok' ? current.q2.pZero : 0}
                 infiniteVariance={!!current?.variance?.infinite}
               />
@@ -244,16 +230,7 @@ export default function HemisphereScene({ params, setParams, mode }: SceneProps<
             </>
           }
           answer2c={
-            <RepeatSection
-              repeat={repeat}
-              fOk={fc.status === 'ok'}
-              exact={exact}
-              runs={REPEAT_RUNS}
-              perRun={perRun}
-              lobe={lobeId}
-              exponent={params.exponent}
-              fIsCos={fIsCos}
-            />
+            <RepeatSection repeat={repeat} fOk={fc.status === 'ok'} exact={exact} args={repeatArgs} />
           }
         />
       </ExamQuestion>

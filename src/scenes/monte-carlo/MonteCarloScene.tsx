@@ -187,7 +187,6 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
     <McControls
       params={params}
       setParams={setParams}
-      n={n}
       fError={fError}
       limitsMessage={lim.message}
       pdfExprError={pdfExprError}
@@ -259,11 +258,7 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
         />
       </ExamQuestion>
       <McExplore
-        choice={choice}
-        curve={curve}
-        table={table}
-        a={a}
-        b={b}
+        integrand={{ choice, curve, table, a, b }}
         baseArgs={baseArgs}
         selected={selected}
         n={n}

@@ -460,12 +460,13 @@ export function comparedStrategies(
   selSeq: Strategy,
   pdfOk: boolean,
 ): { pdf: PdfKind; seq: Strategy; label: string }[] {
-  const base: { pdf: PdfKind; seq: Strategy }[] = [
-    { pdf: 'uniform', seq: 'independent' },
-    { pdf: 'linear', seq: 'independent' },
-    { pdf: 'proportional', seq: 'independent' },
-    { pdf: 'uniform', seq: 'stratified' },
-    { pdf: 'uniform', seq: 'sobol' },
+  // each pdf with independent samples, then the uniform pdf with each better-spread sequence
+  const pdfs: PdfKind[] = ['uniform', 'linear', 'proportional'];
+  const seqs: Strategy[] = ['stratified', 'sobol'];
+  type Compared = { pdf: PdfKind; seq: Strategy };
+  const base: Compared[] = [
+    ...pdfs.map((pdf): Compared => ({ pdf, seq: 'independent' })),
+    ...seqs.map((seq): Compared => ({ pdf: 'uniform', seq })),
   ];
   if (pdfOk && !base.some((s) => s.pdf === selPdf && s.seq === selSeq))
     base.push({ pdf: selPdf, seq: selSeq });

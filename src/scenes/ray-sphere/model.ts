@@ -14,6 +14,7 @@ import {
   type RaySphereHit,
   type RaySphereMethod,
   type RaySphereReference,
+  type RaySphereResult,
   type Vec3,
 } from '../../core/geometry';
 import { fail, type Failure } from '../../core/failure';
@@ -448,49 +449,90 @@ export function median(xs: number[]): number {
   return s.length % 2 ? s[m] : 0.5 * (s[m - 1] + s[m]);
 }
 
+/** The rays of the error-against-distance plots at one distance, from the distant image's eye. */
+export interface ErrorRays {
+  eye: Vec3;
+  dirs: Vec3[];
+  centre: Vec3;
+  r: number;
+}
+
 /**
- * The error of each method against distance: for each distance D (in radii), 12 rays from a
- * fixed eye aimed at points 0.1 … 0.9 r off the centre, errors against the double-double
- * reference, medians. Deterministic (no randomness).
+ * The rays of the error-against-distance plots at distance D (in radii): from the distant image's
+ * eye, aimed at 12 points 0.1 … 0.95 r off the sphere's centre (six offsets, two angles).
  */
-export function errorVsDistance(exponents: number[] = range(0.5, 12, 0.25)): ErrorSeries {
+export function errorRaysAt(D: number): ErrorRays {
+  const s = distantSetup(D);
+  const dirs: Vec3[] = [];
+  for (const rho of [0.1, 0.3, 0.5, 0.7, 0.85, 0.95]) {
+    for (const ang of [0.3, 2.1]) {
+      const aim: V3 = [0, 1, 2].map(
+        (k) => s.centre[k] + rho * (Math.cos(ang) * s.right[k] + Math.sin(ang) * s.up[k]),
+      ) as V3;
+      dirs.push(sub(aim, s.eye));
+    }
+  }
+  return { eye: s.eye, dirs, centre: s.centre, r: s.r };
+}
+
+/** The arithmetic an error series measures: what it makes of the inputs, its intersection, its floor. */
+export interface ErrorArithmetic {
+  /** The inputs as this arithmetic holds them (the reference is of these, so only the arithmetic counts). */
+  round: (v: Vec3) => Vec3;
+  intersect: (o: Vec3, d: Vec3, c: Vec3, r: number, method: RaySphereMethod) => RaySphereResult;
+  /** Plotting floor on a log axis: exact results plot here. */
+  floor: number;
+}
+
+/**
+ * The median errors of both methods at each distance, in the given arithmetic, against the
+ * double-double reference of the inputs as that arithmetic holds them. A distance where a method
+ * has no ray to measure is left out. Deterministic.
+ */
+export function medianErrorSeries(
+  distances: number[],
+  arithmetic: ErrorArithmetic,
+  raysAt: (D: number) => ErrorRays = errorRaysAt,
+): ErrorSeries {
+  const { round, intersect, floor } = arithmetic;
   const out: ErrorSeries = { dist: [], discNaive: [], discStable: [], hitNaive: [], hitStable: [] };
-  const offsets = [0.1, 0.3, 0.5, 0.7, 0.85, 0.95];
-  const angles = [0.3, 2.1];
-  for (const e of exponents) {
-    const D = 10 ** e;
-    const s = distantSetup(D);
-    const dn: number[] = [];
-    const ds: number[] = [];
-    const hn: number[] = [];
-    const hs: number[] = [];
-    for (const rho of offsets) {
-      for (const ang of angles) {
-        const aim: V3 = [
-          s.centre[0] + rho * (Math.cos(ang) * s.right[0] + Math.sin(ang) * s.up[0]),
-          s.centre[1] + rho * (Math.cos(ang) * s.right[1] + Math.sin(ang) * s.up[1]),
-          s.centre[2] + rho * (Math.cos(ang) * s.right[2] + Math.sin(ang) * s.up[2]),
-        ];
-        const d = sub(aim, s.eye);
-        const ref = raySphereReference(s.eye, d, s.centre, s.r);
-        if (!ref.ok) continue;
-        for (const method of ['naive', 'stable'] as const) {
-          const res = intersectRaySphere(s.eye, d, s.centre, s.r, method);
-          if (!res.ok) continue;
-          const eDisc = Math.min(1, relDisc(res.discriminant, ref.discriminant));
-          const eHit = Math.min(1, relativeError(res.tHit, ref.tHit) ?? 0);
-          (method === 'naive' ? dn : ds).push(eDisc);
-          (method === 'naive' ? hn : hs).push(eHit);
-        }
+  for (const D of distances) {
+    const s = raysAt(D);
+    const eye = round(s.eye);
+    const centre = round(s.centre);
+    const errs: Record<RaySphereMethod, { disc: number[]; hit: number[] }> = {
+      naive: { disc: [], hit: [] },
+      stable: { disc: [], hit: [] },
+    };
+    for (const dir of s.dirs) {
+      const d = round(dir);
+      const ref = raySphereReference(eye, d, centre, s.r);
+      if (!ref.ok) continue;
+      for (const method of ['naive', 'stable'] as const) {
+        const res = intersect(eye, d, centre, s.r, method);
+        if (!res.ok) continue;
+        errs[method].disc.push(Math.min(1, relDisc(res.discriminant, ref.discriminant)));
+        errs[method].hit.push(Math.min(1, relativeError(res.tHit, ref.tHit) ?? 0));
       }
     }
+    if (!errs.naive.disc.length || !errs.stable.disc.length) continue;
     out.dist.push(D);
-    out.discNaive.push(Math.max(ERROR_FLOOR, median(dn)));
-    out.discStable.push(Math.max(ERROR_FLOOR, median(ds)));
-    out.hitNaive.push(Math.max(ERROR_FLOOR, median(hn)));
-    out.hitStable.push(Math.max(ERROR_FLOOR, median(hs)));
+    out.discNaive.push(Math.max(floor, median(errs.naive.disc)));
+    out.discStable.push(Math.max(floor, median(errs.stable.disc)));
+    out.hitNaive.push(Math.max(floor, median(errs.naive.hit)));
+    out.hitStable.push(Math.max(floor, median(errs.stable.hit)));
   }
   return out;
+}
+
+/**
+ * The error of each method in float64 against distance: for each distance D = 10^e (in radii),
+ * the 12 rays of {@link errorRaysAt}, errors against the double-double reference, medians.
+ */
+export function errorVsDistance(exponents: number[] = range(0.5, 12, 0.25)): ErrorSeries {
+  const f64: ErrorArithmetic = { round: (v) => v, intersect: intersectRaySphere, floor: ERROR_FLOOR };
+  const distances = exponents.map((e) => 10 ** e);
+  return medianErrorSeries(distances, f64);
 }
 
 function range(a: number, b: number, step: number): number[] {

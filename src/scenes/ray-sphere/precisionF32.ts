@@ -10,20 +10,18 @@
 import {
   intersectRaySphereF32,
   raySphereReference,
-  relativeError,
   toF32,
   type RaySphereReference,
-  type Vec3,
 } from '../../core/geometry';
 import {
-  distantSetup,
-  median,
+  errorRaysAt,
+  medianErrorSeries,
   methodRow,
-  relDisc,
+  type ErrorArithmetic,
+  type ErrorRays,
   type ErrorSeries,
   type InputCheck,
   type MethodRow,
-  type V3,
 } from './model';
 
 /** Which arithmetic the readouts use. */
@@ -64,58 +62,14 @@ export type ErrorSeriesF32 = ErrorSeries;
 export const ERROR_FLOOR_F32 = 2 ** -24;
 
 /**
- * The rays of the error-against-distance plot at distance D (as the float64 series in model.ts):
- * from the distant image's eye, aimed at 12 points 0.1 … 0.95 r off the sphere's centre.
- */
-export function errorRaysAt(D: number): { eye: Vec3; dirs: Vec3[]; centre: Vec3; r: number } {
-  const s = distantSetup(D);
-  const dirs: Vec3[] = [];
-  for (const rho of [0.1, 0.3, 0.5, 0.7, 0.85, 0.95]) {
-    for (const ang of [0.3, 2.1]) {
-      const aim: V3 = [0, 1, 2].map(
-        (k) => s.centre[k] + rho * (Math.cos(ang) * s.right[k] + Math.sin(ang) * s.up[k]),
-      ) as V3;
-      dirs.push([aim[0] - s.eye[0], aim[1] - s.eye[1], aim[2] - s.eye[2]]);
-    }
-  }
-  return { eye: s.eye, dirs, centre: s.centre, r: s.r };
-}
-
-/**
  * The error of each method in float32 against distance, for the same rays as the float64 plot's
  * `errorVsDistance` ({@link errorRaysAt}), against the double-double reference of the float32
  * inputs. Deterministic.
  */
 export function errorVsDistanceF32(
   distances: number[],
-  raysAt: (D: number) => { eye: Vec3; dirs: Vec3[]; centre: Vec3; r: number } = errorRaysAt,
+  raysAt: (D: number) => ErrorRays = errorRaysAt,
 ): ErrorSeriesF32 {
-  const out: ErrorSeriesF32 = { dist: [], discNaive: [], discStable: [], hitNaive: [], hitStable: [] };
-  for (const D of distances) {
-    const s = raysAt(D);
-    const eye = toF32(s.eye);
-    const centre = toF32(s.centre);
-    const dn: number[] = [];
-    const ds: number[] = [];
-    const hn: number[] = [];
-    const hs: number[] = [];
-    for (const dir of s.dirs) {
-      const d = toF32(dir);
-      const ref = raySphereReference(eye, d, centre, s.r);
-      if (!ref.ok) continue;
-      for (const method of ['naive', 'stable'] as const) {
-        const res = intersectRaySphereF32(eye, d, centre, s.r, method);
-        if (!res.ok) continue;
-        (method === 'naive' ? dn : ds).push(Math.min(1, relDisc(res.discriminant, ref.discriminant)));
-        (method === 'naive' ? hn : hs).push(Math.min(1, relativeError(res.tHit, ref.tHit) ?? 0));
-      }
-    }
-    if (!dn.length || !ds.length) continue;
-    out.dist.push(D);
-    out.discNaive.push(Math.max(ERROR_FLOOR_F32, median(dn)));
-    out.discStable.push(Math.max(ERROR_FLOOR_F32, median(ds)));
-    out.hitNaive.push(Math.max(ERROR_FLOOR_F32, median(hn)));
-    out.hitStable.push(Math.max(ERROR_FLOOR_F32, median(hs)));
-  }
-  return out;
+  const f32: ErrorArithmetic = { round: toF32, intersect: intersectRaySphereF32, floor: ERROR_FLOOR_F32 };
+  return medianErrorSeries(distances, f32, raysAt);
 }

@@ -5,13 +5,11 @@
  */
 import { memo, useMemo } from 'react';
 import {
-  DescribedFigure,
   Derivation,
   ExamPart,
   LiveAnswer,
   MathTex,
   Plot,
-  Readout,
   Revealed,
   ShowAsTable,
   summarizeSeries,
@@ -20,55 +18,28 @@ import {
 import type { PatchModel } from '../patch';
 import type { AreaLightParams } from '../params';
 import { fmt } from '../view/format';
-import { PatchFigure, patchFigureText } from '../view/PatchFigure';
-import { SliderList, type SliderSpec } from '../view/SliderList';
+import { PatchPanel, type PatchValues } from '../view/PatchPanel';
+import { ReadoutList } from '../view/ReadoutList';
 
-type PatchValues = Pick<AreaLightParams, 'pu' | 'pv' | 'psize' | 'ptilt'>;
-
-/** Where the patch sits on the light, its side and its tilt. */
-const PATCH_SLIDERS: readonly SliderSpec<PatchValues>[] = [
-  {
-    label: 'Patch position u on the light',
-    min: 0,
-    max: 1,
-    step: 0.01,
-    get: (v) => v.pu,
-    patch: (pu) => ({ pu }),
-  },
-  {
-    label: 'Patch position v on the light',
-    min: 0,
-    max: 1,
-    step: 0.01,
-    get: (v) => v.pv,
-    patch: (pv) => ({ pv }),
-  },
-  { label: 'Patch side', min: 0.001, max: 2, log: true, get: (v) => v.psize, patch: (psize) => ({ psize }) },
-  {
-    label: 'Patch tilt (relative to the light)',
-    min: -89,
-    max: 89,
-    step: 1,
-    unit: '°',
-    get: (v) => v.ptilt,
-    patch: (ptilt) => ({ ptilt }),
-  },
-];
+const APPROX_LABEL = (
+  <>
+    dA cos θ<sub>l</sub> / r²
+  </>
+);
+const COS_LABEL = (
+  <>
+    cos θ<sub>l</sub>
+  </>
+);
 
 export const Q6a = memo(function Q6a({
   patch,
-  pu,
-  pv,
-  psize,
-  ptilt,
+  values,
   set,
   ask,
 }: {
   patch: PatchModel;
-  pu: number;
-  pv: number;
-  psize: number;
-  ptilt: number;
+  values: PatchValues;
   set: (patch: Partial<AreaLightParams>) => void;
   /** Asked to predict first: the check is hidden until revealed. */
   ask: boolean;
@@ -81,7 +52,7 @@ export const Q6a = memo(function Q6a({
         type: 'scatter',
         mode: 'lines',
         name: '|dA cos θ<sub>l</sub> / r² − Ω| / Ω',
-        line: { color: '#e4572e' },
+        line: { color: 'var(--al-patch)' },
       },
       {
         x: [patch.side],
@@ -89,7 +60,7 @@ export const Q6a = memo(function Q6a({
         type: 'scatter',
         mode: 'markers',
         name: 'this patch',
-        marker: { color: '#e4572e', size: 10 },
+        marker: { color: 'var(--al-patch)', size: 10 },
       },
     ],
     [patch],
@@ -161,19 +132,7 @@ export const Q6a = memo(function Q6a({
         </ol>
       </Derivation>
       <div className="al-6a">
-        <div className="al-6a-figure">
-          <DescribedFigure
-            label="Cross-section of Q6(a): the patch, its perpendicular projection and the similar triangles"
-            description={patchFigureText(patch)}
-            quiet
-            testId="al-patch-described"
-          >
-            <PatchFigure patch={patch} />
-          </DescribedFigure>
-          <div className="al-patch-controls">
-            <SliderList specs={PATCH_SLIDERS} values={{ pu, pv, psize, ptilt }} set={set} />
-          </div>
-        </div>
+        <PatchPanel patch={patch} values={values} set={set} />
         <Revealed ask={ask} what="the check of the formula against the exact solid angle">
           <LiveAnswer
             title="Check, computed live: the formula against the exact solid angle of the patch"
@@ -184,38 +143,21 @@ export const Q6a = memo(function Q6a({
               patch (Van Oosterom–Strackee) and dA cos θ<sub>l</sub> / r² agree better and better as the patch
               shrinks — the relative difference falls like the square of its size (slope 2 below).
             </p>
-            <div className="al-readouts">
-              <Readout
-                id="patch-exact"
-                label="exact Ω of the patch"
-                value={patch.exact}
-                digits={8}
-                unit="sr"
-              />
-              <Readout
-                id="patch-approx"
-                label={
-                  <>
-                    dA cos θ<sub>l</sub> / r²
-                  </>
-                }
-                value={patch.approx}
-                digits={8}
-                unit="sr"
-              />
-              <Readout id="patch-rel-error" label="relative difference" value={patch.relError} digits={3} />
-              <Readout id="patch-r" label="r" value={patch.r} digits={5} />
-              <Readout
-                id="patch-cos"
-                label={
-                  <>
-                    cos θ<sub>l</sub>
-                  </>
-                }
-                value={patch.cosThetaL}
-                digits={5}
-              />
-            </div>
+            <ReadoutList
+              items={[
+                {
+                  id: 'patch-exact',
+                  label: 'exact Ω of the patch',
+                  value: patch.exact,
+                  digits: 8,
+                  unit: 'sr',
+                },
+                { id: 'patch-approx', label: APPROX_LABEL, value: patch.approx, digits: 8, unit: 'sr' },
+                { id: 'patch-rel-error', label: 'relative difference', value: patch.relError, digits: 3 },
+                { id: 'patch-r', label: 'r', value: patch.r, digits: 5 },
+                { id: 'patch-cos', label: COS_LABEL, value: patch.cosThetaL, digits: 5 },
+              ]}
+            />
             <Plot
               label="Relative difference between dA cos θₗ / r² and the exact solid angle of the patch, against the patch side (log–log)"
               description={`${relSummary} This patch: side ${fmt(patch.side)}, relative difference ${fmt(Math.abs(patch.relError), 3)}.`}

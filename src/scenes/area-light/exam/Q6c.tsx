@@ -8,6 +8,7 @@ import { Derivation, ExamPart, LiveAnswer, MathTex, Readout, Revealed } from '..
 import { STRATEGY_LABEL } from '../strategies';
 import { estimateOne, givenSamples, type AreaLightModel, type StrategyEstimate } from '../model';
 import { fmt } from '../view/format';
+import { ScrollBox } from '../../../ui/ScrollBox';
 
 export const Q6c = memo(function Q6c({
   model,
@@ -55,12 +56,7 @@ export const Q6c = memo(function Q6c({
           <li>
             With numbers — the first four samples of seed {seed} (f = ρ/π = {fmt(fArea)}, L = {fmt(model.L)}
             ):
-            <div
-              className="al-table-wrap"
-              tabIndex={0}
-              role="group"
-              aria-label="The first four samples (the table scrolls sideways on narrow screens)"
-            >
+            <ScrollBox label="The first four samples (the table scrolls sideways on narrow screens)">
               <table className="al-table al-given" data-testid="given-samples">
                 <thead>
                   <tr>
@@ -111,7 +107,7 @@ export const Q6c = memo(function Q6c({
                   ))}
                 </tbody>
               </table>
-            </div>
+            </ScrollBox>
             <Revealed ask={ask} what="the four terms and their mean">
               <MathTex
                 display
@@ -150,7 +146,7 @@ export const Answer6c = memo(function Answer6c({
   big,
   estimates,
   pending,
-  target,
+  reference: target,
 }: {
   model: AreaLightModel;
   strategy: LightStrategy;
@@ -159,7 +155,7 @@ export const Answer6c = memo(function Answer6c({
   big: boolean;
   estimates: StrategyEstimate[] | null;
   pending: boolean;
-  target: number;
+  reference: number;
 }) {
   const chosenSync = useMemo(
     () => (big ? null : estimateOne(model, strategy, n, seed)),

@@ -4,56 +4,35 @@
  */
 import { memo } from 'react';
 import type { Vec3 } from '../../../core/lights';
-import { NumberField, Panel, Select, Slider, Toggle } from '../../../ui';
-import { SliderList, type SliderSpec } from './SliderList';
-import { PRESETS, presetActive, type AreaLightParams } from '../params';
+import { NumberField, Panel, Slider } from '../../../ui';
+import { bindControls } from '../../../ui/paramControls';
+import { PRESETS, presetActive, schema, type AreaLightParams } from '../params';
 import { STRATEGIES, STRATEGY_LABEL } from '../strategies';
 
+type Set = (patch: Partial<AreaLightParams>) => void;
+
 const AXES = ['x', 'y', 'z'] as const;
+const STRATEGY_OPTIONS = STRATEGIES.map((s) => ({ value: s, label: STRATEGY_LABEL[s] }));
+/** The light's two sides, the two entries of `ls`, and the range of their sliders. */
+const SIDES = ['Width w', 'Height h'] as const;
+const SIDE_RANGE = { min: 0, max: 10, step: 0.05 };
 
-/** The light's size, tilt and radiance and the floor's albedo. */
-const LIGHT_SLIDERS: readonly SliderSpec<AreaLightParams>[] = [
-  {
-    label: 'Width w',
-    min: 0,
-    max: 10,
-    step: 0.05,
-    get: (p) => p.ls?.[0] ?? 1,
-    patch: (x, p) => ({ ls: [x, p.ls?.[1] ?? 1] }),
-  },
-  {
-    label: 'Height h',
-    min: 0,
-    max: 10,
-    step: 0.05,
-    get: (p) => p.ls?.[1] ?? 1,
-    patch: (x, p) => ({ ls: [p.ls?.[0] ?? 1, x] }),
-  },
-  {
-    label: 'Tilt about x',
-    min: -180,
-    max: 180,
-    step: 1,
-    unit: '°',
-    get: (p) => p.tilt,
-    patch: (tilt) => ({ tilt }),
-  },
-  { label: 'Radiance L', min: 0, max: 10, step: 0.1, get: (p) => p.L, patch: (L) => ({ L }) },
-  { label: 'Albedo ρ', min: 0, max: 1, step: 0.01, get: (p) => p.rho, patch: (rho) => ({ rho }) },
-];
-
-/** Three number fields for a vector parameter (test ids `<testId>-x`, `-y`, `-z`). */
+/**
+ * Three number fields for a vector parameter (test ids `<name>-x`, `-y`, `-z`), in the range the
+ * URL parser clamps that parameter to.
+ */
 function VecField({
+  name,
   label,
-  testId,
-  value,
-  onChange,
+  params,
+  set,
 }: {
+  name: 'p' | 'lc';
   label: string;
-  testId: string;
-  value: readonly number[];
-  onChange: (v: Vec3) => void;
+  params: AreaLightParams;
+  set: Set;
 }) {
+  const value = params[name];
   return (
     <fieldset className="al-vec">
       <legend>{label}</legend>
@@ -63,13 +42,13 @@ function VecField({
           label={axis}
           value={value[k]}
           step={0.1}
-          min={-1e9}
-          max={1e9}
-          testId={`${testId}-${axis}`}
+          min={schema[name].min}
+          max={schema[name].max}
+          testId={`${name}-${axis}`}
           onChange={(x) => {
             const next: Vec3 = [value[0], value[1], value[2]];
             next[k] = x;
-            onChange(next);
+            set({ [name]: next });
           }}
         />
       ))}
@@ -84,10 +63,12 @@ export const Controls = memo(function Controls({
   onToggleReseeding,
 }: {
   params: AreaLightParams;
-  set: (patch: Partial<AreaLightParams>) => void;
+  set: Set;
   reseeding: boolean;
   onToggleReseeding: () => void;
 }) {
+  const c = bindControls(schema, params, set);
+  const size = [params.ls?.[0] ?? 1, params.ls?.[1] ?? 1] as const;
   return (
     <>
       <Panel title="Presets">
@@ -107,30 +88,9 @@ export const Controls = memo(function Controls({
         </div>
       </Panel>
       <Panel title="Sampling">
-        <Select
-          label="Strategy"
-          value={params.strategy}
-          options={STRATEGIES.map((s) => ({ value: s, label: STRATEGY_LABEL[s] }))}
-          onChange={(s) => set({ strategy: s })}
-          testId="strategy"
-        />
-        <Slider
-          label="Samples n"
-          value={params.n}
-          min={1}
-          max={1000000}
-          step={1}
-          log
-          onChange={(x) => set({ n: Math.round(x) })}
-        />
-        <NumberField
-          label="Seed"
-          value={params.seed}
-          min={0}
-          max={4294967295}
-          step={1}
-          onChange={(x) => set({ seed: Math.round(x) })}
-        />
+        {c.select('strategy', 'Strategy', STRATEGY_OPTIONS)}
+        {c.slider('n', 'Samples n', { log: true })}
+        {c.number('seed', 'Seed')}
         <div className="al-row">
           <button type="button" onClick={() => set({ seed: (params.seed + 1) >>> 0 })}>
             New seed
@@ -141,19 +101,21 @@ export const Controls = memo(function Controls({
         </div>
       </Panel>
       <Panel title="Light and floor">
-        <VecField label="Light centre" testId="lc" value={params.lc} onChange={(v) => set({ lc: v })} />
-        <SliderList specs={LIGHT_SLIDERS} values={params} set={set} />
-        <VecField
-          label="Shading point p (normal +z)"
-          testId="p"
-          value={params.p}
-          onChange={(v) => set({ p: v })}
-        />
-        <Toggle
-          label="Occluder between point and light"
-          checked={params.occluder}
-          onChange={(b) => set({ occluder: b })}
-        />
+        <VecField name="lc" label="Light centre" params={params} set={set} />
+        {SIDES.map((label, k) => (
+          <Slider
+            key={label}
+            label={label}
+            value={size[k]}
+            {...SIDE_RANGE}
+            onChange={(x) => set({ ls: k === 0 ? [x, size[1]] : [size[0], x] })}
+          />
+        ))}
+        {c.slider('tilt', 'Tilt about x', { min: -180, max: 180, step: 1, unit: '°' })}
+        {c.slider('L', 'Radiance L', { max: 10, step: 0.1 })}
+        {c.slider('rho', 'Albedo ρ', { step: 0.01 })}
+        <VecField name="p" label="Shading point p (normal +z)" params={params} set={set} />
+        {c.toggle('occluder', 'Occluder between point and light')}
       </Panel>
     </>
   );

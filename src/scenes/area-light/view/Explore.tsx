@@ -46,40 +46,50 @@ function perStrategy(
     .join(' ');
 }
 
-/** A log-log plot with axis titles x and y and its legend in a row above the plot. */
-function LogLogPlot({
-  label,
-  description,
-  testId,
-  data,
-  height,
-  x,
-  y,
-}: {
+/**
+ * What a log–log plot shows: its name (for screen readers; "(log–log)" is added), its test id, its
+ * axis titles and its height (normal, classroom).
+ */
+interface LogLogSpec {
   label: string;
-  description: string;
   testId: string;
+  axes: readonly [x: string, y: string];
+  heights: readonly [normal: number, present: number];
+}
+
+const CONVERGENCE_PLOT: LogLogSpec = {
+  label: 'Absolute error and standard error of the three estimators against the number of samples N',
+  testId: 'al-convergence-plot',
+  axes: ['N (samples)', 'error'],
+  heights: [300, 380],
+};
+
+const TIMING_PLOT: LogLogSpec = {
+  label: 'RMSE over independent runs against the run time of one estimate, for the three strategies',
+  testId: 'al-timing-plot',
+  axes: ['time per estimate (ms)', 'RMSE'],
+  heights: [280, 360],
+};
+
+/** A log–log plot with its legend in a row above the plot. */
+function LogLogPlot({
+  spec: { label, axes, heights, testId },
+  present,
+  ...rest
+}: {
+  spec: LogLogSpec;
+  present: boolean;
+  description: string;
   data: PlotTrace[];
-  height: number;
-  x: string;
-  y: string;
 }) {
   const layout = {
-    xaxis: { type: 'log', title: { text: x } },
-    yaxis: { type: 'log', title: { text: y } },
+    xaxis: { type: 'log', title: { text: axes[0] } },
+    yaxis: { type: 'log', title: { text: axes[1] } },
     legend: { orientation: 'h', x: 0, y: 1.02, yanchor: 'bottom' },
     margin: { l: 56, r: 16, t: 40, b: 44 },
   };
-  return (
-    <Plot
-      label={label}
-      description={description}
-      testId={testId}
-      data={data}
-      height={height}
-      layout={layout}
-    />
-  );
+  const height = heights[present ? 1 : 0];
+  return <Plot label={`${label} (log–log)`} testId={testId} {...rest} height={height} layout={layout} />;
 }
 
 /** The three estimates at n samples each (null while they are computed), against the reference. */
@@ -214,15 +224,7 @@ export const ConvergencePanel = memo(function ConvergencePanel({
   return (
     <Panel title="Convergence">
       <div ref={seenRef} />
-      <LogLogPlot
-        label="Absolute error and standard error of the three estimators against the number of samples N (log–log)"
-        description={description}
-        testId="al-convergence-plot"
-        data={traces}
-        height={present ? 380 : 300}
-        x="N (samples)"
-        y="error"
-      />
+      <LogLogPlot spec={CONVERGENCE_PLOT} present={present} description={description} data={traces} />
       <p className="al-note">
         Solid: |estimate − reference|. Dotted: the standard error s/√N the estimator reports. Both fall like N
         <sup>−½</sup>; the strategies differ by a constant.
@@ -296,15 +298,7 @@ export const TimingPanel = memo(function TimingPanel({
         {running ? <progress max={1} value={progress} aria-label="Timing progress" /> : null}
       </div>
       {error ? <Notice kind="warn">Timing failed: {error.message}</Notice> : null}
-      <LogLogPlot
-        label="RMSE over independent runs against the run time of one estimate, for the three strategies (log–log)"
-        description={description}
-        testId="al-timing-plot"
-        data={traces}
-        height={present ? 360 : 280}
-        x="time per estimate (ms)"
-        y="RMSE"
-      />
+      <LogLogPlot spec={TIMING_PLOT} present={present} description={description} data={traces} />
       <p className="al-note">
         Each point: N = 16 … 4096 samples, RMSE over 24 independent runs, run time measured in a worker on
         this machine (best of three; noisy when the machine is busy). Points are joined in order of run time,

@@ -6,11 +6,12 @@
 import { useEffect, useRef } from 'react';
 import { useWorkerJob, workerFactory } from '../../../workers';
 import type { AreaLightTasks } from '../floor.worker';
-import { Readout, useSeenOnce } from '../../../ui';
+import { Panel, Readout, useSeenOnce } from '../../../ui';
 import { formatNumber } from '../../../ui/Readout';
 import { PASS_TOTAL, type FloorJob } from '../floor';
 import { STRATEGIES, STRATEGY_LABEL } from '../strategies';
 import type { FloorFrame } from '../jobs';
+import { fmt } from './format';
 
 const makeWorker = workerFactory<AreaLightTasks>(
   () => new Worker(new URL('../floor.worker.ts', import.meta.url), { type: 'module' }),
@@ -138,5 +139,19 @@ export function FloorImages({ job, pass = PASS_TOTAL.length - 1 }: { job: FloorJ
         ))}
       </div>
     </div>
+  );
+}
+
+/** The floor images in their panel, with what they show. */
+export function FloorPanel({ job, pass }: { job: FloorJob; pass: number }) {
+  return (
+    <Panel title="The floor, rendered with each strategy">
+      <FloorImages job={job} pass={pass} />
+      <p className="al-note">
+        {job.size} × {job.size} pixels of floor, {fmt(2 * job.half, 3)} units across, all at the same samples
+        per pixel, which grow with the timeline (at its end: 64). The light’s footprint is brightest; the
+        grain is each strategy’s variance.
+      </p>
+    </Panel>
   );
 }

@@ -8,6 +8,7 @@
 import { useEffect, useRef } from 'react';
 import type * as THREE from 'three';
 import { Viewport, type ViewportContext } from '../../../three';
+import type { ThreeModule } from '../../../three/engine';
 import type { LightStrategy, Vec3 } from '../../../core/lights';
 import type { AreaLightModel } from '../model';
 import type { PatchModel } from '../patch';
@@ -29,32 +30,19 @@ export interface Scene3DProps {
   countRef?: { current: ((count: number) => void) | null };
 }
 
+/** The view's accessible name. */
+const VIEW_LABEL =
+  '3D view: the floor, the shading point with its unit hemisphere, the rectangular light, the samples and the Q6(a) patch';
+
 const MAX_SAMPLES = 1024;
 const RAYS = 24;
 
-interface Objects {
+/** The view's objects (from createParts), its context, and the draw-range bookkeeping. */
+type Objects = ReturnType<typeof createParts> & {
   ctx: ViewportContext;
-  lightFront: THREE.Mesh;
-  lightBack: THREE.Mesh;
-  lightEdge: THREE.LineLoop;
-  occluder: THREE.Mesh;
-  point: THREE.Mesh;
-  normal: THREE.Line;
-  hemi: THREE.LineSegments;
-  floor: THREE.Mesh;
-  grid: THREE.GridHelper;
-  /** Samples that contribute (large dots) and wasted ones (small dots): not told apart by colour alone. */
-  samplesOn: THREE.Points;
-  samplesOnMiss: THREE.Points;
-  samplesDir: THREE.Points;
-  samplesDirMiss: THREE.Points;
   /** hitsBefore[k] = how many of the first k samples contribute (for the draw ranges). */
   hitsBefore: Int32Array;
-  rays: THREE.LineSegments;
-  patch: THREE.Mesh;
-  patchRays: THREE.LineSegments;
-  patchProj: THREE.Mesh;
-}
+};
 
 function setQuad(mesh: THREE.Mesh | THREE.LineLoop, c: readonly Vec3[], order: readonly number[]) {
   const pos = mesh.geometry.getAttribute('position') as THREE.BufferAttribute;
@@ -142,6 +130,10 @@ function apply(o: Objects, s: Shown, framedFor: { current: string }) {
   (o.samplesDir.material as THREE.PointsMaterial).color.set(dk ? 0x7ee787 : 0x1d7a3a);
   (o.samplesOnMiss.material as THREE.PointsMaterial).color.set(dk ? 0xf47067 : 0xc0392b);
   (o.samplesDirMiss.material as THREE.PointsMaterial).color.set(dk ? 0xf47067 : 0xc0392b);
+  // the point, its normal and the rays to the newest samples: the series blue of the theme (≥ 3 : 1
+  // on the view's background in both)
+  const blue = dk ? 0x79b8ff : 0x1f5fa8;
+  for (const obj of [o.point, o.normal, o.rays]) obj.material.color.set(blue);
   const next = [0, 0]; // next index in the wasted (0) and contributing (1) buffers
   o.hitsBefore[0] = 0;
   for (let i = 0; i < n; i++) {
@@ -199,6 +191,109 @@ function apply(o: Objects, s: Shown, framedFor: { current: string }) {
   o.ctx.invalidate();
 }
 
+/**
+ * The view's objects, in the order they are added to the scene. Samples that contribute are drawn
+ * as large dots and wasted ones as small dots, so that they are not told apart by colour alone.
+ */
+function createParts(T: ThreeModule) {
+  const quadGeo = (verts: number) => {
+    const g = new T.BufferGeometry();
+    g.setAttribute('position', new T.BufferAttribute(new Float32Array(verts * 3), 3));
+    return g;
+  };
+  const lightGeo = quadGeo(6);
+  const lightFront = new T.Mesh(lightGeo, new T.MeshBasicMaterial({ color: 0xffd35a, side: T.FrontSide }));
+  const lightBack = new T.Mesh(lightGeo, new T.MeshBasicMaterial({ color: 0x3b3b3b, side: T.BackSide }));
+  const lightEdge = new T.LineLoop(quadGeo(4), new T.LineBasicMaterial({ color: 0xb34700 }));
+  const occluder = new T.Mesh(quadGeo(6), new T.MeshLambertMaterial({ color: 0x6b6f78, side: T.DoubleSide }));
+  const point = new T.Mesh(new T.SphereGeometry(0.035, 16, 12), new T.MeshBasicMaterial({ color: 0x1f5fa8 }));
+  const nGeo = new T.BufferGeometry();
+  nGeo.setAttribute('position', new T.Float32BufferAttribute([0, 0, 0, 0, 0, 0.5], 3));
+  const normal = new T.Line(nGeo, new T.LineBasicMaterial({ color: 0x1f5fa8 }));
+  // Unit hemisphere wireframe: 6 meridians and 3 parallels.
+  const hv: number[] = [];
+  const seg = 48;
+  for (let k = 0; k < 6; k++) {
+    const ph = (k * Math.PI) / 6;
+    for (let s = 0; s < seg; s++) {
+      const a = (s / seg) * Math.PI,
+        b = ((s + 1) / seg) * Math.PI;
+      hv.push(Math.cos(a) * Math.cos(ph), Math.cos(a) * Math.sin(ph), Math.sin(a));
+      hv.push(Math.cos(b) * Math.cos(ph), Math.cos(b) * Math.sin(ph), Math.sin(b));
+    }
+  }
+  for (const th of [0, Math.PI / 6, Math.PI / 3]) {
+    for (let s = 0; s < 2 * seg; s++) {
+      const a = (s / (2 * seg)) * 2 * Math.PI,
+        b = ((s + 1) / (2 * seg)) * 2 * Math.PI;
+      hv.push(Math.cos(th) * Math.cos(a), Math.cos(th) * Math.sin(a), Math.sin(th));
+      hv.push(Math.cos(th) * Math.cos(b), Math.cos(th) * Math.sin(b), Math.sin(th));
+    }
+  }
+  const hemiGeo = new T.BufferGeometry();
+  hemiGeo.setAttribute('position', new T.Float32BufferAttribute(hv, 3));
+  const hemi = new T.LineSegments(
+    hemiGeo,
+    new T.LineBasicMaterial({ color: 0x8a8f98, transparent: true, opacity: 0.45 }),
+  );
+  const floor = new T.Mesh(
+    new T.PlaneGeometry(1, 1),
+    new T.MeshLambertMaterial({ color: 0xcfc9b8, transparent: true, opacity: 0.55, side: T.DoubleSide }),
+  );
+  const grid = new T.GridHelper(8, 8, 0x888888, 0xaaaaaa);
+  grid.rotation.x = Math.PI / 2; // GridHelper lies in xz; make it the z = 0 floor
+  (grid.material as THREE.Material).transparent = true;
+
+  const pts = (size: number) => {
+    const g = new T.BufferGeometry();
+    g.setAttribute('position', new T.BufferAttribute(new Float32Array(MAX_SAMPLES * 3), 3));
+    return new T.Points(g, new T.PointsMaterial({ size, sizeAttenuation: false }));
+  };
+  // contributing samples large, wasted ones small (and a different colour)
+  const samplesOn = pts(5);
+  const samplesOnMiss = pts(2.5);
+  const samplesDir = pts(4);
+  const samplesDirMiss = pts(2);
+  const rayGeo = new T.BufferGeometry();
+  rayGeo.setAttribute('position', new T.BufferAttribute(new Float32Array(RAYS * 6), 3));
+  const rays = new T.LineSegments(
+    rayGeo,
+    new T.LineBasicMaterial({ color: 0x1f5fa8, transparent: true, opacity: 0.35 }),
+  );
+  const patch = new T.Mesh(
+    quadGeo(6),
+    new T.MeshBasicMaterial({
+      color: 0xe4572e,
+      side: T.DoubleSide,
+      polygonOffset: true,
+      polygonOffsetFactor: -2,
+      polygonOffsetUnits: -2,
+    }),
+  );
+  const patchRays = new T.LineSegments(quadGeo(8), new T.LineBasicMaterial({ color: 0xe4572e }));
+  const patchProj = new T.Mesh(quadGeo(6), new T.MeshBasicMaterial({ color: 0xe4572e, side: T.DoubleSide }));
+  // in the order they are added to the scene
+  return {
+    floor,
+    grid,
+    lightFront,
+    lightBack,
+    lightEdge,
+    occluder,
+    point,
+    normal,
+    hemi,
+    samplesOn,
+    samplesOnMiss,
+    samplesDir,
+    samplesDirMiss,
+    rays,
+    patch,
+    patchRays,
+    patchProj,
+  };
+}
+
 export function Scene3D({
   model,
   strategy,
@@ -233,112 +328,7 @@ export function Scene3D({
   }
 
   const setup = (ctx: ViewportContext) => {
-    const T = ctx.THREE;
-    const quadGeo = (verts: number) => {
-      const g = new T.BufferGeometry();
-      g.setAttribute('position', new T.BufferAttribute(new Float32Array(verts * 3), 3));
-      return g;
-    };
-    const lightGeo = quadGeo(6);
-    const lightFront = new T.Mesh(lightGeo, new T.MeshBasicMaterial({ color: 0xffd35a, side: T.FrontSide }));
-    const lightBack = new T.Mesh(lightGeo, new T.MeshBasicMaterial({ color: 0x3b3b3b, side: T.BackSide }));
-    const lightEdge = new T.LineLoop(quadGeo(4), new T.LineBasicMaterial({ color: 0xb34700 }));
-    const occluder = new T.Mesh(
-      quadGeo(6),
-      new T.MeshLambertMaterial({ color: 0x6b6f78, side: T.DoubleSide }),
-    );
-    const point = new T.Mesh(
-      new T.SphereGeometry(0.035, 16, 12),
-      new T.MeshBasicMaterial({ color: 0x1f5fa8 }),
-    );
-    const nGeo = new T.BufferGeometry();
-    nGeo.setAttribute('position', new T.Float32BufferAttribute([0, 0, 0, 0, 0, 0.5], 3));
-    const normal = new T.Line(nGeo, new T.LineBasicMaterial({ color: 0x1f5fa8 }));
-    // Unit hemisphere wireframe: 6 meridians and 3 parallels.
-    const hv: number[] = [];
-    const seg = 48;
-    for (let k = 0; k < 6; k++) {
-      const ph = (k * Math.PI) / 6;
-      for (let s = 0; s < seg; s++) {
-        const a = (s / seg) * Math.PI,
-          b = ((s + 1) / seg) * Math.PI;
-        hv.push(Math.cos(a) * Math.cos(ph), Math.cos(a) * Math.sin(ph), Math.sin(a));
-        hv.push(Math.cos(b) * Math.cos(ph), Math.cos(b) * Math.sin(ph), Math.sin(b));
-      }
-    }
-    for (const th of [0, Math.PI / 6, Math.PI / 3]) {
-      for (let s = 0; s < 2 * seg; s++) {
-        const a = (s / (2 * seg)) * 2 * Math.PI,
-          b = ((s + 1) / (2 * seg)) * 2 * Math.PI;
-        hv.push(Math.cos(th) * Math.cos(a), Math.cos(th) * Math.sin(a), Math.sin(th));
-        hv.push(Math.cos(th) * Math.cos(b), Math.cos(th) * Math.sin(b), Math.sin(th));
-      }
-    }
-    const hemiGeo = new T.BufferGeometry();
-    hemiGeo.setAttribute('position', new T.Float32BufferAttribute(hv, 3));
-    const hemi = new T.LineSegments(
-      hemiGeo,
-      new T.LineBasicMaterial({ color: 0x8a8f98, transparent: true, opacity: 0.45 }),
-    );
-    const floor = new T.Mesh(
-      new T.PlaneGeometry(1, 1),
-      new T.MeshLambertMaterial({ color: 0xcfc9b8, transparent: true, opacity: 0.55, side: T.DoubleSide }),
-    );
-    const grid = new T.GridHelper(8, 8, 0x888888, 0xaaaaaa);
-    grid.rotation.x = Math.PI / 2; // GridHelper lies in xz; make it the z = 0 floor
-    (grid.material as THREE.Material).transparent = true;
-
-    const pts = (size: number) => {
-      const g = new T.BufferGeometry();
-      g.setAttribute('position', new T.BufferAttribute(new Float32Array(MAX_SAMPLES * 3), 3));
-      return new T.Points(g, new T.PointsMaterial({ size, sizeAttenuation: false }));
-    };
-    // contributing samples large, wasted ones small (and a different colour)
-    const samplesOn = pts(5);
-    const samplesOnMiss = pts(2.5);
-    const samplesDir = pts(4);
-    const samplesDirMiss = pts(2);
-    const rayGeo = new T.BufferGeometry();
-    rayGeo.setAttribute('position', new T.BufferAttribute(new Float32Array(RAYS * 6), 3));
-    const rays = new T.LineSegments(
-      rayGeo,
-      new T.LineBasicMaterial({ color: 0x1f5fa8, transparent: true, opacity: 0.35 }),
-    );
-    const patch = new T.Mesh(
-      quadGeo(6),
-      new T.MeshBasicMaterial({
-        color: 0xe4572e,
-        side: T.DoubleSide,
-        polygonOffset: true,
-        polygonOffsetFactor: -2,
-        polygonOffsetUnits: -2,
-      }),
-    );
-    const patchRays = new T.LineSegments(quadGeo(8), new T.LineBasicMaterial({ color: 0xe4572e }));
-    const patchProj = new T.Mesh(
-      quadGeo(6),
-      new T.MeshBasicMaterial({ color: 0xe4572e, side: T.DoubleSide }),
-    );
-    // in the order they are added to the scene
-    const parts = {
-      floor,
-      grid,
-      lightFront,
-      lightBack,
-      lightEdge,
-      occluder,
-      point,
-      normal,
-      hemi,
-      samplesOn,
-      samplesOnMiss,
-      samplesDir,
-      samplesDirMiss,
-      rays,
-      patch,
-      patchRays,
-      patchProj,
-    };
+    const parts = createParts(ctx.THREE);
     for (const obj of Object.values(parts)) {
       obj.frustumCulled = false;
       ctx.scene.add(obj);
@@ -354,12 +344,7 @@ export function Scene3D({
 
   return (
     <div className="al-viewport">
-      <Viewport
-        ariaLabel="3D view: the floor, the shading point with its unit hemisphere, the rectangular light, the samples and the Q6(a) patch"
-        height={height}
-        setup={setup}
-        testId="al-3d"
-      >
+      <Viewport ariaLabel={VIEW_LABEL} height={height} setup={setup} testId="al-3d">
         <button
           type="button"
           className="al-frame"

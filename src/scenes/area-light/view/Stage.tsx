@@ -14,6 +14,7 @@ import {
   type Timeline,
 } from '../../../ui';
 import type { LightStrategy } from '../../../core/lights';
+import type { SceneMode } from '../../../kit/scene';
 import { animationFrame, sampleRun, type SampleRun } from '../animation';
 import { STRATEGY_LABEL, STRATEGY_SHORT, type AreaLightModel } from '../model';
 import { describeAreaLight, describeRunning } from './describe';
@@ -25,12 +26,24 @@ function LiveScene3D({
   tl,
   run,
   ...rest
-}: { tl: Timeline; run: SampleRun } & Omit<ComponentProps<typeof Scene3D>, 'count' | 'countRef'>) {
+}: { tl: Timeline; run: SampleRun } & Omit<
+  ComponentProps<typeof Scene3D>,
+  'strategy' | 'samples' | 'terms' | 'count' | 'countRef'
+>) {
   const countRef = useRef<((k: number) => void) | null>(null);
   const latest = useRef(run);
   latest.current = run;
   useTimelineFrame(tl, (t) => countRef.current?.(animationFrame(latest.current, t).k));
-  return <Scene3D {...rest} count={animationFrame(run, tl.now()).k} countRef={countRef} />;
+  return (
+    <Scene3D
+      {...rest}
+      strategy={run.strategy}
+      samples={run.points}
+      terms={run.terms}
+      count={animationFrame(run, tl.now()).k}
+      countRef={countRef}
+    />
+  );
 }
 
 /**
@@ -78,30 +91,31 @@ export function Stage({
   stageRef,
   model,
   strategy,
-  animMax,
+  count,
   seed,
+  reference: target,
   patch,
-  vpHeight,
-  dark,
-  target,
-  ask,
+  mode,
 }: {
   tl: Timeline;
   stageRef: RefObject<HTMLDivElement | null>;
   model: AreaLightModel;
   strategy: LightStrategy;
-  animMax: number;
+  /** Samples in the animation. */
+  count: number;
   seed: number;
+  reference: number;
   patch: NonNullable<ComponentProps<typeof Scene3D>['patch']>;
-  vpHeight: number | string;
-  dark: boolean;
-  target: number;
-  /** Asked to predict first: the running estimate and the transport are hidden. */
-  ask: boolean;
+  /** Asked to predict first (`mode.ask`): the running estimate and the transport are hidden. */
+  mode: SceneMode;
 }) {
-  const run = useMemo(() => sampleRun(model, strategy, animMax, seed), [model, strategy, animMax, seed]);
+  const { ask } = mode;
+  // what the 3D view shows besides the samples; in classroom mode it fills the stage's height (CSS),
+  // elsewhere it has a fixed height
+  const view = { model, patch, height: mode.present ? '100%' : 380, dark: mode.theme === 'dark' };
+  const run = useMemo(() => sampleRun(model, strategy, count, seed), [model, strategy, count, seed]);
   const af = animationFrame(run, tl.t);
-  const fmtPos = useCallback((t: number) => `${Math.floor(t)} of ${animMax} samples`, [animMax]);
+  const fmtPos = useCallback((t: number) => `${Math.floor(t)} of ${count} samples`, [count]);
   const description = describeAreaLight(model, patch, { strategy, run, frame: af, target, hidden: ask });
   return (
     <div className="al-stage-wrap">
@@ -114,17 +128,7 @@ export function Stage({
       >
         <div className="al-stage" ref={stageRef}>
           <div className="al-stage-3d">
-            <LiveScene3D
-              tl={tl}
-              run={run}
-              model={model}
-              strategy={strategy}
-              samples={run.points}
-              terms={run.terms}
-              patch={patch}
-              height={vpHeight}
-              dark={dark}
-            />
+            <LiveScene3D tl={tl} run={run} {...view} />
           </div>
           <div className="al-stage-transport">
             <Revealed

@@ -12,6 +12,7 @@ import type { DrawStats, Lobe } from '../model';
 import { cdfCurve, histogramCdf, marginalShape } from '../marginals';
 import { LEGEND_ABOVE, titled } from './plotTitle';
 import { modelCurve } from './Plots';
+import { REFERENCE, SAMPLED } from './plotColors';
 
 const num = (x: number) => formatSignificant(x, 3, 'times');
 /** Points per histogram bin on the model's CDF (so the table can read it at the bins' edges). */
@@ -57,7 +58,7 @@ function CdfPlot({
         x: Array.from(samples.x),
         y: Array.from(samples.y),
         name: 'samples',
-        marker: { color: 'rgba(70,120,200,0.9)', size: 5, symbol: 'square' },
+        marker: { color: SAMPLED, size: 5, symbol: 'square' },
       });
     if (at && pAt !== null)
       out.push({
@@ -66,7 +67,7 @@ function CdfPlot({
         x: [at.x, at.x, 0],
         y: [0, pAt, pAt],
         name: `first sample: P(${v}₁)${inverts ? ' = ξ' : ''}`,
-        line: { color: 'rgba(120,120,120,0.9)', dash: 'dot', width: 1.5 },
+        line: { color: REFERENCE, dash: 'dot', width: 1.5 },
         marker: { size: [0, 9, 0], symbol: 'diamond' },
       });
     return out;

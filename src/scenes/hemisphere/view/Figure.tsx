@@ -8,7 +8,6 @@ import type { SceneProps } from '../../../kit/scene';
 import {
   DescribedFigure,
   prefersReducedMotion,
-  Select,
   TimelineTransport,
   Toggle,
   useTimeline,
@@ -17,11 +16,12 @@ import {
 } from '../../../ui';
 import { formatCount } from '../../../ui/format';
 import { fillSequence2D } from '../../../core/random';
-import { animDuration, animFrame, type AnimFrame, type AnimKind } from '../model';
+import { animDuration, animFrame, type AnimFrame, type AnimKind, type Lobe } from '../model';
 import { Stage } from '../../../ui/stage';
-import { FigureCaption, FigureReadouts, type FigureState } from './FigureText';
-import type { HemisphereSchema } from '../params';
-import type { PointsArgs } from '../jobs';
+import { FigureCaption, FigureReadouts } from './FigureText';
+import { bindControls } from '../../../ui/paramControls';
+import { schema, type HemisphereSchema } from '../params';
+import { pointsArgsOf } from '../jobs';
 // Static, not lazy: the 3D panel is on the first screen, and a Suspense fallback of another height
 // shifted the layout when it arrived (three.js itself still loads lazily, inside Viewport).
 import { HemisphereView } from './HemisphereView';
@@ -45,20 +45,14 @@ const SquareMemo = memo(UnitSquare);
 const stageViewHeight = (held: boolean) =>
   `max(9rem, calc(100dvh - var(--stage-top, 0px) - ${held ? 12 : 10.5}rem))`;
 
-interface FigureProps extends FigureState {
-  /** What the 3D view's points depend on (../jobs pointsArgsOf). */
-  points: PointsArgs;
-  t: number;
-  play: boolean;
-  setParams: SceneProps<HemisphereSchema>['setParams'];
-  present: boolean;
+interface FigureProps extends SceneProps<HemisphereSchema> {
+  /** The density sampled (null: none, and `problem` is shown instead of the 3D view). */
+  lobe: Lobe | null;
   problem: ReactNode;
   settings: ReactNode;
   /** The followed stratum and how to choose another (stable). */
   cell: Cell | null;
   onPickCell: PickCell;
-  /** Results hidden (ask before revealing): no samples on the hemisphere, the morph held at t = 0. */
-  ask: boolean;
   /** The χ² test of the current draw (null while it runs), and why nothing is sampled (no lobe). */
   chi2: HemisphereState['chi2'];
   noLobeText: string;
@@ -71,25 +65,24 @@ interface FigureProps extends FigureState {
  * the unit square and the settings are memoised. Paused, everything renders the exact position.
  */
 export function Figure({
-  lobe,
-  points,
-  lobeId,
-  kind,
-  seed,
-  n,
-  anim,
-  t,
-  play,
+  params,
   setParams,
-  present,
+  mode: { present, ask },
+  lobe,
   problem,
   settings,
   cell,
   onPickCell,
-  ask,
   chi2,
   noLobeText,
 }: FigureProps) {
+  const { points: kind, seed, n, anim, lobe: lobeId } = params;
+  // the (ξ₁, ξ₂) points that both the unit square and the 3D view draw
+  const pointSet = { kind, seed, n };
+  const play = params.play === true;
+  // a link with play=1 and t at its end plays from the start
+  const t = play && !prefersReducedMotion() && Number(params.t) >= 1 ? 0 : Number(params.t);
+  // results hidden (ask before revealing): no samples on the hemisphere, the morph held at t = 0
   const box = useRef<HTMLDivElement>(null);
   const tl = useTimeline({
     t: ask ? 0 : t,
@@ -141,15 +134,7 @@ export function Figure({
       : `t = ${x.toFixed(2)}: ${formatCount(frame.shown)} of ${formatCount(n)}`;
   };
   const text = { tl, lobe, lobeId, kind, seed, n, anim, ask };
-  const animSelect = (
-    <Select
-      label="Animation"
-      value={anim}
-      options={ANIM_OPTIONS}
-      onChange={(v) => setParams({ anim: v })}
-      testId="anim"
-    />
-  );
+  const animSelect = bindControls(schema, params, setParams).select('anim', 'Animation', ANIM_OPTIONS);
   const transport = (
     <TimelineTransport
       timeline={tl}
@@ -196,10 +181,8 @@ export function Figure({
                 height={present ? stageViewHeight(ask) : 400}
                 tl={tl}
                 lobe={lobe}
-                points={points}
-                kind={kind}
-                seed={seed}
-                n={n}
+                points={pointsArgsOf(params)}
+                {...pointSet}
                 anim={anim}
                 showPoints={showPoints && !ask}
                 showGrid={showGrid}
@@ -223,9 +206,7 @@ export function Figure({
           </DescribedFigure>
           <div className="hemi-figure-side">
             <SquareMemo
-              kind={kind}
-              seed={seed}
-              n={n}
+              {...pointSet}
               size={present ? 260 : 240}
               cell={cell}
               onPick={onPickCell}

@@ -16,6 +16,7 @@ import {
   warpF32Table,
 } from '../../../core/sampling';
 import { hemisphereChi2, sidakAlpha } from '../../../core/verify';
+import { ErrorTable } from './ErrorTable';
 import { makeWarpPass, readDirections, syncGpu, type WarpPass } from './gpu/warpShader';
 
 /** Directions per GPU pass. */
@@ -32,52 +33,39 @@ const ALPHA = 0.01;
 const xiText = (xi: number) =>
   xi > 0.5 ? `1 − ${formatNumber(1 - xi, 3)}` : xi === 0.5 ? '0.5' : formatNumber(xi, 3);
 
-function ErrCell({ rel, ulps }: { rel: number; ulps: number }) {
-  const bad = rel > 1e-5;
-  return (
-    <td className={bad ? 'err-bad' : 'err-ok'}>
-      {rel === 0 ? 'exact' : formatNumber(rel, 2)}
-      <span className="small">
-        {' '}
-        {rel === 0 ? '' : `(${ulps < 1e6 ? formatNumber(ulps, 2) : '≫10⁶'} ulp)`}
-      </span>
-    </td>
-  );
-}
-
 /** The float32 forms near ξ → 0 and ξ → 1 against float64. */
 function Float32WarpTable() {
   const rows = useMemo(() => warpF32Table(), []);
   return (
-    <div className="table-scroll" tabIndex={0} role="group" aria-label="float32 inversion errors">
-      <table className="stability-table" data-testid="warp-f32-table">
+    <ErrorTable
+      label="float32 inversion errors"
+      role="group"
+      testId="warp-f32-table"
+      caption={
         <caption className="small">
           Relative error in float32 (and in float32 ulps) against the float64 stable forms. ξ is a float32
           value.
         </caption>
-        <thead>
-          <tr>
-            <th scope="col">ξ</th>
-            <th scope="col">θ = ½ arccos(1 − 2ξ)</th>
-            <th scope="col">θ = arcsin √ξ</th>
-            <th scope="col">φ = ln(c ξ + 1)</th>
-            <th scope="col">φ = log1p(c ξ)</th>
-          </tr>
-        </thead>
-        <tbody>
-          {rows.map((r) => (
-            <tr key={r.xi}>
-              <th scope="row" className="mono">
-                {xiText(r.xi)}
-              </th>
-              {r.forms.map((f) => (
-                <ErrCell key={f.id} rel={f.relError} ulps={f.ulps} />
-              ))}
-            </tr>
-          ))}
-        </tbody>
-      </table>
-    </div>
+      }
+      columns={
+        <>
+          <th scope="col">θ = ½ arccos(1 − 2ξ)</th>
+          <th scope="col">θ = arcsin √ξ</th>
+          <th scope="col">φ = ln(c ξ + 1)</th>
+          <th scope="col">φ = log1p(c ξ)</th>
+        </>
+      }
+      rows={rows.map((r) => ({
+        key: r.xi,
+        lead: (
+          <th scope="row" className="mono">
+            {xiText(r.xi)}
+          </th>
+        ),
+        forms: r.forms,
+      }))}
+      tolerance={1e-5}
+    />
   );
 }
 

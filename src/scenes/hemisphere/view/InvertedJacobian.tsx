@@ -8,6 +8,7 @@ import { MathTex, Notice, Plot, Slider, Readout, formatNumber } from '../../../u
 import { LEGEND_INSIDE, titled } from './plotTitle';
 import { examLobeK, invertedJacobianDensity, invertedJacobianPartialIntegral } from '../../../core/sampling';
 import { invertedJacobianSeries } from '../model';
+import { MODEL, SAMPLED } from './plotColors';
 
 export function InvertedJacobian() {
   const [eps, setEps] = useState(1e-3);
@@ -61,7 +62,7 @@ export function InvertedJacobian() {
               x: dens.x,
               y: dens.y,
               name: '2 cot θ',
-              line: { color: '#c0392b', width: 2.5 },
+              line: { color: MODEL, width: 2.5 },
             },
           ]}
           layout={{
@@ -80,7 +81,7 @@ export function InvertedJacobian() {
               x: Array.from(series.eps),
               y: Array.from(series.partial),
               name: '−ln sin ε',
-              line: { color: '#1f5fa8' },
+              line: { color: SAMPLED },
               marker: { size: 4 },
             },
             {
@@ -89,7 +90,7 @@ export function InvertedJacobian() {
               x: [eps],
               y: [partial],
               name: 'ε chosen',
-              marker: { size: 11, color: '#c0392b' },
+              marker: { size: 11, color: MODEL },
             },
           ]}
           layout={{

@@ -10,6 +10,7 @@ import { LEGEND_ABOVE, titled } from './plotTitle';
 import type { DrawStats, Lobe } from '../model';
 import { marginalShape } from '../marginals';
 import { chi2Bin, describeChi2Bins, describeMarginal } from './describe';
+import { BAR_OPACITY, MODEL, SAMPLED } from './plotColors';
 
 function histTraces(h: MarginalHist, name: string): PlotTrace[] {
   return [
@@ -19,7 +20,8 @@ function histTraces(h: MarginalHist, name: string): PlotTrace[] {
       y: Array.from(h.density),
       width: h.width,
       name: `samples`,
-      marker: { color: 'rgba(70,120,200,0.55)' },
+      marker: { color: SAMPLED },
+      opacity: BAR_OPACITY,
     },
     modelCurve(h.curveX, h.curveY, `p(${name})`),
   ];
@@ -35,7 +37,7 @@ export function modelCurve(x: ArrayLike<number>, y: ArrayLike<number>, name: str
     x: Array.from(x),
     y: Array.from(y),
     name,
-    line: { color: '#d0502a', width: 2.5 },
+    line: { color: MODEL, width: 2.5 },
   };
 }
 

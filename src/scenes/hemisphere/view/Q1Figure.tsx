@@ -1,43 +1,39 @@
 /**
- * Q1's figure panel as the scene places it: the figure on the timeline (a link with play=1 and t at
- * its end plays from the start), what it shows when there is nothing to sample, and the followed
- * stratum read from and written to the URL (`cell=i,j`), with a notice when the link's value had to
- * be changed.
+ * Q1's figure panel as the scene places it: the figure on the timeline, what it shows when there is
+ * nothing to sample, and the followed stratum read from and written to the URL (`cell=i,j`), with a
+ * notice when the link's value had to be changed.
  */
 import { useCallback, useMemo, type ComponentProps, type ReactNode } from 'react';
 import type { SceneProps } from '../../../kit/scene';
-import { Notice, Panel, prefersReducedMotion } from '../../../ui';
+import { Notice, Panel } from '../../../ui';
 import type { Lobe } from '../model';
-import type { HemisphereParams, HemisphereSchema } from '../params';
+import type { HemisphereSchema } from '../params';
 import { cellFromParam, type Cell } from '../stratum';
 import { Figure } from './Figure';
-import { pointsArgsOf } from '../jobs';
+
+/** Why a typed density cannot be sampled: what went wrong, and the parser's or the check's message. */
+export interface DensityProblem {
+  what: string;
+  message: string;
+}
 
 export function Q1Figure({
-  params,
-  setParams,
-  present,
-  ask,
   lobe,
-  inverted,
   densityProblem,
-  pdfError,
-  settings,
+  children: settings,
   chi2,
-}: {
-  params: HemisphereParams;
-  setParams: SceneProps<HemisphereSchema>['setParams'];
-  present: boolean;
-  ask: boolean;
+  ...scene
+}: SceneProps<HemisphereSchema> & {
+  /** The density sampled (null when there is none: a bad typed density, or the paper's Jacobian). */
   lobe: Lobe | null;
-  inverted: boolean;
-  /** Why the typed density cannot be sampled (null when it can). */
-  densityProblem: ReactNode;
-  /** The same in words, for the figure's description. */
-  pdfError: string | null;
-  settings: ReactNode;
+  /** Why the typed density cannot be sampled (null when it can, or is not chosen). */
+  densityProblem: DensityProblem | null;
+  /** The settings, beside the figure (in the classroom stage's drawer). */
+  children: ReactNode;
   chi2: ComponentProps<typeof Figure>['chi2'];
 }) {
+  const { params, setParams } = scene;
+  const inverted = params.jacobian === 'inverted';
   const cellKey = params.cell ? params.cell.join(',') : '';
   const { cell, problem } = useMemo(
     () => cellFromParam(cellKey ? cellKey.split(',').map(Number) : null),
@@ -52,17 +48,8 @@ export function Q1Figure({
         </Notice>
       ) : null}
       <Figure
+        {...scene}
         lobe={lobe}
-        points={pointsArgsOf(params)}
-        kind={params.points}
-        seed={params.seed}
-        n={params.n}
-        anim={params.anim}
-        t={params.play === true && !prefersReducedMotion() && Number(params.t) >= 1 ? 0 : Number(params.t)}
-        play={params.play === true}
-        setParams={setParams}
-        present={present}
-        lobeId={params.lobe}
         problem={
           inverted ? (
             <Notice kind="warn" testId="figure-no-density">
@@ -70,25 +57,28 @@ export function Q1Figure({
               <sup>φ</sup> is not a density (its θ-integral diverges; see (b)). Choose &ldquo;sin θ ·
               p(ω)&rdquo; under Jacobian to sample the exam&apos;s lobe.
             </Notice>
+          ) : densityProblem ? (
+            <Notice kind="error" testId="custom-error">
+              {densityProblem.what}: {densityProblem.message}. Nothing is sampled until it is fixed.
+            </Notice>
           ) : (
-            (densityProblem ?? <Notice kind="warn">No valid density to sample yet.</Notice>)
+            <Notice kind="warn">No valid density to sample yet.</Notice>
           )
         }
         settings={settings}
         cell={cell}
         onPickCell={onPickCell}
-        ask={ask}
         chi2={chi2}
         noLobeText={
           inverted
             ? 'with the identity as printed on the paper, p(θ, φ) = k cot θ eᵠ is not a density (its θ-integral diverges at the pole).'
-            : pdfError
-              ? `the typed density cannot be used: ${pdfError}.`
+            : densityProblem
+              ? `the typed density cannot be used: ${densityProblem.message}.`
               : 'there is no valid density to sample yet.'
         }
       />
     </>
   );
   // on the classroom stage the figure stands on its own, first on the page
-  return present ? body : <Panel className="hemi-figure-panel">{body}</Panel>;
+  return scene.mode.present ? body : <Panel className="hemi-figure-panel">{body}</Panel>;
 }

@@ -12,8 +12,9 @@ import { estimateFromTerms, type McEstimate } from '../../../core/estimators';
 import type { SequenceKind } from '../../../core/random';
 import type { RmseResult, VarianceCheck } from '../model';
 import type { LobeId } from '../params';
-
-import type { RepeatResult } from '../jobs';
+import type { RepeatArgs, RepeatResult } from '../jobs';
+import { isCosTheta } from '../expr';
+import { BAR_OPACITY, IMPORTANCE, REFERENCE, UNIFORM } from './plotColors';
 
 const KIND_NAME: Record<SequenceKind, string> = {
   independent: 'independent',
@@ -213,20 +214,15 @@ export function VarianceWarning({
 export function RepeatView({
   result,
   exact,
-  runs,
-  perRun,
-  lobe,
-  exponent,
-  fIsCos,
+  args,
 }: {
   result: RepeatResult;
   exact: number;
-  runs: number;
-  perRun: number;
-  lobe: LobeId;
-  exponent: number;
-  fIsCos: boolean;
+  /** The arguments of the run: its counts, and the lobe and f that the summary explains. */
+  args: Pick<RepeatArgs, 'runs' | 'perRun' | 'lobe' | 'exponent' | 'f'>;
 }) {
+  const { runs, perRun, lobe, exponent } = args;
+  const fIsCos = isCosTheta(args.f);
   const u = useMemo(() => meanSe(result.uniform), [result]);
   const im = useMemo(() => meanSe(result.importance), [result]);
   const hasImp = Number.isFinite(im.mean);
@@ -247,8 +243,8 @@ export function RepeatView({
         type: 'histogram',
         x: Array.from(result.uniform),
         name: 'uniform',
-        opacity: 0.6,
-        marker: { color: '#1f5fa8' },
+        opacity: BAR_OPACITY,
+        marker: { color: UNIFORM },
         xbins,
         autobinx: false,
       },
@@ -258,8 +254,8 @@ export function RepeatView({
         type: 'histogram',
         x: Array.from(result.importance),
         name: 'importance',
-        opacity: 0.55,
-        marker: { color: '#d0502a' },
+        opacity: BAR_OPACITY,
+        marker: { color: IMPORTANCE },
         xbins,
         autobinx: false,
       });
@@ -284,7 +280,7 @@ export function RepeatView({
                   yref: 'paper',
                   y0: 0,
                   y1: 1,
-                  line: { color: '#888', width: 2, dash: 'dash' },
+                  line: { color: REFERENCE, width: 2, dash: 'dash' },
                 },
               ]
             : [],

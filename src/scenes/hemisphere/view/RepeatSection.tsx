@@ -12,13 +12,14 @@ export function RepeatSection({
   repeat,
   fOk,
   exact,
-  ...view
+  args,
 }: {
   repeat: Pick<WorkerJob<RepeatResult, unknown>, 'result' | 'running' | 'progress' | 'error' | 'run'>;
   /** Whether the integrand compiled. */
   fOk: boolean;
   exact: number | null;
-} & Omit<ComponentProps<typeof RepeatView>, 'result' | 'exact'>) {
+  args: ComponentProps<typeof RepeatView>['args'];
+}) {
   return (
     <>
       <div className="repeat-row">
@@ -28,16 +29,16 @@ export function RepeatSection({
           disabled={!fOk || repeat.running}
           data-testid="repeat-button"
         >
-          Repeat {view.runs} times (N = {view.perRun} each)
+          Repeat {args.runs} times (N = {args.perRun} each)
         </button>
         {repeat.running ? <span role="status"> running… {Math.round(repeat.progress * 100)} %</span> : null}
         {repeat.error ? <Notice kind="error">{repeat.error.message}</Notice> : null}
       </div>
       {repeat.result && exact !== null ? (
-        <RepeatView result={repeat.result} exact={exact} {...view} />
+        <RepeatView result={repeat.result} exact={exact} args={args} />
       ) : (
         <p className="small">
-          Each run draws {view.perRun} fresh samples; the histogram of the {view.runs} estimates should centre
+          Each run draws {args.perRun} fresh samples; the histogram of the {args.runs} estimates should centre
           on ∫ f dω.
         </p>
       )}

@@ -3,17 +3,27 @@
  * Jacobian, the point set, N and the seed, and the state of the statistics run.
  */
 import type { SceneProps } from '../../../kit/scene';
-import { ExprField, NumberField, Select, Slider } from '../../../ui';
+import { ExprField } from '../../../ui';
+import { bindControls } from '../../../ui/paramControls';
 import type { WorkerJob } from '../../../workers';
-import { MAX_N, POINT_SETS, type HemisphereParams, type HemisphereSchema, type LobeId } from '../params';
+import {
+  LOBES,
+  POINT_SETS,
+  schema,
+  type HemisphereParams,
+  type HemisphereSchema,
+  type LobeId,
+} from '../params';
 
-const LOBE_OPTIONS: { value: LobeId; label: string }[] = [
-  { value: 'exam', label: 'exam: k cos θ eᵠ' },
-  { value: 'uniform', label: 'uniform' },
-  { value: 'cosine', label: 'cosine-weighted' },
-  { value: 'phong', label: 'Phong cosⁿθ' },
-  { value: 'custom', label: 'typed density p(θ, φ)' },
-];
+/** Each lobe's name in the select (a lobe added to LOBES must be named here too). */
+const LOBE_LABEL: Record<LobeId, string> = {
+  exam: 'exam: k cos θ eᵠ',
+  uniform: 'uniform',
+  cosine: 'cosine-weighted',
+  phong: 'Phong cosⁿθ',
+  custom: 'typed density p(θ, φ)',
+};
+const LOBE_OPTIONS = LOBES.map((value) => ({ value, label: LOBE_LABEL[value] }));
 const JACOBIAN_OPTIONS: { value: HemisphereParams['jacobian']; label: string }[] = [
   { value: 'correct', label: 'sin θ · p(ω) (correct)' },
   { value: 'inverted', label: 'p(ω) / sin θ (as on the paper)' },
@@ -35,25 +45,11 @@ export function Settings({
   pdfError: string | null;
   stats: Pick<WorkerJob<unknown, unknown>, 'result' | 'running' | 'waiting' | 'progress'>;
 }) {
+  const c = bindControls(schema, params, setParams);
   return (
     <div className="hemi-controls">
-      <Select
-        label="Sampling density p(ω)"
-        value={params.lobe}
-        options={LOBE_OPTIONS}
-        onChange={(v) => setParams({ lobe: v })}
-        testId="lobe"
-      />
-      {params.lobe === 'phong' ? (
-        <Slider
-          label="Phong exponent n"
-          value={params.exponent}
-          min={0}
-          max={10000}
-          step={1}
-          onChange={(v) => setParams({ exponent: v })}
-        />
-      ) : null}
+      {c.select('lobe', 'Sampling density p(ω)', LOBE_OPTIONS)}
+      {params.lobe === 'phong' ? c.slider('exponent', 'Phong exponent n', { step: 1 }) : null}
       {params.lobe === 'custom' ? (
         <ExprField
           label="p(θ, φ) per steradian (need not be normalized)"
@@ -68,38 +64,10 @@ export function Settings({
           testId="pdf-input"
         />
       ) : null}
-      <Select
-        label="Jacobian p(θ, φ) = …"
-        value={params.jacobian}
-        options={JACOBIAN_OPTIONS}
-        onChange={(v) => setParams({ jacobian: v })}
-        testId="jacobian"
-      />
-      <Select
-        label="Point set (ξ₁, ξ₂)"
-        value={params.points}
-        options={POINT_OPTIONS}
-        onChange={(v) => setParams({ points: v })}
-        testId="points"
-      />
-      <Slider
-        label="Samples N"
-        value={params.n}
-        min={1}
-        max={MAX_N}
-        log
-        step={1}
-        onChange={(v) => setParams({ n: Math.round(v) })}
-        testId="n"
-      />
-      <NumberField
-        label="Seed"
-        value={params.seed}
-        min={0}
-        max={4294967295}
-        step={1}
-        onChange={(v) => setParams({ seed: Math.round(v) })}
-      />
+      {c.select('jacobian', 'Jacobian p(θ, φ) = …', JACOBIAN_OPTIONS)}
+      {c.select('points', 'Point set (ξ₁, ξ₂)', POINT_OPTIONS)}
+      {c.slider('n', 'Samples N', { log: true })}
+      {c.number('seed', 'Seed')}
       <p
         className="small stats-status"
         data-testid="stats-status"

@@ -12,25 +12,13 @@ import {
   stabilityTable,
   type StabilityRow,
 } from '../../../core/sampling';
+import { ErrorTable } from './ErrorTable';
 
 function xiLabel(xi: number): string {
   if (xi === 2 ** -53) return '2⁻⁵³';
   if (xi === 1 - 2 ** -53) return '1 − 2⁻⁵³';
   if (xi > 0.5 && xi < 1) return `1 − ${formatNumber(1 - xi, 2)}`;
   return formatNumber(xi, 3);
-}
-
-function errCell(relError: number, ulps: number) {
-  const bad = relError > 1e-12;
-  return (
-    <td className={bad ? 'err-bad' : 'err-ok'}>
-      {relError === 0 ? 'exact' : `${formatNumber(relError, 2)}`}
-      <span className="small">
-        {' '}
-        {relError === 0 ? '' : `(${ulps < 1e6 ? formatNumber(ulps, 2) : '≫10⁶'} ulp)`}
-      </span>
-    </td>
-  );
 }
 
 export function StabilityPanel() {
@@ -54,49 +42,45 @@ export function StabilityPanel() {
       {(['theta', 'phi'] as const).map((q) => {
         const forms = STABILITY_FORMS.filter((f) => f.quantity === q);
         return (
-          <div
+          <ErrorTable
             key={q}
-            className="table-scroll"
-            tabIndex={0}
+            label={q === 'theta' ? 'errors of the θ forms' : 'errors of the φ forms'}
             role="region"
-            aria-label={q === 'theta' ? 'errors of the θ forms' : 'errors of the φ forms'}
-          >
-            <table className="stability-table">
+            caption={
               <caption>
                 {q === 'theta'
                   ? 'θ(ξ₁): relative error (and ulps) against the 64-digit reference'
                   : 'φ(ξ₂): relative error (and ulps)'}
               </caption>
-              <thead>
-                <tr>
-                  <th scope="col">ξ</th>
-                  <th scope="col">reference</th>
-                  {forms.map((f) => (
-                    <th scope="col" key={f.id}>
-                      <MathTex tex={f.tex} />
-                    </th>
-                  ))}
-                </tr>
-              </thead>
-              <tbody>
-                {rows
-                  .filter((r) => r.quantity === q)
-                  .map((r) => (
-                    <tr key={r.xi}>
-                      <th scope="row">{xiLabel(r.xi)}</th>
-                      <td className="mono">
-                        {r.reference !== 0 && Math.abs(r.reference) < 1e-3
-                          ? r.reference.toExponential(9)
-                          : r.reference.toPrecision(10)}
-                      </td>
-                      {r.forms.map((f) => (
-                        <FragmentCell key={f.id} relError={f.relError} ulps={f.ulps} />
-                      ))}
-                    </tr>
-                  ))}
-              </tbody>
-            </table>
-          </div>
+            }
+            columns={
+              <>
+                <th scope="col">reference</th>
+                {forms.map((f) => (
+                  <th scope="col" key={f.id}>
+                    <MathTex tex={f.tex} />
+                  </th>
+                ))}
+              </>
+            }
+            rows={rows
+              .filter((r) => r.quantity === q)
+              .map((r) => ({
+                key: r.xi,
+                lead: (
+                  <>
+                    <th scope="row">{xiLabel(r.xi)}</th>
+                    <td className="mono">
+                      {r.reference !== 0 && Math.abs(r.reference) < 1e-3
+                        ? r.reference.toExponential(9)
+                        : r.reference.toPrecision(10)}
+                    </td>
+                  </>
+                ),
+                forms: r.forms,
+              }))}
+            tolerance={1e-12}
+          />
         );
       })}
       <p className="small">
@@ -107,8 +91,4 @@ export function StabilityPanel() {
       </p>
     </div>
   );
-}
-
-function FragmentCell({ relError, ulps }: { relError: number; ulps: number }) {
-  return errCell(relError, ulps);
 }

@@ -4,11 +4,11 @@
  * given samples, the chosen pdf and sequence) follows as `estimate`.
  */
 import type { ReactNode } from 'react';
-import { Derivation, ExamPart, Revealed, formatNumber, LiveAnswer, MathTex, Readout } from '../../../ui';
+import { ExamPart, formatNumber, MathTex, Readout } from '../../../ui';
 import { formatCount } from '../../../ui/format';
 import { EXAM_SAMPLES, roundTo, type KeyNote, type SampleTable } from '../model';
 import type { PdfKind, Strategy } from '../params';
-import { MathBlock, n4, squareAt, SumIndexNote, sumRows } from '../view/examMath';
+import { MathBlock, n4, squareAt, sumRows, WorkedAnswer } from '../view/examMath';
 import { KeyFigures, SampleRows } from '../view/WorkedTable';
 
 export function Q4b({
@@ -48,6 +48,40 @@ export function Q4b({
   const p = 1 / (b - a);
   const sum = rows.reduce((s, r) => s + r.f, 0);
   const est = table.uniform.estimate;
+  const headline = (
+    <Readout
+      id="q4-uniform"
+      label="uniform ⟨I⟩ = (b − a)/N Σ f(xᵢ)"
+      value={table.uniform.invalid ? null : table.uniform.estimate}
+      digits={6}
+      note={
+        table.uniform.invalid
+          ? undefined
+          : `to 2 decimals, as the exam writes it: ${roundTo(table.uniform.estimate, 2).toFixed(2)}`
+      }
+    />
+  );
+  const answer = (
+    <>
+      <SampleRows table={table} pdfOk={pdfOk} pdfKind={pdfKind} />
+      <div className="mc-buttons">
+        {given ? (
+          <button type="button" onClick={() => onSamples(null)}>
+            Draw N samples instead
+          </button>
+        ) : (
+          <button type="button" onClick={() => onSamples([...EXAM_SAMPLES])}>
+            Use these four samples for the estimate
+          </button>
+        )}
+      </div>
+      <h5 className="mc-subhead">
+        With the page’s settings ({given ? 'the given samples' : `N = ${formatCount(n)} drawn samples`}, pdf{' '}
+        {pdfKind}, {seq})
+      </h5>
+      {estimate}
+    </>
+  );
   return (
     <ExamPart
       id="4b"
@@ -59,58 +93,28 @@ export function Q4b({
         </>
       }
     >
-      <Revealed ask={ask} what="the derivation and the answer">
-        <Derivation testId="derivation-4b">
-          <p>
-            The pdf is p = 1/(b − a) = {formatNumber(p, 6)}. Evaluate f at each sample, divide by p, and
-            average over the N = {N} samples:
-          </p>
-          <MathBlock>
-            <MathTex
-              display
-              tex={String.raw`\begin{aligned} ${rows.map((r, i) => `f(x_${i + 1}) &= ${c === null ? '' : `${squareAt(r.x, c)} = `}${n4(r.f)}`).join(' \\\\ ')} \end{aligned}`}
-            />
-            <MathTex
-              display
-              tex={String.raw`\begin{aligned} \langle I\rangle &= \frac{1}{${N}}\sum_{i=1}^{${N}} \frac{f(x_i)}{p(x_i)} \\ &= \frac{1}{${N}\cdot ${n4(p)}}\,\big(${sumRows(rows.map((r) => n4(r.f)))}\big) \\ &= \frac{${n4(sum)}}{${N}\cdot ${n4(p)}} = ${formatNumber(est, 8)} \end{aligned}`}
-            />
-          </MathBlock>
-        </Derivation>
-        <LiveAnswer testId="answer-4b">
-          <div className="readouts mc-headline">
-            <Readout
-              id="q4-uniform"
-              label="uniform ⟨I⟩ = (b − a)/N Σ f(xᵢ)"
-              value={table.uniform.invalid ? null : table.uniform.estimate}
-              digits={6}
-              note={
-                table.uniform.invalid
-                  ? undefined
-                  : `to 2 decimals, as the exam writes it: ${roundTo(table.uniform.estimate, 2).toFixed(2)}`
-              }
-            />
-          </div>
-          <SampleRows table={table} pdfOk={pdfOk} pdfKind={pdfKind} />
-          <div className="mc-buttons">
-            {given ? (
-              <button type="button" onClick={() => onSamples(null)}>
-                Draw N samples instead
-              </button>
-            ) : (
-              <button type="button" onClick={() => onSamples([...EXAM_SAMPLES])}>
-                Use these four samples for the estimate
-              </button>
-            )}
-          </div>
-          <h5 className="mc-subhead">
-            With the page’s settings ({given ? 'the given samples' : `N = ${formatCount(n)} drawn samples`},
-            pdf {pdfKind}, {seq})
-          </h5>
-          {estimate}
-        </LiveAnswer>
-        <SumIndexNote part="4b" />
-        <KeyFigures keyNotes={keyNotes} a={a} b={b} />
-      </Revealed>
+      <WorkedAnswer
+        part="4b"
+        ask={ask}
+        headline={headline}
+        answer={answer}
+        after={<KeyFigures keyNotes={keyNotes} a={a} b={b} />}
+      >
+        <p>
+          The pdf is p = 1/(b − a) = {formatNumber(p, 6)}. Evaluate f at each sample, divide by p, and average
+          over the N = {N} samples:
+        </p>
+        <MathBlock>
+          <MathTex
+            display
+            tex={String.raw`\begin{aligned} ${rows.map((r, i) => `f(x_${i + 1}) &= ${c === null ? '' : `${squareAt(r.x, c)} = `}${n4(r.f)}`).join(' \\\\ ')} \end{aligned}`}
+          />
+          <MathTex
+            display
+            tex={String.raw`\begin{aligned} \langle I\rangle &= \frac{1}{${N}}\sum_{i=1}^{${N}} \frac{f(x_i)}{p(x_i)} \\ &= \frac{1}{${N}\cdot ${n4(p)}}\,\big(${sumRows(rows.map((r) => n4(r.f)))}\big) \\ &= \frac{${n4(sum)}}{${N}\cdot ${n4(p)}} = ${formatNumber(est, 8)} \end{aligned}`}
+          />
+        </MathBlock>
+      </WorkedAnswer>
     </ExamPart>
   );
 }

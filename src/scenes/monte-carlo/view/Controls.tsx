@@ -4,9 +4,10 @@
  */
 import type { ParamValues } from '../../../kit/params';
 import type { SceneProps } from '../../../kit/scene';
-import { Notice, NumberField, Panel, Select, Slider } from '../../../ui';
+import { Notice, NumberField, Panel } from '../../../ui';
+import { bindControls } from '../../../ui/paramControls';
 import { EXAM_F } from '../model';
-import { MAX_N, type McSchema, type PdfKind, type Strategy } from '../params';
+import { schema, type McSchema, type PdfKind, type Strategy } from '../params';
 import { FnField, SamplesField } from './Fields';
 
 const PDF_OPTIONS: { value: PdfKind; label: string }[] = [
@@ -25,19 +26,18 @@ const SEQ_OPTIONS: { value: Strategy; label: string }[] = [
 export function McControls({
   params,
   setParams,
-  n,
   fError,
   limitsMessage,
   pdfExprError,
 }: {
   params: ParamValues<McSchema>;
   setParams: SceneProps<McSchema>['setParams'];
-  /** N as used (rounded, clamped). */
-  n: number;
   fError: string | null;
   limitsMessage: string | null;
   pdfExprError: string | null;
 }) {
+  const bound = bindControls(schema, params, setParams);
+  // the limits step by halves (the schema's range, but not a whole-number parameter)
   const limit = (key: 'a' | 'b') => (
     <NumberField
       label={key}
@@ -49,16 +49,21 @@ export function McControls({
       testId={`${key}-input`}
     />
   );
+  // a typed expression, committed on Enter or blur (f and the custom pdf)
+  const expression = (key: 'f' | 'pdfexpr', label: string, error: string | null, hint?: string) => (
+    <FnField
+      label={label}
+      value={params[key]}
+      error={error}
+      onCommit={(s) => setParams(key === 'f' ? { f: s } : { pdfexpr: s })}
+      testId={`${key}-input`}
+      hint={hint}
+    />
+  );
   return (
     <>
       <Panel title="Integral">
-        <FnField
-          label="f(x) ="
-          value={params.f}
-          error={fError ? `${fError} — using ${EXAM_F}` : null}
-          onCommit={(s) => setParams({ f: s })}
-          testId="f-input"
-        />
+        {expression('f', 'f(x) =', fError ? `${fError} — using ${EXAM_F}` : null)}
         <div className="mc-limits">
           {limit('a')}
           {limit('b')}
@@ -66,50 +71,13 @@ export function McControls({
         {limitsMessage ? <Notice kind="warn">{limitsMessage}</Notice> : null}
       </Panel>
       <Panel title="Sampling">
-        <Select
-          label="pdf p(x)"
-          value={params.pdf}
-          options={PDF_OPTIONS}
-          onChange={(v) => setParams({ pdf: v })}
-          testId="pdf-select"
-        />
-        {params.pdf === 'custom' ? (
-          <FnField
-            label="p(x) ∝"
-            value={params.pdfexpr}
-            error={pdfExprError}
-            onCommit={(s) => setParams({ pdfexpr: s })}
-            testId="pdfexpr-input"
-            hint="any positive multiple; normalized numerically"
-          />
-        ) : null}
-        <Select
-          label="sequence"
-          value={params.strategy}
-          options={SEQ_OPTIONS}
-          onChange={(v) => setParams({ strategy: v })}
-          testId="strategy-select"
-        />
-        <Slider
-          label="samples N"
-          value={n}
-          min={1}
-          max={MAX_N}
-          step={1}
-          log
-          onChange={(v) => setParams({ n: Math.round(v) })}
-          digits={8}
-          testId="n-slider"
-        />
-        <NumberField
-          label="seed"
-          value={params.seed}
-          min={0}
-          max={4294967295}
-          step={1}
-          onChange={(v) => setParams({ seed: Math.round(v) })}
-          testId="seed-input"
-        />
+        {bound.select('pdf', 'pdf p(x)', PDF_OPTIONS, { testId: 'pdf-select' })}
+        {params.pdf === 'custom'
+          ? expression('pdfexpr', 'p(x) ∝', pdfExprError, 'any positive multiple; normalized numerically')
+          : null}
+        {bound.select('strategy', 'sequence', SEQ_OPTIONS, { testId: 'strategy-select' })}
+        {bound.slider('n', 'samples N', { log: true, digits: 8, testId: 'n-slider' })}
+        {bound.number('seed', 'seed', { testId: 'seed-input' })}
         <SamplesField value={params.samples} onCommit={(s) => setParams({ samples: s })} />
       </Panel>
     </>

@@ -1,13 +1,13 @@
 /** Convergence as N grows: running estimate and |error| log-log with guides and fitted slopes (one run per strategy, in the worker). */
 import { useEffect, useMemo, useRef } from 'react';
 import { formatNumber, Panel, useThrottled, type PlotTrace } from '../../../ui';
-import { useAutoRun, type WorkerFactory } from '../../../workers';
+import { useAutoRun } from '../../../workers';
 import { atRoundingLevel } from '../model';
 import { formatCount } from '../../../ui/format';
-import type { ProblemArgs, SeriesData } from '../jobs';
+import type { SeriesData } from '../jobs';
 import { REDRAW_MS, useLegendRoom } from './hooks';
-import { arr, L_ERR, L_EST, REFERENCE, RunBar, DescribedPlot, strategyLine } from './plotStyle';
-import type { McTasks } from '../mc.worker';
+import { arr, REFERENCE, RunBar, strategyLine, type PanelRunProps } from './plotStyle';
+import { DescribedPlot } from './DescribedPlot';
 import { describeSeriesSet, seriesTable } from './plotWords';
 
 export function ConvergencePanel({
@@ -17,14 +17,7 @@ export function ConvergencePanel({
   makeWorker,
   present,
   runToken = 0,
-}: {
-  args: ProblemArgs;
-  nMax: number;
-  exact: number;
-  makeWorker: WorkerFactory<McTasks>;
-  present: boolean;
-  runToken?: number;
-}) {
+}: PanelRunProps & { nMax: number; present: boolean; runToken?: number }) {
   const box = useRef<HTMLDivElement>(null);
   const key = JSON.stringify([args, nMax]);
   const task = useAutoRun(makeWorker, 'convergence', { ...args, nMax }, { key, box, queue: 'monte-carlo' });
@@ -115,13 +108,17 @@ export function ConvergencePanel({
       .map((s) => ({ label: s.label, xs: s.n, ys: s.absError }));
     const empty = 'No run yet.';
     return {
-      est: `${describeSeriesSet(est, { xLabel: 'N', yLabel: 'the estimate', empty })} Exact: ${formatNumber(ref, 8)}.`,
-      err: describeSeriesSet(err, { xLabel: 'N', yLabel: '|error|', logLog: true, empty }),
-      estTable: seriesTable('N', est),
-      errTable: seriesTable(
-        'N',
-        series.map((s) => ({ label: s.label, xs: s.n, ys: s.absError })),
-      ),
+      est: {
+        description: `${describeSeriesSet(est, { xLabel: 'N', yLabel: 'the estimate', empty })} Exact: ${formatNumber(ref, 8)}.`,
+        table: seriesTable('N', est),
+      },
+      err: {
+        description: describeSeriesSet(err, { xLabel: 'N', yLabel: '|error|', logLog: true, empty }),
+        table: seriesTable(
+          'N',
+          series.map((s) => ({ label: s.label, xs: s.n, ys: s.absError })),
+        ),
+      },
     };
   }, [series, ref]);
   const h = (present ? 380 : 300) + useLegendRoom();
@@ -132,28 +129,8 @@ export function ConvergencePanel({
         {cur?.problems.length ? (
           <p className="mc-note">Left out: {cur.problems.map((p) => p.message).join('; ')}</p>
         ) : null}
-        <DescribedPlot
-          id="convergence-estimate"
-          heading="Running estimate"
-          data={estData}
-          height={h}
-          label="Running estimate against the number of samples N, on a log axis, for several strategies, with the exact value"
-          description={words.est}
-          layout={L_EST}
-          caption="Running estimate against N, per strategy"
-          table={words.estTable}
-        />
-        <DescribedPlot
-          id="convergence-error"
-          heading="|error| of one run, log-log, with N⁻½ and N⁻¹ guides"
-          data={errData}
-          height={h}
-          label="Absolute error against N on log-log axes, with guide lines falling as N to the −½ and N to the −1 and fitted slopes"
-          description={words.err}
-          layout={L_ERR}
-          caption="|estimate − exact| against N, per strategy"
-          table={words.errTable}
-        />
+        <DescribedPlot id="convergence-estimate" data={estData} height={h} words={words.est} />
+        <DescribedPlot id="convergence-error" data={errData} height={h} words={words.err} />
         {exactLabels.length ? (
           <p className="mc-note" data-testid="exact-strategies">
             Not drawn on the log axis: {exactLabels.join(', ')} — its error is at rounding level (≤ 10⁻¹³ of

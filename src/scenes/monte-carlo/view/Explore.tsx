@@ -7,19 +7,14 @@ import { ExploreFurther, Revealed } from '../../../ui';
 import type { WorkerFactory } from '../../../workers';
 import type { ProblemArgs } from '../jobs';
 import type { McTasks } from '../mc.worker';
-import type { curves, PdfChoice, SampleTable } from '../model';
 import type { PdfKind, Strategy } from '../params';
 import { ConvergencePanel } from './ConvergencePanel';
 import { HistogramPanel } from './HistogramPanel';
-import { IntegrandPanel } from './IntegrandPanel';
+import { IntegrandPanel, type IntegrandProps } from './IntegrandPanel';
 import { RmsePanel } from './RmsePanel';
 
 export function McExplore({
-  choice,
-  curve,
-  table,
-  a,
-  b,
+  integrand,
   baseArgs,
   selected,
   n,
@@ -31,11 +26,7 @@ export function McExplore({
   ask,
   setParams,
 }: {
-  choice: PdfChoice | null;
-  curve: ReturnType<typeof curves> | null;
-  table: SampleTable | null;
-  a: number;
-  b: number;
+  integrand: IntegrandProps;
   baseArgs: ProblemArgs | null;
   /** The page's own strategy, alone (the histogram's). */
   selected: { pdf: PdfKind; seq: Strategy; label: string }[];
@@ -48,32 +39,26 @@ export function McExplore({
   ask: boolean;
   setParams: (patch: { runs?: number; hn?: number }) => void;
 }) {
+  // what every worker-run panel below needs: the reference value and the worker to run in
+  const run = { exact, makeWorker };
   return (
     <ExploreFurther intro="Other integrands and pdfs, stratified and quasi-Monte Carlo points, many runs, run time, and unbiasedness (exam Q2 c).">
-      <IntegrandPanel choice={choice} curve={curve} table={table} a={a} b={b} />
+      <IntegrandPanel {...integrand} />
       {baseArgs ? (
         <Revealed ask={ask} what="the convergence plots, the RMSE and the histogram of estimates">
-          <ConvergencePanel
-            args={baseArgs}
-            nMax={n}
-            exact={exact}
-            makeWorker={makeWorker}
-            present={present}
-          />
+          <ConvergencePanel {...run} args={baseArgs} nMax={n} present={present} />
           <RmsePanel
+            {...run}
             args={baseArgs}
             nMax={Math.min(n, 100_000)}
             runs={runs}
-            exact={exact}
-            makeWorker={makeWorker}
             onRuns={(r) => setParams({ runs: r })}
           />
-          {choice?.ok ? (
+          {integrand.choice?.ok ? (
             <HistogramPanel
+              {...run}
               args={{ ...baseArgs, strategies: selected }}
               N={hn}
-              exact={exact}
-              makeWorker={makeWorker}
               onN={(v) => setParams({ hn: v })}
             />
           ) : null}

@@ -1,7 +1,8 @@
 /** f and the pdf (scaled to f's height) on the same axes, with the worked samples marked. */
 import { useMemo } from 'react';
 import { formatNumber, type PlotTrace } from '../../../ui';
-import { arr, COLORS, L_FUNC, DescribedPlot } from './plotStyle';
+import { arr, COLORS } from './plotStyle';
+import { DescribedPlot } from './DescribedPlot';
 import { describeSeriesSet, seriesTable } from './plotWords';
 
 /** f and p × scale on the same axes, with the worked samples marked. */
@@ -60,25 +61,13 @@ export function FunctionPlot({
       ? ` The worked samples at x = ${samples.map((s) => formatNumber(s[0], 4)).join(', ')}.`
       : '';
     return {
-      text: describeSeriesSet(shown, { xLabel: 'x', yLabel: 'the value', empty: 'No integrand yet.' }) + at,
+      description:
+        describeSeriesSet(shown, { xLabel: 'x', yLabel: 'the value', empty: 'No integrand yet.' }) + at,
       table: seriesTable(
         'x',
         shown.map((s) => ({ ...s, xs: s.xs.filter(keep), ys: s.ys.filter(keep) })),
       ),
     };
   }, [curve, samples]);
-  return (
-    <>
-      <DescribedPlot
-        id="integrand"
-        data={data}
-        height={260}
-        label="The integrand f(x) and the sampling pdf p(x), scaled to the same height, over [a, b]"
-        description={words.text}
-        layout={L_FUNC}
-        caption="f(x) and the pdf p(x) over [a, b]"
-        table={words.table}
-      />
-    </>
-  );
+  return <DescribedPlot id="integrand" data={data} height={260} words={words} />;
 }

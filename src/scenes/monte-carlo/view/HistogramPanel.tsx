@@ -1,14 +1,16 @@
 /** Unbiasedness: the histogram of many independent estimates at fixed N, with their mean (core Welford). */
 import { useMemo, useRef } from 'react';
 import { formatNumber, Panel, Readout, useThrottled, type PlotTrace } from '../../../ui';
-import { useAutoRun, type WorkerFactory } from '../../../workers';
+import { useAutoRun } from '../../../workers';
 import { estimateFromTerms, histogram } from '../../../core/estimators';
-import type { ProblemArgs } from '../jobs';
 import { REDRAW_MS, useLegendRoom } from './hooks';
-import { arr, COLORS, L_HIST, CountField, DescribedPlot, REFERENCE, RunBar } from './plotStyle';
-import type { McTasks } from '../mc.worker';
+import { arr, BAR_OPACITY, COLORS, CountField, REFERENCE, RunBar, type PanelRunProps } from './plotStyle';
+import { DescribedPlot, type PlotWords } from './DescribedPlot';
 import { zeroToRounding } from '../model';
 import { describeEstimateHistogram } from './plotWords';
+
+/** The histogram's statistics before the first estimates arrive. */
+const NOTHING_YET = { count: 0, mean: NaN, sd: NaN, sem: NaN, centers: [], counts: [] };
 
 export function HistogramPanel({
   args,
@@ -16,16 +18,11 @@ export function HistogramPanel({
   exact,
   makeWorker,
   onN,
-}: {
-  args: ProblemArgs;
-  N: number;
-  exact: number;
-  makeWorker: WorkerFactory<McTasks>;
-  onN: (v: number) => void;
-}) {
+}: PanelRunProps & { N: number; onN: (v: number) => void }) {
   const box = useRef<HTMLDivElement>(null);
   const M = 2000;
   const room = useLegendRoom();
+  const note = `${M} estimates, each from its own ${N} sample${N === 1 ? '' : 's'} (selected pdf and sequence)`;
   const key = JSON.stringify([args, N]);
   const task = useAutoRun(makeWorker, 'histogram', { ...args, N, M }, { key, box, queue: 'monte-carlo' });
   const est = useThrottled(task.result ?? task.partial, REDRAW_MS, !task.running)?.estimates;
@@ -41,34 +38,16 @@ export function HistogramPanel({
     const h = histogram(est, 40);
     return { h, centers: arr(h.counts).map((_, k) => 0.5 * (h.edges[k] + h.edges[k + 1])) };
   }, [est, stats]);
-  const words = useMemo(() => {
-    if (!bins || !stats)
-      return {
-        text: describeEstimateHistogram({
-          count: 0,
-          N,
-          mean: NaN,
-          sd: NaN,
-          sem: NaN,
-          exact,
-          centers: [],
-          counts: [],
-        }),
-        rows: [],
-      };
-    const counts = arr(bins.h.counts);
+  const words = useMemo<PlotWords>(() => {
+    const counts = bins ? arr(bins.h.counts) : [];
+    const shown = bins && stats ? { ...stats, centers: bins.centers, counts } : NOTHING_YET;
     return {
-      text: describeEstimateHistogram({
-        count: stats.count,
-        N,
-        mean: stats.mean,
-        sd: stats.sd,
-        sem: stats.sem,
-        exact,
-        centers: bins.centers,
-        counts,
-      }),
-      rows: counts.map((c, k) => [bins.h.edges[k], bins.h.edges[k + 1], c]),
+      description: describeEstimateHistogram({ ...shown, N, exact }),
+      table: {
+        columns: ['from', 'to', 'estimates'],
+        rows: bins && stats ? counts.map((c, k) => [bins.h.edges[k], bins.h.edges[k + 1], c]) : [],
+      },
+      caption: `Histogram of the independent estimates, each from ${N} samples: bins and counts`,
     };
   }, [bins, stats, N, exact]);
   const data = useMemo<PlotTrace[]>(() => {
@@ -81,7 +60,7 @@ export function HistogramPanel({
         x: centers,
         y: arr(h.counts),
         name: `${stats.count} estimates`,
-        marker: { color: COLORS[0], opacity: 0.75 },
+        marker: { color: COLORS[0], opacity: BAR_OPACITY },
         width: (h.edges[1] - h.edges[0]) * 0.95,
       },
       {
@@ -105,19 +84,7 @@ export function HistogramPanel({
   return (
     <Panel title="Unbiasedness: many independent estimates (Q2 c)" className="mc-plots">
       <div ref={box}>
-        <CountField
-          label="samples per estimate"
-          value={N}
-          min={1}
-          max={10000}
-          onChange={onN}
-          testId="hn-input"
-          note={
-            <>
-              {M} estimates, each from its own {N} sample{N === 1 ? '' : 's'} (selected pdf and sequence)
-            </>
-          }
-        />
+        <CountField name="hn" value={N} onChange={onN} note={note} />
         <RunBar task={task} label="Estimating…" />
         <div className="readouts">
           <Readout
@@ -136,16 +103,7 @@ export function HistogramPanel({
             note={zero ? 'no spread: every estimate is exact (zero variance)' : undefined}
           />
         </div>
-        <DescribedPlot
-          id="estimates-histogram"
-          data={data}
-          height={280 + room / 2}
-          label="Histogram of many independent estimates at fixed N, with their mean and the exact integral"
-          description={words.text}
-          layout={L_HIST}
-          caption={`Histogram of the independent estimates, each from ${N} samples: bins and counts`}
-          table={{ columns: ['from', 'to', 'estimates'], rows: words.rows }}
-        />
+        <DescribedPlot id="estimates-histogram" data={data} height={280 + room / 2} words={words} />
         <p className="mc-note">
           E[⟨I⟩] = ∫ f dx for any valid p: each estimate misses, but their mean lands on the integral (within
           a few standard errors), whatever N is. Only the spread shrinks as N grows.

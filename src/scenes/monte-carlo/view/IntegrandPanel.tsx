@@ -7,19 +7,16 @@ import type { curves, PdfChoice, SampleTable } from '../model';
 import { MathBlock } from './examMath';
 import { FunctionPlot } from './FunctionPlot';
 
-export function IntegrandPanel({
-  choice,
-  curve,
-  table,
-  a,
-  b,
-}: {
+/** The problem as drawn: the pdf chosen, f and p sampled over [a, b], the worked table's samples. */
+export interface IntegrandProps {
   choice: PdfChoice | null;
   curve: ReturnType<typeof curves> | null;
   table: SampleTable | null;
   a: number;
   b: number;
-}) {
+}
+
+export function IntegrandPanel({ choice, curve, table, a, b }: IntegrandProps) {
   return (
     <Panel title="The integrand and the pdf">
       {choice && choice.ok ? (

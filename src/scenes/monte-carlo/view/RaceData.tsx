@@ -33,13 +33,10 @@ export function raceWords(o: {
   const fr = raceAt(track, o.t, o.points, 0);
   const t = fr.t;
   const I = track.exact;
-  let fMin = Infinity;
-  let fMax = -Infinity;
-  for (let k = 0; k < o.fValues.length; k++) {
-    const v = o.fValues[k];
-    if (v < fMin) fMin = v;
-    if (v > fMax) fMax = v;
-  }
+  // f's range on the grid (a NaN where f is undefined takes no part; none left: ±Infinity)
+  const fs = Array.from(o.fValues).filter((v) => !Number.isNaN(v));
+  const fMin = Math.min(...fs);
+  const fMax = Math.max(...fs);
   return {
     main: describeRace({
       t,

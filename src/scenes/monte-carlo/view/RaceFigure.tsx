@@ -172,6 +172,26 @@ function LaneReadouts({ id, r }: { id: string; r: LaneRefs }) {
   );
 }
 
+/**
+ * The race's clock: t counts the samples drawn (whole numbers, 0…RACE_MAX), at a fixed duration and
+ * redraw rate, running only while `box` is on screen; the keyboard shortcuts are off while held.
+ */
+function useRaceClock(t: number, play: boolean, setParams: RaceProps['setParams'], held: boolean) {
+  const box = useRef<HTMLDivElement>(null);
+  const tl = useTimeline({
+    t,
+    play,
+    setParams,
+    max: RACE_MAX,
+    integer: true,
+    duration: RACE_DURATION,
+    visibleRef: box,
+    renderHz: RENDER_HZ,
+    shortcuts: !held,
+  });
+  return { box, tl };
+}
+
 /** The race figure with its transport. Memoised: only a change of track or position redraws it. */
 export const RaceFigure = memo(function RaceFigure({
   track,
@@ -187,18 +207,7 @@ export const RaceFigure = memo(function RaceFigure({
   play,
   setParams,
 }: RaceProps) {
-  const box = useRef<HTMLDivElement>(null);
-  const tl = useTimeline({
-    t,
-    play,
-    setParams,
-    max: RACE_MAX,
-    integer: true,
-    duration: RACE_DURATION,
-    visibleRef: box,
-    renderHz: RENDER_HZ,
-    shortcuts: !held,
-  });
+  const { box, tl } = useRaceClock(t, play, setParams, held);
   const points = useMemo(() => racePoints(track.max), [track.max]);
   const fr = useMemo(() => raceHeadAt(track, tl.t, RECENT), [track, tl.t]);
   const I = track.exact;
@@ -428,6 +437,8 @@ export const RaceFigure = memo(function RaceFigure({
       </svg>
     </DescribedFigure>
   );
+  // what the two lanes' histograms share: the interval, the grid of the pdf curve, the count scale, the clock
+  const histShared = { a, b, px: curve.x, yMax: hist.yMax, tl, t: fr.t, half, staged };
   const lanes = (
     [
       {
@@ -461,22 +472,7 @@ export const RaceFigure = memo(function RaceFigure({
     ),
     readouts: <LaneReadouts key={`r${k}`} id={id} r={refs} />,
     hist: (
-      <RaceHistogram
-        key={`h${k}`}
-        id={id}
-        xs={xs}
-        a={a}
-        b={b}
-        px={curve.x}
-        py={py}
-        pdfLabel={pdf}
-        yMax={hist.yMax}
-        color={color}
-        tl={tl}
-        t={fr.t}
-        half={half}
-        staged={staged}
-      />
+      <RaceHistogram key={`h${k}`} {...histShared} id={id} xs={xs} py={py} pdfLabel={pdf} color={color} />
     ),
     est: held ? null : (
       <DescribedFigure

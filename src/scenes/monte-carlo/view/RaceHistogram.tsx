@@ -142,7 +142,12 @@ export function RaceHistogram({
         </figcaption>
         <svg viewBox={`0 0 360 ${HIST_H}`} aria-hidden="true">
           <Axes xTicks={axes.xt} yTicks={axes.yt} xLabel="x" yLabel="density" h={HIST_H} />
-          <path ref={bars} className="mc-svg-bars" style={{ fill: color }} data-testid={`race-hist-${id}`} />
+          <path
+            ref={bars}
+            className="mc-svg-bars"
+            style={{ fill: color, stroke: color }}
+            data-testid={`race-hist-${id}`}
+          />
           <path d={axes.pPath} className="mc-svg-pdf" />
           <text x={M.l + PW - 4} y={M.t + 14} textAnchor="end" className="mc-svg-pdf-label">
             — p(x)

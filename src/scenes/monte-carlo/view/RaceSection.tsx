@@ -17,7 +17,7 @@ import {
   type RaceTrack,
 } from '../model';
 import type { Pdf1D } from '../../../core/sampling/pdf1d';
-import { RaceFigure } from './RaceFigure';
+import { RaceFigure, type RaceProps } from './RaceFigure';
 import { RaceData } from './RaceData';
 
 /** What the race is computed from (RaceFigure's track and curve). */
@@ -76,46 +76,14 @@ export function raceOf(input: RaceInput): Race {
   return last;
 }
 
-export function RaceSection({
-  input,
-  importanceLabel,
-  importanceName,
-  t,
-  play,
-  setParams,
-  staged,
-  held,
-}: {
-  input: RaceInput | null;
-  importanceLabel: string;
-  importanceName: string;
-  t: number;
-  play: boolean;
-  setParams: (patch: { t?: number; play?: boolean }) => void;
-  /** Classroom mode: the race is the stage (sized to the first screen). */
-  staged: boolean;
-  /** ask=1: held at t = 0, its samples and transport hidden until revealed. */
-  held: boolean;
-}) {
+/** What the race shows besides its track: the importance pdf's names, the position, classroom/ask modes. */
+type RaceShown = Omit<RaceProps, keyof Race | 'a' | 'b'>;
+
+export function RaceSection({ input, ...shown }: RaceShown & { input: RaceInput | null }) {
   if (!input)
     return <p className="mc-note">The animation needs a finite integral and a usable importance pdf.</p>;
   const { track, curve, half } = raceOf(input);
-  return (
-    <RaceFigure
-      track={track}
-      curve={curve}
-      a={input.a}
-      b={input.b}
-      importanceLabel={importanceLabel}
-      importanceName={importanceName}
-      half={half}
-      t={t}
-      play={play}
-      setParams={setParams}
-      staged={staged}
-      held={held}
-    />
-  );
+  return <RaceFigure {...shown} track={track} curve={curve} half={half} a={input.a} b={input.b} />;
 }
 
 /**

@@ -1,24 +1,13 @@
 /** RMSE over independent (randomized) runs against N, and against the measured run time. */
 import { useMemo, useRef } from 'react';
 import { Panel, useThrottled, type PlotTrace } from '../../../ui';
-import { useAutoRun, type WorkerFactory } from '../../../workers';
+import { useAutoRun } from '../../../workers';
 import { atRoundingLevel, sortedByX } from '../model';
 import { formatCount } from '../../../ui/format';
-import type { ProblemArgs } from '../jobs';
 import { REDRAW_MS, useLegendRoom } from './hooks';
-import {
-  arr,
-  clampArr,
-  COLORS,
-  L_RMSE,
-  L_TIME,
-  CountField,
-  RunBar,
-  DescribedPlot,
-  strategyLine,
-} from './plotStyle';
-import type { McTasks } from '../mc.worker';
-import { describeSeriesSet, seriesTable } from './plotWords';
+import { arr, clampArr, COLORS, CountField, RunBar, strategyLine, type PanelRunProps } from './plotStyle';
+import { DescribedPlot, type PlotWords } from './DescribedPlot';
+import { describeSeriesSet, seriesTable, type NamedSeries } from './plotWords';
 
 export function RmsePanel({
   args,
@@ -27,14 +16,7 @@ export function RmsePanel({
   exact,
   makeWorker,
   onRuns,
-}: {
-  args: ProblemArgs;
-  nMax: number;
-  runs: number;
-  exact: number;
-  makeWorker: WorkerFactory<McTasks>;
-  onRuns: (r: number) => void;
-}) {
+}: PanelRunProps & { nMax: number; runs: number; onRuns: (r: number) => void }) {
   const box = useRef<HTMLDivElement>(null);
   const key = JSON.stringify([args, nMax, runs]);
   const task = useAutoRun(makeWorker, 'rmse', { ...args, nMax, runs }, { key, box, queue: 'monte-carlo' });
@@ -112,20 +94,19 @@ export function RmsePanel({
     [rm, exact],
   );
 
-  // the plots in words and as tables
+  // the plots in words and as tables: RMSE (of the shown strategies) against N or against the time
   const words = useMemo(() => {
     const shown = rm.filter((s) => !atRoundingLevel(s.rmse, exact));
-    const empty = 'No runs yet.';
+    const against = (x: 'n' | 'timeMs', xLabel: string, table: NamedSeries[]): PlotWords => ({
+      description: describeSeriesSet(
+        shown.map((s) => ({ label: s.label, xs: s[x], ys: s.rmse })),
+        { xLabel, yLabel: 'RMSE', logLog: true, empty: 'No runs yet.' },
+      ),
+      table: seriesTable('N', table),
+    });
     return {
-      rmse: describeSeriesSet(
-        shown.map((s) => ({ label: s.label, xs: s.n, ys: s.rmse })),
-        { xLabel: 'N', yLabel: 'RMSE', logLog: true, empty },
-      ),
-      time: describeSeriesSet(
-        shown.map((s) => ({ label: s.label, xs: s.timeMs, ys: s.rmse })),
-        { xLabel: 'ms', yLabel: 'RMSE', logLog: true, empty },
-      ),
-      rmseTable: seriesTable(
+      rmse: against(
+        'n',
         'N',
         rm.flatMap((s) => [
           { label: `${s.label} RMSE`, xs: s.n, ys: s.rmse },
@@ -133,8 +114,9 @@ export function RmsePanel({
           { label: `${s.label} 90 %`, xs: s.n, ys: s.hi },
         ]),
       ),
-      timeTable: seriesTable(
-        'N',
+      time: against(
+        'timeMs',
+        'ms',
         shown.flatMap((s) => [
           { label: `${s.label} ms`, xs: s.n, ys: s.timeMs },
           { label: `${s.label} RMSE`, xs: s.n, ys: s.rmse },
@@ -143,46 +125,15 @@ export function RmsePanel({
     };
   }, [rm, exact]);
   const runsDone = rm[0]?.runs ?? 0;
+  const runsNote = `${runsDone} run${runsDone === 1 ? '' : 's'} per strategy so far, N up to ${formatCount(nMax)}`;
   const h = 300 + useLegendRoom();
   return (
     <Panel title="RMSE over independent runs, and against run time" className="mc-plots">
       <div ref={box}>
-        <CountField
-          label="runs"
-          value={runs}
-          min={4}
-          max={256}
-          onChange={onRuns}
-          testId="runs-input"
-          note={
-            <>
-              {runsDone} run{runsDone === 1 ? '' : 's'} per strategy so far, N up to {formatCount(nMax)}
-            </>
-          }
-        />
+        <CountField name="runs" value={runs} onChange={onRuns} note={runsNote} />
         <RunBar task={task} label="Independent runs…" />
-        <DescribedPlot
-          id="rmse"
-          heading="RMSE over the runs (band: 10–90 % of |error|)"
-          data={rmseData}
-          height={h}
-          label="Root mean square error over independent runs against N, log-log, with bands from the 10th to the 90th percentile of the absolute error"
-          description={words.rmse}
-          layout={L_RMSE}
-          caption="RMSE over the runs and the 10–90 % band of |error|, against N, per strategy"
-          table={words.rmseTable}
-        />
-        <DescribedPlot
-          id="rmse-time"
-          heading="Accuracy per millisecond: RMSE against run time"
-          data={timeData}
-          height={h}
-          label="RMSE against the measured wall-clock time of one estimate, log-log, per strategy"
-          description={words.time}
-          layout={L_TIME}
-          caption="Time of one estimate (ms) and its RMSE, against N, per strategy"
-          table={words.timeTable}
-        />
+        <DescribedPlot id="rmse" data={rmseData} height={h} words={words.rmse} />
+        <DescribedPlot id="rmse-time" data={timeData} height={h} words={words.time} />
         {rmExactLabels.length ? (
           <p className="mc-note">
             Not drawn: {rmExactLabels.join(', ')} (RMSE at rounding level: zero variance).

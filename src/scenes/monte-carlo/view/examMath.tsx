@@ -1,9 +1,9 @@
 /**
  * Small pieces the exam parts share: TeX formatting of live numbers, a sideways-scrolling block for
- * wide formulas, and the key's note on the index of its sum.
+ * wide formulas, the key's note on the index of its sum, and the frame of a worked answer.
  */
 import type { ReactNode } from 'react';
-import { formatNumber, KeyNote, MathTex } from '../../../ui';
+import { Derivation, formatNumber, KeyNote, LiveAnswer, MathTex, Revealed } from '../../../ui';
 
 /** A number for TeX (six significant digits), or a dash when it is not finite. */
 export const n4 = (x: number) => (Number.isFinite(x) ? formatNumber(x, 6) : '\\text{—}');
@@ -65,5 +65,38 @@ export function SumIndexNote({ part }: { part: string }) {
       <MathTex tex={String.raw`\tfrac14\sum_{i=1}^{4}`} />
       ), as its own arithmetic (four values added) does.
     </KeyNote>
+  );
+}
+
+/**
+ * A Q4 part's worked answer, hidden under ask=1 until revealed: the derivation (`children`), the live
+ * answer (its headline readout, then `answer`), the key's note on its sum, then `after`. Test ids
+ * `derivation-${part}` and `answer-${part}`.
+ */
+export function WorkedAnswer({
+  part,
+  ask,
+  headline,
+  answer,
+  after,
+  children,
+}: {
+  part: '4b' | '4c';
+  ask: boolean;
+  headline: ReactNode;
+  answer?: ReactNode;
+  after?: ReactNode;
+  children: ReactNode;
+}) {
+  return (
+    <Revealed ask={ask} what="the derivation and the answer">
+      <Derivation testId={`derivation-${part}`}>{children}</Derivation>
+      <LiveAnswer testId={`answer-${part}`}>
+        <div className="readouts mc-headline">{headline}</div>
+        {answer}
+      </LiveAnswer>
+      <SumIndexNote part={part} />
+      {after}
+    </Revealed>
   );
 }

@@ -1,7 +1,10 @@
 /** Shared look of the scene's Plotly views: colours, legend and margins, layouts, the run bar. */
 import type { ReactNode } from 'react';
-import { NumberField, Plot, SERIES, ShowAsTable, type PlotLayout, type PlotTrace } from '../../../ui';
-import type { WorkerJob } from '../../../workers';
+import { NumberField, SERIES } from '../../../ui';
+import type { WorkerFactory, WorkerJob } from '../../../workers';
+import type { ProblemArgs } from '../jobs';
+import type { McTasks } from '../mc.worker';
+import { schema } from '../params';
 
 /**
  * The shared plot colours (src/ui/palette: 3 : 1 on every background in both themes, apart under
@@ -9,6 +12,8 @@ import type { WorkerJob } from '../../../workers';
  * colours, the dash tells the ones of one colour apart.
  */
 export const COLORS = SERIES;
+/** Opacity of a histogram's bars in the shared colours: still 3 : 1 on the page in both themes. */
+export const BAR_OPACITY = 0.75;
 /** The colour of references drawn over the data (the exact value, guides). */
 export const REFERENCE = 'var(--muted)';
 /** Line dashes per strategy, in step with COLORS: the legend matches a line by its dash, not only its colour. */
@@ -54,6 +59,13 @@ export function Heading({ children }: { children: ReactNode }) {
   return <h3 className="mc-plot-title">{children}</h3>;
 }
 
+/** What every worker-run panel is given: the problem, its exact value, and the worker to run it in. */
+export interface PanelRunProps {
+  args: ProblemArgs;
+  exact: number;
+  makeWorker: WorkerFactory<McTasks>;
+}
+
 type RunTask = Pick<
   WorkerJob<unknown, unknown>,
   'running' | 'waiting' | 'progress' | 'error' | 'cancel' | 'run'
@@ -88,34 +100,34 @@ export function RunBar({ task, label }: { task: RunTask; label: ReactNode }) {
   );
 }
 
-/** An integer field with a note beside it (how many runs or samples a panel uses). */
+/** The panels' count fields: label and test id (the range is the URL parameter's, ../params). */
+const COUNT_FIELDS = {
+  runs: { label: 'runs', testId: 'runs-input' },
+  hn: { label: 'samples per estimate', testId: 'hn-input' },
+} as const;
+
+/** A whole-number field with a note beside it (how many runs or samples a panel uses). */
 export function CountField({
-  label,
+  name,
   value,
-  min,
-  max,
   onChange,
-  testId,
   note,
 }: {
-  label: string;
+  name: keyof typeof COUNT_FIELDS;
   value: number;
-  min: number;
-  max: number;
   onChange: (v: number) => void;
-  testId: string;
   note: ReactNode;
 }) {
+  const { min, max } = schema[name];
   return (
     <div className="mc-inline">
       <NumberField
-        label={label}
+        {...COUNT_FIELDS[name]}
         value={value}
         min={min}
         max={max}
         step={1}
         onChange={(v) => onChange(Math.round(v))}
-        testId={testId}
       />
       <span className="mc-note">{note}</span>
     </div>
@@ -124,45 +136,3 @@ export function CountField({
 
 /** Positive finite values, null elsewhere (a gap on a log axis). */
 export const clampArr = (a: Float64Array) => arr(a).map((v) => (Number.isFinite(v) && v > 0 ? v : null));
-
-/**
- * A Plotly plot with its heading, its accessible name and description, and its data as a "Show as
- * table" under it (`table`: ./plotWords seriesTable, a column per series). Test ids `${id}-plot`
- * and `${id}-table`.
- */
-export function DescribedPlot({
-  id,
-  heading,
-  data,
-  layout,
-  height,
-  label,
-  description,
-  caption,
-  table,
-}: {
-  id: string;
-  heading?: ReactNode;
-  data: PlotTrace[];
-  layout: PlotLayout;
-  height: number;
-  label: string;
-  description: string;
-  caption: string;
-  table: { columns: string[]; rows: number[][] };
-}) {
-  return (
-    <>
-      {heading ? <Heading>{heading}</Heading> : null}
-      <Plot
-        data={data}
-        height={height}
-        label={label}
-        description={description}
-        layout={layout}
-        testId={`${id}-plot`}
-      />
-      <ShowAsTable caption={caption} columns={table.columns} rows={table.rows} testId={`${id}-table`} />
-    </>
-  );
-}

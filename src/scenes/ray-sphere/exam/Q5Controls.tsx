@@ -3,10 +3,11 @@
  * textbook form) and the typed values of the ray and the sphere.
  */
 import { memo } from 'react';
-import { NumberField, Select } from '../../../ui';
+import { NumberField } from '../../../ui';
+import { bindControls } from '../../../ui/paramControls';
 import { PRECISION_OPTIONS } from '../view/Float32Panel';
 import type { V3 } from '../model';
-import { CASE_PRESETS, PRECISION_PRESETS, type Preset, type RaySphereParams } from '../params';
+import { CASE_PRESETS, PRECISION_PRESETS, schema, type Preset, type RaySphereParams } from '../params';
 
 type SetParams = (patch: Partial<RaySphereParams>) => void;
 
@@ -88,17 +89,21 @@ export const Q5Presets = memo(function Q5Presets({
 
 const BIG = 1e12;
 
-function VecField({
-  label,
-  name,
-  value,
-  onChange,
-}: {
+/** The three vectors of the ray and the sphere, typed as x, y, z (test ids `input-<name>-<axis>`). */
+const VECTORS = [
+  { name: 'o', label: 'Origin o' },
+  { name: 'd', label: 'Direction d' },
+  { name: 'c', label: 'Centre C (URL parameter c)' },
+] as const;
+
+interface VecFieldProps {
+  name: (typeof VECTORS)[number]['name'];
   label: string;
-  name: string;
-  value: readonly number[];
-  onChange: (v: V3) => void;
-}) {
+  value: V3;
+  edit: SetParams;
+}
+
+function VecField({ name, label, value, edit }: VecFieldProps) {
   return (
     <fieldset className="rs-vec">
       <legend>{label}</legend>
@@ -114,13 +119,20 @@ function VecField({
           onChange={(x) => {
             const v: V3 = [value[0], value[1], value[2]];
             v[i] = x;
-            onChange(v);
+            edit({ [name]: v });
           }}
         />
       ))}
     </fieldset>
   );
 }
+
+/** The readouts' method and arithmetic, as selects bound to their URL parameters. */
+const READOUT_SCHEMA = { method: schema.method, precision: schema.precision };
+const METHOD_OPTIONS = [
+  { value: 'stable', label: 'robust (Ray Tracing Gems ch. 7)' },
+  { value: 'naive', label: 'textbook (−b\u00a0±\u00a0√Δ) / 2a' },
+] as const;
 
 export interface Q5FieldsProps extends Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r' | 'method' | 'precision'> {
   setParams: SetParams;
@@ -139,29 +151,16 @@ export const Q5Fields = memo(function Q5Fields({
   setParams,
   edit,
 }: Q5FieldsProps) {
+  const bound = bindControls<typeof READOUT_SCHEMA>(READOUT_SCHEMA, { method, precision }, setParams);
+  const vectors = { o, d, c };
   return (
     <details className="rs-fields" open={typeof window === 'undefined' || window.innerWidth > 820}>
       <summary>Ray o + t d and sphere (centre C, radius r): type values</summary>
-      <Select
-        label="Method (for the readouts)"
-        value={method}
-        options={[
-          { value: 'stable', label: 'robust (Ray Tracing Gems ch. 7)' },
-          { value: 'naive', label: 'textbook (−b\u00a0±\u00a0√Δ) / 2a' },
-        ]}
-        onChange={(m) => setParams({ method: m })}
-        testId="method"
-      />
-      <Select
-        label="Arithmetic (for the readouts)"
-        value={precision}
-        options={PRECISION_OPTIONS}
-        onChange={(x) => setParams({ precision: x })}
-        testId="precision"
-      />
-      <VecField label="Origin o" name="o" value={o} onChange={(v) => edit({ o: v })} />
-      <VecField label="Direction d" name="d" value={d} onChange={(v) => edit({ d: v })} />
-      <VecField label="Centre C (URL parameter c)" name="c" value={c} onChange={(v) => edit({ c: v })} />
+      {bound.select('method', 'Method (for the readouts)', METHOD_OPTIONS)}
+      {bound.select('precision', 'Arithmetic (for the readouts)', PRECISION_OPTIONS)}
+      {VECTORS.map(({ name, label }) => (
+        <VecField key={name} name={name} label={label} value={vectors[name]} edit={edit} />
+      ))}
       <NumberField
         label="Radius r"
         value={r}

@@ -6,9 +6,10 @@
  * case, the readouts and the sweep stay hidden until revealed.
  */
 import type { RefObject } from 'react';
-import { NumberField, Readout, Revealed, Select, TimelineTransport } from '../../../ui';
+import { NumberField, Readout, Revealed, TimelineTransport } from '../../../ui';
+import { bindControls } from '../../../ui/paramControls';
 import { sweepAt, type Sweep, type V3 } from '../model';
-import type { RaySphereParams } from '../params';
+import { schema, type RaySphereParams } from '../params';
 import { describeRaySphere, sweepPlaceText } from '../view/describe';
 import { LiveDescribed } from '../view/Described';
 import { LiveCaseBanner, LiveCrossSection, useCoarseModel, type LiveProps } from '../view/Live';
@@ -44,24 +45,22 @@ function StageReadouts(live: LiveProps) {
   );
 }
 
+const SWEEP_SCHEMA = { sweep: schema.sweep };
+const SWEEP_OPTIONS = [
+  { value: 'offset', label: 'origin moves across the ray' },
+  { value: 'rotate', label: 'direction turns about o' },
+] as const;
+
 /** The sweep's mode and extent (beside the transport on the page, in the drawer on the stage). */
 export function SweepControls({
   sweep,
   extent,
   setParams,
 }: Pick<Q5FigureProps, 'sweep' | 'extent' | 'setParams'>) {
+  const bound = bindControls<typeof SWEEP_SCHEMA>(SWEEP_SCHEMA, { sweep: sweep.mode }, setParams);
   return (
     <div className="rs-sweep-controls">
-      <Select
-        label="Sweep"
-        value={sweep.mode}
-        options={[
-          { value: 'offset', label: 'origin moves across the ray' },
-          { value: 'rotate', label: 'direction turns about o' },
-        ]}
-        onChange={(m) => setParams({ sweep: m })}
-        testId="sweep-mode"
-      />
+      {bound.select('sweep', 'Sweep', SWEEP_OPTIONS, { testId: 'sweep-mode' })}
       <NumberField
         label={sweep.mode === 'offset' ? 'extent (± radii)' : 'extent (± angular radii)'}
         value={extent}

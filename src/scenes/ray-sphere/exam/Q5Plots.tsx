@@ -19,6 +19,8 @@ export function Q5Plots({
   const series = useMemo(() => sweepSeries({ method }, sweep), [method, sweep]);
   const tangentX = useMemo(() => series.tangents.map((tt) => sweepAt(sweep, tt).x), [series, sweep]);
   const live = { tl, modelAt };
+  // the sweep's samples, shared by the plots and the Δ plot's table and audio trace
+  const data = { sweep, series, tangentX };
   const describeDelta = useMemo(
     () => deltaDescription(series, tangentX, sweep, (tau) => sweepAt(sweep, tau).x),
     [series, tangentX, sweep],
@@ -30,11 +32,8 @@ export function Q5Plots({
   return (
     <>
       <LivePlots
-        tl={tl}
-        modelAt={modelAt}
-        sweep={sweep}
-        series={series}
-        tangentX={tangentX}
+        {...live}
+        {...data}
         xLabel={xLabel}
         method={method}
         aroundG={(plot) => (
@@ -56,7 +55,7 @@ export function Q5Plots({
             describe={describeDelta}
             quiet
             testId="delta-figure"
-            after={() => <DeltaPlotData series={series} tangentX={tangentX} sweep={sweep} />}
+            after={() => <DeltaPlotData {...data} />}
           >
             {plot}
           </LiveDescribed>

@@ -71,18 +71,37 @@ export function LiveDescribed({
   );
 }
 
-/** A plot's data heard (an audio trace) and read (a table), under the plot. */
+/** One axis of a plot's data: its name (spoken and in the table) and its values. */
+interface Axis {
+  label: string;
+  values: ArrayLike<number>;
+}
+
+/**
+ * A plot's data heard (an audio trace: y against x, with its events) and read (a table), under
+ * the plot; their test ids are `<id>-trace` and `<id>-table`.
+ */
 function PlotData({
-  trace,
+  id,
+  label,
+  x,
+  y,
+  events,
   table,
 }: {
-  trace: Omit<AudioTraceProps, 'format'>;
-  table: Pick<ShowAsTableProps, 'caption' | 'columns' | 'rows' | 'testId'>;
+  id: string;
+  /** What the audio trace follows. */
+  label: string;
+  x: Axis;
+  y: Axis;
+  events: AudioTraceProps['events'];
+  table: Pick<ShowAsTableProps, 'caption' | 'columns' | 'rows'>;
 }) {
+  const trace = { label, events, xs: x.values, ys: y.values, xLabel: x.label, yLabel: y.label };
   return (
     <div className="rs-plot-data">
-      <AudioTrace {...trace} format={(v) => num(v, 3)} />
-      <ShowAsTable {...table} />
+      <AudioTrace {...trace} format={(v) => num(v, 3)} testId={`${id}-trace`} />
+      <ShowAsTable {...table} testId={`${id}-table`} />
     </div>
   );
 }
@@ -93,20 +112,15 @@ export function GPlotData({ res, window: w }: { res: RaySphereHit | null; window
   const events = useMemo(() => gEvents(res), [res]);
   return (
     <PlotData
-      trace={{
-        label: 'g(t) along the ray',
-        xs: data.t,
-        ys: data.g,
-        xLabel: 't',
-        yLabel: 'g',
-        events,
-        testId: 'g-trace',
-      }}
+      id="g"
+      label="g(t) along the ray"
+      x={{ label: 't', values: data.t }}
+      y={{ label: 'g', values: data.g }}
+      events={events}
       table={{
         caption: 'g(t) = a t² + b t + c along the ray at the current position',
         columns: ['t', 'g(t)'],
         rows: data.t.map((t, i) => [t, data.g[i]]),
-        testId: 'g-table',
       }}
     />
   );
@@ -132,20 +146,15 @@ export function DeltaPlotData({
   );
   return (
     <PlotData
-      trace={{
-        label: 'robust Δ against the sweep',
-        xs: s.x,
-        ys: s.discStable,
-        xLabel: coord,
-        yLabel: 'Δ',
-        events,
-        testId: 'delta-trace',
-      }}
+      id="delta"
+      label="robust Δ against the sweep"
+      x={{ label: coord, values: s.x }}
+      y={{ label: 'Δ', values: s.discStable }}
+      events={events}
       table={{
         caption: `Δ against the sweep coordinate ${coord}: robust and textbook, and the case`,
         columns: [coord, 'robust Δ', 'textbook Δ', 'case'],
         rows,
-        testId: 'delta-table',
       }}
     />
   );

@@ -2,8 +2,10 @@
  * The precision views: textbook vs robust vs double-double reference (table), the rendered image
  * of a distant sphere by each method, and the error against distance.
  */
-import { useEffect, useMemo, useRef, useState, type ReactNode, type RefObject } from 'react';
-import { Plot, ShowAsTable, Slider, useSeenOnce, type PlotTrace } from '../../../ui';
+import { useEffect, useMemo, useRef, type ReactNode, type RefObject } from 'react';
+import { Plot, ShowAsTable, useSeenOnce, type PlotTrace } from '../../../ui';
+import { useLogDistance } from './useLogDistance';
+import { IMAGE_BG, IMAGE_FG, IMAGE_HOLE } from './imageColours';
 import {
   ERROR_FLOOR,
   errorVsDistance,
@@ -13,6 +15,7 @@ import {
   type RaySphereModel,
 } from '../model';
 import { f32ErrorSeries, f32ErrorTraces } from './float32Traces';
+import { ERROR_COLOURS, guide, methodCurves } from './errorCurves';
 import { describeErrorPlot } from './describe';
 import { formatNumber } from '../../../ui/Readout';
 
@@ -139,9 +142,6 @@ export function PrecisionTable({ model }: { model: RaySphereModel }) {
 }
 
 const IMG = 96;
-const BG: [number, number, number] = [32, 35, 42];
-const FG: [number, number, number] = [236, 228, 206];
-const HOLE: [number, number, number] = [255, 45, 149];
 
 /** One method's render of the distant sphere, with its count of pixels hit (undefined: not yet). */
 function MethodImage({
@@ -179,8 +179,11 @@ function MethodImage({
 
 /** Two small renders of a distant sphere, one ray per pixel, one per method. */
 export function DistantImages() {
-  const [exp, setExp] = useState(7.5);
-  const dist = 10 ** exp;
+  const { dist, slider } = useLogDistance(7.5, {
+    label: 'Distance to the sphere, log₁₀(|o\u00a0−\u00a0c|\u00a0/\u00a0r)',
+    max: 10,
+    testId: 'distant-exp',
+  });
   // computed once the panel comes near the screen (it is under "explore further")
   const box = useRef<HTMLDivElement>(null);
   const seen = useSeenOnce(box);
@@ -196,7 +199,7 @@ export function DistantImages() {
       const g = cv?.getContext('2d');
       if (!g) return;
       const data = g.createImageData(IMG, IMG);
-      shadeImage(t, other, 1, data.data, BG, FG, HOLE);
+      shadeImage(t, other, 1, data.data, IMAGE_BG, IMAGE_FG, IMAGE_HOLE);
       g.putImageData(data, 0, 0);
     };
     draw(naiveRef.current, img.naive, img.stable);
@@ -204,15 +207,7 @@ export function DistantImages() {
   }, [img]);
   return (
     <div className="rs-distant" ref={box}>
-      <Slider
-        label={'Distance to the sphere, log₁₀(|o\u00a0−\u00a0c|\u00a0/\u00a0r)'}
-        value={exp}
-        min={0.5}
-        max={10}
-        step={0.25}
-        onChange={setExp}
-        testId="distant-exp"
-      />
+      {slider}
       <div className="rs-images">
         <MethodImage
           canvasRef={naiveRef}
@@ -257,16 +252,6 @@ export function DistantImages() {
 /** Height of the error plot (px): 440 for the axes, the rest for the legend's rows below them. */
 const ERROR_PLOT_HEIGHT = 600;
 
-const NAIVE_COLOR = '#c0392b';
-const STABLE_COLOR = '#1f5fa8';
-
-/** A curve of the error plot: a line, with markers on the Δ curves. */
-function curve(x: number[], y: number[], name: string, line: object, markers = false): PlotTrace {
-  return markers
-    ? { x, y, name, mode: 'lines+markers', line, marker: { size: 4 } }
-    : { x, y, name, mode: 'lines', line };
-}
-
 /** The error of each method against distance, with the current configuration marked. */
 export function ErrorVsDistance({
   current,
@@ -287,22 +272,9 @@ export function ErrorVsDistance({
       !s
         ? []
         : [
-            curve(s.dist, s.discNaive, 'textbook Δ', { color: NAIVE_COLOR }, true),
-            curve(s.dist, s.discStable, 'robust Δ', { color: STABLE_COLOR }, true),
-            curve(s.dist, s.hitNaive, 'textbook t<sub>hit</sub>', { color: NAIVE_COLOR, dash: 'dot' }),
-            curve(s.dist, s.hitStable, 'robust t<sub>hit</sub>', { color: STABLE_COLOR, dash: 'dot' }),
-            curve(
-              s.dist,
-              s.dist.map((D) => Math.min(1, u * D * D)),
-              'u (D/r)²',
-              { color: '#999', width: 1, dash: 'dash' },
-            ),
-            curve(
-              s.dist,
-              s.dist.map((D) => Math.min(1, u * D)),
-              'u (D/r)',
-              { color: '#bbb', width: 1, dash: 'dash' },
-            ),
+            ...methodCurves(s, ERROR_COLOURS),
+            guide(s, (D) => u * D * D, 'u (D/r)²', ERROR_COLOURS.guide),
+            guide(s, (D) => u * D, 'u (D/r)', ERROR_COLOURS.guide2),
             ...s32,
             ...(here && current > 1 && Number.isFinite(current)
               ? [
@@ -316,8 +288,8 @@ export function ErrorVsDistance({
                     marker: {
                       size: 12,
                       symbol: 'x',
-                      color: [NAIVE_COLOR, STABLE_COLOR],
-                      line: { width: 1, color: '#222' },
+                      color: [ERROR_COLOURS.naive, ERROR_COLOURS.stable],
+                      line: { width: 1, color: 'var(--fg)' },
                     },
                   },
                 ]
@@ -348,7 +320,7 @@ export function ErrorVsDistance({
                 yref: 'paper',
                 y0: 0,
                 y1: 1,
-                line: { color: '#888', width: 1 },
+                line: { color: ERROR_COLOURS.guide2, width: 1 },
               },
             ]
           : [],

@@ -11,6 +11,17 @@ import { intersectRaySphere } from '../../../core/geometry';
 import { FAR_RATIO, type V3 } from '../model';
 import type { RayState } from './CrossSection';
 
+/**
+ * The 3D view's colours per theme: those of the cross-section (its CSS variables --accent for the
+ * ray and the hit, --accent-2 for the roots and the sphere's wireframe, --muted for what lies
+ * behind the origin, --fg for the origin), as three.js takes them; each ≥ 3 : 1 on the viewport
+ * (tests/scenes/ray-sphere/palette.test.ts checks both).
+ */
+export const VIEW3D_COLOURS = {
+  light: { ray: 0xa13f00, root: 0x1f5fa8, behind: 0x555a63, origin: 0x1c1d21 },
+  dark: { ray: 0xffa657, root: 0x79b8ff, behind: 0xa9b0bc, origin: 0xeceff4 },
+} as const;
+
 export interface View3DProps extends RayState {
   height?: number;
   dark?: boolean;
@@ -100,7 +111,12 @@ export function View3D({
     const inView = Math.hypot(...om) < 6;
     ob.origin.visible = inView;
     ob.origin.position.set(...om);
-    (ob.origin.material as THREE.MeshBasicMaterial).color.set(dark ? 0xf0f0f0 : 0x222222);
+    const pal = VIEW3D_COLOURS[dark ? 'dark' : 'light'];
+    (ob.origin.material as THREE.MeshBasicMaterial).color.set(pal.origin);
+    (ob.ray.material as THREE.LineBasicMaterial).color.set(pal.ray);
+    (ob.back.material as THREE.LineDashedMaterial).color.set(pal.behind);
+    (ob.wire.material as THREE.LineBasicMaterial).color.set(pal.root);
+    ob.arrow.setColor(pal.ray);
     ob.arrow.visible = inView && !far;
     ob.arrow.position.set(...om);
     ob.arrow.setDirection(new ob.ctx.THREE.Vector3(...dh));
@@ -112,7 +128,7 @@ export function View3D({
       // root position relative to the view centre, formed in doubles
       m.position.set(...map([o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]]));
       const isHit = res!.tHit === t;
-      (m.material as THREE.MeshBasicMaterial).color.set(isHit ? 0xe8590c : t < 0 ? 0x888888 : 0x1f5fa8);
+      (m.material as THREE.MeshBasicMaterial).color.set(isHit ? pal.ray : t < 0 ? pal.behind : pal.root);
       m.scale.setScalar(isHit ? 1.4 : 1);
     });
     ob.ctx.invalidate();
@@ -134,25 +150,20 @@ export function View3D({
     );
     const wire = new T.LineSegments(
       new T.WireframeGeometry(new T.SphereGeometry(1, 18, 12)),
-      new T.LineBasicMaterial({ color: 0x1f5fa8, transparent: true, opacity: 0.25 }),
+      new T.LineBasicMaterial({ transparent: true, opacity: 0.25 }),
     );
     const lineGeom = () => {
       const g = new T.BufferGeometry();
       g.setAttribute('position', new T.BufferAttribute(new Float32Array(6), 3));
       return g;
     };
-    const ray = new T.Line(lineGeom(), new T.LineBasicMaterial({ color: 0xe8590c }));
-    const back = new T.Line(
-      lineGeom(),
-      new T.LineDashedMaterial({ color: 0x888888, dashSize: 0.08, gapSize: 0.06 }),
-    );
-    const origin = new T.Mesh(
-      new T.SphereGeometry(0.05, 16, 12),
-      new T.MeshBasicMaterial({ color: 0x222222 }),
-    );
-    const arrow = new T.ArrowHelper(new T.Vector3(1, 0, 0), new T.Vector3(), 0.6, 0xe8590c, 0.14, 0.08);
+    // colours are set by update(), for the theme
+    const ray = new T.Line(lineGeom(), new T.LineBasicMaterial());
+    const back = new T.Line(lineGeom(), new T.LineDashedMaterial({ dashSize: 0.08, gapSize: 0.06 }));
+    const origin = new T.Mesh(new T.SphereGeometry(0.05, 16, 12), new T.MeshBasicMaterial());
+    const arrow = new T.ArrowHelper(new T.Vector3(1, 0, 0), new T.Vector3(), 0.6, undefined, 0.14, 0.08);
     const roots = [0, 1].map(
-      () => new T.Mesh(new T.SphereGeometry(0.045, 16, 12), new T.MeshBasicMaterial({ color: 0x1f5fa8 })),
+      () => new T.Mesh(new T.SphereGeometry(0.045, 16, 12), new T.MeshBasicMaterial()),
     );
     ctx.scene.add(sphere, wire, ray, back, origin, arrow, ...roots);
     objs.current = { ctx, sphere, wire, ray, back, origin, arrow, roots };

@@ -6,6 +6,7 @@
 import type { PlotTrace } from '../../../ui';
 import type { ErrorSeries } from '../model';
 import { errorVsDistanceF32 } from '../precisionF32';
+import { ERROR_COLOURS, guide, methodCurves } from './errorCurves';
 
 const U32 = 2 ** -24;
 
@@ -16,43 +17,9 @@ export function f32ErrorSeries(distances: number[]): ErrorSeries {
 }
 
 export function f32ErrorTraces(s: ErrorSeries): PlotTrace[] {
+  const colours = { naive: ERROR_COLOURS.naiveF32, stable: ERROR_COLOURS.stableF32 };
   return [
-    {
-      x: s.dist,
-      y: s.discNaive,
-      name: 'textbook Δ, float32',
-      mode: 'lines+markers',
-      line: { color: '#e67e22' },
-      marker: { size: 4, symbol: 'square' },
-    },
-    {
-      x: s.dist,
-      y: s.discStable,
-      name: 'robust Δ, float32',
-      mode: 'lines+markers',
-      line: { color: '#16a085' },
-      marker: { size: 4, symbol: 'square' },
-    },
-    {
-      x: s.dist,
-      y: s.hitNaive,
-      name: 'textbook t<sub>hit</sub>, float32',
-      mode: 'lines',
-      line: { color: '#e67e22', dash: 'dot' },
-    },
-    {
-      x: s.dist,
-      y: s.hitStable,
-      name: 'robust t<sub>hit</sub>, float32',
-      mode: 'lines',
-      line: { color: '#16a085', dash: 'dot' },
-    },
-    {
-      x: s.dist,
-      y: s.dist.map((D) => Math.min(1, U32 * D * D)),
-      name: 'u₃₂ (D/r)²',
-      mode: 'lines',
-      line: { color: '#d9a066', width: 1, dash: 'dash' },
-    },
+    ...methodCurves(s, colours, ', float32', { size: 4, symbol: 'square' }),
+    guide(s, (D) => U32 * D * D, 'u₃₂ (D/r)²', ERROR_COLOURS.guideF32),
   ];
 }

@@ -5,6 +5,7 @@
  */
 import { memo, useCallback, useMemo } from 'react';
 import type { SceneProps } from '../../../kit/scene';
+import { ScrollBox } from '../../../ui/ScrollBox';
 import {
   DescribedFigure,
   Derivation,
@@ -217,12 +218,7 @@ export const Q3c = memo(function Q3c({ params, setParams, sphere, src, present, 
 function SphereCompare({ sphere }: { sphere: Extract<SphereModel, { ok: true }> }) {
   const { normalized: a, raw: b } = sphere;
   return (
-    <div
-      className="tx-table-wrap"
-      tabIndex={0}
-      role="group"
-      aria-label="The sphere point, normalized and not (the table scrolls sideways on narrow screens)"
-    >
+    <ScrollBox label="The sphere point, normalized and not (the table scrolls sideways on narrow screens)">
       <table className="worked tx-compare" data-testid="sphere-compare">
         <thead>
           <tr>
@@ -258,7 +254,7 @@ function SphereCompare({ sphere }: { sphere: Extract<SphereModel, { ok: true }> 
           </tr>
         </tbody>
       </table>
-    </div>
+    </ScrollBox>
   );
 }
 

@@ -2,9 +2,10 @@
 import { memo, useState } from 'react';
 import type { SceneProps } from '../../../kit/scene';
 import { EXAM_GRID_TEXT, parseGrid, type TextureGrid } from '../../../core/texture';
-import { NumberField, Panel, Select, Slider, Toggle } from '../../../ui';
+import { Panel, Select } from '../../../ui';
+import { bindControls } from '../../../ui/paramControls';
 import { gridTextIfFits } from '../model';
-import { GRID_TEXT_MAX, type Preset, type TextureSchema } from '../params';
+import { GRID_TEXT_MAX, schema, type Preset, type TextureSchema } from '../params';
 
 type PresetChoice = 'exam' | 'custom' | Exclude<Preset, 'grid'>;
 
@@ -19,6 +20,16 @@ const CUSTOM_OPTION: { value: PresetChoice; label: string } = {
   label: 'Custom (grid text)',
 };
 
+const ALIGN_OPTIONS = [
+  { value: 'corner', label: 'Corner nodes (exam)' },
+  { value: 'center', label: 'Texel centres (GPU)' },
+] as const;
+const WRAP_OPTIONS = [
+  { value: 'clamp', label: 'Clamp to edge' },
+  { value: 'repeat', label: 'Repeat' },
+  { value: 'mirror', label: 'Mirrored repeat' },
+] as const;
+
 type Props = Pick<SceneProps<TextureSchema>, 'params' | 'setParams'> & {
   grid: TextureGrid;
   /** Whether the grid is the exam's. */
@@ -30,53 +41,21 @@ type Props = Pick<SceneProps<TextureSchema>, 'params' | 'setParams'> & {
 export const Controls = memo(function Controls({ params, setParams, grid, isExam, onTexture }: Props) {
   const presetChoice: PresetChoice = params.preset === 'grid' ? (isExam ? 'exam' : 'custom') : params.preset;
   const presetOptions = presetChoice === 'custom' ? [...PRESET_OPTIONS, CUSTOM_OPTION] : PRESET_OPTIONS;
+  const c = bindControls(schema, params, setParams);
   return (
     <>
       <Panel title="Query point and path" className="tx-panel-query">
-        {(['u', 'v'] as const).map((k) => (
-          <Slider
-            key={k}
-            label={`${k} (the query at t = 0)`}
-            value={params[k]}
-            min={-2}
-            max={3}
-            step={0.001}
-            onChange={(x) => setParams({ [k]: x })}
-            testId={`${k}-slider`}
-          />
-        ))}
+        {(['u', 'v'] as const).map((k) =>
+          c.slider(k, `${k} (the query at t = 0)`, { min: -2, max: 3, step: 0.001, testId: `${k}-slider` }),
+        )}
         <p className="tx-small">
           Or click / drag on the grid; with the grid focused, arrow keys move the query (Shift: by 0.1).
         </p>
       </Panel>
       <Panel title="Conventions" className="tx-panel-conventions">
-        <Select
-          label="Where the values sit"
-          value={params.align}
-          options={[
-            { value: 'corner', label: 'Corner nodes (exam)' },
-            { value: 'center', label: 'Texel centres (GPU)' },
-          ]}
-          onChange={(x) => setParams({ align: x })}
-          testId="align-select"
-        />
-        <Toggle
-          label="Flip v: v′ = 1 − v (the key accepts it)"
-          checked={params.vflip}
-          onChange={(x) => setParams({ vflip: x })}
-          testId="vflip-toggle"
-        />
-        <Select
-          label="Addressing outside [0, 1]"
-          value={params.wrap}
-          options={[
-            { value: 'clamp', label: 'Clamp to edge' },
-            { value: 'repeat', label: 'Repeat' },
-            { value: 'mirror', label: 'Mirrored repeat' },
-          ]}
-          onChange={(x) => setParams({ wrap: x })}
-          testId="wrap-select"
-        />
+        {c.select('align', 'Where the values sit', ALIGN_OPTIONS, { testId: 'align-select' })}
+        {c.toggle('vflip', 'Flip v: v′ = 1 − v (the key accepts it)', { testId: 'vflip-toggle' })}
+        {c.select('wrap', 'Addressing outside [0, 1]', WRAP_OPTIONS, { testId: 'wrap-select' })}
       </Panel>
       <Panel title="Texture" className="tx-panel-texture">
         <Select
@@ -92,15 +71,7 @@ export const Controls = memo(function Controls({ params, setParams, grid, isExam
         />
         {params.preset !== 'grid' ? (
           <>
-            <NumberField
-              label="Size N (N × N, 2 to 64)"
-              value={params.size}
-              min={2}
-              max={64}
-              step={1}
-              onChange={(x) => setParams({ size: Math.round(x) })}
-              testId="size-field"
-            />
+            {c.number('size', 'Size N (N × N, 2 to 64)', { testId: 'size-field' })}
             {params.preset === 'random' ? (
               <button type="button" onClick={() => setParams({ seed: (params.seed + 1) % 4294967296 })}>
                 New random values (seed {params.seed + 1})

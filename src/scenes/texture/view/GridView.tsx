@@ -395,14 +395,47 @@ const BaseCanvas = memo(function BaseCanvas({ grid, opts, range, win }: ShownTex
   return <canvas ref={ref} className="tx-grid-canvas" aria-hidden="true" />;
 });
 
-const StaticLayer = memo(function StaticLayer({
-  grid,
-  opts,
-  range,
-  win,
-  unitsPerPx,
-  present,
-}: ShownTexture & { win: ViewWindow; unitsPerPx: number; present: boolean }) {
+/** What the SVG layers over the texture draw from: the texture, the window, the scale, the mode. */
+type LayerProps = ShownTexture & { win: ViewWindow; unitsPerPx: number; present: boolean };
+
+/** A node of the grid where it stands in the window, with its value (and that value in [0, 1]). */
+interface PlacedNode {
+  i: number;
+  j: number;
+  x: number;
+  y: number;
+  value: number;
+  t: number;
+}
+
+/** One element per node of the grid, row by row. */
+function mapNodes(
+  { grid, opts, range, win }: ShownTexture & { win: ViewWindow },
+  draw: (node: PlacedNode) => React.ReactNode,
+): React.ReactNode[] {
+  const W = grid.width;
+  const H = grid.height;
+  const items: React.ReactNode[] = [];
+  for (let j = 0; j < H; j++) {
+    for (let i = 0; i < W; i++) {
+      const value = grid.values[j * W + i];
+      items.push(
+        draw({
+          i,
+          j,
+          x: sx(nodeCoord(i, W, opts.align), win),
+          y: sy(nodeCoord(j, H, opts.align), win),
+          value,
+          t: normalizeValue(value, range.min, range.max),
+        }),
+      );
+    }
+  }
+  return items;
+}
+
+const StaticLayer = memo(function StaticLayer({ unitsPerPx, present, ...shown }: LayerProps) {
+  const { grid, opts, win } = shown;
   const W = grid.width;
   const H = grid.height;
   const nmax = Math.max(W, H);
@@ -424,24 +457,18 @@ const StaticLayer = memo(function StaticLayer({
       items.push(line(`hl${j}`, u0, y, u1, y));
     }
   }
-  if (showDots) {
-    for (let j = 0; j < H; j++) {
-      for (let i = 0; i < W; i++) {
-        const x = sx(nodeCoord(i, W, opts.align), win);
-        const y = sy(nodeCoord(j, H, opts.align), win);
-        const t = normalizeValue(grid.values[j * W + i], range.min, range.max);
-        items.push(
-          <circle
-            key={`d${i}-${j}`}
-            cx={x}
-            cy={y}
-            r={nmax <= 16 ? 5 : 3}
-            className={darkTextOn(t) ? 'tx-dot dark' : 'tx-dot'}
-          />,
-        );
-      }
-    }
-  }
+  if (showDots)
+    items.push(
+      ...mapNodes(shown, ({ i, j, x, y, t }) => (
+        <circle
+          key={`d${i}-${j}`}
+          cx={x}
+          cy={y}
+          r={nmax <= 16 ? 5 : 3}
+          className={darkTextOn(t) ? 'tx-dot dark' : 'tx-dot'}
+        />
+      )),
+    );
   // outside [0, 1]²: dim (this is where addressing decides)
   const x0 = sx(0, win);
   const x1 = sx(1, win);
@@ -491,27 +518,13 @@ const StaticLayer = memo(function StaticLayer({
  * label has a solid halo of the opposite colour, so it keeps its contrast on every cell colour and
  * on the dimmed border; labels are left out when they would be smaller than 12 px on screen.
  */
-const LabelLayer = memo(function LabelLayer({
-  grid,
-  opts,
-  range,
-  win,
-  present,
-  unitsPerPx,
-}: ShownTexture & { win: ViewWindow; present: boolean; unitsPerPx: number }) {
-  const W = grid.width;
-  const H = grid.height;
-  const nmax = Math.max(W, H);
+const LabelLayer = memo(function LabelLayer({ unitsPerPx, present, ...shown }: LayerProps) {
+  const nmax = Math.max(shown.grid.width, shown.grid.height);
   const fontSize = Math.min(present ? 56 : 38, (VB / (nmax + 0.5)) * 0.34);
   if (nmax > 16 || fontSize / unitsPerPx < 12) return null;
-  const items: React.ReactNode[] = [];
-  for (let j = 0; j < H; j++) {
-    for (let i = 0; i < W; i++) {
-      const x = sx(nodeCoord(i, W, opts.align), win);
-      const y = sy(nodeCoord(j, H, opts.align), win);
-      const val = grid.values[j * W + i];
-      const t = normalizeValue(val, range.min, range.max);
-      items.push(
+  return (
+    <g className="tx-labels">
+      {mapNodes(shown, ({ i, j, x, y, value, t }) => (
         <text
           key={`t${i}-${j}`}
           x={x + 8}
@@ -520,12 +533,11 @@ const LabelLayer = memo(function LabelLayer({
           className={darkTextOn(t) ? 'tx-val dark' : 'tx-val'}
           data-testid="node-label"
         >
-          {fmtShort(val)}
-        </text>,
-      );
-    }
-  }
-  return <g className="tx-labels">{items}</g>;
+          {fmtShort(value)}
+        </text>
+      ))}
+    </g>
+  );
 });
 
 /** The query's path (clipped to the plotted window). */

@@ -3,8 +3,10 @@
  * ray per pixel, with the textbook and the robust test, beside the JavaScript float32 emulation
  * and a float64 reference of the same rays. Loaded only when its panel is opened (a lazy chunk).
  */
-import { useEffect, useMemo, useRef, useState } from 'react';
-import { Notice, Readout, Slider } from '../../../../ui';
+import { useEffect, useMemo, useRef } from 'react';
+import { Notice, Readout, type ReadoutProps } from '../../../../ui';
+import { useLogDistance } from '../useLogDistance';
+import { IMAGE_BG, IMAGE_FG, IMAGE_HOLE, type Rgb } from '../imageColours';
 import {
   countHitMismatch,
   countUlpMismatch,
@@ -29,10 +31,6 @@ const PRESETS = [
   { exp: 4, label: '10⁴: textbook holes', id: 'far' },
 ];
 
-type Rgb = [number, number, number];
-const BG: Rgb = [32, 35, 42];
-const FG: Rgb = [236, 228, 206];
-const HOLE: Rgb = [255, 45, 149];
 const INVENTED: Rgb = [120, 200, 255];
 
 /** A false-colour ramp for errors in ulps on a log scale: 0 dark blue … ≥ 2¹⁰ ulps red. */
@@ -72,11 +70,11 @@ function hitColour(t: ArrayLike<number>, ref: ArrayLike<number> | null, tMin: nu
   return (i) => {
     const hit = t[i] !== Infinity;
     const refHit = ref ? ref[i] !== Infinity : hit;
-    if (!hit) return refHit ? HOLE : BG;
+    if (!hit) return refHit ? IMAGE_HOLE : IMAGE_BG;
     if (!refHit) return INVENTED;
     const cos = Math.min(1, Math.max(0, 1 - (t[i] - tMin)));
     const s = 0.3 + 0.7 * cos;
-    return [FG[0] * s, FG[1] * s, FG[2] * s];
+    return [IMAGE_FG[0] * s, IMAGE_FG[1] * s, IMAGE_FG[2] * s];
   };
 }
 
@@ -98,8 +96,11 @@ interface Result {
 }
 
 export function GpuSpherePanel() {
-  const [exp, setExp] = useState(3);
-  const dist = 10 ** exp;
+  const { exp, setExp, dist, slider } = useLogDistance(3, {
+    label: 'Distance, log₁₀(D\u00a0/\u00a0r)',
+    max: 6,
+    testId: 'gpu-exp',
+  });
   const glRef = useRef<WebGL2RenderingContext | { ok: false; message: string } | null>(null);
   const res = useMemo<Result>(() => {
     const s = sphereImageSetup(dist, W, W);
@@ -155,12 +156,12 @@ export function GpuSpherePanel() {
     paint(cNaive.current, hitColour(shown.naive, res.ref, res.tMin));
     paint(cStable.current, hitColour(shown.stable, res.ref, res.tMin));
     const errCol = (e: Float32Array) => (i: number) =>
-      res.ref[i] === Infinity && e[i] === 0 ? BG : e[i] === Infinity ? HOLE : ulpColour(e[i]);
+      res.ref[i] === Infinity && e[i] === 0 ? IMAGE_BG : e[i] === Infinity ? IMAGE_HOLE : ulpColour(e[i]);
     paint(cErrN.current, errCol(res.errNaive));
     paint(cErrS.current, errCol(res.errStable));
     const g = res.gpu;
     paint(cMis.current, (i) => {
-      if (!g) return BG;
+      if (!g) return IMAGE_BG;
       const bad = (x: number, y: number) =>
         x !== y &&
         (x === Infinity ||
@@ -175,7 +176,7 @@ export function GpuSpherePanel() {
           : s
             ? [60, 190, 90]
             : res.ref[i] === Infinity
-              ? BG
+              ? IMAGE_BG
               : [55, 60, 72];
     });
   }, [res]);
@@ -201,6 +202,28 @@ export function GpuSpherePanel() {
     </figure>
   );
   const mismatch = res.mismatchNaive + res.mismatchStable;
+  const readouts: ReadoutProps[] = [
+    {
+      id: 'image-wrong-naive',
+      label: 'textbook: pixels wrong (hit/miss ≠ reference)',
+      value: res.wrongNaive,
+    },
+    { id: 'image-wrong-stable', label: 'robust: pixels wrong', value: res.wrongStable },
+    {
+      id: 'image-shader-mismatch',
+      label: `pixels where shader and emulation differ by > ${MISMATCH_ULPS} ulps`,
+      value: res.gpu ? mismatch : null,
+      note: res.gpu ? `textbook ${res.mismatchNaive}, robust ${res.mismatchStable}` : 'no shader ran',
+    },
+    {
+      id: 'image-max-ulps-stable',
+      label: 'robust: largest t error (ulps)',
+      value: res.maxUlpStable,
+      digits: 3,
+    },
+    { id: 'emu-wrong-naive', label: 'emulation, textbook: pixels wrong', value: res.emuWrongNaive },
+    { id: 'emu-wrong-stable', label: 'emulation, robust: pixels wrong', value: res.emuWrongStable },
+  ];
   return (
     <div className="rs-gpu" data-testid="gpu-panel" data-dist={dist}>
       <p className="rs-small">
@@ -222,15 +245,7 @@ export function GpuSpherePanel() {
           </button>
         ))}
       </div>
-      <Slider
-        label={'Distance, log₁₀(D\u00a0/\u00a0r)'}
-        value={exp}
-        min={0.5}
-        max={6}
-        step={0.25}
-        onChange={setExp}
-        testId="gpu-exp"
-      />
+      {slider}
       {res.gpuError ? (
         <Notice kind="warn" testId="gpu-unavailable">
           {res.gpuError}
@@ -278,26 +293,9 @@ export function GpuSpherePanel() {
         <span className="rs-hole">pink</span>: hit lost; light blue: hit invented.
       </p>
       <div className="readouts">
-        <Readout
-          id="image-wrong-naive"
-          label="textbook: pixels wrong (hit/miss ≠ reference)"
-          value={res.wrongNaive}
-        />
-        <Readout id="image-wrong-stable" label="robust: pixels wrong" value={res.wrongStable} />
-        <Readout
-          id="image-shader-mismatch"
-          label={`pixels where shader and emulation differ by > ${MISMATCH_ULPS} ulps`}
-          value={res.gpu ? mismatch : null}
-          note={res.gpu ? `textbook ${res.mismatchNaive}, robust ${res.mismatchStable}` : 'no shader ran'}
-        />
-        <Readout
-          id="image-max-ulps-stable"
-          label="robust: largest t error (ulps)"
-          value={res.maxUlpStable}
-          digits={3}
-        />
-        <Readout id="emu-wrong-naive" label="emulation, textbook: pixels wrong" value={res.emuWrongNaive} />
-        <Readout id="emu-wrong-stable" label="emulation, robust: pixels wrong" value={res.emuWrongStable} />
+        {readouts.map((r) => (
+          <Readout key={r.id} {...r} />
+        ))}
       </div>
       <p className="rs-small" data-testid="gpu-note">
         {res.gpu ? (

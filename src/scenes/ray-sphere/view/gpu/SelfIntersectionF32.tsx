@@ -4,7 +4,7 @@
  * self-hits against the offset ε at several distances, and pbrt's error-bound offset.
  */
 import { useEffect, useMemo, useRef, useState } from 'react';
-import { Plot, Readout, Slider, type PlotTrace } from '../../../../ui';
+import { Plot, Readout, SERIES, Slider, type PlotTrace } from '../../../../ui';
 import {
   ACNE_EPSILONS,
   acneSweepF32,
@@ -16,7 +16,8 @@ import {
 const W = 96;
 const SWEEP_W = 48;
 const DISTANCES = [10, 100, 1e3, 1e4];
-const COLOURS = ['#1f5fa8', '#16a085', '#e67e22', '#c0392b'];
+/** One colour per distance: the shared plot palette (≥ 3 : 1 in both themes, apart for colour-blind readers). */
+const COLOURS = SERIES;
 const n = Math.hypot(-1, 0.8, 0.6);
 /** A directional light up and to the left of the camera (unit). */
 export const ACNE_LIGHT = [-1 / n, 0.8 / n, 0.6 / n] as const;

@@ -43,8 +43,10 @@ float tHit(vec3 d, bool stable) {
   ff = ff + fy * fy;
   ff = ff + fz * fz;
   float cc = ff - uR2;
-  float t0;
-  float t1;
+  // the textbook form's b (a doubling: exact) and the discriminant whose sign decides a hit:
+  // a (r² − |l|²) = Δ/4 by the robust form, b² − 4ac by the textbook one
+  float b = 2.0 * beta;
+  float disc;
   if (stable) {
     float k = beta / a;
     float lx = fx - k * d.x;
@@ -53,32 +55,28 @@ float tHit(vec3 d, bool stable) {
     float ll = lx * lx;
     ll = ll + ly * ly;
     ll = ll + lz * lz;
-    float q4 = a * (uR2 - ll);
-    if (!(q4 >= 0.0)) return -1.0;
-    if (q4 == 0.0) {
-      t0 = -beta / a;
-      t1 = t0;
-    } else {
-      float sq = sqrt(q4);
-      float q = -(beta + (beta >= 0.0 ? sq : -sq));
-      float ra = cc / q;
-      float rb = q / a;
-      t0 = min(ra, rb);
-      t1 = max(ra, rb);
-    }
+    disc = a * (uR2 - ll);
   } else {
-    float b = 2.0 * beta;
-    float disc = b * b - (4.0 * a) * cc;
-    if (!(disc >= 0.0)) return -1.0;
-    if (disc == 0.0) {
-      t0 = -beta / a;
-      t1 = t0;
-    } else {
-      float s = sqrt(disc);
-      float twoA = 2.0 * a;
-      t0 = (-b - s) / twoA;
-      t1 = (-b + s) / twoA;
-    }
+    disc = b * b - (4.0 * a) * cc;
+  }
+  if (!(disc >= 0.0)) return -1.0;
+  float t0;
+  float t1;
+  if (disc == 0.0) {
+    t0 = -beta / a;
+    t1 = t0;
+  } else if (stable) {
+    float sq = sqrt(disc);
+    float q = -(beta + (beta >= 0.0 ? sq : -sq));
+    float ra = cc / q;
+    float rb = q / a;
+    t0 = min(ra, rb);
+    t1 = max(ra, rb);
+  } else {
+    float s = sqrt(disc);
+    float twoA = 2.0 * a;
+    t0 = (-b - s) / twoA;
+    t1 = (-b + s) / twoA;
   }
   return t0 >= 0.0 ? t0 : (t1 >= 0.0 ? t1 : -1.0);
 }
