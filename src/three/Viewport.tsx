@@ -2,6 +2,11 @@ import { useEffect, useEffectEvent, useId, useRef, useState } from 'react';
 import type { AxisDirs, Engine, ViewportContext } from './engine';
 import { observeVisibility, touchOnly, useSeenOnce } from '../ui/useInView';
 import { afterPaint } from '../ui/afterPaint';
+import { usePresent } from '../ui/pageKeys';
+import { useKeyHelp, type KeyHelp } from '../ui/shortcuts';
+import { viewportKey } from './viewMoves';
+import { ViewControls } from './ViewControls';
+import './viewport.css';
 
 export type { ViewportContext } from './engine';
 
@@ -20,51 +25,22 @@ export interface ViewportProps {
    * spherical angles measures φ from +x with z up. Pass false where φ means nothing.
    */
   phiZero?: boolean;
+  /**
+   * Where the orbit and zoom buttons stand: the bottom-right corner (the default), or the top-right
+   * under "Reset view" for a view whose own overlay (a legend) takes the bottom.
+   */
+  toolsAt?: 'bottom' | 'top';
   children?: React.ReactNode;
 }
 
-/** Keyboard steps: 10° per arrow press (2° with Shift), ×1.15 per +/− press. */
-const ORBIT_STEP = (10 * Math.PI) / 180;
-const FINE_STEP = (2 * Math.PI) / 180;
-const ZOOM_STEP = 1.15;
-
-/**
- * Keyboard orbit and zoom for a focused viewport: arrows orbit about the target, + / − zoom,
- * Home resets the view. Returns true when the key was handled.
- */
-export function viewportKey(
-  engine: Pick<Engine, 'orbitBy' | 'zoomBy' | 'resetView'>,
-  e: Pick<KeyboardEvent, 'key' | 'shiftKey'>,
-): boolean {
-  const step = e.shiftKey ? FINE_STEP : ORBIT_STEP;
-  switch (e.key) {
-    case 'ArrowLeft':
-      engine.orbitBy(-step, 0);
-      return true;
-    case 'ArrowRight':
-      engine.orbitBy(step, 0);
-      return true;
-    case 'ArrowUp':
-      engine.orbitBy(0, step);
-      return true;
-    case 'ArrowDown':
-      engine.orbitBy(0, -step);
-      return true;
-    case '+':
-    case '=':
-      engine.zoomBy(1 / ZOOM_STEP);
-      return true;
-    case '-':
-    case '_':
-      engine.zoomBy(ZOOM_STEP);
-      return true;
-    case 'Home':
-      engine.resetView();
-      return true;
-    default:
-      return false;
-  }
-}
+const ON_VIEW = 'On a focused 3D view';
+/** The view's keys, for the `?` list: to start it (touch screens), then to move its camera. */
+const START_KEY: readonly KeyHelp[] = [{ keys: 'Enter', label: 'start the 3D view', where: ON_VIEW }];
+const VIEW_KEYS: readonly KeyHelp[] = [
+  { keys: '← → ↑ ↓', label: 'orbit (with Shift: finer)', where: ON_VIEW },
+  { keys: '+ / −', label: 'zoom in / out', where: ON_VIEW },
+  { keys: 'Home', label: 'back to the opening view', where: ON_VIEW },
+];
 
 /**
  * A three.js viewport: three.js is imported only when the viewport scrolls near the screen;
@@ -78,6 +54,7 @@ export function Viewport({
   setup,
   testId,
   phiZero = true,
+  toolsAt = 'bottom',
   children,
 }: ViewportProps) {
   const hintId = useId();
@@ -187,11 +164,17 @@ export function Viewport({
     if (engine && status === 'ready') engine.start();
   }, [engine, status]);
 
-  // the axis triad follows the camera after every render (direct DOM writes: no React render)
+  // the axis triad follows the camera after every render (direct DOM writes: no React render);
+  // in classroom mode it is drawn larger, its labels at the classroom's 18 px
+  const present = usePresent();
+  const scale = present ? TRIAD_PRESENT_SCALE : 1;
+  const scaleRef = useRef(scale);
+  scaleRef.current = scale;
   useEffect(() => {
     if (!engine) return;
-    return engine.onAfterRender((axes) => drawTriad(triad.current, axes));
+    return engine.onAfterRender((axes) => drawTriad(triad.current, axes, scaleRef.current));
   }, [engine]);
+  useEffect(() => engine?.ctx.invalidate(), [engine, scale]);
 
   const onKeyDown = (e: React.KeyboardEvent<HTMLDivElement>) => {
     if (idle && e.target === e.currentTarget && (e.key === 'Enter' || e.key === ' ')) {
@@ -206,6 +189,7 @@ export function Viewport({
   };
 
   const ready = status === 'ready';
+  useKeyHelp(idle ? START_KEY : ready ? VIEW_KEYS : null);
   return (
     <div className="viewport-wrap">
       <div
@@ -218,7 +202,7 @@ export function Viewport({
         aria-label={
           idle
             ? `${ariaLabel} (3D view not started: press Enter to start it)`
-            : `${ariaLabel} (drag or arrow keys to orbit, scroll or + / − to zoom, Home to reset the view)`
+            : `${ariaLabel} (drag, the buttons or arrow keys to orbit, scroll, the buttons or + / − to zoom, Home to reset the view)`
         }
         aria-describedby={hintId}
         role="group"
@@ -255,7 +239,7 @@ export function Viewport({
           <svg
             className="viewport-triad"
             ref={triad}
-            viewBox="-44 -44 88 88"
+            viewBox={`${-TRIAD_HALF * scale} ${-TRIAD_HALF * scale} ${2 * TRIAD_HALF * scale} ${2 * TRIAD_HALF * scale}`}
             aria-hidden="true"
             data-testid={testId ? `${testId}-axes` : undefined}
           >
@@ -284,21 +268,33 @@ export function Viewport({
             Reset view
           </button>
         ) : null}
+        {ready && engine ? <ViewControls engine={engine} testId={testId} at={toolsAt} /> : null}
         {/* the scene's overlays act on the view: not shown before it starts */}
         {idle ? null : children}
       </div>
       <p className="viewport-hint" id={hintId}>
-        Drag to orbit, scroll to zoom. Keyboard: focus the view, then ← → ↑ ↓ orbit (Shift: finer), + / −
-        zoom, Home resets.
+        Drag to orbit, scroll to zoom, or use the buttons in the corner. Keyboard: focus the view, then ← → ↑
+        ↓ orbit (Shift: finer), + / − zoom, Home resets.
       </p>
     </div>
   );
 }
 
-/** Place the triad's three axes: world axis k seen from the camera is (axes[k][0], axes[k][1]) on screen. */
-function drawTriad(svg: SVGSVGElement | null, axes: AxisDirs) {
+/** Half the triad's viewBox at scale 1 (88 user units across, drawn 5.5rem wide). */
+const TRIAD_HALF = 44;
+/**
+ * The triad's scale in classroom mode: its labels (13 user units at scale 1) at 18 px, the whole
+ * drawing scaled with them so that the labels keep their places beside the axes.
+ */
+const TRIAD_PRESENT_SCALE = 18 / 13;
+
+/**
+ * Place the triad's three axes: world axis k seen from the camera is (axes[k][0], axes[k][1]) on
+ * screen. `scale` enlarges the drawing (its viewBox is scaled alike).
+ */
+function drawTriad(svg: SVGSVGElement | null, axes: AxisDirs, scale: number) {
   if (!svg) return;
-  const R = 25;
+  const R = 25 * scale;
   const order = (['x', 'y', 'z'] as const).map((k) => ({ k, v: axes[k] })).sort((a, b) => a.v[2] - b.v[2]);
   for (const { k, v } of order) {
     const g = svg.querySelector<SVGGElement>(`g[data-axis="${k}"]`);
@@ -310,19 +306,19 @@ function drawTriad(svg: SVGSVGElement | null, axes: AxisDirs) {
     line.setAttribute('x2', sx.toFixed(2));
     line.setAttribute('y2', sy.toFixed(2));
     // an axis pointing away from the viewer is drawn dashed
-    line.setAttribute('stroke-dasharray', v[2] < -0.2 ? '3 2' : 'none');
+    line.setAttribute('stroke-dasharray', v[2] < -0.2 ? `${3 * scale} ${2 * scale}` : 'none');
     // labels sit beyond the tip, pushed out further when the axis is seen end-on
     const ux = len > 1e-6 ? v[0] / len : 0.7;
     const uy = len > 1e-6 ? -v[1] / len : -0.7;
-    const lx = sx + ux * 8;
-    const ly = sy + uy * 8;
+    const lx = sx + ux * 8 * scale;
+    const ly = sy + uy * 8 * scale;
     const texts = g.querySelectorAll('text');
     texts[0].setAttribute('x', lx.toFixed(2));
     texts[0].setAttribute('y', ly.toFixed(2));
     if (texts[1]) {
       // "φ = 0" under (or above, near the bottom edge) the x label
-      texts[1].setAttribute('x', Math.max(-22, Math.min(22, lx)).toFixed(2));
-      texts[1].setAttribute('y', (ly > 18 ? ly - 12 : ly + 12).toFixed(2));
+      texts[1].setAttribute('x', Math.max(-22 * scale, Math.min(22 * scale, lx)).toFixed(2));
+      texts[1].setAttribute('y', (ly > 18 * scale ? ly - 12 * scale : ly + 12 * scale).toFixed(2));
     }
     svg.appendChild(g); // nearer axes on top
   }

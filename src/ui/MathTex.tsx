@@ -2,7 +2,7 @@ import { useEffect, useMemo, useRef, useState } from 'react';
 import { KATEX_OPTIONS } from './katexOptions';
 import { flushMathForPrint, insertTypeset, scheduleMath } from './mathQueue';
 import { afterPaint } from './afterPaint';
-import { previewLabel, texPreview } from './texPreview';
+import { previewLabel, texPreview, texPreviewParts, type PreviewPart } from './texPreview';
 import { keepParenthesesTogether } from './texBreaks';
 import type { TypesetReply, TypesetRequest } from './katex.worker';
 
@@ -151,7 +151,7 @@ function hookPrint(): void {
 
 /**
  * TeX rendered by KaTeX (HTML + MathML for screen readers), typeset in a worker. Until then it is
- * shown as plain text (./texPreview: "p(ω) = k cos θ e^φ"); if KaTeX cannot be run, the source is
+ * shown as plain text (./texPreview: "p(ω) = k cos θ eᵠ"); if KaTeX cannot be run, the source is
  * shown as code. Never throws.
  */
 export function MathTex({
@@ -198,14 +198,20 @@ export function MathTex({
   }, [key, tex, display]);
   // a formula already typeset shows at once, in the render that changes it (see preloadMath)
   const html = CACHE.get(key) ?? typesetHtml;
-  const preview = useMemo(() => (html === undefined ? texPreview(tex, display) : ''), [html, tex, display]);
+  const preview = useMemo(
+    () =>
+      html === undefined
+        ? { parts: texPreviewParts(tex, display), label: previewLabel(texPreview(tex, display)) }
+        : null,
+    [html, tex, display],
+  );
   const Tag = display ? 'div' : 'span';
   const cls = `math${display ? ' math-display' : ''}${className ? ` ${className}` : ''}`;
   if (html === undefined) {
     return (
       <Tag ref={ref as React.RefObject<HTMLDivElement>} className={`${cls} math-pending`}>
-        <span className="math-preview" role="math" aria-label={previewLabel(preview)}>
-          {preview}
+        <span className="math-preview" role="math" aria-label={preview?.label}>
+          {preview ? <PreviewText parts={preview.parts} /> : null}
         </span>
       </Tag>
     );
@@ -223,5 +229,22 @@ export function MathTex({
       className={cls}
       dangerouslySetInnerHTML={{ __html: html }}
     />
+  );
+}
+
+/** The plain-text reading, its scripts that Unicode cannot write set as <sup> / <sub>. */
+function PreviewText({ parts }: { parts: PreviewPart[] }) {
+  return parts.map((p, k) =>
+    typeof p === 'string' ? (
+      p
+    ) : p.tag === 'sup' ? (
+      <sup key={k}>
+        <PreviewText parts={p.parts} />
+      </sup>
+    ) : (
+      <sub key={k}>
+        <PreviewText parts={p.parts} />
+      </sub>
+    ),
   );
 }

@@ -4,6 +4,7 @@
  * (`<AskPrompt>`) with the Reveal button above the scene.
  */
 import type { CSSProperties, ReactNode } from 'react';
+import { useKeyHelp, type KeyHelp } from './shortcuts';
 
 export interface RevealedProps {
   /** `mode.ask`: true until revealed. */
@@ -30,8 +31,12 @@ export function Revealed({ ask, what, children, minHeight, testId = 'ask-hidden'
   );
 }
 
+/** The key of Reveal (the shell listens for it), for the `?` list. */
+const REVEAL_KEY: readonly KeyHelp[] = [{ keys: 'v', label: 'reveal the hidden results' }];
+
 /** The prediction prompt above an `ask=1` scene: the question and the Reveal button (key `v`). */
 export function AskPrompt({ text, onReveal }: { text: string; onReveal: () => void }) {
+  useKeyHelp(REVEAL_KEY);
   return (
     <section className="ask-prompt" aria-labelledby="ask-prompt-h" data-testid="ask-prompt">
       <h2 id="ask-prompt-h" className="ask-prompt-title">

@@ -10,6 +10,7 @@ import { announce } from './announce';
 import './a11y.css';
 import { formatSignificant } from './format';
 import type { Playing } from './audioEngine';
+import { useKeyHelp, type KeyHelp } from './shortcuts';
 
 export type TraceEventKind = 'zero' | 'root' | 'kink' | 'tangent';
 
@@ -76,6 +77,14 @@ export function pointText(
   return `${xLabel} = ${format(xs[i]!)}, ${yLabel} = ${format(ys[i]!)}${evs.length ? `; ${evs.join(', ')}` : ''} (point ${i + 1} of ${n})`;
 }
 
+/** The trace's keys, for the `?` list. */
+const TRACE_KEYS: readonly KeyHelp[] = [
+  { keys: 'Enter or p', label: 'play the curve left to right', where: 'On a focused audio trace' },
+  { keys: '← →', label: 'step point by point', where: 'On a focused audio trace' },
+  { keys: 'Home / End', label: 'the first / last point', where: 'On a focused audio trace' },
+  { keys: 'Esc', label: 'stop', where: 'On a focused audio trace' },
+];
+
 export function AudioTrace({
   label,
   xs,
@@ -87,6 +96,7 @@ export function AudioTrace({
   testId,
   seconds = 4,
 }: AudioTraceProps) {
+  useKeyHelp(TRACE_KEYS);
   const id = useId();
   const n = Math.min(xs.length, ys.length);
   const [index, setIndex] = useState<number | null>(null);

@@ -8,7 +8,7 @@
 import { useEffect, useId, useRef, type KeyboardEvent, type ReactNode } from 'react';
 import { announce } from './announce';
 import './a11y.css';
-import { isTyping } from './shortcuts';
+import { isTyping, useKeyHelp, type KeyHelp } from './shortcuts';
 
 /** How long a description must stay unchanged before it is announced, in ms. */
 export const DESCRIBE_SETTLE_MS = 700;
@@ -27,6 +27,11 @@ export interface DescribedFigureProps {
   children: ReactNode;
 }
 
+/** The figure's key, for the `?` list. */
+const DESCRIBE_KEY: readonly KeyHelp[] = [
+  { keys: 'd', label: 'say what the figure shows now', where: 'Inside a described figure' },
+];
+
 export function DescribedFigure({
   label,
   description,
@@ -36,6 +41,7 @@ export function DescribedFigure({
   className,
   children,
 }: DescribedFigureProps) {
+  useKeyHelp(DESCRIBE_KEY);
   const id = useId();
   const descId = `${id}-description`;
   // what was last said (or shown at mount): the same text is not announced again on its own

@@ -2,8 +2,8 @@
  * Page-wide single-key commands and the classroom-mode flag, for the shared layout and the shell:
  * `c` (controls drawer), `v` (reveal), read whether classroom mode (`present=1`) is on.
  */
-import { useEffect, useRef, useSyncExternalStore } from 'react';
-import { isTyping } from './shortcuts';
+import { useEffect, useMemo, useRef, useSyncExternalStore } from 'react';
+import { isTyping, useKeyHelp } from './shortcuts';
 
 /** Classroom mode is on: the shell puts the class `present` on <html> (src/app/App.tsx). */
 export function isPresent(): boolean {
@@ -25,11 +25,12 @@ export function usePresent(): boolean {
 /**
  * Calls `fn` when `key` (one character, either case) is pressed anywhere on the page while
  * `active`: not while typing in a field, not with a modifier, not when a focused control already
- * handled the key.
+ * handled the key. With `help`, the key is listed under that label in the `?` list while active.
  */
-export function usePageKey(key: string, fn: () => void, active = true): void {
+export function usePageKey(key: string, fn: () => void, active = true, help?: string): void {
   const ref = useRef(fn);
   ref.current = fn;
+  useKeyHelp(useMemo(() => (active && help ? [{ keys: key, label: help }] : null), [key, active, help]));
   useEffect(() => {
     if (!active) return;
     const k = key.toLowerCase();

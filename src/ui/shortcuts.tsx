@@ -24,12 +24,60 @@ export function useShortcuts(handlers: ShortcutHandlers): void {
   useEffect(() => (reg ? reg.register(ref) : undefined), [reg]);
 }
 
-export const SHORTCUTS: readonly { key: string; label: string; action: keyof ShortcutHandlers | 'help' }[] = [
+/** The classroom keys (`?`, the list itself, works on every page). */
+export const SHORTCUTS: readonly { key: string; label: string; action: keyof ShortcutHandlers }[] = [
   { key: 'Space', label: 'play / pause', action: 'playPause' },
   { key: 'r', label: 'back to this scene’s opening state', action: 'reset' },
   { key: 's', label: 'step', action: 'step' },
-  { key: '?', label: 'show this list', action: 'help' },
 ];
+
+/**
+ * A key shown in the `?` list while its owner is mounted: page-wide, or while focus is in a part
+ * of the page (`where`, e.g. "On a focused 3D view").
+ */
+export interface KeyHelp {
+  keys: string;
+  label: string;
+  where?: string;
+}
+
+/** The lists registered by {@link useKeyHelp}, one entry per mounted owner. */
+const keyHelp = new Set<{ entries: readonly KeyHelp[] }>();
+
+/** List `entries` among the keyboard shortcuts while mounted and not null (keep the array stable). */
+export function useKeyHelp(entries: readonly KeyHelp[] | null): void {
+  useEffect(() => {
+    if (!entries) return;
+    const token = { entries };
+    keyHelp.add(token);
+    return () => {
+      keyHelp.delete(token);
+    };
+  }, [entries]);
+}
+
+/** The registered keys, each once, grouped by where they work (page-wide first), in order of registration. */
+function helpGroups(): [string, KeyHelp[]][] {
+  const groups = new Map<string, KeyHelp[]>([['', []]]);
+  const seen = new Set<string>();
+  for (const { entries } of keyHelp)
+    for (const e of entries) {
+      const where = e.where ?? '';
+      if (seen.has(`${where}|${e.keys}`)) continue;
+      seen.add(`${where}|${e.keys}`);
+      if (!groups.has(where)) groups.set(where, []);
+      groups.get(where)!.push(e);
+    }
+  return [...groups];
+}
+
+/** Space on a focused button, link, summary or box presses it: it is not the page's play / pause. */
+function pressable(target: EventTarget | null): boolean {
+  return (
+    target instanceof Element &&
+    !!target.closest('button, a[href], summary, [role="button"], [role="checkbox"], [role="radio"], input')
+  );
+}
 
 /** Whether a key event's target takes text (page-wide single-letter keys must then stay out). */
 export function isTyping(target: EventTarget | null): boolean {
@@ -44,8 +92,10 @@ export function isTyping(target: EventTarget | null): boolean {
 }
 
 /**
- * Provides the shortcut registry and, when `active`, listens for the keys. `onHelp` toggles the
- * list of shortcuts.
+ * Provides the shortcut registry and listens for the keys: `?` (the list of shortcuts) on every
+ * page, the classroom keys (space, r, s) when `active`. The list shows the keys that work on the
+ * page: the classroom keys a scene offers, and those registered with {@link useKeyHelp} (the
+ * controls drawer's `c`, Reveal's `v`, a 3D view's arrows …).
  */
 export function ShortcutProvider({ active, children }: { active: boolean; children: ReactNode }) {
   const handlersRef = useRef(new Set<{ current: ShortcutHandlers }>());
@@ -59,7 +109,10 @@ export function ShortcutProvider({ active, children }: { active: boolean; childr
   const helpOpenRef = useRef(helpOpen);
   helpOpenRef.current = helpOpen;
   const toggleHelp = useCallback(() => setHelpOpen((o) => !o), []);
-  // Esc closes the list wherever focus is (also outside classroom mode, e.g. inside the dialog)
+  const dialog = useRef<HTMLDivElement>(null);
+  // Esc closes the list wherever focus is (also outside classroom mode, e.g. inside the dialog).
+  // The list lies over the page's corner: focus tabbed out of it would land under it, out of sight
+  // (WCAG 2.4.11), so it closes when the keyboard takes focus elsewhere.
   useEffect(() => {
     if (!helpOpen) return;
     const on = (e: KeyboardEvent) => {
@@ -68,11 +121,19 @@ export function ShortcutProvider({ active, children }: { active: boolean; childr
         setHelpOpen(false);
       }
     };
+    const away = (e: FocusEvent) => {
+      const t = e.target;
+      if (t instanceof Element && !dialog.current?.contains(t) && t.matches(':focus-visible'))
+        setHelpOpen(false);
+    };
     window.addEventListener('keydown', on);
-    return () => window.removeEventListener('keydown', on);
+    document.addEventListener('focusin', away);
+    return () => {
+      window.removeEventListener('keydown', on);
+      document.removeEventListener('focusin', away);
+    };
   }, [helpOpen]);
   useEffect(() => {
-    if (!active) return;
     const on = (e: KeyboardEvent) => {
       // defaultPrevented: a focused control (e.g. the timeline transport) already handled the key
       if (e.defaultPrevented || e.ctrlKey || e.metaKey || e.altKey || isTyping(e.target)) return;
@@ -84,10 +145,11 @@ export function ShortcutProvider({ active, children }: { active: boolean; childr
         return;
       }
       let action: keyof ShortcutHandlers | 'help' | null = null;
-      if (e.key === ' ' || e.code === 'Space') action = 'playPause';
+      if (e.key === '?') action = 'help';
+      else if (!active) return;
+      else if (e.key === ' ' || e.code === 'Space') action = pressable(e.target) ? null : 'playPause';
       else if (e.key === 'r' || e.key === 'R') action = 'reset';
       else if (e.key === 's' || e.key === 'S') action = 'step';
-      else if (e.key === '?') action = 'help';
       if (!action) return;
       if (action === 'help') {
         e.preventDefault();
@@ -108,18 +170,27 @@ export function ShortcutProvider({ active, children }: { active: boolean; childr
     return () => window.removeEventListener('keydown', on);
   }, [active, toggleHelp]);
   // the list shows only the keys that do something on this page
-  const available = helpOpen
-    ? SHORTCUTS.filter(
-        (s) =>
-          s.action === 'help' ||
-          [...handlersRef.current].some((h) => !!h.current[s.action as keyof ShortcutHandlers]),
-      )
-    : [];
+  const offered = (s: (typeof SHORTCUTS)[number]) =>
+    active && [...handlersRef.current].some((h) => !!h.current[s.action]);
+  const groups = helpOpen ? helpGroups() : [];
+  if (helpOpen) {
+    const page = SHORTCUTS.filter(offered).map(({ key, label }) => ({
+      keys: key,
+      label,
+    }));
+    groups[0][1] = [
+      ...page,
+      ...groups[0][1],
+      { keys: '?', label: 'show this list' },
+      { keys: 'Esc', label: 'close this list' },
+    ];
+  }
   return (
     <ShortcutContext.Provider value={registry.current}>
       {children}
       {helpOpen ? (
         <div
+          ref={dialog}
           className="shortcut-help"
           role="dialog"
           aria-modal="false"
@@ -127,22 +198,21 @@ export function ShortcutProvider({ active, children }: { active: boolean; childr
           data-testid="shortcut-help"
         >
           <h2>Keyboard shortcuts</h2>
-          <dl>
-            {available.map((s) => (
-              <div key={s.key}>
-                <dt>
-                  <kbd>{s.key}</kbd>
-                </dt>
-                <dd>{s.label}</dd>
-              </div>
-            ))}
-            <div>
-              <dt>
-                <kbd>Esc</kbd>
-              </dt>
-              <dd>close this list</dd>
+          {groups.map(([where, keys]) => (
+            <div key={where}>
+              {where ? <h3>{where}</h3> : null}
+              <dl>
+                {keys.map((k) => (
+                  <div key={k.keys}>
+                    <dt>
+                      <kbd>{k.keys}</kbd>
+                    </dt>
+                    <dd>{k.label}</dd>
+                  </div>
+                ))}
+              </dl>
             </div>
-          </dl>
+          ))}
           <button type="button" onClick={() => setHelpOpen(false)} autoFocus>
             Close
           </button>

@@ -128,7 +128,7 @@ function DrawerToggle({ children }: { children: ReactNode }) {
     else if (restore.current) btn.current?.focus({ preventScroll: true });
     restore.current = false;
   }, [open]);
-  usePageKey('c', () => setOpen(!openRef.current));
+  usePageKey('c', () => setOpen(!openRef.current), true, 'show or hide the controls');
   useEffect(() => {
     if (!open) return;
     const on = (e: KeyboardEvent) => {

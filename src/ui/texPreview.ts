@@ -1,8 +1,13 @@
 /**
  * A plain-text reading of TeX, shown while a formula waits for KaTeX (./MathTex): "p(ω) = k cos θ
- * e^φ" instead of the source "p(\omega) = k\cos\theta\,e^{\phi}". It reads better on a slow phone
+ * eᵠ" instead of the source "p(\omega) = k\cos\theta\,e^{\phi}". It reads better on a slow phone
  * and to a screen reader, and, being about as wide as the typeset formula, the text around it
  * moves less when the formula arrives (Lighthouse's layout shift).
+ *
+ * Two forms: {@link texPreviewParts}, what is shown (scripts in Unicode where it has every
+ * character, else marked for <sup> / <sub>, so no caret is ever shown), and {@link texPreview}, one
+ * string with "^" and "_" where Unicode lacks a digit's or sign's script ("e^φ"), the source of the
+ * accessible name ({@link previewLabel} says the marks in words).
  *
  * One pass over the characters (no backtracking), never throws; what it does not know it keeps.
  */
@@ -310,11 +315,90 @@ const SUB: Record<string, string> = {
   h: 'ₕ',
 };
 
+/**
+ * Superscripts of letters (Latin, and the Greek ones Unicode has) and of the slash, for the shown
+ * form: "eᵠ", "x⁻¹ᐟ²", "cosᵐθ". (Not for the accessible name: a screen reader says them badly.)
+ */
+const SUP_SHOWN: Readonly<Record<string, string>> = Object.assign(
+  Object.create(null) as Record<string, string>,
+  {
+    ...SUPERSCRIPT,
+    ...Object.fromEntries(
+      [...'abcdefghijklmnoprstuvwxyz'].map((c, k) => [c, [...'ᵃᵇᶜᵈᵉᶠᵍʰⁱʲᵏˡᵐⁿᵒᵖʳˢᵗᵘᵛʷˣʸᶻ'][k]]),
+    ),
+    β: 'ᵝ',
+    γ: 'ᵞ',
+    δ: 'ᵟ',
+    ε: 'ᵋ',
+    θ: 'ᶿ',
+    φ: 'ᵠ',
+    χ: 'ᵡ',
+    '/': 'ᐟ',
+  },
+);
+
+/** Marks around a script Unicode cannot write (never in TeX source: control characters). */
+const SUP_OPEN = '\u0001';
+const SUB_OPEN = '\u0002';
+const CLOSE = '\u0003';
+const MARKS = new RegExp(`[${SUP_OPEN}${SUB_OPEN}${CLOSE}]`, 'g');
+
 /** Longest input read; the rest is cut (a formula on a page is far shorter). */
 const MAX_CHARS = 20_000;
 
+/** The plain-text reading as one string; scripts Unicode cannot write are "^x", "_(ab)". */
 export function texPreview(tex: string, display = false): string {
-  const s = tex.length > MAX_CHARS ? tex.slice(0, MAX_CHARS) : tex;
+  const stack: string[] = [];
+  let out = '';
+  for (const ch of read(tex, display, SUPERSCRIPT)) {
+    if (ch === SUP_OPEN || ch === SUB_OPEN) {
+      stack.push(out, ch === SUP_OPEN ? '^' : '_');
+      out = '';
+    } else if (ch === CLOSE && stack.length) {
+      const mark = stack.pop()!;
+      out = stack.pop()! + mark + wrap(out);
+    } else if (ch !== CLOSE) out += ch;
+  }
+  return out;
+}
+
+/** A piece of the shown reading: text, or a script to set in <sup> / <sub>. */
+export type PreviewPart = string | { tag: 'sup' | 'sub'; parts: PreviewPart[] };
+
+/** Scripts nested deeper than this are shown as their text, inline (hostile input only). */
+const MAX_SCRIPT_DEPTH = 4;
+
+/** The reading as shown: text and the scripts Unicode cannot write, to be set as <sup> / <sub>. */
+export function texPreviewParts(tex: string, display = false): PreviewPart[] {
+  const root: PreviewPart[] = [];
+  const stack = [root];
+  let text = '';
+  const flush = () => {
+    if (text) stack[stack.length - 1].push(text);
+    text = '';
+  };
+  let depth = 0;
+  for (const ch of read(tex, display, SUP_SHOWN)) {
+    if (ch === SUP_OPEN || ch === SUB_OPEN) {
+      if (++depth >= MAX_SCRIPT_DEPTH) continue;
+      flush();
+      const p: PreviewPart = { tag: ch === SUP_OPEN ? 'sup' : 'sub', parts: [] };
+      stack[stack.length - 1].push(p);
+      stack.push(p.parts);
+    } else if (ch === CLOSE) {
+      if (depth-- >= MAX_SCRIPT_DEPTH || depth < 0) continue;
+      flush();
+      stack.pop();
+    } else text += ch;
+  }
+  flush();
+  return root;
+}
+
+/** The reading with scripts Unicode cannot write (with `sup`'s characters) between marks. */
+function read(tex: string, display: boolean, sup: Readonly<Record<string, string>>): string {
+  // (the marks' characters, should the source hold any, are dropped)
+  const s = (tex.length > MAX_CHARS ? tex.slice(0, MAX_CHARS) : tex).replace(MARKS, '');
   let i = 0;
 
   /** The group or single token starting at i (after spaces), read to plain text. */
@@ -414,7 +498,9 @@ export function texPreview(tex: string, display = false): string {
       } else if (c === '^' || c === '_') {
         i++;
         const arg = argument();
-        out += script(arg, c === '^' ? SUPERSCRIPT : SUB, c);
+        // a script belongs to what precedes it: no space between ("cosᵐθ", not "cos ᵐθ")
+        while (out.endsWith(' ')) out = out.slice(0, -1);
+        out += script(arg, c === '^' ? sup : SUB, c === '^' ? SUP_OPEN : SUB_OPEN);
       } else if (c === '&' || c === '~') {
         // a column break, a tie
         i++;
@@ -456,14 +542,15 @@ function wrap(t: string): string {
   return x.length <= 1 || /^[\w.′]+$/u.test(x) ? x : `(${x})`;
 }
 
-function script(arg: string, map: Readonly<Record<string, string>>, mark: string): string {
+/** A script in Unicode when `map` has each of its characters, else between `open` and CLOSE. */
+function script(arg: string, map: Readonly<Record<string, string>>, open: string): string {
   const x = arg.trim();
   if (x === '') return '';
   if (x === '′' || x === '′′') return x;
   let out = '';
   for (const ch of x) {
     const m = map[ch];
-    if (m === undefined) return `${mark}${wrap(x)}`;
+    if (m === undefined) return `${open}${x}${CLOSE}`;
     out += m;
   }
   return out;

@@ -280,6 +280,76 @@ test('the key v reveals (not while typing), without part= the first part’s pro
   await expect.poll(() => page.evaluate(() => window.location.hash)).toBe('#/texture');
 });
 
+/** The keys the open `?` list names (each <dt>), by the heading they stand under ('' for page-wide). */
+async function listedKeys(page: Page): Promise<Record<string, string[]>> {
+  const dialog = page.getByRole('dialog', { name: 'Keyboard shortcuts' });
+  await expect(dialog).toBeVisible();
+  return dialog.evaluate((d) => {
+    const out: Record<string, string[]> = {};
+    for (const dl of d.querySelectorAll('dl')) {
+      const h = dl.previousElementSibling?.tagName === 'H3' ? dl.previousElementSibling.textContent! : '';
+      out[h] = [...dl.querySelectorAll('dt')].map((dt) => dt.textContent!.trim());
+    }
+    return out;
+  });
+}
+
+test('the ? list names every key that works on the page, and only those: c in classroom mode, v while asking', async ({
+  page,
+}) => {
+  test.setTimeout(120_000);
+  await openScene(page, '#/hemisphere?present=1&ask=1');
+  await expect(page.locator('.viewport').first()).toHaveAttribute('data-status', 'ready', {
+    timeout: 60_000,
+  });
+  await page.locator('h1').click();
+  await page.keyboard.press('?');
+  let keys = await listedKeys(page);
+  expect(keys['']).toEqual(expect.arrayContaining(['r', 'c', 'v', '?', 'Esc']));
+  // the animation is held at its start until Reveal: its keys are not offered yet
+  for (const k of ['Space', 's']) expect(keys['']).not.toContain(k);
+  // the keys that work with focus on a part of the page: a 3D view, a described figure
+  expect(Object.keys(keys)).toEqual(
+    expect.arrayContaining(['On a focused 3D view', 'Inside a described figure']),
+  );
+  expect(keys['On a focused 3D view']).toEqual(expect.arrayContaining(['← → ↑ ↓', '+ / −', 'Home']));
+  await page.keyboard.press('Escape');
+  await expect(page.getByRole('dialog', { name: 'Keyboard shortcuts' })).toHaveCount(0);
+  // each listed page-wide key does what the list says: c opens the drawer, v reveals
+  await page.keyboard.press('c');
+  await expect(page.getByTestId('controls-drawer')).toBeVisible();
+  await page.keyboard.press('c');
+  await expect(page.getByTestId('controls-drawer')).toBeHidden();
+  await page.keyboard.press('v');
+  await expect(page.getByTestId('ask-prompt')).toHaveCount(0);
+  // revealed: v no longer does anything, so it is not listed
+  await page.keyboard.press('?');
+  keys = await listedKeys(page);
+  expect(keys['']).toEqual(expect.arrayContaining(['Space', 'r', 's', 'c', '?', 'Esc']));
+  expect(keys['']).not.toContain('v');
+  await page.keyboard.press('Escape');
+  // the revealed histograms can be heard: their audio traces' keys join the list
+  await expect(page.locator('.audio-trace').first()).toBeAttached({ timeout: 30_000 });
+  await page.keyboard.press('?');
+  expect((await listedKeys(page))['On a focused audio trace']).toEqual(
+    expect.arrayContaining(['Enter or p', '← →', 'Home / End', 'Esc']),
+  );
+  await page.keyboard.press('Escape');
+
+  // outside classroom mode: ? still lists what works (v while asking), never the classroom keys
+  await openScene(page, '#/monte-carlo?ask=1');
+  await page.locator('h1').click();
+  await page.keyboard.press('?');
+  keys = await listedKeys(page);
+  expect(keys['']).toContain('v');
+  for (const k of ['Space', 'r', 's', 'c']) expect(keys['']).not.toContain(k);
+  expect(keys['On a focused 3D view']).toBeUndefined();
+  // the list lies over the page's corner: tabbing out of it closes it (focus never lands under it)
+  await expect(page.getByRole('dialog', { name: 'Keyboard shortcuts' }).getByRole('button')).toBeFocused();
+  await page.keyboard.press('Shift+Tab');
+  await expect(page.getByRole('dialog', { name: 'Keyboard shortcuts' })).toHaveCount(0);
+});
+
 test('a guide preset opened with ask=1 puts the preset’s own question', async ({ page }) => {
   await openScene(page, '#/guide');
   const preset = page

@@ -70,6 +70,32 @@ for (const route of ROUTES) {
       await expect.poll(() => sidewaysOverflow(page), { timeout: 15_000 }).toEqual([]);
     });
 
+    test('no caret in the visible text: powers are written as superscripts', async ({ page }) => {
+      await open(page, route);
+      // every formula still waiting for KaTeX shows its plain-text reading: that has none either
+      const carets = await page.evaluate(() => {
+        const out: string[] = [];
+        const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+        for (let n = walker.nextNode(); n; n = walker.nextNode()) {
+          const text = n.nodeValue ?? '';
+          const el = n.parentElement;
+          if (!text.includes('^') || !el) continue;
+          // code a reader types or reads as code (expression syntax, TeX source), and what is not shown
+          if (
+            el.closest(
+              'code, pre, kbd, samp, textarea, script, style, .katex-mathml, [hidden], [aria-hidden="true"]',
+            )
+          )
+            continue;
+          if (el.getClientRects().length === 0 || getComputedStyle(el).visibility === 'hidden') continue;
+          const at = text.indexOf('^');
+          out.push(JSON.stringify(text.slice(Math.max(0, at - 30), at + 20)));
+        }
+        return out;
+      });
+      expect(carets).toEqual([]);
+    });
+
     test('text spacing (1.4.12): nothing clipped; tabbing, focus is never hidden (2.4.11) and its ring keeps 3:1 (1.4.11)', async ({
       page,
     }) => {

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import { NAMED_OPERATORS, texPreview } from '../../src/ui/texPreview';
+import { NAMED_OPERATORS, texPreview, texPreviewParts, type PreviewPart } from '../../src/ui/texPreview';
 
 describe('texPreview: TeX read as plain text while KaTeX is on its way', () => {
   it('reads the formulas of the exam as a person would write them', () => {
@@ -163,5 +163,61 @@ describe('texPreview: norms', () => {
       texPreview(String.raw`\lVert p - C \rVert^2 = r^2 \Rightarrow \lVert o + t d - C \rVert^2 = r^2`),
     ).toBe('‖p − C‖² = r² ⇒ ‖o + t d − C‖² = r²');
     expect(texPreview(String.raw`c = \lVert o - C\rVert^2 - r^2`)).toBe('c = ‖o − C‖² − r²');
+  });
+});
+
+/** The text a reader sees of the shown form (scripts as their text). */
+const shown = (parts: PreviewPart[]): string =>
+  parts.map((p) => (typeof p === 'string' ? p : shown(p.parts))).join('');
+
+describe('texPreviewParts: the reading as shown, with no caret', () => {
+  it('writes scripts in Unicode where it has every character, letters and the slash included', () => {
+    expect(texPreviewParts(String.raw`p(\omega) = k\cos\theta\,e^{\phi}`)).toEqual(['p(ω) = k cos θ eᵠ']);
+    expect(texPreviewParts(String.raw`x^{-1/2} = x^{-\frac{1}{2}}`)).toEqual(['x⁻¹ᐟ² = x⁻¹ᐟ²']);
+    expect(texPreviewParts(String.raw`k \cos^m\theta\, e^{a\phi}`)).toEqual(['k cosᵐθ eᵃᵠ']);
+    expect(texPreviewParts(String.raw`\theta_l`)).toEqual(['θₗ']);
+  });
+
+  it('sets the rest as <sup> / <sub> parts, nested as in the source', () => {
+    expect(texPreviewParts(String.raw`k = \frac{2}{e^{2\pi} - 1}`)).toEqual([
+      'k = 2/(e',
+      { tag: 'sup', parts: ['2π'] },
+      ' − 1)',
+    ]);
+    expect(texPreviewParts(String.raw`\cos\theta_{\text{light}}`)).toEqual([
+      'cos θ',
+      { tag: 'sub', parts: ['light'] },
+    ]);
+    expect(texPreviewParts(String.raw`e^{x^{\pi}}`)).toEqual([
+      'e',
+      { tag: 'sup', parts: ['x', { tag: 'sup', parts: ['π'] }] },
+    ]);
+  });
+
+  it('the one-string form keeps its marks where Unicode lacks a script (the accessible name says them)', () => {
+    expect(texPreview(String.raw`k = \frac{2}{e^{2\pi} - 1}`)).toBe('k = 2/(e^(2π) − 1)');
+    expect(texPreview(String.raw`e^{x^{\pi}}`)).toBe('e^(x^π)');
+    expect(texPreview(String.raw`\cos\theta_{\text{light}}`)).toBe('cos θ_light');
+  });
+
+  it('never shows a caret or an underscore for TeX made of known commands', () => {
+    const known = ['\\alpha', '\\frac{1}{2}', '\\pi', 'x^2', 'y_i', 'e^{', '}', '_{', 'a', '1', '+', ' '];
+    fc.assert(
+      fc.property(fc.array(fc.constantFrom(...known), { maxLength: 40 }), fc.boolean(), (parts, display) => {
+        const out = shown(texPreviewParts(parts.join(''), display));
+        expect(out).not.toMatch(/[\^_]/);
+      }),
+    );
+  });
+
+  it('hostile input: scripts nested thousands deep, and the marks’ own characters in the source', () => {
+    const deep = 'x^{'.repeat(3000) + 'π' + '}'.repeat(3000);
+    const parts = texPreviewParts(deep);
+    expect(shown(parts)).toBe('x'.repeat(3000) + 'π');
+    let depth = 0;
+    for (let p: PreviewPart | undefined = parts[1]; p && typeof p !== 'string'; p = p.parts[1]) depth++;
+    expect(depth).toBeLessThan(5);
+    expect(texPreview('a\u0001b\u0003c^{\u0002π}')).toBe('abc^π');
+    expect(texPreviewParts('a\u0001b\u0003c^{\u0002π}')).toEqual(['abc', { tag: 'sup', parts: ['π'] }]);
   });
 });

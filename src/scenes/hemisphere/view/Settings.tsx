@@ -56,7 +56,11 @@ export function Settings({
           value={params.pdf}
           onCommit={(s) => setParams({ pdf: s })}
           error={pdfError}
-          hint="mathjs syntax in theta, phi, e.g. cos(theta)^2 * (2 + cos(phi))"
+          hint={
+            <>
+              mathjs syntax in theta, phi, e.g. <code>cos(theta)^2 * (2 + cos(phi))</code>
+            </>
+          }
           testId="pdf-input"
         />
       ) : null}

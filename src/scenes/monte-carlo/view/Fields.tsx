@@ -17,7 +17,13 @@ export function FnField(props: {
       error={props.error}
       onCommit={props.onCommit}
       testId={props.testId}
-      hint={props.hint ?? 'in x, e.g. (x+2)^2, exp(-x)*sin(3x)'}
+      hint={
+        props.hint ?? (
+          <>
+            in x, e.g. <code>(x+2)^2</code>, <code>exp(-x)*sin(3x)</code>
+          </>
+        )
+      }
     />
   );
 }

@@ -251,6 +251,7 @@ export function SphereView({ grid, opts, range, normalize, dir, onPick, height }
       height={height}
       setup={setup}
       testId="sphere-view"
+      toolsAt="top"
     >
       <div className="tx-sphere-legend" aria-hidden="true">
         <span className="tx-seam-key" /> seam φ = 0 (u = 0 ≡ 1) · grey: pole axis · white: the grid’s node
