@@ -3,24 +3,20 @@
  * light, floor and shading point.
  */
 import { memo } from 'react';
-import type { Vec3 } from '../../../core/lights';
-import { NumberField, Panel, Slider } from '../../../ui';
+import { Panel, Slider } from '../../../ui';
 import { bindControls } from '../../../ui/paramControls';
+import { VectorField } from '../../../ui/VectorField';
 import { PRESETS, presetActive, schema, type AreaLightParams } from '../params';
 import { STRATEGIES, STRATEGY_LABEL } from '../strategies';
 
 type Set = (patch: Partial<AreaLightParams>) => void;
 
-const AXES = ['x', 'y', 'z'] as const;
 const STRATEGY_OPTIONS = STRATEGIES.map((s) => ({ value: s, label: STRATEGY_LABEL[s] }));
 /** The light's two sides, the two entries of `ls`, and the range of their sliders. */
 const SIDES = ['Width w', 'Height h'] as const;
 const SIDE_RANGE = { min: 0, max: 10, step: 0.05 };
 
-/**
- * Three number fields for a vector parameter (test ids `<name>-x`, `-y`, `-z`), in the range the
- * URL parser clamps that parameter to.
- */
+/** A vector parameter's three fields (test ids `<name>-x`, `-y`, `-z`), in the range the URL parser clamps it to. */
 function VecField({
   name,
   label,
@@ -32,27 +28,15 @@ function VecField({
   params: AreaLightParams;
   set: Set;
 }) {
-  const value = params[name];
   return (
-    <fieldset className="al-vec">
-      <legend>{label}</legend>
-      {AXES.map((axis, k) => (
-        <NumberField
-          key={axis}
-          label={axis}
-          value={value[k]}
-          step={0.1}
-          min={schema[name].min}
-          max={schema[name].max}
-          testId={`${name}-${axis}`}
-          onChange={(x) => {
-            const next: Vec3 = [value[0], value[1], value[2]];
-            next[k] = x;
-            set({ [name]: next });
-          }}
-        />
-      ))}
-    </fieldset>
+    <VectorField
+      label={label}
+      value={params[name]}
+      min={schema[name].min}
+      max={schema[name].max}
+      testIdPrefix={name}
+      onChange={(v) => set({ [name]: v })}
+    />
   );
 }
 

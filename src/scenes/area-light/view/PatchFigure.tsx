@@ -9,6 +9,7 @@
  */
 import { superscript } from '../../../ui/axis';
 import type { PatchModel } from '../patch';
+import { ArrowMarker } from '../../../ui/ArrowMarker';
 
 const W = 560;
 const H = 260;
@@ -108,17 +109,7 @@ export function PatchFigure({ patch }: { patch: PatchModel }) {
       aria-hidden="true"
     >
       <defs>
-        <marker
-          id="al-arrow"
-          viewBox="0 0 10 10"
-          refX="9"
-          refY="5"
-          markerWidth="6"
-          markerHeight="6"
-          orient="auto-start-reverse"
-        >
-          <path d="M0,0 L10,5 L0,10 z" fill="currentColor" />
-        </marker>
+        <ArrowMarker id="al-arrow" />
       </defs>
       {/* the two similar half-triangles: (p, C, top of dA⊥) and (p, axis ∩ circle, top of dω_l) */}
       <path d={`M ${PX} ${PY} L ${cx} ${cy} L ${pa.x} ${pa.y} Z`} className="al-fig-tri-big" />

@@ -5,6 +5,7 @@
 import { memo } from 'react';
 import { NumberField } from '../../../ui';
 import { bindControls } from '../../../ui/paramControls';
+import { VectorField } from '../../../ui/VectorField';
 import { PRECISION_OPTIONS } from '../view/Float32Panel';
 import type { V3 } from '../model';
 import { CASE_PRESETS, PRECISION_PRESETS, schema, type Preset, type RaySphereParams } from '../params';
@@ -105,25 +106,14 @@ interface VecFieldProps {
 
 function VecField({ name, label, value, edit }: VecFieldProps) {
   return (
-    <fieldset className="rs-vec">
-      <legend>{label}</legend>
-      {(['x', 'y', 'z'] as const).map((axis, i) => (
-        <NumberField
-          key={axis}
-          label={axis}
-          value={value[i]}
-          min={-BIG}
-          max={BIG}
-          step={0.1}
-          testId={`input-${name}-${axis}`}
-          onChange={(x) => {
-            const v: V3 = [value[0], value[1], value[2]];
-            v[i] = x;
-            edit({ [name]: v });
-          }}
-        />
-      ))}
-    </fieldset>
+    <VectorField
+      label={label}
+      value={value}
+      min={-BIG}
+      max={BIG}
+      testIdPrefix={`input-${name}`}
+      onChange={(v) => edit({ [name]: v })}
+    />
   );
 }
 

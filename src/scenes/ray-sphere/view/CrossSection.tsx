@@ -13,6 +13,7 @@ import { announce } from '../../../ui/announce';
 import { useWidth } from '../../../ui/useWidth';
 import { useSectionWidth } from '../../../ui/Deferred';
 import { dirFromFrame, fromFrame, tidy, type V3 } from '../model';
+import { ArrowMarker } from '../../../ui/ArrowMarker';
 import {
   cl,
   handlePositions,
@@ -347,17 +348,7 @@ export function CrossSection({
         data-testid="cross-section"
       >
         <defs>
-          <marker
-            id="rs-arrow"
-            viewBox="0 0 10 10"
-            refX="8"
-            refY="5"
-            markerWidth="7"
-            markerHeight="7"
-            orient="auto-start-reverse"
-          >
-            <path d="M0,0 L10,5 L0,10 z" className="rs-arrowhead" />
-          </marker>
+          <ArrowMarker id="rs-arrow" size={7} refX={8} headClassName="rs-arrowhead" />
         </defs>
         <circle data-k="circle" className="rs-circle" />
         <line data-k="back" className="rs-ray-back" />
