@@ -71,6 +71,7 @@ function Float32WarpTable() {
 
 interface GpuRun {
   form: 0 | 1;
+  seed: number;
   p: number;
   statistic: number;
   dof: number;
@@ -110,7 +111,10 @@ export function GpuWarpPanel({ seed }: { seed: number }) {
   const captureBuf = useRef<WebGLBuffer | null>(null);
   const [form, setForm] = useState<0 | 1>(1);
   const [error, setError] = useState<string | null>(null);
-  const [run, setRun] = useState<GpuRun | null>(null);
+  const [lastRun, setRun] = useState<GpuRun | null>(null);
+  // the run of the form and seed on screen (never the previous one's, in the render before the
+  // effect below starts the new run)
+  const run = lastRun && lastRun.form === form && lastRun.seed === seed ? lastRun : null;
   const [bench, setBench] = useState<{ median: number; frames: number } | null>(null);
   const [renderer, setRenderer] = useState('');
 
@@ -177,6 +181,7 @@ export function GpuWarpPanel({ seed }: { seed: number }) {
       }
       setRun({
         form,
+        seed,
         p: res.pValue,
         statistic: res.statistic,
         dof: res.dof,
