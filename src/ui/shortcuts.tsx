@@ -198,21 +198,23 @@ export function ShortcutProvider({ active, children }: { active: boolean; childr
           data-testid="shortcut-help"
         >
           <h2>Keyboard shortcuts</h2>
-          {groups.map(([where, keys]) => (
-            <div key={where}>
-              {where ? <h3>{where}</h3> : null}
-              <dl>
-                {keys.map((k) => (
-                  <div key={k.keys}>
-                    <dt>
-                      <kbd>{k.keys}</kbd>
-                    </dt>
-                    <dd>{k.label}</dd>
-                  </div>
-                ))}
-              </dl>
-            </div>
-          ))}
+          <div className="shortcut-groups">
+            {groups.map(([where, keys]) => (
+              <div key={where}>
+                {where ? <h3>{where}</h3> : null}
+                <dl>
+                  {keys.map((k) => (
+                    <div key={k.keys}>
+                      <dt>
+                        <kbd>{k.keys}</kbd>
+                      </dt>
+                      <dd>{k.label}</dd>
+                    </div>
+                  ))}
+                </dl>
+              </div>
+            ))}
+          </div>
           <button type="button" onClick={() => setHelpOpen(false)} autoFocus>
             Close
           </button>
