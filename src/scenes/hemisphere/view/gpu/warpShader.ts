@@ -9,6 +9,7 @@
  * sin θ = √ξ₁, cos θ = √(1 − ξ₁), φ = log1p(c ξ₂) (GLSL has no log1p: Kahan's
  * log(w)·u/(w − 1) with w = 1 + u). c = e^{2π} − 1.
  */
+import { makeProgram } from '../../../../three/glProgram';
 
 export const WARP_VERTEX_SHADER = `#version 300 es
 precision highp float;
@@ -68,34 +69,10 @@ export interface WarpPass {
   dispose(): void;
 }
 
-function compile(gl: WebGL2RenderingContext, type: number, src: string): WebGLShader | string {
-  const sh = gl.createShader(type);
-  if (!sh) return 'could not create a shader';
-  gl.shaderSource(sh, src);
-  gl.compileShader(sh);
-  if (!gl.getShaderParameter(sh, gl.COMPILE_STATUS)) {
-    const log = gl.getShaderInfoLog(sh) ?? 'compile failed';
-    gl.deleteShader(sh);
-    return log;
-  }
-  return sh;
-}
-
 /** Compile and link the warp program (with transform feedback of vDir), or say why not. */
 export function makeWarpPass(gl: WebGL2RenderingContext, c: number): WarpPass | string {
-  const vs = compile(gl, gl.VERTEX_SHADER, WARP_VERTEX_SHADER);
-  if (typeof vs === 'string') return `vertex shader: ${vs}`;
-  const fs = compile(gl, gl.FRAGMENT_SHADER, WARP_FRAGMENT_SHADER);
-  if (typeof fs === 'string') return `fragment shader: ${fs}`;
-  const program = gl.createProgram();
-  if (!program) return 'could not create a program';
-  gl.attachShader(program, vs);
-  gl.attachShader(program, fs);
-  gl.transformFeedbackVaryings(program, ['vDir'], gl.INTERLEAVED_ATTRIBS);
-  gl.linkProgram(program);
-  gl.deleteShader(vs);
-  gl.deleteShader(fs);
-  if (!gl.getProgramParameter(program, gl.LINK_STATUS)) return gl.getProgramInfoLog(program) ?? 'link failed';
+  const program = makeProgram(gl, WARP_VERTEX_SHADER, WARP_FRAGMENT_SHADER, ['vDir']);
+  if (typeof program === 'string') return program;
   const loc = {
     seed: gl.getUniformLocation(program, 'uSeed'),
     form: gl.getUniformLocation(program, 'uForm'),

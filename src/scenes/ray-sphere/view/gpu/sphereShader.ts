@@ -11,6 +11,7 @@
  * division and sqrt are allowed a few ulps of error (GLSL ES 3.00 §4.5.1). Where that happens
  * the panel counts and shows the pixels.
  */
+import { makeProgram } from '../../../../three/glProgram';
 
 export const VERTEX_SHADER = `#version 300 es
 void main() {
@@ -105,37 +106,6 @@ export interface GpuSphereImage {
 export interface GpuFailure {
   ok: false;
   message: string;
-}
-
-function compile(gl: WebGL2RenderingContext, type: number, src: string): WebGLShader | string {
-  const sh = gl.createShader(type);
-  if (!sh) return 'could not create a shader';
-  gl.shaderSource(sh, src);
-  gl.compileShader(sh);
-  if (!gl.getShaderParameter(sh, gl.COMPILE_STATUS)) {
-    const log = gl.getShaderInfoLog(sh) ?? '';
-    gl.deleteShader(sh);
-    return log || 'shader compile failed';
-  }
-  return sh;
-}
-
-/** Link a program from GLSL sources; a string is the error. */
-export function makeProgram(gl: WebGL2RenderingContext, vs: string, fs: string, feedback?: string[]) {
-  const v = compile(gl, gl.VERTEX_SHADER, vs);
-  if (typeof v === 'string') return `vertex shader: ${v}`;
-  const f = compile(gl, gl.FRAGMENT_SHADER, fs);
-  if (typeof f === 'string') return `fragment shader: ${f}`;
-  const p = gl.createProgram();
-  if (!p) return 'could not create a program';
-  gl.attachShader(p, v);
-  gl.attachShader(p, f);
-  if (feedback) gl.transformFeedbackVaryings(p, feedback, gl.INTERLEAVED_ATTRIBS);
-  gl.linkProgram(p);
-  gl.deleteShader(v);
-  gl.deleteShader(f);
-  if (!gl.getProgramParameter(p, gl.LINK_STATUS)) return gl.getProgramInfoLog(p) || 'link failed';
-  return p;
 }
 
 /** The renderer's name (unmasked where the browser allows it). */
