@@ -10,13 +10,19 @@ import { APP_VERSION } from './version';
 import { downloadFile } from '../ui/download';
 import { IntInput } from '../ui/IntInput';
 
-const FILES: { name: keyof PackageOutputs; label: string; type: string }[] = [
-  { name: 'practice-scorm12.zip', label: 'SCORM 1.2 package', type: 'application/zip' },
-  { name: 'practice-scorm2004.zip', label: 'SCORM 2004 package', type: 'application/zip' },
-  { name: 'practice-cmi5.zip', label: 'cmi5 package', type: 'application/zip' },
-  { name: 'questions-moodle.xml', label: 'Moodle XML question bank', type: 'application/xml' },
-  { name: 'questions-qti21.zip', label: 'QTI 2.1 question bank', type: 'application/zip' },
+/** The files offered, in the order of their buttons. */
+const FILES: { name: keyof PackageOutputs; label: string }[] = [
+  { name: 'practice-scorm12.zip', label: 'SCORM 1.2 package' },
+  { name: 'practice-scorm2004.zip', label: 'SCORM 2004 package' },
+  { name: 'practice-cmi5.zip', label: 'cmi5 package' },
+  { name: 'questions-moodle.xml', label: 'Moodle XML question bank' },
+  { name: 'questions-qti21.zip', label: 'QTI 2.1 question bank' },
 ];
+
+/** A file's MIME type, by its extension (every package is a zip, the Moodle bank an XML file). */
+function mimeType(name: string): string {
+  return name.endsWith('.xml') ? 'application/xml' : 'application/zip';
+}
 
 export function LmsDownloads({
   questions,
@@ -30,7 +36,7 @@ export function LmsDownloads({
   const [mastery, setMastery] = useState(80);
   const [status, setStatus] = useState('');
   const [busy, setBusy] = useState(false);
-  const get = async (name: keyof PackageOutputs, type: string) => {
+  const get = async (name: keyof PackageOutputs) => {
     setBusy(true);
     setStatus('Preparing…');
     try {
@@ -40,7 +46,7 @@ export function LmsDownloads({
         setStatus,
       );
       const data = out[name];
-      downloadFile(name, data as BlobPart, type);
+      downloadFile(name, data as BlobPart, mimeType(name));
       setStatus(`${name}: ${(data.length / 1e6).toFixed(2)} MB.`);
     } catch (e) {
       setStatus(
@@ -70,7 +76,7 @@ export function LmsDownloads({
             key={f.name}
             type="button"
             disabled={busy}
-            onClick={() => void get(f.name, f.type)}
+            onClick={() => void get(f.name)}
             data-testid={`lms-build-${f.name}`}
           >
             {f.label}
