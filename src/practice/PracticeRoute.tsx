@@ -9,6 +9,7 @@
  * invalid; expected answers `expected-NAME` once shown. Every verdict is also announced to the page
  * as `rml:practice-verdict` (a CustomEvent on window) for the host-page API.
  */
+import { Superscripted } from '../ui/Superscripted';
 import { useCallback, useEffect, useMemo, useState, type FormEvent } from 'react';
 import { MathTex } from '../ui/MathTex';
 import { IntInput } from '../ui/IntInput';
@@ -392,7 +393,9 @@ function QuestionPage({
       </div>
       <section className="panel practice-statement" aria-labelledby="statement-title">
         <h2 id="statement-title">The question</h2>
-        <p>{variant.statement}</p>
+        <p>
+          <Superscripted text={variant.statement} />
+        </p>
         <Givens givens={variant.givens} testIds />
       </section>
       <form className="panel practice-answers" onSubmit={check} noValidate aria-labelledby="answers-title">
@@ -403,8 +406,8 @@ function QuestionPage({
         </p>
         <details className="policy" data-testid="policy">
           <summary>How answers are checked and marked</summary>
-          <p>{NUMERIC_POLICY.text}</p>
-          <p>{FORMULA_POLICY.text}</p>
+          <p>{withCode(NUMERIC_POLICY.text)}</p>
+          <p>{withCode(FORMULA_POLICY.text)}</p>
           <p>
             Classic mistakes the key deducts marks for are recognised and named. Where the key accepts another
             convention (the grid read with v′ = 1 − v in Q3), it is accepted and said so, as long as every
@@ -501,12 +504,21 @@ function nextSteps(v: Variant, s: Session): string[] {
   return out;
 }
 
+/** Text whose typed examples stand between backticks, with those set as code. */
+function withCode(text: string) {
+  return text.split('`').map((t, i) => (i % 2 ? <code key={i}>{t}</code> : t));
+}
+
 function SolutionSteps({ steps }: { steps: SolutionStep[] }) {
   return (
     <>
       {steps.map((s, i) => (
         <div key={i} className="solution-step">
-          {s.text ? <p>{s.text}</p> : null}
+          {s.text ? (
+            <p>
+              <Superscripted text={s.text} />
+            </p>
+          ) : null}
           {s.tex ? <MathTex tex={s.tex} display /> : null}
         </div>
       ))}
@@ -540,7 +552,9 @@ function PartBlock({
   const left = SCORING.revealAfter - progress.wrong;
   return (
     <fieldset className="practice-part" data-testid={`part-${part.id}`}>
-      <legend>{part.prompt}</legend>
+      <legend>
+        <Superscripted text={part.prompt} />
+      </legend>
       {part.answers.map((a) => (
         <AnswerRow
           key={a.name}
@@ -639,7 +653,7 @@ function AnswerRow({
   return (
     <div className={`answer-row${kind ? ` is-${kind}` : ''}`}>
       <label htmlFor={id} className="answer-label">
-        {spec.label}
+        <Superscripted text={spec.label} />
       </label>
       {spec.kind === 'choice' ? (
         // a choice is chosen from its options (graded as the option's name), never typed
@@ -675,7 +689,8 @@ function AnswerRow({
           data-value={verdict.value}
           data-credit={progress.last}
         >
-          <span className="verdict-tag">{verdictTag(verdict.value)}</span> {verdict.message}
+          <span className="verdict-tag">{verdictTag(verdict.value)}</span>{' '}
+          <Superscripted text={verdict.message} />
           {verdict.value !== 'invalid' &&
           verdict.value !== 'incorrect' &&
           !verdict.value.startsWith('mistake:') ? (
@@ -692,7 +707,8 @@ function AnswerRow({
             ) : spec.kind === 'number' && spec.expected !== null ? (
               fmt(spec.expected, 6)
             ) : (
-              exp
+              // the answer as one would type it (expression syntax)
+              <code>{exp}</code>
             )}
           </output>
         </p>
@@ -706,7 +722,9 @@ function Givens({ givens, testIds }: { givens: Given[]; testIds: boolean }) {
     <dl className="givens">
       {givens.map((g) => (
         <div key={g.name} className={`given given-${g.name}`}>
-          <dt>{g.label}</dt>
+          <dt>
+            <Superscripted text={g.label} />
+          </dt>
           <dd>
             {g.name === 'grid' ? (
               <GridTable text={g.value} testId={testIds ? `given-${g.name}` : undefined} />
@@ -716,7 +734,7 @@ function Givens({ givens, testIds }: { givens: Given[]; testIds: boolean }) {
                 data-value={g.value}
                 className="given-value"
               >
-                {g.tex ? <MathTex tex={g.tex} /> : g.display}
+                {g.tex ? <MathTex tex={g.tex} /> : <Superscripted text={g.display} />}
               </span>
             )}
           </dd>

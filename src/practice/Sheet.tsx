@@ -5,6 +5,7 @@
  * online self-check; then the answer key in typeset mathematics; then (with `solutions=1`) a page of
  * worked solutions per variant.
  */
+import { Superscripted } from '../ui/Superscripted';
 import { useEffect, useState } from 'react';
 import { MathTex } from '../ui/MathTex';
 import { queryProblems, type ShellFlags } from '../kit/shell';
@@ -132,7 +133,9 @@ function AnswerSpace({ a }: { a: AnswerSpec }) {
   if (a.kind === 'choice')
     return (
       <p className="sheet-blank sheet-choice">
-        <span className="sheet-label">{a.label}:</span>{' '}
+        <span className="sheet-label">
+          <Superscripted text={a.label} />:
+        </span>{' '}
         {a.options.map((o) => (
           <span key={o} className="sheet-option">
             <span className="tick-box" aria-hidden="true" /> {o}
@@ -143,13 +146,18 @@ function AnswerSpace({ a }: { a: AnswerSpec }) {
   if (a.kind === 'formula')
     return (
       <div className="sheet-blank sheet-formula">
-        <span className="sheet-label">{a.label} =</span>
+        <span className="sheet-label">
+          <Superscripted text={a.label} /> =
+        </span>
         <span className="blank-box" aria-hidden="true" />
       </div>
     );
   return (
     <p className="sheet-blank">
-      <span className="sheet-label">{a.label} =</span> <span className="blank-line" aria-hidden="true" />
+      <span className="sheet-label">
+        <Superscripted text={a.label} /> =
+      </span>{' '}
+      <span className="blank-line" aria-hidden="true" />
     </p>
   );
 }
@@ -159,8 +167,10 @@ function Givens({ v }: { v: Variant }) {
     <dl className="givens sheet-givens">
       {v.givens.map((g) => (
         <div key={g.name} className={`given given-${g.name}`}>
-          <dt>{g.label}</dt>
-          <dd>{g.tex ? <MathTex tex={g.tex} /> : g.display}</dd>
+          <dt>
+            <Superscripted text={g.label} />
+          </dt>
+          <dd>{g.tex ? <MathTex tex={g.tex} /> : <Superscripted text={g.display} />}</dd>
         </div>
       ))}
     </dl>
@@ -223,11 +233,15 @@ export default function Sheet({ sp, flags }: { sp: URLSearchParams; flags: Shell
               {i + 1}. Question {questionInfo(v.question).n}: {v.title}{' '}
               <span className="muted">(variant {v.seed})</span>
             </h2>
-            <p>{v.statement}</p>
+            <p>
+              <Superscripted text={v.statement} />
+            </p>
             <Givens v={v} />
             {v.parts.map((p) => (
               <div key={p.id} className="sheet-part">
-                <p className="sheet-prompt">{p.paperPrompt ?? p.prompt}</p>
+                <p className="sheet-prompt">
+                  <Superscripted text={p.paperPrompt ?? p.prompt} />
+                </p>
                 {p.answers.map((a) => (
                   <AnswerSpace key={a.name} a={a} />
                 ))}
@@ -285,7 +299,11 @@ export default function Sheet({ sp, flags }: { sp: URLSearchParams; flags: Shell
               </h2>
               {v.solution.map((s, k) => (
                 <div key={k} className="solution-step">
-                  {s.text ? <p>{s.text}</p> : null}
+                  {s.text ? (
+                    <p>
+                      <Superscripted text={s.text} />
+                    </p>
+                  ) : null}
                   {s.tex ? <MathTex tex={s.tex} display /> : null}
                 </div>
               ))}

@@ -33,6 +33,7 @@ import type {
   NumberMistake,
 } from './model';
 
+/** (The policies' `text`: what is typed stands between backticks, shown as code.) */
 export const NUMERIC_POLICY = {
   /** An exact expression (56/3, 2/(e^(2*pi) - 1)) must agree to this relative tolerance. */
   exactRtol: 1e-9,
@@ -40,13 +41,13 @@ export const NUMERIC_POLICY = {
   exactAtol: 1e-15,
   /** A typed decimal that is not exact needs at least this many significant figures. */
   minSigFigs: 3,
-  text: 'Numbers: type a decimal (0.00374, 3.74e-3) or an exact expression (56/3, 2/(e^(2*pi) - 1), sqrt(2)/2). An expression must be exactly right (to 9 digits). A decimal is read at the precision you typed it: 0.00374 means 0.003735 to 0.003745, so it must be the right answer rounded to the figures you give, with at least 3 significant figures. A value that is a classic mistake rather than the right answer is named as that mistake; if, to the figures you typed, it is both, it is marked correct with a note to give more figures. Type none where a quantity does not exist.',
+  text: 'Numbers: type a decimal (`0.00374`, `3.74e-3`) or an exact expression (`56/3`, `2/(e^(2*pi) - 1)`, `sqrt(2)/2`). An expression must be exactly right (to 9 digits). A decimal is read at the precision you typed it: 0.00374 means 0.003735 to 0.003745, so it must be the right answer rounded to the figures you give, with at least 3 significant figures. A value that is a classic mistake rather than the right answer is named as that mistake; if, to the figures you typed, it is both, it is marked correct with a note to give more figures. Type none where a quantity does not exist.',
 } as const;
 
 export const FORMULA_POLICY = {
   points: 40,
   rtol: 1e-8,
-  text: 'Formulas: type them in mathjs syntax, e.g. 2*sin(theta)*cos(theta), (1 - cos(2*theta))/2, acos(1 - 2*xi)/2, log(1 + (e^(2*pi) - 1)*xi). Use theta, phi and xi (θ, φ, ξ, ξ₁, ξ₂ work too; ln means log). A formula is correct when it equals the expected one at 40 random points of the domain (to 8 digits): any equivalent form is accepted.',
+  text: 'Formulas: type them in mathjs syntax, e.g. `2*sin(theta)*cos(theta)`, `(1 - cos(2*theta))/2`, `acos(1 - 2*xi)/2`, `log(1 + (e^(2*pi) - 1)*xi)`. Use theta, phi and xi (θ, φ, ξ, ξ₁, ξ₂ work too; ln means log). A formula is correct when it equals the expected one at 40 random points of the domain (to 8 digits): any equivalent form is accepted.',
 } as const;
 
 /**

@@ -5,7 +5,7 @@
  */
 import AxeBuilder from '@axe-core/playwright';
 import type { Page } from '@playwright/test';
-import { SCENES } from '../../src/kit/catalogue';
+import { QUESTIONS, SCENES } from '../../src/kit/catalogue';
 import { test, expect, openScene } from './fixtures';
 import {
   applyTextSpacing,
@@ -33,6 +33,30 @@ async function open(page: Page, hash: string) {
     scrollTo(0, 0);
   });
   await expect(page.locator('[data-deferred="pending"]')).toHaveCount(0, { timeout: 60_000 });
+}
+
+/** Text nodes on screen with a caret in them (code, TeX source and hidden text aside). */
+function visibleCarets(page: Page): Promise<string[]> {
+  return page.evaluate(() => {
+    const out: string[] = [];
+    const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+    for (let n = walker.nextNode(); n; n = walker.nextNode()) {
+      const text = n.nodeValue ?? '';
+      const el = n.parentElement;
+      if (!text.includes('^') || !el) continue;
+      // code a reader types or reads as code (expression syntax, TeX source), and what is not shown
+      if (
+        el.closest(
+          'code, pre, kbd, samp, textarea, script, style, .katex-mathml, [hidden], [aria-hidden="true"]',
+        )
+      )
+        continue;
+      if (el.getClientRects().length === 0 || getComputedStyle(el).visibility === 'hidden') continue;
+      const at = text.indexOf('^');
+      out.push(JSON.stringify(text.slice(Math.max(0, at - 30), at + 20)));
+    }
+    return out;
+  });
 }
 
 function withTheme(hash: string, theme: 'light' | 'dark') {
@@ -73,26 +97,7 @@ for (const route of ROUTES) {
     test('no caret in the visible text: powers are written as superscripts', async ({ page }) => {
       await open(page, route);
       // every formula still waiting for KaTeX shows its plain-text reading: that has none either
-      const carets = await page.evaluate(() => {
-        const out: string[] = [];
-        const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
-        for (let n = walker.nextNode(); n; n = walker.nextNode()) {
-          const text = n.nodeValue ?? '';
-          const el = n.parentElement;
-          if (!text.includes('^') || !el) continue;
-          // code a reader types or reads as code (expression syntax, TeX source), and what is not shown
-          if (
-            el.closest(
-              'code, pre, kbd, samp, textarea, script, style, .katex-mathml, [hidden], [aria-hidden="true"]',
-            )
-          )
-            continue;
-          if (el.getClientRects().length === 0 || getComputedStyle(el).visibility === 'hidden') continue;
-          const at = text.indexOf('^');
-          out.push(JSON.stringify(text.slice(Math.max(0, at - 30), at + 20)));
-        }
-        return out;
-      });
+      const carets = await visibleCarets(page);
       expect(carets).toEqual([]);
     });
 
@@ -133,5 +138,18 @@ for (const s of SCENES) {
       if (why) hidden.push(why);
     }
     expect(hidden).toEqual([]);
+  });
+}
+
+// the practice questions: their statements, givens, feedback and worked solutions
+for (const q of QUESTIONS) {
+  test(`#/practice/${q.practice.id}: no caret in the statement, feedback or worked solution`, async ({
+    page,
+  }) => {
+    await openScene(page, `#/practice/${q.practice.id}?seed=3`);
+    // the statement, every part's prompt, the givens and the whole worked solution with its answers
+    await page.getByTestId('show-solution').click();
+    await expect(page.getByTestId('solution')).toBeVisible();
+    expect(await visibleCarets(page)).toEqual([]);
   });
 }
