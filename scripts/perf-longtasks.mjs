@@ -80,21 +80,6 @@ function tasksOf(events) {
   const tasks = topLevelTasks(ev);
   // JS samples (ProfileChunk events) for --js
   const { nodes, samples } = withJs ? traceProfileSamples(events, main) : { nodes: new Map(), samples: [] };
-  if (withJs) {
-    const prof = events.find((e) => e.name === 'Profile' && `${e.pid}:${e.tid}` === main);
-    let clock = prof?.args?.data?.startTime ?? 0;
-    for (const e of events) {
-      if (e.name !== 'ProfileChunk' || !prof || e.pid !== prof.pid || e.id !== prof.id) continue;
-      const d = e.args.data;
-      for (const n of d.cpuProfile?.nodes ?? []) nodes.set(n.id, n);
-      const ids = d.cpuProfile?.samples ?? [];
-      const deltas = d.timeDeltas ?? [];
-      for (let i = 0; i < ids.length; i++) {
-        clock += deltas[i] ?? 0;
-        samples.push([clock, ids[i]]);
-      }
-    }
-  }
   const label = (n) =>
     `${n.callFrame.functionName || '(anon)'} ${String(n.callFrame.url).replace(/^.*\/assets\//, '')}:${n.callFrame.lineNumber + 1}`;
   for (const t of tasks) {

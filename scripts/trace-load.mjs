@@ -73,21 +73,6 @@ try {
       .map((e) => ({ ...e, wall: e.dur, dur: useWall ? e.dur : (e.tdur ?? e.dur) }));
     // JS samples of our thread (ProfileChunk events), as [time µs, node id], with the node tree
     const { nodes, samples } = withJs ? traceProfileSamples(events, key) : { nodes: new Map(), samples: [] };
-    if (withJs) {
-      const prof = events.find((e) => e.name === 'Profile' && `${e.pid}:${e.tid}` === key);
-      let clock = prof?.args?.data?.startTime ?? 0;
-      for (const e of events) {
-        if (e.name !== 'ProfileChunk' || !prof || e.pid !== prof.pid || e.id !== prof.id) continue;
-        const d = e.args.data;
-        for (const n of d.cpuProfile?.nodes ?? []) nodes.set(n.id, n);
-        const ids = d.cpuProfile?.samples ?? [];
-        const deltas = d.timeDeltas ?? [];
-        for (let i = 0; i < ids.length; i++) {
-          clock += deltas[i] ?? 0;
-          samples.push([clock, ids[i]]);
-        }
-      }
-    }
     const frameName = (n) =>
       `${n.callFrame.functionName || '(anon)'} ${String(n.callFrame.url).replace(/^.*\/assets\//, '')}`;
     evs.sort((a, b) => a.ts - b.ts || b.dur - a.dur);
