@@ -325,11 +325,13 @@ test.describe('robustness and extras', () => {
       `[hemisphere 1e6] main-thread copy per chunk (the worker generates them): ${stats(grow.map((g) => g[0]))}; ${totalPts} points in ${totalMs.toFixed(0)} ms = ${((totalPts / totalMs) * 1000).toExponential(2)} points/s`,
     );
     // the main thread only copies what the worker generated: 10⁶ points (23 MB of buffers) take it a
-    // few ms on a quiet desktop; generating them there took it about 2 s on a loaded 2-core machine
+    // few ms on a quiet desktop and ~30 ms on this 2-core machine; generating them there took it
+    // about 2 s. The bound leaves room for a busy machine, where copying memory stretches more than
+    // the JavaScript loop that measures the slowdown (76 ms was seen with the whole suite running).
     const factor = await slowdown(page);
     expect(totalPts).toBeGreaterThanOrEqual(1_000_000);
     expect(totalMs, `main-thread time to fill 10⁶ points (slowdown ${factor.toFixed(1)})`).toBeLessThan(
-      15 * factor,
+      50 * factor,
     );
     // a quiet scene renders nothing: no frames are requested after the growth ends
     const idle = await page.evaluate(

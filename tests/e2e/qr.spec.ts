@@ -7,6 +7,10 @@ import type jsQR from 'jsqr';
 import type { Locator, Page } from '@playwright/test';
 import { test, expect, openScene } from './fixtures';
 
+// The decoder below is test tooling added to the page as a script, and reads the screenshot through a
+// data: URL; the app's Content-Security-Policy refuses both (as it should), so this file bypasses it.
+test.use({ bypassCSP: true });
+
 const require = createRequire(import.meta.url);
 const JSQR_UMD = require.resolve('jsqr/dist/jsQR.js');
 
