@@ -348,6 +348,19 @@ test.describe('animation: samples arrive one by one', () => {
     expectFrame(await raceReadouts(page), raceAt(examTrack(1), 120));
     // settle (fonts, KaTeX, first layout), then count frames over a second of idling
     await expect.poll(() => page.evaluate(() => document.fonts.status)).toBe('loaded');
+    // sections and formulas that mount after the first paint take a frame each: wait for a quiet
+    // window first (a running animation never gives one), then count over a whole second
+    const raf = () => page.evaluate(() => (window as unknown as { __raf: number }).__raf);
+    await expect
+      .poll(
+        async () => {
+          const a = await raf();
+          await page.waitForTimeout(400);
+          return (await raf()) - a;
+        },
+        { timeout: 20_000 },
+      )
+      .toBe(0);
     await page.evaluate(() => ((window as unknown as { __raf: number }).__raf = 0));
     await page.waitForTimeout(1000); // a measurement interval, not a wait for a state
     expect(await page.evaluate(() => (window as unknown as { __raf: number }).__raf)).toBe(0);
