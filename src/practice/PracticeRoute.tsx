@@ -23,7 +23,6 @@ import {
   type Given,
   type Part,
   type QuestionId,
-  type SolutionStep,
   type Variant,
 } from './model';
 import {
@@ -47,6 +46,7 @@ import { loadDraft, saveDraft } from './drafts';
 import { RouteNotice } from '../ui/RouteNotice';
 import { ParamNotice, TextList } from './ParamNotice';
 import Sheet from './Sheet';
+import { SolutionSteps } from './SolutionSteps';
 import './practice.css';
 
 interface Props {
@@ -507,23 +507,6 @@ function nextSteps(v: Variant, s: Session): string[] {
 /** Text whose typed examples stand between backticks, with those set as code. */
 function withCode(text: string) {
   return text.split('`').map((t, i) => (i % 2 ? <code key={i}>{t}</code> : t));
-}
-
-function SolutionSteps({ steps }: { steps: SolutionStep[] }) {
-  return (
-    <>
-      {steps.map((s, i) => (
-        <div key={i} className="solution-step">
-          {s.text ? (
-            <p>
-              <Superscripted text={s.text} />
-            </p>
-          ) : null}
-          {s.tex ? <MathTex tex={s.tex} display /> : null}
-        </div>
-      ))}
-    </>
-  );
 }
 
 function PartBlock({

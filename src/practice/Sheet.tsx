@@ -10,6 +10,7 @@ import { useEffect, useState } from 'react';
 import { MathTex } from '../ui/MathTex';
 import { queryProblems, type ShellFlags } from '../kit/shell';
 import { expectedText } from './check';
+import { SolutionSteps } from './SolutionSteps';
 import { fmt, QUESTION_IDS, type AnswerSpec, type QuestionId, type Variant } from './model';
 import { isQuestionId, questionInfo, sheetSeed } from './questions';
 import { qrPath, type QrPath } from '../ui/qr';
@@ -297,16 +298,7 @@ export default function Sheet({ sp, flags }: { sp: URLSearchParams; flags: Shell
               <h2 id={`sheet-sol-${i}`}>
                 Worked solution {i + 1}: Q{questionInfo(v.question).n} variant {v.seed}
               </h2>
-              {v.solution.map((s, k) => (
-                <div key={k} className="solution-step">
-                  {s.text ? (
-                    <p>
-                      <Superscripted text={s.text} />
-                    </p>
-                  ) : null}
-                  {s.tex ? <MathTex tex={s.tex} display /> : null}
-                </div>
-              ))}
+              <SolutionSteps steps={v.solution} />
               {v.notes.map((n) => (
                 <p key={n} className="muted">
                   {n}

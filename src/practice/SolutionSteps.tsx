@@ -1,0 +1,21 @@
+import { MathTex } from '../ui/MathTex';
+import { Superscripted } from '../ui/Superscripted';
+import type { SolutionStep } from './model';
+
+/** The steps of a worked solution or a hint: each a sentence (its powers set as superscripts), a formula, or both. */
+export function SolutionSteps({ steps }: { steps: readonly SolutionStep[] }) {
+  return (
+    <>
+      {steps.map((s, i) => (
+        <div key={i} className="solution-step">
+          {s.text ? (
+            <p>
+              <Superscripted text={s.text} />
+            </p>
+          ) : null}
+          {s.tex ? <MathTex tex={s.tex} display /> : null}
+        </div>
+      ))}
+    </>
+  );
+}
