@@ -139,6 +139,8 @@ test('the histograms and the race’s curves as tables: the counts of all sample
   await openScene(page, '#/monte-carlo?t=600');
   const t = page.getByTestId('race-hist-table-importance');
   await t.locator('summary').click();
+  // the rows render once the table is opened: one per bin of width 1/12 on [0, 2]
+  await expect(t.locator('tbody tr')).toHaveCount(24);
   const counts = (await t.locator('tbody tr td:nth-child(3)').allTextContents()).map(Number);
   expect(counts.reduce((s, c) => s + c, 0)).toBe(600);
   const xs = examTrack(1).importance.x.subarray(0, 600);
