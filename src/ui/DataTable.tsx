@@ -2,6 +2,7 @@
  * "Show as table": the data of a plot as a real table, for readers who cannot see the plot and for
  * anyone who wants the numbers. The rows are rendered only once the disclosure has been opened.
  */
+import { ScrollBox } from './ScrollBox';
 import { useState } from 'react';
 import { formatSignificant } from './format';
 import './a11y.css';
@@ -39,7 +40,7 @@ export function ShowAsTable({
     >
       <summary>{summary}</summary>
       {opened ? (
-        <div className="data-table-scroll" tabIndex={0} role="region" aria-label={caption}>
+        <ScrollBox className="data-table-scroll" label={caption}>
           <table>
             <caption>{caption}</caption>
             <thead>
@@ -61,7 +62,7 @@ export function ShowAsTable({
               ))}
             </tbody>
           </table>
-        </div>
+        </ScrollBox>
       ) : null}
     </details>
   );
