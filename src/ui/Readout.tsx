@@ -1,4 +1,6 @@
-import { formatSignificant } from './format';
+import { formatNumber } from './format';
+
+export { formatNumber };
 
 /**
  * A number the scene shows, readable by people and by tests: `data-testid` names it and
@@ -21,11 +23,6 @@ export function readoutValue(value: number | string | null | undefined): string 
   if (value === null || value === undefined) return 'none';
   if (typeof value === 'number') return Number.isFinite(value) ? String(value) : 'none';
   return value;
-}
-
-/** Visible text of a number: `digits` significant digits, trailing zeros trimmed, "×10⁻⁵" style; "—" when not finite. */
-export function formatNumber(x: number, digits = 6): string {
-  return Number.isFinite(x) ? formatSignificant(x, digits, 'times') : '—';
 }
 
 /** The visible text of a readout's value (as {@link Readout} shows it). */

@@ -3,61 +3,9 @@
  * superscripts those labels (and other plain-text numbers, "1.5×10⁻⁵") are written with. Pure, no DOM.
  */
 
-/** Unicode superscript of each character that has one (no prototype: any key is a plain lookup). */
-export const SUPERSCRIPT: Readonly<Record<string, string>> = Object.assign(
-  Object.create(null) as Record<string, string>,
-  {
-    '0': '⁰',
-    '1': '¹',
-    '2': '²',
-    '3': '³',
-    '4': '⁴',
-    '5': '⁵',
-    '6': '⁶',
-    '7': '⁷',
-    '8': '⁸',
-    '9': '⁹',
-    '+': '⁺',
-    '-': '⁻',
-    '−': '⁻',
-    '=': '⁼',
-    '(': '⁽',
-    ')': '⁾',
-    n: 'ⁿ',
-    i: 'ⁱ',
-    T: 'ᵀ',
-  },
-);
+import { SUPERSCRIPT, superscript, unsuperscript } from '../core/format';
 
-/** The plain character of each superscript digit and sign ("⁻" reads back as "-"). */
-const PLAIN: Readonly<Record<string, string>> = Object.assign(Object.create(null) as Record<string, string>, {
-  '⁰': '0',
-  '¹': '1',
-  '²': '2',
-  '³': '3',
-  '⁴': '4',
-  '⁵': '5',
-  '⁶': '6',
-  '⁷': '7',
-  '⁸': '8',
-  '⁹': '9',
-  '⁺': '+',
-  '⁻': '-',
-});
-
-/** `text` with each character that has a superscript raised; others are kept. */
-export function superscript(text: string): string {
-  let out = '';
-  for (const ch of text) out += SUPERSCRIPT[ch] ?? ch;
-  return out;
-}
-
-/** Superscript digits and signs back to plain ones ("⁻¹²" → "-12"); others are kept. */
-export function unsuperscript(text: string): string {
-  let out = '';
-  for (const ch of text) out += PLAIN[ch] ?? ch;
-  return out;
-}
+export { SUPERSCRIPT, superscript, unsuperscript };
 
 /** "10ⁿ" for an integer exponent n (e.g. pow10Text(-3) = "10⁻³"). */
 export function pow10Text(e: number): string {

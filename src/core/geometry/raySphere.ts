@@ -38,8 +38,9 @@
  */
 import { fail, type Failure } from '../failure';
 
-/** A 3-vector as a tuple (x, y, z), z-up world space. */
-export type Vec3 = readonly [number, number, number];
+import type { Vec3 } from '../vec3';
+
+export type { Vec3 };
 
 /** Which evaluation of the quadratic: the textbook b² − 4ac, or the robust RTG ch. 7 form. */
 export type RaySphereMethod = 'naive' | 'stable';

@@ -10,8 +10,9 @@
  */
 import { parallelogramSolidAngle } from '../geometry/solidAngle';
 
-/** A 3-vector tuple. */
-export type Vec3 = [number, number, number];
+import type { Vec3 } from '../vec3';
+
+export type { Vec3 };
 
 /** A rectangle in space: the emitter (or an occluder). All vectors world space, z-up. */
 export interface RectLight {

@@ -31,7 +31,7 @@ import {
 } from '../../core/texture';
 import type { Failure } from '../../core/failure';
 import type { ParamValues } from '../../kit/params';
-import { colorizeInto } from './colormap';
+import { colorizeInto } from '../../core/colormap';
 import { GRID_TEXT_MAX, type PathKind, type TextureSchema } from './params';
 
 export type TextureParams = ParamValues<TextureSchema>;

@@ -29,7 +29,7 @@ describe('rectangle light frame', () => {
     for (const t of [13, 45, 120, -33.3]) {
       const l = makeRectLight([1, 2, 3], 2, 3, t);
       const { ex, ey, normal: n } = l;
-      const dot = (a: number[], b: number[]) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+      const dot = (a: readonly number[], b: readonly number[]) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
       expect(dot(ex, ey)).toBeCloseTo(0, 15);
       expect(dot(ey, n)).toBeCloseTo(0, 15);
       expect(dot(n, n)).toBeCloseTo(1, 15);

@@ -17,9 +17,9 @@ import { rectProjectedSolidAngle } from '../../../src/core/lights/polygonIrradia
 const STRESS = [0, 2 ** -53, 0.5, 1 - 2 ** -53];
 
 /** Local coordinates of a point relative to the light's corner: (a along ex, b along ey, c off-plane). */
-function local(l: RectLight, x: number[]): [number, number, number] {
+function local(l: RectLight, x: readonly number[]): [number, number, number] {
   const d = [x[0] - l.corner[0], x[1] - l.corner[1], x[2] - l.corner[2]];
-  const dot = (v: number[]) => d[0] * v[0] + d[1] * v[1] + d[2] * v[2];
+  const dot = (v: readonly number[]) => d[0] * v[0] + d[1] * v[1] + d[2] * v[2];
   return [dot(l.ex), dot(l.ey), dot(l.normal)];
 }
 

@@ -28,7 +28,7 @@ import {
   texel,
   type LookupOptions,
 } from '../../../src/core/texture';
-import { colorInto, normalizeValue } from '../../../src/scenes/texture/colormap';
+import { colorInto, normalizeValue } from '../../../src/core/colormap';
 
 const L = (u: number, v: number) => 21 - 20 * v + 4 * u; // the exam grid as a function of (u, v)
 

@@ -5,7 +5,7 @@ import { examGrid, gridToRows, texel, type LookupOptions, type TextureGrid } fro
 import { Notice, NumberField, Select, ShowAsTable, Toggle, useStillT } from '../../../ui';
 import { gridTableColumns, gridTableRows } from './describe';
 import type { TextureSchema } from '../params';
-import { colorCss } from '../colormap';
+import { colorCss } from '../../../core/colormap';
 import type { AnimContext } from './anim';
 import { fmtShort } from './GridView';
 

@@ -22,7 +22,7 @@ import {
   type RefObject,
 } from 'react';
 import { nodeCoord, type LookupOptions, type TextureGrid } from '../../../core/texture';
-import { darkTextOn, normalizeValue } from '../colormap';
+import { darkTextOn, normalizeValue } from '../../../core/colormap';
 import { pathPoint, textureImage, type Lookup, type QueryPath, type ShownTexture } from '../model';
 
 const VB = 1000; // viewBox size of the plotted window
