@@ -33,7 +33,9 @@ export function exposeTasks<T extends TaskMap>(tasks: T): void {
         partial === undefined ? [] : collectTransferables(partial),
       );
     try {
-      const value = await task(args, progress);
+      // the map's type checks each task's arguments at the call site on the page; here they arrive
+      // as posted, untyped, and are handed on as they are
+      const value = await (task as (a: unknown, p: typeof progress) => unknown)(args, progress);
       post({ id, type: 'result', value }, collectTransferables(value));
     } catch (err) {
       const f = asFailure(err);

@@ -16,10 +16,10 @@ export type ProgressFn<P = unknown> = (fraction: number, partial?: P) => void;
  * the page's side names in workerFactory<typeof tasks>: task names, arguments, results and
  * progress partials are then checked at compile time across the worker boundary.
  */
-// `any` in the argument positions lets every concrete task fit the map (function parameters are
-// contravariant); the concrete types come back through ArgsOf / ResultOf / PartialOf.
-// eslint-disable-next-line @typescript-eslint/no-explicit-any
-export type TaskMap = { [name: string]: (args: any, progress: ProgressFn<any>) => unknown };
+// `never` in the argument positions lets every concrete task fit the map (function parameters are
+// contravariant, and `never` is assignable to every type); the concrete types come back through
+// ArgsOf / ResultOf / PartialOf, which read them from the task itself.
+export type TaskMap = { [name: string]: (args: never, progress: never) => unknown };
 
 export type TaskName<T extends TaskMap> = keyof T & string;
 export type ArgsOf<T extends TaskMap, K extends TaskName<T>> = Parameters<T[K]>[0];

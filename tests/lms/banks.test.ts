@@ -1,4 +1,3 @@
-/* eslint-disable @typescript-eslint/no-explicit-any -- the test reads untyped parsed XML / JSON (an LMS data model, xAPI statements) */
 /**
  * Question banks read back: the Moodle XML and QTI 2.1 files parse, hold N × questions items, each
  * item's answers are the generator's for its seed (recomputed here from the seed, formulas at the

@@ -83,22 +83,30 @@ describe('runWorkerTask', () => {
   });
 
   it('rejects with the task’s message on error', async () => {
-    await expect(runWorkerTask(() => new FakeWorker(tasks) as unknown as Worker, 'fail', {})).rejects.toThrow(
-      'density is negative',
-    );
+    await expect(
+      runWorkerTask(
+        workerFactory<typeof tasks>(() => new FakeWorker(tasks) as unknown as Worker),
+        'fail',
+        undefined,
+      ),
+    ).rejects.toThrow('density is negative');
   });
 
   it('rejects unknown tasks', async () => {
-    await expect(runWorkerTask(() => new FakeWorker(tasks) as unknown as Worker, 'nope', {})).rejects.toThrow(
-      /unknown task/,
-    );
+    await expect(
+      runWorkerTask(
+        workerFactory<typeof tasks>(() => new FakeWorker(tasks) as unknown as Worker),
+        'nope' as 'fail',
+        undefined,
+      ),
+    ).rejects.toThrow(/unknown task/);
   });
 
   it('cancels: terminates the worker and rejects with an AbortError', async () => {
     let w!: FakeWorker;
     const ctl = new AbortController();
     const p = runWorkerTask(
-      () => (w = new FakeWorker(tasks)) as unknown as Worker,
+      workerFactory<typeof tasks>(() => (w = new FakeWorker(tasks)) as unknown as Worker),
       'forever',
       {},
       { signal: ctl.signal },
@@ -115,7 +123,7 @@ describe('runWorkerTask', () => {
     ctl.abort();
     let made = false;
     const err = await runWorkerTask(
-      () => ((made = true), new FakeWorker(tasks)) as unknown as Worker,
+      workerFactory<typeof tasks>(() => ((made = true), new FakeWorker(tasks)) as unknown as Worker),
       'sum',
       { n: 1 },
       { signal: ctl.signal },

@@ -15,7 +15,6 @@ import {
 } from '../../../src/core/sampling/stability';
 
 // mathjs' typings do not follow BigNumber through generic calls; the instance is used untyped here.
-// eslint-disable-next-line @typescript-eslint/no-explicit-any
 const m: any = create(all, { number: 'BigNumber', precision: 60 });
 type BN = ReturnType<typeof m.bignumber>;
 const big = (x: number) => m.bignumber(exactDecimal(x));
