@@ -4,6 +4,7 @@
  */
 import { fail, type Failure } from '../core/failure';
 import { formatPlain } from '../core/format';
+import type { Vec3 } from '../core/vec3';
 
 export type ParamSpec =
   | { kind: 'number'; default: number; min?: number; max?: number; integer?: boolean; label?: string }
@@ -27,7 +28,7 @@ export type ParamSpec =
       expression?: readonly string[];
     }
   | { kind: 'bool'; default: boolean; label?: string }
-  | { kind: 'vec3'; default: readonly [number, number, number]; min?: number; max?: number; label?: string }
+  | { kind: 'vec3'; default: Vec3; min?: number; max?: number; label?: string }
   | {
       kind: 'list';
       default: readonly number[] | null;

@@ -6,6 +6,7 @@
 import { useId, useRef, type KeyboardEvent, type ReactNode } from 'react';
 import { TIMELINE_SPEEDS } from '../kit/timeline';
 import { TEXT_HZ, useTimelineFrame, type Timeline } from './timeline';
+import './timeline.css';
 
 export interface TimelineTransportProps {
   timeline: Timeline;
