@@ -3,6 +3,7 @@ import { QUESTIONS, sceneById } from '../kit/catalogue';
 import { sceneLoader } from '../scenes/registry';
 import type { ShellFlags } from '../kit/shell';
 import { RouteNotice } from '../ui/RouteNotice';
+import './home.css';
 
 function withFlags(query: string, flags: ShellFlags): string {
   const parts = query ? [query] : [];

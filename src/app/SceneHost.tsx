@@ -1,15 +1,4 @@
-import {
-  Component,
-  lazy,
-  startTransition,
-  Suspense,
-  useCallback,
-  useEffect,
-  useMemo,
-  useRef,
-  useState,
-  type ReactNode,
-} from 'react';
+import { lazy, startTransition, Suspense, useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import { predictPrompt, type SceneInfo } from '../kit/catalogue';
 import { sceneLoader } from '../scenes/registry';
 import type { SceneModule } from '../kit/scene';
@@ -28,10 +17,12 @@ import { usePageKey } from '../ui/pageKeys';
 import { QuestionNav } from '../ui/QuestionNav';
 import { ParamNotice } from '../ui/RouteNotice';
 import { useHostScene } from './hostBridge';
-import { embedSnippet } from './embedCode';
-import { QrButton } from './QrButton';
+import { fullAppHref, linkSafeValues, ShareBar } from './ShareBar';
+import { SceneErrorBoundary } from './SceneErrorBoundary';
+import { useScrollToPart } from './useScrollToPart';
 import { markFirstScreen } from './firstScreen';
 import { importOrReload } from './staleBuild';
+import './sceneHost.css';
 
 // The teacher's A11y view (a11y=1): its own chunk, loaded only with the flag.
 const A11yView = lazy(() => import('./A11yView'));
@@ -135,13 +126,6 @@ export function SceneHost({ info, query, flags, theme }: Props) {
       ) : null}
     </main>
   );
-}
-
-function fullAppHref(info: SceneInfo, query: string): string {
-  const sp = new URLSearchParams(query);
-  sp.delete('embed');
-  const q = sp.toString();
-  return `${window.location.pathname}#${info.path}${q ? `?${q}` : ''}`;
 }
 
 function LoadedScene({
@@ -307,204 +291,4 @@ function useAskText(info: SceneInfo, query: string, part: string | null, ask: bo
   }, [ask, info.id, query]);
   if (!ask || !preset || preset.query !== query) return null;
   return preset.text ?? predictPrompt(info, part) ?? GENERIC_PROMPT;
-}
-
-/** Last expression per parameter that compiled, so a failing one falls back to it in the link. */
-const goodExpressions = new Map<string, string>();
-
-/**
- * The values with every typed expression (string params with `expression`) replaced by its last
- * successfully compiled text (or the default) unless it compiles now. The compiler (core/expr and
- * its parser chunk) loads only when an expression differs from its default.
- */
-async function linkSafeValues(
-  schema: ParamSchema,
-  values: ParamValues<ParamSchema>,
-): Promise<ParamValues<ParamSchema>> {
-  const out = { ...values } as Record<string, unknown>;
-  for (const [name, spec] of Object.entries(schema)) {
-    if (spec.kind !== 'string' || spec.expression === undefined) continue;
-    const v = out[name];
-    if (typeof v !== 'string' || v === spec.default) continue;
-    let ok = false;
-    try {
-      const { compileExpression } = await import('../core/expr');
-      ok = (await compileExpression(v, spec.expression)).ok;
-    } catch {
-      ok = false;
-    }
-    const key = `${spec.expression.join(',')}\u0000${name}`;
-    if (ok) goodExpressions.set(key, v);
-    else out[name] = goodExpressions.get(key) ?? spec.default;
-  }
-  return out as ParamValues<ParamSchema>;
-}
-
-function ShareBar({
-  info,
-  schema,
-  values,
-  flags,
-  asking,
-}: {
-  info: SceneInfo;
-  schema: SceneModule['schema'];
-  values: ParamValues<ParamSchema>;
-  flags: ShellFlags;
-  /** `ask=1` and not yet revealed. */
-  asking: boolean;
-}) {
-  const [copied, setCopied] = useState<'link' | 'embed' | null>(null);
-  const [shown, setShown] = useState<string | null>(null);
-  // The copied link and the QR code are the students' link: classroom mode (present=1) and the
-  // held-back results (ask=1) are the lecturer's, unless the lecturer asks to keep them.
-  const classroom = flags.present || asking;
-  const [keep, setKeep] = useState(false);
-  // (not location.origin + pathname: a copy opened from file:// has the origin "null")
-  const base = window.location.href.split('#')[0];
-  const qs = serializeParams(schema, values, {
-    part: flags.part ?? undefined,
-    present: keep && flags.present ? '1' : undefined,
-    ask: keep && asking ? '1' : undefined,
-    theme: flags.theme ?? undefined,
-  });
-  const link = `${base}#${info.path}${qs ? `?${qs}` : ''}`;
-  const embedQs = serializeParams(schema, values, {
-    part: flags.part ?? undefined,
-    embed: '1',
-    theme: flags.theme ?? undefined,
-  });
-  const embedSrc = `${base}#${info.path}?${embedQs}`;
-  const embedCode = embedSnippet(embedSrc, `${info.title} — Render Math Lab`, info.id);
-  const copy = async (what: 'link' | 'embed') => {
-    const text = what === 'link' ? link : embedCode;
-    setShown(text);
-    try {
-      await navigator.clipboard.writeText(text);
-      setCopied(what);
-    } catch {
-      setCopied(null);
-    }
-  };
-  return (
-    <div className="share-bar">
-      <button type="button" data-testid="copy-link" onClick={() => copy('link')}>
-        Copy link
-      </button>
-      <QrButton link={link} present={flags.present} classroomLink={keep && classroom}>
-        {classroom ? <KeepClassroom keep={keep} onKeep={setKeep} testId="qr-keep-classroom" /> : null}
-      </QrButton>
-      {/* embedding is preparation, not the lecture: classroom mode keeps its one header row */}
-      {flags.present ? null : (
-        <button type="button" data-testid="copy-embed" onClick={() => copy('embed')}>
-          Copy embed code
-        </button>
-      )}
-      {classroom ? <KeepClassroom keep={keep} onKeep={setKeep} testId="keep-classroom" /> : null}
-      <span role="status" className="share-status">
-        {copied === 'link'
-          ? 'Link copied.'
-          : copied === 'embed'
-            ? 'Embed code copied.'
-            : shown
-              ? 'Copy it from the box:'
-              : ''}
-      </span>
-      {shown ? (
-        <input
-          className="share-text"
-          data-testid="share-text"
-          aria-label="Text to copy"
-          readOnly
-          value={shown}
-          onFocus={(e) => e.currentTarget.select()}
-        />
-      ) : null}
-    </div>
-  );
-}
-
-/** The lecturer's choice: the copied link and the QR code keep classroom mode (present=1, ask=1). */
-function KeepClassroom({
-  keep,
-  onKeep,
-  testId,
-}: {
-  keep: boolean;
-  onKeep: (keep: boolean) => void;
-  testId: string;
-}) {
-  return (
-    <label className="share-keep">
-      <input type="checkbox" data-testid={testId} checked={keep} onChange={(e) => onKeep(e.target.checked)} />{' '}
-      Keep classroom mode
-    </label>
-  );
-}
-
-class SceneErrorBoundary extends Component<
-  { children: ReactNode; resetKey: string },
-  { error: string | null }
-> {
-  override state = { error: null as string | null };
-  static getDerivedStateFromError(err: unknown) {
-    return { error: err instanceof Error ? err.message : String(err) };
-  }
-  // a new query (the "reset" link, a typed URL, back/forward) gives the scene a fresh start
-  override componentDidUpdate(prev: { resetKey: string }) {
-    if (prev.resetKey !== this.props.resetKey && this.state.error !== null) this.setState({ error: null });
-  }
-  override render() {
-    if (this.state.error) {
-      return (
-        <div role="alert" className="notice notice-error">
-          <p>Something in this scene went wrong: {this.state.error}</p>
-          <p>
-            <button type="button" onClick={() => this.setState({ error: null })}>
-              Try again
-            </button>{' '}
-            or{' '}
-            <a href={window.location.hash.split('?')[0]} onClick={() => this.setState({ error: null })}>
-              reset the scene to its defaults
-            </a>
-            .
-          </p>
-        </div>
-      );
-    }
-    return this.props.children;
-  }
-}
-
-/**
- * Land on an exam part (`part=1c`): once the scene has drawn the element `#part-1c`, scroll it to
- * the top and move focus there (screen readers start reading at the part). Gives up quietly after
- * a few seconds if the scene never draws it.
- */
-function useScrollToPart(part: string | null) {
-  useEffect(() => {
-    if (!part) return;
-    let done = false;
-    const tryLand = () => {
-      if (done) return true;
-      const el = document.getElementById(`part-${part}`);
-      if (!el) return false;
-      done = true;
-      el.scrollIntoView({ block: 'start' });
-      if (el.tabIndex < 0 && !el.hasAttribute('tabindex')) el.setAttribute('tabindex', '-1');
-      el.focus({ preventScroll: true });
-      return true;
-    };
-    if (tryLand()) return;
-    const mo = new MutationObserver(() => {
-      if (tryLand()) mo.disconnect();
-    });
-    mo.observe(document.body, { childList: true, subtree: true });
-    const timer = window.setTimeout(() => mo.disconnect(), 8000);
-    return () => {
-      done = true;
-      mo.disconnect();
-      window.clearTimeout(timer);
-    };
-  }, [part]);
 }

@@ -1,7 +1,9 @@
 import { StrictMode, startTransition } from 'react';
 import { createRoot } from 'react-dom/client';
 import { App } from './App';
-import '../ui/styles.css';
+import '../ui/theme.css';
+import '../ui/base.css';
+import './shell.css';
 import { whenQuiet } from '../ui/whenQuiet';
 import { findScene } from '../kit/catalogue';
 import { sceneLoader } from '../scenes/registry';

@@ -111,3 +111,12 @@ export function formatNumber(x: number, digits = 6): string {
 export function formatPlain(x: number, digits = 6): string {
   return Number.isInteger(x) ? String(x) : formatSignificant(x, digits, 'e');
 }
+
+/**
+ * `x` with exactly `decimals` digits after the point (as toFixed), never a negative zero ("-0",
+ * "-0.00" read as "0", "0.00"): for coordinates written into SVG attributes and paths.
+ */
+export function formatFixed(x: number, decimals: number): string {
+  const s = x.toFixed(decimals);
+  return /^-0(\.0*)?$/.test(s) ? s.slice(1) : s;
+}

@@ -3,6 +3,8 @@
  * them and reports every parameter it could not use (by name) in a role="status" notice.
  */
 import { fail, type Failure } from '../core/failure';
+import { formatPlain } from '../core/format';
+import type { Vec3 } from '../core/vec3';
 
 export type ParamSpec =
   | { kind: 'number'; default: number; min?: number; max?: number; integer?: boolean; label?: string }
@@ -26,7 +28,7 @@ export type ParamSpec =
       expression?: readonly string[];
     }
   | { kind: 'bool'; default: boolean; label?: string }
-  | { kind: 'vec3'; default: readonly [number, number, number]; min?: number; max?: number; label?: string }
+  | { kind: 'vec3'; default: Vec3; min?: number; max?: number; label?: string }
   | {
       kind: 'list';
       default: readonly number[] | null;
@@ -95,10 +97,6 @@ export function parseNumber(raw: string): number | null {
   return Number.isFinite(x) ? x : null;
 }
 
-function fmt(x: number): string {
-  return String(x);
-}
-
 /** Split a comma list of numbers; null if any element is not a finite number. */
 function parseNumberList(raw: string): number[] | null {
   const parts = raw.split(',');
@@ -118,9 +116,9 @@ function clamp(x: number, min: number | undefined, max: number | undefined): num
 }
 
 function rangeText(min: number | undefined, max: number | undefined): string {
-  if (min !== undefined && max !== undefined) return `[${fmt(min)}, ${fmt(max)}]`;
-  if (min !== undefined) return `≥ ${fmt(min)}`;
-  return `≤ ${fmt(max!)}`;
+  if (min !== undefined && max !== undefined) return `[${formatPlain(min)}, ${formatPlain(max)}]`;
+  if (min !== undefined) return `≥ ${formatPlain(min)}`;
+  return `≤ ${formatPlain(max!)}`;
 }
 
 function short(raw: string): string {
@@ -155,11 +153,15 @@ function parseOne(spec: ParamSpec, raw: string): Parsed {
         return {
           ok: true,
           value: c,
-          problem: `${short(raw)} is outside ${rangeText(spec.min, spec.max)}; using ${fmt(c)}`,
+          problem: `${short(raw)} is outside ${rangeText(spec.min, spec.max)}; using ${formatPlain(c)}`,
         };
       v = c;
       if (spec.integer && v !== x)
-        return { ok: true, value: v, problem: `${short(raw)} is not a whole number; using ${fmt(v)}` };
+        return {
+          ok: true,
+          value: v,
+          problem: `${short(raw)} is not a whole number; using ${formatPlain(v)}`,
+        };
       return { ok: true, value: v };
     }
     case 'enum': {
@@ -375,7 +377,12 @@ function describeDefault(spec: ParamSpec): string {
   if (Array.isArray(d)) return d.join(',');
   if (typeof d === 'boolean') return d ? '1' : '0';
   if (typeof d === 'string') return d === '' ? '(empty)' : short(d);
-  return fmt(d as number);
+  return formatPlain(d as number);
+}
+
+/** A number in a link: the shortest text that reads back as the same double (not rounded for people). */
+function urlNumber(x: number): string {
+  return String(x);
 }
 
 function encodeValue(spec: ParamSpec, v: unknown): string | null {
@@ -385,9 +392,9 @@ function encodeValue(spec: ParamSpec, v: unknown): string | null {
       return v ? '1' : '0';
     case 'vec3':
     case 'list':
-      return (v as number[]).map(fmt).join(',');
+      return (v as number[]).map(urlNumber).join(',');
     case 'number':
-      return fmt(v as number);
+      return urlNumber(v as number);
     default:
       return String(v);
   }

@@ -7,6 +7,8 @@ import type * as Three from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
 import * as THREE from './threeSubset';
 import { nextTask, SLICE_MS } from '../ui/chunked';
+import { probeWebGL, takeSpare, webglAvailable } from './webglProbe';
+import type { Vec3 } from '../core/vec3';
 
 /**
  * The part of three.js the scenes' 3D views use (./threeSubset.ts), handed to them as `ctx.THREE`
@@ -38,9 +40,9 @@ export interface ViewportContext {
 
 /** Screen directions of the world axes, for the axis triad (x right, y up; z towards the viewer). */
 export interface AxisDirs {
-  x: [number, number, number];
-  y: [number, number, number];
-  z: [number, number, number];
+  x: Vec3;
+  y: Vec3;
+  z: Vec3;
   /** Distance from the camera to the orbit target. */
   distance: number;
 }
@@ -82,67 +84,6 @@ const COMPILE_WAIT_MS = 16;
 /** Longest wait for the GPU side to finish the warm-up's draws before the first frame (ms). */
 const FENCE_MAX_MS = 3000;
 
-/** Renderer strings of WebGL implementations that run on the CPU (no GPU, or a blocklisted one). */
-const SOFTWARE_GL = /swiftshader|llvmpipe|softpipe|software|basic render/i;
-let probed: { available: boolean; software: boolean } | null = null;
-
-/**
- * The context attributes of a renderer on a software WebGL (three.js's defaults, without
- * multisampling): the probe asks for these, so that its context can become the first renderer's.
- */
-const SOFTWARE_ATTRS: WebGLContextAttributes = {
-  alpha: true,
-  depth: true,
-  stencil: false,
-  antialias: false,
-  premultipliedAlpha: true,
-  preserveDrawingBuffer: false,
-  powerPreference: 'low-power',
-  failIfMajorPerformanceCaveat: false,
-};
-
-/**
- * The probe's WebGL2 context on a software WebGL, kept for the first engine: creating a context
- * there costs tens of ms of main thread (×4 on a phone), so the page creates one, not two.
- */
-let spare: { canvas: HTMLCanvasElement; gl: WebGL2RenderingContext } | null = null;
-
-/**
- * Can the browser give a WebGL 2 context, and is it a software one (SwiftShader, llvmpipe …)?
- * Checked once, without three (so no console error). The probe context is released, except on a
- * software WebGL, where the first engine adopts it.
- */
-export function probeWebGL(): { available: boolean; software: boolean } {
-  if (probed) return probed;
-  try {
-    const c = document.createElement('canvas');
-    // three.js (r163 on) draws with WebGL 2 only: without it the view is off (and three's error unlogged)
-    const gl = c.getContext('webgl2', SOFTWARE_ATTRS) as WebGL2RenderingContext | null;
-    if (!gl) return (probed = { available: false, software: false });
-    // Chromium reports the real renderer in RENDERER; others through WEBGL_debug_renderer_info.
-    const dbg = gl.getExtension('WEBGL_debug_renderer_info');
-    const name = `${String(gl.getParameter(gl.RENDERER) ?? '')} ${dbg ? String(gl.getParameter(dbg.UNMASKED_RENDERER_WEBGL) ?? '') : ''}`;
-    const software = SOFTWARE_GL.test(name);
-    if (software) spare = { canvas: c, gl };
-    else gl.getExtension('WEBGL_lose_context')?.loseContext();
-    return (probed = { available: true, software });
-  } catch {
-    return (probed = { available: false, software: false });
-  }
-}
-
-/** True when the browser can give a WebGL 2 context (checked without three, so no console error). */
-export function webglAvailable(): boolean {
-  return probeWebGL().available;
-}
-
-/** The probe's context if it is still unused and alive (once). */
-function takeSpare(): { canvas: HTMLCanvasElement; gl: WebGL2RenderingContext } | null {
-  const s = spare;
-  spare = null;
-  return s && !s.gl.isContextLost() ? s : null;
-}
-
 /** A promise of the next task (so that the work after it is a task of its own). */
 const yieldTask = () => new Promise<void>((resolve) => nextTask(resolve));
 
@@ -172,7 +113,7 @@ export async function startEngine(
 }
 
 /**
- * The renderer: on a software WebGL the probe's context if still unused (see {@link spare}).
+ * The renderer: on a software WebGL the probe's context if still unused (./webglProbe).
  * Its own task at start: three's context set-up (extensions, capabilities, state) alone is tens
  * of ms on a phone.
  */

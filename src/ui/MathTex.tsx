@@ -4,7 +4,8 @@ import { flushMathForPrint, insertTypeset, scheduleMath } from './mathQueue';
 import { afterPaint } from './afterPaint';
 import { previewLabel, texPreview, texPreviewParts, type PreviewPart } from './texPreview';
 import { keepParenthesesTogether } from './texBreaks';
-import type { TypesetReply, TypesetRequest } from './katex.worker';
+import { katexWorker, typesetInWorker } from './katexJobs';
+import './math.css';
 
 type Katex = typeof import('katex');
 let katexPromise: Promise<Katex> | null = null;
@@ -24,39 +25,6 @@ export function loadKatex(): Promise<Katex> {
     );
   }
   return katexPromise;
-}
-
-/**
- * Typesetting happens in a worker (./katex.worker): one aligned derivation is tens of ms of
- * KaTeX on a phone, a long task each on the main thread. Where a worker cannot be
- * started, KaTeX runs on the main thread instead.
- */
-let worker: Worker | null | undefined;
-let nextId = 1;
-const waiting = new Map<number, { resolve: (html: string | null) => void; reject: (e: unknown) => void }>();
-
-function katexWorker(): Worker | null {
-  if (worker !== undefined) return worker;
-  try {
-    worker = new Worker(new URL('./katex.worker.ts', import.meta.url), { type: 'module' });
-    worker.onmessage = (e: MessageEvent<TypesetReply>) => {
-      const w = waiting.get(e.data.id);
-      waiting.delete(e.data.id);
-      w?.resolve(e.data.html);
-    };
-    worker.onerror = (e) => {
-      // the worker could not load: the rest is typeset on the main thread
-      e.preventDefault();
-      worker?.terminate();
-      worker = null;
-      const left = [...waiting.values()];
-      waiting.clear();
-      for (const w of left) w.reject(new Error('the KaTeX worker could not start'));
-    };
-  } catch {
-    worker = null;
-  }
-  return worker;
 }
 
 /** Start the worker and the stylesheet together (a page is about to show formulas). */
@@ -90,11 +58,7 @@ function typesetNow(source: string, display: boolean): Promise<string | null> {
       m.speakableMathml(k.renderToString(tex, { ...KATEX_OPTIONS, displayMode: display })),
     );
   if (!w) return onMain();
-  return new Promise<string | null>((resolve, reject) => {
-    const id = nextId++;
-    waiting.set(id, { resolve, reject });
-    w.postMessage({ id, tex, display } satisfies TypesetRequest);
-  }).then(
+  return typesetInWorker(tex, display).then(
     // the HTML goes in only with its stylesheet
     (html) => loadKatexCss().then(() => html),
     () => onMain(),

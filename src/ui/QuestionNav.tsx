@@ -4,6 +4,7 @@
  */
 import { questionStart, type SceneInfo } from '../kit/catalogue';
 import type { ShellFlags } from '../kit/shell';
+import './exam.css';
 
 function flagQuery(flags: Pick<ShellFlags, 'present' | 'theme'>): string {
   return `${flags.present ? '&present=1' : ''}${flags.theme ? `&theme=${flags.theme}` : ''}`;

@@ -1,4 +1,5 @@
 import { formatNumber } from './format';
+import './readout.css';
 
 export { formatNumber };
 

@@ -1,4 +1,5 @@
 import type { ReactNode } from 'react';
+import './layout.css';
 
 /**
  * A box that scrolls sideways when its content (a wide table, a long formula) is wider than a

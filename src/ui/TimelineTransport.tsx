@@ -4,7 +4,9 @@
  * (and, in classroom mode, anywhere on the page through the shortcut registry).
  */
 import { useId, useRef, type KeyboardEvent, type ReactNode } from 'react';
-import { TEXT_HZ, TIMELINE_SPEEDS, useTimelineFrame, type Timeline } from './timeline';
+import { TIMELINE_SPEEDS } from '../kit/timeline';
+import { TEXT_HZ, useTimelineFrame, type Timeline } from './timeline';
+import './timeline.css';
 
 export interface TimelineTransportProps {
   timeline: Timeline;

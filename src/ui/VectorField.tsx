@@ -1,6 +1,7 @@
+import type { Vec3 } from '../core/vec3';
 import { NumberField } from './controls';
+import './controls.css';
 
-type Vec3 = readonly [number, number, number];
 const AXES = ['x', 'y', 'z'] as const;
 
 /**

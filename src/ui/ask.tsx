@@ -5,6 +5,7 @@
  */
 import type { CSSProperties, ReactNode } from 'react';
 import { useKeyHelp, type KeyHelp } from './shortcuts';
+import './ask.css';
 
 export interface RevealedProps {
   /** `mode.ask`: true until revealed. */

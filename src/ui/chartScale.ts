@@ -1,9 +1,10 @@
 /**
  * The one guard every hand-drawn SVG chart uses between data and attributes: scales that map any
- * double (NaN, ±∞, subnormal, past the largest double) to a finite coordinate, and a formatter that
+ * double (NaN, ±∞, subnormal, past the largest double) to a finite coordinate, and a coordinate writer that
  * never writes "NaN" or "Infinity". A degenerate domain (equal ends, non-finite ends, a span that
  * overflows) maps to the middle of the range instead of dividing by zero.
  */
+import { formatFixed } from '../core/format';
 
 /** No coordinate leaves ±this (far outside any chart; SVG clips it, the browser parses it). */
 export const COORD_LIMIT = 1e6;
@@ -21,9 +22,8 @@ function clampCoord(v: number): number {
 }
 
 /** `coord(v)` written with `digits` decimals, for an SVG attribute or path. */
-export function fmt(v: number, digits = 1, fallback = 0): string {
-  const s = coord(v, fallback).toFixed(digits);
-  return s === '-0' || /^-0\.0*$/.test(s) ? s.slice(1) : s;
+export function coordText(v: number, digits = 1, fallback = 0): string {
+  return formatFixed(coord(v, fallback), digits);
 }
 
 /**

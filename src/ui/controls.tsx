@@ -3,6 +3,8 @@ import { useEffect, useId, useState, type ReactNode } from 'react';
 import { formatNumber } from './Readout';
 import { usePresent } from './pageKeys';
 import { Stage } from './stage';
+import './layout.css';
+import './controls.css';
 
 function clamp(x: number, min?: number, max?: number): number {
   if (min !== undefined && x < min) return min;

@@ -21,6 +21,7 @@
 import { Children, type ReactNode } from 'react';
 import { Deferred } from './Deferred';
 import { questionInfo } from '../kit/catalogue';
+import './exam.css';
 
 /** One exam question: its number and title (the catalogue's unless given), and its parts in order. */
 export function ExamQuestion({

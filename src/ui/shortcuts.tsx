@@ -1,4 +1,5 @@
 import { createContext, useCallback, useContext, useEffect, useRef, useState, type ReactNode } from 'react';
+import './shortcuts.css';
 
 /** Handlers a scene offers to the classroom keyboard shortcuts (space, r, s). */
 export interface ShortcutHandlers {

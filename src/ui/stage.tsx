@@ -11,6 +11,7 @@
 import { useCallback, useEffect, useId, useLayoutEffect, useRef, useState, type ReactNode } from 'react';
 import { Deferred } from './Deferred';
 import { usePageKey } from './pageKeys';
+import './stage.css';
 
 function fullscreenAvailable(): boolean {
   return (

@@ -1,11 +1,11 @@
 /**
  * The shared chart guard (src/ui/chartScale): for every double, of data and of domain (NaN, ±∞,
- * subnormals, ±MAX_VALUE), a scale gives a finite coordinate and fmt never writes NaN or Infinity;
+ * subnormals, ±MAX_VALUE), a scale gives a finite coordinate and coordText never writes NaN or Infinity;
  * on ordinary domains the scales are the usual affine / log maps.
  */
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import { COORD_LIMIT, clampExponent, coord, fmt, linearScale, logScale } from '../../src/ui/chartScale';
+import { COORD_LIMIT, clampExponent, coord, coordText, linearScale, logScale } from '../../src/ui/chartScale';
 
 const anyDouble = fc.double(); // includes NaN, ±∞, ±0, subnormals, ±MAX_VALUE
 const rangeEnd = fc.double({ min: -5000, max: 5000, noNaN: true });
@@ -18,7 +18,7 @@ describe('chartScale', () => {
         const y = linearScale(d0, d1, r0, r1)(v);
         expect(Number.isFinite(y)).toBe(true);
         expect(Math.abs(y)).toBeLessThanOrEqual(COORD_LIMIT);
-        expect(fmt(y)).toMatch(NUM);
+        expect(coordText(y)).toMatch(NUM);
       }),
       { numRuns: 3000, seed: 6 },
     );
@@ -29,17 +29,17 @@ describe('chartScale', () => {
       fc.property(anyDouble, anyDouble, rangeEnd, rangeEnd, anyDouble, (d0, d1, r0, r1, v) => {
         const y = logScale(d0, d1, r0, r1)(v);
         expect(Number.isFinite(y)).toBe(true);
-        expect(fmt(y)).toMatch(NUM);
+        expect(coordText(y)).toMatch(NUM);
       }),
       { numRuns: 3000, seed: 7 },
     );
   });
 
-  it('fmt and coord never write NaN or Infinity (property)', () => {
+  it('coordText and coord never write NaN or Infinity (property)', () => {
     fc.assert(
       fc.property(anyDouble, anyDouble, fc.integer({ min: 0, max: 6 }), (v, fb, digits) => {
         expect(Number.isFinite(coord(v, fb))).toBe(true);
-        expect(fmt(v, digits, fb)).toMatch(NUM);
+        expect(coordText(v, digits, fb)).toMatch(NUM);
       }),
       { numRuns: 3000, seed: 8 },
     );

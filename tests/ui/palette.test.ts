@@ -1,6 +1,6 @@
 /**
  * The colour-vision check of the palettes (WCAG 1.4.11 and 1.4.1): plot lines, the two Monte Carlo
- * strategies, the accents and the focus ring, read from src/ui/styles.css and src/ui/palette.css for
+ * strategies, the accents and the focus ring, read from src/ui/theme.css and src/ui/palette.css for
  * both themes, keep
  * 3 : 1 against the page and panel backgrounds, and the lines stay apart (CIEDE2000) in normal
  * vision and simulated protanopia, deuteranopia and tritanopia (Machado et al. 2009; Viénot et al.
@@ -12,7 +12,7 @@ import { MACHADO, VIENOT, contrast, cssVars, deltaE2000, parseHex, simulate, typ
 import { resolveTraceColors, SERIES, STRATEGY_COLOR } from '../../src/ui/palette';
 
 // the theme's colours, then the palette's (loaded after them)
-const css = `${readFileSync('src/ui/styles.css', 'utf8')}\n${readFileSync('src/ui/palette.css', 'utf8')}`;
+const css = `${readFileSync('src/ui/theme.css', 'utf8')}\n${readFileSync('src/ui/palette.css', 'utf8')}`;
 const LIGHT = cssVars(css, ':root');
 const DARK = { ...LIGHT, ...cssVars(css, ":root[data-theme='dark']") };
 const THEMES = { light: LIGHT, dark: DARK } as const;

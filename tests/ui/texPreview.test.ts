@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import { NAMED_OPERATORS, texPreview, texPreviewParts, type PreviewPart } from '../../src/ui/texPreview';
+import { texPreview, texPreviewParts, type PreviewPart } from '../../src/ui/texPreview';
+import { NAMED_OPERATORS } from '../../src/ui/texSymbols';
 
 describe('texPreview: TeX read as plain text while KaTeX is on its way', () => {
   it('reads the formulas of the exam as a person would write them', () => {

@@ -1,5 +1,5 @@
 /**
- * URL parameters of #/area-light (see /shared/spec/contract.md): the shading point p on a floor
+ * URL parameters of #/area-light (see docs/urls.md): the shading point p on a floor
  * (normal +z), a rectangular emitter (centre lc, size ls = w,h, tilt about its x axis, radiance L),
  * the floor albedo rho, an optional occluder, the sampling strategy, n and seed. The Q6(a) patch
  * (pu, pv, psize, ptilt) is an addition to the contract (it only grows).
@@ -10,7 +10,7 @@
  * and parallel to the floor, the patch flat on it) is one click away: EXAM_PRESET.
  */
 import type { ParamSchema, ParamValues } from '../../kit/params';
-import { timelineParams } from '../../ui/timeline';
+import { timelineParams } from '../../kit/timeline';
 
 /** Longest animation (samples); the same constant as model.ANIM_MAX (kept here: params must not import the model). */
 const ANIM_SAMPLES = 1024;

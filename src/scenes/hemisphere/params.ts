@@ -1,5 +1,5 @@
 /**
- * URL parameters of the hemisphere scene (contract: `../shared/spec/contract.md`, route `#/hemisphere`).
+ * URL parameters of the hemisphere scene (contract: `..docs/urls.md`, route `#/hemisphere`).
  *
  * Contract parameters: lobe, exponent, pdf, jacobian, f, n, seed.
  * Added by this scene (the contract only grows): `points`, the point set fed to the warp; `anim`,
@@ -10,7 +10,7 @@
  * default).
  */
 import type { ParamSchema, ParamValues } from '../../kit/params';
-import { timelineParams } from '../../ui/timeline';
+import { timelineParams } from '../../kit/timeline';
 
 export const LOBES = ['exam', 'uniform', 'cosine', 'phong', 'custom'] as const;
 export type LobeId = (typeof LOBES)[number];

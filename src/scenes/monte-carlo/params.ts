@@ -1,12 +1,12 @@
 /**
- * URL parameters of the Monte Carlo scene (contract: `../shared/spec/contract.md`, route
+ * URL parameters of the Monte Carlo scene (contract: `..docs/urls.md`, route
  * `#/monte-carlo`): f, a, b, pdf, pdfexpr, strategy, samples, n, seed.
  * Added by this scene (the contract only grows): `hn` (samples per estimate in the unbiasedness
  * histogram), `runs` (independent runs behind the RMSE curves), and the animation's `t` (samples
  * drawn so far) and `play`.
  */
 import type { ParamSchema } from '../../kit/params';
-import { timelineParams } from '../../ui/timeline';
+import { timelineParams } from '../../kit/timeline';
 
 /** Samples in the animation (the timeline's t is the sample index 0…RACE_MAX). Mirrors model.RACE_MAX. */
 export const RACE_SAMPLES = 8192;

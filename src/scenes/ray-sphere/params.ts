@@ -1,5 +1,5 @@
 /**
- * URL parameters of #/ray-sphere (see /shared/spec/contract.md): the ray o + t d, the sphere
+ * URL parameters of #/ray-sphere (see docs/urls.md): the ray o + t d, the sphere
  * (centre C, radius r; the URL parameter for C is `c`), the evaluation method and the arithmetic
  * (`precision`: f64, or f32 — IEEE single precision, every operation rounded, as a GPU). Vectors are
  * "x,y,z" in z-up world space. The sweep animation: `sweep` (the origin moves across the ray, or
@@ -9,7 +9,7 @@
  * not a sphere and fall back); non-numbers are rejected by the shell with a notice.
  */
 import type { ParamSchema, ParamValues } from '../../kit/params';
-import { timelineParams } from '../../ui/timeline';
+import { timelineParams } from '../../kit/timeline';
 
 const BIG = 1e12;
 

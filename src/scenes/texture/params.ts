@@ -1,5 +1,5 @@
 /**
- * URL parameters of the texture scene (contract: `../shared/spec/contract.md`, route `#/texture`).
+ * URL parameters of the texture scene (contract: `..docs/urls.md`, route `#/texture`).
  *
  * Contract parameters: u, v, grid, align, vflip, wrap, x, y, z, normalize.
  * Added by this scene (the contract only grows): `preset` (where the grid comes from), `size`
@@ -8,7 +8,7 @@
  */
 import type { ParamSchema } from '../../kit/params';
 import { EXAM_GRID_TEXT } from '../../core/texture';
-import { timelineParams } from '../../ui/timeline';
+import { timelineParams } from '../../kit/timeline';
 
 /** Longest `grid` text the shell will accept in a URL (its MAX_RAW_LENGTH). */
 export const GRID_TEXT_MAX = 4000;

@@ -7,7 +7,7 @@ import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { contrast, cssVars, parseHex } from '../../ui/colorVision';
 
-const theme = readFileSync('src/ui/styles.css', 'utf8');
+const theme = readFileSync('src/ui/theme.css', 'utf8');
 const sceneCss = readFileSync('src/scenes/area-light/area-light.css', 'utf8');
 const LIGHT = { ...cssVars(theme, ':root'), ...cssVars(sceneCss, ':root') };
 const DARK = { ...LIGHT, ...cssVars(theme, ":root[data-theme='dark']") };

@@ -18,7 +18,7 @@ import {
 } from '../../../src/scenes/hemisphere/view/plotColors';
 import { pointShade, xiColor } from '../../../src/scenes/hemisphere/view/colors';
 
-const css = `${readFileSync('src/ui/styles.css', 'utf8')}\n${readFileSync('src/ui/palette.css', 'utf8')}`;
+const css = `${readFileSync('src/ui/theme.css', 'utf8')}\n${readFileSync('src/ui/palette.css', 'utf8')}`;
 const LIGHT = cssVars(css, ':root');
 const THEMES = { light: LIGHT, dark: { ...LIGHT, ...cssVars(css, ":root[data-theme='dark']") } };
 

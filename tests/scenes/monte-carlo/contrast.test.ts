@@ -9,7 +9,7 @@ import { describe, expect, it } from 'vitest';
 import { contrast, cssVars, parseHex, type RGB } from '../../ui/colorVision';
 import { BAR_OPACITY, COLORS } from '../../../src/scenes/monte-carlo/view/plotStyle';
 
-const themeCss = `${readFileSync('src/ui/styles.css', 'utf8')}\n${readFileSync('src/ui/palette.css', 'utf8')}`;
+const themeCss = `${readFileSync('src/ui/theme.css', 'utf8')}\n${readFileSync('src/ui/palette.css', 'utf8')}`;
 const sceneCss = readFileSync('src/scenes/monte-carlo/monte-carlo.css', 'utf8');
 const LIGHT = cssVars(themeCss, ':root');
 const DARK = { ...LIGHT, ...cssVars(themeCss, ":root[data-theme='dark']") };

@@ -14,7 +14,7 @@ import { ERROR_COLOURS } from '../../../src/scenes/ray-sphere/view/errorCurves';
 const SCENE = 'src/scenes/ray-sphere';
 const sceneCss = readFileSync(`${SCENE}/ray-sphere.css`, 'utf8');
 const css = [
-  readFileSync('src/ui/styles.css', 'utf8'),
+  readFileSync('src/ui/theme.css', 'utf8'),
   readFileSync('src/ui/palette.css', 'utf8'),
   sceneCss,
 ].join('\n');

@@ -8,7 +8,7 @@ import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { contrast, cssVars, deltaE2000, parseHex } from '../../ui/colorVision';
 
-const ui = readFileSync('src/ui/styles.css', 'utf8');
+const ui = readFileSync('src/ui/theme.css', 'utf8');
 const scene = readFileSync('src/scenes/texture/texture.css', 'utf8');
 const LIGHT_UI = cssVars(ui, ':root');
 const DARK_UI = { ...LIGHT_UI, ...cssVars(ui, ":root[data-theme='dark']") };

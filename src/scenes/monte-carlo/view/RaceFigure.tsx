@@ -25,7 +25,7 @@ import {
   writeReadout,
 } from '../../../ui';
 import { pow10Text } from '../../../ui/axis';
-import { clampExponent, fmt, linearScale, logScale, type Scale } from '../../../ui/chartScale';
+import { clampExponent, coordText, linearScale, logScale, type Scale } from '../../../ui/chartScale';
 import { Axes, H, M, path, PH, PW, W } from './raceSvg';
 import { RaceHistogram } from './RaceHistogram';
 import { raceWords } from './RaceData';
@@ -262,7 +262,7 @@ export const RaceFigure = memo(function RaceFigure({
     // N⁻½ guide through the uniform lane's final standard deviation: sd/√N is the expected error scale
     const last = track.max - 1;
     const sd = Math.sqrt(track.uniform.m2[last] / Math.max(1, last));
-    const guide = `M${fmt(ex(1))},${fmt(ly(Math.max(sd, 10 ** e0)))}L${fmt(ex(track.max))},${fmt(ly(Math.max(sd / Math.sqrt(track.max), 10 ** e0)))}`;
+    const guide = `M${coordText(ex(1))},${coordText(ly(Math.max(sd, 10 ** e0)))}L${coordText(ex(track.max))},${coordText(ly(Math.max(sd / Math.sqrt(track.max), 10 ** e0)))}`;
     return { sx, sy, fPath, pPath, xt, yt, ex, ey, nt, et, ly, lt, floor: 10 ** e0, guide, R };
   }, [track, curve, a, b, I, s]);
 
@@ -560,7 +560,7 @@ export function raceCurves(
 ) {
   const { ex, ey, ly, floor, R } = fig;
   const clampY = (v: number) => Math.max(I - R, Math.min(I + R, v));
-  const xy = (n: number, y: number) => `${fmt(ex(n))},${fmt(y)}`;
+  const xy = (n: number, y: number) => `${coordText(ex(n))},${coordText(y)}`;
   type Seg = { err: string | null; est: string | null; up: string | null; dn: string | null };
   const seg = (s: LaneState): Seg => {
     const n = s.n;
@@ -658,7 +658,7 @@ function rugPaths(xs: number[], y: number): string[] {
   const off = RECENT - xs.length;
   for (let j = 0; j < xs.length; j++) {
     const b = Math.min(RUG_BUCKETS - 1, Math.floor(((j + off) * RUG_BUCKETS) / RECENT));
-    out[b] += `M${fmt(xs[j])},${fmt(y)}v7`;
+    out[b] += `M${coordText(xs[j])},${coordText(y)}v7`;
   }
   return out;
 }

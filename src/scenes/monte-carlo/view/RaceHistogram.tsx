@@ -7,7 +7,7 @@
  */
 import { useLayoutEffect, useMemo, useRef } from 'react';
 import { DescribedFigure, formatNumber, ShowAsTable, useTimelineFrame, type Timeline } from '../../../ui';
-import { fmt, linearScale } from '../../../ui/chartScale';
+import { coordText, linearScale } from '../../../ui/chartScale';
 import { binRange, countIn, gridAt, raceBinIndex, raceCounts, RACE_BINS } from '../model';
 import { describeHistogram } from './describeRace';
 import { Axes, M, path, PW } from './raceSvg';
@@ -52,7 +52,7 @@ function barsPath(counts: Uint32Array, t: number, a: number, b: number, yMax: nu
     const c = counts[k];
     if (!c) continue;
     const dens = Math.min(yMax, c / (t * w));
-    d += `M${fmt(x(k))},${y0}V${fmt(y0 - (PH * dens) / yMax)}H${fmt(x(k + 1))}V${y0}Z`;
+    d += `M${coordText(x(k))},${y0}V${coordText(y0 - (PH * dens) / yMax)}H${coordText(x(k + 1))}V${y0}Z`;
   }
   return d;
 }

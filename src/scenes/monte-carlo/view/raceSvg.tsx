@@ -1,5 +1,5 @@
 /** The race's hand-drawn SVG plots: their frame (viewBox, margins), axes and polylines. */
-import { fmt, type Scale } from '../../../ui/chartScale';
+import { coordText, type Scale } from '../../../ui/chartScale';
 
 export const W = 360;
 export const H = 190;
@@ -13,7 +13,7 @@ export function path(xs: readonly number[], ys: readonly number[], sx: Scale, sy
   for (let k = from; k < xs.length; k++) {
     const y = ys[k];
     if (!Number.isFinite(y)) continue;
-    d += `${d ? 'L' : 'M'}${fmt(sx(xs[k]))},${fmt(sy(y))}`;
+    d += `${d ? 'L' : 'M'}${coordText(sx(xs[k]))},${coordText(sy(y))}`;
   }
   return d;
 }

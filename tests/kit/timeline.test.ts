@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import { advance, clampPosition, openingPosition, timelineParams } from '../../src/ui/timeline';
+import { advance, clampPosition, openingPosition, timelineParams } from '../../src/kit/timeline';
 import { parseParams, serializeParams } from '../../src/kit/params';
 
 describe('timeline advance', () => {

@@ -1,0 +1,154 @@
+/**
+ * The links a scene page hands out, built in this one place: the share bar (copy link, QR code,
+ * copy embed code, keep classroom mode), the values a link may carry (typed expressions only once
+ * they compile), and the embedded page's link to the full app.
+ */
+import { useState } from 'react';
+import type { SceneInfo } from '../kit/catalogue';
+import type { SceneModule } from '../kit/scene';
+import { serializeParams, type ParamSchema, type ParamValues } from '../kit/params';
+import type { ShellFlags } from '../kit/shell';
+import { embedSnippet } from './embedCode';
+import { QrButton } from './QrButton';
+import './sceneHost.css';
+
+/** The embedded page's "open the full app" link: the same scene and values, without embed=1. */
+export function fullAppHref(info: SceneInfo, query: string): string {
+  const sp = new URLSearchParams(query);
+  sp.delete('embed');
+  const q = sp.toString();
+  return `${window.location.pathname}#${info.path}${q ? `?${q}` : ''}`;
+}
+
+/** Last expression per parameter that compiled, so a failing one falls back to it in the link. */
+const goodExpressions = new Map<string, string>();
+
+/**
+ * The values with every typed expression (string params with `expression`) replaced by its last
+ * successfully compiled text (or the default) unless it compiles now. The compiler (core/expr and
+ * its parser chunk) loads only when an expression differs from its default.
+ */
+export async function linkSafeValues(
+  schema: ParamSchema,
+  values: ParamValues<ParamSchema>,
+): Promise<ParamValues<ParamSchema>> {
+  const out = { ...values } as Record<string, unknown>;
+  for (const [name, spec] of Object.entries(schema)) {
+    if (spec.kind !== 'string' || spec.expression === undefined) continue;
+    const v = out[name];
+    if (typeof v !== 'string' || v === spec.default) continue;
+    let ok = false;
+    try {
+      const { compileExpression } = await import('../core/expr');
+      ok = (await compileExpression(v, spec.expression)).ok;
+    } catch {
+      ok = false;
+    }
+    const key = `${spec.expression.join(',')}\u0000${name}`;
+    if (ok) goodExpressions.set(key, v);
+    else out[name] = goodExpressions.get(key) ?? spec.default;
+  }
+  return out as ParamValues<ParamSchema>;
+}
+
+export function ShareBar({
+  info,
+  schema,
+  values,
+  flags,
+  asking,
+}: {
+  info: SceneInfo;
+  schema: SceneModule['schema'];
+  values: ParamValues<ParamSchema>;
+  flags: ShellFlags;
+  /** `ask=1` and not yet revealed. */
+  asking: boolean;
+}) {
+  const [copied, setCopied] = useState<'link' | 'embed' | null>(null);
+  const [shown, setShown] = useState<string | null>(null);
+  // The copied link and the QR code are the students' link: classroom mode (present=1) and the
+  // held-back results (ask=1) are the lecturer's, unless the lecturer asks to keep them.
+  const classroom = flags.present || asking;
+  const [keep, setKeep] = useState(false);
+  // (not location.origin + pathname: a copy opened from file:// has the origin "null")
+  const base = window.location.href.split('#')[0];
+  const qs = serializeParams(schema, values, {
+    part: flags.part ?? undefined,
+    present: keep && flags.present ? '1' : undefined,
+    ask: keep && asking ? '1' : undefined,
+    theme: flags.theme ?? undefined,
+  });
+  const link = `${base}#${info.path}${qs ? `?${qs}` : ''}`;
+  const embedQs = serializeParams(schema, values, {
+    part: flags.part ?? undefined,
+    embed: '1',
+    theme: flags.theme ?? undefined,
+  });
+  const embedSrc = `${base}#${info.path}?${embedQs}`;
+  const embedCode = embedSnippet(embedSrc, `${info.title} — Render Math Lab`, info.id);
+  const copy = async (what: 'link' | 'embed') => {
+    const text = what === 'link' ? link : embedCode;
+    setShown(text);
+    try {
+      await navigator.clipboard.writeText(text);
+      setCopied(what);
+    } catch {
+      setCopied(null);
+    }
+  };
+  return (
+    <div className="share-bar">
+      <button type="button" data-testid="copy-link" onClick={() => copy('link')}>
+        Copy link
+      </button>
+      <QrButton link={link} present={flags.present} classroomLink={keep && classroom}>
+        {classroom ? <KeepClassroom keep={keep} onKeep={setKeep} testId="qr-keep-classroom" /> : null}
+      </QrButton>
+      {/* embedding is preparation, not the lecture: classroom mode keeps its one header row */}
+      {flags.present ? null : (
+        <button type="button" data-testid="copy-embed" onClick={() => copy('embed')}>
+          Copy embed code
+        </button>
+      )}
+      {classroom ? <KeepClassroom keep={keep} onKeep={setKeep} testId="keep-classroom" /> : null}
+      <span role="status" className="share-status">
+        {copied === 'link'
+          ? 'Link copied.'
+          : copied === 'embed'
+            ? 'Embed code copied.'
+            : shown
+              ? 'Copy it from the box:'
+              : ''}
+      </span>
+      {shown ? (
+        <input
+          className="share-text"
+          data-testid="share-text"
+          aria-label="Text to copy"
+          readOnly
+          value={shown}
+          onFocus={(e) => e.currentTarget.select()}
+        />
+      ) : null}
+    </div>
+  );
+}
+
+/** The lecturer's choice: the copied link and the QR code keep classroom mode (present=1, ask=1). */
+function KeepClassroom({
+  keep,
+  onKeep,
+  testId,
+}: {
+  keep: boolean;
+  onKeep: (keep: boolean) => void;
+  testId: string;
+}) {
+  return (
+    <label className="share-keep">
+      <input type="checkbox" data-testid={testId} checked={keep} onChange={(e) => onKeep(e.target.checked)} />{' '}
+      Keep classroom mode
+    </label>
+  );
+}
