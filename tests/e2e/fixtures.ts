@@ -90,3 +90,26 @@ export async function countAnimationFrames(page: Page): Promise<void> {
     };
   });
 }
+
+/**
+ * Resolves once the main thread has rendered two frames and run a macrotask (it is free again).
+ * A compositor that skips frames (seen on a loaded machine: no animation frame for minutes while
+ * scrolling) must not hang the test, so a 2 s timer also resolves it: a timer still needs a free
+ * main thread, so a page that blocks its main thread still keeps the test waiting.
+ */
+export async function settle(page: Page): Promise<void> {
+  await page.evaluate(
+    () =>
+      new Promise<void>((resolve) => {
+        const timer = setTimeout(resolve, 2000);
+        requestAnimationFrame(() =>
+          requestAnimationFrame(() =>
+            setTimeout(() => {
+              clearTimeout(timer);
+              resolve();
+            }, 0),
+          ),
+        );
+      }),
+  );
+}
