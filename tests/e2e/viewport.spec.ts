@@ -104,25 +104,21 @@ test.describe('shared 3D viewport', () => {
     await vp.scrollIntoViewIfNeeded();
     await expect(vp).toHaveAttribute('data-status', 'ready', { timeout: 30_000 });
     await expect(page.getByTestId('view-3d-axes')).toHaveAttribute('data-distance', /\d/);
-    // let lazy panels settle, then count over a quiet second
-    await expect
-      .poll(
-        async () => {
-          const a = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
-          await page.evaluate(() => new Promise((r) => setTimeout(r, 1000)));
-          const b = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
-          return b - a;
-        },
-        { timeout: 30_000, intervals: [0] },
-      )
-      .toBe(0);
-    // one key press renders once, then it is quiet again
+    type Frames = { __raf: number; __rafPending: number };
+    const frames = () =>
+      page.evaluate(() => {
+        const w = window as unknown as Frames;
+        return { __raf: w.__raf, __rafPending: w.__rafPending };
+      });
+    // once lazy panels have settled, no frame is requested: no render loop runs
+    await expect.poll(async () => (await frames()).__rafPending, { timeout: 30_000 }).toBe(0);
+    // one key press renders once (a frame or few), then nothing is requested again
     await vp.focus();
-    const before = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
+    const before = (await frames()).__raf;
     await page.keyboard.press('ArrowRight');
-    await page.evaluate(() => new Promise((r) => setTimeout(r, 800)));
-    const after = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
-    expect(after - before).toBeGreaterThanOrEqual(1);
+    await expect.poll(async () => (await frames()).__raf - before).toBeGreaterThanOrEqual(1);
+    await expect.poll(async () => (await frames()).__rafPending).toBe(0);
+    const after = (await frames()).__raf;
     expect(after - before).toBeLessThanOrEqual(3);
   });
 
