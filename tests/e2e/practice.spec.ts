@@ -12,7 +12,15 @@ import AxeBuilder from '@axe-core/playwright';
 import type { Page } from '@playwright/test';
 import { test, expect, giveAnswer } from './fixtures';
 import { QUESTIONS, questionInfo } from '../../src/practice/questions';
-import { allAnswers, tn, type AnswerSpec, type QuestionId, type Variant } from '../../src/practice/model';
+import {
+  allAnswers,
+  tn,
+  type AnswerSpec,
+  type ChoiceAnswer,
+  type NumberAnswer,
+  type QuestionId,
+  type Variant,
+} from '../../src/practice/model';
 import { q1Params } from '../../src/practice/q1';
 
 /** What a careful student types: numbers to 5 significant figures, formulas as expected, choices. */
@@ -77,7 +85,9 @@ for (const q of QUESTIONS) {
 test('a classic mistake, typed or chosen, is named by its id with its explanation', async ({ page }) => {
   // typed: Q5's first number answer that has a mistake and follows from no other answer
   let v = await openVariant(page, 'q5', 5);
-  const typed = allAnswers(v).find((a) => a.kind === 'number' && a.mistakes.length && !a.follow?.length);
+  const typed = allAnswers(v).find(
+    (a): a is NumberAnswer => a.kind === 'number' && a.mistakes.length > 0 && !a.follow?.length,
+  );
   expect(typed, 'a number answer with a mistake').toBeTruthy();
   const m = typed!.mistakes[0];
   await fillAndCheck(page, [[typed!.name, String(m.value)]]);
@@ -86,7 +96,7 @@ test('a classic mistake, typed or chosen, is named by its id with its explanatio
   // chosen: the first Q5 variant whose case has a mistake among its options
   let seed = 5;
   const choiceWithMistake = (x: Variant) =>
-    allAnswers(x).find((a) => a.kind === 'choice' && a.mistakes.length);
+    allAnswers(x).find((a): a is ChoiceAnswer => a.kind === 'choice' && a.mistakes.length > 0);
   while (!choiceWithMistake(questionInfo('q5').generate(seed))) seed++;
   v = await openVariant(page, 'q5', seed);
   const chosen = choiceWithMistake(v)!;
