@@ -76,17 +76,57 @@ export async function waitForReadout(
 }
 
 /**
- * Count requestAnimationFrame calls from the page's first script on, in `window.__raf` (call before
- * the page loads): "nothing renders while paused / idle" is then `__raf` not growing.
+ * Count requestAnimationFrame calls from the page's first script on, in `window.__raf`, and the
+ * requests not yet run or cancelled, in `window.__rafPending` (call before the page loads). A render
+ * loop always has a frame requested, so "nothing renders while paused / idle" is `__rafPending`
+ * at 0 (a state, no clock needed), and `__raf` says how many frames a change cost.
  */
 export async function countAnimationFrames(page: Page): Promise<void> {
   await page.addInitScript(() => {
-    const w = window as unknown as { __raf: number };
+    const w = window as unknown as { __raf: number; __rafPending: number };
     w.__raf = 0;
-    const orig = window.requestAnimationFrame.bind(window);
+    w.__rafPending = 0;
+    const pending = new Set<number>();
+    const request = window.requestAnimationFrame.bind(window);
+    const cancel = window.cancelAnimationFrame.bind(window);
     window.requestAnimationFrame = (cb) => {
       w.__raf++;
-      return orig(cb);
+      const id = request((t) => {
+        pending.delete(id);
+        w.__rafPending = pending.size;
+        cb(t);
+      });
+      pending.add(id);
+      w.__rafPending = pending.size;
+      return id;
+    };
+    window.cancelAnimationFrame = (id) => {
+      pending.delete(id);
+      w.__rafPending = pending.size;
+      cancel(id);
     };
   });
+}
+
+/**
+ * Resolves once the main thread has rendered two frames and run a macrotask (it is free again).
+ * A compositor that skips frames (seen on a loaded machine: no animation frame for minutes while
+ * scrolling) must not hang the test, so a 2 s timer also resolves it: a timer still needs a free
+ * main thread, so a page that blocks its main thread still keeps the test waiting.
+ */
+export async function settle(page: Page): Promise<void> {
+  await page.evaluate(
+    () =>
+      new Promise<void>((resolve) => {
+        const timer = setTimeout(resolve, 2000);
+        requestAnimationFrame(() =>
+          requestAnimationFrame(() =>
+            setTimeout(() => {
+              clearTimeout(timer);
+              resolve();
+            }, 0),
+          ),
+        );
+      }),
+  );
 }

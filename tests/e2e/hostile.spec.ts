@@ -1,17 +1,15 @@
 /**
  * Hostile input, kept fixed:
- *  - a URL corpus: every route × every parameter set to each hostile value (prototype names,
- *    empty, NaN, ±Infinity, 1e400, 100k characters, unicode/RTL marks, broken percent-escapes,
- *    wrong arity, deeply nested calls). Per value, all of a route's parameters get it at once
- *    (one hash change, the scene stays loaded): zero console errors (fixture), a working scene, no
- *    main-thread task over 1 s while the input is processed, and a notice naming every
- *    non-text parameter whose value could not be used;
+ *  - a URL corpus: every route × every parameter set to each hostile value (empty, NaN, ±Infinity,
+ *    1e400, 100k characters, unicode/RTL marks, broken percent-escapes, wrong arity, deeply nested
+ *    calls), then a prototype name on each parameter alone. Per value, all of a route's parameters
+ *    get it at once (one hash change, the scene stays loaded): zero console errors (fixture), a
+ *    working scene, and a notice naming every non-text parameter whose value could not be used;
  *  - the fuzz mode (`fuzz=1&seed=…&fuzzn=…`) on every route, fixed seed, a few hundred actions.
  * Routes come from the catalogue (src/kit/catalogue.ts) plus EXTRA_ROUTES, parameter names and
  * kinds from each scene's schema (its params.ts), so new scenes are covered without editing this file.
  */
-import { test, expect, openScene } from './fixtures';
-import { installLongTaskObserver, settle, slowdown, takeLongTasks } from './longTasks';
+import { test, expect, openScene, settle } from './fixtures';
 import { SCENES, sceneParams } from './sceneSchemas';
 import type { SceneId } from '../../src/kit/catalogue';
 import type { Page } from '@playwright/test';
@@ -43,12 +41,10 @@ const ROUTES = [...SCENE_ROUTES, ...EXTRA_ROUTES];
 
 const NESTED = `${'exp('.repeat(60)}x${')'.repeat(60)}`;
 /** [label, raw text put into the query as is (already URL-encoded where needed)]. */
+// Prototype names are not in it: the per-parameter pass below puts one on each parameter, and
+// tests/kit/sceneParamsHostile.test.ts reads every scene's schema with every value of this corpus
+// and the prototype names.
 const CORPUS: [string, string][] = [
-  ['__proto__', '__proto__'],
-  ['constructor', 'constructor'],
-  ['toString', 'toString'],
-  ['valueOf', 'valueOf'],
-  ['hasOwnProperty', 'hasOwnProperty'],
   ['empty', ''],
   ['NaN', 'NaN'],
   ['Infinity', 'Infinity'],
@@ -75,14 +71,12 @@ for (const route of ROUTES) {
     test.setTimeout(240_000);
     const params = route.params ?? (route.id ? await sceneParams(route.id) : []);
     await openScene(page, `#${route.path}`);
-    // let the first load (lazy libraries, first plots) finish before timing the input
+    // scrolled through once, so every section (lazy libraries, plots) is mounted and takes the input
     for (let y = 0; y <= 4; y++) {
       await page.evaluate((f) => window.scrollTo(0, f * document.body.scrollHeight), y / 4);
       await settle(page);
     }
     await page.evaluate(() => window.scrollTo(0, 0));
-    await installLongTaskObserver(page);
-    const limitMs = 1000 * (await slowdown(page));
     for (const [label, raw] of CORPUS) {
       const names = [...params.map((p) => p.name), 'embed', 'theme'];
       const q = names.map((n) => `${n}=${raw}`).join('&');
@@ -107,12 +101,6 @@ for (const route of ROUTES) {
           if (named) expect(named, `${route.path}: ${p.name}=${label} is named`).toContain(p.name);
           else expect(text, `${route.path}: ${p.name}=${label} is named`).toContain(p.name);
       }
-      await settle(page);
-      const long = await takeLongTasks(page);
-      expect(
-        Math.max(0, ...long),
-        `${route.path} with every parameter = ${label}: longest main-thread task (ms; 1 s × slowdown ${limitMs / 1000})`,
-      ).toBeLessThan(limitMs);
     }
     // one prototype name per parameter on its own, then a control change: the URL never carries
     // a function's source

@@ -112,12 +112,9 @@ test('#/results collates 100 files offline, recomputing every verdict', async ({
   page.on('request', (req) => {
     if (!/^(blob|data):/.test(req.url())) requests.push(req.url());
   });
-  const t0 = Date.now();
   await page.getByTestId('results-files').setInputFiles(files);
   const report = page.getByTestId('results-report');
   await expect(report).toHaveAttribute('data-files', '100', { timeout: 60_000 });
-  const elapsed = Date.now() - t0;
-  expect(elapsed).toBeLessThan(60_000);
   const totalAttempts = Object.values(want.attempts).reduce((a, b) => a + b, 0);
   await expect(report).toHaveAttribute('data-attempts', String(totalAttempts));
   await expect(report).toHaveAttribute('data-students', '100');

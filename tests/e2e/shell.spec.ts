@@ -1,10 +1,12 @@
 /**
  * Browser tests of the shell: home page, routes, the URL-parameter notice, embed and classroom
- * modes, share links, accessibility, and what `#/` downloads. The app is served from a
- * sub-folder (/app/) to prove the static build works from any folder.
+ * modes, share links, accessibility of the home page, and what `#/` downloads (axe on every scene:
+ * catalogue.spec.ts). The app is served from a sub-folder (/app/) to prove the static build works
+ * from any folder.
  */
 import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, readout } from './fixtures';
+import { settleLazyViews } from './lazyViews';
 import { SCENES, sceneSchema } from './sceneSchemas';
 
 const ROUTES = SCENES.map((s) => s.path);
@@ -61,7 +63,10 @@ test('#/ downloads no three.js, Plotly, mathjs, KaTeX or scene code', async ({ p
 });
 
 for (const route of ROUTES) {
-  test(`${route} loads with no console error and a working scene`, async ({ page, baseURL }) => {
+  test(`${route} loads with no console error, only its own files and a working scene; garbage parameters are named`, async ({
+    page,
+    baseURL,
+  }) => {
     const foreign: string[] = [];
     page.on('request', (r) => {
       const u = r.url();
@@ -74,35 +79,16 @@ for (const route of ROUTES) {
     // a built scene shows readouts; the shell's share bar is there
     await expect(page.locator('[data-testid][data-value]').first()).toBeAttached();
     await expect(page.getByTestId('copy-link')).toBeVisible();
-    // scroll through the whole scene so every lazy view (plots, 3D, KaTeX) loads
-    for (let y = 0; y < 12; y++) {
-      await page.mouse.wheel(0, 700);
-      await page.waitForTimeout(150);
-    }
+    // every lazy view (plots, 3D, KaTeX) brought on screen and loaded
+    await settleLazyViews(page);
     await page.waitForLoadState('networkidle');
     // everything comes from the app's own folder: the static build works offline
     expect(foreign).toEqual([]);
-  });
 
-  test(`${route} has no serious or critical axe violations`, async ({ page }) => {
-    test.setTimeout(240_000); // a full-page axe scan of a long page on a busy 2-core machine
-    await openScene(page, `#${route}`);
-    await page.waitForLoadState('networkidle');
-    const results = await new AxeBuilder({ page }).exclude('.js-plotly-plot').analyze();
-    const bad = results.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical');
-    expect(
-      bad.map(
-        (v) =>
-          `${v.id}: ${v.nodes
-            .slice(0, 5)
-            .map((n) => n.target.join(' '))
-            .join(', ')}`,
-      ),
-    ).toEqual([]);
-  });
-
-  test(`${route} with garbage parameters shows the notice naming them and still works`, async ({ page }) => {
-    await openScene(page, `#${route}?n=NaN&seed=1e400&bogus=%F0%9F%98%80&theme=purple`);
+    // garbage parameters: a notice (a status message) names them, and the scene still works
+    await page.evaluate((h) => {
+      window.location.hash = h;
+    }, `#${route}?n=NaN&seed=1e400&bogus=%F0%9F%98%80&theme=purple`);
     const notice = page.getByTestId('param-notice');
     await expect(notice).toBeVisible();
     await expect(notice).toHaveAttribute('role', 'status');
@@ -266,32 +252,26 @@ test('service workers blocked (as in automated browsers): the registration settl
     .toBeTruthy();
   // the page's own handling runs after the recorder's: give it a task, then the fixture checks that
   // no console error or uncaught error (such as reading .waiting of nothing) was seen
-  await page.evaluate(() => new Promise((r) => setTimeout(r, 100)));
+  await page.evaluate(() => new Promise((r) => setTimeout(r, 0)));
   await expect(page.locator('link[rel="manifest"]')).toHaveCount(1);
 });
 
-test('play=1 plays, on every scene: a link asking to play from the end (or at the default t) plays from the start', async ({
+// The timeline is the shared one (src/ui), the same on every scene; catalogue.spec.ts runs the
+// timeline's behaviours on each scene of the catalogue.
+test('play=1 plays: a link asking to play from the end (or at the default t) plays from the start', async ({
   page,
 }) => {
-  test.setTimeout(180_000);
-  let played = 0;
-  for (const scene of SCENES) {
-    const schema = await sceneSchema(scene.id);
-    const t = schema.t;
-    if (!('play' in schema) || !t || t.kind !== 'number' || t.max === undefined) continue;
-    for (const hash of [`#${scene.path}?play=1`, `#${scene.path}?play=1&t=${t.max}`]) {
-      await openScene(page, hash);
-      const tl = page.getByTestId('timeline').first();
-      // playing: the transport says so, and the link keeps play=1 while it plays
-      await expect(tl, hash).toHaveAttribute('data-playing', '1');
-      await expect
-        .poll(() => page.evaluate(() => window.location.hash), { message: hash })
-        .toContain('play=1');
-      await tl.getByRole('button', { name: /Pause/ }).click();
-      await expect(tl, hash).toHaveAttribute('data-playing', '0');
-      played++;
-    }
+  const scene = SCENES.find((s) => s.id === 'ray-sphere')!;
+  const t = (await sceneSchema(scene.id)).t;
+  expect(t?.kind === 'number' && t.max !== undefined, 'the scene has a timeline position t').toBe(true);
+  const tMax = t?.kind === 'number' ? t.max : undefined;
+  for (const hash of [`#${scene.path}?play=1`, `#${scene.path}?play=1&t=${tMax}`]) {
+    await openScene(page, hash);
+    const tl = page.getByTestId('timeline').first();
+    // playing: the transport says so, and the link keeps play=1 while it plays
+    await expect(tl, hash).toHaveAttribute('data-playing', '1');
+    await expect.poll(() => page.evaluate(() => window.location.hash), { message: hash }).toContain('play=1');
+    await tl.getByRole('button', { name: /Pause/ }).click();
+    await expect(tl, hash).toHaveAttribute('data-playing', '0');
   }
-  // every scene of the catalogue has the shared timeline
-  expect(played).toBe(2 * SCENES.length);
 });

@@ -3,12 +3,14 @@
  *
  * The per-scene checks run over every scene of the catalogue and assert for each: a scene whose
  * layout does not pass a `stage` yet (or does not hide its results under ask=1) fails with a
- * message that names it, so the list of failures is the list of scenes still to do.
+ * message that names it, so the list of failures is the list of scenes still to do. What the
+ * shared stage does the same on every scene is checked on one (catalogue.spec.ts loops the
+ * timeline's and the stage's shared behaviours over the catalogue).
  */
 import type { Page } from '@playwright/test';
 import { SCENES, predictPrompt, type SceneInfo } from '../../src/kit/catalogue';
 import { textFormulaGroups } from '../../src/ui/texBreaks';
-import { test, expect, openScene } from './fixtures';
+import { test, expect, openScene, settle } from './fixtures';
 
 const SCREENS = [
   { width: 1280, height: 720 },
@@ -46,49 +48,41 @@ async function openStaged(page: Page, s: SceneInfo, extra = ''): Promise<boolean
 const NO_STAGE = (s: SceneInfo) =>
   `${s.id}: no scene-stage in classroom mode (the scene does not pass SceneLayout's stage yet)`;
 
-for (const screen of SCREENS) {
-  for (const s of SCENES) {
-    test(`${s.id} at ${screen.width}×${screen.height}, present=1: the stage is wholly on the first screen`, async ({
-      page,
-    }) => {
-      test.setTimeout(120_000);
-      await page.setViewportSize(screen);
-      expect(await openStaged(page, s), NO_STAGE(s)).toBe(true);
-      const stage = page.getByTestId('scene-stage');
-      await expect(stage).toBeVisible();
-      // the stage itself, and everything in it (figure, readouts, transport), is on the first screen
-      expect((await outsideFirstScreen(page, '[data-testid="scene-stage"]')).worst).toBeLessThanOrEqual(1);
-      const inner = await outsideFirstScreen(
-        page,
-        '[data-testid="scene-stage"] .stage-body *:not(option):not(.sr-only)',
-      );
-      expect(
-        inner.worst,
-        `${s.id}: part of the stage is below or beside the first screen: ${inner.what}`,
-      ).toBeLessThanOrEqual(1);
-      // the stage takes most of the first screen (figure sized to the viewport), not a strip of it
-      const box = (await stage.boundingBox())!;
-      expect(box.height, `${s.id}: the stage is ${Math.round(box.height)} px tall`).toBeGreaterThan(
-        0.55 * screen.height,
-      );
-      // the transport is part of the stage where the scene animates
-      const transports = await page.locator('.timeline').count();
-      if (transports > 0)
-        await expect(
-          stage.locator('.timeline').first(),
-          `${s.id}: its transport is on the stage`,
-        ).toBeVisible();
-      // the controls are folded into the drawer: closed, they take none of the screen
-      await expect(page.getByTestId('controls-drawer')).toBeHidden();
-    });
-  }
+/** The stage, and everything in it, on the first screen of `screen`, taking most of it. */
+async function expectStageOnFirstScreen(page: Page, s: SceneInfo, screen: { height: number }): Promise<void> {
+  const stage = page.getByTestId('scene-stage');
+  await expect(stage).toBeVisible();
+  // the stage itself, and everything in it (figure, readouts, transport), is on the first screen
+  expect((await outsideFirstScreen(page, '[data-testid="scene-stage"]')).worst).toBeLessThanOrEqual(1);
+  const inner = await outsideFirstScreen(
+    page,
+    '[data-testid="scene-stage"] .stage-body *:not(option):not(.sr-only)',
+  );
+  expect(
+    inner.worst,
+    `${s.id}: part of the stage is below or beside the first screen: ${inner.what}`,
+  ).toBeLessThanOrEqual(1);
+  // the stage takes most of the first screen (figure sized to the viewport), not a strip of it
+  const box = (await stage.boundingBox())!;
+  expect(box.height, `${s.id}: the stage is ${Math.round(box.height)} px tall`).toBeGreaterThan(
+    0.55 * screen.height,
+  );
+  // the transport is part of the stage where the scene animates
+  const transports = await page.locator('.timeline').count();
+  if (transports > 0)
+    await expect(stage.locator('.timeline').first(), `${s.id}: its transport is on the stage`).toBeVisible();
+  // the controls are folded into the drawer: closed, they take none of the screen
+  await expect(page.getByTestId('controls-drawer')).toBeHidden();
 }
 
 for (const s of SCENES) {
-  test(`${s.id}, present=1: text and plot ticks on the stage are at least 18 px`, async ({ page }) => {
+  test(`${s.id} at 1280×720, present=1: the stage is wholly on the first screen; its text and plot ticks are at least 18 px`, async ({
+    page,
+  }) => {
     test.setTimeout(120_000);
-    await page.setViewportSize({ width: 1280, height: 720 });
+    await page.setViewportSize(SCREENS[0]);
     expect(await openStaged(page, s), NO_STAGE(s)).toBe(true);
+    await expectStageOnFirstScreen(page, s, SCREENS[0]);
     const small = await page.evaluate(() => {
       const stage = document.querySelector('[data-testid="scene-stage"]')!;
       const out: string[] = [];
@@ -110,6 +104,15 @@ for (const s of SCENES) {
     expect(small, `${s.id}: text under 18 px on the stage`).toEqual([]);
   });
 }
+
+// the stage's layout is the shared one (src/ui/stage.tsx): the larger screen on one scene
+test('hemisphere at 1920×1080, present=1: the stage is wholly on the first screen', async ({ page }) => {
+  test.setTimeout(120_000);
+  const s = SCENES.find((x) => x.id === 'hemisphere')!;
+  await page.setViewportSize(SCREENS[1]);
+  expect(await openStaged(page, s), NO_STAGE(s)).toBe(true);
+  await expectStageOnFirstScreen(page, s, SCREENS[1]);
+});
 
 test('the Controls drawer opens and closes by its button and by the key c; focus follows', async ({
   page,
@@ -412,7 +415,7 @@ for (const s of SCENES) {
     const height = await page.evaluate(() => document.documentElement.scrollHeight);
     for (let y = 0; y < height; y += 700) {
       await page.evaluate((y) => window.scrollTo(0, y), y);
-      await page.waitForTimeout(60);
+      await settle(page);
     }
     await expect(page.locator('.math-pending')).toHaveCount(0, { timeout: 60_000 });
     const inside = await page.evaluate(() => {
@@ -467,7 +470,7 @@ test('present=1: every Plotly plot’s tick labels are at least 18 px', async ({
   const height = await page.evaluate(() => document.documentElement.scrollHeight);
   for (let y = 0; y < height; y += 600) {
     await page.evaluate((y) => window.scrollTo(0, y), y);
-    await page.waitForTimeout(80);
+    await settle(page);
   }
   await expect(page.locator('.js-plotly-plot .xtick text').first()).toBeAttached({ timeout: 60_000 });
   const sizes = await page.locator('.js-plotly-plot :is(.xtick, .ytick) text').evaluateAll((ts) =>

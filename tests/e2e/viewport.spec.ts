@@ -1,8 +1,8 @@
 // The shared 3D viewport (src/three): keyboard orbit and zoom, a visible focus ring, "Reset view",
 // a labelled axis triad, and no animation frames while idle. Checked on #/ray-sphere and #/hemisphere.
-// Its orbit and zoom buttons (the single-pointer alternative to dragging) on every scene with a 3D
-// view: they move the camera by mouse, touch and keyboard, are at least 24 × 24, and never lie over
-// each other, the scene's overlays, the axis labels or the stage's buttons.
+// Its orbit and zoom buttons (the single-pointer alternative to dragging) move the camera by mouse,
+// touch and keyboard and are at least 24 × 24 (on #/area-light); on every scene with a 3D view they
+// never lie over each other, the scene's overlays, the axis labels or the stage's buttons.
 import AxeBuilder from '@axe-core/playwright';
 import type { Locator, Page } from '@playwright/test';
 import { SCENES } from '../../src/kit/catalogue';
@@ -104,64 +104,57 @@ test.describe('shared 3D viewport', () => {
     await vp.scrollIntoViewIfNeeded();
     await expect(vp).toHaveAttribute('data-status', 'ready', { timeout: 30_000 });
     await expect(page.getByTestId('view-3d-axes')).toHaveAttribute('data-distance', /\d/);
-    // let lazy panels settle, then count over a quiet second
-    await expect
-      .poll(
-        async () => {
-          const a = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
-          await page.evaluate(() => new Promise((r) => setTimeout(r, 1000)));
-          const b = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
-          return b - a;
-        },
-        { timeout: 30_000, intervals: [0] },
-      )
-      .toBe(0);
-    // one key press renders once, then it is quiet again
+    type Frames = { __raf: number; __rafPending: number };
+    const frames = () =>
+      page.evaluate(() => {
+        const w = window as unknown as Frames;
+        return { __raf: w.__raf, __rafPending: w.__rafPending };
+      });
+    // once lazy panels have settled, no frame is requested: no render loop runs
+    await expect.poll(async () => (await frames()).__rafPending, { timeout: 30_000 }).toBe(0);
+    // one key press renders once (a frame or few), then nothing is requested again
     await vp.focus();
-    const before = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
+    const before = (await frames()).__raf;
     await page.keyboard.press('ArrowRight');
-    await page.evaluate(() => new Promise((r) => setTimeout(r, 800)));
-    const after = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
-    expect(after - before).toBeGreaterThanOrEqual(1);
+    await expect.poll(async () => (await frames()).__raf - before).toBeGreaterThanOrEqual(1);
+    await expect.poll(async () => (await frames()).__rafPending).toBe(0);
+    const after = (await frames()).__raf;
     expect(after - before).toBeLessThanOrEqual(3);
   });
 
-  for (const s of SCENES) {
-    test(`${s.id}: the orbit and zoom buttons move the camera by mouse and keyboard; Reset view returns`, async ({
-      page,
-    }) => {
-      test.setTimeout(180_000);
-      const vp = await firstView(page, `#${s.path}`);
-      test.skip(vp === null, `${s.id} has no 3D view`);
-      const home = await camera(vp!);
-      // each button is named, at least 24 × 24 CSS px, and moves the camera one step
-      for (const name of ORBITS) {
-        const b = vp!.getByRole('button', { name, exact: true });
-        const box = (await b.boundingBox())!;
-        expect(box.width, `${name} width`).toBeGreaterThanOrEqual(24);
-        expect(box.height, `${name} height`).toBeGreaterThanOrEqual(24);
-        const before = await camera(vp!);
-        await b.click();
-        await expect
-          .poll(async () => (await camera(vp!)).x, { message: `${name} orbits` })
-          .not.toBe(before.x);
-        expect((await camera(vp!)).d, 'orbiting keeps the distance').toBeCloseTo(home.d, 3);
-      }
-      await vp!.getByRole('button', { name: 'Zoom in', exact: true }).click();
-      await expect.poll(async () => (await camera(vp!)).d).toBeCloseTo(home.d / 1.15, 3);
-      // by keyboard: Enter on Zoom out, Space on Orbit left
-      await vp!.getByRole('button', { name: 'Zoom out', exact: true }).focus();
-      await page.keyboard.press('Enter');
-      await expect.poll(async () => (await camera(vp!)).d).toBeCloseTo(home.d, 3);
+  // the buttons are the shared viewport's (src/three), the same on every scene: checked on one
+  test('area-light: the orbit and zoom buttons move the camera by mouse and keyboard; Reset view returns', async ({
+    page,
+  }) => {
+    test.setTimeout(180_000);
+    const vp = await firstView(page, '#/area-light');
+    expect(vp, 'area-light has a 3D view').not.toBeNull();
+    const home = await camera(vp!);
+    // each button is named, at least 24 × 24 CSS px, and moves the camera one step
+    for (const name of ORBITS) {
+      const b = vp!.getByRole('button', { name, exact: true });
+      const box = (await b.boundingBox())!;
+      expect(box.width, `${name} width`).toBeGreaterThanOrEqual(24);
+      expect(box.height, `${name} height`).toBeGreaterThanOrEqual(24);
       const before = await camera(vp!);
-      await vp!.getByRole('button', { name: 'Orbit left', exact: true }).focus();
-      await page.keyboard.press('Space');
-      await expect.poll(async () => (await camera(vp!)).x).not.toBe(before.x);
-      await vp!.getByRole('button', { name: 'Reset view', exact: true }).click();
-      await expect.poll(async () => (await camera(vp!)).x).toBe(home.x);
-      expect((await camera(vp!)).d).toBeCloseTo(home.d, 3);
-    });
-  }
+      await b.click();
+      await expect.poll(async () => (await camera(vp!)).x, { message: `${name} orbits` }).not.toBe(before.x);
+      expect((await camera(vp!)).d, 'orbiting keeps the distance').toBeCloseTo(home.d, 3);
+    }
+    await vp!.getByRole('button', { name: 'Zoom in', exact: true }).click();
+    await expect.poll(async () => (await camera(vp!)).d).toBeCloseTo(home.d / 1.15, 3);
+    // by keyboard: Enter on Zoom out, Space on Orbit left
+    await vp!.getByRole('button', { name: 'Zoom out', exact: true }).focus();
+    await page.keyboard.press('Enter');
+    await expect.poll(async () => (await camera(vp!)).d).toBeCloseTo(home.d, 3);
+    const before = await camera(vp!);
+    await vp!.getByRole('button', { name: 'Orbit left', exact: true }).focus();
+    await page.keyboard.press('Space');
+    await expect.poll(async () => (await camera(vp!)).x).not.toBe(before.x);
+    await vp!.getByRole('button', { name: 'Reset view', exact: true }).click();
+    await expect.poll(async () => (await camera(vp!)).x).toBe(home.x);
+    expect((await camera(vp!)).d).toBeCloseTo(home.d, 3);
+  });
 
   test('classroom mode: Space on a focused orbit button presses it and does not play the animation', async ({
     page,
@@ -178,88 +171,84 @@ test.describe('shared 3D viewport', () => {
   });
 
   for (const s of SCENES) {
-    test(`${s.id} at 320, 375 and 1280 px, with and without present=1: the view's buttons, its axis labels and the stage's buttons never overlap`, async ({
+    test(`${s.id} at 320 px, and at 1280 px with present=1: the view's buttons, its axis labels and the stage's buttons never overlap; in classroom mode the axis labels are drawn at 18 px or more`, async ({
       page,
     }) => {
-      test.setTimeout(420_000);
+      test.setTimeout(240_000);
       const found: string[] = [];
-      for (const present of [false, true])
-        for (const width of [320, 375, 1280]) {
-          await page.setViewportSize({ width, height: width === 1280 ? 720 : 740 });
-          const vp = await firstView(page, `#${s.path}${present ? '?present=1' : ''}`);
-          test.skip(vp === null, `${s.id} has no 3D view`);
-          const where = `${width} px${present ? ', present=1' : ''}`;
-          found.push(
-            ...(await vp!.evaluate((view, where) => {
-              const box = (el: Element) => el.getBoundingClientRect();
-              const name = (el: Element) =>
-                (el.getAttribute('aria-label') ?? el.textContent ?? '').trim().slice(0, 24) || el.tagName;
-              const visible = (el: Element) => {
-                const r = box(el);
-                return r.width > 0 && r.height > 0 && getComputedStyle(el).visibility !== 'hidden';
-              };
-              const meets = (a: DOMRect, b: DOMRect) =>
-                a.left < b.right - 0.5 &&
-                b.left < a.right - 0.5 &&
-                a.top < b.bottom - 0.5 &&
-                b.top < a.bottom - 0.5;
-              // the view's own buttons and the scene's overlays on it (legends, "Frame the scene")
-              const overlays = [...view.children].filter(
-                (el) => !el.matches('canvas, .viewport-triad, .viewport-tools, .viewport-msg') && visible(el),
-              );
-              const buttons = [...view.querySelectorAll('.viewport-tools button'), ...overlays].filter(
-                visible,
-              );
-              const labels = [...view.querySelectorAll('.viewport-triad text')].filter(visible);
-              const stage = view.closest('[data-testid="scene-stage"]');
-              const stageButtons = stage ? [...stage.querySelectorAll(':scope > .stage-bar > button')] : [];
-              const fullscreen = document.querySelector('[data-testid="fullscreen"]');
-              if (fullscreen && !stageButtons.includes(fullscreen)) stageButtons.push(fullscreen);
-              const out: string[] = [];
-              const v = box(view);
-              buttons.forEach((a, i) => {
-                const r = box(a);
-                if (
-                  r.left < v.left - 0.5 ||
-                  r.right > v.right + 0.5 ||
-                  r.top < v.top - 0.5 ||
-                  r.bottom > v.bottom + 0.5
-                )
-                  out.push(`${where}: "${name(a)}" reaches outside the view`);
-                for (const b of buttons.slice(i + 1))
-                  if (meets(r, box(b))) out.push(`${where}: "${name(a)}" over "${name(b)}"`);
-                for (const l of labels)
-                  if (meets(r, box(l))) out.push(`${where}: "${name(a)}" over the axis label "${name(l)}"`);
-                for (const b of stageButtons.filter(visible))
-                  if (meets(r, box(b))) out.push(`${where}: "${name(a)}" over the stage's "${name(b)}"`);
-              });
-              return out;
-            }, where)),
-          );
+      // the narrowest phone and the classroom screen: the two ends of the view's sizes
+      for (const [present, width] of [
+        [false, 320],
+        [true, 1280],
+      ] as const) {
+        await page.setViewportSize({ width, height: width === 1280 ? 720 : 740 });
+        const vp = await firstView(page, `#${s.path}${present ? '?present=1' : ''}`);
+        test.skip(vp === null, `${s.id} has no 3D view`);
+        const where = `${width} px${present ? ', present=1' : ''}`;
+        found.push(
+          ...(await vp!.evaluate((view, where) => {
+            const box = (el: Element) => el.getBoundingClientRect();
+            const name = (el: Element) =>
+              (el.getAttribute('aria-label') ?? el.textContent ?? '').trim().slice(0, 24) || el.tagName;
+            const visible = (el: Element) => {
+              const r = box(el);
+              return r.width > 0 && r.height > 0 && getComputedStyle(el).visibility !== 'hidden';
+            };
+            const meets = (a: DOMRect, b: DOMRect) =>
+              a.left < b.right - 0.5 &&
+              b.left < a.right - 0.5 &&
+              a.top < b.bottom - 0.5 &&
+              b.top < a.bottom - 0.5;
+            // the view's own buttons and the scene's overlays on it (legends, "Frame the scene")
+            const overlays = [...view.children].filter(
+              (el) => !el.matches('canvas, .viewport-triad, .viewport-tools, .viewport-msg') && visible(el),
+            );
+            const buttons = [...view.querySelectorAll('.viewport-tools button'), ...overlays].filter(visible);
+            const labels = [...view.querySelectorAll('.viewport-triad text')].filter(visible);
+            const stage = view.closest('[data-testid="scene-stage"]');
+            const stageButtons = stage ? [...stage.querySelectorAll(':scope > .stage-bar > button')] : [];
+            const fullscreen = document.querySelector('[data-testid="fullscreen"]');
+            if (fullscreen && !stageButtons.includes(fullscreen)) stageButtons.push(fullscreen);
+            const out: string[] = [];
+            const v = box(view);
+            buttons.forEach((a, i) => {
+              const r = box(a);
+              if (
+                r.left < v.left - 0.5 ||
+                r.right > v.right + 0.5 ||
+                r.top < v.top - 0.5 ||
+                r.bottom > v.bottom + 0.5
+              )
+                out.push(`${where}: "${name(a)}" reaches outside the view`);
+              for (const b of buttons.slice(i + 1))
+                if (meets(r, box(b))) out.push(`${where}: "${name(a)}" over "${name(b)}"`);
+              for (const l of labels)
+                if (meets(r, box(l))) out.push(`${where}: "${name(a)}" over the axis label "${name(l)}"`);
+              for (const b of stageButtons.filter(visible))
+                if (meets(r, box(b))) out.push(`${where}: "${name(a)}" over the stage's "${name(b)}"`);
+            });
+            return out;
+          }, where)),
+        );
+        if (present) {
+          const sizes = await vp!.locator('.viewport-triad').evaluate((svg) => {
+            const s = svg as SVGSVGElement;
+            // the text's font size in the drawing's units, times the drawing's scale on screen
+            const scale = s.getBoundingClientRect().width / s.viewBox.baseVal.width;
+            return [...s.querySelectorAll('text')].map((t) => ({
+              text: t.textContent,
+              computed: parseFloat(getComputedStyle(t).fontSize),
+              drawn: parseFloat(getComputedStyle(t).fontSize) * scale,
+            }));
+          });
+          expect(sizes.length).toBeGreaterThanOrEqual(3);
+          for (const z of sizes) {
+            expect(z.drawn, `${z.text} on screen`).toBeGreaterThanOrEqual(17.9);
+            expect(z.computed, `${z.text} font-size`).toBeGreaterThanOrEqual(17.9);
+          }
         }
-      expect(found).toEqual([]);
-    });
-
-    test(`${s.id}, present=1: the 3D view's axis labels are drawn at 18 px or more`, async ({ page }) => {
-      test.setTimeout(120_000);
-      await page.setViewportSize({ width: 1280, height: 720 });
-      const vp = await firstView(page, `#${s.path}?present=1`);
-      test.skip(vp === null, `${s.id} has no 3D view`);
-      const sizes = await vp!.locator('.viewport-triad').evaluate((svg) => {
-        const s = svg as SVGSVGElement;
-        // the text's font size in the drawing's units, times the drawing's scale on screen
-        const scale = s.getBoundingClientRect().width / s.viewBox.baseVal.width;
-        return [...s.querySelectorAll('text')].map((t) => ({
-          text: t.textContent,
-          computed: parseFloat(getComputedStyle(t).fontSize),
-          drawn: parseFloat(getComputedStyle(t).fontSize) * scale,
-        }));
-      });
-      expect(sizes.length).toBeGreaterThanOrEqual(3);
-      for (const z of sizes) {
-        expect(z.drawn, `${z.text} on screen`).toBeGreaterThanOrEqual(17.9);
-        expect(z.computed, `${z.text} font-size`).toBeGreaterThanOrEqual(17.9);
       }
+      expect(found).toEqual([]);
     });
   }
 
