@@ -111,3 +111,12 @@ export function formatNumber(x: number, digits = 6): string {
 export function formatPlain(x: number, digits = 6): string {
   return Number.isInteger(x) ? String(x) : formatSignificant(x, digits, 'e');
 }
+
+/**
+ * Short text of a number for labels inside figures: x rounded to `digits` significant digits and
+ * written as JavaScript writes that rounded number ("17.8", "12350", "0.00001", "1e-7"), so no
+ * trailing zeros and no exponent for ordinary sizes; "—" when not finite.
+ */
+export function formatRounded(x: number, digits = 4): string {
+  return Number.isFinite(x) ? String(Number(x.toPrecision(digits))) : '—';
+}
