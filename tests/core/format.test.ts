@@ -25,9 +25,13 @@ describe('formatRounded', () => {
 
   it('reads back as the number rounded to its digits', () => {
     fc.assert(
-      fc.property(fc.double({ noNaN: true, noDefaultInfinity: true }), fc.integer({ min: 1, max: 12 }), (x, d) => {
-        expect(Number(formatRounded(x, d))).toBe(Number(x.toPrecision(d)) + 0);
-      }),
+      fc.property(
+        fc.double({ noNaN: true, noDefaultInfinity: true }),
+        fc.integer({ min: 1, max: 12 }),
+        (x, d) => {
+          expect(Number(formatRounded(x, d))).toBe(Number(x.toPrecision(d)) + 0);
+        },
+      ),
       { seed: 7 },
     );
   });
