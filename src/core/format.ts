@@ -120,3 +120,12 @@ export function formatFixed(x: number, decimals: number): string {
   const s = x.toFixed(decimals);
   return /^-0(\.0*)?$/.test(s) ? s.slice(1) : s;
 }
+
+/**
+ * Short text of a number for labels inside figures: x rounded to `digits` significant digits and
+ * written as JavaScript writes that rounded number ("17.8", "12350", "0.00001", "1e-7"), so no
+ * trailing zeros and no exponent for ordinary sizes; "—" when not finite.
+ */
+export function formatRounded(x: number, digits = 4): string {
+  return Number.isFinite(x) ? String(Number(x.toPrecision(digits))) : '—';
+}

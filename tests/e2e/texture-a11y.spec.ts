@@ -7,7 +7,7 @@
  */
 import type { CDPSession, Page } from '@playwright/test';
 import { test, expect, openScene, waitForReadout } from './fixtures';
-import { frameAt, pathOf } from '../../src/scenes/texture/model';
+import { frameAt, pathOf } from '../../src/scenes/texture/path';
 import { checkerGrid, examGrid, type LookupOptions } from '../../src/core/texture';
 import { coord, short } from '../../src/scenes/texture/view/describe';
 

@@ -6,7 +6,8 @@
  */
 import type { Page } from '@playwright/test';
 import { test, expect, openScene, readout, waitForReadout } from './fixtures';
-import { frameAt, pathOf, pathProfile, type QueryPath } from '../../src/scenes/texture/model';
+import { frameAt, pathOf, type QueryPath } from '../../src/scenes/texture/path';
+import { pathProfile } from '../../src/scenes/texture/pathProfile';
 import { checkerGrid, examGrid, type LookupOptions } from '../../src/core/texture';
 
 const L = (u: number, v: number) => 21 + 4 * u - 20 * v;

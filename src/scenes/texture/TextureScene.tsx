@@ -20,15 +20,9 @@ import {
   Revealed,
   SceneLayout,
 } from '../../ui';
-import {
-  gridTextIfFits,
-  lookupOptions,
-  pathOf,
-  resolveGrid,
-  sphereModel,
-  withCell,
-  type QueryPath,
-} from './model';
+import { gridTextIfFits, lookupOptions, resolveGrid, withCell } from './model';
+import { pathOf, type QueryPath } from './path';
+import { sphereModel } from './sphere';
 import { GRID_TEXT_MAX, type TextureSchema } from './params';
 import { DURATION, RENDER_HZ, STEP, animContext, formatT } from './view/anim';
 import { AnimGrid, AnimPathPlot, AnimSide, DescribedMain } from './view/animated';
@@ -229,11 +223,11 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
   const stage = mode.present ? described(<StageFigure p={pieces} figRef={figRef} />) : undefined;
   const figure = (
     <Panel className="tx-figure">
-      {src.error ? (
-        <Notice kind="warn" testId="grid-error">
-          <strong>grid</strong>: {src.error} Using the exam’s 5 × 5 grid instead.
+      {src.problems.map((p) => (
+        <Notice key={p.name} kind="warn" testId="grid-error">
+          <strong>{p.name}</strong>: {p.message} Using the exam’s 5 × 5 grid instead.
         </Notice>
-      ) : null}
+      ))}
       {mode.present ? <StageRest p={pieces} /> : described(<PageFigure p={pieces} figRef={figRef} />)}
     </Panel>
   );

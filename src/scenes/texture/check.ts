@@ -1,6 +1,7 @@
 /**
- * The values this scene would not use as given (SceneModule.checkValues): a `grid` text that
- * resolveGrid, the code the scene runs, cannot read (the scene then shows the exam's grid).
+ * The values this scene would not use as given (SceneModule.checkValues): the problems resolveGrid,
+ * the code the scene runs, reports (a `grid` text it cannot read; the scene then shows the exam's
+ * grid), each with what the scene does instead.
  */
 import type { ParamProblem } from '../../kit/params';
 import { resolveGrid } from './model';
@@ -10,6 +11,8 @@ import type { TextureSchema } from './params';
 type TextureParams = ParamValues<TextureSchema>;
 
 export function checkValues(params: TextureParams): ParamProblem[] {
-  const src = resolveGrid(params);
-  return src.error ? [{ name: 'grid', message: `${src.error} (the scene would use the exam’s grid)` }] : [];
+  return resolveGrid(params).problems.map(({ name, message }) => ({
+    name,
+    message: `${message} (the scene would use the exam’s grid)`,
+  }));
 }

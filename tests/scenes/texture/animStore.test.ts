@@ -10,7 +10,8 @@ import {
   createAnimationStore as createTimelineStore,
   heldPosition as workedPosition,
 } from '../../../src/ui/animation';
-import { drawnLookup, frameAt, lookupOptions, pathOf, resolveGrid } from '../../../src/scenes/texture/model';
+import { drawnLookup, lookupOptions, resolveGrid } from '../../../src/scenes/texture/model';
+import { frameAt, pathOf } from '../../../src/scenes/texture/path';
 import type { Timeline } from '../../../src/ui';
 
 const tl = (t: number, playing: boolean) => ({ t, playing }) as Timeline;

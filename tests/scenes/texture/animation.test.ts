@@ -6,17 +6,10 @@ import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { parseParams } from '../../../src/kit/params';
 import { schema } from '../../../src/scenes/texture/params';
-import {
-  creases,
-  frameAt,
-  lookupAt,
-  lookupOptions,
-  pathOf,
-  pathPoint,
-  pathProfile,
-  resolveGrid,
-  type QueryPath,
-} from '../../../src/scenes/texture/model';
+import { creases } from '../../../src/scenes/texture/creases';
+import { frameAt, pathOf, pathPoint, type QueryPath } from '../../../src/scenes/texture/path';
+import { lookupAt, lookupOptions, resolveGrid } from '../../../src/scenes/texture/model';
+import { pathProfile } from '../../../src/scenes/texture/pathProfile';
 import {
   bilinear,
   checkerGrid,

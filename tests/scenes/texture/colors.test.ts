@@ -10,6 +10,7 @@ import { contrast, cssVars, deltaE2000, parseHex } from '../../ui/colorVision';
 
 const ui = readFileSync('src/ui/theme.css', 'utf8');
 const scene = readFileSync('src/scenes/texture/texture.css', 'utf8');
+const stencil = readFileSync('src/scenes/texture/view/StencilDetail.css', 'utf8');
 const LIGHT_UI = cssVars(ui, ':root');
 const DARK_UI = { ...LIGHT_UI, ...cssVars(ui, ":root[data-theme='dark']") };
 const LIGHT = cssVars(scene, '.scene-texture');
@@ -38,7 +39,7 @@ describe.each([
 });
 
 it('the magnified cell and the tap list use the page tones', () => {
-  const row = cssVars(scene, '.tx-closeup-row');
+  const row = cssVars(stencil, '.tx-closeup-row');
   for (const k of ['00', '10', '01', '11']) expect(row[`--tx-w${k}`]).toBe(`var(--tx-page-w${k})`);
 });
 

@@ -4,14 +4,10 @@
  */
 import { describe, expect, it } from 'vitest';
 import { checkerGrid, examGrid } from '../../../src/core/texture';
-import {
-  addressingNotes,
-  frameAt,
-  lookupOptions,
-  pathOf,
-  pathProfile,
-  sphereModel,
-} from '../../../src/scenes/texture/model';
+import { addressingNotes, lookupOptions } from '../../../src/scenes/texture/model';
+import { frameAt, pathOf } from '../../../src/scenes/texture/path';
+import { pathProfile } from '../../../src/scenes/texture/pathProfile';
+import { sphereModel } from '../../../src/scenes/texture/sphere';
 import {
   coord,
   describeLookup,

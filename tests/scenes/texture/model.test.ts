@@ -4,20 +4,22 @@ import { parseParams, defaultValues } from '../../../src/kit/params';
 import { schema } from '../../../src/scenes/texture/params';
 import {
   KEY_PRINTED,
-  addressingNotes,
-  drawnLookup,
   agreesWithKey,
-  gridTextIfFits,
   isExamQuery,
   isExamSphere,
+  readouts,
+} from '../../../src/scenes/texture/readouts';
+import {
+  addressingNotes,
+  drawnLookup,
+  gridTextIfFits,
   lookupAt,
   lookupOptions,
-  readouts,
   resolveGrid,
-  sphereModel,
-  textureImage,
   withCell,
 } from '../../../src/scenes/texture/model';
+import { sphereModel } from '../../../src/scenes/texture/sphere';
+import { textureImage } from '../../../src/scenes/texture/textureImage';
 import {
   EXAM_GRID_TEXT,
   WRAP_MODES,
@@ -69,10 +71,11 @@ describe('texture scene model', () => {
 
   it('a bad grid falls back to the exam grid with a message; a sphere point at the origin gives no sphere readouts', () => {
     const bad = modelOf('grid=1,2;3');
-    expect(bad.src.error).toMatch(/ragged/);
+    expect(bad.src.problems).toEqual([{ name: 'grid', message: expect.stringMatching(/ragged/) }]);
     expect(bad.src.isExam).toBe(true);
     expect(bad.ro.nearest).toBe(18);
-    expect(modelOf('grid=1,x;3,4').src.error).toMatch(/not a number/);
+    expect(modelOf('grid=1,x;3,4').src.problems[0]?.message).toMatch(/not a number/);
+    expect(modelOf('').src.problems).toEqual([]);
     const o = modelOf('x=0&y=0&z=0');
     expect(o.sphere.ok).toBe(false);
     expect([o.ro.sphereU, o.ro.sphereV, o.ro.sphereBilinear]).toEqual([null, null, null]);

@@ -5,14 +5,8 @@
  */
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import {
-  pathPoint,
-  pathPointInto,
-  pathProfile,
-  type CellBorder,
-  type PathProfile,
-  type QueryPath,
-} from '../../../src/scenes/texture/model';
+import { pathPoint, pathPointInto, type QueryPath } from '../../../src/scenes/texture/path';
+import { pathProfile, type CellBorder, type PathProfile } from '../../../src/scenes/texture/pathProfile';
 import {
   WRAP_MODES,
   bilinear,

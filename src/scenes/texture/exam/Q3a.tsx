@@ -1,8 +1,9 @@
 /** Q3(a): nearest-neighbour lookup at the query, with the key's steps and the flipped-v convention. */
 import { useMemo } from 'react';
 import { Readout } from '../../../ui';
-import { KEY_PRINTED, lookupAt } from '../model';
-import { fmtShort } from '../view/GridView';
+import { KEY_PRINTED } from '../readouts';
+import { lookupAt } from '../model';
+import { formatRounded } from '../../../core/format';
 import { NearestWorked, nearestBlock } from '../view/WorkedSteps';
 import { answerOf, isExamShown, queryPart, shownPoint, type PartBody } from './shared';
 
@@ -17,7 +18,11 @@ const Answer = answerOf(
   (q) => q.near.value,
   KEY_PRINTED.nearest,
   (q) => (
-    <Readout id="query-uv" label="(u, v) as used" value={`(${fmtShort(q.bil.u)}, ${fmtShort(q.bil.v)})`} />
+    <Readout
+      id="query-uv"
+      label="(u, v) as used"
+      value={`(${formatRounded(q.bil.u)}, ${formatRounded(q.bil.v)})`}
+    />
   ),
 );
 
@@ -41,8 +46,9 @@ const Note: PartBody = ({ shown }) => {
       {exam
         ? 'With the flip applied here'
         : `At the point shown, ${shownPoint(shown)}, with the flip ${opts.vflip ? 'undone' : 'applied'}`}
-      , nearest gives {fmtShort(flipped.near.value)} (the node at ({fmtShort(flipped.near.nodeU)},{' '}
-      {fmtShort(flipped.near.nodeV)}) of the flipped frame) and bilinear {fmtShort(flipped.bil.value)}.
+      , nearest gives {formatRounded(flipped.near.value)} (the node at ({formatRounded(flipped.near.nodeU)},{' '}
+      {formatRounded(flipped.near.nodeV)}) of the flipped frame) and bilinear{' '}
+      {formatRounded(flipped.bil.value)}.
     </>
   );
 };

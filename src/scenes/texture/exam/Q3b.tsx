@@ -1,6 +1,6 @@
 /** Q3(b): bilinear interpolation at the query, in the key's form, and what dropping the cell size does. */
-import { KEY_PRINTED, agreesWithKey } from '../model';
-import { fmtShort } from '../view/GridView';
+import { KEY_PRINTED, agreesWithKey } from '../readouts';
+import { formatRounded } from '../../../core/format';
 import { BilinearWorked, bilinearBlock } from '../view/WorkedSteps';
 import { answerOf, isExamShown, queryPart, shownPoint, type PartBody } from './shared';
 
@@ -32,13 +32,13 @@ const Note: PartBody = ({ shown }) => {
     <>
       the key deducts 2.5 marks when the division by the cell size (0.25 on the exam’s grid) is missing.
       Without it each step is scaled by Δ{exam ? '' : ` (at the point shown, ${shownPoint(shown)})`}: {cu}{' '}
-      would be {fmtShort(q.steps.cu * q.bil.du)}, {cl} {fmtShort(q.steps.cl * q.bil.du)} and c{' '}
-      {fmtShort(q.steps.c * q.bil.du * q.bil.dv)}
+      would be {formatRounded(q.steps.cu * q.bil.du)}, {cl} {formatRounded(q.steps.cl * q.bil.du)} and c{' '}
+      {formatRounded(q.steps.c * q.bil.du * q.bil.dv)}
       {exam ? (
         <>
-          ; with the divisions the computed {cu}, {cl} and c ({fmtShort(q.steps.cu)}, {fmtShort(q.steps.cl)},{' '}
-          {fmtShort(q.steps.c)}) {agrees ? 'agree with' : 'differ from'} the key’s printed{' '}
-          {KEY_PRINTED.cu.value}, {KEY_PRINTED.cl.value} and {KEY_PRINTED.bilinear.value}
+          ; with the divisions the computed {cu}, {cl} and c ({formatRounded(q.steps.cu)},{' '}
+          {formatRounded(q.steps.cl)}, {formatRounded(q.steps.c)}) {agrees ? 'agree with' : 'differ from'} the
+          key’s printed {KEY_PRINTED.cu.value}, {KEY_PRINTED.cl.value} and {KEY_PRINTED.bilinear.value}
         </>
       ) : null}
       .

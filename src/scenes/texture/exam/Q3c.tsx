@@ -19,24 +19,16 @@ import {
   Slider,
   Toggle,
 } from '../../../ui';
-import {
-  KEY_PRINTED,
-  agreesWithKey,
-  isExamSphere,
-  pointAtAngles,
-  round4,
-  sphereAnglesDeg,
-  sphereReadouts,
-  type GridSource,
-  type ShownTexture,
-  type SphereModel,
-} from '../model';
+import { KEY_PRINTED, agreesWithKey, isExamSphere, sphereReadouts } from '../readouts';
+import { pointAtAngles, round4, sphereAnglesDeg, type SphereModel } from '../sphere';
+import type { GridSource, ShownTexture } from '../model';
 import type { TextureSchema } from '../params';
-import { fmtShort } from '../view/GridView';
+import { formatRounded } from '../../../core/format';
 import { describeSphere } from '../view/describe';
 import { SphereView } from '../view/SphereView';
 import { SphereBilinear, WideMath, aligned, sphereTex } from '../view/WorkedSteps';
 import { keyNote, texPlain } from './shared';
+import './Q3c.css';
 
 type Props = Pick<SceneProps<TextureSchema>, 'params' | 'setParams'> &
   ShownTexture & {
@@ -241,10 +233,10 @@ function SphereCompare({ sphere }: { sphere: Extract<SphereModel, { ok: true }> 
           <tr>
             <th>(u, v) as used</th>
             <td>
-              ({fmtShort(a.bil.u)}, {fmtShort(a.bil.v)})
+              ({formatRounded(a.bil.u)}, {formatRounded(a.bil.v)})
             </td>
             <td>
-              ({fmtShort(b.bil.u)}, {fmtShort(b.bil.v)})
+              ({formatRounded(b.bil.u)}, {formatRounded(b.bil.v)})
             </td>
           </tr>
           <tr>

@@ -18,9 +18,12 @@ import {
   usePlaying,
   useStillT,
 } from '../../../ui';
-import { agreesWithKey, isExamQuery, type Frame, type Lookup } from '../model';
+import { agreesWithKey, isExamQuery } from '../readouts';
+import type { Frame } from '../path';
+import type { Lookup } from '../model';
 import type { AnimContext } from '../view/anim';
-import { fmtShort } from '../view/GridView';
+import { formatRounded } from '../../../core/format';
+import './shared.css';
 
 /** What a part about the query shows: the position, and the context it was computed in. */
 export interface Shown {
@@ -94,12 +97,12 @@ export const isExamShown = ({ ctx, frame }: Shown) => isExamQuery(ctx.src, ctx.o
 
 /** "(u, v) = (0.52, 0.39) at t = 0.3": the shown point, named so it is not taken for the exam's. */
 export function shownPoint({ frame }: Shown): string {
-  return `(u, v) = (${fmtShort(frame.u)}, ${fmtShort(frame.v)})${frame.t !== 0 ? ` at t = ${fmtShort(frame.t)}` : ''}`;
+  return `(u, v) = (${formatRounded(frame.u)}, ${formatRounded(frame.v)})${frame.t !== 0 ? ` at t = ${formatRounded(frame.t)}` : ''}`;
 }
 
 /** A number shown plainly: six significant digits, or a dash when it is not finite. */
 export function texPlain(x: number): string {
-  return Number.isFinite(x) ? String(Number(x.toPrecision(6))) : '—';
+  return formatRounded(x, 6);
 }
 
 /** Whether a computed value agrees with the key's printed one, in words. */

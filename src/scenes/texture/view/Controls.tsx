@@ -6,6 +6,7 @@ import { Panel, Select } from '../../../ui';
 import { bindControls } from '../../../ui/paramControls';
 import { gridTextIfFits } from '../model';
 import { GRID_TEXT_MAX, schema, type Preset, type TextureSchema } from '../params';
+import './Controls.css';
 
 type PresetChoice = 'exam' | 'custom' | Exclude<Preset, 'grid'>;
 

@@ -5,10 +5,12 @@
 import { useMemo, useRef, type ComponentProps } from 'react';
 import { Panel, useAnimFrame, useStillT } from '../../../ui';
 import type { LookupOptions } from '../../../core/texture';
-import { creases, type SphereModel } from '../model';
+import { creases } from '../creases';
+import type { SphereModel } from '../sphere';
 import type { AnimContext } from './anim';
 import { Reconstruction } from './Reconstruction';
 import { SphereBilinear } from './WorkedSteps';
+import './Explore.css';
 
 type Range = { min: number; max: number };
 

@@ -7,7 +7,8 @@ import { gridTableColumns, gridTableRows } from './describe';
 import type { TextureSchema } from '../params';
 import { colorCss } from '../../../core/colormap';
 import type { AnimContext } from './anim';
-import { fmtShort } from './GridView';
+import { formatRounded } from '../../../core/format';
+import './FigureParts.css';
 
 type Params = SceneProps<TextureSchema>['params'];
 type SetParams = SceneProps<TextureSchema>['setParams'];
@@ -83,9 +84,9 @@ export const Legend = memo(function Legend({ range }: { range: { min: number; ma
   const stops = Array.from({ length: 11 }, (_, k) => colorCss(k / 10)).join(', ');
   return (
     <div className="tx-legend" aria-hidden="true">
-      <span>{fmtShort(range.min)}</span>
+      <span>{formatRounded(range.min)}</span>
       <span className="tx-legend-bar" style={{ background: `linear-gradient(to right, ${stops})` }} />
-      <span>{fmtShort(range.max)}</span>
+      <span>{formatRounded(range.max)}</span>
     </div>
   );
 });

@@ -5,6 +5,7 @@
  * first screen) with the rest in the panel below it.
  */
 import type { ReactNode, RefObject } from 'react';
+import './Layout.css';
 
 export interface FigurePieces {
   /** The exam's data (its text and its grid). */

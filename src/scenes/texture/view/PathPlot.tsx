@@ -10,9 +10,10 @@ import { memo, useMemo, useRef, type ReactNode } from 'react';
 import { DescribedFigure } from '../../../ui';
 import { useWidth } from '../../../ui/useWidth';
 import { niceTicks } from '../../../ui/axis';
-import type { PathProfile } from '../model';
+import type { PathProfile } from '../pathProfile';
 import { linearScale } from '../../../ui/chartScale';
-import { fmtShort } from './GridView';
+import { formatRounded } from '../../../core/format';
+import './PathPlot.css';
 
 const M = { l: 46, r: 12, t: 10, b: 34 };
 
@@ -58,7 +59,7 @@ const Curves = memo(function Curves({ profile, s }: { profile: PathProfile; s: S
         <g key={y}>
           <line x1={M.l - 4} x2={M.l} y1={Y(s, y)} y2={Y(s, y)} className="tx-plot-axis" />
           <text x={M.l - 6} y={Y(s, y) + 4} textAnchor="end" className="tx-plot-text">
-            {fmtShort(y)}
+            {formatRounded(y)}
           </text>
         </g>
       ))}

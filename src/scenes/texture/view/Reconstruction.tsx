@@ -4,9 +4,13 @@
  */
 import { memo, useEffect, useRef } from 'react';
 import type { Filter } from '../../../core/texture';
-import { textureImage, type Crease, type ShownTexture } from '../model';
+import { textureImage } from '../textureImage';
+import type { Crease } from '../creases';
+import type { ShownTexture } from '../model';
 import { useSeenOnce } from '../../../ui';
 import { describeReconstruction } from './describe';
+import './marks.css';
+import './Reconstruction.css';
 
 const RES = 256;
 
@@ -32,7 +36,7 @@ const FilterCanvas = memo(function FilterCanvas({
       ref={ref}
       width={RES}
       height={RES}
-      className="tx-recon-canvas"
+      className={`tx-recon-canvas ${filter}`}
       data-testid={`recon-${filter}`}
       aria-hidden="true"
     />

@@ -8,7 +8,9 @@ import { useEffect, useRef } from 'react';
 import type * as THREE from 'three';
 import { Viewport, type ViewportContext } from '../../../three';
 import { nodeCoord, type LookupOptions, type TextureGrid } from '../../../core/texture';
-import { textureImage, type ShownTexture } from '../model';
+import { textureImage } from '../textureImage';
+import type { ShownTexture } from '../model';
+import './SphereView.css';
 
 const TW = 256;
 const TH = 128;

@@ -5,19 +5,13 @@ import { memo, useLayoutEffect, useRef } from 'react';
 import { MathTex } from '../../../ui';
 import type { LookupOptions, TextureGrid } from '../../../core/texture';
 import type { Lookup } from '../model';
+import { formatSignificant } from '../../../core/format';
+import './WorkedSteps.css';
 
 /** A number for TeX: 6 significant digits, trailing zeros trimmed, scientific form for tiny values. */
 export function texNum(x: number, digits = 6): string {
   if (!Number.isFinite(x)) return '\\text{—}';
-  if (x === 0) return '0';
-  const ax = Math.abs(x);
-  if (ax >= 1e-4 && ax < 1e9) {
-    const s = x.toPrecision(digits);
-    return s.includes('e') ? s : s.includes('.') ? s.replace(/\.?0+$/, '') : s;
-  }
-  const [m, e] = x.toExponential(digits - 1).split('e');
-  const mt = m.includes('.') ? m.replace(/\.?0+$/, '') : m;
-  return `${mt}\\times 10^{${Number(e)}}`;
+  return formatSignificant(x, digits, 'e').replace(/e(-?\d+)$/, '\\times 10^{$1}');
 }
 
 /** A factor in a product: negatives in parentheses. */

@@ -12,7 +12,8 @@
  * change in one render (../exam/shared: useShownFrame).
  */
 import { lastValue, type AnimationStore } from '../../../ui';
-import { drawnLookup, frameAt, type Frame, type GridSource, type Lookup, type QueryPath } from '../model';
+import { drawnLookup, type GridSource, type Lookup } from '../model';
+import { frameAt, type Frame, type QueryPath } from '../path';
 import type { LookupOptions, TextureGrid } from '../../../core/texture';
 
 /** Seconds for one pass along the path at 1×. */

@@ -23,10 +23,14 @@ import {
   usePlaying,
   useStillT,
 } from '../../../ui';
-import { addressingNotes, pathProfile, type Lookup, type SphereModel } from '../model';
+import { addressingNotes, type Lookup } from '../model';
+import { pathProfile } from '../pathProfile';
+import type { SphereModel } from '../sphere';
 import type { Preset } from '../params';
 import type { AnimContext } from './anim';
-import { GridView, StencilDetail, fmtShort } from './GridView';
+import { GridView } from './GridView';
+import { StencilDetail } from './StencilDetail';
+import { formatRounded } from '../../../core/format';
 import {
   describePathNow,
   describePathStructure,
@@ -40,6 +44,7 @@ import {
   textureName,
 } from './describe';
 import { PathPlot } from './PathPlot';
+import './animated.css';
 
 /** The grid figure with the query at position t (the grid's layers are memoized inside). */
 export function AnimGrid({
@@ -168,11 +173,11 @@ export function AnimSide({ ctx }: { ctx: AnimContext }) {
     if (!p || !text) return;
     const l = f.frame.lookup;
     const parts = [
-      x === 0 ? '' : ` at t = ${fmtShort(x)} on its path`,
-      fmtShort(f.frame.u),
-      fmtShort(f.frame.v),
-      fmtShort(l.near.value),
-      fmtShort(l.bil.value),
+      x === 0 ? '' : ` at t = ${formatRounded(x)} on its path`,
+      formatRounded(f.frame.u),
+      formatRounded(f.frame.v),
+      formatRounded(l.near.value),
+      formatRounded(l.bil.value),
     ];
     for (let k = 0; k < parts.length; k++) {
       const el = p.children[k];

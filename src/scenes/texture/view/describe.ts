@@ -4,20 +4,17 @@
  * Coordinates are written with at least two decimals ("u 0.40"), values as the figure's labels
  * (four significant digits).
  */
+import { formatRounded } from '../../../core/format';
 import { nodeCoord, type LookupOptions, type TextureGrid } from '../../../core/texture';
-import {
-  frameAt,
-  type Frame,
-  type Lookup,
-  type PathProfile,
-  type QueryPath,
-  type SphereModel,
-} from '../model';
+import { frameAt, type Frame, type QueryPath } from '../path';
+import type { Lookup } from '../model';
+import type { PathProfile } from '../pathProfile';
+import type { SphereModel } from '../sphere';
 import type { Preset } from '../params';
 
 /** Up to four significant digits (as the figure's labels). */
 export function short(x: number): string {
-  return Number.isFinite(x) ? String(Number(x.toPrecision(4))) : 'undefined';
+  return Number.isFinite(x) ? formatRounded(x, 4) : 'undefined';
 }
 
 /** A coordinate: two decimals at least ("0.40"), up to four where it has them; −0 is 0. */
