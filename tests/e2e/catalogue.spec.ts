@@ -144,7 +144,7 @@ for (const s of SCENES) {
 
     for (const theme of ['light', 'dark'] as const) {
       test(`axe (WCAG 2.2 AA), ${theme} theme: clean at 1280 and at 375 px`, async ({ page }) => {
-        test.setTimeout(300_000);
+        test.setTimeout(480_000);
         const found: string[] = [];
         // one load per theme: the page is scanned wide, then narrowed to a phone's width (its
         // layout follows the viewport, as on a rotated tablet) and scanned again
