@@ -1,143 +1,57 @@
 /**
- * Browser tests of #/area-light: for several placements of the light the chosen estimator agrees
- * with the analytic reference within 3σ (read from data-value), and the solid angle matches a
- * closed form computed here (the corner formula by inclusion–exclusion in the light's own frame,
- * independent of the app's Van Oosterom–Strackee code); bad input gives a message and a fallback.
+ * Browser tests of #/area-light: the readouts are the scene's model (computed here in Node from the
+ * same query), bad input gives a message and a fallback, the exam's parts come first, and the
+ * animation's readouts follow the timeline. The estimators' and the solid angle's numbers are unit
+ * tests (tests/scenes/area-light/cases.test.ts, tests/core/lights/).
  */
-import AxeBuilder from '@axe-core/playwright';
-import { test, expect, openScene, readout, readoutNumber, countAnimationFrames } from './fixtures';
+import { test, expect, openScene, readout, readoutNumber } from './fixtures';
 import { defaultValues, parseParams } from '../../src/kit/params';
 import { schema } from '../../src/scenes/area-light/params';
 import {
   animationFrame,
   animationLength,
   buildModel,
+  estimateOne,
   givenSamples,
   patchModel,
   sampleRun,
 } from '../../src/scenes/area-light/model';
 import type { LightStrategy } from '../../src/core/lights';
 
-type V3 = [number, number, number];
-
-/**
- * Solid angle of a w × h rectangle (centre c, tilt t degrees about its x axis; frame as in the
- * contract: ex = (1,0,0), ey = (0,cos t, sin t), n = (0, sin t, −cos t)) seen from p:
- * Ω = |F(x1,y1) − F(x0,y1) − F(x1,y0) + F(x0,y0)|, F(a,b) = atan(ab / (d √(a²+b²+d²))).
- */
-function closedFormOmega(p: V3, c: V3, w: number, h: number, tiltDeg: number): number {
-  const t = (tiltDeg * Math.PI) / 180;
-  const ex: V3 = [1, 0, 0],
-    ey: V3 = [0, Math.cos(t), Math.sin(t)],
-    n: V3 = [0, Math.sin(t), -Math.cos(t)];
-  const dot = (a: V3, b: V3) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  const rel: V3 = [c[0] - p[0], c[1] - p[1], c[2] - p[2]];
-  const d = Math.abs(dot(rel, n));
-  const cx = dot(rel, ex),
-    cy = dot(rel, ey);
-  const F = (a: number, b: number) => Math.atan((a * b) / (d * Math.sqrt(a * a + b * b + d * d)));
-  const x0 = cx - w / 2,
-    x1 = cx + w / 2,
-    y0 = cy - h / 2,
-    y1 = cy + h / 2;
-  return Math.abs(F(x1, y1) - F(x0, y1) - F(x1, y0) + F(x0, y0));
+/** The model computed here, in Node, from a query string (the same parser as the app). */
+function modelFor(query: string) {
+  const values = { ...defaultValues(schema), ...parseParams(schema, new URLSearchParams(query)).values };
+  return { values, model: buildModel(values) };
 }
 
-const placements: Array<{
-  name: string;
-  p: V3;
-  lc: V3;
-  ls: [number, number];
-  tilt: number;
-  strategy: string;
-  zero?: boolean;
-}> = [
-  { name: 'overhead', p: [0, 0, 0], lc: [0, 0, 2], ls: [1, 1], tilt: 0, strategy: 'area' },
-  {
-    name: 'off-axis, solid-angle sampling',
-    p: [0.2, -0.4, 0],
-    lc: [0.9, 0.3, 1.5],
-    ls: [1.2, 0.8],
-    tilt: 0,
-    strategy: 'solid-angle',
-  },
-  { name: 'tilted', p: [0, 0, 0], lc: [0, 1, 1.5], ls: [1.5, 1], tilt: -45, strategy: 'area' },
-  {
-    name: 'partly below the horizon',
-    p: [0, 0, 0],
-    lc: [0, 1, 0.2],
-    ls: [1, 1],
-    tilt: -90,
-    strategy: 'solid-angle',
-  },
-  {
-    name: 'near, cosine sampling',
-    p: [0.1, 0, 0],
-    lc: [0, 0, 0.25],
-    ls: [2, 2],
-    tilt: 0,
-    strategy: 'cosine',
-  },
-  { name: 'facing away', p: [0, 0, 0], lc: [0, 0, 2], ls: [1, 1], tilt: 180, strategy: 'area', zero: true },
-];
-
-for (const pl of placements) {
-  test(`${pl.name}: estimate within 3σ of the reference, Ω equals its closed form`, async ({ page }) => {
-    const q = `p=${pl.p.join(',')}&lc=${pl.lc.join(',')}&ls=${pl.ls.join(',')}&tilt=${pl.tilt}&strategy=${pl.strategy}&n=4096&seed=7`;
-    await openScene(page, `#/area-light?${q}`);
-    await expect(page.locator('[role=alert]')).toHaveCount(0);
-    const ref = await readoutNumber(page, 'reference');
-    const est = await readoutNumber(page, 'estimate');
-    const omega = await readoutNumber(page, 'solid-angle');
-    const expected = closedFormOmega(pl.p, pl.lc, pl.ls[0], pl.ls[1], pl.tilt);
-    expect(Math.abs(omega - expected) / expected).toBeLessThan(1e-12);
-    if (pl.zero) {
-      expect(ref).toBe(0);
-      expect(est).toBe(0);
-      await expect(page.getByText(/faces away/)).toBeVisible();
-    } else {
-      const se = await readoutNumber(page, 'stderr');
-      expect(ref).toBeGreaterThan(0);
-      expect(se).toBeGreaterThan(0);
-      expect(Math.abs(est - ref)).toBeLessThanOrEqual(3 * se);
-      // the other two strategies, shown in the table, agree as well
-      for (const s of ['area', 'solid-angle', 'cosine']) {
-        const e = await readoutNumber(page, `estimate-${s}`);
-        const es = await readoutNumber(page, `stderr-${s}`);
-        expect(Math.abs(e - ref), s).toBeLessThanOrEqual(3 * es);
-      }
-    }
-  });
-}
-
-test('a horizontal light also shows the aligned closed form, equal to Ω', async ({ page }) => {
-  // tilt=0: the light is parallel to the floor (the default light is tilted)
-  await openScene(page, '#/area-light?lc=0.7,-0.3,1.5&ls=1.2,0.8&tilt=0');
-  const a = await readoutNumber(page, 'solid-angle');
-  const b = await readoutNumber(page, 'solid-angle-closed');
-  expect(Math.abs(a - b) / a).toBeLessThan(1e-13);
-  expect(await readout(page, 'reference-occluded')).toBe('none');
-});
-
-test('the occluder lowers the estimate; the occluded reference is shown and matched', async ({ page }) => {
-  await openScene(page, '#/area-light?occluder=1&strategy=solid-angle&n=20000&seed=3');
-  const ref = await readoutNumber(page, 'reference');
-  const occ = await readoutNumber(page, 'reference-occluded');
-  const est = await readoutNumber(page, 'estimate');
-  const se = await readoutNumber(page, 'stderr');
-  expect(occ).toBeLessThan(ref);
-  expect(Math.abs(est - occ)).toBeLessThanOrEqual(3 * se);
+test('wiring: the readouts are the model’s for the exam’s light, an off-axis light and an occluded one', async ({
+  page,
+}) => {
+  // the placements' numbers themselves (Ω against the corner formula, every strategy within 3σ)
+  // are unit tests: tests/scenes/area-light/cases.test.ts
+  for (const q of [
+    '',
+    'p=0.2,-0.4,0&lc=0.9,0.3,1.5&ls=1.2,0.8&tilt=0&strategy=solid-angle&n=4096&seed=7',
+    'occluder=1&strategy=cosine&n=4096&seed=3',
+  ]) {
+    await openScene(page, `#/area-light${q ? `?${q}` : ''}`);
+    const { values, model } = modelFor(q);
+    expect(await readoutNumber(page, 'reference'), q).toBe(model.reference);
+    expect(await readoutNumber(page, 'solid-angle'), q).toBe(model.solidAngle);
+    const want = estimateOne(model, values.strategy as LightStrategy, values.n, values.seed);
+    expect(await readoutNumber(page, 'estimate'), q).toBe(want.estimate);
+    expect(await readoutNumber(page, 'stderr'), q).toBe(want.stderr);
+    if (model.referenceOccluded === null) expect(await readout(page, 'reference-occluded'), q).toBe('none');
+    else expect(await readoutNumber(page, 'reference-occluded'), q).toBe(model.referenceOccluded);
+  }
 });
 
 test('zero-size light: a clear message and the 1 × 1 fallback', async ({ page }) => {
   await openScene(page, '#/area-light?ls=0,0');
   await expect(page.getByRole('alert')).toContainText('no area');
   expect(await readoutNumber(page, 'reference')).toBeGreaterThan(0);
-  // the 1 × 1 fallback where the default light is
-  expect(await readoutNumber(page, 'solid-angle')).toBeCloseTo(
-    closedFormOmega([...schema.p.default], [...schema.lc.default], 1, 1, schema.tilt.default),
-    12,
-  );
+  // the 1 × 1 fallback (its Ω is a unit test): the page shows the model's
+  expect(await readoutNumber(page, 'solid-angle')).toBe(modelFor('ls=0,0').model.solidAngle);
 });
 
 test('shading point on the light: a clear message and a safe fallback', async ({ page }) => {
@@ -182,38 +96,6 @@ test('large n is estimated in a worker without blocking; the result agrees withi
   expect(Math.abs(est - ref)).toBeLessThanOrEqual(3 * se);
 });
 
-test('dark theme: no serious or critical axe violations (the highlighted KaTeX boxes keep dark text)', async ({
-  page,
-}) => {
-  test.setTimeout(240_000); // a full-page axe scan of a long page on a busy 2-core machine
-  await openScene(page, '#/area-light?theme=dark&occluder=1');
-  await page.waitForTimeout(2000);
-  const r = await new AxeBuilder({ page }).analyze();
-  const bad = r.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => v.id);
-  expect(bad).toEqual([]);
-});
-
-test('a tiny, distant light (10⁶ away): Ω matches A cos θ_l / r² (exact to O((size/d)²)) to 1e-11; estimates exact', async ({
-  page,
-}) => {
-  // tilt=0: the light parallel to the floor, so cos θₗ = d / r below
-  await openScene(page, '#/area-light?lc=3,-2,1000000&ls=1,0.5&tilt=0&strategy=solid-angle&n=512');
-  const omega = await readoutNumber(page, 'solid-angle');
-  // The corner formula's four terms cancel at this distance, so the check is the small-patch limit,
-  // whose own error is O((size/d)²) ≈ 1e-12.
-  const d = 1e6,
-    cx = 3,
-    cy = -2,
-    w = 1,
-    h = 0.5;
-  const r = Math.hypot(cx, cy, d);
-  const approx = (w * h * (d / r)) / (r * r);
-  expect(Math.abs(omega - approx) / approx).toBeLessThan(1e-11);
-  const ref = await readoutNumber(page, 'reference');
-  const est = await readoutNumber(page, 'estimate');
-  expect(Math.abs(est - ref) / ref).toBeLessThan(1e-9);
-});
-
 test('Q6(a): as the patch shrinks, dA cos θ_l / r² meets the exact solid angle', async ({ page }) => {
   await openScene(page, '#/area-light?psize=0.5&ptilt=30');
   const big = Math.abs(await readoutNumber(page, 'patch-rel-error'));
@@ -227,12 +109,6 @@ test('Q6(a): as the patch shrinks, dA cos θ_l / r² meets the exact solid angle
 
 // ------------------------------------------------------------------------------------------------
 // Exam first and the animation.
-
-/** The model computed here, in Node, from a query string (the same parser as the app). */
-function modelFor(query: string) {
-  const values = { ...defaultValues(schema), ...parseParams(schema, new URLSearchParams(query)).values };
-  return { values, model: buildModel(values) };
-}
 
 test('exam first: 6a, 6b, 6c in order before "Explore further", each with its derivation and live numbers', async ({
   page,
@@ -335,10 +211,8 @@ test('dark theme: the Q6(b) highlight boxes turn dark with light text', async ({
   expect(lum(boxBg)).toBeLessThan(110);
 });
 
-for (const [w, h] of [
-  [1920, 1080],
-  [1280, 720],
-] as const) {
+// the projector's common size (the stage's general checks run for every scene in catalogue.spec.ts)
+for (const [w, h] of [[1280, 720]] as const) {
   test(`present=1 at ${w}×${h}: the animation is on the first screen, and no plot's axis title is clipped`, async ({
     page,
   }) => {
@@ -433,28 +307,4 @@ test('animation: at the end the running estimate is the n-sample estimate; the f
   await openScene(page, '#/area-light?n=256&seed=4&strategy=area&t=64');
   await page.locator('.al-images').scrollIntoViewIfNeeded();
   await expect(page.getByTestId('floor-spp')).toHaveAttribute('data-value', '16', { timeout: 30000 });
-});
-
-test('reduced motion: play=1 in the link starts paused; and no animation frames are requested while paused', async ({
-  page,
-}) => {
-  await countAnimationFrames(page);
-  await page.emulateMedia({ reducedMotion: 'reduce' });
-  await openScene(page, '#/area-light?play=1&t=10&n=512');
-  const tl = page.getByTestId('timeline');
-  await expect(tl).toHaveAttribute('data-playing', '0');
-  await expect(page.getByTestId('anim-k')).toHaveAttribute('data-value', '10');
-  // let the 3D view and plots settle, then count frames over a quiet second
-  await page.waitForLoadState('networkidle');
-  await expect
-    .poll(
-      async () => {
-        const a = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
-        await page.waitForTimeout(1000);
-        const b = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
-        return b - a;
-      },
-      { timeout: 30000 },
-    )
-    .toBe(0);
 });

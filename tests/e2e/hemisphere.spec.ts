@@ -5,9 +5,7 @@
  * directly. Nothing is copied from the answer key.
  */
 import type { Page } from '@playwright/test';
-import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
-import { slowdown } from './longTasks';
 import { computeDrawStats, lobeFromParams } from '../../src/scenes/hemisphere/model';
 import { examLobeK } from '../../src/core/sampling';
 import type { LobeId } from '../../src/scenes/hemisphere/params';
@@ -48,37 +46,26 @@ async function expectMatchesCore(
 }
 
 test.describe('Q1: the exam lobe', () => {
-  test('defaults: k = 2/(e^{2π} − 1), χ² accepts, readouts equal the core', async ({ page }) => {
+  test('wiring: k, χ² and the estimates on the page equal the core for the exam, Phong and a typed lobe', async ({
+    page,
+  }) => {
     await openScene(page, '#/hemisphere');
     await statsReady(page);
-    const k = Number(await readout(page, 'k'));
-    expect(k).toBe(examLobeK());
-    expect(rel(k, 2 / (Math.exp(2 * Math.PI) - 1))).toBeLessThan(1e-15);
+    // the exam's answer (a): k = 2/(e^{2π} − 1)
+    expect(Number(await readout(page, 'k'))).toBe(examLobeK());
     const core = await expectMatchesCore(page, 'exam', 20000, 1);
     expect(core.chi2!.pass).toBe(true);
-    expect(rel(core.exact, Math.PI)).toBeLessThan(1e-12);
     await expect(page.getByTestId('chi2-verdict')).toContainText('Accepted');
     await expect(page.getByTestId('derivation')).toContainText('Normalize');
-  });
 
-  for (const [lobe, k] of [
-    ['uniform', 1 / (2 * Math.PI)],
-    ['cosine', 1 / Math.PI],
-    ['phong', 9 / (2 * Math.PI)],
-  ] as const) {
-    test(`lobe=${lobe}: k and every readout equal the core`, async ({ page }) => {
-      await openScene(page, `#/hemisphere?lobe=${lobe}&n=5000&seed=7`);
-      await statsReady(page);
-      expect(Number(await readout(page, 'k'))).toBeCloseTo(k, 15);
-      const core = await expectMatchesCore(page, lobe, 5000, 7);
-      expect(core.chi2!.pass).toBe(true);
-    });
-  }
-
-  test('the cosine lobe estimates ∫ cos θ dω with zero variance', async ({ page }) => {
-    await openScene(page, '#/hemisphere?lobe=cosine&n=1000');
+    await openScene(page, '#/hemisphere?lobe=phong&n=5000&seed=7');
     await statsReady(page);
-    expect(rel(await readoutNumber(page, 'mc-importance'), Math.PI)).toBeLessThan(1e-12);
+    await expectMatchesCore(page, 'phong', 5000, 7);
+
+    await openScene(page, '#/hemisphere?lobe=custom&pdf=cos(theta)&n=4000&seed=3');
+    await statsReady(page);
+    await expectMatchesCore(page, 'custom', 4000, 3, 8, (t) => Math.cos(t));
+    await expect(page.getByTestId('derivation')).toContainText('Numerical steps');
   });
 
   test('changing the lobe in the UI updates the URL and the readouts', async ({ page }) => {
@@ -112,18 +99,6 @@ test.describe("the key's inverted Jacobian", () => {
 });
 
 test.describe('typed densities', () => {
-  test('lobe=custom with cos(theta): k ≈ 1/π and the readouts equal the core tabulation', async ({
-    page,
-  }) => {
-    await openScene(page, '#/hemisphere?lobe=custom&pdf=cos(theta)&n=4000&seed=3');
-    await statsReady(page);
-    const k = await readoutNumber(page, 'k');
-    expect(Math.abs(k * Math.PI - 1)).toBeLessThan(1e-3);
-    const core = await expectMatchesCore(page, 'custom', 4000, 3, 8, (t) => Math.cos(t));
-    expect(core.chi2!.pass).toBe(true);
-    await expect(page.getByTestId('derivation')).toContainText('Numerical steps');
-  });
-
   test('typing a density in the field samples it', async ({ page }) => {
     await openScene(page, '#/hemisphere?lobe=custom&n=3000');
     await statsReady(page);
@@ -174,28 +149,6 @@ test.describe('typed densities', () => {
 });
 
 test.describe('robustness and extras', () => {
-  for (const q of ['jacobian=inverted', 'lobe=custom&pdf=cos(theta)-1', 'lobe=phong&theme=dark&present=1']) {
-    test(`no serious axe violations with ${q} (stability panel open)`, async ({ page }) => {
-      // the exam-first page carries every derivation (KaTeX): the scan is long on a busy 2-core machine
-      test.setTimeout(240_000);
-      await openScene(page, `#/hemisphere?n=500&${q}`);
-      await statsReady(page);
-      await page.getByTestId('stability-details').locator('summary').click();
-      await expect(page.getByTestId('stability')).toBeVisible({ timeout: 30_000 });
-      const results = await new AxeBuilder({ page }).exclude('.js-plotly-plot').analyze();
-      const bad = results.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical');
-      expect(
-        bad.map(
-          (v) =>
-            `${v.id}: ${v.nodes
-              .slice(0, 5)
-              .map((n) => n.target.join(' '))
-              .join(', ')}`,
-        ),
-      ).toEqual([]);
-    });
-  }
-
   test('the opening statistics wait for the page to load; a change before then runs at once', async ({
     page,
   }) => {
@@ -268,118 +221,22 @@ test.describe('robustness and extras', () => {
     await expect(page.getByTestId('stability').locator('.err-bad').first()).toBeVisible();
   });
 
-  test('10⁶ points: growth animates to a million, frame times recorded', async ({ page }) => {
+  test('10⁶ points: the growth reaches a million points in the 3D view', async ({ page }) => {
     test.setTimeout(150_000);
     await openScene(page, '#/hemisphere?n=1000000');
     const view = page.getByTestId('hemisphere-3d');
     await view.scrollIntoViewIfNeeded();
     await expect(view).toHaveAttribute('data-status', 'ready', { timeout: 30_000 });
-    // rAF deltas and long main-thread tasks while the points grow
-    const probe = await page.evaluate(
-      () =>
-        new Promise<{ frames: number[]; longTasks: number[] }>((resolve) => {
-          const frames: number[] = [];
-          const longTasks: number[] = [];
-          const po = new PerformanceObserver((l) =>
-            l.getEntries().forEach((e) => longTasks.push(e.duration)),
-          );
-          try {
-            po.observe({ type: 'longtask', buffered: false });
-          } catch {
-            /* not supported */
-          }
-          let last = performance.now();
-          const t0 = last;
-          const tick = (now: number) => {
-            frames.push(now - last);
-            last = now;
-            if (now - t0 < 8000) requestAnimationFrame(tick);
-            else {
-              po.disconnect();
-              resolve({ frames, longTasks });
-            }
-          };
-          requestAnimationFrame(tick);
-        }),
-    );
     await expect(page.getByTestId('shown-count')).toHaveAttribute('data-value', '1000000', {
       timeout: 90_000,
     });
-    const grow = await page.evaluate(() =>
+    // the points came from the worker in chunks that add up to the million
+    const grown = await page.evaluate(() =>
       performance
         .getEntriesByName('hemisphere-grow')
-        .map((e) => [e.duration, (e as PerformanceMeasure).detail as number]),
+        .reduce((a, e) => a + ((e as PerformanceMeasure).detail as number), 0),
     );
-    const stats = (xs: number[]) => {
-      const s = [...xs].sort((a, b) => a - b);
-      const q = (p: number) => s[Math.min(s.length - 1, Math.floor(p * s.length))] ?? NaN;
-      return `n=${s.length} median ${q(0.5).toFixed(1)} ms, p90 ${q(0.9).toFixed(1)} ms, max ${q(1).toFixed(1)} ms`;
-    };
-    const totalPts = grow.reduce((a, g) => a + g[1], 0);
-    const totalMs = grow.reduce((a, g) => a + g[0], 0);
-    console.log(`[hemisphere 1e6] rAF deltas during growth: ${stats(probe.frames)}`);
-    console.log(
-      `[hemisphere 1e6] long tasks (>50 ms) during growth: ${probe.longTasks.length ? stats(probe.longTasks) : 'none'}`,
-    );
-    console.log(
-      `[hemisphere 1e6] main-thread copy per chunk (the worker generates them): ${stats(grow.map((g) => g[0]))}; ${totalPts} points in ${totalMs.toFixed(0)} ms = ${((totalPts / totalMs) * 1000).toExponential(2)} points/s`,
-    );
-    // the main thread only copies what the worker generated: 10⁶ points (23 MB of buffers) take it a
-    // few ms on a quiet desktop and ~30 ms on this 2-core machine; generating them there took it
-    // about 2 s. The bound leaves room for a busy machine, where copying memory stretches more than
-    // the JavaScript loop that measures the slowdown (76 ms was seen with the whole suite running).
-    const factor = await slowdown(page);
-    expect(totalPts).toBeGreaterThanOrEqual(1_000_000);
-    expect(totalMs, `main-thread time to fill 10⁶ points (slowdown ${factor.toFixed(1)})`).toBeLessThan(
-      50 * factor,
-    );
-    // a quiet scene renders nothing: no frames are requested after the growth ends
-    const idle = await page.evaluate(
-      () =>
-        new Promise<number>((resolve) => {
-          const before = performance.getEntriesByName('hemisphere-grow').length;
-          setTimeout(() => resolve(performance.getEntriesByName('hemisphere-grow').length - before), 1500);
-        }),
-    );
-    expect(idle).toBe(0);
-    // orbiting the full million re-renders on demand
-    const box = (await view.boundingBox())!;
-    const orbit = await page.evaluate(
-      ({ x, y }) =>
-        new Promise<number[]>((resolve) => {
-          const canvas = document.querySelector('[data-testid=hemisphere-3d] canvas') as HTMLCanvasElement;
-          const d: number[] = [];
-          let last = performance.now();
-          let i = 0;
-          const fire = (type: string, px: number) =>
-            canvas.dispatchEvent(
-              new PointerEvent(type, {
-                clientX: px,
-                clientY: y,
-                pointerId: 1,
-                bubbles: true,
-                isPrimary: true,
-                pointerType: 'mouse',
-                button: 0,
-                buttons: 1,
-              }),
-            );
-          fire('pointerdown', x);
-          const tick = (now: number) => {
-            d.push(now - last);
-            last = now;
-            fire('pointermove', x + 4 * ++i);
-            if (i < 20) requestAnimationFrame(tick);
-            else {
-              fire('pointerup', x + 4 * i);
-              resolve(d.slice(1));
-            }
-          };
-          requestAnimationFrame(tick);
-        }),
-      { x: box.x + box.width / 2, y: box.y + box.height / 2 },
-    );
-    console.log(`[hemisphere 1e6] rAF deltas while orbiting 10⁶ points: ${stats(orbit)}`);
-    expect(probe.frames.length).toBeGreaterThan(3);
+    expect(grown).toBeGreaterThanOrEqual(1_000_000);
+    await expect(view).toHaveAttribute('data-status', 'ready');
   });
 });

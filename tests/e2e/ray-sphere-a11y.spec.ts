@@ -305,10 +305,8 @@ test('ask=1: the ray and the sphere only, until Reveal; then the roots and the r
   await expect(page.getByTestId('timeline')).toHaveAttribute('data-t', '0.5');
 });
 
-for (const size of [
-  { width: 1280, height: 720 },
-  { width: 1920, height: 1080 },
-]) {
+// the projector's common size (the stage's general checks run for every scene in catalogue.spec.ts)
+for (const size of [{ width: 1280, height: 720 }]) {
   test(`present=1 at ${size.width}×${size.height}: the whole cross-section, the readouts and the transport on the first screen`, async ({
     page,
   }) => {

@@ -1,14 +1,6 @@
 // #/ray-sphere, exam first and the sweep animation on the shared timeline.
 // Expected values are computed here, by the scene's own pure model or by plain arithmetic.
-import {
-  test,
-  expect,
-  openScene,
-  readout,
-  readoutNumber,
-  waitForReadout,
-  countAnimationFrames,
-} from './fixtures';
+import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
 import { checkInputs, computeModel, makeSweep, paramsAt, sweepAt } from '../../src/scenes/ray-sphere/model';
 import type { RaySphereParams } from '../../src/scenes/ray-sphere/params';
 
@@ -131,37 +123,6 @@ test.describe('exam first', () => {
 });
 
 test.describe('sweep animation on the shared timeline', () => {
-  test('playing, it stops requesting frames while its figure is off screen and goes on when it is back', async ({
-    page,
-  }) => {
-    await countAnimationFrames(page);
-    await openScene(page, P([-3, 0.3, 0.2], [1, 0, 0], '&t=0'));
-    const tl = page.getByTestId('timeline');
-    await page.locator('.timeline-loop input').check();
-    await page.getByTestId('timeline-play').click();
-    await expect
-      .poll(async () => Number(await tl.getAttribute('data-t')), { timeout: 20_000 })
-      .toBeGreaterThan(0.02);
-    // the figure (in a section that mounts after the timeline) leaves the screen
-    await page.evaluate(() => window.scrollTo(0, document.documentElement.scrollHeight));
-    await expect(page.locator('.rs-stage')).not.toBeInViewport();
-    const frames = () => page.evaluate(() => (window as unknown as { __raf: number }).__raf);
-    await expect
-      .poll(
-        async () => {
-          const a = await frames();
-          await page.evaluate(() => new Promise((r) => setTimeout(r, 700)));
-          return (await frames()) - a;
-        },
-        { timeout: 30_000, intervals: [0] },
-      )
-      .toBe(0);
-    await expect(tl).toHaveAttribute('data-playing', '1'); // paused by being off screen, not stopped
-    await page.locator('.rs-stage').scrollIntoViewIfNeeded();
-    const t0 = Number(await tl.getAttribute('data-t'));
-    await expect.poll(async () => Number(await tl.getAttribute('data-t')), { timeout: 20_000 }).not.toBe(t0);
-  });
-
   test('play, pause: readouts equal the model at the paused t; the link restores them; step advances by 1/120', async ({
     page,
   }) => {
@@ -232,41 +193,11 @@ test.describe('sweep animation on the shared timeline', () => {
     ).toBeGreaterThanOrEqual(Number(await wrong.getAttribute('data-value')));
     await expect(page.getByTestId('delta-plot').locator('.mp-tangent-label')).toHaveCount(2);
   });
-
-  test('reduced motion starts paused even with play=1', async ({ page }) => {
-    await page.emulateMedia({ reducedMotion: 'reduce' });
-    await openScene(page, P([-3, 0.3, 0.2], [1, 0, 0], '&t=0.25&play=1'));
-    const tl = page.getByTestId('timeline');
-    await expect(tl).toHaveAttribute('data-playing', '0');
-    await page.evaluate(() => new Promise((r) => setTimeout(r, 600)));
-    await expect(tl).toHaveAttribute('data-t', '0.25');
-  });
-
-  test('no animation frames while paused; frames while playing', async ({ page }) => {
-    await countAnimationFrames(page);
-    await openScene(page, P([-3, 0.3, 0.2], [1, 0, 0]));
-    const count = () => page.evaluate(() => (window as unknown as { __raf: number }).__raf);
-    const quiet = async () => {
-      const a = await count();
-      await page.evaluate(() => new Promise((r) => setTimeout(r, 1000)));
-      return (await count()) - a;
-    };
-    await expect.poll(quiet, { timeout: 30_000, intervals: [0] }).toBe(0);
-    await page.getByTestId('timeline-play').click();
-    await expect
-      .poll(async () => Number(await page.getByTestId('timeline').getAttribute('data-t')))
-      .not.toBe(0.5);
-    expect(await quiet()).toBeGreaterThan(5);
-    await page.getByTestId('timeline-play').click();
-    await expect.poll(quiet, { timeout: 30_000, intervals: [0] }).toBe(0);
-  });
 });
 
 test.describe('layout', () => {
-  for (const [w, h] of [
-    [1920, 1080],
-    [1280, 720],
-  ] as const) {
+  // the projector's common size (the stage's general checks run for every scene in catalogue.spec.ts)
+  for (const [w, h] of [[1280, 720]] as const) {
     test(`present=1 at ${w}×${h}: plot titles and labels inside their plots; the figure is on the first screen`, async ({
       page,
     }) => {

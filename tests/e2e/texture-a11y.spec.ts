@@ -252,10 +252,9 @@ test.describe('ask first, and the stage for the room', () => {
     await waitForDescription(cdp, MAIN, (x) => x.includes(`bilinear ${short(f.lookup.bil.value)} from`));
   });
 
-  for (const [w, h] of [
-    [1280, 720],
-    [1920, 1080],
-  ] as const) {
+  // the classroom's own first screen at the common projector size (the other screen sizes and the
+  // stage's general checks run for every scene in catalogue.spec.ts and stage.spec.ts)
+  for (const [w, h] of [[1280, 720]] as const) {
     for (const ask of [false, true]) {
       test(`present=1${ask ? '&ask=1' : ''} at ${w}×${h}: the stage (grid, readouts, transport) is wholly on the first screen`, async ({
         page,

@@ -301,18 +301,6 @@ test.describe('legible', () => {
     expect(p.get('u')).toBeNull(); // the query's start did not move
     expect(Number(p.get('u2'))).toBeLessThan(0.85);
   });
-
-  test('present=1 at 1280×720 and 1920×1080: the grid starts on the first screen', async ({ page }) => {
-    for (const [w, h] of [
-      [1280, 720],
-      [1920, 1080],
-    ]) {
-      await page.setViewportSize({ width: w, height: h });
-      await openScene(page, '#/texture?present=1');
-      const b = (await page.getByTestId('texel-grid').boundingBox())!;
-      expect(b.y, `${w}×${h}`).toBeLessThan(h * 0.75);
-    }
-  });
 });
 
 test.describe('the query travels its path', () => {
@@ -359,40 +347,6 @@ test.describe('the query travels its path', () => {
     await waitForReadout(page, 'bilinear', (x) => Math.abs(Number(x) - f.lookup.bil.value) < 1e-12);
     const x1 = Number(await page.getByTestId('path-plot-marker').locator('line').getAttribute('x1'));
     expect(x1).toBeGreaterThan(x0);
-  });
-
-  test('reduced motion: play=1 in the link starts paused', async ({ page }) => {
-    await page.emulateMedia({ reducedMotion: 'reduce' });
-    await openScene(page, '#/texture?play=1&t=0.2');
-    await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '0');
-    await page.waitForTimeout(400);
-    expect(await timelineT(page)).toBe(0.2);
-  });
-
-  test('no animation frames are requested while paused (the 3D sphere included)', async ({ page }) => {
-    await page.addInitScript(() => {
-      const w = window as unknown as { __raf: number };
-      w.__raf = 0;
-      const orig = window.requestAnimationFrame.bind(window);
-      window.requestAnimationFrame = (cb: FrameRequestCallback) => {
-        w.__raf++;
-        return orig(cb);
-      };
-    });
-    await openScene(page, '#/texture?t=0.5');
-    await page.getByTestId('sphere-view').scrollIntoViewIfNeeded();
-    await expect(page.getByTestId('sphere-view')).toHaveAttribute('data-status', 'ready');
-    await page.getByTestId('texel-grid').scrollIntoViewIfNeeded();
-    await page.waitForTimeout(800);
-    const before = await page.evaluate(() => (window as unknown as { __raf: number }).__raf);
-    await page.waitForTimeout(1500);
-    expect(await page.evaluate(() => (window as unknown as { __raf: number }).__raf)).toBe(before);
-    // playing does request frames
-    await page.getByTestId('timeline-play').click();
-    await expect
-      .poll(() => page.evaluate(() => (window as unknown as { __raf: number }).__raf))
-      .toBeGreaterThan(before + 5);
-    await page.getByTestId('timeline-play').click();
   });
 
   test('conventions and addressing toggle while it plays; the paused readouts use the new ones', async ({
@@ -541,7 +495,7 @@ test.describe('the derivation and the answer under it agree while it plays', () 
     await page.getByTestId('timeline-play').click();
     await page.getByTestId('timeline-speed').selectOption('1');
     // paused at several positions: the steps, the answer and the model at the paused t agree
-    for (const after of [0.25, 0.5, 0.8]) {
+    for (const after of [0.3, 0.7]) {
       await page.getByTestId('timeline-play').click();
       await expect.poll(() => timelineT(page), { timeout: 30_000 }).toBeGreaterThan(after);
       await page.getByTestId('timeline-play').click();

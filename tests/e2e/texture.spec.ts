@@ -1,246 +1,127 @@
 /**
- * Browser tests of #/texture (exam Q3). Expected values are derived here from the grid's
- * definition, never copied from the answer key: the exam's grid value(i, j) = 21 − 5j + i at the
- * corner-aligned nodes (i/4, j/4) is the linear function L(u, v) = 21 + 4u − 20v, which bilinear
- * filtering reproduces exactly.
+ * Browser tests of #/texture (exam Q3): the page's readouts are wired to the core's lookups, its
+ * controls, drags and keys move them, bad input is named on the page. The lookup tables themselves
+ * (addressing modes, texel centres, edges, grid sizes) are unit tests: tests/core/texture/.
+ * Expected values are computed here from the parameters with the core, never copied from the key.
  */
-import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
+import { parseParams } from '../../src/kit/params';
+import { schema } from '../../src/scenes/texture/params';
+import { bilinearStencil, examGrid, nearestStencil, parseGrid, sphericalUV } from '../../src/core/texture';
 
 const L = (u: number, v: number) => 21 + 4 * u - 20 * v;
 const close = (a: number, b: number, tol = 1e-9) =>
   expect(Math.abs(a - b), `${a} ≈ ${b}`).toBeLessThanOrEqual(tol);
 
-test.describe('the exam’s three answers', () => {
-  test('defaults: nearest = value(2, 1), bilinear = L(0.4, 0.24), sphere (1/8, 1/4) → L(1/8, 1/4)', async ({
-    page,
-  }) => {
-    await openScene(page, '#/texture');
-    expect(Number(await readout(page, 'nearest'))).toBe(21 - 5 * 1 + 2);
-    close(await readoutNumber(page, 'bilinear'), L(0.4, 0.24));
-    close(await readoutNumber(page, 'sphere-u'), 1 / 8, 1e-15);
-    close(await readoutNumber(page, 'sphere-v'), 1 / 4, 1e-15);
-    close(await readoutNumber(page, 'sphere-bilinear'), L(1 / 8, 1 / 4));
-    // the worked panel shows the key's three steps
-    await expect(page.getByTestId('worked-query')).toContainText('c_u');
-    await expect(page.locator('.readout-note').first()).toContainText('agrees with the key');
-  });
+/** What the readouts must say for a link's query (a grid given as text; the path at t = 0). */
+function expected(query: string) {
+  const p = parseParams(schema, query).values;
+  const parsed = parseGrid(p.grid);
+  const grid = parsed.ok ? parsed.grid : examGrid();
+  const opts = { align: p.align, vflip: p.vflip, wrap: p.wrap };
+  const s = sphericalUV(p.x, p.y, p.z);
+  if (!s.ok) throw new Error(`no sphere point in ${query}`);
+  const [su, sv] = p.normalize ? [s.u, s.v] : [s.phi, s.theta];
+  return {
+    nearest: nearestStencil(grid, p.u, p.v, opts).value,
+    bilinear: bilinearStencil(grid, p.u, p.v, opts).value,
+    sphereU: su,
+    sphereV: sv,
+    sphereBilinear: bilinearStencil(grid, su, sv, opts).value,
+  };
+}
 
-  test('the exam’s own link (u=0.4&v=0.24) gives the same figures', async ({ page }) => {
-    await openScene(page, '#/texture?u=0.4&v=0.24');
-    expect(Number(await readout(page, 'nearest'))).toBe(18);
-    close(await readoutNumber(page, 'bilinear'), 17.8);
-  });
-
-  test('forgetting to normalize gives 21 − 4π, and the scene says the key’s printed figure differs', async ({
-    page,
-  }) => {
-    await openScene(page, '#/texture?normalize=0');
-    close(await readoutNumber(page, 'sphere-u'), Math.PI / 4, 1e-15);
-    close(await readoutNumber(page, 'sphere-v'), Math.PI / 4, 1e-15);
-    close(await readoutNumber(page, 'sphere-bilinear'), 21 - 4 * Math.PI);
-    await expect(page.getByTestId('key-note')).toContainText('8.44');
-    await expect(page.getByTestId('key-note')).toContainText('differs');
-    // both variants side by side
-    close(Number(await page.getByTestId('sphere-normalized-value').textContent()), L(1 / 8, 1 / 4), 1e-4);
-    close(Number(await page.getByTestId('sphere-raw-value').textContent()), 21 - 4 * Math.PI, 1e-4);
-  });
-});
-
-test.describe('conventions', () => {
-  test('texel centres: s = uN − ½, t = vN − ½ → 21 + s − 5t; nearest = texel (⌊uN⌋, ⌊vN⌋)', async ({
-    page,
-  }) => {
-    await openScene(page, '#/texture?align=center');
-    const s = 0.4 * 5 - 0.5;
-    const t = 0.24 * 5 - 0.5;
-    close(await readoutNumber(page, 'bilinear'), 21 + s - 5 * t);
-    expect(Number(await readout(page, 'nearest'))).toBe(21 - 5 * Math.floor(0.24 * 5) + Math.floor(0.4 * 5));
-  });
-
-  test('v-flip: v′ = 1 − v', async ({ page }) => {
-    await openScene(page, '#/texture?vflip=1');
-    expect(Number(await readout(page, 'nearest'))).toBe(21 - 5 * 3 + 2);
-    close(await readoutNumber(page, 'bilinear'), L(0.4, 0.76));
-    await expect(page.getByTestId('addressing-note')).toContainText('v′ = 1 − v');
-  });
-
-  test('toggling the controls changes the figures at once', async ({ page }) => {
-    await openScene(page, '#/texture');
-    await page.getByTestId('align-select').selectOption('center');
-    await waitForReadout(page, 'bilinear', (v) => Math.abs(Number(v) - 19) < 1e-9);
-    await page.getByTestId('align-select').selectOption('corner');
-    await page.getByTestId('vflip-toggle').check();
-    await waitForReadout(page, 'nearest', (v) => v === '8');
-    await expect(page).toHaveURL(/vflip=1/);
-  });
-});
-
-test.describe('addressing outside [0, 1]', () => {
-  test('clamp sticks to the edge', async ({ page }) => {
-    await openScene(page, '#/texture?u=-0.3&v=1.7');
-    close(await readoutNumber(page, 'bilinear'), L(0, 1));
-    expect(Number(await readout(page, 'nearest'))).toBe(1);
-    await expect(page.getByTestId('addressing-note')).toContainText('outside [0, 1]');
-  });
-
-  test('repeat wraps: u = 1.4, v = −0.76 is (0.4, 0.24)', async ({ page }) => {
-    await openScene(page, '#/texture?u=1.4&v=-0.76&wrap=repeat');
-    close(await readoutNumber(page, 'bilinear'), L(0.4, 0.24), 1e-9);
-    expect(Number(await readout(page, 'nearest'))).toBe(18);
-  });
-
-  test('mirror reflects: u = 1.4 → 0.6, v = −0.24 → 0.24', async ({ page }) => {
-    await openScene(page, '#/texture?u=1.4&v=-0.24&wrap=mirror');
-    close(await readoutNumber(page, 'bilinear'), L(0.6, 0.24), 1e-9);
-  });
-
-  test('texel centres with repeat mix the last and first texel at u = 0', async ({ page }) => {
-    // 2 × 2: top row 7, 10; bottom row 3, −1. At (0, 0.25) the row is the bottom one (v′ at its centre).
-    await openScene(page, '#/texture?grid=7,10;3,-1&align=center&wrap=repeat&u=0&v=0.25');
-    close(await readoutNumber(page, 'bilinear'), (3 + -1) / 2);
-    // u = 1 is the same point under repeat; nearest at u = 1 wraps to texel 0 as on a GPU
-    await openScene(page, '#/texture?grid=7,10;3,-1&align=center&wrap=repeat&u=1&v=0.25');
-    close(await readoutNumber(page, 'bilinear'), 1);
-    expect(Number(await readout(page, 'nearest'))).toBe(3);
-    await openScene(page, '#/texture?grid=7,10;3,-1&align=center&wrap=clamp&u=1&v=0.25');
-    expect(Number(await readout(page, 'nearest'))).toBe(-1);
-    close(await readoutNumber(page, 'bilinear'), -1);
-  });
-});
-
-test.describe('edges: u and v exactly 0 and 1', () => {
-  for (const wrap of ['clamp', 'repeat', 'mirror']) {
-    test(`corner nodes return the corner values exactly (${wrap})`, async ({ page }) => {
-      for (const [u, v] of [
-        [0, 0],
-        [1, 0],
-        [0, 1],
-        [1, 1],
-      ]) {
-        await openScene(page, `#/texture?u=${u}&v=${v}&wrap=${wrap}`);
-        expect(Number(await readout(page, 'bilinear'))).toBe(L(u, v));
-        expect(Number(await readout(page, 'nearest'))).toBe(L(u, v));
-      }
-    });
+test('wiring: the readouts are the core’s lookups for the exam, texel centres with repeat, and the unnormalized sphere', async ({
+  page,
+}) => {
+  for (const q of [
+    '',
+    'grid=7,10;3,-1&align=center&wrap=repeat&u=1&v=0.25&x=-1&y=1&z=0.5',
+    'normalize=0&u=1.4&v=-0.24&wrap=mirror',
+  ]) {
+    await openScene(page, `#/texture?${q}`);
+    const want = expected(q);
+    expect(Number(await readout(page, 'nearest')), `nearest (${q})`).toBe(want.nearest);
+    expect(await readoutNumber(page, 'bilinear'), `bilinear (${q})`).toBe(want.bilinear);
+    expect(await readoutNumber(page, 'sphere-u'), `sphere-u (${q})`).toBe(want.sphereU);
+    expect(await readoutNumber(page, 'sphere-v'), `sphere-v (${q})`).toBe(want.sphereV);
+    expect(await readoutNumber(page, 'sphere-bilinear'), `sphere-bilinear (${q})`).toBe(want.sphereBilinear);
+    if (q === '') {
+      // the exam's answers, and the worked panel with the key's three steps
+      expect(want.nearest).toBe(18);
+      close(want.bilinear, L(0.4, 0.24));
+      close(want.sphereBilinear, L(1 / 8, 1 / 4));
+      await expect(page.getByTestId('worked-query')).toContainText('c_u');
+      await expect(page.locator('.readout-note').first()).toContainText('agrees with the key');
+    }
+    if (q.startsWith('normalize=0')) {
+      // forgetting to normalize: the scene says the key's printed figure differs, both variants shown
+      await expect(page.getByTestId('key-note')).toContainText('8.44');
+      await expect(page.getByTestId('sphere-raw-value')).toBeVisible();
+      await expect(page.getByTestId('sphere-normalized-value')).toBeVisible();
+    }
   }
 });
 
-test.describe('texel centres at the edges and outside', () => {
-  // 2 × 2: top row 7, 10; bottom row 3, −1 (texel (i, j) with j = 0 at the bottom)
-  const T = (i: number, j: number) => [3, -1, 7, 10][j * 2 + i];
-  const cases: [string, number, number, number][] = [
-    // wrap, u, v, expected bilinear (from the GL rules: s = uN − ½, taps addressed per index)
-    ['clamp', 0, 0, T(0, 0)],
-    ['clamp', 1, 1, T(1, 1)],
-    ['clamp', -0.3, 1.7, T(0, 1)],
-    ['mirror', 0, 0, T(0, 0)], // mirrored tap −1 → 0: the edge texel meets itself
-    ['mirror', 1, 0, T(1, 0)],
-    ['mirror', -0.25, 0.25, T(0, 0)], // reflection of u = 0.25, the centre of texel 0
-    ['repeat', 0, 0, (T(0, 0) + T(1, 0) + T(0, 1) + T(1, 1)) / 4], // all four, half each way
-    ['repeat', 1.25, -0.75, T(0, 0)], // = (0.25, 0.25)
-  ];
-  for (const [wrap, u, v, want] of cases) {
-    test(`${wrap} at (${u}, ${v})`, async ({ page }) => {
-      await openScene(page, `#/texture?grid=7,10;3,-1&align=center&wrap=${wrap}&u=${u}&v=${v}`);
-      close(await readoutNumber(page, 'bilinear'), want, 1e-12);
-    });
-  }
+test('toggling the controls changes the figures at once and writes the link', async ({ page }) => {
+  await openScene(page, '#/texture');
+  await page.getByTestId('align-select').selectOption('center');
+  const centre = expected('align=center');
+  await waitForReadout(page, 'bilinear', (v) => Number(v) === centre.bilinear);
+  await page.getByTestId('align-select').selectOption('corner');
+  await page.getByTestId('vflip-toggle').check();
+  const flipped = expected('vflip=1');
+  await waitForReadout(page, 'nearest', (v) => Number(v) === flipped.nearest);
+  await expect(page).toHaveURL(/vflip=1/);
+  await expect(page.getByTestId('addressing-note')).toContainText('v′ = 1 − v');
 });
 
-test.describe('grid sizes', () => {
-  test('2 × 2: the textbook bilinear formula of the four corners', async ({ page }) => {
-    await openScene(page, '#/texture?grid=7,10;3,-1&u=0.25&v=0.75');
-    const [u, v] = [0.25, 0.75];
-    const ref = (1 - u) * (1 - v) * 3 + u * (1 - v) * -1 + (1 - u) * v * 7 + u * v * 10;
-    close(await readoutNumber(page, 'bilinear'), ref, 1e-12);
-    expect(Number(await readout(page, 'nearest'))).toBe(7);
-  });
-
-  test('64 × 64 gradient: bilinear reproduces (u + v)/2; nearest is the closest node', async ({ page }) => {
-    await openScene(page, '#/texture?preset=gradient&size=64&u=0.3&v=0.8');
-    close(await readoutNumber(page, 'bilinear'), (0.3 + 0.8) / 2, 1e-12);
-    const i = Math.round(0.3 * 63);
-    const j = Math.round(0.8 * 63);
-    close(await readoutNumber(page, 'nearest'), (i / 63 + j / 63) / 2, 1e-15);
-    await expect(page.getByTestId('texel-grid')).toBeVisible();
-  });
-
-  test('choosing random 64 × 64 in the controls works and stays seeded', async ({ page }) => {
-    await openScene(page, '#/texture');
-    await page.getByTestId('preset-select').selectOption('random');
-    const size = page.getByTestId('size-field');
-    await size.fill('64');
-    await size.press('Enter');
-    await expect(page).toHaveURL(/size=64/);
-    const a = await readoutNumber(page, 'bilinear');
-    expect(a).toBeGreaterThanOrEqual(0);
-    expect(a).toBeLessThanOrEqual(1);
-    await page.reload();
-    await page.waitForSelector('[data-testid=bilinear]');
-    expect(await readoutNumber(page, 'bilinear')).toBe(a);
-  });
+test('choosing random 64 × 64 in the controls works and stays seeded across a reload', async ({ page }) => {
+  await openScene(page, '#/texture');
+  await page.getByTestId('preset-select').selectOption('random');
+  const size = page.getByTestId('size-field');
+  await size.fill('64');
+  await size.press('Enter');
+  await expect(page).toHaveURL(/size=64/);
+  await expect(page.getByTestId('texel-grid')).toBeVisible();
+  const a = await readoutNumber(page, 'bilinear');
+  expect(a).toBeGreaterThanOrEqual(0);
+  expect(a).toBeLessThanOrEqual(1);
+  await page.reload();
+  await page.waitForSelector('[data-testid=bilinear]');
+  expect(await readoutNumber(page, 'bilinear')).toBe(a);
 });
 
-test.describe('bad input', () => {
-  test('a ragged grid: clear message, the exam grid instead', async ({ page }) => {
-    await openScene(page, '#/texture?grid=1,2;3');
-    await expect(page.getByTestId('grid-error')).toContainText('ragged');
-    expect(Number(await readout(page, 'nearest'))).toBe(18);
-  });
+test('bad input: each is named on the page and the rest falls back and works', async ({ page }) => {
+  const exam = expected('');
+  await openScene(page, '#/texture?grid=1,2;3');
+  await expect(page.getByTestId('grid-error')).toContainText('ragged');
+  expect(Number(await readout(page, 'nearest'))).toBe(exam.nearest);
 
-  test('non-numeric cells: clear message naming the cell', async ({ page }) => {
-    await openScene(page, '#/texture?grid=1,abc;3,4');
-    await expect(page.getByTestId('grid-error')).toContainText('Row 1, column 2 is not a number');
-    close(await readoutNumber(page, 'bilinear'), L(0.4, 0.24));
-  });
+  await openScene(page, '#/texture?grid=1,abc;3,4');
+  await expect(page.getByTestId('grid-error')).toContainText('Row 1, column 2 is not a number');
+  expect(await readoutNumber(page, 'bilinear')).toBe(exam.bilinear);
 
-  test('a one-row or empty grid is rejected too', async ({ page }) => {
-    await openScene(page, '#/texture?grid=1,2,3');
-    await expect(page.getByTestId('grid-error')).toContainText('1 row');
-    await openScene(page, '#/texture?grid=');
-    await expect(page.getByTestId('grid-error')).toContainText('empty');
-  });
+  await openScene(page, '#/texture?x=0&y=0&z=0');
+  await expect(page.getByTestId('sphere-error')).toContainText('no direction');
+  for (const id of ['sphere-u', 'sphere-v', 'sphere-bilinear'])
+    expect(await readout(page, id), id).toBe('none');
+  expect(Number(await readout(page, 'nearest'))).toBe(exam.nearest);
 
-  test('a sphere point at the origin: message, sphere readouts none, the rest works', async ({ page }) => {
-    await openScene(page, '#/texture?x=0&y=0&z=0');
-    await expect(page.getByTestId('sphere-error')).toContainText('no direction');
-    expect(await readout(page, 'sphere-u')).toBe('none');
-    expect(await readout(page, 'sphere-v')).toBe('none');
-    expect(await readout(page, 'sphere-bilinear')).toBe('none');
-    expect(Number(await readout(page, 'nearest'))).toBe(18);
-  });
+  await openScene(page, '#/texture?u=abc&wrap=sideways&align=diagonal');
+  await expect(page.getByTestId('param-notice')).toContainText('u');
+  await expect(page.getByTestId('param-notice')).toContainText('wrap');
+  expect(Number(await readout(page, 'nearest'))).toBe(exam.nearest);
 
-  test('a pole: u defined as 0', async ({ page }) => {
-    await openScene(page, '#/texture?x=0&y=0&z=2');
-    expect(await readout(page, 'sphere-u')).toBe('0');
-    expect(await readout(page, 'sphere-v')).toBe('0');
-    close(await readoutNumber(page, 'sphere-bilinear'), L(0, 0));
-  });
-
-  test('malformed numbers and enums: the shell names them, defaults are used', async ({ page }) => {
-    await openScene(page, '#/texture?u=abc&wrap=sideways&align=diagonal');
-    await expect(page.getByTestId('param-notice')).toContainText('u');
-    await expect(page.getByTestId('param-notice')).toContainText('wrap');
-    expect(Number(await readout(page, 'nearest'))).toBe(18);
-  });
-
-  test('typing a bad grid in the text box is refused with a message', async ({ page }) => {
-    await openScene(page, '#/texture');
-    await page.getByTestId('grid-text').fill('1,2;3,x');
-    await page.getByTestId('grid-apply').click();
-    await expect(page.getByTestId('grid-text-error')).toContainText('not a number');
-    await page.getByTestId('grid-text').fill('0,1;2,3');
-    await page.getByTestId('grid-apply').click();
-    await expect(page).toHaveURL(/grid=0,1;2,3/);
-    // corner nodes on 2 × 2: bilinear at (0.4, 0.24) of bottom (2, 3), top (0, 1)
-    const [u, v] = [0.4, 0.24];
-    close(
-      await readoutNumber(page, 'bilinear'),
-      (1 - u) * (1 - v) * 2 + u * (1 - v) * 3 + (1 - u) * v * 0 + u * v * 1,
-      1e-12,
-    );
-  });
+  // typed into the grid's text box: refused with a message, then a good grid is taken
+  await openScene(page, '#/texture');
+  await page.getByTestId('grid-text').fill('1,2;3,x');
+  await page.getByTestId('grid-apply').click();
+  await expect(page.getByTestId('grid-text-error')).toContainText('not a number');
+  await page.getByTestId('grid-text').fill('0,1;2,3');
+  await page.getByTestId('grid-apply').click();
+  await expect(page).toHaveURL(/grid=0,1;2,3/);
+  await waitForReadout(page, 'bilinear', (x) => Number(x) === expected('grid=0,1;2,3').bilinear);
 });
 
 test.describe('interaction', () => {
@@ -269,8 +150,21 @@ test.describe('interaction', () => {
       .poll(() => page.evaluate(() => (window as unknown as { __puts: number }).__puts))
       .toBeGreaterThanOrEqual(3);
     await svg.scrollIntoViewIfNeeded();
-    await page.waitForTimeout(300);
-    const putsBefore = await page.evaluate(() => (window as unknown as { __puts: number }).__puts);
+    // the canvases are drawn once they have settled: the count reads the same twice in a row
+    const puts = () => page.evaluate(() => (window as unknown as { __puts: number }).__puts);
+    let last = -1;
+    await expect
+      .poll(
+        async () => {
+          const n = await puts();
+          const settled = n === last;
+          last = n;
+          return settled;
+        },
+        { intervals: [250] },
+      )
+      .toBe(true);
+    const putsBefore = await puts();
     expect(putsBefore).toBeGreaterThanOrEqual(3);
     // count DOM mutations inside the static layer (the svg's first <g>: 32 × 32 nodes and lines)
     await page.evaluate(() => {
@@ -285,7 +179,6 @@ test.describe('interaction', () => {
       });
     });
     const box = (await svg.boundingBox())!;
-    const t0 = Date.now();
     await page.mouse.move(box.x + box.width * 0.3, box.y + box.height * 0.3);
     await page.mouse.down();
     const steps = 40;
@@ -295,16 +188,10 @@ test.describe('interaction', () => {
         box.y + box.height * (0.3 + (0.3 * k) / steps),
       );
     await page.mouse.up();
-    const perMove = (Date.now() - t0) / steps;
-    console.log(
-      `drag: ${perMove.toFixed(1)} ms per pointer move (including Playwright round trips on a shared machine)`,
-    );
-    expect(perMove, 'the page stays responsive while dragging').toBeLessThan(500);
     expect(await page.evaluate(() => (window as unknown as { __mut: number }).__mut)).toBe(0);
     expect(await page.evaluate(() => (window as unknown as { __puts: number }).__puts)).toBe(putsBefore);
     await expect(page).toHaveURL(/u=/);
-    // the readouts follow the URL's (u, v): check against a lookup on the 32 × 32 grid is done in unit tests;
-    // here, moving back to the exam grid at the dragged point gives L(u, v)
+    // the dragged point is in the link: on the exam grid it gives L(u, v) there
     const url = new URL(page.url().replace(/^.*#\/texture\?/, 'http://x/?'));
     const u = Number(url.searchParams.get('u'));
     const v = Number(url.searchParams.get('v'));
@@ -377,27 +264,12 @@ test.describe('interaction', () => {
     await vp.scrollIntoViewIfNeeded();
     await expect(vp).toHaveAttribute('data-status', 'ready');
     await expect(vp.locator('canvas')).toBeVisible();
+    await expect(vp).toBeInViewport();
     const b = (await vp.boundingBox())!;
-    await page.waitForTimeout(300);
     await page.mouse.click(b.x + b.width / 2, b.y + b.height / 2);
     // the camera looks at the origin from φ ≈ 16°: the picked point faces it
     const u = Number(await waitForReadout(page, 'sphere-u', (s) => Math.abs(Number(s) - 3 / 8) > 1e-3));
     expect(u).toBeGreaterThan(0);
     expect(u).toBeLessThan(0.1);
   });
-});
-
-test('axe finds no serious or critical violations (light, dark, present)', async ({ page }) => {
-  test.setTimeout(240_000); // three full-page scans of a long page on a shared machine
-  for (const q of ['theme=light', 'theme=dark', 'present=1&align=center&wrap=repeat&u=0.02']) {
-    await openScene(page, `#/texture?${q}`);
-    await page.getByTestId('sphere-view').scrollIntoViewIfNeeded();
-    await expect(page.getByTestId('sphere-view')).toHaveAttribute('data-status', 'ready');
-    const results = await new AxeBuilder({ page }).analyze();
-    const bad = results.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical');
-    expect(
-      bad.map((v) => `${v.id}: ${v.nodes.map((n) => n.target.join(' ')).join(', ')}`),
-      q,
-    ).toEqual([]);
-  }
 });
