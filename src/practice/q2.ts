@@ -14,7 +14,7 @@
 import { Rng } from '../core/random';
 import { estimateFromTerms } from '../core/estimators';
 import { choiceAnswer, numberAnswer, pick, query } from './build';
-import { argTex, argText, expPlain } from './q1';
+import { argTex, argText, expPlain } from './q1Text';
 import {
   assembleSolution,
   fmt,

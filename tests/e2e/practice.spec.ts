@@ -11,7 +11,7 @@ import type { Page } from '@playwright/test';
 import { test, expect, giveAnswer } from './fixtures';
 import { QUESTIONS, questionInfo } from '../../src/practice/questions';
 import { allAnswers, tn, type AnswerSpec, type QuestionId, type Variant } from '../../src/practice/model';
-import { q1Params } from '../../src/practice/q1';
+import { q1Params } from '../../src/practice/q1Density';
 
 /** What a careful student types: numbers to 5 significant figures, formulas as expected, choices. */
 function studentText(a: AnswerSpec): string {

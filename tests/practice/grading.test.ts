@@ -6,7 +6,8 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { QUESTIONS } from '../../src/practice/questions';
-import { q1Params, q1Variant } from '../../src/practice/q1';
+import { q1Variant } from '../../src/practice/q1';
+import { q1Params } from '../../src/practice/q1Density';
 import { allAnswers, type NumberAnswer, type Variant } from '../../src/practice/model';
 import {
   checkAnswer,
