@@ -13,10 +13,10 @@ import {
   checkAnswer,
   checkChoice,
   classifyFormula,
-  decimalPrecision,
   parseNumberAnswer,
   checkNumber,
 } from '../../src/practice/check';
+import { decimalPrecision } from '../../src/practice/decimals';
 
 const RUNS = 3000;
 
