@@ -108,8 +108,12 @@ export function q1Variant(seed: number): Variant {
       prompt: '(c) The CDFs P(θ) and P(φ).',
       answers: [ans.cdfTheta, ans.cdfPhi],
       hint: [
-        { text: 'Integrate each marginal from 0; for θ substitute u = cos θ′:' },
-        { tex: `P(\\theta) = \\int_0^{\\theta} ${pThetaTex.replace(/\\theta/g, "\\theta'")}\\,d\\theta'` },
+        {
+          text: 'Integrate each marginal from 0 (the marginals of (b)), so that P(0) = 0; for θ substitute u = cos θ′:',
+        },
+        {
+          tex: `P(\\theta) = \\int_0^{\\theta} p(\\theta')\\,d\\theta', \\qquad P(\\phi) = \\int_0^{\\phi} p(\\phi')\\,d\\phi'`,
+        },
       ],
       steps: stepsC,
     },
@@ -120,7 +124,7 @@ export function q1Variant(seed: number): Variant {
       answers: [ans.thetaXi, ans.phiXi],
       hint: [
         { text: 'Set ξ₁ equal to P(θ) and solve for θ (and likewise ξ₂ = P(φ)):' },
-        { tex: `\\xi_1 = ${cdfThetaTex}` },
+        { tex: `\\xi_1 = P(\\theta) \\;\\Rightarrow\\; \\theta = P^{-1}(\\xi_1)` },
       ],
       steps: stepsD,
     },

@@ -260,9 +260,9 @@ export function q2Variant(seed: number): Variant {
       answers: [impAns],
       hint: [
         {
-          text: 'Divide each f by the density per steradian p(ω) (the f/p column of the table), then average:',
+          text: 'Divide each f(ωᵢ) by the density per steradian p(ωᵢ) of the same direction, then average the N terms:',
         },
-        { tex: `\\langle I\\rangle = ${impSum}` },
+        { tex: `\\langle I\\rangle = \\frac{1}{N}\\sum_{i=1}^{N} \\frac{f(X_i)}{p(X_i)}` },
       ],
       steps: [
         { text: '(b) Importance sampling with p(ω), the density per steradian:' },
