@@ -3,6 +3,7 @@ import { AnswerRow } from './AnswerRow';
 import type { Part } from './model';
 import { PartStatus } from './PartStatus';
 import type { PartProgress, Session } from './session';
+import { ShowAnswer } from './ShowAnswer';
 import { SolutionSteps } from './SolutionSteps';
 
 /**
@@ -53,11 +54,7 @@ export function PartBlock({
             Hint
           </button>
         ) : null}
-        {progress.revealed === null && !done ? (
-          <button type="button" onClick={onReveal} data-testid={`show-answer-${part.id}`}>
-            Show answer
-          </button>
-        ) : null}
+        {progress.revealed === null && !done ? <ShowAnswer partId={part.id} onReveal={onReveal} /> : null}
       </div>
       {progress.hint && !open ? (
         <div className="part-hint" data-testid={`hint-text-${part.id}`}>

@@ -455,6 +455,13 @@ test('one part at a time: checking one part reveals no other part’s answer; hi
   await expect(page.getByTestId('expected-cdf-theta')).toHaveCount(0);
   // Show answer for (d): (d)'s expected answers and step, still nothing of (b) or (c)
   await page.getByTestId('show-answer-d').click();
+  // it asks first: nothing is shown until the confirmation, and "Keep trying" keeps the part open
+  await expect(page.getByTestId('expected-theta-of-xi')).toHaveCount(0);
+  await page.getByTestId('cancel-show-answer-d').click();
+  await expect(page.getByTestId('show-answer-d')).toBeFocused();
+  await page.getByTestId('show-answer-d').click();
+  await expect(page.getByTestId('confirm-show-answer-d')).toBeFocused();
+  await page.getByTestId('confirm-show-answer-d').click();
   await expect(page.getByTestId('expected-theta-of-xi')).toHaveAttribute('data-value', /acos/);
   await expect(page.getByTestId('expected-phi-of-xi')).toBeVisible();
   await expect(page.getByTestId('part-solution-d')).toBeVisible();
