@@ -1,4 +1,5 @@
 import { useCallback, useEffect, useState, type FormEvent } from 'react';
+import type { ParamProblem } from '../kit/params';
 import type { ShellFlags } from '../kit/shell';
 import { formatPlain } from '../ui/format';
 import { Superscripted } from '../ui/Superscripted';
@@ -39,7 +40,7 @@ export function QuestionPage({
 }: {
   variant: Variant;
   flags: ShellFlags;
-  problems: string[];
+  problems: ParamProblem[];
 }) {
   const info = questionInfo(variant.question);
   // typed answers survive a reload of the tab (drafts.ts); an extension (the LMS runtime in a

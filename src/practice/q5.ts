@@ -9,13 +9,13 @@
  * out of c, Δ/4 (the half-b
  * form), b² + 4ac, roots over a instead of 2a, the negative root chosen as the hit, the far root.
  */
+import { formatSignificant } from '../core/format';
 import { Rng } from '../core/random';
 import { intersectRaySphere, type RaySphereCase, type RaySphereHit, type Vec3 } from '../core/geometry';
 import { choiceAnswer, intIn, numberAnswer, pick, query } from './build';
 import { closeTo, ownNumber } from './follow';
 import {
   assembleSolution,
-  fmt,
   tn,
   tp,
   vecDisplay,
@@ -243,7 +243,7 @@ export function q5Variant(seed: number): Variant {
       ? [{ tex: rootsTex }, { tex: `t_0 = ${tn(t0!)},\\quad t_1 = ${tn(t1!)}` }]
       : [{ text: 'Δ < 0: no real root, the ray misses (t0, t1 and t_hit: none).' }]),
     {
-      text: `${caseWhy(h)} ${tHit !== null ? `t_hit = ${fmt(tHit)}.` : 't_hit: none.'} A hit needs Δ ≥ 0 and t ≥ 0.`,
+      text: `${caseWhy(h)} ${tHit !== null ? `t_hit = ${formatSignificant(tHit, 6, 'e')}.` : 't_hit: none.'} A hit needs Δ ≥ 0 and t ≥ 0.`,
     },
   ];
   const parts: Part[] = [
