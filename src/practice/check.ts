@@ -353,35 +353,27 @@ export function classifyFormula(spec: FormulaAnswer, g: Fn): Verdict {
 }
 
 /**
- * Verdict of a typed formula, given its normalised text and compiled function. Exactly right, an
- * accepted convention or a named mistake is classified by {@link classifyFormula}. Otherwise its
- * rounded decimal constants are read at their precision, as a number answer is: right to the
- * figures typed is correct, unless a constant has fewer than {@link NUMERIC_POLICY}.minSigFigs
- * significant figures (then the student is asked for more: not graded, as for a number); a named
- * mistake to those figures is named.
+ * Verdict of a typed formula (normalised text, compiled function): {@link classifyFormula}, else its
+ * rounded decimal constants read at their precision as a number is (right to the figures typed is
+ * correct; with under 3 significant figures more are asked for, not graded; a named mistake is named).
  */
 export async function classifyTypedFormula(spec: FormulaAnswer, text: string, g: Fn): Promise<Verdict> {
   const exact = classifyFormula(spec, g);
-  if (exact.value !== 'incorrect') return exact;
-  const nudges = await nudgeConstants(text, spec.variables);
+  const nudges = exact.value === 'incorrect' ? await nudgeConstants(text, spec.variables) : null;
   if (!nudges) return exact;
   const pts = formulaPoints(spec.domain);
   const near = (f: Fn) => withinConstantPrecision(f, g, nudges, pts, FORMULA_POLICY.rtol);
   const alt = near(spec.expected) ? null : spec.alternatives.find((a) => near(a.fn));
   if (near(spec.expected) || alt) {
     const few = nudges.constants.find((c) => c.sigFigs < NUMERIC_POLICY.minSigFigs);
-    if (few)
-      return {
-        value: 'invalid',
-        message: `The constant ${few.text} has ${few.sigFigs} significant figure${few.sigFigs === 1 ? '' : 's'}: give at least ${NUMERIC_POLICY.minSigFigs}, or write it exactly.`,
-      };
-    return alt
-      ? { value: 'correct', message: `Correct to the figures of its constants — ${alt.message}` }
-      : { value: 'correct', message: 'Correct to the figures of its constants.' };
+    const fig = `${few?.sigFigs} significant figure${few?.sigFigs === 1 ? '' : 's'}`;
+    const say = few ? `The constant ${few.text} has ${fig}: give at least 3, or write it exactly.` : '';
+    if (few) return { value: 'invalid', message: say };
+    const note = alt ? ` — ${alt.message}` : '.';
+    return { value: 'correct', message: `Correct to the figures of its constants${note}` };
   }
-  for (const m of spec.mistakes)
-    if (m.fns.some(near)) return { value: `mistake:${m.id}`, message: m.message };
-  return exact;
+  const m = spec.mistakes.find((x) => x.fns.some(near));
+  return m ? { value: `mistake:${m.id}`, message: m.message } : exact;
 }
 
 /** Verdict of a typed formula: compiled by the whitelisted expression compiler, then compared. */
