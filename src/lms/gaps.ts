@@ -12,7 +12,8 @@
  *  - a choice is a choice gap.
  */
 import { NUMERIC_POLICY, numbersSeparated } from '../practice/check';
-import { allAnswers, fmt, type AnswerSpec, type Variant } from '../practice/model';
+import { formatSignificant } from '../core/format';
+import { allAnswers, type AnswerSpec, type Variant } from '../practice/model';
 
 export interface GapMistake {
   /** The named mistake (verdict `mistake:<id>`). */
@@ -123,7 +124,7 @@ export function gapOf(spec: AnswerSpec): Gap | null {
   const p = formulaPoint(spec);
   if (!p) return null;
   const value = spec.expected(...p);
-  const at = spec.variables.map((v, i) => `${v} = ${fmt(p[i], 6)}`).join(', ');
+  const at = spec.variables.map((v, i) => `${v} = ${formatSignificant(p[i], 6, 'e')}`).join(', ');
   const alternatives = separated(
     [value],
     spec.alternatives.map((a) => ({ value: a.fn(...p), message: a.message })),

@@ -1,3 +1,5 @@
+import type { ParamProblem } from '../kit/params';
+
 /** A bulleted list of short texts (each is its own key: a list never holds one text twice). */
 export function TextList({ items }: { items: readonly string[] }) {
   return (
@@ -14,7 +16,7 @@ export function ParamNotice({
   problems,
   heading = false,
 }: {
-  problems: readonly string[];
+  problems: readonly ParamProblem[];
   heading?: boolean;
 }) {
   if (!problems.length) return null;
@@ -25,7 +27,7 @@ export function ParamNotice({
           <strong>Some link parameters could not be used:</strong>
         </p>
       ) : null}
-      <TextList items={problems} />
+      <TextList items={problems.map((p) => `${p.name} ${p.message}.`)} />
     </div>
   );
 }

@@ -8,16 +8,16 @@
 import { Superscripted } from '../ui/Superscripted';
 import { useEffect, useState } from 'react';
 import { MathTex } from '../ui/MathTex';
-import { queryProblems, type ShellFlags } from '../kit/shell';
+import type { ShellFlags } from '../kit/shell';
 import { expectedText } from './check';
 import { SolutionSteps } from './SolutionSteps';
-import { fmt, QUESTION_IDS, type AnswerSpec, type QuestionId, type Variant } from './model';
-import { isQuestionId, questionInfo, sheetSeed } from './questions';
+import { formatSignificant } from '../ui/format';
+import type { AnswerSpec, Variant } from './model';
+import { parseSheetParams } from './params';
+import { questionInfo, sheetSeed } from './questions';
 import { qrPath, type QrPath } from '../ui/qr';
 import { practiceSlot } from './extensions';
 import { ParamNotice } from './ParamNotice';
-
-const MAX_SEED = 0xffffffff;
 
 /** The absolute address of a variant's online page (works from any host and from file://). */
 export function variantUrl(v: Pick<Variant, 'question' | 'seed'>, base = window.location.href): string {
@@ -38,64 +38,9 @@ export function variantHref(v: Pick<Variant, 'question' | 'seed'>, base = window
 /** The expected answer in typeset form (the key's TeX, else the number or the formula text). */
 export function answerTex(a: AnswerSpec): string {
   if (a.tex) return a.tex;
-  if (a.kind === 'number') return a.expected === null ? '\\text{none}' : fmt(a.expected, 6);
+  if (a.kind === 'number')
+    return a.expected === null ? '\\text{none}' : formatSignificant(a.expected, 6, 'e');
   return `\\texttt{${expectedText(a).replace(/[\\{}#$%&_^~]/g, ' ')}}`;
-}
-
-export interface SheetParams {
-  seed: number;
-  qs: QuestionId[];
-  count: number;
-  solutions: boolean;
-  problems: string[];
-}
-
-/** Read the sheet's link parameters; anything unusable is named and replaced. */
-export function parseSheetParams(sp: URLSearchParams): SheetParams {
-  // names the sheet does not take, and repeated ones, first (as the other pages name them)
-  const problems: string[] = queryProblems(sp.toString(), ['seed', 'q', 'count', 'solutions']).map(
-    (p) => `${p.name} ${p.message}.`,
-  );
-  let seed = 1;
-  const sRaw = sp.get('seed');
-  if (sRaw !== null) {
-    const s = sRaw.trim();
-    if (/^\d{1,10}$/.test(s) && Number(s) <= MAX_SEED) seed = Number(s);
-    else
-      problems.push(
-        `seed ${JSON.stringify(s.slice(0, 24))} is not a whole number from 0 to ${MAX_SEED}; using 1.`,
-      );
-  }
-  let qs: QuestionId[] = [...QUESTION_IDS];
-  const qRaw = sp.get('q');
-  if (qRaw !== null) {
-    const parts = qRaw.split(',').map((s) => `q${s.trim().replace(/^q/i, '')}`);
-    const ok = parts.filter(isQuestionId);
-    if (ok.length !== parts.length || ok.length === 0)
-      problems.push(
-        `q ${JSON.stringify(qRaw.slice(0, 24))} should list question numbers 1–6 (e.g. 1,3,5); ${ok.length ? 'unknown ones were left out' : 'using all six'}.`,
-      );
-    if (ok.length) qs = [...new Set(ok)];
-  }
-  let count = 1;
-  const cRaw = sp.get('count');
-  if (cRaw !== null) {
-    if (/^\d{1,3}$/.test(cRaw.trim()) && Number(cRaw) >= 1) {
-      count = Math.min(10, Number(cRaw));
-      if (Number(cRaw) > 10) problems.push(`count ${cRaw} is more than 10; using 10.`);
-    } else
-      problems.push(
-        `count ${JSON.stringify(cRaw.slice(0, 24))} is not a whole number from 1 to 10; using 1.`,
-      );
-  }
-  const solRaw = sp.get('solutions');
-  let solutions = false;
-  if (solRaw !== null) {
-    if (solRaw === '1' || solRaw === '0') solutions = solRaw === '1';
-    else
-      problems.push(`solutions ${JSON.stringify(solRaw.slice(0, 24))} should be 1 or 0; leaving them out.`);
-  }
-  return { seed, qs, count, solutions, problems };
 }
 
 function QrCode({ text }: { text: string }) {
@@ -180,7 +125,7 @@ function Givens({ v }: { v: Variant }) {
 
 export default function Sheet({ sp, flags }: { sp: URLSearchParams; flags: ShellFlags }) {
   const P = parseSheetParams(sp);
-  const problems = [...flags.problems.map((p) => `${p.name} ${p.message}`), ...P.problems];
+  const problems = [...flags.problems, ...P.problems];
   const variants = P.qs.flatMap((q) =>
     Array.from({ length: P.count }, (_, k) => questionInfo(q).generate(sheetSeed(P.seed, k))),
   );

@@ -21,6 +21,7 @@
  */
 import { compileExpression } from '../core/expr';
 import { Rng } from '../core/random';
+import { decimalPrecision, nudgeConstants, withinConstantPrecision } from './decimals';
 import type {
   AnswerSpec,
   ChoiceAnswer,
@@ -47,7 +48,7 @@ export const NUMERIC_POLICY = {
 export const FORMULA_POLICY = {
   points: 40,
   rtol: 1e-8,
-  text: 'Formulas: type them in mathjs syntax, e.g. `2*sin(theta)*cos(theta)`, `(1 - cos(2*theta))/2`, `acos(1 - 2*xi)/2`, `log(1 + (e^(2*pi) - 1)*xi)`. Use theta, phi and xi (θ, φ, ξ, ξ₁, ξ₂ work too; ln means log). A formula is correct when it equals the expected one at 40 random points of the domain (to 8 digits): any equivalent form is accepted.',
+  text: 'Formulas: type them in mathjs syntax, e.g. `2*sin(theta)*cos(theta)`, `(1 - cos(2*theta))/2`, `acos(1 - 2*xi)/2`, `log(1 + (e^(2*pi) - 1)*xi)`. Use theta, phi and xi (θ, φ, ξ, ξ₁, ξ₂ work too; ln means log). A formula is correct when it equals the expected one at 40 random points of the domain (to 8 digits): any equivalent form is accepted. A decimal constant in a formula (`0.00187*exp(phi)`) is read at the precision you typed it, as a number is: the formula must be right with the constant rounded to the figures you give, with at least 3 significant figures (fewer is not marked wrong: you are asked for more).',
 } as const;
 
 /**
@@ -111,20 +112,6 @@ export function numbersSeparated(a: number | null, b: number | null): boolean {
     Math.abs(a - b) >
     SEPARATION_RTOL * Math.max(Math.abs(a), Math.abs(b), 1e-300) + 2 * NUMERIC_POLICY.exactAtol
   );
-}
-
-/**
- * Precision of a plain decimal as typed: half a unit in its last digit and its significant
- * figures (leading zeros do not count; every other digit typed does, trailing zeros included).
- * `s` must match {@link PLAIN_NUMBER}.
- */
-export function decimalPrecision(s: string): { halfUnit: number; sigFigs: number } {
-  const m = /^[+-]?(\d*)(?:\.(\d*))?(?:[eE]([+-]?\d+))?$/.exec(s);
-  if (!m) return { halfUnit: 0, sigFigs: Infinity };
-  const frac = m[2] ?? '';
-  const exp = Number(m[3] ?? 0);
-  const sig = ((m[1] ?? '') + frac).replace(/^0+/, '').length;
-  return { halfUnit: 0.5 * 10 ** (exp - frac.length), sigFigs: sig };
 }
 
 const PLAIN_NUMBER = /^[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?$/;
@@ -365,13 +352,38 @@ export function classifyFormula(spec: FormulaAnswer, g: Fn): Verdict {
   };
 }
 
+/**
+ * Verdict of a typed formula (normalised text, compiled function): {@link classifyFormula}, else its
+ * rounded decimal constants read at their precision as a number is (right to the figures typed is
+ * correct; with under 3 significant figures more are asked for, not graded; a named mistake is named).
+ */
+export async function classifyTypedFormula(spec: FormulaAnswer, text: string, g: Fn): Promise<Verdict> {
+  const exact = classifyFormula(spec, g);
+  const nudges = exact.value === 'incorrect' ? await nudgeConstants(text, spec.variables) : null;
+  if (!nudges) return exact;
+  const pts = formulaPoints(spec.domain);
+  const near = (f: Fn) => withinConstantPrecision(f, g, nudges, pts, FORMULA_POLICY.rtol);
+  const alt = near(spec.expected) ? null : spec.alternatives.find((a) => near(a.fn));
+  if (near(spec.expected) || alt) {
+    const few = nudges.constants.find((c) => c.sigFigs < NUMERIC_POLICY.minSigFigs);
+    const fig = `${few?.sigFigs} significant figure${few?.sigFigs === 1 ? '' : 's'}`;
+    const say = few ? `The constant ${few.text} has ${fig}: give at least 3, or write it exactly.` : '';
+    if (few) return { value: 'invalid', message: say };
+    const note = alt ? ` — ${alt.message}` : '.';
+    return { value: 'correct', message: `Correct to the figures of its constants${note}` };
+  }
+  const m = spec.mistakes.find((x) => x.fns.some(near));
+  return m ? { value: `mistake:${m.id}`, message: m.message } : exact;
+}
+
 /** Verdict of a typed formula: compiled by the whitelisted expression compiler, then compared. */
 export async function checkFormula(spec: FormulaAnswer, text: string): Promise<Verdict> {
   const raw = text.trim();
   if (raw === '') return { value: 'invalid', message: `Type a formula in ${spec.variables.join(', ')}.` };
-  const r = await compileExpression(normaliseInput(raw), spec.variables);
+  const src = normaliseInput(raw);
+  const r = await compileExpression(src, spec.variables);
   if (!r.ok) return { value: 'invalid', message: `Cannot read that formula: ${r.message}.` };
-  return classifyFormula(spec, r.fn);
+  return classifyTypedFormula(spec, src, r.fn);
 }
 
 /** Drop formula conventions and mistakes that are equivalent to the correct answer or to each other. */

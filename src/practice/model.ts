@@ -5,7 +5,7 @@
  * solution in the key's form with the variant's own numbers, and a link to the matching scene.
  * Nothing here touches the DOM; the page (PracticeRoute.tsx) only renders and checks it.
  */
-import { formatSignificant } from '../ui/format';
+import { formatSignificant } from '../core/format';
 
 export const QUESTION_IDS = ['q1', 'q2', 'q3', 'q4', 'q5', 'q6'] as const;
 export type QuestionId = (typeof QUESTION_IDS)[number];
@@ -162,19 +162,11 @@ export function allAnswers(v: Variant): AnswerSpec[] {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Number formatting for the page and the worked solution.
-
-/**
- * `digits` significant digits, trailing zeros trimmed, no exponent for 1e-4 ≤ |x| < 1e9, "e-5"
- * style beyond (ui/format.ts); non-finite values as String(x).
- */
-export function fmt(x: number, digits = 6): string {
-  return formatSignificant(x, digits, 'e');
-}
+// Numbers in the worked solution (TeX) and vectors (src/core/format.ts formats the digits).
 
 /** A number for TeX: 6 significant digits, × 10^{e} for exponents. */
 export function tn(x: number, digits = 6): string {
-  const s = fmt(x, digits);
+  const s = formatSignificant(x, digits, 'e');
   const m = /^(-?[\d.]+)e(-?\d+)$/.exec(s);
   return m ? `${m[1]} \\times 10^{${m[2]}}` : s;
 }
@@ -191,7 +183,7 @@ export function vecValue(v: readonly number[]): string {
 
 /** A vector for people: "(x, y, z)" with up to `digits` significant digits. */
 export function vecDisplay(v: readonly number[], digits = 6): string {
-  return `(${v.map((x) => fmt(x, digits)).join(', ')})`;
+  return `(${v.map((x) => formatSignificant(x, digits, 'e')).join(', ')})`;
 }
 
 /** Round to `d` decimals (for givens chosen to be exactly the printed numbers). */

@@ -11,13 +11,13 @@
  * Classic mistakes: no |D| = 2π (or 4π, the whole sphere); f·p instead of f/p; dividing by
  * p(θ, φ) = p(ω) sin θ (the measure of θ, φ) instead of p(ω); p without its k.
  */
+import { formatSignificant } from '../core/format';
 import { Rng } from '../core/random';
 import { estimateFromTerms } from '../core/estimators';
 import { choiceAnswer, numberAnswer, pick, query } from './build';
-import { argTex, argText, expPlain } from './q1';
+import { argTex, argText, expPlain } from './q1Text';
 import {
   assembleSolution,
-  fmt,
   ratValue,
   roundTo,
   tn,
@@ -222,11 +222,14 @@ export function q2Variant(seed: number): Variant {
     why,
   );
   const rows = P.dirs.map(
-    ([t, ph], i) => `(${fmt(t)}, ${fmt(ph)}) & ${tn(fv[i])} & ${tn(pv[i])} & ${tn(fv[i] / pv[i])}`,
+    ([t, ph], i) =>
+      `(${formatSignificant(t, 6, 'e')}, ${formatSignificant(ph, 6, 'e')}) & ${tn(fv[i])} & ${tn(pv[i])} & ${tn(fv[i] / pv[i])}`,
   );
   const { value: trueI, tex: trueTex, how: trueHow } = q2TrueValue(P, F.k);
   const intro: SolutionStep[] = [
-    { text: `Per direction (θᵢ, φᵢ): f(ωᵢ), p(ωᵢ) = ${F.pPlain} with k = ${fmt(F.k, 6)}, and f/p:` },
+    {
+      text: `Per direction (θᵢ, φᵢ): f(ωᵢ), p(ωᵢ) = ${F.pPlain} with k = ${formatSignificant(F.k, 6, 'e')}, and f/p:`,
+    },
     {
       tex: `\\begin{array}{cccc} (\\theta_i,\\phi_i) & f & p & f/p \\\\ \\hline ${rows.join(' \\\\ ')} \\end{array}`,
     },
@@ -234,7 +237,7 @@ export function q2Variant(seed: number): Variant {
   const uniformSum = `\\frac{2\\pi}{${n}}\\,(${fv.map((x) => tn(x)).join(' + ')})`;
   const impSum = `\\frac{1}{${n}}\\,(${fv.map((x, i) => tp(x / pv[i])).join(' + ')})`;
   const trueStep = (est: number): SolutionStep => ({
-    text: `The true value is ∫ f dω = ${trueHow} = ${fmt(trueI, 6)}; this estimate from ${n} directions is ${fmt(est, 6)} (${Math.abs(est - trueI) <= 1e-9 * Math.abs(trueI) ? 'exact: every term is the same' : `off by ${fmt(Math.abs(est - trueI), 3)}`}).`,
+    text: `The true value is ∫ f dω = ${trueHow} = ${formatSignificant(trueI, 6, 'e')}; this estimate from ${n} directions is ${formatSignificant(est, 6, 'e')} (${Math.abs(est - trueI) <= 1e-9 * Math.abs(trueI) ? 'exact: every term is the same' : `off by ${formatSignificant(Math.abs(est - trueI), 3, 'e')}`}).`,
     tex: `\\int f\\,d\\omega = ${trueTex} = ${tn(trueI)}`,
   });
   const parts: Part[] = [
@@ -260,9 +263,9 @@ export function q2Variant(seed: number): Variant {
       answers: [impAns],
       hint: [
         {
-          text: 'Divide each f by the density per steradian p(ω) (the f/p column of the table), then average:',
+          text: 'Divide each f(ωᵢ) by the density per steradian p(ωᵢ) of the same direction, then average the N terms:',
         },
-        { tex: `\\langle I\\rangle = ${impSum}` },
+        { tex: `\\langle I\\rangle = \\frac{1}{N}\\sum_{i=1}^{N} \\frac{f(X_i)}{p(X_i)}` },
       ],
       steps: [
         { text: '(b) Importance sampling with p(ω), the density per steradian:' },
@@ -301,7 +304,7 @@ export function q2Variant(seed: number): Variant {
     question: 'q2',
     seed,
     title: 'Monte Carlo estimators on the hemisphere',
-    statement: `Estimate ∫ f dω over the upper hemisphere with f(θ, φ) = ${F.fPlain}, from the ${n} directions (θᵢ, φᵢ) below (radians). (a) Treat them as drawn uniformly over the hemisphere: the uniform estimate. (b) Treat them as drawn from p(ω) = ${F.pPlain} with k = ${fmt(F.k, 6)}: the importance-sampled estimate. (c) Which estimator has zero variance for this f?`,
+    statement: `Estimate ∫ f dω over the upper hemisphere with f(θ, φ) = ${F.fPlain}, from the ${n} directions (θᵢ, φᵢ) below (radians). (a) Treat them as drawn uniformly over the hemisphere: the uniform estimate. (b) Treat them as drawn from p(ω) = ${F.pPlain} with k = ${formatSignificant(F.k, 6, 'e')}: the importance-sampled estimate. (c) Which estimator has zero variance for this f?`,
     givens: [
       { name: 'f', label: 'f(θ, φ)', value: F.fText, display: F.fText, tex: `f(\\theta,\\phi) = ${F.fTex}` },
       {
@@ -311,7 +314,7 @@ export function q2Variant(seed: number): Variant {
         display: `k · ${F.pText}`,
         tex: `p(\\omega) = ${F.pTex}`,
       },
-      { name: 'k', label: 'k', value: String(F.k), display: fmt(F.k, 6) },
+      { name: 'k', label: 'k', value: String(F.k), display: formatSignificant(F.k, 6, 'e') },
       {
         name: 'directions',
         label: 'directions (θ, φ), radians',

@@ -12,6 +12,7 @@
  * lower-left node taken for the nearest, (u, v) not normalized by (2π, π), u = arctan(y/x) without
  * the quadrant (atan2).
  */
+import { formatSignificant } from '../core/format';
 import { Rng } from '../core/random';
 import {
   EXAM_LOOKUP,
@@ -27,7 +28,7 @@ import {
 } from '../core/texture';
 import { intIn, numberAnswer, pick, query } from './build';
 import { closeTo, ownNumber } from './follow';
-import { assembleSolution, fmt, roundTo, tn, tp, type Part, type SolutionStep, type Variant } from './model';
+import { assembleSolution, roundTo, tn, tp, type Part, type SolutionStep, type Variant } from './model';
 
 const FLIP: LookupOptions = { ...EXAM_LOOKUP, vflip: true };
 
@@ -204,18 +205,20 @@ export function q3Variant(seed: number): Variant {
 
   const gridText = formatGrid(grid);
   const rows = gridText.split(';').map((r) => r.split(','));
-  const gridTex = `\\begin{array}{c|${'c'.repeat(n)}} ${rows.map((r, k) => `v=${fmt(1 - k * d, 3)} & ${r.join(' & ')}`).join(' \\\\ ')} \\\\ \\hline & ${Array.from({ length: n }, (_, i) => `u=${fmt(i * d, 3)}`).join(' & ')} \\end{array}`;
+  const gridTex = `\\begin{array}{c|${'c'.repeat(n)}} ${rows.map((r, k) => `v=${formatSignificant(1 - k * d, 3, 'e')} & ${r.join(' & ')}`).join(' \\\\ ')} \\\\ \\hline & ${Array.from({ length: n }, (_, i) => `u=${formatSignificant(i * d, 3, 'e')}`).join(' & ')} \\end{array}`;
   const stepTex = (s: typeof st, sv: typeof steps, uu: number, vv: number) => [
     `c_u = \\frac{(${tn(s.u1)} - ${tn(uu)})\\cdot ${tp(s.t01)} + (${tn(uu)} - ${tn(s.u0)})\\cdot ${tp(s.t11)}}{${tn(s.du)}} = ${tn(sv.cu)}`,
     `c_l = \\frac{(${tn(s.u1)} - ${tn(uu)})\\cdot ${tp(s.t00)} + (${tn(uu)} - ${tn(s.u0)})\\cdot ${tp(s.t10)}}{${tn(s.du)}} = ${tn(sv.cl)}`,
     `c = \\frac{(${tn(s.v1)} - ${tn(vv)})\\cdot ${tp(sv.cl)} + (${tn(vv)} - ${tn(s.v0)})\\cdot ${tp(sv.cu)}}{${tn(s.dv)}} = ${tn(sv.c)}`,
   ];
   const intro: SolutionStep[] = [
-    { text: `The nodes sit at u, v = i/${n - 1} (cell size Δ = ${fmt(d, 4)}), v = 0 at the bottom row:` },
+    {
+      text: `The nodes sit at u, v = i/${n - 1} (cell size Δ = ${formatSignificant(d, 4, 'e')}), v = 0 at the bottom row:`,
+    },
     { tex: gridTex },
   ];
   const cellText = (s: typeof st) =>
-    `the cell [${fmt(s.u0, 4)}, ${fmt(s.u1, 4)}] × [${fmt(s.v0, 4)}, ${fmt(s.v1, 4)}]`;
+    `the cell [${formatSignificant(s.u0, 4, 'e')}, ${formatSignificant(s.u1, 4, 'e')}] × [${formatSignificant(s.v0, 4, 'e')}, ${formatSignificant(s.v1, 4, 'e')}]`;
   const uvTex = `u = \\frac{\\operatorname{atan2}(y, x)}{2\\pi} = \\frac{${tn(sp.phi)}}{2\\pi} = ${tn(sp.u)}, \\qquad v = \\frac{\\arccos(z/r)}{\\pi} = \\frac{${tn(sp.theta)}}{\\pi} = ${tn(sp.v)}`;
   const parts: Part[] = [
     {
@@ -224,12 +227,12 @@ export function q3Variant(seed: number): Variant {
       answers: [answers.nearest],
       hint: [
         {
-          text: `Scale to node indices: u·${n - 1} = ${fmt(u * (n - 1), 4)} and v·${n - 1} = ${fmt(v * (n - 1), 4)} (v counted from the bottom row); round each to the nearest whole number.`,
+          text: `Scale to node indices: u·${n - 1} = ${formatSignificant(u * (n - 1), 4, 'e')} and v·${n - 1} = ${formatSignificant(v * (n - 1), 4, 'e')} (v counted from the bottom row); round each to the nearest whole number.`,
         },
       ],
       steps: [
         {
-          text: `(a) Nearest: u·${n - 1} = ${fmt(u * (n - 1), 4)} and v·${n - 1} = ${fmt(v * (n - 1), 4)} round to the node (${fmt(near.nodeU, 4)}, ${fmt(near.nodeV, 4)}), value ${fmt(near.value)}.`,
+          text: `(a) Nearest: u·${n - 1} = ${formatSignificant(u * (n - 1), 4, 'e')} and v·${n - 1} = ${formatSignificant(v * (n - 1), 4, 'e')} round to the node (${formatSignificant(near.nodeU, 4, 'e')}, ${formatSignificant(near.nodeV, 4, 'e')}), value ${formatSignificant(near.value, 6, 'e')}.`,
         },
       ],
     },
@@ -239,7 +242,7 @@ export function q3Variant(seed: number): Variant {
       answers: [answers.bilinear],
       hint: [
         {
-          text: `(${u}, ${v}) lies in ${cellText(st)}. Interpolate along u on its lower row (texels ${fmt(st.t00)}, ${fmt(st.t10)}) and its upper row (${fmt(st.t01)}, ${fmt(st.t11)}), dividing by Δ = ${fmt(d, 4)}:`,
+          text: `(${u}, ${v}) lies in ${cellText(st)}. Interpolate along u on its lower row (texels ${formatSignificant(st.t00, 6, 'e')}, ${formatSignificant(st.t10, 6, 'e')}) and its upper row (${formatSignificant(st.t01, 6, 'e')}, ${formatSignificant(st.t11, 6, 'e')}), dividing by Δ = ${formatSignificant(d, 4, 'e')}:`,
         },
         { tex: stepTex(st, steps, u, v)[1] },
       ],
@@ -249,7 +252,7 @@ export function q3Variant(seed: number): Variant {
         },
         ...stepTex(st, steps, u, v).map((tex) => ({ tex })),
         {
-          text: `Read with v′ = 1 − v (the key accepts this flipped grid convention when it is stated and used throughout) the values of (a) and (b) are ${fmt(nearF.value)} and ${fmt(bilF)}.`,
+          text: `Read with v′ = 1 − v (the key accepts this flipped grid convention when it is stated and used throughout) the values of (a) and (b) are ${formatSignificant(nearF.value, 6, 'e')} and ${formatSignificant(bilF, 6, 'e')}.`,
         },
       ],
     },
@@ -259,17 +262,19 @@ export function q3Variant(seed: number): Variant {
       answers: [answers.sphereU, answers.sphereV, answers.sphereBil],
       hint: [
         {
-          text: `First r = √(x² + y² + z²) = ${fmt(sp.r, 5)}; then the angles φ = atan2(y, x) (in [0, 2π)) and θ = arccos(z/r), normalized:`,
+          text: `First r = √(x² + y² + z²) = ${formatSignificant(sp.r, 5, 'e')}; then the angles φ = atan2(y, x) (in [0, 2π)) and θ = arccos(z/r), normalized:`,
         },
         { tex: `u = \\frac{\\varphi}{2\\pi}, \\qquad v = \\frac{\\theta}{\\pi}` },
       ],
       steps: [
-        { text: `(c) The point (${x}, ${y}, ${z}) has r = ${fmt(sp.r, 5)}:` },
+        { text: `(c) The point (${x}, ${y}, ${z}) has r = ${formatSignificant(sp.r, 5, 'e')}:` },
         { tex: uvTex },
-        { text: `Bilinear lookup at (${fmt(sp.u, 6)}, ${fmt(sp.v, 6)}), in ${cellText(sSt)}:` },
+        {
+          text: `Bilinear lookup at (${formatSignificant(sp.u, 6, 'e')}, ${formatSignificant(sp.v, 6, 'e')}), in ${cellText(sSt)}:`,
+        },
         ...stepTex(sSt, sSteps, sSt.u, sSt.v).map((tex) => ({ tex })),
         {
-          text: `Without the normalization (the angles in radians, clamped to [0, 1]) the lookup would give ${fmt(sBilRaw)}; the key deducts for it.`,
+          text: `Without the normalization (the angles in radians, clamped to [0, 1]) the lookup would give ${formatSignificant(sBilRaw, 6, 'e')}; the key deducts for it.`,
         },
       ],
     },

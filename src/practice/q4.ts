@@ -9,11 +9,12 @@
  * Classic mistakes: F(a) not subtracted; the interval length (b − a) missing or multiplied in the
  * wrong place; p = f used without normalizing; f·p instead of f/p.
  */
+import { formatSignificant } from '../core/format';
 import { Rng } from '../core/random';
 import { importanceEstimate, uniformEstimate } from '../core/estimators';
 import { intIn, numberAnswer, pick, query } from './build';
 import { closeTo, ownNumber } from './follow';
-import { assembleSolution, fmt, roundTo, tn, type Part, type Variant } from './model';
+import { assembleSolution, roundTo, tn, type Part, type Variant } from './model';
 
 type Kind = 'square' | 'cube' | 'quad';
 
@@ -169,18 +170,20 @@ export function q4Variant(seed: number): Variant {
       answers: [uni],
       hint: [
         {
-          text: `The uniform density on [${a}, ${b}] is p = 1/(b − a) = ${fmt(1 / L, 6)}; evaluate f at each sample:`,
+          text: `The uniform density on [${a}, ${b}] is p = 1/(b − a) = ${formatSignificant(1 / L, 6, 'e')}; evaluate f at each sample:`,
         },
         { tex: fTable },
       ],
       steps: [
-        { text: `(b) Uniform density p = 1/(b − a) = ${fmt(1 / L, 6)}; the samples give f(xᵢ):` },
+        {
+          text: `(b) Uniform density p = 1/(b − a) = ${formatSignificant(1 / L, 6, 'e')}; the samples give f(xᵢ):`,
+        },
         { tex: fTable },
         {
           tex: `\\begin{aligned} \\langle I\\rangle &= \\frac{1}{${n}}\\sum \\frac{f(x_i)}{p} = \\frac{${L}}{${n}}\\sum f(x_i) \\\\ &= \\frac{${L}}{${n}}\\,(${fv.map((x) => tn(x)).join(' + ')}) \\\\ &= ${tn(uniform)} \\end{aligned}`,
         },
         {
-          text: `The exact value is I = ${fmt(I, 6)}: this estimate is off by ${fmt(Math.abs(uniform - I), 3)}.`,
+          text: `The exact value is I = ${formatSignificant(I, 6, 'e')}: this estimate is off by ${formatSignificant(Math.abs(uniform - I), 3, 'e')}.`,
         },
       ],
     },
@@ -194,7 +197,9 @@ export function q4Variant(seed: number): Variant {
         },
       ],
       steps: [
-        { text: `(c) Importance sampling with p(x) = f(x)/I = ${fn.text}/${fmt(I, 6)}, proportional to f:` },
+        {
+          text: `(c) Importance sampling with p(x) = f(x)/I = ${fn.text}/${formatSignificant(I, 6, 'e')}, proportional to f:`,
+        },
         { tex: `\\frac{f(x_i)}{p(x_i)} = \\frac{f(x_i)}{f(x_i)/I} = I = ${tn(I)}\\ \\text{for every } i` },
         { tex: `\\langle I\\rangle = ${tn(importance)}\\ \\text{(zero variance)}` },
       ],

@@ -1,19 +1,21 @@
 /**
- * Q5 variants: a ray o + t d and a sphere (centre c, radius r) with small integer coordinates, drawn
+ * Q5 variants: a ray o + t d and a sphere (centre C, radius r) with small integer coordinates, drawn
  * so every case appears (two hits, origin inside, sphere behind, miss, tangent). Expected values come
- * from the core's intersectRaySphere (the ray–sphere scene's routine, textbook method): a = d·d, b = 2 d·(o − c),
- * c = |o − c|² − r², Δ = b² − 4ac, the roots t0 ≤ t1, t_hit (nearest root ≥ 0) and the case.
+ * from the core's intersectRaySphere (the ray–sphere scene's routine, textbook method): a = d·d, b = 2 d·(o − C),
+ * c = |o − C|² − r², Δ = b² − 4ac, the roots t0 ≤ t1, t_hit (nearest root ≥ 0) and the case.
  * With integer inputs a, b, c and Δ are exact in double precision.
- * Classic mistakes: the sign slip in b (d·(c − o)), b without its 2, r not squared, Δ/4 (the half-b
+ * C is the centre, c the constant term of the quadratic (the page keeps the two apart).
+ * Classic mistakes: the sign slip in b (d·(C − o)), b without its 2, r not squared or − r² left
+ * out of c, Δ/4 (the half-b
  * form), b² + 4ac, roots over a instead of 2a, the negative root chosen as the hit, the far root.
  */
+import { formatSignificant } from '../core/format';
 import { Rng } from '../core/random';
 import { intersectRaySphere, type RaySphereCase, type RaySphereHit, type Vec3 } from '../core/geometry';
 import { choiceAnswer, intIn, numberAnswer, pick, query } from './build';
 import { closeTo, ownNumber } from './follow';
 import {
   assembleSolution,
-  fmt,
   tn,
   tp,
   vecDisplay,
@@ -107,7 +109,7 @@ export function q5Variant(seed: number): Variant {
   const slipped = hit ? [-t1!, -t0!] : null; // roots of a t² − b t + c
   const slippedHit = slipped ? (slipped[0] >= 0 ? slipped[0] : slipped[1] >= 0 ? slipped[1] : null) : null;
   const signMsg =
-    'Sign slip in b: b = 2 d·(o − c), with f = o − c pointing from the centre to the ray origin (here you used c − o).';
+    'Sign slip in b: b = 2 d·(o − C), with f = o − C pointing from the centre C to the ray origin (here you used C − o).';
   // t₀ and t₁ are asked alike: the same two slips (b's sign, the missing 2 in 2a) named for each
   const rootAnswer = (k: 0 | 1, t: number | null) =>
     numberAnswer(
@@ -147,7 +149,7 @@ export function q5Variant(seed: number): Variant {
           id: 'b-no-2',
           value: b / 2,
           message:
-            'That is d·(o − c) = b/2 (the half-b form); in a t² + b t + c the coefficient is b = 2 d·(o − c).',
+            'That is d·(o − C) = b/2 (the half-b form); in a t² + b t + c the coefficient is b = 2 d·(o − C).',
         },
       ],
     ),
@@ -156,7 +158,14 @@ export function q5Variant(seed: number): Variant {
       'c',
       cc,
       [],
-      [{ id: 'r-not-squared', value: ff - P.r, message: 'c = |o − c|² − r²: the radius must be squared.' }],
+      [
+        { id: 'r-not-squared', value: ff - P.r, message: 'c = |o − C|² − r²: the radius must be squared.' },
+        {
+          id: 'forgot-r-squared',
+          value: ff,
+          message: `That is |o − C|² = ${ff} alone: the constant term is c = |o − C|² − r², so subtract r² = ${P.r * P.r}.`,
+        },
+      ],
     ),
     numberAnswer(
       'discriminant',
@@ -220,8 +229,8 @@ export function q5Variant(seed: number): Variant {
   const dot = (u: Vec3, v: Vec3) =>
     `${tp(u[0])}\\cdot${tp(v[0])} + ${tp(u[1])}\\cdot${tp(v[1])} + ${tp(u[2])}\\cdot${tp(v[2])}`;
   const stepsA: SolutionStep[] = [
-    { text: 'Substitute p(t) = o + t d into |p − c|² = r², with f = o − c:' },
-    { tex: `f = o - c = ${vecDisplay(f)}` },
+    { text: 'Substitute p(t) = o + t d into |p − C|² = r² (C the centre), with f = o − C:' },
+    { tex: `f = o - C = ${vecDisplay(f)}` },
     { tex: `(d\\cdot d)\\,t^2 + 2\\,(d\\cdot f)\\,t + (f\\cdot f - r^2) = 0` },
     { tex: `a = d\\cdot d = ${dot(P.d, P.d)} = ${tn(a)}` },
     { tex: `b = 2\\,d\\cdot f = 2\\,(${dot(P.d, f)}) = ${tn(b)}` },
@@ -234,7 +243,7 @@ export function q5Variant(seed: number): Variant {
       ? [{ tex: rootsTex }, { tex: `t_0 = ${tn(t0!)},\\quad t_1 = ${tn(t1!)}` }]
       : [{ text: 'Δ < 0: no real root, the ray misses (t0, t1 and t_hit: none).' }]),
     {
-      text: `${caseWhy(h)} ${tHit !== null ? `t_hit = ${fmt(tHit)}.` : 't_hit: none.'} A hit needs Δ ≥ 0 and t ≥ 0.`,
+      text: `${caseWhy(h)} ${tHit !== null ? `t_hit = ${formatSignificant(tHit, 6, 'e')}.` : 't_hit: none.'} A hit needs Δ ≥ 0 and t ≥ 0.`,
     },
   ];
   const parts: Part[] = [
@@ -243,9 +252,9 @@ export function q5Variant(seed: number): Variant {
       prompt: 'The quadratic a t² + b t + c = 0 and its discriminant.',
       answers: answers.slice(0, 4),
       hint: [
-        { text: 'Write f = o − c and expand |f + t d|² = r²:' },
+        { text: 'Write f = o − C (C the centre) and expand |f + t d|² = r²:' },
         {
-          tex: `f = o - c = ${vecDisplay(f)}, \\qquad (d\\cdot d)\\,t^2 + 2\\,(d\\cdot f)\\,t + (f\\cdot f - r^2) = 0`,
+          tex: `f = o - C = ${vecDisplay(f)}, \\qquad (d\\cdot d)\\,t^2 + 2\\,(d\\cdot f)\\,t + (f\\cdot f - r^2) = 0`,
         },
       ],
       steps: stepsA,
@@ -261,7 +270,7 @@ export function q5Variant(seed: number): Variant {
         {
           text: 'The sign of Δ says how many real roots there are; if Δ ≥ 0 use the quadratic formula, then keep only roots with t ≥ 0:',
         },
-        { tex: hit ? rootsTex : `\\Delta = ${tn(D)}` },
+        { tex: `t_{0,1} = \\frac{-b \\mp \\sqrt{\\Delta}}{2a}` },
       ],
       steps: stepsB,
     },
@@ -345,11 +354,11 @@ export function q5Variant(seed: number): Variant {
     question: 'q5',
     seed,
     title: 'Ray–sphere intersection',
-    statement: `The ray p(t) = o + t d with o = ${vecDisplay(P.o)}, d = ${vecDisplay(P.d)} and the sphere with centre c = ${vecDisplay(P.c)} and radius r = ${P.r}. Write |o + t d − c|² = r² as a t² + b t + c = 0 and give a, b, c, the discriminant Δ, the roots t0 ≤ t1, the hit t_hit (nearest root with t ≥ 0) and the case.`,
+    statement: `The ray p(t) = o + t d with o = ${vecDisplay(P.o)}, d = ${vecDisplay(P.d)} and the sphere with centre C = ${vecDisplay(P.c)} and radius r = ${P.r}. Write |o + t d − C|² = r² as a t² + b t + c = 0 and give a, b, c, the discriminant Δ, the roots t0 ≤ t1, the hit t_hit (nearest root with t ≥ 0) and the case.`,
     givens: [
       { name: 'o', label: 'ray origin o', value: vecValue(P.o), display: vecDisplay(P.o) },
       { name: 'd', label: 'direction d', value: vecValue(P.d), display: vecDisplay(P.d) },
-      { name: 'c', label: 'centre c', value: vecValue(P.c), display: vecDisplay(P.c) },
+      { name: 'c', label: 'centre C', value: vecValue(P.c), display: vecDisplay(P.c) },
       { name: 'r', label: 'radius r', value: String(P.r), display: String(P.r) },
     ],
     parts,

@@ -10,12 +10,13 @@
  * Classic mistakes: dω without cos θ_l; r not squared; the receiver's cos θ in place of cos θ_l;
  * the estimator without |A| (p_A = 1/|A|), without cos θ_l, or with f = ρ instead of ρ/π.
  */
+import { formatSignificant } from '../core/format';
 import { Rng } from '../core/random';
 import { patchSolidAngleApprox } from '../core/geometry';
 import { areaLightTerms, makeRectLight, type AreaLightSetup, type RectLight } from '../core/lights';
 import { intIn, numberAnswer, pick, query } from './build';
 import { closeTo, ownNumber } from './follow';
-import { assembleSolution, fmt, tn, vecDisplay, vecValue, type Part, type Variant } from './model';
+import { assembleSolution, tn, vecDisplay, vecValue, type Part, type Variant } from './model';
 
 type V3 = [number, number, number];
 
@@ -197,7 +198,7 @@ export function q6Variant(seed: number): Variant {
         {
           id: 'no-area',
           value: estimate / A,
-          message: `Sampling the light uniformly has p_A = 1/|A|, so the sum is multiplied by |A| = ${fmt(A)}.`,
+          message: `Sampling the light uniformly has p_A = 1/|A|, so the sum is multiplied by |A| = ${formatSignificant(A, 6, 'e')}.`,
         },
         {
           id: 'no-cos-l',
@@ -243,7 +244,7 @@ export function q6Variant(seed: number): Variant {
       answers: answers.slice(3),
       hint: [
         {
-          text: `Sampling the light uniformly by area has p_A = 1/|A| with |A| = ${fmt(A)}. The solid angle of each sample’s area is dω = dA cos θ_l / r², so each term is:`,
+          text: `Sampling the light uniformly by area has p_A = 1/|A| with |A| = ${formatSignificant(A, 6, 'e')}. The solid angle of each sample’s area is dω = dA cos θ_l / r², so each term is:`,
         },
         {
           tex: `\\frac{f\\,L\\cos\\theta\\,\\cos\\theta_l / r^2}{p_A} = |A|\\,\\frac{\\rho}{\\pi}\\,L\\,\\frac{\\cos\\theta\\,\\cos\\theta_l}{r^2}`,
@@ -251,7 +252,7 @@ export function q6Variant(seed: number): Variant {
       ],
       steps: [
         {
-          text: `(b) Uniform area sampling, p_A = 1/|A| with |A| = ${fmt(A)}, f = ρ/π = ${fmt(f, 6)}, L = ${P.L}. Per point: cos θ (floor normal +z), cos θ_l (light normal ${vecDisplay(g.light.normal, 4)}), r², and the term |A| f L cos θ cos θ_l / r²:`,
+          text: `(b) Uniform area sampling, p_A = 1/|A| with |A| = ${formatSignificant(A, 6, 'e')}, f = ρ/π = ${formatSignificant(f, 6, 'e')}, L = ${P.L}. Per point: cos θ (floor normal +z), cos θ_l (light normal ${vecDisplay(g.light.normal, 4)}), r², and the term |A| f L cos θ cos θ_l / r²:`,
         },
         {
           tex: `\\begin{array}{ccccc} x_i & \\cos\\theta & \\cos\\theta_l & r^2 & \\text{term} \\\\ \\hline ${rows.join(' \\\\ ')} \\end{array}`,

@@ -9,7 +9,7 @@
  * - follow-through: an answer that is not correct, but is what the student's own earlier (wrong)
  *   answers give, is `consistent` and earns the stated partial credit.
  */
-import { checkChoice, classifyFormula, classifyTyped, normaliseInput, parseNumberAnswer } from './check';
+import { checkChoice, classifyTypedFormula, classifyTyped, normaliseInput, parseNumberAnswer } from './check';
 import type { Verdict } from './check';
 import { compileExpression } from '../core/expr';
 import { allAnswers, type AnswerSpec, type OwnValue, type Part, type Variant } from './model';
@@ -75,9 +75,10 @@ async function gradeOne(a: AnswerSpec, text: string): Promise<Graded> {
     }
     if (a.kind === 'formula') {
       const raw = text.trim();
-      const r = await compileExpression(normaliseInput(raw), a.variables);
+      const src = normaliseInput(raw);
+      const r = await compileExpression(src, a.variables);
       if (!r.ok) return { verdict: { value: 'invalid', message: `Cannot read that formula: ${r.message}.` } };
-      return { verdict: classifyFormula(a, r.fn), own: r.fn };
+      return { verdict: await classifyTypedFormula(a, src, r.fn), own: r.fn };
     }
     const verdict = checkChoice(a, text);
     return {

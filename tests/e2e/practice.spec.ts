@@ -21,7 +21,7 @@ import {
   type QuestionId,
   type Variant,
 } from '../../src/practice/model';
-import { q1Params } from '../../src/practice/q1';
+import { q1Params } from '../../src/practice/q1Density';
 
 /** What a careful student types: numbers to 5 significant figures, formulas as expected, choices. */
 function studentText(a: AnswerSpec): string {
@@ -417,6 +417,13 @@ test('one part at a time: checking one part reveals no other part’s answer; hi
   await expect(page.getByTestId('expected-cdf-theta')).toHaveCount(0);
   // Show answer for (d): (d)'s expected answers and step, still nothing of (b) or (c)
   await page.getByTestId('show-answer-d').click();
+  // it asks first: nothing is shown until the confirmation, and "Keep trying" keeps the part open
+  await expect(page.getByTestId('expected-theta-of-xi')).toHaveCount(0);
+  await page.getByTestId('cancel-show-answer-d').click();
+  await expect(page.getByTestId('show-answer-d')).toBeFocused();
+  await page.getByTestId('show-answer-d').click();
+  await expect(page.getByTestId('confirm-show-answer-d')).toBeFocused();
+  await page.getByTestId('confirm-show-answer-d').click();
   await expect(page.getByTestId('expected-theta-of-xi')).toHaveAttribute('data-value', /acos/);
   await expect(page.getByTestId('expected-phi-of-xi')).toBeVisible();
   await expect(page.getByTestId('part-solution-d')).toBeVisible();

@@ -14,7 +14,16 @@ import {
   type NumberAnswer,
 } from '../../src/practice/model';
 import { QUESTIONS } from '../../src/practice/questions';
-import { gradeAnswers } from '../../src/practice/session';
+import { applyCheck, gradeAnswers, newSession } from '../../src/practice/session';
+import { q1Variant } from '../../src/practice/q1';
+import { q1Params, type Q1Params } from '../../src/practice/q1Density';
+
+/** The first seed whose Q1 parameters satisfy `ok`. */
+function seedWith(ok: (p: Q1Params) => boolean): number {
+  let seed = 0;
+  while (!ok(q1Params(seed))) seed++;
+  return seed;
+}
 
 const numSpec: NumberAnswer = {
   kind: 'number',
@@ -122,6 +131,28 @@ describe('formulas', () => {
     expect(
       (await checkFormula(spec, '2*cot(theta)'.replace('cot(theta)', 'cos(theta)/sin(theta)'))).value,
     ).toBe('mistake:inverted-jacobian');
+  });
+  it('the key’s first version 2·cot θ is read (cot, sec, csc are whitelisted) and named', async () => {
+    expect((await checkFormula(spec, '2*cot(theta)')).value).toBe('mistake:inverted-jacobian');
+    expect((await checkFormula(spec, '2/(sec(theta)*csc(theta))')).value).toBe('correct');
+  });
+  it('a decimal constant in a formula is read at its precision, as a number is', async () => {
+    // Q1 with a = 1: p(φ) = e^φ/(e^(2π) − 1) = 0.00187094… e^φ
+    const v = q1Variant(seedWith((p) => p.a.p === 1 && p.a.q === 1));
+    const pPhi = allAnswers(v).find((a) => a.name === 'p-phi') as FormulaAnswer;
+    const two = await checkFormula(pPhi, '0.0019*exp(phi)');
+    expect(two.value).toBe('invalid');
+    expect(two.message).toMatch(/0\.0019 has 2 significant figures: give at least 3/);
+    expect((await checkFormula(pPhi, '0.00187*exp(phi)')).value).toBe('correct');
+    expect((await checkFormula(pPhi, '0.001871*e^phi')).value).toBe('correct');
+    expect((await checkFormula(pPhi, '0.001870*e^phi')).value).toBe('incorrect');
+    expect((await checkFormula(pPhi, '0.00188*exp(phi)')).value).toBe('incorrect');
+    // graded on the page: asked for more figures, so the attempt is not counted
+    const verdicts = await gradeAnswers(v, { 'p-phi': '0.0019*exp(phi)' });
+    expect(verdicts['p-phi']?.value).toBe('invalid');
+    const s = applyCheck(v, newSession(v), { 'p-phi': '0.0019*exp(phi)' }, verdicts);
+    expect(s.parts.b.attempts).toBe(0);
+    expect(s.parts.b.wrong).toBe(0);
   });
   it('bad syntax and unknown names are invalid with a message', async () => {
     for (const bad of ['sin(theta', 'x^2', 'foo(theta)', 'theta = 1', '']) {

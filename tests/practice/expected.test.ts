@@ -5,7 +5,8 @@
  */
 import { describe, expect, it } from 'vitest';
 import { all, create, type BigNumber } from 'mathjs';
-import { q1Closed, q1Params, q1Variant } from '../../src/practice/q1';
+import { q1Variant } from '../../src/practice/q1';
+import { q1Closed, q1Params } from '../../src/practice/q1Density';
 import { q2Params, q2Variant } from '../../src/practice/q2';
 import { q3Params, q3Variant } from '../../src/practice/q3';
 import { q4Params, q4Variant } from '../../src/practice/q4';

@@ -4,7 +4,8 @@
  * credit, and is not confused with a right answer or with an answer right for nothing.
  */
 import { describe, expect, it } from 'vitest';
-import { q1Params, q1Variant } from '../../src/practice/q1';
+import { q1Variant } from '../../src/practice/q1';
+import { q1Params } from '../../src/practice/q1Density';
 import { q3Variant } from '../../src/practice/q3';
 import { q4Params, q4Variant, q4Functions } from '../../src/practice/q4';
 import { q5Variant } from '../../src/practice/q5';

@@ -6,16 +6,17 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { QUESTIONS } from '../../src/practice/questions';
-import { q1Params, q1Variant } from '../../src/practice/q1';
+import { q1Variant } from '../../src/practice/q1';
+import { q1Params } from '../../src/practice/q1Density';
 import { allAnswers, type NumberAnswer, type Variant } from '../../src/practice/model';
 import {
   checkAnswer,
   checkChoice,
   classifyFormula,
-  decimalPrecision,
   parseNumberAnswer,
   checkNumber,
 } from '../../src/practice/check';
+import { decimalPrecision } from '../../src/practice/decimals';
 
 const RUNS = 3000;
 

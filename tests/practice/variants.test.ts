@@ -112,6 +112,7 @@ const REQUIRED: Record<string, string[]> = {
     'b/b-sign',
     'b/b-no-2',
     'c/r-not-squared',
+    'c/forgot-r-squared',
     'discriminant/quarter-discriminant',
     't0/b-sign',
     't0/no-2a',

@@ -196,3 +196,23 @@ describe('compileExpression cache', () => {
     if (ra.ok && rc.ok) expect(ra.fn(1, 2)).not.toBe(rc.fn(1, 2));
   });
 });
+
+describe('secant, cosecant and cotangent', () => {
+  it('parse and evaluate as 1/cos, 1/sin, 1/tan (the key writes 2·cot θ)', async () => {
+    const r = await ok('2*cot(theta) + sec(phi) - csc(theta / 2)');
+    for (const [t, p] of [
+      [0.3, 1.1],
+      [1.2, -0.4],
+    ])
+      expect(r.fn(t, p)).toBeCloseTo(2 / Math.tan(t) + 1 / Math.cos(p) - 1 / Math.sin(t / 2), 12);
+    expect((await ok('cot(0.5)')).fn(0, 0)).toBe(1 / Math.tan(0.5));
+  });
+
+  it('typeset as the upright operators \\sec, \\csc, \\cot, which KaTeX speaks by name', async () => {
+    const tex = await toTex('2*cot(theta) + sec(theta) * csc(theta)');
+    for (const op of ['\\cot', '\\sec', '\\csc']) expect(tex).toContain(op);
+    const { default: katex } = await import('katex');
+    const mathml = katex.renderToString(tex, { output: 'mathml' });
+    for (const name of ['cot', 'sec', 'csc']) expect(mathml).toContain(`<mi>${name}</mi>`);
+  });
+});
