@@ -8,7 +8,8 @@ import type { Page } from '@playwright/test';
 import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
 import { slowdown } from './longTasks';
-import { computeDrawStats, lobeFromParams } from '../../src/scenes/hemisphere/model';
+import { computeDrawStats } from '../../src/scenes/hemisphere/drawStats';
+import { lobeFromParams } from '../../src/scenes/hemisphere/lobe';
 import { examLobeK } from '../../src/core/sampling';
 import type { LobeId } from '../../src/scenes/hemisphere/params';
 

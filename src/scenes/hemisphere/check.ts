@@ -5,7 +5,7 @@
  */
 import type { ParamProblem } from '../../kit/params';
 import { compileThetaPhi } from './expr';
-import { lobeFromParams } from './model';
+import { lobeFromParams } from './lobe';
 import type { HemisphereParams } from './params';
 
 export async function checkValues(params: HemisphereParams): Promise<ParamProblem[]> {

@@ -7,27 +7,14 @@ import type { SceneProps } from '../../kit/scene';
 import { ExamQuestion, useCompiled, Notice, SceneLayout } from '../../ui';
 import { useWorkerJob, workerFactory } from '../../workers';
 import type { McTasks } from './mc.worker';
-import {
-  EXAM_A,
-  EXAM_B,
-  EXAM_F,
-  EXAM_SAMPLES,
-  SYNC_MAX_N,
-  checkLimits,
-  choosePdf,
-  comparedStrategies,
-  curves,
-  drawnProblem,
-  exactIntegral,
-  importanceLane,
-  isExamConfig,
-  keyComparison,
-  RACE_MAX,
-  sampleTable,
-  squareShift,
-  stderrIsValid,
-  type Fn1,
-} from './model';
+import { EXAM_A, EXAM_B, EXAM_F, EXAM_SAMPLES, isExamConfig, keyComparison } from './exam';
+import { SYNC_MAX_N, drawnProblem, stderrIsValid } from './drawnEstimate';
+import { checkLimits, exactIntegral, squareShift, type Fn1 } from './integral';
+import { choosePdf, importanceLane } from './pdfChoice';
+import { comparedStrategies } from './compared';
+import { curves } from './curves';
+import { RACE_MAX } from './race';
+import { sampleTable } from './sampleTable';
 import { MAX_N, type McSchema } from './params';
 import type { McEstimate, Problem1D } from '../../core/estimators';
 import { rmseAt, type ProblemArgs } from './jobs';

@@ -3,7 +3,7 @@
  * the code the scene runs, replaces by the exam's [0, 2].
  */
 import type { ParamProblem } from '../../kit/params';
-import { checkLimits } from './model';
+import { checkLimits } from './integral';
 import type { ParamValues } from '../../kit/params';
 import type { McSchema } from './params';
 

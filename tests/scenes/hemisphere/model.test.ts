@@ -1,13 +1,10 @@
 import { describe, expect, it } from 'vitest';
-import {
-  computeDrawStats,
-  exactIntegral,
-  invertedJacobianSeries,
-  makeLobe,
-  marginalHistograms,
-  drawDirections,
-  repeatEstimates,
-} from '../../../src/scenes/hemisphere/model';
+import { computeDrawStats, drawDirections } from '../../../src/scenes/hemisphere/drawStats';
+import { exactIntegral } from '../../../src/scenes/hemisphere/integral';
+import { invertedJacobianSeries } from '../../../src/scenes/hemisphere/examChecks';
+import { makeLobe } from '../../../src/scenes/hemisphere/lobe';
+import { marginalHistograms } from '../../../src/scenes/hemisphere/sampleCheck';
+import { repeatEstimates } from '../../../src/scenes/hemisphere/q2Estimates';
 import { tabulateHemisphereDensity, examLobeK } from '../../../src/core/sampling';
 import { LOBES } from '../../../src/scenes/hemisphere/params';
 

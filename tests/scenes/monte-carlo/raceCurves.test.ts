@@ -6,7 +6,7 @@
  */
 import { describe, expect, it } from 'vitest';
 import { squarePdf1D } from '../../../src/core/sampling/pdf1d';
-import { raceAt, racePoints, raceTrack } from '../../../src/scenes/monte-carlo/model';
+import { raceAt, racePoints, raceTrack } from '../../../src/scenes/monte-carlo/race';
 import { raceCurves } from '../../../src/scenes/monte-carlo/view/RaceFigure';
 
 const f = (x: number) => (x + 2) ** 2;

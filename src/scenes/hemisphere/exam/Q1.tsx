@@ -7,7 +7,7 @@ import type { ReactNode } from 'react';
 import { ExamPart, Derivation as DerivationBlock, KeyNote } from '../../../ui/exam';
 import { Answer } from '../view/Answer';
 import { MathTex, Readout, formatNumber } from '../../../ui';
-import { examInversion, type ExamChecks } from '../model';
+import { examInversion, type ExamChecks } from '../examChecks';
 import { texNum } from '../view/tex';
 import { Steps } from '../view/Steps';
 

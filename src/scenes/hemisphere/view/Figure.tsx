@@ -16,7 +16,8 @@ import {
 } from '../../../ui';
 import { formatCount } from '../../../ui/format';
 import { fillSequence2D } from '../../../core/random';
-import { animDuration, animFrame, type AnimFrame, type AnimKind, type Lobe } from '../model';
+import { animDuration, animFrame, type AnimFrame, type AnimKind } from '../animation';
+import type { Lobe } from '../lobe';
 import { Stage } from '../../../ui/stage';
 import { FigureCaption, FigureReadouts } from './FigureText';
 import { bindControls } from '../../../ui/paramControls';

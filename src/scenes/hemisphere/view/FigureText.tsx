@@ -5,7 +5,9 @@
 import { useMemo } from 'react';
 import { formatNumber, Readout, useCoarsePosition, type Timeline } from '../../../ui';
 import type { SequenceKind } from '../../../core/random';
-import { animFrame, examInversion, type AnimKind, type Lobe } from '../model';
+import { animFrame, type AnimKind } from '../animation';
+import { examInversion } from '../examChecks';
+import type { Lobe } from '../lobe';
 import type { LobeId } from '../params';
 
 /** What the figure samples and animates (the figure's and its texts' common inputs). */

@@ -29,8 +29,8 @@ import { clampExponent, fmt, linearScale, logScale, type Scale } from '../../../
 import { Axes, H, M, path, PH, PW, W } from './raceSvg';
 import { RaceHistogram } from './RaceHistogram';
 import { raceWords } from './RaceData';
+import { gridAt } from '../curves';
 import {
-  gridAt,
   RACE_DURATION,
   RACE_MAX,
   raceHeadAt,
@@ -38,7 +38,7 @@ import {
   racePoints,
   type LaneState,
   type RaceTrack,
-} from '../model';
+} from '../race';
 
 // the shared strategy colours (src/ui/palette): 3 : 1 in both themes, apart under colour-vision deficiencies
 const C_U = STRATEGY_COLOR.uniform;
