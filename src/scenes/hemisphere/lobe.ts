@@ -25,6 +25,7 @@ import {
   type TabulateResult,
 } from '../../core/sampling';
 import { superscript } from '../../core/format';
+import type { ParamProblem } from '../../kit/params';
 import type { Integrand } from './integral';
 import type { LobeId } from './params';
 
@@ -52,17 +53,20 @@ export interface Lobe {
 /**
  * The lobe the parameters ask for — the one builder the page, the worker and the tests share.
  * Built-in ids directly; 'custom' by tabulating the typed density (`density`, null while it does
- * not compile), with the tabulation's verdict in `tab` (null when nothing was tabulated).
+ * not compile), with the tabulation's verdict in `tab` (null when nothing was tabulated) and, when
+ * the typed density is not one, the problem the shell reports for `pdf`.
  */
 export function lobeFromParams(
   id: LobeId,
   exponent: number,
   density?: Integrand | null,
-): { lobe: Lobe | null; tab: TabulateResult | null } {
-  if (id !== 'custom') return { lobe: makeLobe(id, exponent), tab: null };
-  if (!density) return { lobe: null, tab: null };
+): { lobe: Lobe | null; tab: TabulateResult | null; problem: ParamProblem | null } {
+  if (id !== 'custom') return { lobe: makeLobe(id, exponent), tab: null, problem: null };
+  if (!density) return { lobe: null, tab: null, problem: null };
   const tab = tabulateHemisphereDensity(density);
-  return { lobe: tab.ok ? makeLobe('custom', exponent, tab.lobe) : null, tab };
+  if (!tab.ok)
+    return { lobe: null, tab, problem: { name: 'pdf', message: `is not a valid density: ${tab.message}` } };
+  return { lobe: makeLobe('custom', exponent, tab.lobe), tab, problem: null };
 }
 
 /** A built-in lobe for the exponent n (only Phong reads it): every column is a core function. */

@@ -10,6 +10,6 @@ import type { McSchema } from './params';
 type MonteCarloParams = ParamValues<McSchema>;
 
 export function checkValues(params: MonteCarloParams): ParamProblem[] {
-  const lim = checkLimits(params.a, params.b);
-  return lim.message ? [{ name: 'b', message: `and a: ${lim.message}` }] : [];
+  const { problem } = checkLimits(params.a, params.b);
+  return problem ? [problem] : [];
 }

@@ -4,19 +4,23 @@
  */
 import { integrate1D, INTEGRATION_METHOD } from '../../core/verify/integrate1d';
 import { formatPlain } from '../../core/format';
+import type { ParamProblem } from '../../kit/params';
 import { EXAM_A, EXAM_B } from './exam';
 
 /** A real function of x (compiled user expression or closed form). */
 export type Fn1 = (x: number) => number;
 
-/** Default limits used when the URL's are unusable. */
-export function checkLimits(a: number, b: number): { a: number; b: number; message: string | null } {
-  if (Number.isFinite(a) && Number.isFinite(b) && a < b) return { a, b, message: null };
-  return {
-    a: EXAM_A,
-    b: EXAM_B,
-    message: `The limits must satisfy a < b (got a = ${a}, b = ${b}); using [${EXAM_A}, ${EXAM_B}].`,
-  };
+/**
+ * The limits the scene uses: a and b as given when a < b, else the exam's [0, 2], with the message
+ * the page shows and the problem the shell reports (named after b, the limit read last).
+ */
+export function checkLimits(
+  a: number,
+  b: number,
+): { a: number; b: number; message: string | null; problem: ParamProblem | null } {
+  if (Number.isFinite(a) && Number.isFinite(b) && a < b) return { a, b, message: null, problem: null };
+  const message = `The limits must satisfy a < b (got a = ${a}, b = ${b}); using [${EXAM_A}, ${EXAM_B}].`;
+  return { a: EXAM_A, b: EXAM_B, message, problem: { name: 'b', message: `and a: ${message}` } };
 }
 
 /**

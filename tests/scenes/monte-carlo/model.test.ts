@@ -86,6 +86,8 @@ describe('model', () => {
     expect(lin.ok).toBe(false);
     expect(choosePdf('custom', 'x', (x) => x, 0, 1, null).ok).toBe(false);
     expect(checkLimits(2, 1).message).toMatch(/a < b/);
+    expect(checkLimits(2, 1).problem?.name).toBe('b');
+    expect(checkLimits(0, 1).problem).toBeNull();
   });
 
   it('curves and histogram', () => {
