@@ -1,18 +1,18 @@
 /**
  * The 3D hemisphere, driven by the shared timeline (src/ui/timeline.ts): what it draws at position
- * t is `animFrame` (../animation) (a pure function of the parameters, the seed and t), the view only
- * draws it.
+ * t is ../animation's `animFrame` (a pure function of the parameters, the seed and t).
  *
  * - Warp morph (`anim=warp`): every sample and the (ξ₁, ξ₂) grid travel from the unit square (laid
  *   in the base plane, [−1, 1]²) to their directions on the hemisphere as t goes 0 → 1. The points'
  *   mix is done in the vertex shader (one uniform per frame, no per-point work on the CPU); the
- *   grid is mixed on the CPU with the model's `morphPoint` (a few thousand vertices).
+ *   grid is mixed on the CPU with `morphPoint` (a few thousand vertices).
  * - Growth (`anim=grow`): the first `growCount(n, t)` samples are drawn (geometric, 0 → n).
  *
  * The preallocated buffers (./pointBuffers) receive the points as the worker streams them
  * (../pointStream: the main thread only copies each chunk in), and at most UPLOAD_PER_FRAME new
- * points go to the GPU per frame; filled points are kept, so scrubbing back and forth costs nothing. Nothing renders
- * while the timeline is paused and the buffers are filled, unless the camera moves.
+ * points go to the GPU per frame; filled points are kept, so scrubbing back and forth costs
+ * nothing. Nothing renders while the timeline is paused and the buffers are filled, unless the
+ * camera moves.
  */
 import { formatCount } from '../../../ui/format';
 import { useEffect, useRef } from 'react';
