@@ -363,8 +363,7 @@ export function HemisphereView({
     };
   };
 
-  // the point set changed: the buffers start over, the grid is rebuilt
-  // (the latest closures in refs, so that the effects run on their own dependencies only)
+  // the point set changed: the buffers start over, the grid is rebuilt (latest closures in refs)
   const onPointsChange = useRef(() => {});
   onPointsChange.current = () => {
     const o = objs.current;
