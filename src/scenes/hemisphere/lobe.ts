@@ -26,7 +26,7 @@ import {
 } from '../../core/sampling';
 import { superscript } from '../../core/format';
 import type { ParamProblem } from '../../kit/params';
-import type { Integrand } from './integral';
+import { checkedIntegral, type Integrand } from './integral';
 import type { LobeId } from './params';
 
 /** A sampling density on the hemisphere, as the scene uses it: sampler, pdf and marginals. */
@@ -36,6 +36,13 @@ export interface Lobe {
   label: string;
   /** Normalization constant of p(ω) as the derivation defines it (k of k·(shape)). */
   k: number;
+  /**
+   * Significant digits of k that are right: 8 (the readout's) for the closed forms and for a typed
+   * density whose adaptive quadrature met its tolerance, fewer when its error estimate is larger.
+   */
+  kDigits: number;
+  /** How k was obtained, in a few words (for the readout's note). */
+  kSource: string;
   /** Batched sampler: (ξ₁, ξ₂) pairs in u → unit vectors in out, i ∈ [start, n). */
   sampleBatch: (u: Float64Array, out: Float64Array, n: number, start?: number) => void;
   /** One sample (for the warped grid). */
@@ -66,11 +73,32 @@ export function lobeFromParams(
   const tab = tabulateHemisphereDensity(density);
   if (!tab.ok)
     return { lobe: null, tab, problem: { name: 'pdf', message: `is not a valid density: ${tab.message}` } };
-  return { lobe: makeLobe('custom', exponent, tab.lobe), tab, problem: null };
+  const lobe = makeLobe('custom', exponent, tab.lobe);
+  return { lobe: lobe && { ...lobe, ...typedK(density) }, tab, problem: null };
+}
+
+/** Digits of k the readouts print when k is exact (a closed form) or resolved to full tolerance. */
+export const K_DIGITS = 8;
+
+/**
+ * k = 1/∫ p dω of a typed density by adaptive quadrature (the table's own sum is off in the 4th
+ * digit for a peaked density), with as many significant digits as its error estimate vouches for.
+ * Null when the quadrature has no value: the lobe then keeps the table's k, to 3 digits.
+ */
+export function typedK(density: Integrand): Pick<Lobe, 'k' | 'kDigits' | 'kSource'> | null {
+  const q = checkedIntegral(density);
+  if (!(q.value > 0) || q.problem) return null;
+  const rel = q.error / q.value;
+  const digits = rel > 0 ? Math.floor(-Math.log10(2 * rel)) : K_DIGITS;
+  return {
+    k: 1 / q.value,
+    kDigits: Math.max(1, Math.min(K_DIGITS, digits)),
+    kSource: 'by adaptive quadrature of ∫ p dω',
+  };
 }
 
 /** A built-in lobe for the exponent n (only Phong reads it): every column is a core function. */
-type LobeRow = (n: number) => Omit<Lobe, 'id'>;
+type LobeRow = (n: number) => Omit<Lobe, 'id' | 'kDigits' | 'kSource'>;
 
 /**
  * The built-in lobes as a table. Every sampler takes (u1, u2, …params, out, o) and every pdf the
@@ -121,12 +149,14 @@ const LOBES: { readonly [K in Exclude<LobeId, 'custom'>]: LobeRow } = {
 
 /** The lobe of the given id. `exponent` is used by Phong; `custom` needs its tabulated density. */
 export function makeLobe(id: LobeId, exponent: number, custom?: TabulatedHemisphere | null): Lobe | null {
-  if (id !== 'custom') return { id, ...LOBES[id](exponent) };
+  if (id !== 'custom') return { id, kDigits: K_DIGITS, kSource: 'closed form', ...LOBES[id](exponent) };
   if (!custom) return null;
   return {
     id,
     label: 'typed p(θ, φ), tabulated',
     k: custom.k,
+    kDigits: 3,
+    kSource: 'from the 64 × 128 table',
     sampleBatch: (u, out, n, start) => custom.sampleBatch(u, out, n, start),
     sample: (a, b, out, o) => custom.sample(a, b, out, o),
     pdf: (x, y, z) => custom.pdf(x, y, z),
