@@ -39,7 +39,7 @@ async function expectMatchesCore(
   if (built.tab && !built.tab.ok) throw new Error(built.tab.message);
   const lobe = built.lobe!;
   const core = computeDrawStats(lobe, cosTheta, 'independent', seed, n);
-  expect(Number(await readout(page, 'k'))).toBe(lobe.k);
+  expect(Number(await readout(page, lobeId === 'exam' ? 'k' : 'k-chosen'))).toBe(lobe.k);
   expect(Number(await readout(page, 'samples'))).toBe(n);
   expect(rel(await readoutNumber(page, 'chi2-p'), core.chi2!.pValue)).toBeLessThan(1e-9);
   expect(rel(await readoutNumber(page, 'mc-exact'), core.exact)).toBeLessThan(1e-12);
