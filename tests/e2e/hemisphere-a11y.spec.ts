@@ -7,7 +7,9 @@
  */
 import type { CDPSession, Page } from '@playwright/test';
 import { test, expect, openScene } from './fixtures';
-import { computeDrawStats, examInversion, lobeFromParams } from '../../src/scenes/hemisphere/model';
+import { computeDrawStats } from '../../src/scenes/hemisphere/drawStats';
+import { examInversion } from '../../src/scenes/hemisphere/examChecks';
+import { lobeFromParams } from '../../src/scenes/hemisphere/lobe';
 import { cellImage, countInCell } from '../../src/scenes/hemisphere/stratum';
 import { describeStratum } from '../../src/scenes/hemisphere/view/describe';
 import { fillSequence2D } from '../../src/core/random';

@@ -5,13 +5,10 @@
  */
 import type { Page } from '@playwright/test';
 import { test, expect, openScene, readout, readoutNumber } from './fixtures';
-import {
-  animFrame,
-  computeDrawStats,
-  growCount,
-  makeLobe,
-  rmseOverRuns,
-} from '../../src/scenes/hemisphere/model';
+import { animFrame, growCount } from '../../src/scenes/hemisphere/animation';
+import { computeDrawStats } from '../../src/scenes/hemisphere/drawStats';
+import { makeLobe } from '../../src/scenes/hemisphere/lobe';
+import { rmseOverRuns } from '../../src/scenes/hemisphere/q2Estimates';
 import { examLobeK } from '../../src/core/sampling';
 import { formatNumber } from '../../src/ui/Readout';
 

@@ -8,7 +8,7 @@
 import type { Page } from '@playwright/test';
 import { test, expect, openScene } from './fixtures';
 import { axNodeOf, axTree } from './axTree';
-import { raceAt, raceTrack } from '../../src/scenes/monte-carlo/model';
+import { raceAt, raceTrack } from '../../src/scenes/monte-carlo/race';
 import { squarePdf1D } from '../../src/core/sampling/pdf1d';
 
 test.describe.configure({ timeout: 120_000 });

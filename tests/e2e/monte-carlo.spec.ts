@@ -5,7 +5,8 @@
  */
 import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
 import { settleLazyViews } from './lazyViews';
-import { drawnEstimate, raceAt, raceTrack } from '../../src/scenes/monte-carlo/model';
+import { drawnEstimate } from '../../src/scenes/monte-carlo/drawnEstimate';
+import { raceAt, raceTrack } from '../../src/scenes/monte-carlo/race';
 import { squarePdf1D, uniformPdf1D } from '../../src/core/sampling/pdf1d';
 import { compileXFast } from '../../src/scenes/monte-carlo/expr';
 

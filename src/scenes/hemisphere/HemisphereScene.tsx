@@ -7,13 +7,14 @@
  */
 import { useMemo } from 'react';
 import type { SceneProps } from '../../kit/scene';
-import { useCompiled, ExprField, Notice, Panel, MathTex } from '../../ui';
+import { useCompiled, ExprField, Notice, Panel, MathTex, formatNumber } from '../../ui';
 import { ExamQuestion, ExploreFurther } from '../../ui/exam';
 import { useWorkerJob } from '../../workers';
 import { makeWorker } from './worker';
 import { nextTask } from '../../ui/chunked';
 import { fillSequence2D } from '../../core/random';
-import { examChecksCached, lobeFromParams } from './model';
+import { examChecksCached } from './examChecks';
+import { lobeFromParams } from './lobe';
 import type { HemisphereSchema } from './params';
 import { compileThetaPhi, compileThetaPhiFast, isCosTheta } from './expr';
 import { Derivation } from './view/Derivation';
@@ -119,8 +120,18 @@ export default function HemisphereScene(props: SceneProps<HemisphereSchema>) {
     lobeId !== 'exam' ? (
       <Notice kind="info" testId="other-lobe">
         The figure, the checks in (d) and the estimates of Q2 use the chosen density,{' '}
-        {baseLobe ? baseLobe.label : 'the typed density'}; the derivation above is the exam&apos;s, for k cos
-        θ e<sup>φ</sup>. The chosen density&apos;s own derivation is under Explore further.
+        {baseLobe ? baseLobe.label : 'the typed density'}
+        {baseLobe ? (
+          <>
+            , whose k ={' '}
+            <output data-testid="k-chosen" data-value={String(baseLobe.k)}>
+              {formatNumber(baseLobe.k, baseLobe.kDigits)}
+            </output>{' '}
+            ({baseLobe.kSource}, {baseLobe.kDigits} significant digits)
+          </>
+        ) : null}
+        ; the derivation above and its k are the exam&apos;s, for k cos θ e<sup>φ</sup>. The chosen
+        density&apos;s own derivation is under Explore further.
       </Notice>
     ) : null;
 
@@ -129,7 +140,13 @@ export default function HemisphereScene(props: SceneProps<HemisphereSchema>) {
       {settings}
     </Q1Figure>
   );
-  const lobeTex = lobeTexOf(lobeId, params.exponent, k, pc.status === 'ok' ? (pc.tex ?? null) : null);
+  const lobeTex = lobeTexOf(
+    lobeId,
+    params.exponent,
+    k,
+    pc.status === 'ok' ? (pc.tex ?? null) : null,
+    baseLobe?.kDigits,
+  );
   return (
     // classroom mode: the stage first (`stage-layout` lets the shell compact the heading above it)
     <div className={mode.present ? 'hemi-page stage-layout' : 'hemi-page'}>
@@ -153,10 +170,6 @@ export default function HemisphereScene(props: SceneProps<HemisphereSchema>) {
           xi={firstXi}
           invertedShown={inverted}
           onShowInverted={() => setParams({ jacobian: 'inverted' })}
-          k={k}
-          kNote={
-            lobeId === 'exam' ? '= 2/expm1(2π)' : `of the chosen lobe (${baseLobe ? baseLobe.label : 'none'})`
-          }
           inverted={<InvertedJacobian />}
           answer1d={
             <SampleCheck current={current} lobe={lobe} inverted={inverted} kind={kind} n={params.n} />

@@ -5,13 +5,13 @@
  */
 import type { ParamProblem } from '../../kit/params';
 import { compileThetaPhi } from './expr';
-import { lobeFromParams } from './model';
+import { lobeFromParams } from './lobe';
 import type { HemisphereParams } from './params';
 
 export async function checkValues(params: HemisphereParams): Promise<ParamProblem[]> {
   if (params.lobe !== 'custom') return [];
   const c = await compileThetaPhi(params.pdf);
   if (!c.ok) return [{ name: 'pdf', message: `could not be used: ${c.message}` }];
-  const { tab } = lobeFromParams('custom', params.exponent, c.fn);
-  return tab && !tab.ok ? [{ name: 'pdf', message: `is not a valid density: ${tab.message}` }] : [];
+  const { problem } = lobeFromParams('custom', params.exponent, c.fn);
+  return problem ? [problem] : [];
 }

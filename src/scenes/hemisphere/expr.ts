@@ -6,7 +6,7 @@
  */
 import { compileExpression } from '../../core/expr';
 import type { CompileOutcome } from '../../ui/useCompiled';
-import type { Integrand } from './model';
+import type { Integrand } from './integral';
 
 /** The default integrand written as the compiler writes it (its TeX is the compiler's, checked by a unit test). */
 const COS_THETA = { src: 'cos(theta)', tex: '\\cos\\left(\\theta\\right)' };

@@ -6,14 +6,10 @@
  */
 import { fail, raise, type Failure } from '../../core/failure';
 import { fillSequence2D, type SequenceKind } from '../../core/random';
-import {
-  computeDrawStats,
-  lobeFromParams,
-  repeatEstimates,
-  type DrawStats,
-  type Integrand,
-  type Lobe,
-} from './model';
+import { computeDrawStats, type DrawStats } from './drawStats';
+import { lobeFromParams, type Lobe } from './lobe';
+import { repeatEstimates } from './q2Estimates';
+import type { Integrand } from './integral';
 import type { HemisphereParams, LobeId } from './params';
 import { xiColor } from './view/colors';
 

@@ -7,7 +7,7 @@
 import { isCancelled, runWorkerTask } from '../../workers';
 import { nextTask, SLICE_MS } from '../../ui/chunked';
 import { fillPoints, pointsChunk, pointsScratch, type PointsArgs, type PointsChunk } from './jobs';
-import type { Lobe } from './model';
+import type { Lobe } from './lobe';
 import { makeWorker } from './worker';
 
 /**

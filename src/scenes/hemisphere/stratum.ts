@@ -6,7 +6,8 @@
  */
 import { fillSequence2D, type SequenceKind } from '../../core/random';
 import { TWO_PI, sphericalPhi, sphericalTheta } from '../../core/sampling';
-import { GRID_LINES, squarePoint, type Lobe } from './model';
+import { GRID_LINES, squarePoint } from './animation';
+import type { Lobe } from './lobe';
 
 /** A cell of the square: ξ₁ ∈ [i/8, (i + 1)/8) (column i), ξ₂ ∈ [j/8, (j + 1)/8) (row j). */
 export interface Cell {

@@ -1,4 +1,8 @@
-/** The hemisphere scene's worker, as the page starts it (one fresh worker per run: src/workers/run.ts). */
+/**
+ * The hemisphere scene's worker, as the page starts it (one fresh worker per run:
+ * src/workers/run.ts). Defined here, not in ./jobs: the worker itself imports ./jobs, and a
+ * worker whose own bundle starts that worker again is a circular worker import Vite refuses.
+ */
 import { workerFactory } from '../../workers';
 import type { HemisphereTasks } from './hemisphere.worker';
 

@@ -1,33 +1,20 @@
 /**
- * Monte Carlo integration and convergence (exam Q2, Q4). All figures come from ./model (pure, over
- * the core) and from the worker jobs in ./jobs; this file only wires parameters to views.
+ * Monte Carlo integration and convergence (exam Q2, Q4). All figures come from the scene's pure
+ * modules (over the core) and from the worker jobs in ./jobs; this file only wires parameters to views.
  */
 import { useCallback, useMemo } from 'react';
 import type { SceneProps } from '../../kit/scene';
 import { ExamQuestion, useCompiled, Notice, SceneLayout } from '../../ui';
-import { useWorkerJob, workerFactory } from '../../workers';
-import type { McTasks } from './mc.worker';
-import {
-  EXAM_A,
-  EXAM_B,
-  EXAM_F,
-  EXAM_SAMPLES,
-  SYNC_MAX_N,
-  checkLimits,
-  choosePdf,
-  comparedStrategies,
-  curves,
-  drawnProblem,
-  exactIntegral,
-  importanceLane,
-  isExamConfig,
-  keyComparison,
-  RACE_MAX,
-  sampleTable,
-  squareShift,
-  stderrIsValid,
-  type Fn1,
-} from './model';
+import { useWorkerJob } from '../../workers';
+import { makeWorker } from './worker';
+import { EXAM_A, EXAM_B, EXAM_F, EXAM_SAMPLES, isExamConfig, keyComparison } from './exam';
+import { SYNC_MAX_N, drawnProblem, stderrIsValid } from './drawnEstimate';
+import { checkLimits, exactIntegral, squareShift, type Fn1 } from './integral';
+import { choosePdf, importanceLane } from './pdfChoice';
+import { comparedStrategies } from './compared';
+import { curves } from './curves';
+import { RACE_MAX } from './race';
+import { sampleTable } from './sampleTable';
 import { MAX_N, type McSchema } from './params';
 import type { McEstimate, Problem1D } from '../../core/estimators';
 import { rmseAt, type ProblemArgs } from './jobs';
@@ -44,10 +31,6 @@ import { Q4b } from './exam/Q4b';
 import { Q4c } from './exam/Q4c';
 import { Q4d } from './exam/Q4d';
 import './monte-carlo.css';
-
-const makeWorker = workerFactory<McTasks>(
-  () => new Worker(new URL('./mc.worker.ts', import.meta.url), { type: 'module' }),
-);
 
 export default function MonteCarloScene({ params, setParams, mode }: SceneProps<McSchema>) {
   const pdfKind = params.pdf;

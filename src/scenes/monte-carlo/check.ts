@@ -3,13 +3,13 @@
  * the code the scene runs, replaces by the exam's [0, 2].
  */
 import type { ParamProblem } from '../../kit/params';
-import { checkLimits } from './model';
+import { checkLimits } from './integral';
 import type { ParamValues } from '../../kit/params';
 import type { McSchema } from './params';
 
 type MonteCarloParams = ParamValues<McSchema>;
 
 export function checkValues(params: MonteCarloParams): ParamProblem[] {
-  const lim = checkLimits(params.a, params.b);
-  return lim.message ? [{ name: 'b', message: `and a: ${lim.message}` }] : [];
+  const { problem } = checkLimits(params.a, params.b);
+  return problem ? [problem] : [];
 }

@@ -4,7 +4,7 @@
  * (`compileXFast`) that needs no parser, so neither the default page nor its worker loads mathjs.
  */
 import { compileExpression } from '../../core/expr';
-import { squareShift, type Fn1 } from './model';
+import { squareShift, type Fn1 } from './integral';
 import type { Compile } from './jobs';
 
 /** The parser-free path: (x + c)² for a literal c, else null. */

@@ -15,7 +15,8 @@ import { fail, raise, type Failure } from '../../core/failure';
 import type { ProgressFn } from '../../workers/protocol';
 import type { Pdf1D } from '../../core/sampling/pdf1d';
 import { runSeed } from '../../core/random/rng';
-import { checkLimits, choosePdf, exactIntegral, type Fn1, type PdfChoice } from './model';
+import { checkLimits, exactIntegral, type Fn1 } from './integral';
+import { choosePdf, type PdfChoice } from './pdfChoice';
 import type { PdfKind, Strategy } from './params';
 
 /** Compiles a user expression in x (the worker passes core/expr's compiler). */

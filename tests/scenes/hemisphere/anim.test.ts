@@ -2,16 +2,16 @@ import { describe, expect, it } from 'vitest';
 import {
   animFrame,
   growCount,
-  makeLobe,
   morphFraction,
-  rmseOverRuns,
   squarePoint,
-  varianceCheck,
   warpedGrid,
   GRID_LINES,
-  exactIntegral,
-  computeDrawStats,
-} from '../../../src/scenes/hemisphere/model';
+} from '../../../src/scenes/hemisphere/animation';
+import { makeLobe } from '../../../src/scenes/hemisphere/lobe';
+import { rmseOverRuns } from '../../../src/scenes/hemisphere/q2Estimates';
+import { varianceCheck } from '../../../src/scenes/hemisphere/varianceCheck';
+import { exactIntegral } from '../../../src/scenes/hemisphere/integral';
+import { computeDrawStats } from '../../../src/scenes/hemisphere/drawStats';
 import { fillSequence2D } from '../../../src/core/random';
 
 const cosTheta = (t: number) => Math.cos(t);

@@ -1,5 +1,7 @@
 import { describe, expect, it } from 'vitest';
-import { computeDrawStats, makeLobe, morphFraction } from '../../../src/scenes/hemisphere/model';
+import { computeDrawStats } from '../../../src/scenes/hemisphere/drawStats';
+import { makeLobe } from '../../../src/scenes/hemisphere/lobe';
+import { morphFraction } from '../../../src/scenes/hemisphere/animation';
 import { cellCounts, cellImage } from '../../../src/scenes/hemisphere/stratum';
 import {
   chi2Bin,

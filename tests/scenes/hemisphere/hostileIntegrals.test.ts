@@ -1,7 +1,9 @@
 /** ∫ f dω must not show finite numbers for divergent integrals or non-finite f. */
 import { describe, expect, it } from 'vitest';
 import { compileExpression } from '../../../src/core/expr';
-import { checkedIntegral, q2Estimates, makeLobe } from '../../../src/scenes/hemisphere/model';
+import { checkedIntegral } from '../../../src/scenes/hemisphere/integral';
+import { q2Estimates } from '../../../src/scenes/hemisphere/q2Estimates';
+import { makeLobe } from '../../../src/scenes/hemisphere/lobe';
 
 async function fnOf(src: string) {
   const r = await compileExpression(src, ['theta', 'phi']);

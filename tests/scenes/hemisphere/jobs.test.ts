@@ -11,12 +11,9 @@ import {
   type PointsChunk,
   type StatsArgs,
 } from '../../../src/scenes/hemisphere/jobs';
-import {
-  computeDrawStats,
-  drawDirections,
-  lobeFromParams,
-  repeatEstimates,
-} from '../../../src/scenes/hemisphere/model';
+import { computeDrawStats, drawDirections } from '../../../src/scenes/hemisphere/drawStats';
+import { lobeFromParams } from '../../../src/scenes/hemisphere/lobe';
+import { repeatEstimates } from '../../../src/scenes/hemisphere/q2Estimates';
 import { xiColor } from '../../../src/scenes/hemisphere/view/colors';
 
 const compile: Compile2 = async (src, vars) => {

@@ -1,14 +1,12 @@
 import { describe, expect, it } from 'vitest';
-import {
-  computeDrawStats,
-  exactIntegral,
-  invertedJacobianSeries,
-  makeLobe,
-  marginalHistograms,
-  drawDirections,
-  repeatEstimates,
-} from '../../../src/scenes/hemisphere/model';
+import { computeDrawStats, drawDirections } from '../../../src/scenes/hemisphere/drawStats';
+import { exactIntegral } from '../../../src/scenes/hemisphere/integral';
+import { invertedJacobianSeries } from '../../../src/scenes/hemisphere/examChecks';
+import { lobeFromParams, makeLobe } from '../../../src/scenes/hemisphere/lobe';
+import { marginalHistograms } from '../../../src/scenes/hemisphere/sampleCheck';
+import { repeatEstimates } from '../../../src/scenes/hemisphere/q2Estimates';
 import { tabulateHemisphereDensity, examLobeK } from '../../../src/core/sampling';
+import { formatNumber } from '../../../src/core/format';
 import { LOBES } from '../../../src/scenes/hemisphere/params';
 
 const cosTheta = (t: number) => Math.cos(t);
@@ -110,5 +108,22 @@ describe('hemisphere scene model', () => {
     expect(a.q2.importance.estimate).toBe(b.q2.importance.estimate);
     const c = computeDrawStats(makeLobe('exam', 8), cosTheta, 'halton', 43, 3000);
     expect(c.q2.importance.estimate).not.toBe(a.q2.importance.estimate);
+  });
+});
+
+describe('the typed density’s k', () => {
+  it('is 1/∫ p dω to every digit the readout prints, not the table’s approximation', () => {
+    // p ∝ cos³θ e^{φ/2}: ∫ p dω = ¼ · 2(e^π − 1), so k = 2/(e^π − 1)
+    const f = (t: number, p: number) => Math.cos(t) ** 3 * Math.exp(0.5 * p);
+    const exact = 2 / Math.expm1(Math.PI);
+    const { lobe } = lobeFromParams('custom', 1, f);
+    expect(lobe).not.toBeNull();
+    expect(lobe!.kDigits).toBe(8);
+    expect(formatNumber(lobe!.k, lobe!.kDigits)).toBe(formatNumber(exact, lobe!.kDigits));
+    expect(Math.abs(lobe!.k / exact - 1)).toBeLessThan(1e-10);
+  });
+  it('built-in lobes print k to 8 digits from their closed forms', () => {
+    expect(makeLobe('exam', 1)!.kDigits).toBe(8);
+    expect(makeLobe('exam', 1)!.k).toBe(examLobeK());
   });
 });

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { makeLobe } from '../../../src/scenes/hemisphere/model';
+import { makeLobe } from '../../../src/scenes/hemisphere/lobe';
 import {
   CELLS,
   cellBounds,

@@ -1,5 +1,5 @@
 import { describe, expect, test } from 'vitest';
-import { comparedStrategies } from '../../../src/scenes/monte-carlo/model';
+import { comparedStrategies } from '../../../src/scenes/monte-carlo/compared';
 
 describe('comparedStrategies', () => {
   const pairs = (s: { pdf: string; seq: string }[]) => s.map((x) => `${x.pdf}/${x.seq}`);

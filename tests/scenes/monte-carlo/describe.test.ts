@@ -6,7 +6,7 @@
 import { describe, expect, it } from 'vitest';
 import { unsuperscript } from '../../../src/ui/axis';
 import { linearPdf1D, squarePdf1D } from '../../../src/core/sampling/pdf1d';
-import { raceAt, racePoints, raceTrack } from '../../../src/scenes/monte-carlo/model';
+import { raceAt, racePoints, raceTrack } from '../../../src/scenes/monte-carlo/race';
 import {
   crossings,
   describeErrors,

@@ -1,18 +1,11 @@
 import { formatCount } from '../../../src/ui/format';
 import { describe, expect, it } from 'vitest';
-import {
-  EXAM_SAMPLES,
-  KEY_PRINTED,
-  checkLimits,
-  choosePdf,
-  curves,
-  exactIntegral,
-  histogram,
-  keyComparison,
-  roundTo,
-  sampleTable,
-  squareShift,
-} from '../../../src/scenes/monte-carlo/model';
+import { EXAM_SAMPLES, KEY_PRINTED, keyComparison, roundTo } from '../../../src/scenes/monte-carlo/exam';
+import { checkLimits, exactIntegral, squareShift } from '../../../src/scenes/monte-carlo/integral';
+import { choosePdf } from '../../../src/scenes/monte-carlo/pdfChoice';
+import { curves } from '../../../src/scenes/monte-carlo/curves';
+import { sampleTable } from '../../../src/scenes/monte-carlo/sampleTable';
+import { histogram } from '../../../src/core/estimators';
 import { compileX } from '../../../src/scenes/monte-carlo/expr';
 import {
   convergenceJob,
@@ -93,6 +86,8 @@ describe('model', () => {
     expect(lin.ok).toBe(false);
     expect(choosePdf('custom', 'x', (x) => x, 0, 1, null).ok).toBe(false);
     expect(checkLimits(2, 1).message).toMatch(/a < b/);
+    expect(checkLimits(2, 1).problem?.name).toBe('b');
+    expect(checkLimits(0, 1).problem).toBeNull();
   });
 
   it('curves and histogram', () => {

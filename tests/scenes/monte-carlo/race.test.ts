@@ -12,17 +12,11 @@ import {
   uniformPdf1D,
   type Pdf1D,
 } from '../../../src/core/sampling/pdf1d';
-import {
-  atRoundingLevel,
-  RACE_STREAM,
-  raceAt,
-  racePoints,
-  raceTrack,
-  sortedByX,
-  squareAntiderivative,
-  squareNormalizer,
-  stderrIsValid,
-} from '../../../src/scenes/monte-carlo/model';
+import { atRoundingLevel } from '../../../src/scenes/monte-carlo/zeroVariance';
+import { RACE_STREAM, raceAt, racePoints, raceTrack } from '../../../src/scenes/monte-carlo/race';
+import { sortedByX } from '../../../src/scenes/monte-carlo/compared';
+import { squareAntiderivative, squareNormalizer } from '../../../src/scenes/monte-carlo/exam';
+import { stderrIsValid } from '../../../src/scenes/monte-carlo/drawnEstimate';
 
 const f = (x: number) => (x + 2) ** 2;
 const I = (4 ** 3 - 2 ** 3) / 3;

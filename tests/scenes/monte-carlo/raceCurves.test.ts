@@ -6,8 +6,8 @@
  */
 import { describe, expect, it } from 'vitest';
 import { squarePdf1D } from '../../../src/core/sampling/pdf1d';
-import { raceAt, racePoints, raceTrack } from '../../../src/scenes/monte-carlo/model';
-import { raceCurves } from '../../../src/scenes/monte-carlo/view/RaceFigure';
+import { raceAt, racePoints, raceTrack } from '../../../src/scenes/monte-carlo/race';
+import { raceCurves } from '../../../src/scenes/monte-carlo/view/raceCurves';
 
 const f = (x: number) => (x + 2) ** 2;
 const I = (4 ** 3 - 2 ** 3) / 3;

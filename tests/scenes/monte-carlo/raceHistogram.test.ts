@@ -8,16 +8,17 @@ import { importanceEstimate, uniformEstimate } from '../../../src/core/estimator
 import {
   binRange,
   countIn,
-  estimateHasZeroVariance,
   heavierHalf,
   RACE_BINS,
-  raceAt,
   raceBinIndex,
   raceCounts,
-  raceTrack,
+} from '../../../src/scenes/monte-carlo/raceHistogram';
+import {
+  estimateHasZeroVariance,
   ZERO_SPREAD_ULPS,
   zeroToRounding,
-} from '../../../src/scenes/monte-carlo/model';
+} from '../../../src/scenes/monte-carlo/zeroVariance';
+import { raceAt, raceTrack } from '../../../src/scenes/monte-carlo/race';
 import { schema } from '../../../src/scenes/monte-carlo/params';
 import { parseParams } from '../../../src/kit/params';
 import {

@@ -5,7 +5,9 @@
  * run); at position t only a clip rectangle and the marker move (written directly, see drawRef),
  * so a frame costs next to nothing.
  */
-import { memo, useId, useLayoutEffect, useMemo, useRef } from 'react';
+import { memo, useLayoutEffect, useMemo, useRef } from 'react';
+import { formatNumber } from '../../../core/format';
+import { RunningEstimatePlot } from '../../../ui/RunningEstimatePlot';
 import type { SampleRun } from '../animation';
 
 const W = 420;
@@ -13,11 +15,8 @@ const H = 230;
 // room for the tick labels at the larger phone type (19 px): "0.0602" on the left, half of "1000" on the right
 const M = { l: 78, r: 24, t: 14, b: 40 };
 
-function fmt(x: number): string {
-  if (!Number.isFinite(x)) return '—';
-  if (x !== 0 && (Math.abs(x) < 1e-3 || Math.abs(x) >= 1e5)) return x.toExponential(2);
-  return Number(x.toPrecision(3)).toString();
-}
+/** Tick labels and the label's figures: three significant digits. */
+const fmt = (x: number): string => formatNumber(x, 3);
 
 interface Geometry {
   xOf: (k: number) => number;
@@ -109,7 +108,6 @@ export const RunningEstimate = memo(function RunningEstimate({
   drawRef?: { current: ((k: number, text: boolean) => void) | null };
 }) {
   const g = useMemo(() => geometry(run, reference), [run, reference]);
-  const clip = useId().replace(/:/g, '');
   const svg = useRef<SVGSVGElement>(null);
   const shown = useRef(k);
   const label = (kk: number) => {
@@ -136,48 +134,26 @@ export const RunningEstimate = memo(function RunningEstimate({
   if (drawRef) drawRef.current = draw;
   else shown.current = k;
   useLayoutEffect(() => draw(shown.current, true));
+  const ticks = (vs: number[], at: (v: number) => number, text: (v: number) => string) =>
+    vs.map((v) => [at(v), text(v)] as const);
   return (
-    <svg
-      ref={svg}
+    <RunningEstimatePlot
+      svgRef={svg}
       className="al-running"
-      viewBox={`0 0 ${W} ${H}`}
-      role="img"
-      aria-label={label(k)}
-      data-testid="al-running"
+      width={W}
+      height={H}
+      margin={M}
+      xTicks={ticks(g.xTicks, g.xOf, String)}
+      yTicks={ticks(g.yTicks, g.yOf, fmt)}
+      xLabel="samples k (log scale)"
+      exactY={Number.isFinite(reference) ? g.yOf(reference) : null}
+      band={g.band}
+      line={g.line}
+      clipWidth={0}
+      ariaLabel={label(k)}
+      testId="al-running"
     >
-      <defs>
-        <clipPath id={clip}>
-          <rect x={0} y={0} height={H} />
-        </clipPath>
-      </defs>
-      <rect x={M.l} y={M.t} width={W - M.l - M.r} height={H - M.t - M.b} className="al-run-frame" />
-      {g.yTicks.map((v) => (
-        <g key={`y${v}`}>
-          <line x1={M.l - 4} x2={M.l} y1={g.yOf(v)} y2={g.yOf(v)} className="al-run-axis" />
-          <text x={M.l - 6} y={g.yOf(v) + 4} textAnchor="end" className="al-run-tick">
-            {fmt(v)}
-          </text>
-        </g>
-      ))}
-      {g.xTicks.map((v) => (
-        <g key={`x${v}`}>
-          <line x1={g.xOf(v)} x2={g.xOf(v)} y1={H - M.b} y2={H - M.b + 4} className="al-run-axis" />
-          <text x={g.xOf(v)} y={H - M.b + 17} textAnchor="middle" className="al-run-tick">
-            {v}
-          </text>
-        </g>
-      ))}
-      <text x={(M.l + W - M.r) / 2} y={H - 4} textAnchor="middle" className="al-run-tick">
-        samples k (log scale)
-      </text>
-      {Number.isFinite(reference) ? (
-        <line x1={M.l} x2={W - M.r} y1={g.yOf(reference)} y2={g.yOf(reference)} className="al-run-ref" />
-      ) : null}
-      <g clipPath={`url(#${clip})`}>
-        {g.band ? <path d={g.band} className="al-run-band" /> : null}
-        <path d={g.line} className="al-run-line" />
-      </g>
       <circle r={4} className="al-run-dot" display="none" />
-    </svg>
+    </RunningEstimatePlot>
   );
 });

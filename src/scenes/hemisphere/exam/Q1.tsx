@@ -7,7 +7,7 @@ import type { ReactNode } from 'react';
 import { ExamPart, Derivation as DerivationBlock, KeyNote } from '../../../ui/exam';
 import { Answer } from '../view/Answer';
 import { MathTex, Readout, formatNumber } from '../../../ui';
-import { examInversion, type ExamChecks } from '../model';
+import { examInversion, type ExamChecks } from '../examChecks';
 import { texNum } from '../view/tex';
 import { Steps } from '../view/Steps';
 
@@ -20,9 +20,6 @@ export interface Q1Props {
   /** True when the page shows the divergence panel for the paper's identity (jacobian=inverted). */
   invertedShown: boolean;
   onShowInverted: () => void;
-  /** k of the sampled lobe (null without one), and what it is (the exam's formula or the lobe's name). */
-  k: number | null;
-  kNote: string;
   /** Live answers, supplied by the scene (the sample check, the divergence panel). */
   inverted: ReactNode;
   answer1d: ReactNode;
@@ -41,8 +38,6 @@ export function Q1({
   xi,
   invertedShown,
   onShowInverted,
-  k: kValue,
-  kNote,
   inverted,
   answer1d,
   cdfs,
@@ -125,7 +120,7 @@ export function Q1({
         </DerivationBlock>
         <Answer testId="answer-1a" ask={ask} what="k">
           <div className="readouts">
-            <Readout id="k" label="k (normalization of p(ω))" value={kValue} digits={8} note={kNote} />
+            <Readout id="k" label="k (normalization of p(ω))" value={c.k} digits={8} note="= 2/expm1(2π)" />
           </div>
         </Answer>
       </ExamPart>
@@ -203,7 +198,7 @@ export function Q1({
           />
           <KeyNote testId="keynote-stray-ephi">
             in its p(θ) working (the version with the correct identity) the key pulls e<sup>φ</sup> out in
-            front of ∫₀<sup>2π</sup> e<sup>φ</sup> dφ while also keeping it inside: a stray e<sup>φ</sup>
+            front of ∫₀<sup>2π</sup> e<sup>φ</sup> dφ while also keeping it inside: a stray e<sup>φ</sup>{' '}
             outside the integral. It survives one more line, p(θ) = 2 cos θ e<sup>φ</sup> sin θ, and then
             disappears; the result p(θ) = sin 2θ is right.
           </KeyNote>

@@ -152,6 +152,8 @@ export function lobeTexOf(
   exponent: number,
   k: number | null,
   customTex: string | null,
+  /** Significant digits of k that are right (a typed density's k may have fewer than 6). */
+  kDigits = 6,
 ): string {
   switch (lobe) {
     case 'exam':
@@ -164,7 +166,7 @@ export function lobeTexOf(
       return `\\frac{n+1}{2\\pi}\\cos^{n}\\theta_i,\\quad n = ${texNum(exponent, 6)}`;
     default:
       return customTex
-        ? `k\\,\\big(${customTex}\\big),\\quad k = ${k !== null ? texNum(k, 6) : '?'}`
+        ? `k\\,\\big(${customTex}\\big),\\quad k = ${k !== null ? texNum(k, Math.min(6, kDigits)) : '?'}`
         : `\\text{(the typed density, not valid yet)}`;
   }
 }

@@ -16,7 +16,8 @@ import {
 } from '../../../ui';
 import { formatCount } from '../../../ui/format';
 import { fillSequence2D } from '../../../core/random';
-import { animDuration, animFrame, type AnimFrame, type AnimKind, type Lobe } from '../model';
+import { animDuration, animFrame, type AnimFrame, type AnimKind } from '../animation';
+import type { Lobe } from '../lobe';
 import { Stage } from '../../../ui/stage';
 import { FigureCaption, FigureReadouts } from './FigureText';
 import { bindControls } from '../../../ui/paramControls';
@@ -133,7 +134,7 @@ export function Figure({
       ? `t = ${x.toFixed(2)}, s = ${frame.s.toFixed(2)}`
       : `t = ${x.toFixed(2)}: ${formatCount(frame.shown)} of ${formatCount(n)}`;
   };
-  const text = { tl, lobe, lobeId, kind, seed, n, anim, ask };
+  const text = { tl, lobe, lobeId, kind, seed, n, anim, ask, noLobe: noLobeText };
   const animSelect = bindControls(schema, params, setParams).select('anim', 'Animation', ANIM_OPTIONS);
   const transport = (
     <TimelineTransport
@@ -191,7 +192,13 @@ export function Figure({
             ) : (
               <div className="hemi-no-view">{problem}</div>
             )}
-            {ask ? (
+            {!lobe ? (
+              // nothing to sample: the transport is there, and disabled
+              <fieldset disabled className="hemi-held" data-testid="timeline-nothing">
+                <legend className="small">Nothing to play: no density is sampled.</legend>
+                {transport}
+              </fieldset>
+            ) : ask ? (
               // held at t = 0 until revealed: the transport is there, and disabled
               <fieldset disabled className="hemi-held" data-testid="timeline-held">
                 <legend className="small">The warp stays at t = 0 (the square) until you reveal.</legend>

@@ -5,7 +5,9 @@
 import { useMemo } from 'react';
 import { formatNumber, Readout, useCoarsePosition, type Timeline } from '../../../ui';
 import type { SequenceKind } from '../../../core/random';
-import { animFrame, examInversion, type AnimKind, type Lobe } from '../model';
+import { animFrame, type AnimKind } from '../animation';
+import { examInversion } from '../examChecks';
+import type { Lobe } from '../lobe';
 import type { LobeId } from '../params';
 
 /** What the figure samples and animates (the figure's and its texts' common inputs). */
@@ -23,6 +25,8 @@ export interface FigureTextProps extends FigureState {
   tl: Timeline;
   /** Results hidden: the caption leaves out where the samples land. */
   ask: boolean;
+  /** Why nothing is sampled when there is no lobe (the caption says so instead of the animation). */
+  noLobe: string;
 }
 
 function useCoarseFrame({ tl, lobe, kind, seed, n, anim }: FigureTextProps) {
@@ -70,8 +74,14 @@ export function FigureCaption(props: FigureTextProps) {
   const { lobeId, anim, ask } = props;
   const tr = useCoarseFrame(props).tracked;
   const spread = lobeId === 'exam' ? examInversion(0, 1 / 8).phiLog1p : null;
+  if (!props.lobe)
+    return (
+      <p className="small hemi-caption" data-testid="hemi-caption">
+        Nothing is drawn and nothing plays: {props.noLobe}
+      </p>
+    );
   return (
-    <p className="small hemi-caption">
+    <p className="small hemi-caption" data-testid="hemi-caption">
       {anim === 'warp'
         ? 'At t = 0 every point (ξ₁, ξ₂) lies in the unit square drawn flat on the base plane (ξ₁ along x, ξ₂ along y); as t goes to 1 each travels to the direction the inversion of (d) gives it. Each cell of the 8 × 8 grid is a stratum of the square: follow its colour to the patch of the hemisphere it lands on.'
         : 'The samples appear in the order they are drawn, from 1 to N (geometric in t); each keeps the colour of its (ξ₁, ξ₂).'}

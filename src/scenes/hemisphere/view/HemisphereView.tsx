@@ -1,29 +1,29 @@
 /**
  * The 3D hemisphere, driven by the shared timeline (src/ui/timeline.ts): what it draws at position
- * t is the model's `animFrame` (a pure function of the parameters, the seed and t), the view only
- * draws it.
+ * t is ../animation's `animFrame` (a pure function of the parameters, the seed and t).
  *
  * - Warp morph (`anim=warp`): every sample and the (ξ₁, ξ₂) grid travel from the unit square (laid
  *   in the base plane, [−1, 1]²) to their directions on the hemisphere as t goes 0 → 1. The points'
  *   mix is done in the vertex shader (one uniform per frame, no per-point work on the CPU); the
- *   grid is mixed on the CPU with the model's `morphPoint` (a few thousand vertices).
+ *   grid is mixed on the CPU with `morphPoint` (a few thousand vertices).
  * - Growth (`anim=grow`): the first `growCount(n, t)` samples are drawn (geometric, 0 → n).
  *
- * One preallocated Float32 position attribute (the directions), one Uint8 colour attribute and one
- * Float32 (ξ₁, ξ₂) attribute receive the points as the worker streams them (../pointStream: the
- * main thread only copies each chunk in), and at most UPLOAD_PER_FRAME new points go to the GPU
- * per frame; filled points are kept, so scrubbing back and forth costs nothing. Nothing renders
- * while the timeline is paused and the buffers are filled, unless the camera moves.
+ * The preallocated buffers (./pointBuffers) receive the points as the worker streams them
+ * (../pointStream: the main thread only copies each chunk in), and at most UPLOAD_PER_FRAME new
+ * points go to the GPU per frame; filled points are kept, so scrubbing back and forth costs
+ * nothing. Nothing renders while the timeline is paused and the buffers are filled, unless the
+ * camera moves.
  */
 import { formatCount } from '../../../ui/format';
 import { useEffect, useRef } from 'react';
 import type * as THREE from 'three';
 import { Viewport, type ViewportContext } from '../../../three';
 import type { SequenceKind } from '../../../core/random';
-import { squarePoint, warpedGrid, type AnimFrame, type Lobe } from '../model';
-import { MAX_N } from '../params';
+import { squarePoint, warpedGrid, type AnimFrame } from '../animation';
+import type { Lobe } from '../lobe';
 import type { PointsArgs, PointsChunk } from '../jobs';
 import { streamPoints } from '../pointStream';
+import { capacityFor, pointBuffers, type Fill } from './pointBuffers';
 import { pointShade, xiColor } from './colors';
 import type { Cell } from '../stratum';
 import { patchStratumShader, stratumLayer, stratumUniforms, type StratumLayer } from './stratum3d';
@@ -36,15 +36,6 @@ const ORBIT_LOD = 200_000;
 const GRID_SEGMENTS = 48;
 /** A change of the point set restarts the stream after this much quiet (a storm of changes starts one). */
 const RESTART_MS = 40;
-
-interface Fill {
-  /** Points whose direction, colour and (ξ₁, ξ₂) are in the buffers: [0, filled). */
-  filled: number;
-  /** Of those, the points marked for upload to the GPU (drawn from the next render): [0, uploaded). */
-  uploaded: number;
-  /** Points the current frame wants drawn. */
-  target: number;
-}
 
 /** The warped grid recedes while a stratum is followed, so the stratum's outline stands out. */
 const gridOpacity = (cell: Cell | null) => (cell ? 0.35 : 0.9);
@@ -71,33 +62,6 @@ export interface HemisphereViewProps {
    * render); `frame` is then the frame of the component's last render.
    */
   drawRef?: { current: ((frame: AnimFrame) => void) | null };
-}
-
-/**
- * Buffers sized for n points, rounded up to a power of two (at least 4096, at most MAX_N): sized
- * for 10⁶ from the start, the first upload of ~23 MB cost a phone's main thread hundreds of ms on
- * load, though the exam's default shows 512 points.
- */
-function capacityFor(n: number): number {
-  let c = 4096;
-  while (c < n && c < MAX_N) c *= 2;
-  return Math.min(c, MAX_N);
-}
-
-function pointBuffers(T: ViewportContext['THREE'], cap: number) {
-  const geom = new T.BufferGeometry();
-  const pos = new T.BufferAttribute(new Float32Array(3 * cap), 3);
-  pos.setUsage(T.DynamicDrawUsage);
-  const col = new T.BufferAttribute(new Uint8Array(3 * cap), 3, true);
-  col.setUsage(T.DynamicDrawUsage);
-  const xi = new T.BufferAttribute(new Float32Array(2 * cap), 2);
-  xi.setUsage(T.DynamicDrawUsage);
-  geom.setAttribute('position', pos);
-  geom.setAttribute('color', col);
-  geom.setAttribute('xi', xi);
-  geom.setDrawRange(0, 0);
-  geom.boundingSphere = new T.Sphere(new T.Vector3(0, 0, 0.5), 1.6);
-  return { geom, pos, col, xi };
 }
 
 export function HemisphereView({
@@ -399,8 +363,7 @@ export function HemisphereView({
     };
   };
 
-  // the point set changed: the buffers start over, the grid is rebuilt
-  // (the latest closures in refs, so that the effects run on their own dependencies only)
+  // the point set changed: the buffers start over, the grid is rebuilt (latest closures in refs)
   const onPointsChange = useRef(() => {});
   onPointsChange.current = () => {
     const o = objs.current;

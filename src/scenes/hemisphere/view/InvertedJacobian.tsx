@@ -7,7 +7,7 @@ import { useMemo, useState } from 'react';
 import { MathTex, Notice, Plot, Slider, Readout, formatNumber } from '../../../ui';
 import { LEGEND_INSIDE, titled } from './plotTitle';
 import { examLobeK, invertedJacobianDensity, invertedJacobianPartialIntegral } from '../../../core/sampling';
-import { invertedJacobianSeries } from '../model';
+import { invertedJacobianSeries } from '../examChecks';
 import { MODEL, SAMPLED } from './plotColors';
 
 export function InvertedJacobian() {

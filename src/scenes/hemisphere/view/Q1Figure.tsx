@@ -6,7 +6,7 @@
 import { useCallback, useMemo, type ComponentProps, type ReactNode } from 'react';
 import type { SceneProps } from '../../../kit/scene';
 import { Notice, Panel } from '../../../ui';
-import type { Lobe } from '../model';
+import type { Lobe } from '../lobe';
 import type { HemisphereSchema } from '../params';
 import { cellFromParam, type Cell } from '../stratum';
 import { Figure } from './Figure';

@@ -5,7 +5,8 @@
 import { formatNumber, Readout } from '../../../ui';
 import { formatCount } from '../../../ui/format';
 import type { SequenceKind } from '../../../core/random';
-import type { DrawStats, Lobe } from '../model';
+import type { DrawStats } from '../drawStats';
+import type { Lobe } from '../lobe';
 import { Histogram2D, MarginalPlots } from './Plots';
 
 export function SampleCheck({

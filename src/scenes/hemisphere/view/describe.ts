@@ -8,7 +8,8 @@ import { formatCount, formatSignificant } from '../../../ui/format';
 import { summarizeSeries } from '../../../ui/summary';
 import { HALF_PI, TWO_PI } from '../../../core/sampling';
 import type { SequenceKind } from '../../../core/random';
-import type { AnimKind, Lobe } from '../model';
+import type { AnimKind } from '../animation';
+import type { Lobe } from '../lobe';
 import { CELLS, cellBounds, type Cell, type CellImage } from '../stratum';
 import { marginalShape, type MarginalShape } from '../marginals';
 

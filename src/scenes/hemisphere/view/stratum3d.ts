@@ -6,7 +6,7 @@
  */
 import type * as THREE from 'three';
 import type { ViewportContext } from '../../../three';
-import type { Lobe } from '../model';
+import type { Lobe } from '../lobe';
 import { cellBounds, cellOutline, cellPatch, morphVertices, type Cell } from '../stratum';
 
 /**

@@ -5,7 +5,9 @@
  */
 import type { ReactNode } from 'react';
 import { Revealed } from '../../../ui';
-import { EXAM_A, EXAM_B, EXAM_F, EXAM_SAMPLES, type Exact, type SampleTable } from '../model';
+import { EXAM_A, EXAM_B, EXAM_F, EXAM_SAMPLES } from '../exam';
+import type { Exact } from '../integral';
+import type { SampleTable } from '../sampleTable';
 import { RaceDataSection, type RaceInput } from '../view/RaceSection';
 import { Q4Answers } from './Q4Answers';
 

@@ -4,7 +4,10 @@
  * below derive each of them.
  */
 import { Readout } from '../../../ui';
-import { estimateHasZeroVariance, roundTo, type Exact, type SampleTable } from '../model';
+import { estimateHasZeroVariance } from '../zeroVariance';
+import { roundTo } from '../exam';
+import type { Exact } from '../integral';
+import type { SampleTable } from '../sampleTable';
 import { thirdsText } from '../view/examMath';
 
 export function Q4Answers({

@@ -3,7 +3,8 @@
  * square (x + c)²; otherwise the exam's integrand is derived and the page's f has its readout.
  */
 import { Derivation, ExamPart, Revealed, formatNumber, LiveAnswer, MathTex, Readout } from '../../../ui';
-import { squareAntiderivative, type Exact } from '../model';
+import { squareAntiderivative } from '../exam';
+import type { Exact } from '../integral';
 import { MathBlock, n4, shifted, thirds } from '../view/examMath';
 
 export function Q4a({

@@ -6,7 +6,8 @@
 import type { ReactNode } from 'react';
 import { ExamPart, formatNumber, MathTex, Readout } from '../../../ui';
 import { formatCount } from '../../../ui/format';
-import { EXAM_SAMPLES, roundTo, type KeyNote, type SampleTable } from '../model';
+import { EXAM_SAMPLES, roundTo, type KeyNote } from '../exam';
+import type { SampleTable } from '../sampleTable';
 import type { PdfKind, Strategy } from '../params';
 import { MathBlock, n4, squareAt, sumRows, WorkedAnswer } from '../view/examMath';
 import { KeyFigures, SampleRows } from '../view/WorkedTable';

@@ -3,7 +3,9 @@
  * out with the page's numbers; for another f the pdf is the tabulated |f| / ∫|f| dx.
  */
 import { ExamPart, formatNumber, MathTex, Readout } from '../../../ui';
-import { estimateHasZeroVariance, squareNormalizer, type SampleTable } from '../model';
+import { estimateHasZeroVariance } from '../zeroVariance';
+import { squareNormalizer } from '../exam';
+import type { SampleTable } from '../sampleTable';
 import { MathBlock, n4, shifted, thirds, WorkedAnswer } from '../view/examMath';
 
 export function Q4c({

@@ -4,7 +4,7 @@
  */
 import { Derivation, ExamPart, LiveAnswer, Readout, Revealed } from '../../../ui';
 import { formatCount } from '../../../ui/format';
-import { RACE_MAX, raceAt } from '../model';
+import { RACE_MAX, raceAt } from '../race';
 import { raceOf, type RaceInput } from '../view/RaceSection';
 
 export function Q4d({

@@ -6,7 +6,7 @@ import type { ParamValues } from '../../../kit/params';
 import type { SceneProps } from '../../../kit/scene';
 import { Notice, NumberField, Panel } from '../../../ui';
 import { bindControls } from '../../../ui/paramControls';
-import { EXAM_F } from '../model';
+import { EXAM_F } from '../exam';
 import { schema, type McSchema, type PdfKind, type Strategy } from '../params';
 import { FnField, SamplesField } from './Fields';
 

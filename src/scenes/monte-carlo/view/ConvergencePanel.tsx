@@ -2,7 +2,7 @@
 import { useEffect, useMemo, useRef } from 'react';
 import { formatNumber, Panel, useThrottled, type PlotTrace } from '../../../ui';
 import { useAutoRun } from '../../../workers';
-import { atRoundingLevel } from '../model';
+import { atRoundingLevel } from '../zeroVariance';
 import { formatCount } from '../../../ui/format';
 import type { SeriesData } from '../jobs';
 import { REDRAW_MS, useLegendRoom } from './hooks';

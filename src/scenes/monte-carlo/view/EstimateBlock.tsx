@@ -8,7 +8,7 @@ import { formatNumber, Notice, Readout } from '../../../ui';
 import { formatCount } from '../../../ui/format';
 import type { WorkerJob } from '../../../workers';
 import type { PdfKind, Strategy } from '../params';
-import { estimateHasZeroVariance } from '../model';
+import { estimateHasZeroVariance } from '../zeroVariance';
 
 type Job = Pick<WorkerJob<unknown, unknown>, 'running' | 'progress' | 'error'>;
 

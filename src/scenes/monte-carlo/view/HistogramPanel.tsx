@@ -6,7 +6,7 @@ import { estimateFromTerms, histogram } from '../../../core/estimators';
 import { REDRAW_MS, useLegendRoom } from './hooks';
 import { arr, BAR_OPACITY, COLORS, CountField, REFERENCE, RunBar, type PanelRunProps } from './plotStyle';
 import { DescribedPlot, type PlotWords } from './DescribedPlot';
-import { zeroToRounding } from '../model';
+import { zeroToRounding } from '../zeroVariance';
 import { describeEstimateHistogram } from './plotWords';
 
 /** The histogram's statistics before the first estimates arrive. */

@@ -3,7 +3,9 @@
  * estimator's formulas.
  */
 import { MathTex, Panel } from '../../../ui';
-import type { curves, PdfChoice, SampleTable } from '../model';
+import type { curves } from '../curves';
+import type { PdfChoice } from '../pdfChoice';
+import type { SampleTable } from '../sampleTable';
 import { MathBlock } from './examMath';
 import { FunctionPlot } from './FunctionPlot';
 

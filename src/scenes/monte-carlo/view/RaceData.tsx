@@ -5,7 +5,8 @@
  */
 import { useMemo } from 'react';
 import { AudioTrace, ShowAsTable } from '../../../ui';
-import { countIn, raceAt, type RaceTrack } from '../model';
+import { countIn } from '../raceHistogram';
+import { raceAt, type RaceTrack } from '../race';
 import {
   crossings,
   describeErrors,

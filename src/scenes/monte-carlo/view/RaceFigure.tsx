@@ -3,11 +3,11 @@
  * drawn so far). Each xᵢ drops onto the integrand, its term f(xᵢ)/p(xᵢ) appears, and the running
  * estimate with its ± standard-error band and the |error| log-log curve grow with it — uniform and
  * importance sampling side by side, on the same random numbers ξᵢ. Everything at position t comes
- * from the model (raceAt / raceHeadAt at t); this file only draws it. While playing, React does not
+ * from the race (raceAt / raceHeadAt at t); this file only draws it. While playing, React does not
  * re-render the figure at all: every frame, a timeline subscription writes the moving SVG nodes (the
  * rugs, the newest samples, the curves and bands) directly, and the readouts and their labels at most
  * TEXT_HZ times a second. The growing curves are polylines over fixed sample counts
- * (model.racePoints): their segments are formatted once per track, and a frame only joins the
+ * (race.ts's racePoints): their segments are formatted once per track, and a frame only joins the
  * segments up to t (appending to the previous frame's string) and adds the point at t itself.
  * React renders the exact position on pause, step, seek and reset.
  */
@@ -15,49 +15,45 @@ import { memo, useLayoutEffect, useMemo, useRef } from 'react';
 import {
   DescribedFigure,
   formatNumber,
-  LiveReadout,
   Revealed,
   STRATEGY_COLOR,
   TEXT_HZ,
   TimelineTransport,
   useTimeline,
   useTimelineFrame,
-  writeReadout,
 } from '../../../ui';
 import { pow10Text } from '../../../ui/axis';
-import { clampExponent, coordText, linearScale, logScale, type Scale } from '../../../ui/chartScale';
-import { Axes, H, M, path, PH, PW, W } from './raceSvg';
+import { RunningEstimatePlot } from '../../../ui/RunningEstimatePlot';
+import { Axes, H, LineKey, M, PW, raceScales, roundUp2, W, type RaceCurve } from './raceSvg';
 import { RaceHistogram } from './RaceHistogram';
 import { raceWords } from './RaceData';
+import { gridAt } from '../curves';
 import {
-  gridAt,
-  RACE_DURATION,
-  RACE_MAX,
-  raceHeadAt,
-  raceLaneAt,
-  racePoints,
-  type LaneState,
-  type RaceTrack,
-} from '../model';
+  drawDot,
+  drawRug,
+  raceCurves,
+  rugPaths,
+  rugY,
+  RECENT,
+  RUG_BUCKETS,
+  type RaceGeom,
+} from './raceCurves';
+import { drawLane, LaneReadouts, useLaneRefs } from './LaneReadouts';
+import { RACE_DURATION, RACE_MAX, raceHeadAt, racePoints, type RaceTrack } from '../race';
 
 // the shared strategy colours (src/ui/palette): 3 : 1 in both themes, apart under colour-vision deficiencies
 const C_U = STRATEGY_COLOR.uniform;
 const C_I = STRATEGY_COLOR.importance;
 
 // the shared chart guard: every coordinate finite, for any data (../../../ui/chartScale)
-const lin = linearScale;
-const logS = logScale;
 
-const N_TICKS: number[] = [1, 10, 100, 1000].filter((n) => n <= RACE_MAX);
-/** Samples shown in each rug (the latest ones). */
-const RECENT = 40;
 /** React renders of the race while it plays: none (everything that moves is written per frame). */
 const RENDER_HZ = 0;
 
 export interface RaceProps {
   track: RaceTrack;
   /** f and the importance pdf scaled to f's height, on a grid over [a, b]. */
-  curve: { x: Float64Array; f: Float64Array; p: Float64Array; scale: number };
+  curve: RaceCurve;
   a: number;
   b: number;
   /** e.g. "p ∝ f, p = 3(x + 2)²/56". */
@@ -73,103 +69,6 @@ export interface RaceProps {
   t: number;
   play: boolean;
   setParams: (patch: { t?: number; play?: boolean }) => void;
-}
-
-/** What a lane's ± s/√N reads when the terms' spread is zero to rounding (model.zeroToRounding). */
-export const ZERO_TEXT = '0 (zero variance)';
-
-/** A small key of line styles: a stroke sample (solid or dashed) and its name per row. */
-function LineKey({ x, y, items }: { x: number; y: number; items: [string, string, boolean][] }) {
-  return (
-    <g className="mc-svg-key" aria-hidden="true">
-      {items.map(([name, color, dashed], k) => (
-        <g key={name} transform={`translate(${x} ${y + 15 * k})`}>
-          <line
-            x1={0}
-            x2={22}
-            y1={-4}
-            y2={-4}
-            style={{ stroke: color }}
-            className={dashed ? 'mc-svg-line mc-svg-dashed' : 'mc-svg-line'}
-          />
-          <text x={27} y={0}>
-            {name}
-          </text>
-        </g>
-      ))}
-    </g>
-  );
-}
-
-/** v rounded up to two significant digits (a density axis's top). */
-function roundUp2(v: number): number {
-  if (!(v > 0 && Number.isFinite(v))) return 1;
-  const u = 10 ** (Math.floor(Math.log10(v)) - 1);
-  return Math.ceil(v / u - 1e-9) * u;
-}
-
-/** The readouts of a lane: written directly (see drawLane), not rendered by React. */
-interface LaneRefs {
-  x: React.RefObject<HTMLOutputElement | null>;
-  term: React.RefObject<HTMLOutputElement | null>;
-  estimate: React.RefObject<HTMLOutputElement | null>;
-  stderr: React.RefObject<HTMLOutputElement | null>;
-  /** The label's sample index (x<sub>n</sub>) and count (⟨I⟩ after n). */
-  sub: React.RefObject<HTMLElement | null>;
-  after: React.RefObject<HTMLSpanElement | null>;
-}
-
-function useLaneRefs(): LaneRefs {
-  return {
-    x: useRef(null),
-    term: useRef(null),
-    estimate: useRef(null),
-    stderr: useRef(null),
-    sub: useRef(null),
-    after: useRef(null),
-  };
-}
-
-function drawLane(r: LaneRefs, s: LaneState): void {
-  writeReadout(r.x.current, s.n ? s.x : null, 6);
-  writeReadout(r.term.current, s.n ? s.term : null, 6);
-  writeReadout(r.estimate.current, s.n ? s.estimate : null, 7);
-  writeReadout(r.stderr.current, s.n > 1 ? s.stderr : null, 3);
-  // a spread that is rounding noise reads as what it is (the value itself stays in data-value)
-  const el = r.stderr.current;
-  if (el && s.zeroVariance && el.textContent !== ZERO_TEXT) el.textContent = ZERO_TEXT;
-  const sub = String(s.n || 'i');
-  if (r.sub.current && r.sub.current.textContent !== sub) r.sub.current.textContent = sub;
-  const after = String(s.n);
-  if (r.after.current && r.after.current.textContent !== after) r.after.current.textContent = after;
-}
-
-/** A lane's readouts: its newest sample and term, its estimate and ± s/√N (written per frame). */
-function LaneReadouts({ id, r }: { id: string; r: LaneRefs }) {
-  return (
-    <div className="readouts mc-lane-readouts mc-half">
-      <LiveReadout
-        id={`race-${id}-x`}
-        label={
-          <>
-            x<sub ref={r.sub} />
-          </>
-        }
-        outRef={r.x}
-      />
-      <LiveReadout id={`race-${id}-term`} label="its term f/p" outRef={r.term} />
-      <LiveReadout
-        id={`race-${id}-estimate`}
-        label={
-          <>
-            ⟨I⟩ after <span ref={r.after} />
-          </>
-        }
-        outRef={r.estimate}
-      />
-      <LiveReadout id={`race-${id}-stderr`} label="± s/√N" outRef={r.stderr} />
-    </div>
-  );
 }
 
 /**
@@ -211,60 +110,9 @@ export const RaceFigure = memo(function RaceFigure({
   const points = useMemo(() => racePoints(track.max), [track.max]);
   const fr = useMemo(() => raceHeadAt(track, tl.t, RECENT), [track, tl.t]);
   const I = track.exact;
-  const s = Math.abs(I) || 1;
 
   // --- static parts (keyed on the track and the curve, not on t) ----------------------------
-  const fig = useMemo(() => {
-    let lo = 0;
-    let hi = 0;
-    for (let k = 0; k < curve.f.length; k++) {
-      const v = curve.f[k];
-      const p = curve.p[k];
-      if (Number.isFinite(v)) {
-        lo = Math.min(lo, v);
-        hi = Math.max(hi, v);
-      }
-      if (Number.isFinite(p)) hi = Math.max(hi, p);
-    }
-    if (!(hi > lo)) hi = lo + 1;
-    hi += 0.08 * (hi - lo);
-    const sx = lin(a, b, M.l, M.l + PW);
-    const sy = lin(lo, hi, M.t + PH - 22, M.t);
-    const xs = Array.from(curve.x);
-    const fPath = path(xs, Array.from(curve.f), sx, sy);
-    const pPath = path(xs, Array.from(curve.p), sx, sy);
-    const xt: [number, string][] = [0, 0.25, 0.5, 0.75, 1].map((q) => [
-      sx(a + q * (b - a)),
-      formatNumber(a + q * (b - a), 3),
-    ]);
-    let fmax = 0;
-    for (const v of curve.f) if (Number.isFinite(v)) fmax = Math.max(fmax, v);
-    const yt: [number, string][] = (lo < 0 ? [lo, 0, fmax] : [0, fmax / 2, fmax]).map((v) => [
-      sy(v),
-      formatNumber(v, 3),
-    ]);
-    // running estimate: the same y range for both lanes, around the exact value
-    let R = 0;
-    for (let k = 3; k < track.max; k++)
-      R = Math.max(R, Math.abs(track.uniform.mean[k] - I), Math.abs(track.importance.mean[k] - I));
-    R = Math.max(R * 1.1, 1e-6 * s);
-    const ex = logS(1, track.max, M.l, M.l + PW);
-    const ey = lin(I - R, I + R, M.t + PH, M.t);
-    const nt: [number, string][] = N_TICKS.map((n) => [ex(n), String(n)]);
-    const et: [number, string][] = [-1, 0, 1].map((q) => [ey(I + q * R), formatNumber(I + q * R, 4)]);
-    // |error| log-log: from 10⁻⁵·|I| to |I| (smaller errors sit on the floor line)
-    // (decades of a subnormal |I| stop at 10⁻³²³, the smallest power of ten a double holds)
-    const e1 = clampExponent(Math.ceil(Math.log10(s)));
-    const e0 = clampExponent(Math.min(e1 - 1, Math.floor(Math.log10(s)) - 5));
-    const ly = logS(10 ** e0, 10 ** e1, M.t + PH, M.t);
-    const lt: [number, string][] = [];
-    for (let e = e0; e <= e1; e += e1 - e0 > 4 ? 2 : 1) lt.push([ly(10 ** e), pow10Text(e)]);
-    // N⁻½ guide through the uniform lane's final standard deviation: sd/√N is the expected error scale
-    const last = track.max - 1;
-    const sd = Math.sqrt(track.uniform.m2[last] / Math.max(1, last));
-    const guide = `M${coordText(ex(1))},${coordText(ly(Math.max(sd, 10 ** e0)))}L${coordText(ex(track.max))},${coordText(ly(Math.max(sd / Math.sqrt(track.max), 10 ** e0)))}`;
-    return { sx, sy, fPath, pPath, xt, yt, ex, ey, nt, et, ly, lt, floor: 10 ** e0, guide, R };
-  }, [track, curve, a, b, I, s]);
+  const fig = useMemo(() => raceScales(track, curve, a, b), [track, curve, a, b]);
 
   // the histograms' pdfs on the drawn grid (the importance curve is drawn scaled to f: unscale it), and
   // one density axis for both lanes, so their bars compare
@@ -484,17 +332,22 @@ export const RaceFigure = memo(function RaceFigure({
         testId={`race-estimate-${id}`}
       >
         <figcaption>⟨I⟩ against N, with its ± s/√N band</figcaption>
-        <svg viewBox={`0 0 ${W} ${H}`} aria-hidden="true">
-          <Axes xTicks={fig.nt} yTicks={fig.et} xLabel="N (samples)" yLabel="estimate" />
-          <line x1={M.l} x2={M.l + PW} y1={ey(I)} y2={ey(I)} className="mc-svg-exact" />
-          <path ref={setPath(`${k}Band`)} d={g[`${k}Band`]} style={{ fill: color }} className="mc-svg-band" />
-          <path
-            ref={setPath(`${k}Est`)}
-            d={g[`${k}Est`]}
-            style={{ stroke: color }}
-            className={k === 'i' ? 'mc-svg-line mc-svg-dashed' : 'mc-svg-line'}
-          />
-        </svg>
+        <RunningEstimatePlot
+          width={W}
+          height={H}
+          margin={M}
+          xTicks={fig.nt}
+          yTicks={fig.et}
+          xLabel="N (samples)"
+          yLabel="estimate"
+          exactY={ey(I)}
+          band={g[`${k}Band`]}
+          line={g[`${k}Est`]}
+          color={color}
+          dashed={k === 'i'}
+          bandRef={setPath(`${k}Band`)}
+          lineRef={setPath(`${k}Est`)}
+        />
       </DescribedFigure>
     ),
   }));
@@ -546,145 +399,3 @@ export const RaceFigure = memo(function RaceFigure({
     </div>
   );
 });
-
-/**
- * The growing curves (|error|, estimate, ± standard-error band of each lane) as polylines over the
- * sample counts `points` below t, plus the point at t itself: the segments at `points` are formatted
- * once; `at(t)` joins those below t, reusing the previous call's joined prefix when t grew.
- */
-export function raceCurves(
-  track: RaceTrack,
-  points: readonly number[],
-  fig: { ex: Scale; ey: Scale; ly: Scale; floor: number; R: number },
-  I: number,
-) {
-  const { ex, ey, ly, floor, R } = fig;
-  const clampY = (v: number) => Math.max(I - R, Math.min(I + R, v));
-  const xy = (n: number, y: number) => `${coordText(ex(n))},${coordText(y)}`;
-  type Seg = { err: string | null; est: string | null; up: string | null; dn: string | null };
-  const seg = (s: LaneState): Seg => {
-    const n = s.n;
-    const est = clampY(s.estimate);
-    const ok = Number.isFinite(s.stderr);
-    return {
-      err: Number.isFinite(s.absError) ? xy(n, ly(Math.max(s.absError, floor))) : null,
-      est: Number.isFinite(est) ? xy(n, ey(est)) : null,
-      up: ok ? xy(n, ey(clampY(s.estimate + s.stderr))) : null,
-      dn: ok ? xy(n, ey(clampY(s.estimate - s.stderr))) : null,
-    };
-  };
-  const segU = points.map((n) => seg(raceLaneAt(track.uniform, n, I)));
-  const segI = points.map((n) => seg(raceLaneAt(track.importance, n, I)));
-  /** A polyline's joined prefix over the first k points (forward, or reversed for a band's lower edge). */
-  const prefix = (segs: Seg[], key: keyof Seg, reversed: boolean) => {
-    let k = 0;
-    let s = '';
-    return (upTo: number) => {
-      if (upTo < k) {
-        k = 0;
-        s = '';
-      }
-      for (; k < upTo; k++) {
-        const g = segs[k][key];
-        if (g) s = s ? (reversed ? `${g}L${s}` : `${s}L${g}`) : g;
-      }
-      return s;
-    };
-  };
-  const lanes = ([segU, segI] as const).map((segs) => ({
-    err: prefix(segs, 'err', false),
-    est: prefix(segs, 'est', false),
-    up: prefix(segs, 'up', false),
-    dn: prefix(segs, 'dn', true),
-  }));
-  const join = (...parts: (string | null)[]) => parts.filter((p) => p).join('L');
-  return {
-    at(t: number): Pick<RaceGeom, 'uErr' | 'iErr' | 'uBand' | 'iBand' | 'uEst' | 'iEst'> {
-      t = Math.max(0, Math.min(track.max, Math.floor(t)));
-      // the points below t (points is increasing)
-      let lo = 0;
-      let hi = points.length;
-      while (lo < hi) {
-        const mid = (lo + hi) >> 1;
-        if (points[mid] < t) lo = mid + 1;
-        else hi = mid;
-      }
-      const k = lo;
-      const out = [] as string[][];
-      for (const [L, lane] of [
-        [lanes[0], track.uniform],
-        [lanes[1], track.importance],
-      ] as const) {
-        const tail: Seg = t >= 1 ? seg(raceLaneAt(lane, t, I)) : { err: null, est: null, up: null, dn: null };
-        const err = join(L.err(k), tail.err);
-        const est = join(L.est(k), tail.est);
-        const up = join(L.up(k), tail.up);
-        const dn = join(tail.dn, L.dn(k));
-        out.push([err ? `M${err}` : '', est ? `M${est}` : '', up ? `M${up}L${dn}Z` : '']);
-      }
-      return {
-        uErr: out[0][0],
-        uEst: out[0][1],
-        uBand: out[0][2],
-        iErr: out[1][0],
-        iEst: out[1][1],
-        iBand: out[1][2],
-      };
-    },
-  };
-}
-
-interface RaceGeom {
-  uErr: string;
-  iErr: string;
-  uBand: string;
-  iBand: string;
-  uEst: string;
-  iEst: string;
-  /** Screen x of the latest samples, oldest first. */
-  rugU: number[];
-  rugI: number[];
-  dotU: { x: number; y: number } | null;
-  dotI: { x: number; y: number } | null;
-}
-
-const rugY = (row: number) => M.t + PH - 16 + row * 9;
-/** Opacity steps of a rug (the latest RECENT samples, in age order). */
-const RUG_BUCKETS = 4;
-
-/** A rug's tick marks as RUG_BUCKETS paths, oldest first: sample j of the RECENT slots goes to bucket ⌊j·B/RECENT⌋. */
-function rugPaths(xs: number[], y: number): string[] {
-  const out: string[] = Array.from({ length: RUG_BUCKETS }, () => '');
-  const off = RECENT - xs.length;
-  for (let j = 0; j < xs.length; j++) {
-    const b = Math.min(RUG_BUCKETS - 1, Math.floor(((j + off) * RUG_BUCKETS) / RECENT));
-    out[b] += `M${coordText(xs[j])},${coordText(y)}v7`;
-  }
-  return out;
-}
-
-/** Moves a rug to the latest samples. */
-function drawRug(g: Element | null, xs: number[], y: number): void {
-  if (!g) return;
-  const d = rugPaths(xs, y);
-  const kids = g.children;
-  for (let k = 0; k < kids.length && k < d.length; k++) kids[k].setAttribute('d', d[k]);
-}
-
-/** Moves a newest-sample marker (a dashed drop line and a dot). */
-function drawDot(g: Element | null, d: { x: number; y: number } | null): void {
-  if (!g) return;
-  const el = g as SVGGElement;
-  if (!d) {
-    el.style.display = 'none';
-    return;
-  }
-  if (el.style.display) el.style.display = '';
-  const [line, dot] = g.children;
-  const x = String(d.x);
-  line?.setAttribute('x1', x);
-  line?.setAttribute('x2', x);
-  line?.setAttribute('y2', String(d.y));
-  dot?.setAttribute('cx', x);
-  dot?.setAttribute('cy', String(d.y));
-}

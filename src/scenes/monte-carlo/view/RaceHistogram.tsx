@@ -8,7 +8,8 @@
 import { useLayoutEffect, useMemo, useRef } from 'react';
 import { DescribedFigure, formatNumber, ShowAsTable, useTimelineFrame, type Timeline } from '../../../ui';
 import { coordText, linearScale } from '../../../ui/chartScale';
-import { binRange, countIn, gridAt, raceBinIndex, raceCounts, RACE_BINS } from '../model';
+import { binRange, countIn, raceBinIndex, raceCounts, RACE_BINS } from '../raceHistogram';
+import { gridAt } from '../curves';
 import { describeHistogram } from './describeRace';
 import { Axes, M, path, PW } from './raceSvg';
 

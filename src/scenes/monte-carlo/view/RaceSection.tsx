@@ -5,17 +5,11 @@
  * render it makes its own short task instead of lengthening the scene's. Both read one cached
  * track (the last one computed), so the second is free.
  */
-import {
-  curves,
-  heavierHalf,
-  raceAt,
-  racePoints,
-  raceTrack,
-  type Exact,
-  type Fn1,
-  type PdfChoice,
-  type RaceTrack,
-} from '../model';
+import { curves } from '../curves';
+import { heavierHalf } from '../raceHistogram';
+import { raceAt, racePoints, raceTrack, type RaceTrack } from '../race';
+import type { Exact, Fn1 } from '../integral';
+import type { PdfChoice } from '../pdfChoice';
 import type { Pdf1D } from '../../../core/sampling/pdf1d';
 import { RaceFigure, type RaceProps } from './RaceFigure';
 import { RaceData } from './RaceData';

@@ -2,7 +2,8 @@
 import { useMemo, useRef } from 'react';
 import { Panel, useThrottled, type PlotTrace } from '../../../ui';
 import { useAutoRun } from '../../../workers';
-import { atRoundingLevel, sortedByX } from '../model';
+import { atRoundingLevel } from '../zeroVariance';
+import { sortedByX } from '../compared';
 import { formatCount } from '../../../ui/format';
 import { REDRAW_MS, useLegendRoom } from './hooks';
 import { arr, clampArr, COLORS, CountField, RunBar, strategyLine, type PanelRunProps } from './plotStyle';

@@ -3,7 +3,8 @@
  * the answer key's printed figures differ from the computation.
  */
 import { formatNumber, Notice, Readout } from '../../../ui';
-import type { KeyNote, SampleTable } from '../model';
+import type { KeyNote } from '../exam';
+import type { SampleTable } from '../sampleTable';
 import type { PdfKind } from '../params';
 
 const num = (x: number, d = 6) => (Number.isFinite(x) ? formatNumber(x, d) : '—');

@@ -5,7 +5,8 @@
  */
 import { formatCount, formatSignificant } from '../../../ui/format';
 import { summarizeSeries } from '../../../ui/summary';
-import { binRange, type LaneState } from '../model';
+import { binRange } from '../raceHistogram';
+import type { LaneState } from '../race';
 
 const num = (x: number, digits: number) => (Number.isFinite(x) ? formatSignificant(x, digits, 'times') : '—');
 const interval = (lo: number, hi: number) => `[${num(lo, 4)}, ${num(hi, 4)}]`;
