@@ -9,7 +9,9 @@ import {
   waitForReadout,
   countAnimationFrames,
 } from './fixtures';
-import { checkInputs, computeModel, makeSweep, paramsAt, sweepAt } from '../../src/scenes/ray-sphere/model';
+import { checkInputs } from '../../src/scenes/ray-sphere/inputs';
+import { computeModel } from '../../src/scenes/ray-sphere/model';
+import { makeSweep, paramsAt, sweepAt } from '../../src/scenes/ray-sphere/sweep';
 import type { RaySphereParams } from '../../src/scenes/ray-sphere/params';
 
 type V = [number, number, number];

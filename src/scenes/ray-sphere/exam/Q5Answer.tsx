@@ -3,7 +3,8 @@
  * note on what the key prints.
  */
 import { KeyNote, LiveAnswer, Notice, Readout } from '../../../ui';
-import { activeRows, sweepAt, type Sweep } from '../model';
+import { activeRows } from '../model';
+import { sweepAt, type Sweep } from '../sweep';
 import { Float32Note, textbookDiscriminant } from '../view/Float32Panel';
 import type { RaySphereParams } from '../params';
 import { fmt, sweepCoord } from '../view/format';

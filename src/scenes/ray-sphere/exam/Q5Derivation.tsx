@@ -6,7 +6,8 @@
 import { memo } from 'react';
 import { Derivation, MathTex } from '../../../ui';
 import type { RaySphereMethod } from '../../../core/geometry';
-import { activeRows, secondaryFromHit, tMinFor, type RaySphereModel } from '../model';
+import { activeRows, type RaySphereModel } from '../model';
+import { secondaryFromHit, tMinFor } from '../secondaryRay';
 import { fmt, tx, txVec as v, yes } from '../view/format';
 import { SURVEY_POINTS, useSurvey } from '../view/useSurvey';
 

@@ -12,7 +12,10 @@ import { useLayoutEffect, useRef, useState, type KeyboardEvent, type PointerEven
 import { announce } from '../../../ui/announce';
 import { useWidth } from '../../../ui/useWidth';
 import { useSectionWidth } from '../../../ui/Deferred';
-import { dirFromFrame, fromFrame, tidy, type V3 } from '../model';
+import { dirFromFrame, fromFrame } from '../frame';
+import { tidy } from '../tidy';
+import type { Vec3 } from '../../../core/vec3';
+import type { RaySphereParams } from '../params';
 import { ArrowMarker } from '../../../ui/ArrowMarker';
 import {
   cl,
@@ -35,9 +38,9 @@ import { clipSegment } from './labelLayout';
 export type { RayState } from './crossLayout';
 
 export interface CrossSectionProps extends RayState {
-  onChange: (patch: { o?: V3; d?: V3; c?: V3; r?: number }) => void;
+  onChange: (patch: Partial<Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r'>>) => void;
   /** More points to keep in view (e.g. the ends of a sweep), so the view does not jump while animating. */
-  fitExtra?: readonly V3[];
+  fitExtra?: readonly Vec3[];
   /** Set to a function that redraws the figure for another ray directly (per animation frame). */
   drawRef?: { current: ((ray: CrossRay) => void) | null };
   /** The tallest the drawing may be (px); default 460. */
@@ -71,7 +74,11 @@ function useFillHeight(ref: { current: HTMLElement | null }, on: boolean): numbe
 export type CrossRay = RayState;
 
 /** Each coordinate rounded to `step` (see tidy). */
-const tidyVec = (q: V3, step: number): V3 => [tidy(q[0], step), tidy(q[1], step), tidy(q[2], step)];
+const tidyVec = (q: Vec3, step: number): RaySphereParams['o'] => [
+  tidy(q[0], step),
+  tidy(q[1], step),
+  tidy(q[2], step),
+];
 
 /** A label's size: its measured text width (cached per text and font size) and 1.25 em. */
 function useLabelSizer() {
@@ -249,7 +256,7 @@ export function CrossSection({
   const apply = (target: Target, x: number, y: number) => {
     const g = cur();
     const { fr, O2, C2, dl, v, step } = g;
-    const t = (q: V3) => tidyVec(q, step);
+    const t = (q: Vec3) => tidyVec(q, step);
     if (target === 'o') onChange({ o: t(fromFrame(fr, x, y)) });
     else if (target === 'c') onChange({ c: t(fromFrame(fr, x, y)) });
     else if (target === 'r') {

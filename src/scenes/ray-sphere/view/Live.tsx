@@ -6,7 +6,11 @@
 import { useLayoutEffect, useRef, type ReactNode } from 'react';
 import { useCoarsePosition, useTimelineFrame, type Timeline } from '../../../ui';
 import type { RaySphereCase, RaySphereHit } from '../../../core/geometry';
-import { CASE_TEXT, sweepAt, type RaySphereModel, type Sweep, type SweepSeries, type V3 } from '../model';
+import { CASE_TEXT } from '../caseText';
+import { sweepAt, type Sweep } from '../sweep';
+import { type RaySphereModel } from '../model';
+import { type SweepSeries } from '../sweepSeries';
+import type { Vec3 } from '../../../core/vec3';
 import type { RaySphereParams } from '../params';
 import { CrossSection, type CrossRay } from './CrossSection';
 import { DeltaSweepPlot, GSweepPlot } from './SweepPlots';
@@ -58,7 +62,7 @@ export function LiveCrossSection({
   fill,
 }: LiveProps & {
   onChange: (patch: Partial<RaySphereParams>) => void;
-  fitExtra: readonly V3[];
+  fitExtra: readonly Vec3[];
   /** Draw the ray and the sphere only, without the roots (ask=1 before Reveal). */
   hideResults?: boolean;
   fill?: boolean;

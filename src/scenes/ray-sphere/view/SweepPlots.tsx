@@ -7,7 +7,7 @@
  */
 import { memo, useLayoutEffect, useMemo, useRef, type ReactNode } from 'react';
 import type { RaySphereCase, RaySphereHit } from '../../../core/geometry';
-import type { SweepSeries } from '../model';
+import type { SweepSeries } from '../sweepSeries';
 import { useWidth } from '../../../ui/useWidth';
 import { linearScale } from '../../../ui/chartScale';
 import { useSectionWidth } from '../../../ui/Deferred';

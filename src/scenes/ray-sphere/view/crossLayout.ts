@@ -5,7 +5,9 @@
  * where each label goes so that no handle covers it (view/labelLayout.ts).
  */
 import type { RaySphereHit } from '../../../core/geometry';
-import { canonicalFrame, FAR_RATIO, frameFits, toFrame, type Frame2D, type V3 } from '../model';
+import { canonicalFrame, frameFits, toFrame, type Frame2D } from '../frame';
+import { FAR_RATIO } from '../model';
+import type { Vec3 } from '../../../core/vec3';
 import {
   discBox,
   overlapArea,
@@ -18,9 +20,9 @@ import {
 
 /** The ray and sphere a figure draws: the checked inputs, the chosen method's hit, |o − C| / r. */
 export interface RayState {
-  o: V3;
-  d: V3;
-  c: V3;
+  o: Vec3;
+  d: Vec3;
+  c: Vec3;
   r: number;
   res: RaySphereHit | null;
   distanceRatio: number;
@@ -93,7 +95,7 @@ export const cl = (x: number) => Math.max(-1e5, Math.min(1e5, x));
  */
 export function layoutCross(
   ray: RayState,
-  fitExtra: readonly V3[],
+  fitExtra: readonly Vec3[],
   W: number,
   H: number,
   dragging: Target | null,
@@ -117,7 +119,7 @@ export function layoutCross(
     // Projecting a point 10⁸ r away onto e2 would amplify e2's rounding (≈ε|f|/|l|) into a
     // visible offset; in the canonical frame the exact answer is known: the ray runs along x at
     // height |l| (the distance of the line from the centre), and the centre is the origin.
-    const f: V3 = [o[0] - c[0], o[1] - c[1], o[2] - c[2]];
+    const f: Vec3 = [o[0] - c[0], o[1] - c[1], o[2] - c[2]];
     const k = (f[0] * d[0] + f[1] * d[1] + f[2] * d[2]) / (dl * dl);
     const lx = f[0] - k * d[0];
     const ly = f[1] - k * d[1];
