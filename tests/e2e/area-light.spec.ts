@@ -8,14 +8,9 @@ import AxeBuilder from '@axe-core/playwright';
 import { test, expect, openScene, readout, readoutNumber, countAnimationFrames } from './fixtures';
 import { defaultValues, parseParams } from '../../src/kit/params';
 import { schema } from '../../src/scenes/area-light/params';
-import {
-  animationFrame,
-  animationLength,
-  buildModel,
-  givenSamples,
-  patchModel,
-  sampleRun,
-} from '../../src/scenes/area-light/model';
+import { animationFrame, animationLength, sampleRun } from '../../src/scenes/area-light/animation';
+import { buildModel, givenSamples } from '../../src/scenes/area-light/model';
+import { patchModel } from '../../src/scenes/area-light/patch';
 import type { LightStrategy } from '../../src/core/lights';
 
 type V3 = [number, number, number];

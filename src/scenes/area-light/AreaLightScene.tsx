@@ -12,15 +12,10 @@ import { prefersReducedMotion } from '../../ui/timeline';
 import { useWorkerJob } from '../../workers';
 import { runChunked } from '../../ui/chunked';
 import { makeWorker } from './jobs';
-import {
-  STRATEGIES,
-  animationLength,
-  buildModel,
-  estimateOne,
-  patchModel,
-  targetValue,
-  type StrategyEstimate,
-} from './model';
+import { STRATEGIES } from './strategies';
+import { animationLength } from './animation';
+import { buildModel, estimateOne, targetValue, type StrategyEstimate } from './model';
+import { patchModel } from './patch';
 import { floorJob, floorPassAt } from './floor';
 import { schema, type AreaLightParams } from './params';
 import { Q6a } from './exam/Q6a';

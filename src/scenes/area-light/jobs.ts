@@ -5,8 +5,8 @@
  * math is in model.ts / core, these only loop, time and report progress.
  */
 import { estimateAreaLight, type AreaLightSetup, type LightStrategy } from '../../core/lights';
+import { STRATEGIES } from './strategies';
 import {
-  STRATEGIES,
   TIMING_COUNTS,
   TIMING_RUNS,
   buildModel,
