@@ -94,7 +94,7 @@ export function Q5Figure(props: Q5FigureProps) {
   );
   const banner = (
     <Revealed ask={ask} what="the case (hit, miss, tangent …)">
-      <LiveCaseBanner {...live} />
+      <LiveCaseBanner {...live} method={method} />
     </Revealed>
   );
   // on the stage the sweep's own controls (mode, extent) are in the drawer with the others

@@ -22,6 +22,7 @@ import {
   handlePositions,
   HANDLE_R,
   layoutCross,
+  NOTE_KEYS,
   noteText,
   planLabels,
   X_,
@@ -164,13 +165,18 @@ function drawCross(
     set(q(`h-${h.target}`), { transform: `translate(${cl(h.at[0])} ${cl(h.at[1])})` });
   for (const k of ['o', 'tip', 'c', 'r'] as const) show(q(`h-${k}`), shown.has(k));
   show(q('o-label'), !far);
-  show(q('note'), noteText(g) !== null);
+  for (const k of NOTE_KEYS) show(q(k), noteText(g) !== null);
   // labels last: measured with their current text, then put where no handle covers them
   const labels = planLabels(g, (key: LabelKey, text: string) => {
     const el = q(key) as SVGTextElement | null;
     if (el && el.textContent !== text) el.textContent = text;
     return size(el, text);
   });
+  for (const k of NOTE_KEYS)
+    show(
+      q(k),
+      labels.some((l) => l.key === k),
+    );
   for (const l of labels) {
     const el = q(l.key);
     if (!el) continue;
@@ -384,6 +390,8 @@ export function CrossSection({
           r
         </text>
         <text data-k="note" className="rs-note" display="none" />
+        <text data-k="note2" className="rs-note" display="none" />
+        <text data-k="note3" className="rs-note" display="none" />
       </svg>
       <p className="rs-caption">
         Plane through the ray and the centre. Solid: the ray (t&nbsp;≥&nbsp;0); dashed: the line behind the

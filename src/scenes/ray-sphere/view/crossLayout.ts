@@ -253,7 +253,11 @@ export function noteText(g: Layout): string | null {
 }
 
 /** The labels the figure writes, by their data-k key. */
-export type LabelKey = 'root0-label' | 'root1-label' | 'o-label' | 'c-label' | 'r-label' | 'note';
+export type LabelKey =
+  'root0-label' | 'root1-label' | 'o-label' | 'c-label' | 'r-label' | 'note' | 'note2' | 'note3';
+
+/** The keys of the note's lines, in order (a long note is broken to fit the figure's width). */
+export const NOTE_KEYS = ['note', 'note2', 'note3'] as const;
 
 export interface PlacedLabel {
   key: LabelKey;
@@ -290,14 +294,32 @@ export function planLabels(
   // the note first (it is long), along the bottom or the top edge, wherever no handle is
   const note = noteText(g);
   if (note) {
-    const [w, h] = size('note', note);
+    // broken into lines that fit the figure's width (at most NOTE_KEYS.length, the last one takes the rest)
+    const lines: string[] = [];
+    let line = '';
+    for (const word of note.split(' ')) {
+      const next = line ? `${line} ${word}` : word;
+      const key = NOTE_KEYS[Math.min(lines.length, NOTE_KEYS.length - 1)];
+      if (line && lines.length < NOTE_KEYS.length - 1 && size(key, next)[0] > g.W - 24) {
+        lines.push(line);
+        line = word;
+      } else line = next;
+    }
+    lines.push(line);
+    const sized = lines.map((text, i) => ({ key: NOTE_KEYS[i], text, wh: size(NOTE_KEYS[i], text) }));
+    const w = Math.max(...sized.map((l) => l.wh[0]));
+    const h = sized.reduce((a, l) => a + l.wh[1], 0);
     const spots: Box[] = [
       { x: 12, y: g.H - 8 - h, w, h },
       { x: 12, y: 8, w, h },
     ];
     const box = spots.find((b) => hard.every((o) => overlapArea(o, b) === 0)) ?? spots[0];
     hard.push(box);
-    out.push({ key: 'note', text: note, box });
+    let y = box.y;
+    for (const l of sized) {
+      out.push({ key: l.key, text: l.text, box: { x: box.x, y, w: l.wh[0], h: l.wh[1] } });
+      y += l.wh[1];
+    }
   }
   const wanted: { key: LabelKey; text: string }[] = [];
   const reqs: LabelRequest[] = [];
