@@ -12,6 +12,7 @@ import { useWidth } from '../../../ui/useWidth';
 import { linearScale } from '../../../ui/chartScale';
 import { useSectionWidth } from '../../../ui/Deferred';
 import { niceTicks, tickLabel } from '../../../ui/axis';
+import './sweepPlots.css';
 
 const PAD = { l: 62, r: 14, t: 30, b: 44 };
 
