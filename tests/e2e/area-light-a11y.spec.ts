@@ -10,14 +10,9 @@ import { test, expect, openScene, readoutNumber } from './fixtures';
 import { axTree } from './axTree';
 import { defaultValues, parseParams } from '../../src/kit/params';
 import { EXAM_PRESET, schema } from '../../src/scenes/area-light/params';
-import {
-  animationFrame,
-  animationLength,
-  buildModel,
-  patchModel,
-  sampleRun,
-  targetValue,
-} from '../../src/scenes/area-light/model';
+import { animationFrame, animationLength, sampleRun } from '../../src/scenes/area-light/animation';
+import { buildModel, targetValue } from '../../src/scenes/area-light/model';
+import { patchModel } from '../../src/scenes/area-light/patch';
 import { centreView } from '../../src/scenes/area-light/view/describe';
 import { formatNumber } from '../../src/ui/Readout';
 import type { LightStrategy } from '../../src/core/lights';

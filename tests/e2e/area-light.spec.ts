@@ -7,15 +7,9 @@
 import { test, expect, openScene, readout, readoutNumber } from './fixtures';
 import { defaultValues, parseParams } from '../../src/kit/params';
 import { schema } from '../../src/scenes/area-light/params';
-import {
-  animationFrame,
-  animationLength,
-  buildModel,
-  estimateOne,
-  givenSamples,
-  patchModel,
-  sampleRun,
-} from '../../src/scenes/area-light/model';
+import { animationFrame, animationLength, sampleRun } from '../../src/scenes/area-light/animation';
+import { buildModel, estimateOne, givenSamples } from '../../src/scenes/area-light/model';
+import { patchModel } from '../../src/scenes/area-light/patch';
 import type { LightStrategy } from '../../src/core/lights';
 
 /** The model computed here, in Node, from a query string (the same parser as the app). */

@@ -1,7 +1,9 @@
 // #/ray-sphere, exam first and the sweep animation on the shared timeline.
 // Expected values are computed here, by the scene's own pure model or by plain arithmetic.
 import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
-import { checkInputs, computeModel, makeSweep, paramsAt, sweepAt } from '../../src/scenes/ray-sphere/model';
+import { checkInputs } from '../../src/scenes/ray-sphere/inputs';
+import { computeModel } from '../../src/scenes/ray-sphere/model';
+import { makeSweep, paramsAt, sweepAt } from '../../src/scenes/ray-sphere/sweep';
 import type { RaySphereParams } from '../../src/scenes/ray-sphere/params';
 
 type V = [number, number, number];

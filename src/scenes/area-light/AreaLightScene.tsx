@@ -7,28 +7,15 @@
  */
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import type { SceneProps } from '../../kit/scene';
-import {
-  ExamQuestion,
-  ExploreFurther,
-  Notice,
-  Revealed,
-  SceneLayout,
-  useSeenOnce,
-  useTimeline,
-} from '../../ui';
+import { ExamQuestion, ExploreFurther, Notice, Revealed, SceneLayout, useTimeline } from '../../ui';
 import { prefersReducedMotion } from '../../ui/timeline';
-import { useWorkerJob, workerFactory } from '../../workers';
+import { useWorkerJob } from '../../workers';
 import { runChunked } from '../../ui/chunked';
-import type { AreaLightTasks } from './floor.worker';
-import {
-  STRATEGIES,
-  animationLength,
-  buildModel,
-  estimateOne,
-  patchModel,
-  targetValue,
-  type StrategyEstimate,
-} from './model';
+import { makeWorker } from './jobs';
+import { STRATEGIES } from './strategies';
+import { animationLength } from './animation';
+import { buildModel, estimateOne, targetValue, type StrategyEstimate } from './model';
+import { patchModel } from './patch';
 import { floorJob, floorPassAt } from './floor';
 import { schema, type AreaLightParams } from './params';
 import { Q6a } from './exam/Q6a';
@@ -46,9 +33,6 @@ type Schema = typeof schema;
 
 /** Largest n per strategy estimated on the main thread. */
 const SYNC_MAX = 65536;
-const makeWorker = workerFactory<AreaLightTasks>(
-  () => new Worker(new URL('./floor.worker.ts', import.meta.url), { type: 'module' }),
-);
 
 export default function AreaLightScene({ params, setParams, mode }: SceneProps<Schema>) {
   const set = useCallback((patch: Partial<AreaLightParams>) => setParams(patch), [setParams]);
@@ -106,11 +90,14 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
   const patch = useMemo(() => patchModel(model, pu, pv, psize, ptilt), [model, pu, pv, psize, ptilt]);
   // Convergence series (3 × 32768 samples) in the worker: ~0.1 s that a slider drag should not wait for.
   // The convergence and timing runs start when their panels come near the screen (not on load:
-  // their results re-render the scene while the first screen should be answering input).
-  const convBox = useRef<HTMLDivElement>(null);
-  const timingBox = useRef<HTMLDivElement>(null);
-  const convSeen = useSeenOnce(convBox);
-  const timingSeen = useSeenOnce(timingBox);
+  // their results re-render the scene while the first screen should be answering input). Each
+  // panel watches its own box and reports once it has been seen: the panels mount later than this
+  // component (Explore further is deferred), so a box watched from here would still be empty when
+  // the watching starts, and the runs would never start.
+  const [convSeen, setConvSeen] = useState(false);
+  const [timingSeen, setTimingSeen] = useState(false);
+  const onConvSeen = useCallback(() => setConvSeen(true), []);
+  const onTimingSeen = useCallback(() => setTimingSeen(true), []);
   const convArgs = useMemo(() => ({ params, nMax: 1 << 15 }), [params]);
   const convTask = useWorkerJob(makeWorker, 'convergence', convArgs, {
     key: timingKey,
@@ -202,13 +189,13 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
       <ExploreFurther intro="Beyond the exam: two other ways to sample the same integral, how fast each converges, what it costs, and what its noise looks like on a whole floor.">
         <Revealed ask={ask} what="the three strategies’ estimates, their convergence and the floor images">
           <StrategyTable estimates={estimates} strategy={strategy} n={n} seed={seed} target={target} />
-          <ConvergencePanel conv={convTask.result} seenRef={convBox} present={mode.present} />
+          <ConvergencePanel conv={convTask.result} onSeen={onConvSeen} present={mode.present} />
           <TimingPanel
             result={timing.result}
             running={timing.running}
             progress={timing.progress}
             error={timing.error}
-            seenRef={timingBox}
+            onSeen={onTimingSeen}
             present={mode.present}
           />
           <FloorPanel job={job} pass={floorPass} />

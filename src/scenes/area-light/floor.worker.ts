@@ -1,9 +1,5 @@
-/** Worker of #/area-light: runs ./jobs off the main thread (cancel = terminate, src/workers/run.ts). */
+/** Worker of #/area-light: runs the tasks of ./jobs off the main thread (cancel = terminate, src/workers/run.ts). */
 import { exposeTasks } from '../../workers/expose';
-import { convergenceJob, estimatesJob, renderJob, timingJob } from './jobs';
+import { AREA_LIGHT_TASKS } from './jobs';
 
-const tasks = { convergence: convergenceJob, estimates: estimatesJob, render: renderJob, timing: timingJob };
-exposeTasks(tasks);
-
-/** The worker's tasks, for workerFactory<AreaLightTasks> on the page's side. */
-export type AreaLightTasks = typeof tasks;
+exposeTasks(AREA_LIGHT_TASKS);

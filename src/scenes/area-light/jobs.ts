@@ -5,8 +5,8 @@
  * math is in model.ts / core, these only loop, time and report progress.
  */
 import { estimateAreaLight, type AreaLightSetup, type LightStrategy } from '../../core/lights';
+import { STRATEGIES } from './strategies';
 import {
-  STRATEGIES,
   TIMING_COUNTS,
   TIMING_RUNS,
   buildModel,
@@ -20,6 +20,7 @@ import { PASS_SPP, floorPass, imageRmse, referenceImage, type FloorJob } from '.
 import type { AreaLightParams } from './params';
 
 import { yieldToEventLoop as tick, type ProgressFn as Progress } from '../../workers/expose';
+import { workerFactory } from '../../workers/protocol';
 
 const now = (): number => performance.now();
 
@@ -162,3 +163,19 @@ export async function timingJob(
   out.sort((a, b) => STRATEGIES.indexOf(a.strategy) - STRATEGIES.indexOf(b.strategy) || a.n - b.n);
   return out;
 }
+
+/** The tasks floor.worker.ts runs, by name. */
+export const AREA_LIGHT_TASKS = {
+  convergence: convergenceJob,
+  estimates: estimatesJob,
+  render: renderJob,
+  timing: timingJob,
+};
+
+/** The worker's tasks, for the page's side. */
+export type AreaLightTasks = typeof AREA_LIGHT_TASKS;
+
+/** The scene's worker, as the page starts it (one fresh worker per run: src/workers/run.ts). */
+export const makeWorker = workerFactory<AreaLightTasks>(
+  () => new Worker(new URL('./floor.worker.ts', import.meta.url), { type: 'module' }),
+);

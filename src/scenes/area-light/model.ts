@@ -4,8 +4,8 @@
  * refusal and a safe fallback), and computes what the view shows by calling the core: the analytic
  * reference (Lambert's formula), the three estimators with standard errors, the solid angle (and
  * its closed form when one applies), convergence series, the run-time study and Q6(c)'s first
- * samples. The Q6(a) patch (./patch) and the animation (./animation) are re-exported from here;
- * the floor images are in ./floor.
+ * samples. The Q6(a) patch is in ./patch, the animation in ./animation, the floor images in
+ * ./floor.
  */
 import {
   areaLightConvergence,
@@ -26,24 +26,14 @@ import {
   type RectLight,
   type Vec3,
 } from '../../core/lights';
+import { sameVec } from '../../core/vec3';
 import { alignedRectangleSolidAngle } from '../../core/geometry/solidAngle';
 import { logSpacedCounts } from '../../core/estimators/convergence';
 import { Rng } from '../../core/random';
 import { fail, type Failure } from '../../core/failure';
+import type { ParamProblem } from '../../kit/params';
 import { schema, type AreaLightParams } from './params';
 import { STRATEGIES } from './strategies';
-
-export { STRATEGIES, STRATEGY_LABEL, STRATEGY_SHORT } from './strategies';
-export { patchModel, type PatchModel } from './patch';
-export {
-  ANIM_MAX,
-  animationFrame,
-  animationLength,
-  drawSamples,
-  sampleRun,
-  type AnimationFrame,
-  type SampleRun,
-} from './animation';
 
 /**
  * An input the model refused and replaced by a safe value: `kind` names the input, `message`
@@ -75,6 +65,11 @@ export interface AreaLightModel extends LightInputs {
   setup: AreaLightSetup;
   /** The inputs refused and replaced by safe values, in the order of the checks. */
   refusals: Refusal[];
+  /**
+   * Each parameter whose value the model does not use as given, once, with why (the refusal's
+   * message, or what replaced a radiance, albedo or tilt it cannot use), in schema order.
+   */
+  problems: ParamProblem[];
   /** What the page shows: the refusals (as errors), then remarks about the input (info). */
   messages: ModelMessage[];
   /** Analytic L_o without the occluder (the contract's `reference`). */
@@ -122,41 +117,57 @@ function sizeRefusal(w: number, h: number): Refusal {
  */
 export function buildModel(params: AreaLightParams): AreaLightModel {
   const refusals: Refusal[] = [];
+  const problems: ParamProblem[] = [];
+  const refuse = (names: readonly (keyof AreaLightParams)[], f: Refusal) => {
+    refusals.push(f);
+    for (const name of names) problems.push({ name, message: f.message });
+  };
   const notes: ModelMessage[] = [];
   const def = schema;
   let p: Vec3 = finite3(params.p) ? [...params.p] : [...def.p.default];
   let lc: Vec3 = finite3(params.lc) ? [...params.lc] : [...def.lc.default];
   if (!finite3(params.p))
-    refusals.push(fail('bad-point', 'The shading point p is not three finite numbers; using 0,0,0.'));
+    refuse(['p'], fail('bad-point', 'The shading point p is not three finite numbers; using 0,0,0.'));
   if (!finite3(params.lc))
-    refusals.push(
+    refuse(
+      ['lc'],
       fail('bad-centre', `The light centre is not three finite numbers; using ${def.lc.default.join(',')}.`),
     );
   let w = params.ls?.[0] ?? NaN;
   let h = params.ls?.[1] ?? NaN;
   if (!(Number.isFinite(w) && Number.isFinite(h) && w > 0 && h > 0 && w * h >= MIN_AREA)) {
-    refusals.push(sizeRefusal(w, h));
+    refuse(['ls'], sizeRefusal(w, h));
     w = 1;
     h = 1;
   }
   let tilt = Number.isFinite(params.tilt) ? params.tilt : 0;
+  if (!Number.isFinite(params.tilt))
+    problems.push({ name: 'tilt', message: 'The light’s tilt is not a finite number; using 0.' });
   const L = Number.isFinite(params.L) && params.L >= 0 ? params.L : 1;
+  if (L !== params.L)
+    problems.push({ name: 'L', message: 'The radiance L must be a finite number ≥ 0; using 1.' });
   const rho = Number.isFinite(params.rho) && params.rho >= 0 && params.rho <= 1 ? params.rho : 0.8;
+  if (rho !== params.rho)
+    problems.push({ name: 'rho', message: 'The albedo ρ must be a number from 0 to 1; using 0.8.' });
   let light = makeRectLight(lc, w, h, tilt);
   if (onLight(light, p)) {
-    refusals.push(
+    const moved: (keyof AreaLightParams)[] = sameVec(p, [0, 0, 0]) ? [] : ['p'];
+    p = [0, 0, 0];
+    if (onLight(light, p)) {
+      if (!sameVec(lc, [0, 0, 2])) moved.push('lc');
+      if (tilt !== 0) moved.push('tilt');
+      lc = [0, 0, 2];
+      tilt = 0;
+      light = makeRectLight(lc, w, h, tilt);
+    }
+    refuse(
+      moved,
       fail(
         'point-on-light',
         'The shading point lies on the light itself: r = 0 there and the integrand is singular. ' +
           'Moving the point to 0,0,0 (and the light to 0,0,2 if needed).',
       ),
     );
-    p = [0, 0, 0];
-    if (onLight(light, p)) {
-      lc = [0, 0, 2];
-      tilt = 0;
-      light = makeRectLight(lc, w, h, tilt);
-    }
   }
   const occluder = params.occluder ? makeOccluder(p, lc, w, h) : null;
   const setup: AreaLightSetup = { light, occluder, px: p[0], py: p[1], pz: p[2], L, rho };
@@ -219,6 +230,7 @@ export function buildModel(params: AreaLightParams): AreaLightModel {
     occluder,
     setup,
     refusals,
+    problems: inSchemaOrder(problems),
     messages: [...refusals.map((f): ModelMessage => ({ kind: 'error', text: f.message })), ...notes],
     reference,
     referenceOccluded,
@@ -228,6 +240,12 @@ export function buildModel(params: AreaLightParams): AreaLightModel {
     facing,
     belowHorizon,
   };
+}
+
+/** The problems in the schema's order of parameters, the first one of each parameter only. */
+function inSchemaOrder(problems: ParamProblem[]): ParamProblem[] {
+  const names = Object.keys(schema);
+  return names.flatMap((name) => problems.find((x) => x.name === name) ?? []);
 }
 
 function fmtSize(x: number): string {

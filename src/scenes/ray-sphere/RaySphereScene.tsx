@@ -19,7 +19,9 @@ import {
   useTimeline,
 } from '../../ui';
 import type { RaySphereParams, schema } from './params';
-import { checkInputs, computeModel, makeSweep, paramsAt, sweepAt } from './model';
+import { checkInputs } from './inputs';
+import { computeModel } from './model';
+import { makeSweep, paramsAt, sweepAt } from './sweep';
 import { Q5Answer } from './exam/Q5Answer';
 import { Q5Asks } from './exam/Q5Asks';
 import { activePresetOf, Q5Fields, Q5Presets } from './exam/Q5Controls';
@@ -74,7 +76,7 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
       const tNow = liveRef.current.now();
       const cur = sweepAt(liveRef.current.sweep, tNow);
       if (tNow === 0.5) setParams(patch);
-      else setParams({ o: cur.o, d: cur.d, ...patch, t: 0.5, play: false });
+      else setParams({ o: [...cur.o], d: [...cur.d], ...patch, t: 0.5, play: false });
     },
     [setParams],
   );

@@ -16,13 +16,12 @@ import {
 import {
   errorRaysAt,
   medianErrorSeries,
-  methodRow,
   type ErrorArithmetic,
   type ErrorRays,
   type ErrorSeries,
-  type InputCheck,
-  type MethodRow,
-} from './model';
+} from './errorSeries';
+import type { InputCheck } from './inputs';
+import { methodRow, type MethodRow } from './methodRow';
 
 /** Which arithmetic the readouts use. */
 export type Precision = 'f64' | 'f32';

@@ -1,13 +1,9 @@
 import { describe, expect, it } from 'vitest';
 import { defaultValues } from '../../../src/kit/params';
 import { EXAM_PRESET, schema, type AreaLightParams } from '../../../src/scenes/area-light/params';
-import {
-  animationFrame,
-  buildModel,
-  patchModel,
-  sampleRun,
-  targetValue,
-} from '../../../src/scenes/area-light/model';
+import { animationFrame, sampleRun } from '../../../src/scenes/area-light/animation';
+import { buildModel, targetValue } from '../../../src/scenes/area-light/model';
+import { patchModel } from '../../../src/scenes/area-light/patch';
 import {
   centreView,
   describeAreaLight,

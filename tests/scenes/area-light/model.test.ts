@@ -10,13 +10,14 @@ import {
 import {
   buildModel,
   convergence,
-  drawSamples,
   estimateAll,
   estimateOne,
   givenSamples,
-  patchModel,
   targetValue,
 } from '../../../src/scenes/area-light/model';
+import { drawSamples } from '../../../src/scenes/area-light/animation';
+import { patchModel } from '../../../src/scenes/area-light/patch';
+import { checkValues } from '../../../src/scenes/area-light/check';
 import { floorJob, floorPass, imageRmse, referenceImage } from '../../../src/scenes/area-light/floor';
 
 const base = (): AreaLightParams => defaultValues(schema);
@@ -172,7 +173,8 @@ describe('area-light model', () => {
 
 describe('Q6(c) given samples and the animation (pure functions of params, seed, t)', () => {
   it('givenSamples: the first four area terms equal the estimator kernel’s, and their mean is (|A|/4) Σ …', async () => {
-    const { givenSamples, drawSamples: draw } = await import('../../../src/scenes/area-light/model');
+    const { givenSamples } = await import('../../../src/scenes/area-light/model');
+    const { drawSamples: draw } = await import('../../../src/scenes/area-light/animation');
     for (const preset of PRESETS) {
       const m = buildModel(withP({ ...preset.params, occluder: preset.id === 'overhead' }));
       const g = givenSamples(m, 11, 4);
@@ -197,7 +199,7 @@ describe('Q6(c) given samples and the animation (pure functions of params, seed,
 
   it('animationFrame at t = n reproduces the estimate readout; at t = k the mean of the first k terms', async () => {
     const { sampleRun, animationFrame, animationLength } =
-      await import('../../../src/scenes/area-light/model');
+      await import('../../../src/scenes/area-light/animation');
     const m = buildModel(withP({ occluder: true }));
     for (const s of ['area', 'solid-angle', 'cosine'] as const) {
       const n = 300;
@@ -230,5 +232,26 @@ describe('Q6(c) given samples and the animation (pure functions of params, seed,
       expect(k).toBeGreaterThanOrEqual(prev);
       prev = k;
     }
+  });
+});
+
+describe('problems: the parameters the model replaces, named', () => {
+  it('checkValues is the model’s problems, one per parameter, in schema order', () => {
+    const bad = { ...defaultValues(schema), p: [NaN, 0, 0], ls: [0, 1], L: -1, rho: 2, tilt: NaN };
+    const m = buildModel(bad as AreaLightParams);
+    expect(m.problems.map((x) => x.name)).toEqual(['p', 'ls', 'tilt', 'L', 'rho']);
+    expect(m.problems[0].message).toBe(m.refusals[0].message);
+    expect(checkValues(bad as AreaLightParams)).toEqual(m.problems);
+    expect(checkValues(defaultValues(schema))).toEqual([]);
+  });
+  it('a point on the light names the point, and the light when it had to move', () => {
+    const onIt = { ...defaultValues(schema), p: [0, 0, 2], lc: [0, 0, 2], tilt: 0 };
+    const m = buildModel(onIt as AreaLightParams);
+    expect(m.problems.map((x) => x.name)).toEqual(['p']);
+    expect(m.problems[0].message).toMatch(/lies on the light/);
+    const atOrigin = { ...defaultValues(schema), p: [0, 0, 0], lc: [0, 0, 0], tilt: 30 };
+    const moved = buildModel(atOrigin as AreaLightParams);
+    expect([moved.lc, moved.tilt]).toEqual([[0, 0, 2], 0]);
+    expect(moved.problems.map((x) => x.name)).toEqual(['lc', 'tilt']);
   });
 });

@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { geometry } from '../../../src/scenes/area-light/view/RunningEstimate';
-import type { SampleRun } from '../../../src/scenes/area-light/model';
+import type { SampleRun } from '../../../src/scenes/area-light/animation';
 
 function run(mean: number[], stderr: number[] = mean.map((_, i) => (i ? 0.1 : NaN))): SampleRun {
   const n = mean.length;

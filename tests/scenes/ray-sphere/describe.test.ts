@@ -14,13 +14,10 @@ import {
   num,
   sweepPlaceText,
 } from '../../../src/scenes/ray-sphere/view/describe';
-import {
-  checkInputs,
-  computeModel,
-  makeSweep,
-  sweepAt,
-  sweepSeries,
-} from '../../../src/scenes/ray-sphere/model';
+import { checkInputs } from '../../../src/scenes/ray-sphere/inputs';
+import { computeModel } from '../../../src/scenes/ray-sphere/model';
+import { makeSweep, sweepAt } from '../../../src/scenes/ray-sphere/sweep';
+import { sweepSeries } from '../../../src/scenes/ray-sphere/sweepSeries';
 import { formatNumber } from '../../../src/ui/Readout';
 
 type V = [number, number, number];

@@ -15,6 +15,7 @@ import {
   HANDLE_R,
   handlePositions,
   layoutCross,
+  noteText,
   planLabels,
   X_,
   Y_,
@@ -22,7 +23,7 @@ import {
   type RayState,
 } from '../../../src/scenes/ray-sphere/view/crossLayout';
 import { computeModel } from '../../../src/scenes/ray-sphere/model';
-import { CASE_PRESETS } from '../../../src/scenes/ray-sphere/params';
+import { CASE_PRESETS, PRECISION_PRESETS } from '../../../src/scenes/ray-sphere/params';
 
 type V = [number, number, number];
 
@@ -132,5 +133,25 @@ describe('the cross-section: no handle covers a label', () => {
       ),
       { numRuns: 200, seed: 24 },
     );
+  });
+});
+
+describe('the not-to-scale note', () => {
+  it('fits the figure: broken over two lines on a narrow figure, whole on a wide one', () => {
+    const far = PRECISION_PRESETS.find((p) => p.id === 'far')!.params;
+    for (const [W, H, lines] of [
+      [335, 280, 3],
+      [640, 397, 2],
+      [1400, 500, 1],
+    ] as const) {
+      const g = layoutCross(ray(far.o as V, far.d as V, far.c as V, far.r!), [], W, H, null, {
+        frame: null,
+        view: null,
+      });
+      const note = planLabels(g, size).filter((l) => l.key.startsWith('note'));
+      expect(note).toHaveLength(lines);
+      expect(note.map((l) => l.text).join(' ')).toBe(noteText(g));
+      for (const l of note) expect(l.box.x + l.box.w, l.text).toBeLessThanOrEqual(W);
+    }
   });
 });

@@ -2,18 +2,14 @@
 // the distant-sphere image and the error-vs-distance series.
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import {
-  checkInputs,
-  computeModel,
-  canonicalFrame,
-  frameFits,
-  toFrame,
-  fromFrame,
-  gCurve,
-  renderDistant,
-  errorVsDistance,
-  tidy,
-} from '../../../src/scenes/ray-sphere/model';
+import { checkInputs } from '../../../src/scenes/ray-sphere/inputs';
+import { computeModel } from '../../../src/scenes/ray-sphere/model';
+import { canonicalFrame, frameFits, toFrame, fromFrame } from '../../../src/scenes/ray-sphere/frame';
+import { gCurve } from '../../../src/scenes/ray-sphere/gCurve';
+import { renderDistant } from '../../../src/scenes/ray-sphere/distantImage';
+import { errorVsDistance } from '../../../src/scenes/ray-sphere/errorSeries';
+import { tidy } from '../../../src/scenes/ray-sphere/tidy';
+import { checkValues } from '../../../src/scenes/ray-sphere/check';
 import {
   schema,
   CASE_PRESETS,
@@ -30,18 +26,36 @@ describe('input checks: bad input → message + safe fallback', () => {
   it('zero direction falls back to the default direction', () => {
     const k = checkInputs({ ...base, d: [0, 0, 0] });
     expect(k.d).toEqual(schema.d.default);
-    expect(k.problems.join(' ')).toMatch(/points nowhere/);
+    expect(k.problems.map((x) => x.message).join(' ')).toMatch(/points nowhere/);
+    expect(k.problems.map((x) => x.name)).toEqual(['d']);
   });
   it('zero radius → 1, negative radius → |r|', () => {
     expect(checkInputs({ ...base, r: 0 }).r).toBe(1);
     expect(checkInputs({ ...base, r: -2.5 }).r).toBe(2.5);
-    expect(checkInputs({ ...base, r: -2.5 }).problems[0]).toMatch(/negative radius/);
+    expect(checkInputs({ ...base, r: -2.5 }).problems[0]).toMatchObject({
+      name: 'r',
+      message: expect.stringMatching(/negative radius/),
+    });
   });
   it('non-finite numbers fall back to defaults', () => {
     const k = checkInputs({ ...base, o: [NaN, 0, 0], r: Infinity });
     expect(k.o).toEqual(schema.o.default);
     expect(k.r).toBe(1);
-    expect(k.problems).toHaveLength(2);
+    expect(k.problems.map((x) => x.name)).toEqual(['o', 'r']);
+  });
+  it('each replaced value names its parameter, and checkValues reports exactly these', () => {
+    const p = {
+      ...base,
+      o: [0, Infinity, 0] as [number, number, number],
+      c: [NaN, 0, 0] as [number, number, number],
+      d: [1e-200, 0, 0] as [number, number, number],
+      r: 0,
+    };
+    const k = checkInputs(p);
+    expect(k.problems.map((x) => x.name)).toEqual(['o', 'c', 'r', 'd']);
+    expect(k.problems.map((x) => x.message)).toEqual(k.failures.map((f) => f.message));
+    expect(checkValues(p)).toEqual(k.problems);
+    expect(checkValues(base)).toEqual([]);
   });
   it('fine inputs pass untouched', () => {
     expect(checkInputs(base).problems).toEqual([]);

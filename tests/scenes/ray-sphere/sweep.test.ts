@@ -2,15 +2,10 @@
 // where the line is tangent; the far preset's textbook Δ flickers in sign, the robust one does not.
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
-import {
-  checkInputs,
-  computeModel,
-  makeSweep,
-  paramsAt,
-  sweepAt,
-  sweepSeries,
-  sweepXRange,
-} from '../../../src/scenes/ray-sphere/model';
+import { checkInputs } from '../../../src/scenes/ray-sphere/inputs';
+import { computeModel } from '../../../src/scenes/ray-sphere/model';
+import { makeSweep, paramsAt, sweepAt, sweepXRange } from '../../../src/scenes/ray-sphere/sweep';
+import { sweepSeries } from '../../../src/scenes/ray-sphere/sweepSeries';
 import { PRECISION_PRESETS, schema, type RaySphereParams } from '../../../src/scenes/ray-sphere/params';
 import { defaultValues } from '../../../src/kit/params';
 
@@ -171,7 +166,7 @@ describe('sweepSeries', () => {
 
 describe('t_min: secondary rays leaving the surface', () => {
   it('with t ≥ 0 many surface points hit themselves (a root t ≈ 0); with t > t_min none do', async () => {
-    const { selfIntersectionSurvey } = await import('../../../src/scenes/ray-sphere/model');
+    const { selfIntersectionSurvey } = await import('../../../src/scenes/ray-sphere/secondaryRay');
     for (const [c, r] of [
       [[0, 0, 0], 1],
       [[0.3, -1.7, 2.9], 0.7],
@@ -187,7 +182,7 @@ describe('t_min: secondary rays leaving the surface', () => {
   });
   it('the survey cast in ranges (as the page does, in short tasks) adds up to the whole survey', async () => {
     const { selfIntersectionSurvey, selfIntersectionSurveyRange } =
-      await import('../../../src/scenes/ray-sphere/model');
+      await import('../../../src/scenes/ray-sphere/secondaryRay');
     const c: [number, number, number] = [0.3, -1.7, 2.9];
     for (const method of ['naive', 'stable'] as const) {
       const whole = selfIntersectionSurvey(c, 0.7, method, 1000);
@@ -205,7 +200,7 @@ describe('t_min: secondary rays leaving the surface', () => {
     }
   });
   it('the secondary ray from the current hit: its small root is the starting point itself', async () => {
-    const { secondaryFromHit, tMinFor } = await import('../../../src/scenes/ray-sphere/model');
+    const { secondaryFromHit, tMinFor } = await import('../../../src/scenes/ray-sphere/secondaryRay');
     const p = { ...base } as RaySphereParams;
     const m = computeModel(p);
     const sec = secondaryFromHit(m.input, m.chosen, 'stable')!;

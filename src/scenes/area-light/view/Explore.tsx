@@ -2,7 +2,7 @@
  * The "explore further" panels of #/area-light: the three strategies side by side at n samples,
  * their convergence against N, and their run time against error (both computed in the worker).
  */
-import { memo, useMemo, type RefObject } from 'react';
+import { memo, useEffect, useMemo, useRef } from 'react';
 import type { LightStrategy } from '../../../core/lights';
 import type { Failure } from '../../../core/failure';
 import {
@@ -13,6 +13,7 @@ import {
   SERIES,
   ShowAsTable,
   summarizeSeries,
+  useSeenOnce,
   type PlotTrace,
 } from '../../../ui';
 import type { StrategyEstimate, TimingPoint, convergence } from '../model';
@@ -32,6 +33,19 @@ const SYMBOLS: Record<LightStrategy, string> = {
   'solid-angle': 'square',
   cosine: 'diamond',
 };
+
+/**
+ * A box that calls `onSeen` once it has come near the screen. The panel owns it (not the scene):
+ * the panel mounts after the scene, so only the panel's own effect finds the box in the page.
+ */
+function useSeenBox(onSeen: () => void) {
+  const box = useRef<HTMLDivElement>(null);
+  const seen = useSeenOnce(box);
+  useEffect(() => {
+    if (seen) onSeen();
+  }, [seen, onSeen]);
+  return box;
+}
 
 /** One sentence per strategy from summarizeSeries, on log–log axes. */
 function perStrategy(
@@ -158,16 +172,17 @@ export const StrategyTable = memo(function StrategyTable({
   );
 });
 
-/** Absolute and standard error of the three strategies against N (`seenRef` marks the panel for its job). */
+/** Absolute and standard error of the three strategies against N (`onSeen`: the panel came near the screen, start its job). */
 export const ConvergencePanel = memo(function ConvergencePanel({
   conv,
-  seenRef,
+  onSeen,
   present,
 }: {
   conv: ReturnType<typeof convergence> | undefined;
-  seenRef: RefObject<HTMLDivElement | null>;
+  onSeen: () => void;
   present: boolean;
 }) {
+  const seenRef = useSeenBox(onSeen);
   const traces: PlotTrace[] = useMemo(() => {
     const out: PlotTrace[] = [];
     for (const c of conv ?? []) {
@@ -239,22 +254,23 @@ export const ConvergencePanel = memo(function ConvergencePanel({
   );
 });
 
-/** RMSE against run time per estimate (`seenRef` marks the panel for its job). */
+/** RMSE against run time per estimate (`onSeen`: the panel came near the screen, start its job). */
 export const TimingPanel = memo(function TimingPanel({
   result,
   running,
   progress,
   error,
-  seenRef,
+  onSeen,
   present,
 }: {
   result: TimingPoint[] | undefined;
   running: boolean;
   progress: number;
   error: Failure | null;
-  seenRef: RefObject<HTMLDivElement | null>;
+  onSeen: () => void;
   present: boolean;
 }) {
+  const seenRef = useSeenBox(onSeen);
   const traces: PlotTrace[] = useMemo(() => {
     const pts = result ?? [];
     return STRATEGIES.map((s) => {

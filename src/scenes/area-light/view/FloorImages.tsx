@@ -4,18 +4,13 @@
  * progress and cancel); the canvases are repainted only when a new pass arrives.
  */
 import { useEffect, useRef } from 'react';
-import { useWorkerJob, workerFactory } from '../../../workers';
-import type { AreaLightTasks } from '../floor.worker';
+import { useWorkerJob } from '../../../workers';
 import { Panel, Readout, useSeenOnce } from '../../../ui';
 import { formatNumber } from '../../../ui/Readout';
 import { PASS_TOTAL, type FloorJob } from '../floor';
 import { STRATEGIES, STRATEGY_LABEL } from '../strategies';
-import type { FloorFrame } from '../jobs';
+import { makeWorker, type FloorFrame } from '../jobs';
 import { fmt } from './format';
-
-const makeWorker = workerFactory<AreaLightTasks>(
-  () => new Worker(new URL('../floor.worker.ts', import.meta.url), { type: 'module' }),
-);
 
 /** Paint a radiance image: v / scale, gamma 1/2.2, warm white; NaN (no closed form) as a hatch colour. */
 function paint(canvas: HTMLCanvasElement | null, img: Float32Array | undefined, size: number, scale: number) {

@@ -10,6 +10,7 @@
 import { superscript } from '../../../ui/axis';
 import type { PatchModel } from '../patch';
 import { ArrowMarker } from '../../../ui/ArrowMarker';
+import './patchFigure.css';
 
 const W = 560;
 const H = 260;

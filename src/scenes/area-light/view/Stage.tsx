@@ -16,7 +16,8 @@ import {
 import type { LightStrategy } from '../../../core/lights';
 import type { SceneMode } from '../../../kit/scene';
 import { animationFrame, sampleRun, type SampleRun } from '../animation';
-import { STRATEGY_LABEL, STRATEGY_SHORT, type AreaLightModel } from '../model';
+import { STRATEGY_LABEL, STRATEGY_SHORT } from '../strategies';
+import { type AreaLightModel } from '../model';
 import { describeAreaLight, describeRunning } from './describe';
 import { RunningEstimate } from './RunningEstimate';
 import { Scene3D } from './Scene3D';

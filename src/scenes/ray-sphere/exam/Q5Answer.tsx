@@ -3,7 +3,8 @@
  * note on what the key prints.
  */
 import { KeyNote, LiveAnswer, Notice, Readout } from '../../../ui';
-import { activeRows, sweepAt, type Sweep } from '../model';
+import { activeRows } from '../model';
+import { sweepAt, type Sweep } from '../sweep';
 import { Float32Note, textbookDiscriminant } from '../view/Float32Panel';
 import type { RaySphereParams } from '../params';
 import { fmt, sweepCoord } from '../view/format';
@@ -45,7 +46,8 @@ function methodNote(
     );
   }
   const intro =
-    'a, b, c are the textbook coefficients; Δ and the roots come from the robust form 4a(r²\u00a0−\u00a0|ℓ|²)';
+    'a, b, c are the textbook coefficients; Δ and the roots come from the robust form 4a(r²\u00a0−\u00a0|ℓ|²), ' +
+    'where ℓ = f − (f·d / d·d) d, f = o − C, runs from the centre to the nearest point of the ray’s line';
   if (!robustDiffers || discFromAbc === null || discriminant === null) {
     return `${intro}. Here it equals b² − 4ac of the a, b, c shown, to the last bit.`;
   }

@@ -7,7 +7,7 @@ import { NumberField } from '../../../ui';
 import { bindControls } from '../../../ui/paramControls';
 import { VectorField } from '../../../ui/VectorField';
 import { PRECISION_OPTIONS } from '../view/Float32Panel';
-import type { V3 } from '../model';
+import type { Vec3 } from '../../../core/vec3';
 import { CASE_PRESETS, PRECISION_PRESETS, schema, type Preset, type RaySphereParams } from '../params';
 
 type SetParams = (patch: Partial<RaySphereParams>) => void;
@@ -100,7 +100,7 @@ const VECTORS = [
 interface VecFieldProps {
   name: (typeof VECTORS)[number]['name'];
   label: string;
-  value: V3;
+  value: Vec3;
   edit: SetParams;
 }
 

@@ -6,7 +6,8 @@
 import { memo } from 'react';
 import { Derivation, MathTex } from '../../../ui';
 import type { RaySphereMethod } from '../../../core/geometry';
-import { activeRows, secondaryFromHit, tMinFor, type RaySphereModel } from '../model';
+import { activeRows, type RaySphereModel } from '../model';
+import { secondaryFromHit, tMinFor } from '../secondaryRay';
 import { fmt, tx, txVec as v, yes } from '../view/format';
 import { SURVEY_POINTS, useSurvey } from '../view/useSurvey';
 
@@ -118,7 +119,9 @@ const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySph
                   'here, see “Explore further”) gives the same value.'
                 : `That is b² − 4ac of these numbers in ${arith} arithmetic (the textbook method). The roots ` +
                   'below use the robust form, which computes Δ = 4a(r²\u00a0−\u00a0|ℓ|²) = ' +
-                  `${fmt(res.discriminant)} without cancellation: the same quantity, different rounding.`}
+                  `${fmt(res.discriminant)}, where ℓ = f − (f·d / d·d) d with f = o − C is the vector from ` +
+                  'the centre to the point of the ray’s line nearest to it, ' +
+                  'without cancellation: the same quantity, different rounding.'}
             </p>
           ) : null}
           <MathTex display tex={roots} />

@@ -8,7 +8,8 @@
 import type { RefObject } from 'react';
 import { NumberField, Readout, Revealed, TimelineTransport } from '../../../ui';
 import { bindControls } from '../../../ui/paramControls';
-import { sweepAt, type Sweep, type V3 } from '../model';
+import { sweepAt, type Sweep } from '../sweep';
+import type { Vec3 } from '../../../core/vec3';
 import { schema, type RaySphereParams } from '../params';
 import { describeRaySphere, sweepPlaceText } from '../view/describe';
 import { LiveDescribed } from '../view/Described';
@@ -18,7 +19,7 @@ export interface Q5FigureProps extends LiveProps {
   sweep: Sweep;
   extent: number;
   /** The ends of the sweep, kept in view so the figure does not rescale while it plays. */
-  ends: readonly V3[];
+  ends: readonly Vec3[];
   /** An edit of the ray or sphere by dragging (coalesced to one per frame by the scene). */
   onDrag: (patch: Partial<RaySphereParams>) => void;
   setParams: (patch: Partial<RaySphereParams>) => void;
@@ -93,7 +94,7 @@ export function Q5Figure(props: Q5FigureProps) {
   );
   const banner = (
     <Revealed ask={ask} what="the case (hit, miss, tangent …)">
-      <LiveCaseBanner {...live} />
+      <LiveCaseBanner {...live} method={method} />
     </Revealed>
   );
   // on the stage the sweep's own controls (mode, extent) are in the drawer with the others

@@ -4,7 +4,8 @@
  * of one long first task.
  */
 import { useMemo } from 'react';
-import { sweepAt, sweepSeries, type Sweep } from '../model';
+import { sweepAt, type Sweep } from '../sweep';
+import { sweepSeries } from '../sweepSeries';
 import type { RaySphereParams } from '../params';
 import { LivePlots, type LiveProps } from '../view/Live';
 import { DeltaPlotData, deltaDescription, gDescription, GPlotData, LiveDescribed } from '../view/Described';

@@ -12,13 +12,17 @@ import { useLayoutEffect, useRef, useState, type KeyboardEvent, type PointerEven
 import { announce } from '../../../ui/announce';
 import { useWidth } from '../../../ui/useWidth';
 import { useSectionWidth } from '../../../ui/Deferred';
-import { dirFromFrame, fromFrame, tidy, type V3 } from '../model';
+import { dirFromFrame, fromFrame } from '../frame';
+import { tidy } from '../tidy';
+import type { Vec3 } from '../../../core/vec3';
+import type { RaySphereParams } from '../params';
 import { ArrowMarker } from '../../../ui/ArrowMarker';
 import {
   cl,
   handlePositions,
   HANDLE_R,
   layoutCross,
+  NOTE_KEYS,
   noteText,
   planLabels,
   X_,
@@ -35,9 +39,9 @@ import { clipSegment } from './labelLayout';
 export type { RayState } from './crossLayout';
 
 export interface CrossSectionProps extends RayState {
-  onChange: (patch: { o?: V3; d?: V3; c?: V3; r?: number }) => void;
+  onChange: (patch: Partial<Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r'>>) => void;
   /** More points to keep in view (e.g. the ends of a sweep), so the view does not jump while animating. */
-  fitExtra?: readonly V3[];
+  fitExtra?: readonly Vec3[];
   /** Set to a function that redraws the figure for another ray directly (per animation frame). */
   drawRef?: { current: ((ray: CrossRay) => void) | null };
   /** The tallest the drawing may be (px); default 460. */
@@ -71,7 +75,11 @@ function useFillHeight(ref: { current: HTMLElement | null }, on: boolean): numbe
 export type CrossRay = RayState;
 
 /** Each coordinate rounded to `step` (see tidy). */
-const tidyVec = (q: V3, step: number): V3 => [tidy(q[0], step), tidy(q[1], step), tidy(q[2], step)];
+const tidyVec = (q: Vec3, step: number): RaySphereParams['o'] => [
+  tidy(q[0], step),
+  tidy(q[1], step),
+  tidy(q[2], step),
+];
 
 /** A label's size: its measured text width (cached per text and font size) and 1.25 em. */
 function useLabelSizer() {
@@ -157,13 +165,18 @@ function drawCross(
     set(q(`h-${h.target}`), { transform: `translate(${cl(h.at[0])} ${cl(h.at[1])})` });
   for (const k of ['o', 'tip', 'c', 'r'] as const) show(q(`h-${k}`), shown.has(k));
   show(q('o-label'), !far);
-  show(q('note'), noteText(g) !== null);
+  for (const k of NOTE_KEYS) show(q(k), noteText(g) !== null);
   // labels last: measured with their current text, then put where no handle covers them
   const labels = planLabels(g, (key: LabelKey, text: string) => {
     const el = q(key) as SVGTextElement | null;
     if (el && el.textContent !== text) el.textContent = text;
     return size(el, text);
   });
+  for (const k of NOTE_KEYS)
+    show(
+      q(k),
+      labels.some((l) => l.key === k),
+    );
   for (const l of labels) {
     const el = q(l.key);
     if (!el) continue;
@@ -249,7 +262,7 @@ export function CrossSection({
   const apply = (target: Target, x: number, y: number) => {
     const g = cur();
     const { fr, O2, C2, dl, v, step } = g;
-    const t = (q: V3) => tidyVec(q, step);
+    const t = (q: Vec3) => tidyVec(q, step);
     if (target === 'o') onChange({ o: t(fromFrame(fr, x, y)) });
     else if (target === 'c') onChange({ c: t(fromFrame(fr, x, y)) });
     else if (target === 'r') {
@@ -377,6 +390,8 @@ export function CrossSection({
           r
         </text>
         <text data-k="note" className="rs-note" display="none" />
+        <text data-k="note2" className="rs-note" display="none" />
+        <text data-k="note3" className="rs-note" display="none" />
       </svg>
       <p className="rs-caption">
         Plane through the ray and the centre. Solid: the ray (t&nbsp;≥&nbsp;0); dashed: the line behind the

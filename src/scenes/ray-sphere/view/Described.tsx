@@ -14,7 +14,9 @@ import {
   type ShowAsTableProps,
 } from '../../../ui';
 import type { RaySphereHit } from '../../../core/geometry';
-import type { RaySphereModel, Sweep, SweepSeries } from '../model';
+import type { RaySphereModel } from '../model';
+import type { Sweep } from '../sweep';
+import type { SweepSeries } from '../sweepSeries';
 import { useCoarseModel, type LiveProps } from './Live';
 import { deltaEvents, describeDeltaPlot, describeGPlot, gEvents, gSamples, num } from './describe';
 import { sweepCoord } from './format';

@@ -6,7 +6,8 @@
  */
 import { memo, useMemo } from 'react';
 import { ExploreFurther, Panel, Revealed } from '../../../ui';
-import type { RaySphereModel, V3 } from '../model';
+import type { RaySphereModel } from '../model';
+import type { Vec3 } from '../../../core/vec3';
 import { LiveDescribed } from './Described';
 import { describe3D } from './describe';
 import { LiveView3D, type LiveProps } from './Live';
@@ -24,7 +25,7 @@ export interface RaySphereExploreProps extends LiveProps {
   /** The throttled, deferred model (the tables follow it, not every frame). */
   slow: RaySphereModel;
   /** The ends of the sweep, kept in the 3D view. */
-  ends: readonly V3[];
+  ends: readonly Vec3[];
   present: boolean;
   dark: boolean;
   ask: boolean;

@@ -6,7 +6,8 @@
 import type { ReactNode } from 'react';
 import type { RaySphereHit } from '../../../core/geometry';
 import { errorInUlpsF32 } from '../../../core/geometry';
-import type { MethodRow, RaySphereModel } from '../model';
+import type { MethodRow } from '../methodRow';
+import type { RaySphereModel } from '../model';
 import type { Precision } from '../precisionF32';
 import { ScrollTable } from './Precision';
 

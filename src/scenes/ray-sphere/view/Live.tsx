@@ -5,8 +5,12 @@
  */
 import { useLayoutEffect, useRef, type ReactNode } from 'react';
 import { useCoarsePosition, useTimelineFrame, type Timeline } from '../../../ui';
-import type { RaySphereCase, RaySphereHit } from '../../../core/geometry';
-import { CASE_TEXT, sweepAt, type RaySphereModel, type Sweep, type SweepSeries, type V3 } from '../model';
+import type { RaySphereHit } from '../../../core/geometry';
+import { caseBanner } from '../caseText';
+import { sweepAt, type Sweep } from '../sweep';
+import { activeRows, type RaySphereModel } from '../model';
+import { type SweepSeries } from '../sweepSeries';
+import type { Vec3 } from '../../../core/vec3';
 import type { RaySphereParams } from '../params';
 import { CrossSection, type CrossRay } from './CrossSection';
 import { DeltaSweepPlot, GSweepPlot } from './SweepPlots';
@@ -58,7 +62,7 @@ export function LiveCrossSection({
   fill,
 }: LiveProps & {
   onChange: (patch: Partial<RaySphereParams>) => void;
-  fitExtra: readonly V3[];
+  fitExtra: readonly Vec3[];
   /** Draw the ray and the sphere only, without the roots (ask=1 before Reveal). */
   hideResults?: boolean;
   fill?: boolean;
@@ -73,27 +77,24 @@ export function LiveCrossSection({
   return <CrossSection {...first} onChange={onChange} fitExtra={fitExtra} drawRef={drawRef} fill={fill} />;
 }
 
-const CASE_NAME: Record<RaySphereCase, string> = {
-  miss: 'Miss',
-  tangent: 'Tangent',
-  'two-hits': 'Two hits',
-  inside: 'Origin inside',
-  behind: 'Sphere behind',
-};
-
-function CaseBanner({ res }: { res: RaySphereHit | null }) {
+function CaseBanner({ model, method }: { model: RaySphereModel; method: RaySphereParams['method'] }) {
+  const res = model.chosen;
   if (!res) return null;
+  const exact = activeRows(model).reference?.case ?? null;
+  const form = method === 'naive' ? 'textbook' : 'robust';
+  const b = caseBanner(res.case, exact, form, model.precision === 'f32' ? 'float32' : 'double');
   return (
     <div className={`rs-case case-${res.case}`} data-testid="case-banner">
-      <strong>{CASE_NAME[res.case]}</strong>
-      <span>{CASE_TEXT[res.case]}</span>
+      <strong>{b.name}</strong>
+      <span>{b.text}</span>
+      {b.wrong ? <span data-testid="case-banner-wrong">{b.wrong}</span> : null}
     </div>
   );
 }
 
 /** The case banner at the coarse position. */
-export function LiveCaseBanner(props: LiveProps) {
-  return <CaseBanner res={useCoarseModel(props).model.chosen} />;
+export function LiveCaseBanner(props: LiveProps & { method: RaySphereParams['method'] }) {
+  return <CaseBanner model={useCoarseModel(props).model} method={props.method} />;
 }
 
 /** The 3D view at the coarse position (below the fold). */

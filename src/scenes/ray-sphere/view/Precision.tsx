@@ -6,14 +6,9 @@ import { useEffect, useMemo, useRef, type ReactNode, type RefObject } from 'reac
 import { Plot, ShowAsTable, useSeenOnce, type PlotTrace } from '../../../ui';
 import { useLogDistance } from './useLogDistance';
 import { IMAGE_BG, IMAGE_FG, IMAGE_HOLE } from './imageColours';
-import {
-  ERROR_FLOOR,
-  errorVsDistance,
-  renderDistant,
-  shadeImage,
-  type ErrorSeries,
-  type RaySphereModel,
-} from '../model';
+import { ERROR_FLOOR, errorVsDistance, type ErrorSeries } from '../errorSeries';
+import { renderDistant, shadeImage } from '../distantImage';
+import { type RaySphereModel } from '../model';
 import { f32ErrorSeries, f32ErrorTraces } from './float32Traces';
 import { ERROR_COLOURS, guide, methodCurves } from './errorCurves';
 import { describeErrorPlot } from './describe';

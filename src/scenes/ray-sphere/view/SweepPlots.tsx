@@ -7,11 +7,12 @@
  */
 import { memo, useLayoutEffect, useMemo, useRef, type ReactNode } from 'react';
 import type { RaySphereCase, RaySphereHit } from '../../../core/geometry';
-import type { SweepSeries } from '../model';
+import type { SweepSeries } from '../sweepSeries';
 import { useWidth } from '../../../ui/useWidth';
 import { linearScale } from '../../../ui/chartScale';
 import { useSectionWidth } from '../../../ui/Deferred';
 import { niceTicks, tickLabel } from '../../../ui/axis';
+import './sweepPlots.css';
 
 const PAD = { l: 62, r: 14, t: 30, b: 44 };
 

@@ -8,7 +8,8 @@ import { useEffect, useRef } from 'react';
 import type * as THREE from 'three';
 import { Viewport, type ViewportContext } from '../../../three';
 import { intersectRaySphere } from '../../../core/geometry';
-import { FAR_RATIO, type V3 } from '../model';
+import { FAR_RATIO } from '../model';
+import type { Vec3 } from '../../../core/vec3';
 import type { RayState } from './CrossSection';
 
 /**
@@ -26,7 +27,7 @@ export interface View3DProps extends RayState {
   height?: number;
   dark?: boolean;
   /** More points to keep in view (the ends of a sweep), so the view does not rescale while animating. */
-  fitExtra?: readonly V3[];
+  fitExtra?: readonly Vec3[];
 }
 
 interface Objects {
@@ -61,13 +62,13 @@ export function View3D({
     const { o, d, c, r, res, distanceRatio, dark, fitExtra } = latest.current;
     const far = distanceRatio > FAR_RATIO;
     // view centre and scale (in doubles)
-    let centre: V3;
+    let centre: Vec3;
     let extent: number;
     if (far) {
       centre = c;
       extent = 2.5 * r;
     } else {
-      const pts: V3[] = [o, c, ...fitExtra];
+      const pts: Vec3[] = [o, c, ...fitExtra];
       if (res && res.t1 !== null)
         pts.push([o[0] + res.t1 * d[0], o[1] + res.t1 * d[1], o[2] + res.t1 * d[2]]);
       const lo = [0, 1, 2].map((i) => Math.min(...pts.map((p) => p[i]), c[i] - r));
@@ -82,7 +83,7 @@ export function View3D({
       (p[2] - centre[2]) * s,
     ];
     const dl = Math.hypot(d[0], d[1], d[2]);
-    const dh: V3 = [d[0] / dl, d[1] / dl, d[2] / dl];
+    const dh: Vec3 = [d[0] / dl, d[1] / dl, d[2] / dl];
 
     ob.sphere.position.set(...map(c));
     ob.sphere.scale.setScalar(r * s);

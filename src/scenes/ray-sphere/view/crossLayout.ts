@@ -5,7 +5,9 @@
  * where each label goes so that no handle covers it (view/labelLayout.ts).
  */
 import type { RaySphereHit } from '../../../core/geometry';
-import { canonicalFrame, FAR_RATIO, frameFits, toFrame, type Frame2D, type V3 } from '../model';
+import { canonicalFrame, frameFits, toFrame, type Frame2D } from '../frame';
+import { FAR_RATIO } from '../model';
+import type { Vec3 } from '../../../core/vec3';
 import {
   discBox,
   overlapArea,
@@ -18,9 +20,9 @@ import {
 
 /** The ray and sphere a figure draws: the checked inputs, the chosen method's hit, |o − C| / r. */
 export interface RayState {
-  o: V3;
-  d: V3;
-  c: V3;
+  o: Vec3;
+  d: Vec3;
+  c: Vec3;
   r: number;
   res: RaySphereHit | null;
   distanceRatio: number;
@@ -93,7 +95,7 @@ export const cl = (x: number) => Math.max(-1e5, Math.min(1e5, x));
  */
 export function layoutCross(
   ray: RayState,
-  fitExtra: readonly V3[],
+  fitExtra: readonly Vec3[],
   W: number,
   H: number,
   dragging: Target | null,
@@ -117,7 +119,7 @@ export function layoutCross(
     // Projecting a point 10⁸ r away onto e2 would amplify e2's rounding (≈ε|f|/|l|) into a
     // visible offset; in the canonical frame the exact answer is known: the ray runs along x at
     // height |l| (the distance of the line from the centre), and the centre is the origin.
-    const f: V3 = [o[0] - c[0], o[1] - c[1], o[2] - c[2]];
+    const f: Vec3 = [o[0] - c[0], o[1] - c[1], o[2] - c[2]];
     const k = (f[0] * d[0] + f[1] * d[1] + f[2] * d[2]) / (dl * dl);
     const lx = f[0] - k * d[0];
     const ly = f[1] - k * d[1];
@@ -251,7 +253,11 @@ export function noteText(g: Layout): string | null {
 }
 
 /** The labels the figure writes, by their data-k key. */
-export type LabelKey = 'root0-label' | 'root1-label' | 'o-label' | 'c-label' | 'r-label' | 'note';
+export type LabelKey =
+  'root0-label' | 'root1-label' | 'o-label' | 'c-label' | 'r-label' | 'note' | 'note2' | 'note3';
+
+/** The keys of the note's lines, in order (a long note is broken to fit the figure's width). */
+export const NOTE_KEYS = ['note', 'note2', 'note3'] as const;
 
 export interface PlacedLabel {
   key: LabelKey;
@@ -288,14 +294,32 @@ export function planLabels(
   // the note first (it is long), along the bottom or the top edge, wherever no handle is
   const note = noteText(g);
   if (note) {
-    const [w, h] = size('note', note);
+    // broken into lines that fit the figure's width (at most NOTE_KEYS.length, the last one takes the rest)
+    const lines: string[] = [];
+    let line = '';
+    for (const word of note.split(' ')) {
+      const next = line ? `${line} ${word}` : word;
+      const key = NOTE_KEYS[Math.min(lines.length, NOTE_KEYS.length - 1)];
+      if (line && lines.length < NOTE_KEYS.length - 1 && size(key, next)[0] > g.W - 24) {
+        lines.push(line);
+        line = word;
+      } else line = next;
+    }
+    lines.push(line);
+    const sized = lines.map((text, i) => ({ key: NOTE_KEYS[i], text, wh: size(NOTE_KEYS[i], text) }));
+    const w = Math.max(...sized.map((l) => l.wh[0]));
+    const h = sized.reduce((a, l) => a + l.wh[1], 0);
     const spots: Box[] = [
       { x: 12, y: g.H - 8 - h, w, h },
       { x: 12, y: 8, w, h },
     ];
     const box = spots.find((b) => hard.every((o) => overlapArea(o, b) === 0)) ?? spots[0];
     hard.push(box);
-    out.push({ key: 'note', text: note, box });
+    let y = box.y;
+    for (const l of sized) {
+      out.push({ key: l.key, text: l.text, box: { x: box.x, y, w: l.wh[0], h: l.wh[1] } });
+      y += l.wh[1];
+    }
   }
   const wanted: { key: LabelKey; text: string }[] = [];
   const reqs: LabelRequest[] = [];

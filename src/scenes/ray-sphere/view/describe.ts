@@ -7,14 +7,11 @@
  */
 import type { RaySphereHit } from '../../../core/geometry';
 import { formatNumber } from '../../../ui/Readout';
-import {
-  closestApproach,
-  FAR_RATIO,
-  type ErrorSeries,
-  type RaySphereModel,
-  type SweepMode,
-  type SweepSeries,
-} from '../model';
+import { closestApproach } from '../frame';
+import { FAR_RATIO, type RaySphereModel } from '../model';
+import { type ErrorSeries } from '../errorSeries';
+import { type SweepMode } from '../sweep';
+import { type SweepSeries } from '../sweepSeries';
 import type { RayState, Target } from './crossLayout';
 import { sweepCoord } from './format';
 

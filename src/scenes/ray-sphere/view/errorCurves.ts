@@ -6,7 +6,7 @@
  * (Plot resolves them when it draws).
  */
 import type { PlotTrace } from '../../../ui';
-import type { ErrorSeries } from '../model';
+import type { ErrorSeries } from '../errorSeries';
 
 export const ERROR_COLOURS = {
   naive: 'var(--rs-naive)',

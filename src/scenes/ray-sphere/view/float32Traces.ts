@@ -4,7 +4,7 @@
  * textbook form breaks (D/r ≈ 1/√u₃₂ = 4096, against 1/√u ≈ 10⁸ in float64).
  */
 import type { PlotTrace } from '../../../ui';
-import type { ErrorSeries } from '../model';
+import type { ErrorSeries } from '../errorSeries';
 import { errorVsDistanceF32 } from '../precisionF32';
 import { ERROR_COLOURS, guide, methodCurves } from './errorCurves';
 

@@ -6,7 +6,7 @@
 import { useEffect, useState } from 'react';
 import { runChunked } from '../../../ui';
 import type { RaySphereMethod } from '../../../core/geometry';
-import { selfIntersectionSurveyRange, type SurveyCounts } from '../model';
+import { selfIntersectionSurveyRange, type SurveyCounts } from '../secondaryRay';
 
 /** Points of the survey, and how many are cast per queued job. */
 export const SURVEY_POINTS = 1000;
