@@ -1,4 +1,3 @@
-/* eslint-disable @typescript-eslint/no-explicit-any -- the test reads untyped parsed XML / JSON (an LMS data model, xAPI statements) */
 /**
  * cmi5 against a loopback test LRS (127.0.0.1 only, in this test): it serves the fetch URL (auth
  * token) and LMS.LaunchData, and records every statement. The AU is launched as an LMS would:

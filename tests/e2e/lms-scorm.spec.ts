@@ -1,4 +1,3 @@
-/* eslint-disable @typescript-eslint/no-explicit-any -- the test reads untyped parsed XML / JSON (an LMS data model, xAPI statements) */
 /**
  * SCORM 1.2 and 2004 packages with scorm-again playing the LMS: a host page provides the API and
  * opens the package's launch page in a frame; the learner answers a question (all right but one

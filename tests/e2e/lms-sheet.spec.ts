@@ -1,4 +1,3 @@
-/* eslint-disable @typescript-eslint/no-explicit-any -- the test reads untyped parsed XML / JSON (an LMS data model, xAPI statements) */
 /**
  * The worksheet page builds the LMS packages in the browser for its own choice of questions,
  * variants and seed: the Moodle bank holds those variants, and the SCORM zip carries the app's

@@ -6,7 +6,9 @@ import type { Page } from '@playwright/test';
 import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
 import { parseParams } from '../../src/kit/params';
 import { schema } from '../../src/scenes/ray-sphere/params';
-import { checkInputs, computeModel, makeSweep, paramsAt } from '../../src/scenes/ray-sphere/model';
+import { checkInputs } from '../../src/scenes/ray-sphere/inputs';
+import { computeModel } from '../../src/scenes/ray-sphere/model';
+import { makeSweep, paramsAt } from '../../src/scenes/ray-sphere/sweep';
 
 type V = [number, number, number];
 

@@ -5,7 +5,8 @@
  * the last with a note that it gives the same distribution.
  */
 import { describe, expect, it } from 'vitest';
-import { q1Params, q1Variant } from '../../src/practice/q1';
+import { q1Params } from '../../src/practice/q1Density';
+import { q1Variant } from '../../src/practice/q1';
 import { gradeAnswers } from '../../src/practice/session';
 
 /** The first seed whose lobe has m = 1 and a ≠ 1, where every slip gives a different formula. */

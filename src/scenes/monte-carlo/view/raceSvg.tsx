@@ -1,7 +1,13 @@
 /** The race's hand-drawn SVG plots: their frame (viewBox, margins), axes and polylines. */
 import { formatNumber } from '../../../ui';
 import { pow10Text } from '../../../ui/axis';
-import { clampExponent, coordText, linearScale as lin, logScale as logS, type Scale } from '../../../ui/chartScale';
+import {
+  clampExponent,
+  coordText,
+  linearScale as lin,
+  logScale as logS,
+  type Scale,
+} from '../../../ui/chartScale';
 import { RACE_MAX, type RaceTrack } from '../race';
 
 export const W = 360;
