@@ -32,6 +32,7 @@ import { embedSnippet } from './embedCode';
 import { QrButton } from './QrButton';
 import { markFirstScreen } from './firstScreen';
 import { importOrReload } from './staleBuild';
+import { shareBase } from '../kit/shareLink';
 
 // The teacher's A11y view (a11y=1): its own chunk, loaded only with the flag.
 const A11yView = lazy(() => import('./A11yView'));
@@ -360,8 +361,9 @@ function ShareBar({
   // held-back results (ask=1) are the lecturer's, unless the lecturer asks to keep them.
   const classroom = flags.present || asking;
   const [keep, setKeep] = useState(false);
-  // (not location.origin + pathname: a copy opened from file:// has the origin "null")
-  const base = window.location.href.split('#')[0];
+  // (not location.origin + pathname: a copy opened from file:// has the origin "null"); the page's
+  // own query string (an LMS's learner id, a cmi5 launch's credential) is not the app's to share
+  const base = shareBase(window.location.href);
   const qs = serializeParams(schema, values, {
     part: flags.part ?? undefined,
     present: keep && flags.present ? '1' : undefined,
