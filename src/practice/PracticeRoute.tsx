@@ -27,8 +27,8 @@ import {
 } from './model';
 import {
   applyCheck,
+  forfeitedAnswers,
   gradeAnswers,
-  newSession,
   partDone,
   revealPart,
   SCORING,
@@ -38,11 +38,13 @@ import {
   type PartProgress,
   type Session,
 } from './session';
-import { loadScores, recordScore, resetScores, type Scores } from './scores';
+import { loadScores, recordScore, type Scores } from './scores';
 import { QUESTIONS, isQuestionId, questionInfo } from './questions';
-import { loadProgress, recordCheck, resetProgress, type Progress } from './progress';
+import { loadProgress, recordCheck, type Progress } from './progress';
 import { extensionCheck, extensionInput, extensionRestore, extensionSeed, practiceSlot } from './extensions';
 import { loadDraft, saveDraft } from './drafts';
+import { loadSession, saveSession, withStored } from './sessionStore';
+import { resetPractice } from './reset';
 import { RouteNotice } from '../ui/RouteNotice';
 import { ParamNotice, TextList } from './ParamNotice';
 import Sheet from './Sheet';
@@ -164,8 +166,7 @@ function PracticeHome({ flags, query }: { flags: ShellFlags; query: string }) {
           type="button"
           data-testid="reset-progress"
           onClick={() => {
-            setProgress(resetProgress());
-            resetScores();
+            setProgress(resetPractice());
             setScores(loadScores());
             setStatus('Progress cleared.');
           }}
@@ -290,7 +291,11 @@ function QuestionPage({
     saveDraft(variant.question, variant.seed, inputs);
     extensionInput(variant.question, variant.seed, inputs);
   }, [inputs, variant.question, variant.seed]);
-  const [session, setSession] = useState<Session>(() => newSession(variant));
+  // attempts, shown answers and best marks survive reloads and other tabs (sessionStore.ts)
+  const [session, setSession] = useState<Session>(() => loadSession(variant));
+  useEffect(() => {
+    saveSession(variant, session);
+  }, [variant, session]);
   const [checking, setChecking] = useState(false);
   const [summary, setSummary] = useState('');
   useEffect(() => {
@@ -302,7 +307,8 @@ function QuestionPage({
       e?.preventDefault();
       setChecking(true);
       const verdicts = await gradeAnswers(variant, inputs);
-      const next = applyCheck(variant, session, inputs, verdicts);
+      const before = withStored(variant, session);
+      const next = applyCheck(variant, before, inputs, verdicts);
       for (const p of variant.parts)
         for (const a of p.answers) {
           const v = verdicts[a.name];
@@ -346,6 +352,8 @@ function QuestionPage({
           message: verdicts[a.name]?.message ?? '',
         })),
         time: new Date().toISOString(),
+        marks: { earned: score.marks, total: score.total },
+        forfeited: forfeitedAnswers(variant, before),
       });
     },
     [variant, inputs, session],

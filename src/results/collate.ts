@@ -96,10 +96,13 @@ export async function collate(
         if (m) s.mistakes[m] = (s.mistakes[m] ?? 0) + 1;
         if (a.verdicts[x.name] === 'correct' && x.verdict !== 'correct') s.disagreements++;
       }
+      // an answer shown on the page before this check earns nothing, as it did there
+      const forfeited = new Set(a.forfeited ?? []);
+      const score = g.answers.filter((x) => x.verdict === 'correct' && !forfeited.has(x.name)).length;
       const prev = row.best[a.question];
-      const frac = g.max ? g.score / g.max : 0;
+      const frac = g.max ? score / g.max : 0;
       if (!prev || frac > prev.score / prev.max)
-        row.best[a.question] = { score: g.score, max: g.max, attempts: (prev?.attempts ?? 0) + 1 };
+        row.best[a.question] = { score, max: g.max, attempts: (prev?.attempts ?? 0) + 1 };
       else prev.attempts++;
     }
     for (const [q, b] of Object.entries(row.best) as [QuestionId, { score: number; max: number }][]) {
