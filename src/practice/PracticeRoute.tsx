@@ -42,7 +42,7 @@ import { loadScores, recordScore, type Scores } from './scores';
 import { QUESTIONS, isQuestionId, questionInfo } from './questions';
 import { loadProgress, recordCheck, type Progress } from './progress';
 import { extensionCheck, extensionInput, extensionRestore, extensionSeed, practiceSlot } from './extensions';
-import { loadDraft, saveDraft } from './drafts';
+import { openingAnswers, saveDraft } from './drafts';
 import { loadSession, saveSession, withStored } from './sessionStore';
 import { resetPractice } from './reset';
 import { RouteNotice } from '../ui/RouteNotice';
@@ -282,10 +282,10 @@ function QuestionPage({
   problems: string[];
 }) {
   const info = questionInfo(variant.question);
-  // typed answers survive a reload of the tab (drafts.ts); an extension (the LMS runtime in a
-  // package) may hand back the learner's saved answers instead
-  const [inputs, setInputs] = useState<Record<string, string>>(
-    () => extensionRestore(variant.question, variant.seed) ?? loadDraft(variant.question, variant.seed),
+  // typed answers survive a reload of the tab (drafts.ts); else an extension (the LMS runtime in a
+  // package) may hand back the learner's saved answers
+  const [inputs, setInputs] = useState<Record<string, string>>(() =>
+    openingAnswers(variant.question, variant.seed, () => extensionRestore(variant.question, variant.seed)),
   );
   useEffect(() => {
     saveDraft(variant.question, variant.seed, inputs);

@@ -54,3 +54,18 @@ export function saveDraft(question: string, seed: number, inputs: Record<string,
     /* quota or disabled storage: the answers stay in the page */
   }
 }
+
+/**
+ * The answers a practice page opens with: this tab's draft (typed last, so the newest, as after a
+ * crash and relaunch inside an LMS), else what an extension kept (an LMS's saved answers: a
+ * relaunch in a new tab), else none.
+ */
+export function openingAnswers(
+  question: string,
+  seed: number,
+  kept: () => Record<string, string> | null,
+): Record<string, string> {
+  const draft = loadDraft(question, seed);
+  if (Object.keys(draft).length) return draft;
+  return kept() ?? {};
+}
