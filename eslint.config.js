@@ -8,7 +8,15 @@ import layers from './eslint-rules/layers.js';
 
 export default tseslint.config(
   {
-    ignores: ['dist/**', 'dist-single/**', 'dist-lms/**', 'dist-fuzz/**', 'node_modules/**', 'bench/**/*.json', 'public/**'],
+    ignores: [
+      'dist/**',
+      'dist-single/**',
+      'dist-lms/**',
+      'dist-fuzz/**',
+      'node_modules/**',
+      'bench/**/*.json',
+      'public/**',
+    ],
   },
   js.configs.recommended,
   ...tseslint.configs.recommended,
