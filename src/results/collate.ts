@@ -75,6 +75,7 @@ export async function collate(
   let done = 0;
   let sliceStart = performance.now();
   const yieldNow = async () => {
+    if (signal?.aborted) throw new DOMException('The collation was cancelled.', 'AbortError');
     if (performance.now() - sliceStart < SLICE_MS) return;
     await new Promise((r) => setTimeout(r, 0));
     sliceStart = performance.now();
