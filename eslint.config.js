@@ -12,6 +12,7 @@ export default tseslint.config(
       'dist/**',
       'dist-single/**',
       'dist-lms/**',
+      'dist-fuzz/**',
       'node_modules/**',
       'bench/**/*.json',
       'public/**',

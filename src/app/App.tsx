@@ -1,4 +1,4 @@
-import { lazy, Suspense, useEffect, useMemo, type ReactNode } from 'react';
+import { Suspense, useEffect, useMemo, type ReactNode } from 'react';
 import { useHashRoute } from './useHashRoute';
 import { parseShellFlags } from '../kit/shell';
 import { useTheme } from './theme';
@@ -8,37 +8,29 @@ import { Home } from './Home';
 import { SceneHost } from './SceneHost';
 import { findScene } from '../kit/catalogue';
 import { ShortcutProvider } from '../ui/shortcuts';
-import { importOrReload } from './staleBuild';
+import { lazyPage } from './lazyPage';
 
 // Practice mode is its own lazy chunk (src/practice): nothing of it loads on the other routes.
-// A failed load (offline, stale deploy) shows a message instead of throwing.
-const PracticeRoute = lazy(() =>
+// Every lazy route recovers from a stale deploy or says it could not load (./lazyPage.tsx).
+const PracticeRoute = lazyPage(
   // with the parts other features show on the practice pages (results download, LMS packages)
-  importOrReload(() =>
+  () =>
     Promise.all([
       import('../practice/PracticeRoute'),
       import('../results/slots'),
       import('../lms/slots'),
     ]).then(([m]) => m),
-  ).catch(() => ({
-    default: () => (
-      <main id="main" className="page" tabIndex={-1}>
-        <p role="alert" className="notice notice-error">
-          Practice could not be loaded. Check the connection and <a href={window.location.hash}>reload</a>.
-        </p>
-      </main>
-    ),
-  })),
+  'Practice',
 );
 
 // The teacher's guide (#/guide) is its own lazy chunk.
-const Guide = lazy(() => importOrReload(() => import('../guide/Guide')));
+const Guide = lazyPage(() => import('../guide/Guide'), 'The guide');
 
 // The accessibility statement and its worked example (#/accessibility): its own lazy chunk.
-const AccessibilityPage = lazy(() => importOrReload(() => import('./AccessibilityPage')));
+const AccessibilityPage = lazyPage(() => import('./AccessibilityPage'), 'The accessibility page');
 
 // The class results page (#/results) is its own lazy chunk.
-const ResultsRoute = lazy(() => import('../results/ResultsRoute'));
+const ResultsRoute = lazyPage(() => import('../results/ResultsRoute'), 'The class results page');
 
 /** A route whose page loads as its own chunk, with a "Loading …" status until it has. */
 function LazyRoute({ loading, children }: { loading: string; children: ReactNode }) {

@@ -3,6 +3,7 @@
  * copy embed code, keep classroom mode), the values a link may carry (typed expressions only once
  * they compile), and the embedded page's link to the full app.
  */
+import { shareBase } from '../kit/shareLink';
 import { useState } from 'react';
 import type { SceneInfo } from '../kit/catalogue';
 import type { SceneModule } from '../kit/scene';
@@ -71,8 +72,9 @@ export function ShareBar({
   // held-back results (ask=1) are the lecturer's, unless the lecturer asks to keep them.
   const classroom = flags.present || asking;
   const [keep, setKeep] = useState(false);
-  // (not location.origin + pathname: a copy opened from file:// has the origin "null")
-  const base = window.location.href.split('#')[0];
+  // (not location.origin + pathname: a copy opened from file:// has the origin "null"); the page's
+  // own query string (an LMS's learner id, a cmi5 launch's credential) is not the app's to share
+  const base = shareBase(window.location.href);
   const qs = serializeParams(schema, values, {
     part: flags.part ?? undefined,
     present: keep && flags.present ? '1' : undefined,

@@ -6,8 +6,11 @@
  * without it the fuzzer runs until the panel's Stop button is pressed. Actions come in bursts of
  * 1–4 per tick (every 25 ms plus the time the page takes to render).
  *
- * Loaded lazily (only when `fuzz` is in the URL), so it costs the entry bundle nothing.
- * It never leaves the page: links and buttons that navigate or reload are skipped.
+ * Loaded lazily (only when `fuzz` is in the URL, and only in a development or test build: main.tsx),
+ * so it costs the entry bundle nothing. It never leaves the page: links and buttons that navigate,
+ * reload or download are skipped. It never touches the reader's saved data: before its first action
+ * the page's localStorage and sessionStorage are replaced by empty in-memory stores for the rest of
+ * the page's life, so a Reset or a Check it presses changes nothing that outlives the tab.
  */
 /** mulberry32: a tiny seeded generator (the fuzzer's choices only, not the app's randomness). */
 function mulberry(seed: number): () => number {
@@ -147,11 +150,37 @@ function visible(el: Element): boolean {
   );
 }
 
-/** Elements that would leave or reload the page, or open something outside it. */
+/** Elements that would leave or reload the page, or open or save something outside it. */
 function unsafe(el: Element): boolean {
   if (el.closest('a[href]')) return true;
   const t = (el.textContent ?? '').toLowerCase();
-  return el.tagName === 'BUTTON' && /reload/.test(t);
+  return el.tagName === 'BUTTON' && /reload|download/.test(t);
+}
+
+/** A Storage kept in memory only. */
+export function memoryStorage(): Storage {
+  const m = new Map<string, string>();
+  return {
+    get length() {
+      return m.size;
+    },
+    clear: () => m.clear(),
+    getItem: (k: string) => m.get(String(k)) ?? null,
+    key: (i: number) => [...m.keys()][i] ?? null,
+    removeItem: (k: string) => void m.delete(String(k)),
+    setItem: (k: string, v: string) => void m.set(String(k), String(v)),
+  };
+}
+
+/** Replace the page's storages by empty in-memory ones (the reader's data stays as it was). */
+function sandboxStorage(): void {
+  for (const name of ['localStorage', 'sessionStorage'] as const) {
+    try {
+      Object.defineProperty(window, name, { value: memoryStorage(), configurable: true });
+    } catch {
+      /* cannot be replaced: the storage is then unreachable anyway (sandboxed frame) */
+    }
+  }
 }
 
 function setNativeValue(el: HTMLInputElement | HTMLTextAreaElement | HTMLSelectElement, value: string): void {
@@ -174,6 +203,7 @@ function key(el: Element, k: string): void {
 
 /** Start fuzzing this page. Returns a stop function. */
 export function startFuzz(opts: { seed: number; limit: number | null; intervalMs?: number }): () => void {
+  sandboxStorage();
   const rand = mulberry(opts.seed);
   const pick = <T>(xs: readonly T[]): T => xs[Math.floor(rand() * xs.length)];
   const state: FuzzState = {

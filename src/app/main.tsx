@@ -46,6 +46,9 @@ function render(root: HTMLElement) {
 }
 
 // Fuzz mode (`?fuzz=1&seed=7`, optional `fuzzn=300`): load the self-driving fuzzer, lazily, only then.
+// A test tool: it exists only in the development server and in a build made for testing
+// (`VITE_RML_FUZZ=1`, npm run e2e:fuzz). In a production build the condition is a constant false,
+// so the fuzzer's chunk is not even emitted and no link can start it on a reader's data.
 let fuzzing = false;
 function maybeFuzz() {
   if (fuzzing) return;
@@ -60,8 +63,10 @@ function maybeFuzz() {
   const limit = int(sp.get('fuzzn'));
   void import('./fuzz').then((m) => m.startFuzz({ seed, limit: limit && limit > 0 ? limit : null }));
 }
-maybeFuzz();
-window.addEventListener('hashchange', maybeFuzz);
+if (import.meta.env.DEV || import.meta.env.VITE_RML_FUZZ === '1') {
+  maybeFuzz();
+  window.addEventListener('hashchange', maybeFuzz);
+}
 
 // Offline copy: register the service worker from a lazy chunk (not in development, not in the
 // single-file build, not from file://) once the page has loaded, the opened scene's first screen

@@ -10,6 +10,7 @@ import type { QuestionId } from '../practice/model';
 import { isQuestionId } from '../practice/questions';
 import type { LmsConfig } from './packages';
 import { declaredLmsConfig } from './config';
+import { setLearnerScope } from '../practice/learnerScope';
 
 function readConfig(): LmsConfig | null {
   const c = declaredLmsConfig() as Partial<LmsConfig> | null;
@@ -27,6 +28,10 @@ function readConfig(): LmsConfig | null {
     version: typeof c.version === 'string' ? c.version.slice(0, 40) : '',
   };
 }
+
+/** The status when the LMS refused a check's values or its commit. */
+const REFUSED =
+  'The LMS did not accept your last check: your result may not be recorded. Check again, or tell your teacher.';
 
 function showStatus(state: 'connected' | 'none' | 'finished' | 'error', text: string): void {
   let el = document.querySelector<HTMLElement>('[data-testid="lms-status"]');
@@ -83,8 +88,14 @@ export async function startLms(): Promise<void> {
         showStatus('none', 'No cmi5 launch found: practising without reporting.');
         return;
       }
+      setLearnerScope(s.learnerId);
+      const connected = `Connected to the LMS (cmi5)${s.learnerName ? ` as ${s.learnerName}` : ''}: your checked answers are reported.`;
       addPracticeExtension(
-        s.state.extension({ onCheck: (r) => void s.onCheck(r), onInput: () => undefined }),
+        s.state.extension({
+          onCheck: (r) =>
+            void s.onCheck(r).then((ok) => showStatus(ok ? 'connected' : 'error', ok ? connected : REFUSED)),
+          onInput: () => s.onInput(),
+        }),
       );
       window.addEventListener('pagehide', () => void s.finish(), { once: true });
       finishButton(async () => {
@@ -92,10 +103,7 @@ export async function startLms(): Promise<void> {
         if (s.returnUrl) window.location.href = s.returnUrl;
         else showStatus('finished', 'Finished: your results are with the LMS. You can close this page.');
       });
-      showStatus(
-        'connected',
-        `Connected to the LMS (cmi5)${s.learnerName ? ` as ${s.learnerName}` : ''}: your checked answers are reported.`,
-      );
+      showStatus('connected', connected);
       return;
     }
     const { connectScorm } = await import('./scorm');
@@ -105,14 +113,21 @@ export async function startLms(): Promise<void> {
       showStatus('none', 'No LMS found: practising without reporting.');
       return;
     }
-    addPracticeExtension(s.state.extension({ onCheck: s.onCheck, onInput: s.onInput }));
+    setLearnerScope(s.learnerId);
+    const connected = `Connected to the LMS (SCORM ${s.version})${s.learnerName ? ` as ${s.learnerName}` : ''}: your checked answers are reported.`;
+    addPracticeExtension(
+      s.state.extension({
+        onCheck: (r) => {
+          const ok = s.onCheck(r);
+          showStatus(ok ? 'connected' : 'error', ok ? connected : REFUSED);
+        },
+        onInput: s.onInput,
+      }),
+    );
     const finish = () => s.finish();
     window.addEventListener('pagehide', finish, { once: true });
     window.addEventListener('beforeunload', finish, { once: true });
-    showStatus(
-      'connected',
-      `Connected to the LMS (SCORM ${s.version})${s.learnerName ? ` as ${s.learnerName}` : ''}: your checked answers are reported.`,
-    );
+    showStatus('connected', connected);
   } catch (e) {
     showStatus(
       'error',

@@ -20,7 +20,7 @@ import { expectedText } from '../practice/check';
 import { allAnswers, type QuestionId } from '../practice/model';
 import { mistakeOf, variantOf } from './grade';
 import type { LmsConfig } from './packages';
-import { PracticeState } from './state';
+import { PracticeState, type PriorResult } from './state';
 
 interface Api12 {
   LMSInitialize(s: ''): string;
@@ -140,7 +140,8 @@ export interface ScormSession {
   learnerId: string;
   learnerName: string;
   state: PracticeState;
-  onCheck(r: CheckRecord): void;
+  /** Report a check; false when the LMS refused a value or the commit (the result may be lost). */
+  onCheck(r: CheckRecord): boolean;
   onInput(): void;
   finish(): void;
   /** The last SCORM error code the LMS reported ('0' when none). */
@@ -185,6 +186,7 @@ export function connectScorm(config: LmsConfig, win: Window = window): ScormSess
   const m = Number.parseFloat(d.get(K.mastery));
   const mastery = Number.isFinite(m) && m > 0 ? (v12 ? m / 100 : m) : config.mastery;
   const state = new PracticeState(config.questions, learnerId, config.seed, Math.min(1, mastery));
+  state.prior = priorResult(d, v12);
   const saved = d.get(K.suspend);
   if (saved) state.restore(saved);
   if (v12) {
@@ -215,6 +217,9 @@ export function connectScorm(config: LmsConfig, win: Window = window): ScormSess
   };
 
   let finished = false;
+  // typed answers reach the LMS's suspend data at once, and are committed after a pause in typing
+  // (not only at a Check), so a relaunch after a crash finds them
+  let commitTimer: ReturnType<typeof setTimeout> | null = null;
   return {
     version: d.version,
     learnerId,
@@ -222,10 +227,17 @@ export function connectScorm(config: LmsConfig, win: Window = window): ScormSess
     state,
     errors,
     onInput: () => {
-      if (!finished) writeSuspend();
+      if (finished) return;
+      writeSuspend();
+      if (commitTimer) clearTimeout(commitTimer);
+      commitTimer = setTimeout(() => {
+        commitTimer = null;
+        if (!finished && !d.commit()) errors.push(`commit: ${d.lastError()}`);
+      }, 2000);
     },
     onCheck: (r) => {
-      if (finished) return;
+      if (finished) return false;
+      const before = errors.length;
       const info = state.byQuestion.get(r.question);
       const now = new Date();
       for (const a of r.answers) {
@@ -258,10 +270,12 @@ export function connectScorm(config: LmsConfig, win: Window = window): ScormSess
       writeScore();
       writeSuspend();
       if (!d.commit()) errors.push(`commit: ${d.lastError()}`);
+      return errors.length === before;
     },
     finish: () => {
       if (finished) return;
       finished = true;
+      if (commitTimer) clearTimeout(commitTimer);
       writeSuspend();
       if (v12) {
         set('cmi.core.session_time', time12(Date.now() - started));
@@ -273,6 +287,35 @@ export function connectScorm(config: LmsConfig, win: Window = window): ScormSess
       d.commit();
       d.finish();
     },
+  };
+}
+
+/**
+ * The result the LMS holds from earlier sessions (SCORM 1.2: the 0–100 raw score and the lesson
+ * status; 2004: the scaled score, completion and success), so that a relaunch whose saved state
+ * is lost or unreadable never reports less.
+ */
+function priorResult(d: Driver, v12: boolean): PriorResult {
+  const num = (k: string) => {
+    const t = d.get(k);
+    const x = t.trim() === '' ? Number.NaN : Number(t);
+    return Number.isFinite(x) ? x : null;
+  };
+  if (v12) {
+    const raw = num('cmi.core.score.raw');
+    const max = num('cmi.core.score.max') ?? 100;
+    const st = d.get('cmi.core.lesson_status');
+    return {
+      scaled: raw !== null && max > 0 ? Math.min(1, Math.max(0, raw / max)) : null,
+      complete: st === 'passed' || st === 'failed' || st === 'completed',
+      passed: st === 'passed',
+    };
+  }
+  const scaled = num('cmi.score.scaled');
+  return {
+    scaled: scaled !== null ? Math.min(1, Math.max(0, scaled)) : null,
+    complete: d.get('cmi.completion_status') === 'completed',
+    passed: d.get('cmi.success_status') === 'passed',
   };
 }
 

@@ -13,7 +13,7 @@ export interface QuestionState {
   seed: number;
   /** Typed answers by answer name. */
   answers: Record<string, string>;
-  /** Correct answers at the last check (0 before any). */
+  /** The best marks the page stated for the variant (0 before any check): never lowered. */
   score: number;
   /** Answers the question asks for. */
   max: number;
@@ -33,8 +33,20 @@ export interface Totals {
   passed: boolean;
 }
 
+/** What the LMS already holds from an earlier session: a score is never reported lower. */
+export interface PriorResult {
+  /** The scaled score (0 … 1) the LMS holds, or null when it holds none. */
+  scaled: number | null;
+  complete: boolean;
+  passed: boolean;
+}
+
+const round6 = (x: number) => Math.round(x * 1e6) / 1e6;
+
 export class PracticeState {
   readonly byQuestion = new Map<QuestionId, QuestionState>();
+  /** The LMS's result from earlier sessions (kept even when the saved state cannot be read). */
+  prior: PriorResult = { scaled: null, complete: false, passed: false };
 
   constructor(
     readonly questions: readonly QuestionId[],
@@ -58,26 +70,37 @@ export class PracticeState {
       max += s.max;
       if (s.checked) checked++;
     }
-    const scaled = max > 0 ? raw / max : 0;
-    const complete = checked === this.byQuestion.size;
+    let scaled = max > 0 ? raw / max : 0;
+    // never below what the LMS already holds: a lost or unreadable saved state, a relaunch
+    if (this.prior.scaled !== null && this.prior.scaled > scaled) {
+      scaled = this.prior.scaled;
+      raw = round6(scaled * max);
+    }
+    const complete = checked === this.byQuestion.size || this.prior.complete;
     return {
-      raw,
+      raw: round6(raw),
       max,
-      scaled,
+      scaled: round6(scaled),
       checked,
       questions: this.byQuestion.size,
       complete,
-      passed: scaled >= this.mastery - 1e-9,
+      passed: scaled >= this.mastery - 1e-9 || this.prior.passed,
     };
   }
 
-  /** Apply a check; returns false when it is not one of the package's variants. */
+  /**
+   * Apply a check; returns false when it is not one of the package's variants. The question's
+   * score is the marks the page states (best kept, nothing for a shown answer), never lowered by a
+   * worse later check.
+   */
   record(r: CheckRecord): boolean {
     const s = this.byQuestion.get(r.question);
     if (!s || s.seed !== r.seed) return false;
     s.answers = Object.fromEntries(r.answers.map((a) => [a.name, a.response]));
-    s.score = r.answers.filter((a) => a.verdict === 'correct').length;
-    s.max = r.answers.length;
+    const earned = r.marks
+      ? r.marks.earned
+      : r.answers.filter((a) => a.verdict === 'correct' && !r.forfeited?.includes(a.name)).length;
+    s.score = round6(Math.max(s.score, Math.min(s.max, Math.max(0, earned))));
     s.checked = true;
     return true;
   }
@@ -140,8 +163,8 @@ export class PracticeState {
               (x): x is [string, string] => typeof x[1] === 'string',
             ),
           );
-        if (typeof e.sc === 'number' && e.sc >= 0 && e.sc <= s.max) s.score = Math.floor(e.sc);
-        s.checked = e.c === 1;
+        if (typeof e.sc === 'number' && e.sc >= 0 && e.sc <= s.max) s.score = Math.max(s.score, round6(e.sc));
+        s.checked = s.checked || e.c === 1;
       }
       return true;
     } catch {

@@ -3,9 +3,10 @@ import type { ShellFlags } from '../kit/shell';
 import { RouteNotice } from '../ui/RouteNotice';
 import { BestScores } from './BestScores';
 import { flagSuffix, randomSeed } from './links';
-import { loadProgress, resetProgress, type Progress } from './progress';
+import { loadProgress, type Progress } from './progress';
+import { resetPractice } from './reset';
 import { QUESTIONS } from './questions';
-import { loadScores, resetScores, type Scores } from './scores';
+import { loadScores, type Scores } from './scores';
 import { SheetBuilder } from './SheetBuilder';
 import { Slot } from './Slot';
 
@@ -63,8 +64,7 @@ export function PracticeHome({ flags, query }: { flags: ShellFlags; query: strin
           type="button"
           data-testid="reset-progress"
           onClick={() => {
-            setProgress(resetProgress());
-            resetScores();
+            setProgress(resetPractice());
             setScores(loadScores());
             setStatus('Progress cleared.');
           }}

@@ -4,7 +4,8 @@ import type { ShellFlags } from '../kit/shell';
 import { formatPlain } from '../ui/format';
 import { Superscripted } from '../ui/Superscripted';
 import { AnswerPolicy } from './AnswerPolicy';
-import { loadDraft, saveDraft } from './drafts';
+import { openingAnswers, saveDraft } from './drafts';
+import { loadSession, saveSession, withStored } from './sessionStore';
 import { extensionCheck, extensionInput, extensionRestore } from './extensions';
 import { Givens } from './Givens';
 import { flagSuffix, randomSeed } from './links';
@@ -17,8 +18,8 @@ import { questionInfo } from './questions';
 import { recordScore } from './scores';
 import {
   applyCheck,
+  forfeitedAnswers,
   gradeAnswers,
-  newSession,
   partDone,
   revealPart,
   sessionScore,
@@ -43,16 +44,20 @@ export function QuestionPage({
   problems: ParamProblem[];
 }) {
   const info = questionInfo(variant.question);
-  // typed answers survive a reload of the tab (drafts.ts); an extension (the LMS runtime in a
-  // package) may hand back the learner's saved answers instead
-  const [inputs, setInputs] = useState<Record<string, string>>(
-    () => extensionRestore(variant.question, variant.seed) ?? loadDraft(variant.question, variant.seed),
+  // typed answers survive a reload of the tab (drafts.ts); else an extension (the LMS runtime in a
+  // package) may hand back the learner's saved answers
+  const [inputs, setInputs] = useState<Record<string, string>>(() =>
+    openingAnswers(variant.question, variant.seed, () => extensionRestore(variant.question, variant.seed)),
   );
   useEffect(() => {
     saveDraft(variant.question, variant.seed, inputs);
     extensionInput(variant.question, variant.seed, inputs);
   }, [inputs, variant.question, variant.seed]);
-  const [session, setSession] = useState<Session>(() => newSession(variant));
+  // attempts, shown answers and best marks survive reloads and other tabs (sessionStore.ts)
+  const [session, setSession] = useState<Session>(() => loadSession(variant));
+  useEffect(() => {
+    saveSession(variant, session);
+  }, [variant, session]);
   const [checking, setChecking] = useState(false);
   const [summary, setSummary] = useState('');
   useEffect(() => {
@@ -64,7 +69,8 @@ export function QuestionPage({
       e?.preventDefault();
       setChecking(true);
       const verdicts = await gradeAnswers(variant, inputs);
-      const next = applyCheck(variant, session, inputs, verdicts);
+      const before = withStored(variant, session);
+      const next = applyCheck(variant, before, inputs, verdicts);
       for (const p of variant.parts)
         for (const a of p.answers) {
           const v = verdicts[a.name];
@@ -108,6 +114,8 @@ export function QuestionPage({
           message: verdicts[a.name]?.message ?? '',
         })),
         time: new Date().toISOString(),
+        marks: { earned: score.marks, total: score.total },
+        forfeited: forfeitedAnswers(variant, before),
       });
     },
     [variant, inputs, session],

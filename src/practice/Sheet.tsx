@@ -9,6 +9,7 @@ import { Superscripted } from '../ui/Superscripted';
 import { useEffect, useState } from 'react';
 import { MathTex } from '../ui/MathTex';
 import type { ShellFlags } from '../kit/shell';
+import { shareBase } from '../kit/shareLink';
 import { expectedText } from './check';
 import { SolutionSteps } from './SolutionSteps';
 import { formatSignificant } from '../ui/format';
@@ -21,7 +22,7 @@ import { ParamNotice } from './ParamNotice';
 
 /** The absolute address of a variant's online page (works from any host and from file://). */
 export function variantUrl(v: Pick<Variant, 'question' | 'seed'>, base = window.location.href): string {
-  return `${base.split('#')[0]}#/practice/${v.question}?seed=${v.seed}`;
+  return `${shareBase(base)}#/practice/${v.question}?seed=${v.seed}`;
 }
 
 /**
@@ -31,8 +32,7 @@ export function variantUrl(v: Pick<Variant, 'question' | 'seed'>, base = window.
  * the link still opens offline.
  */
 export function variantHref(v: Pick<Variant, 'question' | 'seed'>, base = window.location.href): string {
-  const doc = base.split('#')[0];
-  return `${doc}${doc.includes('?') ? '&' : '?'}utm_source=worksheet#/practice/${v.question}?seed=${v.seed}`;
+  return `${shareBase(base)}?utm_source=worksheet#/practice/${v.question}?seed=${v.seed}`;
 }
 
 /** The expected answer in typeset form (the key's TeX, else the number or the formula text). */

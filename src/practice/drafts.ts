@@ -1,16 +1,18 @@
 /**
  * Answers typed on a practice page but not yet checked survive a reload of the tab (the reader's
  * own, or the one that moves the tab to a new build): they are kept per question and seed in this
- * tab's sessionStorage, which lives as long as the tab. Only plain strings are read back; anything
+ * tab's sessionStorage, which lives as long as the tab (per learner inside an LMS package:
+ * ./learnerScope.ts). Only plain strings are read back; anything
  * else stored under the key is ignored.
  */
+import { scopedKey } from './learnerScope';
 
 const PREFIX = 'rml:practice-draft:';
 const MAX_ANSWERS = 64;
 const MAX_LENGTH = 4000;
 
 function key(question: string, seed: number): string {
-  return `${PREFIX}${question}:${seed}`;
+  return scopedKey(`${PREFIX}${question}:${seed}`);
 }
 
 function storage(): Storage | null {
@@ -51,4 +53,19 @@ export function saveDraft(question: string, seed: number, inputs: Record<string,
   } catch {
     /* quota or disabled storage: the answers stay in the page */
   }
+}
+
+/**
+ * The answers a practice page opens with: this tab's draft (typed last, so the newest, as after a
+ * crash and relaunch inside an LMS), else what an extension kept (an LMS's saved answers: a
+ * relaunch in a new tab), else none.
+ */
+export function openingAnswers(
+  question: string,
+  seed: number,
+  kept: () => Record<string, string> | null,
+): Record<string, string> {
+  const draft = loadDraft(question, seed);
+  if (Object.keys(draft).length) return draft;
+  return kept() ?? {};
 }

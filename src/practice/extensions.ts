@@ -7,7 +7,9 @@
  *    the learner id, so each learner keeps their own variant across sessions);
  *  - `restore(q, seed)`: typed answers to put back into the fields (a learner resuming);
  *  - `onInput(q, seed, answers)`: the fields changed (an LMS keeps them in its suspend data);
- *  - `onCheck(record)`: the learner pressed Check: every typed answer and its verdict.
+ *  - `onCheck(record)`: the learner pressed Check: every typed answer and its verdict, the marks
+ *    the page states, and the answers that earn nothing because they were shown;
+ *  - `onReset()`: the learner pressed "Reset progress" (a results log forgets its checks and name).
  *
  * Nothing registers by default; with no extension the pages behave exactly as without this module.
  */
@@ -32,6 +34,10 @@ export interface CheckRecord {
   answers: CheckedAnswer[];
   /** When the check happened (ISO 8601). */
   time: string;
+  /** The variant's marks as the page states them after this check (best kept, forfeits applied). */
+  marks?: { earned: number; total: number };
+  /** Answers whose part's answer was shown before this check: they earn nothing. */
+  forfeited?: string[];
 }
 
 export interface PracticeExtension {
@@ -39,6 +45,7 @@ export interface PracticeExtension {
   restore?(q: QuestionId, seed: number): Record<string, string> | null;
   onInput?(q: QuestionId, seed: number, answers: Record<string, string>): void;
   onCheck?(record: CheckRecord): void;
+  onReset?(): void;
 }
 
 const extensions: PracticeExtension[] = [];
@@ -80,6 +87,16 @@ export function extensionInput(q: QuestionId, seed: number, answers: Record<stri
 
 export function extensionCheck(record: CheckRecord): void {
   each((x) => x.onCheck?.(record));
+}
+
+/** Tell every registered extension that the learner reset their progress. */
+export function extensionReset(): void {
+  for (const x of extensions)
+    try {
+      x.onReset?.();
+    } catch {
+      /* an extension's failure never breaks the page */
+    }
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -1,11 +1,13 @@
 /**
- * Practice progress, kept in this browser only (localStorage, key `rml:practice-progress`): per
+ * Practice progress, kept in this browser only (localStorage, key `rml:practice-progress`, per
+ * learner inside an LMS package: ./learnerScope.ts): per
  * question, the variants (seeds) checked at least once and those answered fully correctly.
  * Storage can be missing, full or forbidden (private mode, sandboxed iframes): every access is
  * guarded and progress then simply is not kept.
  */
 import { QUESTION_IDS, type QuestionId } from './model';
 import { readPerQuestion } from './stored';
+import { scopedKey } from './learnerScope';
 
 export const PROGRESS_KEY = 'rml:practice-progress';
 const MAX_SEEDS = 500;
@@ -41,7 +43,7 @@ function normalise(attempted: number[], correct: number[]): QuestionProgress {
 
 export function loadProgress(): Progress {
   const p = empty();
-  readPerQuestion(PROGRESS_KEY, (q, e) => {
+  readPerQuestion(scopedKey(PROGRESS_KEY), (q, e) => {
     p[q] = normalise(seeds(e.attempted), seeds(e.correct));
   });
   return p;
@@ -49,7 +51,7 @@ export function loadProgress(): Progress {
 
 function save(p: Progress): void {
   try {
-    window.localStorage.setItem(PROGRESS_KEY, JSON.stringify(p));
+    window.localStorage.setItem(scopedKey(PROGRESS_KEY), JSON.stringify(p));
   } catch {
     /* storage unavailable: progress is not kept */
   }
@@ -67,7 +69,7 @@ export function recordCheck(q: QuestionId, seed: number, allCorrect: boolean): P
 
 export function resetProgress(): Progress {
   try {
-    window.localStorage.removeItem(PROGRESS_KEY);
+    window.localStorage.removeItem(scopedKey(PROGRESS_KEY));
   } catch {
     /* nothing to remove */
   }

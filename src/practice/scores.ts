@@ -1,10 +1,11 @@
 /**
  * The best mark of each practice variant, kept in this browser only (localStorage, key
- * `rml:practice-scores`): per question, seed → best share of the marks (0 … 1). Storage can be
+ * `rml:practice-scores`, per learner inside an LMS package: ./learnerScope.ts): per question, seed → best share of the marks (0 … 1). Storage can be
  * missing, full or forbidden: every access is guarded, and anything unreadable is ignored.
  */
 import { QUESTION_IDS, type QuestionId } from './model';
 import { readPerQuestion } from './stored';
+import { scopedKey } from './learnerScope';
 
 export const SCORES_KEY = 'rml:practice-scores';
 const MAX_VARIANTS = 200;
@@ -19,7 +20,7 @@ function empty(): Scores {
 
 export function loadScores(): Scores {
   const out = empty();
-  readPerQuestion(SCORES_KEY, (q, e) => {
+  readPerQuestion(scopedKey(SCORES_KEY), (q, e) => {
     for (const [seed, v] of Object.entries(e)) {
       if (!/^\d{1,10}$/.test(seed) || Number(seed) > 0xffffffff) continue;
       if (typeof v === 'number' && v >= 0 && v <= 1) out[q][seed] = v;
@@ -39,7 +40,7 @@ export function recordScore(q: QuestionId, seed: number, score: number): number 
   others.sort((x, y) => s[q][x] - s[q][y]);
   for (const k of others.slice(0, Math.max(0, others.length + 1 - MAX_VARIANTS))) delete s[q][k];
   try {
-    window.localStorage.setItem(SCORES_KEY, JSON.stringify(s));
+    window.localStorage.setItem(scopedKey(SCORES_KEY), JSON.stringify(s));
   } catch {
     /* storage unavailable: the score is not kept */
   }
@@ -48,7 +49,7 @@ export function recordScore(q: QuestionId, seed: number, score: number): number 
 
 export function resetScores(): void {
   try {
-    window.localStorage.removeItem(SCORES_KEY);
+    window.localStorage.removeItem(scopedKey(SCORES_KEY));
   } catch {
     /* nothing to remove */
   }

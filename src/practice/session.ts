@@ -258,3 +258,8 @@ export function sessionScore(v: Variant, s: Session): { marks: number; total: nu
 export function partDone(p: Part, s: Session): boolean {
   return p.answers.every((a) => s.answers[a.name].verdict?.value === 'correct');
 }
+
+/** The answers that earn nothing in a check from `s`: those of parts whose answer was shown. */
+export function forfeitedAnswers(v: Variant, s: Session): string[] {
+  return v.parts.filter((p) => s.parts[p.id].revealed !== null).flatMap((p) => p.answers.map((a) => a.name));
+}

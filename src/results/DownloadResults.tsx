@@ -1,6 +1,6 @@
 /** "Download my results" on the practice pages: the learner's checks as a results file. */
-import { useState } from 'react';
-import { loadAttempts, loadName, resultsFile, saveName, startRecording } from './record';
+import { useEffect, useState } from 'react';
+import { RECORD_CHANGED, loadAttempts, loadName, resultsFile, saveName, startRecording } from './record';
 
 startRecording();
 
@@ -20,6 +20,17 @@ function recordedText(n: number): string {
 export function DownloadResults() {
   const [name, setName] = useState(() => loadName());
   const [status, setStatus] = useState('');
+  const [, setVersion] = useState(0);
+  // a reset, a check or another tab changed the log or the name: show what is kept now
+  useEffect(() => {
+    const onChange = () => {
+      setName(loadName());
+      setStatus('');
+      setVersion((n) => n + 1);
+    };
+    window.addEventListener(RECORD_CHANGED, onChange);
+    return () => window.removeEventListener(RECORD_CHANGED, onChange);
+  }, []);
   const download = () => {
     const file = resultsFile(name);
     const blob = new Blob([JSON.stringify(file, null, 1)], { type: 'application/json' });

@@ -4,12 +4,14 @@
  * question the scores and how often each named mistake occurs (a bar chart and a table), a table
  * per student, and CSV exports. Everything happens in the page: no file or result is sent anywhere.
  */
-import { useEffect, useState, type DragEvent } from 'react';
+import { useEffect, useRef, useState, type DragEvent } from 'react';
 import { loadExpressionEngine } from '../core/expr';
 import { questionInfo } from '../practice/questions';
 import { QUESTION_IDS } from '../practice/model';
 import { collate, studentsCsv, type Collation, type InputFile, type QuestionStats } from './collate';
 import { downloadFile } from '../ui/download';
+import { csvText } from './csv';
+import { addBatch } from './batches';
 import './results.css';
 
 const MAX_FILES = 2000;
@@ -24,12 +26,19 @@ function mistakesCsv(c: Collation): string {
   for (const q of c.questions)
     for (const [m, n] of Object.entries(q.mistakes).sort((a, b) => b[1] - a[1]))
       rows.push([q.question, m, String(n)]);
-  return rows.map((r) => r.join(',')).join('\r\n') + '\r\n';
+  return csvText(rows);
 }
 
 export default function ResultsRoute() {
   const [ready, setReady] = useState(false);
-  const [busy, setBusy] = useState<{ done: number; total: number } | null>(null);
+  const [busy, setBusy] = useState<{ done: number; total: number; file?: string; waiting: number } | null>(
+    null,
+  );
+  // every batch of files adds to the class (a second drop does not replace the first); files
+  // dropped while a batch is being checked wait for it
+  const classFiles = useRef<InputFile[]>([]);
+  const waiting = useRef<File[]>([]);
+  const running = useRef<AbortController | null>(null);
   const [result, setResult] = useState<Collation | null>(null);
   const [problems, setProblems] = useState<string[]>([]);
   const [over, setOver] = useState(false);
@@ -43,12 +52,32 @@ export default function ResultsRoute() {
   }, []);
 
   const take = async (list: FileList | File[] | null) => {
-    const all = [...(list ?? [])];
+    waiting.current.push(...(list ?? []));
+    if (running.current) {
+      setBusy((b) => (b ? { ...b, waiting: waiting.current.length } : b));
+      return;
+    }
+    while (waiting.current.length) {
+      const next = waiting.current.splice(0);
+      const ctl = new AbortController();
+      running.current = ctl;
+      try {
+        await takeBatch(next, ctl.signal);
+      } catch {
+        setProblems((p) => ['Checking was cancelled: the results shown are from before it.', ...p]);
+        waiting.current = [];
+      }
+      running.current = null;
+    }
+    setBusy(null);
+  };
+
+  const takeBatch = async (all: File[], signal: AbortSignal) => {
     if (!all.length) return;
     const notes: string[] = [];
     const files = all.slice(0, MAX_FILES);
     if (all.length > MAX_FILES) notes.push(`Only the first ${MAX_FILES} files were read.`);
-    setBusy({ done: 0, total: files.length });
+    setBusy({ done: 0, total: files.length, waiting: 0 });
     const inputs: InputFile[] = [];
     for (const f of files) {
       if (f.size > MAX_BYTES) {
@@ -61,10 +90,15 @@ export default function ResultsRoute() {
         notes.push(`${f.name}: could not be read; left out.`);
       }
     }
-    const c = await collate(inputs, (done) => setBusy({ done, total: inputs.length }));
+    const merged = addBatch(classFiles.current, inputs);
+    const c = await collate(
+      merged,
+      (done, file) => setBusy({ done, total: merged.length, file, waiting: waiting.current.length }),
+      signal,
+    );
+    classFiles.current = merged;
     setResult(c);
     setProblems([...notes, ...c.problems]);
-    setBusy(null);
   };
 
   const onDrop = (e: DragEvent) => {
@@ -117,11 +151,16 @@ export default function ResultsRoute() {
         {!ready
           ? 'Loading the answer checker…'
           : busy
-            ? `Checking ${busy.done} of ${busy.total} files…`
+            ? `Checking ${busy.done} of ${busy.total} files${busy.file ? ` (${busy.file.slice(0, 80)})` : ''}…${busy.waiting ? ` ${busy.waiting} more waiting.` : ''}`
             : result
               ? `${result.files} file${result.files === 1 ? '' : 's'}, ${result.students.length} student${result.students.length === 1 ? '' : 's'}, ${result.attempts} checked attempt${result.attempts === 1 ? '' : 's'}.`
               : 'No files yet.'}
       </p>
+      {busy ? (
+        <button type="button" data-testid="results-cancel" onClick={() => running.current?.abort()}>
+          Cancel
+        </button>
+      ) : null}
       {problems.length ? (
         <div className="notice notice-warn" data-testid="results-problems">
           <ul>

@@ -7,7 +7,8 @@
  */
 import { QUESTION_IDS, type QuestionId } from '../practice/model';
 import { gradeAttempt, mistakeOf } from '../lms/grade';
-import { parseResultsFile } from './format';
+import { parseResultsFile, type Attempt } from './format';
+import { csvText } from './csv';
 
 export interface InputFile {
   name: string;
@@ -45,13 +46,42 @@ export interface Collation {
   problems: string[];
 }
 
+/** Long enough to do work, short enough for the page to answer input at once. */
+const SLICE_MS = 12;
+
+/** A student's key across files: their name, else the file's. */
+function studentKey(student: string): string {
+  return student.normalize('NFC').trim().replace(/\s+/g, ' ').toLowerCase();
+}
+
+function attemptKey(a: Attempt): string {
+  return JSON.stringify([a.question, a.seed, a.time, a.answers]);
+}
+
+/**
+ * Collate the files. Works in slices that yield to the page (whatever a file holds: a crafted one
+ * whose every attempt is slow to grade included), reporting each file as it starts; `signal`
+ * cancels. A student in several files (by name), and an attempt in several files, count once.
+ */
 export async function collate(
   files: readonly InputFile[],
-  onProgress?: (done: number) => void,
+  onProgress?: (done: number, current?: string) => void,
+  signal?: AbortSignal,
 ): Promise<Collation> {
   const problems: string[] = [];
-  const students: StudentRow[] = [];
-  const stats = new Map<QuestionId, QuestionStats & { sum: number }>();
+  const rows = new Map<string, StudentRow>();
+  const seen = new Set<string>();
+  let attempts = 0;
+  let done = 0;
+  let sliceStart = performance.now();
+  const yieldNow = async () => {
+    if (signal?.aborted) throw new DOMException('The collation was cancelled.', 'AbortError');
+    if (performance.now() - sliceStart < SLICE_MS) return;
+    await new Promise((r) => setTimeout(r, 0));
+    sliceStart = performance.now();
+    if (signal?.aborted) throw new DOMException('The collation was cancelled.', 'AbortError');
+  };
+  const stats = new Map<QuestionId, QuestionStats>();
   for (const q of QUESTION_IDS)
     stats.set(q, {
       question: q,
@@ -62,11 +92,10 @@ export async function collate(
       correct: 0,
       mistakes: {},
       disagreements: 0,
-      sum: 0,
     });
-  let attempts = 0;
-  let done = 0;
   for (const f of files) {
+    onProgress?.(done, f.name);
+    await yieldNow();
     const p = parseResultsFile(f.text);
     done++;
     if (!p.ok) {
@@ -76,13 +105,17 @@ export async function collate(
     }
     if (p.skipped)
       problems.push(`${f.name}: ${p.skipped} attempt(s) that name no question 1–6 or seed were left out.`);
-    const row: StudentRow = {
-      student: p.file.student || f.name.replace(/\.json$/i, ''),
-      file: f.name,
-      best: {},
-      attempts: 0,
-    };
+    const student = p.file.student || f.name.replace(/\.json$/i, '');
+    const key = studentKey(student);
+    let row = rows.get(key);
+    if (!row) {
+      row = { student, file: f.name, best: {}, attempts: 0 };
+      rows.set(key, row);
+    } else if (!row.file.split(', ').includes(f.name)) row.file += `, ${f.name}`;
     for (const a of p.file.attempts) {
+      const id = `${key}\u0000${attemptKey(a)}`;
+      if (seen.has(id)) continue;
+      seen.add(id);
       const g = await gradeAttempt(a.question, a.seed, a.answers);
       const s = stats.get(a.question)!;
       s.attempts++;
@@ -96,34 +129,25 @@ export async function collate(
         if (m) s.mistakes[m] = (s.mistakes[m] ?? 0) + 1;
         if (a.verdicts[x.name] === 'correct' && x.verdict !== 'correct') s.disagreements++;
       }
+      // an answer shown on the page before this check earns nothing, as it did there
+      const forfeited = new Set(a.forfeited ?? []);
+      const score = g.answers.filter((x) => x.verdict === 'correct' && !forfeited.has(x.name)).length;
       const prev = row.best[a.question];
-      const frac = g.max ? g.score / g.max : 0;
+      const frac = g.max ? score / g.max : 0;
       if (!prev || frac > prev.score / prev.max)
-        row.best[a.question] = { score: g.score, max: g.max, attempts: (prev?.attempts ?? 0) + 1 };
+        row.best[a.question] = { score, max: g.max, attempts: (prev?.attempts ?? 0) + 1 };
       else prev.attempts++;
+      await yieldNow();
     }
-    for (const [q, b] of Object.entries(row.best) as [QuestionId, { score: number; max: number }][]) {
-      const s = stats.get(q)!;
-      s.students++;
-      s.sum += b.max ? b.score / b.max : 0;
-    }
-    students.push(row);
     onProgress?.(done);
-    // yield now and then so the page stays responsive
-    if (done % 10 === 0) await new Promise((r) => setTimeout(r, 0));
   }
-  const questions = [...stats.values()].map(({ sum, ...s }) => ({
-    ...s,
-    meanBest: s.students ? sum / s.students : 0,
-  }));
+  const students = [...rows.values()];
+  const questions = [...stats.values()].map((s) => {
+    const bests = students.map((r) => r.best[s.question]).filter((b) => b !== undefined);
+    const sum = bests.reduce((t, b) => t + (b.max ? b.score / b.max : 0), 0);
+    return { ...s, students: bests.length, meanBest: bests.length ? sum / bests.length : 0 };
+  });
   return { files: files.length, attempts, students, questions, problems };
-}
-
-function csvCell(x: string | number): string {
-  const s = String(x);
-  // a leading = + - @ would be a formula in a spreadsheet
-  const safe = /^[=+\-@]/.test(s) && !/^-?\d/.test(s) ? `'${s}` : s;
-  return /[",\n\r]/.test(safe) ? `"${safe.replace(/"/g, '""')}"` : safe;
 }
 
 /** One row per student: name, file, attempts, then each question's best score and max. */
@@ -143,5 +167,5 @@ export function studentsCsv(c: Collation): string {
       return b ? [b.score, b.max] : ['', ''];
     }),
   ]);
-  return [head, ...rows].map((r) => r.map(csvCell).join(',')).join('\r\n') + '\r\n';
+  return csvText([head, ...rows]);
 }

@@ -5,8 +5,11 @@
  *   { "format": "render-math-lab-results", "formatVersion": 1, "app": "0.1.0",
  *     "student": "Ada", "created": "2025-…Z",
  *     "attempts": [ { "question": "q3", "seed": 17, "time": "2025-…Z",
- *                     "answers": { "u-nearest": "0.5", … }, "verdicts": { "u-nearest": "correct", … } } ] }
+ *                     "answers": { "u-nearest": "0.5", … }, "verdicts": { "u-nearest": "correct", … },
+ *                     "forfeited": [ "u-nearest" ] } ] }
  *
+ * `forfeited` (optional) names the answers whose part's answer the page had shown before that check:
+ * they earn nothing, as on the page.
  * The verdicts are what the page showed; the results page ignores them for scoring and recomputes
  * every verdict from the seed and the typed answers (it only reports where they disagree).
  */
@@ -21,6 +24,8 @@ export interface Attempt {
   time: string;
   answers: Record<string, string>;
   verdicts: Record<string, string>;
+  /** Answers whose part's answer had been shown before this check: they earn nothing. */
+  forfeited?: string[];
 }
 
 export interface ResultsFile {
@@ -44,6 +49,13 @@ function strings(x: unknown, max: number): Record<string, string> {
     out[k] = v.slice(0, MAX_TEXT);
   }
   return out;
+}
+
+/** The `forfeited` list of an attempt (answer names), when it has one. */
+function names(x: unknown): { forfeited?: string[] } {
+  if (!Array.isArray(x)) return {};
+  const list = x.filter((n): n is string => typeof n === 'string' && n.length <= 60).slice(0, 40);
+  return list.length ? { forfeited: list } : {};
 }
 
 /** Read a results file's text; a clear message when it is not one. Never throws. */
@@ -86,6 +98,7 @@ export function parseResultsFile(
       time: typeof x.time === 'string' ? x.time.slice(0, 40) : '',
       answers: strings(x.answers, 40),
       verdicts: strings(x.verdicts, 40),
+      ...names(x.forfeited),
     });
   }
   skipped += Math.max(0, o.attempts.length - MAX_ATTEMPTS);

@@ -1,0 +1,13 @@
+/**
+ * The document part of a link the app hands out (Copy link, the QR code, the embed code, the
+ * worksheet's links): the page's address without its query string and fragment. The page may have
+ * been opened with parameters that are not the app's: an LMS or a course page adds the learner's
+ * id, name and e-mail, a cmi5 launch adds its one-time credential (`fetch`), the learner (`actor`),
+ * `registration` and `endpoint`. A shared link carries the app's own route and parameters only,
+ * which live after the `#`, so nothing before it but the document's path is kept.
+ */
+export function shareBase(href: string): string {
+  const doc = href.split('#')[0];
+  const q = doc.indexOf('?');
+  return q < 0 ? doc : doc.slice(0, q);
+}

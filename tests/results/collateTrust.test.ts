@@ -1,0 +1,83 @@
+/** #/results: CSV safe in any spreadsheet, students counted once, collation that yields and cancels. */
+import { describe, expect, it } from 'vitest';
+import { csvCell, csvText } from '../../src/results/csv';
+import { collate, studentsCsv } from '../../src/results/collate';
+import { addBatch } from '../../src/results/batches';
+
+const file = (student: string, seeds: number[]) =>
+  JSON.stringify({
+    format: 'render-math-lab-results',
+    formatVersion: 1,
+    student,
+    attempts: seeds.map((seed) => ({
+      question: 'q3',
+      seed,
+      time: `2026-01-01T00:00:${String(seed % 60).padStart(2, '0')}Z`,
+      answers: { x: '1' },
+      verdicts: { x: 'correct' },
+    })),
+  });
+
+describe('CSV export', () => {
+  it('makes every formula text, also after a separator a spreadsheet may split on', () => {
+    for (const bad of [
+      '=1+1',
+      '+1',
+      '-1+HYPERLINK("http://x")',
+      '@SUM(A1)',
+      '\t=1',
+      ' =1',
+      'Ada;=3+3',
+      'Ada,=3+3',
+    ]) {
+      const cell = csvCell(bad);
+      for (const part of cell.replace(/^"|"$/g, '').split(/[;,\t]/))
+        expect(part.trimStart()).not.toMatch(/^[=+\-@]/);
+    }
+    expect(csvCell(-1.5)).toBe('-1.5');
+    expect(csvCell('-2')).toBe('-2');
+    expect(csvCell('Ada')).toBe('Ada');
+  });
+  it('starts with a byte-order mark so accented names open right', () => {
+    expect(csvText([['Zoë']]).startsWith('\uFEFFZoë')).toBe(true);
+  });
+});
+
+describe('collation', () => {
+  it('a student in two files, and a file handed in twice, count once', async () => {
+    const c = await collate([
+      { name: 'a.json', text: file('Ada', [1, 2]) },
+      { name: 'a-again.json', text: file(' ada ', [2, 3]) },
+      { name: 'b.json', text: file('Bob', [1]) },
+    ]);
+    expect(c.students.map((s) => s.student)).toEqual(['Ada', 'Bob']);
+    expect(c.students[0].attempts).toBe(3);
+    expect(c.questions.find((q) => q.question === 'q3')!.students).toBe(2);
+    expect(studentsCsv(c).split('\r\n')).toHaveLength(4);
+  });
+  it('a second batch adds to the first', () => {
+    const one = [{ name: 'a.json', text: 'A' }];
+    expect(addBatch(one, [{ name: 'b.json', text: 'B' }]).map((f) => f.name)).toEqual(['a.json', 'b.json']);
+    expect(addBatch(one, [{ name: 'a.json', text: 'A' }])).toHaveLength(1);
+  });
+  it('yields to the page while it works, names the file it is on, and can be cancelled', async () => {
+    const big = {
+      name: 'many.json',
+      text: file(
+        'Cy',
+        Array.from({ length: 400 }, (_, i) => i),
+      ),
+    };
+    let ticks = 0;
+    const timer = setInterval(() => ticks++, 0);
+    const names: string[] = [];
+    const c = await collate([big], (_d, f) => f && names.push(f));
+    clearInterval(timer);
+    expect(c.attempts).toBe(400);
+    expect(ticks).toBeGreaterThan(0);
+    expect(names).toEqual(['many.json']);
+    const ctl = new AbortController();
+    const p = collate([big], () => ctl.abort(), ctl.signal);
+    await expect(p).rejects.toThrow(/cancelled/);
+  });
+});
