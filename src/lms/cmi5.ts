@@ -19,7 +19,7 @@ import type { CheckRecord } from '../practice/extensions';
 import { expectedText } from '../practice/check';
 import { allAnswers, type QuestionId } from '../practice/model';
 import { mistakeOf, variantOf } from './grade';
-import type { LmsConfig } from './packages';
+import type { LmsConfig } from './config';
 import { PracticeState } from './state';
 
 export interface Cmi5Session {

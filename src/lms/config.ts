@@ -5,7 +5,21 @@
  * runs no inline script but the ones its build hashed (scripts/csp.ts). Tiny and import-free, as
  * the entry reads it.
  */
-import type { LmsConfig } from './packages';
+import type { QuestionId } from '../practice/model';
+
+export type LmsKind = 'scorm12' | 'scorm2004' | 'cmi5';
+
+/** What the launch page declares (read by src/lms/launch.ts). */
+export interface LmsConfig {
+  kind: LmsKind;
+  questions: QuestionId[];
+  /** Package seed: mixed into every learner's variant seeds. */
+  seed: number;
+  /** Scaled score (0–1) at which the learner passes, unless the LMS says otherwise. */
+  mastery: number;
+  /** The app's version (recorded in results). */
+  version: string;
+}
 
 export const LMS_META = 'rml-lms';
 

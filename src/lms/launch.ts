@@ -8,7 +8,7 @@
 import { addPracticeExtension } from '../practice/extensions';
 import type { QuestionId } from '../practice/model';
 import { isQuestionId } from '../practice/questions';
-import type { LmsConfig } from './packages';
+import type { LmsConfig } from './config';
 import { declaredLmsConfig } from './config';
 import { setLearnerScope } from '../practice/learnerScope';
 

@@ -15,21 +15,7 @@ import type { QuestionId } from '../practice/model';
 import { questionInfo } from '../practice/questions';
 import { bankVariants, moodleXml, qtiPackageFiles, type BankChoice, type TexToMathml } from './banks';
 import { xmlEscape } from './gaps';
-import { lmsConfigMeta } from './config';
-
-export type LmsKind = 'scorm12' | 'scorm2004' | 'cmi5';
-
-/** What the launch page declares (./config.ts; read by src/lms/launch.ts). */
-export interface LmsConfig {
-  kind: LmsKind;
-  questions: QuestionId[];
-  /** Package seed: mixed into every learner's variant seeds. */
-  seed: number;
-  /** Scaled score (0–1) at which the learner passes, unless the LMS says otherwise. */
-  mastery: number;
-  /** The app's version (recorded in results). */
-  version: string;
-}
+import { lmsConfigMeta, type LmsConfig, type LmsKind } from './config';
 
 export interface PackageChoice extends BankChoice {
   mastery: number;

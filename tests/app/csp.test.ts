@@ -6,7 +6,8 @@
 import { createHash } from 'node:crypto';
 import { describe, expect, it } from 'vitest';
 import { cspFor, inlineScripts, withCsp } from '../../scripts/csp';
-import { launchHtml, type LmsConfig } from '../../src/lms/packages';
+import type { LmsConfig } from '../../src/lms/config';
+import { launchHtml } from '../../src/lms/packages';
 
 const hash = (s: string) => `'sha256-${createHash('sha256').update(s).digest('base64')}'`;
 const policyOf = (html: string) =>

@@ -7,7 +7,7 @@ import { describe, expect, it } from 'vitest';
 import { connectScorm, type ScormSession } from '../../src/lms/scorm';
 import { PracticeState } from '../../src/lms/state';
 import type { CheckRecord } from '../../src/practice/extensions';
-import type { LmsConfig } from '../../src/lms/packages';
+import type { LmsConfig } from '../../src/lms/config';
 
 function fakeLms(version: '1.2' | '2004', data: Record<string, string> = {}, refuse = false) {
   const d: Record<string, string> = { ...data };

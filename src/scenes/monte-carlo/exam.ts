@@ -4,15 +4,13 @@
  * derivations of Q4(a) and Q4(c).
  */
 import { formatPlain } from '../../core/format';
-import { squareShift } from './integral';
+import { EXAM_A, EXAM_B, squareShift } from './integral';
 import type { SampleTable } from './sampleTable';
 
 /** The exam's four samples (Q4(b)). */
 export const EXAM_SAMPLES: readonly number[] = [1.16, 1.98, 0.54, 1.26];
 /** The exam's integrand and limits. */
 export const EXAM_F = '(x+2)^2';
-export const EXAM_A = 0;
-export const EXAM_B = 2;
 /**
  * Figures as PRINTED in the answer key for Q4(b) (not used for any computation: only to say where
  * the live computation differs from what the key prints).

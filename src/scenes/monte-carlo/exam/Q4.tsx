@@ -5,7 +5,8 @@
  */
 import type { ReactNode } from 'react';
 import { Revealed } from '../../../ui';
-import { EXAM_A, EXAM_B, EXAM_F, EXAM_SAMPLES } from '../exam';
+import { EXAM_F, EXAM_SAMPLES } from '../exam';
+import { EXAM_A, EXAM_B } from '../integral';
 import type { Exact } from '../integral';
 import type { SampleTable } from '../sampleTable';
 import { RaceDataSection, type RaceInput } from '../view/RaceSection';
