@@ -10,6 +10,7 @@
  * Classic mistakes: dω without cos θ_l; r not squared; the receiver's cos θ in place of cos θ_l;
  * the estimator without |A| (p_A = 1/|A|), without cos θ_l, or with f = ρ instead of ρ/π.
  */
+import { add, scale, type Vec3 } from '../core/vec3';
 import { formatSignificant } from '../core/format';
 import { Rng } from '../core/random';
 import { patchSolidAngleApprox } from '../core/geometry';
@@ -18,11 +19,9 @@ import { intIn, numberAnswer, pick, query } from './build';
 import { closeTo, ownNumber } from './follow';
 import { assembleSolution, tn, vecDisplay, vecValue, type Part, type Variant } from './model';
 
-type V3 = [number, number, number];
-
 export interface Q6Params {
-  p: V3;
-  lc: V3;
+  p: Vec3;
+  lc: Vec3;
   ls: [number, number];
   tilt: number;
   L: number;
@@ -37,9 +36,7 @@ export interface Q6Params {
 
 export function q6Geometry(P: Q6Params) {
   const light = makeRectLight(P.lc, P.ls[0], P.ls[1], P.tilt);
-  const centre: V3 = [0, 1, 2].map(
-    (k) => light.corner[k] + P.pu * light.edgeX[k] + P.pv * light.edgeY[k],
-  ) as V3;
+  const centre = add(add(light.corner, scale(light.edgeX, P.pu)), scale(light.edgeY, P.pv));
   const patch = makeRectLight(centre, P.psize, P.psize, P.tilt + P.ptilt);
   const dx = centre[0] - P.p[0],
     dy = centre[1] - P.p[1],
@@ -54,7 +51,7 @@ export function q6Geometry(P: Q6Params) {
 
 function pointTerms(light: RectLight, P: Q6Params) {
   return P.uv.map(([s, t]) => {
-    const x: V3 = [0, 1, 2].map((k) => light.corner[k] + s * light.edgeX[k] + t * light.edgeY[k]) as V3;
+    const x = add(add(light.corner, scale(light.edgeX, s)), scale(light.edgeY, t));
     const dx = x[0] - P.p[0],
       dy = x[1] - P.p[1],
       dz = x[2] - P.p[2];

@@ -10,6 +10,7 @@
  * Source: pbrt-v4 `util/sampling.h` (SampleLinear / LinearPDF / InvertLinearSample) and §A.1
  * (the inversion method); pbrt-v4 §A.4.1 for tabulated piecewise-constant distributions.
  */
+import { formatPlain } from '../format';
 import type { Failure } from '../failure';
 import { integrate1D } from '../verify/integrate1d';
 import { gaussLegendre } from '../verify/quadrature';
@@ -223,8 +224,6 @@ const { x: GL4_X, w: GL4_W } = gaussLegendre(4);
 /** Default number of bins of tabulated densities. */
 export const TABLE_BINS = 4096;
 
-const fmt = (x: number): string => (Number.isInteger(x) ? String(x) : x.toPrecision(6).replace(/\.?0+$/, ''));
-
 /** Result of {@link tabulatedPdf1D}, {@link customPdf1D} and {@link proportionalPdf1D}. */
 export type TypedPdfResult =
   | {
@@ -315,18 +314,22 @@ export function tabulatedPdf1D(
     if (Number.isNaN(v))
       return fail(
         'not-finite',
-        `p(x) is not a number at x = ${fmt(x)} (outside the domain of the expression?)`,
+        `p(x) is not a number at x = ${formatPlain(x)} (outside the domain of the expression?)`,
         x,
       );
     if (v < 0)
-      return fail('negative', `p(x) = ${fmt(v)} < 0 at x = ${fmt(x)}: a density cannot be negative`, x);
+      return fail(
+        'negative',
+        `p(x) = ${formatPlain(v)} < 0 at x = ${formatPlain(x)}: a density cannot be negative`,
+        x,
+      );
     if (v === Infinity)
       return fail(
         'not-normalizable',
-        `p(x) is infinite at x = ${fmt(x)}, so it cannot be normalized here`,
+        `p(x) is infinite at x = ${formatPlain(x)}, so it cannot be normalized here`,
         x,
       );
-    if (!Number.isFinite(v)) return fail('not-finite', `p(x) is not finite at x = ${fmt(x)}`, x);
+    if (!Number.isFinite(v)) return fail('not-finite', `p(x) is not finite at x = ${formatPlain(x)}`, x);
     return null;
   };
   let zeroWhereF: number | undefined;
@@ -362,22 +365,26 @@ export function tabulatedPdf1D(
   if (!Number.isFinite(Z.value) || !Z.converged) {
     return fail(
       'not-normalizable',
-      `∫ p dx over [${fmt(a)}, ${fmt(b)}] does not converge: p cannot be normalized into a density`,
+      `∫ p dx over [${formatPlain(a)}, ${formatPlain(b)}] does not converge: p cannot be normalized into a density`,
     );
   }
   if (!(Z.value > 0))
-    return fail('zero', `p is zero on all of [${fmt(a)}, ${fmt(b)}]: there is nothing to sample from`);
+    return fail(
+      'zero',
+      `p is zero on all of [${formatPlain(a)}, ${formatPlain(b)}]: there is nothing to sample from`,
+    );
   if (zeroWhereF !== undefined) {
     const x = zeroWhereF;
     return fail(
       'zero-where-f-nonzero',
-      `p(${fmt(x)}) = 0 but f(${fmt(x)}) ≠ 0: samples never land where p is zero, so the estimate would miss that part of the integral (biased, or with infinite variance)`,
+      `p(${formatPlain(x)}) = 0 but f(${formatPlain(x)}) ≠ 0: samples never land where p is zero, so the estimate would miss that part of the integral (biased, or with infinite variance)`,
       x,
     );
   }
   let total = 0;
   for (let k = 0; k < bins; k++) total += masses[k];
-  if (!(total > 0)) return fail('zero', `p is zero on the sampling grid of [${fmt(a)}, ${fmt(b)}]`);
+  if (!(total > 0))
+    return fail('zero', `p is zero on the sampling grid of [${formatPlain(a)}, ${formatPlain(b)}]`);
   const Zv = Z.value;
   return {
     ok: true,

@@ -20,6 +20,7 @@
  * Source: pbrt-v4 §A.4.2 (PiecewiseConstant2D) and §2.4.2 (sampling a tabulated environment map
  * by marginal and conditional); Gauss–Legendre probes after Numerical Recipes §4.6.
  */
+import { formatRounded } from '../format';
 import type { Failure } from '../failure';
 import { gaussLegendre } from '../verify/quadrature';
 import { DensityError, PiecewiseConstant1D } from './piecewise1D';
@@ -62,10 +63,6 @@ class Invalid extends Error {
   }
 }
 
-function fmt(x: number): string {
-  return Number(x.toPrecision(4)).toString();
-}
-
 /** Evaluate p at (θ, φ), throwing {@link Invalid} for negative or non-finite values. */
 function evalChecked(p: ThetaPhiDensity, theta: number, phi: number): number {
   let v: unknown;
@@ -75,7 +72,7 @@ function evalChecked(p: ThetaPhiDensity, theta: number, phi: number): number {
     throw new Invalid({
       ok: false,
       kind: 'error',
-      message: `evaluating the density failed at θ = ${fmt(theta)}, φ = ${fmt(phi)}: ${e instanceof Error ? e.message : String(e)}`,
+      message: `evaluating the density failed at θ = ${formatRounded(theta)}, φ = ${formatRounded(phi)}: ${e instanceof Error ? e.message : String(e)}`,
       at: { theta, phi },
     });
   }
@@ -83,7 +80,7 @@ function evalChecked(p: ThetaPhiDensity, theta: number, phi: number): number {
     throw new Invalid({
       ok: false,
       kind: 'nonfinite',
-      message: `the density is not a finite number at θ = ${fmt(theta)}, φ = ${fmt(phi)} (${typeof v !== 'number' ? `it gives a ${typeof v}` : Number.isNaN(v) ? 'it is undefined there' : 'it is infinite there'}); a pdf must be finite to be normalized`,
+      message: `the density is not a finite number at θ = ${formatRounded(theta)}, φ = ${formatRounded(phi)} (${typeof v !== 'number' ? `it gives a ${typeof v}` : Number.isNaN(v) ? 'it is undefined there' : 'it is infinite there'}); a pdf must be finite to be normalized`,
       at: { theta, phi },
     });
   }
@@ -91,7 +88,7 @@ function evalChecked(p: ThetaPhiDensity, theta: number, phi: number): number {
     throw new Invalid({
       ok: false,
       kind: 'negative',
-      message: `the density is negative (${fmt(v)}) at θ = ${fmt(theta)}, φ = ${fmt(phi)}; a pdf must be ≥ 0 everywhere`,
+      message: `the density is negative (${formatRounded(v)}) at θ = ${formatRounded(theta)}, φ = ${formatRounded(phi)}; a pdf must be ≥ 0 everywhere`,
       at: { theta, phi },
     });
   }
@@ -156,7 +153,7 @@ function probeDivergence(p: ThetaPhiDensity, total: number): TabulateFailure | n
       return {
         ok: false,
         kind: 'divergent',
-        message: `the density is not integrable at ${pr.name}: ${pr.explain} does not shrink as the region shrinks (mass ${fmt(masses[0])}, ${fmt(masses[1])}, ${fmt(masses[2])}, ${fmt(last)} in regions of size 2⁻¹⁰ … 2⁻⁴⁰), so ∫ p dω = ∞ and no k can normalize it`,
+        message: `the density is not integrable at ${pr.name}: ${pr.explain} does not shrink as the region shrinks (mass ${formatRounded(masses[0])}, ${formatRounded(masses[1])}, ${formatRounded(masses[2])}, ${formatRounded(last)} in regions of size 2⁻¹⁰ … 2⁻⁴⁰), so ∫ p dω = ∞ and no k can normalize it`,
         at: { theta: t0, phi: p0 },
       };
     }
@@ -204,7 +201,7 @@ export function tabulateHemisphereDensity(p: ThetaPhiDensity, opts: TabulateOpti
     const rel = Math.abs(fineIntegral - lobe.integral) / lobe.integral;
     const warning =
       rel > 0.05
-        ? `the tabulated integral changes by ${fmt(100 * rel)} % when the ${nz}×${nphi} grid is refined (${fmt(lobe.integral)} → ${fmt(fineIntegral)}): the density has features finer than the table can resolve (a sharp peak, or a singularity inside), so the sampled lobe only approximates it`
+        ? `the tabulated integral changes by ${formatRounded(100 * rel)} % when the ${nz}×${nphi} grid is refined (${formatRounded(lobe.integral)} → ${formatRounded(fineIntegral)}): the density has features finer than the table can resolve (a sharp peak, or a singularity inside), so the sampled lobe only approximates it`
         : undefined;
     return warning ? { ok: true, lobe, warning } : { ok: true, lobe };
   } catch (e) {
