@@ -74,7 +74,9 @@ test.describe('Q1: the exam lobe', () => {
     await statsReady(page);
     await page.getByTestId('lobe').selectOption('uniform');
     await expect(page).toHaveURL(/lobe=uniform/);
-    await waitForReadout(page, 'k', (v) => Number(v) === 1 / (2 * Math.PI));
+    // the chosen density's k is in the note naming it; Q1(a)'s answer keeps the exam's k
+    await waitForReadout(page, 'k-chosen', (v) => Number(v) === 1 / (2 * Math.PI));
+    expect(Number(await readout(page, 'k'))).toBe(examLobeK());
     await statsReady(page);
     await expectMatchesCore(page, 'uniform', 2000, 1);
   });
@@ -107,7 +109,7 @@ test.describe('typed densities', () => {
     await input.fill('1');
     await input.press('Enter');
     await expect(page).toHaveURL(/pdf=1/);
-    await waitForReadout(page, 'k', (v) => Math.abs(Number(v) * 2 * Math.PI - 1) < 1e-9);
+    await waitForReadout(page, 'k-chosen', (v) => Math.abs(Number(v) * 2 * Math.PI - 1) < 1e-9);
     await statsReady(page);
     expect(Number(await readout(page, 'samples'))).toBe(3000);
   });
@@ -124,7 +126,9 @@ test.describe('typed densities', () => {
       await openScene(page, `#/hemisphere?lobe=custom&n=2000&pdf=${encodeURIComponent(pdf)}`);
       await expect(page.getByTestId('custom-error')).toContainText(message);
       await statsReady(page);
-      expect(await readout(page, 'k')).toBe('none');
+      // no chosen density, so no k of its own; Q1(a)'s answer is still the exam's
+      await expect(page.getByTestId('k-chosen')).toHaveCount(0);
+      expect(Number(await readout(page, 'k'))).toBe(examLobeK());
       expect(await readout(page, 'samples')).toBe('none');
       expect(await readout(page, 'chi2-p')).toBe('none');
       expect(await readout(page, 'mc-importance')).toBe('none');
@@ -135,7 +139,7 @@ test.describe('typed densities', () => {
       await page.getByTestId('pdf-input').fill('cos(theta)');
       await page.getByTestId('pdf-input').press('Enter');
       await expect(page.getByTestId('custom-error')).toHaveCount(0);
-      await waitForReadout(page, 'k', (v) => Math.abs(Number(v) * Math.PI - 1) < 1e-3);
+      await waitForReadout(page, 'k-chosen', (v) => Math.abs(Number(v) * Math.PI - 1) < 1e-3);
     });
   }
 
