@@ -68,7 +68,10 @@ export async function connectCmi5(config: LmsConfig, questions: QuestionId[]): P
   const doc = { agent: params.actor, activityId, stateId: STATE_ID, registration: params.registration };
   const sent = { passed: false, failed: false, completed: false };
   try {
-    const r = await cmi5.xapi?.getState(doc);
+    // ask which documents the store keeps before reading ours: a first launch then costs no 404
+    const ids = await cmi5.xapi?.getStates({ agent: doc.agent, activityId, registration: doc.registration });
+    const listed = Array.isArray(ids?.data) && ids.data.includes(STATE_ID);
+    const r = listed ? await cmi5.xapi?.getState(doc) : undefined;
     const kept = readKept(r?.data);
     if (kept) {
       Object.assign(sent, kept.sent);

@@ -22,6 +22,7 @@ const SESSION = 'a1b2c3d4-0000-4000-8000-000000000001';
 const COURSE = `https://render-math-lab.invalid/cmi5/${PKG_SEED}`;
 const TOKEN = Buffer.from('au:secret').toString('base64');
 const statements: Record<string, any>[] = [];
+const stateDocs = new Map<string, unknown>();
 const requests: string[] = [];
 let server: Server | null = null;
 let cmi5Xml = '';
@@ -60,9 +61,17 @@ test.beforeAll(async () => {
       json(401, { error: 'no token' });
       return true;
     }
-    if (url.pathname === '/xapi/activities/state' && req.method === 'GET') {
-      if (url.searchParams.get('stateId') === 'LMS.LaunchData') json(200, launchData);
-      else json(404, {});
+    if (url.pathname === '/xapi/activities/state') {
+      // the state resource as xAPI 1.0.3 defines it: documents by stateId, a list without one
+      const id = url.searchParams.get('stateId');
+      if (req.method === 'GET' && id === 'LMS.LaunchData') json(200, launchData);
+      else if (req.method === 'GET' && id === null) json(200, ['LMS.LaunchData', ...stateDocs.keys()]);
+      else if (req.method === 'GET' && id !== null && stateDocs.has(id)) json(200, stateDocs.get(id));
+      else if ((req.method === 'PUT' || req.method === 'POST') && id !== null) {
+        stateDocs.set(id, JSON.parse(body));
+        res.writeHead(204, { 'x-experience-api-version': '1.0.3' });
+        res.end();
+      } else json(404, {});
       return true;
     }
     if (url.pathname === '/xapi/agents/profile' && req.method === 'GET') {
@@ -83,6 +92,9 @@ test.beforeAll(async () => {
     return true;
   }));
 });
+
+// each test is its own learner's first launch
+test.beforeEach(() => stateDocs.clear());
 
 test.afterAll(async () => {
   await new Promise<void>((ok) => (server ? server.close(() => ok()) : ok()));
