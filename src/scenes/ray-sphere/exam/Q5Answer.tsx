@@ -47,7 +47,7 @@ function methodNote(
   }
   const intro =
     'a, b, c are the textbook coefficients; Δ and the roots come from the robust form 4a(r²\u00a0−\u00a0|ℓ|²), ' +
-    'where ℓ = f − (f·d / d·d) d, f = o − C, runs from the centre to the nearest point of the ray’s line';
+    'where ℓ = f − (f·d\u00a0/\u00a0d·d) d, f = o − C, runs from the centre to the nearest point of the ray’s line';
   if (!robustDiffers || discFromAbc === null || discriminant === null) {
     return `${intro}. Here it equals b² − 4ac of the a, b, c shown, to the last bit.`;
   }

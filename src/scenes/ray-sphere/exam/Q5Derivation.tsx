@@ -119,7 +119,7 @@ const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySph
                   'here, see “Explore further”) gives the same value.'
                 : `That is b² − 4ac of these numbers in ${arith} arithmetic (the textbook method). The roots ` +
                   'below use the robust form, which computes Δ = 4a(r²\u00a0−\u00a0|ℓ|²) = ' +
-                  `${fmt(res.discriminant)}, where ℓ = f − (f·d / d·d) d with f = o − C is the vector from ` +
+                  `${fmt(res.discriminant)}, where ℓ = f − (f·d\u00a0/\u00a0d·d) d with f = o − C is the vector from ` +
                   'the centre to the point of the ray’s line nearest to it, ' +
                   'without cancellation: the same quantity, different rounding.'}
             </p>
