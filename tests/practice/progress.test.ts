@@ -1,19 +1,7 @@
 /** Progress in localStorage: recorded per question and seed, robust to junk and to missing storage. */
 import { afterEach, beforeEach, describe, expect, it } from 'vitest';
 import { loadProgress, PROGRESS_KEY, recordCheck, resetProgress } from '../../src/practice/progress';
-
-class MemoryStorage {
-  data = new Map<string, string>();
-  getItem(k: string) {
-    return this.data.has(k) ? this.data.get(k)! : null;
-  }
-  setItem(k: string, v: string) {
-    this.data.set(k, v);
-  }
-  removeItem(k: string) {
-    this.data.delete(k);
-  }
-}
+import { MemoryStorage } from './memoryWindow';
 
 const g = globalThis as unknown as { window?: { localStorage: unknown } };
 let store: MemoryStorage;
