@@ -47,7 +47,10 @@ const server = createServer(async (req, res) => {
     let body = await readFile(file);
     const headers = {
       'content-type': types[extname(file)] ?? 'application/octet-stream',
-      'cache-control': 'no-store',
+      // hashed build files never change under their name (as a production host serves them), so
+      // a browser may keep them, and V8 its compiled code; the rest (index.html, the service
+      // worker, the manifest) is fetched fresh so that a new build is seen at once
+      'cache-control': path.startsWith('/assets/') ? 'public, max-age=31536000, immutable' : 'no-store',
     };
     if (gzip && COMPRESSIBLE.has(extname(file))) {
       headers.vary = 'accept-encoding';

@@ -1,10 +1,12 @@
 /**
  * Hostile input, kept fixed:
- *  - a URL corpus: every route × every parameter set to each hostile value (empty, NaN, ±Infinity,
- *    1e400, 100k characters, unicode/RTL marks, broken percent-escapes, wrong arity, deeply nested
- *    calls), then a prototype name on each parameter alone. Per value, all of a route's parameters
- *    get it at once (one hash change, the scene stays loaded): zero console errors (fixture), a
- *    working scene, and a notice naming every non-text parameter whose value could not be used;
+ *  - a URL corpus on every route: hostile values (empty, NaN, ±Infinity, 1e400, 100k characters,
+ *    unicode/RTL marks, broken percent-escapes, wrong arity, deeply nested calls) given to all of
+ *    a route's parameters at once, each parameter a different one, rotated over three hash changes
+ *    (the scene stays loaded), then a prototype name on every parameter, then an unknown parameter
+ *    and a repeated one: zero console errors (fixture), a working scene, and a notice naming every
+ *    non-text parameter whose value could not be used. Every parameter of every scene against every
+ *    value of the corpus is read in tests/kit/sceneParamsHostile.test.ts; here the page shows it;
  *  - the fuzz mode (`fuzz=1&seed=…&fuzzn=…`) on every route, fixed seed, a few hundred actions.
  * Routes come from the catalogue (src/kit/catalogue.ts) plus EXTRA_ROUTES, parameter names and
  * kinds from each scene's schema (its params.ts), so new scenes are covered without editing this file.
@@ -66,9 +68,14 @@ async function expectWorkingScene(page: Page, label: string) {
   ).toHaveCount(0);
 }
 
+/** How many hash changes the corpus is rotated over (parameter j gets value (j + 3i) mod 10 in change i). */
+const ROTATIONS = 3;
+
 for (const route of ROUTES) {
-  test(`URL corpus on ${route.path}: every parameter × every hostile value`, async ({ page }) => {
-    test.setTimeout(240_000);
+  test(`URL corpus on ${route.path}: hostile values, prototype names, unknown and repeated parameters`, async ({
+    page,
+  }) => {
+    test.setTimeout(180_000);
     const params = route.params ?? (route.id ? await sceneParams(route.id) : []);
     await openScene(page, `#${route.path}`);
     // scrolled through once, so every section (lazy libraries, plots) is mounted and takes the input
@@ -77,48 +84,41 @@ for (const route of ROUTES) {
       await settle(page);
     }
     await page.evaluate(() => window.scrollTo(0, 0));
-    for (const [label, raw] of CORPUS) {
-      const names = [...params.map((p) => p.name), 'embed', 'theme'];
-      const q = names.map((n) => `${n}=${raw}`).join('&');
+    const notice = page.getByTestId('param-notice').first();
+    const go = async (q: string) => {
       await page.evaluate((h) => {
         window.location.hash = h;
       }, `#${route.path}?${q}`);
       await settle(page);
+    };
+    // theme (a shell parameter, on every route) never takes a hostile value silently either
+    const all = [...params, { name: 'theme', kind: 'enum' }];
+    for (let i = 0; i < ROTATIONS; i++) {
+      const given = all.map((p, j) => ({ p, value: CORPUS[(j + 3 * i) % CORPUS.length]! }));
+      await go(given.map(({ p, value }) => `${p.name}=${value[1]}`).join('&'));
+      const label = `change ${i}: ${given.map(({ p, value }) => `${p.name}=${value[0]}`).join(', ')}`;
       await expectWorkingScene(page, label);
-      // every non-text parameter that cannot use the value is named in the notice
+      // every non-text parameter that cannot use its value is named in the notice
       // (a list takes '' as its default and '1,2' as two numbers: those are usable)
-      const mustName = params.filter(
-        (p) => p.kind !== 'string' && !(p.kind === 'list' && (raw === '' || raw === '1,2')),
+      const mustName = given.filter(
+        ({ p, value }) =>
+          p.kind !== 'string' && !(p.kind === 'list' && (value[1] === '' || value[1] === '1,2')),
       );
-      // theme (a shell parameter, on every route) never takes a hostile value silently either
-      const notice = page.getByTestId('param-notice').first();
-      await expect(notice, `notice for ${label} on ${route.path}`).toBeVisible();
-      expect(await notice.textContent(), `${route.path}: theme=${label} is named`).toContain('theme');
-      if (mustName.length) {
-        const text = (await notice.textContent()) ?? '';
-        const named = route.id ? await notice.locator('li code').allTextContents() : null;
-        for (const p of mustName)
-          if (named) expect(named, `${route.path}: ${p.name}=${label} is named`).toContain(p.name);
-          else expect(text, `${route.path}: ${p.name}=${label} is named`).toContain(p.name);
+      await expect(notice, `notice after ${label} on ${route.path}`).toBeVisible();
+      const text = (await notice.textContent()) ?? '';
+      const named = route.id ? await notice.locator('li code').allTextContents() : null;
+      for (const { p, value } of mustName) {
+        const what = `${route.path}: ${p.name}=${value[0]} is named`;
+        if (named && p.name !== 'theme') expect(named, what).toContain(p.name);
+        else expect(text, what).toContain(p.name);
       }
     }
-    // one prototype name per parameter on its own, then a control change: the URL never carries
-    // a function's source
-    for (const p of params) {
-      await page.evaluate((h) => {
-        window.location.hash = h;
-      }, `#${route.path}?${p.name}=toString`);
-      await settle(page);
-      await expectWorkingScene(page, `${p.name}=toString`);
-      expect(await page.evaluate(() => window.location.href)).not.toMatch(/native%20code|native code/);
-    }
-  });
-}
-
-for (const route of EXTRA_ROUTES) {
-  test(`${route.path}: an unknown parameter and a repeated one are named`, async ({ page }) => {
-    await openScene(page, `#${route.path}?bogus=1&theme=dark&theme=light`);
-    const notice = page.getByTestId('param-notice').first();
+    // a prototype name on every parameter: the URL never carries a function's source
+    await go(params.map((p) => `${p.name}=toString`).join('&'));
+    await expectWorkingScene(page, 'toString');
+    expect(await page.evaluate(() => window.location.href)).not.toMatch(/native%20code|native code/);
+    // an unknown parameter and a repeated one are named
+    await go('bogus=1&theme=dark&theme=light');
     await expect(notice).toBeVisible();
     await expect(notice).toContainText('bogus');
     await expect(notice).toContainText('theme');

@@ -20,14 +20,14 @@ export async function sceneParams(id: SceneId): Promise<{ name: string; kind: st
 }
 
 /**
- * The query that sets every count of a scene to the largest its schema allows: each integer
- * parameter but the seed and the timeline's position t.
+ * The query that sets every count of a scene to the largest its schema allows (or to `fraction`
+ * of it): each integer parameter but the seed and the timeline's position t.
  */
-export async function maxCountsQuery(id: SceneId): Promise<string> {
+export async function maxCountsQuery(id: SceneId, fraction = 1): Promise<string> {
   const out: string[] = [];
   for (const [name, spec] of Object.entries(await sceneSchema(id)))
     if (spec.kind === 'number' && spec.integer && name !== 'seed' && name !== 't' && spec.max !== undefined)
-      out.push(`${name}=${spec.max}`);
+      out.push(`${name}=${Math.max(spec.min ?? 1, Math.round(spec.max * fraction))}`);
   return out.join('&');
 }
 

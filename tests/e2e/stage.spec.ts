@@ -1,42 +1,14 @@
 /**
- * The lecture room: the stage view (present=1), ask-then-reveal (ask=1), and the students' link.
- *
- * The per-scene checks run over every scene of the catalogue and assert for each: a scene whose
- * layout does not pass a `stage` yet (or does not hide its results under ask=1) fails with a
- * message that names it, so the list of failures is the list of scenes still to do. What the
- * shared stage does the same on every scene is checked on one (catalogue.spec.ts loops the
- * timeline's and the stage's shared behaviours over the catalogue).
+ * The lecture room's shared pieces, checked once (they are the same on every scene): the
+ * controls drawer, fullscreen, the students' link and QR code, ask-then-reveal and its key, the
+ * `?` list of keys, guide presets that ask. What every scene must show in the room (the stage on
+ * the first screen, results held back until Reveal) is looped over the catalogue in
+ * catalogue.spec.ts.
  */
 import type { Page } from '@playwright/test';
 import { SCENES, predictPrompt, type SceneInfo } from '../../src/kit/catalogue';
-import { textFormulaGroups } from '../../src/ui/texBreaks';
 import { test, expect, openScene, settle } from './fixtures';
-
-const SCREENS = [
-  { width: 1280, height: 720 },
-  { width: 1920, height: 1080 },
-] as const;
-
-/** How far `sel`'s boxes reach outside the first screen (0 when wholly inside), with what sticks out. */
-async function outsideFirstScreen(page: Page, sel: string): Promise<{ worst: number; what: string }> {
-  return page.evaluate((sel) => {
-    const vw = document.documentElement.clientWidth;
-    const vh = window.innerHeight;
-    let worst = 0;
-    let what = '';
-    for (const el of document.querySelectorAll(sel)) {
-      const r = el.getBoundingClientRect();
-      if (r.width === 0 && r.height === 0) continue;
-      const out = Math.max(0, -r.top, -r.left, r.bottom - vh, r.right - vw);
-      if (out > worst) {
-        worst = out;
-        const id = (el as HTMLElement).dataset.testid ?? el.className;
-        what = `${el.tagName.toLowerCase()} ${String(id).slice(0, 60)} [${Math.round(r.left)}, ${Math.round(r.top)}, ${Math.round(r.right)}, ${Math.round(r.bottom)}] in ${vw}×${vh}`;
-      }
-    }
-    return { worst, what };
-  }, sel);
-}
+import { focusObscured } from './wcag';
 
 /** Opens a scene in classroom mode at the top of the page (no part: the first screen as loaded). */
 async function openStaged(page: Page, s: SceneInfo, extra = ''): Promise<boolean> {
@@ -44,75 +16,6 @@ async function openStaged(page: Page, s: SceneInfo, extra = ''): Promise<boolean
   await page.evaluate(() => window.scrollTo(0, 0));
   return (await page.getByTestId('scene-stage').count()) > 0;
 }
-
-const NO_STAGE = (s: SceneInfo) =>
-  `${s.id}: no scene-stage in classroom mode (the scene does not pass SceneLayout's stage yet)`;
-
-/** The stage, and everything in it, on the first screen of `screen`, taking most of it. */
-async function expectStageOnFirstScreen(page: Page, s: SceneInfo, screen: { height: number }): Promise<void> {
-  const stage = page.getByTestId('scene-stage');
-  await expect(stage).toBeVisible();
-  // the stage itself, and everything in it (figure, readouts, transport), is on the first screen
-  expect((await outsideFirstScreen(page, '[data-testid="scene-stage"]')).worst).toBeLessThanOrEqual(1);
-  const inner = await outsideFirstScreen(
-    page,
-    '[data-testid="scene-stage"] .stage-body *:not(option):not(.sr-only)',
-  );
-  expect(
-    inner.worst,
-    `${s.id}: part of the stage is below or beside the first screen: ${inner.what}`,
-  ).toBeLessThanOrEqual(1);
-  // the stage takes most of the first screen (figure sized to the viewport), not a strip of it
-  const box = (await stage.boundingBox())!;
-  expect(box.height, `${s.id}: the stage is ${Math.round(box.height)} px tall`).toBeGreaterThan(
-    0.55 * screen.height,
-  );
-  // the transport is part of the stage where the scene animates
-  const transports = await page.locator('.timeline').count();
-  if (transports > 0)
-    await expect(stage.locator('.timeline').first(), `${s.id}: its transport is on the stage`).toBeVisible();
-  // the controls are folded into the drawer: closed, they take none of the screen
-  await expect(page.getByTestId('controls-drawer')).toBeHidden();
-}
-
-for (const s of SCENES) {
-  test(`${s.id} at 1280×720, present=1: the stage is wholly on the first screen; its text and plot ticks are at least 18 px`, async ({
-    page,
-  }) => {
-    test.setTimeout(120_000);
-    await page.setViewportSize(SCREENS[0]);
-    expect(await openStaged(page, s), NO_STAGE(s)).toBe(true);
-    await expectStageOnFirstScreen(page, s, SCREENS[0]);
-    const small = await page.evaluate(() => {
-      const stage = document.querySelector('[data-testid="scene-stage"]')!;
-      const out: string[] = [];
-      const walker = document.createTreeWalker(stage, NodeFilter.SHOW_TEXT);
-      for (let n = walker.nextNode(); n; n = walker.nextNode()) {
-        const text = (n.nodeValue ?? '').trim();
-        const el = n.parentElement;
-        if (!text || !el || el.closest('.sr-only, [hidden], [aria-hidden="true"] kbd, .katex-mathml'))
-          continue;
-        const r = el.getBoundingClientRect();
-        if (r.width === 0 || r.height === 0 || getComputedStyle(el).visibility === 'hidden') continue;
-        // KaTeX sets sub- and superscripts smaller by design: judge a formula by its base size
-        const judged = el.closest('.katex') ?? el;
-        const px = parseFloat(getComputedStyle(judged).fontSize);
-        if (px < 17.5) out.push(`${JSON.stringify(text.slice(0, 30))} at ${px.toFixed(1)} px`);
-      }
-      return out;
-    });
-    expect(small, `${s.id}: text under 18 px on the stage`).toEqual([]);
-  });
-}
-
-// the stage's layout is the shared one (src/ui/stage.tsx): the larger screen on one scene
-test('hemisphere at 1920×1080, present=1: the stage is wholly on the first screen', async ({ page }) => {
-  test.setTimeout(120_000);
-  const s = SCENES.find((x) => x.id === 'hemisphere')!;
-  await page.setViewportSize(SCREENS[1]);
-  expect(await openStaged(page, s), NO_STAGE(s)).toBe(true);
-  await expectStageOnFirstScreen(page, s, SCREENS[1]);
-});
 
 test('the Controls drawer opens and closes by its button and by the key c; focus follows', async ({
   page,
@@ -145,30 +48,27 @@ test('the Controls drawer opens and closes by its button and by the key c; focus
     await page.keyboard.press('c');
     await expect(drawer).toBeVisible();
   }
+  // with the drawer open, focus is never hidden under it (WCAG 2.4.11)
+  await page.locator('h1').click();
+  const hidden: string[] = [];
+  for (let i = 0; i < 40; i++) {
+    await page.keyboard.press('Tab');
+    const why = await focusObscured(page);
+    if (why) hidden.push(why);
+  }
+  expect(hidden).toEqual([]);
 });
 
-test('the stage’s fullscreen button asks the browser to show the stage fullscreen', async ({ page }) => {
-  await page.addInitScript(() => {
-    const w = window as unknown as { __fs: string[] };
-    w.__fs = [];
-    Element.prototype.requestFullscreen = function (this: Element) {
-      w.__fs.push((this as HTMLElement).dataset.testid ?? this.tagName);
-      return Promise.resolve();
-    };
-  });
-  await page.setViewportSize({ width: 1280, height: 720 });
-  await firstStagedScene(page);
-  await page.getByTestId('scene-stage').getByTestId('fullscreen').click();
-  await expect
-    .poll(() => page.evaluate(() => (window as unknown as { __fs: string[] }).__fs))
-    .toEqual(['scene-stage']);
-});
-
-test('in real fullscreen the stage fills the screen, and Esc (exitFullscreen) leaves', async ({ page }) => {
+test('the fullscreen button shows the stage fullscreen, filling the screen; exitFullscreen (Esc) leaves', async ({
+  page,
+}) => {
   await page.setViewportSize({ width: 1280, height: 720 });
   await firstStagedScene(page);
   const stage = page.getByTestId('scene-stage');
   await stage.getByTestId('fullscreen').click();
+  await expect
+    .poll(() => page.evaluate(() => document.fullscreenElement?.getAttribute('data-testid')))
+    .toBe('scene-stage');
   await expect(stage).toHaveClass(/is-fullscreen/);
   await expect(stage.getByTestId('fullscreen')).toHaveAttribute('aria-pressed', 'true');
   // Esc is the browser's own key for leaving; headless Chromium takes it as exitFullscreen
@@ -189,6 +89,10 @@ async function firstStagedScene(page: Page): Promise<string> {
 test('the copied link and the QR code are the students’ link, unless classroom mode is kept', async ({
   page,
 }) => {
+  // without classroom mode there is no "keep classroom mode" choice
+  await openScene(page, '#/texture?u=0.7');
+  await expect(page.getByTestId('copy-link')).toBeVisible();
+  await expect(page.getByTestId('keep-classroom')).toHaveCount(0);
   await openScene(page, '#/texture?u=0.7&present=1&ask=1&part=3b');
   const copied = async () => {
     await page.getByTestId('copy-link').click();
@@ -220,33 +124,7 @@ test('the copied link and the QR code are the students’ link, unless classroom
   expect(await copied()).not.toMatch(/[?&](present|ask)=/);
 });
 
-test('present=1 at 1280×720: each scene’s title, share bar and way back stand in one row', async ({
-  page,
-}) => {
-  test.setTimeout(180_000);
-  await page.setViewportSize({ width: 1280, height: 720 });
-  for (const s of SCENES) {
-    await openScene(page, `#${s.path}?present=1&ask=1`);
-    const h1 = (await page.locator('main h1').boundingBox())!;
-    const bar = (await page.locator('.share-bar').boundingBox())!;
-    const back = (await page.locator('main .back-link').boundingBox())!;
-    // one row: the share bar is no taller than a row of buttons, beside the title, not under it
-    expect(bar.height, `${s.id}: the share bar wraps`).toBeLessThan(70);
-    expect(bar.x, s.id).toBeGreaterThan(h1.x + h1.width);
-    expect(back.x, s.id).toBeGreaterThan(bar.x + bar.width - 1);
-    expect(Math.abs(bar.y + bar.height / 2 - (h1.y + h1.height / 2)), s.id).toBeLessThan(20);
-    // embedding is not a lecture's business: no embed code in classroom mode
-    await expect(page.getByTestId('copy-embed')).toHaveCount(0);
-  }
-});
-
-test('without classroom mode there is no "keep classroom mode" choice', async ({ page }) => {
-  await openScene(page, '#/texture?u=0.7');
-  await expect(page.getByTestId('copy-link')).toBeVisible();
-  await expect(page.getByTestId('keep-classroom')).toHaveCount(0);
-});
-
-test('ask=1 shows the part’s prediction prompt; Reveal removes it and drops ask from the URL', async ({
+test('ask=1 shows the part’s prompt; v reveals (not while typing) and drops ask from the URL; ask=garbage is named', async ({
   page,
 }) => {
   const texture = SCENES.find((s) => s.id === 'texture')!;
@@ -255,7 +133,12 @@ test('ask=1 shows the part’s prediction prompt; Reveal removes it and drops as
   await expect(prompt).toBeVisible();
   await expect(page.getByTestId('ask-prompt-text')).toHaveText(predictPrompt(texture, '3b')!);
   await expect(page.getByTestId('param-notice')).toHaveCount(0);
-  await page.getByTestId('reveal').click();
+  // v typed into a field is text, not the shortcut
+  await page.locator('input[type="text"]').first().focus();
+  await page.keyboard.press('v');
+  await expect(prompt).toBeVisible();
+  await page.locator('h1').click();
+  await page.keyboard.press('v');
   await expect(prompt).toHaveCount(0);
   await expect(page.getByTestId('ask-hidden')).toHaveCount(0);
   await expect.poll(() => page.evaluate(() => window.location.hash)).not.toMatch(/[?&]ask=/);
@@ -265,22 +148,13 @@ test('ask=1 shows the part’s prediction prompt; Reveal removes it and drops as
   await page.keyboard.press('ArrowRight');
   await expect.poll(() => page.evaluate(() => window.location.hash)).not.toMatch(/u=0\.4(&|$)/);
   expect(await page.evaluate(() => window.location.hash)).not.toMatch(/[?&]ask=/);
-});
 
-test('the key v reveals (not while typing), without part= the first part’s prompt is used', async ({
-  page,
-}) => {
-  const texture = SCENES.find((s) => s.id === 'texture')!;
+  // without part= the first part's prompt is used; a value ask cannot take is named, and nothing is asked
   await openScene(page, '#/texture?ask=1');
   await expect(page.getByTestId('ask-prompt-text')).toHaveText(predictPrompt(texture, null)!);
-  const field = page.locator('input[type="text"]').first();
-  await field.focus();
-  await page.keyboard.press('v');
-  await expect(page.getByTestId('ask-prompt')).toBeVisible();
-  await page.locator('h1').click();
-  await page.keyboard.press('v');
+  await openScene(page, '#/texture?ask=maybe');
+  await expect(page.getByTestId('param-notice')).toContainText('ask');
   await expect(page.getByTestId('ask-prompt')).toHaveCount(0);
-  await expect.poll(() => page.evaluate(() => window.location.hash)).toBe('#/texture');
 });
 
 /** The keys the open `?` list names (each <dt>), by the heading they stand under ('' for page-wide). */
@@ -363,105 +237,6 @@ test('a guide preset opened with ask=1 puts the preset’s own question', async 
   await preset.locator('h3 a').click();
   await expect(page.getByTestId('ask-prompt-text')).toHaveText(ask);
 });
-
-test('ask=garbage is reported and the scene does not ask', async ({ page }) => {
-  await openScene(page, '#/texture?ask=maybe');
-  await expect(page.getByTestId('param-notice')).toContainText('ask');
-  await expect(page.getByTestId('ask-prompt')).toHaveCount(0);
-});
-
-for (const s of SCENES) {
-  test(`${s.id}, ask=1: results are hidden and the animation held at its start until Reveal`, async ({
-    page,
-  }) => {
-    test.setTimeout(120_000);
-    await openScene(page, `#${s.path}?ask=1`);
-    await expect(page.getByTestId('ask-prompt')).toBeVisible();
-    expect(
-      await page.getByTestId('ask-hidden').count(),
-      `${s.id}: nothing is hidden under ask=1 (the scene does not wrap its results in <Revealed> yet)`,
-    ).toBeGreaterThan(0);
-    const timeline = page.locator('.timeline').first();
-    if ((await timeline.count()) > 0) {
-      await expect(timeline, `${s.id}: the animation is held at its start`).toHaveAttribute('data-t', '0');
-      await expect(timeline).toHaveAttribute('data-playing', '0');
-    }
-    await page.getByTestId('reveal').click();
-    await expect(page.getByTestId('ask-hidden')).toHaveCount(0);
-  });
-}
-
-test('Play and Pause have the same width: the transport row does not shift', async ({ page }) => {
-  await openScene(page, '#/texture');
-  const play = page.getByTestId('timeline-play').first();
-  await play.scrollIntoViewIfNeeded();
-  const before = (await play.boundingBox())!.width;
-  // the invisible wider label is neither seen by screen readers nor part of the button's name
-  await expect(play).toHaveAccessibleName('▶ Play');
-  await play.click();
-  await expect(play).toHaveAttribute('aria-pressed', 'true');
-  const during = (await play.boundingBox())!.width;
-  await expect(play).toHaveAccessibleName('❚❚ Pause');
-  await play.click();
-  expect(Math.abs(during - before)).toBeLessThanOrEqual(0.5);
-});
-
-for (const s of SCENES) {
-  test(`${s.id} on a phone: formulas wrap only at operators outside parentheses`, async ({ page }) => {
-    test.setTimeout(180_000);
-    await page.setViewportSize({ width: 375, height: 800 });
-    await openScene(page, `#${s.path}`);
-    // bring every section on screen once, so its formulas are typeset
-    const height = await page.evaluate(() => document.documentElement.scrollHeight);
-    for (let y = 0; y < height; y += 700) {
-      await page.evaluate((y) => window.scrollTo(0, y), y);
-      await settle(page);
-    }
-    await expect(page.locator('.math-pending')).toHaveCount(0, { timeout: 60_000 });
-    const inside = await page.evaluate(() => {
-      const out: string[] = [];
-      for (const html of document.querySelectorAll('.katex-html')) {
-        let depth = 0;
-        let prev: DOMRect | null = null;
-        for (const base of html.querySelectorAll(':scope > .base')) {
-          const r = base.getBoundingClientRect();
-          if (prev && depth > 0 && r.top >= prev.bottom - 1)
-            out.push((html.closest('.katex')?.querySelector('annotation')?.textContent ?? '').slice(0, 80));
-          depth +=
-            base.querySelectorAll('.mopen:not(.minner .mopen)').length -
-            base.querySelectorAll('.mclose:not(.minner .mclose)').length;
-          prev = r;
-        }
-      }
-      return out;
-    });
-    // formulas written as plain text: the page's text, its formula groups found here, and each
-    // group measured there (on two lines: broken inside its parentheses)
-    const texts = await page.evaluate(() => {
-      const w = window as unknown as { __texts: Text[] };
-      w.__texts = [];
-      const walker = document.createTreeWalker(document.querySelector('main')!, NodeFilter.SHOW_TEXT);
-      for (let n = walker.nextNode(); n; n = walker.nextNode())
-        if (!n.parentElement?.closest('.katex, .sr-only, .math-preview')) w.__texts.push(n as Text);
-      return w.__texts.map((n) => n.nodeValue ?? '');
-    });
-    const groups = texts.flatMap((t, i) => textFormulaGroups(t).map(([a, b]) => [i, a, b] as const));
-    const broken = await page.evaluate((groups) => {
-      const nodes = (window as unknown as { __texts: Text[] }).__texts;
-      return groups
-        .filter(([i, a, b]) => {
-          const range = document.createRange();
-          range.setStart(nodes[i], a);
-          range.setEnd(nodes[i], b + 1);
-          const rects = [...range.getClientRects()].filter((r) => r.width > 0);
-          return new Set(rects.map((r) => Math.round(r.top))).size > 1;
-        })
-        .map(([i, a, b]) => (nodes[i].nodeValue ?? '').slice(Math.max(0, a - 12), b + 1));
-    }, groups);
-    inside.push(...broken);
-    expect(inside, `${s.id}: formulas broken inside parentheses`).toEqual([]);
-  });
-}
 
 test('present=1: every Plotly plot’s tick labels are at least 18 px', async ({ page }) => {
   test.setTimeout(180_000);

@@ -1,7 +1,8 @@
 /**
- * Change storms at the largest sample counts: every scene of the catalogue with a seed, opened with
- * each count parameter at the maximum its schema allows (10⁶ hemisphere directions, 10⁷ Monte Carlo
- * samples, …), then changed as fast as the page takes them: a new seed each time, and every choice
+ * Change storms at large sample counts: every scene whose seeded results come from a worker,
+ * opened with each count parameter at a tenth of the maximum its schema allows (10⁵ hemisphere
+ * directions, 10⁶ Monte Carlo samples, …: enough that a run outlasts the next change), then
+ * changed as fast as the page takes them: a new seed each time, and every choice
  * parameter (lobe, point set, strategy, …) cycling through its values. Work that grows with n runs
  * in the scenes' workers or in slices that yield, so results of superseded changes can still come
  * back while the next change is under way. The last change must win: once the storm is over, the
@@ -15,12 +16,9 @@ import { SCENES, maxCountsQuery, sceneSchema } from './sceneSchemas';
 import type { SceneId } from '../../src/kit/catalogue';
 import type { Page } from '@playwright/test';
 
-const CHANGES = 30;
+const CHANGES = 16;
 
-/**
- * Readouts whose value depends on the seed and comes from a worker, where a scene has one; the
- * scene's key readout otherwise.
- */
+/** Per scene with a worker: a readout whose value depends on the seed and comes from the worker. */
 const SEEDED_READOUT: Partial<Record<SceneId, string>> = {
   hemisphere: 'mc-uniform',
   'monte-carlo': 'estimate',
@@ -52,8 +50,8 @@ async function storm(
   );
 }
 
-for (const scene of SCENES) {
-  test(`${scene.path} at its largest counts: after a storm of changes the last change wins`, async ({
+for (const scene of SCENES.filter((s) => SEEDED_READOUT[s.id])) {
+  test(`${scene.path} at large counts: after a storm of changes the last change wins`, async ({
     page,
     browser,
   }) => {
@@ -63,9 +61,9 @@ for (const scene of SCENES) {
     const cycle = Object.entries(schema).flatMap(([name, spec]): [string, readonly string[]][] =>
       spec.kind === 'enum' ? [[name, spec.values]] : [],
     );
-    const counts = await maxCountsQuery(scene.id);
+    const counts = await maxCountsQuery(scene.id, 0.1);
     const hash = `#${scene.path}?${counts}`;
-    const id = SEEDED_READOUT[scene.id] ?? scene.keyReadout;
+    const id = SEEDED_READOUT[scene.id]!;
 
     await openScene(page, hash);
     const last = await storm(page, `${hash}${counts ? '&' : ''}`, cycle, 2, CHANGES);

@@ -1,0 +1,167 @@
+/**
+ * One pass over a whole page for everything a reader meets on it, in both themes and at both
+ * widths, from a single load: axe (WCAG 2.2 AA) light at 1280 px and dark at 375 px, the WCAG
+ * criteria axe does not test (./wcag.ts), no caret in the visible text, and formulas that wrap
+ * only at operators outside parentheses on a phone. The theme follows the system's preference
+ * live (src/app/theme.ts), so switching the emulated colour scheme re-themes the loaded page, and
+ * the layout follows the viewport, as on a rotated tablet.
+ */
+import AxeBuilder from '@axe-core/playwright';
+import type { Page } from '@playwright/test';
+import { textFormulaGroups } from '../../src/ui/texBreaks';
+import { expect, openScene } from './fixtures';
+import {
+  applyTextSpacing,
+  clippedText,
+  focusObscured,
+  sidewaysOverflow,
+  smallTargets,
+  weakFocusRing,
+} from './wcag';
+
+/** Opens the page and waits until everything below the first screen has mounted (lazy sections). */
+export async function openWhole(page: Page, hash: string): Promise<void> {
+  await openScene(page, hash);
+  // stepped on a timer, not per animation frame (a loaded machine may draw no frame for a
+  // while), and bounded, in case a section that mounts on the way makes the page grow
+  await page.evaluate(async () => {
+    for (let y = 0, i = 0; y < document.body.scrollHeight && i < 200; y += innerHeight / 2, i++) {
+      scrollTo(0, y);
+      await new Promise((r) => setTimeout(r, 50));
+    }
+    scrollTo(0, 0);
+  });
+  await expect(page.locator('[data-deferred="pending"]')).toHaveCount(0, { timeout: 60_000 });
+}
+
+/**
+ * axe's WCAG 2.2 AA violations, described. KaTeX's HTML layer is left out: it is aria-hidden,
+ * drawn in the colour of the text around it (no formula sets a colour of its own), and holds
+ * most of a scene's nodes; the formulas' MathML, what a screen reader is given, is scanned.
+ * Only violations are collected in full (axe's `resultTypes`), which keeps a scan of a whole
+ * scene to seconds.
+ */
+export async function axeViolations(page: Page, label: string): Promise<string[]> {
+  // options first: AxeBuilder's options() replaces what withTags() set
+  const r = await new AxeBuilder({ page })
+    .options({ resultTypes: ['violations'] })
+    .withTags(['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'wcag22aa'])
+    .exclude('.katex-html')
+    .analyze();
+  return r.violations.map(
+    (v) =>
+      `${label} ${v.id}: ${v.nodes
+        .slice(0, 4)
+        .map((n) => n.target.join(' '))
+        .join(', ')}`,
+  );
+}
+
+/** Text nodes on screen with a caret in them (code, TeX source and hidden text aside). */
+export function visibleCarets(page: Page): Promise<string[]> {
+  return page.evaluate(() => {
+    const out: string[] = [];
+    const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+    for (let n = walker.nextNode(); n; n = walker.nextNode()) {
+      const text = n.nodeValue ?? '';
+      const el = n.parentElement;
+      if (!text.includes('^') || !el) continue;
+      // code a reader types or reads as code (expression syntax, TeX source), and what is not shown
+      if (
+        el.closest(
+          'code, pre, kbd, samp, textarea, script, style, .katex-mathml, [hidden], [aria-hidden="true"]',
+        )
+      )
+        continue;
+      if (el.getClientRects().length === 0 || getComputedStyle(el).visibility === 'hidden') continue;
+      const at = text.indexOf('^');
+      out.push(JSON.stringify(text.slice(Math.max(0, at - 30), at + 20)));
+    }
+    return out;
+  });
+}
+
+/**
+ * Formulas broken across lines inside their parentheses: KaTeX's top-level boxes (a line break
+ * may fall only between them) and formulas written as plain text (their groups found by the
+ * app's own rule, src/ui/texBreaks.ts, and measured here).
+ */
+export async function formulasBrokenInsideParentheses(page: Page): Promise<string[]> {
+  await expect(page.locator('.math-pending')).toHaveCount(0, { timeout: 60_000 });
+  const inside = await page.evaluate(() => {
+    const out: string[] = [];
+    for (const html of document.querySelectorAll('.katex-html')) {
+      let depth = 0;
+      let prev: DOMRect | null = null;
+      for (const base of html.querySelectorAll(':scope > .base')) {
+        const r = base.getBoundingClientRect();
+        if (prev && depth > 0 && r.top >= prev.bottom - 1)
+          out.push((html.closest('.katex')?.querySelector('annotation')?.textContent ?? '').slice(0, 80));
+        depth +=
+          base.querySelectorAll('.mopen:not(.minner .mopen)').length -
+          base.querySelectorAll('.mclose:not(.minner .mclose)').length;
+        prev = r;
+      }
+    }
+    return out;
+  });
+  const texts = await page.evaluate(() => {
+    const w = window as unknown as { __texts: Text[] };
+    w.__texts = [];
+    const walker = document.createTreeWalker(document.querySelector('main')!, NodeFilter.SHOW_TEXT);
+    for (let n = walker.nextNode(); n; n = walker.nextNode())
+      if (!n.parentElement?.closest('.katex, .sr-only, .math-preview')) w.__texts.push(n as Text);
+    return w.__texts.map((n) => n.nodeValue ?? '');
+  });
+  const groups = texts.flatMap((t, i) => textFormulaGroups(t).map(([a, b]) => [i, a, b] as const));
+  const broken = await page.evaluate((groups) => {
+    const nodes = (window as unknown as { __texts: Text[] }).__texts;
+    return groups
+      .filter(([i, a, b]) => {
+        const range = document.createRange();
+        range.setStart(nodes[i], a);
+        range.setEnd(nodes[i], b + 1);
+        const rects = [...range.getClientRects()].filter((r) => r.width > 0);
+        return new Set(rects.map((r) => Math.round(r.top))).size > 1;
+      })
+      .map(([i, a, b]) => (nodes[i].nodeValue ?? '').slice(Math.max(0, a - 12), b + 1));
+  }, groups);
+  return [...inside, ...broken];
+}
+
+/**
+ * The whole-page pass: light at 1280 px, then the same page dark at 375 px (and 320 px for
+ * reflow). Every finding is collected and the test fails once with the full list.
+ */
+export async function checkWholePage(page: Page, hash: string): Promise<void> {
+  const found: string[] = [];
+  await page.emulateMedia({ colorScheme: 'light' });
+  await page.setViewportSize({ width: 1280, height: 900 });
+  await openWhole(page, hash);
+  found.push(...(await axeViolations(page, 'light 1280')));
+  // powers are written as superscripts; a formula still waiting for KaTeX shows its plain-text
+  // reading, which has no caret either
+  found.push(...(await visibleCarets(page)).map((c) => `caret in the visible text: ${c}`));
+
+  await page.emulateMedia({ colorScheme: 'dark' });
+  await page.setViewportSize({ width: 375, height: 812 });
+  await expect.poll(() => page.evaluate(() => document.documentElement.dataset.theme)).toBe('dark');
+  await expect.poll(() => page.evaluate(() => document.documentElement.clientWidth)).toBeLessThanOrEqual(375);
+  found.push(...(await axeViolations(page, 'dark 375')));
+  found.push(...(await smallTargets(page)).map((t) => `target under 24 × 24 and not spaced: ${t}`));
+  found.push(...(await formulasBrokenInsideParentheses(page)).map((f) => `broken inside parentheses: ${f}`));
+
+  await page.setViewportSize({ width: 320, height: 640 });
+  await expect
+    .poll(() => sidewaysOverflow(page), { timeout: 15_000, message: 'sideways scrolling at 320 px' })
+    .toEqual([]);
+  await page.setViewportSize({ width: 375, height: 812 });
+  await applyTextSpacing(page);
+  found.push(...(await clippedText(page)).map((t) => `clipped under text spacing: ${t}`));
+  for (let i = 0; i < 40; i++) {
+    await page.keyboard.press('Tab');
+    const why = (await focusObscured(page)) ?? (await weakFocusRing(page));
+    if (why) found.push(why);
+  }
+  expect(found, `${hash}: what a reader meets`).toEqual([]);
+}
