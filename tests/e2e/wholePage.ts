@@ -84,7 +84,8 @@ export function visibleCarets(page: Page): Promise<string[]> {
 /**
  * Formulas broken across lines inside their parentheses: KaTeX's top-level boxes (a line break
  * may fall only between them) and formulas written as plain text (their groups found by the
- * app's own rule, src/ui/texBreaks.ts, and measured here).
+ * app's own rule, src/ui/texBreaks.ts, and measured here). Code (an expression as typed) is not
+ * a formula and wraps as code does.
  */
 export async function formulasBrokenInsideParentheses(page: Page): Promise<string[]> {
   await expect(page.locator('.math-pending')).toHaveCount(0, { timeout: 60_000 });
@@ -110,7 +111,8 @@ export async function formulasBrokenInsideParentheses(page: Page): Promise<strin
     w.__texts = [];
     const walker = document.createTreeWalker(document.querySelector('main')!, NodeFilter.SHOW_TEXT);
     for (let n = walker.nextNode(); n; n = walker.nextNode())
-      if (!n.parentElement?.closest('.katex, .sr-only, .math-preview')) w.__texts.push(n as Text);
+      if (!n.parentElement?.closest('.katex, .sr-only, .math-preview, code, kbd, samp, pre'))
+        w.__texts.push(n as Text);
     return w.__texts.map((n) => n.nodeValue ?? '');
   });
   const groups = texts.flatMap((t, i) => textFormulaGroups(t).map(([a, b]) => [i, a, b] as const));
