@@ -138,44 +138,6 @@ test.describe('the figure described', () => {
   });
 });
 
-test.describe('audio traces', () => {
-  test('the θ histogram and the CDF play through Web Audio and step by key', async ({ page }) => {
-    test.setTimeout(120_000);
-    await page.addInitScript(() => {
-      const w = window as unknown as { __osc: number };
-      w.__osc = 0;
-      const proto = (window.BaseAudioContext ?? window.AudioContext).prototype;
-      const make = proto.createOscillator;
-      proto.createOscillator = function (this: BaseAudioContext) {
-        w.__osc++;
-        return make.call(this);
-      };
-    });
-    await openScene(page, '#/hemisphere?n=2000&part=1d');
-    await statsReady(page);
-    const trace = page.getByTestId('plot-theta-audio');
-    await trace.focus();
-    expect(await page.evaluate(() => (window as unknown as { __osc: number }).__osc)).toBe(0);
-    await page.keyboard.press('Enter');
-    await expect
-      .poll(() => page.evaluate(() => (window as unknown as { __osc: number }).__osc), { timeout: 15_000 })
-      .toBeGreaterThan(0);
-    await page.keyboard.press('Escape');
-    const h = computeDrawStats(exam, Math.cos, 'independent', 1, 2000).hist!.theta;
-    await page.keyboard.press('ArrowRight');
-    await page.keyboard.press('ArrowRight');
-    const second = `θ = ${f3(h.centers[1])}, density = ${f3(h.density[1])}`;
-    await expect(page.getByTestId('plot-theta-audio-point')).toContainText(`${second} (point 2 of 36)`);
-    await expect(page.getByTestId('live-region')).toContainText(second, { timeout: 10_000 });
-
-    // the CDF of (c): a tick at the median, named when stepped onto
-    const cdf = page.getByTestId('plot-cdf-theta-audio');
-    await cdf.focus();
-    await page.keyboard.press('End');
-    await expect(page.getByTestId('plot-cdf-theta-audio-point')).toContainText('P(θ) = 1');
-  });
-});
-
 test.describe('the followed stratum', () => {
   test('by keyboard: arrows pick a cell, its sentence is the model’s, the URL keeps it, Escape stops', async ({
     page,
@@ -200,93 +162,6 @@ test.describe('the followed stratum', () => {
     await expect.poll(() => page.evaluate(() => location.hash)).not.toMatch(/cell=/);
     await expect(cell).toHaveAttribute('aria-checked', 'false');
   });
-
-  test('by number fields and by a click; the square outlines it', async ({ page }) => {
-    await openScene(page, '#/hemisphere?n=2000');
-    await page.getByTestId('stratum-start').click();
-    await expect(page.getByTestId('stratum-mark')).toHaveCount(1);
-    const i = page.getByTestId('stratum-i');
-    await i.fill('6');
-    await i.press('Enter');
-    await page.getByTestId('stratum-j').fill('1');
-    await page.getByTestId('stratum-j').press('Enter');
-    await expect(page.locator('[data-cell="6,1"]')).toHaveAttribute('aria-checked', 'true');
-    await page.locator('[data-cell="2,7"]').click();
-    await expect.poll(() => page.evaluate(() => location.hash)).toMatch(/cell=2,7/);
-    await expect(page.getByTestId('stratum-text')).toContainText('Stratum (2, 7)');
-    await page.getByTestId('stratum-clear').click();
-    await expect(page.getByTestId('stratum-mark')).toHaveCount(0);
-  });
-
-  test('bad cell values: a notice and a safe fallback', async ({ page }) => {
-    await openScene(page, '#/hemisphere?cell=9,2');
-    await expect(page.getByTestId('param-notice')).toContainText('cell');
-    await expect(page.locator('[data-cell="7,2"]')).toHaveAttribute('aria-checked', 'true');
-    await openScene(page, '#/hemisphere?cell=2.5,3');
-    await expect(page.getByTestId('cell-problem')).toContainText('not two whole numbers');
-    await expect(page.locator('[data-cell="3,3"]')).toHaveAttribute('aria-checked', 'true');
-    await openScene(page, '#/hemisphere?cell=banana');
-    await expect(page.getByTestId('param-notice')).toContainText('cell');
-    await expect(page.getByTestId('stratum-mark')).toHaveCount(0);
-  });
-});
-
-test.describe('in the lecture room', () => {
-  test('ask=1: no samples, histograms or answers, the morph at t = 0; Reveal shows them and plays', async ({
-    page,
-  }) => {
-    test.setTimeout(120_000);
-    await openScene(page, '#/hemisphere?ask=1&n=2000&t=0');
-    await expect(page.getByTestId('ask-prompt')).toBeVisible();
-    await expect(page.getByTestId('timeline-held')).toBeVisible();
-    await expect(page.getByTestId('morph-s')).toHaveAttribute('data-value', '0');
-    expect(await page.getByTestId('ask-hidden').count()).toBeGreaterThanOrEqual(4);
-    await expect(page.getByTestId('plot-theta')).toHaveCount(0);
-    await expect(page.getByTestId('chi2-verdict')).toHaveCount(0);
-    const d = await figureDescription(page, FIGURE);
-    expect(d).toContain('hidden until you reveal');
-    expect(d).not.toContain('bunch');
-    await page.keyboard.press('v');
-    await expect(page.getByTestId('ask-prompt')).toHaveCount(0);
-    await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '1');
-    await statsReady(page);
-    await expect(page.getByTestId('chi2-verdict')).toBeVisible();
-    await expect.poll(() => figureDescription(page, FIGURE), { timeout: 30_000 }).toContain('bunch');
-  });
-
-  // the projector's common size (the stage's general checks run for every scene in catalogue.spec.ts)
-  for (const screen of [{ width: 1280, height: 720 }]) {
-    for (const ask of ['', '&ask=1']) {
-      test(`present=1${ask} at ${screen.width}×${screen.height}: the stage with a stratum is wholly on the first screen`, async ({
-        page,
-      }) => {
-        await page.setViewportSize(screen);
-        await openScene(page, `#/hemisphere?present=1${ask}&cell=6,5`);
-        await page.evaluate(() => window.scrollTo(0, 0));
-        const out = await page.evaluate(() => {
-          let worst = 0;
-          for (const el of document.querySelectorAll(
-            '[data-testid="scene-stage"], [data-testid="scene-stage"] *',
-          )) {
-            const r = el.getBoundingClientRect();
-            if (r.width === 0 && r.height === 0) continue;
-            if (el.closest('.sr-only') || getComputedStyle(el).position === 'absolute') continue;
-            worst = Math.max(
-              worst,
-              r.bottom - window.innerHeight,
-              r.right - document.documentElement.clientWidth,
-            );
-          }
-          return worst;
-        });
-        expect(out).toBeLessThanOrEqual(1);
-        const stage = page.getByTestId('scene-stage');
-        for (const id of ['hemisphere-3d', 'timeline', 'morph-s', 'stratum-i', 'stratum-j'])
-          await expect(stage.getByTestId(id)).toBeVisible();
-        await expect(page.locator('[data-cell="6,5"]')).toHaveAttribute('aria-checked', 'true');
-      });
-    }
-  }
 });
 
 test('keyboard only: orbit the view, follow a stratum, and read Q1’s numbers from the accessibility tree', async ({
