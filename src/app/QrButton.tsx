@@ -14,7 +14,7 @@ export function QrButton({
   link: string;
   /** Classroom mode is on here: the code is drawn large. */
   present: boolean;
-  /** The link keeps classroom mode (the lecturer asked for it); otherwise it is the students' view. */
+  /** The link keeps classroom mode (present=1, or ask=1 kept by the lecturer); else the students' view. */
   classroomLink?: boolean;
   /** Shown in the panel under the caption (the share bar's choice of link, usable while it is open). */
   children?: ReactNode;
@@ -93,12 +93,7 @@ export function QrButton({
           )}
           <p className="qr-caption">
             Scan to open this scene as configured here
-            {classroomLink
-              ? ', in classroom mode'
-              : present
-                ? ' (the students’ view, without classroom mode)'
-                : ' (larger in classroom mode, present=1)'}
-            .
+            {classroomLink ? ', in classroom mode' : ' (larger in classroom mode, present=1)'}.
           </p>
           {children}
           <button

@@ -1,4 +1,5 @@
 import { lazy, startTransition, Suspense, useCallback, useEffect, useMemo, useRef, useState } from 'react';
+import { flushSync } from 'react-dom';
 import { predictPrompt, type SceneInfo } from '../kit/catalogue';
 import { sceneLoader } from '../scenes/registry';
 import type { SceneModule } from '../kit/scene';
@@ -173,7 +174,7 @@ function LoadedScene({
   }, [query, parsed, flags.problems, partProblem]);
 
   const part = flags.part && info.parts.includes(flags.part) ? flags.part : null;
-  useScrollToPart(part);
+  useScrollToPart(part, flags.present && flags.ask, query);
 
   // ask=1: results hidden until revealed (button or `v`); revealing drops `ask` from the URL
   const [asking, setAsking] = useState(flags.ask);
@@ -229,7 +230,18 @@ function LoadedScene({
     },
     [schema, flags, info.path],
   );
-  useShortcuts({ reset: () => setParams({ ...opening.current }) });
+  // `r`: the opening values. A playing animation pauses first, and where it stopped is rendered
+  // before the opening values are: its timeline reads a change of `t` against the position it last
+  // wrote, so it then moves to the opening t (a pause and the opening t in one render would leave
+  // it where it stopped, t being unchanged since it started playing).
+  const reset = useCallback(() => {
+    if ((valuesRef.current as Record<string, unknown>).play === true) {
+      flushSync(() => setParams({ play: false }));
+      flushSync(() => setParams({}));
+    }
+    setParams({ ...opening.current });
+  }, [setParams]);
+  useShortcuts({ reset });
 
   const getValues = useCallback(() => valuesRef.current, []);
   useHostScene(

@@ -1,9 +1,10 @@
 /**
  * The links a scene page hands out, built in this one place: the share bar (copy link, QR code,
  * copy embed code, keep classroom mode), the values a link may carry (typed expressions only once
- * they compile), and the embedded page's link to the full app.
+ * they compile), and the embedded page's link to the full app. Which shell flags a shared link
+ * keeps is kit/shareLink's `sharedFlags`.
  */
-import { shareBase } from '../kit/shareLink';
+import { shareBase, sharedFlags, sharedLink } from '../kit/shareLink';
 import { useState } from 'react';
 import type { SceneInfo } from '../kit/catalogue';
 import type { SceneModule } from '../kit/scene';
@@ -68,20 +69,21 @@ export function ShareBar({
 }) {
   const [copied, setCopied] = useState<'link' | 'embed' | null>(null);
   const [shown, setShown] = useState<string | null>(null);
-  // The copied link and the QR code are the students' link: classroom mode (present=1) and the
-  // held-back results (ask=1) are the lecturer's, unless the lecturer asks to keep them.
-  const classroom = flags.present || asking;
+  // In classroom mode (present=1) the copied link and the QR code are the room as it stands:
+  // classroom mode, and the held-back results (ask=1) while they are held back. Outside it, a page
+  // that holds its results back hands out the students' view unless the lecturer keeps ask=1.
   const [keep, setKeep] = useState(false);
+  const offerKeep = !flags.present && asking;
+  const keeps = flags.present || (keep && asking);
   // (not location.origin + pathname: a copy opened from file:// has the origin "null"); the page's
   // own query string (an LMS's learner id, a cmi5 launch's credential) is not the app's to share
   const base = shareBase(window.location.href);
-  const qs = serializeParams(schema, values, {
-    part: flags.part ?? undefined,
-    present: keep && flags.present ? '1' : undefined,
-    ask: keep && asking ? '1' : undefined,
-    theme: flags.theme ?? undefined,
-  });
-  const link = `${base}#${info.path}${qs ? `?${qs}` : ''}`;
+  const qs = serializeParams(
+    schema,
+    values,
+    sharedFlags({ present: flags.present, asking, keep, part: flags.part, theme: flags.theme }),
+  );
+  const link = sharedLink(window.location.href, info.path, qs);
   const embedQs = serializeParams(schema, values, {
     part: flags.part ?? undefined,
     embed: '1',
@@ -104,8 +106,8 @@ export function ShareBar({
       <button type="button" data-testid="copy-link" onClick={() => copy('link')}>
         Copy link
       </button>
-      <QrButton link={link} present={flags.present} classroomLink={keep && classroom}>
-        {classroom ? <KeepClassroom keep={keep} onKeep={setKeep} testId="qr-keep-classroom" /> : null}
+      <QrButton link={link} present={flags.present} classroomLink={keeps}>
+        {offerKeep ? <KeepClassroom keep={keep} onKeep={setKeep} testId="qr-keep-classroom" /> : null}
       </QrButton>
       {/* embedding is preparation, not the lecture: classroom mode keeps its one header row */}
       {flags.present ? null : (
@@ -113,7 +115,7 @@ export function ShareBar({
           Copy embed code
         </button>
       )}
-      {classroom ? <KeepClassroom keep={keep} onKeep={setKeep} testId="keep-classroom" /> : null}
+      {offerKeep ? <KeepClassroom keep={keep} onKeep={setKeep} testId="keep-classroom" /> : null}
       <span role="status" className="share-status">
         {copied === 'link'
           ? 'Link copied.'
@@ -137,7 +139,7 @@ export function ShareBar({
   );
 }
 
-/** The lecturer's choice: the copied link and the QR code keep classroom mode (present=1, ask=1). */
+/** The lecturer's choice outside classroom mode: the copied link and the QR code keep ask=1. */
 function KeepClassroom({
   keep,
   onKeep,

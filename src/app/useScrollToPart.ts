@@ -4,10 +4,19 @@ import { useEffect } from 'react';
  * Land on an exam part (`part=1c`): once the scene has drawn the element `#part-1c`, scroll it to
  * the top and move focus there (screen readers start reading at the part). Gives up quietly after
  * a few seconds if the scene never draws it.
+ *
+ * `askFirst`: a link that opens in classroom mode and asks first (`present=1&ask=1`, a lesson
+ * preset shown to a room) lands on the top of the page instead, each time such a link is opened
+ * (`query`, the link's query string, tells them apart): the question to predict and the stage
+ * under it fill the first screen, so the class reads the question, Reveal (`v`) shows the result on
+ * the stage in view, and Space plays the animation in view. The part follows below.
  */
-export function useScrollToPart(part: string | null) {
+export function useScrollToPart(part: string | null, askFirst = false, query = '') {
   useEffect(() => {
-    if (!part) return;
+    if (askFirst) window.scrollTo(0, 0);
+  }, [askFirst, query]);
+  useEffect(() => {
+    if (!part || askFirst) return;
     let done = false;
     const tryLand = () => {
       if (done) return true;
@@ -30,5 +39,5 @@ export function useScrollToPart(part: string | null) {
       mo.disconnect();
       window.clearTimeout(timer);
     };
-  }, [part]);
+  }, [part, askFirst]);
 }

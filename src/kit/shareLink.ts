@@ -11,3 +11,41 @@ export function shareBase(href: string): string {
   const q = doc.indexOf('?');
   return q < 0 ? doc : doc.slice(0, q);
 }
+
+/** What decides the shell flags of the link Copy link and the QR code hand out. */
+export interface ShareMode {
+  /** The page is in classroom mode (`present=1`). */
+  present: boolean;
+  /** The page holds its results back (`ask=1`, not yet revealed). */
+  asking: boolean;
+  /** Outside classroom mode: the lecturer ticked "Keep classroom mode" (keep `ask=1`). */
+  keep: boolean;
+  /** The exam part the page landed on (`part=`), kept. */
+  part: string | null;
+  /** A theme chosen by the link (`theme=`), kept. */
+  theme: string | null;
+}
+
+/**
+ * The shell flags the shared link carries (entries for serializeParams; undefined: left out). In
+ * classroom mode the link is the lecturer's room as it stands: `present=1`, and `ask=1` while the
+ * results are still held back, so students who scan the QR code predict before they see them.
+ * Outside classroom mode the link is the students' view: `present` never, `ask=1` only when the
+ * lecturer asks to keep it. The part and the theme always travel; nothing else of the page does.
+ */
+export function sharedFlags(m: ShareMode): Record<string, string | undefined> {
+  return {
+    part: m.part ?? undefined,
+    present: m.present ? '1' : undefined,
+    ask: m.asking && (m.present || m.keep) ? '1' : undefined,
+    theme: m.theme ?? undefined,
+  };
+}
+
+/**
+ * The link to the app's route `path` with the app's own query `query` (scene parameters and shell
+ * flags, already encoded), on the document of the page at `href` without the page's query string.
+ */
+export function sharedLink(href: string, path: string, query: string): string {
+  return `${shareBase(href)}#${path}${query ? `?${query}` : ''}`;
+}

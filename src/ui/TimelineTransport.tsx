@@ -1,10 +1,13 @@
 /**
  * The transport of the shared timeline (src/ui/timeline.ts): play / pause, step, reset, speed,
  * loop and a labelled, keyboard-operable scrubber. Space / s / r work while focus is inside it
- * (and, in classroom mode, anywhere on the page through the shortcut registry).
+ * (and, in classroom mode, anywhere on the page through the shortcut registry). In classroom mode
+ * `r` is the page's everywhere, also here: back to the scene's opening state, not to t = 0 (the
+ * Reset button still puts the animation back to its start).
  */
 import { useId, useRef, type KeyboardEvent, type ReactNode } from 'react';
 import { TIMELINE_SPEEDS } from '../kit/timeline';
+import { useClassroomKeys } from './shortcuts';
 import { TEXT_HZ, useTimelineFrame, type Timeline } from './timeline';
 import './timeline.css';
 
@@ -34,6 +37,7 @@ export function TimelineTransport({
   testId = 'timeline',
 }: TimelineTransportProps) {
   const id = useId();
+  const classroom = useClassroomKeys();
   // The scrubber's thumb follows every frame; data-t, the position text and aria-valuetext at most
   // TEXT_HZ times a second while playing (exact when paused): direct writes, so a timeline
   // with a low renderHz (or none) needs no React render of the transport while it plays.
@@ -65,7 +69,7 @@ export function TimelineTransport({
     let handled = true;
     if (e.key === ' ' || e.code === 'Space') tl.toggle();
     else if (e.key === 's' || e.key === 'S') tl.step();
-    else if (e.key === 'r' || e.key === 'R') tl.reset();
+    else if ((e.key === 'r' || e.key === 'R') && !classroom) tl.reset();
     else handled = false;
     if (handled) {
       // preventDefault also stops a focused button's own Space click; the page-wide classroom
@@ -109,7 +113,7 @@ export function TimelineTransport({
           type="button"
           onClick={tl.reset}
           data-testid={`${testId}-reset`}
-          title="Back to the start (r)"
+          title={classroom ? 'Back to the start' : 'Back to the start (r)'}
         >
           ↺ Reset
         </button>

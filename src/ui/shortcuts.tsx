@@ -14,6 +14,17 @@ interface Registry {
 
 const ShortcutContext = createContext<Registry | null>(null);
 
+/** Whether the classroom keys (Space, r, s) work page-wide here (classroom mode). */
+const ClassroomKeysContext = createContext(false);
+
+/**
+ * Whether the page-wide classroom keys are on (`present=1`). Then `r` is the page's: back to the
+ * scene's opening state (the link's parameters at load), wherever focus is.
+ */
+export function useClassroomKeys(): boolean {
+  return useContext(ClassroomKeysContext);
+}
+
 /**
  * Register a scene's handlers for the classroom shortcuts. The latest handlers are always used
  * (held in a ref), so callers need not memoise them.
@@ -188,7 +199,7 @@ export function ShortcutProvider({ active, children }: { active: boolean; childr
   }
   return (
     <ShortcutContext.Provider value={registry.current}>
-      {children}
+      <ClassroomKeysContext.Provider value={active}>{children}</ClassroomKeysContext.Provider>
       {helpOpen ? (
         <div
           ref={dialog}

@@ -142,6 +142,13 @@ export function useTimelineFrame(tl: Pick<Timeline, 'subscribe'> | null, draw: T
   useLayoutEffect(() => (sub ? sub((t, p) => ref.current(t, p)) : undefined), [sub]);
 }
 
+/** Scroll `el` into view when none of it is in the window. */
+function scrollIntoViewIfAway(el: Element | null | undefined): void {
+  if (!el) return;
+  const r = el.getBoundingClientRect();
+  if (r.bottom <= 0 || r.top >= window.innerHeight) el.scrollIntoView({ block: 'nearest' });
+}
+
 /** The timeline hook: see the module comment. */
 export function useTimeline(opts: TimelineOptions): Timeline {
   const { max, duration, setParams } = opts;
@@ -368,7 +375,13 @@ export function useTimeline(opts: TimelineOptions): Timeline {
     };
   }, [playing, onScreen, tabVisible, write, setExact, notify, ensureObserved]);
 
-  useShortcuts(opts.shortcuts === false ? {} : { playPause: toggle, step });
+  // the classroom's Space plays what the room sees: an animation off screen comes into view first
+  // (it runs only while on screen)
+  const playPause = useCallback(() => {
+    if (!live.current.playing) scrollIntoViewIfAway(visibleRef?.current);
+    toggle();
+  }, [toggle, visibleRef]);
+  useShortcuts(opts.shortcuts === false ? {} : { playPause, step });
 
   const t = positionShown(exact, integer);
   return useMemo(

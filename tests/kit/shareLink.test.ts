@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { shareBase } from '../../src/kit/shareLink';
+import { serializeParams, type ParamSchema } from '../../src/kit/params';
+import { shareBase, sharedFlags, sharedLink, type ShareMode } from '../../src/kit/shareLink';
 import { variantHref, variantUrl } from '../../src/practice/Sheet';
 
 const PRIVATE = /userid|email|fullname|token|fetch|actor|registration|endpoint|4242|ada%40|ada@/i;
@@ -27,5 +28,44 @@ describe('shared links carry the app’s own route only', () => {
       expect(url).not.toMatch(PRIVATE);
       expect(href).not.toMatch(PRIVATE);
     }
+  });
+});
+
+describe('the link Copy link and the QR code hand out', () => {
+  const schema = {
+    u: { kind: 'number', default: 0.5, min: 0, max: 1 },
+  } as const satisfies ParamSchema;
+  const lms = 'https://lab.example/app/?userid=4242&email=ada%40example.org#/texture?u=0.7&present=1&ask=1';
+  const mode = (m: Partial<ShareMode>): ShareMode => ({
+    present: false,
+    asking: false,
+    keep: false,
+    part: null,
+    theme: null,
+    ...m,
+  });
+  const link = (m: Partial<ShareMode>) =>
+    sharedLink(lms, '/texture', serializeParams(schema, { u: 0.7 }, sharedFlags(mode(m))));
+
+  it('in classroom mode keeps present=1 and, while the results are held back, ask=1', () => {
+    const asking = link({ present: true, asking: true, part: '3b' });
+    expect(asking).toBe('https://lab.example/app/#/texture?u=0.7&part=3b&present=1&ask=1');
+    expect(asking).not.toMatch(PRIVATE);
+    // revealed: still classroom mode, no longer asking
+    expect(link({ present: true })).toBe('https://lab.example/app/#/texture?u=0.7&present=1');
+    // the "keep" choice belongs to the page outside classroom mode: it changes nothing here
+    expect(link({ present: true, asking: true, keep: true })).toBe(link({ present: true, asking: true }));
+  });
+  it('outside classroom mode is the students’ view unless the lecturer keeps ask=1', () => {
+    expect(link({ asking: true })).toBe('https://lab.example/app/#/texture?u=0.7');
+    expect(link({ asking: true, keep: true })).toBe('https://lab.example/app/#/texture?u=0.7&ask=1');
+    // nothing held back: nothing to keep
+    expect(link({ keep: true })).toBe('https://lab.example/app/#/texture?u=0.7');
+  });
+  it('keeps the part and the theme, and nothing of the page’s own query', () => {
+    const l = link({ present: true, asking: true, part: '3a', theme: 'dark' });
+    expect(l).toBe('https://lab.example/app/#/texture?u=0.7&part=3a&present=1&ask=1&theme=dark');
+    expect(l).not.toMatch(PRIVATE);
+    expect(sharedLink(lms, '/texture', '')).toBe('https://lab.example/app/#/texture');
   });
 });

@@ -76,7 +76,9 @@ export function McControls({
           ? expression('pdfexpr', 'p(x) ∝', pdfExprError, 'any positive multiple; normalized numerically')
           : null}
         {bound.select('strategy', 'sequence', SEQ_OPTIONS, { testId: 'strategy-select' })}
-        {bound.slider('n', 'samples N', { log: true, digits: 8, testId: 'n-slider' })}
+        {/* N of the estimate ⟨I⟩ (b) and of the convergence plots; the race has its own fixed
+            length (RACE_MAX), said on its transport: the exam fixes neither */}
+        {bound.slider('n', 'samples N of the estimate', { log: true, digits: 8, testId: 'n-slider' })}
         {bound.number('seed', 'seed', { testId: 'seed-input' })}
         <SamplesField value={params.samples} onCommit={(s) => setParams({ samples: s })} />
       </Panel>

@@ -257,7 +257,7 @@ export const RaceFigure = memo(function RaceFigure({
   const xPlot = held ? null : (
     <DescribedFigure
       key="x"
-      className="mc-svg-fig mc-tall-only"
+      className="mc-svg-fig"
       label="|error| of the running estimates against N, log–log"
       description={words.errors}
       quiet
@@ -325,7 +325,7 @@ export const RaceFigure = memo(function RaceFigure({
     est: held ? null : (
       <DescribedFigure
         key={`e${k}`}
-        className="mc-svg-fig mc-tall-only"
+        className="mc-svg-fig"
         label={`The ${id} running estimate with its ± s/√N band, against N on a log axis`}
         description={words[id]}
         quiet
@@ -365,7 +365,8 @@ export const RaceFigure = memo(function RaceFigure({
           <TimelineTransport
             timeline={tl}
             label="Samples arriving"
-            format={(n) => `${n} of ${RACE_MAX} samples`}
+            // the race's own length, not the side panel's N (the samples of the estimate ⟨I⟩)
+            format={(n) => `${n} of the race’s ${RACE_MAX} samples`}
             testId="timeline"
           >
             <span className="mc-note" data-testid="race-rate">
@@ -373,7 +374,7 @@ export const RaceFigure = memo(function RaceFigure({
             </span>
           </TimelineTransport>
         </Revealed>
-        <div className={staged ? 'mc-race-grid stage-figure' : 'mc-race-grid'}>
+        <div className={`mc-race-grid${staged ? ' stage-figure' : ''}${held ? ' is-held' : ''}`}>
           {staged
             ? [U.title, Im.title, U.readouts, Im.readouts, U.hist, fPlot, Im.hist, U.est, xPlot, Im.est]
             : [

@@ -6,7 +6,14 @@
  * with `data-t`, the samples they count.
  */
 import { useLayoutEffect, useMemo, useRef } from 'react';
-import { DescribedFigure, formatNumber, ShowAsTable, useTimelineFrame, type Timeline } from '../../../ui';
+import {
+  DescribedFigure,
+  formatNumber,
+  ShowAsTable,
+  TEXT_HZ,
+  useTimelineFrame,
+  type Timeline,
+} from '../../../ui';
 import { coordText, linearScale } from '../../../ui/chartScale';
 import { binRange, countIn, raceBinIndex, raceCounts, RACE_BINS } from '../raceHistogram';
 import { gridAt } from '../curves';
@@ -58,6 +65,13 @@ function barsPath(counts: Uint32Array, t: number, a: number, b: number, yMax: nu
   return d;
 }
 
+/** The histogram's caption for the first `t` samples (classroom mode: the stage's shorter one). */
+function captionOf(t: number, staged: boolean, pdfLabel: string): string {
+  return staged
+    ? `All ${t} samples against p(x)`
+    : `Where all ${t === 1 ? 'the sample' : `${t} samples`} fell, against ${pdfLabel}`;
+}
+
 export function RaceHistogram({
   id,
   xs,
@@ -76,6 +90,8 @@ export function RaceHistogram({
   const index = useMemo(() => raceBinIndex(xs, a, b, RACE_BINS), [xs, a, b]);
   const counts = useRef(new Uint32Array(RACE_BINS));
   const bars = useRef<SVGPathElement>(null);
+  const caption = useRef<HTMLElement>(null);
+  const lastText = useRef(-Infinity);
   const axes = useMemo(() => {
     const sx = linearScale(a, b, M.l, M.l + PW);
     const sy = linearScale(0, yMax, M.t + PH, M.t);
@@ -87,23 +103,35 @@ export function RaceHistogram({
     return { xt, yt, pPath: path(Array.from(px), Array.from(py), sx, sy) };
   }, [a, b, yMax, px, py]);
 
-  const draw = (tt: number) => {
+  const draw = (tt: number, playing: boolean) => {
     const el = bars.current;
     if (!el) return;
     const n = Math.max(0, Math.min(xs.length, Math.floor(tt)));
+    writeCaption(n, playing);
     if (el.getAttribute('data-t') === String(n) && el.hasAttribute('d')) return;
     const c = raceCounts(index, n, RACE_BINS, counts.current);
     el.setAttribute('d', barsPath(c, n, a, b, yMax));
     el.setAttribute('data-counts', c.join(','));
     el.setAttribute('data-t', String(n));
   };
+  // the caption counts the samples the bars show: while playing it follows them at most TEXT_HZ
+  // times a second (its text node is React's, changed in place; React renders it on pause)
+  const writeCaption = (n: number, playing: boolean) => {
+    const node = caption.current?.firstChild;
+    if (!node || node.nodeType !== 3) return;
+    const now = performance.now();
+    if (playing && now - lastText.current < 1000 / TEXT_HZ - 1) return;
+    lastText.current = now;
+    const text = captionOf(n, staged, pdfLabel);
+    if (node.nodeValue !== text) node.nodeValue = text;
+  };
   const drawRef = useRef(draw);
   drawRef.current = draw;
-  useTimelineFrame(tl, (tt) => drawRef.current(tt));
+  useTimelineFrame(tl, (tt, playing) => drawRef.current(tt, playing));
   // after every render (a new track or position): the bars of the position now, rewritten
   useLayoutEffect(() => {
     bars.current?.removeAttribute('data-t');
-    drawRef.current(tl.now());
+    drawRef.current(tl.now(), false);
   });
 
   // the words and the table: the counts at the rendered position
@@ -136,10 +164,8 @@ export function RaceHistogram({
         quiet
         testId={`race-histogram-${id}`}
       >
-        <figcaption>
-          {staged
-            ? `All ${t} samples against p(x)`
-            : `Where all ${t === 1 ? 'the sample' : `${t} samples`} fell, against ${pdfLabel}`}
+        <figcaption ref={caption} data-testid={`race-hist-caption-${id}`}>
+          {captionOf(t, staged, pdfLabel)}
         </figcaption>
         <svg viewBox={`0 0 360 ${HIST_H}`} aria-hidden="true">
           <Axes xTicks={axes.xt} yTicks={axes.yt} xLabel="x" yLabel="density" h={HIST_H} />
