@@ -3,7 +3,7 @@
  * copy embed code, keep classroom mode), the values a link may carry (typed expressions only once
  * they compile), and the embedded page's link to the full app.
  */
-import { shareBase } from '../kit/shareLink';
+import { shareUrl } from '../kit/shareLink';
 import { useState } from 'react';
 import type { SceneInfo } from '../kit/catalogue';
 import type { SceneModule } from '../kit/scene';
@@ -74,20 +74,20 @@ export function ShareBar({
   const [keep, setKeep] = useState(false);
   // (not location.origin + pathname: a copy opened from file:// has the origin "null"); the page's
   // own query string (an LMS's learner id, a cmi5 launch's credential) is not the app's to share
-  const base = shareBase(window.location.href);
+  const href = window.location.href;
   const qs = serializeParams(schema, values, {
     part: flags.part ?? undefined,
     present: keep && flags.present ? '1' : undefined,
     ask: keep && asking ? '1' : undefined,
     theme: flags.theme ?? undefined,
   });
-  const link = `${base}#${info.path}${qs ? `?${qs}` : ''}`;
+  const link = shareUrl(href, info.path, qs);
   const embedQs = serializeParams(schema, values, {
     part: flags.part ?? undefined,
     embed: '1',
     theme: flags.theme ?? undefined,
   });
-  const embedSrc = `${base}#${info.path}?${embedQs}`;
+  const embedSrc = shareUrl(href, info.path, embedQs);
   const embedCode = embedSnippet(embedSrc, `${info.title} — Render Math Lab`, info.id);
   const copy = async (what: 'link' | 'embed') => {
     const text = what === 'link' ? link : embedCode;

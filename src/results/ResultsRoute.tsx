@@ -1,14 +1,15 @@
 /**
  * `#/results` (its own lazy chunk): an instructor drops or picks the class's results files; every
- * verdict is recomputed from the seeds and typed answers (./collate.ts), then the page shows per
+ * verdict is recomputed from the seeds and typed answers (./collate.ts, in a worker: ./jobs.ts,
+ * with progress and Cancel; files dropped meanwhile wait their turn), then the page shows per
  * question the scores and how often each named mistake occurs (a bar chart and a table), a table
  * per student, and CSV exports. Everything happens in the page: no file or result is sent anywhere.
  */
 import { useEffect, useRef, useState, type DragEvent } from 'react';
-import { loadExpressionEngine } from '../core/expr';
 import { questionInfo } from '../practice/questions';
 import { QUESTION_IDS } from '../practice/model';
-import { collate, studentsCsv, type Collation, type InputFile, type QuestionStats } from './collate';
+import { studentsCsv, type Collation, type InputFile, type QuestionStats } from './collate';
+import { collateInWorker, CollationFailed } from './jobs';
 import { downloadFile } from '../ui/download';
 import { csvText } from './csv';
 import { addBatch } from './batches';
@@ -30,7 +31,6 @@ function mistakesCsv(c: Collation): string {
 }
 
 export default function ResultsRoute() {
-  const [ready, setReady] = useState(false);
   const [busy, setBusy] = useState<{ done: number; total: number; file?: string; waiting: number } | null>(
     null,
   );
@@ -44,11 +44,6 @@ export default function ResultsRoute() {
   const [over, setOver] = useState(false);
   useEffect(() => {
     document.title = 'Class results — Render Math Lab';
-    // the answer checker's expression engine is loaded now, so collating needs no request later
-    loadExpressionEngine().then(
-      () => setReady(true),
-      () => setProblems(['The answer checker could not be loaded; reload the page while online once.']),
-    );
   }, []);
 
   const take = async (list: FileList | File[] | null) => {
@@ -63,8 +58,12 @@ export default function ResultsRoute() {
       running.current = ctl;
       try {
         await takeBatch(next, ctl.signal);
-      } catch {
-        setProblems((p) => ['Checking was cancelled: the results shown are from before it.', ...p]);
+      } catch (e) {
+        const said =
+          e instanceof CollationFailed
+            ? `${e.message} The results shown are from before this batch.`
+            : 'Checking was cancelled: the results shown are from before it.';
+        setProblems((p) => [said, ...p]);
         waiting.current = [];
       }
       running.current = null;
@@ -91,9 +90,10 @@ export default function ResultsRoute() {
       }
     }
     const merged = addBatch(classFiles.current, inputs);
-    const c = await collate(
+    const c = await collateInWorker(
       merged,
-      (done, file) => setBusy({ done, total: merged.length, file, waiting: waiting.current.length }),
+      ({ done, current }) =>
+        setBusy({ done, total: merged.length, file: current, waiting: waiting.current.length }),
       signal,
     );
     classFiles.current = merged;
@@ -108,7 +108,7 @@ export default function ResultsRoute() {
   };
 
   return (
-    <main id="main" className="page results-page" tabIndex={-1} data-ready={ready ? '1' : '0'}>
+    <main id="main" className="page results-page" tabIndex={-1} data-ready="1">
       <div className="scene-header">
         <h1>Class results</h1>
         <a className="back-link" href="#/practice">
@@ -139,7 +139,7 @@ export default function ResultsRoute() {
             multiple
             accept=".json,application/json"
             data-testid="results-files"
-            disabled={!ready || busy !== null}
+            disabled={busy !== null}
             onChange={(e) => {
               void take(e.target.files);
               e.target.value = '';
@@ -148,13 +148,11 @@ export default function ResultsRoute() {
         </label>
       </div>
       <p role="status" data-testid="results-status">
-        {!ready
-          ? 'Loading the answer checker…'
-          : busy
-            ? `Checking ${busy.done} of ${busy.total} files${busy.file ? ` (${busy.file.slice(0, 80)})` : ''}…${busy.waiting ? ` ${busy.waiting} more waiting.` : ''}`
-            : result
-              ? `${result.files} file${result.files === 1 ? '' : 's'}, ${result.students.length} student${result.students.length === 1 ? '' : 's'}, ${result.attempts} checked attempt${result.attempts === 1 ? '' : 's'}.`
-              : 'No files yet.'}
+        {busy
+          ? `Checking ${busy.done} of ${busy.total} files${busy.file ? ` (${busy.file.slice(0, 80)})` : ''}…${busy.waiting ? ` ${busy.waiting} more waiting.` : ''}`
+          : result
+            ? `${result.files} file${result.files === 1 ? '' : 's'}, ${result.students.length} student${result.students.length === 1 ? '' : 's'}, ${result.attempts} checked attempt${result.attempts === 1 ? '' : 's'}.`
+            : 'No files yet.'}
       </p>
       {busy ? (
         <button type="button" data-testid="results-cancel" onClick={() => running.current?.abort()}>
