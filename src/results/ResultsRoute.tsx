@@ -9,7 +9,8 @@ import { useEffect, useRef, useState, type DragEvent } from 'react';
 import { questionInfo } from '../practice/questions';
 import { QUESTION_IDS } from '../practice/model';
 import { studentsCsv, type Collation, type InputFile, type QuestionStats } from './collate';
-import { collateInWorker, CollationFailed } from './jobs';
+import { CollationFailed, ResultsChecker } from './jobs';
+import { isCancelled } from '../workers/run';
 import { downloadFile } from '../ui/download';
 import { csvText } from './csv';
 import { addBatch } from './batches';
@@ -31,6 +32,7 @@ function mistakesCsv(c: Collation): string {
 }
 
 export default function ResultsRoute() {
+  const [ready, setReady] = useState(false);
   const [busy, setBusy] = useState<{ done: number; total: number; file?: string; waiting: number } | null>(
     null,
   );
@@ -42,8 +44,20 @@ export default function ResultsRoute() {
   const [result, setResult] = useState<Collation | null>(null);
   const [problems, setProblems] = useState<string[]>([]);
   const [over, setOver] = useState(false);
+  const checker = useRef<ResultsChecker | null>(null);
   useEffect(() => {
     document.title = 'Class results — Render Math Lab';
+    // the worker loads the answer checker now, so collating needs no request later
+    const c = new ResultsChecker();
+    checker.current = c;
+    c.warm().then(
+      () => setReady(true),
+      (e: unknown) =>
+        // (a page closed before the checker was ready ended its worker: nothing to say)
+        isCancelled(e) ||
+        setProblems(['The answer checker could not be loaded; reload the page while online once.']),
+    );
+    return () => c.dispose();
   }, []);
 
   const take = async (list: FileList | File[] | null) => {
@@ -90,7 +104,7 @@ export default function ResultsRoute() {
       }
     }
     const merged = addBatch(classFiles.current, inputs);
-    const c = await collateInWorker(
+    const c = await checker.current!.collate(
       merged,
       ({ done, current }) =>
         setBusy({ done, total: merged.length, file: current, waiting: waiting.current.length }),
@@ -108,7 +122,7 @@ export default function ResultsRoute() {
   };
 
   return (
-    <main id="main" className="page results-page" tabIndex={-1} data-ready="1">
+    <main id="main" className="page results-page" tabIndex={-1} data-ready={ready ? '1' : '0'}>
       <div className="scene-header">
         <h1>Class results</h1>
         <a className="back-link" href="#/practice">
@@ -139,7 +153,7 @@ export default function ResultsRoute() {
             multiple
             accept=".json,application/json"
             data-testid="results-files"
-            disabled={busy !== null}
+            disabled={!ready || busy !== null}
             onChange={(e) => {
               void take(e.target.files);
               e.target.value = '';
@@ -148,11 +162,13 @@ export default function ResultsRoute() {
         </label>
       </div>
       <p role="status" data-testid="results-status">
-        {busy
-          ? `Checking ${busy.done} of ${busy.total} files${busy.file ? ` (${busy.file.slice(0, 80)})` : ''}…${busy.waiting ? ` ${busy.waiting} more waiting.` : ''}`
-          : result
-            ? `${result.files} file${result.files === 1 ? '' : 's'}, ${result.students.length} student${result.students.length === 1 ? '' : 's'}, ${result.attempts} checked attempt${result.attempts === 1 ? '' : 's'}.`
-            : 'No files yet.'}
+        {!ready
+          ? 'Loading the answer checker…'
+          : busy
+            ? `Checking ${busy.done} of ${busy.total} files${busy.file ? ` (${busy.file.slice(0, 80)})` : ''}…${busy.waiting ? ` ${busy.waiting} more waiting.` : ''}`
+            : result
+              ? `${result.files} file${result.files === 1 ? '' : 's'}, ${result.students.length} student${result.students.length === 1 ? '' : 's'}, ${result.attempts} checked attempt${result.attempts === 1 ? '' : 's'}.`
+              : 'No files yet.'}
       </p>
       {busy ? (
         <button type="button" data-testid="results-cancel" onClick={() => running.current?.abort()}>

@@ -1,13 +1,11 @@
 /**
  * The results page's worker: the real task module behind an in-process stand-in for a Worker
- * (messages as a worker would get them), progress naming each file, a worker that dies named by
- * the file it was checking, and Cancel.
+ * (messages as a worker would get them), one worker for several batches, progress naming each
+ * file, a worker that dies named by the file it was checking, and Cancel.
  */
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { collate } from '../../src/results/collate';
-import { collateInWorker, CollationFailed } from '../../src/results/jobs';
-import { workerFactory } from '../../src/workers/protocol';
-import type { ResultsTasks } from '../../src/results/results.worker';
+import { CollationFailed, ResultsChecker } from '../../src/results/jobs';
 
 type Listener = ((e: MessageEvent) => void) | null;
 /** The worker's global scope: exposeTasks sets its onmessage; its postMessage reaches the page. */
@@ -70,33 +68,47 @@ const files = [
 ];
 
 describe('collation in the results worker', () => {
-  it('gives what collate gives, naming each file as it starts', async () => {
+  it('gives what collate gives, naming each file as it starts, batch after batch in one worker', async () => {
+    const made: InProcessWorker[] = [];
+    const checker = new ResultsChecker(() => {
+      made.push(new InProcessWorker());
+      return made[made.length - 1] as unknown as Worker;
+    });
+    await checker.warm();
     const seen: string[] = [];
-    const make = workerFactory<ResultsTasks>(() => new InProcessWorker() as unknown as Worker);
-    const c = await collateInWorker(
+    const c = await checker.collate(
       files,
       (s) => s.current && seen.push(s.current),
       new AbortController().signal,
-      make,
     );
     expect(seen).toEqual(['ada.json', 'bob.json', 'cy.json']);
     expect(c).toEqual(await collate(files));
     expect(c.attempts).toBe(6);
+    const c2 = await checker.collate(files.slice(1), () => undefined, new AbortController().signal);
+    expect(c2.attempts).toBe(3);
+    expect(made).toHaveLength(1);
+    expect(made[0].terminated).toBe(false);
   });
   it('a worker that dies is reported with the file it was checking', async () => {
     // messages: start ada, done ada, start bob, then the worker dies
-    const make = workerFactory<ResultsTasks>(() => new InProcessWorker({ after: 3 }) as unknown as Worker);
-    const p = collateInWorker(files, () => undefined, new AbortController().signal, make);
+    const checker = new ResultsChecker(() => new InProcessWorker({ after: 3 }) as unknown as Worker);
+    const p = checker.collate(files, () => undefined, new AbortController().signal);
     await expect(p).rejects.toBeInstanceOf(CollationFailed);
     await expect(p).rejects.toMatchObject({ file: 'bob.json' });
     await expect(p).rejects.toThrow(/^Checking stopped at bob\.json: out of memory\.$/);
   });
-  it('Cancel ends the worker and rejects as cancelled', async () => {
-    let worker: InProcessWorker | null = null;
-    const make = workerFactory<ResultsTasks>(() => (worker = new InProcessWorker()) as unknown as Worker);
+  it('Cancel ends the worker at once; the next batch starts another', async () => {
+    const made: InProcessWorker[] = [];
+    const checker = new ResultsChecker(() => {
+      made.push(new InProcessWorker());
+      return made[made.length - 1] as unknown as Worker;
+    });
     const ctl = new AbortController();
-    const p = collateInWorker(files, (s) => s.current === 'bob.json' && ctl.abort(), ctl.signal, make);
+    const p = checker.collate(files, (s) => s.current === 'bob.json' && ctl.abort(), ctl.signal);
     await expect(p).rejects.toMatchObject({ name: 'AbortError' });
-    expect(worker!.terminated).toBe(true);
+    expect(made[0].terminated).toBe(true);
+    const c = await checker.collate(files, () => undefined, new AbortController().signal);
+    expect(c.attempts).toBe(6);
+    expect(made).toHaveLength(2);
   });
 });
