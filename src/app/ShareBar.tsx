@@ -4,7 +4,7 @@
  * they compile), and the embedded page's link to the full app. Which shell flags a shared link
  * keeps is kit/shareLink's `sharedFlags`.
  */
-import { shareBase, sharedFlags, sharedLink } from '../kit/shareLink';
+import { sharedFlags, shareUrl } from '../kit/shareLink';
 import { useState } from 'react';
 import type { SceneInfo } from '../kit/catalogue';
 import type { SceneModule } from '../kit/scene';
@@ -77,19 +77,19 @@ export function ShareBar({
   const keeps = flags.present || (keep && asking);
   // (not location.origin + pathname: a copy opened from file:// has the origin "null"); the page's
   // own query string (an LMS's learner id, a cmi5 launch's credential) is not the app's to share
-  const base = shareBase(window.location.href);
+  const href = window.location.href;
   const qs = serializeParams(
     schema,
     values,
     sharedFlags({ present: flags.present, asking, keep, part: flags.part, theme: flags.theme }),
   );
-  const link = sharedLink(window.location.href, info.path, qs);
+  const link = shareUrl(href, info.path, qs);
   const embedQs = serializeParams(schema, values, {
     part: flags.part ?? undefined,
     embed: '1',
     theme: flags.theme ?? undefined,
   });
-  const embedSrc = `${base}#${info.path}?${embedQs}`;
+  const embedSrc = shareUrl(href, info.path, embedQs);
   const embedCode = embedSnippet(embedSrc, `${info.title} — Render Math Lab`, info.id);
   const copy = async (what: 'link' | 'embed') => {
     const text = what === 'link' ? link : embedCode;

@@ -22,17 +22,28 @@ function LoadFailed({ what }: { what: string }) {
   );
 }
 
+type Page = { default: ComponentType };
+
+/**
+ * The page module `load` gives, or, when it cannot be loaded and no reload onto a newer build
+ * follows (`tryLoad`: ./staleBuild.ts), a page that says so: never nothing.
+ */
+export function loadPage(
+  load: () => Promise<{ default: ComponentType<never> }>,
+  what: string,
+  tryLoad: typeof importOrReload = importOrReload,
+): Promise<Page> {
+  const failed: ComponentType = () => <LoadFailed what={what} />;
+  return tryLoad(load).then(
+    (m): Page => ({ default: m.default as unknown as ComponentType }),
+    (): Page => ({ default: failed }),
+  );
+}
+
 /** `React.lazy` of a page module that recovers onto a new build or says it could not load. */
 export function lazyPage<C extends ComponentType<never>>(
   load: () => Promise<{ default: C }>,
   what: string,
 ): C {
-  const failed: ComponentType = () => <LoadFailed what={what} />;
-  type Page = { default: ComponentType };
-  const page = (): Promise<Page> =>
-    importOrReload(load).then(
-      (m): Page => ({ default: m.default as unknown as ComponentType }),
-      (): Page => ({ default: failed }),
-    );
-  return lazy(page) as unknown as C;
+  return lazy(() => loadPage(load, what)) as unknown as C;
 }

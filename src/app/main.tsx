@@ -13,6 +13,7 @@ import { afterPaint } from '../ui/afterPaint';
 import { markBuildReplaced } from './staleBuild';
 import { showUpdateNotice } from './updateNotice';
 import { declaredLmsConfig } from '../lms/config';
+import { fuzzRequest } from './fuzzGate';
 
 // The opened scene's chunk is requested now, while React mounts the shell, not once the shell has
 // rendered (index.html has already started downloading it: scripts/routePreload.ts). The
@@ -45,23 +46,16 @@ function render(root: HTMLElement) {
   );
 }
 
-// Fuzz mode (`?fuzz=1&seed=7`, optional `fuzzn=300`): load the self-driving fuzzer, lazily, only then.
-// A test tool: it exists only in the development server and in a build made for testing
-// (`VITE_RML_FUZZ=1`, npm run e2e:fuzz). In a production build the condition is a constant false,
-// so the fuzzer's chunk is not even emitted and no link can start it on a reader's data.
+// Fuzz mode (`#/…?fuzz=1&seed=7`, optional `fuzzn=300`): the self-driving fuzzer, a test tool,
+// loaded lazily and only in a build that allows it (./fuzzGate.ts). The literal condition below
+// is a constant false in a production build, so the fuzzer's chunk is not even emitted there.
 let fuzzing = false;
 function maybeFuzz() {
   if (fuzzing) return;
-  const h = window.location.hash;
-  const q = h.indexOf('?');
-  if (q < 0) return;
-  const sp = new URLSearchParams(h.slice(q + 1));
-  if (sp.get('fuzz') !== '1') return;
+  const ask = fuzzRequest(import.meta.env, window.location.hash);
+  if (!ask) return;
   fuzzing = true;
-  const int = (v: string | null) => (v !== null && /^\d{1,10}$/.test(v) ? Number(v) : null);
-  const seed = int(sp.get('fuzzseed')) ?? int(sp.get('seed')) ?? 1;
-  const limit = int(sp.get('fuzzn'));
-  void import('./fuzz').then((m) => m.startFuzz({ seed, limit: limit && limit > 0 ? limit : null }));
+  void import('./fuzz').then((m) => m.startFuzz(ask));
 }
 if (import.meta.env.DEV || import.meta.env.VITE_RML_FUZZ === '1') {
   maybeFuzz();

@@ -45,25 +45,46 @@ export async function newerBuildServed(): Promise<boolean> {
 }
 
 const GUARD = 'rml:stale-reload';
+/** How long a reload of one address stays the last one tried. */
+const GUARD_MS = 60_000;
+
+/**
+ * After a chunk failed to load: reload (true) or say so (false)? Reload only when a newer build
+ * is served, and not when this address was reloaded for the same reason less than a minute ago
+ * (`guard`: what the last reload left in session storage, unreadable as none), so a build that
+ * cannot load a chunk at all shows its error instead of reloading in a loop.
+ */
+export function shouldReload(newer: boolean, guard: string | null, here: string, now: number): boolean {
+  if (!newer) return false;
+  let last: unknown = null;
+  try {
+    last = JSON.parse(guard ?? 'null');
+  } catch {
+    last = null;
+  }
+  if (!last || typeof last !== 'object') return true;
+  const { href, at } = last as { href?: unknown; at?: unknown };
+  return !(href === here && typeof at === 'number' && now - at < GUARD_MS);
+}
 
 /**
  * After a failed chunk load: if a newer build is served, reload the page (it keeps its URL, so the
- * reader lands where they were going, on the new build) and resolve true. At most once per address
- * within a minute, so a build that cannot load a chunk at all shows its error instead of looping.
+ * reader lands where they were going, on the new build) and resolve true; see shouldReload.
  */
 export async function reloadIfStale(): Promise<boolean> {
-  if (!(await newerBuildServed())) return false;
+  const newer = await newerBuildServed();
   const here = window.location.href;
+  let guard: string | null = null;
   try {
-    const last = JSON.parse(sessionStorage.getItem(GUARD) ?? 'null') as {
-      href?: unknown;
-      at?: unknown;
-    } | null;
-    if (last && last.href === here && typeof last.at === 'number' && Date.now() - last.at < 60_000)
-      return false;
-    sessionStorage.setItem(GUARD, JSON.stringify({ href: here, at: Date.now() }));
+    guard = sessionStorage.getItem(GUARD);
   } catch {
     /* no session storage (sandboxed): reload once anyway; a second failure finds `replaced` unchanged */
+  }
+  if (!shouldReload(newer, guard, here, Date.now())) return false;
+  try {
+    sessionStorage.setItem(GUARD, JSON.stringify({ href: here, at: Date.now() }));
+  } catch {
+    /* as above */
   }
   window.location.reload();
   return true;

@@ -3,13 +3,28 @@
  * worksheet's links): the page's address without its query string and fragment. The page may have
  * been opened with parameters that are not the app's: an LMS or a course page adds the learner's
  * id, name and e-mail, a cmi5 launch adds its one-time credential (`fetch`), the learner (`actor`),
- * `registration` and `endpoint`. A shared link carries the app's own route and parameters only,
- * which live after the `#`, so nothing before it but the document's path is kept.
+ * `registration` and `endpoint`; a server may put a session in the path (`;jsessionid=…`) or a
+ * login in the address (`user:password@`). A shared link carries the app's own route and
+ * parameters only, which live after the `#`, so nothing before it but the document's path is kept.
  */
 export function shareBase(href: string): string {
   const doc = href.split('#')[0];
   const q = doc.indexOf('?');
-  return q < 0 ? doc : doc.slice(0, q);
+  const bare = q < 0 ? doc : doc.slice(0, q);
+  let u: URL;
+  try {
+    u = new URL(bare);
+  } catch {
+    return bare;
+  }
+  if (!/^(https?|file):$/.test(u.protocol)) return bare;
+  // path parameters (`;name=value` in a segment) are a server's, never the app's
+  return `${u.protocol}//${u.host}${u.pathname.replace(/;[^/]*/g, '')}`;
+}
+
+/** The link to the app's `route` with its own `query` (no `?` when empty), on `href`'s document. */
+export function shareUrl(href: string, route: string, query: string): string {
+  return `${shareBase(href)}#${route}${query ? `?${query}` : ''}`;
 }
 
 /** What decides the shell flags of the link Copy link and the QR code hand out. */
@@ -40,12 +55,4 @@ export function sharedFlags(m: ShareMode): Record<string, string | undefined> {
     ask: m.asking && (m.present || m.keep) ? '1' : undefined,
     theme: m.theme ?? undefined,
   };
-}
-
-/**
- * The link to the app's route `path` with the app's own query `query` (scene parameters and shell
- * flags, already encoded), on the document of the page at `href` without the page's query string.
- */
-export function sharedLink(href: string, path: string, query: string): string {
-  return `${shareBase(href)}#${path}${query ? `?${query}` : ''}`;
 }

@@ -257,7 +257,8 @@ export function connectScorm(config: LmsConfig, win: Window = window): ScormSess
         } else {
           set(`${p}id`, `urn:render-math-lab:${r.question}:${r.seed}:${a.name}`);
           set(`${p}type`, 'fill-in');
-          set(`${p}timestamp`, `${now.toISOString().slice(0, 19)}Z`);
+          // SCORM 2004's time type allows a zone designator only after the fraction of a second
+          set(`${p}timestamp`, `${now.toISOString().slice(0, 22)}Z`);
           if (expected) set(`${p}correct_responses.0.pattern`, fillIn(expected, 250));
           set(`${p}learner_response`, fillIn(a.response, 250));
           set(`${p}result`, interactionResult(a.verdict, 'incorrect'));

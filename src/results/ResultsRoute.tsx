@@ -1,14 +1,16 @@
 /**
  * `#/results` (its own lazy chunk): an instructor drops or picks the class's results files; every
- * verdict is recomputed from the seeds and typed answers (./collate.ts), then the page shows per
+ * verdict is recomputed from the seeds and typed answers (./collate.ts, in a worker: ./jobs.ts,
+ * with progress and Cancel; files dropped meanwhile wait their turn), then the page shows per
  * question the scores and how often each named mistake occurs (a bar chart and a table), a table
  * per student, and CSV exports. Everything happens in the page: no file or result is sent anywhere.
  */
 import { useEffect, useRef, useState, type DragEvent } from 'react';
-import { loadExpressionEngine } from '../core/expr';
 import { questionInfo } from '../practice/questions';
 import { QUESTION_IDS } from '../practice/model';
-import { collate, studentsCsv, type Collation, type InputFile, type QuestionStats } from './collate';
+import { studentsCsv, type Collation, type InputFile, type QuestionStats } from './collate';
+import { CollationFailed, ResultsChecker } from './jobs';
+import { isCancelled } from '../workers/run';
 import { downloadFile } from '../ui/download';
 import { csvText } from './csv';
 import { addBatch } from './batches';
@@ -42,13 +44,20 @@ export default function ResultsRoute() {
   const [result, setResult] = useState<Collation | null>(null);
   const [problems, setProblems] = useState<string[]>([]);
   const [over, setOver] = useState(false);
+  const checker = useRef<ResultsChecker | null>(null);
   useEffect(() => {
     document.title = 'Class results — Render Math Lab';
-    // the answer checker's expression engine is loaded now, so collating needs no request later
-    loadExpressionEngine().then(
+    // the worker loads the answer checker now, so collating needs no request later
+    const c = new ResultsChecker();
+    checker.current = c;
+    c.warm().then(
       () => setReady(true),
-      () => setProblems(['The answer checker could not be loaded; reload the page while online once.']),
+      (e: unknown) =>
+        // (a page closed before the checker was ready ended its worker: nothing to say)
+        isCancelled(e) ||
+        setProblems(['The answer checker could not be loaded; reload the page while online once.']),
     );
+    return () => c.dispose();
   }, []);
 
   const take = async (list: FileList | File[] | null) => {
@@ -63,8 +72,12 @@ export default function ResultsRoute() {
       running.current = ctl;
       try {
         await takeBatch(next, ctl.signal);
-      } catch {
-        setProblems((p) => ['Checking was cancelled: the results shown are from before it.', ...p]);
+      } catch (e) {
+        const said =
+          e instanceof CollationFailed
+            ? `${e.message} The results shown are from before this batch.`
+            : 'Checking was cancelled: the results shown are from before it.';
+        setProblems((p) => [said, ...p]);
         waiting.current = [];
       }
       running.current = null;
@@ -91,9 +104,10 @@ export default function ResultsRoute() {
       }
     }
     const merged = addBatch(classFiles.current, inputs);
-    const c = await collate(
+    const c = await checker.current!.collate(
       merged,
-      (done, file) => setBusy({ done, total: merged.length, file, waiting: waiting.current.length }),
+      ({ done, current }) =>
+        setBusy({ done, total: merged.length, file: current, waiting: waiting.current.length }),
       signal,
     );
     classFiles.current = merged;

@@ -6,7 +6,7 @@
  * score of each question. Disagreements between a file's verdicts and the regraded ones are counted.
  */
 import { QUESTION_IDS, type QuestionId } from '../practice/model';
-import { gradeAttempt, mistakeOf } from '../lms/grade';
+import { gradeAttempt, mistakeOf, type GradedAttempt } from '../lms/grade';
 import { parseResultsFile, type Attempt } from './format';
 import { csvText } from './csv';
 
@@ -46,9 +46,6 @@ export interface Collation {
   problems: string[];
 }
 
-/** Long enough to do work, short enough for the page to answer input at once. */
-const SLICE_MS = 12;
-
 /** A student's key across files: their name, else the file's. */
 function studentKey(student: string): string {
   return student.normalize('NFC').trim().replace(/\s+/g, ' ').toLowerCase();
@@ -58,29 +55,21 @@ function attemptKey(a: Attempt): string {
   return JSON.stringify([a.question, a.seed, a.time, a.answers]);
 }
 
+/** Progress of a collation: files done, and the file being checked (absent between files). */
+export type CollateProgress = (done: number, current?: string) => void;
+
 /**
- * Collate the files. Works in slices that yield to the page (whatever a file holds: a crafted one
- * whose every attempt is slow to grade included), reporting each file as it starts; `signal`
- * cancels. A student in several files (by name), and an attempt in several files, count once.
+ * Collate the files (in the results page's worker: ./results.worker.ts; a crafted file whose
+ * every attempt is slow to grade then holds up no page). `onProgress` hears of each file as it
+ * starts and ends. A student in several files (by name), and an attempt in several files, count
+ * once. A file that cannot be read, or whose grading fails, is named in `problems` and left out.
  */
-export async function collate(
-  files: readonly InputFile[],
-  onProgress?: (done: number, current?: string) => void,
-  signal?: AbortSignal,
-): Promise<Collation> {
+export async function collate(files: readonly InputFile[], onProgress?: CollateProgress): Promise<Collation> {
   const problems: string[] = [];
   const rows = new Map<string, StudentRow>();
   const seen = new Set<string>();
   let attempts = 0;
   let done = 0;
-  let sliceStart = performance.now();
-  const yieldNow = async () => {
-    if (signal?.aborted) throw new DOMException('The collation was cancelled.', 'AbortError');
-    if (performance.now() - sliceStart < SLICE_MS) return;
-    await new Promise((r) => setTimeout(r, 0));
-    sliceStart = performance.now();
-    if (signal?.aborted) throw new DOMException('The collation was cancelled.', 'AbortError');
-  };
   const stats = new Map<QuestionId, QuestionStats>();
   for (const q of QUESTION_IDS)
     stats.set(q, {
@@ -95,7 +84,6 @@ export async function collate(
     });
   for (const f of files) {
     onProgress?.(done, f.name);
-    await yieldNow();
     const p = parseResultsFile(f.text);
     done++;
     if (!p.ok) {
@@ -107,16 +95,34 @@ export async function collate(
       problems.push(`${f.name}: ${p.skipped} attempt(s) that name no question 1–6 or seed were left out.`);
     const student = p.file.student || f.name.replace(/\.json$/i, '');
     const key = studentKey(student);
+    // the file's new attempts are graded first, and counted only when all of them could be
+    const fresh: Attempt[] = [];
+    const ids = new Set<string>();
+    for (const a of p.file.attempts) {
+      const id = `${key}\u0000${attemptKey(a)}`;
+      if (seen.has(id) || ids.has(id)) continue;
+      ids.add(id);
+      fresh.push(a);
+    }
+    let graded: GradedAttempt[];
+    try {
+      graded = [];
+      for (const a of fresh) graded.push(await gradeAttempt(a.question, a.seed, a.answers));
+    } catch (e) {
+      problems.push(
+        `${f.name}: could not be checked (${e instanceof Error ? e.message : String(e)}); left out.`,
+      );
+      onProgress?.(done);
+      continue;
+    }
+    for (const id of ids) seen.add(id);
     let row = rows.get(key);
     if (!row) {
       row = { student, file: f.name, best: {}, attempts: 0 };
       rows.set(key, row);
     } else if (!row.file.split(', ').includes(f.name)) row.file += `, ${f.name}`;
-    for (const a of p.file.attempts) {
-      const id = `${key}\u0000${attemptKey(a)}`;
-      if (seen.has(id)) continue;
-      seen.add(id);
-      const g = await gradeAttempt(a.question, a.seed, a.answers);
+    fresh.forEach((a, i) => {
+      const g = graded[i];
       const s = stats.get(a.question)!;
       s.attempts++;
       attempts++;
@@ -137,8 +143,7 @@ export async function collate(
       if (!prev || frac > prev.score / prev.max)
         row.best[a.question] = { score, max: g.max, attempts: (prev?.attempts ?? 0) + 1 };
       else prev.attempts++;
-      await yieldNow();
-    }
+    });
     onProgress?.(done);
   }
   const students = [...rows.values()];

@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { serializeParams, type ParamSchema } from '../../src/kit/params';
-import { shareBase, sharedFlags, sharedLink, type ShareMode } from '../../src/kit/shareLink';
+import { shareBase, sharedFlags, shareUrl, type ShareMode } from '../../src/kit/shareLink';
+import { embedSnippet } from '../../src/app/embedCode';
 import { variantHref, variantUrl } from '../../src/practice/Sheet';
 
 const PRIVATE = /userid|email|fullname|token|fetch|actor|registration|endpoint|4242|ada%40|ada@/i;
@@ -29,6 +30,34 @@ describe('shared links carry the app’s own route only', () => {
       expect(href).not.toMatch(PRIVATE);
     }
   });
+  it('Copy link, the QR code and the embed code carry nothing of other launches either', () => {
+    // other LMSs and course pages than the ones above: LTI fields, a session in the path, a login
+    // in the address, a launch whose values are encoded twice, an empty fragment
+    const others = [
+      'https://moodle.example/mod/pkg/index.html?user_id=4242&lis_person_contact_email_primary=ada%40example.org&lis_person_name_full=Ada%20L&oauth_signature=abc#/ray-sphere?ox=0.5',
+      'https://lms.example/pkg;jsessionid=S3SS10N/index.html;token=abc?x=1#/hemisphere',
+      'https://ada:p4ss@lms.example:8443/pkg/index.html?Email=ADA%40EXAMPLE.ORG#',
+      'http://127.0.0.1:5173/?actor=%257B%2522mbox%2522%253A%2522mailto%253Aada%2540example.org%2522%257D&fetch=http%253A%252F%252Fx%252Ftoken#/monte-carlo',
+      'file:///C:/Users/ada/lab/index.html?registration=r-9&endpoint=https%3A%2F%2Flrs.example#/area-light',
+    ];
+    const expected = [
+      'https://moodle.example/mod/pkg/index.html',
+      'https://lms.example/pkg/index.html',
+      'https://lms.example:8443/pkg/index.html',
+      'http://127.0.0.1:5173/',
+      'file:///C:/Users/ada/lab/index.html',
+    ];
+    const leaks =
+      /user_id|lis_|oauth|jsession|S3SS10N|token|p4ss|ada:|email|actor|fetch|registration|endpoint|4242|ada(%25)?(%40|@)/i;
+    others.forEach((page, i) => {
+      expect(shareBase(page)).toBe(expected[i]);
+      const link = shareUrl(page, '/texture', 'u=0.7&v=0.2');
+      expect(link).toBe(`${expected[i]}#/texture?u=0.7&v=0.2`);
+      expect(shareUrl(page, '/texture', '')).toBe(`${expected[i]}#/texture`);
+      expect(embedSnippet(shareUrl(page, '/texture', 'embed=1'), 'Texture', 'texture')).not.toMatch(leaks);
+      expect(link).not.toMatch(leaks);
+    });
+  });
 });
 
 describe('the link Copy link and the QR code hand out', () => {
@@ -45,7 +74,7 @@ describe('the link Copy link and the QR code hand out', () => {
     ...m,
   });
   const link = (m: Partial<ShareMode>) =>
-    sharedLink(lms, '/texture', serializeParams(schema, { u: 0.7 }, sharedFlags(mode(m))));
+    shareUrl(lms, '/texture', serializeParams(schema, { u: 0.7 }, sharedFlags(mode(m))));
 
   it('in classroom mode keeps present=1 and, while the results are held back, ask=1', () => {
     const asking = link({ present: true, asking: true, part: '3b' });
@@ -66,6 +95,6 @@ describe('the link Copy link and the QR code hand out', () => {
     const l = link({ present: true, asking: true, part: '3a', theme: 'dark' });
     expect(l).toBe('https://lab.example/app/#/texture?u=0.7&part=3a&present=1&ask=1&theme=dark');
     expect(l).not.toMatch(PRIVATE);
-    expect(sharedLink(lms, '/texture', '')).toBe('https://lab.example/app/#/texture');
+    expect(shareUrl(lms, '/texture', '')).toBe('https://lab.example/app/#/texture');
   });
 });

@@ -1,0 +1,214 @@
+/**
+ * What only a page shows of the trust fixes (the logic is unit-tested in tests/results, tests/app,
+ * tests/lms and tests/practice):
+ *  - #/results checks files in its worker: the file input is disabled while busy, a file dropped
+ *    meanwhile waits its turn and is counted, a file that is not a results file is named, Cancel
+ *    stops a batch and leaves the earlier results; and in this production build `fuzz=1` in the
+ *    link starts nothing;
+ *  - with a route's stylesheet gone (a deploy replaced the build), #/results and #/guide say they
+ *    could not be loaded, and after a deploy the page reloads once onto the new build and then says
+ *    so: never a blank page.
+ */
+import { createServer, type Server } from 'node:http';
+import {
+  copyFileSync,
+  cpSync,
+  mkdtempSync,
+  readdirSync,
+  readFileSync,
+  rmSync,
+  unlinkSync,
+  writeFileSync,
+} from 'node:fs';
+import { readFile, stat } from 'node:fs/promises';
+import { tmpdir } from 'node:os';
+import { extname, join, normalize } from 'node:path';
+import { test as base, type Page } from '@playwright/test';
+import { test, expect } from './fixtures';
+import { variantOf } from '../../src/lms/grade';
+import { expectedText } from '../../src/practice/check';
+import { allAnswers } from '../../src/practice/model';
+import { RESULTS_FORMAT } from '../../src/results/format';
+
+const dist = process.env.E2E_DIST ?? 'dist';
+
+/** A results file of `n` attempts at Q1 (each its own variant, answered right but the last answer). */
+function resultsFile(name: string, student: string, n: number) {
+  const attempts = Array.from({ length: n }, (_, i) => {
+    const seed = 1000 + i;
+    const answers = allAnswers(variantOf('q1', seed));
+    return {
+      question: 'q1',
+      seed,
+      time: `2026-01-01T00:${String(Math.floor(i / 60) % 60).padStart(2, '0')}:${String(i % 60).padStart(2, '0')}Z`,
+      answers: Object.fromEntries(
+        answers.map((a, k) => [a.name, k < answers.length - 1 ? expectedText(a) : '1']),
+      ),
+      verdicts: {},
+    };
+  });
+  const text = JSON.stringify({
+    format: RESULTS_FORMAT,
+    formatVersion: 1,
+    app: 't',
+    student,
+    created: '',
+    attempts,
+  });
+  return { name, mimeType: 'application/json', buffer: Buffer.from(text) };
+}
+
+test('#/results: busy in its worker, a dropped file waits its turn, Cancel keeps the earlier results; no fuzzer', async ({
+  page,
+}) => {
+  // a production build: a link asking for the fuzzer starts nothing (its code is not even built)
+  expect(readdirSync(`${dist}/assets`).filter((f) => /fuzz/i.test(f))).toEqual([]);
+  await page.goto('./#/results?fuzz=1&seed=3&fuzzn=50');
+  const main = page.locator('main#main');
+  await expect(main).toHaveAttribute('data-ready', '1', { timeout: 30_000 });
+  const input = page.getByTestId('results-files');
+  const status = page.getByTestId('results-status');
+  const report = page.getByTestId('results-report');
+
+  await input.setInputFiles([
+    {
+      name: 'broken.json',
+      mimeType: 'application/json',
+      buffer: Buffer.from('{"format": "render-math-lab-res'),
+    },
+    resultsFile('ada.json', 'Ada', 250),
+  ]);
+  await expect(input).toBeDisabled();
+  await expect(page.getByTestId('results-cancel')).toBeVisible();
+  // a file dropped while the batch is checked is queued, not lost
+  const late = resultsFile('bob.json', 'Bob', 1);
+  const drop = await page.evaluateHandle(
+    ({ name, text }) => {
+      const dt = new DataTransfer();
+      dt.items.add(new File([text], name, { type: 'application/json' }));
+      return dt;
+    },
+    { name: late.name, text: late.buffer.toString('utf8') },
+  );
+  await page.getByTestId('results-drop').dispatchEvent('drop', { dataTransfer: drop });
+  await expect(status).toContainText('1 more waiting');
+  await expect(report).toHaveAttribute('data-files', '3', { timeout: 60_000 });
+  await expect(report).toHaveAttribute('data-attempts', '251');
+  await expect(report).toHaveAttribute('data-students', '2');
+  await expect(page.getByTestId('results-problems')).toContainText('broken.json: not JSON');
+  await expect(input).toBeEnabled();
+
+  // Cancel: the batch stops, the page keeps what it had, and the next batch works
+  await input.setInputFiles(['cy', 'dan', 'eve', 'fay'].map((n) => resultsFile(`${n}.json`, n, 300)));
+  await expect(status).toContainText('Checking');
+  await page.getByTestId('results-cancel').dispatchEvent('click');
+  await expect(page.getByTestId('results-problems')).toContainText('Checking was cancelled');
+  await expect(input).toBeEnabled();
+  await expect(report).toHaveAttribute('data-files', '3');
+  await input.setInputFiles([resultsFile('di.json', 'Di', 2)]);
+  await expect(report).toHaveAttribute('data-files', '4', { timeout: 30_000 });
+  await expect(report).toHaveAttribute('data-students', '3');
+
+  await expect(page.locator('.fuzz-panel')).toHaveCount(0);
+  expect(await page.evaluate(() => '__rmlFuzz' in window)).toBe(false);
+});
+
+const TYPES: Record<string, string> = {
+  '.html': 'text/html; charset=utf-8',
+  '.js': 'text/javascript; charset=utf-8',
+  '.css': 'text/css; charset=utf-8',
+  '.json': 'application/json',
+  '.png': 'image/png',
+  '.svg': 'image/svg+xml',
+  '.woff2': 'font/woff2',
+};
+
+/** A static server of a private copy of the build at /app/ (so files can be removed or replaced). */
+async function serveCopy(): Promise<{ dir: string; base: string; close: () => Promise<void> }> {
+  const dir = mkdtempSync(join(tmpdir(), 'rml-trust-'));
+  cpSync(dist, dir, { recursive: true });
+  const server: Server = createServer(async (req, res) => {
+    try {
+      let path = decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname);
+      if (!path.startsWith('/app/')) throw new Error('outside');
+      path = path.slice(4);
+      if (path.endsWith('/')) path += 'index.html';
+      const file = normalize(join(dir, path));
+      if (!file.startsWith(dir) || !(await stat(file)).isFile()) throw new Error('missing');
+      res.writeHead(200, {
+        'content-type': TYPES[extname(file)] ?? 'application/octet-stream',
+        'cache-control': 'no-store',
+      });
+      res.end(await readFile(file));
+    } catch {
+      res.writeHead(404);
+      res.end();
+    }
+  });
+  await new Promise<void>((ok) => server.listen(0, '127.0.0.1', ok));
+  return {
+    dir,
+    base: `http://127.0.0.1:${(server.address() as { port: number }).port}/app/`,
+    close: () =>
+      new Promise<void>((ok) => {
+        server.closeAllConnections();
+        server.close(() => ok());
+      }),
+  };
+}
+
+/** Errors thrown in the page (a missing file's 404 is the test's doing, not the page's). */
+function pageErrors(page: Page): string[] {
+  const errors: string[] = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  return errors;
+}
+
+base(
+  'a route whose stylesheet is gone says so, and after a deploy reloads once onto the new build',
+  async ({ page }) => {
+    const srv = await serveCopy();
+    try {
+      const assets = join(srv.dir, 'assets');
+      for (const f of readdirSync(assets))
+        if (/^(ResultsRoute|Guide)-.*\.css$/.test(f)) unlinkSync(join(assets, f));
+      const errors = pageErrors(page);
+      for (const [hash, what] of [
+        ['#/results', 'The class results page'],
+        ['#/guide', 'The guide'],
+      ]) {
+        await page.goto(`${srv.base}${hash}`);
+        await expect(page.getByTestId('route-load-failed')).toContainText(`${what} could not be loaded`);
+        await expect(
+          page.getByTestId('route-load-failed').getByRole('button', { name: 'reload' }),
+        ).toBeVisible();
+      }
+
+      // a page of the old build is open on #/ (a new document); a new build is deployed (another
+      // entry script); the reader opens #/results: the page reloads onto the new build, whose results
+      // page cannot load either (its stylesheet is still gone), and says so instead of reloading again
+      const old = await page.context().newPage();
+      const oldErrors = pageErrors(old);
+      await old.goto(`${srv.base}#/`);
+      await expect(old.locator('main#main')).toBeVisible();
+      await old.evaluate(() => ((window as unknown as { oldPage: boolean }).oldPage = true));
+      const index = readFileSync(join(srv.dir, 'index.html'), 'utf8');
+      const entry = /src="\.\/assets\/(index-[^"]+\.js)"/.exec(index)![1];
+      copyFileSync(join(assets, entry), join(assets, 'index-next.js'));
+      writeFileSync(join(srv.dir, 'index.html'), index.replace(entry, 'index-next.js'));
+      await old.evaluate(() => (window.location.hash = '#/results'));
+      await expect(old.getByTestId('route-load-failed')).toContainText(
+        'The class results page could not be loaded',
+      );
+      expect(await old.evaluate(() => 'oldPage' in window)).toBe(false);
+      expect(
+        await old.evaluate(() => [...document.scripts].some((s) => s.src.endsWith('/index-next.js'))),
+      ).toBe(true);
+      expect(oldErrors).toEqual([]);
+      expect(errors).toEqual([]);
+    } finally {
+      await srv.close();
+      rmSync(srv.dir, { recursive: true, force: true });
+    }
+  },
+);
