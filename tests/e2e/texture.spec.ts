@@ -76,54 +76,6 @@ test('toggling the controls changes the figures at once and writes the link', as
   await expect(page.getByTestId('addressing-note')).toContainText('v′ = 1 − v');
 });
 
-test('choosing random 64 × 64 in the controls works and stays seeded across a reload', async ({ page }) => {
-  await openScene(page, '#/texture');
-  await page.getByTestId('preset-select').selectOption('random');
-  const size = page.getByTestId('size-field');
-  await size.fill('64');
-  await size.press('Enter');
-  await expect(page).toHaveURL(/size=64/);
-  await expect(page.getByTestId('texel-grid')).toBeVisible();
-  const a = await readoutNumber(page, 'bilinear');
-  expect(a).toBeGreaterThanOrEqual(0);
-  expect(a).toBeLessThanOrEqual(1);
-  await page.reload();
-  await page.waitForSelector('[data-testid=bilinear]');
-  expect(await readoutNumber(page, 'bilinear')).toBe(a);
-});
-
-test('bad input: each is named on the page and the rest falls back and works', async ({ page }) => {
-  const exam = expected('');
-  await openScene(page, '#/texture?grid=1,2;3');
-  await expect(page.getByTestId('grid-error')).toContainText('ragged');
-  expect(Number(await readout(page, 'nearest'))).toBe(exam.nearest);
-
-  await openScene(page, '#/texture?grid=1,abc;3,4');
-  await expect(page.getByTestId('grid-error')).toContainText('Row 1, column 2 is not a number');
-  expect(await readoutNumber(page, 'bilinear')).toBe(exam.bilinear);
-
-  await openScene(page, '#/texture?x=0&y=0&z=0');
-  await expect(page.getByTestId('sphere-error')).toContainText('no direction');
-  for (const id of ['sphere-u', 'sphere-v', 'sphere-bilinear'])
-    expect(await readout(page, id), id).toBe('none');
-  expect(Number(await readout(page, 'nearest'))).toBe(exam.nearest);
-
-  await openScene(page, '#/texture?u=abc&wrap=sideways&align=diagonal');
-  await expect(page.getByTestId('param-notice')).toContainText('u');
-  await expect(page.getByTestId('param-notice')).toContainText('wrap');
-  expect(Number(await readout(page, 'nearest'))).toBe(exam.nearest);
-
-  // typed into the grid's text box: refused with a message, then a good grid is taken
-  await openScene(page, '#/texture');
-  await page.getByTestId('grid-text').fill('1,2;3,x');
-  await page.getByTestId('grid-apply').click();
-  await expect(page.getByTestId('grid-text-error')).toContainText('not a number');
-  await page.getByTestId('grid-text').fill('0,1;2,3');
-  await page.getByTestId('grid-apply').click();
-  await expect(page).toHaveURL(/grid=0,1;2,3/);
-  await waitForReadout(page, 'bilinear', (x) => Number(x) === expected('grid=0,1;2,3').bilinear);
-});
-
 test.describe('interaction', () => {
   test('click and drag the query point: only the marker layer changes, no canvas is redrawn', async ({
     page,
@@ -198,40 +150,6 @@ test.describe('interaction', () => {
     expect(u).toBeGreaterThan(0.5);
     await openScene(page, `#/texture?u=${u}&v=${v}`);
     close(await readoutNumber(page, 'bilinear'), L(u, v), 1e-9);
-  });
-
-  test('dragging on the exam grid updates the readouts live', async ({ page }) => {
-    await openScene(page, '#/texture');
-    const box = (await page.getByTestId('texel-grid').boundingBox())!;
-    // window [−0.08, 1.08]: screen fraction f ↔ u = −0.08 + 1.16 f
-    await page.mouse.move(box.x + box.width * 0.5, box.y + box.height * 0.5);
-    await page.mouse.down();
-    await page.mouse.move(box.x + box.width * 0.75, box.y + box.height * 0.25, { steps: 5 });
-    await page.mouse.up();
-    await expect(page).not.toHaveURL(/u=0\.4(&|$)/);
-    const url = new URL(page.url().replace(/^.*#\/texture\?/, 'http://x/?'));
-    const u = Number(url.searchParams.get('u'));
-    const v = Number(url.searchParams.get('v'));
-    close(u, -0.08 + 1.16 * 0.75, 0.01);
-    close(v, 1.08 - 1.16 * 0.25, 0.01);
-    close(await readoutNumber(page, 'bilinear'), L(u, v), 1e-9);
-  });
-
-  test('arrow keys move the query by 0.01', async ({ page }) => {
-    await openScene(page, '#/texture');
-    await page.getByTestId('texel-grid').focus();
-    await page.keyboard.press('ArrowRight');
-    await waitForReadout(page, 'bilinear', (x) => Math.abs(Number(x) - L(0.41, 0.24)) < 1e-9);
-  });
-
-  test('with the v-flip, the picture is in the flipped frame: ArrowUp raises v′ and lowers v', async ({
-    page,
-  }) => {
-    await openScene(page, '#/texture?vflip=1');
-    await page.getByTestId('texel-grid').focus();
-    await page.keyboard.press('ArrowUp');
-    await expect(page).toHaveURL(/v=0\.23(&|$)/);
-    close(await readoutNumber(page, 'bilinear'), L(0.4, 0.77), 1e-9);
   });
 
   test('editing a cell changes the lookups', async ({ page }) => {
