@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { REL_MSE_EPSILON, relMse } from '../../../src/core/image/relMse';
+import { REL_MSE_EPSILON, relMse, relMseRgba8 } from '../../../src/core/image/relMse';
+import { srgbToLinear } from '../../../src/core/image/flip';
 import { meanVariance, stdDevImage } from '../../../src/core/image/stdDevImage';
 import { Rng } from '../../../src/core/random/rng';
 
@@ -15,6 +16,18 @@ describe('relMse', () => {
     expect(relMse([NaN, 1.5, 4], [1, 1, Infinity])).toBeCloseTo(0.25 / 1.01, 15);
     expect(relMse([NaN], [1])).toBeNaN();
     expect(() => relMse([1, 2], [1])).toThrow(RangeError);
+  });
+});
+
+describe('relMseRgba8', () => {
+  it('compares the linear RGB of 8-bit sRGB pixels, ignoring alpha', () => {
+    const ref = [255, 0, 128, 255];
+    const test = [255, 10, 128, 0];
+    const d = srgbToLinear(10 / 255);
+    // three channels: 0, d²/(0 + ε), 0
+    expect(relMseRgba8(test, ref)).toBeCloseTo((d * d) / 0.01 / 3, 15);
+    expect(relMseRgba8(ref, ref)).toBe(0);
+    expect(() => relMseRgba8([1, 2, 3, 4], [1])).toThrow(RangeError);
   });
 });
 
