@@ -5,12 +5,11 @@
  * downloads. FLIP is computed on exactly the bytes shown and downloaded (in a worker), so NVIDIA's
  * tool run on the two downloaded PNGs prints the mean shown here.
  */
-import { useEffect, useMemo, useRef, useState } from 'react';
+import { useEffect, useId, useMemo, useRef, useState } from 'react';
 import { crc32, encodePng } from '../core/image/png';
 import { useWorkerJob } from '../workers/useWorkerJob';
 import { makeFlipWorker } from '../workers/flipWorker';
 import { Readout } from './Readout';
-import { Select } from './controls';
 import { downloadFile } from './download';
 import { formatNumber } from './format';
 import type { ImageSet } from './imageMeasure';
@@ -35,6 +34,7 @@ function savePng(name: string, pixels: Uint8ClampedArray, width: number, height:
 
 export function ImageMeasurePanel({ set }: { set: ImageSet | null }) {
   const [chosen, setChosen] = useState<string | null>(null);
+  const selectId = useId();
   const image = set?.images.find((im) => im.id === chosen) ?? set?.images[0];
   const args = useMemo(
     () =>
@@ -79,13 +79,24 @@ export function ImageMeasurePanel({ set }: { set: ImageSet | null }) {
   return (
     <div className="measure" data-testid="measure-panel">
       {set.images.length > 1 ? (
-        <Select
-          label="Image measured"
-          value={image.id}
-          options={set.images.map((im) => ({ value: im.id, label: im.label }))}
-          onChange={setChosen}
-          testId="measure-image"
-        />
+        // a plain field, not ./controls Select: importing that here splits the page's entry chunk
+        <div className="field">
+          <label htmlFor={selectId} className="field-label">
+            Image measured
+          </label>
+          <select
+            id={selectId}
+            data-testid="measure-image"
+            value={image.id}
+            onChange={(e) => setChosen(e.target.value)}
+          >
+            {set.images.map((im) => (
+              <option key={im.id} value={im.id}>
+                {im.label}
+              </option>
+            ))}
+          </select>
+        </div>
       ) : null}
       <div className="measure-images">
         <figure>
