@@ -34,7 +34,7 @@ if (files.length !== 2 || (ppd !== undefined && !(ppd > 0)) || (args.includes('-
 const { decodePng, encodePng, rgbFromRgba8 } = await loadTs('src/core/image/png.ts');
 const { flipErrorMap, DEFAULT_PPD } = await loadTs('src/core/image/flip.ts');
 const { poolError } = await loadTs('src/core/image/pooling.ts');
-const { colorInto, MAGMA } = await loadTs('src/core/colormap.ts');
+const { magmaErrorImage } = await loadTs('src/core/image/flipRgba8.ts');
 
 function read(path) {
   try {
@@ -63,13 +63,7 @@ console.log(`3rd weighted quartile: ${f(p.weightedQuartile3)}`);
 console.log(`min: ${f(p.min)}`);
 console.log(`max: ${f(p.max)}`);
 if (mapOut) {
-  const rgba = new Uint8Array(4 * map.length);
-  const c = [0, 0, 0];
-  for (let i = 0; i < map.length; i++) {
-    // the reference tool colours by the nearest of 256 magma entries: round the error to 1/255 first
-    colorInto(Math.round(map[i] * 255) / 255, c, 0, MAGMA);
-    rgba.set([c[0], c[1], c[2], 255], 4 * i);
-  }
-  writeFileSync(mapOut, encodePng({ width: ref.width, height: ref.height, data: rgba }));
+  // coloured as the reference tool colours it: the nearest of 256 magma entries
+  writeFileSync(mapOut, encodePng(magmaErrorImage(map, ref.width, ref.height)));
   console.log(`error map: ${mapOut}`);
 }

@@ -3,7 +3,7 @@
  * analytic reference, so the noise each strategy leaves is seen. Rendering runs in a worker (with
  * progress and cancel); the canvases are repainted only when a new pass arrives.
  */
-import { useEffect, useRef } from 'react';
+import { useEffect, useMemo, useRef } from 'react';
 import { useWorkerJob } from '../../../workers';
 import { Panel, Readout, useSeenOnce } from '../../../ui';
 import { formatNumber } from '../../../ui/Readout';
@@ -11,31 +11,16 @@ import { PASS_TOTAL, type FloorJob } from '../floor';
 import { STRATEGIES, STRATEGY_LABEL } from '../strategies';
 import { makeWorker, type FloorFrame } from '../jobs';
 import { fmt } from './format';
+import { floorImageSet, floorPixels, floorScale } from '../floorPixels';
+import { ImageMeasure } from '../../../ui/ImageMeasure';
 
-/** Paint a radiance image: v / scale, gamma 1/2.2, warm white; NaN (no closed form) as a hatch colour. */
+/** Paint a radiance image as ../floorPixels shows it (the measurement reads the same bytes). */
 function paint(canvas: HTMLCanvasElement | null, img: Float32Array | undefined, size: number, scale: number) {
   if (!canvas || !img) return;
   if (canvas.width !== size) canvas.width = canvas.height = size;
   const ctx = canvas.getContext('2d');
   if (!ctx) return;
-  const data = ctx.createImageData(size, size);
-  const d = data.data;
-  for (let k = 0; k < size * size; k++) {
-    const v = img[k];
-    if (!Number.isFinite(v)) {
-      d[4 * k] = 120;
-      d[4 * k + 1] = 60;
-      d[4 * k + 2] = 120;
-      d[4 * k + 3] = 255;
-      continue;
-    }
-    const t = Math.pow(Math.min(1, Math.max(0, v / scale)), 1 / 2.2);
-    d[4 * k] = Math.round(255 * t);
-    d[4 * k + 1] = Math.round(240 * t);
-    d[4 * k + 2] = Math.round(205 * t);
-    d[4 * k + 3] = 255;
-  }
-  ctx.putImageData(data, 0, 0);
+  ctx.putImageData(new ImageData(floorPixels(img, size, scale), size, size), 0, 0);
 }
 
 /** A floor image's accessible name: what it is and, for a strategy, its error against the reference. */
@@ -78,12 +63,12 @@ export function FloorImages({ job, pass = PASS_TOTAL.length - 1 }: { job: FloorJ
   const full = task.result ?? task.partial;
   useEffect(() => {
     if (!fr) return;
-    let scale = 0;
-    for (const v of fr.reference) if (Number.isFinite(v) && v > scale) scale = v;
-    if (!(scale > 0)) scale = 1;
+    const scale = floorScale(fr.reference);
     paint(refs.current[0] ?? null, fr.reference, fr.size, scale);
     fr.images.forEach((img, i) => paint(refs.current[i + 1] ?? null, img, fr.size, scale));
   }, [fr]);
+
+  const measured = useMemo(() => (fr && task.result ? floorImageSet(fr) : null), [fr, task.result]);
 
   const labels = ['reference (Lambert’s formula)', ...STRATEGIES.map((s) => STRATEGY_LABEL[s])];
   return (
@@ -133,6 +118,7 @@ export function FloorImages({ job, pass = PASS_TOTAL.length - 1 }: { job: FloorJ
           </figure>
         ))}
       </div>
+      <ImageMeasure set={measured} />
     </div>
   );
 }

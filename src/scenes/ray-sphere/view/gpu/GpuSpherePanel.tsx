@@ -18,6 +18,9 @@ import {
 } from '../../../../core/geometry';
 import { getGl2, renderSphereGpu, type GpuSphereImage } from './sphereShader';
 import { SelfIntersectionF32 } from './SelfIntersectionF32';
+import { ImageMeasure } from '../../../../ui/ImageMeasure';
+import type { ImageSet } from '../../../../ui/imageMeasure';
+import { relMseRgba8 } from '../../../../core/image/relMse';
 
 /** Image size: one ray per pixel, as the distant-sphere images above. */
 const W = 96;
@@ -51,18 +54,21 @@ function ulpColour(u: number): Rgb {
   return [0, 1, 2].map((k) => stops[i][k] + w * (stops[i + 1][k] - stops[i][k])) as Rgb;
 }
 
-function paint(cv: HTMLCanvasElement | null, colour: (i: number) => Rgb): void {
-  const g = cv?.getContext('2d');
-  if (!g) return;
-  const img = g.createImageData(W, W);
+/** The W × W RGBA8 pixels of a per-pixel colour (what the canvases show and the measurement reads). */
+function pixelsOf(colour: (i: number) => Rgb): Uint8ClampedArray<ArrayBuffer> {
+  const d = new Uint8ClampedArray(4 * W * W);
   for (let i = 0; i < W * W; i++) {
     const c = colour(i);
-    img.data[4 * i] = c[0];
-    img.data[4 * i + 1] = c[1];
-    img.data[4 * i + 2] = c[2];
-    img.data[4 * i + 3] = 255;
+    d[4 * i] = c[0];
+    d[4 * i + 1] = c[1];
+    d[4 * i + 2] = c[2];
+    d[4 * i + 3] = 255;
   }
-  g.putImageData(img, 0, 0);
+  return d;
+}
+
+function paint(cv: HTMLCanvasElement | null, pixels: Uint8ClampedArray<ArrayBuffer>): void {
+  cv?.getContext('2d')?.putImageData(new ImageData(pixels, W, W), 0, 0);
 }
 
 /** Hit/miss with depth shading; holes (reference hits, this misses) pink, invented hits light blue. */
@@ -150,36 +156,65 @@ export function GpuSpherePanel() {
   const cErrN = useRef<HTMLCanvasElement>(null);
   const cErrS = useRef<HTMLCanvasElement>(null);
   const cMis = useRef<HTMLCanvasElement>(null);
-  useEffect(() => {
+  // the float64 reference and the two float32 images as pixels: painted, and measured by FLIP
+  const shownPx = useMemo(() => {
     const shown = res.gpu ?? res.emu;
-    paint(cRef.current, hitColour(res.ref, null, res.tMin));
-    paint(cNaive.current, hitColour(shown.naive, res.ref, res.tMin));
-    paint(cStable.current, hitColour(shown.stable, res.ref, res.tMin));
+    return {
+      ref: pixelsOf(hitColour(res.ref, null, res.tMin)),
+      naive: pixelsOf(hitColour(shown.naive, res.ref, res.tMin)),
+      stable: pixelsOf(hitColour(shown.stable, res.ref, res.tMin)),
+    };
+  }, [res]);
+  const measured = useMemo<ImageSet>(() => {
+    const where = res.gpu ? 'GPU' : 'emulated';
+    const image = (id: 'naive' | 'stable', label: string) => ({
+      id,
+      label,
+      pixels: shownPx[id],
+      relMse: relMseRgba8(shownPx[id], shownPx.ref),
+    });
+    return {
+      width: W,
+      height: W,
+      reference: shownPx.ref,
+      referenceLabel: 'float64',
+      images: [image('naive', `textbook, ${where} float32`), image('stable', `robust, ${where} float32`)],
+      relMseOf: 'the linear RGB of the shown pixels',
+      fileStem: `ray-sphere-D${dist}`,
+    };
+  }, [res, shownPx, dist]);
+  useEffect(() => {
+    paint(cRef.current, shownPx.ref);
+    paint(cNaive.current, shownPx.naive);
+    paint(cStable.current, shownPx.stable);
     const errCol = (e: Float32Array) => (i: number) =>
       res.ref[i] === Infinity && e[i] === 0 ? IMAGE_BG : e[i] === Infinity ? IMAGE_HOLE : ulpColour(e[i]);
-    paint(cErrN.current, errCol(res.errNaive));
-    paint(cErrS.current, errCol(res.errStable));
+    paint(cErrN.current, pixelsOf(errCol(res.errNaive)));
+    paint(cErrS.current, pixelsOf(errCol(res.errStable)));
     const g = res.gpu;
-    paint(cMis.current, (i) => {
-      if (!g) return IMAGE_BG;
-      const bad = (x: number, y: number) =>
-        x !== y &&
-        (x === Infinity ||
-          y === Infinity ||
-          Math.abs(x - y) > MISMATCH_ULPS * Math.max(2 ** -149, ulpF32(y)));
-      const n = bad(g.naive[i], res.emu.naive[i]);
-      const s = bad(g.stable[i], res.emu.stable[i]);
-      return n && s
-        ? [255, 255, 255]
-        : n
-          ? [240, 130, 30]
-          : s
-            ? [60, 190, 90]
-            : res.ref[i] === Infinity
-              ? IMAGE_BG
-              : [55, 60, 72];
-    });
-  }, [res]);
+    paint(
+      cMis.current,
+      pixelsOf((i) => {
+        if (!g) return IMAGE_BG;
+        const bad = (x: number, y: number) =>
+          x !== y &&
+          (x === Infinity ||
+            y === Infinity ||
+            Math.abs(x - y) > MISMATCH_ULPS * Math.max(2 ** -149, ulpF32(y)));
+        const n = bad(g.naive[i], res.emu.naive[i]);
+        const s = bad(g.stable[i], res.emu.stable[i]);
+        return n && s
+          ? [255, 255, 255]
+          : n
+            ? [240, 130, 30]
+            : s
+              ? [60, 190, 90]
+              : res.ref[i] === Infinity
+                ? IMAGE_BG
+                : [55, 60, 72];
+      }),
+    );
+  }, [res, shownPx]);
 
   // each image is named by its caption and says, briefly, what it shows in numbers
   const figure = (
@@ -318,6 +353,10 @@ export function GpuSpherePanel() {
         The robust form’s error grows only like u₃₂·D/r ≈ 6·10⁻⁴: at this resolution no pixel centre lies that
         close to the rim (on larger images a few rim pixels can flip, and beyond 10⁵ r they do).
       </p>
+      <ImageMeasure
+        set={measured}
+        summary="Measure the float32 images against float64: FLIP, relMSE, error map, PNG downloads"
+      />
       <SelfIntersectionF32 />
     </div>
   );
