@@ -6,7 +6,7 @@
  * mode; and Q6 can be worked through with the keyboard alone, its numbers read from the tree.
  */
 import type { Page } from '@playwright/test';
-import { test, expect, openScene, readoutNumber } from './fixtures';
+import { test, expect, openScene } from './fixtures';
 import { axTree } from './axTree';
 import { defaultValues, parseParams } from '../../src/kit/params';
 import { EXAM_PRESET, schema } from '../../src/scenes/area-light/params';
@@ -74,129 +74,6 @@ test('the main figure’s description holds the live numbers and changes when th
     timeout: 10000,
   });
 });
-
-test('on pause the description says the paused frame’s numbers', async ({ page }) => {
-  const q = 'n=512&seed=5&t=0';
-  await openScene(page, `#/area-light?${q}`);
-  await expect.poll(() => figureDescription(page), { timeout: 30000 }).toContain('none yet (0 of 512)');
-  // by keyboard: Enter on the focused Play button plays, Enter again (now Pause) pauses
-  const tl = page.getByTestId('timeline');
-  await tl.getByRole('button', { name: /play/i }).focus();
-  await page.keyboard.press('Enter');
-  await expect(tl).toHaveAttribute('data-playing', '1');
-  const arrived = async () => Number(await page.getByTestId('anim-k').getAttribute('data-value'));
-  await expect.poll(arrived, { timeout: 20000 }).toBeGreaterThan(20);
-  await page.keyboard.press('Enter');
-  await expect(tl).toHaveAttribute('data-playing', '0');
-  const k = await arrived();
-  const { m, v } = modelFor(q);
-  const run = sampleRun(m, v.strategy as LightStrategy, animationLength(v.n), v.seed);
-  const fr = animationFrame(run, k);
-  await expect.poll(() => figureDescription(page)).toContain(`${k} of 512 arrived`);
-  expect(await figureDescription(page)).toContain(`running estimate ${f(fr.estimate)} ± ${f(fr.stderr, 2)}`);
-  // the running-estimate plot has its own name and summary, for the same frame
-  const running = await axFigure(page, 'Running estimate against samples k');
-  expect(running!.description).toContain(`${k} of 512 samples`);
-  // the pause is announced with the paused frame
-  await expect(page.getByTestId('live-region')).toContainText(`${k} of 512 arrived`, { timeout: 10000 });
-});
-
-test('the running estimate’s audio trace starts Web Audio and steps by key; its table has the run’s rows', async ({
-  page,
-}) => {
-  await page.addInitScript(() => {
-    const w = window as unknown as { __osc: number };
-    w.__osc = 0;
-    const AC = window.AudioContext;
-    if (!AC) return;
-    const orig = AC.prototype.createOscillator;
-    AC.prototype.createOscillator = function (this: AudioContext) {
-      w.__osc++;
-      return orig.call(this);
-    };
-  });
-  const q = 'n=256&seed=3';
-  await openScene(page, `#/area-light?${q}`);
-  const trace = page.getByTestId('al-running-audio');
-  await trace.scrollIntoViewIfNeeded();
-  await trace.focus();
-  // stepping reads the points out (no sound needed): the first point is k = 1
-  await page.keyboard.press('ArrowRight');
-  const { m, v } = modelFor(q);
-  const run = sampleRun(m, v.strategy as LightStrategy, animationLength(v.n), v.seed);
-  await expect(page.getByTestId('live-region')).toContainText(`k = 1, estimate = ${f(run.mean[0]!, 4)}`);
-  await page.keyboard.press('ArrowRight');
-  await expect(page.getByTestId('live-region')).toContainText(`k = 2, estimate = ${f(run.mean[1]!, 4)}`);
-  await page.keyboard.press('End');
-  await expect(page.getByTestId('live-region')).toContainText(`k = 256, estimate = ${f(run.mean[255]!, 4)}`);
-  // Enter plays it: oscillators are created
-  expect(await page.evaluate(() => (window as unknown as { __osc: number }).__osc)).toBe(0);
-  await page.keyboard.press('Enter');
-  await expect
-    .poll(() => page.evaluate(() => (window as unknown as { __osc: number }).__osc), { timeout: 15000 })
-    .toBeGreaterThan(0);
-  await page.keyboard.press('Escape');
-  // the table: opened, it lists k = 1, 2, 4 … 256 with the run's means
-  const table = page.getByTestId('al-running-table');
-  await table.locator('summary').click();
-  const rows = table.locator('tbody tr');
-  await expect(rows.first()).toContainText(f(run.mean[0]!, 4));
-  await expect(rows.last().locator('td').first()).toHaveText('256');
-  await expect(rows.last()).toContainText(f(run.mean[255]!, 4));
-});
-
-test('ask=1: the estimate, the running plot and the answers wait for Reveal; the animation is held at its start', async ({
-  page,
-}) => {
-  await openScene(page, '#/area-light?ask=1&part=6c');
-  await expect(page.getByTestId('ask-prompt')).toBeVisible();
-  await expect(page.getByTestId('anim-estimate')).toHaveCount(0);
-  await expect(page.getByTestId('al-running')).toHaveCount(0);
-  await expect(page.getByTestId('anim-k')).toHaveAttribute('data-value', '0');
-  await expect(page.getByTestId('timeline')).toHaveCount(0);
-  await expect(page.locator('[data-testid^="given-term-"]')).toHaveCount(0);
-  await expect(page.getByTestId('given-estimate')).toHaveCount(0);
-  await expect(page.getByTestId('estimate')).toHaveCount(0);
-  expect(await figureDescription(page)).not.toMatch(/running estimate \d/);
-  // the setup stays: the light, the patch, the first four samples' geometry
-  await expect(page.getByTestId('given-samples')).toBeVisible();
-  await page.getByTestId('reveal').click();
-  await expect(page.getByTestId('ask-prompt')).toHaveCount(0);
-  await expect(page).not.toHaveURL(/ask=1/);
-  // revealed: the samples play in from the start, the results are back
-  await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '1');
-  await expect(page.getByTestId('anim-estimate')).toBeVisible();
-  await expect(page.getByTestId('given-estimate')).toBeVisible();
-  await readoutNumber(page, 'estimate');
-});
-
-// the projector's common size (the stage's general checks run for every scene in catalogue.spec.ts)
-for (const [w, h] of [[1280, 720]] as const) {
-  test(`present=1 at ${w}×${h}: the stage (3D view, configuration, transport, readouts, running estimate) is one screen`, async ({
-    page,
-  }) => {
-    await page.setViewportSize({ width: w, height: h });
-    await openScene(page, '#/area-light?present=1');
-    await page.evaluate(() => window.scrollTo(0, 0));
-    const stage = page.getByTestId('scene-stage');
-    for (const el of [
-      stage,
-      page.getByTestId('al-3d'),
-      page.getByTestId('timeline'),
-      page.getByTestId('anim-estimate'),
-      page.getByTestId('al-running'),
-      page.getByTestId('exam-config'),
-    ]) {
-      await expect(el).toBeVisible();
-      const b = (await el.boundingBox())!;
-      expect(b.y).toBeGreaterThanOrEqual(0);
-      expect(b.y + b.height).toBeLessThanOrEqual(h + 1);
-      expect(b.x + b.width).toBeLessThanOrEqual(w + 1);
-    }
-    // the 3D view is the larger part of it
-    expect((await page.getByTestId('al-3d').boundingBox())!.height).toBeGreaterThan(0.3 * h);
-  });
-}
 
 test('keyboard only: the exam’s configuration, a tilted patch, and the numbers Q6 asks for, read from the tree', async ({
   page,
