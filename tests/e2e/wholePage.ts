@@ -133,10 +133,13 @@ export async function formulasBrokenInsideParentheses(page: Page): Promise<strin
 
 /**
  * The whole-page pass: light at 1280 px, then the same page dark at 375 px (and 320 px for
- * reflow). Every finding is collected and the test fails once with the full list.
+ * reflow), every lazy part loaded from the app's own origin. Every finding is collected and the
+ * test fails once with the full list.
  */
 export async function checkWholePage(page: Page, hash: string): Promise<void> {
   const found: string[] = [];
+  const requested: string[] = [];
+  page.on('request', (r) => requested.push(r.url()));
   await page.emulateMedia({ colorScheme: 'light' });
   await page.setViewportSize({ width: 1280, height: 900 });
   await openWhole(page, hash);
@@ -165,5 +168,10 @@ export async function checkWholePage(page: Page, hash: string): Promise<void> {
     const why = (await focusObscured(page)) ?? (await weakFocusRing(page));
     if (why) found.push(why);
   }
+  // everything came from the app's own folder (the static build works offline)
+  const origin = new URL(page.url()).origin;
+  for (const u of requested)
+    if (!/^(data|blob):/.test(u) && new URL(u).origin !== origin)
+      found.push(`request off the app's origin: ${u}`);
   expect(found, `${hash}: what a reader meets`).toEqual([]);
 }
