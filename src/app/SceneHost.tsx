@@ -164,12 +164,19 @@ function LoadedScene({
   // the values the scene opened with: "r" (classroom shortcut) always goes back to them
   const opening = useRef(parsed.values);
   const lastQuery = useRef(query);
+  // the latest values asked for (set with each change, ahead of the render that shows them: a change
+  // that arrives while a transition renders the previous one builds on it, not on what is on screen)
+  const valuesRef = useRef(values);
   // A hashchange (typed URL, back/forward) re-parses; our own replaceState does not trigger it.
+  // The scene re-renders as a transition (in slices that yield, see useHashRoute).
   useEffect(() => {
     if (lastQuery.current === query) return;
     lastQuery.current = query;
-    setValues(parsed.values);
-    setProblems([...flags.problems, ...partProblem, ...parsed.problems]);
+    valuesRef.current = parsed.values;
+    startTransition(() => {
+      setValues(parsed.values);
+      setProblems([...flags.problems, ...partProblem, ...parsed.problems]);
+    });
   }, [query, parsed, flags.problems, partProblem]);
 
   const part = flags.part && info.parts.includes(flags.part) ? flags.part : null;
@@ -199,8 +206,6 @@ function LoadedScene({
   usePageKey('v', reveal, asking);
   const askText = useAskText(info, query, part, flags.ask);
 
-  const valuesRef = useRef(values);
-  valuesRef.current = values;
   // The values the link carries: typed expressions enter it only once they have compiled (a link
   // must never carry an expression that was not checked; see linkSafeValues).
   const [linkValues, setLinkValues] = useState(values);
