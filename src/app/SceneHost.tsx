@@ -164,19 +164,32 @@ function LoadedScene({
   // the values the scene opened with: "r" (classroom shortcut) always goes back to them
   const opening = useRef(parsed.values);
   const lastQuery = useRef(query);
-  // the latest values asked for (set with each change, ahead of the render that shows them: a change
-  // that arrives while a transition renders the previous one builds on it, not on what is on screen)
+  // the latest values asked for, set with each change ahead of the render that shows them, so that
+  // changes keep their order: one that arrives while a transition renders the last builds on it
   const valuesRef = useRef(values);
-  // A hashchange (typed URL, back/forward) re-parses; our own replaceState does not trigger it.
-  // The scene re-renders as a transition (in slices that yield, see useHashRoute).
+  const writeSeq = useRef(0);
+  // A hashchange on this page (typed or pasted link, back/forward) takes the address's values at
+  // once, in the event (our own replaceState does not fire it); the scene re-renders as a
+  // transition, in slices that yield (see useHashRoute).
   useEffect(() => {
-    if (lastQuery.current === query) return;
-    lastQuery.current = query;
-    valuesRef.current = parsed.values;
-    startTransition(() => {
-      setValues(parsed.values);
-      setProblems([...flags.problems, ...partProblem, ...parsed.problems]);
-    });
+    const on = () => {
+      const { path, query: q } = parseHash(window.location.hash);
+      if (path !== info.path || q === lastQuery.current) return;
+      lastQuery.current = q;
+      writeSeq.current++; // a URL write still pending for an earlier change must not replace this address
+      const next = parseParams(schema, q).values;
+      valuesRef.current = next;
+      startTransition(() => setValues(next));
+    };
+    window.addEventListener('hashchange', on);
+    return () => window.removeEventListener('hashchange', on);
+  }, [info.path, schema]);
+  // the notice of values the address could not use follows the query the shell renders
+  const problemsFor = useRef(query);
+  useEffect(() => {
+    if (problemsFor.current === query) return;
+    problemsFor.current = query;
+    startTransition(() => setProblems([...flags.problems, ...partProblem, ...parsed.problems]));
   }, [query, parsed, flags.problems, partProblem]);
 
   const part = flags.part && info.parts.includes(flags.part) ? flags.part : null;
@@ -209,7 +222,6 @@ function LoadedScene({
   // The values the link carries: typed expressions enter it only once they have compiled (a link
   // must never carry an expression that was not checked; see linkSafeValues).
   const [linkValues, setLinkValues] = useState(values);
-  const writeSeq = useRef(0);
   useEffect(() => setLinkValues(parsed.values), [parsed]);
   const setParams = useCallback(
     (patch: Record<string, unknown>) => {

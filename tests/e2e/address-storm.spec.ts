@@ -57,11 +57,17 @@ test('hemisphere at n = 200 000: after a storm of address changes the readouts a
     'mc-importance': model.q2.importance?.estimate,
     'chi2-p': model.chi2?.pValue,
   };
+  // equal to the last few bits (the page's engine and Node's may round a library function
+  // differently); the values of neighbouring seeds differ from 10⁻⁵ on
   for (const [id, value] of Object.entries(expected)) {
     expect(Number.isFinite(value), `the model has a value for ${id}`).toBe(true);
-    await expect(scene.getByTestId(id).first()).toHaveAttribute('data-value', String(value), {
-      timeout: 60_000,
-    });
+    const shown = scene.getByTestId(id).first();
+    await expect
+      .poll(async () => Math.abs(Number(await shown.getAttribute('data-value')) - value!) / value!, {
+        message: `${id} settles on the model's value for seed ${last}`,
+        timeout: 60_000,
+      })
+      .toBeLessThan(1e-12);
   }
   const frame = page.frames().find((f) => f.url().includes('/app/'))!;
   expect(new URL(frame.url()).hash).toContain(`seed=${last}`);
