@@ -17,6 +17,7 @@ import { usePageKey } from '../ui/pageKeys';
 import { QuestionNav } from '../ui/QuestionNav';
 import { ParamNotice } from '../ui/RouteNotice';
 import { useHostScene } from './hostBridge';
+import { paramChanges } from './paramChanges';
 import { fullAppHref, linkSafeValues, ShareBar } from './ShareBar';
 import { SceneErrorBoundary } from './SceneErrorBoundary';
 import { useScrollToPart } from './useScrollToPart';
@@ -164,10 +165,8 @@ function LoadedScene({
   // the values the scene opened with: "r" (classroom shortcut) always goes back to them
   const opening = useRef(parsed.values);
   const lastQuery = useRef(query);
-  // the latest values asked for, set with each change ahead of the render that shows them, so that
-  // changes keep their order: one that arrives while a transition renders the last builds on it
-  const valuesRef = useRef(values);
-  const writeSeq = useRef(0);
+  // the latest values asked for, ahead of the render that shows them (./paramChanges)
+  const [changes] = useState(() => paramChanges(parsed.values));
   // A hashchange on this page (typed or pasted link, back/forward) takes the address's values at
   // once, in the event (our own replaceState does not fire it); the scene re-renders as a
   // transition, in slices that yield (see useHashRoute).
@@ -176,14 +175,12 @@ function LoadedScene({
       const { path, query: q } = parseHash(window.location.hash);
       if (path !== info.path || q === lastQuery.current) return;
       lastQuery.current = q;
-      writeSeq.current++; // a URL write still pending for an earlier change must not replace this address
-      const next = parseParams(schema, q).values;
-      valuesRef.current = next;
+      const next = changes.fromAddress(parseParams(schema, q).values);
       startTransition(() => setValues(next));
     };
     window.addEventListener('hashchange', on);
     return () => window.removeEventListener('hashchange', on);
-  }, [info.path, schema]);
+  }, [info.path, schema, changes]);
   // the notice of values the address could not use follows the query the shell renders
   const problemsFor = useRef(query);
   useEffect(() => {
@@ -227,12 +224,12 @@ function LoadedScene({
     (patch: Record<string, unknown>) => {
       // only values the schema allows reach the scene and the URL (a select set to a missing
       // option, a NaN from a cleared number field, a key that is not a parameter: dropped)
-      const next = { ...valuesRef.current, ...sanitizePatch(schema, patch) } as ParamValues<ParamSchema>;
-      valuesRef.current = next;
+      const { values: next, latest } = changes.patch(
+        sanitizePatch(schema, patch) as ParamValues<ParamSchema>,
+      );
       setValues(next);
-      const seq = ++writeSeq.current;
       void linkSafeValues(schema, next).then((safe) => {
-        if (seq !== writeSeq.current) return; // a newer change will write the URL
+        if (!latest()) return; // a newer change wrote, or will write, the URL
         setLinkValues(safe);
         const qs = serializeParams(schema, safe, shellExtras({ ...flags, ask: askingRef.current }));
         const hash = `#${info.path}${qs ? `?${qs}` : ''}`;
@@ -244,11 +241,11 @@ function LoadedScene({
         lastQuery.current = qs;
       });
     },
-    [schema, flags, info.path],
+    [schema, flags, info.path, changes],
   );
   useShortcuts({ reset: () => setParams({ ...opening.current }) });
 
-  const getValues = useCallback(() => valuesRef.current, []);
+  const getValues = useCallback(() => changes.current(), [changes]);
   useHostScene(
     { id: info.id, route: info.path, schema, getValues, setParams, checkValues: mod.checkValues },
     values,
