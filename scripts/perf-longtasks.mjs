@@ -3,12 +3,19 @@
  * Long main-thread tasks at the largest sample counts: every scene opened with each of its count
  * parameters at the maximum its URL schema allows (every integer parameter of `src/scenes/<id>/params.ts`
  * but the seed and the timeline's t), then a storm of seed changes (200 hash changes, as fast as
- * the page takes them), plus the heaviest point set of the hemisphere at 10⁶ samples. The goal:
- * no task over 50 ms, anywhere. A benchmark, not a test (tests/e2e/storm.spec.ts checks only
- * that the last change of such a storm wins); writes bench/longtasks.json.
+ * the page takes them), plus the heaviest point set of the hemisphere at 10⁶ samples. The "mixed"
+ * storm (--mixed, 40 changes) embeds the scene in a host page's frame and changes the seed through
+ * every way its address changes (./addressStorm.ts: a typed hash, a pasted link, back, forward, the
+ * host API's `set`), on every seeded scene at its largest counts and on #/hemisphere at n = 200 000.
+ * The goal: no task over 50 ms, anywhere. A benchmark, not a test (tests/e2e/storm.spec.ts and
+ * tests/e2e/address-storm.spec.ts check only that the last change of such a storm wins); writes
+ * bench/longtasks.json and prints, per route, the tasks over the goal and the longest.
  *
  *   npm run perf:longtasks, or npm run build && node scripts/perf-longtasks.mjs [--dist dist] [--port 4422] [--changes 200]
- *     [--scenes hemisphere,monte-carlo] [--js] [--min 50] [--out bench/longtasks.json]
+ *     [--mixed 40] [--scenes hemisphere,monte-carlo] [--case mixed] [--at 0.5] [--js] [--min 50]
+ *     [--out bench/longtasks.json]
+ * (--case: only the cases whose name contains the text; --at: the storms run with the page
+ * scrolled to that fraction of its height, 0 = the top.)
  *
  * Durations come from a Chromium trace of the page's main thread: `cpu` is the thread's own CPU
  * time inside each task (the trace's thread duration), which a machine busy with other work barely
@@ -37,7 +44,9 @@ const only = takeOpt(args, '--scenes', '');
 const min = Number(takeOpt(args, '--min', '50'));
 const out = takeOpt(args, '--out', 'bench/longtasks.json');
 const withJs = args.includes('--js');
-// the mixed storm: seed changes through every way the address can change (see mixedStorm)
+// with --js: how many functions the whole storm's summary lists
+const jsTop = Number(takeOpt(args, '--top', '15'));
+// the mixed storm: seed changes through every way the address can change (./addressStorm.ts)
 const mixedChanges = Number(takeOpt(args, '--mixed', '40'));
 // --case TEXT: only the cases whose name contains TEXT
 const caseFilter = takeOpt(args, '--case', '');
@@ -152,7 +161,7 @@ function tasksOf(events) {
     if (withJs) Object.assign(t, jsBetween(t.ts, end, 8));
   }
   // the whole trace's JavaScript by app function: what all the tasks together cost
-  if (withJs && tasks.length) tasks.js = jsBetween(tasks[0].ts, Infinity, Number(process.env.JS_TOP ?? 15));
+  if (withJs && tasks.length) tasks.js = jsBetween(tasks[0].ts, Infinity, jsTop);
   return tasks;
 }
 
@@ -280,6 +289,17 @@ const summary = {
 if (!only) {
   mkdirSync('bench', { recursive: true });
   writeFileSync(out, `${JSON.stringify(summary, null, 2)}\n`);
+}
+// per route: how many tasks over the goal (main-thread CPU) in all its cases, and the longest
+console.log('\nper route: tasks over the goal (cpu), longest (cpu / wall)');
+for (const scene of [...new Set(results.map((r) => r.scene))]) {
+  const rs = results.filter((r) => r.scene === scene);
+  const over = rs.reduce((s, r) => s + r.overMinCpu, 0);
+  const cpu = Math.max(...rs.map((r) => r.longestCpuMs));
+  const wall = Math.max(...rs.map((r) => r.longestWallMs));
+  console.log(
+    `  #/${scene.padEnd(12)} ${String(over).padStart(3)} over ${min} ms; longest ${cpu} / ${wall} ms`,
+  );
 }
 console.log(
   `\nworst task ${worst} ms of main-thread CPU (goal < ${min} ms): ${summary.met ? 'met' : 'NOT met'}`,
