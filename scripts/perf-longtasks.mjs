@@ -3,12 +3,19 @@
  * Long main-thread tasks at the largest sample counts: every scene opened with each of its count
  * parameters at the maximum its URL schema allows (every integer parameter of `src/scenes/<id>/params.ts`
  * but the seed and the timeline's t), then a storm of seed changes (200 hash changes, as fast as
- * the page takes them), plus the heaviest point set of the hemisphere at 10⁶ samples. The goal:
- * no task over 50 ms, anywhere. A benchmark, not a test (tests/e2e/storm.spec.ts checks only
- * that the last change of such a storm wins); writes bench/longtasks.json.
+ * the page takes them), plus the heaviest point set of the hemisphere at 10⁶ samples. The "mixed"
+ * storm (--mixed, 40 changes) embeds the scene in a host page's frame and changes the seed through
+ * every way its address changes (./addressStorm.ts: a typed hash, a pasted link, back, forward, the
+ * host API's `set`), on every seeded scene at its largest counts and on #/hemisphere at n = 200 000.
+ * The goal: no task over 50 ms, anywhere. A benchmark, not a test (tests/e2e/storm.spec.ts and
+ * tests/e2e/address-storm.spec.ts check only that the last change of such a storm wins); writes
+ * bench/longtasks.json and prints, per route, the tasks over the goal and the longest.
  *
  *   npm run perf:longtasks, or npm run build && node scripts/perf-longtasks.mjs [--dist dist] [--port 4422] [--changes 200]
- *     [--scenes hemisphere,monte-carlo] [--js] [--min 50] [--out bench/longtasks.json]
+ *     [--mixed 40] [--scenes hemisphere,monte-carlo] [--case mixed] [--at 0.5] [--js] [--min 50]
+ *     [--out bench/longtasks.json]
+ * (--case: only the cases whose name contains the text; --at: the storms run with the page
+ * scrolled to that fraction of its height, 0 = the top.)
  *
  * Durations come from a Chromium trace of the page's main thread: `cpu` is the thread's own CPU
  * time inside each task (the trace's thread duration), which a machine busy with other work barely
@@ -27,6 +34,7 @@ import { serveDist, takeOpt, traceProfileSamples } from './cpuprofile.mjs';
 const load = async (rel) => (await runnerImport(new URL(rel, import.meta.url).pathname)).module;
 const { pageMainThread, threadEvents, topLevelTasks, startTrace, stopTrace, TASK_CATEGORIES } =
   await load('./traceTasks.ts');
+const { HOST_PATH, hostPage, addressStorm } = await load('./addressStorm.ts');
 
 const args = process.argv.slice(2);
 const dist = takeOpt(args, '--dist', 'dist');
@@ -36,6 +44,14 @@ const only = takeOpt(args, '--scenes', '');
 const min = Number(takeOpt(args, '--min', '50'));
 const out = takeOpt(args, '--out', 'bench/longtasks.json');
 const withJs = args.includes('--js');
+// with --js: how many functions the whole storm's summary lists
+const jsTop = Number(takeOpt(args, '--top', '15'));
+// the mixed storm: seed changes through every way the address can change (./addressStorm.ts)
+const mixedChanges = Number(takeOpt(args, '--mixed', '40'));
+// --case TEXT: only the cases whose name contains TEXT
+const caseFilter = takeOpt(args, '--case', '');
+// --at F: the storms run with the page scrolled to F of its height (0: the top)
+const at = Number(takeOpt(args, '--at', '0'));
 // --defaults: every scene at its default counts instead (what the same cases cost at the usual n)
 const atDefaults = args.includes('--defaults');
 
@@ -61,10 +77,23 @@ for (const s of SCENES) {
   const { query, seeded } = await maxCounts(s.id);
   const base = `#${s.path}${query && !atDefaults ? `?${query}` : '?'}`;
   cases.push({ scene: s.id, name: 'load', hash: base });
-  if (seeded) cases.push({ scene: s.id, name: `${changes} seed changes`, hash: base, storm: 'seed' });
-  // the hemisphere's slowest point set to generate (Sobol', Owen-scrambled) at its largest n
-  if (s.id === 'hemisphere') cases.push({ scene: s.id, name: 'load, Sobol', hash: `${base}&points=sobol` });
+  if (seeded) {
+    cases.push({ scene: s.id, name: `${changes} seed changes`, hash: base, storm: 'seed' });
+    cases.push({ scene: s.id, name: `${mixedChanges} mixed changes`, hash: base, storm: 'mixed' });
+  }
+  if (s.id === 'hemisphere') {
+    // the hemisphere's slowest point set to generate (Sobol', Owen-scrambled) at its largest n
+    cases.push({ scene: s.id, name: 'load, Sobol', hash: `${base}&points=sobol` });
+    // the storm as a reader meets it at n = 200 000, every section on the page mounted
+    cases.push({
+      scene: s.id,
+      name: `${mixedChanges} mixed, n=200000`,
+      hash: `#${s.path}?n=200000`,
+      storm: 'mixed',
+    });
+  }
 }
+const kept = caseFilter ? cases.filter((c) => c.name.includes(caseFilter)) : cases;
 
 const CATEGORIES = [
   ...TASK_CATEGORIES,
@@ -82,6 +111,35 @@ function tasksOf(events) {
   const { nodes, samples } = withJs ? traceProfileSamples(events, main) : { nodes: new Map(), samples: [] };
   const label = (n) =>
     `${n.callFrame.functionName || '(anon)'} ${String(n.callFrame.url).replace(/^.*\/assets\//, '')}:${n.callFrame.lineNumber + 1}`;
+  /** The JS samples between two trace times: the top `k` functions by self and by inclusive count. */
+  const jsBetween = (from, to, k) => {
+    const self = new Map();
+    const incl = new Map();
+    for (const [time, id] of samples) {
+      if (time < from || time > to) continue;
+      const n = nodes.get(id);
+      if (!n || /^\((idle|program|root)\)$/.test(n.callFrame.functionName)) continue;
+      self.set(label(n), (self.get(label(n)) ?? 0) + 1);
+      const seen = new Set();
+      for (let x = n; x; x = nodes.get(x.parent)) {
+        if (
+          !/\/assets\//.test(String(x.callFrame.url)) ||
+          /\/assets\/(jsx-runtime|vendor-)/.test(x.callFrame.url)
+        )
+          continue;
+        const key = label(x);
+        if (seen.has(key)) continue;
+        seen.add(key);
+        incl.set(key, (incl.get(key) ?? 0) + 1);
+      }
+    }
+    const top = (m) =>
+      [...m]
+        .sort((a, b) => b[1] - a[1])
+        .slice(0, k)
+        .map(([key, c]) => `${key} ×${c}`);
+    return { self: top(self), incl: top(incl) };
+  };
   for (const t of tasks) {
     if (Math.max(t.cpu, t.wall) < min) continue;
     const end = t.ts + t.wall * 1000;
@@ -100,36 +158,10 @@ function tasksOf(events) {
       .sort((a, b) => b[1] - a[1])
       .slice(0, 5)
       .map(([k, d]) => `${k} ${d.toFixed(1)}`);
-    if (withJs) {
-      const self = new Map();
-      const incl = new Map();
-      for (const [time, id] of samples) {
-        if (time < t.ts || time > end) continue;
-        const n = nodes.get(id);
-        if (!n || /^\((idle|program|root)\)$/.test(n.callFrame.functionName)) continue;
-        self.set(label(n), (self.get(label(n)) ?? 0) + 1);
-        const seen = new Set();
-        for (let x = n; x; x = nodes.get(x.parent)) {
-          if (
-            !/\/assets\//.test(String(x.callFrame.url)) ||
-            /\/assets\/(jsx-runtime|vendor-)/.test(x.callFrame.url)
-          )
-            continue;
-          const k = label(x);
-          if (seen.has(k)) continue;
-          seen.add(k);
-          incl.set(k, (incl.get(k) ?? 0) + 1);
-        }
-      }
-      const top = (m) =>
-        [...m]
-          .sort((a, b) => b[1] - a[1])
-          .slice(0, 8)
-          .map(([k, c]) => `${k} ×${c}`);
-      t.self = top(self);
-      t.incl = top(incl);
-    }
+    if (withJs) Object.assign(t, jsBetween(t.ts, end, 8));
   }
+  // the whole trace's JavaScript by app function: what all the tasks together cost
+  if (withJs && tasks.length) tasks.js = jsBetween(tasks[0].ts, Infinity, jsTop);
   return tasks;
 }
 
@@ -157,7 +189,7 @@ const server = await serveDist(dist, port);
 const browser = await chromium.launch({ executablePath: exe, args: CHROMIUM_ARGS });
 const results = [];
 try {
-  for (const c of cases) {
+  for (const c of kept) {
     const context = await browser.newContext({
       viewport: { width: 1280, height: 900 },
       serviceWorkers: 'block',
@@ -167,37 +199,47 @@ try {
     page.on('pageerror', (e) => errors.push(e.message));
     page.on('console', (m) => m.type() === 'error' && errors.push(m.text()));
     const cdp = await context.newCDPSession(page);
-    const url = `http://127.0.0.1:${port}/app/${c.hash}`;
+    // the mixed storm drives the scene in a frame of a host page (its `set` comes from the parent)
+    const framed = c.storm === 'mixed';
+    if (framed)
+      await context.route(`http://127.0.0.1:${port}${HOST_PATH}`, (route) =>
+        route.fulfill({ contentType: 'text/html', body: hostPage(`/app/${c.hash}`) }),
+      );
+    const url = framed ? `http://127.0.0.1:${port}${HOST_PATH}` : `http://127.0.0.1:${port}/app/${c.hash}`;
     if (!c.storm) await startTrace(cdp, CATEGORIES);
     await page.goto(url);
-    await page.locator('main#main').waitFor({ timeout: 60_000 });
+    const app = framed ? page.frameLocator('#scene') : page;
+    await app.locator('main#main').waitFor({ timeout: 60_000 });
+    const target = framed ? page.frames().find((f) => f.url().includes('/app/')) : page;
+    const scrollThrough = async () => {
+      for (let y = 1; y <= 4; y++) {
+        await target.evaluate((f) => window.scrollTo(0, f * document.body.scrollHeight), y / 4);
+        await quiet(target, 15_000);
+      }
+    };
     if (!c.storm) {
       // the load: until the page is quiet, scrolled through once so every section mounts
       await quiet(page, 30_000);
-      for (let y = 1; y <= 4; y++) {
-        await page.evaluate((f) => window.scrollTo(0, f * document.body.scrollHeight), y / 4);
-        await quiet(page, 15_000);
-      }
+      await scrollThrough();
     } else {
-      for (let y = 1; y <= 4; y++) {
-        await page.evaluate((f) => window.scrollTo(0, f * document.body.scrollHeight), y / 4);
-        await quiet(page, 15_000);
-      }
-      await page.evaluate(() => window.scrollTo(0, 0));
-      await quiet(page, 30_000);
+      await scrollThrough();
+      await target.evaluate((f) => window.scrollTo(0, f * document.body.scrollHeight), at);
+      await quiet(target, 30_000);
       await startTrace(cdp, CATEGORIES);
-      // each change once the page has taken the last (a hash change and one animation frame)
-      await page.evaluate(
-        async ({ hash, n, param }) => {
-          const sep = hash.includes('?') ? '&' : '?';
-          for (let i = 1; i <= n; i++) {
-            window.location.hash = `${hash}${sep}${param}=${i + 1}`;
-            await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
-          }
-        },
-        { hash: c.hash, n: changes, param: c.storm },
-      );
-      await quiet(page, 60_000);
+      if (framed) await page.evaluate(addressStorm, { hash: c.hash, n: mixedChanges });
+      else
+        // each change once the page has taken the last (a hash change and one animation frame)
+        await page.evaluate(
+          async ({ hash, n, param }) => {
+            const sep = hash.includes('?') ? '&' : '?';
+            for (let i = 1; i <= n; i++) {
+              window.location.hash = `${hash}${sep}${param}=${i + 1}`;
+              await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
+            }
+          },
+          { hash: c.hash, n: changes, param: c.storm },
+        );
+      await quiet(target, 60_000);
     }
     const tasks = tasksOf(await stopTrace(cdp));
     const long = tasks.filter((t) => Math.max(t.cpu, t.wall) >= min);
@@ -221,6 +263,10 @@ try {
       console.log(`    ${t.cpu.toFixed(1)} cpu / ${t.wall.toFixed(1)} wall: ${t.inside.join(' | ')}`);
       if (t.self) console.log(`      self: ${t.self.join(' | ')}\n      app:  ${t.incl.join(' | ')}`);
     }
+    if (tasks.js)
+      console.log(
+        `  all tasks, by function (self):\n    ${tasks.js.self.join('\n    ')}\n  all tasks, app functions (inclusive):\n    ${tasks.js.incl.join('\n    ')}`,
+      );
     await context.close();
   }
 } finally {
@@ -243,6 +289,17 @@ const summary = {
 if (!only) {
   mkdirSync('bench', { recursive: true });
   writeFileSync(out, `${JSON.stringify(summary, null, 2)}\n`);
+}
+// per route: how many tasks over the goal (main-thread CPU) in all its cases, and the longest
+console.log('\nper route: tasks over the goal (cpu), longest (cpu / wall)');
+for (const scene of [...new Set(results.map((r) => r.scene))]) {
+  const rs = results.filter((r) => r.scene === scene);
+  const over = rs.reduce((s, r) => s + r.overMinCpu, 0);
+  const cpu = Math.max(...rs.map((r) => r.longestCpuMs));
+  const wall = Math.max(...rs.map((r) => r.longestWallMs));
+  console.log(
+    `  #/${scene.padEnd(12)} ${String(over).padStart(3)} over ${min} ms; longest ${cpu} / ${wall} ms`,
+  );
 }
 console.log(
   `\nworst task ${worst} ms of main-thread CPU (goal < ${min} ms): ${summary.met ? 'met' : 'NOT met'}`,

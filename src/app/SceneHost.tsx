@@ -18,6 +18,7 @@ import { usePageKey } from '../ui/pageKeys';
 import { QuestionNav } from '../ui/QuestionNav';
 import { ParamNotice } from '../ui/RouteNotice';
 import { useHostScene } from './hostBridge';
+import { paramChanges } from './paramChanges';
 import { fullAppHref, linkSafeValues, ShareBar } from './ShareBar';
 import { SceneErrorBoundary } from './SceneErrorBoundary';
 import { useScrollToPart } from './useScrollToPart';
@@ -165,12 +166,28 @@ function LoadedScene({
   // the values the scene opened with: "r" (classroom shortcut) always goes back to them
   const opening = useRef(parsed.values);
   const lastQuery = useRef(query);
-  // A hashchange (typed URL, back/forward) re-parses; our own replaceState does not trigger it.
+  // the latest values asked for, ahead of the render that shows them (./paramChanges)
+  const [changes] = useState(() => paramChanges(parsed.values));
+  // A hashchange on this page (typed or pasted link, back/forward) takes the address's values at
+  // once, in the event (our own replaceState does not fire it); the scene re-renders as a
+  // transition, in slices that yield (see useHashRoute).
   useEffect(() => {
-    if (lastQuery.current === query) return;
-    lastQuery.current = query;
-    setValues(parsed.values);
-    setProblems([...flags.problems, ...partProblem, ...parsed.problems]);
+    const on = () => {
+      const { path, query: q } = parseHash(window.location.hash);
+      if (path !== info.path || q === lastQuery.current) return;
+      lastQuery.current = q;
+      const next = changes.fromAddress(parseParams(schema, q).values);
+      startTransition(() => setValues(next));
+    };
+    window.addEventListener('hashchange', on);
+    return () => window.removeEventListener('hashchange', on);
+  }, [info.path, schema, changes]);
+  // the notice of values the address could not use follows the query the shell renders
+  const problemsFor = useRef(query);
+  useEffect(() => {
+    if (problemsFor.current === query) return;
+    problemsFor.current = query;
+    startTransition(() => setProblems([...flags.problems, ...partProblem, ...parsed.problems]));
   }, [query, parsed, flags.problems, partProblem]);
 
   const part = flags.part && info.parts.includes(flags.part) ? flags.part : null;
@@ -200,23 +217,20 @@ function LoadedScene({
   usePageKey('v', reveal, asking);
   const askText = useAskText(info, query, part, flags.ask);
 
-  const valuesRef = useRef(values);
-  valuesRef.current = values;
   // The values the link carries: typed expressions enter it only once they have compiled (a link
   // must never carry an expression that was not checked; see linkSafeValues).
   const [linkValues, setLinkValues] = useState(values);
-  const writeSeq = useRef(0);
   useEffect(() => setLinkValues(parsed.values), [parsed]);
   const setParams = useCallback(
     (patch: Record<string, unknown>) => {
       // only values the schema allows reach the scene and the URL (a select set to a missing
       // option, a NaN from a cleared number field, a key that is not a parameter: dropped)
-      const next = { ...valuesRef.current, ...sanitizePatch(schema, patch) } as ParamValues<ParamSchema>;
-      valuesRef.current = next;
+      const { values: next, latest } = changes.patch(
+        sanitizePatch(schema, patch) as ParamValues<ParamSchema>,
+      );
       setValues(next);
-      const seq = ++writeSeq.current;
       void linkSafeValues(schema, next).then((safe) => {
-        if (seq !== writeSeq.current) return; // a newer change will write the URL
+        if (!latest()) return; // a newer change wrote, or will write, the URL
         setLinkValues(safe);
         const qs = serializeParams(schema, safe, shellExtras({ ...flags, ask: askingRef.current }));
         const hash = `#${info.path}${qs ? `?${qs}` : ''}`;
@@ -228,7 +242,7 @@ function LoadedScene({
         lastQuery.current = qs;
       });
     },
-    [schema, flags, info.path],
+    [schema, flags, info.path, changes],
   );
   // `r`: the opening values. A playing animation pauses first, and where it stopped is rendered
   // before the opening values are: its timeline reads a change of `t` against the position it last
@@ -243,7 +257,7 @@ function LoadedScene({
   }, [setParams]);
   useShortcuts({ reset });
 
-  const getValues = useCallback(() => valuesRef.current, []);
+  const getValues = useCallback(() => changes.current(), [changes]);
   useHostScene(
     { id: info.id, route: info.path, schema, getValues, setParams, checkValues: mod.checkValues },
     values,

@@ -21,6 +21,7 @@
  * (0/1) and `t` parameters, so they work on scenes whose schema has them and answer an error
  * naming the parameter elsewhere.
  */
+import { startTransition } from 'react';
 import {
   parseParams,
   serializeParams,
@@ -262,7 +263,8 @@ async function applySetNow(id: unknown, origin: string, params: unknown): Promis
     reply(id, origin, { ok: false, error: 'Not applied: the page changed to another scene meanwhile.' });
     return;
   }
-  if (Object.keys(r.patch).length) now.setParams(r.patch);
+  // the scene re-renders as a transition: in slices that yield, however fast a host sets
+  if (Object.keys(r.patch).length) startTransition(() => now.setParams(r.patch));
   // the state after the change (the shell updates the values synchronously in setParams)
   const state = hostState(now);
   reply(id, origin, { ok: true, state });

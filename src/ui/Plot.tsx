@@ -1,5 +1,5 @@
 import { useEffect, useId, useMemo, useRef, useState } from 'react';
-import { touchOnly, useSeenOnce } from './useInView';
+import { observeVisibility, touchOnly, useSeenOnce } from './useInView';
 import { resolveTraceColors } from './palette';
 import { isPresent } from './pageKeys';
 import './plot.css';
@@ -129,9 +129,14 @@ function presentTicks(layout: PlotLayout): void {
   }
 }
 
+/** How far outside the viewport a plot still redraws on a change: one screen above and below. */
+const NEAR_VIEW = '100% 0px';
+
 /**
  * A lazy Plotly plot: plotly.js loads only when the plot scrolls near the viewport; updates go
- * through Plotly.react in an effect (cheap diffing); the plot is purged on unmount.
+ * through Plotly.react in an effect (cheap diffing); the plot is purged on unmount. A plot far off
+ * screen does not redraw on every change (a storm of changes would redraw every plot of the page
+ * each time): it draws its latest data when it comes back near the viewport.
  */
 export function Plot({ data, layout, height = 280, ariaLabel, label, description, testId }: PlotProps) {
   const descId = `${useId()}-description`;
@@ -140,6 +145,13 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
   const seen = useSeenOnce(box);
   const [plotly, setPlotly] = useState<PlotlyModule | null>(null);
   const [failed, setFailed] = useState(false);
+  const [near, setNear] = useState(true);
+  useEffect(() => {
+    const node = box.current;
+    return node ? observeVisibility(node, setNear, NEAR_VIEW) : undefined;
+  }, []);
+  /** The inputs of the last redraw that ran (a plot back in view with the same ones draws nothing). */
+  const drawnFor = useRef<readonly unknown[] | null>(null);
   const themeKey =
     typeof document !== 'undefined'
       ? `${document.documentElement.dataset.theme}-${document.documentElement.classList.contains('present')}`
@@ -165,7 +177,9 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
   layoutRef.current = layout;
 
   useEffect(() => {
-    if (!plotly || !el.current) return;
+    if (!plotly || !el.current || !near) return;
+    const inputs = [plotly, clean, layoutKey, height, themeKey] as const;
+    if (drawnFor.current?.every((x, i) => x === inputs[i])) return;
     const layout = layoutRef.current;
     const c = themeColors();
     // mathematical axes: powers of ten (1×10⁻⁶), never SI prefixes (1µ)
@@ -199,6 +213,7 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
     pending.current = new Promise<void>((resolve) => (settle = resolve));
     const cancel = runChunked(() => {
       started = true;
+      drawnFor.current = inputs;
       plotly
         .react(node, resolveTraceColors(clean.data), resolveTraceColors(merged), {
           ...PLOT_CONFIG,
@@ -213,7 +228,7 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
       cancel();
       if (!started) settle();
     };
-  }, [plotly, clean, layoutKey, height, themeKey]);
+  }, [plotly, clean, layoutKey, height, themeKey, near]);
 
   // Purge only after the last react() has settled and its follow-up redraws (Plotly's auto-margin
   // pass) have run: purging a plot mid-update makes Plotly throw "e.emit is not a function" from

@@ -77,8 +77,8 @@ export function Stage({ children, staged, controls }: StageProps) {
   const ref = useRef<HTMLDivElement>(null);
   const { full, toggle } = useFullscreen(ref);
   useStageTop(ref, staged);
-  const [canFull, setCanFull] = useState(false);
-  useEffect(() => setCanFull(fullscreenAvailable()), []);
+  // known in the first render: a button that appeared after it pushed the whole figure down
+  const [canFull] = useState(fullscreenAvailable);
   return (
     <div
       ref={ref}

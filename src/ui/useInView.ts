@@ -29,15 +29,25 @@ export function useSeenOnce(ref: RefObject<Element | null>, margin = '200px'): b
   return seen;
 }
 
-/** Live visibility (not sticky): used to pause rendering while a view is off screen. */
-export function observeVisibility(el: Element, onChange: (visible: boolean) => void): () => void {
+/**
+ * Live visibility (not sticky): used to pause rendering while a view is off screen (`margin`: how
+ * far outside the viewport still counts, as IntersectionObserver's rootMargin).
+ */
+export function observeVisibility(
+  el: Element,
+  onChange: (visible: boolean) => void,
+  margin = '0px',
+): () => void {
   if (typeof IntersectionObserver !== 'function') {
     onChange(true);
     return () => {};
   }
-  const io = new IntersectionObserver((entries) => {
-    for (const e of entries) onChange(e.isIntersecting);
-  });
+  const io = new IntersectionObserver(
+    (entries) => {
+      for (const e of entries) onChange(e.isIntersecting);
+    },
+    { rootMargin: margin },
+  );
   io.observe(el);
   return () => io.disconnect();
 }

@@ -88,8 +88,8 @@ export function HemisphereView({
     material: THREE.PointsMaterial;
     morph: { value: number };
     grid: THREE.LineSegments<THREE.BufferGeometry, THREE.LineBasicMaterial> | null;
-    /** The grid's vertices in the square (s = 0) and on the hemisphere (s = 1). */
-    gridEnds: { a: Float64Array; b: Float64Array } | null;
+    /** The grid's vertices in the square (s = 0) and on the hemisphere (s = 1), for `lobe`. */
+    gridEnds: { a: Float64Array; b: Float64Array; lobe: Lobe } | null;
     stratum: StratumLayer;
   } | null>(null);
   const fill = useRef<Fill>({ filled: 0, uploaded: 0, target: frame.shown });
@@ -239,7 +239,7 @@ export function HemisphereView({
     lines.visible = cfg.current.showGrid;
     ctx.scene.add(lines);
     o.grid = lines;
-    o.gridEnds = { a: g0.pos, b: g1.pos };
+    o.gridEnds = { a: g0.pos, b: g1.pos, lobe: cfg.current.lobe };
   };
 
   const setup = (ctx: ViewportContext) => {
@@ -363,7 +363,7 @@ export function HemisphereView({
     };
   };
 
-  // the point set changed: the buffers start over, the grid is rebuilt (latest closures in refs)
+  // the point set changed: the buffers start over; the grid (the lobe's alone) stays for a new seed
   const onPointsChange = useRef(() => {});
   onPointsChange.current = () => {
     const o = objs.current;
@@ -378,7 +378,7 @@ export function HemisphereView({
       Object.assign(o, b);
       fill.current.filled = fill.current.uploaded = 0;
     }
-    buildGrid();
+    if (o.gridEnds?.lobe !== lobe) buildGrid();
     performance.clearMeasures?.('hemisphere-grow');
     restartStream(RESTART_MS);
     apply();

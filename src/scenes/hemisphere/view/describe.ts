@@ -28,8 +28,19 @@ function shapeText(s: MarginalShape, v: 'θ' | 'φ', lowEnd: string, highEnd: st
   return `${where} (median ${v} = ${num(s.median)} rad)`;
 }
 
-/** Where the samples of a lobe bunch up, from its marginals: "around θ = 0.785 rad (…) and towards φ = 2π (…)". */
+const bunchText = new WeakMap<Lobe, string>();
+
+/**
+ * Where the samples of a lobe bunch up, from its marginals: "around θ = 0.785 rad (…) and towards
+ * φ = 2π (…)". Kept per lobe: the figure's description asks again at every change of seed or t.
+ */
 export function whereTheyBunch(lobe: Lobe): string {
+  let text = bunchText.get(lobe);
+  if (text === undefined) bunchText.set(lobe, (text = bunchOf(lobe)));
+  return text;
+}
+
+function bunchOf(lobe: Lobe): string {
   const th = marginalShape(lobe.thetaPdf, 0, HALF_PI);
   const ph = marginalShape(lobe.phiPdf, 0, TWO_PI);
   return `${shapeText(th, 'θ', 'towards the pole (θ = 0)', 'towards the rim (θ = π/2)')} and ${shapeText(
