@@ -57,11 +57,15 @@ test('every preset link opens its scene with all its parameters used, on its par
     await expect(page.getByTestId('param-notice'), href).toHaveCount(0);
     await expect(page.locator('.notice-error'), href).toHaveCount(0);
     await expect(page.getByTestId('copy-link')).toBeVisible();
-    // it lands on its part (scrolled to and focused) …
-    if (p.part) await expect(page.locator(`#part-${p.part}`), href).toBeFocused();
-    // … asks its own question before revealing, or shows everything at once
-    if (p.askFirst) await expect(page.getByTestId('ask-prompt-text'), href).toHaveText(p.ask);
-    else await expect(page.getByTestId('ask-prompt'), href).toHaveCount(0);
+    // asking, it lands with its own question on the screen (the room predicts first); showing
+    // everything at once, it lands on its part (scrolled to and focused)
+    if (p.askFirst) {
+      await expect(page.getByTestId('ask-prompt-text'), href).toHaveText(p.ask);
+      await expect(page.getByTestId('ask-prompt-text'), href).toBeInViewport();
+    } else {
+      await expect(page.getByTestId('ask-prompt'), href).toHaveCount(0);
+      if (p.part) await expect(page.locator(`#part-${p.part}`), href).toBeFocused();
+    }
     // … and holds its animation where the link says (or, asking, hides its transport until revealed;
     // what a scene does on Reveal, e.g. play what was predicted, is the scene's own test)
     if (p.params.t !== undefined) {
