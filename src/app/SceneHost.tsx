@@ -249,12 +249,12 @@ function LoadedScene({
   // wrote, so it then moves to the opening t (a pause and the opening t in one render would leave
   // it where it stopped, t being unchanged since it started playing).
   const reset = useCallback(() => {
-    if ((valuesRef.current as Record<string, unknown>).play === true) {
+    if ((changes.current() as Record<string, unknown>).play === true) {
       flushSync(() => setParams({ play: false }));
       flushSync(() => setParams({}));
     }
     setParams({ ...opening.current });
-  }, [setParams]);
+  }, [setParams, changes]);
   useShortcuts({ reset });
 
   const getValues = useCallback(() => changes.current(), [changes]);
