@@ -203,3 +203,16 @@ export function defaultView(id: RenderSceneId): View {
   if (id === 'veach') return { eye: VEACH_EYE, look: [0, 0.4, 0.9], fov: 42 };
   return { eye: [0, -6, 3.5], look: [0, 0, 0.6], fov: 45 };
 }
+
+/** A scene as plain data (what crosses to a worker): which preset, and the exam scene's parameters. */
+export interface RenderSpec {
+  scene: RenderSceneId;
+  exam: ExamSceneParams;
+}
+
+/** The scene a spec describes. */
+export function buildScene(spec: RenderSpec): RenderScene {
+  if (spec.scene === 'furnace') return furnaceScene();
+  if (spec.scene === 'veach') return veachScene();
+  return examScene(spec.exam);
+}
