@@ -123,4 +123,36 @@ describe('Veach’s scene', () => {
     for (const mis of ['mis-balance', 'mis-power'])
       for (const single of ['bsdf', 'solid-angle']) expect(err[mis]).toBeLessThan(err[single]);
   });
+
+  it('inspects a glossy plate against a converged reference, for both of MIS’s techniques', () => {
+    const view = defaultView('veach');
+    let found = 0;
+    for (let j = 0; j < 48 && found < 2; j += 3) {
+      const ins = inspectPixel(veachScene(), view, 40, j, {
+        width: 64,
+        height: 48,
+        seed: 6,
+        strategy: 'bsdf',
+        bounces: 2,
+        pn: 16,
+      });
+      if (ins.hit !== 'plate') continue;
+      found++;
+      expect(ins.albedo).toBeNull();
+      expect(ins.u).toBeNull();
+      for (const strategy of ['bsdf', 'solid-angle'] as const) {
+        const r = inspectPixel(veachScene(), view, 40, j, {
+          width: 64,
+          height: 48,
+          seed: 6,
+          strategy,
+          bounces: 2,
+          pn: 2048,
+        });
+        expect(r.referenceKind).toBe('converged');
+        expect(Math.abs(r.estimate - r.reference)).toBeLessThan(4 * Math.hypot(r.stderr, r.referenceStderr));
+      }
+    }
+    expect(found).toBe(2);
+  });
 });
