@@ -14,7 +14,8 @@ import { inspectOptions, type InspectArgs, type ReferenceArgs } from './jobArgs'
 const tasks = {
   tile: (a: TileJobArgs, progress: ProgressFn<TileResult>) =>
     renderTileJob(a, async (r, fraction) => {
-      progress(fraction, r);
+      // progress transfers its arrays, and the last pass's are also the task's result: post copies
+      progress(fraction, { ...r, sum: r.sum.slice(), count: r.count.slice() });
       await yieldToEventLoop();
     }),
   inspect: (a: InspectArgs) => inspectPixel(buildScene(a.spec), a.view, a.px[0], a.px[1], inspectOptions(a)),

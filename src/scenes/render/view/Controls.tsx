@@ -63,20 +63,20 @@ export function Controls({
         'Direct-light strategy',
         STRATEGIES.map((s) => ({ value: s, label: s })),
       )}
-      {b.slider('bounces', 'Bounces (1 = direct light only)')}
-      {b.slider('spp', 'Samples per pixel', { log: true, max: 4096 })}
-      {b.slider('res', 'Image side (pixels)', { step: 16 })}
-      {b.number('seed', 'Seed')}
-      {b.number('pn', 'Inspector samples')}
-      {b.toggle('play', 'Render')}
+      {b.slider('bounces', 'Bounces (1 = direct light only)', { testId: 'set-bounces' })}
+      {b.slider('spp', 'Samples per pixel', { log: true, max: 4096, testId: 'set-spp' })}
+      {b.slider('res', 'Image side (pixels)', { step: 16, testId: 'set-res' })}
+      {b.number('seed', 'Seed', { testId: 'set-seed' })}
+      {b.number('pn', 'Inspector samples', { testId: 'set-pn' })}
+      {b.toggle('play', 'Render', { testId: 'set-play' })}
       {exam ? (
         <>
-          {b.slider('rho', 'Floor albedo ρ')}
+          {b.slider('rho', 'Floor albedo ρ', { testId: 'set-rho' })}
           <VectorFields name="lc" label="Light centre" params={params} set={set} />
-          {b.slider('tilt', 'Light tilt (degrees)', { min: -90, max: 90 })}
-          {b.slider('L', 'Light radiance L', { min: 0, max: 20 })}
+          {b.slider('tilt', 'Light tilt (degrees)', { min: -90, max: 90, testId: 'set-tilt' })}
+          {b.slider('L', 'Light radiance L', { min: 0, max: 20, testId: 'set-L' })}
           <VectorFields name="c" label="Sphere centre" params={params} set={set} />
-          {b.slider('r', 'Sphere radius r', { min: 0.05, max: 3 })}
+          {b.slider('r', 'Sphere radius r', { min: 0.05, max: 3, testId: 'set-r' })}
           {b.select('filter', 'Texture filter', [
             { value: 'bilinear', label: 'bilinear' },
             { value: 'nearest', label: 'nearest' },
