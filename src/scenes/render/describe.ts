@@ -1,6 +1,6 @@
 /**
- * The image in words, for people who cannot see it: what the ray through the middle of each ninth
- * of the image (top left … bottom right) meets, the mean brightness and the samples per pixel.
+ * The image in words, for people who cannot see it: what the rays through each ninth of the image
+ * (top left … bottom right) meet, the mean brightness and the samples per pixel.
  * Computed from the scene and the camera, as the image is.
  */
 import { cameraRay, makeCamera } from '../../core/render/camera';
@@ -19,20 +19,32 @@ const NAMES: Record<HitKind, string> = {
   none: 'the background',
 };
 
-/** What each ninth of the image shows (row by row, top first): a hit kind per region. */
-export function regionsOf(scene: RenderScene, view: View, res: number): HitKind[] {
+/** Rays per side of each ninth of the image. */
+const PROBES = 4;
+
+/**
+ * What each ninth of the image shows (row by row, top first): the kinds of object that a 4 × 4
+ * grid of rays through that ninth meets, the most frequent first.
+ */
+export function regionsOf(scene: RenderScene, view: View, res: number): HitKind[][] {
   const cam = makeCamera(view, res, res);
   const d = new Float64Array(3);
   const hit = newHit();
-  const out: HitKind[] = [];
+  const o = view.eye;
+  const out: HitKind[][] = [];
   for (let r = 0; r < 3; r++)
     for (let c = 0; c < 3; c++) {
-      // the middle of region (c, r), in pixel coordinates
-      const x = ((c + 0.5) * res) / 3,
-        y = ((r + 0.5) * res) / 3;
-      cameraRay(cam, Math.floor(x), Math.floor(y), x - Math.floor(x), y - Math.floor(y), d);
-      const o = view.eye;
-      out.push(closestHit(scene, o[0], o[1], o[2], d[0], d[1], d[2], Infinity, hit));
+      const counts = new Map<HitKind, number>();
+      for (let b = 0; b < PROBES; b++)
+        for (let a = 0; a < PROBES; a++) {
+          // a point of region (c, r), in pixel coordinates
+          const x = ((c + (a + 0.5) / PROBES) * res) / 3,
+            y = ((r + (b + 0.5) / PROBES) * res) / 3;
+          cameraRay(cam, Math.floor(x), Math.floor(y), x - Math.floor(x), y - Math.floor(y), d);
+          const k = closestHit(scene, o[0], o[1], o[2], d[0], d[1], d[2], Infinity, hit);
+          counts.set(k, (counts.get(k) ?? 0) + 1);
+        }
+      out.push([...counts.entries()].sort((p, q) => q[1] - p[1]).map(([k]) => k));
     }
   return out;
 }
@@ -45,7 +57,9 @@ export function describeImage(
   stats: { spp: number; mean: number },
 ): string {
   const regions = regionsOf(scene, view, res);
-  const where = regions.map((k, n) => `${ROWS[Math.floor(n / 3)]} ${COLS[n % 3]}: ${NAMES[k]}`).join('; ');
+  const where = regions
+    .map((ks, n) => `${ROWS[Math.floor(n / 3)]} ${COLS[n % 3]}: ${ks.map((k) => NAMES[k]).join(' and ')}`)
+    .join('; ');
   const scenes = { exam: 'the exam scene', furnace: 'the white furnace', veach: 'Veach’s four plates' };
   const light =
     Number.isFinite(stats.mean) && stats.spp > 0

@@ -36,15 +36,17 @@ describe('pixel copy', () => {
 describe('the image in words', () => {
   it('says what each ninth of the image shows', () => {
     const regions = regionsOf(examScene(), defaultView('exam'), 64);
-    expect(regions[4]).toBe('sphere');
-    expect(regions[7]).toBe('floor');
-    expect(regionsOf(furnaceScene(), defaultView('furnace'), 64)[0]).toBe('none');
+    expect(regions[4][0]).toBe('sphere');
+    expect(regions[7]).toEqual(['floor']);
+    expect(regions.flat()).toContain('light');
+    expect(regionsOf(furnaceScene(), defaultView('furnace'), 64)[0][0]).toBe('none');
   });
 
   it('gives the size, the mean brightness and the samples per pixel', () => {
     const t = describeImage(examScene(), defaultView('exam'), 64, { spp: 3, mean: 0.25 });
     expect(t).toMatch(/^A 64 × 64 image of the exam scene\. Top left: /);
     expect(t).toContain('middle centre: the textured sphere');
+    expect(t).toContain('a light');
     expect(t).toContain('Mean brightness 0.25 (linear radiance) after 3 samples per pixel.');
     expect(describeImage(examScene(), defaultView('exam'), 64, { spp: 0, mean: NaN })).toContain(
       'No sample has arrived yet.',
