@@ -57,8 +57,9 @@ export function describeImage(
   stats: { spp: number; mean: number },
 ): string {
   const regions = regionsOf(scene, view, res);
+  const name = (k: HitKind) => (k === 'sphere' && !scene.sphere?.texture ? 'the sphere' : NAMES[k]);
   const where = regions
-    .map((ks, n) => `${ROWS[Math.floor(n / 3)]} ${COLS[n % 3]}: ${ks.map((k) => NAMES[k]).join(' and ')}`)
+    .map((ks, n) => `${ROWS[Math.floor(n / 3)]} ${COLS[n % 3]}: ${ks.map(name).join(' and ')}`)
     .join('; ');
   const scenes = { exam: 'the exam scene', furnace: 'the white furnace', veach: 'Veach’s four plates' };
   const light =

@@ -14,9 +14,9 @@ function href(path: string, q: Record<string, string>): string {
   return `#${path}?${new URLSearchParams(q).toString()}`;
 }
 
-/** The ray–sphere scene with the primary ray and the sphere (Q5). */
-export function raySphereHref(m: RenderModel, o: Vec3, d: Vec3): string {
-  return href('/ray-sphere', { o: list(o), d: list(d), c: list(m.spec.exam.c), r: String(m.spec.exam.r) });
+/** The ray–sphere scene with the primary ray and the scene's sphere (Q5). */
+export function raySphereHref(sphere: { center: Vec3; radius: number }, o: Vec3, d: Vec3): string {
+  return href('/ray-sphere', { o: list(o), d: list(d), c: list(sphere.center), r: String(sphere.radius) });
 }
 
 /** The texture scene at the looked-up (u, v) on the same grid (Q3). */

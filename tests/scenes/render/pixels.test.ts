@@ -51,5 +51,7 @@ describe('the image in words', () => {
     expect(describeImage(examScene(), defaultView('exam'), 64, { spp: 0, mean: NaN })).toContain(
       'No sample has arrived yet.',
     );
+    const furnace = describeImage(furnaceScene(), defaultView('furnace'), 64, { spp: 1, mean: 1 });
+    expect(furnace).toContain('middle centre: the sphere;');
   });
 });

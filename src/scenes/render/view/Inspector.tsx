@@ -7,6 +7,7 @@
  */
 import type { PixelInspection, SampleRow } from '../../../core/render/inspector';
 import type { Vec3 } from '../../../core/vec3';
+import { buildScene } from '../../../core/render/scene';
 import { formatNumber, formatPlain } from '../../../core/format';
 import { Readout } from '../../../ui';
 import { raySphereHref, sampleHref, textureHref } from '../links';
@@ -110,6 +111,7 @@ export function Inspector({
       </p>
     );
   const r = result;
+  const sphere = buildScene(m.spec).sphere;
   return (
     <div className="render-inspector" data-testid="pixel-inspector">
       <h3>
@@ -120,7 +122,8 @@ export function Inspector({
         <VectorReadout id="pixel-d" label="direction d" value={r.d} />
       </div>
       <h3>
-        The sphere’s quadratic (Q5) <a href={raySphereHref(m, r.o, r.d)}>in the ray–sphere scene</a>
+        The sphere’s quadratic (Q5){' '}
+        {sphere ? <a href={raySphereHref(sphere, r.o, r.d)}>in the ray–sphere scene</a> : null}
       </h3>
       <div className="readouts">
         <Readout id="pixel-discriminant" label="discriminant" value={r.discriminant} />
