@@ -1,6 +1,6 @@
 import { lazy, startTransition, Suspense, useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import { flushSync } from 'react-dom';
-import { predictPrompt, type SceneInfo } from '../kit/catalogue';
+import { predictPrompt, type PageInfo } from '../kit/catalogue';
 import { sceneLoader } from '../scenes/registry';
 import type { SceneModule } from '../kit/scene';
 import {
@@ -30,7 +30,7 @@ import './sceneHost.css';
 const A11yView = lazy(() => import('./A11yView'));
 
 interface Props {
-  info: SceneInfo;
+  info: PageInfo;
   query: string;
   flags: ShellFlags;
   theme: 'light' | 'dark';
@@ -138,7 +138,7 @@ function LoadedScene({
   theme,
 }: {
   mod: SceneModule;
-  info: SceneInfo;
+  info: PageInfo;
   query: string;
   flags: ShellFlags;
   theme: 'light' | 'dark';
@@ -302,7 +302,7 @@ const GENERIC_PROMPT = 'What will the scene show? Make your prediction, then rev
  * the link is one of its presets, else the catalogue's prompt for the part. The guide's texts load
  * (lazily, apart from the entry) only for ask=1.
  */
-function useAskText(info: SceneInfo, query: string, part: string | null, ask: boolean): string | null {
+function useAskText(info: PageInfo, query: string, part: string | null, ask: boolean): string | null {
   const [preset, setPreset] = useState<{ query: string; text: string | null } | null>(null);
   useEffect(() => {
     if (!ask) return;

@@ -6,7 +6,7 @@
  */
 import { sharedFlags, shareUrl } from '../kit/shareLink';
 import { useState } from 'react';
-import type { SceneInfo } from '../kit/catalogue';
+import type { PageInfo } from '../kit/catalogue';
 import type { SceneModule } from '../kit/scene';
 import { serializeParams, type ParamSchema, type ParamValues } from '../kit/params';
 import type { ShellFlags } from '../kit/shell';
@@ -15,7 +15,7 @@ import { QrButton } from './QrButton';
 import './sceneHost.css';
 
 /** The embedded page's "open the full app" link: the same scene and values, without embed=1. */
-export function fullAppHref(info: SceneInfo, query: string): string {
+export function fullAppHref(info: PageInfo, query: string): string {
   const sp = new URLSearchParams(query);
   sp.delete('embed');
   const q = sp.toString();
@@ -60,7 +60,7 @@ export function ShareBar({
   flags,
   asking,
 }: {
-  info: SceneInfo;
+  info: PageInfo;
   schema: SceneModule['schema'];
   values: ParamValues<ParamSchema>;
   flags: ShellFlags;

@@ -199,6 +199,35 @@ export interface SceneInfo extends SceneInfoSpec {
 
 export const SCENES: readonly SceneInfo[] = SCENE_LIST;
 
+/**
+ * The labs: pages routed like scenes (same shell, URL rules and share bar) that compose several exam
+ * answers instead of teaching one. They are not in {@link SCENES}, so the lists of exam scenes (the
+ * home page, the guide, the per-scene browser checks) do not include them.
+ */
+const LAB_LIST = [
+  {
+    id: 'render',
+    path: '/render',
+    title: 'The render lab',
+    questions: 'Q1–Q6',
+    blurb:
+      'A small progressive path tracer of the exam’s own objects, where every pixel opens onto the six answers at work.',
+    examQuery: '',
+    parts: [],
+    keyReadout: 'spp',
+  },
+] as const satisfies readonly SceneInfoSpec[];
+
+/** A lab's id, which is also its folder under src/scenes/ and its route. */
+export type LabId = (typeof LAB_LIST)[number]['id'];
+
+/** What the router knows of a page it hosts like a scene: an exam scene or a lab. */
+export interface PageInfo extends SceneInfoSpec {
+  id: SceneId | LabId;
+}
+
+export const LABS: readonly PageInfo[] = LAB_LIST;
+
 export const SCENE_IDS: readonly SceneId[] = SCENES.map((s) => s.id);
 
 export function isSceneId(s: string): s is SceneId {
@@ -209,9 +238,9 @@ export function sceneById(id: SceneId): SceneInfo {
   return SCENES.find((s) => s.id === id) as SceneInfo;
 }
 
-/** The scene at a hash path ('/texture'), if any. */
-export function findScene(path: string): SceneInfo | undefined {
-  return SCENES.find((s) => s.path === path);
+/** The scene or lab at a hash path ('/texture', '/render'), if any. */
+export function findScene(path: string): PageInfo | undefined {
+  return SCENES.find((s) => s.path === path) ?? LABS.find((s) => s.path === path);
 }
 
 export function questionInfo(n: number): QuestionInfo | undefined {
@@ -222,7 +251,7 @@ export function questionInfo(n: number): QuestionInfo | undefined {
  * The prediction prompt of an `ask=1` page: the one of `part` when it has one, else the scene's first
  * part's that has one; null when the scene asks nothing.
  */
-export function predictPrompt(scene: SceneInfo, part: string | null): string | null {
+export function predictPrompt(scene: SceneInfoSpec, part: string | null): string | null {
   const p = scene.predict;
   if (!p) return null;
   const own = part ? p[part] : undefined;

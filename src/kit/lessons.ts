@@ -352,7 +352,7 @@ export function presetScene(n: QuestionInfo['n'], p: LessonPreset): SceneInfo {
  * The `ask` text of the lesson preset whose link `query` is (its scene parameters exactly, whatever
  * the shell flags), or null: an `ask=1` page opened from the guide puts the preset's own question.
  */
-export function presetAskFor(scene: SceneId, query: string): string | null {
+export function presetAskFor(scene: string, query: string): string | null {
   let sp: URLSearchParams;
   try {
     sp = new URLSearchParams(query);

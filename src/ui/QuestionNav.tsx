@@ -2,7 +2,7 @@
  * Previous / next exam question links under every scene. Its own module, apart from the exam page
  * parts (./exam.tsx), because the shell draws it in the entry chunk and the parts load with scenes.
  */
-import { questionStart, type SceneInfo } from '../kit/catalogue';
+import { questionStart, type PageInfo } from '../kit/catalogue';
 import type { ShellFlags } from '../kit/shell';
 import './exam.css';
 
@@ -18,15 +18,16 @@ export function questionHref(q: number, flags: Pick<ShellFlags, 'present' | 'the
   return `#${start.scene.path}?${base}part=${start.part}${flagQuery(flags)}`;
 }
 
-/** Previous / next exam question links, under every scene (not in embeds). */
+/** Previous / next exam question links, under every scene (not in embeds; none under a lab). */
 export function QuestionNav({
   info,
   flags,
 }: {
-  info: SceneInfo;
+  info: PageInfo;
   flags: Pick<ShellFlags, 'present' | 'theme'>;
 }) {
   const qs = [...new Set(info.parts.map((p) => Number.parseInt(p, 10)))];
+  if (qs.length === 0) return null; // a lab: it teaches no one question
   const first = Math.min(...qs);
   const last = Math.max(...qs);
   const prev = first > 1 ? questionHref(first - 1, flags) : null;

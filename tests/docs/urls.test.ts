@@ -4,7 +4,7 @@
  */
 import { readFileSync, writeFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { SCENES } from '../../src/kit/catalogue';
+import { LABS, SCENES } from '../../src/kit/catalogue';
 import type { ParamSchema } from '../../src/kit/params';
 import {
   allowedText,
@@ -19,7 +19,7 @@ const DOC = new URL('../../docs/urls.md', import.meta.url);
 
 async function routes(): Promise<RouteSchema[]> {
   const out: RouteSchema[] = [];
-  for (const s of SCENES) {
+  for (const s of [...SCENES, ...LABS]) {
     const mod = (await import(`../../src/scenes/${s.id}/params.ts`)) as { schema: ParamSchema };
     out.push({ route: s.path, title: s.title, schema: mod.schema });
   }

@@ -1,0 +1,3 @@
+export { schema } from './params';
+export { default } from './RenderLab';
+export { checkValues } from './check';

@@ -1,0 +1,35 @@
+/**
+ * The plain-data arguments of the render worker's `inspect` and `reference` tasks, built from the
+ * page's model on the main thread (so the page and a test compute the same call).
+ */
+import type { InspectOptions } from '../../core/render/inspector';
+import type { TraceOptions } from '../../core/render/pathTrace';
+import type { RenderSpec, View } from '../../core/render/scene';
+import type { RenderModel } from './model';
+
+export interface ReferenceArgs {
+  spec: RenderSpec;
+  view: View;
+  res: number;
+  trace: TraceOptions;
+}
+
+export interface InspectArgs extends ReferenceArgs {
+  px: readonly [number, number];
+  seed: number;
+  pn: number;
+}
+
+export function referenceArgs(m: RenderModel): ReferenceArgs {
+  return { spec: m.spec, view: m.view, res: m.res, trace: m.trace };
+}
+
+/** The inspector's call for the model's pixel, or null when no pixel is inspected. */
+export function inspectArgs(m: RenderModel): InspectArgs | null {
+  return m.px ? { ...referenceArgs(m), px: m.px, seed: m.seed, pn: m.pn } : null;
+}
+
+/** The options inspectPixel receives for these arguments. */
+export function inspectOptions(a: InspectArgs): InspectOptions {
+  return { ...a.trace, width: a.res, height: a.res, seed: a.seed, pn: a.pn };
+}

@@ -1,0 +1,178 @@
+/**
+ * The progressive CPU render of the page: the image split into bands of rows, one worker per band
+ * (./jobs.ts), each adding one sample per pixel per pass in float64 and posting its band's sums
+ * after every pass. The main thread only merges the bands and, once per animation frame, copies
+ * the pixels into the canvas (./pixels.ts). A run starts when what the image depends on changes,
+ * runs only while `running` (the page's `play` and the canvas on screen) and stops at `spp`; a run
+ * stopped before its end starts again from its first pass when it may run again.
+ */
+import { useEffect, useRef, useState, type RefObject } from 'react';
+import { runWorkerTask, isCancelled } from '../../workers';
+import { mergeTile, splitRows } from '../../core/render/tileJob';
+import { newAccumulation, type Accumulation } from '../../core/render/cpuRenderer';
+import { relMse } from '../../core/render/relMse';
+import { makeRenderWorker } from './jobs';
+import { copyPixels, imageStats, pixelMeans } from './pixels';
+import type { RenderModel } from './model';
+
+export interface RenderProgress {
+  /** Samples every pixel has. */
+  spp: number;
+  /** Paths traced per second of wall time since the run started (NaN before the first pass). */
+  samplesPerSecond: number;
+  mean: number;
+  /** relMSE against the reference where it has values, and how many pixels entered it. */
+  relMse: number;
+  relMsePixels: number;
+  done: boolean;
+  error: string | null;
+}
+
+const EMPTY: RenderProgress = {
+  spp: 0,
+  samplesPerSecond: NaN,
+  mean: NaN,
+  relMse: NaN,
+  relMsePixels: 0,
+  done: false,
+  error: null,
+};
+
+/** Workers per render: the cores but one (the page's), at least one, at most four. */
+export function workerCount(cores: number | undefined): number {
+  return Math.max(1, Math.min(4, (cores ?? 2) - 1));
+}
+
+/** What the image depends on, as a string (a new one starts a new run). */
+export function renderKey(m: RenderModel): string {
+  const e = m.spec.exam;
+  return JSON.stringify([
+    m.spec.scene,
+    { ...e, grid: [e.grid.width, e.grid.height, Array.from(e.grid.values)] },
+    m.view,
+    m.trace,
+    m.res,
+    m.spp,
+    m.seed,
+  ]);
+}
+
+/** relMSE over the pixels whose reference is finite; NaN without one. */
+function errorAgainst(acc: Accumulation, reference: Float64Array | null): { e: number; n: number } {
+  if (!reference || reference.length !== acc.sum.length) return { e: NaN, n: 0 };
+  let n = 0;
+  for (let k = 0; k < reference.length; k++) if (Number.isFinite(reference[k])) n++;
+  return { e: n > 0 ? relMse(pixelMeans(acc.sum, acc.count), reference) : NaN, n };
+}
+
+export function useProgressiveRender(
+  canvasRef: RefObject<HTMLCanvasElement | null>,
+  m: RenderModel,
+  running: boolean,
+  reference: Float64Array | null,
+): RenderProgress {
+  const key = renderKey(m);
+  const [progress, setProgress] = useState<RenderProgress>(EMPTY);
+  const finished = useRef<string | null>(null);
+  const latest = useRef({ m, reference });
+  latest.current = { m, reference };
+  const accRef = useRef<Accumulation | null>(null);
+
+  // a new image: clear the canvas and the readouts
+  useEffect(() => {
+    finished.current = null;
+    accRef.current = null;
+    setProgress(EMPTY);
+    const c = canvasRef.current;
+    c?.getContext('2d')?.clearRect(0, 0, c.width, c.height);
+  }, [key, canvasRef]);
+
+  useEffect(() => {
+    if (!running || finished.current === key) return;
+    const { m: model } = latest.current;
+    const res = model.res;
+    const acc = newAccumulation(res, res);
+    accRef.current = acc;
+    const ctl = new AbortController();
+    const tiles = splitRows(res, res, workerCount(globalThis.navigator?.hardwareConcurrency));
+    const paths = tiles.map(() => 0);
+    const start = performance.now();
+    let frame = 0;
+    let image: ImageData | null = null;
+    const draw = () => {
+      frame = 0;
+      const ctx = canvasRef.current?.getContext('2d');
+      if (ctx) {
+        image ??= ctx.createImageData(res, res);
+        copyPixels(acc.sum, acc.count, image.data);
+        ctx.putImageData(image, 0, 0);
+      }
+      const stats = imageStats(acc.sum, acc.count);
+      const err = errorAgainst(acc, latest.current.reference);
+      const total = paths.reduce((a, b) => a + b, 0);
+      setProgress({
+        spp: stats.spp,
+        samplesPerSecond: total / ((performance.now() - start) / 1000),
+        mean: stats.mean,
+        relMse: err.e,
+        relMsePixels: err.n,
+        done: stats.spp >= model.spp,
+        error: null,
+      });
+    };
+    const schedule = () => {
+      if (!frame) frame = requestAnimationFrame(draw);
+    };
+    const runs = tiles.map((tile, n) =>
+      runWorkerTask(
+        makeRenderWorker,
+        'tile',
+        {
+          spec: model.spec,
+          view: model.view,
+          width: res,
+          height: res,
+          tile,
+          seed: model.seed,
+          spp: model.spp,
+          passSpp: 1,
+          ...model.trace,
+        },
+        {
+          signal: ctl.signal,
+          onProgress: (_f, partial) => {
+            if (!partial) return;
+            mergeTile(acc, partial);
+            paths[n] = partial.paths;
+            schedule();
+          },
+        },
+      ),
+    );
+    Promise.all(runs).then(
+      () => {
+        finished.current = key;
+        schedule();
+      },
+      (err: unknown) => {
+        if (isCancelled(err)) return;
+        ctl.abort();
+        setProgress((p) => ({ ...p, error: err instanceof Error ? err.message : String(err) }));
+      },
+    );
+    return () => {
+      ctl.abort();
+      if (frame) cancelAnimationFrame(frame);
+    };
+  }, [key, running, canvasRef]);
+
+  // a reference that arrives after the image has stopped still gives its error
+  useEffect(() => {
+    const acc = accRef.current;
+    if (!acc || !reference) return;
+    const err = errorAgainst(acc, reference);
+    setProgress((p) => (p.spp > 0 ? { ...p, relMse: err.e, relMsePixels: err.n } : p));
+  }, [reference]);
+
+  return progress;
+}

@@ -1,0 +1,71 @@
+// #/render in the browser: the pixel inspector's readouts are the core's inspector for the same
+// link (computed here in Node), and the progressive CPU render runs in workers to its spp while
+// the page answers input. The estimators, the renderer and the page's logic are unit tests
+// (tests/core/render/, tests/scenes/render/).
+import { test, expect, openScene, readout } from './fixtures';
+import { parseParams } from '../../src/kit/params';
+import { schema } from '../../src/scenes/render/params';
+import { buildRenderModel } from '../../src/scenes/render/model';
+import { inspectArgs, inspectOptions } from '../../src/scenes/render/jobArgs';
+import { inspectPixel } from '../../src/core/render/inspector';
+import { buildScene } from '../../src/core/render/scene';
+
+test('the pixel readouts are the core inspector’s for the link', async ({ page }) => {
+  const query = 'px=64,60&pn=1024&spp=1&res=128';
+  const m = buildRenderModel(parseParams(schema, query).values);
+  const a = inspectArgs(m)!;
+  const want = inspectPixel(buildScene(m.spec), m.view, a.px[0], a.px[1], inspectOptions(a));
+  expect(want.hit).toBe('sphere');
+  await openScene(page, `#/render?${query}`);
+  await expect(page.getByTestId('pixel-inspector')).toBeVisible({ timeout: 15_000 });
+  expect(await readout(page, 'pixel-hit')).toBe(want.hit);
+  expect(await readout(page, 'pixel-reference-kind')).toBe(want.referenceKind);
+  // numbers agree to the last few ulps: the browser's Math.sin, Math.pow … may round differently from Node's
+  const expected: Record<string, readonly number[]> = {
+    'pixel-o': want.o,
+    'pixel-d': want.d,
+    'pixel-discriminant': [want.discriminant!],
+    'pixel-t': [want.t!],
+    'pixel-p': want.p!,
+    'pixel-u': [want.u!],
+    'pixel-v': [want.v!],
+    'pixel-texel': [want.texel!],
+    'pixel-estimate': [want.estimate],
+    'pixel-stderr': [want.stderr],
+    'pixel-n': [want.n],
+    'pixel-reference': [want.reference],
+  };
+  for (const [id, xs] of Object.entries(expected)) {
+    const got = (await readout(page, id)).split(',').map(Number);
+    expect(got.length, id).toBe(xs.length);
+    got.forEach((g, k) =>
+      expect(Math.abs(g - xs[k]), `${id}[${k}] = ${g}, core ${xs[k]}`).toBeLessThanOrEqual(
+        1e-12 * Math.max(1, Math.abs(xs[k])),
+      ),
+    );
+  }
+  await expect(page.getByTestId('pixel-samples').locator('tbody tr')).toHaveCount(want.rows.length);
+});
+
+test('the progressive render reaches spp in workers while the page answers input', async ({ page }) => {
+  await openScene(page, '#/render?res=64&spp=24');
+  await expect(page.getByTestId('renderer')).toHaveAttribute('data-value', 'cpu');
+  // input while the workers render: a click on the image opens its pixel, the settings unfold
+  const canvas = page.getByTestId('render-canvas');
+  await canvas.click({ position: { x: 5, y: 5 } });
+  await page.getByText('Settings', { exact: true }).click();
+  await expect(page.getByTestId('render-settings')).toHaveAttribute('open', '');
+  await expect(page.getByTestId('pixel-hit')).toHaveAttribute('data-value', /^(floor|none|light|sphere)$/);
+  await expect(page.getByTestId('spp')).toHaveAttribute('data-value', '24', { timeout: 15_000 });
+  await expect(page.getByTestId('render-status')).toHaveText(/^Done: 24 samples per pixel\.$/);
+  expect(Number(await readout(page, 'samples-per-second'))).toBeGreaterThan(0);
+  // the canvas holds the image: its pixels are not all black
+  const lit = await canvas.evaluate((c: HTMLCanvasElement) => {
+    const d = c.getContext('2d')!.getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let k = 0; k < d.length; k += 4) if (d[k] > 0) n++;
+    return n;
+  });
+  expect(lit).toBeGreaterThan(64 * 64 * 0.5);
+  await expect(page.getByTestId('render-description')).toContainText('after 24 samples per pixel');
+});
