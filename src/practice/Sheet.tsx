@@ -132,10 +132,16 @@ export default function Sheet({ sp, flags }: { sp: URLSearchParams; flags: Shell
   useEffect(() => {
     document.title = `Practice worksheet (seed ${P.seed}) — Render Math Lab`;
   }, [P.seed]);
+  // The box shows the reader's click at once; the page follows the address, which a change on the
+  // same page re-renders as a transition (src/app/useHashRoute.ts), a moment later.
+  const [solutionsShown, setSolutionsShown] = useState(P.solutions);
+  useEffect(() => setSolutionsShown(P.solutions), [P.solutions]);
   const toggle = () => {
+    const on = !solutionsShown;
+    setSolutionsShown(on);
     const next = new URLSearchParams(sp);
-    if (P.solutions) next.delete('solutions');
-    else next.set('solutions', '1');
+    if (on) next.set('solutions', '1');
+    else next.delete('solutions');
     window.location.hash = `#/practice/sheet?${next.toString()}`;
   };
   const LmsSlot = practiceSlot('sheet');
@@ -156,7 +162,7 @@ export default function Sheet({ sp, flags }: { sp: URLSearchParams; flags: Shell
             Print
           </button>{' '}
           <label className="check-label">
-            <input type="checkbox" checked={P.solutions} onChange={toggle} data-testid="sheet-solutions" />{' '}
+            <input type="checkbox" checked={solutionsShown} onChange={toggle} data-testid="sheet-solutions" />{' '}
             Include worked solutions
           </label>
         </p>
