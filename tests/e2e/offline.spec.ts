@@ -7,13 +7,11 @@
  * Each test serves its own copy of the build on an ephemeral port, so it can stop the server and
  * "deploy" a new build without touching the shared one.
  */
-import { createServer, type Server } from 'node:http';
-import { cpSync, mkdtempSync, readFileSync, rmSync, writeFileSync, readdirSync } from 'node:fs';
-import { readFile, stat } from 'node:fs/promises';
-import { tmpdir } from 'node:os';
-import { extname, join, normalize } from 'node:path';
+import { cpSync, readFileSync, rmSync, writeFileSync, readdirSync } from 'node:fs';
+import { join } from 'node:path';
 import type { Page } from '@playwright/test';
 import { test, expect } from './fixtures';
+import { serveBuildCopy } from './buildCopy';
 import { settleLazyViews } from './lazyViews';
 import { cspViolations, injectScript, INJECTION_REFUSED, recordCspViolations } from './csp';
 import { withCsp } from '../../scripts/csp';
@@ -23,53 +21,6 @@ const dist = process.env.E2E_DIST ?? 'dist';
 
 // this file's tests need the service worker that the other specs block (playwright.config.ts)
 test.use({ serviceWorkers: 'allow' });
-const TYPES: Record<string, string> = {
-  '.html': 'text/html; charset=utf-8',
-  '.js': 'text/javascript; charset=utf-8',
-  '.css': 'text/css; charset=utf-8',
-  '.json': 'application/json',
-  '.webmanifest': 'application/manifest+json',
-  '.png': 'image/png',
-  '.svg': 'image/svg+xml',
-  '.woff2': 'font/woff2',
-  '.woff': 'font/woff',
-  '.ttf': 'font/ttf',
-};
-
-/** A static server of a private copy of the build at /app/; `stop()` closes it and every connection. */
-async function serveCopy(): Promise<{ dir: string; base: string; stop: () => Promise<void> }> {
-  const dir = mkdtempSync(join(tmpdir(), 'rml-offline-'));
-  cpSync(dist, dir, { recursive: true });
-  const server: Server = createServer(async (req, res) => {
-    try {
-      let path = decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname);
-      if (!path.startsWith('/app/')) throw new Error('outside');
-      path = path.slice(4);
-      if (path.endsWith('/')) path += 'index.html';
-      const file = normalize(join(dir, path));
-      if (!file.startsWith(dir) || !(await stat(file)).isFile()) throw new Error('missing');
-      res.writeHead(200, {
-        'content-type': TYPES[extname(file)] ?? 'application/octet-stream',
-        'cache-control': 'no-store',
-      });
-      res.end(await readFile(file));
-    } catch {
-      res.writeHead(404);
-      res.end();
-    }
-  });
-  await new Promise<void>((ok) => server.listen(0, '127.0.0.1', ok));
-  const port = (server.address() as { port: number }).port;
-  return {
-    dir,
-    base: `http://127.0.0.1:${port}/app/`,
-    stop: () =>
-      new Promise<void>((ok) => {
-        server.closeAllConnections();
-        server.close(() => ok());
-      }),
-  };
-}
 
 /** Wait until the service worker controls the page (it activates only after precaching everything). */
 async function waitForServiceWorker(page: Page): Promise<void> {
@@ -93,7 +44,7 @@ test('after one visit to #/, the whole build is cached, and scenes never opened 
   context,
 }) => {
   test.setTimeout(360_000);
-  const srv = await serveCopy();
+  const srv = await serveBuildCopy();
   try {
     await page.goto(`${srv.base}#/`);
     await expect(page.locator('main#main')).toBeVisible();
@@ -196,7 +147,7 @@ test('a deploy with three tabs: Reload moves its own tab to the new build, other
   page,
 }) => {
   test.setTimeout(300_000);
-  const srv = await serveCopy();
+  const srv = await serveBuildCopy();
   const context = page.context();
   const built = (p: Page) => p.locator('meta[name="rml-build"]');
   try {

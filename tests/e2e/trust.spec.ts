@@ -9,22 +9,11 @@
  *    could not be loaded, and after a deploy the page reloads once onto the new build and then says
  *    so: never a blank page.
  */
-import { createServer, type Server } from 'node:http';
-import {
-  copyFileSync,
-  cpSync,
-  mkdtempSync,
-  readdirSync,
-  readFileSync,
-  rmSync,
-  unlinkSync,
-  writeFileSync,
-} from 'node:fs';
-import { readFile, stat } from 'node:fs/promises';
-import { tmpdir } from 'node:os';
-import { extname, join, normalize } from 'node:path';
+import { copyFileSync, readdirSync, readFileSync, rmSync, unlinkSync, writeFileSync } from 'node:fs';
+import { join } from 'node:path';
 import { test as base, type Page } from '@playwright/test';
 import { test, expect } from './fixtures';
+import { serveBuildCopy } from './buildCopy';
 import { variantOf } from '../../src/lms/grade';
 import { expectedText } from '../../src/practice/check';
 import { allAnswers } from '../../src/practice/model';
@@ -113,50 +102,6 @@ test('#/results: busy in its worker, a dropped file waits its turn, Cancel keeps
   expect(await page.evaluate(() => '__rmlFuzz' in window)).toBe(false);
 });
 
-const TYPES: Record<string, string> = {
-  '.html': 'text/html; charset=utf-8',
-  '.js': 'text/javascript; charset=utf-8',
-  '.css': 'text/css; charset=utf-8',
-  '.json': 'application/json',
-  '.png': 'image/png',
-  '.svg': 'image/svg+xml',
-  '.woff2': 'font/woff2',
-};
-
-/** A static server of a private copy of the build at /app/ (so files can be removed or replaced). */
-async function serveCopy(): Promise<{ dir: string; base: string; close: () => Promise<void> }> {
-  const dir = mkdtempSync(join(tmpdir(), 'rml-trust-'));
-  cpSync(dist, dir, { recursive: true });
-  const server: Server = createServer(async (req, res) => {
-    try {
-      let path = decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname);
-      if (!path.startsWith('/app/')) throw new Error('outside');
-      path = path.slice(4);
-      if (path.endsWith('/')) path += 'index.html';
-      const file = normalize(join(dir, path));
-      if (!file.startsWith(dir) || !(await stat(file)).isFile()) throw new Error('missing');
-      res.writeHead(200, {
-        'content-type': TYPES[extname(file)] ?? 'application/octet-stream',
-        'cache-control': 'no-store',
-      });
-      res.end(await readFile(file));
-    } catch {
-      res.writeHead(404);
-      res.end();
-    }
-  });
-  await new Promise<void>((ok) => server.listen(0, '127.0.0.1', ok));
-  return {
-    dir,
-    base: `http://127.0.0.1:${(server.address() as { port: number }).port}/app/`,
-    close: () =>
-      new Promise<void>((ok) => {
-        server.closeAllConnections();
-        server.close(() => ok());
-      }),
-  };
-}
-
 /** Errors thrown in the page (a missing file's 404 is the test's doing, not the page's). */
 function pageErrors(page: Page): string[] {
   const errors: string[] = [];
@@ -167,7 +112,7 @@ function pageErrors(page: Page): string[] {
 base(
   'a route whose stylesheet is gone says so, and after a deploy reloads once onto the new build',
   async ({ page }) => {
-    const srv = await serveCopy();
+    const srv = await serveBuildCopy();
     try {
       const assets = join(srv.dir, 'assets');
       for (const f of readdirSync(assets))
@@ -207,7 +152,7 @@ base(
       expect(oldErrors).toEqual([]);
       expect(errors).toEqual([]);
     } finally {
-      await srv.close();
+      await srv.stop();
       rmSync(srv.dir, { recursive: true, force: true });
     }
   },
