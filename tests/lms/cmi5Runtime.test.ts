@@ -7,9 +7,8 @@ import { afterAll, beforeAll, beforeEach, describe, expect, it, vi } from 'vites
 import { NodeXhr } from './nodeXhr';
 import { recordStore, type RecordStore } from './recordStore';
 import type { Cmi5Session } from '../../src/lms/cmi5';
-import type { CheckRecord } from '../../src/practice/extensions';
+import { checkRecord } from './checkRecord';
 import { variantOf } from '../../src/lms/grade';
-import { expectedText } from '../../src/practice/check';
 import { allAnswers } from '../../src/practice/model';
 
 // the package's entry has no "main" Node resolves; its browser bundle is what the app ships
@@ -59,20 +58,7 @@ async function launch(learner: string, registration = 'r-1'): Promise<Cmi5Sessio
 
 /** A Check on the page with `right` answers right (the page's marks), through the extension. */
 async function check(s: Cmi5Session, right: number): Promise<boolean> {
-  const seed = s.state.byQuestion.get('q5')!.seed;
-  const answers = allAnswers(variantOf('q5', seed));
-  const r: CheckRecord = {
-    question: 'q5',
-    seed,
-    time: '2026-01-01T00:00:00Z',
-    answers: answers.map((a, i) => ({
-      name: a.name,
-      response: i < right ? expectedText(a) : '12345',
-      verdict: i < right ? 'correct' : 'incorrect',
-      message: '',
-    })),
-    marks: { earned: right, total: answers.length },
-  };
+  const r = checkRecord('q5', s.state.byQuestion.get('q5')!.seed, right, right);
   let done: Promise<boolean> = Promise.resolve(false);
   s.state.extension({ onCheck: (x) => (done = s.onCheck(x)), onInput: s.onInput }).onCheck!(r);
   return done;

@@ -9,8 +9,8 @@ import { Scorm12API, Scorm2004API } from 'scorm-again';
 import { connectScorm, type ScormSession } from '../../src/lms/scorm';
 import type { LmsConfig } from '../../src/lms/config';
 import type { CheckRecord } from '../../src/practice/extensions';
+import { checkRecord } from './checkRecord';
 import { variantOf } from '../../src/lms/grade';
-import { expectedText } from '../../src/practice/check';
 import { allAnswers, QUESTION_IDS, type QuestionId } from '../../src/practice/model';
 
 type Api = InstanceType<typeof Scorm12API> | InstanceType<typeof Scorm2004API>;
@@ -58,21 +58,7 @@ function connect(version: Version, api: Api, questions: QuestionId[]): ScormSess
 
 /** A check as the page reports it: `right` answers typed right, the others wrong, and its marks. */
 function checkOf(s: ScormSession, q: QuestionId, right: number, marks?: number, shown = false): CheckRecord {
-  const seed = s.state.byQuestion.get(q)!.seed;
-  const answers = allAnswers(variantOf(q, seed));
-  return {
-    question: q,
-    seed,
-    time: '2026-01-01T00:00:00Z',
-    answers: answers.map((a, i) => ({
-      name: a.name,
-      response: i < right ? expectedText(a) : '12345',
-      verdict: i < right ? 'correct' : 'incorrect',
-      message: '',
-    })),
-    marks: marks === undefined ? undefined : { earned: marks, total: answers.length },
-    forfeited: shown ? answers.map((a) => a.name) : undefined,
-  };
+  return checkRecord(q, s.state.byQuestion.get(q)!.seed, right, marks, shown);
 }
 
 /** A Check on the page: the practice extension records it, then the runtime reports it (as launch.ts). */
