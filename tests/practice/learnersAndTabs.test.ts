@@ -3,7 +3,7 @@
  * shared lab computer with two LMS learners, and a relaunch whose tab kept a newer draft than the
  * LMS.
  */
-import { afterEach, beforeEach, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { questionInfo } from '../../src/practice/questions';
 import { allAnswers, type Variant } from '../../src/practice/model';
 import { expectedText } from '../../src/practice/check';
@@ -13,21 +13,9 @@ import { loadDraft, openingAnswers, saveDraft } from '../../src/practice/drafts'
 import { setLearnerScope } from '../../src/practice/learnerScope';
 import { resetPractice } from '../../src/practice/reset';
 import { appendAttempt, loadAttempts, loadName, resultsFile, saveName } from '../../src/results/record';
-import { installWindow, MemoryStorage } from './memoryWindow';
+import { freshWindowEachTest } from './memoryWindow';
 
-let local: MemoryStorage;
-let session: MemoryStorage;
-let remove: () => void;
-beforeEach(() => {
-  local = new MemoryStorage();
-  session = new MemoryStorage();
-  remove = installWindow(local, session);
-  setLearnerScope(null);
-});
-afterEach(() => {
-  setLearnerScope(null);
-  remove();
-});
+const storage = freshWindowEachTest();
 
 const v: Variant = questionInfo('q5').generate(29);
 const right = () => Object.fromEntries(allAnswers(v).map((a) => [a.name, expectedText(a)]));
@@ -94,7 +82,9 @@ describe('a shared lab computer', () => {
     expect(loadName()).toBe('Ada');
     expect(loadAttempts()).toHaveLength(1);
     // nothing stored names the learner
-    expect([...local.data.keys(), ...session.data.keys()].join(' ')).not.toMatch(/ada|bob|lms\.test/i);
+    expect([...storage.local.data.keys(), ...storage.session.data.keys()].join(' ')).not.toMatch(
+      /ada|bob|lms\.test/i,
+    );
   });
 });
 
@@ -104,7 +94,7 @@ describe('a relaunch after a crash', () => {
     saveDraft('q5', 29, { a: '1', b: '2', c: '3', discriminant: '4' });
     expect(openingAnswers('q5', 29, () => kept)).toEqual({ a: '1', b: '2', c: '3', discriminant: '4' });
     // a new tab (no draft) opens with what the LMS kept; an empty draft does not hide it
-    session.data.clear();
+    storage.session.data.clear();
     expect(openingAnswers('q5', 29, () => kept)).toEqual(kept);
     saveDraft('q5', 29, { a: '' });
     expect(openingAnswers('q5', 29, () => kept)).toEqual(kept);

@@ -1,4 +1,7 @@
 /** A `window` with in-memory localStorage and sessionStorage, for the storage modules' tests. */
+import { afterEach, beforeEach } from 'vitest';
+import { setLearnerScope } from '../../src/practice/learnerScope';
+
 export class MemoryStorage {
   data = new Map<string, string>();
   getItem(k: string) {
@@ -28,4 +31,25 @@ export function installWindow(local = new MemoryStorage(), session = new MemoryS
     },
   };
   return () => delete g.window;
+}
+
+/**
+ * For a test file of the storage modules: before each test a fresh window of in-memory storages
+ * and no learner scope, both taken away after it. The object returned holds the current test's
+ * storages.
+ */
+export function freshWindowEachTest(): { local: MemoryStorage; session: MemoryStorage } {
+  const current = { local: new MemoryStorage(), session: new MemoryStorage() };
+  let remove = () => {};
+  beforeEach(() => {
+    current.local = new MemoryStorage();
+    current.session = new MemoryStorage();
+    remove = installWindow(current.local, current.session);
+    setLearnerScope(null);
+  });
+  afterEach(() => {
+    setLearnerScope(null);
+    remove();
+  });
+  return current;
 }

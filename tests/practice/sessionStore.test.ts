@@ -1,5 +1,5 @@
 /** A variant's marking state survives reloads and other tabs: forfeits, attempts and best marks. */
-import { afterEach, beforeEach, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import { questionInfo } from '../../src/practice/questions';
 import { allAnswers, type Variant } from '../../src/practice/model';
 import { expectedText } from '../../src/practice/check';
@@ -8,16 +8,9 @@ import { loadSession, saveSession, SESSIONS_KEY, withStored } from '../../src/pr
 import { resetPractice } from '../../src/practice/reset';
 import { loadScores, recordScore } from '../../src/practice/scores';
 import { setLearnerScope } from '../../src/practice/learnerScope';
-import { installWindow, MemoryStorage } from './memoryWindow';
+import { freshWindowEachTest } from './memoryWindow';
 
-let local: MemoryStorage;
-let remove: () => void;
-beforeEach(() => {
-  local = new MemoryStorage();
-  remove = installWindow(local);
-  setLearnerScope(null);
-});
-afterEach(() => remove());
+const storage = freshWindowEachTest();
 
 function rightAnswers(v: Variant): Record<string, string> {
   return Object.fromEntries(allAnswers(v).map((a) => [a.name, expectedText(a)]));
@@ -68,7 +61,7 @@ describe('marking state kept across reloads', () => {
   });
   it('junk under the key reads as a new session and is replaced on save', () => {
     for (const junk of ['{', '[]', '{"q3:11":{"p":{"x":[1e9,"a",3,9]},"a":5}}', 'null']) {
-      local.setItem(SESSIONS_KEY, junk);
+      storage.local.setItem(SESSIONS_KEY, junk);
       const s = loadSession(v);
       expect(Object.values(s.parts).every((p) => p.attempts === 0 && p.revealed === null)).toBe(true);
       saveSession(v, revealPart(s, v.parts[0].id));
@@ -91,6 +84,6 @@ describe('marking state kept across reloads', () => {
     expect(loadScores().q3['11']).toBeUndefined();
     setLearnerScope('mailto:ada@example.org');
     expect(loadSession(v).parts[v.parts[0].id].revealed).toBe('asked');
-    expect([...local.data.keys()].join(' ')).not.toMatch(/ada|example/);
+    expect([...storage.local.data.keys()].join(' ')).not.toMatch(/ada|example/);
   });
 });

@@ -1,5 +1,5 @@
 /** The results log: a merge on every write (two tabs), per learner, cleared by Reset progress. */
-import { afterEach, beforeEach, describe, expect, it } from 'vitest';
+import { describe, expect, it } from 'vitest';
 import {
   appendAttempt,
   attemptOf,
@@ -13,17 +13,10 @@ import { extensionCheck } from '../../src/practice/extensions';
 import { resetPractice } from '../../src/practice/reset';
 import { setLearnerScope } from '../../src/practice/learnerScope';
 import { collate } from '../../src/results/collate';
-import { installWindow, MemoryStorage } from '../practice/memoryWindow';
+import { freshWindowEachTest } from '../practice/memoryWindow';
 import type { Attempt } from '../../src/results/format';
 
-let local: MemoryStorage;
-let remove: () => void;
-beforeEach(() => {
-  local = new MemoryStorage();
-  remove = installWindow(local);
-  setLearnerScope(null);
-});
-afterEach(() => remove());
+const storage = freshWindowEachTest();
 
 const at = (seed: number, time: string): Attempt => ({
   question: 'q3',
@@ -37,9 +30,9 @@ describe('results log', () => {
   it('two tabs: each write keeps the other tab’s checks', () => {
     appendAttempt(at(1, '2026-01-01T00:00:01Z'));
     // tab B wrote in between (its own copy of the log plus its check)
-    const other = JSON.parse(local.getItem(RESULTS_KEY)!) as { attempts: Attempt[] };
+    const other = JSON.parse(storage.local.getItem(RESULTS_KEY)!) as { attempts: Attempt[] };
     other.attempts.push(at(2, '2026-01-01T00:00:02Z'));
-    local.setItem(RESULTS_KEY, JSON.stringify(other));
+    storage.local.setItem(RESULTS_KEY, JSON.stringify(other));
     appendAttempt(at(3, '2026-01-01T00:00:03Z'));
     expect(loadAttempts().map((a) => a.seed)).toEqual([1, 2, 3]);
     // the same attempt written twice is kept once
