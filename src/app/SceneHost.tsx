@@ -15,6 +15,7 @@ import { dropQueryParam, parseHash, parseShellFlags, shellExtras, type ShellFlag
 import { useShortcuts } from '../ui/shortcuts';
 import { AskPrompt } from '../ui/ask';
 import { usePageKey } from '../ui/pageKeys';
+import { getOpenFolds } from '../ui/openFolds';
 import { QuestionNav } from '../ui/QuestionNav';
 import { ParamNotice } from '../ui/RouteNotice';
 import { useHostScene } from './hostBridge';
@@ -232,7 +233,11 @@ function LoadedScene({
       void linkSafeValues(schema, next).then((safe) => {
         if (!latest()) return; // a newer change wrote, or will write, the URL
         setLinkValues(safe);
-        const qs = serializeParams(schema, safe, shellExtras({ ...flags, ask: askingRef.current }));
+        const qs = serializeParams(
+          schema,
+          safe,
+          shellExtras({ ...flags, ask: askingRef.current, open: getOpenFolds() }),
+        );
         const hash = `#${info.path}${qs ? `?${qs}` : ''}`;
         try {
           window.history.replaceState(window.history.state, '', hash);

@@ -10,6 +10,7 @@ import type { PageInfo } from '../kit/catalogue';
 import type { SceneModule } from '../kit/scene';
 import { serializeParams, type ParamSchema, type ParamValues } from '../kit/params';
 import type { ShellFlags } from '../kit/shell';
+import { useOpenFolds } from '../ui/openFolds';
 import { embedSnippet } from './embedCode';
 import { QrButton } from './QrButton';
 import './sceneHost.css';
@@ -68,6 +69,8 @@ export function ShareBar({
   asking: boolean;
 }) {
   const [copied, setCopied] = useState<'link' | 'embed' | null>(null);
+  // the folds open now (opening one rewrites the address, not these props)
+  const open = useOpenFolds();
   const [shown, setShown] = useState<string | null>(null);
   // In classroom mode (present=1) the copied link and the QR code are the room as it stands:
   // classroom mode, and the held-back results (ask=1) while they are held back. Outside it, a page
@@ -81,11 +84,12 @@ export function ShareBar({
   const qs = serializeParams(
     schema,
     values,
-    sharedFlags({ present: flags.present, asking, keep, part: flags.part, theme: flags.theme }),
+    sharedFlags({ present: flags.present, asking, keep, part: flags.part, theme: flags.theme, open }),
   );
   const link = shareUrl(href, info.path, qs);
   const embedQs = serializeParams(schema, values, {
     part: flags.part ?? undefined,
+    open: open.length ? open.join(',') : undefined,
     embed: '1',
     theme: flags.theme ?? undefined,
   });

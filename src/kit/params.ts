@@ -77,6 +77,7 @@ export const SHELL_PARAMS = [
   'ask',
   'theme',
   'part',
+  'open',
   'origin',
   'a11y',
   'fuzz',

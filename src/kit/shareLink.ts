@@ -39,6 +39,8 @@ export interface ShareMode {
   part: string | null;
   /** A theme chosen by the link (`theme=`), kept. */
   theme: string | null;
+  /** The page's open folds (`open=`, ./folds), kept. */
+  open?: readonly string[];
 }
 
 /**
@@ -46,11 +48,13 @@ export interface ShareMode {
  * classroom mode the link is the lecturer's room as it stands: `present=1`, and `ask=1` while the
  * results are still held back, so students who scan the QR code predict before they see them.
  * Outside classroom mode the link is the students' view: `present` never, `ask=1` only when the
- * lecturer asks to keep it. The part and the theme always travel; nothing else of the page does.
+ * lecturer asks to keep it. The part, the open folds and the theme always travel; nothing else of
+ * the page does.
  */
 export function sharedFlags(m: ShareMode): Record<string, string | undefined> {
   return {
     part: m.part ?? undefined,
+    open: m.open?.length ? m.open.join(',') : undefined,
     present: m.present ? '1' : undefined,
     ask: m.asking && (m.present || m.keep) ? '1' : undefined,
     theme: m.theme ?? undefined,

@@ -1,4 +1,5 @@
 import { SHELL_PARAMS } from './params';
+import { parseOpenFolds } from './folds';
 
 /** Hash routing: `#/texture?u=0.4&v=0.24` → { path: '/texture', query: 'u=0.4&v=0.24' }. */
 export interface Route {
@@ -33,6 +34,8 @@ export interface ShellFlags {
    * links the scene writes, so a shared link lands on the same part.
    */
   part: string | null;
+  /** `open=sweep,gpu`: the page's folded sections to open (./folds); kept in the links the page writes. */
+  open: string[];
   /**
    * `origin=`: the only host-page origins the host API answers and height messages go to. null: no
    * `origin=` in the link (any parent). An empty list: `origin=` was given but names no usable
@@ -44,7 +47,16 @@ export interface ShellFlags {
 }
 
 /** The shell's own parameters (every page takes them; no scene schema may use these names). */
-export const SHELL_FLAG_NAMES = ['embed', 'present', 'ask', 'theme', 'part', 'origin', 'a11y'] as const;
+export const SHELL_FLAG_NAMES = [
+  'embed',
+  'present',
+  'ask',
+  'theme',
+  'part',
+  'open',
+  'origin',
+  'a11y',
+] as const;
 
 /** Read the shell's own flags (embed, present, ask, theme, part, origin) from a query string. Never throws. */
 export function parseShellFlags(query: string): ShellFlags {
@@ -54,6 +66,7 @@ export function parseShellFlags(query: string): ShellFlags {
     ask: false,
     theme: null,
     part: null,
+    open: [],
     origins: null,
     problems: [],
   };
@@ -92,6 +105,9 @@ export function parseShellFlags(query: string): ShellFlags {
         message: `${JSON.stringify(part.slice(0, 24))} is not an exam part like 1c; showing the top of the page`,
       });
   }
+  const open = parseOpenFolds(sp.get('open'));
+  flags.open = open.names;
+  if (open.problem) flags.problems.push({ name: 'open', message: open.problem });
   // a shell parameter given twice: the first is used, and the notice says so
   for (const name of SHELL_FLAG_NAMES) {
     const n = sp.getAll(name).length;
@@ -156,11 +172,14 @@ export function shellExtras(
   flags: Pick<ShellFlags, 'embed' | 'present' | 'theme' | 'a11y'> & {
     ask?: boolean;
     part?: string | null;
+    /** The page's open folds (./folds); left out of links to other pages. */
+    open?: readonly string[];
     origins?: readonly string[] | null;
   },
 ): Record<string, string | undefined> {
   return {
     part: flags.part ?? undefined,
+    open: flags.open?.length ? flags.open.join(',') : undefined,
     embed: flags.embed ? '1' : undefined,
     present: flags.present ? '1' : undefined,
     ask: flags.ask ? '1' : undefined,

@@ -4,7 +4,7 @@
  * loads, and measures, only once the reader opens it.
  */
 import { lazy } from 'react';
-import { LazyDetails } from './LazyDetails';
+import { Fold } from './Fold';
 import type { ImageSet } from './imageMeasure';
 
 const ImageMeasurePanel = lazy(() =>
@@ -12,13 +12,23 @@ const ImageMeasurePanel = lazy(() =>
 );
 
 /** `set` is null while the images are not ready (the panel says so). */
-export function ImageMeasure({ set, summary }: { set: ImageSet | null; summary?: string }) {
+export function ImageMeasure({
+  set,
+  summary,
+  name = 'measure',
+}: {
+  set: ImageSet | null;
+  summary?: string;
+  /** The fold's name in the link's `open=` (unique on the page). */
+  name?: string;
+}) {
   return (
-    <LazyDetails
+    <Fold
+      name={name}
       testId="measure-details"
       summary={summary ?? 'Measure against the reference: FLIP, relMSE, error map, PNG downloads'}
     >
-      {() => <ImageMeasurePanel set={set} />}
-    </LazyDetails>
+      <ImageMeasurePanel set={set} />
+    </Fold>
   );
 }

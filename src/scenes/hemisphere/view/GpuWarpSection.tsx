@@ -3,17 +3,18 @@
  * content (the float32 table, the WebGL2 vertex-shader pass, its χ² test) is a lazy chunk.
  */
 import { lazy } from 'react';
-import { LazyDetails } from '../../../ui/LazyDetails';
+import { Fold } from '../../../ui/Fold';
 
 const GpuWarpPanel = lazy(() => import('./GpuWarpPanel').then((m) => ({ default: m.GpuWarpPanel })));
 
 export function GpuWarpSection({ seed }: { seed: number }) {
   return (
-    <LazyDetails
+    <Fold
+      name="gpu-warp"
       testId="gpu-warp-details"
       summary="The exam’s warps in float32, and 10⁶ directions sampled and drawn by a WebGL2 vertex shader (χ²-tested)"
     >
-      {() => <GpuWarpPanel seed={seed} />}
-    </LazyDetails>
+      <GpuWarpPanel seed={seed} />
+    </Fold>
   );
 }

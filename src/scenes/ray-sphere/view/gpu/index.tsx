@@ -3,17 +3,18 @@
  * (the WebGL2 shader, the float32 images, self-intersection in float32) is a lazy chunk.
  */
 import { lazy } from 'react';
-import { LazyDetails } from '../../../../ui/LazyDetails';
+import { Fold } from '../../../../ui/Fold';
 
 const GpuSpherePanel = lazy(() => import('./GpuSpherePanel').then((m) => ({ default: m.GpuSpherePanel })));
 
 export function GpuSection() {
   return (
-    <LazyDetails
+    <Fold
+      name="gpu"
       testId="gpu-details"
       summary="Run the textbook and robust tests in a WebGL2 shader (float32), beside the emulation and float64"
     >
-      {() => <GpuSpherePanel />}
-    </LazyDetails>
+      <GpuSpherePanel />
+    </Fold>
   );
 }

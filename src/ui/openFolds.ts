@@ -1,0 +1,76 @@
+/**
+ * Which folds of the page are open (../kit/folds): one list for the page, kept in the address's
+ * `open=` entry. Opening or closing a fold rewrites that entry in place (replaceState: no history
+ * entry, every other entry kept as written); a link followed on the page (hashchange) sets the
+ * list again. The share bar and the scene host read it when they write a link.
+ */
+import { useCallback, useSyncExternalStore } from 'react';
+import { openFoldsValue, toggledFolds } from '../kit/folds';
+import { dropQueryParam, parseHash, parseShellFlags } from '../kit/shell';
+
+const listeners = new Set<() => void>();
+let names: readonly string[] | null = null;
+
+function fromAddress(): readonly string[] {
+  return typeof window === 'undefined' ? [] : parseShellFlags(parseHash(window.location.hash).query).open;
+}
+
+function notify(): void {
+  for (const l of listeners) l();
+}
+
+function onHashChange(): void {
+  const next = fromAddress();
+  if (names && next.join(',') === names.join(',')) return;
+  names = next;
+  notify();
+}
+
+/** The open folds' names, in the order they were opened. */
+export function getOpenFolds(): readonly string[] {
+  if (names === null) names = fromAddress();
+  return names;
+}
+
+function subscribe(l: () => void): () => void {
+  if (listeners.size === 0) window.addEventListener('hashchange', onHashChange);
+  listeners.add(l);
+  return () => {
+    listeners.delete(l);
+    if (listeners.size === 0) window.removeEventListener('hashchange', onHashChange);
+  };
+}
+
+/** Opens or closes the fold `name`, and writes the address's `open=` to match. */
+export function setFoldOpen(name: string, open: boolean): void {
+  const current = getOpenFolds();
+  if (current.includes(name) === open) return;
+  names = toggledFolds(current, name, open);
+  const { path, query } = parseHash(window.location.hash);
+  const rest = dropQueryParam(query, 'open');
+  const value = openFoldsValue(names);
+  const qs = [rest, value ? `open=${value}` : ''].filter(Boolean).join('&');
+  try {
+    window.history.replaceState(window.history.state, '', `#${path}${qs ? `?${qs}` : ''}`);
+  } catch {
+    /* some sandboxed iframes forbid it; the state still lives in the page */
+  }
+  notify();
+}
+
+/** Re-reads the list from the address (a page that replaced its own address, and tests). */
+export function resyncOpenFolds(): void {
+  names = fromAddress();
+  notify();
+}
+
+/** The page's open folds, re-rendering on change. */
+export function useOpenFolds(): readonly string[] {
+  return useSyncExternalStore(subscribe, getOpenFolds, () => []);
+}
+
+/** Whether fold `name` is open, and a setter that keeps the address in step. */
+export function useFoldOpen(name: string): [boolean, (open: boolean) => void] {
+  const open = useOpenFolds().includes(name);
+  return [open, useCallback((o: boolean) => setFoldOpen(name, o), [name])];
+}
