@@ -44,11 +44,11 @@ const timelineT = async (page: Page) => Number(await page.getByTestId('timeline'
 
 for (const s of SCENES) {
   test.describe(s.id, () => {
-    test('the whole page, light at 1280 px and dark at 375 px: axe clean, targets, reflow, text spacing, focus, no caret, formulas whole', async ({
+    test('the whole page, calm as it opens (tab stops), light at 1280 px and, folds open, dark at 375 px: axe clean, targets, reflow, text spacing, focus, no caret, formulas whole', async ({
       page,
     }) => {
       test.setTimeout(240_000);
-      await checkWholePage(page, link(s));
+      await checkWholePage(page, link(s), { calm: true });
     });
 
     test('the timeline: reduced motion holds play=1; paused, no frames; playing, none off screen; pause writes a link that restores it', async ({

@@ -10,6 +10,7 @@ import AxeBuilder from '@axe-core/playwright';
 import type { Page } from '@playwright/test';
 import { textFormulaGroups } from '../../src/ui/texBreaks';
 import { expect, openScene } from './fixtures';
+import { countTabStops } from './calmCount';
 import {
   applyTextSpacing,
   clippedText,
@@ -33,6 +34,28 @@ export async function openWhole(page: Page, hash: string): Promise<void> {
   });
   await expect(page.locator('[data-deferred="pending"]')).toHaveCount(0, { timeout: 60_000 });
 }
+
+/**
+ * Opens every folded part of the page (src/ui/Fold.tsx), folds inside folds too, and waits until
+ * what they hold has loaded and mounted.
+ */
+export async function openAllFolds(page: Page): Promise<void> {
+  for (let round = 0; round < 6; round++) {
+    const opened = await page.evaluate(() => {
+      const closed = [...document.querySelectorAll<HTMLDetailsElement>('details.fold:not([open])')];
+      for (const d of closed) d.open = true;
+      return closed.length;
+    });
+    if (opened === 0) break;
+    await expect(page.locator('details.fold[open] > .fold-body [aria-busy="true"]')).toHaveCount(0, {
+      timeout: 60_000,
+    });
+  }
+  await expect(page.locator('[data-deferred="pending"]')).toHaveCount(0, { timeout: 60_000 });
+}
+
+/** The most tab stops a scene may show in its first screen, and on the page as it opens, at 1280×800. */
+export const CALM = { firstScreen: 25, page: 60 };
 
 /**
  * axe's WCAG 2.2 AA violations, described. KaTeX's HTML layer is left out: it is aria-hidden,
@@ -132,22 +155,32 @@ export async function formulasBrokenInsideParentheses(page: Page): Promise<strin
 }
 
 /**
- * The whole-page pass: light at 1280 px, then the same page dark at 375 px (and 320 px for
- * reflow), every lazy part loaded from the app's own origin. Every finding is collected and the
- * test fails once with the full list.
+ * The whole-page pass: the page as it opens, light at 1280 × 800 (calm: few tab stops; axe), then
+ * with every fold opened, dark at 375 px (and 320 px for reflow), every lazy part loaded from the
+ * app's own origin. Every finding is collected and the test fails once with the full list.
+ * `calm`: check the counts of tab stops (the scenes' pages).
  */
-export async function checkWholePage(page: Page, hash: string): Promise<void> {
+export async function checkWholePage(page: Page, hash: string, { calm = false } = {}): Promise<void> {
   const found: string[] = [];
   const requested: string[] = [];
   page.on('request', (r) => requested.push(r.url()));
   await page.emulateMedia({ colorScheme: 'light' });
-  await page.setViewportSize({ width: 1280, height: 900 });
+  await page.setViewportSize({ width: 1280, height: 800 });
   await openWhole(page, hash);
+  if (calm) {
+    const c = await page.evaluate(countTabStops);
+    if (c.firstScreen > CALM.firstScreen)
+      found.push(
+        `${c.firstScreen} tab stops in the first screen (at most ${CALM.firstScreen}): ${c.first.join(' | ')}`,
+      );
+    if (c.page > CALM.page) found.push(`${c.page} tab stops on the page as it opens (at most ${CALM.page})`);
+  }
   found.push(...(await axeViolations(page, 'light 1280')));
   // powers are written as superscripts; a formula still waiting for KaTeX shows its plain-text
   // reading, which has no caret either
   found.push(...(await visibleCarets(page)).map((c) => `caret in the visible text: ${c}`));
 
+  await openAllFolds(page);
   await page.emulateMedia({ colorScheme: 'dark' });
   await page.setViewportSize({ width: 375, height: 812 });
   await expect.poll(() => page.evaluate(() => document.documentElement.dataset.theme)).toBe('dark');

@@ -28,6 +28,7 @@ import type { DirectSample, DirectScratch, Technique } from './directSample';
 import { emitterCount, lightFramesAt, lightPdf, sampleEmitter, type LightFrames } from './lightSampling';
 import { bsdfEval, bsdfPdf, bsdfSample, type Vertex } from './material';
 import { misWeight } from './mis';
+import { biasedTerm, type Bias } from './bias';
 import type { RenderScene } from './scene';
 
 export const STRATEGIES = [
@@ -195,7 +196,7 @@ function emitterSample(
 /**
  * Draw sample number `index` of the direct-light estimator at v by `strategy` from rng; fill rec
  * and return its term (radiance). For MIS the index's parity picks the technique (see the module
- * comment).
+ * comment). `bias` other than 'none' computes a deliberately wrong term (./bias).
  */
 export function directSample(
   scene: RenderScene,
@@ -205,6 +206,7 @@ export function directSample(
   rng: Rng,
   sc: DirectScratch,
   rec: DirectSample,
+  bias: Bias = 'none',
 ): number {
   rec.lx = rec.ly = rec.lz = NaN;
   rec.cosThetaL = NaN;
@@ -233,5 +235,6 @@ export function directSample(
     factor = 2 * rec.weight;
   }
   rec.term = (factor * contrib * rec.cosTheta) / rec.pdfSolidAngle;
+  if (bias !== 'none') rec.term = biasedTerm(bias, rec.term, t, rec.cosThetaL);
   return rec.term;
 }

@@ -18,6 +18,7 @@ import { closestHit, newHit, type HitKind } from './intersect';
 import { newVertex, shadeVertex, type Vertex } from './material';
 import { makeTracer, pathFromVertex, type TraceOptions } from './pathTrace';
 import { exactRadiance } from './reference';
+import { studentTTest, welchTTest, type TTestResult } from '../verify/ttest';
 import type { RenderScene, View } from './scene';
 
 /** Default number of samples of the inspector's estimate, of rows shown, and the reference's multiple. */
@@ -66,7 +67,16 @@ export interface PixelInspection {
   reference: number;
   referenceKind: 'exact' | 'converged';
   referenceStderr: number;
+  /**
+   * The estimate tested against the reference at TTEST_ALPHA: Student's t-test against an exact
+   * value, Welch's against a converged one (its own run, with its own variance); null where the
+   * pixel has nothing to estimate (the sky, a light).
+   */
+  tTest: TTestResult | null;
 }
+
+/** The significance of the inspector's t-test. */
+export const TTEST_ALPHA = 0.01;
 
 export interface InspectOptions extends TraceOptions {
   width: number;
@@ -179,6 +189,7 @@ export function inspectPixel(
       reference: value,
       referenceKind: 'exact',
       referenceStderr: 0,
+      tTest: null,
     };
   }
   const vx = newVertex();
@@ -187,12 +198,22 @@ export function inspectPixel(
   const exact = exactRadiance(scene, vx, kind, opts.bounces);
   let reference: number;
   let referenceStderr = 0;
-  if (exact !== null) reference = exact;
-  else {
+  const sample = { mean: est.stats.mean, variance: est.stats.variance(), n: est.stats.count };
+  let tTest: TTestResult;
+  if (exact !== null) {
+    reference = exact;
+    tTest = studentTTest(sample, exact, TTEST_ALPHA);
+  } else {
+    // the converged reference is always unbiased (no variant), whatever the inspected estimator is
     const refOpts: TraceOptions = { strategy: 'mis-power', bounces: opts.bounces };
     const ref = estimateAtVertex(scene, vx, refOpts, opts.referenceN ?? CONVERGED_FACTOR * pn, opts.seed, 2);
     reference = ref.stats.mean;
     referenceStderr = ref.stats.standardError();
+    tTest = welchTTest(
+      sample,
+      { mean: ref.stats.mean, variance: ref.stats.variance(), n: ref.stats.count },
+      TTEST_ALPHA,
+    );
   }
   const textured = kind === 'sphere' && Number.isFinite(vx.texel);
   return {
@@ -209,5 +230,6 @@ export function inspectPixel(
     reference,
     referenceKind: exact !== null ? 'exact' : 'converged',
     referenceStderr,
+    tTest,
   };
 }

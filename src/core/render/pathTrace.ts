@@ -13,6 +13,7 @@ import { directSample, resetFrames, type Strategy } from './directLight';
 import { newDirectSample, newDirectScratch, type DirectSample, type DirectScratch } from './directSample';
 import { bsdfEval, bsdfPdf, bsdfSample, newVertex, shadeVertex, type Vertex } from './material';
 import type { RenderScene } from './scene';
+import type { Bias } from './bias';
 
 /** Fewest and most shaded vertices along a path. */
 export const MIN_BOUNCES = 1;
@@ -24,6 +25,8 @@ export const ROULETTE_FROM = 3;
 export interface TraceOptions {
   strategy: Strategy;
   bounces: number;
+  /** A deliberately biased variant of the direct-light terms (./bias; default none). */
+  bias?: Bias;
 }
 
 /** A path tracer's reusable state: the scene, its options and its buffers. */
@@ -31,6 +34,7 @@ export interface Tracer {
   scene: RenderScene;
   strategy: Strategy;
   bounces: number;
+  bias: Bias;
   direct: DirectScratch;
   rec: DirectSample;
   a: Vertex;
@@ -44,6 +48,7 @@ export function makeTracer(scene: RenderScene, opts: TraceOptions): Tracer {
     scene,
     strategy: opts.strategy,
     bounces,
+    bias: opts.bias ?? 'none',
     direct: newDirectScratch(),
     rec: newDirectSample(),
     a: newVertex(),
@@ -66,7 +71,7 @@ export function pathFromVertex(tr: Tracer, v: Vertex, index: number, rng: Rng, f
   for (let depth = 1; ; depth++) {
     resetFrames(tr.direct);
     const rec = depth === 1 && first ? first : tr.rec;
-    L += beta * directSample(scene, cur, tr.strategy, index, rng, tr.direct, rec);
+    L += beta * directSample(scene, cur, tr.strategy, index, rng, tr.direct, rec, tr.bias);
     if (depth >= tr.bounces) break;
     const d = tr.dir;
     bsdfSample(cur, rng.nextFloat(), rng.nextFloat(), d);

@@ -3,6 +3,7 @@
  * workers, the camera, the estimator's options, the image size and the inspected pixel, with a
  * named problem for every value it would not use as given (and the safe value it uses instead).
  */
+import { biasApplies } from '../../core/render/bias';
 import type { ParamProblem } from '../../kit/params';
 import { examGrid, parseGrid } from '../../core/texture/grid';
 import type { TraceOptions } from '../../core/render/pathTrace';
@@ -60,6 +61,11 @@ export function buildRenderModel(p: RenderParams): RenderModel {
   const parsed = parseGrid(p.grid);
   if (!parsed.ok) problems.push({ name: 'grid', message: `${parsed.message} Using the exam’s 5 × 5 grid.` });
   const grid = parsed.ok ? parsed.grid : examGrid();
+  if (!biasApplies(p.bias, p.strategy) && p.bias !== 'none')
+    problems.push({
+      name: 'bias',
+      message: `${p.bias} changes only area sampling (strategy=area); with ${p.strategy} the estimator is the correct one.`,
+    });
   const ls: readonly [number, number] = p.ls && p.ls.length === 2 ? [p.ls[0], p.ls[1]] : [1, 1];
   const spec: RenderSpec = {
     scene: p.scene,
@@ -68,7 +74,7 @@ export function buildRenderModel(p: RenderParams): RenderModel {
   return {
     spec,
     view: viewOf(p, problems),
-    trace: { strategy: p.strategy, bounces: p.bounces },
+    trace: { strategy: p.strategy, bounces: p.bounces, bias: p.bias },
     res: p.res,
     spp: p.spp,
     seed: p.seed,

@@ -6,6 +6,7 @@
  * inspected pixel (px = i,j, column i and row j from the top left) and its sample count pn; and
  * `play` (0 holds the progressive render where it is).
  */
+import { BIASES } from '../../core/render/bias';
 import type { ParamSchema, ParamValues } from '../../kit/params';
 import { EXAM_GRID_TEXT } from '../../core/texture/grid';
 import { RENDER_SCENES, EXAM_DEFAULTS } from '../../core/render/scene';
@@ -29,6 +30,12 @@ export const schema = {
     values: STRATEGIES,
     aliases: { solid: 'solid-angle', mis: 'mis-power', balance: 'mis-balance', power: 'mis-power' },
     label: 'direct-light strategy',
+  },
+  bias: {
+    kind: 'enum',
+    default: 'none',
+    values: BIASES,
+    label: 'biased variant (for the t-test)',
   },
   bounces: {
     kind: 'number',

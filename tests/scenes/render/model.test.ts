@@ -34,6 +34,16 @@ describe('render lab parameters', () => {
     expect(problems.map((p) => p.name).sort()).toEqual(['bounces', 'res', 'spp', 'strategy']);
   });
 
+  it('passes a biased variant to the estimator, and names one that changes nothing', () => {
+    expect(model('bias=no-cos-l&strategy=area').trace.bias).toBe('no-cos-l');
+    expect(model('bias=no-cos-l&strategy=area').problems).toEqual([]);
+    expect(model('bias=clamp').problems).toEqual([]);
+    const idle = model('bias=no-cos-l&strategy=cosine');
+    expect(idle.problems.map((p) => p.name)).toEqual(['bias']);
+    expect(idle.problems[0].message).toMatch(/only area sampling/);
+    expect(parseParams(schema, 'bias=wrong').problems.map((p) => p.name)).toEqual(['bias']);
+  });
+
   it('accepts only the cpu renderer for now', () => {
     const { values, problems } = parseParams(schema, 'renderer=webgl');
     expect(values.renderer).toBe('cpu');

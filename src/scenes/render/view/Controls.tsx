@@ -63,6 +63,11 @@ export function Controls({
         'Direct-light strategy',
         STRATEGIES.map((s) => ({ value: s, label: s })),
       )}
+      {b.select('bias', 'Biased variant (the t-test should catch it)', [
+        { value: 'none', label: 'none: the correct estimator' },
+        { value: 'no-cos-l', label: 'area sampling without cos θ_l' },
+        { value: 'clamp', label: 'every term clamped at 0.5' },
+      ])}
       {b.slider('bounces', 'Bounces (1 = direct light only)', { testId: 'set-bounces' })}
       {b.slider('spp', 'Samples per pixel', { log: true, max: 4096, testId: 'set-spp' })}
       {b.slider('res', 'Image side (pixels)', { step: 16, testId: 'set-res' })}

@@ -157,6 +157,26 @@ export function Inspector({
           }
         />
         <Readout id="pixel-reference-kind" label="reference kind" value={r.referenceKind} />
+        {r.tTest ? (
+          <>
+            <Readout
+              id="pixel-ttest-p"
+              label={r.referenceKind === 'exact' ? 'Student t-test p' : 'Welch t-test p'}
+              value={r.tTest.pValue}
+              digits={3}
+              note={
+                r.tTest.pValue === 0
+                  ? `t = ${formatNumber(r.tTest.t, 4)}; p is below the smallest double, 10⁻³⁰⁸`
+                  : `t = ${formatNumber(r.tTest.t, 4)}`
+              }
+            />
+            <Readout
+              id="pixel-ttest"
+              label={`unbiased at α = ${formatPlain(r.tTest.alpha)}`}
+              value={r.tTest.pass ? 'pass' : 'fail'}
+            />
+          </>
+        ) : null}
       </div>
       <p className="render-verdict">
         {r.stderr > 0
