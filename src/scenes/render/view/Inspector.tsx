@@ -165,9 +165,11 @@ export function Inspector({
               value={r.tTest.pValue}
               digits={3}
               note={
-                r.tTest.pValue === 0
-                  ? `t = ${formatNumber(r.tTest.t, 4)}; p is below the smallest double, 10⁻³⁰⁸`
-                  : `t = ${formatNumber(r.tTest.t, 4)}`
+                !Number.isFinite(r.tTest.t)
+                  ? 'every sample gave the same value, and it differs from the reference'
+                  : r.tTest.pValue === 0
+                    ? `t = ${formatNumber(r.tTest.t, 4)}; p is below the smallest double, 10⁻³⁰⁸`
+                    : `t = ${formatNumber(r.tTest.t, 4)}`
               }
             />
             <Readout
