@@ -69,3 +69,26 @@ test('the progressive render reaches spp in workers while the page answers input
   expect(lit).toBeGreaterThan(64 * 64 * 0.5);
   await expect(page.getByTestId('render-description')).toContainText('after 24 samples per pixel');
 });
+
+test('equal time: a fold that mounts on open and stays open in the link; its ranking is its relMSE order', async ({
+  page,
+}) => {
+  await openScene(page, '#/render?res=32&spp=1');
+  const fold = page.getByTestId('fold-equal-time');
+  await expect(fold).not.toHaveAttribute('open', /.*/);
+  await expect(page.getByTestId('equal-time')).toHaveCount(0);
+  await fold.locator('summary').click();
+  await expect(page).toHaveURL(/[?&]open=equal-time(&|$)/);
+  await page.getByTestId('et-budget').selectOption('250');
+  await expect(page.getByTestId('et-status')).toHaveText(/^Done: 7 strategies/, { timeout: 60_000 });
+  const ranking = (await page.getByTestId('et-ranking').getAttribute('data-value'))!.split(',');
+  expect(ranking).toHaveLength(7);
+  const errors = await Promise.all(ranking.map(async (s) => Number(await readout(page, `et-relmse-${s}`))));
+  for (const e of errors) expect(Number.isFinite(e) && e > 0).toBe(true);
+  expect([...errors].sort((a, b) => a - b)).toEqual(errors);
+  await expect(page.getByTestId('et-plot')).toBeVisible();
+  // the link opens it again
+  await page.reload();
+  await expect(page.getByTestId('fold-equal-time')).toHaveAttribute('open', '');
+  await expect(page.getByTestId('equal-time')).toBeVisible();
+});

@@ -20,6 +20,8 @@ import { schema, type RenderParams } from './params';
 import { Inspector } from './view/Inspector';
 import { Controls } from './view/Controls';
 import { About } from './view/About';
+import { EqualTime } from './view/EqualTime';
+import { Fold } from '../../ui/Fold';
 import './render.css';
 
 /** The pixel under a click on the canvas (drawn at any CSS size). */
@@ -134,10 +136,16 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
           <Inspector m={m} result={inspection} pending={inspect.running || (iArgs !== null && !inspection)} />
         </section>
       </div>
-      <details className="render-fold" data-testid="render-settings">
-        <summary>Settings</summary>
+      <Fold name="settings" summary="Settings" testId="render-settings" className="render-fold">
         <Controls params={params} set={set} />
-      </details>
+      </Fold>
+      <Fold
+        name="equal-time"
+        summary="Equal time and equal error: every strategy for the same time, measured against the reference"
+        className="render-fold"
+      >
+        <EqualTime m={m} />
+      </Fold>
       <About />
     </div>
   );

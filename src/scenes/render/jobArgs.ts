@@ -3,6 +3,7 @@
  * page's model on the main thread (so the page and a test compute the same call).
  */
 import type { InspectOptions } from '../../core/render/inspector';
+import { STRATEGIES, type Strategy } from '../../core/render/directLight';
 import type { TraceOptions } from '../../core/render/pathTrace';
 import type { RenderSpec, View } from '../../core/render/scene';
 import type { RenderModel } from './model';
@@ -18,6 +19,28 @@ export interface InspectArgs extends ReferenceArgs {
   px: readonly [number, number];
   seed: number;
   pn: number;
+}
+
+/** The equal-time comparison: each strategy for `budgetMs` on a `res` × `res` image. */
+export interface EqualTimeArgs extends ReferenceArgs {
+  strategies: readonly Strategy[];
+  budgetMs: number;
+  seed: number;
+}
+
+/** The image side of the equal-time comparison (small: seven strategies share a few seconds). */
+export const EQUAL_TIME_RES = 64;
+
+export function equalTimeArgs(m: RenderModel, budgetMs: number): EqualTimeArgs {
+  return {
+    spec: m.spec,
+    view: m.view,
+    res: EQUAL_TIME_RES,
+    trace: m.trace,
+    strategies: STRATEGIES,
+    budgetMs,
+    seed: m.seed,
+  };
 }
 
 export function referenceArgs(m: RenderModel): ReferenceArgs {

@@ -1,15 +1,17 @@
 /**
  * Worker of the render lab, three tasks over the core: `tile` renders one tile of the image
  * progressively in float64 (posting each pass's sums as progress; cancel = terminate,
- * src/workers/run.ts), `inspect` runs the pixel inspector, and `reference` computes the exact
- * reference image (both take long enough at large sample counts or sizes to block a page).
+ * src/workers/run.ts), `inspect` runs the pixel inspector, `reference` computes the exact
+ * reference image (both take long enough at large sample counts or sizes to block a page), and
+ * `equalTime` renders a small image with each strategy for the same time (core/render/equalTime).
  */
 import { exposeTasks, yieldToEventLoop, type ProgressFn } from '../../workers/expose';
 import { renderTileJob, type TileJobArgs, type TileResult } from '../../core/render/tileJob';
 import { inspectPixel } from '../../core/render/inspector';
 import { referenceImage } from '../../core/render/referenceImage';
 import { buildScene } from '../../core/render/scene';
-import { inspectOptions, type InspectArgs, type ReferenceArgs } from './jobArgs';
+import { runForTime, type StrategyRun } from '../../core/render/equalTime';
+import { inspectOptions, type EqualTimeArgs, type InspectArgs, type ReferenceArgs } from './jobArgs';
 
 const tasks = {
   tile: (a: TileJobArgs, progress: ProgressFn<TileResult>) =>
@@ -20,6 +22,28 @@ const tasks = {
     }),
   inspect: (a: InspectArgs) => inspectPixel(buildScene(a.spec), a.view, a.px[0], a.px[1], inspectOptions(a)),
   reference: (a: ReferenceArgs) => referenceImage(buildScene(a.spec), a.view, a.res, a.res, a.trace.bounces),
+  equalTime: async (a: EqualTimeArgs, progress: ProgressFn<{ finished: number }>) => {
+    const scene = buildScene(a.spec);
+    const reference = referenceImage(scene, a.view, a.res, a.res, a.trace.bounces);
+    // one small untimed pass of every strategy first, so that none is timed while its code is
+    // still being compiled (the first would otherwise pay for the warm-up of all of them)
+    const small = referenceImage(scene, a.view, 8, 8, a.trace.bounces).values;
+    for (const strategy of a.strategies)
+      runForTime(scene, a.view, 8, { ...a.trace, strategy }, a.seed, small, 0, () => 0);
+    const runs: StrategyRun[] = [];
+    for (const strategy of a.strategies) {
+      const trace = { ...a.trace, strategy };
+      runs.push(
+        runForTime(scene, a.view, a.res, trace, a.seed, reference.values, a.budgetMs, () =>
+          performance.now(),
+        ),
+      );
+      // (progress transfers the buffers it carries, and the runs' images are still needed: a count only)
+      progress(runs.length / a.strategies.length, { finished: runs.length });
+      await yieldToEventLoop();
+    }
+    return { runs, reference: reference.values, exact: reference.exact };
+  },
 };
 exposeTasks(tasks);
 

@@ -1,0 +1,252 @@
+/**
+ * Equal time and equal error (core/render/equalTime): every strategy renders the same small image
+ * for the same time budget in a worker, and the panel shows what a rendering paper shows: the
+ * images side by side with a zoomed inset where they differ most, relMSE against time on log–log
+ * axes with the −1 slope every unbiased estimator follows, the ranking at equal time, and the time
+ * each strategy needed to reach one error (equal error), read off the same runs.
+ */
+import { useEffect, useMemo, useRef, useState } from 'react';
+import { Notice, Plot } from '../../../ui';
+import { readoutValue } from '../../../ui/Readout';
+import { summarizeSeries } from '../../../ui/summary';
+import { formatNumber, formatPlain } from '../../../core/format';
+import { equalErrorTarget, rankByError, timeToError, type StrategyRun } from '../../../core/render/equalTime';
+import { useWorkerJob } from '../../../workers';
+import { makeRenderWorker } from '../jobs';
+import { equalTimeArgs } from '../jobArgs';
+import type { RenderModel } from '../model';
+import { srgbByte } from '../pixels';
+
+const BUDGETS = [250, 1000, 4000] as const;
+/** Side of the zoomed inset, in image pixels, and its magnification. */
+const INSET = 16;
+
+/** The 16 × 16 window (on an 8-pixel grid) where the strategies' images differ most from the reference. */
+export function insetWindow(
+  runs: readonly StrategyRun[],
+  reference: Float64Array,
+  res: number,
+): [number, number] {
+  const err = new Float64Array(res * res);
+  for (const r of runs)
+    for (let k = 0; k < err.length; k++) {
+      const d = r.image[k] - reference[k];
+      if (Number.isFinite(d)) err[k] += Math.abs(d);
+    }
+  let best: [number, number] = [0, 0];
+  let bestSum = -1;
+  for (let y = 0; y + INSET <= res; y += INSET / 2)
+    for (let x = 0; x + INSET <= res; x += INSET / 2) {
+      let s = 0;
+      for (let j = y; j < y + INSET; j++) for (let i = x; i < x + INSET; i++) s += err[j * res + i];
+      if (s > bestSum) {
+        bestSum = s;
+        best = [x, y];
+      }
+    }
+  return best;
+}
+
+/** Draws `values` (linear radiance, row-major res × res), or its window at (x0, y0) of side w, into the canvas. */
+function drawImage(
+  canvas: HTMLCanvasElement | null,
+  values: Float64Array,
+  res: number,
+  x0 = 0,
+  y0 = 0,
+  w = res,
+) {
+  const ctx = canvas?.getContext('2d');
+  if (!ctx) return;
+  const img = ctx.createImageData(w, w);
+  for (let j = 0; j < w; j++)
+    for (let i = 0; i < w; i++) {
+      const b = srgbByte(values[(y0 + j) * res + (x0 + i)]);
+      const o = 4 * (j * w + i);
+      img.data[o] = img.data[o + 1] = img.data[o + 2] = b;
+      img.data[o + 3] = 255;
+    }
+  ctx.putImageData(img, 0, 0);
+}
+
+function RunImage({ run, res, inset }: { run: StrategyRun; res: number; inset: [number, number] }) {
+  const full = useRef<HTMLCanvasElement>(null);
+  const zoom = useRef<HTMLCanvasElement>(null);
+  useEffect(() => {
+    drawImage(full.current, run.image, res);
+    drawImage(zoom.current, run.image, res, inset[0], inset[1], INSET);
+  }, [run, res, inset]);
+  return (
+    <figure className="et-image" data-testid={`et-image-${run.strategy}`}>
+      <canvas
+        ref={full}
+        width={res}
+        height={res}
+        role="img"
+        aria-label={`${run.strategy}: ${run.spp} samples per pixel, relMSE ${formatNumber(run.relMse, 3)}`}
+      />
+      <canvas ref={zoom} width={INSET} height={INSET} className="et-inset" aria-hidden="true" />
+      <figcaption>
+        {run.strategy}
+        <br />
+        {run.spp} spp
+      </figcaption>
+    </figure>
+  );
+}
+
+export function EqualTime({ m }: { m: RenderModel }) {
+  const [budget, setBudget] = useState<number>(1000);
+  const args = useMemo(() => equalTimeArgs(m, budget), [m, budget]);
+  const job = useWorkerJob(makeRenderWorker, 'equalTime', args, { delayMs: 100 });
+  const done = job.result;
+  const finished = done?.runs.length ?? job.partial?.finished ?? 0;
+  const exact = done ? done.exact : null;
+  const target = done ? equalErrorTarget(done.runs) : NaN;
+  const order = useMemo(() => (done ? rankByError(done.runs) : []), [done]);
+  const inset = useMemo(
+    () => (done ? insetWindow(done.runs, done.reference, args.res) : ([0, 0] as [number, number])),
+    [done, args.res],
+  );
+
+  const plot = useMemo(() => {
+    if (!done || !(exact && exact > 0)) return null;
+    const data: Record<string, unknown>[] = done.runs.map((r) => ({
+      x: r.curve.ms,
+      y: r.curve.relMse,
+      type: 'scatter',
+      mode: 'lines',
+      name: r.strategy,
+    }));
+    // the −1 slope through the middle of the median strategy's curve
+    const mid = done.runs[order[Math.floor(order.length / 2)]];
+    const k = Math.floor(mid.curve.ms.length / 2);
+    const [x0, y0] = [mid.curve.ms[k], mid.curve.relMse[k]];
+    const xs = done.runs.flatMap((r) => r.curve.ms).filter((x) => x > 0);
+    const lo = Math.min(...xs),
+      hi = Math.max(...xs);
+    data.push({
+      x: [lo, hi],
+      y: [(y0 * x0) / lo, (y0 * x0) / hi],
+      type: 'scatter',
+      mode: 'lines',
+      name: 'slope −1',
+      line: { dash: 'dot', color: 'gray' },
+    });
+    const words = done.runs
+      .map((r) =>
+        summarizeSeries(r.curve.ms, r.curve.relMse, {
+          xLabel: 'time (ms)',
+          yLabel: `${r.strategy} relMSE`,
+          logLog: true,
+        }),
+      )
+      .join(' ');
+    return { data, words };
+  }, [done, exact, order]);
+
+  return (
+    <div className="render-equal-time" data-testid="equal-time">
+      <p>
+        Each strategy renders the same {args.res} × {args.res} image (one sample per pixel per pass) for the
+        same time, in a worker, and is measured against the exact reference after every pass. An unbiased
+        estimator&apos;s relMSE falls as 1/time: a line of slope −1 on these axes; the better strategy is the
+        lower line.
+      </p>
+      <label className="et-budget">
+        Time per strategy{' '}
+        <select
+          value={budget}
+          onChange={(e) => setBudget(Number(e.currentTarget.value))}
+          data-testid="et-budget"
+        >
+          {BUDGETS.map((b) => (
+            <option key={b} value={b}>
+              {b < 1000 ? `${b} ms` : `${b / 1000} s`}
+            </option>
+          ))}
+        </select>
+      </label>
+      <p role="status" data-testid="et-status">
+        {job.error
+          ? `The comparison stopped: ${job.error.message}`
+          : done
+            ? `Done: ${done.runs.length} strategies, ${formatPlain(budget)} ms each.`
+            : `Rendering… ${finished} of ${args.strategies.length} strategies done.`}
+      </p>
+      {done && exact === 0 ? (
+        <Notice kind="info" testId="et-no-reference">
+          No pixel of this view has an exact reference (with more than one bounce, or on Veach&apos;s plates,
+          the reference is a converged run), so there is no error to compare. Choose the exam scene or the
+          furnace with one bounce.
+        </Notice>
+      ) : null}
+      {done && exact ? (
+        <>
+          <table className="data-table et-table">
+            <caption>
+              At equal time ({formatPlain(budget)} ms each), ranked by relMSE; and the time each needed to
+              reach the worst of them, relMSE {formatNumber(target, 3)} (equal error)
+            </caption>
+            <thead>
+              <tr>
+                <th scope="col">rank</th>
+                <th scope="col">strategy</th>
+                <th scope="col">samples per pixel</th>
+                <th scope="col">relMSE</th>
+                <th scope="col">time to relMSE {formatNumber(target, 3)}</th>
+              </tr>
+            </thead>
+            <tbody>
+              {order.map((k, rank) => {
+                const r = done.runs[k];
+                const t = timeToError(r, target);
+                return (
+                  <tr key={r.strategy}>
+                    <td>{rank + 1}</td>
+                    <th scope="row">{r.strategy}</th>
+                    <td data-testid={`et-spp-${r.strategy}`} data-value={r.spp}>
+                      {r.spp}
+                    </td>
+                    <td data-testid={`et-relmse-${r.strategy}`} data-value={readoutValue(r.relMse)}>
+                      {formatNumber(r.relMse, 4)}
+                    </td>
+                    <td data-testid={`et-time-${r.strategy}`} data-value={readoutValue(t)}>
+                      {t === null ? '—' : `${formatNumber(t, 3)} ms`}
+                    </td>
+                  </tr>
+                );
+              })}
+            </tbody>
+          </table>
+          <p data-testid="et-ranking" data-value={order.map((k) => done.runs[k].strategy).join(',')}>
+            Best to worst at equal time: {order.map((k) => done.runs[k].strategy).join(', ')}.
+          </p>
+          <div className="et-images">
+            {done.runs.map((r) => (
+              <RunImage key={r.strategy} run={r} res={args.res} inset={inset} />
+            ))}
+          </div>
+          <p className="small">
+            Under each image, ×{Math.round(96 / INSET)} of the {INSET} × {INSET} pixels at ({inset[0]},{' '}
+            {inset[1]}) where the images differ most from the reference.
+          </p>
+          {plot ? (
+            <Plot
+              data={plot.data}
+              label="relMSE against render time for each strategy (log–log)"
+              description={plot.words}
+              testId="et-plot"
+              height={320}
+              layout={{
+                xaxis: { type: 'log', title: { text: 'time (ms)' } },
+                yaxis: { type: 'log', title: { text: 'relMSE' } },
+                margin: { l: 56, r: 16, t: 24, b: 44 },
+              }}
+            />
+          ) : null}
+        </>
+      ) : null}
+    </div>
+  );
+}
