@@ -10,6 +10,7 @@ import { crc32, encodePng } from '../core/image/png';
 import { useWorkerJob } from '../workers/useWorkerJob';
 import { makeFlipWorker } from '../workers/flipWorker';
 import { Readout } from './Readout';
+import { ImageCompare } from './ImageCompare';
 import { downloadFile } from './download';
 import { formatNumber } from './format';
 import type { ImageSet } from './imageMeasure';
@@ -118,6 +119,13 @@ export function ImageMeasurePanel({ set }: { set: ImageSet | null }) {
           <figcaption>FLIP error (magma: 0 black … 1 pale yellow)</figcaption>
         </figure>
       </div>
+      <ImageCompare
+        width={w}
+        height={h}
+        reference={set.reference}
+        render={image.pixels}
+        errors={flip.result?.errors ?? null}
+      />
       <div className="readouts" aria-live="polite">
         <Readout
           id="flip-mean"

@@ -18,6 +18,8 @@ export interface FlipResult {
   weightedMedian: number;
   max: number;
   errorMap: Uint8ClampedArray;
+  /** Each pixel's FLIP error in [0, 1], row-major (what the loupe reads). */
+  errors: Float32Array;
 }
 
 /** LDR-FLIP of the pair at the reference tool's default viewing conditions. */
@@ -30,6 +32,7 @@ export async function flipTask(args: FlipArgs): Promise<FlipResult> {
     weightedMedian: m.pooled.weightedMedian,
     max: m.pooled.max,
     errorMap: map.data as Uint8ClampedArray,
+    errors: Float32Array.from(m.map),
   };
 }
 
