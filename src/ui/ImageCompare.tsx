@@ -115,6 +115,11 @@ export function ImageCompare(p: CompareProps) {
             onKeyDown={key}
           />
           <span className="compare-split" style={{ left: `${(100 * split) / w}%` }} aria-hidden="true" />
+          <span
+            className="compare-mark"
+            style={{ left: `${(100 * (at[0] + 0.5)) / w}%`, top: `${(100 * (at[1] + 0.5)) / h}%` }}
+            aria-hidden="true"
+          />
         </div>
         <figcaption>
           <label htmlFor={sliderId}>Wipe: reference ← → render</label>
@@ -132,20 +137,14 @@ export function ImageCompare(p: CompareProps) {
       </figure>
       <figure className="compare-loupe">
         <div className="compare-loupe-pair">
-          <canvas
-            ref={lRef}
-            width={LOUPE}
-            height={LOUPE}
-            className="compare-loupe-canvas"
-            aria-hidden="true"
-          />
-          <canvas
-            ref={lRender}
-            width={LOUPE}
-            height={LOUPE}
-            className="compare-loupe-canvas"
-            aria-hidden="true"
-          />
+          <span aria-hidden="true">
+            <canvas ref={lRef} width={LOUPE} height={LOUPE} className="compare-loupe-canvas" />
+            reference
+          </span>
+          <span aria-hidden="true">
+            <canvas ref={lRender} width={LOUPE} height={LOUPE} className="compare-loupe-canvas" />
+            render
+          </span>
         </div>
         <figcaption aria-live="polite" data-testid="compare-loupe" data-pixel={`${at[0]},${at[1]}`}>
           Loupe at pixel ({at[0]}, {at[1]}), ×{LOUPE} pixels: reference {rgb(p.reference, k)}, render{' '}
