@@ -181,12 +181,12 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
               />
             </Revealed>
           </Fold>
-          <Fold name="convergence" summary="Convergence: the error of each strategy against N">
+          <Fold name="convergence" summary="Convergence: each strategy’s error against N">
             <Revealed ask={ask} what="the convergence of the three strategies">
               <ConvergencePanel conv={convTask.result} onSeen={onConvSeen} present={mode.present} />
             </Revealed>
           </Fold>
-          <Fold name="timing" summary="Run time against error, measured on this machine">
+          <Fold name="timing" summary="Run time against error, on this machine">
             <Revealed ask={ask} what="the run time against error">
               <TimingPanel
                 result={timing.result}
@@ -198,10 +198,7 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
               />
             </Revealed>
           </Fold>
-          <Fold
-            name="floor"
-            summary="The whole floor rendered with each strategy, measured against the exact one"
-          >
+          <Fold name="floor" summary="The whole floor rendered with each strategy">
             <Revealed ask={ask} what="the floor images">
               <FloorPanel job={job} pass={floorPass} />
             </Revealed>

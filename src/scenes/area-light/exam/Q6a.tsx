@@ -93,16 +93,14 @@ export const Q6a = memo(function Q6a({
       <div className="al-6a">
         <PatchPanel patch={patch} values={values} set={set} />
         <Revealed ask={ask} what="the check of the formula against the exact solid angle">
-          <LiveAnswer
-            title="Check, computed live: the formula against the exact solid angle of the patch"
-            testId="answer-6a"
-          >
+          <LiveAnswer title="Check, computed live: the formula against the exact Ω" testId="answer-6a">
             <p className="al-note">
-              The formula is exact only in the limit of a small patch. The exact solid angle of the orange
-              patch (Van Oosterom–Strackee) and dA cos θ<sub>l</sub> / r² agree better and better as the patch
-              shrinks — the relative difference falls like the square of its size (slope 2 on log–log axes).
+              Exact only in the limit of a small patch: the exact solid angle Ω of the orange patch (Van
+              Oosterom–Strackee) and dA cos θ<sub>l</sub> / r² differ by a fraction that falls like the square
+              of the patch’s size.
             </p>
             <ReadoutList
+              className="al-check-readouts"
               items={[
                 {
                   id: 'patch-exact',
@@ -117,7 +115,7 @@ export const Q6a = memo(function Q6a({
                 { id: 'patch-cos', label: COS_LABEL, value: patch.cosThetaL, digits: 5 },
               ]}
             />
-            <Fold name="patch-error" summary="How the difference shrinks with the patch (plot and table)">
+            <Fold name="patch-error" summary="The difference against the patch side">
               <PatchErrorPlot patch={patch} />
             </Fold>
           </LiveAnswer>

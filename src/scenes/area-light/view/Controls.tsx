@@ -1,7 +1,7 @@
 /**
  * The control column of #/area-light: on the page, what the exam's figure and Q6(c) need (the
- * samples n and the seed); one click away, each in its fold, the other two strategies with new
- * seeds, and the presets with the light, the floor and the shading point.
+ * samples n); one click away, each in its fold, the strategy with the seed (the summary says both),
+ * and the presets with the light, the floor and the shading point.
  */
 import { memo } from 'react';
 import { Panel, Slider } from '../../../ui';
@@ -57,16 +57,18 @@ export const Controls = memo(function Controls({
   const size = [params.ls?.[0] ?? 1, params.ls?.[1] ?? 1] as const;
   return (
     <>
-      <Panel title="Sampling">
-        {c.slider('n', 'Samples n', { log: true })}
-        {c.number('seed', 'Seed')}
-      </Panel>
+      <Panel title="Sampling">{c.slider('n', 'Samples n', { log: true })}</Panel>
       <Fold
         name="sampling"
         className="al-fold"
-        summary={<>Strategy: {STRATEGY_LABEL[params.strategy]} · new seeds</>}
+        summary={
+          <>
+            Strategy: {STRATEGY_LABEL[params.strategy]} · seed {params.seed}
+          </>
+        }
       >
         {c.select('strategy', 'Strategy', STRATEGY_OPTIONS)}
+        {c.number('seed', 'Seed')}
         <div className="al-row">
           <button type="button" onClick={() => set({ seed: (params.seed + 1) >>> 0 })}>
             New seed
