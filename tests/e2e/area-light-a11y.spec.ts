@@ -42,7 +42,8 @@ const f = (x: number, d = 4) => formatNumber(x, d).replace(/^-/, '−');
 test('the main figure’s description holds the live numbers and changes when the light tilts', async ({
   page,
 }) => {
-  await openScene(page, '#/area-light');
+  // the light's controls are in the fold "setup", opened by the link
+  await openScene(page, '#/area-light?open=setup');
   const { m, patch, v } = modelFor('');
   const cv = centreView(m);
   const run = sampleRun(m, v.strategy as LightStrategy, animationLength(v.n), v.seed);

@@ -1,7 +1,8 @@
 /**
  * Browser tests of #/area-light: the readouts are the scene's model (computed here in Node from the
  * same query), bad input gives a message and a fallback, the exam's parts come first, and the
- * animation's readouts follow the timeline. The estimators' and the solid angle's numbers are unit
+ * animation's readouts follow the timeline; what is beyond the exam is folded until opened. The
+ * estimators' and the solid angle's numbers are unit
  * tests (tests/scenes/area-light/cases.test.ts, tests/core/lights/).
  */
 import { test, expect, openScene, readout, readoutNumber } from './fixtures';
@@ -41,7 +42,8 @@ test('wiring: the readouts are the model’s for the exam’s light, an off-axis
 });
 
 test('changing the strategy updates the URL and the estimate; the floor images finish', async ({ page }) => {
-  await openScene(page, '#/area-light?n=2048');
+  // the strategy (fold "sampling") and the floor images (fold "floor") are one click away: opened by the link
+  await openScene(page, '#/area-light?n=2048&open=sampling,floor');
   const before = await readout(page, 'estimate');
   await page.getByTestId('strategy').selectOption('cosine');
   await expect(page).toHaveURL(/strategy=cosine/);
@@ -52,7 +54,7 @@ test('changing the strategy updates the URL and the estimate; the floor images f
 });
 
 test('large n is estimated in a worker without blocking; the result agrees within 3σ', async ({ page }) => {
-  await openScene(page, '#/area-light?n=300000&strategy=cosine&seed=5');
+  await openScene(page, '#/area-light?n=300000&strategy=cosine&seed=5&open=sampling');
   const { waitForReadout } = await import('./fixtures');
   await waitForReadout(page, 'estimate', (v) => v !== 'none' && Number.isFinite(Number(v)), 30000);
   // the page stays responsive meanwhile: a control reacts at once
@@ -108,6 +110,22 @@ test('exam first: 6a, 6b, 6c in order before "Explore further", each with its de
     expect(v).toBeCloseTo(g.samples[i].term, 12);
   }
   expect(await readoutNumber(page, 'given-estimate')).toBeCloseTo(g.estimate, 6);
+
+  // beyond the exam, folded: the strategies' table is closed with nothing in it until clicked; it
+  // then computes the three estimates, and the link remembers it open
+  const fold = page.getByTestId('fold-strategies');
+  await expect(fold).not.toHaveAttribute('open');
+  await expect(fold.locator('.fold-body')).toHaveCount(0);
+  await fold.locator('summary').click();
+  await expect(page).toHaveURL(/[?&]open=strategies(&|$)/);
+  const area = estimateOne(model, 'area', values.n, values.seed);
+  await expect(page.getByTestId('estimate-area')).toHaveAttribute('data-value', String(area.estimate));
+  await page.reload();
+  await expect(page.getByTestId('fold-strategies')).toHaveAttribute('open');
+  await expect(page.getByTestId('estimate-cosine')).toHaveAttribute(
+    'data-value',
+    String(estimateOne(model, 'cosine', values.n, values.seed).estimate),
+  );
 });
 
 /** Readouts of the animation at position t, computed here. */
@@ -153,12 +171,12 @@ test('animation: play, pause, and the readouts equal the model at the paused pos
 test('animation: at the end the running estimate is the n-sample estimate; the floor images follow the timeline', async ({
   page,
 }) => {
-  await openScene(page, '#/area-light?n=256&seed=4&strategy=area');
+  await openScene(page, '#/area-light?n=256&seed=4&strategy=area&open=floor');
   await expect(page.getByTestId('anim-k')).toHaveAttribute('data-value', '256');
   expect(await readout(page, 'anim-estimate')).toBe(await readout(page, 'estimate'));
   await page.locator('.al-images').scrollIntoViewIfNeeded();
   await expect(page.getByText(/64 samples per pixel \(done\)/)).toBeVisible({ timeout: 30000 });
-  await openScene(page, '#/area-light?n=256&seed=4&strategy=area&t=64');
+  await openScene(page, '#/area-light?n=256&seed=4&strategy=area&t=64&open=floor');
   await page.locator('.al-images').scrollIntoViewIfNeeded();
   await expect(page.getByTestId('floor-spp')).toHaveAttribute('data-value', '16', { timeout: 30000 });
 });

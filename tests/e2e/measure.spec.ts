@@ -18,7 +18,7 @@ async function bytesOf(d: Download): Promise<Uint8Array> {
 test('area-light: flip-mean equals the FLIP of the downloaded render and reference', async ({ page }) => {
   // no animation: the timeline stands at its end, so the floor images show all 64 samples per pixel
   await page.emulateMedia({ reducedMotion: 'reduce' });
-  await openScene(page, '#/area-light?n=256&seed=4&strategy=area');
+  await openScene(page, '#/area-light?n=256&seed=4&strategy=area&open=floor');
   await page.locator('.al-images').scrollIntoViewIfNeeded();
   await expect(page.getByTestId('floor-spp')).toHaveAttribute('data-value', '64', { timeout: 30000 });
   await page.getByTestId('measure-details').locator('summary').click();

@@ -114,7 +114,7 @@ describe('scene palettes (report)', () => {
       'src/scenes/ray-sphere/view/Precision.tsx',
       'src/scenes/ray-sphere/view/float32Traces.ts',
       'src/scenes/area-light/view/Explore.tsx',
-      'src/scenes/area-light/exam/Q6a.tsx',
+      'src/scenes/area-light/view/PatchErrorPlot.tsx',
     ];
     const low: string[] = [];
     for (const f of files) {

@@ -10,11 +10,10 @@ import type { SceneProps } from '../../kit/scene';
 import { ExamQuestion, ExploreFurther, Notice, Revealed, SceneLayout, useTimeline } from '../../ui';
 import { prefersReducedMotion } from '../../ui/timeline';
 import { useWorkerJob } from '../../workers';
-import { runChunked } from '../../ui/chunked';
+import { Fold } from '../../ui/Fold';
 import { makeWorker } from './jobs';
-import { STRATEGIES } from './strategies';
 import { animationLength } from './animation';
-import { buildModel, estimateOne, targetValue, type StrategyEstimate } from './model';
+import { buildModel, targetValue, type StrategyEstimate } from './model';
 import { patchModel } from './patch';
 import { floorJob, floorPassAt } from './floor';
 import { schema, type AreaLightParams } from './params';
@@ -23,7 +22,8 @@ import { Q6b } from './exam/Q6b';
 import { Answer6c, Q6c } from './exam/Q6c';
 import { Controls } from './view/Controls';
 import { ExamConfig } from './view/ExamConfig';
-import { ConvergencePanel, StrategyTable, TimingPanel } from './view/Explore';
+import { ConvergencePanel, TimingPanel } from './view/Explore';
+import { StrategyTable, SYNC_MAX } from './view/StrategyTable';
 import { FloorPanel } from './view/FloorImages';
 import { RunningData } from './view/RunningData';
 import { Legend, Stage } from './view/Stage';
@@ -31,19 +31,15 @@ import './area-light.css';
 
 type Schema = typeof schema;
 
-/** Largest n per strategy estimated on the main thread. */
-const SYNC_MAX = 65536;
-
 export default function AreaLightScene({ params, setParams, mode }: SceneProps<Schema>) {
   const set = useCallback((patch: Partial<AreaLightParams>) => setParams(patch), [setParams]);
   const model = useMemo(() => buildModel(params), [params]);
   const { strategy, n, seed } = params;
 
-  // Up to SYNC_MAX samples per strategy the estimates are computed here (a few ms); beyond, in a
-  // worker, so a slider drag never blocks the page. Same seeds and streams: the same numbers.
-  // The chosen strategy's estimate (Q6(c)'s answer) is computed in that answer's own render (it
-  // mounts with its exam part, not in the page's first render); the table's three in tasks after
-  // it, one strategy per task, so that a phone's first render is not one long task.
+  // Up to SYNC_MAX samples per strategy Q6(c)'s estimate is computed on the main thread, in that
+  // answer's own render (it mounts with its exam part, not in the page's first render); beyond, in
+  // a worker, so a slider drag never blocks the page, and the worker's three estimates also fill
+  // the strategies' table. Below SYNC_MAX the table computes its own, once its fold is opened.
   const big = n > SYNC_MAX;
   // what the estimates depend on (the model object is rebuilt on any parameter change, t included)
   const timingKey = JSON.stringify([
@@ -57,43 +53,24 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
     model.occluder ? 1 : 0,
     seed,
   ]);
-  const [later, setLater] = useState<{ key: string; list: StrategyEstimate[] } | null>(null);
   const estKey = `${timingKey}|${n}`;
-  const latestModel = useRef(model);
-  latestModel.current = model;
-  useEffect(() => {
-    if (big) return;
-    const m = latestModel.current;
-    const list: StrategyEstimate[] = [];
-    const cancels = STRATEGIES.map((s) =>
-      runChunked(() => {
-        list.push(estimateOne(m, s, n, seed));
-        if (list.length === STRATEGIES.length) setLater({ key: estKey, list });
-      }),
-    );
-    return () => cancels.forEach((c) => c());
-  }, [big, estKey, n, seed]);
   const estTask = useWorkerJob(makeWorker, 'estimates', params, {
     enabled: big,
     delayMs: 150,
   });
-  /** The table's estimates, null until they are computed. */
-  const estimates: StrategyEstimate[] | null = big
-    ? (estTask.result ?? null)
-    : later?.key === estKey
-      ? later.list
-      : null;
+  /** The worker's three estimates (n > SYNC_MAX), null until they arrive or when n is small. */
+  const workerEstimates: StrategyEstimate[] | null = big ? (estTask.result ?? null) : null;
   const pending = big && !estTask.result;
   const target = targetValue(model);
   const { pu, pv, psize, ptilt } = params;
   const patchValues = useMemo(() => ({ pu, pv, psize, ptilt }), [pu, pv, psize, ptilt]);
   const patch = useMemo(() => patchModel(model, pu, pv, psize, ptilt), [model, pu, pv, psize, ptilt]);
   // Convergence series (3 × 32768 samples) in the worker: ~0.1 s that a slider drag should not wait for.
-  // The convergence and timing runs start when their panels come near the screen (not on load:
+  // The convergence and timing runs start when their panels are opened and seen (not on load:
   // their results re-render the scene while the first screen should be answering input). Each
-  // panel watches its own box and reports once it has been seen: the panels mount later than this
-  // component (Explore further is deferred), so a box watched from here would still be empty when
-  // the watching starts, and the runs would never start.
+  // panel watches its own box and reports once it has been seen: the panels mount only when their
+  // folds open, so a box watched from here would still be empty when the watching starts, and the
+  // runs would never start.
   const [convSeen, setConvSeen] = useState(false);
   const [timingSeen, setTimingSeen] = useState(false);
   const onConvSeen = useCallback(() => setConvSeen(true), []);
@@ -157,8 +134,8 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
   // re-renders only the stage's animated bits and the floor images' pass choice; each exam part
   // renders on its own, so React can yield between the scene's render and theirs.
   const answer6c = useMemo(
-    () => <Answer6c {...chosen} n={n} big={big} estimates={estimates} pending={pending} />,
-    [chosen, n, big, estimates, pending],
+    () => <Answer6c {...chosen} n={n} big={big} estimates={workerEstimates} pending={pending} />,
+    [chosen, n, big, workerEstimates, pending],
   );
 
   const main = (
@@ -179,27 +156,54 @@ export default function AreaLightScene({ params, setParams, mode }: SceneProps<S
         }
       >
         <Legend strategy={strategy} />
-        <Revealed ask={ask} what="the running estimate as sound and as a table">
-          <RunningData {...chosen} count={animMax} t={tl.t} />
-        </Revealed>
+        <Fold name="running-data" summary="The running estimate as sound and as a table">
+          <Revealed ask={ask} what="the running estimate as sound and as a table">
+            <RunningData {...chosen} count={animMax} t={tl.t} />
+          </Revealed>
+        </Fold>
         <Q6a patch={patch} values={patchValues} set={set} ask={ask} />
         <Q6b patch={patch} model={model} dark={dark} ask={ask} />
         <Q6c model={model} seed={seed} answer={answer6c} ask={ask} />
       </ExamQuestion>
-      <ExploreFurther intro="Beyond the exam: two other ways to sample the same integral, how fast each converges, what it costs, and what its noise looks like on a whole floor.">
-        <Revealed ask={ask} what="the three strategies’ estimates, their convergence and the floor images">
-          <StrategyTable estimates={estimates} strategy={strategy} n={n} seed={seed} target={target} />
-          <ConvergencePanel conv={convTask.result} onSeen={onConvSeen} present={mode.present} />
-          <TimingPanel
-            result={timing.result}
-            running={timing.running}
-            progress={timing.progress}
-            error={timing.error}
-            onSeen={onTimingSeen}
-            present={mode.present}
-          />
-          <FloorPanel job={job} pass={floorPass} />
-        </Revealed>
+      <ExploreFurther intro="Beyond the exam: two other ways to sample the same integral, how fast each converges, what it costs, and what its noise looks like on a whole floor. Each opens on a click.">
+        {/* one child: the four folds mount together (closed, they are four lines) */}
+        <>
+          <Fold name="strategies" summary="The three strategies’ estimates side by side">
+            <Revealed ask={ask} what="the three strategies’ estimates">
+              <StrategyTable
+                model={model}
+                strategy={strategy}
+                n={n}
+                seed={seed}
+                target={target}
+                estKey={estKey}
+                fromWorker={workerEstimates}
+              />
+            </Revealed>
+          </Fold>
+          <Fold name="convergence" summary="Convergence: each strategy’s error against N">
+            <Revealed ask={ask} what="the convergence of the three strategies">
+              <ConvergencePanel conv={convTask.result} onSeen={onConvSeen} present={mode.present} />
+            </Revealed>
+          </Fold>
+          <Fold name="timing" summary="Run time against error, on this machine">
+            <Revealed ask={ask} what="the run time against error">
+              <TimingPanel
+                result={timing.result}
+                running={timing.running}
+                progress={timing.progress}
+                error={timing.error}
+                onSeen={onTimingSeen}
+                present={mode.present}
+              />
+            </Revealed>
+          </Fold>
+          <Fold name="floor" summary="The whole floor rendered with each strategy">
+            <Revealed ask={ask} what="the floor images">
+              <FloorPanel job={job} pass={floorPass} />
+            </Revealed>
+          </Fold>
+        </>
       </ExploreFurther>
     </>
   );

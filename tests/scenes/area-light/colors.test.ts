@@ -28,7 +28,7 @@ describe('area-light colours', () => {
   });
 
   it('the Q6(a) plot draws in the patch colour', () => {
-    const src = readFileSync('src/scenes/area-light/exam/Q6a.tsx', 'utf8');
+    const src = readFileSync('src/scenes/area-light/view/PatchErrorPlot.tsx', 'utf8');
     expect(src.match(/#[0-9a-fA-F]{6}\b/g)).toBeNull();
     expect(src).toContain("'var(--al-patch)'");
   });

@@ -1,25 +1,17 @@
 /**
  * Q6(a): dω = dA cos θₗ / r² by similar triangles, each step with this patch's numbers, the
  * cross-section figure with the patch's controls, and the live check of the formula against the
- * exact solid angle of the patch as it shrinks.
+ * exact solid angle of the patch (how the difference shrinks with the patch is one click away).
  */
-import { memo, useMemo } from 'react';
-import {
-  Derivation,
-  ExamPart,
-  LiveAnswer,
-  MathTex,
-  Plot,
-  Revealed,
-  ShowAsTable,
-  summarizeSeries,
-  type PlotTrace,
-} from '../../../ui';
+import { memo } from 'react';
+import { Derivation, ExamPart, LiveAnswer, MathTex, Revealed } from '../../../ui';
+import { Fold } from '../../../ui/Fold';
 import type { PatchModel } from '../patch';
 import type { AreaLightParams } from '../params';
 import { fmt } from '../view/format';
 import { PatchPanel, type PatchValues } from '../view/PatchPanel';
 import { ReadoutList } from '../view/ReadoutList';
+import { PatchErrorPlot } from '../view/PatchErrorPlot';
 
 const APPROX_LABEL = (
   <>
@@ -44,39 +36,6 @@ export const Q6a = memo(function Q6a({
   /** Asked to predict first: the check is hidden until revealed. */
   ask: boolean;
 }) {
-  const patchTraces: PlotTrace[] = useMemo(
-    () => [
-      {
-        x: Array.from(patch.series.side),
-        y: Array.from(patch.series.relError),
-        type: 'scatter',
-        mode: 'lines',
-        name: '|dA cos θ<sub>l</sub> / r² − Ω| / Ω',
-        line: { color: 'var(--al-patch)' },
-      },
-      {
-        x: [patch.side],
-        y: [Math.abs(patch.relError)],
-        type: 'scatter',
-        mode: 'markers',
-        name: 'this patch',
-        marker: { color: 'var(--al-patch)', size: 10 },
-      },
-    ],
-    [patch],
-  );
-  const { relRows, relSummary } = useMemo(() => {
-    const xs = Array.from(patch.series.side);
-    const ys = Array.from(patch.series.relError);
-    return {
-      relRows: xs.map((x, i) => [x, ys[i]]),
-      relSummary: summarizeSeries(xs, ys, {
-        xLabel: 'side',
-        yLabel: 'the relative difference',
-        logLog: true,
-      }),
-    };
-  }, [patch]);
   return (
     <ExamPart
       id="6a"
@@ -134,16 +93,14 @@ export const Q6a = memo(function Q6a({
       <div className="al-6a">
         <PatchPanel patch={patch} values={values} set={set} />
         <Revealed ask={ask} what="the check of the formula against the exact solid angle">
-          <LiveAnswer
-            title="Check, computed live: the formula against the exact solid angle of the patch"
-            testId="answer-6a"
-          >
+          <LiveAnswer title="Check, computed live: the formula against the exact Ω" testId="answer-6a">
             <p className="al-note">
-              The formula is exact only in the limit of a small patch. The exact solid angle of the orange
-              patch (Van Oosterom–Strackee) and dA cos θ<sub>l</sub> / r² agree better and better as the patch
-              shrinks — the relative difference falls like the square of its size (slope 2 below).
+              Exact only in the limit of a small patch: the exact solid angle Ω of the orange patch (Van
+              Oosterom–Strackee) and dA cos θ<sub>l</sub> / r² differ by a fraction that falls like the square
+              of the patch’s size.
             </p>
             <ReadoutList
+              className="al-check-readouts"
               items={[
                 {
                   id: 'patch-exact',
@@ -158,24 +115,9 @@ export const Q6a = memo(function Q6a({
                 { id: 'patch-cos', label: COS_LABEL, value: patch.cosThetaL, digits: 5 },
               ]}
             />
-            <Plot
-              label="Relative difference between dA cos θₗ / r² and the exact solid angle of the patch, against the patch side (log–log)"
-              description={`${relSummary} This patch: side ${fmt(patch.side)}, relative difference ${fmt(Math.abs(patch.relError), 3)}.`}
-              testId="al-patch-plot"
-              data={patchTraces}
-              height={240}
-              layout={{
-                xaxis: { type: 'log', title: { text: 'patch side' } },
-                yaxis: { type: 'log', title: { text: 'relative difference' } },
-                showlegend: false,
-              }}
-            />
-            <ShowAsTable
-              caption="Relative difference |dA cos θₗ / r² − Ω| / Ω against the patch side"
-              columns={['patch side', 'relative difference']}
-              rows={relRows}
-              testId="al-patch-table"
-            />
+            <Fold name="patch-error" summary="The difference against the patch side">
+              <PatchErrorPlot patch={patch} />
+            </Fold>
           </LiveAnswer>
         </Revealed>
       </div>

@@ -1,9 +1,11 @@
 /**
- * The control column of #/area-light: presets, the sampling strategy with n and the seed, and the
- * light, floor and shading point.
+ * The control column of #/area-light: on the page, what the exam's figure and Q6(c) need (the
+ * samples n); one click away, each in its fold, the strategy with the seed (the summary says both),
+ * and the presets with the light, the floor and the shading point.
  */
 import { memo } from 'react';
 import { Panel, Slider } from '../../../ui';
+import { Fold } from '../../../ui/Fold';
 import { bindControls } from '../../../ui/paramControls';
 import { VectorField } from '../../../ui/VectorField';
 import { PRESETS, presetActive, schema, type AreaLightParams } from '../params';
@@ -55,7 +57,29 @@ export const Controls = memo(function Controls({
   const size = [params.ls?.[0] ?? 1, params.ls?.[1] ?? 1] as const;
   return (
     <>
-      <Panel title="Presets">
+      <Panel title="Sampling">{c.slider('n', 'Samples n', { log: true })}</Panel>
+      <Fold
+        name="sampling"
+        className="al-fold"
+        summary={
+          <>
+            Strategy: {STRATEGY_LABEL[params.strategy]} · seed {params.seed}
+          </>
+        }
+      >
+        {c.select('strategy', 'Strategy', STRATEGY_OPTIONS)}
+        {c.number('seed', 'Seed')}
+        <div className="al-row">
+          <button type="button" onClick={() => set({ seed: (params.seed + 1) >>> 0 })}>
+            New seed
+          </button>
+          <button type="button" aria-pressed={reseeding} onClick={onToggleReseeding}>
+            {reseeding ? '❚❚ Stop reseeding' : '↻ Reseed every second'}
+          </button>
+        </div>
+      </Fold>
+      <Fold name="setup" className="al-fold" summary="Presets, the light and the floor">
+        <h3 className="al-fold-heading">Presets</h3>
         <div className="al-presets" role="group" aria-label="Presets">
           {PRESETS.map((pr) => (
             <button
@@ -70,21 +94,7 @@ export const Controls = memo(function Controls({
             </button>
           ))}
         </div>
-      </Panel>
-      <Panel title="Sampling">
-        {c.select('strategy', 'Strategy', STRATEGY_OPTIONS)}
-        {c.slider('n', 'Samples n', { log: true })}
-        {c.number('seed', 'Seed')}
-        <div className="al-row">
-          <button type="button" onClick={() => set({ seed: (params.seed + 1) >>> 0 })}>
-            New seed
-          </button>
-          <button type="button" aria-pressed={reseeding} onClick={onToggleReseeding}>
-            {reseeding ? '❚❚ Stop reseeding' : '↻ Reseed every second'}
-          </button>
-        </div>
-      </Panel>
-      <Panel title="Light and floor">
+        <h3 className="al-fold-heading">Light and floor</h3>
         <VecField name="lc" label="Light centre" params={params} set={set} />
         {SIDES.map((label, k) => (
           <Slider
@@ -100,7 +110,7 @@ export const Controls = memo(function Controls({
         {c.slider('rho', 'Albedo ρ', { step: 0.01 })}
         <VecField name="p" label="Shading point p (normal +z)" params={params} set={set} />
         {c.toggle('occluder', 'Occluder between point and light')}
-      </Panel>
+      </Fold>
     </>
   );
 });

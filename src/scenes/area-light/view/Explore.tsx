@@ -1,6 +1,6 @@
 /**
- * The "explore further" panels of #/area-light: the three strategies side by side at n samples,
- * their convergence against N, and their run time against error (both computed in the worker).
+ * Two "explore further" panels of #/area-light: the three strategies' convergence against N, and
+ * their run time against error (both computed in the worker, started when the panel is seen).
  */
 import { memo, useEffect, useMemo, useRef } from 'react';
 import type { LightStrategy } from '../../../core/lights';
@@ -9,17 +9,15 @@ import {
   Notice,
   Panel,
   Plot,
-  Readout,
   SERIES,
   ShowAsTable,
   summarizeSeries,
   useSeenOnce,
   type PlotTrace,
 } from '../../../ui';
-import type { StrategyEstimate, TimingPoint, convergence } from '../model';
+import type { TimingPoint, convergence } from '../model';
 import { STRATEGIES, STRATEGY_LABEL, STRATEGY_SHORT } from '../strategies';
 import { fmt } from './format';
-import { ScrollBox } from '../../../ui/ScrollBox';
 
 /** The shared series colours (contrast and colour-vision checked in both themes). */
 const COLORS: Record<LightStrategy, string> = {
@@ -105,72 +103,6 @@ function LogLogPlot({
   const height = heights[present ? 1 : 0];
   return <Plot label={`${label} (log–log)`} testId={testId} {...rest} height={height} layout={layout} />;
 }
-
-/** The three estimates at n samples each (null while they are computed), against the reference. */
-export const StrategyTable = memo(function StrategyTable({
-  estimates,
-  strategy,
-  n,
-  seed,
-  target,
-}: {
-  estimates: StrategyEstimate[] | null;
-  strategy: LightStrategy;
-  n: number;
-  seed: number;
-  target: number;
-}) {
-  return (
-    <Panel title="Three strategies for the same integral">
-      <p>
-        Solid-angle sampling draws ω uniformly over the light’s spherical rectangle (pdf 1/Ω), so each term is
-        Ω f L V cos θ; cosine sampling draws ω with pdf cos θ / π, so each term is ρ L V when the ray hits the
-        light and 0 when it misses. All three are unbiased; they differ in variance. All samples are
-        independent pseudo-random draws, so the standard error s/√N is a valid error estimate for each.
-      </p>
-      <ScrollBox label="All three strategies, their estimates and standard errors">
-        <table className="al-table">
-          <caption>
-            All three strategies, n = {n} each, seed {seed}
-          </caption>
-          <thead>
-            <tr>
-              <th scope="col">strategy</th>
-              <th scope="col">estimate</th>
-              <th scope="col">std. error σ</th>
-              <th scope="col">(est.&nbsp;−&nbsp;ref.)/σ</th>
-            </tr>
-          </thead>
-          <tbody>
-            {estimates === null ? (
-              <tr>
-                <td colSpan={4}>
-                  <progress aria-label="Estimating the three strategies" /> Estimating…
-                </td>
-              </tr>
-            ) : null}
-            {(estimates ?? []).map((e) => (
-              <tr key={e.strategy} className={e.strategy === strategy ? 'al-current' : undefined}>
-                <th scope="row" title={STRATEGY_LABEL[e.strategy]}>
-                  {STRATEGY_SHORT[e.strategy]}
-                </th>
-                <td>
-                  <Readout id={`estimate-${e.strategy}`} label="" value={e.estimate} digits={5} />
-                </td>
-                <td>
-                  <Readout id={`stderr-${e.strategy}`} label="" value={e.stderr} digits={2} />
-                </td>
-                <td>
-                  {e.stderr > 0 && Number.isFinite(target) ? fmt((e.estimate - target) / e.stderr, 3) : '—'}
-                </td>
-              </tr>
-            ))}
-          </tbody>
-        </table>
-      </ScrollBox>
-    </Panel>
-  );
-});
 
 /** Absolute and standard error of the three strategies against N (`onSeen`: the panel came near the screen, start its job). */
 export const ConvergencePanel = memo(function ConvergencePanel({
