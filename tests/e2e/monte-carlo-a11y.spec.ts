@@ -37,7 +37,8 @@ function expectUniform(desc: string, t: number, seed: number) {
 test('the race’s description: live numbers at the opening position, then after a parameter change', async ({
   page,
 }) => {
-  await openScene(page, '#/monte-carlo');
+  // the histograms and the seed field are folded: the link opens them
+  await openScene(page, '#/monte-carlo?open=race-histograms,settings');
   const node = await axNodeOf(page, RACE);
   expect(node!.role).toBe('group');
   expect(node!.name).toMatch(/uniform against importance sampling/);

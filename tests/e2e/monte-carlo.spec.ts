@@ -100,7 +100,7 @@ test.describe('long runs in the worker', () => {
   test('n = 3·10⁶ runs off the main thread and finishes; the convergence plot notes the exact strategy', async ({
     page,
   }) => {
-    await openScene(page, '#/monte-carlo?pdf=proportional&n=3000000');
+    await openScene(page, '#/monte-carlo?pdf=proportional&n=3000000&open=convergence');
     const est = Number(await waitForReadout(page, 'estimate', (v) => v !== 'none', 45000));
     close(est, exactSquare(0, 2), 1e-10);
     await page.getByRole('heading', { name: /Convergence as N grows/ }).scrollIntoViewIfNeeded();
@@ -182,6 +182,19 @@ test.describe('exam first: Q4 (a)–(d)', () => {
     close(await readoutNumber(page, 'q4d-uniform-error'), end.uniform.absError, 1e-10);
     expect(await readoutNumber(page, 'q4d-importance-error')).toBeLessThan(1e-12);
     await expect(page.getByTestId('answer-4d')).toContainText('(c) converges faster');
+
+    // beyond the exam, folded: the race's table and sounds are not mounted until opened; opening
+    // writes open= into the link, and the link opens it again
+    const fold = page.getByTestId('fold-race-data');
+    await expect(fold).not.toHaveAttribute('open');
+    await expect(fold.getByTestId('race-table')).toHaveCount(0);
+    await fold.locator('summary').click();
+    await expect(fold.getByTestId('race-table')).toBeVisible();
+    await expect(fold.getByTestId('trace-uniform-estimate')).toBeVisible();
+    await expect(page).toHaveURL(/[?&]open=race-data(&|$)/);
+    await page.reload();
+    await expect(page.getByTestId('fold-race-data')).toHaveAttribute('open');
+    await expect(page.getByTestId('race-table')).toBeVisible({ timeout: 30_000 });
   });
 });
 
@@ -246,7 +259,7 @@ test.describe('the race’s histograms and the answers first', () => {
   test('the histograms count every sample drawn so far, paused, playing, stepped and reset', async ({
     page,
   }) => {
-    await openScene(page, '#/monte-carlo?seed=3');
+    await openScene(page, '#/monte-carlo?seed=3&open=race-histograms');
     const track = examTrack(3);
     const tl = page.getByTestId('timeline');
     const lanes = [track.uniform.x, track.importance.x];

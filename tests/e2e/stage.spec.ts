@@ -237,7 +237,8 @@ test('a guide preset opened with ask=1 puts the preset’s own question', async 
 test('present=1: every Plotly plot’s tick labels are at least 18 px', async ({ page }) => {
   test.setTimeout(180_000);
   await page.setViewportSize({ width: 1280, height: 720 });
-  await openScene(page, '#/monte-carlo?present=1');
+  // every Plotly plot of the page: those of Explore further are folded, the link opens them
+  await openScene(page, '#/monte-carlo?present=1&open=integrand,convergence,rmse,unbiased');
   const height = await page.evaluate(() => document.documentElement.scrollHeight);
   for (let y = 0; y < height; y += 600) {
     await page.evaluate((y) => window.scrollTo(0, y), y);

@@ -13,7 +13,6 @@ import { SYNC_MAX_N, drawnProblem, stderrIsValid } from './drawnEstimate';
 import { checkLimits, exactIntegral, squareShift, type Fn1 } from './integral';
 import { choosePdf, importanceLane } from './pdfChoice';
 import { comparedStrategies } from './compared';
-import { curves } from './curves';
 import { RACE_MAX } from './race';
 import { sampleTable } from './sampleTable';
 import { MAX_N, type McSchema } from './params';
@@ -122,10 +121,6 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
     : needBig
       ? (bigTask.result ?? null)
       : syncEstimate;
-  const curve = useMemo(
-    () => (f ? curves(f, choice && choice.ok ? choice.density : null, a, b) : null),
-    [f, choice, a, b],
-  );
 
   // --- the animation: uniform against importance on the same ξᵢ (model.raceTrack / raceAt) -------
   const lane = importanceLane(choice, propChoice);
@@ -242,7 +237,7 @@ export default function MonteCarloScene({ params, setParams, mode }: SceneProps<
         />
       </ExamQuestion>
       <McExplore
-        integrand={{ choice, curve, table, a, b }}
+        integrand={{ choice, f, table, a, b }}
         baseArgs={baseArgs}
         selected={selected}
         n={n}

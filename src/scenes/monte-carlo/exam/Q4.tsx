@@ -2,9 +2,11 @@
  * Exam Q4's introduction: what the question asks, a way back to the exam's configuration when the
  * page's settings differ, the answers first, and the race of uniform against importance sampling
  * that (d) refers to (in classroom mode the race is the stage above, and the answers follow here).
+ * The race as a table and as sound is folded under the race.
  */
 import type { ReactNode } from 'react';
 import { Revealed } from '../../../ui';
+import { Fold } from '../../../ui/Fold';
 import { EXAM_F, EXAM_SAMPLES } from '../exam';
 import { EXAM_A, EXAM_B } from '../integral';
 import type { Exact } from '../integral';
@@ -61,9 +63,13 @@ export function Q4Intro({
       </p>
       {race ? answers : null}
       {race}
-      <Revealed ask={ask} what="the race as a table and as sound">
-        <RaceDataSection input={input} t={t} />
-      </Revealed>
+      {input ? (
+        <Fold name="race-data" summary="The race as a table and as sound (audio traces)">
+          <Revealed ask={ask} what="the race as a table and as sound">
+            <RaceDataSection input={input} t={t} />
+          </Revealed>
+        </Fold>
+      ) : null}
       {race ? null : answers}
     </>
   );

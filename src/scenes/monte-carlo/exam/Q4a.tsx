@@ -5,7 +5,7 @@
 import { Derivation, ExamPart, Revealed, formatNumber, LiveAnswer, MathTex, Readout } from '../../../ui';
 import { squareAntiderivative } from '../exam';
 import type { Exact } from '../integral';
-import { MathBlock, n4, shifted, thirds } from '../view/examMath';
+import { MathBlock, n4, shifted, thirds, Worked } from '../view/examMath';
 
 export function Q4a({
   c,
@@ -34,30 +34,32 @@ export function Q4a({
       asks={<>Evaluate I = ∫₀² (x + 2)² dx analytically.</>}
     >
       <Revealed ask={ask} what="the derivation and the answer">
-        <Derivation testId="derivation-4a">
-          {!isSquare ? (
-            <p className="mc-note">
-              Your f is not of the form (x + c)²; this is the exam’s integrand. Your f’s exact integral (by
-              quadrature) is the readout below.
-            </p>
-          ) : null}
-          <p>Expand the square, integrate term by term, and evaluate the antiderivative at the limits:</p>
-          <MathBlock>
-            <MathTex
-              display
-              tex={String.raw`\begin{aligned} I &= \int_{${n4(a)}}^{${n4(b)}} (${shifted(c)})^2\,dx \\ &= \int_{${n4(a)}}^{${n4(b)}} \big(x^2 + ${n4(r.twoC)}x + ${n4(r.c2)}\big)\,dx \\ &= \left[\frac{x^3}{3} + ${n4(c)}x^2 + ${n4(r.c2)}x\right]_{${n4(a)}}^{${n4(b)}} \\ &= \big(${F(r.Fb)}\big) - \big(${F(r.Fa)}\big) \\ &= ${n4(r.valueB)} - ${n4(r.valueA)} = ${thirds(r.value)} \approx ${formatNumber(r.value, 10)} \end{aligned}`}
+        <Worked>
+          <Derivation testId="derivation-4a">
+            {!isSquare ? (
+              <p className="mc-note">
+                Your f is not of the form (x + c)²; this is the exam’s integrand. Your f’s exact integral (by
+                quadrature) is the readout below.
+              </p>
+            ) : null}
+            <p>Expand the square, integrate term by term, and evaluate the antiderivative at the limits:</p>
+            <MathBlock>
+              <MathTex
+                display
+                tex={String.raw`\begin{aligned} I &= \int_{${n4(a)}}^{${n4(b)}} (${shifted(c)})^2\,dx \\ &= \int_{${n4(a)}}^{${n4(b)}} \big(x^2 + ${n4(r.twoC)}x + ${n4(r.c2)}\big)\,dx \\ &= \left[\frac{x^3}{3} + ${n4(c)}x^2 + ${n4(r.c2)}x\right]_{${n4(a)}}^{${n4(b)}} \\ &= \big(${F(r.Fb)}\big) - \big(${F(r.Fa)}\big) \\ &= ${n4(r.valueB)} - ${n4(r.valueA)} = ${thirds(r.value)} \approx ${formatNumber(r.value, 10)} \end{aligned}`}
+              />
+            </MathBlock>
+          </Derivation>
+          <LiveAnswer>
+            <Readout
+              id="exact"
+              label="exact ∫ f dx"
+              value={exact?.value ?? null}
+              digits={12}
+              note={exact ? (exact.problem ?? exact.method) : 'compiling f…'}
             />
-          </MathBlock>
-        </Derivation>
-        <LiveAnswer>
-          <Readout
-            id="exact"
-            label="exact ∫ f dx"
-            value={exact?.value ?? null}
-            digits={12}
-            note={exact ? (exact.problem ?? exact.method) : 'compiling f…'}
-          />
-        </LiveAnswer>
+          </LiveAnswer>
+        </Worked>
       </Revealed>
     </ExamPart>
   );

@@ -53,7 +53,18 @@ export function Q4c({
         <>Repeat (b) with importance sampling, using a pdf proportional to the integrand, p(x) ∝ (x + 2)².</>
       }
     >
-      <WorkedAnswer part="4c" ask={ask} headline={headline}>
+      <WorkedAnswer
+        part="4c"
+        ask={ask}
+        headline={headline}
+        answer={
+          <p>
+            Zero variance: whatever samples are drawn, each term equals I, so one sample already gives the
+            exact answer. (Building this p needed I itself: in rendering, p ∝ f is the ideal that BSDF and
+            light sampling approximate.)
+          </p>
+        }
+      >
         {isSquare ? (
           <>
             <p>
@@ -72,10 +83,15 @@ export function Q4c({
                 display
                 tex={String.raw`\frac{f(x_i)}{p(x_i)} = \frac{(x_i ${sign} ${n4(Math.abs(c))})^2}{\tfrac{3}{${n4(D)}}(x_i ${sign} ${n4(Math.abs(c))})^2} = \frac{${n4(D)}}{3} \approx ${n4(I)}`}
               />
-              <MathTex
-                display
-                tex={String.raw`\begin{aligned} ${rows.map((r, i) => `\\frac{f(x_${i + 1})}{p(x_${i + 1})} &= ${formatNumber(r.propRatio, 12)}`).join(' \\\\ ')} \end{aligned}`}
-              />
+              {/* one formula per term, wrapping two to a line where there is room */}
+              <div className="mc-terms">
+                {rows.map((r, k) => (
+                  <MathTex
+                    key={k}
+                    tex={String.raw`\dfrac{f(x_${k + 1})}{p(x_${k + 1})} = ${formatNumber(r.propRatio, 12)}`}
+                  />
+                ))}
+              </div>
               <MathTex
                 display
                 tex={String.raw`{\langle I\rangle = \frac{1}{${N}}\sum_{i=1}^{${N}} \frac{f(x_i)}{p(x_i)} = ${thirds(prop?.estimate ?? NaN)}},\allowbreak\qquad {s^2 = 0}`}
@@ -88,11 +104,6 @@ export function Q4c({
             table’s resolution.
           </p>
         )}
-        <p>
-          Zero variance: whatever samples are drawn, each term equals I, so one sample already gives the exact
-          answer. (Building this p needed I itself: in rendering, p ∝ f is the ideal that BSDF and light
-          sampling approximate.)
-        </p>
       </WorkedAnswer>
     </ExamPart>
   );

@@ -1,10 +1,12 @@
 /**
- * The scene's side panel: the integral (f, a, b) and the sampling (pdf, sequence, N, seed, given
- * samples), each field writing its URL parameter.
+ * The scene's side panel: the integral (f, a, b) and the sampling pdf, which the exam's figure
+ * needs, then the rest of the sampling (sequence, N, seed, given samples) folded under "More
+ * settings"; each field writes its URL parameter.
  */
 import type { ParamValues } from '../../../kit/params';
 import type { SceneProps } from '../../../kit/scene';
 import { Notice, NumberField, Panel } from '../../../ui';
+import { Fold } from '../../../ui/Fold';
 import { bindControls } from '../../../ui/paramControls';
 import { EXAM_F } from '../exam';
 import { schema, type McSchema, type PdfKind, type Strategy } from '../params';
@@ -75,12 +77,14 @@ export function McControls({
         {params.pdf === 'custom'
           ? expression('pdfexpr', 'p(x) ∝', pdfExprError, 'any positive multiple; normalized numerically')
           : null}
-        {bound.select('strategy', 'sequence', SEQ_OPTIONS, { testId: 'strategy-select' })}
-        {/* N of the estimate ⟨I⟩ (b) and of the convergence plots; the race has its own fixed
-            length (RACE_MAX), said on its transport: the exam fixes neither */}
-        {bound.slider('n', 'samples N of the estimate', { log: true, digits: 8, testId: 'n-slider' })}
-        {bound.number('seed', 'seed', { testId: 'seed-input' })}
-        <SamplesField value={params.samples} onCommit={(s) => setParams({ samples: s })} />
+        <Fold name="settings" summary="More settings: sequence, N, seed, given samples">
+          {bound.select('strategy', 'sequence', SEQ_OPTIONS, { testId: 'strategy-select' })}
+          {/* N of the estimate ⟨I⟩ (b) and of the convergence plots; the race has its own fixed
+              length (RACE_MAX), said on its transport: the exam fixes neither */}
+          {bound.slider('n', 'samples N of the estimate', { log: true, digits: 8, testId: 'n-slider' })}
+          {bound.number('seed', 'seed', { testId: 'seed-input' })}
+          <SamplesField value={params.samples} onCommit={(s) => setParams({ samples: s })} />
+        </Fold>
       </Panel>
     </>
   );

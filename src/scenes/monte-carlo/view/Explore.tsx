@@ -1,9 +1,11 @@
 /**
- * "Explore further" under Q4: the integrand and the pdf, the convergence and RMSE plots, and the
- * unbiasedness histogram (exam Q2 c). Under ask=1 the worker-run plots are results, hidden (and not
- * run) until revealed.
+ * "Explore further" under Q4, each panel folded (mounted, and its worker runs started, only when
+ * opened; the link's `open=` remembers it): the integrand and the pdf, the convergence plots, the
+ * RMSE over runs and against run time, and the unbiasedness histogram (exam Q2 c). Under ask=1 the
+ * worker-run plots are results, hidden (and not run) until revealed.
  */
 import { ExploreFurther, Revealed } from '../../../ui';
+import { Fold } from '../../../ui/Fold';
 import type { WorkerFactory } from '../../../workers';
 import type { ProblemArgs } from '../jobs';
 import type { McTasks } from '../mc.worker';
@@ -41,28 +43,46 @@ export function McExplore({
 }) {
   // what every worker-run panel below needs: the reference value and the worker to run in
   const run = { exact, makeWorker };
+  const hidden = (what: string) => ({ ask, what });
   return (
-    <ExploreFurther intro="Other integrands and pdfs, stratified and quasi-Monte Carlo points, many runs, run time, and unbiasedness (exam Q2 c).">
-      <IntegrandPanel {...integrand} />
+    <ExploreFurther intro="Other integrands and pdfs, stratified and quasi-Monte Carlo points, many runs, run time, and unbiasedness (exam Q2 c). Each opens on a click.">
+      <Fold name="integrand" summary="The integrand and the pdf, with the estimator’s formulas">
+        <IntegrandPanel {...integrand} />
+      </Fold>
       {baseArgs ? (
-        <Revealed ask={ask} what="the convergence plots, the RMSE and the histogram of estimates">
-          <ConvergencePanel {...run} args={baseArgs} nMax={n} present={present} />
-          <RmsePanel
-            {...run}
-            args={baseArgs}
-            nMax={Math.min(n, 100_000)}
-            runs={runs}
-            onRuns={(r) => setParams({ runs: r })}
-          />
-          {integrand.choice?.ok ? (
+        <Fold
+          name="convergence"
+          summary="Convergence as N grows: the running estimate and |error| per strategy"
+        >
+          <Revealed {...hidden('the convergence plots')}>
+            <ConvergencePanel {...run} args={baseArgs} nMax={n} present={present} />
+          </Revealed>
+        </Fold>
+      ) : null}
+      {baseArgs ? (
+        <Fold name="rmse" summary="RMSE over independent runs, and accuracy against run time">
+          <Revealed {...hidden('the RMSE over runs')}>
+            <RmsePanel
+              {...run}
+              args={baseArgs}
+              nMax={Math.min(n, 100_000)}
+              runs={runs}
+              onRuns={(r) => setParams({ runs: r })}
+            />
+          </Revealed>
+        </Fold>
+      ) : null}
+      {baseArgs && integrand.choice?.ok ? (
+        <Fold name="unbiased" summary="Unbiasedness: a histogram of many independent estimates (Q2 c)">
+          <Revealed {...hidden('the histogram of estimates')}>
             <HistogramPanel
               {...run}
               args={{ ...baseArgs, strategies: selected }}
               N={hn}
               onN={(v) => setParams({ hn: v })}
             />
-          ) : null}
-        </Revealed>
+          </Revealed>
+        </Fold>
       ) : null}
     </ExploreFurther>
   );

@@ -2,23 +2,30 @@
  * The integrand and the chosen pdf drawn over [a, b] with the samples of the worked table, and the
  * estimator's formulas.
  */
+import { useMemo } from 'react';
 import { MathTex, Panel } from '../../../ui';
-import type { curves } from '../curves';
+import { curves } from '../curves';
+import type { Fn1 } from '../integral';
 import type { PdfChoice } from '../pdfChoice';
 import type { SampleTable } from '../sampleTable';
 import { MathBlock } from './examMath';
 import { FunctionPlot } from './FunctionPlot';
 
-/** The problem as drawn: the pdf chosen, f and p sampled over [a, b], the worked table's samples. */
+/** The problem as drawn: the pdf chosen, f (null while it compiles) over [a, b], the worked table's samples. */
 export interface IntegrandProps {
   choice: PdfChoice | null;
-  curve: ReturnType<typeof curves> | null;
+  f: Fn1 | null;
   table: SampleTable | null;
   a: number;
   b: number;
 }
 
-export function IntegrandPanel({ choice, curve, table, a, b }: IntegrandProps) {
+export function IntegrandPanel({ choice, f, table, a, b }: IntegrandProps) {
+  // f and the pdf sampled over [a, b], computed here so that a closed fold costs nothing
+  const curve = useMemo(
+    () => (f ? curves(f, choice && choice.ok ? choice.density : null, a, b) : null),
+    [f, choice, a, b],
+  );
   return (
     <Panel title="The integrand and the pdf">
       {choice && choice.ok ? (

@@ -23,6 +23,7 @@ import {
   useTimelineFrame,
 } from '../../../ui';
 import { pow10Text } from '../../../ui/axis';
+import { Fold } from '../../../ui/Fold';
 import { RunningEstimatePlot } from '../../../ui/RunningEstimatePlot';
 import { Axes, H, LineKey, M, PW, raceScales, roundUp2, W, type RaceCurve } from './raceSvg';
 import { RaceHistogram } from './RaceHistogram';
@@ -384,10 +385,28 @@ export const RaceFigure = memo(function RaceFigure({
                   <div key={L.id} className="mc-lane" style={{ borderTopColor: L.color }}>
                     {L.title}
                     {L.readouts}
-                    {L.hist}
+                    {held ? L.hist : null}
                     {L.est}
                   </div>
                 )),
+                // on the page the histograms are one click away (while asking they are the setup to
+                // predict on, so they stay)
+                held ? null : (
+                  <Fold
+                    key="hists"
+                    name="race-histograms"
+                    className="mc-race-hists"
+                    summary="Where the samples fell: each lane’s histogram against its pdf p(x)"
+                  >
+                    <div className="mc-race-grid">
+                      {lanes.map((L) => (
+                        <div key={L.id} className="mc-lane" style={{ borderTopColor: L.color }}>
+                          {L.hist}
+                        </div>
+                      ))}
+                    </div>
+                  </Fold>
+                ),
               ]}
         </div>
         <p className="mc-note mc-race-note">

@@ -1,6 +1,7 @@
 /**
  * Small pieces the exam parts share: TeX formatting of live numbers, a sideways-scrolling block for
- * wide formulas, the key's note on the index of its sum, and the frame of a worked answer.
+ * wide formulas, the key's note on the index of its sum, and the frame of a worked answer (the
+ * derivation beside its answer).
  */
 import type { ReactNode } from 'react';
 import { Derivation, formatNumber, KeyNote, LiveAnswer, MathTex, Revealed } from '../../../ui';
@@ -68,9 +69,15 @@ export function SumIndexNote({ part }: { part: string }) {
   );
 }
 
+/** A part's derivation and its live answer, side by side on a wide screen (one column on a narrow one). */
+export function Worked({ children }: { children: ReactNode }) {
+  return <div className="mc-worked">{children}</div>;
+}
+
 /**
- * A Q4 part's worked answer, hidden under ask=1 until revealed: the derivation (`children`), the live
- * answer (its headline readout, then `answer`), the key's note on its sum, then `after`. Test ids
+ * A Q4 part's worked answer, hidden under ask=1 until revealed: the derivation (`children`) beside
+ * the live answer (its headline readout, then `answer`) with the key's note on its sum under it,
+ * then `after`. Test ids
  * `derivation-${part}` and `answer-${part}`.
  */
 export function WorkedAnswer({
@@ -90,12 +97,16 @@ export function WorkedAnswer({
 }) {
   return (
     <Revealed ask={ask} what="the derivation and the answer">
-      <Derivation testId={`derivation-${part}`}>{children}</Derivation>
-      <LiveAnswer testId={`answer-${part}`}>
-        <div className="readouts mc-headline">{headline}</div>
-        {answer}
-      </LiveAnswer>
-      <SumIndexNote part={part} />
+      <Worked>
+        <Derivation testId={`derivation-${part}`}>{children}</Derivation>
+        <div>
+          <LiveAnswer testId={`answer-${part}`}>
+            <div className="readouts mc-headline">{headline}</div>
+            {answer}
+          </LiveAnswer>
+          <SumIndexNote part={part} />
+        </div>
+      </Worked>
       {after}
     </Revealed>
   );
