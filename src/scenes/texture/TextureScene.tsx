@@ -24,11 +24,12 @@ import { gridTextIfFits, lookupOptions, resolveGrid, withCell } from './model';
 import { pathOf, type QueryPath } from './path';
 import { sphereModel } from './sphere';
 import { GRID_TEXT_MAX, type TextureSchema } from './params';
+import { useFoldOpen } from '../../ui/openFolds';
 import { DURATION, RENDER_HZ, STEP, animContext, formatT } from './view/anim';
-import { AnimGrid, AnimPathPlot, AnimSide, DescribedMain } from './view/animated';
+import { AnimGrid, AnimSide, DescribedMain } from './view/animated';
 import { Controls } from './view/Controls';
-import { ReconstructionPanel, SeamPanel } from './view/Explore';
-import { CellEditor, ExamGives, GridValues, Legend, PathEnd, PathKindSelect } from './view/FigureParts';
+import { ExamGives, GridValues, Legend } from './view/FigureParts';
+import { EDIT_FOLD, EditFold, PathFold, SeamFold, WholeTextureFold } from './view/folds';
 import { PageFigure, StageFigure, StageRest, type FigurePieces } from './view/Layout';
 import type { Grab } from './view/GridView';
 import { Q3a } from './exam/Q3a';
@@ -42,7 +43,10 @@ const TOO_LARGE_TO_EDIT =
 
 export default function TextureScene({ params, setParams, mode }: SceneProps<TextureSchema>) {
   const [drag, setDrag] = useState<{ grab: 'a' | 'b'; u: number; v: number } | null>(null);
-  const [editing, setEditing] = useState(false);
+  const [editSwitch, setEditing] = useState(false);
+  // the grid edits cells only while the editor's fold is open and its switch is on
+  const [editOpen] = useFoldOpen(EDIT_FOLD);
+  const editing = editSwitch && editOpen;
   const [selected, setSelected] = useState<{ i: number; j: number } | null>(null);
   const [editError, setEditError] = useState<string | null>(null);
   const figRef = useRef<HTMLDivElement>(null);
@@ -175,17 +179,10 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
           renderHz={RENDER_HZ}
           label="Query path"
           format={formatT}
-        >
-          <PathKindSelect params={params} setParams={setParams} />
-        </AnimationDriver>
+        />
       </Revealed>
     ),
-    pathEnd: <PathEnd params={params} setParams={setParams} />,
-    plot: (
-      <Revealed ask={ask} what="the value along the path">
-        <AnimPathPlot ctx={ctx} present={mode.present} />
-      </Revealed>
-    ),
+    path: <PathFold ctx={ctx} params={params} setParams={setParams} present={mode.present} ask={ask} />,
     side: (
       <Revealed ask={ask} what="the looked-up values and the weights">
         <AnimSide ctx={ctx} />
@@ -193,9 +190,9 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
     ),
     editor: (
       <>
-        <CellEditor
+        <EditFold
           ctx={ctx}
-          editing={editing}
+          editing={editSwitch}
           onEditing={onEditing}
           selected={selected}
           onSelect={(i, j) => setSelected({ i, j })}
@@ -253,13 +250,13 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
           'spherical mapping does at its seam and poles.'
         }
       >
-        <ReconstructionPanel
+        <WholeTextureFold
           ctx={ctx}
           range={range}
           isExam={src.isExam}
           showChecker={params.preset !== 'checker' ? showChecker : null}
         />
-        <SeamPanel sphere={sphere} opts={opts} normalize={params.normalize} />
+        <SeamFold sphere={sphere} opts={opts} normalize={params.normalize} />
       </ExploreFurther>
     </>
   );
