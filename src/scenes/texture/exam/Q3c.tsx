@@ -26,7 +26,7 @@ import type { TextureSchema } from '../params';
 import { formatRounded } from '../../../core/format';
 import { describeSphere } from '../view/describe';
 import { SphereView } from '../view/SphereView';
-import { SphereBilinear, WideMath, aligned, sphereTex } from '../view/WorkedSteps';
+import { MathSteps, SphereBilinear, sphereBlocks } from '../view/WorkedSteps';
 import { keyNote, texPlain } from './shared';
 import './Q3c.css';
 
@@ -145,21 +145,19 @@ export const Q3c = memo(function Q3c({ params, setParams, sphere, src, present, 
               angles get + 2π, so u ∈ [0, 2π)). Then normalize by the ranges (2π, π) of the two angles to land
               in [0, 1]:
             </p>
-            <WideMath
+            <MathSteps
               label="Spherical coordinates, step by step"
-              tex={aligned(
-                sphereTex({
-                  x: params.x,
-                  y: params.y,
-                  z: params.z,
-                  r: sphere.r,
-                  phi: sphere.phi,
-                  theta: sphere.theta,
-                  pole: sphere.pole,
-                  u: sphere.normalized.u,
-                  v: sphere.normalized.v,
-                }),
-              )}
+              steps={sphereBlocks({
+                x: params.x,
+                y: params.y,
+                z: params.z,
+                r: sphere.r,
+                phi: sphere.phi,
+                theta: sphere.theta,
+                pole: sphere.pole,
+                u: sphere.normalized.u,
+                v: sphere.normalized.v,
+              })}
             />
             <p className="tx-small">
               Bilinear at the normalized (u, v), in the key’s form (each step divided by the cell size):
