@@ -1,9 +1,11 @@
 /**
  * Texture lookup (exam Q3), exam first: the question as the exam states it with the figure that
- * teaches it (the grid, the query travelling its path, the value along the path), then (a) nearest,
- * (b) bilinear and (c) the spherical mapping, each with the key's steps in live numbers and the
- * live answer, then "explore further" (the whole texture reconstructed, its creases, the seam and
- * the poles). All figures come from ./model (pure, over the core); what is on screen at animation
+ * teaches it (the grid, the query travelling its path, its stencil), then (a) nearest, (b) bilinear
+ * and (c) the spherical mapping, each with the key's steps in live numbers and the live answer.
+ * What goes beyond the exam is folded (./view/folds; closed on load, loaded when opened): the
+ * settings, the path's shape and the value along it, the cell editor, the angle sliders, and
+ * "explore further" (the whole texture reconstructed with its creases, the seam and the poles).
+ * All figures come from ./model (pure, over the core); what is on screen at animation
  * position t is model.frameAt(grid, conventions, path, t). This file holds the scene's state and
  * its layout; the exam parts are in ./exam, the figures in ./view.
  */
