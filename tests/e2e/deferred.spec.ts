@@ -42,7 +42,7 @@ test('far sections wait; scrolling mounts them; printing mounts everything at on
     return document.querySelectorAll(sel).length;
   }, pending);
   expect(left).toBe(0);
-  await expect(page.getByTestId('explore-further').locator('.panel').first()).toBeAttached();
+  await expect(page.getByTestId('explore-further').locator('[data-fold]').first()).toBeAttached();
 });
 
 test("printing also mounts the sections nested in the sections it mounts (the ray-sphere exam part's blocks)", async ({

@@ -67,7 +67,7 @@ test.describe('the figures in the accessibility tree', () => {
   test('the main figure is named and its description holds the live numbers; it changes with a parameter and on pause', async ({
     page,
   }) => {
-    await openScene(page, '#/texture');
+    await openScene(page, '#/texture?open=settings');
     const cdp = await page.context().newCDPSession(page);
     const fig = await axNamed(cdp, MAIN);
     expect(fig?.role).toBe('group');
@@ -134,7 +134,7 @@ test.describe('by keyboard alone', () => {
   test('a cell’s value edited without pointing: choose its column and row, type the value', async ({
     page,
   }) => {
-    await openScene(page, '#/texture');
+    await openScene(page, '#/texture?open=edit');
     await tabTo(page, 'edit-toggle');
     await page.keyboard.press('Space');
     await tabTo(page, 'cell-column');

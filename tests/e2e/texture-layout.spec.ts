@@ -1,5 +1,5 @@
 /**
- * Layout of #/texture's "The whole texture, reconstructed": each reconstruction's canvas and the
+ * Layout of #/texture's "The whole texture, reconstructed" (the fold `whole`): each reconstruction's canvas and the
  * SVG overlay with the query's cross share one box, so the cross lands on the picture at the
  * query's texel, and the two pictures stay side by side inside their card, on a laptop and on a
  * phone.
@@ -49,7 +49,7 @@ for (const [w, h] of [
     page,
   }) => {
     await page.setViewportSize({ width: w, height: h });
-    await openScene(page, '#/texture');
+    await openScene(page, '#/texture?open=whole');
     const { card, figs } = await reconBoxes(page);
     expect(figs).toHaveLength(2);
     for (const [k, { canvas, cross }] of figs.entries()) {

@@ -64,7 +64,7 @@ test('wiring: the readouts are the core’s lookups for the exam, texel centres 
 });
 
 test('toggling the controls changes the figures at once and writes the link', async ({ page }) => {
-  await openScene(page, '#/texture');
+  await openScene(page, '#/texture?open=settings');
   await page.getByTestId('align-select').selectOption('center');
   const centre = expected('align=center');
   await waitForReadout(page, 'bilinear', (v) => Number(v) === centre.bilinear);
@@ -93,7 +93,7 @@ test.describe('interaction', () => {
         return orig.apply(this, args);
       } as typeof orig;
     });
-    await openScene(page, '#/texture?preset=random&size=32');
+    await openScene(page, '#/texture?preset=random&size=32&open=whole');
     const svg = page.getByTestId('texel-grid');
     await expect(svg).toBeVisible();
     // the reconstructions are drawn when they come near the screen
@@ -152,9 +152,21 @@ test.describe('interaction', () => {
     close(await readoutNumber(page, 'bilinear'), L(u, v), 1e-9);
   });
 
-  test('editing a cell changes the lookups', async ({ page }) => {
+  test('the cell editor is folded (opened by a click, kept by the link); editing a cell changes the lookups', async ({
+    page,
+  }) => {
     await openScene(page, '#/texture');
+    // closed on load with nothing mounted; a click opens it and writes open=edit, which a reload keeps
+    const fold = page.getByTestId('fold-edit');
+    await expect(fold).not.toHaveAttribute('open');
+    await expect(page.getByTestId('edit-toggle')).toHaveCount(0);
+    await fold.locator('summary').click();
+    await expect(page).toHaveURL(/[?&]open=edit(&|$)/);
+    await page.reload();
+    await page.waitForSelector('main#main');
+    await expect(page.getByTestId('fold-edit')).toHaveAttribute('open', '');
     await page.getByTestId('edit-toggle').check();
+    await page.getByTestId('texel-grid').scrollIntoViewIfNeeded();
     const box = (await page.getByTestId('texel-grid').boundingBox())!;
     // the node (0.5, 0.25) = value 18; the plotted window is [−0.08, 1.08]
     const fx = (0.5 + 0.08) / 1.16;

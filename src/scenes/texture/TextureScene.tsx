@@ -1,9 +1,11 @@
 /**
  * Texture lookup (exam Q3), exam first: the question as the exam states it with the figure that
- * teaches it (the grid, the query travelling its path, the value along the path), then (a) nearest,
- * (b) bilinear and (c) the spherical mapping, each with the key's steps in live numbers and the
- * live answer, then "explore further" (the whole texture reconstructed, its creases, the seam and
- * the poles). All figures come from ./model (pure, over the core); what is on screen at animation
+ * teaches it (the grid, the query travelling its path, its stencil), then (a) nearest, (b) bilinear
+ * and (c) the spherical mapping, each with the key's steps in live numbers and the live answer.
+ * What goes beyond the exam is folded (./view/folds; closed on load, loaded when opened): the
+ * settings, the path's shape and the value along it, the cell editor, the angle sliders, and
+ * "explore further" (the whole texture reconstructed with its creases, the seam and the poles).
+ * All figures come from ./model (pure, over the core); what is on screen at animation
  * position t is model.frameAt(grid, conventions, path, t). This file holds the scene's state and
  * its layout; the exam parts are in ./exam, the figures in ./view.
  */
@@ -24,11 +26,12 @@ import { gridTextIfFits, lookupOptions, resolveGrid, withCell } from './model';
 import { pathOf, type QueryPath } from './path';
 import { sphereModel } from './sphere';
 import { GRID_TEXT_MAX, type TextureSchema } from './params';
+import { useFoldOpen } from '../../ui/openFolds';
 import { DURATION, RENDER_HZ, STEP, animContext, formatT } from './view/anim';
-import { AnimGrid, AnimPathPlot, AnimSide, DescribedMain } from './view/animated';
+import { AnimGrid, AnimSide, DescribedMain } from './view/animated';
 import { Controls } from './view/Controls';
-import { ReconstructionPanel, SeamPanel } from './view/Explore';
-import { CellEditor, ExamGives, GridValues, Legend, PathEnd, PathKindSelect } from './view/FigureParts';
+import { ExamGives, GridValues, Legend } from './view/FigureParts';
+import { EDIT_FOLD, EditFold, PathFold, SeamFold, WholeTextureFold } from './view/folds';
 import { PageFigure, StageFigure, StageRest, type FigurePieces } from './view/Layout';
 import type { Grab } from './view/GridView';
 import { Q3a } from './exam/Q3a';
@@ -42,7 +45,10 @@ const TOO_LARGE_TO_EDIT =
 
 export default function TextureScene({ params, setParams, mode }: SceneProps<TextureSchema>) {
   const [drag, setDrag] = useState<{ grab: 'a' | 'b'; u: number; v: number } | null>(null);
-  const [editing, setEditing] = useState(false);
+  const [editSwitch, setEditing] = useState(false);
+  // the grid edits cells only while the editor's fold is open and its switch is on
+  const [editOpen] = useFoldOpen(EDIT_FOLD);
+  const editing = editSwitch && editOpen;
   const [selected, setSelected] = useState<{ i: number; j: number } | null>(null);
   const [editError, setEditError] = useState<string | null>(null);
   const figRef = useRef<HTMLDivElement>(null);
@@ -175,17 +181,10 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
           renderHz={RENDER_HZ}
           label="Query path"
           format={formatT}
-        >
-          <PathKindSelect params={params} setParams={setParams} />
-        </AnimationDriver>
+        />
       </Revealed>
     ),
-    pathEnd: <PathEnd params={params} setParams={setParams} />,
-    plot: (
-      <Revealed ask={ask} what="the value along the path">
-        <AnimPathPlot ctx={ctx} present={mode.present} />
-      </Revealed>
-    ),
+    path: <PathFold ctx={ctx} params={params} setParams={setParams} present={mode.present} ask={ask} />,
     side: (
       <Revealed ask={ask} what="the looked-up values and the weights">
         <AnimSide ctx={ctx} />
@@ -193,9 +192,9 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
     ),
     editor: (
       <>
-        <CellEditor
+        <EditFold
           ctx={ctx}
-          editing={editing}
+          editing={editSwitch}
           onEditing={onEditing}
           selected={selected}
           onSelect={(i, j) => setSelected({ i, j })}
@@ -253,13 +252,13 @@ export default function TextureScene({ params, setParams, mode }: SceneProps<Tex
           'spherical mapping does at its seam and poles.'
         }
       >
-        <ReconstructionPanel
+        <WholeTextureFold
           ctx={ctx}
           range={range}
           isExam={src.isExam}
           showChecker={params.preset !== 'checker' ? showChecker : null}
         />
-        <SeamPanel sphere={sphere} opts={opts} normalize={params.normalize} />
+        <SeamFold sphere={sphere} opts={opts} normalize={params.normalize} />
       </ExploreFurther>
     </>
   );

@@ -4,7 +4,7 @@ import { Readout } from '../../../ui';
 import { KEY_PRINTED } from '../readouts';
 import { lookupAt } from '../model';
 import { formatRounded } from '../../../core/format';
-import { NearestWorked, nearestBlock } from '../view/WorkedSteps';
+import { NearestWorked, nearestBlocks } from '../view/WorkedSteps';
 import { answerOf, isExamShown, queryPart, shownPoint, type PartBody } from './shared';
 
 const Worked: PartBody = ({ shown: { ctx, frame } }) => (
@@ -57,6 +57,6 @@ export const Q3a = queryPart(
   '3a',
   'Nearest neighbour',
   'What value does nearest-neighbour lookup return at (u, v) = (0.4, 0.24)?',
-  ({ ctx, frame }) => nearestBlock(ctx.grid, frame.lookup, ctx.opts),
+  ({ ctx, frame }) => nearestBlocks(ctx.grid, frame.lookup, ctx.opts),
   [Worked, Answer, Note],
 );

@@ -1,7 +1,7 @@
 /** Q3(b): bilinear interpolation at the query, in the key's form, and what dropping the cell size does. */
 import { KEY_PRINTED, agreesWithKey } from '../readouts';
 import { formatRounded } from '../../../core/format';
-import { BilinearWorked, bilinearBlock } from '../view/WorkedSteps';
+import { BilinearWorked, bilinearBlocks } from '../view/WorkedSteps';
 import { answerOf, isExamShown, queryPart, shownPoint, type PartBody } from './shared';
 
 const Worked: PartBody = ({ shown: { ctx, frame } }) => <BilinearWorked opts={ctx.opts} q={frame.lookup} />;
@@ -50,6 +50,6 @@ export const Q3b = queryPart(
   '3b',
   'Bilinear',
   'What value does bilinear interpolation give at (u, v) = (0.4, 0.24)?',
-  ({ ctx, frame }) => bilinearBlock(frame.lookup, ctx.opts),
+  ({ ctx, frame }) => bilinearBlocks(frame.lookup, ctx.opts),
   [Worked, Answer, Note],
 );

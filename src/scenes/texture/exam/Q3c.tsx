@@ -1,11 +1,12 @@
 /**
- * Q3(c): the spherical mapping. The point (x, y, z) from the fields, the angle sliders or a click
- * on the sphere; its (u, v) step by step, the bilinear value there, and the same lookup without
+ * Q3(c): the spherical mapping. The point (x, y, z) from the fields, a click on the sphere or the
+ * angle sliders (folded: the fields and the sphere are the exam's way); its (u, v) step by step, the bilinear value there, and the same lookup without
  * the normalization (which the key marks down).
  */
 import { memo, useCallback, useMemo } from 'react';
 import type { SceneProps } from '../../../kit/scene';
 import { ScrollBox } from '../../../ui/ScrollBox';
+import { Fold } from '../../../ui/Fold';
 import {
   DescribedFigure,
   Derivation,
@@ -26,7 +27,7 @@ import type { TextureSchema } from '../params';
 import { formatRounded } from '../../../core/format';
 import { describeSphere } from '../view/describe';
 import { SphereView } from '../view/SphereView';
-import { SphereBilinear, WideMath, aligned, sphereTex } from '../view/WorkedSteps';
+import { MathSteps, SphereBilinear, sphereBlocks } from '../view/WorkedSteps';
 import { keyNote, texPlain } from './shared';
 import './Q3c.css';
 
@@ -88,19 +89,23 @@ export const Q3c = memo(function Q3c({ params, setParams, sphere, src, present, 
             />
           ))}
           {/* the angles are what (c) asks for: not shown before the reveal */}
-          {(ask ? [] : ANGLES).map(({ key, label, max }) => (
-            <Slider
-              key={key}
-              label={label}
-              unit="°"
-              value={round4(angles[key])}
-              min={0}
-              max={max}
-              step={0.1}
-              onChange={(x) => setAngles({ ...angles, [key]: x })}
-              testId={`${key}-slider`}
-            />
-          ))}
+          {ask ? null : (
+            <Fold name="angles" summary="Move it by angles φ, θ" className="tx-fold">
+              {ANGLES.map(({ key, label, max }) => (
+                <Slider
+                  key={key}
+                  label={label}
+                  unit="°"
+                  value={round4(angles[key])}
+                  min={0}
+                  max={max}
+                  step={0.1}
+                  onChange={(x) => setAngles({ ...angles, [key]: x })}
+                  testId={`${key}-slider`}
+                />
+              ))}
+            </Fold>
+          )}
           <Toggle
             label="Normalize by (2π, π)"
             checked={n}
@@ -127,7 +132,7 @@ export const Q3c = memo(function Q3c({ params, setParams, sphere, src, present, 
             <SphereView {...shown} normalize={n} dir={dir} onPick={onPick} height={present ? 420 : 320} />
           </DescribedFigure>
           <p className="tx-small">
-            Click the sphere to pick a point, or use {ask ? '' : 'the angle sliders or '}the x, y, z fields.
+            Click the sphere to pick a point, or use the x, y, z fields{ask ? '' : ' or the angles'}.
           </p>
         </div>
       </div>
@@ -145,21 +150,19 @@ export const Q3c = memo(function Q3c({ params, setParams, sphere, src, present, 
               angles get + 2π, so u ∈ [0, 2π)). Then normalize by the ranges (2π, π) of the two angles to land
               in [0, 1]:
             </p>
-            <WideMath
+            <MathSteps
               label="Spherical coordinates, step by step"
-              tex={aligned(
-                sphereTex({
-                  x: params.x,
-                  y: params.y,
-                  z: params.z,
-                  r: sphere.r,
-                  phi: sphere.phi,
-                  theta: sphere.theta,
-                  pole: sphere.pole,
-                  u: sphere.normalized.u,
-                  v: sphere.normalized.v,
-                }),
-              )}
+              steps={sphereBlocks({
+                x: params.x,
+                y: params.y,
+                z: params.z,
+                r: sphere.r,
+                phi: sphere.phi,
+                theta: sphere.theta,
+                pole: sphere.pole,
+                u: sphere.normalized.u,
+                v: sphere.normalized.v,
+              })}
             />
             <p className="tx-small">
               Bilinear at the normalized (u, v), in the key’s form (each step divided by the cell size):
@@ -174,21 +177,23 @@ export const Q3c = memo(function Q3c({ params, setParams, sphere, src, present, 
           </Derivation>
         )}
         <LiveAnswer testId="answer-3c">
-          <div className="readouts">
-            <Readout id="sphere-u" label={n ? 'u = φ / 2π' : 'u = φ (radians)'} value={ro.sphereU} />
-            <Readout id="sphere-v" label={n ? 'v = θ / π' : 'v = θ (radians)'} value={ro.sphereV} />
-            <Readout
-              id="sphere-bilinear"
-              label={n ? 'Bilinear at (u, v)' : 'Bilinear at (φ, θ), not normalized'}
-              value={ro.sphereBilinear}
-              note={
-                examS && ro.sphereBilinear !== null
-                  ? keyNote(ro.sphereBilinear, n ? KEY_PRINTED.sphere : KEY_PRINTED.sphereRaw)
-                  : undefined
-              }
-            />
+          <div className="tx-sphere-answer">
+            <div className="readouts">
+              <Readout id="sphere-u" label={n ? 'u = φ / 2π' : 'u = φ (radians)'} value={ro.sphereU} />
+              <Readout id="sphere-v" label={n ? 'v = θ / π' : 'v = θ (radians)'} value={ro.sphereV} />
+              <Readout
+                id="sphere-bilinear"
+                label={n ? 'Bilinear at (u, v)' : 'Bilinear at (φ, θ), not normalized'}
+                value={ro.sphereBilinear}
+                note={
+                  examS && ro.sphereBilinear !== null
+                    ? keyNote(ro.sphereBilinear, n ? KEY_PRINTED.sphere : KEY_PRINTED.sphereRaw)
+                    : undefined
+                }
+              />
+            </div>
+            {sphere.ok ? <SphereCompare sphere={sphere} /> : null}
           </div>
-          {sphere.ok ? <SphereCompare sphere={sphere} /> : null}
         </LiveAnswer>
         {sphere.ok ? (
           <KeyNote testId="key-note">

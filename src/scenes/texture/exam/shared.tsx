@@ -36,11 +36,11 @@ export interface Shown {
  * frame, so the derivation and the answer under it never disagree. Paused (stepped, scrubbed,
  * edited) it is the exact position, at once (the steps' formula shows as plain text until it is
  * typeset: ./view/WorkedSteps' `exact` math). While it plays or a handle is dragged it follows the
- * moving query at most TEXT_HZ times a second, and a new position is shown only once its formula
- * (`texOf`) is typeset, so the formula and the numbers beside it change in one render; one typeset
- * is in flight at a time, and the latest position waits for it.
+ * moving query at most TEXT_HZ times a second, and a new position is shown only once its formulas
+ * (`texOf`, the steps' blocks) are typeset, so the formulas and the numbers beside them change in
+ * one render; one typeset is in flight at a time, and the latest position waits for it.
  */
-export function useShownFrame(ctx: AnimContext, texOf: (s: Shown) => string): Shown {
+export function useShownFrame(ctx: AnimContext, texOf: (s: Shown) => readonly string[]): Shown {
   const tStill = useStillT(ctx.store);
   const playing = usePlaying(ctx.store);
   const moves = playing || ctx.dragging;
@@ -76,7 +76,7 @@ export function useShownFrame(ctx: AnimContext, texOf: (s: Shown) => string): Sh
     r.at = now;
     const run = (w: Shown) => {
       r.busy = true;
-      void preloadMath(texOf(w), true).then(() => {
+      void Promise.all(texOf(w).map((tex) => preloadMath(tex, true))).then(() => {
         // a typeset that ends after the pause (or the drop) is not shown: the exact position is
         if (alive.current && movingNow()) setMoving(w);
         r.busy = false;
@@ -168,13 +168,13 @@ export type PartBody = (props: { shown: Shown; playing: boolean }) => ReactNode;
 
 /**
  * An exam part about the query, (a) or (b): the not-the-exam line, then its worked steps (whose
- * formula is `texOf`), its live answer and the key's note, all at one shown position.
+ * formulas are `texOf`), its live answer and the key's note, all at one shown position.
  */
 export function queryPart(
   id: string,
   title: string,
   asks: string,
-  texOf: (s: Shown) => string,
+  texOf: (s: Shown) => readonly string[],
   [Worked, Answer, Note]: readonly [PartBody, PartBody, PartBody],
 ) {
   return function QueryPart({ ctx, toExam, ask }: QueryPartProps) {

@@ -1,10 +1,16 @@
-/** The scene's control panels: the query and its path, the conventions, and the texture's values. */
+/**
+ * The scene's control panels: the query (what the exam's figure needs), and folded under it the
+ * conventions and the texture's values (the exam's by default; the fold's summary says which are
+ * in use).
+ */
 import { memo, useState } from 'react';
 import type { SceneProps } from '../../../kit/scene';
 import { EXAM_GRID_TEXT, parseGrid, type TextureGrid } from '../../../core/texture';
 import { Panel, Select } from '../../../ui';
+import { Fold } from '../../../ui/Fold';
 import { bindControls } from '../../../ui/paramControls';
 import { gridTextIfFits } from '../model';
+import { settingsInUse } from '../settings';
 import { GRID_TEXT_MAX, schema, type Preset, type TextureSchema } from '../params';
 import './Controls.css';
 
@@ -53,39 +59,45 @@ export const Controls = memo(function Controls({ params, setParams, grid, isExam
           Or click / drag on the grid; with the grid focused, arrow keys move the query (Shift: by 0.1).
         </p>
       </Panel>
-      <Panel title="Conventions" className="tx-panel-conventions">
-        {c.select('align', 'Where the values sit', ALIGN_OPTIONS, { testId: 'align-select' })}
-        {c.toggle('vflip', 'Flip v: v′ = 1 − v (the key accepts it)', { testId: 'vflip-toggle' })}
-        {c.select('wrap', 'Addressing outside [0, 1]', WRAP_OPTIONS, { testId: 'wrap-select' })}
-      </Panel>
-      <Panel title="Texture" className="tx-panel-texture">
-        <Select
-          label="Values"
-          value={presetChoice}
-          options={presetOptions}
-          onChange={(x) => {
-            onTexture();
-            if (x === 'exam') setParams({ preset: 'grid', grid: EXAM_GRID_TEXT });
-            else if (x !== 'custom') setParams({ preset: x });
-          }}
-          testId="preset-select"
-        />
-        {params.preset !== 'grid' ? (
-          <>
-            {c.number('size', 'Size N (N × N, 2 to 64)', { testId: 'size-field' })}
-            {params.preset === 'random' ? (
-              <button type="button" onClick={() => setParams({ seed: (params.seed + 1) % 4294967296 })}>
-                New random values (seed {params.seed + 1})
-              </button>
-            ) : null}
-          </>
-        ) : null}
-        <GridText
-          key={params.grid + params.preset}
-          text={params.preset === 'grid' ? params.grid : (gridTextIfFits(grid) ?? '')}
-          onApply={(t) => setParams({ preset: 'grid', grid: t })}
-        />
-      </Panel>
+      <Fold
+        name="settings"
+        className="tx-settings"
+        summary={`Conventions and texture: ${settingsInUse(params, isExam)}`}
+      >
+        <Panel title="Conventions" className="tx-panel-conventions">
+          {c.select('align', 'Where the values sit', ALIGN_OPTIONS, { testId: 'align-select' })}
+          {c.toggle('vflip', 'Flip v: v′ = 1 − v (the key accepts it)', { testId: 'vflip-toggle' })}
+          {c.select('wrap', 'Addressing outside [0, 1]', WRAP_OPTIONS, { testId: 'wrap-select' })}
+        </Panel>
+        <Panel title="Texture" className="tx-panel-texture">
+          <Select
+            label="Values"
+            value={presetChoice}
+            options={presetOptions}
+            onChange={(x) => {
+              onTexture();
+              if (x === 'exam') setParams({ preset: 'grid', grid: EXAM_GRID_TEXT });
+              else if (x !== 'custom') setParams({ preset: x });
+            }}
+            testId="preset-select"
+          />
+          {params.preset !== 'grid' ? (
+            <>
+              {c.number('size', 'Size N (N × N, 2 to 64)', { testId: 'size-field' })}
+              {params.preset === 'random' ? (
+                <button type="button" onClick={() => setParams({ seed: (params.seed + 1) % 4294967296 })}>
+                  New random values (seed {params.seed + 1})
+                </button>
+              ) : null}
+            </>
+          ) : null}
+          <GridText
+            key={params.grid + params.preset}
+            text={params.preset === 'grid' ? params.grid : (gridTextIfFits(grid) ?? '')}
+            onApply={(t) => setParams({ preset: 'grid', grid: t })}
+          />
+        </Panel>
+      </Fold>
     </>
   );
 });

@@ -1,6 +1,6 @@
 /**
  * Where the pieces of the scene's figure go: on the page (the exam's data, the grid with its
- * transport and the value along the path, the stencil and the cell editor beside it), or in
+ * transport and the folded path, the stencil and the folded cell editor beside it), or in
  * classroom mode on the stage (the grid beside its key readouts and the transport, filling the
  * first screen) with the rest in the panel below it.
  */
@@ -12,15 +12,13 @@ export interface FigurePieces {
   gives: ReactNode;
   /** The grid figure with its colour scale. */
   grid: ReactNode;
-  /** The timeline's transport with the path's shape. */
+  /** The timeline's transport. */
   transport: ReactNode;
-  /** The path's end (number fields). */
-  pathEnd: ReactNode;
-  /** The value along the path. */
-  plot: ReactNode;
+  /** The path's shape and end and the value along it (folded). */
+  path: ReactNode;
   /** The query now and its stencil (the key readouts). */
   side: ReactNode;
-  /** The cell editor and the texture's values as a table. */
+  /** The cell editor (folded) and the texture's values as a table. */
   editor: ReactNode;
 }
 
@@ -32,8 +30,7 @@ export function PageFigure({ p, figRef }: { p: FigurePieces; figRef: RefObject<H
       <div className="tx-figure-main">
         {p.grid}
         {p.transport}
-        {p.pathEnd}
-        {p.plot}
+        {p.path}
       </div>
       <div className="tx-figure-side">
         {p.side}
@@ -61,10 +58,7 @@ export function StageRest({ p }: { p: FigurePieces }) {
   return (
     <div className="tx-figure-cols">
       {p.gives}
-      <div className="tx-figure-main">
-        {p.pathEnd}
-        {p.plot}
-      </div>
+      <div className="tx-figure-main">{p.path}</div>
       <div className="tx-figure-side">{p.editor}</div>
     </div>
   );

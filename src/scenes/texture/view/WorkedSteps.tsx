@@ -25,33 +25,29 @@ function diff(a: number, b: number): string {
   return `(${texNum(a, 5)} - ${fac(b)})`;
 }
 
-export function nearestTex(
-  grid: TextureGrid,
-  q: Lookup,
-  opts: LookupOptions,
-  uName = 'u',
-  vName = 'v',
-): string {
+/** The nearest-neighbour steps (i, j, the node's value), each the rows of one aligned block. */
+function nearestSteps(grid: TextureGrid, q: Lookup, opts: LookupOptions): string[] {
   const n = q.near;
-  const vq = opts.vflip ? `${vName}'` : vName;
+  const vq = opts.vflip ? `v'` : 'v';
   if (opts.align === 'corner') {
     return [
-      `i &= \\operatorname{round}\\big(${uName}\\,(N_u - 1)\\big) \\\\ &= \\operatorname{round}(${texNum(n.u)} \\cdot ${grid.width - 1}) = ${n.i}`,
+      `i &= \\operatorname{round}\\big(u\\,(N_u - 1)\\big) \\\\ &= \\operatorname{round}(${texNum(n.u)} \\cdot ${grid.width - 1}) = ${n.i}`,
       `j &= \\operatorname{round}\\big(${vq}\\,(N_v - 1)\\big) \\\\ &= \\operatorname{round}(${texNum(n.v)} \\cdot ${grid.height - 1}) = ${n.j}`,
       `T_{${n.i},${n.j}} &= ${texNum(n.value)} \\\\ &\\text{(the node at } (${texNum(n.nodeU)},\\ ${texNum(n.nodeV)})\\text{)}`,
-    ].join(' \\\\ ');
+    ];
   }
   return [
-    `i &= \\lfloor ${uName}\\,N_u \\rfloor = \\lfloor ${texNum(n.u)} \\cdot ${grid.width} \\rfloor \\to ${n.i}`,
+    `i &= \\lfloor u\\,N_u \\rfloor = \\lfloor ${texNum(n.u)} \\cdot ${grid.width} \\rfloor \\to ${n.i}`,
     `j &= \\lfloor ${vq}\\,N_v \\rfloor = \\lfloor ${texNum(n.v)} \\cdot ${grid.height} \\rfloor \\to ${n.j}`,
     `T_{${n.i},${n.j}} &= ${texNum(n.value)} \\\\ &\\text{(the texel centred at } (${texNum(n.nodeU)},\\ ${texNum(n.nodeV)})\\text{)}`,
-  ].join(' \\\\ ');
+  ];
 }
 
-export function bilinearTex(q: Lookup, opts: LookupOptions, uName = 'u', vName = 'v'): string {
+/** The key's bilinear steps (c_u, c_l, c), each the rows of one aligned block. */
+function bilinearSteps(q: Lookup, opts: LookupOptions): string[] {
   const b = q.bil;
   const s = q.steps;
-  const vq = opts.vflip ? `${vName}'` : vName;
+  const vq = opts.vflip ? `v'` : 'v';
   // each step on rows short enough for a phone: the formula, the numbers (one product per row), the value
   const step = (
     lhs: string,
@@ -68,7 +64,7 @@ export function bilinearTex(q: Lookup, opts: LookupOptions, uName = 'u', vName =
   const row = (lhs: string, j: number, t0: number, t1: number, value: number) =>
     step(
       lhs,
-      `\\frac{(u_1 - ${uName})\\,T_{${b.i0},${j}} + (${uName} - u_0)\\,T_{${b.i1},${j}}}{\\Delta u}`,
+      `\\frac{(u_1 - u)\\,T_{${b.i0},${j}} + (u - u_0)\\,T_{${b.i1},${j}}}{\\Delta u}`,
       diff(b.u1, b.u),
       t0,
       diff(b.u, b.u0),
@@ -89,17 +85,27 @@ export function bilinearTex(q: Lookup, opts: LookupOptions, uName = 'u', vName =
       b.dv,
       s.c,
     ),
-  ].join(' \\\\[4pt] ');
+  ];
 }
 
 /**
- * Display math that may be wider than its column (phones, classroom type): the box scrolls
- * sideways and, being scrollable, is focusable (keyboard users can scroll it; axe
- * scrollable-region-focusable). `exact`: never shows a formula other than `tex` — until `tex` is
- * typeset it shows as plain text (in the height the typeset one had, so the page does not jump);
- * for steps whose numbers must match the answer shown beside them.
+ * A derivation's steps as display math, each step its own aligned block: side by side where the
+ * column is wide enough, one under another on a phone. The box scrolls sideways when one step is
+ * wider than the column (phones, classroom type) and, being scrollable, is focusable (keyboard
+ * users can scroll it; axe scrollable-region-focusable). `exact`: never shows a formula other than
+ * `steps` — until they are typeset they show as plain text (in the height the typeset ones had, so
+ * the page does not jump); for steps whose numbers must match the answer shown beside them.
  */
-export function WideMath({ tex, label, exact = false }: { tex: string; label: string; exact?: boolean }) {
+export function MathSteps({
+  steps,
+  label,
+  exact = false,
+}: {
+  /** Each step's TeX, an aligned block. */
+  steps: readonly string[];
+  label: string;
+  exact?: boolean;
+}) {
   const box = useRef<HTMLDivElement>(null);
   const typesetHeight = useRef(0);
   useLayoutEffect(() => {
@@ -113,24 +119,26 @@ export function WideMath({ tex, label, exact = false }: { tex: string; label: st
   });
   return (
     <div className="tx-math" tabIndex={0} role="group" aria-label={label} ref={box}>
-      <MathTex key={exact ? tex : undefined} display tex={tex} />
+      {steps.map((tex, k) => (
+        <MathTex key={exact ? tex : k} display tex={tex} />
+      ))}
     </div>
   );
 }
 
-/** `tex` as the lines of an aligned block. */
-export const aligned = (tex: string) => `\\begin{aligned}${tex}\\end{aligned}`;
+/** Each step as the rows of an aligned block. */
+const blocks = (steps: string[]) => steps.map((tex) => `\\begin{aligned}${tex}\\end{aligned}`);
 
-/** The nearest-neighbour steps as one display block (what Q3a shows and typesets ahead). */
-export const nearestBlock = (grid: TextureGrid, q: Lookup, opts: LookupOptions) =>
-  aligned(nearestTex(grid, q, opts));
+/** The nearest-neighbour steps as display blocks (what Q3a shows and typesets ahead). */
+export const nearestBlocks = (grid: TextureGrid, q: Lookup, opts: LookupOptions) =>
+  blocks(nearestSteps(grid, q, opts));
 
-/** The bilinear steps as one display block (what Q3b shows and typesets ahead). */
-export const bilinearBlock = (q: Lookup, opts: LookupOptions) => aligned(bilinearTex(q, opts));
+/** The bilinear steps as display blocks (what Q3b shows and typesets ahead). */
+export const bilinearBlocks = (q: Lookup, opts: LookupOptions) => blocks(bilinearSteps(q, opts));
 
 /** The bilinear steps at the sphere point, in the key's form. */
 export function SphereBilinear({ q, opts }: { q: Lookup; opts: LookupOptions }) {
-  return <WideMath label="Bilinear steps at the sphere point" tex={bilinearBlock(q, opts)} />;
+  return <MathSteps label="Bilinear steps at the sphere point" steps={bilinearBlocks(q, opts)} />;
 }
 
 /** The nearest-neighbour steps (Q3a) for the current query. */
@@ -150,7 +158,7 @@ export const NearestWorked = memo(function NearestWorked({
         ½)/N; nearest-neighbour lookup takes the value of the node closest to the query
         {opts.align === 'center' ? ' (the texel whose square holds it)' : ''}, without blending.
       </p>
-      <WideMath label="Nearest-neighbour steps" tex={nearestBlock(grid, q, opts)} exact />
+      <MathSteps label="Nearest-neighbour steps" steps={nearestBlocks(grid, q, opts)} exact />
     </div>
   );
 });
@@ -166,7 +174,7 @@ export const BilinearWorked = memo(function BilinearWorked({ opts, q }: { opts: 
         Interpolate along u on the upper row (c<sub>u</sub>) and on the lower row (c<sub>l</sub>), then along
         v between them; each step divides by the cell size.
       </p>
-      <WideMath label="Bilinear steps" tex={bilinearBlock(q, opts)} exact />
+      <MathSteps label="Bilinear steps" steps={bilinearBlocks(q, opts)} exact />
       <p className="tx-small">
         The same as the weighted sum of the four nodes, each weighted by the area of the sub-rectangle
         opposite to it: w₀₀ = {texNum(b.w00, 4)}, w₁₀ = {texNum(b.w10, 4)}, w₀₁ = {texNum(b.w01, 4)}, w₁₁ ={' '}
@@ -176,8 +184,11 @@ export const BilinearWorked = memo(function BilinearWorked({ opts, q }: { opts: 
   );
 });
 
-/** The spherical (u, v) of Q3c, step by step with live numbers. */
-export function sphereTex(p: {
+/**
+ * The spherical (u, v) of Q3c, step by step with live numbers, as display blocks: u from y/x, v
+ * from z/r, then the normalization.
+ */
+export function sphereBlocks(p: {
   x: number;
   y: number;
   z: number;
@@ -187,13 +198,10 @@ export function sphereTex(p: {
   pole: boolean;
   u: number;
   v: number;
-}): string {
-  return [
-    `\\frac{y}{x} &= \\frac{r \\sin u \\sin v}{r \\cos u \\sin v} = \\tan u`,
-    `u &= \\operatorname{atan2}(y, x) \\\\ &= \\operatorname{atan2}(${texNum(p.y)},\\ ${texNum(p.x)}) \\\\ &= ${texNum(p.phi)}${p.pole ? '\\quad(\\text{a pole: defined as } 0)' : ''}`,
-    `r &= \\sqrt{x^2 + y^2 + z^2} = ${texNum(p.r)}`,
-    `\\frac{z}{r} &= \\frac{r \\cos v}{r} = \\cos v`,
-    `v &= \\arccos\\frac{z}{r} = \\arccos(${texNum(p.z / p.r)}) \\\\ &= ${texNum(p.theta)}`,
+}): string[] {
+  return blocks([
+    `\\frac{y}{x} &= \\frac{r \\sin u \\sin v}{r \\cos u \\sin v} = \\tan u \\\\[3pt] u &= \\operatorname{atan2}(y, x) \\\\ &= \\operatorname{atan2}(${texNum(p.y)},\\ ${texNum(p.x)}) \\\\ &= ${texNum(p.phi)}${p.pole ? '\\quad(\\text{a pole: defined as } 0)' : ''}`,
+    `r &= \\sqrt{x^2 + y^2 + z^2} = ${texNum(p.r)} \\\\[3pt] \\frac{z}{r} &= \\frac{r \\cos v}{r} = \\cos v \\\\[3pt] v &= \\arccos\\frac{z}{r} = \\arccos(${texNum(p.z / p.r)}) \\\\ &= ${texNum(p.theta)}`,
     `(u, v)_{\\text{tex}} &= \\left(\\frac{u}{2\\pi},\\ \\frac{v}{\\pi}\\right) \\\\ &= \\left(\\frac{${texNum(p.phi)}}{${texNum(2 * Math.PI)}},\\ \\frac{${texNum(p.theta)}}{${texNum(Math.PI)}}\\right) \\\\ &= (${texNum(p.u)},\\ ${texNum(p.v)})`,
-  ].join(' \\\\[3pt] ');
+  ]);
 }

@@ -2,48 +2,17 @@
  * The animated figures beside and under the grid: each renders at the paused position (useStillT)
  * and writes its moving nodes per frame without React (useAnimFrame); see ./anim.
  */
-import {
-  startTransition,
-  useEffect,
-  useMemo,
-  useRef,
-  useState,
-  type ComponentProps,
-  type ReactNode,
-} from 'react';
+import { useMemo, useRef, type ComponentProps, type ReactNode } from 'react';
 import { texel } from '../../../core/texture';
-import {
-  AudioTrace,
-  DescribedFigure,
-  Notice,
-  ShowAsTable,
-  nextTask,
-  summarizeSeries,
-  useAnimFrame,
-  usePlaying,
-  useStillT,
-} from '../../../ui';
+import { DescribedFigure, Notice, useAnimFrame, usePlaying, useStillT } from '../../../ui';
 import { addressingNotes, type Lookup } from '../model';
-import { pathProfile } from '../pathProfile';
 import type { SphereModel } from '../sphere';
 import type { Preset } from '../params';
 import type { AnimContext } from './anim';
 import { GridView } from './GridView';
 import { StencilDetail } from './StencilDetail';
 import { formatRounded } from '../../../core/format';
-import {
-  describePathNow,
-  describePathStructure,
-  describeSphere,
-  describeTexture,
-  nearestEvents,
-  pathEvents,
-  pathSamples,
-  pathTableRows,
-  short,
-  textureName,
-} from './describe';
-import { PathPlot } from './PathPlot';
+import { describeSphere, describeTexture, textureName } from './describe';
 import './animated.css';
 
 /** The grid figure with the query at position t (the grid's layers are memoized inside). */
@@ -55,99 +24,6 @@ export function AnimGrid({
   const draw = useRef<((q: Lookup) => void) | null>(null);
   useAnimFrame(ctx.store, (x) => draw.current?.(ctx.frame(x).dq));
   return <GridView {...rest} q={ctx.frame(t).dq} path={ctx.path} drawRef={draw} />;
-}
-
-/**
- * True from one task after the component mounted: work that can wait for it (a figure below the
- * first screen of a phone) stays out of the page's first render, so loading has no long task.
- */
-function useAfterMount(): boolean {
-  const [on, setOn] = useState(false);
-  useEffect(() => {
-    let live = true;
-    nextTask(() => {
-      if (live) startTransition(() => setOn(true));
-    });
-    return () => {
-      live = false;
-    };
-  }, []);
-  return on;
-}
-
-/**
- * The value along the path with the marker at t (its curves are memoized inside), described in
- * words, with its data as a table and as two audio traces (bilinear with a tick at each cell
- * border, nearest with a tick at each step).
- */
-export function AnimPathPlot({ ctx, present }: { ctx: AnimContext; present: boolean }) {
-  const ready = useAfterMount();
-  const { grid, opts, path } = ctx;
-  const profile = useMemo(() => (ready ? pathProfile(grid, opts, path) : null), [ready, grid, opts, path]);
-  const data = useMemo(() => {
-    if (!profile) return null;
-    const samples = pathSamples(grid, opts, path);
-    const sum = (ys: number[], yLabel: string) =>
-      summarizeSeries(samples.ts, ys, { xLabel: 't', yLabel, format: short });
-    return {
-      samples,
-      summary: `${sum(samples.bil, 'Bilinear')} ${sum(samples.near, 'Nearest')} ${describePathStructure(profile)}`,
-      // bilinear with a tick at each cell border, nearest at each of its steps
-      traces: [
-        { name: 'bilinear', ys: samples.bil, events: pathEvents(profile) },
-        { name: 'nearest', ys: samples.near, events: nearestEvents(profile) },
-      ],
-      rows: pathTableRows(grid, opts, path, profile),
-    };
-  }, [profile, grid, opts, path]);
-  const t = useStillT(ctx.store);
-  const q = ctx.frame(t).frame.lookup;
-  const draw = useRef<((t: number, near: number, bil: number) => void) | null>(null);
-  useAnimFrame(ctx.store, (x) => {
-    const l = ctx.frame(x).frame.lookup;
-    draw.current?.(x, l.near.value, l.bil.value);
-  });
-  const description = data
-    ? `${data.summary} ${describePathNow(t, q.near.value, q.bil.value)}`
-    : 'The value along the path is being computed.';
-  return (
-    <PathPlot
-      profile={profile}
-      t={t}
-      near={q.near.value}
-      bil={q.bil.value}
-      present={present}
-      description={description}
-      drawRef={draw}
-    >
-      {data ? (
-        <div className="tx-plot-a11y">
-          <ShowAsTable
-            caption="The looked-up value along the path"
-            columns={['t', 'nearest', 'bilinear', 'on the path']}
-            rows={data.rows}
-            testId="path-table"
-          />
-          <details className="tx-listen" data-testid="path-listen">
-            <summary>Listen to the plot</summary>
-            {data.traces.map((tr) => (
-              <AudioTrace
-                key={tr.name}
-                label={`${tr.name} along the path`}
-                xs={data.samples.ts}
-                ys={tr.ys}
-                xLabel="t"
-                yLabel={tr.name}
-                events={tr.events}
-                format={short}
-                testId={`path-audio-${tr.name}`}
-              />
-            ))}
-          </details>
-        </div>
-      ) : null}
-    </PathPlot>
-  );
 }
 
 /**
