@@ -70,7 +70,7 @@ export function Q5Plots({
         </LiveDescribed>
       )}
       aroundDelta={(plot) => (
-        <Fold name="delta" summary="Δ along the sweep, robust and textbook: where the ray stops hitting">
+        <Fold name="delta" summary="Δ along the sweep, robust and textbook">
           <LiveDescribed
             {...live}
             label="Δ against the sweep"
