@@ -146,7 +146,7 @@ export function Q5Controls(props: Q5ControlsProps) {
       <Fold name="values" summary="Type the ray and the sphere: o, d, C and r">
         {fields}
       </Fold>
-      <Fold name="more" summary="More settings: the sweep, float32, rays that break the textbook">
+      <Fold name="more" summary="More settings: the sweep, float32, hard cases">
         {sweepControls}
         {arithmetic}
         {breakers}
