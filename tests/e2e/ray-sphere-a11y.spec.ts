@@ -71,7 +71,7 @@ test('the cross-section is a named figure whose description holds the live numbe
   page,
 }) => {
   const o: V = [-3, 0.3, 0.2];
-  await openScene(page, URL_OF(o, [1, 0, 0]));
+  await openScene(page, URL_OF(o, [1, 0, 0], 1, '&open=values'));
   const m = computeModel({ o, d: [1, 0, 0], c: [0, 0, 0], r: 1, method: 'stable' }).chosen!;
   const said = await figDescription(page);
   expect(said).toContain(`Δ = ${n4(m.discriminant)} > 0`);

@@ -56,7 +56,8 @@ test.describe('exam first', () => {
     page,
   }) => {
     const o: V = [-3, 0.3, 0.2];
-    await openScene(page, P(o, [1, 0, 0]));
+    // the t_min note is a fold of the derivation
+    await openScene(page, P(o, [1, 0, 0], '&open=tmin'));
     const part = page.getByTestId('part-5');
     await expect(part).toContainText('The exam asks');
     await expect(part.locator('.exam-asks')).toContainText('centre C');
@@ -93,7 +94,7 @@ test.describe('exam first', () => {
   test('Δ beside a, b, c: b² − 4ac of the shown numbers, and which method computed which', async ({
     page,
   }) => {
-    await openScene(page, P([-3, -1.2, 0.6], [1, 0.4, -0.15]));
+    await openScene(page, P([-3, -1.2, 0.6], [1, 0.4, -0.15], '&open=more'));
     const [a, b, c] = [
       await readoutNumber(page, 'a'),
       await readoutNumber(page, 'b'),

@@ -7,7 +7,10 @@ const fr = Math.fround;
 
 test('precision=f32: the readouts are float32, the textbook test fails 10⁴ r away', async ({ page }) => {
   // f = (−10⁴, −0.5, 0): in float32 c = 10⁸ − 0.75 rounds to 10⁸ and b² − 4ac = 0
-  await openScene(page, '#/ray-sphere?o=0,0,0&d=1,0,0&c=10000,0.5,0&r=1&method=naive&precision=f32');
+  await openScene(
+    page,
+    '#/ray-sphere?o=0,0,0&d=1,0,0&c=10000,0.5,0&r=1&method=naive&precision=f32&open=more',
+  );
   expect(await readout(page, 'c')).toBe('100000000');
   expect(await readout(page, 'discriminant')).toBe('0');
   expect(await readout(page, 'case')).toBe('tangent');

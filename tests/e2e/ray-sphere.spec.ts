@@ -51,13 +51,28 @@ test.describe('the readouts are the model’s', () => {
     }
   });
 
-  test('case preset buttons set the URL and the readouts', async ({ page }) => {
+  test('case preset buttons set the URL and the readouts; Δ along the sweep is a fold the link remembers', async ({
+    page,
+  }) => {
     await openScene(page, '#/ray-sphere');
+    // closed on load: nothing of it is mounted
+    const fold = page.getByTestId('fold-delta');
+    expect(await fold.evaluate((el) => (el as HTMLDetailsElement).open)).toBe(false);
+    await expect(page.getByTestId('delta-figure')).toHaveCount(0);
     for (const name of ['miss', 'tangent', 'inside', 'behind', 'two-hits']) {
       await page.getByTestId(`preset-${name}`).click();
       await waitForReadout(page, 'case', (v) => v === name);
       await expect(page).toHaveURL(/o=/);
     }
+    // opened by a click, it mounts and writes open=delta into the link (beside the preset's values)
+    await fold.locator('summary').click();
+    await expect(page.getByTestId('delta-figure')).toBeVisible();
+    await expect(page).toHaveURL(/[?&]open=delta(&|$)/);
+    await expect(page).toHaveURL(/o=/);
+    // the link opens it again
+    await page.reload();
+    await expect(page.getByTestId('delta-figure')).toBeVisible({ timeout: 30_000 });
+    expect(await page.getByTestId('fold-delta').evaluate((el) => (el as HTMLDetailsElement).open)).toBe(true);
   });
 });
 
@@ -65,7 +80,8 @@ test.describe('precision presets', () => {
   test('far: the robust readouts are the model’s, the textbook column says tangent, and choosing it shows its wrong answer', async ({
     page,
   }) => {
-    await openScene(page, '#/ray-sphere');
+    // the precision presets are under "More settings", the table under "Precision"
+    await openScene(page, '#/ray-sphere?open=more,precision');
     await page.getByTestId('preset-far').click();
     await expect(page).toHaveURL(/o=/);
     const query = page.url().slice(page.url().indexOf('?') + 1);
@@ -85,7 +101,7 @@ test.describe('precision presets', () => {
 
 test.describe('bad input: clear message, safe fallback', () => {
   test('typing a bad value in a field is flagged and does not reach the model', async ({ page }) => {
-    await openScene(page, '#/ray-sphere');
+    await openScene(page, '#/ray-sphere?open=values');
     const before = await readout(page, 't0');
     const r = page.getByTestId('input-r');
     await r.fill('abc');

@@ -34,7 +34,7 @@ test.describe('shared 3D viewport', () => {
   test('arrows orbit, + / − zoom, Reset view and Home restore; focus is visible; axes are labelled', async ({
     page,
   }) => {
-    await openScene(page, '#/ray-sphere');
+    await openScene(page, '#/ray-sphere?open=view3d');
     const vp = page.getByTestId('view-3d');
     await vp.scrollIntoViewIfNeeded();
     await expect(vp).toHaveAttribute('data-status', 'ready', { timeout: 30_000 });
@@ -90,7 +90,7 @@ test.describe('shared 3D viewport', () => {
 
   test('an idle 3D view requests no animation frames', async ({ page }) => {
     await countAnimationFrames(page);
-    await openScene(page, '#/ray-sphere');
+    await openScene(page, '#/ray-sphere?open=view3d');
     const vp = page.getByTestId('view-3d');
     await vp.scrollIntoViewIfNeeded();
     await expect(vp).toHaveAttribute('data-status', 'ready', { timeout: 30_000 });

@@ -1,9 +1,10 @@
 /**
  * #/ray-sphere — exam Q5, exam first: the question, the figure with its sweep animation (the ray
- * moves across the sphere on the shared timeline), the written derivation with live numbers, the
- * live answer, and then, beyond the exam, the 3D view and what floating point does to the
- * textbook form (Ray Tracing Gems ch. 7). This file holds the state and the layout; the exam's
- * blocks are in exam/, the figures in view/.
+ * moves across the sphere on the shared timeline) beside g(t), the written derivation with live
+ * numbers, the live answer; everything else (typed values and settings, Δ along the sweep, the
+ * t_min note, and beyond the exam the 3D view and what floating point does to the textbook form,
+ * Ray Tracing Gems ch. 7) is folded, one click away. This file holds the state and the layout; the
+ * exam's blocks are in exam/, the figures in view/.
  */
 import { useCallback, useDeferredValue, useEffect, useMemo, useRef } from 'react';
 import type { SceneProps } from '../../kit/scene';
@@ -24,16 +25,23 @@ import { computeModel } from './model';
 import { makeSweep, paramsAt, sweepAt } from './sweep';
 import { Q5Answer } from './exam/Q5Answer';
 import { Q5Asks } from './exam/Q5Asks';
-import { activePresetOf, Q5Fields, Q5Presets } from './exam/Q5Controls';
+import { Q5Controls } from './exam/Q5Controls';
+import { activePresetOf, CasePresets } from './exam/Q5Presets';
 import { Q5Derivation } from './exam/Q5Derivation';
-import { Q5Figure, SweepControls } from './exam/Q5Figure';
+import { Q5Figure } from './exam/Q5Figure';
 import { Q5Plots } from './exam/Q5Plots';
 import { InputNotices } from './view/InputNotices';
 import { RaySphereExplore } from './view/Explore';
 import './ray-sphere.css';
 
-/** The figure block's placeholder height (px): the cross-section, the case banner and the transport. */
+/**
+ * Placeholder heights (px) of the first screen's blocks until they mount: the cross-section with
+ * the case banner, the transport and the case presets; the g(t) plot with the Δ plot's fold; the
+ * method and the folded settings.
+ */
 const STAGE_FIG_ESTIMATE = 720;
+const PLOTS_ESTIMATE = 380;
+const CONTROLS_ESTIMATE = 160;
 
 /** Seconds for one sweep (τ from 0 to 1) at 1× speed. */
 const SWEEP_SECONDS = 10;
@@ -118,10 +126,8 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
     <Q5Figure
       {...live}
       sweep={sweep}
-      extent={extent}
       ends={ends}
       onDrag={editSoon}
-      setParams={setParams}
       method={method}
       ask={ask}
       staged={staged}
@@ -129,16 +135,15 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
     />
   );
   const { o, d, c, r, precision } = params;
-  const fields = { o, d, c, r, precision };
   const controls = (
-    <>
-      {staged ? <SweepControls sweep={sweep} extent={extent} setParams={setParams} /> : null}
-      <Q5Presets active={activePreset} setParams={setParams} />
-      <Q5Fields {...fields} method={method} setParams={setParams} edit={edit} />
-    </>
+    <Q5Controls
+      {...{ o, d, c, r, method, precision, sweep, extent, edit, setParams }}
+      active={activePreset}
+      staged={staged}
+    />
   );
   const plots = (
-    <Deferred estimate={640}>
+    <Deferred estimate={PLOTS_ESTIMATE}>
       <Revealed ask={ask} what="g(t) and Δ along the sweep, with their roots and cases" minHeight={200}>
         <Q5Plots {...live} sweep={sweep} method={method} />
       </Revealed>
@@ -155,12 +160,15 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
         ) : (
           <div className="rs-stage" ref={stageRef}>
             <div className="rs-stage-fig">
-              <Deferred estimate={STAGE_FIG_ESTIMATE}>{figure(false)}</Deferred>
-            </div>
-            <div className="rs-stage-ctl">
-              <Deferred estimate={360}>{controls}</Deferred>
+              <Deferred estimate={STAGE_FIG_ESTIMATE}>
+                {figure(false)}
+                <CasePresets active={activePreset} setParams={setParams} />
+              </Deferred>
             </div>
             <div className="rs-stage-plots">{plots}</div>
+            <div className="rs-stage-ctl">
+              <Deferred estimate={CONTROLS_ESTIMATE}>{controls}</Deferred>
+            </div>
           </div>
         )}
         <Deferred estimate={600}>

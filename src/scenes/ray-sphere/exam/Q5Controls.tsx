@@ -1,92 +1,70 @@
 /**
- * Q5's controls beside the figure: the presets (the five cases, and the inputs that break the
- * textbook form) and the typed values of the ray and the sphere.
+ * Q5's controls. On the page only the readouts' method stays in view (with the case presets beside
+ * the figure, ./Q5Presets); typing the ray and the sphere, and the settings beyond the exam (the
+ * sweep, float32 arithmetic, the inputs that break the textbook form), are folds. On the classroom
+ * stage (`present=1`) all of them sit in the drawer, unfolded.
  */
 import { memo } from 'react';
+import { Fold } from '../../../ui/Fold';
 import { NumberField } from '../../../ui';
 import { bindControls } from '../../../ui/paramControls';
 import { VectorField } from '../../../ui/VectorField';
 import { PRECISION_OPTIONS } from '../view/Float32Panel';
 import type { Vec3 } from '../../../core/vec3';
-import { CASE_PRESETS, PRECISION_PRESETS, schema, type Preset, type RaySphereParams } from '../params';
+import type { Sweep } from '../sweep';
+import { schema, type Preset, type RaySphereParams } from '../params';
+import { CasePresets, PrecisionPresets } from './Q5Presets';
 
 type SetParams = (patch: Partial<RaySphereParams>) => void;
 
-/** The preset whose values are those of the URL, if any (one of the module-level preset objects). */
-export function activePresetOf(params: RaySphereParams): Preset | undefined {
-  return [...CASE_PRESETS, ...PRECISION_PRESETS].find((p) => samePreset(p, params));
-}
+const SWEEP_SCHEMA = { sweep: schema.sweep };
+const SWEEP_OPTIONS = [
+  { value: 'offset', label: 'origin moves across the ray' },
+  { value: 'rotate', label: 'direction turns about o' },
+] as const;
 
-function samePreset(p: Preset, params: RaySphereParams): boolean {
-  const eq = (x: readonly number[] | undefined, y: readonly number[]) => !x || x.every((v, i) => v === y[i]);
+/** The sweep's mode and extent. */
+function SweepControls({ sweep, extent, setParams }: { sweep: Sweep; extent: number; setParams: SetParams }) {
+  const bound = bindControls<typeof SWEEP_SCHEMA>(SWEEP_SCHEMA, { sweep: sweep.mode }, setParams);
   return (
-    eq(p.params.o, params.o) &&
-    eq(p.params.d, params.d) &&
-    eq(p.params.c, params.c) &&
-    (p.params.r === undefined || p.params.r === params.r)
-  );
-}
-
-function PresetGroup({
-  name,
-  heading,
-  presets,
-  active,
-  setParams,
-}: {
-  /** The group's accessible name, and the words before its buttons. */
-  name: string;
-  heading: string;
-  presets: readonly Preset[];
-  active: Preset | undefined;
-  setParams: SetParams;
-}) {
-  return (
-    <div className="rs-presets" role="group" aria-label={name}>
-      <span className="rs-presets-label">{heading}</span>
-      {presets.map((p) => (
-        <button
-          key={p.id}
-          type="button"
-          data-testid={`preset-${p.id}`}
-          aria-pressed={active?.id === p.id}
-          onClick={() => setParams({ ...p.params, t: 0.5, play: false })}
-        >
-          {p.label}
-        </button>
-      ))}
+    <div className="rs-sweep-controls">
+      {bound.select('sweep', 'Sweep', SWEEP_OPTIONS, { testId: 'sweep-mode' })}
+      <NumberField
+        label={sweep.mode === 'offset' ? 'extent (± radii)' : 'extent (± angular radii)'}
+        value={extent}
+        onChange={(x) => setParams({ extent: x })}
+        min={0.05}
+        max={1000}
+        step={0.5}
+        testId="sweep-extent"
+      />
     </div>
   );
 }
 
-/** Both preset groups and what the active preset shows (memoised: `active` has a stable identity). */
-export const Q5Presets = memo(function Q5Presets({
-  active,
+/** The readouts' method and arithmetic, as selects bound to their URL parameters. */
+const METHOD_SCHEMA = { method: schema.method };
+const METHOD_OPTIONS = [
+  { value: 'stable', label: 'robust (Ray Tracing Gems ch. 7)' },
+  { value: 'naive', label: 'textbook (−b\u00a0±\u00a0√Δ) / 2a' },
+] as const;
+const PRECISION_SCHEMA = { precision: schema.precision };
+
+function MethodSelect({ method, setParams }: { method: RaySphereParams['method']; setParams: SetParams }) {
+  const bound = bindControls<typeof METHOD_SCHEMA>(METHOD_SCHEMA, { method }, setParams);
+  return bound.select('method', 'Method (for the readouts)', METHOD_OPTIONS);
+}
+
+function ArithmeticSelect({
+  precision,
   setParams,
 }: {
-  active: Preset | undefined;
+  precision: RaySphereParams['precision'];
   setParams: SetParams;
 }) {
-  return (
-    <div className="rs-preset-groups">
-      <PresetGroup
-        name="Case presets"
-        heading="Cases:"
-        presets={CASE_PRESETS}
-        active={active}
-        setParams={setParams}
-      />
-      <PresetGroup
-        name="Precision presets"
-        heading="Break the textbook form:"
-        presets={PRECISION_PRESETS}
-        active={active}
-        setParams={setParams}
-      />
-      {active ? <p className="rs-small rs-preset-what">{active.what}</p> : null}
-    </div>
-  );
-});
+  const bound = bindControls<typeof PRECISION_SCHEMA>(PRECISION_SCHEMA, { precision }, setParams);
+  return bound.select('precision', 'Arithmetic (for the readouts)', PRECISION_OPTIONS);
+}
 
 const BIG = 1e12;
 
@@ -97,59 +75,26 @@ const VECTORS = [
   { name: 'c', label: 'Centre C (URL parameter c)' },
 ] as const;
 
-interface VecFieldProps {
-  name: (typeof VECTORS)[number]['name'];
-  label: string;
-  value: Vec3;
-  edit: SetParams;
-}
-
-function VecField({ name, label, value, edit }: VecFieldProps) {
-  return (
-    <VectorField
-      label={label}
-      value={value}
-      min={-BIG}
-      max={BIG}
-      testIdPrefix={`input-${name}`}
-      onChange={(v) => edit({ [name]: v })}
-    />
-  );
-}
-
-/** The readouts' method and arithmetic, as selects bound to their URL parameters. */
-const READOUT_SCHEMA = { method: schema.method, precision: schema.precision };
-const METHOD_OPTIONS = [
-  { value: 'stable', label: 'robust (Ray Tracing Gems ch. 7)' },
-  { value: 'naive', label: 'textbook (−b\u00a0±\u00a0√Δ) / 2a' },
-] as const;
-
-export interface Q5FieldsProps extends Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r' | 'method' | 'precision'> {
-  setParams: SetParams;
+interface FieldsProps extends Pick<RaySphereParams, 'o' | 'd' | 'c' | 'r'> {
   /** An edit of the ray or sphere: it moves the sweep's centre to the ray on screen. */
   edit: SetParams;
 }
 
 /** The typed values (memoised: a re-render of the scene with the same values leaves it alone). */
-export const Q5Fields = memo(function Q5Fields({
-  o,
-  d,
-  c,
-  r,
-  method,
-  precision,
-  setParams,
-  edit,
-}: Q5FieldsProps) {
-  const bound = bindControls<typeof READOUT_SCHEMA>(READOUT_SCHEMA, { method, precision }, setParams);
+const Q5Fields = memo(function Q5Fields({ o, d, c, r, edit }: FieldsProps) {
   const vectors = { o, d, c };
   return (
-    <details className="rs-fields" open={typeof window === 'undefined' || window.innerWidth > 820}>
-      <summary>Ray o + t d and sphere (centre C, radius r): type values</summary>
-      {bound.select('method', 'Method (for the readouts)', METHOD_OPTIONS)}
-      {bound.select('precision', 'Arithmetic (for the readouts)', PRECISION_OPTIONS)}
+    <div className="rs-fields">
       {VECTORS.map(({ name, label }) => (
-        <VecField key={name} name={name} label={label} value={vectors[name]} edit={edit} />
+        <VectorField
+          key={name}
+          label={label}
+          value={vectors[name] as Vec3}
+          min={-BIG}
+          max={BIG}
+          testIdPrefix={`input-${name}`}
+          onChange={(v) => edit({ [name]: v })}
+        />
       ))}
       <NumberField
         label="Radius r"
@@ -164,6 +109,48 @@ export const Q5Fields = memo(function Q5Fields({
         d need not be unit length: t is then measured in units of |d|. These fields hold the ray at the centre
         of the sweep (sweep position τ = 0.5); editing moves the sweep there.
       </p>
-    </details>
+    </div>
   );
 });
+
+export interface Q5ControlsProps extends FieldsProps, Pick<RaySphereParams, 'method' | 'precision'> {
+  sweep: Sweep;
+  extent: number;
+  /** The preset whose values are the URL's, if any. */
+  active: Preset | undefined;
+  setParams: SetParams;
+  /** In the classroom stage's drawer: everything, unfolded. */
+  staged: boolean;
+}
+
+export function Q5Controls(props: Q5ControlsProps) {
+  const { o, d, c, r, edit, method, precision, sweep, extent, active, setParams, staged } = props;
+  const fields = <Q5Fields o={o} d={d} c={c} r={r} edit={edit} />;
+  const sweepControls = <SweepControls sweep={sweep} extent={extent} setParams={setParams} />;
+  const arithmetic = <ArithmeticSelect precision={precision} setParams={setParams} />;
+  const breakers = <PrecisionPresets active={active} setParams={setParams} />;
+  if (staged)
+    return (
+      <>
+        {sweepControls}
+        <CasePresets active={active} setParams={setParams} />
+        {breakers}
+        <MethodSelect method={method} setParams={setParams} />
+        {arithmetic}
+        {fields}
+      </>
+    );
+  return (
+    <>
+      <MethodSelect method={method} setParams={setParams} />
+      <Fold name="values" summary="Type the ray and the sphere: o, d, C and r">
+        {fields}
+      </Fold>
+      <Fold name="more" summary="More settings: the sweep, float32, hard cases">
+        {sweepControls}
+        {arithmetic}
+        {breakers}
+      </Fold>
+    </>
+  );
+}

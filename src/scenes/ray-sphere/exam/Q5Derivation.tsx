@@ -1,15 +1,14 @@
 /**
  * Q5's written derivation with the numbers of the current ray: substitute, expand, the
- * coefficients, the roots, the two conditions the key marks (Δ ≥ 0, t ≥ 0), the hit, and why a
- * renderer tests t > t_min (with a survey of secondary rays over the sphere).
+ * coefficients, the roots, the two conditions the key marks (Δ ≥ 0, t ≥ 0), the hit, and, folded,
+ * why a renderer tests t > t_min (./Q5TMin).
  */
 import { memo } from 'react';
 import { Derivation, MathTex } from '../../../ui';
-import type { RaySphereMethod } from '../../../core/geometry';
+import { Fold } from '../../../ui/Fold';
 import { activeRows, type RaySphereModel } from '../model';
-import { secondaryFromHit, tMinFor } from '../secondaryRay';
 import { fmt, tx, txVec as v, yes } from '../view/format';
-import { SURVEY_POINTS, useSurvey } from '../view/useSurvey';
+import { TMinNote } from './Q5TMin';
 
 /** The derivation block: while the sweep plays it holds the numbers of where the sweep started. */
 export function Q5Derivation({ model, playing }: { model: RaySphereModel; playing: boolean }) {
@@ -33,7 +32,6 @@ const test = (name: string, x: number, digits: number) =>
 /** Memoised on the (throttled, held) model: a frame of the animation does not re-render it. */
 const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySphereModel }) {
   const res = model.chosen;
-  const [cx, cy, cz] = model.input.c;
   if (!res) return <p>No derivation: the inputs overflow.</p>;
   const { o, d, c, r } = model.input;
   const naive = activeRows(model).rows.find((x) => x.method === 'naive')!.res;
@@ -56,8 +54,6 @@ const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySph
     res.tHit === null
       ? `\\text{no root } t \\ge 0 \\;\\Rightarrow\\; \\text{no hit}`
       : `t_{\\text{hit}} = \\min\\{\\, t_i : t_i \\ge 0 \\,\\} = ${tx(res.tHit, 8)}`;
-  const sec = secondaryFromHit(model.input, res, res.method);
-  const tMin = tMinFor(r);
   return (
     <div className="rs-derivation" data-testid="q5-derivation">
       <ol className="rs-steps">
@@ -149,76 +145,18 @@ const DerivationSteps = memo(function DerivationSteps({ model }: { model: RaySph
           <MathTex display tex={hit} />
         </li>
         <li data-testid="step-tmin">
-          <p>
-            <strong>
-              Why renderers test t &gt; t<sub>min</sub> (a small positive number) instead of t ≥ 0.
-            </strong>{' '}
-            A shadow or reflection ray starts at a hit point on the surface. That point is computed in
-            floating point, so it lies a rounding error inside or outside the sphere, and the quadratic then
-            has a root t ≈ 0 at the starting point itself. With t ≥ 0 that root can count as a hit: the
-            surface shadows itself (“shadow acne”, a speckle of dark dots). Testing t &gt; t<sub>min</sub>,
-            here t<sub>min</sub> = 10⁻⁴ r = {fmt(tMin)}, skips it.
-          </p>
-          {sec ? (
-            <p data-testid="tmin-example">
-              Here: the hit point p = o + t<sub>hit</sub> d = <MathTex tex={v(sec.p)} /> lies |p − C| − r ={' '}
-              {fmt(sec.offSurface)} off the surface. A ray leaving it along the outward normal (towards a
-              light straight above) has roots t = {fmt(sec.res.t0)} and {fmt(sec.res.t1)}: the first is the
-              far side of the sphere behind it, the second is <em>p itself</em>.{' '}
-              {sec.selfHit !== null ? (
-                <>
-                  With t ≥ 0 it counts as a hit at t = {fmt(sec.selfHit)}: the point would be in its own
-                  shadow. With t &gt; t<sub>min</sub>:{' '}
-                  {sec.hitWithTMin === null ? 'no hit, the point is lit' : `a hit at ${fmt(sec.hitWithTMin)}`}
-                  .
-                </>
-              ) : (
-                'Here rounding happened to put p just outside, so t ≥ 0 already rejects it; on other points it does not.'
-              )}
-            </p>
-          ) : null}
-          <TMinSurvey cx={cx} cy={cy} cz={cz} r={model.input.r} method={res.method} />
+          <Fold
+            name="tmin"
+            summary={
+              <>
+                Why renderers test t &gt; t<sub>min</sub> instead of t ≥ 0: shadow acne, on this sphere
+              </>
+            }
+          >
+            <TMinNote model={model} />
+          </Fold>
         </li>
       </ol>
     </div>
-  );
-});
-
-/**
- * Secondary rays from points spread over the sphere: how many hit their own surface with t ≥ 0
- * and with t > t_min. The paragraph shows the counts once all rays are cast (view/useSurvey).
- */
-const TMinSurvey = memo(function TMinSurvey({
-  cx,
-  cy,
-  cz,
-  r,
-  method,
-}: {
-  cx: number;
-  cy: number;
-  cz: number;
-  r: number;
-  method: RaySphereMethod;
-}) {
-  const survey = useSurvey(cx, cy, cz, r, method);
-  if (!survey) {
-    return (
-      <p data-testid="tmin-survey" aria-busy="true">
-        Casting a ray from each of {SURVEY_POINTS} points spread evenly over this sphere…
-      </p>
-    );
-  }
-  return (
-    <p
-      data-testid="tmin-survey"
-      data-zero={survey.withZero}
-      data-tmin={survey.withTMin}
-      data-count={survey.count}
-    >
-      Over {survey.count} points spread evenly over this sphere (each computed as C + r n in doubles), a ray
-      leaving along the normal hits its own surface with t ≥ 0 at <strong>{survey.withZero}</strong> points,
-      and with t &gt; t<sub>min</sub> at <strong>{survey.withTMin}</strong>.
-    </p>
   );
 });

@@ -1,28 +1,25 @@
 /**
  * Q5's figure block: the cross-section at the live position (a described figure), the case
- * banner, and the sweep's transport with the sweep's own controls (mode and extent). On the page
- * they stack; on the classroom stage (`present=1`) the figure takes the height the first screen
- * leaves, over the transport and beside the case and the key readouts. With `ask=1` the roots, the
- * case, the readouts and the sweep stay hidden until revealed.
+ * banner, and the sweep's transport. On the page they stack; on the classroom stage (`present=1`)
+ * the figure takes the height the first screen leaves, over the transport and beside the case and
+ * the key readouts. With `ask=1` the roots, the case, the readouts and the sweep stay hidden until
+ * revealed.
  */
 import type { RefObject } from 'react';
-import { NumberField, Readout, Revealed, TimelineTransport } from '../../../ui';
-import { bindControls } from '../../../ui/paramControls';
+import { Readout, Revealed, TimelineTransport } from '../../../ui';
 import { sweepAt, type Sweep } from '../sweep';
 import type { Vec3 } from '../../../core/vec3';
-import { schema, type RaySphereParams } from '../params';
+import type { RaySphereParams } from '../params';
 import { describeRaySphere, sweepPlaceText } from '../view/describe';
 import { LiveDescribed } from '../view/Described';
 import { LiveCaseBanner, LiveCrossSection, useCoarseModel, type LiveProps } from '../view/Live';
 
 export interface Q5FigureProps extends LiveProps {
   sweep: Sweep;
-  extent: number;
   /** The ends of the sweep, kept in view so the figure does not rescale while it plays. */
   ends: readonly Vec3[];
   /** An edit of the ray or sphere by dragging (coalesced to one per frame by the scene). */
   onDrag: (patch: Partial<RaySphereParams>) => void;
-  setParams: (patch: Partial<RaySphereParams>) => void;
   method: RaySphereParams['method'];
   /** `ask=1` before Reveal: the setup only. */
   ask: boolean;
@@ -46,37 +43,8 @@ function StageReadouts(live: LiveProps) {
   );
 }
 
-const SWEEP_SCHEMA = { sweep: schema.sweep };
-const SWEEP_OPTIONS = [
-  { value: 'offset', label: 'origin moves across the ray' },
-  { value: 'rotate', label: 'direction turns about o' },
-] as const;
-
-/** The sweep's mode and extent (beside the transport on the page, in the drawer on the stage). */
-export function SweepControls({
-  sweep,
-  extent,
-  setParams,
-}: Pick<Q5FigureProps, 'sweep' | 'extent' | 'setParams'>) {
-  const bound = bindControls<typeof SWEEP_SCHEMA>(SWEEP_SCHEMA, { sweep: sweep.mode }, setParams);
-  return (
-    <div className="rs-sweep-controls">
-      {bound.select('sweep', 'Sweep', SWEEP_OPTIONS, { testId: 'sweep-mode' })}
-      <NumberField
-        label={sweep.mode === 'offset' ? 'extent (± radii)' : 'extent (± angular radii)'}
-        value={extent}
-        onChange={(x) => setParams({ extent: x })}
-        min={0.05}
-        max={1000}
-        step={0.5}
-        testId="sweep-extent"
-      />
-    </div>
-  );
-}
-
 export function Q5Figure(props: Q5FigureProps) {
-  const { tl, modelAt, sweep, extent, ends, onDrag, setParams, method, ask, staged, boxRef } = props;
+  const { tl, modelAt, sweep, ends, onDrag, method, ask, staged, boxRef } = props;
   const live = { tl, modelAt };
   // the timeline's position is τ, never t: t is the ray's parameter (on the g(t) axis beside it)
   const fmtPos = (tau: number) => sweepPlaceText({ mode: sweep.mode, tau, x: sweepAt(sweep, tau).x });
@@ -97,12 +65,10 @@ export function Q5Figure(props: Q5FigureProps) {
       <LiveCaseBanner {...live} method={method} />
     </Revealed>
   );
-  // on the stage the sweep's own controls (mode, extent) are in the drawer with the others
+  // the sweep's own settings (mode, extent) are under "More settings" (./Q5Controls)
   const transport = (
     <Revealed ask={ask} what="the sweep of the ray across the sphere">
-      <TimelineTransport timeline={tl} label="Ray sweep" format={fmtPos} testId="timeline">
-        {staged ? null : <SweepControls sweep={sweep} extent={extent} setParams={setParams} />}
-      </TimelineTransport>
+      <TimelineTransport timeline={tl} label="Ray sweep" format={fmtPos} testId="timeline" />
     </Revealed>
   );
   if (!staged)

@@ -12,7 +12,7 @@ export function GpuSection() {
     <Fold
       name="gpu"
       testId="gpu-details"
-      summary="Run the textbook and robust tests in a WebGL2 shader (float32), beside the emulation and float64"
+      summary="What the GPU sees: the textbook and robust tests in a WebGL2 shader (float32), beside the emulation and float64"
     >
       <GpuSpherePanel />
     </Fold>
