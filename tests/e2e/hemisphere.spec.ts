@@ -38,7 +38,10 @@ async function expectMatchesCore(
   const lobe = built.lobe!;
   const core = computeDrawStats(lobe, cosTheta, 'independent', seed, n);
   expect(Number(await readout(page, lobeId === 'exam' ? 'k' : 'k-chosen'))).toBe(lobe.k);
-  expect(Number(await readout(page, 'samples'))).toBe(n);
+  // a link followed on the open page: the previous draw's "ready" may be seen before the new run
+  // starts, so wait for this draw's count (each call here has its own n), then for its statistics
+  await waitForReadout(page, 'samples', (v) => Number(v) === n);
+  await statsReady(page);
   expect(rel(await readoutNumber(page, 'chi2-p'), core.chi2!.pValue)).toBeLessThan(1e-9);
   expect(rel(await readoutNumber(page, 'mc-exact'), core.exact)).toBeLessThan(1e-12);
   expect(rel(await readoutNumber(page, 'mc-uniform'), core.q2.uniform.estimate)).toBeLessThan(1e-12);
