@@ -88,7 +88,7 @@ export function Settings({
           <Fold
             name="settings"
             className="hemi-more"
-            summary="More settings: the density sampled, the Jacobian, the point set, the seed, the animation"
+            summary="More settings: density, Jacobian, point set, seed, animation"
           >
             {density}
             {seed}
