@@ -1,9 +1,10 @@
 /**
  * Scene `#/hemisphere` (exam Q1, Q2), exam first: the question as the exam states it, part by part,
  * each with its written derivation (live numbers) and its live answer; then "Explore further" (other
- * lobes' derivations, floating-point stability). The figure that teaches Q1 — the warp morph of the
- * unit square onto the hemisphere, on the shared timeline — sits right after the question. Samples,
- * χ² and the Q2 estimators are computed in a worker.
+ * lobes' derivations, floating-point stability, float32 on a GPU), each a fold. The figure that
+ * teaches Q1 — the warp morph of the unit square onto the hemisphere, on the shared timeline — sits
+ * right after the question, with only N beside it (the other settings are folded). Samples, χ² and
+ * the Q2 estimators are computed in a worker.
  */
 import { useMemo, type ReactNode } from 'react';
 import type { SceneProps } from '../../kit/scene';
