@@ -82,7 +82,7 @@ async function tabTo(page: Page, selector: string, max = 200) {
 test.describe('the figure described', () => {
   test('the description holds the live numbers and changes with the lobe and on pause', async ({ page }) => {
     test.setTimeout(180_000);
-    await openScene(page, '#/hemisphere?n=2000');
+    await openScene(page, '#/hemisphere?n=2000&open=settings');
     await statsReady(page);
     const core = computeDrawStats(exam, Math.cos, 'independent', 1, 2000);
     await expect
@@ -121,7 +121,7 @@ test.describe('the figure described', () => {
 
   test('the θ histogram: named, summarized, a table of its bins', async ({ page }) => {
     test.setTimeout(120_000);
-    await openScene(page, '#/hemisphere?n=2000&part=1d');
+    await openScene(page, '#/hemisphere?n=2000&part=1d&open=bins');
     await statsReady(page);
     const name = 'Histogram of the sampled polar angles θ against the marginal density p(θ)';
     const d = await figureDescription(page, name);

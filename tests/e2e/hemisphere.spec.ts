@@ -38,7 +38,10 @@ async function expectMatchesCore(
   const lobe = built.lobe!;
   const core = computeDrawStats(lobe, cosTheta, 'independent', seed, n);
   expect(Number(await readout(page, lobeId === 'exam' ? 'k' : 'k-chosen'))).toBe(lobe.k);
-  expect(Number(await readout(page, 'samples'))).toBe(n);
+  // a link followed on the open page: the previous draw's "ready" may be seen before the new run
+  // starts, so wait for this draw's count (each call here has its own n), then for its statistics
+  await waitForReadout(page, 'samples', (v) => Number(v) === n);
+  await statsReady(page);
   expect(rel(await readoutNumber(page, 'chi2-p'), core.chi2!.pValue)).toBeLessThan(1e-9);
   expect(rel(await readoutNumber(page, 'mc-exact'), core.exact)).toBeLessThan(1e-12);
   expect(rel(await readoutNumber(page, 'mc-uniform'), core.q2.uniform.estimate)).toBeLessThan(1e-12);
@@ -63,14 +66,27 @@ test.describe('Q1: the exam lobe', () => {
     await statsReady(page);
     await expectMatchesCore(page, 'phong', 5000, 7);
 
-    await openScene(page, '#/hemisphere?lobe=custom&pdf=cos(theta)&n=4000&seed=3');
+    // the typed density's own derivation is folded under Explore further: the link opens it
+    await openScene(page, '#/hemisphere?lobe=custom&pdf=cos(theta)&n=4000&seed=3&open=lobe-derivation');
     await statsReady(page);
     await expectMatchesCore(page, 'custom', 4000, 3, 8, (t) => Math.cos(t));
     await expect(page.getByTestId('derivation')).toContainText('Numerical steps');
   });
 
-  test('changing the lobe in the UI updates the URL and the readouts', async ({ page }) => {
+  test('"More settings" is folded and remembered in the link; changing the lobe there updates the URL and the readouts', async ({
+    page,
+  }) => {
     await openScene(page, '#/hemisphere?n=2000');
+    // closed on load, nothing mounted inside; opened by a click, which writes open=settings
+    const fold = page.getByTestId('fold-settings');
+    await expect(fold).not.toHaveAttribute('open');
+    await expect(page.getByTestId('lobe')).toHaveCount(0);
+    await fold.locator('summary').click();
+    await expect(page).toHaveURL(/[?&]open=settings(&|$)/);
+    await expect(page.getByTestId('lobe')).toBeVisible();
+    // the link keeps it open
+    await page.reload();
+    await expect(page.getByTestId('fold-settings')).toHaveAttribute('open');
     await statsReady(page);
     await page.getByTestId('lobe').selectOption('uniform');
     await expect(page).toHaveURL(/lobe=uniform/);
@@ -103,7 +119,7 @@ test.describe("the key's inverted Jacobian", () => {
 
 test.describe('typed densities', () => {
   test('typing a density in the field samples it', async ({ page }) => {
-    await openScene(page, '#/hemisphere?lobe=custom&n=3000');
+    await openScene(page, '#/hemisphere?lobe=custom&n=3000&open=settings');
     await statsReady(page);
     const input = page.getByTestId('pdf-input');
     await input.fill('1');
@@ -128,7 +144,8 @@ test.describe('typed densities', () => {
     const input = page.getByTestId('pdf-input');
     for (const [i, [pdf, message]] of bad.entries()) {
       // the first from the link, the others typed
-      if (i === 0) await openScene(page, `#/hemisphere?lobe=custom&n=2000&pdf=${encodeURIComponent(pdf)}`);
+      if (i === 0)
+        await openScene(page, `#/hemisphere?lobe=custom&n=2000&open=settings&pdf=${encodeURIComponent(pdf)}`);
       else {
         await input.fill(pdf);
         await input.press('Enter');

@@ -1,13 +1,15 @@
 /**
  * Scene `#/hemisphere` (exam Q1, Q2), exam first: the question as the exam states it, part by part,
  * each with its written derivation (live numbers) and its live answer; then "Explore further" (other
- * lobes' derivations, floating-point stability). The figure that teaches Q1 — the warp morph of the
- * unit square onto the hemisphere, on the shared timeline — sits right after the question. Samples,
- * χ² and the Q2 estimators are computed in a worker.
+ * lobes' derivations, floating-point stability, float32 on a GPU), each a fold. The figure that
+ * teaches Q1 — the warp morph of the unit square onto the hemisphere, on the shared timeline — sits
+ * right after the question, with only N beside it (the other settings are folded). Samples, χ² and
+ * the Q2 estimators are computed in a worker.
  */
-import { useMemo } from 'react';
+import { useMemo, type ReactNode } from 'react';
 import type { SceneProps } from '../../kit/scene';
-import { useCompiled, ExprField, Notice, Panel, MathTex, formatNumber } from '../../ui';
+import { useCompiled, ExprField, Notice, MathTex, formatNumber } from '../../ui';
+import { Fold } from '../../ui/Fold';
 import { ExamQuestion, ExploreFurther } from '../../ui/exam';
 import { useWorkerJob } from '../../workers';
 import { makeWorker } from './worker';
@@ -114,7 +116,16 @@ export default function HemisphereScene(props: SceneProps<HemisphereSchema>) {
         : null;
 
   const pdfError = pc.status === 'error' ? pc.message : tab && !tab.ok ? tab.message : null;
-  const settings = <Settings params={params} setParams={setParams} pdfError={pdfError} stats={stats} />;
+  const settings = (more: ReactNode) => (
+    <Settings
+      params={params}
+      setParams={setParams}
+      pdfError={pdfError}
+      stats={stats}
+      folded={!mode.present}
+      more={more}
+    />
+  );
 
   const otherLobe =
     lobeId !== 'exam' ? (
@@ -131,7 +142,7 @@ export default function HemisphereScene(props: SceneProps<HemisphereSchema>) {
           </>
         ) : null}
         ; the derivation above and its k are the exam&apos;s, for k cos θ e<sup>φ</sup>. The chosen
-        density&apos;s own derivation is under Explore further.
+        density&apos;s own derivation is folded under Explore further.
       </Notice>
     ) : null;
 
@@ -248,23 +259,22 @@ export default function HemisphereScene(props: SceneProps<HemisphereSchema>) {
         />
       </ExamQuestion>
 
-      <ExploreFurther intro="Beyond the exam: other sampling densities, the numerical stability of the inversion formulas, and quasi-random point sets (chosen beside the figure).">
+      <ExploreFurther intro="Beyond the exam: other sampling densities (chosen under More settings), the numerical stability of the inversion formulas, and the warps in float32 on a GPU. Each opens on its own.">
         {lobeId !== 'exam' ? (
-          <Panel title={`Derivation for the chosen density (${baseLobe ? baseLobe.label : 'typed'})`}>
+          <Fold
+            name="lobe-derivation"
+            summary={`The derivation for the chosen density, ${baseLobe ? baseLobe.label : 'the typed density'}: normalize, marginals, CDFs, inversion`}
+          >
             <Derivation
               lobe={lobeId}
               exponent={params.exponent}
               custom={customLobe}
               customTex={pc.status === 'ok' ? (pc.tex ?? null) : null}
             />
-          </Panel>
+          </Fold>
         ) : null}
-        <Panel title="Numerical stability of the inversion formulas">
-          <StabilityDetails />
-        </Panel>
-        <Panel title="The warps in float32, on a GPU">
-          <GpuWarpSection seed={params.seed} />
-        </Panel>
+        <StabilityDetails />
+        <GpuWarpSection seed={params.seed} />
       </ExploreFurther>
     </div>
   );

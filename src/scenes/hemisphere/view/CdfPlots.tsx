@@ -1,10 +1,11 @@
 /**
  * Q1(c)'s CDFs as curves: P(θ) and P(φ) of the chosen density (integrated from its marginals),
  * the samples' CDF from the histograms of (d) beside them, and the first sample's point (θ₁, ξ₁):
- * the CDF maps each angle back to its uniform number. Each plot is named and summarized, can be
- * heard (its audio trace, a tick at the median) and read as a table.
+ * the CDF maps each angle back to its uniform number. Each plot is named and summarized; folded
+ * under them, each can be heard (its audio trace, a tick at the median) and read as a table.
  */
 import { useMemo } from 'react';
+import { Fold } from '../../../ui/Fold';
 import { AudioTrace, Plot, ShowAsTable, summarizeSeries, type PlotTrace } from '../../../ui';
 import { formatSignificant } from '../../../ui/format';
 import { HALF_PI, TWO_PI, sphericalPhi, sphericalTheta } from '../../../core/sampling';
@@ -20,6 +21,15 @@ const num = (x: number) => formatSignificant(x, 3, 'times');
 const PER_BIN = 16;
 
 type Hist = NonNullable<DrawStats['hist']>['theta'];
+
+/** The model's CDF on a fine grid (PER_BIN points per histogram bin) and the samples' CDF at the bins' edges. */
+function useCdf(f: (x: number) => number, hi: number, hist: Hist | null) {
+  const bins = hist ? hist.centers.length : 36;
+  const model = useMemo(() => cdfCurve(f, 0, hi, bins * PER_BIN), [f, hi, bins]);
+  const samples = useMemo(() => (hist ? histogramCdf(hist.density, hist.width, 0) : null), [hist]);
+  const median = useMemo(() => marginalShape(f, 0, hi).median, [f, hi]);
+  return { bins, model, samples, median };
+}
 
 function CdfPlot({
   f,
@@ -37,10 +47,7 @@ function CdfPlot({
   at: { x: number; xi: number } | null;
   testId: string;
 }) {
-  const bins = hist ? hist.centers.length : 36;
-  const model = useMemo(() => cdfCurve(f, 0, hi, bins * PER_BIN), [f, hi, bins]);
-  const samples = useMemo(() => (hist ? histogramCdf(hist.density, hist.width, 0) : null), [hist]);
-  const median = useMemo(() => marginalShape(f, 0, hi).median, [f, hi]);
+  const { model, samples, median } = useCdf(f, hi, hist);
   // P at the first sample's angle, read off the curve (linear between its points)
   const pAt = useMemo(() => {
     if (!at) return null;
@@ -94,6 +101,40 @@ function CdfPlot({
   ]
     .filter(Boolean)
     .join(' ');
+  return (
+    <div className="hemi-marginal">
+      <Plot
+        label={`The CDF P(${v}) of the chosen density${samples ? ' against the samples' : ''}`}
+        description={description}
+        data={traces}
+        layout={{
+          ...titled(`P(${v}): the CDF${samples ? ' vs the samples' : ''}`, true),
+          xaxis: { title: { text: `${v} (rad)` }, range: [0, hi] },
+          yaxis: { title: { text: `P(${v}) = ξ` }, range: [0, 1.02] },
+          legend: LEGEND_ABOVE,
+        }}
+        height={260}
+        testId={testId}
+      />
+    </div>
+  );
+}
+
+/** The CDF heard (its audio trace, a tick at the median) and read as a table, at the bins' edges. */
+function CdfData({
+  f,
+  hi,
+  v,
+  hist,
+  testId,
+}: {
+  f: (x: number) => number;
+  hi: number;
+  v: 'θ' | 'φ';
+  hist: Hist | null;
+  testId: string;
+}) {
+  const { bins, model, samples, median } = useCdf(f, hi, hist);
   // heard and tabled at the bins' edges: a few dozen points to step through, not hundreds
   const edges = useMemo(() => {
     const x = new Float64Array(bins + 1);
@@ -114,19 +155,6 @@ function CdfPlot({
   );
   return (
     <div className="hemi-marginal">
-      <Plot
-        label={`The CDF P(${v}) of the chosen density${samples ? ' against the samples' : ''}`}
-        description={description}
-        data={traces}
-        layout={{
-          ...titled(`P(${v}): the CDF${samples ? ' vs the samples' : ''}`, true),
-          xaxis: { title: { text: `${v} (rad)` }, range: [0, hi] },
-          yaxis: { title: { text: `P(${v}) = ξ` }, range: [0, 1.02] },
-          legend: LEGEND_ABOVE,
-        }}
-        height={260}
-        testId={testId}
-      />
       <AudioTrace
         label={`the CDF P(${v})`}
         xs={edges.x}
@@ -168,16 +196,31 @@ export function CdfPlots({
     ];
   }, [lobe, xi]);
   return (
-    <div className="hemi-plot-grid" data-testid="cdf-plots">
-      <CdfPlot
-        f={lobe.thetaPdf}
-        hi={HALF_PI}
-        v="θ"
-        hist={hist?.theta ?? null}
-        at={atTheta}
-        testId="plot-cdf-theta"
-      />
-      <CdfPlot f={lobe.phiPdf} hi={TWO_PI} v="φ" hist={hist?.phi ?? null} at={atPhi} testId="plot-cdf-phi" />
-    </div>
+    <>
+      <div className="hemi-plot-grid" data-testid="cdf-plots">
+        <CdfPlot
+          f={lobe.thetaPdf}
+          hi={HALF_PI}
+          v="θ"
+          hist={hist?.theta ?? null}
+          at={atTheta}
+          testId="plot-cdf-theta"
+        />
+        <CdfPlot
+          f={lobe.phiPdf}
+          hi={TWO_PI}
+          v="φ"
+          hist={hist?.phi ?? null}
+          at={atPhi}
+          testId="plot-cdf-phi"
+        />
+      </div>
+      <Fold name="cdf-sound" summary="Hear the CDFs P(θ) and P(φ), or read them as tables">
+        <div className="hemi-plot-grid">
+          <CdfData f={lobe.thetaPdf} hi={HALF_PI} v="θ" hist={hist?.theta ?? null} testId="plot-cdf-theta" />
+          <CdfData f={lobe.phiPdf} hi={TWO_PI} v="φ" hist={hist?.phi ?? null} testId="plot-cdf-phi" />
+        </div>
+      </Fold>
+    </>
   );
 }

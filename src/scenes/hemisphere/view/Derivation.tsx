@@ -3,11 +3,12 @@
  * with the live numbers from the core.
  * For a typed density the steps are numerical (tabulated) and say so.
  */
-import type { ReactNode } from 'react';
+import { useRef, type ReactNode } from 'react';
 import { MathTex, formatNumber } from '../../../ui';
 import { unsuperscript } from '../../../ui/axis';
 import type { TabulatedHemisphere } from '../../../core/sampling';
 import type { LobeId } from '../params';
+import { useScrollBoxFocus } from './scrollFocus';
 
 const n6 = (x: number) =>
   formatNumber(x, 6)
@@ -28,14 +29,8 @@ function Step({ n, title, tex, note }: StepData & { n: number }) {
         {n}. {title}
       </h3>
       {(Array.isArray(tex) ? tex : [tex]).map((t, i) => (
-        // a focusable scroll box: a wide formula scrolls sideways on a phone, also from the keyboard
-        <div
-          key={i}
-          className="deriv-formula"
-          tabIndex={0}
-          role="group"
-          aria-label={`${title}, formula ${i + 1}`}
-        >
+        // a scroll box: a wide formula scrolls sideways on a phone, then also from the keyboard
+        <div key={i} className="deriv-formula" role="group" aria-label={`${title}, formula ${i + 1}`}>
           <MathTex tex={t} display />
         </div>
       ))}
@@ -155,6 +150,8 @@ export function Derivation({
   custom: TabulatedHemisphere | null;
   customTex: string | null;
 }) {
+  const list = useRef<HTMLOListElement>(null);
+  useScrollBoxFocus(list, `${lobe} ${exponent} ${customTex ?? ''}`);
   // the exam lobe's derivation is written out part by part in the exam section (exam/Q1.tsx)
   if (lobe === 'exam') return null;
   const steps =
@@ -166,7 +163,7 @@ export function Derivation({
           ? phongSteps(exponent)
           : customSteps(custom, customTex);
   return (
-    <ol className="derivation" data-testid="derivation">
+    <ol className="derivation" data-testid="derivation" ref={list}>
       {lobe === 'custom' ? (
         <li className="deriv-step">
           <p>

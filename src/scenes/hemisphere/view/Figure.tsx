@@ -50,7 +50,8 @@ interface FigureProps extends SceneProps<HemisphereSchema> {
   /** The density sampled (null: none, and `problem` is shown instead of the 3D view). */
   lobe: Lobe | null;
   problem: ReactNode;
-  settings: ReactNode;
+  /** The settings, given the figure's own options to fold with them (null: they are elsewhere). */
+  settings: (more: ReactNode) => ReactNode;
   /** The followed stratum and how to choose another (stable). */
   cell: Cell | null;
   onPickCell: PickCell;
@@ -142,9 +143,7 @@ export function Figure({
       label={anim === 'warp' ? 'Warp morph' : 'Samples appearing'}
       format={format}
       testId="timeline"
-    >
-      {present ? null : animSelect}
-    </TimelineTransport>
+    />
   );
   const toggles = (
     <div className="hemi-toggles">
@@ -152,9 +151,9 @@ export function Figure({
       <Toggle label="warped (ξ₁, ξ₂) grid" checked={showGrid} onChange={setShowGrid} />
     </div>
   );
-  // On the classroom stage: the view, the transport and the key readouts; the toggles go to the
-  // drawer with the settings, the caption, the first sample's position and the stratum's sentence
-  // below the stage.
+  // On the page, the animation's choice and the toggles are folded with the settings. On the
+  // classroom stage: the view, the transport and the key readouts; the toggles go to the drawer with
+  // the settings, the caption, the first sample's position and the stratum's sentence below the stage.
   return (
     <>
       <Stage
@@ -164,7 +163,7 @@ export function Figure({
             <>
               {animSelect}
               {toggles}
-              {settings}
+              {settings(null)}
             </>
           ) : undefined
         }
@@ -207,7 +206,6 @@ export function Figure({
             ) : (
               transport
             )}
-            {present ? null : toggles}
             <FigureReadouts {...text} tracked={!present} />
             {present ? null : <FigureCaption {...text} />}
           </DescribedFigure>
@@ -225,7 +223,14 @@ export function Figure({
               text={present ? '' : stratumText}
               firstCell={firstCell}
             />
-            {present ? null : settings}
+            {present
+              ? null
+              : settings(
+                  <>
+                    {animSelect}
+                    {toggles}
+                  </>,
+                )}
           </div>
         </div>
       </Stage>

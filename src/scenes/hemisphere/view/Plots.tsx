@@ -1,6 +1,6 @@
 /**
- * Plotly views of one draw: the θ and φ histograms against the lobe's marginal densities, and the
- * 2D histogram over (cos θ, φ) bins of equal solid angle against the integrated density (the χ²
+ * Plotly views of one draw: the θ and φ histograms against the lobe's marginal densities (their
+ * audio traces and tables apart, for a fold), and the 2D histogram over (cos θ, φ) bins of equal solid angle against the integrated density (the χ²
  * test's expected counts), with their standardized difference (O − E)/√E.
  */
 import { useMemo } from 'react';
@@ -51,7 +51,7 @@ function peakEvents(f: (x: number) => number, lo: number, hi: number, v: string)
     : [];
 }
 
-/** One marginal: the histogram against p, its description, its audio trace and its table. */
+/** One marginal: the histogram against p, and its description. */
 function MarginalPlot({
   h,
   v,
@@ -69,8 +69,6 @@ function MarginalPlot({
 }) {
   const traces = useMemo(() => histTraces(h, v), [h, v]);
   const description = useMemo(() => describeMarginal(h, v, n, pdf), [h, v, n, pdf]);
-  const events = useMemo(() => peakEvents(pdf, 0, hi, v), [pdf, hi, v]);
-  const rows = useMemo(() => Array.from(h.centers, (c, b) => [c, h.density[b], pdf(c)]), [h, pdf]);
   const name = v === 'θ' ? 'polar angles θ' : 'azimuths φ';
   return (
     <div className="hemi-marginal">
@@ -87,6 +85,28 @@ function MarginalPlot({
         }}
         testId={testId}
       />
+    </div>
+  );
+}
+
+/** One marginal heard (its audio trace, a tick at a density's interior peak) and read as a table. */
+function MarginalSound({
+  h,
+  v,
+  pdf,
+  hi,
+  testId,
+}: {
+  h: MarginalHist;
+  v: 'θ' | 'φ';
+  pdf: (x: number) => number;
+  hi: number;
+  testId: string;
+}) {
+  const events = useMemo(() => peakEvents(pdf, 0, hi, v), [pdf, hi, v]);
+  const rows = useMemo(() => Array.from(h.centers, (c, b) => [c, h.density[b], pdf(c)]), [h, pdf]);
+  return (
+    <div className="hemi-marginal">
       <AudioTrace
         label={`histogram of ${v}`}
         xs={h.centers}
@@ -113,6 +133,18 @@ export function MarginalPlots({ stats, lobe }: { stats: DrawStats; lobe: Lobe })
     <div className="hemi-plot-grid">
       <MarginalPlot h={hist.theta} v="θ" n={stats.n} pdf={lobe.thetaPdf} hi={HALF_PI} testId="plot-theta" />
       <MarginalPlot h={hist.phi} v="φ" n={stats.n} pdf={lobe.phiPdf} hi={TWO_PI} testId="plot-phi" />
+    </div>
+  );
+}
+
+/** Both marginals heard and tabled (the content of a fold under the histograms). */
+export function MarginalData({ stats, lobe }: { stats: DrawStats; lobe: Lobe }) {
+  const hist = stats.hist;
+  if (!hist) return null;
+  return (
+    <div className="hemi-plot-grid">
+      <MarginalSound h={hist.theta} v="θ" pdf={lobe.thetaPdf} hi={HALF_PI} testId="plot-theta" />
+      <MarginalSound h={hist.phi} v="φ" pdf={lobe.phiPdf} hi={TWO_PI} testId="plot-phi" />
     </div>
   );
 }

@@ -28,8 +28,8 @@ export function Q1Figure({
   lobe: Lobe | null;
   /** Why the typed density cannot be sampled (null when it can, or is not chosen). */
   densityProblem: DensityProblem | null;
-  /** The settings, beside the figure (in the classroom stage's drawer). */
-  children: ReactNode;
+  /** The settings, beside the figure (in the classroom stage's drawer), with the figure's options. */
+  children: (more: ReactNode) => ReactNode;
   chi2: ComponentProps<typeof Figure>['chi2'];
 }) {
   const { params, setParams } = scene;

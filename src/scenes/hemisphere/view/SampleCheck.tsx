@@ -1,13 +1,15 @@
 /**
  * Q1(d)'s live answer: do the drawn samples follow p? The sample count, histograms of θ and φ
- * against the marginals, the 2D histogram and a χ² test on bins of equal solid angle.
+ * against the marginals and a χ² test on bins of equal solid angle; folded under them, the
+ * histograms heard and tabled, and the χ² test's observed and expected counts in 2D.
  */
 import { formatNumber, Readout } from '../../../ui';
+import { Fold } from '../../../ui/Fold';
 import { formatCount } from '../../../ui/format';
 import type { SequenceKind } from '../../../core/random';
 import type { DrawStats } from '../drawStats';
 import type { Lobe } from '../lobe';
-import { Histogram2D, MarginalPlots } from './Plots';
+import { Histogram2D, MarginalData, MarginalPlots } from './Plots';
 
 export function SampleCheck({
   current,
@@ -41,7 +43,6 @@ export function SampleCheck({
               equal solid angle.
             </p>
             <MarginalPlots stats={current} lobe={lobe} />
-            <Histogram2D stats={current} />
             {chi2 ? (
               <p data-testid="chi2-verdict" className={chi2.pass ? 'verdict ok' : 'verdict bad'}>
                 χ² = {formatNumber(chi2.statistic, 5)} with {chi2.dof} degrees of freedom ({chi2.bins} bins of
@@ -56,6 +57,13 @@ export function SampleCheck({
                   : ''}
               </p>
             ) : null}
+            <Fold
+              name="bins"
+              summary="The bins: hear the θ and φ histograms or read them as tables, and the χ² test's bins over (cos θ, φ)"
+            >
+              <MarginalData stats={current} lobe={lobe} />
+              <Histogram2D stats={current} />
+            </Fold>
           </>
         ) : (
           <p role="status">Drawing {formatCount(n)} samples…</p>

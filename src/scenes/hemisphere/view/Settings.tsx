@@ -1,9 +1,13 @@
 /**
  * The settings beside the figure: the sampling density (Phong exponent, typed density), the
- * Jacobian, the point set, N and the seed, and the state of the statistics run.
+ * Jacobian, the point set, N and the seed, and the state of the statistics run. On the page only N
+ * and the run's state show; the rest (the exam's figure needs none of it) is folded under "More
+ * settings" with the figure's own options (`more`). On the classroom stage's drawer all of it shows.
  */
+import type { ReactNode } from 'react';
 import type { SceneProps } from '../../../kit/scene';
 import { ExprField } from '../../../ui';
+import { Fold } from '../../../ui/Fold';
 import { bindControls } from '../../../ui/paramControls';
 import type { WorkerJob } from '../../../workers';
 import {
@@ -38,16 +42,22 @@ export function Settings({
   setParams,
   pdfError,
   stats,
+  folded,
+  more = null,
 }: {
   params: HemisphereParams;
   setParams: SceneProps<HemisphereSchema>['setParams'];
   /** Why the typed density cannot be used (null when it can, or is not chosen). */
   pdfError: string | null;
   stats: Pick<WorkerJob<unknown, unknown>, 'result' | 'running' | 'waiting' | 'progress'>;
+  /** All but N under "More settings" (the page), or every control in a column (the stage's drawer). */
+  folded: boolean;
+  /** The figure's own options, folded with the settings. */
+  more?: ReactNode;
 }) {
   const c = bindControls(schema, params, setParams);
-  return (
-    <div className="hemi-controls">
+  const density = (
+    <>
       {c.select('lobe', 'Sampling density p(ω)', LOBE_OPTIONS)}
       {params.lobe === 'phong' ? c.slider('exponent', 'Phong exponent n', { step: 1 }) : null}
       {params.lobe === 'custom' ? (
@@ -66,8 +76,33 @@ export function Settings({
       ) : null}
       {c.select('jacobian', 'Jacobian p(θ, φ) = …', JACOBIAN_OPTIONS)}
       {c.select('points', 'Point set (ξ₁, ξ₂)', POINT_OPTIONS)}
-      {c.slider('n', 'Samples N', { log: true })}
-      {c.number('seed', 'Seed')}
+    </>
+  );
+  const samples = c.slider('n', 'Samples N', { log: true });
+  const seed = c.number('seed', 'Seed');
+  return (
+    <div className="hemi-controls">
+      {folded ? (
+        <>
+          {samples}
+          <Fold
+            name="settings"
+            className="hemi-more"
+            summary="More settings: density, Jacobian, point set, seed, animation"
+          >
+            {density}
+            {seed}
+            {more}
+          </Fold>
+        </>
+      ) : (
+        <>
+          {density}
+          {samples}
+          {seed}
+          {more}
+        </>
+      )}
       <p
         className="small stats-status"
         data-testid="stats-status"
