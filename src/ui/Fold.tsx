@@ -44,7 +44,15 @@ export function Fold({
       <summary className="fold-summary">{summary}</summary>
       {opened ? (
         <div className="fold-body">
-          <Suspense fallback={<p aria-busy="true">Loading…</p>}>{children}</Suspense>
+          <Suspense
+            fallback={
+              <p className="fold-loading" aria-busy="true">
+                Loading…
+              </p>
+            }
+          >
+            {children}
+          </Suspense>
         </div>
       ) : null}
     </details>

@@ -47,7 +47,7 @@ export async function openAllFolds(page: Page): Promise<void> {
       return closed.length;
     });
     if (opened === 0) break;
-    await expect(page.locator('details.fold[open] > .fold-body [aria-busy="true"]')).toHaveCount(0, {
+    await expect(page.locator('details.fold[open] > .fold-body > .fold-loading')).toHaveCount(0, {
       timeout: 60_000,
     });
   }
