@@ -48,6 +48,7 @@ export function ExamQuestion({
       </h2>
       {intro ? <div className="exam-intro">{intro}</div> : null}
       {children}
+      <PractiseLinks n={n} />
     </section>
   );
 }
@@ -84,7 +85,6 @@ export function ExamPart({
         <span className="exam-asks-label">The exam asks</span>
         <div className="exam-asks-text">{asks}</div>
       </div>
-      <PractiseLinks partId={id} />
       <Deferred>{children}</Deferred>
     </section>
   );
@@ -94,19 +94,18 @@ export function ExamPart({
 export const PRACTISE_SEED = 1;
 
 /**
- * "Practise this": the practice page of the part's question (a fixed variant, and a fresh one drawn
- * at random), so a student revising a part can try it with other numbers.
+ * "Practise this", once per question, after its parts: the practice page of the question (a fixed
+ * variant, and a fresh one drawn at random), so a student revising it can try it with other numbers.
  */
-export function PractiseLinks({ partId }: { partId: string }) {
-  const n = /^([1-6])/.exec(partId)?.[1];
-  if (!n) return null;
+export function PractiseLinks({ n }: { n: number }) {
+  if (!(n >= 1 && n <= 6)) return null;
   return (
-    <p className="exam-practise" data-testid={`practise-${partId}`}>
-      <a href={`#/practice/q${n}?seed=${PRACTISE_SEED}`} data-testid={`practise-link-${partId}`}>
-        Practise this: question {n} with new numbers
+    <p className="exam-practise" data-testid={`practise-${n}`}>
+      <a href={`#/practice/q${n}?seed=${PRACTISE_SEED}`} data-testid={`practise-link-${n}`}>
+        Practise question {n} with new numbers
       </a>{' '}
       ·{' '}
-      <a href={`#/practice/q${n}`} data-testid={`practise-fresh-${partId}`}>
+      <a href={`#/practice/q${n}`} data-testid={`practise-fresh-${n}`}>
         a fresh variant
       </a>
     </p>

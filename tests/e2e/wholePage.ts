@@ -174,6 +174,17 @@ export async function checkWholePage(page: Page, hash: string, { calm = false } 
         `${c.firstScreen} tab stops in the first screen (at most ${CALM.firstScreen}): ${c.first.join(' | ')}`,
       );
     if (c.page > CALM.page) found.push(`${c.page} tab stops on the page as it opens (at most ${CALM.page})`);
+    // every exam question ends with its "Practise this" links to its own practice page
+    const practise = await page.evaluate(() =>
+      [...document.querySelectorAll('section.exam-question')].map((q) => {
+        const n = q.id.replace('question-', '');
+        const a = q.querySelector(`[data-testid="practise-link-${n}"]`);
+        return a?.getAttribute('href') === `#/practice/q${n}?seed=1`
+          ? null
+          : `question ${n} has no practice link`;
+      }),
+    );
+    found.push(...practise.filter((x): x is string => x !== null));
   }
   found.push(...(await axeViolations(page, 'light 1280')));
   // powers are written as superscripts; a formula still waiting for KaTeX shows its plain-text
