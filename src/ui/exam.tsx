@@ -11,14 +11,16 @@
  *   </ExamQuestion>
  *   <ExploreFurther>…stability, QMC, run time, robust forms…</ExploreFurther>
  *
- * `part=1a` in a link lands on `<ExamPart id="1a">` (the shell scrolls to `#part-1a`). The shell adds
- * previous / next question links under the scene (./QuestionNav).
+ * `part=1a` in a link lands on `<ExamPart id="1a">` (the shell scrolls to `#part-1a`). Each question
+ * ends with its "Practise this" links; the shell adds previous / next question links under the
+ * scene (./QuestionNav).
  *
- * A part's heading and question are drawn with the page; its body (derivation, answer, figures),
- * and the body of Explore further, mount when they come near the screen or in idle time
- * (./Deferred): the first screen of a phone is interactive before the rest of the page exists.
+ * A part's heading and question are drawn with the page; its body (derivation, answer, figures)
+ * mounts when it comes near the screen or in idle time (./Deferred): the first screen of a phone
+ * is interactive before the rest of the page exists. What is beyond the exam is folded (./Fold)
+ * and mounts only when opened.
  */
-import { Children, type ReactNode } from 'react';
+import type { ReactNode } from 'react';
 import { Deferred } from './Deferred';
 import { questionInfo } from '../kit/catalogue';
 import './exam.css';
@@ -153,7 +155,11 @@ export function KeyNote({ children, testId }: { children: ReactNode; testId?: st
   );
 }
 
-/** Everything beyond the exam, clearly marked as such (stability, QMC, run time, robust forms). */
+/**
+ * Everything beyond the exam, clearly marked as such (stability, QMC, run time, robust forms): a
+ * heading, a line saying what is there, and its panels, each a fold (./Fold) that mounts only when
+ * opened.
+ */
 export function ExploreFurther({ children, intro }: { children: ReactNode; intro?: ReactNode }) {
   return (
     <section
@@ -165,12 +171,7 @@ export function ExploreFurther({ children, intro }: { children: ReactNode; intro
         Explore further <span className="explore-badge">beyond the exam</span>
       </h2>
       {intro ? <p className="explore-intro">{intro}</p> : null}
-      {/* each panel mounts on its own: one panel's plots and tables are enough for one task */}
-      {Children.toArray(children).map((c, i) => (
-        <Deferred key={i} estimate={400}>
-          {c}
-        </Deferred>
-      ))}
+      {children}
     </section>
   );
 }
