@@ -12,7 +12,9 @@ export function StabilityDetails() {
     <Fold
       name="stability"
       testId="stability-details"
-      summary="Numerical stability: ½ arccos(1 − 2ξ) against arcsin √ξ, and ln against log1p, at tiny and near-1 ξ"
+      summary={
+        'Numerical stability: ½ arccos(1\u00a0−\u00a02ξ) against arcsin √ξ, and ln against log1p, at tiny and near-1 ξ'
+      }
     >
       <StabilityPanel />
     </Fold>

@@ -3,6 +3,7 @@
  * rays from the float32 hit points toward a light, the acne they make, the fraction of
  * self-hits against the offset ε at several distances, and pbrt's error-bound offset.
  */
+import { ScrollTable } from '../Precision';
 import { useEffect, useMemo, useRef, useState } from 'react';
 import { Plot, Readout, SERIES, Slider, type PlotTrace } from '../../../../ui';
 import {
@@ -182,34 +183,40 @@ export function SelfIntersectionF32() {
               .join('; ')}: the offset needed grows in proportion to the distance. The table below lists it.`}
             testId="acne-plot"
           />
-          <table className="rs-precision" data-testid="acne-table">
-            <thead>
-              <tr>
-                <th scope="col">D / r</th>
-                <th scope="col">self-hits at ε = 0</th>
-                <th scope="col">ε needed (swept)</th>
-                <th scope="col">pbrt offset (largest)</th>
-                <th scope="col">self-hits with pbrt’s offset</th>
-              </tr>
-            </thead>
-            <tbody>
-              {sweeps.map((s) => (
-                <tr key={s.dist}>
-                  <th scope="row">{sup(s.dist)}</th>
-                  <td>{(100 * s.fraction[0]).toFixed(0)} %</td>
-                  <td className="mono" data-testid={`acne-need-${s.dist}`} data-value={String(s.epsNeeded)}>
-                    {s.epsNeeded === null ? 'none swept' : s.epsNeeded.toExponential(1)}
-                  </td>
-                  <td className="mono" data-testid={`acne-pbrt-${s.dist}`} data-value={String(s.pbrtOffset)}>
-                    {s.pbrtOffset.toExponential(1)}
-                  </td>
-                  <td data-testid={`acne-pbrt-hits-${s.dist}`} data-value={String(s.pbrtSelfHits)}>
-                    {s.pbrtSelfHits}
-                  </td>
+          <ScrollTable label="The offset that removes the acne at each distance">
+            <table className="rs-precision" data-testid="acne-table">
+              <thead>
+                <tr>
+                  <th scope="col">D / r</th>
+                  <th scope="col">self-hits at ε = 0</th>
+                  <th scope="col">ε needed (swept)</th>
+                  <th scope="col">pbrt offset (largest)</th>
+                  <th scope="col">self-hits with pbrt’s offset</th>
                 </tr>
-              ))}
-            </tbody>
-          </table>
+              </thead>
+              <tbody>
+                {sweeps.map((s) => (
+                  <tr key={s.dist}>
+                    <th scope="row">{sup(s.dist)}</th>
+                    <td>{(100 * s.fraction[0]).toFixed(0)} %</td>
+                    <td className="mono" data-testid={`acne-need-${s.dist}`} data-value={String(s.epsNeeded)}>
+                      {s.epsNeeded === null ? 'none swept' : s.epsNeeded.toExponential(1)}
+                    </td>
+                    <td
+                      className="mono"
+                      data-testid={`acne-pbrt-${s.dist}`}
+                      data-value={String(s.pbrtOffset)}
+                    >
+                      {s.pbrtOffset.toExponential(1)}
+                    </td>
+                    <td data-testid={`acne-pbrt-hits-${s.dist}`} data-value={String(s.pbrtSelfHits)}>
+                      {s.pbrtSelfHits}
+                    </td>
+                  </tr>
+                ))}
+              </tbody>
+            </table>
+          </ScrollTable>
           <p className="rs-small">
             {SWEEP_W}×{SWEEP_W} camera rays per distance, ε swept from 10⁻⁸ r to 10⁻¹ r (
             {ACNE_EPSILONS.length - 1} steps). The ε a float32 renderer needs grows in proportion to the
