@@ -230,8 +230,9 @@ test('a malformed origin= never opens the scene up: nobody is answered, and the 
   page,
 }) => {
   test.setTimeout(120_000);
-  const host = hostOrigin.replace('http://', '');
-  for (const raw of [`${hostOrigin}/lms/page`, host, hostOrigin.toUpperCase(), 'null', '*', '']) {
+  // which values are malformed is the parser's (tests/app/hostApi.test.ts, origin=); here the
+  // wiring: one that names nobody (a wildcard) answers nobody
+  for (const raw of ['*']) {
     await openHost(page, `#/texture?embed=1&origin=${encodeURIComponent(raw)}`);
     const frame = page.frameLocator('#scene');
     await expect(frame.getByTestId('param-notice'), raw).toContainText('no usable origin');
@@ -260,9 +261,11 @@ test('a malformed origin= never opens the scene up: nobody is answered, and the 
 test('set fails, applying nothing, for every parameter’s invalid values on every scene, and for values the scene would replace', async ({
   page,
 }) => {
-  test.setTimeout(300_000);
-  // every scene of the catalogue, every parameter, the invalid values its spec implies
-  for (const scene of SCENES) {
+  test.setTimeout(120_000);
+  // every parameter of every scene against the invalid values its spec implies is a unit test
+  // (tests/app/hostCheck.test.ts, the same validation the page runs); here the wiring on one scene:
+  // the page refuses them, applies nothing and shows no notice
+  for (const scene of SCENES.filter((s) => s.id === 'texture')) {
     await openHost(page, `#${scene.path}?embed=1`);
     const before = await api<Reply>(page, 'get');
     for (const [name, spec] of Object.entries(await sceneSchema(scene.id)))
