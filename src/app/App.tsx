@@ -29,6 +29,9 @@ const Guide = lazyPage(() => import('../guide/Guide'), 'The guide');
 // The accessibility statement and its worked example (#/accessibility): its own lazy chunk.
 const AccessibilityPage = lazyPage(() => import('./AccessibilityPage'), 'The accessibility page');
 
+// The lecture deck (#/deck) is its own lazy chunk.
+const DeckRoute = lazyPage(() => import('./DeckRoute'), 'The lecture deck');
+
 // The class results page (#/results) is its own lazy chunk.
 const ResultsRoute = lazyPage(() => import('../results/ResultsRoute'), 'The class results page');
 
@@ -82,6 +85,13 @@ export function App() {
     body = (
       <LazyRoute key="accessibility" loading="Loading the accessibility statement…">
         <AccessibilityPage flags={flags} query={route.query} />
+      </LazyRoute>
+    );
+  else if (route.path === '/deck')
+    body = (
+      <LazyRoute key="deck" loading="Loading the deck…">
+        {/* another deck link (typed, pasted, Present / Edit) opens afresh; the deck's own rewrites do not */}
+        <DeckRoute key={route.query} flags={flags} query={route.query} theme={theme} />
       </LazyRoute>
     );
   else if (route.path === '/results')
