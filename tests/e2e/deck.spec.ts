@@ -5,28 +5,23 @@
  * links keep present=1 and ask=1. The editor's file round trip, refusal and keyboard reordering.
  * The model itself (checks, codes, edits) is unit-tested in tests/deck/.
  */
-import { test, expect, openScene } from './fixtures';
+import { test, expect } from './fixtures';
 import type { Page } from '@playwright/test';
 
 const count = (page: Page) => page.getByTestId('deck-slide-number');
 const blur = (page: Page) => page.evaluate(() => (document.activeElement as HTMLElement | null)?.blur());
 
-test('a deck built from links plays by keys, reveals, blacks out, reloads and reopens', async ({
-  page,
-  context,
-}) => {
+test('a deck built from links plays by keys, reveals on v, blacks out on b', async ({ page }) => {
   // two views added from their scenes' share bars (one asks first), one link pasted in the editor
-  await openScene(page, '#/texture?u=0.7&v=0.3&ask=1');
+  await page.goto('./#/texture?u=0.7&v=0.3&ask=1');
   await page.getByTestId('add-to-deck').click();
   await expect(page.getByTestId('add-to-deck-status')).toHaveText('Added: slide 1 — open the deck');
-  await openScene(page, '#/ray-sphere');
+  await page.goto('./#/monte-carlo');
   await page.getByTestId('add-to-deck').click();
   await expect(page.getByTestId('add-to-deck-status')).toHaveText('Added: slide 2 — open the deck');
   await page.getByRole('link', { name: 'open the deck' }).click();
   await expect(page.getByTestId('deck-slide-edit')).toHaveCount(2);
-  await page
-    .getByTestId('deck-add-link')
-    .fill('https://example.org/#/hemisphere?lobe=exam&part=1a&ask=1&present=1');
+  await page.getByTestId('deck-add-link').fill('https://example.org/#/texture?u=0.2&v=0.9&present=1');
   await page.getByTestId('deck-add').click();
   await expect(page.getByTestId('deck-said')).toHaveText('Added: slide 3.');
   await page.getByLabel('Caption').first().fill('Bilinear weights, by hand first.');
@@ -56,7 +51,7 @@ test('a deck built from links plays by keys, reveals, blacks out, reloads and re
   // forward and back by keys; the slide is in the address
   await page.keyboard.press('ArrowRight');
   await expect(count(page)).toHaveText('Slide 2 of 3');
-  await expect(page.getByTestId('deck-stage').locator('.scene-ray-sphere')).toHaveCount(1);
+  await expect(page.getByTestId('deck-stage').locator('.scene-monte-carlo')).toHaveCount(1);
   await page.keyboard.press(' ');
   await expect(count(page)).toHaveText('Slide 3 of 3');
   await expect(page).toHaveURL(/slide=3/);
@@ -77,16 +72,26 @@ test('a deck built from links plays by keys, reveals, blacks out, reloads and re
   await page.keyboard.press('x');
   await expect(page.getByTestId('deck-blackout')).toHaveCount(0);
   await expect(count(page)).toHaveText('Slide 2 of 3');
+});
 
+test('a deck survives a reload on its slide, and its link reopens it', async ({ page, context }) => {
+  await page.goto('./#/deck');
+  for (const link of ['#/texture?u=0.7&v=0.3&ask=1', '#/texture?u=0.2&v=0.9']) {
+    await page.getByTestId('deck-add-link').fill(link);
+    await page.getByTestId('deck-add').click();
+  }
+  await page.getByLabel('Caption').first().fill('Bilinear weights, by hand first.');
+  await page.getByTestId('deck-present-link').click();
+  await expect(count(page)).toHaveText('Slide 2 of 2');
   // a reload stays on the slide; the deck's link (in classroom mode) reopens it elsewhere
   await page.reload();
-  await expect(count(page)).toHaveText('Slide 2 of 3');
+  await expect(count(page)).toHaveText('Slide 2 of 2');
   await page.getByTestId('deck-copy-link').click();
   const deckLink = await page.getByTestId('deck-link-text').inputValue();
   expect(deckLink).toMatch(/#\/deck\?d=[\w-]+&slide=2&present=1$/);
   const other = await context.newPage();
   await other.goto(deckLink);
-  await expect(other.getByTestId('deck-slide-number')).toHaveText('Slide 2 of 3');
+  await expect(other.getByTestId('deck-slide-number')).toHaveText('Slide 2 of 2');
   await other.keyboard.press('ArrowLeft');
   await expect(other.getByTestId('ask-prompt-text')).toContainText('nearest');
   await expect(other.getByTestId('deck-caption')).toHaveText('Bilinear weights, by hand first.');
