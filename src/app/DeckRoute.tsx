@@ -1,6 +1,7 @@
 /**
  * `#/deck`, the lecture deck (src/deck), with what only the app has: its scene host, which plays
- * each slide's scene link in classroom mode without writing the address (the deck's).
+ * each slide's scene link (in classroom mode while the deck presents) without writing the address
+ * (the deck's).
  */
 import { useMemo } from 'react';
 import { findScene } from '../kit/catalogue';
@@ -9,12 +10,12 @@ import { DeckPage } from '../deck/DeckPage';
 import type { DeckHost, SlideSceneProps } from '../deck/deckHost';
 import { SceneHost } from './SceneHost';
 
-function SlideScene({ path, query, question, theme, onReveal }: SlideSceneProps) {
+function SlideScene({ path, query, question, theme, present, onReveal }: SlideSceneProps) {
   const info = findScene(path);
-  // the slide's own flags (ask, part, open), in classroom mode; the deck decides the rest
+  // the slide's own flags (ask, part, open); the deck decides the rest
   const flags = useMemo<ShellFlags>(
-    () => ({ ...parseShellFlags(query), present: true, embed: false, theme: null, origins: null }),
-    [query],
+    () => ({ ...parseShellFlags(query), present, embed: false, theme: null, origins: null }),
+    [query, present],
   );
   if (!info) return null;
   return <SceneHost info={info} query={query} flags={flags} theme={theme} slide={{ question, onReveal }} />;

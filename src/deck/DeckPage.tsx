@@ -118,19 +118,20 @@ export function DeckPage({ flags, query, theme, host }: DeckPageProps) {
         theme={theme}
         present={present}
         actions={actions}
-      />
-      {editing ? (
-        <DeckEditor
-          deck={deck}
-          index={index}
-          working={source.kind === 'working'}
-          onDeck={onDeck}
-          onOpen={(d) => setState({ deck: d, source: { kind: 'link' }, index: 0 })}
-          onKeep={onKeep}
-          go={go}
-          storeProblem={storeProblem}
-        />
-      ) : null}
+      >
+        {editing ? (
+          <DeckEditor
+            deck={deck}
+            index={index}
+            working={source.kind === 'working'}
+            onDeck={onDeck}
+            onOpen={(d) => setState({ deck: d, source: { kind: 'link' }, index: 0 })}
+            onKeep={onKeep}
+            go={go}
+            storeProblem={storeProblem}
+          />
+        ) : null}
+      </DeckPlayer>
     </main>
   );
 }

@@ -1,7 +1,8 @@
 /**
  * The deck playing: a bar (the deck's title, "Slide k of n", previous / next, the timer, the black
- * screen), the slide's title, question and caption, and the slide's scene on the stage under them
- * in classroom mode, its figure filling what is left of the screen. An asking slide's question is
+ * screen), the slide's title, question and caption, and the slide's scene under them: presenting,
+ * in classroom mode, its figure filling what is left of the screen; while the deck is edited (the
+ * editor comes between the bar and the slide), as the scene's own page lays it out. An asking slide's question is
  * the scene's own prompt until revealed, then stands with the title.
  */
 import { useCallback, useRef, useState, type ReactNode } from 'react';
@@ -22,9 +23,11 @@ export interface DeckPlayerProps {
   present: boolean;
   /** Buttons for the bar's end (copy the deck's link, leave or enter classroom mode). */
   actions?: ReactNode;
+  /** Under the bar, above the slide (the editor). */
+  children?: ReactNode;
 }
 
-export function DeckPlayer({ deck, index, go, host, theme, present, actions }: DeckPlayerProps) {
+export function DeckPlayer({ deck, index, go, host, theme, present, actions, children }: DeckPlayerProps) {
   const n = deck.slides.length;
   const slide = n ? deck.slides[index] : null;
   const [black, setBlack] = useState(false);
@@ -100,6 +103,7 @@ export function DeckPlayer({ deck, index, go, host, theme, present, actions }: D
         </button>
         {actions}
       </div>
+      {children}
       {slide ? (
         <>
           <div className="deck-text">
@@ -125,6 +129,7 @@ export function DeckPlayer({ deck, index, go, host, theme, present, actions }: D
                 query={route.query}
                 question={slide.question || null}
                 theme={theme}
+                present={present}
                 onReveal={onReveal}
               />
             ) : null}

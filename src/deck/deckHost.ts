@@ -13,11 +13,13 @@ export interface SlideSceneProps {
   /** The slide's question: the prompt of an asking slide. */
   question: string | null;
   theme: 'light' | 'dark';
+  /** Classroom mode (the deck presenting): the figure fills the stage. Else the scene's page layout. */
+  present: boolean;
   /** Called when the slide's held-back results are revealed (`v` or the button). */
   onReveal: () => void;
 }
 
 export interface DeckHost {
-  /** Hosts a scene link as a slide: in classroom mode, never writing the address. */
+  /** Hosts a scene link as a slide, never writing the address. */
   SlideScene: ComponentType<SlideSceneProps>;
 }
