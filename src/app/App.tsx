@@ -9,6 +9,7 @@ import { SceneHost } from './SceneHost';
 import { findScene } from '../kit/catalogue';
 import { ShortcutProvider } from '../ui/shortcuts';
 import { lazyPage } from './lazyPage';
+import { DECK_HOST } from './SlideScene';
 
 // Practice mode is its own lazy chunk (src/practice): nothing of it loads on the other routes.
 // Every lazy route recovers from a stale deploy or says it could not load (./lazyPage.tsx).
@@ -30,7 +31,7 @@ const Guide = lazyPage(() => import('../guide/Guide'), 'The guide');
 const AccessibilityPage = lazyPage(() => import('./AccessibilityPage'), 'The accessibility page');
 
 // The lecture deck (#/deck) is its own lazy chunk.
-const DeckRoute = lazyPage(() => import('./DeckRoute'), 'The lecture deck');
+const DeckPage = lazyPage(() => import('../deck/DeckPage'), 'The lecture deck');
 
 // The class results page (#/results) is its own lazy chunk.
 const ResultsRoute = lazyPage(() => import('../results/ResultsRoute'), 'The class results page');
@@ -91,7 +92,7 @@ export function App() {
     body = (
       <LazyRoute key="deck" loading="Loading the deck…">
         {/* another deck link (typed, pasted, Present / Edit) opens afresh; the deck's own rewrites do not */}
-        <DeckRoute key={route.query} flags={flags} query={route.query} theme={theme} />
+        <DeckPage key={route.query} flags={flags} query={route.query} theme={theme} host={DECK_HOST} />
       </LazyRoute>
     );
   else if (route.path === '/results')

@@ -30,7 +30,7 @@ interface State {
 
 const clampIndex = (i: number, deck: Deck) => Math.min(Math.max(0, i), Math.max(0, deck.slides.length - 1));
 
-export function DeckPage({ flags, query, theme, host }: DeckPageProps) {
+export default function DeckPage({ flags, query, theme, host }: DeckPageProps) {
   const [opened] = useState(() => openDeck(query, loadWorkingDeck));
   const [state, setState] = useState<State>({
     deck: opened.deck,

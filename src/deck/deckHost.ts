@@ -1,6 +1,6 @@
 /**
  * What the app lends the deck page: the deck plays scenes through the app's scene host, which sits
- * above the deck's layer, so the app passes it in (src/app/DeckRoute.tsx) instead of the deck
+ * above the deck's layer, so the app passes it in (src/app/SlideScene.tsx) instead of the deck
  * importing it.
  */
 import type { ComponentType } from 'react';

@@ -1,12 +1,12 @@
 /**
- * `#/deck`, the lecture deck (src/deck), with what only the app has: its scene host, which plays
- * each slide's scene link (in classroom mode while the deck presents) without writing the address
- * (the deck's).
+ * What the app lends the lecture deck (src/deck, `#/deck`): its scene host, playing a slide's scene
+ * link (in classroom mode while the deck presents) without writing the address, which is the
+ * deck's. Handed to the deck's page as a prop: the deck sits below the app, and a lazy chunk that
+ * imported the scene host would split the entry's shared code into more chunks.
  */
 import { useMemo } from 'react';
 import { findScene } from '../kit/catalogue';
 import { parseShellFlags, type ShellFlags } from '../kit/shell';
-import { DeckPage } from '../deck/DeckPage';
 import type { DeckHost, SlideSceneProps } from '../deck/deckHost';
 import { SceneHost } from './SceneHost';
 
@@ -21,16 +21,4 @@ function SlideScene({ path, query, question, theme, present, onReveal }: SlideSc
   return <SceneHost info={info} query={query} flags={flags} theme={theme} slide={{ question, onReveal }} />;
 }
 
-const HOST: DeckHost = { SlideScene };
-
-export default function DeckRoute({
-  flags,
-  query,
-  theme,
-}: {
-  flags: ShellFlags;
-  query: string;
-  theme: 'light' | 'dark';
-}) {
-  return <DeckPage flags={flags} query={query} theme={theme} host={HOST} />;
-}
+export const DECK_HOST: DeckHost = { SlideScene };
