@@ -10,6 +10,7 @@ import { findScene } from '../kit/catalogue';
 import { slideAsks, slideRoute, type Deck } from './deck';
 import type { DeckHost } from './deckHost';
 import { useDeckKeys } from './useDeckKeys';
+import { useKeyHelp, type KeyHelp } from '../ui/shortcuts';
 import { useHighlight } from './useHighlight';
 import { clockText, useDeckTimer } from './useDeckTimer';
 
@@ -27,6 +28,14 @@ export interface DeckPlayerProps {
   children?: ReactNode;
 }
 
+/** The deck's keys in the `?` list. */
+const DECK_KEYS: readonly KeyHelp[] = [
+  { keys: '→ PageDown Space', label: 'next slide' },
+  { keys: '← PageUp', label: 'previous slide' },
+  { keys: 'Home End', label: 'first / last slide' },
+  { keys: 'b', label: 'black screen (any key returns)' },
+];
+
 export function DeckPlayer({ deck, index, go, host, theme, present, actions, children }: DeckPlayerProps) {
   const n = deck.slides.length;
   const slide = n ? deck.slides[index] : null;
@@ -38,6 +47,7 @@ export function DeckPlayer({ deck, index, go, host, theme, present, actions, chi
   const timer = useDeckTimer();
   const stage = useRef<HTMLDivElement>(null);
   useHighlight(stage, slide?.highlight);
+  useKeyHelp(DECK_KEYS);
   useDeckKeys(
     {
       next: () => go(Math.min(n - 1, index + 1)),
