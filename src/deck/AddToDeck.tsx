@@ -22,7 +22,7 @@ export function AddToDeck({ link }: { link: string }) {
       >
         Add this view to a deck
       </button>
-      <span role="status" className="share-status" data-testid="add-to-deck-status">
+      <span role="status" className="add-to-deck-status" data-testid="add-to-deck-status">
         {said === null ? null : said.ok ? (
           <>
             Added: slide {said.n} — <a href="#/deck">open the deck</a>
