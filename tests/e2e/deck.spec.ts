@@ -29,7 +29,9 @@ test('a deck built from links plays by keys, reveals on v, blacks out on b', asy
   // present: slide 1 asks its question until v
   await page.getByTestId('deck-present-link').click();
   await expect(page).toHaveURL(/present=1/);
-  // (on the slide just added)
+  // (on the slide just added; the presenting page, not the editing one it replaces, has its scene up)
+  await expect(page.getByTestId('deck-edit-link')).toBeVisible();
+  await expect(page.getByTestId('scene-stage')).toBeVisible();
   await expect(count(page)).toHaveText('Slide 3 of 3');
   await page.keyboard.press('Home');
   await expect(count(page)).toHaveText('Slide 1 of 3');
@@ -82,6 +84,7 @@ test('a deck survives a reload on its slide, and its link reopens it', async ({ 
   }
   await page.getByLabel('Caption').first().fill('Bilinear weights, by hand first.');
   await page.getByTestId('deck-present-link').click();
+  await expect(page.getByTestId('deck-edit-link')).toBeVisible();
   await expect(count(page)).toHaveText('Slide 2 of 2');
   // a reload stays on the slide; the deck's link (in classroom mode) reopens it elsewhere
   await page.reload();
@@ -92,6 +95,7 @@ test('a deck survives a reload on its slide, and its link reopens it', async ({ 
   const other = await context.newPage();
   await other.goto(deckLink);
   await expect(other.getByTestId('deck-slide-number')).toHaveText('Slide 2 of 2');
+  await expect(other.getByTestId('scene-stage')).toBeVisible();
   await other.keyboard.press('ArrowLeft');
   await expect(other.getByTestId('ask-prompt-text')).toContainText('nearest');
   await expect(other.getByTestId('deck-caption')).toHaveText('Bilinear weights, by hand first.');
