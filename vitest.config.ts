@@ -21,6 +21,8 @@ const FLOORS: Record<string, { statements: number; branches: number; functions: 
   'src/lms/**': { statements: 40, branches: 23, functions: 54, lines: 42 },
   // measured 38.0 / 39.9 / 17.9 / 38.9 %
   'src/results/**': { statements: 35, branches: 36, functions: 14, lines: 35 },
+  // measured 65.7 / 71.4 / 43.3 / 66.8 %
+  'src/deck/**': { statements: 62, branches: 68, functions: 40, lines: 63 },
 };
 
 export default defineConfig({

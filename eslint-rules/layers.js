@@ -1,7 +1,7 @@
 /**
  * ESLint rule `local/layers`: every import under src/ points down the layers.
  *
- *   core  ←  kit  ←  ui, workers, three  ←  scenes, practice, guide  ←  lms  ←  results  ←  app
+ *   core  ←  kit  ←  ui, workers, three  ←  scenes, practice, guide  ←  lms  ←  results, deck  ←  app
  *
  * lms (SCORM, cmi5, question banks) builds on practice's generators and checker, and results (the
  * class results page) on lms's grading; practice shows their parts through the slots of
@@ -26,6 +26,7 @@ export const LAYERS = {
   guide: 3,
   lms: 4,
   results: 5,
+  deck: 5,
   app: 6,
 };
 

@@ -9,6 +9,7 @@ import { SceneHost } from './SceneHost';
 import { findScene } from '../kit/catalogue';
 import { ShortcutProvider } from '../ui/shortcuts';
 import { lazyPage } from './lazyPage';
+import { DECK_HOST } from './SlideScene';
 
 // Practice mode is its own lazy chunk (src/practice): nothing of it loads on the other routes.
 // Every lazy route recovers from a stale deploy or says it could not load (./lazyPage.tsx).
@@ -28,6 +29,9 @@ const Guide = lazyPage(() => import('../guide/Guide'), 'The guide');
 
 // The accessibility statement and its worked example (#/accessibility): its own lazy chunk.
 const AccessibilityPage = lazyPage(() => import('./AccessibilityPage'), 'The accessibility page');
+
+// The lecture deck (#/deck) is its own lazy chunk.
+const DeckPage = lazyPage(() => import('../deck/DeckPage'), 'The lecture deck');
 
 // The class results page (#/results) is its own lazy chunk.
 const ResultsRoute = lazyPage(() => import('../results/ResultsRoute'), 'The class results page');
@@ -82,6 +86,13 @@ export function App() {
     body = (
       <LazyRoute key="accessibility" loading="Loading the accessibility statement…">
         <AccessibilityPage flags={flags} query={route.query} />
+      </LazyRoute>
+    );
+  else if (route.path === '/deck')
+    body = (
+      <LazyRoute key="deck" loading="Loading the deck…">
+        {/* another deck link (typed, pasted, Present / Edit) opens afresh; the deck's own rewrites do not */}
+        <DeckPage key={route.query} flags={flags} query={route.query} theme={theme} host={DECK_HOST} />
       </LazyRoute>
     );
   else if (route.path === '/results')

@@ -1,5 +1,5 @@
 import { useEffect } from 'react';
-import { QUESTIONS, sceneById } from '../kit/catalogue';
+import { PAGES, QUESTIONS, sceneById } from '../kit/catalogue';
 import { sceneLoader } from '../scenes/registry';
 import type { ShellFlags } from '../kit/shell';
 import { RouteNotice } from '../ui/RouteNotice';
@@ -32,6 +32,12 @@ export function Home({ flags, query = '' }: { flags: ShellFlags; query?: string 
         </a>
         : test yourself on fresh variants of every question — answers checked, classic mistakes named, worked
         solutions with your numbers.
+      </p>
+      <p className="home-practice">
+        <a href={`#${PAGES.deck.path}${withFlags('', flags)}`} data-testid="deck-link">
+          {PAGES.deck.title}
+        </a>
+        : play the guide’s questions as slides, or build your own from any scene’s view.
       </p>
       <ol className="question-list">
         {QUESTIONS.map((q) => {

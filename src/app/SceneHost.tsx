@@ -35,6 +35,12 @@ interface Props {
   query: string;
   flags: ShellFlags;
   theme: 'light' | 'dark';
+  /**
+   * The scene is a slide of a lecture deck (src/deck): no heading, links to other pages or title of
+   * its own, and it never writes the address (the deck's); `question`, when given, is what its
+   * `ask=1` prompt asks; `onReveal` hears the reveal.
+   */
+  slide?: { question: string | null; onReveal?: () => void };
 }
 
 type LoadState =
@@ -44,10 +50,11 @@ type LoadState =
   | { kind: 'ready'; mod: SceneModule };
 
 /** Loads a scene's chunk, parses its URL parameters, and hosts it with the shared chrome. */
-export function SceneHost({ info, query, flags, theme }: Props) {
+export function SceneHost({ info, query, flags, theme, slide }: Props) {
   const [load, setLoad] = useState<LoadState>({ kind: 'loading' });
+  const hosted = !!slide;
   useEffect(() => {
-    document.title = `${info.title} — Render Math Lab`;
+    if (!hosted) document.title = `${info.title} — Render Math Lab`;
     const loader = sceneLoader(info.id);
     if (!loader) {
       setLoad({ kind: 'missing' });
@@ -67,12 +74,14 @@ export function SceneHost({ info, query, flags, theme }: Props) {
     return () => {
       alive = false;
     };
-  }, [info]);
+  }, [info, hosted]);
   // the first screen is up (or the scene failed): work kept out of it may start (main.tsx)
   useEffect(() => {
     if (load.kind !== 'loading') markFirstScreen();
   }, [load.kind]);
 
+  // a deck's slide sits inside the deck's own <main>
+  const Root = hosted ? 'div' : 'main';
   const header = (
     <div className={flags.embed ? 'scene-header compact' : 'scene-header'}>
       <h1>
@@ -94,12 +103,12 @@ export function SceneHost({ info, query, flags, theme }: Props) {
     // Outside embeds the page is at least one screen tall from the first paint, so the footer starts
     // below the fold and does not jump down when the scene's chunk replaces "Loading the scene…"
     // (that jump was a layout shift of ~0.17 on every scene, measured by Lighthouse mobile).
-    <main
-      id="main"
-      className={`page scene scene-${info.id}${flags.embed ? '' : ' scene-full'}`}
+    <Root
+      id={hosted ? undefined : 'main'}
+      className={`page scene scene-${info.id}${flags.embed || hosted ? '' : ' scene-full'}`}
       tabIndex={-1}
     >
-      {header}
+      {hosted ? null : header}
       {flags.a11y ? (
         <Suspense fallback={null}>
           <A11yView />
@@ -125,9 +134,9 @@ export function SceneHost({ info, query, flags, theme }: Props) {
         </div>
       ) : null}
       {load.kind === 'ready' ? (
-        <LoadedScene mod={load.mod} info={info} query={query} flags={flags} theme={theme} />
+        <LoadedScene mod={load.mod} info={info} query={query} flags={flags} theme={theme} slide={slide} />
       ) : null}
-    </main>
+    </Root>
   );
 }
 
@@ -137,13 +146,16 @@ function LoadedScene({
   query,
   flags,
   theme,
+  slide,
 }: {
   mod: SceneModule;
   info: PageInfo;
   query: string;
   flags: ShellFlags;
   theme: 'light' | 'dark';
+  slide?: Props['slide'];
 }) {
+  const hosted = !!slide;
   const schema = mod.schema;
   const parsed = useMemo(() => parseParams(schema, query), [schema, query]);
   const [values, setValues] = useState(parsed.values);
@@ -192,7 +204,8 @@ function LoadedScene({
   }, [query, parsed, flags.problems, partProblem]);
 
   const part = flags.part && info.parts.includes(flags.part) ? flags.part : null;
-  useScrollToPart(part, flags.present && flags.ask, query);
+  // a slide opens at the top, where the deck shows it
+  useScrollToPart(part, hosted || (flags.present && flags.ask), query);
 
   // ask=1: results hidden until revealed (button or `v`); revealing drops `ask` from the URL
   const [asking, setAsking] = useState(flags.ask);
@@ -200,13 +213,18 @@ function LoadedScene({
   askingRef.current = asking;
   useEffect(() => setAsking(flags.ask), [flags.ask]);
   useEffect(() => {
+    if (hosted) return;
     // a link opened again (its query string unchanged since the shell rewrote the URL) asks again
     const on = () => setAsking(parseShellFlags(parseHash(window.location.hash).query).ask);
     window.addEventListener('hashchange', on);
     return () => window.removeEventListener('hashchange', on);
-  }, []);
+  }, [hosted]);
+  const onReveal = useRef(slide?.onReveal);
+  onReveal.current = slide?.onReveal;
   const reveal = useCallback(() => {
     setAsking(false);
+    onReveal.current?.();
+    if (hosted) return;
     const { path, query: current } = parseHash(window.location.hash);
     const qs = dropQueryParam(current, 'ask');
     try {
@@ -214,9 +232,9 @@ function LoadedScene({
     } catch {
       /* some sandboxed iframes forbid it; the state still lives in the page */
     }
-  }, []);
+  }, [hosted]);
   usePageKey('v', reveal, asking);
-  const askText = useAskText(info, query, part, flags.ask);
+  const askText = useAskText(info, query, part, flags.ask, slide?.question ?? null);
 
   // The values the link carries: typed expressions enter it only once they have compiled (a link
   // must never carry an expression that was not checked; see linkSafeValues).
@@ -239,6 +257,7 @@ function LoadedScene({
           shellExtras({ ...flags, ask: askingRef.current, open: getOpenFolds() }),
         );
         const hash = `#${info.path}${qs ? `?${qs}` : ''}`;
+        if (hosted) return;
         try {
           window.history.replaceState(window.history.state, '', hash);
         } catch {
@@ -247,7 +266,7 @@ function LoadedScene({
         lastQuery.current = qs;
       });
     },
-    [schema, flags, info.path, changes],
+    [schema, flags, info.path, changes, hosted],
   );
   // `r`: the opening values. A playing animation pauses first, and where it stopped is rendered
   // before the opening values are: its timeline reads a change of `t` against the position it last
@@ -294,7 +313,7 @@ function LoadedScene({
           mode={{ embed: flags.embed, present: flags.present, ask: asking, theme }}
         />
       </SceneErrorBoundary>
-      {flags.embed ? null : <QuestionNav info={info} flags={flags} />}
+      {flags.embed || hosted ? null : <QuestionNav info={info} flags={flags} />}
     </>
   );
 }
@@ -303,14 +322,21 @@ function LoadedScene({
 const GENERIC_PROMPT = 'What will the scene show? Make your prediction, then reveal.';
 
 /**
- * The prediction prompt of an `ask=1` page (null until known): the guide preset's own question when
+ * The prediction prompt of an `ask=1` page (null until known): `own` when given (a deck slide's
+ * question), else the guide preset's own question when
  * the link is one of its presets, else the catalogue's prompt for the part. The guide's texts load
  * (lazily, apart from the entry) only for ask=1.
  */
-function useAskText(info: PageInfo, query: string, part: string | null, ask: boolean): string | null {
+function useAskText(
+  info: PageInfo,
+  query: string,
+  part: string | null,
+  ask: boolean,
+  own: string | null,
+): string | null {
   const [preset, setPreset] = useState<{ query: string; text: string | null } | null>(null);
   useEffect(() => {
-    if (!ask) return;
+    if (!ask || own) return;
     let alive = true;
     import('../kit/lessons').then(
       (m) => alive && setPreset({ query, text: m.presetAskFor(info.id, query) }),
@@ -319,7 +345,8 @@ function useAskText(info: PageInfo, query: string, part: string | null, ask: boo
     return () => {
       alive = false;
     };
-  }, [ask, info.id, query]);
+  }, [ask, info.id, query, own]);
+  if (ask && own) return own;
   if (!ask || !preset || preset.query !== query) return null;
   return preset.text ?? predictPrompt(info, part) ?? GENERIC_PROMPT;
 }

@@ -13,6 +13,7 @@ import type { ShellFlags } from '../kit/shell';
 import { useOpenFolds } from '../ui/openFolds';
 import { embedSnippet } from './embedCode';
 import { QrButton } from './QrButton';
+import { AddToDeck } from '../deck/AddToDeck';
 import './sceneHost.css';
 
 /** The embedded page's "open the full app" link: the same scene and values, without embed=1. */
@@ -94,6 +95,8 @@ export function ShareBar({
     theme: flags.theme ?? undefined,
   });
   const embedSrc = shareUrl(href, info.path, embedQs);
+  // a deck slide keeps ask=1 while the results are held back, never classroom mode or the theme
+  const deckFlags = sharedFlags({ present: false, asking, keep: true, part: flags.part, theme: null, open });
   const embedCode = embedSnippet(embedSrc, `${info.title} — Render Math Lab`, info.id);
   const copy = async (what: 'link' | 'embed') => {
     const text = what === 'link' ? link : embedCode;
@@ -120,6 +123,10 @@ export function ShareBar({
         </button>
       )}
       {offerKeep ? <KeepClassroom keep={keep} onKeep={setKeep} testId="keep-classroom" /> : null}
+      {/* a slide for the lecturer's deck: this view as the class would open it, asking while it asks */}
+      {flags.present || flags.embed ? null : (
+        <AddToDeck link={`${info.path}?${serializeParams(schema, values, deckFlags)}`} />
+      )}
       <span role="status" className="share-status">
         {copied === 'link'
           ? 'Link copied.'

@@ -71,6 +71,12 @@ export default function Guide({ flags, query = '' }: { flags: ShellFlags; query?
           <h2 id={`guide-${l.id}-h`}>
             <span className="question-tag">{l.question}</span> {l.title}
           </h2>
+          <p>
+            <a href={`#/deck?q=${l.id.slice(1)}${flags.present ? '&present=1' : ''}`}>
+              Play {l.question} as a deck
+            </a>
+            : these steps as slides, each asking step held until you reveal it.
+          </p>
           <ol className="guide-presets">
             {l.presets.map((p) => (
               <li key={presetHref(p)} data-testid="guide-preset">

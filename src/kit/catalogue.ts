@@ -228,6 +228,15 @@ export interface PageInfo extends SceneInfoSpec {
 
 export const LABS: readonly PageInfo[] = LAB_LIST;
 
+/** The app's pages that are neither scenes nor labs, by name: their routes and titles. */
+export const PAGES = {
+  practice: { path: '/practice', title: 'Practice' },
+  guide: { path: '/guide', title: 'Teacher’s guide' },
+  deck: { path: '/deck', title: 'Lecture decks' },
+  results: { path: '/results', title: 'Class results' },
+  accessibility: { path: '/accessibility', title: 'Accessibility' },
+} as const;
+
 export const SCENE_IDS: readonly SceneId[] = SCENES.map((s) => s.id);
 
 export function isSceneId(s: string): s is SceneId {
