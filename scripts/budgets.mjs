@@ -2,7 +2,9 @@
 /**
  * Bundle budgets for the production build (run after `npm run build`). Gzipped sizes:
  *  - the entry (what `#/` downloads: index.html's module script and stylesheet, plus every chunk
- *    the entry imports statically) ≤ 90 kB, and none of three.js, Plotly, mathjs, KaTeX in it;
+ *    the entry imports statically) ≤ 92 kB, and none of three.js, Plotly, mathjs, KaTeX in it
+ *    (the shell itself: routing, the scene host, the share bar, the link's shell flags with the
+ *    folds it opens, the deck's slide host; every page's own code is a lazy chunk);
  *  - each heavy library and each scene chunk under its own ceiling;
  *  - the single-file copy (dist-single/index.html, when built) under its own ceiling.
  * Exits 1 and says which budget broke.
@@ -60,7 +62,7 @@ for (const f of entryFiles) {
       if (re.test(src)) failures.push(`the entry chunk ${f} contains ${lib}`);
   }
 }
-const ENTRY_LIMIT = 90_000;
+const ENTRY_LIMIT = 92_000;
 if (entryTotal > ENTRY_LIMIT)
   failures.push(`entry is ${kB(entryTotal)} kB gzipped, over ${kB(ENTRY_LIMIT)} kB`);
 
