@@ -49,12 +49,18 @@ test('#/ downloads no three.js, Plotly, mathjs, KaTeX or scene code', async ({ p
   // budget script): read those imports from the entry script itself.
   const entryUrl = js.find((u) => /\/index-[\w-]+\.js$/.test(u));
   expect(entryUrl, 'the entry script').toBeTruthy();
-  const entrySrc = await (await page.request.get(entryUrl!)).text();
-  const staticImports = new Set(
-    [...entrySrc.matchAll(/(?:^|[;\n}])\s*import\s*(?:[\w*${}\s,]+from\s*)?["']\.\/([^"']+\.js)["']/g)].map(
-      (m) => m[1],
-    ),
-  );
+  // (and what those import statically in turn: a chunk shared by the entry's own chunks)
+  const staticImports = new Set<string>();
+  const pending = [entryUrl!];
+  while (pending.length) {
+    const url = pending.pop()!;
+    const src = await (await page.request.get(url)).text();
+    for (const m of src.matchAll(/(?:^|[;\n}])\s*import\s*(?:[\w*${}\s,]+from\s*)?["']\.\/([^"']+\.js)["']/g))
+      if (!staticImports.has(m[1])) {
+        staticImports.add(m[1]);
+        pending.push(new URL(m[1], url).href);
+      }
+  }
   for (const n of names)
     if (!swFiles.test(n) && !staticImports.has(n))
       expect(n, `unexpected script ${n} on #/`).toMatch(/^(index|rolldown-runtime)-[\w-]+\.js$/);
