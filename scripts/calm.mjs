@@ -45,6 +45,9 @@ try {
       await page.waitForFunction(() => !document.querySelector('[data-deferred="pending"]'), null, {
         timeout: 60_000,
       });
+      // lazy views (the 3D view's buttons) and statistics arrive after the sections mount
+      await page.waitForLoadState('networkidle');
+      await page.waitForFunction(() => !document.querySelector('.math-pending'), null, { timeout: 60_000 });
       const c = await page.evaluate(countTabStops);
       console.log(
         route.padEnd(28),
