@@ -70,7 +70,7 @@ test('the progressive render reaches spp in workers while the page answers input
   await expect(page.getByTestId('render-description')).toContainText('after 24 samples per pixel');
 });
 
-test('equal time: a fold that mounts on open and stays open in the link; its ranking is its relMSE order', async ({
+test('equal time and the error from independent runs: folds that mount on open and stay open in the link; the ranking is the relMSE order', async ({
   page,
 }) => {
   await openScene(page, '#/render?res=32&spp=1');
@@ -87,6 +87,15 @@ test('equal time: a fold that mounts on open and stays open in the link; its ran
   for (const e of errors) expect(Number.isFinite(e) && e > 0).toBe(true);
   expect([...errors].sort((a, b) => a - b)).toEqual(errors);
   await expect(page.getByTestId('et-plot')).toBeVisible();
+  // the error without a reference: K runs in a worker; an unbiased estimator's spread predicts its error
+  await page.getByTestId('fold-spread').locator('summary').click();
+  await expect(page).toHaveURL(/[?&]open=equal-time,spread(&|$)/);
+  await expect(page.getByTestId('spread-status')).toHaveText(/^Done: 8 runs/, { timeout: 60_000 });
+  const expected = Number(await readout(page, 'spread-expected-mse'));
+  const measured = Number(await readout(page, 'spread-measured-mse'));
+  expect(expected).toBeGreaterThan(0);
+  expect(measured / expected).toBeGreaterThan(0.5);
+  expect(measured / expected).toBeLessThan(1.5);
   // the link opens it again
   await page.reload();
   await expect(page.getByTestId('fold-equal-time')).toHaveAttribute('open', '');

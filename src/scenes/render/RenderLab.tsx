@@ -21,6 +21,7 @@ import { Inspector } from './view/Inspector';
 import { Controls } from './view/Controls';
 import { About } from './view/About';
 import { EqualTime } from './view/EqualTime';
+import { Spread } from './view/Spread';
 import { Fold } from '../../ui/Fold';
 import './render.css';
 
@@ -145,6 +146,13 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
         className="render-fold"
       >
         <EqualTime m={m} />
+      </Fold>
+      <Fold
+        name="spread"
+        summary="The error without a reference: the image rendered K times, and the noise of one run"
+        className="render-fold"
+      >
+        <Spread m={m} />
       </Fold>
       <About />
     </div>

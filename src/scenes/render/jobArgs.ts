@@ -43,6 +43,28 @@ export function equalTimeArgs(m: RenderModel, budgetMs: number): EqualTimeArgs {
   };
 }
 
+/** The error from independent runs: `runs` renders of `spp` samples per pixel at `res`. */
+export interface SpreadArgs extends ReferenceArgs {
+  runs: number;
+  spp: number;
+  seed: number;
+}
+
+export const SPREAD_RUNS = 8;
+export const SPREAD_SPP = 16;
+
+export function spreadArgs(m: RenderModel): SpreadArgs {
+  return {
+    spec: m.spec,
+    view: m.view,
+    res: EQUAL_TIME_RES,
+    trace: m.trace,
+    runs: SPREAD_RUNS,
+    spp: SPREAD_SPP,
+    seed: m.seed,
+  };
+}
+
 export function referenceArgs(m: RenderModel): ReferenceArgs {
   return { spec: m.spec, view: m.view, res: m.res, trace: m.trace };
 }

@@ -3,7 +3,8 @@
  * progressively in float64 (posting each pass's sums as progress; cancel = terminate,
  * src/workers/run.ts), `inspect` runs the pixel inspector, `reference` computes the exact
  * reference image (both take long enough at large sample counts or sizes to block a page), and
- * `equalTime` renders a small image with each strategy for the same time (core/render/equalTime).
+ * `equalTime` renders a small image with each strategy for the same time (core/render/equalTime),
+ * and `spread` renders it K times independently (core/render/expectedError).
  */
 import { exposeTasks, yieldToEventLoop, type ProgressFn } from '../../workers/expose';
 import { renderTileJob, type TileJobArgs, type TileResult } from '../../core/render/tileJob';
@@ -11,7 +12,14 @@ import { inspectPixel } from '../../core/render/inspector';
 import { referenceImage } from '../../core/render/referenceImage';
 import { buildScene } from '../../core/render/scene';
 import { runForTime, type StrategyRun } from '../../core/render/equalTime';
-import { inspectOptions, type EqualTimeArgs, type InspectArgs, type ReferenceArgs } from './jobArgs';
+import { expectedError, independentRuns } from '../../core/render/expectedError';
+import {
+  inspectOptions,
+  type EqualTimeArgs,
+  type InspectArgs,
+  type ReferenceArgs,
+  type SpreadArgs,
+} from './jobArgs';
 
 const tasks = {
   tile: (a: TileJobArgs, progress: ProgressFn<TileResult>) =>
@@ -22,6 +30,12 @@ const tasks = {
     }),
   inspect: (a: InspectArgs) => inspectPixel(buildScene(a.spec), a.view, a.px[0], a.px[1], inspectOptions(a)),
   reference: (a: ReferenceArgs) => referenceImage(buildScene(a.spec), a.view, a.res, a.res, a.trace.bounces),
+  spread: (a: SpreadArgs) => {
+    const scene = buildScene(a.spec);
+    const reference = referenceImage(scene, a.view, a.res, a.res, a.trace.bounces);
+    const runs = independentRuns(scene, a.view, a.res, a.trace, a.seed, a.runs, a.spp);
+    return expectedError(runs, reference.values);
+  },
   equalTime: async (a: EqualTimeArgs, progress: ProgressFn<{ finished: number }>) => {
     const scene = buildScene(a.spec);
     const reference = referenceImage(scene, a.view, a.res, a.res, a.trace.bounces);
