@@ -194,8 +194,13 @@ export async function checkWholePage(page: Page, hash: string, { calm = false } 
   await openAllFolds(page);
   await page.emulateMedia({ colorScheme: 'dark' });
   await page.setViewportSize({ width: 375, height: 812 });
-  await expect.poll(() => page.evaluate(() => document.documentElement.dataset.theme)).toBe('dark');
-  await expect.poll(() => page.evaluate(() => document.documentElement.clientWidth)).toBeLessThanOrEqual(375);
+  // (generous: with every fold open, a page may be busy with what they compute for a while)
+  await expect
+    .poll(() => page.evaluate(() => document.documentElement.dataset.theme), { timeout: 60_000 })
+    .toBe('dark');
+  await expect
+    .poll(() => page.evaluate(() => document.documentElement.clientWidth), { timeout: 60_000 })
+    .toBeLessThanOrEqual(375);
   found.push(...(await axeViolations(page, 'dark 375')));
   found.push(...(await smallTargets(page)).map((t) => `target under 24 × 24 and not spaced: ${t}`));
   found.push(...(await formulasBrokenInsideParentheses(page)).map((f) => `broken inside parentheses: ${f}`));
