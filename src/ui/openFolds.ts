@@ -42,7 +42,7 @@ function subscribe(l: () => void): () => void {
 }
 
 /** Opens or closes the fold `name`, and writes the address's `open=` to match. */
-export function setFoldOpen(name: string, open: boolean): void {
+function setFoldOpen(name: string, open: boolean): void {
   const current = getOpenFolds();
   if (current.includes(name) === open) return;
   names = toggledFolds(current, name, open);
@@ -55,12 +55,6 @@ export function setFoldOpen(name: string, open: boolean): void {
   } catch {
     /* some sandboxed iframes forbid it; the state still lives in the page */
   }
-  notify();
-}
-
-/** Re-reads the list from the address (a page that replaced its own address, and tests). */
-export function resyncOpenFolds(): void {
-  names = fromAddress();
   notify();
 }
 
