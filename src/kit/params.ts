@@ -70,8 +70,8 @@ export interface ParsedParams<S extends ParamSchema> {
   problems: ParamProblem[];
 }
 
-/** Parameters owned by the shell itself, not by any scene. */
-export const SHELL_PARAMS = [
+/** The shell's own flags, read by ./shell parseShellFlags (every page takes them). */
+export const SHELL_FLAG_NAMES = [
   'embed',
   'present',
   'ask',
@@ -80,10 +80,10 @@ export const SHELL_PARAMS = [
   'open',
   'origin',
   'a11y',
-  'fuzz',
-  'fuzzn',
-  'fuzzseed',
 ] as const;
+
+/** Parameters owned by the shell itself, not by any scene: its flags and the fuzzer's (app/fuzz). */
+export const SHELL_PARAMS = [...SHELL_FLAG_NAMES, 'fuzz', 'fuzzn', 'fuzzseed'] as const;
 
 /** Longest raw value the parser looks at; longer ones are rejected, not truncated. */
 export const MAX_RAW_LENGTH = 4000;

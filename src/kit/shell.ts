@@ -1,4 +1,4 @@
-import { SHELL_PARAMS } from './params';
+import { SHELL_FLAG_NAMES, SHELL_PARAMS } from './params';
 import { parseOpenFolds } from './folds';
 
 /** Hash routing: `#/texture?u=0.4&v=0.24` → { path: '/texture', query: 'u=0.4&v=0.24' }. */
@@ -45,18 +45,6 @@ export interface ShellFlags {
   /** Shell parameters the shell could not use, with a message each. */
   problems: { name: string; message: string }[];
 }
-
-/** The shell's own parameters (every page takes them; no scene schema may use these names). */
-export const SHELL_FLAG_NAMES = [
-  'embed',
-  'present',
-  'ask',
-  'theme',
-  'part',
-  'open',
-  'origin',
-  'a11y',
-] as const;
 
 /** Read the shell's own flags (embed, present, ask, theme, part, origin) from a query string. Never throws. */
 export function parseShellFlags(query: string): ShellFlags {
