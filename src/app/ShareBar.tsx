@@ -5,6 +5,7 @@
  * keeps is kit/shareLink's `sharedFlags`.
  */
 import { sharedFlags, shareUrl } from '../kit/shareLink';
+import { openFoldsValue } from '../kit/folds';
 import { useState } from 'react';
 import type { PageInfo } from '../kit/catalogue';
 import type { SceneModule } from '../kit/scene';
@@ -90,7 +91,7 @@ export function ShareBar({
   const link = shareUrl(href, info.path, qs);
   const embedQs = serializeParams(schema, values, {
     part: flags.part ?? undefined,
-    open: open.length ? open.join(',') : undefined,
+    open: openFoldsValue(open),
     embed: '1',
     theme: flags.theme ?? undefined,
   });

@@ -1,3 +1,4 @@
+import { openFoldsValue } from './folds';
 /**
  * The document part of a link the app hands out (Copy link, the QR code, the embed code, the
  * worksheet's links): the page's address without its query string and fragment. The page may have
@@ -54,7 +55,7 @@ export interface ShareMode {
 export function sharedFlags(m: ShareMode): Record<string, string | undefined> {
   return {
     part: m.part ?? undefined,
-    open: m.open?.length ? m.open.join(',') : undefined,
+    open: openFoldsValue(m.open ?? []),
     present: m.present ? '1' : undefined,
     ask: m.asking && (m.present || m.keep) ? '1' : undefined,
     theme: m.theme ?? undefined,

@@ -1,5 +1,5 @@
 import { SHELL_FLAG_NAMES, SHELL_PARAMS } from './params';
-import { parseOpenFolds } from './folds';
+import { openFoldsValue, parseOpenFolds } from './folds';
 
 /** Hash routing: `#/texture?u=0.4&v=0.24` → { path: '/texture', query: 'u=0.4&v=0.24' }. */
 export interface Route {
@@ -167,7 +167,7 @@ export function shellExtras(
 ): Record<string, string | undefined> {
   return {
     part: flags.part ?? undefined,
-    open: flags.open?.length ? flags.open.join(',') : undefined,
+    open: openFoldsValue(flags.open ?? []),
     embed: flags.embed ? '1' : undefined,
     present: flags.present ? '1' : undefined,
     ask: flags.ask ? '1' : undefined,
