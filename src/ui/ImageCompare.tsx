@@ -7,6 +7,7 @@
  */
 import { useEffect, useId, useRef, useState, type KeyboardEvent, type PointerEvent } from 'react';
 import { formatNumber } from './format';
+import { paintRgba } from './imageMeasure';
 
 /** Side of the loupe's window, in image pixels. */
 const LOUPE = 9;
@@ -54,11 +55,6 @@ export function loupePixels(src: Uint8ClampedArray, width: number, height: numbe
   return out;
 }
 
-function put(canvas: HTMLCanvasElement | null, data: Uint8ClampedArray, w: number, h: number) {
-  const g = canvas?.getContext('2d');
-  if (g) g.putImageData(new ImageData(new Uint8ClampedArray(data), w, h), 0, 0);
-}
-
 const rgb = (src: Uint8ClampedArray, k: number) =>
   src[4 * k] === src[4 * k + 1] && src[4 * k] === src[4 * k + 2]
     ? String(src[4 * k])
@@ -72,10 +68,10 @@ export function ImageCompare(p: CompareProps) {
   const lRef = useRef<HTMLCanvasElement>(null);
   const lRender = useRef<HTMLCanvasElement>(null);
   const sliderId = useId();
-  useEffect(() => put(wipe.current, wipePixels(p, split), w, h), [p, split, w, h]);
+  useEffect(() => paintRgba(wipe.current, wipePixels(p, split), w, h), [p, split, w, h]);
   useEffect(() => {
-    put(lRef.current, loupePixels(p.reference, w, h, at[0], at[1]), LOUPE, LOUPE);
-    put(lRender.current, loupePixels(p.render, w, h, at[0], at[1]), LOUPE, LOUPE);
+    paintRgba(lRef.current, loupePixels(p.reference, w, h, at[0], at[1]), LOUPE, LOUPE);
+    paintRgba(lRender.current, loupePixels(p.render, w, h, at[0], at[1]), LOUPE, LOUPE);
   }, [p, at, w, h]);
   const k = at[1] * w + at[0];
   const move = (e: PointerEvent<HTMLCanvasElement>) => {

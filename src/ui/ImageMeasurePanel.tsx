@@ -13,19 +13,8 @@ import { Readout } from './Readout';
 import { ImageCompare } from './ImageCompare';
 import { downloadFile } from './download';
 import { formatNumber } from './format';
-import type { ImageSet } from './imageMeasure';
+import { paintRgba, type ImageSet } from './imageMeasure';
 import './imageMeasure.css';
-
-function paint(
-  canvas: HTMLCanvasElement | null,
-  pixels: Uint8ClampedArray | undefined,
-  w: number,
-  h: number,
-) {
-  const g = canvas?.getContext('2d');
-  if (!g || !pixels || pixels.length !== 4 * w * h) return;
-  g.putImageData(new ImageData(new Uint8ClampedArray(pixels), w, h), 0, 0);
-}
 
 const bytes = (p: Uint8ClampedArray) => new Uint8Array(p.buffer, p.byteOffset, p.byteLength);
 
@@ -54,12 +43,12 @@ export function ImageMeasurePanel({ set }: { set: ImageSet | null }) {
   const cMap = useRef<HTMLCanvasElement>(null);
   useEffect(() => {
     if (!set || !image) return;
-    paint(cRef.current, set.reference, set.width, set.height);
-    paint(cTest.current, image.pixels, set.width, set.height);
+    paintRgba(cRef.current, set.reference, set.width, set.height);
+    paintRgba(cTest.current, image.pixels, set.width, set.height);
   }, [set, image]);
   const map = flip.result?.errorMap;
   useEffect(() => {
-    if (set) paint(cMap.current, map, set.width, set.height);
+    if (set) paintRgba(cMap.current, map, set.width, set.height);
   }, [set, map]);
 
   if (!set || !image)

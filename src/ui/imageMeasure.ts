@@ -1,4 +1,4 @@
-/** What a scene hands the image-measurement disclosure (./ImageMeasure.tsx): plain data, no React. */
+/** What a scene hands the image-measurement disclosure (./ImageMeasure.tsx): plain data, no React; and how its views draw it. */
 
 /** One image that has a reference: its 8-bit sRGB pixels (RGBA, rows from the top) as shown. */
 export interface MeasuredImage {
@@ -23,4 +23,16 @@ export interface ImageSet {
   relMseOf: string;
   /** Start of the downloaded files' names, e.g. "area-light-floor". */
   fileStem: string;
+}
+
+/** Draws RGBA8 pixels (`w` × `h`, rows from the top) into a canvas of that size; anything else is left undrawn. */
+export function paintRgba(
+  canvas: HTMLCanvasElement | null,
+  pixels: Uint8ClampedArray | undefined,
+  w: number,
+  h: number,
+): void {
+  const g = canvas?.getContext('2d');
+  if (!g || !pixels || pixels.length !== 4 * w * h) return;
+  g.putImageData(new ImageData(new Uint8ClampedArray(pixels), w, h), 0, 0);
 }
