@@ -5,7 +5,7 @@
  * A lazy chunk: loaded only when its disclosure is opened.
  */
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
-import { Notice, Readout, formatNumber } from '../../../ui';
+import { Notice, Readout, formatNumber, keepTextParenthesesTogether } from '../../../ui';
 import {
   EXAM_C_F32,
   examLobePdf,
@@ -23,8 +23,8 @@ import { makeWarpPass, readDirections, syncGpu, type WarpPass } from './gpu/warp
 export const GPU_SAMPLES = 1_000_000;
 const SIZE = 256;
 const FORMS = [
-  { id: 0 as const, label: 'textbook: ½ arccos(1\u00a0−\u00a02ξ₁), ln(c\u00a0ξ₂\u00a0+\u00a01)' },
-  { id: 1 as const, label: 'stable: √ξ₁, √(1\u00a0−\u00a0ξ₁), log1p(c\u00a0ξ₂)' },
+  { id: 0 as const, label: keepTextParenthesesTogether('textbook: ½ arccos(1 − 2ξ₁), ln(c ξ₂ + 1)') },
+  { id: 1 as const, label: keepTextParenthesesTogether('stable: √ξ₁, √(1 − ξ₁), log1p(c ξ₂)') },
 ];
 /** Both forms are tested: the Šidák correction is for two tests. */
 const TESTS = 2;
@@ -221,7 +221,7 @@ export function GpuWarpPanel({ seed }: { seed: number }) {
         In float32 (u₃₂ = 2⁻²⁴ ≈ 6·10⁻⁸) the failures the double table shows at ξ ≈ 10⁻¹⁶ come at ξ ≈ 10⁻⁷: 1
         − 2ξ₁ rounds to 1 below ξ₁ = 2⁻²⁵ (θ = 0 for a sample whose θ is √ξ₁ ≈ 10⁻⁴), c ξ₂ + 1 swallows c ξ₂,
         and near ξ₁ → 1 arcsin magnifies the rounding of √ξ₁ a thousandfold. A GPU’s random numbers have 24
-        bits (ξ&nbsp;=&nbsp;k·2⁻²⁴), so the first failures are samples it really draws.
+        bits {keepTextParenthesesTogether('(ξ = k·2⁻²⁴)')}, so the first failures are samples it really draws.
       </p>
       <h3>10⁶ directions from a vertex shader</h3>
       <p className="small">

@@ -4,6 +4,7 @@
  */
 import { lazy } from 'react';
 import { Fold } from '../../../ui/Fold';
+import { keepTextParenthesesTogether } from '../../../ui';
 
 const StabilityPanel = lazy(() => import('./StabilityPanel').then((m) => ({ default: m.StabilityPanel })));
 
@@ -12,9 +13,9 @@ export function StabilityDetails() {
     <Fold
       name="stability"
       testId="stability-details"
-      summary={
-        'Numerical stability: ½ arccos(1\u00a0−\u00a02ξ) against arcsin √ξ, and ln against log1p, at tiny and near-1 ξ'
-      }
+      summary={keepTextParenthesesTogether(
+        'Numerical stability: ½ arccos(1 − 2ξ) against arcsin √ξ, and ln against log1p, at tiny and near-1 ξ',
+      )}
     >
       <StabilityPanel />
     </Fold>
