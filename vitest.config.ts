@@ -33,6 +33,10 @@ export default defineConfig({
     // generous: the suite must pass on a busy 2-core machine (tests assert results, never timings)
     testTimeout: 120_000,
     pool: 'threads',
+    // one module cache per worker thread, not per file: the suite imports mathjs, three and the
+    // scenes' models once per thread instead of once per file (about half of its run time); no
+    // test relies on a fresh module state
+    isolate: false,
     coverage: {
       provider: 'v8',
       include: ['src/**/*.{ts,tsx}'],
