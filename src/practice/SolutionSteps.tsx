@@ -1,4 +1,5 @@
 import { MathTex } from '../ui/MathTex';
+import { ScrollBox } from '../ui/ScrollBox';
 import { Superscripted } from '../ui/Superscripted';
 import type { SolutionStep } from './model';
 
@@ -13,7 +14,12 @@ export function SolutionSteps({ steps }: { steps: readonly SolutionStep[] }) {
               <Superscripted text={s.text} />
             </p>
           ) : null}
-          {s.tex ? <MathTex tex={s.tex} display /> : null}
+          {s.tex ? (
+            // a formula wider than a phone scrolls in its own box, which the keyboard can reach
+            <ScrollBox label={`Step ${i + 1}, formula`} className="solution-math">
+              <MathTex tex={s.tex} display />
+            </ScrollBox>
+          ) : null}
         </div>
       ))}
     </>

@@ -1,4 +1,5 @@
 import { Fragment, type ReactNode } from 'react';
+import { keepTextParenthesesTogether } from './texBreaks';
 
 /** A piece of plain text: words, or a power to be set as a superscript. */
 export type CaretPart = string | { sup: CaretPart[] };
@@ -73,5 +74,5 @@ function render(parts: CaretPart[]): ReactNode {
  * so no reader sees a caret; a screen reader hears "to the power" before each one.
  */
 export function Superscripted({ text }: { text: string }) {
-  return <>{render(caretParts(text))}</>;
+  return <>{render(caretParts(keepTextParenthesesTogether(text)))}</>;
 }

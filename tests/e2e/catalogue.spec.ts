@@ -48,7 +48,7 @@ for (const s of SCENES) {
       page,
     }) => {
       test.setTimeout(240_000);
-      await checkWholePage(page, link(s), { calm: true });
+      await checkWholePage(page, link(s), { scene: s });
     });
 
     test('the timeline: reduced motion holds play=1; paused, no frames; playing, none off screen; pause writes a link that restores it', async ({

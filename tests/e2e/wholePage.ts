@@ -155,19 +155,130 @@ export async function formulasBrokenInsideParentheses(page: Page): Promise<strin
 }
 
 /**
- * The whole-page pass: the page as it opens, light at 1280 × 800 (calm: few tab stops; axe), then
- * with every fold opened, dark at 375 px (and 320 px for reflow), every lazy part loaded from the
- * app's own origin. Every finding is collected and the test fails once with the full list.
- * `calm`: check the counts of tab stops (the scenes' pages).
+ * The exam first: each of the scene's parts (`part-1a`, …) on the page as it opens, in the exam's
+ * order, each with what the exam asks and its derivation, and "Explore further" after the last
+ * of them.
  */
-export async function checkWholePage(page: Page, hash: string, { calm = false } = {}): Promise<void> {
+export function examFirst(page: Page, parts: readonly string[]): Promise<string[]> {
+  return page.evaluate((parts) => {
+    const out: string[] = [];
+    let last = -Infinity;
+    for (const id of parts) {
+      const el = document.querySelector(`[data-testid="part-${id}"]`);
+      if (!el || el.getClientRects().length === 0) {
+        out.push(`part ${id} is not on the page as it opens`);
+        continue;
+      }
+      for (const [sel, what] of [
+        ['.exam-asks', 'what the exam asks'],
+        ['.exam-derivation', 'a derivation'],
+      ])
+        if (!el.querySelector(sel)) out.push(`part ${id} has no ${what}`);
+      const top = el.getBoundingClientRect().top;
+      if (top < last) out.push(`part ${id} is above the part before it`);
+      last = top;
+    }
+    const explore = document.querySelector('[data-testid="explore-further"]');
+    if (explore && explore.getBoundingClientRect().top < last)
+      out.push('"Explore further" comes before a part');
+    return out;
+  }, parts);
+}
+
+/** The box holding each scene's inputs, where it is not `.scene-controls`. */
+const CONTROLS: Record<string, string> = { hemisphere: '.hemi-controls', 'ray-sphere': '.rs-stage-ctl' };
+
+/**
+ * Long single-line derivation steps that must wrap on a phone (each is wider than 375 px on one
+ * line), by scene.
+ */
+const MUST_WRAP: Record<string, string[]> = {
+  hemisphere: [
+    String.raw`|D| = \int_\Omega d\omega`,
+    String.raw`E\big[\langle I\rangle\big] = \frac{1}{N}\sum`,
+  ],
+  'ray-sphere': [String.raw`{a t^2 + b t + c = 0}`, String.raw`{t = \frac{-b \pm \sqrt{\Delta}}{2a}}`],
+  'area-light': [String.raw`\langle L_o\rangle_{N=4}`, String.raw`\langle L_o\rangle = \frac{1}{N}\sum`],
+};
+
+/**
+ * A scene on a phone (one column): its first question's heading above its first input, that above
+ * its first computed answer; every display formula fits its box (the derivations break into rows;
+ * nothing needs a sideways scroller), and the long steps of MUST_WRAP wrap.
+ */
+export async function phoneLayout(page: Page, sceneId: string, firstQuestion: number): Promise<string[]> {
+  return page.evaluate(
+    ({ heading, controls, mustWrap }) => {
+      const out: string[] = [];
+      const top = (sel: string) => {
+        for (const el of document.querySelectorAll(sel)) {
+          const r = el.getBoundingClientRect();
+          if (r.width > 0 && r.height > 0) return r.top + scrollY;
+        }
+        return null;
+      };
+      const h = top(heading);
+      const c = top(`${controls} :is(input, select, textarea, button)`);
+      const a = top('.exam-answer');
+      if (h === null || c === null || a === null)
+        out.push(`no ${h === null ? heading : c === null ? controls : 'answer'}`);
+      else if (!(h < c && c < a)) out.push('on a phone: not the question, then its inputs, then its answer');
+      const lines = [...document.querySelectorAll<HTMLElement>('.katex-display')].map((el) => {
+        const html = el.querySelector<HTMLElement>('.katex-html') ?? el;
+        const tops = new Set(
+          [...html.querySelectorAll(':scope > .katex-base')].map((b) =>
+            Math.round(b.getBoundingClientRect().top),
+          ),
+        );
+        return {
+          tex: (el.querySelector('annotation')?.textContent ?? '').trim(),
+          overflows: html.scrollWidth > html.clientWidth + 1,
+          wrapped: tops.size > 1,
+        };
+      });
+      for (const l of lines)
+        if (l.overflows) out.push(`display line wider than a phone: ${l.tex.slice(0, 60)}`);
+      for (const start of mustWrap) {
+        const l = lines.find((x) => x.tex.startsWith(start));
+        if (!l?.wrapped) out.push(`${start} … does not break into rows on a phone`);
+      }
+      return out;
+    },
+    {
+      heading: `#question-${firstQuestion}-title`,
+      controls: CONTROLS[sceneId] ?? '.scene-controls',
+      mustWrap: MUST_WRAP[sceneId] ?? [],
+    },
+  );
+}
+
+/** A scene's part of the whole-page pass: its id and exam parts (src/kit/catalogue.ts). */
+export interface ScenePage {
+  id: string;
+  parts: readonly string[];
+}
+
+/**
+ * The whole-page pass: the page as it opens, light at 1280 × 800 (axe; for a scene: few tab
+ * stops, the exam first), then with every fold opened, dark at 375 px (for a scene: the phone's
+ * one column) and 320 px for reflow, every lazy part loaded from the app's own origin. Every
+ * finding is collected and the test fails once with the full list. `prepare` brings the page to
+ * the state to check (e.g. a practice question checked, its feedback shown) once it has opened.
+ */
+export async function checkWholePage(
+  page: Page,
+  hash: string,
+  { scene, prepare }: { scene?: ScenePage; prepare?: (page: Page) => Promise<void> } = {},
+): Promise<void> {
   const found: string[] = [];
   const requested: string[] = [];
   page.on('request', (r) => requested.push(r.url()));
   await page.emulateMedia({ colorScheme: 'light' });
   await page.setViewportSize({ width: 1280, height: 800 });
   await openWhole(page, hash);
-  if (calm) {
+  await prepare?.(page);
+  if (scene) {
+    found.push(...(await examFirst(page, scene.parts)));
     const c = await page.evaluate(countTabStops);
     if (c.firstScreen > CALM.firstScreen)
       found.push(
@@ -204,6 +315,7 @@ export async function checkWholePage(page: Page, hash: string, { calm = false } 
   found.push(...(await axeViolations(page, 'dark 375')));
   found.push(...(await smallTargets(page)).map((t) => `target under 24 × 24 and not spaced: ${t}`));
   found.push(...(await formulasBrokenInsideParentheses(page)).map((f) => `broken inside parentheses: ${f}`));
+  if (scene) found.push(...(await phoneLayout(page, scene.id, Number.parseInt(scene.parts[0]!, 10))));
 
   await page.setViewportSize({ width: 320, height: 640 });
   await expect
