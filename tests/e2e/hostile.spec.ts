@@ -71,58 +71,66 @@ async function expectWorkingScene(page: Page, label: string) {
 /** How many hash changes the corpus is rotated over (parameter j gets value (j + 3i) mod 10 in change i). */
 const ROTATIONS = 3;
 
-for (const route of ROUTES) {
-  test(`URL corpus on ${route.path}: hostile values, prototype names, unknown and repeated parameters`, async ({
+/** The whole corpus on one route of the open page (reached by a hash change: the app stays loaded). */
+async function corpusOn(page: Page, route: Route): Promise<void> {
+  const params = route.params ?? (route.id ? await sceneParams(route.id) : []);
+  await openScene(page, `#${route.path}`);
+  // scrolled through once, so every section (lazy libraries, plots) is mounted and takes the input
+  for (let y = 0; y <= 4; y++) {
+    await page.evaluate((f) => window.scrollTo(0, f * document.body.scrollHeight), y / 4);
+    await settle(page);
+  }
+  await page.evaluate(() => window.scrollTo(0, 0));
+  const notice = page.getByTestId('param-notice').first();
+  const go = async (q: string) => {
+    await page.evaluate((h) => {
+      window.location.hash = h;
+    }, `#${route.path}?${q}`);
+    await settle(page);
+  };
+  // theme (a shell parameter, on every route) never takes a hostile value silently either
+  const all = [...params, { name: 'theme', kind: 'enum' }];
+  for (let i = 0; i < ROTATIONS; i++) {
+    const given = all.map((p, j) => ({ p, value: CORPUS[(j + 3 * i) % CORPUS.length]! }));
+    await go(given.map(({ p, value }) => `${p.name}=${value[1]}`).join('&'));
+    const label = `change ${i}: ${given.map(({ p, value }) => `${p.name}=${value[0]}`).join(', ')}`;
+    await expectWorkingScene(page, label);
+    // every non-text parameter that cannot use its value is named in the notice
+    // (a list takes '' as its default and '1,2' as two numbers: those are usable)
+    const mustName = given.filter(
+      ({ p, value }) =>
+        p.kind !== 'string' && !(p.kind === 'list' && (value[1] === '' || value[1] === '1,2')),
+    );
+    await expect(notice, `notice after ${label} on ${route.path}`).toBeVisible();
+    const text = (await notice.textContent()) ?? '';
+    const named = route.id ? await notice.locator('li code').allTextContents() : null;
+    for (const { p, value } of mustName) {
+      const what = `${route.path}: ${p.name}=${value[0]} is named`;
+      if (named && p.name !== 'theme') expect(named, what).toContain(p.name);
+      else expect(text, what).toContain(p.name);
+    }
+  }
+  // a prototype name on every parameter: the URL never carries a function's source
+  await go(params.map((p) => `${p.name}=toString`).join('&'));
+  await expectWorkingScene(page, 'toString');
+  expect(await page.evaluate(() => window.location.href)).not.toMatch(/native%20code|native code/);
+  // an unknown parameter and a repeated one are named
+  await go('bogus=1&theme=dark&theme=light');
+  await expect(notice).toBeVisible();
+  await expect(notice).toContainText('bogus');
+  await expect(notice).toContainText('theme');
+  await expectWorkingScene(page, 'bogus=1, theme twice');
+}
+
+for (const [title, routes] of [
+  ['every scene', SCENE_ROUTES],
+  ['every other page', EXTRA_ROUTES],
+] as const) {
+  test(`URL corpus on ${title}: hostile values, prototype names, unknown and repeated parameters`, async ({
     page,
   }) => {
-    test.setTimeout(180_000);
-    const params = route.params ?? (route.id ? await sceneParams(route.id) : []);
-    await openScene(page, `#${route.path}`);
-    // scrolled through once, so every section (lazy libraries, plots) is mounted and takes the input
-    for (let y = 0; y <= 4; y++) {
-      await page.evaluate((f) => window.scrollTo(0, f * document.body.scrollHeight), y / 4);
-      await settle(page);
-    }
-    await page.evaluate(() => window.scrollTo(0, 0));
-    const notice = page.getByTestId('param-notice').first();
-    const go = async (q: string) => {
-      await page.evaluate((h) => {
-        window.location.hash = h;
-      }, `#${route.path}?${q}`);
-      await settle(page);
-    };
-    // theme (a shell parameter, on every route) never takes a hostile value silently either
-    const all = [...params, { name: 'theme', kind: 'enum' }];
-    for (let i = 0; i < ROTATIONS; i++) {
-      const given = all.map((p, j) => ({ p, value: CORPUS[(j + 3 * i) % CORPUS.length]! }));
-      await go(given.map(({ p, value }) => `${p.name}=${value[1]}`).join('&'));
-      const label = `change ${i}: ${given.map(({ p, value }) => `${p.name}=${value[0]}`).join(', ')}`;
-      await expectWorkingScene(page, label);
-      // every non-text parameter that cannot use its value is named in the notice
-      // (a list takes '' as its default and '1,2' as two numbers: those are usable)
-      const mustName = given.filter(
-        ({ p, value }) =>
-          p.kind !== 'string' && !(p.kind === 'list' && (value[1] === '' || value[1] === '1,2')),
-      );
-      await expect(notice, `notice after ${label} on ${route.path}`).toBeVisible();
-      const text = (await notice.textContent()) ?? '';
-      const named = route.id ? await notice.locator('li code').allTextContents() : null;
-      for (const { p, value } of mustName) {
-        const what = `${route.path}: ${p.name}=${value[0]} is named`;
-        if (named && p.name !== 'theme') expect(named, what).toContain(p.name);
-        else expect(text, what).toContain(p.name);
-      }
-    }
-    // a prototype name on every parameter: the URL never carries a function's source
-    await go(params.map((p) => `${p.name}=toString`).join('&'));
-    await expectWorkingScene(page, 'toString');
-    expect(await page.evaluate(() => window.location.href)).not.toMatch(/native%20code|native code/);
-    // an unknown parameter and a repeated one are named
-    await go('bogus=1&theme=dark&theme=light');
-    await expect(notice).toBeVisible();
-    await expect(notice).toContainText('bogus');
-    await expect(notice).toContainText('theme');
-    await expectWorkingScene(page, 'bogus=1, theme twice');
+    test.setTimeout(300_000);
+    for (const route of routes) await test.step(route.path, () => corpusOn(page, route));
   });
 }
 
