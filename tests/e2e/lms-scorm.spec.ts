@@ -59,22 +59,6 @@ test.afterAll(async () => {
   await new Promise<void>((ok) => (server ? server.close(() => ok()) : ok()));
 });
 
-/** The package's manifests: one SCO, the launch page, the mastery score. */
-test('the SCORM manifests have one SCO launching index.html', () => {
-  const m12 = new TextDecoder().decode(
-    unzip(packages(['q5'], PKG_SEED)['practice-scorm12.zip'])['imsmanifest.xml'],
-  );
-  expect(m12).toContain('<schemaversion>1.2</schemaversion>');
-  expect(m12.match(/adlcp:scormtype="sco"/g)).toHaveLength(1);
-  expect(m12).toContain('<adlcp:masteryscore>80</adlcp:masteryscore>');
-  const m04 = new TextDecoder().decode(
-    unzip(packages(['q5'], PKG_SEED)['practice-scorm2004.zip'])['imsmanifest.xml'],
-  );
-  expect(m04).toContain('<schemaversion>2004 4th Edition</schemaversion>');
-  expect(m04.match(/adlcp:scormType="sco"/g)).toHaveLength(1);
-  expect(m04).toContain('<imsss:minNormalizedMeasure>0.8</imsss:minNormalizedMeasure>');
-});
-
 async function sco(page: Page): Promise<Frame> {
   await expect
     .poll(() => page.frame({ name: 'sco' })?.url() ?? '', { timeout: 30_000 })

@@ -52,6 +52,30 @@ test('#/results: busy in its worker, a dropped file waits its turn, Cancel keeps
 }) => {
   // a production build: a link asking for the fuzzer starts nothing (its code is not even built)
   expect(readdirSync(`${dist}/assets`).filter((f) => /fuzz/i.test(f))).toEqual([]);
+  // the results worker's messages can be held until the test lets them through, so that a file can
+  // be dropped while a batch is surely still being checked
+  await page.addInitScript(() => {
+    const w = window as unknown as { __hold: boolean; __held: (() => void)[]; __release: () => void };
+    w.__hold = false;
+    w.__held = [];
+    w.__release = () => {
+      w.__hold = false;
+      for (const send of w.__held.splice(0)) send();
+    };
+    const Orig = window.Worker;
+    window.Worker = class extends Orig {
+      private readonly results: boolean;
+      constructor(url: string | URL, options?: WorkerOptions) {
+        super(url, options);
+        this.results = /results\.worker/.test(String(url));
+      }
+      override postMessage(msg: unknown, transfer?: Transferable[] | StructuredSerializeOptions) {
+        const send = () => super.postMessage(msg, transfer as Transferable[]);
+        if (this.results && w.__hold) w.__held.push(send);
+        else send();
+      }
+    };
+  });
   await page.goto('./#/results?fuzz=1&seed=3&fuzzn=50');
   const main = page.locator('main#main');
   await expect(main).toHaveAttribute('data-ready', '1', { timeout: 30_000 });
@@ -59,6 +83,7 @@ test('#/results: busy in its worker, a dropped file waits its turn, Cancel keeps
   const status = page.getByTestId('results-status');
   const report = page.getByTestId('results-report');
 
+  await page.evaluate(() => ((window as unknown as { __hold: boolean }).__hold = true));
   await input.setInputFiles([
     {
       name: 'broken.json',
@@ -67,6 +92,9 @@ test('#/results: busy in its worker, a dropped file waits its turn, Cancel keeps
     },
     resultsFile('ada.json', 'Ada', 250),
   ]);
+  await expect
+    .poll(() => page.evaluate(() => (window as unknown as { __held: unknown[] }).__held.length))
+    .toBeGreaterThan(0);
   await expect(input).toBeDisabled();
   await expect(page.getByTestId('results-cancel')).toBeVisible();
   // a file dropped while the batch is checked is queued, not lost
@@ -91,6 +119,8 @@ test('#/results: busy in its worker, a dropped file waits its turn, Cancel keeps
     });
   });
   await page.getByTestId('results-drop').dispatchEvent('drop', { dataTransfer: drop });
+  await expect(status).toContainText('1 more waiting');
+  await page.evaluate(() => (window as unknown as { __release: () => void }).__release());
   await expect(report).toHaveAttribute('data-files', '3', { timeout: 60_000 });
   await expect(report).toHaveAttribute('data-attempts', '251');
   await expect(report).toHaveAttribute('data-students', '2');
