@@ -38,6 +38,9 @@ test('the accessibility page and a scene: a described figure and the A11y view f
   });
   // the A11y view (a11y=1) is on from the start: it shows what the figure's steps change
   await page.goto('./#/accessibility?a11y=1');
+  await expect(
+    page.getByTestId('a11y-figures').locator('li', { hasText: 'g(t) along the ray, and where' }),
+  ).toContainText('hits the sphere', { timeout: 30_000 });
 
   await test.step('a described figure: its name and live description in the accessibility tree, announced once settled', async () => {
     const fig = page.getByTestId('demo-figure');
