@@ -17,35 +17,63 @@ test.beforeEach(async ({ page }) => {
 
 const pending = '[data-deferred="pending"]';
 
-test('far sections wait; scrolling mounts them; printing mounts everything at once', async ({ page }) => {
-  await page.goto('./#/texture');
-  await page.waitForSelector('main#main');
-  // the first screen: the question and its figure
-  await expect(page.locator('#question-3-title')).toBeVisible({ timeout: 60_000 });
-  await expect(page.locator('.tx-figure svg').first()).toBeVisible({ timeout: 60_000 });
-  // far below: still placeholders (each keeps an estimated height)
-  await expect(page.locator(pending).first()).toBeAttached();
-  const far = await page.locator(pending).count();
-  expect(far).toBeGreaterThan(0);
-  expect(
-    await page
-      .locator(pending)
-      .first()
-      .evaluate((el) => el.getBoundingClientRect().height),
-  ).toBeGreaterThan(100);
-  // scrolling to a part mounts it
-  await page.locator('#part-3c').scrollIntoViewIfNeeded();
-  await expect(page.getByTestId('answer-3c')).toHaveCount(1, { timeout: 30_000 });
-  // before printing, everything mounts synchronously (within the beforeprint event)
-  const left = await page.evaluate((sel) => {
-    window.dispatchEvent(new Event('beforeprint'));
-    return document.querySelectorAll(sel).length;
-  }, pending);
-  expect(left).toBe(0);
-  // what is beyond the exam is folded: its folds are there, closed, their content not mounted
-  await expect(
-    page.getByTestId('explore-further').locator('details[data-fold]:not([open])').first(),
-  ).toBeAttached();
+test('far sections wait; scrolling mounts them; printing mounts everything at once; formulas are typeset in a worker', async ({
+  page,
+}) => {
+  test.setTimeout(120_000);
+  const scripts: string[] = [];
+  page.on('request', (r) => {
+    let fromPage = false;
+    try {
+      fromPage = r.frame() === page.mainFrame();
+    } catch {
+      // a worker's request has no frame
+    }
+    if (fromPage && r.resourceType() === 'script') scripts.push(r.url());
+  });
+
+  await test.step('far sections wait; scrolling mounts them; printing mounts everything at once', async () => {
+    await page.goto('./#/texture');
+    await page.waitForSelector('main#main');
+    // the first screen: the question and its figure
+    await expect(page.locator('#question-3-title')).toBeVisible({ timeout: 60_000 });
+    await expect(page.locator('.tx-figure svg').first()).toBeVisible({ timeout: 60_000 });
+    // far below: still placeholders (each keeps an estimated height)
+    await expect(page.locator(pending).first()).toBeAttached();
+    const far = await page.locator(pending).count();
+    expect(far).toBeGreaterThan(0);
+    expect(
+      await page
+        .locator(pending)
+        .first()
+        .evaluate((el) => el.getBoundingClientRect().height),
+    ).toBeGreaterThan(100);
+    // scrolling to a part mounts it
+    await page.locator('#part-3c').scrollIntoViewIfNeeded();
+    await expect(page.getByTestId('answer-3c')).toHaveCount(1, { timeout: 30_000 });
+    // before printing, everything mounts synchronously (within the beforeprint event)
+    const left = await page.evaluate((sel) => {
+      window.dispatchEvent(new Event('beforeprint'));
+      return document.querySelectorAll(sel).length;
+    }, pending);
+    expect(left).toBe(0);
+    // what is beyond the exam is folded: its folds are there, closed, their content not mounted
+    await expect(
+      page.getByTestId('explore-further').locator('details[data-fold]:not([open])').first(),
+    ).toBeAttached();
+  });
+
+  await test.step('formulas are typeset (in a worker) and the page never loads KaTeX itself', async () => {
+    await page.goto('./#/hemisphere');
+    // the question's statement on the first screen is typeset
+    await expect(page.locator('#question-1 .katex').first()).toBeAttached({ timeout: 60_000 });
+    const html = await page.locator('#question-1 .katex').first().innerHTML();
+    expect(html).toContain('katex-mathml'); // HTML + MathML for screen readers
+    expect(
+      scripts.filter((u) => /vendor-katex/.test(u)),
+      'KaTeX is not loaded on the main thread',
+    ).toEqual([]);
+  });
 });
 
 test("printing also mounts the sections nested in the sections it mounts (the ray-sphere exam part's blocks)", async ({
@@ -64,7 +92,6 @@ test("printing also mounts the sections nested in the sections it mounts (the ra
   });
   // the precision table is in a fold: open, printing mounts it too
   await page.goto('./#/ray-sphere?open=precision');
-  await page.waitForSelector('main#main');
   await expect(page.locator('#question-5-title')).toBeVisible({ timeout: 60_000 });
   await expect(page.locator(pending).first()).toBeAttached();
   await expect(page.getByTestId('cross-section')).toHaveCount(0);
@@ -75,27 +102,4 @@ test("printing also mounts the sections nested in the sections it mounts (the ra
   expect(left).toBe(0);
   for (const id of ['cross-section', 'g-plot', 'derivation', 'live-answer', 'precision-table'])
     await expect(page.getByTestId(id)).toHaveCount(1);
-});
-
-test('formulas are typeset (in a worker) and the page never loads KaTeX itself', async ({ page }) => {
-  const scripts: string[] = [];
-  page.on('request', (r) => {
-    let fromPage = false;
-    try {
-      fromPage = r.frame() === page.mainFrame();
-    } catch {
-      // a worker's request has no frame
-    }
-    if (fromPage && r.resourceType() === 'script') scripts.push(r.url());
-  });
-  await page.goto('./#/hemisphere');
-  await page.waitForSelector('main#main');
-  // the question's statement on the first screen is typeset
-  await expect(page.locator('#question-1 .katex').first()).toBeAttached({ timeout: 60_000 });
-  const html = await page.locator('#question-1 .katex').first().innerHTML();
-  expect(html).toContain('katex-mathml'); // HTML + MathML for screen readers
-  expect(
-    scripts.filter((u) => /vendor-katex/.test(u)),
-    'KaTeX is not loaded on the main thread',
-  ).toEqual([]);
 });

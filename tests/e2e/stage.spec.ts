@@ -1,13 +1,14 @@
 /**
  * The lecture room's shared pieces, checked once (they are the same on every scene): the
  * controls drawer, fullscreen, the students' link and QR code, ask-then-reveal and its key, the
- * `?` list of keys, guide presets that ask. What every scene must show in the room (the stage on
- * the first screen, results held back until Reveal) is looped over the catalogue in
- * catalogue.spec.ts.
+ * `?` list of keys, and Space on a focused 3D-view button in classroom mode. What every scene must
+ * show in the room (the stage on the first screen, results held back until Reveal) is looped over
+ * the catalogue in catalogue.spec.ts; a guide preset that asks, and Plotly's tick labels in the
+ * room, are in room.spec.ts.
  */
 import type { Page } from '@playwright/test';
 import { SCENES, predictPrompt, type SceneInfo } from '../../src/kit/catalogue';
-import { test, expect, openScene, settle } from './fixtures';
+import { test, expect, openScene } from './fixtures';
 import { focusObscured } from './wcag';
 
 /** Opens a scene in classroom mode at the top of the page (no part: the first screen as loaded). */
@@ -17,66 +18,65 @@ async function openStaged(page: Page, s: SceneInfo, extra = ''): Promise<boolean
   return (await page.getByTestId('scene-stage').count()) > 0;
 }
 
-test('the Controls drawer opens and closes by its button and by the key c; focus follows', async ({
+test('on the stage: the Controls drawer opens and closes by its button and by the key c, focus follows; the fullscreen button fills the screen', async ({
   page,
 }) => {
+  test.setTimeout(120_000);
   await page.setViewportSize({ width: 1280, height: 720 });
   const s = await firstStagedScene(page);
-  const toggle = page.getByTestId('controls-drawer-toggle');
-  const drawer = page.getByTestId('controls-drawer');
-  await expect(toggle).toHaveAttribute('aria-expanded', 'false');
-  await expect(drawer).toBeHidden();
-  await toggle.click();
-  await expect(drawer, s).toBeVisible();
-  await expect(toggle).toHaveAttribute('aria-expanded', 'true');
-  await expect(drawer).toBeFocused();
-  // the drawer holds the scene's controls, usable
-  await expect(drawer.locator('input, select, button').nth(1)).toBeVisible();
-  await page.keyboard.press('c');
-  await expect(drawer).toBeHidden();
-  await expect(toggle).toBeFocused();
-  await page.locator('h1').click();
-  await page.keyboard.press('c');
-  await expect(drawer).toBeVisible();
-  await page.keyboard.press('Escape');
-  await expect(drawer).toBeHidden();
-  // c typed into a text field is text, not the shortcut
-  await toggle.click();
-  const field = drawer.locator('input[type="text"]').first();
-  if ((await field.count()) > 0) {
-    await field.focus();
+  await test.step('the Controls drawer opens and closes by its button and by the key c; focus follows', async () => {
+    const toggle = page.getByTestId('controls-drawer-toggle');
+    const drawer = page.getByTestId('controls-drawer');
+    await expect(toggle).toHaveAttribute('aria-expanded', 'false');
+    await expect(drawer).toBeHidden();
+    await toggle.click();
+    await expect(drawer, s).toBeVisible();
+    await expect(toggle).toHaveAttribute('aria-expanded', 'true');
+    await expect(drawer).toBeFocused();
+    // the drawer holds the scene's controls, usable
+    await expect(drawer.locator('input, select, button').nth(1)).toBeVisible();
+    await page.keyboard.press('c');
+    await expect(drawer).toBeHidden();
+    await expect(toggle).toBeFocused();
+    await page.locator('h1').click();
     await page.keyboard.press('c');
     await expect(drawer).toBeVisible();
-  }
-  // with the drawer open, focus is never hidden under it (WCAG 2.4.11)
-  if (!(await drawer.isVisible())) await toggle.click();
-  await expect(drawer).toBeVisible();
-  await toggle.focus();
-  const hidden: string[] = [];
-  for (let i = 0; i < 40; i++) {
-    await page.keyboard.press('Tab');
-    const why = await focusObscured(page);
-    if (why) hidden.push(why);
-  }
-  expect(hidden).toEqual([]);
-});
+    await page.keyboard.press('Escape');
+    await expect(drawer).toBeHidden();
+    // c typed into a text field is text, not the shortcut
+    await toggle.click();
+    const field = drawer.locator('input[type="text"]').first();
+    if ((await field.count()) > 0) {
+      await field.focus();
+      await page.keyboard.press('c');
+      await expect(drawer).toBeVisible();
+    }
+    // with the drawer open, focus is never hidden under it (WCAG 2.4.11)
+    if (!(await drawer.isVisible())) await toggle.click();
+    await expect(drawer).toBeVisible();
+    await toggle.focus();
+    const hidden: string[] = [];
+    for (let i = 0; i < 40; i++) {
+      await page.keyboard.press('Tab');
+      const why = await focusObscured(page);
+      if (why) hidden.push(why);
+    }
+    expect(hidden).toEqual([]);
+  });
 
-test('the fullscreen button shows the stage fullscreen, filling the screen; exitFullscreen (Esc) leaves', async ({
-  page,
-}) => {
-  await page.setViewportSize({ width: 1280, height: 720 });
-  await firstStagedScene(page);
-  const stage = page.getByTestId('scene-stage');
-  await stage.getByTestId('fullscreen').click();
-  await expect
-    .poll(() => page.evaluate(() => document.fullscreenElement?.getAttribute('data-testid')))
-    .toBe('scene-stage');
-  await expect(stage).toHaveClass(/is-fullscreen/);
-  await expect(stage.getByTestId('fullscreen')).toHaveAttribute('aria-pressed', 'true');
-  // Esc is the browser's own key for leaving; headless Chromium takes it as exitFullscreen
-  await page.evaluate(() => document.exitFullscreen());
-  await expect(stage).not.toHaveClass(/is-fullscreen/);
-  await expect(stage.getByTestId('fullscreen')).toHaveAttribute('aria-pressed', 'false');
+  await test.step('the fullscreen button shows the stage fullscreen; exitFullscreen (Esc) leaves', async () => {
+    const stage = page.getByTestId('scene-stage');
+    await stage.getByTestId('fullscreen').click();
+    await expect
+      .poll(() => page.evaluate(() => document.fullscreenElement?.getAttribute('data-testid')))
+      .toBe('scene-stage');
+    await expect(stage).toHaveClass(/is-fullscreen/);
+    await expect(stage.getByTestId('fullscreen')).toHaveAttribute('aria-pressed', 'true');
+    // Esc is the browser's own key for leaving; headless Chromium takes it as exitFullscreen
+    await page.evaluate(() => document.exitFullscreen());
+    await expect(stage).not.toHaveClass(/is-fullscreen/);
+    await expect(stage.getByTestId('fullscreen')).toHaveAttribute('aria-pressed', 'false');
+  });
 });
 
 /** Opens the first scene of the catalogue that passes a stage (the test is skipped if none does yet). */
@@ -88,69 +88,70 @@ async function firstStagedScene(page: Page): Promise<string> {
   return '';
 }
 
-test('outside classroom mode, an asking page’s link and QR code are the students’ (no ask) unless the asker keeps it', async ({
+test('an asking page: ask=1 shows the part’s prompt, v reveals and drops ask; outside classroom mode its link and QR code are the students’ unless the asker keeps it', async ({
   page,
 }) => {
-  // without ask, there is no choice to make
-  await openScene(page, '#/texture?u=0.7');
-  await expect(page.getByTestId('copy-link')).toBeVisible();
-  await expect(page.getByTestId('keep-classroom')).toHaveCount(0);
+  test.setTimeout(120_000);
+  await test.step('ask=1 shows the part’s prompt; v reveals (not while typing) and drops ask from the URL; ask=garbage is named', async () => {
+    const texture = SCENES.find((s) => s.id === 'texture')!;
+    await openScene(page, '#/texture?u=0.4&v=0.3&ask=1&part=3b');
+    const prompt = page.getByTestId('ask-prompt');
+    await expect(prompt).toBeVisible();
+    await expect(page.getByTestId('ask-prompt-text')).toHaveText(predictPrompt(texture, '3b')!);
+    await expect(page.getByTestId('param-notice')).toHaveCount(0);
+    // v typed into a field is text, not the shortcut
+    await page.locator('input[type="text"]').first().focus();
+    await page.keyboard.press('v');
+    await expect(prompt).toBeVisible();
+    await page.locator('h1').click();
+    await page.keyboard.press('v');
+    await expect(prompt).toHaveCount(0);
+    await expect(page.getByTestId('ask-hidden')).toHaveCount(0);
+    await expect.poll(() => page.evaluate(() => window.location.hash)).not.toMatch(/[?&]ask=/);
+    expect(await page.evaluate(() => window.location.hash)).toMatch(/u=0\.4.*v=0\.3|v=0\.3.*u=0\.4/);
+    // a change to the scene afterwards writes a link without ask either
+    await page.getByTestId('u-slider').focus();
+    await page.keyboard.press('ArrowRight');
+    await expect.poll(() => page.evaluate(() => window.location.hash)).not.toMatch(/u=0\.4(&|$)/);
+    expect(await page.evaluate(() => window.location.hash)).not.toMatch(/[?&]ask=/);
 
-  await openScene(page, '#/texture?u=0.7&ask=1&part=3b');
-  const copied = async () => {
-    await page.getByTestId('copy-link').click();
-    return page.getByTestId('share-text').inputValue();
-  };
-  const students = await copied();
-  expect(students).toContain('u=0.7');
-  expect(students).toContain('part=3b');
-  expect(students).not.toMatch(/[?&](present|ask)=/);
-  await page.getByTestId('show-qr').click();
-  const qr = page.getByTestId('qr-code');
-  await expect(qr).toHaveAttribute('data-text', students);
+    // without part= the first part's prompt is used; a value ask cannot take is named, and nothing is asked
+    await openScene(page, '#/texture?ask=1');
+    await expect(page.getByTestId('ask-prompt-text')).toHaveText(predictPrompt(texture, null)!);
+    await openScene(page, '#/texture?ask=maybe');
+    await expect(page.getByTestId('param-notice')).toContainText('ask');
+    await expect(page.getByTestId('ask-prompt')).toHaveCount(0);
+  });
 
-  const keep = page.getByTestId('keep-classroom');
-  await keep.check();
-  const asking = await copied();
-  expect(asking).toMatch(/[?&]ask=1/);
-  expect(asking).not.toMatch(/[?&]present=/);
-  await expect(qr).toHaveAttribute('data-text', asking);
-  // revealed: nothing is left to ask
-  await page.getByTestId('reveal').click();
-  expect(await copied()).not.toMatch(/[?&](present|ask)=/);
-});
+  await test.step('the link and QR code of an asking page are the students’ (no ask) unless the asker keeps it', async () => {
+    // without ask, there is no choice to make
+    await openScene(page, '#/texture?u=0.7');
+    await expect(page.getByTestId('copy-link')).toBeVisible();
+    await expect(page.getByTestId('keep-classroom')).toHaveCount(0);
 
-test('ask=1 shows the part’s prompt; v reveals (not while typing) and drops ask from the URL; ask=garbage is named', async ({
-  page,
-}) => {
-  const texture = SCENES.find((s) => s.id === 'texture')!;
-  await openScene(page, '#/texture?u=0.4&v=0.3&ask=1&part=3b');
-  const prompt = page.getByTestId('ask-prompt');
-  await expect(prompt).toBeVisible();
-  await expect(page.getByTestId('ask-prompt-text')).toHaveText(predictPrompt(texture, '3b')!);
-  await expect(page.getByTestId('param-notice')).toHaveCount(0);
-  // v typed into a field is text, not the shortcut
-  await page.locator('input[type="text"]').first().focus();
-  await page.keyboard.press('v');
-  await expect(prompt).toBeVisible();
-  await page.locator('h1').click();
-  await page.keyboard.press('v');
-  await expect(prompt).toHaveCount(0);
-  await expect(page.getByTestId('ask-hidden')).toHaveCount(0);
-  await expect.poll(() => page.evaluate(() => window.location.hash)).not.toMatch(/[?&]ask=/);
-  expect(await page.evaluate(() => window.location.hash)).toMatch(/u=0\.4.*v=0\.3|v=0\.3.*u=0\.4/);
-  // a change to the scene afterwards writes a link without ask either
-  await page.getByTestId('u-slider').focus();
-  await page.keyboard.press('ArrowRight');
-  await expect.poll(() => page.evaluate(() => window.location.hash)).not.toMatch(/u=0\.4(&|$)/);
-  expect(await page.evaluate(() => window.location.hash)).not.toMatch(/[?&]ask=/);
+    await openScene(page, '#/texture?u=0.7&ask=1&part=3b');
+    const copied = async () => {
+      await page.getByTestId('copy-link').click();
+      return page.getByTestId('share-text').inputValue();
+    };
+    const students = await copied();
+    expect(students).toContain('u=0.7');
+    expect(students).toContain('part=3b');
+    expect(students).not.toMatch(/[?&](present|ask)=/);
+    await page.getByTestId('show-qr').click();
+    const qr = page.getByTestId('qr-code');
+    await expect(qr).toHaveAttribute('data-text', students);
 
-  // without part= the first part's prompt is used; a value ask cannot take is named, and nothing is asked
-  await openScene(page, '#/texture?ask=1');
-  await expect(page.getByTestId('ask-prompt-text')).toHaveText(predictPrompt(texture, null)!);
-  await openScene(page, '#/texture?ask=maybe');
-  await expect(page.getByTestId('param-notice')).toContainText('ask');
-  await expect(page.getByTestId('ask-prompt')).toHaveCount(0);
+    const keep = page.getByTestId('keep-classroom');
+    await keep.check();
+    const asking = await copied();
+    expect(asking).toMatch(/[?&]ask=1/);
+    expect(asking).not.toMatch(/[?&]present=/);
+    await expect(qr).toHaveAttribute('data-text', asking);
+    // revealed: nothing is left to ask
+    await page.getByTestId('reveal').click();
+    expect(await copied()).not.toMatch(/[?&](present|ask)=/);
+  });
 });
 
 /** The keys the open `?` list names (each <dt>), by the heading they stand under ('' for page-wide). */
@@ -167,7 +168,7 @@ async function listedKeys(page: Page): Promise<Record<string, string[]>> {
   });
 }
 
-test('the ? list names every key that works on the page, and only those: c in classroom mode, v while asking', async ({
+test('the ? list names every key that works on the page, and only those: c in classroom mode, v while asking; Space on a focused 3D-view button presses it', async ({
   page,
 }) => {
   test.setTimeout(120_000);
@@ -210,6 +211,18 @@ test('the ? list names every key that works on the page, and only those: c in cl
   );
   await page.keyboard.press('Escape');
 
+  // in classroom mode Space plays the animation, but on a focused button of the 3D view it presses
+  // the button (the view orbits) and the animation stays as it was
+  const vp = page.locator('.viewport').first();
+  const timeline = page.locator('.timeline').first();
+  const playing = await timeline.getAttribute('data-playing');
+  const triadX = () => vp.locator('.viewport-triad').getAttribute('data-x-axis');
+  const before = await triadX();
+  await vp.getByRole('button', { name: 'Orbit right', exact: true }).focus();
+  await page.keyboard.press('Space');
+  await expect.poll(triadX).not.toBe(before);
+  await expect(timeline).toHaveAttribute('data-playing', playing!);
+
   // outside classroom mode: ? still lists what works (v while asking), never the classroom keys
   await openScene(page, '#/monte-carlo?ask=1');
   await page.locator('h1').click();
@@ -222,36 +235,4 @@ test('the ? list names every key that works on the page, and only those: c in cl
   await expect(page.getByRole('dialog', { name: 'Keyboard shortcuts' }).getByRole('button')).toBeFocused();
   await page.keyboard.press('Shift+Tab');
   await expect(page.getByRole('dialog', { name: 'Keyboard shortcuts' })).toHaveCount(0);
-});
-
-test('a guide preset opened with ask=1 puts the preset’s own question', async ({ page }) => {
-  await openScene(page, '#/guide');
-  const preset = page
-    .getByTestId('guide-preset')
-    .filter({ has: page.locator('a[href*="ask=1"]') })
-    .first();
-  const ask = (await preset.locator('.guide-ask').innerText()).replace(/^Ask:\s*/, '');
-  await preset.locator('h3 a').click();
-  await expect(page.getByTestId('ask-prompt-text')).toHaveText(ask);
-});
-
-test('present=1: every Plotly plot’s tick labels are at least 18 px', async ({ page }) => {
-  test.setTimeout(180_000);
-  await page.setViewportSize({ width: 1280, height: 720 });
-  // every Plotly plot of the page: those of Explore further are folded, the link opens them
-  await openScene(page, '#/monte-carlo?present=1&open=integrand,convergence,rmse,unbiased');
-  const height = await page.evaluate(() => document.documentElement.scrollHeight);
-  for (let y = 0; y < height; y += 600) {
-    await page.evaluate((y) => window.scrollTo(0, y), y);
-    await settle(page);
-  }
-  await expect(page.locator('.js-plotly-plot .xtick text').first()).toBeAttached({ timeout: 60_000 });
-  const sizes = await page.locator('.js-plotly-plot :is(.xtick, .ytick) text').evaluateAll((ts) =>
-    ts.map((t) => ({
-      px: parseFloat(getComputedStyle(t).fontSize),
-      what: `${t.closest('figure')?.getAttribute('aria-label')?.slice(0, 40)}: ${t.textContent}`,
-    })),
-  );
-  expect(sizes.length).toBeGreaterThan(0);
-  expect(sizes.filter((s) => s.px < 17.5).map((s) => `${s.what} at ${s.px} px`)).toEqual([]);
 });
