@@ -4,7 +4,6 @@
  * named mistakes per question, each student's best score) equal what the files contain. One file
  * claims "correct" for answers that are mistakes: the recomputed verdicts count.
  */
-import AxeBuilder from '@axe-core/playwright';
 import { test, expect, giveAnswer } from './fixtures';
 import { variantOf } from '../../src/lms/grade';
 import { expectedText } from '../../src/practice/check';
@@ -181,27 +180,4 @@ test('a practice page downloads the learner’s checks as a results file', async
     verdicts: { [a.name]: 'correct' },
   });
   expect(typeof file.attempts.at(-1).time).toBe('string');
-});
-
-test('a file that is not a results file is named and left out; the page stays accessible', async ({
-  page,
-}) => {
-  await page.goto('./#/results');
-  await expect(page.locator('main#main')).toHaveAttribute('data-ready', '1', { timeout: 30_000 });
-  const good = generate(2).files;
-  await page
-    .getByTestId('results-files')
-    .setInputFiles([
-      ...good,
-      { name: 'notes.json', mimeType: 'application/json', buffer: Buffer.from('{"hello": 1}') },
-      { name: 'photo.json', mimeType: 'application/json', buffer: Buffer.from([0xff, 0xd8, 0xff]) },
-    ]);
-  await expect(page.getByTestId('results-report')).toHaveAttribute('data-students', '2');
-  await expect(page.getByTestId('results-problems')).toContainText(
-    'notes.json: not a Render Math Lab results file',
-  );
-  await expect(page.getByTestId('results-problems')).toContainText('photo.json: not JSON');
-  const axe = await new AxeBuilder({ page }).analyze();
-  const serious = axe.violations.filter((v) => v.impact === 'serious' || v.impact === 'critical');
-  expect(serious.map((v) => `${v.id}: ${v.nodes.length}`)).toEqual([]);
 });
