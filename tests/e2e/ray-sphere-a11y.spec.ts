@@ -115,7 +115,9 @@ test('keyboard and accessibility tree: presets by keyboard alone, the handles as
 
   await test.step('the handles are sliders that say what they are, where they are and what the ray does', async () => {
     await openScene(page, URL_OF([-3, 0.3, 0.2], [1, 0, 0]));
-    await expect.poll(() => valueText(page, 'handle-o')).toMatch(/^o = \(−3, 0\.3, 0\.2\); the ray hits at t₀ = /);
+    await expect
+      .poll(() => valueText(page, 'handle-o'))
+      .toMatch(/^o = \(−3, 0\.3, 0\.2\); the ray hits at t₀ = /);
     const o = await ax(page, '[data-testid="handle-o"]');
     expect(o).toMatchObject({ role: 'slider', name: 'ray origin o' });
     const rh = await ax(page, '[data-testid="handle-r"]');

@@ -66,13 +66,9 @@ test('wiring: readouts and worked steps for links, the key’s notes, back to th
     await expect(page.getByTestId('worked-query')).toContainText('c_u');
     await expect(page.locator('.readout-note').first()).toContainText('agrees with the key');
     // the exam's grid as printed: top row v = 1 is 1 … 5
-    expect(await page.getByTestId('exam-grid').locator('tr').first().locator('td').allTextContents()).toEqual([
-      '1',
-      '2',
-      '3',
-      '4',
-      '5',
-    ]);
+    expect(await page.getByTestId('exam-grid').locator('tr').first().locator('td').allTextContents()).toEqual(
+      ['1', '2', '3', '4', '5'],
+    );
     // (b): the upper row (v = 0.25) and the lower row (v = 0) at u = 0.4, then along v, each step
     // divided by the cell size Δu = 0.25
     const d = page.getByTestId('derivation-3b');
@@ -302,7 +298,9 @@ test('a drag of the query redraws only the marker layer; its cross then sits on 
       ];
       // the page lays itself out again for the new width: poll until the cross has followed
       await expect
-        .poll(async () => Math.max(...(await reconBoxes(page)).figs.flatMap((f) => centreOff(f).map(Math.abs))))
+        .poll(async () =>
+          Math.max(...(await reconBoxes(page)).figs.flatMap((f) => centreOff(f).map(Math.abs))),
+        )
         .toBeLessThanOrEqual(2);
       const { card, figs } = await reconBoxes(page);
       expect(figs).toHaveLength(2);

@@ -26,7 +26,11 @@ function render<S extends ParamSchema>(
   const params = parseParams(scene.schema, query).values;
   const Scene = scene.default;
   return renderToStaticMarkup(
-    <Scene params={params} setParams={() => {}} mode={{ embed: false, present: false, ask: false }} />,
+    <Scene
+      params={params}
+      setParams={() => {}}
+      mode={{ embed: false, present: false, ask: false, theme: 'light' }}
+    />,
   );
 }
 
@@ -134,7 +138,8 @@ describe('#/area-light, Q6', () => {
     // (c): p_A = 1/|A|, each given sample's term, and their mean as the N = 4 estimate
     expect(textOf(html, 'step-6c-pdf')).toContain(`|A| = ${sig(model.light.area, 4)}`);
     const g = givenSamples(model, values.seed, 4);
-    for (let i = 0; i < 4; i++) expect(valueOf(html, `given-term-${i + 1}`)).toBeCloseTo(g.samples[i].term, 12);
+    for (let i = 0; i < 4; i++)
+      expect(valueOf(html, `given-term-${i + 1}`)).toBeCloseTo(g.samples[i].term, 12);
     expect(valueOf(html, 'given-estimate')).toBeCloseTo(g.estimate, 6);
     // beyond the exam the strategies' table is a closed fold with nothing in it
     expect(element(html, 'fold-strategies').tag).not.toMatch(/\bopen\b/);
