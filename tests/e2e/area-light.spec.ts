@@ -92,7 +92,7 @@ test('wiring: links, the strategy, the timeline’s step and the strategies’ f
     await expect(page).toHaveURL(/[?&]t=101(&|$)/);
   });
 
-  await test.step('beyond the exam, folded: the strategies’ table mounts on open and the link reopens it', async () => {
+  await test.step('beyond the exam, folded: the strategies’ table mounts on open, computes, and the link keeps it', async () => {
     const q = 'psize=0.3&ptilt=40&seed=9&occluder=1';
     await openScene(page, `#/area-light?${q}`);
     await expectReadouts(page, q);
@@ -104,8 +104,6 @@ test('wiring: links, the strategy, the timeline’s step and the strategies’ f
     await expect(page).toHaveURL(/[?&]open=strategies(&|$)/);
     const area = estimateOne(model, 'area', values.n, values.seed);
     await expect(page.getByTestId('estimate-area')).toHaveAttribute('data-value', String(area.estimate));
-    await page.reload();
-    await expect(page.getByTestId('fold-strategies')).toHaveAttribute('open');
     await expect(page.getByTestId('estimate-cosine')).toHaveAttribute(
       'data-value',
       String(estimateOne(model, 'cosine', values.n, values.seed).estimate),
@@ -120,6 +118,8 @@ test('the floor images: they finish, follow the timeline, and the FLIP shown is 
   // no animation: the timeline stands at its end, so the floor images show all 64 samples per pixel
   await page.emulateMedia({ reducedMotion: 'reduce' });
   await openScene(page, '#/area-light?n=256&seed=4&strategy=area&open=floor');
+  // a link opens the folds it names (here the floor images, beyond the exam)
+  await expect(page.getByTestId('fold-floor')).toHaveAttribute('open', '');
   await test.step('at the end the running estimate is the n-sample estimate; the images finish', async () => {
     await expect(page.getByTestId('anim-k')).toHaveAttribute('data-value', '256');
     expect(await readout(page, 'anim-estimate')).toBe(await readout(page, 'estimate'));

@@ -99,7 +99,7 @@ test('keyboard and accessibility tree: the main figure’s description, the exam
 
     // on pause: the position on the path and the numbers there
     await page.getByTestId('timeline-play').click();
-    await expect.poll(() => timelineT(page), { timeout: 20_000 }).toBeGreaterThan(0.15);
+    await expect.poll(() => timelineT(page), { timeout: 20_000 }).toBeGreaterThan(0.05);
     await page.getByTestId('timeline-play').click();
     await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '0');
     const t = await timelineT(page);
