@@ -1,5 +1,5 @@
 import { Deferred } from './Deferred';
-import { useEffect, useId, useState, type ReactNode } from 'react';
+import { useEffect, useId, useRef, useState, type ReactNode } from 'react';
 import { formatNumber } from './Readout';
 import { usePresent } from './pageKeys';
 import { Stage } from './stage';
@@ -53,11 +53,16 @@ export function NumberField({
   const inputId = id ?? autoId;
   const [text, setText] = useState(String(value));
   const [error, setError] = useState<string | null>(null);
+  // whether the text was typed since it was last committed: leaving a field commits only then, so
+  // a field that loses the focus after another link set its value (before the text caught up with
+  // it) does not write its old text back over the link's value
+  const edited = useRef(false);
   useEffect(() => {
     setText((t) => (Number(t) === value ? t : String(value)));
     setError(null);
   }, [value]);
   const commit = (raw: string) => {
+    edited.current = false;
     const s = raw.trim();
     const x = s === '' ? NaN : Number(s);
     if (!Number.isFinite(x)) {
@@ -87,6 +92,7 @@ export function NumberField({
         aria-invalid={error ? true : undefined}
         aria-describedby={error ? `${inputId}-err` : undefined}
         onChange={(e) => {
+          edited.current = true;
           setText(e.target.value);
           const x = Number(e.target.value);
           if (e.target.value.trim() !== '' && Number.isFinite(x) && x === clamp(x, min, max)) {
@@ -94,7 +100,9 @@ export function NumberField({
             if (x !== value) onChange(x);
           }
         }}
-        onBlur={(e) => commit(e.target.value)}
+        onBlur={(e) => {
+          if (edited.current) commit(e.target.value);
+        }}
         onKeyDown={(e) => {
           if (e.key === 'Enter') commit((e.target as HTMLInputElement).value);
           else if ((e.key === 'ArrowUp' || e.key === 'ArrowDown') && step) {

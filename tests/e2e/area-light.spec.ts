@@ -1,17 +1,27 @@
 /**
  * Browser tests of #/area-light: the readouts are the scene's model (computed here in Node from the
- * same query), bad input gives a message and a fallback, the exam's parts come first, and the
- * animation's readouts follow the timeline; what is beyond the exam is folded until opened. The
- * estimators' and the solid angle's numbers are unit
- * tests (tests/scenes/area-light/cases.test.ts, tests/core/lights/).
+ * same link), a control and the timeline's step change them and write the link, the strategies'
+ * fold mounts on open and the link reopens it; the floor images finish, follow the timeline, and
+ * the FLIP the page shows is the FLIP of the two PNGs it downloads; the work done in workers (a
+ * large n, the convergence and timing panels) arrives while the page answers.
+ * Elsewhere: the estimators' and the solid angle's numbers are unit tests
+ * (tests/scenes/area-light/cases.test.ts, runningEstimate.test.ts, tests/core/lights/); the exam's
+ * worked steps and given samples are rendered in Node (tests/render/examParts.test.tsx); the page
+ * as a whole, its parts in order and play, pause and the link's t are in catalogue.spec.ts; the
+ * accessibility tree and the keyboard in area-light-a11y.spec.ts.
  */
-import { test, expect, openScene, readout, readoutNumber } from './fixtures';
+import type { Download, Page } from '@playwright/test';
+import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
 import { defaultValues, parseParams } from '../../src/kit/params';
 import { schema } from '../../src/scenes/area-light/params';
 import { animationFrame, animationLength, sampleRun } from '../../src/scenes/area-light/animation';
-import { buildModel, estimateOne, givenSamples } from '../../src/scenes/area-light/model';
-import { patchModel } from '../../src/scenes/area-light/patch';
+import { buildModel, estimateOne, TIMING_COUNTS } from '../../src/scenes/area-light/model';
+import { STRATEGIES } from '../../src/scenes/area-light/strategies';
+import { SYNC_MAX } from '../../src/scenes/area-light/view/StrategyTable';
 import type { LightStrategy } from '../../src/core/lights';
+import { decodePng, rgbFromRgba8 } from '../../src/core/image/png';
+import { flipErrorMap } from '../../src/core/image/flip';
+import { poolError } from '../../src/core/image/pooling';
 
 /** The model computed here, in Node, from a query string (the same parser as the app). */
 function modelFor(query: string) {
@@ -19,164 +29,166 @@ function modelFor(query: string) {
   return { values, model: buildModel(values) };
 }
 
-test('wiring: the readouts are the model’s for the exam’s light, an off-axis light and an occluded one', async ({
-  page,
-}) => {
-  // the placements' numbers themselves (Ω against the corner formula, every strategy within 3σ)
-  // are unit tests: tests/scenes/area-light/cases.test.ts
-  for (const q of [
-    '',
-    'p=0.2,-0.4,0&lc=0.9,0.3,1.5&ls=1.2,0.8&tilt=0&strategy=solid-angle&n=4096&seed=7',
-    'occluder=1&strategy=cosine&n=4096&seed=3',
-  ]) {
-    await openScene(page, `#/area-light${q ? `?${q}` : ''}`);
-    const { values, model } = modelFor(q);
-    expect(await readoutNumber(page, 'reference'), q).toBe(model.reference);
-    expect(await readoutNumber(page, 'solid-angle'), q).toBe(model.solidAngle);
-    const want = estimateOne(model, values.strategy as LightStrategy, values.n, values.seed);
-    expect(await readoutNumber(page, 'estimate'), q).toBe(want.estimate);
-    expect(await readoutNumber(page, 'stderr'), q).toBe(want.stderr);
-    if (model.referenceOccluded === null) expect(await readout(page, 'reference-occluded'), q).toBe('none');
-    else expect(await readoutNumber(page, 'reference-occluded'), q).toBe(model.referenceOccluded);
-  }
-});
-
-test('changing the strategy updates the URL and the estimate; the floor images finish', async ({ page }) => {
-  // the strategy (fold "sampling") and the floor images (fold "floor") are one click away: opened by the link
-  await openScene(page, '#/area-light?n=2048&open=sampling,floor');
-  const before = await readout(page, 'estimate');
-  await page.getByTestId('strategy').selectOption('cosine');
-  await expect(page).toHaveURL(/strategy=cosine/);
-  await expect(page.getByTestId('estimate')).not.toHaveAttribute('data-value', before);
-  await page.locator('.al-images').scrollIntoViewIfNeeded();
-  await expect(page.getByText(/64 samples per pixel \(done\)/)).toBeVisible({ timeout: 30000 });
-  for (const s of ['area', 'solid-angle', 'cosine']) await readoutNumber(page, `image-rmse-${s}`);
-});
-
-test('large n is estimated in a worker without blocking; the result agrees within 3σ', async ({ page }) => {
-  await openScene(page, '#/area-light?n=300000&strategy=cosine&seed=5&open=sampling');
-  const { waitForReadout } = await import('./fixtures');
-  await waitForReadout(page, 'estimate', (v) => v !== 'none' && Number.isFinite(Number(v)), 30000);
-  // the page stays responsive meanwhile: a control reacts at once
-  await expect(page.getByTestId('strategy')).toBeEnabled();
-  const ref = await readoutNumber(page, 'reference');
-  const est = await readoutNumber(page, 'estimate');
-  const se = await readoutNumber(page, 'stderr');
-  expect(se).toBeGreaterThan(0);
-  expect(Math.abs(est - ref)).toBeLessThanOrEqual(3 * se);
-});
-
-// ------------------------------------------------------------------------------------------------
-// Exam first and the animation.
-
-test('exam first: 6a, 6b, 6c in order before "Explore further", each with its derivation and live numbers', async ({
-  page,
-}) => {
-  const q = 'psize=0.3&ptilt=40&seed=9&occluder=1';
-  await openScene(page, `#/area-light?${q}`);
-  const ids = ['part-6a', 'part-6b', 'part-6c', 'explore-further'];
-  const tops: number[] = [];
-  for (const id of ids) {
-    const el = id === 'explore-further' ? page.getByTestId(id) : page.locator(`#${id}`);
-    await expect(el).toBeVisible();
-    tops.push((await el.boundingBox())!.y);
-  }
-  expect([...tops].sort((a, b) => a - b)).toEqual(tops);
-  const { values, model } = modelFor(q);
-  const patch = patchModel(model, values.pu, values.pv, values.psize, values.ptilt);
-  // 6a: the similar-triangles steps, with dl, dω_l and the result for this patch
-  const d6a = page.getByTestId('derivation-6a');
-  await expect(d6a).toContainText('similar triangles');
-  const dl = Math.sqrt(patch.area * patch.cosThetaL);
-  await expect(page.getByTestId('step-6a-perp')).toContainText(`dl = ${Number(dl.toPrecision(4))}`);
-  // dωₗ is written with a real subscript (dω<sub>l</sub>): its text is "dωl"
-  await expect(page.getByTestId('step-6a-similar')).toContainText(
-    `dωl = ${Number((dl / patch.r).toPrecision(4))}`,
-  );
-  await expect(page.getByTestId('step-6a-result')).toContainText(String(Number(patch.approx.toPrecision(6))));
-  expect(await readoutNumber(page, 'patch-approx')).toBeCloseTo(patch.approx, 7);
-  // 6b: the four steps (Jacobian J_T, then V, then cos θ_l / r²) with the Jacobian's value
-  await expect(page.getByTestId('derivation-6b').locator('.katex')).toHaveCount(4);
-  await expect(page.getByTestId('step-6b-jacobian')).toContainText(
-    String(Number((patch.cosThetaL / patch.r ** 2).toPrecision(4))),
-  );
-  // 6c: p_A = 1/|A| and the four given samples' terms, their mean as the N = 4 estimate
-  await expect(page.getByTestId('step-6c-pdf')).toContainText(
-    `|A| = ${Number(model.light.area.toPrecision(4))}`,
-  );
-  const g = givenSamples(model, values.seed, 4);
-  for (let i = 0; i < 4; i++) {
-    const v = Number(await page.getByTestId(`given-term-${i + 1}`).getAttribute('data-value'));
-    expect(v).toBeCloseTo(g.samples[i].term, 12);
-  }
-  expect(await readoutNumber(page, 'given-estimate')).toBeCloseTo(g.estimate, 6);
-
-  // beyond the exam, folded: the strategies' table is closed with nothing in it until clicked; it
-  // then computes the three estimates, and the link remembers it open
-  const fold = page.getByTestId('fold-strategies');
-  await expect(fold).not.toHaveAttribute('open');
-  await expect(fold.locator('.fold-body')).toHaveCount(0);
-  await fold.locator('summary').click();
-  await expect(page).toHaveURL(/[?&]open=strategies(&|$)/);
-  const area = estimateOne(model, 'area', values.n, values.seed);
-  await expect(page.getByTestId('estimate-area')).toHaveAttribute('data-value', String(area.estimate));
-  await page.reload();
-  await expect(page.getByTestId('fold-strategies')).toHaveAttribute('open');
-  await expect(page.getByTestId('estimate-cosine')).toHaveAttribute(
-    'data-value',
-    String(estimateOne(model, 'cosine', values.n, values.seed).estimate),
-  );
-});
-
-/** Readouts of the animation at position t, computed here. */
-function animAt(query: string, t: number) {
+/** The running estimate of the animation at sample k, computed here. */
+function animAt(query: string, k: number) {
   const { values, model } = modelFor(query);
   const run = sampleRun(model, values.strategy as LightStrategy, animationLength(values.n), values.seed);
-  return animationFrame(run, t);
+  return animationFrame(run, k);
 }
 
-test('animation: play, pause, and the readouts equal the model at the paused position; a link restores them; step adds one', async ({
+/**
+ * The readouts equal the model's for a link. A link opened on the page that is already open
+ * renders as a transition, a moment later: the readouts are read once the reference shows it.
+ */
+async function expectReadouts(page: Page, q: string) {
+  const { values, model } = modelFor(q);
+  await waitForReadout(page, 'reference', (v) => Number(v) === model.reference);
+  expect(await readoutNumber(page, 'solid-angle'), q).toBe(model.solidAngle);
+  const want = estimateOne(model, values.strategy as LightStrategy, values.n, values.seed);
+  await waitForReadout(page, 'estimate', (v) => Number(v) === want.estimate);
+  expect(await readoutNumber(page, 'stderr'), q).toBe(want.stderr);
+  if (model.referenceOccluded === null) expect(await readout(page, 'reference-occluded'), q).toBe('none');
+  else expect(await readoutNumber(page, 'reference-occluded'), q).toBe(model.referenceOccluded);
+}
+
+async function bytesOf(d: Download): Promise<Uint8Array> {
+  const chunks: Buffer[] = [];
+  for await (const c of await d.createReadStream()) chunks.push(c as Buffer);
+  return new Uint8Array(Buffer.concat(chunks));
+}
+
+test('wiring: links, the strategy, the timeline’s step and the strategies’ fold give the model’s readouts', async ({
   page,
 }) => {
-  const q = 'strategy=solid-angle&n=512&seed=21&t=0';
-  await openScene(page, `#/area-light?${q}`);
-  await expect(page.getByTestId('anim-k')).toHaveAttribute('data-value', '0');
-  const tl = page.getByTestId('timeline');
-  await tl.getByRole('button', { name: /play/i }).click();
-  await expect
-    .poll(async () => Number(await page.getByTestId('anim-k').getAttribute('data-value')), { timeout: 20000 })
-    .toBeGreaterThan(20);
-  await tl.getByRole('button', { name: /pause/i }).click();
-  await expect(tl).toHaveAttribute('data-playing', '0');
-  await expect(page).toHaveURL(/[?&]t=\d+/);
-  const t = Number(/[?&]t=(\d+)/.exec(page.url())![1]);
-  const k = Number(await page.getByTestId('anim-k').getAttribute('data-value'));
-  expect(k).toBe(t);
-  const want = animAt(q.replace('t=0', `t=${t}`), t);
-  expect(await readoutNumber(page, 'anim-estimate')).toBeCloseTo(want.estimate, 6);
-  expect(await readoutNumber(page, 'anim-stderr')).toBeCloseTo(want.stderr, 2);
-  // the link with t and the seed reopens exactly there
-  const url = page.url();
-  const est = await readout(page, 'anim-estimate');
-  await page.goto('about:blank');
-  await openScene(page, url.slice(url.indexOf('#')));
-  await expect(page.getByTestId('anim-k')).toHaveAttribute('data-value', String(t));
-  expect(await readout(page, 'anim-estimate')).toBe(est);
-  // step: one more sample
-  await tl.getByRole('button', { name: /step/i }).click();
-  await expect(page.getByTestId('anim-k')).toHaveAttribute('data-value', String(t + 1));
-  expect(await readoutNumber(page, 'anim-estimate')).toBeCloseTo(animAt(q, t + 1).estimate, 6);
+  test.setTimeout(120_000);
+  await test.step('links: the exam’s light, an off-axis light and an occluded one', async () => {
+    for (const q of [
+      '',
+      'p=0.2,-0.4,0&lc=0.9,0.3,1.5&ls=1.2,0.8&tilt=0&strategy=solid-angle&n=4096&seed=7',
+      'occluder=1&strategy=cosine&n=4096&seed=3',
+    ]) {
+      await openScene(page, `#/area-light${q ? `?${q}` : ''}`);
+      await expectReadouts(page, q);
+    }
+  });
+
+  await test.step('choosing a strategy writes the link and the estimate is that strategy’s', async () => {
+    await openScene(page, '#/area-light?n=2048&open=sampling');
+    await expectReadouts(page, 'n=2048');
+    await page.getByTestId('strategy').selectOption('cosine');
+    await expect(page).toHaveURL(/strategy=cosine/);
+    await expectReadouts(page, 'n=2048&strategy=cosine');
+  });
+
+  await test.step('the timeline: at sample k the running estimate is the model’s; a step adds one sample', async () => {
+    const q = 'strategy=solid-angle&n=512&seed=21&t=100';
+    await openScene(page, `#/area-light?${q}`);
+    await expect(page.getByTestId('anim-k')).toHaveAttribute('data-value', '100');
+    expect(await readoutNumber(page, 'anim-estimate')).toBeCloseTo(animAt(q, 100).estimate, 6);
+    expect(await readoutNumber(page, 'anim-stderr')).toBeCloseTo(animAt(q, 100).stderr, 2);
+    await page.getByTestId('timeline').getByRole('button', { name: /step/i }).click();
+    await expect(page.getByTestId('anim-k')).toHaveAttribute('data-value', '101');
+    expect(await readoutNumber(page, 'anim-estimate')).toBeCloseTo(animAt(q, 101).estimate, 6);
+    await expect(page).toHaveURL(/[?&]t=101(&|$)/);
+  });
+
+  await test.step('beyond the exam, folded: the strategies’ table mounts on open, computes, and the link keeps it', async () => {
+    const q = 'psize=0.3&ptilt=40&seed=9&occluder=1';
+    await openScene(page, `#/area-light?${q}`);
+    await expectReadouts(page, q);
+    const { values, model } = modelFor(q);
+    const fold = page.getByTestId('fold-strategies');
+    await expect(fold).not.toHaveAttribute('open');
+    await expect(fold.locator('.fold-body')).toHaveCount(0);
+    await fold.locator('summary').click();
+    await expect(page).toHaveURL(/[?&]open=strategies(&|$)/);
+    const area = estimateOne(model, 'area', values.n, values.seed);
+    await expect(page.getByTestId('estimate-area')).toHaveAttribute('data-value', String(area.estimate));
+    await expect(page.getByTestId('estimate-cosine')).toHaveAttribute(
+      'data-value',
+      String(estimateOne(model, 'cosine', values.n, values.seed).estimate),
+    );
+  });
 });
 
-test('animation: at the end the running estimate is the n-sample estimate; the floor images follow the timeline', async ({
+test('the floor images: they finish, follow the timeline, and the FLIP shown is that of the downloaded PNGs', async ({
   page,
 }) => {
+  test.setTimeout(120_000);
+  // no animation: the timeline stands at its end, so the floor images show all 64 samples per pixel
+  await page.emulateMedia({ reducedMotion: 'reduce' });
   await openScene(page, '#/area-light?n=256&seed=4&strategy=area&open=floor');
-  await expect(page.getByTestId('anim-k')).toHaveAttribute('data-value', '256');
-  expect(await readout(page, 'anim-estimate')).toBe(await readout(page, 'estimate'));
-  await page.locator('.al-images').scrollIntoViewIfNeeded();
-  await expect(page.getByText(/64 samples per pixel \(done\)/)).toBeVisible({ timeout: 30000 });
-  await openScene(page, '#/area-light?n=256&seed=4&strategy=area&t=64&open=floor');
-  await page.locator('.al-images').scrollIntoViewIfNeeded();
-  await expect(page.getByTestId('floor-spp')).toHaveAttribute('data-value', '16', { timeout: 30000 });
+  // a link opens the folds it names (here the floor images, beyond the exam)
+  await expect(page.getByTestId('fold-floor')).toHaveAttribute('open', '');
+  await test.step('at the end the running estimate is the n-sample estimate; the images finish', async () => {
+    await expect(page.getByTestId('anim-k')).toHaveAttribute('data-value', '256');
+    expect(await readout(page, 'anim-estimate')).toBe(await readout(page, 'estimate'));
+    await page.locator('.al-images').scrollIntoViewIfNeeded();
+    await expect(page.getByTestId('floor-spp')).toHaveAttribute('data-value', '64', { timeout: 30_000 });
+    await expect(page.getByText(/64 samples per pixel \(done\)/)).toBeVisible();
+    for (const s of ['area', 'solid-angle', 'cosine']) await readoutNumber(page, `image-rmse-${s}`);
+  });
+
+  await test.step('flip-mean equals the FLIP of the downloaded render and reference', async () => {
+    await page.getByTestId('measure-details').locator('summary').click();
+    await page.getByTestId('measure-image').selectOption('cosine');
+    const shown = Number(await waitForReadout(page, 'flip-mean', (v) => v !== 'none' && v !== ''));
+    await expect(page.getByTestId('measure-error-map')).toHaveAccessibleName(/FLIP error map, magma: mean/);
+    const render = page.waitForEvent('download');
+    await page.getByTestId('download-render').click();
+    const r = await render;
+    expect(r.suggestedFilename()).toMatch(/^area-light-floor-64spp-cosine-render\.png$/);
+    const reference = page.waitForEvent('download');
+    await page.getByTestId('download-reference').click();
+    const ref = decodePng(await bytesOf(await reference));
+    const img = decodePng(await bytesOf(r));
+    expect([ref.width, ref.height]).toEqual([72, 72]);
+    const mean = poolError(flipErrorMap(rgbFromRgba8(ref), rgbFromRgba8(img))).mean;
+    expect(mean).toBeGreaterThan(0);
+    expect(Math.abs(mean - shown)).toBeLessThanOrEqual(0.002);
+  });
+
+  await test.step('at sample 64 of 256 the images hold a quarter of their samples per pixel', async () => {
+    await openScene(page, '#/area-light?n=256&seed=4&strategy=area&t=64&open=floor');
+    await page.locator('.al-images').scrollIntoViewIfNeeded();
+    await expect(page.getByTestId('floor-spp')).toHaveAttribute('data-value', '16', { timeout: 30_000 });
+  });
+});
+
+test('work in workers: a large n without blocking (within 3σ), and the convergence and timing panels fill', async ({
+  page,
+}) => {
+  test.setTimeout(180_000);
+  await test.step('large n is estimated in a worker; the page answers meanwhile; the result is within 3σ', async () => {
+    // above SYNC_MAX samples the estimates are computed in a worker, not on the main thread
+    await openScene(page, `#/area-light?n=${2 * SYNC_MAX}&strategy=cosine&seed=5&open=sampling`);
+    await waitForReadout(page, 'estimate', (v) => v !== 'none' && Number.isFinite(Number(v)), 30_000);
+    // the page stays responsive meanwhile: a control reacts at once
+    await expect(page.getByTestId('strategy')).toBeEnabled();
+    const ref = await readoutNumber(page, 'reference');
+    const est = await readoutNumber(page, 'estimate');
+    const se = await readoutNumber(page, 'stderr');
+    expect(se).toBeGreaterThan(0);
+    expect(Math.abs(est - ref)).toBeLessThanOrEqual(3 * se);
+  });
+
+  // The "Convergence" and "Run time against error" panels (folds under Explore further) start their
+  // worker runs when, once open, they come near the screen: their tables fill with one row per
+  // checkpoint and one per (strategy, N).
+  await test.step('opened and scrolled into view, the convergence and timing panels get their data', async () => {
+    await openScene(page, '#/area-light?open=convergence,timing');
+    const convergence = page.getByTestId('al-convergence-table');
+    await convergence.scrollIntoViewIfNeeded();
+    await convergence.locator('summary').click();
+    // checkpoints N = 2 … 32768: one row each, with |error| and σ for the three strategies
+    const convRows = convergence.locator('tbody tr');
+    await expect(convRows.first()).toBeVisible({ timeout: 45_000 });
+    await expect(convRows.first().locator('td')).toHaveCount(1 + 2 * STRATEGIES.length);
+    const timing = page.getByTestId('al-timing-table');
+    await timing.scrollIntoViewIfNeeded();
+    await timing.locator('summary').click();
+    await expect(timing.locator('tbody tr')).toHaveCount(STRATEGIES.length * TIMING_COUNTS.length, {
+      timeout: 90_000,
+    });
+  });
 });

@@ -1,9 +1,11 @@
 /**
- * #/texture as a screen reader receives it: the figures' names and descriptions read from
- * Chromium's accessibility tree (CDP), the audio traces of the value along the path, the cell
- * editor without pointing, and the exam's interaction by keyboard alone. Expected figures come
- * from the exam grid's definition (L(u, v) = 21 + 4u − 20v) or the scene's own pure model at the
- * position the page reports.
+ * #/texture as a screen reader and a keyboard receive it: the main figure's name and description
+ * read from Chromium's accessibility tree (CDP), following a setting and the paused position (and
+ * said by the live region); the exam's (a), (b) and (c) by keyboard alone; a cell's value edited
+ * without pointing. Expected figures come from the exam grid's definition
+ * (L(u, v) = 21 + 4u − 20v) or the scene's own pure model at the position the page reports. The
+ * descriptions' wording is a unit test (tests/scenes/texture/describe.test.ts); the whole page's
+ * tab stops, axe and focus are in catalogue.spec.ts.
  */
 import type { CDPSession, Page } from '@playwright/test';
 import { test, expect, openScene, waitForReadout } from './fixtures';
@@ -53,22 +55,32 @@ async function timelineT(page: Page): Promise<number> {
   return Number(await page.getByTestId('timeline').getAttribute('data-t'));
 }
 
-/** Presses Tab until the element with `testId` has the focus (at most `max` presses). */
+/**
+ * Presses Tab until the element with `testId` has the focus (Shift+Tab when it comes before the
+ * focused element in the page), at most `max` presses.
+ */
 async function tabTo(page: Page, testId: string, max = 120): Promise<void> {
+  const before = await page.evaluate((id) => {
+    const target = document.querySelector(`[data-testid="${id}"]`);
+    const from = document.activeElement;
+    if (!target || !from || from === document.body) return false;
+    return !!(target.compareDocumentPosition(from) & Node.DOCUMENT_POSITION_FOLLOWING);
+  }, testId);
   for (let k = 0; k < max; k++) {
-    await page.keyboard.press('Tab');
+    await page.keyboard.press(before ? 'Shift+Tab' : 'Tab');
     if (await page.evaluate((id) => document.activeElement?.getAttribute('data-testid') === id, testId))
       return;
   }
   throw new Error(`Tab never reached ${testId}`);
 }
 
-test.describe('the figures in the accessibility tree', () => {
-  test('the main figure is named and its description holds the live numbers; it changes with a parameter and on pause', async ({
-    page,
-  }) => {
+test('keyboard and accessibility tree: the main figure’s description, the exam by keyboard, a cell edited without pointing', async ({
+  page,
+}) => {
+  test.setTimeout(180_000);
+  const cdp = await page.context().newCDPSession(page);
+  await test.step('the main figure is named and its description holds the live numbers; it follows a setting and the pause', async () => {
     await openScene(page, '#/texture?open=settings');
-    const cdp = await page.context().newCDPSession(page);
     const fig = await axNamed(cdp, MAIN);
     expect(fig?.role).toBe('group');
     const d0 = fig!.description;
@@ -87,7 +99,7 @@ test.describe('the figures in the accessibility tree', () => {
 
     // on pause: the position on the path and the numbers there
     await page.getByTestId('timeline-play').click();
-    await expect.poll(() => timelineT(page), { timeout: 20_000 }).toBeGreaterThan(0.15);
+    await expect.poll(() => timelineT(page), { timeout: 20_000 }).toBeGreaterThan(0.05);
     await page.getByTestId('timeline-play').click();
     await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '0');
     const t = await timelineT(page);
@@ -99,14 +111,10 @@ test.describe('the figures in the accessibility tree', () => {
     // … and the live region said it on pause
     await expect(page.getByTestId('live-region')).toContainText(`t = ${coord(t)}`, { timeout: 10_000 });
   });
-});
 
-test.describe('by keyboard alone', () => {
-  test('the exam’s (a), (b) and (c): move the query and type the sphere point, read the answers from the tree', async ({
-    page,
-  }) => {
+  await test.step('the exam’s (a), (b) and (c) by keyboard: move the query, type the sphere point, read the tree', async () => {
     await openScene(page, '#/texture?u=0.6&v=0.6&x=2&y=0&z=0');
-    const cdp = await page.context().newCDPSession(page);
+    await waitForDescription(cdp, MAIN, (x) => x.includes('u 0.60, v 0.60'));
     await tabTo(page, 'texel-grid');
     // (0.6, 0.6) → (0.4, 0.24): Shift+← twice (0.1 each), Shift+↓ three times, ↓ six times (0.01 each)
     for (let k = 0; k < 2; k++) await page.keyboard.press('Shift+ArrowLeft');
@@ -131,10 +139,9 @@ test.describe('by keyboard alone', () => {
     expect(s).toContain(`bilinear ${short(L(1 / 8, 1 / 4))}`);
   });
 
-  test('a cell’s value edited without pointing: choose its column and row, type the value', async ({
-    page,
-  }) => {
+  await test.step('a cell’s value edited without pointing: choose its column and row, type the value', async () => {
     await openScene(page, '#/texture?open=edit');
+    await expect(page.getByTestId('fold-edit')).toHaveAttribute('open', '');
     await tabTo(page, 'edit-toggle');
     await page.keyboard.press('Space');
     await tabTo(page, 'cell-column');
@@ -149,9 +156,6 @@ test.describe('by keyboard alone', () => {
     await page.keyboard.type('118');
     await page.keyboard.press('Enter');
     await waitForReadout(page, 'nearest', (x) => x === '118');
-    const cdp = await page.context().newCDPSession(page);
     await waitForDescription(cdp, MAIN, (x) => x.includes('Editing cells: node (2, 1) chosen, value 118.'));
   });
 });
-
-test.describe('ask first, and the stage for the room', () => {});
