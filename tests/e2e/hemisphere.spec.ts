@@ -59,16 +59,16 @@ async function expectMatchesCore(
   return core;
 }
 
-test('wiring: the exam page, Phong, sobol points, typed densities and the inverted Jacobian equal the core', async ({
+test('wiring: the exam page, the settings fold, Phong, sobol points, typed and bad densities, the inverted Jacobian equal the core', async ({
   page,
 }) => {
-  test.setTimeout(120_000);
-  await openScene(page, '#/hemisphere');
+  test.setTimeout(180_000);
+  await openScene(page, '#/hemisphere?n=2000');
   await test.step('the exam: k, χ², the estimates and each part’s derivation', async () => {
     await statsReady(page);
     // the exam's answer (a): k = 2/(e^{2π} − 1)
     expect(Number(await readout(page, 'k'))).toBe(examLobeK());
-    const core = await expectMatchesCore(page, 'exam', 20000, 1);
+    const core = await expectMatchesCore(page, 'exam', 2000, 1);
     expect(core.chi2!.pass).toBe(true);
     await expect(page.getByTestId('chi2-verdict')).toContainText('Accepted');
     await expect(page.getByTestId('derivation')).toContainText('Normalize');
@@ -100,7 +100,7 @@ test('wiring: the exam page, Phong, sobol points, typed densities and the invert
     await expect(page.getByTestId('steps-1d-theta')).toContainText(/cos\u2061?−1\(1−2ξ1\)/);
     await expect(page.getByTestId('steps-1d-theta')).toContainText('\\sin^{-1}');
     await expect(page.getByTestId('steps-1d-phi')).toContainText('log1p');
-    const f = animFrame(makeLobe('exam', 8), 'independent', 1, 20000, 'warp', 1);
+    const f = animFrame(makeLobe('exam', 8), 'independent', 1, 2000, 'warp', 1);
     await expect(page.getByTestId('steps-1d-example')).toContainText(
       formatNumber(Math.asin(Math.sqrt(f.tracked!.xi1)), 12),
     );
@@ -115,83 +115,6 @@ test('wiring: the exam page, Phong, sobol points, typed densities and the invert
     await expect(page.getByTestId('keynote-eg')).toContainText('E[g(X)]');
   });
 
-  await test.step('Phong n = 8 with f = cos θ: the core’s numbers, infinite variance, the repeat summary', async () => {
-    await page.goto('./#/hemisphere?lobe=phong&exponent=8&n=5000&seed=7');
-    await expectMatchesCore(page, 'phong', 5000, 7);
-    await expect(page.getByTestId('variance-warning')).toContainText('Infinite variance');
-    await expect(page.getByTestId('variance-warning')).toContainText('cos²⁻ⁿ');
-    await expect(page.getByTestId('answer-2b').locator('.readout-note')).toContainText(
-      'meaningless here (infinite variance)',
-    );
-    await page.getByTestId('repeat-button').click();
-    const summary = page.getByTestId('repeat-summary');
-    await expect(summary).toContainText('unbiased', { timeout: 60_000 });
-    await expect(summary).toContainText('Phong');
-    await expect(summary).not.toContainText('exam lobe');
-  });
-
-  // one low-discrepancy set stands for the three (the page's note takes the same path for each;
-  // the RMSE of every set is a unit test of the model)
-  await test.step('points=sobol: s/√N is not shown as the error; the RMSE over randomized runs is', async () => {
-    await page.goto('./#/hemisphere?points=sobol&n=1024');
-    await waitForReadout(page, 'samples', (v) => Number(v) === 1024);
-    await statsReady(page);
-    await expect(page.getByTestId('stderr-note')).toContainText('not an error estimate');
-    const lobe = makeLobe('exam', 8)!;
-    const core = computeDrawStats(lobe, cosTheta, 'sobol', 1, 1024);
-    const r = rmseOverRuns(lobe, cosTheta, 'sobol', 1, 1024, core.exact);
-    await expect(page.getByTestId('stderr-note')).toContainText(formatNumber(r.uniform, 3));
-    const uniNote = page.getByTestId('answer-2a').locator('.readout-note');
-    await expect(uniNote).toContainText(`RMSE ${formatNumber(r.uniform, 3)}`);
-    await expect(uniNote).not.toContainText('std. error');
-    await expect(page.getByTestId('answer-2b').locator('.readout-note')).toContainText(
-      `RMSE ${formatNumber(r.importance, 3)}`,
-    );
-  });
-
-  await test.step('typed densities: the core’s numbers, and k right to every digit printed', async () => {
-    // the typed density's own derivation is folded under Explore further: the link opens it
-    await openScene(page, '#/hemisphere?lobe=custom&pdf=cos(theta)&n=4000&seed=3&open=lobe-derivation');
-    await expectMatchesCore(page, 'custom', 4000, 3, 8, (t) => Math.cos(t));
-    await expect(page.getByTestId('derivation')).toContainText('Numerical steps');
-    // p ∝ cos³θ e^{φ/2}: ∫ p dω = ¼ · 2(e^π − 1), so k = 2/(e^π − 1); the exam's k stays the exam's
-    await page.goto('./#/hemisphere?lobe=custom&n=4000&pdf=cos(theta)^3*exp(phi/2)');
-    await expect(page.getByTestId('k-chosen')).toHaveText(formatNumber(2 / Math.expm1(Math.PI), 8));
-    await expect(page.getByTestId('other-lobe')).toContainText('adaptive quadrature');
-    await expect(page.getByTestId('answer-1a').getByTestId('k')).toHaveAttribute(
-      'data-value',
-      String(examLobeK()),
-    );
-  });
-
-  await test.step('jacobian=inverted: a clear message, the divergence, nothing drawn, no garbage numbers', async () => {
-    await page.goto('./#/hemisphere?jacobian=inverted');
-    await expect(page.getByTestId('inverted-message')).toContainText('Not integrable');
-    await waitForReadout(page, 'samples', (v) => v === 'none');
-    await statsReady(page);
-    expect(await readout(page, 'chi2-p')).toBe('none');
-    expect(await readout(page, 'mc-importance')).toBe('none');
-    // part (a) is unaffected, and so is the uniform estimator
-    expect(Number(await readout(page, 'k'))).toBe(examLobeK());
-    expect(rel(await readoutNumber(page, 'mc-exact'), Math.PI)).toBeLessThan(1e-12);
-    // the partial integral −ln sin ε at the default ε = 1e-3
-    const partial = await readoutNumber(page, 'inverted-partial');
-    expect(rel(partial, -Math.log(Math.sin(1e-3)))).toBeLessThan(1e-12);
-    await expect(page.locator('main')).not.toContainText('NaN');
-    await expect(page.locator('main')).not.toContainText('Infinity');
-    // the figure says nothing is drawn, and there is nothing to play
-    await expect(page.getByTestId('hemi-caption').first()).toContainText('Nothing is drawn');
-    await expect(
-      page.getByTestId('timeline-nothing').getByRole('button', { name: /play/i }).first(),
-    ).toBeDisabled();
-  });
-});
-
-test('"More settings": folded and kept in the link; the lobe chosen there, a typed density and bad ones', async ({
-  page,
-}) => {
-  test.setTimeout(120_000);
-  await openScene(page, '#/hemisphere?n=2000');
   await test.step('closed on load, opened by a click that writes open=settings; the link keeps it open', async () => {
     const fold = page.getByTestId('fold-settings');
     await expect(fold).not.toHaveAttribute('open');
@@ -252,6 +175,76 @@ test('"More settings": folded and kept in the link; the lobe chosen there, a typ
     await waitForReadout(page, 'k-chosen', (v) => Math.abs(Number(v) * Math.PI - 1) < 1e-3);
   });
 
+  await test.step('Phong n = 8 with f = cos θ: the core’s numbers, infinite variance, the repeat summary', async () => {
+    await page.goto('./#/hemisphere?lobe=phong&exponent=8&n=5000&seed=7');
+    await expectMatchesCore(page, 'phong', 5000, 7);
+    await expect(page.getByTestId('variance-warning')).toContainText('Infinite variance');
+    await expect(page.getByTestId('variance-warning')).toContainText('cos²⁻ⁿ');
+    await expect(page.getByTestId('answer-2b').locator('.readout-note')).toContainText(
+      'meaningless here (infinite variance)',
+    );
+    await page.getByTestId('repeat-button').click();
+    const summary = page.getByTestId('repeat-summary');
+    await expect(summary).toContainText('unbiased', { timeout: 60_000 });
+    await expect(summary).toContainText('Phong');
+    await expect(summary).not.toContainText('exam lobe');
+  });
+
+  // one low-discrepancy set stands for the three (the page's note takes the same path for each;
+  // the RMSE of every set is a unit test of the model)
+  await test.step('points=sobol: s/√N is not shown as the error; the RMSE over randomized runs is', async () => {
+    await page.goto('./#/hemisphere?points=sobol&n=1024');
+    await waitForReadout(page, 'samples', (v) => Number(v) === 1024);
+    await statsReady(page);
+    await expect(page.getByTestId('stderr-note')).toContainText('not an error estimate');
+    const lobe = makeLobe('exam', 8)!;
+    const core = computeDrawStats(lobe, cosTheta, 'sobol', 1, 1024);
+    const r = rmseOverRuns(lobe, cosTheta, 'sobol', 1, 1024, core.exact);
+    await expect(page.getByTestId('stderr-note')).toContainText(formatNumber(r.uniform, 3));
+    const uniNote = page.getByTestId('answer-2a').locator('.readout-note');
+    await expect(uniNote).toContainText(`RMSE ${formatNumber(r.uniform, 3)}`);
+    await expect(uniNote).not.toContainText('std. error');
+    await expect(page.getByTestId('answer-2b').locator('.readout-note')).toContainText(
+      `RMSE ${formatNumber(r.importance, 3)}`,
+    );
+  });
+
+  await test.step('typed densities: the core’s numbers, and k right to every digit printed', async () => {
+    // the typed density's own derivation is folded under Explore further: the link opens it
+    await page.goto('./#/hemisphere?lobe=custom&pdf=cos(theta)&n=4000&seed=3&open=lobe-derivation');
+    await expectMatchesCore(page, 'custom', 4000, 3, 8, (t) => Math.cos(t));
+    await expect(page.getByTestId('derivation')).toContainText('Numerical steps');
+    // p ∝ cos³θ e^{φ/2}: ∫ p dω = ¼ · 2(e^π − 1), so k = 2/(e^π − 1); the exam's k stays the exam's
+    await page.goto('./#/hemisphere?lobe=custom&n=4000&pdf=cos(theta)^3*exp(phi/2)');
+    await expect(page.getByTestId('k-chosen')).toHaveText(formatNumber(2 / Math.expm1(Math.PI), 8));
+    await expect(page.getByTestId('other-lobe')).toContainText('adaptive quadrature');
+    await expect(page.getByTestId('answer-1a').getByTestId('k')).toHaveAttribute(
+      'data-value',
+      String(examLobeK()),
+    );
+  });
+
+  await test.step('jacobian=inverted: a clear message, the divergence, nothing drawn, no garbage numbers', async () => {
+    await page.goto('./#/hemisphere?jacobian=inverted');
+    await expect(page.getByTestId('inverted-message')).toContainText('Not integrable');
+    await waitForReadout(page, 'samples', (v) => v === 'none');
+    await statsReady(page);
+    expect(await readout(page, 'chi2-p')).toBe('none');
+    expect(await readout(page, 'mc-importance')).toBe('none');
+    // part (a) is unaffected, and so is the uniform estimator
+    expect(Number(await readout(page, 'k'))).toBe(examLobeK());
+    expect(rel(await readoutNumber(page, 'mc-exact'), Math.PI)).toBeLessThan(1e-12);
+    // the partial integral −ln sin ε at the default ε = 1e-3
+    const partial = await readoutNumber(page, 'inverted-partial');
+    expect(rel(partial, -Math.log(Math.sin(1e-3)))).toBeLessThan(1e-12);
+    await expect(page.locator('main')).not.toContainText('NaN');
+    await expect(page.locator('main')).not.toContainText('Infinity');
+    // the figure says nothing is drawn, and there is nothing to play
+    await expect(page.getByTestId('hemi-caption').first()).toContainText('Nothing is drawn');
+    await expect(
+      page.getByTestId('timeline-nothing').getByRole('button', { name: /play/i }).first(),
+    ).toBeDisabled();
+  });
   await test.step('a bad integrand f from the link: its message, the estimates off, the rest works', async () => {
     await page.goto('./#/hemisphere?n=2000&f=' + encodeURIComponent('cos(theta'));
     await expect(page.locator('.expr-field [role=alert]').first()).toBeVisible();
@@ -262,9 +255,10 @@ test('"More settings": folded and kept in the link; the lobe chosen there, a typ
   });
 });
 
-test('the opening statistics wait for the page to load; a change before then runs at once', async ({
+test('the worker: the opening statistics wait for the page to load, a change before then runs at once; a million points grow in the 3D view', async ({
   page,
 }) => {
+  test.setTimeout(180_000);
   // every state the status line shows, and when the statistics task goes to a worker, from the
   // start (the 3D view's points stream from a worker of their own at once: not logged)
   await page.addInitScript(() => {
@@ -304,16 +298,14 @@ test('the opening statistics wait for the page to load; a change before then run
   await page.goto('about:blank');
   await openSceneNoWait(page, '#/hemisphere?n=400');
   await expect(page.getByTestId('stats-status')).toHaveAttribute('data-state', 'waiting');
-  await page.evaluate(() => (location.hash = '#/hemisphere?n=300'));
+  // (to a million directions: the same page then grows them in the 3D view)
+  await page.evaluate(() => (location.hash = '#/hemisphere?n=1000000'));
+  await waitForReadout(page, 'samples', (v) => Number(v) === 1_000_000, 60_000);
   await statsReady(page);
-  expect(Number(await readout(page, 'samples'))).toBe(300);
   const log2 = await page.evaluate(() => (window as unknown as { __log: string[] }).__log);
   expect(log2.find((s) => s.startsWith('running'))).toBe('running'); // before the page settled
-});
 
-test('10⁶ points: the growth reaches a million points in the 3D view', async ({ page }) => {
-  test.setTimeout(150_000);
-  await openScene(page, '#/hemisphere?n=1000000');
+  // the growth reaches a million points in the 3D view
   const view = page.getByTestId('hemisphere-3d');
   await view.scrollIntoViewIfNeeded();
   await expect(view).toHaveAttribute('data-status', 'ready', { timeout: 30_000 });
