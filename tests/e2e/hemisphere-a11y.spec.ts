@@ -82,7 +82,7 @@ async function tabTo(page: Page, selector: string, max = 200) {
   throw new Error(`Tab never reached ${selector}`);
 }
 
-test('the figures described: live numbers, the θ histogram’s table, and a change of lobe and on pause', async ({
+test('for a reader who does not see the figures, and by keyboard only: descriptions, the stratum, Q1’s numbers', async ({
   page,
 }) => {
   test.setTimeout(180_000);
@@ -102,52 +102,6 @@ test('the figures described: live numbers, the θ histogram’s table, and a cha
     expect(d).toContain('towards φ = 2π');
   });
 
-  await test.step('the θ histogram: named, summarized, a table of its bins', async () => {
-    const name = 'Histogram of the sampled polar angles θ against the marginal density p(θ)';
-    const h = await figureDescription(page, name);
-    expect(h).toContain('Histogram of 2,000 sampled θ (rad) in 36 bins');
-    expect(h).toContain(`p(θ) ends about where it starts from 0 at θ = 0 to 0 at θ = ${f3(Math.PI / 2)}`);
-    expect(h).toContain(`maximum 1 at θ = ${f3(Math.PI / 4)}`);
-    const table = page.getByTestId('plot-theta-table');
-    await table.locator('summary').click();
-    await expect(table.locator('tbody tr')).toHaveCount(36);
-    const bins = core.hist!.theta;
-    const first = (await table.locator('tbody tr').first().locator('td').allTextContents()).map(Number);
-    expect(first[0]).toBeCloseTo(bins.centers[0], 3);
-    expect(first[1]).toBeCloseTo(bins.density[0], 3);
-  });
-
-  await test.step('another lobe, another description', async () => {
-    await page.getByTestId('lobe').selectOption('cosine');
-    await expect.poll(() => figureDescription(page, FIGURE), { timeout: 30_000 }).toContain('cos θ / π');
-    const cos = await figureDescription(page, FIGURE);
-    expect(cos).not.toBe(d);
-    expect(cos).toContain('evenly in φ');
-  });
-
-  await test.step('play, then pause: the description says the paused position, announced', async () => {
-    await page.getByTestId('timeline-play').click();
-    await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '1');
-    await page.waitForFunction(() => {
-      const t = Number(document.querySelector('[data-testid="timeline"]')?.getAttribute('data-t'));
-      return t > 0.15 && t < 0.85;
-    });
-    await page.getByTestId('timeline-play').click();
-    await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '0');
-    const t = Number(await page.getByTestId('timeline').getAttribute('data-t'));
-    const s = Number(await page.getByTestId('morph-s').getAttribute('data-value'));
-    await expect
-      .poll(() => figureDescription(page, FIGURE))
-      .toContain(`Warp morph at t = ${t.toFixed(2)} (s = ${s.toFixed(2)})`);
-    await expect(page.getByTestId('live-region')).toContainText(`t = ${t.toFixed(2)}`, { timeout: 10_000 });
-  });
-});
-
-test('keyboard only: orbit the view, follow a stratum, and read Q1’s numbers from the accessibility tree', async ({
-  page,
-}) => {
-  test.setTimeout(180_000);
-  await openScene(page, '#/hemisphere?n=2000');
   await test.step('the 3D view: arrows orbit, Home returns', async () => {
     await tabTo(page, '[data-testid="hemisphere-3d"]');
     const triad = page.getByTestId('hemisphere-3d-axes');
@@ -197,11 +151,50 @@ test('keyboard only: orbit the view, follow a stratum, and read Q1’s numbers f
     expect(c).toContain(`θ = ${formatSignificant(ex.thetaAsin, 8, 'times')}`);
     expect(c).toContain(`φ = ${formatSignificant(ex.phiLog1p, 8, 'times')}`);
     expect(c).toContain(`P(θ) = ${formatSignificant(ex.cdfTheta, 10, 'times')}`);
-    const core = computeDrawStats(exam, Math.cos, 'independent', 1, 2000);
     const verdict = await axText(page, '[data-testid="chi2-verdict"]');
     expect(verdict).toContain(`p = ${formatSignificant(core.chi2!.pValue, 4, 'times')}`);
     expect(verdict).toContain('Accepted');
     // the stratum's sentence is part of the figure's description
     expect(await figureDescription(page, FIGURE)).toContain(`Stratum (${cell.i}, ${cell.j})`);
+  });
+
+  await test.step('the θ histogram: named, summarized, a table of its bins', async () => {
+    const name = 'Histogram of the sampled polar angles θ against the marginal density p(θ)';
+    const h = await figureDescription(page, name);
+    expect(h).toContain('Histogram of 2,000 sampled θ (rad) in 36 bins');
+    expect(h).toContain(`p(θ) ends about where it starts from 0 at θ = 0 to 0 at θ = ${f3(Math.PI / 2)}`);
+    expect(h).toContain(`maximum 1 at θ = ${f3(Math.PI / 4)}`);
+    const table = page.getByTestId('plot-theta-table');
+    await table.locator('summary').click();
+    await expect(table.locator('tbody tr')).toHaveCount(36);
+    const bins = core.hist!.theta;
+    const first = (await table.locator('tbody tr').first().locator('td').allTextContents()).map(Number);
+    expect(first[0]).toBeCloseTo(bins.centers[0], 3);
+    expect(first[1]).toBeCloseTo(bins.density[0], 3);
+  });
+
+  await test.step('another lobe, another description', async () => {
+    await page.getByTestId('lobe').selectOption('cosine');
+    await expect.poll(() => figureDescription(page, FIGURE), { timeout: 30_000 }).toContain('cos θ / π');
+    const cos = await figureDescription(page, FIGURE);
+    expect(cos).not.toBe(d);
+    expect(cos).toContain('evenly in φ');
+  });
+
+  await test.step('play, then pause: the description says the paused position, announced', async () => {
+    await page.getByTestId('timeline-play').click();
+    await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '1');
+    await page.waitForFunction(() => {
+      const t = Number(document.querySelector('[data-testid="timeline"]')?.getAttribute('data-t'));
+      return t > 0.15 && t < 0.85;
+    });
+    await page.getByTestId('timeline-play').click();
+    await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '0');
+    const t = Number(await page.getByTestId('timeline').getAttribute('data-t'));
+    const s = Number(await page.getByTestId('morph-s').getAttribute('data-value'));
+    await expect
+      .poll(() => figureDescription(page, FIGURE))
+      .toContain(`Warp morph at t = ${t.toFixed(2)} (s = ${s.toFixed(2)})`);
+    await expect(page.getByTestId('live-region')).toContainText(`t = ${t.toFixed(2)}`, { timeout: 10_000 });
   });
 });
