@@ -176,8 +176,8 @@ test('wiring: the exam page, the settings fold, Phong, sobol points, typed and b
   });
 
   await test.step('Phong n = 8 with f = cos θ: the core’s numbers, infinite variance, the repeat summary', async () => {
-    await page.goto('./#/hemisphere?lobe=phong&exponent=8&n=5000&seed=7');
-    await expectMatchesCore(page, 'phong', 5000, 7);
+    await page.goto('./#/hemisphere?lobe=phong&exponent=8&n=1500&seed=7');
+    await expectMatchesCore(page, 'phong', 1500, 7);
     await expect(page.getByTestId('variance-warning')).toContainText('Infinite variance');
     await expect(page.getByTestId('variance-warning')).toContainText('cos²⁻ⁿ');
     await expect(page.getByTestId('answer-2b').locator('.readout-note')).toContainText(
@@ -211,11 +211,11 @@ test('wiring: the exam page, the settings fold, Phong, sobol points, typed and b
 
   await test.step('typed densities: the core’s numbers, and k right to every digit printed', async () => {
     // the typed density's own derivation is folded under Explore further: the link opens it
-    await page.goto('./#/hemisphere?lobe=custom&pdf=cos(theta)&n=4000&seed=3&open=lobe-derivation');
-    await expectMatchesCore(page, 'custom', 4000, 3, 8, (t) => Math.cos(t));
+    await page.goto('./#/hemisphere?lobe=custom&pdf=cos(theta)&n=1000&seed=3&open=lobe-derivation');
+    await expectMatchesCore(page, 'custom', 1000, 3, 8, (t) => Math.cos(t));
     await expect(page.getByTestId('derivation')).toContainText('Numerical steps');
     // p ∝ cos³θ e^{φ/2}: ∫ p dω = ¼ · 2(e^π − 1), so k = 2/(e^π − 1); the exam's k stays the exam's
-    await page.goto('./#/hemisphere?lobe=custom&n=4000&pdf=cos(theta)^3*exp(phi/2)');
+    await page.goto('./#/hemisphere?lobe=custom&n=1000&pdf=cos(theta)^3*exp(phi/2)');
     await expect(page.getByTestId('k-chosen')).toHaveText(formatNumber(2 / Math.expm1(Math.PI), 8));
     await expect(page.getByTestId('other-lobe')).toContainText('adaptive quadrature');
     await expect(page.getByTestId('answer-1a').getByTestId('k')).toHaveAttribute(

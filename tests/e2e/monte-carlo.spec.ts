@@ -171,7 +171,7 @@ test('wiring: the exam’s Q4 part by part, typed integrands and pdfs, bad ones,
   });
 
   await test.step('the page’s own estimate with p ∝ f: exact, “zero variance”; the convergence plot notes the exact strategy', async () => {
-    await page.goto('./#/monte-carlo?pdf=proportional&n=20000&open=convergence');
+    await page.goto('./#/monte-carlo?pdf=proportional&n=2000&open=convergence');
     const est = Number(await waitForReadout(page, 'estimate', (v) => Math.abs(Number(v) - I) < 1e-10));
     close(est, I, 1e-10);
     await expect(page.getByTestId('stderr').locator('..')).toContainText('zero variance');
