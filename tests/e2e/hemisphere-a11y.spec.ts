@@ -1,9 +1,12 @@
 /**
- * #/hemisphere for a reader who does not see the figure, and in the lecture room: the main
- * figure's description read from Chromium's accessibility tree (what a screen reader receives),
- * its live numbers recomputed here from the scene's own model; the audio traces; the stratum
- * followed onto the hemisphere by keyboard; ask=1 and present=1; and a keyboard-only run through
- * Q1 with its numbers read from the accessibility tree.
+ * #/hemisphere for a reader who does not see the figure: the main figure's description and the θ
+ * histogram's, read from Chromium's accessibility tree (what a screen reader receives), their
+ * live numbers recomputed here from the scene's own model, the histogram's table of bins; and a
+ * keyboard-only run: orbit the 3D view, follow a stratum with the arrow keys (its sentence is the
+ * model's, the URL keeps it, Escape stops), and read Q1's numbers from the accessibility tree.
+ *
+ * Elsewhere: the whole-page checks (axe, tab stops, the lecture room) in catalogue.spec.ts; the
+ * description's wording for every lobe in tests/scenes/hemisphere/describe.test.ts.
  */
 import type { CDPSession, Page } from '@playwright/test';
 import { test, expect, openScene } from './fixtures';
@@ -79,71 +82,38 @@ async function tabTo(page: Page, selector: string, max = 200) {
   throw new Error(`Tab never reached ${selector}`);
 }
 
-test.describe('the figure described', () => {
-  test('the description holds the live numbers and changes with the lobe and on pause', async ({ page }) => {
-    test.setTimeout(180_000);
-    await openScene(page, '#/hemisphere?n=2000&open=settings');
-    await statsReady(page);
-    const core = computeDrawStats(exam, Math.cos, 'independent', 1, 2000);
+test('for a reader who does not see the figures, and by keyboard only: descriptions, the stratum, Q1’s numbers', async ({
+  page,
+}) => {
+  test.setTimeout(180_000);
+  await openScene(page, '#/hemisphere?n=2000&open=settings,bins');
+  await statsReady(page);
+  const core = computeDrawStats(exam, Math.cos, 'independent', 1, 2000);
+  let d = '';
+  await test.step('the main figure: k, the count, p, where the lobe peaks', async () => {
     await expect
       .poll(() => figureDescription(page, FIGURE), { timeout: 30_000 })
       .toContain(`p = ${f3(core.chi2!.pValue)}`);
-    const d = await figureDescription(page, FIGURE);
+    d = await figureDescription(page, FIGURE);
     expect(d).toContain(`k = ${formatSignificant(examLobeK(), 4, 'times')}`);
     expect(d).toContain('2,000 independent samples');
     expect(d).toContain('every point sits on its direction on the hemisphere');
     expect(d).toContain(`around θ = ${f3(Math.PI / 4)} rad`);
     expect(d).toContain('towards φ = 2π');
-
-    await page.getByTestId('lobe').selectOption('cosine');
-    await expect.poll(() => figureDescription(page, FIGURE), { timeout: 30_000 }).toContain('cos θ / π');
-    const cos = await figureDescription(page, FIGURE);
-    expect(cos).not.toBe(d);
-    expect(cos).toContain('evenly in φ');
-
-    // play, then pause: the description says the paused position
-    await page.getByTestId('timeline-play').click();
-    await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '1');
-    await page.waitForFunction(() => {
-      const t = Number(document.querySelector('[data-testid="timeline"]')?.getAttribute('data-t'));
-      return t > 0.15 && t < 0.85;
-    });
-    await page.getByTestId('timeline-play').click();
-    await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '0');
-    const t = Number(await page.getByTestId('timeline').getAttribute('data-t'));
-    const s = Number(await page.getByTestId('morph-s').getAttribute('data-value'));
-    await expect
-      .poll(() => figureDescription(page, FIGURE))
-      .toContain(`Warp morph at t = ${t.toFixed(2)} (s = ${s.toFixed(2)})`);
-    // on pause the description is announced through the live region
-    await expect(page.getByTestId('live-region')).toContainText(`t = ${t.toFixed(2)}`, { timeout: 10_000 });
   });
 
-  test('the θ histogram: named, summarized, a table of its bins', async ({ page }) => {
-    test.setTimeout(120_000);
-    await openScene(page, '#/hemisphere?n=2000&part=1d&open=bins');
-    await statsReady(page);
-    const name = 'Histogram of the sampled polar angles θ against the marginal density p(θ)';
-    const d = await figureDescription(page, name);
-    expect(d).toContain('Histogram of 2,000 sampled θ (rad) in 36 bins');
-    expect(d).toContain(`p(θ) ends about where it starts from 0 at θ = 0 to 0 at θ = ${f3(Math.PI / 2)}`);
-    expect(d).toContain(`maximum 1 at θ = ${f3(Math.PI / 4)}`);
-    const table = page.getByTestId('plot-theta-table');
-    await table.locator('summary').click();
-    await expect(table.locator('tbody tr')).toHaveCount(36);
-    const h = computeDrawStats(exam, Math.cos, 'independent', 1, 2000).hist!.theta;
-    const first = (await table.locator('tbody tr').first().locator('td').allTextContents()).map(Number);
-    expect(first[0]).toBeCloseTo(h.centers[0], 3);
-    expect(first[1]).toBeCloseTo(h.density[0], 3);
+  await test.step('the 3D view: arrows orbit, Home returns', async () => {
+    await tabTo(page, '[data-testid="hemisphere-3d"]');
+    const triad = page.getByTestId('hemisphere-3d-axes');
+    await expect(triad).toHaveAttribute('data-x-axis', /./, { timeout: 30_000 });
+    const home = await triad.getAttribute('data-x-axis');
+    await page.keyboard.press('ArrowLeft');
+    await expect.poll(() => triad.getAttribute('data-x-axis')).not.toBe(home);
+    await page.keyboard.press('Home');
+    await expect.poll(() => triad.getAttribute('data-x-axis')).toBe(home);
   });
-});
 
-test.describe('the followed stratum', () => {
-  test('by keyboard: arrows pick a cell, its sentence is the model’s, the URL keeps it, Escape stops', async ({
-    page,
-  }) => {
-    test.setTimeout(120_000);
-    await openScene(page, '#/hemisphere?n=2000');
+  await test.step('the stratum grid: arrows pick a cell, its sentence is the model’s, the URL keeps it, Escape stops', async () => {
     await tabTo(page, '[data-testid="stratum-cells"] [role="radio"]');
     for (let i = 0; i < 3; i++) await page.keyboard.press('ArrowRight');
     for (let i = 0; i < 5; i++) await page.keyboard.press('ArrowUp');
@@ -162,42 +132,69 @@ test.describe('the followed stratum', () => {
     await expect.poll(() => page.evaluate(() => location.hash)).not.toMatch(/cell=/);
     await expect(cell).toHaveAttribute('aria-checked', 'false');
   });
-});
 
-test('keyboard only: orbit the view, follow a stratum, and read Q1’s numbers from the accessibility tree', async ({
-  page,
-}) => {
-  test.setTimeout(180_000);
-  await openScene(page, '#/hemisphere?n=2000');
-  // the 3D view by keyboard: arrows orbit, Home returns
-  await tabTo(page, '[data-testid="hemisphere-3d"]');
-  const triad = page.getByTestId('hemisphere-3d-axes');
-  await expect(triad).toHaveAttribute('data-x-axis', /./, { timeout: 30_000 });
-  const home = await triad.getAttribute('data-x-axis');
-  await page.keyboard.press('ArrowLeft');
-  await expect.poll(() => triad.getAttribute('data-x-axis')).not.toBe(home);
-  await page.keyboard.press('Home');
-  await expect.poll(() => triad.getAttribute('data-x-axis')).toBe(home);
   // the first sample's stratum, by the button
-  await tabTo(page, '[data-testid="stratum-start"]');
-  await page.keyboard.press('Enter');
   const u = fillSequence2D('independent', 1, 2000, new Float64Array(2), 0, 1, 0);
   const cell = { i: Math.floor(u[0] * 8), j: Math.floor(u[1] * 8) };
-  await expect(page.locator(`[data-cell="${cell.i},${cell.j}"]`)).toHaveAttribute('aria-checked', 'true');
-  await statsReady(page);
+  await test.step('the first sample’s stratum, by the button', async () => {
+    await tabTo(page, '[data-testid="stratum-start"]');
+    await page.keyboard.press('Enter');
+    await expect(page.locator(`[data-cell="${cell.i},${cell.j}"]`)).toHaveAttribute('aria-checked', 'true');
+    await statsReady(page);
+  });
 
-  // (a) k, (c) the CDFs at the first sample, (d) the χ² test: read as a screen reader gets them
-  const k = await axText(page, '[data-testid="answer-1a"]');
-  expect(k).toContain(formatSignificant(examLobeK(), 8, 'times'));
-  const ex = examInversion(u[0], u[1]);
-  const c = await axText(page, '[data-testid="cdf-example"]');
-  expect(c).toContain(`θ = ${formatSignificant(ex.thetaAsin, 8, 'times')}`);
-  expect(c).toContain(`φ = ${formatSignificant(ex.phiLog1p, 8, 'times')}`);
-  expect(c).toContain(`P(θ) = ${formatSignificant(ex.cdfTheta, 10, 'times')}`);
-  const core = computeDrawStats(exam, Math.cos, 'independent', 1, 2000);
-  const verdict = await axText(page, '[data-testid="chi2-verdict"]');
-  expect(verdict).toContain(`p = ${formatSignificant(core.chi2!.pValue, 4, 'times')}`);
-  expect(verdict).toContain('Accepted');
-  // the stratum's sentence is part of the figure's description
-  expect(await figureDescription(page, FIGURE)).toContain(`Stratum (${cell.i}, ${cell.j})`);
+  await test.step('(a) k, (c) the CDFs at the first sample, (d) the χ² test: as a screen reader gets them', async () => {
+    const k = await axText(page, '[data-testid="answer-1a"]');
+    expect(k).toContain(formatSignificant(examLobeK(), 8, 'times'));
+    const ex = examInversion(u[0], u[1]);
+    const c = await axText(page, '[data-testid="cdf-example"]');
+    expect(c).toContain(`θ = ${formatSignificant(ex.thetaAsin, 8, 'times')}`);
+    expect(c).toContain(`φ = ${formatSignificant(ex.phiLog1p, 8, 'times')}`);
+    expect(c).toContain(`P(θ) = ${formatSignificant(ex.cdfTheta, 10, 'times')}`);
+    const verdict = await axText(page, '[data-testid="chi2-verdict"]');
+    expect(verdict).toContain(`p = ${formatSignificant(core.chi2!.pValue, 4, 'times')}`);
+    expect(verdict).toContain('Accepted');
+    // the stratum's sentence is part of the figure's description
+    expect(await figureDescription(page, FIGURE)).toContain(`Stratum (${cell.i}, ${cell.j})`);
+  });
+
+  await test.step('the θ histogram: named, summarized, a table of its bins', async () => {
+    const name = 'Histogram of the sampled polar angles θ against the marginal density p(θ)';
+    const h = await figureDescription(page, name);
+    expect(h).toContain('Histogram of 2,000 sampled θ (rad) in 36 bins');
+    expect(h).toContain(`p(θ) ends about where it starts from 0 at θ = 0 to 0 at θ = ${f3(Math.PI / 2)}`);
+    expect(h).toContain(`maximum 1 at θ = ${f3(Math.PI / 4)}`);
+    const table = page.getByTestId('plot-theta-table');
+    await table.locator('summary').click();
+    await expect(table.locator('tbody tr')).toHaveCount(36);
+    const bins = core.hist!.theta;
+    const first = (await table.locator('tbody tr').first().locator('td').allTextContents()).map(Number);
+    expect(first[0]).toBeCloseTo(bins.centers[0], 3);
+    expect(first[1]).toBeCloseTo(bins.density[0], 3);
+  });
+
+  await test.step('another lobe, another description', async () => {
+    await page.getByTestId('lobe').selectOption('cosine');
+    await expect.poll(() => figureDescription(page, FIGURE), { timeout: 30_000 }).toContain('cos θ / π');
+    const cos = await figureDescription(page, FIGURE);
+    expect(cos).not.toBe(d);
+    expect(cos).toContain('evenly in φ');
+  });
+
+  await test.step('play, then pause: the description says the paused position, announced', async () => {
+    await page.getByTestId('timeline-play').click();
+    await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '1');
+    await page.waitForFunction(() => {
+      const t = Number(document.querySelector('[data-testid="timeline"]')?.getAttribute('data-t'));
+      return t > 0.15 && t < 0.85;
+    });
+    await page.getByTestId('timeline-play').click();
+    await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '0');
+    const t = Number(await page.getByTestId('timeline').getAttribute('data-t'));
+    const s = Number(await page.getByTestId('morph-s').getAttribute('data-value'));
+    await expect
+      .poll(() => figureDescription(page, FIGURE))
+      .toContain(`Warp morph at t = ${t.toFixed(2)} (s = ${s.toFixed(2)})`);
+    await expect(page.getByTestId('live-region')).toContainText(`t = ${t.toFixed(2)}`, { timeout: 10_000 });
+  });
 });
