@@ -12,6 +12,7 @@ import { studentsCsv, type Collation, type InputFile, type QuestionStats } from 
 import { CollationFailed, ResultsChecker } from './jobs';
 import { isCancelled } from '../workers/run';
 import { downloadFile } from '../ui/download';
+import { ScrollBox } from '../ui/ScrollBox';
 import { csvText } from './csv';
 import { addBatch } from './batches';
 import './results.css';
@@ -220,7 +221,8 @@ function Report({ c }: { c: Collation }) {
       ))}
       <section className="results-panel" aria-labelledby="students-title">
         <h2 id="students-title">Students</h2>
-        <div className="table-scroll">
+        {/* wider than a phone: it scrolls in its own box, which the keyboard can reach */}
+        <ScrollBox label="Students, best score per question">
           <table className="results-table" data-testid="students-table">
             <thead>
               <tr>
@@ -256,7 +258,7 @@ function Report({ c }: { c: Collation }) {
               ))}
             </tbody>
           </table>
-        </div>
+        </ScrollBox>
       </section>
     </div>
   );
