@@ -1,10 +1,10 @@
 /**
- * What every scene of the catalogue shares, written once and run for each scene, three tests
+ * What every scene of the catalogue shares, written once and run for each scene, two tests
  * each: the whole page as a reader meets it (./wholePage.ts: axe in both themes and at both
  * widths, the WCAG criteria axe does not test, carets, formula wrapping); the shared timeline
- * (reduced motion, no frames while paused or off screen, play / pause and the link); and the
- * lecture room (present=1 with ask=1: results held back until Reveal, then the stage is the first
- * screen, legible from the back of the room). A scene-specific check (its readouts against its
+ * (reduced motion, no frames while paused or off screen, play / pause and the link), and on the
+ * same page the lecture room (present=1 with ask=1: results held back until Reveal, then the
+ * stage is the first screen, legible from the back of the room). A scene-specific check (its readouts against its
  * model, its drags and keys) lives in that scene's own spec.
  */
 import type { Page } from '@playwright/test';
@@ -51,7 +51,7 @@ for (const s of SCENES) {
       await checkWholePage(page, link(s), { scene: s });
     });
 
-    test('the timeline: reduced motion holds play=1; paused, no frames; playing, none off screen; pause writes a link that restores it', async ({
+    test('the timeline: reduced motion holds play=1; paused, no frames; playing, none off screen; pause writes a link that restores it; then the room, present=1&ask=1: results held back until Reveal, the stage the first screen, its text ≥ 18 px', async ({
       page,
     }) => {
       await countAnimationFrames(page);
@@ -104,11 +104,9 @@ for (const s of SCENES) {
       await expect(page.getByTestId('timeline')).toHaveAttribute('data-t', t!);
       await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '0');
       await expect(page.getByTestId(s.keyReadout).first()).toHaveAttribute('data-value', key ?? '');
-    });
 
-    test('the room, present=1&ask=1 at 1280×720: results held back at t = 0 until Reveal; then the stage is the first screen, its text ≥ 18 px', async ({
-      page,
-    }) => {
+      // the lecture room, on the same page: present=1&ask=1 at 1280×720 holds the results back at
+      // t = 0 until Reveal; then the stage is the first screen, its text ≥ 18 px
       await page.setViewportSize({ width: 1280, height: 720 });
       await openScene(page, link(s, 'present=1', 'ask=1'));
       await page.evaluate(() => window.scrollTo(0, 0));
@@ -118,10 +116,10 @@ for (const s of SCENES) {
         await page.getByTestId('ask-hidden').count(),
         `${s.id}: nothing is hidden under ask=1`,
       ).toBeGreaterThan(0);
-      const tl = page.locator('.timeline').first();
-      if ((await tl.count()) > 0) {
-        await expect(tl, `${s.id}: the animation is held at its start`).toHaveAttribute('data-t', '0');
-        await expect(tl).toHaveAttribute('data-playing', '0');
+      const roomTl = page.locator('.timeline').first();
+      if ((await roomTl.count()) > 0) {
+        await expect(roomTl, `${s.id}: the animation is held at its start`).toHaveAttribute('data-t', '0');
+        await expect(roomTl).toHaveAttribute('data-playing', '0');
       }
       // the title, the share bar and the way back stand in one row; no embed code in the room
       const h1 = (await page.locator('main h1').boundingBox())!;

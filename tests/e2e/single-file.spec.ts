@@ -1,7 +1,7 @@
 /**
  * The single-file copy (`npm run build:single` → dist-single/index.html) opens from file:// with no
- * server and no network: the home page, every scene with its workers, a practice question and the
- * worksheet work.
+ * server and no network: the home page, every scene with its workers, and the worksheet (practice
+ * questions with their QR codes) work.
  */
 import { existsSync } from 'node:fs';
 import { resolve } from 'node:path';
@@ -28,7 +28,6 @@ const ROUTES: [string, string[]][] = [
     s.id === 'monte-carlo' ? `#${s.path}?open=convergence` : `#${s.path}`,
     [s.keyReadout, ...(WORKER_READOUT[s.id] ? [WORKER_READOUT[s.id]!] : [])],
   ]),
-  ['#/practice/q3?seed=17', []],
   ['#/practice/sheet?seed=1&q=1,3,5', []],
 ];
 /**
