@@ -92,6 +92,12 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
     for (const e of errors) expect(Number.isFinite(e) && e > 0).toBe(true);
     expect([...errors].sort((a, b) => a - b)).toEqual(errors);
     await expect(page.getByTestId('et-plot')).toBeVisible();
+    // and each strategy's perceived error, FLIP of the images as shown, with its own plot
+    for (const s of ranking) {
+      const f = Number(await readout(page, `et-flip-${s}`));
+      expect(f > 0 && f < 1, `et-flip-${s} = ${f}`).toBe(true);
+    }
+    await expect(page.getByTestId('et-flip-plot')).toBeVisible();
     // the error without a reference: K runs in a worker; an unbiased estimator's spread predicts its error
     await page.getByTestId('fold-spread').locator('summary').click();
     await expect(page).toHaveURL(/[?&]open=equal-time,spread(&|$)/);

@@ -7,10 +7,15 @@
  * reaches at the budget ranks the strategies at equal time, and the time each needs to reach one
  * error (read off the same curve) ranks them at equal error.
  *
+ * Beside relMSE, the perceptual error rendering papers now report: the image's mean LDR-FLIP
+ * against the reference (./displayFlip), measured after passes 1, 2, 4, 8, … and the last (even
+ * spacing on the log axis the curve is drawn on). Only the passes are timed, not the measuring.
+ *
  * The clock is a parameter (`now`, in ms), so that a test can give the strategies a clock that
  * counts work instead of time and check everything else deterministically.
  */
 import { relMse } from '../image/relMse';
+import { displayFlipMean } from './displayFlip';
 import type { Strategy } from './directLight';
 import { makeCpuRenderer, newAccumulation, renderTilePass, resolveImage } from './cpuRenderer';
 import type { TraceOptions } from './pathTrace';
@@ -24,8 +29,13 @@ export interface StrategyRun {
   ms: number;
   /** relMSE of the final image against the reference, over the pixels that have one. */
   relMse: number;
-  /** After each pass: the time so far and the image's relMSE (the curve of the log–log plot). */
-  curve: { ms: number[]; relMse: number[] };
+  /** Mean FLIP of the final image against the reference, over the pixels that have one. */
+  flip: number;
+  /**
+   * After each pass: the time so far, the image's relMSE, and its mean FLIP where measured (after
+   * passes 1, 2, 4, … and the last; NaN after the others): the curves of the log–log plots.
+   */
+  curve: { ms: number[]; relMse: number[]; flip: number[] };
   /** The final image (mean radiance per pixel, row-major). */
   image: Float64Array;
 }
@@ -50,19 +60,30 @@ export function runForTime(
   const acc = newAccumulation(res, res);
   const image = new Float64Array(res * res);
   const whole = { x0: 0, y0: 0, w: res, h: res };
-  const curve = { ms: [] as number[], relMse: [] as number[] };
-  const t0 = now();
+  const curve = { ms: [] as number[], relMse: [] as number[], flip: [] as number[] };
   let ms = 0;
   let pass = 0;
   do {
+    const t = now();
     renderTilePass(r, acc, whole, pass, 1);
-    pass++;
-    ms = now() - t0;
     resolveImage(acc, image);
+    ms += now() - t;
+    pass++;
     curve.ms.push(ms);
     curve.relMse.push(relMse(image, reference));
+    // after passes 1, 2, 4, 8, …
+    curve.flip.push((pass & (pass - 1)) === 0 ? displayFlipMean(image, reference, res) : NaN);
   } while (ms < budgetMs && pass < maxPasses);
-  return { strategy: trace.strategy, spp: pass, ms, relMse: curve.relMse[pass - 1], curve, image };
+  if (Number.isNaN(curve.flip[pass - 1])) curve.flip[pass - 1] = displayFlipMean(image, reference, res);
+  return {
+    strategy: trace.strategy,
+    spp: pass,
+    ms,
+    relMse: curve.relMse[pass - 1],
+    flip: curve.flip[pass - 1],
+    curve,
+    image,
+  };
 }
 
 /**

@@ -4,13 +4,7 @@
  * RGBA (grey: the renderer has one channel). A pixel that has no sample yet is drawn black.
  * Also the numbers the page reads off the image: samples per pixel reached and mean brightness.
  */
-
-/** The sRGB encoding of a linear value in [0, 1] (clipped outside), as 0 … 255. */
-export function srgbByte(linear: number): number {
-  const x = linear > 0 ? (linear < 1 ? linear : 1) : 0;
-  const s = x <= 0.0031308 ? 12.92 * x : 1.055 * Math.pow(x, 1 / 2.4) - 0.055;
-  return Math.round(255 * s);
-}
+import { srgbByte } from '../../core/image/srgb';
 
 /** Write the image (sum / count per pixel, row-major) into `rgba` (4 bytes per pixel). */
 export function copyPixels(sum: Float64Array, count: Uint32Array, rgba: Uint8ClampedArray): void {

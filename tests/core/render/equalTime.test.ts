@@ -3,7 +3,8 @@
  * every number is deterministic: each strategy runs the same number of passes; its curve is its
  * image's relMSE after each pass, recomputed here from a fresh render; the ranking is the order of
  * the final relMSE; the equal-error target is reached by every strategy; and the better
- * strategies of the exam scene's direct light rank above uniform hemisphere sampling.
+ * strategies of the exam scene's direct light rank above uniform hemisphere sampling; FLIP is
+ * measured on a log-spaced set of passes and falls as the samples grow.
  */
 import { describe, expect, it } from 'vitest';
 import { STRATEGIES } from '../../../src/core/render/directLight';
@@ -11,6 +12,7 @@ import { equalErrorTarget, rankByError, runForTime, timeToError } from '../../..
 import { makeCpuRenderer, renderImage } from '../../../src/core/render/cpuRenderer';
 import { referenceImage } from '../../../src/core/render/referenceImage';
 import { relMse } from '../../../src/core/image/relMse';
+import { displayFlipMean } from '../../../src/core/render/displayFlip';
 import { defaultView, examScene } from '../../../src/core/render/scene';
 
 const RES = 24;
@@ -72,5 +74,21 @@ describe('equal time', () => {
     );
     expect(r.spp).toBe(1);
     expect(r.curve.relMse).toHaveLength(1);
+    expect(r.curve.flip).toHaveLength(1);
+    expect(r.flip).toBe(r.curve.flip[0]);
+  });
+
+  it('measures FLIP after passes 1, 2, 4, 8 and the last, and only the passes are timed', () => {
+    const r = runForTime(SCENE, VIEW, RES, { strategy: 'cosine', bounces: 1 }, 3, REF, 6, ticks());
+    // six passes: measured after 1, 2, 4 and the sixth, not after 3 and 5
+    expect(r.curve.flip.map((f) => !Number.isNaN(f))).toEqual([true, true, false, true, false, true]);
+    expect(r.flip).toBe(r.curve.flip[5]);
+    expect(r.flip).toBe(displayFlipMean(r.image, REF, RES));
+    // the measuring takes clock reads of its own in no pass: one tick per pass, as without it
+    expect(r.curve.ms).toEqual([1, 2, 3, 4, 5, 6]);
+    // more samples, a smaller perceived error where the image is noisy (a strategy that is already
+    // nearly exact at one sample shows its error mostly in the 8-bit levels, not in its noise)
+    for (const run of runs)
+      if (run.curve.relMse[0] > 0.05) expect(run.curve.flip[7], run.strategy).toBeLessThan(run.curve.flip[0]);
   });
 });

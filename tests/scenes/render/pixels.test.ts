@@ -1,6 +1,7 @@
 /** The render lab's pixel copy (sums → sRGB bytes), its image statistics and its description. */
 import { describe, expect, it } from 'vitest';
-import { copyPixels, imageStats, pixelMeans, srgbByte } from '../../../src/scenes/render/pixels';
+import { copyPixels, imageStats, pixelMeans } from '../../../src/scenes/render/pixels';
+import { srgbByte } from '../../../src/core/image/srgb';
 import { describeImage, regionsOf } from '../../../src/scenes/render/describe';
 import { defaultView, examScene, furnaceScene } from '../../../src/core/render/scene';
 

@@ -2,11 +2,13 @@
  * Equal time and equal error (core/render/equalTime): every strategy renders the same small image
  * for the same time budget in a worker, and the panel shows what a rendering paper shows: the
  * images side by side with a zoomed inset where they differ most, relMSE against time on log–log
- * axes with the −1 slope every unbiased estimator follows, the ranking at equal time, and the time
+ * axes with the −1 slope every unbiased estimator follows and mean FLIP against time beside it,
+ * the ranking at equal time, and the time
  * each strategy needed to reach one error (equal error), read off the same runs.
  */
 import { useEffect, useMemo, useRef, useState } from 'react';
 import { Notice, Plot } from '../../../ui';
+import { ScrollBox } from '../../../ui/ScrollBox';
 import { readoutValue } from '../../../ui/Readout';
 import { summarizeSeries } from '../../../ui/summary';
 import { formatNumber, formatPlain } from '../../../core/format';
@@ -15,7 +17,7 @@ import { useWorkerJob } from '../../../workers';
 import { makeRenderWorker } from '../jobs';
 import { equalTimeArgs } from '../jobArgs';
 import type { RenderModel } from '../model';
-import { srgbByte } from '../pixels';
+import { srgbByte } from '../../../core/image/srgb';
 
 const BUDGETS = [250, 1000, 4000] as const;
 /** Side of the zoomed inset, in image pixels, and its magnification. */
@@ -95,6 +97,56 @@ function RunImage({ run, res, inset }: { run: StrategyRun; res: number; inset: [
   );
 }
 
+/**
+ * Each strategy's error against render time, log–log: relMSE after every pass, with the slope −1
+ * every unbiased estimator's relMSE follows drawn through the median strategy's curve; or mean
+ * FLIP where it was measured (passes 1, 2, 4, …, the last), which has no such law.
+ */
+function errorPlot(runs: readonly StrategyRun[], order: readonly number[], measure: 'relMse' | 'flip') {
+  const label = measure === 'relMse' ? 'relMSE' : 'mean FLIP';
+  const points = (r: StrategyRun) => {
+    const x: number[] = [];
+    const y: number[] = [];
+    r.curve.ms.forEach((ms, k) => {
+      if (Number.isFinite(r.curve[measure][k])) {
+        x.push(ms);
+        y.push(r.curve[measure][k]);
+      }
+    });
+    return { x, y };
+  };
+  const data: Record<string, unknown>[] = runs.map((r) => ({
+    ...points(r),
+    type: 'scatter',
+    mode: measure === 'relMse' ? 'lines' : 'lines+markers',
+    name: r.strategy,
+  }));
+  if (measure === 'relMse') {
+    // the −1 slope through the middle of the median strategy's curve
+    const mid = runs[order[Math.floor(order.length / 2)]];
+    const k = Math.floor(mid.curve.ms.length / 2);
+    const [x0, y0] = [mid.curve.ms[k], mid.curve.relMse[k]];
+    const xs = runs.flatMap((r) => r.curve.ms).filter((x) => x > 0);
+    const lo = Math.min(...xs),
+      hi = Math.max(...xs);
+    data.push({
+      x: [lo, hi],
+      y: [(y0 * x0) / lo, (y0 * x0) / hi],
+      type: 'scatter',
+      mode: 'lines',
+      name: 'slope −1',
+      line: { dash: 'dot', color: 'gray' },
+    });
+  }
+  const words = runs
+    .map((r) => {
+      const { x, y } = points(r);
+      return summarizeSeries(x, y, { xLabel: 'time (ms)', yLabel: `${r.strategy} ${label}`, logLog: true });
+    })
+    .join(' ');
+  return { data, words, label };
+}
+
 export function EqualTime({ m }: { m: RenderModel }) {
   const [budget, setBudget] = useState<number>(1000);
   const args = useMemo(() => equalTimeArgs(m, budget), [m, budget]);
@@ -109,41 +161,14 @@ export function EqualTime({ m }: { m: RenderModel }) {
     [done, args.res],
   );
 
-  const plot = useMemo(() => {
-    if (!done || !(exact && exact > 0)) return null;
-    const data: Record<string, unknown>[] = done.runs.map((r) => ({
-      x: r.curve.ms,
-      y: r.curve.relMse,
-      type: 'scatter',
-      mode: 'lines',
-      name: r.strategy,
-    }));
-    // the −1 slope through the middle of the median strategy's curve
-    const mid = done.runs[order[Math.floor(order.length / 2)]];
-    const k = Math.floor(mid.curve.ms.length / 2);
-    const [x0, y0] = [mid.curve.ms[k], mid.curve.relMse[k]];
-    const xs = done.runs.flatMap((r) => r.curve.ms).filter((x) => x > 0);
-    const lo = Math.min(...xs),
-      hi = Math.max(...xs);
-    data.push({
-      x: [lo, hi],
-      y: [(y0 * x0) / lo, (y0 * x0) / hi],
-      type: 'scatter',
-      mode: 'lines',
-      name: 'slope −1',
-      line: { dash: 'dot', color: 'gray' },
-    });
-    const words = done.runs
-      .map((r) =>
-        summarizeSeries(r.curve.ms, r.curve.relMse, {
-          xLabel: 'time (ms)',
-          yLabel: `${r.strategy} relMSE`,
-          logLog: true,
-        }),
-      )
-      .join(' ');
-    return { data, words };
-  }, [done, exact, order]);
+  const plot = useMemo(
+    () => (done && exact && exact > 0 ? errorPlot(done.runs, order, 'relMse') : null),
+    [done, exact, order],
+  );
+  const flipPlot = useMemo(
+    () => (done && exact && exact > 0 ? errorPlot(done.runs, order, 'flip') : null),
+    [done, exact, order],
+  );
 
   return (
     <div className="render-equal-time" data-testid="equal-time">
@@ -151,7 +176,8 @@ export function EqualTime({ m }: { m: RenderModel }) {
         Each strategy renders the same {args.res} × {args.res} image (one sample per pixel per pass) for the
         same time, in a worker, and is measured against the exact reference after every pass. An unbiased
         estimator&apos;s relMSE falls as 1/time: a line of slope −1 on these axes; the better strategy is the
-        lower line.
+        lower line. Mean FLIP, the perceived difference of the images as shown (8-bit sRGB, about 67 pixels
+        per degree), is measured after passes 1, 2, 4, 8, … and the last.
       </p>
       <label className="et-budget">
         Time per strategy{' '}
@@ -183,42 +209,48 @@ export function EqualTime({ m }: { m: RenderModel }) {
       ) : null}
       {done && exact ? (
         <>
-          <table className="data-table et-table">
-            <caption>
-              At equal time ({formatPlain(budget)} ms each), ranked by relMSE; and the time each needed to
-              reach the worst of them, relMSE {formatNumber(target, 3)} (equal error)
-            </caption>
-            <thead>
-              <tr>
-                <th scope="col">rank</th>
-                <th scope="col">strategy</th>
-                <th scope="col">samples per pixel</th>
-                <th scope="col">relMSE</th>
-                <th scope="col">time to relMSE {formatNumber(target, 3)}</th>
-              </tr>
-            </thead>
-            <tbody>
-              {order.map((k, rank) => {
-                const r = done.runs[k];
-                const t = timeToError(r, target);
-                return (
-                  <tr key={r.strategy}>
-                    <td>{rank + 1}</td>
-                    <th scope="row">{r.strategy}</th>
-                    <td data-testid={`et-spp-${r.strategy}`} data-value={r.spp}>
-                      {r.spp}
-                    </td>
-                    <td data-testid={`et-relmse-${r.strategy}`} data-value={readoutValue(r.relMse)}>
-                      {formatNumber(r.relMse, 4)}
-                    </td>
-                    <td data-testid={`et-time-${r.strategy}`} data-value={readoutValue(t)}>
-                      {t === null ? '—' : `${formatNumber(t, 3)} ms`}
-                    </td>
-                  </tr>
-                );
-              })}
-            </tbody>
-          </table>
+          <ScrollBox label="Strategies at equal time and equal error">
+            <table className="data-table et-table">
+              <caption>
+                At equal time ({formatPlain(budget)} ms each), ranked by relMSE; and the time each needed to
+                reach the worst of them, relMSE {formatNumber(target, 3)} (equal error)
+              </caption>
+              <thead>
+                <tr>
+                  <th scope="col">rank</th>
+                  <th scope="col">strategy</th>
+                  <th scope="col">samples per pixel</th>
+                  <th scope="col">relMSE</th>
+                  <th scope="col">mean FLIP</th>
+                  <th scope="col">time to relMSE {formatNumber(target, 3)}</th>
+                </tr>
+              </thead>
+              <tbody>
+                {order.map((k, rank) => {
+                  const r = done.runs[k];
+                  const t = timeToError(r, target);
+                  return (
+                    <tr key={r.strategy}>
+                      <td>{rank + 1}</td>
+                      <th scope="row">{r.strategy}</th>
+                      <td data-testid={`et-spp-${r.strategy}`} data-value={r.spp}>
+                        {r.spp}
+                      </td>
+                      <td data-testid={`et-relmse-${r.strategy}`} data-value={readoutValue(r.relMse)}>
+                        {formatNumber(r.relMse, 4)}
+                      </td>
+                      <td data-testid={`et-flip-${r.strategy}`} data-value={readoutValue(r.flip)}>
+                        {formatNumber(r.flip, 3)}
+                      </td>
+                      <td data-testid={`et-time-${r.strategy}`} data-value={readoutValue(t)}>
+                        {t === null ? '—' : `${formatNumber(t, 3)} ms`}
+                      </td>
+                    </tr>
+                  );
+                })}
+              </tbody>
+            </table>
+          </ScrollBox>
           <p data-testid="et-ranking" data-value={order.map((k) => done.runs[k].strategy).join(',')}>
             Best to worst at equal time: {order.map((k) => done.runs[k].strategy).join(', ')}.
           </p>
@@ -231,20 +263,28 @@ export function EqualTime({ m }: { m: RenderModel }) {
             Under each image, ×{Math.round(96 / INSET)} of the {INSET} × {INSET} pixels at ({inset[0]},{' '}
             {inset[1]}) where the images differ most from the reference.
           </p>
-          {plot ? (
-            <Plot
-              data={plot.data}
-              label="relMSE against render time for each strategy (log–log)"
-              description={plot.words}
-              testId="et-plot"
-              height={320}
-              layout={{
-                xaxis: { type: 'log', title: { text: 'time (ms)' } },
-                yaxis: { type: 'log', title: { text: 'relMSE' } },
-                margin: { l: 56, r: 16, t: 24, b: 44 },
-              }}
-            />
-          ) : null}
+          {(
+            [
+              [plot, 'et-plot'],
+              [flipPlot, 'et-flip-plot'],
+            ] as const
+          ).map(([p, testId]) =>
+            p ? (
+              <Plot
+                key={testId}
+                data={p.data}
+                label={`${p.label} against render time for each strategy (log–log)`}
+                description={p.words}
+                testId={testId}
+                height={320}
+                layout={{
+                  xaxis: { type: 'log', title: { text: 'time (ms)' } },
+                  yaxis: { type: 'log', title: { text: p.label } },
+                  margin: { l: 56, r: 16, t: 24, b: 44 },
+                }}
+              />
+            ) : null,
+          )}
         </>
       ) : null}
     </div>
