@@ -111,5 +111,17 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
     await page.reload();
     await expect(page.getByTestId('fold-equal-time')).toHaveAttribute('open', '');
     await expect(page.getByTestId('equal-time')).toBeVisible();
+    // two estimators pixel by pixel: the page's (mis-power) and area sampling agree; area without
+    // its cos θ_l is caught
+    await page.getByTestId('fold-welch').locator('summary').click();
+    await expect(page.getByTestId('welch-status')).toHaveText(/^Done: 8 runs/, { timeout: 60_000 });
+    await expect(page.getByTestId('welch-verdict')).toHaveAttribute('data-value', 'pass');
+    expect(Number(await readout(page, 'welch-rejected'))).toBe(0);
+    await openScene(page, '#/render?strategy=area&bias=no-cos-l&open=welch');
+    await page.getByTestId('welch-other').selectOption('solid-angle');
+    await expect(page.getByTestId('welch-verdict')).toHaveAttribute('data-value', 'fail', {
+      timeout: 60_000,
+    });
+    expect(Number(await readout(page, 'welch-rejected'))).toBeGreaterThan(0);
   });
 });

@@ -16,6 +16,28 @@ export interface PixelStats {
   count: ArrayLike<number>;
 }
 
+/**
+ * Per-pixel statistics of K independent renders of one image (each pixel of each a mean of its own
+ * samples, so the K values of a pixel are independent and identically distributed): their mean,
+ * unbiased variance and K.
+ */
+export function pixelStatsOfRuns(runs: readonly ArrayLike<number>[]): PixelStats {
+  const k = runs.length;
+  const n = k ? runs[0].length : 0;
+  const mean = new Float64Array(n);
+  const variance = new Float64Array(n);
+  for (let i = 0; i < n; i++) {
+    let s = 0;
+    for (const r of runs) s += r[i];
+    const m = s / k;
+    let ss = 0;
+    for (const r of runs) ss += (r[i] - m) ** 2;
+    mean[i] = m;
+    variance[i] = k > 1 ? ss / (k - 1) : NaN;
+  }
+  return { mean, variance, count: new Float64Array(n).fill(k) };
+}
+
 /** The map and its verdict. */
 export interface WelchMap {
   /** Two-sided p per pixel; NaN where the test cannot run (fewer than 2 samples, non-finite). */

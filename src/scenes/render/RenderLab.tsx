@@ -22,6 +22,7 @@ import { Controls } from './view/Controls';
 import { About } from './view/About';
 import { EqualTime } from './view/EqualTime';
 import { Spread } from './view/Spread';
+import { Welch } from './view/Welch';
 import { Fold } from '../../ui/Fold';
 import './render.css';
 
@@ -153,6 +154,13 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
         className="render-fold"
       >
         <Spread m={m} />
+      </Fold>
+      <Fold
+        name="welch"
+        summary="Two estimators, pixel by pixel: does every pixel converge to the same value? (Welch's t-test)"
+        className="render-fold"
+      >
+        <Welch m={m} />
       </Fold>
       <About />
     </div>

@@ -65,6 +65,18 @@ export function spreadArgs(m: RenderModel): SpreadArgs {
   };
 }
 
+/**
+ * Two strategies compared pixel by pixel: the model's estimator (its strategy and bias) and
+ * `other`, unbiased, each rendered `runs` times as for the spread.
+ */
+export interface WelchArgs extends SpreadArgs {
+  other: Strategy;
+}
+
+export function welchArgs(m: RenderModel, other: Strategy): WelchArgs {
+  return { ...spreadArgs(m), other };
+}
+
 export function referenceArgs(m: RenderModel): ReferenceArgs {
   return { spec: m.spec, view: m.view, res: m.res, trace: m.trace };
 }

@@ -8,7 +8,7 @@
  */
 import { exposeTasks, yieldToEventLoop, type ProgressFn } from '../../workers/expose';
 import { renderTileJob, type TileJobArgs, type TileResult } from '../../core/render/tileJob';
-import { inspectPixel } from '../../core/render/inspector';
+import { inspectPixel, TTEST_ALPHA } from '../../core/render/inspector';
 import { referenceImage } from '../../core/render/referenceImage';
 import { buildScene } from '../../core/render/scene';
 import { runForTime, type StrategyRun } from '../../core/render/equalTime';
@@ -19,7 +19,9 @@ import {
   type InspectArgs,
   type ReferenceArgs,
   type SpreadArgs,
+  type WelchArgs,
 } from './jobArgs';
+import { welchOfStrategies } from '../../core/render/welchCompare';
 
 const tasks = {
   tile: (a: TileJobArgs, progress: ProgressFn<TileResult>) =>
@@ -36,6 +38,18 @@ const tasks = {
     const runs = independentRuns(scene, a.view, a.res, a.trace, a.seed, a.runs, a.spp);
     return expectedError(runs, reference.values);
   },
+  welch: (a: WelchArgs) =>
+    welchOfStrategies(
+      buildScene(a.spec),
+      a.view,
+      a.res,
+      a.trace,
+      a.other,
+      a.seed,
+      a.runs,
+      a.spp,
+      TTEST_ALPHA,
+    ),
   equalTime: async (a: EqualTimeArgs, progress: ProgressFn<{ finished: number }>) => {
     const scene = buildScene(a.spec);
     const reference = referenceImage(scene, a.view, a.res, a.res, a.trace.bounces);

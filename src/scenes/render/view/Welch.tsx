@@ -1,0 +1,101 @@
+/**
+ * Two estimators, pixel by pixel (core/verify/welchMap; Jung, Hanika and Dachsbacher, JCGT 2020):
+ * the page's estimator (its strategy, and its bias if one is chosen) and another strategy, unbiased,
+ * each render the image K times in a worker; every pixel gets a Welch t-test of the two means, and
+ * the images agree when no pixel's p falls below the Šidák-corrected level, so that an unbiased
+ * pair raises a false alarm anywhere in the image with probability α only. The map shows each
+ * pixel's −log₁₀ p in viridis, yellow at the corrected level and beyond.
+ */
+import { useEffect, useMemo, useRef, useState } from 'react';
+import { Readout } from '../../../ui';
+import { formatNumber } from '../../../core/format';
+import { colorizeInto } from '../../../core/colormap';
+import { STRATEGIES, type Strategy } from '../../../core/render/directLight';
+import { useWorkerJob } from '../../../workers';
+import { makeRenderWorker } from '../jobs';
+import { welchArgs } from '../jobArgs';
+import type { RenderModel } from '../model';
+
+export function Welch({ m }: { m: RenderModel }) {
+  const [other, setOther] = useState<Strategy>(m.trace.strategy === 'area' ? 'solid-angle' : 'area');
+  const args = useMemo(() => welchArgs(m, other), [m, other]);
+  const job = useWorkerJob(makeRenderWorker, 'welch', args, { delayMs: 100 });
+  const r = job.result;
+  const canvas = useRef<HTMLCanvasElement>(null);
+  const top = r ? -Math.log10(r.sidakAlpha) : 1;
+  useEffect(() => {
+    const g = canvas.current?.getContext('2d');
+    if (!g || !r) return;
+    const img = g.createImageData(args.res, args.res);
+    const score = r.pValues.map((p) => (Number.isFinite(p) ? -Math.log10(Math.max(p, 1e-300)) : 0));
+    colorizeInto(score, score.length, 0, top, img.data);
+    g.putImageData(img, 0, 0);
+  }, [r, top, args.res]);
+  const mine = `${m.trace.strategy}${m.trace.bias && m.trace.bias !== 'none' ? ` (bias ${m.trace.bias})` : ''}`;
+  return (
+    <div data-testid="welch">
+      <p>
+        The page&apos;s estimator, {mine}, and another, unbiased, each render the same {args.res} × {args.res}{' '}
+        image {args.runs} times at {args.spp} samples per pixel. Each pixel&apos;s two means are compared by
+        Welch&apos;s t-test; the images agree when no pixel is below the level that keeps the chance of a
+        false alarm anywhere in the image at α = {r ? r.alpha : 0.01} (Šidák&apos;s correction over the pixels
+        tested). The test takes each run&apos;s pixel value to be nearly normal: true for strategies that
+        sample the light itself, not for those that find a small light only now and then (uniform, cosine, the
+        BSDF&apos;s lobe), whose runs of {args.spp} samples can raise false alarms.
+      </p>
+      <label>
+        Compare with{' '}
+        <select
+          value={other}
+          onChange={(e) => setOther(e.currentTarget.value as Strategy)}
+          data-testid="welch-other"
+        >
+          {STRATEGIES.map((s) => (
+            <option key={s} value={s}>
+              {s}
+            </option>
+          ))}
+        </select>
+      </label>
+      <p role="status" data-testid="welch-status">
+        {job.error
+          ? `The comparison stopped: ${job.error.message}`
+          : r
+            ? `Done: ${args.runs} runs of each, ${r.tested} pixels tested.`
+            : 'Rendering both estimators…'}
+      </p>
+      {r ? (
+        <div className="render-spread">
+          <figure className="et-image">
+            <canvas
+              ref={canvas}
+              width={args.res}
+              height={args.res}
+              role="img"
+              aria-label={`Welch t-test of ${mine} against ${other}, pixel by pixel: −log10 p in viridis, from 0 (dark purple) to the corrected level ${formatNumber(top, 3)} and beyond (yellow); ${r.rejected} of ${r.tested} pixels below it`}
+            />
+            <figcaption>−log₁₀ p, 0 … {formatNumber(top, 3)}</figcaption>
+          </figure>
+          <div className="readouts">
+            <Readout id="welch-min-p" label="smallest p" value={r.minP} digits={3} />
+            <Readout
+              id="welch-sidak-alpha"
+              label="corrected level"
+              value={r.sidakAlpha}
+              digits={3}
+              note={`1 − (1 − ${r.alpha})^(1/${r.tested})`}
+            />
+            <Readout id="welch-rejected" label="pixels below it" value={r.rejected} digits={6} />
+          </div>
+        </div>
+      ) : null}
+      {r ? (
+        <p data-testid="welch-verdict" data-value={r.pass ? 'pass' : 'fail'}>
+          {r.pass
+            ? `No pixel differs: ${mine} and ${other} converge to the same image, as two unbiased estimators must.`
+            : `${r.rejected} pixel${r.rejected === 1 ? '' : 's'} differ beyond chance: ${mine} and ${other} do not converge to the same image (one is biased), unless one of them finds the light too rarely for its runs to be nearly normal.`}
+        </p>
+      ) : null}
+    </div>
+  );
+}
