@@ -5,7 +5,7 @@
 // and the page's logic are unit tests (tests/core/render/, tests/scenes/render/); the page as a
 // whole is in catalogue.spec.ts; the FLIP of downloaded images is checked on #/area-light
 // (area-light.spec.ts).
-import { test, expect, openScene, readout } from './fixtures';
+import { test, expect, openScene, readout, waitForReadout } from './fixtures';
 import { parseParams } from '../../src/kit/params';
 import { schema } from '../../src/scenes/render/params';
 import { buildRenderModel } from '../../src/scenes/render/model';
@@ -75,6 +75,12 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
     });
     expect(lit).toBeGreaterThan(64 * 64 * 0.5);
     await expect(page.getByTestId('render-description')).toContainText('after 8 samples per pixel');
+    // the finished image measured against the reference: FLIP of the pixels shown, and its downloads
+    await page.getByTestId('measure-details').locator('summary').click();
+    const flip = Number(
+      await waitForReadout(page, 'flip-mean', (v) => Number.isFinite(Number(v)) && v !== '', 30_000),
+    );
+    expect(flip > 0 && flip < 1, `flip-mean = ${flip}`).toBe(true);
   });
 
   await test.step('equal time and the error from independent runs: folds that mount on open and stay open in the link', async () => {

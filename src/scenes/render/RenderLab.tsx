@@ -24,6 +24,8 @@ import { EqualTime } from './view/EqualTime';
 import { Spread } from './view/Spread';
 import { Welch } from './view/Welch';
 import { Fold } from '../../ui/Fold';
+import { ImageMeasure } from '../../ui/ImageMeasure';
+import { renderImageSet } from './imageSet';
 import './render.css';
 
 /** The pixel under a click on the canvas (drawn at any CSS size). */
@@ -70,6 +72,14 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
     if (px) set({ px });
   };
   const description = describeImage(scene, m.view, m.res, progress);
+  // once the run is done: the pixels shown, measured against the reference (FLIP, PNG downloads)
+  const measured = useMemo(() => {
+    if (!progress.done || !reference) return null;
+    const shown = canvasRef.current?.getContext('2d')?.getImageData(0, 0, m.res, m.res).data;
+    return shown && shown.length === 4 * m.res * m.res
+      ? renderImageSet(shown, reference, m.res, progress.spp, progress.relMse, m.trace.strategy)
+      : null;
+  }, [progress.done, progress.spp, progress.relMse, reference, m.res, m.trace.strategy]);
   const mark = m.px
     ? { left: `${((m.px[0] + 0.5) / m.res) * 100}%`, top: `${((m.px[1] + 0.5) / m.res) * 100}%` }
     : null;
@@ -132,6 +142,10 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
                   ? 'Waiting until the image is on screen.'
                   : `Rendering… ${progress.spp} of ${m.spp} samples per pixel; mean ${formatNumber(progress.mean, 4)}.`}
           </p>
+          <ImageMeasure
+            set={measured}
+            summary="Measure the finished image against the exact reference: FLIP, relMSE, error map, PNG downloads"
+          />
         </figure>
         <section className="render-inspector-panel" aria-labelledby="render-inspector-title">
           <h2 id="render-inspector-title">The pixel inspector</h2>
