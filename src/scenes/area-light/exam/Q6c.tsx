@@ -2,6 +2,7 @@
  * Q6(c): the pdf and the Monte Carlo estimator of uniform area sampling, worked through the first
  * four samples of the seed, then the live answer (Answer6c).
  */
+import { TTestLine } from '../../../ui/TTestLine';
 import { memo, useMemo, type ReactNode } from 'react';
 import type { LightStrategy } from '../../../core/lights';
 import { Derivation, ExamPart, LiveAnswer, MathTex, Readout, Revealed } from '../../../ui';
@@ -182,6 +183,15 @@ export const Answer6c = memo(function Answer6c({
           digits={7}
         />
       </div>
+      {!pending && Number.isFinite(target) && Number.isFinite(chosen.estimate) ? (
+        <TTestLine
+          estimate={chosen.estimate}
+          stderr={chosen.stderr}
+          n={chosen.n}
+          exact={target}
+          against={model.occluder ? 'the occluded reference' : 'Lambert’s exact irradiance'}
+        />
+      ) : null}
       <p className="al-verdict" data-testid="al-verdict">
         {pending ? (
           <>

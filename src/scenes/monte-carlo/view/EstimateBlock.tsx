@@ -6,6 +6,7 @@
 import type { McEstimate } from '../../../core/estimators';
 import { formatNumber, Notice, Readout } from '../../../ui';
 import { formatCount } from '../../../ui/format';
+import { TTestLine } from '../../../ui/TTestLine';
 import type { WorkerJob } from '../../../workers';
 import type { PdfKind, Strategy } from '../params';
 import { estimateHasZeroVariance } from '../zeroVariance';
@@ -104,6 +105,17 @@ export function EstimateBlock({
           />
         ) : null}
       </div>
+      {/* drawn independently from p: the estimate can be t-tested against the exact integral */}
+      {est &&
+      value !== null &&
+      stderr !== null &&
+      exact !== null &&
+      Number.isFinite(exact) &&
+      !rmse &&
+      notFromP === null &&
+      given === null ? (
+        <TTestLine estimate={value} stderr={stderr} n={est.n} exact={exact} against="the exact integral" />
+      ) : null}
       {rmse ? (
         <Notice kind="warn" testId="stderr-not-error">
           {SEQ_NAMES[rmse.seq]} points are not independent, so the standard error s/√N is not an error
