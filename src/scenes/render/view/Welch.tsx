@@ -1,37 +1,59 @@
 /**
  * Two estimators, pixel by pixel (core/verify/welchMap; Jung, Hanika and Dachsbacher, JCGT 2020):
  * the page's estimator (its strategy, and its bias if one is chosen) and another strategy, unbiased,
- * each render the image K times in a worker; every pixel gets a Welch t-test of the two means, and
+ * each render the image K times in a worker (both strategies that sample the light: runs of the others
+ * are too far from normal for the test); every pixel gets a Welch t-test of the two means, and
  * the images agree when no pixel's p falls below the Šidák-corrected level, so that an unbiased
  * pair raises a false alarm anywhere in the image with probability α only. The map shows each
  * pixel's −log₁₀ p in viridis, yellow at the corrected level and beyond.
  */
 import { useEffect, useMemo, useRef, useState } from 'react';
-import { Readout } from '../../../ui';
+import { Notice, Readout } from '../../../ui';
 import { formatNumber } from '../../../core/format';
 import { colorizeInto } from '../../../core/colormap';
-import { STRATEGIES, type Strategy } from '../../../core/render/directLight';
+import type { Strategy } from '../../../core/render/directLight';
 import { useWorkerJob } from '../../../workers';
 import { makeRenderWorker } from '../jobs';
-import { welchArgs } from '../jobArgs';
+import { spreadArgs, welchArgs } from '../jobArgs';
 import type { RenderModel } from '../model';
+
+/**
+ * The strategies whose runs of a few samples give nearly normal pixel values: each sample aims at
+ * the light. Uniform, cosine and BSDF sampling find a small light only now and then, so most of
+ * their runs see it never or once, and a t-test of such runs raises false alarms.
+ */
+const LIGHT_SAMPLING: readonly Strategy[] = ['area', 'solid-angle', 'mis-balance', 'mis-power'];
 
 export function Welch({ m }: { m: RenderModel }) {
   const [other, setOther] = useState<Strategy>(m.trace.strategy === 'area' ? 'solid-angle' : 'area');
-  const args = useMemo(() => welchArgs(m, other), [m, other]);
+  const testable = LIGHT_SAMPLING.includes(m.trace.strategy);
+  const args = useMemo(() => (testable ? welchArgs(m, other) : null), [m, other, testable]);
   const job = useWorkerJob(makeRenderWorker, 'welch', args, { delayMs: 100 });
-  const r = job.result;
+  const r = args ? job.result : undefined;
+  const res = args?.res ?? 0;
   const canvas = useRef<HTMLCanvasElement>(null);
   const top = r ? -Math.log10(r.sidakAlpha) : 1;
   useEffect(() => {
     const g = canvas.current?.getContext('2d');
     if (!g || !r) return;
-    const img = g.createImageData(args.res, args.res);
+    const img = g.createImageData(res, res);
     const score = r.pValues.map((p) => (Number.isFinite(p) ? -Math.log10(Math.max(p, 1e-300)) : 0));
     colorizeInto(score, score.length, 0, top, img.data);
     g.putImageData(img, 0, 0);
-  }, [r, top, args.res]);
+  }, [r, top, res]);
   const mine = `${m.trace.strategy}${m.trace.bias && m.trace.bias !== 'none' ? ` (bias ${m.trace.bias})` : ''}`;
+  if (!args)
+    return (
+      <div data-testid="welch">
+        <Notice kind="info" testId="welch-not-testable">
+          {m.trace.strategy} sampling finds the small light only now and then: in runs of {spreadArgs(m).spp}{' '}
+          samples most pixels see it never or once, so a run&apos;s pixel value is far from normal and
+          Welch&apos;s test would raise false alarms. Choose a strategy that samples the light (area,
+          solid-angle or MIS) to compare whole images, or test one pixel against its exact value with the
+          pixel inspector&apos;s t-test, over as many samples as its <code>pn</code> asks.
+        </Notice>
+      </div>
+    );
   return (
     <div data-testid="welch">
       <p>
@@ -39,9 +61,8 @@ export function Welch({ m }: { m: RenderModel }) {
         image {args.runs} times at {args.spp} samples per pixel. Each pixel&apos;s two means are compared by
         Welch&apos;s t-test; the images agree when no pixel is below the level that keeps the chance of a
         false alarm anywhere in the image at α = {r ? r.alpha : 0.01} (Šidák&apos;s correction over the pixels
-        tested). The test takes each run&apos;s pixel value to be nearly normal: true for strategies that
-        sample the light itself, not for those that find a small light only now and then (uniform, cosine, the
-        BSDF&apos;s lobe), whose runs of {args.spp} samples can raise false alarms.
+        tested). The test takes each run&apos;s pixel value to be nearly normal, which holds for the
+        strategies that sample the light itself, offered here.
       </p>
       <label>
         Compare with{' '}
@@ -50,7 +71,7 @@ export function Welch({ m }: { m: RenderModel }) {
           onChange={(e) => setOther(e.currentTarget.value as Strategy)}
           data-testid="welch-other"
         >
-          {STRATEGIES.map((s) => (
+          {LIGHT_SAMPLING.map((s) => (
             <option key={s} value={s}>
               {s}
             </option>
@@ -93,7 +114,7 @@ export function Welch({ m }: { m: RenderModel }) {
         <p data-testid="welch-verdict" data-value={r.pass ? 'pass' : 'fail'}>
           {r.pass
             ? `No pixel differs: ${mine} and ${other} converge to the same image, as two unbiased estimators must.`
-            : `${r.rejected} pixel${r.rejected === 1 ? '' : 's'} differ beyond chance: ${mine} and ${other} do not converge to the same image (one is biased), unless one of them finds the light too rarely for its runs to be nearly normal.`}
+            : `${r.rejected} pixel${r.rejected === 1 ? '' : 's'} differ beyond chance: ${mine} and ${other} do not converge to the same image, so one of them is biased.`}
         </p>
       ) : null}
     </div>
