@@ -5,33 +5,25 @@
  * runs actually made against the exact reference. They agree for an unbiased estimator; a biased
  * one (`bias=`) makes more error than its spread shows.
  */
-import { useEffect, useMemo, useRef } from 'react';
+import { useMemo } from 'react';
 import { Notice, Readout } from '../../../ui';
 import { formatNumber } from '../../../core/format';
-import { colorizeInto } from '../../../core/colormap';
 import { useWorkerJob } from '../../../workers';
 import { makeRenderWorker } from '../jobs';
 import { spreadArgs } from '../jobArgs';
 import type { RenderModel } from '../model';
+import { MapFigure } from './MapFigure';
 
 export function Spread({ m }: { m: RenderModel }) {
   const args = useMemo(() => spreadArgs(m), [m]);
   const job = useWorkerJob(makeRenderWorker, 'spread', args, { delayMs: 100 });
   const r = job.result;
-  const canvas = useRef<HTMLCanvasElement>(null);
   const max = useMemo(() => {
     if (!r) return 0;
     let x = 0;
     for (const v of r.sd) if (v > x) x = v;
     return x;
   }, [r]);
-  useEffect(() => {
-    const g = canvas.current?.getContext('2d');
-    if (!g || !r) return;
-    const img = g.createImageData(args.res, args.res);
-    colorizeInto(r.sd, r.sd.length, 0, max, img.data);
-    g.putImageData(img, 0, 0);
-  }, [r, max, args.res]);
   const ratio = r ? r.measuredMse / r.expectedMse : NaN;
   return (
     <div data-testid="spread">
@@ -50,16 +42,13 @@ export function Spread({ m }: { m: RenderModel }) {
       </p>
       {r ? (
         <div className="render-spread">
-          <figure className="et-image">
-            <canvas
-              ref={canvas}
-              width={args.res}
-              height={args.res}
-              role="img"
-              aria-label={`Per-pixel standard deviation over ${args.runs} runs, viridis from 0 (dark purple) to ${formatNumber(max, 3)} (yellow)`}
-            />
-            <figcaption>standard deviation, 0 … {formatNumber(max, 3)}</figcaption>
-          </figure>
+          <MapFigure
+            values={r.sd}
+            res={args.res}
+            max={max}
+            label={`Per-pixel standard deviation over ${args.runs} runs, viridis from 0 (dark purple) to ${formatNumber(max, 3)} (yellow)`}
+            caption={`standard deviation, 0 … ${formatNumber(max, 3)}`}
+          />
           <div className="readouts">
             <Readout
               id="spread-expected-mse"

@@ -7,15 +7,15 @@
  * pair raises a false alarm anywhere in the image with probability α only. The map shows each
  * pixel's −log₁₀ p in viridis, yellow at the corrected level and beyond.
  */
-import { useEffect, useMemo, useRef, useState } from 'react';
+import { useMemo, useState } from 'react';
 import { Notice, Readout } from '../../../ui';
 import { formatNumber } from '../../../core/format';
-import { colorizeInto } from '../../../core/colormap';
 import type { Strategy } from '../../../core/render/directLight';
 import { useWorkerJob } from '../../../workers';
 import { makeRenderWorker } from '../jobs';
 import { spreadArgs, welchArgs } from '../jobArgs';
 import type { RenderModel } from '../model';
+import { MapFigure } from './MapFigure';
 
 /**
  * The strategies whose runs of a few samples give nearly normal pixel values: each sample aims at
@@ -31,16 +31,11 @@ export function Welch({ m }: { m: RenderModel }) {
   const job = useWorkerJob(makeRenderWorker, 'welch', args, { delayMs: 100 });
   const r = args ? job.result : undefined;
   const res = args?.res ?? 0;
-  const canvas = useRef<HTMLCanvasElement>(null);
   const top = r ? -Math.log10(r.sidakAlpha) : 1;
-  useEffect(() => {
-    const g = canvas.current?.getContext('2d');
-    if (!g || !r) return;
-    const img = g.createImageData(res, res);
-    const score = r.pValues.map((p) => (Number.isFinite(p) ? -Math.log10(Math.max(p, 1e-300)) : 0));
-    colorizeInto(score, score.length, 0, top, img.data);
-    g.putImageData(img, 0, 0);
-  }, [r, top, res]);
+  const score = useMemo(
+    () => (r ? r.pValues.map((p) => (Number.isFinite(p) ? -Math.log10(Math.max(p, 1e-300)) : 0)) : null),
+    [r],
+  );
   const mine = `${m.trace.strategy}${m.trace.bias && m.trace.bias !== 'none' ? ` (bias ${m.trace.bias})` : ''}`;
   if (!args)
     return (
@@ -87,16 +82,13 @@ export function Welch({ m }: { m: RenderModel }) {
       </p>
       {r ? (
         <div className="render-spread">
-          <figure className="et-image">
-            <canvas
-              ref={canvas}
-              width={args.res}
-              height={args.res}
-              role="img"
-              aria-label={`Welch t-test of ${mine} against ${other}, pixel by pixel: −log10 p in viridis, from 0 (dark purple) to the corrected level ${formatNumber(top, 3)} and beyond (yellow); ${r.rejected} of ${r.tested} pixels below it`}
-            />
-            <figcaption>−log₁₀ p, 0 … {formatNumber(top, 3)}</figcaption>
-          </figure>
+          <MapFigure
+            values={score ?? new Float64Array(0)}
+            res={res}
+            max={top}
+            label={`Welch t-test of ${mine} against ${other}, pixel by pixel: −log10 p in viridis, from 0 (dark purple) to the corrected level ${formatNumber(top, 3)} and beyond (yellow); ${r.rejected} of ${r.tested} pixels below it`}
+            caption={`−log₁₀ p, 0 … ${formatNumber(top, 3)}`}
+          />
           <div className="readouts">
             <Readout id="welch-min-p" label="smallest p" value={r.minP} digits={3} />
             <Readout
