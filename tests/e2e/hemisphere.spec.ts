@@ -47,7 +47,8 @@ async function expectMatchesCore(
   if (built.tab && !built.tab.ok) throw new Error(built.tab.message);
   const lobe = built.lobe!;
   const core = computeDrawStats(lobe, cosTheta, 'independent', seed, n);
-  expect(Number(await readout(page, lobeId === 'exam' ? 'k' : 'k-chosen'))).toBe(lobe.k);
+  // a link followed on the open page renders a moment later: wait for this lobe's k
+  await waitForReadout(page, lobeId === 'exam' ? 'k' : 'k-chosen', (v) => Number(v) === lobe.k);
   // a link followed on the open page: the previous draw's "ready" may be seen before the new run
   // starts, so wait for this draw's count (each call here has its own n), then for its statistics
   await waitForReadout(page, 'samples', (v) => Number(v) === n);
