@@ -4,14 +4,19 @@
  * where an estimator is noisy without a reference image, and its square averaged over the image
  * is the expected MSE of one run when the estimator is unbiased (Celarek, Jakob, Wimmer and
  * Lehtinen, "Quantifying the Error of Light Transport Algorithms", EGSR 2019, measure error this
- * way from independent runs). Welford's update per pixel, one pass over the runs.
+ * way from independent runs).
  */
 
-/** Per-pixel sample standard deviation over K ≥ 2 runs of equal length; NaN where a run is not finite. */
-export function stdDevImage(runs: readonly ArrayLike<number>[]): Float64Array {
+/**
+ * Per-pixel mean and unbiased sample variance over K runs of equal length (the variance NaN for one
+ * run), by Welford's update, one pass over the runs.
+ */
+export function pixelMeanVariance(runs: readonly ArrayLike<number>[]): {
+  mean: Float64Array;
+  variance: Float64Array;
+} {
   const k = runs.length;
-  if (k < 2) throw new RangeError(`a standard-deviation image needs at least 2 runs, not ${k}`);
-  const n = runs[0].length;
+  const n = k ? runs[0].length : 0;
   for (const r of runs)
     if (r.length !== n) throw new RangeError(`runs must have one size: ${n} values against ${r.length}`);
   const mean = new Float64Array(n);
@@ -25,9 +30,16 @@ export function stdDevImage(runs: readonly ArrayLike<number>[]): Float64Array {
       m2[i] += d * (x - mean[i]);
     }
   }
-  const out = new Float64Array(n);
-  for (let i = 0; i < n; i++) out[i] = Math.sqrt(m2[i] / (k - 1));
-  return out;
+  const variance = new Float64Array(n);
+  for (let i = 0; i < n; i++) variance[i] = k > 1 ? m2[i] / (k - 1) : NaN;
+  return { mean, variance };
+}
+
+/** Per-pixel sample standard deviation over K ≥ 2 runs of equal length; NaN where a run is not finite. */
+export function stdDevImage(runs: readonly ArrayLike<number>[]): Float64Array {
+  const k = runs.length;
+  if (k < 2) throw new RangeError(`a standard-deviation image needs at least 2 runs, not ${k}`);
+  return pixelMeanVariance(runs).variance.map(Math.sqrt);
 }
 
 /** The mean of the squared per-pixel standard deviations: the expected MSE of one run if unbiased. */

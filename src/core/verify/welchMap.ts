@@ -8,6 +8,7 @@
  */
 import { sidakAlpha } from './chi2';
 import { welchStatistic } from './ttest';
+import { pixelMeanVariance } from '../image/stdDevImage';
 
 /** Per-pixel statistics of one image stack: mean, unbiased variance s² of the samples, count. */
 export interface PixelStats {
@@ -22,20 +23,8 @@ export interface PixelStats {
  * unbiased variance and K.
  */
 export function pixelStatsOfRuns(runs: readonly ArrayLike<number>[]): PixelStats {
-  const k = runs.length;
-  const n = k ? runs[0].length : 0;
-  const mean = new Float64Array(n);
-  const variance = new Float64Array(n);
-  for (let i = 0; i < n; i++) {
-    let s = 0;
-    for (const r of runs) s += r[i];
-    const m = s / k;
-    let ss = 0;
-    for (const r of runs) ss += (r[i] - m) ** 2;
-    mean[i] = m;
-    variance[i] = k > 1 ? ss / (k - 1) : NaN;
-  }
-  return { mean, variance, count: new Float64Array(n).fill(k) };
+  const { mean, variance } = pixelMeanVariance(runs);
+  return { mean, variance, count: new Float64Array(mean.length).fill(runs.length) };
 }
 
 /** The map and its verdict. */

@@ -13,7 +13,7 @@ import { formatNumber } from '../../../core/format';
 import type { Strategy } from '../../../core/render/directLight';
 import { useWorkerJob } from '../../../workers';
 import { makeRenderWorker } from '../jobs';
-import { spreadArgs, welchArgs } from '../jobArgs';
+import { SPREAD_SPP, welchArgs } from '../jobArgs';
 import type { RenderModel } from '../model';
 import { MapFigure } from './MapFigure';
 
@@ -41,11 +41,11 @@ export function Welch({ m }: { m: RenderModel }) {
     return (
       <div data-testid="welch">
         <Notice kind="info" testId="welch-not-testable">
-          {m.trace.strategy} sampling finds the small light only now and then: in runs of {spreadArgs(m).spp}{' '}
-          samples most pixels see it never or once, so a run&apos;s pixel value is far from normal and
-          Welch&apos;s test would raise false alarms. Choose a strategy that samples the light (area,
-          solid-angle or MIS) to compare whole images, or test one pixel against its exact value with the
-          pixel inspector&apos;s t-test, over as many samples as its <code>pn</code> asks.
+          {m.trace.strategy} sampling finds the small light only now and then: in runs of {SPREAD_SPP} samples
+          most pixels see it never or once, so a run&apos;s pixel value is far from normal and Welch&apos;s
+          test would raise false alarms. Choose a strategy that samples the light (area, solid-angle or MIS)
+          to compare whole images, or test one pixel against its exact value with the pixel inspector&apos;s
+          t-test, over as many samples as its <code>pn</code> asks.
         </Notice>
       </div>
     );
