@@ -1,10 +1,12 @@
 /**
- * The render lab (#/render): a progressive path tracer of the exam's own objects on the core's
- * float64 CPU renderer in workers, where any pixel opens onto the numbers behind it (the ray, the
- * quadratic, the texture lookup, the estimator and its reference). The image and the inspector come
- * first; the settings and the explanations are folded below them.
+ * The render lab (#/render): a progressive path tracer of the exam's own objects, drawn by a WebGL2
+ * fragment shader in float32 where the browser allows (./gpu) or by the core's float64 renderer in
+ * workers (`renderer=cpu`, the ground truth), where any pixel opens onto the numbers behind it (the
+ * ray, the quadratic, the texture lookup, the estimator and its reference; always the CPU's). The
+ * image and the inspector come first; the settings, the comparison of the two renderers and the
+ * explanations are folded below them.
  */
-import { useCallback, useEffect, useMemo, useRef, useState, type MouseEvent } from 'react';
+import { lazy, useCallback, useEffect, useMemo, useRef, useState, type MouseEvent } from 'react';
 import type { SceneProps } from '../../kit/scene';
 import { Notice, Readout } from '../../ui';
 import { observeVisibility } from '../../ui/useInView';
@@ -16,6 +18,9 @@ import { inspectArgs, referenceArgs } from './jobArgs';
 import { buildRenderModel } from './model';
 import { describeImage } from './describe';
 import { useProgressiveRender } from './useProgressiveRender';
+import { useGpuRender } from './gpu/useGpuRender';
+import { probeGpuSupport } from './gpu/gpuRenderer';
+import { chooseRenderer } from './gpu/fallback';
 import { schema, type RenderParams } from './params';
 import { Inspector } from './view/Inspector';
 import { Controls } from './view/Controls';
@@ -26,7 +31,10 @@ import { Welch } from './view/Welch';
 import { Fold } from '../../ui/Fold';
 import { ImageMeasure } from '../../ui/ImageMeasure';
 import { renderImageSet } from './imageSet';
+import { copyMeans } from './pixels';
 import './render.css';
+
+const Compare = lazy(() => import('./view/Compare'));
 
 /** The pixel under a click on the canvas (drawn at any CSS size). */
 export function pixelAt(
@@ -46,16 +54,29 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
   const set = useCallback((p: Partial<RenderParams>) => setParams(p), [setParams]);
   const m = useMemo(() => buildRenderModel(params), [params]);
   const scene = useMemo(() => buildScene(m.spec), [m.spec]);
-  const canvasRef = useRef<HTMLCanvasElement>(null);
+  const cpuCanvas = useRef<HTMLCanvasElement>(null);
+  const gpuCanvas = useRef<HTMLCanvasElement>(null);
+  const boxRef = useRef<HTMLDivElement>(null);
   const [visible, setVisible] = useState(false);
   useEffect(() => {
-    const c = canvasRef.current;
+    const c = boxRef.current;
     return c ? observeVisibility(c, setVisible) : undefined;
   }, []);
+  const support = useMemo(() => probeGpuSupport(), []);
+  const [failure, setFailure] = useState<string | null>(null);
+  const choice = chooseRenderer(m.renderer, support, failure);
+  const onGpu = choice.renderer === 'gpu';
 
   const refJob = useWorkerJob(makeRenderWorker, 'reference', referenceArgs(m), { delayMs: 150 });
   const reference = refJob.result?.values ?? null;
-  const progress = useProgressiveRender(canvasRef, m, params.play && visible, reference);
+  const cpuProgress = useProgressiveRender(cpuCanvas, m, !onGpu && visible, m.target, reference);
+  const gpuProgress = useGpuRender(gpuCanvas, m, onGpu, visible, m.target, reference, setFailure);
+  const progress = onGpu ? gpuProgress : cpuProgress;
+  // pausing writes where the run is into the link (t, in samples per pixel), as every timeline does
+  const pause = useCallback(
+    (p: Partial<RenderParams>) => setParams(p.play === false ? { ...p, t: progress.spp } : p),
+    [setParams, progress.spp],
+  );
   const iArgs = inspectArgs(m);
   // (without a pixel the job is disabled; its arguments are then a placeholder)
   const inspect = useWorkerJob(
@@ -71,21 +92,27 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
     const px = pixelAt(e.clientX - box.left, e.clientY - box.top, box.width, box.height, m.res);
     if (px) set({ px });
   };
-  const description = describeImage(scene, m.view, m.res, progress);
+  const description = describeImage(scene, m.view, m.res, { spp: progress.statsSpp, mean: progress.mean });
   // once the run is done: the pixels shown, measured against the reference (FLIP, PNG downloads)
   const measured = useMemo(() => {
-    if (!progress.done || !reference) return null;
-    const shown = canvasRef.current?.getContext('2d')?.getImageData(0, 0, m.res, m.res).data;
-    return shown && shown.length === 4 * m.res * m.res
-      ? renderImageSet(shown, reference, m.res, progress.spp, progress.relMse, m.trace.strategy)
-      : null;
-  }, [progress.done, progress.spp, progress.relMse, reference, m.res, m.trace.strategy]);
+    const means = progress.means;
+    if (!progress.done || !reference || !means || means.length !== m.res * m.res) return null;
+    const shown = new Uint8ClampedArray(4 * means.length);
+    copyMeans(means, shown);
+    return renderImageSet(shown, reference, m.res, progress.spp, progress.relMse, m.trace.strategy);
+  }, [progress.done, progress.means, progress.spp, progress.relMse, reference, m.res, m.trace.strategy]);
   const mark = m.px
     ? { left: `${((m.px[0] + 0.5) / m.res) * 100}%`, top: `${((m.px[1] + 0.5) / m.res) * 100}%` }
     : null;
 
   return (
     <div className="render-lab">
+      {choice.unavailable ? (
+        <Notice kind="warn" testId="render-gpu-unavailable">
+          The GPU renderer is not available: {choice.unavailable}. The image is rendered on the CPU (float64,
+          in workers) instead.
+        </Notice>
+      ) : null}
       {m.problems.map((p) => (
         <Notice key={p.name} kind="warn" testId={`render-problem-${p.name}`}>
           <code>{p.name}</code> {p.message}
@@ -93,9 +120,10 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
       ))}
       <div className="render-top">
         <figure className="render-figure">
-          <div className="render-canvas-box">
+          <div className="render-canvas-box" ref={boxRef}>
             <canvas
-              ref={canvasRef}
+              key={choice.renderer}
+              ref={onGpu ? gpuCanvas : cpuCanvas}
               width={m.res}
               height={m.res}
               className="render-canvas"
@@ -115,7 +143,16 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
               value={progress.samplesPerSecond}
               digits={3}
             />
-            <Readout id="renderer" label="renderer" value={params.renderer} note="float64, in workers" />
+            <Readout
+              id="renderer"
+              label="renderer"
+              value={choice.renderer}
+              note={
+                onGpu
+                  ? `float32, WebGL2${support.software ? ` (software: ${support.software})` : ''}`
+                  : 'float64, in workers'
+              }
+            />
             <Readout
               id="rel-mse"
               label="relMSE vs exact"
@@ -123,7 +160,7 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
               digits={4}
               note={
                 reference
-                  ? `over ${formatCount(progress.relMsePixels)} of ${formatCount(m.res * m.res)} pixels with a closed form`
+                  ? `over ${formatCount(progress.relMsePixels)} of ${formatCount(m.res * m.res)} pixels with a closed form${progress.statsSpp !== progress.spp ? `, at ${progress.statsSpp} samples per pixel` : ''}`
                   : 'computing the reference…'
               }
             />
@@ -136,11 +173,11 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
           <p className="render-status" role="status" data-testid="render-status">
             {progress.done
               ? `Done: ${m.spp} samples per pixel.`
-              : !params.play
-                ? 'Paused (play=0).'
+              : !params.play && progress.spp >= m.target
+                ? `Paused at ${progress.spp} of ${m.spp} samples per pixel (play=0, t=${m.target}).`
                 : !visible
                   ? 'Waiting until the image is on screen.'
-                  : `Rendering… ${progress.spp} of ${m.spp} samples per pixel; mean ${formatNumber(progress.mean, 4)}.`}
+                  : `Rendering… ${progress.spp} of ${m.target} samples per pixel${Number.isFinite(progress.mean) ? `; mean ${formatNumber(progress.mean, 4)} at ${progress.statsSpp}` : ''}.`}
           </p>
           <ImageMeasure
             set={measured}
@@ -153,7 +190,14 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
         </section>
       </div>
       <Fold name="settings" summary="Settings" testId="render-settings" className="render-fold">
-        <Controls params={params} set={set} />
+        <Controls params={params} set={pause} />
+      </Fold>
+      <Fold
+        name="compare"
+        summary="The two renderers side by side: the GPU's float32 image against the CPU's float64 one, within their noise"
+        className="render-fold"
+      >
+        <Compare m={m} support={support} />
       </Fold>
       <Fold
         name="equal-time"

@@ -77,6 +77,19 @@ export function welchArgs(m: RenderModel, other: Strategy): WelchArgs {
   return { ...spreadArgs(m), other };
 }
 
+/** The CPU side of the comparison with the GPU renderer: `spp` samples per pixel with their squares. */
+export interface MomentsArgs extends ReferenceArgs {
+  spp: number;
+  seed: number;
+}
+
+/** Samples per pixel each renderer takes in the comparison (small: the point is the test, not the image). */
+export const COMPARE_SPP = 16;
+
+export function momentsArgs(m: RenderModel): MomentsArgs {
+  return { ...referenceArgs(m), spp: COMPARE_SPP, seed: m.seed };
+}
+
 export function referenceArgs(m: RenderModel): ReferenceArgs {
   return { spec: m.spec, view: m.view, res: m.res, trace: m.trace };
 }

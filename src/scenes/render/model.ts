@@ -22,6 +22,10 @@ export interface RenderModel {
   /** The inspected pixel (column, row from the top left), or null for none. */
   px: readonly [number, number] | null;
   pn: number;
+  /** The renderer the link asks for (the page may fall back to the CPU: ./gpu/fallback). */
+  renderer: 'gpu' | 'cpu';
+  /** Samples per pixel the run goes to now: spp while playing; with play=0, t (at most spp). */
+  target: number;
   problems: ParamProblem[];
 }
 
@@ -56,6 +60,17 @@ function pixelOf(p: RenderParams, problems: ParamProblem[]): readonly [number, n
   return px;
 }
 
+/** Where the run holds: spp while playing; paused, at t samples per pixel, clamped to spp (with a problem). */
+export function targetOf(p: RenderParams, problems: ParamProblem[]): number {
+  if (p.play) return p.spp;
+  if (p.t > p.spp)
+    problems.push({
+      name: 't',
+      message: `${p.t} samples per pixel is more than spp=${p.spp}; holding at ${p.spp}`,
+    });
+  return Math.min(p.t, p.spp);
+}
+
 export function buildRenderModel(p: RenderParams): RenderModel {
   const problems: ParamProblem[] = [];
   const parsed = parseGrid(p.grid);
@@ -80,6 +95,8 @@ export function buildRenderModel(p: RenderParams): RenderModel {
     seed: p.seed,
     px: pixelOf(p, problems),
     pn: p.pn,
+    renderer: p.renderer,
+    target: targetOf(p, problems),
     problems,
   };
 }

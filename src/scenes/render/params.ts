@@ -2,9 +2,10 @@
  * URL parameters of #/render (see docs/urls.md): the preset (`scene`), the direct-light estimator
  * (`strategy`) and path length (`bounces`); the exam scene's objects with the area-light, ray–sphere
  * and texture scenes' own parameters (rho, lc, ls, tilt, L; c, r; grid, filter); the camera (eye,
- * look, fov: empty means the preset's own view); the image (res, spp, seed, renderer); the
+ * look, fov: empty means the preset's own view); the image (res, spp, seed, renderer: gpu or cpu); the
  * inspected pixel (px = i,j, column i and row j from the top left) and its sample count pn; and
- * `play` (0 holds the progressive render where it is).
+ * the progressive run's timeline, whose time is samples per pixel: `play` (0 holds the render) and
+ * `t` (with play=0, the samples per pixel it renders to and holds at; pausing writes it).
  */
 import { BIASES } from '../../core/render/bias';
 import type { ParamSchema, ParamValues } from '../../kit/params';
@@ -13,6 +14,7 @@ import { RENDER_SCENES, EXAM_DEFAULTS } from '../../core/render/scene';
 import { STRATEGIES } from '../../core/render/directLight';
 import { MAX_BOUNCES, MIN_BOUNCES } from '../../core/render/pathTrace';
 import { DEFAULT_PN } from '../../core/render/inspector';
+import { timelineParams } from '../../kit/timeline';
 
 const BIG = 1e6;
 
@@ -91,7 +93,12 @@ export const schema = {
   },
   spp: { kind: 'number', default: 64, min: 1, max: MAX_SPP, integer: true, label: 'samples per pixel' },
   seed: { kind: 'number', default: 1, min: 0, max: 4294967295, integer: true, label: 'seed' },
-  renderer: { kind: 'enum', default: 'cpu', values: ['cpu'], label: 'renderer' },
+  renderer: {
+    kind: 'enum',
+    default: 'gpu',
+    values: ['gpu', 'cpu'],
+    label: 'renderer (gpu: WebGL2 float32; cpu: float64 in workers)',
+  },
   px: {
     kind: 'list',
     default: null,
@@ -110,6 +117,7 @@ export const schema = {
     label: 'inspector samples',
   },
   play: { kind: 'bool', default: true, label: 'render running' },
+  t: { ...timelineParams({ max: MAX_SPP, integer: true }).t, label: 'samples per pixel to hold at (play=0)' },
 } as const satisfies ParamSchema;
 
 export type RenderParams = ParamValues<typeof schema>;

@@ -17,6 +17,17 @@ export function copyPixels(sum: Float64Array, count: Uint32Array, rgba: Uint8Cla
   }
 }
 
+/** Write an image of pixel means (linear radiance, row-major) into `rgba` as copyPixels does. */
+export function copyMeans(means: ArrayLike<number>, rgba: Uint8ClampedArray): void {
+  for (let k = 0, o = 0; k < means.length; k++, o += 4) {
+    const b = Number.isFinite(means[k]) ? srgbByte(means[k]) : 0;
+    rgba[o] = b;
+    rgba[o + 1] = b;
+    rgba[o + 2] = b;
+    rgba[o + 3] = 255;
+  }
+}
+
 /** What the page reports of the image so far. */
 export interface ImageStats {
   /** Samples every pixel has (the smallest count). */

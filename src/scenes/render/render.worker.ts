@@ -1,10 +1,11 @@
 /**
- * Worker of the render lab, three tasks over the core: `tile` renders one tile of the image
+ * Worker of the render lab, tasks over the core: `tile` renders one tile of the image
  * progressively in float64 (posting each pass's sums as progress; cancel = terminate,
  * src/workers/run.ts), `inspect` runs the pixel inspector, `reference` computes the exact
  * reference image (both take long enough at large sample counts or sizes to block a page), and
  * `equalTime` renders a small image with each strategy for the same time (core/render/equalTime),
- * and `spread` renders it K times independently (core/render/expectedError).
+ * and `spread` renders it K times independently (core/render/expectedError); `moments` renders the
+ * image with each pixel's standard error, for the comparison with the GPU renderer.
  */
 import { exposeTasks, yieldToEventLoop, type ProgressFn } from '../../workers/expose';
 import { renderTileJob, type TileJobArgs, type TileResult } from '../../core/render/tileJob';
@@ -17,11 +18,14 @@ import {
   inspectOptions,
   type EqualTimeArgs,
   type InspectArgs,
+  type MomentsArgs,
   type ReferenceArgs,
   type SpreadArgs,
   type WelchArgs,
 } from './jobArgs';
 import { welchOfStrategies } from '../../core/render/welchCompare';
+import { makeCpuRenderer } from '../../core/render/cpuRenderer';
+import { renderMoments } from '../../core/render/moments';
 
 const tasks = {
   tile: (a: TileJobArgs, progress: ProgressFn<TileResult>) =>
@@ -30,6 +34,8 @@ const tasks = {
       progress(fraction, { ...r, sum: r.sum.slice(), count: r.count.slice() });
       await yieldToEventLoop();
     }),
+  moments: (a: MomentsArgs) =>
+    renderMoments(makeCpuRenderer(buildScene(a.spec), a.view, a.res, a.res, a.trace, a.seed), a.res, a.res, a.spp),
   inspect: (a: InspectArgs) => inspectPixel(buildScene(a.spec), a.view, a.px[0], a.px[1], inspectOptions(a)),
   reference: (a: ReferenceArgs) => referenceImage(buildScene(a.spec), a.view, a.res, a.res, a.trace.bounces),
   spread: (a: SpreadArgs) => {

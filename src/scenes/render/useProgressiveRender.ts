@@ -3,8 +3,10 @@
  * (./jobs.ts), each adding one sample per pixel per pass in float64 and posting its band's sums
  * after every pass. The main thread only merges the bands and, once per animation frame, copies
  * the pixels into the canvas (./pixels.ts). A run starts when what the image depends on changes,
- * runs only while `running` (the page's `play` and the canvas on screen) and stops at `spp`; a run
- * stopped before its end starts again from its first pass when it may run again.
+ * runs only while `running` (the canvas on screen) and stops at `target` samples per pixel (spp, or
+ * where a paused link holds it); a run stopped before its target starts again from its first pass
+ * when it may run again (the passes are seeded by their number, so it redraws the same samples).
+ * The GPU renderer's hook (./gpu/useGpuRender.ts) reports its progress in the same shape.
  */
 import { useEffect, useRef, useState, type RefObject } from 'react';
 import { runWorkerTask, isCancelled } from '../../workers';
@@ -18,6 +20,8 @@ import type { RenderModel } from './model';
 export interface RenderProgress {
   /** Samples every pixel has. */
   spp: number;
+  /** The samples per pixel `mean` and the relMSE were measured at (the GPU reads its sums back now and then). */
+  statsSpp: number;
   /** Paths traced per second of wall time since the run started (NaN before the first pass). */
   samplesPerSecond: number;
   mean: number;
@@ -26,16 +30,20 @@ export interface RenderProgress {
   relMsePixels: number;
   done: boolean;
   error: string | null;
+  /** The finished image's pixel means (linear radiance, rows from the top), null before the end. */
+  means: Float64Array | null;
 }
 
-const EMPTY: RenderProgress = {
+export const EMPTY_PROGRESS: RenderProgress = {
   spp: 0,
+  statsSpp: 0,
   samplesPerSecond: NaN,
   mean: NaN,
   relMse: NaN,
   relMsePixels: 0,
   done: false,
   error: null,
+  means: null,
 };
 
 /** Workers per render: the cores but one (the page's), at least one, at most four. */
@@ -69,10 +77,11 @@ export function useProgressiveRender(
   canvasRef: RefObject<HTMLCanvasElement | null>,
   m: RenderModel,
   running: boolean,
+  target: number,
   reference: Float64Array | null,
 ): RenderProgress {
   const key = renderKey(m);
-  const [progress, setProgress] = useState<RenderProgress>(EMPTY);
+  const [progress, setProgress] = useState<RenderProgress>(EMPTY_PROGRESS);
   const finished = useRef<string | null>(null);
   const latest = useRef({ m, reference });
   latest.current = { m, reference };
@@ -82,13 +91,16 @@ export function useProgressiveRender(
   useEffect(() => {
     finished.current = null;
     accRef.current = null;
-    setProgress(EMPTY);
+    setProgress(EMPTY_PROGRESS);
     const c = canvasRef.current;
     c?.getContext('2d')?.clearRect(0, 0, c.width, c.height);
   }, [key, canvasRef]);
 
   useEffect(() => {
-    if (!running || finished.current === key) return;
+    if (!running || target < 1 || finished.current === `${key}@${target}`) return;
+    // paused where the run already is (or beyond): hold the image
+    const held = accRef.current;
+    if (held && imageStats(held.sum, held.count).spp >= target) return;
     const { m: model } = latest.current;
     const res = model.res;
     const acc = newAccumulation(res, res);
@@ -110,14 +122,17 @@ export function useProgressiveRender(
       const stats = imageStats(acc.sum, acc.count);
       const err = errorAgainst(acc, latest.current.reference);
       const total = paths.reduce((a, b) => a + b, 0);
+      const done = stats.spp >= model.spp;
       setProgress({
         spp: stats.spp,
+        statsSpp: stats.spp,
         samplesPerSecond: total / ((performance.now() - start) / 1000),
         mean: stats.mean,
         relMse: err.e,
         relMsePixels: err.n,
-        done: stats.spp >= model.spp,
+        done,
         error: null,
+        means: done ? pixelMeans(acc.sum, acc.count) : null,
       });
     };
     const schedule = () => {
@@ -134,7 +149,7 @@ export function useProgressiveRender(
           height: res,
           tile,
           seed: model.seed,
-          spp: model.spp,
+          spp: target,
           passSpp: 1,
           ...model.trace,
         },
@@ -151,7 +166,7 @@ export function useProgressiveRender(
     );
     Promise.all(runs).then(
       () => {
-        finished.current = key;
+        finished.current = `${key}@${target}`;
         schedule();
       },
       (err: unknown) => {
@@ -164,7 +179,7 @@ export function useProgressiveRender(
       ctl.abort();
       if (frame) cancelAnimationFrame(frame);
     };
-  }, [key, running, canvasRef]);
+  }, [key, running, target, canvasRef]);
 
   // a reference that arrives after the image has stopped still gives its error
   useEffect(() => {
