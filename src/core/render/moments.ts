@@ -8,9 +8,14 @@ import { Rng, runSeed } from '../random/rng';
 import { cameraRay } from './camera';
 import type { CpuRenderer } from './cpuRenderer';
 import { radiance } from './pathTrace';
-import { momentsFromSums, type PixelMoments } from './rendererCompare';
+import { momentsFromSums } from './rendererCompare';
 
-export function renderMoments(r: CpuRenderer, width: number, height: number, spp: number): PixelMoments {
+export function renderMoments(
+  r: CpuRenderer,
+  width: number,
+  height: number,
+  spp: number,
+): { mean: Float64Array; se2: Float64Array } {
   const { cam, tracer, dir } = r;
   const e = cam.eye;
   const sum = new Float64Array(width * height);

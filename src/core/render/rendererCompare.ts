@@ -5,9 +5,11 @@
  *
  *     zᵢ = (aᵢ − bᵢ) / √(se_a,ᵢ² + se_b,ᵢ² + δᵢ²),
  *
- * is centred on 0. δᵢ = ROUNDING_ULPS · 2⁻²³ · max(|aᵢ|, |bᵢ|) counts float32 rounding as noise of
- * a few ulps, so a pixel whose samples are all one value (the furnace under cosine sampling returns
- * 1 at every sample) is not held to more digits than float32 has.
+ * is centred on 0. δᵢ = ROUNDING_ULPS · 2⁻²³ · max(|aᵢ|, |bᵢ|, s) counts float32 rounding as noise
+ * of a few ulps of the pixel's value, or of the image's scale s (the mean of max(|aᵢ|, |bᵢ|) over the
+ * image) where the pixel is far darker: a pixel whose samples are all one value (the furnace under
+ * cosine sampling returns 1 at every sample) is not held to more digits than float32 has, and a
+ * glossy lobe's tail of 10⁻²⁶⁶, which float32 rounds to 0, is not a difference.
  *
  * The test: pixels with noise (either side's se > δ) give T = Σzᵢ / √(Σzᵢ²), the self-normalized sum.
  * With the same estimator on both sides each zᵢ is symmetric about 0 (swapping the two renderers
@@ -52,7 +54,11 @@ export interface RendererComparison {
 }
 
 /** Per-pixel mean and se² from sums: Σx, Σx², n samples (se² = s²/n, s² the unbiased variance, ≥ 0). */
-export function momentsFromSums(sum: ArrayLike<number>, sumSq: ArrayLike<number>, n: number): PixelMoments {
+export function momentsFromSums(
+  sum: ArrayLike<number>,
+  sumSq: ArrayLike<number>,
+  n: number,
+): { mean: Float64Array; se2: Float64Array } {
   const mean = new Float64Array(sum.length);
   const se2 = new Float64Array(sum.length);
   for (let k = 0; k < sum.length; k++) {
@@ -64,10 +70,25 @@ export function momentsFromSums(sum: ArrayLike<number>, sumSq: ArrayLike<number>
 }
 
 /** Compare two images pixel by pixel (see the module comment). */
-export function compareRenderers(a: PixelMoments, b: PixelMoments, alpha = COMPARE_ALPHA): RendererComparison {
+export function compareRenderers(
+  a: PixelMoments,
+  b: PixelMoments,
+  alpha = COMPARE_ALPHA,
+): RendererComparison {
   const n = a.mean.length;
-  if (b.mean.length !== n) throw new RangeError(`images of different sizes: ${n} and ${b.mean.length} pixels`);
+  if (b.mean.length !== n)
+    throw new RangeError(`images of different sizes: ${n} and ${b.mean.length} pixels`);
   const z = new Float64Array(n);
+  let scale = 0,
+    finite = 0;
+  for (let k = 0; k < n; k++) {
+    const v = Math.max(Math.abs(a.mean[k]), Math.abs(b.mean[k]));
+    if (Number.isFinite(v)) {
+      scale += v;
+      finite++;
+    }
+  }
+  scale = finite > 0 ? scale / finite : 0;
   let noisy = 0,
     quiet = 0,
     quietMismatches = 0,
@@ -81,7 +102,7 @@ export function compareRenderers(a: PixelMoments, b: PixelMoments, alpha = COMPA
       z[k] = NaN;
       continue;
     }
-    const delta = ROUNDING_ULPS * F32_EPS * Math.max(Math.abs(ma), Math.abs(mb));
+    const delta = ROUNDING_ULPS * F32_EPS * Math.max(Math.abs(ma), Math.abs(mb), scale);
     const noise = a.se2[k] + b.se2[k];
     const d = ma - mb;
     const zk = d === 0 ? 0 : d / Math.sqrt(noise + delta * delta);

@@ -35,7 +35,12 @@ const tasks = {
       await yieldToEventLoop();
     }),
   moments: (a: MomentsArgs) =>
-    renderMoments(makeCpuRenderer(buildScene(a.spec), a.view, a.res, a.res, a.trace, a.seed), a.res, a.res, a.spp),
+    renderMoments(
+      makeCpuRenderer(buildScene(a.spec), a.view, a.res, a.res, a.trace, a.seed),
+      a.res,
+      a.res,
+      a.spp,
+    ),
   inspect: (a: InspectArgs) => inspectPixel(buildScene(a.spec), a.view, a.px[0], a.px[1], inspectOptions(a)),
   reference: (a: ReferenceArgs) => referenceImage(buildScene(a.spec), a.view, a.res, a.res, a.trace.bounces),
   spread: (a: SpreadArgs) => {

@@ -44,10 +44,28 @@ describe('render lab parameters', () => {
     expect(parseParams(schema, 'bias=wrong').problems.map((p) => p.name)).toEqual(['bias']);
   });
 
-  it('accepts only the cpu renderer for now', () => {
+  it('asks for the gpu renderer by default, takes cpu, and names anything else', () => {
+    expect(model('').renderer).toBe('gpu');
+    expect(model('renderer=cpu').renderer).toBe('cpu');
     const { values, problems } = parseParams(schema, 'renderer=webgl');
-    expect(values.renderer).toBe('cpu');
+    expect(values.renderer).toBe('gpu');
     expect(problems[0].name).toBe('renderer');
+  });
+
+  it('runs to spp while playing, holds at t when paused, and clamps t to spp with a named problem', () => {
+    expect(model('spp=32').target).toBe(32);
+    expect(model('spp=32&t=5').target).toBe(32);
+    expect(model('spp=32&play=0').target).toBe(0);
+    const held = model('spp=32&play=0&t=12');
+    expect(held.target).toBe(12);
+    expect(held.problems).toEqual([]);
+    const over = model('spp=32&play=0&t=100');
+    expect(over.target).toBe(32);
+    expect(over.problems.map((p) => p.name)).toEqual(['t']);
+    expect(over.problems[0].message).toMatch(/more than spp=32; holding at 32/);
+    expect(checkValues(parseParams(schema, 'spp=8&play=0&t=9').values).map((p) => p.name)).toEqual(['t']);
+    // t outside its own range is clamped by the parser, with its own problem
+    expect(parseParams(schema, 't=-3').problems.map((p) => p.name)).toEqual(['t']);
   });
 
   it('takes eye, look and fov from the link, each in place of the preset’s', () => {

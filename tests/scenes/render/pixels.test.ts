@@ -1,6 +1,6 @@
 /** The render lab's pixel copy (sums → sRGB bytes), its image statistics and its description. */
 import { describe, expect, it } from 'vitest';
-import { copyPixels, imageStats, pixelMeans } from '../../../src/scenes/render/pixels';
+import { copyMeans, copyPixels, imageStats, pixelMeans } from '../../../src/scenes/render/pixels';
 import { srgbByte } from '../../../src/core/image/srgb';
 import { describeImage, regionsOf } from '../../../src/scenes/render/describe';
 import { defaultView, examScene, furnaceScene } from '../../../src/core/render/scene';
@@ -54,5 +54,16 @@ describe('the image in words', () => {
     );
     const furnace = describeImage(furnaceScene(), defaultView('furnace'), 64, { spp: 1, mean: 1 });
     expect(furnace).toContain('middle centre: the sphere;');
+  });
+
+  it('draws an image of means as it draws the sums they come from, a missing pixel black', () => {
+    const sum = Float64Array.of(0.3, 4, 0, 0.9);
+    const count = Uint32Array.of(1, 8, 0, 3);
+    const a = new Uint8ClampedArray(16);
+    const b = new Uint8ClampedArray(16);
+    copyPixels(sum, count, a);
+    copyMeans(pixelMeans(sum, count), b);
+    expect(Array.from(b)).toEqual(Array.from(a));
+    expect(b[8]).toBe(0);
   });
 });

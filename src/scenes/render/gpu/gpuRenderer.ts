@@ -6,11 +6,7 @@
  * back through a pixel-pack buffer and a fence, polled, so no read blocks the page.
  */
 import type { SceneUniforms } from './sceneUniforms';
-import {
-  DISPLAY_FRAGMENT_SHADER,
-  FRAME_FRAGMENT_SHADER,
-  FULLSCREEN_VERTEX_SHADER,
-} from './renderShader';
+import { DISPLAY_FRAGMENT_SHADER, FRAME_FRAGMENT_SHADER, FULLSCREEN_VERTEX_SHADER } from './renderShader';
 
 /** A running GPU render on one WebGL2 context. */
 export interface GpuRenderer {
@@ -91,7 +87,10 @@ function floatTarget(gl: WebGL2RenderingContext, res: number): { tex: WebGLTextu
  * Compile the programs on gl (which must have EXT_color_buffer_float enabled) for res × res
  * images; a string says why not.
  */
-export async function createGpuRenderer(gl: WebGL2RenderingContext, res: number): Promise<GpuRenderer | string> {
+export async function createGpuRenderer(
+  gl: WebGL2RenderingContext,
+  res: number,
+): Promise<GpuRenderer | string> {
   const frame = await linkProgram(gl, FRAME_FRAGMENT_SHADER);
   if (typeof frame === 'string') return frame;
   const show = await linkProgram(gl, DISPLAY_FRAGMENT_SHADER);

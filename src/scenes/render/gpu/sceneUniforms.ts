@@ -69,7 +69,12 @@ function packRects(rects: readonly { rect: RectLight; a: number; b: number }[]):
 }
 
 /** The uniforms of a res × res render of the scene from the view with these options. */
-export function sceneUniforms(scene: RenderScene, view: View, res: number, trace: TraceOptions): SceneUniforms {
+export function sceneUniforms(
+  scene: RenderScene,
+  view: View,
+  res: number,
+  trace: TraceOptions,
+): SceneUniforms {
   const cam = makeCamera(view, res, res);
   const s = scene.sphere;
   const grid = s?.texture ?? null;

@@ -17,11 +17,7 @@ import {
   ROUNDING_ULPS,
   type PixelMoments,
 } from '../../../core/render/rendererCompare';
-import {
-  F64_UNIT_ROUNDOFF,
-  naiveSumBound,
-  naiveSumError,
-} from '../../../core/render/f32Sum';
+import { F64_UNIT_ROUNDOFF, naiveSumBound, naiveSumError } from '../../../core/render/f32Sum';
 import { useWorkerJob } from '../../../workers';
 import { makeRenderWorker } from '../jobs';
 import { COMPARE_SPP, momentsArgs } from '../jobArgs';
@@ -91,7 +87,17 @@ function useGpuMoments(m: RenderModel, enabled: boolean): { result: GpuSide | nu
   return state.key === key ? state : { result: null, error: null };
 }
 
-function GreyFigure({ means, res, label, caption }: { means: ArrayLike<number>; res: number; label: string; caption: string }) {
+function GreyFigure({
+  means,
+  res,
+  label,
+  caption,
+}: {
+  means: ArrayLike<number>;
+  res: number;
+  label: string;
+  caption: string;
+}) {
   const canvas = useRef<HTMLCanvasElement>(null);
   useEffect(() => {
     const g = canvas.current?.getContext('2d');
@@ -116,7 +122,6 @@ export default function Compare({ m, support }: { m: RenderModel; support: GpuSu
     () => (gpu.result && cpu.result ? compareRenderers(gpu.result.moments, cpu.result) : null),
     [gpu.result, cpu.result],
   );
-  (globalThis as unknown as { __cmp: unknown }).__cmp = { g: gpu.result, c: cpu.result, cmp };
   const absZ = useMemo(() => (cmp ? cmp.z.map((z) => (Number.isFinite(z) ? Math.abs(z) : 0)) : null), [cmp]);
   // the pixel the inspector looks at, else the image's centre
   const [pi, pj] = m.px ?? [m.res >> 1, m.res >> 1];
@@ -124,8 +129,8 @@ export default function Compare({ m, support }: { m: RenderModel; support: GpuSu
   if (!gpuOk)
     return (
       <Notice kind="info" testId="compare-unavailable">
-        This browser cannot run the GPU renderer (it needs WebGL2 with EXT_color_buffer_float), so there is
-        no float32 image to compare with the CPU&apos;s.
+        This browser cannot run the GPU renderer (it needs WebGL2 with EXT_color_buffer_float), so there is no
+        float32 image to compare with the CPU&apos;s.
       </Notice>
     );
   const at = (p: PixelMoments | null | undefined) => (p ? p.mean[pk] : null);
@@ -133,14 +138,14 @@ export default function Compare({ m, support }: { m: RenderModel; support: GpuSu
     <div data-testid="compare">
       <p>
         Both renderers draw the page&apos;s image, {m.res} × {m.res}, at {COMPARE_SPP} samples per pixel from
-        different random streams, and keep each pixel&apos;s sum of squares, so each pixel is a mean a with its
-        standard error se. Where the two compute the same estimator, z = (a_GPU − a_CPU) / √(se_GPU² + se_CPU²)
-        is centred on 0 at every pixel (float32 rounding counts as {ROUNDING_ULPS} ulps of noise). The test:
-        T = Σz / √(Σz²) over the pixels with noise, which is no wider than a standard normal when each z is
-        symmetric about 0, as it is when the two sides could be swapped, however far from normal the pixels
-        are (Efron 1969); T² against χ² with one degree of freedom gives p. A renderer too bright or too dark
-        over the image fails at α = {COMPARE_ALPHA}; pixels with no noise on either side (the white furnace
-        under cosine sampling) must agree to float32 rounding.
+        different random streams, and keep each pixel&apos;s sum of squares, so each pixel is a mean a with
+        its standard error se. Where the two compute the same estimator, z = (a_GPU − a_CPU) / √(se_GPU² +
+        se_CPU²) is centred on 0 at every pixel (float32 rounding counts as {ROUNDING_ULPS} ulps of noise).
+        The test: T = Σz / √(Σz²) over the pixels with noise, which is no wider than a standard normal when
+        each z is symmetric about 0, as it is when the two sides could be swapped, however far from normal the
+        pixels are (Efron 1969); T² against χ² with one degree of freedom gives p. A renderer too bright or
+        too dark over the image fails at α = {COMPARE_ALPHA}; pixels with no noise on either side (the white
+        furnace under cosine sampling) must agree to float32 rounding.
       </p>
       <p role="status" data-testid="compare-status">
         {gpu.error || cpu.error
@@ -195,7 +200,11 @@ export default function Compare({ m, support }: { m: RenderModel; support: GpuSu
               digits={3}
               note={`(n − 1) u / (1 − (n − 1) u), u = 2⁻⁵³, n = ${COMPARE_SPP}: the CPU's sums`}
             />
-            <Readout id="compare-pixel-gpu" label={`pixel ${pi},${pj} on the GPU`} value={at(gpu.result.moments)} />
+            <Readout
+              id="compare-pixel-gpu"
+              label={`pixel ${pi},${pj} on the GPU`}
+              value={at(gpu.result.moments)}
+            />
             <Readout id="compare-pixel-cpu" label={`pixel ${pi},${pj} on the CPU`} value={at(cpu.result)} />
             <Readout id="compare-pixel-z" label={`z at pixel ${pi},${pj}`} value={cmp.z[pk]} digits={3} />
           </div>
