@@ -1,7 +1,9 @@
 // #/render in the browser, one page opened once and then led by links: the pixel inspector's
 // readouts are the core's inspector for the same link (computed here in Node), the progressive CPU
-// render runs in workers to its spp while the page answers input, and the equal-time and spread
-// folds mount on open, run their workers and stay open in the link. The estimators, the renderer
+// render runs in workers to its spp while the page answers input, the equal-time and spread
+// folds mount on open, run their workers and stay open in the link, and the GPU renderer (the
+// default; SwiftShader here) draws the image, agrees with the CPU's in the compare fold and holds
+// where a pause leaves it (t). The estimators, the renderer
 // and the page's logic are unit tests (tests/core/render/, tests/scenes/render/); the page as a
 // whole is in catalogue.spec.ts; the FLIP of downloaded images is checked on #/area-light
 // (area-light.spec.ts).
@@ -55,7 +57,7 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
   });
 
   await test.step('the progressive render reaches spp in workers while the page answers input', async () => {
-    await openScene(page, '#/render?res=64&spp=8');
+    await openScene(page, '#/render?res=64&spp=8&renderer=cpu');
     await expect(page.getByTestId('renderer')).toHaveAttribute('data-value', 'cpu');
     // input while the workers render: a click on the image opens its pixel, the settings unfold
     const canvas = page.getByTestId('render-canvas');
@@ -63,6 +65,8 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
     await page.getByText('Settings', { exact: true }).click();
     await expect(page.getByTestId('render-settings')).toHaveAttribute('open', '');
     await expect(page.getByTestId('pixel-hit')).toHaveAttribute('data-value', /^(floor|none|light|sphere)$/);
+    // (the render runs while the image is on screen: bring it back after the settings unfold)
+    await canvas.scrollIntoViewIfNeeded();
     await expect(page.getByTestId('spp')).toHaveAttribute('data-value', '8', { timeout: 15_000 });
     await expect(page.getByTestId('render-status')).toHaveText(/^Done: 8 samples per pixel\.$/);
     expect(Number(await readout(page, 'samples-per-second'))).toBeGreaterThan(0);
@@ -133,5 +137,55 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
     await openScene(page, '#/render?strategy=cosine&open=welch');
     await expect(page.getByTestId('welch-not-testable')).toBeVisible();
     await expect(page.getByTestId('welch-verdict')).toHaveCount(0);
+  });
+
+  await test.step('the GPU renderer: the default, its image agrees with the CPU’s within its noise, and a pause holds in the link', async () => {
+    // the exam scene with mis-power: the image, then both renderers side by side
+    await openScene(page, '#/render?res=32&spp=8&px=16,14&open=compare');
+    await page.evaluate(() => window.scrollTo(0, 0));
+    await expect(page.getByTestId('renderer')).toHaveAttribute('data-value', 'gpu');
+    await expect(page.getByTestId('render-gpu-unavailable')).toHaveCount(0);
+    await expect(page.getByTestId('render-status')).toHaveText(/^Done: 8 samples per pixel\.$/, {
+      timeout: 30_000,
+    });
+    // not blank: the sums read back from the float target have a positive mean and an error
+    await expect(page.getByTestId('render-description')).toContainText('after 8 samples per pixel');
+    const mean = Number(
+      /Mean brightness ([0-9.]+)/.exec(await page.getByTestId('render-description').innerText())?.[1],
+    );
+    expect(mean).toBeGreaterThan(0.005);
+    expect(Number(await waitForReadout(page, 'rel-mse', (v) => v !== 'none'))).toBeGreaterThan(0);
+    await expect(page.getByTestId('compare-verdict')).toHaveAttribute('data-value', 'pass', {
+      timeout: 30_000,
+    });
+    expect(Number(await readout(page, 'compare-chi2-p'))).toBeGreaterThanOrEqual(0.001);
+    // one pixel of the GPU's image, read back, against the CPU's in the fold's terms
+    expect(Math.abs(Number(await readout(page, 'compare-pixel-z')))).toBeLessThan(4);
+    expect(Number(await readout(page, 'compare-pixel-gpu'))).toBeGreaterThan(0);
+    const f32 = Number(await readout(page, 'compare-f32-naive-error'));
+    expect(f32 >= 0 && f32 < 1e-5, `compare-f32-naive-error = ${f32}`).toBe(true);
+    // the white furnace under cosine sampling at three bounces: 1 at every sample on both sides
+    await openScene(page, '#/render?scene=furnace&strategy=cosine&bounces=3&res=32&spp=2&open=compare');
+    await expect(page.getByTestId('compare-verdict')).toHaveAttribute('data-value', 'pass', {
+      timeout: 30_000,
+    });
+    expect(Number(await readout(page, 'compare-pixel-gpu'))).toBe(1);
+    expect(Number(await readout(page, 'compare-max-abs-z'))).toBe(0);
+    // pausing writes where the run is (t, samples per pixel) into the link; the link holds there
+    await openScene(page, '#/render?res=32&spp=4096&open=settings');
+    await page.evaluate(() => window.scrollTo(0, 0));
+    await expect.poll(() => readout(page, 'spp').then(Number), { timeout: 15_000 }).toBeGreaterThan(2);
+    await page.getByTestId('set-play').click();
+    await page.evaluate(() => window.scrollTo(0, 0));
+    await expect(page).toHaveURL(/[?&]play=0(&|$)/);
+    const t = Number(/[?&]t=(\d+)/.exec(page.url())?.[1]);
+    expect(t).toBeGreaterThan(2);
+    await expect(page.getByTestId('spp')).toHaveAttribute('data-value', String(t));
+    await page.reload();
+    await expect(page.getByTestId('render-status')).toHaveText(
+      `Paused at ${t} of 4096 samples per pixel (play=0, t=${t}).`,
+      { timeout: 30_000 },
+    );
+    await expect(page.getByTestId('renderer')).toHaveAttribute('data-value', 'gpu');
   });
 });

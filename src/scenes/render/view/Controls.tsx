@@ -58,10 +58,15 @@ export function Controls({
         { value: 'veach', label: 'Veach’s four plates' },
         { value: 'furnace', label: 'White furnace' },
       ])}
-      {b.select('renderer', 'Renderer', [
-        { value: 'gpu', label: 'GPU: WebGL2 fragment shader, float32' },
-        { value: 'cpu', label: 'CPU: the core in workers, float64' },
-      ])}
+      {b.select(
+        'renderer',
+        'Renderer',
+        [
+          { value: 'gpu', label: 'GPU: WebGL2 fragment shader, float32' },
+          { value: 'cpu', label: 'CPU: the core in workers, float64' },
+        ],
+        { testId: 'set-renderer' },
+      )}
       {b.select(
         'strategy',
         'Direct-light strategy',
