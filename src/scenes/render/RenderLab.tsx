@@ -19,7 +19,7 @@ import { buildRenderModel } from './model';
 import { describeImage } from './describe';
 import { useProgressiveRender } from './useProgressiveRender';
 import { useGpuRender } from './gpu/useGpuRender';
-import { probeGpuSupport } from './gpu/gpuRenderer';
+import { gpuSupport, softwareName } from './gpu/gpuRenderer';
 import { chooseRenderer } from './gpu/fallback';
 import { schema, type RenderParams } from './params';
 import { Inspector } from './view/Inspector';
@@ -62,7 +62,7 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
     const c = boxRef.current;
     return c ? observeVisibility(c, setVisible) : undefined;
   }, []);
-  const support = useMemo(() => probeGpuSupport(), []);
+  const support = useMemo(() => gpuSupport(), []);
   const [failure, setFailure] = useState<string | null>(null);
   const choice = chooseRenderer(m.renderer, support, failure);
   const onGpu = choice.renderer === 'gpu';
@@ -72,6 +72,7 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
   const cpuProgress = useProgressiveRender(cpuCanvas, m, !onGpu && visible, m.target, reference);
   const gpuProgress = useGpuRender(gpuCanvas, m, onGpu, visible, m.target, reference, setFailure);
   const progress = onGpu ? gpuProgress : cpuProgress;
+  const software = gpuProgress.rendererName ? softwareName(gpuProgress.rendererName) : null;
   // pausing writes where the run is into the link (t, in samples per pixel), as every timeline does
   const pause = useCallback(
     (p: Partial<RenderParams>) => setParams(p.play === false ? { ...p, t: progress.spp } : p),
@@ -122,7 +123,7 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
         <figure className="render-figure">
           <div className="render-canvas-box" ref={boxRef}>
             <canvas
-              key={choice.renderer}
+              key={onGpu ? `gpu-${m.res}` : 'cpu'}
               ref={onGpu ? gpuCanvas : cpuCanvas}
               width={m.res}
               height={m.res}
@@ -148,9 +149,7 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
               label="renderer"
               value={choice.renderer}
               note={
-                onGpu
-                  ? `float32, WebGL2${support.software ? ` (software: ${support.software})` : ''}`
-                  : 'float64, in workers'
+                onGpu ? `float32, WebGL2${software ? ` (software: ${software})` : ''}` : 'float64, in workers'
               }
             />
             <Readout

@@ -20,11 +20,11 @@ export function chooseRenderer(
   failure: string | null,
 ): RendererChoice {
   if (requested === 'cpu') return { renderer: 'cpu', unavailable: null };
-  if (!support.webgl2) return { renderer: 'cpu', unavailable: 'this browser gives no WebGL2 context' };
-  if (!support.floatTarget)
+  if (!support.webgl2) return { renderer: 'cpu', unavailable: 'this browser has no WebGL2' };
+  if (!support.offscreen)
     return {
       renderer: 'cpu',
-      unavailable: 'WebGL2 here lacks EXT_color_buffer_float, so it cannot sum samples in a float target',
+      unavailable: 'this browser cannot hand a canvas to a worker (OffscreenCanvas), where the shader runs',
     };
   if (failure) return { renderer: 'cpu', unavailable: failure };
   return { renderer: 'gpu', unavailable: null };

@@ -234,18 +234,34 @@ export async function createGpuRenderer(
   };
 }
 
-/** What the browser offers the GPU renderer: WebGL2, float render targets, and whether it is software. */
+/** What the page can tell without a context: WebGL2, and a canvas it can hand to a worker. */
 export interface GpuSupport {
   webgl2: boolean;
-  floatTarget: boolean;
-  /** The WebGL renderer's name when it runs on the CPU (SwiftShader, llvmpipe …), else null. */
-  software: string | null;
+  offscreen: boolean;
+}
+
+/** Ask the browser's API, without making a context (the worker makes the one it draws with). */
+export function gpuSupport(): GpuSupport {
+  if (typeof window === 'undefined') return { webgl2: false, offscreen: false };
+  return {
+    webgl2: typeof WebGL2RenderingContext !== 'undefined',
+    offscreen:
+      typeof OffscreenCanvas !== 'undefined' &&
+      typeof HTMLCanvasElement !== 'undefined' &&
+      'transferControlToOffscreen' in HTMLCanvasElement.prototype,
+  };
 }
 
 const SOFTWARE_GL = /swiftshader|llvmpipe|softpipe|software|basic render/i;
 
+/** The name of a WebGL renderer that runs on the CPU (SwiftShader, llvmpipe …), else null. */
+export function softwareName(renderer: string): string | null {
+  const m = SOFTWARE_GL.exec(renderer);
+  return m ? (/swiftshader/i.test(renderer) ? 'SwiftShader' : m[0]) : null;
+}
+
 /** A WebGL2 context for the GPU renderer on this canvas, with float targets enabled, or null. */
-export function renderContext(canvas: HTMLCanvasElement | OffscreenCanvas): WebGL2RenderingContext | null {
+export function renderContext(canvas: OffscreenCanvas): WebGL2RenderingContext | null {
   const gl = canvas.getContext('webgl2', {
     alpha: false,
     antialias: false,
@@ -255,28 +271,4 @@ export function renderContext(canvas: HTMLCanvasElement | OffscreenCanvas): WebG
     preserveDrawingBuffer: false,
   }) as WebGL2RenderingContext | null;
   return gl && gl.getExtension('EXT_color_buffer_float') ? gl : null;
-}
-
-let probed: GpuSupport | null = null;
-
-/** Ask once: WebGL2, EXT_color_buffer_float, and the renderer's name if it is a software one. */
-export function probeGpuSupport(): GpuSupport {
-  if (probed) return probed;
-  if (typeof document === 'undefined') return { webgl2: false, floatTarget: false, software: null };
-  try {
-    const gl = document.createElement('canvas').getContext('webgl2') as WebGL2RenderingContext | null;
-    if (!gl) return (probed = { webgl2: false, floatTarget: false, software: null });
-    const floatTarget = gl.getExtension('EXT_color_buffer_float') !== null;
-    const dbg = gl.getExtension('WEBGL_debug_renderer_info');
-    const name = `${String(gl.getParameter(gl.RENDERER) ?? '')} ${dbg ? String(gl.getParameter(dbg.UNMASKED_RENDERER_WEBGL) ?? '') : ''}`;
-    const soft = SOFTWARE_GL.exec(name);
-    gl.getExtension('WEBGL_lose_context')?.loseContext();
-    return (probed = {
-      webgl2: true,
-      floatTarget,
-      software: soft ? (/swiftshader/i.test(name) ? 'SwiftShader' : soft[0]) : null,
-    });
-  } catch {
-    return (probed = { webgl2: false, floatTarget: false, software: null });
-  }
 }

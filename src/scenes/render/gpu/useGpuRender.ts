@@ -1,24 +1,21 @@
 /**
- * The progressive GPU render of the page: one path per pixel per animation frame into the float
- * sums (./gpuRenderer), the mean drawn to the canvas after each, only while `running` (the canvas
- * on screen) and until `target` samples per pixel; no frame is requested while nothing changes.
- * The sums are read back (without waiting on the GPU) only at 1, 2, 4, 8 … samples per pixel and
- * at the target, for the mean, the relMSE against the reference and, at the end, the image's means
- * for the measuring panel. A context that cannot be made, a shader that does not compile or a
- * context lost is reported to `onFailure`, and the page draws with the CPU instead.
+ * The progressive GPU render of the page, driven from here and drawn by the GPU renderer's worker
+ * (./gpu.worker.ts), which owns the canvas (handed over as an OffscreenCanvas): one path per pixel
+ * per animation frame into the float sums, the mean drawn after each, only while `running` (the
+ * canvas on screen) and until `target` samples per pixel; no frame while nothing changes. The sums
+ * come back at 1, 2, 4 … samples per pixel and at the target, for the mean, the relMSE against the
+ * reference and, at the end, the image's means for the measuring panel. A context that cannot be
+ * made, a shader that does not compile or a context lost is reported to `onFailure`, and the page
+ * draws with the CPU instead.
  */
 import { useEffect, useRef, useState, type RefObject } from 'react';
 import { buildScene } from '../../../core/render/scene';
 import { relMse } from '../../../core/render/relMse';
 import { EMPTY_PROGRESS, renderKey, type RenderProgress } from '../useProgressiveRender';
 import type { RenderModel } from '../model';
-import { createGpuRenderer, renderContext, type GpuRenderer } from './gpuRenderer';
+import { makeGpuWorker } from '../jobs';
 import { sceneUniforms } from './sceneUniforms';
-
-/** Whether the sums are read back after the frame that brings them to n samples per pixel. */
-export function isCheckpoint(n: number, target: number): boolean {
-  return n >= target || (n > 0 && (n & (n - 1)) === 0);
-}
+import type { FromGpuWorker, ToGpuWorker } from './gpuProtocol';
 
 /** The pixel means (Kahan sum / n) of read-back sums, RGBA per pixel. */
 export function meansOf(rgba: Float32Array, n: number): Float64Array {
@@ -34,6 +31,39 @@ function errorOf(means: Float64Array, reference: Float64Array | null): { e: numb
   return { e: n > 0 ? relMse(means, reference) : NaN, n };
 }
 
+/**
+ * A canvas's worker, kept a moment after its effect ends: a canvas can hand over its drawing only
+ * once, so an effect run again on the same canvas (React's development checks do this) takes the
+ * same worker back instead of making a second.
+ */
+interface CanvasWorker {
+  worker: Worker;
+  /** What the worker said about its context so far (replayed to a new listener). */
+  said: FromGpuWorker | null;
+  listen: (m: FromGpuWorker) => void;
+  timer: ReturnType<typeof setTimeout> | null;
+}
+const canvasWorkers = new WeakMap<HTMLCanvasElement, CanvasWorker>();
+
+function workerFor(canvas: HTMLCanvasElement, res: number): CanvasWorker {
+  const known = canvasWorkers.get(canvas);
+  if (known) {
+    if (known.timer) clearTimeout(known.timer);
+    known.timer = null;
+    return known;
+  }
+  const worker = makeGpuWorker();
+  const cw: CanvasWorker = { worker, said: null, listen: () => {}, timer: null };
+  worker.onmessage = (e: MessageEvent<FromGpuWorker>) => {
+    if (e.data.kind === 'ready' || e.data.kind === 'failed') cw.said = e.data;
+    cw.listen(e.data);
+  };
+  const offscreen = canvas.transferControlToOffscreen();
+  worker.postMessage({ kind: 'init', res, canvas: offscreen } satisfies ToGpuWorker, [offscreen]);
+  canvasWorkers.set(canvas, cw);
+  return cw;
+}
+
 export function useGpuRender(
   canvasRef: RefObject<HTMLCanvasElement | null>,
   m: RenderModel,
@@ -42,43 +72,55 @@ export function useGpuRender(
   target: number,
   reference: Float64Array | null,
   onFailure: (why: string) => void,
-): RenderProgress {
+): RenderProgress & { rendererName: string | null } {
   const key = renderKey(m);
   const res = m.res;
-  const [renderer, setRenderer] = useState<GpuRenderer | null>(null);
+  const [worker, setWorker] = useState<{ w: Worker; name: string } | null>(null);
   const [progress, setProgress] = useState<RenderProgress>(EMPTY_PROGRESS);
   const latest = useRef({ m, reference, onFailure });
   latest.current = { m, reference, onFailure };
   const lastMeans = useRef<{ means: Float64Array; n: number } | null>(null);
+  // the number of the image last sent to the worker: what it says of others is stale
+  const loaded = useRef(0);
 
-  // the context and the programs, for as long as the page draws on the GPU at this size
+  // the worker and its context, for as long as the page draws on the GPU on this canvas
   useEffect(() => {
     const canvas = canvasRef.current;
     if (!active || !canvas) return;
-    let live = true;
-    let made: GpuRenderer | null = null;
-    const fail = (why: string) => {
-      if (live) latest.current.onFailure(why);
+    const cw = workerFor(canvas, res);
+    cw.listen = (msg) => {
+      if (msg.kind === 'failed') latest.current.onFailure(msg.why);
+      else if (msg.kind === 'ready') setWorker({ w: cw.worker, name: msg.renderer });
+      else if (msg.id !== loaded.current) return;
+      else if (msg.kind === 'frame')
+        setProgress((p) => ({ ...p, spp: msg.count, samplesPerSecond: msg.samplesPerSecond }));
+      else {
+        const { m: model, reference: ref } = latest.current;
+        const means = meansOf(msg.rgba, msg.count);
+        lastMeans.current = { means, n: msg.count };
+        let total = 0;
+        for (const x of means) total += x;
+        const err = errorOf(means, ref);
+        const done = msg.count >= model.spp;
+        setProgress((p) => ({
+          ...p,
+          statsSpp: msg.count,
+          mean: total / means.length,
+          relMse: err.e,
+          relMsePixels: err.n,
+          done,
+          means: done ? means : null,
+        }));
+      }
     };
-    const lost = (e: Event) => {
-      e.preventDefault();
-      fail('the WebGL context was lost');
-    };
-    canvas.addEventListener('webglcontextlost', lost);
-    const gl = renderContext(canvas);
-    if (!gl) fail('the canvas gave no WebGL2 context with float render targets');
-    else
-      void createGpuRenderer(gl, res).then((r) => {
-        if (typeof r === 'string') return fail(r);
-        if (!live) return r.dispose();
-        made = r;
-        setRenderer(r);
-      });
+    if (cw.said) cw.listen(cw.said);
     return () => {
-      live = false;
-      canvas.removeEventListener('webglcontextlost', lost);
-      made?.dispose();
-      setRenderer(null);
+      cw.listen = () => {};
+      setWorker(null);
+      cw.timer = setTimeout(() => {
+        cw.worker.terminate();
+        canvasWorkers.delete(canvas);
+      }, 0);
     };
   }, [active, res, canvasRef]);
 
@@ -86,73 +128,23 @@ export function useGpuRender(
   useEffect(() => {
     lastMeans.current = null;
     setProgress(EMPTY_PROGRESS);
-    if (!renderer) return;
+    if (!worker) return;
     const { m: model } = latest.current;
-    renderer.load(sceneUniforms(buildScene(model.spec), model.view, model.res, model.trace), model.seed);
-    renderer.display();
-  }, [key, renderer]);
+    const uniforms = sceneUniforms(buildScene(model.spec), model.view, model.res, model.trace);
+    loaded.current++;
+    worker.w.postMessage({
+      kind: 'load',
+      id: loaded.current,
+      uniforms,
+      seed: model.seed,
+    } satisfies ToGpuWorker);
+  }, [key, worker]);
 
-  // the frames: one sample per pixel each, while running and short of the target
+  // run to the target while the image is seen; hold otherwise
   useEffect(() => {
-    if (!renderer) return;
-    const pixels = res * res;
-    const start = performance.now();
-    const from = renderer.count;
-    let frame = 0;
-    let live = true;
-    let reading = false;
-    const read = (n: number) => {
-      if (reading) return;
-      reading = true;
-      void renderer.readBack().then((rgba) => {
-        reading = false;
-        if (!live || !rgba) return;
-        const means = meansOf(rgba, n);
-        lastMeans.current = { means, n };
-        let total = 0;
-        for (const x of means) total += x;
-        const err = errorOf(means, latest.current.reference);
-        const done = n >= latest.current.m.spp;
-        setProgress((p) => ({
-          ...p,
-          statsSpp: n,
-          mean: total / means.length,
-          relMse: err.e,
-          relMsePixels: err.n,
-          done,
-          means: done ? means : null,
-        }));
-        // the frames went on while the sums travelled: the last checkpoint still needs its read
-        if (renderer.count >= target && n < renderer.count) read(renderer.count);
-      });
-    };
-    if (!running || renderer.count >= target) {
-      // held (paused, off screen or done): the figures are those of the sums as they are
-      if (renderer.count > 0 && lastMeans.current?.n !== renderer.count) read(renderer.count);
-      return () => {
-        live = false;
-      };
-    }
-    const tick = () => {
-      frame = 0;
-      if (!live || renderer.gl.isContextLost()) return;
-      renderer.step();
-      renderer.display();
-      const n = renderer.count;
-      setProgress((p) => ({
-        ...p,
-        spp: n,
-        samplesPerSecond: (pixels * (n - from)) / ((performance.now() - start) / 1000),
-      }));
-      if (isCheckpoint(n, target)) read(n);
-      if (n < target) frame = requestAnimationFrame(tick);
-    };
-    frame = requestAnimationFrame(tick);
-    return () => {
-      live = false;
-      if (frame) cancelAnimationFrame(frame);
-    };
-  }, [renderer, running, target, key, res]);
+    if (!worker) return;
+    worker.w.postMessage({ kind: 'run', target: running ? target : 0 } satisfies ToGpuWorker);
+  }, [worker, running, target, key]);
 
   // a reference that arrives after the last read back still gives its error
   useEffect(() => {
@@ -162,5 +154,5 @@ export function useGpuRender(
     setProgress((p) => ({ ...p, relMse: err.e, relMsePixels: err.n }));
   }, [reference]);
 
-  return progress;
+  return { ...progress, rendererName: worker?.name ?? null };
 }

@@ -23,12 +23,14 @@ import { makeRenderWorker } from '../jobs';
 import { COMPARE_SPP, momentsArgs } from '../jobArgs';
 import type { RenderModel } from '../model';
 import { copyMeans } from '../pixels';
-import { createGpuRenderer, renderContext, type GpuSupport } from '../gpu/gpuRenderer';
+import type { GpuSupport } from '../gpu/gpuRenderer';
+import type { FromGpuWorker, ToGpuWorker } from '../gpu/gpuProtocol';
+import { makeGpuWorker } from '../jobs';
 import { sceneUniforms } from '../gpu/sceneUniforms';
 import { renderKey } from '../useProgressiveRender';
 import { MapFigure } from './MapFigure';
 
-/** The GPU side: the same settings, COMPARE_SPP frames on a canvas of its own, read back once. */
+/** The GPU side: the same settings, COMPARE_SPP frames in a worker of its own, read back once. */
 interface GpuSide {
   moments: PixelMoments;
   /** Mean over the image of |naive − Kahan| / Kahan. */
@@ -47,42 +49,30 @@ function useGpuMoments(m: RenderModel, enabled: boolean): { result: GpuSide | nu
   useEffect(() => {
     if (!enabled) return;
     const model = latest.current;
-    let live = true;
-    const canvas = document.createElement('canvas');
-    canvas.width = canvas.height = 1;
-    const gl = renderContext(canvas);
-    const done = (result: GpuSide | null, error: string | null) => {
-      if (live) setState({ key, result, error });
-    };
-    if (!gl) {
-      done(null, 'no WebGL2 context with float render targets');
-      return;
-    }
-    void (async () => {
-      const r = await createGpuRenderer(gl, model.res);
-      if (typeof r === 'string') return done(null, r);
-      r.load(sceneUniforms(buildScene(model.spec), model.view, model.res, model.trace), model.seed);
-      for (let k = 0; k < COMPARE_SPP && live; k++) {
-        r.step();
-        // one frame at a time, so the GPU's queue never holds a long batch the page would wait behind
-        await new Promise((go) => requestAnimationFrame(go));
+    const worker = makeGpuWorker();
+    const send = (msg: ToGpuWorker) => worker.postMessage(msg);
+    worker.onmessage = (e: MessageEvent<FromGpuWorker>) => {
+      const msg = e.data;
+      if (msg.kind === 'failed') setState({ key, result: null, error: msg.why });
+      else if (msg.kind === 'ready') {
+        const uniforms = sceneUniforms(buildScene(model.spec), model.view, model.res, model.trace);
+        send({ kind: 'load', id: 1, uniforms, seed: model.seed });
+        send({ kind: 'run', target: COMPARE_SPP });
+      } else if (msg.kind === 'sums' && msg.count === COMPARE_SPP) {
+        worker.terminate();
+        const n = model.res * model.res;
+        const sum = new Float64Array(n);
+        const sumSq = new Float64Array(n);
+        for (let k = 0; k < n; k++) {
+          sum[k] = msg.rgba[4 * k + 1];
+          sumSq[k] = msg.rgba[4 * k + 3];
+        }
+        const moments = momentsFromSums(sum, sumSq, COMPARE_SPP);
+        setState({ key, result: { moments, naiveError: naiveSumError(msg.rgba) }, error: null });
       }
-      const rgba = live ? await r.readBack() : null;
-      r.dispose();
-      gl.getExtension('WEBGL_lose_context')?.loseContext();
-      if (!rgba) return done(null, live ? 'the WebGL context was lost' : null);
-      const n = model.res * model.res;
-      const sum = new Float64Array(n);
-      const sumSq = new Float64Array(n);
-      for (let k = 0; k < n; k++) {
-        sum[k] = rgba[4 * k + 1];
-        sumSq[k] = rgba[4 * k + 3];
-      }
-      done({ moments: momentsFromSums(sum, sumSq, COMPARE_SPP), naiveError: naiveSumError(rgba) }, null);
-    })();
-    return () => {
-      live = false;
     };
+    send({ kind: 'init', res: model.res, canvas: null });
+    return () => worker.terminate();
   }, [key, enabled]);
   return state.key === key ? state : { result: null, error: null };
 }
@@ -115,7 +105,7 @@ function GreyFigure({
 }
 
 export default function Compare({ m, support }: { m: RenderModel; support: GpuSupport }) {
-  const gpuOk = support.webgl2 && support.floatTarget;
+  const gpuOk = support.webgl2 && support.offscreen;
   const cpu = useWorkerJob(makeRenderWorker, 'moments', momentsArgs(m), { delayMs: 100 });
   const gpu = useGpuMoments(m, gpuOk);
   const cmp = useMemo(
