@@ -1,12 +1,17 @@
 #!/usr/bin/env node
 /**
  * GPU benchmark (not a test): the frame time of the hemisphere scene's vertex-shader pass, which
- * makes and draws 10⁶ directions (src/scenes/hemisphere/view/gpu/warpShader.ts), in headless Chromium
- * against the built app. The page's own "Time 20 frames" button times each frame as draw +
+ * makes and draws 10⁶ directions (src/scenes/hemisphere/view/gpu/warpShader.ts), and the render
+ * lab's GPU renderer in samples per second (src/scenes/render/gpu/), in headless Chromium against
+ * the built app. The page's own "Time 20 frames" button times each frame as draw +
  * a one-pixel read back (which waits for the GPU), median of 20; this script presses it `--runs`
- * times for each form and records the medians, the renderer and the first pass's times.
+ * times for each form and records the medians, the renderer and the first pass's times. The render lab renders a 256 × 256 image of the exam
+ * scene (mis-power, 1 bounce) and of the white furnace (mis-power, 3 bounces) to `--render-spp`
+ * samples per pixel (default 32; 256 with --gpu) and records the page's own `samples-per-second`
+ * readout: pixels × samples per pixel per second of the run, one sample per pixel per displayed
+ * frame (so on a fast GPU the display's frame rate caps it).
  *
- *   npx vite build && node scripts/bench-gpu.mjs [--runs 3] [--port 4462] [--dist dist] [--gpu]
+ *   npx vite build && node scripts/bench-gpu.mjs [--runs 3] [--port 4462] [--dist dist] [--gpu] [--render-spp 32]
  *
  * By default Chromium runs with the repository's flags (--disable-gpu): WebGL2 is then
  * SwiftShader, a CPU implementation, so the number measures the CPU, not a GPU. `--gpu` drops
@@ -28,6 +33,7 @@ const runs = Number(opt('--runs', '3'));
 const port = Number(opt('--port', '4462'));
 const dist = opt('--dist', 'dist');
 const gpu = argv.includes('--gpu');
+const renderSpp = Number(opt('--render-spp', gpu ? '256' : '32'));
 const extra = argv.filter((a) => a.startsWith('--chrome-flag=')).map((a) => a.slice('--chrome-flag='.length));
 
 const exe = findChromium();
@@ -102,12 +108,47 @@ try {
       chi2p: Number(await value('gpu-chi2-p')),
     };
   }
+  // the render lab's GPU renderer: samples per second at 256², as the page reports them
+  out.renderLab = {
+    what: `render lab GPU renderer (WebGL2 fragment shader, float32): 256 × 256 pixels × ${renderSpp} samples per pixel, the page's samples-per-second readout (one sample per pixel per frame)`,
+    runs: {},
+  };
+  for (const [name, query] of [
+    ['exam, mis-power, 1 bounce', 'scene=exam&strategy=mis-power&bounces=1'],
+    ['furnace, mis-power, 3 bounces', 'scene=furnace&strategy=mis-power&bounces=3'],
+  ]) {
+    await page.goto(`http://127.0.0.1:${port}/app/#/render?res=256&spp=${renderSpp}&${query}`);
+    await page.waitForSelector('main#main');
+    await page.evaluate(() => window.scrollTo(0, 0));
+    await page.waitForFunction(
+      () => /^Done/.test(document.querySelector('[data-testid="render-status"]')?.textContent ?? ''),
+      null,
+      { timeout: 600_000 },
+    );
+    const renderer = await value('renderer');
+    if (renderer !== 'gpu')
+      throw new Error(
+        `the render lab drew with ${renderer}: ${await page.getByTestId('render-gpu-unavailable').innerText()}`,
+      );
+    out.renderLab.runs[name] = {
+      samplesPerSecond: Number(await value('samples-per-second')),
+      rendererNote: await page
+        .getByTestId('renderer')
+        .locator('xpath=..')
+        .locator('.readout-note')
+        .innerText(),
+    };
+  }
   out.machine.loadAverageAtEnd = loadavg();
   writeFileSync('bench/gpu.json', `${JSON.stringify(out, null, 2)}\n`);
   console.log(`renderer: ${out.renderer}`);
   for (const [k, v] of Object.entries(out.forms))
     console.log(
       `${k}: ${v.msPerFrame.toFixed(1)} ms per 10⁶-direction frame (runs: ${v.msPerFrameMedians.map((x) => x.toFixed(1)).join(', ')}), χ² p = ${v.chi2p}`,
+    );
+  for (const [k, v] of Object.entries(out.renderLab.runs))
+    console.log(
+      `render lab, ${k}: ${(v.samplesPerSecond / 1e6).toFixed(3)} M samples per second at 256² (${v.rendererNote})`,
     );
   if (!gpu)
     console.log('(SwiftShader: a CPU implementation of WebGL2; run with --gpu on a machine with a GPU)');
