@@ -188,7 +188,7 @@ export default function Compare({ m, support }: { m: RenderModel; support: GpuSu
               label="float64: bound on the naive sum's relative error"
               value={naiveSumBound(COMPARE_SPP, F64_UNIT_ROUNDOFF)}
               digits={3}
-              note={`(n − 1) u / (1 − (n − 1) u), u = 2⁻⁵³, n = ${COMPARE_SPP}: the CPU's sums`}
+              note={`Higham’s γ for n = ${COMPARE_SPP} terms, u = 2⁻⁵³: the CPU’s sums`}
             />
             <Readout
               id="compare-pixel-gpu"
