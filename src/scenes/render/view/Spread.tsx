@@ -62,7 +62,7 @@ export function Spread({ m }: { m: RenderModel }) {
               label="MSE against the reference"
               value={r.measuredMse}
               digits={4}
-              note="mean (x − ref)² over the same pixels and runs"
+              note="mean (x − ref)² over the same pixels and runs"
             />
           </div>
         </div>
