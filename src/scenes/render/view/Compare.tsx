@@ -39,28 +39,27 @@ interface GpuSide {
 
 function useGpuMoments(m: RenderModel, enabled: boolean): { result: GpuSide | null; error: string | null } {
   const key = renderKey(m);
+  const res = m.res;
   const [state, setState] = useState<{ key: string; result: GpuSide | null; error: string | null }>({
     key: '',
     result: null,
     error: null,
   });
-  const latest = useRef(m);
-  latest.current = m;
+  const [worker, setWorker] = useState<Worker | null>(null);
+  const latest = useRef({ m, key });
+  latest.current = { m, key };
+  const image = useRef({ id: 0, key: '' });
+
+  // one worker for the fold at this size: a new image reloads it, without compiling the shader again
   useEffect(() => {
     if (!enabled) return;
-    const model = latest.current;
-    const worker = makeGpuWorker();
-    const send = (msg: ToGpuWorker) => worker.postMessage(msg);
-    worker.onmessage = (e: MessageEvent<FromGpuWorker>) => {
+    const w = makeGpuWorker();
+    w.onmessage = (e: MessageEvent<FromGpuWorker>) => {
       const msg = e.data;
-      if (msg.kind === 'failed') setState({ key, result: null, error: msg.why });
-      else if (msg.kind === 'ready') {
-        const uniforms = sceneUniforms(buildScene(model.spec), model.view, model.res, model.trace);
-        send({ kind: 'load', id: 1, uniforms, seed: model.seed });
-        send({ kind: 'run', target: COMPARE_SPP });
-      } else if (msg.kind === 'sums' && msg.count === COMPARE_SPP) {
-        worker.terminate();
-        const n = model.res * model.res;
+      if (msg.kind === 'failed') setState({ key: latest.current.key, result: null, error: msg.why });
+      else if (msg.kind === 'ready') setWorker(w);
+      else if (msg.kind === 'sums' && msg.id === image.current.id && msg.count === COMPARE_SPP) {
+        const n = msg.rgba.length / 4;
         const sum = new Float64Array(n);
         const sumSq = new Float64Array(n);
         for (let k = 0; k < n; k++) {
@@ -68,12 +67,30 @@ function useGpuMoments(m: RenderModel, enabled: boolean): { result: GpuSide | nu
           sumSq[k] = msg.rgba[4 * k + 3];
         }
         const moments = momentsFromSums(sum, sumSq, COMPARE_SPP);
-        setState({ key, result: { moments, naiveError: naiveSumError(msg.rgba) }, error: null });
+        setState({
+          key: image.current.key,
+          result: { moments, naiveError: naiveSumError(msg.rgba) },
+          error: null,
+        });
       }
     };
-    send({ kind: 'init', res: model.res, canvas: null });
-    return () => worker.terminate();
-  }, [key, enabled]);
+    w.postMessage({ kind: 'init', res, canvas: null } satisfies ToGpuWorker);
+    return () => {
+      w.terminate();
+      setWorker(null);
+    };
+  }, [enabled, res]);
+
+  useEffect(() => {
+    if (!worker) return;
+    const model = latest.current.m;
+    image.current = { id: image.current.id + 1, key };
+    const uniforms = sceneUniforms(buildScene(model.spec), model.view, model.res, model.trace);
+    const send = (msg: ToGpuWorker) => worker.postMessage(msg);
+    send({ kind: 'load', id: image.current.id, uniforms, seed: model.seed });
+    send({ kind: 'run', target: COMPARE_SPP });
+  }, [worker, key]);
+
   return state.key === key ? state : { result: null, error: null };
 }
 

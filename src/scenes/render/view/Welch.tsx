@@ -96,7 +96,7 @@ export function Welch({ m }: { m: RenderModel }) {
               label="corrected level"
               value={r.sidakAlpha}
               digits={3}
-              note={`1 − (1 − ${r.alpha}) to the power 1/${r.tested}`}
+              note={`1 − (1\u00a0−\u00a0${r.alpha}) to the power 1/${r.tested}`}
             />
             <Readout id="welch-rejected" label="pixels below it" value={r.rejected} digits={6} />
           </div>
