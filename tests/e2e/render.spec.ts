@@ -3,7 +3,8 @@
 // render runs in workers to its spp while the page answers input, the equal-time and spread
 // folds mount on open, run their workers and stay open in the link, and the GPU renderer (the
 // default; SwiftShader here) draws the image, agrees with the CPU's in the compare fold and holds
-// where a pause leaves it (t). The estimators, the renderer
+// where a pause leaves it (t). The steps that test the CPU side (the inspector, the workers, the
+// folds) name renderer=cpu, so that no shader compiles beside them. The estimators, the renderer
 // and the page's logic are unit tests (tests/core/render/, tests/scenes/render/); the page as a
 // whole is in catalogue.spec.ts; the FLIP of downloaded images is checked on #/area-light
 // (area-light.spec.ts).
@@ -20,7 +21,7 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
 }) => {
   test.setTimeout(180_000);
   await test.step('the pixel readouts are the core inspector’s for the link', async () => {
-    const query = 'px=64,60&pn=1024&spp=1&res=128';
+    const query = 'px=64,60&pn=1024&spp=1&res=128&renderer=cpu';
     const m = buildRenderModel(parseParams(schema, query).values);
     const a = inspectArgs(m)!;
     const want = inspectPixel(buildScene(m.spec), m.view, a.px[0], a.px[1], inspectOptions(a));
@@ -88,7 +89,7 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
   });
 
   await test.step('equal time and the error from independent runs: folds that mount on open and stay open in the link', async () => {
-    await openScene(page, '#/render?res=32&spp=1');
+    await openScene(page, '#/render?res=32&spp=1&renderer=cpu');
     const fold = page.getByTestId('fold-equal-time');
     await expect(fold).not.toHaveAttribute('open', /.*/);
     await expect(page.getByTestId('equal-time')).toHaveCount(0);
@@ -127,14 +128,14 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
     await expect(page.getByTestId('welch-status')).toHaveText(/^Done: 8 runs/, { timeout: 60_000 });
     await expect(page.getByTestId('welch-verdict')).toHaveAttribute('data-value', 'pass');
     expect(Number(await readout(page, 'welch-rejected'))).toBe(0);
-    await openScene(page, '#/render?strategy=area&bias=no-cos-l&open=welch');
+    await openScene(page, '#/render?strategy=area&bias=no-cos-l&open=welch&renderer=cpu');
     await page.getByTestId('welch-other').selectOption('solid-angle');
     await expect(page.getByTestId('welch-verdict')).toHaveAttribute('data-value', 'fail', {
       timeout: 60_000,
     });
     expect(Number(await readout(page, 'welch-rejected'))).toBeGreaterThan(0);
     // cosine sampling finds the small light too rarely for the test: the fold says so, no verdict
-    await openScene(page, '#/render?strategy=cosine&open=welch');
+    await openScene(page, '#/render?strategy=cosine&open=welch&renderer=cpu');
     await expect(page.getByTestId('welch-not-testable')).toBeVisible();
     await expect(page.getByTestId('welch-verdict')).toHaveCount(0);
   });
