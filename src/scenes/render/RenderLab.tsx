@@ -70,7 +70,16 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
   const refJob = useWorkerJob(makeRenderWorker, 'reference', referenceArgs(m), { delayMs: 150 });
   const reference = refJob.result?.values ?? null;
   const cpuProgress = useProgressiveRender(cpuCanvas, m, !onGpu && visible, m.target, reference);
-  const gpuProgress = useGpuRender(gpuCanvas, m, onGpu, visible, m.target, reference, setFailure);
+  // a pause that reached the GPU's worker a few frames late: the link says where the image holds
+  const paused = useRef({ play: params.play, target: m.target });
+  paused.current = { play: params.play, target: m.target };
+  const onHeld = useCallback(
+    (count: number) => {
+      if (!paused.current.play && count > paused.current.target) setParams({ t: count });
+    },
+    [setParams],
+  );
+  const gpuProgress = useGpuRender(gpuCanvas, m, onGpu, visible, m.target, reference, setFailure, onHeld);
   const progress = onGpu ? gpuProgress : cpuProgress;
   const software = gpuProgress.rendererName ? softwareName(gpuProgress.rendererName) : null;
   // pausing writes where the run is into the link (t, in samples per pixel), as every timeline does

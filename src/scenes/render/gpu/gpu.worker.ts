@@ -67,6 +67,7 @@ function handle(m: ToGpuWorker): void {
     runStart = performance.now();
     runFrom = renderer.count;
     if (renderer.count >= target) {
+      if (renderer.count > target) post({ kind: 'held', id: image, count: renderer.count });
       if (renderer.count > 0) read(renderer.count, image);
     } else if (!looping) {
       looping = true;

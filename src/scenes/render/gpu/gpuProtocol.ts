@@ -20,6 +20,8 @@ export type FromGpuWorker =
   | { kind: 'failed'; why: string }
   /** A frame was added to image `id`: samples per pixel now, and paths per second since the run's start. */
   | { kind: 'frame'; id: number; count: number; samplesPerSecond: number }
+  /** Asked to run to fewer samples than image `id` has (a pause arrives after frames already made): where it holds. */
+  | { kind: 'held'; id: number; count: number }
   /** Image `id`'s sums at `count` samples per pixel (RGBA per pixel: naive, Kahan, compensation, squares). */
   | { kind: 'sums'; id: number; count: number; rgba: Float32Array };
 

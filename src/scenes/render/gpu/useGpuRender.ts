@@ -6,7 +6,8 @@
  * come back at 1, 2, 4 … samples per pixel and at the target, for the mean, the relMSE against the
  * reference and, at the end, the image's means for the measuring panel. A context that cannot be
  * made, a shader that does not compile or a context lost is reported to `onFailure`, and the page
- * draws with the CPU instead.
+ * draws with the CPU instead. Frames run ahead of the page's messages: when a pause arrives after
+ * the worker has gone past it, `onHeld` hears where the image really holds.
  */
 import { useEffect, useRef, useState, type RefObject } from 'react';
 import { buildScene } from '../../../core/render/scene';
@@ -72,13 +73,14 @@ export function useGpuRender(
   target: number,
   reference: Float64Array | null,
   onFailure: (why: string) => void,
+  onHeld: (count: number) => void,
 ): RenderProgress & { rendererName: string | null } {
   const key = renderKey(m);
   const res = m.res;
   const [worker, setWorker] = useState<{ w: Worker; name: string } | null>(null);
   const [progress, setProgress] = useState<RenderProgress>(EMPTY_PROGRESS);
-  const latest = useRef({ m, reference, onFailure });
-  latest.current = { m, reference, onFailure };
+  const latest = useRef({ m, reference, onFailure, onHeld });
+  latest.current = { m, reference, onFailure, onHeld };
   const lastMeans = useRef<{ means: Float64Array; n: number } | null>(null);
   // the number of the image last sent to the worker: what it says of others is stale
   const loaded = useRef(0);
@@ -94,7 +96,10 @@ export function useGpuRender(
       else if (msg.id !== loaded.current) return;
       else if (msg.kind === 'frame')
         setProgress((p) => ({ ...p, spp: msg.count, samplesPerSecond: msg.samplesPerSecond }));
-      else {
+      else if (msg.kind === 'held') {
+        setProgress((p) => ({ ...p, spp: msg.count }));
+        latest.current.onHeld(msg.count);
+      } else {
         const { m: model, reference: ref } = latest.current;
         const means = meansOf(msg.rgba, msg.count);
         lastMeans.current = { means, n: msg.count };
