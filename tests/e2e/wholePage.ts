@@ -12,6 +12,7 @@ import type { Page } from '@playwright/test';
 import { textFormulaGroups } from '../../src/ui/texBreaks';
 import { expect, openScene } from './fixtures';
 import { countTabStops } from './calmCount';
+import { MODEBAR_BUTTONS } from '../../src/ui/plotConfig';
 import {
   applyTextSpacing,
   clippedText,
@@ -287,7 +288,7 @@ export async function checkWholePage(
   await prepare?.(page);
   if (scene) {
     found.push(...(await examFirst(page, scene.parts)));
-    const c = await page.evaluate(countTabStops);
+    const c = await page.evaluate(countTabStops, MODEBAR_BUTTONS.length);
     if (c.firstScreen > CALM.firstScreen)
       found.push(
         `${c.firstScreen} tab stops in the first screen (at most ${CALM.firstScreen}): ${c.first.join(' | ')}`,
