@@ -346,7 +346,9 @@ export async function checkWholePage(
   found.push(...(await clippedText(page)).map((t) => `clipped under text spacing: ${t}`));
   for (let i = 0; i < 40; i++) {
     await page.keyboard.press('Tab');
-    const why = (await focusObscured(page)) ?? (await weakFocusRing(page));
+    // (both asked at once: one round trip to the page per Tab)
+    const [obscured, weak] = await Promise.all([focusObscured(page), weakFocusRing(page)]);
+    const why = obscured ?? weak;
     if (why) found.push(why);
   }
   // everything came from the app's own folder (the static build works offline)
