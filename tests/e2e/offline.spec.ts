@@ -91,6 +91,9 @@ test('offline and a deploy: one visit caches the whole build, a scene never open
     await page.goto(`${srv.base}#/practice/q5?seed=3`);
     expect(await page.evaluate(() => navigator.serviceWorker.controller === null)).toBe(true);
     await page.getByTestId('answer-a').fill('12.5');
+    // (the field let go: its blinking caret would keep the page from the quiet moment the
+    // worker's registration waits for, up to its 30 s limit)
+    await page.getByTestId('answer-a').blur();
     await waitForServiceWorker(page);
     // the web app manifest is linked once the worker registers (not in index.html), and is served
     const manifest = await page.evaluate(async () => {
