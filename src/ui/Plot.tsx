@@ -4,7 +4,7 @@ import { resolveTraceColors } from './palette';
 import { isPresent } from './pageKeys';
 import './plot.css';
 import { runChunked } from './chunked';
-import { PLOT_CONFIG } from './plotConfig';
+import { PLOT_CONFIG, PLOT_LEGEND } from './plotConfig';
 
 type PlotlyModule = (typeof import('plotly.js-cartesian-dist-min'))['default'];
 let plotlyPromise: Promise<PlotlyModule> | null = null;
@@ -180,7 +180,7 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
       paper_bgcolor: 'rgba(0,0,0,0)',
       plot_bgcolor: 'rgba(0,0,0,0)',
       font: { color: c.fg, size: Number(c.font) || 13 },
-      legend: { orientation: 'h', y: -0.25 },
+      legend: PLOT_LEGEND,
       xaxis: axis,
       yaxis: axis,
     };

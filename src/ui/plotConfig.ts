@@ -12,6 +12,19 @@
  */
 export const MODEBAR_BUTTONS = ['toImage', 'zoomIn2d', 'zoomOut2d', 'resetScale2d'] as const;
 
+/**
+ * Where every plot's legend goes: one row above the plot area, left-aligned, outside the data
+ * whatever its shape and at any width (below the plot, a legend met the x-axis title on a phone).
+ */
+export const PLOT_LEGEND = Object.freeze({
+  orientation: 'h',
+  x: 0,
+  y: 1.02,
+  xanchor: 'left',
+  yanchor: 'bottom',
+  bgcolor: 'rgba(0,0,0,0)',
+});
+
 export const PLOT_CONFIG = Object.freeze({
   responsive: true,
   displaylogo: false,
