@@ -4,6 +4,7 @@ import { resolveTraceColors } from './palette';
 import { isPresent } from './pageKeys';
 import './plot.css';
 import { runChunked } from './chunked';
+import { PLOT_CONFIG, PLOT_LEGEND } from './plotConfig';
 
 type PlotlyModule = (typeof import('plotly.js-cartesian-dist-min'))['default'];
 let plotlyPromise: Promise<PlotlyModule> | null = null;
@@ -17,23 +18,6 @@ export function loadPlotly(): Promise<PlotlyModule> {
   }
   return plotlyPromise;
 }
-
-/**
- * The one Plotly config of every plot. Nothing may leave the site: no "Edit in Chart Studio",
- * "Share chart", "Send data to cloud" or "link to plotly" action (they upload the plot's data to
- * Plotly's servers), and no Plotly logo link.
- */
-export const PLOT_CONFIG = Object.freeze({
-  responsive: true,
-  displaylogo: false,
-  showLink: false,
-  showSendToCloud: false,
-  showEditInChartStudio: false,
-  sendData: false,
-  linkText: '',
-  plotlyServerURL: '',
-  modeBarButtonsToRemove: ['lasso2d', 'select2d', 'sendChartToCloud', 'sendDataToCloud', 'editInChartStudio'],
-});
 
 /** A Plotly trace: plain objects as Plotly takes them. */
 export type PlotTrace = Record<string, unknown>;
@@ -196,7 +180,7 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
       paper_bgcolor: 'rgba(0,0,0,0)',
       plot_bgcolor: 'rgba(0,0,0,0)',
       font: { color: c.fg, size: Number(c.font) || 13 },
-      legend: { orientation: 'h', y: -0.25 },
+      legend: PLOT_LEGEND,
       xaxis: axis,
       yaxis: axis,
     };

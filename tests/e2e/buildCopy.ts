@@ -1,7 +1,9 @@
 /**
  * A static server of a private copy of the build at /app/ on an ephemeral port, for the tests that
- * change what is served (stop the server, "deploy" a new build, remove a file) without touching
- * the shared one. `stop()` closes it and every connection; the copy's folder is `dir`.
+ * change what is served (take the server down, "deploy" a new build, remove a file) without
+ * touching the shared one. `setDown(true)` makes every request fail as if the host were gone (the
+ * connection is dropped without an answer) until `setDown(false)`; `stop()` closes the server and
+ * every connection; the copy's folder is `dir`.
  */
 import { createServer, type Server } from 'node:http';
 import { cpSync, mkdtempSync } from 'node:fs';
@@ -24,10 +26,22 @@ const TYPES: Record<string, string> = {
   '.ttf': 'font/ttf',
 };
 
-export async function serveBuildCopy(): Promise<{ dir: string; base: string; stop: () => Promise<void> }> {
+export interface BuildCopy {
+  dir: string;
+  base: string;
+  setDown: (down: boolean) => void;
+  stop: () => Promise<void>;
+}
+
+export async function serveBuildCopy(): Promise<BuildCopy> {
   const dir = mkdtempSync(join(tmpdir(), 'rml-build-'));
   cpSync(dist, dir, { recursive: true });
+  let down = false;
   const server: Server = createServer(async (req, res) => {
+    if (down) {
+      req.socket.destroy();
+      return;
+    }
     try {
       let path = decodeURIComponent(new URL(req.url ?? '/', 'http://x').pathname);
       if (!path.startsWith('/app/')) throw new Error('outside');
@@ -49,6 +63,9 @@ export async function serveBuildCopy(): Promise<{ dir: string; base: string; sto
   return {
     dir,
     base: `http://127.0.0.1:${(server.address() as { port: number }).port}/app/`,
+    setDown: (d) => {
+      down = d;
+    },
     stop: () =>
       new Promise<void>((ok) => {
         server.closeAllConnections();

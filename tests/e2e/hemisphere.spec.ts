@@ -295,12 +295,28 @@ test('the worker: the opening statistics wait for the page to load, a change bef
   expect(log.slice(w)).toContain('ready settled');
   await expect(page.getByTestId('stats-status')).toHaveText('statistics up to date');
 
-  // a change while the page is still loading is not held back
+  // a change while the page is still loading is not held back: the page itself changes its
+  // address right after it first shows "waiting" (from the test's side, the page could settle
+  // between seeing that state and sending the change); to a million directions, which the same
+  // page then grows in the 3D view
+  await page.addInitScript(() => {
+    if (!location.hash.includes('n=400')) return;
+    const mo = new MutationObserver(() => {
+      const s = document.querySelector('[data-testid="stats-status"]')?.getAttribute('data-state');
+      if (s !== 'waiting') return;
+      mo.disconnect();
+      // after the frame that shows it, once the page listens for address changes
+      requestAnimationFrame(() => setTimeout(() => (location.hash = '#/hemisphere?n=1000000')));
+    });
+    mo.observe(document, {
+      subtree: true,
+      childList: true,
+      attributes: true,
+      attributeFilter: ['data-state'],
+    });
+  });
   await page.goto('about:blank');
   await openSceneNoWait(page, '#/hemisphere?n=400');
-  await expect(page.getByTestId('stats-status')).toHaveAttribute('data-state', 'waiting');
-  // (to a million directions: the same page then grows them in the 3D view)
-  await page.evaluate(() => (location.hash = '#/hemisphere?n=1000000'));
   await waitForReadout(page, 'samples', (v) => Number(v) === 1_000_000, 60_000);
   await statsReady(page);
   const log2 = await page.evaluate(() => (window as unknown as { __log: string[] }).__log);

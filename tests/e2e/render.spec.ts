@@ -96,6 +96,7 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
     await fold.locator('summary').click();
     await expect(page).toHaveURL(/[?&]open=equal-time(&|$)/);
     await page.getByTestId('et-budget').selectOption('250');
+    await expect(page).toHaveURL(/[?&]et=250(&|$)/);
     await expect(page.getByTestId('et-status')).toHaveText(/^Done: 7 strategies/, { timeout: 60_000 });
     const ranking = (await page.getByTestId('et-ranking').getAttribute('data-value'))!.split(',');
     expect(ranking).toHaveLength(7);
@@ -128,8 +129,9 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
     await expect(page.getByTestId('welch-status')).toHaveText(/^Done: 8 runs/, { timeout: 60_000 });
     await expect(page.getByTestId('welch-verdict')).toHaveAttribute('data-value', 'pass');
     expect(Number(await readout(page, 'welch-rejected'))).toBe(0);
-    await openScene(page, '#/render?strategy=area&bias=no-cos-l&open=welch&renderer=cpu');
-    await page.getByTestId('welch-other').selectOption('solid-angle');
+    // (the strategy compared with comes from the link)
+    await openScene(page, '#/render?strategy=area&bias=no-cos-l&open=welch&vs=solid-angle&renderer=cpu');
+    await expect(page.getByTestId('welch-other')).toHaveValue('solid-angle');
     await expect(page.getByTestId('welch-verdict')).toHaveAttribute('data-value', 'fail', {
       timeout: 60_000,
     });

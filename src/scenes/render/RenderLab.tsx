@@ -212,7 +212,7 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
         summary="Equal time and equal error: every strategy for the same time, measured against the reference"
         className="render-fold"
       >
-        <EqualTime m={m} />
+        <EqualTime m={m} et={params.et} onEt={(et) => set({ et })} />
       </Fold>
       <Fold
         name="spread"
@@ -226,7 +226,7 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
         summary="Two estimators, pixel by pixel: does every pixel converge to the same value? (Welch's t-test)"
         className="render-fold"
       >
-        <Welch m={m} />
+        <Welch m={m} vs={params.vs} onVs={(vs) => set({ vs })} />
       </Fold>
       <About />
     </div>

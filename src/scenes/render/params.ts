@@ -3,20 +3,36 @@
  * (`strategy`) and path length (`bounces`); the exam scene's objects with the area-light, ray–sphere
  * and texture scenes' own parameters (rho, lc, ls, tilt, L; c, r; grid, filter); the camera (eye,
  * look, fov: empty means the preset's own view); the image (res, spp, seed, renderer: gpu or cpu); the
- * inspected pixel (px = i,j, column i and row j from the top left) and its sample count pn; and
- * the progressive run's timeline, whose time is samples per pixel: `play` (0 holds the render) and
- * `t` (with play=0, the samples per pixel it renders to and holds at; pausing writes it).
+ * inspected pixel (px = i,j, column i and row j from the top left) and its sample count pn; the
+ * folds' own choices (`et`, the equal-time budget; `vs`, the strategy the Welch map compares
+ * with); and the progressive run's timeline, whose time is samples per pixel: `play` (0 holds the
+ * render) and `t` (with play=0, the samples per pixel it renders to and holds at; pausing writes it).
  */
 import { BIASES } from '../../core/render/bias';
 import type { ParamSchema, ParamValues } from '../../kit/params';
 import { EXAM_GRID_TEXT } from '../../core/texture/grid';
 import { RENDER_SCENES, EXAM_DEFAULTS } from '../../core/render/scene';
-import { STRATEGIES } from '../../core/render/directLight';
+import { STRATEGIES, type Strategy } from '../../core/render/directLight';
 import { MAX_BOUNCES, MIN_BOUNCES } from '../../core/render/pathTrace';
 import { DEFAULT_PN } from '../../core/render/inspector';
 import { timelineParams } from '../../kit/timeline';
 
 const BIG = 1e6;
+
+/**
+ * The strategies whose runs of a few samples give nearly normal pixel values, each sample aiming
+ * at the light: the ones the Welch map compares. Uniform, cosine and BSDF sampling find a small
+ * light only now and then, so most of their short runs see it never or once.
+ */
+export const LIGHT_SAMPLING = [
+  'area',
+  'solid-angle',
+  'mis-balance',
+  'mis-power',
+] as const satisfies readonly Strategy[];
+
+/** The equal-time fold's budgets per strategy, in milliseconds. */
+export const EQUAL_TIME_BUDGETS = ['250', '1000', '4000'] as const;
 
 /** Smallest and largest image side, in pixels. */
 export const MIN_RES = 32;
@@ -116,8 +132,27 @@ export const schema = {
     integer: true,
     label: 'inspector samples',
   },
+  et: {
+    kind: 'enum',
+    default: '1000',
+    values: EQUAL_TIME_BUDGETS,
+    label: 'equal-time budget per strategy (ms)',
+  },
+  vs: {
+    kind: 'enum',
+    default: 'auto',
+    values: ['auto', ...LIGHT_SAMPLING],
+    label:
+      'the strategy the Welch map compares with (auto: area, or solid-angle when the page samples by area)',
+  },
   play: { kind: 'bool', default: true, label: 'render running' },
   t: { ...timelineParams({ max: MAX_SPP, integer: true }).t, label: 'samples per pixel to hold at (play=0)' },
 } as const satisfies ParamSchema;
 
 export type RenderParams = ParamValues<typeof schema>;
+
+/** The strategy the Welch map compares the page's with: `vs`, or for `auto` one that is not the page's. */
+export function welchOther(vs: RenderParams['vs'], strategy: Strategy): Strategy {
+  if (vs !== 'auto') return vs;
+  return strategy === 'area' ? 'solid-angle' : 'area';
+}

@@ -205,7 +205,8 @@ export const Answer6c = memo(function Answer6c({
             'No standard error yet (n < 2), or no analytic value to compare with.'
           )
         ) : (
-          `The estimate is ${fmt(Math.abs(zTarget), 2)} standard errors ${zTarget >= 0 ? 'above' : 'below'} the ${model.occluder ? 'occluded ' : ''}reference${Math.abs(zTarget) <= 3 ? ' — within 3σ, as an unbiased estimator should be (about 997 times in 1000).' : ' — outside 3σ (happens about 3 times in 1000 for a correct estimator; try another seed).'}`
+          // the distance only: the t-test above gives the verdict
+          `The estimate is ${fmt(Math.abs(zTarget), 2)} standard errors ${zTarget >= 0 ? 'above' : 'below'} the ${model.occluder ? 'occluded ' : ''}reference.`
         )}
       </p>
     </LiveAnswer>

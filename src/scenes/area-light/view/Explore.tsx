@@ -83,7 +83,7 @@ const TIMING_PLOT: LogLogSpec = {
   heights: [280, 360],
 };
 
-/** A log–log plot with its legend in a row above the plot. */
+/** A log–log plot (its legend in a row above it, as every plot's). */
 function LogLogPlot({
   spec: { label, axes, heights, testId },
   present,
@@ -97,7 +97,6 @@ function LogLogPlot({
   const layout = {
     xaxis: { type: 'log', title: { text: axes[0] } },
     yaxis: { type: 'log', title: { text: axes[1] } },
-    legend: { orientation: 'h', x: 0, y: 1.02, yanchor: 'bottom' },
     margin: { l: 56, r: 16, t: 40, b: 44 },
   };
   const height = heights[present ? 1 : 0];

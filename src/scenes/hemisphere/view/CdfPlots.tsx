@@ -12,7 +12,7 @@ import { HALF_PI, TWO_PI, sphericalPhi, sphericalTheta } from '../../../core/sam
 import type { DrawStats } from '../drawStats';
 import type { Lobe } from '../lobe';
 import { cdfCurve, histogramCdf, marginalShape } from '../marginals';
-import { LEGEND_ABOVE, titled } from './plotTitle';
+import { titled } from './plotTitle';
 import { modelCurve } from './Plots';
 import { REFERENCE, SAMPLED } from './plotColors';
 
@@ -111,7 +111,6 @@ function CdfPlot({
           ...titled(`P(${v}): the CDF${samples ? ' vs the samples' : ''}`, true),
           xaxis: { title: { text: `${v} (rad)` }, range: [0, hi] },
           yaxis: { title: { text: `P(${v}) = ξ` }, range: [0, 1.02] },
-          legend: LEGEND_ABOVE,
         }}
         height={260}
         testId={testId}

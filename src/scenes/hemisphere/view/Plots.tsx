@@ -6,7 +6,7 @@
 import { useMemo } from 'react';
 import { AudioTrace, Plot, ShowAsTable, type PlotTrace, type TraceEvent } from '../../../ui';
 import { HALF_PI, TWO_PI } from '../../../core/sampling';
-import { LEGEND_ABOVE, titled } from './plotTitle';
+import { titled } from './plotTitle';
 import type { DrawStats } from '../drawStats';
 import type { Lobe } from '../lobe';
 import { marginalShape } from '../marginals';
@@ -81,7 +81,6 @@ function MarginalPlot({
           xaxis: { title: { text: `${v} (rad)` }, range: [0, hi] },
           yaxis: { title: { text: 'density' } },
           bargap: 0,
-          legend: LEGEND_ABOVE,
         }}
         testId={testId}
       />

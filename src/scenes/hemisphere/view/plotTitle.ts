@@ -25,16 +25,3 @@ export const LEGEND_INSIDE = {
   yanchor: 'top',
   bgcolor: 'rgba(0,0,0,0)',
 };
-
-/**
- * Legend in one row above the plot area, under the title (use with `titled(…, true)`): outside the
- * bars and curves whatever their shape, at any width (on a phone a legend inside covered bars).
- */
-export const LEGEND_ABOVE = {
-  orientation: 'h',
-  x: 0,
-  y: 1.02,
-  xanchor: 'left',
-  yanchor: 'bottom',
-  bgcolor: 'rgba(0,0,0,0)',
-};

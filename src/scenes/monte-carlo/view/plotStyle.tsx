@@ -1,4 +1,4 @@
-/** Shared look of the scene's Plotly views: colours, legend and margins, layouts, the run bar. */
+/** Shared look of the scene's Plotly views: colours, margins, layouts, the run bar (the legend is every plot's, src/ui/plotConfig). */
 import type { ReactNode } from 'react';
 import { NumberField, SERIES } from '../../../ui';
 import type { WorkerFactory, WorkerJob } from '../../../workers';
@@ -25,23 +25,19 @@ export const strategyLine = (i: number, width = 2) => ({
   width,
 });
 export const arr = (a: ArrayLike<number>) => Array.from(a);
-/** Legend above the plot (below, it collides with the x-axis title on narrow screens). */
-export const LEGEND = { orientation: 'h', x: 0, xanchor: 'left', y: 1.02, yanchor: 'bottom' };
 export const MARGIN = { l: 60, r: 12, t: 12, b: 48 };
 
 // Layouts are module constants: Plot re-renders whenever its layout object changes identity.
-export const L_FUNC = { legend: LEGEND, margin: MARGIN, xaxis: { title: { text: 'x' } } };
+export const L_FUNC = { margin: MARGIN, xaxis: { title: { text: 'x' } } };
 export const L_EST = {
   xaxis: { type: 'log', title: { text: 'N (samples)' } },
   yaxis: { title: { text: 'estimate' } },
-  legend: LEGEND,
   margin: MARGIN,
 };
 /** A log-log layout with these axis titles. */
 const logLog = (x: string, y: string) => ({
   xaxis: { type: 'log', title: { text: x } },
   yaxis: { type: 'log', title: { text: y }, exponentformat: 'power' },
-  legend: LEGEND,
   margin: MARGIN,
 });
 export const L_ERR = logLog('N', '|estimate − exact|');
@@ -51,7 +47,6 @@ export const L_HIST = {
   xaxis: { title: { text: 'estimate ⟨I⟩' } },
   yaxis: { title: { text: 'count' } },
   bargap: 0,
-  legend: LEGEND,
   margin: MARGIN,
 };
 

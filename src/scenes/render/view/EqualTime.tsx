@@ -6,7 +6,7 @@
  * the ranking at equal time, and the time
  * each strategy needed to reach one error (equal error), read off the same runs.
  */
-import { useEffect, useMemo, useRef, useState } from 'react';
+import { useEffect, useMemo, useRef } from 'react';
 import { Notice, Plot } from '../../../ui';
 import { ScrollBox } from '../../../ui/ScrollBox';
 import { readoutValue } from '../../../ui/Readout';
@@ -17,9 +17,9 @@ import { useWorkerJob } from '../../../workers';
 import { makeRenderWorker } from '../jobs';
 import { equalTimeArgs } from '../jobArgs';
 import type { RenderModel } from '../model';
+import { EQUAL_TIME_BUDGETS, type RenderParams } from '../params';
 import { srgbByte } from '../../../core/image/srgb';
 
-const BUDGETS = [250, 1000, 4000] as const;
 /** Side of the zoomed inset, in image pixels, and its magnification. */
 const INSET = 16;
 
@@ -147,8 +147,17 @@ function errorPlot(runs: readonly StrategyRun[], order: readonly number[], measu
   return { data, words, label };
 }
 
-export function EqualTime({ m }: { m: RenderModel }) {
-  const [budget, setBudget] = useState<number>(1000);
+/** The fold; `et` is the link's budget per strategy (ms), and choosing another writes it there. */
+export function EqualTime({
+  m,
+  et,
+  onEt,
+}: {
+  m: RenderModel;
+  et: RenderParams['et'];
+  onEt: (et: RenderParams['et']) => void;
+}) {
+  const budget = Number(et);
   const args = useMemo(() => equalTimeArgs(m, budget), [m, budget]);
   const job = useWorkerJob(makeRenderWorker, 'equalTime', args, { delayMs: 100 });
   const done = job.result;
@@ -182,13 +191,13 @@ export function EqualTime({ m }: { m: RenderModel }) {
       <label className="et-budget">
         Time per strategy{' '}
         <select
-          value={budget}
-          onChange={(e) => setBudget(Number(e.currentTarget.value))}
+          value={et}
+          onChange={(e) => onEt(e.currentTarget.value as RenderParams['et'])}
           data-testid="et-budget"
         >
-          {BUDGETS.map((b) => (
+          {EQUAL_TIME_BUDGETS.map((b) => (
             <option key={b} value={b}>
-              {b < 1000 ? `${b} ms` : `${b / 1000} s`}
+              {Number(b) < 1000 ? `${b} ms` : `${Number(b) / 1000} s`}
             </option>
           ))}
         </select>

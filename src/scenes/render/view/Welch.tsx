@@ -7,7 +7,7 @@
  * pair raises a false alarm anywhere in the image with probability α only. The map shows each
  * pixel's −log₁₀ p in viridis, yellow at the corrected level and beyond.
  */
-import { useMemo, useState } from 'react';
+import { useMemo } from 'react';
 import { Notice, Readout } from '../../../ui';
 import { formatNumber } from '../../../core/format';
 import type { Strategy } from '../../../core/render/directLight';
@@ -15,18 +15,24 @@ import { useWorkerJob } from '../../../workers';
 import { makeRenderWorker } from '../jobs';
 import { SPREAD_SPP, welchArgs } from '../jobArgs';
 import type { RenderModel } from '../model';
+import { LIGHT_SAMPLING, welchOther, type RenderParams } from '../params';
 import { MapFigure } from './MapFigure';
 
 /**
- * The strategies whose runs of a few samples give nearly normal pixel values: each sample aims at
- * the light. Uniform, cosine and BSDF sampling find a small light only now and then, so most of
- * their runs see it never or once, and a t-test of such runs raises false alarms.
+ * The fold. `vs` is the link's choice of the other strategy (`auto`: see {@link welchOther});
+ * choosing another writes it into the link.
  */
-const LIGHT_SAMPLING: readonly Strategy[] = ['area', 'solid-angle', 'mis-balance', 'mis-power'];
-
-export function Welch({ m }: { m: RenderModel }) {
-  const [other, setOther] = useState<Strategy>(m.trace.strategy === 'area' ? 'solid-angle' : 'area');
-  const testable = LIGHT_SAMPLING.includes(m.trace.strategy);
+export function Welch({
+  m,
+  vs,
+  onVs,
+}: {
+  m: RenderModel;
+  vs: RenderParams['vs'];
+  onVs: (vs: RenderParams['vs']) => void;
+}) {
+  const other = welchOther(vs, m.trace.strategy);
+  const testable = (LIGHT_SAMPLING as readonly Strategy[]).includes(m.trace.strategy);
   const args = useMemo(() => (testable ? welchArgs(m, other) : null), [m, other, testable]);
   const job = useWorkerJob(makeRenderWorker, 'welch', args, { delayMs: 100 });
   const r = args ? job.result : undefined;
@@ -63,7 +69,7 @@ export function Welch({ m }: { m: RenderModel }) {
         Compare with{' '}
         <select
           value={other}
-          onChange={(e) => setOther(e.currentTarget.value as Strategy)}
+          onChange={(e) => onVs(e.currentTarget.value as RenderParams['vs'])}
           data-testid="welch-other"
         >
           {LIGHT_SAMPLING.map((s) => (
