@@ -2,7 +2,8 @@
  * What every scene of the catalogue shares, written once and run for each scene, two tests
  * each: the whole page as a reader meets it (./wholePage.ts: axe in both themes and at both
  * widths, the WCAG criteria axe does not test, carets, formula wrapping); the shared timeline
- * (reduced motion, no frames while paused or off screen, play / pause and the link), and on the
+ * (reduced motion, no frames while paused or off screen, play / pause and the link, opened again
+ * in the same tab, which mounts the scene anew from it), and on the
  * same page the lecture room (present=1 with ask=1: results held back until Reveal, then the
  * stage is the first screen, legible from the back of the room). A scene-specific check (its readouts against its
  * model, its drags and keys) lives in that scene's own spec.
@@ -98,9 +99,17 @@ for (const s of SCENES) {
       await expect(page).toHaveURL(new RegExp(`[?&]t=${t!.replace('.', '\\.')}(&|$)`));
       const key = await page.getByTestId(s.keyReadout).first().getAttribute('data-value');
       await expectIdle(page, `${s.id}: frames after pausing`);
-      const url = page.url();
-      await page.goto('about:blank');
-      await page.goto(url);
+      // the link opened in this tab: the scene is left and mounted again from the link alone (first
+      // the same link at t = 0, which must show 0: the position comes from the link, not from memory)
+      const address = new URL(page.url()).hash;
+      const mountFrom = async (hash: string) => {
+        await page.evaluate(() => (location.hash = '#/'));
+        await expect(page.getByTestId('timeline')).toHaveCount(0);
+        await page.evaluate((h) => (location.hash = h), hash);
+      };
+      await mountFrom(address.replace(/([?&])t=[^&]*/, '$1t=0'));
+      await expect(page.getByTestId('timeline')).toHaveAttribute('data-t', '0');
+      await mountFrom(address);
       await expect(page.getByTestId('timeline')).toHaveAttribute('data-t', t!);
       await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '0');
       await expect(page.getByTestId(s.keyReadout).first()).toHaveAttribute('data-value', key ?? '');

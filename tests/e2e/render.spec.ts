@@ -130,14 +130,14 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
     await expect(page.getByTestId('welch-verdict')).toHaveAttribute('data-value', 'pass');
     expect(Number(await readout(page, 'welch-rejected'))).toBe(0);
     // (the strategy compared with comes from the link)
-    await openScene(page, '#/render?strategy=area&bias=no-cos-l&open=welch&vs=solid-angle&renderer=cpu');
+    await openScene(page, '#/render?strategy=area&bias=no-cos-l&open=welch&vs=solid-angle&renderer=cpu&res=32&spp=1');
     await expect(page.getByTestId('welch-other')).toHaveValue('solid-angle');
     await expect(page.getByTestId('welch-verdict')).toHaveAttribute('data-value', 'fail', {
       timeout: 60_000,
     });
     expect(Number(await readout(page, 'welch-rejected'))).toBeGreaterThan(0);
     // cosine sampling finds the small light too rarely for the test: the fold says so, no verdict
-    await openScene(page, '#/render?strategy=cosine&open=welch&renderer=cpu');
+    await openScene(page, '#/render?strategy=cosine&open=welch&renderer=cpu&res=32&spp=1');
     await expect(page.getByTestId('welch-not-testable')).toBeVisible();
     await expect(page.getByTestId('welch-verdict')).toHaveCount(0);
   });
