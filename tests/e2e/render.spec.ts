@@ -130,7 +130,10 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
     await expect(page.getByTestId('welch-verdict')).toHaveAttribute('data-value', 'pass');
     expect(Number(await readout(page, 'welch-rejected'))).toBe(0);
     // (the strategy compared with comes from the link)
-    await openScene(page, '#/render?strategy=area&bias=no-cos-l&open=welch&vs=solid-angle&renderer=cpu&res=32&spp=1');
+    await openScene(
+      page,
+      '#/render?strategy=area&bias=no-cos-l&open=welch&vs=solid-angle&renderer=cpu&res=32&spp=1',
+    );
     await expect(page.getByTestId('welch-other')).toHaveValue('solid-angle');
     await expect(page.getByTestId('welch-verdict')).toHaveAttribute('data-value', 'fail', {
       timeout: 60_000,
@@ -165,6 +168,8 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
     // one pixel of the GPU's image, read back, against the CPU's in the fold's terms
     expect(Math.abs(Number(await readout(page, 'compare-pixel-z')))).toBeLessThan(4);
     expect(Number(await readout(page, 'compare-pixel-gpu'))).toBeGreaterThan(0);
+    // the main image's price of float32 at its last read-back (a number, not none, on the GPU)
+    expect(Number(await readout(page, 'f32-naive-error'))).toBeGreaterThanOrEqual(0);
     const f32 = Number(await readout(page, 'compare-f32-naive-error'));
     expect(f32 >= 0 && f32 < 1e-5, `compare-f32-naive-error = ${f32}`).toBe(true);
     // the white furnace under cosine sampling at three bounces: 1 at every sample on both sides
@@ -200,6 +205,7 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
     await page.reload();
     await expect(page.getByTestId('render-gpu-unavailable')).toContainText('OffscreenCanvas');
     await expect(page.getByTestId('renderer')).toHaveAttribute('data-value', 'cpu');
+    await expect(page.getByTestId('f32-naive-error')).toHaveAttribute('data-value', 'none');
     await expect(page.getByTestId('render-status')).toHaveText(/^Done: 2 samples per pixel\.$/, {
       timeout: 30_000,
     });

@@ -162,6 +162,17 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
               }
             />
             <Readout
+              id="f32-naive-error"
+              label="float32 sum: mean |naive − Kahan| / Kahan"
+              value={onGpu && Number.isFinite(progress.f32NaiveError) ? progress.f32NaiveError : null}
+              digits={2}
+              note={
+                onGpu
+                  ? `at ${progress.statsSpp} samples per pixel (the image is the compensated sum)`
+                  : 'the CPU sums in float64'
+              }
+            />
+            <Readout
               id="rel-mse"
               label="relMSE vs exact"
               value={progress.relMsePixels > 0 ? progress.relMse : null}

@@ -32,6 +32,11 @@ export interface RenderProgress {
   error: string | null;
   /** The finished image's pixel means (linear radiance, rows from the top), null before the end. */
   means: Float64Array | null;
+  /**
+   * What summing in float32 costs at `statsSpp`: the mean over pixels of |naive − Kahan| / Kahan of
+   * the GPU's two running sums (core/render/f32Sum); NaN on the CPU, which sums in float64.
+   */
+  f32NaiveError: number;
 }
 
 export const EMPTY_PROGRESS: RenderProgress = {
@@ -44,6 +49,7 @@ export const EMPTY_PROGRESS: RenderProgress = {
   done: false,
   error: null,
   means: null,
+  f32NaiveError: NaN,
 };
 
 /** Workers per render: the cores but one (the page's), at least one, at most four. */
@@ -133,6 +139,7 @@ export function useProgressiveRender(
         done,
         error: null,
         means: done ? pixelMeans(acc.sum, acc.count) : null,
+        f32NaiveError: NaN,
       });
     };
     const schedule = () => {

@@ -12,6 +12,7 @@
 import { useEffect, useRef, useState, type RefObject } from 'react';
 import { buildScene } from '../../../core/render/scene';
 import { relMse } from '../../../core/render/relMse';
+import { naiveSumError } from '../../../core/render/f32Sum';
 import { EMPTY_PROGRESS, renderKey, type RenderProgress } from '../useProgressiveRender';
 import type { RenderModel } from '../model';
 import { makeGpuWorker } from '../jobs';
@@ -115,6 +116,7 @@ export function useGpuRender(
           relMsePixels: err.n,
           done,
           means: done ? means : null,
+          f32NaiveError: naiveSumError(msg.rgba),
         }));
       }
     };
