@@ -13,6 +13,7 @@ import { Readout } from './Readout';
 import { ImageCompare } from './ImageCompare';
 import { downloadFile } from './download';
 import { formatNumber } from './format';
+import { keepTextParenthesesTogether } from './texBreaks';
 import { paintRgba, type ImageSet } from './imageMeasure';
 import './imageMeasure.css';
 
@@ -157,7 +158,7 @@ export function ImageMeasurePanel({ set }: { set: ImageSet | null }) {
           flip -r {set.fileStem}-reference.png -t {stem}-render.png
         </code>{' '}
         (NVIDIA’s tool) or <code>node scripts/flip.mjs</code> on the two files prints the same mean. relMSE is
-        the mean of (x − ref)²/(ref² + 0.01) over {set.relMseOf}.
+        the mean of {keepTextParenthesesTogether('(x − ref)²/(ref² + 0.01)')} over {set.relMseOf}.
       </p>
     </div>
   );
