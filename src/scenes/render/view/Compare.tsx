@@ -6,7 +6,7 @@
  * naive float32 sum of the GPU's samples is from its Kahan-compensated sum, beside the bound on the
  * CPU's float64 naive sum at the same count.
  */
-import { useEffect, useMemo, useRef, useState } from 'react';
+import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import { Notice, Readout } from '../../../ui';
 import { formatNumber } from '../../../core/format';
 import { buildScene } from '../../../core/render/scene';
@@ -28,7 +28,7 @@ import type { FromGpuWorker, ToGpuWorker } from '../gpu/gpuProtocol';
 import { makeGpuWorker } from '../jobs';
 import { sceneUniforms } from '../gpu/sceneUniforms';
 import { renderKey } from '../useProgressiveRender';
-import { MapFigure } from './MapFigure';
+import { CanvasFigure, MapFigure } from './MapFigure';
 
 /** The GPU side: the same settings, COMPARE_SPP frames in a worker of its own, read back once. */
 interface GpuSide {
@@ -105,20 +105,8 @@ function GreyFigure({
   label: string;
   caption: string;
 }) {
-  const canvas = useRef<HTMLCanvasElement>(null);
-  useEffect(() => {
-    const g = canvas.current?.getContext('2d');
-    if (!g) return;
-    const img = g.createImageData(res, res);
-    copyMeans(means, img.data);
-    g.putImageData(img, 0, 0);
-  }, [means, res]);
-  return (
-    <figure className="et-image">
-      <canvas ref={canvas} width={res} height={res} role="img" aria-label={label} />
-      <figcaption>{caption}</figcaption>
-    </figure>
-  );
+  const paint = useCallback((rgba: Uint8ClampedArray) => copyMeans(means, rgba), [means]);
+  return <CanvasFigure res={res} paint={paint} label={label} caption={caption} />;
 }
 
 export default function Compare({ m, support }: { m: RenderModel; support: GpuSupport }) {
