@@ -74,4 +74,34 @@ describe('focusOverflowing', () => {
     focusOverflowing(root as unknown as ParentNode);
     expect(wide.attrs.has('tabindex')).toBe(false);
   });
+
+  it('measures every box before it changes any (a change between two measurements lays the page out again)', () => {
+    const log: string[] = [];
+    const logged = (w: number, c: number, tab: boolean) => {
+      const b = box(w, c, tab);
+      return {
+        get scrollWidth() {
+          log.push('read');
+          return b.scrollWidth;
+        },
+        get clientWidth() {
+          return b.clientWidth;
+        },
+        hasAttribute: b.hasAttribute,
+        setAttribute: (n: string, v: string) => {
+          log.push('write');
+          b.setAttribute(n, v);
+        },
+        removeAttribute: (n: string) => {
+          log.push('write');
+          b.removeAttribute(n);
+        },
+      };
+    };
+    const boxes = [logged(520, 300, false), logged(300, 300, true), logged(700, 300, false)];
+    const root = { querySelectorAll: (sel: string) => (sel === '.deriv-formula' ? boxes : []) };
+    focusOverflowing(root as unknown as ParentNode);
+    expect(log.filter((x) => x === 'write')).toHaveLength(3);
+    expect(log.lastIndexOf('read')).toBeLessThan(log.indexOf('write'));
+  });
 });

@@ -7,15 +7,19 @@
  */
 import { useEffect, type RefObject } from 'react';
 
-/** Gives every `.deriv-formula` box under `root` a tab stop exactly while its content overflows it. */
+/**
+ * Gives every `.deriv-formula` box under `root` a tab stop exactly while its content overflows it.
+ * Every box is measured first and changed after: a change between two measurements would make the
+ * browser lay the page out again for the next one (once per box).
+ */
 export function focusOverflowing(root: ParentNode): void {
-  for (const box of root.querySelectorAll<HTMLElement>('.deriv-formula')) {
-    const scrolls = box.scrollWidth > box.clientWidth + 1;
-    if (scrolls !== box.hasAttribute('tabindex')) {
-      if (scrolls) box.setAttribute('tabindex', '0');
-      else box.removeAttribute('tabindex');
-    }
-  }
+  const boxes = [...root.querySelectorAll<HTMLElement>('.deriv-formula')];
+  const scrolls = boxes.map((box) => box.scrollWidth > box.clientWidth + 1);
+  boxes.forEach((box, i) => {
+    if (scrolls[i] === box.hasAttribute('tabindex')) return;
+    if (scrolls[i]) box.setAttribute('tabindex', '0');
+    else box.removeAttribute('tabindex');
+  });
 }
 
 /** Keeps the formula boxes under `ref` focusable while (and only while) they scroll; `key` names their content. */
@@ -23,8 +27,12 @@ export function useScrollBoxFocus(ref: RefObject<HTMLElement | null>, key: unkno
   useEffect(() => {
     const root = ref.current;
     if (!root) return;
-    focusOverflowing(root);
-    if (typeof ResizeObserver === 'undefined') return;
+    if (typeof ResizeObserver === 'undefined') {
+      focusOverflowing(root);
+      return;
+    }
+    // a ResizeObserver reports every box it is given once, after the next layout: the first
+    // measurement waits for it rather than forcing a layout of the page from this effect
     const ro = new ResizeObserver(() => focusOverflowing(root));
     ro.observe(root);
     for (const box of root.querySelectorAll('.deriv-formula')) ro.observe(box);
