@@ -58,7 +58,8 @@ export function makeCpuRenderer(
 
 /**
  * Add pass number `pass` (spp samples per pixel) over `tile` to `acc`: sum += the samples,
- * count += spp. Returns the number of paths traced.
+ * count += spp, and, when `sumSq` is given (one value per pixel), sumSq += the samples' squares.
+ * Returns the number of paths traced.
  */
 export function renderTilePass(
   r: CpuRenderer,
@@ -66,6 +67,7 @@ export function renderTilePass(
   tile: Tile,
   pass: number,
   spp: number,
+  sumSq?: Float64Array,
 ): number {
   const { cam, tracer, dir } = r;
   const e = cam.eye;
@@ -77,12 +79,16 @@ export function renderTilePass(
     for (let i = Math.max(0, tile.x0); i < x1; i++) {
       const k = j * acc.width + i;
       const rng = new Rng(passSeed, k);
-      let s = 0;
+      let s = 0,
+        s2 = 0;
       for (let q = 0; q < spp; q++) {
         cameraRay(cam, i, j, rng.nextFloat(), rng.nextFloat(), dir);
-        s += radiance(tracer, e[0], e[1], e[2], dir[0], dir[1], dir[2], pass * spp + q, rng);
+        const x = radiance(tracer, e[0], e[1], e[2], dir[0], dir[1], dir[2], pass * spp + q, rng);
+        s += x;
+        s2 += x * x;
       }
       acc.sum[k] += s;
+      if (sumSq) sumSq[k] += s2;
       acc.count[k] += spp;
       paths += spp;
     }
