@@ -104,7 +104,20 @@ export default function RaySphereScene({ params, setParams, mode }: SceneProps<t
     },
     [edit],
   );
-  useEffect(() => () => cancelAnimationFrame(raf.current), []);
+  useEffect(() => {
+    // a link followed (a new address) replaces the state: an edit still waiting for its frame
+    // would otherwise land on top of the link's values
+    const drop = () => {
+      cancelAnimationFrame(raf.current);
+      raf.current = 0;
+      pending.current = null;
+    };
+    window.addEventListener('hashchange', drop);
+    return () => {
+      window.removeEventListener('hashchange', drop);
+      cancelAnimationFrame(raf.current);
+    };
+  }, []);
 
   // Heavy panels (KaTeX, the precision table) follow a throttled, deferred copy: the figure, the
   // plots and the readouts update every frame; the derivation at most every 200 ms (and always
