@@ -6,6 +6,7 @@
  *    (the shell itself: routing, the scene host, the share bar, the link's shell flags with the
  *    folds it opens, the deck's slide host; every page's own code is a lazy chunk);
  *  - each heavy library and each scene chunk under its own ceiling;
+ *  - what the practice index (`#/practice`) downloads beyond the entry under its own ceiling;
  *  - the single-file copy (dist-single/index.html, when built) under its own ceiling.
  * Exits 1 and says which budget broke.
  */
@@ -83,6 +84,23 @@ for (const f of readdirSync(join(dist, 'assets'))) {
   const lim = LIMITS.find(([re]) => re.test(f));
   rows.push([lim ? 'lazy (budget)' : 'lazy', rel, s, lim?.[1]]);
   if (lim && s > lim[1]) failures.push(`${rel} is ${kB(s)} kB gzipped, over its ${kB(lim[1])} kB budget`);
+}
+
+// What a route downloads beyond the entry, from the route preload map index.html carries
+// (scripts/routePreload.ts): the practice index lists the questions without their generators and
+// the marking code, which load with a question page.
+const ROUTE_LIMITS = [['practice', 20_000]];
+const preloadMap = /var m=(\{.*?\}),b=/.exec(html);
+for (const [route, limit] of ROUTE_LIMITS) {
+  const files = preloadMap ? JSON.parse(preloadMap[1])[route] : undefined;
+  if (!files) {
+    failures.push(`index.html has no preload list for #/${route}`);
+    continue;
+  }
+  const s = [...files[0], ...files[1]].reduce((sum, f) => sum + gz(f), 0);
+  rows.push(['route', `#/${route} (${files[0].length + files[1].length} files)`, s, limit]);
+  if (s > limit)
+    failures.push(`#/${route} downloads ${kB(s)} kB gzipped beyond the entry, over ${kB(limit)} kB`);
 }
 
 // The single-file copy (npm run build:single): one HTML with everything inlined, for LMS uploads

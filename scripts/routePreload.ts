@@ -27,9 +27,15 @@ interface ChunkLike {
 type BundleLike = Record<string, ChunkLike | { type: 'asset'; fileName: string }>;
 
 const SCENE_ENTRY = /[\\/]src[\\/]scenes[\\/]([a-z0-9-]+)[\\/]index\.ts$/;
-/** The other lazily loaded routes: `#/practice` and `#/guide` (their chunks' entry modules). */
+/**
+ * The other lazily loaded routes (their chunks' entry modules): `#/practice`, `#/guide`, and the
+ * practice pages loaded by the practice chunk: a question (`#/practice/q1` … `q6`, one key for
+ * all six) and the worksheet.
+ */
 const OTHER_ROUTES: Array<[RegExp, string]> = [
   [/[\\/]src[\\/]practice[\\/]PracticeRoute\.tsx$/, 'practice'],
+  [/[\\/]src[\\/]practice[\\/]QuestionRoute\.tsx$/, 'practice/question'],
+  [/[\\/]src[\\/]practice[\\/]Sheet\.tsx$/, 'practice/sheet'],
   [/[\\/]src[\\/]guide[\\/]Guide\.tsx$/, 'guide'],
 ];
 
@@ -83,12 +89,22 @@ export function scenePreloadMap(bundle: BundleLike): Record<string, { js: string
       css: [...cl.css].filter((f) => !entry.css.has(f)),
     };
   }
+  // a page loaded by another route's chunk (`practice/question`): what its parent brings is not
+  // listed again
+  for (const [id, v] of Object.entries(out)) {
+    const parent = id.includes('/') ? out[id.slice(0, id.indexOf('/'))] : undefined;
+    if (!parent) continue;
+    v.js = v.js.filter((f) => !parent.js.includes(f));
+    v.css = v.css.filter((f) => !parent.css.includes(f));
+  }
   return out;
 }
 
 /**
  * The inline script (plain ES5, runs before the entry module): `map` is JSON of scenePreloadMap,
- * `base` the URL prefix of the files ('./' for a relative base).
+ * `base` the URL prefix of the files ('./' for a relative base). The hash's path is the key
+ * (`practice/q1` … `practice/q6` all read as `practice/question`); a key `a/b` that is in the map
+ * brings its parent route's files `a` too (the chunk that loads it).
  */
 export function preloadScript(map: Record<string, { js: string[]; css: string[] }>, base: string): string {
   // compact form: [[js…], [css…]] per id
@@ -97,10 +113,11 @@ export function preloadScript(map: Record<string, { js: string[]; css: string[] 
   const json = JSON.stringify(compact).replace(/</g, '\\u003c');
   return (
     `(function(){try{var m=${json},b=${JSON.stringify(base)},h=location.hash.slice(1),q=h.indexOf('?');` +
-    `if(q>=0)h=h.slice(0,q);h=h.replace(/^\\/+|\\/+$/g,'');` +
-    `if(!Object.prototype.hasOwnProperty.call(m,h))return;var e=m[h],d=document.head;` +
-    `function a(r,f,s){var l=document.createElement('link');l.rel=r;if(s)l.as=s;l.crossOrigin='';l.href=b+f;d.appendChild(l)}` +
-    `e[0].forEach(function(f){a('modulepreload',f)});e[1].forEach(function(f){a('preload',f,'style')})` +
+    `if(q>=0)h=h.slice(0,q);h=h.replace(/^\\/+|\\/+$/g,'').replace(/^practice\\/q[1-6]$/,'practice/question');` +
+    `var o=Object.prototype.hasOwnProperty;if(!o.call(m,h))return;var k=[h],s=h.indexOf('/'),d=document.head;` +
+    `if(s>0&&o.call(m,h.slice(0,s)))k.unshift(h.slice(0,s));` +
+    `function a(r,f,t){var l=document.createElement('link');l.rel=r;if(t)l.as=t;l.crossOrigin='';l.href=b+f;d.appendChild(l)}` +
+    `k.forEach(function(i){m[i][0].forEach(function(f){a('modulepreload',f)});m[i][1].forEach(function(f){a('preload',f,'style')})})` +
     `}catch(x){}})();`
   );
 }

@@ -8,11 +8,11 @@ import { Home } from './Home';
 import { SceneHost } from './SceneHost';
 import { findScene } from '../kit/catalogue';
 import { ShortcutProvider } from '../ui/shortcuts';
-import { lazyPage } from './lazyPage';
+import { lazyPage } from '../ui/lazyPage';
 import { DECK_HOST } from './SlideScene';
 
 // Practice mode is its own lazy chunk (src/practice): nothing of it loads on the other routes.
-// Every lazy route recovers from a stale deploy or says it could not load (./lazyPage.tsx).
+// Every lazy route recovers from a stale deploy or says it could not load (src/ui/lazyPage.tsx).
 const PracticeRoute = lazyPage(
   // with the parts other features show on the practice pages (results download, LMS packages)
   () =>

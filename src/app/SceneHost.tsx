@@ -24,7 +24,7 @@ import { fullAppHref, linkSafeValues, ShareBar } from './ShareBar';
 import { SceneErrorBoundary } from './SceneErrorBoundary';
 import { useScrollToPart } from './useScrollToPart';
 import { markFirstScreen } from './firstScreen';
-import { importOrReload } from './staleBuild';
+import { importOrReload } from '../ui/staleBuild';
 import './sceneHost.css';
 
 // The teacher's A11y view (a11y=1): its own chunk, loaded only with the flag.
@@ -63,7 +63,7 @@ export function SceneHost({ info, query, flags, theme, slide }: Props) {
     let alive = true;
     // (KaTeX's worker and stylesheet start once the scene's first screen has been painted, with its
     // formulas as plain text for a moment: fetched earlier, they delayed that paint on a phone.)
-    // a page of a replaced build reloads onto the new one instead (staleBuild.ts)
+    // a page of a replaced build reloads onto the new one instead (src/ui/staleBuild.ts)
     importOrReload(loader).then(
       // A transition: React renders the scene's (large) first tree in slices of a few ms that yield
       // to the browser, instead of one long task (Lighthouse: total blocking time on load).

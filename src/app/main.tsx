@@ -10,7 +10,7 @@ import { sceneLoader } from '../scenes/registry';
 import { parseHash } from '../kit/shell';
 import { firstScreen } from './firstScreen';
 import { afterPaint } from '../ui/afterPaint';
-import { markBuildReplaced } from './staleBuild';
+import { markBuildReplaced } from '../ui/staleBuild';
 import { showUpdateNotice } from './updateNotice';
 import { declaredLmsConfig } from '../lms/config';
 import { fuzzRequest } from './fuzzGate';
@@ -76,7 +76,7 @@ if (
 ) {
   // A new build's worker taking over this page (another tab's Reload) does not reload it: its
   // reader may be typing. The page keeps running its build and says it was updated; a lazy chunk it
-  // then cannot load (gone with the old build) reloads it onto the new one (staleBuild.ts). The
+  // then cannot load (gone with the old build) reloads it onto the new one (src/ui/staleBuild.ts). The
   // first controllerchange of a page that loaded without a controller is the first install's claim.
   let controllers = navigator.serviceWorker.controller ? 1 : 0;
   navigator.serviceWorker.addEventListener('controllerchange', () => {

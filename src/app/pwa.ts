@@ -3,7 +3,7 @@
  * nothing to the entry but one dynamic import). The worker precaches the whole build; when a new
  * build is deployed, its worker waits and every open page shows an unobtrusive notice. Clicking
  * Reload activates the new worker and reloads that page once the new worker controls it; other
- * pages keep running their build until their reader reloads them (main.tsx, staleBuild.ts).
+ * pages keep running their build until their reader reloads them (main.tsx, src/ui/staleBuild.ts).
  *
  * Plain service-worker API, not vite-plugin-pwa's registerSW: that helper reloads every page that
  * had shown the notice as soon as the new worker takes over (discarding another tab's typed work),

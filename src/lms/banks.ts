@@ -9,7 +9,8 @@
  * the TeX is kept as text.
  */
 import type { QuestionId, Variant } from '../practice/model';
-import { questionInfo, sheetSeed } from '../practice/questions';
+import { questionInfo } from '../practice/questions';
+import { sheetSeed } from '../practice/questionList';
 import { gapsOf, num, xmlEscape, type Gap } from './gaps';
 import { variantOf } from './grade';
 

@@ -6,8 +6,7 @@
  * runs as the normal practice pages, and the status says so.
  */
 import { addPracticeExtension } from '../practice/extensions';
-import type { QuestionId } from '../practice/model';
-import { isQuestionId } from '../practice/questions';
+import { isQuestionId, type QuestionId } from '../practice/model';
 import type { LmsConfig } from './config';
 import { declaredLmsConfig } from './config';
 import { setLearnerScope } from '../practice/learnerScope';

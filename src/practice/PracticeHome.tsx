@@ -5,7 +5,7 @@ import { BestScores } from './BestScores';
 import { flagSuffix, randomSeed } from './links';
 import { loadProgress, type Progress } from './progress';
 import { resetPractice } from './reset';
-import { QUESTIONS } from './questions';
+import { QUESTION_LIST } from './questionList';
 import { loadScores, type Scores } from './scores';
 import { SheetBuilder } from './SheetBuilder';
 import { Slot } from './Slot';
@@ -33,7 +33,7 @@ export function PracticeHome({ flags, query }: { flags: ShellFlags; query: strin
         the same variant, so a link like <code>#/practice/q3?seed=17</code> is “variant 17” for everyone.
       </p>
       <ol className="question-list practice-list">
-        {QUESTIONS.map((q) => {
+        {QUESTION_LIST.map((q) => {
           const p = progress[q.id];
           return (
             <li key={q.id} className="question-card">

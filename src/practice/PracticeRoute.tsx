@@ -11,11 +11,19 @@
  */
 import { useMemo } from 'react';
 import type { ShellFlags } from '../kit/shell';
+import { lazyPage } from '../ui/lazyPage';
 import { PracticeHome } from './PracticeHome';
-import { QuestionRoute } from './QuestionRoute';
-import { isQuestionId } from './questions';
-import Sheet from './Sheet';
+import { isQuestionId } from './model';
 import './practice.css';
+
+// A question page and the worksheet are chunks of their own, with the variant generators and the
+// marking code: the index lists the questions without them. (Each route's chunks are preloaded
+// with the entry: scripts/routePreload.ts.)
+const QuestionRoute = lazyPage(
+  () => import('./QuestionRoute').then((m) => ({ default: m.QuestionRoute })),
+  'This practice question',
+);
+const Sheet = lazyPage(() => import('./Sheet'), 'The worksheet');
 
 interface Props {
   path: string;

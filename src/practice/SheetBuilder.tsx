@@ -3,7 +3,7 @@ import { IntInput } from '../ui/IntInput';
 import type { ShellFlags } from '../kit/shell';
 import { flagSuffix, MAX_SEED } from './links';
 import { QUESTION_IDS, type QuestionId } from './model';
-import { QUESTIONS } from './questions';
+import { QUESTION_LIST } from './questionList';
 
 /** The form on the practice index that builds a printable worksheet's link. */
 export function SheetBuilder({ flags }: { flags: ShellFlags }) {
@@ -21,7 +21,7 @@ export function SheetBuilder({ flags }: { flags: ShellFlags }) {
       <h2 id="sheet-title">Worksheet for a class (printable)</h2>
       <fieldset>
         <legend>Questions</legend>
-        {QUESTIONS.map((q) => (
+        {QUESTION_LIST.map((q) => (
           <label key={q.id} className="check-label">
             <input
               type="checkbox"

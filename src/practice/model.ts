@@ -10,6 +10,10 @@ import { formatSignificant } from '../core/format';
 export const QUESTION_IDS = ['q1', 'q2', 'q3', 'q4', 'q5', 'q6'] as const;
 export type QuestionId = (typeof QUESTION_IDS)[number];
 
+export function isQuestionId(s: string): s is QuestionId {
+  return (QUESTION_IDS as readonly string[]).includes(s);
+}
+
 /** A function of the formula's variables (positional, in the order the answer lists them). */
 export type Fn = (...x: number[]) => number;
 

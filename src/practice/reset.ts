@@ -6,7 +6,7 @@
 import { extensionReset } from './extensions';
 import { resetProgress, type Progress } from './progress';
 import { resetScores } from './scores';
-import { resetSessions } from './sessionStore';
+import { resetSessions } from './sessionKey';
 
 /** Forget this learner's practice data; returns the empty progress. */
 export function resetPractice(): Progress {

@@ -11,8 +11,8 @@
 import type { Variant } from './model';
 import { newSession, type AnswerProgress, type PartProgress, type Session } from './session';
 import { scopedKey } from './learnerScope';
+import { SESSIONS_KEY } from './sessionKey';
 
-export const SESSIONS_KEY = 'rml:practice-sessions';
 const MAX_VARIANTS = 300;
 const MAX_COUNT = 10_000;
 const MAX_TEXT = 4000;
@@ -138,12 +138,4 @@ export function saveSession(v: Variant, s: Session): Session {
     /* storage unavailable: the state lives in the page */
   }
   return merged;
-}
-
-export function resetSessions(): void {
-  try {
-    window.localStorage.removeItem(scopedKey(SESSIONS_KEY));
-  } catch {
-    /* nothing to remove */
-  }
 }

@@ -13,8 +13,7 @@
  * The verdicts are what the page showed; the results page ignores them for scoring and recomputes
  * every verdict from the seed and the typed answers (it only reports where they disagree).
  */
-import { isQuestionId } from '../practice/questions';
-import type { QuestionId } from '../practice/model';
+import { isQuestionId, type QuestionId } from '../practice/model';
 
 export const RESULTS_FORMAT = 'render-math-lab-results';
 

@@ -52,6 +52,13 @@ const bundle = Object.fromEntries(
       facadeModuleId: '/p/src/practice/PracticeRoute.tsx',
       imports: ['assets/shared.js'],
     }),
+    // a question page: its own chunk, loaded by the practice chunk
+    chunk('assets/question.js', {
+      isDynamicEntry: true,
+      facadeModuleId: '/p/src/practice/QuestionRoute.tsx',
+      imports: ['assets/shared.js', 'assets/generators.js'],
+    }),
+    chunk('assets/generators.js'),
   ].map((c) => [c.fileName, c]),
 ) as Parameters<typeof scenePreloadMap>[0];
 (bundle as Record<string, unknown>)['assets/font.woff2'] = { type: 'asset', fileName: 'assets/font.woff2' };
@@ -59,10 +66,15 @@ const bundle = Object.fromEntries(
 describe('scenePreloadMap: the files to start with the entry, per scene', () => {
   it('maps each scene to its chunk and static import closure (scripts and CSS), minus what the entry loads', () => {
     const map = scenePreloadMap(bundle);
-    expect(Object.keys(map).sort()).toEqual(['alpha', 'beta-2', 'practice']); // the practice page too (#/practice)
+    // the practice page too (#/practice), and a question page, without what the practice chunk brings
+    expect(Object.keys(map).sort()).toEqual(['alpha', 'beta-2', 'practice', 'practice/question']);
     expect(map.practice).toEqual({
       js: ['assets/practice.js', 'assets/shared.js'],
       css: ['assets/shared.css'],
+    });
+    expect(map['practice/question']).toEqual({
+      js: ['assets/question.js', 'assets/generators.js'],
+      css: [],
     });
     expect(map.alpha).toEqual({
       js: ['assets/scene-a.js', 'assets/shared.js'],
@@ -116,12 +128,30 @@ describe('the inline preload script', () => {
       ).toEqual(['./assets/practice.js', './assets/shared.css', './assets/shared.js']);
   });
 
+  it('preloads a practice question (q1 … q6) with the practice chunk that loads it', () => {
+    for (const h of ['#/practice/q1', '#/practice/q6?seed=3'])
+      expect(
+        run(h)
+          .map((l) => l.href)
+          .sort(),
+        h,
+      ).toEqual([
+        './assets/generators.js',
+        './assets/practice.js',
+        './assets/question.js',
+        './assets/shared.css',
+        './assets/shared.js',
+      ]);
+  });
+
   it('adds nothing for the home page, other routes, and hostile hashes (own keys only, never throws)', () => {
     for (const h of [
       '',
       '#/',
       '#/guide',
       '#/practice/alpha',
+      '#/practice/q7',
+      '#/practice/q1/x',
       '#/nope',
       '#/__proto__',
       '#/constructor',

@@ -5,8 +5,8 @@
 import { describe, expect, it } from 'vitest';
 import { createElement } from 'react';
 import { renderToStaticMarkup } from 'react-dom/server';
-import { shouldReload } from '../../src/app/staleBuild';
-import { loadPage } from '../../src/app/lazyPage';
+import { shouldReload } from '../../src/ui/staleBuild';
+import { loadPage } from '../../src/ui/lazyPage';
 
 const HERE = 'https://lab.example/#/results';
 const NOW = 1_800_000_000_000;
