@@ -4,17 +4,17 @@
  * spacing, focus never hidden and its ring visible, no caret in the visible text; a practice page
  * with its answers checked and the results page with a report, so that verdicts, feedback and
  * reports are scanned too. The scenes get the
- * same pass in catalogue.spec.ts.
+ * same pass in catalogue.spec.ts; every practice question's text, its answers and worked solution
+ * shown, is checked for carets in tests/render/practiceCarets.test.tsx.
  */
 import type { Page } from '@playwright/test';
-import { QUESTIONS } from '../../src/kit/catalogue';
 import { allAnswers, type AnswerSpec } from '../../src/practice/model';
 import { expectedText } from '../../src/practice/check';
 import { variantOf } from '../../src/lms/grade';
 import { RESULTS_FORMAT } from '../../src/results/format';
 import { questionInfo } from '../../src/practice/questions';
-import { test, expect, giveAnswer, openScene } from './fixtures';
-import { checkWholePage, visibleCarets } from './wholePage';
+import { test, expect, giveAnswer } from './fixtures';
+import { checkWholePage } from './wholePage';
 
 test.describe.configure({ timeout: 240_000 });
 
@@ -86,15 +86,3 @@ for (const [route, prepare] of PAGES) {
     await checkWholePage(page, route, { prepare });
   });
 }
-
-test('the practice questions: no caret in the statement, the feedback or the worked solution', async ({
-  page,
-}) => {
-  for (const q of QUESTIONS) {
-    await openScene(page, `#/practice/${q.practice.id}?seed=3`);
-    // the statement, every part's prompt, the givens and the whole worked solution with its answers
-    await page.getByTestId('show-solution').click();
-    await expect(page.getByTestId('solution')).toBeVisible();
-    expect(await visibleCarets(page), q.practice.id).toEqual([]);
-  }
-});
