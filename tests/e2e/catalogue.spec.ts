@@ -99,17 +99,15 @@ for (const s of SCENES) {
       await expect(page).toHaveURL(new RegExp(`[?&]t=${t!.replace('.', '\\.')}(&|$)`));
       const key = await page.getByTestId(s.keyReadout).first().getAttribute('data-value');
       await expectIdle(page, `${s.id}: frames after pausing`);
-      // the link opened in this tab: the scene is left and mounted again from the link alone (first
-      // the same link at t = 0, which must show 0: the position comes from the link, not from memory)
+      // the link opened in this tab: the scene is left and mounted again from the link at t = 0,
+      // which must show 0 (the position comes from the link, not from memory), then the paused
+      // link itself is followed on that page and brings the position back
       const address = new URL(page.url()).hash;
-      const mountFrom = async (hash: string) => {
-        await page.evaluate(() => (location.hash = '#/'));
-        await expect(page.getByTestId('timeline')).toHaveCount(0);
-        await page.evaluate((h) => (location.hash = h), hash);
-      };
-      await mountFrom(address.replace(/([?&])t=[^&]*/, '$1t=0'));
+      await page.evaluate(() => (location.hash = '#/'));
+      await expect(page.getByTestId('timeline')).toHaveCount(0);
+      await page.evaluate((h) => (location.hash = h), address.replace(/([?&])t=[^&]*/, '$1t=0'));
       await expect(page.getByTestId('timeline')).toHaveAttribute('data-t', '0');
-      await mountFrom(address);
+      await page.evaluate((h) => (location.hash = h), address);
       await expect(page.getByTestId('timeline')).toHaveAttribute('data-t', t!);
       await expect(page.getByTestId('timeline')).toHaveAttribute('data-playing', '0');
       await expect(page.getByTestId(s.keyReadout).first()).toHaveAttribute('data-value', key ?? '');

@@ -10,7 +10,7 @@
 import AxeBuilder from '@axe-core/playwright';
 import type { Page } from '@playwright/test';
 import { textFormulaGroups } from '../../src/ui/texBreaks';
-import { expect, openScene } from './fixtures';
+import { expect, openScene, test } from './fixtures';
 import { countTabStops } from './calmCount';
 import { MODEBAR_BUTTONS } from '../../src/ui/plotConfig';
 import {
@@ -293,7 +293,7 @@ export async function checkWholePage(
   page.on('request', (r) => requested.push(r.url()));
   await page.emulateMedia({ colorScheme: 'light' });
   await page.setViewportSize({ width: 1280, height: 800 });
-  await openWhole(page, hash);
+  await test.step('open', () => openWhole(page, hash));
   await prepare?.(page);
   if (scene) {
     found.push(...(await examFirst(page, scene.parts)));
@@ -315,10 +315,10 @@ export async function checkWholePage(
     );
     found.push(...practise.filter((x): x is string => x !== null));
   }
-  await openAllFolds(page);
+  await test.step('folds', () => openAllFolds(page));
   // light at 1280 px, every fold open: the rules a theme or a width can change (colours,
   // target sizes); every rule runs below, dark at 375 px, on the same content
-  found.push(...(await axeViolations(page, 'light 1280', LAYOUT_RULES)));
+  found.push(...(await test.step('axe light', () => axeViolations(page, 'light 1280', LAYOUT_RULES))));
   // powers are written as superscripts; a formula still waiting for KaTeX shows its plain-text
   // reading, which has no caret either
   found.push(...(await visibleCarets(page)).map((c) => `caret in the visible text: ${c}`));
@@ -332,9 +332,17 @@ export async function checkWholePage(
   await expect
     .poll(() => page.evaluate(() => document.documentElement.clientWidth), { timeout: 60_000 })
     .toBeLessThanOrEqual(375);
-  found.push(...(await axeViolations(page, 'dark 375')));
-  found.push(...(await smallTargets(page)).map((t) => `target under 24 × 24 and not spaced: ${t}`));
-  found.push(...(await formulasBrokenInsideParentheses(page)).map((f) => `broken inside parentheses: ${f}`));
+  found.push(...(await test.step('axe dark', () => axeViolations(page, 'dark 375'))));
+  found.push(
+    ...(await test.step('targets', () => smallTargets(page))).map(
+      (t) => `target under 24 × 24 and not spaced: ${t}`,
+    ),
+  );
+  found.push(
+    ...(await test.step('formulas', () => formulasBrokenInsideParentheses(page))).map(
+      (f) => `broken inside parentheses: ${f}`,
+    ),
+  );
   if (scene) found.push(...(await phoneLayout(page, scene.id, Number.parseInt(scene.parts[0]!, 10))));
 
   await page.setViewportSize({ width: 320, height: 640 });
@@ -343,7 +351,9 @@ export async function checkWholePage(
     .toEqual([]);
   await page.setViewportSize({ width: 375, height: 812 });
   await applyTextSpacing(page);
-  found.push(...(await clippedText(page)).map((t) => `clipped under text spacing: ${t}`));
+  found.push(
+    ...(await test.step('clipped', () => clippedText(page))).map((t) => `clipped under text spacing: ${t}`),
+  );
   for (let i = 0; i < 40; i++) {
     await page.keyboard.press('Tab');
     // (both asked at once: one round trip to the page per Tab)
