@@ -6,8 +6,9 @@
 // where a pause leaves it (t), and gives way to the CPU, with a notice, where it cannot run. The
 // steps that test the CPU side (the inspector, the workers, the folds) name renderer=cpu, so that
 // no shader compiles beside them. The estimators, the renderer and the page's logic are unit tests
-// (tests/core/render/, tests/scenes/render/), the folds' markup Node tests (tests/render/); the FLIP
-// of downloaded images is checked on #/area-light (area-light.spec.ts).
+// (tests/core/render/, tests/scenes/render/), the folds' markup Node tests (tests/render/); the page
+// as a reader meets it, every fold open, is in wcag.spec.ts; the FLIP of downloaded images is
+// checked on #/area-light (area-light.spec.ts).
 import { test, expect, openScene, readout, waitForReadout } from './fixtures';
 import { parseParams } from '../../src/kit/params';
 import { schema } from '../../src/scenes/render/params';

@@ -3,8 +3,9 @@
  * (WCAG 2.2 AA) light at 1280 px and dark at 375 px, target sizes, reflow at 320 px, text
  * spacing, focus never hidden and its ring visible, no caret in the visible text; a practice page
  * with its answers checked and the results page with a report, so that verdicts, feedback and
- * reports are scanned too. The scenes get the
- * same pass in catalogue.spec.ts; every practice question's text, its answers and worked solution
+ * reports are scanned too, and the render lab with every fold open (on the CPU renderer at its
+ * smallest image, so that its folds' runs stay short). The scenes get the same pass in
+ * catalogue.spec.ts; every practice question's text, its answers and worked solution
  * shown, is checked for carets in tests/render/practiceCarets.test.tsx.
  */
 import type { Page } from '@playwright/test';
@@ -77,6 +78,8 @@ const PAGES: [string, ((page: Page) => Promise<void>)?][] = [
   ['#/practice/q3?seed=17', checkHalfRight],
   ['#/accessibility'],
   ['#/results', loadResults],
+  // the render lab: every fold open
+  ['#/render?renderer=cpu&res=32&spp=1'],
 ];
 
 for (const [route, prepare] of PAGES) {
