@@ -104,6 +104,12 @@ function run(
   return added;
 }
 
+/** The files the inline script preloads for this hash, sorted. */
+const hrefs = (hash: string) =>
+  run(hash)
+    .map((l) => l.href)
+    .sort();
+
 describe('the inline preload script', () => {
   it('adds modulepreload links for the scene of the hash route, and style preloads for its CSS', () => {
     expect(run('#/alpha?x=1&y=2')).toEqual([
@@ -120,22 +126,12 @@ describe('the inline preload script', () => {
 
   it('preloads the practice page on #/practice (with or without a query)', () => {
     for (const h of ['#/practice', '#/practice?q=3'])
-      expect(
-        run(h)
-          .map((l) => l.href)
-          .sort(),
-        h,
-      ).toEqual(['./assets/practice.js', './assets/shared.css', './assets/shared.js']);
+      expect(hrefs(h), h).toEqual(['./assets/practice.js', './assets/shared.css', './assets/shared.js']);
   });
 
   it('preloads a practice question (q1 … q6) with the practice chunk that loads it', () => {
     for (const h of ['#/practice/q1', '#/practice/q6?seed=3'])
-      expect(
-        run(h)
-          .map((l) => l.href)
-          .sort(),
-        h,
-      ).toEqual([
+      expect(hrefs(h), h).toEqual([
         './assets/generators.js',
         './assets/practice.js',
         './assets/question.js',
