@@ -27,6 +27,9 @@ describe('the Welch fold', () => {
     expect(a.trace.strategy).toBe('area');
     expect(a.trace.bias).toBe('no-cos-l');
     expect(a.other).toBe('solid-angle');
+    // and the fold shows that choice
+    const html = renderToStaticMarkup(<Welch m={m} vs={vs} onVs={() => {}} />);
+    expect(html).toMatch(/<option value="solid-angle" selected="">/);
   });
 
   it('says why a strategy that rarely finds the light is not tested, and starts no run', () => {
