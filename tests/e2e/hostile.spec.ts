@@ -145,28 +145,31 @@ const FUZZ_ACTIONS = 80;
 // build made with VITE_RML_FUZZ=1 (npm run e2e:fuzz).
 const FUZZ_BUILD = process.env.VITE_RML_FUZZ === '1';
 
-for (const route of ROUTES) {
-  test(`fuzz mode on ${route.path}: ${FUZZ_ACTIONS} seeded actions, no error`, async ({ page }) => {
-    test.skip(!FUZZ_BUILD, 'needs a build with the fuzzer: npm run e2e:fuzz');
-    test.setTimeout(120_000);
-    await openScene(page, `#${route.path}?fuzz=1&fuzzseed=17&fuzzn=${FUZZ_ACTIONS}`);
-    await expect(page.locator('.fuzz-panel')).toBeVisible();
-    await expect
-      .poll(
-        async () =>
-          page.evaluate(
-            () => (window as unknown as { __rmlFuzz?: { running: boolean } }).__rmlFuzz?.running ?? true,
-          ),
-        { timeout: 100_000, intervals: [500] },
-      )
-      .toBe(false);
-    const state = await page.evaluate(() => {
-      const f = (window as unknown as { __rmlFuzz: { actions: number; errors: string[]; log: string[] } })
-        .__rmlFuzz;
-      return { actions: f.actions, errors: f.errors, log: f.log };
+test.describe('fuzz mode', () => {
+  // skipped here, before any page opens, on a build without the fuzzer
+  test.skip(!FUZZ_BUILD, 'needs a build with the fuzzer: npm run e2e:fuzz');
+  for (const route of ROUTES) {
+    test(`${route.path}: ${FUZZ_ACTIONS} seeded actions, no error`, async ({ page }) => {
+      test.setTimeout(120_000);
+      await openScene(page, `#${route.path}?fuzz=1&fuzzseed=17&fuzzn=${FUZZ_ACTIONS}`);
+      await expect(page.locator('.fuzz-panel')).toBeVisible();
+      await expect
+        .poll(
+          async () =>
+            page.evaluate(
+              () => (window as unknown as { __rmlFuzz?: { running: boolean } }).__rmlFuzz?.running ?? true,
+            ),
+          { timeout: 100_000, intervals: [500] },
+        )
+        .toBe(false);
+      const state = await page.evaluate(() => {
+        const f = (window as unknown as { __rmlFuzz: { actions: number; errors: string[]; log: string[] } })
+          .__rmlFuzz;
+        return { actions: f.actions, errors: f.errors, log: f.log };
+      });
+      expect(state.actions).toBe(FUZZ_ACTIONS);
+      expect(state.errors, `errors while fuzzing (last actions: ${state.log.join(' | ')})`).toEqual([]);
+      await expectWorkingScene(page, 'fuzzing');
     });
-    expect(state.actions).toBe(FUZZ_ACTIONS);
-    expect(state.errors, `errors while fuzzing (last actions: ${state.log.join(' | ')})`).toEqual([]);
-    await expectWorkingScene(page, 'fuzzing');
-  });
-}
+  }
+});
