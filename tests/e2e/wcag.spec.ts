@@ -78,8 +78,8 @@ const PAGES: [string, ((page: Page) => Promise<void>)?][] = [
   ['#/practice/q3?seed=17', checkHalfRight],
   ['#/accessibility'],
   ['#/results', loadResults],
-  // the render lab: every fold open
-  ['#/render?renderer=cpu&res=32&spp=1'],
+  // the render lab: every fold open (the equal-time fold at its shortest budget per strategy)
+  ['#/render?renderer=cpu&res=32&spp=1&et=250'],
 ];
 
 for (const [route, prepare] of PAGES) {
