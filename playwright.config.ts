@@ -25,6 +25,12 @@ export default defineConfig({
     // The service worker precaches the whole build in the background; only the offline tests
     // (tests/e2e/offline.spec.ts) need it, so the others do not pay for it.
     serviceWorkers: 'block',
+    // A worker's tests share one browser context, reset by Playwright between tests (pages back to
+    // about:blank; storage, routes, init scripts, viewport and media as configured): a fresh
+    // context and its renderer cost about a CPU-second each, some 15 % of the suite. A test whose
+    // options differ beyond viewport and media (offline.spec's service workers, a touch screen)
+    // gets a fresh one; tests/e2e/fixtures.ts puts the offline switch back.
+    reuseContext: true,
   },
   webServer: {
     command: `node scripts/serve.mjs ${dist} ${port}`,

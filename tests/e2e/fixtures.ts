@@ -4,7 +4,17 @@
  */
 import { test as base, expect, type Frame, type Page } from '@playwright/test';
 
-export const test = base.extend<{ consoleErrors: string[] }>({
+export const test = base.extend<{ consoleErrors: string[]; backOnline: void }>({
+  // One browser context serves a worker's tests one after another (playwright.config.ts,
+  // reuseContext): between tests Playwright takes it back to about:blank and resets its storage,
+  // routes, init scripts, viewport and media, but not the offline switch a test may have thrown.
+  backOnline: [
+    async ({ context }, use) => {
+      await use();
+      await context.setOffline(false);
+    },
+    { auto: true },
+  ],
   consoleErrors: [
     async ({ page }, use) => {
       const errors: string[] = [];
