@@ -182,7 +182,11 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
       .toBe(true);
     const t = linkT();
     expect(t).toBeGreaterThan(2);
-    await page.reload();
+    // the link followed anew: the lab is left, then mounted again from the paused link alone
+    const paused = new URL(page.url()).hash;
+    await page.evaluate(() => (location.hash = '#/'));
+    await expect(page.getByTestId('render-status')).toHaveCount(0);
+    await page.evaluate((h) => (location.hash = h), paused);
     await expect(page.getByTestId('render-status')).toHaveText(
       `Paused at ${t} of 4096 samples per pixel (play=0, t=${t}).`,
       { timeout: 30_000 },
