@@ -10,6 +10,7 @@ import {
   type RepeatArgs,
   type StatsArgs,
 } from './jobs';
+import { checkGpuDirections, type GpuCheckArgs } from './gpuCheck';
 
 // the expression compiler (mathjs) loads on first use: the 3D view's points of a built-in lobe
 // need none, and they are what the scene's first screen waits for
@@ -23,6 +24,7 @@ const tasks = {
   stats: (a: StatsArgs) => statsJob(a, compile),
   repeat: (a: RepeatArgs, progress: ProgressFn) => repeatJob(a, compile, progress),
   points: (a: PointsArgs, progress: ProgressFn<PointsChunk>) => pointsJob(a, compile, progress),
+  gpuCheck: (a: GpuCheckArgs) => checkGpuDirections(a),
 };
 exposeTasks(tasks);
 

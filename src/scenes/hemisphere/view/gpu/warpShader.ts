@@ -119,13 +119,17 @@ export function makeWarpPass(gl: WebGL2RenderingContext, c: number): WarpPass | 
   };
 }
 
-/** Read `count` captured directions (xyz floats) back from a transform feedback buffer. */
-export function readDirections(gl: WebGL2RenderingContext, buf: WebGLBuffer, count: number): Float32Array {
-  const out = new Float32Array(count * 3);
+/** Read the captured floats [from, to) (xyz per direction) of a transform feedback buffer into `out`. */
+export function readDirections(
+  gl: WebGL2RenderingContext,
+  buf: WebGLBuffer,
+  out: Float32Array,
+  from = 0,
+  to = out.length,
+): void {
   gl.bindBuffer(gl.COPY_READ_BUFFER, buf);
-  gl.getBufferSubData(gl.COPY_READ_BUFFER, 0, out);
+  gl.getBufferSubData(gl.COPY_READ_BUFFER, from * 4, out, from, to - from);
   gl.bindBuffer(gl.COPY_READ_BUFFER, null);
-  return out;
 }
 
 /** Wait for the GPU: a one-pixel read back forces every queued command to finish. */
