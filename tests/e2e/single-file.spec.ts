@@ -32,10 +32,11 @@ const ROUTES: [string, string[]][] = [
 ];
 /**
  * Routes whose lazy views (plots, the 3D view, formulas typeset in a worker) are all brought on
- * screen: one with Plotly and workers, one with three.js. The lazy parts are inlined in the one
- * file in the same way for every route, so two prove the mechanism.
+ * screen: one with Plotly and workers, one with three.js (texture's sphere, the lightest scene with a
+ * 3D view). The lazy parts are inlined in the one file in the same way for every route, so two
+ * prove the mechanism.
  */
-const WHOLE = new Set(['#/monte-carlo?open=convergence', '#/hemisphere']);
+const WHOLE = new Set(['#/monte-carlo?open=convergence', '#/texture']);
 
 test('the single HTML file opens from file:// and its routes work with no network, under its CSP', async ({
   page,
@@ -70,6 +71,12 @@ test('the single HTML file opens from file:// and its routes work with no networ
     }
     // bring every lazy view (plots, 3D, formulas) on screen so their chunks load
     if (WHOLE.has(hash)) await settleLazyViews(page);
+    // three.js came from the file: the texture's sphere view is drawn
+    if (hash === '#/texture') {
+      const view = page.getByTestId('sphere-view');
+      await view.scrollIntoViewIfNeeded();
+      await expect(view).toHaveAttribute('data-status', 'ready', { timeout: 60000 });
+    }
     await expect(page.locator('.notice-error')).toHaveCount(0);
     // the file's inline app runs by its hash, its workers from Blob URLs: nothing is refused
     expect(await cspViolations(page), `CSP violations on ${hash}`).toEqual([]);
