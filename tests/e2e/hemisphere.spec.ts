@@ -12,7 +12,7 @@
  * message's wording in tests/core/sampling/tabulatedHemisphere.test.ts and tests/core/expr.
  */
 import type { Page } from '@playwright/test';
-import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
+import { test, expect, followLinkAnew, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
 import { computeDrawStats } from '../../src/scenes/hemisphere/drawStats';
 import { lobeFromParams, makeLobe } from '../../src/scenes/hemisphere/lobe';
 import { animFrame } from '../../src/scenes/hemisphere/animation';
@@ -123,7 +123,7 @@ test('wiring: the exam page, the settings fold, Phong, sobol points, typed and b
     await fold.locator('summary').click();
     await expect(page).toHaveURL(/[?&]open=settings(&|$)/);
     await expect(page.getByTestId('lobe')).toBeVisible();
-    await page.reload();
+    await followLinkAnew(page);
     await expect(page.getByTestId('fold-settings')).toHaveAttribute('open');
   });
 

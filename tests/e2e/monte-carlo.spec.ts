@@ -14,7 +14,7 @@
  * wording in tests/scenes/monte-carlo/describe.test.ts.
  */
 import type { Page } from '@playwright/test';
-import { test, expect, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
+import { test, expect, followLinkAnew, openScene, readout, readoutNumber, waitForReadout } from './fixtures';
 import { axNodeOf, axTree } from './axTree';
 import { drawnEstimate } from '../../src/scenes/monte-carlo/drawnEstimate';
 import { raceAt, raceTrack } from '../../src/scenes/monte-carlo/race';
@@ -118,7 +118,7 @@ test('wiring: the exam’s Q4 part by part, typed integrands and pdfs, bad ones,
     await expect(fold.getByTestId('race-table')).toBeVisible();
     await expect(fold.getByTestId('trace-uniform-estimate')).toBeVisible();
     await expect(page).toHaveURL(/[?&]open=race-data(&|$)/);
-    await page.reload();
+    await followLinkAnew(page);
     await expect(page.getByTestId('fold-race-data')).toHaveAttribute('open');
     await expect(page.getByTestId('race-table')).toBeVisible({ timeout: 30_000 });
   });

@@ -9,7 +9,7 @@
 // (tests/core/render/, tests/scenes/render/), the folds' markup Node tests (tests/render/); the page
 // as a reader meets it, every fold open, is in wcag.spec.ts; the FLIP of downloaded images is
 // checked on #/area-light (area-light.spec.ts).
-import { test, expect, openScene, readout, waitForReadout } from './fixtures';
+import { test, expect, followLinkAnew, openScene, readout, waitForReadout } from './fixtures';
 import { parseParams } from '../../src/kit/params';
 import { schema } from '../../src/scenes/render/params';
 import { buildRenderModel } from '../../src/scenes/render/model';
@@ -182,11 +182,8 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
       .toBe(true);
     const t = linkT();
     expect(t).toBeGreaterThan(2);
-    // the link followed anew: the lab is left, then mounted again from the paused link alone
-    const paused = new URL(page.url()).hash;
-    await page.evaluate(() => (location.hash = '#/'));
-    await expect(page.getByTestId('render-status')).toHaveCount(0);
-    await page.evaluate((h) => (location.hash = h), paused);
+    // the paused link followed anew: the lab mounts again from the link alone
+    await followLinkAnew(page);
     await expect(page.getByTestId('render-status')).toHaveText(
       `Paused at ${t} of 4096 samples per pixel (play=0, t=${t}).`,
       { timeout: 30_000 },
