@@ -13,7 +13,7 @@ import { sidakAlpha } from '../../../core/verify';
 import { useSeenOnce } from '../../../ui/useInView';
 import { isCancelled, runWorkerTask } from '../../../workers';
 import { makeWorker } from '../worker';
-import type { WarpForm } from '../gpuCheck';
+import type { GpuCheck, WarpForm } from '../gpuCheck';
 import { ErrorTable } from './ErrorTable';
 import { makeWarpPass, readDirections, syncGpu, type WarpPass } from './gpu/warpShader';
 
@@ -69,19 +69,12 @@ function Float32WarpTable() {
   );
 }
 
-interface GpuRun {
+/** A run on screen: the worker's check of the form and seed drawn, with the page's own timings. */
+interface GpuRun extends GpuCheck {
   form: WarpForm;
   seed: number;
-  p: number;
-  statistic: number;
-  dof: number;
-  threshold: number;
-  pass: boolean;
-  /** Largest |GPU − emulation| over the first 4096 directions' components (absolute). */
-  maxDiff: number;
   msDraw: number;
   msRead: number;
-  msChi2: number;
 }
 
 export function GpuWarpPanel({ seed }: { seed: number }) {
@@ -163,20 +156,7 @@ export function GpuWarpPanel({ seed }: { seed: number }) {
         { dirs, seed, form, alpha: ALPHA, tests: TESTS },
         { signal: ctrl.signal, transfer: [dirs.buffer] },
       ).then(
-        (c) =>
-          setRun({
-            form,
-            seed,
-            p: c.p,
-            statistic: c.statistic,
-            dof: c.dof,
-            threshold: c.threshold,
-            pass: c.pass,
-            maxDiff: c.maxDiff,
-            msDraw,
-            msRead,
-            msChi2: c.ms,
-          }),
+        (c) => setRun({ ...c, form, seed, msDraw, msRead }),
         (err: unknown) => {
           if (!isCancelled(err))
             setError(
@@ -329,7 +309,7 @@ export function GpuWarpPanel({ seed }: { seed: number }) {
                 </>
               ) : null}
               draw and capture {run.msDraw.toFixed(1)} ms (until its fence was seen), read back{' '}
-              {run.msRead.toFixed(1)} ms, χ² in a worker {run.msChi2.toFixed(0)} ms.
+              {run.msRead.toFixed(1)} ms, χ² in a worker {run.ms.toFixed(0)} ms.
             </p>
           ) : null}
         </div>
