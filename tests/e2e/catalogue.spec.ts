@@ -10,7 +10,7 @@
  */
 import type { Page } from '@playwright/test';
 import { SCENES, type SceneInfo } from '../../src/kit/catalogue';
-import { test, expect, openScene, countAnimationFrames } from './fixtures';
+import { test, expect, openScene, countAnimationFrames, followLinkAnew } from './fixtures';
 import { checkWholePage } from './wholePage';
 
 test.describe.configure({ timeout: 180_000 });
@@ -103,9 +103,7 @@ for (const s of SCENES) {
       // which must show 0 (the position comes from the link, not from memory), then the paused
       // link itself is followed on that page and brings the position back
       const address = new URL(page.url()).hash;
-      await page.evaluate(() => (location.hash = '#/'));
-      await expect(page.getByTestId('timeline')).toHaveCount(0);
-      await page.evaluate((h) => (location.hash = h), address.replace(/([?&])t=[^&]*/, '$1t=0'));
+      await followLinkAnew(page, address.replace(/([?&])t=[^&]*/, '$1t=0'));
       await expect(page.getByTestId('timeline')).toHaveAttribute('data-t', '0');
       await page.evaluate((h) => (location.hash = h), address);
       await expect(page.getByTestId('timeline')).toHaveAttribute('data-t', t!);

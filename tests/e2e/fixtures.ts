@@ -41,12 +41,11 @@ export async function openScene(page: Page, hash: string): Promise<void> {
 }
 
 /**
- * Follows the page's own link anew: leaves for the home page, then goes back to the link, so the
- * route mounts from the link alone (nothing kept in memory) without reloading the app. What a
- * link pasted into the same tab does; a reload also re-reads storage, which this does not test.
+ * Follows a link (by default the page's own) anew: leaves for the home page, then goes to the link,
+ * so the route mounts from the link alone (nothing kept in memory) without reloading the app. What
+ * a link pasted into the same tab does; a reload also re-reads storage, which this does not test.
  */
-export async function followLinkAnew(page: Page): Promise<void> {
-  const link = new URL(page.url()).hash;
+export async function followLinkAnew(page: Page, link = new URL(page.url()).hash): Promise<void> {
   await page.evaluate(() => (location.hash = '#/'));
   await expect(page.locator('main#main.home')).toBeVisible();
   await page.evaluate((h) => (location.hash = h), link);

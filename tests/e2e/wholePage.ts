@@ -67,7 +67,8 @@ export const LAYOUT_RULES = ['color-contrast', 'link-in-text-block', 'target-siz
 export const CALM = { firstScreen: 25, page: 60 };
 
 /**
- * axe's WCAG 2.2 AA violations (or those of the given rules), described. KaTeX's HTML layer is left out: it is aria-hidden,
+ * axe's WCAG 2.2 AA violations (or those of the given rules; in the whole page, or in the part the
+ * `include` selector names), described. KaTeX's HTML layer is left out: it is aria-hidden,
  * drawn in the colour of the text around it (no formula sets a colour of its own), and holds
  * most of a scene's nodes; the formulas' MathML, what a screen reader is given, is scanned.
  * Only violations are collected in full (axe's `resultTypes`), which keeps a scan of a whole
@@ -79,12 +80,17 @@ export const CALM = { firstScreen: 25, page: 60 };
  * open: about 3 s against 6–7 s); no page scanned here embeds a frame of another origin, the one
  * case legacy mode cannot reach.
  */
-export async function axeViolations(page: Page, label: string, rules?: readonly string[]): Promise<string[]> {
+export async function axeViolations(
+  page: Page,
+  label: string,
+  { rules, include }: { rules?: readonly string[]; include?: string } = {},
+): Promise<string[]> {
   // options first: AxeBuilder's options() replaces what withTags() and withRules() set
   const builder = new AxeBuilder({ page })
     .options({ resultTypes: ['violations'] })
     .exclude('.katex-html')
     .setLegacyMode(true);
+  if (include) builder.include(include);
   if (rules) builder.withRules([...rules]);
   else builder.withTags(['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'wcag22aa']);
   const r = await builder.analyze();
@@ -318,7 +324,9 @@ export async function checkWholePage(
   await test.step('folds', () => openAllFolds(page));
   // light at 1280 px, every fold open: the rules a theme or a width can change (colours,
   // target sizes); every rule runs below, dark at 375 px, on the same content
-  found.push(...(await test.step('axe light', () => axeViolations(page, 'light 1280', LAYOUT_RULES))));
+  found.push(
+    ...(await test.step('axe light', () => axeViolations(page, 'light 1280', { rules: LAYOUT_RULES }))),
+  );
   // powers are written as superscripts; a formula still waiting for KaTeX shows its plain-text
   // reading, which has no caret either
   found.push(...(await visibleCarets(page)).map((c) => `caret in the visible text: ${c}`));
