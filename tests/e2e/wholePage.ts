@@ -336,7 +336,26 @@ export async function checkWholePage(
   // (generous: with every fold open, a page may be busy with what they compute for a while)
   await expect
     .poll(() => page.evaluate(() => document.documentElement.dataset.theme), { timeout: 60_000 })
-    .toBe('dark');
+    .toBe('dark')
+    .catch(async (e: unknown) => {
+      // Seen rarely on a loaded machine: the theme stays light. Chromium tells a page that a media
+      // query changed with its next animation frame, so say whether the preference is dark and
+      // whether the page still gets frames (a frame asked for, 3 s given to come).
+      const state = await page.evaluate(
+        () =>
+          new Promise((done) => {
+            let frame = false;
+            requestAnimationFrame(() => (frame = true));
+            setTimeout(() => {
+              const prefersDark = matchMedia('(prefers-color-scheme: dark)').matches;
+              done({ prefersDark, frame, visibility: document.visibilityState });
+            }, 3000);
+          }),
+      );
+      throw new Error(
+        `${e instanceof Error ? e.message : String(e)}\nthe page then: ${JSON.stringify(state)}`,
+      );
+    });
   await expect
     .poll(() => page.evaluate(() => document.documentElement.clientWidth), { timeout: 60_000 })
     .toBeLessThanOrEqual(375);
