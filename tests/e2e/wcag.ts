@@ -144,10 +144,16 @@ export function clippedText(page: Page): Promise<string[]> {
 
 /**
  * 2.4.11 Focus Not Obscured: the focused element is not entirely hidden by something fixed or
- * sticky above it. Returns why, or null.
+ * sticky above it, in the page as drawn. Returns why, or null.
+ *
+ * It looks once the next frame is drawn: a focus move scrolls against the layout of the moment, in
+ * which a formula block off screen (`content-visibility: auto`) still has its placeholder height;
+ * the frame that draws it gives the real height, and what a reader sees is that frame, not the
+ * moment between. (A task queued from a frame callback runs after that frame's layout and paint.)
  */
 export function focusObscured(page: Page): Promise<string | null> {
-  return page.evaluate(() => {
+  return page.evaluate(async () => {
+    await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
     const el = document.activeElement;
     if (!el || el === document.body) return null;
     const r = el.getBoundingClientRect();
@@ -181,7 +187,9 @@ export function focusObscured(page: Page): Promise<string | null> {
         p = p.parentElement;
       }
     }
-    return hidden === pts.length ? `${el.tagName.toLowerCase()} hidden by ${by}` : null;
+    if (hidden < pts.length) return null;
+    const name = (el.getAttribute('data-testid') ?? el.textContent ?? '').trim().slice(0, 30);
+    return `${el.tagName.toLowerCase()} "${name}" hidden by ${by} (top ${Math.round(r.top)} px of ${innerHeight}, scrollY ${Math.round(scrollY)})`;
   });
 }
 

@@ -116,6 +116,8 @@ export function useProgressiveRender(
     const paths = tiles.map(() => 0);
     const start = performance.now();
     let frame = 0;
+    // every band has posted its last pass (the image is whole, though perhaps not drawn yet)
+    let complete = false;
     let image: ImageData | null = null;
     const draw = () => {
       frame = 0;
@@ -173,6 +175,7 @@ export function useProgressiveRender(
     );
     Promise.all(runs).then(
       () => {
+        complete = true;
         finished.current = `${key}@${target}`;
         schedule();
       },
@@ -184,7 +187,12 @@ export function useProgressiveRender(
     );
     return () => {
       ctl.abort();
-      if (frame) cancelAnimationFrame(frame);
+      if (frame) {
+        cancelAnimationFrame(frame);
+        // a whole image whose last frame had not come yet (the canvas left the screen in between)
+        // is drawn now: a finished run is not started again, so this draw is its only one
+        if (complete) draw();
+      }
     };
   }, [key, running, target, canvasRef]);
 
