@@ -6,13 +6,15 @@
  *    (the shell itself: routing, the scene host, the share bar, the link's shell flags with the
  *    folds it opens, the deck's slide host; every page's own code is a lazy chunk);
  *  - each heavy library and each scene chunk under its own ceiling;
- *  - what the practice index (`#/practice`) downloads beyond the entry under its own ceiling;
+ *  - what the practice index (`#/practice`) and each question page download beyond the entry
+ *    under their own ceilings;
  *  - the single-file copy (dist-single/index.html, when built) under its own ceiling.
  * Exits 1 and says which budget broke.
  */
 import { readFileSync, readdirSync, existsSync } from 'node:fs';
 import { gzipSync } from 'node:zlib';
 import { join } from 'node:path';
+import { readPreloadMap } from './preloadMap.mjs';
 
 const dist = process.argv[2] ?? 'dist';
 if (!existsSync(join(dist, 'index.html'))) {
@@ -88,17 +90,21 @@ for (const f of readdirSync(join(dist, 'assets'))) {
 
 // What a route downloads beyond the entry, from the route preload map index.html carries
 // (scripts/routePreload.ts): the practice index lists the questions without their generators and
-// the marking code, which load with a question page.
-const ROUTE_LIMITS = [['practice', 20_000]];
-const preloadMap = /var m=(\{.*?\}),b=/.exec(html);
+// the marking code, which load with a question page; a question page loads its own question's
+// generator, not the other five's.
+const ROUTE_LIMITS = [
+  ['practice', 20_000],
+  ...['q1', 'q2', 'q3', 'q4', 'q5', 'q6'].map((q) => [`practice/${q}`, 50_000]),
+];
+const preloadMap = readPreloadMap(html);
 for (const [route, limit] of ROUTE_LIMITS) {
-  const files = preloadMap ? JSON.parse(preloadMap[1])[route] : undefined;
+  const files = preloadMap?.[route];
   if (!files) {
     failures.push(`index.html has no preload list for #/${route}`);
     continue;
   }
-  const s = [...files[0], ...files[1]].reduce((sum, f) => sum + gz(f), 0);
-  rows.push(['route', `#/${route} (${files[0].length + files[1].length} files)`, s, limit]);
+  const s = [...files.js, ...files.css].reduce((sum, f) => sum + gz(f), 0);
+  rows.push(['route', `#/${route} (${files.js.length + files.css.length} files)`, s, limit]);
   if (s > limit)
     failures.push(`#/${route} downloads ${kB(s)} kB gzipped beyond the entry, over ${kB(limit)} kB`);
 }

@@ -22,43 +22,61 @@ interface ChunkLike {
   isEntry: boolean;
   isDynamicEntry: boolean;
   facadeModuleId: string | null;
+  /** The modules the chunk holds (a route's module may sit in a shared chunk, as a question's does). */
+  moduleIds?: string[];
   viteMetadata?: { importedCss: Set<string> };
 }
 type BundleLike = Record<string, ChunkLike | { type: 'asset'; fileName: string }>;
 
 const SCENE_ENTRY = /[\\/]src[\\/]scenes[\\/]([a-z0-9-]+)[\\/]index\.ts$/;
+
 /**
- * The other lazily loaded routes (their chunks' entry modules): `#/practice`, `#/guide`, and the
- * practice pages loaded by the practice chunk: a question (`#/practice/q1` … `q6`, one key for
- * all six) and the worksheet.
+ * The other lazily loaded routes, by their chunks' entry modules (`$1` in an id is the pattern's
+ * first group). `with`: the other chunks the route's page loads together with this one (a
+ * practice page is loaded by the practice chunk; a question page is the question page's code and
+ * its question's generator, two chunks loaded at once). A `part` is loaded only with others and is
+ * no route of its own.
  */
-const OTHER_ROUTES: Array<[RegExp, string]> = [
-  [/[\\/]src[\\/]practice[\\/]PracticeRoute\.tsx$/, 'practice'],
-  [/[\\/]src[\\/]practice[\\/]QuestionRoute\.tsx$/, 'practice/question'],
-  [/[\\/]src[\\/]practice[\\/]Sheet\.tsx$/, 'practice/sheet'],
-  [/[\\/]src[\\/]guide[\\/]Guide\.tsx$/, 'guide'],
+const OTHER_ROUTES: Array<{ re: RegExp; id: string; with?: string[]; part?: boolean }> = [
+  { re: /[\\/]src[\\/]practice[\\/]PracticeRoute\.tsx$/, id: 'practice' },
+  { re: /[\\/]src[\\/]practice[\\/]QuestionRoute\.tsx$/, id: 'practice/question', part: true },
+  {
+    re: /[\\/]src[\\/]practice[\\/](q[1-6])\.ts$/,
+    id: 'practice/$1',
+    with: ['practice', 'practice/question'],
+  },
+  { re: /[\\/]src[\\/]practice[\\/]Sheet\.tsx$/, id: 'practice/sheet', with: ['practice'] },
+  { re: /[\\/]src[\\/]guide[\\/]Guide\.tsx$/, id: 'guide' },
 ];
 
-/** The route id a lazy chunk's entry module serves ('alpha' for src/scenes/alpha/index.ts), or null. */
-function routeOf(facade: string | null): string | null {
-  const m = SCENE_ENTRY.exec(facade ?? '');
-  if (m) return m[1];
-  for (const [re, id] of OTHER_ROUTES) if (re.test(facade ?? '')) return id;
+/**
+ * The route a chunk serves ('alpha' for the one holding src/scenes/alpha/index.ts), or null: by its
+ * entry module, or by a module it holds (a question's generator is imported by the question page
+ * and by the worksheet, and may sit in a chunk shared by the two, with no entry module).
+ */
+function routeOf(c: ChunkLike): { id: string; with: string[]; part: boolean } | null {
+  for (const id of [c.facadeModuleId ?? '', ...(c.moduleIds ?? [])]) {
+    const m = SCENE_ENTRY.exec(id);
+    if (m) return { id: m[1], with: [], part: false };
+    for (const r of OTHER_ROUTES) {
+      const g = r.re.exec(id);
+      if (g) return { id: r.id.replace('$1', g[1] ?? ''), with: r.with ?? [], part: r.part ?? false };
+    }
+  }
   return null;
 }
 
 /**
- * Route id (a scene's id, 'practice', 'guide') → the files to preload for it (scripts, then
- * stylesheets). Exported for tests.
+ * Route (the hash's path without its slashes: a scene's id, 'practice', 'practice/q3', 'guide') →
+ * the files to preload for it (scripts, then stylesheets): its chunks and their static imports,
+ * less what the entry loads anyway. Exported for tests.
  */
 export function scenePreloadMap(bundle: BundleLike): Record<string, { js: string[]; css: string[] }> {
   const chunk = (f: string): ChunkLike | null => {
     const c = bundle[f];
     return c && c.type === 'chunk' ? c : null;
   };
-  const closure = (start: string): { js: Set<string>; css: Set<string> } => {
-    const js = new Set<string>();
-    const css = new Set<string>();
+  const closure = (start: string, js = new Set<string>(), css = new Set<string>()) => {
     const visit = (f: string) => {
       if (js.has(f)) return;
       const c = chunk(f);
@@ -72,52 +90,53 @@ export function scenePreloadMap(bundle: BundleLike): Record<string, { js: string
   };
   // what the entry loads by itself (its static imports and stylesheets): never preloaded again
   const entry = { js: new Set<string>(), css: new Set<string>() };
+  for (const c of Object.values(bundle))
+    if (c.type === 'chunk' && c.isEntry) closure(c.fileName, entry.js, entry.css);
+  const routes = new Map<string, { file: string; with: string[]; part: boolean }>();
   for (const c of Object.values(bundle)) {
-    if (c.type !== 'chunk' || !c.isEntry) continue;
-    const cl = closure(c.fileName);
-    cl.js.forEach((f) => entry.js.add(f));
-    cl.css.forEach((f) => entry.css.add(f));
+    if (c.type !== 'chunk' || c.isEntry) continue;
+    const r = routeOf(c);
+    if (r) routes.set(r.id, { file: c.fileName, with: r.with, part: r.part });
   }
   const out: Record<string, { js: string[]; css: string[] }> = {};
-  for (const c of Object.values(bundle)) {
-    if (c.type !== 'chunk' || !c.isDynamicEntry) continue;
-    const id = routeOf(c.facadeModuleId);
-    if (id === null) continue;
-    const cl = closure(c.fileName);
-    out[id] = {
-      js: [...cl.js].filter((f) => !entry.js.has(f)),
-      css: [...cl.css].filter((f) => !entry.css.has(f)),
-    };
-  }
-  // a page loaded by another route's chunk (`practice/question`): what its parent brings is not
-  // listed again
-  for (const [id, v] of Object.entries(out)) {
-    const parent = id.includes('/') ? out[id.slice(0, id.indexOf('/'))] : undefined;
-    if (!parent) continue;
-    v.js = v.js.filter((f) => !parent.js.includes(f));
-    v.css = v.css.filter((f) => !parent.css.includes(f));
+  for (const [id, r] of routes) {
+    if (r.part) continue;
+    const js = new Set<string>();
+    const css = new Set<string>();
+    // the chunks loaded with it first (the practice chunk before a question page's)
+    for (const w of r.with) {
+      const other = routes.get(w);
+      if (other) closure(other.file, js, css);
+    }
+    closure(r.file, js, css);
+    out[id] = { js: [...js].filter((f) => !entry.js.has(f)), css: [...css].filter((f) => !entry.css.has(f)) };
   }
   return out;
 }
 
 /**
- * The inline script (plain ES5, runs before the entry module): `map` is JSON of scenePreloadMap,
- * `base` the URL prefix of the files ('./' for a relative base). The hash's path is the key
- * (`practice/q1` … `practice/q6` all read as `practice/question`); a key `a/b` that is in the map
- * brings its parent route's files `a` too (the chunk that loads it).
+ * The inline script (plain ES5, runs before the entry module): `map` is scenePreloadMap's result,
+ * `base` the URL prefix of the files ('./' for a relative base). The hash's path is the key. The
+ * files are written once, in a list, and each route names them by index (a question page's list
+ * repeats the practice page's). scripts/preloadMap.mjs reads it back.
  */
 export function preloadScript(map: Record<string, { js: string[]; css: string[] }>, base: string): string {
-  // compact form: [[js…], [css…]] per id
-  const compact: Record<string, [string[], string[]]> = {};
-  for (const [id, v] of Object.entries(map)) compact[id] = [v.js, v.css];
-  const json = JSON.stringify(compact).replace(/</g, '\\u003c');
+  const files: string[] = [];
+  const index = new Map<string, number>();
+  const at = (f: string) => {
+    if (!index.has(f)) index.set(f, files.push(f) - 1);
+    return index.get(f)!;
+  };
+  // compact form: [[js…], [css…]] per route, as indices into the file list
+  const compact: Record<string, [number[], number[]]> = {};
+  for (const [id, v] of Object.entries(map)) compact[id] = [v.js.map(at), v.css.map(at)];
+  const json = (x: unknown) => JSON.stringify(x).replace(/</g, '\\u003c');
   return (
-    `(function(){try{var m=${json},b=${JSON.stringify(base)},h=location.hash.slice(1),q=h.indexOf('?');` +
-    `if(q>=0)h=h.slice(0,q);h=h.replace(/^\\/+|\\/+$/g,'').replace(/^practice\\/q[1-6]$/,'practice/question');` +
-    `var o=Object.prototype.hasOwnProperty;if(!o.call(m,h))return;var k=[h],s=h.indexOf('/'),d=document.head;` +
-    `if(s>0&&o.call(m,h.slice(0,s)))k.unshift(h.slice(0,s));` +
-    `function a(r,f,t){var l=document.createElement('link');l.rel=r;if(t)l.as=t;l.crossOrigin='';l.href=b+f;d.appendChild(l)}` +
-    `k.forEach(function(i){m[i][0].forEach(function(f){a('modulepreload',f)});m[i][1].forEach(function(f){a('preload',f,'style')})})` +
+    `(function(){try{var f=${json(files)},m=${json(compact)},b=${JSON.stringify(base)},h=location.hash.slice(1),q=h.indexOf('?');` +
+    `if(q>=0)h=h.slice(0,q);h=h.replace(/^\\/+|\\/+$/g,'');` +
+    `if(!Object.prototype.hasOwnProperty.call(m,h))return;var d=document.head;` +
+    `function a(r,i,t){var l=document.createElement('link');l.rel=r;if(t)l.as=t;l.crossOrigin='';l.href=b+f[i];d.appendChild(l)}` +
+    `m[h][0].forEach(function(i){a('modulepreload',i)});m[h][1].forEach(function(i){a('preload',i,'style')})` +
     `}catch(x){}})();`
   );
 }

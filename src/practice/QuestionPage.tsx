@@ -14,7 +14,7 @@ import { nextSteps } from './nextSteps';
 import { ParamNotice, TextList } from './ParamNotice';
 import { PartBlock } from './PartBlock';
 import { recordCheck } from './progress';
-import { questionInfo } from './questions';
+import { questionMeta } from './questionList';
 import { recordScore } from './scores';
 import {
   applyCheck,
@@ -43,7 +43,7 @@ export function QuestionPage({
   flags: ShellFlags;
   problems: ParamProblem[];
 }) {
-  const info = questionInfo(variant.question);
+  const info = questionMeta(variant.question);
   // typed answers survive a reload of the tab (drafts.ts); else an extension (the LMS runtime in a
   // package) may hand back the learner's saved answers
   const [inputs, setInputs] = useState<Record<string, string>>(() =>

@@ -5,10 +5,19 @@ import { randomSeed } from './links';
 import { parseQuestionParams } from './params';
 import type { QuestionId } from './model';
 import { QuestionPage } from './QuestionPage';
-import { questionInfo } from './questions';
+import type { Generate } from './generators';
 
-/** `#/practice/qN?seed=…`: the variant the link names (a fresh one, written into the URL, when none). */
-export function QuestionRoute({ q, sp, flags }: { q: QuestionId; sp: URLSearchParams; flags: ShellFlags }) {
+export interface QuestionRouteProps {
+  q: QuestionId;
+  sp: URLSearchParams;
+  flags: ShellFlags;
+}
+
+/**
+ * `#/practice/qN?seed=…`: the variant the link names (a fresh one, written into the URL, when none),
+ * made by `generate`, question q's generator (./generators.ts).
+ */
+export function QuestionRoute({ q, sp, flags, generate }: QuestionRouteProps & { generate: Generate }) {
   const [fallback] = useState(() => randomSeed());
   const parsed = parseQuestionParams(sp, fallback);
   // an extension (the LMS runtime in a package) fixes each learner's variant, whatever the link says
@@ -26,6 +35,6 @@ export function QuestionRoute({ q, sp, flags }: { q: QuestionId; sp: URLSearchPa
       /* sandboxed: the seed still lives in the page */
     }
   }, [asGiven, seed, q, sp]);
-  const variant = useMemo(() => questionInfo(q).generate(seed), [q, seed]);
+  const variant = useMemo(() => generate(seed), [generate, seed]);
   return <QuestionPage key={`${q}-${seed}`} variant={variant} flags={flags} problems={problems} />;
 }

@@ -21,6 +21,10 @@ export const QUESTION_LIST: readonly QuestionMeta[] = CATALOGUE.map((q) => ({
   blurb: q.practice.blurb,
 }));
 
+export function questionMeta(id: QuestionId): QuestionMeta {
+  return QUESTION_LIST.find((q) => q.id === id)!;
+}
+
 /** Seed of the k-th variant of a question on a worksheet with base seed `seed` (wraps at 2³²). */
 export function sheetSeed(seed: number, k: number): number {
   return (seed + k) >>> 0;

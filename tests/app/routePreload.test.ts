@@ -1,6 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { runInNewContext } from 'node:vm';
 import { lateManifestLink, preloadScript, scenePreloadMap } from '../../scripts/routePreload';
+// @ts-expect-error plain ESM helper without types
+import { readPreloadMap } from '../../scripts/preloadMap.mjs';
 
 type Chunk = Parameters<typeof scenePreloadMap>[0][string];
 const chunk = (
@@ -52,13 +54,21 @@ const bundle = Object.fromEntries(
       facadeModuleId: '/p/src/practice/PracticeRoute.tsx',
       imports: ['assets/shared.js'],
     }),
-    // a question page: its own chunk, loaded by the practice chunk
+    // a question page: the page's chunk and the question's generator, both loaded by the practice chunk
     chunk('assets/question.js', {
       isDynamicEntry: true,
       facadeModuleId: '/p/src/practice/QuestionRoute.tsx',
-      imports: ['assets/shared.js', 'assets/generators.js'],
+      imports: ['assets/shared.js', 'assets/marking.js'],
     }),
-    chunk('assets/generators.js'),
+    chunk('assets/marking.js'),
+    chunk('assets/q1.js', {
+      isDynamicEntry: true,
+      facadeModuleId: '/p/src/practice/q1.ts',
+      imports: ['assets/core-a.js', 'assets/runtime.js'],
+    }),
+    chunk('assets/core-a.js'),
+    // a generator in a chunk with no entry module (shared by a question page and the worksheet)
+    { ...chunk('assets/q6.js'), moduleIds: ['/p/src/core/six.ts', '/p/src/practice/q6.ts'] },
   ].map((c) => [c.fileName, c]),
 ) as Parameters<typeof scenePreloadMap>[0];
 (bundle as Record<string, unknown>)['assets/font.woff2'] = { type: 'asset', fileName: 'assets/font.woff2' };
@@ -66,16 +76,26 @@ const bundle = Object.fromEntries(
 describe('scenePreloadMap: the files to start with the entry, per scene', () => {
   it('maps each scene to its chunk and static import closure (scripts and CSS), minus what the entry loads', () => {
     const map = scenePreloadMap(bundle);
-    // the practice page too (#/practice), and a question page, without what the practice chunk brings
-    expect(Object.keys(map).sort()).toEqual(['alpha', 'beta-2', 'practice', 'practice/question']);
+    // the practice page too (#/practice), and each question page (the question page's code is no
+    // route by itself)
+    expect(Object.keys(map).sort()).toEqual(['alpha', 'beta-2', 'practice', 'practice/q1', 'practice/q6']);
     expect(map.practice).toEqual({
       js: ['assets/practice.js', 'assets/shared.js'],
       css: ['assets/shared.css'],
     });
-    expect(map['practice/question']).toEqual({
-      js: ['assets/question.js', 'assets/generators.js'],
-      css: [],
+    // a question page: the practice chunk that loads it, the page, its own generator, nothing twice
+    expect(map['practice/q1']).toEqual({
+      js: [
+        'assets/practice.js',
+        'assets/shared.js',
+        'assets/question.js',
+        'assets/marking.js',
+        'assets/q1.js',
+        'assets/core-a.js',
+      ],
+      css: ['assets/shared.css'],
     });
+    expect(map['practice/q6'].js).not.toContain('assets/core-a.js');
     expect(map.alpha).toEqual({
       js: ['assets/scene-a.js', 'assets/shared.js'],
       css: ['assets/a.css', 'assets/shared.css'],
@@ -129,15 +149,32 @@ describe('the inline preload script', () => {
       expect(hrefs(h), h).toEqual(['./assets/practice.js', './assets/shared.css', './assets/shared.js']);
   });
 
-  it('preloads a practice question (q1 … q6) with the practice chunk that loads it', () => {
-    for (const h of ['#/practice/q1', '#/practice/q6?seed=3'])
+  it('preloads a practice question with the practice chunk that loads it and its own generator only', () => {
+    for (const h of ['#/practice/q1', '#/practice/q1?seed=3'])
       expect(hrefs(h), h).toEqual([
-        './assets/generators.js',
+        './assets/core-a.js',
+        './assets/marking.js',
         './assets/practice.js',
+        './assets/q1.js',
         './assets/question.js',
         './assets/shared.css',
         './assets/shared.js',
       ]);
+    expect(hrefs('#/practice/q6')).toEqual([
+      './assets/marking.js',
+      './assets/practice.js',
+      './assets/q6.js',
+      './assets/question.js',
+      './assets/shared.css',
+      './assets/shared.js',
+    ]);
+  });
+
+  it('is read back from the page by scripts/preloadMap.mjs (for the size budgets) as it was given', () => {
+    const map = scenePreloadMap(bundle);
+    const html = `<head><script>${preloadScript(map, './')}</script></head>`;
+    expect(readPreloadMap(html)).toEqual(map);
+    expect(readPreloadMap('<head></head>')).toBeNull();
   });
 
   it('adds nothing for the home page, other routes, and hostile hashes (own keys only, never throws)', () => {
@@ -147,6 +184,7 @@ describe('the inline preload script', () => {
       '#/guide',
       '#/practice/alpha',
       '#/practice/q7',
+      '#/practice/question',
       '#/practice/q1/x',
       '#/nope',
       '#/__proto__',
