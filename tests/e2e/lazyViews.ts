@@ -11,12 +11,12 @@ export async function settleLazyViews(page: Page, timeout = 60000): Promise<void
   const h = await page.evaluate(() => document.documentElement.scrollHeight);
   for (let y = 0; y < h; y += 600) await page.evaluate((y) => window.scrollTo(0, y), y);
   for (let i = 0; i < 50; i++) {
-    const el = await page
-      .getByText(LOADING)
-      .first()
-      .elementHandle({ timeout: 1000 })
-      .catch(() => null);
-    if (!el) return;
+    // (a view shows its placeholder from its first render until its chunk has drawn it: none
+    // left means every view is in)
+    const loading = page.getByText(LOADING).first();
+    if ((await loading.count()) === 0) return;
+    const el = await loading.elementHandle({ timeout: 1000 }).catch(() => null);
+    if (!el) continue;
     await el.scrollIntoViewIfNeeded().catch(() => undefined);
     // polled on a timer, not per animation frame: a page that draws no frames for a while (a
     // loaded machine, nothing changing on screen) must not stall the wait
