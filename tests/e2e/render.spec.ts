@@ -69,8 +69,11 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
     await expect(page.getByTestId('pixel-hit')).toHaveAttribute('data-value', /^(floor|none|light|sphere)$/);
     // (the render runs while the image is on screen: bring it back after the settings unfold)
     await canvas.scrollIntoViewIfNeeded();
-    await expect(page.getByTestId('spp')).toHaveAttribute('data-value', '8', { timeout: 15_000 });
-    await expect(page.getByTestId('render-status')).toHaveText(/^Done: 8 samples per pixel\.$/);
+    // (the status first: where the run stops short, it says whether it waits for the screen)
+    await expect(page.getByTestId('render-status')).toHaveText(/^Done: 8 samples per pixel\.$/, {
+      timeout: 15_000,
+    });
+    await expect(page.getByTestId('spp')).toHaveAttribute('data-value', '8');
     expect(Number(await readout(page, 'samples-per-second'))).toBeGreaterThan(0);
     // the canvas holds the image: its pixels are not all black
     const lit = await canvas.evaluate((c: HTMLCanvasElement) => {

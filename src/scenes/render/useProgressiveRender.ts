@@ -5,7 +5,8 @@
  * the pixels into the canvas (./pixels.ts). A run starts when what the image depends on changes,
  * runs only while `running` (the canvas on screen) and stops at `target` samples per pixel (spp, or
  * where a paused link holds it); a run stopped before its target starts again from its first pass
- * when it may run again (the passes are seeded by their number, so it redraws the same samples).
+ * when it may run again (the passes are seeded by their number, so it redraws the same samples),
+ * and one whose samples had all arrived when it stopped is shown as it is, not run again.
  * The GPU renderer's hook (./gpu/useGpuRender.ts) reports its progress in the same shape.
  */
 import { useEffect, useRef, useState, type RefObject } from 'react';
@@ -15,6 +16,7 @@ import { newAccumulation, type Accumulation } from '../../core/render/cpuRendere
 import { relMse } from '../../core/render/relMse';
 import { makeRenderWorker } from './jobs';
 import { copyPixels, imageStats, pixelMeans } from './pixels';
+import { frameDrawer } from './frameDrawer';
 import type { RenderModel } from './model';
 
 export interface RenderProgress {
@@ -79,6 +81,44 @@ function errorAgainst(acc: Accumulation, reference: Float64Array | null): { e: n
   return { e: n > 0 ? relMse(pixelMeans(acc.sum, acc.count), reference) : NaN, n };
 }
 
+/** Draws an accumulation's pixels into the canvas (reusing `image` when given); returns the image. */
+function showPixels(
+  canvas: HTMLCanvasElement | null,
+  acc: Accumulation,
+  image: ImageData | null,
+): ImageData | null {
+  const ctx = canvas?.getContext('2d');
+  if (!ctx) return image;
+  const out = image ?? ctx.createImageData(acc.width, acc.height);
+  copyPixels(acc.sum, acc.count, out.data);
+  ctx.putImageData(out, 0, 0);
+  return out;
+}
+
+/** The readouts of an accumulation of a run to `spp` samples per pixel. */
+function progressOf(
+  acc: Accumulation,
+  spp: number,
+  reference: Float64Array | null,
+  samplesPerSecond: number,
+): RenderProgress {
+  const stats = imageStats(acc.sum, acc.count);
+  const err = errorAgainst(acc, reference);
+  const done = stats.spp >= spp;
+  return {
+    spp: stats.spp,
+    statsSpp: stats.spp,
+    samplesPerSecond,
+    mean: stats.mean,
+    relMse: err.e,
+    relMsePixels: err.n,
+    done,
+    error: null,
+    means: done ? pixelMeans(acc.sum, acc.count) : null,
+    f32NaiveError: NaN,
+  };
+}
+
 export function useProgressiveRender(
   canvasRef: RefObject<HTMLCanvasElement | null>,
   m: RenderModel,
@@ -103,11 +143,16 @@ export function useProgressiveRender(
   }, [key, canvasRef]);
 
   useEffect(() => {
-    if (!running || target < 1 || finished.current === `${key}@${target}`) return;
-    // paused where the run already is (or beyond): hold the image
-    const held = accRef.current;
-    if (held && imageStats(held.sum, held.count).spp >= target) return;
+    if (!running || target < 1) return;
     const { m: model } = latest.current;
+    // finished, or paused where the run already is (or beyond): hold the image, and show it (the
+    // run may have stopped before the frame that would have drawn its last passes)
+    const held = accRef.current;
+    if (held && (finished.current === `${key}@${target}` || imageStats(held.sum, held.count).spp >= target)) {
+      showPixels(canvasRef.current, held, null);
+      setProgress((p) => progressOf(held, model.spp, latest.current.reference, p.samplesPerSecond));
+      return;
+    }
     const res = model.res;
     const acc = newAccumulation(res, res);
     accRef.current = acc;
@@ -115,38 +160,14 @@ export function useProgressiveRender(
     const tiles = splitRows(res, res, workerCount(globalThis.navigator?.hardwareConcurrency));
     const paths = tiles.map(() => 0);
     const start = performance.now();
-    let frame = 0;
-    // every band has posted its last pass (the image is whole, though perhaps not drawn yet)
-    let complete = false;
     let image: ImageData | null = null;
     const draw = () => {
-      frame = 0;
-      const ctx = canvasRef.current?.getContext('2d');
-      if (ctx) {
-        image ??= ctx.createImageData(res, res);
-        copyPixels(acc.sum, acc.count, image.data);
-        ctx.putImageData(image, 0, 0);
-      }
-      const stats = imageStats(acc.sum, acc.count);
-      const err = errorAgainst(acc, latest.current.reference);
+      image = showPixels(canvasRef.current, acc, image);
       const total = paths.reduce((a, b) => a + b, 0);
-      const done = stats.spp >= model.spp;
-      setProgress({
-        spp: stats.spp,
-        statsSpp: stats.spp,
-        samplesPerSecond: total / ((performance.now() - start) / 1000),
-        mean: stats.mean,
-        relMse: err.e,
-        relMsePixels: err.n,
-        done,
-        error: null,
-        means: done ? pixelMeans(acc.sum, acc.count) : null,
-        f32NaiveError: NaN,
-      });
+      const perSecond = total / ((performance.now() - start) / 1000);
+      setProgress(progressOf(acc, model.spp, latest.current.reference, perSecond));
     };
-    const schedule = () => {
-      if (!frame) frame = requestAnimationFrame(draw);
-    };
+    const drawer = frameDrawer(draw);
     const runs = tiles.map((tile, n) =>
       runWorkerTask(
         makeRenderWorker,
@@ -168,16 +189,15 @@ export function useProgressiveRender(
             if (!partial) return;
             mergeTile(acc, partial);
             paths[n] = partial.paths;
-            schedule();
+            drawer.schedule();
           },
         },
       ),
     );
     Promise.all(runs).then(
       () => {
-        complete = true;
         finished.current = `${key}@${target}`;
-        schedule();
+        drawer.complete();
       },
       (err: unknown) => {
         if (isCancelled(err)) return;
@@ -187,12 +207,7 @@ export function useProgressiveRender(
     );
     return () => {
       ctl.abort();
-      if (frame) {
-        cancelAnimationFrame(frame);
-        // a whole image whose last frame had not come yet (the canvas left the screen in between)
-        // is drawn now: a finished run is not started again, so this draw is its only one
-        if (complete) draw();
-      }
+      drawer.stop();
     };
   }, [key, running, target, canvasRef]);
 
