@@ -137,7 +137,16 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
     // estimator fails: tests/render/welchFold.test.tsx and tests/core/render/welchCompare.test.ts)
   });
 
-  await test.step('the GPU renderer: the default, its image agrees with the CPU’s within its noise, and a pause holds in the link', async () => {
+  await test.step('the GPU renderer: the default, a paused link holds where it says, its image agrees with the CPU’s within its noise, and a pause writes where the run is', async () => {
+    // a paused link followed anew (the lab mounts from the link alone): the GPU's image holds at t.
+    // (The shader compiles once, here, about 3 s on SwiftShader; the links below keep the image's
+    // size, so the lab keeps its GPU worker.)
+    await followLinkAnew(page, '#/render?res=32&spp=4096&play=0&t=5');
+    await expect(page.getByTestId('render-status')).toHaveText(
+      'Paused at 5 of 4096 samples per pixel (play=0, t=5).',
+      { timeout: 30_000 },
+    );
+    await expect(page.getByTestId('renderer')).toHaveAttribute('data-value', 'gpu');
     // the exam scene with mis-power: the image, then both renderers side by side
     await openScene(page, '#/render?res=32&spp=8&px=16,14&open=compare');
     await page.evaluate(() => window.scrollTo(0, 0));
@@ -171,7 +180,8 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
     });
     expect(Number(await readout(page, 'compare-pixel-gpu'))).toBe(1);
     expect(Number(await readout(page, 'compare-max-abs-z'))).toBe(0);
-    // pausing writes where the run is (t, samples per pixel) into the link; the link holds there
+    // pausing writes where the run is (t, samples per pixel) into the link: a paused link like the
+    // one followed at the start of this step
     await openScene(page, '#/render?res=32&spp=4096&open=settings');
     await page.evaluate(() => window.scrollTo(0, 0));
     await expect.poll(() => readout(page, 'spp').then(Number), { timeout: 15_000 }).toBeGreaterThan(2);
@@ -185,13 +195,9 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
       .toBe(true);
     const t = linkT();
     expect(t).toBeGreaterThan(2);
-    // the paused link followed anew: the lab mounts again from the link alone
-    await followLinkAnew(page);
     await expect(page.getByTestId('render-status')).toHaveText(
       `Paused at ${t} of 4096 samples per pixel (play=0, t=${t}).`,
-      { timeout: 30_000 },
     );
-    await expect(page.getByTestId('renderer')).toHaveAttribute('data-value', 'gpu');
     // where the shader cannot run (here: no OffscreenCanvas), the CPU draws and the page says why
     // (a fresh load, so that the script runs first; not a link followed on the open page, which
     // would start the shader again first)
