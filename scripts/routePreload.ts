@@ -9,8 +9,8 @@
  * so they download alongside the entry. When the shell then imports the scene, the browser has the
  * modules already (Vite's preload helper sees the links and does not add them again).
  *
- * The map (scene id → files) is computed from the bundle; files the entry loads anyway are left
- * out. Not used by the single-file build (everything is inline there). The hash is user input:
+ * The map (route → files: a scene's id, `practice`, `practice/q3`, `guide`) is computed from the
+ * bundle; files the entry loads anyway are left out. Not used by the single-file build (everything is inline there). The hash is user input:
  * only the map's own keys are looked up, and an unknown route preloads nothing.
  */
 import type { Plugin } from 'vite';
@@ -31,7 +31,7 @@ type BundleLike = Record<string, ChunkLike | { type: 'asset'; fileName: string }
 const SCENE_ENTRY = /[\\/]src[\\/]scenes[\\/]([a-z0-9-]+)[\\/]index\.ts$/;
 
 /**
- * The other lazily loaded routes, by their chunks' entry modules (`$1` in an id is the pattern's
+ * The other lazily loaded routes, by a module their chunk holds (`$1` in an id is the pattern's
  * first group). `with`: the other chunks the route's page loads together with this one (a
  * practice page is loaded by the practice chunk; a question page is the question page's code and
  * its question's generator, two chunks loaded at once). A `part` is loaded only with others and is
