@@ -22,8 +22,13 @@ export const scheduleMath: (el: Element | null, job: () => void) => () => void =
 /** Typeset everything still waiting, now (before printing). */
 export const flushMathForPrint: () => void = queue.flush;
 
-/** Characters of typeset HTML put into the page per frame, at most (one formula always goes). */
-export const HTML_PER_FRAME = 16_000;
+/**
+ * Characters of typeset HTML put into the page per frame, at most (one formula always goes): one
+ * or two formulas, whose parsing, style and layout take 10–20 ms on a 2-core desktop, under the
+ * 50 ms a phone (Lighthouse: 4× slower) may spend in one task. A whole derivation at once was
+ * 30–40 ms there.
+ */
+export const HTML_PER_FRAME = 6_000;
 
 const arrivals: { cost: number; insert: () => void }[] = [];
 let inserting = false;

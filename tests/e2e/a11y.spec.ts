@@ -230,5 +230,23 @@ test('formulas: the plain-text reading shown before KaTeX arrives is a named mat
     // the HTML rendering is hidden: a screen reader does not read the formula twice
     const html = await axNodeOf(page, '.katex-html');
     expect(html!.ignored).toBe(true);
+    // the hidden MathML is laid out in the page's font, at its formula's size, letters as written
+    // (not MathML's math font, script sizes and mathematical italics: a font search per letter
+    // where no math font is installed, for text nobody sees)
+    const hidden = await page.evaluate(() => {
+      const page = getComputedStyle(document.body).fontFamily;
+      const odd: string[] = [];
+      for (const copy of document.querySelectorAll('.katex-mathml')) {
+        const size = getComputedStyle(copy).fontSize;
+        for (const el of copy.querySelectorAll('*')) {
+          const s = getComputedStyle(el);
+          if (s.fontFamily !== page || s.fontSize !== size || s.textTransform !== 'none')
+            odd.push(`${el.tagName} ${s.fontFamily} ${s.fontSize} (formula ${size}) ${s.textTransform}`);
+        }
+      }
+      return { copies: document.querySelectorAll('.katex-mathml').length, odd: odd.slice(0, 5) };
+    });
+    expect(hidden.copies).toBeGreaterThan(0);
+    expect(hidden.odd).toEqual([]);
   });
 });
