@@ -94,6 +94,8 @@ for (const f of readdirSync(join(dist, 'assets'))) {
 // generator, not the other five's.
 const ROUTE_LIMITS = [
   ['practice', 20_000],
+  // the class results page: the page and its drop zone; the answer checker loads in its worker
+  ['results', 20_000],
   ...['q1', 'q2', 'q3', 'q4', 'q5', 'q6'].map((q) => [`practice/${q}`, 50_000]),
 ];
 const preloadMap = readPreloadMap(html);

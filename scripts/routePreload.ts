@@ -47,6 +47,9 @@ const OTHER_ROUTES: Array<{ re: RegExp; id: string; with?: string[]; part?: bool
   },
   { re: /[\\/]src[\\/]practice[\\/]Sheet\.tsx$/, id: 'practice/sheet', with: ['practice'] },
   { re: /[\\/]src[\\/]guide[\\/]Guide\.tsx$/, id: 'guide' },
+  { re: /[\\/]src[\\/]app[\\/]AccessibilityPage\.tsx$/, id: 'accessibility' },
+  { re: /[\\/]src[\\/]deck[\\/]DeckPage\.tsx$/, id: 'deck' },
+  { re: /[\\/]src[\\/]results[\\/]ResultsRoute\.tsx$/, id: 'results' },
 ];
 
 /**

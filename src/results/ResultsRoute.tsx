@@ -6,14 +6,15 @@
  * per student, and CSV exports. Everything happens in the page: no file or result is sent anywhere.
  */
 import { useEffect, useRef, useState, type DragEvent } from 'react';
-import { questionInfo } from '../practice/questions';
+import { questionMeta } from '../practice/questionList';
 import { QUESTION_IDS } from '../practice/model';
-import { studentsCsv, type Collation, type InputFile, type QuestionStats } from './collate';
+import type { Collation, InputFile, QuestionStats } from './collate';
 import { CollationFailed, ResultsChecker } from './jobs';
 import { isCancelled } from '../workers/run';
 import { downloadFile } from '../ui/download';
 import { ScrollBox } from '../ui/ScrollBox';
-import { csvText } from './csv';
+import { afterPaint } from '../ui/afterPaint';
+import { csvText, studentsCsv } from './csv';
 import { addBatch } from './batches';
 import './results.css';
 
@@ -48,17 +49,25 @@ export default function ResultsRoute() {
   const checker = useRef<ResultsChecker | null>(null);
   useEffect(() => {
     document.title = 'Class results — Render Math Lab';
-    // the worker loads the answer checker now, so collating needs no request later
+    // the worker loads the answer checker once the page is painted (its download would otherwise
+    // hold up the first paint on a slow connection), so collating needs no request later
     const c = new ResultsChecker();
     checker.current = c;
-    c.warm().then(
-      () => setReady(true),
-      (e: unknown) =>
-        // (a page closed before the checker was ready ended its worker: nothing to say)
-        isCancelled(e) ||
-        setProblems(['The answer checker could not be loaded; reload the page while online once.']),
-    );
-    return () => c.dispose();
+    let live = true;
+    void afterPaint().then(() => {
+      if (!live) return;
+      c.warm().then(
+        () => setReady(true),
+        (e: unknown) =>
+          // (a page closed before the checker was ready ended its worker: nothing to say)
+          isCancelled(e) ||
+          setProblems(['The answer checker could not be loaded; reload the page while online once.']),
+      );
+    });
+    return () => {
+      live = false;
+      c.dispose();
+    };
   }, []);
 
   const take = async (list: FileList | File[] | null) => {
@@ -230,7 +239,7 @@ function Report({ c }: { c: Collation }) {
                 <th scope="col">Attempts</th>
                 {QUESTION_IDS.map((q) => (
                   <th key={q} scope="col">
-                    Q{questionInfo(q).n}
+                    Q{questionMeta(q).n}
                   </th>
                 ))}
               </tr>
@@ -265,7 +274,7 @@ function Report({ c }: { c: Collation }) {
 }
 
 function QuestionBlock({ q }: { q: QuestionStats }) {
-  const info = questionInfo(q.question);
+  const info = questionMeta(q.question);
   const mistakes = Object.entries(q.mistakes).sort((a, b) => b[1] - a[1] || (a[0] < b[0] ? -1 : 1));
   return (
     <section

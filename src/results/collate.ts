@@ -8,7 +8,6 @@
 import { QUESTION_IDS, type QuestionId } from '../practice/model';
 import { gradeAttempt, mistakeOf, type GradedAttempt } from '../lms/grade';
 import { parseResultsFile, type Attempt } from './format';
-import { csvText } from './csv';
 
 export interface InputFile {
   name: string;
@@ -153,24 +152,4 @@ export async function collate(files: readonly InputFile[], onProgress?: CollateP
     return { ...s, students: bests.length, meanBest: bests.length ? sum / bests.length : 0 };
   });
   return { files: files.length, attempts, students, questions, problems };
-}
-
-/** One row per student: name, file, attempts, then each question's best score and max. */
-export function studentsCsv(c: Collation): string {
-  const head: (string | number)[] = [
-    'student',
-    'file',
-    'attempts',
-    ...QUESTION_IDS.flatMap((q) => [`${q} score`, `${q} max`]),
-  ];
-  const rows = c.students.map((s): (string | number)[] => [
-    s.student,
-    s.file,
-    s.attempts,
-    ...QUESTION_IDS.flatMap((q): (string | number)[] => {
-      const b = s.best[q];
-      return b ? [b.score, b.max] : ['', ''];
-    }),
-  ]);
-  return csvText([head, ...rows]);
 }

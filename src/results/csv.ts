@@ -5,6 +5,9 @@
  * Excel.
  */
 
+import type { Collation } from './collate';
+import { QUESTION_IDS } from '../practice/model';
+
 const NUMBER = /^-?\d+(\.\d+)?(e[+-]?\d+)?$/i;
 /** A formula's first character, at the start of a cell or after a separator some reader splits on. */
 const FORMULA_START = /(^|[;,\t\r\n])(\s*)([=+\-@\t\r|])/g;
@@ -20,4 +23,24 @@ export function csvCell(x: string | number): string {
 /** Rows as CSV text (CRLF line ends, a leading byte-order mark). */
 export function csvText(rows: readonly (readonly (string | number)[])[]): string {
   return '\uFEFF' + rows.map((r) => r.map(csvCell).join(',')).join('\r\n') + '\r\n';
+}
+
+/** One row per student: name, file, attempts, then each question's best score and max. */
+export function studentsCsv(c: Collation): string {
+  const head: (string | number)[] = [
+    'student',
+    'file',
+    'attempts',
+    ...QUESTION_IDS.flatMap((q) => [`${q} score`, `${q} max`]),
+  ];
+  const rows = c.students.map((s): (string | number)[] => [
+    s.student,
+    s.file,
+    s.attempts,
+    ...QUESTION_IDS.flatMap((q): (string | number)[] => {
+      const b = s.best[q];
+      return b ? [b.score, b.max] : ['', ''];
+    }),
+  ]);
+  return csvText([head, ...rows]);
 }

@@ -1,5 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { collate, studentsCsv } from '../../src/results/collate';
+import { collate } from '../../src/results/collate';
+import { studentsCsv } from '../../src/results/csv';
 import { parseResultsFile, RESULTS_FORMAT } from '../../src/results/format';
 import { variantOf } from '../../src/lms/grade';
 import { expectedText } from '../../src/practice/check';

@@ -1,7 +1,7 @@
 /** #/results: CSV safe in any spreadsheet, students counted once, each file named as it is checked. */
 import { describe, expect, it } from 'vitest';
-import { csvCell, csvText } from '../../src/results/csv';
-import { collate, studentsCsv } from '../../src/results/collate';
+import { csvCell, csvText, studentsCsv } from '../../src/results/csv';
+import { collate } from '../../src/results/collate';
 import { addBatch } from '../../src/results/batches';
 
 const file = (student: string, seeds: number[]) =>
