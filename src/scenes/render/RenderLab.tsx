@@ -6,7 +6,7 @@
  * image and the inspector come first; the settings, the comparison of the two renderers and the
  * explanations are folded below them.
  */
-import { lazy, useCallback, useEffect, useMemo, useRef, useState, type MouseEvent } from 'react';
+import { lazy, memo, useCallback, useEffect, useMemo, useRef, useState, type MouseEvent } from 'react';
 import type { SceneProps } from '../../kit/scene';
 import { Notice, Readout } from '../../ui';
 import { observeVisibility } from '../../ui/useInView';
@@ -15,11 +15,11 @@ import { buildScene } from '../../core/render/scene';
 import { formatCount, formatNumber } from '../../core/format';
 import { makeRenderWorker } from './jobs';
 import { inspectArgs, referenceArgs } from './jobArgs';
-import { buildRenderModel } from './model';
-import { describeImage } from './describe';
+import { buildRenderModel, type RenderModel } from './model';
+import { describeImage, regionsOf } from './describe';
 import { useProgressiveRender } from './useProgressiveRender';
 import { useGpuRender } from './gpu/useGpuRender';
-import { gpuSupport, softwareName } from './gpu/gpuRenderer';
+import { gpuSupport, softwareName, type GpuSupport } from './gpu/gpuRenderer';
 import { chooseRenderer } from './gpu/fallback';
 import { schema, type RenderParams } from './params';
 import { Inspector } from './view/Inspector';
@@ -83,9 +83,13 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
   const progress = onGpu ? gpuProgress : cpuProgress;
   const software = gpuProgress.rendererName ? softwareName(gpuProgress.rendererName) : null;
   // pausing writes where the run is into the link (t, in samples per pixel), as every timeline does
+  // (the count is read when the pause happens, so the callback, and the folds given it, stay the
+  // same from one pass of the render to the next)
+  const sppNow = useRef(progress.spp);
+  sppNow.current = progress.spp;
   const pause = useCallback(
-    (p: Partial<RenderParams>) => setParams(p.play === false ? { ...p, t: progress.spp } : p),
-    [setParams, progress.spp],
+    (p: Partial<RenderParams>) => setParams(p.play === false ? { ...p, t: sppNow.current } : p),
+    [setParams],
   );
   const iArgs = inspectArgs(m);
   // (without a pixel the job is disabled; its arguments are then a placeholder)
@@ -102,7 +106,8 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
     const px = pixelAt(e.clientX - box.left, e.clientY - box.top, box.width, box.height, m.res);
     if (px) set({ px });
   };
-  const description = describeImage(scene, m.view, m.res, { spp: progress.statsSpp, mean: progress.mean });
+  const regions = useMemo(() => regionsOf(scene, m.view, m.res), [scene, m.view, m.res]);
+  const description = describeImage(scene, regions, m.res, { spp: progress.statsSpp, mean: progress.mean });
   // once the run is done: the pixels shown, measured against the reference (FLIP, PNG downloads)
   const measured = useMemo(() => {
     const means = progress.means;
@@ -208,6 +213,31 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
           <Inspector m={m} result={inspection} pending={inspect.running || (iArgs !== null && !inspection)} />
         </section>
       </div>
+      <LabFolds m={m} params={params} pause={pause} set={set} support={support} />
+      <About />
+    </div>
+  );
+}
+
+/**
+ * The folds below the image. Memoised: a pass of the render re-renders the image's figure and
+ * readouts, not these (their props change only with the settings).
+ */
+const LabFolds = memo(function LabFolds({
+  m,
+  params,
+  pause,
+  set,
+  support,
+}: {
+  m: RenderModel;
+  params: RenderParams;
+  pause: (p: Partial<RenderParams>) => void;
+  set: (p: Partial<RenderParams>) => void;
+  support: GpuSupport;
+}) {
+  return (
+    <>
       <Fold name="settings" summary="Settings" testId="render-settings" className="render-fold">
         <Controls params={params} set={pause} />
       </Fold>
@@ -239,7 +269,6 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
       >
         <Welch m={m} vs={params.vs} onVs={(vs) => set({ vs })} />
       </Fold>
-      <About />
-    </div>
+    </>
   );
-}
+});

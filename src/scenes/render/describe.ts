@@ -49,14 +49,16 @@ export function regionsOf(scene: RenderScene, view: View, res: number): HitKind[
   return out;
 }
 
-/** One paragraph describing the image. */
+/**
+ * One paragraph describing the image: `regions` is {@link regionsOf} the scene and view (it traces
+ * rays, so a page computes it once per view, not once per pass of the render).
+ */
 export function describeImage(
   scene: RenderScene,
-  view: View,
+  regions: HitKind[][],
   res: number,
   stats: { spp: number; mean: number },
 ): string {
-  const regions = regionsOf(scene, view, res);
   const name = (k: HitKind) => (k === 'sphere' && !scene.sphere?.texture ? 'the sphere' : NAMES[k]);
   const where = regions
     .map((ks, n) => `${ROWS[Math.floor(n / 3)]} ${COLS[n % 3]}: ${ks.map(name).join(' and ')}`)

@@ -44,15 +44,21 @@ describe('the image in words', () => {
   });
 
   it('gives the size, the mean brightness and the samples per pixel', () => {
-    const t = describeImage(examScene(), defaultView('exam'), 64, { spp: 3, mean: 0.25 });
+    const t = describeImage(examScene(), regionsOf(examScene(), defaultView('exam'), 64), 64, {
+      spp: 3,
+      mean: 0.25,
+    });
     expect(t).toMatch(/^A 64 × 64 image of the exam scene\. Top left: /);
     expect(t).toContain('middle centre: the textured sphere');
     expect(t).toContain('a light');
     expect(t).toContain('Mean brightness 0.25 (linear radiance) after 3 samples per pixel.');
-    expect(describeImage(examScene(), defaultView('exam'), 64, { spp: 0, mean: NaN })).toContain(
-      'No sample has arrived yet.',
-    );
-    const furnace = describeImage(furnaceScene(), defaultView('furnace'), 64, { spp: 1, mean: 1 });
+    expect(
+      describeImage(examScene(), regionsOf(examScene(), defaultView('exam'), 64), 64, { spp: 0, mean: NaN }),
+    ).toContain('No sample has arrived yet.');
+    const furnace = describeImage(furnaceScene(), regionsOf(furnaceScene(), defaultView('furnace'), 64), 64, {
+      spp: 1,
+      mean: 1,
+    });
     expect(furnace).toContain('middle centre: the sphere;');
   });
 
