@@ -7,6 +7,7 @@
  * The same functions back the scenes' "run the χ² test" buttons and the unit tests.
  */
 import gammainc from '@stdlib/math-base-special-gammainc';
+import { sidakAlpha } from './sidak';
 
 /**
  * Upper tail of the χ² distribution with `dof` degrees of freedom: P[X ≥ x] = Q(dof/2, x/2), the
@@ -26,19 +27,6 @@ export function chi2UpperTail(x: number, dof: number): number {
   // @stdlib signature: gammainc(x, a, regularized, upper)
   const q = gammainc(x / 2, dof / 2, true, true);
   return Math.min(1, Math.max(0, q));
-}
-
-/**
- * Šidák-corrected per-test significance: when m independent tests are run and we want the chance
- * of any false rejection to be α overall, each test uses 1 − (1 − α)^(1/m).
- * Computed as −expm1(log1p(−α)/m), exact for tiny α and large m.
- * Domain: α ∈ [0, 1], m ≥ 1 (m < 1 is treated as 1). Source: Šidák (1967), JASA 62(318).
- */
-export function sidakAlpha(alpha: number, m: number): number {
-  if (!(alpha > 0)) return 0;
-  if (alpha >= 1) return 1;
-  const mm = m >= 1 ? m : 1;
-  return -Math.expm1(Math.log1p(-alpha) / mm);
 }
 
 /** Options of {@link chi2Test}. */

@@ -1,4 +1,5 @@
 export * from './chi2';
+export * from './sidak';
 export * from './quadrature';
 export * from './hemisphereChi2';
 export * from './integrate1d';

@@ -9,10 +9,10 @@
  *            ν = (s₁²/N₁ + s₂²/N₂)² / ((s₁²/N₁)²/(N₁ − 1) + (s₂²/N₂)²/(N₂ − 1))  (Welch–Satterthwaite);
  *
  * the two-sided p-value is P[|T_ν| ≥ |t|]. The hypothesis "unbiased" is rejected when p < α, with α
- * Šidák-corrected when several tests run together (./chi2 sidakAlpha), so that the chance of any
+ * Šidák-corrected when several tests run together (./sidak), so that the chance of any
  * false rejection over the whole batch is the stated α.
  */
-import { sidakAlpha } from './chi2';
+import { sidakAlpha } from './sidak';
 import { studentTTwoSided } from './studentT';
 
 /** Sample statistics of one estimator: mean, unbiased sample variance s² of the terms, count N. */

@@ -6,7 +6,7 @@
  * 1 − (1 − α)^(1/m) over the m pixels tested, so the chance of a false alarm anywhere in an
  * unbiased image is α.
  */
-import { sidakAlpha } from './chi2';
+import { sidakAlpha } from './sidak';
 import { welchStatistic } from './ttest';
 import { pixelMeanVariance } from '../image/stdDevImage';
 
