@@ -41,10 +41,14 @@ function inlineWorkers(): Plugin {
 const treeshake = {
   moduleSideEffects: [
     { test: /[\\/]node_modules[\\/]@stdlib[\\/]/, sideEffects: false },
-    // The app's two re-export modules (the views' door to the formatter, the random barrel): with
-    // side effects assumed, each became a chunk of its own that only imports another (29 bytes, one
-    // more request before a page's first paint).
-    { test: /[\\/]src[\\/](ui[\\/]format|core[\\/]random[\\/]index)\.ts$/, sideEffects: false },
+    // The app's re-export modules (the views' door to the formatter, the core's barrels): with side
+    // effects assumed, each kept every module it re-exports in the graph of whatever imported one
+    // name from it, and some became chunks of their own that only import others (one more request
+    // each before a page's first paint).
+    {
+      test: /[\\/]src[\\/](ui[\\/]format|core[\\/](estimators|geometry|lights|random|sampling|texture|verify)[\\/]index)\.ts$/,
+      sideEffects: false,
+    },
   ],
 };
 
