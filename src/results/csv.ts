@@ -2,7 +2,8 @@
  * CSV for spreadsheets: every cell that a spreadsheet could read as a formula is made text, for a
  * comma-separated reader and for one that splits on semicolons or tabs (a `Ada;=3+3` cell is two
  * cells there), and the text starts with a byte-order mark so that accented names open right in
- * Excel.
+ * Excel. Also the class table the results page downloads (one row per student), here rather than
+ * beside the collation so that the page does not load the grading code to offer it.
  */
 
 import type { Collation } from './collate';
