@@ -4,14 +4,15 @@
  * A scene's code is a lazy chunk that the shell imports once React has rendered, so on a phone its
  * download waited for the entry's download, evaluation and first render (a chain of round trips
  * before the scene's first paint, Lighthouse's LCP). This writes into index.html a tiny inline
- * script that reads the hash route and adds `<link rel="modulepreload">` for the route's scene
- * chunk (or the practice page's, or the teacher's guide's) and every chunk it imports statically (and `<link rel="preload" as="style">` for its CSS),
- * so they download alongside the entry. When the shell then imports the scene, the browser has the
+ * script that reads the hash route and adds `<link rel="modulepreload">` for the route's chunk (a
+ * scene's, a practice or question page's, the guide's, …) and every chunk it imports statically
+ * (and `<link rel="preload" as="style">` for its CSS), so they download alongside the entry. When the shell then imports the scene, the browser has the
  * modules already (Vite's preload helper sees the links and does not add them again).
  *
- * The map (route → files: a scene's id, `practice`, `practice/q3`, `guide`) is computed from the
- * bundle; files the entry loads anyway are left out. Not used by the single-file build (everything is inline there). The hash is user input:
- * only the map's own keys are looked up, and an unknown route preloads nothing.
+ * The map (route → files: a scene's id, `practice`, `practice/q3`, `guide`, `results`, …) is
+ * computed from the bundle; files the entry loads anyway are left out. Not used by the single-file
+ * build (everything is inline there). The hash is user input: only the map's own keys are looked
+ * up, and an unknown route preloads nothing.
  */
 import type { Plugin } from 'vite';
 

@@ -114,7 +114,6 @@ test('a scene: embed=1, part= and next/previous, play=1, Copy link and the paste
   context,
 }) => {
   test.setTimeout(180_000);
-
   await test.step('embed=1 hides the site chrome and links back to the full app', async () => {
     await openScene(page, '#/texture?embed=1');
     await expect(page.locator('.site-header')).toHaveCount(0);
