@@ -5,7 +5,8 @@
  * simulates for LCP, each node with its simulated start–end (ms), the slowest end being the LCP.
  * Network nodes: every request that ended before the observed LCP (so anything started before the
  * page's largest paint costs LCP, related or not); CPU nodes: the observed task (obs@ms, duration
- * unthrottled; simulated ×4). A diagnostic, not a test. BOTH=1 also prints the optimistic graph.
+ * unthrottled; simulated ×4). A diagnostic, not a test. BOTH=1 also prints the optimistic graph;
+ * FCP=1 prints FCP's graph instead of LCP's.
  *
  *   node scripts/lantern-lcp.mjs [dist] ['#/hemisphere'] [port=4432] [save.json]
  *   node scripts/lantern-lcp.mjs save.json '#/hemisphere'     (re-analyse saved artifacts)
@@ -100,7 +101,7 @@ console.log(
 );
 const short = (u) => String(u).replace(/^.*\/app\//, '');
 for (const which of process.env.BOTH ? ['optimistic', 'pessimistic'] : ['pessimistic']) {
-  const est = res[`${which}Estimate`];
+  const est = (process.env.FCP ? fcp : res)[`${which}Estimate`];
   const rows = [...est.nodeTimings.entries()].sort((a, b) => a[1].startTime - b[1].startTime);
   console.log(`-- ${which}: ${rows.length} nodes`);
   for (const [n, t] of rows) {

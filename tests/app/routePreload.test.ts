@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { runInNewContext } from 'node:vm';
-import { lateManifestLink, preloadScript, scenePreloadMap } from '../../scripts/routePreload';
+import { lateManifestLink, preloadScript, routePreload, scenePreloadMap } from '../../scripts/routePreload';
 // @ts-expect-error plain ESM helper without types
 import { readPreloadMap } from '../../scripts/preloadMap.mjs';
 
@@ -202,6 +202,31 @@ describe('the inline preload script', () => {
   it('cannot be broken out of by file names (no raw "<" in the script)', () => {
     const s = preloadScript({ x: { js: ['a</script><script>alert(1)</script>.js'], css: [] } }, './');
     expect(s).not.toContain('<');
+  });
+});
+
+describe('routePreload: where the script goes in index.html', () => {
+  const hook = routePreload().transformIndexHtml as {
+    handler: (html: string, ctx: { bundle?: unknown }) => string;
+  };
+  it("goes after the entry's script and module preloads (the entry is requested first) and before the stylesheet", () => {
+    const html =
+      '<head><title>t</title>\n    <script type="module" crossorigin src="./assets/index.js"></script>\n' +
+      '    <link rel="modulepreload" crossorigin href="./assets/runtime.js">\n' +
+      '    <link rel="stylesheet" crossorigin href="./assets/index.css"></head><body></body>';
+    const out = hook.handler(html, { bundle });
+    const script = out.indexOf('<script>(function');
+    expect(script).toBeGreaterThan(out.indexOf('<script type="module"'));
+    expect(script).toBeGreaterThan(out.indexOf('rel="modulepreload"'));
+    expect(script).toBeLessThan(out.indexOf('rel="stylesheet"'));
+    expect(out.replace(/<script>\(function.*?<\/script>\n {4}/, '')).toBe(html);
+  });
+  it('goes at the end of the head when there is no stylesheet, and not at all without a bundle', () => {
+    const html = '<head><script type="module" src="./assets/index.js"></script></head><body></body>';
+    const out = hook.handler(html, { bundle });
+    expect(out.indexOf('<script>(function')).toBeGreaterThan(out.indexOf('<script type="module"'));
+    expect(out.indexOf('<script>(function')).toBeLessThan(out.indexOf('</head>'));
+    expect(hook.handler(html, {})).toBe(html);
   });
 });
 

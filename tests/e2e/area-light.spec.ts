@@ -17,7 +17,7 @@ import { schema } from '../../src/scenes/area-light/params';
 import { animationFrame, animationLength, sampleRun } from '../../src/scenes/area-light/animation';
 import { buildModel, estimateOne, TIMING_COUNTS } from '../../src/scenes/area-light/model';
 import { STRATEGIES } from '../../src/scenes/area-light/strategies';
-import { SYNC_MAX } from '../../src/scenes/area-light/view/StrategyTable';
+import { SYNC_MAX } from '../../src/scenes/area-light/model';
 import type { LightStrategy } from '../../src/core/lights';
 import { decodePng, rgbFromRgba8 } from '../../src/core/image/png';
 import { flipErrorMap } from '../../src/core/image/flip';

@@ -102,6 +102,37 @@ test('home: #/ downloads no heavy library and lists the six questions; present=1
     await expect(page.locator('html')).toHaveAttribute('data-theme', 'light');
   });
 
+  await test.step("before any script loads, the page is in the link's theme and classroom type", async () => {
+    // scripts from the network blocked: only index.html's own (inline) ones run
+    const bare = await page.context().newPage();
+    await bare.route(/\.js(\?|$)/, (r) => r.abort());
+    await bare.goto('./#/area-light?theme=dark&present=1');
+    await expect(bare.locator('html')).toHaveAttribute('data-theme', 'dark');
+    await expect(bare.locator('html')).toHaveClass(/present/);
+    const look = await bare.evaluate(() => ({
+      bg: getComputedStyle(document.body).backgroundColor,
+      rootSize: getComputedStyle(document.documentElement).fontSize,
+    }));
+    // the dark theme's background (no light frame before the app's code), classroom type
+    expect(look).toEqual({ bg: 'rgb(21, 23, 27)', rootSize: '22px' });
+    await bare.close();
+  });
+
+  await test.step('the shell stylesheet is inline: a scene and its lazy folds never download it', async () => {
+    const css: string[] = [];
+    const listen = (r: { url(): string }) => {
+      if (/\/index-[\w-]+\.css$/.test(r.url())) css.push(r.url());
+    };
+    page.on('request', listen);
+    await openScene(page, '#/area-light?open=convergence');
+    await expect(page.locator('.fold-loading')).toHaveCount(0);
+    page.off('request', listen);
+    expect(css).toEqual([]);
+    // and its rules apply: the header's colours come from it
+    const bg = await page.locator('.site-header').evaluate((h) => getComputedStyle(h).backgroundColor);
+    expect(bg).not.toBe('rgba(0, 0, 0, 0)');
+  });
+
   await test.step('an unknown route says so instead of showing a blank page', async () => {
     await openScene(page, '#/no-such-scene?x=1');
     await expect(page.getByRole('heading', { name: 'Page not found' })).toBeVisible();

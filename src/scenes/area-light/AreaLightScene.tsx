@@ -5,7 +5,7 @@
  * against the analytic reference (Lambert's formula). All figures come from ./model over the core;
  * this file holds the scene's state and layout, the exam parts are in exam/, the figures in view/.
  */
-import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
+import { lazy, useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import type { SceneProps } from '../../kit/scene';
 import { ExamQuestion, ExploreFurther, Notice, Revealed, SceneLayout, useTimeline } from '../../ui';
 import { prefersReducedMotion } from '../../ui/timeline';
@@ -13,7 +13,7 @@ import { useWorkerJob } from '../../workers';
 import { Fold } from '../../ui/Fold';
 import { makeWorker } from './jobs';
 import { animationLength } from './animation';
-import { buildModel, targetValue, type StrategyEstimate } from './model';
+import { buildModel, SYNC_MAX, targetValue, type StrategyEstimate } from './model';
 import { patchModel } from './patch';
 import { floorJob, floorPassAt } from './floor';
 import { schema, type AreaLightParams } from './params';
@@ -22,12 +22,16 @@ import { Q6b } from './exam/Q6b';
 import { Answer6c, Q6c } from './exam/Q6c';
 import { Controls } from './view/Controls';
 import { ExamConfig } from './view/ExamConfig';
-import { ConvergencePanel, TimingPanel } from './view/Explore';
-import { StrategyTable, SYNC_MAX } from './view/StrategyTable';
-import { FloorPanel } from './view/FloorImages';
-import { RunningData } from './view/RunningData';
 import { Legend, Stage } from './view/Stage';
 import './area-light.css';
+
+// What the folds hold is loaded when a fold is first opened (each fold's Suspense says "Loading…"),
+// not with the page: the first screen is the exam and the stage.
+const RunningData = lazy(() => import('./view/RunningData').then((m) => ({ default: m.RunningData })));
+const StrategyTable = lazy(() => import('./view/StrategyTable').then((m) => ({ default: m.StrategyTable })));
+const ConvergencePanel = lazy(() => import('./view/Explore').then((m) => ({ default: m.ConvergencePanel })));
+const TimingPanel = lazy(() => import('./view/Explore').then((m) => ({ default: m.TimingPanel })));
+const FloorPanel = lazy(() => import('./view/FloorImages').then((m) => ({ default: m.FloorPanel })));
 
 type Schema = typeof schema;
 

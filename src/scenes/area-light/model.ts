@@ -286,6 +286,9 @@ export function makeOccluder(p: Vec3, lc: Vec3, w: number, h: number): RectLight
 }
 
 /** One strategy's estimate of L_o with its standard error. */
+/** Largest n per strategy estimated on the main thread (above it, in the scene's worker). */
+export const SYNC_MAX = 65536;
+
 export interface StrategyEstimate {
   strategy: LightStrategy;
   estimate: number;

@@ -69,7 +69,8 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
 
   const refJob = useWorkerJob(makeRenderWorker, 'reference', referenceArgs(m), { delayMs: 150 });
   const reference = refJob.result?.values ?? null;
-  const cpuProgress = useProgressiveRender(cpuCanvas, m, !onGpu && visible, m.target, reference);
+  const cpuDrawn = useRef(0);
+  const cpuProgress = useProgressiveRender(cpuCanvas, m, !onGpu && visible, m.target, reference, cpuDrawn);
   // a pause that reached the GPU's worker a few frames late: the link says where the image holds
   const paused = useRef({ play: params.play, target: m.target });
   paused.current = { play: params.play, target: m.target };
@@ -82,13 +83,14 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
   const gpuProgress = useGpuRender(gpuCanvas, m, onGpu, visible, m.target, reference, setFailure, onHeld);
   const progress = onGpu ? gpuProgress : cpuProgress;
   const software = gpuProgress.rendererName ? softwareName(gpuProgress.rendererName) : null;
-  // pausing writes where the run is into the link (t, in samples per pixel), as every timeline does
-  // (the count is read when the pause happens, so the callback, and the folds given it, stay the
-  // same from one pass of the render to the next)
-  const sppNow = useRef(progress.spp);
-  sppNow.current = progress.spp;
+  // pausing writes where the run is into the link (t, in samples per pixel), as every timeline does:
+  // the samples the canvas shows, which the CPU's readouts may trail by a few passes (the count is
+  // read when the pause happens, so the callback, and the folds given it, stay the same from one
+  // pass of the render to the next)
+  const sppNow = useRef((): number => 0);
+  sppNow.current = () => (onGpu ? gpuProgress.spp : cpuDrawn.current);
   const pause = useCallback(
-    (p: Partial<RenderParams>) => setParams(p.play === false ? { ...p, t: sppNow.current } : p),
+    (p: Partial<RenderParams>) => setParams(p.play === false ? { ...p, t: sppNow.current() } : p),
     [setParams],
   );
   const iArgs = inspectArgs(m);

@@ -51,3 +51,46 @@ export function frameDrawer(draw: () => void, clock: FrameClock = ANIMATION_FRAM
     },
   };
 }
+
+/**
+ * The readouts under the image (samples per pixel, mean, relMSE, speed) are React state: each
+ * update re-renders them and costs main-thread time that the canvas, drawn every frame, does not.
+ * `show` runs at most once per `intervalMs` while a run goes on; `last()` marks the run whole (the
+ * next `frame()` shows, whatever the time); `flush()` shows what a skipped frame left unshown (a run
+ * stopped between two readouts).
+ */
+export interface ReadoutGate {
+  /** A frame was drawn: show the readouts if the interval has passed or the run is whole. */
+  frame: () => void;
+  /** The run is whole: the next frame shows its readouts. */
+  last: () => void;
+  /** Show now if a frame has been drawn since the readouts were last shown. */
+  flush: () => void;
+}
+
+export function readoutGate(
+  show: () => void,
+  intervalMs: number,
+  now: () => number = () => performance.now(),
+): ReadoutGate {
+  let shownAt = -Infinity;
+  let stale = false;
+  let whole = false;
+  const fire = () => {
+    stale = false;
+    shownAt = now();
+    show();
+  };
+  return {
+    frame: () => {
+      if (whole || now() - shownAt >= intervalMs) fire();
+      else stale = true;
+    },
+    last: () => {
+      whole = true;
+    },
+    flush: () => {
+      if (stale) fire();
+    },
+  };
+}

@@ -16,7 +16,7 @@ import { newAccumulation, type Accumulation } from '../../core/render/cpuRendere
 import { relMse } from '../../core/render/relMse';
 import { makeRenderWorker } from './jobs';
 import { copyPixels, imageStats, pixelMeans } from './pixels';
-import { frameDrawer } from './frameDrawer';
+import { frameDrawer, readoutGate } from './frameDrawer';
 import type { RenderModel } from './model';
 
 export interface RenderProgress {
@@ -53,6 +53,9 @@ export const EMPTY_PROGRESS: RenderProgress = {
   means: null,
   f32NaiveError: NaN,
 };
+
+/** The least time between two updates of the readouts while a run goes on (ms). */
+const READOUT_MS = 250;
 
 /** Workers per render: the cores but one (the page's), at least one, at most four. */
 export function workerCount(cores: number | undefined): number {
@@ -125,6 +128,8 @@ export function useProgressiveRender(
   running: boolean,
   target: number,
   reference: Float64Array | null,
+  /** Set to the samples per pixel the canvas shows (the readouts may be up to READOUT_MS behind it). */
+  drawnSpp?: { current: number },
 ): RenderProgress {
   const key = renderKey(m);
   const [progress, setProgress] = useState<RenderProgress>(EMPTY_PROGRESS);
@@ -137,10 +142,11 @@ export function useProgressiveRender(
   useEffect(() => {
     finished.current = null;
     accRef.current = null;
+    if (drawnSpp) drawnSpp.current = 0;
     setProgress(EMPTY_PROGRESS);
     const c = canvasRef.current;
     c?.getContext('2d')?.clearRect(0, 0, c.width, c.height);
-  }, [key, canvasRef]);
+  }, [key, canvasRef, drawnSpp]);
 
   useEffect(() => {
     if (!running || target < 1) return;
@@ -150,6 +156,7 @@ export function useProgressiveRender(
     const held = accRef.current;
     if (held && (finished.current === `${key}@${target}` || imageStats(held.sum, held.count).spp >= target)) {
       showPixels(canvasRef.current, held, null);
+      if (drawnSpp) drawnSpp.current = imageStats(held.sum, held.count).spp;
       setProgress((p) => progressOf(held, model.spp, latest.current.reference, p.samplesPerSecond));
       return;
     }
@@ -159,13 +166,19 @@ export function useProgressiveRender(
     const ctl = new AbortController();
     const tiles = splitRows(res, res, workerCount(globalThis.navigator?.hardwareConcurrency));
     const paths = tiles.map(() => 0);
+    const tileSpp = tiles.map(() => 0);
     const start = performance.now();
     let image: ImageData | null = null;
-    const draw = () => {
-      image = showPixels(canvasRef.current, acc, image);
+    // the canvas every frame, the readouts (a React render) 4 times a second and once whole
+    const readouts = readoutGate(() => {
       const total = paths.reduce((a, b) => a + b, 0);
       const perSecond = total / ((performance.now() - start) / 1000);
       setProgress(progressOf(acc, model.spp, latest.current.reference, perSecond));
+    }, READOUT_MS);
+    const draw = () => {
+      image = showPixels(canvasRef.current, acc, image);
+      if (drawnSpp) drawnSpp.current = Math.min(...tileSpp);
+      readouts.frame();
     };
     const drawer = frameDrawer(draw);
     const runs = tiles.map((tile, n) =>
@@ -189,6 +202,7 @@ export function useProgressiveRender(
             if (!partial) return;
             mergeTile(acc, partial);
             paths[n] = partial.paths;
+            tileSpp[n] = partial.spp;
             drawer.schedule();
           },
         },
@@ -197,6 +211,7 @@ export function useProgressiveRender(
     Promise.all(runs).then(
       () => {
         finished.current = `${key}@${target}`;
+        readouts.last();
         drawer.complete();
       },
       (err: unknown) => {
@@ -208,8 +223,10 @@ export function useProgressiveRender(
     return () => {
       ctl.abort();
       drawer.stop();
+      // the readouts say what the canvas shows, also when the run stopped between two of them
+      readouts.flush();
     };
-  }, [key, running, target, canvasRef]);
+  }, [key, running, target, canvasRef, drawnSpp]);
 
   // a reference that arrives after the image has stopped still gives its error
   useEffect(() => {

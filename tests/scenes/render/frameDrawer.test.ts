@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { frameDrawer, type FrameClock } from '../../../src/scenes/render/frameDrawer';
+import { frameDrawer, readoutGate, type FrameClock } from '../../../src/scenes/render/frameDrawer';
 
 /**
  * A drawer on a clock whose frames come only when the test says so (`frame()`), counting its draws.
@@ -66,5 +66,68 @@ describe('frameDrawer', () => {
     frame();
     d.stop();
     expect(draws()).toBe(1);
+  });
+});
+
+describe('readoutGate: the readouts at most 4 times a second, and always at the end', () => {
+  function gate() {
+    let t = 0;
+    let shows = 0;
+    const g = readoutGate(
+      () => shows++,
+      250,
+      () => t,
+    );
+    return { g, at: (ms: number) => (t = ms), shows: () => shows };
+  }
+
+  it('shows the first frame, then skips frames until the interval has passed', () => {
+    const { g, at, shows } = gate();
+    at(0);
+    g.frame();
+    expect(shows()).toBe(1);
+    for (const ms of [16, 100, 249]) {
+      at(ms);
+      g.frame();
+    }
+    expect(shows()).toBe(1);
+    at(250);
+    g.frame();
+    expect(shows()).toBe(2);
+    // sixty frames a second for two seconds: about eight readouts, not 120
+    for (let f = 1; f <= 120; f++) {
+      at(250 + f * (1000 / 60));
+      g.frame();
+    }
+    expect(shows()).toBeGreaterThanOrEqual(9);
+    expect(shows()).toBeLessThanOrEqual(10);
+  });
+
+  it('shows the frame of the last pass at once, whenever it comes', () => {
+    const { g, at, shows } = gate();
+    g.frame();
+    at(10);
+    g.last();
+    g.frame();
+    expect(shows()).toBe(2);
+  });
+
+  it('a run stopped between two readouts shows what its last frame drew, once', () => {
+    const { g, at, shows } = gate();
+    g.frame();
+    at(100);
+    g.frame();
+    expect(shows()).toBe(1);
+    g.flush();
+    expect(shows()).toBe(2);
+    g.flush();
+    expect(shows()).toBe(2);
+  });
+
+  it('a stop with nothing new since the last readout shows nothing more', () => {
+    const { g, shows } = gate();
+    g.frame();
+    g.flush();
+    expect(shows()).toBe(1);
   });
 });

@@ -10,12 +10,9 @@ import type { LightStrategy } from '../../../core/lights';
 import { Panel, Readout } from '../../../ui';
 import { runChunked } from '../../../ui/chunked';
 import { ScrollBox } from '../../../ui/ScrollBox';
-import { estimateOne, type AreaLightModel, type StrategyEstimate } from '../model';
+import { estimateOne, SYNC_MAX, type AreaLightModel, type StrategyEstimate } from '../model';
 import { STRATEGIES, STRATEGY_LABEL, STRATEGY_SHORT } from '../strategies';
 import { fmt } from './format';
-
-/** Largest n per strategy estimated on the main thread (above it, in the scene's worker). */
-export const SYNC_MAX = 65536;
 
 /**
  * The three estimates, null until computed. `estKey` names what they depend on (the model changes

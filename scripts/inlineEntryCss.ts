@@ -1,0 +1,46 @@
+/**
+ * Vite build plugin: index.html carries the shell's stylesheet (the design tokens, base styles and
+ * site chrome that the entry imports) inline, in a `<style>`, instead of linking it.
+ *
+ * A linked stylesheet blocks the first paint until it has downloaded, and on a phone's few
+ * connections it is one more request beside the entry's and the route's own files. The `<link>`
+ * stays, marked `disabled` (a disabled stylesheet link is not fetched), because Vite's loader for
+ * lazy chunks looks for a stylesheet link with that address before it adds one: with the link
+ * gone, every lazy page would download the stylesheet again. Only a stylesheet with no `url()` or
+ * `@import` is inlined (their relative addresses would resolve against the page, not the
+ * stylesheet).
+ */
+import type { Plugin } from 'vite';
+
+type BundleLike = Record<string, { type: string; fileName: string; source?: string | Uint8Array }>;
+
+/** index.html with its stylesheet links (files of `bundle`, addressed as `base` + file) inlined. */
+export function inlineStylesheets(html: string, bundle: BundleLike, base: string): string {
+  return html.replace(/<link\b[^>]*\brel="stylesheet"[^>]*>/g, (tag) => {
+    const href = /\bhref="([^"]+)"/.exec(tag)?.[1];
+    if (!href || !href.startsWith(base) || /\bdisabled\b/.test(tag)) return tag;
+    const asset = bundle[href.slice(base.length)];
+    if (!asset || asset.type !== 'asset' || asset.source === undefined) return tag;
+    const css = typeof asset.source === 'string' ? asset.source : new TextDecoder().decode(asset.source);
+    if (/url\(|@import|<\/style/i.test(css)) return tag;
+    return `<style>${css}</style>${tag.replace(/>$/, ' disabled>')}`;
+  });
+}
+
+export function inlineEntryCss(): Plugin {
+  let base = './';
+  return {
+    name: 'rml:inline-entry-css',
+    apply: 'build',
+    enforce: 'post',
+    configResolved(config) {
+      base = config.base === '' ? './' : config.base;
+    },
+    transformIndexHtml: {
+      order: 'post',
+      handler(html, ctx) {
+        return ctx.bundle ? inlineStylesheets(html, ctx.bundle as unknown as BundleLike, base) : html;
+      },
+    },
+  };
+}
