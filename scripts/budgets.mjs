@@ -1,10 +1,11 @@
 #!/usr/bin/env node
 /**
  * Bundle budgets for the production build (run after `npm run build`). Gzipped sizes:
- *  - the entry (what `#/` downloads: index.html's module script and stylesheet, plus every chunk
- *    the entry imports statically) ≤ 92 kB, and none of three.js, Plotly, mathjs, KaTeX in it
- *    (the shell itself: routing, the scene host, the share bar, the link's shell flags with the
- *    folds it opens, the deck's slide host; every page's own code is a lazy chunk);
+ *  - the entry (what `#/` downloads: index.html's module script and stylesheet, inline in the page
+ *    but counted here, plus every chunk the entry imports statically) ≤ 95 kB, and none of
+ *    three.js, Plotly, mathjs, KaTeX in it (the shell itself: routing, the scene host, the share
+ *    bar, the link's shell flags with the folds it opens, the deck's slide host, and the shared
+ *    components' styles; every page's own code is a lazy chunk);
  *  - each heavy library and each scene chunk under its own ceiling;
  *  - what the practice index (`#/practice`) and each question page download beyond the entry
  *    under their own ceilings;
@@ -65,7 +66,7 @@ for (const f of entryFiles) {
       if (re.test(src)) failures.push(`the entry chunk ${f} contains ${lib}`);
   }
 }
-const ENTRY_LIMIT = 92_000;
+const ENTRY_LIMIT = 95_000;
 if (entryTotal > ENTRY_LIMIT)
   failures.push(`entry is ${kB(entryTotal)} kB gzipped, over ${kB(ENTRY_LIMIT)} kB`);
 

@@ -39,7 +39,14 @@ const SCENE_ENTRY = /[\\/]src[\\/]scenes[\\/]([a-z0-9-]+)[\\/]index\.ts$/;
  * no route of its own.
  */
 const OTHER_ROUTES: Array<{ re: RegExp; id: string; with?: string[]; part?: boolean }> = [
-  { re: /[\\/]src[\\/]practice[\\/]PracticeRoute\.tsx$/, id: 'practice' },
+  // the practice pages load the results and LMS features' slots with the practice chunk (App.tsx)
+  {
+    re: /[\\/]src[\\/]practice[\\/]PracticeRoute\.tsx$/,
+    id: 'practice',
+    with: ['practice/results-slots', 'practice/lms-slots'],
+  },
+  { re: /[\\/]src[\\/]results[\\/]slots\.ts$/, id: 'practice/results-slots', part: true },
+  { re: /[\\/]src[\\/]lms[\\/]slots\.ts$/, id: 'practice/lms-slots', part: true },
   { re: /[\\/]src[\\/]practice[\\/]QuestionRoute\.tsx$/, id: 'practice/question', part: true },
   {
     re: /[\\/]src[\\/]practice[\\/](q[1-6])\.ts$/,
@@ -107,11 +114,19 @@ export function scenePreloadMap(bundle: BundleLike): Record<string, { js: string
     if (r.part) continue;
     const js = new Set<string>();
     const css = new Set<string>();
-    // the chunks loaded with it first (the practice chunk before a question page's)
-    for (const w of r.with) {
-      const other = routes.get(w);
-      if (other) closure(other.file, js, css);
-    }
+    // the chunks loaded with it first (the practice chunk before a question page's), and what
+    // those are loaded with in turn
+    const seen = new Set<string>([id]);
+    const withAll = (ws: string[]) => {
+      for (const w of ws) {
+        const other = routes.get(w);
+        if (!other || seen.has(w)) continue;
+        seen.add(w);
+        withAll(other.with);
+        closure(other.file, js, css);
+      }
+    };
+    withAll(r.with);
     closure(r.file, js, css);
     out[id] = { js: [...js].filter((f) => !entry.js.has(f)), css: [...css].filter((f) => !entry.css.has(f)) };
   }
@@ -123,6 +138,10 @@ export function scenePreloadMap(bundle: BundleLike): Record<string, { js: string
  * `base` the URL prefix of the files ('./' for a relative base). The hash's path is the key. The
  * files are written once, in a list, and each route names them by index (a question page's list
  * repeats the practice page's). scripts/preloadMap.mjs reads it back.
+ *
+ * The links are added in a task of their own (a timeout), not while the parser runs the script:
+ * adding thirty links takes tens of milliseconds (each starts a fetch), and the entry's request,
+ * which the parser has already met, would otherwise wait for the end of that parser task.
  */
 export function preloadScript(map: Record<string, { js: string[]; css: string[] }>, base: string): string {
   const files: string[] = [];
@@ -140,7 +159,7 @@ export function preloadScript(map: Record<string, { js: string[]; css: string[] 
     `if(q>=0)h=h.slice(0,q);h=h.replace(/^\\/+|\\/+$/g,'');` +
     `if(!Object.prototype.hasOwnProperty.call(m,h))return;var d=document.head;` +
     `function a(r,i,t){var l=document.createElement('link');l.rel=r;if(t)l.as=t;l.crossOrigin='';l.href=b+f[i];d.appendChild(l)}` +
-    `m[h][0].forEach(function(i){a('modulepreload',i)});m[h][1].forEach(function(i){a('preload',i,'style')})` +
+    `setTimeout(function(){m[h][0].forEach(function(i){a('modulepreload',i)});m[h][1].forEach(function(i){a('preload',i,'style')})},0)` +
     `}catch(x){}})();`
   );
 }

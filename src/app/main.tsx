@@ -4,6 +4,22 @@ import { App } from './App';
 import '../ui/theme.css';
 import '../ui/base.css';
 import './shell.css';
+// The shared components' styles, which nearly every page's first screen uses, go in the shell's
+// stylesheet (inline in index.html) rather than in a stylesheet per chunk: on a phone each of
+// those was one more request before a page's first paint. (Each component still imports its own;
+// a style that only a fold or one page uses stays with that page.)
+import '../ui/a11y.css';
+import '../ui/ask.css';
+import '../ui/controls.css';
+import '../ui/exam.css';
+import '../ui/fold.css';
+import '../ui/layout.css';
+import '../ui/math.css';
+import '../ui/readout.css';
+import '../ui/runningEstimate.css';
+import '../ui/stage.css';
+import '../ui/timeline.css';
+import '../three/viewport.css';
 import { whenQuiet } from '../ui/whenQuiet';
 import { findScene } from '../kit/catalogue';
 import { sceneLoader } from '../scenes/registry';

@@ -110,6 +110,40 @@ describe('scenePreloadMap: the files to start with the entry, per scene', () => 
   });
 });
 
+describe('scenePreloadMap: what the practice pages load with the practice chunk', () => {
+  it('preloads the results and LMS slots with #/practice and every question page (App loads them together)', () => {
+    const b = Object.fromEntries(
+      [
+        chunk('assets/index.js', { isEntry: true, facadeModuleId: '/p/src/app/main.tsx' }),
+        chunk('assets/practice.js', {
+          isDynamicEntry: true,
+          facadeModuleId: '/p/src/practice/PracticeRoute.tsx',
+        }),
+        chunk('assets/rslots.js', {
+          isDynamicEntry: true,
+          facadeModuleId: '/p/src/results/slots.ts',
+          imports: ['assets/version.js'],
+        }),
+        chunk('assets/version.js'),
+        chunk('assets/lslots.js', { isDynamicEntry: true, facadeModuleId: '/p/src/lms/slots.ts' }),
+        chunk('assets/question.js', {
+          isDynamicEntry: true,
+          facadeModuleId: '/p/src/practice/QuestionRoute.tsx',
+        }),
+        chunk('assets/q2.js', { isDynamicEntry: true, facadeModuleId: '/p/src/practice/q2.ts' }),
+      ].map((c) => [c.fileName, c]),
+    ) as Parameters<typeof scenePreloadMap>[0];
+    const map = scenePreloadMap(b);
+    // the slots are parts of the practice pages, no routes of their own
+    expect(Object.keys(map).sort()).toEqual(['practice', 'practice/q2']);
+    const slots = ['assets/lslots.js', 'assets/rslots.js', 'assets/version.js'];
+    expect(map.practice.js.sort()).toEqual(['assets/practice.js', ...slots].sort());
+    expect(map['practice/q2'].js.sort()).toEqual(
+      ['assets/practice.js', 'assets/q2.js', 'assets/question.js', ...slots].sort(),
+    );
+  });
+});
+
 /** Runs the inline script against a fake page with the given hash; returns the links it added. */
 function run(
   hash: string,
@@ -120,7 +154,12 @@ function run(
     head: { appendChild: (l: (typeof added)[number]) => added.push(l) },
     createElement: () => ({ rel: '', href: '', crossOrigin: null }),
   };
-  runInNewContext(preloadScript(scenePreloadMap(bundle), base), { document, location: { hash } });
+  // the links are added in a task of their own: run it at once (and check it was asked for)
+  const timers: Array<() => void> = [];
+  const setTimeout = (f: () => void) => void timers.push(f);
+  runInNewContext(preloadScript(scenePreloadMap(bundle), base), { document, location: { hash }, setTimeout });
+  expect(added).toEqual([]);
+  timers.forEach((f) => f());
   return added;
 }
 
