@@ -235,3 +235,66 @@ test('a scene: embed=1, part= and next/previous, play=1, Copy link and the paste
     expect(await content()).toBeGreaterThan(720);
   });
 });
+
+interface Shift {
+  value: number;
+  nodes: string[];
+}
+type LayoutShiftEntry = PerformanceEntry & {
+  value: number;
+  hadRecentInput: boolean;
+  sources?: Array<{ node?: Node | null }>;
+};
+
+// Each page that loads as a chunk of its own: the chunk's name, and what the page shows when it has
+// finished its first screen.
+const LAZY_PAGES: Array<{ hash: string; chunk: RegExp; ready: string }> = [
+  { hash: '#/practice', chunk: /\/PracticeRoute-[\w-]+\.js$/, ready: 'main.practice-home' },
+  { hash: '#/guide', chunk: /\/Guide-[\w-]+\.js$/, ready: 'main.guide' },
+  { hash: '#/results', chunk: /\/ResultsRoute-[\w-]+\.js$/, ready: 'main.results-page[data-ready="1"]' },
+  { hash: '#/accessibility', chunk: /\/AccessibilityPage-[\w-]+\.js$/, ready: 'main.accessibility' },
+  { hash: '#/deck', chunk: /\/DeckPage-[\w-]+\.js$/, ready: 'main.deck-page' },
+];
+
+test('a page that loads as its own chunk: nothing moves when the chunk arrives (the footer stays below the first screen)', async ({
+  page,
+}) => {
+  test.setTimeout(120_000);
+  await page.setViewportSize({ width: 412, height: 823 });
+  // every layout shift from the page's start, with the class names of what moved
+  await page.addInitScript(() => {
+    const out: Shift[] = [];
+    (window as unknown as { __shifts: Shift[] }).__shifts = out;
+    new PerformanceObserver((list) => {
+      for (const e of list.getEntries() as LayoutShiftEntry[])
+        if (!e.hadRecentInput)
+          out.push({
+            value: e.value,
+            nodes: (e.sources ?? []).map((x) => (x.node as Element | null)?.className ?? '?'),
+          });
+    }).observe({ type: 'layout-shift', buffered: true });
+  });
+  for (const p of LAZY_PAGES) {
+    await test.step(p.hash, async () => {
+      // the page's chunk is held back until its loading state has been painted
+      let release = () => {};
+      const held = new Promise<void>((r) => (release = r));
+      await page.route(p.chunk, async (route) => {
+        await held;
+        await route.continue();
+      });
+      // a fresh load of the page, as a reader's first visit
+      await page.goto('about:blank');
+      await page.goto(`./${p.hash}`);
+      await expect(page.locator('main.route-pending')).toBeVisible();
+      await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+      release();
+      await expect(page.locator(p.ready)).toBeVisible();
+      await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+      const shifts = await page.evaluate(() => (window as unknown as { __shifts: Shift[] }).__shifts);
+      const cls = shifts.reduce((s, e) => s + e.value, 0);
+      expect(cls, JSON.stringify(shifts)).toBeLessThan(0.01);
+      await page.unroute(p.chunk);
+    });
+  }
+});
