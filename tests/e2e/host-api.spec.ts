@@ -150,7 +150,17 @@ test('the example host page: set, get, subscribe, change events and errors; the 
     const n0 = (await events()).filter((e) => e.cause === 'user').length;
     const grid = frame.getByTestId('texel-grid');
     await grid.scrollIntoViewIfNeeded();
-    const box = (await grid.boundingBox())!;
+    // the framed page may still be settling (parts mounting, formulas typeset above the grid):
+    // measure the grid once it has stopped moving
+    let box = (await grid.boundingBox())!;
+    await expect
+      .poll(async () => {
+        const b = (await grid.boundingBox())!;
+        const still = b.x === box.x && b.y === box.y && b.width === box.width;
+        box = b;
+        return still;
+      })
+      .toBe(true);
     await page.mouse.move(box.x + box.width * 0.5, box.y + box.height * 0.5);
     await page.mouse.down();
     await page.mouse.move(box.x + box.width * 0.75, box.y + box.height * 0.25, { steps: 5 });
