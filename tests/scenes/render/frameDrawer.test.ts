@@ -94,7 +94,7 @@ describe('readoutGate: the readouts at most 4 times a second, and always at the 
     at(250);
     g.frame();
     expect(shows()).toBe(2);
-    // sixty frames a second for two seconds: about eight readouts, not 120
+    // sixty frames a second for two seconds: about eight more readouts, not 120
     for (let f = 1; f <= 120; f++) {
       at(250 + f * (1000 / 60));
       g.frame();
