@@ -81,16 +81,30 @@ const tidyVec = (q: Vec3, step: number): RaySphereParams['o'] => [
   tidy(q[2], step),
 ];
 
-/** A label's size: its measured text width (cached per text and font size) and 1.25 em. */
+/**
+ * A label's size: its text's width in the label's font (cached per text and font) and 1.25 em.
+ * The width comes from a canvas's measureText in the element's computed font, which lays nothing
+ * out: measuring the SVG text itself (getComputedTextLength) forced a layout of the page, in the
+ * middle of the draw, for each text not measured before (the note's line breaking tries one per
+ * word, and a drag changes the roots' labels every frame).
+ */
 function useLabelSizer() {
   const cache = useRef(new Map<string, number>());
+  const pen = useRef<CanvasRenderingContext2D | null | undefined>(undefined);
   return (el: SVGTextElement | null, text: string): [number, number] => {
-    const fs = el ? parseFloat(getComputedStyle(el).fontSize) || 15 : 15;
-    const key = `${fs}|${text}`;
+    const cs = el ? getComputedStyle(el) : null;
+    const fs = cs ? parseFloat(cs.fontSize) || 15 : 15;
+    const font = cs ? `${cs.fontStyle} ${cs.fontWeight} ${fs}px ${cs.fontFamily}` : `${fs}px`;
+    const key = `${font}|${text}`;
     let w = cache.current.get(key);
     if (w === undefined) {
-      // a text not yet laid out (jsdom, display none) measures 0: estimate it from its length
-      const m = el && typeof el.getComputedTextLength === 'function' ? el.getComputedTextLength() : 0;
+      if (pen.current === undefined) pen.current = document.createElement('canvas').getContext('2d');
+      let m = 0;
+      if (pen.current && cs) {
+        pen.current.font = font;
+        m = pen.current.measureText(text).width;
+      }
+      // no canvas (jsdom) or no element: estimate it from its length
       w = m > 0 ? m : 0.62 * fs * text.length;
       if (m > 0) cache.current.set(key, w);
     }
