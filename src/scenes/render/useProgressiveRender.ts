@@ -154,9 +154,10 @@ export function useProgressiveRender(
     // finished, or paused where the run already is (or beyond): hold the image, and show it (the
     // run may have stopped before the frame that would have drawn its last passes)
     const held = accRef.current;
-    if (held && (finished.current === `${key}@${target}` || imageStats(held.sum, held.count).spp >= target)) {
+    const heldSpp = held ? imageStats(held.sum, held.count).spp : 0;
+    if (held && (finished.current === `${key}@${target}` || heldSpp >= target)) {
       showPixels(canvasRef.current, held, null);
-      if (drawnSpp) drawnSpp.current = imageStats(held.sum, held.count).spp;
+      if (drawnSpp) drawnSpp.current = heldSpp;
       setProgress((p) => progressOf(held, model.spp, latest.current.reference, p.samplesPerSecond));
       return;
     }
