@@ -3,11 +3,34 @@ import type { Page } from '@playwright/test';
 const LOADING = /Loading plot…|Loading 3D view…|Loading the scene…/;
 
 /**
+ * What the page says of its frames, for a failure message: its visibility, and whether an
+ * animation frame ran within a second (a lazy view loads when an IntersectionObserver sees it,
+ * and such observers run only in frames: headless Chromium has been seen drawing none for minutes).
+ */
+async function frameReport(page: Page): Promise<string> {
+  return page
+    .evaluate(
+      () =>
+        new Promise<string>((resolve) => {
+          const t = setTimeout(() => resolve(`${document.visibilityState}, no animation frame in 1 s`), 1000);
+          requestAnimationFrame(() => {
+            clearTimeout(t);
+            resolve(`${document.visibilityState}, frames running`);
+          });
+        }),
+    )
+    .catch((e: unknown) => `no answer from the page (${String(e)})`);
+}
+
+/**
  * Bring every lazy view of the page (plots, 3D views) on screen, one after another, and wait until
  * each has finished loading its chunk (views load only while on screen, so a quick scroll past is
- * not enough on a busy machine).
+ * not enough on a busy machine). The page is brought to the front first: a tab behind another one
+ * may draw no frames, and a view loads only in a frame. Every wait has a limit, and a view that
+ * does not load is named in the error, with what the page says of its frames.
  */
 export async function settleLazyViews(page: Page, timeout = 60000): Promise<void> {
+  await page.bringToFront();
   const h = await page.evaluate(() => document.documentElement.scrollHeight);
   for (let y = 0; y < h; y += 600) await page.evaluate((y) => window.scrollTo(0, y), y);
   for (let i = 0; i < 50; i++) {
@@ -17,13 +40,25 @@ export async function settleLazyViews(page: Page, timeout = 60000): Promise<void
     if ((await loading.count()) === 0) return;
     const el = await loading.elementHandle({ timeout: 1000 }).catch(() => null);
     if (!el) continue;
-    await el.scrollIntoViewIfNeeded().catch(() => undefined);
+    // (scrolling waits for the element to hold still over two frames: limited, as the wait below)
+    await el.scrollIntoViewIfNeeded({ timeout }).catch(() => undefined);
     // polled on a timer, not per animation frame: a page that draws no frames for a while (a
     // loaded machine, nothing changing on screen) must not stall the wait
-    await page.waitForFunction((e) => !e.isConnected || !/Loading/.test(e.textContent ?? ''), el, {
-      timeout,
-      polling: 200,
-    });
+    const done = await page
+      .waitForFunction((e) => !e.isConnected || !/Loading/.test(e.textContent ?? ''), el, {
+        timeout,
+        polling: 200,
+      })
+      .then(
+        () => true,
+        () => false,
+      );
+    if (!done) {
+      const what = await el
+        .evaluate((e) => `"${e.textContent}" in ${e.parentElement?.outerHTML.slice(0, 200) ?? 'nothing'}`)
+        .catch(() => 'a view');
+      throw new Error(`still loading after ${timeout} ms: ${what}; the page: ${await frameReport(page)}`);
+    }
   }
   throw new Error('views still loading after 50 rounds');
 }

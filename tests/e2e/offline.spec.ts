@@ -163,7 +163,9 @@ test('offline and a deploy: one visit caches the whole build, a scene never open
     await expect(page.getByTestId('answer-a')).toHaveValue('12.5');
 
     // A's reader clicks Reload: A lands on the new build (it had no controller when it loaded),
-    // with the answer it had typed
+    // with the answer it had typed (A is brought to the front, as a reader's click would: a click
+    // waits for the button to hold still over two frames, and a tab behind another may draw none)
+    await page.bringToFront();
     await notice.getByRole('button', { name: 'Reload' }).click();
     await expect(built(page)).toHaveAttribute('content', marker, { timeout: 60000 });
     await expect(page.getByTestId('answer-a')).toHaveValue('12.5');
