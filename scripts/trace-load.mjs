@@ -9,6 +9,8 @@
  * a machine busy with other work still shows what the page itself costs; on a quiet machine the
  * two agree (Lighthouse uses wall time).
  *
+ * TRACE_SAVE=file.json keeps the last route's raw trace (for a closer look at its events).
+ *
  *   node scripts/trace-load.mjs [--dist dist] [--port 4338] [--ms 8000] [--min 12.5] [--js] [--wall] [--threads] '#/texture' …
  */
 import { chromium } from 'playwright-core';
@@ -57,6 +59,7 @@ try {
     await page.waitForTimeout(ms);
     const buf = await browser.stopTracing();
     const events = JSON.parse(buf.toString()).traceEvents;
+    if (process.env.TRACE_SAVE) (await import('node:fs')).writeFileSync(process.env.TRACE_SAVE, buf);
     // the page's renderer main thread: the CrRendererMain thread that parsed our page's HTML
     const names = new Map();
     for (const e of events) if (e.name === 'thread_name') names.set(`${e.pid}:${e.tid}`, e.args.name);
