@@ -5,6 +5,7 @@ import { VitePWA } from 'vite-plugin-pwa';
 import { viteSingleFile } from 'vite-plugin-singlefile';
 import { lateManifestLink, routePreload } from './scripts/routePreload';
 import { inlineEntryCss } from './scripts/inlineEntryCss';
+import { katexCssSplit } from './scripts/katexCss';
 import { appFiles } from './scripts/appFiles';
 import { contentSecurityPolicy } from './scripts/csp';
 
@@ -59,9 +60,17 @@ export default defineConfig(({ mode }) => {
   return {
     base: './',
     plugins: single
-      ? [react(), inlineWorkers(), viteSingleFile({ removeViteModuleLoader: true }), contentSecurityPolicy()]
+      ? [
+          react(),
+          katexCssSplit(),
+          inlineWorkers(),
+          viteSingleFile({ removeViteModuleLoader: true }),
+          contentSecurityPolicy(),
+        ]
       : [
           react(),
+          // KaTeX's @font-face rules in the shell's stylesheet, its other rules loaded with the formulas
+          katexCssSplit(),
           // index.html starts the opened scene's chunks downloading with the entry
           routePreload(),
           // the shell's stylesheet inline in index.html: one request fewer before a page's first paint
@@ -91,9 +100,8 @@ export default defineConfig(({ mode }) => {
               ],
             },
             workbox: {
-              // KaTeX's stylesheet lists each font as woff2, woff and ttf; every browser the app
-              // supports takes the woff2, so only those are precached (the others: 2/3 of the fonts'
-              // bytes, never fetched)
+              // KaTeX's fonts are declared as woff2 only (scripts/katexCss.ts); a file of another
+              // kind found in the build is not precached
               globPatterns: ['**/*.{js,css,html,png,svg,ico,webmanifest,woff2,wasm,json}'],
               maximumFileSizeToCacheInBytes: 20 * 1024 * 1024,
               cleanupOutdatedCaches: true,
@@ -112,6 +120,9 @@ export default defineConfig(({ mode }) => {
       target: 'es2022',
       sourcemap: false,
       chunkSizeWarningLimit: 5000,
+      // fonts stay files (KaTeX's smallest would be inlined as data: in the stylesheet that declares
+      // it, the shell's, which index.html carries: bytes every page pays for a font few use)
+      assetsInlineLimit: (file: string) => (single ? undefined : file.endsWith('.woff2') ? false : undefined),
       outDir: single ? 'dist-single' : 'dist',
       rolldownOptions: single
         ? { treeshake }

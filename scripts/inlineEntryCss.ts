@@ -6,13 +6,32 @@
  * connections it is one more request beside the entry's and the route's own files. The `<link>`
  * stays, marked `disabled` (a disabled stylesheet link is not fetched), because Vite's loader for
  * lazy chunks looks for a stylesheet link with that address before it adds one: with the link
- * gone, every lazy page would download the stylesheet again. Only a stylesheet with no `url()` or
- * `@import` is inlined (their relative addresses would resolve against the page, not the
- * stylesheet).
+ * gone, every lazy page would download the stylesheet again. A relative `url()` (KaTeX's font
+ * faces, say) is rewritten to the same file's address from the page (the stylesheet's folder in
+ * front of it); a stylesheet with an `@import`, or a `url()` that climbs out of its folder, stays
+ * linked.
  */
 import type { Plugin } from 'vite';
 
 type BundleLike = Record<string, { type: string; fileName: string; source?: string | Uint8Array }>;
+
+/**
+ * `css`'s relative url()s addressed from the page instead of from the stylesheet, whose folder (as
+ * the page addresses it, e.g. `./assets/`) is `dir`; null if one cannot be (it climbs with `..`).
+ * Absolute addresses, data: URLs and fragments are kept.
+ */
+export function rebaseUrls(css: string, dir: string): string | null {
+  let ok = true;
+  const out = css.replace(/url\(\s*(['"]?)([^'")]*)\1\s*\)/g, (whole, quote: string, target: string) => {
+    if (/^([a-z][a-z0-9+.-]*:|\/|#)/i.test(target)) return whole;
+    if (/(^|\/)\.\.(\/|$)/.test(target)) {
+      ok = false;
+      return whole;
+    }
+    return `url(${quote}${dir}${target.replace(/^\.\//, '')}${quote})`;
+  });
+  return ok ? out : null;
+}
 
 /** index.html with its stylesheet links (files of `bundle`, addressed as `base` + file) inlined. */
 export function inlineStylesheets(html: string, bundle: BundleLike, base: string): string {
@@ -21,8 +40,10 @@ export function inlineStylesheets(html: string, bundle: BundleLike, base: string
     if (!href || !href.startsWith(base) || /\bdisabled\b/.test(tag)) return tag;
     const asset = bundle[href.slice(base.length)];
     if (!asset || asset.type !== 'asset' || asset.source === undefined) return tag;
-    const css = typeof asset.source === 'string' ? asset.source : new TextDecoder().decode(asset.source);
-    if (/url\(|@import|<\/style/i.test(css)) return tag;
+    const text = typeof asset.source === 'string' ? asset.source : new TextDecoder().decode(asset.source);
+    if (/@import|<\/style/i.test(text)) return tag;
+    const css = rebaseUrls(text, href.slice(0, href.lastIndexOf('/') + 1));
+    if (css === null) return tag;
     return `<style>${css}</style>${tag.replace(/>$/, ' disabled>')}`;
   });
 }

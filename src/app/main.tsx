@@ -20,6 +20,10 @@ import '../ui/runningEstimate.css';
 import '../ui/stage.css';
 import '../ui/timeline.css';
 import '../three/viewport.css';
+// KaTeX's font faces (declared only: a font downloads when a formula first uses it). Declared
+// here, not in KaTeX's lazily loaded stylesheet, whose arrival would otherwise restyle and lay out
+// the whole page (scripts/katexCss.ts).
+import 'katex/dist/katex.min.css?fonts';
 import { whenQuiet } from '../ui/whenQuiet';
 import { findScene } from '../kit/catalogue';
 import { sceneLoader } from '../scenes/registry';

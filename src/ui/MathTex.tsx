@@ -11,9 +11,12 @@ type Katex = typeof import('katex');
 let katexPromise: Promise<Katex> | null = null;
 let cssPromise: Promise<unknown> | null = null;
 
-/** KaTeX's stylesheet (loaded once, on first use: every typeset formula needs it). */
+/**
+ * KaTeX's stylesheet (loaded once, on first use: every typeset formula needs it), less its
+ * @font-face rules, which the shell's stylesheet declares (src/app/main.tsx, scripts/katexCss.ts).
+ */
 function loadKatexCss(): Promise<unknown> {
-  if (!cssPromise) cssPromise = import('katex/dist/katex.min.css');
+  if (!cssPromise) cssPromise = import('katex/dist/katex.min.css?rules');
   return cssPromise;
 }
 
