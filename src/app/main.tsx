@@ -34,6 +34,7 @@ import { markBuildReplaced } from '../ui/staleBuild';
 import { showUpdateNotice } from './updateNotice';
 import { declaredLmsConfig } from '../lms/config';
 import { fuzzRequest } from './fuzzGate';
+import { keepFocusInView } from '../ui/focusInView';
 
 // The opened scene's chunk is requested now, while React mounts the shell, not once the shell has
 // rendered (index.html has already started downloading it: scripts/routePreload.ts). The
@@ -54,6 +55,8 @@ if (root && inLms)
 else if (root) render(root);
 
 function render(root: HTMLElement) {
+  // a field reached with Tab stays on screen while the page settles around it (../ui/focusInView)
+  keepFocusInView();
   const r = createRoot(root);
   // A transition: React renders the shell's first tree in slices that yield to the browser, not in
   // one task (on a phone, code that has never run yet is slow).

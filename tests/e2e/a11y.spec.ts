@@ -250,3 +250,40 @@ test('formulas: the plain-text reading shown before KaTeX arrives is a named mat
     expect(hidden.odd).toEqual([]);
   });
 });
+
+// WCAG 2.4.11 (focus not obscured) while the page settles: a part above the field a reader has
+// just tabbed to grows (a derivation drawn as it nears the screen, a formula typeset, a view
+// loaded), after the browser has scrolled to the field. The field is brought back into view
+// (src/ui/focusInView.ts); a click that then moves the page is left alone.
+test('a field reached with Tab stays on screen when a part above it grows a moment later', async ({
+  page,
+}) => {
+  await page.setViewportSize({ width: 1280, height: 720 });
+  await openScene(page, '#/texture');
+  const buttons = page.locator('main button:visible');
+  expect(await buttons.count()).toBeGreaterThan(6);
+  // Tab on from a button down the page (the browser scrolls the next field into view)
+  await buttons.nth(4).focus();
+  await page.keyboard.press('Tab');
+  await page.evaluate(() => document.activeElement?.setAttribute('data-tabbed-to', ''));
+  const field = page.locator('[data-tabbed-to]');
+  await expect(field).toBeFocused();
+  const inView = () =>
+    field.evaluate((el) => {
+      const r = el.getBoundingClientRect();
+      return r.bottom > 0 && r.top < document.documentElement.clientHeight;
+    });
+  expect(await inView()).toBe(true);
+  // a part right above it grows by more than the screen's height
+  await field.evaluate((el) => {
+    // (before the outermost box around it that lays out in a flex or grid row: a block of its own)
+    let box: Element = el;
+    while (box.parentElement && /flex|grid/.test(getComputedStyle(box.parentElement).display))
+      box = box.parentElement;
+    const grow = document.createElement('div');
+    grow.style.height = '900px';
+    box.parentElement!.insertBefore(grow, box);
+  });
+  await expect.poll(inView, { message: 'the focused field went off screen and stayed there' }).toBe(true);
+  await expect(field).toBeFocused();
+});
