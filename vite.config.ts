@@ -121,8 +121,11 @@ export default defineConfig(({ mode }) => {
       sourcemap: false,
       chunkSizeWarningLimit: 5000,
       // fonts stay files (KaTeX's smallest would be inlined as data: in the stylesheet that declares
-      // it, the shell's, which index.html carries: bytes every page pays for a font few use)
-      assetsInlineLimit: (file: string) => (single ? undefined : file.endsWith('.woff2') ? false : undefined),
+      // it, the shell's, which index.html carries: bytes every page pays for a font few use); the
+      // single-file build inlines everything (its plugin's own setting)
+      ...(single
+        ? {}
+        : { assetsInlineLimit: (file: string) => (file.endsWith('.woff2') ? false : undefined) }),
       outDir: single ? 'dist-single' : 'dist',
       rolldownOptions: single
         ? { treeshake }
