@@ -152,3 +152,25 @@ export async function settle(page: Page): Promise<void> {
       }),
   );
 }
+
+/**
+ * What a page says of its frames, for a failure message: its visibility, and whether an animation
+ * frame ran within `ms` (headless Chromium has been seen drawing none for minutes on a loaded
+ * machine; observers, media-query changes and Playwright's "holds still" checks all wait for frames).
+ */
+export async function frameState(
+  page: Page,
+  ms = 1000,
+): Promise<{ frame: boolean; visibility: string } | { error: string }> {
+  return page
+    .evaluate(
+      (ms) =>
+        new Promise<{ frame: boolean; visibility: string }>((resolve) => {
+          let frame = false;
+          requestAnimationFrame(() => (frame = true));
+          setTimeout(() => resolve({ frame, visibility: document.visibilityState }), ms);
+        }),
+      ms,
+    )
+    .catch((e: unknown) => ({ error: `no answer from the page (${String(e)})` }));
+}

@@ -1,26 +1,7 @@
 import type { Page } from '@playwright/test';
+import { frameState } from './fixtures';
 
 const LOADING = /Loading plot…|Loading 3D view…|Loading the scene…/;
-
-/**
- * What the page says of its frames, for a failure message: its visibility, and whether an
- * animation frame ran within a second (a lazy view loads when an IntersectionObserver sees it,
- * and such observers run only in frames: headless Chromium has been seen drawing none for minutes).
- */
-async function frameReport(page: Page): Promise<string> {
-  return page
-    .evaluate(
-      () =>
-        new Promise<string>((resolve) => {
-          const t = setTimeout(() => resolve(`${document.visibilityState}, no animation frame in 1 s`), 1000);
-          requestAnimationFrame(() => {
-            clearTimeout(t);
-            resolve(`${document.visibilityState}, frames running`);
-          });
-        }),
-    )
-    .catch((e: unknown) => `no answer from the page (${String(e)})`);
-}
 
 /**
  * Bring every lazy view of the page (plots, 3D views) on screen, one after another, and wait until
@@ -57,7 +38,9 @@ export async function settleLazyViews(page: Page, timeout = 60000): Promise<void
       const what = await el
         .evaluate((e) => `"${e.textContent}" in ${e.parentElement?.outerHTML.slice(0, 200) ?? 'nothing'}`)
         .catch(() => 'a view');
-      throw new Error(`still loading after ${timeout} ms: ${what}; the page: ${await frameReport(page)}`);
+      throw new Error(
+        `still loading after ${timeout} ms: ${what}; the page: ${JSON.stringify(await frameState(page))}`,
+      );
     }
   }
   throw new Error('views still loading after 50 rounds');

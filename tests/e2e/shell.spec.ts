@@ -8,7 +8,7 @@
  * the host page's height messages: host-api.spec.ts. The app is served from a sub-folder (/app/)
  * to prove the static build works from any folder.
  */
-import { test, expect, openScene, readout } from './fixtures';
+import { test, expect, openScene, readout, settle } from './fixtures';
 import { SCENES, sceneSchema } from './sceneSchemas';
 
 const ROUTES = SCENES.map((s) => s.path);
@@ -287,10 +287,10 @@ test('a page that loads as its own chunk: nothing moves when the chunk arrives (
       await page.goto('about:blank');
       await page.goto(`./${p.hash}`);
       await expect(page.locator('main.route-pending')).toBeVisible();
-      await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+      await settle(page);
       release();
       await expect(page.locator(p.ready)).toBeVisible();
-      await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+      await settle(page);
       const shifts = await page.evaluate(() => (window as unknown as { __shifts: Shift[] }).__shifts);
       const cls = shifts.reduce((s, e) => s + e.value, 0);
       expect(cls, JSON.stringify(shifts)).toBeLessThan(0.01);

@@ -10,7 +10,7 @@
 import AxeBuilder from '@axe-core/playwright';
 import type { Page } from '@playwright/test';
 import { textFormulaGroups } from '../../src/ui/texBreaks';
-import { expect, openScene, test } from './fixtures';
+import { expect, frameState, openScene, test } from './fixtures';
 import { countTabStops } from './calmCount';
 import { MODEBAR_BUTTONS } from '../../src/ui/plotConfig';
 import {
@@ -341,17 +341,10 @@ export async function checkWholePage(
       // Seen rarely on a loaded machine: the theme stays light. Chromium tells a page that a media
       // query changed with its next animation frame, so say whether the preference is dark and
       // whether the page still gets frames (a frame asked for, 3 s given to come).
-      const state = await page.evaluate(
-        () =>
-          new Promise((done) => {
-            let frame = false;
-            requestAnimationFrame(() => (frame = true));
-            setTimeout(() => {
-              const prefersDark = matchMedia('(prefers-color-scheme: dark)').matches;
-              done({ prefersDark, frame, visibility: document.visibilityState });
-            }, 3000);
-          }),
-      );
+      const state = {
+        prefersDark: await page.evaluate(() => matchMedia('(prefers-color-scheme: dark)').matches),
+        ...(await frameState(page, 3000)),
+      };
       throw new Error(
         `${e instanceof Error ? e.message : String(e)}\nthe page then: ${JSON.stringify(state)}`,
       );
