@@ -331,6 +331,9 @@ export async function checkWholePage(
   // reading, which has no caret either
   found.push(...(await visibleCarets(page)).map((c) => `caret in the visible text: ${c}`));
 
+  // the page activated in its browser before the switch (as settleLazyViews does): Chromium tells a
+  // page of a changed preference only in its next animation frame
+  await page.bringToFront();
   await page.emulateMedia({ colorScheme: 'dark' });
   await page.setViewportSize({ width: 375, height: 812 });
   // (generous: with every fold open, a page may be busy with what they compute for a while)
@@ -344,6 +347,8 @@ export async function checkWholePage(
       const state = {
         prefersDark: await page.evaluate(() => matchMedia('(prefers-color-scheme: dark)').matches),
         ...(await frameState(page, 3000)),
+        // and whether a frame comes once the page is brought to the front again
+        afterBringToFront: await page.bringToFront().then(() => frameState(page, 3000)),
       };
       throw new Error(
         `${e instanceof Error ? e.message : String(e)}\nthe page then: ${JSON.stringify(state)}`,
