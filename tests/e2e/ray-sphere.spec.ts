@@ -62,6 +62,39 @@ test('wiring: links, the sweep’s step, presets, bad input, a drag and the fold
       await openScene(page, `#/ray-sphere${query ? `?${query}` : ''}`);
       await expectReadouts(page, query);
       await expect(page.getByTestId('case-banner')).toContainText(/Δ/);
+      // the figure's labels, hidden until its first frame is painted, are then placed: shown,
+      // inside the figure, and clear of every handle's ring
+      const cross = page.getByTestId('cross-section');
+      await expect(cross).toHaveAttribute('data-labels', 'placed');
+      const clash = await cross.evaluate((svg) => {
+        const fig = svg.getBoundingClientRect();
+        const out: string[] = [];
+        const labels = [...svg.querySelectorAll<SVGTextElement>('text')].filter(
+          (t) => t.getAttribute('display') !== 'none' && (t.textContent ?? '') !== '',
+        );
+        if (labels.length < 3) out.push(`${labels.length} labels shown`);
+        for (const t of labels) {
+          if (getComputedStyle(t).visibility !== 'visible') out.push(`${t.textContent} hidden`);
+          const b = t.getBoundingClientRect();
+          if (
+            b.left < fig.left - 1 ||
+            b.right > fig.right + 1 ||
+            b.top < fig.top - 1 ||
+            b.bottom > fig.bottom + 1
+          )
+            out.push(`${t.textContent} outside the figure`);
+          for (const h of svg.querySelectorAll<SVGGElement>(
+            '.rs-handle:not([display="none"]) .rs-handle-ring',
+          )) {
+            const r = h.getBoundingClientRect();
+            const w = Math.min(b.right, r.right) - Math.max(b.left, r.left);
+            const hh = Math.min(b.bottom, r.bottom) - Math.max(b.top, r.top);
+            if (r.width > 0 && w > 1 && hh > 1) out.push(`${t.textContent} under a handle`);
+          }
+        }
+        return out;
+      });
+      expect(clash, `labels of ${query || 'the exam’s ray'}`).toEqual([]);
     }
   });
 

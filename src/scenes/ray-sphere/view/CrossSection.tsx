@@ -8,7 +8,8 @@
  * written by drawCross (after each render, and per animation frame through `drawRef` without
  * React, while a sweep plays).
  */
-import { useLayoutEffect, useRef, useState, type KeyboardEvent, type PointerEvent } from 'react';
+import { useEffect, useLayoutEffect, useRef, useState, type KeyboardEvent, type PointerEvent } from 'react';
+import { afterPaint } from '../../../ui/afterPaint';
 import { announce } from '../../../ui/announce';
 import { useWidth } from '../../../ui/useWidth';
 import { useSectionWidth } from '../../../ui/Deferred';
@@ -117,6 +118,7 @@ function drawCross(
   fig: HTMLElement,
   g: Layout,
   size: (el: SVGTextElement | null, text: string) => [number, number],
+  withLabels: boolean,
 ): void {
   const X = (x: number) => X_(g, x);
   const Y = (y: number) => Y_(g, y);
@@ -180,7 +182,11 @@ function drawCross(
   for (const k of ['o', 'tip', 'c', 'r'] as const) show(q(`h-${k}`), shown.has(k));
   show(q('o-label'), !far);
   for (const k of NOTE_KEYS) show(q(k), noteText(g) !== null);
-  // labels last: measured with their current text, then put where no handle covers them
+  // labels last: measured with their current text, then put where no handle covers them; until
+  // the figure's first frame has been painted they wait, hidden (see CrossSection)
+  const svg = fig.querySelector('svg');
+  set(svg, { 'data-labels': withLabels ? 'placed' : 'pending' });
+  if (!withLabels) return;
   const labels = planLabels(g, (key: LabelKey, text: string) => {
     const el = q(key) as SVGTextElement | null;
     if (el && el.textContent !== text) el.textContent = text;
@@ -241,6 +247,12 @@ export function CrossSection({
   if (!drawRef) ray.current = { o, d, c, r, res, distanceRatio };
   const shown = useRef<Layout | null>(null);
   const size = useLabelSizer();
+  // The labels are measured in their computed font, which forces the browser to compute the style
+  // of everything changed since its last frame: right after the page has mounted, that is the whole
+  // page, and it made the mounting task several times longer on a phone. So the draws before the
+  // figure's first painted frame leave the labels hidden; the first draw after it places them (in
+  // a task of its own, with styles already computed), and every later draw places them at once.
+  const labelsOn = useRef(false);
   const layout = (x: CrossRay) => layoutCross(x, fitExtra, W, H, dragging, keep.current);
   const draw = (x: CrossRay) => {
     ray.current = x;
@@ -248,7 +260,7 @@ export function CrossSection({
     shown.current = g;
     const fig = figRef.current;
     if (!fig) return;
-    drawCross(fig, g, size);
+    drawCross(fig, g, size, labelsOn.current);
     for (const target of ['o', 'tip', 'c', 'r'] as const) {
       const el = fig.querySelector(`[data-k="h-${target}"]`);
       const attrs = handleAria(g, x, target);
@@ -261,7 +273,20 @@ export function CrossSection({
     }
   };
   if (drawRef) drawRef.current = draw;
+  const latest = useRef(draw);
+  latest.current = draw;
   useLayoutEffect(() => draw(ray.current));
+  useEffect(() => {
+    let alive = true;
+    void afterPaint().then(() => {
+      if (!alive || labelsOn.current) return;
+      labelsOn.current = true;
+      latest.current(ray.current);
+    });
+    return () => {
+      alive = false;
+    };
+  }, []);
   const cur = () => shown.current ?? layout(ray.current);
 
   const toWorld2 = (e: PointerEvent<SVGSVGElement>): [number, number] | null => {
