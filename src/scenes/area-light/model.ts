@@ -209,7 +209,7 @@ export function buildModel(params: AreaLightParams): AreaLightModel {
   } else if (belowHorizon > 0) {
     notes.push({
       kind: 'info',
-      text: `${Math.round(belowHorizon * 100)}% of the light is below the horizon: Lambert’s formula uses the light clipped to z ≥ ${p[2]}, and the estimators give those samples weight 0.`,
+      text: `${percentOfPart(belowHorizon)} of the light is below the horizon: Lambert’s formula uses the light clipped to z ≥ ${p[2]}, and the estimators give those samples weight 0.`,
     });
   }
   if (occluder && referenceOccluded !== null && !Number.isFinite(referenceOccluded)) {
@@ -263,18 +263,56 @@ export function onLight(light: RectLight, p: readonly number[]): boolean {
   return a >= 0 && a <= light.width && b >= 0 && b <= light.height;
 }
 
-/** Fraction of the light's area with z < zFloor (the part below the shading point's horizon). */
-export function fractionBelow(light: RectLight, zFloor: number): number {
-  // z is affine over the rectangle: z(a, b) = s_z + a e_x,z + b e_y,z on [0,1]²; integrate the
-  // indicator numerically on a fine grid (exact enough for a notice).
-  const K = 64;
-  let below = 0;
-  for (let i = 0; i < K; i++)
-    for (let j = 0; j < K; j++) {
-      const z = light.corner[2] + ((i + 0.5) / K) * light.edgeX[2] + ((j + 0.5) / K) * light.edgeY[2];
-      if (z < zFloor) below++;
+/**
+ * The area of the part of the unit square [0, 1]² where a·p + b·q < c: the square clipped by a
+ * half-plane (Sutherland–Hodgman against one edge), measured by the shoelace formula. Exact up to
+ * rounding; 1 or 0 when p = q = 0, as c > 0 or not.
+ */
+export function squareAreaBelow(p: number, q: number, c: number): number {
+  const square: [number, number][] = [
+    [0, 0],
+    [1, 0],
+    [1, 1],
+    [0, 1],
+  ];
+  // g > 0 inside the half-plane
+  const g = ([a, b]: [number, number]) => c - (a * p + b * q);
+  const poly: [number, number][] = [];
+  for (let k = 0; k < 4; k++) {
+    const A = square[k];
+    const B = square[(k + 1) % 4];
+    const ga = g(A);
+    const gb = g(B);
+    if (ga > 0) poly.push(A);
+    if (ga > 0 !== gb > 0) {
+      const t = ga / (ga - gb);
+      poly.push([A[0] + t * (B[0] - A[0]), A[1] + t * (B[1] - A[1])]);
     }
-  return below / (K * K);
+  }
+  let twice = 0;
+  for (let k = 0; k < poly.length; k++) {
+    const [x0, y0] = poly[k];
+    const [x1, y1] = poly[(k + 1) % poly.length];
+    twice += x0 * y1 - x1 * y0;
+  }
+  return Math.min(1, Math.max(0, twice / 2));
+}
+
+/**
+ * Fraction of the light's area with z < zFloor (the part below the shading point's horizon): z is
+ * affine over the rectangle, z(a, b) = s_z + a e_x,z + b e_y,z on [0, 1]², so the part below is the
+ * unit square cut by a straight line ({@link squareAreaBelow}).
+ */
+export function fractionBelow(light: RectLight, zFloor: number): number {
+  return squareAreaBelow(light.edgeX[2], light.edgeY[2], zFloor - light.corner[2]);
+}
+
+/** A fraction in (0, 1) as a whole percentage that never reads 0 % or 100 %. */
+export function percentOfPart(f: number): string {
+  const pct = 100 * f;
+  if (pct < 0.5) return 'Less than 1%';
+  if (pct >= 99.5) return 'Over 99%';
+  return `${Math.round(pct)}%`;
 }
 
 /**
