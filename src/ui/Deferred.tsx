@@ -119,6 +119,15 @@ export function useSectionWidth(): number | null {
 }
 
 let flushing = false;
+/**
+ * True while {@link flushDeferred} mounts the waiting sections for a print: a view that would
+ * finish its drawing after its first painted frame must finish it at once (no frame comes before
+ * the print).
+ */
+export function mountingForPrint(): boolean {
+  return flushing;
+}
+
 /** Mount every section still waiting, synchronously (before printing). */
 export function flushDeferred(): void {
   flushing = true;

@@ -95,11 +95,17 @@ test("printing also mounts the sections nested in the sections it mounts (the ra
   await expect(page.locator('#question-5-title')).toBeVisible({ timeout: 60_000 });
   await expect(page.locator(pending).first()).toBeAttached();
   await expect(page.getByTestId('cross-section')).toHaveCount(0);
-  const left = await page.evaluate((sel) => {
+  const { left, labels } = await page.evaluate((sel) => {
     window.dispatchEvent(new Event('beforeprint'));
-    return document.querySelectorAll(sel).length;
+    return {
+      left: document.querySelectorAll(sel).length,
+      // read in the same task: no frame has been painted since the print began
+      labels: document.querySelector('[data-testid="cross-section"]')?.getAttribute('data-labels'),
+    };
   }, pending);
   expect(left).toBe(0);
+  // the cross-section mounted for the print has its labels placed already
+  expect(labels).toBe('placed');
   for (const id of ['cross-section', 'g-plot', 'derivation', 'live-answer', 'precision-table'])
     await expect(page.getByTestId(id)).toHaveCount(1);
 });

@@ -12,7 +12,7 @@ import { useEffect, useLayoutEffect, useRef, useState, type KeyboardEvent, type 
 import { afterPaint } from '../../../ui/afterPaint';
 import { announce } from '../../../ui/announce';
 import { useWidth } from '../../../ui/useWidth';
-import { useSectionWidth } from '../../../ui/Deferred';
+import { mountingForPrint, useSectionWidth } from '../../../ui/Deferred';
 import { dirFromFrame, fromFrame } from '../frame';
 import { tidy } from '../tidy';
 import type { Vec3 } from '../../../core/vec3';
@@ -252,7 +252,9 @@ export function CrossSection({
   // page, and it made the mounting task several times longer on a phone. So the draws before the
   // figure's first painted frame leave the labels hidden; the first draw after it places them (in
   // a task of its own, with styles already computed), and every later draw places them at once.
+  // A figure mounted for a print places them at once (no frame comes before the print).
   const labelsOn = useRef(false);
+  if (mountingForPrint()) labelsOn.current = true;
   const layout = (x: CrossRay) => layoutCross(x, fitExtra, W, H, dragging, keep.current);
   const draw = (x: CrossRay) => {
     ray.current = x;
