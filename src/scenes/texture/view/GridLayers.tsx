@@ -8,7 +8,7 @@ import { nodeCoord } from '../../../core/texture';
 import { darkTextOn, normalizeValue } from '../../../core/colormap';
 import { formatRounded } from '../../../core/format';
 import { pathPoint, type QueryPath } from '../path';
-import { textureImage } from '../textureImage';
+import { nearestRects, texelColours, textureImage } from '../textureImage';
 import type { ShownTexture } from '../model';
 import { VB, sx, sy, type ViewWindow } from './gridFrame';
 
@@ -26,12 +26,21 @@ const BaseCanvas = memo(function BaseCanvas({ grid, opts, range, win }: ShownTex
     c.height = res;
     const g = c.getContext('2d');
     if (!g) return;
-    const img = textureImage(grid, { ...opts, vflip: false }, 'nearest', res, res, range, {
-      uMin: win.min,
-      uMax: win.max,
-      vMin: win.min,
-      vMax: win.max,
-    });
+    const o = { ...opts, vflip: false };
+    const view = { uMin: win.min, uMax: win.max, vMin: win.min, vMax: win.max };
+    // one filled rectangle per texel region (the same pixels as the image written pixel by pixel,
+    // which cost a long task on a phone's first render); pixel by pixel for a grid finer than that
+    const rects = nearestRects(grid, o, res, res, view);
+    if (rects) {
+      const lut = texelColours(grid, range);
+      for (const r of rects) {
+        const k = 4 * r.texel;
+        g.fillStyle = `rgb(${lut[k]} ${lut[k + 1]} ${lut[k + 2]})`;
+        g.fillRect(r.x, r.y, r.w, r.h);
+      }
+      return;
+    }
+    const img = textureImage(grid, o, 'nearest', res, res, range, view);
     g.putImageData(new ImageData(img as Uint8ClampedArray<ArrayBuffer>, res, res), 0, 0);
   }, [grid, opts, range, win]);
   return <canvas ref={ref} className="tx-grid-canvas" aria-hidden="true" />;
