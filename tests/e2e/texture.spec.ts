@@ -213,18 +213,22 @@ test('a drag of the query redraws only the marker layer; its cross then sits on 
   page,
 }) => {
   test.setTimeout(120_000);
-  // count canvas redraws (the grid's base layer and the two reconstructions use putImageData)
+  // count canvas redraws: the two reconstructions write their pixels (putImageData); the grid's
+  // base layer fills one rectangle per texel region, a redraw starting with the one at (0, 0)
   await page.addInitScript(() => {
     const w = window as unknown as { __puts: number };
     w.__puts = 0;
-    const orig = CanvasRenderingContext2D.prototype.putImageData;
-    CanvasRenderingContext2D.prototype.putImageData = function (
-      this: CanvasRenderingContext2D,
-      ...args: Parameters<typeof orig>
-    ) {
+    const proto = CanvasRenderingContext2D.prototype;
+    const put = proto.putImageData;
+    proto.putImageData = function (this: CanvasRenderingContext2D, ...args: Parameters<typeof put>) {
       w.__puts++;
-      return orig.apply(this, args);
-    } as typeof orig;
+      return put.apply(this, args);
+    } as typeof put;
+    const fill = proto.fillRect;
+    proto.fillRect = function (this: CanvasRenderingContext2D, x: number, y: number, cw: number, ch: number) {
+      if (x === 0 && y === 0) w.__puts++;
+      return fill.call(this, x, y, cw, ch);
+    };
   });
   const puts = () => page.evaluate(() => (window as unknown as { __puts: number }).__puts);
   let u = 0;
