@@ -28,12 +28,9 @@ export function textureImage(
 ): Uint8ClampedArray {
   const img = new Uint8ClampedArray(w * h * 4);
   if (filter === 'nearest') {
-    // every pixel shows one texel's value: colour the texels once (colorizeInto, so the same
+    // every pixel shows one texel's value: colour the texels once (texelColours, so the same
     // bytes as colouring each pixel's value), then copy each pixel's texel colour as one word
-    const n = grid.values.length;
-    const lut = new Uint8ClampedArray(4 * n);
-    colorizeInto(grid.values, n, range.min, range.max, lut);
-    const lut32 = new Uint32Array(lut.buffer);
+    const lut32 = new Uint32Array(texelColours(grid, range).buffer);
     const img32 = new Uint32Array(img.buffer);
     const { col, rowOff } = nearestPixelTaps(grid, opts, w, h, window);
     for (let py = 0; py < h; py++) {
