@@ -179,6 +179,16 @@ export function shellExtras(
 }
 
 /**
+ * What a scene's address says besides the entries the page rewrites by itself: the folds it opens
+ * (`open=`) and the end of asking (`ask=`). Two addresses with the same key differ only by the
+ * page's own rewrites; a different key means a link was followed (typed, pasted, back or forward).
+ */
+export function addressKey(hash: string): string {
+  const { path, query } = parseHash(hash);
+  return `${path}?${dropQueryParam(dropQueryParam(query, 'open'), 'ask')}`;
+}
+
+/**
  * `query` without the entries named `name` (e.g. `ask` once revealed); every other entry stays
  * exactly as written (its order and its encoding).
  */

@@ -9,7 +9,7 @@
  * How long the main thread's tasks take during the storm is a measurement, not a test:
  * `npm run perf:longtasks` (scripts/perf-longtasks.mjs, its "mixed" cases).
  */
-import { test, expect } from './fixtures';
+import { test, expect, openScene } from './fixtures';
 import { HOST_PATH, addressStorm, hostPage } from '../../scripts/addressStorm';
 import { statsJob, type Compile2, type StatsArgs } from '../../src/scenes/hemisphere/jobs';
 import { schema } from '../../src/scenes/hemisphere/params';
@@ -71,4 +71,33 @@ test('hemisphere at n = 200 000: after a storm of address changes the readouts a
   }
   const frame = page.frames().find((f) => f.url().includes('/app/'))!;
   expect(new URL(frame.url()).hash).toContain(`seed=${last}`);
+});
+
+test('a link followed in the same moment as a change on the page (a key on a handle): the link wins', async ({
+  page,
+}) => {
+  // A followed link changes the address at once; its hashchange comes as a later task. A key
+  // pressed in between changes the page's values before the link's are taken in: the page must
+  // not write its own address over the link, which would leave the link unread. (Whether the key's
+  // change comes first depends on frame timing; the hashchange is held back 0.3 s here, by a
+  // capture listener that stops it and sends it again, so that it always does.)
+  await openScene(page, '#/ray-sphere?o=-3,0.3,0.2&d=1,0,0');
+  const r = page.getByTestId('handle-r');
+  await r.focus();
+  await page.keyboard.press('ArrowDown');
+  await expect(page).toHaveURL(/[?&]r=0\.\d+(&|$)/);
+  const link = '#/ray-sphere?o=-3,0.3,0.2&d=1,0,0&c=0,0,0&r=2';
+  await r.evaluate((el, link) => {
+    const hold = (e: Event) => {
+      if (!e.isTrusted) return;
+      e.stopImmediatePropagation();
+      window.removeEventListener('hashchange', hold, true);
+      setTimeout(() => window.dispatchEvent(new HashChangeEvent('hashchange')), 300);
+    };
+    window.addEventListener('hashchange', hold, true);
+    location.hash = link;
+    el.dispatchEvent(new KeyboardEvent('keydown', { key: 'ArrowDown', bubbles: true }));
+  }, link);
+  await expect(r).toHaveAttribute('aria-valuetext', /^r = 2; /);
+  await expect(page).toHaveURL(new RegExp(`${link.replace(/[?]/g, '\\$&')}$`));
 });

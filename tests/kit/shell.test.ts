@@ -1,5 +1,12 @@
 import { describe, expect, it } from 'vitest';
-import { dropQueryParam, parseHash, parseShellFlags, queryProblems, shellExtras } from '../../src/kit/shell';
+import {
+  addressKey,
+  dropQueryParam,
+  parseHash,
+  parseShellFlags,
+  queryProblems,
+  shellExtras,
+} from '../../src/kit/shell';
 
 describe('parseHash', () => {
   it('splits path and query and normalises the path', () => {
@@ -8,6 +15,17 @@ describe('parseHash', () => {
     expect(parseHash('#/texture?u=0.4&v=0.24')).toEqual({ path: '/texture', query: 'u=0.4&v=0.24' });
     expect(parseHash('#texture/')).toEqual({ path: '/texture', query: '' });
     expect(parseHash('#/?present=1')).toEqual({ path: '/', query: 'present=1' });
+  });
+});
+
+describe('addressKey', () => {
+  it('leaves out the page’s own rewrites (open=, ask=) and keeps everything a followed link changes', () => {
+    const key = addressKey('#/hemisphere?lobe=custom&pdf=cos(theta)&open=settings');
+    expect(addressKey('#/hemisphere?lobe=custom&pdf=cos(theta)')).toBe(key);
+    expect(addressKey('#/hemisphere?lobe=custom&ask=1&pdf=cos(theta)&open=x,y')).toBe(key);
+    expect(addressKey('#/hemisphere?lobe=phong&exponent=8&n=1500&seed=7')).not.toBe(key);
+    expect(addressKey('#/hemisphere?lobe=custom&pdf=cos(theta)&present=1')).not.toBe(key);
+    expect(addressKey('#/monte-carlo?lobe=custom&pdf=cos(theta)')).not.toBe(key);
   });
 });
 
