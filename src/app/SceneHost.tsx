@@ -185,14 +185,14 @@ function LoadedScene({
   ]);
   // the values the scene opened with: "r" (classroom shortcut) always goes back to them
   const opening = useRef(parsed.values);
-  const lastQuery = useRef(query);
   // The address as this page last took it in or wrote it (window.location.hash as the browser
-  // holds it). A link followed on the page changes the address at once, but its hashchange comes
-  // as a later task: a change the page makes in between (a key on a handle, a typed expression
-  // whose URL write waited for it to compile) must not write the URL, or it would replace the
-  // followed link, and the hashchange, reading the page's own address back, would be ignored. So
-  // the URL is written only while it still says what this page last saw, the page's own fold and
-  // ask rewrites aside (addressKey); otherwise the coming hashchange takes the link's values.
+  // holds it): a hashchange to it again is the page's own. A link followed on the page changes the
+  // address at once, but its hashchange comes as a later task: a change the page makes in between
+  // (a key on a handle, a typed expression whose URL write waited for it to compile) must not
+  // write the URL, or it would replace the followed link, and the hashchange, reading the page's
+  // own address back, would be ignored. So the URL is written only while it still says what this
+  // page last saw, the page's own fold and ask rewrites aside (addressKey); otherwise the coming
+  // hashchange takes the link's values.
   const seenAddress = useRef(typeof window === 'undefined' ? '' : window.location.hash);
   // the latest values asked for, ahead of the render that shows them (./paramChanges)
   const [changes] = useState(() => paramChanges(parsed.values));
@@ -202,8 +202,7 @@ function LoadedScene({
   useEffect(() => {
     const on = () => {
       const { path, query: q } = parseHash(window.location.hash);
-      if (path !== info.path || q === lastQuery.current) return;
-      lastQuery.current = q;
+      if (path !== info.path || window.location.hash === seenAddress.current) return;
       seenAddress.current = window.location.hash;
       const next = changes.fromAddress(parseParams(schema, q).values);
       startTransition(() => setValues(next));
@@ -280,7 +279,6 @@ function LoadedScene({
         } catch {
           /* some sandboxed iframes forbid it; the state still lives in the page */
         }
-        lastQuery.current = qs;
         seenAddress.current = window.location.hash;
       });
     },
