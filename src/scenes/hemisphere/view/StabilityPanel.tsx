@@ -4,7 +4,7 @@
  * core/sampling/stability).
  */
 import { useEffect, useState } from 'react';
-import { MathTex, Notice, formatNumber } from '../../../ui';
+import { MathTex, Notice, formatNumber, keepTextParenthesesTogether } from '../../../ui';
 import {
   STABILITY_FORMS,
   STABILITY_XIS,
@@ -20,6 +20,14 @@ function xiLabel(xi: number): string {
   if (xi > 0.5 && xi < 1) return `1 − ${formatNumber(1 - xi, 2)}`;
   return formatNumber(xi, 3);
 }
+
+// plain-text formulas: the line wraps outside their parentheses, never inside
+const WHY_STABLE_FORMS = keepTextParenthesesTogether(
+  '½ arccos(1 − 2ξ) returns exactly 0 once ξ < 2⁻⁵⁴ (1 − 2ξ rounds to 1) and keeps only half the ' +
+    'digits above that; arcsin √ξ is accurate there but near ξ = 1 amplifies the rounding of √ξ (arcsin is ' +
+    'ill-conditioned at 1). ln(cξ + 1) loses the small cξ to the +1. The sampler uses sin θ = √ξ₁, ' +
+    'cos θ = √(1 − ξ₁) and log1p(expm1(2π) ξ₂), all within an ulp or two everywhere.',
+);
 
 export function StabilityPanel() {
   const [rows, setRows] = useState<StabilityRow[] | null>(null);
@@ -83,12 +91,7 @@ export function StabilityPanel() {
           />
         );
       })}
-      <p className="small">
-        ½ arccos(1 − 2ξ) returns exactly 0 once ξ &lt; 2⁻⁵⁴ (1 − 2ξ rounds to 1) and keeps only half the
-        digits above that; arcsin √ξ is accurate there but near ξ = 1 amplifies the rounding of √ξ (arcsin is
-        ill-conditioned at 1). ln(cξ + 1) loses the small cξ to the +1. The sampler uses sin θ = √ξ₁, cos θ =
-        √(1 − ξ₁) and log1p(expm1(2π) ξ₂), all within an ulp or two everywhere.
-      </p>
+      <p className="small">{WHY_STABLE_FORMS}</p>
     </div>
   );
 }

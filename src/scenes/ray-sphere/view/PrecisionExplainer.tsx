@@ -3,7 +3,7 @@
  * double-double reference compute instead: static text and formulas under the precision table.
  */
 import { memo } from 'react';
-import { MathTex } from '../../../ui';
+import { MathTex, keepTextParenthesesTogether } from '../../../ui';
 
 const DISC_TEX =
   `{\\Delta = 4a\\left(r^2 - \\lVert \\boldsymbol\\ell \\rVert^2\\right)},\\allowbreak\\qquad ` +
@@ -27,6 +27,15 @@ function RobustForm() {
   );
 }
 
+// plain-text formulas: the line wraps outside their parentheses, never inside
+const WHY_TEXTBOOK_FAILS = keepTextParenthesesTogether(
+  'Why the textbook form fails: when the sphere is far (|f| ≫ r), b² and 4ac are both about 4a|f|², and ' +
+    'their difference, about 4a r², is what is left after cancelling them. Each carries a rounding error of ' +
+    'about u·4a|f|² (u = 2⁻⁵³), so Δ’s relative error is about u·(|f|/r)²: a millionth at |f| ≈ 10⁵ r, ' +
+    'everything at |f| ≈ 10⁸ r. The robust form first finds the point of the line closest to the centre, ' +
+    'f − (f·d / a) d, whose length is comparable to r, so nothing large is subtracted.',
+);
+
 /** Static: memoised so a re-render of the scene never reaches it. */
 export const PrecisionExplainer = memo(function PrecisionExplainer() {
   return (
@@ -38,13 +47,7 @@ export const PrecisionExplainer = memo(function PrecisionExplainer() {
         that only the genuine cancellation is left. It is checked against 400-digit mathjs BigNumber
         arithmetic in the tests.
       </p>
-      <p>
-        Why the textbook form fails: when the sphere is far (|f| ≫ r), b² and 4ac are both about 4a|f|², and
-        their difference, about 4a r², is what is left after cancelling them. Each carries a rounding error of
-        about u·4a|f|² (u = 2⁻⁵³), so Δ’s relative error is about u·(|f|/r)²: a millionth at |f| ≈ 10⁵ r,
-        everything at |f| ≈ 10⁸ r. The robust form first finds the point of the line closest to the centre, f
-        − (f·d / a) d, whose length is comparable to r, so nothing large is subtracted.
-      </p>
+      <p>{WHY_TEXTBOOK_FAILS}</p>
     </div>
   );
 });
