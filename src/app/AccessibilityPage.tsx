@@ -6,6 +6,7 @@
 import { lazy, Suspense, useEffect, useMemo, useState } from 'react';
 import type { ShellFlags } from '../kit/shell';
 import { RouteNotice } from '../ui/RouteNotice';
+import { keepTextParenthesesTogether } from '../ui/texBreaks';
 import { DescribedFigure } from '../ui/describe';
 import { AudioTrace } from '../ui/audioTrace';
 import { ShowAsTable } from '../ui/DataTable';
@@ -93,8 +94,9 @@ export default function AccessibilityPage({ flags, query = '' }: { flags: ShellF
       </ul>
       <h2>Try it</h2>
       <p>
-        A ray passes a sphere&rsquo;s centre at distance {DEMO_B}: along the ray, g(t) = (t − 2)² + {DEMO_B}²
-        − r² is negative inside the sphere. Change the radius and listen.
+        A ray passes a sphere&rsquo;s centre at distance {DEMO_B}: along the ray, g(t) ={' '}
+        {keepTextParenthesesTogether('(t − 2)²')} + {DEMO_B}² − r² is negative inside the sphere. Change the
+        radius and listen.
       </p>
       <div className="a11y-demo">
         <p className="a11y-demo-slider">

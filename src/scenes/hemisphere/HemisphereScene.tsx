@@ -8,7 +8,7 @@
  */
 import { useMemo, type ReactNode } from 'react';
 import type { SceneProps } from '../../kit/scene';
-import { useCompiled, ExprField, Notice, MathTex, formatNumber } from '../../ui';
+import { useCompiled, ExprField, Notice, MathTex, formatNumber, keepTextParenthesesTogether } from '../../ui';
 import { Fold } from '../../ui/Fold';
 import { ExamQuestion, ExploreFurther } from '../../ui/exam';
 import { useWorkerJob } from '../../workers';
@@ -247,7 +247,7 @@ export default function HemisphereScene(props: SceneProps<HemisphereSchema>) {
               ) : null}
               <p className="small">
                 Both estimators use the same N points (ξ₁, ξ₂): the uniform one warps them to the hemisphere
-                uniformly (p = 1/2π), the importance one with the chosen p
+                uniformly {keepTextParenthesesTogether('(p = 1/2π)')}, the importance one with the chosen p
                 {baseLobe ? ` (${baseLobe.label})` : ''}. With f = cos θ and the cosine lobe every term f/p
                 equals π: zero variance.
               </p>

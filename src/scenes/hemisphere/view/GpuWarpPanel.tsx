@@ -49,9 +49,9 @@ function Float32WarpTable() {
       }
       columns={
         <>
-          <th scope="col">θ = ½ arccos(1 − 2ξ)</th>
+          <th scope="col">{keepTextParenthesesTogether('θ = ½ arccos(1 − 2ξ)')}</th>
           <th scope="col">θ = arcsin √ξ</th>
-          <th scope="col">φ = ln(c ξ + 1)</th>
+          <th scope="col">{keepTextParenthesesTogether('φ = ln(c ξ + 1)')}</th>
           <th scope="col">φ = log1p(c ξ)</th>
         </>
       }
@@ -215,10 +215,11 @@ export function GpuWarpPanel({ seed }: { seed: number }) {
     <div className="gpu-warp" data-testid="gpu-warp-panel">
       <Float32WarpTable />
       <p className="small">
-        In float32 (u₃₂ = 2⁻²⁴ ≈ 6·10⁻⁸) the failures the double table shows at ξ ≈ 10⁻¹⁶ come at ξ ≈ 10⁻⁷: 1
-        − 2ξ₁ rounds to 1 below ξ₁ = 2⁻²⁵ (θ = 0 for a sample whose θ is √ξ₁ ≈ 10⁻⁴), c ξ₂ + 1 swallows c ξ₂,
-        and near ξ₁ → 1 arcsin magnifies the rounding of √ξ₁ a thousandfold. A GPU’s random numbers have 24
-        bits {keepTextParenthesesTogether('(ξ = k·2⁻²⁴)')}, so the first failures are samples it really draws.
+        In float32 {keepTextParenthesesTogether('(u₃₂ = 2⁻²⁴ ≈ 6·10⁻⁸)')} the failures the double table shows
+        at ξ ≈ 10⁻¹⁶ come at ξ ≈ 10⁻⁷: 1 − 2ξ₁ rounds to 1 below ξ₁ = 2⁻²⁵ (θ = 0 for a sample whose θ is √ξ₁
+        ≈ 10⁻⁴), c ξ₂ + 1 swallows c ξ₂, and near ξ₁ → 1 arcsin magnifies the rounding of √ξ₁ a thousandfold.
+        A GPU’s random numbers have 24 bits {keepTextParenthesesTogether('(ξ = k·2⁻²⁴)')}, so the first
+        failures are samples it really draws.
       </p>
       <h3>10⁶ directions from a vertex shader</h3>
       <p className="small">

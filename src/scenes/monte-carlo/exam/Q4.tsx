@@ -5,7 +5,7 @@
  * The race as a table and as sound is folded under the race.
  */
 import type { ReactNode } from 'react';
-import { Revealed } from '../../../ui';
+import { Revealed, keepTextParenthesesTogether } from '../../../ui';
 import { Fold } from '../../../ui/Fold';
 import { EXAM_F, EXAM_SAMPLES } from '../exam';
 import { EXAM_A, EXAM_B } from '../integral';
@@ -44,8 +44,8 @@ export function Q4Intro({
   return (
     <>
       <p>
-        I = ∫₀² (x + 2)² dx: (a) analytically, (b) uniform Monte Carlo, (c) importance sampling, (d)
-        convergence.
+        I = ∫₀² {keepTextParenthesesTogether('(x + 2)²')} dx: (a) analytically, (b) uniform Monte Carlo, (c)
+        importance sampling, (d) convergence.
         {!isExamConfig ? (
           <>
             {' '}

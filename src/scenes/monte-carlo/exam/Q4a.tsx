@@ -2,7 +2,16 @@
  * Exam Q4(a): the integral, analytically. The numbers follow the page's f and [a, b] when f is a
  * square (x + c)²; otherwise the exam's integrand is derived and the page's f has its readout.
  */
-import { Derivation, ExamPart, Revealed, formatNumber, LiveAnswer, MathTex, Readout } from '../../../ui';
+import {
+  Derivation,
+  ExamPart,
+  Revealed,
+  formatNumber,
+  keepTextParenthesesTogether,
+  LiveAnswer,
+  MathTex,
+  Readout,
+} from '../../../ui';
 import { squareAntiderivative } from '../exam';
 import type { Exact } from '../integral';
 import { MathBlock, n4, shifted, thirds, Worked } from '../view/examMath';
@@ -31,15 +40,15 @@ export function Q4a({
     <ExamPart
       id="4a"
       title="The integral, analytically"
-      asks={<>Evaluate I = ∫₀² (x + 2)² dx analytically.</>}
+      asks={<>Evaluate I = ∫₀² {keepTextParenthesesTogether('(x + 2)²')} dx analytically.</>}
     >
       <Revealed ask={ask} what="the derivation and the answer">
         <Worked>
           <Derivation testId="derivation-4a">
             {!isSquare ? (
               <p className="mc-note">
-                Your f is not of the form (x + c)²; this is the exam’s integrand. Your f’s exact integral (by
-                quadrature) is the readout below.
+                Your f is not of the form {keepTextParenthesesTogether('(x + c)²')}; this is the exam’s
+                integrand. Your f’s exact integral (by quadrature) is the readout below.
               </p>
             ) : null}
             <p>Expand the square, integrate term by term, and evaluate the antiderivative at the limits:</p>

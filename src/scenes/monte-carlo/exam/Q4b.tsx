@@ -4,7 +4,7 @@
  * given samples, the chosen pdf and sequence) follows as `estimate`.
  */
 import type { ReactNode } from 'react';
-import { ExamPart, formatNumber, MathTex, Readout } from '../../../ui';
+import { ExamPart, formatNumber, keepTextParenthesesTogether, MathTex, Readout } from '../../../ui';
 import { formatCount } from '../../../ui/format';
 import { EXAM_SAMPLES, roundTo, type KeyNote } from '../exam';
 import type { SampleTable } from '../sampleTable';
@@ -102,8 +102,8 @@ export function Q4b({
         after={<KeyFigures keyNotes={keyNotes} a={a} b={b} />}
       >
         <p>
-          The pdf is p = 1/(b − a) = {formatNumber(p, 6)}. Evaluate f at each sample, divide by p, and average
-          over the N = {N} samples:
+          The pdf is p = {keepTextParenthesesTogether('1/(b − a)')} = {formatNumber(p, 6)}. Evaluate f at each
+          sample, divide by p, and average over the N = {N} samples:
         </p>
         <MathBlock>
           <MathTex

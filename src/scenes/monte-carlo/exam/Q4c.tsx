@@ -2,7 +2,7 @@
  * Exam Q4(c): importance sampling with p ∝ f. For a square f = (x + c)² the derivation is written
  * out with the page's numbers; for another f the pdf is the tabulated |f| / ∫|f| dx.
  */
-import { ExamPart, formatNumber, MathTex, Readout } from '../../../ui';
+import { ExamPart, formatNumber, keepTextParenthesesTogether, MathTex, Readout } from '../../../ui';
 import { estimateHasZeroVariance } from '../zeroVariance';
 import { squareNormalizer } from '../exam';
 import type { SampleTable } from '../sampleTable';
@@ -50,7 +50,10 @@ export function Q4c({
       id="4c"
       title="Importance sampling with p ∝ f"
       asks={
-        <>Repeat (b) with importance sampling, using a pdf proportional to the integrand, p(x) ∝ (x + 2)².</>
+        <>
+          Repeat (b) with importance sampling, using a pdf proportional to the integrand, p(x) ∝{' '}
+          {keepTextParenthesesTogether('(x + 2)²')}.
+        </>
       }
     >
       <WorkedAnswer

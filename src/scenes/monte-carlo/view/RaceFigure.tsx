@@ -15,6 +15,7 @@ import { memo, useLayoutEffect, useMemo, useRef } from 'react';
 import {
   DescribedFigure,
   formatNumber,
+  keepTextParenthesesTogether,
   Revealed,
   STRATEGY_COLOR,
   TEXT_HZ,
@@ -412,8 +413,8 @@ export const RaceFigure = memo(function RaceFigure({
         <p className="mc-note mc-race-note">
           Solid blue: uniform; dashed orange: importance (its pdf dashed on f). Grey dashes: the exact I ={' '}
           {formatNumber(I, 8)}; the grey line: the N⁻½ trend σ/√N. Both estimators use the same random numbers
-          ξᵢ (seeded): uniform puts xᵢ = a + (b − a)ξᵢ, importance xᵢ = P⁻¹(ξᵢ). Errors below{' '}
-          {pow10Text(Math.round(Math.log10(fig.floor)))} sit on the bottom line.
+          ξᵢ (seeded): uniform puts xᵢ = a + {keepTextParenthesesTogether('(b − a)ξᵢ')}, importance xᵢ =
+          P⁻¹(ξᵢ). Errors below {pow10Text(Math.round(Math.log10(fig.floor)))} sit on the bottom line.
         </p>
       </DescribedFigure>
     </div>

@@ -4,7 +4,15 @@
  * derivation beside its answer).
  */
 import type { ReactNode } from 'react';
-import { Derivation, formatNumber, KeyNote, LiveAnswer, MathTex, Revealed } from '../../../ui';
+import {
+  Derivation,
+  formatNumber,
+  keepTextParenthesesTogether,
+  KeyNote,
+  LiveAnswer,
+  MathTex,
+  Revealed,
+} from '../../../ui';
 
 /** A number for TeX (six significant digits), or a dash when it is not finite. */
 export const n4 = (x: number) => (Number.isFinite(x) ? formatNumber(x, 6) : '\\text{—}');
@@ -61,8 +69,9 @@ export function MathBlock({
 export function SumIndexNote({ part }: { part: string }) {
   return (
     <KeyNote testId={`key-sum-${part}`}>
-      the key writes <MathTex tex={String.raw`\tfrac14\sum_{i=0}^{4}`} />: that is five terms (i = 0, 1, 2, 3,
-      4) divided by 4. The four samples are x₁ … x₄, so the sum runs from i = 1 to 4 (
+      the key writes <MathTex tex={String.raw`\tfrac14\sum_{i=0}^{4}`} />: that is five terms{' '}
+      {keepTextParenthesesTogether('(i = 0, 1, 2, 3, 4)')} divided by 4. The four samples are x₁ … x₄, so the
+      sum runs from i = 1 to 4 (
       <MathTex tex={String.raw`\tfrac14\sum_{i=1}^{4}`} />
       ), as its own arithmetic (four values added) does.
     </KeyNote>

@@ -1,3 +1,5 @@
+import { keepTextParenthesesTogether } from '../../../ui/texBreaks';
+
 /** The render lab's explanations, folded: what is drawn, how, and where each piece is taught. */
 export function About() {
   return (
@@ -21,10 +23,10 @@ export function About() {
         samples). With more than one bounce the path continues, with Russian roulette after three.
       </p>
       <p>
-        relMSE is (1/N) Σ (I − R)² / (R² + 0.01) over the pixels that have a closed-form reference: the exact
-        radiance (Lambert’s polygon formula on an unoccluded Lambertian point with one bounce, the furnace’s
-        exact 1, a light’s own radiance) averaged over 3 × 3 points of the pixel. Shadowed, glossy and
-        silhouette pixels have none.
+        relMSE is {keepTextParenthesesTogether('(1/N) Σ (I − R)² / (R² + 0.01)')} over the pixels that have a
+        closed-form reference: the exact radiance (Lambert’s polygon formula on an unoccluded Lambertian point
+        with one bounce, the furnace’s exact 1, a light’s own radiance) averaged over 3 × 3 points of the
+        pixel. Shadowed, glossy and silhouette pixels have none.
       </p>
       <p>
         Sources: E. Veach, <cite>Robust Monte Carlo Methods for Light Transport Simulation</cite> (1997), ch.

@@ -7,7 +7,7 @@
  * CPU's float64 naive sum at the same count.
  */
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
-import { Notice, Readout } from '../../../ui';
+import { keepTextParenthesesTogether, Notice, Readout } from '../../../ui';
 import { formatNumber } from '../../../core/format';
 import { buildScene } from '../../../core/render/scene';
 import {
@@ -134,13 +134,14 @@ export default function Compare({ m, support }: { m: RenderModel; support: GpuSu
       <p>
         Both renderers draw the page&apos;s image, {m.res} × {m.res}, at {COMPARE_SPP} samples per pixel from
         different random streams, and keep each pixel&apos;s sum of squares, so each pixel is a mean a with
-        its standard error se. Where the two compute the same estimator, z = (a_GPU − a_CPU) / √(se_GPU² +
-        se_CPU²) is centred on 0 at every pixel (float32 rounding counts as {ROUNDING_ULPS} ulps of noise).
-        The test: T = Σz / √(Σz²) over the pixels with noise, which is no wider than a standard normal when
-        each z is symmetric about 0, as it is when the two sides could be swapped, however far from normal the
-        pixels are (Efron 1969); T² against χ² with one degree of freedom gives p. A renderer too bright or
-        too dark over the image fails at α = {COMPARE_ALPHA}; pixels with no noise on either side (the white
-        furnace under cosine sampling) must agree to float32 rounding.
+        its standard error se. Where the two compute the same estimator, z ={' '}
+        {keepTextParenthesesTogether('(a_GPU − a_CPU) / √(se_GPU² + se_CPU²)')} is centred on 0 at every pixel
+        (float32 rounding counts as {ROUNDING_ULPS} ulps of noise). The test: T = Σz / √(Σz²) over the pixels
+        with noise, which is no wider than a standard normal when each z is symmetric about 0, as it is when
+        the two sides could be swapped, however far from normal the pixels are (Efron 1969); T² against χ²
+        with one degree of freedom gives p. A renderer too bright or too dark over the image fails at α ={' '}
+        {COMPARE_ALPHA}; pixels with no noise on either side (the white furnace under cosine sampling) must
+        agree to float32 rounding.
       </p>
       <p role="status" data-testid="compare-status">
         {gpu.error || cpu.error

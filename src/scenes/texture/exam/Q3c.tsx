@@ -8,6 +8,7 @@ import type { SceneProps } from '../../../kit/scene';
 import { ScrollBox } from '../../../ui/ScrollBox';
 import { Fold } from '../../../ui/Fold';
 import {
+  keepTextParenthesesTogether,
   DescribedFigure,
   Derivation,
   ExamPart,
@@ -117,7 +118,7 @@ export const Q3c = memo(function Q3c({ params, setParams, sphere, src, present, 
             onClick={() => setParams({ x: 1, y: 1, z: Math.SQRT2 })}
             data-testid="exam-point"
           >
-            The exam’s point (y/x = 1, z/r = √2/2)
+            The exam’s point {keepTextParenthesesTogether('(y/x = 1, z/r = √2/2)')}
           </button>
         </div>
         <div className="tx-sphere-fig">

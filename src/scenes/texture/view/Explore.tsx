@@ -3,7 +3,7 @@
  * creases, and what the spherical mapping does at its seam and poles.
  */
 import { useMemo, useRef, type ComponentProps } from 'react';
-import { Panel, useAnimFrame, useStillT } from '../../../ui';
+import { keepTextParenthesesTogether, Panel, useAnimFrame, useStillT } from '../../../ui';
 import type { LookupOptions } from '../../../core/texture';
 import { creases } from '../creases';
 import type { SphereModel } from '../sphere';
@@ -117,9 +117,10 @@ export function SeamPanel({
         left and right columns match (or the lookup repeats with texel centres), the picture jumps there.
       </p>
       <p className="tx-small">
-        <strong>Poles.</strong> On the z axis (x = y = 0) every φ names the same point, so u is undefined; we
-        define u = 0. θ is computed as <span className="tx-formula">atan2(√(x² + y²), z)</span>, which equals
-        arccos(z/r) but keeps full precision near the poles.
+        <strong>Poles.</strong> On the z axis {keepTextParenthesesTogether('(x = y = 0)')} every φ names the
+        same point, so u is undefined; we define u = 0. θ is computed as{' '}
+        <span className="tx-formula">{keepTextParenthesesTogether('atan2(√(x² + y²), z)')}</span>, which
+        equals arccos(z/r) but keeps full precision near the poles.
       </p>
       {sphere.ok ? (
         <details className="tx-details">

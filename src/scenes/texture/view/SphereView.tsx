@@ -9,6 +9,7 @@ import type * as THREE from 'three';
 import { Viewport, type ViewportContext } from '../../../three';
 import { nodeCoord, type LookupOptions, type TextureGrid } from '../../../core/texture';
 import { textureImage } from '../textureImage';
+import { keepTextParenthesesTogether } from '../../../ui/texBreaks';
 import type { ShownTexture } from '../model';
 import './SphereView.css';
 
@@ -256,8 +257,8 @@ export function SphereView({ grid, opts, range, normalize, dir, onPick, height }
       toolsAt="top"
     >
       <div className="tx-sphere-legend" aria-hidden="true">
-        <span className="tx-seam-key" /> seam φ = 0 (u = 0 ≡ 1) · grey: pole axis · white: the grid’s node
-        lines
+        <span className="tx-seam-key" /> seam φ = 0 {keepTextParenthesesTogether('(u = 0 ≡ 1)')} · grey: pole
+        axis · white: the grid’s node lines
       </div>
     </Viewport>
   );

@@ -2,7 +2,7 @@
  * The exam key's worked steps with live numbers (TeX built from the model's lookups).
  */
 import { memo, useLayoutEffect, useRef } from 'react';
-import { MathTex } from '../../../ui';
+import { keepTextParenthesesTogether, MathTex } from '../../../ui';
 import type { LookupOptions, TextureGrid } from '../../../core/texture';
 import type { Lookup } from '../model';
 import { formatSignificant } from '../../../core/format';
@@ -154,8 +154,10 @@ export const NearestWorked = memo(function NearestWorked({
   return (
     <div className="tx-worked" data-testid="worked-nearest">
       <p className="tx-small">
-        The nodes sit at u = i/(N − 1), v = j/(N − 1) (corner nodes, the exam’s) or at the texel centres (i +
-        ½)/N; nearest-neighbour lookup takes the value of the node closest to the query
+        The nodes sit at u = {keepTextParenthesesTogether('i/(N − 1)')}, v ={' '}
+        {keepTextParenthesesTogether('j/(N − 1)')} (corner nodes, the exam’s) or at the texel centres{' '}
+        {keepTextParenthesesTogether('(i + ½)/N')}; nearest-neighbour lookup takes the value of the node
+        closest to the query
         {opts.align === 'center' ? ' (the texel whose square holds it)' : ''}, without blending.
       </p>
       <MathSteps label="Nearest-neighbour steps" steps={nearestBlocks(grid, q, opts)} exact />
