@@ -6,22 +6,15 @@
  * no-break spaces. Text inside <code>, <kbd>, <samp> and <pre> is left alone (code, not prose).
  * The whole-page browser test checks the rendered page at one width; this checks every width.
  */
-import { readdirSync, readFileSync } from 'node:fs';
+import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import ts from 'typescript';
 import { describe, expect, it } from 'vitest';
 import { textFormulaGroups } from '../../src/ui/texBreaks';
+import { filesUnder } from './sourceFiles';
 
 const root = path.resolve(__dirname, '../..');
 const CODE_TAGS = new Set(['code', 'kbd', 'samp', 'pre']);
-
-function tsxFiles(dir: string): string[] {
-  return readdirSync(dir, { withFileTypes: true }).flatMap((e) => {
-    const p = path.join(dir, e.name);
-    if (e.isDirectory()) return tsxFiles(p);
-    return e.name.endsWith('.tsx') ? [p] : [];
-  });
-}
 
 function insideCode(node: ts.Node): boolean {
   for (let n: ts.Node | undefined = node.parent; n; n = n.parent) {
@@ -65,7 +58,7 @@ describe('plain-text formulas in JSX', () => {
   });
 
   it('no component under src/ writes a formula group that can break', () => {
-    const found = tsxFiles(path.join(root, 'src')).flatMap((f) =>
+    const found = filesUnder(path.join(root, 'src'), /\.tsx$/).flatMap((f) =>
       breakableFormulas(readFileSync(f, 'utf8'), f).map((o) => `${path.relative(root, f)}:${o}`),
     );
     expect(found).toEqual([]);

@@ -5,19 +5,12 @@
  * size variable, `inherit`, `max()` and `clamp()` (classroom minimums, page titles), 1em, and the
  * typeset formulas' 1.08em (KaTeX's own fonts, a fixed ratio to the text around them).
  */
-import { readdirSync, readFileSync } from 'node:fs';
+import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import { describe, expect, it } from 'vitest';
+import { filesUnder } from './sourceFiles';
 
 const root = path.resolve(__dirname, '../..');
-
-function cssFiles(dir: string): string[] {
-  return readdirSync(dir, { withFileTypes: true }).flatMap((e) => {
-    const p = path.join(dir, e.name);
-    if (e.isDirectory()) return cssFiles(p);
-    return e.name.endsWith('.css') ? [p] : [];
-  });
-}
 
 const SCALE = /^var\(--text-(xs|s|m|l|xl)\)$/;
 const FREE = [
@@ -57,7 +50,7 @@ describe('the type scale', () => {
   });
 
   it('every stylesheet under src/ sizes its text on the scale', () => {
-    const found = cssFiles(path.join(root, 'src')).flatMap((f) =>
+    const found = filesUnder(path.join(root, 'src'), /\.css$/).flatMap((f) =>
       offScale(readFileSync(f, 'utf8')).map((o) => `${path.relative(root, f)}:${o}`),
     );
     expect(found).toEqual([]);

@@ -2,6 +2,7 @@ import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { texPreview, texPreviewParts, type PreviewPart } from '../../src/ui/texPreview';
 import { NAMED_OPERATORS } from '../../src/ui/texSymbols';
+import { filesUnder } from '../lint/sourceFiles';
 
 describe('texPreview: TeX read as plain text while KaTeX is on its way', () => {
   it('reads the formulas of the exam as a person would write them', () => {
@@ -99,17 +100,8 @@ describe('texPreview: the commands the scenes use', () => {
   });
 
   it('every command in the scenes, the practice questions and the guide is read, never printed by name', async () => {
-    const { readFileSync, readdirSync, statSync } = await import('node:fs');
-    const { join } = await import('node:path');
-    const files: string[] = [];
-    const walk = (d: string) => {
-      for (const f of readdirSync(d)) {
-        const p = join(d, f);
-        if (statSync(p).isDirectory()) walk(p);
-        else if (/\.tsx?$/.test(f)) files.push(p);
-      }
-    };
-    for (const d of ['src/scenes', 'src/practice', 'src/guide']) walk(d);
+    const { readFileSync } = await import('node:fs');
+    const files = ['src/scenes', 'src/practice', 'src/guide'].flatMap((d) => filesUnder(d, /\.tsx?$/));
     const names = new Set<string>();
     for (const f of files) {
       const text = readFileSync(f, 'utf8');

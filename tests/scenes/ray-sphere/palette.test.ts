@@ -4,10 +4,10 @@
  * colours are the cross-section's CSS variables and keep 3 : 1 on the viewport, and no scene file
  * draws a line in a colour of its own outside those.
  */
-import { readdirSync, readFileSync, statSync } from 'node:fs';
-import { join } from 'node:path';
+import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { contrast, cssVars, parseHex } from '../../ui/colorVision';
+import { filesUnder } from '../../lint/sourceFiles';
 import { VIEW3D_COLOURS } from '../../../src/scenes/ray-sphere/view/View3D';
 import { ERROR_COLOURS } from '../../../src/scenes/ray-sphere/view/errorCurves';
 
@@ -67,20 +67,12 @@ describe('the 3D view', () => {
 });
 
 describe('hard-coded colours', () => {
-  const files = (dir: string): string[] =>
-    readdirSync(dir).flatMap((f) => {
-      const p = join(dir, f);
-      return statSync(p).isDirectory() ? files(p) : /\.(tsx?|css)$/.test(f) ? [p] : [];
-    });
-
   it('no hex colour in the scene’s stylesheet outside its theme blocks, none in its plot code', () => {
     const rules = sceneCss.replace(/:root(\[data-theme='dark'\])?\s*\{[^}]*\}/g, '');
     expect(rules.match(/#[0-9a-f]{3,8}\b/gi) ?? []).toEqual([]);
-    const found = files(SCENE)
-      .filter((f) => !f.endsWith('.css'))
-      .flatMap((f) =>
-        (readFileSync(f, 'utf8').match(/['"`]#[0-9a-f]{3,8}['"`]/gi) ?? []).map((m) => `${f}: ${m}`),
-      );
+    const found = filesUnder(SCENE, /\.tsx?$/).flatMap((f) =>
+      (readFileSync(f, 'utf8').match(/['"`]#[0-9a-f]{3,8}['"`]/gi) ?? []).map((m) => `${f}: ${m}`),
+    );
     expect(found).toEqual([]);
   });
 });
