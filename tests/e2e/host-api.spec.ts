@@ -165,14 +165,17 @@ test('the example host page: set, get, subscribe, change events and errors; the 
     await page.mouse.down();
     await page.mouse.move(box.x + box.width * 0.75, box.y + box.height * 0.25, { steps: 5 });
     await page.mouse.up();
+    // the drag sends an event per step on its way; wait for the one where it ended
+    type UserEvent = { state: { scene: string; params: { u: number } } };
+    const userEvents = async () => (await events()).filter((e) => e.cause === 'user') as UserEvent[];
     await expect
-      .poll(async () => (await events()).filter((e) => e.cause === 'user').length)
-      .toBeGreaterThan(n0);
-    const last = (await events()).filter((e) => e.cause === 'user').at(-1) as {
-      state: { scene: string; params: { u: number } };
-    };
+      .poll(async () => {
+        const user = await userEvents();
+        return user.length > n0 ? user.at(-1)!.state.params.u : null;
+      })
+      .toBeCloseTo(-0.08 + 1.16 * 0.75, 1);
+    const last = (await userEvents()).at(-1)!;
     expect(last.state.scene).toBe('texture');
-    expect(last.state.params.u).toBeCloseTo(-0.08 + 1.16 * 0.75, 1);
     expect((await api<Reply>(page, 'get')).state!.params.u).toBe(last.state.params.u);
 
     // a practice verdict (the practice pages dispatch rml:practice-verdict) reaches the subscriber as
