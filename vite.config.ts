@@ -131,19 +131,33 @@ export default defineConfig(({ mode }) => {
         ? { treeshake }
         : {
             treeshake,
+            // inlining common chunks needs it: the entries' unused exports may be dropped (the
+            // entry is index.html's script, which nothing imports)
+            preserveEntrySignatures: false,
             output: {
               // three.js, Plotly and KaTeX get recognisable chunk names (vendor-three-*.js, …) for the
               // budgets. mathjs is left to the default splitting on purpose: the parse-only expression
               // engine (src/core/expr) loads only what it needs.
               // Each scene's lazy chunk is named after it (scene-texture-*.js, …); naming only, so the
               // default splitting (shared modules in shared chunks) is untouched.
-              chunkFileNames: (chunk: { facadeModuleId?: string | null }) => {
-                const m = /[\\/]src[\\/]scenes[\\/]([a-z0-9-]+)[\\/]index\.ts$/.exec(
-                  chunk.facadeModuleId ?? '',
-                );
-                return m ? `assets/scene-${m[1]}-[hash].js` : 'assets/[name]-[hash].js';
+              // (the scene's module is found among the chunk's modules: with entry signatures not
+              // preserved, a scene's index may share its chunk with modules only that scene uses)
+              chunkFileNames: (chunk: { facadeModuleId?: string | null; moduleIds?: string[] }) => {
+                for (const id of [chunk.facadeModuleId ?? '', ...(chunk.moduleIds ?? [])]) {
+                  const m = /[\\/]src[\\/]scenes[\\/]([a-z0-9-]+)[\\/]index\.ts$/.exec(id);
+                  if (m) return `assets/scene-${m[1]}-[hash].js`;
+                }
+                return 'assets/[name]-[hash].js';
               },
               codeSplitting: {
+                // Small shared chunks are copied into the chunks that read them instead of being
+                // files of their own (rolldown's inline common chunks; a registry in its runtime
+                // keeps one copy of each module's state). The default splitting put most of the
+                // math core's 0-4 kB modules in files of their own: a scene loaded about 20 script
+                // files before its first paint, in rounds over a phone's connections. Stylesheets'
+                // modules stay out (Vite emits a style module's CSS from every chunk that lists it).
+                // Size: the chunk's source before minification.
+                experimentalInlineCommonChunks: { maxSize: 32 * 1024, exclude: /\.css(\?|$)/ },
                 groups: [
                   { name: 'vendor-three', test: /[\\/]node_modules[\\/]three[\\/]/ },
                   { name: 'vendor-plotly', test: /[\\/]node_modules[\\/]plotly\.js-cartesian-dist-min[\\/]/ },
