@@ -9,6 +9,7 @@
  *  - each heavy library and each scene chunk under its own ceiling;
  *  - what the practice index (`#/practice`) and each question page download beyond the entry
  *    under their own ceilings;
+ *  - the script files each route asks for before its first paint under a ceiling;
  *  - the single-file copy (dist-single/index.html, when built) under its own ceiling.
  * Exits 1 and says which budget broke.
  */
@@ -115,6 +116,21 @@ for (const [route, limit] of ROUTE_LIMITS) {
     failures.push(`#/${route} downloads ${kB(s)} kB gzipped beyond the entry, over ${kB(limit)} kB`);
 }
 
+// Script files each route asks for before its first paint: the entry's and those the preload map
+// lists for the route. Each is a request, and a phone fetches them a few at a time, in rounds of
+// round trips (vite.config.ts copies small shared chunks into their readers to keep this low). The
+// worksheet loads all six questions' generators for printing.
+const SCRIPTS_LIMIT = 12;
+const SCRIPTS_LIMIT_FOR = { 'practice/sheet': 18 };
+const entryScripts = [...entryFiles].filter((f) => f.endsWith('.js')).length;
+const scriptCounts = [];
+for (const [route, files] of Object.entries(preloadMap ?? {})) {
+  const n = entryScripts + files.js.length;
+  const limit = SCRIPTS_LIMIT_FOR[route] ?? SCRIPTS_LIMIT;
+  scriptCounts.push(`#/${route} ${n}`);
+  if (n > limit) failures.push(`#/${route} asks for ${n} script files before its first paint, over ${limit}`);
+}
+
 // The single-file copy (npm run build:single): one HTML with everything inlined, for LMS uploads
 // and USB sticks. Reported with its own ceiling; skipped (and said so) when it has not been built.
 const singleFile = process.argv[3] ?? 'dist-single/index.html';
@@ -133,6 +149,9 @@ for (const [kind, f, s, lim] of rows)
   console.log(`${kind.padEnd(14)} ${kB(s).padStart(8)} kB  ${f}${lim ? `  (≤ ${kB(lim)} kB)` : ''}`);
 console.log(
   `entry total    ${kB(entryTotal).padStart(8)} kB  (≤ ${kB(ENTRY_LIMIT)} kB; no three.js, Plotly, mathjs or KaTeX)`,
+);
+console.log(
+  `scripts        before first paint (≤ ${SCRIPTS_LIMIT}; the worksheet ≤ ${SCRIPTS_LIMIT_FOR['practice/sheet']}): ${scriptCounts.join(', ')}`,
 );
 console.log(singleLine);
 if (failures.length) {
