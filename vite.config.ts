@@ -138,10 +138,10 @@ export default defineConfig(({ mode }) => {
               // three.js, Plotly and KaTeX get recognisable chunk names (vendor-three-*.js, …) for the
               // budgets. mathjs is left to the default splitting on purpose: the parse-only expression
               // engine (src/core/expr) loads only what it needs.
-              // Each scene's lazy chunk is named after it (scene-texture-*.js, …); naming only, so the
-              // default splitting (shared modules in shared chunks) is untouched.
-              // (the scene's module is found among the chunk's modules: with entry signatures not
-              // preserved, a scene's index may share its chunk with modules only that scene uses)
+              // Each scene's lazy chunk is named after it (scene-texture-*.js, …); naming only, it does
+              // not change how modules are split. The scene's module is looked for among the chunk's
+              // modules: with entry signatures not preserved, a scene's index may share its chunk with
+              // modules only that scene uses.
               chunkFileNames: (chunk: { facadeModuleId?: string | null; moduleIds?: string[] }) => {
                 for (const id of [chunk.facadeModuleId ?? '', ...(chunk.moduleIds ?? [])]) {
                   const m = /[\\/]src[\\/]scenes[\\/]([a-z0-9-]+)[\\/]index\.ts$/.exec(id);
@@ -151,12 +151,13 @@ export default defineConfig(({ mode }) => {
               },
               codeSplitting: {
                 // Small shared chunks are copied into the chunks that read them instead of being
-                // files of their own (rolldown's inline common chunks; a registry in its runtime
-                // keeps one copy of each module's state). The default splitting put most of the
-                // math core's 0-4 kB modules in files of their own: a scene loaded about 20 script
-                // files before its first paint, in rounds over a phone's connections. Stylesheets'
-                // modules stay out (Vite emits a style module's CSS from every chunk that lists it).
-                // Size: the chunk's source before minification.
+                // files of their own; a registry in rolldown's runtime keeps one instance of each
+                // module (its state, its exports) across the copies (rolldown.rs, "Inline Common
+                // Chunks"). Without it the default splitting gives most of the math core's 0–4 kB
+                // modules a file of their own, and a scene asks for 19–28 scripts before its first
+                // paint, fetched in rounds over a phone's connections. Stylesheets' modules stay out
+                // (Vite emits a style module's CSS from every chunk that lists it). The size is the
+                // chunk's source before minification.
                 experimentalInlineCommonChunks: { maxSize: 32 * 1024, exclude: /\.css(\?|$)/ },
                 groups: [
                   { name: 'vendor-three', test: /[\\/]node_modules[\\/]three[\\/]/ },
