@@ -3,7 +3,7 @@ import { defineConfig, type Plugin } from 'vite';
 import react from '@vitejs/plugin-react';
 import { VitePWA } from 'vite-plugin-pwa';
 import { viteSingleFile } from 'vite-plugin-singlefile';
-import { lateManifestLink, routePreload } from './scripts/routePreload';
+import { lateManifestLink, routePreload, sceneOfChunk } from './scripts/routePreload';
 import { inlineEntryCss } from './scripts/inlineEntryCss';
 import { katexCssSplit } from './scripts/katexCss';
 import { appFiles } from './scripts/appFiles';
@@ -139,15 +139,10 @@ export default defineConfig(({ mode }) => {
               // budgets. mathjs is left to the default splitting on purpose: the parse-only expression
               // engine (src/core/expr) loads only what it needs.
               // Each scene's lazy chunk is named after it (scene-texture-*.js, …); naming only, it does
-              // not change how modules are split. The scene's module is looked for among the chunk's
-              // modules: with entry signatures not preserved, a scene's index may share its chunk with
-              // modules only that scene uses.
+              // not change how modules are split.
               chunkFileNames: (chunk: { facadeModuleId?: string | null; moduleIds?: string[] }) => {
-                for (const id of [chunk.facadeModuleId ?? '', ...(chunk.moduleIds ?? [])]) {
-                  const m = /[\\/]src[\\/]scenes[\\/]([a-z0-9-]+)[\\/]index\.ts$/.exec(id);
-                  if (m) return `assets/scene-${m[1]}-[hash].js`;
-                }
-                return 'assets/[name]-[hash].js';
+                const scene = sceneOfChunk(chunk);
+                return scene ? `assets/scene-${scene}-[hash].js` : 'assets/[name]-[hash].js';
               },
               codeSplitting: {
                 // Small shared chunks are copied into the chunks that read them instead of being

@@ -31,6 +31,29 @@ type BundleLike = Record<string, ChunkLike | { type: 'asset'; fileName: string }
 
 const SCENE_ENTRY = /[\\/]src[\\/]scenes[\\/]([a-z0-9-]+)[\\/]index\.ts$/;
 
+interface ChunkModules {
+  facadeModuleId?: string | null;
+  moduleIds?: string[];
+}
+
+/** A chunk's entry module first, then the modules it holds. */
+function moduleIdsOf(c: ChunkModules): string[] {
+  return [c.facadeModuleId ?? '', ...(c.moduleIds ?? [])];
+}
+
+/**
+ * The scene whose code a chunk holds ('alpha' for src/scenes/alpha/index.ts), or null: by its entry
+ * module or, with entry signatures not preserved (vite.config.ts), by a module it holds. Also names
+ * the scene chunks' files (vite.config.ts).
+ */
+export function sceneOfChunk(c: ChunkModules): string | null {
+  for (const id of moduleIdsOf(c)) {
+    const m = SCENE_ENTRY.exec(id);
+    if (m) return m[1];
+  }
+  return null;
+}
+
 /**
  * The other lazily loaded routes, by a module their chunk holds (`$1` in an id is the pattern's
  * first group). `with`: the other chunks the route's page loads together with this one (a
@@ -66,7 +89,7 @@ const OTHER_ROUTES: Array<{ re: RegExp; id: string; with?: string[]; part?: bool
  * and by the worksheet, and may sit in a chunk shared by the two, with no entry module).
  */
 function routeOf(c: ChunkLike): { id: string; with: string[]; part: boolean } | null {
-  for (const id of [c.facadeModuleId ?? '', ...(c.moduleIds ?? [])]) {
+  for (const id of moduleIdsOf(c)) {
     const m = SCENE_ENTRY.exec(id);
     if (m) return { id: m[1], with: [], part: false };
     for (const r of OTHER_ROUTES) {

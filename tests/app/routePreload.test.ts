@@ -1,6 +1,12 @@
 import { describe, expect, it } from 'vitest';
 import { runInNewContext } from 'node:vm';
-import { lateManifestLink, preloadScript, routePreload, scenePreloadMap } from '../../scripts/routePreload';
+import {
+  lateManifestLink,
+  preloadScript,
+  routePreload,
+  sceneOfChunk,
+  scenePreloadMap,
+} from '../../scripts/routePreload';
 // @ts-expect-error plain ESM helper without types
 import { readPreloadMap } from '../../scripts/preloadMap.mjs';
 
@@ -275,5 +281,24 @@ describe('lateManifestLink', () => {
     const html =
       '<head>\n  <link rel="stylesheet" href="./a.css">\n  <link rel="manifest" href="./manifest.webmanifest"></head><body></body>';
     expect(hook.handler(html)).toBe('<head>\n  <link rel="stylesheet" href="./a.css"></head><body></body>');
+  });
+});
+
+describe('sceneOfChunk', () => {
+  it('names the scene by the chunk’s entry module, else by a module it holds', () => {
+    expect(sceneOfChunk({ facadeModuleId: '/p/src/scenes/beta-2/index.ts' })).toBe('beta-2');
+    expect(
+      sceneOfChunk({
+        facadeModuleId: null,
+        moduleIds: ['/p/src/scenes/alpha/view/Figure.tsx', '/p/src/scenes/alpha/index.ts'],
+      }),
+    ).toBe('alpha');
+  });
+  it('is null for a chunk holding no scene’s index (a scene’s other modules do not count)', () => {
+    expect(sceneOfChunk({ facadeModuleId: '/p/src/practice/PracticeRoute.tsx', moduleIds: [] })).toBeNull();
+    expect(
+      sceneOfChunk({ moduleIds: ['/p/src/scenes/alpha/model.ts', '/p/src/scenes/index.ts'] }),
+    ).toBeNull();
+    expect(sceneOfChunk({})).toBeNull();
   });
 });
