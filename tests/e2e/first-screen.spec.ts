@@ -94,6 +94,12 @@ test('while a scene opens, nothing far below the first screen is mounted or type
   }
 
   await test.step('a reader who acts before the page settles gets the far sections at once', async () => {
+    // a frame requested every frame: no idle period is a whole one, so the page cannot settle by
+    // being quiet (only by pageSettled's 3 s cap), and the reader's act is what opens the far work
+    await page.addInitScript(() => {
+      const frame = () => requestAnimationFrame(frame);
+      frame();
+    });
     await page.goto('about:blank');
     await page.goto('./#/hemisphere');
     await page.waitForSelector('main#main .exam-part');
