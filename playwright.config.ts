@@ -9,10 +9,7 @@ export default defineConfig({
   testDir: 'tests/e2e',
   testMatch: /.*\.spec\.ts$/,
   fullyParallel: true,
-  // Three browsers on the 2-core machine: much of a test's time is spent waiting while a page
-  // settles (far sections and formulas wait for its opening to end, src/ui/whenQuiet.ts
-  // openingDone), which a third worker fills.
-  workers: process.env.E2E_WORKERS ? Number(process.env.E2E_WORKERS) : 3,
+  workers: process.env.E2E_WORKERS ? Number(process.env.E2E_WORKERS) : 2,
   // No retries: a test that fails only sometimes is a bug in the test (waiting for a time instead of
   // a state) or in the app, and is fixed rather than retried.
   retries: 0,

@@ -36,10 +36,7 @@ export async function openScene(page: Page, hash: string): Promise<void> {
   await page.goto(`./${hash.startsWith('#') ? hash : `#${hash}`}`);
   await page.waitForSelector('main#main');
   await expect(page.locator('.loading')).toHaveCount(0);
-  // the exam page's sections below the first screen mount in idle time once the opening is over
-  // (src/ui/Deferred.tsx): when the page has settled, or at once when the reader acts, as here
-  // (a turn of the wheel that scrolls nothing)
-  await page.mouse.wheel(0, 0);
+  // the exam page's sections below the first screen mount in idle time (src/ui/Deferred.tsx)
   await expect(page.locator('[data-deferred="pending"]')).toHaveCount(0, { timeout: 30_000 });
 }
 
