@@ -3,7 +3,7 @@ import { defineConfig, type Plugin } from 'vite';
 import react from '@vitejs/plugin-react';
 import { VitePWA } from 'vite-plugin-pwa';
 import { viteSingleFile } from 'vite-plugin-singlefile';
-import { lateManifestLink, routePreload, sceneOfChunk } from './scripts/routePreload';
+import { lateManifestLink, routePreload, sceneOfChunk, type ChunkModules } from './scripts/routePreload';
 import { inlineEntryCss } from './scripts/inlineEntryCss';
 import { katexCssSplit } from './scripts/katexCss';
 import { appFiles } from './scripts/appFiles';
@@ -140,7 +140,7 @@ export default defineConfig(({ mode }) => {
               // engine (src/core/expr) loads only what it needs.
               // Each scene's lazy chunk is named after it (scene-texture-*.js, …); naming only, it does
               // not change how modules are split.
-              chunkFileNames: (chunk: { facadeModuleId?: string | null; moduleIds?: string[] }) => {
+              chunkFileNames: (chunk: ChunkModules) => {
                 const scene = sceneOfChunk(chunk);
                 return scene ? `assets/scene-${scene}-[hash].js` : 'assets/[name]-[hash].js';
               },

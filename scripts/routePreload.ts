@@ -31,7 +31,8 @@ type BundleLike = Record<string, ChunkLike | { type: 'asset'; fileName: string }
 
 const SCENE_ENTRY = /[\\/]src[\\/]scenes[\\/]([a-z0-9-]+)[\\/]index\.ts$/;
 
-interface ChunkModules {
+/** What a chunk says of its modules (rolldown's chunk info, and the part of it these helpers read). */
+export interface ChunkModules {
   facadeModuleId?: string | null;
   moduleIds?: string[];
 }
