@@ -24,7 +24,7 @@ import '../three/viewport.css';
 // here, not in KaTeX's lazily loaded stylesheet, whose arrival would otherwise restyle and lay out
 // the whole page (scripts/katexCss.ts).
 import 'katex/dist/katex.min.css?fonts';
-import { whenQuiet } from '../ui/whenQuiet';
+import { readerActed, whenQuiet } from '../ui/whenQuiet';
 import { findScene } from '../kit/catalogue';
 import { sceneLoader } from '../scenes/registry';
 import { parseHash } from '../kit/shell';
@@ -41,6 +41,10 @@ import { keepFocusInView } from '../ui/focusInView';
 // scene host's own import gets the same module; it also reports a failure.
 const opened = findScene(parseHash(window.location.hash).path);
 if (opened) void sceneLoader(opened.id)?.().catch(() => undefined);
+
+// The reader's first key, press, wheel or touch ends the page's opening (../ui/whenQuiet
+// openingDone): listened for from the start, so that one made before the scene has mounted counts.
+void readerActed();
 
 const root = document.getElementById('root');
 // Inside an LMS package (SCORM, cmi5) the launch page declares it (../lms/config.ts): the LMS

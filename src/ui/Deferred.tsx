@@ -1,6 +1,7 @@
 /**
  * A part of the page that is mounted late: when it comes near the screen, else in idle
- * time, one section per idle period in page order (./viewQueue), and at once before printing. A
+ * time once the page's opening is over (./whenQuiet openingDone), one section per idle period in
+ * page order (./viewQueue), and at once before printing. A
  * scene's exam page mounts its first screen first; the derivations, tables and plots below follow
  * in short tasks instead of one long commit (and one long layout) when the page opens on a phone.
  *
@@ -28,6 +29,7 @@ import {
 import { flushSync } from 'react-dom';
 import { nextTask } from './chunked';
 import { createViewQueue } from './viewQueue';
+import { openingDone } from './whenQuiet';
 
 /** How far below (or above) the screen a section starts mounting. */
 export const DEFERRED_MARGIN = '800px 0px';
@@ -94,6 +96,7 @@ const queue = createViewQueue({
   perIdle: 1,
   // a page that is never idle (a slow phone, a loaded machine) still gets a section every 0.5 s
   idleTimeoutMs: 500,
+  idleAfter: openingDone,
   runNear: (job) => {
     runningNear = true;
     try {

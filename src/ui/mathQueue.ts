@@ -1,17 +1,25 @@
 /**
  * When each formula of a page is typeset: KaTeX for a formula on or near the screen
  * runs at once, in the shared sliced queue (./chunked: short tasks that yield between slices); the
- * others in idle time, a few per idle period, in page order; everything still waiting before
+ * others in idle time once the page's opening is over (./whenQuiet openingDone), a few per idle
+ * period, in page order; everything still waiting before
  * printing (`flushMathForPrint`). The scheduling is ./viewQueue's.
  */
 import { afterPaint } from './afterPaint';
 import { nextTask, runChunked } from './chunked';
 import { createViewQueue } from './viewQueue';
+import { openingDone } from './whenQuiet';
 
 /** How far off screen a formula still counts as "near" (typeset at once). */
 export const NEAR_MARGIN = '600px';
 
-const queue = createViewQueue({ margin: NEAR_MARGIN, perIdle: 4, idleTimeoutMs: 1500, runNear: runChunked });
+const queue = createViewQueue({
+  margin: NEAR_MARGIN,
+  perIdle: 4,
+  idleTimeoutMs: 1500,
+  runNear: runChunked,
+  idleAfter: openingDone,
+});
 
 /**
  * Typeset `job` soon: at once if `el` is near the screen, else in idle time. Returns a cancel

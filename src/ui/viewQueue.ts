@@ -7,8 +7,8 @@
  *  - a job whose element is on or near the screen (within `margin`) runs at once, through
  *    `runNear` (e.g. the shared sliced queue of ./chunked);
  *  - the others wait for idle time (requestIdleCallback, with a timeout so a busy page still gets
- *    them), `perIdle` per idle period, in the order they were scheduled (page order); one that
- *    scrolls near is promoted;
+ *    them), and first for `idleAfter` where given (the page's opening to be over), `perIdle` per
+ *    idle period, in the order they were scheduled (page order); one that scrolls near is promoted;
  *  - `flush()` runs everything still waiting, synchronously (before printing).
  * Every job runs within a few seconds of load either way: tests and find-in-page see the whole page.
  */
@@ -33,6 +33,11 @@ export interface ViewQueueOptions {
   idleTimeoutMs: number;
   /** How a near job runs: given the job, starts it (now or soon) and returns a cancel function. */
   runNear: (job: () => void) => () => void;
+  /**
+   * Idle-time jobs wait for this promise first (near jobs never do). Without it they start at
+   * the first idle period, which on a loading page comes between its own frames.
+   */
+  idleAfter?: () => Promise<void>;
 }
 
 export interface ViewQueue {
@@ -45,12 +50,21 @@ export interface ViewQueue {
 type IdleDeadline = { timeRemaining: () => number; didTimeout: boolean };
 type RIC = (cb: (d: IdleDeadline) => void, opts?: { timeout: number }) => number;
 
-export function createViewQueue({ margin, perIdle, idleTimeoutMs, runNear }: ViewQueueOptions): ViewQueue {
+export function createViewQueue({
+  margin,
+  perIdle,
+  idleTimeoutMs,
+  runNear,
+  idleAfter,
+}: ViewQueueOptions): ViewQueue {
   /** Every job not run yet, however it waits (for the observer, idle time or its near slot). */
   const pending = new Set<Entry>();
   const byEl = new Map<Element, Entry>();
   const idle: Entry[] = [];
   let idleScheduled = false;
+  /** Whether idle-time jobs may run (`idleAfter` has resolved, or there is none). */
+  let idleOpen = !idleAfter;
+  let idleOpening = false;
   let io: IntersectionObserver | null = null;
   /** Elements the observer has reported near the screen (kept up to date while observed). */
   const near = new WeakSet<Element>();
@@ -78,6 +92,17 @@ export function createViewQueue({ margin, perIdle, idleTimeoutMs, runNear }: Vie
 
   function scheduleIdle(): void {
     if (idleScheduled || !idle.length) return;
+    if (!idleOpen) {
+      if (!idleOpening && idleAfter) {
+        idleOpening = true;
+        const open = () => {
+          idleOpen = true;
+          scheduleIdle();
+        };
+        idleAfter().then(open, open);
+      }
+      return;
+    }
     idleScheduled = true;
     const ric = (globalThis as { requestIdleCallback?: RIC }).requestIdleCallback;
     const tick = (d: IdleDeadline | null) => {

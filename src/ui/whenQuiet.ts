@@ -93,3 +93,35 @@ export function pageSettled(): Promise<void> {
 export function isPageSettled(): boolean {
   return settledNow;
 }
+
+/** The events by which a reader acts on the page: a key, a press, the wheel, a touch. */
+export const READER_EVENTS = ['keydown', 'pointerdown', 'wheel', 'touchstart'] as const;
+
+let acted: Promise<void> | null = null;
+
+/** Once per page: resolves at the reader's first key, press, wheel or touch. */
+export function readerActed(): Promise<void> {
+  if (!acted) {
+    acted = new Promise<void>((resolve) => {
+      if (typeof window === 'undefined') return;
+      const done = () => {
+        for (const t of READER_EVENTS) window.removeEventListener(t, done, true);
+        resolve();
+      };
+      for (const t of READER_EVENTS) window.addEventListener(t, done, { capture: true, passive: true });
+    });
+  }
+  return acted;
+}
+
+/**
+ * Once per page: resolves when the opening is over, i.e. the page has settled ({@link pageSettled})
+ * or the reader has acted ({@link readerActed}), whichever comes first. The work that belongs to
+ * the page far below the screen (its sections mounted late, its formulas typeset) waits for it:
+ * done in the idle moments between the opening's own frames, it took the second core from the
+ * opening on a phone and stretched the opening's tasks (Lighthouse's Total Blocking Time). A
+ * reader who acts (scrolls, searches with Ctrl+F, presses Tab) gets it at once.
+ */
+export function openingDone(): Promise<void> {
+  return Promise.race([pageSettled(), readerActed()]);
+}

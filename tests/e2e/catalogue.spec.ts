@@ -2,8 +2,9 @@
  * What every scene of the catalogue shares, written once and run for each scene, two tests
  * each: the whole page as a reader meets it (./wholePage.ts: axe in both themes and at both
  * widths, the WCAG criteria axe does not test, carets, formula wrapping); the shared timeline
- * (reduced motion, no frames while paused or off screen, play / pause and the link, opened again
- * in the same tab, which mounts the scene anew from it), and on the
+ * (opened for a reader who only looks, the first screen first: ./firstScreen.ts; reduced motion,
+ * no frames while paused or off screen, play / pause and the link, opened again in the same tab,
+ * which mounts the scene anew from it), and on the
  * same page the lecture room (present=1 with ask=1: results held back until Reveal, then the
  * stage is the first screen, legible from the back of the room). A scene-specific check (its readouts against its
  * model, its drags and keys) lives in that scene's own spec.
@@ -12,6 +13,7 @@ import type { Page } from '@playwright/test';
 import { SCENES, type SceneInfo } from '../../src/kit/catalogue';
 import { test, expect, openScene, countAnimationFrames, followLinkAnew } from './fixtures';
 import { checkWholePage } from './wholePage';
+import { firstScreen, recordFirstScreen } from './firstScreen';
 
 test.describe.configure({ timeout: 180_000 });
 
@@ -52,13 +54,21 @@ for (const s of SCENES) {
       await checkWholePage(page, link(s), { scene: s });
     });
 
-    test('the timeline: reduced motion holds play=1; paused, no frames; playing, none off screen; pause writes a link that restores it; then the room, present=1&ask=1: results held back until Reveal, the stage the first screen, its text ≥ 18 px', async ({
+    test('the first screen first, then the timeline: reduced motion holds play=1; paused, no frames; playing, none off screen; pause writes a link that restores it; then the room, present=1&ask=1: results held back until Reveal, the stage the first screen, its text ≥ 18 px', async ({
       page,
     }) => {
       await countAnimationFrames(page);
+      await recordFirstScreen(page);
       // under reduced motion a link asking to play opens paused, and nothing is drawn
       await page.emulateMedia({ reducedMotion: 'reduce' });
+      // opened for a reader who only looks: nothing far below the first screen is mounted or
+      // typeset before the page settles; then, with no scroll, every section mounts
       await openScene(page, link(s, 'play=1'));
+      await expect(page.locator('html[data-settled]')).toBeAttached({ timeout: 60_000 });
+      const opening = await firstScreen(page);
+      expect(await page.evaluate(() => scrollY), 'the page was not scrolled').toBe(0);
+      expect(opening.early, `${s.id}: far sections or formulas done before the page settled`).toEqual([]);
+      expect(opening.farSeen, `${s.id}: the page has work far below its first screen`).toBeGreaterThan(0);
       const tl = page.getByTestId('timeline');
       await expect(tl).toHaveAttribute('data-playing', '0');
       await expect(page.getByTestId('timeline-play')).toHaveAttribute('aria-pressed', 'false');

@@ -4,7 +4,24 @@
  */
 import { test as base, expect, type Frame, type Page } from '@playwright/test';
 
-export const test = base.extend<{ consoleErrors: string[]; backOnline: void }>({
+export const test = base.extend<{ consoleErrors: string[]; backOnline: void; readerActs: void }>({
+  // Every page a test opens has a reader who acts at once: a wheel event that scrolls nothing, as
+  // the document is parsed. The work far below a page's first screen (sections mounted late,
+  // formulas typeset: src/ui/Deferred.tsx, src/ui/mathQueue.ts) waits for the page's opening to
+  // be over, which is when the page has settled (0.5–3 s) or when its reader acts
+  // (src/ui/whenQuiet.ts openingDone); a test reads that work at once, as a reader who scrolls
+  // would. A page recorded for its first screen (./firstScreen.ts) is one whose reader only looks.
+  readerActs: [
+    async ({ context }, use) => {
+      await context.addInitScript(() =>
+        document.addEventListener('DOMContentLoaded', () => {
+          if (!('__firstScreen' in window)) window.dispatchEvent(new WheelEvent('wheel'));
+        }),
+      );
+      await use();
+    },
+    { auto: true },
+  ],
   // One browser context serves a worker's tests one after another (playwright.config.ts,
   // reuseContext): between tests Playwright takes it back to about:blank and resets its storage,
   // routes, init scripts, viewport and media, but not the offline switch a test may have thrown.
@@ -31,12 +48,14 @@ export const test = base.extend<{ consoleErrors: string[]; backOnline: void }>({
 
 export { expect };
 
-/** Navigate to a hash route (e.g. '#/texture?u=0.4') and wait until the scene has loaded. */
+/**
+ * Navigate to a hash route (e.g. '#/texture?u=0.4') and wait until the scene has loaded, every
+ * section of its page mounted (the page's reader has acted: see `readerActs` above).
+ */
 export async function openScene(page: Page, hash: string): Promise<void> {
   await page.goto(`./${hash.startsWith('#') ? hash : `#${hash}`}`);
   await page.waitForSelector('main#main');
   await expect(page.locator('.loading')).toHaveCount(0);
-  // the exam page's sections below the first screen mount in idle time (src/ui/Deferred.tsx)
   await expect(page.locator('[data-deferred="pending"]')).toHaveCount(0, { timeout: 30_000 });
 }
 

@@ -8,6 +8,14 @@ const runIdle = () => {
 };
 const settle = () => new Promise((r) => setTimeout(r, 30));
 
+// the page's "settled" moment (src/ui/whenQuiet.ts), opened by the test
+const page = vi.hoisted(() => {
+  let open = () => {};
+  const settled = new Promise<void>((r) => (open = r));
+  return { settled, open: () => open() };
+});
+vi.mock('../../src/ui/whenQuiet', () => ({ openingDone: () => page.settled }));
+
 beforeAll(() => {
   vi.stubGlobal('IntersectionObserver', FakeIO);
   vi.stubGlobal('requestIdleCallback', (cb: (typeof idleCbs)[number]) => idleCbs.push(cb));
@@ -15,7 +23,7 @@ beforeAll(() => {
 afterAll(() => vi.unstubAllGlobals());
 
 describe('scheduleMath: formulas near the screen first, the rest in idle time', () => {
-  it('near ones run soon; far ones only in idle time, a few per idle period, in order; a far one that scrolls near is promoted', async () => {
+  it('near ones run soon; far ones only in idle time once the page has settled, a few per idle period, in order; a far one that scrolls near is promoted', async () => {
     const { scheduleMath } = await import('../../src/ui/mathQueue');
     const seen: string[] = [];
     const els = Array.from({ length: 8 }, () => ({}) as Element);
@@ -31,6 +39,11 @@ describe('scheduleMath: formulas near the screen first, the rest in idle time', 
     io.report(els[6], true); // scrolled near: promoted
     await settle();
     expect(seen).toEqual(['f0', 'f6']);
+    runIdle(); // the page is still opening: far formulas wait until it has settled
+    await settle();
+    expect(seen).toEqual(['f0', 'f6']);
+    page.open();
+    await settle();
     runIdle();
     expect(seen).toEqual(['f0', 'f6', 'f1', 'f2', 'f3', 'f4']); // four per idle period, in page order
     runIdle();

@@ -1,4 +1,4 @@
-import { describe, expect, it } from 'vitest';
+import { describe, expect, it, vi } from 'vitest';
 import { whenQuiet, type IdleApi } from '../../src/ui/whenQuiet';
 
 /** A fake clock and idle scheduler: `busy(from, to)` marks spans where no idle period is whole. */
@@ -60,5 +60,44 @@ describe('whenQuiet', () => {
     const at = await run(whenQuiet({ quietMs: 1000, maxMs: 5000, api }), 10_000);
     expect(at!).toBeGreaterThanOrEqual(5000);
     expect(at!).toBeLessThan(5200);
+  });
+});
+
+describe('readerActed and openingDone: the opening is over when the reader acts, whatever the page does', () => {
+  it('a wheel (or key, press, touch) resolves both at once; the listeners then go', async () => {
+    const target = new EventTarget();
+    const added: string[] = [];
+    const removed: string[] = [];
+    const win = Object.assign(target, {
+      addEventListener: (t: string, f: EventListener, o?: AddEventListenerOptions) => {
+        added.push(t);
+        EventTarget.prototype.addEventListener.call(target, t, f, o);
+      },
+      removeEventListener: (t: string, f: EventListener, o?: boolean) => {
+        removed.push(t);
+        EventTarget.prototype.removeEventListener.call(target, t, f, o);
+      },
+    });
+    vi.stubGlobal('window', win);
+    // pageSettled waits for a painted frame that never comes here: only the reader can end the opening
+    vi.stubGlobal('requestAnimationFrame', () => 0);
+    vi.resetModules();
+    try {
+      const { readerActed, openingDone, READER_EVENTS } = await import('../../src/ui/whenQuiet');
+      let over = false;
+      void openingDone().then(() => (over = true));
+      let acted = false;
+      void readerActed().then(() => (acted = true));
+      await new Promise((r) => setTimeout(r, 20));
+      expect([over, acted]).toEqual([false, false]);
+      expect(added.sort()).toEqual([...READER_EVENTS].sort());
+      target.dispatchEvent(new Event('wheel'));
+      await new Promise((r) => setTimeout(r, 0));
+      expect([over, acted]).toEqual([true, true]);
+      expect(removed.sort()).toEqual([...READER_EVENTS].sort());
+    } finally {
+      vi.unstubAllGlobals();
+      vi.resetModules();
+    }
   });
 });
