@@ -98,6 +98,7 @@ export function isPageSettled(): boolean {
 export const READER_EVENTS = ['keydown', 'pointerdown', 'wheel', 'touchstart'] as const;
 
 let acted: Promise<void> | null = null;
+let actedNow = false;
 
 /** Once per page: resolves at the reader's first key, press, wheel or touch. */
 export function readerActed(): Promise<void> {
@@ -106,6 +107,7 @@ export function readerActed(): Promise<void> {
       if (typeof window === 'undefined') return;
       const done = () => {
         for (const t of READER_EVENTS) window.removeEventListener(t, done, true);
+        actedNow = true;
         resolve();
       };
       for (const t of READER_EVENTS) window.addEventListener(t, done, { capture: true, passive: true });
@@ -124,4 +126,9 @@ export function readerActed(): Promise<void> {
  */
 export function openingDone(): Promise<void> {
   return Promise.race([pageSettled(), readerActed()]);
+}
+
+/** Whether {@link openingDone} has resolved (the page has settled, or the reader has acted). */
+export function isOpeningDone(): boolean {
+  return settledNow || actedNow;
 }

@@ -16,6 +16,7 @@ import { buildRenderModel } from '../../src/scenes/render/model';
 import { inspectArgs, inspectOptions } from '../../src/scenes/render/jobArgs';
 import { inspectPixel } from '../../src/core/render/inspector';
 import { buildScene } from '../../src/core/render/scene';
+import { recordFirstScreen } from './firstScreen';
 
 test('render lab: the pixel inspector, the progressive render in workers, and the equal-time and spread folds', async ({
   page,
@@ -211,4 +212,36 @@ test('render lab: the pixel inspector, the progressive render in workers, and th
       timeout: 30_000,
     });
   });
+});
+
+test('for a reader who only looks, the lab’s workers (the render, the reference) start once the page has settled', async ({
+  page,
+}) => {
+  // (a page recorded for its first screen has a reader who only looks: ./firstScreen.ts)
+  await recordFirstScreen(page);
+  await page.addInitScript(() => {
+    const made: { url: string; settled: boolean }[] = [];
+    (window as unknown as { __workers: typeof made }).__workers = made;
+    const Native = window.Worker;
+    window.Worker = class extends Native {
+      constructor(url: string | URL, options?: WorkerOptions) {
+        super(url, options);
+        made.push({ url: String(url), settled: document.documentElement.hasAttribute('data-settled') });
+      }
+    };
+  });
+  await page.goto('./#/render?renderer=cpu&res=32&spp=1');
+  await expect(page.getByTestId('render-status')).toHaveText(/^Done: 1 samples per pixel\.$/, {
+    timeout: 30_000,
+  });
+  await expect(page.getByTestId('rel-mse')).not.toHaveAttribute('data-value', 'none');
+  const made = await page.evaluate(
+    () => (window as unknown as { __workers: { url: string; settled: boolean }[] }).__workers,
+  );
+  const lab = made.filter((w) => /render\.worker|gpu\.worker/.test(w.url));
+  expect(lab.length, 'the lab’s workers were made').toBeGreaterThan(0);
+  expect(
+    lab.filter((w) => !w.settled),
+    'workers made before the page settled',
+  ).toEqual([]);
 });

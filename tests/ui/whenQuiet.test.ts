@@ -64,7 +64,7 @@ describe('whenQuiet', () => {
 });
 
 describe('readerActed and openingDone: the opening is over when the reader acts, whatever the page does', () => {
-  it('a wheel (or key, press, touch) resolves both at once; the listeners then go', async () => {
+  it('a wheel (or key, press, touch) resolves both at once, and isOpeningDone says so; the listeners then go', async () => {
     const target = new EventTarget();
     const added: string[] = [];
     const removed: string[] = [];
@@ -83,17 +83,18 @@ describe('readerActed and openingDone: the opening is over when the reader acts,
     vi.stubGlobal('requestAnimationFrame', () => 0);
     vi.resetModules();
     try {
-      const { readerActed, openingDone, READER_EVENTS } = await import('../../src/ui/whenQuiet');
+      const { readerActed, openingDone, isOpeningDone, READER_EVENTS } =
+        await import('../../src/ui/whenQuiet');
       let over = false;
       void openingDone().then(() => (over = true));
       let acted = false;
       void readerActed().then(() => (acted = true));
       await new Promise((r) => setTimeout(r, 20));
-      expect([over, acted]).toEqual([false, false]);
+      expect([over, acted, isOpeningDone()]).toEqual([false, false, false]);
       expect(added.sort()).toEqual([...READER_EVENTS].sort());
       target.dispatchEvent(new Event('wheel'));
       await new Promise((r) => setTimeout(r, 0));
-      expect([over, acted]).toEqual([true, true]);
+      expect([over, acted, isOpeningDone()]).toEqual([true, true, true]);
       expect(removed.sort()).toEqual([...READER_EVENTS].sort());
     } finally {
       vi.unstubAllGlobals();

@@ -19,6 +19,7 @@ import { buildRenderModel, type RenderModel } from './model';
 import { describeImage, regionsOf } from './describe';
 import { useProgressiveRender } from './useProgressiveRender';
 import { useGpuRender } from './gpu/useGpuRender';
+import { useOpeningDone } from '../../ui/useOpeningDone';
 import { gpuSupport, softwareName, type GpuSupport } from './gpu/gpuRenderer';
 import { chooseRenderer } from './gpu/fallback';
 import { schema, type RenderParams } from './params';
@@ -67,10 +68,24 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
   const choice = chooseRenderer(m.renderer, support, failure);
   const onGpu = choice.renderer === 'gpu';
 
-  const refJob = useWorkerJob(makeRenderWorker, 'reference', referenceArgs(m), { delayMs: 150 });
+  // The renderers' workers (SwiftShader's compile and passes on a phone without a GPU, the CPU's
+  // tiles) and the reference image start once the page's opening is over: started beside it, they
+  // took both cores of a phone from the page while its first screen was being laid out.
+  const opened = useOpeningDone();
+  const refJob = useWorkerJob(makeRenderWorker, 'reference', referenceArgs(m), {
+    delayMs: 150,
+    enabled: opened,
+  });
   const reference = refJob.result?.values ?? null;
   const cpuDrawn = useRef(0);
-  const cpuProgress = useProgressiveRender(cpuCanvas, m, !onGpu && visible, m.target, reference, cpuDrawn);
+  const cpuProgress = useProgressiveRender(
+    cpuCanvas,
+    m,
+    !onGpu && visible && opened,
+    m.target,
+    reference,
+    cpuDrawn,
+  );
   // a pause that reached the GPU's worker a few frames late: the link says where the image holds
   const paused = useRef({ play: params.play, target: m.target });
   paused.current = { play: params.play, target: m.target };
@@ -80,7 +95,16 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
     },
     [setParams],
   );
-  const gpuProgress = useGpuRender(gpuCanvas, m, onGpu, visible, m.target, reference, setFailure, onHeld);
+  const gpuProgress = useGpuRender(
+    gpuCanvas,
+    m,
+    onGpu && opened,
+    visible,
+    m.target,
+    reference,
+    setFailure,
+    onHeld,
+  );
   const progress = onGpu ? gpuProgress : cpuProgress;
   const software = gpuProgress.rendererName ? softwareName(gpuProgress.rendererName) : null;
   // pausing writes where the run is into the link (t, in samples per pixel), as every timeline does:
@@ -203,7 +227,9 @@ export default function RenderLab({ params, setParams }: SceneProps<typeof schem
                 ? `Paused at ${progress.spp} of ${m.spp} samples per pixel (play=0, t=${m.target}).`
                 : !visible
                   ? 'Waiting until the image is on screen.'
-                  : `Rendering… ${progress.spp} of ${m.target} samples per pixel${Number.isFinite(progress.mean) ? `; mean ${formatNumber(progress.mean, 4)} at ${progress.statsSpp}` : ''}.`}
+                  : !opened
+                    ? 'Starting once the page has loaded.'
+                    : `Rendering… ${progress.spp} of ${m.target} samples per pixel${Number.isFinite(progress.mean) ? `; mean ${formatNumber(progress.mean, 4)} at ${progress.statsSpp}` : ''}.`}
           </p>
           <ImageMeasure
             set={measured}
