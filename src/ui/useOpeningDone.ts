@@ -1,23 +1,34 @@
 /**
- * Whether the page's opening is over (./whenQuiet openingDone: the page has settled, or its reader
- * has pressed a key, a pointer, the wheel or a touch screen), as React state. Work that competes
- * for the cores but is not needed to show the first screen (a worker that renders, a reference
- * computed in the background) starts when it turns true.
+ * The page's load milestones (./whenQuiet) as React state:
+ *  - `usePageSettled`: the first screen has been painted and the page has then been quiet
+ *    (pageSettled). A worker's opening run whose result is not on the first screen waits for it.
+ *  - `useOpeningDone`: the page has settled, or its reader has pressed a key, a pointer, the wheel
+ *    or a touch screen (openingDone). Work that competes for the cores but is not needed to show
+ *    the first screen (a worker that renders, a reference computed in the background) starts then.
  */
 import { useEffect, useState } from 'react';
-import { isOpeningDone, openingDone } from './whenQuiet';
+import { isOpeningDone, isPageSettled, openingDone, pageSettled } from './whenQuiet';
 
-export function useOpeningDone(): boolean {
-  const [done, setDone] = useState(isOpeningDone);
+/** True once `when()` has resolved (at once where `now()` says it already has). */
+function useResolved(now: () => boolean, when: () => Promise<void>): boolean {
+  const [done, setDone] = useState(now);
   useEffect(() => {
     if (done) return;
     let live = true;
-    void openingDone().then(() => {
+    void when().then(() => {
       if (live) setDone(true);
     });
     return () => {
       live = false;
     };
-  }, [done]);
+  }, [done, when]);
   return done;
+}
+
+export function usePageSettled(): boolean {
+  return useResolved(isPageSettled, pageSettled);
+}
+
+export function useOpeningDone(): boolean {
+  return useResolved(isOpeningDone, openingDone);
 }

@@ -32,7 +32,7 @@ import {
 import { asFailure, type Failure } from '../core/failure';
 import type { ArgsOf, PartialOf, ResultOf, TaskMap, TaskName, WorkerFactory } from './protocol';
 import { isCancelled, runWorkerTask } from './run';
-import { isPageSettled, pageSettled } from '../ui/whenQuiet';
+import { usePageSettled } from '../ui/useOpeningDone';
 
 export interface WorkerJobOptions {
   /** Identity of the arguments (default JSON.stringify(args)). A new key cancels and restarts. */
@@ -139,17 +139,7 @@ export function useWorkerJob<T extends TaskMap, K extends TaskName<T>>(
   const key = options.key ?? JSON.stringify(args);
   // the arguments the scene opened with (null once they have changed: no later run is held)
   const openingKey = useRef<string | null>(key);
-  const [settled, setSettled] = useState(() => !afterSettle || isPageSettled());
-  useEffect(() => {
-    if (settled) return;
-    let alive = true;
-    void pageSettled().then(() => {
-      if (alive) setSettled(true);
-    });
-    return () => {
-      alive = false;
-    };
-  }, [settled]);
+  const settled = usePageSettled() || !afterSettle;
   const held = !settled && key === openingKey.current;
   useEffect(() => {
     if (key !== openingKey.current) openingKey.current = null;
