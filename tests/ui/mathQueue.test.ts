@@ -17,6 +17,10 @@ const page = vi.hoisted(() => {
 vi.mock('../../src/ui/whenQuiet', () => ({ openingDone: () => page.settled }));
 
 beforeAll(() => {
+  // a fresh mathQueue, bound to the whenQuiet mock above: the unit run shares one module cache per
+  // worker thread (vitest.config.ts, isolate: false), where another test file may have loaded the
+  // real one first
+  vi.resetModules();
   vi.stubGlobal('IntersectionObserver', FakeIO);
   vi.stubGlobal('requestIdleCallback', (cb: (typeof idleCbs)[number]) => idleCbs.push(cb));
 });
