@@ -25,8 +25,9 @@ function useResolved(now: () => boolean, when: () => Promise<void>): boolean {
   return done;
 }
 
-export function usePageSettled(): boolean {
-  return useResolved(isPageSettled, pageSettled);
+/** True once the page has settled; at once, without asking for it, where `wanted` is false. */
+export function usePageSettled(wanted = true): boolean {
+  return useResolved(() => !wanted || isPageSettled(), pageSettled);
 }
 
 export function useOpeningDone(): boolean {

@@ -139,7 +139,7 @@ export function useWorkerJob<T extends TaskMap, K extends TaskName<T>>(
   const key = options.key ?? JSON.stringify(args);
   // the arguments the scene opened with (null once they have changed: no later run is held)
   const openingKey = useRef<string | null>(key);
-  const settled = usePageSettled() || !afterSettle;
+  const settled = usePageSettled(afterSettle);
   const held = !settled && key === openingKey.current;
   useEffect(() => {
     if (key !== openingKey.current) openingKey.current = null;

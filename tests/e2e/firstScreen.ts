@@ -7,9 +7,10 @@
  *
  * `recordFirstScreen` installs, before the page's own scripts run, a recorder of what changed far
  * from the screen before the page settled; the page's reader then only looks (the fixtures' reader
- * who acts at once stays away: ./fixtures.ts `readerActs`). The page's own observers say what is near; the
- * recorder's observer, with a wider margin than any of the page's, says what was certainly far: an
- * element it last saw outside that margin must not change before the page has settled.
+ * who acts at once stays away: ./fixtures.ts `readerActs`). The page's own observers say what is
+ * near; the recorder's observer, with a wider margin than any of the page's, says what was
+ * certainly far: an element it last saw outside that margin must not change before the page has
+ * settled.
  */
 import type { Page } from '@playwright/test';
 
