@@ -26,9 +26,17 @@ function onHashChange(): void {
   notify();
 }
 
-/** The open folds' names, in the order they were opened. */
+/**
+ * The open folds' names, in the order they were opened. While a fold or the share bar listens, the
+ * list is kept here and follows the address's hashchanges; while nothing listens (between two
+ * pages, say), no hashchange is heard, so the address itself is read. The same array is returned
+ * while the list is unchanged (React's useSyncExternalStore compares snapshots by identity).
+ */
 export function getOpenFolds(): readonly string[] {
-  if (names === null) names = fromAddress();
+  if (names === null || listeners.size === 0) {
+    const next = fromAddress();
+    if (names === null || next.join(',') !== names.join(',')) names = next;
+  }
   return names;
 }
 
