@@ -2,7 +2,7 @@
 /**
  * Bundle budgets for the production build (run after `npm run build`). Gzipped sizes:
  *  - the entry (what `#/` downloads: index.html's module script and stylesheet, inline in the page
- *    but counted here, plus every chunk the entry imports statically) ≤ 96 kB, and none of
+ *    but counted here, plus every chunk the entry imports statically) ≤ 96.5 kB, and none of
  *    three.js, Plotly, mathjs, KaTeX in it (the shell itself: routing, the scene host, the share
  *    bar, the link's shell flags with the folds it opens, the deck's slide host, and the shared
  *    components' styles; every page's own code is a lazy chunk);
@@ -70,7 +70,7 @@ for (const f of entryFiles) {
 // Includes about 1 kB of rolldown's registry and per-module wrappers for shared chunks inlined into
 // their readers (vite.config.ts), which buy a scene 8–10 script requests before its first paint
 // instead of 19–28.
-const ENTRY_LIMIT = 96_000;
+const ENTRY_LIMIT = 96_500;
 if (entryTotal > ENTRY_LIMIT)
   failures.push(`entry is ${kB(entryTotal)} kB gzipped, over ${kB(ENTRY_LIMIT)} kB`);
 

@@ -1,7 +1,7 @@
 import { lazy, startTransition, Suspense, useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import { flushSync } from 'react-dom';
 import { predictPrompt, type PageInfo } from '../kit/catalogue';
-import { sceneLoader } from '../scenes/registry';
+import { loadedScene, sceneLoader } from '../scenes/registry';
 import type { SceneModule } from '../kit/scene';
 import {
   parseParams,
@@ -58,10 +58,21 @@ type LoadState =
 
 /** Loads a scene's chunk, parses its URL parameters, and hosts it with the shared chrome. */
 export function SceneHost({ info, query, flags, theme, slide }: Props) {
-  const [load, setLoad] = useState<LoadState>({ kind: 'loading' });
+  // The opened page's scene has usually arrived before the first render (main.tsx waits for it):
+  // it is then rendered at once, and the page's first paint shows it.
+  const [load, setLoad] = useState<LoadState>(() => {
+    const mod = loadedScene(info.id);
+    return mod ? { kind: 'ready', mod } : { kind: 'loading' };
+  });
   const hosted = !!slide;
   useEffect(() => {
     if (!hosted) document.title = `${info.title} — Render Math Lab`;
+    const known = loadedScene(info.id);
+    if (known) {
+      // (a deck's slide host is given another scene without remounting)
+      setLoad((prev) => (prev.kind === 'ready' && prev.mod === known ? prev : { kind: 'ready', mod: known }));
+      return;
+    }
     const loader = sceneLoader(info.id);
     if (!loader) {
       setLoad({ kind: 'missing' });

@@ -36,15 +36,31 @@ import { declaredLmsConfig } from '../lms/config';
 import { fuzzRequest } from './fuzzGate';
 import { keepFocusInView } from '../ui/focusInView';
 
-// The opened scene's chunk is requested now, while React mounts the shell, not once the shell has
-// rendered (index.html has already started downloading it: scripts/routePreload.ts). The
-// scene host's own import gets the same module; it also reports a failure.
+// The opened scene's chunk is requested at once (index.html has already started downloading it:
+// scripts/routePreload.ts), and the first render waits for it (firstRender below). A failure is
+// the scene host's to report: its own import of the same module fails too.
 const opened = findScene(parseHash(window.location.hash).path);
-if (opened) void sceneLoader(opened.id)?.().catch(() => undefined);
+const openedScene: Promise<unknown> = opened
+  ? (sceneLoader(opened.id)?.().catch(() => undefined) ?? Promise.resolve())
+  : Promise.resolve();
 
 // The reader's first key, press, wheel or touch ends the page's opening (../ui/whenQuiet
 // openingDone): listened for from the start, so that one made before the scene has mounted counts.
 void readerActed();
+
+/**
+ * The first render waits for the opened scene's chunk, so that the first paint shows the scene
+ * whole. Rendering the shell first ("Loading the scene…") and the scene when its chunk came was two
+ * first layouts of the page, the second a long task with the page already shown, and two changes
+ * of the page's height, each of which shows and fades a phone's overlay scrollbar (a run of
+ * frames). Where the chunk takes longer than FIRST_RENDER_WAIT_MS (a very slow connection), the
+ * shell shows "Loading the scene…" meanwhile, as it does when a scene is opened from another page.
+ */
+const FIRST_RENDER_WAIT_MS = 2500;
+async function firstRender(root: HTMLElement) {
+  await Promise.race([openedScene, new Promise((r) => setTimeout(r, FIRST_RENDER_WAIT_MS))]);
+  render(root);
+}
 
 const root = document.getElementById('root');
 // Inside an LMS package (SCORM, cmi5) the launch page declares it (../lms/config.ts): the LMS
@@ -56,7 +72,7 @@ if (root && inLms)
     .then((m) => m.startLms())
     .catch(() => undefined)
     .finally(() => render(root));
-else if (root) render(root);
+else if (root) void firstRender(root);
 
 function render(root: HTMLElement) {
   // a field reached with Tab stays on screen while the page settles around it (../ui/focusInView)

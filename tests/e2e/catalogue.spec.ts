@@ -69,6 +69,7 @@ for (const s of SCENES) {
       expect(await page.evaluate(() => scrollY), 'the page was not scrolled').toBe(0);
       expect(opening.early, `${s.id}: far sections or formulas done before the page settled`).toEqual([]);
       expect(opening.farSeen, `${s.id}: the page has work far below its first screen`).toBeGreaterThan(0);
+      expect(opening.loadingShown, `${s.id}: the shell was shown before its scene`).toBe(false);
       const tl = page.getByTestId('timeline');
       await expect(tl).toHaveAttribute('data-playing', '0');
       await expect(page.getByTestId('timeline-play')).toHaveAttribute('aria-pressed', 'false');

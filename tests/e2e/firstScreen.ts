@@ -5,6 +5,9 @@
  * the reader acts first. Done earlier, in the idle moments between the opening's own frames, it
  * competed with the opening for a phone's cores and stretched its tasks.
  *
+ * The opened scene's first paint is the scene itself, not the shell saying "Loading the scene…"
+ * (src/app/main.tsx waits for the scene's chunk before the first render).
+ *
  * `recordFirstScreen` installs, before the page's own scripts run, a recorder of what changed far
  * from the screen before the page settled; the page's reader then only looks (the fixtures' reader
  * who acts at once stays away: ./fixtures.ts `readerActs`). The page's own observers say what is
@@ -21,12 +24,14 @@ export interface FirstScreen {
   early: string[];
   /** whether the page has settled */
   settled: boolean;
+  /** whether the shell was shown without its scene ("Loading the scene…") */
+  loadingShown: boolean;
 }
 
 /** Records, from the next document's first script on, what is done far below the screen early. */
 export async function recordFirstScreen(page: Page): Promise<void> {
   await page.addInitScript(() => {
-    const rec = { farSeen: 0, early: [] as string[], settled: false };
+    const rec = { farSeen: 0, early: [] as string[], settled: false, loadingShown: false };
     (window as unknown as { __firstScreen: typeof rec }).__firstScreen = rec;
     /** last report per element: true near, false far (no entry: not reported yet) */
     const near = new WeakMap<Element, boolean>();
@@ -42,6 +47,7 @@ export async function recordFirstScreen(page: Page): Promise<void> {
     );
     const watch = (root: Node) => {
       if (!(root instanceof Element)) return;
+      if (root.matches('.loading') || root.querySelector('.loading')) rec.loadingShown = true;
       const els = [root, ...root.querySelectorAll('[data-deferred="pending"], .math-pending')];
       for (const el of els) if (el.matches('[data-deferred="pending"], .math-pending')) io.observe(el);
     };

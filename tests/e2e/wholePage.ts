@@ -349,6 +349,16 @@ export async function checkWholePage(
         ...(await frameState(page, 3000)),
         // and whether a frame comes once the page is brought to the front again
         afterBringToFront: await page.bringToFront().then(() => frameState(page, 3000)),
+        // and whether a screenshot (which asks the compositor for a frame of its own) or a resize
+        // brings frames, and the theme, back
+        shot: await page.screenshot({ timeout: 8000 }).then(
+          () => 'ok',
+          (e: unknown) => String(e).slice(0, 120),
+        ),
+        afterShot: await frameState(page, 3000),
+        themeAfterShot: await page.evaluate(() => document.documentElement.dataset.theme),
+        resize: await page.setViewportSize({ width: 376, height: 812 }).then(() => frameState(page, 3000)),
+        themeAfterResize: await page.evaluate(() => document.documentElement.dataset.theme),
       };
       throw new Error(
         `${e instanceof Error ? e.message : String(e)}\nthe page then: ${JSON.stringify(state)}`,
