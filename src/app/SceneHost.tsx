@@ -69,7 +69,7 @@ export function SceneHost({ info, query, flags, theme, slide }: Props) {
     if (!hosted) document.title = `${info.title} — Render Math Lab`;
     const known = loadedScene(info.id);
     if (known) {
-      // (a deck's slide host is given another scene without remounting)
+      // (its chunk may have come between the first render and now: main.tsx stops waiting at 2.5 s)
       setLoad((prev) => (prev.kind === 'ready' && prev.mod === known ? prev : { kind: 'ready', mod: known }));
       return;
     }
