@@ -11,8 +11,16 @@ import { dropQueryParam, parseHash, parseShellFlags } from '../kit/shell';
 const listeners = new Set<() => void>();
 let names: readonly string[] | null = null;
 
-function fromAddress(): readonly string[] {
-  return typeof window === 'undefined' ? [] : parseShellFlags(parseHash(window.location.hash).query).open;
+/**
+ * Takes the address's `open=` list, keeping the same array while the list is unchanged (React's
+ * useSyncExternalStore compares snapshots by identity); true when it changed.
+ */
+function takeAddress(): boolean {
+  const next =
+    typeof window === 'undefined' ? [] : parseShellFlags(parseHash(window.location.hash).query).open;
+  if (names && next.join(',') === names.join(',')) return false;
+  names = next;
+  return true;
 }
 
 function notify(): void {
@@ -20,24 +28,17 @@ function notify(): void {
 }
 
 function onHashChange(): void {
-  const next = fromAddress();
-  if (names && next.join(',') === names.join(',')) return;
-  names = next;
-  notify();
+  if (takeAddress()) notify();
 }
 
 /**
  * The open folds' names, in the order they were opened. While a fold or the share bar listens, the
  * list is kept here and follows the address's hashchanges; while nothing listens (between two
- * pages, say), no hashchange is heard, so the address itself is read. The same array is returned
- * while the list is unchanged (React's useSyncExternalStore compares snapshots by identity).
+ * pages, say), no hashchange is heard, so the address itself is read.
  */
 export function getOpenFolds(): readonly string[] {
-  if (names === null || listeners.size === 0) {
-    const next = fromAddress();
-    if (names === null || next.join(',') !== names.join(',')) names = next;
-  }
-  return names;
+  if (names === null || listeners.size === 0) takeAddress();
+  return names as readonly string[];
 }
 
 function subscribe(l: () => void): () => void {
