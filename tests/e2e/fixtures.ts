@@ -4,7 +4,12 @@
  */
 import { test as base, expect, type Frame, type Page } from '@playwright/test';
 
-export const test = base.extend<{ consoleErrors: string[]; backOnline: void; readerActs: void }>({
+export const test = base.extend<{
+  consoleErrors: string[];
+  backOnline: void;
+  readerActs: void;
+  framesOnFailure: void;
+}>({
   // Every page a test opens has a reader who acts at once: a wheel event that scrolls nothing, as
   // the document is parsed. The work far below a page's first screen (sections mounted late,
   // formulas typeset: src/ui/Deferred.tsx, src/ui/mathQueue.ts) waits for the page's opening to
@@ -29,6 +34,33 @@ export const test = base.extend<{ consoleErrors: string[]; backOnline: void; rea
     async ({ context }, use) => {
       await use();
       await context.setOffline(false);
+    },
+    { auto: true },
+  ],
+  // A failed test's page, described for its report: whether it still draws animation frames and
+  // what its canvases are. Headless Chromium has been seen to stop drawing frames on a page with a
+  // live WebGL canvas, which makes every wait that needs a frame time out (a media query's change,
+  // Playwright's "element is stable"); this says which page state a failure came from.
+  framesOnFailure: [
+    async ({ page }, use, testInfo) => {
+      await use();
+      if (testInfo.status === testInfo.expectedStatus || page.isClosed()) return;
+      const canvases = await Promise.race([
+        page.evaluate(() =>
+          [...document.querySelectorAll('canvas')].map((c) => {
+            const r = c.getBoundingClientRect();
+            // a WebGL canvas returns its context here, a 2D one null (one with none yet gets one)
+            const gl = c.getContext('webgl2') ?? c.getContext('webgl');
+            return `${c.width}×${c.height}${r.bottom < 0 || r.top > innerHeight ? ' off screen' : ''}${gl ? ` webgl${gl.isContextLost() ? ' LOST' : ''}` : ''}`;
+          }),
+        ),
+        new Promise<string>((resolve) => setTimeout(() => resolve('no answer in 5 s'), 5000)),
+      ]).catch((e: unknown) => String(e).slice(0, 160));
+      const state = { url: page.url(), ...(await frameState(page, 3000)), canvases };
+      await testInfo.attach('page state at the failure', {
+        body: JSON.stringify(state, null, 1),
+        contentType: 'text/plain',
+      });
     },
     { auto: true },
   ],
