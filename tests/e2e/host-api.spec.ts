@@ -371,6 +371,10 @@ test('the example host page: set, get, subscribe, change events and errors; the 
 
   await test.step('with origin= the scene answers only that origin: no reply, no height message', async () => {
     await navigateScene(`#/texture?embed=1&origin=${encodeURIComponent('https://lms.example.edu')}`);
+    // the new address is taken in a later task (a hashchange, then a render): until then the scene
+    // still answers everyone, and a resize still posts its height to '*'. It has taken it once the
+    // host page's own requests go unanswered.
+    await expect.poll(() => answered('get'), { timeout: 30_000 }).toBe('ignored');
     await expect(frame.locator('[data-deferred="pending"], .math-pending')).toHaveCount(0, {
       timeout: 30000,
     });

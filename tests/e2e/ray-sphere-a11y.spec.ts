@@ -50,6 +50,25 @@ async function ax(page: Page, selector: string): Promise<Ax | null> {
 const valueText = async (page: Page, testId: string) =>
   (await page.getByTestId(testId).getAttribute('aria-valuetext')) ?? '';
 
+/**
+ * Presses a key `n` times on a handle faster than frames: each press a task of its own, none
+ * waiting for a frame (what a held key does on a busy page).
+ */
+const pressFasterThanFrames = (page: Page, testId: string, key: string, n: number) =>
+  page.getByTestId(testId).evaluate(
+    async (el, [key, n]) => {
+      for (let i = 0; i < n; i++) {
+        el.dispatchEvent(new KeyboardEvent('keydown', { key, bubbles: true, cancelable: true }));
+        await new Promise((next) => {
+          const ch = new MessageChannel();
+          ch.port1.onmessage = next;
+          ch.port2.postMessage(null);
+        });
+      }
+    },
+    [key, n] as const,
+  );
+
 /** The group of the whole accessibility tree named `name` (how a screen reader finds the figure). */
 async function groupNamed(page: Page, name: string): Promise<Ax | null> {
   const session = await page.context().newCDPSession(page);
@@ -123,10 +142,15 @@ test('keyboard and accessibility tree: presets by keyboard alone, the handles as
     const rh = await ax(page, '[data-testid="handle-r"]');
     expect(rh).toMatchObject({ role: 'slider', name: 'sphere radius r' });
     expect(await valueText(page, 'handle-r')).toMatch(/^r = 1; the ray hits/);
-    // the radius grows with ↑ and shrinks with ↓ (a slider), and the value text follows
+    // the radius grows with ↑ and shrinks with ↓ (a slider), and the value text follows; every
+    // press counts, also three faster than frames (each steps on from the one before it)
+    const rOf = async () => Number(/^r = ([\d.]+); /.exec(await valueText(page, 'handle-r'))?.[1]);
     await page.getByTestId('handle-r').focus();
-    for (let i = 0; i < 3; i++) await page.keyboard.press('ArrowDown');
-    await expect.poll(async () => await valueText(page, 'handle-r')).toMatch(/^r = 0\.\d+; /);
+    await page.keyboard.press('ArrowDown');
+    await expect.poll(rOf).toBeLessThan(1);
+    const r1 = await rOf();
+    await pressFasterThanFrames(page, 'handle-r', 'ArrowDown', 3);
+    await expect.poll(rOf).toBeCloseTo(r1 - 3 * (1 - r1), 6);
     // the direction tip, moved up by keys, turns the ray away: a miss, said by its value text
     await page.getByTestId('handle-tip').focus();
     for (let i = 0; i < 12; i++) await page.keyboard.press('ArrowUp');

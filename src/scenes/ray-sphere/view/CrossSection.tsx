@@ -216,6 +216,23 @@ function handleAria(g: Layout, ray: RayState, target: Target) {
   };
 }
 
+/**
+ * The key presses on one handle not drawn yet: where in the figure they sent it (`at`; the radius
+ * for `r`), the value the last one sent, and every value the figure may still show on the way
+ * there (the one before the first press, and each sent since; the scene applies one per frame).
+ */
+interface KeyChain {
+  target: Target;
+  at: readonly [number, number] | number;
+  sent: string;
+  seen: Set<string>;
+}
+
+/** The parameter a handle moves, as a comparable text: o, c, r, or d for the direction tip. */
+function keyValue(target: Target, x: Partial<Pick<RayState, 'o' | 'd' | 'c' | 'r'>>): string {
+  return JSON.stringify(target === 'tip' ? x.d : x[target]);
+}
+
 export function CrossSection({
   o,
   d,
@@ -256,7 +273,16 @@ export function CrossSection({
   const labelsOn = useRef(false);
   if (mountingForPrint()) labelsOn.current = true;
   const layout = (x: CrossRay) => layoutCross(x, fitExtra, W, H, dragging, keep.current);
+  // Where the last key presses sent a handle, until a draw shows it (see `key` below). A draw that
+  // shows the value last sent, or one no press of the chain sent (a link, a drag, the timeline),
+  // ends the chain: the next press steps from what is drawn.
+  const keyed = useRef<KeyChain | null>(null);
   const draw = (x: CrossRay) => {
+    const chain = keyed.current;
+    if (chain) {
+      const v = keyValue(chain.target, x);
+      if (v === chain.sent || !chain.seen.has(v)) keyed.current = null;
+    }
     ray.current = x;
     const g = layout(x);
     shown.current = g;
@@ -300,29 +326,34 @@ export function CrossSection({
     return [g.v.cx + (p.x - g.W / 2) * g.v.s, g.v.cy - (p.y - g.H / 2) * g.v.s];
   };
 
-  const apply = (target: Target, x: number, y: number) => {
+  /** Moves a handle to (x, y) in the figure; returns the patch it sent (null: none). */
+  const apply = (target: Target, x: number, y: number): Partial<RaySphereParams> | null => {
     const g = cur();
     const { fr, O2, C2, dl, v, step } = g;
     const t = (q: Vec3) => tidyVec(q, step);
-    if (target === 'o') onChange({ o: t(fromFrame(fr, x, y)) });
-    else if (target === 'c') onChange({ c: t(fromFrame(fr, x, y)) });
+    let patch: Partial<RaySphereParams> | null = null;
+    if (target === 'o') patch = { o: t(fromFrame(fr, x, y)) };
+    else if (target === 'c') patch = { c: t(fromFrame(fr, x, y)) };
     else if (target === 'r') {
       const nr = Math.hypot(x - C2[0], y - C2[1]);
-      if (nr > step) onChange({ r: tidy(nr, step) });
+      if (nr > step) patch = { r: tidy(nr, step) };
     } else {
       const vx = x - O2[0];
       const vy = y - O2[1];
       const n = Math.hypot(vx, vy);
-      if (n < 4 * v.s) return;
+      if (n < 4 * v.s) return null;
       const w = dirFromFrame(fr, (vx / n) * dl, (vy / n) * dl);
       const ds = 10 ** Math.floor(Math.log10(dl / 500));
       const nd = tidyVec(w, ds);
-      if (nd.some((z) => z !== 0)) onChange({ d: nd });
+      if (nd.some((z) => z !== 0)) patch = { d: nd };
     }
+    if (patch) onChange(patch);
+    return patch;
   };
 
   const down = (target: Target) => (e: PointerEvent<SVGElement>) => {
     e.preventDefault();
+    keyed.current = null;
     svgRef.current?.setPointerCapture(e.pointerId);
     dragRef.current = { target, pointerId: e.pointerId };
     setDragging(target);
@@ -347,17 +378,36 @@ export function CrossSection({
   };
   // Arrow keys move a point 8 px in the figure (Shift: 1 px; Page Up / Down: 40 px). The radius is
   // a plain slider: Up / Right grow it, Down / Left shrink it.
+  //
+  // Presses can come faster than frames (a held key on a busy phone, a burst of input), while the
+  // scene applies at most one edit per frame and the figure redraws after it: each press steps on
+  // from where the previous press sent the handle, not from where it is drawn, or every press of a
+  // frame but one would be lost (see `keyed`).
   const key = (target: Target) => (e: KeyboardEvent<SVGElement>) => {
     const g = cur();
     const px = e.key === 'PageUp' || e.key === 'PageDown' ? 40 : e.shiftKey ? 1 : 8;
     const k = px * g.v.s;
+    const ahead = keyed.current?.target === target ? keyed.current : null;
+    const remember = (at: KeyChain['at'], patch: Partial<RaySphereParams>) => {
+      const sent = keyValue(target, patch);
+      keyed.current = {
+        target,
+        at,
+        sent,
+        seen: new Set([...(ahead?.seen ?? [keyValue(target, ray.current)]), sent]),
+      };
+    };
     if (target === 'r') {
       const sgn = { ArrowUp: 1, ArrowRight: 1, PageUp: 1, ArrowDown: -1, ArrowLeft: -1, PageDown: -1 }[e.key];
       if (!sgn) return;
       e.preventDefault();
       const step = e.shiftKey ? g.step / 10 : g.step;
-      const nr = tidy(g.r + sgn * Math.max(k, step), step);
-      if (nr > 0) onChange({ r: nr });
+      const from = typeof ahead?.at === 'number' ? ahead.at : g.r;
+      const nr = tidy(from + sgn * Math.max(k, step), step);
+      if (nr > 0) {
+        onChange({ r: nr });
+        remember(nr, { r: nr });
+      }
       return;
     }
     const dx = e.key === 'ArrowRight' ? k : e.key === 'ArrowLeft' ? -k : 0;
@@ -365,8 +415,10 @@ export function CrossSection({
       e.key === 'ArrowUp' || e.key === 'PageUp' ? k : e.key === 'ArrowDown' || e.key === 'PageDown' ? -k : 0;
     if (!dx && !dy) return;
     e.preventDefault();
-    const at = target === 'o' ? g.O2 : target === 'tip' ? g.tip : g.C2;
-    apply(target, at[0] + dx, at[1] + dy);
+    const at = Array.isArray(ahead?.at) ? ahead.at : target === 'o' ? g.O2 : target === 'tip' ? g.tip : g.C2;
+    const to: [number, number] = [at[0] + dx, at[1] + dy];
+    const patch = apply(target, to[0], to[1]);
+    if (patch) remember(to, patch);
   };
 
   const handle = (target: Target, cls: string) => (
