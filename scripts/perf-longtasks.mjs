@@ -12,10 +12,10 @@
  * bench/longtasks.json and prints, per route, the tasks over the goal and the longest.
  *
  *   npm run perf:longtasks, or npm run build && node scripts/perf-longtasks.mjs [--dist dist] [--port 4422] [--changes 200]
- *     [--mixed 40] [--scenes hemisphere,monte-carlo] [--case mixed] [--at 0.5] [--js] [--min 50]
- *     [--out bench/longtasks.json]
+ *     [--mixed 40] [--scenes hemisphere,monte-carlo] [--case mixed] [--at 0.5] [--open convergence,error]
+ *     [--js] [--min 50] [--out bench/longtasks.json]
  * (--case: only the cases whose name contains the text; --at: the storms run with the page
- * scrolled to that fraction of its height, 0 = the top.)
+ * scrolled to that fraction of its height, 0 = the top; --open: the folds every case opens.)
  *
  * Durations come from a Chromium trace of the page's main thread: `cpu` is the thread's own CPU
  * time inside each task (the trace's thread duration), which a machine busy with other work barely
@@ -54,6 +54,9 @@ const caseFilter = takeOpt(args, '--case', '');
 const at = Number(takeOpt(args, '--at', '0'));
 // --defaults: every scene at its default counts instead (what the same cases cost at the usual n)
 const atDefaults = args.includes('--defaults');
+// --open FOLDS: every case's address opens these folds too (open=…), so the plots in them load and,
+// in view (--at), redraw on every change of a storm
+const openFolds = takeOpt(args, '--open', '');
 
 const exe = findChromium();
 if (!exe) {
@@ -75,7 +78,8 @@ const cases = [];
 for (const s of SCENES) {
   if (only && !only.split(',').includes(s.id)) continue;
   const { query, seeded } = await maxCounts(s.id);
-  const base = `#${s.path}${query && !atDefaults ? `?${query}` : '?'}`;
+  const q = [query && !atDefaults ? query : '', openFolds ? `open=${openFolds}` : ''].filter(Boolean);
+  const base = `#${s.path}?${q.join('&')}`;
   cases.push({ scene: s.id, name: 'load', hash: base });
   if (seeded) {
     cases.push({ scene: s.id, name: `${changes} seed changes`, hash: base, storm: 'seed' });
