@@ -132,13 +132,20 @@ test('#/results: busy in its worker, a dropped file waits its turn, Cancel keeps
     statuses.join(' | '),
   ).toBe(true);
 
-  // Cancel: the batch stops, the page keeps what it had, and the next batch works
+  // Cancel: the batch stops, the page keeps what it had, and the next batch works (the batch is
+  // held, as above, so that it is surely still being checked when Cancel is pressed)
+  await page.evaluate(() => ((window as unknown as { __hold: boolean }).__hold = true));
   await input.setInputFiles(['cy', 'dan', 'eve', 'fay'].map((n) => resultsFile(`${n}.json`, n, 300)));
+  await expect
+    .poll(() => page.evaluate(() => (window as unknown as { __held: unknown[] }).__held.length))
+    .toBeGreaterThan(0);
   await expect(status).toContainText('Checking');
   await page.getByTestId('results-cancel').dispatchEvent('click');
   await expect(page.getByTestId('results-problems')).toContainText('Checking was cancelled');
   await expect(input).toBeEnabled();
   await expect(report).toHaveAttribute('data-files', '3');
+  // what was held goes to the cancelled batch's worker, which has been ended (nothing arrives)
+  await page.evaluate(() => (window as unknown as { __release: () => void }).__release());
   await input.setInputFiles([resultsFile('di.json', 'Di', 2)]);
   await expect(report).toHaveAttribute('data-files', '4', { timeout: 30_000 });
   await expect(report).toHaveAttribute('data-students', '3');
