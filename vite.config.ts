@@ -55,6 +55,9 @@ function compileHint(chunkName: string): Plugin {
   };
 }
 
+/** The chunk that holds Plotly (its group below; its budget in scripts/budgets.mjs). */
+const PLOTLY_CHUNK = 'vendor-plotly';
+
 /**
  * @stdlib's packages are CommonJS without a `sideEffects` field, so a bundler keeps them (and runs
  * their module code, tens of ms on a phone) in every chunk that imports them, even unused: the
@@ -95,7 +98,7 @@ export default defineConfig(({ mode }) => {
           // index.html starts the opened scene's chunks downloading with the entry
           routePreload(),
           // Plotly compiled off the main thread as it downloads (see compileHint)
-          compileHint('vendor-plotly'),
+          compileHint(PLOTLY_CHUNK),
           // the shell's stylesheet inline in index.html: one request fewer before a page's first paint
           inlineEntryCss(),
           // Offline: a Workbox service worker precaches every file of the build (all chunks, workers,
@@ -179,7 +182,7 @@ export default defineConfig(({ mode }) => {
                 experimentalInlineCommonChunks: { maxSize: 32 * 1024, exclude: /\.css(\?|$)/ },
                 groups: [
                   { name: 'vendor-three', test: /[\\/]node_modules[\\/]three[\\/]/ },
-                  { name: 'vendor-plotly', test: /[\\/]node_modules[\\/]plotly\.js-cartesian-dist-min[\\/]/ },
+                  { name: PLOTLY_CHUNK, test: /[\\/]node_modules[\\/]plotly\.js-cartesian-dist-min[\\/]/ },
                   // KaTeX's JavaScript only: its stylesheet's module must not pull the typesetter into
                   // the page (KaTeX runs in a worker, src/ui/katex.worker.ts)
                   { name: 'vendor-katex', test: /[\\/]node_modules[\\/]katex[\\/].*\.m?js$/ },

@@ -82,8 +82,16 @@ test('#/results: busy in its worker, a dropped file waits its turn, Cancel keeps
   const input = page.getByTestId('results-files');
   const status = page.getByTestId('results-status');
   const report = page.getByTestId('results-report');
+  type Held = { __hold: boolean; __held: unknown[]; __release: () => void };
+  /** From now on the results worker's messages wait (see the init script above). */
+  const hold = () => page.evaluate(() => ((window as unknown as Held).__hold = true));
+  /** Resolves once a message to the worker is waiting: the batch is surely still being checked. */
+  const untilHeld = () =>
+    expect.poll(() => page.evaluate(() => (window as unknown as Held).__held.length)).toBeGreaterThan(0);
+  /** The waiting messages go, and later ones are no longer held. */
+  const release = () => page.evaluate(() => (window as unknown as Held).__release());
 
-  await page.evaluate(() => ((window as unknown as { __hold: boolean }).__hold = true));
+  await hold();
   await input.setInputFiles([
     {
       name: 'broken.json',
@@ -92,9 +100,7 @@ test('#/results: busy in its worker, a dropped file waits its turn, Cancel keeps
     },
     resultsFile('ada.json', 'Ada', 250),
   ]);
-  await expect
-    .poll(() => page.evaluate(() => (window as unknown as { __held: unknown[] }).__held.length))
-    .toBeGreaterThan(0);
+  await untilHeld();
   await expect(input).toBeDisabled();
   await expect(page.getByTestId('results-cancel')).toBeVisible();
   // a file dropped while the batch is checked is queued, not lost
@@ -120,7 +126,7 @@ test('#/results: busy in its worker, a dropped file waits its turn, Cancel keeps
   });
   await page.getByTestId('results-drop').dispatchEvent('drop', { dataTransfer: drop });
   await expect(status).toContainText('1 more waiting');
-  await page.evaluate(() => (window as unknown as { __release: () => void }).__release());
+  await release();
   await expect(report).toHaveAttribute('data-files', '3', { timeout: 60_000 });
   await expect(report).toHaveAttribute('data-attempts', '251');
   await expect(report).toHaveAttribute('data-students', '2');
@@ -134,18 +140,16 @@ test('#/results: busy in its worker, a dropped file waits its turn, Cancel keeps
 
   // Cancel: the batch stops, the page keeps what it had, and the next batch works (the batch is
   // held, as above, so that it is surely still being checked when Cancel is pressed)
-  await page.evaluate(() => ((window as unknown as { __hold: boolean }).__hold = true));
+  await hold();
   await input.setInputFiles(['cy', 'dan', 'eve', 'fay'].map((n) => resultsFile(`${n}.json`, n, 300)));
-  await expect
-    .poll(() => page.evaluate(() => (window as unknown as { __held: unknown[] }).__held.length))
-    .toBeGreaterThan(0);
+  await untilHeld();
   await expect(status).toContainText('Checking');
   await page.getByTestId('results-cancel').dispatchEvent('click');
   await expect(page.getByTestId('results-problems')).toContainText('Checking was cancelled');
   await expect(input).toBeEnabled();
   await expect(report).toHaveAttribute('data-files', '3');
   // what was held goes to the cancelled batch's worker, which has been ended (nothing arrives)
-  await page.evaluate(() => (window as unknown as { __release: () => void }).__release());
+  await release();
   await input.setInputFiles([resultsFile('di.json', 'Di', 2)]);
   await expect(report).toHaveAttribute('data-files', '4', { timeout: 30_000 });
   await expect(report).toHaveAttribute('data-students', '3');
