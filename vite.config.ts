@@ -35,30 +35,6 @@ function inlineWorkers(): Plugin {
 }
 
 /**
- * Plotly's module factory, run on the main thread once a page's first plot loads, spends most of
- * its time compiling the library's functions as it first calls them (V8 compiles lazily). V8's
- * explicit compile hint, the comment `//# allFunctionsCalledOnLoad` at the top of a file (Chrome
- * 136 on; "Giving V8 a heads-up: faster JavaScript startup with explicit compile hints",
- * v8.dev/blog), has every function of the file compiled on the background thread that already
- * parses it as it downloads. Other engines read a comment. Added after minification (which
- * drops comments), to the named chunk only.
- */
-function compileHint(chunkName: string): Plugin {
-  return {
-    name: 'rml:compile-hint',
-    apply: 'build',
-    generateBundle(_options, bundle) {
-      for (const file of Object.values(bundle))
-        if (file.type === 'chunk' && file.name === chunkName)
-          file.code = `//# allFunctionsCalledOnLoad\n${file.code}`;
-    },
-  };
-}
-
-/** The chunk that holds Plotly (its group below; its budget in scripts/budgets.mjs). */
-const PLOTLY_CHUNK = 'vendor-plotly';
-
-/**
  * @stdlib's packages are CommonJS without a `sideEffects` field, so a bundler keeps them (and runs
  * their module code, tens of ms on a phone) in every chunk that imports them, even unused: the
  * χ² test's gammainc ended up in the hemisphere page's chunk, though only its worker runs the test
@@ -97,8 +73,6 @@ export default defineConfig(({ mode }) => {
           katexCssSplit(),
           // index.html starts the opened scene's chunks downloading with the entry
           routePreload(),
-          // Plotly compiled off the main thread as it downloads (see compileHint)
-          compileHint(PLOTLY_CHUNK),
           // the shell's stylesheet inline in index.html: one request fewer before a page's first paint
           inlineEntryCss(),
           // Offline: a Workbox service worker precaches every file of the build (all chunks, workers,
@@ -182,7 +156,6 @@ export default defineConfig(({ mode }) => {
                 experimentalInlineCommonChunks: { maxSize: 32 * 1024, exclude: /\.css(\?|$)/ },
                 groups: [
                   { name: 'vendor-three', test: /[\\/]node_modules[\\/]three[\\/]/ },
-                  { name: PLOTLY_CHUNK, test: /[\\/]node_modules[\\/]plotly\.js-cartesian-dist-min[\\/]/ },
                   // KaTeX's JavaScript only: its stylesheet's module must not pull the typesetter into
                   // the page (KaTeX runs in a worker, src/ui/katex.worker.ts)
                   { name: 'vendor-katex', test: /[\\/]node_modules[\\/]katex[\\/].*\.m?js$/ },

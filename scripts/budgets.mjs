@@ -50,7 +50,6 @@ const failures = [];
 // Libraries recognised by strings their minified code keeps, wherever they end up.
 const SIGNATURES = [
   ['three.js', /THREE\.WebGLRenderer|three\.module/],
-  ['Plotly', /plotly-latest|Plotly\.version|plotly\.js/i],
   ['KaTeX', /KaTeX parse error/],
   ['mathjs', /typed-function|Unexpected end of expression|Undefined symbol/],
 ];
@@ -60,7 +59,7 @@ for (const f of entryFiles) {
   const s = gz(f);
   entryTotal += s;
   rows.push(['entry', f, s]);
-  if (/vendor-(three|plotly|mathjs|katex)/.test(f)) failures.push(`the entry pulls in ${f}`);
+  if (/vendor-(three|mathjs|katex)/.test(f)) failures.push(`the entry pulls in ${f}`);
   if (f.endsWith('.js')) {
     const src = readFileSync(join(dist, f), 'utf8');
     for (const [lib, re] of SIGNATURES)
@@ -75,7 +74,6 @@ if (entryTotal > ENTRY_LIMIT)
   failures.push(`entry is ${kB(entryTotal)} kB gzipped, over ${kB(ENTRY_LIMIT)} kB`);
 
 const LIMITS = [
-  [/^vendor-plotly-/, 520_000],
   [/^vendor-three-/, 200_000],
   [/^vendor-katex-/, 110_000],
   [/^katex\.worker-/, 110_000], // KaTeX typesets in a worker (src/ui/katex.worker.ts)

@@ -5,7 +5,7 @@
  * or, for the inline ones the build itself writes (the scene preloader of the static build, the
  * whole app in the single file), by the SHA-256 hash of their text, computed here once the HTML is
  * final. Workers are same-origin files (static build) or Blob URLs (single file). Styles may be
- * inline: KaTeX's markup and Plotly set style attributes. `connect-src` is the app's own origin;
+ * inline: KaTeX's markup sets style attributes. `connect-src` is the app's own origin;
  * the cmi5 package widens it to the learning record store (src/lms/packages.ts).
  *
  * Build only: the dev server injects inline scripts of its own (hot reload).

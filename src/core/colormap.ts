@@ -1,14 +1,16 @@
 /**
- * The one colormap module of the project: perceptually ordered ramps only (pure: no DOM). Ten
- * stops sampled evenly from matplotlib's "viridis" and "magma" (van der Walt & Smith, 2015; the
- * same values as d3-scale-chromatic's interpolators at t = k/9), linearly interpolated in sRGB;
- * readable for the common colour-vision deficiencies and in greyscale. Viridis colours values
- * (texels, densities); magma colours error maps, as NVIDIA's FLIP tool does.
+ * The one colormap module of the project (pure: no DOM). Two perceptually ordered ramps, ten stops
+ * sampled evenly from matplotlib's "viridis" and "magma" (van der Walt & Smith, 2015; the same
+ * values as d3-scale-chromatic's interpolators at t = k/9), and one diverging ramp, ColorBrewer's
+ * 11-class "RdBu" (Brewer, colorbrewer2.org) ordered blue to red; all linearly interpolated in sRGB.
+ * Viridis colours values (texels, densities); magma colours error maps, as NVIDIA's FLIP tool
+ * does; the diverging ramp colours signed differences (blue below the middle, red above,
+ * near-white at it), readable for the common colour-vision deficiencies.
  */
 
-/** A ramp: its name and its ten evenly spaced sRGB stops (0–255). */
+/** A ramp: its name and its evenly spaced sRGB stops (0–255). */
 export interface Colormap {
-  readonly name: 'viridis' | 'magma';
+  readonly name: 'viridis' | 'magma' | 'diverging';
   readonly stops: readonly (readonly [number, number, number])[];
 }
 
@@ -38,8 +40,23 @@ const MAGMA_STOPS: readonly (readonly [number, number, number])[] = [
   [252, 253, 191],
 ];
 
+const DIVERGING_STOPS: readonly (readonly [number, number, number])[] = [
+  [5, 48, 97],
+  [33, 102, 172],
+  [67, 147, 195],
+  [146, 197, 222],
+  [209, 229, 240],
+  [247, 247, 247],
+  [253, 219, 199],
+  [244, 165, 130],
+  [214, 96, 77],
+  [178, 24, 43],
+  [103, 0, 31],
+];
+
 export const VIRIDIS: Colormap = { name: 'viridis', stops: VIRIDIS_STOPS };
 export const MAGMA: Colormap = { name: 'magma', stops: MAGMA_STOPS };
+export const DIVERGING: Colormap = { name: 'diverging', stops: DIVERGING_STOPS };
 
 /** RGB (0–255) of t ∈ [0, 1] (clamped; NaN → 0) on `map`. Writes into out (length ≥ offset + 3). */
 export function colorInto(
@@ -64,6 +81,7 @@ export function colorInto(
 const FLAT = {
   viridis: new Float64Array(VIRIDIS_STOPS.flat()),
   magma: new Float64Array(MAGMA_STOPS.flat()),
+  diverging: new Float64Array(DIVERGING_STOPS.flat()),
 };
 
 /**

@@ -1,27 +1,19 @@
-import { useEffect, useId, useMemo, useRef, useState } from 'react';
+import { useEffect, useId, useMemo, useRef, useState, type PointerEvent as ReactPointerEvent } from 'react';
 import { observeVisibility, touchOnly, useSeenOnce } from './useInView';
-import { resolveTraceColors } from './palette';
-import { isPresent } from './pageKeys';
+import { resolveColor } from './palette';
+import { usePresent } from './pageKeys';
+import { useWidth } from './useWidth';
+import { downloadFile } from './download';
+import { layoutChart, readoutAt, type ChartModel, type Rect, type View } from './chart/model';
+import { ChartSvg, type ChartColors, type Readout } from './chart/ChartSvg';
+import { pxToUnits } from './chart/axes';
+import type { ChartLayout, ChartTrace } from './chart/types';
+import { PLOT_TOOLS, type PlotTool } from './plotTools';
 import './plot.css';
-import { runChunked } from './chunked';
-import { PLOT_CONFIG, PLOT_LEGEND } from './plotConfig';
 
-type PlotlyModule = (typeof import('plotly.js-cartesian-dist-min'))['default'];
-let plotlyPromise: Promise<PlotlyModule> | null = null;
-
-/** Load plotly.js (cartesian bundle: scatter, bar, histogram, heatmap, histogram2d, contour) once. */
-export function loadPlotly(): Promise<PlotlyModule> {
-  if (!plotlyPromise) {
-    plotlyPromise = import('plotly.js-cartesian-dist-min').then(
-      (m) => (m as unknown as { default?: PlotlyModule }).default ?? (m as unknown as PlotlyModule),
-    );
-  }
-  return plotlyPromise;
-}
-
-/** A Plotly trace: plain objects as Plotly takes them. */
-export type PlotTrace = Record<string, unknown>;
-export type PlotLayout = Record<string, unknown>;
+/** A trace, in the shape of Plotly's (./chart/types). */
+export type PlotTrace = ChartTrace;
+export type PlotLayout = ChartLayout;
 
 export interface PlotProps {
   data: PlotTrace[];
@@ -33,25 +25,22 @@ export interface PlotProps {
   label?: string;
   /**
    * What its data shows, for readers who cannot see it (build it with summarizeSeries): the
-   * plot's aria-describedby text, visually hidden. Plotly's own SVG is not accessible.
+   * plot's aria-describedby text, visually hidden. The drawing itself is hidden from assistive
+   * technology.
    */
   description?: string;
   testId?: string;
 }
 
-/** Largest magnitude Plotly draws: beyond it its axis arithmetic overflows to NaN paths. */
+/** Largest magnitude drawn: beyond it a value is a gap (no axis spans ±10¹⁰⁰ meaningfully). */
 const PLOT_MAX_ABS = 1e100;
-/**
- * Smallest non-zero magnitude Plotly draws: below it (subnormals included) its axis arithmetic
- * underflows ("Something went wrong with axis scaling"), so such values are drawn as 0.
- */
+/** Smallest non-zero magnitude drawn as itself: below it (subnormals included) a value is drawn as 0. */
 const PLOT_MIN_ABS = 1e-100;
 
 /**
- * Replace infinite or astronomically large numbers (NaN is already a gap to Plotly) in the traces'
- * x / y / z arrays by null (a gap), and non-zero numbers too small for Plotly's axes by 0, so
- * Plotly never draws a NaN path or fails to scale an axis; returns the traces and how many values
- * were left out (`dropped`) or drawn as 0 (`flushed`).
+ * Replace infinite or astronomically large numbers (NaN is already a gap) in the traces' x / y / z
+ * arrays by null (a gap), and non-zero numbers too small for an axis by 0; returns the traces and
+ * how many values were left out (`dropped`) or drawn as 0 (`flushed`).
  */
 export function sanitizeTraces(data: PlotTrace[]): { data: PlotTrace[]; dropped: number; flushed: number } {
   let dropped = 0;
@@ -69,9 +58,9 @@ export function sanitizeTraces(data: PlotTrace[]): { data: PlotTrace[]; dropped:
     return v;
   };
   const out = data.map((t) => {
-    let copy: PlotTrace | null = null;
+    let copy: Record<string, unknown> | null = null;
     for (const k of ['x', 'y', 'z'] as const) {
-      const a = t[k];
+      const a = (t as unknown as Record<string, unknown>)[k];
       if (!Array.isArray(a) && !ArrayBuffer.isView(a)) continue;
       const arr = Array.from(a as ArrayLike<unknown>);
       let bad = false;
@@ -81,152 +70,238 @@ export function sanitizeTraces(data: PlotTrace[]): { data: PlotTrace[]; dropped:
       copy ??= { ...t };
       copy[k] = arr.map((v) => (Array.isArray(v) ? v.map(clean) : clean(v)));
     }
-    return copy ?? t;
+    return (copy ?? t) as PlotTrace;
   });
   return { data: out, dropped, flushed };
-}
-
-function themeColors() {
-  const cs = getComputedStyle(document.documentElement);
-  return {
-    fg: cs.getPropertyValue('--fg').trim() || '#222',
-    grid: cs.getPropertyValue('--grid').trim() || '#ddd',
-    font: cs.getPropertyValue('--plot-font-size').trim() || '13',
-  };
 }
 
 /** Classroom mode: the smallest tick label size (px), readable from the back of a lecture hall. */
 export const PRESENT_TICK_PX = 18;
 
-/**
- * Raises every axis's tick labels to {@link PRESENT_TICK_PX} (a layout's own larger size stays). A
- * log axis labels the digits between its decades ("2", "5") at 3/4 of its tick size, so its tick
- * size is 4/3 of that.
- */
-function presentTicks(layout: PlotLayout): void {
-  for (const [k, v] of Object.entries(layout)) {
-    if (!/^[xy]axis\d*$/.test(k) || !v || typeof v !== 'object') continue;
-    const ax = v as { tickfont?: { size?: unknown }; type?: unknown };
-    const size = typeof ax.tickfont?.size === 'number' ? ax.tickfont.size : 0;
-    const least = ax.type === 'log' ? Math.ceil((PRESENT_TICK_PX * 4) / 3) : PRESENT_TICK_PX;
-    layout[k] = { ...v, tickfont: { ...ax.tickfont, size: Math.max(size, least) } };
-  }
-}
-
 /** How far outside the viewport a plot still redraws on a change: one screen above and below. */
 const NEAR_VIEW = '100% 0px';
 
+let measureCtx: CanvasRenderingContext2D | null | undefined;
+/** Width of text in the page's font: a canvas measures it; without one, an average glyph width. */
+function measurer(family: string): (text: string, size: number) => number {
+  if (measureCtx === undefined)
+    measureCtx = typeof document !== 'undefined' ? document.createElement('canvas').getContext('2d') : null;
+  const ctx = measureCtx;
+  const cache = new Map<string, number>();
+  return (text, size) => {
+    const key = `${size}|${text}`;
+    let w = cache.get(key);
+    if (w === undefined) {
+      if (ctx) {
+        ctx.font = `${size}px ${family}`;
+        w = ctx.measureText(text).width;
+      } else w = text.length * size * 0.56;
+      cache.set(key, w);
+    }
+    return w;
+  };
+}
+
+function themeColors(): ChartColors {
+  const cs = getComputedStyle(document.documentElement);
+  const v = (name: string, fallback: string) => cs.getPropertyValue(name).trim() || fallback;
+  const cache = new Map<string, string>();
+  return {
+    fg: v('--fg', '#222'),
+    muted: v('--muted', '#555'),
+    grid: v('--grid', '#ddd'),
+    bg: v('--bg', '#fff'),
+    paint: (c) => {
+      if (!c.startsWith('var(')) return c;
+      let r = cache.get(c);
+      if (r === undefined) cache.set(c, (r = resolveColor(c)));
+      return r;
+    },
+  };
+}
+
+/** The view `k` times narrower (k < 1: wider) about its middle, on both axes. */
+function zoomed(m: ChartModel, k: number): View {
+  const scale = (lo: number, hi: number): [number, number] => {
+    const mid = (lo + hi) / 2;
+    const half = ((hi - lo) / 2) * k;
+    return [mid - half, mid + half];
+  };
+  return { x: scale(m.x.lo, m.x.hi), y: scale(m.y.lo, m.y.hi) };
+}
+
+const TOOL_TEXT: Record<PlotTool, { label: string; glyph: string }> = {
+  save: { label: 'Save the plot as a PNG image', glyph: '⤓' },
+  zoomIn: { label: 'Zoom in', glyph: '+' },
+  zoomOut: { label: 'Zoom out', glyph: '−' },
+  reset: { label: 'Reset the axes', glyph: '⟲' },
+};
+
+/** Save the drawn SVG as a PNG at twice its size, on the page's background. */
+function savePng(svg: SVGSVGElement, bg: string, name: string) {
+  const w = svg.width.baseVal.value;
+  const h = svg.height.baseVal.value;
+  const copy = svg.cloneNode(true) as SVGSVGElement;
+  copy.setAttribute('xmlns', 'http://www.w3.org/2000/svg');
+  copy.setAttribute('font-family', getComputedStyle(svg).fontFamily);
+  copy.querySelector('.chart-readout')?.remove();
+  const url = URL.createObjectURL(
+    new Blob([new XMLSerializer().serializeToString(copy)], { type: 'image/svg+xml' }),
+  );
+  const img = new Image();
+  img.onload = () => {
+    const canvas = document.createElement('canvas');
+    canvas.width = w * 2;
+    canvas.height = h * 2;
+    const ctx = canvas.getContext('2d');
+    URL.revokeObjectURL(url);
+    if (!ctx) return;
+    ctx.fillStyle = bg;
+    ctx.fillRect(0, 0, canvas.width, canvas.height);
+    ctx.scale(2, 2);
+    ctx.drawImage(img, 0, 0, w, h);
+    canvas.toBlob((b) => b && downloadFile(name, b, 'image/png'), 'image/png');
+  };
+  img.onerror = () => URL.revokeObjectURL(url);
+  img.src = url;
+}
+
 /**
- * A lazy Plotly plot: plotly.js loads only when the plot scrolls near the viewport; updates go
- * through Plotly.react in an effect (cheap diffing); the plot is purged on unmount. A plot far off
- * screen does not redraw on every change (a storm of changes would redraw every plot of the page
- * each time): it draws its latest data when it comes back near the viewport.
+ * A plot drawn by the project's own chart (./chart): an SVG laid out from Plotly-shaped traces and
+ * layout, drawn once the plot comes near the screen. A plot far off screen does not redraw on
+ * every change (a storm of changes would redraw every plot of the page each time): it draws its
+ * latest data when it comes back near the viewport. The pointer reads the nearest point out; a
+ * mouse drag zooms to a box, a double click goes back; the tool buttons (shown on hover or focus)
+ * zoom, reset and save a PNG.
  */
 export function Plot({ data, layout, height = 280, ariaLabel, label, description, testId }: PlotProps) {
   const descId = `${useId()}-description`;
-  const box = useRef<HTMLDivElement>(null);
-  const el = useRef<HTMLDivElement>(null);
+  const box = useRef<HTMLElement>(null);
+  const svgRef = useRef<SVGSVGElement>(null);
   const seen = useSeenOnce(box);
-  const [plotly, setPlotly] = useState<PlotlyModule | null>(null);
-  const [failed, setFailed] = useState(false);
+  const width = useWidth(box, 0);
+  const present = usePresent();
   const [near, setNear] = useState(true);
   useEffect(() => {
     const node = box.current;
     return node ? observeVisibility(node, setNear, NEAR_VIEW) : undefined;
   }, []);
-  /** The inputs of the last redraw that ran (a plot back in view with the same ones draws nothing). */
-  const drawnFor = useRef<readonly unknown[] | null>(null);
   const themeKey =
-    typeof document !== 'undefined'
-      ? `${document.documentElement.dataset.theme}-${document.documentElement.classList.contains('present')}`
-      : '';
+    typeof document !== 'undefined' ? `${document.documentElement.dataset.theme}-${present}` : '';
 
-  useEffect(() => {
-    if (!seen) return;
-    let alive = true;
-    loadPlotly().then(
-      (p) => alive && setPlotly(() => p),
-      () => alive && setFailed(true),
-    );
-    return () => {
-      alive = false;
-    };
-  }, [seen]);
-
-  // Layouts are small: compare them by content, so an inline `layout={{…}}` does not make Plotly
-  // redraw on every render of the parent. Data is compared by identity (memoise it).
+  // Layouts are small: compare them by content, so an inline `layout={{…}}` does not redraw on
+  // every render of the parent. Data is compared by identity (memoise it).
   const layoutKey = layout ? JSON.stringify(layout) : '';
-  const clean = useMemo(() => sanitizeTraces(data), [data]);
   const layoutRef = useRef(layout);
   layoutRef.current = layout;
+  const clean = useMemo(() => sanitizeTraces(data), [data]);
+  /** The data drawn: the latest while near the screen, else the last drawn. */
+  const shown = useRef(clean);
+  if (near) shown.current = clean;
+  const drawn = shown.current;
 
-  useEffect(() => {
-    if (!plotly || !el.current || !near) return;
-    const inputs = [plotly, clean, layoutKey, height, themeKey] as const;
-    if (drawnFor.current?.every((x, i) => x === inputs[i])) return;
-    const layout = layoutRef.current;
-    const c = themeColors();
-    // mathematical axes: powers of ten (1×10⁻⁶), never SI prefixes (1µ)
-    const axis = {
-      gridcolor: c.grid,
-      zerolinecolor: c.grid,
-      linecolor: c.grid,
-      automargin: true,
-      exponentformat: 'power',
-    };
-    const base: PlotLayout = {
-      height,
-      margin: { l: 56, r: 16, t: 28, b: 44 },
-      paper_bgcolor: 'rgba(0,0,0,0)',
-      plot_bgcolor: 'rgba(0,0,0,0)',
-      font: { color: c.fg, size: Number(c.font) || 13 },
-      legend: PLOT_LEGEND,
-      xaxis: axis,
-      yaxis: axis,
-    };
-    const merged: PlotLayout = { ...base, ...layout };
-    for (const k of ['xaxis', 'yaxis', 'xaxis2', 'yaxis2']) {
-      if (layout && layout[k]) merged[k] = { ...axis, ...(layout[k] as object) };
+  const [view, setView] = useState<View>({});
+  useEffect(() => setView({}), [layoutKey]);
+  const [readout, setReadout] = useState<Readout | null>(null);
+  const [drag, setDrag] = useState<{ x0: number; y0: number; box: Rect } | null>(null);
+
+  const style = useMemo(() => {
+    if (typeof document === 'undefined' || !box.current) return null;
+    const cs = getComputedStyle(document.documentElement);
+    const font = Number(cs.getPropertyValue('--plot-font-size').trim()) || 13;
+    const own = layoutRef.current?.xaxis?.tickfont?.size ?? 0;
+    const tick = Math.max(font, own, present ? PRESENT_TICK_PX : 0);
+    // the 2s and 5s between a log axis's decades are smaller, except in a lecture hall
+    const minorTick = present ? tick : Math.round(tick * 0.8);
+    return { font, tick, minorTick, measure: measurer(getComputedStyle(box.current).fontFamily), themeKey };
+    // themeKey: sizes and colours follow the theme and classroom mode
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+  }, [themeKey, present, layoutKey, seen, width]);
+
+  const result = useMemo(() => {
+    if (!seen || !style || width <= 0) return null;
+    try {
+      const colors = themeColors();
+      const model = layoutChart(drawn.data, layoutRef.current ?? {}, width, height, style, view);
+      return { model, colors };
+    } catch {
+      return 'failed' as const;
     }
-    if (isPresent()) presentTicks(merged);
-    // Each plot's redraw is a job of its own (./chunked): the plots that one change updates
-    // together (a scene has up to four) are drawn in separate tasks, not in one long one.
-    const node = el.current;
-    let settle = () => {};
-    let started = false;
-    pending.current = new Promise<void>((resolve) => (settle = resolve));
-    const cancel = runChunked(() => {
-      started = true;
-      drawnFor.current = inputs;
-      plotly
-        .react(node, resolveTraceColors(clean.data), resolveTraceColors(merged), {
-          ...PLOT_CONFIG,
-          // on touch screens the mode bar would sit over titles and legends with no hover to hide it
-          displayModeBar: touchOnly() ? false : 'hover',
-        })
-        .catch(() => setFailed(true))
-        .finally(settle);
-    });
-    return () => {
-      // a newer redraw replaces one not started yet; one under way settles by itself
-      cancel();
-      if (!started) settle();
-    };
-  }, [plotly, clean, layoutKey, height, themeKey, near]);
+    // eslint-disable-next-line react-hooks/exhaustive-deps
+  }, [seen, style, width, height, drawn, view, layoutKey]);
+  const model = result && result !== 'failed' ? result.model : null;
+  useEffect(() => setReadout(null), [model]);
 
-  // Purge only after the last react() has settled and its follow-up redraws (Plotly's auto-margin
-  // pass) have run: purging a plot mid-update makes Plotly throw "e.emit is not a function" from
-  // an internal promise (seen when a control change unmounts a plot while it redraws).
-  const pending = useRef<Promise<unknown> | null>(null);
-  useEffect(() => {
-    const node = el.current;
-    return () => {
-      if (!node || !plotly) return;
-      const purge = () => setTimeout(() => plotly.purge(node), 300);
-      if (pending.current) void pending.current.then(purge, purge);
-      else purge();
+  const local = (e: ReactPointerEvent) => {
+    const r = (e.currentTarget as Element).getBoundingClientRect();
+    return { x: e.clientX - r.left, y: e.clientY - r.top };
+  };
+  const inPlot = (p: { x: number; y: number }) =>
+    !!model &&
+    p.x >= model.plot.x &&
+    p.x <= model.plot.x + model.plot.w &&
+    p.y >= model.plot.y &&
+    p.y <= model.plot.y + model.plot.h;
+  const onPointerDown = (e: ReactPointerEvent) => {
+    const p = local(e);
+    if (!model) return;
+    if (e.pointerType !== 'mouse') {
+      setReadout(readoutAt(model, p.x, p.y, 32));
+      return;
+    }
+    if (e.button !== 0 || !inPlot(p)) return;
+    (e.currentTarget as Element).setPointerCapture?.(e.pointerId);
+    setDrag({ x0: p.x, y0: p.y, box: { x: p.x, y: p.y, w: 0, h: 0 } });
+  };
+  const onPointerMove = (e: ReactPointerEvent) => {
+    if (!model || e.pointerType !== 'mouse') return;
+    const p = local(e);
+    if (drag) {
+      const { plot } = model;
+      const x = Math.min(Math.max(p.x, plot.x), plot.x + plot.w);
+      const y = Math.min(Math.max(p.y, plot.y), plot.y + plot.h);
+      setDrag({
+        ...drag,
+        box: {
+          x: Math.min(drag.x0, x),
+          y: Math.min(drag.y0, y),
+          w: Math.abs(x - drag.x0),
+          h: Math.abs(y - drag.y0),
+        },
+      });
+      return;
+    }
+    setReadout(readoutAt(model, p.x, p.y));
+  };
+  const onPointerUp = () => {
+    if (!drag || !model) return;
+    const { box: b } = drag;
+    setDrag(null);
+    const wide = b.w >= 8;
+    const tall = b.h >= 8;
+    if (!wide && !tall) return;
+    const range = (a: typeof model.x, p0: number, p1: number): [number, number] => {
+      const u0 = pxToUnits(a, p0);
+      const u1 = pxToUnits(a, p1);
+      return [Math.min(u0, u1), Math.max(u0, u1)];
     };
-  }, [plotly]);
+    setView({
+      x: wide ? range(model.x, b.x, b.x + b.w) : [model.x.lo, model.x.hi],
+      y: tall ? range(model.y, b.y, b.y + b.h) : [model.y.lo, model.y.hi],
+    });
+  };
+  const press = (b: PlotTool) => {
+    if (!model) return;
+    if (b === 'zoomIn') setView(zoomed(model, 0.5));
+    else if (b === 'zoomOut') setView(zoomed(model, 2));
+    else if (b === 'reset') setView({});
+    else if (svgRef.current && result && result !== 'failed')
+      savePng(
+        svgRef.current,
+        result.colors.bg,
+        `${(label ?? ariaLabel ?? 'plot').replace(/[^\w-]+/g, '-').slice(0, 60)}.png`,
+      );
+  };
 
   return (
     <figure
@@ -243,9 +318,46 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
           {description}
         </p>
       ) : null}
-      {failed ? <p className="plot-placeholder">The plot could not be drawn.</p> : null}
-      {!plotly && !failed ? <p className="plot-placeholder">Loading plot…</p> : null}
-      <div ref={el} className="plot-canvas" />
+      {result === 'failed' ? <p className="plot-placeholder">The plot could not be drawn.</p> : null}
+      {!result ? <p className="plot-placeholder">Loading plot…</p> : null}
+      {model && result !== 'failed' ? (
+        <div
+          className="plot-canvas"
+          onPointerDown={onPointerDown}
+          onPointerMove={onPointerMove}
+          onPointerUp={onPointerUp}
+          onPointerCancel={() => setDrag(null)}
+          onPointerLeave={() => !drag && setReadout(null)}
+          onDoubleClick={() => setView({})}
+        >
+          <ChartSvg
+            model={model}
+            colors={result!.colors}
+            tick={style!.tick}
+            minorTick={style!.minorTick}
+            font={style!.font}
+            readout={readout}
+            zoomBox={drag && (drag.box.w > 2 || drag.box.h > 2) ? drag.box : null}
+            svgRef={svgRef}
+          />
+        </div>
+      ) : null}
+      {model && !touchOnly() ? (
+        <div className="plot-tools">
+          {PLOT_TOOLS.map((b) => (
+            <button
+              key={b}
+              type="button"
+              className="plot-tool"
+              aria-label={TOOL_TEXT[b].label}
+              title={TOOL_TEXT[b].label}
+              onClick={() => press(b)}
+            >
+              {TOOL_TEXT[b].glyph}
+            </button>
+          ))}
+        </div>
+      ) : null}
       {clean.dropped > 0 ? (
         <figcaption className="small" data-testid="plot-dropped">
           {clean.dropped} value{clean.dropped === 1 ? '' : 's'} too large to draw (±∞ or beyond ±10¹⁰⁰) left

@@ -13,7 +13,8 @@ export { usePresent, isPresent } from './pageKeys';
 export { keepTextParenthesesTogether } from './texBreaks';
 export { MathTex, loadKatex, preloadMath } from './MathTex';
 export { runChunked, nextTask } from './chunked';
-export { Plot, loadPlotly, type PlotTrace, type PlotLayout } from './Plot';
+export { Plot, type PlotTrace, type PlotLayout } from './Plot';
+export type { Dash, LegendSpec, LineStyle, MarkerStyle, MarkerSymbol } from './chart/types';
 export { useShortcuts, type ShortcutHandlers } from './shortcuts';
 export { useSeenOnce, observeVisibility, touchOnly } from './useInView';
 export {

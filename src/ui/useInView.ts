@@ -2,7 +2,7 @@ import { useEffect, useState, type RefObject } from 'react';
 
 /**
  * True once the element has come within `margin` of the viewport (sticky: stays true), so heavy
- * modules (Plotly, three.js) load only when a view that needs them is about to be seen.
+ * work (drawing a plot, loading three.js) waits until a view that needs it is about to be seen.
  */
 export function useSeenOnce(ref: RefObject<Element | null>, margin = '200px'): boolean {
   const [seen, setSeen] = useState(false);
@@ -54,7 +54,7 @@ export function observeVisibility(
 
 /**
  * True on a touch-only device (a phone or tablet: no hover, a coarse pointer). Such devices get
- * lighter defaults: no Plotly mode bar, and 3D views that start when asked (src/three/Viewport).
+ * lighter defaults: no plot tool buttons, and 3D views that start when asked (src/three/Viewport).
  */
 export function touchOnly(): boolean {
   return (

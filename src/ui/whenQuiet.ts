@@ -5,7 +5,7 @@
  * count again.
  *
  * Used to register the service worker: its install downloads and stores the whole build
- * (every scene, Plotly, three.js, KaTeX's fonts), about a second of CPU on a worker thread. Started
+ * (every scene, three.js, KaTeX's fonts), about a second of CPU on a worker thread. Started
  * while a scene is still mounting its sections, it took the second core from the page on a phone
  * and stretched the page's own tasks several times over.
  */

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { colorInto, colorizeInto, MAGMA, VIRIDIS } from '../../src/core/colormap';
+import { colorInto, colorizeInto, DIVERGING, MAGMA, VIRIDIS } from '../../src/core/colormap';
 
 /** Relative luminance (WCAG) of an sRGB byte triple. */
 function luminance(c: ArrayLike<number>): number {
@@ -34,6 +34,31 @@ describe('colormap', () => {
       }
     });
   }
+  it('diverging: luminance rises to its lightest at the middle and falls after it; blue below, red above', () => {
+    const lum = (t: number) => {
+      const c = [0, 0, 0];
+      colorInto(t, c, 0, DIVERGING);
+      return { y: luminance(c), c };
+    };
+    for (let k = 0; k < 50; k++) {
+      expect(lum((k + 1) / 100).y).toBeGreaterThan(lum(k / 100).y);
+      expect(lum(1 - (k + 1) / 100).y).toBeGreaterThan(lum(1 - k / 100).y);
+    }
+    const lo = lum(0.1).c;
+    const hi = lum(0.9).c;
+    expect(lo[2]).toBeGreaterThan(lo[0]);
+    expect(hi[0]).toBeGreaterThan(hi[2]);
+  });
+  it(`diverging: the batched image path gives the same bytes as the scalar one`, () => {
+    const values = Float64Array.from({ length: 21 }, (_, i) => -5 + i / 2);
+    const img = new Uint8ClampedArray(4 * 21);
+    colorizeInto(values, 21, -4, 4, img, DIVERGING);
+    for (let k = 0; k < 21; k++) {
+      const c = [0, 0, 0];
+      colorInto((values[k] + 4) / 8, c, 0, DIVERGING);
+      expect([img[4 * k], img[4 * k + 1], img[4 * k + 2]]).toEqual(c);
+    }
+  });
   it('the ends are the published stops', () => {
     const c = [0, 0, 0];
     colorInto(0, c, 0, MAGMA);

@@ -16,7 +16,7 @@ import { defaultValues, parseParams } from '../../src/kit/params';
 import { schema } from '../../src/scenes/area-light/params';
 import { animationFrame, animationLength, sampleRun } from '../../src/scenes/area-light/animation';
 import { buildModel, estimateOne, TIMING_COUNTS } from '../../src/scenes/area-light/model';
-import { STRATEGIES } from '../../src/scenes/area-light/strategies';
+import { STRATEGIES, STRATEGY_SHORT } from '../../src/scenes/area-light/strategies';
 import { SYNC_MAX } from '../../src/scenes/area-light/model';
 import type { LightStrategy } from '../../src/core/lights';
 import { decodePng, rgbFromRgba8 } from '../../src/core/image/png';
@@ -174,8 +174,13 @@ test('work in workers: a large n without blocking (within 3σ), and the converge
 
   // The "Convergence" and "Run time against error" panels (folds under Explore further) start their
   // worker runs when, once open, they come near the screen: their tables fill with one row per
-  // checkpoint and one per (strategy, N).
-  await test.step('opened and scrolled into view, the convergence and timing panels get their data', async () => {
+  // checkpoint and one per (strategy, N), and their plots draw a line per strategy from the
+  // scene's own code (no plotting library is fetched for them).
+  await test.step('opened and scrolled into view, the convergence and timing panels get their data and draw it', async () => {
+    const scripts: string[] = [];
+    page.on('request', (r) => {
+      if (r.resourceType() === 'script') scripts.push(new URL(r.url()).pathname);
+    });
     await openScene(page, '#/area-light?open=convergence,timing');
     const convergence = page.getByTestId('al-convergence-table');
     await convergence.scrollIntoViewIfNeeded();
@@ -190,5 +195,17 @@ test('work in workers: a large n without blocking (within 3σ), and the converge
     await expect(timing.locator('tbody tr')).toHaveCount(STRATEGIES.length * TIMING_COUNTS.length, {
       timeout: 90_000,
     });
+    for (const id of ['al-convergence-plot', 'al-timing-plot']) {
+      const plot = page.getByTestId(id);
+      await plot.scrollIntoViewIfNeeded();
+      // a marked line per strategy: its markers' path holds one shape per point
+      await expect(plot.locator('svg.chart path.chart-markers')).toHaveCount(STRATEGIES.length, {
+        timeout: 30_000,
+      });
+      expect(await plot.locator('svg.chart .chart-legend text').allTextContents()).toEqual(
+        STRATEGIES.map((s) => STRATEGY_SHORT[s]),
+      );
+    }
+    expect(scripts.filter((u) => /vendor-(?!three|katex)/.test(u))).toEqual([]);
   });
 });

@@ -6,10 +6,10 @@
  * (scrolled to the top); `page` every one on the page as it is (folded parts closed). `screens` is
  * the page's height in screens.
  *
- * A plot's mode bar (Plotly's buttons) is drawn only once the plot has come near the screen, so
- * whether it is there depends on how far the page has been scrolled and how fast the machine is.
- * Its buttons are left out of the walk and counted instead as `modebarStops` per plot
- * (`figure.plot`, ../../src/ui/Plot.tsx), drawn or not: the count is the same on every machine.
+ * A plot's tool buttons (zoom, reset, save) are drawn only once the plot has come near the screen,
+ * so whether they are there depends on how far the page has been scrolled and how fast the machine
+ * is. They are left out of the walk and counted instead as `toolStops` per plot (`figure.plot`,
+ * ../../src/ui/Plot.tsx), drawn or not: the count is the same on every machine.
  *
  * The function runs in the page (page.evaluate), so it must not use anything from its module scope.
  */
@@ -21,7 +21,7 @@ export interface CalmCount {
   first: string[];
 }
 
-export function countTabStops(modebarStops: number): CalmCount {
+export function countTabStops(toolStops: number): CalmCount {
   const selector =
     'a[href], button, input, select, textarea, summary, iframe, audio[controls], video[controls], [tabindex], [contenteditable="true"]';
   const seenRadio = new Set<string>();
@@ -30,7 +30,7 @@ export function countTabStops(modebarStops: number): CalmCount {
   const first: string[] = [];
   const top = window.scrollY;
   for (const el of Array.from(document.querySelectorAll<HTMLElement>(selector))) {
-    if (el.closest('.site-header, [inert], [hidden], [aria-hidden="true"], .modebar-container')) continue;
+    if (el.closest('.site-header, [inert], [hidden], [aria-hidden="true"], .plot-tools')) continue;
     if (el.tabIndex < 0) continue;
     if ((el as HTMLButtonElement).disabled) continue;
     if (el instanceof HTMLInputElement && el.type === 'hidden') continue;
@@ -60,12 +60,12 @@ export function countTabStops(modebarStops: number): CalmCount {
   for (const plot of Array.from(document.querySelectorAll<HTMLElement>('figure.plot'))) {
     if (plot.closest('.site-header, [inert], [hidden], [aria-hidden="true"]')) continue;
     if (plot.getClientRects().length === 0) continue;
-    page += modebarStops;
+    page += toolStops;
     const r = plot.getBoundingClientRect();
     const y0 = r.top + window.scrollY - top;
     if (y0 < window.innerHeight && y0 + r.height > 0) {
-      firstScreen += modebarStops;
-      first.push(`plot mode bar:${plot.getAttribute('aria-label') ?? ''} (${modebarStops})`);
+      firstScreen += toolStops;
+      first.push(`plot tools:${plot.getAttribute('aria-label') ?? ''} (${toolStops})`);
     }
   }
   return {

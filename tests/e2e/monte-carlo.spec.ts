@@ -177,7 +177,7 @@ test('wiring: the exam’s Q4 part by part, typed integrands and pdfs, bad ones,
     await expect(page.getByTestId('stderr').locator('..')).toContainText('zero variance');
     await page.getByRole('heading', { name: /Convergence as N grows/ }).scrollIntoViewIfNeeded();
     await expect(page.getByTestId('exact-strategies')).toContainText('p ∝ f', { timeout: 45000 });
-    await expect(page.locator('.mc-plots .js-plotly-plot').first()).toBeVisible();
+    await expect(page.locator('.mc-plots svg.chart').first()).toBeVisible();
     // a ramp that only approximates f: a real spread
     await page.goto('./#/monte-carlo?pdf=linear&n=2000');
     await waitForReadout(page, 'estimate', (v) => v !== 'none' && Math.abs(Number(v) - I) > 1e-10);

@@ -4,7 +4,7 @@
  * in view, its histograms counting the samples drawn; `r` goes back to the state the page was
  * opened with; Copy link and the QR code keep classroom mode and the held-back results, and
  * nothing of the page's own query; a lesson preset chosen in the guide opens with its question in
- * view; every Plotly plot's tick labels are at least 18 px. The link's flags themselves are unit-tested (tests/kit/shareLink.test.ts).
+ * view; every plot's tick labels are at least 18 px. The link's flags themselves are unit-tested (tests/kit/shareLink.test.ts).
  */
 import type { Page } from '@playwright/test';
 import { LESSON_PRESETS } from '../../src/kit/lessons';
@@ -31,7 +31,7 @@ async function plotted(page: Page, testId: string, sel: string): Promise<number>
 
 const position = (page: Page) => page.getByTestId('timeline').getAttribute('data-t').then(Number);
 
-test('Q4 at 1280×720: the convergence graph on the stage; a 4d preset reveals and plays in view; r opens the page again; Plotly’s tick labels are 18 px or more', async ({
+test('Q4 at 1280×720: the convergence graph on the stage; a 4d preset reveals and plays in view; r opens the page again; the plots’ tick labels are 18 px or more', async ({
   page,
 }) => {
   test.setTimeout(180_000);
@@ -87,21 +87,23 @@ test('Q4 at 1280×720: the convergence graph on the stage; a 4d preset reveals a
   expect(await page.evaluate(() => location.hash)).not.toMatch(/pdf=|[?&]t=/);
   await expect(stage.getByRole('heading', { name: /^Importance, p ∝ f/ })).toBeVisible();
 
-  await test.step('every Plotly plot’s tick labels are at least 18 px', async () => {
-    // every Plotly plot of the page: those of Explore further are folded, the link opens them
+  await test.step('every plot’s tick labels are at least 18 px', async () => {
+    // every plot of the page: those of Explore further are folded, the link opens them
     await openScene(page, '#/monte-carlo?present=1&open=integrand,convergence,rmse,unbiased');
     const height = await page.evaluate(() => document.documentElement.scrollHeight);
     for (let y = 0; y < height; y += 600) {
       await page.evaluate((y) => window.scrollTo(0, y), y);
       await settle(page);
     }
-    await expect(page.locator('.js-plotly-plot .xtick text').first()).toBeAttached({ timeout: 60_000 });
-    const sizes = await page.locator('.js-plotly-plot :is(.xtick, .ytick) text').evaluateAll((ts) =>
-      ts.map((t) => ({
-        px: parseFloat(getComputedStyle(t).fontSize),
-        what: `${t.closest('figure')?.getAttribute('aria-label')?.slice(0, 40)}: ${t.textContent}`,
-      })),
-    );
+    await expect(page.locator('svg.chart .chart-xticks text').first()).toBeAttached({ timeout: 60_000 });
+    const sizes = await page
+      .locator('svg.chart :is(.chart-xticks, .chart-yticks, .chart-colorbar) text')
+      .evaluateAll((ts) =>
+        ts.map((t) => ({
+          px: parseFloat(getComputedStyle(t).fontSize),
+          what: `${t.closest('figure')?.getAttribute('aria-label')?.slice(0, 40)}: ${t.textContent}`,
+        })),
+      );
     expect(sizes.length).toBeGreaterThan(0);
     expect(sizes.filter((s) => s.px < 17.5).map((s) => `${s.what} at ${s.px} px`)).toEqual([]);
   });

@@ -24,7 +24,7 @@ const WORKER_READOUT: Partial<Record<SceneId, string>> = {
 const ROUTES: [string, string[]][] = [
   ['#/', []],
   ...SCENES.map((s): [string, string[]] => [
-    // the Plotly plots of monte-carlo are folded: its link opens one, so that Plotly's chunk loads
+    // the plots of monte-carlo's Explore further are folded: its link opens one, so that a plot draws
     s.id === 'monte-carlo' ? `#${s.path}?open=convergence` : `#${s.path}`,
     [s.keyReadout, ...(WORKER_READOUT[s.id] ? [WORKER_READOUT[s.id]!] : [])],
   ]),
@@ -32,7 +32,7 @@ const ROUTES: [string, string[]][] = [
 ];
 /**
  * Routes whose lazy views (plots, the 3D view, formulas typeset in a worker) are all brought on
- * screen: one with Plotly and workers, one with three.js (texture's sphere, the lightest scene with a
+ * screen: one with plots and workers, one with three.js (texture's sphere, the lightest scene with a
  * 3D view). The lazy parts are inlined in the one file in the same way for every route, so two
  * prove the mechanism.
  */

@@ -3,7 +3,7 @@
  * controls drawer, fullscreen, the students' link and QR code, ask-then-reveal and its key, the
  * `?` list of keys, and Space on a focused 3D-view button in classroom mode. What every scene must
  * show in the room (the stage on the first screen, results held back until Reveal) is looped over
- * the catalogue in catalogue.spec.ts; a guide preset that asks, and Plotly's tick labels in the
+ * the catalogue in catalogue.spec.ts; a guide preset that asks, and the plots' tick labels in the
  * room, are in room.spec.ts.
  */
 import type { Page } from '@playwright/test';

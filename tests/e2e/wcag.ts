@@ -28,7 +28,7 @@ export function smallTargets(page: Page): Promise<string[]> {
       if (cs.visibility === 'hidden' || cs.opacity === '0') return false;
       // visually hidden (sr-only) and clipped-away elements are no pointer target
       if (r.width <= 1 && r.height <= 1) return false;
-      if (el.closest('[aria-hidden="true"], [inert], .modebar, .sr-only')) return false;
+      if (el.closest('[aria-hidden="true"], [inert], .plot-tools, .sr-only')) return false;
       return true;
     };
     /** A link in a run of text: its parent has other text on the same line. */
@@ -123,7 +123,7 @@ export function clippedText(page: Page): Promise<string[]> {
   return page.evaluate(() => {
     const out: string[] = [];
     for (const el of document.querySelectorAll<HTMLElement>('main *, header *')) {
-      if (!el.childNodes.length || el.closest('svg, .js-plotly-plot, .katex, canvas, .sr-only')) continue;
+      if (!el.childNodes.length || el.closest('svg, .katex, canvas, .sr-only')) continue;
       const hasText = [...el.childNodes].some((n) => n.nodeType === 3 && (n.textContent ?? '').trim());
       if (!hasText) continue;
       const cs = getComputedStyle(el);

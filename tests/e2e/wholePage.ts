@@ -12,7 +12,7 @@ import type { Page } from '@playwright/test';
 import { textFormulaGroups } from '../../src/ui/texBreaks';
 import { expect, frameState, openScene, test } from './fixtures';
 import { countTabStops } from './calmCount';
-import { MODEBAR_BUTTONS } from '../../src/ui/plotConfig';
+import { PLOT_TOOLS } from '../../src/ui/plotTools';
 import {
   applyTextSpacing,
   clippedText,
@@ -303,7 +303,7 @@ export async function checkWholePage(
   await prepare?.(page);
   if (scene) {
     found.push(...(await examFirst(page, scene.parts)));
-    const c = await page.evaluate(countTabStops, MODEBAR_BUTTONS.length);
+    const c = await page.evaluate(countTabStops, PLOT_TOOLS.length);
     if (c.firstScreen > CALM.firstScreen)
       found.push(
         `${c.firstScreen} tab stops in the first screen (at most ${CALM.firstScreen}): ${c.first.join(' | ')}`,

@@ -9,7 +9,7 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { MACHADO, VIENOT, contrast, cssVars, deltaE2000, parseHex, simulate, type RGB } from './colorVision';
-import { resolveTraceColors, SERIES, STRATEGY_COLOR } from '../../src/ui/palette';
+import { SERIES, STRATEGY_COLOR } from '../../src/ui/palette';
 
 // the theme's colours, then the palette's (loaded after them)
 const css = `${readFileSync('src/ui/theme.css', 'utf8')}\n${readFileSync('src/ui/palette.css', 'utf8')}`;
@@ -92,10 +92,6 @@ describe('the check itself', () => {
     expect(closestPair(pair, (c) => c).d).toBeGreaterThan(LINES_APART);
     const deutan = VISIONS.find((v) => v.name.startsWith('deuteranopia (Machado'))!;
     expect(closestPair(pair, deutan.see).d).toBeLessThan(LINES_APART);
-  });
-  it('resolveTraceColors leaves traces without var() alone (no DOM here: var() stays as written)', () => {
-    const t = [{ x: [1, 2], line: { color: '#123456' } }];
-    expect(resolveTraceColors(t)).toBe(t);
   });
 });
 

@@ -1,6 +1,6 @@
 /**
  * The ray–sphere scene's model: everything the page shows for one parameter set, as pure functions
- * of the URL parameters calling the core. Nothing here knows about React, SVG, three.js or Plotly.
+ * of the URL parameters calling the core. Nothing here knows about React, SVG or three.js.
  */
 import {
   intersectRaySphere,

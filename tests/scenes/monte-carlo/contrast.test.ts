@@ -1,8 +1,8 @@
 /**
  * The Monte Carlo scene's own colours (WCAG 1.4.11): its stylesheet names no colour of its own (only
- * the theme's and the shared palette's variables), the Plotly histogram's bars keep 3 : 1 on the page
- * and panel backgrounds in both themes at their opacity, and the race's light bars carry an outline
- * in the lane's full colour.
+ * the theme's and the shared palette's variables), the bars of the histogram of estimates keep
+ * 3 : 1 on the page and panel backgrounds in both themes at their opacity, and the race's light
+ * bars carry an outline in the lane's full colour.
  */
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';

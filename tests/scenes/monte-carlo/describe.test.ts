@@ -1,7 +1,7 @@
 /**
- * The words of the race's plots and of the Plotly plots: live numbers, the fitted slope on log–log
- * axes, "zero variance", and text that changes when a parameter changes. Expected values come from
- * the model's numbers and from direct recomputation, never from the app's text.
+ * The words of the race's plots and of the "Explore further" plots: live numbers, the fitted slope
+ * on log–log axes, "zero variance", and text that changes when a parameter changes. Expected
+ * values come from the model's numbers and from direct recomputation, never from the app's text.
  */
 import { describe, expect, it } from 'vitest';
 import { unsuperscript } from '../../../src/ui/axis';
@@ -123,7 +123,7 @@ describe('the race in words', () => {
   });
 });
 
-describe('the Plotly plots in words and as tables', () => {
+describe('the Explore plots in words and as tables', () => {
   it('one summary per series, with the slope on log–log axes', () => {
     const n = [1, 10, 100, 1000, 10000];
     const d = describeSeriesSet(

@@ -13,6 +13,8 @@ import {
   ShowAsTable,
   summarizeSeries,
   useSeenOnce,
+  type MarkerSymbol,
+  type PlotLayout,
   type PlotTrace,
 } from '../../../ui';
 import type { TimingPoint, convergence } from '../model';
@@ -26,7 +28,7 @@ const COLORS: Record<LightStrategy, string> = {
   cosine: SERIES[2],
 };
 /** A marker shape per strategy, so that colour is never the only cue. */
-const SYMBOLS: Record<LightStrategy, string> = {
+const SYMBOLS: Record<LightStrategy, MarkerSymbol> = {
   area: 'circle',
   'solid-angle': 'square',
   cosine: 'diamond',
@@ -94,7 +96,7 @@ function LogLogPlot({
   description: string;
   data: PlotTrace[];
 }) {
-  const layout = {
+  const layout: PlotLayout = {
     xaxis: { type: 'log', title: { text: axes[0] } },
     yaxis: { type: 'log', title: { text: axes[1] } },
     margin: { l: 56, r: 16, t: 40, b: 44 },

@@ -108,7 +108,7 @@ function CdfPlot({
         description={description}
         data={traces}
         layout={{
-          ...titled(`P(${v}): the CDF${samples ? ' vs the samples' : ''}`, true),
+          ...titled(`P(${v}): the CDF${samples ? ' vs the samples' : ''}`),
           xaxis: { title: { text: `${v} (rad)` }, range: [0, hi] },
           yaxis: { title: { text: `P(${v}) = ξ` }, range: [0, 1.02] },
         }}

@@ -1,5 +1,5 @@
 /**
- * Plotly views of one draw: the θ and φ histograms against the lobe's marginal densities (their
+ * The plots of one draw: the θ and φ histograms against the lobe's marginal densities (their
  * audio traces and tables apart, for a fold), and the 2D histogram over (cos θ, φ) bins of equal solid angle against the integrated density (the χ²
  * test's expected counts), with their standardized difference (O − E)/√E.
  */
@@ -77,7 +77,7 @@ function MarginalPlot({
         description={description}
         data={traces}
         layout={{
-          ...titled(`${v}: histogram vs p(${v})`, true),
+          ...titled(`${v}: histogram vs p(${v})`),
           xaxis: { title: { text: `${v} (rad)` }, range: [0, hi] },
           yaxis: { title: { text: 'density' } },
           bargap: 0,

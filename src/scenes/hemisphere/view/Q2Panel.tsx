@@ -6,7 +6,7 @@
  * (unbiasedness, Q2(c)), computed in a worker.
  */
 import { useMemo } from 'react';
-import { Notice, Plot, Readout, formatNumber } from '../../../ui';
+import { Notice, Plot, Readout, formatNumber, type PlotTrace } from '../../../ui';
 import { titled } from './plotTitle';
 import { estimateFromTerms, type McEstimate } from '../../../core/estimators';
 import type { SequenceKind } from '../../../core/random';
@@ -239,7 +239,7 @@ export function RepeatView({
         }
     const size = hi > lo ? (hi - lo) / 60 : 1;
     const xbins = { start: lo - size / 2, end: hi + size / 2, size };
-    const traces: Record<string, unknown>[] = [
+    const traces: PlotTrace[] = [
       {
         type: 'histogram',
         x: Array.from(result.uniform),
@@ -247,7 +247,6 @@ export function RepeatView({
         opacity: BAR_OPACITY,
         marker: { color: UNIFORM },
         xbins,
-        autobinx: false,
       },
     ];
     if (hasImp)
@@ -258,7 +257,6 @@ export function RepeatView({
         opacity: BAR_OPACITY,
         marker: { color: IMPORTANCE },
         xbins,
-        autobinx: false,
       });
     return traces;
   }, [result, hasImp]);

@@ -1,5 +1,5 @@
 /**
- * The colours of the scene's Plotly plots, from the shared palette (src/ui/palette: each ≥ 3 : 1 on
+ * The colours of the scene's plots, from the shared palette (src/ui/palette: each ≥ 3 : 1 on
  * the page and panel backgrounds in both themes, and told apart under colour-vision deficiencies).
  * Plot resolves the var() when it draws, and again when the theme changes.
  */

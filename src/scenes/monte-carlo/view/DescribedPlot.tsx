@@ -1,8 +1,8 @@
 /**
- * A Plotly plot with its heading, its accessible name and description, and its data as a "Show as
- * table" under it. The fixed words come from ./plotText by the plot's id; `words` are the ones that
- * follow the data (./plotWords: the description, the table with a column per series and, where it
- * depends on the data, the caption). Test ids `${id}-plot` and `${id}-table`.
+ * A Plot (src/ui/Plot.tsx) with its heading, its accessible name and description, and its data
+ * as a "Show as table" under it. The fixed words come from ./plotText by the plot's id; `words`
+ * are the ones that follow the data (./plotWords: the description, the table with a column per
+ * series and, where it depends on the data, the caption). Test ids `${id}-plot` and `${id}-table`.
  */
 import { Plot, ShowAsTable, type PlotTrace } from '../../../ui';
 import { PLOT_TEXT, type PlotId, type PlotText } from './plotText';

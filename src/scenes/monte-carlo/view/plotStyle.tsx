@@ -1,6 +1,6 @@
-/** Shared look of the scene's Plotly views: colours, margins, layouts, the run bar (the legend is every plot's, src/ui/plotConfig). */
+/** Shared look of the scene's plots: colours, margins, layouts, and the run bar. */
 import type { ReactNode } from 'react';
-import { NumberField, SERIES } from '../../../ui';
+import { NumberField, SERIES, type Dash, type PlotLayout } from '../../../ui';
 import type { WorkerFactory, WorkerJob } from '../../../workers';
 import type { ProblemArgs } from '../jobs';
 import type { McTasks } from '../mc.worker';
@@ -17,7 +17,7 @@ export const BAR_OPACITY = 0.75;
 /** The colour of references drawn over the data (the exact value, guides). */
 export const REFERENCE = 'var(--muted)';
 /** Line dashes per strategy, in step with COLORS: the legend matches a line by its dash, not only its colour. */
-export const DASHES = ['solid', 'dash', 'dot', 'dashdot', 'longdash', 'longdashdot', '5px,2px,1px,2px'];
+export const DASHES: readonly Dash[] = ['solid', 'dash', 'dot', 'dashdot', 'longdash', 'longdashdot', '5px,2px,1px,2px'];
 /** The line of strategy i: its colour and its dash. */
 export const strategyLine = (i: number, width = 2) => ({
   color: COLORS[i % COLORS.length],
@@ -28,14 +28,14 @@ export const arr = (a: ArrayLike<number>) => Array.from(a);
 export const MARGIN = { l: 60, r: 12, t: 12, b: 48 };
 
 // Layouts are module constants: Plot re-renders whenever its layout object changes identity.
-export const L_FUNC = { margin: MARGIN, xaxis: { title: { text: 'x' } } };
-export const L_EST = {
+export const L_FUNC: PlotLayout = { margin: MARGIN, xaxis: { title: { text: 'x' } } };
+export const L_EST: PlotLayout = {
   xaxis: { type: 'log', title: { text: 'N (samples)' } },
   yaxis: { title: { text: 'estimate' } },
   margin: MARGIN,
 };
 /** A log-log layout with these axis titles. */
-const logLog = (x: string, y: string) => ({
+const logLog = (x: string, y: string): PlotLayout => ({
   xaxis: { type: 'log', title: { text: x } },
   yaxis: { type: 'log', title: { text: y }, exponentformat: 'power' },
   margin: MARGIN,
@@ -43,7 +43,7 @@ const logLog = (x: string, y: string) => ({
 export const L_ERR = logLog('N', '|estimate − exact|');
 export const L_RMSE = logLog('N', 'RMSE');
 export const L_TIME = logLog('ms per estimate (measured here)', 'RMSE');
-export const L_HIST = {
+export const L_HIST: PlotLayout = {
   xaxis: { title: { text: 'estimate ⟨I⟩' } },
   yaxis: { title: { text: 'count' } },
   bargap: 0,

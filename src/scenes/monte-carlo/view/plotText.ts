@@ -1,8 +1,9 @@
 /**
- * The words of the scene's Plotly plots, one entry per plot (test ids `${id}-plot` and `${id}-table`):
- * the heading above it, its accessible name, the caption of its "Show as table" (where the caption
- * depends on the data, the plot's own words give it) and its layout. Kept in one place so that the
- * figures' code is about their data and the texts can be read (or translated) together.
+ * The words of the scene's "Explore further" plots, one entry per plot (test ids `${id}-plot` and
+ * `${id}-table`): the heading above it, its accessible name, the caption of its "Show as table"
+ * (where the caption depends on the data, the plot's own words give it) and its layout. Kept in
+ * one place so that the figures' code is about their data and the texts can be read (or
+ * translated) together.
  */
 import type { PlotLayout } from '../../../ui';
 import { L_ERR, L_EST, L_FUNC, L_HIST, L_RMSE, L_TIME } from './plotStyle';

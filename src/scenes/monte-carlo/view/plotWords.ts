@@ -1,5 +1,5 @@
 /**
- * The Plotly plots of "Explore further" for readers who cannot see them: a sentence per plotted
+ * The plots of "Explore further" for readers who cannot see them: a sentence per plotted
  * series (./../../ui/summary's summarizeSeries, with the fitted slope on log–log axes) and the
  * plotted data as table columns. Pure.
  */

@@ -3,7 +3,7 @@
  * of a distant sphere by each method, and the error against distance.
  */
 import { useEffect, useMemo, useRef, type ReactNode, type RefObject } from 'react';
-import { Plot, ShowAsTable, useSeenOnce, type PlotTrace } from '../../../ui';
+import { Plot, ShowAsTable, useSeenOnce, type PlotLayout, type PlotTrace } from '../../../ui';
 import { useLogDistance } from './useLogDistance';
 import { IMAGE_BG, IMAGE_FG, IMAGE_HOLE } from './imageColours';
 import { ERROR_FLOOR, errorVsDistance, type ErrorSeries } from '../errorSeries';
@@ -279,10 +279,10 @@ export function ErrorVsDistance({
                       e === null || !Number.isFinite(e) ? 1 : Math.min(1, Math.max(u, e)),
                     ),
                     name: 'this ray (Δ)',
-                    mode: 'markers',
+                    mode: 'markers' as const,
                     marker: {
                       size: 12,
-                      symbol: 'x',
+                      symbol: 'x' as const,
                       color: [ERROR_COLOURS.naive, ERROR_COLOURS.stable],
                       line: { width: 1, color: 'var(--fg)' },
                     },
@@ -293,7 +293,7 @@ export function ErrorVsDistance({
     [s, s32, u, current, here],
   );
   const layout = useMemo(
-    () => ({
+    (): PlotLayout => ({
       xaxis: { type: 'log', title: { text: 'distance |o − C| / r' }, exponentformat: 'power' },
       yaxis: {
         type: 'log',

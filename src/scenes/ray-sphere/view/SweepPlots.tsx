@@ -1,8 +1,9 @@
 /**
- * The two animated plots of the sweep, drawn as light SVG (not Plotly) so a frame of the animation
- * only moves a few elements: g(t) = a t² + b t + c on a window fixed for the whole sweep (the
- * parabola slides, its roots move), and Δ against the sweep coordinate (robust and textbook), with
- * the current position, the tangency crossings and the case of each position underneath.
+ * The two animated plots of the sweep, drawn as light SVG of their own (not src/ui/Plot) so a
+ * frame of the animation only moves a few elements: g(t) = a t² + b t + c on a window fixed for
+ * the whole sweep (the parabola slides, its roots move), and Δ against the sweep coordinate
+ * (robust and textbook), with the current position, the tangency crossings and the case of each
+ * position underneath.
  * Sizes follow the element's width (one SVG unit = one CSS pixel), so labels stay ≥ 12 px.
  */
 import { memo, useLayoutEffect, useMemo, useRef, type ReactNode } from 'react';

@@ -5,7 +5,7 @@
  * CSS variables of ray-sphere.css, one value per theme, each ≥ 3 : 1 on the page and the panels
  * (Plot resolves them when it draws).
  */
-import type { PlotTrace } from '../../../ui';
+import type { LineStyle, MarkerStyle, PlotTrace } from '../../../ui';
 import type { ErrorSeries } from '../errorSeries';
 
 export const ERROR_COLOURS = {
@@ -20,7 +20,7 @@ export const ERROR_COLOURS = {
 } as const;
 
 /** A curve of the error plot: a line, with markers when given. */
-export function curve(x: number[], y: number[], name: string, line: object, marker?: object): PlotTrace {
+export function curve(x: number[], y: number[], name: string, line: LineStyle, marker?: MarkerStyle): PlotTrace {
   return marker ? { x, y, name, mode: 'lines+markers', line, marker } : { x, y, name, mode: 'lines', line };
 }
 
@@ -38,7 +38,7 @@ export function methodCurves(
   s: ErrorSeries,
   colours: { naive: string; stable: string },
   suffix = '',
-  marker: object = { size: 4 },
+  marker: MarkerStyle = { size: 4 },
 ): PlotTrace[] {
   const { naive, stable } = colours;
   return [

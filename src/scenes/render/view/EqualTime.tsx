@@ -7,7 +7,7 @@
  * each strategy needed to reach one error (equal error), read off the same runs.
  */
 import { useEffect, useMemo, useRef } from 'react';
-import { Notice, Plot } from '../../../ui';
+import { Notice, Plot, type PlotTrace } from '../../../ui';
 import { ScrollBox } from '../../../ui/ScrollBox';
 import { readoutValue } from '../../../ui/Readout';
 import { summarizeSeries } from '../../../ui/summary';
@@ -115,7 +115,7 @@ function errorPlot(runs: readonly StrategyRun[], order: readonly number[], measu
     });
     return { x, y };
   };
-  const data: Record<string, unknown>[] = runs.map((r) => ({
+  const data: PlotTrace[] = runs.map((r) => ({
     ...points(r),
     type: 'scatter',
     mode: measure === 'relMse' ? 'lines' : 'lines+markers',

@@ -5,7 +5,7 @@
  */
 import { ScrollTable } from '../Precision';
 import { useEffect, useMemo, useRef, useState } from 'react';
-import { Plot, Readout, SERIES, Slider, type PlotTrace } from '../../../../ui';
+import { Plot, Readout, SERIES, Slider, type PlotLayout, type PlotTrace } from '../../../../ui';
 import {
   ACNE_EPSILONS,
   acneSweepF32,
@@ -84,7 +84,7 @@ export function SelfIntersectionF32() {
     [sweeps],
   );
   const layout = useMemo(
-    () => ({
+    (): PlotLayout => ({
       xaxis: { type: 'log', title: { text: 'offset ε along the normal (radii)' }, exponentformat: 'power' },
       yaxis: { title: { text: 'fraction of lit pixels self-shadowed' }, range: [0, 1] },
       legend: { x: 0.99, y: 0.99, xanchor: 'right', yanchor: 'top', bgcolor: 'rgba(0,0,0,0)' },
