@@ -17,7 +17,15 @@ export const BAR_OPACITY = 0.75;
 /** The colour of references drawn over the data (the exact value, guides). */
 export const REFERENCE = 'var(--muted)';
 /** Line dashes per strategy, in step with COLORS: the legend matches a line by its dash, not only its colour. */
-export const DASHES: readonly Dash[] = ['solid', 'dash', 'dot', 'dashdot', 'longdash', 'longdashdot', '5px,2px,1px,2px'];
+export const DASHES: readonly Dash[] = [
+  'solid',
+  'dash',
+  'dot',
+  'dashdot',
+  'longdash',
+  'longdashdot',
+  '5px,2px,1px,2px',
+];
 /** The line of strategy i: its colour and its dash. */
 export const strategyLine = (i: number, width = 2) => ({
   color: COLORS[i % COLORS.length],

@@ -20,7 +20,13 @@ export const ERROR_COLOURS = {
 } as const;
 
 /** A curve of the error plot: a line, with markers when given. */
-export function curve(x: number[], y: number[], name: string, line: LineStyle, marker?: MarkerStyle): PlotTrace {
+export function curve(
+  x: number[],
+  y: number[],
+  name: string,
+  line: LineStyle,
+  marker?: MarkerStyle,
+): PlotTrace {
   return marker ? { x, y, name, mode: 'lines+markers', line, marker } : { x, y, name, mode: 'lines', line };
 }
 
