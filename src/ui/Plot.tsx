@@ -78,6 +78,9 @@ export function sanitizeTraces(data: PlotTrace[]): { data: PlotTrace[]; dropped:
 /** Classroom mode: the smallest tick label size (px), readable from the back of a lecture hall. */
 export const PRESENT_TICK_PX = 18;
 
+/** Width (px) of one tool button and its gap (plot.css). */
+const TOOL_WIDTH = 30;
+
 /** How far outside the viewport a plot still redraws on a change: one screen above and below. */
 const NEAR_VIEW = '100% 0px';
 
@@ -213,7 +216,15 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
     const tick = Math.max(font, own, present ? PRESENT_TICK_PX : 0);
     // the 2s and 5s between a log axis's decades are smaller, except in a lecture hall
     const minorTick = present ? tick : Math.round(tick * 0.8);
-    return { font, tick, minorTick, measure: measurer(getComputedStyle(box.current).fontFamily), themeKey };
+    const tools = touchOnly() ? 0 : PLOT_TOOLS.length * TOOL_WIDTH + 8;
+    return {
+      font,
+      tick,
+      minorTick,
+      measure: measurer(getComputedStyle(box.current).fontFamily),
+      topRight: tools,
+      themeKey,
+    };
     // themeKey: sizes and colours follow the theme and classroom mode
     // eslint-disable-next-line react-hooks/exhaustive-deps
   }, [themeKey, present, layoutKey, seen, width]);

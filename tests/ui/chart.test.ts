@@ -95,7 +95,7 @@ describe('chart axes', () => {
     );
   });
 
-  it('writes decades plainly only within 0.01 … 1000, or for counts up to 1000', () => {
+  it('writes an axis’s decades all plainly (within 0.01 … 1000, or counts 1 … 10000) or all as powers', () => {
     expect([-2, -1, 0, 1, 2, 3].map((e) => decadeLabel(e, -2, 3))).toEqual([
       '0.01',
       '0.1',
@@ -105,7 +105,8 @@ describe('chart axes', () => {
       '1000',
     ]);
     expect([-3, 0, 2].map((e) => decadeLabel(e, -3, 2))).toEqual(['10⁻³', '10⁰', '10²']);
-    expect([0, 3, 4].map((e) => decadeLabel(e, 0, 4))).toEqual(['1', '1000', '10⁴']);
+    expect([0, 3, 4].map((e) => decadeLabel(e, 0, 4))).toEqual(['1', '1000', '10000']);
+    expect([3, 6].map((e) => decadeLabel(e, 0, 6))).toEqual(['10³', '10⁶']);
   });
 
   it('pixels and axis units map back and forth, reversed axes included', () => {
@@ -286,6 +287,12 @@ describe('chart layout', () => {
     expect(rows(narrow)).toBeGreaterThan(rows(wide));
     expect(narrow.plot.y).toBeGreaterThan(wide.plot.y);
     for (const i of narrow.legend.items) expect(i.x).toBeLessThan(360);
+    // the top row stops short of the tool buttons over the top right corner
+    const tools = layoutChart(many, {}, 1400, 400, { ...STYLE, topRight: 600 });
+    const top = Math.min(...tools.legend.items.map((i) => i.y));
+    for (const i of tools.legend.items.filter((i) => i.y === top))
+      expect(i.x + 36 + STYLE.measure(i.text, STYLE.font)).toBeLessThanOrEqual(1400 - 600);
+    expect(rows(tools)).toBeGreaterThanOrEqual(rows(wide));
   });
 
   it('the left margin grows to fit the y axis’s labels', () => {

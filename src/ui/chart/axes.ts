@@ -84,13 +84,12 @@ function fits(px: readonly number[], widths: readonly number[], gap: number): bo
 const DECADE_STEPS = [1, 2, 3, 5, 10, 20, 50, 100];
 
 /**
- * How a log axis labelled at decades e0 … e1 writes 10^e: plainly ("0.01", "1000") when every
- * decade lies in 0.01 … 1000, or when none is below 1 and this one is at most 1000 (counts read
- * "1, 10, 100, 1000, 10⁴"); as a power of ten ("10⁻³") otherwise, so one axis never mixes "0.01"
- * with "10⁻³".
+ * How a log axis with decades e0 … e1 writes 10^e: plainly ("0.01", "10000") when every decade
+ * lies in 0.01 … 1000, or in 1 … 10000 (counts), and as a power of ten ("10⁻³", "10⁶") otherwise:
+ * one axis never mixes the two ways.
  */
 export function decadeLabel(e: number, e0: number, e1: number): string {
-  const plain = (e0 >= -2 && e1 <= 3) || (e0 >= 0 && e <= 3);
+  const plain = (e0 >= -2 && e1 <= 3) || (e0 >= 0 && e1 <= 4);
   if (!plain) return pow10Text(e);
   return e >= 0 ? String(10 ** e) : `0.${'0'.repeat(-e - 1)}1`;
 }
