@@ -3,7 +3,7 @@
  * Bundle budgets for the production build (run after `npm run build`). Gzipped sizes:
  *  - the entry (what `#/` downloads: index.html's module script and stylesheet, inline in the page
  *    but counted here, plus every chunk the entry imports statically) ≤ 96.5 kB, and none of
- *    three.js, Plotly, mathjs, KaTeX in it (the shell itself: routing, the scene host, the share
+ *    three.js, mathjs, KaTeX in it (the shell itself: routing, the scene host, the share
  *    bar, the link's shell flags with the folds it opens, the deck's slide host, and the shared
  *    components' styles; every page's own code is a lazy chunk);
  *  - each heavy library and each scene chunk under its own ceiling;
@@ -75,6 +75,7 @@ if (entryTotal > ENTRY_LIMIT)
 
 const LIMITS = [
   [/^vendor-three-/, 200_000],
+  [/^draw-/, 12_000], // the plots' chart (src/ui/chart/draw.ts), loaded with a page's first plot
   [/^vendor-katex-/, 110_000],
   [/^katex\.worker-/, 110_000], // KaTeX typesets in a worker (src/ui/katex.worker.ts)
   [/^katex-.*\.css$/, 20_000],
@@ -146,7 +147,7 @@ rows.sort((a, b) => (a[0] === b[0] ? b[2] - a[2] : a[0] < b[0] ? -1 : 1));
 for (const [kind, f, s, lim] of rows)
   console.log(`${kind.padEnd(14)} ${kB(s).padStart(8)} kB  ${f}${lim ? `  (≤ ${kB(lim)} kB)` : ''}`);
 console.log(
-  `entry total    ${kB(entryTotal).padStart(8)} kB  (≤ ${kB(ENTRY_LIMIT)} kB; no three.js, Plotly, mathjs or KaTeX)`,
+  `entry total    ${kB(entryTotal).padStart(8)} kB  (≤ ${kB(ENTRY_LIMIT)} kB; no three.js, mathjs or KaTeX)`,
 );
 console.log(
   `scripts        before first paint (≤ ${SCRIPTS_LIMIT}; the worksheet ≤ ${SCRIPTS_LIMIT_FOR['practice/sheet']}): ${scriptCounts.join(', ')}`,

@@ -4,9 +4,8 @@ import { resolveColor } from './palette';
 import { usePresent } from './pageKeys';
 import { useWidth } from './useWidth';
 import { downloadFile } from './download';
-import { layoutChart, readoutAt, type ChartModel, type Rect, type View } from './chart/model';
-import { ChartSvg, type ChartColors, type Readout } from './chart/ChartSvg';
-import { pxToUnits } from './chart/axes';
+import type { ChartModel, Rect, View } from './chart/model';
+import type { ChartColors, Readout } from './chart/ChartSvg';
 import type { ChartLayout, ChartTrace } from './chart/types';
 import { PLOT_TOOLS, type PlotTool } from './plotTools';
 import './plot.css';
@@ -73,6 +72,15 @@ export function sanitizeTraces(data: PlotTrace[]): { data: PlotTrace[]; dropped:
     return (copy ?? t) as PlotTrace;
   });
   return { data: out, dropped, flushed };
+}
+
+type ChartModule = typeof import('./chart/draw');
+let chartModule: Promise<ChartModule> | null = null;
+
+/** The chart's code (./chart/draw), loaded once, when a page's first plot comes near the screen. */
+export function loadChart(): Promise<ChartModule> {
+  chartModule ??= import('./chart/draw');
+  return chartModule;
 }
 
 /** Classroom mode: the smallest tick label size (px), readable from the back of a lecture hall. */
@@ -171,7 +179,8 @@ function savePng(svg: SVGSVGElement, bg: string, name: string) {
 
 /**
  * A plot drawn by the project's own chart (./chart): an SVG laid out from Plotly-shaped traces and
- * layout, drawn once the plot comes near the screen. A plot far off screen does not redraw on
+ * layout, drawn once the plot comes near the screen (the chart's code loads then, with the page's
+ * first plot: a page whose plots stay folded never fetches it). A plot far off screen does not redraw on
  * every change (a storm of changes would redraw every plot of the page each time): it draws its
  * latest data when it comes back near the viewport. The pointer reads the nearest point out; a
  * mouse drag zooms to a box, a double click goes back; the tool buttons (shown on hover or focus)
@@ -185,6 +194,19 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
   const width = useWidth(box, 0);
   const present = usePresent();
   const [near, setNear] = useState(true);
+  const [chart, setChart] = useState<ChartModule | null>(null);
+  const [loadFailed, setLoadFailed] = useState(false);
+  useEffect(() => {
+    if (!seen) return;
+    let alive = true;
+    loadChart().then(
+      (m) => alive && setChart(m),
+      () => alive && setLoadFailed(true),
+    );
+    return () => {
+      alive = false;
+    };
+  }, [seen]);
   useEffect(() => {
     const node = box.current;
     return node ? observeVisibility(node, setNear, NEAR_VIEW) : undefined;
@@ -230,16 +252,17 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
   }, [themeKey, present, layoutKey, seen, width]);
 
   const result = useMemo(() => {
-    if (!seen || !style || width <= 0) return null;
+    if (loadFailed) return 'failed' as const;
+    if (!chart || !style || width <= 0) return null;
     try {
       const colors = themeColors();
-      const model = layoutChart(drawn.data, layoutRef.current ?? {}, width, height, style, view);
+      const model = chart.layoutChart(drawn.data, layoutRef.current ?? {}, width, height, style, view);
       return { model, colors };
     } catch {
       return 'failed' as const;
     }
     // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [seen, style, width, height, drawn, view, layoutKey]);
+  }, [chart, loadFailed, style, width, height, drawn, view, layoutKey]);
   const model = result && result !== 'failed' ? result.model : null;
   useEffect(() => setReadout(null), [model]);
 
@@ -257,7 +280,7 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
     const p = local(e);
     if (!model) return;
     if (e.pointerType !== 'mouse') {
-      setReadout(readoutAt(model, p.x, p.y, 32));
+      setReadout(chart!.readoutAt(model, p.x, p.y, 32));
       return;
     }
     if (e.button !== 0 || !inPlot(p)) return;
@@ -282,7 +305,7 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
       });
       return;
     }
-    setReadout(readoutAt(model, p.x, p.y));
+    setReadout(chart!.readoutAt(model, p.x, p.y));
   };
   const onPointerUp = () => {
     if (!drag || !model) return;
@@ -292,8 +315,8 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
     const tall = b.h >= 8;
     if (!wide && !tall) return;
     const range = (a: typeof model.x, p0: number, p1: number): [number, number] => {
-      const u0 = pxToUnits(a, p0);
-      const u1 = pxToUnits(a, p1);
+      const u0 = chart!.pxToUnits(a, p0);
+      const u1 = chart!.pxToUnits(a, p1);
       return [Math.min(u0, u1), Math.max(u0, u1)];
     };
     setView({
@@ -331,7 +354,7 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
       ) : null}
       {result === 'failed' ? <p className="plot-placeholder">The plot could not be drawn.</p> : null}
       {!result ? <p className="plot-placeholder">Loading plot…</p> : null}
-      {model && result !== 'failed' ? (
+      {model && chart && result !== 'failed' ? (
         <div
           className="plot-canvas"
           onPointerDown={onPointerDown}
@@ -341,7 +364,7 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
           onPointerLeave={() => !drag && setReadout(null)}
           onDoubleClick={() => setView({})}
         >
-          <ChartSvg
+          <chart.ChartSvg
             model={model}
             colors={result!.colors}
             tick={style!.tick}

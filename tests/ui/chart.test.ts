@@ -295,6 +295,18 @@ describe('chart layout', () => {
     expect(rows(tools)).toBeGreaterThanOrEqual(rows(wide));
   });
 
+  it('a title clears the tool buttons over the top right corner when it can, and stays in the figure', () => {
+    const text = 'P(θ): the CDF vs the samples';
+    const w = STYLE.measure(text, STYLE.font * 1.1);
+    for (const width of [300, 412, 800]) {
+      const m = layoutChart([{ x: [0, 1], y: [0, 1] }], { title: { text } }, width, 260, { ...STYLE, topRight: 128 });
+      expect(m.title!.x - w / 2).toBeGreaterThanOrEqual(0);
+      if (width - 128 - 4 >= w + 4) expect(m.title!.x + w / 2).toBeLessThanOrEqual(width - 128);
+    }
+    const free = layoutChart([{ x: [0, 1], y: [0, 1] }], { title: { text } }, 800, 260, STYLE);
+    expect(free.title!.x).toBeCloseTo(free.plot.x + free.plot.w / 2, 9);
+  });
+
   it('the left margin grows to fit the y axis’s labels', () => {
     const small = layoutChart([{ x: [0, 1], y: [0, 1] }], { margin: { l: 20 } }, 600, 300, STYLE);
     const long = layoutChart([{ x: [0, 1], y: [1.5e-7, 9.25e-7] }], { margin: { l: 20 } }, 600, 300, STYLE);

@@ -213,6 +213,17 @@ function legendPlace(l: LegendSpec | undefined): 'above' | 'below' | 'inside' {
 }
 
 /**
+ * The title's centre: over the plot area, moved left as far as it must be to end before what sits
+ * over the figure's top right corner (the tool buttons), and never past the figure's left edge.
+ */
+function titleX(text: string, plot: Rect, width: number, style: ChartStyle): number {
+  const half = style.measure(plainText(text), style.font * 1.1) / 2;
+  const centre = plot.x + plot.w / 2;
+  const end = width - (style.topRight ?? 0) - 4;
+  return Math.max(half + 4, Math.min(centre, end - half));
+}
+
+/**
  * Lay out the chart at `width` × `height` px. Margins start at the layout's and grow to fit what
  * sits around the plot area, so the figure keeps its height and the plot area takes the rest.
  */
@@ -346,7 +357,11 @@ export function layoutChart(
     xTitle,
     yTitle,
     title: layout.title?.text
-      ? { text: layout.title.text, x: plot.x + plot.w / 2, y: lineH(style.font * 1.1) }
+      ? {
+          text: layout.title.text,
+          x: titleX(layout.title.text, plot, width, style),
+          y: lineH(style.font * 1.1),
+        }
       : null,
     marks: [],
     shapes: [],
