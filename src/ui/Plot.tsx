@@ -86,6 +86,17 @@ export function loadChart(): Promise<ChartModule> {
 /** Classroom mode: the smallest tick label size (px), readable from the back of a lecture hall. */
 export const PRESENT_TICK_PX = 18;
 
+/**
+ * The value as first given, until one that differs in content (its JSON) comes: a stable identity
+ * for a small object a parent writes inline on every render.
+ */
+function useSameByContent<T>(value: T): T {
+  const key = value === undefined ? '' : JSON.stringify(value);
+  const kept = useRef({ key, value });
+  if (kept.current.key !== key) kept.current = { key, value };
+  return kept.current.value;
+}
+
 /** Width (px) of one tool button and its gap (plot.css). */
 const TOOL_WIDTH = 30;
 
@@ -216,9 +227,7 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
 
   // Layouts are small: compare them by content, so an inline `layout={{…}}` does not redraw on
   // every render of the parent. Data is compared by identity (memoise it).
-  const layoutKey = layout ? JSON.stringify(layout) : '';
-  const layoutRef = useRef(layout);
-  layoutRef.current = layout;
+  const sameLayout = useSameByContent(layout);
   const clean = useMemo(() => sanitizeTraces(data), [data]);
   /** The data drawn: the latest while near the screen, else the last drawn. */
   const shown = useRef(clean);
@@ -226,43 +235,35 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
   const drawn = shown.current;
 
   const [view, setView] = useState<View>({});
-  useEffect(() => setView({}), [layoutKey]);
+  useEffect(() => setView({}), [sameLayout]);
   const [readout, setReadout] = useState<Readout | null>(null);
   const [drag, setDrag] = useState<{ x0: number; y0: number; box: Rect } | null>(null);
 
+  // sizes and colours follow the theme and classroom mode (themeKey)
   const style = useMemo(() => {
-    if (typeof document === 'undefined' || !box.current) return null;
+    if (typeof document === 'undefined') return null;
     const cs = getComputedStyle(document.documentElement);
     const font = Number(cs.getPropertyValue('--plot-font-size').trim()) || 13;
-    const own = layoutRef.current?.xaxis?.tickfont?.size ?? 0;
+    const own = sameLayout?.xaxis?.tickfont?.size ?? 0;
     const tick = Math.max(font, own, present ? PRESENT_TICK_PX : 0);
     // the 2s and 5s between a log axis's decades are smaller, except in a lecture hall
     const minorTick = present ? tick : Math.round(tick * 0.8);
     const tools = touchOnly() ? 0 : PLOT_TOOLS.length * TOOL_WIDTH + 8;
-    return {
-      font,
-      tick,
-      minorTick,
-      measure: measurer(getComputedStyle(box.current).fontFamily),
-      topRight: tools,
-      themeKey,
-    };
-    // themeKey: sizes and colours follow the theme and classroom mode
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [themeKey, present, layoutKey, seen, width]);
+    const family = getComputedStyle(document.body).fontFamily;
+    return { font, tick, minorTick, measure: measurer(family), topRight: tools, themeKey };
+  }, [themeKey, present, sameLayout]);
 
   const result = useMemo(() => {
     if (loadFailed) return 'failed' as const;
     if (!chart || !style || width <= 0) return null;
     try {
       const colors = themeColors();
-      const model = chart.layoutChart(drawn.data, layoutRef.current ?? {}, width, height, style, view);
+      const model = chart.layoutChart(drawn.data, sameLayout ?? {}, width, height, style, view);
       return { model, colors };
     } catch {
       return 'failed' as const;
     }
-    // eslint-disable-next-line react-hooks/exhaustive-deps
-  }, [chart, loadFailed, style, width, height, drawn, view, layoutKey]);
+  }, [chart, loadFailed, style, width, height, drawn, view, sameLayout]);
   const model = result && result !== 'failed' ? result.model : null;
   useEffect(() => setReadout(null), [model]);
 

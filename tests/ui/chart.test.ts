@@ -299,7 +299,10 @@ describe('chart layout', () => {
     const text = 'P(θ): the CDF vs the samples';
     const w = STYLE.measure(text, STYLE.font * 1.1);
     for (const width of [300, 412, 800]) {
-      const m = layoutChart([{ x: [0, 1], y: [0, 1] }], { title: { text } }, width, 260, { ...STYLE, topRight: 128 });
+      const m = layoutChart([{ x: [0, 1], y: [0, 1] }], { title: { text } }, width, 260, {
+        ...STYLE,
+        topRight: 128,
+      });
       expect(m.title!.x - w / 2).toBeGreaterThanOrEqual(0);
       if (width - 128 - 4 >= w + 4) expect(m.title!.x + w / 2).toBeLessThanOrEqual(width - 128);
     }

@@ -7,7 +7,7 @@ import { colorCss, DIVERGING, normalizeValue, VIRIDIS } from '../../core/colorma
 import { formatNumber } from '../../core/format';
 import { coordText } from '../chartScale';
 import { toUnits, unitsToPx } from './axes';
-import type { ChartModel, Rect } from './model';
+import type { Axis } from './axes';
 import type { ChartTrace, Data, LineStyle, MarkerSymbol, ScatterTrace } from './types';
 
 export interface Stroke {
@@ -27,6 +27,14 @@ export interface Swatch {
   line?: Stroke;
   marker?: { symbol: MarkerSymbol; color: string; size: number; stroke?: Stroke };
   box?: { color: string; opacity: number };
+}
+
+/** A box in pixels (x from the left, y from the top). */
+export interface Rect {
+  x: number;
+  y: number;
+  w: number;
+  h: number;
 }
 
 /** What the pointer's readout finds: a trace's points, or its boxes (bars, bins, cells). */
@@ -194,7 +202,12 @@ export function markerPath(symbol: MarkerSymbol, x: number, y: number, size: num
 }
 
 /** Every trace's marks and readout targets, in drawing order. */
-export function drawTraces(model: ChartModel, traces: readonly ChartTrace[], bargap: number): void {
+export function drawTraces(
+  traces: readonly ChartTrace[],
+  frame: { x: Axis; y: Axis; xTitle: string; yTitle: string },
+  bargap: number,
+): { marks: Mark[]; targets: Target[] } {
+  const model = { ...frame, marks: [] as Mark[], targets: [] as Target[] };
   const { x, y } = model;
   const f = (v: number) => coordText(v, 1);
   const name = (t: ChartTrace) => plainText(t.name ?? '');
@@ -333,4 +346,5 @@ export function drawTraces(model: ChartModel, traces: readonly ChartTrace[], bar
         text: tt,
       });
   });
+  return { marks: model.marks, targets: model.targets };
 }

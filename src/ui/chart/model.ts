@@ -20,6 +20,7 @@ import {
   strokeOf,
   swatchOf,
   type Mark,
+  type Rect,
   type Stroke,
   type Swatch,
   type Target,
@@ -32,6 +33,7 @@ export {
   markerPath,
   plainText,
   type Mark,
+  type Rect,
   type Stroke,
   type Swatch,
   type Target,
@@ -54,13 +56,6 @@ export interface ChartStyle {
 export interface View {
   x?: readonly [number, number];
   y?: readonly [number, number];
-}
-
-export interface Rect {
-  x: number;
-  y: number;
-  w: number;
-  h: number;
 }
 
 export interface LegendItem {
@@ -369,7 +364,7 @@ export function layoutChart(
     colorbar: null,
     targets: [],
   };
-  drawTraces(model, traces, bargap);
+  Object.assign(model, drawTraces(traces, { x, y, xTitle, yTitle }, bargap));
   for (const s of layout.shapes ?? []) {
     const px = (v: number) => (s.xref === 'paper' ? plot.x + v * plot.w : unitsToPx(x, toUnits(kx, v)));
     const py = (v: number) => (s.yref === 'paper' ? plot.y + (1 - v) * plot.h : unitsToPx(y, toUnits(ky, v)));
