@@ -306,7 +306,9 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
       });
       return;
     }
-    setReadout(chart!.readoutAt(model, p.x, p.y));
+    const next = chart!.readoutAt(model, p.x, p.y);
+    // the same point again: no new state, nothing drawn
+    setReadout((old) => (old && next && old.x === next.x && old.y === next.y ? old : next));
   };
   const onPointerUp = () => {
     if (!drag || !model) return;

@@ -4,7 +4,7 @@
  * readout and zoom box. Colours arrive resolved (no var()), so the SVG also stands alone when
  * saved as an image. Stateless: ../Plot.tsx owns the pointer, the zoom and the size.
  */
-import { Fragment, useId, type ReactNode, type Ref } from 'react';
+import { Fragment, memo, useId, type ReactNode, type Ref } from 'react';
 import { coordText } from '../chartScale';
 import { markerPath, type ChartModel, type Rect, type Stroke, type Swatch } from './model';
 
@@ -84,11 +84,7 @@ export interface ChartSvgProps {
 }
 
 export function ChartSvg({ model, colors, tick, minorTick, font, readout, zoomBox, svgRef }: ChartSvgProps) {
-  const clip = `chart-${useId().replace(/[^\w-]/g, '')}`;
-  const { plot, x, y, width: W, height: H } = model;
-  const { paint } = colors;
-  const bottom = plot.y + plot.h;
-  const right = plot.x + plot.w;
+  const { width: W, height: H } = model;
   return (
     <svg
       ref={svgRef}
@@ -100,6 +96,40 @@ export function ChartSvg({ model, colors, tick, minorTick, font, readout, zoomBo
       fontSize={font}
       fill={colors.fg}
     >
+      <ChartBody model={model} colors={colors} tick={tick} minorTick={minorTick} font={font} />
+      {zoomBox ? (
+        <rect
+          className="chart-zoombox"
+          {...zoomBox}
+          fill={colors.muted}
+          fillOpacity={0.15}
+          stroke={colors.muted}
+          strokeDasharray="4 3"
+        />
+      ) : null}
+      {readout ? <ReadoutLabel r={readout} model={model} colors={colors} font={font} /> : null}
+    </svg>
+  );
+}
+
+/**
+ * Everything but the readout and the zoom box: drawn again only for a new model, colours or font
+ * sizes, not as the pointer moves.
+ */
+const ChartBody = memo(function ChartBody({
+  model,
+  colors,
+  tick,
+  minorTick,
+  font,
+}: Pick<ChartSvgProps, 'model' | 'colors' | 'tick' | 'minorTick' | 'font'>) {
+  const clip = `chart-${useId().replace(/[^\w-]/g, '')}`;
+  const { plot, x, y } = model;
+  const { paint } = colors;
+  const bottom = plot.y + plot.h;
+  const right = plot.x + plot.w;
+  return (
+    <>
       <defs>
         <clipPath id={clip}>
           <rect x={plot.x} y={plot.y} width={plot.w} height={plot.h} />
@@ -249,20 +279,9 @@ export function ChartSvg({ model, colors, tick, minorTick, font, readout, zoomBo
           ))}
         </g>
       ) : null}
-      {zoomBox ? (
-        <rect
-          className="chart-zoombox"
-          {...zoomBox}
-          fill={colors.muted}
-          fillOpacity={0.15}
-          stroke={colors.muted}
-          strokeDasharray="4 3"
-        />
-      ) : null}
-      {readout ? <ReadoutLabel r={readout} model={model} colors={colors} font={font} /> : null}
-    </svg>
+    </>
   );
-}
+});
 
 /** The readout: a ring on the point and its lines in a box beside it, kept inside the plot. */
 function ReadoutLabel({
