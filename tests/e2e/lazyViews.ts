@@ -2,6 +2,8 @@ import type { Page } from '@playwright/test';
 import { frameState } from './fixtures';
 
 const LOADING = /Loading plot…|Loading 3D view…|Loading the scene…/;
+/** What a plot says in place of its chart when the chart could not be loaded or laid out (src/ui/Plot.tsx). */
+const FAILED = /The plot could not be drawn/;
 
 /**
  * Bring every lazy view of the page (plots, 3D views) on screen, one after another, and wait until
@@ -18,7 +20,12 @@ export async function settleLazyViews(page: Page, timeout = 60000): Promise<void
     // (a view shows its placeholder from its first render until its chunk has drawn it: none
     // left means every view is in)
     const loading = page.getByText(LOADING).first();
-    if ((await loading.count()) === 0) return;
+    if ((await loading.count()) === 0) {
+      // loaded is not enough: every plot is drawn (its chart's chunk came, its data laid out)
+      const failed = await page.getByText(FAILED).allTextContents();
+      if (failed.length) throw new Error(`${failed.length} view(s) failed: ${failed.join('; ')}`);
+      return;
+    }
     const el = await loading.elementHandle({ timeout: 1000 }).catch(() => null);
     if (!el) continue;
     // (scrolling waits for the element to hold still over two frames: limited, as the wait below)
