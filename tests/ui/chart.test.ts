@@ -7,14 +7,8 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { autoRange, decadeLabel, makeTicks, pxToUnits, unitsToPx, type Axis } from '../../src/ui/chart/axes';
-import {
-  dashArray,
-  histogramCounts,
-  layoutChart,
-  readoutAt,
-  type ChartModel,
-  type ChartStyle,
-} from '../../src/ui/chart/model';
+import { dashArray, histogramCounts } from '../../src/ui/chart/marks';
+import { layoutChart, readoutAt, type ChartModel, type ChartStyle } from '../../src/ui/chart/model';
 import type { ChartLayout, ChartTrace } from '../../src/ui/chart/types';
 import { colorCss, DIVERGING, VIRIDIS } from '../../src/core/colormap';
 

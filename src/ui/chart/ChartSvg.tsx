@@ -6,7 +6,8 @@
  */
 import { Fragment, memo, useId, type ReactNode, type Ref } from 'react';
 import { coordText } from '../chartScale';
-import { markerPath, type ChartModel, type Rect, type Stroke, type Swatch } from './model';
+import { markerPath, type Rect, type Stroke, type Swatch } from './marks';
+import type { ChartModel } from './model';
 
 export interface ChartColors {
   fg: string;

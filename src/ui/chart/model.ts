@@ -27,18 +27,6 @@ import {
 } from './marks';
 import type { AxisSpec, ChartLayout, ChartTrace, HeatmapTrace, LegendSpec } from './types';
 
-export {
-  dashArray,
-  histogramCounts,
-  markerPath,
-  plainText,
-  type Mark,
-  type Rect,
-  type Stroke,
-  type Swatch,
-  type Target,
-} from './marks';
-
 export interface ChartStyle {
   /** Font size (px) of titles and the legend. */
   font: number;
