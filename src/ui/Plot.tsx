@@ -267,6 +267,14 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
   }, [chart, loadFailed, style, width, height, drawn, view, sameLayout]);
   const model = result && result !== 'failed' ? result.model : null;
   useEffect(() => setReadout(null), [model]);
+  // a readout over the plot is dismissed by Escape without moving the pointer (WCAG 1.4.13)
+  const showing = readout !== null;
+  useEffect(() => {
+    if (!showing) return;
+    const onKey = (e: KeyboardEvent) => e.key === 'Escape' && setReadout(null);
+    window.addEventListener('keydown', onKey);
+    return () => window.removeEventListener('keydown', onKey);
+  }, [showing]);
 
   const local = (e: ReactPointerEvent) => {
     const r = (e.currentTarget as Element).getBoundingClientRect();

@@ -28,6 +28,11 @@ test('a plot: the pointer’s readout, drag to zoom and back, the tool buttons b
     const lines = svg.locator('.chart-readout text');
     await expect(lines.first()).toHaveText((await svg.locator('.chart-legend text').first().textContent())!);
     await expect(lines.nth(1)).toHaveText(/^N \d+, \|estimate − exact\| \S+$/);
+    // Escape dismisses it where the pointer is; moving off the plot's area ends it too
+    await page.keyboard.press('Escape');
+    await expect(lines).toHaveCount(0);
+    await page.mouse.move(box.x + x + 3, box.y + y - 2);
+    await expect(lines.first()).toBeVisible();
     await page.mouse.move(box.x + 2, box.y + box.height - 2);
     await expect(lines).toHaveCount(0);
   });
