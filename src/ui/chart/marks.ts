@@ -6,6 +6,8 @@
 import { colorCss, DIVERGING, normalizeValue, VIRIDIS } from '../../core/colormap';
 import { formatNumber } from '../../core/format';
 import { coordText } from '../chartScale';
+// traces that give no colour take the shared series palette's, in trace order
+import { SERIES } from '../palette';
 import { toUnits, unitsToPx } from './axes';
 import type { Axis } from './axes';
 import type { ChartTrace, Data, LineStyle, MarkerSymbol, ScatterTrace } from './types';
@@ -51,9 +53,6 @@ export type Target =
       text: (string | undefined)[];
     }
   | { kind: 'boxes'; name: string; color: string; boxes: { r: Rect; text: string }[] };
-
-/** The gray of Plotly-shaped traces that give no colour, in place of Plotly's default cycle. */
-const SERIES_DEFAULT = ['var(--series-1)', 'var(--series-2)', 'var(--series-3)', 'var(--series-4)'];
 
 /** The names of Plotly's dashes as dash lengths in multiples of the line width (at least 3 px). */
 const DASH_UNITS: Record<string, number[]> = {
@@ -144,7 +143,7 @@ export function cellEdges(c: readonly number[]): [number, number] {
 }
 
 export function colorOf(t: ChartTrace, i: number): string {
-  const fallback = SERIES_DEFAULT[i % SERIES_DEFAULT.length];
+  const fallback = SERIES[i % SERIES.length];
   if (t.type === 'scatter' || t.type === undefined) {
     const mc = t.marker?.color;
     return t.line?.color ?? (typeof mc === 'string' ? mc : fallback);
