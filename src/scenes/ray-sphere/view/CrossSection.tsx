@@ -8,6 +8,7 @@
  * written by drawCross (after each render, and per animation frame through `drawRef` without
  * React, while a sweep plays).
  */
+import { afterDraw, afterPress, stepFrom, type KeyChain } from './keyChain';
 import { useEffect, useLayoutEffect, useRef, useState, type KeyboardEvent, type PointerEvent } from 'react';
 import { afterPaint } from '../../../ui/afterPaint';
 import { announce } from '../../../ui/announce';
@@ -216,18 +217,6 @@ function handleAria(g: Layout, ray: RayState, target: Target) {
   };
 }
 
-/**
- * The key presses on one handle not drawn yet: where in the figure they sent it (`at`; the radius
- * for `r`), the value the last one sent, and every value the figure may still show on the way
- * there (the one before the first press, and each sent since; the scene applies one per frame).
- */
-interface KeyChain {
-  target: Target;
-  at: readonly [number, number] | number;
-  sent: string;
-  seen: Set<string>;
-}
-
 /** The parameter a handle moves, as a comparable text: o, c, r, or d for the direction tip. */
 function keyValue(target: Target, x: Partial<Pick<RayState, 'o' | 'd' | 'c' | 'r'>>): string {
   return JSON.stringify(target === 'tip' ? x.d : x[target]);
@@ -279,10 +268,7 @@ export function CrossSection({
   const keyed = useRef<KeyChain | null>(null);
   const draw = (x: CrossRay) => {
     const chain = keyed.current;
-    if (chain) {
-      const v = keyValue(chain.target, x);
-      if (v === chain.sent || !chain.seen.has(v)) keyed.current = null;
-    }
+    if (chain) keyed.current = afterDraw(chain, keyValue(chain.target, x));
     ray.current = x;
     const g = layout(x);
     shown.current = g;
@@ -387,23 +373,22 @@ export function CrossSection({
     const g = cur();
     const px = e.key === 'PageUp' || e.key === 'PageDown' ? 40 : e.shiftKey ? 1 : 8;
     const k = px * g.v.s;
-    const ahead = keyed.current?.target === target ? keyed.current : null;
+    const from = stepFrom(keyed.current, target);
     const remember = (at: KeyChain['at'], patch: Partial<RaySphereParams>) => {
-      const sent = keyValue(target, patch);
-      keyed.current = {
+      keyed.current = afterPress(
+        keyed.current,
         target,
         at,
-        sent,
-        seen: new Set([...(ahead?.seen ?? [keyValue(target, ray.current)]), sent]),
-      };
+        keyValue(target, patch),
+        keyValue(target, ray.current),
+      );
     };
     if (target === 'r') {
       const sgn = { ArrowUp: 1, ArrowRight: 1, PageUp: 1, ArrowDown: -1, ArrowLeft: -1, PageDown: -1 }[e.key];
       if (!sgn) return;
       e.preventDefault();
       const step = e.shiftKey ? g.step / 10 : g.step;
-      const from = typeof ahead?.at === 'number' ? ahead.at : g.r;
-      const nr = tidy(from + sgn * Math.max(k, step), step);
+      const nr = tidy((typeof from === 'number' ? from : g.r) + sgn * Math.max(k, step), step);
       if (nr > 0) {
         onChange({ r: nr });
         remember(nr, { r: nr });
@@ -415,7 +400,7 @@ export function CrossSection({
       e.key === 'ArrowUp' || e.key === 'PageUp' ? k : e.key === 'ArrowDown' || e.key === 'PageDown' ? -k : 0;
     if (!dx && !dy) return;
     e.preventDefault();
-    const at = Array.isArray(ahead?.at) ? ahead.at : target === 'o' ? g.O2 : target === 'tip' ? g.tip : g.C2;
+    const at = Array.isArray(from) ? from : target === 'o' ? g.O2 : target === 'tip' ? g.tip : g.C2;
     const to: [number, number] = [at[0] + dx, at[1] + dy];
     const patch = apply(target, to[0], to[1]);
     if (patch) remember(to, patch);
