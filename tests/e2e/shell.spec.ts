@@ -22,13 +22,14 @@ test('home: #/ downloads no heavy library and lists the six questions; present=1
   await page.emulateMedia({ colorScheme: 'light' });
   await openScene(page, '#/');
 
-  await test.step('#/ downloads no three.js, mathjs, KaTeX or scene code', async () => {
+  await test.step('#/ downloads no three.js, mathjs, KaTeX, chart or scene code', async () => {
     await page.waitForLoadState('networkidle');
     const js = requests.filter((u) => u.endsWith('.js'));
     expect(js.length).toBeGreaterThan(0);
     for (const u of requests) {
       expect(u, 'heavy library requested by #/').not.toMatch(/vendor-(three|katex)/);
       expect(u, 'scene chunk requested by #/').not.toMatch(/scene-/);
+      expect(u, 'the plots’ chart requested by #/').not.toMatch(/\/draw-[^/]*\.js$/);
     }
     // #/ downloads only the entry chunk and the bundler runtime: no mathjs (which has no named
     // chunk), no worker, no shared scene code. The budget script checks the same files' size and
