@@ -236,7 +236,8 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
   const drawn = shown.current;
 
   const [view, setView] = useState<View>({});
-  useEffect(() => setView({}), [sameLayout]);
+  // a new layout starts from its own axes (no zoom carried over)
+  useEffect(() => setView((v) => (v.x || v.y ? {} : v)), [sameLayout]);
   const [readout, setReadout] = useState<Readout | null>(null);
   const [drag, setDrag] = useState<{ x0: number; y0: number; box: Rect } | null>(null);
 
