@@ -10,7 +10,16 @@ import { coordText } from '../chartScale';
 import { SERIES } from '../palette';
 import { toUnits, unitsToPx } from './axes';
 import type { Axis } from './axes';
-import type { ChartTrace, Data, LineStyle, MarkerSymbol, ScatterTrace } from './types';
+import type {
+  BarTrace,
+  ChartTrace,
+  Data,
+  HeatmapTrace,
+  HistogramTrace,
+  LineStyle,
+  MarkerSymbol,
+  ScatterTrace,
+} from './types';
 
 export interface Stroke {
   color: string;
@@ -200,96 +209,141 @@ export function markerPath(symbol: MarkerSymbol, x: number, y: number, size: num
   }
 }
 
+/** What every trace's marks are drawn in: the axes, their names for the readout, and the mappings to pixels. */
+interface Frame {
+  x: Axis;
+  y: Axis;
+  xName: string;
+  yName: string;
+  px: (v: number) => number;
+  py: (v: number) => number;
+}
+
+const f = (v: number) => coordText(v, 1);
+const fmt = (v: number) => formatNumber(v, 4);
+
+/** A heatmap's cells, each coloured by its value on the trace's scale, and each a readout box. */
+function heatmapMarks(t: HeatmapTrace, fr: Frame): { mark: Mark; boxes: { r: Rect; text: string }[] } {
+  const map = t.colorscale === 'RdBu' ? DIVERGING : VIRIDIS;
+  const cells: { x: number; y: number; w: number; h: number; color: string }[] = [];
+  const boxes: { r: Rect; text: string }[] = [];
+  const dx = t.x.length > 1 ? (t.x[t.x.length - 1] - t.x[0]) / (t.x.length - 1) : 1;
+  const dy = t.y.length > 1 ? (t.y[t.y.length - 1] - t.y[0]) / (t.y.length - 1) : 1;
+  t.z.forEach((row, r) =>
+    row.forEach((z, c) => {
+      if (!Number.isFinite(z) || c >= t.x.length || r >= t.y.length) return;
+      const xa = fr.px(t.x[c] - dx / 2);
+      const xb = fr.px(t.x[c] + dx / 2);
+      const ya = fr.py(t.y[r] - dy / 2);
+      const yb = fr.py(t.y[r] + dy / 2);
+      const rect = { x: Math.min(xa, xb), y: Math.min(ya, yb), w: Math.abs(xb - xa), h: Math.abs(yb - ya) };
+      // a hairline of overlap hides the seams antialiasing leaves between cells
+      const color = colorCss(normalizeValue(z, t.zmin, t.zmax), map);
+      cells.push({ ...rect, w: rect.w + 0.5, h: rect.h + 0.5, color });
+      boxes.push({ r: rect, text: `${fr.xName} ${fmt(t.x[c])}, ${fr.yName} ${fmt(t.y[r])}: ${fmt(z)}` });
+    }),
+  );
+  return { mark: { kind: 'cells', cells }, boxes };
+}
+
+/** A bar or histogram trace's bars as one path from the axis's foot, and each bar a readout box. */
+function barMarks(
+  t: BarTrace | HistogramTrace,
+  fr: Frame,
+  bargap: number,
+): { d: string; boxes: { r: Rect; text: string }[] } {
+  const y0 = fr.py(fr.y.kind === 'log' ? 10 ** fr.y.lo : 0);
+  let d = '';
+  const boxes: { r: Rect; text: string }[] = [];
+  for (const [l, r, h] of barsOf(t, bargap)) {
+    if (!Number.isFinite(h) || h === 0) continue;
+    const xa = fr.px(l);
+    const xb = fr.px(r);
+    const yh = fr.py(h);
+    if (![xa, xb, yh].every(Number.isFinite)) continue;
+    d += `M${f(xa)} ${f(y0)}H${f(xb)}V${f(yh)}H${f(xa)}Z`;
+    boxes.push({
+      r: { x: Math.min(xa, xb), y: Math.min(y0, yh), w: Math.abs(xb - xa), h: Math.abs(yh - y0) },
+      text:
+        t.type === 'histogram'
+          ? `${fmt(h)} in [${fmt(l)}, ${fmt(r)})`
+          : `${fr.xName} ${fmt((l + r) / 2)}, ${fr.yName} ${fmt(h)}`,
+    });
+  }
+  return { d, boxes };
+}
+
+/** A scatter trace's markers, one path per marker colour. */
+function markerMarks(t: ScatterTrace, fr: Frame, color: string, opacity: number): Mark[] {
+  const byColor = new Map<string, { d: string; stroke?: Stroke; open: boolean }>();
+  const n = Math.min(t.x.length, t.y.length);
+  for (let k = 0; k < n; k++) {
+    const px = fr.px(num(t.x[k]));
+    const py = fr.py(num(t.y[k]));
+    if (!Number.isFinite(px) || !Number.isFinite(py)) continue;
+    const ms = markerStyle(t, color, k);
+    if (!(ms.size > 0)) continue;
+    const g = byColor.get(ms.color) ?? { d: '', stroke: ms.stroke, open: ms.symbol === 'circle-open' };
+    g.d += markerPath(ms.symbol, px, py, ms.size);
+    byColor.set(ms.color, g);
+  }
+  return [...byColor].map(([c, g]) => ({
+    kind: 'markers' as const,
+    d: g.d,
+    fill: g.open ? 'none' : c,
+    ...(g.stroke ? { stroke: g.open ? { ...g.stroke, color: c } : g.stroke } : {}),
+    opacity,
+  }));
+}
+
 /** Every trace's marks and readout targets, in drawing order. */
 export function drawTraces(
   traces: readonly ChartTrace[],
   frame: { x: Axis; y: Axis; xTitle: string; yTitle: string },
   bargap: number,
 ): { marks: Mark[]; targets: Target[] } {
-  const model = { ...frame, marks: [] as Mark[], targets: [] as Target[] };
-  const { x, y } = model;
-  const f = (v: number) => coordText(v, 1);
-  const name = (t: ChartTrace) => plainText(t.name ?? '');
-  const fmt = (v: number) => formatNumber(v, 4);
-  const xName = plainText(model.xTitle) || 'x';
-  const yName = plainText(model.yTitle) || 'y';
-  const pxOf = (v: number) => unitsToPx(x, toUnits(x.kind, v));
-  const pyOf = (v: number) => unitsToPx(y, toUnits(y.kind, v));
+  const { x, y } = frame;
+  const fr: Frame = {
+    x,
+    y,
+    xName: plainText(frame.xTitle) || 'x',
+    yName: plainText(frame.yTitle) || 'y',
+    px: (v) => unitsToPx(x, toUnits(x.kind, v)),
+    py: (v) => unitsToPx(y, toUnits(y.kind, v)),
+  };
+  const marks: Mark[] = [];
+  const targets: Target[] = [];
+  // the previous scatter trace's points, for a fill to it ('tonexty')
   let prevLine: [number, number][] = [];
 
   traces.forEach((t, i) => {
     const color = colorOf(t, i);
+    const name = plainText(t.name ?? '');
     const opacity = t.opacity ?? 1;
     if (t.type === 'heatmap') {
-      const map = t.colorscale === 'RdBu' ? DIVERGING : VIRIDIS;
-      const cells: { x: number; y: number; w: number; h: number; color: string }[] = [];
-      const boxes: { r: Rect; text: string }[] = [];
-      const dx = t.x.length > 1 ? (t.x[t.x.length - 1] - t.x[0]) / (t.x.length - 1) : 1;
-      const dy = t.y.length > 1 ? (t.y[t.y.length - 1] - t.y[0]) / (t.y.length - 1) : 1;
-      t.z.forEach((row, r) =>
-        row.forEach((z, c) => {
-          if (!Number.isFinite(z) || c >= t.x.length || r >= t.y.length) return;
-          const xa = pxOf(t.x[c] - dx / 2);
-          const xb = pxOf(t.x[c] + dx / 2);
-          const ya = pyOf(t.y[r] - dy / 2);
-          const yb = pyOf(t.y[r] + dy / 2);
-          const rect = {
-            x: Math.min(xa, xb),
-            y: Math.min(ya, yb),
-            w: Math.abs(xb - xa),
-            h: Math.abs(yb - ya),
-          };
-          // a hairline of overlap hides the seams antialiasing leaves between cells
-          cells.push({
-            ...rect,
-            w: rect.w + 0.5,
-            h: rect.h + 0.5,
-            color: colorCss(normalizeValue(z, t.zmin, t.zmax), map),
-          });
-          boxes.push({ r: rect, text: `${xName} ${fmt(t.x[c])}, ${yName} ${fmt(t.y[r])}: ${fmt(z)}` });
-        }),
-      );
-      model.marks.push({ kind: 'cells', cells });
-      model.targets.push({ kind: 'boxes', name: name(t), color, boxes });
+      const { mark, boxes } = heatmapMarks(t, fr);
+      marks.push(mark);
+      targets.push({ kind: 'boxes', name, color, boxes });
       return;
     }
     if (t.type === 'bar' || t.type === 'histogram') {
-      const y0 = pyOf(y.kind === 'log' ? 10 ** y.lo : 0);
-      let d = '';
-      const boxes: { r: Rect; text: string }[] = [];
-      for (const [l, r, h] of barsOf(t, bargap)) {
-        if (!Number.isFinite(h) || h === 0) continue;
-        const xa = pxOf(l);
-        const xb = pxOf(r);
-        const yh = pyOf(h);
-        if (![xa, xb, yh].every(Number.isFinite)) continue;
-        d += `M${f(xa)} ${f(y0)}H${f(xb)}V${f(yh)}H${f(xa)}Z`;
-        const rect = { x: Math.min(xa, xb), y: Math.min(y0, yh), w: Math.abs(xb - xa), h: Math.abs(yh - y0) };
-        boxes.push({
-          r: rect,
-          text:
-            t.type === 'histogram'
-              ? `${fmt(h)} in [${fmt(l)}, ${fmt(r)})`
-              : `${xName} ${fmt((l + r) / 2)}, ${yName} ${fmt(h)}`,
-        });
-      }
-      model.marks.push({ kind: 'area', d, color, opacity: opacity * (t.marker?.opacity ?? 1) });
-      model.targets.push({ kind: 'boxes', name: name(t), color, boxes });
+      const { d, boxes } = barMarks(t, fr, bargap);
+      marks.push({ kind: 'area', d, color, opacity: opacity * (t.marker?.opacity ?? 1) });
+      targets.push({ kind: 'boxes', name, color, boxes });
       return;
     }
-    // scatter
-    const n = Math.min(t.x.length, t.y.length);
+    // scatter: the line through its points, breaking at gaps
     const pts: [number, number][] = [];
     const tx: number[] = [];
     const ty: number[] = [];
     const tt: (string | undefined)[] = [];
     let d = '';
     let pen = false;
-    for (let k = 0; k < n; k++) {
+    for (let k = 0; k < Math.min(t.x.length, t.y.length); k++) {
       const a = num(t.x[k]);
       const b = num(t.y[k]);
-      const px = pxOf(a);
-      const py = pyOf(b);
+      const px = fr.px(a);
+      const py = fr.py(b);
       if (!Number.isFinite(px) || !Number.isFinite(py)) {
         pen = false;
         continue;
@@ -303,40 +357,17 @@ export function drawTraces(
     }
     const { lines, markers } = modeOf(t);
     if (t.fill === 'tonexty' && prevLine.length && pts.length) {
-      const back = [...prevLine].reverse();
-      const ring = [...pts, ...back].map(([a, b], k) => `${k ? 'L' : 'M'}${f(a)} ${f(b)}`).join('');
-      model.marks.push({ kind: 'area', d: `${ring}Z`, color: t.fillcolor ?? color, opacity });
+      const ring = [...pts, ...[...prevLine].reverse()].map(([a, b], k) => `${k ? 'L' : 'M'}${f(a)} ${f(b)}`);
+      marks.push({ kind: 'area', d: `${ring.join('')}Z`, color: t.fillcolor ?? color, opacity });
     }
     const stroke = strokeOf(t.line, color);
-    if (lines && stroke.width > 0 && d) model.marks.push({ kind: 'line', d, opacity, ...stroke });
-    if (markers) {
-      // one path per marker colour
-      const byColor = new Map<string, { d: string; stroke?: Stroke; open: boolean }>();
-      for (let k = 0; k < n; k++) {
-        const px = pxOf(num(t.x[k]));
-        const py = pyOf(num(t.y[k]));
-        if (!Number.isFinite(px) || !Number.isFinite(py)) continue;
-        const ms = markerStyle(t, color, k);
-        if (!(ms.size > 0)) continue;
-        const key = ms.color;
-        const g = byColor.get(key) ?? { d: '', stroke: ms.stroke, open: ms.symbol === 'circle-open' };
-        g.d += markerPath(ms.symbol, px, py, ms.size);
-        byColor.set(key, g);
-      }
-      for (const [c, g] of byColor)
-        model.marks.push({
-          kind: 'markers',
-          d: g.d,
-          fill: g.open ? 'none' : c,
-          ...(g.stroke ? { stroke: g.open ? { ...g.stroke, color: c } : g.stroke } : {}),
-          opacity: opacity * (t.marker?.opacity ?? 1),
-        });
-    }
+    if (lines && stroke.width > 0 && d) marks.push({ kind: 'line', d, opacity, ...stroke });
+    if (markers) marks.push(...markerMarks(t, fr, color, opacity * (t.marker?.opacity ?? 1)));
     prevLine = pts;
     if (t.hoverinfo !== 'skip' && pts.length)
-      model.targets.push({
+      targets.push({
         kind: 'points',
-        name: name(t),
+        name,
         color,
         px: pts.map((p) => p[0]),
         py: pts.map((p) => p[1]),
@@ -345,5 +376,5 @@ export function drawTraces(
         text: tt,
       });
   });
-  return { marks: model.marks, targets: model.targets };
+  return { marks, targets };
 }

@@ -206,6 +206,85 @@ function titleX(text: string, plot: Rect, width: number, style: ChartStyle): num
   return Math.max(half + 4, Math.min(centre, end - half));
 }
 
+/** An axis without its ticks: its range (axis units) from px0 to px1, swapped when reversed. */
+function axisSpan(
+  kind: AxisKind,
+  range: readonly [number, number],
+  from: number,
+  to: number,
+  reversed: boolean,
+): Omit<Axis, 'ticks'> {
+  const [px0, px1] = reversed ? [to, from] : [from, to];
+  return { kind, lo: Math.min(range[0], range[1]), hi: Math.max(range[0], range[1]), px0, px1 };
+}
+
+/** The legend's entries placed: above the plot from the figure's left edge, below it, or inside it. */
+function placeLegend(
+  rows: ReturnType<typeof flowLegend>,
+  place: 'above' | 'below' | 'inside',
+  spec: LegendSpec,
+  at: { plot: Rect; titleH: number; bottom: number; rowH: number },
+): { items: LegendItem[]; box: Rect } {
+  const { plot, rowH } = at;
+  const h = rows.rows.length * rowH;
+  const w = rows.widest;
+  // above or below the plot, rows run from the figure's left edge (they wrap at its right)
+  let bx = 6;
+  let by: number;
+  if (place === 'above') by = at.titleH + 2;
+  else if (place === 'below') by = plot.y + plot.h + at.bottom - (h + 4);
+  else {
+    const right = spec.xanchor === 'right';
+    bx = plot.x + (spec.x ?? 0.02) * plot.w + (right ? -(w + 8) : 4);
+    by = plot.y + (1 - (spec.y ?? 0.98)) * plot.h + (spec.yanchor === 'bottom' ? -h - 4 : 4);
+  }
+  const items: LegendItem[] = [];
+  rows.rows.forEach((row, r) =>
+    row.forEach((e) =>
+      items.push({ text: e.text, swatch: e.swatch, x: bx + e.dx, y: by + r * rowH + rowH / 2 }),
+    ),
+  );
+  return { items, box: { x: bx - 4, y: by, w: w + 8, h } };
+}
+
+/** The layout's line shapes as paths: data coordinates on the axes, 'paper' ones as fractions of the plot area. */
+function shapesOf(shapes: ChartLayout['shapes'], plot: Rect, x: Axis, y: Axis): ChartModel['shapes'] {
+  const out: ChartModel['shapes'] = [];
+  const f = (v: number) => coordText(v, 1);
+  for (const s of shapes ?? []) {
+    const px = (v: number) => (s.xref === 'paper' ? plot.x + v * plot.w : unitsToPx(x, toUnits(x.kind, v)));
+    const py = (v: number) =>
+      s.yref === 'paper' ? plot.y + (1 - v) * plot.h : unitsToPx(y, toUnits(y.kind, v));
+    const pts = [px(s.x0), py(s.y0), px(s.x1), py(s.y1)];
+    if (!pts.every(Number.isFinite)) continue;
+    out.push({ d: `M${f(pts[0])} ${f(pts[1])}L${f(pts[2])} ${f(pts[3])}`, ...strokeOf(s.line, 'var(--fg)') });
+  }
+  return out;
+}
+
+/** A heatmap's colour bar: its ticks on zmin … zmax, the room it takes right of the plot, and its drawing once placed. */
+function colourBar(heat: HeatmapTrace | undefined, style: ChartStyle) {
+  if (!heat) return { width: 0, place: () => null };
+  const { ticks, step } = niceTicks(heat.zmin, heat.zmax, 4);
+  const labels = ticks.map((v) => tickLabel(v, step));
+  const width = 10 + COLORBAR + 4 + Math.max(0, ...labels.map((s) => style.measure(s, style.tick)));
+  const place = (plot: Rect): ChartModel['colorbar'] => {
+    const r = { x: plot.x + plot.w + 10, y: plot.y, w: COLORBAR, h: plot.h };
+    const map = heat.colorscale === 'RdBu' ? DIVERGING : VIRIDIS;
+    const stops = Array.from({ length: 11 }, (_, k) => ({ t: k / 10, color: colorCss(k / 10, map) }));
+    const inside = ticks.filter((v) => v >= heat.zmin && v <= heat.zmax);
+    return {
+      r,
+      stops,
+      ticks: inside.map((v) => ({
+        px: r.y + r.h * (1 - normalizeValue(v, heat.zmin, heat.zmax)),
+        label: tickLabel(v, step),
+      })),
+    };
+  };
+  return { width, place };
+}
+
 /**
  * Lay out the chart at `width` × `height` px. Margins start at the layout's and grow to fit what
  * sits around the plot area, so the figure keeps its height and the plot area takes the rest.
@@ -221,6 +300,8 @@ export function layoutChart(
   const m = { l: 56, r: 16, t: 12, b: 44, ...layout.margin };
   const kx = axisKind(layout.xaxis);
   const ky = axisKind(layout.yaxis);
+  const xReversed = layout.xaxis?.autorange === 'reversed';
+  const yReversed = layout.yaxis?.autorange === 'reversed';
   const bargap = layout.bargap ?? (traces.some((t) => t.type === 'bar') ? 0.2 : 0);
   const ext = extents(traces, layout, kx, ky, bargap);
   const xr = view.x ?? layout.xaxis?.range ?? autoRange(ext.x, kx, ext.markers ? 0.03 : 0);
@@ -228,110 +309,55 @@ export function layoutChart(
   const xTitle = layout.xaxis?.title?.text ?? '';
   const yTitle = layout.yaxis?.title?.text ?? '';
   const lineH = (size: number) => Math.ceil(size * 1.3);
+  const bar = colourBar(
+    traces.find((t): t is HeatmapTrace => t.type === 'heatmap' && t.showscale === true),
+    style,
+  );
 
-  // the colour bar (a heatmap's scale) on the right
-  const heat = traces.find((t): t is HeatmapTrace => t.type === 'heatmap' && t.showscale === true);
-  const barTicks = heat ? niceTicks(heat.zmin, heat.zmax, 4) : null;
-  const barLabels = barTicks ? barTicks.ticks.map((v) => tickLabel(v, barTicks.step)) : [];
-  const barWidth = heat
-    ? 10 + COLORBAR + 4 + Math.max(0, ...barLabels.map((s) => style.measure(s, style.tick)))
-    : 0;
-
-  // the legend's rows (laid out against the whole width first; refined once the left margin is known)
+  // the legend's rows: a legend above or below wraps at the figure's width (its top row short of
+  // what sits over the top right corner), one inside at most 90 % of the plot's
   const entries = legendEntries(traces, layout);
   const place = legendPlace(layout.legend);
   const vertical = layout.legend?.orientation === 'v';
   const rowH = Math.max(lineH(style.font), 18);
   const titleH = layout.title?.text ? lineH(style.font * 1.1) + 6 : 0;
   const tickH = lineH(style.tick);
-
-  let left = m.l;
   const firstRow = place === 'above' && !layout.title?.text ? width - 12 - (style.topRight ?? 0) : width - 12;
-  let legend = flowLegend(entries, width - 12, vertical, style, firstRow);
-  let top = 0;
-  let bottom = 0;
-  let plot: Rect = { x: 0, y: 0, w: 0, h: 0 };
-  let x: Axis = { kind: kx, lo: 0, hi: 1, px0: 0, px1: 1, ticks: [] };
-  let y: Axis = { kind: ky, lo: 0, hi: 1, px0: 1, px1: 0, ticks: [] };
-  for (let pass = 0; pass < 2; pass++) {
-    const legendH = entries.length && place !== 'inside' ? legend.rows.length * rowH + 4 : 0;
-    top = Math.max(m.t, titleH + (place === 'above' ? legendH : 0) + Math.ceil(style.tick / 2) + 4);
-    bottom =
-      Math.max(m.b, tickH + 6 + (xTitle ? lineH(style.font) + 4 : 0) + 2) +
-      (place === 'below' ? legendH + 4 : 0);
-    const ph = Math.max(20, height - top - bottom);
-    const yBase = {
-      kind: ky,
-      lo: Math.min(yr[0], yr[1]),
-      hi: Math.max(yr[0], yr[1]),
-      px0: top + ph,
-      px1: top,
-    };
-    if (layout.yaxis?.autorange === 'reversed') [yBase.px0, yBase.px1] = [yBase.px1, yBase.px0];
-    y = { ...yBase, ticks: makeTicks(yBase, Y_SPACING, () => style.tick * 1.2) };
-    const yLabelW = Math.max(
-      0,
-      ...y.ticks.map((t) =>
-        style.measure(t.label, t.minor ? (style.minorTick ?? style.tick * 0.8) : style.tick),
-      ),
-    );
-    left = Math.max(m.l, Math.ceil(yLabelW + 8 + (yTitle ? lineH(style.font) + 6 : 0) + 2));
-    // the last x label may reach past the plot's right end by half its width
-    let right = m.r + barWidth;
-    let pw = Math.max(20, width - left - right);
-    const xBase = {
-      kind: kx,
-      lo: Math.min(xr[0], xr[1]),
-      hi: Math.max(xr[0], xr[1]),
-      px0: left,
-      px1: left + pw,
-    };
-    if (layout.xaxis?.autorange === 'reversed') [xBase.px0, xBase.px1] = [xBase.px1, xBase.px0];
-    const xm = (s: string) => style.measure(s, style.tick);
-    let xt = makeTicks(xBase, X_SPACING, xm);
-    const overhang = Math.max(0, ...xt.map((t) => t.px + xm(t.label) / 2 - (left + pw)));
-    if (overhang > right - barWidth) {
-      right = barWidth + Math.ceil(overhang) + 2;
-      pw = Math.max(20, width - left - right);
-      xBase.px1 = layout.xaxis?.autorange === 'reversed' ? left : left + pw;
-      xBase.px0 = layout.xaxis?.autorange === 'reversed' ? left + pw : left;
-      xt = makeTicks(xBase, X_SPACING, xm);
-    }
-    x = { ...xBase, ticks: xt };
-    plot = { x: left, y: top, w: pw, h: ph };
-    legend =
-      place === 'inside'
-        ? flowLegend(entries, pw * 0.9, vertical, style)
-        : flowLegend(entries, width - 12, vertical, style, firstRow);
-  }
+  const legend = flowLegend(entries, width - 12, vertical, style, firstRow);
+  const legendH = entries.length && place !== 'inside' ? legend.rows.length * rowH + 4 : 0;
 
-  // the legend's entries placed
-  const items: LegendItem[] = [];
-  let box: Rect | null = null;
-  if (entries.length) {
-    const h = legend.rows.length * rowH;
-    const w = legend.widest;
-    const spec = layout.legend ?? {};
-    // above or below the plot, rows run from the figure's left edge (they wrap at its right)
-    let bx = 6;
-    let by: number;
-    if (place === 'above') by = titleH + 2;
-    else if (place === 'below') by = plot.y + plot.h + bottom - (legend.rows.length * rowH + 4);
-    else {
-      const fx = spec.x ?? 0.02;
-      const fy = spec.y ?? 0.98;
-      bx = plot.x + fx * plot.w - (spec.xanchor === 'right' ? w + 8 : 0) + (spec.xanchor === 'right' ? 0 : 4);
-      by = plot.y + (1 - fy) * plot.h + (spec.yanchor === 'bottom' ? -h - 4 : 4);
-    }
-    box = { x: bx - 4, y: by, w: w + 8, h };
-    legend.rows.forEach((row, r) =>
-      row.forEach((e) =>
-        items.push({ text: e.text, swatch: e.swatch, x: bx + e.dx, y: by + r * rowH + rowH / 2 }),
-      ),
-    );
+  // top and bottom first (they do not depend on the labels' widths), then the y axis, whose
+  // labels set the left margin, then the x axis, whose last label may reach past the plot's right end
+  const top = Math.max(m.t, titleH + (place === 'above' ? legendH : 0) + Math.ceil(style.tick / 2) + 4);
+  const bottom =
+    Math.max(m.b, tickH + 6 + (xTitle ? lineH(style.font) + 4 : 0) + 2) +
+    (place === 'below' ? legendH + 4 : 0);
+  const ph = Math.max(20, height - top - bottom);
+  const yBase = axisSpan(ky, yr, top + ph, top, yReversed);
+  const y: Axis = { ...yBase, ticks: makeTicks(yBase, Y_SPACING, () => style.tick * 1.2) };
+  const minor = style.minorTick ?? style.tick * 0.8;
+  const yLabelW = Math.max(0, ...y.ticks.map((t) => style.measure(t.label, t.minor ? minor : style.tick)));
+  const left = Math.max(m.l, Math.ceil(yLabelW + 8 + (yTitle ? lineH(style.font) + 6 : 0) + 2));
+  const xm = (s: string) => style.measure(s, style.tick);
+  let right = m.r + bar.width;
+  let xBase = axisSpan(kx, xr, left, left + Math.max(20, width - left - right), xReversed);
+  let xt = makeTicks(xBase, X_SPACING, xm);
+  const plotEnd = Math.max(xBase.px0, xBase.px1);
+  const overhang = Math.max(0, ...xt.map((t) => t.px + xm(t.label) / 2 - plotEnd));
+  if (overhang > right - bar.width) {
+    right = bar.width + Math.ceil(overhang) + 2;
+    xBase = axisSpan(kx, xr, left, left + Math.max(20, width - left - right), xReversed);
+    xt = makeTicks(xBase, X_SPACING, xm);
   }
+  const x: Axis = { ...xBase, ticks: xt };
+  const plot: Rect = { x: left, y: top, w: Math.abs(xBase.px1 - xBase.px0), h: ph };
 
-  const model: ChartModel = {
+  const rows = place === 'inside' ? flowLegend(entries, plot.w * 0.9, vertical, style) : legend;
+  const placed = entries.length
+    ? placeLegend(rows, place, layout.legend ?? {}, { plot, titleH, bottom, rowH })
+    : null;
+  const title = layout.title?.text;
+  return {
     width,
     height,
     plot,
@@ -339,44 +365,16 @@ export function layoutChart(
     y,
     xTitle,
     yTitle,
-    title: layout.title?.text
-      ? {
-          text: layout.title.text,
-          x: titleX(layout.title.text, plot, width, style),
-          y: lineH(style.font * 1.1),
-        }
-      : null,
-    marks: [],
-    shapes: [],
-    legend: { items, rowHeight: rowH, box: place === 'inside' ? box : null },
-    colorbar: null,
-    targets: [],
+    title: title ? { text: title, x: titleX(title, plot, width, style), y: lineH(style.font * 1.1) } : null,
+    ...drawTraces(traces, { x, y, xTitle, yTitle }, bargap),
+    shapes: shapesOf(layout.shapes, plot, x, y),
+    legend: {
+      items: placed?.items ?? [],
+      rowHeight: rowH,
+      box: place === 'inside' ? (placed?.box ?? null) : null,
+    },
+    colorbar: bar.place(plot),
   };
-  Object.assign(model, drawTraces(traces, { x, y, xTitle, yTitle }, bargap));
-  for (const s of layout.shapes ?? []) {
-    const px = (v: number) => (s.xref === 'paper' ? plot.x + v * plot.w : unitsToPx(x, toUnits(kx, v)));
-    const py = (v: number) => (s.yref === 'paper' ? plot.y + (1 - v) * plot.h : unitsToPx(y, toUnits(ky, v)));
-    const pts = [px(s.x0), py(s.y0), px(s.x1), py(s.y1)];
-    if (!pts.every(Number.isFinite)) continue;
-    const f = (v: number) => coordText(v, 1);
-    model.shapes.push({
-      d: `M${f(pts[0])} ${f(pts[1])}L${f(pts[2])} ${f(pts[3])}`,
-      ...strokeOf(s.line, 'var(--fg)'),
-    });
-  }
-  if (heat && barTicks) {
-    const r = { x: plot.x + plot.w + 10, y: plot.y, w: COLORBAR, h: plot.h };
-    const map = heat.colorscale === 'RdBu' ? DIVERGING : VIRIDIS;
-    const stops = Array.from({ length: 11 }, (_, k) => ({ t: k / 10, color: colorCss(k / 10, map) }));
-    const ticks = barTicks.ticks
-      .filter((v) => v >= heat.zmin && v <= heat.zmax)
-      .map((v) => ({
-        px: r.y + r.h * (1 - normalizeValue(v, heat.zmin, heat.zmax)),
-        label: tickLabel(v, barTicks.step),
-      }));
-    model.colorbar = { r, stops, ticks };
-  }
-  return model;
 }
 
 /** The readout at pixel (px, py): the nearest point within `reach` px, else the box under it. */
