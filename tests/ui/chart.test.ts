@@ -7,7 +7,7 @@
 import { describe, expect, it } from 'vitest';
 import fc from 'fast-check';
 import { autoRange, decadeLabel, makeTicks, pxToUnits, unitsToPx, type Axis } from '../../src/ui/chart/axes';
-import { dashArray, histogramCounts } from '../../src/ui/chart/marks';
+import { binText, dashArray, histogramCounts } from '../../src/ui/chart/marks';
 import { layoutChart, readoutAt, type ChartModel, type ChartStyle } from '../../src/ui/chart/model';
 import type { ChartLayout, ChartTrace } from '../../src/ui/chart/types';
 import { colorCss, DIVERGING, VIRIDIS } from '../../src/core/colormap';
@@ -353,6 +353,24 @@ describe('chart layout', () => {
     expect(new Set(pts.map((p) => p[1])).size).toBe(2);
     // width 0: no line drawn
     expect(lines(m)).toEqual([]);
+  });
+
+  it('a bin reads with enough digits to tell its ends apart, however narrow it is', () => {
+    expect(binText(14, 14.5)).toBe('[14, 14.5)');
+    expect(binText(0.500000012, 0.500000022)).toBe('[0.500000012, 0.500000022)');
+    fc.assert(
+      fc.property(
+        fc.double({ min: -1e6, max: 1e6, noNaN: true }),
+        fc.double({ min: 1e-9, max: 1e3, noNaN: true }),
+        (l, w) => {
+          const r = l + Math.max(w, Math.abs(l) * 1e-12);
+          if (!(r > l)) return;
+          const [a, b] = binText(l, r).slice(1, -1).split(', ');
+          expect(a).not.toBe(b);
+        },
+      ),
+      SEED,
+    );
   });
 
   it('dashes scale with the line width (at least 3 px per unit); a px list is kept', () => {

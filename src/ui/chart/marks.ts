@@ -222,6 +222,18 @@ interface Frame {
 const f = (v: number) => coordText(v, 1);
 const fmt = (v: number) => formatNumber(v, 4);
 
+/**
+ * A bin [l, r) with as many significant digits as tell its ends apart (at least 4): a bin 10⁻⁸ wide
+ * at 0.5 reads "[0.500000012, 0.500000022)", not "[0.5, 0.5)".
+ */
+export function binText(l: number, r: number): string {
+  const scale = Math.max(Math.abs(l), Math.abs(r));
+  const width = Math.abs(r - l);
+  const digits = width > 0 && scale > 0 ? Math.ceil(Math.log10(scale / width)) + 2 : 4;
+  const d = Math.min(15, Math.max(4, digits));
+  return `[${formatNumber(l, d)}, ${formatNumber(r, d)})`;
+}
+
 /** A heatmap's cells, each coloured by its value on the trace's scale, and each a readout box. */
 function heatmapMarks(t: HeatmapTrace, fr: Frame): { mark: Mark; boxes: { r: Rect; text: string }[] } {
   const map = t.colorscale === 'RdBu' ? DIVERGING : VIRIDIS;
@@ -266,7 +278,7 @@ function barMarks(
       r: { x: Math.min(xa, xb), y: Math.min(y0, yh), w: Math.abs(xb - xa), h: Math.abs(yh - y0) },
       text:
         t.type === 'histogram'
-          ? `${fmt(h)} in [${fmt(l)}, ${fmt(r)})`
+          ? `${fmt(h)} in ${binText(l, r)}`
           : `${fr.xName} ${fmt((l + r) / 2)}, ${fr.yName} ${fmt(h)}`,
     });
   }
