@@ -47,8 +47,9 @@ export function niceTicks(
 }
 
 /**
- * A tick label: plain decimals (as many as the step needs) for ordinary sizes, m×10ⁿ (never SI
- * prefixes) for |v| ≥ 1e5 or steps below 1e-3; a real minus sign.
+ * A tick label: plain decimals (as many as the step needs: 0.25 keeps both) for ordinary sizes,
+ * m×10ⁿ (never SI prefixes) for |v| ≥ 1e5 or steps below 1e-3, its mantissa with the digits down to
+ * the step's (so neighbouring ticks never read the same); a real minus sign.
  */
 export function tickLabel(v: number, step: number): string {
   if (v === 0 || Math.abs(v) < step * 1e-9) return '0';
@@ -56,10 +57,16 @@ export function tickLabel(v: number, step: number): string {
   if (av >= 1e5 || step < 1e-3) {
     const e = Math.floor(Math.log10(av));
     const m = v / 10 ** e;
-    const ms = Number(m.toPrecision(3)).toString();
+    const sig = Math.min(15, Math.max(3, e - Math.floor(Math.log10(step)) + 2));
+    const ms = Number(m.toPrecision(sig)).toString();
     const ex = superscript(String(e));
     return ms === '1' ? `10${ex}` : ms === '-1' ? `−10${ex}` : `${ms.replace('-', '−')}×10${ex}`;
   }
-  const digits = Math.max(0, Math.min(6, -Math.floor(Math.log10(step) + 1e-9)));
+  let digits = 0;
+  while (
+    digits < 6 &&
+    Math.abs(step * 10 ** digits - Math.round(step * 10 ** digits)) > 1e-9 * step * 10 ** digits
+  )
+    digits++;
   return v.toFixed(digits).replace('-', '−');
 }

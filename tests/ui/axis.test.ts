@@ -61,6 +61,29 @@ describe('tickLabel', () => {
     expect(tickLabel(1e6, 1e5)).toBe('10⁶');
     expect(tickLabel(-1e6, 1e5)).toBe('−10⁶');
     expect(tickLabel(0.0002, 0.0001)).toBe('2×10⁻⁴');
+    // a quarter step keeps both decimals; a narrow range far from 0 keeps the digits down to its step
+    expect(tickLabel(0.25, 0.25)).toBe('0.25');
+    expect(tickLabel(-1.001e-7, 1e-10)).toBe('−1.001×10⁻⁷');
+  });
+
+  it('neighbouring ticks never read the same, however narrow the range is against its values', () => {
+    fc.assert(
+      fc.property(
+        fc.double({ min: -1e9, max: 1e9, noNaN: true }),
+        fc.double({ min: 1e-9, max: 1e9, noNaN: true }),
+        fc.integer({ min: 2, max: 10 }),
+        fc.constantFrom<'round' | 'atLeast'>('round', 'atLeast'),
+        (lo, span, count, ladder) => {
+          const hi = lo + span;
+          // (niceTicks rounds ticks to 12 significant digits: narrower ranges are out of its scope)
+          if (!(hi > lo) || span < Math.max(Math.abs(lo), Math.abs(hi)) * 1e-9) return;
+          const { ticks, step } = niceTicks(lo, hi, count, ladder);
+          const labels = ticks.map((t) => tickLabel(t, step));
+          expect(new Set(labels).size, labels.join(' | ')).toBe(labels.length);
+        },
+      ),
+      { seed: 20261207, numRuns: 500 },
+    );
   });
 });
 
