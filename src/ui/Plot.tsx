@@ -241,7 +241,8 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
   const [readout, setReadout] = useState<Readout | null>(null);
   const [drag, setDrag] = useState<{ x0: number; y0: number; box: Rect } | null>(null);
 
-  // sizes and colours follow the theme and classroom mode (themeKey)
+  // sizes and colours follow the theme and classroom mode (themeKey); read once per theme, not per
+  // change of the data (a storm of changes would read the page's computed style on every one)
   const style = useMemo(() => {
     if (typeof document === 'undefined') return null;
     const cs = getComputedStyle(document.documentElement);
@@ -252,21 +253,27 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
     const minorTick = present ? tick : Math.round(tick * 0.8);
     const tools = touchOnly() ? 0 : PLOT_TOOLS.length * TOOL_WIDTH + 8;
     const family = getComputedStyle(document.body).fontFamily;
-    return { font, tick, minorTick, measure: measurer(family), topRight: tools, themeKey };
+    return {
+      font,
+      tick,
+      minorTick,
+      measure: measurer(family),
+      topRight: tools,
+      colors: themeColors(),
+      themeKey,
+    };
   }, [themeKey, present, sameLayout]);
 
   const result = useMemo(() => {
     if (loadFailed) return 'failed' as const;
     if (!chart || !style || width <= 0) return null;
     try {
-      const colors = themeColors();
-      const model = chart.layoutChart(drawn.data, sameLayout ?? {}, width, height, style, view);
-      return { model, colors };
+      return chart.layoutChart(drawn.data, sameLayout ?? {}, width, height, style, view);
     } catch {
       return 'failed' as const;
     }
   }, [chart, loadFailed, style, width, height, drawn, view, sameLayout]);
-  const model = result && result !== 'failed' ? result.model : null;
+  const model = result === 'failed' ? null : result;
   useEffect(() => setReadout(null), [model]);
   // a readout over the plot is dismissed by Escape without moving the pointer (WCAG 1.4.13)
   const showing = readout !== null;
@@ -342,10 +349,10 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
     if (b === 'zoomIn') setView(zoomed(model, 0.5));
     else if (b === 'zoomOut') setView(zoomed(model, 2));
     else if (b === 'reset') setView({});
-    else if (svgRef.current && result && result !== 'failed')
+    else if (svgRef.current && style)
       savePng(
         svgRef.current,
-        result.colors.bg,
+        style.colors.bg,
         `${(label ?? ariaLabel ?? 'plot').replace(/[^\w-]+/g, '-').slice(0, 60)}.png`,
       );
   };
@@ -367,7 +374,7 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
       ) : null}
       {result === 'failed' ? <p className="plot-placeholder">The plot could not be drawn.</p> : null}
       {!result ? <p className="plot-placeholder">Loading plot…</p> : null}
-      {model && chart && result !== 'failed' ? (
+      {model && chart ? (
         <div
           className="plot-canvas"
           onPointerDown={onPointerDown}
@@ -379,7 +386,7 @@ export function Plot({ data, layout, height = 280, ariaLabel, label, description
         >
           <chart.ChartSvg
             model={model}
-            colors={result!.colors}
+            colors={style!.colors}
             tick={style!.tick}
             minorTick={style!.minorTick}
             font={style!.font}

@@ -56,15 +56,8 @@ function SwatchMark({ s, x, y, paint }: { s: Swatch; x: number; y: number; paint
       {s.marker ? (
         <path
           d={markerPath(s.marker.symbol, x + 15, y, Math.min(s.marker.size, 12))}
-          fill={s.marker.symbol === 'circle-open' ? 'none' : paint(s.marker.color)}
-          {...(s.marker.stroke
-            ? strokeProps(
-                s.marker.symbol === 'circle-open'
-                  ? { ...s.marker.stroke, color: s.marker.color }
-                  : s.marker.stroke,
-                paint,
-              )
-            : {})}
+          fill={s.marker.fill === 'none' ? 'none' : paint(s.marker.fill)}
+          {...(s.marker.stroke ? strokeProps(s.marker.stroke, paint) : {})}
         />
       ) : null}
     </>

@@ -3,7 +3,7 @@
  * fills, markers, bars, histogram bins, heatmap cells), its legend swatch, and what the pointer's
  * readout can find on it. Pure, like ./model, which lays the chart out and calls drawTraces.
  */
-import { colorCss, DIVERGING, normalizeValue, VIRIDIS } from '../../core/colormap';
+import { colorCss, DIVERGING, normalizeValue, VIRIDIS, type Colormap } from '../../core/colormap';
 import { formatNumber } from '../../core/format';
 import { coordText } from '../chartScale';
 // traces that give no colour take the shared series palette's, in trace order
@@ -36,7 +36,7 @@ export type Mark =
 
 export interface Swatch {
   line?: Stroke;
-  marker?: { symbol: MarkerSymbol; color: string; size: number; stroke?: Stroke };
+  marker?: MarkerLook;
   box?: { color: string; opacity: number };
 }
 
@@ -107,6 +107,9 @@ export function modeOf(t: ScatterTrace): { lines: boolean; markers: boolean } {
   return { lines: mode.includes('lines'), markers: mode.includes('markers') };
 }
 
+/** A coordinate as written into path data: one decimal. */
+const f = (v: number) => coordText(v, 1);
+
 /** Histogram counts of `x` in the trace's bins: [start, start + size), …, the last bin closed at its end. */
 export function histogramCounts(x: Data, bins: { start: number; end: number; size: number }): number[] {
   const { start, size } = bins;
@@ -144,11 +147,21 @@ export function barsOf(t: ChartTrace, bargap: number): [number, number, number][
   return xs.map((x, i) => [x - w / 2, x + w / 2, num(t.y[i])]);
 }
 
+/** The spacing of evenly spaced cell centres (1 for a single cell). */
+function cellStep(c: readonly number[]): number {
+  return c.length > 1 ? (c[c.length - 1] - c[0]) / (c.length - 1) : 1;
+}
+
 /** The outer edges of evenly spaced cell centres. */
 export function cellEdges(c: readonly number[]): [number, number] {
   if (c.length === 0) return [NaN, NaN];
-  const d = c.length > 1 ? (c[c.length - 1] - c[0]) / (c.length - 1) : 1;
+  const d = cellStep(c);
   return [c[0] - d / 2, c[c.length - 1] + d / 2];
+}
+
+/** A heatmap's colour ramp: the diverging one for 'RdBu' (signed differences), else viridis. */
+export function colormapOf(t: HeatmapTrace): Colormap {
+  return t.colorscale === 'RdBu' ? DIVERGING : VIRIDIS;
 }
 
 export function colorOf(t: ChartTrace, i: number): string {
@@ -174,20 +187,33 @@ export function swatchOf(t: ChartTrace, i: number): Swatch {
   return sw;
 }
 
-export function markerStyle(t: ScatterTrace, color: string, i: number) {
+/** How one marker is drawn: its shape and size, its fill ('none' for an open symbol), its outline. */
+export interface MarkerLook {
+  symbol: MarkerSymbol;
+  size: number;
+  fill: string;
+  stroke?: Stroke;
+}
+
+/**
+ * Point i's marker: the trace's size and colour (one, or one per point). An open symbol is its
+ * outline alone, in the marker's colour (2 px unless given); a filled one has an outline only when
+ * the trace gives one.
+ */
+export function markerStyle(t: ScatterTrace, color: string, i: number): MarkerLook {
   const m = t.marker ?? {};
   const size = typeof m.size === 'number' ? m.size : Array.isArray(m.size) ? (m.size[i] ?? 6) : 6;
   const c = typeof m.color === 'string' ? m.color : Array.isArray(m.color) ? (m.color[i] ?? color) : color;
   const symbol = m.symbol ?? 'circle';
-  const lw = m.line?.width ?? (symbol === 'circle-open' ? 2 : 0);
-  const stroke = lw > 0 ? { color: m.line?.color ?? c, width: lw } : undefined;
-  return stroke ? { symbol, color: c, size, stroke } : { symbol, color: c, size };
+  const open = symbol === 'circle-open';
+  const lw = m.line?.width ?? (open ? 2 : 0);
+  const look = { symbol, size, fill: open ? 'none' : c };
+  return lw > 0 ? { ...look, stroke: { color: open ? c : (m.line?.color ?? c), width: lw } } : look;
 }
 
 /** SVG path data of one marker of `symbol` and diameter `size` centred at (x, y). */
 export function markerPath(symbol: MarkerSymbol, x: number, y: number, size: number): string {
   const r = size / 2;
-  const f = (v: number) => coordText(v, 1);
   switch (symbol) {
     case 'square':
       return `M${f(x - r)} ${f(y - r)}h${f(2 * r)}v${f(2 * r)}h${f(-2 * r)}Z`;
@@ -213,14 +239,27 @@ export function markerPath(symbol: MarkerSymbol, x: number, y: number, size: num
 interface Frame {
   x: Axis;
   y: Axis;
-  xName: string;
-  yName: string;
+  names: AxisNames;
   px: (v: number) => number;
   py: (v: number) => number;
 }
 
-const f = (v: number) => coordText(v, 1);
 const fmt = (v: number) => formatNumber(v, 4);
+
+/** The axes' names in the readout: their titles as plain text, else x and y. */
+export interface AxisNames {
+  x: string;
+  y: string;
+}
+
+export function axisNames(xTitle: string, yTitle: string): AxisNames {
+  return { x: plainText(xTitle) || 'x', y: plainText(yTitle) || 'y' };
+}
+
+/** A point's values as the readout writes them: "N 32, RMSE 0.0123" (4 significant digits). */
+export function pairText(names: AxisNames, x: number, y: number): string {
+  return `${names.x} ${fmt(x)}, ${names.y} ${fmt(y)}`;
+}
 
 /**
  * A bin [l, r) with as many significant digits as tell its ends apart (at least 4): a bin 10⁻⁸ wide
@@ -236,11 +275,11 @@ export function binText(l: number, r: number): string {
 
 /** A heatmap's cells, each coloured by its value on the trace's scale, and each a readout box. */
 function heatmapMarks(t: HeatmapTrace, fr: Frame): { mark: Mark; boxes: { r: Rect; text: string }[] } {
-  const map = t.colorscale === 'RdBu' ? DIVERGING : VIRIDIS;
+  const map = colormapOf(t);
   const cells: { x: number; y: number; w: number; h: number; color: string }[] = [];
   const boxes: { r: Rect; text: string }[] = [];
-  const dx = t.x.length > 1 ? (t.x[t.x.length - 1] - t.x[0]) / (t.x.length - 1) : 1;
-  const dy = t.y.length > 1 ? (t.y[t.y.length - 1] - t.y[0]) / (t.y.length - 1) : 1;
+  const dx = cellStep(t.x);
+  const dy = cellStep(t.y);
   t.z.forEach((row, r) =>
     row.forEach((z, c) => {
       if (!Number.isFinite(z) || c >= t.x.length || r >= t.y.length) return;
@@ -252,7 +291,7 @@ function heatmapMarks(t: HeatmapTrace, fr: Frame): { mark: Mark; boxes: { r: Rec
       // a hairline of overlap hides the seams antialiasing leaves between cells
       const color = colorCss(normalizeValue(z, t.zmin, t.zmax), map);
       cells.push({ ...rect, w: rect.w + 0.5, h: rect.h + 0.5, color });
-      boxes.push({ r: rect, text: `${fr.xName} ${fmt(t.x[c])}, ${fr.yName} ${fmt(t.y[r])}: ${fmt(z)}` });
+      boxes.push({ r: rect, text: `${pairText(fr.names, t.x[c], t.y[r])}: ${fmt(z)}` });
     }),
   );
   return { mark: { kind: 'cells', cells }, boxes };
@@ -276,10 +315,7 @@ function barMarks(
     d += `M${f(xa)} ${f(y0)}H${f(xb)}V${f(yh)}H${f(xa)}Z`;
     boxes.push({
       r: { x: Math.min(xa, xb), y: Math.min(y0, yh), w: Math.abs(xb - xa), h: Math.abs(yh - y0) },
-      text:
-        t.type === 'histogram'
-          ? `${fmt(h)} in ${binText(l, r)}`
-          : `${fr.xName} ${fmt((l + r) / 2)}, ${fr.yName} ${fmt(h)}`,
+      text: t.type === 'histogram' ? `${fmt(h)} in ${binText(l, r)}` : pairText(fr.names, (l + r) / 2, h),
     });
   }
   return { d, boxes };
@@ -287,7 +323,7 @@ function barMarks(
 
 /** A scatter trace's markers, one path per marker colour. */
 function markerMarks(t: ScatterTrace, fr: Frame, color: string, opacity: number): Mark[] {
-  const byColor = new Map<string, { d: string; stroke?: Stroke; open: boolean }>();
+  const byColor = new Map<string, { d: string; look: MarkerLook }>();
   const n = Math.min(t.x.length, t.y.length);
   for (let k = 0; k < n; k++) {
     const px = fr.px(num(t.x[k]));
@@ -295,15 +331,16 @@ function markerMarks(t: ScatterTrace, fr: Frame, color: string, opacity: number)
     if (!Number.isFinite(px) || !Number.isFinite(py)) continue;
     const ms = markerStyle(t, color, k);
     if (!(ms.size > 0)) continue;
-    const g = byColor.get(ms.color) ?? { d: '', stroke: ms.stroke, open: ms.symbol === 'circle-open' };
+    const key = `${ms.fill}|${ms.stroke?.color ?? ''}`;
+    const g = byColor.get(key) ?? { d: '', look: ms };
     g.d += markerPath(ms.symbol, px, py, ms.size);
-    byColor.set(ms.color, g);
+    byColor.set(key, g);
   }
-  return [...byColor].map(([c, g]) => ({
+  return [...byColor.values()].map(({ d, look }) => ({
     kind: 'markers' as const,
-    d: g.d,
-    fill: g.open ? 'none' : c,
-    ...(g.stroke ? { stroke: g.open ? { ...g.stroke, color: c } : g.stroke } : {}),
+    d,
+    fill: look.fill,
+    ...(look.stroke ? { stroke: look.stroke } : {}),
     opacity,
   }));
 }
@@ -318,8 +355,7 @@ export function drawTraces(
   const fr: Frame = {
     x,
     y,
-    xName: plainText(frame.xTitle) || 'x',
-    yName: plainText(frame.yTitle) || 'y',
+    names: axisNames(frame.xTitle, frame.yTitle),
     px: (v) => unitsToPx(x, toUnits(x.kind, v)),
     py: (v) => unitsToPx(y, toUnits(y.kind, v)),
   };

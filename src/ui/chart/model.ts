@@ -5,17 +5,19 @@
  * (text is measured through the given function), so tests read a chart's marks against its data
  * without a browser.
  */
-import { colorCss, DIVERGING, normalizeValue, VIRIDIS } from '../../core/colormap';
-import { formatNumber } from '../../core/format';
+import { colorCss, normalizeValue } from '../../core/colormap';
 import { niceTicks, tickLabel } from '../axis';
 import { coordText } from '../chartScale';
 import { autoRange, makeTicks, toUnits, unitsToPx, type Axis, type AxisKind, type Tick } from './axes';
 import {
+  axisNames,
   barsOf,
   cellEdges,
+  colormapOf,
   drawTraces,
   modeOf,
   num,
+  pairText,
   plainText,
   strokeOf,
   swatchOf,
@@ -73,14 +75,11 @@ export interface ChartModel {
 
 /** Tick labels are at most every this many px along x, and along y. */
 const X_SPACING = 80;
-
 const Y_SPACING = 42;
-
-/** Swatch length and the gaps of a legend entry (px). */
+/** A legend entry's swatch length and the gap after an entry (px). */
 const SWATCH = 30;
-
 const ITEM_GAP = 16;
-
+/** The colour bar's width (px). */
 const COLORBAR = 14;
 
 /** The extents (axis units) of every trace's data and of data-anchored shapes, per axis. */
@@ -93,14 +92,15 @@ function extents(
 ) {
   let x: [number, number] | null = null;
   let y: [number, number] | null = null;
-  const addX = (v: number) => {
-    const u = toUnits(kx, v);
+  // (each takes axis units; a value an axis cannot show is NaN and left out)
+  const growX = (u: number) => {
     if (Number.isFinite(u)) x = x ? [Math.min(x[0], u), Math.max(x[1], u)] : [u, u];
   };
-  const addY = (v: number) => {
-    const u = toUnits(ky, v);
+  const growY = (u: number) => {
     if (Number.isFinite(u)) y = y ? [Math.min(y[0], u), Math.max(y[1], u)] : [u, u];
   };
+  const addX = (v: number) => growX(toUnits(kx, v));
+  const addY = (v: number) => growY(toUnits(ky, v));
   let markers = false;
   let bars = false;
   for (const t of traces) {
@@ -125,11 +125,12 @@ function extents(
       markers ||= m;
       const n = Math.min(t.x.length, t.y.length);
       for (let i = 0; i < n; i++) {
-        const a = num(t.x[i]);
-        const b = num(t.y[i]);
-        if (Number.isFinite(toUnits(kx, a)) && Number.isFinite(toUnits(ky, b))) {
-          addX(a);
-          addY(b);
+        // a point counts only where both axes can show it
+        const ux = toUnits(kx, num(t.x[i]));
+        const uy = toUnits(ky, num(t.y[i]));
+        if (Number.isFinite(ux) && Number.isFinite(uy)) {
+          growX(ux);
+          growY(uy);
         }
       }
     }
@@ -270,7 +271,7 @@ function colourBar(heat: HeatmapTrace | undefined, style: ChartStyle) {
   const width = 10 + COLORBAR + 4 + Math.max(0, ...labels.map((s) => style.measure(s, style.tick)));
   const place = (plot: Rect): ChartModel['colorbar'] => {
     const r = { x: plot.x + plot.w + 10, y: plot.y, w: COLORBAR, h: plot.h };
-    const map = heat.colorscale === 'RdBu' ? DIVERGING : VIRIDIS;
+    const map = colormapOf(heat);
     const stops = Array.from({ length: 11 }, (_, k) => ({ t: k / 10, color: colorCss(k / 10, map) }));
     const inside = ticks.filter((v) => v >= heat.zmin && v <= heat.zmax);
     return {
@@ -386,27 +387,29 @@ export function readoutAt(
 ): { x: number; y: number; color: string; lines: string[] } | null {
   const { plot } = model;
   if (px < plot.x || px > plot.x + plot.w || py < plot.y || py > plot.y + plot.h) return null;
-  const fmt = (v: number) => formatNumber(v, 4);
-  let best: { d: number; x: number; y: number; color: string; lines: string[] } | null = null;
+  // the nearest point first, its words written once found
+  let best: { d: number; t: Extract<Target, { kind: 'points' }>; k: number } | null = null;
   for (const t of model.targets) {
     if (t.kind !== 'points') continue;
     for (let k = 0; k < t.px.length; k++) {
       const d = Math.hypot(t.px[k] - px, t.py[k] - py);
-      if (d <= reach && (!best || d < best.d))
-        best = {
-          d,
-          x: t.px[k],
-          y: t.py[k],
-          color: t.color,
-          lines: [
-            ...(t.name ? [t.name] : []),
-            `${plainText(model.xTitle) || 'x'} ${fmt(t.x[k])}, ${plainText(model.yTitle) || 'y'} ${fmt(t.y[k])}`,
-            ...(t.text[k] ? [plainText(t.text[k] ?? '')] : []),
-          ],
-        };
+      if (d <= reach && (!best || d < best.d)) best = { d, t, k };
     }
   }
-  if (best) return best;
+  if (best) {
+    const { t, k } = best;
+    const text = t.text[k];
+    return {
+      x: t.px[k],
+      y: t.py[k],
+      color: t.color,
+      lines: [
+        ...(t.name ? [t.name] : []),
+        pairText(axisNames(model.xTitle, model.yTitle), t.x[k], t.y[k]),
+        ...(text ? [plainText(text)] : []),
+      ],
+    };
+  }
   for (let i = model.targets.length - 1; i >= 0; i--) {
     const t = model.targets[i];
     if (t.kind !== 'boxes') continue;
